@@ -46,7 +46,7 @@ import time
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from aidl_lang.drawing.program import import_drawing  # noqa: E402
+from aidl_lang.drawing.write.program import import_drawing  # noqa: E402
 from aidl_lang.drawing.model import DrawingError  # noqa: E402
 from aidl_lang.pipeline import compile_source  # noqa: E402
 from aidl_lang.limits import DEFAULT_BUDGET  # noqa: E402
@@ -80,7 +80,7 @@ def svg_file_figures(data: bytes, laser: bool) -> tuple[float, int, float]:
     """(cut length mm: the union of the cut paths, texts, drawn length mm: every path's own
     length added up) of an SVG, by svgelements."""
     import svgelements as S
-    from aidl_lang.drawing.svg import _css_mm
+    from aidl_lang.drawing.read.svg import _css_mm
     svg = S.SVG.parse(io.BytesIO(data), reify=True, ppi=96.0)
     vb = svg.viewbox
     k = (float(svg.width) / vb.width) if vb is not None and vb.width and svg.width else 1.0
@@ -189,7 +189,7 @@ def dxf_file_figures(data: bytes) -> tuple[float, int, float]:
         except Exception:                                   # noqa: BLE001
             doc, _ = recover.readfile(path)
     from ezdxf.disassemble import recursive_decompose
-    from aidl_lang.drawing.dxf import INSUNITS_MM
+    from aidl_lang.drawing.read.dxf import INSUNITS_MM
     flat = list(recursive_decompose(doc.modelspace()))     # blocks placed, every copy
     texts = 0
     for e in flat:

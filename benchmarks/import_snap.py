@@ -21,7 +21,7 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 import aidl_lang  # noqa: E402
-from aidl_lang.drawing.infer import import_drawing  # noqa: E402
+from aidl_lang.drawing.infer.infer import import_drawing  # noqa: E402
 from aidl_lang.drawing.model import DrawingError  # noqa: E402
 
 

@@ -28,7 +28,7 @@ sys.path.insert(0, str(ROOT / "tests"))
 
 import aidl_lang  # noqa: E402
 import dxf_compare  # noqa: E402
-from aidl_lang.drawing.infer import import_drawing  # noqa: E402
+from aidl_lang.drawing.infer.infer import import_drawing  # noqa: E402
 from maker_drawings import DRAWINGS  # noqa: E402
 
 

@@ -33,7 +33,7 @@ sys.path.insert(0, str(ROOT / "tests"))
 
 import aidl_lang  # noqa: E402
 import dxf_compare  # noqa: E402
-from aidl_lang.drawing.infer import import_drawing  # noqa: E402
+from aidl_lang.drawing.infer.infer import import_drawing  # noqa: E402
 
 TOL = 1e-7
 

@@ -152,7 +152,7 @@ def test_mirrored_copy_is_the_bezier_of_the_mirrored_points(tmp_path):
 def test_import_writes_svg_cubics_as_bezier_and_renders_them_back(tmp_path):
     """An SVG path of two free cubics (no interpolating spline through its ends) is written as
     one closed `Bezier` by `aidl import` and renders back to the same control points."""
-    from aidl_lang.drawing.program import import_drawing
+    from aidl_lang.drawing.write.program import import_drawing
     svg = ('<svg xmlns="http://www.w3.org/2000/svg" width="40mm" height="30mm" '
            'viewBox="0 0 40 30"><path d="M5,25 C5,5 35,5 35,25 C30,28 10,28 5,25 Z"/></svg>')
     text, notes = import_drawing(svg.encode(), "logo.svg")

@@ -30,7 +30,7 @@ def test_round_trip_every_example(example, tmp_path):
     ezdxf alone), on every example: the logo plate's SVG cubics and the violin's Spline with
     `corners=` come back as `Bezier` chains of their control points."""
     import aidl_lang
-    from aidl_lang.drawing.program import import_drawing
+    from aidl_lang.drawing.write.program import import_drawing
     first, second = tmp_path / "a.dxf", tmp_path / "b.dxf"
     res = aidl_lang.compile(path=example)
     assert res.ok
@@ -286,7 +286,7 @@ def test_dxf_elliptic_arcs_are_read_exactly_and_imported_back(tmp_path):
     own, the mirrored one too), and `aidl import` writes them as `Ellipse(..., start_angle=,
     end_angle=)`: rendered back, the same ELLIPSE arcs (re-read with ezdxf)."""
     from aidl_lang.drawing import read_drawing
-    from aidl_lang.drawing.program import import_drawing
+    from aidl_lang.drawing.write.program import import_drawing
     src = tmp_path / "e.dxf"
     _elliptic_dxf(src)
     d = read_drawing(src.read_bytes(), "e.dxf")
@@ -323,7 +323,7 @@ def test_svg_elliptic_arc_round_trip(tmp_path):
     """An SVG path with an elliptical arc (rx != ry, turned) closed by a line: imported,
     rendered, the SVG re-read by svgelements gives the same arc (centre, radii, ends)."""
     import svgelements as se
-    from aidl_lang.drawing.program import import_drawing
+    from aidl_lang.drawing.write.program import import_drawing
     svg = ('<svg xmlns="http://www.w3.org/2000/svg" width="60mm" height="40mm" '
            'viewBox="0 0 60 40"><path d="M10,30 A25,10 20 0 1 50,25 Z" fill="none" '
            'stroke="black"/></svg>')
@@ -385,7 +385,7 @@ def test_a_bulge_over_a_half_turn_keeps_its_centre(sweep_deg):
     about the mirrored centre once the writer kept such arcs whole)."""
     import math
 
-    from aidl_lang.drawing.dxf import _bulge_arc
+    from aidl_lang.drawing.read.dxf import _bulge_arc
     c, r = (3.0, -2.0), 7.5
     a0 = math.radians(20)
     sweep = math.radians(sweep_deg)
@@ -401,7 +401,7 @@ def test_dxf_text_is_imported_as_text_engravings(tmp_path):
     with its height as the cap height, its rotation and alignment; a layer of only text is a
     drawing.  Drawing2D engraves the same strokes on the part."""
     from aidl_lang.drawing import read_drawing
-    from aidl_lang.drawing.program import import_drawing
+    from aidl_lang.drawing.write.program import import_drawing
     doc = _doc()
     msp = doc.modelspace()
     msp.add_lwpolyline([(0, 0), (60, 0), (60, 30), (0, 30)], close=True)
@@ -448,7 +448,7 @@ def test_import_writes_the_numbers_the_drawing_meant_not_float_noise():
     """A reader's float noise (a hole centre read as 43.99999999999999 mm, an end as
     25.000000000000004) is written as the decimal it stands for, within 1e-12 mm; a number
     that really has more digits keeps them."""
-    from aidl_lang.drawing.program import _num
+    from aidl_lang.drawing.write.program import _num
     assert _num(43.99999999999999) == "44"
     assert _num(25.000000000000004) == "25"
     assert _num(-1.7000000000000002) == "-1.7"
@@ -457,7 +457,7 @@ def test_import_writes_the_numbers_the_drawing_meant_not_float_noise():
     assert float(_num(21.666666666666668)) == pytest.approx(21.666666666666668, abs=1e-12)
     doc = _doc()
     doc.modelspace().add_circle((0.1 + 0.2, 43.99999999999999), 1.7000000000000002)
-    from aidl_lang.drawing.program import import_drawing
+    from aidl_lang.drawing.write.program import import_drawing
     buf = __import__("io").StringIO()
     doc.write(buf)
     text, _notes = import_drawing(buf.getvalue().encode(), "noise.dxf")
@@ -560,7 +560,7 @@ ISLAND_SVG = {
 
 def _writers():
     from aidl_lang.drawing.infer import import_drawing as infer_import
-    from aidl_lang.drawing.program import import_drawing
+    from aidl_lang.drawing.write.program import import_drawing
     return {"plain": lambda b, n: import_drawing(b, n),
             "parts": lambda b, n: import_drawing(b, n, parts=True),
             "infer": lambda b, n: infer_import(b, n, infer=True)}
@@ -647,7 +647,7 @@ def test_a_circle_and_an_ellipse_hole_drawn_overlapping_on_a_cut_role_cut_every_
     (numpy, 400,000 chords), to 1e-4 mm.  The ellipse was no loop there: W0508 on the
     design as drawn, and its 30.64 mm inside the circle and the circle's inside it not cut."""
     import numpy as np
-    from aidl_lang.drawing.program import import_drawing
+    from aidl_lang.drawing.write.program import import_drawing
     svg = b"""<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="60mm"
     viewBox="0 0 100 60"><g stroke="#000000" fill="none">
     <rect x="0" y="0" width="100" height="60"/><ellipse cx="40" cy="30" rx="15" ry="8"/>

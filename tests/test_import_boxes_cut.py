@@ -14,7 +14,7 @@ import math
 
 import pytest
 
-from aidl_lang.drawing.program import import_drawing
+from aidl_lang.drawing.write.program import import_drawing
 from aidl_lang.pipeline import compile_source
 
 

@@ -23,7 +23,7 @@ import pytest
 from aidl_lang import api
 from aidl_lang.diagnostics import DiagnosticSink
 from aidl_lang.drawing import DrawingError
-from aidl_lang.drawing.program import import_drawing
+from aidl_lang.drawing.write.program import import_drawing
 from aidl_lang.limits import Budget
 from aidl_lang.pipeline import _compile, compile_source, run_deep
 

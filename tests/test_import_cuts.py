@@ -20,7 +20,7 @@ import re
 import pytest
 
 import aidl_lang
-from aidl_lang.drawing.program import import_drawing
+from aidl_lang.drawing.write.program import import_drawing
 from aidl_lang.drawing.read import read_drawing
 
 HEAD = ('<?xml version="1.0" encoding="utf-8"?>\n'

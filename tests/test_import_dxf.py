@@ -417,8 +417,8 @@ def test_an_import_parses_the_dxf_once_and_keeps_ezdxfs_log_note(monkeypatch):
     read it again): a 20,000-hole panel spent 10.6 of its 15 s budget in ezdxf's parser and
     was refused.  Now once per import; ezdxf's log lines of that parse still make the note
     of the read (said again on each later read)."""
-    from aidl_lang.drawing import dxf as dxf_mod
-    from aidl_lang.drawing.program import import_drawing
+    from aidl_lang.drawing.read import dxf as dxf_mod
+    from aidl_lang.drawing.write.program import import_drawing
     doc, msp = new()
     a = msp.add_line((0, 0), (10, 0), dxfattribs={"layer": "CUT"})
     msp.add_line((10, 0), (10, 10), dxfattribs={"layer": "CUT"})

@@ -24,7 +24,7 @@ import re
 
 import pytest
 
-from aidl_lang.drawing.program import import_drawing
+from aidl_lang.drawing.write.program import import_drawing
 from aidl_lang.drawing.read import read_drawing
 from aidl_lang.pipeline import compile_source
 
@@ -290,7 +290,7 @@ def test_a_panel_of_round_holes_is_written_compactly_and_found_in_a_grid(monkeyp
     which loop lies in which is found through a grid of boxes, a whole circle measured as
     itself (each probe against every loop's box: 4.3 s at 20,000 holes, quadratic)."""
     import aidl_lang.limits as L
-    from aidl_lang.drawing import program as program_mod
+    from aidl_lang.drawing.write import program as program_mod
     from aidl_lang.output.part import nearby
     holes = [(10 + 10 * i, 10 + 10 * j, 3 if (i + j) % 3 else 2) for i in range(12)
              for j in range(8)]

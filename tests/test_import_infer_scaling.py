@@ -35,7 +35,7 @@ import ezdxf
 import pytest
 
 import aidl_lang
-from aidl_lang.drawing import infer, infer_shapes
+from aidl_lang.drawing.infer import infer, shapes as infer_shapes
 from aidl_lang.drawing.infer import import_drawing, to_program_inferred
 from aidl_lang.drawing.model import DrawingError
 from aidl_lang.limits import DEFAULT_BUDGET, Deadline, OutOfBudget, now
@@ -222,7 +222,7 @@ def test_infer_grows_linearly_with_the_drawing(kind):
     worst = {m: g for m, g in grew.items() if g > GROWTH}
     assert not worst, (f"past {GROWTH}x from 500 to 2,000: {worst}; calls: "
                        + str({m: (small[m], large[m]) for m in worst}))
-    assert "infer.py" in large and "infer_patterns.py" in large, large
+    assert "infer.py" in large and "patterns.py" in large, large
 
 
 def test_the_inferred_panel_is_the_drawing(tmp_path):
@@ -264,7 +264,7 @@ class _Counting(Deadline):
 
 
 def _layers(kind: str, n: int):
-    from aidl_lang.drawing.program import layer_names
+    from aidl_lang.drawing.write.program import layer_names
     from aidl_lang.drawing.read import read_drawing
     doc, _ = FAMILIES[kind](n)
     data = _bytes(doc)

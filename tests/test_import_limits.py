@@ -218,7 +218,7 @@ def test_aidl_import_budget_scales_the_shape_limit_of_a_dxf_as_of_an_svg(tmp_pat
     250 circles first (then E0304 on the program's size).  Now the DXF stops at 240 (K
     0.002) with E0130 naming the scaled limit, as the same SVG does (``import_drawing``, what
     the command runs).  The files written by ezdxf and by hand."""
-    from aidl_lang.drawing.program import import_drawing
+    from aidl_lang.drawing.write.program import import_drawing
     from aidl_lang.drawing.read import DrawingError
     from aidl_lang.limits import DEFAULT_BUDGET
     rows = ['<svg xmlns="http://www.w3.org/2000/svg" width="600mm" height="600mm" '

@@ -16,7 +16,7 @@ import textwrap
 import pytest
 
 import aidl_lang
-from aidl_lang.drawing.program import import_drawing
+from aidl_lang.drawing.write.program import import_drawing
 from aidl_lang.drawing.read import read_drawing
 from aidl_lang.geometry.curves import Arc, Circle, Line
 

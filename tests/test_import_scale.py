@@ -18,7 +18,7 @@ import ezdxf
 import pytest
 
 import aidl_lang
-from aidl_lang.drawing import dxf as dxf_reader
+from aidl_lang.drawing.read import dxf as dxf_reader
 from aidl_lang.drawing.read import read_drawing
 from aidl_lang.geometry import drawing2d
 

@@ -21,7 +21,7 @@ from hypothesis import HealthCheck, assume, example, given, settings, strategies
 
 import aidl_lang
 from aidl_lang.drawing import read_drawing
-from aidl_lang.drawing.program import import_drawing
+from aidl_lang.drawing.write.program import import_drawing
 from aidl_lang.geometry.curves import Arc, Circle, EllipticArc, Line
 
 TAU = 2 * math.pi

@@ -86,7 +86,7 @@ def test_the_diameter_sign_is_a_slashed_o_wider_than_a_slash(compiled):
 
 
 def test_a_dxf_text_with_percent_codes_imports_without_a_missing_glyph(tmp_path):
-    from aidl_lang.drawing.program import import_drawing
+    from aidl_lang.drawing.write.program import import_drawing
     doc = ezdxf.new("R2010")
     doc.units = 4
     msp = doc.modelspace()

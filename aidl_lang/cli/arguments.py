@@ -306,7 +306,7 @@ def _snap_tolerance(text: str) -> float:
     """``--snap``'s tolerance in mm: a number with an optional unit (mm, cm, in)."""
     import argparse
     import re
-    from ..drawing.snap import MAX_SNAP
+    from ..drawing.chains.snap import MAX_SNAP
     m = re.fullmatch(r"\s*([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)\s*(mm|cm|in)?\s*", text)
     if not m:
         raise argparse.ArgumentTypeError(f"`{text}` is no length: write it as 0.01mm, "

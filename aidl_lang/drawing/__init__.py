@@ -1,8 +1,16 @@
-"""Drawings brought in from other tools: DXF (ezdxf) and SVG (svgelements) read as exact
-curves (:func:`~.read.read_drawing`: :mod:`.dxf`, :mod:`.svg`, joined by :mod:`.chain` into
-the :mod:`.model`'s outlines and paths, with the :mod:`.roles` of their layers and colours),
-and turned into an editable AIDL program (:mod:`.program`, ``aidl import``).
-docs/language.md "Drawing2D" and docs/import.md."""
+"""Drawings brought in from other tools, in four stages, each a folder (docs/import.md,
+"How an import works"):
+
+1. :mod:`.read`: a DXF (ezdxf) or SVG (svgelements) file's bytes in, exact curves out;
+2. :mod:`.chains`: curves in, closed loops and open paths out (the :mod:`.model`'s
+   :class:`~.model.Drawing`, with its notes);
+3. :mod:`.infer` (``aidl import --infer``): a Drawing in, the design it shows (shapes,
+   patterns, features anchored to their part, params) out;
+4. :mod:`.write`: a Drawing (or the inferred design) in, the text of an AIDL program out.
+
+:mod:`.model` is the data they share.  Stages import only the ones below them:
+infer > write > read > chains > model (pyproject.toml's contract).  docs/language.md
+"Drawing2D" and docs/import.md."""
 from .model import Drawing, DrawingError, Note
 from .read import read_drawing
 

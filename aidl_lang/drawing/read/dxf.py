@@ -16,12 +16,12 @@ import math
 from contextlib import contextmanager
 from contextvars import ContextVar
 
-from ..geometry.curves import Arc, Circle, Line, elliptic_arc
-from ..limits import MAX_EXTENT
+from ...geometry.curves import Arc, Circle, Line, elliptic_arc
+from ...limits import MAX_EXTENT
 from .affine import arc_curve, dxf_conic, flattens, whole_curve
-from .chain import _chain, _finish
+from ..chains.chain import _chain, _finish
 from .dxf_spline import _check_spline, _dxf_spline
-from .model import (_OPTS, JOIN_TOL, MAX_ENTITIES, UNIT_MM, Drawing, DrawingError, Note,
+from ..model import (_OPTS, JOIN_TOL, MAX_ENTITIES, UNIT_MM, Drawing, DrawingError, Note,
                     _check_made, _finite, _mm, _OutOfRange, _plural, _range_error, _Skip)
 
 
@@ -270,7 +270,7 @@ def _check_layers(doc, msp, name: str, layer, layers: set) -> None:
     missing = [ly for ly in ([layer] if isinstance(layer, str) else layer)
                if ly.lower() not in known]
     if missing and not any(entity_layer(e).lower() in layers for e in msp):
-        from ..diagnostics import did_you_mean
+        from ...diagnostics import did_you_mean
         sugg = did_you_mean(missing[0], [ly.dxf.name for ly in doc.layers])
         raise DrawingError("E0132", f"`{name}` has no layer `{missing[0]}`",
                            ("did you mean " + ", ".join(f"`{s}`" for s in sugg) + "?")
@@ -992,7 +992,7 @@ def _copies(e) -> int:
 def _loop_key(segs) -> tuple:
     """A loop's segments as a set of rounded starts and kinds (the same loop whatever its
     direction and first segment)."""
-    from ..geometry.curves import reverse
+    from ...geometry.curves import reverse
     a = sorted((type(s).__name__, round(s.start[0], 6), round(s.start[1], 6),
                 round(s.end[0], 6), round(s.end[1], 6)) for s in segs)
     b = sorted((type(s).__name__, round(r.start[0], 6), round(r.start[1], 6),

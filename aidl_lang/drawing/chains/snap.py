@@ -28,8 +28,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from ..geometry.curves import Arc, Circle, Spline
-from .model import Drawing
+from ...geometry.curves import Arc, Circle, Spline
+from ..model import Drawing
 
 SAMPLES = 16        # points per Bézier span at which the deviation is taken
 MAX_SNAP = 10.0     # mm: the largest tolerance --snap takes

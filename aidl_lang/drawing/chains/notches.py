@@ -30,8 +30,8 @@ def _notches(out: list, across: dict, polys: list, loops: list, areas: list,
     import manifold3d as mf
     import numpy as np
 
-    from ..geometry.curves import Loop
-    from ..geometry.drawing2d import _inside_many
+    from ...geometry.curves import Loop
+    from ...geometry.drawing2d import _inside_many
     found: dict = {}
     for i, cand in across.items():
         H = polys[i]
@@ -67,7 +67,7 @@ def _polygons_touch(P, Q, reach: float = 1e-3) -> bool:
     share none."""
     import manifold3d as mf
 
-    from .model import GAP_NOTE
+    from ..model import GAP_NOTE
     a = mf.CrossSection([P.tolist()], mf.FillRule.NonZero).offset(reach, mf.JoinType.Square)
     b = mf.CrossSection([Q.tolist()], mf.FillRule.NonZero)
     return (a ^ b).area() > GAP_NOTE * reach

@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import math
 
-from ..geometry.curves import Arc, Circle, EllipticArc, Loop, Spline
-from .model import GAP_NOTE, Path
+from ...geometry.curves import Arc, Circle, EllipticArc, Loop, Spline
+from ..model import GAP_NOTE, Path
 
 
 def polygons_overlap(P, Q) -> bool:
@@ -35,7 +35,7 @@ def overlapping_holes(loops: list, inside: list, deadline=None) -> tuple[dict, d
     holes is not 12 million pairs).  ``deadline``: a :class:`~aidl_lang.limits.Deadline` checked per part, or None."""
     import numpy as np
 
-    from ..output.part.nearby import box_pairs
+    from ...output.part.nearby import box_pairs
     depth = [len(c) for c in inside]
     holes: dict = {}                                    # a part's loop -> its holes
     for i in range(len(loops)):
@@ -80,7 +80,7 @@ def inner_rests(loops: list, inside: list, deadline=None,
     a set to which each pair of overlapping holes is added, as the frozenset of their
     :func:`loop_key` (so that the writer can say that the two may cut one opening,
     whichever part the loops are written in)."""
-    from ..geometry.drawing2d import _inside
+    from ...geometry.drawing2d import _inside
     partners, poly = overlapping_holes(loops, inside, deadline)
     if pairs is not None:
         pairs.update(frozenset((loop_key(loops[i]), loop_key(loops[j])))
@@ -116,7 +116,7 @@ def _middle(s) -> tuple[float, float]:
     if isinstance(s, EllipticArc):
         return s.at(s.start_param + s.sweep / 2)
     if isinstance(s, Spline):
-        from ..geometry.spline import bez_at
+        from ...geometry.spline import bez_at
         return bez_at(s.spans[len(s.spans) // 2], 0.5)
     return ((s.start[0] + s.end[0]) / 2, (s.start[1] + s.end[1]) / 2)
 
@@ -147,7 +147,7 @@ def cut_at_crossings(segs: list, others: list, box=None) -> tuple[list, list]:
     crossing, turning as it does.  With ``box`` (``(x0, y0, x1, y1)``, mm) only the segments
     whose box meets it are cut, the others kept whole; ``near`` says which pieces come of
     segments that were cut (all, without ``box``)."""
-    from ..geometry.curves import carrier, crossings
+    from ...geometry.curves import carrier, crossings
     from .chain import _distinct, _piece_length, _split_at
 
     boxes = [_hull_box(t) for t in others]

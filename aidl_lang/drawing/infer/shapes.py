@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from ..geometry.curves import Arc, Circle, Line
+from ...geometry.curves import Arc, Circle, Line
 
 EQUAL_TOL = 1e-7    # mm: two points, radii or lengths this close are the same
 ROUND_TOL = 1e-9    # mm: a number within this of a shorter decimal is written as that decimal
@@ -303,7 +303,7 @@ def circular(segs: list) -> list:
     """``segs`` with each elliptical arc whose two radii are equal (an SVG ``A`` or ``rect``
     corner) as the circular :class:`Arc` it is: the same points (its parameter is its angle
     less the rotation)."""
-    from ..geometry.curves import EllipticArc
+    from ...geometry.curves import EllipticArc
     out = []
     for g in segs:
         if isinstance(g, EllipticArc) and not g.whole and \

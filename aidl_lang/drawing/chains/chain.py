@@ -13,8 +13,8 @@ from __future__ import annotations
 
 import math
 
-from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
-from .model import (_OPTS, JOIN_TOL, Drawing, Note, Outline, Path, _plural, _segs_box,
+from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
+from ..model import (_OPTS, JOIN_TOL, Drawing, Note, Outline, Path, _plural, _segs_box,
                     bezier_spline)
 
 MAX_CROSSING_CHORDS = 6000   # loops with more chords are not checked for crossing themselves
@@ -90,7 +90,7 @@ def _chain(pieces: list, tol: float = JOIN_TOL, gaps: list | None = None,
     ``tol`` above :data:`JOIN_TOL` (the closing tolerance): ends that far apart are made to
     meet exactly (:func:`_meet`) and each gap so closed is appended to ``gaps`` as ``(gap mm,
     where)``.  ``deadline``: a :class:`~aidl_lang.limits.Deadline`, checked as it goes."""
-    from ..geometry.curves import reverse
+    from ...geometry.curves import reverse
     pieces = [list(p) for p in pieces]
     used = [False] * len(pieces)
     grid: dict = {}
@@ -211,7 +211,7 @@ def _split_at(s, x) -> tuple | None:
     end)``, each on ``s``'s own carrier (:func:`~aidl_lang.geometry.curves.with_ends`:
     exact, a line stays a line, an arc an arc, a curve the same curve); None when ``x`` is
     not on ``s`` between its ends (their lengths do not add up to its own)."""
-    from ..geometry.curves import with_ends
+    from ...geometry.curves import with_ends
     try:
         a, b = with_ends(s, s.start, x), with_ends(s, x, s.end)
         la, lb, l0 = _piece_length(a), _piece_length(b), _piece_length(s)
@@ -240,7 +240,7 @@ def _overshoot(segs: list, bound: float):
     crossing with the bits before and after it trimmed, or None.  The trimmed bits each run
     at most ``bound`` mm along the chain; the crossing is exact on both pieces' carriers
     (:func:`~aidl_lang.geometry.curves.crossings`)."""
-    from ..geometry.curves import carrier, crossings
+    from ...geometry.curves import carrier, crossings
     if bound <= 0 or len(segs) < 2 or math.dist(segs[0].start, segs[-1].end) > 2 * bound:
         return None
     heads, run = [], 0.0            # the pieces whose start lies within bound of the start
@@ -315,7 +315,7 @@ def _trim_small_loops(segs: list, bound: float, closed: bool) -> tuple[list, int
     is the chain without it: Boxes.py draws one at each inner corner with its default
     ``inner_corners="loop"`` and a burn (kerf) correction, and its D-bores' flat crosses
     their arc so.  Returns the chain and the number of loops cut out."""
-    from ..geometry.curves import carrier, crossings
+    from ...geometry.curves import carrier, crossings
     n_cut = 0
     out = list(segs)
     i = 0
@@ -372,7 +372,7 @@ def _split_crossing(segs: list, hit, boxes=None) -> tuple[list, list] | None:
     drawn is kept, end to end, in one loop or the other.  None when no exact crossing of two
     pieces lies within :data:`CROSSING_NEAR` of ``hit`` (with a loop longer than
     :data:`LOBE_MIN` on each side)."""
-    from ..geometry.curves import carrier, crossings
+    from ...geometry.curves import carrier, crossings
     r = CROSSING_NEAR
     boxes = boxes or [_box_of(sg) for sg in segs]
     near = [i for i, b in enumerate(boxes)
@@ -559,7 +559,7 @@ def _drop_in(segs: list, tol: float, dropped: dict) -> list:
                 dropped["Bézier piece"] = dropped.get("Bézier piece", 0) + len(spans) - len(keep)
                 if not keep:
                     continue
-                from ..geometry.curves import _span_steps
+                from ...geometry.curves import _span_steps
                 h = _span_steps(s)
                 kept = [list(spans[i]) for i in keep]
                 for j in range(1, len(kept)):        # each span starts where the last ended
@@ -584,8 +584,8 @@ def _corner_loops(segs: list) -> tuple[list, int]:
     were turned round."""
     import numpy as np
 
-    from ..geometry.curves import reverse, sample_xy
-    from ..geometry.drawing2d import _inside
+    from ...geometry.curves import reverse, sample_xy
+    from ...geometry.drawing2d import _inside
     at = [i for i, s in enumerate(segs) if _is_corner_loop(s)]
     if not at or len(at) == len(segs):
         return segs, 0
@@ -615,7 +615,7 @@ SPIKE_TOL = 0.005        # mm: a curve out to a cusp and back this near itself i
 def _beside(s, other, tol: float) -> bool:
     """Whether every point of segment ``s`` (its chord ends) lies within ``tol`` of
     ``other``'s carrier."""
-    from ..geometry.curves import carrier, distance_to, sample_xy
+    from ...geometry.curves import carrier, distance_to, sample_xy
     xs: list = []
     ys: list = []
     sample_xy([s], xs, ys)
@@ -631,7 +631,7 @@ def _cusp_spikes(segs: list) -> tuple[list, int]:
     A laser cuts the spike once and it adds nothing to the part: the shorter piece is left
     out, the longer one cut at the foot of the shorter one's far end (on its own carrier)
     and a line bridges the hair between them.  Returns the loop and how many spikes."""
-    from ..geometry.curves import carrier, foot, tangent_at
+    from ...geometry.curves import carrier, foot, tangent_at
     out, n_cut, i = list(segs), 0, 0
     while i < len(out) and len(out) > 3:
         a, b = out[i], out[(i + 1) % len(out)]
@@ -677,7 +677,7 @@ def _cusp_spline_crossings(a: Spline, b: Spline) -> list:
     mm all along where they run within 1e-3 mm of each other from the cusp (hundreds of box
     pairs, each polished: 0.1 s a cusp); this is about 40 points a piece."""
     import numpy as np
-    from ..geometry.spline import newton2
+    from ...geometry.spline import newton2
     F = [0.0] + [2.0 ** -k for k in range(40, -1, -1)]
     ua = [a.u1 + (a.u0 - a.u1) * f for f in F]           # from the cusp back along a
     vb = [b.u0 + (b.u1 - b.u0) * f for f in F]           # from the cusp on along b
@@ -718,7 +718,7 @@ def _cusp_crossings(segs: list, bound: float) -> tuple[list, int]:
     statement the compiler checks so) that loops over itself is no outline (E0108).  Of
     several such crossings the farthest from the cusp within ``bound`` is taken.  Returns
     the loop and the number of loops cut out."""
-    from ..geometry.curves import tangent_at
+    from ...geometry.curves import tangent_at
     out, n_cut, i = list(segs), 0, 0
     while i < len(out) and len(out) > 2:
         j = (i + 1) % len(out)
@@ -889,7 +889,7 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
             if len(parts) > 1 and abs(o.area) <= LOBE_MIN ** 2:
                 continue        # a curve drawn out and back over itself: no area, no loop
             if o.area < 0:
-                from ..geometry.curves import reverse
+                from ...geometry.curves import reverse
                 o.segments = [reverse(s) for s in reversed(o.segments)]
             if opts.split_crossings:             # a cut role: corner loops cut
                 o.segments = _corner_loops(o.segments)[0]

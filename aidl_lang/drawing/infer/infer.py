@@ -41,20 +41,20 @@ from __future__ import annotations
 import math
 from collections import Counter
 
-from ..geometry.curves import Arc, Line, Loop
-from .infer_attachments import _attachments, _circle_attachments, _notches
-from .infer_params import _Params, _center, _ctor, _deg, _hole_name, _plus, _r
-from .infer_patterns import (_Cells, _copies, _grid, _line, _periodic, _polar,
+from ...geometry.curves import Arc, Line, Loop
+from .attachments import _attachments, _circle_attachments, _notches
+from .params import _Params, _center, _ctor, _deg, _hole_name, _plus, _r
+from .patterns import (_Cells, _copies, _grid, _line, _periodic, _polar,
                              _polar_chain, _polar_polys, _runs, _stagger, _steps,
                              _tick_families, _unknown)
-from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
+from .shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                            recognise)
-from .infer_text import along_texts, stroke_texts
-from .infer_layers import _hole_layers
-from .infer_mirror import mirrored_pair, pair_items, write_pair
-from .program import (_Names, _Writer, _containers, _cut_notes, _ident, _layer_items,
+from .text import along_texts, stroke_texts
+from .layers import _hole_layers
+from .mirror import mirrored_pair, pair_items, write_pair
+from ..write.program import (_Names, _Writer, _containers, _cut_notes, _ident, _layer_items,
                       _length, _num, _pt, _string, _whole_ellipse)
-from .model import Drawing, Note
+from ..model import Drawing, Note
 
 
 def _holds(segs: list, prefix: str, closed: bool = True) -> list[str]:
@@ -67,8 +67,8 @@ def _holds(segs: list, prefix: str, closed: bool = True) -> list[str]:
     closed spline (held whole); a chain of splines and other pieces stays free as ``aidl
     import`` writes it."""
     if not all(isinstance(g, (Line, Arc)) for g in segs):
-        from ..geometry.curves import Spline
-        from .program import _bezier_runs
+        from ...geometry.curves import Spline
+        from ..write.program import _bezier_runs
         one = _bezier_runs(list(segs))
         if closed and len(one) == 1 and isinstance(one[0], Spline):
             return [f"{prefix}0"]       # one closed Bezier or Spline: rigid, held whole
@@ -935,7 +935,7 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
 def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d: Drawing,
            prefix: str, shift=None) -> None:
     if _unknown(d) or (d.engrave is not None and _unknown(d.engrave)):
-        from .program import _structure
+        from ..write.program import _structure
         _structure(w, depth, "solid", name, d)
         return
     part = _Part(w, params, stats, prefix)
@@ -1087,7 +1087,7 @@ INFER_PER_PIECE = 60e-6
 def infer_seconds(layers: list[tuple[str, Drawing]]) -> float:
     """The estimate (s) of :func:`to_program_inferred` of ``layers``: :data:`INFER_START`
     and :data:`INFER_PER_PIECE` for each line, arc, curve, circle, ellipse and text."""
-    from .program import _count_segments
+    from ..write.program import _count_segments
     return INFER_START + INFER_PER_PIECE * sum(_count_segments(d) for _, d in layers)
 
 
@@ -1096,9 +1096,9 @@ def _refuse_too_large(layers: list, source: str, deadline) -> None:
     :func:`infer_seconds` of ``layers`` would end past ``deadline`` (the import's)."""
     if deadline is None:
         return
-    from ..limits import OutOfBudget
-    from .model import DrawingError
-    from .program import _count_segments
+    from ...limits import OutOfBudget
+    from ..model import DrawingError
+    from ..write.program import _count_segments
     try:
         deadline.check("inferring the design", ahead=infer_seconds(layers))
     except OutOfBudget as ex:
@@ -1165,5 +1165,5 @@ def import_drawing(data: bytes, name: str, infer: bool = False, **options):
     file name, ``options`` its keywords: ``unit``, ``layer``, ``parts``, ``budget``, ...),
     the program written by :func:`to_program_inferred` when ``infer``, else piece by piece.
     Returns ``(program text, notes)``; raises :class:`~.read.DrawingError`."""
-    from .program import import_drawing as _import
+    from ..write.program import import_drawing as _import
     return _import(data, name, writer=to_program_inferred if infer else None, **options)

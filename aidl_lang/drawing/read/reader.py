@@ -44,14 +44,14 @@ The pieces live by what they do: :mod:`.model` (the drawing, its errors, the num
 """
 from __future__ import annotations
 
-from .chain import open_gaps
+from ..chains.chain import open_gaps
 from .dxf import _read_dxf
-from .model import (_OPTS, CLOSE_TOL, JOIN_TOL, MAX_ENTITIES, UNIT_MM, Drawing, DrawingError,
+from ..model import (_OPTS, CLOSE_TOL, JOIN_TOL, MAX_ENTITIES, UNIT_MM, Drawing, DrawingError,
                     Note, Outline, Path, _Options)
 from .roles import _colour_name, _role_of
 from .svg import _bad_data_note, _read_svg, _svg_prescan
 
-# the drawing model is read from here too (drawing/infer.py, the tests, docs/api.md)
+# the drawing model is read from here too (drawing/infer/, the tests, docs/api.md)
 __all__ = ["read_drawing", "Drawing", "DrawingError", "Note", "Outline", "Path", "open_gaps",
            "CLOSE_TOL", "JOIN_TOL", "MAX_ENTITIES", "UNIT_MM"]
 

@@ -13,8 +13,8 @@ from __future__ import annotations
 
 import math
 
-from ..geometry.curves import Arc, Circle, Line
-from .model import Drawing
+from ...geometry.curves import Arc, Circle, Line
+from ..model import Drawing
 
 TOL = 1e-7              # mm: a mirrored piece against the other part's
 MAX_PIECES = 4000       # pieces of a part compared (one for one, by their rounded keys)
@@ -81,7 +81,7 @@ def mirrored_pair(d: Drawing, deadline=None):
     if d.paths or d.texts or d.ellipses or d.engrave is not None or \
             not 2 <= len(d.outlines) + len(d.circles) <= MAX_LOOPS:
         return None
-    from .program import _split_parts
+    from ..write.program import _split_parts
     parts, loose = _split_parts(d, deadline)
     if len(parts) != 2 or (loose is not None and not loose.empty) or \
             any(p.paths or p.texts or p.ellipses or p.engrave is not None for p in parts):
@@ -128,7 +128,7 @@ def write_pair(w, depth: int, name: str, first: Drawing, axis: tuple, box: tuple
     the first part written by ``solid(depth, part name, drawing)`` (the inferred solid's
     writer), its mirror image made by ``Mirrored`` about a held construction line; an
     assembly, the two parts being apart (a solid of both would be ``W0504``)."""
-    from .program import _pt
+    from ..write.program import _pt
     inner = word if word != name else f"{word}_a"
     w.emit(depth, f"assembly {name} {{")
     solid(depth + 1, inner, first)

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 
-from ..geometry.curves import Arc, Circle, elliptic_arc
+from ...geometry.curves import Arc, Circle, elliptic_arc
 
 SINGULAR = 1e-12        # |u x v| at or below this times |u| |v|: the map flattens the curve
 ROUND = 1e-12           # semi-axes equal to this (relative): a circle

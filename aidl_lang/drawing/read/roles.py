@@ -5,7 +5,7 @@ colours, ACI numbers) and the preset ``roles="laser"`` (Boxes.py's colours) in, 
 (svgelements) or AutoCAD colour indices (ezdxf's table)."""
 from __future__ import annotations
 
-from .model import DrawingError
+from ..model import DrawingError
 
 
 # roles="laser": the colours Boxes.py (boxes/Color.py: OUTER_CUT black, INNER_CUT blue,

@@ -18,8 +18,8 @@ from __future__ import annotations
 
 import math
 
-from ..geometry.curves import Arc, Line
-from .infer_shapes import EQUAL_TOL, Shape, _close, rrect_pieces
+from ...geometry.curves import Arc, Line
+from .shapes import EQUAL_TOL, Shape, _close, rrect_pieces
 
 
 def _attachments(segs: list):
@@ -76,7 +76,7 @@ def _attachments(segs: list):
 def _on_piece(m, s) -> bool:
     """Piece ``m`` of the rectangle lies on piece ``s`` of the loop, or ``s`` on ``m``
     (a side of the rectangle interrupted by a tab is two shorter lines)."""
-    from .infer_shapes import _same
+    from .shapes import _same
     if not isinstance(s, (Line, Arc)):
         return False            # a curve is never a piece of a side (its ends may be)
     if isinstance(m, Arc) or isinstance(s, Arc):
@@ -207,7 +207,7 @@ def _tab_slot(run: list, side, room: float):
     if out <= EQUAL_TOL:
         return None
     end = (arc.center[0] - side[0] * (out + r), arc.center[1] - side[1] * (out + r))
-    from .infer_shapes import _as_slot
+    from .shapes import _as_slot
     made = _as_slot([run[1], Line(run[2].start, (run[2].end[0] - side[0] * r,
                                                  run[2].end[1] - side[1] * r)),
                      Arc(end, r, arc.start_angle + math.pi, arc.sweep),

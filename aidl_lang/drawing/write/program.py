@@ -16,11 +16,11 @@ from __future__ import annotations
 import math
 import re
 
-from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
-from ..geometry.drawing2d import _inside, _inside_many
-from .hole_cuts import cut_at_crossings, inner_rests, loop_key, polygons_overlap, runs_of
-from .model import Drawing, Note, Outline, Path
-from .notches import EDGE_ACROSS, NOTCH_AREA, _notches, _polygons_touch
+from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
+from ...geometry.drawing2d import _inside, _inside_many
+from ..chains.hole_cuts import cut_at_crossings, inner_rests, loop_key, polygons_overlap, runs_of
+from ..model import Drawing, Note, Outline, Path
+from ..chains.notches import EDGE_ACROSS, NOTCH_AREA, _notches, _polygons_touch
 
 
 SNAP = 1e-12    # mm: a coordinate within this of a shorter decimal is written as that decimal
@@ -33,7 +33,7 @@ def _num(v: float, snap: float = SNAP) -> str:
     1e-9 mm.  Angles in radians pass ``snap=0`` (exact: 1e-12 rad is 1e-9 mm at 1 m)."""
     v = float(v)
     if not math.isfinite(v) or abs(v) > 1e15:     # never written into a program
-        from .model import DrawingError
+        from ..model import DrawingError
         raise DrawingError("E0130", f"the drawing has a number {v!r} that is not finite or "
                                     f"beyond the model extent: not written",
                            "fix the entity in the drawing")
@@ -106,7 +106,7 @@ _KEYWORDS = {"solid", "hole", "cut", "drawing", "assembly", "def", "for", "in", 
 def _spline_points(s: Spline, closed: bool):
     """The points a ``Spline(...)`` statement passes through to give piece ``s`` exactly, or
     None when the piece is not an interpolating spline of its span ends."""
-    from ..geometry.spline import SplineError, interpolate
+    from ...geometry.spline import SplineError, interpolate
     spans = s.spans
     pts = [spans[0][0]] + [b[3] for b in spans]
     if closed:
@@ -138,7 +138,7 @@ def _bezier_runs(segs: list) -> list:
     """``segs`` with each run of consecutive spline pieces that are no interpolating spline
     through their span ends joined into one piece (one ``Bezier`` statement): its spans are
     the pieces' spans, end to end, each piece's start its predecessor's end bit for bit."""
-    from ..geometry.spline import CubicSpline
+    from ...geometry.spline import CubicSpline
     out: list = []
     run: list = []
 
@@ -292,7 +292,7 @@ def _containers(loops: list, deadline=None) -> list[list[int]]:
     loop's hole (its notch) whatever its probe point."""
     import numpy as np
 
-    from ..output.part.nearby import box_pairs_between
+    from ...output.part.nearby import box_pairs_between
     # a whole circle is measured as itself (its area, a distance), not as its polygon
     polys = [None if len(segs) == 1 and isinstance(segs[0], Circle) else
              np.asarray(Loop(list(segs)).points(), dtype=float) for segs in loops]
@@ -655,7 +655,7 @@ def _reached(p: Path, polys: list) -> int | None:
     (one of its pieces' ends inside it) or comes back to (an end within :data:`GAP_NOTE` of
     its edge), the nearest first; None when it reaches none."""
     import numpy as np
-    from .model import GAP_NOTE
+    from ..model import GAP_NOTE
     ends = [s.start for s in p.segments] + [p.end]
     for i, P in enumerate(polys):
         if len(P) >= 3 and any(_inside(q, P) for q in ends):
@@ -689,9 +689,9 @@ def _close_loose_cuts(d: Drawing, source: str, notes: list) -> Drawing:
 
     import numpy as np
 
-    from ..geometry.curves import reverse
-    from .chain import OVERSHOOT, _crossing, _trim_small_loops
-    from .model import CLOSE_TOL, GAP_NOTE
+    from ...geometry.curves import reverse
+    from ..chains.chain import OVERSHOOT, _crossing, _trim_small_loops
+    from ..model import CLOSE_TOL, GAP_NOTE
     if not d.paths_cut or not d.paths:
         return d
     polys = [np.asarray(Loop(list(o.segments)).points(), dtype=float) for o in d.outlines]
@@ -830,8 +830,8 @@ def layer_names(data: bytes, name: str) -> list[str]:
     SVG."""
     if not name.lower().endswith(".dxf"):
         return [""]
-    from .dxf import MAX_BLOCK_DEPTH, _EzdxfLog, _open_dxf, entity_layer
-    from .model import DrawingError
+    from ..read.dxf import MAX_BLOCK_DEPTH, _EzdxfLog, _open_dxf, entity_layer
+    from ..model import DrawingError
     try:
         with _EzdxfLog():            # its log lines: a note of the read, not the terminal
             doc = _open_dxf(data, name)
@@ -880,16 +880,16 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
     (mm, ``--snap``): Bézier circles and arcs within it taken as true ones
     (:func:`~.snap.snap_drawing`), said in the program's header.  Raises
     :class:`~.read.DrawingError`."""
-    from ..limits import DEFAULT_BUDGET, Deadline, OutOfBudget
-    from ..limits import MAX_SOURCE_BYTES as MAX_IMPORT_BYTES
-    from .read import MAX_ENTITIES, DrawingError, read_drawing
+    from ...limits import DEFAULT_BUDGET, Deadline, OutOfBudget
+    from ...limits import MAX_SOURCE_BYTES as MAX_IMPORT_BYTES
+    from ..read.reader import MAX_ENTITIES, DrawingError, read_drawing
     budget = budget or DEFAULT_BUDGET
     deadline = Deadline.starting(budget)
     limit = max(1, int(MAX_ENTITIES * budget.geometry / DEFAULT_BUDGET.geometry))
     base = name.replace("\\", "/").rsplit("/", 1)[-1]
     too_big = ("keep the drawing as one reference instead: `d = Drawing2D(\"" + base + "\")` "
                "in a solid (`aidl docs Drawing2D`), or import a part of it with --layer")
-    from .dxf import one_parse
+    from ..read.dxf import one_parse
     try:
         with one_parse():       # a DXF parsed once for its layers, each layer and role
             layers = [layer] if layer is not None else layer_names(data, name)
@@ -916,7 +916,7 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
                           if not (d.texts and "text is not imported" in n.message)
                           and all(n.message != m.message for m in notes)]
                 if snap:
-                    from .snap import snap_drawing
+                    from ..chains.snap import snap_drawing
                     snapped.append(snap_drawing(d, snap))
                 read.append((ly if isinstance(ly, str) else "_".join(ly), d))
                 total += _count_segments(d)
@@ -937,7 +937,7 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
                            "import a part of it with --layer, keep it as one `Drawing2D`, "
                            "or raise --budget") from None
     if snap:
-        from .snap import header_line
+        from ..chains.snap import header_line
         head, _, rest = text.partition("\n")
         text = f"{head}\n# {header_line(snapped, snap)}\n{rest}"
     size = len(text.encode("utf-8"))
@@ -1068,7 +1068,7 @@ def _whole_ellipse(el: tuple) -> EllipticArc:
     """The whole ellipse ``(cx, cy, rx, ry, rotation)`` of a :class:`Drawing` (mm, radians)
     as a loop's one segment, its numbers as the drawing gives them (written back as they
     are: :func:`_loop`)."""
-    from ..geometry.ellipse import EllipseCurve
+    from ...geometry.ellipse import EllipseCurve
     cx, cy, rx, ry, rot = el
     return EllipticArc(EllipseCurve((cx, cy), rx, ry, rot), 0.0, 2 * math.pi)
 
@@ -1118,7 +1118,7 @@ def _outside_remainders(d: Drawing, inside: list, deadline=None) -> list[Path]:
     left as they are.  ``inside``: :func:`_containers` of :func:`_loops_of`."""
     import numpy as np
 
-    from .model import GAP_NOTE
+    from ..model import GAP_NOTE
     loops = _loops_of(d)
     if len(loops) < 2:
         return []

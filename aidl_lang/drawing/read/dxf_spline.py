@@ -6,8 +6,8 @@ from __future__ import annotations
 
 import math
 
-from ..geometry.curves import Spline
-from .model import _lerp, _plural, _Skip, bezier_spline
+from ...geometry.curves import Spline
+from ..model import _lerp, _plural, _Skip, bezier_spline
 
 
 def _check_spline(e, P) -> None:

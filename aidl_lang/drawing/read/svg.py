@@ -15,10 +15,10 @@ from __future__ import annotations
 import io
 import math
 
-from ..geometry.curves import Circle, Line
+from ...geometry.curves import Circle, Line
 from .affine import arc_curve, singular, whole_curve
-from .chain import _finish
-from .model import (_OPTS, JOIN_TOL, UNIT_MM, Drawing, DrawingError, Note, _check_made,
+from ..chains.chain import _finish
+from ..model import (_OPTS, JOIN_TOL, UNIT_MM, Drawing, DrawingError, Note, _check_made,
                     _finite, _lerp, _mm, _OutOfRange, _range_error, bezier_spline)
 
 
@@ -62,7 +62,7 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
                         break
             if el is None:
                 ids = sorted({x.id for x in svg.elements() if getattr(x, "id", None)})
-                from ..diagnostics import did_you_mean
+                from ...diagnostics import did_you_mean
                 sugg = did_you_mean(w, ids)
                 raise DrawingError("E0132", f"`{name}` has no element or group with {what} "
                                             f"`{w}`",

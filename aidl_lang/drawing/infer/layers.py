@@ -6,10 +6,11 @@ from __future__ import annotations
 
 import re
 
-from ..geometry.curves import Loop
-from .infer_shapes import circular
-from .model import Drawing
-from .program import _containers, _inside
+from ...geometry.curves import Loop
+from ...geometry.drawing2d import _inside
+from ..model import Drawing
+from ..write.program import _containers
+from .shapes import circular
 
 
 # a layer whose name says it holds holes (HOLES, Drill, NPTH, CUTOUTS, Inner, Mounting)
@@ -24,7 +25,7 @@ def _hole_layers(layers: list[tuple[str, Drawing]], deadline=None) -> tuple[list
     that part's holes, not a solid of their own.  Returns the layers and a line for the
     program's head per move (``holes: layer `HOLES` in `OUTLINE```)."""
     import numpy as np
-    from .program import _probe
+    from ..write.program import _probe
 
     def loops(d):
         return [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]

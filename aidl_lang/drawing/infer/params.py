@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import math
 
-from .infer_shapes import ROUND_TOL, Shape
-from .program import _Names, _ident, _num, _pt
+from .shapes import ROUND_TOL, Shape
+from ..write.program import _Names, _ident, _num, _pt
 
 
 def _r(v: float) -> str:
