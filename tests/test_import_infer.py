@@ -218,7 +218,8 @@ def test_a_sheet_of_copies_with_parts_is_one_loop_of_solids(tmp_path):
     # the parts named for what they are (`plate`, not `part`), their count a param
     assert "for k in range(plate_n) {" in text and text.count("solid ") == 1, text
     assert "param plate_n = 3  # copies" in text and "solid plate {" in text
-    assert "RoundedRectangle(center=(20 + k * plate_pitch, 12.5)" in text
+    # each copy grows from its corner, as the first is drawn from (0, 0)
+    assert "RoundedRectangle(center=(k * plate_pitch + plate_width / 2, plate_height / 2)" in text
     assert "param plate_pitch = 50 mm" in text and "hole corner_holes" in text
     res = aidl_lang.compile(text, path=tmp_path / "sheet.aidl")
     assert res.ok, [str(d) for d in res.errors]
@@ -239,11 +240,13 @@ def test_svg_rounded_rect_and_a_row_of_holes(tmp_path):
     RoundedRectangle; four equal circles a row on one pitch; the y axis turned up."""
     (tmp_path / "p.svg").write_text(SVG)
     text, notes = import_drawing(SVG.encode(), "p.svg", infer=True)
-    assert "body = RoundedRectangle(center=(50, -30), width=width, height=height, " \
-           "corner_radius=corner_radius)" in text and "param corner_radius = 5 mm" in text
-    # the row is centred on the body: a new pitch or count keeps it centred
-    assert "hole holes { h = Circle(center=(50 + (i - (holes_n - 1) / 2) * holes_pitch, -30), " \
-           "diameter=holes_d) }" in text and "for i in range(holes_n) {" in text
+    # drawn from its top left corner at (0, 0) (y turned up): it grows from that corner
+    assert "body = RoundedRectangle(center=(width / 2, -height / 2), width=width, " \
+           "height=height, corner_radius=corner_radius)" in text and \
+        "param corner_radius = 5 mm" in text
+    # the row is centred on the body: a new pitch, count or size keeps it centred
+    assert "hole holes { h = Circle(center=(width / 2 + (i - (holes_n - 1) / 2) * holes_pitch, " \
+           "-height / 2), diameter=holes_d) }" in text and "for i in range(holes_n) {" in text
     assert "param holes_pitch = 20 mm" in text and "param holes_n = 4" in text
     res = aidl_lang.compile(text, path=tmp_path / "p.aidl")
     assert res.ok and res.freedom()["dof"] == 0

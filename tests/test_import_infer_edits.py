@@ -39,7 +39,7 @@ def test_role_options_infer_as_without_them(tmp_path, roles):
     data = _laser_plate(tmp_path / "l.dxf")
     text, notes = import_drawing(data, "l.dxf", infer=True, **roles)
     assert "# recognised: 8 of 8 pieces of outlines and holes in 5 shapes" in text, text
-    assert "body = Rectangle(center=(40, 25), width=width, height=height)" in text
+    assert "body = Rectangle(center=(width / 2, height / 2), width=width, height=height)" in text
     assert "hole corner_holes" in text and "cut cuts {" in text and "Polyline(" in text
     assert any("on a cut role written as through-cuts" in n.message for n in notes)
     out = []
@@ -90,7 +90,7 @@ def test_holes_on_their_own_layer_are_the_parts_holes(tmp_path):
     text, _ = import_drawing((tmp_path / "fp.dxf").read_bytes(), "fp.dxf", infer=True)
     assert "# holes: layer `HOLES` in `OUTLINE`" in text
     assert text.count("solid ") == 1 and "hole corner_holes" in text
-    assert "Circle(center=(60 + (i - (holes_n - 1) / 2) * holes_pitch, 30)" in text, text
+    assert "Circle(center=(width / 2 + (i - (holes_n - 1) / 2) * holes_pitch, height / 2)" in text, text
     res = aidl_lang.compile(text, path=tmp_path / "fp.aidl")
     assert res.ok and not [d for d in res.diagnostics if d.severity == "warning"]
     (tmp_path / "back.dxf").write_text(res.to_dxf())

@@ -15,7 +15,7 @@ import math
 
 from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from ..model import (_OPTS, JOIN_TOL, Drawing, Note, Outline, Path, _plural, _segs_box,
-                    bezier_spline)
+                     bezier_spline)
 
 MAX_CROSSING_CHORDS = 6000   # loops with more chords are not checked for crossing themselves
 

@@ -45,16 +45,16 @@ from ...geometry.curves import Arc, Line, Loop
 from .attachments import _attachments, _circle_attachments, _notches
 from .params import _Params, _center, _ctor, _deg, _hole_name, _plus, _r
 from .patterns import (_Cells, _copies, _grid, _line, _periodic, _polar,
-                             _polar_chain, _polar_polys, _runs, _stagger, _steps,
-                             _tick_families, _unknown)
+                       _polar_chain, _polar_polys, _runs, _stagger, _steps,
+                       _tick_families, _unknown)
 from .shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
-                           recognise)
+                     recognise)
 from .text import along_texts, stroke_texts
 from .layers import _hole_layers
 from .mirror import mirrored_pair, pair_items, write_pair
 from ..write.program import (_Names, _Writer, _containers, _cut_notes, _ident, _layer_items,
-                      _length, _num, _pt, _string, _whole_ellipse)
-from ..model import Drawing, Note
+                             _length, _num, _place, _pt, _string, _whole_ellipse)
+from ..model import Drawing, Note, _segs_box
 
 
 def _holds(segs: list, prefix: str, closed: bool = True) -> list[str]:
@@ -112,6 +112,15 @@ def _emit_holds(w: _Writer, depth: int, holds: list[str], var: str = "x") -> Non
 
 
 # ------------------------------------------------------------------ the writer
+def _add(text: str, d: float) -> str:
+    """``text + d`` as text (``d`` in mm; the number alone when ``text`` is 0)."""
+    if abs(d) <= ROUND_TOL:
+        return text
+    if text == "0":
+        return _r(d)
+    return f"{text} + {_r(d)}" if d > 0 else f"{text} - {_r(-d)}"
+
+
 class _Stats:
     def __init__(self) -> None:
         self.pieces = 0             # pieces of the drawing's outlines and holes
@@ -128,6 +137,9 @@ class _Part:
         self.used: set = _Names()
         self.shift: tuple | None = None     # (x term, y term) added to every position
         self.anchor: tuple | None = None    # (body Shape, its size params): edges to place by
+        self.frame = (0, 0)                 # per axis, what stays when the body's size param
+        #                                     changes: -1 its left (bottom) edge, 1 its right
+        #                                     (top) edge, 0 its centre (:meth:`grows_from`)
         self.named = _Cells([])             # centres written once, shared (their names:
         self.named_as: list[str] = []       # named_as[i] is named.points[i]'s)
 
@@ -142,29 +154,79 @@ class _Part:
         return "(" + ", ".join(_plus(c[i], self.shift[i]) if self.shift[i] else _r(c[i])
                                for i in (0, 1)) + ")"
 
+    def lit(self, v: float, axis: int) -> str:
+        """Coordinate ``v`` as a number (after the part's shift, when it has one)."""
+        return self.center((v, v))[1:-1].split(", ")[axis]
+
+    def grows_from(self, sh: Shape) -> tuple:
+        """What stays of the body ``sh`` when its width (height) param changes, per axis
+        (:attr:`frame`): the edge or the centre that the drawing's origin is on (a plate
+        drawn from its corner at (0, 0) grows from that corner, one drawn about the origin
+        about its centre); the centre when the origin is on none of them."""
+        out = []
+        for axis, key in ((0, "width"), (1, "height")):
+            c, half = sh.center[axis], sh.args[key] / 2
+            out.append(next((g for g in (-1, 1) if abs(c + g * half) <= ROUND_TOL), 0))
+        return tuple(out)
+
+    def edge(self, axis: int, side: int) -> str:
+        """The body's centre (``side`` 0) or its left/right (bottom/top) edge (-1/1) along
+        ``axis`` as the text that follows its size param from what stays (:attr:`frame`):
+        ``width / 2`` for the centre of a plate that grows from its left edge at 0."""
+        sh, sizes = self.anchor
+        key = "width" if axis == 0 else "height"
+        c, half = sh.center[axis], sh.args[key] / 2
+        g = self.frame[axis]
+        k = side - g                    # halves of the size from what stays
+        if k == 0:
+            return self.lit(c + side * half, axis)
+        size = sizes[key]
+        term = {1: f"{size} / 2", -1: f"-{size} / 2", 2: size, -2: f"-{size}"}[k]
+        return self.plus(c + g * half, term, axis)
+
     def at(self, v: float, axis: int, ref: float | None = None) -> str:
         """Coordinate ``v`` (``axis`` 0: x, 1: y) written from the body's nearest reference
         to ``ref`` (default ``v``): its centre, or its left/right (bottom/top) edge by the
         width (height) param, so that a new width moves what sits by an edge with the edge
-        and keeps what sits by the centre there (ties go to the centre)."""
+        and keeps what sits by the centre on the centre (ties go to the centre); a number
+        where that reference is what stays (:meth:`edge`)."""
         if self.anchor is None:
-            return self.center((v, v))[1:-1].split(", ")[axis]
+            return self.lit(v, axis)
         sh, sizes = self.anchor
         key = "width" if axis == 0 else "height"
         c, half = sh.center[axis], sh.args[key] / 2
         r = v if ref is None else ref
         side = min((0, -1, 1), key=lambda k: (round(abs(r - c - k * half), 9), k != 0))
-        if side == 0:
-            return self.center((v, v))[1:-1].split(", ")[axis]
-        d = v - (c + side * half)
-        term = f"{'-' if side < 0 else ''}{sizes[key]} / 2"
-        if abs(d) > ROUND_TOL:
-            term += f" + {_r(d)}" if d > 0 else f" - {_r(-d)}"
-        return self.plus(c, term, axis)
+        if side == self.frame[axis]:
+            return self.lit(v, axis)
+        return _add(self.edge(axis, side), v - (c + side * half))
+
+    def from_body_centre(self, axis: int, term: str, c: float) -> str:
+        """``term`` added to the body's centre along ``axis`` (``c``, mm, as drawn), which
+        follows the body's size param when the body grows from an edge (:meth:`edge`)."""
+        if self.anchor is None or self.frame[axis] == 0:
+            return self.plus(c, term, axis)
+        e = self.edge(axis, 0)
+        return f"{e} - {term[1:]}" if term.startswith("-") else f"{e} + {term}"
+
+    def body_centre(self, sh: Shape) -> str:
+        """The body's centre as written: numbers, or following its size params from the
+        edge it grows from (:attr:`frame`)."""
+        if self.anchor is None or self.anchor[0] is not sh:
+            return self.center(sh.center)
+        return f"({self.edge(0, 0)}, {self.edge(1, 0)})"
 
     def pos(self, c) -> str:
         """A point, as a shared centre's name when it is one, else placed by :meth:`at`."""
         return self.shared(c) or f"({self.at(c[0], 0)}, {self.at(c[1], 1)})"
+
+    def beside(self, base, p) -> str:
+        """Point ``p`` of a feature whose main shape is at ``base`` (a key beside its bore,
+        a tab of a window): numbers where ``base`` is written as numbers, else ``base``'s
+        place (:meth:`pos`) plus the offset, so that it moves with the feature."""
+        if self.pos(base) == self.center(base):
+            return self.center(p)
+        return f"({self.at(p[0], 0, ref=base[0])}, {self.at(p[1], 1, ref=base[1])})"
 
     def shared(self, c) -> str | None:
         """The name of the first shared centre within EQUAL_TOL of ``c``, or None."""
@@ -249,10 +311,11 @@ class _Part:
                 sizes["corner_radius"] = self.p("corner_radius", sh.args["corner_radius"])
         elif first and sh.kind == "Circle":
             sizes["diameter"] = self.p("diameter", 2 * sh.args["radius"])
-        self.shape_line(depth, nm, sh, self.center(sh.center), sizes)
-        self.w.emit(depth, f"Fixed({nm})")
         if "width" in sizes and abs(sh.args.get("rotation", 0.0)) <= 1e-15:
             self.anchor = (sh, sizes)
+            self.frame = self.grows_from(sh)
+        self.shape_line(depth, nm, sh, self.body_centre(sh), sizes)
+        self.w.emit(depth, f"Fixed({nm})")
         if teeth:
             self.teeth(depth, sh, teeth, "tooth")
         own = {id(x) for x in segs}
@@ -290,10 +353,11 @@ class _Part:
         nm = self.name("body" if first else "outline")
         sizes = {"width": self.p("width", rect.args["width"]),
                  "height": self.p("height", rect.args["height"])} if first else {}
-        self.shape_line(depth, nm, rect, self.center(rect.center), sizes)
-        self.w.emit(depth, f"Fixed({nm})")
         if sizes:
             self.anchor = (rect, sizes)
+            self.frame = self.grows_from(rect)
+        self.shape_line(depth, nm, rect, self.body_centre(rect), sizes)
+        self.w.emit(depth, f"Fixed({nm})")
         n = len(centres)
         along = 0 if side in ("top", "bottom") else 1
         across = 1 - along
@@ -307,7 +371,7 @@ class _Part:
         if pitch is not None:
             pp = self.p(hn + "_pitch", pitch, times=n)
             if abs(mid - c[along]) <= EQUAL_TOL:
-                pos = self.plus(c[along], f"(i - ({cnt} - 1) / 2) * {pp}", along)
+                pos = self.from_body_centre(along, f"(i - ({cnt} - 1) / 2) * {pp}", c[along])
             else:
                 f0 = self.at(centres[0], along, ref=mid)
                 pos = f"i * {pp}" if f0 == "0" else f"{f0} + i * {pp}"
@@ -318,7 +382,7 @@ class _Part:
         size = sizes.get("height" if across else "width") or \
             _r(rect.args["height" if across else "width"])
         sign = "" if side in ("top", "right") else "-"
-        dpos = self.plus(c[across], f"{sign}({size} / 2 - {nd} / 2)", across)
+        dpos = self.from_body_centre(across, f"{sign}({size} / 2 - {nd} / 2)", c[across])
         xy = (pos, dpos) if along == 0 else (dpos, pos)
         wh = (nw, nd) if along == 0 else (nd, nw)
         self.w.emit(depth, head)
@@ -429,13 +493,13 @@ class _Part:
             concentric = body is not None and _close(circle.center, body[0].center)
             hn = self.name("bore" if concentric else "round_hole")
             w.emit(depth, f"hole {hn} {{")
-            w.emit(depth + 1, f"h = {_ctor(circle, self.center(circle.center))}")
+            w.emit(depth + 1, f"h = {_ctor(circle, self.pos(circle.center))}")
             names = ["h"]
             sub = _Part(w, self.params, self.stats, self.prefix)
             sub.shift = self.shift
             word = "key" if len(teeth) == 1 else "notch"
             if len(teeth) == 1:
-                pts = ", ".join(self.center(p) for p in teeth[0])
+                pts = ", ".join(self.beside(circle.center, p) for p in teeth[0])
                 w.emit(depth + 1, f"key = Polygon([{pts}])")
                 names.append("key")
                 self.stats.kinds["Polygon"] += 1
@@ -456,14 +520,14 @@ class _Part:
             for k, t in enumerate(tabs):
                 nm = f"tab{k + 1}"
                 if isinstance(t, Shape):
-                    w.emit(depth + 1, f"{nm} = {_ctor(t, self.center(t.center))}")
+                    w.emit(depth + 1, f"{nm} = {_ctor(t, self.beside(rect.center, t.center))}")
                 else:
                     tt = recognise(t)
                     if tt is None:
                         if w.chain(depth + 1, t, True, nm + "_"):
                             fixed += _holds(t, nm + "_")
                         continue
-                    w.emit(depth + 1, f"{nm} = {_ctor(tt, self.center(tt.center))}")
+                    w.emit(depth + 1, f"{nm} = {_ctor(tt, self.beside(rect.center, tt.center))}")
                 fixed.append(nm)
             w.emit(depth, "}")
             _emit_holds(w, depth, [f"{hn}.{f}" for f in fixed])
@@ -472,7 +536,14 @@ class _Part:
             return
         hn = self.name("cutout")
         w.emit(depth, f"hole {hn} {{")
+        ref = _place(segs)
+        box = _segs_box(segs)           # placed by the reference nearest the cut-out's middle
+        where = self.beside(((box[0] + box[2]) / 2, (box[1] + box[3]) / 2), ref)
+        if where != self.center(ref):       # placed from an edge or the centre: the chain
+            w.emit(depth + 1, f"p = {where}")   # drawn from its first point, which follows
+            w.rel = ref
         ok = w.chain(depth + 1, segs, True, "e")
+        w.rel = None
         w.emit(depth, "}")
         if ok:
             _emit_holds(w, depth, _holds(segs, f"{hn}.e"))
@@ -527,7 +598,7 @@ class _Part:
                     wx, hy = bsizes.get("width"), bsizes.get("height")
                     ex = f"sx * ({wx} / 2 - {inx})" if wx else f"sx * {_r(dx / 2)}"
                     ey = f"sy * ({hy} / 2 - {iny})" if hy else f"sy * {_r(dy / 2)}"
-                    c = f"({self.plus(mid[0], ex)}, {self.plus(mid[1], ey, 1)})"
+                    c = f"({self.from_body_centre(0, ex, mid[0])}, {self.from_body_centre(1, ey, mid[1])})"
                     w.emit(depth, f"for sx in [-1, 1] {{")
                     w.emit(depth + 1, f"for sy in [-1, 1] {{")
                     self.hole_block(depth + 2, hn, sh, c, sizes)
@@ -571,10 +642,10 @@ class _Part:
                 half = self.anchor[0].args["width"] / 2 if self.anchor is not None else None
                 if sym_x and half is not None and half - x2 + B[0] < x2 - B[0]:
                     # nearer the side edges than the centre: each kept from its edge
-                    ex = self.plus(B[0], f"s * ({self.anchor[1]['width']} / 2 - "
-                                         f"{self.p(hn + '_inset', half - x2 + B[0], 'from the edges')})")
+                    ex = self.from_body_centre(0, f"s * ({self.anchor[1]['width']} / 2 - "
+                                         f"{self.p(hn + '_inset', half - x2 + B[0], 'from the edges')})", B[0])
                 elif sym_x:
-                    ex = self.plus(B[0], f"s * {self.p(hn + '_spacing', x2 - x1)} / 2")
+                    ex = self.from_body_centre(0, f"s * {self.p(hn + '_spacing', x2 - x1)} / 2", B[0])
                 else:
                     ex = self.at(x1, 0)
                 # the y of the one left (s = -1): y1 = B.y - dy / 2 when mirrored through B
@@ -582,7 +653,7 @@ class _Part:
                     dy = y2 - y1 if sym_x else abs(y2 - y1)
                     sign = "s" if (not sym_x or y2 > y1) else "-s"
                     name = hn + ("_spacing_y" if sym_x else "_spacing")
-                    ey = self.plus(B[1], f"{sign} * {self.p(name, abs(dy))} / 2", 1)
+                    ey = self.from_body_centre(1, f"{sign} * {self.p(name, abs(dy))} / 2", B[1])
                 else:
                     ey = self.at(y1, 1)
                 w.emit(depth, "for s in [-1, 1] {")

@@ -22,7 +22,7 @@ from .affine import arc_curve, dxf_conic, flattens, whole_curve
 from ..chains.chain import _chain, _finish
 from .dxf_spline import _check_spline, _dxf_spline
 from ..model import (_OPTS, JOIN_TOL, MAX_ENTITIES, UNIT_MM, Drawing, DrawingError, Note,
-                    _check_made, _finite, _mm, _OutOfRange, _plural, _range_error, _Skip)
+                     _check_made, _finite, _mm, _OutOfRange, _plural, _range_error, _Skip)
 
 
 # DXF $INSUNITS: (name, millimetres) exactly (ezdxf's factors are off by 1e-11 for inches)

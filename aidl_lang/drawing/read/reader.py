@@ -47,7 +47,7 @@ from __future__ import annotations
 from ..chains.chain import open_gaps
 from .dxf import _read_dxf
 from ..model import (_OPTS, CLOSE_TOL, JOIN_TOL, MAX_ENTITIES, UNIT_MM, Drawing, DrawingError,
-                    Note, Outline, Path, _Options)
+                     Note, Outline, Path, _Options)
 from .roles import _colour_name, _role_of
 from .svg import _bad_data_note, _read_svg, _svg_prescan
 

@@ -19,7 +19,7 @@ from ...geometry.curves import Circle, Line
 from .affine import arc_curve, singular, whole_curve
 from ..chains.chain import _finish
 from ..model import (_OPTS, JOIN_TOL, UNIT_MM, Drawing, DrawingError, Note, _check_made,
-                    _finite, _lerp, _mm, _OutOfRange, _range_error, bezier_spline)
+                     _finite, _lerp, _mm, _OutOfRange, _range_error, bezier_spline)
 
 
 def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> Drawing:
