@@ -16,7 +16,8 @@ tests/gen_drawings.py (features of every kind tied to an edge, a corner or the c
 and inches, exported through ezdxf or svgwrite with layers, blocks, bulges, transformed
 groups), each drawing given random edits of its design (the plate's width or height, a size,
 a pitch, a count).  Each edit is made through the inferred program's param whose name and
-value match what it changes, the program compiled and its DXF (read back by ezdxf) compared
+value match what it changes (of several, each in turn until one does what was meant, as a
+person would try them), the program compiled and its DXF (read back by ezdxf) compared
 with the edited design's own geometry: every outline and hole by its exact area, centroid,
 perimeter and box to 1e-6 mm, up to a translation (the plate's box), and the engraved labels
 against the plain import of the edited drawing.  Each edit is ``meant``, ``wrong`` (compiled,
@@ -145,11 +146,12 @@ def program_params(text: str) -> list:
     return out
 
 
-def find_param(text: str, design, e) -> tuple | None:
-    """The param the edit ``e`` goes by: ``(name, override text)``, or ``None``.  Its name
-    matches one of the edit's patterns (the whole name, or a tail after ``_``) and its value is
-    the design's value (x the pattern's factor, in the param's unit; a count as is); of
-    several, one whose name holds a word of the feature's kind."""
+def find_params(text: str, design, e) -> list:
+    """The params the edit ``e`` may go by, best first: ``[(name, override text)]``.  Each
+    one's name matches one of the edit's patterns (the whole name, or a tail after ``_``) and
+    its value is the design's value (x the pattern's factor, in the param's unit; a count as
+    is); those whose name holds a word of the feature's kind come first, those named for
+    another kind of feature (``bolt_circle_d`` for a D-hole of that diameter) last."""
     now = design.value(e)
     found = []
     for name, v, unit, mm in program_params(text):
@@ -167,12 +169,18 @@ def find_param(text: str, design, e) -> tuple | None:
                 new = e.new * factor * design.u / mm
                 found.append((name, f"{new!r} {unit}".strip()))
                 break
-    if not found:
-        return None
-    for name, ov in found:
-        if any(h in name for h in HINTS.get(e.feature_kind, ())):
-            return name, ov
-    return found[0]
+    return sorted(found, key=lambda f: (not _names(f[0], e.feature_kind),
+                                        any(_names(f[0], k) for k in HINTS)))
+
+
+def find_param(text: str, design, e) -> tuple | None:
+    """The best of :func:`find_params`, or ``None``."""
+    return (find_params(text, design, e) or [None])[0]
+
+
+def _names(name: str, kind: str) -> bool:
+    """Whether a param's name holds a word of a kind of feature."""
+    return any(h in name for h in HINTS.get(kind, ()))
 
 
 def _engraved(doc, shift) -> list:
@@ -294,17 +302,19 @@ def run_drawing(design, tmp: pathlib.Path, rng, k: int = 5) -> dict:
         return out
     out["exact"] = not compare(design, base, tmp)
     for e, d2 in edits:
-        p = find_param(text, design, e)
-        if p is None:
-            out["edits"].append((e, "no param", ""))
-            continue
-        got = output_of(text, tmp / "e.aidl", {p[0]: p[1]})
-        if isinstance(got, str):
-            out["edits"].append((e, "failed", f"{p[0]}={p[1]}: {got}"))
-            continue
-        bad = compare(d2, got, tmp)
-        out["edits"].append((e, "wrong" if bad else "meant",
-                             f"{p[0]}={p[1]}" + (f": misplaced {', '.join(bad)}" if bad else "")))
+        tries = []
+        for p in find_params(text, design, e):       # a person tries each that fits
+            got = output_of(text, tmp / "e.aidl", {p[0]: p[1]})
+            if isinstance(got, str):
+                tries.append((e, "failed", f"{p[0]}={p[1]}: {got}"))
+                continue
+            bad = compare(d2, got, tmp)
+            tries.append((e, "wrong" if bad else "meant",
+                          f"{p[0]}={p[1]}" + (f": misplaced {', '.join(bad)}" if bad else "")))
+            if not bad:
+                break
+        out["edits"].append(tries[-1] if tries and tries[-1][1] == "meant" else
+                            tries[0] if tries else (e, "no param", ""))
     return out
 
 

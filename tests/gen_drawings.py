@@ -17,8 +17,8 @@ The design is data (:meth:`Design.edit` changes one number and checks the design
 sense), so the drawing a person meant after an edit is the edited design drawn again.  Its
 geometry, :meth:`Design.loops` (every outline and hole as exact lines and arcs, in mm), is
 the truth; :func:`to_dxf` and :func:`to_svg` export it as real programs do: ezdxf with layers,
-blocks and rotated INSERTs, LWPOLYLINEs with bulges or ARC+LINE corners, ``$INSUNITS`` set or
-missing (mm only: a headerless inch drawing is the user's to say); svgwrite with a mm (or
+blocks and rotated INSERTs, LWPOLYLINEs with bulges or ARC+LINE corners, ``$INSUNITS`` set,
+0 or missing (mm only: a headerless inch drawing is the user's to say); svgwrite with a mm (or
 inch) viewBox, the y axis turned by a transformed group, patterns in nested translated and
 rotated groups, arcs as path ``A`` commands.
 
@@ -473,8 +473,11 @@ def members(f, c) -> list:
         return [(c[0] + (i - (f["nx"] - 1) / 2) * f["px"], c[1] + (j - (f["ny"] - 1) / 2) * py)
                 for i in range(f["nx"]) for j in range(f["ny"])]
     if k == "boltcircle":
-        return [(c[0] + f["pcd"] / 2 * math.cos(f["a0"] + TAU * i / f["n"]),
-                 c[1] + f["pcd"] / 2 * math.sin(f["a0"] + TAU * i / f["n"])) for i in range(f["n"])]
+        # the first hole on the x axis, on the y axis, or the axis between two holes: kept so
+        # when the count changes
+        a0 = {"axis": 0.0, "top": math.pi / 2, "between": math.pi / f["n"]}[f["start"]]
+        return [(c[0] + f["pcd"] / 2 * math.cos(a0 + TAU * i / f["n"]),
+                 c[1] + f["pcd"] / 2 * math.sin(a0 + TAU * i / f["n"])) for i in range(f["n"])]
     if k == "hexgrid":
         p, r = f["p"], f["d"] / 2
         dy = p * math.sqrt(3) / 2
@@ -671,7 +674,7 @@ def random_feature(rng: random.Random, T: dict, kind: str) -> dict:
     elif kind == "boltcircle":
         f.update(n=rng.choice([3, 4, 5, 6, 8]), d=d, pcd=rng.choice(T["big"]) * 2,
                  bore=rng.choice([0, rng.choice(T["big"])]))
-        f["a0"] = rng.choice([0.0, math.pi / f["n"], math.pi / 2])
+        f["start"] = rng.choice(["axis", "between", "top"])
     elif kind == "keyhole":
         f.update(D=rng.choice(T["big"][:3]) / 2, angle=rng.choice([0, 0, 90, 180]))
         f["w"] = f["D"] / 2
@@ -754,7 +757,8 @@ def random_style(rng: random.Random, d: Design) -> dict:
             "layers": rng.choice([None, None, ("OUTLINE", "HOLES", "LABELS")]),
             "blocks": rng.random() < 0.4,
             "bulges": rng.random() < 0.6,
-            "insunits": d.units == "in" or rng.random() < 0.7}
+            "insunits": True if d.units == "in" or rng.random() < 0.7 else
+            rng.choice([False, None])}
 
 
 def random_edit(rng: random.Random, d: Design, e: Edit) -> Design | None:
@@ -831,8 +835,10 @@ def to_dxf(d: Design) -> bytes:
     doc = ezdxf.new("R2010")
     if st.get("insunits", True):
         doc.units = 1 if d.units == "in" else 4
+    elif st.get("insunits") is None:
+        del doc.header["$INSUNITS"]         # no header variable at all
     else:
-        doc.units = 0
+        doc.units = 0                       # "unitless"
     lay = st.get("layers") or ("0", "0", "0")
     for name in set(lay) - {"0"}:
         doc.layers.add(name)

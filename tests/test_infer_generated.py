@@ -158,6 +158,10 @@ def test_params_are_found_by_name_and_value_in_their_unit():
     e = edits[("size", "d")]
     e.new = 0.15
     assert bench.find_param(text, d, e) is None
+    # of two params of that value, the one named for the row first, one named for a bolt
+    # circle last
+    text += "param bolt_circle_d = 0.125 in\nparam d = 3.175 mm\nparam holes_d = 0.125\n"
+    assert [n for n, _ in bench.find_params(text, d, e)] == ["holes_d", "d", "bolt_circle_d"]
 
 
 def test_quick_run_prints_the_tables(capsys):
