@@ -373,7 +373,7 @@ def run_generated(seed: int, count: int, per: int = 5, keep: pathlib.Path | None
                 keep.mkdir(parents=True, exist_ok=True)
                 (keep / f"g{n}{r['file'].suffix}").write_bytes(r["data"])
                 (keep / f"g{n}.aidl").write_text(r["program"] or r["error"])
-                (keep / f"g{n}.txt").write_text(repr(design) + "\n" + "\n".join(
+                (keep / f"g{n}.txt").write_text(design.describe() + "\n" + "\n".join(
                     f"{e.label} {design.value(e)} -> {e.new}: {o} {dt}" for e, o, dt in r["edits"]))
     n = len(res["edits"])
     good = sum(o == "meant" for _, _, o, _ in res["edits"])

@@ -306,6 +306,35 @@ class Design:
         return [(i, f["text"], self.place(f), f["h"], f["type"], f["align"])
                 for i, f in enumerate(self.features) if f["kind"] == "label"]
 
+    def describe(self) -> str:
+        """The design as a maker says it, one feature a line: "plate 100 x 60 mm, square
+        corners", "row of 5 holes d 4, pitch 12, along x: x centred, y 10 from the top"."""
+        u = self.units
+
+        def at(a, axis):
+            ref, off = a
+            if ref == "C":
+                return f"{'xy'[axis]} centred" + (f" {off:+g}" if off else "")
+            side = {"L": "left", "R": "right", "B": "bottom", "T": "top"}[ref]
+            return f"{'xy'[axis]} {off:g} from the {side}"
+        out = [f"plate {self.width:g} x {self.height:g} {u}, {self.corner[0]} corners"
+               + (f" {self.corner[1]:g}" if self.corner[0] != "square" else "")
+               + f", drawn from ({self.origin[0]:g}, {self.origin[1]:g}); "
+               + ", ".join(f"{k} {v}" for k, v in self.style.items())]
+        for i, f in enumerate(self.features):
+            k = f["kind"]
+            sizes = ", ".join(f"{key} {v:g}" if isinstance(v, (int, float)) else f"{key} {v}"
+                              for key, v in f.items()
+                              if key not in ("kind", "ax", "ay", "at", "of", "dx", "dy"))
+            if k == "label" and "of" in f:
+                where = f"{f['dx']:+g}, {f['dy']:+g} from feature {f['of']}"
+            elif k == "notch":
+                where = at(f["at"], 0 if f["edge"] in "BT" else 1)
+            else:
+                where = f"{at(f['ax'], 0)}, {at(f['ay'], 1)}"
+            out.append(f"{i}: {k} ({sizes}): {where}")
+        return "\n".join(out)
+
     # editing
     def edits(self) -> list:
         """Every edit a maker might make: ``Edit`` without a new value."""

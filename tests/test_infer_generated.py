@@ -93,6 +93,7 @@ def test_edits_run_end_to_end(tmp_path):
     program is checked against the design first, and an edit through a param the program has
     (the row's pitch, 12 -> 14) is applied in the param's own unit."""
     d = _plate()
+    assert "1: hole (d 3.2): x 6 from the left, y 10 from the top" in d.describe()
     r = bench.run_drawing(d, tmp_path, random.Random(3), k=6)
     assert r["exact"] and not r["error"], r["error"]
     assert r["edits"] and all(o in bench.OUTCOMES for _, o, _ in r["edits"])
