@@ -1,0 +1,1050 @@
+"""Maker drawings with a known design (issue 85: "measure it on drawings nobody tuned to").
+
+A :class:`Design` is what a maker means: a plate (its width and height, square, rounded or
+chamfered corners, in mm or inches) and features each TIED to the plate: an anchor per axis,
+``("L", 6)`` "6 from the left edge", ``("R", 6)`` from the right one, ``("C", 0)`` on the centre
+line (``B``/``T``/``C`` along y).  An edge anchor measures to the feature's near side for a
+cut-out or a notch (the span a maker dimensions), to the first (or last) member's centre for a
+row or a grid, and to the centre for the rest.  Feature kinds: ``hole``, ``slot`` (obround,
+any angle), ``cutout`` (rectangle, corners square or rounded), ``notch`` (square, round-bottom
+or V, in one of the plate's edges), ``row`` (holes or slots), ``grid`` (rectangular),
+``hexgrid`` (staggered, clipped to a round or rectangular field), ``boltcircle`` (with or
+without a bore), ``keyhole``, ``dhole`` (a D: a circle with one flat), ``arcslot`` (about a
+centre: radius, start angle, sweep, width) and ``label`` (a DXF TEXT or MTEXT, an SVG
+``text``) tied to a feature (it moves with it) or to the plate.
+
+The design is data (:meth:`Design.edit` changes one number and checks the design still makes
+sense), so the drawing a person meant after an edit is the edited design drawn again.  Its
+geometry, :meth:`Design.loops` (every outline and hole as exact lines and arcs, in mm), is
+the truth; :func:`to_dxf` and :func:`to_svg` export it as real programs do: ezdxf with layers,
+blocks and rotated INSERTs, LWPOLYLINEs with bulges or ARC+LINE corners, ``$INSUNITS`` set,
+0 or missing (mm only: a headerless inch drawing is the user's to say); svgwrite with a mm (or
+inch) viewBox, the y axis turned by a transformed group, patterns in nested translated and
+rotated groups, arcs as path ``A`` commands.
+
+A loop is compared by its exact :func:`signature` (area, centroid, perimeter and bounding box
+from the lines' and arcs' own integrals), so a circle drawn as one CIRCLE or four arcs, or an
+outline as one polyline or as lines and arcs, are the same loop.
+
+Used by benchmarks/infer_edits.py (the generated set) and tests/test_infer_generated.py.
+"""
+from __future__ import annotations
+
+import copy
+import io
+import math
+import random
+import re
+from dataclasses import dataclass, field
+
+import ezdxf
+
+TAU = 2 * math.pi
+INCH = 25.4
+
+KINDS = ("hole", "slot", "cutout", "notch", "row", "grid", "hexgrid", "boltcircle",
+         "keyhole", "dhole", "arcslot")
+
+
+# --- exact geometry of lines and arcs --------------------------------------------------------
+# a segment is ("L", (x0, y0), (x1, y1)) or ("A", (cx, cy), r, start angle, signed sweep)
+
+
+def seg_ends(s) -> tuple:
+    if s[0] == "L":
+        return s[1], s[2]
+    _, c, r, a, sw = s
+    return ((c[0] + r * math.cos(a), c[1] + r * math.sin(a)),
+            (c[0] + r * math.cos(a + sw), c[1] + r * math.sin(a + sw)))
+
+
+def seg_reversed(s):
+    if s[0] == "L":
+        return ("L", s[2], s[1])
+    return ("A", s[1], s[2], s[3] + s[4], -s[4])
+
+
+def circle(c, r) -> list:
+    return [("A", tuple(c), r, 0.0, TAU)]
+
+
+def polygon(pts) -> list:
+    return [("L", pts[i], pts[(i + 1) % len(pts)]) for i in range(len(pts))]
+
+
+def _arc_integrals(c, r, a, sw):
+    """(area, x moment, y moment) contributions of an arc: Green's theorem, exactly."""
+    cx, cy = c
+
+    def f(t):
+        s, k = math.sin(t), math.cos(t)
+        area = 0.5 * (r * cx * s - r * cy * k + r * r * t)
+        mx = 0.5 * r * (cx * cx * s + 2 * cx * r * (t / 2 + math.sin(2 * t) / 4)
+                        + r * r * (s - s ** 3 / 3))
+        my = 0.5 * r * (-cy * cy * k + 2 * cy * r * (t / 2 - math.sin(2 * t) / 4)
+                        + r * r * (-k + k ** 3 / 3))
+        return area, mx, my
+    f0, f1 = f(a), f(a + sw)
+    return tuple(y - x for x, y in zip(f0, f1))
+
+
+def _arc_box(s):
+    _, c, r, a, sw = s
+    pts = list(seg_ends(s))
+    lo, hi = min(a, a + sw), max(a, a + sw)
+    k = math.ceil(lo / (math.pi / 2))
+    while k * math.pi / 2 <= hi:
+        t = k * math.pi / 2
+        pts.append((c[0] + r * math.cos(t), c[1] + r * math.sin(t)))
+        k += 1
+    return pts
+
+
+def signature(loop) -> tuple:
+    """``(area, cx, cy, perimeter, xmin, ymin, xmax, ymax)`` of a closed loop of segments
+    (mm): the area unsigned, the centroid from the first moments; exact for lines and arcs."""
+    area = mx = my = per = 0.0
+    pts = []
+    for s in loop:
+        if s[0] == "L":
+            (x0, y0), (x1, y1) = s[1], s[2]
+            dx, dy = x1 - x0, y1 - y0
+            area += 0.5 * (x0 * y1 - x1 * y0)
+            mx += 0.5 * dy * (x0 * x0 + x0 * dx + dx * dx / 3)
+            my -= 0.5 * dx * (y0 * y0 + y0 * dy + dy * dy / 3)
+            per += math.hypot(dx, dy)
+            pts += [s[1], s[2]]
+        else:
+            da, dmx, dmy = _arc_integrals(s[1], s[2], s[3], s[4])
+            area, mx, my = area + da, mx + dmx, my + dmy
+            per += abs(s[2] * s[4])
+            pts += _arc_box(s)
+    if area == 0:
+        return (0.0, 0.0, 0.0, per, 0.0, 0.0, 0.0, 0.0)
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    return (abs(area), mx / area, my / area, per, min(xs), min(ys), max(xs), max(ys))
+
+
+def chain(segments, tol: float = 1e-6) -> tuple[list, list]:
+    """Segments joined end to end into ``(closed loops, open chains)``."""
+    todo = list(segments)
+    loops, open_ = [], []
+    while todo:
+        cur = [todo.pop(0)]
+        while True:
+            start, end = seg_ends(cur[0])[0], seg_ends(cur[-1])[1]
+            if math.dist(start, end) <= tol and (len(cur) > 1 or cur[0][0] == "A"):
+                loops.append(cur)
+                break
+            for i, s in enumerate(todo):
+                a, b = seg_ends(s)
+                if math.dist(a, end) <= tol:
+                    cur.append(todo.pop(i))
+                    break
+                if math.dist(b, end) <= tol:
+                    cur.append(seg_reversed(todo.pop(i)))
+                    break
+                if math.dist(b, start) <= tol:
+                    cur.insert(0, todo.pop(i))
+                    break
+                if math.dist(a, start) <= tol:
+                    cur.insert(0, seg_reversed(todo.pop(i)))
+                    break
+            else:
+                open_.append(cur)
+                break
+    return loops, open_
+
+
+def _shifted(sig, dx, dy):
+    a, cx, cy, p, x0, y0, x1, y1 = sig
+    return (a, cx - dx, cy - dy, p, x0 - dx, y0 - dy, x1 - dx, y1 - dy)
+
+
+def normalised(sigs: list) -> tuple[list, tuple]:
+    """Signatures moved so that the largest loop's box starts at (0, 0), and that shift."""
+    if not sigs:
+        return [], (0.0, 0.0)
+    big = max(sigs, key=lambda s: s[0])
+    return [_shifted(s, big[4], big[5]) for s in sigs], (big[4], big[5])
+
+
+def same_sig(a, b, tol: float = 1e-6) -> bool:
+    return (abs(a[0] - b[0]) <= tol * max(1.0, a[3]) and abs(a[3] - b[3]) <= tol * 10
+            and all(abs(x - y) <= tol for x, y in zip(a[1:3] + a[4:], b[1:3] + b[4:])))
+
+
+def match(want: list, got: list, tol: float = 1e-6) -> tuple[list, list]:
+    """``(indices of want with no partner in got, signatures of got left over)``."""
+    rest = list(got)
+    left = []
+    for i, w in enumerate(want):
+        for j, g in enumerate(rest):
+            if same_sig(w, g, tol):
+                rest.pop(j)
+                break
+        else:
+            left.append(i)
+    return left, rest
+
+
+# --- the design --------------------------------------------------------------------------------
+
+
+@dataclass
+class Design:
+    """A plate and its features, in ``units`` (``"mm"`` or ``"in"``); see the module doc."""
+    units: str
+    width: float
+    height: float
+    corner: tuple = ("square", 0.0)          # ("round" | "chamfer", size)
+    origin: tuple = (0.0, 0.0)               # where the lower-left corner is drawn
+    features: list = field(default_factory=list)
+    style: dict = field(default_factory=dict)  # how it is exported (format, layers, ...)
+
+    @property
+    def u(self) -> float:
+        """mm per design unit."""
+        return INCH if self.units == "in" else 1.0
+
+    # where things are
+    def _axis(self, anchor, span: float, axis: int) -> float:
+        ref, off = anchor
+        lo = self.origin[axis]
+        size = self.width if axis == 0 else self.height
+        if ref in ("L", "B"):
+            return lo + off + span
+        if ref in ("R", "T"):
+            return lo + size - off - span
+        return lo + size / 2 + off
+
+    def place(self, f) -> tuple:
+        """The centre of feature ``f`` (design units)."""
+        if f["kind"] == "label" and "of" in f:
+            cx, cy = self.place(self.features[f["of"]])
+            return (cx + f["dx"], cy + f["dy"])
+        sx, sy = span(f)
+        return (self._axis(f["ax"], sx, 0), self._axis(f["ay"], sy, 1))
+
+    def outline(self) -> list:
+        """The plate's outline, counter-clockwise, with its notches (design units)."""
+        x0, y0 = self.origin
+        x1, y1 = x0 + self.width, y0 + self.height
+        corners = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+        dirs = [(1, 0), (0, 1), (-1, 0), (0, -1)]
+        kind, c = self.corner
+        c = c if kind != "square" else 0.0
+        segs = []
+        notches = [f for f in self.features if f["kind"] == "notch"]
+        for i in range(4):
+            e, n = dirs[i], (-dirs[i][1], dirs[i][0])
+            p, q = corners[i], corners[(i + 1) % 4]
+            a = (p[0] + c * e[0], p[1] + c * e[1])
+            b = (q[0] - c * e[0], q[1] - c * e[1])
+            pts = [a]
+            side = "BRTL"[i]
+            along = []
+            for f in notches:
+                if f["edge"] != side:
+                    continue
+                w, h = f["w"], f["depth"]
+                if side in "BT":
+                    s = self._axis(f["at"], w / 2, 0)
+                else:
+                    s = self._axis(f["at"], w / 2, 1)
+                along.append((s, f))
+            along.sort(key=lambda t: t[0] * (e[0] + e[1]))
+            out = []
+            cur = a
+            for s, f in along:
+                w, h = f["w"], f["depth"]
+                m = (s, p[1]) if side in "BT" else (p[0], s)
+
+                def at(t, d, m=m):
+                    return (m[0] + t * e[0] + d * n[0], m[1] + t * e[1] + d * n[1])
+                p0, p1 = at(-w / 2, 0), at(w / 2, 0)
+                out.append(("L", cur, p0))
+                if f["shape"] == "square":
+                    out += polygon([p0, at(-w / 2, h), at(w / 2, h), p1])[:3]
+                elif f["shape"] == "V":
+                    out += [("L", p0, at(0, h)), ("L", at(0, h), p1)]
+                else:                       # round bottom: sides, a half circle (clockwise)
+                    cc = at(0, h - w / 2)
+                    ang = math.atan2(-e[1], -e[0])
+                    out += [("L", p0, at(-w / 2, h - w / 2)), ("A", cc, w / 2, ang, -math.pi),
+                            ("L", at(w / 2, h - w / 2), p1)]
+                cur = p1
+            del pts
+            out.append(("L", cur, b))
+            segs += out
+            if c:
+                nxt = dirs[(i + 1) % 4]
+                if kind == "round":
+                    cc = (q[0] - c * e[0] + c * n[0], q[1] - c * e[1] + c * n[1])
+                    segs.append(("A", cc, c, math.atan2(-n[1], -n[0]), math.pi / 2))
+                else:
+                    segs.append(("L", b, (q[0] + c * nxt[0], q[1] + c * nxt[1])))
+        return segs
+
+    def feature_loops(self, i: int) -> list:
+        """The loops of feature ``i`` (design units): its holes (a notch: none, it is in the
+        outline; a label: none)."""
+        f = self.features[i]
+        return loops_of(f, self.place(f)) if f["kind"] not in ("notch", "label") else []
+
+    def loops(self) -> list:
+        """``[(owner, loop in mm)]``: ``owner`` is ``-1`` for the outline, else the feature's
+        index."""
+        u = self.u
+        out = [(-1, scaled(self.outline(), u))]
+        for i in range(len(self.features)):
+            out += [(i, scaled(lp, u)) for lp in self.feature_loops(i)]
+        return out
+
+    def labels(self) -> list:
+        """``[(index, text, (x, y), height, kind, align)]`` in design units."""
+        return [(i, f["text"], self.place(f), f["h"], f["type"], f["align"])
+                for i, f in enumerate(self.features) if f["kind"] == "label"]
+
+    def describe(self) -> str:
+        """The design as a maker says it, one feature a line: "plate 100 x 60 mm, square
+        corners", "row of 5 holes d 4, pitch 12, along x: x centred, y 10 from the top"."""
+        u = self.units
+
+        def at(a, axis):
+            ref, off = a
+            if ref == "C":
+                return f"{'xy'[axis]} centred" + (f" {off:+g}" if off else "")
+            side = {"L": "left", "R": "right", "B": "bottom", "T": "top"}[ref]
+            return f"{'xy'[axis]} {off:g} from the {side}"
+        out = [f"plate {self.width:g} x {self.height:g} {u}, {self.corner[0]} corners"
+               + (f" {self.corner[1]:g}" if self.corner[0] != "square" else "")
+               + f", drawn from ({self.origin[0]:g}, {self.origin[1]:g}); "
+               + ", ".join(f"{k} {v}" for k, v in self.style.items())]
+        for i, f in enumerate(self.features):
+            k = f["kind"]
+            sizes = ", ".join(f"{key} {v:g}" if isinstance(v, (int, float)) else f"{key} {v}"
+                              for key, v in f.items()
+                              if key not in ("kind", "ax", "ay", "at", "of", "dx", "dy"))
+            if k == "label" and "of" in f:
+                where = f"{f['dx']:+g}, {f['dy']:+g} from feature {f['of']}"
+            elif k == "notch":
+                where = at(f["at"], 0 if f["edge"] in "BT" else 1)
+            else:
+                where = f"{at(f['ax'], 0)}, {at(f['ay'], 1)}"
+            out.append(f"{i}: {k} ({sizes}): {where}")
+        return "\n".join(out)
+
+    # editing
+    def edits(self) -> list:
+        """Every edit a maker might make: ``Edit`` without a new value."""
+        out = [Edit("body", "plate", -1, "width", "plate width",
+                    [(r"(plate_|body_|panel_)?(width|w)", 1.0)], whole=True),
+               Edit("body", "plate", -1, "height", "plate height",
+                    [(r"(plate_|body_|panel_)?(height|h)", 1.0)], whole=True)]
+        D = [(r"d|dia|diameter|size", 1.0), (r"r|radius", 0.5)]
+        P = [(r"pitch(_[xy])?|spacing(_[xy])?|d[xy]", 1.0)]
+        N = [(r"n(_[xy])?|count|cols|rows|n[xy]", 1.0)]
+        for i, f in enumerate(self.features):
+            k = f["kind"]
+
+            def add(kind, key, label, pats):
+                out.append(Edit(kind, k, i, key, f"{k} {label}", pats))
+            if k in ("hole", "grid", "hexgrid", "boltcircle", "dhole"):
+                add("size", "d", "diameter", D)
+            if k == "row":
+                add("size", "d" if f["member"] == "hole" else "length",
+                    "diameter" if f["member"] == "hole" else "slot length",
+                    D if f["member"] == "hole" else [(r"length|len|l", 1.0)])
+            if k == "slot":
+                add("size", "length", "length", [(r"length|len|l", 1.0)])
+                add("size", "w", "width", [(r"width|w", 1.0), (r"r|radius", 0.5)])
+            if k == "cutout":
+                add("size", "w", "width", [(r"width|w", 1.0)])
+                add("size", "h", "height", [(r"height|h", 1.0)])
+            if k == "notch":
+                add("size", "w", "width", [(r"width|w", 1.0)])
+                add("size", "depth", "depth", [(r"depth|d", 1.0)])
+            if k == "keyhole":
+                add("size", "D", "head diameter", [(r"(head_|big_)?(d|dia|diameter)", 1.0),
+                                                  (r"(head_|big_)?(r|radius)", 0.5)])
+            if k == "arcslot":
+                add("size", "w", "width", [(r"width|w", 1.0)])
+                add("size", "R", "radius", [(r"radius|r", 1.0), (r"d|diameter", 2.0)])
+            if k == "boltcircle" and f.get("bore"):
+                add("size", "bore", "bore", [(r"(bore_)?(d|diameter)", 1.0)])
+            if k in ("row", "grid"):
+                add("pitch", "p" if k == "row" else "px", "pitch", P)
+                add("count", "n" if k == "row" else "nx", "count", N)
+            if k == "grid" and f["py"]:
+                add("pitch", "py", "pitch y", P)
+            if k == "grid":
+                add("count", "ny", "count y", N)
+            if k == "hexgrid":
+                add("pitch", "p", "pitch", P)
+                add("size", "field", "field size",
+                    [(r"(field_)?(d|diameter|width|size)", 1.0), (r"(field_)?(r|radius)", 0.5)])
+            if k == "boltcircle":
+                add("pitch", "pcd", "pitch circle", [(r"pcd|pitch_d|pitch_circle_d|circle_d|"
+                                                      r"diameter", 1.0),
+                                                     (r"radius|r|pitch_r", 0.5)])
+                add("count", "n", "count", N)
+        return out
+
+    def value(self, e: "Edit") -> float:
+        if e.feature < 0:
+            return self.width if e.key == "width" else self.height
+        return self.features[e.feature][e.key]
+
+    def edited(self, e: "Edit", new: float) -> "Design":
+        d = copy.deepcopy(self)
+        if e.feature < 0:
+            setattr(d, e.key, new)
+        else:
+            d.features[e.feature][e.key] = new
+        return d
+
+    def valid(self) -> bool:
+        return _valid(self)
+
+
+@dataclass
+class Edit:
+    """One change a maker makes: ``kind`` (size, pitch, count, body), the feature's kind, its
+    index (-1: the plate), the design key it changes, a label, the param name patterns it
+    may go by (``(regex, factor)``: the param's value is factor x the design's), ``whole``:
+    the regex must match the whole name (else any ``_``-separated tail)."""
+    kind: str
+    feature_kind: str
+    feature: int
+    key: str
+    label: str
+    patterns: list
+    whole: bool = False
+    new: float | None = None
+
+
+def span(f) -> tuple:
+    """Half the span an edge anchor measures to (design units)."""
+    k = f["kind"]
+    if k == "cutout":
+        return f["w"] / 2, f["h"] / 2
+    if k == "row":
+        s = (f["n"] - 1) * f["p"] / 2
+        return (s, 0.0) if f["dir"] == "x" else (0.0, s)
+    if k == "grid":
+        return (f["nx"] - 1) * f["px"] / 2, (f["ny"] - 1) * (f["py"] or f["px"]) / 2
+    return 0.0, 0.0
+
+
+def _rot(pts_or_loop, c, ang):
+    """A loop in local coordinates turned by ``ang`` and moved to ``c``."""
+    k, s = math.cos(ang), math.sin(ang)
+
+    def p(q):
+        return (c[0] + k * q[0] - s * q[1], c[1] + s * q[0] + k * q[1])
+    out = []
+    for g in pts_or_loop:
+        if g[0] == "L":
+            out.append(("L", p(g[1]), p(g[2])))
+        else:
+            out.append(("A", p(g[1]), g[2], g[3] + ang, g[4]))
+    return out
+
+
+def slot_loop(c, length, w, ang) -> list:
+    r, a = w / 2, (length - w) / 2
+    return _rot([("L", (-a, -r), (a, -r)), ("A", (a, 0.0), r, -math.pi / 2, math.pi),
+                 ("L", (a, r), (-a, r)), ("A", (-a, 0.0), r, math.pi / 2, math.pi)], c, ang)
+
+
+def rect_loop(c, w, h, r=0.0) -> list:
+    x0, y0, x1, y1 = c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2
+    if not r:
+        return polygon([(x0, y0), (x1, y0), (x1, y1), (x0, y1)])
+    return [("L", (x0 + r, y0), (x1 - r, y0)), ("A", (x1 - r, y0 + r), r, -math.pi / 2, math.pi / 2),
+            ("L", (x1, y0 + r), (x1, y1 - r)), ("A", (x1 - r, y1 - r), r, 0.0, math.pi / 2),
+            ("L", (x1 - r, y1), (x0 + r, y1)), ("A", (x0 + r, y1 - r), r, math.pi / 2, math.pi / 2),
+            ("L", (x0, y1 - r), (x0, y0 + r)), ("A", (x0 + r, y0 + r), r, math.pi, math.pi / 2)]
+
+
+def keyhole_loop(c, D, w, L, ang) -> list:
+    R, a = D / 2, w / 2
+    s = math.sqrt(R * R - a * a)
+    t0, t1 = math.atan2(-s, a), math.atan2(-s, -a)
+    return _rot([("A", (0.0, 0.0), R, t0, (t1 - t0) % TAU), ("L", (-a, -s), (-a, -L)),
+                 ("A", (0.0, -L), a, math.pi, math.pi), ("L", (a, -L), (a, -s))], c, ang)
+
+
+def dhole_loop(c, d, flat, ang) -> list:
+    r = d / 2
+    h = math.sqrt(r * r - flat * flat)
+    t = math.atan2(h, flat)
+    return _rot([("A", (0.0, 0.0), r, t, TAU - 2 * t), ("L", (flat, -h), (flat, h))], c, ang)
+
+
+def arcslot_loop(c, R, a0, sw, w) -> list:
+    a1 = a0 + sw
+    e0 = (c[0] + R * math.cos(a0), c[1] + R * math.sin(a0))
+    e1 = (c[0] + R * math.cos(a1), c[1] + R * math.sin(a1))
+    return [("A", c, R + w / 2, a0, sw), ("A", e1, w / 2, a1, math.pi),
+            ("A", c, R - w / 2, a1, -sw), ("A", e0, w / 2, a0 + math.pi, math.pi)]
+
+
+def members(f, c) -> list:
+    """The centres of a pattern's members (design units)."""
+    k = f["kind"]
+    if k == "row":
+        s = [(i - (f["n"] - 1) / 2) * f["p"] for i in range(f["n"])]
+        return [(c[0] + t, c[1]) if f["dir"] == "x" else (c[0], c[1] + t) for t in s]
+    if k == "grid":
+        py = f["py"] or f["px"]
+        return [(c[0] + (i - (f["nx"] - 1) / 2) * f["px"], c[1] + (j - (f["ny"] - 1) / 2) * py)
+                for i in range(f["nx"]) for j in range(f["ny"])]
+    if k == "boltcircle":
+        # the first hole on the x axis, on the y axis, or the axis between two holes: kept so
+        # when the count changes
+        a0 = {"axis": 0.0, "top": math.pi / 2, "between": math.pi / f["n"]}[f["start"]]
+        return [(c[0] + f["pcd"] / 2 * math.cos(a0 + TAU * i / f["n"]),
+                 c[1] + f["pcd"] / 2 * math.sin(a0 + TAU * i / f["n"])) for i in range(f["n"])]
+    if k == "hexgrid":
+        p, r = f["p"], f["d"] / 2
+        dy = p * math.sqrt(3) / 2
+        out = []
+        big = int(f["field"] / p) + 2
+        for j in range(-big, big + 1):
+            off = p / 2 if j % 2 else 0.0
+            for i in range(-big, big + 1):
+                x, y = i * p + off, j * dy
+                if f["shape"] == "circle":
+                    ok = math.hypot(x, y) + r <= f["field"] / 2 + 1e-9
+                else:
+                    ok = abs(x) + r <= f["field"] / 2 + 1e-9 and abs(y) + r <= f["fh"] / 2 + 1e-9
+                if ok:
+                    out.append((c[0] + x, c[1] + y))
+        return out
+    return [c]
+
+
+def loops_of(f, c) -> list:
+    k = f["kind"]
+    if k == "hole":
+        return [circle(c, f["d"] / 2)]
+    if k == "slot":
+        return [slot_loop(c, f["length"], f["w"], math.radians(f["angle"]))]
+    if k == "cutout":
+        return [rect_loop(c, f["w"], f["h"], f.get("r", 0.0))]
+    if k == "keyhole":
+        return [keyhole_loop(c, f["D"], f["w"], f["L"], math.radians(f["angle"]))]
+    if k == "dhole":
+        return [dhole_loop(c, f["d"], f["flat"], math.radians(f["angle"]))]
+    if k == "arcslot":
+        return [arcslot_loop(c, f["R"], math.radians(f["a0"]), math.radians(f["sweep"]), f["w"])]
+    if k == "row" and f["member"] == "slot":
+        return [slot_loop(m, f["length"], f["w"], math.pi / 2 if f["dir"] == "x" else 0.0)
+                for m in members(f, c)]
+    out = [circle(m, f["d"] / 2) for m in members(f, c)]
+    if k == "boltcircle" and f.get("bore"):
+        out.append(circle(c, f["bore"] / 2))
+    return out
+
+
+def scaled(loop, u: float) -> list:
+    if u == 1.0:
+        return loop
+    out = []
+    for g in loop:
+        if g[0] == "L":
+            out.append(("L", (g[1][0] * u, g[1][1] * u), (g[2][0] * u, g[2][1] * u)))
+        else:
+            out.append(("A", (g[1][0] * u, g[1][1] * u), g[2] * u, g[3], g[4]))
+    return out
+
+
+def _poly(loop):
+    """A shapely polygon of a loop (arcs in 5-degree steps): for the sanity checks only."""
+    from shapely.geometry import Polygon
+    pts = []
+    for g in loop:
+        if g[0] == "L":
+            pts.append(g[1])
+        else:
+            k = max(2, int(abs(g[4]) / math.radians(5)) + 1)
+            pts += [(g[1][0] + g[2] * math.cos(g[3] + g[4] * t / k),
+                     g[1][1] + g[2] * math.sin(g[3] + g[4] * t / k)) for t in range(k)]
+    return Polygon(pts)
+
+
+def _label_box(d: Design, f):
+    from shapely.geometry import box
+    x, y = d.place(f)
+    w, h = len(f["text"]) * f["h"] * 0.9, f["h"]
+    return box(x - w / 2, y - h / 2, x + w / 2, y + h / 2) if f["align"] == "centre" else \
+        box(x, y, x + w, y + h)
+
+
+def _valid(d: Design) -> bool:
+    """Every feature well inside the plate, clear of every other, each shape sound."""
+    m = 1.5 / d.u
+    if d.width <= 0 or d.height <= 0:
+        return False
+    if d.corner[0] != "square" and d.corner[1] * 2 >= min(d.width, d.height) - 4 * m:
+        return False
+    for f in d.features:
+        if any(v is not None and v <= 0 for k, v in f.items() if k in ("d", "w", "h", "length", "D", "p", "px",
+                                                      "py", "pcd", "depth", "field", "R", "L")):
+            return False
+        if f.get("n", 2) < 2 or f.get("nx", 2) < 2 or f.get("ny", 2) < 2:
+            return False
+        k = f["kind"]
+        if (k == "slot" or (k == "row" and f["member"] == "slot")) and f["length"] <= f["w"] + m:
+            return False
+        if k == "keyhole" and not (f["w"] < f["D"] - m and f["L"] > f["D"] / 2 + m):
+            return False
+        if k == "dhole" and f["flat"] >= f["d"] / 2 - m / 4:
+            return False
+        if k == "notch" and f["shape"] == "round" and f["depth"] <= f["w"] / 2 + m:
+            return False
+        if k == "arcslot" and f["w"] >= f["R"]:
+            return False
+        if k == "cutout" and f.get("r", 0) * 2 >= min(f["w"], f["h"]):
+            return False
+        if k in ("row", "grid") and min(f.get("p", 1e9), f.get("px", 1e9), f.get("py") or 1e9) \
+                < f.get("d", f.get("w", 0)) + m:
+            return False
+        if k == "row" and f["member"] == "slot" and f["p"] < f["w"] + m:
+            return False
+        if k == "boltcircle" and (f["pcd"] * math.sin(math.pi / f["n"]) < f["d"] + m
+                                  or (f.get("bore") and f["bore"] + f["d"] + 2 * m > f["pcd"])):
+            return False
+        if k == "hexgrid" and (f["p"] < f["d"] + m or len(members(f, (0, 0))) < 3):
+            return False
+    plate = _poly(d.outline())
+    if not plate.is_valid:
+        return False
+    inner = plate.buffer(-m)
+    shapes = []
+    for i, f in enumerate(d.features):
+        if f["kind"] == "notch":
+            continue
+        if f["kind"] == "label":
+            b = _label_box(d, f)
+            if not inner.contains(b):
+                return False
+            shapes.append((i, b, True))
+            continue
+        for lp in d.feature_loops(i):
+            p = _poly(lp)
+            if not p.is_valid or not inner.contains(p):
+                return False
+            shapes.append((i, p, False))
+    for a in range(len(shapes)):
+        for b in range(a + 1, len(shapes)):
+            ia, pa, la = shapes[a]
+            ib, pb, lb = shapes[b]
+            if ia != ib and pa.distance(pb) < m:
+                return False
+    return True
+
+
+# --- random designs ------------------------------------------------------------------------------
+
+MM = {"plate": [40, 50, 60, 70, 80, 90, 100, 120, 150, 160, 180, 200],
+      "d": [2.5, 3, 3.2, 3.4, 4, 4.5, 5, 5.5, 6, 8, 10],
+      "off": [4, 5, 6, 8, 10, 12, 15, 20], "pitch": [8, 10, 12, 15, 20, 25],
+      "big": [10, 12, 16, 20, 22, 25, 30], "step": [2, 5, 10, 15, 20, 30], "r": [3, 4, 5, 8],
+      "text": [3, 4, 5]}
+IN = {"plate": [2, 2.5, 3, 3.5, 4, 4.5, 5, 6, 7],
+      "d": [0.125, 0.15, 0.1875, 0.2, 0.25, 0.3125],
+      "off": [0.2, 0.25, 0.3, 0.375, 0.5, 0.75], "pitch": [0.4, 0.5, 0.6, 0.75, 1.0],
+      "big": [0.5, 0.625, 0.75, 0.875, 1.0], "step": [0.125, 0.25, 0.5, 1.0], "r": [0.125, 0.2, 0.25],
+      "text": [0.125, 0.15, 0.2]}
+WORDS = ["PWR", "USB", "M3", "FAN", "IN", "OUT", "VOL", "LED", "12V", "GND", "TOP"]
+
+
+def _anchor(rng, T, axis):
+    lo, hi = ("L", "R") if axis == 0 else ("B", "T")
+    r = rng.random()
+    if r < 0.35:
+        return ("C", 0.0)
+    return (lo if r < 0.7 else hi, rng.choice(T["off"]))
+
+
+def random_feature(rng: random.Random, T: dict, kind: str) -> dict:
+    f = {"kind": kind, "ax": _anchor(rng, T, 0), "ay": _anchor(rng, T, 1)}
+    d = rng.choice(T["d"])
+    if kind == "hole":
+        f["d"] = rng.choice(T["d"] + T["big"][:2])
+    elif kind == "slot":
+        f.update(w=d, length=d + rng.choice(T["pitch"]), angle=rng.choice([0, 90, 90, 45, 30]))
+    elif kind == "cutout":
+        f.update(w=rng.choice(T["big"]), h=rng.choice(T["big"]),
+                 r=rng.choice([0.0, 0.0, T["r"][0]]))
+    elif kind == "notch":
+        f = {"kind": kind, "edge": rng.choice("BRTL"), "shape": rng.choice(["square", "round", "V"]),
+             "w": rng.choice(T["pitch"][:4])}
+        f["depth"] = f["w"] * rng.choice([1, 1.5, 2])
+        f["at"] = _anchor(rng, T, 0 if f["edge"] in "BT" else 1)
+    elif kind == "row":
+        f.update(dir=rng.choice("xy"), n=rng.randint(3, 6), p=rng.choice(T["pitch"]),
+                 member=rng.choice(["hole", "hole", "slot"]), d=d)
+        if f["member"] == "slot":
+            f.update(w=d, length=d + rng.choice(T["pitch"]))
+            del f["d"]
+    elif kind == "grid":
+        f.update(nx=rng.randint(2, 5), ny=rng.randint(2, 4), px=rng.choice(T["pitch"]), d=d)
+        f["py"] = rng.choice([None, rng.choice(T["pitch"])])  # None: a square grid, one pitch
+        if f["py"] == f["px"]:
+            f["py"] = None
+    elif kind == "hexgrid":
+        f.update(p=rng.choice(T["pitch"][:3]), d=d, shape=rng.choice(["circle", "rect"]))
+        f["field"] = f["p"] * rng.choice([3, 4, 5])
+        f["fh"] = f["field"] * rng.choice([0.6, 0.8, 1.0])
+    elif kind == "boltcircle":
+        f.update(n=rng.choice([3, 4, 5, 6, 8]), d=d, pcd=rng.choice(T["big"]) * 2,
+                 bore=rng.choice([0, rng.choice(T["big"])]))
+        f["start"] = rng.choice(["axis", "between", "top"])
+    elif kind == "keyhole":
+        f.update(D=rng.choice(T["big"][:3]) / 2, angle=rng.choice([0, 0, 90, 180]))
+        f["w"] = f["D"] / 2
+        f["L"] = f["D"] * 1.25
+    elif kind == "dhole":
+        f.update(d=rng.choice(T["big"][:4]) / 2, angle=rng.choice([0, 90, 0]))
+        f["flat"] = f["d"] / 2 * rng.choice([0.6, 0.7, 0.8])
+    elif kind == "arcslot":
+        f.update(R=rng.choice(T["big"]), w=rng.choice(T["d"][:4]), a0=rng.choice([0, 30, 45, 200]),
+                 sweep=rng.choice([45, 60, 90]))
+    return f
+
+
+def _plain_anchor(d: Design, f) -> dict:
+    """``f`` with an edge anchor that puts it on the plate's centre line said as centred: as
+    far from both edges, a maker means the centre (the design must not be ambiguous)."""
+    keys = [("at", 0 if f["edge"] in "BT" else 1)] if f["kind"] == "notch" else \
+        [("ax", 0), ("ay", 1)] if "ax" in f else []
+    for key, axis in keys:
+        if f[key][0] != "C":
+            sp = (f["w"] / 2, 0.0) if f["kind"] == "notch" else span(f)
+            pos = d._axis(f[key], sp[axis if f["kind"] != "notch" else 0], axis)
+            mid = d.origin[axis] + (d.width if axis == 0 else d.height) / 2
+            if abs(pos - mid) < 1e-9:
+                f[key] = ("C", 0.0)
+    return f
+
+
+def random_design(rng: random.Random, kinds=None) -> Design:
+    """A random maker plate: 2 to 5 features (``kinds`` first, each once), 0 to 2 labels, an
+    export style."""
+    units = "in" if rng.random() < 0.25 else "mm"
+    T = IN if units == "in" else MM
+    for _ in range(200):
+        w, h = rng.choice(T["plate"]), rng.choice(T["plate"])
+        if max(w, h) > 2.5 * min(w, h):
+            continue
+        corner = rng.choice([("square", 0.0), ("square", 0.0), ("round", rng.choice(T["r"])),
+                             ("chamfer", rng.choice(T["r"]))])
+        origin = rng.choice([(0.0, 0.0), (0.0, 0.0), (-w / 2, -h / 2), (rng.choice(T["step"]),
+                                                                        rng.choice(T["step"]))])
+        d = Design(units, w, h, corner, origin)
+        want = list(kinds or []) + [rng.choice(KINDS) for _ in range(rng.randint(1, 3))]
+        for k in want:
+            for _ in range(40):
+                d.features.append(_plain_anchor(d, random_feature(rng, T, k)))
+                if d.valid():
+                    break
+                d.features.pop()
+        if not [f for f in d.features if f["kind"] != "notch"] or \
+                (kinds and not all(any(f["kind"] == k for f in d.features) for k in kinds)):
+            continue
+        for _ in range(rng.choice([0, 1, 1, 2])):
+            for _ in range(20):
+                tied = rng.random() < 0.6
+                lab = {"kind": "label", "text": rng.choice(WORDS), "h": rng.choice(T["text"]),
+                       "type": rng.choice(["TEXT", "MTEXT"]), "align": rng.choice(["centre", "left"])}
+                if tied:
+                    i = rng.choice([i for i, f in enumerate(d.features)
+                                    if f["kind"] in ("hole", "slot", "cutout", "keyhole", "dhole")]
+                                   or [None])
+                    if i is None:
+                        tied = False
+                    else:
+                        lab.update({"of": i, "dx": 0.0, "dy": -rng.choice(T["off"][2:]) * 1.5})
+                if not tied:
+                    lab.update(ax=_anchor(rng, T, 0), ay=_anchor(rng, T, 1))
+                d.features.append(_plain_anchor(d, lab))
+                if d.valid():
+                    break
+                d.features.pop()
+        d.style = random_style(rng, d)
+        return d
+    raise RuntimeError("no design found")
+
+
+def random_style(rng: random.Random, d: Design) -> dict:
+    fmt = "svg" if rng.random() < 0.25 else "dxf"
+    return {"format": fmt,
+            "layers": rng.choice([None, None, ("OUTLINE", "HOLES", "LABELS")]),
+            "blocks": rng.random() < 0.4,
+            "bulges": rng.random() < 0.6,
+            "insunits": True if d.units == "in" or rng.random() < 0.7 else
+            rng.choice([False, None])}
+
+
+def random_edit(rng: random.Random, d: Design, e: Edit) -> Design | None:
+    """``d`` with ``e`` made by a random amount a maker would (``e.new`` set), or ``None`` when
+    no such change leaves a design that makes sense."""
+    T = IN if d.units == "in" else MM
+    now = d.value(e)
+    for _ in range(12):
+        if e.kind == "count":
+            new = now + rng.choice([-1, 1])
+        elif e.kind == "body":
+            new = now + rng.choice([-1, 1, 1]) * rng.choice(T["step"])
+        else:
+            step = T["step"][0] if now < 4 * T["step"][0] else T["step"][1]
+            new = now + rng.choice([-1, 1]) * step * rng.choice([0.1, 0.2, 0.5, 1])
+            new = round(new, 4)
+        if new == now:
+            continue
+        out = d.edited(e, new)
+        if out.valid():
+            e.new = new
+            return out
+    return None
+
+
+# --- export ----------------------------------------------------------------------------------------
+
+
+def _bulges(loop) -> list:
+    """``(x, y, bulge)`` vertices of a loop for an LWPOLYLINE (arcs of at most 180 degrees
+    each: bigger ones split in two)."""
+    out = []
+    for g in loop:
+        if g[0] == "L":
+            out.append((g[1][0], g[1][1], 0.0))
+            continue
+        _, c, r, a, sw = g
+        k = 1 if abs(sw) <= math.pi + 1e-12 else 2
+        for j in range(k):
+            t = a + sw * j / k
+            out.append((c[0] + r * math.cos(t), c[1] + r * math.sin(t), math.tan(sw / k / 4)))
+    return out
+
+
+def _dxf_loop(m, loop, att, bulges: bool):
+    if len(loop) == 1 and loop[0][0] == "A" and abs(loop[0][4]) >= TAU - 1e-12:
+        m.add_circle(loop[0][1], loop[0][2], dxfattribs=att)
+        return
+    if bulges:
+        m.add_lwpolyline(_bulges(loop), format="xyb", close=True, dxfattribs=att)
+        return
+    for g in loop:
+        if g[0] == "L":
+            m.add_line(g[1], g[2], dxfattribs=att)
+        else:
+            _, c, r, a, sw = g
+            a0, a1 = (a, a + sw) if sw > 0 else (a + sw, a)
+            m.add_arc(c, r, math.degrees(a0), math.degrees(a1), dxfattribs=att)
+
+
+def _local_loops(f) -> list | None:
+    """A pattern's one member at the origin, for a block (``None``: not drawn by blocks)."""
+    k = f["kind"]
+    if k in ("grid", "hexgrid", "boltcircle") or (k == "row" and f["member"] == "hole"):
+        return [circle((0.0, 0.0), f["d"] / 2)]
+    if k == "row":
+        return [slot_loop((0.0, 0.0), f["length"], f["w"], 0.0)]
+    return None
+
+
+def to_dxf(d: Design) -> bytes:
+    """The design as a DXF, the way ``d.style`` says (see the module doc)."""
+    st = d.style
+    doc = ezdxf.new("R2010")
+    if st.get("insunits", True):
+        doc.units = 1 if d.units == "in" else 4
+    elif st.get("insunits") is None:
+        del doc.header["$INSUNITS"]         # no header variable at all
+    else:
+        doc.units = 0                       # "unitless"
+    lay = st.get("layers") or ("0", "0", "0")
+    for name in set(lay) - {"0"}:
+        doc.layers.add(name)
+    m = doc.modelspace()
+    bul = st.get("bulges", True)
+    _dxf_loop(m, d.outline(), {"layer": lay[0]}, bul)
+    nb = 0
+    for i, f in enumerate(d.features):
+        if f["kind"] in ("notch", "label"):
+            continue
+        local = _local_loops(f) if st.get("blocks") else None
+        if local is None:
+            for lp in d.feature_loops(i):
+                _dxf_loop(m, lp, {"layer": lay[1]}, bul)
+            continue
+        nb += 1
+        blk = doc.blocks.new(f"P{nb}")
+        for lp in local:
+            _dxf_loop(blk, lp, {"layer": "0"}, bul)
+        c = d.place(f)
+        rot = 90.0 if f["kind"] == "row" and f["member"] == "slot" and f["dir"] == "x" else 0.0
+        for p in members(f, c):
+            m.add_blockref(blk.name, p, dxfattribs={"layer": lay[1], "rotation": rot})
+        if f["kind"] == "boltcircle" and f.get("bore"):
+            m.add_circle(c, f["bore"] / 2, dxfattribs={"layer": lay[1]})
+    for _, text, (x, y), h, typ, align in d.labels():
+        if typ == "TEXT":
+            t = m.add_text(text, height=h, dxfattribs={"layer": lay[2]})
+            t.set_placement((x, y), align=ezdxf.enums.TextEntityAlignment.MIDDLE_CENTER
+                            if align == "centre" else ezdxf.enums.TextEntityAlignment.LEFT)
+        else:
+            m.add_mtext(text, dxfattribs={"layer": lay[2], "char_height": h, "insert": (x, y),
+                                          "attachment_point": 5 if align == "centre" else 7})
+    s = io.StringIO()
+    doc.write(s)
+    return s.getvalue().encode()
+
+
+def _path_d(loop) -> str:
+    x, y = seg_ends(loop[0])[0]
+    out = [f"M {x!r} {y!r}"]
+    for g in loop:
+        if g[0] == "L":
+            out.append(f"L {g[2][0]!r} {g[2][1]!r}")
+            continue
+        _, c, r, a, sw = g
+        k = 1 if abs(sw) < math.pi - 1e-9 else (2 if abs(sw) <= TAU - 1e-9 else 4)
+        for j in range(1, k + 1):
+            t = a + sw * j / k
+            px, py = c[0] + r * math.cos(t), c[1] + r * math.sin(t)
+            out.append(f"A {r!r} {r!r} 0 0 {1 if sw > 0 else 0} {px!r} {py!r}")
+    return " ".join(out) + " Z"
+
+
+def to_svg(d: Design) -> bytes:
+    """The design as an SVG: a viewBox in the design's unit, the y axis turned by a group's
+    ``matrix(1 0 0 -1 ...)``, patterns as groups translated to their centre (a row of slots
+    turned by ``rotate(90)``), texts in a y-down group."""
+    import svgwrite
+    x0, y0 = d.origin
+    W, H = d.width, d.height
+    u = "in" if d.units == "in" else "mm"
+    dw = svgwrite.Drawing(size=(f"{W!r}{u}", f"{H!r}{u}"), viewBox=f"0 0 {W!r} {H!r}",
+                          profile="full", debug=False)
+    style = {"fill": "none", "stroke": "black", "stroke_width": 0.1 if u == "mm" else 0.004}
+    flip = dw.g(transform=f"matrix(1 0 0 -1 {-x0!r} {H + y0!r})", id="drawing")
+    dw.add(flip)
+    flip.add(dw.path(d=_path_d(d.outline()), **style))
+    for i, f in enumerate(d.features):
+        if f["kind"] in ("notch", "label"):
+            continue
+        c = d.place(f)
+        local = _local_loops(f) if d.style.get("blocks") else None
+        if local is None:
+            for lp in d.feature_loops(i):
+                if len(lp) == 1 and abs(lp[0][4]) >= TAU - 1e-12:
+                    flip.add(dw.circle(center=lp[0][1], r=lp[0][2], **style))
+                else:
+                    flip.add(dw.path(d=_path_d(lp), **style))
+            continue
+        g = dw.g(transform=f"translate({c[0]!r} {c[1]!r})")
+        flip.add(g)
+        rot = f["kind"] == "row" and f["member"] == "slot" and f["dir"] == "x"
+        for p in members(f, c):
+            q = dw.g(transform=f"translate({p[0] - c[0]!r} {p[1] - c[1]!r})"
+                     + (" rotate(90)" if rot else ""))
+            g.add(q)
+            for lp in local:
+                if len(lp) == 1:
+                    q.add(dw.circle(center=(0, 0), r=lp[0][2], **style))
+                else:
+                    q.add(dw.path(d=_path_d(lp), **style))
+        if f["kind"] == "boltcircle" and f.get("bore"):
+            flip.add(dw.circle(center=c, r=f["bore"] / 2, **style))
+    texts = dw.g(id="labels")
+    dw.add(texts)
+    for _, text, (x, y), h, typ, align in d.labels():
+        sx, sy = x - x0, H - (y - y0)
+        t = dw.text(text, insert=(sx, sy), font_size=h / 0.7, fill="black")
+        t["text-anchor"] = "middle" if align == "centre" else "start"
+        if align == "centre":
+            t["dominant-baseline"] = "middle"
+        texts.add(t)
+    return dw.tostring().encode()
+
+
+def export(d: Design) -> tuple[str, bytes]:
+    """``(file name suffix, bytes)`` of the design in its style's format."""
+    if d.style.get("format") == "svg":
+        return ".svg", to_svg(d)
+    return ".dxf", to_dxf(d)
+
+
+# --- independent readers -------------------------------------------------------------------------
+
+
+def _dxf_segments(e, out, texts):
+    t = e.dxftype()
+    if t == "INSERT":
+        for v in e.virtual_entities():
+            _dxf_segments(v, out, texts)
+    elif t in ("LWPOLYLINE", "POLYLINE"):
+        for v in e.virtual_entities():
+            _dxf_segments(v, out, texts)
+    elif t == "LINE":
+        out.append((e.dxf.layer, ("L", (e.dxf.start.x, e.dxf.start.y), (e.dxf.end.x, e.dxf.end.y))))
+    elif t == "ARC":
+        a0, a1 = math.radians(e.dxf.start_angle), math.radians(e.dxf.end_angle)
+        out.append((e.dxf.layer, ("A", (e.dxf.center.x, e.dxf.center.y), e.dxf.radius, a0,
+                                  (a1 - a0) % TAU or TAU)))
+    elif t == "CIRCLE":
+        out.append((e.dxf.layer, ("A", (e.dxf.center.x, e.dxf.center.y), e.dxf.radius, 0.0, TAU)))
+    elif t in ("TEXT", "MTEXT"):
+        texts.append(e)
+
+
+def read_dxf(data, scale: float = 1.0) -> tuple[dict, list]:
+    """``({layer: [loops]}, [TEXT/MTEXT entities])`` of a DXF read by ezdxf alone: blocks
+    placed with ezdxf's ``virtual_entities``, polylines exploded, pieces chained (each loop
+    scaled by ``scale``)."""
+    if isinstance(data, bytes):
+        data = data.decode()
+    doc = ezdxf.read(io.StringIO(data))
+    segs, texts = [], []
+    for e in doc.modelspace():
+        _dxf_segments(e, segs, texts)
+    out = {}
+    for layer in {s[0] for s in segs}:
+        loops, open_ = chain([s for lay, s in segs if lay == layer])
+        out[layer] = [scaled(lp, scale) for lp in loops] + [("open", o) for o in open_]
+    return out, texts
+
+
+def read_svg(data: bytes) -> tuple[list, list]:
+    """``(loops in mm, [(text, x, y)])`` of an SVG read by svgelements alone (its root's
+    ``width`` in mm or inches over svgelements' pixels; y turned up)."""
+    import svgelements as se
+    svg = se.SVG.parse(io.BytesIO(data))
+    # svgelements takes 1 mm as 3.7795296 px (rounded): the root's own width says the scale
+    m = re.search(rb'<svg[^>]*?\swidth="([\d.e+-]+)(mm|in)"', data)
+    k = float(m.group(1)) * (INCH if m.group(2) == b"in" else 1.0) / svg.width
+    segs, texts = [], []
+
+    def pt(p):
+        return (p.x * k, -p.y * k)
+    for el in svg.elements():
+        if isinstance(el, se.Text):
+            texts.append((el.text, el.x * k, -el.y * k))
+            continue
+        if not isinstance(el, se.Shape):
+            continue
+        for s in se.Path(el).segments():
+            if isinstance(s, se.Line):
+                segs.append(("L", pt(s.start), pt(s.end)))
+            elif isinstance(s, se.Arc):
+                c, a = pt(s.center), pt(s.start)
+                segs.append(("A", c, math.dist(c, a), math.atan2(a[1] - c[1], a[0] - c[0]),
+                             -s.sweep))
+    loops, open_ = chain(segs)
+    return loops, texts
