@@ -121,6 +121,40 @@ def _add(text: str, d: float) -> str:
     return f"{text} + {_r(d)}" if d > 0 else f"{text} - {_r(-d)}"
 
 
+def _chamfered(sh: Shape | None) -> tuple | None:
+    """A Polygon of 8 corners that is an upright rectangle with its four corners cut by
+    equal 45-degree chamfers: ``(the Rectangle, the chamfer's leg in mm)``, else None."""
+    if sh is None or sh.kind != "Polygon" or len(sh.args["points"]) != 8:
+        return None
+    pts = sh.args["points"]
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
+    legs = []
+    for (ax, ay), (bx, by) in zip(pts, pts[1:] + pts[:1]):
+        on_side = (abs(ax - bx) <= EQUAL_TOL and min(abs(ax - x0), abs(ax - x1)) <= EQUAL_TOL) \
+            or (abs(ay - by) <= EQUAL_TOL and min(abs(ay - y0), abs(ay - y1)) <= EQUAL_TOL)
+        if on_side:
+            continue
+        dx, dy = abs(bx - ax), abs(by - ay)
+        if abs(dx - dy) > EQUAL_TOL:
+            return None
+        legs.append(dx)
+    if len(legs) != 4 or max(legs) - min(legs) > EQUAL_TOL or min(legs) <= EQUAL_TOL or \
+            2 * legs[0] >= min(x1 - x0, y1 - y0) - EQUAL_TOL:
+        return None
+    # every corner point on the box's sides, a leg in from its corner
+    for x, y in pts:
+        if min(abs(x - x0), abs(x - x1)) > EQUAL_TOL and min(abs(y - y0), abs(y - y1)) > EQUAL_TOL:
+            return None
+    W, H = x1 - x0, y1 - y0
+    rect = Shape("Rectangle", ((x0 + x1) / 2, (y0 + y1) / 2), {"width": W, "height": H},
+                 ("Rectangle", W, H), sh.pieces)
+    return rect, legs[0]
+
+
+SINGLE_PARAMS = 12     # a part with more holes of sizes no other has: their sizes as numbers
+
+
 class _Stats:
     def __init__(self) -> None:
         self.pieces = 0             # pieces of the drawing's outlines and holes
@@ -200,6 +234,29 @@ class _Part:
         if side == self.frame[axis]:
             return self.lit(v, axis)
         return _add(self.edge(axis, side), v - (c + side * half))
+
+    def span_at(self, lo: float, hi: float, axis: int, size: str) -> str:
+        """The centre of a span ``lo..hi`` (a cut-out's sides along ``axis``, mm) whose size
+        is the param ``size``: kept from the body's edge nearest its near side (``width -
+        6 - cutout_width / 2``: a wider cut-out grows away from the edge it is dimensioned
+        from) or, nearer the centre line, centred as :meth:`at` places it."""
+        mid = (lo + hi) / 2
+        if self.anchor is None:
+            return self.at(mid, axis)
+        sh = self.anchor[0]
+        key = "width" if axis == 0 else "height"
+        c, half = sh.center[axis], sh.args[key] / 2
+        gaps = {0: abs(mid - c), -1: lo - (c - half), 1: (c + half) - hi}
+        side = min((0, -1, 1), key=lambda k: (round(gaps[k], 9), k != 0))
+        if side == 0:
+            return self.at(mid, axis, ref=c)
+        gap = gaps[side]
+        edge = self.edge(axis, side)
+        if edge == "0":
+            head = f"{size} / 2" if side < 0 else f"-{size} / 2"
+        else:
+            head = f"{edge} {'+' if side < 0 else '-'} {size} / 2"
+        return _add(head, -side * gap)
 
     def from_body_centre(self, axis: int, term: str, c: float) -> str:
         """``term`` added to the body's centre along ``axis`` (``c``, mm, as drawn), which
@@ -284,6 +341,9 @@ class _Part:
             if got is not None:
                 sh, tabs = got
         nm = self.name("body" if first else "outline")
+        chamfer = _chamfered(sh) if first else None
+        if chamfer is not None:
+            sh, leg = chamfer
         if sh is None:
             pc = _polar_chain(segs)
             if pc is not None:
@@ -316,6 +376,9 @@ class _Part:
             self.frame = self.grows_from(sh)
         self.shape_line(depth, nm, sh, self.body_centre(sh), sizes)
         self.w.emit(depth, f"Fixed({nm})")
+        if chamfer is not None:
+            self.w.emit(depth, f"Chamfer({nm}, {self.p('chamfer', leg, 'at each corner')})")
+            st.patterns["chamfered corners"] += 1
         if teeth:
             self.teeth(depth, sh, teeth, "tooth")
         own = {id(x) for x in segs}
@@ -448,9 +511,10 @@ class _Part:
             done = self.pattern(depth, g, body, centres)
             if not done:
                 singles += g
+        few = len(singles) <= SINGLE_PARAMS
         for k, sh in enumerate(singles):
             self.check(k, "writing the holes")
-            self.single(depth, sh, body, centres)
+            self.single(depth, sh, body, centres, few)
 
     def check(self, k: int, stage: str, every: int = 128) -> None:
         """The import's deadline looked at (``stage``) on every ``every``-th step ``k``."""
@@ -565,8 +629,11 @@ class _Part:
             return {"length": self.p(base + "_length", a["length"]),
                     "width": self.p(base + "_width", a["width"])}
         if sh.kind in ("Rectangle", "RoundedRectangle"):
-            return {"width": self.p(base + "_width", a["width"]),
-                    "height": self.p(base + "_height", a["height"])}
+            out = {"width": self.p(base + "_width", a["width"]),
+                   "height": self.p(base + "_height", a["height"])}
+            if "corner_radius" in a:
+                out["corner_radius"] = self.p(base + "_corner_radius", a["corner_radius"])
+            return out
         if sh.kind == "RegularPolygon":
             return {"radius": self.p(base + "_radius", a["radius"])}
         return {}
@@ -852,7 +919,10 @@ class _Part:
         self.w.emit(depth, "}")
         self.stats.patterns["staggered grid"] += 1
 
-    def single(self, depth: int, sh: Shape, body, centres: list) -> None:
+    def single(self, depth: int, sh: Shape, body, centres: list, few: bool = False) -> None:
+        """One hole of a size no other has: its sizes params named after it (``slot_length``,
+        ``cutout_width``) when the part has ``few`` such holes (:data:`SINGLE_PARAMS`), else
+        numbers; a bore (on the body's centre or a pattern's) its ``bore_d``."""
         base = _hole_name(sh)
         sizes: dict = {}
         if sh.kind == "Circle":
@@ -865,6 +935,18 @@ class _Part:
                 sizes = {"diameter": self.p(own + "_d", 2 * sh.args["radius"])}
                 self.used.discard(own)          # the hole itself takes it, below
         hn = self.numbered(base) if base == "hole" else self.name(base)
+        if few and not sizes:
+            sizes = self.size_params(hn, sh, True)
+        if sh.kind in ("Rectangle", "RoundedRectangle") and "width" in sizes and \
+                abs(sh.args.get("rotation", 0.0)) <= 1e-15 and self.shared(sh.center) is None:
+            (x0, y0), (x1, y1) = ((sh.center[k] - sh.args[key] / 2 for k, key in
+                                   ((0, "width"), (1, "height"))),
+                                  (sh.center[k] + sh.args[key] / 2 for k, key in
+                                   ((0, "width"), (1, "height"))))
+            at = f"({self.span_at(x0, x1, 0, sizes['width'])}, " \
+                 f"{self.span_at(y0, y1, 1, sizes['height'])})"
+            self.hole_block(depth, hn, sh, at, sizes)
+            return
         if sh.kind == "Polygon":
             self.w.emit(depth, f"hole {hn} {{ h = {_ctor(sh, '')} }}")
             self.w.emit(depth, f"Fixed({hn}.h)")
@@ -913,11 +995,12 @@ def _write_family(w: _Writer, depth: int, f, k: int) -> str:
     return nm
 
 
-def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
+def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats, place=_pt) -> None:
     """Every loop, path, ellipse and text of ``d`` (and its engraved shapes) as strokes:
     a line of text in the built-in font (all its loops and paths of lines) as the ``Text``
-    it is, at any turn (:func:`~.infer_text.stroke_texts`), recognised shapes, ``Polygon``/``Polyline``
-    for runs of lines, else exact chains."""
+    it is, at any turn (:func:`~.text.stroke_texts`), recognised shapes, ``Polygon``/``Polyline``
+    for runs of lines, else exact chains.  ``place``: a text's position as written (a
+    label placed with the feature it names: :func:`_solid`)."""
     k = 0
     held: list[str] = []        # rigid shapes, held where the file put them
     parts = [d] + ([d.engrave] if getattr(d, "engrave", None) is not None else [])
@@ -930,7 +1013,7 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
         for text, pos, size, deg, whole in found:
             k += 1
             turn = f", rotation={_num(deg)} deg" if deg else ""
-            w.emit(depth, f"t{k} = Text({_string(text)}, position={_pt(pos)}, "
+            w.emit(depth, f"t{k} = Text({_string(text)}, position={place(pos)}, "
                           f"size={_num(size)}, anchor=\"start\", valign=\"baseline\"{turn})")
             stats.patterns["stroke text"] += 1
             held.append(f"t{k}")
@@ -998,7 +1081,7 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
             deg = round(math.degrees(rot), 9)
             rot_txt = f", rotation={_num(deg)} deg" if deg else ""
             k += 1
-            w.emit(depth, f"t{k} = Text({_string(text)}, position={_pt((x, y))}, "
+            w.emit(depth, f"t{k} = Text({_string(text)}, position={place((x, y))}, "
                           f"size={_num(h)}, anchor=\"{anchor}\", valign=\"{valign}\"{rot_txt})")
     _emit_holds(w, depth, held, "g")
 
@@ -1063,7 +1146,7 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
     eng = Drawing(paths=drawn, texts=list(d.texts), engrave=d.engrave)
     if eng.paths or eng.texts or (eng.engrave is not None and not eng.engrave.empty):
         w.emit(depth + 1, "drawing engraving {")
-        _engraving(w, depth + 2, eng, stats)
+        _engraving(w, depth + 2, eng, stats, _label_place(part, holes))
         w.emit(depth + 1, "}")
         w.emit(depth + 1, "Fixed(engraving)")
     w.emit(depth, "}")
@@ -1078,6 +1161,31 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
         w.emit(depth + 1, f"oval = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
                           f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg)")
         w.emit(depth, "}")
+
+
+LABEL_REACH = 25.0      # mm: a text this near a hole names it (moves with it)
+
+
+def _label_place(part: _Part, holes: list):
+    """A text's position as :func:`_engraving` writes it: from the reference of the hole
+    nearest it, within :data:`LABEL_REACH` (a label moves with the feature it names when
+    the plate grows), else from the body's reference nearest the text."""
+    if part.anchor is None:
+        return _pt
+    from scipy.spatial import cKDTree
+    mids = []
+    for segs in holes:
+        b = _segs_box(segs)
+        mids.append(((b[0] + b[2]) / 2, (b[1] + b[3]) / 2))
+    tree = cKDTree(mids) if mids else None
+
+    def place(p) -> str:
+        if tree is not None:
+            gap, i = tree.query(p, distance_upper_bound=LABEL_REACH)
+            if math.isfinite(gap):
+                return part.beside(mids[i], p)
+        return f"({part.at(p[0], 0)}, {part.at(p[1], 1)})"
+    return place
 
 
 def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: bool = False,
