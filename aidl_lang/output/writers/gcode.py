@@ -91,7 +91,9 @@ class Job:
     feeds and travel speed, acceleration ignored), ``warnings`` (a profile's ``kerf`` or
     ``thickness`` unlike the program's), ``notes`` (what the program does that the drawing
     does not say: a shared cut cut once, a lead-in shortened, tabs fitted); ``dark`` (mm a
-    laser ran at an operation's power 0: not cut, not in ``cut``)."""
+    laser ran at an operation's power 0: not cut, not in ``cut``); ``path`` (mm cut in the
+    first pass of every cut: ``cut`` is ``path`` times the passes when every cut has as
+    many)."""
     text: str
     cut: float
     travel: float
@@ -99,22 +101,43 @@ class Job:
     warnings: list = field(default_factory=list)
     notes: list = field(default_factory=list)
     dark: float = 0.0
+    path: float = 0.0
 
     def summary(self, name: str) -> str:
         """``box.gcode: cut 2444.8 mm, travel 606.5 mm, about 11 min 54 s at the profile's
         speeds``."""
-        return f"{name}: {estimate_text(self.cut, self.travel, self.seconds, self.dark)}"
+        return f"{name}: {estimate_text(self.cut, self.travel, self.seconds, self.dark, self.path)}"
 
 
-def estimate_text(cut: float, travel: float, seconds: float, dark: float = 0.0) -> str:
-    """The job's numbers in words (``cut``, ``travel``, ``dark``: mm; ``seconds``); ``dark``:
-    the mm run with the beam off at an operation's power 0, said apart from the cut."""
+def passes(cut: float, path: float) -> int | None:
+    """How many times a job runs its path: ``cut`` / ``path`` (mm) when that is a whole
+    number (every cut run as many times), else None (some cuts run more often, or nothing is
+    cut)."""
+    if path <= 1e-9:
+        return None
+    n = cut / path
+    return round(n) if round(n) >= 1 and abs(n - round(n)) < 1e-6 * max(1.0, n) else None
+
+
+def estimate_text(cut: float, travel: float, seconds: float, dark: float = 0.0,
+                  path: float = 0.0) -> str:
+    """The job's numbers in words (``cut``, ``travel``, ``dark``, ``path``: mm; ``seconds``);
+    ``dark``: the mm run with the beam off at an operation's power 0, said apart from the
+    cut; ``path``: the mm of one pass of every cut, said with the passes when the job runs
+    it more than once (``cut 654.8 mm path x 2 passes = 1309.6 mm``; a laser's built-in
+    profile cuts twice: the path's length alone misled)."""
     s = int(round(seconds))
     t = f"{s // 3600} h {s % 3600 // 60} min" if s >= 3600 else \
         f"{s // 60} min {s % 60} s" if s >= 60 else f"{s} s"
     off = f" ({dark:.1f} mm more with the beam off: power 0)" if dark > 0 else ""
-    return (f"cut {cut:.1f} mm{off}, travel {travel:.1f} mm, about {t} at the profile's "
-            "speeds")
+    n = passes(cut, path)
+    if n is not None and n > 1:
+        said = f"cut {path:.1f} mm path x {n} passes = {cut:.1f} mm"
+    elif n is None and path > 1e-9 and cut > path + 1e-6:
+        said = f"cut {cut:.1f} mm ({path:.1f} mm path, some cuts in more passes)"
+    else:
+        said = f"cut {cut:.1f} mm"
+    return f"{said}{off}, travel {travel:.1f} mm, about {t} at the profile's speeds"
 
 
 def read_summary(data: bytes) -> tuple[str, list[str], list[str]]:
@@ -553,6 +576,8 @@ class _Writer:
         self.x = self.y = None
         self.z = None
         self.cut = self.travel = self.seconds = 0.0
+        self.path = 0.0                # mm cut in the first pass of each cut
+        self.first = True              # the pass being written is the first of its cut
         self.feed = None
         self.power = None
         self.notes: list[str] = []
@@ -628,6 +653,8 @@ class _Writer:
                      f"I{num(i)} J{num(j)}")
         if cutting:
             self.cut += L
+            if self.first:
+                self.path += L
         self.seconds += L / self.feed * 60.0
         self.x, self.y = ex, ey
         return L
@@ -665,7 +692,7 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     w.warnings += _dark_warnings(w)
     head = _header(output, m, w)
     return Job("\n".join(head + body) + "\n", w.cut, w.travel, w.seconds, warnings, w.notes,
-               sum(w.dark.values()))
+               sum(w.dark.values()), w.path)
 
 
 W0510_TAG = " (W0510)"      # ends a warning `aidl render` gives as a located W0510 instead
@@ -738,7 +765,7 @@ def _header(output: Output, m, w: _Writer) -> list[str]:
     src = m.source or f"built-in {m.kind} profile"
     h = [f"; {output.title or 'aidl'}: G-code (GRBL) written by aidl",
          f"; machine: {m.kind} ({src})",
-         f"; {estimate_text(w.cut, w.travel, w.seconds, sum(w.dark.values()))}",
+         f"; {estimate_text(w.cut, w.travel, w.seconds, sum(w.dark.values()), w.path)}",
          *[f"; warning: {x}" for x in w.warnings],
          *[f"; note: {x}" for x in w.notes],
          "; units mm, absolute; arcs G2/G3 with I/J relative to the start",
@@ -846,6 +873,7 @@ def _body(w: _Writer, cuts, m, thick: dict, output: Output) -> list[str]:
             dark = 0.0
             back = [] if cut.closed else [(reverse(s), tab) for s, tab in reversed(pieces)]
             for k in range(max(1, op.passes)):
+                w.first = k == 0
                 if k == 0 or lead:
                     w.rapid(*start, off=True)
                 if lead:
@@ -859,6 +887,7 @@ def _body(w: _Writer, cuts, m, thick: dict, output: Output) -> list[str]:
                 w.dark[cut.operation] = w.dark.get(cut.operation, 0.0) + dark
         elif m.kind == "plotter":
             for k in range(max(1, op.passes)):
+                w.first = k == 0
                 if k == 0 or not cut.closed:
                     w.rapid(z=m.safe_height)
                     w.rapid(*start)
@@ -888,6 +917,7 @@ def _body(w: _Writer, cuts, m, thick: dict, output: Output) -> list[str]:
                 depths = [t * (k + 1) / n for k in range(n)]
             t_part = thick.get(cut.part) or DEFAULT_THICKNESS
             for k, dz in enumerate(depths):
+                w.first = k == 0
                 if k == 0 or not cut.closed or lead:
                     w.rapid(z=m.safe_height)
                     w.rapid(*start)
