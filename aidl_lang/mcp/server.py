@@ -119,7 +119,7 @@ Detail = Annotated[bool, Field(
 WritePath = Annotated[str, Field(
     description="The .aidl file to write in the allowed folder (folders made).")]
 WriteText = Annotated[str | None, Field(
-    description="The whole program.", max_length=T.MAX_SOURCE)]
+    description="The whole program text (instead of a patch).", max_length=T.MAX_SOURCE)]
 Old = Annotated[str | None, Field(
     description="Patch: text found exactly once in the file, replaced by `new`.",
     max_length=T.MAX_SOURCE)]
@@ -232,35 +232,39 @@ PROGRAM_CHOICE = [{"required": ["source"], "properties": {"source": {"type": "st
 
 def slim(schema):
     """A JSON Schema as ``tools/list`` sends it, without what says nothing to a client: no
-    ``title`` (the property's name again), an optional argument's ``anyOf [X, null]`` with
-    ``default: null`` as X alone (leaving it out is how a call does without it), and an
-    ``anyOf`` of bare types as one ``type`` list.  What it accepts is otherwise the same."""
+    ``title`` (the property's name again), no ``default: null``, an ``anyOf`` of one typed
+    schema and null as that schema with ``null`` among its types (``{"type": ["string",
+    "null"], "maxLength": ...}``), an ``anyOf`` of bare types as one ``type`` list.  It
+    accepts the same values."""
     if isinstance(schema, list):
         return [slim(x) for x in schema]
     if not isinstance(schema, dict):
         return schema
     out = {}
     for k, v in schema.items():
-        if k == "title" and isinstance(v, str):
+        if k == "title" and isinstance(v, str) or k == "default" and v is None:
             continue
         out[k] = v if k in ("default", "const", "enum", "required") else slim(v)
     any_of = out.get("anyOf")
-    if isinstance(any_of, list):
-        kept = [x for x in any_of if x != {"type": "null"}]
-        if len(kept) < len(any_of) and out.get("default", 0) is None:
-            out.pop("default")
-            any_of = kept
-        if all(set(x) == {"type"} and isinstance(x["type"], str) for x in any_of):
-            types = [x["type"] for x in any_of]
-            if "number" in types and "integer" in types:
-                types.remove("integer")
-            out.pop("anyOf")
-            out["type"] = types[0] if len(types) == 1 else types
-        elif len(any_of) == 1:
-            out.pop("anyOf")
-            out = {**any_of[0], **out}
-        else:
-            out["anyOf"] = any_of
+    if not isinstance(any_of, list):
+        return out
+    null = {"type": "null"} in any_of
+    kept = [x for x in any_of if x != {"type": "null"}]
+    if all(set(x) == {"type"} and isinstance(x["type"], str) for x in kept):
+        types = [x["type"] for x in kept]
+        if "number" in types and "integer" in types:
+            types.remove("integer")
+        out.pop("anyOf")
+        types += ["null"] if null else []
+        out["type"] = types[0] if len(types) == 1 else types
+    elif len(kept) == 1 and isinstance(kept[0].get("type"), str) and "const" not in kept[0]:
+        out.pop("anyOf")
+        out = {**kept[0], **out}
+        if null:
+            out["type"] = [out["type"], "null"]
+    elif len(kept) == 1 and "const" in kept[0] and set(kept[0]) <= {"const", "type"}:
+        out.pop("anyOf")
+        out["enum"] = [kept[0]["const"]] + ([None] if null else [])
     return out
 
 
