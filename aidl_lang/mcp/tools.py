@@ -478,18 +478,23 @@ def _job(outputs: list, machine, thickness: float | None) -> dict:
     """The job figures of cutting ``outputs`` (one per sheet; the kerf applied) on
     ``machine`` (None: the built-in laser), as the G-code writer plans them
     (:func:`aidl_lang.output.writers.gcode.job`): ``{"path_mm" (one pass of every cut),
-    "passes" (how many times the path is run, when the same for every cut), "cut_mm" (every
+    "passes" (how many times the path is run, when the same for every cut: else the text
+    says each part's), "cut_mm" (every
     pass), "travel_mm", "seconds", "machine", "text"}``, summed over the sheets."""
     from ..output.writers.gcode import estimate_text, job, passes
     cut = travel = seconds = dark = path = 0.0
+    runs: dict = {}
     kind = "laser" if machine is None else machine.kind
     for out in outputs:
         j = job(out, machine, thickness)
         cut, travel, seconds = cut + j.cut, travel + j.travel, seconds + j.seconds
         dark, path = dark + j.dark, path + j.path
-    doc = {"path_mm": round(path, 3), "passes": passes(cut, path), "cut_mm": round(cut, 3),
+        for n, (p, c) in j.runs.items():
+            run = runs.setdefault(n, [0.0, 0.0])
+            run[0], run[1] = run[0] + p, run[1] + c
+    doc = {"path_mm": round(path, 3), "passes": passes(runs), "cut_mm": round(cut, 3),
            "travel_mm": round(travel, 3), "seconds": round(seconds, 1), "machine": kind,
-           "text": estimate_text(cut, travel, seconds, dark, path).replace(
+           "text": estimate_text(cut, travel, seconds, dark, runs).replace(
                "the profile's", f"the {kind} profile's")}
     if doc["passes"] is None:
         doc.pop("passes")
