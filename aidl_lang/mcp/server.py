@@ -262,6 +262,8 @@ def slim(schema):
         out = {**kept[0], **out}
         if null:
             out["type"] = [out["type"], "null"]
+            if "enum" in out:
+                out["enum"] = [*out["enum"], None]
     elif len(kept) == 1 and "const" in kept[0] and set(kept[0]) <= {"const", "type"}:
         out.pop("anyOf")
         out["enum"] = [kept[0]["const"]] + ([None] if null else [])
