@@ -250,24 +250,55 @@ def slim(schema):
         return out
     null = {"type": "null"} in any_of
     kept = [x for x in any_of if x != {"type": "null"}]
-    if all(set(x) == {"type"} and isinstance(x["type"], str) for x in kept):
-        types = [x["type"] for x in kept]
-        if "number" in types and "integer" in types:
-            types.remove("integer")
-        out.pop("anyOf")
-        types += ["null"] if null else []
-        out["type"] = types[0] if len(types) == 1 else types
-    elif len(kept) == 1 and isinstance(kept[0].get("type"), str) and "const" not in kept[0]:
-        out.pop("anyOf")
-        out = {**kept[0], **out}
-        if null:
-            out["type"] = [out["type"], "null"]
-            if "enum" in out:
-                out["enum"] = [*out["enum"], None]
-    elif len(kept) == 1 and "const" in kept[0] and set(kept[0]) <= {"const", "type"}:
+    if len(kept) == 1 and "const" in kept[0] and set(kept[0]) <= {"const", "type"}:
         out.pop("anyOf")
         out["enum"] = [kept[0]["const"]] + ([None] if null else [])
+        return out
+    merged = _merge_types(kept)
+    if merged is None:
+        return out
+    out.pop("anyOf")
+    out = {**merged, **out}
+    if null:
+        t = out["type"]
+        out["type"] = [*(t if isinstance(t, list) else [t]), "null"]
+        if "enum" in out:
+            out["enum"] = [*out["enum"], None]
+    if isinstance(out["type"], list) and len(out["type"]) == 1:
+        out["type"] = out["type"][0]
     return out
+
+
+# the keywords that apply to one JSON type only: a schema of several types may hold them
+_ONLY = {"string": {"maxLength", "minLength", "pattern", "enum"},
+         "number": {"minimum", "maximum", "exclusiveMinimum", "exclusiveMaximum"},
+         "object": {"additionalProperties", "properties"}, "boolean": set()}
+
+
+def _merge_types(branches: list) -> dict | None:
+    """One schema ``{"type": [...], ...}`` accepting what ``anyOf`` of ``branches`` accepts,
+    when each branch is one type with only that type's keywords (a string's ``maxLength``
+    binds no number) and no two branches share a type; ``integer`` goes into a bare
+    ``number``; None when they cannot be merged."""
+    types = [b.get("type") for b in branches]
+    if not branches or not all(isinstance(t, str) for t in types):
+        return None
+    if "integer" in types and "number" in types and branches[types.index("number")] == \
+            {"type": "number"} and branches[types.index("integer")] == {"type": "integer"}:
+        branches = [b for b in branches if b.get("type") != "integer"]
+        types.remove("integer")
+    if len(set(types)) < len(types):
+        return None
+    merged: dict = {}
+    for b, t in zip(branches, types):
+        extra = set(b) - {"type"}
+        if len(branches) > 1 and not extra <= _ONLY.get(t, set()):
+            return None
+        merged.update({k: b[k] for k in extra})
+    if "enum" in merged and len(branches) > 1:
+        return None
+    merged["type"] = types[0] if len(types) == 1 else types
+    return merged
 
 
 def _outline(prop: dict, defs: dict) -> str:
