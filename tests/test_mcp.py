@@ -151,12 +151,12 @@ async def test_mcp_server_over_stdio(tmp_path):
             assert got.contents[0].text == find("assert").render()
 
             # the system prompt, offered as a prompt too
-            from aidl_lang.llm.prompt import system_prompt
+            from aidl_lang.llm.prompt import agent_prompt, system_prompt
             prompts = {p.name: p for p in (await session.list_prompts()).prompts}
             assert set(prompts) == {"aidl"}
             got = await session.get_prompt("aidl", {})
             [msg] = got.messages
-            assert msg.role == "user" and msg.content.text == for_agents(system_prompt())
+            assert msg.role == "user" and msg.content.text == for_agents(agent_prompt())
             # the prompt an agent reads names the tools' arguments, not the CLI's flags
             for flag in ("--set", "--layout", "--assembled", "--describe", "--infer"):
                 assert flag in system_prompt() and flag not in msg.content.text, flag
