@@ -1,12 +1,15 @@
 """``aidl mcp``: the Model Context Protocol server over stdio, on the official ``mcp`` SDK
 (``MCPServer``).  The tools are thin wrappers of :mod:`.tools`; docs/mcp.md lists them.
 
-Tools: ``check``, ``render`` (a PNG image block, optionally a file written inside the root),
+Tools: ``check``, ``render`` (a file written inside the root and its figures; a PNG image
+block with ``picture``),
 ``values``, ``describe`` (the final part in words), ``import_drawing`` (``aidl import
 [--infer]`` of a DXF or SVG in the root), ``explain``, ``docs``.  The compiling four
 run side by side in a pool of worker processes (:mod:`.worker`) and return structured content
 of the output schemas of :mod:`.schemas`; their input schemas take exactly one of ``source``
-and ``path`` and nothing they do not list (:class:`_Server` refuses the rest).  Resources:
+and ``path`` and nothing they do not list (:class:`_Server` refuses the rest).  ``tools/list``
+is kept short (:func:`slim`, :func:`outline_schema`, :func:`_share`; the full output schemas
+are the resources ``aidl://schemas/NAME.json``).  Resources:
 ``aidl://docs/language`` (the language reference), ``aidl://docs/api``, ``aidl://docs/topics``
 and ``aidl://docs/topic/NAME`` (the topics of ``aidl docs``), ``aidl://prompt`` (the ``aidl
 prompt`` text, when the caller provides it), ``aidl://stdlib/NAME.aidl`` and
@@ -149,7 +152,7 @@ for the vocabulary, standard library and examples; call `docs` with a name (Circ
 spur_gear, assert, ...) for its units, members and an example, or read aidl://docs/language \
 for the full reference. Write a program, call `check` until it reports \
 ok (each diagnostic has a code, a located span, a hint and often a fix; `explain` a code for \
-more), then `render` to see it, `describe` to read the final part in words (outline, openings \
+more), then `render` to write the file and read its figures (picture=true to see it), `describe` to read the final part in words (outline, openings \
 with centres and sizes, texts, symmetries) and `values` to read exact positions and sizes. Paths are \
 relative to the server's allowed folder; nothing outside it can be read or written."""
 
