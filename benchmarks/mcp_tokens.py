@@ -167,7 +167,9 @@ def _params_argument(tool) -> str:
     props = tool.input_schema.get("properties", {})
     for name, p in props.items():
         kinds = [p] + p.get("anyOf", [])
-        if name != "path" and any(k.get("type") == "object" for k in kinds):
+        types = [t for k in kinds for t in (k.get("type") if isinstance(k.get("type"), list)
+                                            else [k.get("type")])]
+        if name != "path" and "object" in types:
             return name
     return "params"
 

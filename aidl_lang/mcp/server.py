@@ -427,6 +427,7 @@ class _Server(MCPServer):
     bare "Error rendering prompt" with a traceback on stderr)."""
 
     def __init__(self, *args, tools: list[Tool], **kwargs) -> None:
+        _share(tools)                     # every tool's, wherever it is defined
         super().__init__(*args, tools=tools, **kwargs)
         self.accepted = {t.name: list(t.parameters["properties"]) for t in tools}
 
@@ -593,7 +594,6 @@ def build_server(root: str, budget: float = 1.0,
         that compiles."""
         return T.docs(name)
 
-    _share(tools)
     server = _Server("aidl", instructions=INSTRUCTIONS, version=ver, tools=tools)
     _resources(server, prompt)
     return server
