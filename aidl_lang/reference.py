@@ -222,15 +222,16 @@ def stdlib_templates() -> dict[str, StdTemplate]:
     return out
 
 
-def stdlib_lines() -> str:
-    """One line per stdlib template, by module: signature (without ``cx, cy``) and the first
-    sentence of its doc comment (``aidl prompt``)."""
+def stdlib_lines(defaults: bool = True) -> str:
+    """One line per stdlib template, by module: signature (without ``cx, cy``; the
+    parameters' defaults unless ``defaults`` is false) and the first sentence of its doc
+    comment (``aidl prompt``)."""
     rows, module = [], None
     for t in stdlib_templates().values():
         if t.module != module:
             module = t.module
             rows.append(f"`import \"std/{module}.aidl\"`:")
-        ps = [f"{n}={d}" for n, _, d in t.params if n not in ("cx", "cy")]
+        ps = [f"{n}={d}" if defaults else n for n, _, d in t.params if n not in ("cx", "cy")]
         mem = f" Members: {', '.join(t.members)}." if t.members else ""
         rows.append(f"- {t.name}({', '.join(ps)}) -> {t.node.kind}: {t.summary}{mem}")
     return "\n".join(rows)

@@ -352,7 +352,8 @@ def test_the_kerf_offsets_the_grid_outside_and_cuts_each_shared_edge_once_on_its
     assert ("note: the 12 shared cuts between the 9 pieces of `plate` are each cut once along "
             "their line; each side loses 0.1 mm (half the kerf, 0.2 mm) along each") in said
     assert said.count("shared cut") == 1            # one note for the cut part, not 12
-    assert "cut 482.9 mm" in said                 # two passes of 241.43 mm
+    # two passes of 241.43 mm, said as such (issue 86)
+    assert "cut 241.4 mm path x 2 passes = 482.9 mm" in said
 
 
 def _dxf_stretches_any(text: str) -> list:

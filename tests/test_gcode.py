@@ -299,10 +299,17 @@ def test_travel_and_header_numbers(path):
     moves = replay(j.text)
     g0 = sum(m.length for m in moves if m.g == 0)
     assert g0 == pytest.approx(j.travel, abs=1e-6)
-    head = re.search(r"; cut ([\d.]+) mm, travel ([\d.]+) mm", j.text)
-    assert float(head[2]) == pytest.approx(j.travel, abs=0.051)
+    head = re.search(r"; cut (?:([\d.]+) mm path x (\d+) passes = )?([\d.]+) mm[^,]*, "
+                     r"travel ([\d.]+) mm", j.text)
+    assert float(head[4]) == pytest.approx(j.travel, abs=0.051)
     cutlen = sum(m.length for m in moves if m.on)
-    assert float(head[1]) == pytest.approx(cutlen, abs=0.051)
+    assert float(head[3]) == pytest.approx(cutlen, abs=0.051)
+    # the path and its passes (issue 86): the replayed cut is the path that many times
+    n = gcode.passes(j.runs)
+    if n is not None and n > 1:
+        assert int(head[2]) == n and float(head[1]) * n == pytest.approx(cutlen, abs=0.051 * n)
+    else:
+        assert sum(p * k for k, (p, _) in j.runs.items()) == pytest.approx(cutlen, abs=1e-6)
     plain = [Cut("engrave", s.part, list(s.segments), s.closed) for s in out.engrave] + \
         [Cut("cut", p.name, list(lp.segments), True) for p in out.parts for lp in p.loops]
     last = moves[-1].p                   # the way home to X0 Y0 comes on top of the tour
@@ -496,11 +503,14 @@ def test_cli_estimate_line_errors_and_layout(tmp_path, capsys):
     o = tmp_path / "box.gcode"
     assert main(["render", str(BOX), "-o", str(o)]) == 0
     said = capsys.readouterr().out
-    line = re.search(r"box\.gcode: cut ([\d.]+) mm, travel ([\d.]+) mm, about (\d+) min (\d+) s "
-                     r"at the profile's speeds", said)
+    # the outlines cut twice, the engraving once (the built-in laser): said apart (issue 86)
+    line = re.search(r"box\.gcode: (cut ([\d.]+) mm \(([\d.]+) mm path x 2 passes \+ "
+                     r"([\d.]+) mm path x 1 pass\)), travel ([\d.]+) mm, about (\d+) min "
+                     r"(\d+) s at the profile's speeds", said)
     assert line, said
+    assert float(line[2]) == pytest.approx(2 * float(line[3]) + float(line[4]), abs=0.15)
     head = o.read_text().splitlines()[2]
-    assert f"cut {line[1]} mm, travel {line[2]} mm" in head
+    assert f"{line[1]}, travel {line[5]} mm" in head
     # errors: a missing file, bad TOML, an unknown key; exit 2, nothing written
     bad = tmp_path / "m.toml"
     for text, key in [(None, "cannot read"), ('kind = "laser', "is not TOML"),

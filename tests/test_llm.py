@@ -153,6 +153,29 @@ def test_prompt_lists_the_whole_registry_and_stays_compact():
     assert word_count(system_prompt(examples=False)) <= 3930
 
 
+def test_the_agents_prompt_is_shorter_and_keeps_the_vocabulary(compile_text):
+    """`aidl mcp`'s prompt (aidl://prompt, issue 86) says what the tools' `docs` does not
+    repeat: the whole registry and every standard-library template (their defaults are in
+    `docs`), one example program that compiles clean (the others are resources)."""
+    from aidl_lang.api import compile as aidl_compile
+    from aidl_lang.llm.prompt import agent_prompt
+    from aidl_lang.reference import stdlib_templates
+    text = agent_prompt()
+    for name in ENTRIES:
+        assert f"- {name}(" in text, name
+    for name in stdlib_templates():
+        assert f"- {name}(" in text, name
+    assert "- lid_box(length, width, height, thickness, finger, clearance, outside) -> " \
+        "assembly" in text
+    blocks = code_blocks(text)
+    assert len(blocks) == 2 and "aidl://examples/NAME.aidl" in text
+    for code in blocks:
+        c = aidl_compile(code, path=str(EXAMPLES_DIR / "x.aidl"))
+        assert c.ok and not c.sink.items, [d.message for d in c.sink.items]
+    # 4,399 words (29,460 characters as served) in the prompt of `aidl prompt`
+    assert word_count(text) <= 4080 and len(text) < 0.93 * len(system_prompt())
+
+
 def test_prompt_members_table_gives_each_member_its_kind():
     text = system_prompt(examples=False)
     row = next(ln for ln in text.splitlines() if ln.startswith("- Rectangle, RoundedRectangle |"))

@@ -314,7 +314,8 @@ def test_a_laser_operation_at_power_0_cuts_nothing_and_is_said():
     assert ("the machine profile `p0.toml` gives `cut_outer.power = 0`: the 320.0 mm of cut "
             "outer run with the beam off and cut nothing") in job.warnings[0]
     assert job.summary("p.gcode").startswith(
-        f"p.gcode: cut {2 * hole:.1f} mm (320.0 mm more with the beam off: power 0), travel")
+        f"p.gcode: cut {hole:.1f} mm path x 2 passes = {2 * hole:.1f} mm (320.0 mm more with "
+        "the beam off: power 0), travel")
     estimate, warnings, _ = gcode.read_summary(job.text.encode())
     assert warnings == job.warnings and "beam off" in estimate
 

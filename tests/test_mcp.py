@@ -86,8 +86,10 @@ async def test_mcp_server_over_stdio(tmp_path):
             assert doc["describe"]["parts"][0]["openings"][0]["center"] == [10, 0]
             assert tools["describe"].annotations.read_only_hint
 
-            # render: an image block that decodes to a PNG of the asked width, and a DXF
+            # render: an image block (asked: `picture`) that decodes to a PNG of the asked
+            # width, and a DXF
             r = await session.call_tool("render", {"path": "plate.aidl", "width": 300,
+                                                   "picture": True,
                                                    "output": "out/../plate.dxf"})
             assert not r.is_error, _text(r)
             [img] = [c for c in r.content if c.type == "image"]
@@ -149,12 +151,12 @@ async def test_mcp_server_over_stdio(tmp_path):
             assert got.contents[0].text == find("assert").render()
 
             # the system prompt, offered as a prompt too
-            from aidl_lang.llm.prompt import system_prompt
+            from aidl_lang.llm.prompt import agent_prompt, system_prompt
             prompts = {p.name: p for p in (await session.list_prompts()).prompts}
             assert set(prompts) == {"aidl"}
             got = await session.get_prompt("aidl", {})
             [msg] = got.messages
-            assert msg.role == "user" and msg.content.text == for_agents(system_prompt())
+            assert msg.role == "user" and msg.content.text == for_agents(agent_prompt())
             # the prompt an agent reads names the tools' arguments, not the CLI's flags
             for flag in ("--set", "--layout", "--assembled", "--describe", "--infer"):
                 assert flag in system_prompt() and flag not in msg.content.text, flag
@@ -204,7 +206,8 @@ def test_check_reports_redundant_constraints_as_aidl_check_does(tmp_path):
 
 def test_render_writes_the_file_at_the_asked_width(tmp_path):
     """`width` is the written PNG's width too, not only the returned image's."""
-    doc, [png] = T.render(T.Workspace(tmp_path), source=GOOD, output="x.png", width=300)
+    doc, [png] = T.render(T.Workspace(tmp_path), source=GOOD, output="x.png", width=300,
+                          picture=True)
     assert doc["written"] == "x.png"
     data = (tmp_path / "x.png").read_bytes()
     assert int.from_bytes(data[16:20], "big") == 300 == int.from_bytes(png[16:20], "big")
@@ -231,18 +234,26 @@ async def test_tool_schemas_describe_every_argument_with_its_values_and_ranges(t
             tools = {t.name: t for t in (await session.list_tools()).tools}
             assert set(tools) == {"check", "render", "values", "describe", "explain", "docs",
                                   "import_drawing", "write_program"}
+            # an argument several tools take alike is described in full once, in the first
+            # of them; the others say `as in `FIRST`` (issue 86: tools/list in few tokens)
             for t in tools.values():
                 props = t.input_schema["properties"]
                 assert props, t.name
                 for name, prop in props.items():
-                    assert len(prop.get("description", "")) > 20, (t.name, name)
+                    said = prop.get("description", "")
+                    if said.startswith("as in `"):
+                        first = tools[said[len("as in `"):-1]].input_schema["properties"]
+                        said = first[name]["description"]
+                        assert {k: v for k, v in first[name].items() if k != "description"} \
+                            == {k: v for k, v in prop.items() if k != "description"}
+                    assert len(said) > 20, (t.name, name)
             render = tools["render"].input_schema["properties"]
             assert render["style"]["enum"] == ["preview", "laser"]
             assert render["style"]["default"] == "preview"
             assert (render["width"]["minimum"], render["width"]["maximum"]) == (16, 4096)
             for t in ("check", "render", "values", "describe"):
-                [budget] = [b for b in tools[t].input_schema["properties"]["budget"]["anyOf"]
-                            if b.get("type") == "number"]
+                budget = tools[t].input_schema["properties"]["budget"]
+                assert budget["type"] == ["number", "null"]
                 assert budget["exclusiveMinimum"] == 0 and budget["maximum"] == 4
             assert tools["explain"].input_schema["required"] == ["code"]
 
@@ -286,7 +297,7 @@ async def test_render_assembled_returns_the_product_in_3d(tmp_path):
             reds = []
             for slot in ("3mm", "2.5mm"):
                 r = await session.call_tool("render", {
-                    "path": "stand.aidl", "width": 240, "assembled": True,
+                    "path": "stand.aidl", "width": 240, "assembled": True, "picture": True,
                     "overrides": {"slot": slot}, "output": "stand.glb"})
                 assert not r.is_error, _text(r)
                 doc = _doc((r))
@@ -346,7 +357,7 @@ def test_check_and_render_read_a_drawing_beside_the_program_inside_the_root(tmp_
     doc = T.check(ws, source=prog)
     assert doc["ok"] and doc["parts"][0]["bbox"] == pytest.approx([0, 0, 64, 42], abs=1e-9)
     (root / "lid.aidl").write_text(prog)
-    doc, png = T.render(ws, path="lid.aidl", output="lid.dxf")
+    doc, png = T.render(ws, path="lid.aidl", output="lid.dxf", picture=True)
     assert doc["ok"] and png and (root / "lid.dxf").exists()
     outside = tmp_path / "secret.dxf"
     shutil.copyfile(root / "parts" / "board.dxf", outside)

@@ -65,28 +65,39 @@ async def test_results_are_structured_content_matching_the_output_schemas(tmp_pa
     (tmp_path / "plate.aidl").write_text(GOOD)
     async with _session(tmp_path) as session:
         tools = {t.name: t for t in (await session.list_tools()).tools}
-        calls = {"check": {"dof": True}, "render": {"width": 64}, "values": {},
+        calls = {"check": {"dof": True}, "render": {"width": 64, "picture": True}, "values": {},
                  "describe": {}}
         for name, extra in calls.items():
+            # tools/list gives an outline (issue 86); the full schema is a resource
             schema = tools[name].output_schema
             assert schema and schema["type"] == "object", name
-            assert {"ok", "units"} <= set(schema["properties"]), name
+            assert schema["required"] == ["ok", "units"], name
+            assert schema["description"].endswith(f"full schema: aidl://schemas/{name}.json")
+            full = json.loads((await session.read_resource(
+                f"aidl://schemas/{name}.json")).contents[0].text)
+            assert {"ok", "units"} <= set(full["properties"]), name
             for source in (GOOD, "solid p { c = Circel(center=(0, 0), radius=1) }"):
                 r = await session.call_tool(name, {"source": source, **extra})
                 assert not r.is_error, _text(r)
                 jsonschema.validate(r.structured_content, schema)
+                jsonschema.validate(r.structured_content, full)
                 assert _doc((r)) == r.structured_content
                 assert r.structured_content["ok"] is (source == GOOD)
         r = await session.call_tool("values", {"path": "plate.aidl", "names": ["bore.c"]})
         assert [v["name"] for v in r.structured_content["values"]] == [
             "plate.bore.c.center", "plate.bore.c.radius", "plate.bore.c.diameter"]
         assert r.structured_content["values"][0]["value"] == [10, 0]
-        r = await session.call_tool("render", {"path": "plate.aidl", "width": 64})
+        r = await session.call_tool("render", {"path": "plate.aidl", "width": 64,
+                                               "picture": True})
         assert [c.type for c in r.content] == ["image", "text"]
         assert r.structured_content["image"] == {"format": "png", "width": 64, "view": "flat"}
         assert r.structured_content["parts"][0]["holes"] == 1
         props = tools["check"].output_schema["properties"]
         assert {"diagnostics", "solve", "freedom", "parts", "summary"} <= set(props)
+        assert props["parts"]["description"] == "[{name, kind, bbox, area, holes, loops}]"
+        # render says the fields it shares with check by name, without their schema again
+        assert tools["render"].output_schema["description"].startswith(
+            "as `check`: ok, error, diagnostics, units")
 
 
 @pytest.mark.asyncio
@@ -195,7 +206,7 @@ async def test_render_takes_the_cli_layout_sheet_kerf_and_thickness(tmp_path):
     async with _session(tmp_path) as session:
         r = await session.call_tool("render", {
             "source": MIXED, "layout": "sheet", "sheet": "200x150mm", "gap": 2,
-            "rotate": 0, "width": 100, "output": "sheets/cut.svg"})
+            "rotate": 0, "width": 100, "picture": True, "output": "sheets/cut.svg"})
         assert not r.is_error, _text(r)
         lay = r.structured_content["layout"]
         assert lay["sheets"] == 2 and lay["size"] == [200, 150]

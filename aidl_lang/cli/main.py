@@ -767,9 +767,9 @@ def cmd_mcp(args) -> int:
         print("aidl: error: `aidl mcp` needs the MCP SDK: pip install 'aidl-lang[mcp]'",
               file=sys.stderr)
         return 2
-    from ..llm.prompt import system_prompt
+    from ..llm.prompt import agent_prompt
     from ..mcp.server import main as mcp_main
-    return mcp_main(args.root, min(args.budget, 4.0), system_prompt)
+    return mcp_main(args.root, min(args.budget, 4.0), agent_prompt)
 
 
 def main(argv: list[str] | None = None, cap_memory: bool = False) -> int:

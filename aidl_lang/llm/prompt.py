@@ -192,12 +192,31 @@ def example_programs(names: list[str] | None = None) -> list[tuple[str, str]]:
     return out
 
 
-def stdlib() -> str:
-    """The standard library's templates, one line each, from their doc comments."""
+def stdlib(defaults: bool = True) -> str:
+    """The standard library's templates, one line each, from their doc comments (without the
+    parameters' defaults when ``defaults`` is false: ``aidl docs NAME`` gives them)."""
     return ("Standard library: templates to instantiate, never to rewrite by hand (each also "
             "takes `cx, cy`: where its center starts; yours do not: `part.bb.center == (x, y)` "
-            "places them; `aidl docs NAME` gives every unit, "
-            "member and an example):\n" + stdlib_lines())
+            "places them; `aidl docs NAME` gives every "
+            + ("" if defaults else "default, ") + "unit, "
+            "member and an example):\n" + stdlib_lines(defaults))
+
+
+AGENT_EXAMPLES = 1       # the MCP prompt's examples; the rest are resources (aidl://examples/)
+
+
+def agent_prompt() -> str:
+    """The system prompt for an agent that has ``aidl mcp``'s tools (``aidl://prompt``, the
+    ``aidl`` prompt; the server words it for the tools): :func:`system_prompt` with the
+    standard library's signatures without their defaults (the ``docs`` tool gives them, with
+    units and an example) and :data:`AGENT_EXAMPLES` example program (every example is a
+    resource), so that what the tools' descriptions and ``docs`` say is not said twice
+    (issue 86: 29,460 characters before)."""
+    parts = [INTRO, vocabulary(), stdlib(defaults=False), "Examples (more: the resources "
+             "aidl://examples/NAME.aidl):"]
+    for name, text in example_programs(PROMPT_EXAMPLES[:AGENT_EXAMPLES]):
+        parts.append(f"```aidl\n{text}\n```")
+    return "\n\n".join(p.strip() for p in parts) + "\n"
 
 
 def system_prompt(examples: bool | int = True) -> str:

@@ -123,6 +123,27 @@ def diagnostics(diags: list[dict], detail: bool = False) -> list[dict]:
     return [{k: v for k, v in d.items() if k != "rendered"} for d in diags]
 
 
+def no_repeats(doc: dict, detail: bool = False) -> dict:
+    """A compiling tool's result without what it says twice or says nothing with, unless
+    ``detail``: the job's ``text`` (the one line of text says it), ``solve`` when it
+    converged (its statistics matter when it did not), ``fit`` when nothing was checked (no
+    ``Place``: the line says so), and parts' boxes to 1e-6 mm and areas to 1e-3 mm²."""
+    if detail:
+        return doc
+    doc = dict(doc)
+    if isinstance(doc.get("job"), dict):
+        doc["job"] = {k: v for k, v in doc["job"].items() if k != "text"}
+    if isinstance(doc.get("solve"), dict) and doc["solve"].get("converged"):
+        doc.pop("solve")
+    if isinstance(doc.get("fit"), dict) and doc["fit"].get("checked") is False:
+        doc.pop("fit")
+    if isinstance(doc.get("parts"), list):
+        doc["parts"] = [dict(p, bbox=[round(v, 6) for v in p["bbox"]], area=round(p["area"], 3))
+                        if isinstance(p, dict) and "bbox" in p and "area" in p else p
+                        for p in doc["parts"]]
+    return doc
+
+
 def describe(doc: dict, detail: bool = False) -> dict:
     """A ``describe`` result's data with each part's openings, through-cuts, notches and
     copies grouped (:func:`group`) and its text's alike lines said once (:func:`text_lines`),
@@ -231,7 +252,7 @@ def line(tool: str, doc: dict) -> str:
     if tool == "render":
         if doc.get("written"):
             said.append(f"wrote {doc['written']}")
-        if doc.get("job"):
+        if doc.get("job") and doc["job"].get("text"):
             said.append(doc["job"]["text"])
         if doc.get("layout"):
             said.append(doc["layout"]["text"])

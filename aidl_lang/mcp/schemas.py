@@ -186,17 +186,22 @@ class LayoutInfo(TypedDict):
 
 class Job(TypedDict):
     """What cutting the written drawing takes, as the G-code writer plans it."""
+    path_mm: Annotated[float, Field(description="mm of path, one pass of every cut")]
+    passes: NotRequired[Annotated[int, Field(description="times the path is run")]]
     cut_mm: Annotated[float, Field(description="mm cut, every pass")]
     travel_mm: Annotated[float, Field(description="mm moved with the tool off")]
     seconds: Annotated[float, Field(description="the job's time at the machine profile's "
                                                 "speeds (acceleration ignored)")]
     machine: Annotated[str, Field(description="the profile's kind: laser, router, plotter")]
-    text: str
+    text: NotRequired[Annotated[str, Field(description="the same in words (with `detail`; "
+                                                       "else in the line of text)")]]
 
 
 class RenderResult(_Compiled):
+    size: NotRequired[Annotated[list[float], Field(description="[width, height] mm of the "
+                                                               "drawing")]]
     parts: NotRequired[list[Part]]
-    image: NotRequired[ImageInfo]
+    image: NotRequired[Annotated[ImageInfo, Field(description="with `picture`")]]
     written: NotRequired[Annotated[str, Field(
         description="the file written (the first sheet's with a layout), relative to the "
                     "allowed folder")]]

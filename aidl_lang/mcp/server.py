@@ -1,12 +1,15 @@
 """``aidl mcp``: the Model Context Protocol server over stdio, on the official ``mcp`` SDK
 (``MCPServer``).  The tools are thin wrappers of :mod:`.tools`; docs/mcp.md lists them.
 
-Tools: ``check``, ``render`` (a PNG image block, optionally a file written inside the root),
+Tools: ``check``, ``render`` (a file written inside the root and its figures; a PNG image
+block with ``picture``),
 ``values``, ``describe`` (the final part in words), ``import_drawing`` (``aidl import
 [--infer]`` of a DXF or SVG in the root), ``explain``, ``docs``.  The compiling four
 run side by side in a pool of worker processes (:mod:`.worker`) and return structured content
 of the output schemas of :mod:`.schemas`; their input schemas take exactly one of ``source``
-and ``path`` and nothing they do not list (:class:`_Server` refuses the rest).  Resources:
+and ``path`` and nothing they do not list (:class:`_Server` refuses the rest).  ``tools/list``
+is kept short (:func:`slim`, :func:`outline_schema`, :func:`_share`; the full output schemas
+are the resources ``aidl://schemas/NAME.json``).  Resources:
 ``aidl://docs/language`` (the language reference), ``aidl://docs/api``, ``aidl://docs/topics``
 and ``aidl://docs/topic/NAME`` (the topics of ``aidl docs``), ``aidl://prompt`` (the ``aidl
 prompt`` text, when the caller provides it), ``aidl://stdlib/NAME.aidl`` and
@@ -40,7 +43,7 @@ from .schemas import (CheckResult, DescribeResult, ImportResult, RenderResult, V
 from .wording import for_agents
 
 # what one program may build (aidl_lang/limits.py, the parser's and the importer's limits),
-# said in the descriptions of the tools that compile
+# said once, in `check`'s description (the first tool: an agent reads it first)
 LIMITS = (f"Limits: a program of at most {T.MAX_SOURCE:,} characters, brackets nested at "
           f"most {MAX_NESTING} deep, at most {MAX_ITER:,} items in one loop, templates "
           f"nested {MAX_TEMPLATE_DEPTH} deep, {DEFAULT_BUDGET.steps:,} loop steps and "
@@ -50,118 +53,92 @@ LIMITS = (f"Limits: a program of at most {T.MAX_SOURCE:,} characters, brackets n
           f"E0301), not a hang.")
 
 # The tools' arguments: the SDK turns each description, allowed value and range into the
-# JSON Schema of `tools/list`, and checks calls against it before a tool runs.
+# JSON Schema of `tools/list`, and checks calls against it before a tool runs.  An argument
+# several tools take is described in full in the first of them only (:func:`_share`).
 Source = Annotated[str | None, Field(
-    description="The AIDL program text. Give this or `path`, not both.",
-    max_length=T.MAX_SOURCE)]
+    description="The program text; or give `path`.", max_length=T.MAX_SOURCE)]
 ProgramPath = Annotated[str | None, Field(
-    description="A .aidl file, relative to the server's allowed folder (nothing outside it "
-                "is read; another kind of file is refused: a program imports a DXF or SVG "
-                "drawing with Drawing2D). Give this or `source`, not both.")]
+    description="A .aidl file in the allowed folder; or give `source`.")]
 Overrides = Annotated[dict[str, str | int | float | bool] | None, Field(
-    description="Param values: param name -> value, e.g. {\"width\": \"40 mm\"} (a string, "
-                "read as the program reads a value), {\"width\": 40} (a bare number, in the "
-                "file's units, as the string \"40\") or {\"holes\": true}.")]
+    description="Param values: {\"width\": \"40 mm\"}, {\"width\": 40} (the file's units), "
+                "{\"holes\": true}.")]
 Budget = Annotated[float | None, Field(
-    description=f"A factor of the default evaluation budget (steps, objects, sizes, 15 s of "
-                f"CPU time), above 0 and at most {T.MAX_BUDGET:g}; default: the server's "
-                f"(`aidl mcp --budget`).",
-    gt=0, le=T.MAX_BUDGET)]
+    description="Factor of the evaluation budget (15 s of CPU time, steps, objects); "
+                "default 1.", gt=0, le=T.MAX_BUDGET)]
 Dof = Annotated[bool, Field(
-    description="Also count the degrees of freedom left per structure, with the entities "
-                "still free to move.")]
+    description="Count the degrees of freedom left per structure and what still moves.")]
 Output = Annotated[str | None, Field(
-    description="Also write the drawing to this file, relative to the allowed folder (never "
-                "outside it, never over the program or through a symbolic link; a missing "
-                "folder is made); the format by extension: "
-                + ", ".join(f"{k} ({f.about})" for k, f in FORMATS.items() if k != ".stp")
-                + ".")]
+    description="Also write the drawing to this file in the allowed folder; format by "
+                "extension: " + ", ".join(k for k in FORMATS if k != ".stp") + ".")]
+Picture = Annotated[bool, Field(
+    description="Also return a PNG picture, `width` pixels wide (default: none, the figures "
+                "say what was made).")]
 Width = Annotated[int, Field(
-    description="The PNG's width in pixels (the returned image's and a written .png's).",
+    description="Width in pixels of the picture and of a written .png.",
     ge=16, le=T.MAX_PNG_WIDTH)]
 Style = Annotated[Literal["preview", "laser"], Field(
-    description="`preview`: parts filled, holes cut out; `laser`: hairline cut paths, as a "
-                "laser cutter reads them.")]
+    description="preview: filled parts; laser: hairline cut paths.")]
 Assembled = Annotated[bool, Field(
-    description="Picture the assembled product instead of the flat parts: every part "
-                "extruded by its thickness and placed by its `Place`, collisions boxed in red "
-                "(a written .stl/.3mf/.step/.glb/.png is assembled too).")]
+    description="The assembled product in 3D (parts placed by `Place`, collisions in red) "
+                "instead of the flat parts; for a picture, .png, .stl, .3mf, .step, .glb.")]
 LayoutKind = Annotated[Literal["sheet"] | None, Field(
-    description="\"sheet\": lay every solid part out flat on cutting sheets, as `aidl render "
-                "--layout sheet` (true-shape nesting; the `layout` extra): one picture and one "
-                "output file per sheet (cut-1.svg, cut-2.svg, ... when there are several; one "
-                "material thickness per sheet).")]
+    description="\"sheet\": nest the solid parts on cutting sheets, one file (cut-1.dxf, "
+                "...) and picture per sheet.")]
 Sheet = Annotated[str | None, Field(
-    description="With layout: the sheet size WIDTHxHEIGHT with a unit, e.g. \"600x400mm\" "
-                "(the default) or \"24x12in\".", max_length=100)]
+    description="With layout: sheet size, \"600x400mm\" (default) or \"24x12in\".",
+    max_length=100)]
 Gap = Annotated[str | float | None, Field(
-    description="With layout: the space between parts and to the sheet's edge, a number of "
-                "mm or a string with its unit (\"3mm\", the default).")]
+    description="With layout: space between parts and to the edge, mm or \"3mm\" (default).")]
 Rotate = Annotated[Annotated[str, Field(max_length=200)] | float | None, Field(
-    description="With layout: the angles in degrees parts may be turned by, e.g. \"0,90\" "
-                "(the default), 0 or \"any\".")]
+    description="With layout: allowed turns in degrees, \"0,90\" (default), 0 or \"any\".")]
 Kerf = Annotated[str | float | None, Field(
-    description="Offset every cut of SVG, DXF and PNG by half this kerf so parts come out at "
-                "their size: a number of mm or a string with its unit (\"0.15mm\"), above 0 "
-                "and up to 10 mm; default: the program's `kerf`, else none. STL, 3MF, STEP and "
-                "GLB keep the designed size.")]
+    description="Offset the cuts by half this kerf (mm or \"0.15mm\", at most 10 mm); "
+                "default: the program's.")]
 Thickness = Annotated[str | float | None, Field(
-    description="The extrusion thickness of STL, 3MF, STEP, GLB and the assembled picture: a "
-                "number of mm or a string with its unit (\"3mm\"); default: the program's "
-                "`thickness`, else 3 mm.")]
+    description="Extrusion of 3D outputs (mm or \"3mm\"); default: the program's, else 3 mm.")]
 Machine = Annotated[str | None, Field(
-    description="For a .gcode output: the machine profile, `laser`, `router` or `plotter` "
-                "(built-in profiles) or a TOML profile file inside the allowed folder (`aidl "
-                "docs machine`); default: the built-in laser.")]
+    description="G-code machine: laser (default), router, plotter, or a profile .toml "
+                "(`docs` machine).")]
 Page = Annotated[str | None, Field(
-    description="With a .pdf output: tile the 1:1 template over pages of this paper size "
-                "(\"A4\", \"A3\", \"Letter\", \"Legal\", each also \"-landscape\"), 10 mm "
-                "overlaps with alignment marks; default: one page the drawing's size.",
-    max_length=40)]
+    description="A .pdf tiled over paper: \"A4\", \"A3\", \"Letter\", \"Legal\", "
+                "\"-landscape\" after any.", max_length=40)]
 DrawingPath = Annotated[str, Field(
-    description="A .dxf or .svg drawing, relative to the server's allowed folder.")]
+    description="A .dxf or .svg drawing in the allowed folder.")]
 Infer = Annotated[bool, Field(
-    description="Write the design (recognised shapes such as RoundedRectangle and Slot, loops "
-                "for hole patterns, named params, held in place), not the drawing's pieces.")]
+    description="Write the design (shapes, loops, named params); false: the drawing's "
+                "pieces.")]
 Parts = Annotated[bool, Field(
     description="A sheet of parts: one solid per outer outline, in an assembly.")]
 Units = Annotated[Literal["mm", "cm", "m", "in", "ft", "pt", "px"] | None, Field(
-    description="The drawing's unit, instead of the DXF's $INSUNITS or the SVG's size.")]
+    description="The drawing's unit, instead of the file's own.")]
 ProgramOutput = Annotated[str | None, Field(
-    description="Also write the program to this .aidl file, relative to the allowed folder.")]
+    description="Also write the program to this .aidl file in the allowed folder.")]
 Names = Annotated[list[Annotated[str, Field(max_length=500)]] | None, Field(
-    description="Dotted name prefixes to keep, e.g. [\"plate.bore\", \"body.width\"] (the "
-                "root structure's name may be left out); default: every value. Names that "
-                "match nothing are an error (no_match) with the nearest names.",
-    max_length=200)]
+    description="Dotted name prefixes to keep, e.g. [\"plate.bore\"] (the root's name may "
+                "be left out); default: all.", max_length=200)]
 Detail = Annotated[bool, Field(
-    description="Every item in full: each copy of a pattern or loop, each alike opening or "
-                "cut, and each diagnostic's `rendered` text. Default: lists of more than "
-                f"{C.GROUP_AT} alike items said once with their count (`count`, `alike`, "
-                "`within`; values: kind `group`).")]
+    description=f"Every item in full; default: more than {C.GROUP_AT} alike items said once "
+                "with their count.")]
 WritePath = Annotated[str, Field(
-    description="The .aidl file to write, relative to the allowed folder (its folders are "
-                "made; never through a symbolic link).")]
+    description="The .aidl file to write in the allowed folder (folders made).")]
 WriteText = Annotated[str | None, Field(
-    description="The whole program: the file becomes this text.", max_length=T.MAX_SOURCE)]
+    description="The whole program text (instead of a patch).", max_length=T.MAX_SOURCE)]
 Old = Annotated[str | None, Field(
-    description="Patch: the text to replace, found exactly once in the file (with `new`).",
+    description="Patch: text found exactly once in the file, replaced by `new`.",
     max_length=T.MAX_SOURCE)]
 New = Annotated[str | None, Field(
-    description="Patch: the replacement of `old`, or of the characters `start` to `end`.",
+    description="Patch: the replacement of `old`, or of characters `start`..`end`.",
     max_length=T.MAX_SOURCE)]
 Start = Annotated[int | None, Field(
-    description="Patch: the first character replaced, a 0-based offset (a diagnostic's "
-                "`span.start`, a fix's span).", ge=0)]
+    description="Patch: 0-based offset of the first character replaced (a span's start).",
+    ge=0)]
 End = Annotated[int | None, Field(
-    description="Patch: the offset after the last character replaced (`span.end`).", ge=0)]
+    description="Patch: offset after the last character replaced (a span's end).", ge=0)]
 Code = Annotated[str, Field(
-    description="A diagnostic code, e.g. E0103 or W0402 (any case).", min_length=1,
-    max_length=16)]
+    description="A diagnostic code, e.g. E0103 or W0402.", min_length=1, max_length=16)]
 TopicName = Annotated[str | None, Field(
-    description="A shape, constraint, statement or standard-library template, in any case "
-                "or style (Circle, SpurGear, spur-gear, assert); none: the list of topics.",
-    max_length=200)]
+    description="A shape, constraint, statement or stdlib template, any case (Circle, "
+                "SpurGear, assert); none: the topics.", max_length=200)]
 
 Request = Annotated[str | None, Field(
     description="The part to design, in words (e.g. \"a 40 mm washer with a 10 mm hole\"); "
@@ -175,7 +152,7 @@ for the vocabulary, standard library and examples; call `docs` with a name (Circ
 spur_gear, assert, ...) for its units, members and an example, or read aidl://docs/language \
 for the full reference. Write a program, call `check` until it reports \
 ok (each diagnostic has a code, a located span, a hint and often a fix; `explain` a code for \
-more), then `render` to see it, `describe` to read the final part in words (outline, openings \
+more), then `render` to write the file and read its figures (picture=true to see it), `describe` to read the final part in words (outline, openings \
 with centres and sizes, texts, symmetries) and `values` to read exact positions and sizes. Paths are \
 relative to the server's allowed folder; nothing outside it can be read or written."""
 
@@ -219,8 +196,9 @@ def answer(tool: str, doc: dict, pngs: list[bytes] = (), detail: bool = False
             doc["error"] = {"code": first["code"],
                             "message": doc.get("summary") or first["message"]}
     pictures = [Image(data=png, format="png").to_image_content() for png in pngs]
-    return CallToolResult(content=pictures + [TextContent(type="text", text=C.line(tool, doc))],
-                          structured_content=doc)
+    said = C.line(tool, doc)           # before the repeats go: the line says the job's text
+    return CallToolResult(content=pictures + [TextContent(type="text", text=said)],
+                          structured_content=C.no_repeats(doc, detail))
 
 
 def refusal(code: str, message: str, argument: str | None = None) -> CallToolResult:
@@ -255,19 +233,189 @@ PROGRAM_CHOICE = [{"required": ["source"], "properties": {"source": {"type": "st
                   {"required": ["path"], "properties": {"path": {"type": "string"}}}]
 
 
+def slim(schema):
+    """A JSON Schema as ``tools/list`` sends it, without what says nothing to a client: no
+    ``title`` (the property's name again), no ``default: null``, an ``anyOf`` of one typed
+    schema and null as that schema with ``null`` among its types (``{"type": ["string",
+    "null"], "maxLength": ...}``), an ``anyOf`` of bare types as one ``type`` list.  It
+    accepts the same values."""
+    if isinstance(schema, list):
+        return [slim(x) for x in schema]
+    if not isinstance(schema, dict):
+        return schema
+    out = {}
+    for k, v in schema.items():
+        if k == "title" and isinstance(v, str) or k == "default" and v is None:
+            continue
+        out[k] = v if k in ("default", "const", "enum", "required") else slim(v)
+    any_of = out.get("anyOf")
+    if not isinstance(any_of, list):
+        return out
+    null = {"type": "null"} in any_of
+    kept = [x for x in any_of if x != {"type": "null"}]
+    if len(kept) == 1 and "const" in kept[0] and set(kept[0]) <= {"const", "type"}:
+        out.pop("anyOf")
+        out["enum"] = [kept[0]["const"]] + ([None] if null else [])
+        return out
+    merged = _merge_types(kept)
+    if merged is None:
+        return out
+    out.pop("anyOf")
+    out = {**merged, **out}
+    if null:
+        t = out["type"]
+        out["type"] = [*(t if isinstance(t, list) else [t]), "null"]
+        if "enum" in out:
+            out["enum"] = [*out["enum"], None]
+    if isinstance(out["type"], list) and len(out["type"]) == 1:
+        out["type"] = out["type"][0]
+    return out
+
+
+# the keywords that apply to one JSON type only: a schema of several types may hold them
+_ONLY = {"string": {"maxLength", "minLength", "pattern", "enum"},
+         "number": {"minimum", "maximum", "exclusiveMinimum", "exclusiveMaximum"},
+         "object": {"additionalProperties", "properties"}, "boolean": set()}
+
+
+def _merge_types(branches: list) -> dict | None:
+    """One schema ``{"type": [...], ...}`` accepting what ``anyOf`` of ``branches`` accepts,
+    when each branch is one type with only that type's keywords (a string's ``maxLength``
+    binds no number) and no two branches share a type; ``integer`` goes into a bare
+    ``number``; None when they cannot be merged."""
+    types = [b.get("type") for b in branches]
+    if not branches or not all(isinstance(t, str) for t in types):
+        return None
+    if "integer" in types and "number" in types and branches[types.index("number")] == \
+            {"type": "number"} and branches[types.index("integer")] == {"type": "integer"}:
+        branches = [b for b in branches if b.get("type") != "integer"]
+        types.remove("integer")
+    if len(set(types)) < len(types):
+        return None
+    merged: dict = {}
+    for b, t in zip(branches, types):
+        extra = set(b) - {"type"}
+        if len(branches) > 1 and not extra <= _ONLY.get(t, set()):
+            return None
+        merged.update({k: b[k] for k in extra})
+    if "enum" in merged and len(branches) > 1:
+        return None
+    merged["type"] = types[0] if len(types) == 1 else types
+    return merged
+
+
+def _outline(prop: dict, defs: dict) -> str:
+    """The fields of an object (through ``$ref``, arrays and ``anyOf``) in one line:
+    ``{code, severity, message, span, ...}``, ``[{name, kind, bbox, ...}]``; "" for a value
+    with no fields."""
+    if "$ref" in prop:
+        prop = defs.get(prop["$ref"].rsplit("/", 1)[-1], {})
+    for alt in prop.get("anyOf", []):
+        said = _outline(alt, defs)
+        if said:
+            return said
+    if prop.get("type") == "array" and isinstance(prop.get("items"), dict):
+        said = _outline(prop["items"], defs)
+        return f"[{said}]" if said else ""
+    if prop.get("type") == "object" and prop.get("properties"):
+        return "{" + ", ".join(prop["properties"]) + "}"
+    return ""
+
+
+def _kind(prop: dict, defs: dict) -> dict:
+    """The JSON type of a property (``{"type": ...}``, through ``$ref`` and ``anyOf``), {}
+    when it may be anything."""
+    if "$ref" in prop:
+        return _kind(defs.get(prop["$ref"].rsplit("/", 1)[-1], {}), defs)
+    if "anyOf" in prop:
+        kinds = [_kind(a, defs).get("type") for a in prop["anyOf"]]
+        if None in kinds:
+            return {}
+        flat = sorted({k for x in kinds for k in ([x] if isinstance(x, str) else x)})
+        return {"type": flat[0] if len(flat) == 1 else flat}
+    if "const" in prop or "enum" in prop:
+        return {k: prop[k] for k in ("const", "enum") if k in prop}
+    return {"type": prop["type"]} if "type" in prop else {}
+
+
+def outline_schema(full: dict, resource: str | None = None) -> dict:
+    """The output schema ``tools/list`` gives for the full one ``full`` (a pydantic JSON
+    Schema, ``$defs`` inlined by reference): every top-level property with its JSON type and
+    its description, an object's or a list's fields named in one line (``[{name, kind, bbox,
+    area, holes, loops}]``), nothing deeper.  Everything the full schema accepts it accepts
+    (it lists the same properties and ``required``, with their types only); the server
+    still checks each result against the full schema, which ``resource`` (a URI) serves."""
+    defs = full.get("$defs", {})
+    props = {}
+    for name, p in full.get("properties", {}).items():
+        desc = p.get("description") or ""
+        fields = _outline(p, defs)
+        said = " ".join(x for x in (desc, fields) if x)
+        props[name] = {**_kind(p, defs), **({"description": said} if said else {})}
+    out = {"type": "object", "properties": props}
+    if full.get("required"):
+        out["required"] = full["required"]
+    if resource:
+        out["description"] = f"full schema: {resource}"
+    return out
+
+
 def _tool(fn: Callable, annotations: ToolAnnotations, structured: bool) -> Tool:
     """``fn`` as a tool (the SDK makes its input schema from its signature and, when
     ``structured``, its output schema from its return type; else it returns text) whose input
     schema allows only its own arguments (``additionalProperties: false``) and, for a tool
-    that compiles, exactly one of ``source`` and ``path`` (``oneOf``)."""
+    that compiles, exactly one of ``source`` and ``path`` (``oneOf``); both schemas made
+    short for ``tools/list`` (:func:`slim`, :func:`outline_schema`: the full output schema
+    is the resource ``aidl://schemas/NAME.json``, and each result is still checked against
+    it before it is sent)."""
     tool = Tool.from_function(fn, annotations=annotations, structured_output=structured)
+    tool.parameters = slim(tool.parameters)
     tool.parameters["additionalProperties"] = False
     if "source" in tool.parameters["properties"]:
         tool.parameters["oneOf"] = PROGRAM_CHOICE
-    if tool.name in ("check", "render", "values", "describe", "write_program",
-                     "import_drawing"):
+    if tool.name == "check":             # the limits, said once: in the first tool
         tool.description = (tool.description or "").rstrip() + "\n" + LIMITS
+    meta = tool.fn_metadata
+    if meta.output_schema is not None:
+        FULL_SCHEMAS[tool.name] = meta.output_schema
+        meta.output_schema = outline_schema(meta.output_schema, schema_uri(tool.name))
     return tool
+
+
+FULL_SCHEMAS: dict[str, dict] = {}     # tool -> its full output schema (a resource)
+
+
+def schema_uri(name: str) -> str:
+    """The resource that serves the full output schema of the tool ``name``."""
+    return f"aidl://schemas/{name}.json"
+
+
+def _share(tools: list[Tool]) -> None:
+    """Say what several tools share once, in the first of them (``tools/list`` is read in
+    one go): an argument taken alike (the same schema and description) is described in full
+    in the first tool only, in the others ``as in `FIRST```; an output field returned alike
+    is listed in the first tool's output schema only, the others name it in their schema's
+    description (``as `check`: ok, error, ...``; a schema without it still accepts it)."""
+    first: dict[str, str] = {}
+    for t in tools:
+        for name, prop in t.parameters.get("properties", {}).items():
+            key = json.dumps(["in", name, prop], sort_keys=True)
+            if key in first:
+                prop["description"] = f"as in `{first[key]}`"
+            else:
+                first.setdefault(key, t.name)
+    for t in tools:
+        out = t.fn_metadata.output_schema
+        if not out:
+            continue
+        shared: dict[str, list[str]] = {}
+        for name, prop in list(out["properties"].items()):
+            key = json.dumps(["out", name, prop], sort_keys=True)
+            if first.setdefault(key, t.name) != t.name:
+                shared.setdefault(first[key], []).append(name)
+                del out["properties"][name]
+        said = [f"as `{k}`: {', '.join(v)}" for k, v in shared.items()]
+        out["description"] = "; ".join(said + [out.get("description", "")]).strip("; ")
 
 
 class _Server(MCPServer):
@@ -279,6 +427,7 @@ class _Server(MCPServer):
     bare "Error rendering prompt" with a traceback on stderr)."""
 
     def __init__(self, *args, tools: list[Tool], **kwargs) -> None:
+        _share(tools)                     # every tool's, wherever it is defined
         super().__init__(*args, tools=tools, **kwargs)
         self.accepted = {t.name: list(t.parameters["properties"]) for t in tools}
 
@@ -368,18 +517,10 @@ def build_server(root: str, budget: float = 1.0,
     def check(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
               dof: Dof = False, budget: Budget = None,
               detail: Detail = False) -> Annotated[CallToolResult, CheckResult]:
-        """Parse, check and solve an AIDL program; write nothing.
-
-        Give `source` (program text) or `path` (a .aidl file, relative to the allowed folder);
-        a Drawing2D("x.dxf") reads a drawing beside the program (source: in the folder).
-        `overrides` sets params ({"width": "40 mm"}); `dof` adds degrees of freedom per
-        structure; `budget` multiplies the evaluation budget (at most 4).
-        Returns structured content (and one line of text): ok, diagnostics (code, severity,
-        message, span with 1-based line and column and 0-based start/end, labels, hint,
-        suggestions, fix), solve statistics, freedom (degrees of freedom left), parts (name,
-        kind, bbox [x0, y0, x1, y1] mm, area mm2, holes) and fit (the assembled product's
-        fit check: {checked, collisions: [{a, b, volume, depth, box}], floating: [{part,
-        nearest, gap}]}); with errors, error {code, message}. """
+        """Parse, check and solve an AIDL program; write nothing. Returns ok, located
+        diagnostics (code, span, hint, fix), parts (bbox mm), freedom and the assembled fit.
+        Every result: structured content and one line of text; a refused call: isError with
+        error {code, message, argument}."""
         return answer("check", work.call("check", source, path, overrides, dof, budget,
                                          budget=budget), detail=detail)
 
@@ -388,56 +529,34 @@ def build_server(root: str, budget: float = 1.0,
                       new: New = None, start: Start = None, end: End = None,
                       dof: Dof = False, detail: Detail = False
                       ) -> Annotated[CallToolResult, WriteResult]:
-        """Write a program file inside the allowed folder, then check it (as `check`):
-        the whole `text`, or a patch of the file as it is: `old` -> `new` (`old` found
-        exactly once), or the characters `start` to `end` (0-based, as a diagnostic's span
-        and fix give them) -> `new`. Then `check`, `render`, `values` and `describe` take it
-        by `path`. Returns check's result with written (the path) and lines."""
+        """Write a .aidl file (the whole `text`, or a patch: `old` -> `new`, or `start`..`end`
+        -> `new`), then check it as `check` does; the other tools then take it by `path`."""
         return answer("write_program", work.call("write_program", path, text, old, new, start,
                                                  end, dof), detail=detail)
 
     @tool(writes)
     def render(source: Source = None, path: ProgramPath = None, output: Output = None,
-               width: Width = 800, overrides: Overrides = None, style: Style = "preview",
-               budget: Budget = None, assembled: Assembled = False, layout: LayoutKind = None,
-               sheet: Sheet = None, gap: Gap = None, rotate: Rotate = None, kerf: Kerf = None,
-               thickness: Thickness = None, machine: Machine = None,
-               page: Page = None, detail: Detail = False
+               picture: Picture = False, width: Width = 800, overrides: Overrides = None,
+               style: Style = "preview", budget: Budget = None, assembled: Assembled = False,
+               layout: LayoutKind = None, sheet: Sheet = None, gap: Gap = None,
+               rotate: Rotate = None, kerf: Kerf = None, thickness: Thickness = None,
+               machine: Machine = None, page: Page = None, detail: Detail = False
                ) -> Annotated[CallToolResult, RenderResult]:
-        """Compile an AIDL program and return a PNG picture of it (`width` pixels wide) and a
-        summary (ok, diagnostics, parts, fit).  `output`: also write the drawing to this file
-        inside the allowed folder, the format by extension (.svg, .dxf for laser cutters,
-        .gcode for a GRBL laser, router or plotter per `machine`, .pdf a 1:1 printed template,
-        tiled over `page` paper, .png, .stl, .3mf, .step, .glb); a cutting output adds job
-        {cut_mm, travel_mm, seconds (at the `machine` profile's speeds, the laser's by
-        default), machine, text}.  `style`: preview (filled) or laser (hairlines).
-        `assembled`: the picture is the product in 3D, its parts placed (`Place`), collisions
-        boxed in red.  `layout`: "sheet" lays the parts out on cutting sheets (`sheet`
-        size, `gap`, `rotate`), a picture and a file per sheet, with layout {sheets, size,
-        files, use per sheet, placements [{part, sheet, rotation, bbox}]}; `kerf` offsets the
-        cuts, `thickness` sets the extrusion of 3D outputs.  When the program has errors
-        there is no picture, only the diagnostics and error.  Structured content, and one
-        line of text."""
+        """Compile, write `output` and return its figures: size, parts, fit, and for a
+        cutting file the job (path length per pass, passes, cut, travel, time at the
+        `machine`'s speeds). A picture only with `picture`."""
         doc, pngs = work.call("render", source, path, output, width, overrides, budget,
                               style, assembled, layout, sheet, gap, rotate, kerf,
-                              thickness, machine, page, budget=budget)
+                              thickness, machine, page, picture, budget=budget)
         return answer("render", doc, pngs, detail)
 
     @tool(reads)
     def values(source: Source = None, path: ProgramPath = None, names: Names = None,
                overrides: Overrides = None, budget: Budget = None,
                detail: Detail = False) -> Annotated[CallToolResult, ValuesResult]:
-        """The solved values of named entities, in the file's units: each structure's frame
-        origin and bounding box, each named geometry's points (center, start, end, corners)
-        and sizes (radius and diameter, width, height, a rounded rectangle's corner_radius),
-        every copy of a pattern too, from the original (corners[0], corners[1].c.center, each
-        at its real origin).  `names` filters by dotted prefix (e.g. ["plate.bore",
-        "plate.body.width"]); the root structure's name may be left out.
-        Returns structured content (and one line of text): ok, units, values [{name, kind,
-        value, unit, mm (when not the same as value)}]; more than 12 copies of one name
-        (cut_a[0].start, cut_a[1].start, ...) are one {name: "cut_a[*].start", kind: "group",
-        count, value} unless `detail` (which also adds text, one `name = value unit` line
-        each)."""
+        """Solved values of named entities in the file's units: points (center, start, end,
+        corners), sizes (radius, diameter, width, height), frame origins and boxes, every
+        copy of a pattern (corners[0] is the original)."""
         return answer("values", work.call("values", source, path, names, overrides, budget,
                                           budget=budget), detail=detail)
 
@@ -445,14 +564,8 @@ def build_server(root: str, budget: float = 1.0,
     def describe(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
                  budget: Budget = None,
                  detail: Detail = False) -> Annotated[CallToolResult, DescribeResult]:
-        """What the final part is, for checking it without a picture: for each part its
-        outline (kind, size, box), each opening with its kind (circle d=..., slot l long, w
-        wide, rectangle, star, arc slot, n-gon), centre and size, engravings (text, height and
-        place), copies (parts of the same shape, listed once under the first with their
-        places) and symmetries (mirror, n-fold rotation); mm. More than 12 alike openings or
-        cuts are said once with their count and the box of their places, unless `detail`.
-        Returns structured content (and one line of text): ok, diagnostics, text (one line
-        per feature) and describe (the same as data)."""
+        """The final part in words and data, to check it without a picture: outline,
+        openings (kind, centre, size), engravings, copies, symmetries; mm."""
         return answer("describe", work.call("describe", source, path, overrides, budget,
                                             budget=budget), detail=detail)
 
@@ -460,15 +573,9 @@ def build_server(root: str, budget: float = 1.0,
     def import_drawing(path: DrawingPath, infer: Infer = True, parts: Parts = False,
                        units: Units = None, output: ProgramOutput = None,
                        budget: Budget = None) -> Annotated[CallToolResult, ImportResult]:
-        """Turn a DXF or SVG drawing into an AIDL program to edit (`aidl import`).  With
-        `infer` (the default) the program is the design a person would write: the outline as
-        RoundedRectangle, Slot, RegularPolygon..., holes named by what they are
-        (corner_holes, bolt_circle, motor_holes, bore, slots, notches) with loops for
-        patterns, one param per repeated size, pitch and count, features placed from the
-        body's nearest edge or centre, every shape held where the drawing has it; exact to
-        1e-6 mm.  Returns structured content (and one line of text): ok, program (the text),
-        notes (what was skipped), output (the file written: then `write_program` patches it
-        and the other tools take it by `path`); or ok false, diagnostics and error."""
+        """Turn a DXF or SVG drawing into an AIDL program to edit: with `infer`, the design
+        (RoundedRectangle, Slot, ...; hole patterns as loops; one param per repeated size,
+        pitch and count), exact to 1e-6 mm."""
         doc = work.call("import_drawing", path, infer, parts, units, output, budget,
                         budget=budget)
         if not doc.get("ok") and doc.get("diagnostics"):
@@ -478,15 +585,13 @@ def build_server(root: str, budget: float = 1.0,
 
     @tool(reads, structured=False)
     def explain(code: Code) -> str:
-        """What a diagnostic code (E0103, W0402, ...) means, with an example."""
+        """What a diagnostic code means, with an example."""
         return T.explain(code)
 
     @tool(reads, structured=False)
     def docs(name: TopicName = None) -> str:
-        """The reference of a shape, constraint, statement or standard-library template (as
-        `aidl docs NAME`): signature, the unit of every parameter, members and an example
-        program that compiles.  Any case or style finds a name (SpurGear, spur-gear); no
-        name: the list of topics."""
+        """The reference of a name: signature, units of the parameters, members, an example
+        that compiles."""
         return T.docs(name)
 
     server = _Server("aidl", instructions=INSTRUCTIONS, version=ver, tools=tools)
@@ -533,6 +638,11 @@ def _resources(server: MCPServer, prompt: Callable[[], str] | None) -> None:
             if request and request.strip():
                 text += f"\nDesign this part: {request.strip()}\n"
             return text
+    for name, schema in FULL_SCHEMAS.items():
+        server.resource(schema_uri(name), name=f"{name} output schema",
+                        mime_type="application/schema+json",
+                        description=f"the full JSON Schema of `{name}`'s structured content")(
+            (lambda doc: lambda: json.dumps(doc, indent=1))(schema))
     from ..sources import STDLIB
     for f in sorted(Path(STDLIB).glob("**/*.aidl")):
         rel = f.relative_to(STDLIB).as_posix()

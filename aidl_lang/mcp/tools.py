@@ -352,9 +352,12 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
            budget: float | None = None, style: str = "preview", assembled: bool = False,
            layout: str | None = None, sheet: str | None = None, gap=None, rotate=None,
            kerf=None, thickness=None, machine=None,
-           page: str | None = None) -> tuple[dict, list[bytes]]:
-    """Compile and draw: ``(summary, pictures)``, PNGs ``width`` pixels wide: one of the
-    parts, or one per sheet with a layout; none when the program has errors.  ``output``:
+           page: str | None = None, picture: bool = False) -> tuple[dict, list[bytes]]:
+    """Compile, write ``output`` and draw: ``(summary, pictures)``.  The summary gives the
+    figures of what was made (``size`` [width, height] mm of the drawing,
+    ``parts``, ``fit``; ``job`` for a cutting file; ``layout`` on sheets); with ``picture``,
+    the PNGs ``width`` pixels wide: one of the parts, or one per sheet with a layout (none
+    without ``picture``, or when the program has errors).  ``output``:
     also write the drawing there (``.svg``, ``.dxf``, ``.png``, ...; inside the allowed
     folder, made if missing, never through a link, never over the program).
     ``assembled``: the picture (and a 3D or PNG ``output``) is the assembled product, every
@@ -426,7 +429,7 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
     try:
         if layout:
             sheets = r.layout(sheet_mm, 3.0 if gap_mm is None else gap_mm, turns, kerf_mm)
-            pngs = sheets.encode("png", **drawn)
+            pngs = sheets.encode("png", **drawn) if picture else []
             if target is not None:
                 files = _sheet_names(target, sheets.sheets)
                 for f in files:
@@ -444,7 +447,7 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
             if target is not None and target.suffix.lower() not in _SOLID_FORMATS:
                 doc["job"] = _job(sheets._cut, prof, thick_mm)
         else:
-            pngs = [r.encode("png", kerf_mm, assembled=assembled, **drawn)]
+            pngs = [r.encode("png", kerf_mm, assembled=assembled, **drawn)] if picture else []
             if target is not None:
                 out = check_output_path(target, prog)
                 data = r.encode(out.suffix, kerf_mm, assembled=assembled, machine=prof,
@@ -457,9 +460,14 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
     except (MissingDependency, OutputError, WriteError, NotCompiled, OSError) as e:
         raise Refused(str(e), "output_failed", "output") from None
     doc["parts"] = [p.to_json() for p in r.parts]
+    boxes = [p["bbox"] for p in doc["parts"]]
+    if boxes:
+        doc["size"] = [round(max(b[2] for b in boxes) - min(b[0] for b in boxes), 6),
+                       round(max(b[3] for b in boxes) - min(b[1] for b in boxes), 6)]
     doc["fit"] = r.fit
-    doc["image"] = {"format": "png", "width": width,
-                    "view": "assembled" if assembled else "flat"}
+    if pngs:
+        doc["image"] = {"format": "png", "width": width,
+                        "view": "assembled" if assembled else "flat"}
     return doc, pngs
 
 
@@ -469,19 +477,28 @@ _SOLID_FORMATS = (".stl", ".3mf", ".step", ".stp", ".glb", ".png")
 def _job(outputs: list, machine, thickness: float | None) -> dict:
     """The job figures of cutting ``outputs`` (one per sheet; the kerf applied) on
     ``machine`` (None: the built-in laser), as the G-code writer plans them
-    (:func:`aidl_lang.output.writers.gcode.job`): ``{"cut_mm", "travel_mm", "seconds",
-    "machine", "text"}``, summed over the sheets."""
-    from ..output.writers.gcode import estimate_text, job
-    cut = travel = seconds = dark = 0.0
+    (:func:`aidl_lang.output.writers.gcode.job`): ``{"path_mm" (one pass of every cut),
+    "passes" (how many times the path is run, when the same for every cut: else the text
+    says each part's), "cut_mm" (every
+    pass), "travel_mm", "seconds", "machine", "text"}``, summed over the sheets."""
+    from ..output.writers.gcode import estimate_text, job, passes
+    cut = travel = seconds = dark = path = 0.0
+    runs: dict = {}
     kind = "laser" if machine is None else machine.kind
     for out in outputs:
         j = job(out, machine, thickness)
         cut, travel, seconds = cut + j.cut, travel + j.travel, seconds + j.seconds
-        dark += j.dark
-    return {"cut_mm": round(cut, 3), "travel_mm": round(travel, 3),
-            "seconds": round(seconds, 1), "machine": kind,
-            "text": estimate_text(cut, travel, seconds, dark).replace(
-                "the profile's", f"the {kind} profile's")}
+        dark, path = dark + j.dark, path + j.path
+        for n, (p, c) in j.runs.items():
+            run = runs.setdefault(n, [0.0, 0.0])
+            run[0], run[1] = run[0] + p, run[1] + c
+    doc = {"path_mm": round(path, 3), "passes": passes(runs), "cut_mm": round(cut, 3),
+           "travel_mm": round(travel, 3), "seconds": round(seconds, 1), "machine": kind,
+           "text": estimate_text(cut, travel, seconds, dark, runs).replace(
+               "the profile's", f"the {kind} profile's")}
+    if doc["passes"] is None:
+        doc.pop("passes")
+    return doc
 
 
 def docs(name: str | None = None) -> str:

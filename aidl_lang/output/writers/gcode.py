@@ -91,7 +91,9 @@ class Job:
     feeds and travel speed, acceleration ignored), ``warnings`` (a profile's ``kerf`` or
     ``thickness`` unlike the program's), ``notes`` (what the program does that the drawing
     does not say: a shared cut cut once, a lead-in shortened, tabs fitted); ``dark`` (mm a
-    laser ran at an operation's power 0: not cut, not in ``cut``)."""
+    laser ran at an operation's power 0: not cut, not in ``cut``); ``path`` (mm cut in the
+    first pass of every cut: ``cut`` is ``path`` times the passes when every cut has as
+    many)."""
     text: str
     cut: float
     travel: float
@@ -99,22 +101,49 @@ class Job:
     warnings: list = field(default_factory=list)
     notes: list = field(default_factory=list)
     dark: float = 0.0
+    path: float = 0.0
+    runs: dict = field(default_factory=dict)
 
     def summary(self, name: str) -> str:
         """``box.gcode: cut 2444.8 mm, travel 606.5 mm, about 11 min 54 s at the profile's
         speeds``."""
-        return f"{name}: {estimate_text(self.cut, self.travel, self.seconds, self.dark)}"
+        return f"{name}: {estimate_text(self.cut, self.travel, self.seconds, self.dark, self.runs)}"
 
 
-def estimate_text(cut: float, travel: float, seconds: float, dark: float = 0.0) -> str:
+def passes(runs: dict) -> int | None:
+    """How many times a job runs its whole path (``runs``: :attr:`Job.runs`, passes -> [mm of
+    path, mm cut]), when every cut is run as many times; else None (cuts of different
+    operations run a different number of times, or nothing is cut)."""
+    used = [n for n, (path, _) in runs.items() if path > 1e-9]
+    return used[0] if len(used) == 1 else None
+
+
+def _plural(n: int) -> str:
+    return f"{n} pass{'es' if n != 1 else ''}"
+
+
+def estimate_text(cut: float, travel: float, seconds: float, dark: float = 0.0,
+                  runs: dict | None = None) -> str:
     """The job's numbers in words (``cut``, ``travel``, ``dark``: mm; ``seconds``); ``dark``:
-    the mm run with the beam off at an operation's power 0, said apart from the cut."""
+    the mm run with the beam off at an operation's power 0, said apart from the cut;
+    ``runs`` (passes -> [mm of path, mm cut], :attr:`Job.runs`): the path said with its
+    passes when some of it is run more than once (``cut 654.8 mm path x 2 passes = 1309.6
+    mm``; ``cut 4800.1 mm (2355.3 mm path x 2 passes + 89.5 mm path x 1 pass)``: the
+    built-in laser cuts twice, and the cut's length alone misled, issue 86)."""
     s = int(round(seconds))
     t = f"{s // 3600} h {s % 3600 // 60} min" if s >= 3600 else \
         f"{s // 60} min {s % 60} s" if s >= 60 else f"{s} s"
     off = f" ({dark:.1f} mm more with the beam off: power 0)" if dark > 0 else ""
-    return (f"cut {cut:.1f} mm{off}, travel {travel:.1f} mm, about {t} at the profile's "
-            "speeds")
+    used = sorted(((n, path) for n, (path, _) in (runs or {}).items() if path > 1e-9),
+                  reverse=True)
+    if len(used) == 1 and used[0][0] > 1:
+        said = f"cut {used[0][1]:.1f} mm path x {_plural(used[0][0])} = {cut:.1f} mm"
+    elif len(used) > 1:
+        said = f"cut {cut:.1f} mm (" + " + ".join(f"{path:.1f} mm path x {_plural(n)}"
+                                                 for n, path in used) + ")"
+    else:
+        said = f"cut {cut:.1f} mm"
+    return f"{said}{off}, travel {travel:.1f} mm, about {t} at the profile's speeds"
 
 
 def read_summary(data: bytes) -> tuple[str, list[str], list[str]]:
@@ -553,6 +582,10 @@ class _Writer:
         self.x = self.y = None
         self.z = None
         self.cut = self.travel = self.seconds = 0.0
+        self.path = 0.0                # mm cut in the first pass of each cut
+        self.first = True              # the pass being written is the first of its cut
+        self.runs: dict = {}           # passes -> [mm of path cut that many times, mm cut]
+        self.passes = 1                # how many passes the cut being written has
         self.feed = None
         self.power = None
         self.notes: list[str] = []
@@ -628,6 +661,11 @@ class _Writer:
                      f"I{num(i)} J{num(j)}")
         if cutting:
             self.cut += L
+            run = self.runs.setdefault(self.passes, [0.0, 0.0])
+            run[1] += L
+            if self.first:
+                self.path += L
+                run[0] += L
         self.seconds += L / self.feed * 60.0
         self.x, self.y = ex, ey
         return L
@@ -665,7 +703,7 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     w.warnings += _dark_warnings(w)
     head = _header(output, m, w)
     return Job("\n".join(head + body) + "\n", w.cut, w.travel, w.seconds, warnings, w.notes,
-               sum(w.dark.values()))
+               sum(w.dark.values()), w.path, w.runs)
 
 
 W0510_TAG = " (W0510)"      # ends a warning `aidl render` gives as a located W0510 instead
@@ -738,7 +776,7 @@ def _header(output: Output, m, w: _Writer) -> list[str]:
     src = m.source or f"built-in {m.kind} profile"
     h = [f"; {output.title or 'aidl'}: G-code (GRBL) written by aidl",
          f"; machine: {m.kind} ({src})",
-         f"; {estimate_text(w.cut, w.travel, w.seconds, sum(w.dark.values()))}",
+         f"; {estimate_text(w.cut, w.travel, w.seconds, sum(w.dark.values()), w.runs)}",
          *[f"; warning: {x}" for x in w.warnings],
          *[f"; note: {x}" for x in w.notes],
          "; units mm, absolute; arcs G2/G3 with I/J relative to the start",
@@ -845,7 +883,9 @@ def _body(w: _Writer, cuts, m, thick: dict, output: Output) -> list[str]:
             lit = power > 0          # at power 0 the moves cut nothing (_dark_warnings)
             dark = 0.0
             back = [] if cut.closed else [(reverse(s), tab) for s, tab in reversed(pieces)]
+            w.passes = max(1, op.passes)
             for k in range(max(1, op.passes)):
+                w.first = k == 0
                 if k == 0 or lead:
                     w.rapid(*start, off=True)
                 if lead:
@@ -858,7 +898,9 @@ def _body(w: _Writer, cuts, m, thick: dict, output: Output) -> list[str]:
             if not lit:
                 w.dark[cut.operation] = w.dark.get(cut.operation, 0.0) + dark
         elif m.kind == "plotter":
+            w.passes = max(1, op.passes)
             for k in range(max(1, op.passes)):
+                w.first = k == 0
                 if k == 0 or not cut.closed:
                     w.rapid(z=m.safe_height)
                     w.rapid(*start)
@@ -887,7 +929,9 @@ def _body(w: _Writer, cuts, m, thick: dict, output: Output) -> list[str]:
                         "thinner material (--thickness); nothing was written")
                 depths = [t * (k + 1) / n for k in range(n)]
             t_part = thick.get(cut.part) or DEFAULT_THICKNESS
+            w.passes = len(depths)
             for k, dz in enumerate(depths):
+                w.first = k == 0
                 if k == 0 or not cut.closed or lead:
                     w.rapid(z=m.safe_height)
                     w.rapid(*start)
