@@ -1,5 +1,5 @@
 """``aidl import --infer``: engraved strokes that are a line of text in the built-in stroke
-font (issue 71; docs/import.md, "Inferring the design"; used by :func:`~.infer._engraving`).
+font (issue 71; docs/import.md, "Inferring the design"; used by :func:`~.engraving._engraving`).
 
 In: line segments ``((x0, y0), (x1, y1))`` in mm (the engraving's polylines and polygons of
 lines, as AIDL writes a ``Text``).  Out: ``(text, position, size, rotation)`` for ``Text(text,
