@@ -111,7 +111,9 @@ def test_plate_comes_back_as_its_design(plate):
            "corner_radius=corner_radius)" in text
     # two slots, a loop, placed from the right edge they sit by; counts are params
     assert text.count("Slot(") == 1 and "for i in range(slots_n) {" in text
-    assert "Slot(center=(width / 2 - 28 + i * slots_pitch, 0)" in text
+    # the row kept by its member nearest the right edge (16 mm in): a new pitch or count
+    # keeps that end where it is
+    assert "Slot(center=(width / 2 - 16 + (i - (slots_n - 1)) * slots_pitch, 0)" in text
     assert "for sx in [-1, 1] {" in text and "hole corner_holes" in text
     assert "for i in range(bolt_circle_n) {" in text and "hole bolt_circle" in text
     assert "param bolt_circle_n = 6" in text and "i * 360 deg / bolt_circle_n" in text

@@ -39,6 +39,21 @@ def _moved(v: float, size: float, new: float) -> float:
     return new / 2 + side * new / 2 + d
 
 
+ROW = (3, 9.0)          # a row of 3 holes 9 mm apart along x, its x the first hole's
+
+
+def _moved_row(x: float, size: float, new: float) -> float:
+    """A row's first x at the new size: kept by its end member nearer an edge than its
+    middle is to the centre line, else by its middle (ties to the centre)."""
+    n, pitch = ROW
+    lo, hi = x, x + (n - 1) * pitch
+    gaps = {0: abs((lo + hi) / 2 - size / 2), -1: lo, 1: size - hi}
+    side = min((0, -1, 1), key=lambda k: (round(gaps[k], 9), k != 0))
+    if side == 0:
+        return _moved((lo + hi) / 2, size, new) - (hi - lo) / 2
+    return lo if side < 0 else new - gaps[1] - (hi - lo)
+
+
 def draw(path, W: float, H: float, centred: bool, features: list) -> None:
     """A W x H plate (its lower-left corner at the origin, or its centre there) with
     ``features`` ``(kind, x, y)`` placed from its lower-left corner."""
@@ -51,6 +66,9 @@ def draw(path, W: float, H: float, centred: bool, features: list) -> None:
         cx, cy = ox + x, oy + y
         if kind == "circle":
             m.add_circle((cx, cy), 2.5)
+        elif kind == "row":
+            for k in range(ROW[0]):
+                m.add_circle((cx + k * ROW[1], cy), 1.5)
         elif kind == "dhole":           # a circle of radius 4 with a flat 3 mm right of centre
             a = math.degrees(math.acos(3 / 4))
             s = 4 * math.sin(math.radians(a))
@@ -65,16 +83,17 @@ def draw(path, W: float, H: float, centred: bool, features: list) -> None:
     doc.saveas(path)
 
 
-FEATURE = st.tuples(st.sampled_from(["circle", "dhole", "keyhole"]),
+FEATURE = st.tuples(st.sampled_from(["circle", "dhole", "keyhole", "row"]),
                     st.floats(0.1, 0.9), st.floats(0.15, 0.85))
 
 
 def _spread(features: list, W: float, H: float) -> list:
     """Features at those fractions of a third of the plate's width each (the k-th feature
     in the k-th third), kept 12 mm from the edges: none touches another or the edge."""
-    third = W / 3
+    third = W / 4
     return [(kind, round(k * third + 12 + fx * (third - 24), 1) if third > 26 else
-             round(12 + fx * (W - 24), 1), round(12 + fy * (H - 24), 1))
+             round(12 + fx * (W - 24 - (18 if kind == "row" else 0)), 1),
+             round(12 + fy * (H - 24), 1))
             for k, (kind, fx, fy) in enumerate(features)]
 
 
@@ -86,8 +105,8 @@ def _spread(features: list, W: float, H: float) -> list:
 def test_law_a_new_plate_size_keeps_every_feature_where_the_drawing_ties_it(
         tmp_path, W, H, dW, dH, centred, features):
     placed = _spread(features, W, H)     # one of each kind (alike ones are a pattern)
-    if any(math.hypot(a[1] - b[1], a[2] - b[2]) < 12 for a in placed for b in placed
-           if a is not b):
+    if any(math.hypot(a[1] - b[1], a[2] - b[2]) < 12 + 18 * ("row" in (a[0], b[0]))
+           for a in placed for b in placed if a is not b):
         reject()
     src = tmp_path / "p.dxf"
     draw(src, W, H, centred, placed)
@@ -101,7 +120,8 @@ def test_law_a_new_plate_size_keeps_every_feature_where_the_drawing_ties_it(
     want = tmp_path / "want.dxf"
     # the truth: each feature as far from its reference as drawn, the plate grown from its
     # origin (a corner at (0, 0), or its centre)
-    draw(want, W2, H2, centred, [(k, _moved(x, W, W2), _moved(y, H, H2)) for k, x, y in placed])
+    draw(want, W2, H2, centred, [(k, (_moved_row if k == "row" else _moved)(x, W, W2),
+                                  _moved(y, H, H2)) for k, x, y in placed])
     dxf_compare.TOL = 1e-6
     left, extra = dxf_compare.unmatched(dxf_compare.curves(want), dxf_compare.curves(got))
     assert not left and not extra, (text, left[:3], extra[:3])
@@ -122,3 +142,39 @@ def test_a_plate_drawn_from_its_corner_grows_from_it(tmp_path):
     (part,) = res.parts
     assert part.bbox == pytest.approx((0, 0, 150, 60), abs=1e-9)
 
+
+
+def test_a_row_by_the_right_edge_keeps_its_right_hole_when_its_pitch_changes(tmp_path):
+    """Three holes 9 mm apart, the last 10 mm from the right edge of a 120 mm plate: the row
+    is written from that hole (``width - 10 + (i - (holes_n - 1)) * holes_pitch``), so a
+    pitch of 12 keeps it 10 mm from the edge and moves the others (before: from the first
+    hole, the last one ended 16 mm from the edge)."""
+    src = tmp_path / "r.dxf"
+    draw(src, 120, 60, False, [("row", 92, 30)])
+    text, _ = import_drawing(src.read_bytes(), "r.dxf", infer=True)
+    assert "width - 10 + (i - (holes_n - 1)) * holes_pitch" in text, text
+    res = aidl_lang.compile(text, path=tmp_path / "r.aidl", overrides={"holes_pitch": "12 mm",
+                                                                       "width": "140 mm"})
+    assert res.ok
+    got = tmp_path / "got.dxf"
+    got.write_text(res.to_dxf())
+    circles = sorted(c[1][0][0] for c in dxf_compare.curves(got) if c[0] == "C")
+    assert circles == pytest.approx([106, 118, 130], abs=1e-9)
+
+
+def test_labels_on_their_own_layer_move_with_the_hole_they_name(tmp_path):
+    """A plate on OUTLINE, a hole 15 mm from its right edge and its label "PWR" 8 mm above it
+    on LABELS (a drawing of its own beside the part): at 150 mm wide the label is still
+    8 mm above the hole (it stayed at x = 105 before)."""
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    m = doc.modelspace()
+    m.add_lwpolyline([(0, 0), (120, 0), (120, 60), (0, 60)], close=True,
+                     dxfattribs={"layer": "OUTLINE"})
+    m.add_circle((105, 20), 3, dxfattribs={"layer": "OUTLINE"})
+    m.add_text("PWR", height=3, dxfattribs={"layer": "LABELS", "insert": (105, 28)})
+    doc.saveas(tmp_path / "l.dxf")
+    text, _ = import_drawing((tmp_path / "l.dxf").read_bytes(), "l.dxf", infer=True)
+    assert 'Text("PWR", position=(width - 15, height / 2 - 2)' in text, text
+    res = aidl_lang.compile(text, path=tmp_path / "l.aidl", overrides={"width": "150 mm"})
+    assert res.ok

@@ -43,12 +43,13 @@ from collections import Counter
 
 from ...geometry.curves import Loop
 from .attachments import _attachments, _circle_attachments, _notches
-from .params import _Params, _center, _ctor, _deg, _hole_name, _plus, _r
+from .params import _Params, _ctor, _deg, _hole_name, _r
 from .patterns import (_Cells, _copies, _grid, _line, _polar,
                        _polar_chain, _polar_polys, _runs, _stagger, _steps,
                        _unknown)
 from .shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                      recognise)
+from .anchors import _Anchored
 from .engraving import _engraving
 from .holds import _emit_holds, _holds
 from .layers import _hole_layers
@@ -56,15 +57,6 @@ from .mirror import mirrored_pair, pair_items, write_pair
 from ..write.program import (_Names, _Writer, _containers, _cut_notes, _ident, _layer_items,
                              _length, _num, _place, _pt, _whole_ellipse)
 from ..model import Drawing, Note, _segs_box
-
-
-def _add(text: str, d: float) -> str:
-    """``text + d`` as text (``d`` in mm; the number alone when ``text`` is 0)."""
-    if abs(d) <= ROUND_TOL:
-        return text
-    if text == "0":
-        return _r(d)
-    return f"{text} + {_r(d)}" if d > 0 else f"{text} - {_r(-d)}"
 
 
 def _chamfered(sh: Shape | None) -> tuple | None:
@@ -98,6 +90,25 @@ def _chamfered(sh: Shape | None) -> tuple | None:
     return rect, legs[0]
 
 
+def _start_angle(a0: float, n: int, cnt: str) -> str:
+    """The angle of hole ``i`` of a bolt circle of ``n`` (the param ``cnt``) whose holes are
+    at ``a0 + k 360/n`` (radians), written by the rule that keeps its meaning when the count
+    changes: a hole on the x axis (``i * 360 deg / n``), else one at the top (``90 deg +
+    ...``), else two straddling the x axis (``(i + 0.5) * 360 deg / n``), else from ``a0``."""
+    step = 2 * math.pi / n
+
+    def on(angle: float) -> bool:
+        k = (angle - a0) / step
+        return abs(k - round(k)) * step * 1e3 <= 1e-6      # 1e-9 rad at 1 m
+    if on(0.0):
+        return f"i * 360 deg / {cnt}"
+    if on(math.pi / 2):
+        return f"90 deg + i * 360 deg / {cnt}"
+    if on(step / 2):
+        return f"(i + 0.5) * 360 deg / {cnt}"
+    return f"{_deg(a0)} + i * 360 deg / {cnt}"
+
+
 SINGLE_PARAMS = 12     # a part with more holes of sizes no other has: their sizes as numbers
 
 
@@ -109,7 +120,7 @@ class _Stats:
         self.patterns: Counter = Counter()
 
 
-class _Part:
+class _Part(_Anchored):
     """One part's statements, written into ``w`` at ``depth``."""
 
     def __init__(self, w: _Writer, params: _Params, stats: _Stats, prefix: str) -> None:
@@ -122,114 +133,6 @@ class _Part:
         #                                     (top) edge, 0 its centre (:meth:`grows_from`)
         self.named = _Cells([])             # centres written once, shared (their names:
         self.named_as: list[str] = []       # named_as[i] is named.points[i]'s)
-
-    def plus(self, v: float, term: str, axis: int = 0) -> str:
-        if self.shift is not None and self.shift[axis]:
-            return _plus(v, f"{self.shift[axis]} + {term}")
-        return _plus(v, term)
-
-    def center(self, c) -> str:
-        if self.shift is None:
-            return _center(c)
-        return "(" + ", ".join(_plus(c[i], self.shift[i]) if self.shift[i] else _r(c[i])
-                               for i in (0, 1)) + ")"
-
-    def lit(self, v: float, axis: int) -> str:
-        """Coordinate ``v`` as a number (after the part's shift, when it has one)."""
-        return self.center((v, v))[1:-1].split(", ")[axis]
-
-    def grows_from(self, sh: Shape) -> tuple:
-        """What stays of the body ``sh`` when its width (height) param changes, per axis
-        (:attr:`frame`): the edge or the centre that the drawing's origin is on (a plate
-        drawn from its corner at (0, 0) grows from that corner, one drawn about the origin
-        about its centre); the centre when the origin is on none of them."""
-        out = []
-        for axis, key in ((0, "width"), (1, "height")):
-            c, half = sh.center[axis], sh.args[key] / 2
-            out.append(next((g for g in (-1, 1) if abs(c + g * half) <= ROUND_TOL), 0))
-        return tuple(out)
-
-    def edge(self, axis: int, side: int) -> str:
-        """The body's centre (``side`` 0) or its left/right (bottom/top) edge (-1/1) along
-        ``axis`` as the text that follows its size param from what stays (:attr:`frame`):
-        ``width / 2`` for the centre of a plate that grows from its left edge at 0."""
-        sh, sizes = self.anchor
-        key = "width" if axis == 0 else "height"
-        c, half = sh.center[axis], sh.args[key] / 2
-        g = self.frame[axis]
-        k = side - g                    # halves of the size from what stays
-        if k == 0:
-            return self.lit(c + side * half, axis)
-        size = sizes[key]
-        term = {1: f"{size} / 2", -1: f"-{size} / 2", 2: size, -2: f"-{size}"}[k]
-        return self.plus(c + g * half, term, axis)
-
-    def at(self, v: float, axis: int, ref: float | None = None) -> str:
-        """Coordinate ``v`` (``axis`` 0: x, 1: y) written from the body's nearest reference
-        to ``ref`` (default ``v``): its centre, or its left/right (bottom/top) edge by the
-        width (height) param, so that a new width moves what sits by an edge with the edge
-        and keeps what sits by the centre on the centre (ties go to the centre); a number
-        where that reference is what stays (:meth:`edge`)."""
-        if self.anchor is None:
-            return self.lit(v, axis)
-        sh, sizes = self.anchor
-        key = "width" if axis == 0 else "height"
-        c, half = sh.center[axis], sh.args[key] / 2
-        r = v if ref is None else ref
-        side = min((0, -1, 1), key=lambda k: (round(abs(r - c - k * half), 9), k != 0))
-        if side == self.frame[axis]:
-            return self.lit(v, axis)
-        return _add(self.edge(axis, side), v - (c + side * half))
-
-    def span_at(self, lo: float, hi: float, axis: int, size: str) -> str:
-        """The centre of a span ``lo..hi`` (a cut-out's sides along ``axis``, mm) whose size
-        is the param ``size``: kept from the body's edge nearest its near side (``width -
-        6 - cutout_width / 2``: a wider cut-out grows away from the edge it is dimensioned
-        from) or, nearer the centre line, centred as :meth:`at` places it."""
-        mid = (lo + hi) / 2
-        if self.anchor is None:
-            return self.at(mid, axis)
-        sh = self.anchor[0]
-        key = "width" if axis == 0 else "height"
-        c, half = sh.center[axis], sh.args[key] / 2
-        gaps = {0: abs(mid - c), -1: lo - (c - half), 1: (c + half) - hi}
-        side = min((0, -1, 1), key=lambda k: (round(gaps[k], 9), k != 0))
-        if side == 0:
-            return self.at(mid, axis, ref=c)
-        gap = gaps[side]
-        edge = self.edge(axis, side)
-        if edge == "0":
-            head = f"{size} / 2" if side < 0 else f"-{size} / 2"
-        else:
-            head = f"{edge} {'+' if side < 0 else '-'} {size} / 2"
-        return _add(head, -side * gap)
-
-    def from_body_centre(self, axis: int, term: str, c: float) -> str:
-        """``term`` added to the body's centre along ``axis`` (``c``, mm, as drawn), which
-        follows the body's size param when the body grows from an edge (:meth:`edge`)."""
-        if self.anchor is None or self.frame[axis] == 0:
-            return self.plus(c, term, axis)
-        e = self.edge(axis, 0)
-        return f"{e} - {term[1:]}" if term.startswith("-") else f"{e} + {term}"
-
-    def body_centre(self, sh: Shape) -> str:
-        """The body's centre as written: numbers, or following its size params from the
-        edge it grows from (:attr:`frame`)."""
-        if self.anchor is None or self.anchor[0] is not sh:
-            return self.center(sh.center)
-        return f"({self.edge(0, 0)}, {self.edge(1, 0)})"
-
-    def pos(self, c) -> str:
-        """A point, as a shared centre's name when it is one, else placed by :meth:`at`."""
-        return self.shared(c) or f"({self.at(c[0], 0)}, {self.at(c[1], 1)})"
-
-    def beside(self, base, p) -> str:
-        """Point ``p`` of a feature whose main shape is at ``base`` (a key beside its bore,
-        a tab of a window): numbers where ``base`` is written as numbers, else ``base``'s
-        place (:meth:`pos`) plus the offset, so that it moves with the feature."""
-        if self.pos(base) == self.center(base):
-            return self.center(p)
-        return f"({self.at(p[0], 0, ref=base[0])}, {self.at(p[1], 1, ref=base[1])})"
 
     def shared(self, c) -> str | None:
         """The name of the first shared centre within EQUAL_TOL of ``c``, or None."""
@@ -598,9 +501,11 @@ class _Part:
             if gr is not None and gr[4] == 2 and gr[5] == 2:
                 x0, y0, dx, dy = gr[:4]
                 mid = (x0 + dx / 2, y0 + dy / 2)
-                if math.dist(mid, bsh.center) <= EQUAL_TOL:
-                    W, H = bsh.args["width"], bsh.args["height"]
-                    ix, iy = (W - dx) / 2, (H - dy) / 2
+                W, H = bsh.args.get("width", 0.0), bsh.args.get("height", 0.0)
+                ix, iy = (W - dx) / 2, (H - dy) / 2
+                # at the corners: nearer the edges than the centre lines (else a square
+                # or a bolt circle about the centre, placed by it)
+                if math.dist(mid, bsh.center) <= EQUAL_TOL and 0 < ix < W / 4 and 0 < iy < H / 4:
                     sizes = self.size_params("corner_" + base, sh, True)
                     if abs(ix - iy) <= ROUND_TOL:
                         inx = iny = self.p("corner_inset", ix, "from the edges")
@@ -633,8 +538,7 @@ class _Part:
                 pcd = self.p(f"{hn}_pcd", 2 * R, "pitch circle diameter")
                 sizes = self.size_params(hn, sh, True)
                 cnt = self.p(f"{hn}_n", n, "holes", unit="")
-                ang = f"{_deg(a0)} + i * 360 deg / {cnt}" if abs(a0) > 1e-15 \
-                    else f"i * 360 deg / {cnt}"
+                ang = _start_angle(a0, n, cnt)
                 w.emit(depth, f"for i in range({cnt}) {{")
                 self.hole_block(depth + 1, hn, sh, f"polar({self.pos(C)}, {pcd} / 2, {ang})",
                                 sizes)
@@ -811,8 +715,7 @@ class _Part:
                 term = f"({var} - ({cnt} - 1) / 2) * {pitch}"
                 out.append(term if o == "0" else f"{o} + {term}")
             else:
-                first = self.at(v0, axis, ref=mid[axis])
-                out.append(f"{var} * {pitch}" if first == "0" else f"{first} + {var} * {pitch}")
+                out.append(self.run_at(v0, v0 + (n - 1) * step, axis, var, cnt, pitch))
         d = depth
         for ln in loops:
             self.w.emit(d, ln)
@@ -901,11 +804,13 @@ class _Part:
 
 
 def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d: Drawing,
-           prefix: str, shift=None) -> None:
+           prefix: str, shift=None):
+    """Write the solid ``name`` of ``d``; returns how its labels are placed
+    (:func:`_label_place`: a drawing of texts on their own layer uses it too)."""
     if _unknown(d) or (d.engrave is not None and _unknown(d.engrave)):
         from ..write.program import _structure
         _structure(w, depth, "solid", name, d)
-        return
+        return _pt
     part = _Part(w, params, stats, prefix)
     part.shift = shift
     loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
@@ -958,9 +863,10 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
     if d.paths_cut:
         w.crossed += len(drawn)
     eng = Drawing(paths=drawn, texts=list(d.texts), engrave=d.engrave)
+    place = _label_place(part, holes)
     if eng.paths or eng.texts or (eng.engrave is not None and not eng.engrave.empty):
         w.emit(depth + 1, "drawing engraving {")
-        _engraving(w, depth + 2, eng, stats, _label_place(part, holes))
+        _engraving(w, depth + 2, eng, stats, place)
         w.emit(depth + 1, "}")
         w.emit(depth + 1, "Fixed(engraving)")
     w.emit(depth, "}")
@@ -975,6 +881,7 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
         w.emit(depth + 1, f"oval = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
                           f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg)")
         w.emit(depth, "}")
+    return place
 
 
 LABEL_REACH = 25.0      # mm: a text this near a hole names it (moves with it)
@@ -1027,11 +934,11 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
         w.emit(0, "assembly " + ("sheet" if parts else "drawing_import") + " {")
     short = _short_names([it[1] for it in items])
     names = []
+    drawings = []           # (line index, name, d): written after the parts, placed by them
+    place = _pt
     for kind, name, d, *rep in items:
         if kind == "drawing":
-            w.emit(depth, f"drawing {name} {{")
-            _engraving(w, depth + 1, d, stats)
-            w.emit(depth, "}")
+            drawings.append((len(w.lines), name, d))
         elif rep:
             (x0, y0), (dx, dy), n = rep[0]
             pre = short[name] + "_"
@@ -1054,8 +961,20 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
             stats.patterns["mirrored part"] += 1
             name = name if name != word else word + "s"
         else:
-            _solid(w, params, stats, depth, name, d, short[name] + "_" if solids > 1 else "")
+            placed = _solid(w, params, stats, depth, name, d,
+                            short[name] + "_" if solids > 1 else "")
+            place = placed if solids == 1 else _pt
         names.append(name)
+    # a layer of texts beside one part (LABELS beside OUTLINE): its labels placed with the
+    # part's features, as the part's own engraving is
+    for at, name, d in reversed(drawings):
+        start = len(w.lines)
+        w.emit(depth, f"drawing {name} {{")
+        _engraving(w, depth + 1, d, stats, place)
+        w.emit(depth, "}")
+        written = w.lines[start:]
+        del w.lines[start:]
+        w.lines[at:at] = written
     if multi and len(names) > 1:
         w.emit(depth, f"for p in [{', '.join(names)}] {{ Fixed(p) }}")
     elif multi and names:

@@ -1,0 +1,164 @@
+"""Where an inferred part's features are placed from (issue 85, "anchoring as the drawing
+means it"): the body grows from the point its drawing is drawn from (:meth:`_Anchored.
+grows_from`: a corner at the origin, else its centre), and each feature is written from the
+body's reference nearest it (an edge, or the centre line; ties to the centre), so that a new
+width or height keeps it where the drawing ties it: a single feature by its centre
+(:meth:`~_Anchored.at`), a cut-out by its near side (:meth:`~_Anchored.span_at`), a row by
+its end member nearer an edge or by its middle (:meth:`~_Anchored.run_at`), a key, a tab or
+a label with the feature it belongs to (:meth:`~_Anchored.beside`).  Coordinates in mm; the
+results are program text."""
+from __future__ import annotations
+
+from .params import _center, _plus, _r
+from .shapes import ROUND_TOL, Shape
+
+
+def _add(text: str, d: float) -> str:
+    """``text + d`` as text (``d`` in mm; the number alone when ``text`` is 0)."""
+    if abs(d) <= ROUND_TOL:
+        return text
+    if text == "0":
+        return _r(d)
+    return f"{text} + {_r(d)}" if d > 0 else f"{text} - {_r(-d)}"
+
+
+class _Anchored:
+    """The placing half of :class:`~.infer._Part`: needs ``anchor`` (the body Shape and its
+    size params, or None), ``frame`` (per axis what stays: -1, 0, 1), ``shift`` (terms added
+    to every position, or None), ``named`` / ``named_as`` (shared centres) and ``shared``."""
+
+    def plus(self, v: float, term: str, axis: int = 0) -> str:
+        if self.shift is not None and self.shift[axis]:
+            return _plus(v, f"{self.shift[axis]} + {term}")
+        return _plus(v, term)
+
+    def center(self, c) -> str:
+        if self.shift is None:
+            return _center(c)
+        return "(" + ", ".join(_plus(c[i], self.shift[i]) if self.shift[i] else _r(c[i])
+                               for i in (0, 1)) + ")"
+
+    def lit(self, v: float, axis: int) -> str:
+        """Coordinate ``v`` as a number (after the part's shift, when it has one)."""
+        return self.center((v, v))[1:-1].split(", ")[axis]
+
+    def grows_from(self, sh: Shape) -> tuple:
+        """What stays of the body ``sh`` when its width (height) param changes, per axis
+        (:attr:`frame`): the edge or the centre that the drawing's origin is on (a plate
+        drawn from its corner at (0, 0) grows from that corner, one drawn about the origin
+        about its centre); the centre when the origin is on none of them."""
+        out = []
+        for axis, key in ((0, "width"), (1, "height")):
+            c, half = sh.center[axis], sh.args[key] / 2
+            out.append(next((g for g in (-1, 1) if abs(c + g * half) <= ROUND_TOL), 0))
+        return tuple(out)
+
+    def edge(self, axis: int, side: int) -> str:
+        """The body's centre (``side`` 0) or its left/right (bottom/top) edge (-1/1) along
+        ``axis`` as the text that follows its size param from what stays (:attr:`frame`):
+        ``width / 2`` for the centre of a plate that grows from its left edge at 0."""
+        sh, sizes = self.anchor
+        key = "width" if axis == 0 else "height"
+        c, half = sh.center[axis], sh.args[key] / 2
+        g = self.frame[axis]
+        k = side - g                    # halves of the size from what stays
+        if k == 0:
+            return self.lit(c + side * half, axis)
+        size = sizes[key]
+        term = {1: f"{size} / 2", -1: f"-{size} / 2", 2: size, -2: f"-{size}"}[k]
+        return self.plus(c + g * half, term, axis)
+
+    def at(self, v: float, axis: int, ref: float | None = None) -> str:
+        """Coordinate ``v`` (``axis`` 0: x, 1: y) written from the body's nearest reference
+        to ``ref`` (default ``v``): its centre, or its left/right (bottom/top) edge by the
+        width (height) param, so that a new width moves what sits by an edge with the edge
+        and keeps what sits by the centre on the centre (ties go to the centre); a number
+        where that reference is what stays (:meth:`edge`)."""
+        if self.anchor is None:
+            return self.lit(v, axis)
+        sh, sizes = self.anchor
+        key = "width" if axis == 0 else "height"
+        c, half = sh.center[axis], sh.args[key] / 2
+        r = v if ref is None else ref
+        side = min((0, -1, 1), key=lambda k: (round(abs(r - c - k * half), 9), k != 0))
+        if side == self.frame[axis]:
+            return self.lit(v, axis)
+        return _add(self.edge(axis, side), v - (c + side * half))
+
+    def span_at(self, lo: float, hi: float, axis: int, size: str) -> str:
+        """The centre of a span ``lo..hi`` (a cut-out's sides along ``axis``, mm) whose size
+        is the param ``size``: kept from the body's edge nearest its near side (``width -
+        6 - cutout_width / 2``: a wider cut-out grows away from the edge it is dimensioned
+        from) or, nearer the centre line, centred as :meth:`at` places it."""
+        mid = (lo + hi) / 2
+        if self.anchor is None:
+            return self.at(mid, axis)
+        sh = self.anchor[0]
+        key = "width" if axis == 0 else "height"
+        c, half = sh.center[axis], sh.args[key] / 2
+        gaps = {0: abs(mid - c), -1: lo - (c - half), 1: (c + half) - hi}
+        side = min((0, -1, 1), key=lambda k: (round(gaps[k], 9), k != 0))
+        if side == 0:
+            return self.at(mid, axis, ref=c)
+        gap = gaps[side]
+        edge = self.edge(axis, side)
+        if edge == "0":
+            head = f"{size} / 2" if side < 0 else f"-{size} / 2"
+        else:
+            head = f"{edge} {'+' if side < 0 else '-'} {size} / 2"
+        return _add(head, -side * gap)
+
+    def run_at(self, first: float, last: float, axis: int, var: str, cnt: str,
+               pitch: str) -> str:
+        """Member ``var`` of a row from ``first`` to ``last`` (mm along ``axis``, ``cnt``
+        members ``pitch`` apart): from the body's edge nearer its end member than the row's
+        middle is to the centre line, by that end member (the right end of a row tied to the
+        right edge stays when the pitch or count changes), else from its first member."""
+        lo, hi = min(first, last), max(first, last)
+        side = self.nearest(lo, hi, axis)
+        if side > 0 and last > first or side < 0 and last < first:
+            end = self.at(last, axis, ref=last)
+            term = f"({var} - ({cnt} - 1)) * {pitch}"
+        else:
+            end = self.at(first, axis, ref=first if side else (first + last) / 2)
+            term = f"{var} * {pitch}"
+        return term if end == "0" else f"{end} + {term}"
+
+    def nearest(self, lo: float, hi: float, axis: int) -> int:
+        """The body's reference a span ``lo..hi`` (mm along ``axis``) is tied to: -1 its low
+        edge (by the span's near end), 1 its high edge, 0 its centre line (by the span's
+        middle); ties go to the centre, then the low edge; 0 without a body."""
+        if self.anchor is None:
+            return 0
+        sh = self.anchor[0]
+        key = "width" if axis == 0 else "height"
+        c, half = sh.center[axis], sh.args[key] / 2
+        gaps = {0: abs((lo + hi) / 2 - c), -1: lo - (c - half), 1: (c + half) - hi}
+        return min((0, -1, 1), key=lambda k: (round(gaps[k], 9), k != 0))
+
+    def from_body_centre(self, axis: int, term: str, c: float) -> str:
+        """``term`` added to the body's centre along ``axis`` (``c``, mm, as drawn), which
+        follows the body's size param when the body grows from an edge (:meth:`edge`)."""
+        if self.anchor is None or self.frame[axis] == 0:
+            return self.plus(c, term, axis)
+        e = self.edge(axis, 0)
+        return f"{e} - {term[1:]}" if term.startswith("-") else f"{e} + {term}"
+
+    def body_centre(self, sh: Shape) -> str:
+        """The body's centre as written: numbers, or following its size params from the
+        edge it grows from (:attr:`frame`)."""
+        if self.anchor is None or self.anchor[0] is not sh:
+            return self.center(sh.center)
+        return f"({self.edge(0, 0)}, {self.edge(1, 0)})"
+
+    def pos(self, c) -> str:
+        """A point, as a shared centre's name when it is one, else placed by :meth:`at`."""
+        return self.shared(c) or f"({self.at(c[0], 0)}, {self.at(c[1], 1)})"
+
+    def beside(self, base, p) -> str:
+        """Point ``p`` of a feature whose main shape is at ``base`` (a key beside its bore,
+        a tab of a window): numbers where ``base`` is written as numbers, else ``base``'s
+        place (:meth:`pos`) plus the offset, so that it moves with the feature."""
+        if self.pos(base) == self.center(base):
+            return self.center(p)
+        return f"({self.at(p[0], 0, ref=base[0])}, {self.at(p[1], 1, ref=base[1])})"
