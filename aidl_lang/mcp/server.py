@@ -35,8 +35,8 @@ from ..sources import MAX_DRAWING_BYTES
 from . import compact as C
 from . import stdio
 from . import tools as T
-from .schemas import (CheckResult, DescribeResult, ImportResult, RenderResult, ValuesResult,
-                      WriteResult)
+from .schemas import (CheckResult, DescribeResult, ImportResult, MeasureResult, RenderResult,
+                      SetParamsResult, ValuesResult, WriteResult)
 from .wording import for_agents
 
 # what one program may build (aidl_lang/limits.py, the parser's and the importer's limits),
@@ -155,6 +155,12 @@ Start = Annotated[int | None, Field(
                 "`span.start`, a fix's span).", ge=0)]
 End = Annotated[int | None, Field(
     description="Patch: the offset after the last character replaced (`span.end`).", ge=0)]
+ParamValues = Annotated[dict[str, str | int | float | bool], Field(
+    description="Param name -> new value: \"50 mm\", 50 (file units), true.",
+    min_length=1, max_length=200)]
+EntityName = Annotated[str, Field(
+    description="A name as `values` gives it: a point, line, circle, shape, part "
+                "(plate.bore.c, gear_a).", min_length=1, max_length=500)]
 Code = Annotated[str, Field(
     description="A diagnostic code, e.g. E0103 or W0402 (any case).", min_length=1,
     max_length=16)]
@@ -475,6 +481,26 @@ def build_server(root: str, budget: float = 1.0,
             d = doc["diagnostics"][0]
             doc["error"] = {"code": d["code"], "message": d["message"]}
         return answer("import_drawing", doc)
+
+    @tool(writes)
+    def set_params(path: WritePath, values: ParamValues, dof: Dof = False,
+                   budget: Budget = None, detail: Detail = False
+                   ) -> Annotated[CallToolResult, SetParamsResult]:
+        """Change `param` values in a .aidl file: only each value's text is rewritten
+        (comments, formatting kept), checked against the param's kind and min/max first
+        (refused: file untouched), then checked as `check`. Unknown name: no_match."""
+        return answer("set_params", work.call("set_params", path, values, dof, budget,
+                                              budget=budget), detail=detail)
+
+    @tool(reads)
+    def measure(a: EntityName, b: EntityName, source: Source = None,
+                path: ProgramPath = None, overrides: Overrides = None,
+                budget: Budget = None) -> Annotated[CallToolResult, MeasureResult]:
+        """Between two named entities of the solved program, mm, exact: distance and
+        points, center_distance, angle (two lines), clearance and contact (two shapes or
+        parts: apart, touching, overlapping as negative)."""
+        return answer("measure", work.call("measure", a, b, source, path, overrides, budget,
+                                           budget=budget))
 
     @tool(reads, structured=False)
     def explain(code: Code) -> str:

@@ -42,6 +42,7 @@ _PHRASES: list[tuple[re.Pattern, object]] = [(re.compile(p), r) for p, r in [
     (r"`--budget (\d+)`", r"`budget=\1`, at most 4"),
     (r"`--budget`", "`budget` (at most 4)"),
     # render's options
+    (r"--sheet (\w+)\)", r'sheet="\1")'),
     (r"--(sheet|gap)\b", r"`\1`"),
     (r"--rotate any", 'rotate="any"'),
     (r"use a lower --dpi or --png-width", "use a smaller `width`"),
