@@ -226,7 +226,7 @@ async def test_render_takes_the_cli_layout_sheet_kerf_and_thickness(tmp_path):
                            ({"kerf": "wide"}, "kerf"), ({"kerf": 11}, "kerf"),
                            ({"thickness": -1}, "thickness"),
                            ({"layout": "sheet", "rotate": "sideways"}, "rotate"),
-                           ({"layout": "sheet", "sheet": "20x20mm"}, "does not fit")):
+                           ({"layout": "sheet", "sheet": "20x20mm"}, "is larger than the")):
             r = await session.call_tool("render", {"source": MIXED, "width": 64, **args})
             assert r.is_error and said in _text(r), (args, _text(r))
 

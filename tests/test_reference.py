@@ -68,13 +68,17 @@ def test_every_topic_example_compiles_cleanly(name):
 def test_topic_gives_signature_units_and_members():
     text = find("spur_gear").render()
     assert "spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm" in text
-    assert "phase = 0 deg: angle" in text and "angle: degrees (`30` or `30 deg`" in text
-    assert "cx = 0 mm: length" in text and "center's starting position" in text
-    assert "teeth = 20: number" in text
+    assert "phase = 0 deg: an angle" in text and "angle: degrees (`30` or `30 deg`" in text
+    assert "cx = 0 mm: a length" in text and "center's starting position" in text
+    assert "teeth = 20: a number" in text
     for m in ("bore_hole", "pitch", "hub", "teeth_ring"):
         assert m in text.split("Members")[-1]
     assert "hub.center" in text                             # where the gear's center is
     assert 'import "std/gears.aidl"' in text
+    # a list default is shown with its kind, not `teeth = ...: any` (issue 86)
+    train = find("gear_train").render()
+    assert "teeth = [12, 36, 12, 30]: a list of numbers" in train
+    assert "gear_train(teeth=[12, 36, 12, 30], module=2 mm" in train
     circle = find("Circle").render()
     assert "Circle(center, radius)" in circle and "Circle(center, diameter)" in circle
     assert "radius: length" in circle and "length: a number in the file's unit" in circle
