@@ -3,7 +3,9 @@
 
 Tools: ``check``, ``render`` (a PNG image block, optionally a file written inside the root),
 ``values``, ``describe`` (the final part in words), ``import_drawing`` (``aidl import
-[--infer]`` of a DXF or SVG in the root), ``explain``, ``docs``.  The compiling four
+[--infer]`` of a DXF or SVG in the root, with the check of the program), ``write_program``,
+``set_params`` (params rewritten in a file), ``measure`` (distance, angle, clearance between
+named entities), ``explain``, ``docs``.  The compiling four
 run side by side in a pool of worker processes (:mod:`.worker`) and return structured content
 of the output schemas of :mod:`.schemas`; their input schemas take exactly one of ``source``
 and ``path`` and nothing they do not list (:class:`_Server` refuses the rest).  Resources:
