@@ -526,20 +526,7 @@ class Result:
             if base:
                 structs[base] = s
             prefix = base + "." if base else ""
-            counts: dict[str, int] = {}
-            for g in s.geometry:
-                if g.name:
-                    counts[g.name] = counts.get(g.name, 0) + 1
-            seen: dict[str, int] = {}
-            for g in s.geometry:
-                if not g.name:
-                    continue
-                n = g.name
-                if counts[n] > 1:
-                    n = f"{g.name}[{seen.get(g.name, 0)}]"
-                    seen[g.name] = seen.get(g.name, 0) + 1
-                if g.pattern_original is not None and n.endswith("[1]"):
-                    geo[prefix + n[:-3] + "[0]"] = g.pattern_original
+            for n, g in _geometry_names(s):
                 geo[prefix + n] = g
                 for pn, sub in g.parts.items():
                     if getattr(sub, "kind", None) in ("Line", "Point", "Circle", "Arc"):
@@ -1000,21 +987,7 @@ def _values(model, scale: float, unit: str, sizes: bool = False) -> list[Value]:
             l, r, b, tp = (float(v) for v in box)
             vals.append(Value(prefix + "bbox", "box", tuple(v / scale for v in (l, b, r, tp)),
                               unit, (l, b, r, tp)))
-        counts: dict[str, int] = {}
-        for g in s.geometry:
-            if g.name:
-                counts[g.name] = counts.get(g.name, 0) + 1
-        seen: dict[str, int] = {}
-        for g in s.geometry:
-            if not g.name:
-                continue
-            gname = g.name
-            if counts[g.name] > 1:
-                gname = f"{g.name}[{seen.get(g.name, 0)}]"
-                seen[g.name] = seen.get(g.name, 0) + 1
-            if g.pattern_original is not None and gname.endswith("[1]"):
-                # `dots = LinearPattern(c, ...)`: `dots[0]` is the original `c`
-                vals += geometry(g.pattern_original, prefix + gname[:-3] + "[0]", ox, oy)
+        for gname, g in _geometry_names(s):
             vals += geometry(g, prefix + gname, ox, oy)
         vals += _named_quantities(s.scope, prefix, x, (ox, oy), scale, unit)
         return vals
@@ -1036,6 +1009,30 @@ def _values(model, scale: float, unit: str, sizes: bool = False) -> list[Value]:
             for t in subtree(first):
                 out += structure(t, alias + name_of(t)[len(own):])
         out += structure(s, base)
+    return out
+
+
+def _geometry_names(s) -> list[tuple[str, object]]:
+    """``(name, geometry)`` of each named geometry of structure ``s`` as :attr:`Result.values`
+    names it: ``c``, or ``c[0]``, ``c[1]`` when a name is given to several (a loop's);
+    a pattern's original first as ``dots[0]`` (``dots = LinearPattern(c, ...)``: its first
+    copy is ``dots[1]``)."""
+    counts: dict[str, int] = {}
+    for g in s.geometry:
+        if g.name:
+            counts[g.name] = counts.get(g.name, 0) + 1
+    seen: dict[str, int] = {}
+    out: list[tuple[str, object]] = []
+    for g in s.geometry:
+        if not g.name:
+            continue
+        gname = g.name
+        if counts[g.name] > 1:
+            gname = f"{g.name}[{seen.get(g.name, 0)}]"
+            seen[g.name] = seen.get(g.name, 0) + 1
+        if g.pattern_original is not None and gname.endswith("[1]"):
+            out.append((gname[:-3] + "[0]", g.pattern_original))
+        out.append((gname, g))
     return out
 
 

@@ -3,16 +3,14 @@
 and range), `measure` (distance, centre distance, angle, clearance between named entities),
 `import_drawing` with the check of the program it wrote, and every refusal naming its
 argument in `error.argument`."""
-import contextlib
 import os
 
 import pytest
 
 mcp = pytest.importorskip("mcp")
-from mcp.client.session import ClientSession  # noqa: E402
-from mcp.client.stdio import stdio_client  # noqa: E402
 
-from test_mcp import GOOD, _server, _text  # noqa: E402
+from test_mcp import GOOD, _text  # noqa: E402
+from test_mcp_agents import _session  # noqa: E402
 
 PLATE = """units mm
 # a plate with a bore
@@ -38,14 +36,6 @@ assembly kit {
     }
 }
 """
-
-
-@contextlib.asynccontextmanager
-async def _session(root):
-    async with stdio_client(_server(root)) as (read, write):
-        async with ClientSession(read, write) as session:
-            await session.initialize()
-            yield session
 
 
 @pytest.mark.asyncio
