@@ -501,15 +501,19 @@ class Result:
         if g.kind == "Line":
             p, q = pts["start"], pts["end"]
             return {"kind": "line", "pieces": [("L", p, q)], "ends": (p, q)}
-        loops = self._renderer().loops_of(g)
-        out = {"kind": "circle" if g.kind == "Circle" else "shape", "loops": loops,
-               "pieces": G.pieces([sg for lp in loops for sg in lp.segments]),
-               "center": pts.get("center")}
-        if g.kind in ("Arc",) or not loops:       # an open arc: its curve, no region
-            out.pop("loops", None)
-            if g.kind == "Arc":
-                out["kind"] = "arc"
-        return out
+        loops = [] if g.kind == "Arc" else self._renderer().loops_of(g)
+        if loops:
+            return {"kind": "circle" if g.kind == "Circle" else "shape", "loops": loops,
+                    "pieces": G.pieces([sg for lp in loops for sg in lp.segments]),
+                    "center": pts.get("center")}
+        try:                            # an open curve: an arc, a polyline, a spline
+            segs = self._renderer().pieces(g)
+        except (KeyError, AttributeError, TypeError):
+            segs = []
+        if not segs:
+            raise KeyError(f"`{g.label}` ({g.kind}) has no curve to measure")
+        return {"kind": "arc" if g.kind == "Arc" else "curve", "pieces": G.pieces(segs),
+                "center": pts.get("center") if g.kind == "Arc" else None}
 
     def _named_geometry(self) -> tuple[dict, dict]:
         """``({name: geometry}, {name: structure})`` named as :attr:`values` names them

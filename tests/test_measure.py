@@ -30,6 +30,17 @@ def test_two_circles_of_known_gap():
     got = _two("Circle(center=(0, 0), radius=3)", "Circle(center=(3, 0), radius=1)")
     assert got["contact"] == "overlapping"
     assert got["clearance"] == pytest.approx(-1, abs=1e-9)     # 3 + 1 - 3 deep
+    # concentric: the outlines 2 apart, the small one 2 deep inside; the same circle twice
+    got = _two("Circle(center=(1, 1), radius=3)", "Circle(center=(1, 1), radius=1)")
+    assert got["distance"] == pytest.approx(2, abs=1e-12) and got["contact"] == "overlapping"
+    assert got["clearance"] == pytest.approx(-2, abs=1e-9) and got["center_distance"] == 0
+    got = _two("Circle(center=(1, 1), radius=3)", "Circle(center=(1, 1), radius=3)")
+    assert got["distance"] == 0 and got["contact"] == "overlapping"
+    # an open arc (a quarter from 0 to 90 degrees) and a point: its nearest end
+    got = _two("Arc(center=(0, 0), radius=10, start_angle=0 deg, end_angle=90 deg)",
+               "Point(-30, 10)")
+    assert got["a"]["kind"] == "arc" and got["distance"] == pytest.approx(30, abs=1e-9)
+    assert got["points"][0] == pytest.approx([0, 10], abs=1e-12)
 
 
 def test_a_gear_pair_at_its_centre_distance_and_lines_at_an_angle():
@@ -57,28 +68,45 @@ assembly kit {
 
 coord = st.integers(-400, 400).map(lambda v: v / 8)
 size = st.integers(4, 160).map(lambda v: v / 8)
+shape = st.one_of(st.tuples(st.just("circle"), coord, coord, size),
+                  st.tuples(st.just("rect"), coord, coord, size, size))
 
 
-@settings(max_examples=25, deadline=None)
-@given(cx=coord, cy=coord, r=size, x=coord, y=coord, w=size, h=size)
-def test_circle_and_rectangle_clearance_is_shapely_distance(cx, cy, r, x, y, w, h):
-    """Apart: the clearance is the exact distance (shapely: the centre's distance to the
-    rectangle less the radius, no polygon of the circle); meeting: touching or
-    overlapping, never a positive clearance."""
-    got = _two(f"Circle(center=({cx}, {cy}), radius={r})",
-               f"Rectangle(center=({x}, {y}), width={w}, height={h})")
-    rect = box(x - w / 2, y - h / 2, x + w / 2, y + h / 2)
-    truth = Point(cx, cy).distance(rect) - r
-    inside = rect.contains(Point(cx, cy)) and Point(cx, cy).distance(rect.exterior) >= r
+def _aidl(s) -> str:
+    if s[0] == "circle":
+        return f"Circle(center=({s[1]}, {s[2]}), radius={s[3]})"
+    return f"Rectangle(center=({s[1]}, {s[2]}), width={s[3]}, height={s[4]})"
+
+
+def _truth(a, b) -> float:
+    """The signed gap of two shapes from shapely: polygons for rectangles (exact), a
+    circle as its centre less its radius (no polygon of the circle)."""
+    def geom(s):
+        if s[0] == "circle":
+            return Point(s[1], s[2]), s[3]
+        return box(s[1] - s[3] / 2, s[2] - s[4] / 2, s[1] + s[3] / 2, s[2] + s[4] / 2), 0.0
+    (ga, ra), (gb, rb) = geom(a), geom(b)
+    return ga.distance(gb) - ra - rb
+
+
+@settings(max_examples=40, deadline=None)
+@given(a=shape, b=shape)
+def test_clearance_of_circles_and_rectangles_is_shapely_distance(a, b):
+    """Apart: the clearance and the distance are shapely's distance, exact (1e-9 mm);
+    meeting: touching (0) or overlapping (0 or less), never a positive clearance; the centre
+    distance is the centres'."""
+    got = _two(_aidl(a), _aidl(b))
+    truth = _truth(a, b)
     if truth > 1e-9:
         assert got["contact"] == "apart"
         assert got["clearance"] == pytest.approx(truth, abs=1e-9)
         assert got["distance"] == pytest.approx(truth, abs=1e-9)
-    elif abs(truth) <= 1e-9:
-        assert got["contact"] == "touching" and got["clearance"] == 0
+    elif truth >= -1e-9 and not (a[0] == b[0] == "circle" and truth < 0):
+        assert got["contact"] in ("touching", "overlapping") and got["clearance"] <= 0
     else:
-        assert got["contact"] == "overlapping" and got["clearance"] < 0
-    assert got["center_distance"] == pytest.approx(math.dist((cx, cy), (x, y)), abs=1e-9)
-    if inside:                        # the circle within: its outline's gap to the sides
-        assert got["distance"] == pytest.approx(Point(cx, cy).distance(rect.exterior) - r,
-                                                abs=1e-9)
+        assert got["contact"] == "overlapping" and got["clearance"] <= 0
+    assert got["center_distance"] == pytest.approx(math.dist(a[1:3], b[1:3]), abs=1e-9)
+    if a[0] == b[0] == "circle" and truth < -1e-9 and math.dist(a[1:3], b[1:3]) >= max(
+            a[3], b[3]):                   # crossing circles, neither centre inside the
+        # other: the nearest point of each to the other's centre is r1 + r2 - d deep
+        assert got["clearance"] == pytest.approx(truth, abs=1e-9)

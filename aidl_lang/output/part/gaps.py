@@ -112,7 +112,8 @@ def piece_gap(a: tuple, b: tuple) -> tuple[float, Point, Point]:
         if other[0] == "A":
             ox, oy = other[1]
             d = math.hypot(ox - cx, oy - cy)
-            dirs = [] if d == 0 else [((ox - cx) / d, (oy - cy) / d)]
+            # concentric: the ends give the answer, or any direction for two whole circles
+            dirs = [((ox - cx) / d, (oy - cy) / d)] if d else [(1.0, 0.0)]
         else:
             (ax, ay), (bx, by) = other[1], other[2]
             L = math.hypot(bx - ax, by - ay)
@@ -232,5 +233,5 @@ def clearance(loops_a, loops_b) -> dict:
         for v in cands:
             if _inside(v, polys):
                 depth = max(depth, gap([("L", v, v)], other)[0])
-    return {"clearance": -depth, "contact": "overlapping", "overlap_area": shared,
+    return {"clearance": -depth if depth else 0.0, "contact": "overlapping", "overlap_area": shared,
             "points": [list(p), list(q)]}
