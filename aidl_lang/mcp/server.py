@@ -184,8 +184,9 @@ spur_gear, assert, ...) for its units, members and an example, or read aidl://do
 for the full reference. Write a program, call `check` until it reports \
 ok (each diagnostic has a code, a located span, a hint and often a fix; `explain` a code for \
 more), then `render` to see it, `describe` to read the final part in words (outline, openings \
-with centres and sizes, texts, symmetries) and `values` to read exact positions and sizes. Paths are \
-relative to the server's allowed folder; nothing outside it can be read or written."""
+with centres and sizes, texts, symmetries), `values` to read exact positions and sizes and \
+`measure` for the distance, angle or clearance between two of them; `set_params` changes a \
+file's params. Paths are relative to the server's allowed folder; nothing outside it can be read or written."""
 
 _PKG = Path(__file__).resolve().parent.parent
 # the two references the server offers as resources, inside the package (links to docs/ in a
