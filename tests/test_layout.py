@@ -272,7 +272,7 @@ def test_a_part_larger_than_the_sheet_is_an_error_naming_it(tmp_path, capsys):
     assert main(["render", str(prog), "--layout", "sheet", "--sheet", "70x70mm",
                  "-o", str(tmp_path / "c.svg")]) == 1
     err = capsys.readouterr().err
-    assert "part `box.bottom` (80 x 60 mm) is larger than the 70 x 70 mm sheet" in err
+    assert "part `box.bottom` (80 x 60 mm) is larger than the 70 x 70 mm sheet" in err, err
     assert "Traceback" not in err and not list(tmp_path.glob("*.svg"))
 
 

@@ -273,7 +273,7 @@ async def test_messages_name_tools_and_arguments_not_command_line_flags(tmp_path
         assert _text(r).startswith('Call `docs` with name="NAME" for a topic:')
         r = await session.call_tool("render", {"source": MIXED, "layout": "sheet",
                                                "sheet": "30x30mm"})
-        assert r.is_error and 'use a sheet of at least 46.02 x 66.02 mm (sheet="47x67mm")' in \
+        assert r.is_error and 'use a sheet of 46.02 x 66.02 mm or larger (sheet="47x67mm")' in \
             _text(r) and "--" not in _text(r) and "rotate" not in _text(r)
     # the command line's (and the API's) own wording
     r = aidl_lang.compile(source=width, overrides={"nope": 1})

@@ -306,7 +306,7 @@ def _too_big(p, pts, W: float, H: float, gap: float, rotate) -> str:
     if rotate is not None and 90.0 in rotate:
         sw, sh = min(sw, sh), max(sw, sh)
         sw, sh = (sw, sh) if W <= H else (sh, sw)
-    helps = [f"a sheet of at least {sw:.6g} x {sh:.6g} mm (--sheet {math.ceil(sw):d}x"
+    helps = [f"a sheet of {sw:.6g} x {sh:.6g} mm or larger (--sheet {math.ceil(sw):d}x"
              f"{math.ceil(sh):d}mm)"]
     if gap > 0 and _fits(pts, W + gap, H + gap, rotate):     # the part without its gap
         helps.append("a smaller --gap")
