@@ -1,12 +1,14 @@
 """AIDL, a solver-aided hierarchical language for 2D CAD.
 
 The public Python API (docs/api.md) is :func:`compile` and what it returns
-(:class:`Result`, :class:`Value`, :class:`PartInfo`, :class:`Layout`), from :mod:`aidl_lang.api`; it is
+(:class:`Result`, :class:`Value`, :class:`PartInfo`, :class:`Layout`), and :func:`set_params`
+(param values rewritten in a program's text), from :mod:`aidl_lang.api`; it is
 imported on first use (PEP 562), so ``import aidl_lang.cli`` stays as quick as before.
 """
 from __future__ import annotations
 
-_API = ("compile", "Result", "Value", "PartInfo", "Layout", "NotCompiled", "WriteError")
+_API = ("compile", "Result", "Value", "PartInfo", "Layout", "NotCompiled", "WriteError",
+        "set_params", "ParamsRefused")
 
 __all__ = list(_API)
 

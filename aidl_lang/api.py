@@ -41,7 +41,8 @@ from .limits import DEFAULT_BUDGET, Budget, now
 REDUNDANCY_SECONDS = 1.0
 REDUNDANCY_ROWS = 1000
 
-__all__ = ["compile", "Result", "Value", "PartInfo", "Layout", "NotCompiled", "WriteError"]
+__all__ = ["compile", "Result", "Value", "PartInfo", "Layout", "NotCompiled", "WriteError",
+           "set_params", "ParamsRefused"]
 
 
 def __getattr__(name: str):
@@ -223,6 +224,8 @@ class Result:
         self._svg_done = False
         self._svg_text: str | None = None
         self._svg_problem: list[Diagnostic] | None = None
+        self._names: tuple[dict, dict] | None = None     # measure's named geometry
+        self._measure_renderer = None
 
     # ------------------------------------------------------------------ status
     @property
@@ -388,6 +391,152 @@ class Result:
                         self.sink.add(d)
                 self._redundant = list(self.sink.items[before:])
         return list(self._redundant)
+
+    # ------------------------------------------------------------------ measuring
+    def measure(self, a: str, b: str) -> dict:
+        """What lies between the named entities ``a`` and ``b`` (names as :attr:`values`
+        gives them: a point ``plate.bore.c.center``, a line or a rectangle's edge
+        ``plate.body.top``, a circle ``plate.bore.c``, any shape, a structure or part
+        ``gear_a``), in mm and degrees, exact (to 1e-9 mm):
+
+        ``{"a": {name, kind}, "b": ..., "distance", "points": [[x, y], [x, y]]}``: the
+        smallest distance between them (points; lines as segments; shapes and parts by their
+        outlines) and where; ``center_distance`` when both have a centre (a point, a circle,
+        an arc; a structure's: its own first circle, a gear's ``hub``, else its first shape's
+        centre, else its origin);
+        ``angle`` between two lines (0 to 180 degrees, from ``a``'s direction to ``b``'s);
+        ``clearance`` and ``contact`` between two closed shapes or parts
+        (:func:`aidl_lang.output.part.gaps.clearance`: ``apart`` with the gap, ``touching``
+        0, ``overlapping`` negative: how deep one runs into the other, and
+        ``overlap_area`` mm²).  Raises :class:`NotCompiled`, and :class:`KeyError` for a
+        name that is none of these: ``args`` (the message, with the nearest names; ``"a"``
+        or ``"b"``)."""
+        self._need("measure")
+        from .output.part import gaps as G
+        found = []
+        for which, name in (("a", a), ("b", b)):
+            try:
+                found.append(self._entity(name))
+            except KeyError as e:
+                raise KeyError(e.args[0], which) from None
+        ea, eb = found
+        d, p, q = G.gap(ea["pieces"], eb["pieces"])
+        out: dict = {"a": {"name": a, "kind": ea["kind"]}, "b": {"name": b, "kind": eb["kind"]},
+                     "unit": "mm", "distance": d, "points": [list(p), list(q)]}
+        if ea.get("center") is not None and eb.get("center") is not None:
+            out["center_distance"] = math.dist(ea["center"], eb["center"])
+        if ea["kind"] == "line" and eb["kind"] == "line":
+            (p0, p1), (q0, q1) = ea["ends"], eb["ends"]
+            t = math.atan2(q1[1] - q0[1], q1[0] - q0[0]) - math.atan2(p1[1] - p0[1],
+                                                                     p1[0] - p0[0])
+            out["angle"] = abs(math.degrees(math.remainder(t, 2 * math.pi)))
+        if ea.get("loops") and eb.get("loops"):
+            c = G.clearance(ea["loops"], eb["loops"])
+            out["clearance"], out["contact"] = c["clearance"], c["contact"]
+            if "overlap_area" in c:
+                out["overlap_area"] = c["overlap_area"]
+            out["points"] = c["points"]
+        return out
+
+    def _entity(self, name: str) -> dict:
+        """``{"kind", "pieces", "center"?, "ends"?, "loops"?}`` of the entity named ``name``
+        (see :meth:`measure`).  Raises :class:`KeyError`."""
+        from .output.part import gaps as G
+        geo, structs = self._named_geometry()
+        points = {v.name: v for v in self.values if v.kind == "point"}
+        root = self.compiled.model.root.name
+        if all(name not in d for d in (geo, structs, points)) and any(
+                f"{root}.{name}" in d for d in (geo, structs, points)):
+            name = f"{root}.{name}"         # the root structure's name may be left out
+        g = geo.get(name)
+        if g is not None:
+            return self._geometry_entity(g)
+        if name in points:
+            p = tuple(points[name].mm)
+            return {"kind": "point", "pieces": [("L", p, p)], "center": p}
+        s = structs.get(name)
+        if s is not None:
+            part = next((pt for pt in self.output.parts if pt.name == s.path), None)
+            loops = part.loops if part is not None else [
+                lp for gg in s.geometry if not gg.construction
+                for lp in self._renderer().loops_of(gg)]
+            own = [gg for gg in s.geometry if not gg.construction
+                   and ("center" in gg.points or "top_right" in gg.points)]
+            first = next((gg for gg in own if gg.kind == "Circle"), own[0] if own else None)
+            center = self._geometry_entity(first)["center"] if first is not None else \
+                next((tuple(v.mm) for v in self.values if v.name == name + ".origin"), None)
+            return {"kind": "part" if part is not None else "structure", "loops": loops,
+                    "pieces": G.pieces([sg for lp in loops for sg in lp.segments]),
+                    "center": center}
+        from .diagnostics import did_you_mean
+        every = sorted(set(geo) | set(structs) | set(points))
+        near = did_you_mean(name, every, 3)
+        raise KeyError(f"nothing is named `{name}`"
+                       + (f"; did you mean {', '.join(f'`{n}`' for n in near)}?" if near
+                          else ""))
+
+    def _renderer(self):
+        if self._measure_renderer is None:
+            from .output.part.booleans import Renderer
+            self._measure_renderer = Renderer(self.compiled.model)
+        return self._measure_renderer
+
+    def _geometry_entity(self, g) -> dict:
+        """The entity of geometry ``g`` (model frame, mm)."""
+        from .output.part import gaps as G
+        x = self.compiled.model.x
+        ox = oy = 0.0
+        t = g.owner
+        while t is not None:
+            ox += x[t.fx]
+            oy += x[t.fy]
+            t = t.parent
+        pts = {k: (float(x[p.ix] + ox), float(x[p.iy] + oy)) for k, p in g.points.items()}
+        if "center" not in pts and {"bottom_left", "top_right"} <= set(pts):
+            (ax, ay), (cx, cy) = pts["bottom_left"], pts["top_right"]
+            pts["center"] = ((ax + cx) / 2, (ay + cy) / 2)
+        if g.kind == "Point":
+            p = next(iter(pts.values()))
+            return {"kind": "point", "pieces": [("L", p, p)], "center": p}
+        if g.kind == "Line":
+            p, q = pts["start"], pts["end"]
+            return {"kind": "line", "pieces": [("L", p, q)], "ends": (p, q)}
+        loops = [] if g.kind == "Arc" else self._renderer().loops_of(g)
+        if loops:
+            return {"kind": "circle" if g.kind == "Circle" else "shape", "loops": loops,
+                    "pieces": G.pieces([sg for lp in loops for sg in lp.segments]),
+                    "center": pts.get("center")}
+        try:                            # an open curve: an arc, a polyline, a spline
+            segs = self._renderer().pieces(g)
+        except (KeyError, AttributeError, TypeError):
+            segs = []
+        if not segs:
+            raise KeyError(f"`{g.label}` ({g.kind}) has no curve to measure")
+        return {"kind": "arc" if g.kind == "Arc" else "curve", "pieces": G.pieces(segs),
+                "center": pts.get("center") if g.kind == "Arc" else None}
+
+    def _named_geometry(self) -> tuple[dict, dict]:
+        """``({name: geometry}, {name: structure})`` named as :attr:`values` names them
+        (a rectangle's edges ``body.top`` too)."""
+        if self._names is not None:
+            return self._names
+        model = self.compiled.model
+        root = model.root
+        implicit = root.name == "model" and root.span is not None and root.span.start == 0
+        geo: dict = {}
+        structs: dict = {}
+        for s in model.structures:
+            base = s.path[len("model"):].lstrip(".") if implicit else s.path
+            if base:
+                structs[base] = s
+            prefix = base + "." if base else ""
+            for n, g in _geometry_names(s):
+                geo[prefix + n] = g
+                for pn, sub in g.parts.items():
+                    if getattr(sub, "kind", None) in ("Line", "Point", "Circle", "Arc"):
+                        geo[f"{prefix}{n}.{pn}"] = sub
+        self._names = (geo, structs)
+        return self._names
 
     # ------------------------------------------------------------------ outputs
     @property
@@ -842,21 +991,7 @@ def _values(model, scale: float, unit: str, sizes: bool = False) -> list[Value]:
             l, r, b, tp = (float(v) for v in box)
             vals.append(Value(prefix + "bbox", "box", tuple(v / scale for v in (l, b, r, tp)),
                               unit, (l, b, r, tp)))
-        counts: dict[str, int] = {}
-        for g in s.geometry:
-            if g.name:
-                counts[g.name] = counts.get(g.name, 0) + 1
-        seen: dict[str, int] = {}
-        for g in s.geometry:
-            if not g.name:
-                continue
-            gname = g.name
-            if counts[g.name] > 1:
-                gname = f"{g.name}[{seen.get(g.name, 0)}]"
-                seen[g.name] = seen.get(g.name, 0) + 1
-            if g.pattern_original is not None and gname.endswith("[1]"):
-                # `dots = LinearPattern(c, ...)`: `dots[0]` is the original `c`
-                vals += geometry(g.pattern_original, prefix + gname[:-3] + "[0]", ox, oy)
+        for gname, g in _geometry_names(s):
             vals += geometry(g, prefix + gname, ox, oy)
         vals += _named_quantities(s.scope, prefix, x, (ox, oy), scale, unit)
         return vals
@@ -878,6 +1013,30 @@ def _values(model, scale: float, unit: str, sizes: bool = False) -> list[Value]:
             for t in subtree(first):
                 out += structure(t, alias + name_of(t)[len(own):])
         out += structure(s, base)
+    return out
+
+
+def _geometry_names(s) -> list[tuple[str, object]]:
+    """``(name, geometry)`` of each named geometry of structure ``s`` as :attr:`Result.values`
+    names it: ``c``, or ``c[0]``, ``c[1]`` when a name is given to several (a loop's);
+    a pattern's original first as ``dots[0]`` (``dots = LinearPattern(c, ...)``: its first
+    copy is ``dots[1]``)."""
+    counts: dict[str, int] = {}
+    for g in s.geometry:
+        if g.name:
+            counts[g.name] = counts.get(g.name, 0) + 1
+    seen: dict[str, int] = {}
+    out: list[tuple[str, object]] = []
+    for g in s.geometry:
+        if not g.name:
+            continue
+        gname = g.name
+        if counts[g.name] > 1:
+            gname = f"{g.name}[{seen.get(g.name, 0)}]"
+            seen[g.name] = seen.get(g.name, 0) + 1
+        if g.pattern_original is not None and gname.endswith("[1]"):
+            out.append((gname[:-3] + "[0]", g.pattern_original))
+        out.append((gname, g))
     return out
 
 
@@ -905,3 +1064,94 @@ def _named_quantities(scope: dict, prefix: str, x, origin, scale: float,
             px, py = evaluate(v.x, x) + origin[0], evaluate(v.y, x) + origin[1]
             out.append(Value(n, "point", (px / scale, py / scale), unit, (px, py)))
     return out
+
+
+# ------------------------------------------------------------------ editing params
+class ParamsRefused(ValueError):
+    """:func:`set_params` refused the values: ``code`` ``no_match`` (a name that is not a
+    top-level ``param`` of the file; ``nearest``: the nearest names) or ``bad_value`` (a value
+    of the wrong kind or outside the param's declared range: ``diagnostics``, the E0113 or
+    E0124 the compiler gives for it); ``name``: the param at fault."""
+
+    def __init__(self, message: str, code: str, name: str,
+                 nearest: list[str] | None = None,
+                 diagnostics: list[Diagnostic] | None = None) -> None:
+        super().__init__(message)
+        self.code, self.name = code, name
+        self.nearest = nearest or []
+        self.diagnostics = diagnostics or []
+
+
+def set_params(source: str, values: Mapping[str, str | float | bool],
+               path: str | os.PathLike = "<source>",
+               budget: float | Budget | None = None) -> tuple[str, Result]:
+    """The program ``source`` with the value of each top-level ``param NAME = VALUE`` named in
+    ``values`` replaced, and its :class:`Result`: ``(new text, result)``.  Only the value's
+    text changes (``param width = 40 mm, min=20 mm`` -> ``param width = 50 mm, min=20 mm``):
+    comments, spacing and every other line stay as written.  A value is a string read as the
+    program reads one (``"50 mm"``, ``"2 * 25"``), a number (in the file's units, written as
+    it is) or a bool; a string param's new text is quoted when it is not already.
+
+    The values are first checked as :func:`compile`'s ``overrides`` are (the kind of the
+    param's value, its declared ``min``/``max``).  Raises :class:`ParamsRefused`
+    (``no_match`` for an unknown name, with the nearest; ``bad_value`` with the E0113/E0124
+    diagnostic: nothing is returned to write), :class:`ValueError` for a program that does not
+    parse (its params cannot be found) or an empty ``values``."""
+    from .diagnostics import did_you_mean
+    from .parser import parse
+    from . import ast as A
+    if not values:
+        raise ValueError("give at least one param name and value")
+    name = os.fspath(path)
+    sink = DiagnosticSink()
+    program = parse(source, name, sink)
+    if sink.has_errors:
+        raise ValueError("the program does not parse: fix its syntax first (`check` says where)")
+    decls = {st.name: st for st in program.stmts if isinstance(st, A.ParamDecl)}
+    for k in values:
+        if k not in decls:
+            near = did_you_mean(str(k), list(decls), 3)
+            raise ParamsRefused(
+                f"the program has no param `{k}`"
+                + (f"; did you mean {', '.join(f'`{n}`' for n in near)}?" if near else "")
+                + (f" (params: {', '.join(sorted(decls))})" if decls else
+                   " (it declares none: add `param NAME = VALUE` at the top)"),
+                "no_match", str(k), near)
+    texts = {k: _param_text(v, decls[k].value) for k, v in values.items()}
+    # the values checked as overrides: the kind of value and the declared range
+    checked = compile(source=source, path=name, overrides=texts, budget=budget)
+    for d in checked.diagnostics:
+        if d.code in ("E0113", "E0124") and "`--set " in d.message:
+            at = next((k for k in texts if f"`--set {k}=" in d.message), next(iter(texts)))
+            d.message = d.message.replace("`--set ", "`")
+            if d.hint:
+                d.hint = d.hint.replace("`--set ", "`")
+            raise ParamsRefused(d.message, "bad_value", at, diagnostics=[d])
+    out, last = [], 0
+    for st in sorted((decls[k] for k in texts), key=lambda s: s.value.span.start):
+        out += [source[last:st.value.span.start], texts[st.name]]
+        last = st.value.span.end
+    text = "".join(out) + source[last:]
+    return text, compile(source=text, path=name, budget=budget)
+
+
+def _param_text(value, old) -> str:
+    """The text of a param's new ``value`` (as :func:`set_params` takes it) in place of the
+    expression ``old``: a bool as ``true``/``false``, a number as Python writes it, a string
+    as given, quoted when the param's value was a string literal and it is not quoted."""
+    from . import ast as A
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, float)):
+        if not math.isfinite(value):
+            raise ParamsRefused(f"{value!r} is not a finite number", "bad_value", "")
+        return repr(value) if isinstance(value, int) or not value.is_integer() \
+            else str(int(value))
+    text = str(value).strip()
+    if isinstance(old, A.Str) and not text.startswith('"'):
+        import json
+        return json.dumps(text)
+    if "\n" in text or not text:
+        raise ParamsRefused(f"a param's value is one line of text; got {value!r}",
+                            "bad_value", "")
+    return text

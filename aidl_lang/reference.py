@@ -49,6 +49,8 @@ KIND_TEXT = {
     "boxed": "a structure or a shape (anything with a `.bb`)",
     "any": "see the forms",
 }
+KIND_WORDS = {"angle": "an angle", "point": "a point (x, y)", "bool": "true or false",  # docs
+              "string": "text", "numbers": "a list of numbers", "any": "a value"}
 # the short unit note of a kind, for one-line signatures and hints
 KIND_UNIT = {"length": "length, mm", "angle": "angle, deg", "number": "number",
              "point": "point (x, y) mm", "points": "[(x, y), ...]", "bool": "true/false",
@@ -61,19 +63,22 @@ PARAM_GLOSS = {"cx": "x of the center's starting position (constraints may move 
 
 def kind_of_default(node) -> str:
     """The kind of a template parameter from its default expression: ``2 mm`` a length,
-    ``20 deg`` an angle, ``20`` a number, ``"x"`` a string, ``true`` a bool; else ``any``."""
+    ``20 deg`` an angle, ``20`` a number, ``"x"`` a string, ``true`` a bool, ``(0, 0)`` a point,
+    ``[12, 36]`` numbers (``lengths``, ``points``; else ``list``); else ``any``."""
     if isinstance(node, A.Neg):
         node = node.operand
     if isinstance(node, A.Num):
-        if node.unit is None:
-            return "number"
         return "length" if node.unit in UNITS_LENGTH else (
             "angle" if node.unit in UNITS_ANGLE else "number")
     if isinstance(node, (A.Str, A.FStr)):
         return "string"
     if isinstance(node, A.Name) and node.id in ("true", "false", "True", "False"):
         return "bool"
-    return "any"
+    if isinstance(node, A.ListLit):    # `[12, 36]` numbers, `[10 mm]` lengths, `[(0, 0)]` points
+        kinds = {kind_of_default(i) for i in node.items}
+        one = {"number": "numbers", "length": "lengths", "point": "points"}
+        return one.get(*kinds, "list") if len(kinds) == 1 else "list"
+    return "point" if isinstance(node, A.TupleLit) and len(node.items) == 2 else "any"
 
 
 def default_text(node) -> str:
@@ -89,7 +94,10 @@ def default_text(node) -> str:
         return '"' + node.value.replace('"', '\\"') + '"'
     if isinstance(node, A.Name):
         return node.id
-    return "..."
+    inner = [default_text(i) for i in getattr(node, "items", ())[:9]]   # a list or tuple
+    brackets = "[]" if isinstance(node, A.ListLit) else "()"
+    return brackets[0] + ", ".join(inner) + brackets[1] if isinstance(node, (
+        A.TupleLit, A.ListLit)) and len(inner) <= 8 and "..." not in inner else "..."
 
 
 def template_signature(d: A.Def) -> str:
@@ -111,7 +119,7 @@ def units_line(pairs) -> str:
              "string": "text", "line": "lines", "circular": "circles or arcs",
              "centered": "shapes with a center, or points",
              "curve": "lines, circles or arcs", "geometry": "shapes or points",
-             "boxed": "structures or shapes", "any": "values"}
+             "boxed": "structures or shapes", "any": "values", "numbers": "lists of numbers"}
     out = [f"{heads.get(k, k)}: {', '.join(v)}" for k, v in groups.items()]
     gloss = [f"{n}: {PARAM_GLOSS[n]}" for n, _ in pairs if n in PARAM_GLOSS]
     if {"cx", "cy"} <= {n for n, _ in pairs}:
@@ -330,7 +338,8 @@ def _template_topic(t: StdTemplate) -> Topic:
              "", "Signature:", f"  {t.signature}", "", "Parameters:"]
     for n, kind, d in t.params:
         gloss = f"; {PARAM_GLOSS[n]}" if n in PARAM_GLOSS else ""
-        lines.append(f"  {n} = {d}: {kind}{gloss}")
+        said = KIND_WORDS.get(kind, f"a list of {kind}" if kind[-1] == "s" else f"a {kind}")
+        lines.append(f"  {n}: {said}, required{gloss}" if not d else f"  {n} = {d}: {said}{gloss}")
     lines += _units_block(k for _, k, _ in t.params)
     if t.members:
         lines += ["", "Members (reach them by path: `g.NAME`, `g.NAME.center`): "

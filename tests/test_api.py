@@ -266,7 +266,8 @@ def test_the_facade_holds_only_the_promised_api():
                  "declared_params", "default_span"):
         assert gone not in vars(api), gone
     assert set(api.__all__) == {"compile", "Result", "Value", "PartInfo", "Layout",
-                                "NotCompiled", "WriteError"} == set(aidl_lang.__all__)
+                                "NotCompiled", "WriteError", "set_params",
+                                "ParamsRefused"} == set(aidl_lang.__all__)
     assert api.WriteError is write.WriteError is aidl_lang.WriteError is WriteError
     assert issubclass(WriteError, OSError)
     assert callable(params.declared_params) and callable(write.check_output_path)

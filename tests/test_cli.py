@@ -306,7 +306,8 @@ def test_parser_for_one_subcommand_parses_as_the_full_parser():
                ["check", "a.aidl", "--values", "plate.bore", "--json"], ["explain", "E0202"],
                ["docs", "SpurGear"], ["docs"], ["import", "b.dxf", "-o", "b.aidl", "--units", "in", "--layer", "Edge.Cuts"],
                ["parts", "a.aidl", "--json", "--set", "w=3mm"],
-               ["fmt", "--check", "a.aidl", "b.aidl"], ["lsp", "--stdio", "--clientProcessId=7"],
+               ["fmt", "--check", "a.aidl", "b.aidl"], ["set", "a.aidl", "w=3mm", "--json"],
+               ["lsp", "--stdio", "--clientProcessId=7"],
                ["serve", "a.aidl", "--port", "0"],
                ["studio", "--host", "0.0.0.0", "--port", "0", "--processes", "2", "--compilers", "3",
                 "--rate", "60/minute", "--memory", "800", "--budget", "2"], ["mcp", "--root", "parts", "--budget", "2"],
@@ -348,3 +349,23 @@ def test_values_before_the_file_does_not_swallow_it(good):
     assert "s.h.c.radius" in got and "s.body.width" in got and "s.body.height" not in got
     none = aidl("check", "--values")
     assert none.returncode == 2 and "required: file" in none.stderr
+
+
+def test_aidl_set_rewrites_param_values_and_checks(tmp_path, capsys):
+    """`aidl set FILE NAME=VALUE ...` (issue 86): only each value's text changes, then the
+    file is checked; a value outside its declared range is E0124 at the range, the file left
+    as it was; an unknown name says the nearest."""
+    from aidl_lang.cli.main import main as aidl
+    text = ("units mm\n# a plate\nparam width = 40 mm, min=20 mm, max=80 mm   # the width\n"
+            "param holes = 4\n\nsolid plate {\n"
+            "    body = Rectangle(center=(0, 0), width=width, height=20)\n}\n")
+    f = tmp_path / "p.aidl"
+    f.write_text(text)
+    assert aidl(["set", str(f), "width=50 mm", "holes=6"]) == 0
+    assert f.read_text() == text.replace("= 40 mm,", "= 50 mm,").replace("= 4\n", "= 6\n")
+    assert f"{f}: ok" in capsys.readouterr().out
+    for arg, said in (("width=500 mm", "error[E0124]: `width=500 mm`: 500 mm is outside"),
+                      ("widht=5", "no param `widht`; did you mean `width`?")):
+        assert aidl(["set", str(f), arg]) == 1
+        assert said in capsys.readouterr().err
+        assert "= 50 mm," in f.read_text()

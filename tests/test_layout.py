@@ -272,8 +272,32 @@ def test_a_part_larger_than_the_sheet_is_an_error_naming_it(tmp_path, capsys):
     assert main(["render", str(prog), "--layout", "sheet", "--sheet", "70x70mm",
                  "-o", str(tmp_path / "c.svg")]) == 1
     err = capsys.readouterr().err
-    assert "part `box.bottom` (80 x 60 mm) does not fit on the 70 x 70 mm sheet" in err
+    assert "part `box.bottom` (80 x 60 mm) is larger than the 70 x 70 mm sheet" in err, err
     assert "Traceback" not in err and not list(tmp_path.glob("*.svg"))
+
+
+def test_a_layout_error_suggests_only_what_helps(tmp_path):
+    """A 100 x 80 part on a 50 x 50 sheet: no angle fits it, so no `--rotate any`; it is
+    larger in both orders, and the sheet that holds it is named (issue 86). On 90 x 120 at
+    0 degrees turning it fits; on 200 x 82 only a smaller gap does."""
+    import aidl_lang
+    from aidl_lang.output.fabrication.layout import LayoutError
+    r = aidl_lang.compile(source="units mm\nsolid plate { body = Rectangle(center=(0, 0), "
+                                 "width=100, height=80) }\n")
+
+    def said(sheet, rotate):
+        with pytest.raises(LayoutError) as e:
+            r.layout(sheet, 3.0, rotate)
+        return str(e.value)
+
+    text = said((50.0, 50.0), (0.0, 90.0))
+    assert "in both orders" in text and "--rotate any" not in text and "--gap" not in text
+    assert "--sheet 87x107mm" in text
+    r.layout((87.0, 107.0), 3.0, (0.0, 90.0))          # the sheet it names holds it
+    text = said((90.0, 120.0), (0.0,))
+    assert "--rotate any" in text and "in both orders" not in text
+    text = said((200.0, 82.0), (0.0,))
+    assert "a smaller --gap" in text and "--rotate any" not in text
 
 
 def test_free_rotation_and_rigid_motions_are_exact(tmp_path):

@@ -61,7 +61,7 @@ async def test_mcp_server_over_stdio(tmp_path):
             await session.initialize()
             tools = {t.name: t for t in (await session.list_tools()).tools}
             assert set(tools) == {"check", "render", "values", "describe", "explain", "docs",
-                                  "import_drawing", "write_program"}
+                                  "import_drawing", "write_program", "set_params", "measure"}
             assert "source" in tools["check"].input_schema["properties"]
             assert tools["check"].annotations.read_only_hint
             assert not tools["render"].annotations.read_only_hint
@@ -141,7 +141,7 @@ async def test_mcp_server_over_stdio(tmp_path):
             from aidl_lang.reference import find, index_text, topics
             r = await session.call_tool("docs", {"name": "SpurGear"})
             assert not r.is_error and _text(r) == find("spur_gear").render()
-            assert "bore_hole" in _text(r) and "phase = 0 deg: angle" in _text(r)
+            assert "bore_hole" in _text(r) and "phase = 0 deg: an angle" in _text(r)
             from aidl_lang.mcp.wording import for_agents
             assert _text(await session.call_tool("docs", {})) == for_agents(index_text())
             r = await session.call_tool("docs", {"name": "spur_gaer"})
@@ -233,7 +233,7 @@ async def test_tool_schemas_describe_every_argument_with_its_values_and_ranges(t
             await session.initialize()
             tools = {t.name: t for t in (await session.list_tools()).tools}
             assert set(tools) == {"check", "render", "values", "describe", "explain", "docs",
-                                  "import_drawing", "write_program"}
+                                  "import_drawing", "write_program", "set_params", "measure"}
             # an argument several tools take alike is described in full once, in the first
             # of them; the others say `as in `FIRST`` (issue 86: tools/list in few tokens)
             for t in tools.values():

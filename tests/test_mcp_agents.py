@@ -237,7 +237,7 @@ async def test_render_takes_the_cli_layout_sheet_kerf_and_thickness(tmp_path):
                            ({"kerf": "wide"}, "kerf"), ({"kerf": 11}, "kerf"),
                            ({"thickness": -1}, "thickness"),
                            ({"layout": "sheet", "rotate": "sideways"}, "rotate"),
-                           ({"layout": "sheet", "sheet": "20x20mm"}, "does not fit")):
+                           ({"layout": "sheet", "sheet": "20x20mm"}, "is larger than the")):
             r = await session.call_tool("render", {"source": MIXED, "width": 64, **args})
             assert r.is_error and said in _text(r), (args, _text(r))
 
@@ -284,7 +284,8 @@ async def test_messages_name_tools_and_arguments_not_command_line_flags(tmp_path
         assert _text(r).startswith('Call `docs` with name="NAME" for a topic:')
         r = await session.call_tool("render", {"source": MIXED, "layout": "sheet",
                                                "sheet": "30x30mm"})
-        assert r.is_error and "use a larger `sheet`" in _text(r) and "--" not in _text(r)
+        assert r.is_error and 'use a sheet of 46.02 x 66.02 mm or larger (sheet="47x67mm")' in \
+            _text(r) and "--" not in _text(r) and "rotate" not in _text(r)
     # the command line's (and the API's) own wording
     r = aidl_lang.compile(source=width, overrides={"nope": 1})
     assert r.errors[0].message == "`--set nope=...`: the model has no param `nope`"

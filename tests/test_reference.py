@@ -68,13 +68,17 @@ def test_every_topic_example_compiles_cleanly(name):
 def test_topic_gives_signature_units_and_members():
     text = find("spur_gear").render()
     assert "spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm" in text
-    assert "phase = 0 deg: angle" in text and "angle: degrees (`30` or `30 deg`" in text
-    assert "cx = 0 mm: length" in text and "center's starting position" in text
-    assert "teeth = 20: number" in text
+    assert "phase = 0 deg: an angle" in text and "angle: degrees (`30` or `30 deg`" in text
+    assert "cx = 0 mm: a length" in text and "center's starting position" in text
+    assert "teeth = 20: a number" in text
     for m in ("bore_hole", "pitch", "hub", "teeth_ring"):
         assert m in text.split("Members")[-1]
     assert "hub.center" in text                             # where the gear's center is
     assert 'import "std/gears.aidl"' in text
+    # a list default is shown with its kind, not `teeth = ...: any` (issue 86)
+    train = find("gear_train").render()
+    assert "teeth = [12, 36, 12, 30]: a list of numbers" in train
+    assert "gear_train(teeth=[12, 36, 12, 30], module=2 mm" in train
     circle = find("Circle").render()
     assert "Circle(center, radius)" in circle and "Circle(center, diameter)" in circle
     assert "radius: length" in circle and "length: a number in the file's unit" in circle
@@ -313,3 +317,22 @@ def test_rigid_ties_two_structures_together(tmp_path):
     assert "Rigid(a, b)" in str([lab.message for lab in e.labels])
     res = compile_source(src % "assert b.c.center == (8, 2)", str(tmp_path / "p.aidl"))
     assert res.ok and not [d for d in res.sink.items if d.severity == "error"]
+
+
+def test_template_parameters_say_their_kind_and_a_missing_default_as_required():
+    """Issue 86: a template parameter without a default is `required`, lists say what they
+    hold, a point default is a point."""
+    from aidl_lang import ast as A
+    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.parser import parse
+    from aidl_lang.reference import StdTemplate, _template_topic
+    src = ("def tray(cells, widths=[10 mm, 20 mm], at=(0, 0), spots=[(1, 2), (3, 4)],\n"
+           "         rows=[[1, 2], [3, 4]]) -> solid {\n"
+           "    body = Rectangle(center=at, width=10, height=10)\n}\n")
+    d = next(s for s in parse(src, "t.aidl", DiagnosticSink()).stmts if isinstance(s, A.Def))
+    text = _template_topic(StdTemplate("tray", "trays", d, "A tray.", ())).render()
+    assert "  cells: a value, required" in text
+    assert "  widths = [10 mm, 20 mm]: a list of lengths" in text
+    assert "  at = (0, 0): a point (x, y)" in text
+    assert "  spots = [(1, 2), (3, 4)]: a list of points" in text
+    assert "  rows = [[1, 2], [3, 4]]: a list" in text

@@ -61,8 +61,8 @@ class _Parser(argparse.ArgumentParser):
         raise SystemExit(2)
 
 
-SUBCOMMANDS = ("render", "check", "parts", "explain", "docs", "import", "fmt", "lsp", "serve", "studio", "mcp",
-               "batch", "prompt", "generate", "eval")
+SUBCOMMANDS = ("render", "check", "parts", "explain", "docs", "import", "fmt", "set", "lsp", "serve",
+               "studio", "mcp", "batch", "prompt", "generate", "eval")
 
 
 class _Unused:
@@ -134,6 +134,16 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
     f = add("fmt", help="format .aidl files in place (canonical layout)")
     f.add_argument("files", nargs="+", metavar="FILE", help="files to format; - for stdin")
     f.add_argument("--check", action="store_true", help="write nothing; exit 1 if any would change")
+    st = add("set", help="change param values in a .aidl file, then check it",
+             description="Rewrite the value of each `param NAME = VALUE` line named (only the "
+                         "value's text: comments and formatting stay), after checking it "
+                         "against the param's kind and min/max (refused: the file is left "
+                         "as it was), then check the file as `aidl check` does.")
+    st.add_argument("file", metavar="FILE", help="the .aidl program")
+    st.add_argument("values", nargs="+", metavar="NAME=VALUE",
+                    help="e.g. width=\"50 mm\" holes=6 (bare numbers in the file's unit)")
+    st.add_argument("--json", action="store_true", help="the check's result as JSON")
+    _budget_arg(st)
     lsp = add("lsp", help="run the language server on stdin/stdout (for editors)")
     # What LSP clients append (vscode-languageclient: `--stdio` for its stdio transport, and
     # `--clientProcessId=N`; `--node-ipc`, `--pipe=NAME`, `--socket=N` for its other transports).

@@ -706,6 +706,45 @@ def cmd_fmt(args) -> int:
     return fmt_main(args.files, check=args.check)
 
 
+def cmd_set(args) -> int:
+    """``aidl set FILE NAME=VALUE ...``: the params' values rewritten in the file
+    (:func:`aidl_lang.api.set_params`), then ``aidl check FILE``; a value refused (an unknown
+    name, the wrong kind, outside its range) leaves the file as it was: exit 1."""
+    from ..api import ParamsRefused, set_params
+    from ..output.writers.write import WriteError, write_atomic
+    values = {}
+    for it in args.values:
+        if "=" not in it:
+            return _usage(f"`aidl set` takes NAME=VALUE, got `{it}`")
+        k, v = it.split("=", 1)
+        values[k.strip()] = v.strip()
+    source = _read(args.file, args.json)
+    if source is None:
+        return 1
+    try:
+        text, _ = set_params(source, values, args.file, _budget(args))
+    except ParamsRefused as e:
+        if e.diagnostics:
+            sink = DiagnosticSink()
+            sink.sources[args.file] = source
+            for d in e.diagnostics:
+                sink.add(d)
+            _emit(sink, args.json, False)
+        else:
+            print(f"aidl: error: {e}", file=sys.stderr)
+        return 1
+    except ValueError as e:
+        print(f"aidl: error: {e}", file=sys.stderr)
+        return 1
+    try:
+        write_atomic(Path(args.file), text.encode("utf-8"))
+    except WriteError as e:
+        print(f"aidl: error: {e}", file=sys.stderr)
+        return 1
+    return main(["check", args.file] + (["--json"] if args.json else [])
+                + [f"--budget={args.budget:g}"])
+
+
 def cmd_lsp(args) -> int:
     for flag, given in (("--node-ipc", args.node_ipc), ("--pipe", args.pipe),
                         ("--socket", args.socket)):
@@ -792,7 +831,7 @@ def main(argv: list[str] | None = None, cap_memory: bool = False) -> int:
     try:
         run = {"check": cmd_check, "render": cmd_render, "parts": cmd_parts,
                "explain": cmd_explain, "docs": cmd_docs,
-               "fmt": cmd_fmt, "lsp": cmd_lsp, "serve": cmd_serve, "studio": cmd_studio, "mcp": cmd_mcp,
+               "fmt": cmd_fmt, "set": cmd_set, "lsp": cmd_lsp, "serve": cmd_serve, "studio": cmd_studio, "mcp": cmd_mcp,
                "batch": cmd_batch, "import": cmd_import}.get(args.cmd)
         if run is None:
             from .llm import COMMANDS

@@ -236,11 +236,11 @@ def line(tool: str, doc: dict) -> str:
     if not doc.get("ok", True):
         return "not ok: " + doc.get("summary", "see diagnostics")
     said = ["ok"]
-    if tool == "write_program":
+    if tool in ("write_program", "set_params"):
         said = [f"wrote {doc.get('written')}", "ok" if doc.get("ok") else "not ok"]
-    if tool in ("check", "render", "write_program"):
+    if tool in ("check", "render", "write_program", "set_params"):
         said.append(_parts(doc))
-    if tool == "check" or tool == "write_program":
+    if tool in ("check", "write_program", "set_params"):
         f = doc.get("freedom") or {}
         if f.get("dof") is not None:
             said.append(f"{f['dof']} degrees of freedom left")
@@ -261,6 +261,15 @@ def line(tool: str, doc: dict) -> str:
         g = [v for v in vs if v.get("kind") == "group"]
         said.append(_plural(len(vs), "value") + (f" ({len(g)} groups of copies; "
                                                  "detail=true lists each)" if g else ""))
+    if tool == "measure" and doc.get("measure"):
+        m = doc["measure"]
+        said.append(", ".join(f"{k} {m[k]:g}" + ("" if k == "angle" else " mm")
+                              for k in ("distance", "center_distance", "angle", "clearance")
+                              if k in m) + (f" ({m['contact']})" if "contact" in m else ""))
+    if tool == "import_drawing" and doc.get("check"):
+        c = doc["check"]
+        said.append(("checked ok" if c.get("ok") else "check: " + c.get("summary", "not ok"))
+                    + ("; " + _parts(c) if c.get("parts") else ""))
     if tool == "describe" and doc.get("text"):
         said.append(doc["text"].splitlines()[-1])
     said.append(_warnings(doc))

@@ -137,6 +137,30 @@ class WriteResult(CheckResult):
     lines: NotRequired[int]
 
 
+class SetParamsResult(CheckResult):
+    """``set_params``: the file with its params set, then checked."""
+    written: NotRequired[Annotated[str, Field(description="the file, relative to the root")]]
+
+
+class Measured(TypedDict):
+    """What lies between two named entities, mm and degrees (exact to 1e-9)."""
+    a: dict[str, str]
+    b: dict[str, str]
+    unit: str
+    distance: Annotated[float, Field(description="smallest distance between them")]
+    points: Annotated[list[list[float]], Field(description="where: [[x, y], [x, y]]")]
+    center_distance: NotRequired[float]
+    angle: NotRequired[Annotated[float, Field(description="two lines: 0 to 180 degrees")]]
+    clearance: NotRequired[Annotated[float, Field(
+        description="two shapes or parts: the gap; 0 touching; negative overlapping")]]
+    contact: NotRequired[Literal["apart", "touching", "overlapping"]]
+    overlap_area: NotRequired[Annotated[float, Field(description="mm² shared")]]
+
+
+class MeasureResult(_Compiled):
+    measure: NotRequired[Measured]
+
+
 class Value(TypedDict):
     """One solved value of a named entity."""
     name: Annotated[str, Field(description="dotted path, e.g. plate.bore.c.center")]
@@ -223,11 +247,21 @@ class ImportProblem(TypedDict):
     line: Annotated[int | None, Field(description="the DXF line of the entity, when known")]
 
 
+class ImportCheck(TypedDict):
+    """The check of the program written, in short."""
+    ok: bool
+    summary: NotRequired[Annotated[str, Field(description="with errors: one line each")]]
+    warnings: NotRequired[Annotated[list[str], Field(description="`W0502 line 4: ...`")]]
+    dof: NotRequired[Annotated[int | None, Field(description="degrees of freedom left")]]
+    parts: NotRequired[list[Part]]
+
+
 class ImportResult(TypedDict):
     """``import_drawing``: the program written from a drawing (docs/import.md)."""
     ok: bool
     program: NotRequired[Annotated[str, Field(description="the AIDL program's text")]]
     notes: NotRequired[list[ImportNote]]
     output: NotRequired[Annotated[str, Field(description="the .aidl file written")]]
+    check: NotRequired[ImportCheck]
     diagnostics: NotRequired[list[ImportProblem]]
     error: NotRequired[Error]

@@ -4,7 +4,9 @@
 Tools: ``check``, ``render`` (a file written inside the root and its figures; a PNG image
 block with ``picture``),
 ``values``, ``describe`` (the final part in words), ``import_drawing`` (``aidl import
-[--infer]`` of a DXF or SVG in the root), ``explain``, ``docs``.  The compiling four
+[--infer]`` of a DXF or SVG in the root, with the check of the program), ``write_program``,
+``set_params`` (params rewritten in a file), ``measure`` (distance, angle, clearance between
+named entities), ``explain``, ``docs``.  The compiling four
 run side by side in a pool of worker processes (:mod:`.worker`) and return structured content
 of the output schemas of :mod:`.schemas`; their input schemas take exactly one of ``source``
 and ``path`` and nothing they do not list (:class:`_Server` refuses the rest).  ``tools/list``
@@ -38,8 +40,8 @@ from ..sources import MAX_DRAWING_BYTES
 from . import compact as C
 from . import stdio
 from . import tools as T
-from .schemas import (CheckResult, DescribeResult, ImportResult, RenderResult, ValuesResult,
-                      WriteResult)
+from .schemas import (CheckResult, DescribeResult, ImportResult, MeasureResult, RenderResult,
+                      SetParamsResult, ValuesResult, WriteResult)
 from .wording import for_agents
 
 # what one program may build (aidl_lang/limits.py, the parser's and the importer's limits),
@@ -134,6 +136,12 @@ Start = Annotated[int | None, Field(
     ge=0)]
 End = Annotated[int | None, Field(
     description="Patch: offset after the last character replaced (a span's end).", ge=0)]
+ParamValues = Annotated[dict[str, str | int | float | bool], Field(
+    description="Param name -> new value: \"50 mm\", 50 (file units), true.",
+    min_length=1, max_length=200)]
+EntityName = Annotated[str, Field(
+    description="A name as `values` gives it: a point, line, circle, shape, part "
+                "(plate.bore.c, gear_a).", min_length=1, max_length=500)]
 Code = Annotated[str, Field(
     description="A diagnostic code, e.g. E0103 or W0402.", min_length=1, max_length=16)]
 TopicName = Annotated[str | None, Field(
@@ -153,8 +161,9 @@ spur_gear, assert, ...) for its units, members and an example, or read aidl://do
 for the full reference. Write a program, call `check` until it reports \
 ok (each diagnostic has a code, a located span, a hint and often a fix; `explain` a code for \
 more), then `render` to write the file and read its figures (picture=true to see it), `describe` to read the final part in words (outline, openings \
-with centres and sizes, texts, symmetries) and `values` to read exact positions and sizes. Paths are \
-relative to the server's allowed folder; nothing outside it can be read or written."""
+with centres and sizes, texts, symmetries), `values` to read exact positions and sizes and \
+`measure` for the distance, angle or clearance between two of them; `set_params` changes a \
+file's params. Paths are relative to the server's allowed folder; nothing outside it can be read or written."""
 
 _PKG = Path(__file__).resolve().parent.parent
 # the two references the server offers as resources, inside the package (links to docs/ in a
@@ -582,6 +591,26 @@ def build_server(root: str, budget: float = 1.0,
             d = doc["diagnostics"][0]
             doc["error"] = {"code": d["code"], "message": d["message"]}
         return answer("import_drawing", doc)
+
+    @tool(writes)
+    def set_params(path: WritePath, values: ParamValues, dof: Dof = False,
+                   budget: Budget = None, detail: Detail = False
+                   ) -> Annotated[CallToolResult, SetParamsResult]:
+        """Change `param` values in a .aidl file: only each value's text is rewritten
+        (comments, formatting kept), checked against the param's kind and min/max first
+        (refused: file untouched), then checked as `check`. Unknown name: no_match."""
+        return answer("set_params", work.call("set_params", path, values, dof, budget,
+                                              budget=budget), detail=detail)
+
+    @tool(reads)
+    def measure(a: EntityName, b: EntityName, source: Source = None,
+                path: ProgramPath = None, overrides: Overrides = None,
+                budget: Budget = None) -> Annotated[CallToolResult, MeasureResult]:
+        """Between two named entities of the solved program, mm, exact: distance and
+        points, center_distance, angle (two lines), clearance and contact (two shapes or
+        parts: apart, touching, overlapping as negative)."""
+        return answer("measure", work.call("measure", a, b, source, path, overrides, budget,
+                                           budget=budget))
 
     @tool(reads, structured=False)
     def explain(code: Code) -> str:

@@ -40,7 +40,7 @@ def one_program(source: str | None, path: str | None) -> None:
     :class:`Refused`."""
     if (source is None) == (path is None):
         raise Refused("give exactly one of `source` (program text) or `path` (a .aidl file "
-                      "inside the allowed folder)", "program_choice")
+                      "inside the allowed folder)", "program_choice", "source")
 
 
 def check_arguments(tool: str, arguments: dict, accepted: list[str]) -> None:
@@ -72,18 +72,19 @@ class Workspace:
             raise NotADirectoryError(f"`{root}` is not a folder")
         self.budget = budget
 
-    def inside(self, path: str, must_exist: bool = False) -> Path:
-        """The real path of ``path`` (relative to the root, or absolute), checked to be inside
-        the root.  Raises :class:`Refused`."""
+    def inside(self, path: str, must_exist: bool = False, argument: str = "path") -> Path:
+        """The real path of ``path`` (relative to the root, or absolute; the tool's argument
+        ``argument``), checked to be inside the root.  Raises :class:`Refused`."""
         if not isinstance(path, str) or not path or "\x00" in path:
-            raise Refused("give a path as a non-empty string")
+            raise Refused("give a path as a non-empty string", "bad_argument", argument)
         p = Path(path)
         if not p.is_absolute():
             p = self.root / p
         try:
             real = Path(os.path.realpath(p))
         except (OSError, ValueError):          # a link swapped while it was resolved
-            raise Refused(f"`{path}` changed while it was being resolved; try again") from None
+            raise Refused(f"`{path}` changed while it was being resolved; try again",
+                          "not_found", argument) from None
         if real != self.root and self.root not in real.parents:
             link = self._link_in(p)
             if link is not None:
@@ -91,12 +92,12 @@ class Workspace:
                               f"the allowed folder), which points to `{link[1]}`: that target "
                               f"is outside the allowed folder {self.root} (the server's "
                               "`--root`); only files inside it can be read or written",
-                              "outside_root", "path")
+                              "outside_root", argument)
             raise Refused(f"`{path}` is outside the allowed folder {self.root} (the server's "
                           "`--root`); only files inside it can be read or written",
-                          "outside_root", "path")
+                          "outside_root", argument)
         if must_exist and not real.is_file():
-            raise Refused(f"`{path}` is not a file in {self.root}", "not_found", "path")
+            raise Refused(f"`{path}` is not a file in {self.root}", "not_found", argument)
         return real
 
     def _link_in(self, p: Path) -> tuple[str, str] | None:
@@ -118,18 +119,18 @@ class Workspace:
                 return at.relative_to(self.root).as_posix(), target
         return None
 
-    def output(self, path: str) -> Path:
+    def output(self, path: str, argument: str = "output") -> Path:
         """The output file ``path`` (relative to the root, or absolute inside it) as a path
         below the root, ``..`` taken as written, with no symbolic link in any of its
         components: a link is refused wherever it points, inside the root too (outputs are
         never written through a link).  The file and its folders need not exist.  Raises
         :class:`Refused`."""
         if not isinstance(path, str) or not path or "\x00" in path:
-            raise Refused("give a path as a non-empty string")
+            raise Refused("give a path as a non-empty string", "bad_argument", argument)
         p = Path(path)
         outside = Refused(f"`{path}` is outside the allowed folder {self.root} (the server's "
                           "`--root`); only files inside it can be read or written",
-                          "outside_root", "output")
+                          "outside_root", argument)
         if p.is_absolute():
             try:
                 p = p.relative_to(self.root)
@@ -154,10 +155,10 @@ class Workspace:
                     raise Refused(f"`{path}` {link} the symbolic link "
                                   f"`{'/'.join(parts)}`{to}; files are never written through "
                                   "a link, even one inside the allowed folder: give a path of "
-                                  "real folders and files", "symlink", "output")
+                                  "real folders and files", "symlink", argument)
         if not parts:
             raise Refused(f"`{path}` is the allowed folder itself; give a file name",
-                          "bad_argument", "output")
+                          "bad_argument", argument)
         return self.root.joinpath(*parts)
 
     def relative(self, p: Path | str) -> str:
@@ -335,7 +336,7 @@ def _mm(value, name: str, example: str, zero: bool = False, most: float | None =
     if v is None or most is not None and v > most:
         size = "of 0 or more" if zero else "above 0" + (f" up to {most:g} mm" if most else "")
         raise Refused(f"{name} is a length {size}: a number of mm or a string with its unit, "
-                      f"such as {example}; got {value!r}")
+                      f"such as {example}; got {value!r}", "bad_argument", name)
     return v
 
 
@@ -372,57 +373,64 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
     size).  Lengths are numbers of mm or strings with a unit.  ``machine``: G-code's machine
     profile, ``laser``, ``router``, ``plotter`` or a TOML file inside the allowed folder."""
     if not isinstance(width, int) or not 16 <= width <= MAX_PNG_WIDTH:
-        raise Refused(f"width is a number of pixels from 16 to {MAX_PNG_WIDTH}; got {width!r}")
+        raise Refused(f"width is a number of pixels from 16 to {MAX_PNG_WIDTH}; got {width!r}",
+                      "bad_argument", "width")
     if style not in ("preview", "laser"):
-        raise Refused("style is `preview` or `laser`")
+        raise Refused("style is `preview` or `laser`", "bad_argument", "style")
     from ..output.fabrication.layout import parse_rotate, parse_sheet
     if layout not in (None, "sheet"):
-        raise Refused(f"layout is \"sheet\" (the cutting sheets) or not given; got {layout!r}")
+        raise Refused(f"layout is \"sheet\" (the cutting sheets) or not given; got {layout!r}",
+                      "bad_argument", "layout")
     if layout is None and (sheet, gap, rotate) != (None, None, None):
         raise Refused("`sheet`, `gap` and `rotate` are for a cutting layout: add "
-                      "layout=\"sheet\"")
+                      "layout=\"sheet\"", "bad_argument",
+                      next(k for k, v in (("sheet", sheet), ("gap", gap), ("rotate", rotate))
+                           if v is not None))
     if layout and assembled:
         raise Refused("`assembled` and `layout` do not go together: the assembled product is "
-                      "in 3D, a layout is flat")
+                      "in 3D, a layout is flat", "bad_argument", "assembled")
     sheet_mm = parse_sheet(sheet) if isinstance(sheet, str) else (600.0, 400.0)
     if sheet is not None and (not isinstance(sheet, str) or sheet_mm is None):
         raise Refused(f"sheet is WIDTHxHEIGHT with a unit, such as \"600x400mm\" or "
-                      f"\"24x12in\"; got {sheet!r}")
+                      f"\"24x12in\"; got {sheet!r}", "bad_argument", "sheet")
     gap_mm = _mm(gap, "gap", "3 or \"3mm\"", zero=True)
     try:
         turns = parse_rotate("0,90" if rotate is None else str(rotate))
     except ValueError:
         raise Refused(f"rotate is the angles in degrees parts may be turned by, such as "
-                      f"\"0,90\" or \"0\", or \"any\"; got {rotate!r}") from None
+                      f"\"0,90\" or \"0\", or \"any\"; got {rotate!r}", "bad_argument",
+                      "rotate") from None
     kerf_mm = _mm(kerf, "kerf", "0.15 or \"0.15mm\"", most=10.0)
     thick_mm = _mm(thickness, "thickness", "3 or \"3mm\"")
     target = ws.output(output) if output is not None else None
     from ..output.fabrication.machine import KINDS, MachineError, default, load
     try:
         prof = None if machine is None else default(machine) if machine in KINDS else \
-            load(ws.inside(machine, must_exist=True))
+            load(ws.inside(machine, must_exist=True, argument="machine"))
     except MachineError as e:
-        raise Refused(str(e)) from None
+        raise Refused(str(e), "bad_argument", "machine") from None
     if page is not None:
         from ..output import OutputError
         from ..output.writers.pdf import page_size
         if target is None or target.suffix.lower() != ".pdf":
             raise Refused("page is the paper size of a PDF template: give an output "
-                          "ending in .pdf")
+                          "ending in .pdf", "bad_argument", "page")
         try:
             page_size(str(page))
         except OutputError as e:
-            raise Refused(str(e)) from None
+            raise Refused(str(e), "bad_argument", "page") from None
     if assembled and target is not None:
         from ..output import ASSEMBLED_FORMATS
         if target.suffix.lower() not in ASSEMBLED_FORMATS:
             raise Refused(f"assembled, the output is .stl, .3mf, .step, .glb or .png, not "
-                          f"`{target.suffix}` (SVG and DXF are the flat parts)")
+                          f"`{target.suffix}` (SVG and DXF are the flat parts)", "wrong_kind",
+                          "output")
     r = ws.compile(source, path, overrides, budget)
     doc = _summary(ws, r)
     if not r.ok:
         return doc, []
     from ..output import MissingDependency, OutputError
+    from ..output.fabrication.layout import LayoutError
     from ..output.writers.write import check_output_path
     prog = None if path is None else str(ws.inside(path))
     drawn = {"style": style, "width": width, "thickness": thick_mm}
@@ -457,8 +465,12 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
                 if not assembled and out.suffix.lower() not in _SOLID_FORMATS:
                     from ..output import for_cutting
                     doc["job"] = _job([for_cutting(r.output, kerf_mm)], prof, thick_mm)
+    except LayoutError as e:                # a part larger than the sheet
+        raise Refused(str(e), "bad_argument", "sheet") from None
     except (MissingDependency, OutputError, WriteError, NotCompiled, OSError) as e:
-        raise Refused(str(e), "output_failed", "output") from None
+        raise Refused(str(e), "output_failed", "output" if target is not None else
+                      "layout" if layout else "source" if source is not None else "path") \
+            from None
     doc["parts"] = [p.to_json() for p in r.parts]
     boxes = [p["bbox"] for p in doc["parts"]]
     if boxes:
@@ -574,14 +586,16 @@ def import_drawing(ws: Workspace, path: str, infer: bool = True, parts: bool = F
     if Path(path).suffix.lower() not in (".dxf", ".svg"):
         raise Refused(f"`{path}` is not a .dxf or .svg drawing", "wrong_kind", "path")
     if units is not None and units not in ("mm", "cm", "m", "in", "ft", "pt", "px"):
-        raise Refused(f"units is one of mm, cm, m, in, ft, pt, px; got {units!r}")
+        raise Refused(f"units is one of mm, cm, m, in, ft, pt, px; got {units!r}",
+                      "bad_argument", "units")
     target = ws.output(output) if output is not None else None
     if target is not None and target.suffix.lower() != ".aidl":
-        raise Refused(f"`{output}` is not an .aidl file: the import writes a program")
+        raise Refused(f"`{output}` is not an .aidl file: the import writes a program",
+                      "wrong_kind", "output")
     k = ws.budget if budget is None else budget
     if not isinstance(k, (int, float)) or not 0 < k <= MAX_BUDGET:
         raise Refused(f"budget is a factor of the default evaluation budget, between 0 and "
-                      f"{MAX_BUDGET:g}; got {budget!r}")
+                      f"{MAX_BUDGET:g}; got {budget!r}", "bad_argument", "budget")
     data = ws.read_bytes(real, MAX_DRAWING_BYTES, path)
     try:
         text, notes = _import(data, path, unit=units, parts=parts, infer=infer,
@@ -597,7 +611,27 @@ def import_drawing(ws: Workspace, path: str, infer: bool = True, parts: bool = F
         except OSError as e:
             raise Refused(str(e), "output_failed", "output") from None
         doc["output"] = ws.relative(target)
+    doc["check"] = _check_summary(ws, text, target or real.with_suffix(".aidl"), k)
     return doc
+
+
+def _check_summary(ws: Workspace, text: str, where: Path, budget: float) -> dict:
+    """The check of the program ``text`` (compiled as the file ``where``) in short: ``{"ok",
+    "dof", "parts", "warnings": ["W0502 line 4: ...", ...], "summary"?}`` (issue 86:
+    ``import_drawing`` says whether the program it wrote checks, without another call)."""
+    r = compile_program(source=text, path=str(where), budget=budget)
+    parts = _after_compile(r, lambda: [p.to_json() for p in r.parts])
+    doc = _summary(ws, r)
+    out: dict = {"ok": r.ok}
+    if not r.ok:
+        out["summary"] = doc.get("summary", "")
+        return out
+    reword_diagnostics(r.diagnostics)
+    out["warnings"] = [f"{d.code} line {d.span.line if d.span else '-'}: {d.message}"
+                       for d in r.diagnostics if d.severity == "warning"][:10]
+    out["dof"] = r.freedom()["dof"]
+    out["parts"] = parts
+    return out
 
 
 def write_program(ws: Workspace, path: str, text: str | None = None, old: str | None = None,
@@ -619,7 +653,7 @@ def write_program(ws: Workspace, path: str, text: str | None = None, old: str | 
     if not isinstance(path, str) or Path(path).suffix.lower() != ".aidl":
         raise Refused(f"`{path}` is not an .aidl file: `write_program` writes programs",
                       "wrong_kind", "path")
-    target = ws.output(path)
+    target = ws.output(path, "path")
     ws.inside(path)                           # (no link on the way: the same file)
     if text is None:
         if new is None:
@@ -653,6 +687,68 @@ def write_program(ws: Workspace, path: str, text: str | None = None, old: str | 
     doc = check(ws, path=ws.relative(target), dof=dof)
     doc["written"] = ws.relative(target)
     doc["lines"] = text.count("\n") + (not text.endswith("\n") and bool(text))
+    return doc
+
+
+def set_params(ws: Workspace, path: str, values: dict, dof: bool = False,
+               budget: float | None = None) -> dict:
+    """Set the ``param`` values ``values`` (name -> value: ``"50 mm"``, a number in the
+    file's units, a bool) in the program file ``path`` (:func:`aidl_lang.api.set_params`:
+    only each value's text changes, comments and formatting kept), write it and check it:
+    :func:`check`'s result with ``written``.
+    Raises :class:`Refused` (``no_match``: an unknown name, with the nearest;
+    ``bad_argument``: a value of the wrong kind or outside its declared range, E0113/E0124:
+    the file is left as it was)."""
+    from ..api import ParamsRefused, set_params as _set
+    if not isinstance(values, dict) or not values:
+        raise Refused("values maps param names to values, e.g. {\"width\": \"50 mm\"}",
+                      "bad_argument", "values")
+    real, current = ws.read(path)
+    target = ws.output(path, "path")
+    k = ws.budget if budget is None else budget
+    try:
+        text, _ = _set(current, values, str(real), k)
+    except ParamsRefused as e:
+        raise Refused(for_agents(str(e)), "no_match" if e.code == "no_match" else
+                      "bad_argument", "values") from None
+    except ValueError as e:
+        raise Refused(str(e), "bad_argument", "path") from None
+    try:
+        _write_inside(ws, target, text.encode("utf-8"), None, path)
+    except OSError as e:
+        raise Refused(str(e), "output_failed", "path") from None
+    doc = check(ws, path=ws.relative(target), dof=dof, budget=budget)
+    doc["written"] = ws.relative(target)
+    return doc
+
+
+def measure(ws: Workspace, a: str, b: str, source: str | None = None,
+            path: str | None = None, overrides: dict | None = None,
+            budget: float | None = None) -> dict:
+    """Compile, then what lies between the named entities ``a`` and ``b``
+    (:meth:`aidl_lang.api.Result.measure`: distance, centre distance, angle, clearance; mm
+    and degrees, exact): ``{"ok", "units", "measure"}``; the diagnostics when the program
+    did not solve.  Raises :class:`Refused` (``no_match``: a name that names nothing, with
+    the nearest names, ``argument`` ``a`` or ``b``)."""
+    r = ws.compile(source, path, overrides, budget)
+    if not r.ok:
+        return _summary(ws, r)
+    try:
+        got = r.measure(a, b)
+    except KeyError as e:
+        raise Refused(e.args[0], "no_match", e.args[1]) from None
+    return {"ok": True, "units": r.units, "measure": _rounded(got)}
+
+
+def _rounded(doc):
+    """``doc`` with its floats rounded to 1e-9 (mm, degrees): exact to that, short."""
+    if isinstance(doc, float):
+        v = round(doc, 9)
+        return 0.0 if v == 0 else v
+    if isinstance(doc, dict):
+        return {k: _rounded(v) for k, v in doc.items()}
+    if isinstance(doc, (list, tuple)):
+        return [_rounded(v) for v in doc]
     return doc
 
 

@@ -42,6 +42,7 @@ _PHRASES: list[tuple[re.Pattern, object]] = [(re.compile(p), r) for p, r in [
     (r"`--budget (\d+)`", r"`budget=\1`, at most 4"),
     (r"`--budget`", "`budget` (at most 4)"),
     # render's options
+    (r"--sheet (\w+)\)", r'sheet="\1")'),
     (r"--(sheet|gap)\b", r"`\1`"),
     (r"--rotate any", 'rotate="any"'),
     (r"use a lower --dpi or --png-width", "use a smaller `width`"),
@@ -55,6 +56,10 @@ _PHRASES: list[tuple[re.Pattern, object]] = [(re.compile(p), r) for p, r in [
     (r"`aidl check --describe`", "The `describe` tool"),
     (r"`aidl import --infer ([^`]+)`", r'`import_drawing` with path="\1"'),
     (r"`aidl check --values`", "the `values` tool"),
+    (r"`aidl set f\.aidl NAME=VALUE` changes a param's value in the file\.",
+     "`set_params` changes params in a file (path, values: {\"width\": \"50 mm\"}); "
+     "`measure` gives the distance, centre distance, angle or clearance between two named "
+     "entities (a, b)."),
     # the reference's topics (`docs`)
     (r"`aidl render --set NAME=VALUE`", "the tools' `overrides` ({\"NAME\": VALUE})"),
     (r"`aidl render --kerf ([^`]+)`", r'`render` with kerf="\1"'),

@@ -34,7 +34,7 @@ def _handler(root: str, budget: float):
         if name == "warm":
             return True, T.warm(ws)
         if name not in ("check", "render", "values", "describe", "import_drawing",
-                        "write_program"):
+                        "write_program", "set_params", "measure"):
             return False, T.Refused(f"unknown tool `{name}`")
         oom = False
         try:
@@ -46,12 +46,22 @@ def _handler(root: str, budget: float):
             oom = is_out_of_memory(e)
             if not oom:
                 return False, T.Refused(f"internal error: {type(e).__name__}: {e}",
-                                        "internal_error")
-        return False, out_of_memory(ws, args)       # once the failed frames are gone
+                                        "internal_error", program_argument(name, args))
+        return False, out_of_memory(ws, args, program_argument(name, args))   # frames gone
     return handle
 
 
-def out_of_memory(ws, args: tuple):
+def program_argument(name: str, args: tuple) -> str:
+    """The argument that gave the program of the call ``name(*args)``: ``source`` or
+    ``path`` (the tools that take a file only: ``path``), for the refusals a program causes
+    (out of memory, a worker that died, an internal error)."""
+    at = {"check": 0, "render": 0, "values": 0, "describe": 0, "measure": 2}.get(name)
+    if at is None:
+        return "path"
+    return "source" if len(args) > at and args[at] is not None else "path"
+
+
+def out_of_memory(ws, args: tuple, argument: str | None = None):
     """The refusal of a call whose compile ran out of memory anywhere (the checks, the exact
     outlines, a writer): the program's located ``E0304`` (``args``: the tool's ``source``,
     ``path``, ...), as the summary of a failed ``check`` words it."""
@@ -67,7 +77,7 @@ def out_of_memory(ws, args: tuple):
     sink = out_of_memory_sink(name, source)
     d = sink.items[0]
     return T.Refused(f"{d.code} line {d.span.line if d.span else '-'}: {d.message}; "
-                     f"{d.hint}", d.code)
+                     f"{d.hint}", d.code, argument)
 
 
 class Worker(W.Worker):
@@ -95,12 +105,12 @@ class Worker(W.Worker):
         except W.TimedOut:
             raise T.Refused(f"the call took longer than {limit:g} s of wall time (10 times "
                             "its budget's CPU seconds) and was stopped; build less, or give "
-                            "a larger `budget` (at most 4)", "timed_out") from None
+                            "a larger `budget` (at most 4)", "timed_out", "budget") from None
         except W.Died:
             raise T.Refused("the compile ended its worker process (out of memory?); "
-                            "build less", "worker_died") from None
+                            "build less", "worker_died", program_argument(name, args)) from None
         except W.NotReady as e:
-            raise T.Refused(str(e), "worker_died") from None
+            raise T.Refused(str(e), "worker_died", program_argument(name, args)) from None
         if ok:
             return value
         raise value

@@ -291,6 +291,31 @@ def _shoelace(q) -> float:
     return 0.5 * float((x * (list(y[1:]) + [y[0]])).sum() - (y * (list(x[1:]) + [x[0]])).sum())
 
 
+def _too_big(p, pts, W: float, H: float, gap: float, rotate) -> str:
+    """Why part ``p`` (its outline ``pts`` grown by half the gap, centred) does not fit on a
+    ``W`` x ``H`` mm sheet, and only the remedies that help (issue 86): the sheet size that
+    would hold it as it is turned now, a smaller --gap only when the part fits without one,
+    --rotate any only when some angle fits it on this sheet."""
+    import numpy as np
+    x0, y0, x1, y1 = part_box(p)
+    w, h = x1 - x0, y1 - y0
+    turn = "turned by any angle" if rotate is None else \
+        "at " + ", ".join(f"{a:g}" for a in rotate) + " degrees"
+    both = " in both orders" if (w > W or h > H) and (h > W or w > H) else ""
+    sw, sh = (np.ptp(pts[:, 0]) + gap, np.ptp(pts[:, 1]) + gap)
+    if rotate is not None and 90.0 in rotate:
+        sw, sh = min(sw, sh), max(sw, sh)
+        sw, sh = (sw, sh) if W <= H else (sh, sw)
+    helps = [f"a sheet of {sw:.6g} x {sh:.6g} mm or larger (--sheet {math.ceil(sw):d}x"
+             f"{math.ceil(sh):d}mm)"]
+    if gap > 0 and _fits(pts, W + gap, H + gap, rotate):     # the part without its gap
+        helps.append("a smaller --gap")
+    if rotate is not None and _fits(pts, W - gap, H - gap, None):
+        helps.append("--rotate any")
+    return (f"part `{p.name}` ({w:.6g} x {h:.6g} mm) is larger than the {W:g} x {H:g} mm "
+            f"sheet{both} {turn} with a {gap:g} mm gap: use " + ", or ".join(helps))
+
+
 def _fits(pts, w: float, h: float, angles) -> bool:
     import numpy as np
     for deg in (angles if angles is not None else [float(a) for a in range(180)]):
@@ -435,14 +460,7 @@ def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90
         c = ((pts[:, 0].min() + pts[:, 0].max()) / 2, (pts[:, 1].min() + pts[:, 1].max()) / 2)
         pts = pts - c
         if not _fits(pts, Wu, Hu, rotate):
-            x0, y0, x1, y1 = part_box(p)
-            turn = "turned by any angle" if rotate is None else \
-                "at " + ", ".join(f"{a:g}" for a in rotate) + " degrees"
-            raise LayoutError(
-                f"part `{p.name}` ({x1 - x0:.6g} x {y1 - y0:.6g} mm) does not fit on the "
-                f"{W:g} x {H:g} mm sheet {turn} with a {gap:g} mm gap: use a larger --sheet"
-                + (" or a smaller --gap" if rotate is None else
-                   ", a smaller --gap, or --rotate any"))
+            raise LayoutError(_too_big(p, pts, W, H, gap, rotate))
         shapes[str(i)] = pts
         about[str(i)] = c
         members[str(i)] = [i]
