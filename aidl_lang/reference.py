@@ -231,9 +231,8 @@ def stdlib_templates() -> dict[str, StdTemplate]:
 
 
 def stdlib_lines(defaults: bool = True) -> str:
-    """One line per stdlib template, by module: signature (without ``cx, cy``; the
-    parameters' defaults unless ``defaults`` is false) and the first sentence of its doc
-    comment (``aidl prompt``)."""
+    """One line per stdlib template, by module: signature (without ``cx, cy``; defaults
+    unless ``defaults`` is false) and the first sentence of its doc comment (``aidl prompt``)."""
     rows, module = [], None
     for t in stdlib_templates().values():
         if t.module != module:
