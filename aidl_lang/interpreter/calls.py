@@ -166,7 +166,8 @@ class Calls:
                             hint=_center_hint(conv.values(), entry.signature()))
         except UnitError as ex:
             raise EvalError("E0109", str(ex), node.span)
-        self._add_constraint(cname, eqs, node.span, None, owners)
+        args = [owners_of(v) for v in conv.values()] if len(owners) > 1 else None
+        self._add_constraint(cname, eqs, node.span, None, owners, args)
         return None
 
     def _cut_into(self, conv, node, spans):

@@ -602,7 +602,7 @@ class Solver:
         part is the only thing free: ``Fixed(h)`` on the feature, a feature that would have
         to change shape, ...) the point is restored and the paper's ladder runs as before,
         moving the part."""
-        held, first, helpers = self._part_unknowns(s, own, frames)
+        held, first, helpers, later = self._part_unknowns(s, own, frames)
         if not held or not self._related(local, held):
             return False
         stages = self._feature_stages(s, held, own, frames, helpers)
@@ -614,11 +614,15 @@ class Solver:
         saved = None
         rows = local[self._own_rows(local, held)]
         if len(rows):
-            cols = self._cols(first, rows)
+            cols = self._cols(first + later, rows)
             saved = (cols, self.x[cols].copy())
-            att = Attempt("own", 0, rows, cols, order=order)
-            if not (yield att):
+            att = Attempt("own", 0, rows, self._cols(first, rows), order=order)
+            if (not first or not (yield att)) and not later:
                 return False
+            if not att.ok:                 # a reference sibling placed by its own rows
+                att = Attempt("own", 1, rows, cols, order=order)
+                if not (yield att):
+                    return False
             if att.iterations and (yield Attempt("features", top[0], top[1], top[2],
                                                  order=order)):
                 return True                # the part placed, the first stage again
@@ -705,9 +709,11 @@ class Solver:
                 rows = self.rows_of(upto(max(d, D - 1)))
                 yield d, rows, self._cols(params, rows)
 
-    def _part_unknowns(self, s: Structure, own, frames) -> tuple[set, list, list]:
+    def _part_unknowns(self, s: Structure, own, frames) -> tuple[set, list, list, list]:
         """(the unknowns the features-first stages hold at ``s``, those its stage "own"
-        frees, those of its construction geometry): ``s``'s own unknowns less those of its
+        frees, those of its construction geometry, those stage "own" frees when the first
+        do not meet its rows: the frames of the siblings other siblings are placed on,
+        :func:`_references`): ``s``'s own unknowns less those of its
         construction geometry (a helper, placed on the part like a feature: issue 73's
         model run, a NEMA 17 plate moved 15 mm to meet its construction bolt square); and
         when ``s`` is an assembly that declares a hole
@@ -732,12 +738,14 @@ class Solver:
                 helpers = [i for i in first if i in cons]
                 first = [i for i in first if i not in cons]
         held = set(first)
-        for c in self.cut_parts.get(id(s), ()):
+        refs = _references(s)
+        later: list = []
+        for c in list(self.cut_parts.get(id(s), ())) + refs:
             sub = list(c.subtree())
             held.update(frames(sub))
             held.update(own(sub))
-            first += frames([c])
-        return held, first, helpers
+            (later if c in refs else first).extend(frames([c]))
+        return held, first, helpers, later
 
     def _related(self, rows: np.ndarray, held: set) -> bool:
         """Whether one of ``rows`` reads unknowns both in ``held`` and outside it (slacks
@@ -773,6 +781,64 @@ class Solver:
             row_vars(exprs[r], vs)
             mask[k] = not any(v < n and free[v] and v not in held for v in vs)
         return mask
+
+
+FEATURE_KINDS = ("hole", "cut")     # structures placed on a part; the rest are parts
+
+
+def _references(s: Structure) -> list:
+    """The children of ``s`` that a constraint of ``s`` relates another child to and that no
+    constraint of ``s`` moves ("who moves": between siblings the first-named moves to the
+    second, the reference; a feature, a hole or a cut, moves to a part whatever the order).
+    Read off each written constraint's arguments (``Constraint.args``): the child of ``s``
+    each argument lies in, in the order written (an argument on ``s``'s own geometry, the
+    part, is held anyway).  Held in the features stages (:meth:`Solver._part_unknowns`)
+    like ``s``'s own part; a child both moved by one constraint and the reference of
+    another is not held (it moves to its own reference, the others follow it)."""
+    if not s.children:
+        return []
+    movers: dict[int, Structure] = {}
+    refs: dict[int, Structure] = {}
+    for c in s.constraints:
+        args = c.args
+        if not args:
+            continue
+        groups: list = []           # s's children reached, in the order written
+        part = False
+        for owners in args:
+            for o in sorted(owners, key=_depth):
+                t = _child_toward(s, o)
+                if t is None:
+                    part = True
+                elif t not in groups:
+                    groups.append(t)
+        if len(groups) < 1 + (not part):
+            continue
+        if part:                    # s's own part is the reference: every child moves
+            for t in groups:
+                movers[id(t)] = t
+            continue
+        solids = [t for t in groups if t.kind not in FEATURE_KINDS]
+        ref = solids[-1] if solids and len(solids) < len(groups) else groups[-1]
+        refs[id(ref)] = ref
+        for t in groups:
+            if t is not ref:
+                movers[id(t)] = t
+    return [t for k, t in refs.items() if k not in movers]
+
+
+def _depth(t: Structure) -> int:
+    n = 0
+    while t.parent is not None:
+        t, n = t.parent, n + 1
+    return n
+
+
+def _child_toward(s: Structure, o: Structure):
+    """The child of ``s`` whose subtree holds ``o`` (None: ``o`` is ``s`` or not below it)."""
+    while o is not None and o.parent is not s:
+        o = o.parent
+    return o
 
 
 def _helpers(s: Structure) -> list:
