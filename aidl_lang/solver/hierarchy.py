@@ -609,6 +609,9 @@ class Solver:
         top = next(stages, None)
         if top is None:
             return False
+        ranks = _who_moves(s)[1] if len(s.children) > 2 else []
+        for k in range(1, len(ranks)):    # a chain: each placed on its reference in turn
+            yield from self._place_rank(s, local, order, held, ranks, k, frames)
         if (yield Attempt("features", top[0], top[1], top[2], order=order)):
             return True
         saved = None
@@ -636,6 +639,34 @@ class Solver:
             self.x = self.x.copy()
             self.x[cols] = values
         return False
+
+    def _place_rank(self, s: Structure, local: np.ndarray, order: int, held: set,
+                    ranks: list, k: int, frames):
+        """Before the features stages, when siblings are placed on siblings placed on
+        others (``AlignCenterX(b, c)``, ``AlignCenterY(a, b)``): the children of rank ``k``
+        (:func:`_who_moves`) move by their frames to meet the rows of ``s`` that read
+        nothing of a higher rank, those of lower ranks and the references held (so ``b``
+        keeps its written y, which ``a`` then takes).  A failure changes nothing; the
+        features stages follow either way.  A generator like :meth:`steps`."""
+        mine = set(frames(ranks[k]))
+        later = {i for t in ranks[k + 1:] for c in t for i in self._subtree_unknowns(c)}
+        if not mine:
+            return
+        free, n, exprs = self._free_list(), self.n_model, self.rows.exprs
+        pick = []
+        for r in local.tolist():
+            vs: set = set()
+            row_vars(exprs[r], vs)
+            vs = {v for v in vs if v < n and free[v]}
+            if vs & mine and not vs & later:
+                pick.append(r)
+        if pick:
+            rows = np.asarray(pick, dtype=np.int64)
+            yield Attempt("rank", k, rows, self._cols(sorted(mine), rows), order=order)
+
+    def _subtree_unknowns(self, c: Structure) -> list:
+        return [i for t in c.subtree() for i in self.frame.get(id(t), ()) +
+                self.own.get(id(t), [])]
 
     def _shape_first(self, s: Structure, local: np.ndarray, order: int, own):
         """Parts stay within one structure (issue 73): when one of a solid's constraints
@@ -795,10 +826,18 @@ def _references(s: Structure) -> list:
     part, is held anyway).  Held in the features stages (:meth:`Solver._part_unknowns`)
     like ``s``'s own part; a child both moved by one constraint and the reference of
     another is not held (it moves to its own reference, the others follow it)."""
+    return _who_moves(s)[0]
+
+
+def _who_moves(s: Structure) -> tuple[list, list]:
+    """(:func:`_references` of ``s``, the children of ``s`` that move to another in rank
+    order: ``ranks[0]`` those placed on the references only, ``ranks[1]`` those placed on
+    ``ranks[0]`` or a reference, ...; a child in a cycle of relations is in none)."""
     if not s.children:
-        return []
+        return [], []
     movers: dict[int, Structure] = {}
     refs: dict[int, Structure] = {}
+    edges: dict[int, set] = {}          # id(mover) -> ids of its references
     for c in s.constraints:
         args = c.args
         if not args:
@@ -817,6 +856,7 @@ def _references(s: Structure) -> list:
         if part:                    # s's own part is the reference: every child moves
             for t in groups:
                 movers[id(t)] = t
+                edges.setdefault(id(t), set())
             continue
         solids = [t for t in groups if t.kind not in FEATURE_KINDS]
         ref = solids[-1] if solids and len(solids) < len(groups) else groups[-1]
@@ -824,7 +864,17 @@ def _references(s: Structure) -> list:
         for t in groups:
             if t is not ref:
                 movers[id(t)] = t
-    return [t for k, t in refs.items() if k not in movers]
+                edges.setdefault(id(t), set()).add(id(ref))
+    placed = {k for k in refs if k not in movers}
+    ranks: list = []
+    todo = dict(movers)
+    while todo:
+        now = [k for k in todo if edges[k] <= placed]
+        if not now:
+            break                       # a cycle: left to the stages
+        ranks.append([todo.pop(k) for k in now])
+        placed.update(now)
+    return [t for k, t in refs.items() if k not in movers], ranks
 
 
 def _depth(t: Structure) -> int:
