@@ -814,7 +814,7 @@ class Solver:
         return mask
 
 
-FEATURE_KINDS = ("hole", "cut")     # structures placed on a part; the rest are parts
+FEATURE_KINDS = ("hole", "cut", "drawing")   # placed on a part (engraved); the rest are parts
 
 
 def _references(s: Structure) -> list:
