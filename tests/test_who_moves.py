@@ -16,28 +16,8 @@ from __future__ import annotations
 import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
-import aidl_lang
 from aidl_lang import registry
-from aidl_lang.solver import constraint_residuals
-from conftest import ROOT
-
-PROGRAMS = ROOT / "tests" / "programs" / "parts_stay"
-EXACT = 1e-9
-
-
-def _compile(source: str | None = None, name: str | None = None):
-    if name is not None:
-        r = aidl_lang.compile(path=str(PROGRAMS / name))
-    else:
-        r = aidl_lang.compile(source)
-    assert r.ok, [f"{d.code} {d.message}" for d in r.errors] + [source or name]
-    worst = max((v for _, v in constraint_residuals(r.compiled.model)), default=0.0)
-    assert worst < EXACT, (worst, source)
-    return r
-
-
-def _values(r) -> dict:
-    return {v.name: v.mm for v in r.values}
+from test_parts_stay import EXACT, PROGRAMS, _compile, _values
 
 
 def test_the_lantern_panel_stays_and_its_star_goes_to_it():
@@ -227,14 +207,19 @@ def check_part_stays(case) -> None:
     assert v[center] == pytest.approx(written, abs=EXACT), src
 
 
-@pytest.mark.parametrize("kind", sorted(KINDS))
-def test_law_a_part_keeps_its_written_place_under_every_relating_kind(kind):
-    @settings(max_examples=4, deadline=None, derandomize=True, database=None,
+def _law(strategy, n: int) -> None:
+    """``check_part_stays`` over ``n`` seeded draws of ``strategy``."""
+    @settings(max_examples=n, deadline=None, derandomize=True, database=None,
               suppress_health_check=[HealthCheck.too_slow])
-    @given(programs(kind))
+    @given(strategy)
     def law(case):
         check_part_stays(case)
     law()
+
+
+@pytest.mark.parametrize("kind", sorted(KINDS))
+def test_law_a_part_keeps_its_written_place_under_every_relating_kind(kind):
+    _law(programs(kind), 4)
 
 
 SIBLING_KINDS = sorted(k for k, (text, need) in KINDS.items()
@@ -260,9 +245,4 @@ def sibling_programs(draw, kind: str):
 
 @pytest.mark.parametrize("kind", SIBLING_KINDS)
 def test_law_between_siblings_the_second_named_stays(kind):
-    @settings(max_examples=3, deadline=None, derandomize=True, database=None,
-              suppress_health_check=[HealthCheck.too_slow])
-    @given(sibling_programs(kind))
-    def law(case):
-        check_part_stays(case)
-    law()
+    _law(sibling_programs(kind), 3)

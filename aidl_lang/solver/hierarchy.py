@@ -14,6 +14,9 @@ Before those stages, when a constraint of ``S`` relates ``S``'s own geometry (a 
 descendant's (a feature: a hole, a child solid, a pattern's target), the part is placed by
 its own constraints and held while the features move (:meth:`Solver._features_first`,
 issue 73: parts stay, features move); only when that fails do the stages above move it.
+Between two children related by a constraint of ``S`` the first-named moves to the second,
+which is held the same way (:func:`_who_moves`, issue 84; a hole, cut or engraving moves to a
+solid whichever is named first).
 
 The solve of ``S`` fails only when stage 2 has reached the bottom of its subtree (then the
 subtree was solved flat and the system is inconsistent or intractable).  Frames are cheaper to
