@@ -389,6 +389,25 @@ repeats the distance (W0401).
         AlignCenterX(bits, plate)        # x is placed; y is not: W0404
     }
 """),
+    "W0405": ("box read before Fillet or Chamfer", """
+A constraint reads a side of the box of a structure (`AlignLeft(x0, board)`, `x0.bb.left`,
+`Above`, `Inside`, ...) that has a `Fillet` or `Chamfer`, and its final outline does not
+reach that side: the box is read from the shapes as drawn, before the rounding (which acts on
+the finished outline after the booleans), so where a rounded corner is the box's extreme the
+outline ends short of it (a 45-degree X filleted by 1.5 mm: 0.621 mm in from the board's
+edge). The warning gives both sides and the difference; write that side as an equation with
+the difference (`x0.bb.left + 0.621 mm == board.bb.left`: an equation on box values is taken
+as written, never warned), or round only the corners away from that side (`Fillet(at=[...],
+radius=...)`).
+
+    solid board { b = Rectangle(center=(0, 0), width=90, height=90) }
+    solid x0 {
+        a = Rectangle(center=(10, 10), width=24, height=4, rotation=45 deg)
+        c = Rectangle(center=(10, 10), width=24, height=4, rotation=-45 deg)
+        Fillet(radius=1.5)
+    }
+    AlignLeft(x0, board)        # the rounded X ends 0.621 mm in: W0405
+"""),
     "W0501": ("hole refilled by another solid", """
 A hole cuts only the solid it is declared in. When that solid is then united with a sibling
 (or its parent's own geometry) that covers the hole, the hole is filled again and does not cut

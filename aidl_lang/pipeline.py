@@ -24,6 +24,7 @@ from .geometry.model import Model
 from .parser import parse
 from .output.part.booleans import Drawing, render_model
 from .output.checks import check_drawing, check_stray_holes, check_topology, topology
+from .output.checks.boxes import check_final_boxes
 from .solver import SolveResult, solve
 from .typecheck import check
 
@@ -333,6 +334,7 @@ def after_solve(sink: DiagnosticSink, model: Model, min_wall: float | None = Non
                 for g, message, hint, *code in drawing.shape_errors:
                     sink.add(Diagnostic(code[0] if code else "E0406", message, g.span, "error",
                                         hint=hint), calls=instance_calls(g.owner))
+                check_final_boxes(sink, model, drawing, instance_calls)
                 check_stray_holes(sink, drawing, deadline)
                 if shape_checks:
                     stage = "the shape checks"

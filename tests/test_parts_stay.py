@@ -150,10 +150,11 @@ def test_following_w0109s_fix_moves_no_part(lid):
                                        (x0 + x1) / 2 + 10, (y0 + y1) / 2 + 10), abs=EXACT)
 
 
-def test_two_parts_meet_halfway_and_the_hole_cut_into_one_goes_to_it():
-    """In an assembly, parts related to each other still both move (as before); a hole the
-    assembly cuts into one of them moves to it (before: `a` went 25 mm up to meet the hole
-    halfway, and the parts met at 16.667 / 66.667)."""
+def test_the_first_named_part_goes_to_the_second_and_the_hole_cut_into_one_goes_to_it():
+    """In an assembly, of two parts related to each other the first-named (`b`) moves to the
+    second (`a`, the reference; issue 84; before: both moved, to meet halfway at 25 / 75); a
+    hole the assembly cuts into one of them moves to it (issue 73; before that: `a` went
+    25 mm up to meet the hole halfway, and the parts met at 16.667 / 66.667)."""
     v = _values(_compile("""
 assembly kit {
     solid a { body = Rectangle(center=(0, 0), width=40, height=20) }
@@ -164,9 +165,9 @@ assembly kit {
     CutInto(h, a)
 }
 """))
-    assert v["kit.a.body.center"] == pytest.approx((25, 0), abs=EXACT)
-    assert v["kit.b.body.center"] == pytest.approx((75, 0), abs=EXACT)
-    assert v["kit.h.c.center"] == pytest.approx((25, 0), abs=EXACT)
+    assert v["kit.a.body.center"] == pytest.approx((0, 0), abs=EXACT)
+    assert v["kit.b.body.center"] == pytest.approx((50, 0), abs=EXACT)
+    assert v["kit.h.c.center"] == pytest.approx((0, 0), abs=EXACT)
 
 
 def test_a_knob_drawn_beside_the_ellipse_in_one_solid_comes_to_it():

@@ -255,7 +255,7 @@ class Constraint(Record):
     """A constraint as written in the source and the equations it adds."""
     # ``text`` is a property (below): a written constraint's text is cut from ``_src``
     __slots__ = ("kind", "owner", "span", "equations", "deferred", "text", "implicit", "hold",
-                 "released")
+                 "released", "args")
 
     def __init__(self, kind: str, owner: Structure, span: Span | None,
                  equations: list[Equation] | None = None, deferred: list[Equation] | None = None,
@@ -273,6 +273,10 @@ class Constraint(Record):
         # other constraints leave free (aidl_lang.solver.holds.settle_holds)
         self.hold = hold
         self.released = released  # a hold given up after a failed solve (settle_holds)
+        # the structures each argument reaches, in the order written (a written constraint
+        # relating more than one structure; else None): the first-named moves to the later
+        # ones (aidl_lang.solver.hierarchy, "who moves")
+        self.args = None
 
     def describe(self) -> str:
         return self.text or self.kind

@@ -154,10 +154,17 @@ class Calls:
                 return self._cut_into(conv, node, spans)
             if cname == "AllowOverlap":
                 conv = dict(conv, _span=node.span)     # W0523 locates one that allows nothing
+            n0 = len(self.model.constraints)
             try:
-                return apply(self, cname, conv, name)
+                out = apply(self, cname, conv, name)
             except OperationError as ex:
                 raise EvalError("E0108", str(ex), node.span, hint=entry.signature())
+            if len(self.model.constraints) > n0 and len(owners_of(*conv.values())) > 1:
+                args = [owners_of(v) for v in conv.values()]   # who moves: the pattern's
+                for c in self.model.constraints[n0:]:           # target to its rect
+                    if c.args is None:
+                        c.args = args
+            return out
         owners = owners_of(*conv.values())
         try:
             eqs = BUILDERS[cname](self, **conv)
@@ -166,7 +173,8 @@ class Calls:
                             hint=_center_hint(conv.values(), entry.signature()))
         except UnitError as ex:
             raise EvalError("E0109", str(ex), node.span)
-        self._add_constraint(cname, eqs, node.span, None, owners)
+        args = [owners_of(v) for v in conv.values()] if len(owners) > 1 else None
+        self._add_constraint(cname, eqs, node.span, None, owners, args)
         return None
 
     def _cut_into(self, conv, node, spans):

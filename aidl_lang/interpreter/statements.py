@@ -706,9 +706,10 @@ class Statements:
 
     # ------------------------------------------------------------------ constraints
     def _add_constraint(self, kind: str, eqs: list[Equation], span, text: str | None,
-                        owners) -> None:
+                        owners, args=None) -> None:
         """Add a written constraint to the structure being run (``text`` None: the source
-        text at ``span``, cut when first read; see ``Constraint.text``)."""
+        text at ``span``, cut when first read; see ``Constraint.text``).  ``args``: the
+        structures each argument reaches, in the order written (``Constraint.args``)."""
         s = self.struct
         if s is None:
             s = self._need_struct(span)
@@ -736,6 +737,7 @@ class Statements:
         else:
             c._text = text
         c.implicit = c.hold = c.released = False
+        c.args = args
         s.constraints.append(c)
         self.model.constraints.append(c)
 

@@ -14,6 +14,9 @@ Before those stages, when a constraint of ``S`` relates ``S``'s own geometry (a 
 descendant's (a feature: a hole, a child solid, a pattern's target), the part is placed by
 its own constraints and held while the features move (:meth:`Solver._features_first`,
 issue 73: parts stay, features move); only when that fails do the stages above move it.
+Between two children related by a constraint of ``S`` the first-named moves to the second,
+which is held the same way (:func:`_who_moves`, issue 84; a hole, cut or engraving moves to a
+solid whichever is named first).
 
 The solve of ``S`` fails only when stage 2 has reached the bottom of its subtree (then the
 subtree was solved flat and the system is inconsistent or intractable).  Frames are cheaper to
@@ -602,23 +605,30 @@ class Solver:
         part is the only thing free: ``Fixed(h)`` on the feature, a feature that would have
         to change shape, ...) the point is restored and the paper's ladder runs as before,
         moving the part."""
-        held, first, helpers = self._part_unknowns(s, own, frames)
+        held, first, helpers, later = self._part_unknowns(s, own, frames)
         if not held or not self._related(local, held):
             return False
         stages = self._feature_stages(s, held, own, frames, helpers)
         top = next(stages, None)
         if top is None:
             return False
+        ranks = _who_moves(s)[1] if len(s.children) > 2 else []
+        for k in range(1, len(ranks)):    # a chain: each placed on its reference in turn
+            yield from self._place_rank(s, local, order, held, ranks, k, frames)
         if (yield Attempt("features", top[0], top[1], top[2], order=order)):
             return True
         saved = None
         rows = local[self._own_rows(local, held)]
         if len(rows):
-            cols = self._cols(first, rows)
+            cols = self._cols(first + later, rows)
             saved = (cols, self.x[cols].copy())
-            att = Attempt("own", 0, rows, cols, order=order)
-            if not (yield att):
+            att = Attempt("own", 0, rows, self._cols(first, rows), order=order)
+            if (not first or not (yield att)) and not later:
                 return False
+            if not att.ok:                 # a reference sibling placed by its own rows
+                att = Attempt("own", 1, rows, cols, order=order)
+                if not (yield att):
+                    return False
             if att.iterations and (yield Attempt("features", top[0], top[1], top[2],
                                                  order=order)):
                 return True                # the part placed, the first stage again
@@ -632,6 +642,34 @@ class Solver:
             self.x = self.x.copy()
             self.x[cols] = values
         return False
+
+    def _place_rank(self, s: Structure, local: np.ndarray, order: int, held: set,
+                    ranks: list, k: int, frames):
+        """Before the features stages, when siblings are placed on siblings placed on
+        others (``AlignCenterX(b, c)``, ``AlignCenterY(a, b)``): the children of rank ``k``
+        (:func:`_who_moves`) move by their frames to meet the rows of ``s`` that read
+        nothing of a higher rank, those of lower ranks and the references held (so ``b``
+        keeps its written y, which ``a`` then takes).  A failure changes nothing; the
+        features stages follow either way.  A generator like :meth:`steps`."""
+        mine = set(frames(ranks[k]))
+        later = {i for t in ranks[k + 1:] for c in t for i in self._subtree_unknowns(c)}
+        if not mine:
+            return
+        free, n, exprs = self._free_list(), self.n_model, self.rows.exprs
+        pick = []
+        for r in local.tolist():
+            vs: set = set()
+            row_vars(exprs[r], vs)
+            vs = {v for v in vs if v < n and free[v]}
+            if vs & mine and not vs & later:
+                pick.append(r)
+        if pick:
+            rows = np.asarray(pick, dtype=np.int64)
+            yield Attempt("rank", k, rows, self._cols(sorted(mine), rows), order=order)
+
+    def _subtree_unknowns(self, c: Structure) -> list:
+        return [i for t in c.subtree() for i in self.frame.get(id(t), ()) +
+                self.own.get(id(t), [])]
 
     def _shape_first(self, s: Structure, local: np.ndarray, order: int, own):
         """Parts stay within one structure (issue 73): when one of a solid's constraints
@@ -705,9 +743,11 @@ class Solver:
                 rows = self.rows_of(upto(max(d, D - 1)))
                 yield d, rows, self._cols(params, rows)
 
-    def _part_unknowns(self, s: Structure, own, frames) -> tuple[set, list, list]:
+    def _part_unknowns(self, s: Structure, own, frames) -> tuple[set, list, list, list]:
         """(the unknowns the features-first stages hold at ``s``, those its stage "own"
-        frees, those of its construction geometry): ``s``'s own unknowns less those of its
+        frees, those of its construction geometry, those stage "own" frees when the first
+        do not meet its rows: the frames of the siblings other siblings are placed on,
+        :func:`_references`): ``s``'s own unknowns less those of its
         construction geometry (a helper, placed on the part like a feature: issue 73's
         model run, a NEMA 17 plate moved 15 mm to meet its construction bolt square); and
         when ``s`` is an assembly that declares a hole
@@ -732,12 +772,14 @@ class Solver:
                 helpers = [i for i in first if i in cons]
                 first = [i for i in first if i not in cons]
         held = set(first)
-        for c in self.cut_parts.get(id(s), ()):
+        refs = _references(s)
+        later: list = []
+        for c in list(self.cut_parts.get(id(s), ())) + refs:
             sub = list(c.subtree())
             held.update(frames(sub))
             held.update(own(sub))
-            first += frames([c])
-        return held, first, helpers
+            (later if c in refs else first).extend(frames([c]))
+        return held, first, helpers, later
 
     def _related(self, rows: np.ndarray, held: set) -> bool:
         """Whether one of ``rows`` reads unknowns both in ``held`` and outside it (slacks
@@ -773,6 +815,83 @@ class Solver:
             row_vars(exprs[r], vs)
             mask[k] = not any(v < n and free[v] and v not in held for v in vs)
         return mask
+
+
+FEATURE_KINDS = ("hole", "cut", "drawing")   # placed on a part (engraved); the rest are parts
+
+
+def _references(s: Structure) -> list:
+    """The children of ``s`` that a constraint of ``s`` relates another child to and that no
+    constraint of ``s`` moves ("who moves": between siblings the first-named moves to the
+    second, the reference; a feature, a hole or a cut, moves to a part whatever the order).
+    Read off each written constraint's arguments (``Constraint.args``): the child of ``s``
+    each argument lies in, in the order written (an argument on ``s``'s own geometry, the
+    part, is held anyway).  Held in the features stages (:meth:`Solver._part_unknowns`)
+    like ``s``'s own part; a child both moved by one constraint and the reference of
+    another is not held (it moves to its own reference, the others follow it)."""
+    return _who_moves(s)[0]
+
+
+def _who_moves(s: Structure) -> tuple[list, list]:
+    """(:func:`_references` of ``s``, the children of ``s`` that move to another in rank
+    order: ``ranks[0]`` those placed on the references only, ``ranks[1]`` those placed on
+    ``ranks[0]`` or a reference, ...; a child in a cycle of relations is in none)."""
+    if not s.children:
+        return [], []
+    movers: dict[int, Structure] = {}
+    refs: dict[int, Structure] = {}
+    edges: dict[int, set] = {}          # id(mover) -> ids of its references
+    for c in s.constraints:
+        args = c.args
+        if not args:
+            continue
+        groups: list = []           # s's children reached, in the order written
+        part = False
+        for owners in args:
+            for o in sorted(owners, key=_depth):
+                t = _child_toward(s, o)
+                if t is None:
+                    part = True
+                elif t not in groups:
+                    groups.append(t)
+        if len(groups) < 1 + (not part):
+            continue
+        if part:                    # s's own part is the reference: every child moves
+            for t in groups:
+                movers[id(t)] = t
+                edges.setdefault(id(t), set())
+            continue
+        solids = [t for t in groups if t.kind not in FEATURE_KINDS]
+        ref = solids[-1] if solids and len(solids) < len(groups) else groups[-1]
+        refs[id(ref)] = ref
+        for t in groups:
+            if t is not ref:
+                movers[id(t)] = t
+                edges.setdefault(id(t), set()).add(id(ref))
+    placed = {k for k in refs if k not in movers}
+    ranks: list = []
+    todo = dict(movers)
+    while todo:
+        now = [k for k in todo if edges[k] <= placed]
+        if not now:
+            break                       # a cycle: left to the stages
+        ranks.append([todo.pop(k) for k in now])
+        placed.update(now)
+    return [t for k, t in refs.items() if k not in movers], ranks
+
+
+def _depth(t: Structure) -> int:
+    n = 0
+    while t.parent is not None:
+        t, n = t.parent, n + 1
+    return n
+
+
+def _child_toward(s: Structure, o: Structure):
+    """The child of ``s`` whose subtree holds ``o`` (None: ``o`` is ``s`` or not below it)."""
+    while o is not None and o.parent is not s:
+        o = o.parent
+    return o
 
 
 def _helpers(s: Structure) -> list:
