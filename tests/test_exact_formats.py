@@ -12,7 +12,7 @@ import math
 import re
 
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import assume, given, settings, strategies as st
 
 from conftest import EXAMPLES
 
@@ -418,6 +418,13 @@ def test_a_rectangle_and_an_ellipse_come_out_on_their_curves(ex, ey, rx, ry, rot
     from aidl_lang.pipeline import compile_source
     if abs(rx - ry) < 1e-3:
         ry = rx + 0.5
+    # an ellipse within 0.01 mm of a side (beyond it or short of it) meets the side inside the
+    # union's chord tolerance: a sliver of 1.4 um past the side (ex=10, rx=10, ry=10.5,
+    # rot=3) is lost (noted in issue 85's closing note), so the law holds clear of it
+    a = math.radians(rot)
+    X = math.hypot(rx * math.cos(a), ry * math.sin(a))
+    Y = math.hypot(rx * math.sin(a), ry * math.cos(a))
+    assume(all(abs(g) > 0.01 for g in (ex + X - 20, ex - X + 20, ey + Y - 15, ey - Y + 15)))
     ell = f"Ellipse(center=({ex!r}, {ey!r}), rx={rx!r}, ry={ry!r}, rotation={rot!r} deg)"
     src = ("solid p {\n    body = Rectangle(center=(0, 0), width=40, height=30)\n" +
            (f"    hole h {{ e = {ell} }}\n" if cut else f"    e = {ell}\n") + "}\n")

@@ -256,7 +256,7 @@ def test_serve_downloads_and_the_mcp_render_tool_write_it(tmp_path):
         check_hpgl(for_cutting(_compile("gear").output, None), data)
     pytest.importorskip("mcp")
     from aidl_lang.mcp import server, tools as T
-    assert ".plt (HPGL" in server.Output.__metadata__[0].description
+    assert ".plt" in server.Output.__metadata__[0].description.split(", ")
     tag = (ROOT / "examples" / "name_tag.aidl").read_text()
     doc, _ = T.render(T.Workspace(tmp_path), source=tag, output="tag.plt")
     assert doc["ok"], doc

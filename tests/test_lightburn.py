@@ -335,7 +335,7 @@ def test_serve_downloads_and_the_mcp_render_tool_write_it(tmp_path):
     check_lbrn2(for_cutting(_compile("name_tag").output, None), data)
     pytest.importorskip("mcp")
     from aidl_lang.mcp import server, tools as T
-    assert ".lbrn2 (LightBurn" in server.Output.__metadata__[0].description
+    assert ".lbrn2" in server.Output.__metadata__[0].description.split(", ")
     doc, _ = T.render(T.Workspace(tmp_path), source=prog.read_text(), output="tag.lbrn2")
     assert doc["ok"], doc
     check_lbrn2(for_cutting(_compile("name_tag").output, None),
