@@ -51,7 +51,8 @@ from .shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                      recognise)
 from .anchors import _Anchored
 from .engraving import _engraving
-from .features import arc_slot, d_hole, keyhole, merged
+from .features import edge_notches
+from .makers import SINGLE_PARAMS, _MakerFeatures
 from .holds import _emit_holds, _holds
 from .layers import _hole_layers
 from .mirror import mirrored_pair, pair_items, write_pair
@@ -110,9 +111,6 @@ def _start_angle(a0: float, n: int, cnt: str) -> str:
     return f"{_deg(a0)} + i * 360 deg / {cnt}"
 
 
-SINGLE_PARAMS = 12     # a part with more holes of sizes no other has: their sizes as numbers
-
-
 class _Stats:
     def __init__(self) -> None:
         self.pieces = 0             # pieces of the drawing's outlines and holes
@@ -121,7 +119,7 @@ class _Stats:
         self.patterns: Counter = Counter()
 
 
-class _Part(_Anchored):
+class _Part(_Anchored, _MakerFeatures):
     """One part's statements, written into ``w`` at ``depth``."""
 
     def __init__(self, w: _Writer, params: _Params, stats: _Stats, prefix: str) -> None:
@@ -187,6 +185,15 @@ class _Part(_Anchored):
             got = _notches(segs)
             if got is not None:
                 return self.notched(depth, segs, first, got)
+        cuts = None
+        if first and (sh is None or sh.kind == "Polygon"):
+            got = edge_notches(segs)        # notches of any shape cut into the sides
+            if got is not None:
+                plain = recognise(got[0])
+                if _chamfered(plain) is not None or plain is not None and plain.kind in (
+                        "Rectangle", "RoundedRectangle") and \
+                        abs(plain.args.get("rotation", 0.0)) <= 1e-15:
+                    sh, cuts = plain, got[1]
         if sh is None or sh.kind == "Polygon" and len(segs) > 4:
             got = _attachments(segs)
             if got is not None:
@@ -230,6 +237,9 @@ class _Part(_Anchored):
         if chamfer is not None:
             self.w.emit(depth, f"Chamfer({nm}, {self.p('chamfer', leg, 'at each corner')})")
             st.patterns["chamfered corners"] += 1
+        for k, cut in enumerate(cuts or []):
+            self.edge_notch(depth, cut)
+            st.patterns["notch in a side"] += 1
         if teeth:
             self.teeth(depth, sh, teeth, "tooth")
         own = {id(x) for x in segs}
@@ -466,67 +476,6 @@ class _Part(_Anchored):
         w.emit(depth, "}")
         if ok:
             _emit_holds(w, depth, _holds(segs, f"{hn}.e"))
-
-    def maker_hole(self, depth: int, segs: list) -> bool:
-        """An arc slot, a keyhole or a D-hole (:mod:`.features`) written with its size
-        params (one set for holes of one kind and size) at its centre placed from the body
-        (:meth:`pos`); False when the loop is none of them."""
-        w = self.w
-        segs = merged(segs)
-        got = arc_slot(segs)
-        if got is not None:
-            C, R, a0, a1, wd = got
-            hn = self.name("arc_slot")
-            ps = self.kind_params("arc_slot", (("radius", R), ("width", wd)))
-            w.emit(depth, f"hole {hn} {{ s = ArcSlot(center={self.pos(C)}, radius={ps[0]}, "
-                          f"start_angle={_deg(a0)}, end_angle={_deg(a1)}, width={ps[1]}) }}")
-            w.emit(depth, f"Fixed({hn}.s)")
-            self.stats.kinds["ArcSlot"] += 1
-            return True
-        got = keyhole(segs)
-        if got is not None:
-            c, D, wd, L, ang = got
-            hn = self.name("keyhole")
-            ps = self.kind_params("keyhole", (("d", D), ("slot_width", wd), ("length", L)))
-            w.emit(depth, f"hole {hn} {{")
-            w.emit(depth + 1, f"c = {self.pos(c)}")
-            w.emit(depth + 1, f"head = Circle(center=c, diameter={ps[0]})")
-            w.emit(depth + 1, f"slot = Slot(start=c, end=polar(c, {ps[2]}, {_deg(ang)}), "
-                              f"width={ps[1]})")
-            w.emit(depth, "}")
-            w.emit(depth, f"for x in [{hn}.head, {hn}.slot] {{ Fixed(x) }}")
-            self.stats.kinds["keyhole"] += 1
-            return True
-        got = d_hole(segs)
-        if got is not None:
-            c, d, flat, ang = got
-            hn = self.name("d_hole")
-            ps = self.kind_params("d_hole", (("d", d), ("flat", flat)))
-            turn = f"{_deg(ang)} " if abs(ang) > 1e-15 else ""
-            start, end = (f"{turn}+ t", f"{turn}- t") if turn else ("t", "-t")
-            w.emit(depth, f"hole {hn} {{")
-            w.emit(depth + 1, f"c = {self.pos(c)}")
-            w.emit(depth + 1, f"t = acos(2 * {ps[1]} / {ps[0]})")
-            w.emit(depth + 1, f"e0 = Arc(center=c, start=polar(c, {ps[0]} / 2, {start}), "
-                              f"end=polar(c, {ps[0]} / 2, {end}))")
-            w.emit(depth + 1, "e1 = Line(start=e0.end, end=e0.start)")
-            w.emit(depth, "}")
-            w.emit(depth, f"Fixed({hn}.e0)")
-            self.stats.kinds["D-hole"] += 1
-            return True
-        return False
-
-    def kind_params(self, kind: str, sizes: tuple) -> list[str]:
-        """The size params of a hole of ``kind`` (``sizes``: (name, mm) pairs), shared by the
-        holes of that kind and size; numbers past :data:`SINGLE_PARAMS` kinds and sizes."""
-        key = (kind,) + tuple(round(v, 6) for _, v in sizes)
-        if key not in self.kinds:
-            if len(self.kinds) >= SINGLE_PARAMS:
-                return [_r(v) for _, v in sizes]
-            first = next((k for k in self.kinds if k[0] == kind), None) is None
-            base = kind if first else self.name(kind + "_2")
-            self.kinds[key] = [self.p(f"{base}_{n}", v) for n, v in sizes]
-        return self.kinds[key]
 
     def hole_block(self, depth: int, hn: str, sh: Shape, center: str, sizes=None,
                    loop: bool = False) -> None:
