@@ -134,3 +134,22 @@ def test_a_notch_meeting_a_cut_corner_stays_exact(tmp_path):
     assert res.ok
     (tmp_path / "back.dxf").write_text(res.to_dxf())
     assert _same(tmp_path / "c.dxf", tmp_path / "back.dxf") == ([], []), text
+
+
+def test_a_notch_within_two_chamfers_of_a_corner_keeps_the_drawing(tmp_path):
+    """A chamfered plate (legs of 5 mm) with a square notch 6 mm up its right side: the body's
+    `Chamfer` would cut at most half of the 6 mm left below the notch (3 mm), so the plate is
+    not written as a chamfered Rectangle with the notch as a hole; the program is the
+    drawing, exactly."""
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    m = doc.modelspace()
+    m.add_lwpolyline([(5, 0), (75, 0), (80, 5), (80, 6), (70, 6), (70, 18), (80, 18), (80, 55),
+                      (75, 60), (5, 60), (0, 55), (0, 5)], close=True)
+    doc.saveas(tmp_path / "n.dxf")
+    text, _ = import_drawing((tmp_path / "n.dxf").read_bytes(), "n.dxf", infer=True)
+    assert "Chamfer(" not in text, text
+    res = aidl_lang.compile(text, path=tmp_path / "n.aidl")
+    assert res.ok
+    (tmp_path / "back.dxf").write_text(res.to_dxf())
+    assert _same(tmp_path / "n.dxf", tmp_path / "back.dxf") == ([], []), text

@@ -61,6 +61,20 @@ from ..write.program import (_Names, _Writer, _containers, _cut_notes, _ident, _
 from ..model import Drawing, Note, _segs_box
 
 
+def _clear_of_chamfers(cuts: list, rect: Shape, leg: float) -> bool:
+    """Whether every notch ``(side, shape, lo, hi, depth)`` leaves at least two chamfer legs
+    of its side between it and each corner: ``Chamfer`` cuts at most half of each segment of
+    the final outline, so a notch nearer a corner would shorten that corner's chamfer."""
+    for side, _, lo, hi, _ in cuts:
+        axis = 1 if side in ("left", "right") else 0
+        key = "width" if axis == 0 else "height"
+        a = rect.center[axis] - rect.args[key] / 2
+        b = rect.center[axis] + rect.args[key] / 2
+        if lo - a < 2 * leg - 1e-9 or b - hi < 2 * leg - 1e-9:
+            return False
+    return True
+
+
 def _chamfered(sh: Shape | None) -> tuple | None:
     """A Polygon of 8 corners that is an upright rectangle with its four corners cut by
     equal 45-degree chamfers: ``(the Rectangle, the chamfer's leg in mm)``, else None."""
@@ -190,9 +204,10 @@ class _Part(_Anchored, _MakerFeatures):
             got = edge_notches(segs)        # notches of any shape cut into the sides
             if got is not None:
                 plain = recognise(got[0])
-                if _chamfered(plain) is not None or plain is not None and plain.kind in (
-                        "Rectangle", "RoundedRectangle") and \
-                        abs(plain.args.get("rotation", 0.0)) <= 1e-15:
+                cut_corner = _chamfered(plain)
+                if cut_corner is not None and _clear_of_chamfers(got[1], *cut_corner) or \
+                        plain is not None and plain.kind in ("Rectangle", "RoundedRectangle") \
+                        and abs(plain.args.get("rotation", 0.0)) <= 1e-15:
                     sh, cuts = plain, got[1]
         if sh is None or sh.kind == "Polygon" and len(segs) > 4:
             got = _attachments(segs)
