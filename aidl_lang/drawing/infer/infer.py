@@ -51,12 +51,28 @@ from .shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                      recognise)
 from .anchors import _Anchored
 from .engraving import _engraving
+from .features import edge_notches
+from .makers import SINGLE_PARAMS, _MakerFeatures
 from .holds import _emit_holds, _holds
 from .layers import _hole_layers
 from .mirror import mirrored_pair, pair_items, write_pair
 from ..write.program import (_Names, _Writer, _containers, _cut_notes, _ident, _layer_items,
                              _length, _num, _place, _pt, _whole_ellipse)
 from ..model import Drawing, Note, _segs_box
+
+
+def _clear_of_chamfers(cuts: list, rect: Shape, leg: float) -> bool:
+    """Whether every notch ``(side, shape, lo, hi, depth)`` leaves at least two chamfer legs
+    of its side between it and each corner: ``Chamfer`` cuts at most half of each segment of
+    the final outline, so a notch nearer a corner would shorten that corner's chamfer."""
+    for side, _, lo, hi, _ in cuts:
+        axis = 1 if side in ("left", "right") else 0
+        key = "width" if axis == 0 else "height"
+        a = rect.center[axis] - rect.args[key] / 2
+        b = rect.center[axis] + rect.args[key] / 2
+        if lo - a < 2 * leg - 1e-9 or b - hi < 2 * leg - 1e-9:
+            return False
+    return True
 
 
 def _chamfered(sh: Shape | None) -> tuple | None:
@@ -109,9 +125,6 @@ def _start_angle(a0: float, n: int, cnt: str) -> str:
     return f"{_deg(a0)} + i * 360 deg / {cnt}"
 
 
-SINGLE_PARAMS = 12     # a part with more holes of sizes no other has: their sizes as numbers
-
-
 class _Stats:
     def __init__(self) -> None:
         self.pieces = 0             # pieces of the drawing's outlines and holes
@@ -120,7 +133,7 @@ class _Stats:
         self.patterns: Counter = Counter()
 
 
-class _Part(_Anchored):
+class _Part(_Anchored, _MakerFeatures):
     """One part's statements, written into ``w`` at ``depth``."""
 
     def __init__(self, w: _Writer, params: _Params, stats: _Stats, prefix: str) -> None:
@@ -133,6 +146,7 @@ class _Part(_Anchored):
         #                                     (top) edge, 0 its centre (:meth:`grows_from`)
         self.named = _Cells([])             # centres written once, shared (their names:
         self.named_as: list[str] = []       # named_as[i] is named.points[i]'s)
+        self.kinds: dict = {}               # (kind, sizes) -> size params (kind_params)
 
     def shared(self, c) -> str | None:
         """The name of the first shared centre within EQUAL_TOL of ``c``, or None."""
@@ -185,6 +199,16 @@ class _Part(_Anchored):
             got = _notches(segs)
             if got is not None:
                 return self.notched(depth, segs, first, got)
+        cuts = None
+        if first and (sh is None or sh.kind == "Polygon"):
+            got = edge_notches(segs)        # notches of any shape cut into the sides
+            if got is not None:
+                plain = recognise(got[0])
+                cut_corner = _chamfered(plain)
+                if cut_corner is not None and _clear_of_chamfers(got[1], *cut_corner) or \
+                        plain is not None and plain.kind in ("Rectangle", "RoundedRectangle") \
+                        and abs(plain.args.get("rotation", 0.0)) <= 1e-15:
+                    sh, cuts = plain, got[1]
         if sh is None or sh.kind == "Polygon" and len(segs) > 4:
             got = _attachments(segs)
             if got is not None:
@@ -228,6 +252,9 @@ class _Part(_Anchored):
         if chamfer is not None:
             self.w.emit(depth, f"Chamfer({nm}, {self.p('chamfer', leg, 'at each corner')})")
             st.patterns["chamfered corners"] += 1
+        for k, cut in enumerate(cuts or []):
+            self.edge_notch(depth, cut)
+            st.patterns["notch in a side"] += 1
         if teeth:
             self.teeth(depth, sh, teeth, "tooth")
         own = {id(x) for x in segs}
@@ -398,8 +425,12 @@ class _Part(_Anchored):
 
     def compound_hole(self, depth: int, segs: list, body) -> None:
         """A hole no one primitive makes: a circle with a keyway (a tooth), a rectangle with
-        a tab, both written in one ``hole``; else the exact chain."""
+        a tab, both written in one ``hole``; an arc slot, a keyhole, a D-hole
+        (:meth:`maker_hole`); else the exact chain."""
         w = self.w
+        if self.maker_hole(depth, segs):
+            self.stats.in_shapes += len(segs)
+            return
         got = _circle_attachments(segs)
         if got is not None:
             circle, teeth = got
