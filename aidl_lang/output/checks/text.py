@@ -443,13 +443,70 @@ def _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs, M
         frame = [f[4] for f in fix]
         if all(x is not None for x in frame):
             ways.append(f"grow `{m.label}` by {max(frame):.2f} mm on each side")
-        ways.append("make the text smaller")
+        fits = [_fitting_size(tsegs[f[3]], segs[f[4]], ends_of[f[4]], boxes[f[2]], sizes[f[2]],
+                              f[3]) for f in pairs]
+        if fits and all(x is not None for x in fits):
+            ways.append(f"make the text at most {min(fits):g} mm (size={min(fits):g} mm)")
+        else:
+            ways.append("make the text smaller")
         sink.warning("W0513", f"{text} is too close to the engraved {what}: the mark {how}"
                      f"{into} (the clearance is {c:.2f} mm, {'a quarter' if c > side else 'an eighth'}"
                      f" of the text size{' for a mark beside it' if c <= side else ''}), so "
                      f"they read as touching{more}", g.span, labels=labels,
                      hint=f"leave {c:.2f} mm between the text and `{m.label}`: "
                           + ", or ".join(ways))
+
+
+def _fitting_size(tseg, mseg, ends, box3, size: float, g) -> float | None:
+    """The largest text size (mm, rounded down to 0.01 mm) at which text ``g`` (its strokes
+    ``tseg``: starts, ends; its box ``box3`` as :func:`_text_box` gives; its ``size``) is
+    clear of the mark (its segments ``mseg``, its open ``ends``) as :func:`_check_clearance`
+    measures it: the strokes, the box and the clearance (:data:`TEXT_CLEAR` and
+    :data:`SIDE_CLEAR` of the size, at least :data:`MIN_CLEAR`) all scale with the size about
+    the text's position point (:func:`...geometry.text.text_strokes`), so the scale that
+    holds is found by bisection (to 1e-4 of the size).  None for a text along a curve, a
+    text whose strokes are not its font's at its position (placed by a transform), or when
+    no size down to a twentieth of it clears the mark (the mark runs through the position)."""
+    from ...geometry.text import text_strokes
+    if g.data.get("along") is not None or not size > 0 or g.data.get("text") is None:
+        return None
+    own = np.asarray(text_strokes(g.data["text"], size, g.data.get("anchor", "middle"),
+                                  g.data.get("valign", "baseline"),
+                                  g.data.get("rotation", 0.0) or 0.0), dtype=float)
+    if own.shape != (len(tseg[0]), 2, 2):
+        return None
+    p = tseg[0][0] - own[0, 0]
+    if not (np.allclose(tseg[0] - p, own[:, 0], atol=1e-6)
+            and np.allclose(tseg[1] - p, own[:, 1], atol=1e-6)):
+        return None
+    rot, box = box3[1], box3[2]
+    c_, s_ = math.cos(rot), math.sin(rot)
+    pu, pv = p[0] * c_ + p[1] * s_, -p[0] * s_ + p[1] * c_
+
+    def ok(f):
+        a, b = p + f * (tseg[0] - p), p + f * (tseg[1] - p)
+        bx = (pu + f * (box[0] - pu), pv + f * (box[1] - pv), pu + f * (box[2] - pu),
+              pv + f * (box[3] - pv))
+        clear = max(TEXT_CLEAR * size * f, MIN_CLEAR)
+        side = max(SIDE_CLEAR * size * f, MIN_CLEAR)
+        if _length_inside(mseg, rot, bx) > IN_BOX:
+            return False
+        gap = _seg_gap(a, b, mseg[0], mseg[1])[0]
+        if gap >= clear:
+            return True
+        if gap < side:
+            return False
+        return all(_seg_gap(a, b, q[None], q[None])[0] >= clear for q in ends)
+    lo, hi = 0.05, 1.0
+    if not ok(lo):
+        return None
+    while hi - lo > 1e-4:
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if ok(mid) else (lo, mid)
+    n = math.floor(lo * size * 100 + 1e-9) / 100
+    while n > 0 and not ok(n / size):
+        n = round(n - 0.01, 2)
+    return n if n > 0 else None
 
 
 def _fix(tseg, mseg, items, box3, g, k, pt, pm, c: float, gap: float) -> tuple:

@@ -944,3 +944,197 @@ def _components(m: int, a: list, b: list) -> np.ndarray:
                 break
             parent = nxt
     return parent
+
+
+NECK_VERTS = 200_000   # W0507's neck search erodes the part whole: not past this many vertices
+
+
+def _outer_loops(cs) -> list:
+    """The counter-clockwise loops (each k x 2, mm) of ``cs``: one per piece."""
+    from .common import _signed
+    return [P for P in (np.asarray(p, dtype=float) for p in cs.to_polygons())
+            if len(P) >= 3 and _signed(P) > 0]
+
+
+def _eroded(shape, r: float):
+    return shape.offset(-r, mf.JoinType.Round, 2.0, 16)
+
+
+def _closest_pieces(er) -> tuple | None:
+    """The two nearest pieces of the eroded shape ``er`` (at least two): ``(p, q, gap)``,
+    ``p`` and ``q`` the nearest points (mm) of two different pieces, by
+    :func:`..part.nearby.close_pairs` within a radius that doubles from 1 um."""
+    from ..part.nearby import TooManyPairs, close_pairs
+    loops = [np.asarray(p, dtype=float) for p in er.to_polygons() if len(p) >= 2]
+    if len(loops) < 2:
+        return None
+    from .common import _signed
+    # each loop's piece: holes belong to the outer loop whose box holds them (a piece's
+    # hole never faces another piece across less than its own material)
+    outer = [k for k, P in enumerate(loops) if _signed(P) > 0]
+    boxes = np.array([(*P.min(axis=0), *P.max(axis=0)) for P in loops])
+    piece = np.empty(len(loops), dtype=np.intp)
+    for k, P in enumerate(loops):
+        if k in outer:
+            piece[k] = k
+            continue
+        inside = [o for o in outer if (boxes[o, :2] <= boxes[k, :2]).all()
+                  and (boxes[o, 2:] >= boxes[k, 2:]).all()]
+        piece[k] = min(inside, key=lambda o: np.prod(boxes[o, 2:] - boxes[o, :2])) \
+            if inside else k
+    V = np.concatenate(loops)
+    B = np.concatenate([np.roll(P, -1, axis=0) for P in loops])
+    feat = np.concatenate([np.full(len(P), piece[k]) for k, P in enumerate(loops)])
+    span = float(np.max(V.max(axis=0) - V.min(axis=0)))
+    radius = 1e-3
+    while radius < 2 * span + 1:
+        try:
+            v, sg, dist, foot = close_pairs(V, feat, V, B, feat, radius)
+        except TooManyPairs:
+            return None
+        if len(v):
+            k = int(np.argmin(dist))
+            return V[v[k]], foot[k], float(dist[k])
+        radius *= 4
+    return None
+
+
+def _face_at(d: Drawing, s: Structure, point, other):
+    """The face ``(geometry, CrossSection)`` of part ``s``'s solids that covers ``point``
+    (a 2 um square about it) most, one that does not cover ``other`` first (the member on
+    ``point``'s side of a neck, where both overlap), or None."""
+    q = mf.CrossSection.square((2e-3, 2e-3)).translate((point[0] - 1e-3, point[1] - 1e-3))
+    o = mf.CrossSection.square((2e-3, 2e-3)).translate((other[0] - 1e-3, other[1] - 1e-3))
+    best, most = None, (False, 0.0)
+    for _, faces in _solids_within(d, s):
+        for g, f in faces:
+            if f is None:
+                continue
+            a, b, c, e = f.bounds()
+            if a > point[0] + 1e-3 or c < point[0] - 1e-3 or b > point[1] + 1e-3 \
+                    or e < point[1] - 1e-3:
+                continue
+            got = (_area(o ^ f) <= 0.0, _area(q ^ f))
+            if got[1] > 0.0 and got > most:
+                best, most = (g, f), got
+    return best
+
+
+def _check_necks(d: Drawing, s: Structure, shape, t: float, sink: DiagnosticSink,
+                 tick=lambda ahead=0.0: None) -> None:
+    """W0507 for two members of part ``s`` (solid shapes of its union, :attr:`Drawing.own`)
+    that join over a neck narrower than ``t`` mm, or only at a point (a hook's loop that
+    meets a leaf at its stem's tip: the cut part hangs by that point).  The opening of
+    :func:`_check_walls` misses such a neck, which removes less than its ``2 t^2``.
+
+    Found by the erosion of the part by ``t / 2`` (Manifold's offset, round joins): a neck
+    narrower than ``t`` splits a piece in two, so the eroded part has more pieces (outer
+    loops) than the part.  The neck's width is the least erosion that splits the part
+    (bisection to 0.005 mm on the radius), its place the middle of the two pieces' nearest
+    points just past that width, and the two members are the faces covering those points;
+    a neck within one member (a plate cut nearly through by its holes) belongs to the other
+    W0507 checks and is not reported here.  The hint gives how far to move the smaller side's
+    member towards the other for a neck of ``t`` (bisection on the move, the two members
+    and the shapes around the neck united again).  One erosion of the whole part (O(n log n)
+    in its vertices) when there is no neck; a part of more than :data:`NECK_VERTS` vertices
+    is not searched."""
+    from .common import _union
+    n = shape.num_vert()
+    if t <= 0 or shape.is_empty() or n > NECK_VERTS:
+        return
+    base = len(_outer_loops(shape))
+    tick(n * THIN_SECONDS_PER_VERTEX)
+    er = _eroded(shape, t / 2)
+    if len(_outer_loops(er)) <= base:
+        return
+    far = _closest_pieces(er)
+    if far is None:
+        return
+    # the width, by bisection on the part within a window about the split (each step an
+    # erosion of that window only, not of the whole part)
+    c = (np.asarray(far[0]) + np.asarray(far[1])) / 2
+    h = far[2] + 3 * t
+    win = shape ^ mf.CrossSection.square((2 * h, 2 * h)).translate((c[0] - h, c[1] - h))
+    wn = win.num_vert()
+    base = len(_outer_loops(win))
+    lo, hi = 0.0, t / 2
+    while hi - lo > 2.5e-3:
+        mid = (lo + hi) / 2
+        tick(wn * THIN_SECONDS_PER_VERTEX)
+        if len(_outer_loops(_eroded(win, mid))) > base:
+            hi = mid
+        else:
+            lo = mid
+    near = _closest_pieces(_eroded(win, hi))
+    if near is None:
+        return
+    p, q, _ = near
+    mid_pt = (np.asarray(p) + np.asarray(q)) / 2
+    width = 2 * lo
+    # the members on either side: the faces at the nearest points of the pieces eroded by
+    # t / 2 (clear of the neck itself, which both may cover)
+    fp, fq = _face_at(d, s, far[0], far[1]), _face_at(d, s, far[1], far[0])
+    if fp is None or fq is None or fp[0] is fq[0]:
+        return
+    # the member to move: the one on the smaller side of the split
+    pieces = {}
+    for P in _outer_loops(er):
+        pieces[len(pieces)] = P
+    from .common import _inside, _edges
+
+    def side_area(pt):
+        for P in pieces.values():
+            if bool(_inside(np.asarray(pt, dtype=float)[None], _edges([P]))[0]):
+                return abs(float(np.sum(P[:, 0] * np.roll(P[:, 1], -1)
+                                        - np.roll(P[:, 0], -1) * P[:, 1]))) / 2
+        return np.inf
+    if side_area(far[1]) > side_area(far[0]):
+        fp, fq = fq, fp
+        far = (far[1], far[0], far[2])
+    (gp, sp), (gq, sq) = fp, fq
+    u = np.asarray(far[0], dtype=float) - np.asarray(far[1], dtype=float)
+    nu = float(np.hypot(*u))
+    move = None
+    if nu > 1e-9:
+        u /= nu
+        x0, y0, x1, y1 = sq.bounds()
+        reach = max(x1 - x0, y1 - y0) + 2 * t
+        others = []
+        for _, faces in _solids_within(d, s):
+            for g, f in faces:
+                if f is None or g is gq:
+                    continue
+                a, b, c, e = f.bounds()
+                if a <= x1 + reach and c >= x0 - reach and b <= y1 + reach and e >= y0 - reach:
+                    others.append(f)
+        rest = _union(others)
+        rest_n = len(_outer_loops(_eroded(rest, t / 2))) if not rest.is_empty() else 0
+        own_n = len(_outer_loops(_eroded(sq, t / 2)))
+
+        def joined(m):
+            tick()
+            whole = _union([rest, sq.translate((float(u[0] * m), float(u[1] * m)))])
+            return len(_outer_loops(_eroded(whole, t / 2))) < rest_n + own_n
+        top = reach
+        if own_n and joined(top):
+            a_, b_ = 0.0, top
+            while b_ - a_ > 5e-3:
+                m = (a_ + b_) / 2
+                a_, b_ = (a_, m) if joined(m) else (m, b_)
+            move = float(np.ceil(b_ * 100 - 1e-9) / 100)
+            if not joined(move):
+                move = b_
+    from .engravings import _copy_label
+    what_q, what_p = f"{gq.kind} `{_copy_label(gq)}`", f"{gp.kind} `{_copy_label(gp)}`"
+    how = ("only at a point (a neck of zero width)" if width < 5e-3 else
+           f"over a neck {width:.2f} mm wide")
+    fix = (f"move {what_q} {move:.2f} mm towards {what_p} (by ({u[0] * move:.2f}, "
+           f"{u[1] * move:.2f}) mm) so that they overlap over at least {t:g} mm"
+           if move is not None else f"make {what_q} and {what_p} overlap over at least {t:g} mm")
+    sink.warning(
+        "W0507", f"{what_q} and {what_p} of `{s.path}` join {how}, narrower than {t:g} mm, "
+        f"near ({mid_pt[0]:.1f}, {mid_pt[1]:.1f}): the cut part hangs by it and breaks there "
+        "(or falls apart when the laser burns the neck away)",
+        gq.span or s.span,
+        labels=[Label(gp.span, "the other member", primary=False)] if gp.span else [],
+        hint=f"{fix}; the minimum is set by `min_wall` or --min-wall")
