@@ -445,10 +445,12 @@ def _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs, M
             ways.append(f"grow `{m.label}` by {max(frame):.2f} mm on each side")
         fits = [_fitting_size(tsegs[f[3]], segs[f[4]], ends_of[f[4]], boxes[f[2]], sizes[f[2]],
                               f[3]) for f in pairs]
-        if fits and all(x is not None for x in fits):
+        if fits and all(x is not None and x > 0 for x in fits):
             ways.append(f"make the text at most {min(fits):g} mm (size={min(fits):g} mm)")
-        else:
+        elif not any(x == 0.0 for x in fits):      # 0: no smaller size clears the mark
             ways.append("make the text smaller")
+        if not ways:
+            ways.append("move the text clear of the mark")
         sink.warning("W0513", f"{text} is too close to the engraved {what}: the mark {how}"
                      f"{into} (the clearance is {c:.2f} mm, {'a quarter' if c > side else 'an eighth'}"
                      f" of the text size{' for a mark beside it' if c <= side else ''}), so "
@@ -464,9 +466,10 @@ def _fitting_size(tseg, mseg, ends, box3, size: float, g) -> float | None:
     measures it: the strokes, the box and the clearance (:data:`TEXT_CLEAR` and
     :data:`SIDE_CLEAR` of the size, at least :data:`MIN_CLEAR`) all scale with the size about
     the text's position point (:func:`...geometry.text.text_strokes`), so the scale that
-    holds is found by bisection (to 1e-4 of the size).  None for a text along a curve, a
-    text whose strokes are not its font's at its position (placed by a transform), or when
-    no size down to a twentieth of it clears the mark (the mark runs through the position)."""
+    holds is found by bisection (to 1e-4 of the size).  None (not measured) for a text along
+    a curve or a text whose strokes are not its font's at its position (placed by a
+    transform); 0.0 when no size down to a twentieth of it clears the mark (the mark runs
+    through the position, or ends nearer it than :data:`MIN_CLEAR`: no smaller text helps)."""
     from ...geometry.text import text_strokes
     if g.data.get("along") is not None or not size > 0 or g.data.get("text") is None:
         return None
@@ -499,14 +502,14 @@ def _fitting_size(tseg, mseg, ends, box3, size: float, g) -> float | None:
         return all(_seg_gap(a, b, q[None], q[None])[0] >= clear for q in ends)
     lo, hi = 0.05, 1.0
     if not ok(lo):
-        return None
+        return 0.0
     while hi - lo > 1e-4:
         mid = (lo + hi) / 2
         lo, hi = (mid, hi) if ok(mid) else (lo, mid)
     n = math.floor(lo * size * 100 + 1e-9) / 100
     while n > 0 and not ok(n / size):
         n = round(n - 0.01, 2)
-    return n if n > 0 else None
+    return max(n, 0.0)
 
 
 def _fix(tseg, mseg, items, box3, g, k, pt, pm, c: float, gap: float) -> tuple:
