@@ -107,3 +107,73 @@ def test_law_followed_the_size_hint_clears_the_warning(size, gap, text, mark, va
         assert 0 < n < size
         again = src.replace(f"size={size:.4f}", f"size={n} mm")
         assert not _warnings(again, "W0513"), (w.hint, again)
+
+
+# --- 2. engravings drawn over engravings ---------------------------------------------------
+
+def test_ruler_bars_over_ticks_warned_and_the_move_clears_them():
+    src = (HERE / "ruler_bars_over_ticks.aidl").read_text()
+    ws = _warnings(src, "W0513")
+    twice = [w for w in ws if "burns that stretch twice" in w.message]
+    into = [w for w in ws if "runs into the engraved outline" in w.message]
+    assert len(twice) == 1 and len(into) == 1
+    # the bars' sides at x = 10, 20 ... lie on the centimetre ticks over the bar's 3 mm
+    assert "over 3.00 mm" in twice[0].message and "9 more pairs" in twice[0].message
+    assert "`ruler.bars.cm[0]`" in into[0].message and "45 such marks" in into[0].message
+    dx, dy = map(float, re.search(r"by \((-?[0-9.]+), (-?[0-9.]+)\) mm\)", into[0].hint).groups())
+    # the longest ticks end at y = 22: the bars' top (25 + 1.5) must come 0.3 mm under it
+    assert dx == 0.0 and abs(dy - (-4.8)) < 0.02
+    moved = src.replace("k * 20 mm, 25)", f"k * 20 mm, {25 + dy:.2f})")
+    assert moved != src
+    assert not _warnings(moved, "W0513")
+
+
+def test_ticks_drawn_twice_are_one_warning_and_skipping_them_clears_it():
+    src = (HERE / "ruler_ticks_twice.aidl").read_text()
+    [w] = _warnings(src, "W0513")
+    assert "`ruler.mm.tick[0]` lies on the engraved `ruler.cm.tick[0]` over 4.00 mm (all of it)" \
+        in w.message and "10 more pairs" in w.message
+    assert w.span.line == 8 and "leave `ruler.mm.tick` out" in w.hint
+    fixed = src.replace("            tick = Line((10 + i * 1 mm, 30), (10 + i * 1 mm, 26))",
+                        "            if i % 10 != 0 {\n"
+                        "                tick = Line((10 + i * 1 mm, 30), (10 + i * 1 mm, 26))\n"
+                        "            }")
+    assert fixed != src
+    assert not _warnings(fixed, "W0513")
+
+
+def test_crossings_a_maker_means_are_not_warned():
+    src = (HERE / "meant_crossings.aidl").read_text()
+    r = aidl_lang.compile(source=src, path=str(HERE / "meant_crossings.aidl"))
+    assert r.ok and not [d for d in r.diagnostics if d.code.startswith("W05")]
+
+
+_PLATE = ("solid plate {{\n    body = Rectangle(center=(0, 0), width=200, height=200)\n"
+          "    drawing a {{ m = Line(({:.3f}, {:.3f}), ({:.3f}, {:.3f})) }}\n"
+          "    drawing b {{ m = Line(({:.3f}, {:.3f}), ({:.3f}, {:.3f})) }}\n}}\n")
+
+
+@settings(max_examples=25, deadline=None)
+@given(x=st.floats(-40, 40), y=st.floats(-40, 40), angle=st.floats(0, 6.28),
+       la=st.floats(2, 30), shift=st.floats(-0.9, 0.9), lb=st.floats(2, 30))
+def test_law_a_stroke_drawn_on_a_stroke_is_warned(x, y, angle, la, shift, lb):
+    """Two lines on one carrier overlapping over at least 0.3 mm are burnt twice (warned);
+    the same lines turned to cross at 90 degrees, each going on past the other, are a
+    grid's (not warned)."""
+    import math
+    u = (math.cos(angle), math.sin(angle))
+    a0, a1 = (x, y), (x + la * u[0], y + la * u[1])
+    s = shift * la                       # b starts along a (may start before it)
+    b0 = (x + s * u[0], y + s * u[1])
+    b1 = (b0[0] + lb * u[0], b0[1] + lb * u[1])
+    over = min(la, s + lb) - max(0.0, s)
+    warned = _warnings(_PLATE.format(*a0, *a1, *b0, *b1), "W0513")
+    if over >= 0.31:
+        assert len(warned) == 1 and "twice" in warned[0].message
+    elif over <= 0.29:
+        assert not warned
+    # turned: b crosses a's middle at right angles, both going on past the crossing
+    m = (x + la / 2 * u[0], y + la / 2 * u[1])
+    c0 = (m[0] + lb / 2 * u[1], m[1] - lb / 2 * u[0])
+    c1 = (m[0] - lb / 2 * u[1], m[1] + lb / 2 * u[0])
+    assert not _warnings(_PLATE.format(*a0, *a1, *c0, *c1), "W0513")

@@ -321,7 +321,7 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
                 run("walls", s, lambda: _check_walls(
                     d, s, shape, min_wall, cuts, sink, covered=covered or set(),
                     loops=loops[s], tick=lambda ahead=0.0: tick(s, ahead)))
-                run("walls", s, lambda: _check_necks(d, s, shape, min_wall, sink,
+                run("walls", s, lambda: _check_necks(d, s, shape, min_wall, cuts, sink,
                                                      tick=lambda ahead=0.0: tick(s, ahead)))
                 run("slits", s, lambda: _check_slits(d, s, loops[s], cuts, min_wall, sink,
                                                      tick=lambda ahead=0.0: tick(s, ahead),

@@ -960,28 +960,38 @@ def _eroded(shape, r: float):
     return shape.offset(-r, mf.JoinType.Round, 2.0, 16)
 
 
-def _closest_pieces(er) -> tuple | None:
-    """The two nearest pieces of the eroded shape ``er`` (at least two): ``(p, q, gap)``,
-    ``p`` and ``q`` the nearest points (mm) of two different pieces, by
-    :func:`..part.nearby.close_pairs` within a radius that doubles from 1 um."""
+def _pieces_of(cs) -> tuple[list, np.ndarray]:
+    """The loops of ``cs`` (each k x 2, mm) and for each the number of its piece: an outer
+    (counter-clockwise) loop is its own piece, a hole belongs to the smallest outer loop
+    whose box holds it."""
+    from .common import _signed
+    loops = [np.asarray(p, dtype=float) for p in cs.to_polygons() if len(p) >= 2]
+    outer = [k for k, P in enumerate(loops) if _signed(P) > 0]
+    boxes = np.array([(*P.min(axis=0), *P.max(axis=0)) for P in loops]).reshape(-1, 4)
+    area = np.prod(boxes[:, 2:] - boxes[:, :2], axis=1)
+    piece = np.arange(len(loops))
+    ob = boxes[outer]
+    for k in range(len(loops)):
+        if k in outer:
+            continue
+        ok = np.flatnonzero((ob[:, :2] <= boxes[k, :2]).all(axis=1)
+                            & (ob[:, 2:] >= boxes[k, 2:]).all(axis=1))
+        if len(ok):
+            piece[k] = outer[int(ok[np.argmin(area[outer][ok])])]
+    return loops, piece
+
+
+def _closest_pieces(er, parent) -> tuple | None:
+    """The two nearest pieces of the eroded shape ``er`` that ``parent`` (a point, mm ->
+    the piece of the part before the erosion that holds it) puts in one piece of the part:
+    ``(p, q, gap)``, ``p`` and ``q`` their nearest points (mm), by
+    :func:`..part.nearby.close_pairs` within a radius that grows from 1 um; None when no two
+    pieces of one piece of the part come within its size."""
     from ..part.nearby import TooManyPairs, close_pairs
-    loops = [np.asarray(p, dtype=float) for p in er.to_polygons() if len(p) >= 2]
+    loops, piece = _pieces_of(er)
     if len(loops) < 2:
         return None
-    from .common import _signed
-    # each loop's piece: holes belong to the outer loop whose box holds them (a piece's
-    # hole never faces another piece across less than its own material)
-    outer = [k for k, P in enumerate(loops) if _signed(P) > 0]
-    boxes = np.array([(*P.min(axis=0), *P.max(axis=0)) for P in loops])
-    piece = np.empty(len(loops), dtype=np.intp)
-    for k, P in enumerate(loops):
-        if k in outer:
-            piece[k] = k
-            continue
-        inside = [o for o in outer if (boxes[o, :2] <= boxes[k, :2]).all()
-                  and (boxes[o, 2:] >= boxes[k, 2:]).all()]
-        piece[k] = min(inside, key=lambda o: np.prod(boxes[o, 2:] - boxes[o, :2])) \
-            if inside else k
+    of = {int(k): parent(loops[k][0]) for k in set(piece.tolist())}
     V = np.concatenate(loops)
     B = np.concatenate([np.roll(P, -1, axis=0) for P in loops])
     feat = np.concatenate([np.full(len(P), piece[k]) for k, P in enumerate(loops)])
@@ -992,8 +1002,10 @@ def _closest_pieces(er) -> tuple | None:
             v, sg, dist, foot = close_pairs(V, feat, V, B, feat, radius)
         except TooManyPairs:
             return None
-        if len(v):
-            k = int(np.argmin(dist))
+        same = np.array([of[int(feat[a])] is not None and of[int(feat[a])] == of[int(feat[b])]
+                         for a, b in zip(v, sg)], dtype=bool)
+        if same.any():
+            k = np.flatnonzero(same)[int(np.argmin(dist[same]))]
             return V[v[k]], foot[k], float(dist[k])
         radius *= 4
     return None
@@ -1020,7 +1032,7 @@ def _face_at(d: Drawing, s: Structure, point, other):
     return best
 
 
-def _check_necks(d: Drawing, s: Structure, shape, t: float, sink: DiagnosticSink,
+def _check_necks(d: Drawing, s: Structure, shape, t: float, cuts, sink: DiagnosticSink,
                  tick=lambda ahead=0.0: None) -> None:
     """W0507 for two members of part ``s`` (solid shapes of its union, :attr:`Drawing.own`)
     that join over a neck narrower than ``t`` mm, or only at a point (a hook's loop that
@@ -1038,39 +1050,66 @@ def _check_necks(d: Drawing, s: Structure, shape, t: float, sink: DiagnosticSink
     and the shapes around the neck united again).  One erosion of the whole part (O(n log n)
     in its vertices) when there is no neck; a part of more than :data:`NECK_VERTS` vertices
     is not searched."""
-    from .common import _union
+    from .common import _edges, _inside, _union
     n = shape.num_vert()
     if t <= 0 or shape.is_empty() or n > NECK_VERTS:
         return
-    base = len(_outer_loops(shape))
+    base = _outer_loops(shape)
     tick(n * THIN_SECONDS_PER_VERTEX)
     er = _eroded(shape, t / 2)
-    if len(_outer_loops(er)) <= base:
+    if len(_outer_loops(er)) <= len(base):
         return
-    far = _closest_pieces(er)
+    edges = [_edges([P]) for P in base]
+
+    def parent(pt):
+        for k, E in enumerate(edges):
+            if bool(_inside(np.asarray(pt, dtype=float)[None], E)[0]):
+                return k
+        return None
+    far = _closest_pieces(er, parent)
     if far is None:
         return
     # the width, by bisection on the part within a window about the split (each step an
-    # erosion of that window only, not of the whole part)
+    # erosion of that window only): the least erosion that parts the two points
     c = (np.asarray(far[0]) + np.asarray(far[1])) / 2
     h = far[2] + 3 * t
     win = shape ^ mf.CrossSection.square((2 * h, 2 * h)).translate((c[0] - h, c[1] - h))
     wn = win.num_vert()
-    base = len(_outer_loops(win))
+
+    def parted(r):
+        tick(wn * THIN_SECONDS_PER_VERTEX)
+        loops, piece = _pieces_of(_eroded(win, r))
+        home = []
+        for pt in (far[0], far[1]):
+            k = next((int(piece[k]) for k, P in enumerate(loops) if piece[k] == k
+                      and bool(_inside(np.asarray(pt)[None], _edges([P]))[0])), None)
+            home.append(k)
+        return home[0] is None or home[1] is None or home[0] != home[1]
+    # the points lie 1 um inside the pieces eroded by t / 2 (on their edge otherwise)
+    inward = (np.asarray(far[0]) - np.asarray(far[1]))
+    inward = inward / max(float(np.hypot(*inward)), 1e-12) * 1e-3
+    far = (np.asarray(far[0]) + inward, np.asarray(far[1]) - inward, far[2])
     lo, hi = 0.0, t / 2
+    if not parted(hi):
+        return
     while hi - lo > 2.5e-3:
         mid = (lo + hi) / 2
-        tick(wn * THIN_SECONDS_PER_VERTEX)
-        if len(_outer_loops(_eroded(win, mid))) > base:
-            hi = mid
-        else:
-            lo = mid
-    near = _closest_pieces(_eroded(win, hi))
-    if near is None:
-        return
-    p, q, _ = near
-    mid_pt = (np.asarray(p) + np.asarray(q)) / 2
+        lo, hi = (lo, mid) if parted(mid) else (mid, hi)
     width = 2 * lo
+    if width >= t - 0.01:
+        return                  # no narrower than the minimum, to the bisection's step
+    near = _closest_pieces(_eroded(win, hi), parent)      # where the neck parts
+    mid_pt = c if near is None else (np.asarray(near[0]) + np.asarray(near[1])) / 2
+    # a neck beside a hole is a wall between the hole and the edge (the other W0507s)
+    for cut in cuts:
+        hs = d.shapes.get(cut.hole)
+        if hs is None or hs.is_empty():
+            continue
+        x0, y0, x1, y1 = hs.bounds()
+        if x0 - t <= mid_pt[0] <= x1 + t and y0 - t <= mid_pt[1] <= y1 + t and _area(
+                hs ^ mf.CrossSection.circle(t, 32).translate((float(mid_pt[0]),
+                                                              float(mid_pt[1])))) > 0:
+            return
     # the members on either side: the faces at the nearest points of the pieces eroded by
     # t / 2 (clear of the neck itself, which both may cover)
     fp, fq = _face_at(d, s, far[0], far[1]), _face_at(d, s, far[1], far[0])
