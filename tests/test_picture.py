@@ -177,3 +177,10 @@ def test_law_a_stroke_drawn_on_a_stroke_is_warned(x, y, angle, la, shift, lb):
     c0 = (m[0] + lb / 2 * u[1], m[1] - lb / 2 * u[0])
     c1 = (m[0] - lb / 2 * u[1], m[1] + lb / 2 * u[0])
     assert not _warnings(_PLATE.format(*a0, *a1, *c0, *c1), "W0513")
+
+
+def test_a_neck_in_a_part_with_holes_is_found_between_the_members():
+    src = (HERE / "hook_neck.aidl").read_text().replace(
+        "    loop =", "    hole eye { c = Circle(center=(0, 0), radius=3) }\n    loop =")
+    necks = [d for d in _warnings(src, "W0507") if "neck" in d.message]
+    assert len(necks) == 1 and "`pendant.stem`" in necks[0].message

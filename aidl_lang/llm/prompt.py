@@ -61,8 +61,7 @@ hole poking past the edge widens it; construction geometry does not count): for 
 alone use a shape's box (`plate.body.bb`).
 Rules: a constraint may only refer to its own structure's subtree; geometry may only reuse
 points of its own structure. Booleans: a solid is the union of its shapes and solid children
-(overlapping parts merge into one outline: overlap them by at least `min_wall`, a touch or a
-hair's overlap is a neck the part breaks at, W0504/W0507) minus its hole children. So
+(touching or overlapping parts merge into one outline) minus its hole children. So
 a hole cuts the solid it is declared in, that solid's own shapes and solid children alike:
 ```aidl
 solid plate {

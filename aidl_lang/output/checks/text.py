@@ -589,7 +589,8 @@ def _closed(item) -> bool:
 
 def _check_marks_over_marks(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
     """W0513 for engraved marks (not text: :func:`_check_text_overlap` measures text) drawn
-    over each other, one warning per pair of statements (copies made in a loop named by index,
+    over each other on one solid part (a drawing beside the parts, at assembly level, is an
+    illustration and is not compared), one warning per pair of statements (copies made in a loop named by index,
     with the number of such pairs):
 
     * burnt twice: a stroke of one mark lies on a stroke of another (parallel within 1 degree,
@@ -610,15 +611,22 @@ def _check_marks_over_marks(d: Drawing, sink: DiagnosticSink, tick=None) -> None
     The segment pairs come from one box search (:func:`..part.nearby.box_pairs`), O(n log n)
     in the segments but for the pairs it finds."""
     from ..part.nearby import box_pairs
-    from .common import _edges, _inside
+    from .common import _edges, _inside, _part_of, _part_roots
+    roots = _part_roots(d)
     items_of: dict = {}
+    part_of: dict = {}
     for style, item, g in d.strokes:
         if g is None or style == "cut" or g.kind == "Text":
             continue
-        items_of.setdefault(g, []).append(item)
+        if g not in part_of:
+            part = _part_of(g.owner, roots)
+            part_of[g] = part if part is not None and part.kind == "solid" else None
+        if part_of[g] is not None:          # engraved on a part (not an illustration)
+            items_of.setdefault(g, []).append(item)
     if len(items_of) < 2:
         return
     marks = list(items_of)
+    home = np.array([id(part_of[g]) for g in marks])
     segs, owner, closed = [], [], []
     for k, g in enumerate(marks):
         for it in items_of[g]:
@@ -638,7 +646,8 @@ def _check_marks_over_marks(d: Drawing, sink: DiagnosticSink, tick=None) -> None
         tick()
     pairs = box_pairs(np.column_stack([lo, hi]), OVERDRAWN_TOL)
     if len(pairs):
-        pairs = pairs[own[pairs[:, 0]] != own[pairs[:, 1]]]
+        pairs = pairs[(own[pairs[:, 0]] != own[pairs[:, 1]])
+                      & (home[own[pairs[:, 0]]] == home[own[pairs[:, 1]]])]
     found: dict = {}        # (span, span) -> [(length, a, b)]
     if len(pairs):
         i, j = pairs[:, 0], pairs[:, 1]
@@ -678,6 +687,8 @@ def _check_marks_over_marks(d: Drawing, sink: DiagnosticSink, tick=None) -> None
     rings = {k: [_polyline(it)[:-1] for it in items_of[g] if _closed(it)]
              for k, g in enumerate(marks)}
     for a, b in box_pairs(boxes, OVERDRAWN_TOL).tolist():
+        if home[a] != home[b]:
+            continue
         for p, q in ((a, b), (b, a)):
             if not rings[q] or marks[p].span is None or marks[q].span is None:
                 continue

@@ -1037,7 +1037,9 @@ def _check_necks(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
     """W0507 for two members of part ``s`` (solid shapes of its union, :attr:`Drawing.own`)
     that join over a neck narrower than ``t`` mm, or only at a point (a hook's loop that
     meets a leaf at its stem's tip: the cut part hangs by that point).  The opening of
-    :func:`_check_walls` misses such a neck, which removes less than its ``2 t^2``.
+    :func:`_check_walls` misses such a neck, which removes less than its ``2 t^2``.  A part
+    of one member is not searched; in a part with holes, the members' union without them is
+    (a web between holes is measured by the other W0507 checks).
 
     Found by the erosion of the part by ``t / 2`` (Manifold's offset, round joins): a neck
     narrower than ``t`` splits a piece in two, so the eroded part has more pieces (outer
@@ -1051,8 +1053,17 @@ def _check_necks(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
     in its vertices) when there is no neck; a part of more than :data:`NECK_VERTS` vertices
     is not searched."""
     from .common import _edges, _inside, _union
+    if t <= 0 or shape.is_empty():
+        return
+    faces = [f for _, fs in _solids_within(d, s) for _, f in fs if f is not None]
+    if len(faces) < 2:
+        return                  # one member: no neck between members
+    if any(not d.shapes[c.hole].is_empty() for c in cuts if c.hole in d.shapes):
+        # the members united without the holes: a web a hole leaves is the other W0507s'
+        # (a plate of 2,500 holes 0.3 mm apart would erode into 2,500 islands)
+        shape = _union(faces)
     n = shape.num_vert()
-    if t <= 0 or shape.is_empty() or n > NECK_VERTS:
+    if n > NECK_VERTS:
         return
     base = _outer_loops(shape)
     tick(n * THIN_SECONDS_PER_VERTEX)
