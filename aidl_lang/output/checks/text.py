@@ -682,12 +682,18 @@ def _check_marks_over_marks(d: Drawing, sink: DiagnosticSink, tick=None) -> None
     # open marks that cross a closed outline of another mark and end inside it
     if tick is not None:
         tick()
-    boxes = np.array([[*S[own == k].reshape(-1, 2).min(axis=0), *S[own == k].reshape(-1, 2).max(axis=0)]
-                      for k in range(len(marks))])
+    boxes = np.full((len(marks), 4), np.inf)       # each mark's box (one pass over segments)
+    boxes[:, 2:] = -np.inf
+    for c in range(2):
+        np.minimum.at(boxes[:, c], own, lo[:, c])
+        np.maximum.at(boxes[:, 2 + c], own, hi[:, c])
+    keep = np.isfinite(boxes).all(axis=1)
+    boxes[~keep] = 0.0
     rings = {k: [_polyline(it)[:-1] for it in items_of[g] if _closed(it)]
              for k, g in enumerate(marks)}
+    ring_edges: dict = {}
     for a, b in box_pairs(boxes, OVERDRAWN_TOL).tolist():
-        if home[a] != home[b]:
+        if home[a] != home[b] or not (keep[a] and keep[b]):
             continue
         for p, q in ((a, b), (b, a)):
             if not rings[q] or marks[p].span is None or marks[q].span is None:
@@ -695,9 +701,10 @@ def _check_marks_over_marks(d: Drawing, sink: DiagnosticSink, tick=None) -> None
             opens = [_polyline(it) for it in items_of[marks[p]] if not _closed(it)]
             if not opens:
                 continue
-            edges = _edges(rings[q])
-            E0 = np.concatenate([R for R in rings[q]])
-            E1 = np.concatenate([np.roll(R, -1, axis=0) for R in rings[q]])
+            if q not in ring_edges:
+                ring_edges[q] = (_edges(rings[q]), np.concatenate(rings[q]),
+                                 np.concatenate([np.roll(R, -1, axis=0) for R in rings[q]]))
+            edges, E0, E1 = ring_edges[q]
             for P in opens:
                 ends = np.array([P[0], P[-1]])
                 inside = _inside(ends, edges)
