@@ -1127,21 +1127,17 @@ def _check_necks(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
     if fp is None or fq is None or fp[0] is fq[0]:
         return
     # the member to move: the one on the smaller side of the split
-    pieces = {}
-    for P in _outer_loops(er):
-        pieces[len(pieces)] = P
-    from .common import _inside, _edges
+    from .common import _signed
+    sides = _outer_loops(er)
 
     def side_area(pt):
-        for P in pieces.values():
-            if bool(_inside(np.asarray(pt, dtype=float)[None], _edges([P]))[0]):
-                return abs(float(np.sum(P[:, 0] * np.roll(P[:, 1], -1)
-                                        - np.roll(P[:, 0], -1) * P[:, 1]))) / 2
-        return np.inf
+        return next((abs(_signed(P)) for P in sides
+                     if bool(_inside(np.asarray(pt, dtype=float)[None], _edges([P]))[0])),
+                    np.inf)
     if side_area(far[1]) > side_area(far[0]):
         fp, fq = fq, fp
         far = (far[1], far[0], far[2])
-    (gp, sp), (gq, sq) = fp, fq
+    gp, (gq, sq) = fp[0], fq
     u = np.asarray(far[0], dtype=float) - np.asarray(far[1], dtype=float)
     nu = float(np.hypot(*u))
     move = None
