@@ -197,3 +197,11 @@ def test_a_rounded_corner_nick_is_a_slit_not_a_neck():
     moved = src.replace("center=(30, 12)", "center=(29.5, 12)")
     r = aidl_lang.compile(source=moved, path=str(HERE / "rounded_corner_nick.aidl"))
     assert not [d for d in r.diagnostics if d.code.startswith("W05")]
+
+
+def test_a_neck_asked_for_is_accepted_with_min_wall_0():
+    src = (HERE / "hook_neck.aidl").read_text()
+    [w] = [d for d in _warnings(src, "W0507") if "neck" in d.message]
+    assert "`min_wall 0` in `pendant`" in w.hint
+    meant = src.replace("solid pendant {\n", "solid pendant {\n    min_wall 0\n")
+    assert meant != src and not _warnings(meant, "W0507")

@@ -1183,4 +1183,5 @@ def _check_necks(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
         "(or falls apart when the laser burns the neck away)",
         gq.span or s.span,
         labels=[Label(gp.span, "the other member", primary=False)] if gp.span else [],
-        hint=f"{fix}; the minimum is set by `min_wall` or --min-wall")
+        hint=f"{fix}; if the request asks for a joint this thin (a breakaway tab), say so: "
+             f"`min_wall 0` in `{s.name}`; the minimum is set by `min_wall` or --min-wall")
