@@ -496,10 +496,23 @@ another cut, a hole or the outline (two slits ending 0.05 mm apart, a slit endin
 the edge), named with the cut, what it stops short of and the width (exact on lines and
 circles: a living hinge's bridges exactly `min_wall` wide pass). End the cut farther away, or
 run it on to meet the other curve when it is meant to cut through.
+Two members of one part (shapes of its union, its own or a solid child's) that join over a neck
+narrower than the minimum, or only at a point's worth of overlap (a hook's loop resting on the
+tip of a leaf's stem: the part hangs by it), are named with the neck's width and place: the
+part eroded by half the minimum falls into more pieces than it has, the width is the least
+erosion that parts it, and the two members are the shapes on either side. The hint gives how
+far to move the member on the smaller side towards the other for a neck of the minimum
+(followed, the warning goes). Members that only touch at a point are two pieces (W0504).
 
     solid plate {
         body = Rectangle(center=(0, 0), width=40, height=20)
         hole slot { r = Rectangle(center=(0, 6.85), width=10, height=6) }   # 0.15 mm to the edge
+    }
+
+    solid pendant {
+        leaf = Ellipse(center=(0, 0), rx=12, ry=20)
+        stem = Polygon(points=[(-1, 19), (1, 19), (0, 26)])
+        loop = Shell(Circle(center=(0, 29.9), radius=2.5), 1.5)   # on the tip: a 0.03 mm neck
     }
 """),
     "W0508": ("holes merge into one opening", """
@@ -611,7 +624,7 @@ writes: the shapes it names together are not compared.
         }
     }
 """),
-    "W0513": ("text drawn over or too close to text or a mark", """
+    "W0513": ("text or a mark drawn over or too close to text or another mark", """
 Engraved text is drawn over other text, or over an engraved mark (a line, arc, circle or
 outline), or so close to a mark that the two read as touching: two protractor labels placed on
 each other, a number on its tick mark, a clock's 12 o'clock tick running in between the "1" and
@@ -629,13 +642,27 @@ statements (the closest pair, copies made in a loop named by index: `ticks[0]`),
 number of such pairs. The warning names both, with the overlap's area, the gap, or the length
 of the mark inside the text, and how much to shorten the mark or move the text. Move the text
 clear (beside the tick, further out), shorten the mark, grow the frame, or make the text
-smaller.
+smaller: the hint gives the largest size at which the clearance holds (`size=N mm`: the
+strokes and the clearance scale with the size about the text's position), and says nothing of
+size when no smaller text clears the mark.
+Engraved marks drawn over each other (text aside): a stroke that lies on another mark's stroke
+(parallel, within 0.05 mm, over at least 0.3 mm: a ruler's millimetre ticks drawn again under
+its centimetre ticks, a bar's side along a tick) is burnt twice, a deeper and wider line,
+always a defect; the warning names the mark drawn again and what it lies on, with the length.
+Three or more marks of one statement that cross a closed engraved outline and end inside it
+(a ruler's ticks running into the outlined bars of its scale) are engraving over engraving;
+the hint gives how far to move the outline, along the marks, to leave them 0.3 mm clear. What
+a maker means is not warned: strokes that cross and go on (a grid, a crosshair through a
+target's rings), a mark that ends on an outline, one or two marks crossing into an outline (a
+dial's finger stop across its rim), outlines that cross each other.
 
     drawing scale {
         tick = Line(start=(40, 0), end=(48, 0))
         zero = Text(position=(44, 0), text="0", size=4, valign="middle")   # on the tick
         frame = Rectangle(center=(0, 20), width=22, height=10)
         name = Text("SCALE", (0, 20), size=5, valign="middle")     # 0.29 mm from the frame
+        for i in range(11) { mm = Line((i, 30), (i, 33)) }
+        cm = Line((0, 30), (0, 36))                                 # over the first mm tick
     }
 """),
     "W0514": ("hole only touches the outer edge", """

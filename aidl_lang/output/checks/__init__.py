@@ -63,7 +63,7 @@ from .parts import (_check_interpenetration, _check_steps, _check_invisible, _ch
 from .text import _check_text_overlap
 from .through import check_sheet_cuts, check_through
 from .walls import (THIN_SECONDS_PER_VERTEX, _check_slits, TILE_VERTS, UNION_GROUP, WHOLE_LOOPS, WHOLE_VERTS,
-                    _check_walls, _isolated_loops, _loop_boxes, _open, _point_of, _thin)
+                    _check_necks, _check_walls, _isolated_loops, _loop_boxes, _open, _point_of, _thin)
 
 # the names other modules, the tests and the benchmarks import from here (patching one of the
 # others' helpers, e.g. walls._open, means patching it in the module that uses it)
@@ -321,6 +321,8 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
                 run("walls", s, lambda: _check_walls(
                     d, s, shape, min_wall, cuts, sink, covered=covered or set(),
                     loops=loops[s], tick=lambda ahead=0.0: tick(s, ahead)))
+                run("walls", s, lambda: _check_necks(d, s, shape, min_wall, cuts, sink,
+                                                     tick=lambda ahead=0.0: tick(s, ahead)))
                 run("slits", s, lambda: _check_slits(d, s, loops[s], cuts, min_wall, sink,
                                                      tick=lambda ahead=0.0: tick(s, ahead),
                                                      cut_open=shared.get("cut_open")))

@@ -98,6 +98,7 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
     laid out one by one, as ``text_on_arc`` does).  ``tick()``: called before each text's
     pairs are measured (the compile's deadline, which raises
     :class:`~aidl_lang.limits.OutOfBudget`)."""
+    _check_marks_over_marks(d, sink, tick)
     texts: dict = {}
     marks: dict = {}
     for style, item, g in d.strokes:
@@ -443,13 +444,73 @@ def _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs, M
         frame = [f[4] for f in fix]
         if all(x is not None for x in frame):
             ways.append(f"grow `{m.label}` by {max(frame):.2f} mm on each side")
-        ways.append("make the text smaller")
+        fits = [_fitting_size(tsegs[f[3]], segs[f[4]], ends_of[f[4]], boxes[f[2]], sizes[f[2]],
+                              f[3]) for f in pairs]
+        if fits and all(x is not None and x > 0 for x in fits):
+            ways.append(f"make the text at most {min(fits):g} mm (size={min(fits):g} mm)")
+        elif not any(x == 0.0 for x in fits):      # 0: no smaller size clears the mark
+            ways.append("make the text smaller")
+        if not ways:
+            ways.append("move the text clear of the mark")
         sink.warning("W0513", f"{text} is too close to the engraved {what}: the mark {how}"
                      f"{into} (the clearance is {c:.2f} mm, {'a quarter' if c > side else 'an eighth'}"
                      f" of the text size{' for a mark beside it' if c <= side else ''}), so "
                      f"they read as touching{more}", g.span, labels=labels,
                      hint=f"leave {c:.2f} mm between the text and `{m.label}`: "
                           + ", or ".join(ways))
+
+
+def _fitting_size(tseg, mseg, ends, box3, size: float, g) -> float | None:
+    """The largest text size (mm, rounded down to 0.01 mm) at which text ``g`` (its strokes
+    ``tseg``: starts, ends; its box ``box3`` as :func:`_text_box` gives; its ``size``) is
+    clear of the mark (its segments ``mseg``, its open ``ends``) as :func:`_check_clearance`
+    measures it: the strokes, the box and the clearance (:data:`TEXT_CLEAR` and
+    :data:`SIDE_CLEAR` of the size, at least :data:`MIN_CLEAR`) all scale with the size about
+    the text's position point (:func:`...geometry.text.text_strokes`), so the scale that
+    holds is found by bisection (to 1e-4 of the size).  None (not measured) for a text along
+    a curve or a text whose strokes are not its font's at its position (placed by a
+    transform); 0.0 when no size down to a twentieth of it clears the mark (the mark runs
+    through the position, or ends nearer it than :data:`MIN_CLEAR`: no smaller text helps)."""
+    from ...geometry.text import text_strokes
+    if g.data.get("along") is not None or not size > 0 or g.data.get("text") is None:
+        return None
+    own = np.asarray(text_strokes(g.data["text"], size, g.data.get("anchor", "middle"),
+                                  g.data.get("valign", "baseline"),
+                                  g.data.get("rotation", 0.0) or 0.0), dtype=float)
+    if own.shape != (len(tseg[0]), 2, 2):
+        return None
+    p = tseg[0][0] - own[0, 0]
+    if not (np.allclose(tseg[0] - p, own[:, 0], atol=1e-6)
+            and np.allclose(tseg[1] - p, own[:, 1], atol=1e-6)):
+        return None
+    rot, box = box3[1], box3[2]
+    c_, s_ = math.cos(rot), math.sin(rot)
+    pu, pv = p[0] * c_ + p[1] * s_, -p[0] * s_ + p[1] * c_
+
+    def ok(f):
+        a, b = p + f * (tseg[0] - p), p + f * (tseg[1] - p)
+        bx = (pu + f * (box[0] - pu), pv + f * (box[1] - pv), pu + f * (box[2] - pu),
+              pv + f * (box[3] - pv))
+        clear = max(TEXT_CLEAR * size * f, MIN_CLEAR)
+        side = max(SIDE_CLEAR * size * f, MIN_CLEAR)
+        if _length_inside(mseg, rot, bx) > IN_BOX:
+            return False
+        gap = _seg_gap(a, b, mseg[0], mseg[1])[0]
+        if gap >= clear:
+            return True
+        if gap < side:
+            return False
+        return all(_seg_gap(a, b, q[None], q[None])[0] >= clear for q in ends)
+    lo, hi = 0.05, 1.0
+    if not ok(lo):
+        return 0.0
+    while hi - lo > 1e-4:
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if ok(mid) else (lo, mid)
+    n = math.floor(lo * size * 100 + 1e-9) / 100
+    while n > 0 and not ok(n / size):
+        n = round(n - 0.01, 2)
+    return max(n, 0.0)
 
 
 def _fix(tseg, mseg, items, box3, g, k, pt, pm, c: float, gap: float) -> tuple:
@@ -514,3 +575,223 @@ def _quad_gap(p, q) -> float:
             t = np.clip(((pt - s0) * d).sum(1) / np.maximum((d * d).sum(1), 1e-300), 0.0, 1.0)
             best = min(best, float(np.hypot(*(s0 + t[:, None] * d - pt).T).min()))
     return best
+
+
+OVERDRAWN_TOL = 0.05    # mm: two parallel strokes this close are one line burnt twice
+OVERDRAWN_LEAST = MIN_CLEAR   # mm of one stroke along another: less is a touch, not a double burn
+PARALLEL = math.sin(math.radians(1.0))    # the sine under which two strokes run parallel
+INTO_LEAST = 3          # marks of one statement that end inside one outline they cross: a defect
+
+
+def _closed(item) -> bool:
+    return item[0] in ("poly", "circle")
+
+
+def _check_marks_over_marks(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
+    """W0513 for engraved marks (not text: :func:`_check_text_overlap` measures text) drawn
+    over each other on one solid part (a drawing beside the parts, at assembly level, is an
+    illustration and is not compared), one warning per pair of statements (copies made in a loop named by index,
+    with the number of such pairs):
+
+    * burnt twice: a stroke of one mark lies on a stroke of another (parallel within 1 degree,
+      within :data:`OVERDRAWN_TOL`) over at least :data:`OVERDRAWN_LEAST` (a ruler's
+      centimetre ticks drawn over its millimetre ticks, a border along a line): always a
+      defect, the laser burns that stretch twice (a deeper, wider line);
+    * drawn into an outline: open marks (lines, arcs) of one statement that cross a closed
+      engraved outline of another statement and end inside it, :data:`INTO_LEAST` or more
+      into one outline (a ruler's ticks running into the outlined bars of its centimetre
+      scale).  What a maker means is left alone: one or two marks that cross into an outline
+      (a dial's finger stop across its rim, a guitar's strings into its rosette), strokes that
+      cross and go on (a grid, a crosshair through a target's rings), a mark that ends on an
+      outline (within :data:`OVERDRAWN_TOL`: drawn to it), a mark wholly inside one (a clock's
+      hands in its dial), outlines that cross (a Venn diagram).  The hint gives how far to
+      move the outline's statement, along the marks, for the marks to stay
+      :data:`MIN_CLEAR` from it.
+
+    The segment pairs come from one box search (:func:`..part.nearby.box_pairs`), O(n log n)
+    in the segments but for the pairs it finds."""
+    from ..part.nearby import box_pairs
+    from .common import _edges, _inside, _part_of, _part_roots
+    roots = _part_roots(d)
+    items_of: dict = {}
+    part_of: dict = {}
+    for style, item, g in d.strokes:
+        if g is None or style == "cut" or g.kind == "Text":
+            continue
+        if g not in part_of:
+            part = _part_of(g.owner, roots)
+            part_of[g] = part if part is not None and part.kind == "solid" else None
+        if part_of[g] is not None:          # engraved on a part (not an illustration)
+            items_of.setdefault(g, []).append(item)
+    if len(items_of) < 2:
+        return
+    marks = list(items_of)
+    home = np.array([id(part_of[g]) for g in marks])
+    segs, owner, closed = [], [], []
+    for k, g in enumerate(marks):
+        for it in items_of[g]:
+            P = _polyline(it)
+            if len(P) < 2:
+                continue
+            segs.append(np.stack([P[:-1], P[1:]], axis=1))
+            owner.append(np.full(len(P) - 1, k))
+            closed.append(np.full(len(P) - 1, _closed(it)))
+    if not segs:
+        return
+    S = np.concatenate(segs)
+    own = np.concatenate(owner)
+    A, B = S[:, 0], S[:, 1]
+    lo, hi = np.minimum(A, B), np.maximum(A, B)
+    if tick is not None:
+        tick()
+    pairs = box_pairs(np.column_stack([lo, hi]), OVERDRAWN_TOL)
+    if len(pairs):
+        pairs = pairs[(own[pairs[:, 0]] != own[pairs[:, 1]])
+                      & (home[own[pairs[:, 0]]] == home[own[pairs[:, 1]]])]
+    found: dict = {}        # (span, span) -> [(length, a, b)]
+    if len(pairs):
+        i, j = pairs[:, 0], pairs[:, 1]
+        da, db = B[i] - A[i], B[j] - A[j]
+        la, lb = np.hypot(*da.T), np.hypot(*db.T)
+        ok = (la > 1e-9) & (lb > 1e-9)
+        i, j, da, db, la, lb = i[ok], j[ok], da[ok], db[ok], la[ok], lb[ok]
+        cross = np.abs(da[:, 0] * db[:, 1] - da[:, 1] * db[:, 0])
+        u = da / la[:, None]
+        off0 = np.abs(u[:, 0] * (A[j] - A[i])[:, 1] - u[:, 1] * (A[j] - A[i])[:, 0])
+        off1 = np.abs(u[:, 0] * (B[j] - A[i])[:, 1] - u[:, 1] * (B[j] - A[i])[:, 0])
+        t0 = np.einsum("ij,ij->i", A[j] - A[i], u)
+        t1 = np.einsum("ij,ij->i", B[j] - A[i], u)
+        over = np.minimum(la, np.maximum(t0, t1)) - np.maximum(0.0, np.minimum(t0, t1))
+        on = (cross <= PARALLEL * la * lb) & (off0 <= OVERDRAWN_TOL) & (off1 <= OVERDRAWN_TOL) \
+            & (over >= OVERDRAWN_LEAST)
+        length: dict = {}
+        for a, b, L in zip(own[i[on]].tolist(), own[j[on]].tolist(), over[on].tolist()):
+            key = (min(a, b), max(a, b))
+            length[key] = length.get(key, 0.0) + L
+        total = np.bincount(own, weights=np.hypot(*(B - A).T), minlength=len(marks))
+        for (a, b), L in length.items():
+            ga, gb = marks[a], marks[b]
+            if ga.span is None or gb.span is None:
+                continue
+            # the one more of whose strokes lies on the other is the one drawn again
+            under, over_g = (ga, gb) if L / max(total[a], 1e-12) >= L / max(total[b], 1e-12) \
+                else (gb, ga)
+            share = min(1.0, L / max(total[a if under is ga else b], 1e-12))
+            key = ("twice", under.span, over_g.span)
+            found.setdefault(key, []).append((L, over_g, under, share))
+    # open marks that cross a closed outline of another mark and end inside it
+    if tick is not None:
+        tick()
+    boxes = np.full((len(marks), 4), np.inf)       # each mark's box (one pass over segments)
+    boxes[:, 2:] = -np.inf
+    for c in range(2):
+        np.minimum.at(boxes[:, c], own, lo[:, c])
+        np.maximum.at(boxes[:, 2 + c], own, hi[:, c])
+    keep = np.isfinite(boxes).all(axis=1)
+    boxes[~keep] = 0.0
+    rings = {k: [_polyline(it)[:-1] for it in items_of[g] if _closed(it)]
+             for k, g in enumerate(marks)}
+    ring_edges: dict = {}
+    for a, b in box_pairs(boxes, OVERDRAWN_TOL).tolist():
+        if home[a] != home[b] or not (keep[a] and keep[b]):
+            continue
+        for p, q in ((a, b), (b, a)):
+            if not rings[q] or marks[p].span is None or marks[q].span is None:
+                continue
+            opens = [_polyline(it) for it in items_of[marks[p]] if not _closed(it)]
+            if not opens:
+                continue
+            if q not in ring_edges:
+                ring_edges[q] = (_edges(rings[q]), np.concatenate(rings[q]),
+                                 np.concatenate([np.roll(R, -1, axis=0) for R in rings[q]]))
+            edges, E0, E1 = ring_edges[q]
+            for P in opens:
+                ends = np.array([P[0], P[-1]])
+                inside = _inside(ends, edges)
+                if inside[0] == inside[1]:
+                    continue
+                gaps = [_seg_gap(E0, E1, e[None], e[None])[0] for e in ends]
+                if min(gaps) <= OVERDRAWN_TOL:
+                    continue            # drawn to the outline: meant
+                into = ends[1] if inside[1] else ends[0]
+                out_end = ends[0] if inside[1] else ends[1]
+                key = ("into", marks[p].span, marks[q].span)
+                found.setdefault(key, []).append((min(gaps), marks[p], marks[q], into, out_end))
+    for key, rows in found.items():
+        if tick is not None:
+            tick()
+        if key[0] == "into":
+            # a pattern of marks run into one outline (a scale's ticks into a bar drawn over
+            # them); one or two marks that cross into an outline are read as meant (a dial's
+            # finger stop across its rim, a guitar's strings into its rosette)
+            per: dict = {}
+            for r in rows:
+                per.setdefault(id(r[2]), set()).add(id(r[1]))
+            if max(len(v) for v in per.values()) < INTO_LEAST:
+                continue
+        if key[0] == "twice":
+            rows.sort(key=lambda r: -r[0])
+            L, a, b, share = rows[0]
+            more = (f"; {len(rows) - 1} more pair{'s' if len(rows) > 2 else ''} of these "
+                    "statements on each other") if len(rows) > 1 else ""
+            whole = " (all of it)" if share > 0.999 else f" ({_pct(share, 1.0)} of it)"
+            sink.warning(
+                "W0513", f"the engraved `{_copy_label(b)}` lies on the engraved "
+                f"`{_copy_label(a)}` over {L:.2f} mm{whole}: the laser burns that stretch "
+                f"twice (a deeper, wider line){more}", b.span,
+                labels=[Label(a.span, f"`{a.label}` is here", primary=False)],
+                hint=f"draw each stroke once: leave `{b.label}` out where `{a.label}` already "
+                     f"runs (skip those copies of its loop), or move one of them clear")
+            continue
+        p_g, q_g = rows[0][1], rows[0][2]
+        count = len(rows)
+        fix = _clearing_move([g for g in items_of if g.span == key[1]],
+                             [g for g in items_of if g.span == key[2]], items_of, rows)
+        how = (f"move `{q_g.name or q_g.label}` {fix[0]:.2f} mm (by ({fix[1]:.2f}, "
+               f"{fix[2]:.2f}) mm) so that the marks stay {MIN_CLEAR:g} mm clear of it, or "
+               if fix is not None else "move the outline clear of the marks, or ")
+        sink.warning(
+            "W0513", f"the engraved `{_copy_label(p_g)}` runs into the engraved outline "
+            f"`{_copy_label(q_g)}` and ends inside it"
+            + (f" ({count} such marks of these statements)" if count > 1 else "")
+            + ": engraving drawn over engraving, the marks cross the outline's line",
+            p_g.span, labels=[Label(q_g.span, f"`{q_g.label}` is here", primary=False)],
+            hint=f"{how}end the marks on the outline or before it (a mark that crosses an "
+                 "outline and goes on, as a grid's lines do, is not warned)")
+
+
+def _clearing_move(A_marks, B_marks, items_of, rows):
+    """How far to move the outlines ``B_marks`` (every copy of one statement) along the
+    marks that run into them (the mean direction from each mark's outer end to its end
+    inside, ``rows``) for every stroke of ``A_marks`` to stay :data:`MIN_CLEAR` from every
+    stroke of them: ``(distance, dx, dy)`` mm (the least on a 0.25 mm scan, then bisected to
+    0.01 mm and rounded up), or None (no move within the two sets' extent clears them, or too
+    many strokes to measure)."""
+    u = np.sum([r[3] - r[4] for r in rows], axis=0)
+    nu = float(np.hypot(*u))
+    if nu < 1e-9:
+        return None
+    u = u / nu
+    a0, a1 = zip(*[_mark_segments(items_of[g]) for g in A_marks])
+    b0, b1 = zip(*[_mark_segments(items_of[g]) for g in B_marks])
+    a0, a1, b0, b1 = map(np.concatenate, (a0, a1, b0, b1))
+    if len(a0) * len(b0) > 400_000:
+        return None
+    ext = lambda P: float(np.ptp(P @ u)) if len(P) else 0.0     # noqa: E731
+    top = ext(np.vstack([a0, a1])) + ext(np.vstack([b0, b1])) + 2 * MIN_CLEAR
+
+    def clear(s):
+        return _seg_gap(a0, a1, b0 + s * u, b1 + s * u)[0] >= MIN_CLEAR
+    s, step = 0.0, 0.25
+    while s <= top and not clear(s):
+        s += step
+    if s > top:
+        return None
+    lo, hi = max(0.0, s - step), s
+    while hi - lo > 1e-3:
+        mid = (lo + hi) / 2
+        lo, hi = (lo, mid) if clear(mid) else (mid, hi)
+    m = math.ceil(hi * 100 - 1e-9) / 100
+    if not clear(m):
+        m = hi
+    return m, float(u[0] * m), float(u[1] * m)
