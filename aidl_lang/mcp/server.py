@@ -70,6 +70,8 @@ Budget = Annotated[float | None, Field(
 Dof = Annotated[bool, Field(
     description="Also count the degrees of freedom left per structure, with the entities "
                 "still free to move.")]
+Sweep = Annotated[bool, Field(
+    description="Also check the design across its params' declared min/max ranges.")]
 Output = Annotated[str | None, Field(
     description="Also write the drawing to this file, relative to the allowed folder (never "
                 "outside it, never over the program or through a symbolic link; a missing "
@@ -366,14 +368,16 @@ def build_server(root: str, budget: float = 1.0,
 
     @tool(reads)
     def check(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
-              dof: Dof = False, budget: Budget = None,
+              dof: Dof = False, budget: Budget = None, sweep: Sweep = False,
               detail: Detail = False) -> Annotated[CallToolResult, CheckResult]:
         """Parse, check and solve an AIDL program; write nothing.
 
         Give `source` (program text) or `path` (a .aidl file, relative to the allowed folder);
         a Drawing2D("x.dxf") reads a drawing beside the program (source: in the folder).
         `overrides` sets params ({"width": "40 mm"}); `dof` adds degrees of freedom per
-        structure; `budget` multiplies the evaluation budget (at most 4).
+        structure; `sweep` adds W0110 for each param value of a declared range where the
+        design breaks (sweep: points, skipped, findings); `budget` multiplies the evaluation
+        budget (at most 4).
         Returns structured content (and one line of text): ok, diagnostics (code, severity,
         message, span with 1-based line and column and 0-based start/end, labels, hint,
         suggestions, fix), solve statistics, freedom (degrees of freedom left), parts (name,
@@ -381,7 +385,7 @@ def build_server(root: str, budget: float = 1.0,
         fit check: {checked, collisions: [{a, b, volume, depth, box}], floating: [{part,
         nearest, gap}]}); with errors, error {code, message}. """
         return answer("check", work.call("check", source, path, overrides, dof, budget,
-                                         budget=budget), detail=detail)
+                                         sweep, budget=budget), detail=detail)
 
     @tool(writes)
     def write_program(path: WritePath, text: WriteText = None, old: Old = None,
