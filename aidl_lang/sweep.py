@@ -32,6 +32,8 @@ SEED = 0
 # warnings that compare a compile with another one or say a check was cut short: not a
 # property of the design at one value
 NOT_COMPARED = {"W0510", "W0521"}
+# times a point's dependent params are moved into their ranges (the studio's MAX_CLAMPS)
+CLAMPS = 3
 
 
 @dataclass
@@ -219,22 +221,17 @@ class _Sweep:
                 failing.append((vals, got))
         written = {p.name: p.value for p in self.params}
         clean = {p.name: [p.lo, p.hi] for p in self.params}
-        told = set()
         for vals, got in failing:
             moved = [p for p in self.params if vals[p.name] != written[p.name]]
-            side = tuple((p.name, vals[p.name] > written[p.name]) for p in moved)
             inside = all(clean[p.name][0] <= vals[p.name] <= clean[p.name][1] for p in moved)
-            if not inside and (got[0][0], side) in told:
-                continue                    # the same problem past a bound already found
-            told.add((got[0][0], side))
-            start = None
-            if inside:
-                t, start = self._bisect(written, vals)
-                for p in moved:
-                    x = p.at(written[p.name] + t * (vals[p.name] - written[p.name]))
-                    lo, hi = clean[p.name]
-                    clean[p.name] = [lo, min(hi, x)] if vals[p.name] > written[p.name] \
-                        else [max(lo, x), hi]
+            if not inside:
+                continue                    # past a bound a finding already narrowed
+            t, start = self._bisect(written, vals)
+            for p in moved:
+                x = p.at(written[p.name] + t * (vals[p.name] - written[p.name]))
+                lo, hi = clean[p.name]
+                clean[p.name] = [lo, min(hi, x)] if vals[p.name] > written[p.name] \
+                    else [max(lo, x), hi]
             self._finding(vals, got, {p.name: tuple(clean[p.name]) for p in moved}, moved,
                           start)
 
@@ -269,19 +266,24 @@ class _Sweep:
         ov = {n: by[n].text(x) for n, x in vals.items()}
         s = self.session
         res = s._compile(ov, drawing=True)
-        errs = [d for d in res.sink.items if d.is_error]
-        if errs and all(d.code == "E0124" for d in errs) and res.fctx is not None:
-            # a range that follows other params (docs/language.md, 2.3): the dependent
-            # param moved into it, as the studio's forms do
+        for _ in range(CLAMPS):
+            # a range (or step) that follows other params (docs/language.md, 2.3): the
+            # dependent param moved into it and onto its steps, as the studio's forms do
+            if res.fctx is None:
+                break
+            errs = [d for d in res.sink.items if d.is_error]
+            if errs and not any(d.code == "E0124" for d in errs):
+                break
             rows = [p.to_json() for p in s._params(res.fctx, ov)]
-            fixed = into_range(rows)
-            if fixed:
-                ov.update({k: t for k, (t, _) in fixed.items()})
-                res = s._compile(ov, drawing=True)
-                errs = [d for d in res.sink.items if d.is_error]
-            if errs and all(d.code == "E0124" for d in errs):
-                self.problems[key] = []
-                return []
+            fixed = into_range(rows) or into_range(rows, grid=True)
+            if not fixed:
+                break
+            ov.update({k: t for k, (t, _) in fixed.items()})
+            res = s._compile(ov, drawing=True)
+        errs = [d for d in res.sink.items if d.is_error]
+        if any(d.code == "E0124" for d in errs):
+            self.problems[key] = []         # no value of the dependent params fits
+            return []
         self.report.warm += bool(res.warm)
         if errs:
             got = [(errs[0].code, errs[0].message)]
@@ -313,14 +315,15 @@ class _Sweep:
             message += f"; from {at(start[0])} already {start[1][0][0]}: {start[1][0][1]}"
         fix = ", ".join(f"`{n}`: `min={by[n].text(lo)}, max={by[n].text(hi)}`"
                         for n, (lo, hi) in narrowed.items())
-        tol = ", ".join(f"{by[n].text(self.tol * (by[n].hi - by[n].lo))}" for n in narrowed)
+        tol = ", ".join(f"{by[n].text(self.tol * (by[n].hi - by[n].lo))}" for n in narrowed
+                        if not by[n].integer) or "exact"
         first = moved[0] if moved else self.params[0]
         labels = [Label(p.span, f"`{p.name}` = {p.text(vals[p.name])} here", primary=False)
                   for p in moved[1:] if p.span is not None]
         d = Diagnostic("W0110", f"with {at(vals)} (inside the declared range), {message}",
                        first.span, "warning",
                        hint=f"narrow the range to the largest clean one found: {fix} "
-                            f"(bisected to {tol}), or fix the design at these values",
+                            f"(bisected: {tol}), or fix the design at these values",
                        labels=labels)
         self.report.findings.append(Finding(shown, code, message, narrowed, d))
 

@@ -1,0 +1,157 @@
+"""`aidl check --sweep` (aidl_lang/sweep.py, issue 84): the design compiled across its
+params' declared ranges through the real parser, solver and Manifold; a hole that leaves its
+plate past a value inside the range is found, bisected and located at the `param` line; a
+design clean across its ranges has no finding; the budget bound counts the points skipped;
+the CLI and the MCP `check` (through the SDK's own stdio client) give the same."""
+import json
+import os
+import subprocess
+import sys
+
+import pytest
+from hypothesis import given, settings, strategies as st
+
+import aidl_lang
+from aidl_lang.sweep import sweep
+from conftest import ROOT
+
+# the hole (radius 3) sits at x = offset on a plate 50 mm wide (edges at +-25): past
+# offset = 21.5 mm its wall to the edge is thinner than 0.5 mm (W0507), past 22 it breaks
+# through, past 28 it cuts nothing (W0502)
+HOLE = """param offset = 10 mm, min = 0 mm, max = 30 mm
+param r = 3 mm
+
+solid plate {
+    body = Rectangle(center=(0, 0), width=50, height=30)
+    hole h { c = Circle(center=(offset, 0), radius=r) }
+}
+"""
+
+CLEAN = """param width = 60 mm, min = 40 mm, max = 80 mm
+param r = 3 mm, min = 2 mm, max = 4 mm
+param n = 3, min = 1, max = 4
+
+solid plate {
+    body = Rectangle(center=(0, 0), width=width, height=30)
+    for i in range(n) {
+        hole h { c = Circle(center=(-15 + 10 * i, 0), radius=r) }
+    }
+}
+"""
+
+
+def test_a_hole_leaving_its_plate_inside_the_range_is_found_and_the_range_narrowed():
+    rep = sweep(HOLE, "plate.aidl")
+    assert rep.ok and rep.swept == ["offset"] and rep.unranged == ["r"]
+    [f] = rep.findings
+    assert f.values == {"offset": 30.0}          # the high end, where the hole cuts nothing
+    assert f.code == "W0502"
+    lo, hi = f.clean["offset"]
+    # the wall is 25 - 3 - offset: 0.5 mm at 21.5; bisected to 1% of the 30 mm range
+    assert lo == 0.0 and 21.5 - 0.3 - 1e-9 <= hi < 21.55
+    d = f.diagnostic
+    assert d.code == "W0110" and d.severity == "warning"
+    assert d.span.line == 1 and d.span.col == 1              # the `param offset` line
+    assert "offset=30 mm" in d.message and "W0502" in d.message and "W0507" in d.message
+    assert f"max={hi:.6g} mm" in d.hint
+
+
+def test_a_design_clean_across_its_ranges_has_no_finding():
+    rep = sweep(CLEAN, "plate.aidl")
+    assert rep.ok and rep.swept == ["width", "r", "n"] and rep.unranged == []
+    assert rep.findings == [] and rep.skipped == 0
+    # ends and middles (3 x 3, less width's and r's middles: their written values) and 8
+    # combinations
+    assert rep.points == 7 + 8
+    assert "clean" in rep.text()
+
+
+def test_the_solver_is_reused_between_points():
+    """Points whose model has the written values' equations re-solve on the warm solver
+    (Solver.set_value), as the sliders do."""
+    rep = sweep(HOLE, "plate.aidl")
+    assert rep.warm == rep.points
+
+
+def test_the_budget_bounds_the_sweep_and_says_how_many_points_were_skipped():
+    rep = sweep(CLEAN, "plate.aidl", seconds=0.0)
+    assert rep.points == 0 and rep.skipped == 7 + 8 and rep.findings == []
+    assert f"{rep.skipped} points skipped" in rep.text()
+
+
+def test_params_without_a_range_are_named_once_and_not_swept():
+    rep = sweep("param w = 40 mm\nsolid s { b = Rectangle(center=(0, 0), width=w, height=10) }",
+                "s.aidl")
+    assert rep.swept == [] and rep.unranged == ["w"] and rep.points == 0
+    assert rep.text().count("not swept (no declared range): w") == 1
+    assert "nothing swept" in rep.text()
+
+
+def test_a_program_that_does_not_compile_is_not_swept():
+    rep = sweep("param w = 40 mm, min = 10 mm, max = 50 mm\nsolid s { b = Circel() }", "s.aidl")
+    assert not rep.ok and rep.errors and rep.points == 0
+
+
+def test_result_sweep_is_the_same_function():
+    r = aidl_lang.compile(source=HOLE, path="plate.aidl")
+    rep = r.sweep()
+    assert [f.values for f in rep.findings] == [{"offset": 30.0}]
+
+
+@settings(max_examples=6, deadline=None)
+@given(edge=st.floats(min_value=12.0, max_value=22.0))
+def test_law_the_clean_bound_is_where_the_wall_reaches_the_minimum(edge):
+    """Over generated ranges, the clean range's end is within the tolerance below the value
+    where the hole's wall to the edge is 0.5 mm (25 - 3 - x = 0.5), whenever the declared
+    range reaches past it; a range that stays below it has no finding."""
+    top = edge + 10.0
+    src = HOLE.replace("max = 30 mm", f"max = {top:.4f} mm")
+    rep = sweep(src, "plate.aidl", points=0)
+    [f] = rep.findings
+    hi = f.clean["offset"][1]
+    # the circle is cut as a polygon: its wall is a hair wider than the true circle's
+    assert 21.5 - 0.01 * top - 1e-6 <= hi < 21.55
+    src = HOLE.replace("max = 30 mm", f"max = {min(edge, 21.0):.4f} mm")
+    assert sweep(src, "plate.aidl", points=0).findings == []
+
+
+def test_cli_check_sweep(tmp_path):
+    f = tmp_path / "plate.aidl"
+    f.write_text(HOLE)
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    p = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", str(f), "--sweep"],
+                       capture_output=True, text=True, env=env, cwd=str(ROOT))
+    assert p.returncode == 0                # a finding is a warning
+    assert "warning[W0110]" in p.stderr + p.stdout
+    assert "1 finding (W0110)" in p.stdout and "not swept (no declared range): r" in p.stdout
+    p = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", str(f), "--sweep",
+                        "--json"], capture_output=True, text=True, env=env, cwd=str(ROOT))
+    doc = json.loads(p.stdout)
+    assert doc["sweep"]["findings"][0]["values"] == {"offset": 30.0}
+    assert [d["code"] for d in doc["diagnostics"]] == ["W0110"]
+
+
+@pytest.mark.asyncio
+async def test_mcp_check_with_sweep_through_the_sdk_client(tmp_path):
+    pytest.importorskip("mcp")
+    from mcp.client.session import ClientSession
+    from mcp.client.stdio import StdioServerParameters, stdio_client
+    root = tmp_path / "work"
+    root.mkdir()
+    env = {k: v for k, v in os.environ.items() if k != "AIDL_DEBUG"}
+    params = StdioServerParameters(command=sys.executable,
+                                   args=["-m", "aidl_lang.cli", "mcp", "--root", str(root)],
+                                   env=env, cwd=str(ROOT))
+    async with stdio_client(params) as (read, write):
+        async with ClientSession(read, write) as session:
+            await session.initialize()
+            r = await session.call_tool("check", {"source": HOLE, "sweep": True})
+            doc = r.structured_content
+            assert doc["ok"] and doc["sweep"]["swept"] == ["offset"]
+            [f] = doc["sweep"]["findings"]
+            assert f["values"] == {"offset": 30.0} and f["code"] == "W0502"
+            assert 21.2 <= f["clean"]["offset"][1] < 21.5
+            w = [d for d in doc["diagnostics"] if d["code"] == "W0110"]
+            assert len(w) == 1 and w[0]["span"]["line"] == 1
+            r = await session.call_tool("check", {"source": HOLE})
+            assert "sweep" not in r.structured_content
