@@ -155,3 +155,47 @@ async def test_mcp_check_with_sweep_through_the_sdk_client(tmp_path):
             assert len(w) == 1 and w[0]["span"]["line"] == 1
             r = await session.call_tool("check", {"source": HOLE})
             assert "sweep" not in r.structured_content
+
+
+# ------------------------------------------------------------- the gallery, swept
+# every example and generator of the gallery (aidl_lang/studio/gallery.py: examples/*.aidl,
+# examples/generators/*.aidl, the studio's forms, the synthesized generator programs) with
+# ranged params, swept at each param's ends and middle (no Latin hypercube in the suite: the
+# ends find what the combinations found, at a third of the points).  Left as found, with
+# what the sweep reports (h12-sweep's closing note): their ranges come from the generators'
+# own asserts (gallery.slider_range) or need the generator changed, not one number narrowed.
+LEFT = {
+    "generator/divider_tray": "rows=6, cols=6: halving slots of the dividers break through "
+                              "their outline (W0510)",
+    "generator/flex_box": "height under 22 mm: the flex cuts cut the wall apart (W0510)",
+    "generator/gear_train": "module=0.5 mm: thin wall at the bore (W0507); backlash=0: the "
+                            "gears collide (W0517)",
+    "generator/hinged_box": "thickness=1 mm: thin wall at the cheek's bore (W0507)",
+    "generator/mounting_plate": "height=12.5 mm, corner_radius=16 mm, inset at either end: "
+                                "holes merge or leave the plate (W0508, W0507, W0510)",
+    "generator/planetary": "planets=5 (W0511), planet and sun off the evenly-spaced counts "
+                           "(E0405), module=0.5 mm (W0507)",
+    "generator/rack_and_pinion": "teeth=8: rack and pinion collide (W0517)",
+    "generator/rounded_tab": "width=5 mm, hole_d=24 mm: the eye leaves the tab (W0510, W0504)",
+    "generator/text_on_arc": "spacing=0.2: letters drawn over each other (W0513)",
+    "generator/washer": "outer=2.5 mm, inner=10.6 mm: the bore removes the washer (W0503)",
+}
+
+
+def _ranged():
+    from aidl_lang.studio import gallery
+    out = []
+    for e in gallery.entries():
+        if any(p["declared"] and p["min"] is not None and p["max"] is not None
+               and p["kind"] in ("length", "angle", "number", "integer") for p in e.params):
+            marks = ([pytest.mark.xfail(run=False, reason=LEFT[e.id])] if e.id in LEFT else [])
+            out.append(pytest.param(e, id=e.id, marks=marks))
+    return out
+
+
+@pytest.mark.parametrize("entry", _ranged())
+def test_every_gallery_entry_is_clean_across_its_declared_ranges(entry, tmp_path):
+    rep = sweep(entry.source, str(tmp_path / "main.aidl"), points=0)
+    assert rep.ok
+    assert rep.findings == [], "\n".join(
+        f"{d.message}\n  {d.hint}" for d in rep.diagnostics)
