@@ -13,8 +13,8 @@ ranges").
 
 Cost: the program is parsed and checked once; each point is interpreted again with its
 values, and when the model has the same rows as the last one the compiled solver is
-reused (:meth:`~aidl_lang.solver.Solver.set_value`, as the sliders of ``aidl serve`` do:
-:class:`aidl_lang.serve.session.Session`).  The whole sweep is bounded by the compile's CPU
+reused (:func:`aidl_lang.solver.holds.reuse`: :meth:`~aidl_lang.solver.Solver.set_value`, as the
+sliders of ``aidl serve`` do).  The whole sweep is bounded by the compile's CPU
 budget (:func:`aidl_lang.limits.now`); the points past it are counted in ``skipped``.
 """
 from __future__ import annotations
@@ -103,21 +103,45 @@ class SweepReport:
 
 
 class _Param:
-    __slots__ = ("name", "unit", "value", "lo", "hi", "integer", "span")
+    """A ranged param in display units (mm, deg, plain): its written value, ``min``/``max``
+    and ``step`` (0: none)."""
+    __slots__ = ("name", "unit", "k", "value", "lo", "hi", "step", "integer", "span")
 
-    def __init__(self, p, span):
-        self.name, self.unit, self.value = p.name, p.unit, float(p.value)
-        self.lo, self.hi, self.span = float(p.min), float(p.max), span
-        self.integer = p.kind == "number" and all(
-            float(v).is_integer() for v in (p.value, p.min, p.max, p.step or 1))
+    def __init__(self, name, unit, k, value, rng, span):
+        self.name, self.unit, self.k, self.span = name, unit, k, span
+        self.value = round(value * k, 9)
+        self.lo, self.hi = round(rng["min"] * k, 9), round(rng["max"] * k, 9)
+        self.step = round(rng["step"] * k, 9) if rng.get("step") else 0.0
+        self.integer = not unit and all(float(v).is_integer() for v in
+                                        (self.value, self.lo, self.hi, self.step or 1))
 
     def at(self, x: float) -> float:
+        """``x`` in the range, on the slider's steps (``step=``) when the param has them: the
+        values a form offers (and no second compile to move a point onto them)."""
         x = min(max(x, self.lo), self.hi)
+        if self.step > 0 and self.hi - self.lo > self.step:
+            x = self.lo + round((x - self.lo) / self.step) * self.step
+            if x > self.hi + 1e-9:
+                x -= self.step
         return float(round(x)) if self.integer else round(x, 9)
 
     def text(self, x: float) -> str:
-        x = int(x) if self.integer else x
-        return f"{x:.6g} {self.unit}".strip() if not self.integer else str(x)
+        return _text(x, self.unit, self.integer)
+
+
+def _text(x: float, unit: str, integer: bool = False) -> str:
+    """A value as ``--set`` reads it: ``12.5 mm``, ``30 deg``, ``6``."""
+    return str(int(x)) if integer else f"{x:.12g} {unit}".strip()
+
+
+def _display(q) -> tuple[str, float] | None:
+    """``(unit, factor)`` of a param's value (display unit = factor x the model's unit:
+    mm, deg from radians, plain numbers); None for one that is not a known number."""
+    import math
+    from .geometry.values import ANG, LEN, NUM, Q
+    if isinstance(q, bool) or not isinstance(q, Q) or q.const() is None:
+        return None
+    return {LEN: ("mm", 1.0), ANG: ("deg", 180 / math.pi), NUM: ("", 1.0)}.get(q.dim)
 
 
 def sweep(source: str, path: str = "<source>", budget: float | Budget | None = None,
@@ -150,36 +174,38 @@ class _Sweep:
         from . import ast as A
         from .output.checks import topology
         from .parser import parse
-        from .serve.session import Session
         from .typecheck import check
         t0 = now()
         rep = self.report
         sink = DiagnosticSink()
-        program = parse(self.source, self.path, sink)
+        self.program = parse(self.source, self.path, sink)
         if not sink.has_errors:
-            check(program, sink)
-        s = self.session = Session(self.path)
-        s.budget = self.budget
-        s.source, s.sources, s.program = self.source, dict(sink.sources), program
-        base = s._compile({}, drawing=True) if not sink.has_errors else None
-        if base is None or not base.ok:
+            check(self.program, sink)
+        self.sources = dict(sink.sources)
+        self.solver = self.keys = None
+        base = self._compile({}) if not sink.has_errors else None
+        if base is None or base.sink.has_errors or base.drawing is None:
             rep.ok = False
             rep.errors = [d for d in (base.sink if base else sink).items if d.is_error]
             rep.seconds = now() - t0
             return rep
         self.base_keys = {_key(d) for d in base.sink.items if not d.is_error}
         self.base_topology = topology(base.drawing)
-        spans = {st.name: st.span for st in program.stmts if isinstance(st, A.ParamDecl)}
-        ranges = getattr(base.fctx, "param_ranges", {})
+        fctx = base.fctx
+        ranges = getattr(fctx, "param_ranges", {})
         self.params = []
-        for p in s._params(base.fctx, {}, defaults={}):
-            if p.kind not in ("length", "angle", "number"):
+        for st in self.program.stmts:
+            if not isinstance(st, A.ParamDecl):
                 continue
-            r = ranges.get(p.name) or {}
-            if r.get("min") is None or r.get("max") is None or p.max <= p.min:
-                rep.unranged.append(p.name)
+            v = fctx.params.get(st.name)
+            shown = _display(v)
+            if shown is None:
+                continue
+            r = ranges.get(st.name) or {}
+            if r.get("min") is None or r.get("max") is None or r["max"] <= r["min"]:
+                rep.unranged.append(st.name)
             else:
-                self.params.append(_Param(p, spans.get(p.name)))
+                self.params.append(_Param(st.name, shown[0], shown[1], v.const(), r, st.span))
         rep.swept = [p.name for p in self.params]
         self.end = t0 + seconds
         self.problems: dict = {}
@@ -187,6 +213,40 @@ class _Sweep:
             self._sweep()
         rep.seconds = now() - t0
         return rep
+
+    def _compile(self, ov: dict) -> "_Point":
+        """The program with the ``--set`` texts ``ov``: interpreted again (parsed and checked
+        once), solved on the last solver when the model's rows are its rows
+        (:func:`~aidl_lang.solver.holds.reuse`), then the booleans and the shape checks."""
+        from .interp import Interpreter
+        from .limits import Deadline
+        from .pipeline import after_solve, report_failure
+        from .solver import Solver, run
+        from .solver.holds import reuse
+        sink = DiagnosticSink()
+        sink.sources.update(self.sources)
+        interp = Interpreter(sink, ov, self.budget)
+        model = interp.run(self.program)
+        out = _Point(sink, interp.file)
+        if sink.has_errors:
+            return out
+        out.warm, self.keys = reuse(self.solver, model, self.keys)
+        if not out.warm:
+            self.solver, self.keys = Solver(model), None
+        solver = self.solver
+        solver.deadline = interp.deadline                # the point's one time budget
+        solved = run(solver)
+        if solved.solver is not None and solved.solver is not solver:
+            solver = self.solver = solved.solver         # solved again with a hold released
+            self.keys = None
+        if solver.model is not model:                    # warm: the solver writes its own model
+            model.x = list(solver.model.x)
+        if not solved.converged:
+            report_failure(sink, solved)
+            self.solver = self.keys = None
+            return out
+        out.drawing = after_solve(sink, model, deadline=Deadline(interp.deadline, interp.budget))
+        return out
 
     def _plan(self) -> list[dict]:
         written = {p.name: p.value for p in self.params}
@@ -260,26 +320,21 @@ class _Sweep:
         if key in self.problems:
             return self.problems[key]
         from .output.checks.changes import topology, topology_changes
-        from .studio.compiler import into_range
         self.report.points += 1
         by = {p.name: p for p in self.params}
         ov = {n: by[n].text(x) for n, x in vals.items()}
-        s = self.session
-        res = s._compile(ov, drawing=True)
+        res = self._compile(ov)
         for _ in range(CLAMPS):
             # a range (or step) that follows other params (docs/language.md, 2.3): the
-            # dependent param moved into it and onto its steps, as the studio's forms do
-            if res.fctx is None:
-                break
+            # dependent params moved into it and onto its steps, as the studio's forms do
             errs = [d for d in res.sink.items if d.is_error]
             if errs and not any(d.code == "E0124" for d in errs):
                 break
-            rows = [p.to_json() for p in s._params(res.fctx, ov)]
-            fixed = into_range(rows) or into_range(rows, grid=True)
+            fixed = _into_ranges(res.fctx)
             if not fixed:
                 break
-            ov.update({k: t for k, (t, _) in fixed.items()})
-            res = s._compile(ov, drawing=True)
+            ov.update(fixed)
+            res = self._compile(ov)
         errs = [d for d in res.sink.items if d.is_error]
         if any(d.code == "E0124" for d in errs):
             self.problems[key] = []         # no value of the dependent params fits
@@ -326,6 +381,34 @@ class _Sweep:
                             f"(bisected: {tol}), or fix the design at these values",
                        labels=labels)
         self.report.findings.append(Finding(shown, code, message, narrowed, d))
+
+
+class _Point:
+    __slots__ = ("sink", "fctx", "drawing", "warm")
+
+    def __init__(self, sink, fctx):
+        self.sink, self.fctx, self.drawing, self.warm = sink, fctx, None, False
+
+
+def _into_ranges(fctx) -> dict[str, str]:
+    """``--set`` texts for the params of a compile (its interpreter's file ``fctx``) whose
+    value left a declared range that follows other params, or lies between its steps: the
+    value moved into the range, onto its steps."""
+    out = {}
+    for name, r in (getattr(fctx, "param_ranges", None) or {}).items():
+        v = fctx.params.get(name)
+        shown = _display(v)
+        lo, hi, step = r.get("min"), r.get("max"), r.get("step")
+        if shown is None or lo is None or hi is None or lo > hi:
+            continue
+        x = v.const()
+        w = min(max(x, lo), hi)
+        if step and step > 0:
+            w = lo + round((w - lo) / step) * step
+            w = max(w - step if w > hi + 1e-9 else w, lo)
+        if abs(w - x) > 1e-9 * max(1.0, abs(x)):
+            out[name] = _text(round(w * shown[1], 9), shown[0])
+    return out
 
 
 def _key(d: Diagnostic) -> tuple:
