@@ -8,7 +8,7 @@
 # Try: --set angle=60deg
 
 units mm
-param slot = 3 mm, min = 3 mm, max = 6 mm, step = 0.5 mm
+param slot = 3 mm, min = 1 mm, max = 6 mm, step = 0.5 mm
 param angle = 70 deg, min = 50 deg, max = 80 deg, step = 5 deg
 thickness 3 mm
 

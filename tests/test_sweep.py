@@ -166,6 +166,9 @@ async def test_mcp_check_with_sweep_through_the_sdk_client(tmp_path):
 # what the sweep reports (h12-sweep's closing note): their ranges come from the generators'
 # own asserts (gallery.slider_range) or need the generator changed, not one number narrowed.
 LEFT = {
+    "example/phone_stand": "slot under the 3 mm sheet: the parts collide (W0517); kept: the "
+                           "suite shows that collision with slot=2.5 mm (test_assembly, "
+                           "test_checks, test_mcp, test_lsp_preview)",
     "generator/divider_tray": "rows=6, cols=6: halving slots of the dividers break through "
                               "their outline (W0510)",
     "generator/flex_box": "height under 22 mm: the flex cuts cut the wall apart (W0510)",
