@@ -85,7 +85,8 @@ class SweepReport:
             out = "sweep: no param declares a range (`min=` and `max=`): nothing swept"
         else:
             n = len(self.findings)
-            out = (f"sweep: {', '.join(self.swept)} across their ranges: {self.points} points, "
+            its = "its range" if len(self.swept) == 1 else "their ranges"
+            out = (f"sweep: {', '.join(self.swept)} across {its}: {self.points} points, "
                    + (f"{n} finding{'s' if n != 1 else ''} (W0110)" if n else "clean"))
             if self.skipped:
                 out += (f"; {self.skipped} point{'s' if self.skipped != 1 else ''} skipped "
