@@ -356,6 +356,23 @@ class Result:
                 self._sliding = sliding(solver)
         return self._sliding
 
+    def sweep(self, budget: float | Budget | None = None, points: int | None = None,
+              seconds: float | None = None):
+        """This program checked across its params' declared ranges (``aidl check --sweep``,
+        MCP ``check`` with ``sweep: true``; docs/language.md, "Sweeping the ranges"): a
+        :class:`~aidl_lang.sweep.SweepReport` whose ``findings`` (``W0110``, located at the
+        ``param`` lines) name each value where the design stops compiling, a part changes
+        topology or a new warning appears, with the largest clean sub-range.  ``budget``: a
+        factor or :class:`~aidl_lang.limits.Budget` for each compile and, in CPU seconds,
+        for the whole sweep (``seconds`` overrides that total); ``points``: the Latin
+        hypercube's size (default :data:`aidl_lang.sweep.LHS_POINTS`).  Raises
+        :class:`TypeError` for a result with no source text."""
+        from .sweep import LHS_POINTS, sweep
+        if self.source is None:
+            raise TypeError("sweep() needs the program's source text")
+        return sweep(self.source, self.path, budget,
+                     LHS_POINTS if points is None else points, seconds)
+
     def find_redundant(self, seconds: float | None = REDUNDANCY_SECONDS,
                        max_rows: int | None = REDUNDANCY_ROWS,
                        deadline: float | None = None) -> list[Diagnostic]:

@@ -866,6 +866,24 @@ hole with constraints as usual.
         CutInto(lid_hole, box.lid)                                 # the fix: a hole in the lid
     }
 """),
+    "W0110": ("design breaks inside a param's declared range", """
+`aidl check --sweep` (and `Result.sweep()`, MCP `check` with `sweep: true`) compiles the
+design across its params' declared ranges (`min=` and `max=`): each ranged param at its low
+end, middle and high end (the others at their written values), then a small seeded Latin
+hypercube of combinations, within the compile's CPU budget. This warning, located at the
+`param` line (the other params of a combination as labels), names the values at which the
+design stops compiling (an error), a part changes its topology (a solid falls into pieces, a
+hole leaves its solid or breaks through its outline, holes merge: as W0510), or a warning
+appears that the written values do not have; the message gives that code and its message.
+The hint gives the largest clean range found by bisection between the written values and the
+failing ones: narrow the range to it, or fix the design so that it holds across the range.
+
+    param offset = 10 mm, min = 0 mm, max = 30 mm   # warning: with offset=30 mm, W0502
+    solid plate {
+        body = Rectangle(center=(0, 0), width=50, height=30)
+        hole h { c = Circle(center=(offset, 0), radius=3) }   # leaves the plate past 21.4 mm
+    }
+"""),
     "W0104": ("empty drawing", """
 The file is empty (nothing but comments), or its structures build no geometry at all, so the
 SVG would be empty. Add shapes, or instantiate a template. A file of only templates, params and

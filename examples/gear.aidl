@@ -8,7 +8,7 @@
 import "parts/gears.aidl"
 
 param pinion_teeth = 12, min = 8, max = 40, step = 1
-param wheel_teeth = 30, min = 8, max = 80, step = 1
+param wheel_teeth = 30, min = 20, max = 80, step = 1
 param module = 2 mm
 
 center_distance = module * (pinion_teeth + wheel_teeth) / 2

@@ -6,8 +6,8 @@
 units mm
 param waist = 26, min = 10, max = 52, step = 1       # half width at the waist
 param lower_bout = 44, min = 20, max = 88, step = 1  # half width of the lower bout
-param upper_bout = 32, min = 16, max = 64, step = 1  # half width of the upper bout
-param hole_radius = 12, min = 4, max = 24, step = 1
+param upper_bout = 32, min = 18, max = 64, step = 1  # half width of the upper bout
+param hole_radius = 12, min = 4, max = 15, step = 1
 thickness 3 mm
 
 solid body {

@@ -8,8 +8,8 @@
 
 units mm
 param length = 100 mm, min = 60 mm, max = 200 mm, step = 5 mm
-param depth = 60 mm, min = 40 mm, max = 120 mm, step = 5 mm
-param height = 40 mm, min = 20 mm, max = 100 mm, step = 5 mm
+param depth = 60 mm, min = 45 mm, max = 120 mm, step = 5 mm
+param height = 40 mm, min = 25 mm, max = 100 mm, step = 5 mm
 param wall = 3 mm
 thickness 3 mm
 

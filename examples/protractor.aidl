@@ -4,7 +4,7 @@
 # engraved.
 # Try: --set radius=100
 
-param radius = 80 mm, min = 30 mm, max = 160 mm, step = 1 mm
+param radius = 80 mm, min = 75 mm, max = 160 mm, step = 1 mm
 base_height = 8 mm
 
 solid protractor {

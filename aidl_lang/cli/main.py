@@ -161,6 +161,12 @@ def cmd_check(args) -> int:
     if getattr(args, "describe", False) and program.ok:
         program.deadline = res.deadline     # what the compile left of the one budget
         extra["describe"] = program.description
+    report = None
+    if getattr(args, "sweep", False) and program.ok:
+        report = program.sweep(budget=_budget(args))
+        for d in report.diagnostics:
+            res.sink.add(d)
+        extra["sweep"] = report.to_json()
     _emit(res.sink, args.json, res.ok, extra)
     if res.ok and not args.json:
         s = res.solve
@@ -187,6 +193,8 @@ def cmd_check(args) -> int:
             print(describe_text(extra["describe"]))
         if values is not None and not values:
             print(f"aidl: no value matches {' '.join(args.values)}", file=sys.stderr)
+        if report is not None:
+            print(report.text())
     return 0 if res.ok else 1
 
 

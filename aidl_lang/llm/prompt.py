@@ -106,7 +106,7 @@ W0512, W0517), `construction=true` (W0506), an `assembly` for separate pieces (W
 with `fully constrained` or `N degrees of freedom left`: shapes could still move (valid; pin
 what matters).
 `aidl check --describe` describes the final part. `aidl import --infer d.dxf` writes a
-drawing as a program. `aidl set f.aidl NAME=VALUE` changes a param's value in the file.
+drawing as a program. `aidl set f.aidl NAME=VALUE` changes a param's value in the file. `aidl check --sweep` tries each `param`'s `min=`..`max=` range.
 There is no Rotate/Translate/Union. A warning means the program runs but probably not as
 meant: fix it. When fixing errors, keep
 every structure and constraint that carries design intent: correct the call rather than

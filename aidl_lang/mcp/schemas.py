@@ -129,6 +129,7 @@ class CheckResult(_Compiled):
     freedom: NotRequired[Freedom]
     parts: NotRequired[list[Part]]
     fit: NotRequired[Fit]
+    sweep: NotRequired[dict]
 
 
 class WriteResult(CheckResult):

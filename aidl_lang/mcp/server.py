@@ -69,6 +69,8 @@ Budget = Annotated[float | None, Field(
                 "default 1.", gt=0, le=T.MAX_BUDGET)]
 Dof = Annotated[bool, Field(
     description="Count the degrees of freedom left per structure and what still moves.")]
+Sweep = Annotated[bool, Field(
+    description="Also check the design across its params' declared min/max ranges.")]
 Output = Annotated[str | None, Field(
     description="Also write the drawing to this file in the allowed folder; format by "
                 "extension: " + ", ".join(k for k in FORMATS if k != ".stp") + ".")]
@@ -524,14 +526,15 @@ def build_server(root: str, budget: float = 1.0,
 
     @tool(reads)
     def check(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
-              dof: Dof = False, budget: Budget = None,
+              dof: Dof = False, budget: Budget = None, sweep: Sweep = False,
               detail: Detail = False) -> Annotated[CallToolResult, CheckResult]:
         """Parse, check and solve an AIDL program; write nothing. Returns ok, located
-        diagnostics (code, span, hint, fix), parts (bbox mm), freedom and the assembled fit.
+        diagnostics (code, span, hint, fix), parts (bbox mm), freedom and the assembled fit;
+        `sweep`: W0110 for each param value of a declared range where the design breaks.
         Every result: structured content and one line of text; a refused call: isError with
         error {code, message, argument}."""
         return answer("check", work.call("check", source, path, overrides, dof, budget,
-                                         budget=budget), detail=detail)
+                                         sweep, budget=budget), detail=detail)
 
     @tool(writes)
     def write_program(path: WritePath, text: WriteText = None, old: Old = None,

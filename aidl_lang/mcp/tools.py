@@ -258,12 +258,19 @@ def _inside(d) -> str:
 
 def check(ws: Workspace, source: str | None = None, path: str | None = None,
           overrides: dict | None = None, dof: bool = False,
-          budget: float | None = None) -> dict:
+          budget: float | None = None, sweep: bool = False) -> dict:
     """``{"ok", "diagnostics" (JSON, with spans and fixes; redundant constraints as W0401,
     looked for at most 1 s, as ``aidl check``), "units", "solve", "freedom", "parts"}`` (the
-    last two when the program solved; ``freedom`` per structure with ``dof``)."""
+    last two when the program solved; ``freedom`` per structure with ``dof``; with
+    ``sweep``, ``sweep`` (:meth:`aidl_lang.sweep.SweepReport.to_json`) and its W0110 among
+    the diagnostics)."""
     r = ws.compile(source, path, overrides, budget)
     r.find_redundant()                    # W0401, as `aidl check` reports them
+    report = None
+    if sweep and r.ok:
+        report = r.sweep(budget=ws.budget if budget is None else budget)
+        for d in report.diagnostics:
+            r.sink.add(d)
     parts = _after_compile(r, lambda: [p.to_json() for p in r.parts])
     doc = _summary(ws, r)
     if r.ok:
@@ -274,6 +281,8 @@ def check(ws: Workspace, source: str | None = None, path: str | None = None,
         doc["freedom"]["text"] = for_agents(text)
         doc["parts"] = parts
         doc["fit"] = r.fit
+    if report is not None:
+        doc["sweep"] = report.to_json() | {"text": report.text()}
     return doc
 
 

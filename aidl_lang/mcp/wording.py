@@ -56,6 +56,7 @@ _PHRASES: list[tuple[re.Pattern, object]] = [(re.compile(p), r) for p, r in [
     (r"`aidl check --describe`", "The `describe` tool"),
     (r"`aidl import --infer ([^`]+)`", r'`import_drawing` with path="\1"'),
     (r"`aidl check --values`", "the `values` tool"),
+    (r"`aidl check --sweep`", "`check` with sweep=true"),
     (r"`aidl set f\.aidl NAME=VALUE` changes a param's value in the file\.",
      "`set_params` changes params in a file (path, values: {\"width\": \"50 mm\"}); "
      "`measure` gives the distance, centre distance, angle or clearance between two named "

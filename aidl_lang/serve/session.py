@@ -34,7 +34,7 @@ from ..parser import parse
 from ..output.checks import check_drawing, check_topology, topology
 from ..pipeline import after_solve, report_failure
 from ..solver import Solver, run
-from ..solver.holds import build_rows
+from ..solver.holds import reuse
 from ..sources import SourceRefused, read_program
 from ..typecheck import check
 from .params import Param, _nice, _param, default_span  # noqa: F401 - the customizer's params
@@ -293,19 +293,9 @@ class Session:
     def _solver_for(self, model) -> tuple[Solver, bool]:
         """The warm solver with the new model's values written in, when its rows are the new
         model's rows; else a new solver (which becomes the warm one)."""
-        x = model.xs()
-        old = self.solver
-        if old is not None and old.n_model == len(x) and list(old.model.free) == list(model.free):
-            rows = build_rows(model, x)
-            built = old.rows_built          # every row, those of pinned geometry included
-            if self._row_keys is None:      # made when first compared, not on every cold move
-                self._row_keys = [repr(e) for e in built.exprs]
-            if rows.n_params == built.n_params and rows.kind == built.kind \
-                    and rows.slack == built.slack and [repr(e) for e in rows.exprs] == self._row_keys:
-                for i in range(len(x)):
-                    if old.x[i] != x[i]:
-                        old.set_value(i, x[i])
-                return old, True
+        reused, self._row_keys = reuse(self.solver, model, self._row_keys)
+        if reused:
+            return self.solver, True
         s = Solver(model)
         self.solver, self._row_keys = s, None
         return s, False

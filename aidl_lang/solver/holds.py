@@ -171,3 +171,27 @@ def _needed_holds(exprs, n_params, x, comp_rows, cols, hold_cols) -> list:
         out.append(True)
         J = sp.vstack([J, sp.csr_matrix(([1.0], ([0], [c])), shape=(1, n))]).tocsr()
     return out
+
+
+def reuse(old, model: Model, keys: list[str] | None) -> tuple[bool, list[str] | None]:
+    """Whether the compiled solver ``old`` (a :class:`~aidl_lang.solver.Solver`, or None)
+    solves ``model`` too: the same unknowns and the same rows, compared expression by
+    expression (held values and starting positions may differ; constants baked into rows
+    may not).  When it does, every value of ``model`` that differs is written into it with
+    :meth:`~aidl_lang.solver.Solver.set_value` (Newton then re-runs on its compiled tapes:
+    the sliders of ``aidl serve``, ``aidl check --sweep``).  ``keys``: the ``repr`` of
+    ``old``'s rows from an earlier call (None: made now).  Returns ``(reused, keys)``."""
+    x = model.xs()
+    if old is None or old.n_model != len(x) or list(old.model.free) != list(model.free):
+        return False, None
+    rows = build_rows(model, x)
+    built = old.rows_built          # every row, those of pinned geometry included
+    if keys is None:                # made when first compared, not on every cold move
+        keys = [repr(e) for e in built.exprs]
+    if rows.n_params != built.n_params or rows.kind != built.kind \
+            or rows.slack != built.slack or [repr(e) for e in rows.exprs] != keys:
+        return False, keys
+    for i in range(len(x)):
+        if old.x[i] != x[i]:
+            old.set_value(i, x[i])
+    return True, keys
