@@ -219,8 +219,9 @@ def test_tools_list_leaves_room_for_two_more_tools_under_5000_tokens(jobs):
     listed = figures["tools/list"]
     n = listed["tools"]
     assert n >= 8 and listed["tokens"] * (n + 2) / n <= LISTED, listed
-    # 7,365 before; 6,801 with the line of `set_params` and `measure`, 6,828 with who moves
-    assert figures["prompt"]["tokens"] <= 6830, figures["prompt"]
+    # 7,365 before; 6,801 with the line of `set_params` and `measure`, 6,828 with who moves,
+    # 6,845 with `check` with sweep=true
+    assert figures["prompt"]["tokens"] <= 6850, figures["prompt"]
 
 
 def test_each_of_issue_86s_jobs_is_at_most_3000_tokens_and_renders_no_picture(jobs):

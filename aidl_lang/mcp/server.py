@@ -70,7 +70,7 @@ Budget = Annotated[float | None, Field(
 Dof = Annotated[bool, Field(
     description="Count the degrees of freedom left per structure and what still moves.")]
 Sweep = Annotated[bool, Field(
-    description="Also check the design across its params' declared min/max ranges.")]
+    description="Also check the design across its params' min..max ranges (W0110).")]
 Output = Annotated[str | None, Field(
     description="Also write the drawing to this file in the allowed folder; format by "
                 "extension: " + ", ".join(k for k in FORMATS if k != ".stp") + ".")]
@@ -529,8 +529,7 @@ def build_server(root: str, budget: float = 1.0,
               dof: Dof = False, budget: Budget = None, sweep: Sweep = False,
               detail: Detail = False) -> Annotated[CallToolResult, CheckResult]:
         """Parse, check and solve an AIDL program; write nothing. Returns ok, located
-        diagnostics (code, span, hint, fix), parts (bbox mm), freedom and the assembled fit;
-        `sweep`: W0110 for each param value of a declared range where the design breaks.
+        diagnostics (code, span, hint, fix), parts (bbox mm), freedom and the assembled fit.
         Every result: structured content and one line of text; a refused call: isError with
         error {code, message, argument}."""
         return answer("check", work.call("check", source, path, overrides, dof, budget,
