@@ -52,7 +52,7 @@ from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, cir
 from .infer_text import along_texts, stroke_texts
 from .infer_layers import _hole_layers
 from .infer_mirror import mirrored_pair, pair_items, write_pair
-from .program import (_Names, _Writer, _containers, _cut_notes, _ident, _layer_items,
+from .program import (UNIT, _Names, _Writer, _containers, _cut_notes, _ident, _layer_items,
                       _length, _num, _pt, _string, _whole_ellipse)
 from .model import Drawing, Note
 
@@ -929,6 +929,7 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats: _Stats) -> None:
             k += 1
             w.emit(depth, f"t{k} = Text({_string(text)}, position={_pt((x, y))}, "
                           f"size={_num(h)}, anchor=\"{anchor}\", valign=\"{valign}\"{rot_txt})")
+            held.append(f"t{k}")
     _emit_holds(w, depth, held, "g")
 
 
@@ -990,7 +991,8 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
     if d.paths_cut:
         w.crossed += len(drawn)
     eng = Drawing(paths=drawn, texts=list(d.texts), engrave=d.engrave)
-    if eng.paths or eng.texts or (eng.engrave is not None and not eng.engrave.empty):
+    if eng.paths or eng.texts or (eng.engrave is not None and
+                                  (not eng.engrave.empty or eng.engrave.texts)):
         w.emit(depth + 1, "drawing engraving {")
         _engraving(w, depth + 2, eng, stats)
         w.emit(depth + 1, "}")
@@ -1071,7 +1073,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
         w.emit(0, "}")
     _cut_notes(w, source)
     head = [f"# imported from {source} by `aidl import --infer`: edit freely"]
-    head += ["# " + ln for ln in _summary(stats) + moved] + ["units mm"]
+    head += ["# " + ln for ln in _summary(stats) + moved] + [f"units {UNIT.get()}"]
     text = "\n".join(head + params.lines + w.lines) + "\n"
     return text, w.notes
 
@@ -1155,7 +1157,8 @@ def _summary(st: _Stats) -> list[str]:
            f"{sum(st.kinds.values())} shapes ({shapes or 'none'})"]
     if pats:
         out.append(f"patterns: {pats}")
-    out.append(f"equal within {EQUAL_TOL:g} mm, numbers rounded within {ROUND_TOL:g} mm; "
+    u = UNIT.get()
+    out.append(f"equal within {EQUAL_TOL:g} {u}, numbers rounded within {ROUND_TOL:g} {u}; "
                f"the rest stays exact Line/Arc chains")
     return out
 

@@ -13,6 +13,7 @@ with ``corners=``) as a ``Bezier`` chain of its own control points.
 """
 from __future__ import annotations
 
+import contextvars
 import math
 import re
 
@@ -24,6 +25,10 @@ from .notches import EDGE_ACROSS, NOTCH_AREA, _notches, _polygons_touch
 
 
 SNAP = 1e-12    # mm: a coordinate within this of a shorter decimal is written as that decimal
+
+# the unit the program is written in (`units in` for a drawing read in inches: its numbers
+# are the file's, units.scaled); set by import_drawing around its writer
+UNIT: "contextvars.ContextVar[str]" = contextvars.ContextVar("aidl_import_unit", default="mm")
 
 
 def _num(v: float, snap: float = SNAP) -> str:
@@ -777,7 +782,11 @@ def to_program(layers: list[tuple[str, Drawing]], source: str, parts: bool = Fal
     if compact:
         w.emit(0, "# (a big drawing: loops of lines as Polygons, repeated loops written once in "
                   "a `for` over their places)")
-    w.emit(0, "units mm")
+    from .infer_layers import _hole_layers
+    layers, moved = _hole_layers(layers, deadline)
+    for line in moved:
+        w.emit(0, f"# {line}")
+    w.emit(0, f"units {UNIT.get()}")
     items = _layer_items(layers, parts, deadline, source, w.notes, w.overlaps)
     multi = len(items) > 1 or any(kind == "cut" for kind, _, _ in items)
     if multi:
@@ -925,13 +934,23 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
                                                 f"curves: the program would have more than the "
                                                 f"{budget.geometry} geometry objects a program may "
                                                 f"build", too_big)
+            from .units import say_inches, scaled, written_unit
+            say_inches(notes, [d for _, d in read])
+            unit_word, per = written_unit([d for _, d in read])
+            if per != 1.0:      # an inch drawing written in inches: the file's own numbers
+                read = [(ly, scaled(d, 1 / per)) for ly, d in read]
+            token = UNIT.set(unit_word)
             if not read:    # every layer empty: the whole drawing's E0132, as Drawing2D gives it
                 read_drawing(data, name, color=color, ident=ident, unit=unit, keep_text=True,
                              close_tolerance=close_tolerance, cut=cut, engrave=engrave,
                              ignore=ignore, roles=roles, deadline=deadline, max_shapes=limit)
-            text, more = (writer or to_program)(read, base, parts=parts, deadline=deadline)
-            if writer is None and len(text.encode("utf-8")) > MAX_IMPORT_BYTES:
-                text, more = to_program(read, base, parts=parts, deadline=deadline, compact=True)
+            try:
+                text, more = (writer or to_program)(read, base, parts=parts, deadline=deadline)
+                if writer is None and len(text.encode("utf-8")) > MAX_IMPORT_BYTES:
+                    text, more = to_program(read, base, parts=parts, deadline=deadline,
+                                            compact=True)
+            finally:
+                UNIT.reset(token)
     except OutOfBudget as ex:
         raise DrawingError("E0304", f"importing `{base}` took {ex.what} (while {ex.stage})",
                            "import a part of it with --layer, keep it as one `Drawing2D`, "
@@ -957,8 +976,11 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list,
     used: set = set()
     items = []
     for layer, d in layers:
-        kind = "drawing" if layer.upper().startswith("ENGRAVE") or (
-            d.texts and not (d.outlines or d.circles or d.ellipses or d.paths)) else "solid"
+        # a layer of text alone, or whose every shape has the role `engrave` (`--engrave
+        # LABELS`: its texts in `d.engrave`), is an engraving, not an empty solid
+        kind = "drawing" if layer.upper().startswith("ENGRAVE") or (d.empty and (
+            d.texts or (d.engrave is not None and (not d.engrave.empty or d.engrave.texts)))) \
+            else "solid"
         if kind == "solid" and d.paths_cut:        # a part's outline left open: closed
             d = _close_loose_cuts(d, source, notes)
         # which loops lie inside which, found once for both questions below
