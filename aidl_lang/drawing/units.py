@@ -52,7 +52,7 @@ def fits_inches(drawings) -> tuple[int, int] | None:
     box's width and height, every circle's diameter and arc's radius, each once) more are
     *round in inches* (a multiple of 1/64, or a whole thousandth below 1: ``0.125``,
     ``0.197``) than *round in millimetres* (a multiple of 0.1 of at least 0.5: ``3.2``,
-    ``120``); a size may be both (``4``, ``0.5``)."""
+    ``120``), and at least 3; a size may be both (``4``, ``0.5``)."""
     sizes, box = _sizes(drawings)
     if box is None:
         return None
@@ -62,7 +62,7 @@ def fits_inches(drawings) -> tuple[int, int] | None:
     every = sizes + [round(w, 9), round(h, 9)]
     inch = sum(1 for s in every if s > 0 and (_whole(s, 1 / 64) or (s < 1 and _whole(s, 1e-3))))
     mm = sum(1 for s in every if s >= 0.5 and _whole(s, 0.1))
-    return (inch, len(every)) if inch > mm else None
+    return (inch, len(every)) if inch > mm and inch >= 3 else None
 
 
 def say_inches(notes: list, drawings) -> None:
