@@ -52,63 +52,9 @@ from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, cir
 from .infer_text import along_texts, stroke_texts
 from .infer_layers import _hole_layers
 from .infer_mirror import mirrored_pair, pair_items, write_pair
-from .program import (UNIT, _Names, _Writer, _containers, _cut_notes, _ident, _layer_items,
-                      _length, _num, _pt, _string, _whole_ellipse)
+from .program import (UNIT, _Names, _Writer, _containers, _cut_notes, _emit_holds, _holds,
+                      _ident, _layer_items, _length, _num, _pt, _string, _whole_ellipse)
 from .model import Drawing, Note
-
-
-def _holds(segs: list, prefix: str, closed: bool = True) -> list[str]:
-    """What to hold so that a chain written by :meth:`~.program._Writer.chain` with
-    ``prefix`` stays where the file put it, and nothing twice (no ``W0401``): an arc between
-    two lines ``Fixed`` whole (its ends with it); every other join of two pieces ``Fixed``
-    (a point); and an arc that meets another arc by its radius (``NAME.radius == r``: its
-    centre is then the one point at that distance from both held ends).  Returns the things
-    to fix and those equations (each with `` == ``).  Only chains of lines and arcs, or one
-    closed spline (held whole); a chain of splines and other pieces stays free as ``aidl
-    import`` writes it."""
-    if not all(isinstance(g, (Line, Arc)) for g in segs):
-        from ..geometry.curves import Spline
-        from .program import _bezier_runs
-        one = _bezier_runs(list(segs))
-        if closed and len(one) == 1 and isinstance(one[0], Spline):
-            return [f"{prefix}0"]       # one closed Bezier or Spline: rigid, held whole
-        return []
-    n = len(segs)
-
-    def piece(i):
-        return segs[i % n] if closed or 0 <= i < n else None
-
-    def arc_alone(i):
-        return isinstance(piece(i), Arc) and not isinstance(piece(i - 1), Arc) and \
-            not isinstance(piece(i + 1), Arc)
-
-    def start(i):       # the expression of piece i's start as written
-        g = segs[i]
-        return f"{prefix}{i}.end" if isinstance(g, Arc) and g.sweep < 0 else f"{prefix}{i}.start"
-
-    def end(i):
-        g = segs[i]
-        return f"{prefix}{i}.start" if isinstance(g, Arc) and g.sweep < 0 else f"{prefix}{i}.end"
-    out = [f"{prefix}{i}" for i in range(n) if arc_alone(i)]
-    for i in range(n):                      # the join at the start of piece i
-        if not (arc_alone(i) or (piece(i - 1) is not None and arc_alone(i - 1))):
-            out.append(start(i))
-    if not closed and not arc_alone(n - 1):
-        out.append(end(n - 1))
-    out += [f"{prefix}{i}.radius == {_num(g.radius)}" for i, g in enumerate(segs)
-            if isinstance(g, Arc) and not arc_alone(i)]
-    return out
-
-
-def _emit_holds(w: _Writer, depth: int, holds: list[str], var: str = "x") -> None:
-    fixed = [h for h in holds if " == " not in h]
-    if len(fixed) == 1:
-        w.emit(depth, f"Fixed({fixed[0]})")
-    elif fixed:
-        w.emit(depth, f"for {var} in [{', '.join(fixed)}] {{ Fixed({var}) }}")
-    for h in holds:
-        if " == " in h:
-            w.emit(depth, h)
 
 
 # ------------------------------------------------------------------ the writer
@@ -1028,7 +974,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
     layers, moved = _hole_layers(layers, deadline)
     items = _layer_items(layers, parts, deadline, source, w.notes, w.overlaps)
     items = _copies(items, deadline)
-    items = _named_parts(pair_items(items, deadline) if parts else items)
+    items = _named_parts(pair_items(items, deadline))
     solids = sum(1 for it in items if it[0] == "solid")
     multi = len(items) > 1 or any(len(it) > 3 for it in items)
     depth = 1 if multi else 0

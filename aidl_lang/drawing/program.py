@@ -273,6 +273,72 @@ class _Writer:
         return True
 
 
+def _holds(segs: list, prefix: str, closed: bool = True) -> list[str]:
+    """What to hold so that a chain written by :meth:`~.program._Writer.chain` with
+    ``prefix`` stays where the file put it, and nothing twice (no ``W0401``): an arc between
+    two lines ``Fixed`` whole (its ends with it); every other join of two pieces ``Fixed``
+    (a point); and an arc that meets another arc by its radius (``NAME.radius == r``: its
+    centre is then the one point at that distance from both held ends).  Returns the things
+    to fix and those equations (each with `` == ``).  Only chains of lines and arcs, or one
+    closed spline (held whole); a chain of splines and other pieces stays free as ``aidl
+    import`` writes it."""
+    if not all(isinstance(g, (Line, Arc)) for g in segs):
+        one = _bezier_runs(list(segs))
+        if closed and len(one) == 1 and isinstance(one[0], Spline):
+            return [f"{prefix}0"]       # one closed Bezier or Spline: rigid, held whole
+        return []
+    n = len(segs)
+
+    def piece(i):
+        return segs[i % n] if closed or 0 <= i < n else None
+
+    def arc_alone(i):
+        return isinstance(piece(i), Arc) and not isinstance(piece(i - 1), Arc) and \
+            not isinstance(piece(i + 1), Arc)
+
+    def start(i):       # the expression of piece i's start as written
+        g = segs[i]
+        return f"{prefix}{i}.end" if isinstance(g, Arc) and g.sweep < 0 else f"{prefix}{i}.start"
+
+    def end(i):
+        g = segs[i]
+        return f"{prefix}{i}.start" if isinstance(g, Arc) and g.sweep < 0 else f"{prefix}{i}.end"
+    out = [f"{prefix}{i}" for i in range(n) if arc_alone(i)]
+    for i in range(n):                      # the join at the start of piece i
+        if not (arc_alone(i) or (piece(i - 1) is not None and arc_alone(i - 1))):
+            out.append(start(i))
+    if not closed and not arc_alone(n - 1):
+        out.append(end(n - 1))
+    out += [_arc_hold(f"{prefix}{i}", g) for i, g in enumerate(segs)
+            if isinstance(g, Arc) and not arc_alone(i)]
+    return out
+
+
+def _arc_hold(nm: str, g: Arc) -> str:
+    """The equation that holds arc ``nm`` (``g``) once both its ends are held: its centre
+    may only slide along the bisector of its chord, so one number pins it.  Its radius
+    (``nm.radius == 12.5``) does, but not near a half turn (a slot's end cap): there the
+    radius is least at the centre drawn, so the equation pins nothing to first order (the
+    solver's rank: ``W0401`` and a free degree left); then the centre's coordinate most
+    along the bisector (``nm.center.x == 36``) holds it."""
+    if abs(math.cos(g.sweep / 2)) >= 0.5:
+        return f"{nm}.radius == {_num(g.radius)}"
+    (x0, y0), (x1, y1) = g.start, g.end
+    axis = 0 if abs(y1 - y0) >= abs(x1 - x0) else 1     # the bisector is across the chord
+    return f"{nm}.center.{'xy'[axis]} == {_num(g.center[axis])}"
+
+
+def _emit_holds(w: _Writer, depth: int, holds: list[str], var: str = "x") -> None:
+    fixed = [h for h in holds if " == " not in h]
+    if len(fixed) == 1:
+        w.emit(depth, f"Fixed({fixed[0]})")
+    elif fixed:
+        w.emit(depth, f"for {var} in [{', '.join(fixed)}] {{ Fixed({var}) }}")
+    for h in holds:
+        if " == " in h:
+            w.emit(depth, h)
+
+
 def _probe(segs) -> tuple[float, float]:
     s = segs[0]
     if isinstance(s, Circle):
@@ -413,17 +479,20 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
         _texts(w, inner, d.texts, "t")
         if kind != "drawing":
             w.emit(depth + 1, "}")
+            w.emit(depth + 1, "Fixed(labels)")
     # a cut role's open paths: through-cuts, never engraved; a loop that crosses itself (a
     # closed curve in a `cut` is a hole's edge, which must not) stays an engraving, counted
     cut_paths = [p for p in d.paths if p.crossing is None] \
         if kind != "drawing" and d.paths_cut else []
-    drawn = [p for p in d.paths if not any(p is q for q in cut_paths)]
+    cut_ids = {id(p) for p in cut_paths}
+    drawn = [p for p in d.paths if id(p) not in cut_ids]
     if cut_paths:
         w.emit(depth + 1, "cut cuts {")
         w.cut_paths += len(cut_paths)
         w.cut_length += sum(_length(p.segments) for p in cut_paths)
         _paths(w, depth + 2, cut_paths, name)
         w.emit(depth + 1, "}")
+        w.emit(depth + 1, "Fixed(cuts)")
     if d.paths_cut and kind != "drawing":
         w.crossed += len(drawn)
     if drawn:
@@ -432,6 +501,7 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
         _paths(w, depth + 1 if kind == "drawing" else depth + 2, drawn, name)
         if kind != "drawing":
             w.emit(depth + 1, "}")
+            w.emit(depth + 1, "Fixed(paths)")
     e = getattr(d, "engrave", None)
     if e is not None and (not e.empty or e.texts):     # the shapes whose role is `engrave`
         if kind == "drawing":
@@ -440,7 +510,10 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
             w.emit(depth + 1, "drawing engrave {")
             _structure_body(w, depth + 2, e, "g")
             w.emit(depth + 1, "}")
+            w.emit(depth + 1, "Fixed(engrave)")
     w.emit(depth, "}")
+    if depth > 0:           # a part of the assembly: where the file puts it
+        w.emit(depth, f"Fixed({name})")
     for run in _island_runs(islands, island_holes, loops, w.compact):
         segs, k = run[0]
         inner = depth
@@ -452,6 +525,8 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
         for i in island_holes.get(k - 1, ()):
             _loop(w, inner + 1, loops[i][1], "", _ident(f"hole{i + 1}", used))
         w.emit(inner, "}")
+        if inner > 0:
+            w.emit(inner, f"Fixed({name}_island{k})")
         if len(run) > 1:
             w.rel = None
             w.emit(depth, "}")
@@ -551,6 +626,7 @@ def _sheet_cut(w: _Writer, depth: int, name: str, d: Drawing) -> None:
     w.emit(depth, f"cut {name} {{")
     _paths(w, depth + 1, d.paths, name)
     w.emit(depth, "}")
+    w.emit(depth, f"Fixed({name})")
 
 
 def _paths(w: _Writer, depth: int, paths: list, name: str) -> None:
@@ -561,6 +637,8 @@ def _paths(w: _Writer, depth: int, paths: list, name: str) -> None:
             w.notes.append(Note("W0130", f"a path of `{name}` holds a piece no statement "
                                          f"writes (a whole circle or ellipse inside a "
                                          f"chain): left out"))
+        else:
+            _emit_holds(w, depth, _holds(p.segments, f"p{i + 1}_", closed))
 
 
 def _texts(w: _Writer, depth: int, texts: list, prefix: str) -> None:
@@ -570,6 +648,7 @@ def _texts(w: _Writer, depth: int, texts: list, prefix: str) -> None:
         rot_txt = f", rotation={_num(deg)} deg" if deg else ""
         w.emit(depth, f"{prefix}{i + 1} = Text({_string(text)}, position={_pt((x, y))}, "
                       f"size={_num(h)}, anchor=\"{anchor}\", valign=\"{valign}\"{rot_txt})")
+    _emit_holds(w, depth, [f"{prefix}{i + 1}" for i in range(len(texts))], "t")
 
 
 def _structure_body(w: _Writer, depth: int, d: Drawing, prefix: str) -> None:
@@ -582,12 +661,15 @@ def _structure_body(w: _Writer, depth: int, d: Drawing, prefix: str) -> None:
         k += 1
         w.emit(depth, f"{prefix}{k} = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
                       f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg)")
+        w.emit(depth, f"Fixed({prefix}{k})")
     for p in d.paths:
         k += 1
         closed = math.dist(p.start, p.end) <= 1e-6 and p.crossing is not None
         if not w.chain(depth, p.segments, closed, f"{prefix}{k}_"):
             w.notes.append(Note("W0130", "an engraved path holds a piece no statement writes "
                                          "(a whole circle or ellipse inside a chain): left out"))
+        else:
+            _emit_holds(w, depth, _holds(p.segments, f"{prefix}{k}_", closed))
     _texts(w, depth, d.texts, f"{prefix}t")
 
 
@@ -743,28 +825,43 @@ def _engrave_of(d: Drawing) -> Drawing:
     return d.engrave
 
 
-def _loop(w: _Writer, depth: int, segs: list, prefix: str, hole: str | None) -> None:
+def _loop(w: _Writer, depth: int, segs: list, prefix: str, hole: str | None,
+          hold: bool = True) -> None:
+    """The statements of the closed loop ``segs`` (a ``hole`` of that name when given), and
+    with ``hold`` what holds it where the file puts it (:func:`_holds`: ``aidl check`` has no
+    degree of freedom to report)."""
     if hole is not None:
         w.emit(depth, f"hole {hole} {{")
         depth += 1
         prefix = "c" if len(segs) == 1 and isinstance(segs[0], Circle) else "e"
+    held: list = []
+    one = prefix.rstrip('_')
     if len(segs) == 1 and isinstance(segs[0], Circle):
         c = segs[0]
-        w.emit(depth, f"{prefix.rstrip('_') or 'c'} = Circle(center={w.pt(c.center)}, "
+        w.emit(depth, f"{one or 'c'} = Circle(center={w.pt(c.center)}, "
                       f"radius={_num(c.radius)})")
+        held = [one or "c"]
     elif len(segs) == 1 and isinstance(segs[0], EllipticArc) and segs[0].whole:
         e = segs[0].curve
-        w.emit(depth, f"{prefix.rstrip('_') or 'e'} = Ellipse(center={w.pt(e.center)}, "
+        w.emit(depth, f"{one or 'e'} = Ellipse(center={w.pt(e.center)}, "
                       f"rx={_num(e.rx)}, ry={_num(e.ry)}, "
                       f"rotation={_num(math.degrees(e.rotation))} deg)")
+        held = [one or "e"]
     elif w.compact and len(segs) >= 3 and all(isinstance(s, Line) for s in segs):
         # a big drawing: a loop of lines as the points of one Polygon
-        w.emit(depth, f"{prefix.rstrip('_') or 'e'} = Polygon([{', '.join(w.pt(s.start) for s in segs)}])")
+        w.emit(depth, f"{one or 'e'} = Polygon([{', '.join(w.pt(s.start) for s in segs)}])")
+        held = [one or "e"]
     elif not w.chain(depth, segs, True, prefix):
         w.notes.append(Note("W0130", "an outline holds a piece no statement writes (a "
                                      "whole circle or ellipse inside a chain): left out"))
+    else:
+        held = _holds(segs, prefix)
     if hole is not None:
         w.emit(depth - 1, "}")
+        held = [h if h.startswith(f"{hole}.") else f"{hole}.{h}" for h in held]
+        depth -= 1
+    if hold:
+        _emit_holds(w, depth, held)
 
 
 def to_program(layers: list[tuple[str, Drawing]], source: str, parts: bool = False,
@@ -991,6 +1088,10 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list,
             if inside is not None else []
         crossed, touched = (0, 0) if parts or inside is None else \
             _overlapping_parts(d, inside, deadline)
+        # separate parts on one layer (two brackets, a plate and its washers): a solid of
+        # each, as `--parts` writes them (one solid of both falls apart: W0504)
+        apart = kind == "solid" and not (parts or crossed or touched) and \
+            _outer_count(d, inside, deadline) > 1
         if crossed:
             notes.append(Note("W0130", f"{crossed} pair{'s' if crossed != 1 else ''} of parts "
                                        f"of `{source}` on a cut role overlap: each part is "
@@ -1006,7 +1107,7 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list,
                                        f"(`assembly drawing_import`), as `--parts` does (one "
                                        f"solid would fuse them and lose the cut along the "
                                        f"edge they share)"))
-        if (parts or crossed or touched) and kind == "solid":
+        if (parts or crossed or touched or apart) and kind == "solid":
             joined: list = []
             pieces, loose = _split_parts(d, deadline, joined)
             base = _ident(layer, set()) if layer else "part"
@@ -1063,6 +1164,17 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list,
                               Drawing(unit=d.unit, paths=inner, paths_cut=True)))
             _say_inner(notes, source, inner, items[-1][1])
     return items
+
+
+def _outer_count(d: Drawing, inside: list | None, deadline=None) -> int:
+    """How many of ``d``'s loops lie inside no other (its separate parts); ``inside``:
+    :func:`_containers` of :func:`_loops_of` when already found."""
+    loops = _loops_of(d)
+    if len(loops) < 2:
+        return len(loops)
+    if inside is None:
+        inside = _containers(loops, deadline)
+    return sum(1 for c in inside if not c)
 
 
 def _say_inner(notes: list, source: str, inner: list, name: str) -> None:
