@@ -332,8 +332,10 @@ def _emit_holds(w: _Writer, depth: int, holds: list[str], var: str = "x") -> Non
     fixed = [h for h in holds if " == " not in h]
     if len(fixed) == 1:
         w.emit(depth, f"Fixed({fixed[0]})")
-    elif fixed:
-        w.emit(depth, f"for {var} in [{', '.join(fixed)}] {{ Fixed({var}) }}")
+    for k in range(0, len(fixed) if len(fixed) > 1 else 0, COPIES_PER_LOOP):
+        run = fixed[k:k + COPIES_PER_LOOP]      # a loop holds at most 10 000 items (E0301)
+        w.emit(depth, f"for {var} in [{', '.join(run)}] {{ Fixed({var}) }}" if len(run) > 1
+               else f"Fixed({run[0]})")
     for h in holds:
         if " == " in h:
             w.emit(depth, h)
