@@ -9,7 +9,12 @@ and open paths are drawn in a ``drawing`` child (engraving).  A layer whose name
 with Python's shortest round-trip ``repr``, so the program renders back to the same curves
 (1e-9 mm).  A spline piece that is the interpolating cubic spline through its span ends is
 written as a ``Spline`` through them; any other (an SVG's or DXF's free cubics, a Spline
-with ``corners=``) as a ``Bezier`` chain of its own control points.
+with ``corners=``) as a ``Bezier`` chain of its own control points.  Every piece, hole
+curve, text, path and part is held where the file puts it (:func:`_holds`: ``aidl check``
+says ``fully constrained``, with no ``W0401``); separate parts on one layer are a solid each;
+loops on a layer named for holes that lie in another layer's part are its holes
+(:func:`~.infer_layers._hole_layers`); a drawing read in inches is written in ``units in``
+with the file's numbers (:mod:`.units`).
 """
 from __future__ import annotations
 
