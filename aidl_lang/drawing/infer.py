@@ -41,7 +41,7 @@ from __future__ import annotations
 import math
 from collections import Counter
 
-from ..geometry.curves import Arc, Line, Loop
+from ..geometry.curves import Line, Loop
 from .infer_attachments import _attachments, _circle_attachments, _notches
 from .infer_params import _Params, _center, _ctor, _deg, _hole_name, _plus, _r
 from .infer_patterns import (_Cells, _copies, _grid, _line, _periodic, _polar,

@@ -9,7 +9,7 @@ import re
 
 from .infer_shapes import circular
 from .model import Drawing
-from .program import _containers
+from .containment import _containers
 
 
 # a layer whose name says it holds holes (HOLES, Drill, NPTH, CUTOUTS, Inner, Mounting)

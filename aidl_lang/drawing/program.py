@@ -24,9 +24,10 @@ import re
 
 from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from ..geometry.drawing2d import _inside, _inside_many
+from .containment import _containers, _loops_of, _outer_count, _probe, _whole_ellipse
 from .hole_cuts import cut_at_crossings, inner_rests, loop_key, polygons_overlap, runs_of
 from .model import Drawing, Note, Outline, Path
-from .notches import EDGE_ACROSS, NOTCH_AREA, _notches, _polygons_touch
+from .notches import EDGE_ACROSS, _polygons_touch
 
 
 SNAP = 1e-12    # mm: a coordinate within this of a shorter decimal is written as that decimal
@@ -344,88 +345,6 @@ def _emit_holds(w: _Writer, depth: int, holds: list[str], var: str = "x") -> Non
     for h in holds:
         if " == " in h:
             w.emit(depth, h)
-
-
-def _probe(segs) -> tuple[float, float]:
-    s = segs[0]
-    if isinstance(s, Circle):
-        return (s.center[0] + s.radius, s.center[1])
-    if isinstance(s, Arc):
-        return s.at(s.start_angle + s.sweep / 2)
-    if isinstance(s, Spline):
-        # a point of the piece itself (a piece of a curve split at a crossing: the curve's
-        # own middle may lie on the other side of the crossing, in another loop)
-        return s.spans[0][3] if len(s.spans) > 1 else s.curve.at((s.u0 + s.u1) / 2)
-    return ((s.start[0] + s.end[0]) / 2, (s.start[1] + s.end[1]) / 2)
-
-
-def _containers(loops: list, deadline=None) -> list[list[int]]:
-    """For each loop (a list of segments) the indices of the other loops it lies inside (its
-    probe point inside their polygon, and their area larger than its own: two parts drawn
-    overlapping, their joint's tabs interlocked, each have points inside the other, and
-    neither is the other's hole): each probe is tested only against the loops whose box
-    holds it, found through a grid (:func:`~..output.part.nearby.box_pairs_between`), so a
-    sheet of 20,000 holes takes a moment (each probe against every box: 4.3 s).  A loop
-    drawn across the edge of a larger part or island (:func:`~.notches._notches`) is that
-    loop's hole (its notch) whatever its probe point."""
-    import numpy as np
-
-    from ..output.part.nearby import box_pairs_between
-    # a whole circle is measured as itself (its area, a distance), not as its polygon
-    polys = [None if len(segs) == 1 and isinstance(segs[0], Circle) else
-             np.asarray(Loop(list(segs)).points(), dtype=float) for segs in loops]
-    areas, boxes, real = [], [], []
-    for j, (segs, P) in enumerate(zip(loops, polys)):
-        if P is None:
-            (cx, cy), r = segs[0].center, segs[0].radius
-            areas.append(math.pi * r * r)
-            boxes.append((cx - r, cy - r, cx + r, cy + r))
-            real.append(j)
-            continue
-        areas.append(abs(float(np.dot(P[:, 0], np.roll(P[:, 1], -1)) -
-                               np.dot(P[:, 1], np.roll(P[:, 0], -1)))) / 2
-                     if len(P) >= 3 else 0.0)
-        if len(P) >= 3:
-            boxes.append((P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max()))
-            real.append(j)
-    probes = np.array([_probe(segs) for segs in loops], dtype=float).reshape(-1, 2)
-    out: list[list[int]] = [[] for _ in loops]
-    if deadline is not None:
-        deadline.check("finding the holes of the drawing")
-    pairs = box_pairs_between(np.hstack([probes, probes]), np.array(boxes, dtype=float))
-    A = np.asarray(areas)
-    i_all, j_all = pairs[:, 0], np.asarray(real, dtype=np.intp)[pairs[:, 1]]
-    keep = (i_all != j_all) & (A[j_all] > A[i_all])
-    i_all, j_all = i_all[keep], j_all[keep]
-    order = np.argsort(j_all, kind="stable")          # each container's probes at once
-    i_all, j_all = i_all[order], j_all[order]
-    starts = np.flatnonzero(np.r_[True, j_all[1:] != j_all[:-1]]) if len(j_all) else []
-    for a, b in zip(starts, list(starts[1:]) + [len(j_all)]):
-        if deadline is not None:
-            deadline.check("finding the holes of the drawing")
-        j, ii = int(j_all[a]), i_all[a:b]
-        x, y = probes[ii, 0], probes[ii, 1]
-        if polys[j] is None:
-            (cx, cy), r = loops[j][0].center, loops[j][0].radius
-            hit = np.hypot(x - cx, y - cy) < r
-        else:
-            hit = _inside_many(x, y, polys[j])
-        for i in ii[hit].tolist():
-            out[i].append(j)
-    for js in out:
-        js.sort()
-    # a loop drawn across the edge of a larger part: its notch whatever its probe point
-    big = NOTCH_AREA * max(areas, default=0.0)
-    small = [k for k, i in enumerate(real) if polys[i] is not None and areas[i] <= big]
-    across: dict = {}
-    for a, b in (box_pairs_between(np.array(boxes, dtype=float)[small],
-                                   np.array(boxes, dtype=float)).tolist() if small else ()):
-        i, j = real[small[a]], real[b]
-        if i != j and areas[i] <= NOTCH_AREA * areas[j] and j not in out[i]:
-            across.setdefault(i, []).append(j)
-    if across:
-        _notches(out, across, polys, loops, areas, deadline)
-    return out
 
 
 def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None:
@@ -1173,17 +1092,6 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list,
     return items
 
 
-def _outer_count(d: Drawing, inside: list | None, deadline=None) -> int:
-    """How many of ``d``'s loops lie inside no other (its separate parts); ``inside``:
-    :func:`_containers` of :func:`_loops_of` when already found."""
-    loops = _loops_of(d)
-    if len(loops) < 2:
-        return len(loops)
-    if inside is None:
-        inside = _containers(loops, deadline)
-    return sum(1 for c in inside if not c)
-
-
 def _say_inner(notes: list, source: str, inner: list, name: str) -> None:
     """The ``W0130`` of the pieces ``inner`` of holes drawn overlapping that lie inside
     another hole of their part (:func:`~.hole_cuts.inner_rests`), written as the sheet-level
@@ -1196,22 +1104,6 @@ def _say_inner(notes: list, source: str, inner: list, name: str) -> None:
                                f"keeps the one opening, and {'they are' if n != 1 else 'it is'}"
                                f" written as the sheet-level cut `{name}` (the laser cuts "
                                f"along {'them' if n != 1 else 'it'})"))
-
-
-def _loops_of(d: Drawing) -> list:
-    """``d``'s closed loops (lists of segments): its outlines, then its circles, then its
-    whole ellipses (:func:`_whole_ellipse`)."""
-    return [o.segments for o in d.outlines] + [[c] for c in d.circles] + \
-        [[_whole_ellipse(el)] for el in d.ellipses]
-
-
-def _whole_ellipse(el: tuple) -> EllipticArc:
-    """The whole ellipse ``(cx, cy, rx, ry, rotation)`` of a :class:`Drawing` (mm, radians)
-    as a loop's one segment, its numbers as the drawing gives them (written back as they
-    are: :func:`_loop`)."""
-    from ..geometry.ellipse import EllipseCurve
-    cx, cy, rx, ry, rot = el
-    return EllipticArc(EllipseCurve((cx, cy), rx, ry, rot), 0.0, 2 * math.pi)
 
 
 def _overlapping_parts(d: Drawing, inside: list, deadline=None) -> tuple[int, int]:
