@@ -52,9 +52,10 @@ from .infer_shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, cir
 from .infer_text import along_texts, stroke_texts
 from .infer_layers import _hole_layers
 from .infer_mirror import mirrored_pair, pair_items, write_pair
-from .program import (UNIT, _Names, _Writer, _containers, _cut_notes, _emit_holds, _holds,
+from .program import (_Names, _Writer, _containers, _cut_notes, _emit_holds, _holds,
                       _ident, _layer_items, _length, _num, _pt, _string, _whole_ellipse)
 from .model import Drawing, Note
+from .units import UNIT, in_unit
 
 
 # ------------------------------------------------------------------ the writer
@@ -972,7 +973,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
     params = _Params()
     stats = _Stats()
     layers, moved = _hole_layers(layers, deadline)
-    items = _layer_items(layers, parts, deadline, source, w.notes, w.overlaps)
+    items = in_unit(_layer_items(layers, parts, deadline, source, w.notes, w.overlaps))
     items = _copies(items, deadline)
     items = _named_parts(pair_items(items, deadline))
     solids = sum(1 for it in items if it[0] == "solid")

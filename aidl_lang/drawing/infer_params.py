@@ -37,7 +37,7 @@ class _Params:
         over moves its last copy by at most ROUND_TOL)."""
         nm = _ident(name, self.used)
         if unit == "mm":            # a length: in the unit the program is written in
-            from .program import UNIT
+            from .units import UNIT
             unit = UNIT.get()
         u = f" {unit}" if unit else ""
         v = _num(value, ROUND_TOL / max(times, 1))

@@ -18,7 +18,6 @@ with the file's numbers (:mod:`.units`).
 """
 from __future__ import annotations
 
-import contextvars
 import math
 import re
 
@@ -27,14 +26,11 @@ from ..geometry.drawing2d import _inside, _inside_many
 from .containment import _containers, _loops_of, _outer_count, _probe, _whole_ellipse
 from .hole_cuts import cut_at_crossings, inner_rests, loop_key, polygons_overlap, runs_of
 from .model import Drawing, Note, Outline, Path
+from .units import UNIT, in_unit
 from .notches import EDGE_ACROSS, _polygons_touch
 
 
 SNAP = 1e-12    # mm: a coordinate within this of a shorter decimal is written as that decimal
-
-# the unit the program is written in (`units in` for a drawing read in inches: its numbers
-# are the file's, units.scaled); set by import_drawing around its writer
-UNIT: "contextvars.ContextVar[str]" = contextvars.ContextVar("aidl_import_unit", default="mm")
 
 
 def _num(v: float, snap: float = SNAP) -> str:
@@ -810,7 +806,7 @@ def to_program(layers: list[tuple[str, Drawing]], source: str, parts: bool = Fal
     for line in moved:
         w.emit(0, f"# {line}")
     w.emit(0, f"units {UNIT.get()}")
-    items = _layer_items(layers, parts, deadline, source, w.notes, w.overlaps)
+    items = in_unit(_layer_items(layers, parts, deadline, source, w.notes, w.overlaps))
     multi = len(items) > 1 or any(kind == "cut" for kind, _, _ in items)
     if multi:
         w.emit(0, "assembly " + ("sheet" if parts else "drawing_import") + " {")
@@ -831,7 +827,8 @@ def _cut_notes(w: _Writer, source: str) -> None:
     if w.cut_paths:
         n = w.cut_paths
         w.notes.append(Note("W0130", f"{n} open path{'s' if n != 1 else ''} of `{source}` "
-                                     f"({w.cut_length:.6g} mm) on a cut role written as "
+                                     f"({w.cut_length:.6g} {UNIT.get()}) on a cut role "
+                                     f"written as "
                                      f"through-cuts (`cut cuts {{ ... }}` in {'its' if n == 1 else 'their'} "
                                      f"part): the laser cuts along {'it' if n == 1 else 'them'}, "
                                      f"one pass each", "give engrave= (by layer or colour) for "
@@ -957,12 +954,11 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
                                                 f"curves: the program would have more than the "
                                                 f"{budget.geometry} geometry objects a program may "
                                                 f"build", too_big)
-            from .units import say_inches, scaled, written_unit
+            from .units import say_inches, written_unit
             say_inches(notes, [d for _, d in read])
-            unit_word, per = written_unit([d for _, d in read])
-            if per != 1.0:      # an inch drawing written in inches: the file's own numbers
-                read = [(ly, scaled(d, 1 / per)) for ly, d in read]
-            token = UNIT.set(unit_word)
+            # an inch drawing written in inches: its layers, once made parts (in mm, the
+            # tolerances of chaining and cuts), scaled back to the file's numbers (in_unit)
+            token = UNIT.set(written_unit([d for _, d in read])[0])
             if not read:    # every layer empty: the whole drawing's E0132, as Drawing2D gives it
                 read_drawing(data, name, color=color, ident=ident, unit=unit, keep_text=True,
                              close_tolerance=close_tolerance, cut=cut, engrave=engrave,

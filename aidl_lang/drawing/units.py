@@ -2,10 +2,12 @@
 
 In: :class:`~.model.Drawing` s read in millimetres.  Out: whether a drawing that gives no
 unit has the numbers of an inch drawing (:func:`fits_inches`, said in its ``W0130`` by
-:func:`say_inches`), and a drawing scaled into the unit its program is written in
-(:func:`scaled`: ``units in`` with the file's inch numbers, not their millimetres)."""
+:func:`say_inches`), the unit its program is written in (:func:`written_unit`), and its
+structures scaled into that unit (:func:`scaled`, :func:`in_unit`: ``units in`` with the
+file's inch numbers, not their millimetres) once they are made in mm."""
 from __future__ import annotations
 
+import contextvars
 from dataclasses import replace
 
 from ..geometry.curves import Arc, Circle, EllipticArc, Line, Spline
@@ -13,6 +15,9 @@ from ..geometry.ellipse import EllipseCurve
 from ..geometry.spline import CubicSpline
 from .model import Drawing, Note, Outline, Path
 
+# the unit the program is written in (`units in` for a drawing read in inches: its numbers
+# are the file's, in_unit); set by program.import_drawing around its writer
+UNIT: "contextvars.ContextVar[str]" = contextvars.ContextVar("aidl_import_unit", default="mm")
 INCH_BOX = 50.0         # a drawing whose larger side is above this many units is no inch one
 NO_UNIT = "gives no unit ("     # the reader's W0130 of a drawing without a unit (dxf._dxf_unit)
 
@@ -129,3 +134,14 @@ def written_unit(drawings) -> tuple[str, float]:
     if units and units <= {"in", "inch"}:
         return "in", 25.4
     return "mm", 1.0
+
+
+def in_unit(items: list) -> list:
+    """The structures ``(kind, name, drawing, ...)`` a writer makes of a drawing's layers
+    (in mm), each drawing :func:`scaled` into the unit the program is written in
+    (:data:`UNIT`: ``in``, 1 / 25.4; ``mm``: as they are)."""
+    from .model import UNIT_MM
+    per = UNIT_MM[UNIT.get()]
+    if per == 1.0:
+        return items
+    return [(kind, name, scaled(d, 1 / per), *rest) for kind, name, d, *rest in items]
