@@ -1,7 +1,8 @@
 """Which loops of a drawing lie inside which (``aidl import``, plain and ``--infer``): in,
 loops as lists of segments (mm); out, for each loop the loops it lies inside
 (:func:`_containers`: a grid of boxes, so O(n log n) in the loops), and the loops of a
-:class:`~.model.Drawing` (:func:`_loops_of`) with how many are parts (:func:`_outer_count`).
+:class:`~.model.Drawing` (:func:`_loops_of`) with how many are parts (:func:`_outer_count`),
+which overlap (:func:`_overlapping_parts`) and whether they are apart (:func:`_apart`).
 Used by :mod:`.program` (holes, islands, parts) and :mod:`.infer_layers` (layers of holes)."""
 from __future__ import annotations
 
@@ -10,7 +11,8 @@ import math
 from ..geometry.curves import Arc, Circle, EllipticArc, Loop, Spline
 from ..geometry.drawing2d import _inside_many
 from .model import Drawing
-from .notches import NOTCH_AREA, _notches
+from .hole_cuts import polygons_overlap
+from .notches import NOTCH_AREA, _notches, _polygons_touch
 
 
 def _probe(segs) -> tuple[float, float]:
@@ -120,3 +122,51 @@ def _whole_ellipse(el: tuple) -> EllipticArc:
     from ..geometry.ellipse import EllipseCurve
     cx, cy, rx, ry, rot = el
     return EllipticArc(EllipseCurve((cx, cy), rx, ry, rot), 0.0, 2 * math.pi)
+
+
+MAX_APART = 500     # separate parts on one layer written as a solid each (more: one solid)
+
+
+def _apart(d: Drawing, inside: list | None, deadline=None) -> bool:
+    """Whether ``d`` (a layer without a cut role) is separate parts, each written as a solid
+    of its own: 2 to :data:`MAX_APART` loops inside no other, no two of which overlap or
+    touch along an edge (:func:`_overlapping_parts`: frames drawn across one another, as
+    ezdxf's text samples have, stay one solid, as the file draws them)."""
+    if len(d.outlines) + len(d.circles) + len(d.ellipses) < 2:
+        return False
+    if inside is None:
+        inside = _containers(_loops_of(d), deadline)
+    if not 2 <= _outer_count(d, inside) <= MAX_APART:
+        return False
+    return _overlapping_parts(d, inside, deadline) == (0, 0)
+
+
+def _overlapping_parts(d: Drawing, inside: list, deadline=None) -> tuple[int, int]:
+    """How many pairs of ``d``'s outer loops (those inside no other loop: its parts) overlap
+    (share an area, on the loops' sampled polygons), and how many others touch along an
+    edge (:func:`_polygons_touch`): parts drawn overlapping on a laser sheet (Boxes.py's
+    UnevenHeightBox walls) or sharing an edge (WallChiselHolder's walls), which one solid
+    would fuse, losing the cut lines inside the union.  ``inside``: :func:`_containers` of
+    :func:`_loops_of`."""
+    import numpy as np
+    loops = _loops_of(d)
+    if len(loops) < 2:
+        return 0, 0
+    outer = [i for i, c in enumerate(inside) if not c]
+    polys = {i: np.asarray(Loop(list(loops[i])).points(), dtype=float) for i in outer}
+    box = {i: (P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max())
+           for i, P in polys.items() if len(P) >= 3}
+    keys = sorted(box)
+    pairs = touch = 0
+    for a_i, i in enumerate(keys):
+        if deadline is not None:
+            deadline.check("finding the parts that overlap")
+        for j in keys[a_i + 1:]:
+            a, b = box[i], box[j]
+            if a[0] > b[2] or b[0] > a[2] or a[1] > b[3] or b[1] > a[3]:
+                continue
+            if polygons_overlap(polys[i], polys[j]):
+                pairs += 1
+            elif _polygons_touch(polys[i], polys[j]):
+                touch += 1
+    return pairs, touch

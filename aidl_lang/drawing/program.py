@@ -23,11 +23,12 @@ import re
 
 from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from ..geometry.drawing2d import _inside, _inside_many
-from .containment import _containers, _loops_of, _outer_count, _probe, _whole_ellipse
-from .hole_cuts import cut_at_crossings, inner_rests, loop_key, polygons_overlap, runs_of
+from .containment import (_apart, _containers, _loops_of, _overlapping_parts, _probe,
+                          _whole_ellipse)
+from .hole_cuts import cut_at_crossings, inner_rests, loop_key, runs_of
 from .model import Drawing, Note, Outline, Path
 from .units import UNIT, in_unit
-from .notches import EDGE_ACROSS, _polygons_touch
+from .notches import EDGE_ACROSS
 
 
 SNAP = 1e-12    # mm: a coordinate within this of a shorter decimal is written as that decimal
@@ -1013,7 +1014,7 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list,
         # separate parts on one layer (two brackets, a plate and its washers): a solid of
         # each, as `--parts` writes them (one solid of both falls apart: W0504)
         apart = kind == "solid" and not (parts or crossed or touched) and \
-            _outer_count(d, inside, deadline) > 1
+            _apart(d, inside, deadline)
         if crossed:
             notes.append(Note("W0130", f"{crossed} pair{'s' if crossed != 1 else ''} of parts "
                                        f"of `{source}` on a cut role overlap: each part is "
@@ -1100,37 +1101,6 @@ def _say_inner(notes: list, source: str, inner: list, name: str) -> None:
                                f"keeps the one opening, and {'they are' if n != 1 else 'it is'}"
                                f" written as the sheet-level cut `{name}` (the laser cuts "
                                f"along {'them' if n != 1 else 'it'})"))
-
-
-def _overlapping_parts(d: Drawing, inside: list, deadline=None) -> tuple[int, int]:
-    """How many pairs of ``d``'s outer loops (those inside no other loop: its parts) overlap
-    (share an area, on the loops' sampled polygons), and how many others touch along an
-    edge (:func:`_polygons_touch`): parts drawn overlapping on a laser sheet (Boxes.py's
-    UnevenHeightBox walls) or sharing an edge (WallChiselHolder's walls), which one solid
-    would fuse, losing the cut lines inside the union.  ``inside``: :func:`_containers` of
-    :func:`_loops_of`."""
-    import numpy as np
-    loops = _loops_of(d)
-    if len(loops) < 2:
-        return 0, 0
-    outer = [i for i, c in enumerate(inside) if not c]
-    polys = {i: np.asarray(Loop(list(loops[i])).points(), dtype=float) for i in outer}
-    box = {i: (P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max())
-           for i, P in polys.items() if len(P) >= 3}
-    keys = sorted(box)
-    pairs = touch = 0
-    for a_i, i in enumerate(keys):
-        if deadline is not None:
-            deadline.check("finding the parts that overlap")
-        for j in keys[a_i + 1:]:
-            a, b = box[i], box[j]
-            if a[0] > b[2] or b[0] > a[2] or a[1] > b[3] or b[1] > a[3]:
-                continue
-            if polygons_overlap(polys[i], polys[j]):
-                pairs += 1
-            elif _polygons_touch(polys[i], polys[j]):
-                touch += 1
-    return pairs, touch
 
 
 def _outside_remainders(d: Drawing, inside: list, deadline=None) -> list[Path]:
