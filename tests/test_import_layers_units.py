@@ -347,3 +347,28 @@ def test_every_fresh_import_is_clean():
                 bad = [w for w in warn if w.startswith(("W04", "W0504"))]
                 assert not bad and free["dof"] == 0, (seed, infer, bad, free["text"])
     law()
+
+
+def test_parts_apart_are_solids_and_overlapping_frames_stay_one(tmp_path):
+    """Two brackets and a washer apart on one layer are three solids (one solid of them
+    fell apart: W0504); frames drawn across one another (ezdxf's text samples) stay one
+    solid, as before, so no new W0511 between parts that overlap."""
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    m = doc.modelspace()
+    m.add_lwpolyline([(0, 0), (40, 0), (40, 5), (5, 5), (5, 30), (0, 30)], close=True)
+    m.add_lwpolyline([(60, 0), (100, 0), (100, 30), (95, 30), (95, 5), (60, 5)], close=True)
+    m.add_circle((120, 10), 8)
+    doc.saveas(tmp_path / "apart.dxf")
+    text, _ = import_drawing((tmp_path / "apart.dxf").read_bytes(), "apart.dxf")
+    assert text.count("solid ") == 3, text
+    warn, free = _fresh(text, tmp_path)
+    assert not warn and free["dof"] == 0, warn
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    m = doc.modelspace()
+    m.add_lwpolyline([(0, 0), (40, 0), (40, 20), (0, 20)], close=True)
+    m.add_lwpolyline([(30, 10), (70, 10), (70, 30), (30, 30)], close=True)
+    doc.saveas(tmp_path / "cross.dxf")
+    text, _ = import_drawing((tmp_path / "cross.dxf").read_bytes(), "cross.dxf")
+    assert text.count("solid ") == 1, text
