@@ -922,3 +922,20 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
 def open_gaps(d: Drawing) -> list[tuple[float, tuple[float, float]]]:
     """``(gap in mm, where)`` of each open path (its end to its start)."""
     return [(math.dist(p.start, p.end), p.end) for p in d.paths]
+
+
+CIRCULAR_TOL = 1e-7    # mm: the radii of an elliptical arc this close: a circular Arc
+
+
+def circular(segs: list) -> list:
+    """``segs`` with each elliptical arc whose two radii are equal (an SVG ``A`` or ``rect``
+    corner) as the circular :class:`Arc` it is: the same points (its parameter is its angle
+    less the rotation), the radii equal within :data:`CIRCULAR_TOL`."""
+    out = []
+    for g in segs:
+        if isinstance(g, EllipticArc) and not g.whole and \
+                abs(g.curve.rx - g.curve.ry) <= CIRCULAR_TOL:
+            e = g.curve
+            g = Arc(tuple(e.center), e.rx, g.start_param + e.rotation, g.sweep)
+        out.append(g)
+    return out

@@ -8,8 +8,7 @@ import math
 
 from ...geometry.curves import Line
 from ..model import Drawing, Note
-from ..write.program import _Writer, _num, _pt, _string
-from .holds import _emit_holds, _holds
+from ..write.program import _Writer, _emit_holds, _holds, _num, _pt, _string
 from .params import _center, _ctor, _deg, _plus, _r
 from .patterns import _periodic, _tick_families
 from .shapes import ROUND_TOL, circular, recognise
@@ -144,4 +143,5 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats, place=_pt) -> None:
             k += 1
             w.emit(depth, f"t{k} = Text({_string(text)}, position={place((x, y))}, "
                           f"size={_num(h)}, anchor=\"{anchor}\", valign=\"{valign}\"{rot_txt})")
+            held.append(f"t{k}")
     _emit_holds(w, depth, held, "g")

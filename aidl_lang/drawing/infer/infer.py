@@ -53,11 +53,11 @@ from .anchors import _Anchored
 from .engraving import _engraving
 from .features import edge_notches
 from .makers import SINGLE_PARAMS, _MakerFeatures
-from .holds import _emit_holds, _holds
-from .layers import _hole_layers
+from ..chains.layers import _hole_layers
 from .mirror import mirrored_pair, pair_items, write_pair
-from ..write.program import (_Names, _Writer, _containers, _cut_notes, _ident, _layer_items,
-                             _length, _num, _place, _pt, _whole_ellipse)
+from ..write.program import (_Names, _Writer, _containers, _cut_notes, _emit_holds, _holds,
+                             _ident, _layer_items, _length, _num, _place, _pt, _whole_ellipse)
+from ..write.units import UNIT, in_unit
 from ..model import Drawing, Note, _segs_box
 
 
@@ -895,7 +895,8 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
         w.crossed += len(drawn)
     eng = Drawing(paths=drawn, texts=list(d.texts), engrave=d.engrave)
     place = _label_place(part, holes)
-    if eng.paths or eng.texts or (eng.engrave is not None and not eng.engrave.empty):
+    if eng.paths or eng.texts or (eng.engrave is not None and
+                                  (not eng.engrave.empty or eng.engrave.texts)):
         w.emit(depth + 1, "drawing engraving {")
         _engraving(w, depth + 2, eng, stats, place)
         w.emit(depth + 1, "}")
@@ -955,9 +956,9 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
     params = _Params()
     stats = _Stats()
     layers, moved = _hole_layers(layers, deadline)
-    items = _layer_items(layers, parts, deadline, source, w.notes, w.overlaps)
+    items = in_unit(_layer_items(layers, parts, deadline, source, w.notes, w.overlaps))
     items = _copies(items, deadline)
-    items = _named_parts(pair_items(items, deadline) if parts else items)
+    items = _named_parts(pair_items(items, deadline))
     solids = sum(1 for it in items if it[0] == "solid")
     multi = len(items) > 1 or any(len(it) > 3 for it in items)
     depth = 1 if multi else 0
@@ -1014,7 +1015,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
         w.emit(0, "}")
     _cut_notes(w, source)
     head = [f"# imported from {source} by `aidl import --infer`: edit freely"]
-    head += ["# " + ln for ln in _summary(stats) + moved] + ["units mm"]
+    head += ["# " + ln for ln in _summary(stats) + moved] + [f"units {UNIT.get()}"]
     text = "\n".join(head + params.lines + w.lines) + "\n"
     return text, w.notes
 
@@ -1098,7 +1099,8 @@ def _summary(st: _Stats) -> list[str]:
            f"{sum(st.kinds.values())} shapes ({shapes or 'none'})"]
     if pats:
         out.append(f"patterns: {pats}")
-    out.append(f"equal within {EQUAL_TOL:g} mm, numbers rounded within {ROUND_TOL:g} mm; "
+    u = UNIT.get()
+    out.append(f"equal within {EQUAL_TOL:g} {u}, numbers rounded within {ROUND_TOL:g} {u}; "
                f"the rest stays exact Line/Arc chains")
     return out
 

@@ -147,6 +147,9 @@ def pair_items(items: list, deadline=None) -> list:
     parts, ``--parts``) made one solid of both, which is then written as the part and
     ``Mirrored`` of it."""
     import os
+
+    from ..write.program import _ident
+    used = {it[1] for it in items}
     out, i = [], 0
     while i < len(items):
         a = items[i]
@@ -160,7 +163,9 @@ def pair_items(items: list, deadline=None) -> list:
                     b[2].ellipses or a[2].engrave is not None or b[2].engrave is not None) \
                     and mirrored_pair(both, deadline) is not None:
                 name = os.path.commonprefix([a[1], b[1]]).rstrip("_0123456789")
-                out.append(("solid", name if len(name) >= 2 and name != "l" else "part", both))
+                used -= {a[1], b[1]}
+                name = _ident(name if len(name) >= 2 and name != "l" else "part", used)
+                out.append(("solid", name, both))
                 i += 2
                 continue
         out.append(a)

@@ -36,6 +36,9 @@ class _Params:
         """A param of ``value``, rounded within ROUND_TOL / ``times`` (a pitch taken ``times``
         over moves its last copy by at most ROUND_TOL)."""
         nm = _ident(name, self.used)
+        if unit == "mm":            # a length: in the unit the program is written in
+            from ..write.units import UNIT
+            unit = UNIT.get()
         u = f" {unit}" if unit else ""
         v = _num(value, ROUND_TOL / max(times, 1))
         self.lines.append(f"param {nm} = {v}{u}" + (f"  # {comment}" if comment else ""))

@@ -21,6 +21,7 @@ import math
 from dataclasses import dataclass, field
 
 from ...geometry.curves import Arc, Circle, Line
+from ..chains.chain import circular  # noqa: F401  (the loops' own form, as the plain import reads them)
 
 EQUAL_TOL = 1e-7    # mm: two points, radii or lengths this close are the same
 ROUND_TOL = 1e-9    # mm: a number within this of a shorter decimal is written as that decimal
@@ -297,21 +298,6 @@ def _as_sector(segs):
         args["inner_radius"] = inner.radius
     return Shape("Sector", c, args, ("Sector", R, a0, sw, inner.radius if inner else 0),
                  len(segs))
-
-
-def circular(segs: list) -> list:
-    """``segs`` with each elliptical arc whose two radii are equal (an SVG ``A`` or ``rect``
-    corner) as the circular :class:`Arc` it is: the same points (its parameter is its angle
-    less the rotation)."""
-    from ...geometry.curves import EllipticArc
-    out = []
-    for g in segs:
-        if isinstance(g, EllipticArc) and not g.whole and \
-                abs(g.curve.rx - g.curve.ry) <= EQUAL_TOL:
-            e = g.curve
-            g = Arc(tuple(e.center), e.rx, g.start_param + e.rotation, g.sweep)
-        out.append(g)
-    return out
 
 
 def recognise(segs) -> Shape | None:

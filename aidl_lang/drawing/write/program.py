@@ -9,7 +9,12 @@ and open paths are drawn in a ``drawing`` child (engraving).  A layer whose name
 with Python's shortest round-trip ``repr``, so the program renders back to the same curves
 (1e-9 mm).  A spline piece that is the interpolating cubic spline through its span ends is
 written as a ``Spline`` through them; any other (an SVG's or DXF's free cubics, a Spline
-with ``corners=``) as a ``Bezier`` chain of its own control points.
+with ``corners=``) as a ``Bezier`` chain of its own control points.  Every piece, hole
+curve, text, path and part is held where the file puts it (:func:`_holds`: ``aidl check``
+says ``fully constrained``, with no ``W0401``); separate parts on one layer are a solid each;
+loops on a layer named for holes that lie in another layer's part are its holes
+(:func:`~.infer_layers._hole_layers`); a drawing read in inches is written in ``units in``
+with the file's numbers (:mod:`.units`).
 """
 from __future__ import annotations
 
@@ -18,9 +23,12 @@ import re
 
 from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from ...geometry.drawing2d import _inside, _inside_many
-from ..chains.hole_cuts import cut_at_crossings, inner_rests, loop_key, polygons_overlap, runs_of
+from ..chains.containment import (_apart, _containers, _loops_of, _overlapping_parts, _probe,
+                                  _whole_ellipse)
+from ..chains.hole_cuts import cut_at_crossings, inner_rests, loop_key, runs_of
+from ..chains.notches import EDGE_ACROSS
 from ..model import Drawing, Note, Outline, Path
-from ..chains.notches import EDGE_ACROSS, NOTCH_AREA, _notches, _polygons_touch
+from .units import UNIT, in_unit
 
 
 SNAP = 1e-12    # mm: a coordinate within this of a shorter decimal is written as that decimal
@@ -270,86 +278,72 @@ class _Writer:
         return True
 
 
-def _probe(segs) -> tuple[float, float]:
-    s = segs[0]
-    if isinstance(s, Circle):
-        return (s.center[0] + s.radius, s.center[1])
-    if isinstance(s, Arc):
-        return s.at(s.start_angle + s.sweep / 2)
-    if isinstance(s, Spline):
-        # a point of the piece itself (a piece of a curve split at a crossing: the curve's
-        # own middle may lie on the other side of the crossing, in another loop)
-        return s.spans[0][3] if len(s.spans) > 1 else s.curve.at((s.u0 + s.u1) / 2)
-    return ((s.start[0] + s.end[0]) / 2, (s.start[1] + s.end[1]) / 2)
+def _holds(segs: list, prefix: str, closed: bool = True) -> list[str]:
+    """What to hold so that a chain written by :meth:`~.program._Writer.chain` with
+    ``prefix`` stays where the file put it, and nothing twice (no ``W0401``): an arc between
+    two lines ``Fixed`` whole (its ends with it); every other join of two pieces ``Fixed``
+    (a point); and an arc that meets another arc by its radius (``NAME.radius == r``: its
+    centre is then the one point at that distance from both held ends).  Returns the things
+    to fix and those equations (each with `` == ``).  Only chains of lines and arcs, or one
+    closed spline (held whole); a chain of splines and other pieces stays free as ``aidl
+    import`` writes it."""
+    if not all(isinstance(g, (Line, Arc)) for g in segs):
+        one = _bezier_runs(list(segs))
+        if closed and len(one) == 1 and isinstance(one[0], Spline):
+            return [f"{prefix}0"]       # one closed Bezier or Spline: rigid, held whole
+        return []
+    n = len(segs)
 
+    def piece(i):
+        return segs[i % n] if closed or 0 <= i < n else None
 
-def _containers(loops: list, deadline=None) -> list[list[int]]:
-    """For each loop (a list of segments) the indices of the other loops it lies inside (its
-    probe point inside their polygon, and their area larger than its own: two parts drawn
-    overlapping, their joint's tabs interlocked, each have points inside the other, and
-    neither is the other's hole): each probe is tested only against the loops whose box
-    holds it, found through a grid (:func:`~..output.part.nearby.box_pairs_between`), so a
-    sheet of 20,000 holes takes a moment (each probe against every box: 4.3 s).  A loop
-    drawn across the edge of a larger part or island (:func:`~.notches._notches`) is that
-    loop's hole (its notch) whatever its probe point."""
-    import numpy as np
+    def arc_alone(i):
+        return isinstance(piece(i), Arc) and not isinstance(piece(i - 1), Arc) and \
+            not isinstance(piece(i + 1), Arc)
 
-    from ...output.part.nearby import box_pairs_between
-    # a whole circle is measured as itself (its area, a distance), not as its polygon
-    polys = [None if len(segs) == 1 and isinstance(segs[0], Circle) else
-             np.asarray(Loop(list(segs)).points(), dtype=float) for segs in loops]
-    areas, boxes, real = [], [], []
-    for j, (segs, P) in enumerate(zip(loops, polys)):
-        if P is None:
-            (cx, cy), r = segs[0].center, segs[0].radius
-            areas.append(math.pi * r * r)
-            boxes.append((cx - r, cy - r, cx + r, cy + r))
-            real.append(j)
-            continue
-        areas.append(abs(float(np.dot(P[:, 0], np.roll(P[:, 1], -1)) -
-                               np.dot(P[:, 1], np.roll(P[:, 0], -1)))) / 2
-                     if len(P) >= 3 else 0.0)
-        if len(P) >= 3:
-            boxes.append((P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max()))
-            real.append(j)
-    probes = np.array([_probe(segs) for segs in loops], dtype=float).reshape(-1, 2)
-    out: list[list[int]] = [[] for _ in loops]
-    if deadline is not None:
-        deadline.check("finding the holes of the drawing")
-    pairs = box_pairs_between(np.hstack([probes, probes]), np.array(boxes, dtype=float))
-    A = np.asarray(areas)
-    i_all, j_all = pairs[:, 0], np.asarray(real, dtype=np.intp)[pairs[:, 1]]
-    keep = (i_all != j_all) & (A[j_all] > A[i_all])
-    i_all, j_all = i_all[keep], j_all[keep]
-    order = np.argsort(j_all, kind="stable")          # each container's probes at once
-    i_all, j_all = i_all[order], j_all[order]
-    starts = np.flatnonzero(np.r_[True, j_all[1:] != j_all[:-1]]) if len(j_all) else []
-    for a, b in zip(starts, list(starts[1:]) + [len(j_all)]):
-        if deadline is not None:
-            deadline.check("finding the holes of the drawing")
-        j, ii = int(j_all[a]), i_all[a:b]
-        x, y = probes[ii, 0], probes[ii, 1]
-        if polys[j] is None:
-            (cx, cy), r = loops[j][0].center, loops[j][0].radius
-            hit = np.hypot(x - cx, y - cy) < r
-        else:
-            hit = _inside_many(x, y, polys[j])
-        for i in ii[hit].tolist():
-            out[i].append(j)
-    for js in out:
-        js.sort()
-    # a loop drawn across the edge of a larger part: its notch whatever its probe point
-    big = NOTCH_AREA * max(areas, default=0.0)
-    small = [k for k, i in enumerate(real) if polys[i] is not None and areas[i] <= big]
-    across: dict = {}
-    for a, b in (box_pairs_between(np.array(boxes, dtype=float)[small],
-                                   np.array(boxes, dtype=float)).tolist() if small else ()):
-        i, j = real[small[a]], real[b]
-        if i != j and areas[i] <= NOTCH_AREA * areas[j] and j not in out[i]:
-            across.setdefault(i, []).append(j)
-    if across:
-        _notches(out, across, polys, loops, areas, deadline)
+    def start(i):       # the expression of piece i's start as written
+        g = segs[i]
+        return f"{prefix}{i}.end" if isinstance(g, Arc) and g.sweep < 0 else f"{prefix}{i}.start"
+
+    def end(i):
+        g = segs[i]
+        return f"{prefix}{i}.start" if isinstance(g, Arc) and g.sweep < 0 else f"{prefix}{i}.end"
+    out = [f"{prefix}{i}" for i in range(n) if arc_alone(i)]
+    for i in range(n):                      # the join at the start of piece i
+        if not (arc_alone(i) or (piece(i - 1) is not None and arc_alone(i - 1))):
+            out.append(start(i))
+    if not closed and not arc_alone(n - 1):
+        out.append(end(n - 1))
+    out += [_arc_hold(f"{prefix}{i}", g) for i, g in enumerate(segs)
+            if isinstance(g, Arc) and not arc_alone(i)]
     return out
+
+
+def _arc_hold(nm: str, g: Arc) -> str:
+    """The equation that holds arc ``nm`` (``g``) once both its ends are held: its centre
+    may only slide along the bisector of its chord, so one number pins it.  Its radius
+    (``nm.radius == 12.5``) does, but not near a half turn (a slot's end cap): there the
+    radius is least at the centre drawn, so the equation pins nothing to first order (the
+    solver's rank: ``W0401`` and a free degree left); then the centre's coordinate most
+    along the bisector (``nm.center.x == 36``) holds it."""
+    if abs(math.cos(g.sweep / 2)) >= 0.5:
+        return f"{nm}.radius == {_num(g.radius)}"
+    (x0, y0), (x1, y1) = g.start, g.end
+    axis = 0 if abs(y1 - y0) >= abs(x1 - x0) else 1     # the bisector is across the chord
+    return f"{nm}.center.{'xy'[axis]} == {_num(g.center[axis])}"
+
+
+def _emit_holds(w: _Writer, depth: int, holds: list[str], var: str = "x") -> None:
+    fixed = [h for h in holds if " == " not in h]
+    if len(fixed) == 1:
+        w.emit(depth, f"Fixed({fixed[0]})")
+    for k in range(0, len(fixed) if len(fixed) > 1 else 0, COPIES_PER_LOOP):
+        run = fixed[k:k + COPIES_PER_LOOP]      # a loop holds at most 10 000 items (E0301)
+        w.emit(depth, f"for {var} in [{', '.join(run)}] {{ Fixed({var}) }}" if len(run) > 1
+               else f"Fixed({run[0]})")
+    for h in holds:
+        if " == " in h:
+            w.emit(depth, h)
 
 
 def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None:
@@ -410,17 +404,20 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
         _texts(w, inner, d.texts, "t")
         if kind != "drawing":
             w.emit(depth + 1, "}")
+            w.emit(depth + 1, "Fixed(labels)")
     # a cut role's open paths: through-cuts, never engraved; a loop that crosses itself (a
     # closed curve in a `cut` is a hole's edge, which must not) stays an engraving, counted
     cut_paths = [p for p in d.paths if p.crossing is None] \
         if kind != "drawing" and d.paths_cut else []
-    drawn = [p for p in d.paths if not any(p is q for q in cut_paths)]
+    cut_ids = {id(p) for p in cut_paths}
+    drawn = [p for p in d.paths if id(p) not in cut_ids]
     if cut_paths:
         w.emit(depth + 1, "cut cuts {")
         w.cut_paths += len(cut_paths)
         w.cut_length += sum(_length(p.segments) for p in cut_paths)
         _paths(w, depth + 2, cut_paths, name)
         w.emit(depth + 1, "}")
+        w.emit(depth + 1, "Fixed(cuts)")
     if d.paths_cut and kind != "drawing":
         w.crossed += len(drawn)
     if drawn:
@@ -429,6 +426,7 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
         _paths(w, depth + 1 if kind == "drawing" else depth + 2, drawn, name)
         if kind != "drawing":
             w.emit(depth + 1, "}")
+            w.emit(depth + 1, "Fixed(paths)")
     e = getattr(d, "engrave", None)
     if e is not None and (not e.empty or e.texts):     # the shapes whose role is `engrave`
         if kind == "drawing":
@@ -437,7 +435,10 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
             w.emit(depth + 1, "drawing engrave {")
             _structure_body(w, depth + 2, e, "g")
             w.emit(depth + 1, "}")
+            w.emit(depth + 1, "Fixed(engrave)")
     w.emit(depth, "}")
+    if depth > 0:           # a part of the assembly: where the file puts it
+        w.emit(depth, f"Fixed({name})")
     for run in _island_runs(islands, island_holes, loops, w.compact):
         segs, k = run[0]
         inner = depth
@@ -449,6 +450,8 @@ def _structure(w: _Writer, depth: int, kind: str, name: str, d: Drawing) -> None
         for i in island_holes.get(k - 1, ()):
             _loop(w, inner + 1, loops[i][1], "", _ident(f"hole{i + 1}", used))
         w.emit(inner, "}")
+        if inner > 0:
+            w.emit(inner, f"Fixed({name}_island{k})")
         if len(run) > 1:
             w.rel = None
             w.emit(depth, "}")
@@ -548,6 +551,7 @@ def _sheet_cut(w: _Writer, depth: int, name: str, d: Drawing) -> None:
     w.emit(depth, f"cut {name} {{")
     _paths(w, depth + 1, d.paths, name)
     w.emit(depth, "}")
+    w.emit(depth, f"Fixed({name})")
 
 
 def _paths(w: _Writer, depth: int, paths: list, name: str) -> None:
@@ -558,6 +562,8 @@ def _paths(w: _Writer, depth: int, paths: list, name: str) -> None:
             w.notes.append(Note("W0130", f"a path of `{name}` holds a piece no statement "
                                          f"writes (a whole circle or ellipse inside a "
                                          f"chain): left out"))
+        else:
+            _emit_holds(w, depth, _holds(p.segments, f"p{i + 1}_", closed))
 
 
 def _texts(w: _Writer, depth: int, texts: list, prefix: str) -> None:
@@ -567,6 +573,7 @@ def _texts(w: _Writer, depth: int, texts: list, prefix: str) -> None:
         rot_txt = f", rotation={_num(deg)} deg" if deg else ""
         w.emit(depth, f"{prefix}{i + 1} = Text({_string(text)}, position={_pt((x, y))}, "
                       f"size={_num(h)}, anchor=\"{anchor}\", valign=\"{valign}\"{rot_txt})")
+    _emit_holds(w, depth, [f"{prefix}{i + 1}" for i in range(len(texts))], "t")
 
 
 def _structure_body(w: _Writer, depth: int, d: Drawing, prefix: str) -> None:
@@ -579,12 +586,15 @@ def _structure_body(w: _Writer, depth: int, d: Drawing, prefix: str) -> None:
         k += 1
         w.emit(depth, f"{prefix}{k} = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
                       f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg)")
+        w.emit(depth, f"Fixed({prefix}{k})")
     for p in d.paths:
         k += 1
         closed = math.dist(p.start, p.end) <= 1e-6 and p.crossing is not None
         if not w.chain(depth, p.segments, closed, f"{prefix}{k}_"):
             w.notes.append(Note("W0130", "an engraved path holds a piece no statement writes "
                                          "(a whole circle or ellipse inside a chain): left out"))
+        else:
+            _emit_holds(w, depth, _holds(p.segments, f"{prefix}{k}_", closed))
     _texts(w, depth, d.texts, f"{prefix}t")
 
 
@@ -740,28 +750,43 @@ def _engrave_of(d: Drawing) -> Drawing:
     return d.engrave
 
 
-def _loop(w: _Writer, depth: int, segs: list, prefix: str, hole: str | None) -> None:
+def _loop(w: _Writer, depth: int, segs: list, prefix: str, hole: str | None,
+          hold: bool = True) -> None:
+    """The statements of the closed loop ``segs`` (a ``hole`` of that name when given), and
+    with ``hold`` what holds it where the file puts it (:func:`_holds`: ``aidl check`` has no
+    degree of freedom to report)."""
     if hole is not None:
         w.emit(depth, f"hole {hole} {{")
         depth += 1
         prefix = "c" if len(segs) == 1 and isinstance(segs[0], Circle) else "e"
+    held: list = []
+    one = prefix.rstrip('_')
     if len(segs) == 1 and isinstance(segs[0], Circle):
         c = segs[0]
-        w.emit(depth, f"{prefix.rstrip('_') or 'c'} = Circle(center={w.pt(c.center)}, "
+        w.emit(depth, f"{one or 'c'} = Circle(center={w.pt(c.center)}, "
                       f"radius={_num(c.radius)})")
+        held = [one or "c"]
     elif len(segs) == 1 and isinstance(segs[0], EllipticArc) and segs[0].whole:
         e = segs[0].curve
-        w.emit(depth, f"{prefix.rstrip('_') or 'e'} = Ellipse(center={w.pt(e.center)}, "
+        w.emit(depth, f"{one or 'e'} = Ellipse(center={w.pt(e.center)}, "
                       f"rx={_num(e.rx)}, ry={_num(e.ry)}, "
                       f"rotation={_num(math.degrees(e.rotation))} deg)")
+        held = [one or "e"]
     elif w.compact and len(segs) >= 3 and all(isinstance(s, Line) for s in segs):
         # a big drawing: a loop of lines as the points of one Polygon
-        w.emit(depth, f"{prefix.rstrip('_') or 'e'} = Polygon([{', '.join(w.pt(s.start) for s in segs)}])")
+        w.emit(depth, f"{one or 'e'} = Polygon([{', '.join(w.pt(s.start) for s in segs)}])")
+        held = [one or "e"]
     elif not w.chain(depth, segs, True, prefix):
         w.notes.append(Note("W0130", "an outline holds a piece no statement writes (a "
                                      "whole circle or ellipse inside a chain): left out"))
+    else:
+        held = _holds(segs, prefix)
     if hole is not None:
         w.emit(depth - 1, "}")
+        held = [h if h.startswith(f"{hole}.") else f"{hole}.{h}" for h in held]
+        depth -= 1
+    if hold:
+        _emit_holds(w, depth, held)
 
 
 def to_program(layers: list[tuple[str, Drawing]], source: str, parts: bool = False,
@@ -779,8 +804,12 @@ def to_program(layers: list[tuple[str, Drawing]], source: str, parts: bool = Fal
     if compact:
         w.emit(0, "# (a big drawing: loops of lines as Polygons, repeated loops written once in "
                   "a `for` over their places)")
-    w.emit(0, "units mm")
-    items = _layer_items(layers, parts, deadline, source, w.notes, w.overlaps)
+    from ..chains.layers import _hole_layers
+    layers, moved = _hole_layers(layers, deadline)
+    for line in moved:
+        w.emit(0, f"# {line}")
+    w.emit(0, f"units {UNIT.get()}")
+    items = in_unit(_layer_items(layers, parts, deadline, source, w.notes, w.overlaps))
     multi = len(items) > 1 or any(kind == "cut" for kind, _, _ in items)
     if multi:
         w.emit(0, "assembly " + ("sheet" if parts else "drawing_import") + " {")
@@ -801,7 +830,8 @@ def _cut_notes(w: _Writer, source: str) -> None:
     if w.cut_paths:
         n = w.cut_paths
         w.notes.append(Note("W0130", f"{n} open path{'s' if n != 1 else ''} of `{source}` "
-                                     f"({w.cut_length:.6g} mm) on a cut role written as "
+                                     f"({w.cut_length:.6g} {UNIT.get()}) on a cut role "
+                                     f"written as "
                                      f"through-cuts (`cut cuts {{ ... }}` in {'its' if n == 1 else 'their'} "
                                      f"part): the laser cuts along {'it' if n == 1 else 'them'}, "
                                      f"one pass each", "give engrave= (by layer or colour) for "
@@ -927,13 +957,22 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
                                                 f"curves: the program would have more than the "
                                                 f"{budget.geometry} geometry objects a program may "
                                                 f"build", too_big)
+            from .units import say_inches, written_unit
+            say_inches(notes, [d for _, d in read])
+            # an inch drawing written in inches: its layers, once made parts (in mm, the
+            # tolerances of chaining and cuts), scaled back to the file's numbers (in_unit)
+            token = UNIT.set(written_unit([d for _, d in read])[0])
             if not read:    # every layer empty: the whole drawing's E0132, as Drawing2D gives it
                 read_drawing(data, name, color=color, ident=ident, unit=unit, keep_text=True,
                              close_tolerance=close_tolerance, cut=cut, engrave=engrave,
                              ignore=ignore, roles=roles, deadline=deadline, max_shapes=limit)
-            text, more = (writer or to_program)(read, base, parts=parts, deadline=deadline)
-            if writer is None and len(text.encode("utf-8")) > MAX_IMPORT_BYTES:
-                text, more = to_program(read, base, parts=parts, deadline=deadline, compact=True)
+            try:
+                text, more = (writer or to_program)(read, base, parts=parts, deadline=deadline)
+                if writer is None and len(text.encode("utf-8")) > MAX_IMPORT_BYTES:
+                    text, more = to_program(read, base, parts=parts, deadline=deadline,
+                                            compact=True)
+            finally:
+                UNIT.reset(token)
     except OutOfBudget as ex:
         raise DrawingError("E0304", f"importing `{base}` took {ex.what} (while {ex.stage})",
                            "import a part of it with --layer, keep it as one `Drawing2D`, "
@@ -959,8 +998,11 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list,
     used: set = set()
     items = []
     for layer, d in layers:
-        kind = "drawing" if layer.upper().startswith("ENGRAVE") or (
-            d.texts and not (d.outlines or d.circles or d.ellipses or d.paths)) else "solid"
+        # a layer of text alone, or whose every shape has the role `engrave` (`--engrave
+        # LABELS`: its texts in `d.engrave`), is an engraving, not an empty solid
+        kind = "drawing" if layer.upper().startswith("ENGRAVE") or (d.empty and (
+            d.texts or (d.engrave is not None and (not d.engrave.empty or d.engrave.texts)))) \
+            else "solid"
         if kind == "solid" and d.paths_cut:        # a part's outline left open: closed
             d = _close_loose_cuts(d, source, notes)
         # which loops lie inside which, found once for both questions below
@@ -971,6 +1013,10 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list,
             if inside is not None else []
         crossed, touched = (0, 0) if parts or inside is None else \
             _overlapping_parts(d, inside, deadline)
+        # separate parts on one layer (two brackets, a plate and its washers): a solid of
+        # each, as `--parts` writes them (one solid of both falls apart: W0504)
+        apart = kind == "solid" and not (parts or crossed or touched) and \
+            _apart(d, inside, deadline)
         if crossed:
             notes.append(Note("W0130", f"{crossed} pair{'s' if crossed != 1 else ''} of parts "
                                        f"of `{source}` on a cut role overlap: each part is "
@@ -986,7 +1032,7 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list,
                                        f"(`assembly drawing_import`), as `--parts` does (one "
                                        f"solid would fuse them and lose the cut along the "
                                        f"edge they share)"))
-        if (parts or crossed or touched) and kind == "solid":
+        if (parts or crossed or touched or apart) and kind == "solid":
             joined: list = []
             pieces, loose = _split_parts(d, deadline, joined)
             base = _ident(layer, set()) if layer else "part"
@@ -1057,53 +1103,6 @@ def _say_inner(notes: list, source: str, inner: list, name: str) -> None:
                                f"keeps the one opening, and {'they are' if n != 1 else 'it is'}"
                                f" written as the sheet-level cut `{name}` (the laser cuts "
                                f"along {'them' if n != 1 else 'it'})"))
-
-
-def _loops_of(d: Drawing) -> list:
-    """``d``'s closed loops (lists of segments): its outlines, then its circles, then its
-    whole ellipses (:func:`_whole_ellipse`)."""
-    return [o.segments for o in d.outlines] + [[c] for c in d.circles] + \
-        [[_whole_ellipse(el)] for el in d.ellipses]
-
-
-def _whole_ellipse(el: tuple) -> EllipticArc:
-    """The whole ellipse ``(cx, cy, rx, ry, rotation)`` of a :class:`Drawing` (mm, radians)
-    as a loop's one segment, its numbers as the drawing gives them (written back as they
-    are: :func:`_loop`)."""
-    from ...geometry.ellipse import EllipseCurve
-    cx, cy, rx, ry, rot = el
-    return EllipticArc(EllipseCurve((cx, cy), rx, ry, rot), 0.0, 2 * math.pi)
-
-
-def _overlapping_parts(d: Drawing, inside: list, deadline=None) -> tuple[int, int]:
-    """How many pairs of ``d``'s outer loops (those inside no other loop: its parts) overlap
-    (share an area, on the loops' sampled polygons), and how many others touch along an
-    edge (:func:`_polygons_touch`): parts drawn overlapping on a laser sheet (Boxes.py's
-    UnevenHeightBox walls) or sharing an edge (WallChiselHolder's walls), which one solid
-    would fuse, losing the cut lines inside the union.  ``inside``: :func:`_containers` of
-    :func:`_loops_of`."""
-    import numpy as np
-    loops = _loops_of(d)
-    if len(loops) < 2:
-        return 0, 0
-    outer = [i for i, c in enumerate(inside) if not c]
-    polys = {i: np.asarray(Loop(list(loops[i])).points(), dtype=float) for i in outer}
-    box = {i: (P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max())
-           for i, P in polys.items() if len(P) >= 3}
-    keys = sorted(box)
-    pairs = touch = 0
-    for a_i, i in enumerate(keys):
-        if deadline is not None:
-            deadline.check("finding the parts that overlap")
-        for j in keys[a_i + 1:]:
-            a, b = box[i], box[j]
-            if a[0] > b[2] or b[0] > a[2] or a[1] > b[3] or b[1] > a[3]:
-                continue
-            if polygons_overlap(polys[i], polys[j]):
-                pairs += 1
-            elif _polygons_touch(polys[i], polys[j]):
-                touch += 1
-    return pairs, touch
 
 
 def _outside_remainders(d: Drawing, inside: list, deadline=None) -> list[Path]:

@@ -1,16 +1,15 @@
-"""``aidl import --infer``: loops on a layer of their own named for holes (``HOLES`` beside
+"""``aidl import`` (plain and ``--infer``): loops on a layer of their own named for holes (``HOLES`` beside
 ``OUTLINE``, as PCB and panel programs export) moved into the part whose outline holds them
-(used by :func:`~.infer.to_program_inferred`; docs/import.md, "Inferring the design").
+(used by :func:`~..write.program.to_program` and :func:`~..infer.infer.to_program_inferred`; docs/import.md,
+"Roles by layer or colour" and "Inferring the design").
 """
 from __future__ import annotations
 
 import re
 
-from ...geometry.curves import Loop
-from ...geometry.drawing2d import _inside
 from ..model import Drawing
-from ..write.program import _containers
-from .shapes import circular
+from .chain import circular
+from .containment import _containers
 
 
 # a layer whose name says it holds holes (HOLES, Drill, NPTH, CUTOUTS, Inner, Mounting)
@@ -21,40 +20,40 @@ def _hole_layers(layers: list[tuple[str, Drawing]], deadline=None) -> tuple[list
     """``layers`` with each layer named for holes (:data:`_HOLE_LAYER`) of loops alone (no
     paths, texts or engravings) whose every loop lies inside an outer loop of one other
     layer's drawing (a ``HOLES`` layer beside ``OUTLINE``, as PCB and panel programs
-    export) moved into that layer: its loops become
-    that part's holes, not a solid of their own.  Returns the layers and a line for the
-    program's head per move (``holes: layer `HOLES` in `OUTLINE```)."""
-    import numpy as np
-    from ..write.program import _probe
-
+    export) moved into that layer: its loops become that part's holes, not a solid of their
+    own (which `--kerf` would grow and `--layout` nest apart from the plate).  Returns the
+    layers and a line for the program's head per move (``holes: layer `HOLES` in
+    `OUTLINE```).  Which loops lie inside which is found once for all layers
+    (:func:`~.containment._containers`: a grid of boxes, O(n log n) in the loops)."""
     def loops(d):
         return [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
     cand = [k for k, (ly, d) in enumerate(layers)
             if not ly.upper().startswith("ENGRAVE") and (d.outlines or d.circles)]
-    if len(cand) < 2:
-        return layers, []
     # only a layer named for holes moves (a POCKET or SCORE layer inside the outline is not
     # a through-hole: it stays a part of its own, as `aidl import` writes it)
-    holey = {k for k in cand if _HOLE_LAYER.search(layers[k][0])}
-    outer = {}
+    holey = [k for k in cand if _HOLE_LAYER.search(layers[k][0]) and not (
+        layers[k][1].paths or layers[k][1].texts or
+        (layers[k][1].engrave is not None and not layers[k][1].engrave.empty))]
+    if len(cand) < 2 or not holey:
+        return layers, []
+    every, owner = [], []                   # every candidate layer's loops, and their layer
     for k in cand:
         ls = loops(layers[k][1])
-        outer[k] = [np.asarray(Loop(list(s)).points(), dtype=float)
-                    for s, c in zip(ls, _containers(ls, deadline)) if not c]
+        every += ls
+        owner += [k] * len(ls)
+    inside = _containers(every, deadline)
     into: dict = {}
-    for k in sorted(holey):
-        d = layers[k][1]
-        if d.paths or d.texts or (d.engrave is not None and not d.engrave.empty):
-            continue
-        probes = [_probe(s) for s in loops(d)]
-        for j in cand:
-            if j == k or j in into or j in holey:
-                continue
-            if deadline is not None:
-                deadline.check("finding the layers of holes")
-            if all(any(len(P) >= 3 and _inside(q, P) for P in outer[j]) for q in probes):
-                into[k] = j
+    for k in holey:
+        # each loop of layer k lies inside exactly one loop of one other layer (its outer
+        # outline, not one of its holes), the same layer for all
+        dest: set = set()
+        for i in (i for i, o in enumerate(owner) if o == k):
+            by = [owner[j] for j in inside[i] if owner[j] != k]
+            dest |= set(by) if len(by) == 1 and by[0] not in holey else {None}
+            if None in dest or len(dest) > 1:
                 break
+        if len(dest) == 1 and None not in dest:
+            into[k] = dest.pop()
     if not into:
         return layers, []
     from dataclasses import replace
