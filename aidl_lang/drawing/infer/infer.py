@@ -934,7 +934,8 @@ def _label_place(part: _Part, holes: list):
 
     def place(p) -> str:
         if tree is not None:
-            gap, i = tree.query(p, distance_upper_bound=LABEL_REACH)
+            reach = LABEL_REACH / (25.4 if UNIT.get() == "in" else 1.0)   # in the program's unit
+            gap, i = tree.query(p, distance_upper_bound=reach)
             if math.isfinite(gap):
                 return part.beside(mids[i], p)
         return f"({part.at(p[0], 0)}, {part.at(p[1], 1)})"

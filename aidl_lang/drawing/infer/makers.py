@@ -90,9 +90,9 @@ class _MakerFeatures:
         edge = self.edge(across, sign)
 
         def inward(term: str) -> str:        # the side moved into the part by `term`
-            if term == "-1":                  # ... or 1 mm out of it
-                return f"{edge} {'+' if sign > 0 else '-'} 1" if edge != "0" else \
-                    ("1" if sign > 0 else "-1")
+            if term == "-1 mm":               # ... or 1 mm out of it
+                return f"{edge} {'+' if sign > 0 else '-'} 1 mm" if edge != "0" else \
+                    ("1 mm" if sign > 0 else "-1 mm")
             t = f"({term})" if _sum(term) else term
             if edge == "0":
                 return f"-{t}" if sign > 0 else t
@@ -104,9 +104,9 @@ class _MakerFeatures:
             return f"({a}, {c})" if along == 0 else f"({c}, {a})"
 
         def rect(inner: str) -> str:          # from 1 mm outside the side to `inner` in
-            size = (f"width={wd}, height={inner} + 1" if along == 0 else
-                    f"width={inner} + 1, height={wd}")
-            return f"Rectangle(center={pt(mid, inward(f'({inner} - 1) / 2'))}, {size})"
+            size = (f"width={wd}, height={inner} + 1 mm" if along == 0 else
+                    f"width={inner} + 1 mm, height={wd}")
+            return f"Rectangle(center={pt(mid, inward(f'({inner} - 1 mm) / 2'))}, {size})"
         w = self.w
         # each hole runs 1 mm past the side (a notch, not a hole touching the edge: W0514)
         if shape == "square":
@@ -120,8 +120,8 @@ class _MakerFeatures:
             w.emit(depth, "}")
             w.emit(depth, f"for x in [{hn}.h, {hn}.bottom] {{ Fixed(x) }}")
         else:                                 # the sides carried on to 1 mm outside
-            half = f"{wd} / 2 * ({dp} + 1) / {dp}"
-            ends = [pt(f"{mid} {o} {half}", inward("-1")) for o in "-+"]
+            half = f"{wd} / 2 * ({dp} + 1 mm) / {dp}"
+            ends = [pt(f"{mid} {o} {half}", inward("-1 mm")) for o in "-+"]
             apex = pt(mid, inward(dp))
             w.emit(depth, f"hole {hn} {{ h = Polygon([{ends[0]}, {apex}, {ends[1]}]) }}")
             w.emit(depth, f"Fixed({hn}.h)")
