@@ -55,12 +55,16 @@ def _write_family(w: _Writer, depth: int, f, k: int) -> str:
     return nm
 
 
-def _engraving(w: _Writer, depth: int, d: Drawing, stats, place=_pt) -> None:
+def _engraving(w: _Writer, depth: int, d: Drawing, stats, place=None) -> None:
     """Every loop, path, ellipse and text of ``d`` (and its engraved shapes) as strokes:
     a line of text in the built-in font (all its loops and paths of lines) as the ``Text``
     it is, at any turn (:func:`~.text.stroke_texts`), recognised shapes, ``Polygon``/``Polyline``
     for runs of lines, else exact chains.  ``place``: a text's position as written (a
-    label placed with the feature it names: :func:`_solid`)."""
+    label placed with the feature it names: :func:`~.infer._solid`), a function of the
+    position and the text's height; None: where the drawing puts it."""
+    if place is None:
+        def place(p, size):
+            return _pt(p)
     k = 0
     held: list[str] = []        # rigid shapes, held where the file put them
     parts = [d] + ([d.engrave] if getattr(d, "engrave", None) is not None else [])
@@ -73,7 +77,7 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats, place=_pt) -> None:
         for text, pos, size, deg, whole in found:
             k += 1
             turn = f", rotation={_num(deg)} deg" if deg else ""
-            w.emit(depth, f"t{k} = Text({_string(text)}, position={place(pos)}, "
+            w.emit(depth, f"t{k} = Text({_string(text)}, position={place(pos, size)}, "
                           f"size={_num(size)}, anchor=\"start\", valign=\"baseline\"{turn})")
             stats.patterns["stroke text"] += 1
             held.append(f"t{k}")
@@ -141,7 +145,7 @@ def _engraving(w: _Writer, depth: int, d: Drawing, stats, place=_pt) -> None:
             deg = round(math.degrees(rot), 9)
             rot_txt = f", rotation={_num(deg)} deg" if deg else ""
             k += 1
-            w.emit(depth, f"t{k} = Text({_string(text)}, position={place((x, y))}, "
+            w.emit(depth, f"t{k} = Text({_string(text)}, position={place((x, y), h)}, "
                           f"size={_num(h)}, anchor=\"{anchor}\", valign=\"{valign}\"{rot_txt})")
             held.append(f"t{k}")
     _emit_holds(w, depth, held, "g")

@@ -841,7 +841,7 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
     if _unknown(d) or (d.engrave is not None and _unknown(d.engrave)):
         from ..write.program import _structure
         _structure(w, depth, "solid", name, d)
-        return _pt
+        return lambda p, size: _pt(p)
     part = _Part(w, params, stats, prefix)
     part.shift = shift
     loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
@@ -916,7 +916,13 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
     return place
 
 
-LABEL_REACH = 25.0      # mm: a text this near a hole names it (moves with it)
+def _at_as_drawn(p, size: float) -> str:
+    """A text's position as the drawing gives it (no feature or edge to place it from)."""
+    return _pt(p)
+
+
+LABEL_REACH = 25.0      # mm: a text this near a hole names it (moves with it), and
+LABEL_SIZES = 5.0       # ... within this many of its own heights (a label beside its feature)
 
 
 def _label_place(part: _Part, holes: list):
@@ -924,7 +930,7 @@ def _label_place(part: _Part, holes: list):
     nearest it, within :data:`LABEL_REACH` (a label moves with the feature it names when
     the plate grows), else from the body's reference nearest the text."""
     if part.anchor is None:
-        return _pt
+        return lambda p, size: _pt(p)
     from scipy.spatial import cKDTree
     mids = []
     for segs in holes:
@@ -932,9 +938,9 @@ def _label_place(part: _Part, holes: list):
         mids.append(((b[0] + b[2]) / 2, (b[1] + b[3]) / 2))
     tree = cKDTree(mids) if mids else None
 
-    def place(p) -> str:
-        if tree is not None:
-            reach = LABEL_REACH / (25.4 if UNIT.get() == "in" else 1.0)   # in the program's unit
+    def place(p, size: float) -> str:
+        if tree is not None:       # within LABEL_REACH and LABEL_SIZES text heights
+            reach = min(LABEL_REACH / (25.4 if UNIT.get() == "in" else 1.0), LABEL_SIZES * size)
             gap, i = tree.query(p, distance_upper_bound=reach)
             if math.isfinite(gap):
                 return part.beside(mids[i], p)
@@ -968,7 +974,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
     short = _short_names([it[1] for it in items])
     names = []
     drawings = []           # (line index, name, d): written after the parts, placed by them
-    place = _pt
+    place = _at_as_drawn
     for kind, name, d, *rep in items:
         if kind == "drawing":
             drawings.append((len(w.lines), name, d))
@@ -996,7 +1002,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
         else:
             placed = _solid(w, params, stats, depth, name, d,
                             short[name] + "_" if solids > 1 else "")
-            place = placed if solids == 1 else _pt
+            place = placed if solids == 1 else _at_as_drawn
         names.append(name)
     # a layer of texts beside one part (LABELS beside OUTLINE): its labels placed with the
     # part's features, as the part's own engraving is
