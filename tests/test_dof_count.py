@@ -566,16 +566,16 @@ def test_check_dof_spends_the_compile_budget_not_a_fresh_one(tmp_path, capsys, m
         made.append(at)
         return real_deadline(at, budget)
     monkeypatch.setattr(pipeline, "Deadline", recorded)
-    redundancies, dof = redundancy.redundancies, freedom.degrees_of_freedom
+    searched, dof = redundancy.search, freedom.degrees_of_freedom
 
     def red(solver, deadline=None, **kw):
         given["redundancy"] = deadline
-        return redundancies(solver, deadline=deadline, **kw)
+        return searched(solver, deadline=deadline, **kw)
 
     def counted(solver, floating=True, deadline=None):
         given["dof"] = deadline
         return dof(solver, floating, deadline)
-    monkeypatch.setattr(redundancy, "redundancies", red)
+    monkeypatch.setattr(redundancy, "search", red)
     monkeypatch.setattr(freedom, "degrees_of_freedom", counted)
     f = tmp_path / "pts.aidl"
     f.write_text(_chain(300))
