@@ -383,7 +383,9 @@ constraint in its parent that ties it to the part's shapes (`AlignCenterY(bits, 
 `Below(labels, bits, gap=4)`); `Fixed(bits)` holds it only where the part is fixed too (it pins
 the feature to the sheet, not to the part). Freedom of a whole part (where it sits on the sheet)
 is harmless and not reported; `aidl check` says it as "free: only where the whole part sits
-(harmless)". A structure declared inside a standard-library template is the template's affair
+(harmless)". Nor is a feature that no constraint places at all (its coordinates alone): the
+solve keeps it where it is written, and the ok line says "hole `plate.recess` free but stays
+where written (harmless)". A structure declared inside a standard-library template is the template's affair
 and is not reported to its user. Features tied only to each other (two screw holes with
 `VerticalDistance(a, b, 60.3)`) slide together and are each reported: tie one and check again
 (the others follow it, the rest is named by direction); tying both with `.bb.center ==`
