@@ -351,11 +351,17 @@ The constraint holds already because other constraints (or a constructor's held 
 it: it adds no information. It is harmless, but if a value in it changes later the model becomes
 over-constrained. Reported by every `aidl check`. Constraints that each follow from the others
 (two `Fixed` of points of one held shape, `Coincident(a, b)` beside `a == b`) are one warning
-for the group, whose hint says which to keep (the first written) and which to drop. A
-standard-library template's own constraints are never the ones to drop (its user cannot edit
-them): beside one (`CenterInside(h, body)` on a joint that holds itself by `Fixed(self)`) the
-hint names the user's line and where the template holds it (`std/joints.aidl line 136`), and a
-redundancy wholly inside a template is not reported.
+for the group, whose hint says which to keep and which to drop: the drop set frees nothing
+(the kept constraints still hold every unknown the group held; each member follows from the
+others, not any two from any one), tried from the last written back, so the first written is
+kept. A statement that makes geometry is never one to drop: a `CornerPattern` beside a
+`HorizontalDistance` and a `VerticalDistance` that place its hole the same way keeps the pattern
+(it makes the copies) and drops the two distances; when only such statements are left the
+warning names the redundancy without a drop list. A standard-library template's own
+constraints are never the ones to drop either (its user cannot edit them): beside one
+(`CenterInside(h, body)` on a joint that holds itself by `Fixed(self)`) the hint names the
+user's line and where the template holds it (`std/joints.aidl line 136`), and a redundancy
+wholly inside a template is not reported.
 
     solid s {
         r = Rectangle(center=(0, 0), width=30, height=20)
@@ -377,7 +383,9 @@ constraint in its parent that ties it to the part's shapes (`AlignCenterY(bits, 
 `Below(labels, bits, gap=4)`); `Fixed(bits)` holds it only where the part is fixed too (it pins
 the feature to the sheet, not to the part). Freedom of a whole part (where it sits on the sheet)
 is harmless and not reported; `aidl check` says it as "free: only where the whole part sits
-(harmless)". A structure declared inside a standard-library template is the template's affair
+(harmless)". Nor is a feature that no constraint places at all (its coordinates alone): the
+solve keeps it where it is written, and the ok line says "hole `plate.recess` free but stays
+where written (harmless)". A structure declared inside a standard-library template is the template's affair
 and is not reported to its user. Features tied only to each other (two screw holes with
 `VerticalDistance(a, b, 60.3)`) slide together and are each reported: tie one and check again
 (the others follow it, the rest is named by direction); tying both with `.bb.center ==`

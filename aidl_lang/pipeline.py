@@ -464,14 +464,16 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
     too.  Returns the number of user constraints not looked at (out of time, or in a block
     too large)."""
     from .solver.diagnose import MAX_DENSE
-    from .solver.redundancy import redundancies
+    from .solver.redundancy import search
     if seconds is not None:
         end = now() + seconds
         deadline = end if deadline is None else min(deadline, end)
     skipped: list = []
-    reds = redundancies(result.solver, deadline=deadline, max_rows=max_rows or MAX_DENSE,
-                        skipped=skipped, why=why)
-    grouped = _report_groups(sink, reds)
+    found = search(result.solver, deadline=deadline, max_rows=max_rows or MAX_DENSE,
+                   skipped=skipped, why=why)
+    reds = found.found
+    makes = _makers(result.solver.model)
+    grouped = _report_groups(sink, reds, found, makes)
     for red in reds:
         c = red.constraint
         if id(c) in grouped or _in_template(c):
@@ -490,12 +492,29 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
         else:
             msg = (f"`{c.describe()}` is redundant: it only restates values already held (a "
                    "constructor's dimensions or `Fixed`), so removing it would free nothing")
-        sink.add(Diagnostic("W0401", msg, c.span, "warning",
-                            hint="harmless now, but if one of these values changes the model "
-                                 "becomes over-constrained; drop one of them only if it repeats "
-                                 "the same intent", labels=labels),
+        hint = ("harmless now, but if one of these values changes the model becomes "
+                "over-constrained; drop one of them only if it repeats the same intent")
+        if _made(c, makes):
+            hint += (f", not `{c.describe()}`: it also makes geometry (its copies), which "
+                     "dropping it would delete")
+        sink.add(Diagnostic("W0401", msg, c.span, "warning", hint=hint, labels=labels),
                  calls=instance_calls(c.owner))
     return len(skipped)
+
+
+def _makers(model) -> set:
+    """Where the statements that make geometry are (``(file, offset)``): a pattern's or a
+    mirror's copies are tied to their original by implicit rows at the statement's span, so
+    a written constraint sharing its span with such rows (CornerPattern's placement of its
+    original) is a statement whose removal changes what is drawn (issue 84: W0401 offered to
+    drop a CornerPattern, and three of its four holes went with it)."""
+    return {(c.span.file, c.span.start) for c in model.constraints
+            if c.implicit and c.kind == "internal" and c.span is not None}
+
+
+def _made(c, makes: set) -> bool:
+    """True when the statement of constraint ``c`` also makes geometry (:func:`_makers`)."""
+    return c.span is not None and (c.span.file, c.span.start) in makes
 
 
 MAX_SLIDING_UNKNOWNS = 20000    # larger models are not searched for sliding features
@@ -542,11 +561,17 @@ def report_sliding(sink: DiagnosticSink, result: SolveResult):
     return sl
 
 
-def _report_groups(sink: DiagnosticSink, reds: list) -> set:
+def _report_groups(sink: DiagnosticSink, reds: list, found, makes: set) -> set:
     """One W0401 per group of constraints that each follow from the others (two `Fixed` of
     points of one held shape, `Coincident(a, b)` beside `a == b`): the group is reported
-    once, at its second-written member, and the hint says which to drop (all but the first
-    written).  Returns the ids of the constraints so reported."""
+    once, and the hint says which to drop and which to keep.  The drop set is chosen so that
+    nothing is lost (issue 84): a standard-library template's own constraints and statements
+    that make geometry (a pattern's placement, :func:`_makers`) are kept, and the others are
+    tried from the last written back, each dropped only when the kept ones still hold every
+    unknown the group held (``found.rank_lost``, :class:`~aidl_lang.solver.redundancy.Search`;
+    each member is implied by the others, not any two by any one).  With nothing safe to drop
+    the redundancy is named without a drop list.  Returns the ids of the constraints so
+    reported."""
     full = {id(r.constraint): r for r in reds if not r.partly and r.by}
     parent = {k: k for k in full}
 
@@ -573,35 +598,53 @@ def _report_groups(sink: DiagnosticSink, reds: list) -> set:
         # a standard-library template's own constraints are kept and never blamed: its user
         # cannot edit them (issue 61: `CenterInside(h, body)` beside the joint's `Fixed(self)`)
         members.sort(key=lambda c: (not _in_template(c), pos(c)))
-        if _in_template(members[-1]):
+        if all(_in_template(c) for c in members):
             continue                        # all the template's: its own affair
-        keep, drop = members[0], [c for c in members[1:] if not _in_template(c)]
-        if _in_template(keep):
-            drop = drop[-1:]    # beside a template's own: the last one written goes, which
-            #                     always follows from the others
+        drop: list = []
+        for c in reversed(members):
+            if _in_template(c) or _made(c, makes):
+                continue
+            if found.rank_lost(drop + [c]) == 0:
+                drop.append(c)
+        drop.sort(key=pos)
+        keep = [c for c in members if c not in drop]
         names = ", ".join(f"`{c.describe()}`" for c in members[:-1]) + \
             f" and `{members[-1].describe()}`"
-        others = [b for b in full[id(keep)].by if id(b) not in done]
+        others = [b for k in keep for b in full[id(k)].by if id(b) not in done]
+        others = [b for i, b in enumerate(others) if b not in others[:i]]
         also = (" (with " + ", ".join(f"`{b.describe()}`" for b in others[:3]) + ")"
                 if others else "")
         lines = ", ".join(f"`{c.describe()}` ({_line_of(c)})" for c in drop)
         held = [c for c in members if _in_template(c)]
+        made = [c for c in keep if _made(c, makes)]
+        at = drop[0] if drop else next(c for c in reversed(members) if not _in_template(c))
         labels = [Label(c.span, "the template holds it here" if _in_template(c) else
-                        "says the same" if c is not keep else "keep this one",
-                        primary=False) for c in members if c is not drop[0] and c.span]
-        if held:
+                        "keep this one" if c in keep else "says the same",
+                        primary=False) for c in members if c is not at and c.span]
+        kept = ", ".join(f"`{c.describe()}` ({_line_of(c)})" for c in keep)
+        if not drop:
+            msg_end = "none can go without losing what it makes"
+            hint = (f"keep them all: {kept} make geometry; harmless now, but if one of these "
+                    "values changes the model becomes over-constrained, so change them "
+                    "together")
+        elif held:
+            msg_end = f"{len(drop)} of the {len(members)} can go"
             hint = (f"drop {lines}: the template holds it already ("
                     + ", ".join(f"`{c.describe()}`, {_line_of(c)}" for c in held[:2])
                     + "); place a template that holds itself by its arguments (`cx=`, `cy=`, "
                       "`rotation=`)")
         else:
-            hint = (f"keep `{keep.describe()}` ({_line_of(keep)}) and drop {lines}: the model "
-                    "stays exactly as constrained")
+            msg_end = f"{len(drop)} of the {len(members)} can go"
+            why = (" (" + ", ".join(f"`{c.describe()}`" for c in made)
+                   + " also make" + ("s" if len(made) == 1 else "") + " geometry: dropping it "
+                   "would delete its copies)") if made else ""
+            hint = (f"keep {kept} and drop {lines}" if len(keep) <= 3 else
+                    f"drop {lines} and keep the other {len(keep)}") + \
+                f": the model stays exactly as constrained{why}"
         sink.add(Diagnostic(
             "W0401", f"{names} say the same thing: each follows from the "
-                     f"{'other' if len(members) == 2 else 'others'}{also}, so "
-                     f"{len(drop)} of the {len(members)} can go", drop[0].span, "warning",
-            hint=hint, labels=labels), calls=instance_calls(drop[0].owner))
+                     f"{'other' if len(members) == 2 else 'others'}{also}, so {msg_end}",
+            at.span, "warning", hint=hint, labels=labels), calls=instance_calls(at.owner))
     return done
 
 

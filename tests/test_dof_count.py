@@ -224,8 +224,10 @@ def test_without_the_ancestor_constraint_the_hole_floats(tmp_path):
     # in the plate
     assert dof["plate.bore"]["dof"] == 0 and dof["plate.bore"]["floating"] == []
     assert dof["plate"]["dof"] == 2 and dof["plate"]["floating"] == ["plate.bore (position)"]
-    assert doc["freedom"] == ("2 degrees of freedom left (free: hole `plate.bore` can slide "
-                              "along x, y), see --dof")
+    # placed by its coordinates alone, the hole stays where written (issue 84: "can slide
+    # along x, y" read as a problem to three of four models)
+    assert doc["freedom"] == ("2 degrees of freedom left (hole `plate.bore` free but stays "
+                              "where written (harmless)), see --dof")
 
 
 def test_an_ancestor_row_pins_only_what_it_reads(tmp_path):
@@ -338,6 +340,32 @@ def test_a_feature_that_can_slide_is_named_and_warned(tmp_path):
     assert "free: hole" not in fixed["freedom"]
 
 
+def test_a_feature_placed_by_its_coordinates_alone_stays_where_written(tmp_path):
+    """Issue 84: "free: hole `plate.recess` can slide along x, y" read as a problem to three
+    of four models, though the solve keeps a feature nothing else places where it is written.
+    Such a feature is "free but stays where written (harmless)", on the ok line, in the API's
+    and the MCP answer's freedom text; one a constraint places and that still slides (W0404)
+    keeps "can slide"."""
+    from aidl_lang import api
+    from aidl_lang.mcp.tools import Workspace, check
+    src = GAUGE.replace("EXTRA", "hole recess { r = Rectangle(center=(20, -5), width=6, "
+                                 "height=4) }")
+    said = ("(free: hole `gauge.bits` can slide along y; drawing `gauge.labels` can slide "
+            "along y; hole `gauge.recess` free but stays where written (harmless))")
+    doc = _check(tmp_path, src, "--json")
+    assert said in doc["freedom"]
+    assert [d["message"].split()[1] for d in doc["diagnostics"] if d["code"] == "W0404"] == [
+        "`gauge.bits`", "`gauge.labels`"]                       # the recess: no warning
+    assert said in api.compile(src).freedom()["text"]
+    assert "hole `gauge.recess` free but stays where written (harmless)" in \
+        check(Workspace(tmp_path), source=src, dof=True)["freedom"]["text"]
+    placed = src.replace("\n}\n", "\n    bits.bb.top == plate.bb.top - 5\n}\n")
+    doc = _check(tmp_path, placed, "--json")
+    assert doc["freedom"].endswith("degrees of freedom left (hole `gauge.recess` free but "
+                                   "stays where written (harmless)), see --dof")
+    assert not [d for d in doc["diagnostics"] if d["code"] == "W0404"]
+
+
 def test_only_the_placement_of_the_whole_part_is_harmless(tmp_path):
     """Every shape tied to the plate, nothing fixed: the 2 freedoms left are where the part
     sits, said as harmless; `Fixed(body)` makes it fully constrained."""
@@ -367,7 +395,9 @@ def test_rigid_takes_any_number_of_structures_and_holds_their_inside(tmp_path):
 }
 """
     free = _check(tmp_path, src.replace("RIGID", ""), "--json", "--dof")
-    assert free["freedom"].startswith("10 degrees of freedom left (free: hole `plate.a` can slide")
+    assert free["freedom"] == ("10 degrees of freedom left (hole `plate.a`, hole `plate.b`, "
+                               "hole `plate.c` and 1 more free but stay where written "
+                               "(harmless)), see --dof")
     doc = _check(tmp_path, src.replace("RIGID", "Rigid([a, b, c, d, body])"), "--json", "--dof")
     assert doc["freedom"] == ("2 degrees of freedom left (free: only where the whole part sits "
                               "(harmless)), see --dof")
@@ -462,8 +492,9 @@ def test_a_structure_moving_with_its_frame_is_counted_once(tmp_path):
     assert [(d["structure"], d["dof"]) for d in doc["dof"]] == [
         ("row", 2), ("row.g0", 0), ("row.g0.p0", 0), ("row.g0.p0.bore", 0)]
     doc = _check(tmp_path, structures(3), "--json", "--dof")
-    assert doc["freedom"].startswith("12 degrees of freedom left (free: hole `a.s[0].h` can "
-                                     "slide along x, y;")
+    assert doc["freedom"].startswith("12 degrees of freedom left (hole `a.s[0].h`, hole "
+                                     "`a.s[1].h`, hole `a.s[2].h` free but stay where written "
+                                     "(harmless))")
     dof = {d["structure"]: (d["dof"], d["floating"]) for d in doc["dof"]}
     assert dof["a"] == (6, ["a.s[0] (position)", "a.s[1] (position)", "a.s[2] (position)"])
     assert all(dof[f"a.s[{i}]"] == (2, [f"a.s[{i}].h (position)", f"a.s[{i}].r"])
@@ -566,16 +597,16 @@ def test_check_dof_spends_the_compile_budget_not_a_fresh_one(tmp_path, capsys, m
         made.append(at)
         return real_deadline(at, budget)
     monkeypatch.setattr(pipeline, "Deadline", recorded)
-    redundancies, dof = redundancy.redundancies, freedom.degrees_of_freedom
+    searched, dof = redundancy.search, freedom.degrees_of_freedom
 
     def red(solver, deadline=None, **kw):
         given["redundancy"] = deadline
-        return redundancies(solver, deadline=deadline, **kw)
+        return searched(solver, deadline=deadline, **kw)
 
     def counted(solver, floating=True, deadline=None):
         given["dof"] = deadline
         return dof(solver, floating, deadline)
-    monkeypatch.setattr(redundancy, "redundancies", red)
+    monkeypatch.setattr(redundancy, "search", red)
     monkeypatch.setattr(freedom, "degrees_of_freedom", counted)
     f = tmp_path / "pts.aidl"
     f.write_text(_chain(300))

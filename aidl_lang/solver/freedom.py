@@ -402,8 +402,8 @@ def freedom_text(dofs: list[StructureDof], slide: "Sliding | None" = None) -> st
     """``fully constrained`` or ``N degrees of freedom left, see --dof`` for a whole model
     (structures too large for the dense rank count are reported as unknown); with ``slide``
     (:func:`~.sliding.sliding`) it says what is free: ``N degrees of freedom left (free: hole
-    `bore` can slide along x), see --dof`` or ``(free: only where the whole part sits
-    (harmless))``."""
+    `bore` can slide along x), see --dof``, ``(hole `recess` free but stays where written
+    (harmless))`` or ``(free: only where the whole part sits (harmless))``."""
     if any(d.rank < 0 for d in dofs):
         why = ("model too large" if any(d.why == "too large" for d in dofs if d.rank < 0)
                else "out of time")

@@ -79,9 +79,72 @@ def redundancies(solver, deadline: float | None = None,
     :func:`_row_blocks` (the blocks of rows sharing unknowns, rows peeled), per block
     :func:`_search_block` (its dependencies, :class:`_Block`, then :func:`_measure` per
     constraint), and :func:`_report` (what each user constraint is said to be)."""
+    return search(solver, deadline, max_rows, skipped, why).found
+
+
+class Search(Compared):
+    """The redundancy search's findings (``found``: a :class:`Redundant` per implied user
+    constraint) and what :meth:`rank_lost` needs to judge a set of them dropped together:
+    each searched block's dependencies (``blocks``, by the ids of the constraints in it), the
+    constraints of one-row blocks and their pinning rows outside the closure (``alone``)."""
+    __slots__ = ("found", "blocks", "alone", "unknown")
+
+    def __init__(self, found: list | None = None, blocks: dict | None = None,
+                 alone: dict | None = None, unknown: dict | None = None):
+        self.found = [] if found is None else found
+        self.blocks = {} if blocks is None else blocks
+        self.alone = {} if alone is None else alone
+        self.unknown = {} if unknown is None else unknown
+
+    def rank_lost(self, drop) -> int | None:
+        """``rank(J) - rank(J without drop)``: how many degrees of freedom dropping the user
+        constraints ``drop`` together would free (0: the others still hold every unknown
+        they held; the same measure as a single constraint's, ``|D| - rank(N_D)`` with
+        ``N_D`` the dependencies restricted to ``D``'s rows, block by block).  None when
+        one of them was not searched."""
+        ids = {id(c) for c in drop}
+        if any(k in self.unknown for k in ids):
+            return None
+        lost = sum(self.alone.get(k, 0) for k in ids)
+        seen: set = set()
+        for k in ids:
+            for b in self.blocks.get(k, ()):
+                if id(b) in seen:
+                    continue
+                seen.add(id(b))
+                idx = [i for i, c in enumerate(b.lc) if id(c) in ids]
+                deps = [n_ for n_, (r, support, _) in enumerate(b.null)
+                        if any(id(b.lc[i]) in ids for i in [r, *support])]
+                M = _restricted(b.null, deps, idx)
+                lost += len(idx) - (_rank(np.array(M)) if M else 0)
+        return lost
+
+
+def _restricted(null: list, deps, idx: list) -> list:
+    """The dependencies ``deps`` of ``null`` (``(row, support, coef)``) restricted to the
+    rows ``idx``: one vector over ``idx`` each (``N_C`` of :func:`redundancies`)."""
+    pos = {i: j for j, i in enumerate(idx)}
+    M = []
+    for n_ in deps:
+        r, support, coef = null[n_]
+        v = np.zeros(len(idx))
+        if r in pos:
+            v[pos[r]] += 1.0
+        for i, cf in zip(support, coef):
+            if i in pos:
+                v[pos[i]] -= cf
+        M.append(v)
+    return M
+
+
+def search(solver, deadline: float | None = None, max_rows: int = MAX_DENSE,
+           skipped: list | None = None, why: set | None = None) -> Search:
+    """:func:`redundancies` (the same arguments), with what judging a drop set needs kept
+    (:class:`Search`, :meth:`Search.rank_lost`: W0401's hint drops only a set that frees
+    nothing, issue 84)."""
     system = _flat_system(solver)
     if system is None:
-        return []
+        return Search()
     J, F, cons, keys, in_closure = system
     lab, live, peeled, position = _row_blocks(J)
     by_c: dict[int, list[int]] = {}
@@ -97,10 +160,17 @@ def redundancies(solver, deadline: float | None = None,
             k = id(cons[local[0]])
             found.contribution[k] = found.contribution.get(k, 0) + 1
             found.rank_c[k] = found.rank_c.get(k, 0) + 1
+            found.alone[k] = found.alone.get(k, 0) + 1
             continue
         _search_block(J, local, [cons[i] for i in local], keys, peeled, position, found,
                       deadline, max_rows)
-    return _report(solver, cons, by_c, F, live, in_closure, found, skipped, why)
+    reds = _report(solver, cons, by_c, F, live, in_closure, found, skipped, why)
+    pinned = solver.pinned_rows
+    for k in by_c:              # a pinning row outside the closure: one independent row
+        p = pinned.get(k, 0) - in_closure.get(k, 0)
+        if p:
+            found.alone[k] = found.alone.get(k, 0) + p
+    return Search(reds, found.blocks, found.alone, found.unknown)
 
 
 def _flat_system(solver):
@@ -158,13 +228,15 @@ class _Found:
     rank(J without C)`` summed over blocks; ``rank_c``, ``rank(J_C)`` beyond the constructors'
     span; ``by``, the other constraints in its dependencies; ``unknown``, why it was not
     searched (the first reason given)."""
-    __slots__ = ("contribution", "rank_c", "by", "unknown")
+    __slots__ = ("contribution", "rank_c", "by", "unknown", "blocks", "alone")
 
     def __init__(self):
         self.contribution: dict[int, int] = {}
         self.rank_c: dict[int, int] = {}
         self.by: dict[int, list] = {}
         self.unknown: dict = {}
+        self.blocks: dict[int, list] = {}       # id(constraint) -> the searched blocks it is in
+        self.alone: dict[int, int] = {}         # id(constraint) -> its rows independent of all
 
     def leave_out(self, ids, reason: str) -> None:
         for k_ in ids:
@@ -253,6 +325,8 @@ def _search_block(J, local: np.ndarray, lc: list, keys: np.ndarray, peeled, posi
             touched.setdefault(k, []).append(n_)
     # the constructors' rows: what a constraint says beyond them is measured modulo
     # their span (the greedy pass's first basis rows ``Qi``), see rank_c
+    for k in mine:
+        found.blocks.setdefault(k, []).append(b)
     for k, idx in mine.items():
         if deadline is not None and now() > deadline:
             found.leave_out((id(c) for c in lc), "out of time")  # a block is reported whole or not
@@ -267,19 +341,11 @@ def _measure(b: _Block, k: int, idx: list, deps, found: _Found, deadline: float 
     span (:func:`_rank_beyond_constructors`), into ``found``; left out when a factorisation
     is refused (:func:`~.diagnose._dense_refused`)."""
     lc, null = b.lc, b.null
-    pos = {i: j for j, i in enumerate(idx)}
-    M = []
+    M = _restricted(null, deps, idx)
     others: list = []
     named = {k}                     # ids in ``others`` (and k): linear, not a scan
     for n_ in deps:
-        r, support, coef = null[n_]
-        v = np.zeros(len(idx))
-        if r in pos:
-            v[pos[r]] += 1.0
-        for i, cf in zip(support, coef):
-            if i in pos:
-                v[pos[i]] -= cf
-        M.append(v)
+        r, support, _ = null[n_]
         for i in [r, *support]:
             if id(lc[i]) not in named:
                 named.add(id(lc[i]))

@@ -225,14 +225,30 @@ def _features(p, J, loose, scale, where, px, model) -> list:
 
 
 def sliding_text(sl: Sliding) -> str:
-    """``free: hole `bore` can slide along x`` or ``free: only where the whole part sits
-    (harmless)``; "" when nothing slides."""
+    """``free: hole `bore` can slide along x``, ``hole `recess` free but stays where written
+    (harmless)`` or ``free: only where the whole part sits (harmless)``; "" when nothing
+    slides.  A feature that some constraint places (and that still slides: ``W0404``) or
+    that slides within an inequality's bounds is said to slide; one placed by its
+    coordinates alone stays where it is written (a part stays, its features are placed on
+    it: the solve keeps the positions nothing else gives), so its freedom is harmless and
+    said so (issue 84: "can slide along x, y" read as a problem to three of four models)."""
     if sl.features:
+        moves = [(t, a) for t, a in sl.features
+                 if id(t) in sl.constrained or id(t) in sl.bounded]
+        kept = [t for t, _ in sl.features if id(t) not in sl.constrained
+                and id(t) not in sl.bounded]
         said = [f"{_name(t)} can slide along {a}"
                 + (" within its bounds" if id(t) in sl.bounded else "")
-                for t, a in sl.features[:3]]
-        more = f" and {len(sl.features) - 3} more" if len(sl.features) > 3 else ""
-        return "free: " + "; ".join(said) + more
+                for t, a in moves[:3]]
+        more = f" and {len(moves) - 3} more" if len(moves) > 3 else ""
+        out = "free: " + "; ".join(said) + more if said else ""
+        if kept:
+            names = ", ".join(_name(t) for t in kept[:3]) + (
+                f" and {len(kept) - 3} more" if len(kept) > 3 else "")
+            harmless = (f"{names} free but {'stays' if len(kept) == 1 else 'stay'} where "
+                        "written (harmless)")
+            out = f"{out}; {harmless}" if out else harmless
+        return out
     if sl.placement:
         return "free: only where the whole part sits (harmless)"
     return ""
