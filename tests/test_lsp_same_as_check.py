@@ -71,10 +71,19 @@ from test_lsp_editing import client  # noqa: E402,F401
 
 
 async def _published(client: LanguageClient, uri: str) -> list[T.Diagnostic]:
-    while True:
-        p = await client.wait_for_notification(T.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
-        if p.uri == uri:
-            return p.diagnostics
+    """The diagnostics the server publishes for ``uri``; a failure naming the file after
+    240 s without them (a hang guard: a loaded full run once waited here for minutes)."""
+    import asyncio
+
+    async def wait():
+        while True:
+            p = await client.wait_for_notification(T.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
+            if p.uri == uri:
+                return p.diagnostics
+    try:
+        return await asyncio.wait_for(wait(), 240)
+    except asyncio.TimeoutError:
+        pytest.fail(f"no diagnostics published for {uri} in 240 s")
 
 
 @pytest.mark.asyncio(loop_scope="module")
