@@ -185,7 +185,6 @@ class _Writer:
         self.crossed = 0            # loops on a cut role that cross themselves: engraved
         self.compact = False        # a big drawing: repeated loops as loops, line loops
         self.rel = None             # (x, y): points written relative to `p` (a copy's place)
-        self.rel_name = "p"         # ... the name of that point
         self.overlaps: set = set()  # holes drawn overlapping on a cut role (hole_cuts)
 
     def emit(self, depth: int, text: str) -> None:
@@ -198,14 +197,13 @@ class _Writer:
         if self.rel is None:
             return _pt(p)
         dx, dy = p[0] - self.rel[0], p[1] - self.rel[1]
-        q = self.rel_name
         if _num(dx) == "0" and _num(dy) == "0":
-            return q
+            return "p"
 
         def rel(i, v):
             t = _num(v)
-            return f"{q}[{i}]" if t == "0" else f"{q}[{i}] - {t[1:]}" if t.startswith("-") \
-                else f"{q}[{i}] + {t}"
+            return f"p[{i}]" if t == "0" else f"p[{i}] - {t[1:]}" if t.startswith("-") \
+                else f"p[{i}] + {t}"
         return f"({rel(0, dx)}, {rel(1, dy)})"
 
     def chain(self, depth: int, segs: list, closed: bool, prefix: str) -> bool:
