@@ -28,7 +28,7 @@ solid body {
     }
     drawing strings {
         for i in range(4) {
-            s = Line(start=(-6 + 4 * i, -26), end=(-6 + 4 * i, 16 - hole_radius))    # 1 mm short of the rosette
+            s = Line(start=(-6 + 4 * i, -26), end=(-6 + 4 * i, 16 - hole_radius))  # 1 mm short of the rosette
         }
     }
 }

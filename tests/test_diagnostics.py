@@ -672,10 +672,12 @@ def test_every_producible_code_has_a_test():
     import pathlib
     here = pathlib.Path(__file__)
     # this file, test_checks*.py for the geometry checks on the final shape (W05xx) and
-    # test_through_cuts.py for the `cut` kind's (E0125, W0522)
+    # test_through_cuts.py for the `cut` kind's (E0125, W0522), test_sweep.py for the range
+    # sweep's (W0110)
     text = here.read_text() + "".join(p.read_text()
                                       for p in sorted(here.parent.glob("test_checks*.py"))) \
-        + (here.parent / "test_through_cuts.py").read_text()
+        + "".join((here.parent / name).read_text()
+                  for name in ("test_through_cuts.py", "test_sweep.py"))
     missing = [code for code in CODES if f'"{code}"' not in text]
     assert missing == []
 
