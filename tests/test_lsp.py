@@ -9,6 +9,7 @@ from pytest_lsp import ClientServerConfig, LanguageClient
 from aidl_lang.editor.lsp import analysis as an
 
 from conftest import EXAMPLES, ROOT
+from lsp_published import keep, published
 
 TELEPHONE = (ROOT / "examples" / "telephone.aidl").read_text()
 
@@ -49,6 +50,7 @@ def pos(src: str, needle: str, k: int = 0, nth: int = 0) -> tuple[int, int]:
 @pytest_lsp.fixture(config=ClientServerConfig(
     server_command=[sys.executable, "-m", "aidl_lang.cli", "lsp"]))
 async def client(lsp_client: LanguageClient):
+    keep(lsp_client)
     # VS Code refreshes inlay hints and code lenses when the server asks (after each analysis)
     lsp_client.feature(T.WORKSPACE_INLAY_HINT_REFRESH)(lambda params: None)
     lsp_client.feature(T.WORKSPACE_CODE_LENS_REFRESH)(lambda params: None)
@@ -67,10 +69,7 @@ def _open(client: LanguageClient, uri: str, text: str, version: int = 1) -> None
 async def _diagnostics(client: LanguageClient, uri: str, version: int | None = None):
     """The next diagnostics published for ``uri`` (of ``version`` if given: a version may be
     published more than once, parse-and-check first at start-up)."""
-    while True:
-        p = await client.wait_for_notification(T.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
-        if p.uri == uri and (version is None or p.version == version):
-            return p.diagnostics
+    return await published(client, uri, version)
 
 
 @pytest.mark.asyncio

@@ -13,6 +13,7 @@ from aidl_lang.editor.lsp import analysis as an
 from aidl_lang.editor.lsp import semantic, signature, window
 
 from conftest import ROOT
+from lsp_published import keep, published
 
 TELEPHONE = (ROOT / "examples" / "telephone.aidl").read_text()
 
@@ -52,6 +53,7 @@ def apply(src: str, edits: list[T.TextEdit]) -> str:
 @pytest_lsp.fixture(scope="module", config=ClientServerConfig(
     server_command=[sys.executable, "-m", "aidl_lang.cli", "lsp", "--stdio", "--clientProcessId=1"]))
 async def client(lsp_client: LanguageClient):
+    keep(lsp_client)
     # VS Code refreshes inlay hints and code lenses when the server asks (after each analysis)
     lsp_client.feature(T.WORKSPACE_INLAY_HINT_REFRESH)(lambda params: None)
     lsp_client.feature(T.WORKSPACE_CODE_LENS_REFRESH)(lambda params: None)
@@ -74,12 +76,7 @@ def _change(client: LanguageClient, uri: str, text: str, version: int) -> None:
 
 
 async def _diagnostics(client: LanguageClient, uri: str, version: int | None = None, timeout=60):
-    end = time.monotonic() + timeout
-    while True:
-        params = await client.wait_for_notification(T.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
-        if params.uri == uri and (version is None or params.version == version):
-            return params.diagnostics
-        assert time.monotonic() < end, "no diagnostics for this version"
+    return await published(client, uri, version, timeout=timeout)
 
 
 @pytest.mark.asyncio(loop_scope="module")

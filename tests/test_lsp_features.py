@@ -20,6 +20,7 @@ from aidl_lang.parser import parse
 from aidl_lang.diagnostics import DiagnosticSink
 
 from conftest import ROOT
+from lsp_published import keep, published
 
 PLATE = """\
 param w = 40 mm
@@ -300,6 +301,7 @@ def test_code_description_links_to_the_code_anchor():
 @pytest_lsp.fixture(scope="module", config=ClientServerConfig(
     server_command=[sys.executable, "-m", "aidl_lang.cli", "lsp", "--stdio"]))
 async def client(lsp_client: LanguageClient):
+    keep(lsp_client)
     lsp_client.refreshes = []
 
     @lsp_client.feature(T.WORKSPACE_INLAY_HINT_REFRESH)
@@ -366,11 +368,8 @@ async def test_server_inlay_hints_code_lens_and_toggle(client: LanguageClient, t
     client.text_document_did_change(T.DidChangeTextDocumentParams(
         text_document=T.VersionedTextDocumentIdentifier(uri=uri, version=2),
         content_changes=[T.TextDocumentContentChangeWholeDocument(text=PLATE.replace("Circle(", "Circel("))]))
-    while True:
-        p = await client.wait_for_notification(T.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
-        if p.uri == uri and p.version == 2:
-            break
-    assert [d.code for d in p.diagnostics] == ["E0103"]
+    diags = await published(client, uri, 2)
+    assert [d.code for d in diags] == ["E0103"]
     assert {h.label for h in await hints_now()} == set(labels)
 
 

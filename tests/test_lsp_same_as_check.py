@@ -14,9 +14,9 @@ import sys
 
 import pytest
 from lsprotocol import types as T
-from pytest_lsp import LanguageClient
 
 from conftest import ROOT
+from lsp_published import published
 
 REDUNDANT = ("solid s {\n    l1 = Line((0, 0), (10, 0))\n    Fixed(l1)\n    Horizontal(l1)\n"
              "    c = Circle(center=(0, 0), radius=3)\n    Fixed(c.center)\n}\n")
@@ -70,22 +70,6 @@ def _column(text: str, line: int, character: int) -> int:
 from test_lsp_editing import client  # noqa: E402,F401
 
 
-async def _published(client: LanguageClient, uri: str) -> list[T.Diagnostic]:
-    """The diagnostics the server publishes for ``uri``; a failure naming the file after
-    240 s without them (a hang guard: a loaded full run once waited here for minutes)."""
-    import asyncio
-
-    async def wait():
-        while True:
-            p = await client.wait_for_notification(T.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
-            if p.uri == uri:
-                return p.diagnostics
-    try:
-        return await asyncio.wait_for(wait(), 240)
-    except asyncio.TimeoutError:
-        pytest.fail(f"no diagnostics published for {uri} in 240 s")
-
-
 @pytest.mark.asyncio(loop_scope="module")
 async def test_the_server_publishes_what_aidl_check_reports_for_every_program(client, tmp_path):
     assert len(PROGRAMS) >= 80
@@ -107,7 +91,7 @@ async def test_the_server_publishes_what_aidl_check_reports_for_every_program(cl
         uri = path.as_uri()
         client.text_document_did_open(T.DidOpenTextDocumentParams(T.TextDocumentItem(
             uri=uri, language_id="aidl-cad", version=1, text=text)))
-        diags = await _published(client, uri)
+        diags = await published(client, uri)
         client.text_document_did_close(T.DidCloseTextDocumentParams(
             T.TextDocumentIdentifier(uri=uri)))
         got = sorted((d.code, d.range.start.line + 1,

@@ -464,7 +464,9 @@ async def test_from_the_wheel_the_language_server_initializes_and_diagnoses(plai
     from pytest_lsp import client_capabilities, make_test_lsp_client
     venv, _ = plain_install
     env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    from lsp_published import keep, published
     client = make_test_lsp_client()
+    keep(client)
     await client.start_io(str(venv / "bin" / "aidl"), "lsp", cwd=str(empty), env=env)
     try:
         init = await client.initialize_session(T.InitializeParams(
@@ -475,11 +477,8 @@ async def test_from_the_wheel_the_language_server_initializes_and_diagnoses(plai
         client.text_document_did_open(T.DidOpenTextDocumentParams(T.TextDocumentItem(
             uri=uri, language_id="aidl", version=1,
             text="solid s {\n    c = Circel(center=(0, 0), radius=5)\n}\n")))
-        for _ in range(20):
-            await client.wait_for_notification("textDocument/publishDiagnostics")
-            if client.diagnostics.get(uri):
-                break
-        assert "E0103" in {d.code for d in client.diagnostics[uri]}, client.diagnostics
+        diags = await published(client, uri, since=0, where=lambda p: bool(p.diagnostics))
+        assert "E0103" in {d.code for d in diags}, client.published
         await client.shutdown_session()
     finally:
         await client.stop()

@@ -18,6 +18,7 @@ import aidl_lang
 from aidl_lang.diagnostics import STDLIB
 from aidl_lang.mcp import tools as M
 from test_lsp import _open, client  # noqa: F401 - the language server over stdio (pytest-lsp)
+from lsp_published import published
 
 # the issue's case: five lines, the template's assert on gears.aidl's own line
 ISSUE = """import "std/gears.aidl"
@@ -306,10 +307,8 @@ def test_an_imported_file_s_syntax_error_is_at_the_import(tmp_path):
 async def _solved_diagnostics(client: LanguageClient, uri: str):
     """The diagnostics published for ``uri`` once they hold an error (the start-up's
     parse-and-check ones, empty here, come first)."""
-    while True:
-        p = await client.wait_for_notification(T.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
-        if p.uri == uri and any(d.severity == T.DiagnosticSeverity.Error for d in p.diagnostics):
-            return p.diagnostics
+    return await published(client, uri, where=lambda p: any(
+        d.severity == T.DiagnosticSeverity.Error for d in p.diagnostics))
 
 
 LSP_ROWS = [t for t in TABLE if t[1] in ("gear_train", "finger_panel", "keyhole", "washer",
