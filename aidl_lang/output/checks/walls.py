@@ -946,7 +946,7 @@ def _components(m: int, a: list, b: list) -> np.ndarray:
     return parent
 
 
-NECK_VERTS = 200_000   # W0507's neck search erodes the part whole: not past this many vertices
+NECK_VERTS = 200_000   # W0507's neck search: not past this many vertices of members that overlap
 
 
 def _outer_loops(cs) -> list:
@@ -1064,17 +1064,13 @@ def _check_necks(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
     # overlapping boxes) are united and eroded each on its own - the same as the whole eroded,
     # since an erosion never joins what lies apart (Clipper's offset of 5,000 disjoint circles
     # at once took 20 s; a decompose of 4,000 of slightly different radii 40 s)
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import connected_components
     from ..part.nearby import box_pairs
     pairs = box_pairs(np.array([f.bounds() for f in faces], dtype=float))
     if not len(pairs):
         return
-    _, group = connected_components(coo_matrix(
-        (np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(len(faces), len(faces))),
-        directed=False)
+    group = _components(len(faces), [pairs[:, 0]], [pairs[:, 1]])
     many = [_union([faces[k] for k in np.flatnonzero(group == g)])
-            for g in np.unique(group[pairs[:, 0]])]
+            for g in sorted(set(group[pairs[:, 0]].tolist()))]    # (np.unique: numpy.ma)
     n = sum(p.num_vert() for p in many)
     if n > NECK_VERTS:
         return
