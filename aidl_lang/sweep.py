@@ -72,6 +72,16 @@ class SweepReport:
     findings: list = field(default_factory=list)
     errors: list = field(default_factory=list)
 
+    def clean_ranges(self) -> dict:
+        """``{param: (lo, hi)}`` (display units): each swept param's declared range, narrowed
+        to the clean sub-range of every finding that moved it."""
+        out = {}
+        for f in self.findings:
+            for name, (lo, hi) in f.clean.items():
+                a, b = out.get(name, (lo, hi))
+                out[name] = (max(a, lo), min(b, hi))
+        return out
+
     @property
     def diagnostics(self) -> list[Diagnostic]:
         """The findings' ``W0110`` diagnostics."""
