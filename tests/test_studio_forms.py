@@ -119,7 +119,10 @@ def test_the_gallery_derives_a_range_from_an_assert_over_arguments():
     assert "param length = 20 mm, min=max(5 mm, width / 2 + 0.2 mm), max=80 mm" in src
     assert src.index("param width") < src.index("param length")
     rel = gallery.assert_relations(gallery.renderable_generators()["rounded_tab"])
-    assert rel == {"length": {"min": [("width / 2", True)], "max": []}}
+    assert rel == {"length": {"min": [("width / 2", True)], "max": []},
+                   "hole_d": {"min": [], "max": [("width - 1 mm", True)]}}
+    # `assert hole_d < width - 1 mm` (the eye's 0.5 mm wall, issue 84's sweep)
+    assert "param hole_d = 6 mm, min=1.5 mm, max=min(24 mm, width - 1 mm - 0.05 mm)" in src
 
 
 @pytest.mark.parametrize("name", sorted(p.stem for p in gallery.FORMS.glob("*.aidl")))
