@@ -7,7 +7,7 @@ import "std/gears.aidl"
 # meet flank on flank (the fit check, W0517): the play starts at 0.05 mm.
 param module = 2 mm, min = 0.5 mm, max = 6 mm, step = 0.25 mm
 param axle = 4 mm, min = 1 mm, max = min(16 mm, module * 9.5 - 1.1 mm), step = 0.05 mm
-param backlash = 0.05 mm, min = 0.05 mm, max = 1 mm, step = 0.05 mm
+param backlash = 0.05 mm, min = 0.05 mm, max = min(1 mm, module / 2), step = 0.05 mm  # more thins a small module's teeth to points
 param thickness = 3 mm, min = 1 mm, max = 12 mm, step = 0.5 mm
 param lift = 0 mm, min = 0 mm, max = 20 mm, step = 0.5 mm
 
