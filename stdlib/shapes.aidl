@@ -6,7 +6,7 @@
 # A flat washer: a ring with a concentric bore. `outer` and `inner` are
 # diameters. Members: `ring` (the Circle), `bore` (a hole; `bore.b` its Circle).
 def washer(outer=10 mm, inner=5 mm, cx=0 mm, cy=0 mm) -> solid {
-    assert inner < outer - 1 mm, "the bore leaves a ring more than 0.5 mm wide: inner < outer - 1 mm"
+    assert inner > 0 mm and inner < outer - 1 mm, "the bore is more than 0 and leaves a ring more than 0.5 mm wide: 0 mm < inner < outer - 1 mm"
     ring = Circle(center=(cx, cy), diameter=outer)
     hole bore {
         b = Circle(center=(cx, cy), diameter=inner)
