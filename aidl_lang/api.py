@@ -215,6 +215,7 @@ class Result:
         self._output = None
         self._redundant: list[Diagnostic] | None = None
         self._sliding = None           # what the freedom left means (find_redundant)
+        self.swept = None              # the last sweep() report (the forms' clean ranges)
         self.not_searched = 0          # user constraints find_redundant did not look at
         self.not_searched_why = ""     # why ("out of time", "too large")
         # the wall-time end (limits.Deadline) of the work read from the output after the
@@ -365,13 +366,16 @@ class Result:
         topology or a new warning appears, with the largest clean sub-range.  ``budget``: a
         factor or :class:`~aidl_lang.limits.Budget` for each compile and, in CPU seconds,
         for the whole sweep (``seconds`` overrides that total); ``points``: the Latin
-        hypercube's size (default :data:`aidl_lang.sweep.LHS_POINTS`).  Raises
+        hypercube's size (default :data:`aidl_lang.sweep.LHS_POINTS`).  The report is kept
+        as :attr:`swept`: a notebook form made from this result
+        (:func:`aidl_lang.notebook.form`) offers only its clean ranges.  Raises
         :class:`TypeError` for a result with no source text."""
         from .sweep import LHS_POINTS, sweep
         if self.source is None:
             raise TypeError("sweep() needs the program's source text")
-        return sweep(self.source, self.path, budget,
-                     LHS_POINTS if points is None else points, seconds)
+        self.swept = sweep(self.source, self.path, budget,
+                           LHS_POINTS if points is None else points, seconds)
+        return self.swept
 
     def find_redundant(self, seconds: float | None = REDUNDANCY_SECONDS,
                        max_rows: int | None = REDUNDANCY_ROWS,

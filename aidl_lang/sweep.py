@@ -72,6 +72,16 @@ class SweepReport:
     findings: list = field(default_factory=list)
     errors: list = field(default_factory=list)
 
+    def clean_ranges(self) -> dict:
+        """``{param: (lo, hi)}`` (display units): each swept param's declared range, narrowed
+        to the clean sub-range of every finding that moved it."""
+        out = {}
+        for f in self.findings:
+            for name, (lo, hi) in f.clean.items():
+                a, b = out.get(name, (lo, hi))
+                out[name] = (max(a, lo), min(b, hi))
+        return out
+
     @property
     def diagnostics(self) -> list[Diagnostic]:
         """The findings' ``W0110`` diagnostics."""
@@ -327,10 +337,9 @@ class _Sweep:
         res = self._compile(ov)
         for _ in range(CLAMPS):
             # a range (or step) that follows other params (docs/language.md, 2.3): the
-            # dependent params moved into it and onto its steps, as the studio's forms do
-            errs = [d for d in res.sink.items if d.is_error]
-            if errs and not any(d.code == "E0124" for d in errs):
-                break
+            # dependent params moved into it and onto its steps, as the studio's forms do -
+            # whatever the compile said: a value between the steps the form would not offer
+            # fails the program's own asserts (a planetary's sun off its counts)
             fixed = _into_ranges(res.fctx)
             if not fixed:
                 break

@@ -3,12 +3,14 @@
 # bottom edge up, each as wide as the material and half as deep as the overlap.
 # `Place` stands both pieces up, crossed at right angles, for the assembled view:
 #   aidl render examples/phone_stand.aidl --assembled -o stand.3mf
-# and the fit check (W0517) reports a slot narrower than the material:
+# A slot narrower than the material makes the pieces collide (the fit check,
+# W0517), so `slot`'s range stops at the sheet; with `min = 1 mm` written,
 #   aidl check examples/phone_stand.aidl --set slot=2.5mm
+# shows the collision.
 # Try: --set angle=60deg
 
 units mm
-param slot = 3 mm, min = 1 mm, max = 6 mm, step = 0.5 mm
+param slot = 3 mm, min = 3 mm, max = 6 mm, step = 0.5 mm  # never under the sheet: the pieces collide
 param angle = 70 deg, min = 50 deg, max = 80 deg, step = 5 deg
 thickness 3 mm
 

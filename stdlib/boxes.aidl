@@ -205,7 +205,7 @@ def hinged_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=
     ll = lo + 2 * t + 2 * c                     # the lid, over the cheeks
     assert c >= 0 mm and c < t, "the clearance is between 0 and the thickness"
     rh = (sqrt(p * p + t * t) + c) / 2  # the cheek's hole: round about the pin's corners
-    r = rh + t / 3                      # the cheek's lobe about the pivot
+    r = rh + max(t / 3, 0.6 mm)         # the cheek's lobe about the pivot: a wall over 0.5 mm
     b = 2 * r                           # the pivot below the lid, `r` in from the back
     g = b - sqrt(b * b - r * r) + c     # the walls lowered behind the pivot
     run = hb - 2 * t                    # the side walls' back finger joint (finger_panel's)

@@ -282,6 +282,9 @@ def planetary(sun=12, planet=18, ring=48, planets=3, module=2 mm, axle=4 mm,
     near = min([abs(f - sun) for f in fits])
     sun_ok = [f for f in fits if abs(f - sun) == near][0]
     assert sun == sun_ok, "(ring + sun) must divide by planets for the planets to sit evenly: use the right side's sun count and ring = sun + 2 * planet"
+    # neighbouring planets, (sun + planet) x module x sin(180 deg / planets) apart, clear
+    # each other's tips (planet + 2 modules across)
+    assert (sun + planet) * sin(180 deg / planets) > planet + 2, "the planets run into each other: fewer planets, a larger sun or smaller planets ((sun + planet) x sin(180 deg / planets) > planet + 2)"
     center_distance = module * (sun + planet) / 2
     rr = module * ring / 2
     sun_gear = spur_gear(teeth=sun, module=module, bore=axle, backlash=backlash, cx=cx, cy=cy)

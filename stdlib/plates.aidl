@@ -32,6 +32,12 @@ def chamfered_plate(width=80 mm, height=50 mm, chamfer=5 mm, cx=0 mm, cy=0 mm) -
 # bottom left).
 def mounting_plate(width=80 mm, height=50 mm, corner_radius=4 mm, screw=3, fit="medium",
                    inset=6 mm, cx=0 mm, cy=0 mm) -> solid {
+    # each hole (a clearance hole at most 1.3 x screw across, at the coarse fit) keeps a wall
+    # of more than 0.5 mm to the straight edges, the rounded corner and the next hole
+    assert inset > 0.65 mm * screw + 0.5 mm, "the holes break through the edges: inset > 0.65 mm * screw + 0.5 mm (a wall of 0.5 mm beside a clearance hole 1.3 x screw across)"
+    assert inset < height / 2 - 0.65 mm * screw - 0.25 mm, "the holes at the top and bottom merge: inset < height / 2 - 0.65 mm * screw - 0.25 mm"
+    assert inset < width / 2 - 0.65 mm * screw - 0.25 mm, "the holes at the left and right merge: inset < width / 2 - 0.65 mm * screw - 0.25 mm"
+    assert corner_radius < (1.4142 * inset - 0.65 mm * screw - 0.5 mm) / 0.4142, "the rounded corners cut into the holes: corner_radius < (1.4142 * inset - 0.65 mm * screw - 0.5 mm) / 0.4142 (or a larger inset)"
     body = RoundedRectangle(center=(cx, cy), width=width, height=height, corner_radius=corner_radius)
     Fixed(body.center)
     for k in range(4) {

@@ -6,6 +6,7 @@
 # A flat washer: a ring with a concentric bore. `outer` and `inner` are
 # diameters. Members: `ring` (the Circle), `bore` (a hole; `bore.b` its Circle).
 def washer(outer=10 mm, inner=5 mm, cx=0 mm, cy=0 mm) -> solid {
+    assert inner > 0 mm and inner < outer - 1 mm, "the bore is more than 0 and leaves a ring more than 0.5 mm wide: 0 mm < inner < outer - 1 mm"
     ring = Circle(center=(cx, cy), diameter=outer)
     hole bore {
         b = Circle(center=(cx, cy), diameter=inner)
@@ -32,6 +33,7 @@ def bolt_circle(count=6, pcd=40 mm, hole_d=5 mm, start=0 deg,
 # Members: `stem` (Rectangle), `end` (Circle), `eye` (the hole; `eye.e`).
 def rounded_tab(width=20 mm, length=20 mm, hole_d=6 mm, cx=0 mm, cy=0 mm) -> solid {
     assert length > width / 2, "the round end's center is above the base: length > width / 2"
+    assert hole_d < width - 1 mm, "the eye leaves a wall more than 0.5 mm wide in the round end: hole_d < width - 1 mm"
     stem = Rectangle(bottom_left=(cx - width / 2, cy), width=width, height=length - width / 2)
     end = Circle(center=(cx, cy + length - width / 2), diameter=width)
     hole eye {

@@ -243,7 +243,8 @@ def test_render_assembled_cli(tmp_path):
 def test_assembled_png_draws_a_collision_in_red(compile_text):
     from PIL import Image
     from aidl_lang.output import Options, build, encode
-    src = (ROOT / "examples" / "phone_stand.aidl").read_text()
+    # the example's range stops at the sheet (3 mm): opened to 1 mm to show the collision
+    src = (ROOT / "examples" / "phone_stand.aidl").read_text().replace("min = 3 mm, max = 6 mm", "min = 1 mm, max = 6 mm")
     for slot, reds in (("3mm", False), ("2.5mm", True)):
         c = compile_text(src, overrides={"slot": slot})
         png = encode(build(c.drawing), ".png", Options(assembled=True, width=240))

@@ -142,7 +142,10 @@ async def test_preview_request_assembled_carries_the_glb(client: LanguageClient)
     uri = path.as_uri()
     client.text_document_did_open(T.DidOpenTextDocumentParams(
         text_document=T.TextDocumentItem(uri=uri, language_id="aidl-cad", version=1,
-                                         text=path.read_text())))
+                                         # the range stops at the sheet (3 mm): opened
+                                         # to 1 mm to show the collision
+                                         text=path.read_text().replace(
+                                             "min = 3 mm, max = 6 mm", "min = 1 mm, max = 6 mm"))))
     r = pv.plain(await client.protocol.send_request_async("aidl/preview", {"uri": uri}))
     assert r["ok"] and "glb" not in r
     r = pv.plain(await client.protocol.send_request_async(

@@ -289,7 +289,9 @@ async def test_render_assembled_returns_the_product_in_3d(tmp_path):
     from PIL import Image
     root = tmp_path / "work"
     root.mkdir()
-    (root / "stand.aidl").write_text((ROOT / "examples" / "phone_stand.aidl").read_text())
+    # the example's range stops at the sheet (3 mm): opened to 1 mm to show the collision
+    (root / "stand.aidl").write_text((ROOT / "examples" / "phone_stand.aidl").read_text()
+                                     .replace("min = 3 mm, max = 6 mm", "min = 1 mm, max = 6 mm"))
     params = _server(root)
     async with stdio_client(params) as (read, write):
         async with ClientSession(read, write) as session:

@@ -386,3 +386,19 @@ def test_the_example_notebook_runs_and_shows_the_drawing_and_the_form(tmp_path, 
     last = code[4].outputs
     assert "{'bolts': '6'}" in last[0].text
     assert_bracket(last[1].data["image/svg+xml"], 6)
+
+
+def test_a_form_made_from_a_swept_result_offers_only_the_clean_range():
+    """Issue 84: after `Result.sweep()` the form's sliders span the clean range the sweep
+    found (a hole that leaves its 50 mm plate past offset = 21.5 mm: the slider stops there),
+    not the declared 0..30 mm; a result never swept keeps the declared range."""
+    from aidl_lang.notebook import form
+    src = ("param offset = 10 mm, min = 0 mm, max = 30 mm, step = 0.5 mm\n"
+           "solid plate {\n    body = Rectangle(center=(0, 0), width=50, height=30)\n"
+           "    hole h { c = Circle(center=(offset, 0), radius=3) }\n}\n")
+    r = aidl_lang.compile(source=src, path="plate.aidl")
+    assert (form(r).controls["offset"].min, form(r).controls["offset"].max) == (0, 30)
+    [f] = r.sweep(points=0).findings
+    c = form(r).controls["offset"]
+    assert c.min == 0 and c.max == f.clean["offset"][1] and 21 <= c.max <= 21.5
+    assert c.value == 10

@@ -162,28 +162,11 @@ async def test_mcp_check_with_sweep_through_the_sdk_client(tmp_path):
 # every example and generator of the gallery (aidl_lang/studio/gallery.py: examples/*.aidl,
 # examples/generators/*.aidl, the studio's forms, the synthesized generator programs) with
 # ranged params, swept at each param's ends and middle (no Latin hypercube in the suite: the
-# ends find what the combinations found, at a third of the points).  Left as found, with
-# what the sweep reports (h12-sweep's closing note): their ranges come from the generators'
-# own asserts (gallery.slider_range) or need the generator changed, not one number narrowed.
-LEFT = {
-    "example/phone_stand": "slot under the 3 mm sheet: the parts collide (W0517); kept: the "
-                           "suite shows that collision with slot=2.5 mm (test_assembly, "
-                           "test_checks, test_mcp, test_lsp_preview)",
-    "generator/divider_tray": "rows=6, cols=6: halving slots of the dividers break through "
-                              "their outline (W0510)",
-    "generator/flex_box": "height under 22 mm: the flex cuts cut the wall apart (W0510)",
-    "generator/gear_train": "module=0.5 mm: thin wall at the bore (W0507); backlash=0: the "
-                            "gears collide (W0517)",
-    "generator/hinged_box": "thickness=1 mm: thin wall at the cheek's bore (W0507)",
-    "generator/mounting_plate": "height=12.5 mm, corner_radius=16 mm, inset at either end: "
-                                "holes merge or leave the plate (W0508, W0507, W0510)",
-    "generator/planetary": "planets=5 (W0511), planet and sun off the evenly-spaced counts "
-                           "(E0405), module=0.5 mm (W0507)",
-    "generator/rack_and_pinion": "teeth=8: rack and pinion collide (W0517)",
-    "generator/rounded_tab": "width=5 mm, hole_d=24 mm: the eye leaves the tab (W0510, W0504)",
-    "generator/text_on_arc": "spacing=0.2: letters drawn over each other (W0513)",
-    "generator/washer": "outer=2.5 mm, inner=10.6 mm: the bore removes the washer (W0503)",
-}
+# ends find what the combinations found, at a third of the points).  h12-sweep left 11 entries
+# here; h13-sweep fixed the designs (washer, rounded_tab, mounting_plate, planetary asserts;
+# hinged_box's cheek wall; W0510 on a count's new holes) or narrowed the ranges (phone_stand's
+# slot, the gear forms, flex_box's height, text spacing): none is left.
+LEFT: dict = {}
 
 
 def _ranged():
@@ -203,3 +186,109 @@ def test_every_gallery_entry_is_clean_across_its_declared_ranges(entry, tmp_path
     assert rep.ok
     assert rep.findings == [], "\n".join(
         f"{d.message}\n  {d.hint}" for d in rep.diagnostics)
+
+
+# ------------------------------------------------------------- what the sweep found, fixed
+def _diags(src, tmp_path, overrides=None):
+    f = tmp_path / "main.aidl"
+    f.write_text(src)
+    r = aidl_lang.compile(source=src, path=str(f), overrides=overrides)
+    return r, [d for d in r.diagnostics]
+
+
+@pytest.mark.parametrize("call, found, said", [
+    # the values the sweep found breaking: a warning (or a part falling apart) before, now a
+    # located error that names the bound
+    ("washer(outer=2.5 mm, inner=5 mm)", "W0503", "inner < outer - 1 mm"),
+    ("washer(outer=10 mm, inner=9.5 mm)", "W0507", "inner < outer - 1 mm"),
+    ("rounded_tab(width=5 mm, length=20 mm, hole_d=6 mm)", "W0510", "hole_d < width - 1 mm"),
+    ("rounded_tab(width=20 mm, length=20 mm, hole_d=19.5 mm)", "W0507", "hole_d < width - 1 mm"),
+    ("mounting_plate(width=80 mm, height=12.5 mm)", "W0508", "inset < height / 2"),
+    ("mounting_plate(width=80 mm, height=50 mm, corner_radius=16 mm)", "W0507", "corner_radius <"),
+    ("mounting_plate(width=80 mm, height=50 mm, inset=1.5 mm)", "W0510", "inset > 0.65 mm"),
+])
+def test_an_impossible_combination_is_a_located_error_naming_its_bound(call, found, said,
+                                                                       tmp_path):
+    mod = "plates" if "mounting" in call else "shapes"
+    src = f'units mm\nimport "std/{mod}.aidl"\nsolid s {{\n    p = {call}\n}}\n'
+    r, ds = _diags(src, tmp_path)
+    errs = [d for d in ds if d.is_error]
+    assert not r.ok and errs[0].code == "E0405" and said in errs[0].message
+    assert errs[0].span.line == 4                 # the call, in the user's file
+
+
+def test_the_bounds_leave_the_clean_values_clean(tmp_path):
+    """Just inside each new bound the parts compile with no warning: the bounds are the
+    walls the checks ask for (0.5 mm), not a margin that refuses good designs."""
+    src = ('units mm\nimport "std/shapes.aidl"\nimport "std/plates.aidl"\n'
+           "solid a { p = washer(outer=10 mm, inner=8.9 mm) }\n"
+           "solid b { p = rounded_tab(width=20 mm, length=20 mm, hole_d=18.9 mm, cx=40 mm) }\n"
+           "solid c { p = mounting_plate(width=80 mm, height=50 mm, corner_radius=14.5 mm,"
+           " cy=80 mm) }\n"
+           "solid d { p = mounting_plate(width=80 mm, height=16.7 mm, screw=3, inset=4 mm,"
+           " cy=-60 mm) }\n")
+    r, ds = _diags(src, tmp_path)
+    assert r.ok and [d.code for d in ds if d.severity != "info"] == []
+
+
+def test_planets_that_run_into_each_other_are_an_error(tmp_path):
+    """planets=5 of 18 teeth about a sun of 12: 30 x sin 36 deg = 17.6 < 20 (W0511, the
+    planets interpenetrate, before); 4 fit (21.2 > 20)."""
+    src = ('units mm\nimport "std/gears.aidl"\nthickness 3 mm\n'
+           "assembly a {{\n    s = planetary(sun=12, planet=18, ring=48, planets={n})\n}}\n")
+    r, ds = _diags(src.format(n=5), tmp_path)
+    [e] = [d for d in ds if d.is_error]
+    assert e.code == "E0405" and "planets run into each other" in e.message
+    assert e.span.line == 5
+    r, ds = _diags(src.format(n=4).replace("sun=12", "sun=12"), tmp_path)
+    assert r.ok and not [d for d in ds if d.code in ("W0511", "W0517")]
+
+
+def test_a_thin_sheet_hinged_box_keeps_its_cheek_wall(tmp_path):
+    """thickness=1 mm: the cheek's lobe was a third of the sheet about its bore (a 0.33 mm
+    wall, W0507); it is now at least 0.6 mm."""
+    src = ('units mm\nimport "std/boxes.aidl"\nthickness 1 mm\n'
+           "assembly a {\n    box = hinged_box(length=140 mm, width=90 mm, height=60 mm,"
+           " thickness=1 mm, clearance=0.3 mm)\n}\n")
+    r, ds = _diags(src, tmp_path)
+    assert r.ok and [d.message for d in ds if d.code == "W0507"] == []
+
+
+def test_a_count_that_adds_notches_like_its_siblings_is_no_topology_change():
+    """divider_tray --set rows=5: two more halving slots per divider, each reaching the top
+    edge as the first two do: no W0510 (three before); a new hole that breaks through where
+    its siblings do not still is one."""
+    from aidl_lang.studio import gallery
+    r = gallery.compile_entry(gallery.entry("generator/divider_tray"), {"rows": "5"})
+    assert r.ok and [d.message for d in r.diagnostics if d.code == "W0510"] == []
+    src = ("param n = 2, min = 1, max = 4\n"
+           "solid plate {\n    body = Rectangle(center=(0, 0), width=60, height=20)\n"
+           "    for i in range(n) {\n"
+           "        hole h { c = Circle(center=(-20 + 10 * i, 0), radius=2) }\n    }\n}\n")
+    r = aidl_lang.compile(source=src, path="p.aidl", overrides={"n": "4"})   # x = 10: inside
+    assert [d.message for d in r.diagnostics if "breaks through" in d.message] == []
+    r = aidl_lang.compile(source=src.replace("10 * i", "12.25 * i * i"), path="p.aidl",
+                          overrides={"n": "3"})                       # x = 29: over the edge
+    [w] = [d for d in r.diagnostics if d.code == "W0510"]
+    assert "hole `plate.h[2]` now breaks through the outline" in w.message
+
+
+STEPPED = """param n = 3, min = 2, max = 4
+param k = 6, min = n, max = 12, step = n
+
+assert k % n == 0, "k counts whole groups of n"
+solid plate { body = Rectangle(center=(0, 0), width=10 * k, height=10) }
+"""
+
+
+def test_a_dependent_param_is_moved_onto_its_steps_before_the_program_judges_it():
+    """n=4 leaves k=6 inside its range but between its steps (4, 8, 12): the form offers 8,
+    and so does the sweep now (it judged 6 and reported the program's own assert, E0405)."""
+    rep = sweep(STEPPED, "s.aidl", points=0)
+    assert rep.ok and rep.swept == ["n", "k"] and rep.findings == []
+
+
+def test_a_text_spacing_slider_starts_where_letters_stop_overlapping():
+    from aidl_lang.studio.gallery import slider_range
+    assert slider_range("spacing", "number", 0.9)[:2] == pytest.approx((0.6, 3.6))
+    assert slider_range("gain", "number", 0.9)[:2] == pytest.approx((0.2, 3.6))

@@ -30,11 +30,13 @@ def _widgets():
     return ipywidgets
 
 
-def form(source: str | os.PathLike, path: str | os.PathLike | None = None,
+def form(source: str | os.PathLike | api.Result, path: str | os.PathLike | None = None,
          debounce: float = 0.25, budget: float | None = None) -> Form:
     """A :class:`Form` for the program ``source``: its text, or a path to it (an
     :class:`os.PathLike`, or a one-line string ending in ``.aidl``: the file is read as
-    UTF-8, with the sandbox of :func:`aidl_lang.compile`).  ``path``: the name diagnostics
+    UTF-8, with the sandbox of :func:`aidl_lang.compile`), or a compiled
+    :class:`aidl_lang.Result` (its program; after :meth:`~aidl_lang.Result.sweep`, each
+    slider spans only the clean range the sweep found, still holding the param's value).  ``path``: the name diagnostics
     are located in and where ``import "x.aidl"`` resolves from, when ``source`` is text
     (default ``<source>``).  ``debounce``: seconds a change waits for the next before the
     program is compiled again (0: at once).  ``budget``: a factor of the default evaluation
@@ -47,7 +49,9 @@ def form(source: str | os.PathLike, path: str | os.PathLike | None = None,
     widgets = _widgets()
     if not debounce >= 0:
         raise ValueError(f"debounce expects seconds >= 0, got {debounce!r}")
-    if isinstance(source, os.PathLike) or (
+    if isinstance(source, api.Result):
+        first = source
+    elif isinstance(source, os.PathLike) or (
             isinstance(source, str) and "\n" not in source and source.strip().endswith(".aidl")):
         first = api.compile(path=os.fspath(source).strip(), budget=budget)
     else:
@@ -83,6 +87,12 @@ class Form:
         self._quiet = False
         declared = declared_params(self.source, self.path) if self.source is not None else None
         self.params = declared or []
+        swept = getattr(first, "swept", None)
+        clean = swept.clean_ranges() if swept is not None and swept.ok else {}
+        for p in self.params:
+            if p.name in clean and p.kind in ("length", "angle", "number"):
+                lo, hi = clean[p.name]        # the sweep's clean range, the value kept in it
+                p.min, p.max = max(p.min, min(lo, p.value)), min(p.max, max(hi, p.value))
         self.controls = {p.name: self._control(p) for p in self.params}
         for c in self.controls.values():
             c.observe(self._changed, names="value")

@@ -422,7 +422,8 @@ def slider_range(name: str, kind: str, value: float,
     Thicknesses 1..12 mm; clearances and backlash 0..4x (at least 1 mm); a gear module
     0.5..6 mm; other lengths 0.25x..4x (0..20 mm for a default of 0); a pressure angle
     14.5..30 deg, a turn -180..180 deg, a slope 0.25x..2x (under 90 deg); gear teeth 8..4x;
-    metric screw sizes 2..8; other counts 1..12; other numbers 0.25x..4x; then narrowed to
+    metric screw sizes 2..8; other counts 1..12; a text's ``spacing`` (in character heights)
+    0.6..4x; other numbers 0.25x..4x; then narrowed to
     ``bounds`` (``(lo, hi)``, either None), what the generator asserts
     (:func:`assert_bounds`)."""
     v = float(value)
@@ -455,6 +456,11 @@ def slider_range(name: str, kind: str, value: float,
                 lo, hi = 2.0, 8.0
             else:
                 lo, hi = (1.0, max(12.0, v)) if v > 0 else (min(v, 0.0), 12.0)
+        elif name == "spacing" and v > 0:
+            # a spacing in character heights: under 0.6 a letter's advance, the letters are
+            # drawn over each other (W0513)
+            step = _nice(abs(v) / 100)
+            lo, hi = max(0.6, v / 4), v * 4
         else:
             step = _nice(abs(v) / 100)
             lo, hi = sorted((v / 4, v * 4))

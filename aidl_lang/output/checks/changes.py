@@ -5,6 +5,8 @@ run by the pipeline and the live preview when param values are overridden; :func
 is taken once for the defaults)."""
 from __future__ import annotations
 
+import re
+
 import numpy as np
 
 from ...records import Compared
@@ -110,6 +112,11 @@ def _count(n: int, what: str) -> str:
     return f"{n} {what}" + ("" if n == 1 else "s")
 
 
+def _family(hole: str) -> str:
+    """A hole's name with its indices left out: ``"p.halving[]"`` for ``"p.halving[4]"``."""
+    return re.sub(r"\[\d+\]", "[]", hole)
+
+
 def topology_changes(base: Topology, new: Topology) -> list[str]:
     """What changed from ``base`` (the defaults) to ``new``, in words, most telling first."""
     out = []
@@ -127,8 +134,12 @@ def topology_changes(base: Topology, new: Topology) -> list[str]:
         if m <= new.holes:
             a, b = sorted(m)
             out.append(f"{a} and {b} no longer merge")
+    # a hole a count added (`halving[4]` of 5 where the defaults made 3) is judged by its
+    # siblings: one more of a family of notches that reach the outline by design is no change
+    notching = {_family(h) for h in base.notches}
     for h in sorted(new.notches - base.notches):
-        out.append(f"{h} now breaks through the outline")
+        if h in base.holes or _family(h) not in notching:
+            out.append(f"{h} now breaks through the outline")
     for h in sorted(base.notches - new.notches):
         if h in new.holes:
             out.append(f"{h} no longer reaches the outline")

@@ -4,13 +4,14 @@ import "std/boxes.aidl"
 
 # How the arguments depend on each other: the corner radius is at least twice the thickness
 # (once, measured inside) plus the clearance and at most half the width and the length; the
-# box is taller than four thicknesses (two inside); the clearance is under the thickness.
+# wall between the base and the lid is at least 17 mm tall (its flex cuts are 15 mm long: a
+# lower wall is cut apart, W0510); the clearance is under the thickness.
 param thickness = 3 mm, min = 1 mm, max = 12 mm, step = 0.5 mm
 param clearance = 0.3 mm, min = 0 mm, max = thickness / 2, step = 0.05 mm
 param outside = true
 param length = 120 mm, min = 2 * ((2 * thickness if outside else thickness) + clearance) + 10 mm, max = 480 mm, step = 1 mm
 param width = 80 mm, min = 2 * ((2 * thickness if outside else thickness) + clearance) + 10 mm, max = 320 mm, step = 0.5 mm
-param height = 50 mm, min = (4 if outside else 2) * thickness + 5 mm, max = 200 mm, step = 0.5 mm
+param height = 50 mm, min = (2 if outside else 0) * thickness + 17 mm, max = 200 mm, step = 0.5 mm
 param radius = 20 mm, min = (2 * thickness if outside else thickness) + clearance, max = min(length, width) / 2, step = 0.2 mm
 
 thickness thickness
