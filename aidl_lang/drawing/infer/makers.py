@@ -5,6 +5,7 @@ size (:meth:`_MakerFeatures.kind_params`) and placed from the body (:mod:`.ancho
 loops are recognised by :mod:`.features`."""
 from __future__ import annotations
 
+from .bores import _BoreFeatures
 from .features import arc_slot, d_hole, keyhole, merged
 from .params import _deg, _r
 
@@ -22,7 +23,7 @@ def _sum(term: str) -> bool:
     return False
 
 
-class _MakerFeatures:
+class _MakerFeatures(_BoreFeatures):
     """The writing half of :class:`~.infer._Part` for makers' holes: needs ``w``, ``stats``,
     ``kinds`` (``{(kind, sizes): params}``), ``name``, ``p``, ``pos``, ``edge`` and
     ``span_at``."""
@@ -33,6 +34,8 @@ class _MakerFeatures:
         (:meth:`pos`); False when the loop is none of them."""
         w = self.w
         segs = merged(segs)
+        if self.bore_hole(depth, segs):     # a double-D or a keyway (:mod:`.bores`)
+            return True
         got = arc_slot(segs)
         if got is not None:
             C, R, a0, a1, wd = got

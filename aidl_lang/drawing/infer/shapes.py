@@ -204,6 +204,9 @@ def _as_rrect(segs):
 
 
 def _as_slot(segs):
+    if len(segs) > 4:               # half circles split at their quadrants (an SVG path's
+        from .features import merged    # arcs, a reader's): the slot's four pieces
+        segs = merged(segs)
     arcs = [s for s in segs if isinstance(s, Arc)]
     lines = [s for s in segs if isinstance(s, Line)]
     if len(segs) != 4 or len(arcs) != 2 or len(lines) != 2:
