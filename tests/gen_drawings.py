@@ -384,6 +384,7 @@ class Design:
             if k == "keyway":
                 add("size", "d", "bore", [(r"(bore_)?(d|dia|diameter)", 1.0)])
                 add("size", "kw", "key width", [(r"(key_)?(w|width)", 1.0)])
+                add("size", "depth", "key depth", [(r"(key_)?depth", 1.0)])
             if k == "ventrow":
                 add("size", "length", "slot length", [(r"length|len|l", 1.0)])
                 add("pitch", "p", "pitch", P)
