@@ -145,3 +145,21 @@ def test_generated_new_kinds_read_back_and_infer_exactly(tmp_path_factory, seed,
     tmp = tmp_path_factory.mktemp("g")
     r = bench.run_drawing(d, tmp, random.Random(seed), k=0)
     assert r["exact"] and not r["error"], (d.describe(), r["program"], r["error"])
+
+
+def test_each_size_of_a_kind_has_its_own_numbered_params(tmp_path):
+    """Three double-D holes of three sizes: ``ddhole_d``, ``ddhole_2_d``, ``ddhole_3_d`` (not
+    ``ddhole_2_2_d``: the holes' names are not the params'), each editing its own hole."""
+    feats = [{"kind": "ddhole", "ax": ("L", 15 + 30 * k), "ay": ("C", 0.0), "d": 10 + 2 * k,
+              "af": 7 + k, "angle": 0} for k in range(3)]
+    d = gen.Design("mm", 120, 60, ("square", 0.0), (0.0, 0.0), feats)
+    d.style = {"format": "dxf", "layers": None, "blocks": False, "bulges": True,
+               "insunits": True}
+    assert d.valid()
+    text, _ = import_drawing(gen.to_dxf(d), "m.dxf", infer=True)
+    names = re.findall(r"^param (ddhole\w*_d) = ([0-9.]+) mm$", text, re.M)
+    assert sorted(n for n, _ in names) == ["ddhole_2_d", "ddhole_3_d", "ddhole_d"], text
+    e = next(e for e in d.edits() if e.feature == 1 and e.key == "d")
+    got = bench.output_of(text, tmp_path / "e.aidl", {dict((v, n) for n, v in names)["12"]:
+                                                      "13 mm"})
+    assert bench.compare(d.edited(e, 13), got, tmp_path) == [], text

@@ -136,7 +136,7 @@ class _MakerFeatures(_BoreFeatures):
         if key not in self.kinds:
             if len(self.kinds) >= SINGLE_PARAMS:
                 return [_r(v) for _, v in sizes]
-            first = next((k for k in self.kinds if k[0] == kind), None) is None
-            base = kind if first else self.name(kind + "_2")
+            k = 1 + sum(key[0] == kind for key in self.kinds)    # this kind's k-th size
+            base = kind if k == 1 else f"{kind}_{k}"   # (params: a namespace of their own)
             self.kinds[key] = [self.p(f"{base}_{n}", v) for n, v in sizes]
         return self.kinds[key]
