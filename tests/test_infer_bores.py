@@ -20,7 +20,7 @@ import aidl_lang
 import gen_drawings as gen
 from aidl_lang.drawing.infer import import_drawing
 from aidl_lang.drawing.infer.bores import double_d, keyway
-from aidl_lang.drawing.infer.features import merged
+from aidl_lang.drawing.infer.shapes import merged
 from aidl_lang.geometry.curves import Arc, Line
 from benchmarks import infer_edits as bench
 

@@ -7,7 +7,7 @@ bore) by :meth:`_BoreFeatures.bore_hole`, placed from the body (:mod:`.anchors`)
 
 The recognisers take the loop's pieces (:class:`~aidl_lang.geometry.curves.Arc` and
 ``Line``, in any order and direction, arcs on one circle joined by
-:func:`~.features.merged`) and return the numbers the program writes (mm, radians) or None.
+:func:`~.shapes.merged`) and return the numbers the program writes (mm, radians) or None.
 """
 from __future__ import annotations
 

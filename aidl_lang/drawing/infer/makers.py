@@ -6,7 +6,8 @@ loops are recognised by :mod:`.features`."""
 from __future__ import annotations
 
 from .bores import _BoreFeatures
-from .features import arc_slot, d_hole, keyhole, merged
+from .features import arc_slot, d_hole, keyhole
+from .shapes import merged
 from .params import _deg, _r
 
 SINGLE_PARAMS = 12     # a part with more holes of sizes no other has: their sizes as numbers
