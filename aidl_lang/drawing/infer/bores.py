@@ -101,11 +101,9 @@ class _BoreFeatures:
         """A double-D hole or a keyway (the merged loop ``segs``) written as a ``hole`` at its
         centre placed from the body, with size params shared by the holes of its kind and
         size; False when the loop is neither."""
-        w = self.w
         got = double_d(segs)
         if got is not None:
             c, d, af, ang = got
-            hn = self.name("ddhole")
             D, F = self.kind_params("ddhole", (("d", d), ("flat", af)))
             turn = f"{_deg(ang)} " if abs(ang) > 1e-15 else ""
 
@@ -113,33 +111,35 @@ class _BoreFeatures:
                 if not turn:
                     return term
                 return f"{turn}{'- ' + term[1:] if term.startswith('-') else '+ ' + term}"
-            w.emit(depth, f"hole {hn} {{")
-            w.emit(depth + 1, f"c = {self.pos(c)}")
-            w.emit(depth + 1, f"t = acos({F} / {D})")
-            for k, (a0, a1) in enumerate((("t", "180 deg - t"), ("180 deg + t", "-t"))):
-                w.emit(depth + 1, f"e{k} = Arc(center=c, start=polar(c, {D} / 2, {at(a0)}), "
-                                  f"end=polar(c, {D} / 2, {at(a1)}))")
-            w.emit(depth + 1, "e2 = Line(start=e0.end, end=e1.start)")
-            w.emit(depth + 1, "e3 = Line(start=e1.end, end=e0.start)")
-            w.emit(depth, "}")
-            w.emit(depth, f"for x in [{hn}.e0, {hn}.e1] {{ Fixed(x) }}")
-            self.stats.kinds["double-D"] += 1
+            arcs = [f"e{k} = Arc(center=c, start=polar(c, {D} / 2, {at(a0)}), "
+                    f"end=polar(c, {D} / 2, {at(a1)}))"
+                    for k, (a0, a1) in enumerate((("t", "180 deg - t"), ("180 deg + t", "-t")))]
+            self._bore(depth, "ddhole", "double-D", c, [f"t = acos({F} / {D})", *arcs,
+                                                        "e2 = Line(start=e0.end, end=e1.start)",
+                                                        "e3 = Line(start=e1.end, end=e0.start)"],
+                       ["e0", "e1"])
             return True
         got = keyway(segs)
         if got is not None:
             c, d, kw, kd, ang = got
-            hn = self.name("keyway")
             D, W, K = self.kind_params("keyway", (("d", d), ("w", kw), ("depth", kd)))
             A, S0, S1 = (_deg(x) for x in (ang, ang - math.pi / 2, ang + math.pi / 2))
-            w.emit(depth, f"hole {hn} {{")
-            w.emit(depth + 1, f"c = {self.pos(c)}")
-            w.emit(depth + 1, f"top = polar(c, {D} / 2 + {K}, {A})")
             corners = ", ".join(f"polar({p}, {W} / 2, {s})"
                                 for p, s in (("c", S0), ("top", S0), ("top", S1), ("c", S1)))
-            w.emit(depth + 1, f"bore = Circle(center=c, diameter={D})")
-            w.emit(depth + 1, f"key = Polygon([{corners}])")
-            w.emit(depth, "}")
-            w.emit(depth, f"for x in [{hn}.bore, {hn}.key] {{ Fixed(x) }}")
-            self.stats.kinds["keyway"] += 1
+            self._bore(depth, "keyway", "keyway", c, [f"top = polar(c, {D} / 2 + {K}, {A})",
+                                                      f"bore = Circle(center=c, diameter={D})",
+                                                      f"key = Polygon([{corners}])"],
+                       ["bore", "key"])
             return True
         return False
+
+    def _bore(self, depth: int, base: str, kind: str, c, lines: list, fixed: list) -> None:
+        """``hole <base> { c = <c placed>; lines }`` and the ``Fixed`` of its ``fixed``
+        members, counted as ``kind``."""
+        hn = self.name(base)
+        self.w.emit(depth, f"hole {hn} {{")
+        for ln in [f"c = {self.pos(c)}", *lines]:
+            self.w.emit(depth + 1, ln)
+        self.w.emit(depth, "}")
+        self.w.emit(depth, f"for x in [{', '.join(f'{hn}.{x}' for x in fixed)}] {{ Fixed(x) }}")
+        self.stats.kinds[kind] += 1
