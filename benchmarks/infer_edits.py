@@ -318,12 +318,13 @@ def run_drawing(design, tmp: pathlib.Path, rng, k: int = 5) -> dict:
     return out
 
 
-def designs(seed: int):
-    """Random designs from ``seed``, forever: each kind of feature in turn is in the next."""
+def designs(seed: int, kinds: tuple = gen.KINDS):
+    """Random designs from ``seed``, forever: each of ``kinds`` in turn is in the next (the
+    others drawn from ``kinds``; the default, :data:`gen.KINDS`, draws what it always drew)."""
     rng = random.Random(seed)
     i = 0
     while True:
-        yield gen.random_design(rng, [gen.KINDS[i % len(gen.KINDS)]]), rng
+        yield gen.random_design(rng, [kinds[i % len(kinds)]], pool=kinds), rng
         i += 1
 
 
@@ -340,7 +341,7 @@ def _table(title: str, rows: dict) -> None:
 
 
 def run_generated(seed: int, count: int, per: int = 5, keep: pathlib.Path | None = None,
-                  verbose: bool = False) -> dict:
+                  verbose: bool = False, kinds: tuple = gen.KINDS) -> dict:
     """At least ``count`` edits of generated drawings from ``seed``: prints the tables and
     returns ``{"edits": [(drawing index, Edit, outcome, detail)], "drawings", "exact",
     "errors"}``."""
@@ -350,7 +351,7 @@ def run_generated(seed: int, count: int, per: int = 5, keep: pathlib.Path | None
     res = {"edits": [], "drawings": 0, "exact": 0, "errors": []}
     with tempfile.TemporaryDirectory() as d:
         tmp = pathlib.Path(d)
-        for n, (design, rng) in enumerate(designs(seed)):
+        for n, (design, rng) in enumerate(designs(seed, kinds)):
             if len(res["edits"]) >= count:
                 break
             r = run_drawing(design, tmp, rng, per)
@@ -420,12 +421,19 @@ def main(argv=None) -> int:
     ap.add_argument("--quick", action="store_true", help="a small generated run (24 edits)")
     ap.add_argument("--keep", type=pathlib.Path, help="write each generated drawing with an "
                     "edit not meant, its program and its edits, into this folder")
+    ap.add_argument("--kinds", default="", help="the generated features' kinds: `new` (the "
+                    "kinds drawn only when asked: double-D holes, keyways, skewed vent rows), "
+                    "`all`, or names joined by commas (default: the first set, as always)")
     a = ap.parse_args(argv)
+    kinds = {"": gen.KINDS, "new": gen.NEW_KINDS, "all": gen.ALL_KINDS}.get(
+        a.kinds, tuple(a.kinds.split(",")))
+    if not set(kinds) <= set(gen.ALL_KINDS):
+        ap.error(f"--kinds: not a kind: {', '.join(sorted(set(kinds) - set(gen.ALL_KINDS)))}")
     ok = True
     if not a.generated and not a.quick:
         ok = run_handmade(a.names or list(DRAWINGS), a.v)
     if not a.handmade and not a.names:
-        run_generated(a.seed, 24 if a.quick else a.count, a.per, a.keep, a.v)
+        run_generated(a.seed, 24 if a.quick else a.count, a.per, a.keep, a.v, kinds)
     return 0 if ok else 1
 
 

@@ -10,7 +10,10 @@ any angle), ``cutout`` (rectangle, corners square or rounded), ``notch`` (square
 or V, in one of the plate's edges), ``row`` (holes or slots), ``grid`` (rectangular),
 ``hexgrid`` (staggered, clipped to a round or rectangular field), ``boltcircle`` (with or
 without a bore), ``keyhole``, ``dhole`` (a D: a circle with one flat), ``arcslot`` (about a
-centre: radius, start angle, sweep, width) and ``label`` (a DXF TEXT or MTEXT, an SVG
+centre: radius, start angle, sweep, width); drawn only when asked (:data:`NEW_KINDS`):
+``ddhole`` (a double-D: two flats ``af`` apart), ``keyway`` (a bore with a key slot: width
+``kw``, ``depth`` past the bore) and ``ventrow`` (a row of slots turned at an angle to it);
+and ``label`` (a DXF TEXT or MTEXT, an SVG
 ``text``) tied to a feature (it moves with it) or to the plate.
 
 The design is data (:meth:`Design.edit` changes one number and checks the design still makes
@@ -44,6 +47,10 @@ INCH = 25.4
 
 KINDS = ("hole", "slot", "cutout", "notch", "row", "grid", "hexgrid", "boltcircle",
          "keyhole", "dhole", "arcslot")
+# kinds drawn only when asked (``random_design(pool=ALL_KINDS)``, benchmarks/infer_edits.py
+# --kinds): the drawings of KINDS from a seed stay the ones they were before these were added
+NEW_KINDS = ("ddhole", "keyway", "ventrow")
+ALL_KINDS = KINDS + NEW_KINDS
 
 
 # --- exact geometry of lines and arcs --------------------------------------------------------
@@ -371,6 +378,17 @@ class Design:
             if k == "arcslot":
                 add("size", "w", "width", [(r"width|w", 1.0)])
                 add("size", "R", "radius", [(r"radius|r", 1.0), (r"d|diameter", 2.0)])
+            if k == "ddhole":
+                add("size", "d", "diameter", D)
+                add("size", "af", "across flats", [(r"flat|af|across_flats", 1.0)])
+            if k == "keyway":
+                add("size", "d", "bore", [(r"(bore_)?(d|dia|diameter)", 1.0)])
+                add("size", "kw", "key width", [(r"(key_)?(w|width)", 1.0)])
+                add("size", "depth", "key depth", [(r"(key_)?depth", 1.0)])
+            if k == "ventrow":
+                add("size", "length", "slot length", [(r"length|len|l", 1.0)])
+                add("pitch", "p", "pitch", P)
+                add("count", "n", "count", N)
             if k == "boltcircle" and f.get("bore"):
                 add("size", "bore", "bore", [(r"(bore_)?(d|diameter)", 1.0)])
             if k in ("row", "grid"):
@@ -429,7 +447,7 @@ def span(f) -> tuple:
     k = f["kind"]
     if k == "cutout":
         return f["w"] / 2, f["h"] / 2
-    if k == "row":
+    if k in ("row", "ventrow"):
         s = (f["n"] - 1) * f["p"] / 2
         return (s, 0.0) if f["dir"] == "x" else (0.0, s)
     if k == "grid":
@@ -483,6 +501,26 @@ def dhole_loop(c, d, flat, ang) -> list:
     return _rot([("A", (0.0, 0.0), r, t, TAU - 2 * t), ("L", (flat, -h), (flat, h))], c, ang)
 
 
+def ddhole_loop(c, d, af, ang) -> list:
+    """A double-D: a circle of diameter ``d`` with two flats ``af`` apart, normal ``ang``."""
+    r, f = d / 2, af / 2
+    h = math.sqrt(r * r - f * f)
+    t = math.atan2(h, f)
+    return _rot([("A", (0.0, 0.0), r, t, math.pi - 2 * t), ("L", (-f, h), (-f, -h)),
+                 ("A", (0.0, 0.0), r, math.pi + t, math.pi - 2 * t), ("L", (f, -h), (f, h))],
+                c, ang)
+
+
+def keyway_loop(c, d, kw, depth, ang) -> list:
+    """A bore of diameter ``d`` with a key slot ``kw`` wide running ``depth`` past the bore
+    toward ``ang``."""
+    r, a = d / 2, kw / 2
+    s, T = math.sqrt(r * r - a * a), r + depth
+    t0 = math.atan2(a, s)
+    return _rot([("A", (0.0, 0.0), r, t0, TAU - 2 * t0), ("L", (s, -a), (T, -a)),
+                 ("L", (T, -a), (T, a)), ("L", (T, a), (s, a))], c, ang)
+
+
 def arcslot_loop(c, R, a0, sw, w) -> list:
     a1 = a0 + sw
     e0 = (c[0] + R * math.cos(a0), c[1] + R * math.sin(a0))
@@ -494,7 +532,7 @@ def arcslot_loop(c, R, a0, sw, w) -> list:
 def members(f, c) -> list:
     """The centres of a pattern's members (design units)."""
     k = f["kind"]
-    if k == "row":
+    if k in ("row", "ventrow"):
         s = [(i - (f["n"] - 1) / 2) * f["p"] for i in range(f["n"])]
         return [(c[0] + t, c[1]) if f["dir"] == "x" else (c[0], c[1] + t) for t in s]
     if k == "grid":
@@ -538,6 +576,13 @@ def loops_of(f, c) -> list:
         return [keyhole_loop(c, f["D"], f["w"], f["L"], math.radians(f["angle"]))]
     if k == "dhole":
         return [dhole_loop(c, f["d"], f["flat"], math.radians(f["angle"]))]
+    if k == "ddhole":
+        return [ddhole_loop(c, f["d"], f["af"], math.radians(f["angle"]))]
+    if k == "keyway":
+        return [keyway_loop(c, f["d"], f["kw"], f["depth"], math.radians(f["angle"]))]
+    if k == "ventrow":
+        return [slot_loop(m, f["length"], f["w"], math.radians(f["angle"]))
+                for m in members(f, c)]
     if k == "arcslot":
         return [arcslot_loop(c, f["R"], math.radians(f["a0"]), math.radians(f["sweep"]), f["w"])]
     if k == "row" and f["member"] == "slot":
@@ -592,7 +637,7 @@ def _valid(d: Design) -> bool:
         return False
     for f in d.features:
         if any(v is not None and v <= 0 for k, v in f.items() if k in ("d", "w", "h", "length", "D", "p", "px",
-                                                      "py", "pcd", "depth", "field", "R", "L")):
+                                                      "py", "pcd", "depth", "field", "R", "L", "af", "kw")):
             return False
         if f.get("n", 2) < 2 or f.get("nx", 2) < 2 or f.get("ny", 2) < 2:
             return False
@@ -602,6 +647,13 @@ def _valid(d: Design) -> bool:
         if k == "keyhole" and not (f["w"] < f["D"] - m and f["L"] > f["D"] / 2 + m):
             return False
         if k == "dhole" and f["flat"] >= f["d"] / 2 - m / 4:
+            return False
+        if k == "ddhole" and f["af"] >= f["d"] - m / 2:
+            return False
+        if k == "keyway" and not (f["kw"] < f["d"] - m and f["depth"] > m / 4):
+            return False
+        if k == "ventrow" and (f["length"] <= f["w"] + m or f["p"] * abs(math.sin(
+                math.radians(f["angle"]) - (0 if f["dir"] == "x" else math.pi / 2))) < f["w"] + m):
             return False
         if k == "notch" and f["shape"] == "round" and f["depth"] <= f["w"] / 2 + m:
             return False
@@ -711,6 +763,17 @@ def random_feature(rng: random.Random, T: dict, kind: str) -> dict:
     elif kind == "dhole":
         f.update(d=rng.choice(T["big"][:4]) / 2, angle=rng.choice([0, 90, 0]))
         f["flat"] = f["d"] / 2 * rng.choice([0.6, 0.7, 0.8])
+    elif kind == "ddhole":
+        f.update(d=rng.choice(T["big"][:4]), angle=rng.choice([0, 90, 0]))
+        f["af"] = round(f["d"] * rng.choice([0.6, 0.7, 0.8]), 4)
+    elif kind == "keyway":
+        f.update(d=rng.choice(T["big"]), angle=rng.choice([90, 90, 0, 270]))
+        f["kw"] = round(f["d"] * rng.choice([0.2, 0.25, 0.3]), 4)
+        f["depth"] = round(f["kw"] / 2, 4)
+    elif kind == "ventrow":
+        f.update(dir=rng.choice("xy"), n=rng.randint(3, 6), p=rng.choice(T["pitch"]), w=d,
+                 angle=rng.choice([30, 45, 60, -45, 120]))
+        f["length"] = d + rng.choice(T["pitch"]) * 2
     elif kind == "arcslot":
         f.update(R=rng.choice(T["big"]), w=rng.choice(T["d"][:4]), a0=rng.choice([0, 30, 45, 200]),
                  sweep=rng.choice([45, 60, 90]))
@@ -732,9 +795,9 @@ def _plain_anchor(d: Design, f) -> dict:
     return f
 
 
-def random_design(rng: random.Random, kinds=None) -> Design:
-    """A random maker plate: 2 to 5 features (``kinds`` first, each once), 0 to 2 labels, an
-    export style."""
+def random_design(rng: random.Random, kinds=None, pool=KINDS) -> Design:
+    """A random maker plate: 2 to 5 features (``kinds`` first, each once, then 1 to 3 drawn
+    from ``pool``), 0 to 2 labels, an export style."""
     units = "in" if rng.random() < 0.25 else "mm"
     T = IN if units == "in" else MM
     for _ in range(200):
@@ -746,7 +809,7 @@ def random_design(rng: random.Random, kinds=None) -> Design:
         origin = rng.choice([(0.0, 0.0), (0.0, 0.0), (-w / 2, -h / 2), (rng.choice(T["step"]),
                                                                         rng.choice(T["step"]))])
         d = Design(units, w, h, corner, origin)
-        want = list(kinds or []) + [rng.choice(KINDS) for _ in range(rng.randint(1, 3))]
+        want = list(kinds or []) + [rng.choice(pool) for _ in range(rng.randint(1, 3))]
         for k in want:
             for _ in range(40):
                 d.features.append(_plain_anchor(d, random_feature(rng, T, k)))
@@ -763,7 +826,8 @@ def random_design(rng: random.Random, kinds=None) -> Design:
                        "type": rng.choice(["TEXT", "MTEXT"]), "align": rng.choice(["centre", "left"])}
                 if tied:
                     i = rng.choice([i for i, f in enumerate(d.features)
-                                    if f["kind"] in ("hole", "slot", "cutout", "keyhole", "dhole")]
+                                    if f["kind"] in ("hole", "slot", "cutout", "keyhole", "dhole",
+                                                     "ddhole", "keyway")]
                                    or [None])
                     if i is None:
                         tied = False
@@ -853,7 +917,7 @@ def _local_loops(f) -> list | None:
     k = f["kind"]
     if k in ("grid", "hexgrid", "boltcircle") or (k == "row" and f["member"] == "hole"):
         return [circle((0.0, 0.0), f["d"] / 2)]
-    if k == "row":
+    if k in ("row", "ventrow"):
         return [slot_loop((0.0, 0.0), f["length"], f["w"], 0.0)]
     return None
 
@@ -888,7 +952,8 @@ def to_dxf(d: Design) -> bytes:
         for lp in local:
             _dxf_loop(blk, lp, {"layer": "0"}, bul)
         c = d.place(f)
-        rot = 90.0 if f["kind"] == "row" and f["member"] == "slot" and f["dir"] == "x" else 0.0
+        rot = 90.0 if f["kind"] == "row" and f["member"] == "slot" and f["dir"] == "x" else \
+            float(f["angle"]) if f["kind"] == "ventrow" else 0.0
         for p in members(f, c):
             m.add_blockref(blk.name, p, dxfattribs={"layer": lay[1], "rotation": rot})
         if f["kind"] == "boltcircle" and f.get("bore"):
@@ -950,10 +1015,11 @@ def to_svg(d: Design) -> bytes:
             continue
         g = dw.g(transform=f"translate({c[0]!r} {c[1]!r})")
         flip.add(g)
-        rot = f["kind"] == "row" and f["member"] == "slot" and f["dir"] == "x"
+        rot = 90 if f["kind"] == "row" and f["member"] == "slot" and f["dir"] == "x" else \
+            f["angle"] if f["kind"] == "ventrow" else 0
         for p in members(f, c):
             q = dw.g(transform=f"translate({p[0] - c[0]!r} {p[1] - c[1]!r})"
-                     + (" rotate(90)" if rot else ""))
+                     + (f" rotate({rot})" if rot else ""))
             g.add(q)
             for lp in local:
                 if len(lp) == 1:

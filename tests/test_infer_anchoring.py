@@ -136,7 +136,8 @@ def test_a_plate_drawn_from_its_corner_grows_from_it(tmp_path):
     text, _ = import_drawing(src.read_bytes(), "k.dxf", infer=True)
     assert "body = Rectangle(center=(width / 2, height / 2), width=width, height=height)" \
         in text, text
-    assert "h = Circle(center=(width - 20, height / 2 + 10), radius=4)" in text, text
+    # the bore with its key is a keyway (tests/test_infer_bores.py), its centre by the edge
+    assert "c = (width - 20, height / 2 + 10)" in text and "param keyway_w = 3 mm" in text, text
     res = aidl_lang.compile(text, path=tmp_path / "k.aidl", overrides={"width": "150 mm"})
     assert res.ok and res.freedom()["dof"] == 0
     (part,) = res.parts

@@ -10,31 +10,7 @@ from __future__ import annotations
 import math
 
 from ...geometry.curves import Arc, Line
-from .shapes import EQUAL_TOL, _close
-
-
-def merged(segs: list) -> list:
-    """The loop ``segs`` (in order) with each run of arcs on one circle, turning one way,
-    joined into one arc (a reader splits an arc at its quadrants, a writer at 180 degrees);
-    lines as they are."""
-    out: list = []
-    for s in segs:
-        p = out[-1] if out else None
-        if isinstance(s, Arc) and isinstance(p, Arc) and _same_circle(p, s) and \
-                (p.sweep > 0) == (s.sweep > 0) and _close(p.end, s.start):
-            out[-1] = Arc(p.center, p.radius, p.start_angle, p.sweep + s.sweep)
-        else:
-            out.append(s)
-    if len(out) > 1:
-        a, b = out[-1], out[0]
-        if isinstance(a, Arc) and isinstance(b, Arc) and _same_circle(a, b) and \
-                (a.sweep > 0) == (b.sweep > 0) and _close(a.end, b.start):
-            out = [Arc(a.center, a.radius, a.start_angle, a.sweep + b.sweep)] + out[1:-1]
-    return out
-
-
-def _same_circle(a: Arc, b: Arc) -> bool:
-    return _close(a.center, b.center) and abs(a.radius - b.radius) <= EQUAL_TOL
+from .shapes import EQUAL_TOL, _close, merged
 
 
 def _ccw(a: Arc) -> tuple[float, float]:

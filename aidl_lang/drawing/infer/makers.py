@@ -5,7 +5,9 @@ size (:meth:`_MakerFeatures.kind_params`) and placed from the body (:mod:`.ancho
 loops are recognised by :mod:`.features`."""
 from __future__ import annotations
 
-from .features import arc_slot, d_hole, keyhole, merged
+from .bores import _BoreFeatures
+from .features import arc_slot, d_hole, keyhole
+from .shapes import merged
 from .params import _deg, _r
 
 SINGLE_PARAMS = 12     # a part with more holes of sizes no other has: their sizes as numbers
@@ -22,7 +24,7 @@ def _sum(term: str) -> bool:
     return False
 
 
-class _MakerFeatures:
+class _MakerFeatures(_BoreFeatures):
     """The writing half of :class:`~.infer._Part` for makers' holes: needs ``w``, ``stats``,
     ``kinds`` (``{(kind, sizes): params}``), ``name``, ``p``, ``pos``, ``edge`` and
     ``span_at``."""
@@ -33,6 +35,8 @@ class _MakerFeatures:
         (:meth:`pos`); False when the loop is none of them."""
         w = self.w
         segs = merged(segs)
+        if self.bore_hole(depth, segs):     # a double-D or a keyway (:mod:`.bores`)
+            return True
         got = arc_slot(segs)
         if got is not None:
             C, R, a0, a1, wd = got
@@ -133,7 +137,7 @@ class _MakerFeatures:
         if key not in self.kinds:
             if len(self.kinds) >= SINGLE_PARAMS:
                 return [_r(v) for _, v in sizes]
-            first = next((k for k in self.kinds if k[0] == kind), None) is None
-            base = kind if first else self.name(kind + "_2")
+            k = 1 + sum(key[0] == kind for key in self.kinds)    # this kind's k-th size
+            base = kind if k == 1 else f"{kind}_{k}"   # (params: a namespace of their own)
             self.kinds[key] = [self.p(f"{base}_{n}", v) for n, v in sizes]
         return self.kinds[key]
