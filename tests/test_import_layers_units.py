@@ -376,3 +376,35 @@ def test_parts_apart_are_solids_and_overlapping_frames_stay_one(tmp_path):
     doc.saveas(tmp_path / "cross.dxf")
     text, _ = import_drawing((tmp_path / "cross.dxf").read_bytes(), "cross.dxf")
     assert text.count("solid ") == 1, text
+
+
+@pytest.mark.parametrize("infer", [False, True], ids=["plain", "infer"])
+@pytest.mark.parametrize("layer", ["COUNTERSINK", "CSK", "C-Bore"])
+def test_countersink_circles_are_marked_and_the_holes_are_the_parts(tmp_path, infer, layer):
+    """A plate on OUTLINE, four 3.3 mm holes on HOLES and the countersinks' 6.6 mm top
+    circles about them on a layer of their own: each hole lay inside a countersink circle,
+    so the HOLES layer was not moved into the plate, and the holes and the countersinks came
+    out as two solids of discs (cut as written: 6.6 mm through-holes), with no word.  Now the
+    countersinks are a `drawing` (marked, not cut) and the holes the plate's."""
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    m = doc.modelspace()
+    for ly in ("OUTLINE", "HOLES", layer):
+        doc.layers.add(ly)
+    m.add_lwpolyline([(0, 0), (80, 0), (80, 50), (0, 50)], close=True,
+                     dxfattribs={"layer": "OUTLINE"})
+    centres = [(6, 6), (74, 6), (74, 44), (6, 44)]
+    for c in centres:
+        m.add_circle(c, 1.65, dxfattribs={"layer": "HOLES"})
+        m.add_circle(c, 3.3, dxfattribs={"layer": layer})
+    doc.saveas(tmp_path / "csk.dxf")
+    text, _ = import_drawing((tmp_path / "csk.dxf").read_bytes(), "csk.dxf", infer=infer)
+    assert "# holes: layer `HOLES` in `OUTLINE`" in text, text
+    assert f"# countersinks: layer `{layer}` (4 circles) marked, not cut" in text, text
+    assert text.count("solid ") == 1 and text.count("drawing ") == 1, text
+    res = _compile(text, tmp_path)
+    assert not [d for d in res.diagnostics if d.severity == "warning"], res.diagnostics
+    cut = sorted(e[1:] for e in _entities(res, "CUT") if e[0] == "C")
+    marked = sorted(e[1:] for e in _entities(res, "ENGRAVE") if e[0] == "C")
+    assert cut == sorted((x, y, 1.65) for x, y in centres)
+    assert marked == sorted((x, y, 3.3) for x, y in centres)

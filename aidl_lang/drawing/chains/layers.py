@@ -14,6 +14,20 @@ from .containment import _containers
 
 # a layer whose name says it holds holes (HOLES, Drill, NPTH, CUTOUTS, Inner, Mounting)
 _HOLE_LAYER = re.compile(r"hole|drill|npth|pth|cut_?outs?|inner|interior|mount", re.I)
+# a layer of the top circles of countersinks or counterbores (COUNTERSINK, CSK, C-BORE,
+# Spotface): machined after the cut, about a hole
+_SINK_LAYER = re.compile(r"c(ou)?nte?r[-_ ]?(sink|bore)|\bc[-_]?sk\b|^csk|c[-_]?bore|"
+                         r"spot[-_ ]?face", re.I)
+
+
+def engraved_layer(name: str, d: Drawing) -> bool:
+    """Whether layer ``name`` (its drawing ``d``) is marked, not cut: a layer named
+    ``ENGRAVE...`` (as ``aidl render`` writes them), or a countersink or counterbore layer of
+    circles alone (:data:`_SINK_LAYER`: the cone's top circle about a hole; cut as drawn it
+    would be a hole of the countersink's size, or a solid of discs)."""
+    return name.upper().startswith("ENGRAVE") or bool(
+        _SINK_LAYER.search(name) and d.circles and not (d.outlines or d.paths or d.texts
+                                                         or d.ellipses))
 
 
 def _hole_layers(layers: list[tuple[str, Drawing]], deadline=None) -> tuple[list, list[str]]:
@@ -28,14 +42,17 @@ def _hole_layers(layers: list[tuple[str, Drawing]], deadline=None) -> tuple[list
     def loops(d):
         return [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
     cand = [k for k, (ly, d) in enumerate(layers)
-            if not ly.upper().startswith("ENGRAVE") and (d.outlines or d.circles)]
+            if not engraved_layer(ly, d) and (d.outlines or d.circles)]
     # only a layer named for holes moves (a POCKET or SCORE layer inside the outline is not
     # a through-hole: it stays a part of its own, as `aidl import` writes it)
     holey = [k for k in cand if _HOLE_LAYER.search(layers[k][0]) and not (
         layers[k][1].paths or layers[k][1].texts or
         (layers[k][1].engrave is not None and not layers[k][1].engrave.empty))]
+    sinks = [f"countersinks: layer `{ly}` ({len(d.circles)} circles) marked, not cut (a "
+             "`drawing`: machine them after the cut)"
+             for ly, d in layers if not ly.upper().startswith("ENGRAVE") and engraved_layer(ly, d)]
     if len(cand) < 2 or not holey:
-        return layers, []
+        return layers, sinks
     every, owner = [], []                   # every candidate layer's loops, and their layer
     for k in cand:
         ls = loops(layers[k][1])
@@ -55,7 +72,7 @@ def _hole_layers(layers: list[tuple[str, Drawing]], deadline=None) -> tuple[list
         if len(dest) == 1 and None not in dest:
             into[k] = dest.pop()
     if not into:
-        return layers, []
+        return layers, sinks
     from dataclasses import replace
     out = {k: d for k, (_, d) in enumerate(layers)}
     for k, j in into.items():
@@ -64,4 +81,5 @@ def _hole_layers(layers: list[tuple[str, Drawing]], deadline=None) -> tuple[list
                          circles=dst.circles + src.circles, ellipses=dst.ellipses + src.ellipses,
                          notes=dst.notes)
     head = [f"holes: layer `{layers[k][0]}` in `{layers[j][0]}`" for k, j in into.items()]
+    head += sinks
     return [(ly, out[k]) for k, (ly, _) in enumerate(layers) if k not in into], head

@@ -25,6 +25,7 @@ from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from ...geometry.drawing2d import _inside, _inside_many
 from ..chains.containment import (_apart, _containers, _loops_of, _overlapping_parts, _probe,
                                   _whole_ellipse)
+from ..chains.layers import engraved_layer
 from ..chains.hole_cuts import cut_at_crossings, inner_rests, loop_key, runs_of
 from ..chains.notches import EDGE_ACROSS
 from ..model import Drawing, Note, Outline, Path
@@ -998,7 +999,7 @@ def _layer_items(layers, parts: bool, deadline, source: str, notes: list,
     for layer, d in layers:
         # a layer of text alone, or whose every shape has the role `engrave` (`--engrave
         # LABELS`: its texts in `d.engrave`), is an engraving, not an empty solid
-        kind = "drawing" if layer.upper().startswith("ENGRAVE") or (d.empty and (
+        kind = "drawing" if engraved_layer(layer, d) or (d.empty and (
             d.texts or (d.engrave is not None and (not d.engrave.empty or d.engrave.texts)))) \
             else "solid"
         if kind == "solid" and d.paths_cut:        # a part's outline left open: closed
