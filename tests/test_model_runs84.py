@@ -97,3 +97,16 @@ assembly drive {
 }"""
     (w,) = _codes(compile_text, src, "W0511")
     assert "gear_pair" in w.hint and "module * (teeth1 + teeth2) / 2" in w.hint
+
+
+@settings(max_examples=40, deadline=None)
+@given(text=st.text("ABCDEFGHJKLMNOPQRSTUVWXYZ0123456789", min_size=3, max_size=16),
+       size=st.floats(2, 40))
+def test_prompt_text_width_law_a_capital_or_digit_takes_about_its_size(text, size):
+    # the prompt's Text line (13_door_sign: 16 mm "MEETING ROOM" ran over the screw holes: the
+    # model had no way to know a text's width): `size = room / characters` fits
+    from aidl_lang.geometry.text import text_extent
+    from aidl_lang.llm.prompt import system_prompt
+    assert "size is the cap height (about a capital's width)" in system_prompt()
+    x0, x1, _, _ = text_extent(text, size)
+    assert 0.6 * len(text) * size <= x1 - x0 <= 1.14 * len(text) * size
