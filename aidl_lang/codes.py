@@ -444,6 +444,9 @@ reported; only what covers the hole from outside it is.
     "W0502": ("hole cuts nothing", """
 The hole lies wholly outside the solid it is declared in, so it removes nothing. Move it onto the
 solid (for example `CenterInside(bore, self)`) or declare it in the solid it should cut.
+One shape of a hole lying wholly off the solid's extent while the hole's other shapes cut it
+(a mounting hole written at y = 70 mm on a plate 60 mm high) is named the same way: it vanished
+from the part, the rest of the hole is cut.
 """),
     "W0503": ("hole removes all of its solid", """
 The hole covers the whole solid it is declared in, so nothing of that solid is left. Make the
@@ -464,6 +467,8 @@ shorten or shrink them: an `assembly` there would ship a part in pieces.
 A drawing inside a solid part runs outside the part's outline or across one of its holes, where
 there is no material to engrave. Move or shrink the drawing so that it lies on the material, or
 put a drawing that is only an illustration at assembly level, beside the part.
+The share off the material is said as a percentage of the drawing's length ("under 1%": a
+letter's stroke over a screw hole); across a hole, the hint names the holes it crosses.
 """),
     "W0506": ("geometry that adds nothing", """
 A child solid lies wholly inside the rest of its parent, so it changes nothing in the final

@@ -182,7 +182,7 @@ def test_every_fix_removes_its_warning_and_changes_nothing_else(compiled, name, 
     c = compiled(name, src)
     if c.drawing is None:
         return
-    before = _design(c)
+    before = _drawn(c)
     tried = []
     for d in c.sink.items:
         if d.severity != "warning":

@@ -892,6 +892,7 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
                                   f"`CenterInside({h.name}, self)`), or declare it in the solid "
                                   "it should cut")
         return
+    _check_stray_shapes(d, cut, _part_of(s, roots), roots, sink)
     if owner_areas is None:
         owner_areas = {}
     if before > 0 and s not in owner_areas:
@@ -998,6 +999,34 @@ def _ref(obj, base: Structure) -> str:
     r = _rel(obj, base)
     head, sep, _ = r.rpartition("[")
     return head if sep and r.endswith("]") and "[" not in head else r
+
+
+def _check_stray_shapes(d: Drawing, cut, part, roots, sink: DiagnosticSink) -> None:
+    """W0502 for a shape of a hole that cuts something while this shape lies wholly off its
+    solid: its box misses the solid's box (``cut.before``, mm), so it removes nothing (a
+    mounting hole written at y = 70 on a plate 60 mm high vanished silently, issue 84). A
+    shape over an opening the part's solids enclose declares it (W0515) and is left alone.
+    Once per statement (the copies of a loop: how many)."""
+    if cut.before is None or cut.before.is_empty():
+        return
+    h, s = cut.hole, cut.owner
+    x0, y0, x1, y1 = cut.before.bounds()
+    stray: dict = {}
+    for g, f in d.own.get(h, ()):
+        if f is None or f.is_empty():
+            continue
+        a, b, c, e = f.bounds()
+        if a < x1 - 1e-6 and c > x0 + 1e-6 and b < y1 - 1e-6 and e > y0 + 1e-6:
+            continue
+        if _over_opening(d, f, _area(f), part, roots):
+            continue
+        stray.setdefault(g.span, []).append(g)
+    for span, gs in stray.items():
+        what = f"`{gs[0].label}`" + (f" ({len(gs)} copies)" if len(gs) > 1 else "")
+        sink.warning("W0502", f"{what} of {h.kind} `{h.path}` cuts nothing: it lies outside "
+                     f"solid `{s.path}` (from ({x0:.2f}, {y0:.2f}) to ({x1:.2f}, {y1:.2f}))",
+                     span, hint=f"move it onto `{s.path}`: check its coordinates against the "
+                                "solid's extent (a sign or a unit off?)")
 
 
 def _over_opening(d: Drawing, hole_shape, whole: float, part, roots) -> bool:

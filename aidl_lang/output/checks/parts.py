@@ -72,15 +72,29 @@ def _check_interpenetration(d: Drawing, roots, sink: DiagnosticSink, deadline=No
             home = home.parent
         ra, rb = (x.path[len(home.path) + 1:] if home is not None else x.name for x in (a, b))
         labels = [Label(a.span, f"`{a.path}` is here", primary=False)] if a.span else []
+        # the gears' rule only where a gear is named (issue 84: two O pieces of a tic-tac-toe
+        # set were told about module * (teeth1 + teeth2) / 2)
+        gears = ("(meshing gears sit at the centre distance module * (teeth1 + teeth2) / 2: "
+                 "`gear_pair` in std/gears.aidl places them), "
+                 if any(_is_gear(x) for x in (a, b)) else "")
         sink.warning("W0511", f"parts `{a.path}` and `{b.path}` interpenetrate: they overlap "
                      f"by {area:.2f} mm^2, {depth:.2f} mm deep (separate parts cannot occupy "
                      "the same place)", b.span or a.span, labels=labels,
                      hint=f"move `{b.path}` at least {depth:.2f} mm further from `{a.path}` "
-                          "(meshing gears sit at the centre distance module * (teeth1 + "
-                          "teeth2) / 2: `gear_pair` in std/gears.aidl places them), or shrink "
-                          "one; if the overlap is meant (a picture of parts stacked), write "
+                          f"{gears}or shrink one; if the overlap is meant (a picture of parts stacked), write "
                           f"`AllowOverlap({ra}, {rb})` in "
                           + (f"`{home.path}`" if home is not None else "their assembly"))
+
+
+def _is_gear(s) -> bool:
+    """Whether structure ``s`` is a gear: an instance of a template, or a part, whose name
+    says gear (`spur_gear`, `gear1`, `pinion`, a template of the file named so)."""
+    while s is not None:
+        for name in (s.template or "", s.name or ""):
+            if "gear" in name.lower() or "pinion" in name.lower():
+                return True
+        s = s.parent if s.parent is not None and s.parent.kind == "solid" else None
+    return False
 
 
 _CLOSED = {"Circle", "Slot", "ArcSlot", "Star", "Ellipse", "Rectangle", "RoundedRectangle",
