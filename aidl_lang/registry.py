@@ -302,9 +302,8 @@ _DEFS = {
                   "point goes (default: the arc's middle, a circle's top)", kw_only=True),
                 A("flip", "bool", False, "with along=: read counter-clockwise, letters' up "
                   "toward the center (text under a circle, readable)", kw_only=True)],
-               doc="Single-stroke text in a drawing (one built-in font, no `font=`); size is "
-                   "the cap height (about a capital's width); "
-                   "anchor: start, "
+               doc="Single-stroke text in a drawing (one font, no `font=`); size: cap "
+                   "height (~ a capital's width); anchor: start, "
                    "middle, end; valign: baseline, middle, top, bottom; rotation about "
                    "position; along=circle, angle=.", members=TEXT_MEMBERS),
     # ------------------------------------------------------------ geometric constraints
