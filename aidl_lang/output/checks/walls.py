@@ -13,6 +13,8 @@ interrupt are refused when their vertex counts say they would end past it.
 one outline, by a gap search between its edges (:func:`_check_slits`)."""
 from __future__ import annotations
 
+import math
+
 import manifold3d as mf
 import numpy as np
 
@@ -762,9 +764,18 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
             if other is not None else []
         between = " and ".join(names)
         cx, cy = (p + q) / 2
-        fix = (f"make {names[0]} and {names[-1]} overlap (move one more than {w:.2f} mm "
-               f"towards the other) or open the gap to at least {t:g} mm (move one "
-               f"{t - w:.2f} mm away)")
+        apex = _nick_corner(d, s, (p + q) / 2, 2 * t)
+        if apex is not None:
+            # a nick: the two sides meet at its floor, and taper apart from there; moving
+            # one away parts them (W0504), moving it in moves the nick (issue 84): the
+            # inner corner rounded by min_wall fills the narrow part and nothing else
+            fix = (f"fill the nick where {names[0]} meets {names[-1]} by rounding that inner "
+                   f"corner: `Fillet(at=[({apex[0]:.4f}, {apex[1]:.4f})], radius={t:g})` in "
+                   f"`{s.name}` (only that corner; the rest of the outline is unchanged)")
+        else:
+            fix = (f"make {names[0]} and {names[-1]} overlap (move one more than {w:.2f} mm "
+                   f"towards the other) or open the gap to at least {t:g} mm (move one "
+                   f"{t - w:.2f} mm away)")
         sink.warning("W0519", f"a slit of empty space between {between} in `{s.path}` is "
                      f"{w:.2f} mm wide, narrower than {t:g} mm (over {length:.1f} mm, near "
                      f"({cx:.1f}, {cy:.1f})): narrower than a laser or router cuts, so it comes "
@@ -772,6 +783,36 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
                      later.span if later is not None else s.span,
                      labels=labels,
                      hint=f"{fix}; the minimum is set with --min-wall")
+
+
+NICK_TURN = 2 * math.pi / 3     # rad: a slit's two sides meet at a nick's floor at a corner
+                                # sharper than 60 degrees (they turn by more than 120)
+
+
+def _nick_corner(d: Drawing, s: Structure, at, reach: float):
+    """The corner (x, y) in mm of part ``s``'s final exact outline where a slit's two sides
+    meet, nearest to ``at`` (the slit's narrowest place) within ``reach`` mm: a concave join
+    sharper than 60 degrees (turning right by more than :data:`NICK_TURN`); or None: a slit
+    whose sides do not meet there (two lobes that come close; a floor between them, whose
+    corners are square).  Exact: ``Fillet(at=[...])`` matches it."""
+    from ...geometry.curves import turn_between
+    shape = d.shapes.get(s)
+    if shape is None or shape.is_empty():
+        return None
+    best, far = None, reach
+    for loops in d.exact.loops_of([shape]):
+        for lp in loops:
+            segs = lp.segments
+            for k in range(len(segs)):
+                # outer loops run counter-clockwise, openings clockwise: the material is
+                # on the left, so a concave (inner) corner turns right
+                if turn_between(segs[k - 1], segs[k]) >= -NICK_TURN:
+                    continue
+                c = segs[k].start
+                r = math.hypot(c[0] - at[0], c[1] - at[1])
+                if r <= far:
+                    best, far = (float(c[0]), float(c[1])), r
+    return best
 
 
 def _faces_at(d: Drawing, s: Structure, points, tick=lambda: None) -> list:
