@@ -784,7 +784,9 @@ two sides. Make them overlap, or open the gap to at least the minimum. Where the
 meet at the slit's floor in a corner sharper than 60 degrees (a nick: an arm joined low on a
 rounded corner), moving one away would part them (W0504) and moving it in only moves the
 nick; the hint then rounds that inner corner alone, `Fillet(at=[(x, y)], radius=min_wall)`,
-which fills the nick and leaves the rest of the outline as it was.
+which fills the nick and leaves the rest of the outline as it was. Where one side leaves the
+other along its tangent (a cusp: an arm flush with the straight side of a rounded corner) no
+move or fillet closes it, and the hint says to cover the rounded corner whole or square it.
 
     solid tag {
         bar = Rectangle(center=(0, 0), width=30, height=12)

@@ -89,3 +89,23 @@ def test_law_a_nicks_hint_applied_removes_it_and_changes_nothing_else(R, phi, h)
 def _area(part) -> float:
     """The part's area in mm^2 (holes subtracted)."""
     return part.area
+
+
+def test_the_issues_bracket_nick_names_no_move_that_leaves_it():
+    """tests/programs/picture/rounded_corner_nick.aidl (issue 84): the arm's left side runs on
+    from the body's right side, and the body's corner arc leaves it tangentially at (20, 10):
+    a cusp, which no Fillet rounds and a move only slides along.  The hint used to offer
+    "move one 0.48 mm away" (the arm comes off, W0504) or "more than 0.02 mm towards" (the
+    nick stays, W0519): it names the cusp and says to cover the corner whole, and that does
+    remove it (the arm reaching past the arc's far end, x = 15)."""
+    from conftest import ROOT
+    src = (ROOT / "tests" / "programs" / "picture" / "rounded_corner_nick.aidl").read_text()
+    r = aidl_lang.compile(src)
+    (w,) = [d for d in r.diagnostics if d.code == "W0519"]
+    assert "(20.00, 10.00) (a cusp)" in w.hint and "mm away" not in w.hint
+    for moved in ("center=(29.98, 12), width=20", "center=(30.48, 12), width=20"):
+        bad = aidl_lang.compile(src.replace("center=(30, 12), width=20", moved))
+        assert {"W0519", "W0504"} & set(_warnings(bad)), moved     # the old hint's moves
+    covered = aidl_lang.compile(src.replace("center=(30, 12), width=20",
+                                            "center=(27.5, 12), width=25"))
+    assert _warnings(covered) == []

@@ -765,7 +765,15 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
         between = " and ".join(names)
         cx, cy = (p + q) / 2
         apex = _nick_corner(d, s, (p + q) / 2, 2 * t)
-        if apex is not None:
+        if apex is not None and apex[2]:
+            # a cusp: one side leaves the other along its tangent (an arm flush with a
+            # rounded corner's straight side); a move only slides the cusp along, a fillet
+            # has no corner to round there: no number would be right
+            fix = (f"the two sides part along one tangent at ({apex[0]:.2f}, {apex[1]:.2f}) (a "
+                   f"cusp), so moving {names[0]} or {names[-1]} only moves the nick: make one "
+                   f"cover the other's rounded corner whole (reach past the arc's far end) or "
+                   f"make that corner square")
+        elif apex is not None:
             # a nick: the two sides meet at its floor, and taper apart from there; moving
             # one away parts them (W0504), moving it in moves the nick (issue 84): the
             # inner corner rounded by min_wall fills the narrow part and nothing else
@@ -787,12 +795,14 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
 
 NICK_TURN = 2 * math.pi / 3     # rad: a slit's two sides meet at a nick's floor at a corner
                                 # sharper than 60 degrees (they turn by more than 120)
+CUSP = 1e-6                     # rad: a turn within this of pi is a cusp
 
 
 def _nick_corner(d: Drawing, s: Structure, at, reach: float):
-    """The corner (x, y) in mm of part ``s``'s final exact outline where a slit's two sides
+    """The corner in mm of part ``s``'s final exact outline where a slit's two sides
     meet, nearest to ``at`` (the slit's narrowest place) within ``reach`` mm: a concave join
-    sharper than 60 degrees (turning right by more than :data:`NICK_TURN`); or None: a slit
+    sharper than 60 degrees (turning right by more than :data:`NICK_TURN`), as (x, y, cusp)
+    (``cusp``: the sides leave it along one tangent, which no fillet rounds); or None: a slit
     whose sides do not meet there (two lobes that come close; a floor between them, whose
     corners are square).  Exact: ``Fillet(at=[...])`` matches it."""
     from ...geometry.curves import turn_between
@@ -806,12 +816,14 @@ def _nick_corner(d: Drawing, s: Structure, at, reach: float):
             for k in range(len(segs)):
                 # outer loops run counter-clockwise, openings clockwise: the material is
                 # on the left, so a concave (inner) corner turns right
-                if turn_between(segs[k - 1], segs[k]) >= -NICK_TURN:
-                    continue
+                turn = turn_between(segs[k - 1], segs[k])
+                if turn >= -NICK_TURN and abs(turn) < math.pi - CUSP:
+                    continue            # a cusp (a line into an arc tangent to it, back
+                                        # the way it came) turns by +-pi either way
                 c = segs[k].start
                 r = math.hypot(c[0] - at[0], c[1] - at[1])
                 if r <= far:
-                    best, far = (float(c[0]), float(c[1])), r
+                    best, far = (float(c[0]), float(c[1]), abs(turn) >= math.pi - CUSP), r
     return best
 
 
