@@ -805,7 +805,7 @@ def _nick_corner(d: Drawing, s: Structure, at, reach: float):
     (``cusp``: the sides leave it along one tangent, which no fillet rounds); or None: a slit
     whose sides do not meet there (two lobes that come close; a floor between them, whose
     corners are square).  Exact: ``Fillet(at=[...])`` matches it."""
-    from ...geometry.curves import turn_between
+    from ...geometry.curves import Circle, turn_between
     shape = d.shapes.get(s)
     if shape is None or shape.is_empty():
         return None
@@ -813,6 +813,8 @@ def _nick_corner(d: Drawing, s: Structure, at, reach: float):
     for loops in d.exact.loops_of([shape]):
         for lp in loops:
             segs = lp.segments
+            if len(segs) < 2 or any(isinstance(g, Circle) for g in segs):
+                continue                # a whole circle has no corner
             for k in range(len(segs)):
                 # outer loops run counter-clockwise, openings clockwise: the material is
                 # on the left, so a concave (inner) corner turns right
