@@ -13,8 +13,6 @@ interrupt are refused when their vertex counts say they would end past it.
 one outline, by a gap search between its edges (:func:`_check_slits`)."""
 from __future__ import annotations
 
-import math
-
 import manifold3d as mf
 import numpy as np
 
@@ -24,6 +22,7 @@ from ..part.booleans import Drawing
 from ..part.nearby import _median, box_pairs
 from ..part.scanwork import turned, turned_back
 from .common import _area, _cut_openings, _loop_boxes, _solids_within, _union
+from .nicks import slit_fix
 
 def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: DiagnosticSink,
                  quick: bool = True, covered: set = frozenset(), loops=None,
@@ -764,26 +763,7 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
             if other is not None else []
         between = " and ".join(names)
         cx, cy = (p + q) / 2
-        apex = _nick_corner(d, s, (p + q) / 2, 2 * t)
-        if apex is not None and apex[2]:
-            # a cusp: one side leaves the other along its tangent (an arm flush with a
-            # rounded corner's straight side); a move only slides the cusp along, a fillet
-            # has no corner to round there: no number would be right
-            fix = (f"the two sides part along one tangent at ({apex[0]:.2f}, {apex[1]:.2f}) (a "
-                   f"cusp), so moving {names[0]} or {names[-1]} only moves the nick: make one "
-                   f"cover the other's rounded corner whole (reach past the arc's far end) or "
-                   f"make that corner square")
-        elif apex is not None:
-            # a nick: the two sides meet at its floor, and taper apart from there; moving
-            # one away parts them (W0504), moving it in moves the nick (issue 84): the
-            # inner corner rounded by min_wall fills the narrow part and nothing else
-            fix = (f"fill the nick where {names[0]} meets {names[-1]} by rounding that inner "
-                   f"corner: `Fillet(at=[({apex[0]:.4f}, {apex[1]:.4f})], radius={t:g})` in "
-                   f"`{s.name}` (only that corner; the rest of the outline is unchanged)")
-        else:
-            fix = (f"make {names[0]} and {names[-1]} overlap (move one more than {w:.2f} mm "
-                   f"towards the other) or open the gap to at least {t:g} mm (move one "
-                   f"{t - w:.2f} mm away)")
+        fix = slit_fix(d, s, (p + q) / 2, w, t, names)
         sink.warning("W0519", f"a slit of empty space between {between} in `{s.path}` is "
                      f"{w:.2f} mm wide, narrower than {t:g} mm (over {length:.1f} mm, near "
                      f"({cx:.1f}, {cy:.1f})): narrower than a laser or router cuts, so it comes "
@@ -791,42 +771,6 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
                      later.span if later is not None else s.span,
                      labels=labels,
                      hint=f"{fix}; the minimum is set with --min-wall")
-
-
-NICK_TURN = 2 * math.pi / 3     # rad: a slit's two sides meet at a nick's floor at a corner
-                                # sharper than 60 degrees (they turn by more than 120)
-CUSP = 1e-6                     # rad: a turn within this of pi is a cusp
-
-
-def _nick_corner(d: Drawing, s: Structure, at, reach: float):
-    """The corner in mm of part ``s``'s final exact outline where a slit's two sides
-    meet, nearest to ``at`` (the slit's narrowest place) within ``reach`` mm: a concave join
-    sharper than 60 degrees (turning right by more than :data:`NICK_TURN`), as (x, y, cusp)
-    (``cusp``: the sides leave it along one tangent, which no fillet rounds); or None: a slit
-    whose sides do not meet there (two lobes that come close; a floor between them, whose
-    corners are square).  Exact: ``Fillet(at=[...])`` matches it."""
-    from ...geometry.curves import Circle, turn_between
-    shape = d.shapes.get(s)
-    if shape is None or shape.is_empty():
-        return None
-    best, far = None, reach
-    for loops in d.exact.loops_of([shape]):
-        for lp in loops:
-            segs = lp.segments
-            if len(segs) < 2 or any(isinstance(g, Circle) for g in segs):
-                continue                # a whole circle has no corner
-            for k in range(len(segs)):
-                # outer loops run counter-clockwise, openings clockwise: the material is
-                # on the left, so a concave (inner) corner turns right
-                turn = turn_between(segs[k - 1], segs[k])
-                if turn >= -NICK_TURN and abs(turn) < math.pi - CUSP:
-                    continue            # a cusp (a line into an arc tangent to it, back
-                                        # the way it came) turns by +-pi either way
-                c = segs[k].start
-                r = math.hypot(c[0] - at[0], c[1] - at[1])
-                if r <= far:
-                    best, far = (float(c[0]), float(c[1]), abs(turn) >= math.pi - CUSP), r
-    return best
 
 
 def _faces_at(d: Drawing, s: Structure, points, tick=lambda: None) -> list:
