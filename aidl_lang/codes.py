@@ -399,14 +399,17 @@ repeats the distance (W0401).
 """),
     "W0405": ("box read before Fillet or Chamfer", """
 A constraint reads a side of the box of a structure (`AlignLeft(x0, board)`, `x0.bb.left`,
-`Above`, `Inside`, ...) that has a `Fillet` or `Chamfer`, and its final outline does not
-reach that side: the box is read from the shapes as drawn, before the rounding (which acts on
-the finished outline after the booleans), so where a rounded corner is the box's extreme the
-outline ends short of it (a 45-degree X filleted by 1.5 mm: 0.621 mm in from the board's
-edge). The warning gives both sides and the difference; write that side as an equation with
-the difference (`x0.bb.left + 0.621 mm == board.bb.left`: an equation on box values is taken
-as written, never warned), or round only the corners away from that side (`Fillet(at=[...],
-radius=...)`).
+`Above`, `Inside`, ...) that has a `Fillet` or `Chamfer`, a miter-joined `Offset` or `Shell`,
+or an `Inset`, and its final outline does not reach that side: the box is read from the
+shapes as drawn, before the rounding (which acts on the finished outline after the booleans),
+so where a rounded corner is the box's extreme the outline ends short of it (a 45-degree X
+filleted by 1.5 mm: 0.621 mm in from the board's edge); an offset is boxed as its shape's box
+grown by the distance, exact for a round join only (a mitered star's tips reach further, an
+inset's outline stays inside). The warning gives both sides and the difference; write that
+side as an equation with the difference to 1e-6 mm (`x0.bb.left + 0.62132 mm ==
+board.bb.left`: an equation on box values is taken as written, never warned, and moves the
+first-named as the `Align*` did), or round only the corners away from that side
+(`Fillet(at=[...], radius=...)`), or offset with `join="round"`.
 
     solid board { b = Rectangle(center=(0, 0), width=90, height=90) }
     solid x0 {
@@ -533,7 +536,8 @@ Two separately declared holes (two hole structures, or two copies of a pattern) 
 touch, so they cut one opening where the program declares two: usually an edit or a `--set`
 moved or multiplied one of them (a bolt row grown into a ring of vents). The warning names
 both holes and says by how much they overlap (the depth along the line between them and the
-common area). Move one of them away (by the overlap plus the minimum wall), or shrink it. A
+common area). Move one of them away (by the overlap plus the minimum wall; the hint's figure is
+rounded up, with the circles' chord error, so the move as written clears it), or shrink it. A
 single opening made of several shapes (a keyhole: a circle and a slot) is drawn as the faces
 of ONE hole structure, whose faces may overlap without a warning.
 A hole wholly inside another cuts nothing of its own; the warning says so (its size or place is
@@ -782,7 +786,13 @@ two end lobes nearly touch beyond the bar). Found between the non-adjacent edges
 of the outline that face each other (opposite within 30 degrees) across empty space, over at
 least the minimum's length; the openings that holes cut are not searched (a narrow hole is
 declared so). The warning gives the least width, the length, the place and the shapes on its
-two sides. Make them overlap, or open the gap to at least the minimum.
+two sides. Make them overlap, or open the gap to at least the minimum. Where the two sides
+meet at the slit's floor in a corner sharper than 60 degrees (a nick: an arm joined low on a
+rounded corner), moving one away would part them (W0504) and moving it in only moves the
+nick; the hint then rounds that inner corner alone, `Fillet(at=[(x, y)], radius=min_wall)`,
+which fills the nick and leaves the rest of the outline as it was. Where one side leaves the
+other along its tangent (a cusp: an arm flush with the straight side of a rounded corner) no
+move or fillet closes it, and the hint says to cover the rounded corner whole or square it.
 
     solid tag {
         bar = Rectangle(center=(0, 0), width=30, height=12)

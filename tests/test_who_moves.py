@@ -52,6 +52,22 @@ def test_a_hole_goes_to_a_sibling_solid_whichever_is_named_first():
     assert v["side_panel.star.s.center"] == pytest.approx((-28, -45), abs=EXACT)
 
 
+def test_an_equation_between_siblings_moves_the_first_named_only():
+    """``knight.bb.left + 2 mm == base.bb.left`` (the form W0405's hint writes) is a
+    relating constraint like ``AlignLeft``: the knight goes to the base, which stays (before:
+    each moved halfway, the base 12 mm off its written place)."""
+    src = (PROGRAMS / "knight.aidl").read_text().replace(
+        "AlignCenterX(knight, base)", "knight.bb.center.x + 2 mm == base.bb.center.x")
+    v = _values(_compile(src))
+    assert v["base.b.center"] == pytest.approx((0, 0), abs=EXACT)
+    assert v["knight.k.center"] == pytest.approx((-2, 20), abs=EXACT)
+    src = src.replace("knight.bb.center.x + 2 mm == base.bb.center.x",
+                      "base.bb.center.x == knight.bb.center.x + 2 mm")
+    v = _values(_compile(src))
+    assert v["knight.k.center"] == pytest.approx((12, 20), abs=EXACT)
+    assert v["base.b.center"] == pytest.approx((14, 0), abs=EXACT)
+
+
 def test_a_chain_of_siblings_each_moves_to_its_reference():
     """``b`` placed on ``c``, ``a`` on ``b``: ``c`` stays, ``b`` goes to it (x), ``a`` to
     ``b`` (y)."""

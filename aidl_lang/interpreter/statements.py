@@ -766,8 +766,11 @@ class Statements:
         vals = [self.eval(x) for x in e.operands]
         for op, (l, r), (ln, rn) in zip(e.ops, zip(vals, vals[1:]), zip(e.operands, e.operands[1:])):
             eqs = self._compare_eqs(op, l, r, e.span)
-            self._add_constraint("equation", eqs, e.span, None,
-                                 owners_of(l, r))
+            # who moves (issue 84): an equation relating two structures is a relating
+            # constraint like an Align*: the first-named side moves to the second
+            owners = owners_of(l, r)
+            self._add_constraint("equation", eqs, e.span, None, owners,
+                                 [owners_of(l), owners_of(r)] if len(owners) > 1 else None)
 
     def _assert(self, st) -> None:
         """``assert cond[, "message"]``: comparisons joined by ``and``.  Sides known now

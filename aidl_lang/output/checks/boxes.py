@@ -5,9 +5,11 @@ boxes) from the structure's geometry as drawn, before its ``Fillet`` or ``Chamfe
 on the finished outline, after the booleans: :func:`aidl_lang.geometry.operations.finish`).
 A fillet on a corner that is the box's extreme moves that side in (a 45-degree X's tips by
 ``r * (sqrt(2) - 1)``), so ``AlignLeft(x0, board)`` leaves the rounded X short of the board's
-edge.  This check compares, for each structure with a Fillet or Chamfer whose box a
-constraint reads, the side read with the same side of its final exact outline, and warns with
-the difference and the constraint that closes it.
+edge.  An ``Offset`` or ``Shell`` is boxed from its source's box grown by the distance: exact
+for an outward round join, not for a miter join (a star's tips reach further) nor an inset (an
+``Inset`` or negative distance: smaller).  This check compares, for each structure with a
+Fillet or Chamfer or such an offset whose box a constraint reads, the side read with the same
+side of its final exact outline, and warns with the difference and the constraint that closes it.
 """
 from __future__ import annotations
 
@@ -34,6 +36,24 @@ def final_box(d: Drawing, s: Structure) -> tuple[float, float, float, float] | N
             min(b[1] for b in boxes), max(b[3] for b in boxes))
 
 
+def reshaped(s: Structure) -> list[str]:
+    """The operations after which ``s``'s box read by the solve may not be its final
+    outline's: its ``Fillet``/``Chamfer`` and the ``Offset``/``Shell``/``Inset`` among its own
+    and its children's shapes that are not exact on the box (a miter join, an inset), sorted
+    names."""
+    ops = {f[0] for f in getattr(s, "finish", None) or []}
+    todo = [s]
+    while todo:
+        t = todo.pop()
+        for g in t.geometry:
+            if g.kind in ("Offset", "Shell") and not g.construction:
+                d = g.data.get("distance", g.data.get("thickness", 0.0))
+                if g.data.get("join") == "miter" or d < 0:
+                    ops.add("Inset" if g.kind == "Offset" and d < 0 else g.kind)
+        todo += [c for c in t.children.values() if c.kind == "solid"]
+    return sorted(ops)
+
+
 def check_final_boxes(sink: DiagnosticSink, model: Model, d: Drawing, calls=None) -> None:
     """One W0405 per relation of the registry (``AlignLeft``, ``Above``, ``Inside``, ...)
     that reads the box of a structure with ``Fillet``/``Chamfer`` and that its final outlines
@@ -44,7 +64,7 @@ def check_final_boxes(sink: DiagnosticSink, model: Model, d: Drawing, calls=None
     (``x0.bb.left + 0.621 mm == board.bb.left``, the fix the hint writes) is taken as
     written.  ``calls``: ``instance_calls`` of the pipeline (a template's statement is
     reported at its call)."""
-    finished = {id(s): s for s in model.structures if getattr(s, "finish", None)}
+    finished = {id(s): s for s in model.structures if reshaped(s)}
     if not finished:
         return
     x = model.xs()
@@ -100,7 +120,12 @@ def _warn(sink, c, terms, finished, moved, solved, calls) -> None:
         return
     s, side = seen[0]
     diff = moved[id(s)][side]
-    ops = " and ".join(sorted({f[0] for f in s.finish}))
+    kinds = reshaped(s)
+    ops = " and ".join(kinds)
+    rounded = [k for k in kinds if k in ("Fillet", "Chamfer")]
+    other = (f"or round only corners away from that side (`{rounded[0]}(at=[...], ...)`)"
+             if rounded else "or use `join=\"round\"` (an outward round offset's box is exact)"
+             if any(k in ("Offset", "Shell") for k in kinds) else "")
     inward = diff > 0 if side in ("left", "bottom") else diff < 0
     at = solved[id(s)][side]
     more = "".join(f"; its {sd} {abs(moved[id(t)][sd]):.3f} mm" for t, sd in seen[1:])
@@ -111,6 +136,11 @@ def _warn(sink, c, terms, finished, moved, solved, calls) -> None:
         c.span, calls=calls(c.owner) if calls is not None else None,
         hint=f"a box is read from the shapes as drawn, before {ops}: to put the final outline "
              f"there, write that side as an equation with the difference "
-             f"(`{s.name}.bb.{side} {'+' if diff > 0 else '-'} {abs(diff):.3f} mm == ...`, an "
-             f"equation is taken as written), or round only corners away from that side "
-             f"(`{ops.split()[0]}(at=[...], ...)`)")
+             f"(`{s.name}.bb.{side} {'+' if diff > 0 else '-'} {_mm(abs(diff))} mm == ...`, an "
+             f"equation is taken as written){', ' + other if other else ''}")
+
+
+def _mm(v: float) -> str:
+    """``v`` in mm to 1e-6 mm (the hint's equation puts the outline on the side to within
+    :data:`BOX_TOL`), trailing zeros dropped: 0.62132."""
+    return f"{v:.6f}".rstrip("0").rstrip(".")

@@ -23,6 +23,8 @@ n log n in the number of holes; :func:`_analyse` also gives :mod:`.changes` the 
 merge or reach the outline."""
 from __future__ import annotations
 
+import math
+
 import re
 
 import manifold3d as mf
@@ -744,7 +746,7 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
             how, far = "touch", f"{t:g} mm" if t > 0 else "a little"
         else:
             how = f"overlap by {depth:.2f} mm ({common:.2f} mm^2 in common)"
-            far = f"{depth + t:.2f} mm" if t > 0 else f"{depth:.2f} mm"
+            far = f"{_enough(depth + t if t > 0 else depth)} mm"
         labels = [Label(a.spans[i], f"{first} is here", primary=False)] if a.spans[i] else []
         where, stmt = _allow_holes(a.cuts[i - 1].hole, a.cuts[j - 1].hole) if a.cuts \
             else (None, None)
@@ -773,11 +775,20 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
         sink.warning("W0507", f"a wall of `{s.path}` between {pair} is "
                      f"{w:.2f} mm wide, thinner than {t:g} mm (over {length:.1f} mm, near "
                      f"({x:.1f}, {y:.1f}))", a.spans[hole], labels=labels,
-                     hint=f"move {a.names[hole]} {t - w:.2f} mm further from {away} (or shrink "
+                     hint=f"move {a.names[hole]} {_enough(t - w)} mm further from {away} (or shrink "
                           f"it) so that at least {t:g} mm of material is left (a laser or "
                           "router cannot hold a thinner wall); the minimum is set with "
                           "--min-wall")
     return covered
+
+
+def _enough(v: float) -> str:
+    """A distance to move by, ``v`` mm measured on the chords of curved outlines: rounded
+    up to 0.01 mm after adding two chords' error (``2 * CHORD_TOL``, one per side), so that
+    the move, made as written, clears the check (issue 84: "0.78 mm" for an overlap of
+    0.29 mm at a 0.5 mm minimum left a 0.49 mm wall, W0507)."""
+    from ...geometry.tessellate import CHORD_TOL
+    return f"{math.ceil(round((v + 2 * CHORD_TOL) * 100, 6)) / 100:.2f}"
 
 
 def _holes_allowed(ci, cj) -> bool:

@@ -22,6 +22,7 @@ from ..part.booleans import Drawing
 from ..part.nearby import _median, box_pairs
 from ..part.scanwork import turned, turned_back
 from .common import _area, _cut_openings, _loop_boxes, _solids_within, _union
+from .nicks import slit_fix
 
 def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: DiagnosticSink,
                  quick: bool = True, covered: set = frozenset(), loops=None,
@@ -762,9 +763,7 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
             if other is not None else []
         between = " and ".join(names)
         cx, cy = (p + q) / 2
-        fix = (f"make {names[0]} and {names[-1]} overlap (move one more than {w:.2f} mm "
-               f"towards the other) or open the gap to at least {t:g} mm (move one "
-               f"{t - w:.2f} mm away)")
+        fix = slit_fix(d, s, (p + q) / 2, w, t, names)
         sink.warning("W0519", f"a slit of empty space between {between} in `{s.path}` is "
                      f"{w:.2f} mm wide, narrower than {t:g} mm (over {length:.1f} mm, near "
                      f"({cx:.1f}, {cy:.1f})): narrower than a laser or router cuts, so it comes "
