@@ -21,18 +21,16 @@ NICK_TURN = 2 * math.pi / 3     # rad: a slit's two sides meet at a nick's floor
 CUSP = 1e-6                     # rad: a turn within this of pi is a cusp
 
 
-def _nick_corner(d: Drawing, s: Structure, at, reach: float):
-    """The corner in mm of part ``s``'s final exact outline where a slit's two sides
-    meet, nearest to ``at`` (the slit's narrowest place) within ``reach`` mm: a concave join
-    sharper than 60 degrees (turning right by more than :data:`NICK_TURN`), as (x, y, cusp)
-    (``cusp``: the sides leave it along one tangent, which no fillet rounds); or None: a slit
-    whose sides do not meet there (two lobes that come close; a floor between them, whose
-    corners are square).  Exact: ``Fillet(at=[...])`` matches it."""
+def _nick_corners(d: Drawing, s: Structure) -> list:
+    """The corners in mm of part ``s``'s final exact outline where a slit's two sides can
+    meet: each concave join sharper than 60 degrees (turning right by more than
+    :data:`NICK_TURN`), as (x, y, cusp) (``cusp``: the sides leave it along one tangent,
+    which no fillet rounds).  Exact: ``Fillet(at=[...])`` matches it."""
     from ...geometry.curves import Circle, turn_between
     shape = d.shapes.get(s)
     if shape is None or shape.is_empty():
-        return None
-    best, far = None, reach
+        return []
+    out = []
     for loops in d.exact.loops_of([shape]):
         for lp in loops:
             segs = lp.segments
@@ -46,18 +44,34 @@ def _nick_corner(d: Drawing, s: Structure, at, reach: float):
                     continue            # a cusp (a line into an arc tangent to it, back
                                         # the way it came) turns by +-pi either way
                 c = segs[k].start
-                r = math.hypot(c[0] - at[0], c[1] - at[1])
-                if r <= far:
-                    best, far = (float(c[0]), float(c[1]), abs(turn) >= math.pi - CUSP), r
+                out.append((float(c[0]), float(c[1]), abs(turn) >= math.pi - CUSP))
+    return out
+
+
+def _nick_corner(corners: list, at, reach: float):
+    """Of ``corners`` (:func:`_nick_corners`), the one nearest to ``at`` (a slit's narrowest
+    place) within ``reach`` mm, or None: a slit whose sides do not meet there (two lobes
+    that come close; a floor between them, whose corners are square)."""
+    best, far = None, reach
+    for c in corners:
+        r = math.hypot(c[0] - at[0], c[1] - at[1])
+        if r <= far:
+            best, far = c, r
     return best
 
 
-def slit_fix(d: Drawing, s: Structure, at, w: float, t: float, names: list) -> str:
+def slit_fix(d: Drawing, s: Structure, at, w: float, t: float, names: list,
+             found: dict | None = None) -> str:
     """The fix W0519's hint gives for a slit of part ``s`` whose narrowest place is ``at``
     (x, y in mm), ``w`` mm wide, at minimum ``t`` mm, between the shapes ``names`` (their
     labels, quoted): a nick's corner rounded, a cusp described without a number, else the
-    moves that close or open the gap."""
-    apex = _nick_corner(d, s, at, 2 * t)
+    moves that close or open the gap.  ``found`` keeps each part's corners between calls
+    (``id(s)`` -> :func:`_nick_corners`: 860 slits of one part searched its whole outline
+    each, 16 s)."""
+    found = {} if found is None else found
+    if id(s) not in found:
+        found[id(s)] = _nick_corners(d, s)
+    apex = _nick_corner(found[id(s)], at, 2 * t)
     if apex is not None and apex[2]:
         # a cusp: one side leaves the other along its tangent (an arm flush with a
         # rounded corner's straight side); a move only slides the cusp along, a fillet

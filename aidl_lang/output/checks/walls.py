@@ -745,6 +745,7 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     mouth = np.array([k[int(np.argmax(dist[k]))] for k, _ in groups], dtype=np.intp)
     faces = _faces_at(d, s, np.concatenate([V[v[mouth]], foot[mouth]]), tick) \
         if len(groups) else []
+    corners: dict = {}                  # the part's nick corners, found once (slit_fix)
     for i, (k, length) in enumerate(groups):
         tick()
         b = k[int(np.argmin(dist[k]))]
@@ -763,7 +764,7 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
             if other is not None else []
         between = " and ".join(names)
         cx, cy = (p + q) / 2
-        fix = slit_fix(d, s, (p + q) / 2, w, t, names)
+        fix = slit_fix(d, s, (p + q) / 2, w, t, names, corners)
         sink.warning("W0519", f"a slit of empty space between {between} in `{s.path}` is "
                      f"{w:.2f} mm wide, narrower than {t:g} mm (over {length:.1f} mm, near "
                      f"({cx:.1f}, {cy:.1f})): narrower than a laser or router cuts, so it comes "
