@@ -22,6 +22,19 @@ def _add(text: str, d: float) -> str:
     return f"{text} + {_r(d)}" if d > 0 else f"{text} - {_r(-d)}"
 
 
+CENTRE_TOL = 1e-6   # mm: a feature (a span's middle) this near the centre line is on it
+
+
+def _tied(gaps: dict) -> int:
+    """The body's reference a feature is tied to, from its distances ``gaps`` (mm) to the
+    centre line (key 0) and to the low and high edges (keys -1, 1): the centre line when
+    it is on it (as far from both edges: a maker means the centre), else the nearer edge
+    (a feature off the centre line is dimensioned from an edge; ties: the low edge)."""
+    if gaps[0] <= CENTRE_TOL:
+        return 0
+    return min((-1, 1), key=lambda k: (round(gaps[k], 9), k))
+
+
 class _Anchored:
     """The placing half of :class:`~.infer._Part`: needs ``anchor`` (the body Shape and its
     size params, or None), ``frame`` (per axis what stays: -1, 0, 1), ``shift`` (terms added
@@ -80,7 +93,7 @@ class _Anchored:
         key = "width" if axis == 0 else "height"
         c, half = sh.center[axis], sh.args[key] / 2
         r = v if ref is None else ref
-        side = min((0, -1, 1), key=lambda k: (round(abs(r - c - k * half), 9), k != 0))
+        side = _tied({k: abs(r - c - k * half) for k in (0, -1, 1)})
         if side == self.frame[axis]:
             return self.lit(v, axis)
         return _add(self.edge(axis, side), v - (c + side * half))
@@ -97,7 +110,7 @@ class _Anchored:
         key = "width" if axis == 0 else "height"
         c, half = sh.center[axis], sh.args[key] / 2
         gaps = {0: abs(mid - c), -1: lo - (c - half), 1: (c + half) - hi}
-        side = min((0, -1, 1), key=lambda k: (round(gaps[k], 9), k != 0))
+        side = _tied(gaps)
         if side == 0:
             return self.at(mid, axis, ref=c)
         gap = gaps[side]
@@ -134,7 +147,7 @@ class _Anchored:
         key = "width" if axis == 0 else "height"
         c, half = sh.center[axis], sh.args[key] / 2
         gaps = {0: abs((lo + hi) / 2 - c), -1: lo - (c - half), 1: (c + half) - hi}
-        return min((0, -1, 1), key=lambda k: (round(gaps[k], 9), k != 0))
+        return _tied(gaps)
 
     def from_body_centre(self, axis: int, term: str, c: float) -> str:
         """``term`` added to the body's centre along ``axis`` (``c``, mm, as drawn), which
