@@ -51,7 +51,7 @@ from .shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                      recognise)
 from .anchors import _Anchored
 from .engraving import _engraving
-from .features import edge_notches
+from .features import d_hole, edge_notches, keyhole
 from .makers import SINGLE_PARAMS, _MakerFeatures
 from ..chains.layers import _hole_layers
 from .mirror import mirrored_pair, pair_items, write_pair
@@ -925,25 +925,73 @@ LABEL_REACH = 25.0      # mm: a text this near a hole names it (moves with it), 
 LABEL_SIZES = 5.0       # ... within this many of its own heights (a label beside its feature)
 
 
+def _hole_ref(segs: list) -> tuple:
+    """``(centre, key)`` of a hole as its statement places it: a recognised shape's centre
+    (its kind and size as ``key``), a D-hole's or a keyhole's bore centre, else its box's
+    middle (``key`` None: a hole of its own)."""
+    sh = recognise(segs)
+    if sh is not None:
+        return sh.center, (sh.kind,) + tuple(round(x, 6) if isinstance(x, float) else x
+                                             for x in sh.size)
+    for find in (d_hole, keyhole):
+        got = find(segs)
+        if got is not None:
+            return got[0], None
+    b = _segs_box(segs)
+    return ((b[0] + b[2]) / 2, (b[1] + b[3]) / 2), None
+
+
 def _label_place(part: _Part, holes: list):
-    """A text's position as :func:`_engraving` writes it: from the reference of the hole
-    nearest it, within :data:`LABEL_REACH` (a label moves with the feature it names when
-    the plate grows), else from the body's reference nearest the text."""
+    """A text's position as :func:`_engraving` writes it (``place(p, size)``, ``p`` the
+    text's insertion point, drawing units): with the hole it names, so that it moves with
+    it when the plate grows, else from the body's reference nearest the text
+    (:meth:`~.anchors._Anchored.at`).  A text names the nearest hole of a size no other
+    hole of the part has (not a member of a pattern) that it is directly above, below or
+    beside (on the line through the hole's centre, within :data:`LABEL_REACH` of its edge),
+    else the nearest hole within :data:`LABEL_REACH` and :data:`LABEL_SIZES` text heights
+    of its centre."""
     if part.anchor is None:
         return lambda p, size: _pt(p)
     from scipy.spatial import cKDTree
-    mids = []
-    for segs in holes:
-        b = _segs_box(segs)
-        mids.append(((b[0] + b[2]) / 2, (b[1] + b[3]) / 2))
-    tree = cKDTree(mids) if mids else None
+    unit = 25.4 if UNIT.get() == "in" else 1.0
+    known: dict = {}
+
+    def index() -> dict:         # on the first text: most drawings have none
+        if not known:
+            refs = [_hole_ref(segs) for segs in holes]
+            boxes = [_segs_box(segs) for segs in holes]
+            known.update(refs=refs, boxes=boxes, shared=Counter(k for _, k in refs if k),
+                         tree=cKDTree([c for c, _ in refs]) if refs else None,
+                         big=max((math.dist(b[:2], b[2:]) for b in boxes), default=0.0))
+        return known
+
+    def aligned(p) -> int | None:
+        k = index()
+        best = None
+        for i in k["tree"].query_ball_point(p, LABEL_REACH / unit + k["big"]):
+            (c, key), b = k["refs"][i], k["boxes"][i]
+            if key is not None and k["shared"][key] > 1:
+                continue
+            if abs(p[0] - c[0]) <= EQUAL_TOL:
+                gap = max(b[1] - p[1], p[1] - b[3])
+            elif abs(p[1] - c[1]) <= EQUAL_TOL:
+                gap = max(b[0] - p[0], p[0] - b[2])
+            else:
+                continue
+            if 0 < gap <= LABEL_REACH / unit and (best is None or (gap, i) < best):
+                best = (gap, i)
+        return None if best is None else best[1]
 
     def place(p, size: float) -> str:
-        if tree is not None:       # within LABEL_REACH and LABEL_SIZES text heights
-            reach = min(LABEL_REACH / (25.4 if UNIT.get() == "in" else 1.0), LABEL_SIZES * size)
-            gap, i = tree.query(p, distance_upper_bound=reach)
+        if holes:
+            i = aligned(p)
+            refs = index()["refs"]
+            if i is not None:
+                return part.beside(refs[i][0], p)
+            reach = min(LABEL_REACH / unit, LABEL_SIZES * size)
+            gap, i = index()["tree"].query(p, distance_upper_bound=reach)
             if math.isfinite(gap):
-                return part.beside(mids[i], p)
+                return part.beside(refs[i][0], p)
         return f"({part.at(p[0], 0)}, {part.at(p[1], 1)})"
     return place
 
