@@ -98,6 +98,13 @@ class _Anchored:
             return self.lit(v, axis)
         return _add(self.edge(axis, side), v - (c + side * half))
 
+    def on_centre(self, v: float, axis: int) -> bool:
+        """Whether coordinate ``v`` (mm along ``axis``) is on the body's centre line."""
+        if self.anchor is None:
+            return False
+        sh = self.anchor[0]
+        return abs(v - sh.center[axis]) <= CENTRE_TOL
+
     def span_at(self, lo: float, hi: float, axis: int, size: str) -> str:
         """The centre of a span ``lo..hi`` (a cut-out's sides along ``axis``, mm) whose size
         is the param ``size``: kept from the body's edge nearest its near side (``width -

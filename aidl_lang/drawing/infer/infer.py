@@ -51,7 +51,7 @@ from .shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                      recognise)
 from .anchors import _Anchored
 from .engraving import _engraving
-from .features import d_hole, edge_notches, keyhole
+from .features import arc_slot, d_hole, edge_notches, keyhole, merged
 from .makers import SINGLE_PARAMS, _MakerFeatures
 from ..chains.layers import _hole_layers
 from .mirror import mirrored_pair, pair_items, write_pair
@@ -927,14 +927,16 @@ LABEL_SIZES = 5.0       # ... within this many of its own heights (a label besid
 
 def _hole_ref(segs: list) -> tuple:
     """``(centre, key)`` of a hole as its statement places it: a recognised shape's centre
-    (its kind and size as ``key``), a D-hole's or a keyhole's bore centre, else its box's
-    middle (``key`` None: a hole of its own)."""
+    (its kind and size as ``key``), an arc slot's centre, a keyhole's or a D-hole's bore
+    centre (:meth:`~.makers._MakerFeatures.maker_hole`), else its box's middle (``key``
+    None: a hole of its own)."""
     sh = recognise(segs)
     if sh is not None:
         return sh.center, (sh.kind,) + tuple(round(x, 6) if isinstance(x, float) else x
                                              for x in sh.size)
-    for find in (d_hole, keyhole):
-        got = find(segs)
+    one = merged(segs)
+    for find in (arc_slot, keyhole, d_hole):
+        got = find(one)
         if got is not None:
             return got[0], None
     b = _segs_box(segs)
@@ -970,29 +972,33 @@ def _label_place(part: _Part, holes: list):
         best = None
         for i in k["tree"].query_ball_point(p, LABEL_REACH / unit + k["big"]):
             (c, key), b = k["refs"][i], k["boxes"][i]
-            if key is not None and k["shared"][key] > 1:
-                continue
             if abs(p[0] - c[0]) <= EQUAL_TOL:
                 gap = max(b[1] - p[1], p[1] - b[3])
             elif abs(p[1] - c[1]) <= EQUAL_TOL:
                 gap = max(b[0] - p[0], p[0] - b[2])
             else:
                 continue
-            if 0 < gap <= LABEL_REACH / unit and (best is None or (gap, i) < best):
-                best = (gap, i)
-        return None if best is None else best[1]
+            # one of a pattern's size only when no hole of its own is in line
+            rank = (key is not None and k["shared"][key] > 1, gap, i)
+            if 0 < gap <= LABEL_REACH / unit and (best is None or rank < best):
+                best = rank
+        return None if best is None else best[2]
 
     def place(p, size: float) -> str:
+        base = None
         if holes:
             i = aligned(p)
             refs = index()["refs"]
-            if i is not None:
-                return part.beside(refs[i][0], p)
-            reach = min(LABEL_REACH / unit, LABEL_SIZES * size)
-            gap, i = index()["tree"].query(p, distance_upper_bound=reach)
-            if math.isfinite(gap):
-                return part.beside(refs[i][0], p)
-        return f"({part.at(p[0], 0)}, {part.at(p[1], 1)})"
+            if i is None:
+                reach = min(LABEL_REACH / unit, LABEL_SIZES * size)
+                gap, i = index()["tree"].query(p, distance_upper_bound=reach)
+                i = i if math.isfinite(gap) else None
+            base = None if i is None else refs[i][0]
+        if base is None:
+            return f"({part.at(p[0], 0)}, {part.at(p[1], 1)})"
+        # on the body's centre line a text stays on it (a title centred on the plate)
+        return "(" + ", ".join(part.at(p[a], a, ref=None if part.on_centre(p[a], a)
+                                       else base[a]) for a in (0, 1)) + ")"
     return place
 
 
