@@ -298,3 +298,25 @@ def test_a_label_names_the_hole_of_its_own_size_before_a_pattern_member_in_line(
     doc.saveas(src)
     text, _, _, moved = _edited(tmp_path, src, {"height": "100 mm"})
     assert moved == pytest.approx((0, 10), abs=1e-9), text
+
+
+def test_a_label_off_the_lines_of_a_hole_near_it_is_placed_from_its_edges(tmp_path):
+    """"IN" 10 mm from the left edge and 12 mm from a centred hole, in line with none: it is
+    the plate's label, so at 50 mm wide it stays 10 mm from the left edge (before: it moved
+    with the hole, 5 mm)."""
+    src = tmp_path / "o.dxf"
+    _plate(src, 40, 50, circles=[(20, 8, 8)], texts=[("IN", 10, 15, 3)])
+    text, circles, _, moved = _edited(tmp_path, src, {"width": "50 mm"})
+    assert circles == [(25, 8)], text
+    assert moved == pytest.approx((0, 0), abs=1e-9), text
+
+
+def test_a_boards_holes_listed_together_move_as_one(tmp_path):
+    """An Arduino's four holes (one size, no pattern) on a 100 mm plate, their middle 5.7 mm
+    right of the centre line: placed together by the reference nearest that middle, the
+    centre, so at 120 mm wide all four move 10 mm, the board's shape kept."""
+    holes = [(29.68, 10.87), (30.95, 59.13), (81.75, 15.95), (81.75, 43.89)]
+    src = tmp_path / "a.dxf"
+    _plate(src, 100, 70, circles=[(x, y, 3.2) for x, y in holes])
+    text, circles, _, _ = _edited(tmp_path, src, {"width": "120 mm"})
+    assert circles == sorted((round(x + 10, 6), y) for x, y in holes), text

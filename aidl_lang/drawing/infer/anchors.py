@@ -81,19 +81,24 @@ class _Anchored:
         term = {1: f"{size} / 2", -1: f"-{size} / 2", 2: size, -2: f"-{size}"}[k]
         return self.plus(c + g * half, term, axis)
 
-    def at(self, v: float, axis: int, ref: float | None = None) -> str:
-        """Coordinate ``v`` (``axis`` 0: x, 1: y) written from the body's nearest reference
-        to ``ref`` (default ``v``): its centre, or its left/right (bottom/top) edge by the
-        width (height) param, so that a new width moves what sits by an edge with the edge
-        and keeps what sits by the centre on the centre (ties go to the centre); a number
-        where that reference is what stays (:meth:`edge`)."""
+    def at(self, v: float, axis: int, ref: float | None = None, nearest: bool = False) -> str:
+        """Coordinate ``v`` (``axis`` 0: x, 1: y) written from the body's reference that
+        ``ref`` (default ``v``) is tied to (:func:`_tied`): its centre line when on it, else
+        its nearer left/right (bottom/top) edge by the width (height) param, so that a new
+        width moves what sits by an edge with the edge and keeps what sits on the centre
+        line on it; a number where that reference is what stays (:meth:`edge`).
+        ``nearest``: the reference nearest ``ref`` whatever it is, ties to the centre (a
+        group of holes listed together, a board's, placed by its middle: it moves as one,
+        with the centre it is nearest, as a board centred on the plate does)."""
         if self.anchor is None:
             return self.lit(v, axis)
         sh, sizes = self.anchor
         key = "width" if axis == 0 else "height"
         c, half = sh.center[axis], sh.args[key] / 2
         r = v if ref is None else ref
-        side = _tied({k: abs(r - c - k * half) for k in (0, -1, 1)})
+        gaps = {k: abs(r - c - k * half) for k in (0, -1, 1)}
+        side = min((0, -1, 1), key=lambda k: (round(gaps[k], 9), k != 0)) if nearest \
+            else _tied(gaps)
         if side == self.frame[axis]:
             return self.lit(v, axis)
         return _add(self.edge(axis, side), v - (c + side * half))

@@ -675,8 +675,8 @@ class _Part(_Anchored, _MakerFeatures):
             # as one when the plate grows)
             mid = [sum(m.center[k] for m in rest) / len(rest) for k in (0, 1)]
             hn = self.name_near(base + "s", mid)
-            pts = ", ".join(f"({self.at(m.center[0], 0, mid[0])}, "
-                            f"{self.at(m.center[1], 1, mid[1])})" for m in rest)
+            pts = ", ".join(f"({self.at(m.center[0], 0, mid[0], nearest=True)}, "
+                            f"{self.at(m.center[1], 1, mid[1], nearest=True)})" for m in rest)
             w.emit(depth, f"for c in [{pts}] {{")
             self.hole_block(depth + 1, hn, sh, "c", sizes)
             w.emit(depth, "}")
@@ -921,8 +921,7 @@ def _at_as_drawn(p, size: float) -> str:
     return _pt(p)
 
 
-LABEL_REACH = 25.0      # mm: a text this near a hole names it (moves with it), and
-LABEL_SIZES = 5.0       # ... within this many of its own heights (a label beside its feature)
+LABEL_REACH = 25.0      # mm: a text in line with a hole this near its edge names it
 
 
 def _hole_ref(segs: list) -> tuple:
@@ -946,12 +945,12 @@ def _hole_ref(segs: list) -> tuple:
 def _label_place(part: _Part, holes: list):
     """A text's position as :func:`_engraving` writes it (``place(p, size)``, ``p`` the
     text's insertion point, drawing units): with the hole it names, so that it moves with
-    it when the plate grows, else from the body's reference nearest the text
-    (:meth:`~.anchors._Anchored.at`).  A text names the nearest hole of a size no other
-    hole of the part has (not a member of a pattern) that it is directly above, below or
-    beside (on the line through the hole's centre, within :data:`LABEL_REACH` of its edge),
-    else the nearest hole within :data:`LABEL_REACH` and :data:`LABEL_SIZES` text heights
-    of its centre."""
+    it when the plate grows, else from the body's centre line or nearer edge
+    (:meth:`~.anchors._Anchored.at`).  A text names the nearest hole it is directly above,
+    below or beside (on the line through the hole's centre, within :data:`LABEL_REACH` of
+    its edge; a hole of a size no other hole has before a pattern's member); a text in line
+    with none names none (near a hole but off its lines, it is as likely the plate's).
+    Along an axis on which the text is on the body's centre line it stays on that line."""
     if part.anchor is None:
         return lambda p, size: _pt(p)
     from scipy.spatial import cKDTree
@@ -988,12 +987,7 @@ def _label_place(part: _Part, holes: list):
         base = None
         if holes:
             i = aligned(p)
-            refs = index()["refs"]
-            if i is None:
-                reach = min(LABEL_REACH / unit, LABEL_SIZES * size)
-                gap, i = index()["tree"].query(p, distance_upper_bound=reach)
-                i = i if math.isfinite(gap) else None
-            base = None if i is None else refs[i][0]
+            base = None if i is None else index()["refs"][i][0]
         if base is None:
             return f"({part.at(p[0], 0)}, {part.at(p[1], 1)})"
         # on the body's centre line a text stays on it (a title centred on the plate)
