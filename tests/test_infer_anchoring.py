@@ -219,10 +219,15 @@ def _edited(tmp_path, src, overrides: dict):
         assert res.ok, (text, [str(d) for d in res.errors])
         return ezdxf.read(io.StringIO(res.to_dxf())).modelspace()
 
+    def points(e) -> list:
+        if e.dxftype() == "LWPOLYLINE":
+            return list(e.get_points("xy"))
+        if e.dxftype() == "LINE":
+            return [(e.dxf.start.x, e.dxf.start.y), (e.dxf.end.x, e.dxf.end.y)]
+        return []
+
     def box(msp):
-        pts = [v for e in msp if e.dxf.layer == "ENGRAVE" for v in
-               (e.get_points("xy") if e.dxftype() == "LWPOLYLINE" else
-                [(e.dxf.start.x, e.dxf.start.y), (e.dxf.end.x, e.dxf.end.y)] if e.dxftype() == "LINE" else [])]
+        pts = [v for e in msp if e.dxf.layer == "ENGRAVE" for v in points(e)]
         return min(p[0] for p in pts), min(p[1] for p in pts)
     msp = out(overrides)
     cut = [e for e in msp if e.dxf.layer != "ENGRAVE"]
