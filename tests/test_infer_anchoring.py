@@ -253,36 +253,41 @@ def test_a_hole_off_the_centre_line_stays_by_its_nearer_edge(tmp_path):
     assert circles == [(40, 15), (70, 45)], text
 
 
-def test_a_label_right_under_its_hole_moves_with_it_when_the_plate_grows(tmp_path):
-    """"PWR" 22.5 mm under a hole (more than five of its 3 mm heights, nearer the bottom
-    edge than the hole's centre) is in line with it: it names it, and at 120 mm high both
-    move up together (before: the text stayed 17.5 mm from the bottom edge)."""
+LABELS = {
+    # "PWR" 22.5 mm under a hole (more than five of its 3 mm heights, nearer the bottom edge
+    # than the hole's centre) is in line with it: it names it, and at 120 mm high both move
+    # up together (before: the text stayed 17.5 mm from the bottom edge)
+    "right under its hole": ((100, 80), {"circles": [(15, 40, 8)], "texts": [("PWR", 15, 17.5, 3)]},
+                             {"height": "120 mm"}, [(15, 60)], (0, 20)),
+    # a D-hole's bore on the centre line (its box's middle is not: the flat cuts it) and its
+    # label 15 mm under it: at 200 mm wide both stay on the centre line (the label moves 20)
+    "under a D-hole's bore": ((160, 80), {"dholes": [(80, 40)], "texts": [("12V", 80, 25, 5)]},
+                              {"width": "200 mm"}, [], (20, 0)),
+    # a title centred on the plate with a hole 8 mm right of it: the hole is by the right
+    # edge, the title stays on the centre line at 80 mm wide (moves 10, not 20)
+    "a title on the centre line": ((60, 100), {"circles": [(38, 56, 5)],
+                                               "texts": [("M3", 30, 50, 4)]},
+                                   {"width": "80 mm"}, [(58, 56)], (10, 0)),
+    # "IN" 10 mm from the left edge and 12 mm from a centred hole, in line with none: the
+    # plate's label, it stays 10 mm from the left edge at 50 mm wide (before: it moved 5
+    # with the hole)
+    "off the lines of a hole": ((40, 50), {"circles": [(20, 8, 8)],
+                                           "texts": [("IN", 10, 15, 3)]},
+                                {"width": "50 mm"}, [(25, 8)], (0, 0)),
+}
+
+
+@pytest.mark.parametrize("case", LABELS, ids=list(LABELS))
+def test_a_label_moves_with_the_hole_it_is_in_line_with(tmp_path, case):
+    """A text in line with a hole (above, below or beside it, within 25 mm of its edge)
+    names it and moves with it when the plate grows; one on the plate's centre line stays
+    on it; one in line with no hole is placed from the plate's centre line or nearer edge."""
+    (W, H), drawn, overrides, want, move = LABELS[case]
     src = tmp_path / "l.dxf"
-    _plate(src, 100, 80, circles=[(15, 40, 8)], texts=[("PWR", 15, 17.5, 3)])
-    text, circles, _, moved = _edited(tmp_path, src, {"height": "120 mm"})
-    assert circles == [(15, 60)], text
-    assert moved == pytest.approx((0, 20), abs=1e-9), text
-
-
-def test_a_label_under_a_d_hole_on_the_centre_line_follows_its_bore(tmp_path):
-    """A D-hole's bore on the plate's centre line (its box's middle is not: the flat cuts
-    it) and its label 15 mm under it: at 200 mm wide both stay on the centre line, x = 100
-    (before: the label stayed at x = 80)."""
-    src = tmp_path / "d.dxf"
-    _plate(src, 160, 80, dholes=[(80, 40)], texts=[("12V", 80, 25, 5)])
-    text, _, _, moved = _edited(tmp_path, src, {"width": "200 mm"})
-    assert "c = (width / 2, height / 2)" in text, text
-    assert moved == pytest.approx((20, 0), abs=1e-9), text
-
-
-def test_a_title_on_the_centre_line_stays_on_it_beside_a_hole(tmp_path):
-    """A title centred on a 60 x 100 plate with a hole 8 mm right of it: the hole is by the
-    right edge, the title stays on the centre line at 80 mm wide (x = 40, not 50)."""
-    src = tmp_path / "t.dxf"
-    _plate(src, 60, 100, circles=[(38, 56, 5)], texts=[("M3", 30, 50, 4)])
-    text, circles, _, moved = _edited(tmp_path, src, {"width": "80 mm"})
-    assert circles == [(58, 56)], text
-    assert moved == pytest.approx((10, 0), abs=1e-9), text
+    _plate(src, W, H, **drawn)
+    text, circles, _, moved = _edited(tmp_path, src, overrides)
+    assert circles == want, text
+    assert moved == pytest.approx(move, abs=1e-9), text
 
 
 def test_a_label_names_the_hole_of_its_own_size_before_a_pattern_member_in_line(tmp_path):
@@ -303,17 +308,6 @@ def test_a_label_names_the_hole_of_its_own_size_before_a_pattern_member_in_line(
     doc.saveas(src)
     text, _, _, moved = _edited(tmp_path, src, {"height": "100 mm"})
     assert moved == pytest.approx((0, 10), abs=1e-9), text
-
-
-def test_a_label_off_the_lines_of_a_hole_near_it_is_placed_from_its_edges(tmp_path):
-    """"IN" 10 mm from the left edge and 12 mm from a centred hole, in line with none: it is
-    the plate's label, so at 50 mm wide it stays 10 mm from the left edge (before: it moved
-    with the hole, 5 mm)."""
-    src = tmp_path / "o.dxf"
-    _plate(src, 40, 50, circles=[(20, 8, 8)], texts=[("IN", 10, 15, 3)])
-    text, circles, _, moved = _edited(tmp_path, src, {"width": "50 mm"})
-    assert circles == [(25, 8)], text
-    assert moved == pytest.approx((0, 0), abs=1e-9), text
 
 
 def test_a_boards_holes_listed_together_move_as_one(tmp_path):
