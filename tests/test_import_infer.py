@@ -117,8 +117,9 @@ def test_plate_comes_back_as_its_design(plate):
     assert "for sx in [-1, 1] {" in text and "hole corner_holes" in text
     assert "for i in range(bolt_circle_n) {" in text and "hole bolt_circle" in text
     assert "param bolt_circle_n = 6" in text and "i * 360 deg / bolt_circle_n" in text
-    # the bolt circle is centred on the bore it surrounds: one centre for both
-    assert "bore_c = (-15, 0)" in text and "polar(bore_c, bolt_circle_pcd / 2, " in text
+    # the bolt circle is centred on the bore it surrounds: one centre for both, off the
+    # centre line, so placed from the nearer (left) edge, 35 mm in
+    assert "bore_c = (-width / 2 + 35, 0)" in text and "polar(bore_c, bolt_circle_pcd / 2, " in text
     assert "hole bore { h = Circle(center=bore_c, diameter=bore_d) }" in text
     assert "param bolt_circle_pcd = 36 mm" in text and "param corner_hole_d = 4 mm" in text
     assert "param corner_inset = 6 mm" in text and "param width = 100 mm" in text
@@ -388,8 +389,10 @@ def _features(path) -> dict:
 def test_a_new_plate_width_keeps_what_sits_by_an_edge_by_that_edge(mounting, tmp_path):
     """The issue's "done when": the inferred mounting plate with a new `plate_width` (120 ->
     150): the corner holes keep 8 mm to the side edges, the slots (by the right edge) keep
-    30 and 16 mm to it, the bore and its motor holes (by the centre) keep theirs to the
-    centre; before, every feature was placed by absolute numbers and only the corners moved."""
+    30 and 16 mm to it, the bore and its motor holes (20 mm left of the centre line, so by
+    the left edge since issue 85: off the centre line a feature is dimensioned from the
+    nearer edge) keep 40 mm to the left edge; before issue 71, every feature was placed by
+    absolute numbers and only the corners moved."""
     text, first, _, _ = mounting
     res = aidl_lang.compile(text, path=tmp_path / "w.aidl", overrides={"plate_width": "150"})
     assert res.ok, [str(d) for d in res.errors]
@@ -400,8 +403,8 @@ def test_a_new_plate_width_keeps_what_sits_by_an_edge_by_that_edge(mounting, tmp
     assert [75 - x for x, _ in new["slot"][::-1]][:1] == [16.0]
     assert sorted({round(60 - x, 6) for x, _ in old["slot"]}) == \
         sorted({round(75 - x, 6) for x, _ in new["slot"]}) == [16.0, 30.0]
-    assert old["bore"] == new["bore"] == [(-20.0, 0.0)]
-    assert old["motor"] == new["motor"] and len(new["motor"]) == 4
+    assert old["bore"] == [(-20.0, 0.0)] and new["bore"] == [(-35.0, 0.0)]
+    assert [(x - 15, y) for x, y in old["motor"]] == new["motor"] and len(new["motor"]) == 4
 
 
 EXAMPLES = sorted((ROOT / "examples").glob("*.aidl"))

@@ -2,8 +2,8 @@
 so that its width and height params grow it from the point its drawing is drawn from (a
 corner at the origin: that corner; the centre at the origin: the centre), and places every
 feature (a round hole, a cut-out no primitive makes, a bore with a key) from the body's
-reference nearest it (its left or right edge, its centre; ties go to the centre), so that a
-new width or height keeps each feature where the drawing ties it.
+centre line when it is on it, else from the nearer edge, so that a new width or height keeps
+each feature where the drawing ties it; a label with the hole it names.
 
 The law: a generated plate with generated features, drawn with ezdxf; its inferred program
 compiled with a new width and height (``overrides``, as ``--set``) and written to DXF is the
@@ -11,6 +11,7 @@ drawing of the same design at the new size, exactly (1e-6 mm, no translation all
 every feature kind and both origins."""
 from __future__ import annotations
 
+import io
 import math
 import sys
 
@@ -29,8 +30,9 @@ import dxf_compare  # noqa: E402
 
 def _ref(v: float, size: float) -> tuple[int, float]:
     """The reference a coordinate is tied to: (-1 the low edge, 0 the centre, 1 the high
-    edge, the offset from it); the nearest, ties to the centre, then the low edge."""
-    side = min((0, -1, 1), key=lambda k: (round(abs(v - size / 2 - k * size / 2), 9), k != 0))
+    edge, the offset from it); the centre line when on it, else the nearer edge (ties: the
+    low one)."""
+    side = 0 if abs(v - size / 2) <= 1e-6 else -1 if v <= size / 2 else 1
     return side, v - (size / 2 + side * size / 2)
 
 
@@ -43,12 +45,12 @@ ROW = (3, 9.0)          # a row of 3 holes 9 mm apart along x, its x the first h
 
 
 def _moved_row(x: float, size: float, new: float) -> float:
-    """A row's first x at the new size: kept by its end member nearer an edge than its
-    middle is to the centre line, else by its middle (ties to the centre)."""
+    """A row's first x at the new size: kept by its middle on the centre line, else by its
+    end member nearer an edge."""
     n, pitch = ROW
     lo, hi = x, x + (n - 1) * pitch
     gaps = {0: abs((lo + hi) / 2 - size / 2), -1: lo, 1: size - hi}
-    side = min((0, -1, 1), key=lambda k: (round(gaps[k], 9), k != 0))
+    side = 0 if gaps[0] <= 1e-6 else -1 if gaps[-1] <= gaps[1] else 1
     if side == 0:
         return _moved((lo + hi) / 2, size, new) - (hi - lo) / 2
     return lo if side < 0 else new - gaps[1] - (hi - lo)
@@ -112,6 +114,13 @@ def test_law_a_new_plate_size_keeps_every_feature_where_the_drawing_ties_it(
     draw(src, W, H, centred, placed)
     text, _ = import_drawing(src.read_bytes(), "p.dxf", infer=True)
     W2, H2 = W + dW, H + dH
+    moved = [(k, (_moved_row if k == "row" else _moved)(x, W, W2), _moved(y, H, H2))
+             for k, x, y in placed]
+    if any(math.hypot(a[1] - b[1], a[2] - b[2]) < 12 + 18 * ("row" in (a[0], b[0]))
+           for a in moved for b in moved if a is not b) or \
+            any(not 10 <= x <= W2 - 10 - 18 * (k == "row") or not 10 <= y <= H2 - 10
+                for k, x, y in moved):
+        reject()                         # features that meet, or leave the plate, at the new size
     res = aidl_lang.compile(text, path=tmp_path / "p.aidl",
                             overrides={"width": f"{W2} mm", "height": f"{H2} mm"})
     assert res.ok, (text, [str(d) for d in res.errors])
@@ -120,8 +129,7 @@ def test_law_a_new_plate_size_keeps_every_feature_where_the_drawing_ties_it(
     want = tmp_path / "want.dxf"
     # the truth: each feature as far from its reference as drawn, the plate grown from its
     # origin (a corner at (0, 0), or its centre)
-    draw(want, W2, H2, centred, [(k, (_moved_row if k == "row" else _moved)(x, W, W2),
-                                  _moved(y, H, H2)) for k, x, y in placed])
+    draw(want, W2, H2, centred, moved)
     dxf_compare.TOL = 1e-6
     left, extra = dxf_compare.unmatched(dxf_compare.curves(want), dxf_compare.curves(got))
     assert not left and not extra, (text, left[:3], extra[:3])
@@ -136,8 +144,9 @@ def test_a_plate_drawn_from_its_corner_grows_from_it(tmp_path):
     text, _ = import_drawing(src.read_bytes(), "k.dxf", infer=True)
     assert "body = Rectangle(center=(width / 2, height / 2), width=width, height=height)" \
         in text, text
-    # the bore with its key is a keyway (tests/test_infer_bores.py), its centre by the edge
-    assert "c = (width - 20, height / 2 + 10)" in text and "param keyway_w = 3 mm" in text, text
+    # the bore with its key is a keyway (tests/test_infer_bores.py), its centre by the
+    # nearer (right, top) edges
+    assert "c = (width - 20, height - 20)" in text and "param keyway_w = 3 mm" in text, text
     res = aidl_lang.compile(text, path=tmp_path / "k.aidl", overrides={"width": "150 mm"})
     assert res.ok and res.freedom()["dof"] == 0
     (part,) = res.parts
@@ -176,6 +185,139 @@ def test_labels_on_their_own_layer_move_with_the_hole_they_name(tmp_path):
     m.add_text("PWR", height=3, dxfattribs={"layer": "LABELS", "insert": (105, 28)})
     doc.saveas(tmp_path / "l.dxf")
     text, _ = import_drawing((tmp_path / "l.dxf").read_bytes(), "l.dxf", infer=True)
-    assert 'Text("PWR", position=(width - 15, height / 2 - 2)' in text, text
+    assert 'Text("PWR", position=(width - 15, 28)' in text, text
     res = aidl_lang.compile(text, path=tmp_path / "l.aidl", overrides={"width": "150 mm"})
     assert res.ok
+
+
+def _plate(path, W: float, H: float, circles=(), texts=(), dholes=()) -> None:
+    """A W x H plate from (0, 0) with ``circles`` ``(x, y, d)``, centred TEXT ``texts``
+    ``(word, x, y, height)`` and D-holes ``(x, y)`` (radius 5, a flat 3.5 right of centre)."""
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    m = doc.modelspace()
+    m.add_lwpolyline([(0, 0), (W, 0), (W, H), (0, H)], close=True)
+    for x, y, d in circles:
+        m.add_circle((x, y), d / 2)
+    for x, y in dholes:
+        a = math.degrees(math.acos(3.5 / 5))
+        s = 5 * math.sin(math.radians(a))
+        m.add_arc((x, y), 5, a, 360 - a)
+        m.add_line((x + 3.5, y - s), (x + 3.5, y + s))
+    for word, x, y, h in texts:
+        m.add_text(word, height=h).set_placement(
+            (x, y), align=ezdxf.enums.TextEntityAlignment.MIDDLE_CENTER)
+    doc.saveas(path)
+
+
+def _edited(tmp_path, src, overrides: dict):
+    """``(program, circle centres, arc centres, how far the engraved text moved (dx, dy))``
+    of ``src`` inferred and compiled with ``overrides``, read back by ezdxf; the text's
+    move is its strokes' box against the program compiled as drawn."""
+    text, _ = import_drawing(src.read_bytes(), src.name, infer=True)
+
+    def out(ov):
+        res = aidl_lang.compile(text, path=tmp_path / "e.aidl", overrides=ov)
+        assert res.ok, (text, [str(d) for d in res.errors])
+        return ezdxf.read(io.StringIO(res.to_dxf())).modelspace()
+
+    def points(e) -> list:
+        if e.dxftype() == "LWPOLYLINE":
+            return list(e.get_points("xy"))
+        if e.dxftype() == "LINE":
+            return [(e.dxf.start.x, e.dxf.start.y), (e.dxf.end.x, e.dxf.end.y)]
+        return []
+
+    def box(msp):
+        pts = [v for e in msp if e.dxf.layer == "ENGRAVE" for v in points(e)]
+        return min(p[0] for p in pts), min(p[1] for p in pts)
+    msp = out(overrides)
+    cut = [e for e in msp if e.dxf.layer != "ENGRAVE"]
+    circles = sorted((round(e.dxf.center.x, 6), round(e.dxf.center.y, 6))
+                     for e in cut if e.dxftype() == "CIRCLE")
+    arcs = sorted({(round(e.dxf.center.x, 6), round(e.dxf.center.y, 6))
+                   for e in cut if e.dxftype() == "ARC"})
+    moved = None
+    if any(e.dxf.layer == "ENGRAVE" for e in msp):
+        (x1, y1), (x0, y0) = box(msp), box(out({}))
+        moved = (x1 - x0, y1 - y0)
+    return text, circles, arcs, moved
+
+
+def test_a_hole_off_the_centre_line_stays_by_its_nearer_edge(tmp_path):
+    """A hole 40 mm from the left edge of a 100 mm plate (10 mm left of the centre line) is
+    dimensioned from that edge, only a hole on the centre line from the centre: at 140 mm
+    wide the first stays 40 mm from the left edge (before: 10 mm left of the new centre,
+    at 60) and the second follows the centre to 70."""
+    src = tmp_path / "c.dxf"
+    _plate(src, 100, 60, circles=[(40, 15, 5), (50, 45, 4)])
+    text, circles, _, _ = _edited(tmp_path, src, {"width": "140 mm"})
+    assert circles == [(40, 15), (70, 45)], text
+
+
+LABELS = {
+    # "PWR" 22.5 mm under a hole (more than five of its 3 mm heights, nearer the bottom edge
+    # than the hole's centre) is in line with it: it names it, and at 120 mm high both move
+    # up together (before: the text stayed 17.5 mm from the bottom edge)
+    "right under its hole": ((100, 80), {"circles": [(15, 40, 8)], "texts": [("PWR", 15, 17.5, 3)]},
+                             {"height": "120 mm"}, [(15, 60)], (0, 20)),
+    # a D-hole's bore on the centre line (its box's middle is not: the flat cuts it) and its
+    # label 15 mm under it: at 200 mm wide both stay on the centre line (the label moves 20)
+    "under a D-hole's bore": ((160, 80), {"dholes": [(80, 40)], "texts": [("12V", 80, 25, 5)]},
+                              {"width": "200 mm"}, [], (20, 0)),
+    # a title centred on the plate with a hole 8 mm right of it: the hole is by the right
+    # edge, the title stays on the centre line at 80 mm wide (moves 10, not 20)
+    "a title on the centre line": ((60, 100), {"circles": [(38, 56, 5)],
+                                               "texts": [("M3", 30, 50, 4)]},
+                                   {"width": "80 mm"}, [(58, 56)], (10, 0)),
+    # "IN" 10 mm from the left edge and 12 mm from a centred hole, in line with none: the
+    # plate's label, it stays 10 mm from the left edge at 50 mm wide (before: it moved 5
+    # with the hole)
+    "off the lines of a hole": ((40, 50), {"circles": [(20, 8, 8)],
+                                           "texts": [("IN", 10, 15, 3)]},
+                                {"width": "50 mm"}, [(25, 8)], (0, 0)),
+}
+
+
+@pytest.mark.parametrize("case", LABELS, ids=list(LABELS))
+def test_a_label_moves_with_the_hole_it_is_in_line_with(tmp_path, case):
+    """A text in line with a hole (above, below or beside it, within 25 mm of its edge)
+    names it and moves with it when the plate grows; one on the plate's centre line stays
+    on it; one in line with no hole is placed from the plate's centre line or nearer edge."""
+    (W, H), drawn, overrides, want, move = LABELS[case]
+    src = tmp_path / "l.dxf"
+    _plate(src, W, H, **drawn)
+    text, circles, _, moved = _edited(tmp_path, src, overrides)
+    assert circles == want, text
+    assert moved == pytest.approx(move, abs=1e-9), text
+
+
+def test_a_label_names_the_hole_of_its_own_size_before_a_pattern_member_in_line(tmp_path):
+    """A centred cut-out's label 18 mm under it, in line with a column of a grid of holes
+    nearer it: the label names the hole of its own (the grid's members are a pattern), so
+    at 100 mm high it stays 18 mm under the cut-out, y = 32."""
+    src = tmp_path / "g.dxf"
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    m = doc.modelspace()
+    m.add_lwpolyline([(0, 0), (60, 0), (60, 80), (0, 80)], close=True)
+    m.add_lwpolyline([(19, 35), (41, 35), (41, 45), (19, 45)], close=True)
+    for i in range(4):
+        for j in range(3):
+            m.add_circle((20 + 10 * i, 8 + 10 * j), 1.25)
+    m.add_text("IN", height=3).set_placement(
+        (30, 22), align=ezdxf.enums.TextEntityAlignment.MIDDLE_CENTER)
+    doc.saveas(src)
+    text, _, _, moved = _edited(tmp_path, src, {"height": "100 mm"})
+    assert moved == pytest.approx((0, 10), abs=1e-9), text
+
+
+def test_a_boards_holes_listed_together_move_as_one(tmp_path):
+    """An Arduino's four holes (one size, no pattern) on a 100 mm plate, their middle 5.7 mm
+    right of the centre line: placed together by the reference nearest that middle, the
+    centre, so at 120 mm wide all four move 10 mm, the board's shape kept."""
+    holes = [(29.68, 10.87), (30.95, 59.13), (81.75, 15.95), (81.75, 43.89)]
+    src = tmp_path / "a.dxf"
+    _plate(src, 100, 70, circles=[(x, y, 3.2) for x, y in holes])
+    text, circles, _, _ = _edited(tmp_path, src, {"width": "120 mm"})
+    assert circles == sorted((round(x + 10, 6), y) for x, y in holes), text

@@ -22,6 +22,19 @@ def _add(text: str, d: float) -> str:
     return f"{text} + {_r(d)}" if d > 0 else f"{text} - {_r(-d)}"
 
 
+CENTRE_TOL = 1e-6   # mm: a feature (a span's middle) this near the centre line is on it
+
+
+def _tied(gaps: dict) -> int:
+    """The body's reference a feature is tied to, from its distances ``gaps`` (mm) to the
+    centre line (key 0) and to the low and high edges (keys -1, 1): the centre line when
+    it is on it (as far from both edges: a maker means the centre), else the nearer edge
+    (a feature off the centre line is dimensioned from an edge; ties: the low edge)."""
+    if gaps[0] <= CENTRE_TOL:
+        return 0
+    return min((-1, 1), key=lambda k: (round(gaps[k], 9), k))
+
+
 class _Anchored:
     """The placing half of :class:`~.infer._Part`: needs ``anchor`` (the body Shape and its
     size params, or None), ``frame`` (per axis what stays: -1, 0, 1), ``shift`` (terms added
@@ -68,22 +81,34 @@ class _Anchored:
         term = {1: f"{size} / 2", -1: f"-{size} / 2", 2: size, -2: f"-{size}"}[k]
         return self.plus(c + g * half, term, axis)
 
-    def at(self, v: float, axis: int, ref: float | None = None) -> str:
-        """Coordinate ``v`` (``axis`` 0: x, 1: y) written from the body's nearest reference
-        to ``ref`` (default ``v``): its centre, or its left/right (bottom/top) edge by the
-        width (height) param, so that a new width moves what sits by an edge with the edge
-        and keeps what sits by the centre on the centre (ties go to the centre); a number
-        where that reference is what stays (:meth:`edge`)."""
+    def at(self, v: float, axis: int, ref: float | None = None, nearest: bool = False) -> str:
+        """Coordinate ``v`` (``axis`` 0: x, 1: y) written from the body's reference that
+        ``ref`` (default ``v``) is tied to (:func:`_tied`): its centre line when on it, else
+        its nearer left/right (bottom/top) edge by the width (height) param, so that a new
+        width moves what sits by an edge with the edge and keeps what sits on the centre
+        line on it; a number where that reference is what stays (:meth:`edge`).
+        ``nearest``: the reference nearest ``ref`` whatever it is, ties to the centre (a
+        group of holes listed together, a board's, placed by its middle: it moves as one,
+        with the centre it is nearest, as a board centred on the plate does)."""
         if self.anchor is None:
             return self.lit(v, axis)
         sh, sizes = self.anchor
         key = "width" if axis == 0 else "height"
         c, half = sh.center[axis], sh.args[key] / 2
         r = v if ref is None else ref
-        side = min((0, -1, 1), key=lambda k: (round(abs(r - c - k * half), 9), k != 0))
+        gaps = {k: abs(r - c - k * half) for k in (0, -1, 1)}
+        side = min((0, -1, 1), key=lambda k: (round(gaps[k], 9), k != 0)) if nearest \
+            else _tied(gaps)
         if side == self.frame[axis]:
             return self.lit(v, axis)
         return _add(self.edge(axis, side), v - (c + side * half))
+
+    def on_centre(self, v: float, axis: int) -> bool:
+        """Whether coordinate ``v`` (mm along ``axis``) is on the body's centre line."""
+        if self.anchor is None:
+            return False
+        sh = self.anchor[0]
+        return abs(v - sh.center[axis]) <= CENTRE_TOL
 
     def span_at(self, lo: float, hi: float, axis: int, size: str) -> str:
         """The centre of a span ``lo..hi`` (a cut-out's sides along ``axis``, mm) whose size
@@ -97,7 +122,7 @@ class _Anchored:
         key = "width" if axis == 0 else "height"
         c, half = sh.center[axis], sh.args[key] / 2
         gaps = {0: abs(mid - c), -1: lo - (c - half), 1: (c + half) - hi}
-        side = min((0, -1, 1), key=lambda k: (round(gaps[k], 9), k != 0))
+        side = _tied(gaps)
         if side == 0:
             return self.at(mid, axis, ref=c)
         gap = gaps[side]
@@ -134,7 +159,7 @@ class _Anchored:
         key = "width" if axis == 0 else "height"
         c, half = sh.center[axis], sh.args[key] / 2
         gaps = {0: abs((lo + hi) / 2 - c), -1: lo - (c - half), 1: (c + half) - hi}
-        return min((0, -1, 1), key=lambda k: (round(gaps[k], 9), k != 0))
+        return _tied(gaps)
 
     def from_body_centre(self, axis: int, term: str, c: float) -> str:
         """``term`` added to the body's centre along ``axis`` (``c``, mm, as drawn), which
