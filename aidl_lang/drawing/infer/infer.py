@@ -45,7 +45,7 @@ from ...geometry.curves import Loop
 from .attachments import _attachments, _circle_attachments, _notches
 from .params import _Params, _ctor, _deg, _hole_name, _r
 from .patterns import (_Cells, _copies, _grid, _line, _polar,
-                       _polar_chain, _polar_polys, _runs, _stagger, _steps,
+                       _polar_chain, _polar_polys, _runs, _stagger, _steps, _hex_field,
                        _unknown)
 from .shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                      recognise)
@@ -104,6 +104,11 @@ def _chamfered(sh: Shape | None) -> tuple | None:
     rect = Shape("Rectangle", ((x0 + x1) / 2, (y0 + y1) / 2), {"width": W, "height": H},
                  ("Rectangle", W, H), sh.pieces)
     return rect, legs[0]
+
+
+def _add0(base: str, term: str) -> str:
+    """``base + term`` as text, ``term`` alone when ``base`` is ``0``."""
+    return term if base == "0" else f"{base} + {term}"
 
 
 def _start_angle(a0: float, n: int, cnt: str) -> str:
@@ -618,6 +623,10 @@ class _Part(_Anchored, _MakerFeatures):
         if st is not None:
             self.stagger(depth, sh, base, st)
             return True
+        hf = _hex_field(cs, sh.args["radius"]) if sh.kind == "Circle" else None
+        if hf is not None:
+            self.hex_field(depth, sh, base, hf)
+            return True
         ln = _line(cs)
         if ln is not None:
             p0, (dx, dy), n = ln
@@ -781,23 +790,49 @@ class _Part(_Anchored, _MakerFeatures):
 
         def here(axis):
             return centred or (body_c is not None and abs(mid[axis] - body_c[axis]) <= EQUAL_TOL)
-        if here(0) and abs(mid_b - mid[0]) <= EQUAL_TOL:
+        # placed by its centre, the middle of its field (a grille's pitch or rows changed
+        # keep it about that centre), not by its first hole
+        if abs(mid_b - mid[0]) <= EQUAL_TOL:
             term = f"(i - ({n_j} - 1) / 2) * {p}"
-            ex = term if ox == "0" else f"{ox} + {term}"
+            ex = _add0(ox if here(0) else self.at(mid[0], 0), term)
         else:
             sign = "+" if xb > xa else "-"
             ex = f"{self.at(xa, 0, ref=mid[0])} {sign} j % 2 * {p} / 2 + i * {p}"
-        if here(1):
-            term = f"(j - ({nrows} - 1) / 2) * {step}"
-            ey = term if oy == "0" else f"{oy} + {term}"
-        else:
-            ey = f"{self.at(y0, 1, ref=mid[1])} + j * {step}"
+        term = f"(j - ({nrows} - 1) / 2) * {step}"
+        ey = _add0(oy if here(1) else self.at(mid[1], 1), term)
         self.w.emit(depth, f"for j in range({nrows}) {{")
         self.w.emit(depth + 1, f"for i in range({n_j}) {{")
         self.hole_block(depth + 2, hn, sh, f"({ex}, {ey})", sizes)
         self.w.emit(depth + 1, "}")
         self.w.emit(depth, "}")
         self.stats.patterns["staggered grid"] += 1
+
+    def hex_field(self, depth: int, sh: Shape, base: str, hf: tuple) -> None:
+        """A hex grid clipped to a round field (``hf`` from :func:`_hex_field`) as one grid:
+        every node of the lattice about the field's centre whose hole lies whole in the
+        field, so that a new pitch, hole size or field keeps one grid filling its field;
+        placed by its centre (:meth:`pos`); params ``_pitch``, ``_d``, ``_field_d``."""
+        (cx, cy), pitch, shift, field = hf
+        hn = self.name(base + "s")
+        sizes = self.size_params(hn, sh, True)
+        p = self.p(hn + "_pitch", pitch, times=int(field / pitch) + 1)
+        f = self.p(hn + "_field_d", field, "the round field the holes lie whole in")
+        k = self.name(hn + "_k")
+        par = "j % 2" if not shift else "(j + 1) % 2"
+        x = f"(i + {par} / 2) * {p}"
+        y = f"j * {p} * sqrt(3) / 2"
+        d = sizes.get("diameter", _r(2 * sh.args["radius"]))
+        ax, ay = self.at(cx, 0), self.at(cy, 1)
+        w = self.w
+        w.emit(depth, f"{k} = floor({f} / {p}) + 1     # nodes each way from the centre")
+        w.emit(depth, f"for j in range(-{k}, {k} + 1) {{")
+        w.emit(depth + 1, f"for i in range(-{k}, {k} + 1) {{")
+        w.emit(depth + 2, f"if norm(({x}, {y})) + {d} / 2 <= {f} / 2 + 1e-7 mm {{")
+        self.hole_block(depth + 3, hn, sh, f"({_add0(ax, x)}, {_add0(ay, y)})", sizes)
+        w.emit(depth + 2, "}")
+        w.emit(depth + 1, "}")
+        w.emit(depth, "}")
+        self.stats.patterns["hex grid in a round field"] += 1
 
     def single(self, depth: int, sh: Shape, body, centres: list, few: bool = False) -> None:
         """One hole of a size no other has: its sizes params named after it (``slot_length``,
