@@ -197,8 +197,10 @@ def _hex_field(centers: list, r: float):
     ``pitch * sqrt(3) / 2`` apart, symmetric about the middle row, alternate rows shifted
     half a pitch (``shift`` 1: the middle row has no hole on the centre), every node of the
     lattice whose hole fits in the field a hole and no other (a fan grille in a round
-    cut-out, whose rows are not of two counts as :func:`_stagger` needs); the field the
-    roundest diameter (:func:`_roundest`) that keeps exactly those holes; else None."""
+    cut-out, whose rows are not of two counts as :func:`_stagger` needs); the field's
+    diameter, of those that keep exactly those holes, a whole number of pitches (the grille
+    dimensioned as so many holes across) or else the roundest (:func:`_roundest`); else
+    None."""
     ys = _distinct([p[1] for p in centers])
     if len(ys) < 3 or len(ys) % 2 == 0 or len(centers) < 7:
         return None
@@ -240,7 +242,10 @@ def _hex_field(centers: list, r: float):
                    if (i, j) not in held), default=math.inf)
     if outside - inside <= 2 * EQUAL_TOL:
         return None
-    return (cx, cy), pitch, shift, _roundest(2 * (inside + r), 2 * (outside + r))
+    lo, hi = 2 * (inside + r), 2 * (outside + r)
+    k = math.ceil(lo / pitch - 1e-9)               # a whole number of pitches across
+    field = k * pitch if k * pitch < hi - EQUAL_TOL else _roundest(lo, hi)
+    return (cx, cy), pitch, shift, field
 
 
 def _line(centers: list):
