@@ -205,15 +205,21 @@ class _Part(_Anchored, _MakerFeatures):
             if got is not None:
                 return self.notched(depth, segs, first, got)
         cuts = None
+        corners_drawn = False       # a chamfered plate written corner by corner
         if first and (sh is None or sh.kind == "Polygon"):
             got = edge_notches(segs)        # notches of any shape cut into the sides
             if got is not None:
                 plain = recognise(got[0])
                 cut_corner = _chamfered(plain)
-                if cut_corner is not None and _clear_of_chamfers(got[1], *cut_corner) or \
+                if cut_corner is not None or \
                         plain is not None and plain.kind in ("Rectangle", "RoundedRectangle") \
                         and abs(plain.args.get("rotation", 0.0)) <= 1e-15:
                     sh, cuts = plain, got[1]
+                    # a notch within two chamfer legs of a corner: `Chamfer` (at most half
+                    # of each side it meets) cannot cut that corner, so the plate's eight
+                    # corners are written from its width, height and chamfer
+                    corners_drawn = cut_corner is not None and \
+                        not _clear_of_chamfers(got[1], *cut_corner)
         if sh is None or sh.kind == "Polygon" and len(segs) > 4:
             got = _attachments(segs)
             if got is not None:
@@ -252,9 +258,28 @@ class _Part(_Anchored, _MakerFeatures):
         if "width" in sizes and abs(sh.args.get("rotation", 0.0)) <= 1e-15:
             self.anchor = (sh, sizes)
             self.frame = self.grows_from(sh)
-        self.shape_line(depth, nm, sh, self.body_centre(sh), sizes)
-        self.w.emit(depth, f"Fixed({nm})")
-        if chamfer is not None:
+        if chamfer is not None and corners_drawn and "width" in sizes:
+            ch = self.p("chamfer", leg, "at each corner")
+            X, Y = self.body_centre(sh)[1:-1].split(", ")
+            w_, h_ = sizes["width"], sizes["height"]
+            def at(base: str, sign: str, half: str, cut: str = "") -> str:
+                tail = f"{sign} {half} / 2" + (f" {'+' if sign == '-' else '-'} {ch}"
+                                               if cut else "")
+                if base == "0":
+                    return tail[2:] if sign == "+" else "-" + tail[2:]
+                return f"{base} {tail}"
+            pts = [(at(X, "-", w_, ch), at(Y, "-", h_)), (at(X, "+", w_, ch), at(Y, "-", h_)),
+                   (at(X, "+", w_), at(Y, "-", h_, ch)), (at(X, "+", w_), at(Y, "+", h_, ch)),
+                   (at(X, "+", w_, ch), at(Y, "+", h_)), (at(X, "-", w_, ch), at(Y, "+", h_)),
+                   (at(X, "-", w_), at(Y, "+", h_, ch)), (at(X, "-", w_), at(Y, "-", h_, ch))]
+            self.w.emit(depth, f"{nm} = Polygon([" + ", ".join(f"({a}, {b})" for a, b in pts)
+                        + "])")
+            self.w.emit(depth, f"Fixed({nm})")
+            st.patterns["chamfered corners"] += 1
+        else:
+            self.shape_line(depth, nm, sh, self.body_centre(sh), sizes)
+            self.w.emit(depth, f"Fixed({nm})")
+        if chamfer is not None and not (corners_drawn and "width" in sizes):
             self.w.emit(depth, f"Chamfer({nm}, {self.p('chamfer', leg, 'at each corner')})")
             st.patterns["chamfered corners"] += 1
         for k, cut in enumerate(cuts or []):
