@@ -152,3 +152,32 @@ def test_a_grid_off_the_centre_line_keeps_its_end_by_the_edge(tmp_path):
     want = tmp_path / "want.dxf"
     grid_by_top(want, 15.0)
     _edited_is(tmp_path, text, "holes_pitch_y", "15 mm", want)
+
+
+def chamfered_notched(path, W: float = 80.0, p: float = 12.0) -> None:
+    """A plate W x 60 with 5 mm chamfers, a square notch 10 mm wide 6 mm up its right side
+    (nearer the corner than two chamfer legs) and a row of three holes centred on it."""
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    m = doc.modelspace()
+    m.add_lwpolyline([(5, 0), (W - 5, 0), (W, 5), (W, 6), (W - 10, 6), (W - 10, 16), (W, 16),
+                      (W, 55), (W - 5, 60), (5, 60), (0, 55), (0, 5)], close=True)
+    for i in range(3):
+        m.add_circle((W / 2 + (i - 1) * p, 30), 2.0)
+    doc.saveas(path)
+
+
+def test_a_chamfered_plate_with_a_notch_by_a_corner_keeps_its_params(tmp_path):
+    """The notch too near a corner for `Chamfer` (it cuts at most half a side): the plate is
+    written corner by corner from `width`, `height` and `chamfer` (it was a chain of fixed
+    lines, so its row had no body to be centred on), so a new width keeps the notch by the
+    right edge and the row centred, and a new pitch keeps the row centred."""
+    src = tmp_path / "c.dxf"
+    chamfered_notched(src)
+    text = _infer(tmp_path, src)
+    assert "param width = 80 mm" in text and "param chamfer = 5 mm" in text, text
+    want = tmp_path / "w.dxf"
+    chamfered_notched(want, W=100.0)
+    _edited_is(tmp_path, text, "width", "100 mm", want)
+    chamfered_notched(want, p=15.0)
+    _edited_is(tmp_path, text, "holes_pitch", "15 mm", want)
