@@ -43,15 +43,14 @@ ROW = (3, 9.0)          # a row of 3 holes 9 mm apart along x, its x the first h
 
 
 def _moved_row(x: float, size: float, new: float) -> float:
-    """A row's first x at the new size: kept by its end member nearer an edge than its
-    middle is to the centre line, else by its middle (ties to the centre)."""
+    """A row's first x at the new size: centred when its middle is on the centre line, else
+    kept by its end member nearer an edge (issue 85: "a row symmetric about the centre:
+    centred"; never by its first member)."""
     n, pitch = ROW
     lo, hi = x, x + (n - 1) * pitch
-    gaps = {0: abs((lo + hi) / 2 - size / 2), -1: lo, 1: size - hi}
-    side = min((0, -1, 1), key=lambda k: (round(gaps[k], 9), k != 0))
-    if side == 0:
+    if abs((lo + hi) / 2 - size / 2) <= 1e-9:
         return _moved((lo + hi) / 2, size, new) - (hi - lo) / 2
-    return lo if side < 0 else new - gaps[1] - (hi - lo)
+    return lo if lo <= size - hi else new - (size - hi) - (hi - lo)
 
 
 def draw(path, W: float, H: float, centred: bool, features: list) -> None:

@@ -158,3 +158,26 @@ def test_a_chamfered_plate_with_a_notch_by_a_corner_keeps_its_params(tmp_path):
     _edited_is(tmp_path, text, "width", "100 mm", want)
     chamfered_notched(want, p=15.0)
     _edited_is(tmp_path, text, "holes_pitch", "15 mm", want)
+
+
+def grid_by_top(path, p: float, rows: int = 2) -> None:
+    """A plate 90 x 50 with a 2-column grid (25 mm apart) centred across it whose top row is
+    12 mm below the top edge (its middle 3 mm above the centre line, nearer it than its
+    bottom row is to the bottom edge)."""
+    doc, m = _doc(90.0, 50.0)
+    for i in range(2):
+        for j in range(rows):
+            m.add_circle((45 + (i - 0.5) * 25, 38 - j * p), 2.25)
+    doc.saveas(path)
+
+
+def test_a_grid_off_the_centre_line_keeps_its_end_by_the_edge(tmp_path):
+    """A grid whose top row is 12 mm below the top edge, its middle 3 mm off the centre line
+    (not symmetric about it, so not centred): a new pitch or plate height keeps the top row
+    12 mm below the top edge (it was placed from its bottom, first, row)."""
+    src = tmp_path / "g.dxf"
+    grid_by_top(src, 20.0)
+    text = _infer(tmp_path, src)
+    want = tmp_path / "want.dxf"
+    grid_by_top(want, 15.0)
+    _edited_is(tmp_path, text, "holes_pitch_y", "15 mm", want)

@@ -45,7 +45,8 @@ from ...geometry.curves import Loop
 from .attachments import _attachments, _circle_attachments, _notches
 from .params import _Params, _ctor, _deg, _hole_name, _r
 from .patterns import (_Cells, _copies, _grid, _line, _polar,
-                       _polar_chain, _polar_polys, _runs, _stagger, _steps, _hex_field,
+                       _polar_chain, _polar_polys, _runs, _stagger, _steps, _hex_field, _whole,
+                       _features,
                        _unknown)
 from .shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                      recognise)
@@ -414,9 +415,16 @@ class _Part(_Anchored, _MakerFeatures):
                 singles += g
                 continue
             self.check(k, "finding the patterns of the holes", every=1)
-            done = self.pattern(depth, g, body, centres)
-            if not done:
-                singles += g
+            r = g[0].args.get("radius", 0.0) if g[0].kind == "Circle" else 0.0
+            cs = [sh.center for sh in g]
+            parts = None if _whole(cs, r) else _features(cs, r)
+            # equal holes of several features (a grille and a grid): each its own pattern
+            for part in parts or [range(len(g))]:
+                sub = [g[i] for i in part]
+                if len(sub) == 1:
+                    singles += sub
+                elif not self.pattern(depth, sub, body, centres):
+                    singles += sub
         few = len(singles) <= SINGLE_PARAMS
         for k, sh in enumerate(singles):
             self.check(k, "writing the holes")

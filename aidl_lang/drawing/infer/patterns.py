@@ -248,6 +248,48 @@ def _hex_field(centers: list, r: float):
     return (cx, cy), pitch, shift, field
 
 
+def _whole(centers: list, r: float) -> bool:
+    """Whether ``centers`` (holes of radius ``r``, a circle's; 0 for other shapes) are one
+    pattern: a bolt circle, a grid, a staggered or clipped hex grid, or a row."""
+    return len(centers) >= 2 and (_grid(centers) is not None or _line(centers) is not None or
+                                  _polar(centers) is not None or _stagger(centers) is not None
+                                  or (r > 0 and _hex_field(centers, r) is not None))
+
+
+MAX_SPLIT = 400     # equal holes split into features by their neighbours (n^2 distances)
+
+
+def _features(centers: list, r: float) -> list[list[int]] | None:
+    """Equal holes of no one pattern (a hex grille and a grid of the same holes) split into
+    the features they are: the groups of holes each within 1.5 times its nearest
+    neighbour's distance of the next (single linkage), when there are several and every
+    group of two or more is a pattern (:func:`_whole`); else None.  Only up to
+    :data:`MAX_SPLIT` holes."""
+    n = len(centers)
+    if n < 4 or n > MAX_SPLIT:
+        return None
+    nn = [min(math.dist(p, q) for j, q in enumerate(centers) if j != i)
+          for i, p in enumerate(centers)]
+    parent = list(range(n))
+
+    def root(i):
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+    for i in range(n):
+        for j in range(i + 1, n):
+            if math.dist(centers[i], centers[j]) <= 1.5 * min(nn[i], nn[j]) + EQUAL_TOL:
+                parent[root(i)] = root(j)
+    groups: dict = {}
+    for i in range(n):
+        groups.setdefault(root(i), []).append(i)
+    out = sorted(groups.values())
+    if len(out) < 2 or not all(len(g) == 1 or _whole([centers[i] for i in g], r) for g in out):
+        return None
+    return out
+
+
 def _line(centers: list):
     """``(p0, (dx, dy), n)`` when ``centers`` are evenly spaced on one line, else None."""
     n = len(centers)
