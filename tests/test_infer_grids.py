@@ -181,3 +181,37 @@ def test_a_grid_off_the_centre_line_keeps_its_end_by_the_edge(tmp_path):
     want = tmp_path / "want.dxf"
     grid_by_top(want, 15.0)
     _edited_is(tmp_path, text, "holes_pitch_y", "15 mm", want)
+
+
+def obround(path, length: float, width: float, angle: float = 30.0) -> None:
+    """A plate 80 x 60 with an obround slot at (40, 30) turned ``angle`` degrees, each end cap
+    drawn as two quarter arcs (as SVG writers split an arc of half a turn)."""
+    doc, m = _doc(80.0, 60.0)
+    a, r = math.radians(angle), width / 2
+    u, v = (math.cos(a), math.sin(a)), (-math.sin(a), math.cos(a))
+    half = length / 2 - r
+
+    def at(s, t):
+        return (40 + s * u[0] + t * v[0], 30 + s * u[1] + t * v[1])
+    m.add_line(at(-half, -r), at(half, -r))
+    m.add_line(at(half, r), at(-half, r))
+    for s, start in ((half, -90.0), (-half, 90.0)):
+        for k in range(2):
+            a0 = angle + start + 90 * k
+            m.add_arc(at(s, 0), r, a0, a0 + 90)
+    doc.saveas(path)
+
+
+def test_an_obround_at_any_angle_is_a_slot(tmp_path):
+    """An obround turned 30 degrees, its caps drawn as quarter arcs: a `Slot` with
+    `slot_length` and `slot_width` (it was a RoundedRectangle whose corner radius, half its
+    width, had to be edited with the width to keep it a slot)."""
+    src = tmp_path / "o.dxf"
+    obround(src, 20.0, 4.0)
+    text = _infer(tmp_path, src)
+    assert "Slot(" in text and "param slot_width = 4 mm" in text, text
+    want = tmp_path / "want.dxf"
+    obround(want, 20.0, 6.0)
+    _edited_is(tmp_path, text, "slot_width", "6 mm", want)
+    obround(want, 24.0, 4.0)
+    _edited_is(tmp_path, text, "slot_length", "24 mm", want)
