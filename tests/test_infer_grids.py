@@ -10,6 +10,7 @@ import re
 import sys
 
 import ezdxf
+import pytest
 from hypothesis import given, settings, strategies as st
 
 import aidl_lang
@@ -119,18 +120,6 @@ def test_a_round_hex_field_law(tmp_path_factory, p, k, dp, cx):
     _edited_is(tmp, text, "holes_pitch", f"{p + dp} mm", want)
 
 
-def test_a_staggered_grid_keeps_its_centre_when_its_pitch_changes(tmp_path):
-    """A staggered grid centred 25 mm up a 100 mm plate (rows of 5, 4, 5): a new pitch keeps
-    its centre there (it was placed from its first row: the middle moved 0.87 mm per mm of
-    pitch)."""
-    src = tmp_path / "st.dxf"
-    stagger(src, 8.0)
-    text = _infer(tmp_path, src)
-    want = tmp_path / "want.dxf"
-    stagger(want, 10.0)
-    _edited_is(tmp_path, text, "holes_pitch", "10 mm", want)
-
-
 def chamfered_notched(path, W: float = 80.0, p: float = 12.0) -> None:
     """A plate W x 60 with 5 mm chamfers, a square notch 10 mm wide 6 mm up its right side
     (nearer the corner than two chamfer legs) and a row of three holes centred on it."""
@@ -171,16 +160,21 @@ def grid_by_top(path, p: float, rows: int = 2) -> None:
     doc.saveas(path)
 
 
-def test_a_grid_off_the_centre_line_keeps_its_end_by_the_edge(tmp_path):
-    """A grid whose top row is 12 mm below the top edge, its middle 3 mm off the centre line
-    (not symmetric about it, so not centred): a new pitch or plate height keeps the top row
-    12 mm below the top edge (it was placed from its bottom, first, row)."""
+@pytest.mark.parametrize("draw,param,old,new", [(stagger, "holes_pitch", 8.0, 10.0),
+                                                  (grid_by_top, "holes_pitch_y", 20.0, 15.0)],
+                         ids=["stagger", "grid-by-top"])
+def test_a_grid_keeps_its_centre_or_its_end_by_the_edge(tmp_path, draw, param, old, new):
+    """A staggered grid centred 25 mm up a 100 mm plate (rows of 5, 4, 5) keeps its centre
+    when its pitch changes (it was placed from its first row: its middle moved 0.87 mm per
+    mm of pitch); a grid whose top row is 12 mm below the top edge, its middle 3 mm off the
+    centre line (not symmetric about it, so not centred), keeps its top row (it was placed
+    from its bottom, first, row)."""
     src = tmp_path / "g.dxf"
-    grid_by_top(src, 20.0)
+    draw(src, old)
     text = _infer(tmp_path, src)
     want = tmp_path / "want.dxf"
-    grid_by_top(want, 15.0)
-    _edited_is(tmp_path, text, "holes_pitch_y", "15 mm", want)
+    draw(want, new)
+    _edited_is(tmp_path, text, param, f"{new} mm", want)
 
 
 def obround(path, length: float, width: float, angle: float = 30.0) -> None:

@@ -270,20 +270,25 @@ def _features(centers: list, r: float) -> list[list[int]] | None:
         return None
     nn = [min(math.dist(p, q) for j, q in enumerate(centers) if j != i)
           for i, p in enumerate(centers)]
-    parent = list(range(n))
-
-    def root(i):
-        while parent[i] != i:
-            parent[i] = parent[parent[i]]
-            i = parent[i]
-        return i
+    near: list = [[] for _ in range(n)]
     for i in range(n):
         for j in range(i + 1, n):
             if math.dist(centers[i], centers[j]) <= 1.5 * min(nn[i], nn[j]) + EQUAL_TOL:
-                parent[root(i)] = root(j)
+                near[i].append(j)
+                near[j].append(i)
     groups: dict = {}
-    for i in range(n):
-        groups.setdefault(root(i), []).append(i)
+    seen: set = set()
+    for i in range(n):                  # each group: the holes reached from its first
+        if i in seen:
+            continue
+        todo, groups[i] = [i], []
+        seen.add(i)
+        while todo:
+            k = todo.pop()
+            groups[i].append(k)
+            todo += [j for j in near[k] if j not in seen]
+            seen.update(near[k])
+    groups = {k: sorted(v) for k, v in groups.items()}
     out = sorted(groups.values())
     if len(out) < 2 or not all(len(g) == 1 or _whole([centers[i] for i in g], r) for g in out):
         return None
