@@ -209,3 +209,27 @@ def test_an_obround_at_any_angle_is_a_slot(tmp_path):
     _edited_is(tmp_path, text, "slot_width", "6 mm", want)
     obround(want, 24.0, 4.0)
     _edited_is(tmp_path, text, "slot_length", "24 mm", want)
+
+
+def notch_at_chamfer(path, w: float = 15.0) -> None:
+    """A plate 80 x 60 with 5 mm chamfers and a square notch ``w`` wide, 10 deep, in its top
+    side from where the top-left chamfer ends (x = 5)."""
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    m = doc.modelspace()
+    m.add_lwpolyline([(5, 0), (75, 0), (80, 5), (80, 55), (75, 60), (5 + w, 60), (5 + w, 50),
+                      (5, 50), (5, 60), (0, 55), (0, 5)], close=True)
+    doc.saveas(path)
+
+
+def test_a_notch_meeting_a_chamfer_keeps_its_size_params(tmp_path):
+    """A notch whose side starts where a chamfer ends (it was a chain of fixed lines, no
+    param): the plate's eight corners from `width`, `height` and `chamfer`, the notch a hole
+    with `notch_width`, which edited keeps its side by the chamfer."""
+    src = tmp_path / "n.dxf"
+    notch_at_chamfer(src)
+    text = _infer(tmp_path, src)
+    assert "param notch_width = 15 mm" in text and "param chamfer = 5 mm" in text, text
+    want = tmp_path / "want.dxf"
+    notch_at_chamfer(want, 18.0)
+    _edited_is(tmp_path, text, "notch_width", "18 mm", want)

@@ -261,18 +261,15 @@ class _Part(_Anchored, _MakerFeatures):
             self.frame = self.grows_from(sh)
         if chamfer is not None and corners_drawn and "width" in sizes:
             ch = self.p("chamfer", leg, "at each corner")
-            X, Y = self.body_centre(sh)[1:-1].split(", ")
-            w_, h_ = sizes["width"], sizes["height"]
-            def at(base: str, sign: str, half: str, cut: str = "") -> str:
-                tail = f"{sign} {half} / 2" + (f" {'+' if sign == '-' else '-'} {ch}"
-                                               if cut else "")
-                if base == "0":
-                    return tail[2:] if sign == "+" else "-" + tail[2:]
-                return f"{base} {tail}"
-            pts = [(at(X, "-", w_, ch), at(Y, "-", h_)), (at(X, "+", w_, ch), at(Y, "-", h_)),
-                   (at(X, "+", w_), at(Y, "-", h_, ch)), (at(X, "+", w_), at(Y, "+", h_, ch)),
-                   (at(X, "+", w_, ch), at(Y, "+", h_)), (at(X, "-", w_, ch), at(Y, "+", h_)),
-                   (at(X, "-", w_), at(Y, "+", h_, ch)), (at(X, "-", w_), at(Y, "-", h_, ch))]
+            L, R, B, T = (self.edge(0, -1), self.edge(0, 1), self.edge(1, -1),
+                          self.edge(1, 1))
+
+            def at(edge: str, sign: str) -> str:     # an edge moved in by the chamfer
+                if edge == "0":
+                    return ch if sign == "+" else f"-{ch}"
+                return f"{edge} {sign} {ch}"
+            pts = [(at(L, "+"), B), (at(R, "-"), B), (R, at(B, "+")), (R, at(T, "-")),
+                   (at(R, "-"), T), (at(L, "+"), T), (L, at(T, "-")), (L, at(B, "+"))]
             self.w.emit(depth, f"{nm} = Polygon([" + ", ".join(f"({a}, {b})" for a, b in pts)
                         + "])")
             self.w.emit(depth, f"Fixed({nm})")
