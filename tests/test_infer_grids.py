@@ -222,14 +222,38 @@ def notch_at_chamfer(path, w: float = 15.0) -> None:
     doc.saveas(path)
 
 
-def test_a_notch_meeting_a_chamfer_keeps_its_size_params(tmp_path):
+def grille_and_grid(path, px: float = 10.0) -> None:
+    """A plate 100 x 50 with a staggered grille (rows of 4, 3, 4, pitch 8, about (0, 10) from
+    the plate's centre) and a 5 x 2 grid of pitches ``px`` and 8 near its bottom, all holes
+    4.5 mm."""
+    doc, m = _doc(100.0, 50.0)
+    dy = 8 * math.sqrt(3) / 2
+    for j in range(3):
+        n = 4 - j % 2
+        for i in range(n):
+            m.add_circle((50 + (i - (n - 1) / 2) * 8, 35 + (j - 1) * dy), 2.25)
+    for i in range(5):
+        for j in range(2):
+            m.add_circle((85 - (4 - i) * px, 5 + j * 8), 2.25)
+    doc.saveas(path)
+
+
+@pytest.mark.parametrize("draw,held,param,old,new", [
+    (notch_at_chamfer, ("param notch_width = 15 mm", "param chamfer = 5 mm"), "notch_width",
+     15.0, 18.0),
+    (grille_and_grid, ("param holes_2_pitch_x = 10 mm", "param holes_pitch = 8 mm"),
+     "holes_2_pitch_x", 10.0, 12.0)], ids=["notch-at-chamfer", "grille-and-grid"])
+def test_a_feature_once_missed_comes_back_with_its_params(tmp_path, draw, held, param, old,
+                                                           new):
     """A notch whose side starts where a chamfer ends (it was a chain of fixed lines, no
     param): the plate's eight corners from `width`, `height` and `chamfer`, the notch a hole
-    with `notch_width`, which edited keeps its side by the chamfer."""
-    src = tmp_path / "n.dxf"
-    notch_at_chamfer(src)
+    with `notch_width`, which edited keeps its side by the chamfer.  A grille and a grid of
+    one hole size (no one pattern for all 21; they were rows of each): each its own pattern,
+    so the grid's pitch edited moves the grid only."""
+    src = tmp_path / "f.dxf"
+    draw(src, old)
     text = _infer(tmp_path, src)
-    assert "param notch_width = 15 mm" in text and "param chamfer = 5 mm" in text, text
+    assert all(h in text for h in held), text
     want = tmp_path / "want.dxf"
-    notch_at_chamfer(want, 18.0)
-    _edited_is(tmp_path, text, "notch_width", "18 mm", want)
+    draw(want, new)
+    _edited_is(tmp_path, text, param, f"{new} mm", want)
