@@ -45,15 +45,14 @@ ROW = (3, 9.0)          # a row of 3 holes 9 mm apart along x, its x the first h
 
 
 def _moved_row(x: float, size: float, new: float) -> float:
-    """A row's first x at the new size: kept by its middle on the centre line, else by its
-    end member nearer an edge."""
+    """A row's first x at the new size: centred when its middle is on the centre line, else
+    kept by its end member nearer an edge (issue 85: "a row symmetric about the centre:
+    centred"; never by its first member)."""
     n, pitch = ROW
     lo, hi = x, x + (n - 1) * pitch
-    gaps = {0: abs((lo + hi) / 2 - size / 2), -1: lo, 1: size - hi}
-    side = 0 if gaps[0] <= 1e-6 else -1 if gaps[-1] <= gaps[1] else 1
-    if side == 0:
+    if abs((lo + hi) / 2 - size / 2) <= 1e-6:
         return _moved((lo + hi) / 2, size, new) - (hi - lo) / 2
-    return lo if side < 0 else new - gaps[1] - (hi - lo)
+    return lo if lo <= size - hi else new - (size - hi) - (hi - lo)
 
 
 def draw(path, W: float, H: float, centred: bool, features: list) -> None:
@@ -85,6 +84,13 @@ def draw(path, W: float, H: float, centred: bool, features: list) -> None:
     doc.saveas(path)
 
 
+def _meet(a, b) -> bool:
+    """Whether features ``a`` and ``b`` ((kind, x, y)) may meet: a row reaches 18 mm along x,
+    a keyhole's key 9 mm below its bore (a D-hole 16.5 mm under a keyhole overlapped it)."""
+    reach = 12 + 18 * ("row" in (a[0], b[0])) + 6 * ("keyhole" in (a[0], b[0]))
+    return math.hypot(a[1] - b[1], a[2] - b[2]) < reach
+
+
 FEATURE = st.tuples(st.sampled_from(["circle", "dhole", "keyhole", "row"]),
                     st.floats(0.1, 0.9), st.floats(0.15, 0.85))
 
@@ -107,8 +113,7 @@ def _spread(features: list, W: float, H: float) -> list:
 def test_law_a_new_plate_size_keeps_every_feature_where_the_drawing_ties_it(
         tmp_path, W, H, dW, dH, centred, features):
     placed = _spread(features, W, H)     # one of each kind (alike ones are a pattern)
-    if any(math.hypot(a[1] - b[1], a[2] - b[2]) < 12 + 18 * ("row" in (a[0], b[0]))
-           for a in placed for b in placed if a is not b):
+    if any(_meet(a, b) for a in placed for b in placed if a is not b):
         reject()
     src = tmp_path / "p.dxf"
     draw(src, W, H, centred, placed)
@@ -116,8 +121,7 @@ def test_law_a_new_plate_size_keeps_every_feature_where_the_drawing_ties_it(
     W2, H2 = W + dW, H + dH
     moved = [(k, (_moved_row if k == "row" else _moved)(x, W, W2), _moved(y, H, H2))
              for k, x, y in placed]
-    if any(math.hypot(a[1] - b[1], a[2] - b[2]) < 12 + 18 * ("row" in (a[0], b[0]))
-           for a in moved for b in moved if a is not b) or \
+    if any(_meet(a, b) for a in moved for b in moved if a is not b) or \
             any(not 10 <= x <= W2 - 10 - 18 * (k == "row") or not 10 <= y <= H2 - 10
                 for k, x, y in moved):
         reject()                         # features that meet, or leave the plate, at the new size

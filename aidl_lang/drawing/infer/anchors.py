@@ -99,6 +99,14 @@ class _Anchored:
         gaps = {k: abs(r - c - k * half) for k in (0, -1, 1)}
         side = min((0, -1, 1), key=lambda k: (round(gaps[k], 9), k != 0)) if nearest \
             else _tied(gaps)
+        return self.from_side(v, axis, side)
+
+    def from_side(self, v: float, axis: int, side: int) -> str:
+        """Coordinate ``v`` written from the body's centre (``side`` 0) or its low/high edge
+        (-1/1) along ``axis``; a number where that reference is what stays."""
+        sh, _ = self.anchor
+        c = sh.center[axis]
+        half = sh.args["width" if axis == 0 else "height"] / 2
         if side == self.frame[axis]:
             return self.lit(v, axis)
         return _add(self.edge(axis, side), v - (c + side * half))
@@ -138,14 +146,24 @@ class _Anchored:
         """Member ``var`` of a row from ``first`` to ``last`` (mm along ``axis``, ``cnt``
         members ``pitch`` apart): from the body's edge nearer its end member than the row's
         middle is to the centre line, by that end member (the right end of a row tied to the
-        right edge stays when the pitch or count changes), else from its first member."""
+        right edge stays when the pitch or count changes); nearer the centre line but not on
+        it, by the end member nearer its edge (never by its first member)."""
         lo, hi = min(first, last), max(first, last)
         side = self.nearest(lo, hi, axis)
+        if side == 0 and self.anchor is not None:
+            # off the centre line (a centred run is written by its middle before this):
+            # by the end nearer its edge, never by its first member
+            sh = self.anchor[0]
+            key = "width" if axis == 0 else "height"
+            c, half = sh.center[axis], sh.args[key] / 2
+            side = 1 if (c + half) - hi < lo - (c - half) else -1
         if side > 0 and last > first or side < 0 and last < first:
-            end = self.at(last, axis, ref=last)
+            end = self.from_side(last, axis, side) if self.anchor is not None else \
+                self.at(last, axis, ref=last)
             term = f"({var} - ({cnt} - 1)) * {pitch}"
         else:
-            end = self.at(first, axis, ref=first if side else (first + last) / 2)
+            end = self.from_side(first, axis, side) if self.anchor is not None and side else \
+                self.at(first, axis, ref=(first + last) / 2)
             term = f"{var} * {pitch}"
         return term if end == "0" else f"{end} + {term}"
 

@@ -122,8 +122,6 @@ def edge_notches(segs: list) -> tuple | None:
     start = next((i for i in range(n) if boundary(segs[i])), None)
     if start is None or all(boundary(s) for s in segs):
         return None
-    def on_side(s) -> bool:         # a piece of a side, not a corner
-        return isinstance(s, Line) and bool(side_of(s.start) & side_of(s.end))
     body, notches, run = [], [], []
     for k in range(1, n + 1):
         s = segs[(start + k) % n]
@@ -132,10 +130,11 @@ def edge_notches(segs: list) -> tuple | None:
             continue
         if run:
             got = _notch(run, sides, side_of)
-            # a notch that meets a rounded or cut corner: a Chamfer or rounding of the
-            # whole body would not be the drawing's (it takes at most half a side)
-            if got is None or not on_side(body[-1] if body else segs[start]) or \
-                    not on_side(s):
+            # a notch that meets a rounded corner: a rounding of the whole body would not
+            # be the drawing's (it takes at most half a side); one that meets a cut corner
+            # is kept (a chamfered body is then written corner by corner)
+            if got is None or not isinstance(body[-1] if body else segs[start], Line) or \
+                    not isinstance(s, Line):
                 return None
             notches.append(got)
             body.append(Line(run[0].start, run[-1].end))

@@ -45,13 +45,15 @@ from ...geometry.curves import Loop
 from .attachments import _attachments, _circle_attachments, _notches
 from .params import _Params, _ctor, _deg, _hole_name, _r
 from .patterns import (_Cells, _copies, _grid, _line, _polar,
-                       _polar_chain, _polar_polys, _runs, _stagger, _steps,
+                       _polar_chain, _polar_polys, _runs, _stagger, _steps, _hex_field, _whole,
+                       _features,
                        _unknown)
 from .shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                      recognise)
 from .anchors import _Anchored
 from .engraving import _engraving
-from .features import arc_slot, d_hole, edge_notches, keyhole, merged
+from .labels import _at_as_drawn, _label_place
+from .features import edge_notches
 from .makers import SINGLE_PARAMS, _MakerFeatures
 from ..chains.layers import _hole_layers
 from .mirror import mirrored_pair, pair_items, write_pair
@@ -104,6 +106,11 @@ def _chamfered(sh: Shape | None) -> tuple | None:
     rect = Shape("Rectangle", ((x0 + x1) / 2, (y0 + y1) / 2), {"width": W, "height": H},
                  ("Rectangle", W, H), sh.pieces)
     return rect, legs[0]
+
+
+def _add0(base: str, term: str) -> str:
+    """``base + term`` as text, ``term`` alone when ``base`` is ``0``."""
+    return term if base == "0" else f"{base} + {term}"
 
 
 def _start_angle(a0: float, n: int, cnt: str) -> str:
@@ -200,15 +207,21 @@ class _Part(_Anchored, _MakerFeatures):
             if got is not None:
                 return self.notched(depth, segs, first, got)
         cuts = None
+        corners_drawn = False       # a chamfered plate written corner by corner
         if first and (sh is None or sh.kind == "Polygon"):
             got = edge_notches(segs)        # notches of any shape cut into the sides
             if got is not None:
                 plain = recognise(got[0])
                 cut_corner = _chamfered(plain)
-                if cut_corner is not None and _clear_of_chamfers(got[1], *cut_corner) or \
+                if cut_corner is not None or \
                         plain is not None and plain.kind in ("Rectangle", "RoundedRectangle") \
                         and abs(plain.args.get("rotation", 0.0)) <= 1e-15:
                     sh, cuts = plain, got[1]
+                    # a notch within two chamfer legs of a corner: `Chamfer` (at most half
+                    # of each side it meets) cannot cut that corner, so the plate's eight
+                    # corners are written from its width, height and chamfer
+                    corners_drawn = cut_corner is not None and \
+                        not _clear_of_chamfers(got[1], *cut_corner)
         if sh is None or sh.kind == "Polygon" and len(segs) > 4:
             got = _attachments(segs)
             if got is not None:
@@ -247,9 +260,25 @@ class _Part(_Anchored, _MakerFeatures):
         if "width" in sizes and abs(sh.args.get("rotation", 0.0)) <= 1e-15:
             self.anchor = (sh, sizes)
             self.frame = self.grows_from(sh)
-        self.shape_line(depth, nm, sh, self.body_centre(sh), sizes)
-        self.w.emit(depth, f"Fixed({nm})")
-        if chamfer is not None:
+        if chamfer is not None and corners_drawn and "width" in sizes:
+            ch = self.p("chamfer", leg, "at each corner")
+            L, R, B, T = (self.edge(0, -1), self.edge(0, 1), self.edge(1, -1),
+                          self.edge(1, 1))
+
+            def at(edge: str, sign: str) -> str:     # an edge moved in by the chamfer
+                if edge == "0":
+                    return ch if sign == "+" else f"-{ch}"
+                return f"{edge} {sign} {ch}"
+            pts = [(at(L, "+"), B), (at(R, "-"), B), (R, at(B, "+")), (R, at(T, "-")),
+                   (at(R, "-"), T), (at(L, "+"), T), (L, at(T, "-")), (L, at(B, "+"))]
+            self.w.emit(depth, f"{nm} = Polygon([" + ", ".join(f"({a}, {b})" for a, b in pts)
+                        + "])")
+            self.w.emit(depth, f"Fixed({nm})")
+            st.patterns["chamfered corners"] += 1
+        else:
+            self.shape_line(depth, nm, sh, self.body_centre(sh), sizes)
+            self.w.emit(depth, f"Fixed({nm})")
+        if chamfer is not None and not (corners_drawn and "width" in sizes):
             self.w.emit(depth, f"Chamfer({nm}, {self.p('chamfer', leg, 'at each corner')})")
             st.patterns["chamfered corners"] += 1
         for k, cut in enumerate(cuts or []):
@@ -384,9 +413,16 @@ class _Part(_Anchored, _MakerFeatures):
                 singles += g
                 continue
             self.check(k, "finding the patterns of the holes", every=1)
-            done = self.pattern(depth, g, body, centres)
-            if not done:
-                singles += g
+            r = g[0].args.get("radius", 0.0) if g[0].kind == "Circle" else 0.0
+            cs = [sh.center for sh in g]
+            parts = None if _whole(cs, r) else _features(cs, r)
+            # equal holes of several features (a grille and a grid): each its own pattern
+            for part in parts or [range(len(g))]:
+                sub = [g[i] for i in part]
+                if len(sub) == 1:
+                    singles += sub
+                elif not self.pattern(depth, sub, body, centres):
+                    singles += sub
         few = len(singles) <= SINGLE_PARAMS
         for k, sh in enumerate(singles):
             self.check(k, "writing the holes")
@@ -618,6 +654,10 @@ class _Part(_Anchored, _MakerFeatures):
         if st is not None:
             self.stagger(depth, sh, base, st)
             return True
+        hf = _hex_field(cs, sh.args["radius"]) if sh.kind == "Circle" else None
+        if hf is not None:
+            self.hex_field(depth, sh, base, hf)
+            return True
         ln = _line(cs)
         if ln is not None:
             p0, (dx, dy), n = ln
@@ -781,23 +821,49 @@ class _Part(_Anchored, _MakerFeatures):
 
         def here(axis):
             return centred or (body_c is not None and abs(mid[axis] - body_c[axis]) <= EQUAL_TOL)
-        if here(0) and abs(mid_b - mid[0]) <= EQUAL_TOL:
+        # placed by its centre, the middle of its field (a grille's pitch or rows changed
+        # keep it about that centre), not by its first hole
+        if abs(mid_b - mid[0]) <= EQUAL_TOL:
             term = f"(i - ({n_j} - 1) / 2) * {p}"
-            ex = term if ox == "0" else f"{ox} + {term}"
+            ex = _add0(ox if here(0) else self.at(mid[0], 0), term)
         else:
             sign = "+" if xb > xa else "-"
             ex = f"{self.at(xa, 0, ref=mid[0])} {sign} j % 2 * {p} / 2 + i * {p}"
-        if here(1):
-            term = f"(j - ({nrows} - 1) / 2) * {step}"
-            ey = term if oy == "0" else f"{oy} + {term}"
-        else:
-            ey = f"{self.at(y0, 1, ref=mid[1])} + j * {step}"
+        term = f"(j - ({nrows} - 1) / 2) * {step}"
+        ey = _add0(oy if here(1) else self.at(mid[1], 1), term)
         self.w.emit(depth, f"for j in range({nrows}) {{")
         self.w.emit(depth + 1, f"for i in range({n_j}) {{")
         self.hole_block(depth + 2, hn, sh, f"({ex}, {ey})", sizes)
         self.w.emit(depth + 1, "}")
         self.w.emit(depth, "}")
         self.stats.patterns["staggered grid"] += 1
+
+    def hex_field(self, depth: int, sh: Shape, base: str, hf: tuple) -> None:
+        """A hex grid clipped to a round field (``hf`` from :func:`_hex_field`) as one grid:
+        every node of the lattice about the field's centre whose hole lies whole in the
+        field, so that a new pitch, hole size or field keeps one grid filling its field;
+        placed by its centre (:meth:`pos`); params ``_pitch``, ``_d``, ``_field_d``."""
+        (cx, cy), pitch, shift, field = hf
+        hn = self.name(base + "s")
+        sizes = self.size_params(hn, sh, True)
+        p = self.p(hn + "_pitch", pitch, times=int(field / pitch) + 1)
+        f = self.p(hn + "_field_d", field, "the round field the holes lie whole in")
+        k = self.name(hn + "_k")
+        par = "j % 2" if not shift else "(j + 1) % 2"
+        x = f"(i + {par} / 2) * {p}"
+        y = f"j * {p} * sqrt(3) / 2"
+        d = sizes.get("diameter", _r(2 * sh.args["radius"]))
+        ax, ay = self.at(cx, 0), self.at(cy, 1)
+        w = self.w
+        w.emit(depth, f"{k} = floor({f} / {p}) + 1     # nodes each way from the centre")
+        w.emit(depth, f"for j in range(-{k}, {k} + 1) {{")
+        w.emit(depth + 1, f"for i in range(-{k}, {k} + 1) {{")
+        w.emit(depth + 2, f"if norm(({x}, {y})) + {d} / 2 <= {f} / 2 + 1e-7 mm {{")
+        self.hole_block(depth + 3, hn, sh, f"({_add0(ax, x)}, {_add0(ay, y)})", sizes)
+        w.emit(depth + 2, "}")
+        w.emit(depth + 1, "}")
+        w.emit(depth, "}")
+        self.stats.patterns["hex grid in a round field"] += 1
 
     def single(self, depth: int, sh: Shape, body, centres: list, few: bool = False) -> None:
         """One hole of a size no other has: its sizes params named after it (``slot_length``,
@@ -913,86 +979,6 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
         w.emit(depth + 1, f"oval = Ellipse(center={_pt((cx, cy))}, rx={_num(rx)}, "
                           f"ry={_num(ry)}, rotation={_num(math.degrees(rot))} deg)")
         w.emit(depth, "}")
-    return place
-
-
-def _at_as_drawn(p, size: float) -> str:
-    """A text's position as the drawing gives it (no feature or edge to place it from)."""
-    return _pt(p)
-
-
-LABEL_REACH = 25.0      # mm: a text in line with a hole this near its edge names it
-
-
-def _hole_ref(segs: list) -> tuple:
-    """``(centre, key)`` of a hole as its statement places it: a recognised shape's centre
-    (its kind and size as ``key``), an arc slot's centre, a keyhole's or a D-hole's bore
-    centre (:meth:`~.makers._MakerFeatures.maker_hole`), else its box's middle (``key``
-    None: a hole of its own)."""
-    sh = recognise(segs)
-    if sh is not None:
-        return sh.center, (sh.kind,) + tuple(round(x, 6) if isinstance(x, float) else x
-                                             for x in sh.size)
-    one = merged(segs)
-    for find in (arc_slot, keyhole, d_hole):
-        got = find(one)
-        if got is not None:
-            return got[0], None
-    b = _segs_box(segs)
-    return ((b[0] + b[2]) / 2, (b[1] + b[3]) / 2), None
-
-
-def _label_place(part: _Part, holes: list):
-    """A text's position as :func:`_engraving` writes it (``place(p, size)``, ``p`` the
-    text's insertion point, drawing units): with the hole it names, so that it moves with
-    it when the plate grows, else from the body's centre line or nearer edge
-    (:meth:`~.anchors._Anchored.at`).  A text names the nearest hole it is directly above,
-    below or beside (on the line through the hole's centre, within :data:`LABEL_REACH` of
-    its edge; a hole of a size no other hole has before a pattern's member); a text in line
-    with none names none (near a hole but off its lines, it is as likely the plate's).
-    Along an axis on which the text is on the body's centre line it stays on that line."""
-    if part.anchor is None:
-        return lambda p, size: _pt(p)
-    from scipy.spatial import cKDTree
-    unit = 25.4 if UNIT.get() == "in" else 1.0
-    known: dict = {}
-
-    def index() -> dict:         # on the first text: most drawings have none
-        if not known:
-            refs = [_hole_ref(segs) for segs in holes]
-            boxes = [_segs_box(segs) for segs in holes]
-            known.update(refs=refs, boxes=boxes, shared=Counter(k for _, k in refs if k),
-                         tree=cKDTree([c for c, _ in refs]) if refs else None,
-                         big=max((math.dist(b[:2], b[2:]) for b in boxes), default=0.0))
-        return known
-
-    def aligned(p) -> int | None:
-        k = index()
-        best = None
-        for i in k["tree"].query_ball_point(p, LABEL_REACH / unit + k["big"]):
-            (c, key), b = k["refs"][i], k["boxes"][i]
-            if abs(p[0] - c[0]) <= EQUAL_TOL:
-                gap = max(b[1] - p[1], p[1] - b[3])
-            elif abs(p[1] - c[1]) <= EQUAL_TOL:
-                gap = max(b[0] - p[0], p[0] - b[2])
-            else:
-                continue
-            # one of a pattern's size only when no hole of its own is in line
-            rank = (key is not None and k["shared"][key] > 1, gap, i)
-            if 0 < gap <= LABEL_REACH / unit and (best is None or rank < best):
-                best = rank
-        return None if best is None else best[2]
-
-    def place(p, size: float) -> str:
-        base = None
-        if holes:
-            i = aligned(p)
-            base = None if i is None else index()["refs"][i][0]
-        if base is None:
-            return f"({part.at(p[0], 0)}, {part.at(p[1], 1)})"
-        # on the body's centre line a text stays on it (a title centred on the plate)
-        return "(" + ", ".join(part.at(p[a], a, ref=None if part.on_centre(p[a], a)
-                                       else base[a]) for a in (0, 1)) + ")"
     return place
 
 

@@ -178,6 +178,126 @@ def _stagger(centers: list):
     return a[0], len(a), b[0], len(b), pitch, ys[0], _steps(ys), len(ys)
 
 
+def _roundest(lo: float, hi: float) -> float:
+    """The roundest number in ``[lo, hi)`` (the multiple of the largest step 10, 5, 2.5, 2, 1,
+    0.5, ... times a power of ten that lies in it), the one a person would have dimensioned
+    a size by that the drawing only bounds (a field the holes lie in, not drawn)."""
+    for e in range(6, -10, -1):
+        for m in (1.0, 0.5, 0.25, 0.2):
+            step = m * 10.0 ** e
+            v = math.ceil(lo / step - 1e-9) * step
+            if lo - EQUAL_TOL <= v < hi - EQUAL_TOL:
+                return v
+    return lo
+
+
+def _hex_field(centers: list, r: float):
+    """``(centre, pitch, shift, field diameter)`` when ``centers`` are the holes (radius
+    ``r``) of a hexagonal lattice that lie whole inside a round field centred on it: rows
+    ``pitch * sqrt(3) / 2`` apart, symmetric about the middle row, alternate rows shifted
+    half a pitch (``shift`` 1: the middle row has no hole on the centre), every node of the
+    lattice whose hole fits in the field a hole and no other (a fan grille in a round
+    cut-out, whose rows are not of two counts as :func:`_stagger` needs); the field's
+    diameter, of those that keep exactly those holes, a whole number of pitches (the grille
+    dimensioned as so many holes across) or else the roundest (:func:`_roundest`); else
+    None."""
+    ys = _distinct([p[1] for p in centers])
+    if len(ys) < 3 or len(ys) % 2 == 0 or len(centers) < 7:
+        return None
+    dy = _steps(ys)
+    if dy is None:
+        return None
+    rows: list = [[] for _ in ys]
+    for p in centers:
+        for k in _near(ys, p[1]):
+            rows[k].append(p[0])
+    if sum(len(r_) for r_ in rows) != len(centers):
+        return None
+    pitch = dy * 2 / math.sqrt(3)
+    xs = [x for row in rows for x in row]
+    cx, cy = (min(xs) + max(xs)) / 2, ys[len(ys) // 2]
+    mid = len(ys) // 2
+    held = set()
+    shift = None
+    for k, row in enumerate(rows):
+        j = k - mid
+        for x in row:
+            t = (x - cx) / pitch * 2                # half pitches from the centre
+            if abs(t - round(t)) * pitch / 2 > EQUAL_TOL:
+                return None
+            s = (round(t) - j) % 2                  # the middle row's half-pitch shift
+            if shift is None:
+                shift = s
+            if s != shift:
+                return None
+            held.add(((round(t) - (j + shift) % 2) // 2, j))
+    if len(held) != len(centers):
+        return None
+    # the field: every hole inside it, every other node of the lattice near it outside
+    def dist(i, j):
+        return math.hypot((i + (j + shift) % 2 / 2) * pitch, j * dy)
+    inside = max(dist(i, j) for i, j in held)
+    big = max(max(abs(i) for i, _ in held), mid) + 2
+    outside = min((dist(i, j) for j in range(-mid - 2, mid + 3) for i in range(-big, big + 1)
+                   if (i, j) not in held), default=math.inf)
+    if outside - inside <= 2 * EQUAL_TOL:
+        return None
+    lo, hi = 2 * (inside + r), 2 * (outside + r)
+    k = math.ceil(lo / pitch - 1e-9)               # a whole number of pitches across
+    field = k * pitch if k * pitch < hi - EQUAL_TOL else _roundest(lo, hi)
+    return (cx, cy), pitch, shift, field
+
+
+def _whole(centers: list, r: float) -> bool:
+    """Whether ``centers`` (holes of radius ``r``, a circle's; 0 for other shapes) are one
+    pattern: a bolt circle, a grid, a staggered or clipped hex grid, or a row."""
+    return len(centers) >= 2 and (_grid(centers) is not None or _line(centers) is not None or
+                                  _polar(centers) is not None or _stagger(centers) is not None
+                                  or (r > 0 and _hex_field(centers, r) is not None))
+
+
+MAX_SPLIT = 400     # equal holes split into features by their neighbours (n^2 distances)
+
+
+def _features(centers: list, r: float) -> list[list[int]] | None:
+    """Equal holes of no one pattern (a hex grille and a grid of the same holes) split into
+    the features they are: the groups of holes each within 1.5 times its nearest
+    neighbour's distance of the next (single linkage), when there are several and every
+    group of more than one is of three or more and a pattern (:func:`_whole`); else None.  Only up to
+    :data:`MAX_SPLIT` holes."""
+    n = len(centers)
+    if n < 4 or n > MAX_SPLIT:
+        return None
+    nn = [min(math.dist(p, q) for j, q in enumerate(centers) if j != i)
+          for i, p in enumerate(centers)]
+    near: list = [[] for _ in range(n)]
+    for i in range(n):
+        for j in range(i + 1, n):
+            if math.dist(centers[i], centers[j]) <= 1.5 * min(nn[i], nn[j]) + EQUAL_TOL:
+                near[i].append(j)
+                near[j].append(i)
+    groups: dict = {}
+    seen: set = set()
+    for i in range(n):                  # each group: the holes reached from its first
+        if i in seen:
+            continue
+        todo, groups[i] = [i], []
+        seen.add(i)
+        while todo:
+            k = todo.pop()
+            groups[i].append(k)
+            todo += [j for j in near[k] if j not in seen]
+            seen.update(near[k])
+    groups = {k: sorted(v) for k, v in groups.items()}
+    out = sorted(groups.values())
+    # a group of two is no evidence of a feature of its own (a board's four holes in two
+    # pairs would become two diagonal "rows" of two): the holes stay one set
+    if len(out) < 2 or not all(len(g) == 1 or len(g) > 2 and _whole([centers[i] for i in g], r)
+                               for g in out):
+        return None
+    return out
+
+
 def _line(centers: list):
     """``(p0, (dx, dy), n)`` when ``centers`` are evenly spaced on one line, else None."""
     n = len(centers)

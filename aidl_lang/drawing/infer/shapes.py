@@ -194,6 +194,18 @@ def _as_rrect(segs):
     if not any(radii):
         return Shape("Rectangle", center, {"width": w, "height": h, "rotation": rot},
                      ("Rectangle", w, h, rot), n)
+    if max(radii) - min(radii) <= EQUAL_TOL and abs(2 * radii[0] - min(w, h)) <= EQUAL_TOL \
+            and abs(w - h) > EQUAL_TOL:
+        # its ends whole half circles: an obround (a slot), its end caps drawn as two
+        # quarter arcs each (as SVG writers split arcs), at any angle
+        length, width = max(w, h), min(w, h)
+        if h > w:
+            rot += math.pi / 2
+        if rot > math.pi / 2 + 1e-12:
+            rot -= math.pi
+        rot = _snap_angle(rot, length)
+        return Shape("Slot", center, {"length": length, "width": width, "rotation": rot},
+                     ("Slot", length, width, rot), n)
     if max(radii) - min(radii) <= EQUAL_TOL:
         return Shape("RoundedRectangle", center, {"width": w, "height": h,
                                                   "corner_radius": radii[0], "rotation": rot},
