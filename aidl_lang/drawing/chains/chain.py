@@ -233,6 +233,22 @@ def _distinct(pts, tol: float = 1e-9) -> list:
     return out
 
 
+def _splits(a, b):
+    """Each exact crossing ``x`` of pieces ``a`` and ``b`` (of their carriers,
+    :func:`~aidl_lang.geometry.curves.crossings`, distinct) with both split there:
+    ``(x, (a before, a after), (b before, b after))``; a crossing where either cannot be
+    split is skipped, and a pair whose carriers the solver cannot cross gives none."""
+    from ...geometry.curves import carrier, crossings
+    try:
+        pts = _distinct(crossings(carrier(a), carrier(b)))
+    except Exception:
+        return
+    for x in pts:
+        sa, sb = _split_at(a, x), _split_at(b, x)
+        if sa is not None and sb is not None:
+            yield x, sa, sb
+
+
 def _overshoot(segs: list, bound: float):
     """The closed loop of the open chain ``segs`` whose end crosses its own start (a path
     drawn past its start so that the beam closes it, as Boxes.py's D-bores end 0.1 mm past
@@ -240,7 +256,6 @@ def _overshoot(segs: list, bound: float):
     crossing with the bits before and after it trimmed, or None.  The trimmed bits each run
     at most ``bound`` mm along the chain; the crossing is exact on both pieces' carriers
     (:func:`~aidl_lang.geometry.curves.crossings`)."""
-    from ...geometry.curves import carrier, crossings
     if bound <= 0 or len(segs) < 2 or math.dist(segs[0].start, segs[-1].end) > 2 * bound:
         return None
     heads, run = [], 0.0            # the pieces whose start lies within bound of the start
@@ -260,15 +275,7 @@ def _overshoot(segs: list, bound: float):
         for j, after in tails:
             if j <= i:
                 continue
-            a, b = segs[i], segs[j]
-            try:
-                pts = _distinct(crossings(carrier(a), carrier(b)))
-            except Exception:
-                continue
-            for x in pts:
-                sa, sb = _split_at(a, x), _split_at(b, x)
-                if sa is None or sb is None:
-                    continue
+            for x, sa, sb in _splits(segs[i], segs[j]):
                 cut_head = before + _piece_length(sa[0])
                 cut_tail = after + _piece_length(sb[1])
                 if cut_head > bound or cut_tail > bound or _piece_length(sa[1]) <= JOIN_TOL \
@@ -315,7 +322,6 @@ def _trim_small_loops(segs: list, bound: float, closed: bool) -> tuple[list, int
     is the chain without it: Boxes.py draws one at each inner corner with its default
     ``inner_corners="loop"`` and a burn (kerf) correction, and its D-bores' flat crosses
     their arc so.  Returns the chain and the number of loops cut out."""
-    from ...geometry.curves import carrier, crossings
     n_cut = 0
     out = list(segs)
     i = 0
@@ -333,14 +339,8 @@ def _trim_small_loops(segs: list, bound: float, closed: bool) -> tuple[list, int
             if bb[0] > ba[2] + 1e-9 or ba[0] > bb[2] + 1e-9 or bb[1] > ba[3] + 1e-9 or \
                     ba[1] > bb[3] + 1e-9:
                 continue
-            try:
-                pts = _distinct(crossings(carrier(a), carrier(b)))
-            except Exception:
-                continue
-            for x in pts:
-                sa, sb = _split_at(a, x), _split_at(b, x)
-                if sa is None or sb is None or _piece_length(sa[0]) <= JOIN_TOL or \
-                        _piece_length(sb[1]) <= JOIN_TOL:
+            for x, sa, sb in _splits(a, b):
+                if _piece_length(sa[0]) <= JOIN_TOL or _piece_length(sb[1]) <= JOIN_TOL:
                     continue
                 if _piece_length(sa[1]) <= JOIN_TOL and _piece_length(sb[0]) <= JOIN_TOL \
                         and all(_is_corner_loop(q) for q in out[i + 1:j]):
@@ -372,7 +372,6 @@ def _split_crossing(segs: list, hit, boxes=None) -> tuple[list, list] | None:
     drawn is kept, end to end, in one loop or the other.  None when no exact crossing of two
     pieces lies within :data:`CROSSING_NEAR` of ``hit`` (with a loop longer than
     :data:`LOBE_MIN` on each side)."""
-    from ...geometry.curves import carrier, crossings
     r = CROSSING_NEAR
     boxes = boxes or [_box_of(sg) for sg in segs]
     near = [i for i, b in enumerate(boxes)
@@ -380,16 +379,9 @@ def _split_crossing(segs: list, hit, boxes=None) -> tuple[list, list] | None:
     best = None
     for ii, i in enumerate(near):
         for j in near[ii + 1:]:
-            try:
-                pts = _distinct(crossings(carrier(segs[i]), carrier(segs[j])))
-            except Exception:
-                continue
-            for x in pts:
+            for x, sa, sb in _splits(segs[i], segs[j]):
                 d = math.dist(x, hit)
                 if d > r or (best is not None and d >= best[0]):
-                    continue
-                sa, sb = _split_at(segs[i], x), _split_at(segs[j], x)
-                if sa is None or sb is None:
                     continue
                 first = [sa[1]] + segs[i + 1:j] + [sb[0]]
                 rest = [sb[1]] + segs[j + 1:] + segs[:i] + [sa[0]]
