@@ -584,8 +584,8 @@ class _Part(_Anchored, _MakerFeatures):
                     ex = f"sx * ({wx} / 2 - {inx})" if wx else f"sx * {_r(dx / 2)}"
                     ey = f"sy * ({hy} / 2 - {iny})" if hy else f"sy * {_r(dy / 2)}"
                     c = f"({self.from_body_centre(0, ex, mid[0])}, {self.from_body_centre(1, ey, mid[1])})"
-                    w.emit(depth, f"for sx in [-1, 1] {{")
-                    w.emit(depth + 1, f"for sy in [-1, 1] {{")
+                    w.emit(depth, "for sx in [-1, 1] {")
+                    w.emit(depth + 1, "for sy in [-1, 1] {")
                     self.hole_block(depth + 2, hn, sh, c, sizes)
                     w.emit(depth + 1, "}")
                     w.emit(depth, "}")
@@ -766,14 +766,13 @@ class _Part(_Anchored, _MakerFeatures):
         body_c = self.anchor[0].center if self.anchor is not None else None
         out = []
         loops = []
+        shared = self.p(hn + "_pitch", dx, times=max(nx, ny)) if one else None
         for axis, (v0, step, n, var) in enumerate(((x0, dx, nx, "i"), (y0, dy, ny, "j"))):
             if n == 1:
                 out.append(self.at(v0, axis))
                 continue
             if one:
-                pitch = self.p(hn + "_pitch", step, times=max(nx, ny)) if axis == 0 else \
-                    out_pitch
-                out_pitch = pitch
+                pitch = shared
             else:
                 pitch = self.p(hn + ("_pitch_x" if axis == 0 else "_pitch_y") if both
                                else hn + "_pitch", step, times=n)
