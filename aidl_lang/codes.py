@@ -472,6 +472,8 @@ there is no material to engrave. Move or shrink the drawing so that it lies on t
 put a drawing that is only an illustration at assembly level, beside the part.
 The share off the material is said as a percentage of the drawing's length ("under 1%": a
 letter's stroke over a screw hole); across a hole, the hint names the holes it crosses.
+Off the outline, the hint says where the mark leaves the material (x, y), and offers
+`Inside(drawing, self)` only where the drawing's box reaches past the part's and would fit.
 """),
     "W0506": ("geometry that adds nothing", """
 A child solid lies wholly inside the rest of its parent, so it changes nothing in the final
