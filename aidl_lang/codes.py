@@ -155,6 +155,8 @@ constraint instead, or test a param.
 """),
     "E0119": ("template instance without a name", """
 A template call creates a child structure, and structures have names: `left = wheel(r=10)`.
+In a list comprehension (`[wheel(r=i) for i in range(3)]`) its instances cannot be named:
+write a loop, `for i in range(3) { w = wheel(r=i) }`; after it `w` is the list of the copies.
 """),
     "E0120": ("Text outside a drawing", """
 Text is drawn as single-stroke lines, so it belongs in a `drawing` structure:

@@ -80,3 +80,24 @@ def test_every_final_program_of_the_run_compiles_with_no_warning(path):
 def test_the_run_holds_sixteen_final_programs_each_with_its_first_valid_one():
     assert len(FINALS) == 16
     assert all((RUN / (p.stem + ".first_valid.aidl")).exists() for p in FINALS)
+
+
+PIECES = """def ex(x=0 mm) -> solid {
+    a = Rectangle(center=(x, 0), width=34, height=8, rotation=45 deg)
+}
+
+assembly game {
+    PIECES
+}"""
+
+
+def test_E0119_in_a_list_comprehension_proposes_the_loop_that_works(compile_text):
+    # 16_tic_tac_toe: `xs = [ex(...) for i in range(5)]` was told `part = ex(...)` only
+    c = compile_text(PIECES.replace("PIECES", "xs = [ex(x=40 * i) for i in range(5)]"))
+    (e,) = [d for d in c.sink.items if d.code == "E0119"]
+    assert "`for i in ... { part = ex(...) }`" in e.hint and "`part[0]`" in e.hint
+    # the loop the hint writes makes the five pieces, each 40 mm from the last
+    c = compile_text(PIECES.replace("PIECES", "for i in range(5) { part = ex(x=40 * i) }"))
+    assert c.ok and not [d for d in c.sink.items if d.severity == "error"]
+    xs = sorted(p.shape.bounds()[0] for p in c.drawing.parts if ".part" in p.name)
+    assert len(xs) == 5 and all(abs(b - a - 40) < 1e-6 for a, b in zip(xs, xs[1:]))
