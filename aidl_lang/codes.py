@@ -155,6 +155,8 @@ constraint instead, or test a param.
 """),
     "E0119": ("template instance without a name", """
 A template call creates a child structure, and structures have names: `left = wheel(r=10)`.
+In a list comprehension (`[wheel(r=i) for i in range(3)]`) its instances cannot be named:
+write a loop, `for i in range(3) { w = wheel(r=i) }`; after it `w` is the list of the copies.
 """),
     "E0120": ("Text outside a drawing", """
 Text is drawn as single-stroke lines, so it belongs in a `drawing` structure:
@@ -472,6 +474,8 @@ there is no material to engrave. Move or shrink the drawing so that it lies on t
 put a drawing that is only an illustration at assembly level, beside the part.
 The share off the material is said as a percentage of the drawing's length ("under 1%": a
 letter's stroke over a screw hole); across a hole, the hint names the holes it crosses.
+Off the outline, the hint says where the mark leaves the material (x, y), and offers
+`Inside(drawing, self)` only where the drawing's box reaches past the part's and would fit.
 """),
     "W0506": ("geometry that adds nothing", """
 A child solid lies wholly inside the rest of its parent, so it changes nothing in the final

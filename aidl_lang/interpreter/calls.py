@@ -82,8 +82,17 @@ class Calls:
             callee = self.eval(node.func)
         if isinstance(callee, Template):
             if name is None:
-                raise EvalError("E0119", f"an instance of template `{callee.node.name}` needs a name",
-                                node.span, hint=f"write `part = {callee.node.name}(...)`")
+                t = callee.node.name
+                hint = f"write `part = {t}(...)`"
+                comp = next((f[0] for f in reversed(self.frames)
+                             if f[0].startswith("the comprehension")), None)
+                if comp is not None:     # `[knob(...) for i in ...]` (issue 84's second run)
+                    var = comp.split("for ", 1)[1].split(" ", 1)[0]
+                    hint = (f"a list comprehension cannot name its instances: write a loop, "
+                            f"`for {var} in ... {{ part = {t}(...) }}` (after the loop `part` "
+                            "is the list of the copies: `part[0]`)")
+                raise EvalError("E0119", f"an instance of template `{t}` needs a name",
+                                node.span, hint=hint)
             return self._instantiate(callee, node, name)
         if not isinstance(callee, Builtin):
             raise EvalError("E0111", f"{_a(type_name(callee))} cannot be called", node.func.span)

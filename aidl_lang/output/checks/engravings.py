@@ -244,8 +244,7 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         # a letter's stroke over a screw hole is under 1% of a long text's samples: "0%" read
         # as "nothing is off" (issue 84's door sign), so a small share is said as such
         share = _pct(off, float(len(pts))) if off >= 0.005 * len(pts) else "under 1%"
-        hint = ("move or shrink the drawing so that it lies on the material (constrain it, "
-                "e.g. `Inside(label, body)`), or clear the hole it crosses")
+        hint = _off_outline_hint(g, part, roots[part], pts, pts[~inside])
         if where == "across a hole":
             holes = _holes_crossed(d, roots, part, pts[~inside])
             hint = (f"it crosses {', '.join(holes) if holes else 'an opening'}: shrink or move "
@@ -257,6 +256,29 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
             tick(part)
         _check_meets_cut(part, roots[part], [(g, it) for g, it in geoms if g not in warned],
                          (loops or {}).get(part), sink)
+
+
+def _off_outline_hint(g, part, shape, pts: np.ndarray, off: np.ndarray) -> str:
+    """W0505's hint for an engraving ``g`` that leaves the outline of ``part`` (its material
+    ``shape``; ``pts`` its samples, ``off`` those off the material): where it leaves (the off
+    sample nearest their middle, mm), and `Inside(drawing, self)` only where the engraving's
+    box reaches past the part's box and would fit in it, the one case that constraint mends
+    (a mane drawn past a knight's edge inside its box is not: issue 84's second run, whose
+    hint named a `label` and a `body` the program did not have)."""
+    p = off[int(np.argmin(np.hypot(*(off - off.mean(axis=0)).T)))]
+    name = g.label.rsplit(".", 1)[-1]
+    hint = (f"it leaves the material at about ({p[0]:.2f}, {p[1]:.2f}): move, shrink or "
+            f"redraw `{name}` so that it lies on the material, or move the part's edge")
+    x0, y0, x1, y1 = shape.bounds()
+    lo, hi = off.min(axis=0), off.max(axis=0)
+    owner = getattr(g, "owner", None)
+    past = lo[0] < x0 - ENGRAVE_TOL or lo[1] < y0 - ENGRAVE_TOL or hi[0] > x1 + ENGRAVE_TOL \
+        or hi[1] > y1 + ENGRAVE_TOL
+    span = pts.max(axis=0) - pts.min(axis=0)
+    fits = span[0] <= x1 - x0 and span[1] <= y1 - y0
+    if past and fits and owner is not None and owner is not part and owner.parent is part:
+        hint += f" (constrain it: `Inside({owner.name}, self)` in `{part.path}`)"
+    return hint
 
 
 ON_CUT = 1 / 3           # of an engraving's samples: more on the outline is engraved over the cut
