@@ -342,6 +342,22 @@ at a corner where an `Ellipse` meets another ellipse or a spline: the error poin
         Fillet(1)
     }
 """),
+    "E0501": ("parts lie over each other in a machine file", """
+A machine file (G-code, LightBurn, HP-GL) is written as the program draws the parts, and two
+separate parts lie over each other there: the machine would cut one part through the other.
+An assembly may draw its parts over each other (a bird house's walls all at the origin, placed
+in 3D with `Place` for the assembled view; a clock's hands on its face, with `AllowOverlap`): a
+picture shows that, a cutter cannot make it. The message names the pair with the most area in
+common and how many pairs overlap; nothing is written. Write the cutting layout instead,
+`aidl render house.aidl --layout sheet -o house.gcode` (the parts laid apart on sheets, one file
+per sheet), or place the parts apart in the program. SVG, DXF and PDF are written as drawn.
+
+    assembly house {
+        solid front { r = Rectangle(center=(0, 0), width=120, height=110) }
+        solid back { r = Rectangle(center=(0, 0), width=120, height=110) }   # on the front
+        Place(back, rotation=(90 deg, 0, 0), position=(0, 60, 0))
+    }
+"""),
     "E0900": ("internal error in aidl", """
 A bug in aidl, not in your program: a stage of the compiler raised an exception it should have
 turned into a diagnostic. `aidl check` and `aidl render` report it and exit with status 3; the

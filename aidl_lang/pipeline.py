@@ -377,6 +377,14 @@ def report_out_of_budget(sink: DiagnosticSink, ex: OutOfBudget) -> None:
                         "chords of 0.005 mm), or raise the budget with `--budget 2` (or more)"))
 
 
+def report_stacked(sink: DiagnosticSink, drawing, ex) -> None:
+    """One ``E0501`` for a machine file refused because two parts lie over each other
+    (:class:`~aidl_lang.output.writers.StackedParts` ``ex``), at the first part's
+    structure (``drawing.part_of``), or unlocated without a drawing."""
+    part_of = getattr(drawing, "part_of", None) or {}
+    s = part_of.get(ex.parts[0])
+    sink.add(Diagnostic("E0501", ex.message, getattr(s, "span", None), "error", hint=ex.hint))
+
 
 def _empty_drawing(program, model: Model) -> bool:
     """W0104's condition: nothing at all in the file, or structures that build no geometry.

@@ -655,11 +655,11 @@ optional; `--machine router` or `plotter`: the built-in ones; default the built-
 `power` (%), `speed` (mm/min), `passes`, `depth_per_pass`, `plunge`, `spindle`. A router's
 path is offset by the tool radius, down `depth_per_pass` at a time to the program's
 `thickness`. The program's `kerf` and `thickness` are used; a profile stating others is
-warned about. `--layout sheet -o cut.gcode` writes one program per sheet. Every number
-has a range (`passes` 1-100, `depth_per_pass` 0.01-100 mm, speeds 1-100000 mm/min,
-`tabs` 0-16, `lead_in` 0 or 0.01-100 mm); past it the profile is refused naming the key and
-the range. A lead-in keeps 0.5 mm from every other cut; a router's bit that cuts a part apart
-(a slit nearer an edge than its radius) is W0510.
+warned about. `--layout sheet -o cut.gcode` writes one program per sheet; parts drawn over each
+other (an assembly placed in 3D) are refused (E0501): use `--layout sheet`. Each number has a
+range (`passes` 1-100, `depth_per_pass` 0.01-100 mm, speeds 1-100000 mm/min, `tabs` 0-16,
+`lead_in` 0 or 0.01-100 mm); past it the profile is refused naming the key and the range. A
+lead-in keeps 0.5 mm from every other cut; a router's bit that cuts a part apart is W0510.
 """, ["gcode", "g-code", "grbl", "--machine", "machine profile", "cnc", "router", "toolpath",
       "nc"]),
     "assembled": ("statement", "The assembled product: parts placed in 3D with `Place`, "

@@ -404,8 +404,9 @@ def _write_all(items: list[tuple[Path, bytes]], follow: bool = False) -> str | N
 
 
 def cmd_render(args) -> int:
-    from ..pipeline import compile_source, report_out_of_budget
+    from ..pipeline import compile_source, report_out_of_budget, report_stacked
     from ..output import MissingDependency, Options, OutputError, build, encode
+    from ..output.writers import StackedParts
     from ..output.fabrication.layout import parse_length, parse_rotate, parse_sheet
     outs = _outputs(args)
     if isinstance(outs, int):
@@ -553,6 +554,9 @@ def cmd_render(args) -> int:
     except OutputError as e:                 # an impossible size, or bounded work ran out
         if e.budget is not None:                 # located: which structure, which stage
             report_out_of_budget(res.sink, e.budget)
+            _emit(res.sink, args.json, False)
+        elif isinstance(e, StackedParts):        # located at the first of the two parts
+            report_stacked(res.sink, res.drawing, e)
             _emit(res.sink, args.json, False)
         else:
             print(f"aidl: error: {e}", file=sys.stderr)

@@ -178,6 +178,8 @@ def encode(output: Output, suffix: str, options: Options | None = None,
     fmt = FORMATS[suffix.lower()]
     if not fmt.empty:
         _refuse_empty(output, suffix, fmt)
+    if fmt.cut and not fmt.empty:
+        _refuse_stacked(output, suffix)
     if deadline is not None:
         from ...limits import OutOfBudget
         try:
@@ -215,6 +217,55 @@ def _refuse_empty(output: Output, suffix: str, fmt: Format) -> None:
     if not fmt.cut and not outlines:
         raise OutputError(f"nothing to write to {name}: the drawing has no solid part to "
                           "extrude (engravings and holes alone have no body); draw a solid first")
+
+
+STACKED_AREA = 0.05      # mm^2 two parts may share before a machine would cut one over the other
+MACHINE_NAMES = {".gcode": "G-code", ".nc": "G-code", ".lbrn2": "LightBurn", ".plt": "HP-GL",
+                 ".hpgl": "HP-GL"}
+
+
+class StackedParts(OutputError):
+    """``E0501``: a machine file refused because two separate parts lie over each other
+    where the program draws them; ``parts``: the two parts' names (structure paths), the pair
+    with the largest common area; ``message`` and ``hint``: what is wrong and what to do
+    instead (``str()`` says both, for a front end that shows one line)."""
+
+    def __init__(self, message: str, parts: tuple, hint: str):
+        super().__init__(f"{message}; {hint}")
+        self.message, self.parts, self.hint = message, parts, hint
+
+
+def _refuse_stacked(output: Output, suffix: str) -> None:
+    """:class:`StackedParts` for a machine file (G-code, LightBurn, HP-GL) whose separate
+    parts overlap where the program draws them by more than :data:`STACKED_AREA` mm^2: the
+    machine would cut one part through the other.  An assembly may draw its parts over each
+    other (a house's walls at the origin, placed in 3D by ``Place``; a clock's hands on its
+    face, ``AllowOverlap``), which a picture shows and a cutter cannot make; the cutting layout
+    (``--layout sheet``) lays them apart.  Candidate pairs come from the parts' bounding boxes
+    (:func:`..part.nearby.box_pairs`, O(n log n)); each is intersected with Manifold's
+    CrossSection (the parts' outlines in chords within 0.005 mm)."""
+    from ..part.nearby import box_pairs
+    solids = [p for p in output.parts if p.kind == "solid" and p.loops]
+    if len(solids) < 2:
+        return
+    shapes = [p.shape for p in solids]
+    over = []
+    for i, j in box_pairs([sh.bounds() for sh in shapes]):
+        area = (shapes[i] ^ shapes[j]).area()
+        if area > STACKED_AREA:
+            over.append((float(area), solids[i].name, solids[j].name))
+    if not over:
+        return
+    area, a, b = max(over)
+    more = f"; {len(over) - 1} more pair{'s' if len(over) > 2 else ''} of parts overlap" \
+        if len(over) > 1 else ""
+    name = MACHINE_NAMES.get(suffix.lower(), suffix.lstrip(".").upper())
+    raise StackedParts(
+        f"parts `{a}` and `{b}` lie over each other where the program draws them ({area:.1f} "
+        f"mm^2 in common{more}): a {name} file of this drawing would cut one part through the "
+        "other, so nothing was written", (a, b),
+        "write the cutting layout instead (`aidl render --layout sheet` lays the parts apart, "
+        "one file per sheet), or place the parts apart in the program")
 
 
 def _biggest_part(output: Output):
