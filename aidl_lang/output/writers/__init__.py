@@ -242,16 +242,17 @@ def _refuse_stacked(output: Output, suffix: str) -> None:
     other (a house's walls at the origin, placed in 3D by ``Place``; a clock's hands on its
     face, ``AllowOverlap``), which a picture shows and a cutter cannot make; the cutting layout
     (``--layout sheet``) lays them apart.  Candidate pairs come from the parts' bounding boxes
-    (:func:`..part.nearby.box_pairs`, O(n log n)); each is intersected with Manifold's
-    CrossSection (the parts' outlines in chords within 0.005 mm)."""
+    (their exact segments' boxes, :func:`..part.nearby.box_pairs`, O(n log n)); each is
+    intersected with Manifold's CrossSection (the parts' outlines in chords within 0.005 mm)."""
     from ..part.nearby import box_pairs
     solids = [p for p in output.parts if p.kind == "solid" and p.loops]
     if len(solids) < 2:
         return
-    shapes = [p.shape for p in solids]
+    boxes = [[f(b[k] for lp in p.loops for g in lp.segments for b in [g.box()])
+              for k, f in ((0, min), (1, min), (2, max), (3, max))] for p in solids]
     over = []
-    for i, j in box_pairs([sh.bounds() for sh in shapes]):
-        area = (shapes[i] ^ shapes[j]).area()
+    for i, j in box_pairs(boxes):        # a part's CrossSection only where boxes meet
+        area = (solids[i].shape ^ solids[j].shape).area()
         if area > STACKED_AREA:
             over.append((float(area), solids[i].name, solids[j].name))
     if not over:
