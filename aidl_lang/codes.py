@@ -653,7 +653,8 @@ one; other shapes of one hole (a keyhole's circle and slot, a cross of two recta
 overlap by design, and a figure-eight of two circles is drawn as one Slot when it is meant.
 One opening meant of several overlapping shapes (a scalloped bite of three circles) is said
 with `AllowOverlap(a, b, c)` (or `AllowOverlap(c)` for a loop's list) in the hole, as the hint
-writes: the shapes it names together are not compared.
+writes: the shapes it names together are not compared. Copies that only graze (every overlap
+under the minimum wall) were meant apart: no fix inserts `AllowOverlap` then.
 
     hole drills {
         for i in range(10) {

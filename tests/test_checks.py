@@ -1021,6 +1021,17 @@ def test_W0512_faces_of_one_statement_that_merge(compile_text):
     assert not warnings(compile_text, GAUGE % "6.5", "W0512")
 
 
+def test_W0512_copies_that_graze_get_no_AllowOverlap_fix_and_deep_ones_do(compile_text):
+    """Issue 84's second run: a honeycomb's hexagons turned 30 degrees grazed each other by
+    0.06 mm, and W0512's machine fix `AllowOverlap(h)` would have hidden the slip.  Copies
+    overlapping by less than a wall were meant apart: no fix (the hint says to space them);
+    copies overlapping deeply may be a meant scallop: the fix says so."""
+    (w,) = warnings(compile_text, GAUGE % "6", "W0512")      # 0.25 mm: a graze
+    assert w.fix is None and "space the copies at least 0.75 mm further apart" in w.hint
+    (w,) = warnings(compile_text, GAUGE % "4", "W0512")      # the last ones 1.5 mm deep
+    assert w.fix is not None and "AllowOverlap(c)" in w.fix.replacement
+
+
 def test_W0512_not_for_a_keyhole_of_two_statements(compile_text):
     assert not warnings(compile_text, """solid plate {
     body = Rectangle(center=(0, 0), width=40, height=30)

@@ -105,13 +105,16 @@ def _check_repeated_faces(d: Drawing, h: Structure, sink: DiagnosticSink,
         ref = _ref(g, h)
         stmt = f"AllowOverlap({ref})" if ref != "self" else None
         meant = (f", or say so: write `{stmt}` in `{h.path}`" if stmt else "")
+        # copies that all graze (overlap by less than a wall, or only touch) were meant apart:
+        # the fix a tool applies is not the AllowOverlap that would hide the slip (issue 84)
+        grazed = max(m[2] for m in merges) < MIN_WALL
         sink.warning("W0512", f"`{g.label}` of hole `{h.path}` is drawn {len(faces)} times but "
                      f"cuts {openings} opening{'s' if openings != 1 else ''}: {how}{more}",
                      span,
                      hint=f"space the copies at least {depth + MIN_WALL:.2f} mm further apart "
                           "(or make them smaller) so that material is left between them; if one "
                           f"opening is meant, draw it as one shape (a Slot, a Polygon){meant}",
-                     fix=_insert_fix(h, stmt, sink) if stmt else None)
+                     fix=_insert_fix(h, stmt, sink) if stmt and not grazed else None)
 
 
 def _check_overlapping_circles(d: Drawing, h: Structure, sink: DiagnosticSink,
@@ -162,7 +165,8 @@ def _check_overlapping_circles(d: Drawing, h: Structure, sink: DiagnosticSink,
                  hint=f"move `{gj.label}` {depth + t:.2f} mm further from `{gi.label}` (or make "
                       "one smaller) so that material is left between them; if one opening is "
                       f"meant, draw it as one shape (a Slot){meant}",
-                 fix=_insert_fix(h, stmt, sink) if stmt else None)
+                 fix=_insert_fix(h, stmt, sink) if stmt and max(m[2] for m in merges) >= t
+                 else None)
 
 
 def _allowed_pair(h: Structure, a, b) -> bool:
