@@ -10,6 +10,8 @@ import asyncio
 import time
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 pytest.importorskip("starlette")
 pytest.importorskip("limits")
@@ -121,3 +123,25 @@ def test_a_sessions_sweep_in_flight_is_stopped_by_its_next_program(client):
     w = st.sweepers.workers[0]
     assert w.proc.pid != pid                    # the killed process was replaced
     assert st.served["sweeps_stopped"] == 1
+
+
+@settings(max_examples=6, deadline=None, derandomize=True)
+@given(width=st.integers(40, 100), radius=st.sampled_from([1.5, 2.0, 3.0, 4.5]))
+def test_law_the_clean_end_is_where_the_wall_gets_thinner_than_min_wall(width, radius):
+    """Over generated plates (width W, a hole of radius r (not swept: no range) at x = off, off
+    in 0 .. W/2 + 10 mm):
+    the wall to the edge is W/2 - off - r, under min_wall (0.5 mm) past off = W/2 - r - 0.5:
+    the slider's clean end is there, within the bisection's 1 % of the range and one step."""
+    from aidl_lang.studio.compiler import sweep_ranges
+    top = width / 2 + 10
+    source = (SLID.replace("width=60", f"width={width}")
+              .replace("max=40 mm", f"max={top:g} mm")
+              .replace("param r = 3 mm, min=1 mm, max=5 mm", f"param r = {radius:g} mm"))
+    got = sweep_ranges("/nonexistent-session", source)
+    off = got["params"]["off"]
+    truth = width / 2 - radius - 0.5
+    lo, hi = off["clean"]
+    assert lo == 0.0
+    assert truth - 0.01 * top - 0.05 - 1e-9 <= hi <= truth + 1e-9, (hi, truth)
+    assert off["above"]["at"] == hi and off["above"]["code"] == "W0507"
+    assert off["above"]["text"].startswith(f"above {hi:g} mm: a wall of `plate`")

@@ -526,7 +526,7 @@ function sweepStatus(text) { const el = $("sweep-status"); if (el) el.textConten
 function markRanges() {
   const sw = state.sweep, a = sw.answer, stale = !!a && sw.source !== state.source;
   if (!a) sweepStatus("");
-  else if (!a.ok) sweepStatus("");
+  else if (!a.ok) sweepStatus(a.error && !a.off ? `the sliders' ranges were not checked: ${a.error}` : "");
   else {
     const narrowed = Object.values(a.params || {}).filter((q) => q.below || q.above).length;
     sweepStatus(stale ? "the hatched parts are of the program before your edit: checking again…"
