@@ -145,3 +145,21 @@ def test_law_the_clean_end_is_where_the_wall_gets_thinner_than_min_wall(width, r
     assert truth - 0.01 * top - 0.05 - 1e-9 <= hi <= truth + 1e-9, (hi, truth)
     assert off["above"]["at"] == hi and off["above"]["code"] == "W0507"
     assert off["above"]["text"].startswith(f"above {hi:g} mm: a wall of `plate`")
+
+
+def test_a_combination_is_said_with_the_other_values_it_had():
+    """Each param alone is clean across its range (off = 25 mm leaves a 2 mm wall, r = 18 mm
+    2 mm to the right and bottom edges of a 60 x 40 mm plate); together they break the wall
+    (30 - off - r < 0.5 mm): the Latin hypercube finds it, and the slider's text names the
+    other value it had."""
+    from aidl_lang.studio.compiler import sweep_ranges
+    source = (SLID.replace("height=20", "height=40").replace("max=40 mm", "max=25 mm")
+              .replace("max=5 mm", "max=18 mm"))
+    got = sweep_ranges("/nonexistent-session", source)
+    said = [(n, q[s]) for n, q in got["params"].items() for s in ("below", "above") if q[s]]
+    assert said, got
+    for name, past in said:
+        other = "r" if name == "off" else "off"
+        assert f"(with `{other}` = " in past["text"], past
+        lo, hi = got["params"][name]["clean"]
+        assert past["at"] == hi and past["text"].startswith(f"above {hi:g} mm: ")

@@ -395,8 +395,8 @@ def sweep_ranges(folder: str, source: str, budget=None) -> dict:
                 text += f"; at {_shown(f.values[name], p.unit)}: {for_forms(f.problem)}"
             others = [f"`{n}` = {_shown(v, declared[n].unit if n in declared else '')}"
                       for n, v in f.values.items() if n != name]
-            if others:
-                text += f" (with {', '.join(others)})"
+            if others:                  # a combination: the other values it had (3 named)
+                text += f" (with {', '.join(others[:3])}{', …' if len(others) > 3 else ''})"
             row[side] = {"bound": at, "at": end, "code": code, "text": text}
         for side in ("below", "above"):
             if row[side] is not None:
