@@ -43,13 +43,18 @@ class Finding:
     ``values``: ``{param: number}`` in display units (mm, deg, plain); ``code`` and
     ``message``: what happens there (the error or warning, or ``W0510`` for a part whose
     topology changes); ``clean``: ``{param: (lo, hi)}``, the largest clean sub-range found by
-    bisection (display units); ``diagnostic``: the ``W0110`` located at the param line(s)."""
+    bisection (display units); ``diagnostic``: the ``W0110`` located at the param line(s);
+    ``problem``: the message of ``code`` alone; ``first``: ``(values, code, message)`` of the
+    first failing point bisection found past the clean range when it fails otherwise than
+    at ``values`` (None: the same way)."""
 
     values: dict
     code: str
     message: str
     clean: dict
     diagnostic: Diagnostic
+    problem: str = ""
+    first: tuple | None = None
 
 
 @dataclass
@@ -390,7 +395,11 @@ class _Sweep:
                        hint=f"narrow the range to the largest clean one found: {fix} "
                             f"(bisected: {tol}), or fix the design at these values",
                        labels=labels)
-        self.report.findings.append(Finding(shown, code, message, narrowed, d))
+        first = None
+        if start is not None and start[1][0][0] != code:
+            first = ({p.name: start[0][p.name] for p in moved}, *start[1][0])
+        self.report.findings.append(Finding(shown, code, message, narrowed, d, got[0][1],
+                                            first))
 
 
 class _Point:

@@ -99,6 +99,7 @@ class Worker:
         self.restarts = 0           # processes killed or lost (timeouts, deaths)
         self.requests = 0
         self.retiring = False       # set: the next request starts a fresh process
+        self.cancelled = False      # set by cancel(): the request in flight (or starting) ends
 
     def _start(self) -> None:
         ctx = multiprocessing.get_context("spawn")
@@ -128,6 +129,15 @@ class Worker:
         if proc is not None:
             proc.join()
 
+    def cancel(self) -> None:
+        """Stop the request in flight (or starting) from another thread: its process is killed
+        (the waiting :meth:`request` raises :class:`Died`; the next request starts a fresh
+        process)."""
+        self.cancelled = True
+        proc = self.proc
+        if proc is not None and proc.is_alive():
+            proc.kill()
+
     def request(self, request, seconds: float):
         """Send ``request`` and return the handler's answer; raises :class:`TimedOut` past
         ``seconds`` (the process is killed), :class:`Died` or :class:`NotReady`."""
@@ -137,6 +147,9 @@ class Worker:
                 self.stop()
             if self.proc is None or not self.proc.is_alive():
                 self._start()
+            if self.cancelled:              # cancelled while its process started
+                self.cancelled = False
+                raise Died("the request was cancelled")
             self.requests += 1
             try:
                 self.conn.send(request)
@@ -152,6 +165,9 @@ class Worker:
             except (OSError, EOFError):
                 self.restarts += 1
                 self.stop()
+                if self.cancelled:
+                    self.cancelled = False
+                    raise Died("the request was cancelled") from None
                 raise Died("the worker process ended while compiling (out of memory?)") from None
 
     def rss(self) -> int:

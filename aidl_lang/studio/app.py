@@ -25,6 +25,13 @@ Routes:
   :func:`.compiler.view`).  One preview of a session compiles at a time; one that waited
   while a newer one of the session came is answered ``{"superseded": true}`` uncompiled.
   ``POST /api/download/FORMAT``: the same plus ``"settings"`` -> the file.
+* ``POST /api/sweep``: ``{"sid", "source"}`` -> the program checked across its params'
+  declared ranges (:func:`.compiler.sweep_ranges`: each slider's clean range and what happens
+  past it), asked by the page in the background after a picture of a new program.  Run by
+  the sweep workers (``sweepers``, apart from the previews' compilers; on the cluster with
+  ``--scheduler``), bounded by the sweep's budget, answered from a cache by the program's hash
+  (the same program is swept once), and the session's sweep in flight is stopped when it asks
+  for another program's (:class:`Sweeps`).
 * ``POST /api/glb``: ``{"sid", "source", "values", "settings"}`` -> the 3D view's GLB (a
   smaller mesh than the download, made from the preview's drawing; gzip when the browser
   takes it).
@@ -93,6 +100,7 @@ class Settings:
     queue: int = 16                 # requests that may wait at once before "busy" at once
     rate: str = "300/minute"        # per client (``limits`` notation)
     describes: int = 2              # model loops that may run at once
+    sweepers: int = 1               # sweep worker processes per server process; 0: no sweeps
     store: str = ""                 # redis://HOST:PORT/DB: uploads and rate counters there
     scheduler: str = ""             # tcp://HOST:PORT: compiles on this Dask cluster
     model: dict | None = field(default=None, repr=False)   # describe.model_config()
@@ -101,6 +109,7 @@ class Settings:
            "memory_mb": "AIDL_STUDIO_MEMORY_MB", "budget": "AIDL_STUDIO_BUDGET",
            "wait": "AIDL_STUDIO_WAIT", "queue": "AIDL_STUDIO_QUEUE",
            "rate": "AIDL_STUDIO_RATE", "describes": "AIDL_STUDIO_DESCRIBES",
+           "sweepers": "AIDL_STUDIO_SWEEPERS",
            "store": "AIDL_STUDIO_STORE", "scheduler": "AIDL_STUDIO_SCHEDULER"}
 
     @classmethod
@@ -240,6 +249,48 @@ class Latest:
 
 SUPERSEDED = {"ok": False, "superseded": True, "svg": None, "params": None, "diagnostics": [],
               "error": "a newer change of this design was asked for: this one was not compiled"}
+SWEPT = 256                 # sweeps a server process keeps (by the program's hash)
+SWEEP_WAIT = 60.0           # s a sweep waits for a free sweep worker before "busy"
+SWEEP_SUPERSEDED = {"ok": None, "superseded": True, "params": {},
+                    "error": "the design changed: the check of its ranges was stopped"}
+_NAMES_A_FILE = re.compile(r'"[^"\n]*\.(?:aidl|dxf|svg)"', re.I)
+
+
+class SweepJob:
+    """One program's sweep in flight: the sessions waiting for it, the worker running it."""
+
+    def __init__(self) -> None:
+        self.task = None
+        self.sids: set = set()
+        self.cancelled = False
+        self.worker = None
+
+
+class Sweeps:
+    """The sweeps of a server process: ``done`` (program key -> answer, the last
+    :data:`SWEPT`), ``running`` (key -> :class:`SweepJob`: a second session asking for the
+    same program waits for the same sweep) and ``of`` (session -> the key it asked last)."""
+
+    def __init__(self) -> None:
+        from collections import OrderedDict
+        self.done: OrderedDict = OrderedDict()
+        self.running: dict = {}
+        self.of: dict = {}
+
+    @staticmethod
+    def key(source: str, folder: str, budget: float) -> str:
+        """The program's hash; with the session's uploads (names, sizes, times) when it names
+        a file (``import "x.aidl"``, ``Drawing2D("y.dxf")``): the same text may read others."""
+        h = hashlib.sha256(f"{budget!r}\0{source}".encode("utf-8", "surrogatepass"))
+        if _NAMES_A_FILE.search(source):
+            h.update(repr(compiler._listing(folder)).encode())
+        return h.hexdigest()
+
+    def keep(self, key: str, answer: dict) -> None:
+        self.done[key] = answer
+        self.done.move_to_end(key)
+        while len(self.done) > SWEPT:
+            self.done.popitem(last=False)
 
 
 class Studio:
@@ -260,12 +311,17 @@ class Studio:
                                 for _ in range(max(1, settings.compilers))])
         self.limiter = MovingWindowRateLimiter(limiter_storage(self.folders))
         self.rate = parse(settings.rate)
+        self.sweepers = None if settings.scheduler or settings.sweepers <= 0 else W.Pool(
+            [W.Worker(compiler.handler, (settings.budget,), memory)
+             for _ in range(settings.sweepers)])
+        self.sweeps = Sweeps()
         self.affinity: dict[str, W.Worker] = {}
         self.latest: dict[str, Latest] = {}       # sid -> its previews in flight
         self.thumbs: dict[str, str] = {}
         self.describing = 0
         self.static = static_files()
-        self.served = {"busy": 0, "limited": 0, "compiles": 0, "timeouts": 0, "superseded": 0}
+        self.served = {"busy": 0, "limited": 0, "compiles": 0, "timeouts": 0, "superseded": 0,
+                       "sweeps": 0, "sweeps_cached": 0, "sweeps_stopped": 0}
         self.metrics = Metrics(self)
 
     def check_rate(self, request: Request, cost: int = 1) -> None:
@@ -338,8 +394,110 @@ class Studio:
             if not slot.users and self.latest.get(sid) is slot:
                 del self.latest[sid]
 
+    @property
+    def sweeping(self) -> bool:
+        """Whether this studio sweeps programs (``sweepers`` > 0, or a cluster)."""
+        return self.sweepers is not None or bool(self.settings.scheduler)
+
+    async def sweep(self, sid: str, folder: str, source: str) -> dict:
+        """The sweep of ``source`` for session ``sid`` (:func:`.compiler.sweep_ranges`): from
+        the cache when this program was swept, else run by a sweep worker (one sweep per
+        program however many sessions ask).  A session's earlier sweep of another program that
+        no other session waits for is stopped (its worker process killed).  Raises
+        :class:`Limited` (503) when the sweep workers stay busy."""
+        import asyncio
+        sw = self.sweeps
+        key = sw.key(source, folder, self.settings.budget)
+        if key in sw.done:
+            sw.done.move_to_end(key)
+            self.served["sweeps_cached"] += 1
+            return {**sw.done[key], "cached": True}
+        old = sw.of.get(sid)
+        if old is not None and old != key and old in sw.running:
+            job = sw.running[old]
+            job.sids.discard(sid)
+            if not job.sids:
+                self.stop_sweep(job)
+        if len(sw.of) > 10_000:
+            sw.of.clear()
+        sw.of[sid] = key
+        job = sw.running.get(key)
+        if job is None:
+            pool = self.sweepers or self.pool
+            if pool.waiting >= self.settings.queue:
+                self.served["busy"] += 1
+                raise Limited(503, "the studio is busy: the check of your design's ranges "
+                                   "waits for a free worker; it is asked again in a few "
+                                   "seconds", 10)
+            job = sw.running[key] = SweepJob()
+            job.task = asyncio.ensure_future(self._sweep_job(key, job, (
+                "sweep", sid, folder, source)))
+        job.sids.add(sid)
+        answer = await asyncio.shield(job.task)
+        if answer.get("busy"):
+            raise Limited(503, answer["error"], 10)
+        return answer
+
+    def stop_sweep(self, job: SweepJob) -> None:
+        """Stop the sweep ``job``: not started, or its worker process killed."""
+        job.cancelled = True
+        self.served["sweeps_stopped"] += 1
+        w = job.worker
+        if w is not None:
+            w.cancel()
+
+    async def _sweep_job(self, key: str, job: SweepJob, request: tuple) -> dict:
+        t0 = time.perf_counter()
+        try:
+            answer = await run_in_threadpool(self._sweep_in_worker, job, request)
+        finally:
+            if self.sweeps.running.get(key) is job:
+                del self.sweeps.running[key]
+        if not answer.get("superseded") and not answer.get("busy"):
+            self.metrics.compiled("sweep", time.perf_counter() - t0)
+            self.served["sweeps"] += 1
+            if "error" not in answer:
+                self.sweeps.keep(key, answer)
+        return answer
+
+    def _sweep_in_worker(self, job: SweepJob, request: tuple) -> dict:
+        """Run ``request`` in a sweep worker (on the cluster with ``--scheduler``); a dict
+        answer, never an exception."""
+        s = self.settings
+        busy = {"busy": True, "error": "the studio is busy: every worker that checks ranges "
+                                       f"stayed busy for {SWEEP_WAIT:g} s; the check is asked "
+                                       "again in a few seconds"}
+        try:
+            if self.sweepers is None:           # the cluster's workers
+                answer, _ = self.pool.request(request, s.seconds, SWEEP_WAIT)
+                return dict(SWEEP_SUPERSEDED) if job.cancelled else answer
+            w = self.sweepers.take(SWEEP_WAIT)
+        except (W.Busy, W.NotReady):
+            return busy
+        except W.WorkerError:
+            return {"error": "the check of the ranges stopped (out of time or memory)"}
+        try:
+            if job.cancelled:
+                return dict(SWEEP_SUPERSEDED)
+            job.worker = w
+            answer = w.request(request, s.seconds)
+        except W.NotReady:
+            return busy
+        except W.WorkerError:
+            return dict(SWEEP_SUPERSEDED) if job.cancelled else {
+                "error": "the check of the ranges stopped (out of time or memory)"}
+        finally:
+            job.worker = None
+            w.cancelled = False             # a cancel that came after the answer
+            self.sweepers.give(w)
+        if isinstance(answer, dict) and answer.pop("retire", False):
+            w.retiring = True
+        return answer
+
     def stop(self) -> None:
         self.pool.stop()
+        if self.sweepers is not None:
+            self.sweepers.stop()
 
 
 def create_app(settings: Settings | None = None) -> Starlette:
@@ -445,6 +603,7 @@ def _reference_routes(st: Studio, guarded) -> list[Route]:
             "pages": compiler.PAGES,
             "machines": list(compiler.MACHINES),
             "model": {"model": settings.model.get("model")} if settings.model else None,
+            "sweep": st.sweeping,
             "limits": {"source_bytes": MAX_SOURCE_BYTES, "rate": settings.rate,
                        "seconds": settings.seconds,
                        "upload_bytes": MAX_UPLOAD}})
@@ -580,6 +739,16 @@ def _compile_routes(st: Studio, guarded) -> list[Route]:
                         headers={"Content-Disposition": f'attachment; filename="{name}"',
                                  "X-Content-Type-Options": "nosniff"})
 
+    async def sweep(request):
+        doc = await read_json(request)
+        sid = doc.get("sid", "")
+        folder = st.folders.folder(sid)
+        source, _ = program_of(doc)
+        if not st.sweeping:
+            return JSONResponse({"ok": None, "off": True, "params": {},
+                                 "error": "this studio does not check ranges (sweepers 0)"})
+        return JSONResponse(await st.sweep(sid, folder, source))
+
     async def glb(request):
         doc = await read_json(request)
         sid = doc.get("sid", "")
@@ -622,6 +791,7 @@ def _compile_routes(st: Studio, guarded) -> list[Route]:
     return [Route("/api/view", guarded(view), methods=["POST"]),
             Route("/api/download/{fmt}", guarded(download, 4), methods=["POST"]),
             Route("/api/glb", guarded(glb), methods=["POST"]),
+            Route("/api/sweep", guarded(sweep, 2), methods=["POST"]),
             Route("/api/describe", guarded(describe, 20), methods=["POST"])]
 
 

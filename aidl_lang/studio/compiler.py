@@ -19,6 +19,9 @@ Requests (tuples, the first item names the kind):
   (:func:`aidl_lang.output.writers.glb.to_view_glb`: fewer triangles, shared meshes) as
   ``(bytes, name, media type)`` or ``{"error"}``, made from the drawing the session's last
   ``view`` of this program and these values drew (no second compile), else compiled.
+* ``("sweep", sid, folder, source)``: the program checked across its params' declared ranges
+  (:func:`aidl_lang.sweep.sweep`, bounded by its budget) as the sliders mark it
+  (:func:`sweep_ranges`).
 * ``("thumb", id)``: the gallery entry's picture as SVG text (``""`` when it fails).
 * ``("import", folder, name, infer)``: the uploaded drawing ``name`` of the session's folder
   as a program (``aidl import [--infer]``; ``infer="drawing"``: a program that uses the
@@ -119,6 +122,8 @@ def handler(budget: float = 1.0):
                 answer = download(*request[1:], budget=scaled)
             elif kind == "glb":
                 answer = view_glb(sessions, *request[1:], budget=scaled)
+            elif kind == "sweep":
+                answer = sweep_ranges(*request[2:], budget=scaled)
             elif kind == "thumb":
                 answer = thumbnail(*request[1:])
             elif kind == "import":
@@ -133,7 +138,7 @@ def handler(budget: float = 1.0):
         if oom:                         # said once the failed frames are gone
             sessions.clear()
             answer = out_of_memory_answer(request)
-        if kind in ("view", "download", "glb") and len(request) > 2:
+        if kind in ("view", "download", "glb", "sweep") and len(request) > 2:
             answer = hide_paths(answer, request[1] if kind == "download" else request[2])
         if rss() > RETIRE_RSS and isinstance(answer, dict):
             answer["retire"] = True     # give the memory back: a fresh worker takes over
@@ -343,6 +348,77 @@ def view_glb(sessions: OrderedDict, sid: str, folder: str, source: str, values: 
         return to_view_glb(output, thickness), "view.glb", "model/gltf-binary"
     except (OutputError, ValueError) as e:
         return {"error": str(e)}
+
+
+def sweep_ranges(folder: str, source: str, budget=None) -> dict:
+    """``source`` (named ``folder/main.aidl``: its imports from the session's uploads) swept
+    across its params' declared ranges (:func:`aidl_lang.sweep.sweep`, within its budget's CPU
+    seconds), as the sliders show it: ``{"ok", "swept", "points", "skipped", "summary",
+    "params": {name: {"min", "max", "unit", "clean": [lo, hi], "below", "above"}}}`` (display
+    units: mm, deg, plain).  ``clean``: the range the sweep found clean, its ends on the
+    slider's steps (inward); ``below``/``above``: None, or what happens past that end
+    (``{"at", "code", "text"}``, ``text`` as the page says it: ``above 26.4 mm: a wall of
+    `plate` ... is 0.36 mm wide ...``).  ``ok`` false: the program does not compile at its
+    written values (nothing swept)."""
+    from ..serve.params import declared_params
+    from ..serve.wording import for_forms
+    from ..sweep import sweep
+    path = os.path.join(folder, "main.aidl")
+    rep = sweep(source, path, budget=budget)
+    out = {"ok": rep.ok, "swept": list(rep.swept), "points": rep.points,
+           "skipped": rep.skipped, "summary": rep.text(), "params": {}}
+    if not rep.ok:
+        return out
+    declared = {p.name: p for p in declared_params(source, path) or []}
+    clean = rep.clean_ranges()
+    for name in rep.swept:
+        p = declared.get(name)
+        if p is None or p.min is None or p.max is None:
+            continue
+        lo, hi = clean.get(name, (p.min, p.max))
+        row = {"min": p.min, "max": p.max, "unit": p.unit,
+               "clean": [_stop(p, lo, up=True), _stop(p, hi, up=False)],
+               "below": None, "above": None}
+        for f in rep.findings:
+            if name not in f.clean:
+                continue
+            above = f.values[name] > p.value
+            side = "above" if above else "below"
+            at = f.clean[name][1 if above else 0]
+            if row[side] is not None and (at >= row[side]["bound"] if above
+                                          else at <= row[side]["bound"]):
+                continue
+            end = row["clean"][1 if above else 0]
+            code, what = (f.first[1], f.first[2]) if f.first else (f.code, f.problem)
+            text = f"{side} {_shown(end, p.unit)}: {for_forms(what)}"
+            if f.first:
+                text += f"; at {_shown(f.values[name], p.unit)}: {for_forms(f.problem)}"
+            others = [f"`{n}` = {_shown(v, declared[n].unit if n in declared else '')}"
+                      for n, v in f.values.items() if n != name]
+            if others:                  # a combination: the other values it had (3 named)
+                text += f" (with {', '.join(others[:3])}{', …' if len(others) > 3 else ''})"
+            row[side] = {"bound": at, "at": end, "code": code, "text": text}
+        for side in ("below", "above"):
+            if row[side] is not None:
+                row[side].pop("bound")
+        out["params"][name] = row
+    return out
+
+
+def _stop(p, x: float, up: bool) -> float:
+    """``x`` moved onto the slider of param ``p`` (its ``min + k * step``), up or down: a clean
+    range's end is shown where the slider stops, inside what the sweep found clean."""
+    import math
+    if not p.step or p.step <= 0:
+        return x
+    k = (x - p.min) / p.step
+    k = math.ceil(k - 1e-9) if up else math.floor(k + 1e-9)
+    return round(min(max(p.min + k * p.step, p.min), p.max), 9)
+
+
+def _shown(x: float, unit: str) -> str:
+    """A number as the sliders show it: ``26.4 mm``, ``30 deg``, ``6``."""
+    return f"{float(x):.6f}".rstrip("0").rstrip(".") + (f" {unit}" if unit else "")
 
 
 def settle(run, values: dict, doc: dict) -> tuple[dict, dict]:

@@ -17,7 +17,8 @@ scrape reaches one of them: run one process per port behind the proxy instead):
   (histogram): every HTTP request by route template (``/api/view``, ``/api/gallery/{id:path}``;
   an unknown path is ``other``);
 * ``aidl_studio_compile_seconds{kind}`` (histogram): a compile request in a worker (``view``,
-  ``download``, ``thumb``), the wait for a worker included;
+  ``download``, ``thumb``, ``sweep``: a sweep worker's range check), the wait for a worker
+  included;
 * ``aidl_studio_queue_length``: compile requests waiting for a worker;
 * ``aidl_studio_busy_total`` (503s), ``aidl_studio_rate_limited_total`` (429s),
   ``aidl_studio_compile_timeouts_total``, ``aidl_studio_worker_restarts_total``;

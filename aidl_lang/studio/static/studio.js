@@ -12,9 +12,11 @@ const state = {
   sid: null, source: "", values: {}, params: [], paramKey: "", entry: null,
   seq: 0, shown: 0, inflight: false, again: false, timer: null, glbSeq: 0, reframe: true,
   config: null, svgUrl: null, view: null,
+  // the sweep of the program (/api/sweep): its answer, the program it is of, the one asked
+  sweep: { answer: null, source: null, asked: null, ctrl: null, timer: null },
 };
 // read by the browser tests: views shown, 3D loads asked, the last view and its diagnostics
-window.studio = { ready: false, idle: false, views: 0, glbs: 0, glbView: 0, view: null, state, errors: [],
+window.studio = { ready: false, idle: false, views: 0, sweeps: 0, sweep: null, glbs: 0, glbView: 0, view: null, state, errors: [],
                   shownAt: {}, builtAt: {} };     // view number -> performance.now() of its 2D, its 3D
 
 // ------------------------------------------------------------------ requests
@@ -195,7 +197,7 @@ function show(view, ms) {
   showDiagnostics(diags, view.error);
   window.studio.views += 1;
   window.studio.shownAt[window.studio.views] = performance.now();
-  if (view.ok) { building(true); load3d(); }
+  if (view.ok) { building(true); load3d(); askSweep(); }
   else {          // the last good model, dimmed like the last good picture, and why
     state.glbSeq += 1;
     building(true);
@@ -355,6 +357,7 @@ function showParams(params) {
     setControl(row, p, v);
     row.classList.toggle("changed", !same(v, p.default));
   }
+  markRanges();
 }
 
 // A slider's stops: its grid (min + k step), its two ends and its default, exact: the range
@@ -371,12 +374,14 @@ function snap(p, v) {
   }
   best = near(p.max, best);
   if (typeof p.default === "number" && p.default >= p.min && p.default <= p.max) best = near(p.default, best);
+  for (const c of cleanOf(p.name) || []) if (c >= p.min && c <= p.max) best = near(c, best);
   return Number(best.toFixed(9));
 }
 function nextStop(p, v, dir) {          // the stop after v in direction dir (+1, -1)
   const eps = 1e-9 * Math.max(1, Math.abs(v));
   const cands = [p.min, p.max];
   if (typeof p.default === "number") cands.push(p.default);
+  cands.push(...(cleanOf(p.name) || []));         // the clean range's ends (the sweep's)
   if (p.step > 0) {
     const k = (v - p.min) / p.step;
     cands.push(p.min + (dir > 0 ? Math.floor(k + 1e-9) + 1 : Math.ceil(k - 1e-9) - 1) * p.step);
@@ -424,13 +429,23 @@ function control(p) {
     const n = document.createElement("input");
     Object.assign(n, { type: "number", name: p.name + "-value", step: "any" });
     n.setAttribute("aria-label", `${p.name}${p.unit ? ", " + p.unit : ""}`);
-    const put = (v) => { r.value = v; n.value = v; change(v); };
+    const put = (v) => { r.value = v; n.value = v; change(v); pastNote(row, p.name, v); };
     r.oninput = () => put(snap(r._param, Number(r.value)));
     stopKeys(r, put);
     n.onchange = () => { const v = Number(n.value); if (Number.isFinite(v)) put(v); };
     const u = document.createElement("span"); u.className = "unit";
     u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)})`;
-    line.append(r, n, u);
+    // the track: the slider over the parts of its range the sweep did not find clean
+    const track = document.createElement("span"); track.className = "track";
+    for (const side of ["below", "above"]) {
+      const z = document.createElement("span"); z.className = `unclean ${side}`; z.hidden = true;
+      track.appendChild(z);
+    }
+    track.prepend(r);
+    const note = document.createElement("div"); note.className = "sweep-note"; note.id = id + "-sweep";
+    r.setAttribute("aria-describedby", note.id);
+    line.append(track, n, u);
+    row.appendChild(note);
   }
   return row;
 }
@@ -450,6 +465,118 @@ function setControl(row, p, v) {
     // to where its range moved it); a number being typed is left alone
     inputs[0].value = v;
     if (document.activeElement !== inputs[1]) inputs[1].value = v;
+    pastNote(row, p.name, v);
+  }
+}
+
+// ------------------------------------------------------------------ the ranges the sweep found clean
+// After a picture of a program not swept yet, the page asks /api/sweep for it in the background
+// (a quiet moment later; an edit stops the one on its way). Each slider then shows the part of
+// its range the sweep did not find clean hatched, and says what happens there (its title, its
+// accessible description, and a line under it while its value is there): dragging into it is
+// allowed, and said.
+function cleanOf(name) {
+  const a = state.sweep.answer, q = a && a.params && a.params[name];
+  return q ? q.clean : null;
+}
+function askSweep() {
+  const sw = state.sweep;
+  if (!state.config || !state.config.sweep || sw.source === state.source || sw.asked === state.source) return;
+  clearTimeout(sw.timer);
+  sw.timer = setTimeout(runSweep, 500);
+}
+// the program changed: the sweep on its way is stopped; the marks shown are of the program as it
+// was (dimmed, said so) until the new one's sweep answers; `fresh`: another program, none kept
+function sweepChanged(fresh) {
+  const sw = state.sweep;
+  clearTimeout(sw.timer);
+  if (sw.ctrl) sw.ctrl.abort();
+  sw.ctrl = null; sw.asked = null;
+  if (fresh) { sw.answer = null; sw.source = null; }
+  markRanges();
+}
+async function runSweep() {
+  const sw = state.sweep, source = state.source;
+  if (sw.ctrl) sw.ctrl.abort();
+  const ctrl = sw.ctrl = new AbortController();
+  sw.asked = source;
+  sweepStatus("checking the sliders' ranges…");
+  let r = null;
+  try {
+    r = await fetch("/api/sweep", { method: "POST", signal: ctrl.signal, headers: { "Content-Type": "application/json" },
+                                    body: JSON.stringify({ sid: state.sid, source }) });
+  } catch (e) { r = null; }
+  if (ctrl !== sw.ctrl || source !== state.source) return;       // stopped, or another program
+  sw.ctrl = null;
+  const doc = r ? await r.json().catch(() => null) : null;
+  if (!r || r.status === 429 || r.status === 503 || !doc) {       // busy: asked again, quietly
+    const wait = (r && Number(r.headers.get("Retry-After"))) || 10;
+    sweepStatus(`the sliders' ranges are checked when the studio has a free worker (in ${wait} s)`);
+    sw.asked = null;
+    sw.timer = setTimeout(() => { if (source === state.source) runSweep(); }, wait * 1000);
+    return;
+  }
+  if (doc.superseded) { sw.asked = null; return; }
+  sw.answer = doc; sw.source = source;
+  window.studio.sweeps += 1;
+  window.studio.sweep = doc;
+  markRanges();
+}
+function sweepStatus(text) { const el = $("sweep-status"); if (el) el.textContent = text; }
+function markRanges() {
+  const sw = state.sweep, a = sw.answer, stale = !!a && sw.source !== state.source;
+  if (!a) sweepStatus("");
+  else if (!a.ok) sweepStatus(a.error && !a.off ? `the sliders' ranges were not checked: ${a.error}` : "");
+  else {
+    const narrowed = Object.values(a.params || {}).filter((q) => q.below || q.above).length;
+    sweepStatus(stale ? "the hatched parts are of the program before your edit: checking again…"
+      : !a.swept.length ? "" : narrowed
+        ? `hatched: values at which the design breaks (${a.points} values checked)`
+        : `every slider's range checks clean (${a.points} values checked)`
+          + (a.skipped ? `; ${a.skipped} not checked in the time allowed` : ""));
+  }
+  for (const p of state.params) {
+    const row = $("params").querySelector(`[data-name="${CSS.escape(p.name)}"]`);
+    const r = row && row.querySelector("input[type=range]");
+    if (!r) continue;
+    const q = a && a.ok && a.params ? a.params[p.name] : null;
+    row.classList.toggle("swept-stale", !!q && stale);
+    const span = p.max - p.min;
+    for (const side of ["below", "above"]) {
+      const z = row.querySelector(`.unclean.${side}`);
+      const past = q && q[side];
+      z.hidden = !past || !(span > 0);
+      if (z.hidden) continue;
+      const f = Math.min(1, Math.max(0, (past.at - p.min) / span));
+      z.style.setProperty("--from", side === "below" ? 0 : f);
+      z.style.setProperty("--to", side === "below" ? f : 1);
+      z.title = past.text;
+    }
+    const u = row.querySelector(".unit");
+    const clean = q && (q.below || q.above) ? `, clean ${fmt(q.clean[0])}–${fmt(q.clean[1])}` : "";
+    u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)}${clean})`;
+    r.title = q && (q.below || q.above) ? [q.below, q.above].filter(Boolean).map((x) => x.text).join("\n") : "";
+    const v = state.values[p.name] !== undefined ? state.values[p.name] : p.value;
+    pastNote(row, p.name, v);
+  }
+}
+// the slider's accessible text and the line under it: where its value is, against the clean range
+function pastNote(row, name, v) {
+  const note = row.querySelector(".sweep-note"), r = row.querySelector("input[type=range]");
+  if (!note || !r) return;
+  const a = state.sweep.answer, q = a && a.ok && a.params ? a.params[name] : null;
+  const p = state.params.find((x) => x.name === name) || {};
+  const unit = p.unit ? ` ${p.unit}` : "";
+  const past = q && typeof v === "number" ? (v < q.clean[0] - 1e-9 ? q.below : v > q.clean[1] + 1e-9 ? q.above : null) : null;
+  const ends = [q && q.below, q && q.above].filter(Boolean);
+  note.classList.toggle("past", !!past);
+  if (past) {
+    note.textContent = `${fmt(v)}${unit} is outside the range the sweep found clean (${fmt(q.clean[0])}–${fmt(q.clean[1])}${unit}): ${past.text}`;
+    r.setAttribute("aria-valuetext", `${fmt(v)}${unit}, outside the clean range: ${past.text}`);
+  } else {
+    note.textContent = ends.length
+      ? `clean from ${fmt(q.clean[0])} to ${fmt(q.clean[1])}${unit}; ${ends.map((x) => x.text).join("; ")}` : "";
+    if (typeof v === "number") r.setAttribute("aria-valuetext", `${fmt(v)}${unit}`);
   }
 }
 
@@ -614,6 +741,7 @@ function newProgram(values = {}, given = null) {
   state.givenTexts = given;
   state.params = [];
   state.paramKey = "";
+  sweepChanged(true);
 }
 
 // most of the program replaced at once (a paste over it, or the whole text deleted): another
@@ -811,6 +939,7 @@ async function start() {
     editor = createEditor($("code"), { doc: "", hover, wrap: true, label: "the program",
       onChange: (text) => {
         if (replaced(state.source, text)) newProgram();
+        else sweepChanged(false);
         state.source = text; schedule(250);
       } });
     editor.goto = (line, col) => {

@@ -1,0 +1,165 @@
+"""Issue 84: the studio's sliders show the ranges the sweep found clean, for the visitor's own
+program.  Starlette's test client over real compile and sweep workers: the page's
+``/api/sweep`` answer for a program with a known bad range (a hole slid past its plate's edge)
+carries each slider's clean range and what happens past it; the same program is swept once
+(the cache by its hash); a session's sweep in flight is stopped when it asks for another
+program's."""
+from __future__ import annotations
+
+import asyncio
+import time
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+pytest.importorskip("starlette")
+pytest.importorskip("limits")
+from starlette.testclient import TestClient  # noqa: E402
+
+from aidl_lang.studio.app import Settings, SweepJob, create_app  # noqa: E402
+
+# a 60 x 20 mm plate with a 6 mm hole at x = off: its wall to the right edge (30 - off - 3 mm)
+# is thinner than min_wall (0.5 mm) past off = 26.5 mm and the hole leaves the plate past 33 mm
+SLID = """units mm
+param off = 10 mm, min=0 mm, max=40 mm
+param r = 3 mm, min=1 mm, max=5 mm
+solid plate {
+    body = Rectangle(center=(0, 0), width=60, height=20)
+    hole h { c = Circle(center=(off, 0), radius=r) }
+}
+"""
+CLEAN = """units mm
+param w = 40 mm, min=20 mm, max=80 mm
+solid plate { body = Rectangle(center=(0, 0), width=w, height=20) }
+"""
+
+
+@pytest.fixture
+def client(tmp_path):
+    app = create_app(Settings(data=str(tmp_path / "data"), compilers=1, sweepers=1))
+    with TestClient(app) as c:
+        yield c
+
+
+def session(c) -> str:
+    return c.post("/api/session").json()["sid"]
+
+
+def sweep(c, sid, source):
+    r = c.post("/api/sweep", json={"sid": sid, "source": source})
+    assert r.status_code == 200, r.text
+    return r.json()
+
+
+def test_the_sweep_answer_carries_each_sliders_clean_range_and_what_is_past_it(client):
+    sid = session(client)
+    assert client.get("/api/config").json()["sweep"] is True
+    got = sweep(client, sid, SLID)
+    assert got["ok"] is True and set(got["swept"]) == {"off", "r"}
+    off = got["params"]["off"]
+    assert (off["min"], off["max"], off["unit"]) == (0.0, 40.0, "mm")
+    lo, hi = off["clean"]
+    # the wall to the edge is 30 - off - 3 mm: under 0.5 mm past off = 26.5 mm; bisected to
+    # 1 % of the range (0.4 mm) and put on the slider's 0.05 mm steps, inward
+    assert lo == 0.0 and 26.5 - 0.4 - 1e-9 <= hi <= 26.5
+    assert off["below"] is None
+    above = off["above"]
+    assert above["at"] == hi and above["code"] == "W0507"
+    assert above["text"].startswith(f"above {hi:g} mm: a wall of `plate`")
+    assert "hole `plate.h`" in above["text"] and "thinner than 0.5 mm" in above["text"]
+    # the far end says what it does there: the hole cuts nothing
+    assert "at 40 mm: hole `plate.h` cuts nothing" in above["text"]
+    # the radius: 5 mm leaves a 15 mm wall to the edge at off = 10 mm: clean across its range
+    assert got["params"]["r"]["clean"] == [1.0, 5.0]
+    assert got["params"]["r"]["above"] is None and got["params"]["r"]["below"] is None
+    assert client.app.state.studio.settings.data not in str(got)     # no server path
+
+
+def test_a_clean_program_and_a_broken_one(client):
+    sid = session(client)
+    got = sweep(client, sid, CLEAN)
+    assert got["ok"] is True and got["params"]["w"]["clean"] == [20.0, 80.0]
+    assert got["params"]["w"]["above"] is None
+    broken = sweep(client, sid, CLEAN.replace("width=w", "width=q"))
+    assert broken["ok"] is False and broken["params"] == {}
+
+
+def test_the_same_program_is_swept_once(client):
+    a, b = session(client), session(client)
+    first = sweep(client, a, SLID)
+    assert "cached" not in first
+    again = sweep(client, b, SLID)              # another session, the same program
+    assert again.pop("cached") is True and again == first
+    stats = client.app.state.studio.served
+    assert stats["sweeps"] == 1 and stats["sweeps_cached"] == 1
+
+
+def test_a_sessions_sweep_in_flight_is_stopped_by_its_next_program(client):
+    """The session's sweep of a program that takes long (its worker busy) is stopped when the
+    session asks for another program: answered `superseded`, its worker process killed, and
+    the next program swept by a fresh one."""
+    st = client.app.state.studio
+    sid = session(client)
+    folder = st.folders.folder(sid)
+    # a sweep that cannot end by itself within the test: a loop of 10^8 steps at each point
+    slow = SLID.replace("solid plate {", "solid plate {\n    for i in range(10000) "
+                        "{ for j in range(10000) { k = i * j } }")
+
+    async def both():
+        first = asyncio.ensure_future(st.sweep(sid, folder, slow))
+        for _ in range(600):                    # until its worker runs it (no wall-clock claim)
+            await asyncio.sleep(0.1)
+            job = next(iter(st.sweeps.running.values()), None)
+            if job is not None and job.worker is not None and job.worker.proc is not None:
+                break
+        assert isinstance(job, SweepJob) and job.worker.proc is not None
+        pid = job.worker.proc.pid
+        second = await st.sweep(sid, folder, CLEAN)
+        return await first, second, pid
+    first, second, pid = client.portal.call(both)
+    assert first["superseded"] is True and first["ok"] is None
+    assert second["ok"] is True and second["params"]["w"]["clean"] == [20.0, 80.0]
+    w = st.sweepers.workers[0]
+    assert w.proc.pid != pid                    # the killed process was replaced
+    assert st.served["sweeps_stopped"] == 1
+
+
+@settings(max_examples=6, deadline=None, derandomize=True)
+@given(width=st.integers(40, 100), radius=st.sampled_from([1.5, 2.0, 3.0, 4.5]))
+def test_law_the_clean_end_is_where_the_wall_gets_thinner_than_min_wall(width, radius):
+    """Over generated plates (width W, a hole of radius r (not swept: no range) at x = off, off
+    in 0 .. W/2 + 10 mm):
+    the wall to the edge is W/2 - off - r, under min_wall (0.5 mm) past off = W/2 - r - 0.5:
+    the slider's clean end is there, within the bisection's 1 % of the range and one step."""
+    from aidl_lang.studio.compiler import sweep_ranges
+    top = width / 2 + 10
+    source = (SLID.replace("width=60", f"width={width}")
+              .replace("max=40 mm", f"max={top:g} mm")
+              .replace("param r = 3 mm, min=1 mm, max=5 mm", f"param r = {radius:g} mm"))
+    got = sweep_ranges("/nonexistent-session", source)
+    off = got["params"]["off"]
+    truth = width / 2 - radius - 0.5
+    lo, hi = off["clean"]
+    assert lo == 0.0
+    assert truth - 0.01 * top - 0.05 - 1e-9 <= hi <= truth + 1e-9, (hi, truth)
+    assert off["above"]["at"] == hi and off["above"]["code"] == "W0507"
+    assert off["above"]["text"].startswith(f"above {hi:g} mm: a wall of `plate`")
+
+
+def test_a_combination_is_said_with_the_other_values_it_had():
+    """Each param alone is clean across its range (off = 25 mm leaves a 2 mm wall, r = 18 mm
+    2 mm to the right and bottom edges of a 60 x 40 mm plate); together they break the wall
+    (30 - off - r < 0.5 mm): the Latin hypercube finds it, and the slider's text names the
+    other value it had."""
+    from aidl_lang.studio.compiler import sweep_ranges
+    source = (SLID.replace("height=20", "height=40").replace("max=40 mm", "max=25 mm")
+              .replace("max=5 mm", "max=18 mm"))
+    got = sweep_ranges("/nonexistent-session", source)
+    said = [(n, q[s]) for n, q in got["params"].items() for s in ("below", "above") if q[s]]
+    assert said, got
+    for name, past in said:
+        other = "r" if name == "off" else "off"
+        assert f"(with `{other}` = " in past["text"], past
+        lo, hi = got["params"][name]["clean"]
+        assert past["at"] == hi and past["text"].startswith(f"above {hi:g} mm: ")
