@@ -701,7 +701,8 @@ An opening is left inside a solid part where no hole cuts: the shapes around it 
 window the program never declares. A small one (less than 1 mm^2, or twice the minimum wall
 squared) is a void where the shapes nearly meet but leave a gap, which a laser cuts out as a
 sliver: the warning gives its area, width, length and place; make the shapes overlap (a
-negative gap, a larger size). A larger one enclosed by the faces of ONE solid structure,
+negative gap, a larger size). A part says its first 5 voids, the fifth ending "(and N more
+like it in `part`)". A larger one enclosed by the faces of ONE solid structure,
 some of them overlapping (a dinosaur's legs and belly that merge around a window), is rarely
 meant: the warning names the faces around it, its size (width x height of its box, area) and
 centre; make the shapes overlap to fill it, or, when it is meant, declare it with a `hole`
@@ -793,6 +794,9 @@ nick; the hint then rounds that inner corner alone, `Fillet(at=[(x, y)], radius=
 which fills the nick and leaves the rest of the outline as it was. Where one side leaves the
 other along its tangent (a cusp: an arm flush with the straight side of a rounded corner) no
 move or fillet closes it, and the hint says to cover the rounded corner whole or square it.
+The moves are rounded up to 0.01 mm (made as written, the gap reaches the minimum). A part
+says its first 5 slits; the fifth ends "(and N more like it in `part`)"
+with the count of the rest (a part of thousands of discs that falls apart).
 
     solid tag {
         bar = Rectangle(center=(0, 0), width=30, height=12)

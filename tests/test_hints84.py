@@ -1,0 +1,161 @@
+"""Issue 84, "every hint safe", for the warnings whose hints had no law over generated cases:
+each law generates small real programs that raise the warning with a known truth, applies the
+hint as written (the edit a model would make from its text) and compiles again through the
+real parser, solver and Manifold: the warning goes, no new warning appears, and the part's
+outline is the one the edit draws (its symmetric difference with shapely's union of the
+shapes as moved, under 1e-3 mm^2) - or the hint names no number because none is safe.
+
+Also the flood of issue 84: a part of thousands of circles that falls apart found one W0519
+per pair of neighbours (860 lines); a per-part check says its first few and "and N more like
+it" (:func:`aidl_lang.output.checks.common._say_few`)."""
+from __future__ import annotations
+
+import re
+
+import pytest
+from hypothesis import given, settings, strategies as st
+from shapely.geometry import Point, Polygon, box
+from shapely.ops import unary_union
+
+import aidl_lang
+from aidl_lang.output.checks.common import SHOWN
+
+
+def _compile(src: str, min_wall=None):
+    """The program compiled through the real pipeline: (its diagnostics' warnings, part name
+    -> its final region as shapely sees it)."""
+    from aidl_lang.pipeline import compile_source
+    c = compile_source(src, "/tmp/h14.aidl", **({} if min_wall is None else {"min_wall": min_wall}))
+    errs = [f"{d.code} {d.message}" for d in c.sink.items if d.severity == "error"]
+    assert not errs, errs
+    return c
+
+
+def _warnings(c, code=None) -> list:
+    return [d for d in c.sink.items if d.severity == "warning" and code in (None, d.code)]
+
+
+def _codes(c) -> set:
+    return {d.code for d in _warnings(c)}
+
+
+def _region(c, name):
+    """Part ``name``'s final region (a CrossSection) as a shapely region, mm: its
+    counter-clockwise loops less its clockwise ones (the openings)."""
+    (shape,) = [p.shape for p in c.drawing.parts if p.name == name]
+    rings = [Polygon(P) for P in shape.to_polygons() if len(P) >= 3]
+    outer = unary_union([g for g in rings if g.exterior.is_ccw])
+    return outer.difference(unary_union([g for g in rings if not g.exterior.is_ccw]))
+
+
+def _same_region(a, b, tol=1e-3) -> bool:
+    return a.symmetric_difference(b).area < tol
+
+
+# ------------------------------------------------------------------ the flood (W0519, W0515)
+GRID = """solid s {{
+    for i in range({n}) {{ for j in range({n}) {{ c = Circle(center=(i * {sp}, j * {sp}), radius=1) }} }}
+}}
+"""
+
+
+@pytest.mark.parametrize("n", [4, 8])
+def test_a_part_that_falls_apart_says_its_first_slits_and_how_many_more(n):
+    """``n`` x ``n`` discs 0.05 mm apart: a slit between each pair of neighbours, 2 n (n - 1)
+    of them (112 for n = 8; before, 112 W0519 lines).  Said: the first few, the last of them
+    with the count of the rest, in this part."""
+    r = _compile(GRID.format(n=n, sp=2.05))
+    ws = _warnings(r, "W0519")
+    total = 2 * n * (n - 1)
+    assert len(ws) == min(SHOWN, total)
+    more = [w for w in ws if "more like it" in w.message]
+    if total > SHOWN:
+        (last,) = more
+        assert last is ws[-1]
+        assert f"(and {total - SHOWN} more like it in `s`)" in last.message
+    else:
+        assert more == []
+    assert "W0504" in _codes(r)           # the part falls apart, said once
+
+
+def test_tiny_voids_are_said_a_few_and_counted():
+    """8 x 8 discs 1.98 mm apart (radius 1): they overlap, and leave a void between each four,
+    49 of them (before: 49 W0515 lines)."""
+    r = _compile(GRID.format(n=8, sp=1.98))
+    ws = _warnings(r, "W0515")
+    assert len(ws) == SHOWN
+    assert f"(and {49 - SHOWN} more like it in `s`)" in ws[-1].message
+
+
+# ------------------------------------------------------------------ W0519, a plain slit
+TAG = """solid tag {{
+    bar = Rectangle(center=(0, 0), width=30, height=12)
+    top = Circle(center=(15, {ty}), radius={r})
+    bottom = Circle(center=(15, {by}), radius={r})
+}}
+"""
+
+
+def _tag(g, r, shift=0.0):
+    """A dog-bone tag's end: two lobes of radius ``r`` beyond the bar, ``g`` mm apart (the
+    bottom one moved ``shift`` mm up): the program and the region it draws (shapely)."""
+    ty, by = round(r + g / 2, 6), round(-(r + g / 2) + shift, 6)
+    truth = unary_union([box(-15, -6, 15, 6), Point(15, ty).buffer(r, 256),
+                         Point(15, by).buffer(r, 256)])
+    return TAG.format(ty=ty, by=by, r=r), truth
+
+
+def _moves(hint: str) -> tuple:
+    """The two moves W0519's plain hint names: (more than W mm towards, D mm away)."""
+    m = re.search(r"move one more than ([0-9.]+) mm towards the other\) or open the gap to "
+                  r"at least [0-9.]+ mm \(move one ([0-9.]+) mm away\)", hint)
+    assert m, hint
+    return float(m.group(1)), float(m.group(2))
+
+
+@settings(max_examples=15, deadline=None, derandomize=True, database=None)
+@given(g=st.floats(0.02, 0.4), r=st.integers(5, 6))
+def test_law_a_plain_slits_moves_remove_it_and_move_only_that_lobe(g, r):
+    """A tag's two end lobes ``g`` mm apart beyond the bar (narrower than 0.5 mm): W0519
+    names the slit with two moves, each rounded up to 0.01 mm.  The move away, made as
+    written (the bottom lobe moved ``D`` mm down), leaves no warning at all and the outline
+    the moved lobe draws (shapely's union of the bar and the two discs so placed, within the
+    chords' 0.6 mm^2; a lobe 0.1 mm off is 2 mm^2).  Before, the gap 0.375 mm read "move one 0.12 mm away" (0.125 rounded to even):
+    done, 0.495 mm was warned again."""
+    g = round(g, 4)
+    src, truth = _tag(g, r)
+    c = _compile(src)
+    ws = _warnings(c, "W0519")
+    if not ws:
+        return                    # the chords' gap reached 0.5 mm: nothing to fix
+    (w,) = ws
+    assert _codes(c) == {"W0519"}
+    assert _same_region(_region(c, "tag"), truth, 0.6)
+    towards, away = _moves(w.hint)
+    width = float(re.search(r"is ([0-9.]+) mm wide", w.message).group(1))
+    assert g - 0.006 <= width                     # the chords' gap is a little wider
+    assert width - 0.005 <= towards <= width + 0.011 and 0.5 - width - 0.011 <= away <= 0.5 - g + 0.01
+    for shift in (-away,):
+        moved, truth = _tag(g, r, shift)
+        after = _compile(moved)
+        assert _codes(after) == set(), (g, shift, [x.message for x in _warnings(after)])
+        assert _same_region(_region(after, "tag"), truth, 0.6)
+
+
+def test_the_gap_of_0375_mm_is_opened_by_013_mm():
+    """The case the law found: 0.5 - 0.375 = 0.125 printed "0.12" (to even), too little."""
+    (w,) = _warnings(_compile(_tag(0.375, 6)[0]), "W0519")
+    assert _moves(w.hint) == (0.38, 0.13)
+
+
+@pytest.mark.xfail(strict=True, reason="issue 84, left: two discs made to overlap barely leave a "
+                   "V-notch at their junction, narrower than min_wall (W0519 again)")
+def test_the_overlap_move_on_two_discs_leaves_no_slit():
+    """The hint's other move, "move one more than W mm towards the other", made with 0.01 mm
+    to spare on two round lobes: they overlap by 0.01 mm and meet in a V-notch 0.00 mm wide
+    at its floor, a nick warned again (found by the law above; the hint's overlap is safe
+    for straight sides only)."""
+    src, _ = _tag(0.25, 5)
+    (w,) = _warnings(_compile(src), "W0519")
+    towards, _ = _moves(w.hint)
+    assert "W0519" not in _codes(_compile(_tag(0.25, 5, towards + 0.01)[0]))
