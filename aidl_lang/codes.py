@@ -787,7 +787,8 @@ two end lobes nearly touch beyond the bar). Found between the non-adjacent edges
 of the outline that face each other (opposite within 30 degrees) across empty space, over at
 least the minimum's length; the openings that holes cut are not searched (a narrow hole is
 declared so). The warning gives the least width, the length, the place and the shapes on its
-two sides. Make them overlap, or open the gap to at least the minimum. Where the two sides
+two sides. Make them overlap by at least the minimum (a bare overlap of two round sides
+leaves a V-notch at their junction, as narrow), or open the gap to at least the minimum. Where the two sides
 meet at the slit's floor in a corner sharper than 60 degrees (a nick: an arm joined low on a
 rounded corner), moving one away would part them (W0504) and moving it in only moves the
 nick; the hint then rounds that inner corner alone, `Fillet(at=[(x, y)], radius=min_wall)`,
