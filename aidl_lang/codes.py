@@ -814,9 +814,12 @@ triangle's straight sides. Found in the final outline as two corners of opposite
 direction, offset sideways by 0.01 mm to the minimum; or as a shallow crossing (2 to 30
 degrees) after a straight side where the other shape strays out past that side's line by
 0.01 mm to the minimum and comes back across it. Only corners where two different shapes
-meet count (a step drawn in one polygon is meant). The warning names both shapes and the
-ledge's size and place. Align the edges (a constraint, or the number that is off), or make
-the offset clear if a ledge is meant.
+meet count (a step drawn in one polygon is meant); a shape set back from another's side
+counts as that other poking past it. The warning names both shapes and the ledge's size and
+place, and the hint the move that aligns the poking shape, as a vector (`move `note.stem`
+by (-0.200, 0.000) mm`: resized about its centre instead, a shape's edge moves half as
+far). Align the edges (a constraint, or the number that is off), or make the offset clear
+if a ledge is meant.
 
     solid note {
         head = Ellipse(center=(0, 0), rx=8, ry=6)

@@ -160,3 +160,56 @@ def test_two_discs_overlapped_as_told_leave_no_nick():
     towards, _ = _moves(w.hint)
     assert "W0519" in _codes(_compile(_tag(0.25, 5, 0.26)[0]))     # the old hint, made
     assert _codes(_compile(_tag(0.25, 5, towards)[0])) == set()
+
+
+# ------------------------------------------------------------------ W0520, a ledge
+STACK = """solid p {{
+    base = Rectangle(center=({bx}, {by}), width={bw}, height={bh})
+    top = Rectangle(center=({tx}, {ty}), width={tw}, height={th})
+}}
+"""
+
+
+def _stack(s, side, out, w, turned, moves=None):
+    """A block stood on a base 20 x 10 mm, one of its sides ``s`` mm past the base's (``out``)
+    or short of it, on the ``side`` (+1 right, -1 left); ``turned``: the whole laid on its
+    side (x and y swapped).  ``moves``: shape -> (dx, dy) mm made.  The program and its
+    region (shapely)."""
+    edge = side * (10 + (s if out else -s))                 # the block's side, x
+    tx, ty = round(edge - side * w / 2, 6), 7.5
+    shapes = {"base": [0.0, 0.0, 20.0, 10.0], "top": [tx, ty, float(w), 5.0]}
+    if turned:
+        shapes = {k: [y, x, h, w_] for k, (x, y, w_, h) in shapes.items()}
+    for k, (dx, dy) in (moves or {}).items():
+        shapes[k][0] = round(shapes[k][0] + dx, 6)
+        shapes[k][1] = round(shapes[k][1] + dy, 6)
+    truth = unary_union([box(x - a / 2, y - b / 2, x + a / 2, y + b / 2)
+                         for x, y, a, b in shapes.values()])
+    (bx, by, bw, bh), (tx, ty, tw, th) = shapes["base"], shapes["top"]
+    return STACK.format(bx=bx, by=by, bw=bw, bh=bh, tx=tx, ty=ty, tw=tw, th=th), truth
+
+
+@settings(max_examples=20, deadline=None, derandomize=True, database=None)
+@given(s=st.floats(0.03, 0.45), side=st.sampled_from([1, -1]), out=st.booleans(),
+       w=st.integers(4, 12), turned=st.booleans())
+def test_law_a_ledges_move_aligns_the_edges_and_changes_nothing_else(s, side, out, w, turned):
+    """A block on a base with its side ``s`` mm off the base's (past it or short of it, right
+    or left, upright or laid on its side): W0520 names the shape that pokes and the move that
+    aligns it.  Made as written, no warning is left and the outline is the union of the two
+    rectangles so moved (within 0.01 mm^2: the move is given to 0.001 mm).  Before, the hint
+    said "move or resize `p.top` by 0.20 mm": no direction (two ways to move, one doubles the
+    ledge), and a resize about the centre moves the edge half as far."""
+    s = round(s, 3)
+    src, truth = _stack(s, side, out, w, turned)
+    c = _compile(src)
+    assert _same_region(_region(c, "p"), truth)
+    (x,) = _warnings(c, "W0520")
+    assert _codes(c) == {"W0520"}
+    m = re.search(r"move `p\.(\w+)` by \((-?[0-9.]+), (-?[0-9.]+)\) mm", x.hint)
+    assert m, x.hint
+    shape, dx, dy = m.group(1), float(m.group(2)), float(m.group(3))
+    assert abs(abs(dx) + abs(dy) - s) < 0.002                 # the ledge's depth, one way
+    moved, truth = _stack(s, side, out, w, turned, {shape: (dx, dy)})
+    after = _compile(moved)
+    assert _codes(after) == set(), (x.hint, [y.message for y in _warnings(after)])
+    assert _same_region(_region(after, "p"), truth, 0.01)

@@ -359,12 +359,23 @@ def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
             side = float(u[0] * off[1] - u[1] * off[0])
             if not 2 * 0.005 < abs(side) < t - 2 * 0.005:
                 continue
-            found.append((P[i], P[j], abs(side), float(gap[k]), u, turn[i]))
+            # the poking shape's move that aligns it (the poking one: at j when the first
+            # corner turns in, else at i), across the longer of the two stretches (the
+            # other may be a curve's chord)
+            w = ep[i] / L[i - 1] if L[i - 1] >= L[j] else e[j] / L[j]
+            across = float(w[0] * off[1] - w[1] * off[0])
+            move = (-across if turn[i] < 0 else across) * np.array([-w[1], w[0]])
+            # each corner's shape looked for a hair along its own stretch (back from i,
+            # on from j): a block set back 0.2 mm from a base's side has its corner ON the
+            # base's edge, where the base was found twice and the ledge was not said
+            qi = P[i] - ep[i] * min(1e-3, L[i - 1] / 2) / L[i - 1]
+            qj = P[j] + e[j] * min(1e-3, L[j] / 2) / L[j]
+            found.append((qi, qj, abs(side), float(gap[k]), u, turn[i], move))
         _bumps(P, e, ep, turn, pos, t, found)
     # the faces at every step's two corners by one search of the faces' edges
     faces = _faces_at(d, s, np.array([f[0] for f in found] + [f[1] for f in found],
                                      dtype=float).reshape(-1, 2), tick) if found else []
-    for k, (pi, pj, side, gap, u, ti) in enumerate(found):
+    for k, (pi, pj, side, gap, u, ti, mv) in enumerate(found):
         tick()
         fi, fj = faces[k], faces[len(found) + k]
         if fi is None or fj is None or fi is fj:
@@ -379,9 +390,10 @@ def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
                      f"`{s.path}`, a ledge of {side:.2f} mm in the outline near "
                      f"({at[0]:.1f}, {at[1]:.1f}): the two edges almost align but not quite",
                      poke.span or s.span, labels=labels,
-                     hint=f"align the edges (move or resize `{poke.label}` by {side:.2f} mm, or "
-                          "tie them with a constraint) or make the offset clear (at least "
-                          f"{t:g} mm) if a ledge is meant")
+                     hint=f"align the edges: move `{poke.label}` by ({mv[0] + 0:.3f}, "
+                          f"{mv[1] + 0:.3f}) mm (or resize it so that this edge moves as "
+                          "much; or tie the two edges with a constraint), or make the offset "
+                          f"clear (at least {t:g} mm) if a ledge is meant")
 
 
 def _cornerless(loops) -> np.ndarray:
@@ -424,7 +436,8 @@ def _bumps(P, e, ep, turn, pos, t: float, found: list) -> None:
     0.01 mm and less than ``t`` before it comes back across the line or turns away from it
     by 90 degrees (within ``BUMP_LENGTH t`` mm): a heart's lobe that pokes past the
     triangle's side by a hair.  Appended to ``found`` as ``(the turn, the farthest vertex,
-    height, length followed, direction, -1)``."""
+    height, length followed, direction, -1, the move that brings the bulge back onto the
+    line)``."""
     n = len(P)
     cand = np.flatnonzero((turn < -BUMP) & (turn > -CORNER))
     if not len(cand):
@@ -465,7 +478,7 @@ def _bumps(P, e, ep, turn, pos, t: float, found: list) -> None:
                 continue
             far = P[idx[int(np.argmax(out[:k]))]]
             found.append((P[a], far, h, float(along[:k].max() if len(along) else 0.0), u,
-                          -1.0))
+                          -1.0, step * h * np.array([-u[1], u[0]])))
 
 
 def check_stray_holes(sink: DiagnosticSink, drawing: Drawing, deadline=None) -> None:
