@@ -213,3 +213,48 @@ def test_law_a_ledges_move_aligns_the_edges_and_changes_nothing_else(s, side, ou
     after = _compile(moved)
     assert _codes(after) == set(), (x.hint, [y.message for y in _warnings(after)])
     assert _same_region(_region(after, "p"), truth, 0.01)
+
+
+# ------------------------------------------------------------------ W0516, a mark meets the cut
+MARK = """solid p {{
+    body = Rectangle(center=(0, 0), width=20, height=10)
+    hole h {{ c = Circle(center=(-6, 0), radius=2) }}
+    drawing d {{
+        mark = Line(({x0}, {y0}), ({x1}, {y1}))
+    }}
+}}
+"""
+
+
+@settings(max_examples=20, deadline=None, derandomize=True, database=None)
+@given(gap=st.floats(0.0, 0.45), to_hole=st.booleans(), turn=st.floats(-60, 60),
+       y0=st.floats(-3, 3), y1=st.floats(-3.5, 3.5))
+def test_law_a_marks_new_end_clears_the_edge_and_keeps_the_line(gap, to_hole, turn, y0, y1):
+    """A straight mark from inside a plate 20 x 10 mm to ``gap`` mm from its right side, or
+    from the hole's edge (radius 2 mm at (-6, 0), at ``turn`` degrees): W0516 gives the point
+    to end it at.  Written there, no warning is left, the mark keeps its start and its line
+    (the new end within 0.01 mm of the old segment, nearer its start), and it ends at least
+    0.5 mm from the edge (shapely: the plate's boundary and the hole's 32-gon or circle)."""
+    import math
+    from shapely.geometry import LineString
+    if to_hole:
+        a = math.radians(turn)
+        start = (2.0, round(y0, 3))
+        end = (round(-6 + (2 + gap) * math.cos(a), 3), round((2 + gap) * math.sin(a), 3))
+    else:
+        start, end = (2.0, round(y0, 3)), (round(10 - gap, 3), round(y1, 3))
+    c = _compile(MARK.format(x0=start[0], y0=start[1], x1=end[0], y1=end[1]))
+    ws = _warnings(c, "W0516")
+    if not ws:
+        return                 # the hole's chords are farther than the true circle: clear
+    (w,) = ws
+    assert _codes(c) == {"W0516"}
+    m = re.search(r"at \((-?[0-9.]+), (-?[0-9.]+)\) \(shorten it by", w.hint)
+    assert m, w.hint
+    new = (float(m.group(1)), float(m.group(2)))
+    after = _compile(MARK.format(x0=start[0], y0=start[1], x1=new[0], y1=new[1]))
+    assert _codes(after) == set(), (w.hint, [x.message for x in _warnings(after)])
+    assert LineString([start, end]).distance(Point(new)) < 0.01
+    assert math.dist(start, new) < math.dist(start, end)
+    edge = box(-10, -10 / 2, 10, 10 / 2).exterior.union(Point(-6, 0).buffer(2, 256).exterior)
+    assert edge.distance(Point(new)) >= 0.5 - 0.01
