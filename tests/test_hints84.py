@@ -258,3 +258,60 @@ def test_law_a_marks_new_end_clears_the_edge_and_keeps_the_line(gap, to_hole, tu
     assert math.dist(start, new) < math.dist(start, end)
     edge = box(-10, -10 / 2, 10, 10 / 2).exterior.union(Point(-6, 0).buffer(2, 256).exterior)
     assert edge.distance(Point(new)) >= 0.5 - 0.01
+
+
+# ------------------------------------------------------------------ W0513, text over text
+TEXTS = """solid p {{
+    body = Rectangle(center=(0, 0), width=160, height=80)
+    drawing d {{
+        a = Text("{ta}", (-10, 0), size={sa})
+        b = Text("{tb}", ({bx}, {by}), size={sb})
+    }}
+}}
+"""
+
+
+def _engraved(c) -> tuple:
+    """The engraved strokes: how many, and their total length (mm)."""
+    import numpy as np
+    return len(c.drawing.lines), round(sum(float(np.hypot(*np.diff(pl, axis=0).T).sum())
+                                           for _, pl in c.drawing.lines), 6)
+
+
+@settings(max_examples=20, deadline=None, derandomize=True, database=None)
+@given(ta=st.sampled_from(["AB", "12", "OK", "Hi", "LID"]),
+       tb=st.sampled_from(["CD", "34", "NO", "XYZ", "7"]),
+       sa=st.integers(3, 8), sb=st.integers(3, 8),
+       fx=st.floats(-0.8, 0.8), fy=st.floats(-0.6, 0.6))
+def test_law_text_drawn_over_text_moves_clear_and_apart(ta, tb, sa, sb, fx, fy):
+    """Text ``b`` placed over text ``a`` (offset by a share of ``a``'s size): W0513 gives the
+    move of ``b`` that clears it.  Made as written, no warning is left (neither "drawn over"
+    nor "runs into": before, the hint's "at least 4.45 mm away", made, left the two boxes
+    touching, warned again as one string), the plate's outline is the same and the
+    engraving the same strokes (count and length)."""
+    bx, by = round(-10 + fx * sa * len(ta) * 0.8, 3), round(fy * sa, 3)
+    src = TEXTS.format(ta=ta, tb=tb, sa=sa, sb=sb, bx=bx, by=by)
+    c = _compile(src)
+    ws = [w for w in _warnings(c, "W0513") if "is drawn over" in w.message]
+    if not ws:
+        return
+    (w,) = ws
+    m = re.search(r"by \((-?[0-9.]+), (-?[0-9.]+)\) mm", w.hint)
+    assert m, w.hint
+    dx, dy = float(m.group(1)), float(m.group(2))
+    moved = TEXTS.format(ta=ta, tb=tb, sa=sa, sb=sb, bx=round(bx + dx, 3), by=round(by + dy, 3))
+    after = _compile(moved)
+    assert _codes(after) == set(), (w.hint, [x.message for x in _warnings(after)])
+    assert _same_region(_region(after, "p"), _region(c, "p"))
+    assert _engraved(after) == pytest.approx(_engraved(c))
+
+
+def test_the_overlap_move_of_before_left_the_labels_touching():
+    """The case the law stands on: "CD" 4 mm right of "AB" (size 5) is drawn over it by
+    4.46 mm; moved that far only, the boxes touch (W0513, one string); the hint moves it
+    6.96 mm, the overlap and half the size."""
+    src = TEXTS.format(ta="AB", tb="CD", sa=5, sb=5, bx=-6, by=0)
+    (w,) = _warnings(_compile(src), "W0513")
+    assert "move `p.d.b` 6.96 mm right, by (6.96, 0.00) mm" in w.hint
+    touching = _compile(src.replace("(-6, 0)", "(-1.54, 0)"))
+    assert [x for x in _warnings(touching, "W0513") if "runs into" in x.message]
