@@ -471,7 +471,10 @@ A drawing inside a solid part runs outside the part's outline or across one of i
 there is no material to engrave. Move or shrink the drawing so that it lies on the material, or
 put a drawing that is only an illustration at assembly level, beside the part.
 The share off the material is said as a percentage of the drawing's length ("under 1%": a
-letter's stroke over a screw hole); across a hole, the hint names the holes it crosses.
+letter's stroke over a screw hole); across a hole, the hint names the holes it crosses. Off
+the outline, the hint writes the constraint that sets it on the part's largest own shape clear
+of the cut, `Inside(d.mark, body, margin=0.5 mm)` (a mark that touches the cut is W0516), or,
+when the mark is larger than that shape less the margin, says to shrink it.
 """),
     "W0506": ("geometry that adds nothing", """
 A child solid lies wholly inside the rest of its parent, so it changes nothing in the final

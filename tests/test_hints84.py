@@ -315,3 +315,48 @@ def test_the_overlap_move_of_before_left_the_labels_touching():
     assert "move `p.d.b` 6.96 mm right, by (6.96, 0.00) mm" in w.hint
     touching = _compile(src.replace("(-6, 0)", "(-1.54, 0)"))
     assert [x for x in _warnings(touching, "W0513") if "runs into" in x.message]
+
+
+# ------------------------------------------------------------------ W0505, off the material
+OFF = """solid p {{
+    body = Rectangle(center=(0, 0), width={W}, height={H})
+    drawing d {{
+        mark = {mark}
+    }}
+{fix}}}
+"""
+
+
+@settings(max_examples=16, deadline=None, derandomize=True, database=None)
+@given(W=st.integers(20, 40), H=st.integers(10, 20), kind=st.sampled_from("CLTA"),
+       fx=st.floats(0.3, 0.8), fy=st.floats(-0.5, 0.5))
+def test_law_a_mark_off_the_material_constrained_as_told_lies_on_it(W, H, kind, fx, fy):
+    """A mark (circle, line, text, arc) placed across the plate's right side (``fx`` of the
+    half-width out): W0505's hint names the constraint, `Inside(d.mark, body, margin=0.5
+    mm)`.  Written in `p`, no warning is left (neither W0505 nor W0516: before, the hint's
+    `Inside(label, body)`, made, set the mark on the cut edge), the plate's outline is the
+    same and the mark is the same strokes (count and length), moved."""
+    x, y = round(W / 2 * (0.6 + fx), 3), round(H / 2 * fy, 3)
+    mark = {"C": f"Circle(center=({x}, {y}), radius=3)",
+            "L": f"Line(({x - 6}, {y}), ({x + 2}, {y + 1}))",
+            "T": f'Text("OK", ({x - 3}, {y}), size=4)',
+            "A": f"Arc(center=({x}, {y}), radius=4, start_angle=30 deg, end_angle=150 deg)"}[kind]
+    c = _compile(OFF.format(W=W, H=H, mark=mark, fix=""))
+    ws = _warnings(c, "W0505")
+    if not ws:
+        return
+    (w,) = ws
+    m = re.search(r"`(Inside\([^`]*\))` in `p`", w.hint)
+    assert m, w.hint
+    after = _compile(OFF.format(W=W, H=H, mark=mark, fix=f"    {m.group(1)}\n"))
+    assert _codes(after) == set(), (w.hint, [x.message for x in _warnings(after)])
+    assert _same_region(_region(after, "p"), _region(c, "p"))
+    assert _engraved(after) == pytest.approx(_engraved(c), abs=1e-6)
+
+
+def test_a_mark_larger_than_the_body_is_told_to_shrink():
+    """No constraint can hold a 30 mm circle on a 20 x 10 mm plate: the hint says to shrink
+    it (an `Inside` there is E0401)."""
+    c = _compile(OFF.format(W=20, H=10, mark="Circle(center=(0, 0), radius=15)", fix=""))
+    (w,) = _warnings(c, "W0505")
+    assert "Inside" not in w.hint and w.hint.startswith("shrink the drawing to fit on `body`")

@@ -244,8 +244,7 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         # a letter's stroke over a screw hole is under 1% of a long text's samples: "0%" read
         # as "nothing is off" (issue 84's door sign), so a small share is said as such
         share = _pct(off, float(len(pts))) if off >= 0.005 * len(pts) else "under 1%"
-        hint = ("move or shrink the drawing so that it lies on the material (constrain it, "
-                "e.g. `Inside(label, body)`), or clear the hole it crosses")
+        hint = _inside_hint(d, part, g, pts)
         if where == "across a hole":
             holes = _holes_crossed(d, roots, part, pts[~inside])
             hint = (f"it crosses {', '.join(holes) if holes else 'an opening'}: shrink or move "
@@ -257,6 +256,32 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
             tick(part)
         _check_meets_cut(part, roots[part], [(g, it) for g, it in geoms if g not in warned],
                          (loops or {}).get(part), sink)
+
+
+def _inside_hint(d: Drawing, part, g, pts: np.ndarray) -> str:
+    """W0505's hint for engraving ``g`` of ``part`` off its outline (``pts``: its samples,
+    n x 2 mm): the constraint that moves it onto the part's largest own shape, clear of the
+    cut by :data:`CUT_CLEAR` (`Inside(d.mark, body, margin=0.5 mm)`, with the names as
+    written in the part) when the mark fits in that shape's box with that margin.  The hint
+    of before, "e.g. `Inside(label, body)`", made as `Inside(d.mark, body)`, set the mark on
+    the cut edge (W0516 again, issue 84); made with `self`, it conflicted (E0401: the part's
+    box holds the mark)."""
+    from .common import _solids_within
+    plain = ("move or shrink the drawing so that it lies on the material, or clear the hole "
+             "it crosses")
+    own = [(f.area(), geo, f.bounds()) for st, fs in _solids_within(d, part) if st is part
+           for geo, f in fs if f is not None and not f.is_empty() and geo.name]
+    label, prefix = getattr(g, "label", ""), part.path + "."
+    if not own or not label.startswith(prefix):
+        return plain
+    _, body, (x0, y0, x1, y1) = max(own, key=lambda o: o[0])
+    w, h = np.ptp(pts[:, 0]), np.ptp(pts[:, 1])
+    if w + 2 * CUT_CLEAR > x1 - x0 or h + 2 * CUT_CLEAR > y1 - y0:
+        return f"shrink the drawing to fit on `{body.name}`, or move it onto the material"
+    return (f"constrain it onto the material: `Inside({label[len(prefix):]}, {body.name}, "
+            f"margin={CUT_CLEAR} mm)` in `{part.path}` (its box inside `{body.name}`'s, "
+            f"{CUT_CLEAR} mm clear of the cut), or move or shrink it, or clear the hole it "
+            "crosses")
 
 
 ON_CUT = 1 / 3           # of an engraving's samples: more on the outline is engraved over the cut
