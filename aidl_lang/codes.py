@@ -482,7 +482,10 @@ shape: typically copies of a pattern that land inside a filled solid, or a featu
 wrong position. Move it where it shows, make it a `hole` if it should cut, or delete it. When a
 hole of the same structure cuts it away (a hole cuts every solid of the structure it is declared
 in, children included), the warning names that hole and the share it cuts: to keep the solid
-over the hole, declare it beside that structure (a sibling's material survives the hole).
+over the hole, declare it beside that structure (a sibling's material survives the hole);
+when that structure is the part itself, its shapes and hole go in a `solid` of their own
+inside it, beside the solid kept. A solid that would be an island in the opening (touching
+no material around it) or would fill the whole opening is only offered deletion.
 When one filled shape of the parent covers it whole (`frame = Circle(...)` meant as a ring,
 over a spider and its threads), the warning names that shape and counts the other shapes it
 hides, and the hint offers the likely intent: a ring (`Shell(frame, 3)`) or

@@ -360,3 +360,55 @@ def test_a_mark_larger_than_the_body_is_told_to_shrink():
     c = _compile(OFF.format(W=20, H=10, mark="Circle(center=(0, 0), radius=15)", fix=""))
     (w,) = _warnings(c, "W0505")
     assert "Inside" not in w.hint and w.hint.startswith("shrink the drawing to fit on `body`")
+
+
+# ------------------------------------------------------------------ W0506, cut away by a hole
+CUT = """solid p {{
+    body = Rectangle(center=(0, 0), width=30, height=20)
+    solid boss {{ c = Circle(center=({cx}, {cy}), radius={r}) }}
+    hole h {{ r = Rectangle(center=({cx}, {cy}), width={hw}, height={hh}) }}
+}}
+"""
+KEPT = """solid p {{
+    solid plate {{
+        body = Rectangle(center=(0, 0), width=30, height=20)
+        hole h {{ r = Rectangle(center=({cx}, {cy}), width={hw}, height={hh}) }}
+    }}
+    solid boss {{ c = Circle(center=({cx}, {cy}), radius={r}) }}
+}}
+"""
+
+
+@settings(max_examples=16, deadline=None, derandomize=True, database=None)
+@given(cx=st.integers(-6, 6), cy=st.integers(-3, 3), r=st.floats(2, 6), hw=st.integers(6, 12),
+       hh=st.integers(6, 10))
+def test_law_a_solid_cut_away_by_its_parts_hole_is_kept_or_deleted_as_told(cx, cy, r, hw, hh):
+    """A boss (a disc) in a plate whose own hole cuts it away: W0506.  When the disc reaches
+    the plate around the hole, the hint puts the plate's shapes and hole in a solid of their
+    own beside it (before: "declare it beside `p`", the part itself: made, the boss became
+    a separate part); done, no warning is left and the outline is the plate less the hole
+    plus the disc (shapely).  When it lies within the opening, keeping it would be an island
+    (W0504): the hint says to delete it, and deleted, nothing changes; when it covers the
+    whole opening, keeping it would leave a hole that cuts nothing (W0501) and deleting the
+    hole leaves it covered (W0506): the hint says to delete it, and deleted, nothing
+    changes."""
+    args = dict(cx=cx, cy=cy, r=round(r, 3), hw=hw, hh=hh)
+    c = _compile(CUT.format(**args))
+    ws = _warnings(c, "W0506")
+    if not ws:
+        return
+    (w,) = ws
+    assert "beside `p`" not in w.hint
+    plate = box(-15, -10, 15, 10).difference(box(cx - hw / 2, cy - hh / 2, cx + hw / 2, cy + hh / 2))
+    assert _same_region(_region(c, "p"), plate)
+    if "island" in w.hint or "covers the whole opening" in w.hint:
+        after = _compile(CUT.format(**args).replace(
+            f"    solid boss {{ c = Circle(center=({cx}, {cy}), radius={args['r']}) }}\n", ""))
+        truth = plate
+    else:
+        assert "put the rest of `p` (its shapes and hole `h`) in a `solid`" in w.hint
+        after = _compile(KEPT.format(**args))
+        truth = plate.union(Point(cx, cy).buffer(args["r"], 256))
+    assert _codes(after) == set(), (w.hint, [x.message for x in _warnings(after)])
+    assert [p.name for p in after.drawing.parts] == ["p"]
+    assert _same_region(_region(after, "p"), truth, 0.2)

@@ -256,11 +256,7 @@ def _check_invisible(d: Drawing, s: Structure, sink: DiagnosticSink, quick: bool
                             "it `construction=true`")
                 sink.warning("W0506", f"{name} adds nothing to `{s.path}`: hole "
                              f"`{cut[0].path}` of the same structure cuts away {how}{also}",
-                             span,
-                             hint=f"a hole cuts every solid of the structure it is declared in, "
-                                  f"children included; to keep this solid over the hole, "
-                                  f"declare it beside `{s.name}` (a sibling structure's "
-                                  f"material survives the hole), else delete it{ring}")
+                             span, hint=_kept_over(d, s, shp, others, cut, name) + ring)
                 continue
             cover = _covering_shape(items, i, a)
             if cover is not None:           # one filled shape of s hides it (issue 61)
@@ -281,6 +277,39 @@ def _check_invisible(d: Drawing, s: Structure, sink: DiagnosticSink, quick: bool
                          "the rest of it", span,
                          hint="move it where it shows (it is probably mispositioned), make it a "
                               "`hole` if it should cut, or delete it")
+
+
+def _kept_over(d: Drawing, s: Structure, shp, others, cut: list, name: str) -> str:
+    """W0506's hint for solid ``name`` (its region ``shp``) of ``s`` that the holes ``cut``
+    of ``s`` cut away (``others``: the rest of ``s``'s material, before the holes).  Kept over
+    the hole, a solid must be a sibling of the structure the hole cuts: inside ``s`` when
+    ``s`` is a part (declared beside the part, as the hint of before said, it became a part
+    of its own, issue 84); it must overlap the material left around the hole (by more than
+    :data:`.common.MIN_AREA`; touching is not joined), or it is an island (W0504), and leave
+    some of the opening open, or the hole cuts nothing (W0501; and without the hole, the
+    rest covers it, W0506 again): then deleting it (or making it reach that material) is
+    offered."""
+    opening = _union([d.shapes[h] for h in cut])
+    left = others - opening
+    holes = ", ".join(f"`{h.name}`" for h in cut)
+    why = "a hole cuts every solid of the structure it is declared in, children included"
+    if _area(opening - shp) <= MIN_AREA:     # kept, it would fill the hole (W0501)
+        return (f"{why}; this solid covers the whole opening of {holes} (kept over it, the "
+                "hole would cut nothing; with the hole gone, the rest covers it): delete it")
+    if _area(shp ^ left) <= MIN_AREA:        # a disc that touches the opening's sides only
+        part = (f"; if it is a separate part (a pin through the hole), declare it beside "
+                f"`{s.name}` in `{s.parent.path}` (a sibling structure's material survives the "
+                "hole)") if s.parent is not None and s.parent.kind == "assembly" else ""
+        return (f"{why}; this solid lies within the opening and touches no material around "
+                f"it (kept, it would be an island): delete it, or make it reach the material "
+                f"around the hole{part}")
+    if s.parent is None or s.parent.kind != "solid":       # `s` is a part
+        child = name.split("`")[1].rsplit(".", 1)[-1] if "`" in name else name
+        return (f"{why}; to keep this solid over the hole, put the rest of `{s.name}` (its "
+                f"shapes and hole {holes}) in a `solid` of their own inside `{s.name}`, beside "
+                f"`{child}` (a sibling structure's material survives the hole), else delete it")
+    return (f"{why}; to keep this solid over the hole, declare it beside `{s.name}` (a "
+            "sibling structure's material survives the hole), else delete it")
 
 
 def _covering_shape(items, i: int, a: float):
