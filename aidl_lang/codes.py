@@ -460,7 +460,9 @@ The final shape of a solid part is several disconnected pieces; the warning list
 or geometry make up each piece. Usually a child floats free of the body (feet, a handle) because
 a constraint places it with a gap, or it touches the body at a single point (a round end
 resting on a flat edge). Make the pieces overlap (`Above(foot, body, gap=-1 mm)`) or share an
-edge; if they really are separate parts, make the structure an
+edge: for two pieces of one shape each, drawn apart along x or y, the hint writes the relation
+that holds as drawn, the smaller piece first (it moves), `Below(foot, body, gap=-1 mm)` in
+`p`; if they really are separate parts, make the structure an
 `assembly` (its parts are separate by design and are not checked against each other).
 When a hole cuts one shape apart (a slot across a strip, a ring of overlapping arc slots
 around a hub), the warning names the hole(s) and the shape, and the hint says to move,

@@ -412,3 +412,51 @@ def test_law_a_solid_cut_away_by_its_parts_hole_is_kept_or_deleted_as_told(cx, c
     assert _codes(after) == set(), (w.hint, [x.message for x in _warnings(after)])
     assert [p.name for p in after.drawing.parts] == ["p"]
     assert _same_region(_region(after, "p"), truth, 0.2)
+
+
+# ------------------------------------------------------------------ W0504, two pieces
+APART = """solid p {{
+    body = Rectangle(center=(0, 0), width=30, height=16)
+    foot = {foot}
+{fix}}}
+"""
+
+
+@settings(max_examples=16, deadline=None, derandomize=True, database=None)
+@given(side=st.sampled_from(["below", "above", "left", "right"]), gap=st.floats(0.2, 3),
+       round_=st.booleans(), size=st.integers(2, 8), along=st.floats(-0.5, 0.5))
+def test_law_two_pieces_joined_by_the_hints_constraint(side, gap, round_, size, along):
+    """A foot (a rectangle or a disc, ``size`` mm) drawn ``gap`` mm off one side of a body:
+    W0504 writes the relation that holds as drawn, foot first (`Below(foot, body, gap=-1
+    mm)`).  Added to `p`, no warning is left, the body stays where written and the foot
+    moves straight towards it until they overlap by the figure given: the outline is the
+    union of the body and the foot so moved (shapely).  Before, the hint's example
+    `Above(a, b, gap=-1 mm)`, made with the pieces in the order named, put a foot drawn
+    under the body on top of it."""
+    gap, along = round(gap, 3), round(along * 10, 3)
+    half = size / 2
+    at = {"below": (along, -8 - gap - half), "above": (along, 8 + gap + half),
+          "left": (-15 - gap - half, along / 2), "right": (15 + gap + half, along / 2)}[side]
+    toward = {"below": (0, 1), "above": (0, -1), "left": (1, 0), "right": (-1, 0)}[side]
+
+    def foot(x, y):
+        x, y = round(x, 6), round(y, 6)
+        return (f"Circle(center=({x}, {y}), radius={half})" if round_ else
+                f"Rectangle(center=({x}, {y}), width={size}, height={size})"), \
+            (Point(x, y).buffer(half, 256) if round_ else box(x - half, y - half, x + half, y + half))
+
+    src, _ = foot(*at)
+    c = _compile(APART.format(foot=src, fix=""))
+    (w,) = _warnings(c, "W0504")
+    m = re.search(r"`((Below|Above|LeftOf|RightOf)\(foot, body, gap=-([0-9.]+) mm\))` in `p`",
+                  w.hint)
+    assert m, w.hint
+    assert m.group(2) == {"below": "Below", "above": "Above", "left": "LeftOf",
+                          "right": "RightOf"}[side]
+    over = float(m.group(3))
+    after = _compile(APART.format(foot=src, fix=f"    {m.group(1)}\n"))
+    assert _codes(after) == set(), (w.hint, [x.message for x in _warnings(after)])
+    shift = gap + over
+    _, moved = foot(at[0] + toward[0] * shift, at[1] + toward[1] * shift)
+    truth = unary_union([box(-15, -8, 15, 8), moved])
+    assert _same_region(_region(after, "p"), truth, 0.2)

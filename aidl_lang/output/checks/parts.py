@@ -13,6 +13,8 @@
   the minimum wall (:func:`_check_steps`)."""
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ...diagnostics import Diagnostic, DiagnosticSink, Fix, Label, Span, in_stdlib
@@ -148,7 +150,7 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
     # a fifth): only those are measured, and only contributors whose box meets the piece's
     # (every piece against every contributor was 25 M intersections for 5 000 circles)
     boxes = np.array([shp.bounds() for _, _, shp in items], dtype=float).reshape(-1, 4)
-    groups, seen, split = [], {}, []
+    groups, seen, split, named = [], {}, [], []
     for p in pieces[:6]:
         b = p.bounds()
         near = np.flatnonzero((boxes[:, 0] <= b[2]) & (boxes[:, 2] >= b[0])
@@ -164,7 +166,8 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
                 if len(names) > 4:
                     break
         groups.append("{" + ", ".join(names[:4]) + (", ..." if len(names) > 4 else "") + "}")
-    hint = ("make the pieces overlap (for example `Above(a, b, gap=-1 mm)`) or share an edge "
+        named.append(names)
+    hint = ("make the pieces overlap (" + _joining(s, pieces, named) + ") or share an edge "
             "(touching at a point is not enough), or, if they are separate parts, make the "
             "structure an `assembly`")
     cutters = _cutters(d, s, shape, [items[k] for k in split]) if split else []
@@ -217,6 +220,36 @@ def _cutters(d: Drawing, s: Structure, shape, split: list) -> list:
         if len(out) >= 8:
             break
     return out
+
+
+def _joining(s: Structure, pieces: list, named: list) -> str:
+    """W0504's example constraint for part ``s`` in two ``pieces`` (CrossSections), each made
+    by one shape (``named``: each piece's contributors as the message names them): the
+    relation that holds as drawn, smaller piece first (a constraint moves its first-named
+    feature to the second), made to overlap by 1 mm (less for a piece thinner than 2 mm):
+    `Below(foot, body, gap=-1 mm)` for a foot drawn under the body.  The hint of before gave
+    `Above(a, b, gap=-1 mm)`: made with the pieces in the order named, the foot went on top
+    of the body (issue 84).  Else the generic example."""
+    plain = "for example `Above(a, b, gap=-1 mm)` with `a` the piece that moves"
+    if len(pieces) != 2 or any(len(n) != 1 or n[0].count("`") != 2 for n in named):
+        return plain
+    small, big = sorted(range(2), key=lambda k: _area(pieces[k]))
+    (a0, b0, a1, b1), (c0, d0, c1, d1) = pieces[small].bounds(), pieces[big].bounds()
+    sides = [("Below", b1 <= d0, b1 - b0, a0 < c1 and c0 < a1),
+             ("Above", b0 >= d1, b1 - b0, a0 < c1 and c0 < a1),
+             ("LeftOf", a1 <= c0, a1 - a0, b0 < d1 and d0 < b1),
+             ("RightOf", a0 >= c1, a1 - a0, b0 < d1 and d0 < b1)]
+    found = [(rel, size) for rel, apart, size, facing in sides if apart and facing]
+    if len(found) != 1:
+        return plain
+    rel, size = found[0]
+    prefix = s.path + "."
+    first, second = (named[k][0].split("`")[1] for k in (small, big))
+    if not (first.startswith(prefix) and second.startswith(prefix)):
+        return plain
+    gap = min(1.0, math.floor(size / 2 * 100) / 100)
+    return (f"`{rel}({first[len(prefix):]}, {second[len(prefix):]}, gap=-{gap:g} mm)` in "
+            f"`{s.path}` moves `{first}` to overlap `{second}` by {gap:g} mm")
 
 
 def _check_invisible(d: Drawing, s: Structure, sink: DiagnosticSink, quick: bool = True) -> None:
