@@ -361,7 +361,9 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
     mk, d, pa, ej_all = mk[order], d[order], pa[order], ej_all[order]
     starts = np.r_[0, np.flatnonzero(mk[1:] != mk[:-1]) + 1]
     stops = np.r_[starts[1:], len(mk)]
-    close = [(int(mk[a]), a, z) for a, z in zip(starts, stops) if d[a] < CUT_CLEAR]
+    # 0.5 mm clear to within 1e-6 mm is clear: a mark set by `Inside(..., margin=0.5 mm)`
+    # ends 0.4999999 mm from the edge after solving (W0505's hint, issue 84)
+    close = [(int(mk[a]), a, z) for a, z in zip(starts, stops) if d[a] < CUT_CLEAR - 1e-6]
     # each close mark's open ends against the edges near it, all in one array operation
     ends = [_open_ends(*segs[k]) for k, _, _ in close]
     qi, qe, qo, near_edges = [], [], [], []
