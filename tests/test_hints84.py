@@ -466,6 +466,6 @@ def test_a_disc_set_half_a_millimetre_clear_by_inside_is_clear():
     """The case W0505's law found: a disc constrained `Inside(d.mark, body, margin=0.5 mm)`
     ends 0.4999999 mm from the plate's side after solving, and W0516 said it "comes 0.50 mm
     from the cut edge" (the hint's own fix, warned again): clear to within 1e-6 mm is clear."""
-    mark = "Circle(center=(13.5, 0.0), radius=3)"
+    mark = "Circle(center=(18.225, 0.0), radius=3)"
     c = _compile(OFF.format(W=27, H=10, mark=mark, fix="    Inside(d.mark, body, margin=0.5 mm)\n"))
     assert _codes(c) == set()
