@@ -829,7 +829,8 @@ counts as that other poking past it. The warning names both shapes and the ledge
 place, and the hint the move that aligns the poking shape, as a vector (`move `note.stem`
 by (-0.200, 0.000) mm`: resized about its centre instead, a shape's edge moves half as
 far). Align the edges (a constraint, or the number that is off), or make the offset clear
-if a ledge is meant.
+if a ledge is meant. A part says its first 5 ledges; the fifth ends "(and N more like it in
+`part`)".
 
     solid note {
         head = Ellipse(center=(0, 0), rx=8, ry=6)

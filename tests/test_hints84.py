@@ -469,3 +469,16 @@ def test_a_disc_set_half_a_millimetre_clear_by_inside_is_clear():
     mark = "Circle(center=(18.225, 0.0), radius=3)"
     c = _compile(OFF.format(W=27, H=10, mark=mark, fix="    Inside(d.mark, body, margin=0.5 mm)\n"))
     assert _codes(c) == set()
+
+
+def test_ledges_of_one_part_are_said_a_few_and_counted():
+    """A comb of 12 teeth on a spine, each with a collar flush with its left side and 0.2 mm
+    past its right side: 12 ledges (before, 12 W0520 lines), said 5 and "(and 7 more like
+    it in `p`)"."""
+    src = ("solid p {\n    spine = Rectangle(center=(33, 0), width=72, height=4)\n"
+           + "".join(f"    t{k} = Rectangle(center=({k * 6}, 6), width=3, height=8)\n"
+                     f"    s{k} = Rectangle(center=({k * 6 + 0.1}, 3), width=3.2, height=2)\n"
+                     for k in range(12)) + "}\n")
+    ws = _warnings(_compile(src), "W0520")
+    assert len(ws) == SHOWN and all("pokes 0.20 mm past" in w.message for w in ws)
+    assert ws[-1].message.endswith(f"(and {12 - SHOWN} more like it in `p`)")

@@ -22,7 +22,7 @@ from ...geometry.model import Structure
 from ..part.booleans import Drawing
 from ..part.nearby import box_pairs
 from ..part.scanwork import decompose
-from .common import MIN_AREA, _area, _contributors, _depth, _signed, _union
+from .common import MIN_AREA, _area, _contributors, _depth, _say_few, _signed, _union
 
 MAX_CHILDREN = 64        # W0506 compares each child with the union of the others
 MAX_CUTTERS = 16         # W0504: holes measured for cutting a shape apart
@@ -437,6 +437,7 @@ def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     # the faces at every step's two corners by one search of the faces' edges
     faces = _faces_at(d, s, np.array([f[0] for f in found] + [f[1] for f in found],
                                      dtype=float).reshape(-1, 2), tick) if found else []
+    said: list = []                 # the ledges found, said by _say_few
     for k, (pi, pj, side, gap, u, ti, mv) in enumerate(found):
         tick()
         fi, fj = faces[k], faces[len(found) + k]
@@ -448,14 +449,16 @@ def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
         at = pj if ti < 0 else pi
         labels = [Label(other.span, "the edge it almost meets", primary=False)] \
             if other.span is not None else []
-        sink.warning("W0520", f"`{poke.label}` pokes {side:.2f} mm past `{other.label}` in "
+        said.append((f"`{poke.label}` pokes {side:.2f} mm past `{other.label}` in "
                      f"`{s.path}`, a ledge of {side:.2f} mm in the outline near "
                      f"({at[0]:.1f}, {at[1]:.1f}): the two edges almost align but not quite",
-                     poke.span or s.span, labels=labels,
-                     hint=f"align the edges: move `{poke.label}` by ({mv[0] + 0:.3f}, "
-                          f"{mv[1] + 0:.3f}) mm (or resize it so that this edge moves as "
-                          "much; or tie the two edges with a constraint), or make the offset "
-                          f"clear (at least {t:g} mm) if a ledge is meant")
+                     poke.span or s.span,
+                     {"labels": labels,
+                      "hint": f"align the edges: move `{poke.label}` by ({mv[0] + 0:.3f}, "
+                              f"{mv[1] + 0:.3f}) mm (or resize it so that this edge moves as "
+                              "much; or tie the two edges with a constraint), or make the "
+                              f"offset clear (at least {t:g} mm) if a ledge is meant"}))
+    _say_few(sink, "W0520", s.path, said)
 
 
 def _cornerless(loops) -> np.ndarray:
