@@ -478,7 +478,9 @@ The final shape of a solid part is several disconnected pieces; the warning list
 or geometry make up each piece. Usually a child floats free of the body (feet, a handle) because
 a constraint places it with a gap, or it touches the body at a single point (a round end
 resting on a flat edge). Make the pieces overlap (`Above(foot, body, gap=-1 mm)`) or share an
-edge; if they really are separate parts, make the structure an
+edge: for two pieces of one shape each, drawn apart along x or y, the hint writes the relation
+that holds as drawn, the smaller piece first (it moves), `Below(foot, body, gap=-1 mm)` in
+`p`; if they really are separate parts, make the structure an
 `assembly` (its parts are separate by design and are not checked against each other).
 When a hole cuts one shape apart (a slot across a strip, a ring of overlapping arc slots
 around a hub), the warning names the hole(s) and the shape, and the hint says to move,
@@ -490,8 +492,10 @@ there is no material to engrave. Move or shrink the drawing so that it lies on t
 put a drawing that is only an illustration at assembly level, beside the part.
 The share off the material is said as a percentage of the drawing's length ("under 1%": a
 letter's stroke over a screw hole); across a hole, the hint names the holes it crosses.
-Off the outline, the hint says where the mark leaves the material (x, y), and offers
-`Inside(drawing, self)` only where the drawing's box reaches past the part's and would fit.
+Off the outline, the hint says where the mark leaves the material (x, y); where the mark
+reaches past the box of the part's largest own shape and fits in it, it also writes the
+constraint that sets it there clear of the cut, `Inside(d.mark, body, margin=0.5 mm)` (a mark
+that touches the cut is W0516), and a mark larger than that shape is told to shrink.
 """),
     "W0506": ("geometry that adds nothing", """
 A child solid lies wholly inside the rest of its parent, so it changes nothing in the final
@@ -499,7 +503,10 @@ shape: typically copies of a pattern that land inside a filled solid, or a featu
 wrong position. Move it where it shows, make it a `hole` if it should cut, or delete it. When a
 hole of the same structure cuts it away (a hole cuts every solid of the structure it is declared
 in, children included), the warning names that hole and the share it cuts: to keep the solid
-over the hole, declare it beside that structure (a sibling's material survives the hole).
+over the hole, declare it beside that structure (a sibling's material survives the hole);
+when that structure is the part itself, its shapes and hole go in a `solid` of their own
+inside it, beside the solid kept. A solid that would be an island in the opening (touching
+no material around it) or would fill the whole opening is only offered deletion.
 When one filled shape of the parent covers it whole (`frame = Circle(...)` meant as a ring,
 over a spider and its threads), the warning names that shape and counts the other shapes it
 hides, and the hint offers the likely intent: a ring (`Shell(frame, 3)`) or
@@ -678,7 +685,9 @@ strokes; 0.3 mm is about an engraved line's width), or it enters the text's box 
 0.1 mm (between its letters). Close labels and close marks give one warning per pair of
 statements (the closest pair, copies made in a loop named by index: `ticks[0]`), with the
 number of such pairs. The warning names both, with the overlap's area, the gap, or the length
-of the mark inside the text, and how much to shorten the mark or move the text. Move the text
+of the mark inside the text, and how much to shorten the mark or move the text (text drawn
+over text: the least move right, left, up or down, as a vector, that leaves half the text size
+between the two boxes, `move `p.d.b` 6.96 mm right, by (6.96, 0.00) mm`). Move the text
 clear (beside the tick, further out), shorten the mark, grow the frame, or make the text
 smaller: the hint gives the largest size at which the clearance holds (`size=N mm`: the
 strokes and the clearance scale with the size about the text's position), and says nothing of
@@ -722,7 +731,8 @@ An opening is left inside a solid part where no hole cuts: the shapes around it 
 window the program never declares. A small one (less than 1 mm^2, or twice the minimum wall
 squared) is a void where the shapes nearly meet but leave a gap, which a laser cuts out as a
 sliver: the warning gives its area, width, length and place; make the shapes overlap (a
-negative gap, a larger size). A larger one enclosed by the faces of ONE solid structure,
+negative gap, a larger size). A part says its first 5 voids, the fifth ending "(and N more
+like it in `part`)". A larger one enclosed by the faces of ONE solid structure,
 some of them overlapping (a dinosaur's legs and belly that merge around a window), is rarely
 meant: the warning names the faces around it, its size (width x height of its box, area) and
 centre; make the shapes overlap to fill it, or, when it is meant, declare it with a `hole`
@@ -807,13 +817,17 @@ two end lobes nearly touch beyond the bar). Found between the non-adjacent edges
 of the outline that face each other (opposite within 30 degrees) across empty space, over at
 least the minimum's length; the openings that holes cut are not searched (a narrow hole is
 declared so). The warning gives the least width, the length, the place and the shapes on its
-two sides. Make them overlap, or open the gap to at least the minimum. Where the two sides
+two sides. Make them overlap by at least the minimum (a bare overlap of two round sides
+leaves a V-notch at their junction, as narrow), or open the gap to at least the minimum. Where the two sides
 meet at the slit's floor in a corner sharper than 60 degrees (a nick: an arm joined low on a
 rounded corner), moving one away would part them (W0504) and moving it in only moves the
 nick; the hint then rounds that inner corner alone, `Fillet(at=[(x, y)], radius=min_wall)`,
 which fills the nick and leaves the rest of the outline as it was. Where one side leaves the
 other along its tangent (a cusp: an arm flush with the straight side of a rounded corner) no
 move or fillet closes it, and the hint says to cover the rounded corner whole or square it.
+The moves are rounded up to 0.01 mm (made as written, the gap reaches the minimum). A part
+says its first 5 slits; the fifth ends "(and N more like it in `part`)"
+with the count of the rest (a part of thousands of discs that falls apart).
 
     solid tag {
         bar = Rectangle(center=(0, 0), width=30, height=12)
@@ -830,9 +844,13 @@ triangle's straight sides. Found in the final outline as two corners of opposite
 direction, offset sideways by 0.01 mm to the minimum; or as a shallow crossing (2 to 30
 degrees) after a straight side where the other shape strays out past that side's line by
 0.01 mm to the minimum and comes back across it. Only corners where two different shapes
-meet count (a step drawn in one polygon is meant). The warning names both shapes and the
-ledge's size and place. Align the edges (a constraint, or the number that is off), or make
-the offset clear if a ledge is meant.
+meet count (a step drawn in one polygon is meant); a shape set back from another's side
+counts as that other poking past it. The warning names both shapes and the ledge's size and
+place, and the hint the move that aligns the poking shape, as a vector (`move `note.stem`
+by (-0.200, 0.000) mm`: resized about its centre instead, a shape's edge moves half as
+far). Align the edges (a constraint, or the number that is off), or make the offset clear
+if a ledge is meant. A part says its first 5 ledges; the fifth ends "(and N more like it in
+`part`)".
 
     solid note {
         head = Ellipse(center=(0, 0), rx=8, ry=6)

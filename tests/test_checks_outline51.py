@@ -214,7 +214,7 @@ def test_W0520_a_stem_that_pokes_past_the_head(compile_text):
     assert "`note.stem` pokes 0.20 mm past `note.head` in `note`" in w.message
     assert "a ledge of 0.20 mm in the outline near (8.2, 0.0)" in w.message
     assert w.span.line == 4 and [lab.span.line for lab in w.labels] == [3]
-    assert "by 0.20 mm" in w.hint
+    assert "move `note.stem` by (-0.200, 0.000) mm" in w.hint      # issue 84: which way
     flush = NOTE.replace("center=(6.7, 25)", "center=(6.5, 25)").replace("8.2", "8")
     assert codes(compile_text, flush) == []
     clear = NOTE.replace("center=(6.7, 25)", "center=(7.5, 25)").replace("8.2", "9")

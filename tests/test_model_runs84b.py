@@ -45,9 +45,10 @@ def test_W0505_hint_says_where_the_mane_leaves_the_knight_and_names_no_absent_sh
 def test_W0505_hint_offers_Inside_where_the_mane_reaches_past_the_box_and_it_mends_that(compile_text):
     src = KNIGHT.replace("MANE", str([(4, 66), (10, 52), (11, 36), (8, 20), (20, 20)]))
     (w,) = _w0505(compile_text, src)
-    assert "`Inside(face, self)` in `knight`" in w.hint
+    m = re.search(r"`(Inside\(face[.\w]*, \w+, margin=0.5 mm\))` in `knight`", w.hint)
+    assert m, w.hint
     share = float(re.search(r"\((\d+)% of it", w.message).group(1))
-    fixed = src[:-1] + "    Inside(face, self)\n}"
+    fixed = src[:-1] + f"    {m.group(1)}\n}}"
     after = _w0505(compile_text, fixed)
     left = float(re.search(r"\((\d+)% of it", after[0].message).group(1)) if after else 0.0
     assert share >= 10 and left <= share / 3   # 17% off before, 3% (the outline's slant) after

@@ -17,6 +17,7 @@ from ..part.booleans import Drawing
 MIN_FRACTION = 0.02      # of a hole's or child's area
 MIN_AREA = 0.05          # mm^2
 MIN_WALL = 0.5           # mm: W0507's default minimum wall
+SHOWN = 5                # finds a per-part check says one by one before "and N more like it"
 
 
 def _area(cs) -> float:
@@ -340,3 +341,16 @@ def _insert_fix(struct: Structure, stmt: str, sink=None):
     pad = line[:len(line) - len(line.lstrip())]
     text = f"    {stmt}\n{pad}" if alone else f"\n{pad}    {stmt}\n{pad}"
     return Fix(at, text)
+
+
+def _say_few(sink, code: str, path: str, finds: list) -> None:
+    """Warn ``code`` for the first :data:`SHOWN` of ``finds`` (each ``(message, span, kw)``,
+    ``kw`` the warning's other fields: hint, labels), in their order; when there are more,
+    the last one said ends "(and N more like it in `path`)": a part of 4,000 circles that
+    falls apart finds hundreds of slits (W0519) or voids (W0515), a flood that no reader
+    (person or model) reads, while the first few and the count say what to fix."""
+    rest = len(finds) - SHOWN
+    for k, (message, span, kw) in enumerate(finds[:SHOWN]):
+        if rest > 0 and k == SHOWN - 1:
+            message += f" (and {rest} more like it in `{path}`)"
+        sink.warning(code, message, span, **kw)

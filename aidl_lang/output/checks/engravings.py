@@ -244,7 +244,7 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         # a letter's stroke over a screw hole is under 1% of a long text's samples: "0%" read
         # as "nothing is off" (issue 84's door sign), so a small share is said as such
         share = _pct(off, float(len(pts))) if off >= 0.005 * len(pts) else "under 1%"
-        hint = _off_outline_hint(g, part, roots[part], pts, pts[~inside])
+        hint = _off_outline_hint(d, part, g, pts, pts[~inside])
         if where == "across a hole":
             holes = _holes_crossed(d, roots, part, pts[~inside])
             hint = (f"it crosses {', '.join(holes) if holes else 'an opening'}: shrink or move "
@@ -258,27 +258,40 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
                          (loops or {}).get(part), sink)
 
 
-def _off_outline_hint(g, part, shape, pts: np.ndarray, off: np.ndarray) -> str:
-    """W0505's hint for an engraving ``g`` that leaves the outline of ``part`` (its material
-    ``shape``; ``pts`` its samples, ``off`` those off the material): where it leaves (the off
-    sample nearest their middle, mm), and `Inside(drawing, self)` only where the engraving's
-    box reaches past the part's box and would fit in it, the one case that constraint mends
-    (a mane drawn past a knight's edge inside its box is not: issue 84's second run, whose
-    hint named a `label` and a `body` the program did not have)."""
+def _off_outline_hint(d: Drawing, part, g, pts: np.ndarray, off: np.ndarray) -> str:
+    """W0505's hint for engraving ``g`` of ``part`` off its outline (``pts``: its samples,
+    n x 2 mm; ``off``: those off the material): where it leaves (the off sample nearest their
+    middle, mm), and a constraint only where one mends it: the mark reaches past the box of
+    the part's largest own shape, and fits in it with :data:`CUT_CLEAR` to spare, so
+    `Inside(d.mark, body, margin=0.5 mm)` (the names as written in the part) moves it onto
+    the material, clear of the cut; a mark larger than that shape is told to shrink.
+    Before (issue 84): "e.g. `Inside(label, body)`" named shapes the program did not have,
+    was offered for a knight's mane crossing the outline inside the box (which no box
+    constraint mends), and, made as `Inside(d.mark, body)`, set the mark on the cut edge
+    (W0516 again); made with `self` it conflicted (E0401)."""
+    from .common import _solids_within
+    label, prefix = getattr(g, "label", ""), part.path + "."
     p = off[int(np.argmin(np.hypot(*(off - off.mean(axis=0)).T)))]
-    name = g.label.rsplit(".", 1)[-1]
     hint = (f"it leaves the material at about ({p[0]:.2f}, {p[1]:.2f}): move, shrink or "
-            f"redraw `{name}` so that it lies on the material, or move the part's edge")
-    x0, y0, x1, y1 = shape.bounds()
+            f"redraw `{label.rsplit('.', 1)[-1]}` so that it lies on the material, or move "
+            "the part's edge")
+    own = [(f.area(), geo, f.bounds()) for st, fs in _solids_within(d, part) if st is part
+           for geo, f in fs if f is not None and not f.is_empty() and geo.name]
+    if not own or not label.startswith(prefix):
+        return hint
+    _, body, (x0, y0, x1, y1) = max(own, key=lambda o: o[0])
     lo, hi = off.min(axis=0), off.max(axis=0)
-    owner = getattr(g, "owner", None)
-    past = lo[0] < x0 - ENGRAVE_TOL or lo[1] < y0 - ENGRAVE_TOL or hi[0] > x1 + ENGRAVE_TOL \
-        or hi[1] > y1 + ENGRAVE_TOL
-    span = pts.max(axis=0) - pts.min(axis=0)
-    fits = span[0] <= x1 - x0 and span[1] <= y1 - y0
-    if past and fits and owner is not None and owner is not part and owner.parent is part:
-        hint += f" (constrain it: `Inside({owner.name}, self)` in `{part.path}`)"
-    return hint
+    if not (lo[0] < x0 - ENGRAVE_TOL or lo[1] < y0 - ENGRAVE_TOL or hi[0] > x1 + ENGRAVE_TOL
+            or hi[1] > y1 + ENGRAVE_TOL):
+        return hint             # it crosses the outline inside the box: no box constraint mends it
+    w, h = np.ptp(pts[:, 0]), np.ptp(pts[:, 1])
+    if w + 2 * CUT_CLEAR > x1 - x0 or h + 2 * CUT_CLEAR > y1 - y0:
+        return (f"shrink the drawing to fit on `{body.name}`, or move it onto the material "
+                f"({hint})")
+    mark = label[len(prefix):]
+    return (f"{hint}; or constrain it onto the material: `Inside({mark}, {body.name}, "
+            f"margin={CUT_CLEAR} mm)` in `{part.path}` (its box inside `{body.name}`'s, "
+            f"{CUT_CLEAR} mm clear of the cut)")
 
 
 ON_CUT = 1 / 3           # of an engraving's samples: more on the outline is engraved over the cut
@@ -358,7 +371,9 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
     mk, d, pa, ej_all = mk[order], d[order], pa[order], ej_all[order]
     starts = np.r_[0, np.flatnonzero(mk[1:] != mk[:-1]) + 1]
     stops = np.r_[starts[1:], len(mk)]
-    close = [(int(mk[a]), a, z) for a, z in zip(starts, stops) if d[a] < CUT_CLEAR]
+    # 0.5 mm clear to within 1e-6 mm is clear: a mark set by `Inside(..., margin=0.5 mm)`
+    # ends 0.4999999 mm from the edge after solving (W0505's hint, issue 84)
+    close = [(int(mk[a]), a, z) for a, z in zip(starts, stops) if d[a] < CUT_CLEAR - 1e-6]
     # each close mark's open ends against the edges near it, all in one array operation
     ends = [_open_ends(*segs[k]) for k, _, _ in close]
     qi, qe, qo, near_edges = [], [], [], []

@@ -87,6 +87,16 @@ def slit_fix(d: Drawing, s: Structure, at, w: float, t: float, names: list,
         return (f"fill the nick where {names[0]} meets {names[-1]} by rounding that inner "
                 f"corner: `Fillet(at=[({apex[0]:.4f}, {apex[1]:.4f})], radius={t:g})` in "
                 f"`{s.name}` (only that corner; the rest of the outline is unchanged)")
-    return (f"make {names[0]} and {names[-1]} overlap (move one more than {w:.2f} mm "
-            f"towards the other) or open the gap to at least {t:g} mm (move one "
-            f"{t - w:.2f} mm away)")
+    # both figures rounded up to 0.01 mm: the gap 0.375 mm, "move one 0.12 mm away" (0.125
+    # rounded to even) left 0.495 mm, warned again.  Overlapping by a hair ("more than
+    # 0.25 mm towards", made 0.26) two round sides meet in a V-notch narrower than t over
+    # more than t (the nick, warned again): they overlap by t
+    return (f"make {names[0]} and {names[-1]} overlap by at least {t:g} mm (move one "
+            f"{_up(w + t):.2f} mm towards the other) or open the gap to at least {t:g} mm "
+            f"(move one {_up(t - w):.2f} mm away)")
+
+
+def _up(x: float) -> float:
+    """``x`` mm rounded up to 0.01 mm (a figure printed with two decimals that, moved by,
+    reaches at least ``x``; 1e-8 mm of rounding noise is not a step up)."""
+    return math.ceil(x * 100 - 1e-6) / 100

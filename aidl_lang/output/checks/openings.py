@@ -39,7 +39,7 @@ from ..part.nearby import (boundaries, boundary, box_pairs, box_pairs_between,
                            close_pairs)
 from .common import (MIN_AREA, MIN_WALL, _area, _contributors, _cut_openings, _depth, _edges,
                      _insert_fix, _inside, _loop_boxes, _part_of, _pct, _signed, _significant,
-                     _solids_within, _union)
+                     _say_few, _solids_within, _union)
 
 def _intended(hole: Structure, owner: Structure, obj) -> bool:
     """``AllowOverlap(hole, x)`` was written for this hole (or a structure between it and
@@ -231,6 +231,7 @@ def _check_voids(d: Drawing, s: Structure, loops, cuts, t: float, sink,
     limit = max(2 * t * t, 1.0)
     _check_enclosed(d, s, [loops[k] for k in inner if -signed[k] >= limit], cuts, sink,
                     tick)
+    voids: list = []                     # said by _say_few: the first few, then a count
     for k in inner:
         P = loops[k]
         area = -signed[k]
@@ -239,13 +240,14 @@ def _check_voids(d: Drawing, s: Structure, loops, cuts, t: float, sink,
         x0, y0 = P.min(axis=0)
         x1, y1 = P.max(axis=0)
         width = area / max(1e-12, max(x1 - x0, y1 - y0))
-        sink.warning("W0515", f"a void of {area:.3f} mm^2 (about {width:.2f} mm wide, "
-                     f"{max(x1 - x0, y1 - y0):.2f} mm long) is left inside `{s.path}` near "
-                     f"({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}): no hole cuts it, the "
-                     "shapes around it do not quite meet", s.span,
-                     hint="make the shapes around it overlap (e.g. `gap=-1 mm`, or a larger "
-                          "size) so that no gap is left; if an opening is meant, cut it with "
-                          "a hole")
+        voids.append((f"a void of {area:.3f} mm^2 (about {width:.2f} mm wide, "
+                      f"{max(x1 - x0, y1 - y0):.2f} mm long) is left inside `{s.path}` near "
+                      f"({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}): no hole cuts it, the "
+                      "shapes around it do not quite meet", s.span,
+                      {"hint": "make the shapes around it overlap (e.g. `gap=-1 mm`, or a "
+                               "larger size) so that no gap is left; if an opening is meant, "
+                               "cut it with a hole"}))
+    _say_few(sink, "W0515", s.path, voids)
 
 
 def _solid_faces(d: Drawing, s: Structure, near) -> list:

@@ -13,6 +13,8 @@
   the minimum wall (:func:`_check_steps`)."""
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ...diagnostics import Diagnostic, DiagnosticSink, Fix, Label, Span, in_stdlib
@@ -20,7 +22,7 @@ from ...geometry.model import Structure
 from ..part.booleans import Drawing
 from ..part.nearby import box_pairs
 from ..part.scanwork import decompose
-from .common import MIN_AREA, _area, _contributors, _depth, _signed, _union
+from .common import MIN_AREA, _area, _contributors, _depth, _say_few, _signed, _union
 
 MAX_CHILDREN = 64        # W0506 compares each child with the union of the others
 MAX_CUTTERS = 16         # W0504: holes measured for cutting a shape apart
@@ -148,7 +150,7 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
     # a fifth): only those are measured, and only contributors whose box meets the piece's
     # (every piece against every contributor was 25 M intersections for 5 000 circles)
     boxes = np.array([shp.bounds() for _, _, shp in items], dtype=float).reshape(-1, 4)
-    groups, seen, split = [], {}, []
+    groups, seen, split, named = [], {}, [], []
     for p in pieces[:6]:
         b = p.bounds()
         near = np.flatnonzero((boxes[:, 0] <= b[2]) & (boxes[:, 2] >= b[0])
@@ -164,7 +166,8 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
                 if len(names) > 4:
                     break
         groups.append("{" + ", ".join(names[:4]) + (", ..." if len(names) > 4 else "") + "}")
-    hint = ("make the pieces overlap (for example `Above(a, b, gap=-1 mm)`) or share an edge "
+        named.append(names)
+    hint = ("make the pieces overlap (" + _joining(s, pieces, named) + ") or share an edge "
             "(touching at a point is not enough), or, if they are separate parts, make the "
             "structure an `assembly`")
     cutters = _cutters(d, s, shape, [items[k] for k in split]) if split else []
@@ -219,6 +222,36 @@ def _cutters(d: Drawing, s: Structure, shape, split: list) -> list:
     return out
 
 
+def _joining(s: Structure, pieces: list, named: list) -> str:
+    """W0504's example constraint for part ``s`` in two ``pieces`` (CrossSections), each made
+    by one shape (``named``: each piece's contributors as the message names them): the
+    relation that holds as drawn, smaller piece first (a constraint moves its first-named
+    feature to the second), made to overlap by 1 mm (less for a piece thinner than 2 mm):
+    `Below(foot, body, gap=-1 mm)` for a foot drawn under the body.  The hint of before gave
+    `Above(a, b, gap=-1 mm)`: made with the pieces in the order named, the foot went on top
+    of the body (issue 84).  Else the generic example."""
+    plain = "for example `Above(a, b, gap=-1 mm)` with `a` the piece that moves"
+    if len(pieces) != 2 or any(len(n) != 1 or n[0].count("`") != 2 for n in named):
+        return plain
+    small, big = sorted(range(2), key=lambda k: _area(pieces[k]))
+    (a0, b0, a1, b1), (c0, d0, c1, d1) = pieces[small].bounds(), pieces[big].bounds()
+    sides = [("Below", b1 <= d0, b1 - b0, a0 < c1 and c0 < a1),
+             ("Above", b0 >= d1, b1 - b0, a0 < c1 and c0 < a1),
+             ("LeftOf", a1 <= c0, a1 - a0, b0 < d1 and d0 < b1),
+             ("RightOf", a0 >= c1, a1 - a0, b0 < d1 and d0 < b1)]
+    found = [(rel, size) for rel, apart, size, facing in sides if apart and facing]
+    if len(found) != 1:
+        return plain
+    rel, size = found[0]
+    prefix = s.path + "."
+    first, second = (named[k][0].split("`")[1] for k in (small, big))
+    if not (first.startswith(prefix) and second.startswith(prefix)):
+        return plain
+    gap = min(1.0, math.floor(size / 2 * 100) / 100)
+    return (f"`{rel}({first[len(prefix):]}, {second[len(prefix):]}, gap=-{gap:g} mm)` in "
+            f"`{s.path}` moves `{first}` to overlap `{second}` by {gap:g} mm")
+
+
 def _check_invisible(d: Drawing, s: Structure, sink: DiagnosticSink, quick: bool = True) -> None:
     """W0506 for the solid children of ``s`` that add nothing to it.  ``quick=False``
     measures every child (the reference for the area bound's test)."""
@@ -256,11 +289,7 @@ def _check_invisible(d: Drawing, s: Structure, sink: DiagnosticSink, quick: bool
                             "it `construction=true`")
                 sink.warning("W0506", f"{name} adds nothing to `{s.path}`: hole "
                              f"`{cut[0].path}` of the same structure cuts away {how}{also}",
-                             span,
-                             hint=f"a hole cuts every solid of the structure it is declared in, "
-                                  f"children included; to keep this solid over the hole, "
-                                  f"declare it beside `{s.name}` (a sibling structure's "
-                                  f"material survives the hole), else delete it{ring}")
+                             span, hint=_kept_over(d, s, shp, others, cut, name) + ring)
                 continue
             cover = _covering_shape(items, i, a)
             if cover is not None:           # one filled shape of s hides it (issue 61)
@@ -281,6 +310,39 @@ def _check_invisible(d: Drawing, s: Structure, sink: DiagnosticSink, quick: bool
                          "the rest of it", span,
                          hint="move it where it shows (it is probably mispositioned), make it a "
                               "`hole` if it should cut, or delete it")
+
+
+def _kept_over(d: Drawing, s: Structure, shp, others, cut: list, name: str) -> str:
+    """W0506's hint for solid ``name`` (its region ``shp``) of ``s`` that the holes ``cut``
+    of ``s`` cut away (``others``: the rest of ``s``'s material, before the holes).  Kept over
+    the hole, a solid must be a sibling of the structure the hole cuts: inside ``s`` when
+    ``s`` is a part (declared beside the part, as the hint of before said, it became a part
+    of its own, issue 84); it must overlap the material left around the hole (by more than
+    :data:`.common.MIN_AREA`; touching is not joined), or it is an island (W0504), and leave
+    some of the opening open, or the hole cuts nothing (W0501; and without the hole, the
+    rest covers it, W0506 again): then deleting it (or making it reach that material) is
+    offered."""
+    opening = _union([d.shapes[h] for h in cut])
+    left = others - opening
+    holes = ", ".join(f"`{h.name}`" for h in cut)
+    why = "a hole cuts every solid of the structure it is declared in, children included"
+    if _area(opening - shp) <= MIN_AREA:     # kept, it would fill the hole (W0501)
+        return (f"{why}; this solid covers the whole opening of {holes} (kept over it, the "
+                "hole would cut nothing; with the hole gone, the rest covers it): delete it")
+    if _area(shp ^ left) <= MIN_AREA:        # a disc that touches the opening's sides only
+        part = (f"; if it is a separate part (a pin through the hole), declare it beside "
+                f"`{s.name}` in `{s.parent.path}` (a sibling structure's material survives the "
+                "hole)") if s.parent is not None and s.parent.kind == "assembly" else ""
+        return (f"{why}; this solid lies within the opening and touches no material around "
+                f"it (kept, it would be an island): delete it, or make it reach the material "
+                f"around the hole{part}")
+    if s.parent is None or s.parent.kind != "solid":       # `s` is a part
+        child = name.split("`")[1].rsplit(".", 1)[-1] if "`" in name else name
+        return (f"{why}; to keep this solid over the hole, put the rest of `{s.name}` (its "
+                f"shapes and hole {holes}) in a `solid` of their own inside `{s.name}`, beside "
+                f"`{child}` (a sibling structure's material survives the hole), else delete it")
+    return (f"{why}; to keep this solid over the hole, declare it beside `{s.name}` (a "
+            "sibling structure's material survives the hole), else delete it")
 
 
 def _covering_shape(items, i: int, a: float):
@@ -359,12 +421,24 @@ def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
             side = float(u[0] * off[1] - u[1] * off[0])
             if not 2 * 0.005 < abs(side) < t - 2 * 0.005:
                 continue
-            found.append((P[i], P[j], abs(side), float(gap[k]), u, turn[i]))
+            # the poking shape's move that aligns it (the poking one: at j when the first
+            # corner turns in, else at i), across the longer of the two stretches (the
+            # other may be a curve's chord)
+            w = ep[i] / L[i - 1] if L[i - 1] >= L[j] else e[j] / L[j]
+            across = float(w[0] * off[1] - w[1] * off[0])
+            move = (-across if turn[i] < 0 else across) * np.array([-w[1], w[0]])
+            # each corner's shape looked for a hair along its own stretch (back from i,
+            # on from j): a block set back 0.2 mm from a base's side has its corner ON the
+            # base's edge, where the base was found twice and the ledge was not said
+            qi = P[i] - ep[i] * min(1e-3, L[i - 1] / 2) / L[i - 1]
+            qj = P[j] + e[j] * min(1e-3, L[j] / 2) / L[j]
+            found.append((qi, qj, abs(side), float(gap[k]), u, turn[i], move))
         _bumps(P, e, ep, turn, pos, t, found)
     # the faces at every step's two corners by one search of the faces' edges
     faces = _faces_at(d, s, np.array([f[0] for f in found] + [f[1] for f in found],
                                      dtype=float).reshape(-1, 2), tick) if found else []
-    for k, (pi, pj, side, gap, u, ti) in enumerate(found):
+    said: list = []                 # the ledges found, said by _say_few
+    for k, (pi, pj, side, gap, u, ti, mv) in enumerate(found):
         tick()
         fi, fj = faces[k], faces[len(found) + k]
         if fi is None or fj is None or fi is fj:
@@ -375,13 +449,16 @@ def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
         at = pj if ti < 0 else pi
         labels = [Label(other.span, "the edge it almost meets", primary=False)] \
             if other.span is not None else []
-        sink.warning("W0520", f"`{poke.label}` pokes {side:.2f} mm past `{other.label}` in "
+        said.append((f"`{poke.label}` pokes {side:.2f} mm past `{other.label}` in "
                      f"`{s.path}`, a ledge of {side:.2f} mm in the outline near "
                      f"({at[0]:.1f}, {at[1]:.1f}): the two edges almost align but not quite",
-                     poke.span or s.span, labels=labels,
-                     hint=f"align the edges (move or resize `{poke.label}` by {side:.2f} mm, or "
-                          "tie them with a constraint) or make the offset clear (at least "
-                          f"{t:g} mm) if a ledge is meant")
+                     poke.span or s.span,
+                     {"labels": labels,
+                      "hint": f"align the edges: move `{poke.label}` by ({mv[0] + 0:.3f}, "
+                              f"{mv[1] + 0:.3f}) mm (or resize it so that this edge moves as "
+                              "much; or tie the two edges with a constraint), or make the "
+                              f"offset clear (at least {t:g} mm) if a ledge is meant"}))
+    _say_few(sink, "W0520", s.path, said)
 
 
 def _cornerless(loops) -> np.ndarray:
@@ -424,7 +501,8 @@ def _bumps(P, e, ep, turn, pos, t: float, found: list) -> None:
     0.01 mm and less than ``t`` before it comes back across the line or turns away from it
     by 90 degrees (within ``BUMP_LENGTH t`` mm): a heart's lobe that pokes past the
     triangle's side by a hair.  Appended to ``found`` as ``(the turn, the farthest vertex,
-    height, length followed, direction, -1)``."""
+    height, length followed, direction, -1, the move that brings the bulge back onto the
+    line)``."""
     n = len(P)
     cand = np.flatnonzero((turn < -BUMP) & (turn > -CORNER))
     if not len(cand):
@@ -465,7 +543,7 @@ def _bumps(P, e, ep, turn, pos, t: float, found: list) -> None:
                 continue
             far = P[idx[int(np.argmax(out[:k]))]]
             found.append((P[a], far, h, float(along[:k].max() if len(along) else 0.0), u,
-                          -1.0))
+                          -1.0, step * h * np.array([-u[1], u[0]])))
 
 
 def check_stray_holes(sink: DiagnosticSink, drawing: Drawing, deadline=None) -> None:

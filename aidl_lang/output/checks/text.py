@@ -15,7 +15,7 @@ import numpy as np
 from ...diagnostics import DiagnosticSink, Label
 from ..part.booleans import Drawing
 from ..part.nearby import box_pairs, box_pairs_between
-from .common import MIN_AREA, _area, _depth, _pct
+from .common import MIN_AREA, _area, _pct
 from .engravings import (_COS32, _SIN32, _copy_label, _mark_segments, _open_ends, _pair_gap,
                          _polyline, _seg_gap)
 
@@ -142,14 +142,12 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
                 close.setdefault((a.span, b.span), []).append((gap, near, a, b))
             continue
         said.add(b)
-        depth = _depth(shape(i) ^ shape(j), bb[i], bb[j])
         labels = [Label(a.span, f"`{a.label}` is here", primary=False)] if a.span else []
         sink.warning("W0513", f"text `{b.label}` (\"{b.data.get('text', '')}\") is drawn over "
                      f"text `{a.label}` (\"{a.data.get('text', '')}\"): their boxes overlap by "
                      f"{common:.2f} mm^2 ({_pct(common, small)} of the smaller)", b.span,
                      labels=labels,
-                     hint=f"move `{b.label}` at least {depth:.2f} mm away from `{a.label}` (or "
-                          "make them smaller) so that both can be read")
+                     hint=_apart(bb[i], bb[j], a, b, TEXT_GAP * min(sizes[i], sizes[j])))
     for found in close.values():
         gap, near, a, b = min(found, key=lambda f: f[0])
         more = f"; {len(found) - 1} more pairs of these labels as close" if len(found) > 1 else ""
@@ -236,6 +234,22 @@ def _segment_sets(marks, mg) -> dict:
         Q = np.roll(P, -1, axis=1)
         out = {m: (P[k], Q[k]) for k, m in enumerate(circles)}
     return {m: out[m] if m in out else _mark_segments(marks[m]) for m in mg}
+
+
+def _apart(bi, bj, a, b, near: float) -> str:
+    """W0513's hint for text ``b`` drawn over text ``a`` (their boxes ``bi``, ``bj`` as x0,
+    y0, x1, y1 in mm): the least of the four moves of ``b`` (right, left, up, down) that
+    leaves ``near`` mm between the boxes (the gap under which two labels read as one
+    string), rounded up to 0.01 mm.  Moved only by the overlap's depth (the hint of before,
+    "at least 4.45 mm away"), the two touched and were warned again as running together
+    (issue 84)."""
+    moves = [(bi[2] - bj[0] + near, (1, 0), "right"), (bj[2] - bi[0] + near, (-1, 0), "left"),
+             (bi[3] - bj[1] + near, (0, 1), "up"), (bj[3] - bi[1] + near, (0, -1), "down")]
+    dist, (ux, uy), way = min(moves, key=lambda m: m[0])
+    dist = math.ceil(dist * 100 - 1e-6) / 100
+    return (f"move `{b.label}` {dist:.2f} mm {way}, by ({ux * dist + 0:.2f}, {uy * dist + 0:.2f}) "
+            f"mm (clear of `{a.label}` and {near:.2f} mm apart, half the text size, so that "
+            "the two do not read as one string), or make them smaller")
 
 
 def _check_marks(strokes, marks, tg, boxes, bb, sizes, said, sink, tick=None) -> None:

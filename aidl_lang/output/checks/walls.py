@@ -698,7 +698,7 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     length, its place and the two shapes (:func:`_faces_at`, at the slit's mouth).
     ``cut_open``: :func:`.common._cut_openings` of ``loops``, when the caller has it."""
     from ..part.nearby import close_pairs_facing
-    from .common import _edges, _inside
+    from .common import SHOWN, _edges, _inside, _say_few
     if t <= 0 or not loops:
         return
     if cut_open is None:
@@ -746,6 +746,7 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     faces = _faces_at(d, s, np.concatenate([V[v[mouth]], foot[mouth]]), tick) \
         if len(groups) else []
     corners: dict = {}                  # the part's nick corners, found once (slit_fix)
+    said: list = []                     # the slits found, said by _say_few
     for i, (k, length) in enumerate(groups):
         tick()
         b = k[int(np.argmin(dist[k]))]
@@ -764,14 +765,14 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
             if other is not None else []
         between = " and ".join(names)
         cx, cy = (p + q) / 2
-        fix = slit_fix(d, s, (p + q) / 2, w, t, names, corners)
-        sink.warning("W0519", f"a slit of empty space between {between} in `{s.path}` is "
+        fix = slit_fix(d, s, (p + q) / 2, w, t, names, corners) if len(said) < SHOWN else ""
+        said.append((f"a slit of empty space between {between} in `{s.path}` is "
                      f"{w:.2f} mm wide, narrower than {t:g} mm (over {length:.1f} mm, near "
                      f"({cx:.1f}, {cy:.1f})): narrower than a laser or router cuts, so it comes "
                      "out as a ragged notch or not at all",
                      later.span if later is not None else s.span,
-                     labels=labels,
-                     hint=f"{fix}; the minimum is set with --min-wall")
+                     {"labels": labels, "hint": f"{fix}; the minimum is set with --min-wall"}))
+    _say_few(sink, "W0519", s.path, said)
 
 
 def _faces_at(d: Drawing, s: Structure, points, tick=lambda: None) -> list:
