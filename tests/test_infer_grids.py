@@ -310,8 +310,8 @@ def test_the_rosette_of_seven_is_a_round_field(tmp_path):
 def test_a_rectangular_hex_field_law(tmp_path_factory, p, kw, kh, shift, dp):
     """Law: a hex lattice of pitch ``p`` (holes 0.3 p) clipped to a field ``kw`` by ``kh``
     pitches (its middle row on the centre or shifted half a pitch; the fewest whole pitches
-    that hold those holes) is inferred as one grid whose field is that size, and its pitch edited by ``dp`` gives the same field filled at
-    the new pitch."""
+    that hold those holes) is inferred as one grid whose field is that size, and its pitch
+    edited by ``dp`` gives the same field filled at the new pitch."""
     tmp = tmp_path_factory.mktemp("rlaw")
     src = tmp / "h.dxf"
     n = hex_in_rect(src, p, 0.3 * p, kw * p, kh * p, shift=shift, W=120.0, H=120.0,
@@ -320,7 +320,11 @@ def test_a_rectangular_hex_field_law(tmp_path_factory, p, kw, kh, shift, dp):
         return
     # the field the drawing says: the fewest whole pitches each way that hold those holes
     # (a field a pitch narrower holding the same holes is not told apart by the drawing)
-    for fw, fh in (((kw - 1) * p, kh * p), (kw * p, (kh - 1) * p)):
+    # (nor is a square field that holds the same holes: taken as square, one number)
+    big = max(kw, kh) * p
+    for fw, fh in (((kw - 1) * p, kh * p), (kw * p, (kh - 1) * p), (big, big)):
+        if kw == kh and fw == big:
+            break
         if hex_in_rect(tmp / "x.dxf", p, 0.3 * p, fw, fh, shift=shift, W=120.0, H=120.0,
                        c=(60.0, 60.0)) == n:
             return
