@@ -338,3 +338,30 @@ def test_a_rectangular_hex_field_law(tmp_path_factory, p, kw, kh, shift, dp):
     hex_in_rect(want, p + dp, 0.3 * p, kw * p, kh * p, shift=shift, W=120.0, H=120.0,
                 c=(60.0, 60.0))
     _edited_is(tmp, text, "holes_pitch", f"{p + dp} mm", want)
+
+
+def row_and_pair(path, p: float = 15.0, n: int = 4) -> None:
+    """A plate 100 x 60 with a row of ``n`` holes 4 mm, ``p`` apart along y = 45, its right
+    end 15 mm from the right edge, and two more such holes side by side near the bottom-left
+    corner (so the six are no one pattern and no two features: the rows among them)."""
+    doc, m = _doc(100.0, 60.0)
+    for i in range(n):
+        m.add_circle((85 - i * p, 45.0), 2.0)
+    for x in (10.0, 18.0):
+        m.add_circle((x, 10.0), 2.0)
+    doc.saveas(path)
+
+
+@pytest.mark.parametrize("param,value,kw", [("holes_pitch", "12 mm", {"p": 12.0}),
+                                            ("holes_n", "5", {"n": 5})], ids=["pitch", "count"])
+def test_a_row_among_other_holes_keeps_its_end_by_the_edge(tmp_path, param, value, kw):
+    """A row found among equal holes of no one pattern is placed by its end nearer an edge
+    (its right end, 15 mm from the right), not by its first member (its left end, which a new
+    pitch or count kept, so that the row's right end moved: 85 -> 76 mm at pitch 12)."""
+    src = tmp_path / "r.dxf"
+    row_and_pair(src)
+    text = _infer(tmp_path, src)
+    assert "param holes_pitch = 15 mm" in text and "param holes_n = 4" in text, text
+    want = tmp_path / "want.dxf"
+    row_and_pair(want, **kw)
+    _edited_is(tmp_path, text, param, value, want)

@@ -703,10 +703,14 @@ class _Part(_Anchored, _MakerFeatures):
                                         (first[axis], mid))
                     pitch = self.p(hn + "_pitch", step, times=len(run))
                     c = [None, None]
-                    f0 = self.at(first[1 - axis], 1 - axis, ref=mid)
-                    c[1 - axis] = f"i * {pitch}" if f0 == "0" else f"{f0} + i * {pitch}"
-                    c[axis] = self.at(first[axis], axis)
                     cnt = self.p(hn + "_n", len(run), unit="")
+                    # by its middle on the centre line, else by its end nearer an edge
+                    # (never by its first member: a new pitch or count keeps that end)
+                    c[1 - axis] = self.from_body_centre(
+                        1 - axis, f"(i - ({cnt} - 1) / 2) * {pitch}", mid) \
+                        if self.on_centre(mid, 1 - axis) else \
+                        self.run_at(run[0][0], run[-1][0], 1 - axis, "i", cnt, pitch)
+                    c[axis] = self.at(first[axis], axis)
                     w.emit(depth, f"for i in range({cnt}) {{")
                     self.hole_block(depth + 1, hn, sh, f"({c[0]}, {c[1]})", sizes)
                     w.emit(depth, "}")
