@@ -83,7 +83,7 @@ def flange(diameter=100.0, bore=40.0, pcd=75.0, count=8, hole=8.0) -> bytes:
     return _bytes(doc)
 
 
-def grille(width=80.0, height=80.0, hole=5.0, pitch=7.0, corner=3.4, field=(49.0, 49.0)) \
+def grille(width=80.0, height=80.0, hole=5.0, pitch=7.0, corner=3.4, field=(49.0, 42.0)) \
         -> bytes:
     """A fan grille: a hex (staggered) grid of holes filling a vent field of ``field`` (mm)
     centred on the plate (at the defaults 7 rows of 7 and 6 holes; issue 85: a new pitch

@@ -261,8 +261,8 @@ def _hex_rect(centers: list, r: float):
     2`` apart, every row centred on one vertical line (so each row holds every node of the
     lattice within the field's width: a vent field cut into a panel); ``shift`` 1 when the
     middle row has no hole on the centre; the field's width and height by
-    :func:`_field_size`, one size for both when a whole number of pitches keeps those holes
-    both ways (a square field); else None."""
+    :func:`_field_size` (the fewest whole pitches that keep those holes, as for a round
+    field); else None."""
     st = _stagger(centers)
     if st is None:
         return None
@@ -276,13 +276,9 @@ def _hex_rect(centers: list, r: float):
     # the middle row's count: odd when it has a hole on the centre
     n_mid = na if mid % 2 == 0 else nb
     shift = 0 if n_mid % 2 else 1
-    # the widths and heights that keep exactly these holes: a square field when a whole
-    # number of pitches does both ways (the field told by one number), else each its own
+    # the widths and heights that keep exactly these holes, each its own size
     wide = (2 * (max(ha, hb) + r), 2 * (min(ha, hb) + pitch + r))
     high = (2 * (mid * dy + r), 2 * ((mid + 1) * dy + r))
-    side = math.ceil(max(wide[0], high[0]) / pitch - 1e-9) * pitch
-    if side < min(wide[1], high[1]) - EQUAL_TOL:
-        return (cx, cy), pitch, shift, side, side
     return (cx, cy), pitch, shift, _field_size(*wide, pitch), _field_size(*high, pitch)
 
 
