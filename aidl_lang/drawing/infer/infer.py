@@ -45,9 +45,8 @@ from ...geometry.curves import Loop
 from .attachments import _attachments, _circle_attachments, _notches
 from .params import _Params, _ctor, _deg, _hole_name, _r
 from .patterns import (_Cells, _copies, _grid, _line, _polar,
-                       _polar_chain, _polar_polys, _runs, _stagger, _steps, _hex_field, _hex_rect, _whole,
-                       _features,
-                       _unknown)
+                       _polar_chain, _polar_polys, _runs, _stagger, _steps, _hex_field,
+                       _hex_rect, _whole, _features, _unknown)
 from .shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                      recognise)
 from .anchors import _Anchored
@@ -875,8 +874,9 @@ class _Part(_Anchored, _MakerFeatures):
                       f"the centre")
         w.emit(depth, f"for j in range(-{k}, {k} + 1) {{")
         w.emit(depth + 1, f"for i in range(-{k}, {k} + 1) {{")
-        ifs = [f"norm(({x}, {y}))" + f" + {d} / 2 <= {f[0]} / 2 + 1e-7 mm"] if len(f) == 1 \
-            else [f"abs({v}) + {d} / 2 <= {fk} / 2 + 1e-7 mm" for v, fk in ((x, f[0]), (y, f[1]))]
+        # the hole whole in the field: round, or across and up in a rectangle
+        ifs = [f"norm(({x}, {y})) + {d} / 2 <= {f[0]} / 2 + 1e-7 mm"] if len(f) == 1 else \
+            [f"abs({v}) + {d} / 2 <= {fk} / 2 + 1e-7 mm" for v, fk in ((x, f[0]), (y, f[1]))]
         for n, cond in enumerate(ifs):
             w.emit(depth + 2 + n, f"if {cond} {{")
         self.hole_block(depth + 2 + len(ifs), hn, sh, f"({_add0(ax, x)}, {_add0(ay, y)})",

@@ -7,7 +7,9 @@ when there is none.  Every pattern is checked member by member to
 
 * points (the centres of equal holes): a whole turn round a centre (:func:`_polar`, a bolt
   circle), an axis-aligned row, column or grid (:func:`_grid`), evenly spaced on one line
-  (:func:`_line`), runs of equal steps (:func:`_runs`);
+  (:func:`_line`), runs of equal steps (:func:`_runs`), a staggered grid (:func:`_stagger`),
+  a hex lattice clipped to a round or rectangular field (:func:`_hex_field`,
+  :func:`_hex_rect`; the field's size by :func:`_field_size`);
 * an outline that is one run of pieces turned ``n`` times round a centre (:func:`_polar_chain`,
   a gear or a star) and polygons turned evenly round a centre (:func:`_polar_polys`, teeth);
 * single strokes that are a family of ticks, along a line or round a centre
