@@ -83,17 +83,21 @@ def flange(diameter=100.0, bore=40.0, pcd=75.0, count=8, hole=8.0) -> bytes:
     return _bytes(doc)
 
 
-def grille(width=80.0, height=80.0, hole=5.0, pitch=7.0, corner=3.4) -> bytes:
-    """A fan grille: a hex (staggered) grid of holes of 7 x 7 rows centred on the plate, a
-    corner hole 5 mm in from each side."""
+def grille(width=80.0, height=80.0, hole=5.0, pitch=7.0, corner=3.4, field=(49.0, 42.0)) \
+        -> bytes:
+    """A fan grille: a hex (staggered) grid of holes filling a vent field of ``field`` (mm)
+    centred on the plate (at the defaults 7 rows of 7 and 6 holes; issue 85: a new pitch
+    refills the field), a corner hole 5 mm in from each side."""
     doc, m = _doc()
     _rect(m, 0, 0, width, height)
     c = (width / 2, height / 2)
     dy = pitch * math.sqrt(3) / 2
-    for j in range(-3, 4):
+    for j in range(-20, 21):
         off = pitch / 2 if j % 2 else 0.0
-        for i in range(-3, 4 if not j % 2 else 3):
-            m.add_circle((c[0] + i * pitch + off, c[1] + j * dy), hole / 2)
+        for i in range(-20, 21):
+            x, y = i * pitch + off, j * dy
+            if abs(x) + hole / 2 <= field[0] / 2 + 1e-9 and abs(y) + hole / 2 <= field[1] / 2 + 1e-9:
+                m.add_circle((c[0] + x, c[1] + y), hole / 2)
     for sx in (5, width - 5):
         for sy in (5, height - 5):
             m.add_circle((sx, sy), corner / 2)

@@ -45,17 +45,28 @@ def hex_in_circle(path, p: float, d: float, field: float, c=(40.0, 45.0), W=80.0
     return n
 
 
-def stagger(path, p: float, cols: int = 5, rows: int = 3, c=(40.0, 25.0)) -> None:
-    """A plate 80 x 100 with a staggered grid of ``rows`` rows about ``c`` (12 mm above the
-    bottom row's... its centre 25 mm up, not on the plate's centre line), rows of ``cols``
-    and ``cols - 1`` holes, ``p`` apart, the rows ``p sqrt(3) / 2`` apart."""
-    doc, m = _doc(80.0, 100.0)
-    dy = p * math.sqrt(3) / 2
-    for j in range(rows):
-        n = cols - j % 2
-        for i in range(n):
-            m.add_circle((c[0] + (i - (n - 1) / 2) * p, c[1] + (j - (rows - 1) / 2) * dy), 1.5)
+def hex_in_rect(path, p: float, d: float, fw: float, fh: float, c=(40.0, 45.0),
+                shift: int = 0, W: float = 80.0, H: float = 90.0) -> int:
+    """A plate with the holes (diameter ``d``) of a hex lattice of pitch ``p`` about ``c``
+    (its middle row shifted half a pitch when ``shift``) that lie whole in a rectangular
+    field ``fw`` x ``fh`` (a vent field); returns the number of holes."""
+    doc, m = _doc(W, H)
+    dy, n = p * math.sqrt(3) / 2, 0
+    for j in range(-20, 21):
+        for i in range(-20, 21):
+            x, y = (i + (j + shift) % 2 / 2) * p, j * dy
+            if abs(x) + d / 2 <= fw / 2 + 1e-9 and abs(y) + d / 2 <= fh / 2 + 1e-9:
+                m.add_circle((c[0] + x, c[1] + y), d / 2)
+                n += 1
     doc.saveas(path)
+    return n
+
+
+def stagger(path, p: float) -> None:
+    """A plate 80 x 100 with a staggered grid about (40, 25) (its centre 25 mm up, not on the
+    plate's centre line): at pitch 8, rows of 5, 4 and 5 holes 3 mm, the rows ``p sqrt(3) /
+    2`` apart, the lattice's nodes in a field 40 x 24 (five pitches by three)."""
+    hex_in_rect(path, p, 3.0, 40.0, 24.0, c=(40.0, 25.0), shift=1, H=100.0)
 
 
 def _same(a, b) -> tuple:
@@ -165,8 +176,8 @@ def grid_by_top(path, p: float, rows: int = 2) -> None:
                          ids=["stagger", "grid-by-top"])
 def test_a_grid_keeps_its_centre_or_its_end_by_the_edge(tmp_path, draw, param, old, new):
     """A staggered grid centred 25 mm up a 100 mm plate (rows of 5, 4, 5) keeps its centre
-    when its pitch changes (it was placed from its first row: its middle moved 0.87 mm per
-    mm of pitch); a grid whose top row is 12 mm below the top edge, its middle 3 mm off the
+    when its pitch changes and refills its field (it was placed from its first row: its
+    middle moved 0.87 mm per mm of pitch; then it kept its counts); a grid whose top row is 12 mm below the top edge, its middle 3 mm off the
     centre line (not symmetric about it, so not centred), keeps its top row (it was placed
     from its bottom, first, row)."""
     src = tmp_path / "g.dxf"
@@ -257,3 +268,96 @@ def test_a_feature_once_missed_comes_back_with_its_params(tmp_path, draw, held, 
     want = tmp_path / "want.dxf"
     draw(want, new)
     _edited_is(tmp_path, text, param, f"{new} mm", want)
+
+
+def test_a_hex_grid_in_a_rectangular_field_is_one_grid(tmp_path):
+    """A vent field 40 x 32 cut with a hex lattice of pitch 10 (holes 2.5: rows of 4, 3 and
+    4): one grid with `holes_pitch`, `holes_d`, `holes_field_width` and
+    `holes_field_height` (it was a staggered grid of fixed counts: a new pitch kept 4-3-4
+    holes and overran or left empty the field, and the field had no param); a new pitch
+    refills the same field (9 mm: 5-4-5), a new field width likewise (50 mm: 5-6-5), a new
+    hole size keeps the holes."""
+    src = tmp_path / "vent.dxf"
+    assert hex_in_rect(src, 10.0, 2.5, 40.0, 32.0) == 11
+    text = _infer(tmp_path, src)
+    assert "param holes_field_width = 40 mm" in text, text
+    assert "param holes_pitch = 10 mm" in text and "holes_cols" not in text, text
+    for param, value, kw in (("holes_pitch", 9.0, {"p": 9.0}), ("holes_field_width", 50.0,
+                             {"fw": 50.0}), ("holes_d", 3.0, {"d": 3.0})):
+        args = {"p": 10.0, "d": 2.5, "fw": 40.0, "fh": 20.0, **kw}
+        want = tmp_path / f"want_{param}.dxf"
+        n = hex_in_rect(want, **args)
+        assert n != 11 or param == "holes_d"
+        _edited_is(tmp_path, text, param, f"{value} mm", want)
+
+
+def test_the_rosette_of_seven_is_a_round_field(tmp_path):
+    """Seven holes, one and the six round it (rows of 2, 3, 2: a staggered grid too): a hex
+    grid in a round field (a whole number of pitches, 24 mm at pitch 8), so that a new
+    pitch refills the circle (5 mm: 19 holes) and `holes_field_d` has a param."""
+    src = tmp_path / "r.dxf"
+    assert hex_in_circle(src, 8.0, 4.0, 24.0) == 7
+    text = _infer(tmp_path, src)
+    assert "param holes_field_d = 24 mm" in text, text
+    want = tmp_path / "want.dxf"
+    assert hex_in_circle(want, 5.0, 4.0, 24.0) == 19
+    _edited_is(tmp_path, text, "holes_pitch", "5 mm", want)
+
+
+@settings(max_examples=6, deadline=None)
+@given(p=st.sampled_from([6.0, 8.0, 10.0]), kw=st.integers(3, 6), kh=st.integers(2, 5),
+       shift=st.integers(0, 1), dp=st.sampled_from([-1.0, -0.5, 1.0]))
+def test_a_rectangular_hex_field_law(tmp_path_factory, p, kw, kh, shift, dp):
+    """Law: a hex lattice of pitch ``p`` (holes 0.3 p) clipped to a field ``kw`` by ``kh``
+    pitches (its middle row on the centre or shifted half a pitch; the fewest whole pitches
+    that hold those holes) is inferred as one grid whose field is that size, and its pitch
+    edited by ``dp`` gives the same field filled at the new pitch."""
+    tmp = tmp_path_factory.mktemp("rlaw")
+    src = tmp / "h.dxf"
+    n = hex_in_rect(src, p, 0.3 * p, kw * p, kh * p, shift=shift, W=120.0, H=120.0,
+                    c=(60.0, 60.0))
+    if n <= 7:          # a row, or the rosette of seven (a round field: the test above)
+        return
+    # the field the drawing says: the fewest whole pitches each way that hold those holes
+    # (a field a pitch narrower holding the same holes is not told apart by the drawing)
+    for fw, fh in (((kw - 1) * p, kh * p), (kw * p, (kh - 1) * p)):
+        if hex_in_rect(tmp / "x.dxf", p, 0.3 * p, fw, fh, shift=shift, W=120.0, H=120.0,
+                       c=(60.0, 60.0)) == n:
+            return
+    text = _infer(tmp, src)
+    if "holes_field_d" in text:     # holes a round field holds too (taken as round first)
+        return
+    got = {k: float(v) for k, v in
+           re.findall(r"^param holes_field_(width|height) = ([\d.]+) mm", text, re.M)}
+    assert got == {"width": kw * p, "height": kh * p}, text
+    want = tmp / "want.dxf"
+    hex_in_rect(want, p + dp, 0.3 * p, kw * p, kh * p, shift=shift, W=120.0, H=120.0,
+                c=(60.0, 60.0))
+    _edited_is(tmp, text, "holes_pitch", f"{p + dp} mm", want)
+
+
+def row_and_pair(path, p: float = 15.0, n: int = 4) -> None:
+    """A plate 100 x 60 with a row of ``n`` holes 4 mm, ``p`` apart along y = 45, its right
+    end 15 mm from the right edge, and two more such holes side by side near the bottom-left
+    corner (so the six are no one pattern and no two features: the rows among them)."""
+    doc, m = _doc(100.0, 60.0)
+    for i in range(n):
+        m.add_circle((85 - i * p, 45.0), 2.0)
+    for x in (10.0, 18.0):
+        m.add_circle((x, 10.0), 2.0)
+    doc.saveas(path)
+
+
+@pytest.mark.parametrize("param,value,kw", [("holes_pitch", "12 mm", {"p": 12.0}),
+                                            ("holes_n", "5", {"n": 5})], ids=["pitch", "count"])
+def test_a_row_among_other_holes_keeps_its_end_by_the_edge(tmp_path, param, value, kw):
+    """A row found among equal holes of no one pattern is placed by its end nearer an edge
+    (its right end, 15 mm from the right), not by its first member (its left end, which a new
+    pitch or count kept, so that the row's right end moved: 85 -> 76 mm at pitch 12)."""
+    src = tmp_path / "r.dxf"
+    row_and_pair(src)
+    text = _infer(tmp_path, src)
+    assert "param holes_pitch = 15 mm" in text and "param holes_n = 4" in text, text
+    want = tmp_path / "want.dxf"
+    row_and_pair(want, **kw)
+    _edited_is(tmp_path, text, param, value, want)

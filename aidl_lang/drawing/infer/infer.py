@@ -45,9 +45,8 @@ from ...geometry.curves import Loop
 from .attachments import _attachments, _circle_attachments, _notches
 from .params import _Params, _ctor, _deg, _hole_name, _r
 from .patterns import (_Cells, _copies, _grid, _line, _polar,
-                       _polar_chain, _polar_polys, _runs, _stagger, _steps, _hex_field, _whole,
-                       _features,
-                       _unknown)
+                       _polar_chain, _polar_polys, _runs, _stagger, _steps, _hex_field,
+                       _hex_rect, _whole, _features, _unknown)
 from .shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
                      recognise)
 from .anchors import _Anchored
@@ -650,13 +649,16 @@ class _Part(_Anchored, _MakerFeatures):
         if gr is not None:
             self.grid(depth, sh, base, gr)
             return True
+        # a hex lattice clipped to a round field, else to a rectangular one (the rosette
+        # of seven is a round field), before any other staggered grid
+        r = sh.args["radius"] if sh.kind == "Circle" else None
+        hf = (_hex_field(cs, r) or _hex_rect(cs, r)) if r is not None else None
+        if hf is not None:
+            self.hex_field(depth, sh, base, hf)
+            return True
         st = _stagger(cs)
         if st is not None:
             self.stagger(depth, sh, base, st)
-            return True
-        hf = _hex_field(cs, sh.args["radius"]) if sh.kind == "Circle" else None
-        if hf is not None:
-            self.hex_field(depth, sh, base, hf)
             return True
         ln = _line(cs)
         if ln is not None:
@@ -700,10 +702,14 @@ class _Part(_Anchored, _MakerFeatures):
                                         (first[axis], mid))
                     pitch = self.p(hn + "_pitch", step, times=len(run))
                     c = [None, None]
-                    f0 = self.at(first[1 - axis], 1 - axis, ref=mid)
-                    c[1 - axis] = f"i * {pitch}" if f0 == "0" else f"{f0} + i * {pitch}"
-                    c[axis] = self.at(first[axis], axis)
                     cnt = self.p(hn + "_n", len(run), unit="")
+                    # by its middle on the centre line, else by its end nearer an edge
+                    # (never by its first member: a new pitch or count keeps that end)
+                    c[1 - axis] = self.from_body_centre(
+                        1 - axis, f"(i - ({cnt} - 1) / 2) * {pitch}", mid) \
+                        if self.on_centre(mid, 1 - axis) else \
+                        self.run_at(run[0][0], run[-1][0], 1 - axis, "i", cnt, pitch)
+                    c[axis] = self.at(first[axis], axis)
                     w.emit(depth, f"for i in range({cnt}) {{")
                     self.hole_block(depth + 1, hn, sh, f"({c[0]}, {c[1]})", sizes)
                     w.emit(depth, "}")
@@ -838,15 +844,20 @@ class _Part(_Anchored, _MakerFeatures):
         self.stats.patterns["staggered grid"] += 1
 
     def hex_field(self, depth: int, sh: Shape, base: str, hf: tuple) -> None:
-        """A hex grid clipped to a round field (``hf`` from :func:`_hex_field`) as one grid:
-        every node of the lattice about the field's centre whose hole lies whole in the
-        field, so that a new pitch, hole size or field keeps one grid filling its field;
-        placed by its centre (:meth:`pos`); params ``_pitch``, ``_d``, ``_field_d``."""
-        (cx, cy), pitch, shift, field = hf
+        """A hex grid clipped to a round field (``hf`` from :func:`_hex_field`) or to a
+        rectangular one (:func:`_hex_rect`) as one grid: every node of the lattice about the
+        field's centre whose hole lies whole in the field, so that a new pitch, hole size or
+        field keeps one grid filling its field; placed by its centre (:meth:`pos`); params
+        ``_pitch``, ``_d`` and ``_field_d`` (``_field_width``, ``_field_height``)."""
+        (cx, cy), pitch, shift, *field = hf
         hn = self.name(base + "s")
         sizes = self.size_params(hn, sh, True)
-        p = self.p(hn + "_pitch", pitch, times=int(field / pitch) + 1)
-        f = self.p(hn + "_field_d", field, "the round field the holes lie whole in")
+        p = self.p(hn + "_pitch", pitch, times=int(max(field) / pitch) + 1)
+        if len(field) == 1:
+            f = [self.p(hn + "_field_d", field[0], "the round field the holes lie whole in")]
+        else:
+            f = [self.p(hn + "_field_width", field[0], "the field the holes lie whole in"),
+                 self.p(hn + "_field_height", field[1])]
         k = self.name(hn + "_k")
         par = "j % 2" if not shift else "(j + 1) % 2"
         x = f"(i + {par} / 2) * {p}"
@@ -854,15 +865,27 @@ class _Part(_Anchored, _MakerFeatures):
         d = sizes.get("diameter", _r(2 * sh.args["radius"]))
         ax, ay = self.at(cx, 0), self.at(cy, 1)
         w = self.w
-        w.emit(depth, f"{k} = floor({f} / {p}) + 1     # nodes each way from the centre")
+        # lengths as points' norms: a bare number given for one (`--set holes_pitch=8`) is
+        # in mm there, as in a point, so that range() still has a plain count
+        big = ", ".join(f"norm(({v}, 0))" for v in f)
+        big = big if len(f) == 1 else f"max({big})"
+        w.emit(depth, f"{k} = floor({big} / norm(({p}, 0))) + 1     # nodes each way from "
+                      f"the centre")
         w.emit(depth, f"for j in range(-{k}, {k} + 1) {{")
         w.emit(depth + 1, f"for i in range(-{k}, {k} + 1) {{")
-        w.emit(depth + 2, f"if norm(({x}, {y})) + {d} / 2 <= {f} / 2 + 1e-7 mm {{")
-        self.hole_block(depth + 3, hn, sh, f"({_add0(ax, x)}, {_add0(ay, y)})", sizes)
-        w.emit(depth + 2, "}")
+        # the hole whole in the field: round, or across and up in a rectangle
+        ifs = [f"norm(({x}, {y})) + {d} / 2 <= {f[0]} / 2 + 1e-7 mm"] if len(f) == 1 else \
+            [f"abs({v}) + {d} / 2 <= {fk} / 2 + 1e-7 mm" for v, fk in ((x, f[0]), (y, f[1]))]
+        for n, cond in enumerate(ifs):
+            w.emit(depth + 2 + n, f"if {cond} {{")
+        self.hole_block(depth + 2 + len(ifs), hn, sh, f"({_add0(ax, x)}, {_add0(ay, y)})",
+                        sizes)
+        for n in reversed(range(len(ifs))):
+            w.emit(depth + 2 + n, "}")
         w.emit(depth + 1, "}")
         w.emit(depth, "}")
-        self.stats.patterns["hex grid in a round field"] += 1
+        self.stats.patterns["hex grid in a " + ("round" if len(f) == 1 else "rectangular")
+                            + " field"] += 1
 
     def single(self, depth: int, sh: Shape, body, centres: list, few: bool = False) -> None:
         """One hole of a size no other has: its sizes params named after it (``slot_length``,

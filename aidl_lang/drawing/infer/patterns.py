@@ -7,7 +7,9 @@ when there is none.  Every pattern is checked member by member to
 
 * points (the centres of equal holes): a whole turn round a centre (:func:`_polar`, a bolt
   circle), an axis-aligned row, column or grid (:func:`_grid`), evenly spaced on one line
-  (:func:`_line`), runs of equal steps (:func:`_runs`);
+  (:func:`_line`), runs of equal steps (:func:`_runs`), a staggered grid (:func:`_stagger`),
+  a hex lattice clipped to a round or rectangular field (:func:`_hex_field`,
+  :func:`_hex_rect`; the field's size by :func:`_field_size`);
 * an outline that is one run of pieces turned ``n`` times round a centre (:func:`_polar_chain`,
   a gear or a star) and polygons turned evenly round a centre (:func:`_polar_polys`, teeth);
 * single strokes that are a family of ticks, along a line or round a centre
@@ -242,10 +244,44 @@ def _hex_field(centers: list, r: float):
                    if (i, j) not in held), default=math.inf)
     if outside - inside <= 2 * EQUAL_TOL:
         return None
-    lo, hi = 2 * (inside + r), 2 * (outside + r)
-    k = math.ceil(lo / pitch - 1e-9)               # a whole number of pitches across
-    field = k * pitch if k * pitch < hi - EQUAL_TOL else _roundest(lo, hi)
-    return (cx, cy), pitch, shift, field
+    return (cx, cy), pitch, shift, _field_size(2 * (inside + r), 2 * (outside + r), pitch)
+
+
+def _field_size(lo: float, hi: float, pitch: float) -> float:
+    """The size (mm) of a field the holes of a grid lie whole in, which the drawing bounds
+    to ``[lo, hi)`` (it keeps exactly those holes) but does not draw: a whole number of
+    pitches (the grille dimensioned as so many holes across), else the roundest number in
+    the range (:func:`_roundest`)."""
+    k = math.ceil(lo / pitch - 1e-9)
+    return k * pitch if k * pitch < hi - EQUAL_TOL else _roundest(lo, hi)
+
+
+def _hex_rect(centers: list, r: float):
+    """``(centre, pitch, shift, field width, field height)`` when ``centers`` are the holes
+    (radius ``r``) of a hexagonal lattice that lie whole inside a rectangular field centred
+    on it: a staggered grid (:func:`_stagger`) of an odd number of rows ``pitch * sqrt(3) /
+    2`` apart, every row centred on one vertical line (so each row holds every node of the
+    lattice within the field's width: a vent field cut into a panel); ``shift`` 1 when the
+    middle row has no hole on the centre; the field's width and height by
+    :func:`_field_size` (the fewest whole pitches that keep those holes, as for a round
+    field); else None."""
+    st = _stagger(centers)
+    if st is None:
+        return None
+    xa, na, xb, nb, pitch, y0, dy, rows = st
+    ha, hb = (na - 1) * pitch / 2, (nb - 1) * pitch / 2
+    if rows % 2 == 0 or abs(xa + ha - xb - hb) > EQUAL_TOL or \
+            abs(dy - pitch * math.sqrt(3) / 2) > EQUAL_TOL:
+        return None
+    mid = rows // 2
+    cx, cy = xa + ha, y0 + mid * dy
+    # the middle row's count: odd when it has a hole on the centre
+    n_mid = na if mid % 2 == 0 else nb
+    shift = 0 if n_mid % 2 else 1
+    # the widths and heights that keep exactly these holes, each its own size
+    wide = (2 * (max(ha, hb) + r), 2 * (min(ha, hb) + pitch + r))
+    high = (2 * (mid * dy + r), 2 * ((mid + 1) * dy + r))
+    return (cx, cy), pitch, shift, _field_size(*wide, pitch), _field_size(*high, pitch)
 
 
 def _whole(centers: list, r: float) -> bool:
