@@ -292,3 +292,19 @@ def test_a_text_spacing_slider_starts_where_letters_stop_overlapping():
     from aidl_lang.studio.gallery import slider_range
     assert slider_range("spacing", "number", 0.9)[:2] == pytest.approx((0.6, 3.6))
     assert slider_range("gain", "number", 0.9)[:2] == pytest.approx((0.2, 3.6))
+
+
+def test_a_screw_slider_offers_only_iso_sizes():
+    """A lifted `screw` param's slider steps are sizes of the metric table (std/fasteners.aidl):
+    2..8 in whole steps offered 7, no ISO size (E0405 from the clearance hole: the Latin
+    hypercube's finding in mounting_plate and wall_shelf); each value offered compiles."""
+    import numpy as np
+    from aidl_lang.studio import gallery
+    iso = {2, 2.5, 3, 4, 5, 6, 8}
+    for id in ("generator/mounting_plate", "generator/wall_shelf"):
+        e = gallery.entry(id)
+        [p] = [p for p in e.params if p["name"] == "screw"]
+        offered = [float(x) for x in np.arange(p["min"], p["max"] + 1e-9, p["step"])]
+        assert offered and set(offered) <= iso, (id, offered)
+        r = gallery.compile_entry(e, {"screw": str(int(max(offered)))})
+        assert r.ok, [d.message for d in r.errors]
