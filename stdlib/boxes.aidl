@@ -83,12 +83,16 @@ def sliding_lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, fi
     ll = wo - t - c
     ly = cy + wo / 2 + ho + 2 * gap + ll / 2
     grip = min(30 mm, (lo - 2 * t) / 2)
+    # the pull: 2 t wide, 4 t from the front edge, on a short lid (a thick sheet) at most a
+    # third of the lid wide and in its middle, so a third of the lid stays either side
+    pw = min(2 * t, ll / 3)
+    py = ly - ll / 2 + min(4 * t, ll / 2)
     solid lid {
         plate = Rectangle(center=(cx, ly), width=lo - 2 * t - 2 * c, height=ll)
         hole pull {
-            s = Slot(center=(cx, ly - ll / 2 + 4 * t), length=grip, width=2 * t)
+            s = Slot(center=(cx, py), length=grip, width=pw)
         }
-        pull.s.center == (cx, ly - ll / 2 + 4 * t)
+        pull.s.center == (cx, py)
     }
     bottom.outline.center == (cx, cy)
     back.outline.center == (cx, cy + (wo + ho) / 2 + gap)

@@ -202,3 +202,24 @@ def test_law_mating_finger_panels_never_overlap(tmp_path_factory, finger, sheet,
            f"finger={finger} mm) }}\n")
     r = compile_src(tmp_path_factory.mktemp("law"), src)
     assert fit_codes(r) == [], [d.message for d in r.sink.items if d.code in CODES]
+
+
+@pytest.mark.parametrize("t, width", [(10, 50), (12, 58), (3, 80)])
+def test_sliding_lid_pull_stays_inside_a_short_lid(tmp_path, t, width):
+    """The lid's pull hole, re-read from the DXF: inside the lid with a wall of at least 3 t
+    (a long lid) or a third of the lid (a short one) before and behind it.  On a thick sheet at the narrowest box (thickness 10 mm, width
+    50 mm: a 39.9 mm lid) the pull sat 4 t = 40 mm from its front edge and broke through
+    (W0510 in the sweep); at 3 mm it is where it was (6 mm wide, 12 mm from the front)."""
+    call = (f"sliding_lid_box(length=130 mm, width={width} mm, height=146 mm, thickness={t} mm, "
+            "clearance=0.1 mm)")
+    r = compile_src(tmp_path, program(call, material=t))
+    loops = cut_dxf(r)["lid"]
+    assert len(loops) == 2
+    outer, pull = sorted(loops, key=lambda p: -size([p])[1])
+    ys, ps = [y for _, y in outer], [y for _, y in pull]
+    ll = width - t - 0.1
+    wall = min(min(ps) - min(ys), max(ys) - max(ps))
+    assert wall >= min(3 * t, ll / 3) - 1e-6
+    if t == 3:
+        assert size([pull])[1] == pytest.approx(6, abs=1e-6)
+        assert (min(ps) + max(ps)) / 2 - min(ys) == pytest.approx(12, abs=1e-6)
