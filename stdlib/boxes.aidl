@@ -148,7 +148,10 @@ def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thick
     assert c >= 0 mm and c < t, "the clearance is between 0 and the thickness"
     cw = (li - (cols - 1) * t) / cols  # a compartment's length and width
     rw = (wi - (rows - 1) * t) / rows
-    assert cw > t and rw > t and hd > 2 * t, "the compartments must be larger than the thickness"
+    # cw > t, rw > t and hd > 2 t, written over the arguments (a form's ranges follow them)
+    assert length > (2 * cols + (1 if outside else -1)) * thickness, "the compartments must be longer than the thickness"
+    assert width > (2 * rows + (1 if outside else -1)) * thickness, "the compartments must be wider than the thickness"
+    assert height > (3 if outside else 2) * thickness, "the dividers (the walls less the bottom) must be taller than twice the thickness"
     body = finger_box(length=lo, depth=wo, height=ho, thickness=t, finger=finger, closed=false,
                       gap=gap, cx=cx, cy=cy)
     body.bottom.outline.center == (cx, cy)

@@ -308,3 +308,19 @@ def test_a_screw_slider_offers_only_iso_sizes():
         assert offered and set(offered) <= iso, (id, offered)
         r = gallery.compile_entry(e, {"screw": str(int(max(offered)))})
         assert r.ok, [d.message for d in r.errors]
+
+
+def test_divider_tray_ranges_follow_its_counts_and_sheet():
+    """divider_tray's assert, written over its arguments (was over the compartment's width, a
+    local), becomes the lifted entry's ranges: `width` starts past (2 rows + 1) thickness, so
+    a form moves it there and the sweep's combination rows=11, thickness=9.5 mm, width=168 mm
+    (the Latin hypercube's E0405, before) is a value the form does not offer (E0124 at the
+    param) and the range's low end compiles clean."""
+    from aidl_lang.studio import gallery
+    e = gallery.entry("generator/divider_tray")
+    decl = [ln for ln in e.source.splitlines() if ln.startswith("param width")][0]
+    assert "rows" in decl and "thickness" in decl
+    r = gallery.compile_entry(e, {"rows": "11", "thickness": "9.5", "width": "168"})
+    assert r.errors[0].code == "E0124" and "219.5 mm .. 440 mm" in r.errors[0].message
+    r = gallery.compile_entry(e, {"rows": "11", "thickness": "9.5", "width": "219.5"})
+    assert r.ok and [d.code for d in r.diagnostics if d.severity != "info"] == []

@@ -526,14 +526,18 @@ def _in_dependency_order(decls: list[tuple[str, str, set]]) -> list[str]:
     return out
 
 
+# the words of a bound's text that are no argument: calls, units, a ternary's keywords
+_NOT_NAMES = {"min", "max", "abs", "sqrt", "mm", "deg", "cm", "m", "in", "rad", "if", "else",
+              "and", "or", "not", "true", "false"}
+
+
 def _relations_for(name: str, relations: dict, params: set) -> tuple[dict, set]:
     """``relations[name]`` without the bounds that use a name that is not a param here,
     and the params they use."""
     got, uses = {"min": [], "max": []}, set()
     for side in ("min", "max"):
         for t, strict in relations.get(name, {}).get(side, []):
-            used = set(re.findall(r"[A-Za-z_]\w*", t)) - {"min", "max", "abs", "sqrt", "mm",
-                                                           "deg", "cm", "m", "in", "rad"}
+            used = set(re.findall(r"[A-Za-z_]\w*", t)) - _NOT_NAMES
             if used <= params:
                 got[side].append((t, strict))
                 uses |= used
