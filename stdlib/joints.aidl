@@ -36,7 +36,9 @@ def finger_panel(width=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
     qs = [floor(r / finger) for r in runs]
     odds = [q if q % 2 == 1 else q - 1 for q in qs]
     counts = [odds[k] if odds[k] >= 3 else (3 if runs[k] >= 3 * t else 1) for k in range(2)]
-    # the tabs of each edge (bottom, right, top, left), reaching t/2 into the core
+    # the tabs of each edge (bottom, right, top, left), reaching t/2 into the core, at most
+    # half across it (a core thinner than t: the far edge's tabs filled this edge's slots)
+    reach = [0.5 * min(t, runs[1]), 0.5 * min(t, runs[0])]
     for e in range(4) {
         kind = kinds[e]
         run = runs[e % 2]
@@ -45,12 +47,13 @@ def finger_panel(width=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
         for i in range(n) {
             if kind == "flat" or (kind == "fingers") == (i % 2 == 0) {
                 s = t + (i + 0.5) * w
-                side_x = cx + width / 2 - 0.75 * t if e == 1 else cx - width / 2 + 0.75 * t
-                side_y = cy - height / 2 + 0.75 * t if e == 0 else cy + height / 2 - 0.75 * t
+                deep = t + reach[e % 2]
+                side_x = cx + width / 2 - deep / 2 if e == 1 else cx - width / 2 + deep / 2
+                side_y = cy - height / 2 + deep / 2 if e == 0 else cy + height / 2 - deep / 2
                 tx = cx - width / 2 + s if e % 2 == 0 else side_x
                 ty = cy - height / 2 + s if e % 2 == 1 else side_y
-                tab = Rectangle(center=(tx, ty), width=w if e % 2 == 0 else 1.5 * t,
-                                height=w if e % 2 == 1 else 1.5 * t)
+                tab = Rectangle(center=(tx, ty), width=w if e % 2 == 0 else deep,
+                                height=w if e % 2 == 1 else deep)
                 Fixed(tab.center)
             }
         }

@@ -186,20 +186,24 @@ def test_open_finger_box_has_its_flat_edge_at_the_top(tmp_path):
 
 
 @settings(max_examples=8, deadline=None)
-@example(finger=3.1, sheet=6.5, length=120.0)          # the sweep's finding (issue 84)
-@given(sheet=st.sampled_from([1.5, 3.0, 4.5, 6.5, 8.0]),
-       finger=st.floats(min_value=1.0, max_value=12.0).map(lambda f: round(f, 1)),
-       length=st.floats(min_value=60.0, max_value=200.0).map(lambda v: round(v, 1)))
-def test_law_mating_finger_panels_never_overlap(tmp_path_factory, finger, sheet, length):
-    """Over generated (finger, sheet, length), fingers narrower than the sheet included, the
-    assembled finger_box has no collision and no loose panel (W0517/W0518, Manifold's 3D fit
-    check).  Fingers narrower than half the sheet collided before: each kept corner square
-    was 1.5 t square and reached t/2 along the edge, into the next slot (0.64 mm^3 at finger
-    3.1 mm on a 6.5 mm sheet)."""
+@example(finger=3.1, sheet=6.5, length=120.0, core=36.0)     # the sweep's findings (issue 84)
+@example(finger=27.3, sheet=12.0, length=195.0, core=2.4)
+@given(sheet=st.sampled_from([1.5, 3.0, 4.5, 6.5, 8.0, 12.0]),
+       finger=st.floats(min_value=1.0, max_value=30.0).map(lambda f: round(f, 1)),
+       length=st.floats(min_value=60.0, max_value=200.0).map(lambda v: round(v, 1)),
+       core=st.floats(min_value=0.5, max_value=40.0).map(lambda v: round(v, 1)))
+def test_law_mating_finger_panels_never_overlap(tmp_path_factory, finger, sheet, length, core):
+    """Over generated (finger, sheet, length) and the height between the sheets (`core`),
+    fingers narrower than the sheet and walls lower than three sheets included, the assembled
+    finger_box has no collision and no loose panel (W0517/W0518, Manifold's 3D fit check).
+    Before: each kept corner square was 1.5 t square and reached t/2 along the edge, into the
+    next slot under fingers narrower than t/2 (0.64 mm^3 at finger 3.1 mm on a 6.5 mm sheet);
+    each tab reached t/2 into the core, across a core thinner than t into the far edge's
+    slots (3,610 mm^3 in a 26.4 mm high box of 12 mm sheet)."""
     src = ('import "std/joints.aidl"\n'
            f"thickness {sheet} mm\nassembly kit {{ box = finger_box(length={length} mm, "
-           f"depth={round(length * 0.7, 1)} mm, height=50 mm, thickness={sheet} mm, "
-           f"finger={finger} mm) }}\n")
+           f"depth={round(length * 0.7, 1)} mm, height={2 * sheet + core} mm, "
+           f"thickness={sheet} mm, finger={finger} mm, closed=false) }}\n")
     r = compile_src(tmp_path_factory.mktemp("law"), src)
     assert fit_codes(r) == [], [d.message for d in r.sink.items if d.code in CODES]
 
