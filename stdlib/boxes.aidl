@@ -25,8 +25,9 @@ def lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=10 
     wo = width if outside else width + 2 * t
     ho = height if outside else height + 2 * t
     hb = ho - t
-    assert hb - t > t, "the box must be taller than three thicknesses"
-    assert clearance >= 0 mm and clearance < t, "the clearance is between 0 and the thickness"
+    # over the arguments, so a form's ranges follow them (hb > 2 t; c < t)
+    assert height > (3 if outside else 1) * thickness, "the box must be taller than three thicknesses (one, inside)"
+    assert clearance >= 0 mm and clearance < thickness, "the clearance is between 0 and the thickness"
     body = finger_box(length=lo, depth=wo, height=hb, thickness=t, finger=finger, closed=false,
                       gap=gap, cx=cx, cy=cy)
     ly = cy + wo + hb + 2 * gap
@@ -65,7 +66,7 @@ def sliding_lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, fi
     z1 = ho - 3 * t - c  # the top of the liners and the front wall: the lid's seat
     hf = z1 - t          # the height of the liners and the front wall
     assert hf > t, "the box must be taller than five thicknesses"
-    assert c >= 0 mm and c < t, "the clearance is between 0 and the thickness"
+    assert clearance >= 0 mm and clearance < thickness, "the clearance is between 0 and the thickness"
     assert lo > 6 * t and wo > 4 * t, "the box must be longer than six and wider than four thicknesses"
     bottom = finger_panel(width=lo, height=wo, thickness=t, finger=finger, bottom="flat", right="fingers",
                           top="slots", left="fingers", cx=cx, cy=cy)
@@ -83,12 +84,16 @@ def sliding_lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, fi
     ll = wo - t - c
     ly = cy + wo / 2 + ho + 2 * gap + ll / 2
     grip = min(30 mm, (lo - 2 * t) / 2)
+    # the pull: 2 t wide, 4 t from the front edge, on a short lid (a thick sheet) at most a
+    # third of the lid wide and in its middle, so a third of the lid stays either side
+    pw = min(2 * t, ll / 3)
+    py = ly - ll / 2 + min(4 * t, ll / 2)
     solid lid {
         plate = Rectangle(center=(cx, ly), width=lo - 2 * t - 2 * c, height=ll)
         hole pull {
-            s = Slot(center=(cx, ly - ll / 2 + 4 * t), length=grip, width=2 * t)
+            s = Slot(center=(cx, py), length=grip, width=pw)
         }
-        pull.s.center == (cx, ly - ll / 2 + 4 * t)
+        pull.s.center == (cx, py)
     }
     bottom.outline.center == (cx, cy)
     back.outline.center == (cx, cy + (wo + ho) / 2 + gap)
@@ -141,10 +146,13 @@ def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thick
     wi = wo - 2 * t
     hd = ho - t  # the dividers' height: floor to the walls' top
     assert rows >= 1 and cols >= 1, "a tray has at least one row and one column"
-    assert c >= 0 mm and c < t, "the clearance is between 0 and the thickness"
+    assert clearance >= 0 mm and clearance < thickness, "the clearance is between 0 and the thickness"
     cw = (li - (cols - 1) * t) / cols  # a compartment's length and width
     rw = (wi - (rows - 1) * t) / rows
-    assert cw > t and rw > t and hd > 2 * t, "the compartments must be larger than the thickness"
+    # cw > t, rw > t and hd > 2 t, written over the arguments (a form's ranges follow them)
+    assert length > (2 * cols + (1 if outside else -1)) * thickness, "the compartments must be longer than the thickness"
+    assert width > (2 * rows + (1 if outside else -1)) * thickness, "the compartments must be wider than the thickness"
+    assert height > (3 if outside else 2) * thickness, "the dividers (the walls less the bottom) must be taller than twice the thickness"
     body = finger_box(length=lo, depth=wo, height=ho, thickness=t, finger=finger, closed=false,
                       gap=gap, cx=cx, cy=cy)
     body.bottom.outline.center == (cx, cy)
@@ -203,7 +211,7 @@ def hinged_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=
     wo = width if outside else width + 2 * t
     hb = height - t if outside else height + t  # the walls, under the lid
     ll = lo + 2 * t + 2 * c                     # the lid, over the cheeks
-    assert c >= 0 mm and c < t, "the clearance is between 0 and the thickness"
+    assert clearance >= 0 mm and clearance < thickness, "the clearance is between 0 and the thickness"
     rh = (sqrt(p * p + t * t) + c) / 2  # the cheek's hole: round about the pin's corners
     r = rh + max(t / 3, 0.6 mm)         # the cheek's lobe about the pivot: a wall over 0.5 mm
     b = 2 * r                           # the pivot below the lid, `r` in from the back
@@ -317,7 +325,7 @@ def drawer(length=120 mm, depth=100 mm, height=60 mm, thickness=3 mm, finger=10 
     ld = lo - 2 * t - 2 * c  # the drawer's outer size
     dd = do - t - c
     hd = ho - 2 * t - c
-    assert c >= 0 mm and c < t, "the clearance is between 0 and the thickness"
+    assert clearance >= 0 mm and clearance < thickness, "the clearance is between 0 and the thickness"
     assert ld > 4 * t and dd > 4 * t and hd > 4 * t, "the carcass must be larger than six thicknesses"
     dp = min(20 mm, hd / 2)  # the finger pull's diameter
     by = cy + (do + ho) / 2 + gap
@@ -401,7 +409,7 @@ def flex_box(length=120 mm, width=80 mm, height=50 mm, radius=20 mm, thickness=3
     wo = width if outside else width + 2 * t
     ho = height if outside else height + 2 * t
     ro = radius if outside else radius + t
-    assert c >= 0 mm and c < t, "the clearance is between 0 and the thickness"
+    assert clearance >= 0 mm and clearance < thickness, "the clearance is between 0 and the thickness"
     assert ro >= 2 * t + c, "the radius must be at least twice the thickness"
     assert 2 * ro <= wo and 2 * ro <= lo, "the radius is at most half the width and the length"
     hw = ho - 2 * t  # the wall, between the base and the lid

@@ -29,36 +29,47 @@ def finger_panel(width=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
     core = Rectangle(center=(cx, cy), width=width - 2 * t, height=height - 2 * t)
     Fixed(core.center)
     core.center == outline.center
-    # the tabs of each edge (bottom, right, top, left), reaching t/2 into the core
+    # along x and along y: the run between the corner squares and its count of segments,
+    # the largest odd count at least `finger` wide; at least 3 (narrower fingers) while
+    # they stay `thickness` wide, so that the joint interlocks
+    runs = [width - 2 * t, height - 2 * t]
+    qs = [floor(r / finger) for r in runs]
+    odds = [q if q % 2 == 1 else q - 1 for q in qs]
+    counts = [odds[k] if odds[k] >= 3 else (3 if runs[k] >= 3 * t else 1) for k in range(2)]
+    # the tabs of each edge (bottom, right, top, left), reaching t/2 into the core, at most
+    # half across it (a core thinner than t: the far edge's tabs filled this edge's slots)
+    reach = [0.5 * min(t, runs[1]), 0.5 * min(t, runs[0])]
     for e in range(4) {
         kind = kinds[e]
-        run = (width if e % 2 == 0 else height) - 2 * t
-        # the largest odd count of segments at least `finger` wide; at least 3 (narrower
-        # fingers) while they stay `thickness` wide, so that the joint interlocks
-        q = floor(run / finger)
-        odd = q if q % 2 == 1 else q - 1
-        n = 1 if kind == "flat" else (odd if odd >= 3 else (3 if run >= 3 * t else 1))
+        run = runs[e % 2]
+        n = 1 if kind == "flat" else counts[e % 2]
         w = run / n
         for i in range(n) {
             if kind == "flat" or (kind == "fingers") == (i % 2 == 0) {
                 s = t + (i + 0.5) * w
-                side_x = cx + width / 2 - 0.75 * t if e == 1 else cx - width / 2 + 0.75 * t
-                side_y = cy - height / 2 + 0.75 * t if e == 0 else cy + height / 2 - 0.75 * t
+                deep = t + reach[e % 2]
+                side_x = cx + width / 2 - deep / 2 if e == 1 else cx - width / 2 + deep / 2
+                side_y = cy - height / 2 + deep / 2 if e == 0 else cy + height / 2 - deep / 2
                 tx = cx - width / 2 + s if e % 2 == 0 else side_x
                 ty = cy - height / 2 + s if e % 2 == 1 else side_y
-                tab = Rectangle(center=(tx, ty), width=w if e % 2 == 0 else 1.5 * t,
-                                height=w if e % 2 == 1 else 1.5 * t)
+                tab = Rectangle(center=(tx, ty), width=w if e % 2 == 0 else deep,
+                                height=w if e % 2 == 1 else deep)
                 Fixed(tab.center)
             }
         }
     }
-    # corner squares (bottom-left, bottom-right, top-right, top-left)
+    # corner squares (bottom-left, bottom-right, top-right, top-left): t x t, reaching into
+    # the core and along each edge by t/2 but never past half the edge's first segment (a
+    # finger there, as the corner is kept only between "fingers" and "flat" edges): with
+    # fingers narrower than t/2 a full 1.5 t square filled part of the next slot
+    ex = 0.5 * min(t, runs[0] / counts[0])
+    ey = 0.5 * min(t, runs[1] / counts[1])
     for c in range(4) {
         if kinds[c] != "slots" and kinds[(c + 3) % 4] != "slots" {
             sx = -1 if c == 0 or c == 3 else 1
             sy = -1 if c < 2 else 1
-            corner = Rectangle(center=(cx + sx * (width / 2 - 0.75 * t), cy + sy * (height / 2 - 0.75 * t)),
-                               width=1.5 * t, height=1.5 * t)
+            corner = Rectangle(center=(cx + sx * (width / 2 - (t + ex) / 2), cy + sy * (height / 2 - (t + ey) / 2)),
+                               width=t + ex, height=t + ey)
             Fixed(corner.center)
         }
     }

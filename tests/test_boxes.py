@@ -10,6 +10,7 @@ from pathlib import Path
 
 import ezdxf
 import pytest
+from hypothesis import example, given, settings, strategies as st
 
 import aidl_lang
 
@@ -182,3 +183,47 @@ def test_open_finger_box_has_its_flat_edge_at_the_top(tmp_path):
     src = ('import "std/joints.aidl"\nthickness 3 mm\n'
            "assembly kit { box = finger_box(length=120 mm, depth=80 mm, height=50 mm, closed=false) }\n")
     assert fit_codes(compile_src(tmp_path, src)) == []
+
+
+@settings(max_examples=8, deadline=None)
+@example(finger=3.1, sheet=6.5, length=120.0, core=36.0)     # the sweep's findings (issue 84)
+@example(finger=27.3, sheet=12.0, length=195.0, core=2.4)
+@given(sheet=st.sampled_from([1.5, 3.0, 4.5, 6.5, 8.0, 12.0]),
+       finger=st.floats(min_value=1.0, max_value=30.0).map(lambda f: round(f, 1)),
+       length=st.floats(min_value=60.0, max_value=200.0).map(lambda v: round(v, 1)),
+       core=st.floats(min_value=0.5, max_value=40.0).map(lambda v: round(v, 1)))
+def test_law_mating_finger_panels_never_overlap(tmp_path_factory, finger, sheet, length, core):
+    """Over generated (finger, sheet, length) and the height between the sheets (`core`),
+    fingers narrower than the sheet and walls lower than three sheets included, the assembled
+    finger_box has no collision and no loose panel (W0517/W0518, Manifold's 3D fit check).
+    Before: each kept corner square was 1.5 t square and reached t/2 along the edge, into the
+    next slot under fingers narrower than t/2 (0.64 mm^3 at finger 3.1 mm on a 6.5 mm sheet);
+    each tab reached t/2 into the core, across a core thinner than t into the far edge's
+    slots (3,610 mm^3 in a 26.4 mm high box of 12 mm sheet)."""
+    src = ('import "std/joints.aidl"\n'
+           f"thickness {sheet} mm\nassembly kit {{ box = finger_box(length={length} mm, "
+           f"depth={round(length * 0.7, 1)} mm, height={2 * sheet + core} mm, "
+           f"thickness={sheet} mm, finger={finger} mm, closed=false) }}\n")
+    r = compile_src(tmp_path_factory.mktemp("law"), src)
+    assert fit_codes(r) == [], [d.message for d in r.sink.items if d.code in CODES]
+
+
+@pytest.mark.parametrize("t, width", [(10, 50), (12, 58), (3, 80)])
+def test_sliding_lid_pull_stays_inside_a_short_lid(tmp_path, t, width):
+    """The lid's pull hole, re-read from the DXF: inside the lid with a wall of at least 3 t
+    (a long lid) or a third of the lid (a short one) before and behind it.  On a thick sheet at the narrowest box (thickness 10 mm, width
+    50 mm: a 39.9 mm lid) the pull sat 4 t = 40 mm from its front edge and broke through
+    (W0510 in the sweep); at 3 mm it is where it was (6 mm wide, 12 mm from the front)."""
+    call = (f"sliding_lid_box(length=130 mm, width={width} mm, height=146 mm, thickness={t} mm, "
+            "clearance=0.1 mm)")
+    r = compile_src(tmp_path, program(call, material=t))
+    loops = cut_dxf(r)["lid"]
+    assert len(loops) == 2
+    outer, pull = sorted(loops, key=lambda p: -size([p])[1])
+    ys, ps = [y for _, y in outer], [y for _, y in pull]
+    ll = width - t - 0.1
+    wall = min(min(ps) - min(ys), max(ys) - max(ps))
+    assert wall >= min(3 * t, ll / 3) - 1e-6
+    if t == 3:
+        assert size([pull])[1] == pytest.approx(6, abs=1e-6)
+        assert (min(ps) + max(ps)) / 2 - min(ys) == pytest.approx(12, abs=1e-6)

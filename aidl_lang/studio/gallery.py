@@ -422,8 +422,8 @@ def slider_range(name: str, kind: str, value: float,
     Thicknesses 1..12 mm; clearances and backlash 0..4x (at least 1 mm); a gear module
     0.5..6 mm; other lengths 0.25x..4x (0..20 mm for a default of 0); a pressure angle
     14.5..30 deg, a turn -180..180 deg, a slope 0.25x..2x (under 90 deg); gear teeth 8..4x;
-    metric screw sizes 2..8; other counts 1..12; a text's ``spacing`` (in character heights)
-    0.6..4x; other numbers 0.25x..4x; then narrowed to
+    metric screw sizes 2..6 (each whole one an ISO size); other counts 1..12; a text's
+    ``spacing`` (in character heights) 0.6..4x; other numbers 0.25x..4x; then narrowed to
     ``bounds`` (``(lo, hi)``, either None), what the generator asserts
     (:func:`assert_bounds`)."""
     v = float(value)
@@ -453,7 +453,9 @@ def slider_range(name: str, kind: str, value: float,
             if "teeth" in name or name in ("sun", "planet", "ring"):
                 lo, hi = 8.0, max(4 * v, 40.0)
             elif name in ("screw", "size"):
-                lo, hi = 2.0, 8.0
+                # metric sizes (std/fasteners.aidl): a slider of whole steps offers only the
+                # values the table has, M2 to M6 (M2.5 and M8 need `--set`; 7 is no size)
+                lo, hi = 2.0, 6.0
             else:
                 lo, hi = (1.0, max(12.0, v)) if v > 0 else (min(v, 0.0), 12.0)
         elif name == "spacing" and v > 0:
@@ -524,14 +526,18 @@ def _in_dependency_order(decls: list[tuple[str, str, set]]) -> list[str]:
     return out
 
 
+# the words of a bound's text that are no argument: calls, units, a ternary's keywords
+_NOT_NAMES = {"min", "max", "abs", "sqrt", "mm", "deg", "cm", "m", "in", "rad", "if", "else",
+              "and", "or", "not", "true", "false"}
+
+
 def _relations_for(name: str, relations: dict, params: set) -> tuple[dict, set]:
     """``relations[name]`` without the bounds that use a name that is not a param here,
     and the params they use."""
     got, uses = {"min": [], "max": []}, set()
     for side in ("min", "max"):
         for t, strict in relations.get(name, {}).get(side, []):
-            used = set(re.findall(r"[A-Za-z_]\w*", t)) - {"min", "max", "abs", "sqrt", "mm",
-                                                           "deg", "cm", "m", "in", "rad"}
+            used = set(re.findall(r"[A-Za-z_]\w*", t)) - _NOT_NAMES
             if used <= params:
                 got[side].append((t, strict))
                 uses |= used
