@@ -28,7 +28,9 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
     half = pi / (2 * teeth) - backlash / (2 * pitch_r) + tan(pressure_angle) - pressure_angle / (1 rad)
     tip_half = half - t1 + atan(t1) / (1 rad)
     start_half = half - t0 + atan(t0) / (1 rad)
-    assert tip_half > 0, "the teeth come to a point before the tip circle: use more teeth or a smaller pressure angle"
+    # tip_half > 0, written over the arguments alone (half - t1 + atan(t1) > 0), so that a
+    # form's backlash slider ends where the teeth would come to a point
+    assert backlash < module * teeth * (pi / (2 * teeth) + tan(pressure_angle) - pressure_angle / (1 rad) - sqrt(square((teeth + 2) / (teeth * cos(pressure_angle))) - 1) + atan(sqrt(square((teeth + 2) / (teeth * cos(pressure_angle))) - 1)) / (1 rad)), "the teeth come to a point before the tip circle: use more teeth, a smaller pressure angle or less backlash"
     assert root_r > bore / 2, "the bore is larger than the root circle"
     # the flank as n biarcs: both ends of each on the involute with the involute's own
     # direction there, so every join is tangent; n grows with the module (deviation ~ m/n^3)

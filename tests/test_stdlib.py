@@ -239,7 +239,8 @@ def test_gear_with_pointed_teeth_is_a_located_error(tmp_path):
     assert (e.span.file, e.span.line) == (str(p), 2)
     note = e.labels[0]
     assert note.span.file.endswith("gears.aidl") and "inside `spur_gear`" in note.message
-    assert "assert tip_half > 0" in open(note.span.file).read().splitlines()[note.span.line - 1]
+    assert "assert backlash < module * teeth" in \
+        open(note.span.file).read().splitlines()[note.span.line - 1]
 
 
 # ---------------------------------------------------------------------------------------------

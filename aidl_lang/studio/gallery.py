@@ -363,7 +363,8 @@ def assert_relations(template) -> dict[str, dict[str, list[tuple[str, bool]]]]:
     (``assert length > width / 2``, ``radius <= min(width, length) / 2``): ``{name: {"min":
     [(expression text, strict)], "max": [...]}}``, the expression as written in the
     generator's file, over its other arguments only (no locals, no calls but ``min``,
-    ``max``, ``abs``, ``sqrt``).  :func:`synthesize` and :func:`lift_params` make them the
+    ``max``, ``abs``, ``sqrt``, ``square`` and the trigonometric ones; ``pi``: a spur gear's
+    backlash bound where its teeth come to a point).  :func:`synthesize` and :func:`lift_params` make them the
     params' ``min=``/``max=`` (a range that follows the other params), declared after the
     params they use."""
     from ..sources import STDLIB
@@ -372,7 +373,7 @@ def assert_relations(template) -> dict[str, dict[str, list[tuple[str, bool]]]]:
     except OSError:
         return {}
     names = {p.name for p in template.node.params}
-    calls = {"min", "max", "abs", "sqrt"}
+    calls = {"min", "max", "abs", "sqrt", "square", "sin", "cos", "tan", "atan", "pi"}
     out: dict[str, dict[str, list]] = {}
 
     def comparisons(e):
@@ -504,7 +505,22 @@ def _param_decl(name: str, kind: str, text: str, value, bounds=(None, None),
     if rel.get("max"):
         terms = [f"{t} - {_num(step)}{u}" if strict else t for t, strict in rel["max"]]
         hi_t = f"min({', '.join([hi_t] + terms)})"
-    return f"param {name} = {text}, min={lo_t}, max={hi_t}, step={_num(step)}{u}"
+    return _wrapped(f"param {name} = {text}, min={lo_t}, max={hi_t}, step={_num(step)}{u}")
+
+
+def _wrapped(line: str, width: int = 96) -> str:
+    """``line`` broken at spaces inside brackets (where a newline is allowed) so that no
+    line is longer than ``width``, the continuation lines indented by four spaces (a bound as
+    long as a spur gear's backlash, where its teeth come to a point)."""
+    out, cur, depth = [], "", 0
+    for i, word in enumerate(line.split(" ")):
+        if i and depth > 0 and len(cur) + 1 + len(word) > width:
+            out.append(cur)
+            cur = "    " + word
+        else:
+            cur = word if not i else f"{cur} {word}"
+        depth += word.count("(") + word.count("[") - word.count(")") - word.count("]")
+    return "\n".join(out + [cur])
 
 
 def _in_dependency_order(decls: list[tuple[str, str, set]]) -> list[str]:
@@ -527,8 +543,8 @@ def _in_dependency_order(decls: list[tuple[str, str, set]]) -> list[str]:
 
 
 # the words of a bound's text that are no argument: calls, units, a ternary's keywords
-_NOT_NAMES = {"min", "max", "abs", "sqrt", "mm", "deg", "cm", "m", "in", "rad", "if", "else",
-              "and", "or", "not", "true", "false"}
+_NOT_NAMES = {"min", "max", "abs", "sqrt", "square", "sin", "cos", "tan", "atan", "pi", "mm",
+              "deg", "cm", "m", "in", "rad", "if", "else", "and", "or", "not", "true", "false"}
 
 
 def _relations_for(name: str, relations: dict, params: set) -> tuple[dict, set]:
