@@ -194,13 +194,16 @@ def test_labels_on_their_own_layer_move_with_the_hole_they_name(tmp_path):
     assert res.ok
 
 
-def _plate(path, W: float, H: float, circles=(), texts=(), dholes=()) -> None:
+def _plate(path, W: float, H: float, circles=(), texts=(), dholes=(), rects=()) -> None:
     """A W x H plate from (0, 0) with ``circles`` ``(x, y, d)``, centred TEXT ``texts``
-    ``(word, x, y, height)`` and D-holes ``(x, y)`` (radius 5, a flat 3.5 right of centre)."""
+    ``(word, x, y, height)``, D-holes ``(x, y)`` (radius 5, a flat 3.5 right of centre) and
+    rectangular cut-outs ``rects`` ``(x0, y0, x1, y1)``."""
     doc = ezdxf.new("R2010")
     doc.units = 4
     m = doc.modelspace()
     m.add_lwpolyline([(0, 0), (W, 0), (W, H), (0, H)], close=True)
+    for x0, y0, x1, y1 in rects:
+        m.add_lwpolyline([(x0, y0), (x1, y0), (x1, y1), (x0, y1)], close=True)
     for x, y, d in circles:
         m.add_circle((x, y), d / 2)
     for x, y in dholes:
@@ -280,6 +283,18 @@ LABELS = {
     "off the lines of a hole": ((40, 50), {"circles": [(20, 8, 8)],
                                            "texts": [("IN", 10, 15, 3)]},
                                 {"width": "50 mm"}, [(25, 8)], (0, 0)),
+    # "FAN" 35 mm under a hole 20 mm from the top (33 mm from its edge, past 25 mm) but 45 mm
+    # from the bottom edge behind it: nearer the hole than that edge, it names the hole and
+    # moves up 20 with it at 120 mm high (before: it stayed 45 mm from the bottom edge)
+    "nearer its hole than the edge behind it": (
+        (100, 100), {"circles": [(80, 80, 4)], "texts": [("FAN", 80, 45, 3)]},
+        {"height": "120 mm"}, [(80, 100)], (0, 20)),
+    # "IN" 20 mm from the top, in line with a hole 40 mm under it (38 mm from its edge, more
+    # than 25 mm and than the 20 mm to the top edge): the plate's label, it stays 20 mm from
+    # the top (moves 20 at 120 mm high) while the hole, 40 mm from the bottom, stays
+    "nearer the edge behind it than its hole": (
+        (100, 100), {"circles": [(30, 40, 4)], "texts": [("IN", 30, 80, 3)]},
+        {"height": "120 mm"}, [(30, 40)], (0, 20)),
 }
 
 
@@ -294,6 +309,40 @@ def test_a_label_moves_with_the_hole_it_is_in_line_with(tmp_path, case):
     text, circles, _, moved = _edited(tmp_path, src, overrides)
     assert circles == want, text
     assert moved == pytest.approx(move, abs=1e-9), text
+
+
+def test_a_label_on_the_line_through_an_arc_slots_centre_but_off_the_slot_names_nothing(
+        tmp_path):
+    """An arc slot 4 mm wide about (50, 10) at radius 30, from 45 to 135 deg, on a 100 x 60
+    plate: "IN" at (20, 10) is on the horizontal line through its centre, but that line
+    misses the slot (it runs from y = 29 up): the text names nothing and stays 20 mm from
+    the left edge at 140 mm wide while the slot follows the centre line (before: the text
+    followed the slot's centre, moving 20)."""
+    src = tmp_path / "a.dxf"
+    _plate(src, 100, 60, texts=[("IN", 20, 10, 3)])
+    doc = ezdxf.readfile(src)
+    m = doc.modelspace()
+    c, R, w = (50, 10), 30, 4
+    m.add_arc(c, R + w / 2, 45, 135)
+    m.add_arc(c, R - w / 2, 45, 135)
+    for a, (s0, s1) in ((45, (225, 45)), (135, (135, 315))):
+        end = (c[0] + R * math.cos(math.radians(a)), c[1] + R * math.sin(math.radians(a)))
+        m.add_arc(end, w / 2, s0, s1)
+    doc.saveas(src)
+    text, _, arcs, moved = _edited(tmp_path, src, {"width": "140 mm"})
+    assert "ArcSlot(center=(width / 2, 10)" in text, text
+    assert moved == pytest.approx((0, 0), abs=1e-9), text
+
+
+def test_a_label_under_a_cut_out_moves_with_its_centre_when_its_width_changes(tmp_path):
+    """A 22 x 10 mm cut-out 6 mm from the right edge of a 100 x 60 plate, "PWR" centred 15 mm
+    under it: at window_width 30 the cut-out grows away from the edge it is dimensioned
+    from (its centre moves 4 mm left) and its label moves with it (before: it stayed)."""
+    src = tmp_path / "w.dxf"
+    _plate(src, 100, 60, rects=[(72, 30, 94, 40)], texts=[("PWR", 83, 20, 3)])
+    text, _, _, moved = _edited(tmp_path, src, {"window_width": "30 mm"})
+    assert "window_width" in text, text
+    assert moved == pytest.approx((-4, 0), abs=1e-9), text
 
 
 def test_a_label_names_the_hole_of_its_own_size_before_a_pattern_member_in_line(tmp_path):

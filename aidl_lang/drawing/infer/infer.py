@@ -154,6 +154,7 @@ class _Part(_Anchored, _MakerFeatures):
         self.named = _Cells([])             # centres written once, shared (their names:
         self.named_as: list[str] = []       # named_as[i] is named.points[i]'s)
         self.kinds: dict = {}               # (kind, sizes) -> size params (kind_params)
+        self.written: dict = {}             # centre -> its place as written (write_at)
 
     def shared(self, c) -> str | None:
         """The name of the first shared centre within EQUAL_TOL of ``c``, or None."""
@@ -889,8 +890,10 @@ class _Part(_Anchored, _MakerFeatures):
                                    ((0, "width"), (1, "height"))),
                                   (sh.center[k] + sh.args[key] / 2 for k, key in
                                    ((0, "width"), (1, "height"))))
-            at = f"({self.span_at(x0, x1, 0, sizes['width'])}, " \
-                 f"{self.span_at(y0, y1, 1, sizes['height'])})"
+            xy = (self.span_at(x0, x1, 0, sizes["width"]),
+                  self.span_at(y0, y1, 1, sizes["height"]))
+            self.write_at(sh.center, xy)
+            at = f"({xy[0]}, {xy[1]})"
             self.hole_block(depth, hn, sh, at, sizes)
             return
         if sh.kind == "Polygon":
