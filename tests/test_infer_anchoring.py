@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import io
 import math
+import re
 import sys
 
 import ezdxf
@@ -374,3 +375,23 @@ def test_a_boards_holes_listed_together_move_as_one(tmp_path):
     _plate(src, 100, 70, circles=[(x, y, 3.2) for x, y in holes])
     text, circles, _, _ = _edited(tmp_path, src, {"width": "120 mm"})
     assert circles == sorted((round(x + 10, 6), y) for x, y in holes), text
+
+
+def test_two_equal_holes_on_a_slant_are_two_holes_of_their_own(tmp_path):
+    """Two 10 mm holes of a 120 x 70 plate, one on its centre, one 8 mm from its left and top
+    edges: on a slant, they are no row (no one dimensions a pitch along the diagonal of
+    two): each is placed from its own reference and has its own size param, so at 140 mm
+    wide the first follows the centre to x = 70 and the second stays 8 mm from the left
+    edge, and one's new diameter leaves the other's (before: a row of two from the corner
+    hole, the centre one left at x = 60, one `holes_d` for both)."""
+    src = tmp_path / "p.dxf"
+    _plate(src, 120, 70, circles=[(60, 35, 10), (8, 62, 10)])
+    text, circles, _, _ = _edited(tmp_path, src, {"width": "140 mm"})
+    assert circles == [(8, 62), (70, 35)], text
+    names = [n for n in re.findall(r"^param (\w+) = 10 mm", text, re.M)]
+    assert len(names) == 2, text
+    res = aidl_lang.compile(text, path=tmp_path / "d.aidl", overrides={names[0]: "12 mm"})
+    assert res.ok, [str(d) for d in res.errors]
+    radii = sorted(round(e.dxf.radius, 6) for e in ezdxf.read(io.StringIO(res.to_dxf()))
+                   .modelspace() if e.dxftype() == "CIRCLE")
+    assert radii == [5, 6], text

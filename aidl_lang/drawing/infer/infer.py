@@ -659,6 +659,8 @@ class _Part(_Anchored, _MakerFeatures):
         if hf is not None:
             self.hex_field(depth, sh, base, hf)
             return True
+        if len(g) == 2:     # two on a slant: no row a person dimensions, two holes
+            return False    # of their own (each from its edge, its own size: single)
         ln = _line(cs)
         if ln is not None:
             p0, (dx, dy), n = ln
