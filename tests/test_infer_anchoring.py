@@ -377,21 +377,31 @@ def test_a_boards_holes_listed_together_move_as_one(tmp_path):
     assert circles == sorted((round(x + 10, 6), y) for x, y in holes), text
 
 
-def test_two_equal_holes_on_a_slant_are_two_holes_of_their_own(tmp_path):
+def test_two_equal_holes_on_a_slant_are_each_placed_from_their_own_reference(tmp_path):
     """Two 10 mm holes of a 120 x 70 plate, one on its centre, one 8 mm from its left and top
     edges: on a slant, they are no row (no one dimensions a pitch along the diagonal of
-    two): each is placed from its own reference and has its own size param, so at 140 mm
-    wide the first follows the centre to x = 70 and the second stays 8 mm from the left
-    edge, and one's new diameter leaves the other's (before: a row of two from the corner
-    hole, the centre one left at x = 60, one `holes_d` for both)."""
+    two): each is placed from its own reference, one size param for both (a bracket's
+    screws), so at 140 mm wide the first follows the centre to x = 70 and the second stays
+    8 mm from the left edge (before: a row of two from the corner hole, the centre one left
+    at x = 60)."""
     src = tmp_path / "p.dxf"
     _plate(src, 120, 70, circles=[(60, 35, 10), (8, 62, 10)])
     text, circles, _, _ = _edited(tmp_path, src, {"width": "140 mm"})
     assert circles == [(8, 62), (70, 35)], text
-    names = [n for n in re.findall(r"^param (\w+) = 10 mm", text, re.M)]
-    assert len(names) == 2, text
-    res = aidl_lang.compile(text, path=tmp_path / "d.aidl", overrides={names[0]: "12 mm"})
-    assert res.ok, [str(d) for d in res.errors]
-    radii = sorted(round(e.dxf.radius, 6) for e in ezdxf.read(io.StringIO(res.to_dxf()))
-                   .modelspace() if e.dxftype() == "CIRCLE")
-    assert radii == [5, 6], text
+    _, circles, _, _ = _edited(tmp_path, src, {"height": "90 mm"})
+    assert circles == [(8, 82), (60, 45)], text
+    assert re.findall(r"^param (\w+) = 10 mm", text, re.M) == ["holes_d"], text
+
+
+def test_two_holes_left_beside_a_row_of_their_size_stay_by_their_corners(tmp_path):
+    """A row of three 5 mm holes 10 mm apart by the upper right corner of a 150 x 100 plate
+    and two more 5 mm holes 8 mm into its lower left and upper right corners (one group:
+    the upper right one is as near the row as its pitch): the row is a row, the two left
+    over are each placed from their own corner, so at 200 mm wide the lower left one stays
+    at x = 8 and the upper right one moves 50 with its edge (before: listed together,
+    placed by the centre nearest their middle, both moved 25)."""
+    src = tmp_path / "r.dxf"
+    row = [(125 + 10 * i, 80, 5) for i in range(3)]
+    _plate(src, 150, 100, circles=row + [(8, 8, 5), (140, 92, 5)])
+    text, circles, _, _ = _edited(tmp_path, src, {"width": "200 mm"})
+    assert (8, 8) in circles and (190, 92) in circles, text

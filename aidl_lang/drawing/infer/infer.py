@@ -659,8 +659,13 @@ class _Part(_Anchored, _MakerFeatures):
         if hf is not None:
             self.hex_field(depth, sh, base, hf)
             return True
-        if len(g) == 2:     # two on a slant: no row a person dimensions, two holes
-            return False    # of their own (each from its edge, its own size: single)
+        if len(g) == 2:     # two on a slant: no row a person dimensions; each placed from
+            sizes = self.size_params(base + "s", sh, True)     # its own reference, one size
+            for m in g:
+                self.hole_block(depth, self.numbered(base) if base == "hole" else
+                                self.name(base), m, self.pos(m.center), sizes)
+            self.stats.patterns["equal sizes"] += 1
+            return True
         ln = _line(cs)
         if ln is not None:
             p0, (dx, dy), n = ln
@@ -713,7 +718,7 @@ class _Part(_Anchored, _MakerFeatures):
                     self.stats.patterns["row"] += 1
                     done.update(id(m) for _, m in run)
             rest = [m for m in rest if id(m) not in done]
-        if len(rest) > 1:       # no pattern: the instances listed, one loop, one size
+        if len(rest) > 2:       # no pattern: the instances listed, one loop, one size
             # placed together, by the reference nearest their middle (a board's holes move
             # as one when the plate grows)
             mid = [sum(m.center[k] for m in rest) / len(rest) for k in (0, 1)]
@@ -723,10 +728,10 @@ class _Part(_Anchored, _MakerFeatures):
             w.emit(depth, f"for c in [{pts}] {{")
             self.hole_block(depth + 1, hn, sh, "c", sizes)
             w.emit(depth, "}")
-        elif rest:
-            s = rest[0]
-            self.hole_block(depth, self.numbered(base) if base == "hole" else self.name(base),
-                            s, self.pos(s.center), sizes)
+        else:                   # one or two: each from its own reference (a slanted pair)
+            for s in rest:
+                self.hole_block(depth, self.numbered(base) if base == "hole" else
+                                self.name(base), s, self.pos(s.center), sizes)
         if rest:
             self.stats.patterns["equal sizes"] += 1
         return True
