@@ -405,3 +405,22 @@ def test_two_holes_left_beside_a_row_of_their_size_stay_by_their_corners(tmp_pat
     _plate(src, 150, 100, circles=row + [(8, 8, 5), (140, 92, 5)])
     text, circles, _, _ = _edited(tmp_path, src, {"width": "200 mm"})
     assert (8, 8) in circles and (190, 92) in circles, text
+
+
+def test_a_hole_beside_a_row_of_its_size_has_its_own_size(tmp_path):
+    """A column of five 6 mm holes 10 mm apart 20 mm from the left edge of a 50 x 120 plate
+    and one more 6 mm hole 12 mm from that edge on the centre line (one group: it is as
+    near the column as its pitch): the column is a row, the hole beside it a feature of its
+    own, so its new diameter (4 mm) leaves the column's five (before: one `hole_d` for
+    all six)."""
+    src = tmp_path / "c.dxf"
+    _plate(src, 50, 120, circles=[(20, 40 + 10 * i, 6) for i in range(5)] + [(12, 60, 6)])
+    text, _ = import_drawing(src.read_bytes(), src.name, infer=True)
+    own = re.findall(r"^param (hole\d+_d) = 6 mm", text, re.M)
+    assert len(own) == 1, text
+    res = aidl_lang.compile(text, path=tmp_path / "e.aidl", overrides={own[0]: "4 mm"})
+    assert res.ok, [str(d) for d in res.errors]
+    circles = sorted((round(e.dxf.center.x, 6), round(e.dxf.center.y, 6), round(e.dxf.radius, 6))
+                     for e in ezdxf.read(io.StringIO(res.to_dxf())).modelspace()
+                     if e.dxftype() == "CIRCLE")
+    assert circles == [(12, 60, 2)] + [(20, 40 + 10 * i, 3) for i in range(5)], text

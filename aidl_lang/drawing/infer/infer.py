@@ -728,10 +728,11 @@ class _Part(_Anchored, _MakerFeatures):
             w.emit(depth, f"for c in [{pts}] {{")
             self.hole_block(depth + 1, hn, sh, "c", sizes)
             w.emit(depth, "}")
-        else:                   # one or two: each from its own reference (a slanted pair)
-            for s in rest:
-                self.hole_block(depth, self.numbered(base) if base == "hole" else
-                                self.name(base), s, self.pos(s.center), sizes)
+        else:                   # one or two: each from its own reference; beside a row of
+            for s in rest:      # their size, each a feature of its own (its own size param)
+                hn = self.numbered(base) if base == "hole" else self.name(base)
+                own = self.size_params(hn, s, True) if done else sizes
+                self.hole_block(depth, hn, s, self.pos(s.center), own)
         if rest:
             self.stats.patterns["equal sizes"] += 1
         return True
