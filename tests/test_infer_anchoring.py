@@ -424,3 +424,19 @@ def test_a_hole_beside_a_row_of_its_size_has_its_own_size(tmp_path):
                      for e in ezdxf.read(io.StringIO(res.to_dxf())).modelspace()
                      if e.dxftype() == "CIRCLE")
     assert circles == [(12, 60, 2)] + [(20, 40 + 10 * i, 3) for i in range(5)], text
+
+
+def test_a_slanted_pair_beside_a_grid_has_a_size_param_named_for_its_diameter(tmp_path):
+    """A 2 x 2 grid of 4 mm holes and a slanted pair of 3 mm holes: the pair's size param is
+    `holes_2_d` (`holes` is the grid's), a name ending in `_d` as every diameter's (before:
+    `holes_d_2`), and setting it changes the pair's two holes only."""
+    src = tmp_path / "s.dxf"
+    grid = [(10 + 10 * i, 10 + 10 * j, 4) for i in range(2) for j in range(2)]
+    _plate(src, 100, 60, circles=grid + [(60, 10, 3), (90, 50, 3)])
+    text, _ = import_drawing(src.read_bytes(), src.name, infer=True)
+    assert re.findall(r"^param (\w+) = 3 mm", text, re.M) == ["holes_2_d"], text
+    res = aidl_lang.compile(text, path=tmp_path / "e.aidl", overrides={"holes_2_d": "5 mm"})
+    assert res.ok, [str(d) for d in res.errors]
+    radii = sorted(round(e.dxf.radius, 6) for e in ezdxf.read(io.StringIO(res.to_dxf()))
+                   .modelspace() if e.dxftype() == "CIRCLE")
+    assert radii == [2] * 4 + [2.5] * 2, text

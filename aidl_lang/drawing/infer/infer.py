@@ -659,8 +659,10 @@ class _Part(_Anchored, _MakerFeatures):
         if hf is not None:
             self.hex_field(depth, sh, base, hf)
             return True
-        if len(g) == 2:     # two on a slant: no row a person dimensions; each placed from
-            sizes = self.size_params(base + "s", sh, True)     # its own reference, one size
+        if len(g) == 2:
+            # two on a slant: no row a person dimensions; each placed from its own
+            # reference, one size param (`holes_2_d` when `holes` is taken)
+            sizes = self.size_params(self.name(base + "s"), sh, True)
             for m in g:
                 self.hole_block(depth, self.numbered(base) if base == "hole" else
                                 self.name(base), m, self.pos(m.center), sizes)
