@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import io
 import math
+import re
 import sys
 
 import ezdxf
@@ -194,13 +195,16 @@ def test_labels_on_their_own_layer_move_with_the_hole_they_name(tmp_path):
     assert res.ok
 
 
-def _plate(path, W: float, H: float, circles=(), texts=(), dholes=()) -> None:
+def _plate(path, W: float, H: float, circles=(), texts=(), dholes=(), rects=()) -> None:
     """A W x H plate from (0, 0) with ``circles`` ``(x, y, d)``, centred TEXT ``texts``
-    ``(word, x, y, height)`` and D-holes ``(x, y)`` (radius 5, a flat 3.5 right of centre)."""
+    ``(word, x, y, height)``, D-holes ``(x, y)`` (radius 5, a flat 3.5 right of centre) and
+    rectangular cut-outs ``rects`` ``(x0, y0, x1, y1)``."""
     doc = ezdxf.new("R2010")
     doc.units = 4
     m = doc.modelspace()
     m.add_lwpolyline([(0, 0), (W, 0), (W, H), (0, H)], close=True)
+    for x0, y0, x1, y1 in rects:
+        m.add_lwpolyline([(x0, y0), (x1, y0), (x1, y1), (x0, y1)], close=True)
     for x, y, d in circles:
         m.add_circle((x, y), d / 2)
     for x, y in dholes:
@@ -280,6 +284,18 @@ LABELS = {
     "off the lines of a hole": ((40, 50), {"circles": [(20, 8, 8)],
                                            "texts": [("IN", 10, 15, 3)]},
                                 {"width": "50 mm"}, [(25, 8)], (0, 0)),
+    # "FAN" 35 mm under a hole 20 mm from the top (33 mm from its edge, past 25 mm) but 45 mm
+    # from the bottom edge behind it: nearer the hole than that edge, it names the hole and
+    # moves up 20 with it at 120 mm high (before: it stayed 45 mm from the bottom edge)
+    "nearer its hole than the edge behind it": (
+        (100, 100), {"circles": [(80, 80, 4)], "texts": [("FAN", 80, 45, 3)]},
+        {"height": "120 mm"}, [(80, 100)], (0, 20)),
+    # "IN" 20 mm from the top, in line with a hole 40 mm under it (38 mm from its edge, more
+    # than 25 mm and than the 20 mm to the top edge): the plate's label, it stays 20 mm from
+    # the top (moves 20 at 120 mm high) while the hole, 40 mm from the bottom, stays
+    "nearer the edge behind it than its hole": (
+        (100, 100), {"circles": [(30, 40, 4)], "texts": [("IN", 30, 80, 3)]},
+        {"height": "120 mm"}, [(30, 40)], (0, 20)),
 }
 
 
@@ -294,6 +310,40 @@ def test_a_label_moves_with_the_hole_it_is_in_line_with(tmp_path, case):
     text, circles, _, moved = _edited(tmp_path, src, overrides)
     assert circles == want, text
     assert moved == pytest.approx(move, abs=1e-9), text
+
+
+def test_a_label_on_the_line_through_an_arc_slots_centre_but_off_the_slot_names_nothing(
+        tmp_path):
+    """An arc slot 4 mm wide about (50, 10) at radius 30, from 45 to 135 deg, on a 100 x 60
+    plate: "IN" at (20, 10) is on the horizontal line through its centre, but that line
+    misses the slot (it runs from y = 29 up): the text names nothing and stays 20 mm from
+    the left edge at 140 mm wide while the slot follows the centre line (before: the text
+    followed the slot's centre, moving 20)."""
+    src = tmp_path / "a.dxf"
+    _plate(src, 100, 60, texts=[("IN", 20, 10, 3)])
+    doc = ezdxf.readfile(src)
+    m = doc.modelspace()
+    c, R, w = (50, 10), 30, 4
+    m.add_arc(c, R + w / 2, 45, 135)
+    m.add_arc(c, R - w / 2, 45, 135)
+    for a, (s0, s1) in ((45, (225, 45)), (135, (135, 315))):
+        end = (c[0] + R * math.cos(math.radians(a)), c[1] + R * math.sin(math.radians(a)))
+        m.add_arc(end, w / 2, s0, s1)
+    doc.saveas(src)
+    text, _, arcs, moved = _edited(tmp_path, src, {"width": "140 mm"})
+    assert "ArcSlot(center=(width / 2, 10)" in text, text
+    assert moved == pytest.approx((0, 0), abs=1e-9), text
+
+
+def test_a_label_under_a_cut_out_moves_with_its_centre_when_its_width_changes(tmp_path):
+    """A 22 x 10 mm cut-out 6 mm from the right edge of a 100 x 60 plate, "PWR" centred 15 mm
+    under it: at window_width 30 the cut-out grows away from the edge it is dimensioned
+    from (its centre moves 4 mm left) and its label moves with it (before: it stayed)."""
+    src = tmp_path / "w.dxf"
+    _plate(src, 100, 60, rects=[(72, 30, 94, 40)], texts=[("PWR", 83, 20, 3)])
+    text, _, _, moved = _edited(tmp_path, src, {"window_width": "30 mm"})
+    assert "window_width" in text, text
+    assert moved == pytest.approx((-4, 0), abs=1e-9), text
 
 
 def test_a_label_names_the_hole_of_its_own_size_before_a_pattern_member_in_line(tmp_path):
@@ -325,3 +375,68 @@ def test_a_boards_holes_listed_together_move_as_one(tmp_path):
     _plate(src, 100, 70, circles=[(x, y, 3.2) for x, y in holes])
     text, circles, _, _ = _edited(tmp_path, src, {"width": "120 mm"})
     assert circles == sorted((round(x + 10, 6), y) for x, y in holes), text
+
+
+def test_two_equal_holes_on_a_slant_are_each_placed_from_their_own_reference(tmp_path):
+    """Two 10 mm holes of a 120 x 70 plate, one on its centre, one 8 mm from its left and top
+    edges: on a slant, they are no row (no one dimensions a pitch along the diagonal of
+    two): each is placed from its own reference, one size param for both (a bracket's
+    screws), so at 140 mm wide the first follows the centre to x = 70 and the second stays
+    8 mm from the left edge (before: a row of two from the corner hole, the centre one left
+    at x = 60)."""
+    src = tmp_path / "p.dxf"
+    _plate(src, 120, 70, circles=[(60, 35, 10), (8, 62, 10)])
+    text, circles, _, _ = _edited(tmp_path, src, {"width": "140 mm"})
+    assert circles == [(8, 62), (70, 35)], text
+    _, circles, _, _ = _edited(tmp_path, src, {"height": "90 mm"})
+    assert circles == [(8, 82), (60, 45)], text
+    assert re.findall(r"^param (\w+) = 10 mm", text, re.M) == ["holes_d"], text
+
+
+def test_two_holes_left_beside_a_row_of_their_size_stay_by_their_corners(tmp_path):
+    """A row of three 5 mm holes 10 mm apart by the upper right corner of a 150 x 100 plate
+    and two more 5 mm holes 8 mm into its lower left and upper right corners (one group:
+    the upper right one is as near the row as its pitch): the row is a row, the two left
+    over are each placed from their own corner, so at 200 mm wide the lower left one stays
+    at x = 8 and the upper right one moves 50 with its edge (before: listed together,
+    placed by the centre nearest their middle, both moved 25)."""
+    src = tmp_path / "r.dxf"
+    row = [(125 + 10 * i, 80, 5) for i in range(3)]
+    _plate(src, 150, 100, circles=row + [(8, 8, 5), (140, 92, 5)])
+    text, circles, _, _ = _edited(tmp_path, src, {"width": "200 mm"})
+    assert (8, 8) in circles and (190, 92) in circles, text
+
+
+def test_a_hole_beside_a_row_of_its_size_has_its_own_size(tmp_path):
+    """A column of five 6 mm holes 10 mm apart 20 mm from the left edge of a 50 x 120 plate
+    and one more 6 mm hole 12 mm from that edge on the centre line (one group: it is as
+    near the column as its pitch): the column is a row, the hole beside it a feature of its
+    own, so its new diameter (4 mm) leaves the column's five (before: one `hole_d` for
+    all six)."""
+    src = tmp_path / "c.dxf"
+    _plate(src, 50, 120, circles=[(20, 40 + 10 * i, 6) for i in range(5)] + [(12, 60, 6)])
+    text, _ = import_drawing(src.read_bytes(), src.name, infer=True)
+    own = re.findall(r"^param (hole\d+_d) = 6 mm", text, re.M)
+    assert len(own) == 1, text
+    res = aidl_lang.compile(text, path=tmp_path / "e.aidl", overrides={own[0]: "4 mm"})
+    assert res.ok, [str(d) for d in res.errors]
+    circles = sorted((round(e.dxf.center.x, 6), round(e.dxf.center.y, 6), round(e.dxf.radius, 6))
+                     for e in ezdxf.read(io.StringIO(res.to_dxf())).modelspace()
+                     if e.dxftype() == "CIRCLE")
+    assert circles == [(12, 60, 2)] + [(20, 40 + 10 * i, 3) for i in range(5)], text
+
+
+def test_a_slanted_pair_beside_a_grid_has_a_size_param_named_for_its_diameter(tmp_path):
+    """A 2 x 2 grid of 4 mm holes and a slanted pair of 3 mm holes: the pair's size param is
+    `holes_2_d` (`holes` is the grid's), a name ending in `_d` as every diameter's (before:
+    `holes_d_2`), and setting it changes the pair's two holes only."""
+    src = tmp_path / "s.dxf"
+    grid = [(10 + 10 * i, 10 + 10 * j, 4) for i in range(2) for j in range(2)]
+    _plate(src, 100, 60, circles=grid + [(60, 10, 3), (90, 50, 3)])
+    text, _ = import_drawing(src.read_bytes(), src.name, infer=True)
+    assert re.findall(r"^param (\w+) = 3 mm", text, re.M) == ["holes_2_d"], text
+    res = aidl_lang.compile(text, path=tmp_path / "e.aidl", overrides={"holes_2_d": "5 mm"})
+    assert res.ok, [str(d) for d in res.errors]
+    radii = sorted(round(e.dxf.radius, 6) for e in ezdxf.read(io.StringIO(res.to_dxf()))
+                   .modelspace() if e.dxftype() == "CIRCLE")
+    assert radii == [2] * 4 + [2.5] * 2, text

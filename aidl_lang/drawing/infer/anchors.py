@@ -38,7 +38,8 @@ def _tied(gaps: dict) -> int:
 class _Anchored:
     """The placing half of :class:`~.infer._Part`: needs ``anchor`` (the body Shape and its
     size params, or None), ``frame`` (per axis what stays: -1, 0, 1), ``shift`` (terms added
-    to every position, or None), ``named`` / ``named_as`` (shared centres) and ``shared``."""
+    to every position, or None), ``named`` / ``named_as`` (shared centres), ``shared`` and
+    ``written`` (``{centre: (x text, y text)}``, :meth:`write_at`)."""
 
     def plus(self, v: float, term: str, axis: int = 0) -> str:
         if self.shift is not None and self.shift[axis]:
@@ -110,6 +111,22 @@ class _Anchored:
         if side == self.frame[axis]:
             return self.lit(v, axis)
         return _add(self.edge(axis, side), v - (c + side * half))
+
+    def write_at(self, c, at: tuple) -> None:
+        """Note that the feature centred at ``c`` (mm) is written at ``at`` (its x and y
+        text, :meth:`span_at`'s for a cut-out), so that its label follows it
+        (:meth:`written_at`)."""
+        self.written[(round(c[0], 9), round(c[1], 9))] = at
+
+    def written_at(self, v: float, axis: int, base) -> str:
+        """Coordinate ``v`` (mm along ``axis``) of a text beside the feature centred at
+        ``base``: that feature's place as written plus the offset (a label under a cut-out
+        moves with its centre when its width changes, :meth:`write_at`), else placed from
+        the body's reference ``base`` is tied to (:meth:`at`)."""
+        got = self.written.get((round(base[0], 9), round(base[1], 9)))
+        if got is None:
+            return self.at(v, axis, ref=base[axis])
+        return _add(got[axis], v - base[axis])
 
     def on_centre(self, v: float, axis: int) -> bool:
         """Whether coordinate ``v`` (mm along ``axis``) is on the body's centre line."""

@@ -153,6 +153,7 @@ class _Part(_Anchored, _MakerFeatures):
         self.named = _Cells([])             # centres written once, shared (their names:
         self.named_as: list[str] = []       # named_as[i] is named.points[i]'s)
         self.kinds: dict = {}               # (kind, sizes) -> size params (kind_params)
+        self.written: dict = {}             # centre -> its place as written (write_at)
 
     def shared(self, c) -> str | None:
         """The name of the first shared centre within EQUAL_TOL of ``c``, or None."""
@@ -660,6 +661,15 @@ class _Part(_Anchored, _MakerFeatures):
         if st is not None:
             self.stagger(depth, sh, base, st)
             return True
+        if len(g) == 2:
+            # two on a slant: no row a person dimensions; each placed from its own
+            # reference, one size param (`holes_2_d` when `holes` is taken)
+            sizes = self.size_params(self.name(base + "s"), sh, True)
+            for m in g:
+                self.hole_block(depth, self.numbered(base) if base == "hole" else
+                                self.name(base), m, self.pos(m.center), sizes)
+            self.stats.patterns["equal sizes"] += 1
+            return True
         ln = _line(cs)
         if ln is not None:
             p0, (dx, dy), n = ln
@@ -716,7 +726,7 @@ class _Part(_Anchored, _MakerFeatures):
                     self.stats.patterns["row"] += 1
                     done.update(id(m) for _, m in run)
             rest = [m for m in rest if id(m) not in done]
-        if len(rest) > 1:       # no pattern: the instances listed, one loop, one size
+        if len(rest) > 2:       # no pattern: the instances listed, one loop, one size
             # placed together, by the reference nearest their middle (a board's holes move
             # as one when the plate grows)
             mid = [sum(m.center[k] for m in rest) / len(rest) for k in (0, 1)]
@@ -726,10 +736,11 @@ class _Part(_Anchored, _MakerFeatures):
             w.emit(depth, f"for c in [{pts}] {{")
             self.hole_block(depth + 1, hn, sh, "c", sizes)
             w.emit(depth, "}")
-        elif rest:
-            s = rest[0]
-            self.hole_block(depth, self.numbered(base) if base == "hole" else self.name(base),
-                            s, self.pos(s.center), sizes)
+        else:                   # one or two: each from its own reference; beside a row of
+            for s in rest:      # their size, each a feature of its own (its own size param)
+                hn = self.numbered(base) if base == "hole" else self.name(base)
+                own = self.size_params(hn, s, True) if done else sizes
+                self.hole_block(depth, hn, s, self.pos(s.center), own)
         if rest:
             self.stats.patterns["equal sizes"] += 1
         return True
@@ -911,8 +922,10 @@ class _Part(_Anchored, _MakerFeatures):
                                    ((0, "width"), (1, "height"))),
                                   (sh.center[k] + sh.args[key] / 2 for k, key in
                                    ((0, "width"), (1, "height"))))
-            at = f"({self.span_at(x0, x1, 0, sizes['width'])}, " \
-                 f"{self.span_at(y0, y1, 1, sizes['height'])})"
+            xy = (self.span_at(x0, x1, 0, sizes["width"]),
+                  self.span_at(y0, y1, 1, sizes["height"]))
+            self.write_at(sh.center, xy)
+            at = f"({xy[0]}, {xy[1]})"
             self.hole_block(depth, hn, sh, at, sizes)
             return
         if sh.kind == "Polygon":

@@ -45,42 +45,61 @@ def _hole_ref(segs: list) -> tuple:
 def _label_place(part, holes: list):
     """A text's position as :func:`_engraving` writes it (``place(p, size)``, ``p`` the
     text's insertion point, drawing units): with the hole it names, so that it moves with
-    it when the plate grows, else from the body's centre line or nearer edge
-    (:meth:`~.anchors._Anchored.at`).  A text names the nearest hole it is directly above,
-    below or beside (on the line through the hole's centre, within :data:`LABEL_REACH` of
-    its edge; a hole of a size no other hole has before a pattern's member); a text in line
-    with none names none (near a hole but off its lines, it is as likely the plate's).
-    Along an axis on which the text is on the body's centre line it stays on that line."""
+    it when the plate grows or the hole's size changes, else from the body's centre line or
+    nearer edge (:meth:`~.anchors._Anchored.at`).  A text names the nearest hole it is
+    directly above, below or beside: on the line through the hole's centre, that line
+    crossing the hole (an arc slot's centre, off the slot, names nothing), and nearer the
+    hole's edge than :data:`LABEL_REACH` or than the body's edge behind the text (a text
+    sits with what is nearest it); a hole of a size no other hole has before a pattern's
+    member.  A text in line with none names none (near a hole but off its lines, it is as
+    likely the plate's).  The text follows the hole's place as written (a cut-out's centre
+    moves with its width from the edge it is tied to: :meth:`~.anchors._Anchored.
+    written_at`).  Along an axis on which the text is on the body's centre line it stays on
+    that line."""
     if part.anchor is None:
         return lambda p, size: _pt(p)
-    from scipy.spatial import cKDTree
     unit = 25.4 if UNIT.get() == "in" else 1.0
     known: dict = {}
+    cell = 10 * EQUAL_TOL
 
     def index() -> dict:         # on the first text: most drawings have none
         if not known:
             refs = [_hole_ref(segs) for segs in holes]
-            boxes = [_segs_box(segs) for segs in holes]
-            known.update(refs=refs, boxes=boxes, shared=Counter(k for _, k in refs if k),
-                         tree=cKDTree([c for c, _ in refs]) if refs else None,
-                         big=max((math.dist(b[:2], b[2:]) for b in boxes), default=0.0))
+            lines: tuple = ({}, {})         # per axis: the holes whose centre is on a line
+            for i, (c, _) in enumerate(refs):
+                for a in (0, 1):
+                    lines[a].setdefault(math.floor(c[a] / cell), []).append(i)
+            known.update(refs=refs, boxes=[_segs_box(segs) for segs in holes], lines=lines,
+                         shared=Counter(k for _, k in refs if k))
         return known
+
+    def behind(p, a: int, sign: int) -> float:
+        """How far the body's edge is from ``p`` along axis ``a`` on the side ``sign``."""
+        sh = part.anchor[0]
+        half = sh.args["width" if a == 0 else "height"] / 2
+        return abs(sh.center[a] + sign * half - p[a])
 
     def aligned(p) -> int | None:
         k = index()
         best = None
-        for i in k["tree"].query_ball_point(p, LABEL_REACH / unit + k["big"]):
-            (c, key), b = k["refs"][i], k["boxes"][i]
-            if abs(p[0] - c[0]) <= EQUAL_TOL:
-                gap = max(b[1] - p[1], p[1] - b[3])
-            elif abs(p[1] - c[1]) <= EQUAL_TOL:
-                gap = max(b[0] - p[0], p[0] - b[2])
-            else:
-                continue
-            # one of a pattern's size only when no hole of its own is in line
-            rank = (key is not None and k["shared"][key] > 1, gap, i)
-            if 0 < gap <= LABEL_REACH / unit and (best is None or rank < best):
-                best = rank
+        for a in (0, 1):                # a: the axis along which the text is in line
+            o = 1 - a                   # the text is above/below (a = 0) or beside
+            key = math.floor(p[a] / cell)
+            for i in (i for kk in (key - 1, key, key + 1) for i in k["lines"][a].get(kk, ())):
+                (c, key_), b = k["refs"][i], k["boxes"][i]
+                if abs(p[a] - c[a]) > EQUAL_TOL or not b[a] <= p[a] <= b[a + 2]:
+                    continue
+                gap = max(b[o] - p[o], p[o] - b[o + 2])
+                if gap <= 0:
+                    continue
+                # the body's edge on the text's far side from the hole
+                far = behind(p, o, -1 if p[o] < b[o] else 1)
+                if gap > LABEL_REACH / unit and gap >= far:
+                    continue
+                # one of a pattern's size only when no hole of its own is in line
+                rank = (key_ is not None and k["shared"][key_] > 1, gap, i)
+                if best is None or rank < best:
+                    best = rank
         return None if best is None else best[2]
 
     def place(p, size: float) -> str:
@@ -91,6 +110,6 @@ def _label_place(part, holes: list):
         if base is None:
             return f"({part.at(p[0], 0)}, {part.at(p[1], 1)})"
         # on the body's centre line a text stays on it (a title centred on the plate)
-        return "(" + ", ".join(part.at(p[a], a, ref=None if part.on_centre(p[a], a)
-                                       else base[a]) for a in (0, 1)) + ")"
+        return "(" + ", ".join(part.at(p[a], a) if part.on_centre(p[a], a)
+                               else part.written_at(p[a], a, base) for a in (0, 1)) + ")"
     return place
