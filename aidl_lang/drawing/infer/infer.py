@@ -57,6 +57,7 @@ from .features import edge_notches
 from .makers import SINGLE_PARAMS, _MakerFeatures
 from ..chains.layers import _hole_layers
 from .mirror import mirrored_pair, pair_items, write_pair
+from .sinks import Marks, concentric_key
 from ..write.program import (_Names, _Writer, _containers, _cut_notes, _emit_holds, _holds,
                              _ident, _layer_items, _length, _num, _place, _pt, _whole_ellipse)
 from ..write.units import UNIT, in_unit
@@ -154,6 +155,8 @@ class _Part(_Anchored, _MakerFeatures):
         self.named = _Cells([])             # centres written once, shared (their names:
         self.named_as: list[str] = []       # named_as[i] is named.points[i]'s)
         self.kinds: dict = {}               # (kind, sizes) -> size params (kind_params)
+        self.marks: Marks | None = None     # the import's countersink marks (sinks.py)
+        self.sunk: dict = {}                # hole key -> its marks (Marks.attach)
 
     def shared(self, c) -> str | None:
         """The name of the first shared centre within EQUAL_TOL of ``c``, or None."""
@@ -405,6 +408,8 @@ class _Part(_Anchored, _MakerFeatures):
             key = (sh.kind,) + tuple(round(x, 6) if isinstance(x, float) else x
                                      for x in sh.size)
             groups.setdefault(key, []).append(sh)
+        if self.marks is not None:
+            self.sunk = self.marks.attach(groups)
         singles = []
         centres = []          # bolt circle centres, for naming a bore
         self.share_centres(depth, groups, body)
@@ -533,6 +538,8 @@ class _Part(_Anchored, _MakerFeatures):
         var = "h"
         self.w.emit(depth, f"hole {hn} {{ {var} = {_ctor(sh, center, sizes)} }}")
         self.w.emit(depth, f"Fixed({hn}.{var})")
+        if self.sunk and sh.kind == "Circle" and (got := self.sunk.get(concentric_key(sh))):
+            self.marks.write(self, depth, hn, sh, center, got)
 
     def size_params(self, base: str, sh: Shape, many: bool) -> dict:
         """Params for a repeated shape's sizes (``many``), else none (literal numbers)."""
@@ -901,7 +908,7 @@ class _Part(_Anchored, _MakerFeatures):
 
 
 def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d: Drawing,
-           prefix: str, shift=None):
+           prefix: str, shift=None, marks: Marks | None = None):
     """Write the solid ``name`` of ``d``; returns how its labels are placed
     (:func:`_label_place`: a drawing of texts on their own layer uses it too)."""
     if _unknown(d) or (d.engrave is not None and _unknown(d.engrave)):
@@ -910,6 +917,7 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
         return lambda p, size: _pt(p)
     part = _Part(w, params, stats, prefix)
     part.shift = shift
+    part.marks = marks
     loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
     # whole ellipses are loops too: a part's outline, a hole, an island in a hole
     every = loops + [[_whole_ellipse(el)] for el in d.ellipses]
@@ -1000,6 +1008,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
     items = in_unit(_layer_items(layers, parts, deadline, source, w.notes, w.overlaps))
     items = _copies(items, deadline)
     items = _named_parts(pair_items(items, deadline))
+    marks = Marks(items)        # countersinks, written with their holes
     solids = sum(1 for it in items if it[0] == "solid")
     multi = len(items) > 1 or any(len(it) > 3 for it in items)
     depth = 1 if multi else 0
@@ -1021,7 +1030,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
             sy = f"k * {params.add(pre + 'pitch_y' if sx else pre + 'pitch', dy, times=n)}" \
                 if abs(dy) > ROUND_TOL else None
             w.emit(depth, f"for k in range({params.add(pre + 'n', n, 'copies', unit='')}) {{")
-            _solid(w, params, stats, depth + 1, name, d, pre, (sx, sy))
+            _solid(w, params, stats, depth + 1, name, d, pre, (sx, sy), marks)
             if multi:
                 w.emit(depth + 1, f"Fixed({name})")
             w.emit(depth, "}")
@@ -1030,17 +1039,20 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
         elif kind == "solid" and (pair := mirrored_pair(d, deadline)) is not None:
             word = _named_parts([("solid", "part", pair[0])])[0][1]
             write_pair(w, depth, name if name != word else word + "s", pair[0], pair[1], d.box(),
-                       word, lambda dp, nm, dd: _solid(w, params, stats, dp, nm, dd, ""))
+                       word, lambda dp, nm, dd: _solid(w, params, stats, dp, nm, dd, "", marks=marks))
             stats.patterns["mirrored part"] += 1
             name = name if name != word else word + "s"
         else:
             placed = _solid(w, params, stats, depth, name, d,
-                            short[name] + "_" if solids > 1 else "")
+                            short[name] + "_" if solids > 1 else "", marks=marks)
             place = placed if solids == 1 else _at_as_drawn
         names.append(name)
     # a layer of texts beside one part (LABELS beside OUTLINE): its labels placed with the
     # part's features, as the part's own engraving is
     for at, name, d in reversed(drawings):
+        if marks.used and (d := marks.left(d)).empty and name in names:
+            names.remove(name)          # every mark of it written with its hole
+            continue
         start = len(w.lines)
         w.emit(depth, f"drawing {name} {{")
         _engraving(w, depth + 1, d, stats, place)

@@ -1,0 +1,96 @@
+"""``aidl import --infer``: countersinks and counterbores written with their holes (issue 85,
+"countersink pairs").  A layer of circles named for them (COUNTERSINK, CSK, C-BORE, Spotface:
+:data:`~..chains.layers._SINK_LAYER`) is marked, not cut; a mark concentric with a hole and
+larger than it is the top circle of that hole's countersink.  When every hole of one kind and
+size has such a mark, of one diameter, each mark is written in the hole's statement - its
+centre the hole's centre as written, its diameter a param (``countersink_d``) - so that
+every edit that moves the holes (the plate's size, an inset, a pitch) moves the marks with
+them.  A mark on no hole, or on a group only partly marked, stays where the drawing puts it,
+in the layer's ``drawing``.  Lengths in the drawing's unit; the results are program text.
+"""
+from __future__ import annotations
+
+import re
+from .shapes import EQUAL_TOL, Shape
+from ..chains.layers import _SINK_LAYER
+from dataclasses import replace
+
+from ..model import Drawing
+
+
+def _word(layer: str) -> str:
+    """What a sink layer's marks are, from its name: countersink, counterbore or spotface."""
+    low = layer.lower()
+    if "bore" in low:
+        return "counterbore"
+    if "spot" in low:
+        return "spotface"
+    return "countersink"
+
+
+class Marks:
+    """The circles of the sink layers of an import: ``circles`` a list of ``(centre, radius,
+    word, id)``; ``used`` the ids written with a hole (:meth:`attach`)."""
+
+    def __init__(self, items: list) -> None:
+        self.circles: list = []
+        self.used: set = set()
+        for kind, name, d, *_ in items:
+            if kind == "drawing" and _SINK_LAYER.search(name) and d.circles and not (
+                    d.outlines or d.paths or d.texts or d.ellipses):
+                self.circles += [(c.center, c.radius, _word(name), id(c)) for c in d.circles]
+        self.words: dict = {}       # (word, diameter) -> its param, one per size of mark
+        self.many = False           # marks of more than one size: each param named by its holes
+
+    def attach(self, groups: dict) -> dict:
+        """``{key: (word, radius, ids)}`` for each group of equal round holes (``groups``:
+        key -> Shapes, as :meth:`~.infer._Part.holes` groups them) whose every hole has a
+        concentric, larger mark of one radius (within EQUAL_TOL)."""
+        if not self.circles:
+            return {}
+        from scipy.spatial import cKDTree
+        tree = cKDTree([c for c, *_ in self.circles])
+        out = {}
+        for key, g in groups.items():
+            if g[0].kind != "Circle":
+                continue
+            found = []
+            for sh in g:
+                hits = [self.circles[i] for i in tree.query_ball_point(sh.center, EQUAL_TOL)
+                        if self.circles[i][1] > sh.args["radius"] + EQUAL_TOL
+                        and self.circles[i][3] not in self.used]
+                if len(hits) != 1:
+                    break
+                found.append(hits[0])
+            if len(found) == len(g) and all(
+                    abs(f[1] - found[0][1]) <= EQUAL_TOL and f[2] == found[0][2] for f in found):
+                out[key] = (found[0][2], found[0][1], [f[3] for f in found])
+        self.many = len({(w, round(r, 6)) for w, r, _ in out.values()}) > 1
+        return out
+
+    def write(self, part, depth: int, hn: str, sh: Shape, center: str, got: tuple) -> None:
+        """The mark of hole ``hn`` (Shape ``sh`` at ``center``, program text) as a
+        ``drawing`` beside it in ``part``: a circle at the same centre, its diameter the
+        param of its word and size (``countersink_d``)."""
+        word, r, ids = got
+        self.used.update(ids)
+        size = (word, round(2 * r, 6))
+        if size not in self.words:
+            # `countersink_d`; of several sizes, by the holes': `corner_countersink_d`
+            base = re.sub(r"_?holes?\d*$", "", hn) if self.many else ""
+            self.words[size] = part.params.add(f"{base}_{word}_d" if base else f"{word}_d",
+                                               2 * r, f"marked about {hn}, not cut")
+        nm = f"{hn}_{word}"
+        part.w.emit(depth, f"drawing {nm} {{ c = Circle(center={center}, "
+                           f"diameter={self.words[size]}) }}")
+        part.w.emit(depth, f"Fixed({nm}.c)")
+
+    def left(self, d: Drawing) -> Drawing:
+        """``d`` (a sink layer's drawing) without the circles written with a hole."""
+        return replace(d, circles=[c for c in d.circles if id(c) not in self.used])
+
+
+def concentric_key(sh: Shape) -> tuple:
+    """The key :meth:`~.infer._Part.holes` groups equal holes by."""
+    return (sh.kind,) + tuple(round(x, 6) if isinstance(x, float) else x for x in sh.size)
+
