@@ -1050,7 +1050,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
     # a layer of texts beside one part (LABELS beside OUTLINE): its labels placed with the
     # part's features, as the part's own engraving is
     for at, name, d in reversed(drawings):
-        if marks.used and (d := marks.left(d)).empty and name in names:
+        if (d := marks.left(name, d)) is None:
             names.remove(name)          # every mark of it written with its hole
             continue
         start = len(w.lines)

@@ -35,12 +35,13 @@ class Marks:
     def __init__(self, items: list) -> None:
         self.circles: list = []
         self.used: set = set()
+        self.names: set = set()     # the sink layers' items
         for kind, name, d, *_ in items:
             if kind == "drawing" and _SINK_LAYER.search(name) and d.circles and not (
                     d.outlines or d.paths or d.texts or d.ellipses):
+                self.names.add(name)
                 self.circles += [(c.center, c.radius, _word(name), id(c)) for c in d.circles]
-        self.words: dict = {}       # (word, diameter) -> its param, one per size of mark
-        self.many = False           # marks of more than one size: each param named by its holes
+        self.words: dict = {}       # hole name -> its marks' param
 
     def attach(self, groups: dict) -> dict:
         """``{key: (word, radius, ids)}`` for each group of equal round holes (``groups``:
@@ -65,29 +66,31 @@ class Marks:
             if len(found) == len(g) and all(
                     abs(f[1] - found[0][1]) <= EQUAL_TOL and f[2] == found[0][2] for f in found):
                 out[key] = (found[0][2], found[0][1], [f[3] for f in found])
-        self.many = len({(w, round(r, 6)) for w, r, _ in out.values()}) > 1
         return out
 
     def write(self, part, depth: int, hn: str, sh: Shape, center: str, got: tuple) -> None:
         """The mark of hole ``hn`` (Shape ``sh`` at ``center``, program text) as a
         ``drawing`` beside it in ``part``: a circle at the same centre, its diameter the
-        param of its word and size (``countersink_d``)."""
+        param of its word, one for each pattern of holes, named by them (``countersink_d``
+        of ``holes``, ``corner_countersink_d`` of ``corner_holes``)."""
         word, r, ids = got
         self.used.update(ids)
-        size = (word, round(2 * r, 6))
-        if size not in self.words:
-            # `countersink_d`; of several sizes, by the holes': `corner_countersink_d`
-            base = re.sub(r"_?holes?\d*$", "", hn) if self.many else ""
-            self.words[size] = part.params.add(f"{base}_{word}_d" if base else f"{word}_d",
-                                               2 * r, f"marked about {hn}, not cut")
+        if hn not in self.words:
+            base = re.sub(r"_?holes?$", "", hn)
+            self.words[hn] = part.params.add(f"{base}_{word}_d" if base else f"{word}_d",
+                                             2 * r, f"marked about {hn}, not cut")
         nm = f"{hn}_{word}"
         part.w.emit(depth, f"drawing {nm} {{ c = Circle(center={center}, "
-                           f"diameter={self.words[size]}) }}")
+                           f"diameter={self.words[hn]}) }}")
         part.w.emit(depth, f"Fixed({nm}.c)")
 
-    def left(self, d: Drawing) -> Drawing:
-        """``d`` (a sink layer's drawing) without the circles written with a hole."""
-        return replace(d, circles=[c for c in d.circles if id(c) not in self.used])
+    def left(self, name: str, d: Drawing) -> Drawing | None:
+        """The drawing item ``name`` (``d``) without the circles written with a hole; None
+        when it is a sink layer's and every circle of it is."""
+        if name not in self.names:
+            return d
+        d = replace(d, circles=[c for c in d.circles if id(c) not in self.used])
+        return None if not d.circles else d
 
 
 def concentric_key(sh: Shape) -> tuple:
