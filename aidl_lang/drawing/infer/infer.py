@@ -57,7 +57,7 @@ from .features import edge_notches
 from .makers import SINGLE_PARAMS, _MakerFeatures
 from ..chains.layers import _hole_layers
 from .mirror import mirrored_pair, pair_items, write_pair
-from .sinks import Marks, concentric_key
+from .sinks import Marks
 from ..write.program import (_Names, _Writer, _containers, _cut_notes, _emit_holds, _holds,
                              _ident, _layer_items, _length, _num, _place, _pt, _whole_ellipse)
 from ..write.units import UNIT, in_unit
@@ -156,7 +156,8 @@ class _Part(_Anchored, _MakerFeatures):
         self.named_as: list[str] = []       # named_as[i] is named.points[i]'s)
         self.kinds: dict = {}               # (kind, sizes) -> size params (kind_params)
         self.marks: Marks | None = None     # the import's countersink marks (sinks.py)
-        self.sunk: dict = {}                # hole key -> its marks (Marks.attach)
+        self.sunk: dict = {}                # id(hole Shape) -> its mark (Marks.attach)
+        self.sinks = None                   # the marks of the holes being written, or None
 
     def shared(self, c) -> str | None:
         """The name of the first shared centre within EQUAL_TOL of ``c``, or None."""
@@ -409,7 +410,7 @@ class _Part(_Anchored, _MakerFeatures):
                                      for x in sh.size)
             groups.setdefault(key, []).append(sh)
         if self.marks is not None:
-            self.sunk = self.marks.attach(groups)
+            self.sunk = self.marks.attach(shapes)
         singles = []
         centres = []          # bolt circle centres, for naming a bore
         self.share_centres(depth, groups, body)
@@ -426,12 +427,14 @@ class _Part(_Anchored, _MakerFeatures):
                 sub = [g[i] for i in part]
                 if len(sub) == 1:
                     singles += sub
-                elif not self.pattern(depth, sub, body, centres):
+                elif not self.sunk_as(sub) or not self.pattern(depth, sub, body, centres):
                     singles += sub
         few = len(singles) <= SINGLE_PARAMS
         for k, sh in enumerate(singles):
             self.check(k, "writing the holes")
+            self.sunk_as([sh])
             self.single(depth, sh, body, centres, few)
+        self.sinks = None
 
     def check(self, k: int, stage: str, every: int = 128) -> None:
         """The import's deadline looked at (``stage``) on every ``every``-th step ``k``."""
@@ -538,8 +541,14 @@ class _Part(_Anchored, _MakerFeatures):
         var = "h"
         self.w.emit(depth, f"hole {hn} {{ {var} = {_ctor(sh, center, sizes)} }}")
         self.w.emit(depth, f"Fixed({hn}.{var})")
-        if self.sunk and sh.kind == "Circle" and (got := self.sunk.get(concentric_key(sh))):
-            self.marks.write(self, depth, hn, sh, center, got)
+        if self.sinks is not None and sh.kind == "Circle":
+            self.marks.write(self, depth, hn, sh, center, self.sinks)
+
+    def sunk_as(self, members: list) -> bool:
+        """Say that the holes written next are ``members`` (:attr:`sinks`: their common
+        countersink, :meth:`~.sinks.Marks.common`); True."""
+        self.sinks = Marks.common(self.sunk, members) if self.sunk else None
+        return True
 
     def size_params(self, base: str, sh: Shape, many: bool) -> dict:
         """Params for a repeated shape's sizes (``many``), else none (literal numbers)."""

@@ -41,32 +41,37 @@ class Marks:
                     d.outlines or d.paths or d.texts or d.ellipses):
                 self.names.add(name)
                 self.circles += [(c.center, c.radius, _word(name), id(c)) for c in d.circles]
-        self.words: dict = {}       # hole name -> its marks' param
+        self.words: dict = {}       # (part, hole name) -> its marks' param
 
-    def attach(self, groups: dict) -> dict:
-        """``{key: (word, radius, ids)}`` for each group of equal round holes (``groups``:
-        key -> Shapes, as :meth:`~.infer._Part.holes` groups them) whose every hole has a
-        concentric, larger mark of one radius (within EQUAL_TOL)."""
+    def attach(self, holes: list) -> dict:
+        """``{id(Shape): (word, radius, mark id)}`` of each round hole of ``holes`` (Shapes)
+        with one concentric, larger mark (within EQUAL_TOL) no other hole took."""
         if not self.circles:
             return {}
         from scipy.spatial import cKDTree
         tree = cKDTree([c for c, *_ in self.circles])
         out = {}
-        for key, g in groups.items():
-            if g[0].kind != "Circle":
+        for sh in holes:
+            if sh.kind != "Circle":
                 continue
-            found = []
-            for sh in g:
-                hits = [self.circles[i] for i in tree.query_ball_point(sh.center, EQUAL_TOL)
-                        if self.circles[i][1] > sh.args["radius"] + EQUAL_TOL
-                        and self.circles[i][3] not in self.used]
-                if len(hits) != 1:
-                    break
-                found.append(hits[0])
-            if len(found) == len(g) and all(
-                    abs(f[1] - found[0][1]) <= EQUAL_TOL and f[2] == found[0][2] for f in found):
-                out[key] = (found[0][2], found[0][1], [f[3] for f in found])
+            hits = [self.circles[i] for i in tree.query_ball_point(sh.center, EQUAL_TOL)
+                    if self.circles[i][1] > sh.args["radius"] + EQUAL_TOL
+                    and self.circles[i][3] not in self.used]
+            if len(hits) == 1:
+                out[id(sh)] = hits[0][1:]
         return out
+
+    @staticmethod
+    def common(sunk: dict, members: list) -> tuple | None:
+        """``(word, radius, mark ids)`` when every one of ``members`` (the Shapes one hole
+        statement writes: a pattern's, or a single hole) has a mark in ``sunk``
+        (:meth:`attach`), all of one word and radius (within EQUAL_TOL); else None (the
+        marks stay as drawn)."""
+        got = [sunk.get(id(sh)) for sh in members]
+        if not got or None in got or any(g[1] != got[0][1] or abs(g[0] - got[0][0]) > EQUAL_TOL
+                                          for g in got):
+            return None
+        return got[0][1], got[0][0], [g[2] for g in got]
 
     def write(self, part, depth: int, hn: str, sh: Shape, center: str, got: tuple) -> None:
         """The mark of hole ``hn`` (Shape ``sh`` at ``center``, program text) as a
@@ -75,13 +80,14 @@ class Marks:
         of ``holes``, ``corner_countersink_d`` of ``corner_holes``)."""
         word, r, ids = got
         self.used.update(ids)
-        if hn not in self.words:
+        key = (id(part), hn)       # a pattern written in several statements: one param
+        if key not in self.words:
             base = re.sub(r"_?holes?$", "", hn)
-            self.words[hn] = part.params.add(f"{base}_{word}_d" if base else f"{word}_d",
+            self.words[key] = part.params.add(f"{base}_{word}_d" if base else f"{word}_d",
                                              2 * r, f"marked about {hn}, not cut")
         nm = f"{hn}_{word}"
         part.w.emit(depth, f"drawing {nm} {{ c = Circle(center={center}, "
-                           f"diameter={self.words[hn]}) }}")
+                           f"diameter={self.words[key]}) }}")
         part.w.emit(depth, f"Fixed({nm}.c)")
 
     def left(self, name: str, d: Drawing) -> Drawing | None:
@@ -91,9 +97,4 @@ class Marks:
             return d
         d = replace(d, circles=[c for c in d.circles if id(c) not in self.used])
         return None if not d.circles else d
-
-
-def concentric_key(sh: Shape) -> tuple:
-    """The key :meth:`~.infer._Part.holes` groups equal holes by."""
-    return (sh.kind,) + tuple(round(x, 6) if isinstance(x, float) else x for x in sh.size)
 
