@@ -782,14 +782,14 @@ class _Part(_Anchored, _MakerFeatures):
         body_c = self.anchor[0].center if self.anchor is not None else None
         out = []
         loops = []
+        # equal steps both ways: one pitch (``one`` needs both counts above 1)
+        square = self.p(hn + "_pitch", dx, times=max(nx, ny)) if one else None
         for axis, (v0, step, n, var) in enumerate(((x0, dx, nx, "i"), (y0, dy, ny, "j"))):
             if n == 1:
                 out.append(self.at(v0, axis))
                 continue
             if one:
-                pitch = self.p(hn + "_pitch", step, times=max(nx, ny)) if axis == 0 else \
-                    out_pitch
-                out_pitch = pitch
+                pitch = square
             else:
                 pitch = self.p(hn + ("_pitch_x" if axis == 0 else "_pitch_y") if both
                                else hn + "_pitch", step, times=n)
