@@ -778,6 +778,10 @@ def random_feature(rng: random.Random, T: dict, kind: str) -> dict:
         f.update(n=rng.choice([3, 4, 5, 6, 8]), d=d, pcd=rng.choice(T["big"]) * 2,
                  bore=rng.choice([0, rng.choice(T["big"])]))
         f["start"] = rng.choice(["axis", "between", "top"])
+        # one reading of the holes drawn: with one at the top, 4 or 8 have one on the x axis
+        # and 6 are half a pitch off it (the x axis is what a person reads from)
+        if f["start"] == "top" and f["n"] % 2 == 0:
+            f["start"] = "axis" if f["n"] % 4 == 0 else "between"
     elif kind == "keyhole":
         f.update(D=rng.choice(T["big"][:3]) / 2, angle=rng.choice([0, 0, 90, 180]))
         f["w"] = f["D"] / 2

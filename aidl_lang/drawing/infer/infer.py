@@ -117,8 +117,11 @@ def _add0(base: str, term: str) -> str:
 def _start_angle(a0: float, n: int, cnt: str) -> str:
     """The angle of hole ``i`` of a bolt circle of ``n`` (the param ``cnt``) whose holes are
     at ``a0 + k 360/n`` (radians), written by the rule that keeps its meaning when the count
-    changes: a hole on the x axis (``i * 360 deg / n``), else one at the top (``90 deg +
-    ...``), else two straddling the x axis (``(i + 0.5) * 360 deg / n``), else from ``a0``."""
+    changes: a hole on the x axis (``i * 360 deg / n``), else two straddling it, half a
+    pitch off (``(i + 0.5) * 360 deg / n``), else one at the top (``90 deg + ...``), else
+    from ``a0``.  Where two rules draw the same holes the x axis is the one a person reads
+    from: 4 or 8 holes with one at the top have one on the x axis; 6 with one at the top
+    are half a pitch off it."""
     step = 2 * math.pi / n
 
     def on(angle: float) -> bool:
@@ -126,10 +129,10 @@ def _start_angle(a0: float, n: int, cnt: str) -> str:
         return abs(k - round(k)) * step * 1e3 <= 1e-6      # 1e-9 rad at 1 m
     if on(0.0):
         return f"i * 360 deg / {cnt}"
-    if on(math.pi / 2):
-        return f"90 deg + i * 360 deg / {cnt}"
     if on(step / 2):
         return f"(i + 0.5) * 360 deg / {cnt}"
+    if on(math.pi / 2):
+        return f"90 deg + i * 360 deg / {cnt}"
     return f"{_deg(a0)} + i * 360 deg / {cnt}"
 
 
