@@ -50,3 +50,36 @@ def test_bolt_circle_count_keeps_its_start(tmp_path, n, start, reading):
     want = sorted((round(C[0] + R * math.cos(a0 + 2 * math.pi * k / m), 6),
                    round(C[1] + R * math.sin(a0 + 2 * math.pi * k / m), 6)) for k in range(m))
     assert len(got) == m and all(math.dist(p, q) <= 1e-6 for p, q in zip(got, want)), (got, want)
+
+
+def test_two_rings_and_a_lone_hole_of_one_size_are_each_their_own(tmp_path):
+    """Two bolt circles of one hole size about the plate's centre (5 on a 60 mm circle, 8 on
+    a 32 mm one) and a lone hole of that size: no one pattern, and too far apart to split by
+    neighbours, they were one list of 14 centres (no pitch circle, no count to edit).  Now
+    split by their distance from the centre: two bolt circles, each its own `_pcd` and `_n`,
+    and the lone hole."""
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    m = doc.modelspace()
+    m.add_lwpolyline([(0, 0), (100, 0), (100, 100), (0, 100)], close=True)
+    for n, rr in ((5, 30.0), (8, 16.0)):
+        for k in range(n):
+            a = 2 * math.pi * k / n
+            m.add_circle((C[0] + rr * math.cos(a), C[1] + rr * math.sin(a)), 2.5)
+    m.add_circle((C[0], C[1] + 40), 2.5)
+    doc.saveas(tmp_path / "r.dxf")
+    text, _ = import_drawing((tmp_path / "r.dxf").read_bytes(), "r.dxf", infer=True)
+    pcd = {float(ln.split()[3]): ln.split()[1] for ln in text.splitlines()
+           if ln.startswith("param") and ln.split()[1].endswith("_pcd")}
+    assert sorted(pcd) == [32.0, 60.0], text
+    cnt = {ln.split()[1] for ln in text.splitlines()
+           if ln.startswith("param") and ln.split()[1].endswith("_n")}
+    assert len(cnt) == 2, text
+    outer_n = pcd[60.0][:-len("pcd")] + "n"
+    res = aidl_lang.compile(text, path=tmp_path / "p.aidl",
+                            overrides={pcd[60.0]: "70 mm", outer_n: "6"})
+    assert res.ok, [str(d) for d in res.errors]
+    doc = ezdxf.read(io.StringIO(res.to_dxf()))
+    got = [(e.dxf.center.x, e.dxf.center.y) for e in doc.modelspace() if e.dxftype() == "CIRCLE"]
+    dist = sorted(round(math.dist(p, C), 6) for p in got)
+    assert dist == [16.0] * 8 + [35.0] * 6 + [40.0], dist

@@ -58,6 +58,7 @@ from .makers import SINGLE_PARAMS, _MakerFeatures
 from ..chains.layers import _hole_layers
 from .mirror import mirrored_pair, pair_items, write_pair
 from .sinks import Marks
+from .rings import rings
 from ..write.program import (_Names, _Writer, _containers, _cut_notes, _emit_holds, _holds,
                              _ident, _layer_items, _length, _num, _place, _pt, _whole_ellipse)
 from ..write.units import UNIT, in_unit
@@ -424,7 +425,8 @@ class _Part(_Anchored, _MakerFeatures):
             self.check(k, "finding the patterns of the holes", every=1)
             r = g[0].args.get("radius", 0.0) if g[0].kind == "Circle" else 0.0
             cs = [sh.center for sh in g]
-            parts = None if _whole(cs, r) else _features(cs, r)
+            parts = None if _whole(cs, r) else _features(cs, r) or rings(
+                cs, ([body[0].center] if body is not None else []) + self.named.points)
             # equal holes of several features (a grille and a grid): each its own pattern
             for part in parts or [range(len(g))]:
                 sub = [g[i] for i in part]
