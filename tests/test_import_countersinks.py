@@ -14,6 +14,7 @@ import pytest
 
 import aidl_lang
 from aidl_lang.drawing.infer import import_drawing
+from test_import_layers_units import sink_plate
 
 LONE = (40.0, 30.0)         # a mark on no hole
 
@@ -22,13 +23,7 @@ def _plate(path, layer: str = "CSK") -> bytes:
     """An 80 x 50 mm plate (OUTLINE), four 3.3 mm corner holes 6 mm in and a row of three
     4 mm holes 15 mm apart on the centre line (HOLES), 6.6 and 8 mm marks about each, and
     one 5 mm mark on no hole (``layer``)."""
-    doc = ezdxf.new("R2010")
-    doc.units = 4
-    m = doc.modelspace()
-    for ly in ("OUTLINE", "HOLES", layer):
-        doc.layers.add(ly)
-    m.add_lwpolyline([(0, 0), (80, 0), (80, 50), (0, 50)], close=True,
-                     dxfattribs={"layer": "OUTLINE"})
+    doc, m = sink_plate(layer)
     for c in [(6, 6), (74, 6), (74, 44), (6, 44)]:
         m.add_circle(c, 1.65, dxfattribs={"layer": "HOLES"})
         m.add_circle(c, 3.3, dxfattribs={"layer": layer})
