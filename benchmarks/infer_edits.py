@@ -128,7 +128,7 @@ EDIT_KINDS = ("body", "size", "pitch", "count")
 HINTS = {"hole": ("hole",), "slot": ("slot",), "cutout": ("cut", "window", "opening", "rect"),
          "notch": ("notch",), "row": ("row", "holes", "slots"), "grid": ("grid", "holes"),
          "hexgrid": ("hex", "grid", "grille", "holes"), "boltcircle": ("bolt", "circle"),
-         "keyhole": ("key",), "dhole": ("d_hole", "dhole", "flat"), "arcslot": ("arc",),
+         "keyhole": ("key",), "csk": ("countersink", "hole"), "dhole": ("d_hole", "dhole", "flat"), "arcslot": ("arc",),
          "plate": ("plate", "body")}
 UNIT_MM = {"mm": 1.0, "cm": 10.0, "in": 25.4, "inch": 25.4, "m": 1000.0}
 
@@ -245,7 +245,7 @@ def compare(design, got, tmp: pathlib.Path) -> list:
     bad = [("plate" if owners[i][0] < 0 else design.features[owners[i][0]]["kind"])
            for i in sorted({i for i in left})]
     bad = sorted(set(bad)) + (["extra"] if rest and not left else [])
-    if design.labels():
+    if design.labels() or design.marks():
         suffix, data = gen.export(design)
         (tmp / ("truth" + suffix)).write_bytes(data)
         plain, _ = import_drawing(data, "truth" + suffix)
@@ -254,7 +254,7 @@ def compare(design, got, tmp: pathlib.Path) -> list:
             raise RuntimeError("the plain import of a generated drawing fails: " + ref)
         _, tshift = gen.normalised(ref[0])
         if not _same_engraved(_engraved(doc, shift), _engraved(ref[1], tshift)):
-            bad.append("label")
+            bad.append("label" if design.labels() else "csk")
     return bad
 
 
@@ -422,7 +422,7 @@ def main(argv=None) -> int:
     ap.add_argument("--keep", type=pathlib.Path, help="write each generated drawing with an "
                     "edit not meant, its program and its edits, into this folder")
     ap.add_argument("--kinds", default="", help="the generated features' kinds: `new` (the "
-                    "kinds drawn only when asked: double-D holes, keyways, skewed vent rows), "
+                    "kinds drawn only when asked: double-D holes, keyways, skewed vent rows, countersunk holes), "
                     "`all`, or names joined by commas (default: the first set, as always)")
     a = ap.parse_args(argv)
     kinds = {"": gen.KINDS, "new": gen.NEW_KINDS, "all": gen.ALL_KINDS}.get(

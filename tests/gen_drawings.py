@@ -12,7 +12,9 @@ or V, in one of the plate's edges), ``row`` (holes or slots), ``grid`` (rectangu
 without a bore), ``keyhole``, ``dhole`` (a D: a circle with one flat), ``arcslot`` (about a
 centre: radius, start angle, sweep, width); drawn only when asked (:data:`NEW_KINDS`):
 ``ddhole`` (a double-D: two flats ``af`` apart), ``keyway`` (a bore with a key slot: width
-``kw``, ``depth`` past the bore) and ``ventrow`` (a row of slots turned at an angle to it);
+``kw``, ``depth`` past the bore), ``ventrow`` (a row of slots turned at an angle to it) and
+``csk`` (a row of ``n`` countersunk holes: each hole ``d`` and the top circle of its countersink,
+``D``, on a CSK layer: marked, not cut; DXF only);
 and ``label`` (a DXF TEXT or MTEXT, an SVG
 ``text``) tied to a feature (it moves with it) or to the plate.
 
@@ -49,7 +51,7 @@ KINDS = ("hole", "slot", "cutout", "notch", "row", "grid", "hexgrid", "boltcircl
          "keyhole", "dhole", "arcslot")
 # kinds drawn only when asked (``random_design(pool=ALL_KINDS)``, benchmarks/infer_edits.py
 # --kinds): the drawings of KINDS from a seed stay the ones they were before these were added
-NEW_KINDS = ("ddhole", "keyway", "ventrow")
+NEW_KINDS = ("ddhole", "keyway", "ventrow", "csk")
 ALL_KINDS = KINDS + NEW_KINDS
 
 
@@ -308,6 +310,12 @@ class Design:
             out += [(i, scaled(lp, u)) for lp in self.feature_loops(i)]
         return out
 
+    def marks(self) -> list:
+        """``[(centre, radius)]`` of the countersinks' top circles (design units): marked
+        about their holes, not cut."""
+        return [(m, f["D"] / 2) for f in self.features if f["kind"] == "csk"
+                for m in members(f, self.place(f))]
+
     def labels(self) -> list:
         """``[(index, text, (x, y), height, kind, align)]`` in design units."""
         return [(i, f["text"], self.place(f), f["h"], f["type"], f["align"])
@@ -389,6 +397,12 @@ class Design:
                 add("size", "length", "slot length", [(r"length|len|l", 1.0)])
                 add("pitch", "p", "pitch", P)
                 add("count", "n", "count", N)
+            if k == "csk":
+                add("size", "d", "diameter", D)
+                add("size", "D", "countersink diameter",
+                    [(r"(countersink_|csk_|sink_)(d|dia|diameter)", 1.0)])
+                add("pitch", "p", "pitch", P)
+                add("count", "n", "count", N)
             if k == "boltcircle" and f.get("bore"):
                 add("size", "bore", "bore", [(r"(bore_)?(d|diameter)", 1.0)])
             if k in ("row", "grid"):
@@ -447,7 +461,7 @@ def span(f) -> tuple:
     k = f["kind"]
     if k == "cutout":
         return f["w"] / 2, f["h"] / 2
-    if k in ("row", "ventrow"):
+    if k in ("row", "ventrow", "csk"):
         s = (f["n"] - 1) * f["p"] / 2
         return (s, 0.0) if f["dir"] == "x" else (0.0, s)
     if k == "grid":
@@ -532,7 +546,7 @@ def arcslot_loop(c, R, a0, sw, w) -> list:
 def members(f, c) -> list:
     """The centres of a pattern's members (design units)."""
     k = f["kind"]
-    if k in ("row", "ventrow"):
+    if k in ("row", "ventrow", "csk"):
         s = [(i - (f["n"] - 1) / 2) * f["p"] for i in range(f["n"])]
         return [(c[0] + t, c[1]) if f["dir"] == "x" else (c[0], c[1] + t) for t in s]
     if k == "grid":
@@ -657,6 +671,8 @@ def _valid(d: Design) -> bool:
             return False
         if k == "notch" and f["shape"] == "round" and f["depth"] <= f["w"] / 2 + m:
             return False
+        if k == "csk" and (f["D"] < f["d"] + m or f["p"] < f["D"] + m):
+            return False
         if k == "arcslot" and f["w"] >= f["R"]:
             return False
         if k == "cutout" and f.get("r", 0) * 2 >= min(f["w"], f["h"]):
@@ -690,6 +706,12 @@ def _valid(d: Design) -> bool:
             if not p.is_valid or not inner.contains(p):
                 return False
             shapes.append((i, p, False))
+        if f["kind"] == "csk":          # the marks too: clear of the other features
+            for c in members(f, d.place(f)):
+                p = _poly(circle(c, f["D"] / 2))
+                if not inner.contains(p):
+                    return False
+                shapes.append((i, p, False))
     for a in range(len(shapes)):
         for b in range(a + 1, len(shapes)):
             ia, pa, la = shapes[a]
@@ -756,6 +778,10 @@ def random_feature(rng: random.Random, T: dict, kind: str) -> dict:
         f.update(n=rng.choice([3, 4, 5, 6, 8]), d=d, pcd=rng.choice(T["big"]) * 2,
                  bore=rng.choice([0, rng.choice(T["big"])]))
         f["start"] = rng.choice(["axis", "between", "top"])
+        # one reading of the holes drawn: with one at the top, 4 or 8 have one on the x axis
+        # and 6 are half a pitch off it (the x axis is what a person reads from)
+        if f["start"] == "top" and f["n"] % 2 == 0:
+            f["start"] = "axis" if f["n"] % 4 == 0 else "between"
     elif kind == "keyhole":
         f.update(D=rng.choice(T["big"][:3]) / 2, angle=rng.choice([0, 0, 90, 180]))
         f["w"] = f["D"] / 2
@@ -774,6 +800,9 @@ def random_feature(rng: random.Random, T: dict, kind: str) -> dict:
         f.update(dir=rng.choice("xy"), n=rng.randint(3, 6), p=rng.choice(T["pitch"]), w=d,
                  angle=rng.choice([30, 45, 60, -45, 120]))
         f["length"] = d + rng.choice(T["pitch"]) * 2
+    elif kind == "csk":
+        f.update(dir=rng.choice("xy"), n=rng.randint(2, 4), p=rng.choice(T["pitch"]), d=d,
+                 D=round(d * rng.choice([1.6, 2.0, 2.2]), 4))
     elif kind == "arcslot":
         f.update(R=rng.choice(T["big"]), w=rng.choice(T["d"][:4]), a0=rng.choice([0, 30, 45, 200]),
                  sweep=rng.choice([45, 60, 90]))
@@ -846,6 +875,8 @@ def random_design(rng: random.Random, kinds=None, pool=KINDS) -> Design:
 
 def random_style(rng: random.Random, d: Design) -> dict:
     fmt = "svg" if rng.random() < 0.25 else "dxf"
+    if any(f["kind"] == "csk" for f in d.features):
+        fmt = "dxf"                 # a countersink's layer: a DXF's
     return {"format": fmt,
             "layers": rng.choice([None, None, ("OUTLINE", "HOLES", "LABELS")]),
             "blocks": rng.random() < 0.4,
@@ -958,6 +989,10 @@ def to_dxf(d: Design) -> bytes:
             m.add_blockref(blk.name, p, dxfattribs={"layer": lay[1], "rotation": rot})
         if f["kind"] == "boltcircle" and f.get("bore"):
             m.add_circle(c, f["bore"] / 2, dxfattribs={"layer": lay[1]})
+    if d.marks():
+        doc.layers.add("CSK")
+    for c, r in d.marks():
+        m.add_circle(c, r, dxfattribs={"layer": "CSK"})
     for _, text, (x, y), h, typ, align in d.labels():
         if typ == "TEXT":
             t = m.add_text(text, height=h, dxfattribs={"layer": lay[2]})

@@ -378,6 +378,19 @@ def test_parts_apart_are_solids_and_overlapping_frames_stay_one(tmp_path):
     assert text.count("solid ") == 1, text
 
 
+def sink_plate(layer: str):
+    """``(doc, modelspace)`` of an 80 x 50 mm plate on OUTLINE in mm, with the layers HOLES
+    and ``layer`` (a countersink layer) made, for the holes and their marks."""
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    m = doc.modelspace()
+    for ly in ("OUTLINE", "HOLES", layer):
+        doc.layers.add(ly)
+    m.add_lwpolyline([(0, 0), (80, 0), (80, 50), (0, 50)], close=True,
+                     dxfattribs={"layer": "OUTLINE"})
+    return doc, m
+
+
 @pytest.mark.parametrize("infer", [False, True], ids=["plain", "infer"])
 @pytest.mark.parametrize("layer", ["COUNTERSINK", "CSK", "C-Bore"])
 def test_countersink_circles_are_marked_and_the_holes_are_the_parts(tmp_path, infer, layer):
@@ -386,13 +399,7 @@ def test_countersink_circles_are_marked_and_the_holes_are_the_parts(tmp_path, in
     so the HOLES layer was not moved into the plate, and the holes and the countersinks came
     out as two solids of discs (cut as written: 6.6 mm through-holes), with no word.  Now the
     countersinks are a `drawing` (marked, not cut) and the holes the plate's."""
-    doc = ezdxf.new("R2010")
-    doc.units = 4
-    m = doc.modelspace()
-    for ly in ("OUTLINE", "HOLES", layer):
-        doc.layers.add(ly)
-    m.add_lwpolyline([(0, 0), (80, 0), (80, 50), (0, 50)], close=True,
-                     dxfattribs={"layer": "OUTLINE"})
+    doc, m = sink_plate(layer)
     centres = [(6, 6), (74, 6), (74, 44), (6, 44)]
     for c in centres:
         m.add_circle(c, 1.65, dxfattribs={"layer": "HOLES"})

@@ -56,6 +56,8 @@ from .features import edge_notches
 from .makers import SINGLE_PARAMS, _MakerFeatures
 from ..chains.layers import _hole_layers
 from .mirror import mirrored_pair, pair_items, write_pair
+from .sinks import Marks
+from .rings import rings
 from ..write.program import (_Names, _Writer, _containers, _cut_notes, _emit_holds, _holds,
                              _ident, _layer_items, _length, _num, _place, _pt, _whole_ellipse)
 from ..write.units import UNIT, in_unit
@@ -115,8 +117,11 @@ def _add0(base: str, term: str) -> str:
 def _start_angle(a0: float, n: int, cnt: str) -> str:
     """The angle of hole ``i`` of a bolt circle of ``n`` (the param ``cnt``) whose holes are
     at ``a0 + k 360/n`` (radians), written by the rule that keeps its meaning when the count
-    changes: a hole on the x axis (``i * 360 deg / n``), else one at the top (``90 deg +
-    ...``), else two straddling the x axis (``(i + 0.5) * 360 deg / n``), else from ``a0``."""
+    changes: a hole on the x axis (``i * 360 deg / n``), else two straddling it, half a
+    pitch off (``(i + 0.5) * 360 deg / n``), else one at the top (``90 deg + ...``), else
+    from ``a0``.  Where two rules draw the same holes the x axis is the one a person reads
+    from: 4 or 8 holes with one at the top have one on the x axis; 6 with one at the top
+    are half a pitch off it."""
     step = 2 * math.pi / n
 
     def on(angle: float) -> bool:
@@ -124,10 +129,10 @@ def _start_angle(a0: float, n: int, cnt: str) -> str:
         return abs(k - round(k)) * step * 1e3 <= 1e-6      # 1e-9 rad at 1 m
     if on(0.0):
         return f"i * 360 deg / {cnt}"
-    if on(math.pi / 2):
-        return f"90 deg + i * 360 deg / {cnt}"
     if on(step / 2):
         return f"(i + 0.5) * 360 deg / {cnt}"
+    if on(math.pi / 2):
+        return f"90 deg + i * 360 deg / {cnt}"
     return f"{_deg(a0)} + i * 360 deg / {cnt}"
 
 
@@ -154,6 +159,9 @@ class _Part(_Anchored, _MakerFeatures):
         self.named_as: list[str] = []       # named_as[i] is named.points[i]'s)
         self.kinds: dict = {}               # (kind, sizes) -> size params (kind_params)
         self.written: dict = {}             # centre -> its place as written (write_at)
+        self.marks: Marks | None = None     # the import's countersink marks (sinks.py)
+        self.sunk: dict = {}                # id(hole Shape) -> its mark (Marks.attach)
+        self.sinks = None                   # the marks of the holes being written, or None
 
     def shared(self, c) -> str | None:
         """The name of the first shared centre within EQUAL_TOL of ``c``, or None."""
@@ -405,6 +413,8 @@ class _Part(_Anchored, _MakerFeatures):
             key = (sh.kind,) + tuple(round(x, 6) if isinstance(x, float) else x
                                      for x in sh.size)
             groups.setdefault(key, []).append(sh)
+        if self.marks is not None:
+            self.sunk = self.marks.attach(shapes)
         singles = []
         centres = []          # bolt circle centres, for naming a bore
         self.share_centres(depth, groups, body)
@@ -415,18 +425,21 @@ class _Part(_Anchored, _MakerFeatures):
             self.check(k, "finding the patterns of the holes", every=1)
             r = g[0].args.get("radius", 0.0) if g[0].kind == "Circle" else 0.0
             cs = [sh.center for sh in g]
-            parts = None if _whole(cs, r) else _features(cs, r)
+            parts = None if _whole(cs, r) else _features(cs, r) or rings(
+                cs, ([body[0].center] if body is not None else []) + self.named.points)
             # equal holes of several features (a grille and a grid): each its own pattern
             for part in parts or [range(len(g))]:
                 sub = [g[i] for i in part]
                 if len(sub) == 1:
                     singles += sub
-                elif not self.pattern(depth, sub, body, centres):
+                elif not self.sunk_as(sub) or not self.pattern(depth, sub, body, centres):
                     singles += sub
         few = len(singles) <= SINGLE_PARAMS
         for k, sh in enumerate(singles):
             self.check(k, "writing the holes")
+            self.sunk_as([sh])
             self.single(depth, sh, body, centres, few)
+        self.sinks = None
 
     def check(self, k: int, stage: str, every: int = 128) -> None:
         """The import's deadline looked at (``stage``) on every ``every``-th step ``k``."""
@@ -533,6 +546,14 @@ class _Part(_Anchored, _MakerFeatures):
         var = "h"
         self.w.emit(depth, f"hole {hn} {{ {var} = {_ctor(sh, center, sizes)} }}")
         self.w.emit(depth, f"Fixed({hn}.{var})")
+        if self.sinks is not None and sh.kind == "Circle":
+            self.marks.write(self, depth, hn, sh, center, self.sinks)
+
+    def sunk_as(self, members: list) -> bool:
+        """Say that the holes written next are ``members`` (:attr:`sinks`: their common
+        countersink, :meth:`~.sinks.Marks.common`); True."""
+        self.sinks = Marks.common(self.sunk, members) if self.sunk else None
+        return True
 
     def size_params(self, base: str, sh: Shape, many: bool) -> dict:
         """Params for a repeated shape's sizes (``many``), else none (literal numbers)."""
@@ -783,6 +804,7 @@ class _Part(_Anchored, _MakerFeatures):
         body_c = self.anchor[0].center if self.anchor is not None else None
         out = []
         loops = []
+        # equal steps both ways: one pitch (``one`` needs both counts above 1)
         shared = self.p(hn + "_pitch", dx, times=max(nx, ny)) if one else None
         for axis, (v0, step, n, var) in enumerate(((x0, dx, nx, "i"), (y0, dy, ny, "j"))):
             if n == 1:
@@ -936,7 +958,7 @@ class _Part(_Anchored, _MakerFeatures):
 
 
 def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d: Drawing,
-           prefix: str, shift=None):
+           prefix: str, shift=None, marks: Marks | None = None):
     """Write the solid ``name`` of ``d``; returns how its labels are placed
     (:func:`_label_place`: a drawing of texts on their own layer uses it too)."""
     if _unknown(d) or (d.engrave is not None and _unknown(d.engrave)):
@@ -945,6 +967,7 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
         return lambda p, size: _pt(p)
     part = _Part(w, params, stats, prefix)
     part.shift = shift
+    part.marks = marks
     loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
     # whole ellipses are loops too: a part's outline, a hole, an island in a hole
     every = loops + [[_whole_ellipse(el)] for el in d.ellipses]
@@ -1035,6 +1058,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
     items = in_unit(_layer_items(layers, parts, deadline, source, w.notes, w.overlaps))
     items = _copies(items, deadline)
     items = _named_parts(pair_items(items, deadline))
+    marks = Marks(items)        # countersinks, written with their holes
     solids = sum(1 for it in items if it[0] == "solid")
     multi = len(items) > 1 or any(len(it) > 3 for it in items)
     depth = 1 if multi else 0
@@ -1056,7 +1080,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
             sy = f"k * {params.add(pre + 'pitch_y' if sx else pre + 'pitch', dy, times=n)}" \
                 if abs(dy) > ROUND_TOL else None
             w.emit(depth, f"for k in range({params.add(pre + 'n', n, 'copies', unit='')}) {{")
-            _solid(w, params, stats, depth + 1, name, d, pre, (sx, sy))
+            _solid(w, params, stats, depth + 1, name, d, pre, (sx, sy), marks)
             if multi:
                 w.emit(depth + 1, f"Fixed({name})")
             w.emit(depth, "}")
@@ -1065,17 +1089,20 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
         elif kind == "solid" and (pair := mirrored_pair(d, deadline)) is not None:
             word = _named_parts([("solid", "part", pair[0])])[0][1]
             write_pair(w, depth, name if name != word else word + "s", pair[0], pair[1], d.box(),
-                       word, lambda dp, nm, dd: _solid(w, params, stats, dp, nm, dd, ""))
+                       word, lambda dp, nm, dd: _solid(w, params, stats, dp, nm, dd, "", marks=marks))
             stats.patterns["mirrored part"] += 1
             name = name if name != word else word + "s"
         else:
             placed = _solid(w, params, stats, depth, name, d,
-                            short[name] + "_" if solids > 1 else "")
+                            short[name] + "_" if solids > 1 else "", marks=marks)
             place = placed if solids == 1 else _at_as_drawn
         names.append(name)
     # a layer of texts beside one part (LABELS beside OUTLINE): its labels placed with the
     # part's features, as the part's own engraving is
     for at, name, d in reversed(drawings):
+        if (d := marks.left(name, d)) is None:
+            names.remove(name)          # every mark of it written with its hole
+            continue
         start = len(w.lines)
         w.emit(depth, f"drawing {name} {{")
         _engraving(w, depth + 1, d, stats, place)
