@@ -57,7 +57,7 @@ from .makers import SINGLE_PARAMS, _MakerFeatures
 from ..chains.layers import _hole_layers
 from .mirror import mirrored_pair, pair_items, write_pair
 from .sinks import Marks
-from .rings import rings
+from .rings import _start_angle, rings
 from ..write.program import (_Names, _Writer, _containers, _cut_notes, _emit_holds, _holds,
                              _ident, _layer_items, _length, _num, _place, _pt, _whole_ellipse)
 from ..write.units import UNIT, in_unit
@@ -112,28 +112,6 @@ def _chamfered(sh: Shape | None) -> tuple | None:
 def _add0(base: str, term: str) -> str:
     """``base + term`` as text, ``term`` alone when ``base`` is ``0``."""
     return term if base == "0" else f"{base} + {term}"
-
-
-def _start_angle(a0: float, n: int, cnt: str) -> str:
-    """The angle of hole ``i`` of a bolt circle of ``n`` (the param ``cnt``) whose holes are
-    at ``a0 + k 360/n`` (radians), written by the rule that keeps its meaning when the count
-    changes: a hole on the x axis (``i * 360 deg / n``), else two straddling it, half a
-    pitch off (``(i + 0.5) * 360 deg / n``), else one at the top (``90 deg + ...``), else
-    from ``a0``.  Where two rules draw the same holes the x axis is the one a person reads
-    from: 4 or 8 holes with one at the top have one on the x axis; 6 with one at the top
-    are half a pitch off it."""
-    step = 2 * math.pi / n
-
-    def on(angle: float) -> bool:
-        k = (angle - a0) / step
-        return abs(k - round(k)) * step * 1e3 <= 1e-6      # 1e-9 rad at 1 m
-    if on(0.0):
-        return f"i * 360 deg / {cnt}"
-    if on(step / 2):
-        return f"(i + 0.5) * 360 deg / {cnt}"
-    if on(math.pi / 2):
-        return f"90 deg + i * 360 deg / {cnt}"
-    return f"{_deg(a0)} + i * 360 deg / {cnt}"
 
 
 class _Stats:

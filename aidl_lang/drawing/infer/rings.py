@@ -3,11 +3,13 @@ two bolt circles of one hole size about a flange's centre (5 on a 60 mm circle, 
 32 mm one), or a bolt circle and a lone hole of its size, are no one pattern and too far
 apart for :func:`~.patterns._features` to split; about the body's centre or a feature's
 (a bore), split by their distance from it, each ring of three or more evenly spaced a bolt
-circle of its own.  Coordinates in mm."""
+circle of its own; and :func:`_start_angle`, how a bolt circle's first hole is written so
+that a new count keeps its meaning.  Coordinates in mm."""
 from __future__ import annotations
 
 import math
 
+from .params import _deg
 from .patterns import _polar
 from .shapes import EQUAL_TOL
 
@@ -40,3 +42,25 @@ def rings(centers: list, about: list) -> list[list[int]] | None:
                        and math.dist(pol[0], c) <= EQUAL_TOL for g in big):
             return [sorted(g) for g in groups]
     return None
+
+
+def _start_angle(a0: float, n: int, cnt: str) -> str:
+    """The angle of hole ``i`` of a bolt circle of ``n`` (the param ``cnt``) whose holes are
+    at ``a0 + k 360/n`` (radians), written by the rule that keeps its meaning when the count
+    changes: a hole on the x axis (``i * 360 deg / n``), else two straddling it, half a
+    pitch off (``(i + 0.5) * 360 deg / n``), else one at the top (``90 deg + ...``), else
+    from ``a0``.  Where two rules draw the same holes the x axis is the one a person reads
+    from: 4 or 8 holes with one at the top have one on the x axis; 6 with one at the top
+    are half a pitch off it."""
+    step = 2 * math.pi / n
+
+    def on(angle: float) -> bool:
+        k = (angle - a0) / step
+        return abs(k - round(k)) * step * 1e3 <= 1e-6      # 1e-9 rad at 1 m
+    if on(0.0):
+        return f"i * 360 deg / {cnt}"
+    if on(step / 2):
+        return f"(i + 0.5) * 360 deg / {cnt}"
+    if on(math.pi / 2):
+        return f"90 deg + i * 360 deg / {cnt}"
+    return f"{_deg(a0)} + i * 360 deg / {cnt}"
