@@ -608,7 +608,8 @@ for: a bigger count that runs holes into each other, a width that pushes the cra
 handset. The warning names the part, the values and what changed; the baseline is the same
 program compiled with its defaults. Choose another value, make the design follow the param
 (spacing derived from the count), or declare the param's `min=`/`max=` to keep values that
-fit.
+fit. A hole a count (or a field that a new pitch refills) adds or takes away, cutting its own
+opening, is what the param is for: no warning.
 
     # aidl check examples/bracket.aidl --set bolts=5
     # warning[W0510]: with bolts=5, part `bracket` changes: hole `bracket.holes[2]` merges

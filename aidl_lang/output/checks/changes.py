@@ -117,12 +117,22 @@ def _family(hole: str) -> str:
     return re.sub(r"\[\d+\]", "[]", hole)
 
 
+def _apart(t: Topology) -> int:
+    """The openings ``t``'s holes would cut each on its own: every hole, less those that
+    reach the outline (notches) and one per pair that merges."""
+    return len(t.holes) - len(t.notches) - len(t.merges)
+
+
 def topology_changes(base: Topology, new: Topology) -> list[str]:
     """What changed from ``base`` (the defaults) to ``new``, in words, most telling first."""
     out = []
     if new.pieces != base.pieces:
         out.append(f"{_count(new.pieces, 'piece')} instead of {base.pieces}")
-    if new.openings != base.openings:
+    # a hole a count or a field's fill added or took away cuts its own opening (unless it
+    # reaches the outline or merges, said below): what the param is for (`--set n=5` on a
+    # row of 3 holes: 5 openings instead of 3), no change
+    if new.openings != base.openings and \
+            new.openings - base.openings != _apart(new) - _apart(base):
         out.append(f"{_count(new.openings, 'opening')} instead of {base.openings}")
     if new.freed != base.freed:
         out.append(f"its through-cuts cut it into {_count(new.freed + 1, 'part')} instead "
