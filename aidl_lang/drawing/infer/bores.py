@@ -13,9 +13,8 @@ from __future__ import annotations
 
 import math
 
-from ...geometry.curves import Arc, Line
 from .params import _deg
-from .shapes import EQUAL_TOL, _close
+from .shapes import EQUAL_TOL, _close, arcs_and_lines
 
 
 def _across(p, c, ux, uy) -> tuple[float, float]:
@@ -29,12 +28,10 @@ def double_d(segs: list) -> tuple | None:
     each less than a half circle, and two lines (the flats) as far from the centre on
     either side, their normal toward ``direction`` (radians, in (-90, 90] degrees); else
     None."""
-    if len(segs) != 4:
+    got = arcs_and_lines(segs, 2, 2)
+    if got is None:
         return None
-    arcs = [s for s in segs if isinstance(s, Arc)]
-    lines = [s for s in segs if isinstance(s, Line)]
-    if len(arcs) != 2 or len(lines) != 2:
-        return None
+    arcs, lines = got
     a, b = arcs
     if not _close(a.center, b.center) or abs(a.radius - b.radius) > EQUAL_TOL or \
             any(abs(s.sweep) >= math.pi - 1e-9 for s in arcs):
@@ -62,13 +59,10 @@ def keyway(segs: list) -> tuple | None:
     of one arc of more than a half circle (the bore) and three lines: two sides parallel to
     ``direction`` (radians) half the key's width either side of the centre, and the key's
     top across it; else None."""
-    if len(segs) != 4:
+    got = arcs_and_lines(segs, 1, 3)
+    if got is None or abs(got[0][0].sweep) <= math.pi + 1e-9:
         return None
-    arcs = [s for s in segs if isinstance(s, Arc)]
-    lines = [s for s in segs if isinstance(s, Line)]
-    if len(arcs) != 1 or len(lines) != 3 or abs(arcs[0].sweep) <= math.pi + 1e-9:
-        return None
-    bore = arcs[0]
+    (bore,), lines = got
     c, r = bore.center, bore.radius
     ends = (bore.start, bore.end)
     top = next((ln for ln in lines if not any(_close(ln.start, e) or _close(ln.end, e)

@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 
 from ...geometry.curves import Arc, Line
-from .shapes import EQUAL_TOL, _close, merged
+from .shapes import EQUAL_TOL, _close, arcs_and_lines, merged
 
 
 def _ccw(a: Arc) -> tuple[float, float]:
@@ -77,13 +77,10 @@ def d_hole(segs: list) -> tuple | None:
     """``(centre, diameter, flat, direction)`` of a loop of one arc of more than a half
     circle and the line joining its ends: the flat ``flat`` from the centre, its normal
     toward ``direction`` (radians); else None."""
-    if len(segs) != 2:
+    got = arcs_and_lines(segs, 1, 1)
+    if got is None:
         return None
-    arcs = [s for s in segs if isinstance(s, Arc)]
-    lines = [s for s in segs if isinstance(s, Line)]
-    if len(arcs) != 1 or len(lines) != 1:
-        return None
-    (arc,), (ln,) = arcs, lines
+    (arc,), (ln,) = got
     if abs(arc.sweep) <= math.pi + 1e-9:
         return None
     c = arc.center

@@ -48,6 +48,16 @@ def _close(p, q, tol=EQUAL_TOL) -> bool:
     return abs(p[0] - q[0]) <= tol and abs(p[1] - q[1]) <= tol
 
 
+def arcs_and_lines(segs: list, arcs: int, lines: int) -> tuple | None:
+    """``(the arcs, the lines)`` of a loop made of exactly ``arcs`` arcs and ``lines`` lines
+    (in its order), else None: the first test of the holes with flats (a D, a double-D, a
+    keyway)."""
+    a = [s for s in segs if isinstance(s, Arc)]
+    ln = [s for s in segs if isinstance(s, Line)]
+    return (a, ln) if len(segs) == arcs + lines and len(a) == arcs and len(ln) == lines \
+        else None
+
+
 def _key(seg):
     """``(kind, points)`` of a piece whatever its direction: a line's two ends, an arc's centre,
     its ends and its middle (which side it bulges), its radius as the last number."""
