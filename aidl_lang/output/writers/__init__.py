@@ -248,8 +248,11 @@ def _refuse_stacked(output: Output, suffix: str) -> None:
     solids = [p for p in output.parts if p.kind == "solid" and p.loops]
     if len(solids) < 2:
         return
-    boxes = [[f(b[k] for lp in p.loops for g in lp.segments for b in [g.box()])
-              for k, f in ((0, min), (1, min), (2, max), (3, max))] for p in solids]
+    boxes = []
+    for p in solids:
+        bs = [g.box() for lp in p.loops for g in lp.segments]      # exact (x0, y0, x1, y1)
+        boxes.append((min(b[0] for b in bs), min(b[1] for b in bs),
+                      max(b[2] for b in bs), max(b[3] for b in bs)))
     over = []
     for i, j in box_pairs(boxes):        # a part's CrossSection only where boxes meet
         area = (solids[i].shape ^ solids[j].shape).area()
