@@ -28,7 +28,9 @@ def test_the_compile_leaves_no_cycle_to_collect(shared):
     finally:
         if was:
             gc.enable()
-    assert t.n_nodes > 1000 and found < 50      # before: every node tuple, ~n_nodes
+    # before: every node tuple, ~n_nodes.  Not a fixed 50: another thread of the test
+    # worker (a server an earlier test started) may leave its own garbage meanwhile (66 once)
+    assert t.n_nodes > 1000 and found < t.n_nodes / 10
 
 
 class _Obj:
