@@ -612,3 +612,23 @@ def test_a_sheet_of_1000_copies_is_laid_out_within_the_default_budget(tmp_path, 
     tree = STRtree(polys)
     near = tree.query(polys, predicate="dwithin", distance=3.0 - 1e-6)
     assert [(i, j) for i, j in near.T if i < j] == []           # 3 mm apart, no overlap
+
+
+def test_a_design_with_no_solid_part_lays_out_nothing_and_says_so(tmp_path, capsys):
+    """Issue 94: `aidl render text_on_arc.aidl --layout sheet -o x.svg` printed "laid out 0
+    parts on 0 sheets ... wrote x-sheet.svg", exited 0 and wrote nothing; the studio served a
+    22-byte ZIP of no entries.  A design of engraving alone has nothing to nest: an error that
+    says so, no file, and a good file already there kept."""
+    prog = tmp_path / "sign.aidl"
+    prog.write_text('import "std/plates.aidl"\ndrawing sign = text_on_arc()\n')
+    out = tmp_path / "x.svg"
+    out.write_text("<svg>kept</svg>")
+    assert main(["render", str(prog), "--layout", "sheet", "-o", str(out)]) == 1
+    err = capsys.readouterr().err
+    assert "nothing to lay out" in err and "no solid part" in err and "5 engraving" in err
+    assert out.read_text() == "<svg>kept</svg>"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["sign.aidl", "x.svg"]
+    from aidl_lang.studio.compiler import download
+    got = download(str(tmp_path), prog.read_text(), {}, "svg", {"layout": True})
+    assert isinstance(got, dict) and "nothing to lay out" in got["error"], got
+    assert "--" not in got["error"]                  # written for the page: no flag

@@ -444,6 +444,8 @@ def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90
     inset = gap / 2
     Wu, Hu = W - 2 * inset, H - 2 * inset
     solids = [p for p in output.parts if p.kind == "solid"]
+    if not solids:
+        raise LayoutError(_nothing_to_lay_out(output))
     # copies (one outer outline moved) are one shape for the packer, with their number
     shapes, about, members, first_of = {}, {}, {}, {}
     for i, p in enumerate(solids):
@@ -490,6 +492,17 @@ def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90
     for t in sorted(groups, key=lambda t: (t is None, t or 0.0)):
         sheets += _sheets(shapes, groups[t], about, Hu, Wu, inset, rotate, seconds, seed, check)
     return [{solids[i].name: m for i, m in placed} for placed in sheets]
+
+
+def _nothing_to_lay_out(output: Output) -> str:
+    """The message for a layout of a design with no solid part (only engraving, or only
+    drawings): a layout nests solid parts, so there is nothing to place and no sheet to write
+    (issue 94: it wrote nothing and said "wrote ...")."""
+    what = f"{len(output.engrave)} engraving stroke{'s' if len(output.engrave) != 1 else ''}" \
+        if output.engrave else "nothing to cut"
+    return (f"nothing to lay out: `{output.title}` has no solid part (it holds {what}); a "
+            "cutting layout nests solid parts on sheets. Draw the design as it is (no sheet "
+            "layout), or make the engraving part of a `solid` plate")
 
 
 def _sheets(shapes: dict, members: dict, about: dict, Hu: float, Wu: float, inset: float,
