@@ -178,14 +178,15 @@ def _timed(fn, repeat: int):
 def parse_throughput(repeat: int) -> None:
     from aidl_lang.diagnostics import DiagnosticSink
     from aidl_lang import parser as P
+    from aidl_lang.parsing import lexing as LX, tables as T
     from aidl_lang.parser import mask_comments, parse
     from benchmarks.families import hierarchy
     src = hierarchy(140, seed=3).source
     kb = len(src.encode()) / 1e3
     # Lark alone, building its own tree with positions (what the parser did before issue 12)
     from lark import Lark
-    lp = Lark(P.GRAMMAR.read_text(), postlex=P._PostLex(), propagate_positions=True,
-              **P._LARK_OPTIONS)
+    lp = Lark(P.GRAMMAR.read_text(), postlex=LX._PostLex(), propagate_positions=True,
+              **T._LARK_OPTIONS)
     parse(src, "gen.aidl", DiagnosticSink())      # build the parser outside the timing
     t_ast, prog = _timed(lambda: parse(src, "gen.aidl", DiagnosticSink()), repeat)
     masked = mask_comments(src)

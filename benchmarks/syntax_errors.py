@@ -21,7 +21,8 @@ if os.environ.get("AIDL_SRC"):
 def bracket_pairs(src: str) -> list[tuple[int, int, int]]:
     """Every bracket of ``src`` (a balanced, lexable program): ``(offset, its line, its
     partner's line)``, sorted; ``ValueError`` if it does not lex or is unbalanced."""
-    from aidl_lang.parser import _lex_lists, mask_comments
+    from aidl_lang.parser import mask_comments
+    from aidl_lang.parsing.lexing import _lex_lists
     types, spans, err = _lex_lists(mask_comments(src))
     if err is not None:
         raise ValueError(f"does not lex: {err}")

@@ -17,7 +17,8 @@ import tempfile
 import lark
 import pytest
 
-from aidl_lang.parser import GRAMMAR, _PostLex
+from aidl_lang.parser import GRAMMAR
+from aidl_lang.parsing.lexing import _PostLex
 
 PROGRAM = "solid s {\n    a = Point(0, 0)\n    b = Point(3, 4)\n    Distance(a, b, 5)\n}\n"
 

@@ -11,6 +11,7 @@ from lark.exceptions import UnexpectedCharacters as LarkBadChar
 from lark.exceptions import UnexpectedInput, UnexpectedToken as LarkBadToken
 
 from aidl_lang import parser as P
+from aidl_lang.parsing import lalr as LA, lexing as LX, tables as T, tokens as TK
 
 ROOT = Path(__file__).resolve().parent.parent
 PROGRAMS = sorted([*ROOT.glob("examples/*.aidl"), *ROOT.glob("stdlib/**/*.aidl"),
@@ -20,7 +21,7 @@ TEXTS = [P.mask_comments(p.read_text()) for p in PROGRAMS]
 
 @pytest.fixture(scope="module")
 def lark_parser():
-    return Lark(P.GRAMMAR.read_text(), postlex=P._PostLex(), **P._LARK_OPTIONS)
+    return Lark(P.GRAMMAR.read_text(), postlex=LX._PostLex(), **T._LARK_OPTIONS)
 
 
 def _outcome_lark(lp, text):
@@ -37,15 +38,15 @@ def _outcome_lark(lp, text):
 
 def _outcome_ours(text):
     from aidl_lang.diagnostics import DiagnosticSink
-    P._STATE.builder = P._Builder("edit.aidl", DiagnosticSink())
+    LA._STATE.builder = LA._Builder("edit.aidl", DiagnosticSink())
     try:
-        P._run_lalr(text, "start")
+        LA._run_lalr(text, "start")
         return "ok"
     except P.UnexpectedToken as e:
         return ("token", len(text) if e.token.type == "$END" else e.token.start_pos)
     except P.UnexpectedCharacters as e:
         return ("char", e.pos_in_stream)
-    except P._BuildError:
+    except TK._BuildError:
         return "ok"                                  # an f-string's inside: checked later
 
 
@@ -59,7 +60,7 @@ def test_same_tokens_as_larks_lexer(lark_parser, i):
     text = TEXTS[i]
     theirs = [(t.type, str(t), t.start_pos, t.line, t.column, t.end_line, t.end_column, t.end_pos)
               for t in lark_parser.lex(text, dont_ignore=False)]
-    tokens, error = P._tokens(text)
+    tokens, error = LX._tokens(text)
     assert error is None
     ours = [(t.type, str(t), t.start_pos, t.line, t.column, t.end_line, t.end_column, t.end_pos)
             for t in tokens]
@@ -102,7 +103,7 @@ SNIPPETS = [
 @pytest.mark.parametrize("text", SNIPPETS)
 def test_post_lexer_rules_as_lark_runs_them(lark_parser, text):
     assert _outcome_ours(text) == _outcome_lark(lark_parser, text)
-    tokens, error = P._tokens(text)
+    tokens, error = LX._tokens(text)
     if error is None:
         theirs = [(t.type, str(t), t.start_pos) for t in lark_parser.lex(text)]
         assert [(t.type, str(t), t.start_pos) for t in tokens] == theirs
@@ -118,16 +119,16 @@ def test_a_freshly_built_table_parses_as_the_cached_one():
     change (the cache's key covers the grammar, the options and Lark's version)."""
     import json
     from aidl_lang.diagnostics import DiagnosticSink
-    cached = P._tables()
-    fresh = P._Tables(json.loads(json.dumps(P._tables_data())))
+    cached = LA._tables()
+    fresh = LA._Tables(json.loads(json.dumps(T._tables_data())))
     outs = []
     for tables in (cached, fresh):
-        P._TABLES = tables
+        LA._TABLES = tables
         try:
             outs.append([repr(P.parse(p.read_text(), p.name, DiagnosticSink()))
                          for p in PROGRAMS])
         finally:
-            P._TABLES = cached
+            LA._TABLES = cached
     assert outs[0] == outs[1]
 
 
@@ -136,33 +137,33 @@ def test_keyword_patterns_and_the_literal_table_lex_the_same():
     general path (Lark's whole-match patterns) gives the same tokens."""
     import json
     import re
-    data = json.loads(json.dumps(P._tables_data()))
+    data = json.loads(json.dumps(T._tables_data()))
     literal = data["lexer"]["keywords"]["NAME"]["literal"]
     assert literal["if"] == "IF" and literal["param"] == "PARAM"
     pattern = "|".join(f"(?P<{name}>{re.escape(text)})" for text, name in literal.items())
     data["lexer"]["keywords"]["NAME"] = {"patterns": [[pattern, 0]]}
-    general = P._Tables(data)
-    cached = P._tables()
+    general = LX._LexTables(data["lexer"])
+    cached = LX._lexer()
     text = TEXTS[0] + "\nif x in y and not z or w {\n}\nelse_ = 1\nparam p = 2\n"
-    ours = [(t.type, str(t), t.pos) for t in P._lex(text)[0]]
-    P._TABLES = general
+    ours = [(t.type, str(t), t.pos) for t in LX._lex(text)[0]]
+    LX._LEXER = general
     try:
-        theirs = [(t.type, str(t), t.pos) for t in P._lex(text)[0]]
+        theirs = [(t.type, str(t), t.pos) for t in LX._lex(text)[0]]
     finally:
-        P._TABLES = cached
+        LX._LEXER = cached
     assert ours == theirs and ("IF", "if") in [(a, b) for a, b, _ in ours]
 
 
 def _parse_with(tables, text):
     from aidl_lang.diagnostics import DiagnosticSink
-    cached = P._tables()
-    P._TABLES = tables
+    cached = LA._tables()
+    LA._TABLES = tables
     try:
         sink = DiagnosticSink()
         program = P.parse(text, "edit.aidl", sink)
         return repr(program), [(d.code, d.message, d.span) for d in sink.items]
     finally:
-        P._TABLES = cached
+        LA._TABLES = cached
 
 
 @pytest.fixture(scope="module")
@@ -170,15 +171,15 @@ def general_tables():
     """Every rule through the general reduction callback (no short callbacks, the
     pass-through rules `arg` and `bare_block` reduced as ordinary rules)."""
     import json
-    return P._Tables(json.loads(json.dumps(P._tables_data())), specialise=False)
+    return LA._Tables(json.loads(json.dumps(T._tables_data())), specialise=False)
 
 
 def test_the_short_callbacks_build_what_the_general_one_builds(general_tables):
     assert sum(r[0] is None for r in general_tables.reductions) \
-        < sum(r[0] is None for r in P._tables().reductions)
+        < sum(r[0] is None for r in LA._tables().reductions)
     for p in PROGRAMS:
         text = p.read_text()
-        assert _parse_with(P._tables(), text) == _parse_with(general_tables, text)
+        assert _parse_with(LA._tables(), text) == _parse_with(general_tables, text)
 
 
 @settings(max_examples=150, deadline=None)
@@ -188,7 +189,7 @@ def test_the_short_callbacks_build_the_same_on_random_edits(general_tables, edit
     text = PROGRAMS[k].read_text()
     i = int(where * len(text))
     text = text[:i] + piece + text[i:] if op in ("insert", "swap") else text[:i] + text[i + 1:]
-    assert _parse_with(P._tables(), text) == _parse_with(general_tables, text)
+    assert _parse_with(LA._tables(), text) == _parse_with(general_tables, text)
 
 
 @pytest.fixture(scope="module")
@@ -196,25 +197,25 @@ def whole_alternation_tables():
     """The lexer without the first-character dispatch: Lark's whole alternations at every
     position."""
     import json
-    data = json.loads(json.dumps(P._tables_data()))
+    data = json.loads(json.dumps(T._tables_data()))
     assert data["lexer"].pop("first") is not None
-    return P._Tables(data)
+    return LX._LexTables(data["lexer"])
 
 
 def _lexed(tables, text, keep_ignored=False):
-    cached = P._tables()
-    P._TABLES = tables
+    cached = LX._lexer()
+    LX._LEXER = tables
     try:
-        tokens, error = P._lex(text, keep_ignored)
+        tokens, error = LX._lex(text, keep_ignored)
         return ([(t.type, str(t), t.pos) for t in tokens],
                 None if error is None else (error.pos_in_stream, error.line, error.column))
     finally:
-        P._TABLES = cached
+        LX._LEXER = cached
 
 
 def test_first_characters_of_the_terminals():
-    first = P._tables().first
-    parts = P._tables().parts
+    first = LX._lexer().first
+    parts = LX._lexer().parts
     names = lambda ch: [parts[i][0] for i in first[ch]]  # noqa: E731
     assert names("f") == ["FSTRING", "NAME"] and names("7") == ["NUMBER"]
     assert names(".") == ["NUMBER", "DOT"] and names("*") == ["POW", "MUL_OP"]
@@ -231,13 +232,13 @@ def test_first_characters_of_the_terminals():
 def test_the_first_character_dispatch_lexes_as_the_whole_alternation(whole_alternation_tables,
                                                                      text):
     for keep in (False, True):
-        assert _lexed(P._tables(), text, keep) == _lexed(whole_alternation_tables, text, keep)
+        assert _lexed(LX._lexer(), text, keep) == _lexed(whole_alternation_tables, text, keep)
 
 
 def test_the_first_character_dispatch_lexes_the_programs_as_the_whole_alternation(
         whole_alternation_tables):
     for text in TEXTS:
-        assert _lexed(P._tables(), text, True) == _lexed(whole_alternation_tables, text, True)
+        assert _lexed(LX._lexer(), text, True) == _lexed(whole_alternation_tables, text, True)
 
 
 def test_a_freshly_built_table_is_specialised_like_one_read_from_the_cache():
@@ -246,8 +247,8 @@ def test_a_freshly_built_table_is_specialised_like_one_read_from_the_cache():
     reductions (a fresh table once had two fewer, which failed the test above depending on
     which test built the table first)."""
     import json
-    fresh = P._Tables(P._tables_data())
-    cached = P._Tables(json.loads(json.dumps(P._tables_data())))
+    fresh = LA._Tables(T._tables_data())
+    cached = LA._Tables(json.loads(json.dumps(T._tables_data())))
     assert sum(r[0] is None for r in fresh.reductions) \
         == sum(r[0] is None for r in cached.reductions) \
-        > sum(r[0] is None for r in P._Tables(P._tables_data(), specialise=False).reductions)
+        > sum(r[0] is None for r in LA._Tables(T._tables_data(), specialise=False).reductions)

@@ -599,7 +599,7 @@ def test_an_imported_file_is_parsed_once_per_text(tmp_path, monkeypatch):
     (the checker's look at its names and the interpreter share one parse; the live
     preview's slider compiles `std/gears.aidl` on every move); an edit is read anew, and a
     file with a syntax error is parsed again on every compile (never remembered)."""
-    from aidl_lang import parser
+    from aidl_lang.parsing import program as parser     # where parse_import looks
     from aidl_lang.pipeline import compile_source
     parses = []
     real = parser.parse
@@ -626,7 +626,7 @@ def test_the_imports_kept_are_bounded(tmp_path, monkeypatch):
     """``parse_import`` keeps at most ``IMPORTS_KEPT`` files and ``IMPORTS_KEPT_CHARS``
     characters of source, dropping the oldest first; a file larger than the whole bound is
     parsed and not kept."""
-    from aidl_lang import parser
+    from aidl_lang.parsing import program as parser     # where parse_import looks
     monkeypatch.setattr(parser, "_IMPORTED", {})
     monkeypatch.setattr(parser, "IMPORTS_KEPT", 3)
     monkeypatch.setattr(parser, "IMPORTS_KEPT_CHARS", 100)

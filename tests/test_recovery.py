@@ -130,7 +130,7 @@ async def test_the_server_outlines_every_structure_after_an_unclosed_paren(clien
 def _lexed_by_recovery(n: int, monkeypatch) -> int:
     """Characters handed to the LALR run while a file of ``n`` structures, the second with a
     `(` never closed, is parsed (every structure kept)."""
-    from aidl_lang import parser as P
+    from aidl_lang.parsing import recovery as P       # where the recovery calls it
     real, seen = P._run_lalr, [0]
 
     def counted(text, start):
@@ -159,7 +159,7 @@ def test_one_unclosed_paren_is_weighed_once_not_at_every_later_brace(monkeypatch
     rest of the file (129 look-aheads, and the statement's start found by walking back every
     line: 12,000 structures took 13 s in `_bracket_problems`).  Now the `}` ends it: one
     look-ahead, and the problem is still reported at the `(`'s line with the line to close."""
-    from aidl_lang import parser
+    from aidl_lang.parsing import brackets as parser
     calls = []
     real = parser._plain_cost
 

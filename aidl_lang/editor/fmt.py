@@ -1,7 +1,7 @@
 """``aidl fmt``: the canonical layout of an AIDL file.
 
 The formatter works on the token stream of ``grammar/aidl.lark`` (the parser's copy of
-Lark's basic lexer, :func:`aidl_lang.parser._lex`, with comments and whitespace kept) rather
+Lark's basic lexer, :func:`aidl_lang.parsing.lexing._lex`, with comments and whitespace kept) rather
 than on the AST, so every comment survives where it was:
 
 * one statement per line, blocks indented by 4 spaces, ``{`` at the end of its line and ``}``
@@ -26,7 +26,8 @@ from dataclasses import dataclass
 
 from .. import ast as A
 from ..diagnostics import LINE_BREAK, DiagnosticSink
-from ..parser import _lex, mask_comments, parse
+from ..parser import mask_comments, parse
+from ..parsing.lexing import _lex
 
 INDENT = 4
 

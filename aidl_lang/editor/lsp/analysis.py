@@ -26,7 +26,8 @@ from lsprotocol import types as T
 from ... import ast as A
 from ... import registry as R
 from ...diagnostics import DiagnosticSink, Span, as_lf
-from ...parser import _blank_logical_line, mask_comments, parse
+from ...parser import mask_comments, parse
+from ...parsing.recovery import _blank_logical_line
 from . import plain
 from .worker import diagnostics_json
 
