@@ -478,8 +478,9 @@ def _dir(g, end: bool):
 
 def _chamfer(a, b, d: float):
     """(point on a, point on b, the chamfer Line) ``d`` mm from the corner along each
-    segment (at most half of it)."""
+    segment: two equal legs, at most half of the shorter segment."""
     from .curves import Line
+    d = min(d, a.length / 2, b.length / 2)
     pa, pb = _along(a, d, True), _along(b, d, False)
     return pa, pb, Line(pa, pb)
 

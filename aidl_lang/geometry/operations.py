@@ -730,10 +730,14 @@ def _name(g: Geometry, S: Structure) -> str:
         else ("" if own is S else own.path)
     name = g.name
     if not g.listed:                       # an edge or a spine: a part of a named shape
-        whole = next((h for h in own.geometry if any(q is g for q in h.parts.values())), None)
-        if whole is not None:
-            part = next(k for k, q in whole.parts.items() if q is g)
-            name = f"{whole.name}.{part}" if whole.name else part
+        for h in own.geometry:
+            part = next((k for k, q in h.parts.items() if q is g), None)
+            if part is None:                   # a polygon's `edges[i]`
+                i = next((i for i, q in enumerate(h.data.get("edges") or ()) if q is g), None)
+                part = None if i is None else f"edges[{i}]"
+            if part is not None:
+                name = f"{h.name}.{part}" if h.name else part
+                break
     name = name or g.kind
     return f"{where}.{name}" if where else name
 
