@@ -981,6 +981,18 @@ failing ones: narrow the range to it, or fix the design so that it holds across 
         hole h { c = Circle(center=(offset, 0), radius=3) }   # leaves the plate past 21.4 mm
     }
 """),
+    "W0111": ("text along a curve longer than its circle", """
+A `Text(..., along=c)` is laid along the circle of `c` (a Circle, or an Arc's circle) letter by
+letter, and the text is longer than that whole circle: its last letters run round onto its
+first ones, on top of them. The warning gives the text's length and the circle's, and the fix:
+the largest size that fits, the smallest radius that holds it, or a shorter text. It points at
+the Text.
+
+    drawing d {
+        c = Circle(center=(0, 0), radius=5, construction=true)      # 31.4 mm around
+        t = Text("HELLO WORLD AGAIN", along=c, size=5)              # about 77 mm long
+    }
+"""),
     "W0104": ("empty drawing", """
 The file is empty (nothing but comments), or its structures build no geometry at all, so the
 SVG would be empty. Add shapes, or instantiate a template. A file of only templates, params and

@@ -1036,3 +1036,22 @@ def test_fillet_corner_that_is_none_E0408_and_smaller_than_asked_W0406(compile_t
     c = compile_text("solid s {\n    c = Circle(center=(0, 0), radius=5)\n    Fillet(1)\n}\n")
     (w,) = [d for d in c.sink.items if d.code == "W0406"]
     assert span4(w)[:2] == (3, 5) and "changes nothing in `s`" in w.message
+
+
+def test_text_along_a_circle_too_short_for_it_W0111(compile_text):
+    """Issue 91: a Text longer than the circle it follows ran round onto its own first
+    letters in silence; W0111 at the Text gives both lengths and a size that fits, and that
+    size compiles clean."""
+    from aidl_lang.geometry.text import text_extent
+    src = ("solid s {{\n    body = Rectangle(center=(0, 0), width=40, height=40)\n"
+           "    drawing d {{\n        c = Circle(center=(0, 0), radius=5, construction=true)\n"
+           "        t = Text(\"HELLO WORLD AGAIN\", along=c, size={})\n    }}\n}}\n")
+    c = compile_text(src.format(5))
+    (w,) = [d for d in c.sink.items if d.code == "W0111"]
+    x0, x1, _, _ = text_extent("HELLO WORLD AGAIN", 5)
+    assert span4(w)[:2] == (5, 13) and w.severity == "warning"
+    assert f"is {x1 - x0:.4g} mm long along a circle only 31.42 mm around" in w.message
+    fit = float(w.hint.split("at most ")[1].split(" mm")[0])
+    assert 0 < fit < 5 * 31.42 / (x1 - x0)
+    c = compile_text(src.format(fit))
+    assert not [d for d in c.sink.items if d.code == "W0111"]

@@ -405,11 +405,15 @@ def apply(ctx, kind: str, args: dict, name: str | None):
     if kind == "CornerPattern":
         return _corners(ctx, target, args, name)
     n = _count(args["count"], kind)
-    start = 0.0
+    start = step = 0.0
     if kind == "CircularPattern":
         start = args.get("start_angle", Q.num(0.0)).const()
         if start is None:
             raise OperationError("CircularPattern start_angle must be known before solving")
+        step = _turn_step(args, n)
+    else:
+        _zero_step(n, [(args["step"].x, args["step"].y)], "LinearPattern step",
+                   "the step from each instance to the next (`(12 mm, 0)`)")
     # a start angle turns every instance: the original is then only the pattern's template
     hide = start % (2 * math.pi) != 0.0
     out = Copies() if hide else Copies([target])
@@ -418,21 +422,57 @@ def apply(ctx, kind: str, args: dict, name: str | None):
             st = args["step"]
             xf, rot, flip = _translate(st.x * float(k), st.y * float(k))
         else:
-            if "step" in args:
-                step = args["step"].const()
-                if step is None:
-                    raise OperationError("CircularPattern step must be known before solving")
-            else:
-                total = args["angle"].const()
-                if total is None:
-                    raise OperationError("CircularPattern angle must be known before solving")
-                full = abs(abs(total) - 2 * math.pi) < 1e-9
-                step = total / (n if full or n == 1 else n - 1)
             xf, rot, flip = _rotate(args["center"], start + step * k)
         out.append(_copy(ctx, target, xf, rot, flip, name, k, "pattern", indexed=hide))
     if hide:
         _as_construction(target)
     return out
+
+
+def _turn_step(args: dict, n: int) -> float:
+    """CircularPattern's angle between neighbours (radians): ``step``, or ``angle`` spread
+    over the ``n`` instances (a full turn: n gaps; else n - 1).  An OperationError when a copy
+    would land on the original (a whole number of turns after k < n steps): the pattern would
+    make fewer shapes than asked, one on another."""
+    if "step" in args:
+        step = args["step"].const()
+        if step is None:
+            raise OperationError("CircularPattern step must be known before solving")
+        said = f"step={math.degrees(step):.6g} deg"
+    else:
+        total = args["angle"].const()
+        if total is None:
+            raise OperationError("CircularPattern angle must be known before solving")
+        full = abs(abs(total) - 2 * math.pi) < 1e-9
+        step = total / (n if full or n == 1 else n - 1)
+        said = f"angle={math.degrees(total):.6g} deg over {n} copies"
+    for k in range(1, n):
+        turns = k * step / (2 * math.pi)
+        if abs(turns - round(turns)) < 1e-9:
+            lands = (f"every copy lands on the original (each turns {math.degrees(step):.6g} "
+                     f"deg)" if k == 1 else
+                     f"copy {k} lands on the original ({k} x {math.degrees(step):.6g} deg = "
+                     f"{round(turns)} whole turn{'s' if abs(round(turns)) != 1 else ''}), so "
+                     f"only {k} of the {n} places differ")
+            raise OperationError(
+                f"CircularPattern with {said}: {lands}; the pattern would make {n} shapes on "
+                f"{k} spot{'s' if k > 1 else ''}. For {n} copies spread around a full turn "
+                f"write angle=360 deg (or step=360 deg / {n}), for an arc the angle from the "
+                f"first copy to the last")
+    return step
+
+
+def _zero_step(n: int, steps: list, what: str, fix: str, zero: str = "(0, 0)",
+               lands: str = "all {n} instances land on one spot") -> None:
+    """An OperationError when a pattern of ``n`` instances (``n`` > 1) moves each copy by a
+    step known to be (0, 0) (``steps``: (x, y) expressions, each a step that is used): every
+    copy would land on the original."""
+    from .expr import as_const
+    for sx, sy in steps:
+        x, y = as_const(sx), as_const(sy)
+        if n > 1 and x is not None and y is not None and x == 0 and y == 0:
+            raise OperationError(f"{what} is {zero}: {lands.format(n=n)}, so the pattern makes "
+                                 f"one where {n} were asked; give {fix}")
 
 
 def _mirror(ctx, S, target, about, name, k: int, indexed: bool):
@@ -629,6 +669,12 @@ def _grid(ctx, target, args: dict, name: str | None) -> Copies:
                                  f"(dx, dy), got {type_name(sp)}")
     else:
         dx, dy = args["col_spacing"].expr, args["row_spacing"].expr
+    _zero_step(cols, [(dx, 0.0)], "GridPattern's column spacing",
+               "the distance between columns (`spacing=(12 mm, 10 mm)`), or cols=1", "0",
+               "its {n} columns land on one another")
+    _zero_step(rows, [(0.0, dy)], "GridPattern's row spacing",
+               "the distance between rows (`spacing=(12 mm, 10 mm)`), or rows=1", "0",
+               "its {n} rows land on one another")
     out = Copies([target])
     for r in range(rows):
         for c in range(cols):
@@ -653,6 +699,7 @@ def _corners(ctx, target, args: dict, name: str | None) -> Copies:
             raise OperationError("CornerPattern at: needs at least one point")
         if len(pts) > 10_000:
             raise OperationError("CornerPattern at: more than 10000 points")
+        _same_points(pts)
     else:
         rect = args["rect"]
         if not (isinstance(rect, GeomRef) and rect.geom.kind in ("Rectangle", "RoundedRectangle")):
@@ -694,6 +741,22 @@ def _corners(ctx, target, args: dict, name: str | None) -> Copies:
         xf, rot, flip = _translate(p.x - p0.x, p.y - p0.y)
         out.append(_copy(ctx, target, xf, rot, flip, name, k, "pattern"))
     return out
+
+
+def _same_points(pts: list) -> None:
+    """An OperationError when two of CornerPattern's ``at`` points are the same numbers (two
+    copies on one spot)."""
+    from .expr import as_const
+    seen: dict = {}
+    for i, p in enumerate(pts):
+        xy = (as_const(getattr(p, "x", None)), as_const(getattr(p, "y", None)))
+        if None in xy:
+            continue
+        if xy in seen:
+            raise OperationError(f"CornerPattern at: points {seen[xy]} and {i} are both "
+                                 f"({xy[0]:.6g}, {xy[1]:.6g}) mm, so two copies land on one "
+                                 f"spot; give each copy its own point")
+        seen[xy] = i
 
 
 def _inset(ctx, v):
