@@ -722,27 +722,10 @@ class Renderer:
                 out.lines.append((style, np.vstack([pl, pl[:1]])))
                 out.strokes.append((style, ("poly", pl, lp), g))
 
-    def _text_wraps(self, g: Geometry, r: float) -> None:
-        """W0111 (once) for a Text along a curve of radius ``r`` that is longer than the
-        curve's whole circle: its letters would run round onto its first ones."""
-        from ...geometry.text import text_extent
-        x0, x1, _, _ = text_extent(g.data["text"], g.data["size"])
-        w, around = x1 - x0, 2 * math.pi * r
-        if not (r > 0 and w > around) or any(e[0] is g for e in self.shape_errors):
-            return
-        size = g.data["size"]
-        fit = math.floor(size * around / w * 100) / 100
-        self.shape_errors.append((g, (
-            f"text `{g.label}` (\"{g.data['text'][:40]}\") is {w:.4g} mm long along a circle "
-            f"only {around:.4g} mm around (radius {r:.4g} mm): its last letters run round "
-            f"onto its first ones"),
-            f"use a size of at most {fit:g} mm, a circle of radius at least "
-            f"{math.ceil(w / (2 * math.pi) * 100) / 100:g} mm, or a shorter text", "W0111"))
-
     def text_along(self, g: Geometry, along: Geometry) -> list:
         """The strokes of a Text along a Circle or Arc (relative to its solved center): at
         its ``angle``, else the arc's middle (a circle's top)."""
-        from ...geometry.text import text_strokes_along
+        from ...geometry.text import text_strokes_along, wraps
         flip = bool(g.data.get("flip"))
         if along.kind == "Arc":
             arc = self.segment(along)
@@ -750,7 +733,9 @@ class Renderer:
         else:                                    # a circle's top (flip: its bottom)
             r, mid = float(abs(self.x[along.scalars["radius"].index])), \
                 -math.pi / 2 if flip else math.pi / 2
-        self._text_wraps(g, r)
+        said = wraps(g.data["text"], g.data["size"], r)
+        if said is not None and not any(e[0] is g for e in self.shape_errors):
+            self.shape_errors.append((g, f"text `{g.label}` {said[0]}", said[1], "W0111"))
         ang = g.data.get("angle")
         return text_strokes_along(g.data["text"], g.data["size"], r,
                                   mid if ang is None else ang, g.data["anchor"],
