@@ -113,6 +113,24 @@ def _check_said(case, said, names, span_line):
     assert d.span.line == span_line
 
 
+def _run(op: str, pair, size: float):
+    """Compile ``op([edge1, edge2], size)`` on the generated pair: None when it says E0408
+    (checked: a pair that does not meet, both edges named, at the call), else (case, source,
+    edge 1, edge 2, the result, its W0406 if any, the size the corner got)."""
+    case, body, e1, e2, names = pair
+    src = f"solid hook {{\n{body}    {op}([{names[0]}, {names[1]}], {size})\n}}\n"
+    line = src[:src.index(op + "(")].count("\n") + 1
+    res, said = _compile(src)
+    if any(d.code == "E0408" for d in said):
+        _check_said(case, said, names, line)
+        return None
+    assert case in MEETS, (case, src)
+    got = _size_said(said, size)
+    if said:
+        assert got < size and said[0].span.line == line
+    return case, src, e1, e2, res, said, got
+
+
 SETTINGS = settings(max_examples=16, deadline=None,
                     suppress_health_check=[HealthCheck.too_slow])
 
@@ -120,17 +138,10 @@ SETTINGS = settings(max_examples=16, deadline=None,
 @given(pair=pairs(), r=st.sampled_from([0.5, 2.0, 5.0, 60.0]))
 @SETTINGS
 def test_a_fillet_of_two_edges_is_an_arc_tangent_to_both_or_a_message(pair, r):
-    case, body, e1, e2, names = pair
-    src = f"solid hook {{\n{body}    Fillet([{names[0]}, {names[1]}], {r})\n}}\n"
-    line = src[:src.index("Fillet(")].count("\n") + 1
-    res, said = _compile(src)
-    if any(d.code == "E0408" for d in said):
-        _check_said(case, said, names, line)
+    ran = _run("Fillet", pair, r)
+    if ran is None:
         return
-    assert case in MEETS, (case, src)
-    rho = _size_said(said, r)
-    if said:
-        assert rho < r and said[0].span.line == line
+    case, src, e1, e2, res, said, rho = ran
     o = res.output
     # the SVG, by svgelements: one arc of radius rho tangent to both lines (its centre rho
     # from each, its ends on them)
@@ -161,15 +172,10 @@ def test_a_fillet_of_two_edges_is_an_arc_tangent_to_both_or_a_message(pair, r):
 @given(pair=pairs(), dist=st.sampled_from([0.5, 2.0, 5.0, 60.0]))
 @SETTINGS
 def test_a_chamfer_of_two_edges_is_a_line_across_the_corner_or_a_message(pair, dist):
-    case, body, e1, e2, names = pair
-    src = f"solid hook {{\n{body}    Chamfer([{names[0]}, {names[1]}], {dist})\n}}\n"
-    line = src[:src.index("Chamfer(")].count("\n") + 1
-    res, said = _compile(src)
-    if any(d.code == "E0408" for d in said):
-        _check_said(case, said, names, line)
+    ran = _run("Chamfer", pair, dist)
+    if ran is None:
         return
-    assert case in MEETS, (case, src)
-    leg = _size_said(said, dist)
+    case, src, e1, e2, res, said, leg = ran
     tol = TOL if not said else 1e-5 * leg          # a W0406's size: printed to 6 digits
     M = _meet(e1, e2)
     import svgelements as se
