@@ -1033,6 +1033,9 @@ def test_fillet_corner_that_is_none_E0408_and_smaller_than_asked_W0406(compile_t
     assert not errors(c)
     (w,) = [d for d in c.sink.items if d.code == "W0406"]
     assert span4(w)[:2] == (4, 5) and "with only 20 mm" in w.message
+    fits = w.hint.split("at most ")[1].split(" mm")[0]          # the fix: asked, made whole
+    c = compile_text(L + f"    Fillet([stem.body.right, arm.body.top], {fits})\n}}\n")
+    assert not errors(c) and not [d for d in c.sink.items if d.code == "W0406"]
     c = compile_text("solid s {\n    c = Circle(center=(0, 0), radius=5)\n    Fillet(1)\n}\n")
     (w,) = [d for d in c.sink.items if d.code == "W0406"]
     assert span4(w)[:2] == (3, 5) and "changes nothing in `s`" in w.message

@@ -111,17 +111,17 @@ def finish(s: Structure, loops: list, x=None, check=None, said=None) -> list:
     ``loops`` (:class:`~.curves.Loop`, outer loops counter-clockwise and holes clockwise);
     ``x`` (the solved unknowns) places corners chosen with ``at``.  ``check``: called before
     each loop (the compile's deadline: it raises to stop).  ``said``: a list that gets
-    ``(call, code, message, hint)`` for a chosen corner that is no corner of the outline
-    (E0408), one rounded smaller than asked and an operation that finds no corner at all
-    (W0406).  Returns the new loops."""
+    ``(call, code, index of the chosen corner or -1, message, hint)`` (:func:`report`) for a
+    chosen corner that is no corner of the outline (E0408), one rounded smaller than asked
+    and an operation that finds no corner at all (W0406).  Returns the new loops."""
     for kind, r, at, call in getattr(s, "finish", []):
         chosen, why, pts = [], {}, None
         if at is not None and x is not None:
             chosen = [c.placed(x) for c in at]
             pts = []
             for i, c in enumerate(chosen):
-                got, why[i] = c.targets()
-                pts += [(p, i) for p in got]
+                meet, why[i] = c.targets()
+                pts += [(p, i) for p in meet]
         got = {}                  # index into pts -> the size that corner got (0: none)
         done = []
         for lp in loops:
@@ -155,8 +155,9 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
                  + ("corners (only circles and smooth joins)" if fillet else
                     "outside corners (only circles, smooth joins and inside corners, which "
                     "a Chamfer of the whole outline leaves)"),
-                 f"delete the `{kind}`, or name the corners: `{kind}(at=[edge1, edge2], "
-                 f"{'radius' if fillet else 'distance'}={r:.6g} mm)`")]
+                 "delete the `Fillet`: the outline has nothing for it to round" if fillet
+                 else f"delete the `Chamfer`, or name the inside corners to fill: "
+                      f"`Chamfer(at=[edge1, edge2], distance={r:.6g} mm)`")]
     out = []
     for i, c in enumerate(chosen):
         if why.get(i):
@@ -184,14 +185,15 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
             out.append((call, "E0408", i, msg, hint))
         elif min(found) < r * (1 - SHRUNK):
             least = min(found)
+            fits = math.floor(least * 1000) / 1000          # asked for, it is made whole
             done = (f"{verb}s {c.describe()} with only {least:.6g} mm" if least > 0
                     else f"leaves {c.describe()} sharp")
             out.append((call, "W0406", i,
                         f"{head} {done}: the outline's pieces next to the corner leave room "
                         f"for no more (a corner takes at most half of each piece"
                         f"{', and the arc must touch both' if fillet else ''})",
-                        f"ask for at most {least:.4g} mm there, or make the edges beside the "
-                        f"corner longer" if least > 0 else
+                        f"ask for at most {fits:g} mm there, or make the edges beside the "
+                        f"corner longer" if fits > 0 else
                         f"make the edges beside the corner longer, or delete the `{kind}`"))
     return out
 
