@@ -27,17 +27,21 @@ def _pt(p) -> str:
     return f"({p[0]!r}, {p[1]!r})"
 
 
-def _r(*pts):
-    """The points as the program writes them (6 decimals), so the edges are what it reads."""
-    return [(round(x, 6), round(y, 6)) for x, y in pts]
+def _r(turn: float, *pts):
+    """The points turned by ``turn`` (radians) about the origin, as the program writes them
+    (6 decimals), so the edges are what it reads."""
+    c, s = math.cos(turn), math.sin(turn)
+    return [(round(x * c - y * s, 6), round(x * s + y * c, 6)) for x, y in pts]
 
 
 @st.composite
 def pairs(draw):
     """(case, program body, edge 1's ends, edge 2's ends, names): edge 1 runs up the line
     x = 0 (the right side of the solid `stem`), edge 2 leaves the point M = (0, m) at angle
-    phi (the bottom side of the solid `arm`, a parallelogram of height w above it)."""
+    phi (the bottom side of the solid `arm`, a parallelogram of height w above it); the
+    whole drawing then turned by a generated angle."""
     case = draw(st.sampled_from(MEETS + ("apart", "past the end", "parallel")))
+    turn = math.radians(draw(st.sampled_from([0.0, 90.0]) | st.floats(0, 360)))
     a, b = draw(st.floats(10, 40)), draw(st.floats(10, 40))        # edge 1: y from -a to b
     m = draw(st.floats(-a + 4, b - 4))
     phi = math.radians(draw(st.floats(-55, 55)))
@@ -49,17 +53,17 @@ def pairs(draw):
         # meet at M (an inside corner), its edges 0 and 1 at (0, -a) (an outside one)
         P3 = (L * d[0], m + L * d[1])
         P4 = (-12.0, max(P3[1], m) + w)
-        pts = _r((-12.0, -a), (0.0, -a), M, P3, P4)
+        pts = _r(turn, (-12.0, -a), (0.0, -a), M, P3, P4)
         M = pts[2]
         body = f"    solid stem {{\n        p = Polygon(points=[{', '.join(map(_pt, pts))}])\n    }}\n"
         if case == "ends":
             return case, body, (pts[1], M), (M, pts[3]), ("stem.p.edges[1]", "stem.p.edges[2]")
         return case, body, (pts[0], pts[1]), (pts[1], M), ("stem.p.edges[0]", "stem.p.edges[1]")
-    stem = _r((-12.0, -a), (0.0, -a), (0.0, b), (-12.0, b))
+    stem = _r(turn, (-12.0, -a), (0.0, -a), (0.0, b), (-12.0, b))
     if case == "parallel":
         g = draw(st.sampled_from([0.0, 0.5, 3.0]))
         A, B = (g, m - 2), (g, m + L)              # along x = g, up
-        arm = _r(A, B, (g + w, m + L), (g + w, m - 2))
+        arm = _r(turn, A, B, (g + w, m + L), (g + w, m - 2))
     else:
         s = {"crossing": draw(st.floats(2, 8)), "one ends": 0.0,
              "apart": -draw(st.floats(0.5, 5)), "past the end": 2.0}[case]
@@ -67,7 +71,7 @@ def pairs(draw):
             M = (0.0, b + draw(st.floats(1, 6)))
         A = (M[0] - s * d[0], M[1] - s * d[1])
         B = (M[0] + L * d[0], M[1] + L * d[1])
-        arm = _r(A, B, (B[0], B[1] + w), (A[0], A[1] + w))
+        arm = _r(turn, A, B, (B[0], B[1] + w), (A[0], A[1] + w))
     body = (f"    solid stem {{\n        p = Polygon(points=[{', '.join(map(_pt, stem))}])\n    }}\n"
             f"    solid arm {{\n        q = Polygon(points=[{', '.join(map(_pt, arm))}])\n    }}\n")
     return case, body, (stem[1], stem[2]), (arm[0], arm[1]), ("stem.p.edges[1]", "arm.q.edges[0]")
