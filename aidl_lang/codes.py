@@ -990,7 +990,7 @@ the Text.
 
     drawing d {
         c = Circle(center=(0, 0), radius=5, construction=true)      # 31.4 mm around
-        t = Text("HELLO WORLD AGAIN", along=c, size=5)              # about 77 mm long
+        t = Text("HELLO WORLD AGAIN", along=c, size=5)              # 74.5 mm long: W0111
     }
 """),
     "W0104": ("empty drawing", """
