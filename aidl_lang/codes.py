@@ -342,6 +342,24 @@ at a corner where an `Ellipse` meets another ellipse or a spline: the error poin
         Fillet(1)
     }
 """),
+    "E0408": ("Fillet or Chamfer corner that is no corner", """
+A `Fillet` or `Chamfer` names a corner with `at` (two edges, a point, a line's ends or a
+shape's corners) and the final outline of its structure, after the booleans, has no corner
+there, so nothing would be rounded. Two edges make a corner where they meet: at their ends,
+where they cross (the inside corner of an L made of two rectangles), or where one ends on the
+other. The error points at the call, names both edges and says why: they are parallel (or lie
+on one line); they do not meet (how far past which end their lines cross); or they meet where
+the outline runs straight on, or inside the material (a third shape covers the point), or
+outside it. The hint gives the nearest corner of the outline. A line's two ends or a shape's
+corners are an error only when none of them is a corner. Nothing is written.
+
+    solid hook {
+        solid stem { body = Rectangle(center=(0, 0), width=10, height=60) }
+        solid arm { body = Rectangle(center=(20, -25), width=50, height=10) }
+        Fillet([stem.body.right, arm.body.top], 6)       # they cross: the inside corner, made
+        Fillet([stem.body.right, stem.body.left], 2)     # parallel: E0408
+    }
+"""),
     "E0501": ("parts lie over each other in a machine file", """
 A machine file (G-code, LightBurn, HP-GL) is written as the program draws the parts, and two
 separate parts lie over each other there: the machine would cut one part through the other.
@@ -436,6 +454,22 @@ first-named as the `Align*` did), or round only the corners away from that side
         Fillet(radius=1.5)
     }
     AlignLeft(x0, board)        # the rounded X ends 0.621 mm in: W0405
+"""),
+    "W0406": ("Fillet or Chamfer smaller than asked, or changing nothing", """
+A corner chosen with `at` is rounded with a smaller radius (or a shorter chamfer leg) than
+asked, or not at all: a corner takes at most half of each outline piece beside it, and a
+fillet's arc must touch both pieces, so where they are short the size shrinks to fit. The
+warning points at the call, names the corner and gives the size it got; ask for at most that,
+or make the edges beside the corner longer. Also a `Fillet(radius)` (or `Chamfer(distance)`)
+of the whole outline that finds no corner to round (no outside corner to cut): an outline of
+circles and smooth joins only. (A whole-outline fillet that shrinks at a short piece is said
+nowhere: rounding every corner up to the radius is what it is for.)
+
+    solid s {
+        stem = Rectangle(center=(0, 0), width=10, height=60)
+        arm = Rectangle(center=(20, -25), width=50, height=10)
+        Fillet([stem.right, arm.top], 30)    # 20 mm: arm.top's 40 mm piece, half each corner
+    }
 """),
     "W0501": ("hole refilled by another solid", """
 A hole cuts only the solid it is declared in. When that solid is then united with a sibling
@@ -945,6 +979,18 @@ failing ones: narrow the range to it, or fix the design so that it holds across 
     solid plate {
         body = Rectangle(center=(0, 0), width=50, height=30)
         hole h { c = Circle(center=(offset, 0), radius=3) }   # leaves the plate past 21.4 mm
+    }
+"""),
+    "W0111": ("text along a curve longer than its circle", """
+A `Text(..., along=c)` is laid along the circle of `c` (a Circle, or an Arc's circle) letter by
+letter, and the text is longer than that whole circle: its last letters run round onto its
+first ones, on top of them. The warning gives the text's length and the circle's, and the fix:
+the largest size that fits, the smallest radius that holds it, or a shorter text. It points at
+the Text.
+
+    drawing d {
+        c = Circle(center=(0, 0), radius=5, construction=true)      # 31.4 mm around
+        t = Text("HELLO WORLD AGAIN", along=c, size=5)              # 74.5 mm long: W0111
     }
 """),
     "W0104": ("empty drawing", """

@@ -332,8 +332,10 @@ def after_solve(sink: DiagnosticSink, model: Model, min_wall: float | None = Non
                     warnings.simplefilter("ignore", RuntimeWarning)  # degenerate sizes: quiet
                     drawing = render_model(model, deadline)
                 for g, message, hint, *code in drawing.shape_errors:
-                    sink.add(Diagnostic(code[0] if code else "E0406", message, g.span, "error",
-                                        hint=hint), calls=instance_calls(g.owner))
+                    code = code[0] if code else "E0406"     # (a W code: a warning, W0406)
+                    sink.add(Diagnostic(code, message, g.span,
+                                        "warning" if code[0] == "W" else "error", hint=hint),
+                             calls=instance_calls(g.owner))
                 check_final_boxes(sink, model, drawing, instance_calls)
                 check_stray_holes(sink, drawing, deadline)
                 if shape_checks:

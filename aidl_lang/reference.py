@@ -1109,8 +1109,8 @@ EXAMPLES: dict[str, str] = {
                            "}\nFixed(body)\nFixed(tab)\n"
                            "AllowOverlap(tab.pin, body)    # body refills half of the pin hole",
                            "plate"),
-    "Fillet": _solid("body = Rectangle(center=(0, 0), width=40, height=20)\nFillet(4)",
-                     "plate"),
+    "Fillet": _solid("a = Rectangle(center=(0, 0), width=10, height=60)\nb = Rectangle(center=(20, -25"
+                     "), width=50, height=10)\nFillet([a.right, b.top], 6)   # the L's inside corner", "hook"),
     "Chamfer": _solid("body = Rectangle(center=(0, 0), width=40, height=20)\nChamfer(3)",
                       "plate"),
     # statements

@@ -448,7 +448,7 @@ _DEFS = {
                  [A("a", "any"), A("b", "any"), A("radius", "length")],
                  cat="operation",
                  doc="Round every corner of this solid's (or hole's) final outline, or only "
-                     "the corners at: a point, [edge1, edge2] (where they meet; also "
+                     "the corners at: a point, [edge1, edge2] (where they meet or cross; also "
                      "Fillet(edge1, edge2, radius)), a shape's corners, or a list of these."),
     "Chamfer": _c([A("distance", "length")], [A("at", "any"), A("distance", "length")],
                   [A("a", "any"), A("b", "any"), A("distance", "length")],

@@ -1010,3 +1010,51 @@ def test_W0109_a_hole_in_an_assembly_cuts_nothing(tmp_path, capsys):
     (w,) = [d for d in doc["diagnostics"] if d["code"] == "W0109"]
     assert rc == 0 and "`kit.b`" in w["message"] and w["span"]["line"] == 4
     assert w["fix"]["replacement"] == "CutInto(b_hole, b)\n    "
+
+
+def test_fillet_corner_that_is_none_E0408_and_smaller_than_asked_W0406(compile_text):
+    """Issue 91: a chosen corner the final outline does not have is an error at the call
+    naming both edges and why (was: nothing rounded, nothing said); one rounded smaller than
+    asked, and a whole-outline Fillet with no corner to round, a warning at the call."""
+    L = ("solid hook {\n    solid stem { body = Rectangle(center=(0, 0), width=10, height=60) }\n"
+         "    solid arm { body = Rectangle(center=(20, -25), width=50, height=10) }\n")
+    c = compile_text(L + "    Fillet([stem.body.right, stem.body.left], 2)\n}\n")
+    d = the_error(c, "E0408")
+    assert span4(d) == (4, 5, 4, 49)
+    assert "`stem.body.right` and `stem.body.left`: they are parallel, 10 mm apart" in d.message
+    c = compile_text(L + "    Chamfer([stem.body.top, arm.body.right], 2)\n}\n")
+    d = the_error(c, "E0408")
+    assert "their lines cross at (45, 30) mm, 40 mm past an end of `stem.body.top`" in d.message
+    c = compile_text(L + "    Fillet([stem.body.right, arm.body.bottom], 2)\n}\n")
+    d = the_error(c, "E0408")
+    assert "they meet at (5, -30) mm, and the outline runs on through that point" in d.message
+    assert d.hint.startswith("the nearest corner of the outline is at (")    # 10 mm off
+    c = compile_text(L + "    Fillet([stem.body.right, arm.body.top], 30)\n}\n")
+    assert not errors(c)
+    (w,) = [d for d in c.sink.items if d.code == "W0406"]
+    assert span4(w)[:2] == (4, 5) and "with only 20 mm" in w.message
+    fits = w.hint.split("at most ")[1].split(" mm")[0]          # the fix: asked, made whole
+    c = compile_text(L + f"    Fillet([stem.body.right, arm.body.top], {fits})\n}}\n")
+    assert not errors(c) and not [d for d in c.sink.items if d.code == "W0406"]
+    c = compile_text("solid s {\n    c = Circle(center=(0, 0), radius=5)\n    Fillet(1)\n}\n")
+    (w,) = [d for d in c.sink.items if d.code == "W0406"]
+    assert span4(w)[:2] == (3, 5) and "changes nothing in `s`" in w.message
+
+
+def test_text_along_a_circle_too_short_for_it_W0111(compile_text):
+    """Issue 91: a Text longer than the circle it follows ran round onto its own first
+    letters in silence; W0111 at the Text gives both lengths and a size that fits, and that
+    size compiles clean."""
+    from aidl_lang.geometry.text import text_extent
+    src = ("solid s {{\n    body = Rectangle(center=(0, 0), width=40, height=40)\n"
+           "    drawing d {{\n        c = Circle(center=(0, 0), radius=5, construction=true)\n"
+           "        t = Text(\"HELLO WORLD AGAIN\", along=c, size={})\n    }}\n}}\n")
+    c = compile_text(src.format(5))
+    (w,) = [d for d in c.sink.items if d.code == "W0111"]
+    x0, x1, _, _ = text_extent("HELLO WORLD AGAIN", 5)
+    assert span4(w)[:2] == (5, 13) and w.severity == "warning"
+    assert f"is {x1 - x0:.4g} mm long along a circle only 31.42 mm around" in w.message
+    fit = float(w.hint.split("at most ")[1].split(" mm")[0])
+    assert 0 < fit < 5 * 31.42 / (x1 - x0)
+    c = compile_text(src.format(fit))
+    assert not [d for d in c.sink.items if d.code == "W0111"]

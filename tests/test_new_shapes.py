@@ -495,6 +495,7 @@ def test_law_a_copied_sector_is_the_moved_original(tmp_path_factory, a1, sweep, 
     CircularPattern (turned by th) is the reference motion of the original's exact outline
     (every vertex and every arc's centre and radius, to 1e-9 mm)."""
     out = tmp_path_factory.mktemp("law")
+    th = th or 90           # a pattern turned by 0 puts its copy on the original: E0108
     t = math.radians(th)
     op = (f"axis = Line((0, 0), ({50 * math.cos(t)!r}, {50 * math.sin(t)!r}), construction=true)\n"
           f"    m = Mirrored(w, about=axis)" if mirror else

@@ -127,6 +127,21 @@ def test_fillet_in_a_hole_rounds_the_pocket(compile_text):
     ("    solid c {\n        a = Circle((0, 0), 1)\n        LinearPattern(c, 2, (5, 0))\n    }",
      "into itself"),
     ("    a = Circle((0, 0), 1)\n    Fillet(-1)", "positive size"),
+    # issue 91: copies that would land on one another are said, not stacked in silence
+    ("    a = Circle((9, 0), 1)\n    LinearPattern(a, 4, (0, 0))",
+     "step is (0, 0): all 4 instances land on one spot"),
+    ("    a = Circle((9, 0), 1)\n    CircularPattern(a, 6, (0, 0), angle=0 deg)",
+     "every copy lands on the original"),
+    ("    a = Circle((9, 0), 1)\n    CircularPattern(a, 3, (0, 0), step=360 deg)",
+     "every copy lands on the original (each turns 360 deg)"),
+    ("    a = Circle((9, 0), 1)\n    CircularPattern(a, 6, (0, 0), angle=720 deg)",
+     "copy 5 lands on the original (5 x 144 deg = 2 whole turns)"),
+    ("    a = Circle((9, 0), 1)\n    GridPattern(a, 2, 3, spacing=(0, 5))",
+     "column spacing is 0: its 3 columns land on one another"),
+    ("    a = Circle((9, 0), 1)\n    GridPattern(a, 2, 3, col_spacing=5, row_spacing=0)",
+     "row spacing is 0: its 2 rows land on one another"),
+    ("    a = Circle((9, 0), 1)\n    CornerPattern(a, at=[(9, 0), (20, 0), (9, 0)])",
+     "points 0 and 2 are both (9, 0) mm"),
 ])
 def test_operation_errors_are_diagnostics(compile_text, body, msg):
     c = compile_text(f"solid s {{\n{body}\n}}\n")
@@ -147,3 +162,14 @@ def test_mirrored_ellipse_rotation(compile_text):
                           "    e = Ellipse((10, 0), 6, 2, rotation=30 deg)\n    m = Mirrored(e, about=axis)")
     g = [g for g in c.model.all_geometry() if g.kind == "Ellipse"]
     assert math.degrees(g[1].data["rotation"]) == pytest.approx(180 - 30)
+
+
+def test_patterns_that_only_look_alike_are_made(compile_text):
+    """The zero-step refusals stop at what is exactly a stack: one row (rows=1 with a row
+    spacing of 0), a full turn of 6 (60 deg apart), 5 copies over 400 deg (100 deg apart:
+    past a turn, yet no copy on another; over 720 deg the last always lands on the first)."""
+    for body in ("    a = Circle((9, 0), 1)\n    GridPattern(a, 1, 3, spacing=(5, 0))",
+                 "    a = Circle((9, 0), 1)\n    CircularPattern(a, 6, (0, 0))",
+                 "    a = Circle((9, 0), 1)\n    CircularPattern(a, 5, (0, 0), angle=400 deg)"):
+        c = compile_text(f"solid s {{\n{body}\n}}\n")
+        assert not c.sink.errors(), [d.message for d in c.sink.errors()]

@@ -21,7 +21,10 @@ replaces every corner, convex or concave, by an arc of ``radius`` tangent to bot
 (lines or arcs: its center is where the two segments' offsets by ``radius`` cross); a chamfer
 cuts every convex corner with two legs of ``distance`` along its segments.  Where a segment is
 too short for both of its corners, each takes at most half of it (the fillet radius shrinks to
-fit).
+fit).  Corners chosen with ``at`` (:func:`_chosen`): two edges name the corner where they meet
+(at their ends, where they cross, or where one ends on the other), found after the solve; a
+chamfer there cuts an inside corner too.  The rounding itself, and what is said when a chosen
+corner is none (E0408) or is rounded smaller than asked (W0406), is :mod:`.corners`.
 """
 from __future__ import annotations
 
@@ -30,6 +33,7 @@ import math
 from ..diagnostics import EvalError
 from ..limits import DEFAULT_BUDGET
 from .expr import Lin, _lin, combine, var
+from .corners import Chosen, FinishCall
 from .model import Constraint, Equation, Geometry, Point, Structure, equation
 from .values import PV, GeomRef, Q, StructRef, type_name
 
@@ -275,8 +279,8 @@ class _Cloner:
             def moved(px, py):
                 X, Y = self.xf(px - fx, py - fy)
                 return X + fx, Y + fy
-            c.finish = [(kind, r, None if at is None else [moved(px, py) for px, py in at])
-                        for kind, r, at in s.finish]
+            c.finish = [(kind, r, None if at is None else [ch.moved(moved) for ch in at], call)
+                        for kind, r, at, call in s.finish]
         return c
 
     def remap(self, v):
@@ -374,12 +378,14 @@ def apply(ctx, kind: str, args: dict, name: str | None):
         if "at" in args:
             ox, oy = S.frame_offset(None)
             from .bbox import contains_bbox
-            pts = _corner_points(ctx, args["at"], S, kind)
-            if any(contains_bbox(p.x) or contains_bbox(p.y) for p in pts):
+            at = _chosen(ctx, args["at"], S, kind)
+            if any(contains_bbox(p.x) or contains_bbox(p.y) for c in at for p in c.points):
                 raise OperationError(f"{kind} at: name corners by geometry (`body.top_right`, "
                                      f"`[body.top, body.right]`), not by bounding-box values")
-            at = [(p.x + ox, p.y + oy) for p in pts]
-        S.finish = list(getattr(S, "finish", [])) + [(kind, r, at)]
+            at = [Chosen(c.what, tuple((p.x + ox, p.y + oy) for p in c.points), c.name)
+                  for c in at]
+        call = FinishCall(args.get("_span") or ctx.cur_span, S, kind)
+        S.finish = list(getattr(S, "finish", [])) + [(kind, r, at, call)]
         return None
     if kind == "AllowOverlap":
         return _allow_overlap([args["a"]] + ([args["b"]] if args.get("b") is not None else []),
@@ -399,11 +405,15 @@ def apply(ctx, kind: str, args: dict, name: str | None):
     if kind == "CornerPattern":
         return _corners(ctx, target, args, name)
     n = _count(args["count"], kind)
-    start = 0.0
+    start = step = 0.0
     if kind == "CircularPattern":
         start = args.get("start_angle", Q.num(0.0)).const()
         if start is None:
             raise OperationError("CircularPattern start_angle must be known before solving")
+        step = _turn_step(args, n)
+    else:
+        _zero_step(n, [(args["step"].x, args["step"].y)], "LinearPattern step",
+                   "the step from each instance to the next (`(12 mm, 0)`)")
     # a start angle turns every instance: the original is then only the pattern's template
     hide = start % (2 * math.pi) != 0.0
     out = Copies() if hide else Copies([target])
@@ -412,21 +422,57 @@ def apply(ctx, kind: str, args: dict, name: str | None):
             st = args["step"]
             xf, rot, flip = _translate(st.x * float(k), st.y * float(k))
         else:
-            if "step" in args:
-                step = args["step"].const()
-                if step is None:
-                    raise OperationError("CircularPattern step must be known before solving")
-            else:
-                total = args["angle"].const()
-                if total is None:
-                    raise OperationError("CircularPattern angle must be known before solving")
-                full = abs(abs(total) - 2 * math.pi) < 1e-9
-                step = total / (n if full or n == 1 else n - 1)
             xf, rot, flip = _rotate(args["center"], start + step * k)
         out.append(_copy(ctx, target, xf, rot, flip, name, k, "pattern", indexed=hide))
     if hide:
         _as_construction(target)
     return out
+
+
+def _turn_step(args: dict, n: int) -> float:
+    """CircularPattern's angle between neighbours (radians): ``step``, or ``angle`` spread
+    over the ``n`` instances (a full turn: n gaps; else n - 1).  An OperationError when a copy
+    would land on the original (a whole number of turns after k < n steps): the pattern would
+    make fewer shapes than asked, one on another."""
+    if "step" in args:
+        step = args["step"].const()
+        if step is None:
+            raise OperationError("CircularPattern step must be known before solving")
+        said = f"step={math.degrees(step):.6g} deg"
+    else:
+        total = args["angle"].const()
+        if total is None:
+            raise OperationError("CircularPattern angle must be known before solving")
+        full = abs(abs(total) - 2 * math.pi) < 1e-9
+        step = total / (n if full or n == 1 else n - 1)
+        said = f"angle={math.degrees(total):.6g} deg over {n} copies"
+    for k in range(1, n):
+        turns = k * step / (2 * math.pi)
+        if abs(turns - round(turns)) < 1e-9:
+            lands = (f"every copy lands on the original (each turns {math.degrees(step):.6g} "
+                     f"deg)" if k == 1 else
+                     f"copy {k} lands on the original ({k} x {math.degrees(step):.6g} deg = "
+                     f"{round(turns)} whole turn{'s' if abs(round(turns)) != 1 else ''}), so "
+                     f"only {k} of the {n} places differ")
+            raise OperationError(
+                f"CircularPattern with {said}: {lands}; the pattern would make {n} shapes on "
+                f"{k} spot{'s' if k > 1 else ''}. For {n} copies spread around a full turn "
+                f"write angle=360 deg (or step=360 deg / {n}), for an arc the angle from the "
+                f"first copy to the last")
+    return step
+
+
+def _zero_step(n: int, steps: list, what: str, fix: str, zero: str = "(0, 0)",
+               lands: str = "all {n} instances land on one spot") -> None:
+    """An OperationError when a pattern of ``n`` instances (``n`` > 1) moves each copy by a
+    step known to be (0, 0) (``steps``: (x, y) expressions, each a step that is used): every
+    copy would land on the original."""
+    from .expr import as_const
+    for sx, sy in steps:
+        x, y = as_const(sx), as_const(sy)
+        if n > 1 and x is not None and y is not None and x == 0 and y == 0:
+            raise OperationError(f"{what} is {zero}: {lands.format(n=n)}, so the pattern makes "
+                                 f"one where {n} were asked; give {fix}")
 
 
 def _mirror(ctx, S, target, about, name, k: int, indexed: bool):
@@ -623,6 +669,12 @@ def _grid(ctx, target, args: dict, name: str | None) -> Copies:
                                  f"(dx, dy), got {type_name(sp)}")
     else:
         dx, dy = args["col_spacing"].expr, args["row_spacing"].expr
+    _zero_step(cols, [(dx, 0.0)], "GridPattern's column spacing",
+               "the distance between columns (`spacing=(12 mm, 10 mm)`), or cols=1", "0",
+               "its {n} columns land on one another")
+    _zero_step(rows, [(0.0, dy)], "GridPattern's row spacing",
+               "the distance between rows (`spacing=(12 mm, 10 mm)`), or rows=1", "0",
+               "its {n} rows land on one another")
     out = Copies([target])
     for r in range(rows):
         for c in range(cols):
@@ -647,6 +699,7 @@ def _corners(ctx, target, args: dict, name: str | None) -> Copies:
             raise OperationError("CornerPattern at: needs at least one point")
         if len(pts) > 10_000:
             raise OperationError("CornerPattern at: more than 10000 points")
+        _same_points(pts)
     else:
         rect = args["rect"]
         if not (isinstance(rect, GeomRef) and rect.geom.kind in ("Rectangle", "RoundedRectangle")):
@@ -690,6 +743,22 @@ def _corners(ctx, target, args: dict, name: str | None) -> Copies:
     return out
 
 
+def _same_points(pts: list) -> None:
+    """An OperationError when two of CornerPattern's ``at`` points are the same numbers (two
+    copies on one spot)."""
+    from .expr import as_const
+    seen: dict = {}
+    for i, p in enumerate(pts):
+        xy = (as_const(getattr(p, "x", None)), as_const(getattr(p, "y", None)))
+        if None in xy:
+            continue
+        if xy in seen:
+            raise OperationError(f"CornerPattern at: points {seen[xy]} and {i} are both "
+                                 f"({xy[0]:.6g}, {xy[1]:.6g}) mm, so two copies land on one "
+                                 f"spot; give each copy its own point")
+        seen[xy] = i
+
+
 def _inset(ctx, v):
     """CornerPattern's ``inset``: one length (the same along both sides) or ``(dx, dy)``, dx
     along the rectangle's width and dy along its height (its own sides, turned with it);
@@ -715,336 +784,52 @@ def _what(v) -> str:
     return type_name(v)
 
 
-# ------------------------------------------------------------------ rendering
-CORNER_TURN = 1e-3      # rad: a join that turns less is tangent (a slot's side into its end)
+# ------------------------------------------------------------------ corners chosen with `at`
+def _name(g: Geometry, S: Structure) -> str:
+    """What the source calls ``g`` from ``S`` (`stem.body.right`: a shape's edge by its
+    shape's name)."""
+    own = g.owner
+    where = own.path[len(S.path) + 1:] if own is not S and own.path.startswith(S.path + ".") \
+        else ("" if own is S else own.path)
+    name = g.name
+    if not g.listed:                       # an edge or a spine: a part of a named shape
+        for h in own.geometry:
+            part = next((k for k, q in h.parts.items() if q is g), None)
+            if part is None:                   # a polygon's `edges[i]`
+                i = next((i for i, q in enumerate(h.data.get("edges") or ()) if q is g), None)
+                part = None if i is None else f"edges[{i}]"
+            if part is not None:
+                name = f"{h.name}.{part}" if h.name else part
+                break
+    name = name or g.kind
+    return f"{where}.{name}" if where else name
 
 
-CORNER_TOL = 1e-3                   # mm: a chosen corner matches an outline vertex this close
-
-
-def _corner_points(ctx, v, S, kind: str) -> list:
-    """The points (PV in ``S``'s frame) a ``Fillet(at, ...)``/``Chamfer(at, ...)`` names: a
-    point; two lines (the corner where they meet); a line (both ends); a shape (its outline
-    corners); or a list of these."""
+def _chosen(ctx, v, S, kind: str) -> list:
+    """The corners (:class:`~.corners.Chosen`, points in ``S``'s frame) a
+    ``Fillet(at, ...)``/``Chamfer(at, ...)`` names: a point; two lines (the corner where they
+    meet, found after the solve: at their ends, where they cross, or where one ends on the
+    other); a line (both ends); a shape (its outline corners); or a list of these."""
     from .constraints import _kind
     from .members import member, points_of
     if isinstance(v, PV):
-        return [v]
+        return [Chosen("point", (v,), "")]
     if isinstance(v, (tuple, list)) and len(v) == 2 and all(isinstance(c, Q) for c in v):
-        return [PV(v[0].expr, v[1].expr)]
+        return [Chosen("point", (PV(v[0].expr, v[1].expr),), "")]
     if isinstance(v, (list, tuple)):
         if len(v) == 2 and all(isinstance(e, GeomRef) and e.geom.kind == "Line" for e in v):
-            (a1, b1), (a2, b2) = ((member(e.geom, "start", S), member(e.geom, "end", S))
-                                  for e in v)
-            # the corner: the pair of ends (one of each line) closest together now
-            pairs = [(p, q) for p in (a1, b1) for q in (a2, b2)]
-            val = ctx.value_of
-
-            def gap(pq):
-                (p, q) = pq
-                return (val(p.x) - val(q.x)) ** 2 + (val(p.y) - val(q.y)) ** 2
-            return [min(pairs, key=gap)[0]]
-        return [p for e in v for p in _corner_points(ctx, e, S, kind)]
+            ends = tuple(member(e.geom, k, S) for e in v for k in ("start", "end"))
+            return [Chosen("edges", ends, tuple(_name(e.geom, S) for e in v))]
+        return [c for e in v for c in _chosen(ctx, e, S, kind)]
     if isinstance(v, GeomRef):
         g = v.geom
         if g.kind == "Point":
-            return [member(g, "p", S)]
+            return [Chosen("point", (member(g, "p", S),), _name(g, S))]
         if g.kind == "Line":
-            return [member(g, "start", S), member(g, "end", S)]
+            return [Chosen("ends", (member(g, "start", S), member(g, "end", S)), _name(g, S))]
         pts = points_of(g) if g.closed else []
         if pts and g.kind not in ("Circle", "Ellipse", "Slot"):
             from .members import _pv
-            return [_pv(p, S) for p in pts]
+            return [Chosen("corners", tuple(_pv(p, S) for p in pts), _name(g, S))]
     raise OperationError(f"{kind} at: give a point, two edges [a, b] (their corner), a line, "
                          f"a polygonal shape, or a list of these; got {_kind(v)}")
-
-
-class SplineCorner(ValueError):
-    """A Fillet or Chamfer asked for a corner where a spline or an ellipse meets another
-    curve: the rounding arc would have to be tangent to a cubic spline or an ellipse at a
-    point no closed form gives; ``curve``: the spline's :class:`~.spline.CubicSpline` or the
-    :class:`~.ellipse.EllipseCurve`, ``hint``: what to do."""
-
-    def __init__(self, message: str, curve, hint: str):
-        super().__init__(message)
-        self.curve = curve
-        self.hint = hint
-
-
-def finish(s: Structure, loops: list, x=None, check=None) -> list:
-    """Apply the structure's Fillet/Chamfer operations, in order, to its exact outline
-    ``loops`` (:class:`~.curves.Loop`, outer loops counter-clockwise and holes clockwise);
-    ``x`` (the solved unknowns) places corners chosen with ``at``.  ``check``: called before
-    each loop (the compile's deadline: it raises to stop).  Returns the new loops."""
-    from .expr import evaluate
-    for kind, r, at in getattr(s, "finish", []):
-        pts = None
-        if at is not None and x is not None:
-            pts = [(float(evaluate(px, x)), float(evaluate(py, x))) for px, py in at]
-        done = []
-        for lp in loops:
-            if check is not None:
-                check()
-            done.append(corners(lp, r, kind == "Fillet", pts))
-        loops = done
-    return loops
-
-
-def corners(loop, size: float, fillet: bool, only=None):
-    """``loop`` with its corners rounded (``fillet``: every corner, convex or concave, by an
-    arc of radius ``size`` tangent to both of its segments) or cut (chamfer: every convex
-    corner, by a line between the points ``size`` mm along each segment, arc length on an
-    arc).  A corner is a join where the direction turns by more than :data:`CORNER_TURN`
-    (tangent joins are not corners); with ``only`` (points, mm), just the corners within
-    :data:`CORNER_TOL` of one of them.  No corner takes more than half of a segment: where
-    a segment is too short for both of its corners the fillet radius (or chamfer leg)
-    shrinks to fit.  Lines stay on their lines and arcs on their circles, so the result is
-    exact (:mod:`.curves`)."""
-    from .curves import (Arc, Circle, EllipticArc, Line, Loop, Spline, simplify, turn_between,
-                         with_ends)
-    segs = loop.segments
-    n = len(segs)
-    if n < 2 or any(isinstance(g, Circle) for g in segs):
-        return loop
-    cut = [None] * n                 # corner k (before segment k): (end of k-1, start of k, new)
-    for k in range(n):
-        a, b = segs[k - 1], segs[k]
-        p = b.start
-        turn = turn_between(a, b)
-        chosen = only is None or any(math.hypot(p[0] - qx, p[1] - qy) <= CORNER_TOL
-                                     for qx, qy in only)
-        if abs(turn) <= CORNER_TURN or not chosen or (not fillet and turn < 0):
-            continue
-        el = next((g for g in (a, b) if isinstance(g, EllipticArc)), None)
-        if el is not None and not isinstance(a if el is b else b, (EllipticArc, Spline)):
-            # an ellipse beside a line or an arc: the fillet's centre is found on the
-            # ellipse's offset curve (a root in its parameter), the chamfer's ends by arc length
-            cut[k] = _fillet(a, b, turn, size) if fillet else _chamfer(a, b, size)
-            continue
-        if el is not None:
-            what = "Fillet" if fillet else "Chamfer"
-            raise SplineCorner(
-                f"{what} cannot round the corner at ({p[0]:g}, {p[1]:g}) mm where an Ellipse "
-                f"meets another curve: a {'fillet arc' if fillet else 'chamfer'} there would end "
-                f"on the ellipse at a point the exact output cannot place (the offset of an "
-                f"ellipse is no ellipse), and the result would be chords", el.curve,
-                f"choose corners away from the ellipse with `{what}(..., at=[...])`, or round "
-                f"the corner with an arc of your own (a Circle placed tangent to both)")
-        sp = next((g for g in (a, b) if isinstance(g, Spline)), None)
-        if sp is not None:
-            what = "Fillet" if fillet else "Chamfer"
-            raise SplineCorner(
-                f"{what} cannot round the corner at ({p[0]:g}, {p[1]:g}) mm where a Spline "
-                f"meets another curve: a {'fillet arc' if fillet else 'chamfer'} there would end "
-                f"on the spline at a point the exact output cannot place, and the result would "
-                f"be chords", sp.curve,
-                f"choose corners away from the spline with `{what}(..., at=[...])`, or make "
-                f"the corner part of the spline (a point of it placed there, so the curve "
-                f"itself turns smoothly)")
-        cut[k] = _fillet(a, b, turn, size) if fillet else _chamfer(a, b, size)
-    if not any(cut):
-        return loop
-    out = []
-    for k in range(n):
-        g = segs[k]
-        if cut[k] is not None:
-            out.append(cut[k][2])
-        start = cut[k][1] if cut[k] is not None else g.start
-        nxt = cut[(k + 1) % n]
-        end = nxt[0] if nxt is not None else g.end
-        out.append(with_ends(g, start, end) if (start, end) != (g.start, g.end) else g)
-    scale = max(max(abs(v) for g in segs for v in g.start), 1.0)
-    return Loop(simplify([g for g in out if not isinstance(g, Arc) or g.sweep != 0], scale))
-
-
-def _offset(g, d: float):
-    """The carrier of segment ``g`` moved ``d`` mm to its left (None: a circle shrunk away)."""
-    from .curves import Line, carrier
-    c = carrier(g)
-    if isinstance(g, Line):
-        _, px, py, ux, uy = c
-        return ("L", px - d * uy, py + d * ux, ux, uy)
-    r = c[3] - d if g.sweep > 0 else c[3] + d       # left of a counter-clockwise arc: inward
-    return ("C", c[1], c[2], r) if r > 1e-12 else None
-
-
-def _fraction(g, p, from_end: bool) -> float:
-    """How far along segment ``g`` point ``p`` (on its carrier) lies from its start (or its
-    end), as a fraction of its length; negative before it (an elliptic arc: of its
-    parameter's sweep)."""
-    from .curves import EllipticArc, Line
-    if isinstance(g, Line):
-        (x0, y0), (x1, y1) = g.start, g.end
-        L2 = (x1 - x0) ** 2 + (y1 - y0) ** 2
-        t = ((p[0] - x0) * (x1 - x0) + (p[1] - y0) * (y1 - y0)) / L2 if L2 else 0.0
-    elif isinstance(g, EllipticArc):
-        d = ((g.curve.foot(p) - g.start_param) * (1 if g.sweep > 0 else -1)) % (2 * math.pi)
-        if d > (abs(g.sweep) + 2 * math.pi) / 2:              # nearer before its start
-            d -= 2 * math.pi
-        t = d / abs(g.sweep) if g.sweep else 0.0
-    else:
-        a = math.atan2(p[1] - g.center[1], p[0] - g.center[0])
-        d = ((a - g.start_angle) * (1 if g.sweep > 0 else -1)) % (2 * math.pi)
-        if d > (abs(g.sweep) + 2 * math.pi) / 2:              # nearer before its start
-            d -= 2 * math.pi                                  # (an arc over half a turn too)
-        t = d / abs(g.sweep) if g.sweep else 0.0
-    return 1.0 - t if from_end else t
-
-
-def _fillet_at(a, b, turn: float, r: float):
-    """(tangent point on a, tangent point on b, the fillet Arc) for radius ``r``, or None when
-    no arc of that radius fits: its center is where ``a`` and ``b``'s carriers offset by
-    ``r`` toward the corner's inside cross, it must run the way both segments run where it
-    touches them, and its tangent points must lie in the halves of ``a`` and ``b`` next to
-    the corner."""
-    from .curves import Arc, EllipticArc, carrier, crossings, foot, tangent_at
-    s = 1.0 if turn > 0 else -1.0
-    p = b.start
-    best = None
-    if isinstance(a, EllipticArc) or isinstance(b, EllipticArc):
-        found = _ellipse_centres(a, b, s, r)
-    else:
-        oa, ob = _offset(a, s * r), _offset(b, s * r)
-        if oa is None or ob is None:
-            return None
-        found = [(c, foot(carrier(a), c), foot(carrier(b), c)) for c in crossings(oa, ob)]
-    for c, ta, tb in found:
-        # offsets that only nearly touch give their touching point, which may lie off the
-        # circle of radius r around the tangent points: not a fillet
-        tol = 1e-9 * max(1.0, abs(c[0]), abs(c[1]))
-        if abs(math.dist(ta, c) - r) > tol or abs(math.dist(tb, c) - r) > tol:
-            continue
-        fa, fb = _fraction(a, ta, True), _fraction(b, tb, False)
-        if not (-1e-12 <= fa <= 0.5 + 1e-12 and -1e-12 <= fb <= 0.5 + 1e-12):
-            continue
-        # the arc, turning the corner's way, runs along a at ta and along b at tb
-        a1 = math.atan2(ta[1] - c[1], ta[0] - c[0])
-        a2 = math.atan2(tb[1] - c[1], tb[0] - c[0])
-        arc_a = (-s * math.sin(a1), s * math.cos(a1))
-        arc_b = (-s * math.sin(a2), s * math.cos(a2))
-        da = tangent_at(with_ends_at(a, ta), True)
-        db = tangent_at(with_ends_at(b, tb, start=True), False)
-        if arc_a[0] * da[0] + arc_a[1] * da[1] < 0.5 or arc_b[0] * db[0] + arc_b[1] * db[1] < 0.5:
-            continue
-        sw = (a2 - a1) % (2 * math.pi)
-        if s < 0:
-            sw -= 2 * math.pi
-        d = math.hypot(c[0] - p[0], c[1] - p[1])
-        if best is None or d < best[0]:
-            best = (d, (ta, tb, Arc(c, r, a1, sw)))
-    return best[1] if best is not None else None
-
-
-ELLIPSE_SCAN = 64      # parameter steps over the half of an elliptic arc next to a corner
-
-
-def _ellipse_centres(a, b, s: float, r: float) -> list:
-    """``[(centre, point on a, point on b)]`` of the arcs of radius ``r`` tangent to the
-    elliptic arc and the line or arc beside it on the corner's inside (``s`` = 1: the left):
-    the centre is the ellipse's point ``P(t)`` moved ``r`` along its normal, ``t`` the root of
-    its signed distance from the other segment's carrier offset by ``r`` (sign changes over
-    :data:`ELLIPSE_SCAN` steps of the half next to the corner, then bisection to the last
-    bit); the tangent point on the ellipse is ``P(t)`` itself, on the other its foot."""
-    from .curves import EllipticArc, carrier, foot
-    el_first = isinstance(a, EllipticArc)
-    el, other = (a, b) if el_first else (b, a)
-    if isinstance(other, EllipticArc):
-        return []
-    oo = _offset(other, s * r)
-    if oo is None:
-        return []
-    e, sg = el.curve, (1.0 if el.sweep > 0 else -1.0)
-
-    def centre(t):
-        tx, ty = e.tangent(t)
-        q = e.at(t)
-        return (q[0] - s * r * sg * ty, q[1] + s * r * sg * tx)
-
-    def gap(t):
-        x, y = centre(t)
-        if oo[0] == "L":
-            _, px, py, ux, uy = oo
-            return ux * (y - py) - uy * (x - px)
-        return math.hypot(x - oo[1], y - oo[2]) - oo[3]
-
-    near = el.end_param if el_first else el.start_param
-    far = el.start_param + el.sweep / 2
-    ts = [near + (far - near) * i / ELLIPSE_SCAN for i in range(ELLIPSE_SCAN + 1)]
-    gs = [gap(t) for t in ts]
-    out = []
-    for i in range(ELLIPSE_SCAN):
-        if gs[i] == 0.0 or gs[i] * gs[i + 1] < 0:
-            lo, hi, glo = ts[i], ts[i + 1], gs[i]
-            for _ in range(80):
-                mid = 0.5 * (lo + hi)
-                if mid in (lo, hi):
-                    break
-                gm = gap(mid)
-                if (gm < 0) == (glo < 0) and gm != 0.0:
-                    lo, glo = mid, gm
-                else:
-                    hi = mid
-            t = lo if gs[i] == 0.0 else 0.5 * (lo + hi)
-            c = centre(t)
-            pe, po = e.at(t), foot(carrier(other), c)
-            out.append((c, pe, po) if el_first else (c, po, pe))
-            break                       # the crossing nearest the corner
-    return out
-
-
-def with_ends_at(g, t, start: bool = False):
-    """``g`` cut to end (or, with ``start``, to begin) at ``t`` on its carrier."""
-    from .curves import with_ends
-    return with_ends(g, t, g.end) if start else with_ends(g, g.start, t)
-
-
-def _fillet(a, b, turn: float, r: float):
-    got = _fillet_at(a, b, turn, r)
-    if got is not None:
-        return got
-    lo, hi = 0.0, r                  # the largest radius that fits: bisection
-    best = None
-    for _ in range(60):
-        mid = (lo + hi) / 2
-        got = _fillet_at(a, b, turn, mid)
-        if got is None:
-            hi = mid
-        else:
-            lo, best = mid, got
-    return best
-
-
-def _dir(g, end: bool):
-    from .curves import tangent_at
-    return tangent_at(g, end)
-
-
-def _chamfer(a, b, d: float):
-    """(point on a, point on b, the chamfer Line) ``d`` mm from the corner along each
-    segment (at most half of it)."""
-    from .curves import Line
-    pa, pb = _along(a, d, True), _along(b, d, False)
-    return pa, pb, Line(pa, pb)
-
-
-def _along(g, d: float, from_end: bool):
-    """The point ``d`` mm (at most half the segment) from ``g``'s end (or start)."""
-    from .curves import Line
-    from .curves import EllipticArc
-    d = min(d, g.length / 2)
-    if isinstance(g, EllipticArc):       # the parameter whose arc length is d: bisection
-        lo, hi = 0.0, abs(g.sweep) / 2
-        sg = 1.0 if g.sweep > 0 else -1.0
-        for _ in range(60):
-            mid = 0.5 * (lo + hi)
-            piece = EllipticArc(g.curve, g.end_param - sg * mid if from_end else g.start_param,
-                                sg * mid)
-            lo, hi = (mid, hi) if piece.length < d else (lo, mid)
-        return g.at(g.end_param - sg * lo if from_end else g.start_param + sg * lo)
-    if isinstance(g, Line):
-        (x0, y0), (x1, y1) = g.start, g.end
-        L = g.length or 1.0
-        t = 1.0 - d / L if from_end else d / L
-        return (x0 + (x1 - x0) * t, y0 + (y1 - y0) * t)
-    da = d / g.radius * (1 if g.sweep > 0 else -1)
-    return g.at(g.end_angle - da if from_end else g.start_angle + da)

@@ -208,6 +208,21 @@ def text_extent(text: str, size: float, anchor: str = "middle", valign: str = "b
     return min(xs), max(xs), min(ys), max(ys)
 
 
+def wraps(text: str, size: float, r: float) -> tuple[str, str] | None:
+    """(what, the fix) when ``text`` at ``size`` laid along a circle of radius ``r`` (mm) is
+    longer than the whole circle, so that its last letters run round onto its first ones
+    (W0111); else None."""
+    x0, x1, _, _ = text_extent(text, size)
+    w, around = x1 - x0, 2 * math.pi * r
+    if not (r > 0 and w > around):
+        return None
+    fit = math.floor(size * around / w * 100) / 100
+    return ((f"(\"{text[:40]}\") is {w:.4g} mm long along a circle only {around:.4g} mm "
+             f"around (radius {r:.4g} mm): its last letters run round onto its first ones"),
+            (f"use a size of at most {fit:g} mm, a circle of radius at least "
+             f"{math.ceil(w / (2 * math.pi) * 100) / 100:g} mm, or a shorter text"))
+
+
 def missing_glyphs(text: str) -> list[str]:
     """Characters of ``text`` the single-stroke font cannot draw (it covers printable ASCII and
     :data:`SYMBOLS`; spaces and newlines are layout, not glyphs), each once, in order."""

@@ -161,8 +161,9 @@ class Calls:
             self._check_subtree(owners_of(*conv.values()), node.span, self._need_struct(node.span))
             if cname == "CutInto":
                 return self._cut_into(conv, node, spans)
-            if cname == "AllowOverlap":
-                conv = dict(conv, _span=node.span)     # W0523 locates one that allows nothing
+            if cname in ("AllowOverlap", "Fillet", "Chamfer"):
+                # W0523 locates one that allows nothing; E0408, W0406 a corner not rounded
+                conv = dict(conv, _span=node.span)
             n0 = len(self.model.constraints)
             try:
                 out = apply(self, cname, conv, name)

@@ -29,7 +29,7 @@ from ...geometry.hull import hull_loop
 from ...geometry.offset import offset_pieces
 from ...geometry.biarc import without_ellipses
 from ...geometry.primitives import region_of
-from ...geometry.operations import SplineCorner, finish
+from ...geometry.corners import SplineCorner, finish
 from ...geometry.tessellate import CHORD_TOL
 from ...geometry.text import text_strokes
 from ...limits import DEFAULT_BUDGET, Deadline, OutOfBudget, now
@@ -85,6 +85,7 @@ class Renderer:
         # (geometry, message, hint[, code]) of Offset/Shell/Hull results that cannot be made
         # (E0406) and operations that cannot stay exact on a spline (E0407)
         self.shape_errors: list = []
+        self.finish_said: set = set()     # (Fillet/Chamfer call, code, corner) said (E0408, W0406)
         self.spline_source: dict = {}        # CubicSpline -> the Spline geometry drawn as it
         self.through_paths: list = []        # (geometry, exact segments) of through-cuts
         self.through: list = []
@@ -724,7 +725,7 @@ class Renderer:
     def text_along(self, g: Geometry, along: Geometry) -> list:
         """The strokes of a Text along a Circle or Arc (relative to its solved center): at
         its ``angle``, else the arc's middle (a circle's top)."""
-        from ...geometry.text import text_strokes_along
+        from ...geometry.text import text_strokes_along, wraps
         flip = bool(g.data.get("flip"))
         if along.kind == "Arc":
             arc = self.segment(along)
@@ -732,6 +733,9 @@ class Renderer:
         else:                                    # a circle's top (flip: its bottom)
             r, mid = float(abs(self.x[along.scalars["radius"].index])), \
                 -math.pi / 2 if flip else math.pi / 2
+        said = wraps(g.data["text"], g.data["size"], r)
+        if said is not None and not any(e[0] is g for e in self.shape_errors):
+            self.shape_errors.append((g, f"text `{g.label}` {said[0]}", said[1], "W0111"))
         ang = g.data.get("angle")
         return text_strokes_along(g.data["text"], g.data["size"], r,
                                   mid if ang is None else ang, g.data["anchor"],
@@ -776,9 +780,14 @@ class Renderer:
         if getattr(s, "finish", None) and not acc.is_empty():
             try:
                 # the deadline covers the exact recovery and every loop's fillets
+                said = []
                 loops = finish(s, self.exact.loops_of([acc], self.deadline)[0], self.x,
-                               lambda: self.tick(s))
+                               lambda: self.tick(s), said)
                 acc = self.exact.section(loops)
+                for call, code, i, message, hint in said:   # once per call and corner
+                    if (call, code, i) not in self.finish_said:
+                        self.finish_said.add((call, code, i))
+                        self.shape_errors.append((call, message, hint, code))
             except SplineCorner as ex:
                 g = self.spline_source.get(ex.curve)
                 self.shape_errors.append((g if g is not None else s, str(ex), ex.hint, "E0407"))

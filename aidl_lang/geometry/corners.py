@@ -1,0 +1,510 @@
+"""Corner finishing of a solid's (or hole's) exact outline, after its booleans: ``Fillet``
+and ``Chamfer`` (:func:`finish`, called by the renderer), on every corner or on the corners a
+call chose with ``at`` (:class:`Chosen`); a chosen corner that is no corner of the outline
+(E0408), one rounded smaller than asked and an operation that rounds nothing (W0406) are said
+(:func:`report`).  See :mod:`.operations` for the rules."""
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from .model import Structure
+
+CORNER_TURN = 1e-3      # rad: a join that turns less is tangent (a slot's side into its end)
+CORNER_TOL = 1e-3       # mm: a chosen corner matches an outline vertex this close
+SHRUNK = 1e-6           # a chosen corner rounded this much (relatively) under its size: said
+
+
+class SplineCorner(ValueError):
+    """A Fillet or Chamfer asked for a corner where a spline or an ellipse meets another
+    curve: the rounding arc would have to be tangent to a cubic spline or an ellipse at a
+    point no closed form gives; ``curve``: the spline's :class:`~.spline.CubicSpline` or the
+    :class:`~.ellipse.EllipseCurve`, ``hint``: what to do."""
+
+    def __init__(self, message: str, curve, hint: str):
+        super().__init__(message)
+        self.curve = curve
+        self.hint = hint
+
+
+class FinishCall:
+    """Where a ``Fillet``/``Chamfer`` is written (``span``) and the structure it finishes
+    (``owner``): what its messages are located at (E0408, W0406)."""
+    __slots__ = ("span", "owner", "kind")
+
+    def __init__(self, span, owner, kind: str):
+        self.span, self.owner, self.kind = span, owner, kind
+
+
+class Chosen:
+    """Corners a ``Fillet``/``Chamfer``'s ``at`` names.  ``what``: "point" (one point,
+    ``name`` the point's name or ""), "edges" (two edges: ``points`` their ends a1, b1, a2, b2,
+    ``name`` the two names; the corner is where they meet: at their ends, where they cross, or
+    where one ends on the other), "ends" (a line's two ends) or "corners" (a shape's corners;
+    ``name`` the line's or shape's).  ``points``: (x, y) expressions in the structure's frame
+    plus its offset (floats once :meth:`placed`)."""
+    __slots__ = ("what", "points", "name")
+
+    def __init__(self, what: str, points: tuple, name):
+        self.what, self.points, self.name = what, points, name
+
+    def moved(self, f) -> "Chosen":
+        """The same corners under ``f`` (a copy's transform of a point's coordinates)."""
+        return Chosen(self.what, tuple(f(px, py) for px, py in self.points), self.name)
+
+    def placed(self, x) -> "Chosen":
+        from .expr import evaluate
+        return Chosen(self.what, tuple((float(evaluate(px, x)), float(evaluate(py, x)))
+                                       for px, py in self.points), self.name)
+
+    def targets(self) -> tuple[list, str | None]:
+        """(the points to round, why there are none): for two edges the point where they
+        meet, or no point and the reason (parallel, apart, of no length)."""
+        if self.what != "edges":
+            return list(self.points), None
+        return edges_meet(self.points, self.name)
+
+    def describe(self) -> str:
+        if self.what == "edges":
+            return f"the corner of `{self.name[0]}` and `{self.name[1]}`"
+        if self.what == "ends":
+            return f"the ends of `{self.name}`"
+        if self.what == "corners":
+            return f"the corners of `{self.name}`"
+        (x, y), = self.points
+        return (f"`{self.name}` at ({x:.6g}, {y:.6g}) mm" if self.name
+                else f"the point ({x:.6g}, {y:.6g}) mm")
+
+
+def edges_meet(pts, names) -> tuple[list, str | None]:
+    """([the point where two edges meet], None), or ([], why they make no corner): edge 1
+    from ``pts[0]`` to ``pts[1]``, edge 2 from ``pts[2]`` to ``pts[3]``; they meet where
+    their lines cross, on both edges (ends included, within :data:`CORNER_TOL`)."""
+    (ax, ay), (bx, by), (cx, cy), (dx, dy) = pts
+    ux, uy, vx, vy = bx - ax, by - ay, dx - cx, dy - cy
+    L1, L2 = math.hypot(ux, uy), math.hypot(vx, vy)
+    for L, nm in ((L1, names[0]), (L2, names[1])):
+        if L <= 1e-9:
+            return [], f"`{nm}` has no length (its ends are one point), so it has no direction"
+    den = ux * vy - uy * vx
+    if abs(den) <= math.sin(CORNER_TURN) * L1 * L2:
+        gap = abs(ux * (cy - ay) - uy * (cx - ax)) / L1
+        how = ("lie on one line" if gap <= CORNER_TOL else
+               f"are parallel, {gap:.6g} mm apart")
+        return [], f"they {how}: parallel edges never meet, so they make no corner"
+    t = ((cx - ax) * vy - (cy - ay) * vx) / den           # along edge 1, 0..1
+    u = ((cx - ax) * uy - (cy - ay) * ux) / den           # along edge 2
+    p = (ax + t * ux, ay + t * uy)
+    past = [(nm, max(-tt * L, (tt - 1) * L)) for tt, L, nm in ((t, L1, names[0]),
+                                                                  (u, L2, names[1]))]
+    off = [(nm, d) for nm, d in past if d > CORNER_TOL]
+    if not off:
+        return [p], None
+    says = " and ".join(f"{d:.6g} mm past an end of `{nm}`" for nm, d in off)
+    return [], (f"they do not meet: their lines cross at ({p[0]:.6g}, {p[1]:.6g}) mm, "
+                f"{says}")
+
+
+def finish(s: Structure, loops: list, x=None, check=None, said=None) -> list:
+    """Apply the structure's Fillet/Chamfer operations, in order, to its exact outline
+    ``loops`` (:class:`~.curves.Loop`, outer loops counter-clockwise and holes clockwise);
+    ``x`` (the solved unknowns) places corners chosen with ``at``.  ``check``: called before
+    each loop (the compile's deadline: it raises to stop).  ``said``: a list that gets
+    ``(call, code, index of the chosen corner or -1, message, hint)`` (:func:`report`) for a
+    chosen corner that is no corner of the outline (E0408), one rounded smaller than asked
+    and an operation that finds no corner at all (W0406).  Returns the new loops."""
+    for kind, r, at, call in getattr(s, "finish", []):
+        chosen, why, pts = [], {}, None
+        if at is not None and x is not None:
+            chosen = [c.placed(x) for c in at]
+            pts = []
+            for i, c in enumerate(chosen):
+                meet, why[i] = c.targets()
+                pts += [(p, i) for p in meet]
+        got = {}                  # index into pts -> the size that corner got (0: none)
+        done = []
+        for lp in loops:
+            if check is not None:
+                check()
+            done.append(corners(lp, r, kind == "Fillet",
+                                None if pts is None else [p for p, _ in pts], got))
+        if said is not None:
+            said += report(kind, r, call, chosen, why, pts, got, loops)
+        loops = done
+    return loops
+
+
+def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
+           loops: list) -> list:
+    """What a ``Fillet``/``Chamfer`` of size ``r`` (written at ``call``) did not do, as
+    ``[(call, code, index, message, hint)]``: ``chosen`` (:class:`Chosen`, placed), ``why``
+    (index -> why two edges make no corner), ``pts`` ([(point, index into chosen)], None
+    for the whole outline), ``got`` (index into pts -> the size its corner got, from
+    :func:`corners`), ``loops`` (the outline before the operation)."""
+    fillet = kind == "Fillet"
+    size = f"{'radius' if fillet else 'distance'} {r:.6g} mm"
+    head = f"`{kind}` ({size})"
+    verb = "round" if fillet else "cut"
+    path = getattr(getattr(call, "owner", None), "path", "") or "?"
+    if pts is None:
+        if got:
+            return []
+        return [(call, "W0406", -1,
+                 f"{head} changes nothing in `{path}`: its final outline has no "
+                 + ("corners (only circles and smooth joins)" if fillet else
+                    "outside corners (only circles, smooth joins and inside corners, which "
+                    "a Chamfer of the whole outline leaves)"),
+                 "delete the `Fillet`: the outline has nothing for it to round" if fillet
+                 else f"delete the `Chamfer`, or name the inside corners to fill: "
+                      f"`Chamfer(at=[edge1, edge2], distance={r:.6g} mm)`")]
+    out = []
+    for i, c in enumerate(chosen):
+        if why.get(i):
+            out.append((call, "E0408", i, f"{head} cannot {verb} {c.describe()}: {why[i]}",
+                        "name two edges that meet at the corner (at their ends, where they "
+                        "cross, or where one ends on the other), or the corner's point "
+                        "(`body.top_right`)"))
+            continue
+        js = [j for j, (_, ci) in enumerate(pts) if ci == i]
+        found = [got[j] for j in js if j in got]
+        if not found:
+            p = pts[js[0]][0] if js else c.points[0]
+            where, near = _where(p, loops)
+            msg = f"{head} {verb}s nothing at {c.describe()}: "
+            if len(js) > 1:
+                msg += f"none of them is a corner of the final outline of `{path}`"
+            elif c.what == "edges":
+                msg += f"they meet at ({p[0]:.6g}, {p[1]:.6g}) mm, and {where}"
+            else:
+                msg += where
+            hint = (f"the nearest corner of the outline is at ({near[0]:.6g}, {near[1]:.6g}) "
+                    f"mm: name the two edges that meet there" if near is not None else
+                    "name two edges that meet at a corner of the outline, or delete the "
+                    f"`{kind}`")
+            out.append((call, "E0408", i, msg, hint))
+        elif min(found) < r * (1 - SHRUNK):
+            least = min(found)
+            fits = math.floor(least * 1000) / 1000          # asked for, it is made whole
+            done = (f"{verb}s {c.describe()} with only {least:.6g} mm" if least > 0
+                    else f"leaves {c.describe()} sharp")
+            out.append((call, "W0406", i,
+                        f"{head} {done}: the outline's pieces next to the corner leave room "
+                        f"for no more (a corner takes at most half of each piece"
+                        f"{', and the arc must touch both' if fillet else ''})",
+                        f"ask for at most {fits:g} mm there, or make the edges beside the "
+                        f"corner longer" if fits > 0 else
+                        f"make the edges beside the corner longer, or delete the `{kind}`"))
+    return out
+
+
+def _where(p, loops: list) -> tuple[str, tuple | None]:
+    """Why point ``p`` is no corner of ``loops`` (the outline runs straight through it, or
+    it lies inside or outside the outline, how far), and the nearest corner of the outline
+    (or None)."""
+    from .curves import turn_between
+    best, inside = math.inf, False
+    x, y = p
+    for lp in loops:
+        q = lp.points()
+        if len(q) < 2:
+            continue
+        n = len(q)
+        for k in range(n):
+            (x0, y0), (x1, y1) = q[k - 1], q[k]
+            dx, dy = x1 - x0, y1 - y0
+            L2 = dx * dx + dy * dy
+            t = min(1.0, max(0.0, ((x - x0) * dx + (y - y0) * dy) / L2)) if L2 else 0.0
+            best = min(best, math.hypot(x - x0 - t * dx, y - y0 - t * dy))
+            if (y0 > y) != (y1 > y) and x < x0 + (y - y0) * dx / (y1 - y0):
+                inside = not inside
+    near, nd = None, math.inf
+    for lp in loops:
+        segs = lp.segments
+        for k in range(len(segs)):
+            if abs(turn_between(segs[k - 1], segs[k])) > CORNER_TURN:
+                v = segs[k].start
+                d = math.hypot(v[0] - x, v[1] - y)
+                if d < nd:
+                    near, nd = v, d
+    if best <= 10 * CORNER_TOL:
+        what = "the outline runs on through that point with no corner there"
+    elif inside:
+        what = (f"that point lies {best:.6g} mm inside the outline (other shapes cover it), "
+                f"so it is no corner")
+    else:
+        what = f"that point lies {best:.6g} mm outside the outline, so it is no corner"
+    return what, near
+
+
+def corners(loop, size: float, fillet: bool, only=None, got=None):
+    """``loop`` with its corners rounded (``fillet``: every corner, convex or concave, by an
+    arc of radius ``size`` tangent to both of its segments) or cut (chamfer: every convex
+    corner, by a line between the points ``size`` mm along each segment, arc length on an
+    arc).  A corner is a join where the direction turns by more than :data:`CORNER_TURN`
+    (tangent joins are not corners); with ``only`` (points, mm), just the corners within
+    :data:`CORNER_TOL` of one of them, and a chamfer there cuts concave corners too (it adds
+    the triangle between its legs).  No corner takes more than half of a segment: where
+    a segment is too short for both of its corners the fillet radius (or chamfer leg)
+    shrinks to fit.  Lines stay on their lines and arcs on their circles, so the result is
+    exact (:mod:`.curves`).  ``got`` (a dict): for each corner rounded (or found and not
+    rounded), the index into ``only`` (or -1 without ``only``) -> the smallest radius (or
+    leg) it got, 0 for none."""
+    from .curves import Arc, Circle, Loop, simplify, turn_between, with_ends
+    segs = loop.segments
+    n = len(segs)
+    if n < 2 or any(isinstance(g, Circle) for g in segs):
+        return loop
+    cut = [None] * n                 # corner k (before segment k): (end of k-1, start of k, new)
+    for k in range(n):
+        a, b = segs[k - 1], segs[k]
+        p = b.start
+        turn = turn_between(a, b)
+        hits = [-1] if only is None else [i for i, (qx, qy) in enumerate(only)
+                                           if math.hypot(p[0] - qx, p[1] - qy) <= CORNER_TOL]
+        if abs(turn) <= CORNER_TURN or not hits or (not fillet and turn < 0 and only is None):
+            continue
+        cut[k] = _corner(a, b, turn, size, fillet)
+        if got is not None:
+            size_got = (0.0 if cut[k] is None else cut[k][2].radius if fillet
+                        else min(size, a.length / 2, b.length / 2))
+            for i in hits:
+                got[i] = min(got.get(i, size_got), size_got)
+    if not any(cut):
+        return loop
+    out = []
+    for k in range(n):
+        g = segs[k]
+        if cut[k] is not None:
+            out.append(cut[k][2])
+        start = cut[k][1] if cut[k] is not None else g.start
+        nxt = cut[(k + 1) % n]
+        end = nxt[0] if nxt is not None else g.end
+        out.append(with_ends(g, start, end) if (start, end) != (g.start, g.end) else g)
+    scale = max(max(abs(v) for g in segs for v in g.start), 1.0)
+    return Loop(simplify([g for g in out if not isinstance(g, Arc) or g.sweep != 0], scale))
+
+
+def _corner(a, b, turn: float, size: float, fillet: bool):
+    """(end of ``a``, start of ``b``, the fillet Arc or chamfer Line) at the corner where
+    segment ``a`` runs into ``b`` (None: no fillet arc fits); raises :class:`SplineCorner`
+    where a spline, or an ellipse beside another ellipse, makes it inexact."""
+    from .curves import EllipticArc, Spline
+    p = b.start
+    el = next((g for g in (a, b) if isinstance(g, EllipticArc)), None)
+    what = "Fillet" if fillet else "Chamfer"
+    if el is not None and isinstance(a if el is b else b, (EllipticArc, Spline)):
+        raise SplineCorner(
+            f"{what} cannot round the corner at ({p[0]:g}, {p[1]:g}) mm where an Ellipse "
+            f"meets another curve: a {'fillet arc' if fillet else 'chamfer'} there would end "
+            f"on the ellipse at a point the exact output cannot place (the offset of an "
+            f"ellipse is no ellipse), and the result would be chords", el.curve,
+            f"choose corners away from the ellipse with `{what}(..., at=[...])`, or round "
+            f"the corner with an arc of your own (a Circle placed tangent to both)")
+    # (an ellipse beside a line or an arc: the fillet's centre is found on the ellipse's
+    # offset curve, a root in its parameter; the chamfer's ends by arc length)
+    sp = next((g for g in (a, b) if isinstance(g, Spline)), None)
+    if sp is not None and el is None:
+        raise SplineCorner(
+            f"{what} cannot round the corner at ({p[0]:g}, {p[1]:g}) mm where a Spline "
+            f"meets another curve: a {'fillet arc' if fillet else 'chamfer'} there would end "
+            f"on the spline at a point the exact output cannot place, and the result would "
+            f"be chords", sp.curve,
+            f"choose corners away from the spline with `{what}(..., at=[...])`, or make "
+            f"the corner part of the spline (a point of it placed there, so the curve "
+            f"itself turns smoothly)")
+    return _fillet(a, b, turn, size) if fillet else _chamfer(a, b, size)
+
+
+def _offset(g, d: float):
+    """The carrier of segment ``g`` moved ``d`` mm to its left (None: a circle shrunk away)."""
+    from .curves import Line, carrier
+    c = carrier(g)
+    if isinstance(g, Line):
+        _, px, py, ux, uy = c
+        return ("L", px - d * uy, py + d * ux, ux, uy)
+    r = c[3] - d if g.sweep > 0 else c[3] + d       # left of a counter-clockwise arc: inward
+    return ("C", c[1], c[2], r) if r > 1e-12 else None
+
+
+def _fraction(g, p, from_end: bool) -> float:
+    """How far along segment ``g`` point ``p`` (on its carrier) lies from its start (or its
+    end), as a fraction of its length; negative before it (an elliptic arc: of its
+    parameter's sweep)."""
+    from .curves import EllipticArc, Line
+    if isinstance(g, Line):
+        (x0, y0), (x1, y1) = g.start, g.end
+        L2 = (x1 - x0) ** 2 + (y1 - y0) ** 2
+        t = ((p[0] - x0) * (x1 - x0) + (p[1] - y0) * (y1 - y0)) / L2 if L2 else 0.0
+    elif isinstance(g, EllipticArc):
+        d = ((g.curve.foot(p) - g.start_param) * (1 if g.sweep > 0 else -1)) % (2 * math.pi)
+        if d > (abs(g.sweep) + 2 * math.pi) / 2:              # nearer before its start
+            d -= 2 * math.pi
+        t = d / abs(g.sweep) if g.sweep else 0.0
+    else:
+        a = math.atan2(p[1] - g.center[1], p[0] - g.center[0])
+        d = ((a - g.start_angle) * (1 if g.sweep > 0 else -1)) % (2 * math.pi)
+        if d > (abs(g.sweep) + 2 * math.pi) / 2:              # nearer before its start
+            d -= 2 * math.pi                                  # (an arc over half a turn too)
+        t = d / abs(g.sweep) if g.sweep else 0.0
+    return 1.0 - t if from_end else t
+
+
+def _fillet_at(a, b, turn: float, r: float):
+    """(tangent point on a, tangent point on b, the fillet Arc) for radius ``r``, or None when
+    no arc of that radius fits: its center is where ``a`` and ``b``'s carriers offset by
+    ``r`` toward the corner's inside cross, it must run the way both segments run where it
+    touches them, and its tangent points must lie in the halves of ``a`` and ``b`` next to
+    the corner."""
+    from .curves import Arc, EllipticArc, carrier, crossings, foot, tangent_at
+    s = 1.0 if turn > 0 else -1.0
+    p = b.start
+    best = None
+    if isinstance(a, EllipticArc) or isinstance(b, EllipticArc):
+        found = _ellipse_centres(a, b, s, r)
+    else:
+        oa, ob = _offset(a, s * r), _offset(b, s * r)
+        if oa is None or ob is None:
+            return None
+        found = [(c, foot(carrier(a), c), foot(carrier(b), c)) for c in crossings(oa, ob)]
+    for c, ta, tb in found:
+        # offsets that only nearly touch give their touching point, which may lie off the
+        # circle of radius r around the tangent points: not a fillet
+        tol = 1e-9 * max(1.0, abs(c[0]), abs(c[1]))
+        if abs(math.dist(ta, c) - r) > tol or abs(math.dist(tb, c) - r) > tol:
+            continue
+        fa, fb = _fraction(a, ta, True), _fraction(b, tb, False)
+        if not (-1e-12 <= fa <= 0.5 + 1e-12 and -1e-12 <= fb <= 0.5 + 1e-12):
+            continue
+        # the arc, turning the corner's way, runs along a at ta and along b at tb
+        a1 = math.atan2(ta[1] - c[1], ta[0] - c[0])
+        a2 = math.atan2(tb[1] - c[1], tb[0] - c[0])
+        arc_a = (-s * math.sin(a1), s * math.cos(a1))
+        arc_b = (-s * math.sin(a2), s * math.cos(a2))
+        da = tangent_at(with_ends_at(a, ta), True)
+        db = tangent_at(with_ends_at(b, tb, start=True), False)
+        if arc_a[0] * da[0] + arc_a[1] * da[1] < 0.5 or arc_b[0] * db[0] + arc_b[1] * db[1] < 0.5:
+            continue
+        sw = (a2 - a1) % (2 * math.pi)
+        if s < 0:
+            sw -= 2 * math.pi
+        d = math.hypot(c[0] - p[0], c[1] - p[1])
+        if best is None or d < best[0]:
+            best = (d, (ta, tb, Arc(c, r, a1, sw)))
+    return best[1] if best is not None else None
+
+
+ELLIPSE_SCAN = 64      # parameter steps over the half of an elliptic arc next to a corner
+
+
+def _ellipse_centres(a, b, s: float, r: float) -> list:
+    """``[(centre, point on a, point on b)]`` of the arcs of radius ``r`` tangent to the
+    elliptic arc and the line or arc beside it on the corner's inside (``s`` = 1: the left):
+    the centre is the ellipse's point ``P(t)`` moved ``r`` along its normal, ``t`` the root of
+    its signed distance from the other segment's carrier offset by ``r`` (sign changes over
+    :data:`ELLIPSE_SCAN` steps of the half next to the corner, then bisection to the last
+    bit); the tangent point on the ellipse is ``P(t)`` itself, on the other its foot."""
+    from .curves import EllipticArc, carrier, foot
+    el_first = isinstance(a, EllipticArc)
+    el, other = (a, b) if el_first else (b, a)
+    if isinstance(other, EllipticArc):
+        return []
+    oo = _offset(other, s * r)
+    if oo is None:
+        return []
+    e, sg = el.curve, (1.0 if el.sweep > 0 else -1.0)
+
+    def centre(t):
+        tx, ty = e.tangent(t)
+        q = e.at(t)
+        return (q[0] - s * r * sg * ty, q[1] + s * r * sg * tx)
+
+    def gap(t):
+        x, y = centre(t)
+        if oo[0] == "L":
+            _, px, py, ux, uy = oo
+            return ux * (y - py) - uy * (x - px)
+        return math.hypot(x - oo[1], y - oo[2]) - oo[3]
+
+    near = el.end_param if el_first else el.start_param
+    far = el.start_param + el.sweep / 2
+    ts = [near + (far - near) * i / ELLIPSE_SCAN for i in range(ELLIPSE_SCAN + 1)]
+    gs = [gap(t) for t in ts]
+    out = []
+    for i in range(ELLIPSE_SCAN):
+        if gs[i] == 0.0 or gs[i] * gs[i + 1] < 0:
+            lo, hi, glo = ts[i], ts[i + 1], gs[i]
+            for _ in range(80):
+                mid = 0.5 * (lo + hi)
+                if mid in (lo, hi):
+                    break
+                gm = gap(mid)
+                if (gm < 0) == (glo < 0) and gm != 0.0:
+                    lo, glo = mid, gm
+                else:
+                    hi = mid
+            t = lo if gs[i] == 0.0 else 0.5 * (lo + hi)
+            c = centre(t)
+            pe, po = e.at(t), foot(carrier(other), c)
+            out.append((c, pe, po) if el_first else (c, po, pe))
+            break                       # the crossing nearest the corner
+    return out
+
+
+def with_ends_at(g, t, start: bool = False):
+    """``g`` cut to end (or, with ``start``, to begin) at ``t`` on its carrier."""
+    from .curves import with_ends
+    return with_ends(g, t, g.end) if start else with_ends(g, g.start, t)
+
+
+def _fillet(a, b, turn: float, r: float):
+    got = _fillet_at(a, b, turn, r)
+    if got is not None:
+        return got
+    lo, hi = 0.0, r                  # the largest radius that fits: bisection
+    best = None
+    for _ in range(60):
+        mid = (lo + hi) / 2
+        got = _fillet_at(a, b, turn, mid)
+        if got is None:
+            hi = mid
+        else:
+            lo, best = mid, got
+    return best
+
+
+def _dir(g, end: bool):
+    from .curves import tangent_at
+    return tangent_at(g, end)
+
+
+def _chamfer(a, b, d: float):
+    """(point on a, point on b, the chamfer Line) ``d`` mm from the corner along each
+    segment: two equal legs, at most half of the shorter segment."""
+    from .curves import Line
+    d = min(d, a.length / 2, b.length / 2)
+    pa, pb = _along(a, d, True), _along(b, d, False)
+    return pa, pb, Line(pa, pb)
+
+
+def _along(g, d: float, from_end: bool):
+    """The point ``d`` mm (at most half the segment) from ``g``'s end (or start)."""
+    from .curves import Line
+    from .curves import EllipticArc
+    d = min(d, g.length / 2)
+    if isinstance(g, EllipticArc):       # the parameter whose arc length is d: bisection
+        lo, hi = 0.0, abs(g.sweep) / 2
+        sg = 1.0 if g.sweep > 0 else -1.0
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            piece = EllipticArc(g.curve, g.end_param - sg * mid if from_end else g.start_param,
+                                sg * mid)
+            lo, hi = (mid, hi) if piece.length < d else (lo, mid)
+        return g.at(g.end_param - sg * lo if from_end else g.start_param + sg * lo)
+    if isinstance(g, Line):
+        (x0, y0), (x1, y1) = g.start, g.end
+        L = g.length or 1.0
+        t = 1.0 - d / L if from_end else d / L
+        return (x0 + (x1 - x0) * t, y0 + (y1 - y0) * t)
+    da = d / g.radius * (1 if g.sweep > 0 else -1)
+    return g.at(g.end_angle - da if from_end else g.start_angle + da)
