@@ -17,6 +17,7 @@ from ..geometry.values import (ANG, LEN, NUM, dim_name, PV, GeomRef, Namespace, 
 from ..limits import MAX_TEMPLATE_DEPTH, MIN_WALL_LEAST, min_wall_problem
 from ..registry import CONSTANTS, UNITS_LENGTH, template_param
 from ..sources import ImportRefused, read_import, resolve_import
+from .arguments import check_kinds, precheck_asserts
 from .common import (DEG, POISON, FileCtx, Scope, _Silent, _a, _common_ancestor, _fmt_num, _src, _is_geometry_stmt, _is_plain_const)
 
 
@@ -365,14 +366,19 @@ class Statements:
         """What a statement that raised ``ex`` (one of ``_STMT_ERRORS``) reports: nothing
         for a name whose definition already failed, the error itself, a math error (E0112)
         or too deep an expression (E0302); the statement is skipped."""
+        # later uses of the names it defines stay quiet (issue 95: a name left unbound by a
+        # failed or skipped definition was "unknown name" at each use, a cascade)
+        if isinstance(st, A.Assign):
+            self.scope.vars[st.name] = POISON
+        elif isinstance(st, A.StructDecl):
+            self.scope.vars.setdefault(st.name, POISON)
+        elif isinstance(st, (A.For, A.If)):
+            for name in _definition_lines([st]):
+                self.scope.vars.setdefault(name, POISON)
         if isinstance(ex, _Silent):
             return
         if isinstance(ex, EvalError):
             self.error(ex)
-            if isinstance(st, A.Assign):       # later uses of the name stay quiet
-                self.scope.vars[st.name] = POISON
-            elif isinstance(st, A.StructDecl):
-                self.scope.vars.setdefault(st.name, POISON)
         elif isinstance(ex, (ValueError, ZeroDivisionError, OverflowError)):
             self.error(EvalError("E0112", f"math error: {ex}", st.span,
                                  hint="check for division by zero or sqrt/asin of an out-of-range value"))
@@ -623,8 +629,10 @@ class Statements:
             raise EvalError("E0104", f"`{d.name}` takes {len(params)} arguments, got {len(call.args)}",
                             call.span, hint=f"`{d.name}({', '.join(params)})`")
         vals: dict = {}
+        spans: dict = {}                 # param -> the argument's text (`name=value`)
         for p, a in zip(params, call.args):
             vals[p] = (self.eval(a), a)
+            spans[p] = a.span
         for kw in call.kwargs:
             param = template_param(kw.name, params)
             if param is None:
@@ -638,11 +646,13 @@ class Statements:
                 raise EvalError("E0105", f"`{d.name}`: `{param}` is given twice", kw.span,
                                 hint=f"give `{param}` once")
             vals[param] = (self.eval(kw.value), kw.value)
+            spans[param] = kw.span
         for v, node in vals.values():
             if owners_of(v):
                 raise EvalError("E0204", "template arguments must be values, not geometry or structures",
                                 node.span, hint="pass numbers; relate the parts with constraints "
                                 "in the parent structure")
+        check_kinds(self, t, d, vals, spans)
         self._adapt_args(d, vals)
         self.step(call.span)
         child = self._new_structure(name, kind or d.kind, parent, call.span, template=d.name)
@@ -664,6 +674,8 @@ class Statements:
                 else:
                     raise EvalError("E0106", f"`{d.name}` needs the argument `{p.name}`", call.span,
                                     hint=f"`{name} = {d.name}({p.name}=...)`")
+            # the asserts over the arguments, before the body (issue 95): one error at the call
+            precheck_asserts(self, d, tscope, vals, spans)
             self.scope = saved_scope
             self._run_body(child, d.body, tscope)
         finally:
