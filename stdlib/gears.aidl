@@ -15,6 +15,7 @@
 def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
               backlash=0 mm, phase=0 deg, cx=0 mm, cy=0 mm) -> solid {
     assert teeth >= 3 and teeth == round(teeth), "a gear has a whole number of teeth, at least 3"
+    assert module > 0 mm, "the module (the pitch diameter / teeth) is more than 0, e.g. 2 mm"
     pitch_r = module * teeth / 2
     base_r = pitch_r * cos(pressure_angle)
     tip_r = pitch_r + module

@@ -24,6 +24,7 @@ def finger_panel(width=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
     for kind in kinds {
         assert (1 if kind == "fingers" or kind == "slots" or kind == "flat" else 0) == 1, "an edge is \"fingers\", \"slots\" or \"flat\""
     }
+    assert thickness > 0 mm, "the thickness is more than 0"
     assert width > 2 * t and height > 2 * t, "a panel must be larger than twice the thickness"
     outline = Rectangle(center=(cx, cy), width=width, height=height, construction=true)
     core = Rectangle(center=(cx, cy), width=width - 2 * t, height=height - 2 * t)
@@ -156,7 +157,7 @@ def cross_halving(depth=20 mm, thickness=3 mm, clearance=0 mm, rotation=0 deg,
 def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotation=0 deg,
                 cx=0 mm, cy=0 mm) -> hole {
     assert (1 if start == "tab" or start == "gap" else 0) == 1, "start is \"tab\" or \"gap\""
-    assert length > thickness, "the edge must be longer than the thickness"
+    assert thickness > 0 mm and length > thickness, "the edge must be longer than the thickness, which is more than 0"
     t = thickness
     q = floor(length / finger)
     odd = q if q % 2 == 1 else q - 1
@@ -190,7 +191,8 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
 def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, screw=3,
                  clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
     assert (1 if part == "tab" or part == "slot" else 0) == 1, "part is \"tab\" or \"slot\""
-    assert tabs >= 2 and tab < length / tabs, "at least 2 tabs, each narrower than length / tabs"
+    assert tabs >= 2, "at least 2 tabs"
+    assert tab < length / tabs, "each tab narrower than length / tabs"
     t = thickness
     p = length / tabs
     c = cos(rotation)

@@ -171,7 +171,7 @@ def test_the_issue_s_five_line_program_names_line_4(tmp_path, capsys):
     gears = (STDLIB / "gears.aidl").read_text().splitlines()
     at = next(i for i, s in enumerate(gears, 1) if s.strip().startswith("assert lift >= 0 mm"))
     # at the argument (issue 95: an assert over the arguments is checked before the body)
-    assert f"{p}:4:20: error[E0405]: argument `lift` of `gear_train`: assertion failed: " \
+    assert f"{p}:4:25: error[E0405]: argument `lift` of `gear_train`: assertion failed: " \
         "`lift >= 0 mm`" in text
     assert f"inside `gear_train`, at std/gears.aidl:{at}:5" in text
     assert main(["check", str(p), "--json"]) == 1
@@ -226,9 +226,9 @@ def test_law_nested_templates_report_at_the_outermost_call(tmp_path_factory, dep
     r = aidl_lang.compile(source=src, path=p)
     (e,) = r.errors
     assert e.code == "E0405" and f"{width} mm <= 20 mm is false" in e.message
-    # a call in the program is at its argument (the assert reads `w` alone: issue 95); a
+    # a call in the program is at its argument's value (the assert reads `w` alone: issue 95); a
     # call inside another file at the program's call
-    assert (e.span.file, e.span.line, e.span.col) == (str(p), line, 15 if depth == 1 else 12)
+    assert (e.span.file, e.span.line, e.span.col) == (str(p), line, 17 if depth == 1 else 12)
     assert [(lab.span.file, lab.span.line) for lab in e.labels] == \
         [(str(d / f"lib{k}.aidl"), n) for k, n in enumerate(lines, 1)]
     assert all(lab.message.startswith(f"inside `t{k}`")

@@ -19,7 +19,7 @@ from __future__ import annotations
 from .. import ast as A
 from ..diagnostics import EvalError, Label, shown_path
 from ..geometry.values import ANG, LEN, NUM, PV, Q, dim_name
-from ..registry import FUNCTIONS
+from ..registry import FUNCTIONS, UNITS_LENGTH
 from .common import POISON, Scope, _a, _src
 
 # what a default's text says its parameter holds
@@ -83,13 +83,23 @@ def reasons(d: A.Def, param: str) -> list[str]:
     return alone or out
 
 
+def _word(p: A.TemplateParam, want: str) -> str:
+    """What ``p``'s default says it is: a length or an angle for a number with its unit."""
+    d = p.default
+    if type(d) is A.Neg:
+        d = d.operand
+    if want == "number" and type(d) is A.Num and d.unit is not None:
+        return "length" if d.unit in UNITS_LENGTH else "angle"
+    return want
+
+
 def kind_error(ip, d: A.Def, p: A.TemplateParam, v, span, want: str) -> EvalError:
     """E0108 (another kind of value) or E0109 (another unit kind): ``p`` of template ``d``
     is ``want`` like its default, got ``v``; the hint gives the template's reasons."""
     dflt = _src(ip.sink, p.default.span)
     code = "E0109" if isinstance(v, Q) and want in ("number", "length", "angle") else "E0108"
     what = "a plain number (a count or a ratio)" if want == "number" and code == "E0109" \
-        else _a(want)
+        else _a(_word(p, want))
     why = reasons(d, p.name)
     hint = (f"{'; '.join(why)}; " if why else "") + f"e.g. `{p.name}={dflt}`"
     return EvalError(code, f"`{p.name}` of `{d.name}` is {what} like its default `{dflt}`, "
@@ -98,7 +108,7 @@ def kind_error(ip, d: A.Def, p: A.TemplateParam, v, span, want: str) -> EvalErro
 
 def check_kinds(ip, t, d: A.Def, vals: dict, spans: dict) -> None:
     """Raise the first argument in ``vals`` (param -> (value, node)) whose kind is not its
-    default's (``spans``: param -> the argument's text, ``name=value``)."""
+    default's (``spans``: param -> the argument's value's text)."""
     strict = _in_stdlib(t)
     for p in d.params:
         got = vals.get(p.name)

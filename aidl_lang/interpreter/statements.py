@@ -17,7 +17,7 @@ from ..geometry.values import (ANG, LEN, NUM, dim_name, PV, GeomRef, Namespace, 
 from ..limits import MAX_TEMPLATE_DEPTH, MIN_WALL_LEAST, min_wall_problem
 from ..registry import CONSTANTS, UNITS_LENGTH, template_param
 from ..sources import ImportRefused, read_import, resolve_import
-from .arguments import check_kinds, precheck_asserts
+from .arguments import check_kinds, kind_error, precheck_asserts
 from .common import (DEG, POISON, FileCtx, Scope, _Silent, _a, _common_ancestor, _fmt_num, _src, _is_geometry_stmt, _is_plain_const)
 
 
@@ -629,7 +629,7 @@ class Statements:
             raise EvalError("E0104", f"`{d.name}` takes {len(params)} arguments, got {len(call.args)}",
                             call.span, hint=f"`{d.name}({', '.join(params)})`")
         vals: dict = {}
-        spans: dict = {}                 # param -> the argument's text (`name=value`)
+        spans: dict = {}                 # param -> the argument's value's text
         for p, a in zip(params, call.args):
             vals[p] = (self.eval(a), a)
             spans[p] = a.span
@@ -646,14 +646,14 @@ class Statements:
                 raise EvalError("E0105", f"`{d.name}`: `{param}` is given twice", kw.span,
                                 hint=f"give `{param}` once")
             vals[param] = (self.eval(kw.value), kw.value)
-            spans[param] = kw.span
+            spans[param] = kw.value.span
         for v, node in vals.values():
             if owners_of(v):
                 raise EvalError("E0204", "template arguments must be values, not geometry or structures",
                                 node.span, hint="pass numbers; relate the parts with constraints "
                                 "in the parent structure")
         check_kinds(self, t, d, vals, spans)
-        self._adapt_args(d, vals)
+        self._adapt_args(d, vals, spans)
         self.step(call.span)
         child = self._new_structure(name, kind or d.kind, parent, call.span, template=d.name)
         self.frames.append((f"the template instance `{name} = {d.name}(...)`", call.span))
@@ -663,8 +663,8 @@ class Statements:
         tscope = Scope(t.scope, child, t.scope.file)
         self.file = t.scope.file
         self.template_depth += 1
+        saved_scope = self.scope
         try:
-            saved_scope = self.scope
             self.scope = tscope
             for p in d.params:
                 if p.name in vals:
@@ -679,13 +679,14 @@ class Statements:
             self.scope = saved_scope
             self._run_body(child, d.body, tscope)
         finally:
+            self.scope = saved_scope       # also when a default or the asserts raised
             self.frames.pop()
             self.sink.calls.pop()
             self.template_depth -= 1
             self.file = saved_file
         return StructRef(child)
 
-    def _adapt_args(self, d, vals: dict) -> None:
+    def _adapt_args(self, d, vals: dict, spans: dict) -> None:
         """Give each argument of template ``d`` the unit kind of its parameter's default, at the call.
 
         A parameter whose default is written with a unit (``thickness=3 mm``, ``angle=30 deg``)
@@ -711,10 +712,7 @@ class Statements:
                 k = (f.unit_scale if f else 1.0) if want is LEN else angle_scale(v, DEG)
                 vals[p.name] = (Q.num(v.const() * k, want), node)
                 continue
-            shown = _src(self.sink, dflt.span) or f"{_fmt_num(dflt.value)} {dflt.unit}"
-            raise EvalError("E0109", f"`{d.name}`: `{p.name}` is {_a(kind)} like its default "
-                            f"`{shown}`, got {_a(dim_name(v.dim))}", node.span,
-                            hint=f"give `{p.name}` {_a(kind)}, e.g. `{p.name}={shown}`")
+            raise kind_error(self, d, p, v, spans.get(p.name, node.span), kind)
 
     # ------------------------------------------------------------------ constraints
     def _add_constraint(self, kind: str, eqs: list[Equation], span, text: str | None,
