@@ -44,6 +44,7 @@ TABLE = [
     ("gears", "spur_gear", "teeth=2"),
     ("gears", "gear_pair", "teeth1=2"),
     ("gears", "gear_train", "lift=-1 mm"),
+    ("gears", "ring_gear", "teeth=5"),
     ("gears", "rack_and_pinion", "rack_teeth=1"),
     ("gears", "planetary", "planets=1"),
     ("joints", "finger_panel", 'top="teeth"'),
