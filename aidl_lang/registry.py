@@ -406,6 +406,28 @@ _DEFS = {
                        "original. Of a list (`Mirrored(legs, axis)`): the list of each item's "
                        "mirror image, in order. `Mirror(a, b, about)` is the Symmetric "
                        "constraint."),
+    "Scaled": _c([A("target", "boxed"), A("factor", "number"), A("center", "point", None)],
+                 cat="operation",
+                 doc="A copy of geometry or a structure scaled by factor (0.7: 30 % smaller) "
+                     "about center (the origin unless given): every position and length times "
+                     "factor, angles kept; it follows the original. Of a list: the list of "
+                     "copies."),
+    "Scale": _c([A("target", "boxed"), A("factor", "number"), A("center", "point", None)],
+                cat="operation",
+                doc="Scale geometry or a structure in place by factor about center (the origin "
+                    "unless given): `Scale(plaque, 0.7)` draws the plaque 30 % smaller, holes, "
+                    "fillets and text included; the original is kept as construction, "
+                    "`plaque_original`."),
+    "Translated": _c([A("target", "boxed"), A("by", "point")], cat="operation",
+                     doc="A copy of geometry or a structure moved by the vector by; it follows "
+                         "the original."),
+    "Translate": _c([A("target", "boxed"), A("by", "point")], cat="operation",
+                    doc="Move geometry or a structure in place by the vector by (`Translate(part, "
+                        "(20, 0))`); the original is kept as construction, `NAME_original`."),
+    "Flip": _c([A("target", "boxed"), A("about", "line")], cat="operation",
+               doc="Mirror geometry or a structure in place about a line (a copy that keeps the "
+                   "original: `Mirrored`); the original is kept as construction, "
+                   "`NAME_original`."),
     "LinearPattern": _c([A("target", "boxed"), A("count", "number"), A("step", "point")],
                         cat="operation",
                         doc="count instances in all, each moved by step (a vector) from the last; "
@@ -479,6 +501,11 @@ SYNONYMS: dict[str, str] = {
     "Contains": "Inside",            # argument order swapped: see SWAPPED
     "AtMidpoint": "Midpoint",
     "Mirror": "Symmetric",
+    "Move": "Translate",
+    "Moved": "Translated",
+    "Shift": "Translate",
+    "Resize": "Scale",
+    "Resized": "Scaled",
     "MirrorSymmetric": "Symmetric",
     "DistanceX": "HorizontalDistance",
     "DistanceY": "VerticalDistance",
@@ -561,6 +588,13 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
              "around": "along", "inward": "flip", "inside": "flip", "reverse": "flip"},
     "Symmetric": {"axis": "about", "line": "about", "mirror": "about"},
     "Mirrored": {"axis": "about", "line": "about", "mirror": "about"},
+    "Flip": {"axis": "about", "line": "about", "mirror": "about"},
+    "Scaled": {"scale": "factor", "by": "factor", "k": "factor", "ratio": "factor",
+               "about": "center", "origin": "center", "around": "center"},
+    "Scale": {"scale": "factor", "by": "factor", "k": "factor", "ratio": "factor",
+              "about": "center", "origin": "center", "around": "center"},
+    "Translated": {"offset": "by", "delta": "by", "vector": "by", "step": "by"},
+    "Translate": {"offset": "by", "delta": "by", "vector": "by", "step": "by"},
     "Circle": {"position": "center", "at": "center"},
     "Rectangle": {"position": "center", "at": "center", "size_x": "width", "size_y": "height",
                   "angle": "rotation", "p1": "start", "p2": "end", "thickness": "width"},

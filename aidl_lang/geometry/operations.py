@@ -161,6 +161,7 @@ class _Cloner:
         self.geoms: dict = {}
         self.structs: dict = {}
         self.eqs: list = []
+        self.scale = 1.0                # Scaled, Scale: sizes times this (transforms.py)
 
     def point(self, p: Point, dest: Structure) -> Point:
         q = self.points.get(p)
@@ -203,11 +204,17 @@ class _Cloner:
             # from the image of the original's end to the image of its start
             new.points["start"], new.points["end"] = new.points["end"], new.points["start"]
         m = self.ctx.model
+        k = self.scale
         for n, s in g.scalars.items():
-            i = m.new_param(m.x[s.index], True, dest, s.label)
-            self.eqs.append(Equation(var(i) - var(s.index)))
+            f = k if s.dim == "length" else 1.0        # a length scales, an angle does not
+            i = m.new_param(f * m.x[s.index], True, dest, s.label)
+            self.eqs.append(Equation(var(i) - f * var(s.index)) if f != 1.0 else
+                            Equation(var(i) - var(s.index)))
             new.scalars[n] = type(s)(i, dest, s.dim, s.label)
         new.data = dict(g.data)
+        if k != 1.0:
+            from .transforms import scaled_data
+            scaled_data(new, k)
         if g.kind == "Drawing2D" and (self.flip or self.rot):
             # its curves are held in its own frame: the copy's are the mirrored or turned ones
             from .drawing2d import copied
@@ -275,7 +282,8 @@ class _Cloner:
             def moved(px, py):
                 X, Y = self.xf(px - fx, py - fy)
                 return X + fx, Y + fy
-            c.finish = [(kind, r, None if at is None else [moved(px, py) for px, py in at])
+            c.finish = [(kind, r * self.scale,
+                         None if at is None else [moved(px, py) for px, py in at])
                         for kind, r, at in s.finish]
         return c
 
@@ -297,9 +305,10 @@ def _loop_suffix(ctx) -> str:
 
 
 def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_angle=0.0,
-          indexed: bool = False, line=None):
+          indexed: bool = False, line=None, scale: float = 1.0):
     S = ctx.struct
     cl = _Cloner(ctx, S, xf, rot, flip, line_angle, line)
+    cl.scale = scale
     if isinstance(target, StructRef):
         # copies belong where the original is: siblings of it, whichever structure the
         # operation is written in (paper rule: the original lies in that structure's subtree)
@@ -361,6 +370,9 @@ def apply(ctx, kind: str, args: dict, name: str | None):
     Raises :class:`OperationError`.
     """
     S = ctx.struct
+    if kind in ("Scaled", "Scale", "Translated", "Translate", "Flip"):
+        from .transforms import apply as transform      # issue 95: a whole structure
+        return transform(ctx, kind, args, name)
     if kind in ("Fillet", "Chamfer"):
         r = args["radius" if kind == "Fillet" else "distance"].const()
         if r is None or r <= 0:

@@ -168,6 +168,9 @@ class Calls:
                 out = apply(self, cname, conv, name)
             except OperationError as ex:
                 raise EvalError("E0108", str(ex), node.span, hint=entry.signature())
+            if cname in ("Scale", "Translate", "Flip") and type(node.args[0] if node.args
+                                                              else None) is A.Name:
+                self._rebind(node.args[0].id, out)     # in place: the name is the copy's
             if len(self.model.constraints) > n0 and len(owners_of(*conv.values())) > 1:
                 args = [owners_of(v) for v in conv.values()]   # who moves: the pattern's
                 for c in self.model.constraints[n0:]:           # target to its rect
@@ -185,6 +188,13 @@ class Calls:
         args = [owners_of(v) for v in conv.values()] if len(owners) > 1 else None
         self._add_constraint(cname, eqs, node.span, None, owners, args)
         return None
+
+    def _rebind(self, name: str, value) -> None:
+        """``name`` (where it is bound, innermost first) now means ``value``."""
+        for vars_ in self.scope.chain:
+            if name in vars_:
+                vars_[name] = value
+                return
 
     def _cut_into(self, conv, node, spans):
         """``CutInto(hole, part)`` (issue 61): the hole ``hole``, declared in an assembly,
