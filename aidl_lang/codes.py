@@ -81,6 +81,7 @@ than its parameter's default is this error at the argument, before the template 
 template's reasons for that parameter as the hint.
 
     Horizontal(wheel)      # Horizontal takes a Line or two points, wheel is a Circle
+    Scale(plaque, 0)       # a factor is more than 0 (0.7: 30 % smaller; a mirror is Flip)
     g = spur_gear(teeth="twelve")   # `teeth` of `spur_gear` is a number like its default `20`
 """),
     "E0109": ("unit mismatch", """

@@ -67,7 +67,7 @@ HALLUCINATIONS = {
     "Array": _PATTERN,
     "Repeat": _PATTERN,
     "Copy": "copy with `Mirrored(target, about=line)`, `LinearPattern(...)`, `CircularPattern(...)` or a template",
-    "Reflect": "copy about a line with `Mirrored(target, about=line)`; `Symmetric(a, b, about=line)` relates two shapes",
+    "Reflect": "copy about a line with `Mirrored(target, about=line)`, or mirror in place with `Flip(target, about=line)`; `Symmetric(a, b, about=line)` relates two shapes",
     "Group": _STRUCT,
     "Sketch": _STRUCT,
     "Body": _STRUCT,

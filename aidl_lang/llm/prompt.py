@@ -73,7 +73,10 @@ solid plate {
 ```
 A hole declared inside `boss` would cut only boss, and plate's `body` would fill it again:
 the cut solid is united with its own siblings, which are not cut. Patterns and Mirrored put
-copies beside the original, in the original's structure.
+copies beside the original, in the original's structure. A whole structure or shape is
+resized, moved or mirrored in place, never by rewriting its numbers: `Scale(plaque, 0.7)`
+(30 % smaller about the origin, or `center=`), `Translate(plaque, (dx, dy))`,
+`Flip(plaque, about=line)`; `Scaled`, `Translated`, `Mirrored` make copies.
 `Fixed(x)` holds a point, shape or structure where it starts. A shape with a `rotation=` (0
 when not given: Rectangle, Slot by center, RegularPolygon, Ellipse, Star, Text) or a Polygon
 of literal points never turns while solving: it only moves. Shapes through guessed points (a
@@ -107,7 +110,7 @@ with `fully constrained` or `N degrees of freedom left`: harmless: "stays where 
 "can slide" needs constraints.
 `aidl check --describe` describes the final part. `aidl import --infer d.dxf` writes a
 drawing as a program. `aidl set f.aidl NAME=VALUE` changes a param's value in the file. `aidl check --sweep` tries each `param`'s `min=`..`max=` range.
-There is no Rotate/Translate/Union. A warning means the program runs but probably not as
+There is no Rotate/Union. A warning means the program runs but probably not as
 meant: fix it. When fixing errors, keep
 every structure and constraint that carries design intent: correct the call rather than
 delete it.
