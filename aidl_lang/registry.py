@@ -301,11 +301,18 @@ _DEFS = {
                 A("angle", "angle", None, "with along=: where on the circle the position "
                   "point goes (default: the arc's middle, a circle's top)", kw_only=True),
                 A("flip", "bool", False, "with along=: read counter-clockwise, letters' up "
-                  "toward the center (text under a circle, readable)", kw_only=True)],
+                  "toward the center (text under a circle, readable)", kw_only=True),
+                A("stencil", "bool", False, "the letters as openings cut out (in a hole or a "
+                  "solid), their islands held by bridges", kw_only=True),
+                A("weight", "length", None, "with stencil=: the letters' stroke width "
+                  "(default size / 6)", kw_only=True),
+                A("bridge", "length", None, "with stencil=: the bridges' width (default "
+                  "size / 10)", kw_only=True)],
                doc="Single-stroke text in a drawing (one font, no `font=`); size: cap "
                    "height (~ a capital's width); anchor: start, "
                    "middle, end; valign: baseline, middle, top, bottom; rotation about "
-                   "position; along=circle, angle=.", members=TEXT_MEMBERS),
+                   "position; along=circle, angle=; stencil=true: cut as openings with "
+                   "bridges, in a hole.", members=TEXT_MEMBERS),
     # ------------------------------------------------------------ geometric constraints
     "Coincident": _c([A("a", "geometry"), A("b", "geometry")],
                      doc="Two points are the same point (a point and a line, circle, arc or "

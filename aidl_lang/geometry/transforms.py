@@ -18,7 +18,7 @@ from .operations import OperationError, _as_construction, _copy, _mirror, _targe
 from .values import PV, GeomRef, StructRef
 
 # data of a shape that are lengths (mm), scaled with it
-_LENGTHS = ("corner_radius", "distance", "thickness", "width", "size")
+_LENGTHS = ("corner_radius", "distance", "thickness", "width", "size", "weight", "bridge")
 
 IN_PLACE = {"Scale": "Scaled", "Translate": "Translated", "Flip": "Mirrored"}
 

@@ -389,9 +389,11 @@ class Calls:
                             f"`{bad[0].path}`")
                 raise EvalError("E0201", f"geometry in `{s.path}` refers to `{k}` of `{bad[0].path}`, "
                                 f"another structure", spans.get(k, node.span), hint=hint)
-        if kind == "Text" and s.kind != "drawing":
+        if kind == "Text" and s.kind != "drawing" and not (
+                conv.get("stencil") and s.kind in ("hole", "solid")):
             raise EvalError("E0120", f"Text must be in a `drawing` structure, not in {s.kind} `{s.name}`",
                             node.span, hint="put it in `drawing labels { ... }` inside this structure"
+                            " (or cut the letters out: `hole h { t = Text(..., stencil=true) }`)"
                             if s.kind != "cut" else "a cut holds curves to cut along: engrave "
                             "the text in `drawing labels { ... }` in the solid around the cut")
         self.n_geometry += 1
