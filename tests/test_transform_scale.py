@@ -160,3 +160,17 @@ def test_scale_twice_in_place_is_refused():
     r = aidl_lang.compile(source=PLAQUE + "Scale(plaque, 0.7)\nScale(plaque, 0.5)\n")
     [e] = r.errors
     assert "changed in place already" in e.message
+
+
+@pytest.mark.parametrize("syn,canon,args", [
+    ("Move", "Translate", "(20, 5)"), ("Shift", "Translate", "(20, 5)"),
+    ("Moved", "Translated", "by=(20, 5)"), ("Resize", "Scale", "0.5, center=(3, 4)"),
+    ("Resized", "Scaled", "0.5, center=(3, 4)")])
+def test_a_synonym_is_its_transform(syn, canon, args):
+    """Each synonym gives the canonical operation's parts, point for point."""
+    def parts(name):
+        r = aidl_lang.compile(source=PLAQUE + f"x = {name}(plaque, {args})\n")
+        assert r.ok, [(d.code, d.message) for d in r.diagnostics]
+        return sorted((p.name, _box(p)) for p in r.output.parts)
+    want = parts(canon)
+    assert parts(syn) == want and len(want) >= 1

@@ -31,6 +31,7 @@ from ..diagnostics import EvalError
 from ..limits import DEFAULT_BUDGET
 from .expr import Lin, _lin, combine, var
 from .model import Constraint, Equation, Geometry, Point, Structure, equation
+from .scaling import ScaleRefused, scaled_data
 from .values import PV, GeomRef, Q, StructRef, type_name
 
 
@@ -213,8 +214,10 @@ class _Cloner:
             new.scalars[n] = type(s)(i, dest, s.dim, s.label)
         new.data = dict(g.data)
         if k != 1.0:
-            from .transforms import scaled_data
-            scaled_data(new, k)
+            try:
+                scaled_data(new, k)
+            except ScaleRefused as ex:
+                raise OperationError(str(ex)) from None
         if g.kind == "Drawing2D" and (self.flip or self.rot):
             # its curves are held in its own frame: the copy's are the mirrored or turned ones
             from .drawing2d import copied
@@ -370,9 +373,6 @@ def apply(ctx, kind: str, args: dict, name: str | None):
     Raises :class:`OperationError`.
     """
     S = ctx.struct
-    if kind in ("Scaled", "Scale", "Translated", "Translate", "Flip"):
-        from .transforms import apply as transform      # issue 95: a whole structure
-        return transform(ctx, kind, args, name)
     if kind in ("Fillet", "Chamfer"):
         r = args["radius" if kind == "Fillet" else "distance"].const()
         if r is None or r <= 0:

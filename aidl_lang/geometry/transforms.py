@@ -17,32 +17,16 @@ from __future__ import annotations
 from .operations import OperationError, _as_construction, _copy, _mirror, _target, _translate
 from .values import PV, GeomRef, StructRef
 
-# data of a shape that are lengths (mm), scaled with it
-_LENGTHS = ("corner_radius", "distance", "thickness", "width", "size", "weight", "bridge")
-
 IN_PLACE = {"Scale": "Scaled", "Translate": "Translated", "Flip": "Mirrored"}
 
-
-def scaled_data(g, k: float) -> None:
-    """Scale the lengths a copied shape ``g`` keeps in its ``data`` by ``k`` (in place)."""
-    d = g.data
-    if g.kind == "Drawing2D":
-        raise OperationError("a Drawing2D (an imported drawing) cannot be scaled yet: give "
-                             "Drawing2D(...) its size in the file, or scale the drawing before "
-                             "importing it")
-    if g.kind == "Text" and d.get("along") is not None:
-        raise OperationError("Text along a curve cannot be scaled yet: give the Text its own "
-                             "`size` and the curve its own size")
-    for key in _LENGTHS:
-        if isinstance(d.get(key), (int, float)) and not isinstance(d.get(key), bool):
-            d[key] = d[key] * k
-    if "corner_radii" in d:
-        d["corner_radii"] = [r * k for r in d["corner_radii"]]
-    if "dims" in d:
-        d["dims"] = {n: v * k for n, v in d["dims"].items()}
-    if "extent" in d:
-        d["extent"] = tuple(v * k for v in d["extent"])
-    d.pop("box", None)
+# `aidl docs` examples (reference.EXAMPLES): the line in a plate with a 4 mm hole at (-20, -10)
+EXAMPLE_LINES = {
+    "Scaled": "small = Scaled(h, 0.5, center=(20, 10))    # a 2 mm hole at (0, 0)",
+    "Scale": "Scale(h, 1.5, center=(-20, -10))    # the hole 6 mm across, where it was",
+    "Translated": "m = Translated(h, by=(30, 0))    # a copy at (10, -10)",
+    "Translate": "Translate(h, (30, 20))    # the hole moved to (10, 10)",
+    "Flip": "Flip(h, about=axis)    # the hole now at (20, -10), mirrored",
+}
 
 
 def _scale(c: PV, k: float):

@@ -20,7 +20,7 @@ from .. import ast as A
 from ..diagnostics import EvalError, Label, shown_path
 from ..geometry.values import ANG, LEN, NUM, PV, Q, dim_name
 from ..registry import FUNCTIONS, UNITS_LENGTH
-from .common import POISON, Scope, _a, _src
+from .common import _STMT_ERRORS, POISON, Scope, _a, _const, _definition_lines, _src, _value
 
 # what a default's text says its parameter holds
 _KIND_OF_DEFAULT = {A.Num: "number", A.Neg: "number", A.Str: "string", A.FStr: "string",
@@ -176,7 +176,6 @@ def precheck_asserts(ip, d: A.Def, tscope: Scope, given: dict, spans: dict) -> N
     (the parameters bound); raise E0405 at the arguments of ``given`` (param -> value) that
     the first failing one reads.  An assert that cannot be decided now, or reads only
     defaults, is left to the body."""
-    from .statements import _definition_lines, _STMT_ERRORS
     defined = set(_definition_lines(d.body.stmts))
     assigns, asserts = _plan(d, defined)
     if not any(deps & given.keys() for _st, deps in asserts):
@@ -205,7 +204,6 @@ def _failed(ip, st: A.Assert, d: A.Def, named: list, spans: dict) -> EvalError |
     """The error at the call when assert ``st`` fails on the arguments ``named``, else None."""
     from ..geometry.assertions import describe, holds
     from ..geometry.model import Assertion
-    from .statements import _STMT_ERRORS, _const, _value
     sides: list = []
     try:
         ip._assert_sides(st.expr, sides)

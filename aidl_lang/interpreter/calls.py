@@ -33,6 +33,9 @@ DERIVED = ("Offset", "Inset", "Shell", "Hull", "Stroke", "Intersect")
 _BUILTINS: dict = {}      # name -> its Builtin value (one per name; values are never changed)
 
 
+TRANSFORMS = ("Scaled", "Scale", "Translated", "Translate", "Flip")
+
+
 def _center_hint(values, otherwise: str) -> str:
     """The hint of a point or curve constraint given a shape with a center that it does not
     take (an ArcSlot, a Star, ...): name the member to use, `s.center`; else ``otherwise``."""
@@ -164,6 +167,8 @@ class Calls:
             if cname == "AllowOverlap":
                 conv = dict(conv, _span=node.span)     # W0523 locates one that allows nothing
             n0 = len(self.model.constraints)
+            if cname in TRANSFORMS:          # issue 95: Scale, Translate, Flip of a whole structure
+                from ..geometry.transforms import apply
             try:
                 out = apply(self, cname, conv, name)
             except OperationError as ex:

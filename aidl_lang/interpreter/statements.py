@@ -18,11 +18,10 @@ from ..limits import MAX_TEMPLATE_DEPTH, MIN_WALL_LEAST, min_wall_problem
 from ..registry import CONSTANTS, UNITS_LENGTH, template_param
 from ..sources import ImportRefused, read_import, resolve_import
 from .arguments import check_kinds, kind_error, precheck_asserts
-from .common import (DEG, POISON, FileCtx, Scope, _Silent, _a, _common_ancestor, _fmt_num, _src, _is_geometry_stmt, _is_plain_const)
+from .common import (DEG, POISON, FileCtx, Scope, _STMT_ERRORS, _Silent, _a, _common_ancestor, _const,
+                     _definition_lines, _fmt_num, _src, _is_geometry_stmt, _is_plain_const, _value)
 
 
-# what a statement may raise and still be reported and skipped (Statements._stmt_failed)
-_STMT_ERRORS = (_Silent, EvalError, ValueError, ZeroDivisionError, OverflowError, RecursionError)
 
 
 class Statements:
@@ -875,29 +874,6 @@ class Statements:
 _ASSERT_HINT = ("an `assert` states what must be true of the design; change the values or "
                 "constraints so that it holds (it is not a constraint: the solver does not try "
                 "to satisfy it)")
-
-
-def _const(x) -> bool:
-    return isinstance(x, (int, float)) or (type(x) is Lin and not x.terms)
-
-
-def _value(x) -> float:
-    return float(x) if isinstance(x, (int, float)) else float(x.const)
-
-
-def _definition_lines(stmts, out=None) -> dict[str, int]:
-    """Name -> line of its first definition in a body (also inside its loops and ifs)."""
-    out = {} if out is None else out
-    for st in stmts:
-        if isinstance(st, (A.Assign, A.StructDecl)):
-            out.setdefault(st.name, st.span.line)
-        elif isinstance(st, A.For):
-            _definition_lines(st.body.stmts, out)
-        elif isinstance(st, A.If):
-            _definition_lines(st.body.stmts, out)
-            if st.orelse is not None:
-                _definition_lines(st.orelse.stmts, out)
-    return out
 
 
 def _a(what: str) -> str:
