@@ -311,8 +311,8 @@ _DEFS = {
                doc="Single-stroke text in a drawing (one font, no `font=`); size: cap "
                    "height (~ a capital's width); anchor: start, "
                    "middle, end; valign: baseline, middle, top, bottom; rotation about "
-                   "position; along=circle, angle=; stencil=true: cut as openings with "
-                   "bridges, in a hole.", members=TEXT_MEMBERS),
+                   "position; along=circle, angle=; stencil=true (in a hole): cut out, "
+                   "bridged.", members=TEXT_MEMBERS),
     # ------------------------------------------------------------ geometric constraints
     "Coincident": _c([A("a", "geometry"), A("b", "geometry")],
                      doc="Two points are the same point (a point and a line, circle, arc or "
@@ -415,26 +415,18 @@ _DEFS = {
                        "constraint."),
     "Scaled": _c([A("target", "boxed"), A("factor", "number"), A("center", "point", None)],
                  cat="operation",
-                 doc="A copy of geometry or a structure scaled by factor (0.7: 30 % smaller) "
-                     "about center (the origin unless given): every position and length times "
-                     "factor, angles kept; it follows the original. Of a list: the list of "
-                     "copies."),
+                 doc="A copy scaled by factor about center (the origin unless given)."),
     "Scale": _c([A("target", "boxed"), A("factor", "number"), A("center", "point", None)],
                 cat="operation",
-                doc="Scale geometry or a structure in place by factor about center (the origin "
-                    "unless given): `Scale(plaque, 0.7)` draws the plaque 30 % smaller, holes, "
-                    "fillets and text included; the original is kept as construction, "
-                    "`plaque_original`."),
+                doc="Resize a whole structure or shape in place, never by rewriting its "
+                    "numbers: `Scale(plaque, 0.7)` is 30 % smaller (the original: construction "
+                    "`plaque_original`)."),
     "Translated": _c([A("target", "boxed"), A("by", "point")], cat="operation",
-                     doc="A copy of geometry or a structure moved by the vector by; it follows "
-                         "the original."),
+                     doc="A copy moved by the vector by."),
     "Translate": _c([A("target", "boxed"), A("by", "point")], cat="operation",
-                    doc="Move geometry or a structure in place by the vector by (`Translate(part, "
-                        "(20, 0))`); the original is kept as construction, `NAME_original`."),
+                    doc="Move a structure or shape in place by the vector by."),
     "Flip": _c([A("target", "boxed"), A("about", "line")], cat="operation",
-               doc="Mirror geometry or a structure in place about a line (a copy that keeps the "
-                   "original: `Mirrored`); the original is kept as construction, "
-                   "`NAME_original`."),
+               doc="Mirror a structure or shape in place about a line."),
     "LinearPattern": _c([A("target", "boxed"), A("count", "number"), A("step", "point")],
                         cat="operation",
                         doc="count instances in all, each moved by step (a vector) from the last; "

@@ -73,10 +73,7 @@ solid plate {
 ```
 A hole declared inside `boss` would cut only boss, and plate's `body` would fill it again:
 the cut solid is united with its own siblings, which are not cut. Patterns and Mirrored put
-copies beside the original, in the original's structure. A whole structure or shape is
-resized, moved or mirrored in place, never by rewriting its numbers: `Scale(plaque, 0.7)`
-(30 % smaller about the origin, or `center=`), `Translate(plaque, (dx, dy))`,
-`Flip(plaque, about=line)`; `Scaled`, `Translated`, `Mirrored` make copies.
+copies beside the original, in the original's structure.
 `Fixed(x)` holds a point, shape or structure where it starts. A shape with a `rotation=` (0
 when not given: Rectangle, Slot by center, RegularPolygon, Ellipse, Star, Text) or a Polygon
 of literal points never turns while solving: it only moves. Shapes through guessed points (a
