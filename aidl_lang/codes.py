@@ -172,6 +172,9 @@ Text is drawn as single-stroke lines, so it belongs in a `drawing` structure:
         plate = RoundedRectangle(center=(0, 0), width=60, height=20, corner_radius=3)
         drawing label { t = Text("AIDL", position=(0, -2), size=8) }
     }
+
+To cut the letters out (a stencil, bridged), write `stencil=true` and put it in a hole:
+`hole letters { t = Text("HELLO", position=(0, 0), size=30, stencil=true) }`.
 """),
     "E0124": ("param value outside its range", """
 A param may declare the range its value is meant to take (used by `aidl serve` for its

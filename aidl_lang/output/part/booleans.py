@@ -332,7 +332,7 @@ class Renderer:
         clockwise (a shape made by Offset or Shell may have several; others have one)."""
         if g.kind == "Drawing2D":
             return self.drawing2d(g)[0]
-        if g.kind == "Text":
+        if g.kind == "Text" and g.data.get("stencil"):
             sec = self.face(g)
             return self.exact.loops(sec) if sec is not None else []
         if g.kind in DERIVED:
@@ -494,7 +494,7 @@ class Renderer:
         return base + band if d > 0 else base - band
 
     def face(self, g: Geometry, s: Structure | None = None) -> mf.CrossSection | None:
-        if g.kind == "Text":              # stencil=true: the letters' openings (issue 95)
+        if g.kind == "Text" and g.data.get("stencil"):    # the letters' openings (issue 95)
             from .stencil import stencil_section
             return stencil_section(self, g, self.P(g.points["position"]))
         if g.kind == "Drawing2D":
