@@ -143,6 +143,11 @@ def _c(*variants, doc, cat="constraint", varargs=False):
 
 
 A = Arg
+# Scaled and Scale (issue 95): the same arguments, and the words models give them
+_SCALE_ARGS = [A("target", "boxed"), A("factor", "number"), A("center", "point", None)]
+_SCALE_WORDS = {"scale": "factor", "by": "factor", "k": "factor", "ratio": "factor",
+                "about": "center", "origin": "center", "around": "center"}
+_BY_WORDS = {"offset": "by", "delta": "by", "vector": "by", "step": "by"}
 _DEFS = {
     # ------------------------------------------------------------ primitives
     "Point": _p([A("x", "length"), A("y", "length")], [A("at", "point")],
@@ -413,11 +418,9 @@ _DEFS = {
                        "original. Of a list (`Mirrored(legs, axis)`): the list of each item's "
                        "mirror image, in order. `Mirror(a, b, about)` is the Symmetric "
                        "constraint."),
-    "Scaled": _c([A("target", "boxed"), A("factor", "number"), A("center", "point", None)],
-                 cat="operation",
+    "Scaled": _c(_SCALE_ARGS, cat="operation",
                  doc="A copy scaled by factor about center (the origin unless given)."),
-    "Scale": _c([A("target", "boxed"), A("factor", "number"), A("center", "point", None)],
-                cat="operation",
+    "Scale": _c(_SCALE_ARGS, cat="operation",
                 doc="Resize a whole structure or shape in place, never by rewriting its "
                     "numbers: `Scale(plaque, 0.7)` is 30 % smaller (the original: construction "
                     "`plaque_original`)."),
@@ -588,12 +591,7 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
     "Symmetric": {"axis": "about", "line": "about", "mirror": "about"},
     "Mirrored": {"axis": "about", "line": "about", "mirror": "about"},
     "Flip": {"axis": "about", "line": "about", "mirror": "about"},
-    "Scaled": {"scale": "factor", "by": "factor", "k": "factor", "ratio": "factor",
-               "about": "center", "origin": "center", "around": "center"},
-    "Scale": {"scale": "factor", "by": "factor", "k": "factor", "ratio": "factor",
-              "about": "center", "origin": "center", "around": "center"},
-    "Translated": {"offset": "by", "delta": "by", "vector": "by", "step": "by"},
-    "Translate": {"offset": "by", "delta": "by", "vector": "by", "step": "by"},
+    "Scaled": _SCALE_WORDS, "Scale": _SCALE_WORDS, "Translated": _BY_WORDS, "Translate": _BY_WORDS,
     "Circle": {"position": "center", "at": "center"},
     "Rectangle": {"position": "center", "at": "center", "size_x": "width", "size_y": "height",
                   "angle": "rotation", "p1": "start", "p2": "end", "thickness": "width"},

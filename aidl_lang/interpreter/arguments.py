@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from .. import ast as A
 from ..diagnostics import EvalError, Label, shown_path
-from ..geometry.values import ANG, LEN, NUM, PV, Q, dim_name
+from ..geometry.values import ANG, LEN, NUM, Q, dim_name, type_name
 from ..registry import FUNCTIONS, UNITS_LENGTH
 from .common import _STMT_ERRORS, POISON, Scope, _a, _const, _definition_lines, _src, _value
 
@@ -41,17 +41,11 @@ def default_kind(p: A.TemplateParam) -> str | None:
 
 
 def value_kind(v) -> str:
-    if isinstance(v, bool):
-        return "boolean"
+    """The kind of a value as :func:`default_kind` says it: any number, length or angle is a
+    number; a point or a pair a point; else its type name (boolean, string, list, ...)."""
     if isinstance(v, Q):
         return "number"
-    if isinstance(v, str):
-        return "string"
-    if isinstance(v, list):
-        return "list"
-    if isinstance(v, (PV, tuple)):
-        return "point"
-    return "other"
+    return "point" if isinstance(v, tuple) else type_name(v)
 
 
 def _shown(v, unit_scale: float) -> str:
