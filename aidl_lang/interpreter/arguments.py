@@ -170,8 +170,11 @@ def precheck_asserts(ip, d: A.Def, tscope: Scope, given: dict, spans: dict) -> N
     (the parameters bound); raise E0405 at the arguments of ``given`` (param -> value) that
     the first failing one reads.  An assert that cannot be decided now, or reads only
     defaults, is left to the body."""
-    defined = set(_definition_lines(d.body.stmts))
-    assigns, asserts = _plan(d, defined)
+    plans = ip.__dict__.setdefault("_arg_plans", {})     # per template, once a compile
+    got = plans.get(id(d))
+    if got is None or got[0] is not d:
+        got = plans[id(d)] = (d, *_plan(d, set(_definition_lines(d.body.stmts))))
+    _d, assigns, asserts = got
     if not any(deps & given.keys() for _st, deps in asserts):
         return
     saved = ip.scope
