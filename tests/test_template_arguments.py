@@ -126,3 +126,16 @@ def test_law_a_value_an_assert_refuses_is_one_error_naming_the_argument(lib, d, 
             broken.add(p.name)
             break
     assert broken or not _asserted(d)
+
+
+def test_an_item_of_another_kind_in_a_list_argument_is_one_error(tmp_path):
+    """`gear_train(teeth=[12, "a"])` was three errors inside the train ("cannot apply `+` to
+    number and string", ...): one at the argument, naming the item, the train's reason (read
+    through `n = len(teeth)`) in the hint; a list of lists the same."""
+    [e] = _errors("gears", 'gear_train(teeth=[12, "a"])', tmp_path)
+    assert e.code == "E0108" and (e.span.line, e.span.col) == (4, 26)
+    assert e.message.startswith("`teeth` of `gear_train` is a list of numbers like its default")
+    assert e.message.endswith('got the string "a" as item 1')
+    assert "a gear train has 2 to 8 gears" in e.hint
+    [e] = _errors("enclosures", "board_enclosure(holes=[[1, 2], 5])", tmp_path)
+    assert e.message.startswith("`holes` of `board_enclosure` is a list of lists")

@@ -63,17 +63,12 @@ def _shown(v, unit_scale: float) -> str:
 
 
 def reasons(d: A.Def, param: str) -> list[str]:
-    """The messages of ``d``'s top-level asserts that read ``param`` (what it may be): those
-    that read no other parameter when there are some, else all."""
-    others = {p.name for p in d.params} - {param}
-    alone, out = [], []
-    for st in d.body.stmts:
-        if type(st) is A.Assert and st.message:
-            names = _free(st.expr)
-            if param in names:
-                out.append(st.message)
-                if not names & others:
-                    alone.append(st.message)
+    """The messages of ``d``'s top-level asserts that read ``param``, also through values
+    computed from it (``n = len(teeth)``): those that read no other parameter when there are
+    some, else all."""
+    _assigns, asserts = _plan(d, set(_definition_lines(d.body.stmts)))
+    out = [st.message for st, deps in asserts if st.message and param in deps]
+    alone = [st.message for st, deps in asserts if st.message and deps == {param}]
     return alone or out
 
 
@@ -117,9 +112,29 @@ def check_kinds(ip, t, d: A.Def, vals: dict, spans: dict) -> None:
             if want == "point" and have == "list" and len(v) == 2:
                 continue
             raise kind_error(ip, d, p, v, spans[p.name], want)
+        if want == "list":
+            _check_items(ip, d, p, v, spans[p.name])
         if (strict and want == "number" and type(p.default) is A.Num and p.default.unit is None
                 and v.dim != NUM and v.const() is not None):
             raise kind_error(ip, d, p, v, spans[p.name], "number")
+
+
+def _check_items(ip, d: A.Def, p: A.TemplateParam, v: list, span) -> None:
+    """A list given for a list default whose items are all of one kind (`teeth=[12, 36]`):
+    each item of that kind, else E0108 naming the parameter and the item."""
+    kinds = {default_kind(A.TemplateParam(x.span, "", x)) for x in p.default.items} \
+        if type(p.default) is A.ListLit else set()
+    if len(kinds) != 1 or None in kinds:
+        return
+    want = kinds.pop()
+    for i, x in enumerate(v):
+        if x is not POISON and value_kind(x) != want:
+            dflt = _src(ip.sink, p.default.span)
+            why = reasons(d, p.name)
+            raise EvalError("E0108", f"`{p.name}` of `{d.name}` is a list of {want}s like its "
+                            f"default `{dflt}`, got {_shown(x, ip.unit_scale)} as item {i}",
+                            span, hint=(f"{'; '.join(why)}; " if why else "")
+                            + f"e.g. `{p.name}={dflt}`")
 
 
 def _in_stdlib(t) -> bool:
