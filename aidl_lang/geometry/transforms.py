@@ -40,10 +40,11 @@ def apply(ctx, kind: str, args: dict, name: str | None):
     ``Flip``(target, about): the copy (or list of copies, for a list); in place, the copy
     that replaces the original."""
     target = args["target"]
+    op = IN_PLACE.get(kind, kind)        # (Flip refuses Text as Mirrored does)
     if isinstance(target, list):
-        return [_one(ctx, kind, args, _target(ctx, t, kind), name, i, True)
+        return [_one(ctx, kind, args, _target(ctx, t, op), name, i, True)
                 for i, t in enumerate(target)]
-    return _one(ctx, kind, args, _target(ctx, target, kind), name, 0, False)
+    return _one(ctx, kind, args, _target(ctx, target, op), name, 0, False)
 
 
 def _one(ctx, kind, args, target, name, i: int, indexed: bool):
