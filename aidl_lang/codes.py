@@ -76,13 +76,20 @@ Two geometry objects or structures of one structure have the same name.
 """),
     "E0108": ("wrong type", """
 A value of the wrong kind: a length where a point is expected, a Circle where a Line is
-expected, a comparison joined with `or`, and so on.
+expected, a comparison joined with `or`, and so on. A template's argument of another kind
+than its parameter's default is this error at the argument, before the template runs, with the
+template's reasons for that parameter as the hint.
 
     Horizontal(wheel)      # Horizontal takes a Line or two points, wheel is a Circle
+    Scale(plaque, 0)       # a factor is more than 0 (0.7: 30 % smaller; a mirror is Flip)
+    g = spur_gear(teeth="twelve")   # `teeth` of `spur_gear` is a number like its default `20`
 """),
     "E0109": ("unit mismatch", """
 Lengths, angles and plain numbers cannot be mixed in + - and comparisons. A bare number
-adapts: it is in the file's unit next to a length and in degrees next to an angle.
+adapts: it is in the file's unit next to a length and in degrees next to an angle. A
+template's argument of the other unit kind than its default (`thickness=3 deg` for
+`thickness=3 mm`; in the standard library, a length for a count such as `teeth=20`) is this
+error at the argument.
 
     w = 10 mm + 30 deg      # a length plus an angle
 """),
@@ -165,6 +172,9 @@ Text is drawn as single-stroke lines, so it belongs in a `drawing` structure:
         plate = RoundedRectangle(center=(0, 0), width=60, height=20, corner_radius=3)
         drawing label { t = Text("AIDL", position=(0, -2), size=8) }
     }
+
+To cut the letters out (a stencil, bridged), write `stencil=true` and put it in a hole:
+`hole letters { t = Text("HELLO", position=(0, 0), size=30, stencil=true) }`.
 """),
     "E0124": ("param value outside its range", """
 A param may declare the range its value is meant to take (used by `aidl serve` for its
@@ -301,7 +311,11 @@ by other errors.
 An `assert` statement's condition is false at the solved values (every false one is reported;
 after a failed solve, those that read only params, constants and held sizes). The message gives the condition, the reason written
 after it and the values found, in the file's units; one inside a template of another file (the standard
-library's, an imported one) is reported at the template's call, its own line a note. An `assert` is a check, not a constraint: the
+library's, an imported one) is reported at the template's call, its own line a note. A
+template's assert written over its arguments (reading only its parameters and values computed
+from them) is checked at the call before the body runs: false, it is one error at the
+argument(s) it reads (*argument `module` of `spur_gear`: assertion failed: `module > 0 mm`*)
+and the instance is not built. An `assert` is a check, not a constraint: the
 solver never moves geometry to satisfy it. Change the values or constraints so that it holds.
 
     param width = 400 mm

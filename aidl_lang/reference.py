@@ -10,10 +10,8 @@ signature, the unit of every parameter, its members and a short example program 
 
 Lookups are lenient: case and word style (``SpurGear``, ``spur-gear``, ``SPUR_GEAR``), the
 registry's synonyms (``Orthogonal``) and a few words (``bbox``, ``elif``) find the topic;
-:func:`suggest` gives the nearest topics for anything else.
-
-Sources: the registry, the stdlib files (parsed with :mod:`aidl_lang.parser`, read once), and
-the statement texts and examples below.  Nothing here compiles a program.
+:func:`suggest` gives the nearest topics for anything else.  Sources: the registry, the stdlib
+files (parsed once), the statement texts and examples below.  Nothing here compiles a program.
 """
 from __future__ import annotations
 
@@ -26,6 +24,7 @@ from pathlib import Path
 from . import ast as A
 from .registry import (BBOX_MEMBERS, CONSTANTS, ENTRIES, FUNCTIONS, SWAPPED, SYNONYM_DOCS,
                        SYNONYMS, UNITS_ANGLE, UNITS_LENGTH, Entry, arg_synonyms)
+from .geometry.transforms import EXAMPLE_LINES as _TRANSFORM_LINES
 from .sources import STDLIB
 
 # ---------------------------------------------------------------- units of parameters
@@ -1082,6 +1081,7 @@ EXAMPLES: dict[str, str] = {
             "    # assembled, bent inward by 90 deg at x = 20 round a 2 mm inside radius\n"
             "    Bend(wall, at=20, angle=90 deg, radius=2)\n}\n",
     "Mirrored": _HOLES.format(line="m = Mirrored(h, axis)    # a copy at (20, -10)"),
+    **{k: _HOLES.format(line=v) for k, v in _TRANSFORM_LINES.items()},   # Scale, Translate...
     "CutInto": "import \"std/joints.aidl\"\n\nthickness 3 mm\n\nassembly kit {\n"
                "    box = finger_box(length=80 mm, depth=80 mm, height=50 mm)\n"
                "    hole lid_hole { c = Circle(center=(0, 0), diameter=20) }\n"

@@ -143,6 +143,11 @@ def _c(*variants, doc, cat="constraint", varargs=False):
 
 
 A = Arg
+# Scaled and Scale (issue 95): the same arguments, and the words models give them
+_SCALE_ARGS = [A("target", "boxed"), A("factor", "number"), A("center", "point", None)]
+_SCALE_WORDS = {"scale": "factor", "by": "factor", "k": "factor", "ratio": "factor",
+                "about": "center", "origin": "center", "around": "center"}
+_BY_WORDS = {"offset": "by", "delta": "by", "vector": "by", "step": "by"}
 _DEFS = {
     # ------------------------------------------------------------ primitives
     "Point": _p([A("x", "length"), A("y", "length")], [A("at", "point")],
@@ -301,11 +306,18 @@ _DEFS = {
                 A("angle", "angle", None, "with along=: where on the circle the position "
                   "point goes (default: the arc's middle, a circle's top)", kw_only=True),
                 A("flip", "bool", False, "with along=: read counter-clockwise, letters' up "
-                  "toward the center (text under a circle, readable)", kw_only=True)],
+                  "toward the center (text under a circle, readable)", kw_only=True),
+                A("stencil", "bool", False, "the letters as openings cut out (in a hole or a "
+                  "solid), their islands held by bridges", kw_only=True),
+                A("weight", "length", None, "with stencil=: the letters' stroke width "
+                  "(default size / 6)", kw_only=True),
+                A("bridge", "length", None, "with stencil=: the bridges' width (default "
+                  "size / 10)", kw_only=True)],
                doc="Single-stroke text in a drawing (one font, no `font=`); size: cap "
                    "height (~ a capital's width); anchor: start, "
                    "middle, end; valign: baseline, middle, top, bottom; rotation about "
-                   "position; along=circle, angle=.", members=TEXT_MEMBERS),
+                   "position; along=circle, angle=; stencil=true (in a hole): cut out, "
+                   "bridged.", members=TEXT_MEMBERS),
     # ------------------------------------------------------------ geometric constraints
     "Coincident": _c([A("a", "geometry"), A("b", "geometry")],
                      doc="Two points are the same point (a point and a line, circle, arc or "
@@ -406,6 +418,18 @@ _DEFS = {
                        "original. Of a list (`Mirrored(legs, axis)`): the list of each item's "
                        "mirror image, in order. `Mirror(a, b, about)` is the Symmetric "
                        "constraint."),
+    "Scaled": _c(_SCALE_ARGS, cat="operation",
+                 doc="A copy scaled by factor about center (the origin unless given)."),
+    "Scale": _c(_SCALE_ARGS, cat="operation",
+                doc="Resize a whole structure or shape in place, never by rewriting its "
+                    "numbers: `Scale(plaque, 0.7)` is 30 % smaller (the original: construction "
+                    "`plaque_original`)."),
+    "Translated": _c([A("target", "boxed"), A("by", "point")], cat="operation",
+                     doc="A copy moved by the vector by."),
+    "Translate": _c([A("target", "boxed"), A("by", "point")], cat="operation",
+                    doc="Move a structure or shape in place by the vector by."),
+    "Flip": _c([A("target", "boxed"), A("about", "line")], cat="operation",
+               doc="Mirror a structure or shape in place about a line."),
     "LinearPattern": _c([A("target", "boxed"), A("count", "number"), A("step", "point")],
                         cat="operation",
                         doc="count instances in all, each moved by step (a vector) from the last; "
@@ -479,6 +503,11 @@ SYNONYMS: dict[str, str] = {
     "Contains": "Inside",            # argument order swapped: see SWAPPED
     "AtMidpoint": "Midpoint",
     "Mirror": "Symmetric",
+    "Move": "Translate",
+    "Moved": "Translated",
+    "Shift": "Translate",
+    "Resize": "Scale",
+    "Resized": "Scaled",
     "MirrorSymmetric": "Symmetric",
     "DistanceX": "HorizontalDistance",
     "DistanceY": "VerticalDistance",
@@ -561,6 +590,8 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
              "around": "along", "inward": "flip", "inside": "flip", "reverse": "flip"},
     "Symmetric": {"axis": "about", "line": "about", "mirror": "about"},
     "Mirrored": {"axis": "about", "line": "about", "mirror": "about"},
+    "Flip": {"axis": "about", "line": "about", "mirror": "about"},
+    "Scaled": _SCALE_WORDS, "Scale": _SCALE_WORDS, "Translated": _BY_WORDS, "Translate": _BY_WORDS,
     "Circle": {"position": "center", "at": "center"},
     "Rectangle": {"position": "center", "at": "center", "size_x": "width", "size_y": "height",
                   "angle": "rotation", "p1": "start", "p2": "end", "thickness": "width"},

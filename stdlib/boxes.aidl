@@ -211,6 +211,8 @@ def hinged_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=
     wo = width if outside else width + 2 * t
     hb = height - t if outside else height + t  # the walls, under the lid
     ll = lo + 2 * t + 2 * c                     # the lid, over the cheeks
+    assert thickness > 0 mm and height > (3 if outside else 1) * thickness, "the box must be taller than three thicknesses (one, inside)"
+    assert finger > 0 mm, "the fingers are more than 0 wide"
     assert clearance >= 0 mm and clearance < thickness, "the clearance is between 0 and the thickness"
     rh = (sqrt(p * p + t * t) + c) / 2  # the cheek's hole: round about the pin's corners
     r = rh + max(t / 3, 0.6 mm)         # the cheek's lobe about the pivot: a wall over 0.5 mm

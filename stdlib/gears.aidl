@@ -15,6 +15,7 @@
 def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
               backlash=0 mm, phase=0 deg, cx=0 mm, cy=0 mm) -> solid {
     assert teeth >= 3 and teeth == round(teeth), "a gear has a whole number of teeth, at least 3"
+    assert module > 0 mm, "the module (the pitch diameter / teeth) is more than 0, e.g. 2 mm"
     pitch_r = module * teeth / 2
     base_r = pitch_r * cos(pressure_angle)
     tip_r = pitch_r + module
@@ -122,6 +123,39 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
         }
         Concentric(bore_hole.b, hub)
     }
+}
+
+# An internal (ring) gear: `teeth` teeth of `module` pointing inward from an
+# annular plate, centered at (cx, cy). Its tooth spaces are an external
+# spur_gear's teeth (the same involute, `backlash` widening every space along
+# the pitch circle), its teeth cut back to the addendum circle
+# module * (teeth - 2) / 2, and the plate reaches `rim` past the roots
+# (outer diameter module * (teeth + 2.5) + 2 rim). At `phase` 0 deg a tooth
+# space points along +x. A pinion of z teeth meshes inside it at the centre
+# distance module * (teeth - z) / 2 (`planetary` builds a whole set).
+# Members: `body` (the plate's circle), `cut` (the hole: `cut.teeth`, the
+# spur_gear of the spaces, and `cut.tips`, the addendum circle), `pitch` (a
+# construction circle of the pitch diameter module * teeth).
+def ring_gear(teeth=48, module=2 mm, pressure_angle=20 deg, rim=6 mm, backlash=0.05 mm,
+              phase=0 deg, cx=0 mm, cy=0 mm) -> solid {
+    assert teeth >= 10 and teeth == round(teeth), "a ring gear has a whole number of teeth, at least 10"
+    assert module > 0 mm, "the module (the pitch diameter / teeth) is more than 0, e.g. 2 mm"
+    assert rim > 0 mm, "the rim past the tooth roots is more than 0"
+    assert backlash >= 0 mm, "the backlash is 0 or more (it widens the spaces)"
+    rr = module * teeth / 2
+    z = teeth
+    body = Circle(center=(cx, cy), radius=rr + 1.25 * module + rim)
+    Fixed(body.center)
+    pitch = Circle(center=(cx, cy), radius=rr, construction=true)
+    Concentric(pitch, body)
+    hole cut {
+        teeth = spur_gear(teeth=z, module=module, pressure_angle=pressure_angle,
+                          backlash=-backlash, phase=phase, cx=cx, cy=cy)
+        tips = Circle(center=(cx, cy), radius=rr - module)
+        Fixed(tips.center)
+        teeth.hub.center == tips.center
+    }
+    cut.tips.center == (cx, cy)
 }
 
 # Two meshing spur gears of one module, as an assembly. `gear1` (teeth1) is
@@ -300,20 +334,10 @@ def planetary(sun=12, planet=18, ring=48, planets=3, module=2 mm, axle=4 mm,
                                 cx=cx + center_distance * cos(a), cy=cy + center_distance * sin(a))
         planet_gear.hub.center == (cx + center_distance * cos(a), cy + center_distance * sin(a))
     }
-    solid ring_gear {
-        body = Circle(center=(cx, cy), radius=rr + 1.25 * module + rim)
-        Fixed(body.center)
-        # the tooth spaces are an external gear's teeth (its backlash negative: the spaces
-        # widen), the ring's teeth cut back to the addendum circle rr - module
-        hole cut {
-            teeth = spur_gear(teeth=ring, module=module, backlash=-backlash,
-                              phase=(planet - 1) / 2 * 360 deg / ring, cx=cx, cy=cy)
-            tips = Circle(center=(cx, cy), radius=rr - module)
-            Fixed(tips.center)
-            teeth.hub.center == tips.center
-        }
-        cut.tips.center == (cx, cy)
-    }
+    # the ring (`ring_gear`, above): a space where planet 0's tooth points out
+    ring_gear = ring_gear(teeth=ring, module=module, rim=rim, backlash=backlash,
+                          phase=(planet - 1) / 2 * 360 deg / ring, cx=cx, cy=cy)
+    ring_gear.body.center == (cx, cy)
     # the carrier: flat, beside the ring; assembled, under the set
     ox = cx + 2 * (rr + 1.25 * module + rim) + gap
     solid carrier {

@@ -24,6 +24,7 @@ def finger_panel(width=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
     for kind in kinds {
         assert (1 if kind == "fingers" or kind == "slots" or kind == "flat" else 0) == 1, "an edge is \"fingers\", \"slots\" or \"flat\""
     }
+    assert thickness > 0 mm, "the thickness is more than 0"
     assert width > 2 * t and height > 2 * t, "a panel must be larger than twice the thickness"
     outline = Rectangle(center=(cx, cy), width=width, height=height, construction=true)
     core = Rectangle(center=(cx, cy), width=width - 2 * t, height=height - 2 * t)
@@ -76,9 +77,10 @@ def finger_panel(width=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
 }
 
 # A finger-jointed box as six flat panels (`closed=false`: open-top, no lid).
-# Its outer size is `length` x `depth` x `height` from material `thickness`;
-# the panels are laid out flat (a net, `gap` apart) around the bottom
-# centered at (cx, cy): front
+# `length` x `depth` x `height` is its outer size when `outside=true`, else the
+# space inside (the outer size is then larger by two thicknesses each way, one
+# in height when open), from material `thickness`; the panels are laid out
+# flat (a net, `gap` apart) around the bottom centered at (cx, cy): front
 # below it, back above it, the lid above the back, left and right beside it.
 # The front and back have fingers on every edge and keep their corners; the
 # bottom and lid have slots along the front and back and fingers at the
@@ -87,42 +89,48 @@ def finger_panel(width=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
 # (`Place`): assembled (`aidl render --assembled`), the box stands on z = 0,
 # centered on x = y = 0, its fingers in their slots.
 def finger_box(length=120 mm, depth=80 mm, height=50 mm, thickness=3 mm,
-               finger=10 mm, closed=true, gap=5 mm, cx=0 mm, cy=0 mm) -> assembly {
+               finger=10 mm, closed=true, gap=5 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {
+    # the outer sizes
+    L = length if outside else length + 2 * thickness
+    D = depth if outside else depth + 2 * thickness
+    H = height if outside else height + (2 if closed else 1) * thickness
+    assert thickness > 0 mm, "the thickness is more than 0"
+    assert L > 2 * thickness and D > 2 * thickness and H > 2 * thickness, "the box must be more than two thicknesses long, deep and tall (outside)"
     open = "slots" if closed else "flat"
-    bottom = finger_panel(width=length, height=depth, thickness=thickness, finger=finger,
+    bottom = finger_panel(width=L, height=D, thickness=thickness, finger=finger,
                           bottom="slots", right="fingers", top="slots", left="fingers", cx=cx, cy=cy)
-    front = finger_panel(width=length, height=height, thickness=thickness, finger=finger,
-                         top="fingers" if closed else "flat", cx=cx, cy=cy - (depth + height) / 2 - gap)
-    back = finger_panel(width=length, height=height, thickness=thickness, finger=finger,
-                        top="fingers" if closed else "flat", cx=cx, cy=cy + (depth + height) / 2 + gap)
-    left = finger_panel(width=height, height=depth, thickness=thickness, finger=finger,
+    front = finger_panel(width=L, height=H, thickness=thickness, finger=finger,
+                         top="fingers" if closed else "flat", cx=cx, cy=cy - (D + H) / 2 - gap)
+    back = finger_panel(width=L, height=H, thickness=thickness, finger=finger,
+                        top="fingers" if closed else "flat", cx=cx, cy=cy + (D + H) / 2 + gap)
+    left = finger_panel(width=H, height=D, thickness=thickness, finger=finger,
                         bottom="slots", right="slots", top="slots", left=open,
-                        cx=cx - (length + height) / 2 - gap, cy=cy)
-    right = finger_panel(width=height, height=depth, thickness=thickness, finger=finger,
+                        cx=cx - (L + H) / 2 - gap, cy=cy)
+    right = finger_panel(width=H, height=D, thickness=thickness, finger=finger,
                          bottom="slots", right=open, top="slots", left="slots",
-                         cx=cx + (length + height) / 2 + gap, cy=cy)
+                         cx=cx + (L + H) / 2 + gap, cy=cy)
     bottom.outline.center == (cx, cy)
-    front.outline.center == (cx, cy - (depth + height) / 2 - gap)
-    back.outline.center == (cx, cy + (depth + height) / 2 + gap)
-    left.outline.center == (cx - (length + height) / 2 - gap, cy)
-    right.outline.center == (cx + (length + height) / 2 + gap, cy)
+    front.outline.center == (cx, cy - (D + H) / 2 - gap)
+    back.outline.center == (cx, cy + (D + H) / 2 + gap)
+    left.outline.center == (cx - (L + H) / 2 - gap, cy)
+    right.outline.center == (cx + (L + H) / 2 + gap, cy)
     if closed {
-        lid = finger_panel(width=length, height=depth, thickness=thickness, finger=finger,
+        lid = finger_panel(width=L, height=D, thickness=thickness, finger=finger,
                            bottom="slots", right="fingers", top="slots", left="fingers",
-                           cx=cx, cy=cy + depth + height + 2 * gap)
-        lid.outline.center == (cx, cy + depth + height + 2 * gap)
-        Place(lid, position=(-cx, -(cy + depth + height + 2 * gap), height - thickness))
+                           cx=cx, cy=cy + D + H + 2 * gap)
+        lid.outline.center == (cx, cy + D + H + 2 * gap)
+        Place(lid, position=(-cx, -(cy + D + H + 2 * gap), H - thickness))
     }
     # assembled: each panel folded up from the net about its edge on the bottom
     Place(bottom, position=(-cx, -cy, 0 mm))
     Place(front, rotation=(90 deg, 0, 0),
-          position=(-cx, thickness - depth / 2, height / 2 - (cy - (depth + height) / 2 - gap)))
+          position=(-cx, thickness - D / 2, H / 2 - (cy - (D + H) / 2 - gap)))
     Place(back, rotation=(90 deg, 0, 0),
-          position=(-cx, depth / 2, height / 2 - (cy + (depth + height) / 2 + gap)))
+          position=(-cx, D / 2, H / 2 - (cy + (D + H) / 2 + gap)))
     Place(left, rotation=(0, 90 deg, 0),
-          position=(-length / 2, -cy, cx - (length + height) / 2 - gap + height / 2))
+          position=(-L / 2, -cy, cx - (L + H) / 2 - gap + H / 2))
     Place(right, rotation=(0, -90 deg, 0),
-          position=(length / 2, -cy, height / 2 - (cx + (length + height) / 2 + gap)))
+          position=(L / 2, -cy, H / 2 - (cx + (L + H) / 2 + gap)))
 }
 
 # ---------------------------------------------------------------------------
@@ -156,7 +164,7 @@ def cross_halving(depth=20 mm, thickness=3 mm, clearance=0 mm, rotation=0 deg,
 def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotation=0 deg,
                 cx=0 mm, cy=0 mm) -> hole {
     assert (1 if start == "tab" or start == "gap" else 0) == 1, "start is \"tab\" or \"gap\""
-    assert length > thickness, "the edge must be longer than the thickness"
+    assert thickness > 0 mm and length > thickness, "the edge must be longer than the thickness, which is more than 0"
     t = thickness
     q = floor(length / finger)
     odd = q if q % 2 == 1 else q - 1
@@ -190,7 +198,8 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
 def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, screw=3,
                  clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
     assert (1 if part == "tab" or part == "slot" else 0) == 1, "part is \"tab\" or \"slot\""
-    assert tabs >= 2 and tab < length / tabs, "at least 2 tabs, each narrower than length / tabs"
+    assert tabs >= 2, "at least 2 tabs"
+    assert tab < length / tabs, "each tab narrower than length / tabs"
     t = thickness
     p = length / tabs
     c = cos(rotation)

@@ -16,7 +16,7 @@ def rounded_plate(width=80 mm, height=50 mm, corner_radius=5 mm, cx=0 mm, cy=0 m
 # `chamfer` along each edge. Member: `body` (an octagon; `body.points[0]` is
 # the bottom edge's left end, then counter-clockwise).
 def chamfered_plate(width=80 mm, height=50 mm, chamfer=5 mm, cx=0 mm, cy=0 mm) -> solid {
-    assert 2 * chamfer < width and 2 * chamfer < height, "the chamfers must leave some of every edge"
+    assert chamfer > 0 mm and 2 * chamfer < width and 2 * chamfer < height, "the chamfers must leave some of every edge"
     w = width / 2
     h = height / 2
     c = chamfer
@@ -32,6 +32,7 @@ def chamfered_plate(width=80 mm, height=50 mm, chamfer=5 mm, cx=0 mm, cy=0 mm) -
 # bottom left).
 def mounting_plate(width=80 mm, height=50 mm, corner_radius=4 mm, screw=3, fit="medium",
                    inset=6 mm, cx=0 mm, cy=0 mm) -> solid {
+    assert len([s for s in metric_sizes if s == screw]) == 1, "metric sizes are 2, 2.5, 3, 4, 5, 6 and 8 (M2 to M8)"
     # each hole (a clearance hole at most 1.3 x screw across, at the coarse fit) keeps a wall
     # of more than 0.5 mm to the straight edges, the rounded corner and the next hole
     assert inset > 0.65 mm * screw + 0.5 mm, "the holes break through the edges: inset > 0.65 mm * screw + 0.5 mm (a wall of 0.5 mm beside a clearance hole 1.3 x screw across)"
@@ -53,7 +54,7 @@ def mounting_plate(width=80 mm, height=50 mm, corner_radius=4 mm, screw=3, fit="
 # `length` from its center toward `direction` (90 deg: up, so the part drops
 # onto the screw). Members: `head_hole` (Circle), `slot` (Slot).
 def keyhole(head=8 mm, slot_width=4 mm, length=10 mm, direction=90 deg, cx=0 mm, cy=0 mm) -> hole {
-    assert slot_width < head, "the slot must be narrower than the head opening"
+    assert slot_width > 0 mm and slot_width < head, "the slot must be narrower than the head opening"
     head_hole = Circle(center=(cx, cy), diameter=head)
     slot = Slot(start=(cx, cy), end=(cx + length * cos(direction), cy + length * sin(direction)), width=slot_width)
     Fixed(head_hole.center)

@@ -33,7 +33,7 @@ def bolt_circle(count=6, pcd=40 mm, hole_d=5 mm, start=0 deg,
 # Members: `stem` (Rectangle), `end` (Circle), `eye` (the hole; `eye.e`).
 def rounded_tab(width=20 mm, length=20 mm, hole_d=6 mm, cx=0 mm, cy=0 mm) -> solid {
     assert length > width / 2, "the round end's center is above the base: length > width / 2"
-    assert hole_d < width - 1 mm, "the eye leaves a wall more than 0.5 mm wide in the round end: hole_d < width - 1 mm"
+    assert hole_d > 0 mm and hole_d < width - 1 mm, "the eye leaves a wall more than 0.5 mm wide in the round end: hole_d < width - 1 mm"
     stem = Rectangle(bottom_left=(cx - width / 2, cy), width=width, height=length - width / 2)
     end = Circle(center=(cx, cy + length - width / 2), diameter=width)
     hole eye {

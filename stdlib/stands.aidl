@@ -115,7 +115,8 @@ def tool_holder(length=100 mm, depth=70 mm, height=90 mm, thickness=3 mm, finger
     px = (L - 2 * t) / cols
     py = (D - 2 * t) / rows
     assert rows >= 1 and cols >= 1, "at least one row and one column of holes"
-    assert hole + 4 mm <= px and hole + 4 mm <= py, "the holes must be 4 mm apart and clear of the joints"
+    assert thickness > 0 mm, "the thickness is more than 0"
+    assert hole > 0 mm and hole + 4 mm <= px and hole + 4 mm <= py, "the holes must be 4 mm apart and clear of the joints"
     bottom = finger_panel(width=L, height=D, thickness=t, finger=finger,
                           bottom="slots", right="fingers", top="slots", left="fingers", cx=cx, cy=cy)
     front = finger_panel(width=L, height=H, thickness=t, finger=finger, cx=cx, cy=cy - (D + H) / 2 - gap)

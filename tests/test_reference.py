@@ -26,6 +26,7 @@ STDLIB_NAMES |= {"tab_and_slot", "dovetail", "cross_halving", "finger_edge",    
                  "tablet_stand", "laptop_stand", "tool_holder", "wall_shelf"}   # stands, holders
 STDLIB_NAMES |= {"board_enclosure", "gear_train", "rack_and_pinion",         # issue 52: enclosures,
                  "planetary"}                                                    # mechanisms
+STDLIB_NAMES |= {"ring_gear"}                                   # issue 95: the internal gear
 STDLIB_NAMES |= {"hinged_box", "drawer", "flex_box"}                          # issue 52: more boxes
 
 

@@ -81,6 +81,7 @@ def test_wrong_kind_is_e0109_at_the_users_argument(tmp_path):
     assert d["span"]["file"] == str(p)
     col = src.splitlines()[2].index("3 deg") + 1
     assert (d["span"]["line"], d["span"]["column"], d["span"]["end_column"]) == (3, col, col + 5)
-    assert "`thickness` is a length like its default `3 mm`, got an angle" in d["message"]
+    assert "`thickness` of `finger_box` is a length like its default `3 mm`, got an angle" \
+        in d["message"]
     assert "thickness=3 mm" in d["hint"]
     assert "^^^^^" in d["rendered"]

@@ -170,26 +170,28 @@ def _signed(pts) -> float:
                      for i in range(n))
 
 
-def _region(loops, m=None):
+def _region(loops, m=None, k: float = 1.0):
     """(shapely region, sorted signed loop areas) of exact loops (outer ones CCW, holes CW),
     moved by the affine map ``m`` = [a, b, d, e, xoff, yoff] (shapely's order) when given.
 
     A loop's tessellation is moved by ``shapely.affinity``; a full circle (no start point:
-    its chords cannot be the same on both sides) has its center moved by it and is then
-    tessellated, from angle 0 like every circle.  A motion or reflection keeps each loop's
+    its chords cannot be the same on both sides) has its center moved by it (its radius
+    times ``k``, the map's scale: Scaled) and is then tessellated, from angle 0 like every
+    circle.  A motion or reflection keeps each loop's
     role (outer CCW, holes CW) and area, so the signs are the original's."""
     outer, holes, signs = [], [], []
     for lp in loops:
         if len(lp.segments) == 1 and isinstance(lp.segments[0], Circle):
             c = lp.segments[0]
             ctr = c.center if m is None else affinity.affine_transform(Point(c.center), m).coords[0]
-            ring = _ring(type(lp)([Circle(tuple(ctr), c.radius, c.ccw)]))
+            ring = _ring(type(lp)([Circle(tuple(ctr), c.radius * k, c.ccw)]))
             poly = Polygon(np.asarray(ring))      # an array: shapely reads it without a loop
         else:
             ring = _ring(lp)
             poly = Polygon(np.asarray(ring))
             poly = poly if m is None else affinity.affine_transform(poly, m)
-        a = _signed(ring)
+        a = _signed(ring) * (k * k if m is not None and not (
+            len(lp.segments) == 1 and isinstance(lp.segments[0], Circle)) else 1.0)
         signs.append(round(a, 6))
         (outer if a > 0 else holes).append(poly)
     region = unary_union(outer)

@@ -45,9 +45,10 @@ SAMPLE = {
     "GridPattern": "r2, 1, 1, 5)\n    Above(r2, r1", "CornerPattern": "p, at=[(60, 60)]",
     "At": "p, q, 3, 4", "Rigid": "p, q)\n    Midpoint(p, l1",
 }
-# canonical entries that change no solved value (their synonyms are tested where they act:
-# AllowOverlap's in tests/test_forms.py)
-NO_SOLUTION = {"AllowOverlap"}
+# canonical entries that change no solved value, or make copies (their synonyms are tested
+# where they act: AllowOverlap's in tests/test_forms.py, the transforms' in
+# tests/test_transform_scale.py)
+NO_SOLUTION = {"AllowOverlap", "Translate", "Translated", "Scale", "Scaled"}
 # the sample for a synonym whose arguments are swapped
 SWAPPED_SAMPLE = {"Contains": "r1, r2, 2"}
 

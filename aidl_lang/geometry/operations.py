@@ -35,6 +35,7 @@ from ..limits import DEFAULT_BUDGET
 from .expr import Lin, _lin, combine, var
 from .corners import Chosen, FinishCall
 from .model import Constraint, Equation, Geometry, Point, Structure, equation
+from .scaling import ScaleRefused, scaled_data
 from .values import PV, GeomRef, Q, StructRef, type_name
 
 
@@ -165,6 +166,7 @@ class _Cloner:
         self.geoms: dict = {}
         self.structs: dict = {}
         self.eqs: list = []
+        self.scale = 1.0                # Scaled, Scale: sizes times this (transforms.py)
 
     def point(self, p: Point, dest: Structure) -> Point:
         q = self.points.get(p)
@@ -207,11 +209,19 @@ class _Cloner:
             # from the image of the original's end to the image of its start
             new.points["start"], new.points["end"] = new.points["end"], new.points["start"]
         m = self.ctx.model
+        k = self.scale
         for n, s in g.scalars.items():
-            i = m.new_param(m.x[s.index], True, dest, s.label)
-            self.eqs.append(Equation(var(i) - var(s.index)))
+            f = k if s.dim == "length" else 1.0        # a length scales, an angle does not
+            i = m.new_param(f * m.x[s.index], True, dest, s.label)
+            self.eqs.append(Equation(var(i) - f * var(s.index)) if f != 1.0 else
+                            Equation(var(i) - var(s.index)))
             new.scalars[n] = type(s)(i, dest, s.dim, s.label)
         new.data = dict(g.data)
+        if k != 1.0:
+            try:
+                scaled_data(new, k)
+            except ScaleRefused as ex:
+                raise OperationError(str(ex)) from None
         if g.kind == "Drawing2D" and (self.flip or self.rot):
             # its curves are held in its own frame: the copy's are the mirrored or turned ones
             from .drawing2d import copied
@@ -279,7 +289,8 @@ class _Cloner:
             def moved(px, py):
                 X, Y = self.xf(px - fx, py - fy)
                 return X + fx, Y + fy
-            c.finish = [(kind, r, None if at is None else [ch.moved(moved) for ch in at], call)
+            c.finish = [(kind, r * self.scale,
+                         None if at is None else [ch.moved(moved) for ch in at], call)
                         for kind, r, at, call in s.finish]
         return c
 
@@ -301,9 +312,10 @@ def _loop_suffix(ctx) -> str:
 
 
 def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_angle=0.0,
-          indexed: bool = False, line=None):
+          indexed: bool = False, line=None, scale: float = 1.0):
     S = ctx.struct
     cl = _Cloner(ctx, S, xf, rot, flip, line_angle, line)
+    cl.scale = scale
     if isinstance(target, StructRef):
         # copies belong where the original is: siblings of it, whichever structure the
         # operation is written in (paper rule: the original lies in that structure's subtree)

@@ -1075,6 +1075,8 @@ def _build_Text(ctx, g, a):
                              f"not \"{valign}\"")
     g.data["valign"] = valign
     g.data["rotation"] = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
+    if a.get("stencil"):
+        _stencil(ctx, g, a)
     if a.get("along") is not None:
         from .text import text_strokes_along
         ang = g.data["angle"]
@@ -1085,6 +1087,25 @@ def _build_Text(ctx, g, a):
         xs = [p[0] for s_ in segs for p in s_] or [0.0]
         ys = [p[1] for s_ in segs for p in s_] or [0.0]
         g.data["extent"] = (min(xs), max(xs), min(ys), max(ys))
+
+
+def _stencil(ctx, g, a) -> None:
+    """``Text(..., stencil=true)``: a closed shape, the letters' openings with bridges
+    (:mod:`aidl_lang.output.part.stencil`); ``weight`` and ``bridge`` in mm."""
+    if a.get("along") is not None:
+        raise PrimitiveError("a stencil Text is written on a straight baseline: leave out "
+                             "along=, or engrave the text along the curve (stencil=false)")
+    size = g.data["size"]
+    for key, dflt in (("weight", size / 6), ("bridge", size / 10)):
+        v = a.get(key)
+        g.data[key] = dflt if v is None else _const(ctx, v, key)
+        if not g.data[key] > 0:
+            raise PrimitiveError(f"a stencil Text's {key} is more than 0, got {g.data[key]:g}")
+    if g.data["bridge"] >= size / 2:
+        raise PrimitiveError(f"a stencil Text's bridges ({g.data['bridge']:g} mm) must be "
+                             f"narrower than half its size ({size:g} mm)")
+    g.data["stencil"] = True
+    g.closed = True
 
 
 def _text_along(ctx, g, a) -> None:

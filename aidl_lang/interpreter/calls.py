@@ -33,6 +33,9 @@ DERIVED = ("Offset", "Inset", "Shell", "Hull", "Stroke", "Intersect")
 _BUILTINS: dict = {}      # name -> its Builtin value (one per name; values are never changed)
 
 
+TRANSFORMS = ("Scaled", "Scale", "Translated", "Translate", "Flip")
+
+
 def _center_hint(values, otherwise: str) -> str:
     """The hint of a point or curve constraint given a shape with a center that it does not
     take (an ArcSlot, a Star, ...): name the member to use, `s.center`; else ``otherwise``."""
@@ -165,10 +168,15 @@ class Calls:
                 # W0523 locates one that allows nothing; E0408, W0406 a corner not rounded
                 conv = dict(conv, _span=node.span)
             n0 = len(self.model.constraints)
+            if cname in TRANSFORMS:          # issue 95: Scale, Translate, Flip of a whole structure
+                from ..geometry.transforms import apply
             try:
                 out = apply(self, cname, conv, name)
             except OperationError as ex:
                 raise EvalError("E0108", str(ex), node.span, hint=entry.signature())
+            if cname in ("Scale", "Translate", "Flip") and type(node.args[0] if node.args
+                                                              else None) is A.Name:
+                self._rebind(node.args[0].id, out)     # in place: the name is the copy's
             if len(self.model.constraints) > n0 and len(owners_of(*conv.values())) > 1:
                 args = [owners_of(v) for v in conv.values()]   # who moves: the pattern's
                 for c in self.model.constraints[n0:]:           # target to its rect
@@ -186,6 +194,13 @@ class Calls:
         args = [owners_of(v) for v in conv.values()] if len(owners) > 1 else None
         self._add_constraint(cname, eqs, node.span, None, owners, args)
         return None
+
+    def _rebind(self, name: str, value) -> None:
+        """``name`` (where it is bound, innermost first) now means ``value``."""
+        for vars_ in self.scope.chain:
+            if name in vars_:
+                vars_[name] = value
+                return
 
     def _cut_into(self, conv, node, spans):
         """``CutInto(hole, part)`` (issue 61): the hole ``hole``, declared in an assembly,
@@ -380,9 +395,11 @@ class Calls:
                             f"`{bad[0].path}`")
                 raise EvalError("E0201", f"geometry in `{s.path}` refers to `{k}` of `{bad[0].path}`, "
                                 f"another structure", spans.get(k, node.span), hint=hint)
-        if kind == "Text" and s.kind != "drawing":
+        if kind == "Text" and s.kind != "drawing" and not (
+                conv.get("stencil") and s.kind in ("hole", "solid")):
             raise EvalError("E0120", f"Text must be in a `drawing` structure, not in {s.kind} `{s.name}`",
                             node.span, hint="put it in `drawing labels { ... }` inside this structure"
+                            " (or cut the letters out: `hole h { t = Text(..., stencil=true) }`)"
                             if s.kind != "cut" else "a cut holds curves to cut along: engrave "
                             "the text in `drawing labels { ... }` in the solid around the cut")
         self.n_geometry += 1

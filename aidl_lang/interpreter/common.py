@@ -5,7 +5,8 @@ from __future__ import annotations
 import math
 
 from .. import ast as A
-from ..diagnostics import DiagnosticSink, Span
+from ..diagnostics import DiagnosticSink, EvalError, Span
+from ..geometry.expr import Lin
 from ..geometry.model import Structure
 from ..registry import (FUNCTIONS, lookup)
 
@@ -17,6 +18,9 @@ class _Silent(Exception):
 
 
 POISON = object()
+
+# what a statement may raise and still be reported and skipped (Statements._stmt_failed)
+_STMT_ERRORS = (_Silent, EvalError, ValueError, ZeroDivisionError, OverflowError, RecursionError)
 
 
 class BudgetExhausted(Exception):
@@ -174,3 +178,26 @@ def show(v, unit_scale: float = 1.0, depth: int = 0) -> str:
     if v is None:
         return "none"
     return type_name(v)
+
+
+def _const(x) -> bool:
+    return isinstance(x, (int, float)) or (type(x) is Lin and not x.terms)
+
+
+def _value(x) -> float:
+    return float(x) if isinstance(x, (int, float)) else float(x.const)
+
+
+def _definition_lines(stmts, out=None) -> dict[str, int]:
+    """Name -> line of its first definition in a body (also inside its loops and ifs)."""
+    out = {} if out is None else out
+    for st in stmts:
+        if isinstance(st, (A.Assign, A.StructDecl)):
+            out.setdefault(st.name, st.span.line)
+        elif isinstance(st, A.For):
+            _definition_lines(st.body.stmts, out)
+        elif isinstance(st, A.If):
+            _definition_lines(st.body.stmts, out)
+            if st.orelse is not None:
+                _definition_lines(st.orelse.stmts, out)
+    return out

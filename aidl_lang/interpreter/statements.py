@@ -17,11 +17,11 @@ from ..geometry.values import (ANG, LEN, NUM, dim_name, PV, GeomRef, Namespace, 
 from ..limits import MAX_TEMPLATE_DEPTH, MIN_WALL_LEAST, min_wall_problem
 from ..registry import CONSTANTS, UNITS_LENGTH, template_param
 from ..sources import ImportRefused, read_import, resolve_import
-from .common import (DEG, POISON, FileCtx, Scope, _Silent, _a, _common_ancestor, _fmt_num, _src, _is_geometry_stmt, _is_plain_const)
+from .arguments import check_kinds, kind_error, precheck_asserts
+from .common import (DEG, POISON, FileCtx, Scope, _STMT_ERRORS, _Silent, _a, _common_ancestor, _const,
+                     _definition_lines, _fmt_num, _src, _is_geometry_stmt, _is_plain_const, _value)
 
 
-# what a statement may raise and still be reported and skipped (Statements._stmt_failed)
-_STMT_ERRORS = (_Silent, EvalError, ValueError, ZeroDivisionError, OverflowError, RecursionError)
 
 
 class Statements:
@@ -365,14 +365,19 @@ class Statements:
         """What a statement that raised ``ex`` (one of ``_STMT_ERRORS``) reports: nothing
         for a name whose definition already failed, the error itself, a math error (E0112)
         or too deep an expression (E0302); the statement is skipped."""
+        # later uses of the names it defines stay quiet (issue 95: a name left unbound by a
+        # failed or skipped definition was "unknown name" at each use, a cascade)
+        if isinstance(st, A.Assign):
+            self.scope.vars[st.name] = POISON
+        elif isinstance(st, A.StructDecl):
+            self.scope.vars.setdefault(st.name, POISON)
+        elif isinstance(st, (A.For, A.If)):
+            for name in _definition_lines([st]):
+                self.scope.vars.setdefault(name, POISON)
         if isinstance(ex, _Silent):
             return
         if isinstance(ex, EvalError):
             self.error(ex)
-            if isinstance(st, A.Assign):       # later uses of the name stay quiet
-                self.scope.vars[st.name] = POISON
-            elif isinstance(st, A.StructDecl):
-                self.scope.vars.setdefault(st.name, POISON)
         elif isinstance(ex, (ValueError, ZeroDivisionError, OverflowError)):
             self.error(EvalError("E0112", f"math error: {ex}", st.span,
                                  hint="check for division by zero or sqrt/asin of an out-of-range value"))
@@ -623,8 +628,10 @@ class Statements:
             raise EvalError("E0104", f"`{d.name}` takes {len(params)} arguments, got {len(call.args)}",
                             call.span, hint=f"`{d.name}({', '.join(params)})`")
         vals: dict = {}
+        spans: dict = {}                 # param -> the argument's value's text
         for p, a in zip(params, call.args):
             vals[p] = (self.eval(a), a)
+            spans[p] = a.span
         for kw in call.kwargs:
             param = template_param(kw.name, params)
             if param is None:
@@ -638,12 +645,14 @@ class Statements:
                 raise EvalError("E0105", f"`{d.name}`: `{param}` is given twice", kw.span,
                                 hint=f"give `{param}` once")
             vals[param] = (self.eval(kw.value), kw.value)
+            spans[param] = kw.value.span
         for v, node in vals.values():
             if owners_of(v):
                 raise EvalError("E0204", "template arguments must be values, not geometry or structures",
                                 node.span, hint="pass numbers; relate the parts with constraints "
                                 "in the parent structure")
-        self._adapt_args(d, vals)
+        check_kinds(self, t, d, vals, spans)
+        self._adapt_args(d, vals, spans)
         self.step(call.span)
         child = self._new_structure(name, kind or d.kind, parent, call.span, template=d.name)
         self.frames.append((f"the template instance `{name} = {d.name}(...)`", call.span))
@@ -653,8 +662,8 @@ class Statements:
         tscope = Scope(t.scope, child, t.scope.file)
         self.file = t.scope.file
         self.template_depth += 1
+        saved_scope = self.scope
         try:
-            saved_scope = self.scope
             self.scope = tscope
             for p in d.params:
                 if p.name in vals:
@@ -664,16 +673,19 @@ class Statements:
                 else:
                     raise EvalError("E0106", f"`{d.name}` needs the argument `{p.name}`", call.span,
                                     hint=f"`{name} = {d.name}({p.name}=...)`")
+            # the asserts over the arguments, before the body (issue 95): one error at the call
+            precheck_asserts(self, d, tscope, vals, spans)
             self.scope = saved_scope
             self._run_body(child, d.body, tscope)
         finally:
+            self.scope = saved_scope       # also when a default or the asserts raised
             self.frames.pop()
             self.sink.calls.pop()
             self.template_depth -= 1
             self.file = saved_file
         return StructRef(child)
 
-    def _adapt_args(self, d, vals: dict) -> None:
+    def _adapt_args(self, d, vals: dict, spans: dict) -> None:
         """Give each argument of template ``d`` the unit kind of its parameter's default, at the call.
 
         A parameter whose default is written with a unit (``thickness=3 mm``, ``angle=30 deg``)
@@ -699,10 +711,7 @@ class Statements:
                 k = (f.unit_scale if f else 1.0) if want is LEN else angle_scale(v, DEG)
                 vals[p.name] = (Q.num(v.const() * k, want), node)
                 continue
-            shown = _src(self.sink, dflt.span) or f"{_fmt_num(dflt.value)} {dflt.unit}"
-            raise EvalError("E0109", f"`{d.name}`: `{p.name}` is {_a(kind)} like its default "
-                            f"`{shown}`, got {_a(dim_name(v.dim))}", node.span,
-                            hint=f"give `{p.name}` {_a(kind)}, e.g. `{p.name}={shown}`")
+            raise kind_error(self, d, p, v, spans.get(p.name, node.span), kind)
 
     # ------------------------------------------------------------------ constraints
     def _add_constraint(self, kind: str, eqs: list[Equation], span, text: str | None,
@@ -865,29 +874,6 @@ class Statements:
 _ASSERT_HINT = ("an `assert` states what must be true of the design; change the values or "
                 "constraints so that it holds (it is not a constraint: the solver does not try "
                 "to satisfy it)")
-
-
-def _const(x) -> bool:
-    return isinstance(x, (int, float)) or (type(x) is Lin and not x.terms)
-
-
-def _value(x) -> float:
-    return float(x) if isinstance(x, (int, float)) else float(x.const)
-
-
-def _definition_lines(stmts, out=None) -> dict[str, int]:
-    """Name -> line of its first definition in a body (also inside its loops and ifs)."""
-    out = {} if out is None else out
-    for st in stmts:
-        if isinstance(st, (A.Assign, A.StructDecl)):
-            out.setdefault(st.name, st.span.line)
-        elif isinstance(st, A.For):
-            _definition_lines(st.body.stmts, out)
-        elif isinstance(st, A.If):
-            _definition_lines(st.body.stmts, out)
-            if st.orelse is not None:
-                _definition_lines(st.orelse.stmts, out)
-    return out
 
 
 def _a(what: str) -> str:

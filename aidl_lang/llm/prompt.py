@@ -107,7 +107,7 @@ with `fully constrained` or `N degrees of freedom left`: harmless: "stays where 
 "can slide" needs constraints.
 `aidl check --describe` describes the final part. `aidl import --infer d.dxf` writes a
 drawing as a program. `aidl set f.aidl NAME=VALUE` changes a param's value in the file. `aidl check --sweep` tries each `param`'s `min=`..`max=` range.
-There is no Rotate/Translate/Union. A warning means the program runs but probably not as
+There is no Rotate/Union. A warning means the program runs but probably not as
 meant: fix it. When fixing errors, keep
 every structure and constraint that carries design intent: correct the call rather than
 delete it.

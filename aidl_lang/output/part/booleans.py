@@ -333,6 +333,9 @@ class Renderer:
         clockwise (a shape made by Offset or Shell may have several; others have one)."""
         if g.kind == "Drawing2D":
             return self.drawing2d(g)[0]
+        if g.kind == "Text" and g.data.get("stencil"):
+            sec = self.face(g)
+            return self.exact.loops(sec) if sec is not None else []
         if g.kind in DERIVED:
             sec = self.derived_section(g)
             return self.exact.loops(sec) if sec is not None else []
@@ -492,6 +495,9 @@ class Renderer:
         return base + band if d > 0 else base - band
 
     def face(self, g: Geometry, s: Structure | None = None) -> mf.CrossSection | None:
+        if g.kind == "Text" and g.data.get("stencil"):    # the letters' openings (issue 95)
+            from .stencil import stencil_section
+            return stencil_section(self, g, self.P(g.points["position"]))
         if g.kind == "Drawing2D":
             loops = self.drawing2d(g)[0]
             return self.exact.section(loops) if loops else None
@@ -531,7 +537,8 @@ class Renderer:
             if g.kind in ("Line", "Arc", "EllipticArc") or (g.kind in ("Spline", "Bezier", "Polyline")
                                              and not g.closed):
                 open_curves.append(g)
-            elif g.kind == "Text" or (g.kind == "Intersect" and not g.closed):
+            elif (g.kind == "Text" and not g.data.get("stencil")) or (
+                    g.kind == "Intersect" and not g.closed):
                 self.draw_lines(g, out)         # (a clip's pieces: lines, as a drawing's)
             elif g.kind == "Point":
                 continue

@@ -26,13 +26,14 @@ syntax keyword aidlCadConstraint Above AlignBottom AlignCenterX AlignCenterY Ali
 syntax keyword aidlCadConstraint Anchor Angle ArrayPattern At AtCorners AtMidpoint AtOffset Below
 syntax keyword aidlCadConstraint Bend CenterInside Centered Chamfer CircularPattern Coincide Coincident Collinear
 syntax keyword aidlCadConstraint Concentric CornerPattern CutInto Diameter Distance DistanceX DistanceY Equal
-syntax keyword aidlCadConstraint EqualLength EqualRadius Fillet Fix Fixed Gap GridPattern Horizontal
-syntax keyword aidlCadConstraint HorizontalDistance HorizontallyCentered Inside IntendedOverlap Join LeftOf Length LinearPattern
-syntax keyword aidlCadConstraint Lock Midpoint Mirror MirrorSymmetric Mirrored MoveTogether OnArc OnCircle
-syntax keyword aidlCadConstraint OnLine OnTopOf Orthogonal Over OverlapOK Parallel Perpendicular Place
-syntax keyword aidlCadConstraint PlaceAt PointOnLine Radius RectangularPattern RightOf Rigid RigidGroup Same
-syntax keyword aidlCadConstraint Symmetric Taller Tangent ToTheLeftOf ToTheRightOf Under Underneath Vertical
-syntax keyword aidlCadConstraint VerticalDistance VerticallyCentered Wider Within
+syntax keyword aidlCadConstraint EqualLength EqualRadius Fillet Fix Fixed Flip Gap GridPattern
+syntax keyword aidlCadConstraint Horizontal HorizontalDistance HorizontallyCentered Inside IntendedOverlap Join LeftOf Length
+syntax keyword aidlCadConstraint LinearPattern Lock Midpoint Mirror MirrorSymmetric Mirrored Move MoveTogether
+syntax keyword aidlCadConstraint Moved OnArc OnCircle OnLine OnTopOf Orthogonal Over OverlapOK
+syntax keyword aidlCadConstraint Parallel Perpendicular Place PlaceAt PointOnLine Radius RectangularPattern Resize
+syntax keyword aidlCadConstraint Resized RightOf Rigid RigidGroup Same Scale Scaled Shift
+syntax keyword aidlCadConstraint Symmetric Taller Tangent ToTheLeftOf ToTheRightOf Translate Translated Under
+syntax keyword aidlCadConstraint Underneath Vertical VerticalDistance VerticallyCentered Wider Within
 syntax match aidlCadConstraint /\<Contains\>/
 syntax keyword aidlCadFunction abs acos asin atan atan2 ceil cos degrees
 syntax keyword aidlCadFunction distance floor len max min mirror norm polar

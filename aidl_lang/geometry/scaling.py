@@ -1,0 +1,32 @@
+"""The lengths a scaled copy of a shape keeps in its ``data`` (``Scaled``, ``Scale``: the
+cloner of :mod:`.operations` calls :func:`scaled_data`; :mod:`.transforms` makes the copy)."""
+from __future__ import annotations
+
+
+class ScaleRefused(ValueError):
+    """A shape that cannot be scaled yet; the message is the diagnostic text."""
+
+
+# data of a shape that are lengths (mm), scaled with it
+_LENGTHS = ("corner_radius", "distance", "thickness", "width", "size", "weight", "bridge")
+
+
+def scaled_data(g, k: float) -> None:
+    """Scale the lengths a copied shape ``g`` keeps in its ``data`` by ``k`` (in place)."""
+    d = g.data
+    if g.kind == "Drawing2D":
+        raise ScaleRefused("a Drawing2D (an imported drawing) cannot be scaled yet: scale it "
+                           "in the file it is read from")
+    if g.kind == "Text" and d.get("along") is not None:
+        raise ScaleRefused("Text along a curve cannot be scaled yet: give the Text its own "
+                           "`size` and the curve its own size")
+    for key in _LENGTHS:
+        if isinstance(d.get(key), (int, float)) and not isinstance(d.get(key), bool):
+            d[key] = d[key] * k
+    if "corner_radii" in d:
+        d["corner_radii"] = [r * k for r in d["corner_radii"]]
+    if "dims" in d:
+        d["dims"] = {n: v * k for n, v in d["dims"].items()}
+    if "extent" in d:
+        d["extent"] = tuple(v * k for v in d["extent"])
+    d.pop("box", None)

@@ -1,0 +1,176 @@
+"""Scale, move and flip a whole structure (issue 95): `Scaled`, `Translated` (copies, as
+`Mirrored`), `Scale`, `Translate` (`Move`) and `Flip` (in place).
+
+The laws of tests/test_transform_laws.py, for the new operations: every closed kind scaled
+about a point (factors below and above 1) and moved is exactly the original's exact outline
+mapped by shapely.affinity; every template there (a filleted plate with a hole, fillets at
+chosen corners, an outline of lines, an arc and a spline, the stdlib spur gear) scaled as a
+structure is its final part scaled, fillets included.  The issue's case: a bicycle plaque
+made 30 % smaller by one `Scale(plaque, 0.7)`, its SVG read back with svgelements: every
+path's box and length 0.7 times the unscaled plaque's.  (~6 s CPU.)"""
+from __future__ import annotations
+
+import math
+
+import pytest
+import svgelements
+from hypothesis import given, strategies as st
+
+import aidl_lang
+from test_transform_laws import (LAWS, SHAPES, TEMPLATES, _compile, _loops, _parts, _program,
+                                 _region, _same, _strokes, _same_curve, TEXT)
+from shapely import affinity
+from shapely.geometry import Point
+
+SCALABLE = sorted(k for k in SHAPES if k != "Drawing2D")
+
+
+def _scaling(k, cx, cy):
+    return [k, 0, 0, k, cx - k * cx, cy - k * cy]
+
+
+@pytest.mark.parametrize("kind", SCALABLE)
+@LAWS
+@given(k=st.sampled_from([0.7, 1.6, 0.25]), c=st.sampled_from([(0, 0), (12, 5), (-20, 31)]),
+       by=st.sampled_from([(25, 0), (-7, 18)]))
+def test_scaled_and_translated_copies_are_the_mapped_original(kind, k, c, by):
+    ops = (f"    m = Scaled(s, {k}, center=({c[0]}, {c[1]}))\n"
+           f"    t = Translated(s, by=({by[0]}, {by[1]}))\n")
+    L = _loops(_compile(_program(SHAPES[kind], ops)), ["s", "m", "t"])
+    _same(L["m"], _region(L["s"], _scaling(k, *c), k), f"{kind} scaled {k} about {c}")
+    _same(L["t"], _region(L["s"], [1, 0, 0, 1, *by]), f"{kind} moved by {by}")
+
+
+@LAWS
+@given(k=st.sampled_from([0.5, 2.0]))
+def test_scaled_text_is_every_stroke_scaled(k):
+    r = _compile(f"units mm\ndrawing d {{\n    {TEXT}\n    m = Scaled(s, {k}, center=(3, -4))\n}}\n")
+    orig, got = _strokes(r, "d.s"), _strokes(r, "d.m")
+    assert len(orig) >= 7 and len(got) == len(orig)
+    for g, o in zip(got, orig):
+        ref = [affinity.affine_transform(Point(p), _scaling(k, 3, -4)).coords[0] for p in o]
+        _same_curve(g, ref, False, f"Text scaled {k}")
+
+
+@pytest.mark.parametrize("what", sorted(TEMPLATES))
+def test_a_scaled_structure_is_its_part_scaled(what):
+    """A template instance scaled as a structure: its final part (booleans, fillets and
+    chamfers after them, their radii scaled too) is the original part scaled."""
+    defs, call = TEMPLATES[what]
+    src = (f'units mm\nimport "std/gears.aidl" as gears\n{defs}assembly kit {{\n'
+           f"    a = {call}\n    b = Scaled(a, 0.6, center=(-40, 25))\n}}\n")
+    P = _parts(_compile(src))
+    _same(P["kit.b"], _region(P["kit.a"], _scaling(0.6, -40, 25), 0.6), f"{what} scaled")
+
+
+PLAQUE = """units mm
+solid plaque {
+    body = RoundedRectangle(center=(0, 0), width=140, height=80, corner_radius=10)
+    hole back_wheel { c = Circle(center=(-38, -12), radius=20) }
+    hole front_wheel { c = Circle(center=(38, -12), radius=20) }
+    hole mount { m = Slot(center=(0, 30), length=30, width=6) }
+    drawing frame {
+        a = Line(start=(-38, -12), end=(-5, 14))
+        b = Line(start=(-5, 14), end=(30, 14))
+        c = Line(start=(30, 14), end=(38, -12))
+        d = Line(start=(-5, 14), end=(2, -12))
+        e = Line(start=(2, -12), end=(38, -12))
+        name = Text("RIDE", position=(0, -32), size=7)
+    }
+    Fixed(body.center)
+    Fillet(radius=2)
+}
+"""
+
+
+def _svg(tmp_path, src, name):
+    p = tmp_path / f"{name}.aidl"
+    p.write_text(src)
+    out = tmp_path / f"{name}.svg"
+    from aidl_lang.cli.main import main
+    assert main(["render", str(p), "-o", str(out)]) == 0
+    shapes = [e for e in svgelements.SVG.parse(str(out)).elements()
+              if isinstance(e, svgelements.Shape) and not isinstance(e, svgelements.Rect)]
+    return [(e.bbox(), svgelements.Path(e).length()) for e in shapes
+            if e.bbox() is not None]
+
+
+def test_the_issue_s_bicycle_plaque_made_30_percent_smaller_by_one_scale(tmp_path):
+    """One `Scale(plaque, 0.7)` (was: ~30 numbers multiplied by hand): the SVG, read back,
+    holds the same paths, each box and length 0.7 times the unscaled plaque's; the plaque's
+    sizes read 0.7 times (98 x 56 mm, its wheels 28 mm across), and statements after the
+    Scale reach the scaled plaque by its name."""
+    before = _svg(tmp_path, PLAQUE, "before")
+    after = _svg(tmp_path, PLAQUE + "Scale(plaque, 0.7)\nassert plaque.bb.width == 98 mm\n",
+                 "after")
+    assert len(after) == len(before) >= 10
+    for (b0, l0), (b1, l1) in zip(sorted(before), sorted(after)):
+        assert [v * 0.7 for v in b0] == pytest.approx(list(b1), abs=1e-3)
+        assert l1 == pytest.approx(0.7 * l0, rel=1e-4)
+    r = aidl_lang.compile(source=PLAQUE + "Scale(plaque, 0.7)\n")
+    assert r.ok, [(d.code, d.message) for d in r.diagnostics]
+    [part] = r.output.parts
+    x0, x1, y0, y1 = _box(part)
+    assert (round(x1 - x0, 9), round(y1 - y0, 9)) == (98, 56)
+    v = {x.name: x.value for x in r.values}
+    assert v["plaque.body.width"] == pytest.approx(98) and v["plaque.back_wheel.c.radius"] == \
+        pytest.approx(14)
+
+
+def _box(part):
+    """(x0, x1, y0, y1) of a part's exact outline."""
+    from aidl_lang.api import exact_bbox
+    x0, y0, x1, y1 = exact_bbox([seg for lp in part.loops for seg in lp.segments])
+    return x0, x1, y0, y1
+
+
+def test_translate_and_flip_in_place_keep_the_name(tmp_path):
+    """`Translate(plaque, (200, 10))` moves the part (its name kept, the original
+    construction as `plaque_original`); `Move` is its synonym; `Flip` mirrors a shape in
+    place about a line."""
+    r = aidl_lang.compile(source=PLAQUE + "Move(plaque, (200, 10))\n")
+    assert r.ok
+    v = {x.name: x.value for x in r.values}
+    assert v["plaque.body.center"] == pytest.approx((200, 10))
+    assert v["plaque_original.body.center"] == pytest.approx((0, 0))
+    [part] = r.output.parts
+    assert part.name.endswith("plaque") and _box(part)[0] == pytest.approx(200 - 70)
+    src = ("units mm\nsolid p {\n    body = Polygon(points=[(0, 0), (30, 0), (30, 12), (12, 20)])\n"
+           "    axis = Line(start=(0, -10), end=(0, 30), construction=true)\n    Fixed(axis)\n"
+           "    Fixed(body.points[0])\n    Flip(body, about=axis)\n}\n")
+    r = aidl_lang.compile(source=src)
+    assert r.ok
+    [part] = r.output.parts
+    assert _box(part) == pytest.approx((-30, 0, 0, 20))
+    v = {x.name: x.value for x in r.values}
+    assert v["p.body.p1"] == pytest.approx((-30, 0)) and v["p.body_original.p1"] == pytest.approx((30, 0))
+
+
+@pytest.mark.parametrize("call,said", [
+    ("Scale(plaque, 0)", "a factor more than 0"),
+    ("Scale(plaque, -0.5)", "a factor more than 0"),
+])
+def test_a_factor_that_is_no_scale_is_refused_at_the_call(call, said):
+    r = aidl_lang.compile(source=PLAQUE + call + "\n")
+    [e] = r.errors
+    assert e.code == "E0108" and said in e.message and e.span.line == PLAQUE.count("\n") + 1
+
+
+def test_scale_twice_in_place_is_refused():
+    r = aidl_lang.compile(source=PLAQUE + "Scale(plaque, 0.7)\nScale(plaque, 0.5)\n")
+    [e] = r.errors
+    assert "changed in place already" in e.message
+
+
+@pytest.mark.parametrize("syn,canon,args", [
+    ("Move", "Translate", "(20, 5)"), ("Shift", "Translate", "(20, 5)"),
+    ("Moved", "Translated", "by=(20, 5)"), ("Resize", "Scale", "0.5, center=(3, 4)"),
+    ("Resized", "Scaled", "0.5, center=(3, 4)")])
+def test_a_synonym_is_its_transform(syn, canon, args):
+    """Each synonym gives the canonical operation's parts, point for point."""
+    def parts(name):
+        r = aidl_lang.compile(source=PLAQUE + f"x = {name}(plaque, {args})\n")
+        assert r.ok, [(d.code, d.message) for d in r.diagnostics]
+        return sorted((p.name, _box(p)) for p in r.output.parts)
+    want = parts(canon)
+    assert parts(syn) == want and len(want) >= 1
