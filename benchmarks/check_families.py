@@ -11,6 +11,7 @@ tests/test_checks_scaling.py):
 
 * ``concentric``: n circles about one centre, radius 1 + i mm (one solid)
 * ``concentric01``: n circles about one centre, radius 1 + 0.1 i mm (tests/test_reliability)
+* ``holes``: a plate with n concentric round holes, one statement's copies (radius 1 + 0.1 i)
 * ``nested``: n squares about one centre, side 2 + 2 i mm (one solid)
 * ``frames``: n square frames, each a solid with its own square hole, nested in one another
 * ``chain``: n 10 x 5 mm rectangles in a row, each touching the next edge to edge
@@ -38,6 +39,14 @@ def concentric(n: int, step: float = 1.0) -> str:
     return "solid s {\n" + "".join(
         f"    c{i} = Circle(center=(0, 0), radius={round(1 + i * step, 1)})\n"
         for i in range(n)) + "}\n"
+
+
+def holes(n: int) -> str:
+    """A plate with n concentric round holes of one statement (radius 1 + 0.1 i mm)."""
+    w = 4 + 0.2 * n
+    return (f"solid plate {{\n    body = Rectangle(center=(0, 0), width={w}, height={w})\n"
+            f"    hole h {{\n        for i in range({n}) {{ c = Circle(center=(0, 0), "
+            "radius=1 + 0.1 * i) }\n    }\n}\n")
 
 
 def nested(n: int) -> str:
@@ -89,6 +98,7 @@ def corners(n: int) -> str:
 FAMILIES = {
     "concentric": (concentric, 1000),
     "concentric01": (lambda n: concentric(n, 0.1), 1000),
+    "holes": (holes, 1000),
     "nested": (nested, 1000),
     "frames": (frames, 300),
     "chain": (chain, 2000),
