@@ -17,6 +17,7 @@ tests/test_checks_scaling.py):
 * ``chain``: n 10 x 5 mm rectangles in a row, each touching the next edge to edge
 * ``grid``: a plate with n round holes (radius 2 mm, pitch 6 mm)
 * ``touching``: n 10 mm squares on a square grid, each touching its neighbours edge to edge
+* ``parts``: an assembly of n 10 mm square parts on a grid, touching edge to edge
 * ``corners``: n 10 mm squares on a checkerboard (touching at their corners only: W0507)
 """
 from __future__ import annotations
@@ -87,6 +88,14 @@ def touching(n: int) -> str:
         "height=10)\n" for i in range(n)) + "}\n"
 
 
+def parts(n: int) -> str:
+    """An assembly of n 10 mm square parts on a square grid, touching edge to edge."""
+    cols = math.ceil(math.sqrt(n))
+    return (f"assembly kit {{\n    for i in range({n}) {{\n        solid p {{ r = Rectangle("
+            f"center=(10 * (i % {cols}), 10 * (i // {cols})), width=10, height=10) }}\n"
+            "    }\n}\n")
+
+
 def corners(n: int) -> str:
     cols = math.ceil(math.sqrt(2 * n))
     cells = [(i, j) for j in range(cols) for i in range(cols) if (i + j) % 2 == 0][:n]
@@ -105,6 +114,7 @@ FAMILIES = {
     "grid": (grid, 20000),
     "touching": (touching, 2500),
     "corners": (corners, 400),
+    "parts": (parts, 2500),
 }
 
 # run in the checkout under test (``sys.path[0]``): the shape checks timed alone, then the
