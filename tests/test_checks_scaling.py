@@ -6,8 +6,9 @@ corners, an assembly of square parts touching edge to edge.  A law over generate
 under :data:`RATIO`; n log n gives 4 to 5 at these sizes, n^2 gives 16 (before the fix,
 concentric circles at 100 and 400: 41 ms and 2,379 ms, a ratio of 58; nested squares 14).
 
-Cost: about 7 s of CPU for the whole file with its imports (two generated sizes per family, each compiled at n
-and 4n, the check timed three times at n and twice at 4n, the least kept)."""
+Cost: about 7 s of CPU for the whole file with its imports (two generated sizes per family,
+each compiled at n and 4n, the check timed three times at n and twice at 4n, the least
+kept)."""
 from __future__ import annotations
 
 import time
