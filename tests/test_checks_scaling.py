@@ -90,6 +90,7 @@ def test_box_groups_are_the_components_of_box_pairs(bs, pad, scale):
     from aidl_lang.output.part.nearby import box_groups, box_pairs, components
     B = np.array([(x, y, x + w, y + h) for x, y, w, h in bs], dtype=float) * scale
     p = box_pairs(B, pad)
+    assert p.tolist() == sorted(p.tolist())      # rows sorted (W0512 walks them in order)
     want = components(len(B), [p[:, 0]], [p[:, 1]])
     assert np.array_equal(box_groups(B, pad), want)
 
