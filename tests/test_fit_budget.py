@@ -57,8 +57,10 @@ def test_overlapping_placed_parts_stop_within_the_budget(cpu_clock):
     assert codes == ["E0304"], codes
     assert "shape checks" in r.diagnostics[0].message or "fit check" in r.diagnostics[0].message
     # the promise: it stops at its budget (CPU seconds here) plus one step's slack; the
-    # unbounded flat check took 6.4 s before
-    assert cpu < 3.0 + 2.0, cpu
+    # unbounded flat check took 6.4 s before; the step's slack scaled to this machine
+    # (tests/cpu_reference.py: measured 3.03 s here, within 2x of the bound)
+    from cpu_reference import cpu_bound
+    assert cpu < 3.0 + cpu_bound(2.0), cpu
 
 
 def test_a_chain_of_placed_parts_is_checked_within_the_budget(cpu_clock):

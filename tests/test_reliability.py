@@ -123,8 +123,9 @@ def _circles(n, step, r=1.0, pattern=False):
 
 @pytest.mark.parametrize("name, src, seconds", [
     # 1 000 concentric circles: one batch union took 10 s (every circle crosses every scan
-    # line); united in groups of 16, 0.2 s
-    ("concentric", _circles(1000, lambda i: (0, 0, round(1 + i * 0.1, 1))), 6),
+    # line); united in groups of 16, 0.2 s (the booleans), and so in W0507's neck search
+    # (8.9 s in one batch there): the whole check 0.3 s
+    ("concentric", _circles(1000, lambda i: (0, 0, round(1 + i * 0.1, 1))), 2),
     # 2 000 separate circles: W0504 measured every piece against every circle (4 M
     # intersections); now the 6 pieces it names, against the circles in their box
     ("separate", _circles(2000, lambda i: ((i % 70) * 3, (i // 70) * 3, 1)), 8),
@@ -134,8 +135,11 @@ def _circles(n, step, r=1.0, pattern=False):
 def test_large_outlines_check_in_bounded_time(name, src, seconds, tmp_path):
     """`aidl check` (compile, shape checks, and the freedom count of its ok line) on outlines
     that were quadratic somewhere; the bounds are ~5x the time on a quiet machine, in CPU
-    seconds (the wall clock of a loaded machine ran past them; `--budget 4` gives the compile's
-    own wall-clock deadline the same room, so a loaded machine does not end it with E0304)."""
+    seconds scaled to this machine by a reference workload timed in the same run
+    (tests/cpu_reference.py: a fresh machine 1.4x slower took 8.2 s of the 6 s bound set for
+    concentric circles, then 8.9 s in W0507's union alone; now 0.3 s); `--budget 4` gives the
+    compile's own deadline the same room, so a loaded machine does not end it with E0304."""
+    from cpu_reference import cpu_bound
     import contextlib
     import io
     from aidl_lang.cli.main import main
@@ -145,7 +149,7 @@ def test_large_outlines_check_in_bounded_time(name, src, seconds, tmp_path):
     out = io.StringIO()
     with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
         assert main(["check", "--budget", "4", str(f)]) == 0
-    assert time.process_time() - t0 < seconds, out.getvalue()
+    assert time.process_time() - t0 < cpu_bound(seconds), out.getvalue()
     assert ": ok (" in out.getvalue()
 
 

@@ -25,8 +25,22 @@ def _area(cs) -> float:
 
 
 def _union(shapes) -> mf.CrossSection:
+    """The union of ``shapes`` (None and empty ones left out), the boolean stage's way
+    (:meth:`..part.booleans.Renderer.union`): up to :data:`..part.booleans.UNION_GROUP`
+    shapes, or shapes whose boxes are all apart, in one ``batch_boolean``; more in groups of
+    that many, then the groups' results, and so on (a balanced tree).  One batch costs about
+    vertices x edges across a scan line: W0507's neck search united 1,000 concentric circles
+    in 8.9 s CPU, in groups 0.05 s (the inner ones vanish in the first level)."""
+    from ..part.booleans import UNION_GROUP
+    from ..part.nearby import faces_apart
     shapes = [s for s in shapes if s is not None and not s.is_empty()]
-    return mf.CrossSection.batch_boolean(shapes, mf.OpType.Add) if shapes else mf.CrossSection()
+    if not shapes:
+        return mf.CrossSection()
+    if len(shapes) > UNION_GROUP and not faces_apart(shapes):
+        while len(shapes) > UNION_GROUP:
+            shapes = [mf.CrossSection.batch_boolean(shapes[i:i + UNION_GROUP], mf.OpType.Add)
+                      for i in range(0, len(shapes), UNION_GROUP)]
+    return mf.CrossSection.batch_boolean(shapes, mf.OpType.Add)
 
 
 def _significant(a: float, whole: float) -> bool:

@@ -67,13 +67,19 @@ def _intended(hole: Structure, owner: Structure, obj) -> bool:
     return False
 
 
+MERGES_COUNTED = 200    # W0512: pairs of copies measured before "at least N such pairs"
+
+
 def _check_repeated_faces(d: Drawing, h: Structure, sink: DiagnosticSink,
                           tick=lambda: None) -> None:
     """W0512 for hole ``h``: the faces one statement draws several times (in a loop) that
     overlap or touch, so they cut fewer openings than the statement draws (a drill gauge of
     ten holes with nine openings).  Faces of different statements (a keyhole's circle and
     slot) are one opening by design and are not compared.  ``tick()``: before each pair's
-    boolean (the deadline)."""
+    boolean (the deadline).  Past :data:`MERGES_COUNTED` merging pairs, one of them deeper
+    than a wall (so the hint's fix is decided), the rest are not measured and the count is
+    "at least": n concentric copies are n^2/2 pairs (1,000: 500,000 booleans, past the
+    family's share, so no W0512 at all but a W0521 note)."""
     by_stmt: dict = {}
     for g, f in d.own.get(h, []):
         if g.span is not None and f is not None and not f.is_empty():
@@ -83,15 +89,19 @@ def _check_repeated_faces(d: Drawing, h: Structure, sink: DiagnosticSink,
             continue
         shapes = [f for _, f in faces]
         boxes = np.array([f.bounds() for f in shapes], dtype=float)
-        merges = []
-        for i, j in sorted(map(tuple, box_pairs(boxes, pad=TOUCH / 2))):
+        merges, deep, cut_short = [], False, False
+        for i, j in box_pairs(boxes, pad=TOUCH / 2).tolist():     # (rows sorted)
             if _allowed_pair(h, faces[i][0], faces[j][0]):
                 continue                               # AllowOverlap(c): one opening, meant
+            if len(merges) >= MERGES_COUNTED and deep:
+                cut_short = True                       # the rest: "at least N"
+                break
             tick()
             common = shapes[i] ^ shapes[j]
             a = _area(common)
             if a > 1e-9:
                 merges.append((i, j, _depth(common, boxes[i], boxes[j]), a))
+                deep = deep or merges[-1][2] >= MIN_WALL
             elif (shapes[i] + shapes[j]).num_contour() < 2:
                 merges.append((i, j, 0.0, 0.0))        # they touch: one contour
         if not merges:
@@ -101,7 +111,8 @@ def _check_repeated_faces(d: Drawing, h: Structure, sink: DiagnosticSink,
         g = faces[0][0]
         how = (f"copies {i + 1} and {j + 1} overlap by {depth:.2f} mm ({a:.2f} mm^2 in common)"
                if a > 0 else f"copies {i + 1} and {j + 1} touch")
-        more = f" ({len(merges)} such pairs)" if len(merges) > 1 else ""
+        more = (f" (at least {len(merges)} such pairs)" if cut_short else
+                f" ({len(merges)} such pairs)" if len(merges) > 1 else "")
         ref = _ref(g, h)
         stmt = f"AllowOverlap({ref})" if ref != "self" else None
         meant = (f", or say so: write `{stmt}` in `{h.path}`" if stmt else "")
@@ -135,9 +146,12 @@ def _check_overlapping_circles(d: Drawing, h: Structure, sink: DiagnosticSink,
     boxes = np.array([f.bounds() for f in shapes], dtype=float)
     areas = [_area(f) for f in shapes]
     merges = []
-    for i, j in sorted(map(tuple, box_pairs(boxes))):
-        if faces[i][0].span == faces[j][0].span:
-            continue                                   # copies of one statement: W0512 above
+    # copies of one statement are W0512 above: their pairs left out at once (1,000 copies of
+    # one circle are 500,000 pairs, one Python step each)
+    stmt: dict = {}
+    of = np.array([stmt.setdefault(g.span, len(stmt)) for g, _ in faces], dtype=np.intp)
+    pairs = box_pairs(boxes)
+    for i, j in pairs[of[pairs[:, 0]] != of[pairs[:, 1]]].tolist():      # (rows sorted)
         if _allowed_pair(h, faces[i][0], faces[j][0]):
             continue                                   # AllowOverlap(a, b): one opening, meant
         tick()

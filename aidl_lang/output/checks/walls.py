@@ -20,6 +20,7 @@ from ...diagnostics import Diagnostic, DiagnosticSink, Fix, Label, Span
 from ...geometry.model import Structure
 from ..part.booleans import Drawing
 from ..part.nearby import _median, box_pairs
+from ..part.nearby import components as _components
 from ..part.scanwork import turned, turned_back
 from .common import _area, _cut_openings, _loop_boxes, _solids_within, _union
 from .nicks import slit_fix
@@ -923,30 +924,6 @@ def _clusters(points: np.ndarray, r: float) -> np.ndarray:
     return least[comp]
 
 
-def _components(m: int, a: list, b: list) -> np.ndarray:
-    """The connected components of ``m`` nodes joined by the edges ``a[k][i] - b[k][i]``
-    (lists of index arrays): for each node the least node of its component.  Union-find by
-    rounds, vectorised: every edge whose ends have different roots hooks the greater root to
-    the least root it meets, then the roots are compressed by pointer jumping."""
-    parent = np.arange(m)
-    if not a:
-        return parent
-    a, b = np.concatenate(a), np.concatenate(b)
-    while len(a):
-        ra, rb = parent[a], parent[b]
-        diff = ra != rb
-        if not diff.any():
-            break
-        a, b, ra, rb = a[diff], b[diff], ra[diff], rb[diff]
-        np.minimum.at(parent, np.maximum(ra, rb), np.minimum(ra, rb))
-        while True:
-            nxt = parent[parent]
-            if np.array_equal(nxt, parent):
-                break
-            parent = nxt
-    return parent
-
-
 NECK_VERTS = 200_000   # W0507's neck search: not past this many vertices of members that overlap
 
 
@@ -1065,13 +1042,14 @@ def _check_necks(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
     # overlapping boxes) are united and eroded each on its own - the same as the whole eroded,
     # since an erosion never joins what lies apart (Clipper's offset of 5,000 disjoint circles
     # at once took 20 s; a decompose of 4,000 of slightly different radii 40 s)
-    from ..part.nearby import box_pairs
-    pairs = box_pairs(np.array([f.bounds() for f in faces], dtype=float))
-    if not len(pairs):
+    # (the groups without listing the pairs: 1,000 concentric circles are 500,000 of them)
+    from ..part.nearby import box_groups
+    group = box_groups(np.array([f.bounds() for f in faces], dtype=float))
+    count = np.bincount(group, minlength=len(faces))
+    if not (count > 1).any():
         return
-    group = _components(len(faces), [pairs[:, 0]], [pairs[:, 1]])
     many = [_union([faces[k] for k in np.flatnonzero(group == g)])
-            for g in sorted(set(group[pairs[:, 0]].tolist()))]    # (np.unique: numpy.ma)
+            for g in np.flatnonzero(count > 1).tolist()]
     n = sum(p.num_vert() for p in many)
     if n > NECK_VERTS:
         return
