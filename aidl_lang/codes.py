@@ -718,7 +718,9 @@ A hole lies wholly inside its solid (no part of it is drawn past the edge) and o
 outer edge: at a point (a circle tangent to the edge, a window's corner on the roof line) or
 along less than the minimum wall (0.5 mm unless `--min-wall`). The wall between them has zero
 width, so the hole is pinched open onto the edge: neither a closed hole nor a clean notch. The
-warning names the hole and says how long the contact is. Move the hole inward to leave
+warning names the hole, says how long the contact is and where it is: the point of contact
+itself, each one (a circle in a corner touches two edges), to 0.01 mm (on a hole's circle the
+point of the circle nearest the edge), not the hole's centre. Move the hole inward to leave
 material around it, or out past the edge to make a notch. A hole flush with the edge along more
 than the minimum wall is a notch (a connector cut-out, a cross-halving slot) and is not warned.
 

@@ -37,6 +37,7 @@ from ...geometry.tessellate import CHORD_TOL
 from ..part.booleans import Drawing
 from ..part.nearby import (boundaries, boundary, box_pairs, box_pairs_between,
                            close_pairs)
+from .contact import circle_of, contact_points
 from .common import (MIN_AREA, MIN_WALL, _area, _contributors, _cut_openings, _depth, _edges,
                      _insert_fix, _inside, _loop_boxes, _part_of, _pct, _signed, _significant,
                      _say_few, _solids_within, _union)
@@ -205,11 +206,20 @@ def _check_flush(d: Drawing, s: Structure, shape, a: _Openings, cuts, min_wall: 
                             - _perimeter(filled - c.region)) / 2)
         if contact >= max(min_wall, MIN_WALL):
             continue                       # flush along a side: a notch
-        x0, y0, x1, y1 = c.region.bounds()
         where = "at a point" if contact < 2 * TOUCH else f"along only {contact:.2f} mm"
+        circles = [k for k in (circle_of(np.asarray(f.to_polygons()[0], dtype=float))
+                               for g, f in d.own.get(c.hole, ())
+                               if g.kind == "Circle" and f is not None and not f.is_empty())
+                   if k is not None]
+        at = contact_points(c.region, filled, circles)
+        if not at:                         # (not found on the polygons: the hole's box)
+            x0, y0, x1, y1 = c.region.bounds()
+            at = [((x0 + x1) / 2, (y0 + y1) / 2)]
+        said = " and ".join(f"({x:.2f}, {y:.2f})" for x, y in at[:4]) \
+            + (f" and {len(at) - 4} more places" if len(at) > 4 else "")
         sink.warning("W0514", f"hole `{c.hole.path}` lies inside `{s.path}` but touches its "
-                     f"outer edge {where} (a wall of zero width), so it opens onto the edge "
-                     f"(near ({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}))", c.hole.span,
+                     f"outer edge {where} (a wall of zero width), so it opens onto the edge: "
+                     f"the contact is at {said}", c.hole.span,
                      hint=f"move `{c.hole.name}` inward (by at least the minimum wall) to "
                           "leave material around it; if a notch is meant, let the hole run "
                           "past the edge (e.g. by 1 mm) so that the intent is explicit")
