@@ -578,6 +578,23 @@ marks the refill as intended (it silences this warning and W0501 for the pair).
 Two holes meant to cut one opening (a screw hole on the edge of a window) are said with
 `AllowOverlap(window, screw)` in the structure holding both, as the hint writes (or draw the
 shapes in one hole structure).
+The suggested fix (`--json`, the editors' quick fix) never hides the overlap. Two different
+holes that overlap or touch are never taken as meant (one opening is drawn in one hole): the
+fix moves one of them clear, the one the warning points at, else the other, by the shortest
+move that leaves the minimum wall to the other hole and as much to every other hole of the
+part and to its outline (when the moved shape lay inside it), computed on the outlines (the
+Minkowski sums of the obstacles with the moving shape's hull, grown by the wall). It is written
+in the shape's own call, every point argument shifted and its expressions kept, in the file's
+units: `Circle(center=(-40 + 20 * i, 20), radius=pen_d / 2)` becomes `Circle(center=(-40 +
+20 * i - 3.52, 20), radius=pen_d / 2)` (every copy of that statement moves with it, and is
+checked). The hint gives the move, `by (dx, dy) mm`, and for a round hole whose centre lies
+outside the other the radius that would clear instead. No fix is offered when the shape is
+placed otherwise (a constraint on it or on its hole, a point shared with another shape, a
+template's or a pattern's copy, a hole whose shapes of several statements touch): the hint
+says how far to move. The one overlap taken as meant: copies of one pattern (or loop) that
+overlap by at least the minimum wall (a row of vents drawn into one slot), whose fix is
+`AllowOverlap(the pattern's list)`; copies that only graze (less than a wall, or touch) were
+meant apart and get no fix.
 
     solid plate {
         body = Rectangle(center=(0, 0), width=60, height=30)

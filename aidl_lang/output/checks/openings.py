@@ -37,6 +37,7 @@ from ...geometry.tessellate import CHORD_TOL
 from ..part.booleans import Drawing
 from ..part.nearby import (boundaries, boundary, box_pairs, box_pairs_between,
                            close_pairs)
+from .clearing import move_fix
 from .contact import circle_of, contact_points
 from .common import (MIN_AREA, MIN_WALL, _area, _contributors, _cut_openings, _depth, _edges,
                      _insert_fix, _inside, _loop_boxes, _part_of, _pct, _signed, _significant,
@@ -726,11 +727,13 @@ def _inner(a: _Openings, i: int, j: int, common) -> int | None:
 
 
 def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
-                     shapes: dict | None = None) -> set:
+                     shapes: dict | None = None, d: Drawing | None = None,
+                     shape=None) -> set:
     """W0508 for each two holes that cut one opening and W0507 for each web of ``a``; returns
     the name pairs reported (the opening test of :func:`_check_walls` skips them).
     ``shapes``: the booleans' shape of each structure (``Drawing.shapes``), which tells a
-    solid drawn inside another hole's opening (:func:`_refiller`)."""
+    solid drawn inside another hole's opening (:func:`_refiller`); ``d`` and ``shape`` (the
+    part's final shape): for W0508's fix, a move that clears (:func:`_merge_fix`)."""
     covered = set()
     for i, j, depth, common in a.merges:
         first, second = a.names[i], a.names[j]
@@ -772,11 +775,16 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
                  "write `AllowOverlap(NAME)` after it (the list holds the original and every "
                  "copy)" if stmt == "" else
                  "draw both shapes in one hole structure (the faces of one hole may overlap)")
+        move, fix = f"move {second} {far} further from {first}", None
+        if stmt and _copies_of_one(stmt, a.cuts[i - 1].hole, a.cuts[j - 1].hole) \
+                and depth >= max(t, MIN_WALL):
+            fix = _insert_fix(where, stmt, sink)     # copies that overlap deeply: meant
+        elif d is not None and shape is not None and a.cuts:
+            move, fix = _merge_fix(d, s, shape, a, i, j, t, sink, move)
         sink.warning("W0508", f"{first} and {second} of `{s.path}` {how}, so they cut one "
                      "opening, not two", a.spans[j], labels=labels,
-                     hint=f"move {second} {far} further from {first} (or shrink one of them) so that "
-                          f"material is left between them; if one opening is meant, {meant}",
-                     fix=_insert_fix(where, stmt, sink) if stmt else None)
+                     hint=f"{move}; or shrink one of them so that material is left between "
+                          f"them; if one opening is meant, {meant}", fix=fix)
     inner = len(a.names) - 1
     for i, j, w, length, (x, y) in a.webs:
         covered.add(frozenset((a.names[i], a.names[j])))
@@ -805,6 +813,36 @@ def _enough(v: float) -> str:
     0.29 mm at a 0.5 mm minimum left a 0.49 mm wall, W0507)."""
     from ...geometry.tessellate import CHORD_TOL
     return f"{math.ceil(round((v + 2 * CHORD_TOL) * 100, 6)) / 100:.2f}"
+
+
+def _copies_of_one(stmt: str, hi: Structure, hj: Structure) -> bool:
+    """Holes ``hi`` and ``hj`` are copies of one pattern: ``stmt`` allows them by its list
+    (``AllowOverlap(vents)``), or one is the pattern's original and the other its first copy
+    (``vent`` and ``vents[1]``)."""
+    return "," not in stmt or hi.pattern_original is hj or hj.pattern_original is hi
+
+
+def _merge_fix(d: Drawing, s: Structure, shape, a: _Openings, i: int, j: int, t: float, sink,
+               move: str) -> tuple:
+    """W0508's hint sentence and fix for holes ``i`` and ``j`` of ``a`` that are not copies
+    of one pattern overlapping by design: a move of ``j`` (else ``i``) that leaves ``t`` mm
+    (at least :data:`MIN_WALL`) of material to the other and to everything around it
+    (:func:`.clearing.move_fix`), or no fix at all, never an ``AllowOverlap`` that would hide
+    the defect (``move``: the sentence when no move is found)."""
+    wall = max(t, MIN_WALL)
+    for mover, other in ((j, i), (i, j)):
+        got = move_fix(d, s, shape, a.cuts, mover - 1, other - 1, wall, sink)
+        if got is None:
+            continue
+        fix, (dx, dy), g, n, size = got
+        what = f"`{g.label}`" if n == 1 else \
+            f"the {n} copies of `{g.label.rsplit('[', 1)[0]}` (one statement)"
+        smaller = f"; or make its radius {size} so that it clears" if size else ""
+        return (f"move {a.names[mover]} {_enough(math.hypot(dx, dy) - 2 * CHORD_TOL)} mm "
+                f"further from {a.names[other]}: by ({dx:.2f}, {dy:.2f}) mm, the shortest move "
+                f"that leaves {wall:g} mm of material between them and as much to the other "
+                f"holes and the outline (the suggested fix moves {what} so){smaller}", fix)
+    return move, None
 
 
 def _holes_allowed(ci, cj) -> bool:

@@ -1,0 +1,168 @@
+"""Issue 91: W0508's machine fix was `AllowOverlap(pens, phone)`, which silenced a pen hole
+running into a phone slot (a repair loop applying it hides the defect).  Now two different
+holes that overlap get a fix that moves one of them clear: the shortest move that leaves the
+minimum wall to the other hole, to every other hole and to the outline, written in the
+shape's own call (its expressions kept: `-40 + 20 * i` becomes `-40 + 20 * i - 3.52`).
+Only copies of one pattern overlapping by more than a wall (a row of vents run into a slot
+by design) get `AllowOverlap`.
+
+The law: generated pairs of overlapping holes (circles, rectangles, triangles; positions
+written as numbers or as param expressions; a third hole standing by), each fix applied to
+the file and the file checked again with `aidl check`'s compile: the overlap is gone, no
+warning is left or added, the plate has one opening per hole, and for two circles (two
+rectangles) the move is the shortest one, to 0.03 mm.  Cost: 14 generated cases, two small
+compiles each, about 6 s."""
+from __future__ import annotations
+
+import math
+
+import pytest
+from hypothesis import assume, given, settings, strategies as st
+
+from aidl_lang.pipeline import compile_source
+
+WALL = 0.5
+
+
+def _compile(tmp, src: str, name: str = "pair.aidl"):
+    p = tmp / name
+    p.write_text(src)
+    c = compile_source(src, str(p))
+    assert c.ok, [(d.code, d.message) for d in c.sink.items if d.severity == "error"]
+    return c
+
+
+def _apply(src: str, fix) -> str:
+    sp = fix.span
+    return src[:sp.start] + fix.replacement + src[sp.end:]
+
+
+def _shape(kind: str, x: str, y: str, size: float) -> str:
+    if kind == "circle":
+        return f"Circle(center=({x}, {y}), radius={size})"
+    if kind == "rect":
+        return f"Rectangle(center=({x}, {y}), width={2 * size}, height={1.2 * size})"
+    return (f"Polygon([({x} - {size}, {y} - {size}), ({x} + {size}, {y} - {size}), "
+            f"({x}, {y} + {size})])")
+
+
+PROGRAM = """param shift = {shift}
+solid plate {{
+    body = Rectangle(center=(0, 0), width=140, height=100)
+    hole a {{ s = {a} }}
+    hole b {{ s = {b} }}
+    hole c {{ s = Circle(center=({cx}, {cy}), radius=3) }}
+}}
+"""
+
+
+def _bbox_gap(c) -> list:
+    return [d for d in c.sink.items if d.severity == "warning"]
+
+
+@settings(max_examples=14, deadline=None, derandomize=True, database=None)
+@given(ka=st.sampled_from(["circle", "rect", "tri"]), kb=st.sampled_from(["circle", "rect", "tri"]),
+       sa=st.floats(3, 9), sb=st.floats(3, 9), angle=st.floats(0, 2 * math.pi),
+       depth=st.floats(0.3, 0.8), param=st.booleans(), c_at=st.floats(0, 2 * math.pi))
+def test_law_each_W0508_fix_clears_the_overlap_and_nothing_gets_worse(
+        tmp_path_factory, ka, kb, sa, sb, angle, depth, param, c_at):
+    tmp = tmp_path_factory.mktemp("pair")
+    sa, sb = round(sa, 3), round(sb, 3)
+    reach = (sa + sb) * (1 - depth)               # centres closer than the sizes: overlap
+    bx, by = round(reach * math.cos(angle), 3), round(reach * math.sin(angle), 3)
+    cx, cy = round(bx / 2 + 20 * math.cos(c_at), 3), round(by / 2 + 20 * math.sin(c_at), 3)
+    x = f"shift + {bx - 7}" if param else f"{bx}"
+    src = PROGRAM.format(shift=7, a=_shape(ka, "0", "0", sa), b=_shape(kb, x, f"{by}", sb),
+                         cx=cx, cy=cy)
+    c = _compile(tmp, src)
+    ws = [d for d in c.sink.items if d.code == "W0508"]
+    assume(len(ws) == 1 and not [d for d in _bbox_gap(c) if d.code != "W0508"])
+    (w,) = ws
+    assume("wholly inside" not in w.message)          # one inside the other: no move meant
+    assert w.fix is not None and "AllowOverlap" not in w.fix.replacement, w.hint
+    if param and "plate.b" in w.hint.split("further")[0]:
+        assert "shift +" in w.fix.replacement          # the param expression is kept
+    fixed = _compile(tmp, _apply(src, w.fix), "fixed.aidl")
+    left = [(d.code, d.message) for d in _bbox_gap(fixed)]
+    assert left == [], (w.hint, w.fix.replacement, left)
+    (part,) = fixed.drawing.parts
+    assert part.shape.num_contour() == 4               # the outline and three openings
+    # the shortest move, where it is known in closed form: never shorter; no longer unless
+    # the third hole stands in its way
+    v = [float(t) for t in w.hint.split("by (")[1].split(")")[0].split(", ")]
+    moved = math.hypot(*v)
+    need = None
+    if ka == kb == "circle":
+        need = sa + sb - reach + WALL
+    if ka == kb == "rect":
+        need = min(sa + sb - abs(bx), 0.6 * (sa + sb) - abs(by)) + WALL
+    if need is not None:
+        assert need <= moved + 0.01, (need, moved)
+        clear = min(math.hypot(cx, cy), math.hypot(cx - bx, cy - by)) - 3 - 2 * max(sa, sb)
+        if clear > need + 1:
+            assert moved <= need + 0.03, (need, moved, w.hint)
+
+
+def test_the_pen_and_the_phone_slot(tmp_path):
+    """The issue's case: a row of pen holes, one running into the phone slot.  The fix moves
+    the row's statement by the shortest move (3.5 mm and the margin, along x), written
+    against the loop's own expression; applied, the design checks clean with 5 openings."""
+    src = """param width = 160
+param pen_d = 12
+solid organizer {
+    base = Rectangle(center=(0, 0), width=width, height=80)
+    hole phone {
+        slot = Rectangle(center=(30, 0), width=14, height=70)
+    }
+    hole pens {
+        holes = [Circle(center=(-40 + 20 * i, 20), radius=pen_d / 2) for i in range(4)]
+    }
+}
+"""
+    c = _compile(tmp_path, src)
+    (w,) = [d for d in c.sink.items if d.code == "W0508"]
+    assert w.fix.replacement == "Circle(center=(-40 + 20 * i - 3.52, 20), radius=pen_d / 2)"
+    assert "by (-3.52, 0.00) mm" in w.hint and "4 copies" in w.hint
+    fixed = _compile(tmp_path, _apply(src, w.fix), "fixed.aidl")
+    assert not [d for d in fixed.sink.items if d.severity == "warning"]
+    assert fixed.drawing.parts[0].shape.num_contour() == 6
+
+
+def test_a_hole_placed_by_a_constraint_is_not_the_one_moved_and_never_AllowOverlap(tmp_path):
+    """The screw's place is a constraint's, so editing its call would move nothing: the
+    fix moves the window instead (its place is its call's); with both placed by
+    constraints there is no fix, only the hint."""
+    src = """solid plate {
+    body = Rectangle(center=(0, 0), width=80, height=40)
+    hole opening { r = Rectangle(center=(0, 0), width=30, height=20) }
+    hole screw { c = Circle(center=(0, 0), radius=3) }
+    screw.c.center == (15, 0)
+}
+"""
+    c = _compile(tmp_path, src)
+    (w,) = [d for d in c.sink.items if d.code == "W0508"]
+    assert w.fix.replacement == "Rectangle(center=(-3.51, 0), width=30, height=20)"
+    fixed = _compile(tmp_path, _apply(src, w.fix), "fixed.aidl")
+    assert not [d for d in fixed.sink.items if d.severity == "warning"]
+    both = src.replace("    screw.c.center", "    opening.r.center == (0, 0)\n    screw.c.center")
+    c = _compile(tmp_path, both, "both.aidl")
+    (w,) = [d for d in c.sink.items if d.code == "W0508"]
+    assert w.fix is None and "move hole `plate.screw`" in w.hint
+
+
+def test_copies_of_one_pattern_overlapping_by_design_keep_AllowOverlap(tmp_path):
+    src = """solid plate {
+    body = Rectangle(center=(0, 0), width=80, height=40)
+    hole vent { c = Circle(center=(-20, 0), radius=4) }
+    vents = LinearPattern(vent, 4, (7, 0))
+}
+"""
+    c = _compile(tmp_path, src)
+    ws = [d for d in c.sink.items if d.code == "W0508"]
+    assert ws and all(d.fix is not None and d.fix.replacement.strip() in (
+        "AllowOverlap(vents)", "AllowOverlap(vent, vents)")
+                      for d in ws)
+    grazing = src.replace("(7, 0)", "(7.8, 0)")              # 0.2 mm deep: a slip, no fix
+    c = _compile(tmp_path, grazing, "grazing.aidl")
+    ws = [d for d in c.sink.items if d.code == "W0508"]
+    assert ws and all(d.fix is None for d in ws)
