@@ -753,15 +753,19 @@ squared) is a void where the shapes nearly meet but leave a gap, which a laser c
 sliver: the warning gives its area, width, length and place; make the shapes overlap (a
 negative gap, a larger size). A part says its first 5 voids, the fifth ending "(and N more
 like it in `part`)". A larger one enclosed by the faces of ONE solid structure,
-some of them overlapping (a dinosaur's legs and belly that merge around a window), is rarely
-meant: the warning names the faces around it, its size (width x height of its box, area) and
-centre; make the shapes overlap to fill it, or, when it is meant, declare it with a `hole`
-over it, as the hint (and the `--json` fix) writes: a Polygon of the opening's own outline, a
-hair inside it, so that it cuts no material whatever the opening's shape (a triangle beside
-a brace stays a triangle; a hole lying inside an opening that the solids enclose is not
-W0502). Not warned: an opening framed by several solid structures (a
-telephone's cradle between its base and handset), or by faces that only abut edge to edge (a
-frame of bars), or one that a hole cuts or covers.
+some of them overlapping (a dinosaur's legs and belly that merge around a window), is often
+not meant: the warning says plainly that the opening is cut through the part (the part comes
+out with that window, around an island of material when one lies inside it), names the faces
+around it, its size (width x height of its box, area) and centre. If it is not meant, fill
+it: make the shapes overlap across it (the opening is then gone). If it is meant, say so with
+`AllowOverlap` naming the shapes around it, written in their solid, as the hint (and the
+`--json` fix) writes: `AllowOverlap(base, post, brace)`. The part is unchanged by it (the
+opening stays cut), the statement names the shapes, not coordinates, so it holds whatever the
+params make of them, and it adds nothing to solve (`--dof` says the same). Naming only some
+of the shapes around it does not say it. A `hole` declared over the opening (cutting no
+material) declares it as well, and is not W0502. Not warned: an opening framed by several
+solid structures (a telephone's cradle between its base and handset), or by faces that only
+abut edge to edge (a frame of bars), or one that a hole cuts or covers.
 
     solid frame {
         left = Rectangle(center=(-5, 0), width=10, height=10)
@@ -1027,8 +1031,10 @@ cuts, or a cut and the outline, is W0507.
 An `AllowOverlap` statement none of whose names overlap or touch in the final drawing, so it
 silences no warning: it concerns a hole and what refills it (W0501), two holes that cut one
 opening (W0508), the shapes of one hole that merge (W0512), or two parts of an assembly
-(W0511; a program that places its parts in 3D with `Place` is not judged, W0517). Usually it
-names other shapes than meant (a pattern's original where its copies overlap: name the
+(W0511; a program that places its parts in 3D with `Place` is not judged, W0517). Shapes of
+one solid named together say that the window they enclose is meant (W0515): such a statement
+allows nothing when no W0515 opening has all its bounding shapes among them (it is said so:
+"enclose no opening that is warned about"). Usually it names other shapes than meant (a pattern's original where its copies overlap: name the
 pattern's list), or an edit moved the overlap away. Name the shapes a warning named (its hint
 writes the call), or delete the statement.
 

@@ -279,16 +279,6 @@ def _solid_faces(d: Drawing, s: Structure, near) -> list:
     return out
 
 
-def _free_name(s: Structure, base: str) -> str:
-    """``base``, or ``base2``, ``base3``... : a name that no child or shape of ``s`` has."""
-    used = set(s.children) | {g.name for g in s.geometry if g.name}
-    k, name = 1, base
-    while name in used:
-        k += 1
-        name = f"{base}{k}"
-    return name
-
-
 def _check_enclosed(d: Drawing, s: Structure, openings, cuts, sink,
                     tick=lambda ahead=0.0: None) -> None:
     """W0515 for each opening of part ``s`` (``openings``: clockwise loops of its final shape,
@@ -391,6 +381,13 @@ def _report_enclosed(d: Drawing, s: Structure, P, area: float, region, sink) -> 
     if not any(_area(shapes[i] ^ shapes[j]) > MIN_AREA
                for i, j in box_pairs(np.array([f.bounds() for f in shapes], dtype=float))):
         return                  # edge to edge (a frame of bars that abut): built to enclose it
+    owner = owners[0]
+    around = {g for _, g, _ in faces}
+    said = [ok for ok in getattr(owner, "enclosure_ok", ()) if around <= ok]
+    if said:                    # AllowOverlap(the shapes around it): the window is meant
+        owner.enclosure_used = getattr(owner, "enclosure_used", set()) | set(map(frozenset,
+                                                                                 said))
+        return
     x0, y0 = P.min(axis=0)
     x1, y1 = P.max(axis=0)
     w, h = x1 - x0, y1 - y0
@@ -400,49 +397,25 @@ def _report_enclosed(d: Drawing, s: Structure, P, area: float, region, sink) -> 
     g0 = faces[0][1]
     labels = [Label(g.span, "bounds it", primary=False) for _, g, _ in faces[1:4]
               if g.span is not None and g.span != g0.span]
-    owner = owners[0]
-    name = _free_name(owner, "window")
     final = d.shapes.get(s)
-    if final is not None and _area(region ^ final) > MIN_AREA:
-        # material inside the opening (a piece of its own): a hole of the opening's outline
-        # would cut it away, so no statement is offered
-        stmt, meant = None, (f"declare it in `{owner.path}` with a `hole` over it that leaves "
-                             "out the material inside it")
-    else:
-        pts = ", ".join(f"({x:.3f}, {y:.3f})" for x, y in _outline_inside(region, min(w, h)))
-        stmt = f"hole {name} {{ p = Polygon([{pts}]); Fixed(p) }}"
-        meant = (f"declare it in `{owner.path}` with a hole of its own outline (a hair inside "
-                 f"it, so that it cuts no material): `{stmt}`")
+    island = final is not None and _area(region ^ final) > MIN_AREA
+    refs = list(dict.fromkeys(_ref(g, owner) for _, g, _ in faces))
+    stmt = f"AllowOverlap({', '.join(refs)})" if "self" not in refs \
+        and all(_NAMEABLE.match(r) for r in refs) else None
+    say = (f"say so with `{stmt}` in `{owner.path}` (the suggested fix: the part stays as it "
+           "is, cut with this opening, and the statement names the shapes, so it holds "
+           "whatever the params make of them)" if stmt else
+           f"name the shapes around it and write `AllowOverlap(` them `)` in `{owner.path}` "
+           "(the part stays as it is)")
     sink.warning("W0515", f"an opening of {w:.2f} x {h:.2f} mm ({area:.2f} mm^2) near "
-                 f"({cx:.1f}, {cy:.1f}) is enclosed by {who} in `{owner.path}`: no hole cuts "
-                 "it, the shapes merge around it", g0.span or owner.span, labels=labels,
-                 hint="if it is not meant, make the shapes around it overlap to fill it (or "
-                      f"move them apart so that it opens onto the edge); if it is meant, {meant}",
+                 f"({cx:.1f}, {cy:.1f}) is cut through `{owner.path}`"
+                 + (" around an island of material inside it" if island else "")
+                 + f": {who} enclose it and no hole declares it, so the part comes out with "
+                 "a window there", g0.span or owner.span, labels=labels,
+                 hint=f"if it is meant, {say}; if it is not meant, fill it: make the shapes "
+                      "around it overlap across it (or move them apart so that it opens onto "
+                      "the edge), and the opening is gone",
                  fix=_insert_fix(owner, stmt, sink) if stmt else None)
-
-
-def _outline_inside(region, size: float) -> list:
-    """The outline of the opening ``region`` (a CrossSection of one loop; ``size`` mm its
-    smaller side) as at most about 24 vertices that lie inside it (an inset by twice the
-    simplification's tolerance, which starts at 0.005 mm and doubles, up to a 20th of
-    ``size``, while more are left): a hole of this polygon declares the opening and cuts no
-    material, whatever its shape (a triangle between a brace and its legs stays a triangle,
-    where a Rectangle of its box cut through the brace; a round opening's polygon lies a
-    little inside the circle).  Counter-clockwise ``[(x, y)]`` mm, rounded to 0.001 mm
-    (less than the inset)."""
-    eps, best = 0.005, None
-    while True:
-        inner = region.offset(-2 * eps, mf.JoinType.Miter, 2.0, 16).simplify(eps)
-        loops = [np.asarray(q, dtype=float) for q in inner.to_polygons()]
-        loops = [P for P in loops if len(P) >= 3 and _signed(P) > 0]
-        if loops:
-            best = max(loops, key=_signed)
-        if best is None or len(best) <= 24 or eps * 2 > size / 20:
-            break
-        eps *= 2
-    if best is None:                      # too thin to inset: the outline itself
-        best = max((np.asarray(q, dtype=float) for q in region.to_polygons()), key=_signed)
-    return [(float(x), float(y)) for x, y in best]
 
 
 class _Near:
