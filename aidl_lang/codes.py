@@ -970,6 +970,22 @@ failing ones: narrow the range to it, or fix the design so that it holds across 
         hole h { c = Circle(center=(offset, 0), radius=3) }   # leaves the plate past 21.4 mm
     }
 """),
+    "W0111": ("bidirectional control or line separator in a comment or string", """
+A character that makes the source read otherwise than it runs ("Trojan source"): a
+bidirectional embedding, override or isolate (U+202A to U+202E, U+2066 to U+2069), which
+reorders how the rest of the line is displayed (a comment that seems to end before the code
+after it, a string that seems to hold other words), or a line or paragraph separator (U+2028,
+U+2029), which some editors show as a line break that the compiler does not count: lines end
+at LF, CR LF and a lone CR, so every line number a diagnostic gives stays the one the editor
+shows. In a comment or a string it is this warning, one per character, with a caret under it
+and the code point named (`U+202E RIGHT-TO-LEFT OVERRIDE`); the fix deletes it. In code it
+cannot start a token: `E0002`, which names the code point too. A diagnostic that prints a
+source line holding one shows it as U+FFFD, one column wide, so the line is not reordered
+under its caret.
+
+    # admin<U+202E> nimda      <- with the character itself there, the rest of the comment
+                               #    shows reversed: W0111 at line 1, column 8
+"""),
     "W0104": ("empty drawing", """
 The file is empty (nothing but comments), or its structures build no geometry at all, so the
 SVG would be empty. Add shapes, or instantiate a template. A file of only templates, params and

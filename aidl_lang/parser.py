@@ -25,6 +25,7 @@ from pathlib import Path
 
 from . import ast as A
 from .cache import cache_dir, read_checked, write_checked
+from .controls import check_controls, code_point, invisible
 from .diagnostics import DiagnosticSink, Label, Span, as_lf
 from .memory import gc_paused
 
@@ -1316,6 +1317,7 @@ def _parse_text(source: str, path: str, sink: DiagnosticSink):
         source = source.replace("\x00", " ")
     slashes: list = []
     text = masked = mask_comments(source, slashes)
+    check_controls(source, masked, path, sink)       # W0111: bidi controls, U+2028 / U+2029
     # the deepest nesting, in C (a running sum of +1/-1); the loop below only finds where
     if max(accumulate(map(_BRACKET_STEP.__getitem__, _ANY_BRACKET.findall(text))),
            default=0) > MAX_NESTING:
@@ -1494,6 +1496,10 @@ def _report(e: ParseError, text: str, path: str, pos: int, sink: DiagnosticSink)
         ch = text[pos] if pos < len(text) else ""
         if ch in "\"'":
             msg, hint = "unterminated string", "close the string on the same line"
+        elif invisible(ch):
+            msg, hint = (f"unexpected character {code_point(ch)}",
+                         "delete it: it cannot start a name, a number or an operator, and it "
+                         "shows nothing of its own (or moves the text around it)")
         else:
             msg, hint = f"unexpected character `{ch}`", None
         sink.error("E0002", msg, Span(path, line, col, line, col + 1, pos, pos + 1), hint)
