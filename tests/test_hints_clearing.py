@@ -166,3 +166,21 @@ def test_copies_of_one_pattern_overlapping_by_design_keep_AllowOverlap(tmp_path)
     c = _compile(tmp_path, grazing, "grazing.aidl")
     ws = [d for d in c.sink.items if d.code == "W0508"]
     assert ws and all(d.fix is None for d in ws)
+
+
+def test_the_hint_offers_the_radius_that_clears_and_it_does(tmp_path):
+    """A screw hole 1 mm over a window's edge: the fix moves it 1.51 mm out; the hint also
+    gives the radius that would clear instead (its centre 5 mm from the edge: 4.49 mm),
+    which written in leaves the wall."""
+    src = """solid plate {
+    body = Rectangle(center=(0, 0), width=80, height=40)
+    hole window { r = Rectangle(center=(0, 0), width=30, height=20) }
+    hole screw { c = Circle(center=(20, 0), radius=6) }
+}
+"""
+    c = _compile(tmp_path, src)
+    (w,) = [d for d in c.sink.items if d.code == "W0508"]
+    assert w.fix.replacement == "Circle(center=(21.51, 0), radius=6)"
+    assert "or make its radius 4.49 mm so that it clears" in w.hint
+    smaller = _compile(tmp_path, src.replace("radius=6", "radius=4.49"), "smaller.aidl")
+    assert not [d for d in smaller.sink.items if d.severity == "warning"]

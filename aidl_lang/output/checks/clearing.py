@@ -446,7 +446,7 @@ def _radius_that_clears(g, moving: list, region, t: float, unit: str, scale: flo
         return ""
     A, B = _segments(loops)
     dist = float(_nearest(np.array([[cx, cy]]), A, B)[0][0])
-    new = math.floor((dist - t - 2 * CHORD_TOL) * 100) / 100
+    new = math.floor(round((dist - t - 2 * CHORD_TOL) * 100, 6)) / 100
     if new < r / 3:
         return ""
     return f"{_num(new)} mm" if unit == "mm" else f"{_num(new / scale)} {unit} ({new:.2f} mm)"
