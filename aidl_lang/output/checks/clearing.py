@@ -28,7 +28,7 @@ from ...diagnostics import Fix, in_stdlib
 from ...geometry.model import Structure
 from ...geometry.tessellate import CHORD_TOL
 from ...registry import bind_variant, lookup
-from .common import _area, _edges, _inside
+from .common import _area, _edges, _inside, _signed
 
 # mm added to the wall: the polygons' chords lie up to CHORD_TOL inside each curve (one per
 # side), the wall's round joins up to 0.001 mm inside theirs (the move, its components
@@ -370,8 +370,9 @@ def _copied(hole: Structure, part: Structure) -> bool:
 def move_fix(d, part: Structure, shape, cuts: list, mover: int, other: int, t: float,
              sink) -> tuple | None:
     """The fix of W0508 between the holes of ``cuts[mover]`` and ``cuts[other]`` (of part
-    ``part``, whose final shape is ``shape``) that moves the first: ``(Fix, (dx, dy) mm,
-    the moved shape's label)``, or None (see the module's docstring for when)."""
+    ``part``, whose final shape is ``shape``) that moves the first: ``(Fix, (dx, dy) mm, the
+    moved shape (the first copy), how many copies the edit moves, the radius that would
+    clear instead or "")``, or None (see the module's docstring for when)."""
     hole = cuts[mover].hole
     region = cuts[other].region
     if hole.children or _copied(hole, part):
@@ -407,7 +408,7 @@ def move_fix(d, part: Structure, shape, cuts: list, mover: int, other: int, t: f
     filled = mf.CrossSection.batch_boolean([shape] + [c.region for c in cuts
                                                       if c.region is not None], mf.OpType.Add)
     outer = [p for p in filled.to_polygons()
-             if len(p) >= 3 and _signed_area(np.asarray(p, dtype=float)) > 0]
+             if len(p) >= 3 and _signed(np.asarray(p, dtype=float)) > 0]
     if outer and _area(whole - mf.CrossSection(outer, mf.FillRule.Positive)) <= 1e-6:
         x0, y0, x1, y1 = filled.bounds()
         size = max(x1 - x0, y1 - y0)
@@ -422,12 +423,19 @@ def move_fix(d, part: Structure, shape, cuts: list, mover: int, other: int, t: f
     if v is None or v == (0.0, 0.0):
         return None
     call = src[span.start:span.end]
-    new = move_text(call, v[0] / scale if unit != "mm" else v[0],
-                    v[1] / scale if unit != "mm" else v[1], unit)
+    new = move_text(call, *(_in_unit(x, scale) for x in v), unit)
     if new is None:
         return None
     return Fix(span, new), v, g, len(moving), _radius_that_clears(g, moving, region, t, unit,
                                                                   scale)
+
+
+def _in_unit(x: float, scale: float) -> float:
+    """``x`` mm in the file's unit (``scale`` mm each), rounded away from zero to 1e-4 of it
+    (so the move, written with 4 decimals, is never shorter than found)."""
+    if scale == 1.0:
+        return x
+    return math.copysign(math.ceil(round(abs(x) / scale * 1e4, 6)) / 1e4, x)
 
 
 def _radius_that_clears(g, moving: list, region, t: float, unit: str, scale: float) -> str:
@@ -449,9 +457,6 @@ def _radius_that_clears(g, moving: list, region, t: float, unit: str, scale: flo
     new = math.floor(round((dist - t - 2 * CHORD_TOL) * 100, 6)) / 100
     if new < r / 3:
         return ""
-    return f"{_num(new)} mm" if unit == "mm" else f"{_num(new / scale)} {unit} ({new:.2f} mm)"
-
-
-def _signed_area(P: np.ndarray) -> float:
-    x, y = P[:, 0], P[:, 1]
-    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(np.roll(x, -1), y))
+    if unit == "mm":
+        return f"{_num(new)} mm"
+    return f"{_num(math.floor(new / scale * 1e4) / 1e4)} {unit} ({new:.2f} mm)"

@@ -708,6 +708,7 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
     solid drawn inside another hole's opening (:func:`_refiller`); ``d`` and ``shape`` (the
     part's final shape): for W0508's fix, a move that clears (:func:`_merge_fix`)."""
     covered = set()
+    moves = 0                           # W0508 moves looked for (at most MAX_MOVES a part)
     for i, j, depth, common in a.merges:
         first, second = a.names[i], a.names[j]
         covered.add(frozenset((first, second)))
@@ -752,7 +753,8 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
         if stmt and _copies_of_one(stmt, a.cuts[i - 1].hole, a.cuts[j - 1].hole) \
                 and depth >= max(t, MIN_WALL):
             fix = _insert_fix(where, stmt, sink)     # copies that overlap deeply: meant
-        elif d is not None and shape is not None and a.cuts:
+        elif d is not None and shape is not None and a.cuts and moves < MAX_MOVES:
+            moves += 1
             move, fix = _merge_fix(d, s, shape, a, i, j, t, sink, move)
         sink.warning("W0508", f"{first} and {second} of `{s.path}` {how}, so they cut one "
                      "opening, not two", a.spans[j], labels=labels,
@@ -786,6 +788,9 @@ def _enough(v: float) -> str:
     0.29 mm at a 0.5 mm minimum left a 0.49 mm wall, W0507)."""
     from ...geometry.tessellate import CHORD_TOL
     return f"{math.ceil(round((v + 2 * CHORD_TOL) * 100, 6)) / 100:.2f}"
+
+
+MAX_MOVES = 16         # W0508 fixes (moves) looked for in one part; later pairs: the hint
 
 
 def _copies_of_one(stmt: str, hi: Structure, hj: Structure) -> bool:
