@@ -201,3 +201,26 @@ solid plate {
     assert w.fix.replacement == "Circle(center=(0.8953, 0), radius=0.125)"
     fixed = _compile(tmp_path, _apply(src, w.fix), "fixed.aidl")
     assert not [d for d in fixed.sink.items if d.severity == "warning"]
+
+
+def test_a_circular_patterns_copy_is_not_moved_by_its_original_the_other_hole_is(tmp_path):
+    """Moving a CircularPattern's original turns each copy's move: the edit of its call is
+    no fix.  The slot overlapping a copy is moved instead, and the file so fixed is clean."""
+    src = """solid plate {
+    body = Circle(center=(0, 0), radius=50)
+    hole ring {
+        c = Circle(center=(20, 0), radius=4)
+        cs = CircularPattern(c, 6, (0, 0))
+    }
+    hole slot { s = Rectangle(center=(5, 20), width=10, height=6) }
+}
+"""
+    c = _compile(tmp_path, src)
+    (w,) = [d for d in c.sink.items if d.code == "W0508"]
+    assert w.fix.replacement == "Rectangle(center=(0.49, 20), width=10, height=6)"
+    fixed = _compile(tmp_path, _apply(src, w.fix), "fixed.aidl")
+    assert not [d for d in fixed.sink.items if d.severity == "warning"]
+    placed = src.replace("\n}\n", "\n    slot.s.center == (5, 20)\n}\n")
+    c = _compile(tmp_path, placed, "placed.aidl")
+    (w,) = [d for d in c.sink.items if d.code == "W0508"]
+    assert w.fix is None                # neither can be moved by its call: the hint alone

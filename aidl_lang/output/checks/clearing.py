@@ -352,6 +352,15 @@ def _all_points(g) -> list:
     return out
 
 
+def _patterned(moving: list) -> bool:
+    """The faces of one statement include a pattern's or a mirror's copies of its shape
+    (``cs[1]`` of ``cs = CircularPattern(c, ...)``: named otherwise than the original, the
+    first marked): moving the original moves them by turned or mirrored moves, not by the
+    same one.  A loop's copies (``holes[0]``, ``holes[1]``, ...) all move alike."""
+    bases = {(g.name or "").split("[", 1)[0] for g, _ in moving}
+    return len(bases) > 1 or any(g.pattern_original is not None for g, _ in moving)
+
+
 def _copied(hole: Structure, part: Structure) -> bool:
     """``hole`` (or a structure around it below ``part``) is a template's instance, a copy
     a pattern or mirror made, or one of several that one statement (a loop) declares: an
@@ -388,7 +397,7 @@ def move_fix(d, part: Structure, shape, cuts: list, mover: int, other: int, t: f
     span = meets[0]
     moving = [(g, f) for g, f in faces if g.span == span]
     staying = [f for g, f in faces if g.span != span]
-    if len(moving) > MAX_COPIES:
+    if len(moving) > MAX_COPIES or _patterned(moving):
         return None
     if staying:
         together = mf.CrossSection.batch_boolean([f for _, f in moving], mf.OpType.Add)
