@@ -252,9 +252,10 @@ def _check_voids(d: Drawing, s: Structure, loops, cuts, t: float, sink,
         x1, y1 = P.max(axis=0)
         width = area / max(1e-12, max(x1 - x0, y1 - y0))
         voids.append((f"a void of {area:.3f} mm^2 (about {width:.2f} mm wide, "
-                      f"{max(x1 - x0, y1 - y0):.2f} mm long) is left inside `{s.path}` near "
-                      f"({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}): no hole cuts it, the "
-                      "shapes around it do not quite meet", s.span,
+                      f"{max(x1 - x0, y1 - y0):.2f} mm long) is cut through `{s.path}` near "
+                      f"({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}): no hole declares it, the "
+                      "shapes around it do not quite meet, so a sliver comes out there",
+                      s.span,
                       {"hint": "make the shapes around it overlap (e.g. `gap=-1 mm`, or a "
                                "larger size) so that no gap is left; if an opening is meant, "
                                "cut it with a hole"}))
