@@ -38,6 +38,17 @@ def _apply(src: str, fix) -> str:
     return src[:sp.start] + fix.replacement + src[sp.end:]
 
 
+def _fixed_clean(tmp, src: str, replacement: str):
+    """The one W0508 of ``src``: its fix is ``replacement``, and the file with it applied
+    checks with no warning at all.  Returns the warning and the fixed compile."""
+    c = _compile(tmp, src)
+    (w,) = [d for d in c.sink.items if d.code == "W0508"]
+    assert w.fix.replacement == replacement, (w.fix.replacement, w.hint)
+    fixed = _compile(tmp, _apply(src, w.fix), "fixed.aidl")
+    assert not [d for d in fixed.sink.items if d.severity == "warning"]
+    return w, fixed
+
+
 def _shape(kind: str, x: str, y: str, size: float) -> str:
     if kind == "circle":
         return f"Circle(center=({x}, {y}), radius={size})"
@@ -124,12 +135,9 @@ solid organizer {
     }
 }
 """
-    c = _compile(tmp_path, src)
-    (w,) = [d for d in c.sink.items if d.code == "W0508"]
-    assert w.fix.replacement == "Circle(center=(-40 + 20 * i - 3.52, 20), radius=pen_d / 2)"
+    w, fixed = _fixed_clean(tmp_path, src,
+                            "Circle(center=(-40 + 20 * i - 3.52, 20), radius=pen_d / 2)")
     assert "by (-3.52, 0.00) mm" in w.hint and "4 copies" in w.hint
-    fixed = _compile(tmp_path, _apply(src, w.fix), "fixed.aidl")
-    assert not [d for d in fixed.sink.items if d.severity == "warning"]
     assert fixed.drawing.parts[0].shape.num_contour() == 6
 
 
@@ -144,11 +152,7 @@ def test_a_hole_placed_by_a_constraint_is_not_the_one_moved_and_never_AllowOverl
     screw.c.center == (15, 0)
 }
 """
-    c = _compile(tmp_path, src)
-    (w,) = [d for d in c.sink.items if d.code == "W0508"]
-    assert w.fix.replacement == "Rectangle(center=(-3.51, 0), width=30, height=20)"
-    fixed = _compile(tmp_path, _apply(src, w.fix), "fixed.aidl")
-    assert not [d for d in fixed.sink.items if d.severity == "warning"]
+    w, fixed = _fixed_clean(tmp_path, src, "Rectangle(center=(-3.51, 0), width=30, height=20)")
     both = src.replace("    screw.c.center", "    opening.r.center == (0, 0)\n    screw.c.center")
     c = _compile(tmp_path, both, "both.aidl")
     (w,) = [d for d in c.sink.items if d.code == "W0508"]
@@ -201,11 +205,7 @@ solid plate {
     hole screw { c = Circle(center=(0.75, 0), radius=0.125) }
 }
 """
-    c = _compile(tmp_path, src)
-    (w,) = [d for d in c.sink.items if d.code == "W0508"]
-    assert w.fix.replacement == "Circle(center=(0.8953, 0), radius=0.125)"
-    fixed = _compile(tmp_path, _apply(src, w.fix), "fixed.aidl")
-    assert not [d for d in fixed.sink.items if d.severity == "warning"]
+    w, fixed = _fixed_clean(tmp_path, src, "Circle(center=(0.8953, 0), radius=0.125)")
 
 
 def test_a_circular_patterns_copy_is_not_moved_by_its_original_the_other_hole_is(tmp_path):
@@ -220,11 +220,7 @@ def test_a_circular_patterns_copy_is_not_moved_by_its_original_the_other_hole_is
     hole slot { s = Rectangle(center=(5, 20), width=10, height=6) }
 }
 """
-    c = _compile(tmp_path, src)
-    (w,) = [d for d in c.sink.items if d.code == "W0508"]
-    assert w.fix.replacement == "Rectangle(center=(0.49, 20), width=10, height=6)"
-    fixed = _compile(tmp_path, _apply(src, w.fix), "fixed.aidl")
-    assert not [d for d in fixed.sink.items if d.severity == "warning"]
+    w, fixed = _fixed_clean(tmp_path, src, "Rectangle(center=(0.49, 20), width=10, height=6)")
     placed = src.replace("\n}\n", "\n    slot.s.center == (5, 20)\n}\n")
     c = _compile(tmp_path, placed, "placed.aidl")
     (w,) = [d for d in c.sink.items if d.code == "W0508"]
