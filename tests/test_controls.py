@@ -93,3 +93,15 @@ def test_the_override_in_the_issue_shape_is_said_once_per_character(tmp_path):
                  "solid s { b = Circle(center=(0, 0), radius=5) }\n", encoding="utf-8")
     ds = [d for d in _json(p) if d["code"] == "W0111"]
     assert [d["span"]["column"] for d in ds] == [4, 5, 21, 22]
+
+
+def test_the_editors_quick_fix_names_the_code_point_and_deletes_it():
+    from aidl_lang.editor.lsp import plain
+    from aidl_lang.pipeline import compile_source
+    src = f"solid s {{\n    # a{RLO}b\n    b = Circle(center=(0, 0), radius=5)\n}}\n"
+    c = compile_source(src, "quick.aidl")
+    (d,) = [d for d in c.sink.items if d.code == "W0111"]
+    (edit,) = plain.fix_edits(src, "quick.aidl", d)
+    assert edit["title"] == "Remove `U+202E RIGHT-TO-LEFT OVERRIDE`" and edit["newText"] == ""
+    assert edit["range"] == {"start": {"line": 1, "character": 7},
+                             "end": {"line": 1, "character": 8}}
