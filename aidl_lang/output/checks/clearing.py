@@ -377,11 +377,14 @@ def _copied(hole: Structure, part: Structure) -> bool:
 
 
 def move_fix(d, part: Structure, shape, cuts: list, mover: int, other: int, t: float,
-             sink) -> tuple | None:
+             sink, near: dict | None = None) -> tuple | None:
     """The fix of W0508 between the holes of ``cuts[mover]`` and ``cuts[other]`` (of part
     ``part``, whose final shape is ``shape``) that moves the first: ``(Fix, (dx, dy) mm, the
     moved shape (the first copy), how many copies the edit moves, the radius that would
-    clear instead or "")``, or None (see the module's docstring for when)."""
+    clear instead or "")``, or None (see the module's docstring for when).  Only the holes
+    and the outline within reach are looked at (``near``, a dict kept by the caller for the
+    part, holds the holes' boxes, made once: a plate of 20,000 holes is not intersected
+    20,000 times per move)."""
     hole = cuts[mover].hole
     region = cuts[other].region
     if hole.children or _copied(hole, part):
@@ -411,23 +414,35 @@ def move_fix(d, part: Structure, shape, cuts: list, mover: int, other: int, t: f
     if _placed(hole, [x for x, _ in moving], part):
         return None
     unit, scale = _file_scale(src)
-    obstacles = [c.region for k, c in enumerate(cuts) if k != mover and c.region is not None
-                 and not c.region.is_empty()] + staying
     whole = mf.CrossSection.batch_boolean([f for _, f in moving], mf.OpType.Add)
-    filled = mf.CrossSection.batch_boolean([shape] + [c.region for c in cuts
-                                                      if c.region is not None], mf.OpType.Add)
-    outer = [p for p in filled.to_polygons()
-             if len(p) >= 3 and _signed(np.asarray(p, dtype=float)) > 0]
-    if outer and _area(whole - mf.CrossSection(outer, mf.FillRule.Positive)) <= 1e-6:
-        x0, y0, x1, y1 = filled.bounds()
-        size = max(x1 - x0, y1 - y0)
-        outside = _window(filled.bounds(), size + 10.0) - mf.CrossSection(
-            outer, mf.FillRule.Positive)
-        obstacles.append(outside)
+    reach = max(10.0, 2 * max(_diagonal(f) for _, f in moving))
     bx0, by0, bx1, by1 = whole.bounds()
-    reach = max(10.0, 2 * math.hypot(bx1 - bx0, by1 - by0)) if len(moving) == 1 else \
-        max(10.0, 2 * max(math.hypot(f.bounds()[2] - f.bounds()[0],
-                                     f.bounds()[3] - f.bounds()[1]) for _, f in moving))
+    pad = reach + t + MARGIN + 2.0
+    box = (bx0 - pad, by0 - pad, bx1 + pad, by1 + pad)
+    win = _window(whole.bounds(), pad)
+    if near is None:
+        near = {}
+    if "boxes" not in near:
+        near["boxes"] = np.array([c.region.bounds() if c.region is not None
+                                  and not c.region.is_empty() else (np.inf, np.inf, -np.inf,
+                                                                    -np.inf) for c in cuts],
+                                 dtype=float).reshape(-1, 4)
+    B = near["boxes"]
+    hit = np.flatnonzero((B[:, 0] <= box[2]) & (B[:, 2] >= box[0]) & (B[:, 1] <= box[3])
+                         & (B[:, 3] >= box[1]))
+    regions = [cuts[k].region for k in hit.tolist()]
+    obstacles = [cuts[k].region for k in hit.tolist() if k != mover] + staying
+    # the outline near the moving shapes: the part with its holes (and the windows its
+    # solids enclose) filled, clipped to the reach; outside it is an obstacle when the
+    # shapes lay inside it (a notch drawn past the edge may stay a notch)
+    local = mf.CrossSection.batch_boolean([shape ^ win] + [r ^ win for r in regions],
+                                          mf.OpType.Add)
+    outer = [p for p in local.to_polygons()
+             if len(p) >= 3 and _signed(np.asarray(p, dtype=float)) > 0]
+    if outer:
+        inside = mf.CrossSection(outer, mf.FillRule.Positive)
+        if _area(whole - inside) <= 1e-6:
+            obstacles.append(_window(whole.bounds(), pad + 1.0) - inside)
     v = clearing_move([f for _, f in moving], obstacles, t, reach)
     if v is None or v == (0.0, 0.0):
         return None
@@ -437,6 +452,11 @@ def move_fix(d, part: Structure, shape, cuts: list, mover: int, other: int, t: f
         return None
     return Fix(span, new), v, g, len(moving), _radius_that_clears(g, moving, region, t, unit,
                                                                   scale)
+
+
+def _diagonal(f) -> float:
+    x0, y0, x1, y1 = f.bounds()
+    return math.hypot(x1 - x0, y1 - y0)
 
 
 def _in_unit(x: float, scale: float) -> float:

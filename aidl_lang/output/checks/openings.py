@@ -710,6 +710,7 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
     part's final shape): for W0508's fix, a move that clears (:func:`_merge_fix`)."""
     covered = set()
     moves = 0                           # W0508 moves looked for (at most MAX_MOVES a part)
+    near: dict = {}                     # what the moves share: the holes' boxes, made once
     for i, j, depth, common in a.merges:
         first, second = a.names[i], a.names[j]
         covered.add(frozenset((first, second)))
@@ -756,7 +757,7 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
             fix = _insert_fix(where, stmt, sink)     # copies that overlap deeply: meant
         elif d is not None and shape is not None and a.cuts and moves < MAX_MOVES:
             moves += 1
-            move, fix = _merge_fix(d, s, shape, a, i, j, t, sink, move)
+            move, fix = _merge_fix(d, s, shape, a, i, j, t, sink, move, near)
         sink.warning("W0508", f"{first} and {second} of `{s.path}` {how}, so they cut one "
                      "opening, not two", a.spans[j], labels=labels,
                      hint=f"{move}; or shrink one of them so that material is left between "
@@ -802,15 +803,16 @@ def _copies_of_one(stmt: str, hi: Structure, hj: Structure) -> bool:
 
 
 def _merge_fix(d: Drawing, s: Structure, shape, a: _Openings, i: int, j: int, t: float, sink,
-               move: str) -> tuple:
+               move: str, near: dict) -> tuple:
     """W0508's hint sentence and fix for holes ``i`` and ``j`` of ``a`` that are not copies
     of one pattern overlapping by design: a move of ``j`` (else ``i``) that leaves ``t`` mm
     (at least :data:`MIN_WALL`) of material to the other and to everything around it
     (:func:`.clearing.move_fix`), or no fix at all, never an ``AllowOverlap`` that would hide
-    the defect (``move``: the sentence when no move is found)."""
+    the defect (``move``: the sentence when no move is found; ``near``: what the part's
+    moves share, :func:`.clearing.move_fix`)."""
     wall = max(t, MIN_WALL)
     for mover, other in ((j, i), (i, j)):
-        got = move_fix(d, s, shape, a.cuts, mover - 1, other - 1, wall, sink)
+        got = move_fix(d, s, shape, a.cuts, mover - 1, other - 1, wall, sink, near)
         if got is None:
             continue
         fix, (dx, dy), g, n, size = got
