@@ -626,6 +626,23 @@ marks the refill as intended (it silences this warning and W0501 for the pair).
 Two holes meant to cut one opening (a screw hole on the edge of a window) are said with
 `AllowOverlap(window, screw)` in the structure holding both, as the hint writes (or draw the
 shapes in one hole structure).
+The suggested fix (`--json`, the editors' quick fix) never hides the overlap. Two different
+holes that overlap or touch are never taken as meant (one opening is drawn in one hole): the
+fix moves one of them clear, the one the warning points at, else the other, by the shortest
+move that leaves the minimum wall to the other hole and as much to every other hole of the
+part and to its outline (when the moved shape lay inside it), computed on the outlines (the
+Minkowski sums of the obstacles with the moving shape's hull, grown by the wall). It is written
+in the shape's own call, every point argument shifted and its expressions kept, in the file's
+units: `Circle(center=(-40 + 20 * i, 20), radius=pen_d / 2)` becomes `Circle(center=(-40 +
+20 * i - 3.52, 20), radius=pen_d / 2)` (every copy of that statement moves with it, and is
+checked). The hint gives the move, `by (dx, dy) mm`, and for a round hole whose centre lies
+outside the other the radius that would clear instead. No fix is offered when the shape is
+placed otherwise (a constraint on it or on its hole, a point shared with another shape, a
+template's or a pattern's copy, a hole whose shapes of several statements touch): the hint
+says how far to move. The one overlap taken as meant: copies of one pattern (or loop) that
+overlap by at least the minimum wall (a row of vents drawn into one slot), whose fix is
+`AllowOverlap(the pattern's list)`; copies that only graze (less than a wall, or touch) were
+meant apart and get no fix.
 
     solid plate {
         body = Rectangle(center=(0, 0), width=60, height=30)
@@ -766,7 +783,9 @@ A hole lies wholly inside its solid (no part of it is drawn past the edge) and o
 outer edge: at a point (a circle tangent to the edge, a window's corner on the roof line) or
 along less than the minimum wall (0.5 mm unless `--min-wall`). The wall between them has zero
 width, so the hole is pinched open onto the edge: neither a closed hole nor a clean notch. The
-warning names the hole and says how long the contact is. Move the hole inward to leave
+warning names the hole, says how long the contact is and where it is: the point of contact
+itself, each one (a circle in a corner touches two edges), to 0.01 mm (on a hole's circle the
+point of the circle nearest the edge), not the hole's centre. Move the hole inward to leave
 material around it, or out past the edge to make a notch. A hole flush with the edge along more
 than the minimum wall is a notch (a connector cut-out, a cross-halving slot) and is not warned.
 
@@ -776,21 +795,25 @@ than the minimum wall is a notch (a connector cut-out, a cross-halving slot) and
     }
 """),
     "W0515": ("opening no hole cuts", """
-An opening is left inside a solid part where no hole cuts: the shapes around it merge around a
-window the program never declares. A small one (less than 1 mm^2, or twice the minimum wall
-squared) is a void where the shapes nearly meet but leave a gap, which a laser cuts out as a
-sliver: the warning gives its area, width, length and place; make the shapes overlap (a
+An opening is cut through a solid part where no hole declares one: the shapes around it,
+united, leave a window the program never names (the part comes out with it; the warning says
+so, never "filled"). A small one (less than 1 mm^2, or twice the minimum wall squared) is a
+void where the shapes nearly meet but leave a gap, which a laser cuts out as a sliver: the warning gives its area, width, length and place; make the shapes overlap (a
 negative gap, a larger size). A part says its first 5 voids, the fifth ending "(and N more
 like it in `part`)". A larger one enclosed by the faces of ONE solid structure,
-some of them overlapping (a dinosaur's legs and belly that merge around a window), is rarely
-meant: the warning names the faces around it, its size (width x height of its box, area) and
-centre; make the shapes overlap to fill it, or, when it is meant, declare it with a `hole`
-over it, as the hint (and the `--json` fix) writes: a Polygon of the opening's own outline, a
-hair inside it, so that it cuts no material whatever the opening's shape (a triangle beside
-a brace stays a triangle; a hole lying inside an opening that the solids enclose is not
-W0502). Not warned: an opening framed by several solid structures (a
-telephone's cradle between its base and handset), or by faces that only abut edge to edge (a
-frame of bars), or one that a hole cuts or covers.
+some of them overlapping (a dinosaur's legs and belly that merge around a window), is often
+not meant: the warning says plainly that the opening is cut through the part (the part comes
+out with that window, around an island of material when one lies inside it), names the faces
+around it, its size (width x height of its box, area) and centre. If it is not meant, fill
+it: make the shapes overlap across it (the opening is then gone). If it is meant, say so with
+`AllowOverlap` naming the shapes around it, written in their solid, as the hint (and the
+`--json` fix) writes: `AllowOverlap(base, post, brace)`. The part is unchanged by it (the
+opening stays cut), the statement names the shapes, not coordinates, so it holds whatever the
+params make of them, and it adds nothing to solve (`--dof` says the same). Naming only some
+of the shapes around it does not say it. A `hole` declared over the opening (cutting no
+material) declares it as well, and is not W0502. Not warned: an opening framed by several
+solid structures (a telephone's cradle between its base and handset), or by faces that only
+abut edge to edge (a frame of bars), or one that a hole cuts or covers.
 
     solid frame {
         left = Rectangle(center=(-5, 0), width=10, height=10)
@@ -1007,6 +1030,22 @@ the Text.
         t = Text("HELLO WORLD AGAIN", along=c, size=5)              # 74.5 mm long: W0111
     }
 """),
+    "W0112": ("bidirectional control or line separator in a comment or string", """
+A character that makes the source read otherwise than it runs ("Trojan source"): a
+bidirectional embedding, override or isolate (U+202A to U+202E, U+2066 to U+2069), which
+reorders how the rest of the line is displayed (a comment that seems to end before the code
+after it, a string that seems to hold other words), or a line or paragraph separator (U+2028,
+U+2029), which some editors show as a line break that the compiler does not count: lines end
+at LF, CR LF and a lone CR, so every line number a diagnostic gives stays the one the editor
+shows. In a comment or a string it is this warning, one per character, with a caret under it
+and the code point named (`U+202E RIGHT-TO-LEFT OVERRIDE`); the fix deletes it. In code it
+cannot start a token: `E0002`, which names the code point too. A diagnostic that prints a
+source line holding one shows it as U+FFFD, one column wide, so the line is not reordered
+under its caret.
+
+    # admin<U+202E> nimda      <- with the character itself there, the rest of the comment
+                               #    shows reversed: W0112 at line 1, column 8
+"""),
     "W0104": ("empty drawing", """
 The file is empty (nothing but comments), or its structures build no geometry at all, so the
 SVG would be empty. Add shapes, or instantiate a template. A file of only templates, params and
@@ -1068,8 +1107,10 @@ cuts, or a cut and the outline, is W0507.
 An `AllowOverlap` statement none of whose names overlap or touch in the final drawing, so it
 silences no warning: it concerns a hole and what refills it (W0501), two holes that cut one
 opening (W0508), the shapes of one hole that merge (W0512), or two parts of an assembly
-(W0511; a program that places its parts in 3D with `Place` is not judged, W0517). Usually it
-names other shapes than meant (a pattern's original where its copies overlap: name the
+(W0511; a program that places its parts in 3D with `Place` is not judged, W0517). Shapes of
+one solid named together say that the window they enclose is meant (W0515): such a statement
+allows nothing when no W0515 opening has all its bounding shapes among them (it is said so:
+"enclose no opening that is warned about"). Usually it names other shapes than meant (a pattern's original where its copies overlap: name the
 pattern's list), or an edit moved the overlap away. Name the shapes a warning named (its hint
 writes the call), or delete the statement.
 

@@ -30,6 +30,19 @@ STDLIB = (Path(__file__).resolve().parent / "stdlib").resolve()
 # shows as a line is a line to the compiler (a ``#`` comment ends at a lone CR too).
 LINE_BREAK = re.compile(r"\r\n|\r|\n")
 
+# Characters that make a line display otherwise than it reads (bidirectional embeddings,
+# overrides and isolates) or that an editor may show as a line break the compiler does not
+# count (U+2028, U+2029): warned in comments and strings (W0112, aidl_lang.controls), and
+# shown as U+FFFD, one column wide, when a diagnostic prints its source line
+CONTROLS = re.compile("[\u202a-\u202e\u2066-\u2069\u2028\u2029]")
+_SHOWN = {c: "\ufffd" for c in [*range(0x202A, 0x202F), *range(0x2066, 0x206A), 0x2028, 0x2029]}
+
+
+def shown_line(line: str) -> str:
+    """``line`` as a diagnostic prints it: each character of :data:`CONTROLS` as U+FFFD (a
+    right-to-left override would reorder the rest of the line under its caret)."""
+    return line.translate(_SHOWN) if CONTROLS.search(line) else line
+
 
 def as_lf(text: str) -> str:
     """``text`` with each lone CR (a line break of its own) as LF: the same length, so every
@@ -365,7 +378,7 @@ def render_text(d: Diagnostic, sources: dict[str, str], color: bool = False) -> 
             continue
         if lab is not spans[0]:
             out.append(f"  --> {shown_path(lab.span.file)}:{lab.span.line}:{lab.span.col}")
-        text = _line_text(src, lab.span.line).replace("\t", " ")
+        text = shown_line(_line_text(src, lab.span.line).replace("\t", " "))
         num = str(lab.span.line)
         pad = " " * len(num)
         width = (lab.span.end_col - lab.span.col) if lab.span.end_line == lab.span.line \
@@ -383,6 +396,10 @@ def render_text(d: Diagnostic, sources: dict[str, str], color: bool = False) -> 
     if d.fix:
         if d.fix.span.start == d.fix.span.end and d.fix.replacement.strip():
             out.append(f"  = suggested fix: insert `{d.fix.replacement.strip()}` at "
+                       f"{d.fix.span.line}:{d.fix.span.col}")
+        elif not d.fix.replacement and d.fix.span.end > d.fix.span.start:
+            n = d.fix.span.end - d.fix.span.start
+            out.append(f"  = suggested fix: delete the {n} character{'s' if n > 1 else ''} at "
                        f"{d.fix.span.line}:{d.fix.span.col}")
         else:
             out.append(f"  = suggested fix: replace with `{d.fix.replacement}`")

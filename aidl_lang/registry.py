@@ -466,8 +466,8 @@ _DEFS = {
     "AllowOverlap": _c([A("a", "any"), A("b", "any", doc="and every further argument, as "
                          "a list")], [A("a", "any", doc="a list: its items")],
                        cat="operation", varargs=True,
-                       doc="these (or lists) may overlap: refilled hole (W0501), holes "
-                           "(W0508, W0512), assembly parts (W0511)."),
+                       doc="these may overlap: refilled hole (W0501), holes (W0508, "
+                           "W0512), assembly parts (W0511), windows (W0515)."),
     "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],
                  [A("a", "any"), A("b", "any"), A("radius", "length")],
                  cat="operation",

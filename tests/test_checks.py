@@ -1188,6 +1188,7 @@ def test_W0515_a_tiny_void_between_merged_shapes(compile_text):
     (w,) = warnings(compile_text, VOIDS % "5.05", "W0515")
     assert "a void of 0.500 mm^2 (about 0.05 mm wide, 10.00 mm long)" in w.message
     assert "near (0.0, 0.0)" in w.message and w.span.line == 2
+    assert "is cut through `frame`" in w.message and "a sliver comes out there" in w.message
     assert not warnings(compile_text, VOIDS % "4.9", "W0515")       # they overlap: no void
     assert not warnings(compile_text, VOIDS % "7", "W0515")         # a 2 x 10 window: meant
 

@@ -44,8 +44,11 @@ def test_W0515_opening_the_faces_of_one_solid_enclose(compile_text):
         assert f"`{name}`" in w.message
     assert "`dino.neck`" not in w.message
     assert w.span.line == 3 and {lab.span.line for lab in w.labels} == {4, 5, 6}
-    # the hint's declaration compiles and says the opening is meant: no W0515, no W0502
-    code = re.search(r"`(hole window \{.*\})`", w.hint).group(1)
+    # the opening is said to be cut (issue 91: "the shapes merge around it" was read as filled)
+    assert "is cut through `dino`" in w.message and "comes out with a window" in w.message
+    # the hint's declaration compiles and says the opening is meant: no W0515, no W0523
+    code = re.search(r"`(AllowOverlap\([^`]*\))`", w.hint).group(1)
+    assert code == "AllowOverlap(belly, front_leg, back_leg, feet)"
     fixed = DINO.replace("    Fixed(belly)\n", f"    Fixed(belly)\n    {code}\n")
     assert codes(compile_text, fixed) == []
     # closing it (the legs widened to meet) leaves no opening

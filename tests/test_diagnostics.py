@@ -673,11 +673,11 @@ def test_every_producible_code_has_a_test():
     here = pathlib.Path(__file__)
     # this file, test_checks*.py for the geometry checks on the final shape (W05xx) and
     # test_through_cuts.py for the `cut` kind's (E0125, W0522), test_sweep.py for the range
-    # sweep's (W0110)
+    # sweep's (W0110), test_controls.py for the source's bidi controls and separators (W0112)
     text = here.read_text() + "".join(p.read_text()
                                       for p in sorted(here.parent.glob("test_checks*.py"))) \
         + "".join((here.parent / name).read_text()
-                  for name in ("test_through_cuts.py", "test_sweep.py"))
+                  for name in ("test_through_cuts.py", "test_sweep.py", "test_controls.py"))
     missing = [code for code in CODES if f'"{code}"' not in text]
     assert missing == []
 

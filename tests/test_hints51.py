@@ -144,9 +144,20 @@ def test_AllowOverlap_of_two_assembly_parts_silences_W0511(compile_text):
 
 def test_AllowOverlap_of_no_hole_and_one_solid_is_still_E0108(compile_text):
     c = compile_text("solid s {\n    a = Circle(center=(0, 0), radius=5)\n"
-                     "    b = Circle(center=(3, 0), radius=5)\n    AllowOverlap(a, b)\n}\n")
+                     "    solid t { b = Circle(center=(3, 0), radius=5) }\n"
+                     "    AllowOverlap(a, t)\n}\n")
     (e,) = codes(c, "E0108")
-    assert "two solid parts" in e.message and "a Circle and a Circle" in e.message
+    assert "two solid parts" in e.message and "a Circle and structure `t`" in e.message
+
+
+def test_AllowOverlap_of_two_shapes_of_one_solid_that_enclose_nothing_is_W0523(compile_text):
+    """Shapes of one solid named together say the window they enclose is meant (W0515,
+    issue 91); two overlapping circles enclose none, so the statement allows nothing."""
+    c = compile_text("solid s {\n    a = Circle(center=(0, 0), radius=5)\n"
+                     "    b = Circle(center=(3, 0), radius=5)\n    AllowOverlap(a, b)\n}\n")
+    (w,) = codes(c, "W0523")
+    assert (w.span.line, w.span.col) == (4, 5) and not codes(c, "E0108")
+    assert "`s.a`, `s.b` enclose no opening that is warned about (W0515)" in w.message
 
 
 @pytest.mark.parametrize("kw", ["corner_radius", "fillet", "radius", "rounded", "r"])

@@ -80,6 +80,9 @@ CASES = {"triangle": (TRIANGLE, "W0515"), "round": (ROUND, "W0515"),
 
 STMT = re.compile(r"write `([A-Za-z_]\w*\([^`]*\))` in `([\w.\[\]]+)`")
 CORRECTING = {"W0109"}      # fixes that change the part they name (and the stray hole)
+# W0508's fix that moves a hole clear of another (issue 91: never an AllowOverlap that hides
+# the overlap): only the part holding the two holes changes, and it then has one more opening
+MOVES = {"W0508"}
 
 
 def _programs():
@@ -204,19 +207,22 @@ def test_every_fix_removes_its_warning_and_changes_nothing_else(compiled, name, 
             stmt = d.fix.replacement if d.fix is not None else d.hint
             changed = [n for n in changed if n.split(".")[-1] not in stmt
                        and not any(n.endswith("." + w) for w in re.findall(r"\w+", stmt))]
+        if d.code in MOVES and not d.fix.replacement.lstrip().startswith("AllowOverlap"):
+            part = re.search(r" of `([^`]+)` (?:overlap|touch)", d.message).group(1)
+            assert part in changed, (d.code, d.message, new)    # the move changes its part
+            changed = [n for n in changed if n != part]
         assert not changed, (d.code, d.message, changed, new)
     if name in CASES:
         assert CASES[name][1] in tried, (name, [(x.code, x.hint) for x in c.sink.items])
 
 
-def test_W0515_offers_the_openings_own_outline_not_its_box(compiled):
+def test_W0515_offers_a_statement_naming_the_shapes_not_typed_coordinates(compiled):
+    """Issue 91: the fix was a `Fixed` polygon hole of typed coordinates (it did not follow
+    the params, and `--dof` called it free); it names the shapes around the opening."""
     c = compiled("triangle", TRIANGLE)
     (w,) = [d for d in c.sink.items if d.code == "W0515"]
-    assert "Polygon([" in w.fix.replacement and "Rectangle" not in w.fix.replacement
-    pts = re.findall(r"\((-?[\d.]+), (-?[\d.]+)\)", w.fix.replacement.split("Polygon")[1])
-    assert len(pts) == 3                    # the triangle, inset by 0.01 mm
-    xs = sorted(float(x) for x, _ in pts)
-    assert xs[0] == pytest.approx(-23.99, abs=1e-3) and xs[-1] == pytest.approx(26.64, abs=1e-2)
+    assert w.fix.replacement.strip() == "AllowOverlap(base, post, brace)"
+    assert "is cut through `bracket`" in w.message
 
 
 def test_W0501_names_the_patterns_list_so_every_copy_is_allowed(compiled):
@@ -257,11 +263,12 @@ def test_W0501_for_an_unnamed_patterns_copies_says_to_name_it_and_offers_no_broa
     assert not [d for d in fixed.sink.items if d.code in ("W0501", "W0523")]
 
 
-def test_W0515_round_an_island_offers_no_hole_that_would_cut_it_away(compiled):
+def test_W0515_round_an_island_says_so_and_names_the_shapes_with_the_island(compiled):
     src = TRIANGLE.replace("\n}\n", "\n    dot = Circle(center=(-12, 15), radius=3)\n}\n")
     c = compiled("island", src)
     (w,) = [d for d in c.sink.items if d.code == "W0515"]
-    assert w.fix is None and "leaves out the material inside it" in w.hint
+    assert "around an island of material inside it" in w.message
+    assert w.fix.replacement.strip() == "AllowOverlap(base, post, brace)"
 
 
 # ------------------------------------------------------------------ hints that drop statements

@@ -550,9 +550,20 @@ def _allow_overlap(items: list, S=None, span=None) -> None:
                 o.overlap_ok = set()
             o.overlap_ok.update(x for x in solids if x is not o)
         done = True
+    # shapes of one solid structure: their overlaps and the window they enclose are meant
+    # (W0515; the fix W0515 writes, issue 91: it follows the shapes, not typed coordinates)
+    by_solid: dict = {}
+    for o in objs:
+        if not isinstance(o, Structure) and o.owner.kind == "solid":
+            by_solid.setdefault(o.owner, set()).add(o)
+    for owner, shapes in by_solid.items():
+        if len(shapes) > 1:
+            owner.enclosure_ok = list(getattr(owner, "enclosure_ok", ())) + [shapes]
+            done = True
     if not done:
-        raise OperationError("AllowOverlap names a hole and what may refill it, or two solid "
-                             "parts (of an assembly) that may overlap; got "
+        raise OperationError("AllowOverlap names a hole and what may refill it, two solid "
+                             "parts (of an assembly) that may overlap, or two or more shapes "
+                             "of one solid that enclose an opening as meant; got "
                              + " and ".join(_what(StructRef(o) if isinstance(o, Structure)
                                                   else GeomRef(o)) for o in objs))
     if S is not None:

@@ -11,6 +11,7 @@ import os
 from pathlib import Path
 
 from ..api import NotCompiled, Result, WriteError, compile as compile_program
+from ..diagnostics import split_lines
 from ..sources import SourceRefused, decode_program
 from ..files import FileRefused, open_beneath, open_dir_beneath, read_regular
 from ..output.writers.write import write_in_dir
@@ -672,7 +673,7 @@ def write_program(ws: Workspace, path: str, text: str | None = None, old: str | 
         if old is not None:
             n = current.count(old) if old else 0
             if n != 1:
-                at = [i + 1 for i, ln in enumerate(current.splitlines()) if old and old in ln]
+                at = [i + 1 for i, ln in enumerate(split_lines(current)) if old and old in ln]
                 raise Refused(f"`old` is found {n} times in `{path}`"
                               + (f" (lines {', '.join(map(str, at[:10]))})" if at else "")
                               + ": give text found exactly once (add the words around it), "

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import re
 
+from ..controls import code_point, invisible
 from ..diagnostics import DiagnosticSink, Span
 from .lexing import _lex_lists
 from .tokens import TOKEN_NAMES, ParseError, UnexpectedCharacters, UnexpectedToken
@@ -61,6 +62,10 @@ def _report(e: ParseError, text: str, path: str, pos: int, sink: DiagnosticSink)
         ch = text[pos] if pos < len(text) else ""
         if ch in "\"'":
             msg, hint = "unterminated string", "close the string on the same line"
+        elif invisible(ch):
+            msg, hint = (f"unexpected character {code_point(ch)}",
+                         "delete it: it cannot start a name, a number or an operator, and it "
+                         "shows nothing of its own (or moves the text around it)")
         else:
             msg, hint = f"unexpected character `{ch}`", None
         sink.error("E0002", msg, Span(path, line, col, line, col + 1, pos, pos + 1), hint)

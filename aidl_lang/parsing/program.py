@@ -7,6 +7,7 @@ import threading
 from itertools import accumulate
 
 from .. import ast as A
+from ..controls import check_controls
 from ..diagnostics import DiagnosticSink, Span, as_lf
 from ..memory import gc_paused
 from .brackets import _report_brackets
@@ -77,6 +78,7 @@ def _parse_text(source: str, path: str, sink: DiagnosticSink):
         source = source.replace("\x00", " ")
     slashes: list = []
     text = masked = mask_comments(source, slashes)
+    check_controls(source, masked, path, sink)       # W0112: bidi controls, U+2028 / U+2029
     # the deepest nesting, in C (a running sum of +1/-1); the loop below only finds where
     if max(accumulate(map(_BRACKET_STEP.__getitem__, _ANY_BRACKET.findall(text))),
            default=0) > MAX_NESTING:

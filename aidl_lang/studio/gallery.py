@@ -286,8 +286,9 @@ def param_rows(source: str, path: str = "main.aidl") -> list[dict]:
     (the range is written in the program) and ``help`` (the comment at the end of the
     ``param`` line, or ``""``).  ``[]`` when the program does not parse or interpret."""
     from ..serve.params import declared_params
+    from ..diagnostics import split_lines     # lines as the compiler counts them (not at U+2028)
     params = declared_params(source, path) or []
-    lines = source.splitlines()
+    lines = split_lines(source)
     rows = []
     for p in params:
         kind = p.kind

@@ -152,6 +152,7 @@ def fix_edits(src: str, path: str, d, lines: list[str] | None = None) -> list[di
     suggestions but no ``Fix`` gets them as replacements of the name its span starts with, when
     the message quotes that name (an unknown keyword argument). Fixes located in another file
     are left out. Carried in ``Diagnostic.data`` for ``textDocument/codeAction``."""
+    from ...controls import code_point, invisible
     from ...diagnostics import Fix
     fix = d.fix
     if fix is None and d.suggestions and d.span is not None and d.span.file == path:
@@ -172,6 +173,8 @@ def fix_edits(src: str, path: str, d, lines: list[str] | None = None) -> list[di
     out = []
     for f in fixes:
         old = src[f.span.start:f.span.end]
+        if old and not f.replacement and all(map(invisible, old)):
+            old = ", ".join(map(code_point, old))   # (a bidi control shown raw reorders the menu)
         title = getattr(f, "title", None) or (
             f"Replace `{old}` with `{f.replacement}`" if old and f.replacement else
             f"Remove `{old}`" if old else f"Insert `{f.replacement}`")

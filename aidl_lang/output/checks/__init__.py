@@ -305,7 +305,7 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
 
             def openings():
                 a = _analyse(d, s, shape, cuts, min_wall, loops[s], tick=lambda: tick(s))
-                covered = _report_openings(a, s, min_wall, sink, d.shapes)
+                covered = _report_openings(a, s, min_wall, sink, d.shapes, d, shape)
                 _check_flush(d, s, shape, a, cuts, min_wall, sink)
                 return covered
             covered = run("openings", s, openings)

@@ -5,7 +5,8 @@ overlap was moved away by an edit.
 
 An ``AllowOverlap`` concerns a hole (a hole structure, or a shape in one) and each other
 thing it names (W0501 a refill, W0508 two holes that cut one opening, W0512 the shapes of
-one hole that merge), or two solid parts (W0511, and W0517 once assembled: a program that
+one hole that merge), shapes of one solid (W0515: used when they silenced a warning about
+the opening they enclose), or two solid parts (W0511, and W0517 once assembled: a program that
 places its parts in 3D is left alone, the 3D collision not being a flat overlap).  It is
 found where it is written (``Structure.allowances``, kept by
 :func:`aidl_lang.geometry.operations._allow_overlap`); the shapes are the booleans'
@@ -54,6 +55,20 @@ def _part(o) -> bool:
         and not any(a.kind == "solid" for a in o.ancestors())
 
 
+def _one_solid(a, b) -> bool:
+    """Two shapes of one solid structure: named together, the opening they enclose is meant
+    (W0515), which needs them to overlap or touch."""
+    return not isinstance(a, Structure) and not isinstance(b, Structure) \
+        and a.owner is b.owner and a.owner.kind == "solid"
+
+
+def _enclosed(a, objs) -> bool:
+    """The shapes of ``a``'s solid among ``objs`` silenced a W0515: the window they
+    enclose was said to be meant (:func:`.openings._report_enclosed` keeps the sets used)."""
+    named = frozenset(o for o in objs if not isinstance(o, Structure) and o.owner is a.owner)
+    return named in getattr(a.owner, "enclosure_used", ())
+
+
 def _meets(a, b) -> bool:
     if a is None or b is None or a.is_empty() or b.is_empty():
         return False
@@ -96,6 +111,11 @@ def check_allowances(d: Drawing, sink: DiagnosticSink, tick=lambda: None) -> Non
             for p, q in map(tuple, pairs):
                 a, b = objs[idx[p]], objs[idx[q]]
                 ha, hb = _hole(a), _hole(b)
+                if _one_solid(a, b):
+                    if _enclosed(a, objs):
+                        used = True                   # it said a window is meant (W0515)
+                        break
+                    continue
                 if ha is None and hb is None and not (_part(a) and _part(b)):
                     continue                          # two solids' shapes: nothing to allow
                 if ha is not None and ha is hb and (isinstance(a, Structure)
@@ -109,6 +129,12 @@ def check_allowances(d: Drawing, sink: DiagnosticSink, tick=lambda: None) -> Non
         if used or not judged:
             continue
         names = ", ".join(_label(o) for o in calls[0])
+        if all(not isinstance(o, Structure) and o.owner.kind == "solid" for o in calls[0]):
+            sink.warning("W0523", f"`AllowOverlap` allows nothing: {names} enclose no opening "
+                         "that is warned about (W0515), so it silences no warning", span,
+                         hint="name every shape around the window (the W0515 hint writes the "
+                              "call), or delete the statement")
+            continue
         sink.warning("W0523", f"`AllowOverlap` allows nothing: no two of {names} overlap or "
                      "touch, so it silences no warning", span,
                      hint="name the shapes that do overlap (the hole and what refills it, "

@@ -37,6 +37,8 @@ from ...geometry.tessellate import CHORD_TOL
 from ..part.booleans import Drawing
 from ..part.nearby import (boundaries, boundary, box_pairs, box_pairs_between,
                            close_pairs)
+from .clearing import move_fix
+from .contact import circle_of, contact_points
 from .common import (MIN_AREA, MIN_WALL, _area, _contributors, _cut_openings, _depth, _edges,
                      _insert_fix, _inside, _loop_boxes, _part_of, _pct, _signed, _significant,
                      _say_few, _solids_within, _union)
@@ -219,11 +221,20 @@ def _check_flush(d: Drawing, s: Structure, shape, a: _Openings, cuts, min_wall: 
                             - _perimeter(filled - c.region)) / 2)
         if contact >= max(min_wall, MIN_WALL):
             continue                       # flush along a side: a notch
-        x0, y0, x1, y1 = c.region.bounds()
         where = "at a point" if contact < 2 * TOUCH else f"along only {contact:.2f} mm"
+        circles = [k for k in (circle_of(np.asarray(f.to_polygons()[0], dtype=float))
+                               for g, f in d.own.get(c.hole, ())
+                               if g.kind == "Circle" and f is not None and not f.is_empty())
+                   if k is not None]
+        at = contact_points(c.region, filled, circles)
+        if not at:                         # (not found on the polygons: the hole's box)
+            x0, y0, x1, y1 = c.region.bounds()
+            at = [((x0 + x1) / 2, (y0 + y1) / 2)]
+        said = " and ".join(f"({x:.2f}, {y:.2f})" for x, y in at[:4]) \
+            + (f" and {len(at) - 4} more places" if len(at) > 4 else "")
         sink.warning("W0514", f"hole `{c.hole.path}` lies inside `{s.path}` but touches its "
-                     f"outer edge {where} (a wall of zero width), so it opens onto the edge "
-                     f"(near ({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}))", c.hole.span,
+                     f"outer edge {where} (a wall of zero width), so it opens onto the edge: "
+                     f"the contact is at {said}", c.hole.span,
                      hint=f"move `{c.hole.name}` inward (by at least the minimum wall) to "
                           "leave material around it; if a notch is meant, let the hole run "
                           "past the edge (e.g. by 1 mm) so that the intent is explicit")
@@ -255,9 +266,10 @@ def _check_voids(d: Drawing, s: Structure, loops, cuts, t: float, sink,
         x1, y1 = P.max(axis=0)
         width = area / max(1e-12, max(x1 - x0, y1 - y0))
         voids.append((f"a void of {area:.3f} mm^2 (about {width:.2f} mm wide, "
-                      f"{max(x1 - x0, y1 - y0):.2f} mm long) is left inside `{s.path}` near "
-                      f"({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}): no hole cuts it, the "
-                      "shapes around it do not quite meet", s.span,
+                      f"{max(x1 - x0, y1 - y0):.2f} mm long) is cut through `{s.path}` near "
+                      f"({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}): no hole declares it, the "
+                      "shapes around it do not quite meet, so a sliver comes out there",
+                      s.span,
                       {"hint": "make the shapes around it overlap (e.g. `gap=-1 mm`, or a "
                                "larger size) so that no gap is left; if an opening is meant, "
                                "cut it with a hole"}))
@@ -280,16 +292,6 @@ def _solid_faces(d: Drawing, s: Structure, near) -> list:
             if _area(near ^ f) > 1e-9:
                 out.append((t, g, f))
     return out
-
-
-def _free_name(s: Structure, base: str) -> str:
-    """``base``, or ``base2``, ``base3``... : a name that no child or shape of ``s`` has."""
-    used = set(s.children) | {g.name for g in s.geometry if g.name}
-    k, name = 1, base
-    while name in used:
-        k += 1
-        name = f"{base}{k}"
-    return name
 
 
 def _check_enclosed(d: Drawing, s: Structure, openings, cuts, sink,
@@ -394,6 +396,13 @@ def _report_enclosed(d: Drawing, s: Structure, P, area: float, region, sink) -> 
     if not any(_area(shapes[i] ^ shapes[j]) > MIN_AREA
                for i, j in box_pairs(np.array([f.bounds() for f in shapes], dtype=float))):
         return                  # edge to edge (a frame of bars that abut): built to enclose it
+    owner = owners[0]
+    around = {g for _, g, _ in faces}
+    said = [ok for ok in getattr(owner, "enclosure_ok", ()) if around <= ok]
+    if said:                    # AllowOverlap(the shapes around it): the window is meant
+        owner.enclosure_used = getattr(owner, "enclosure_used", set()) | set(map(frozenset,
+                                                                                 said))
+        return
     x0, y0 = P.min(axis=0)
     x1, y1 = P.max(axis=0)
     w, h = x1 - x0, y1 - y0
@@ -403,49 +412,25 @@ def _report_enclosed(d: Drawing, s: Structure, P, area: float, region, sink) -> 
     g0 = faces[0][1]
     labels = [Label(g.span, "bounds it", primary=False) for _, g, _ in faces[1:4]
               if g.span is not None and g.span != g0.span]
-    owner = owners[0]
-    name = _free_name(owner, "window")
     final = d.shapes.get(s)
-    if final is not None and _area(region ^ final) > MIN_AREA:
-        # material inside the opening (a piece of its own): a hole of the opening's outline
-        # would cut it away, so no statement is offered
-        stmt, meant = None, (f"declare it in `{owner.path}` with a `hole` over it that leaves "
-                             "out the material inside it")
-    else:
-        pts = ", ".join(f"({x:.3f}, {y:.3f})" for x, y in _outline_inside(region, min(w, h)))
-        stmt = f"hole {name} {{ p = Polygon([{pts}]); Fixed(p) }}"
-        meant = (f"declare it in `{owner.path}` with a hole of its own outline (a hair inside "
-                 f"it, so that it cuts no material): `{stmt}`")
+    island = final is not None and _area(region ^ final) > MIN_AREA
+    refs = list(dict.fromkeys(_ref(g, owner) for _, g, _ in faces))
+    stmt = f"AllowOverlap({', '.join(refs)})" if "self" not in refs \
+        and all(_NAMEABLE.match(r) for r in refs) else None
+    say = (f"say so with `{stmt}` in `{owner.path}` (the suggested fix: the part stays as it "
+           "is, cut with this opening, and the statement names the shapes, so it holds "
+           "whatever the params make of them)" if stmt else
+           f"name the shapes around it and write `AllowOverlap(` them `)` in `{owner.path}` "
+           "(the part stays as it is)")
     sink.warning("W0515", f"an opening of {w:.2f} x {h:.2f} mm ({area:.2f} mm^2) near "
-                 f"({cx:.1f}, {cy:.1f}) is enclosed by {who} in `{owner.path}`: no hole cuts "
-                 "it, the shapes merge around it", g0.span or owner.span, labels=labels,
-                 hint="if it is not meant, make the shapes around it overlap to fill it (or "
-                      f"move them apart so that it opens onto the edge); if it is meant, {meant}",
+                 f"({cx:.1f}, {cy:.1f}) is cut through `{owner.path}`"
+                 + (" around an island of material inside it" if island else "")
+                 + f": {who} enclose it and no hole declares it, so the part comes out with "
+                 "a window there", g0.span or owner.span, labels=labels,
+                 hint=f"if it is meant, {say}; if it is not meant, fill it: make the shapes "
+                      "around it overlap across it (or move them apart so that it opens onto "
+                      "the edge), and the opening is gone",
                  fix=_insert_fix(owner, stmt, sink) if stmt else None)
-
-
-def _outline_inside(region, size: float) -> list:
-    """The outline of the opening ``region`` (a CrossSection of one loop; ``size`` mm its
-    smaller side) as at most about 24 vertices that lie inside it (an inset by twice the
-    simplification's tolerance, which starts at 0.005 mm and doubles, up to a 20th of
-    ``size``, while more are left): a hole of this polygon declares the opening and cuts no
-    material, whatever its shape (a triangle between a brace and its legs stays a triangle,
-    where a Rectangle of its box cut through the brace; a round opening's polygon lies a
-    little inside the circle).  Counter-clockwise ``[(x, y)]`` mm, rounded to 0.001 mm
-    (less than the inset)."""
-    eps, best = 0.005, None
-    while True:
-        inner = region.offset(-2 * eps, mf.JoinType.Miter, 2.0, 16).simplify(eps)
-        loops = [np.asarray(q, dtype=float) for q in inner.to_polygons()]
-        loops = [P for P in loops if len(P) >= 3 and _signed(P) > 0]
-        if loops:
-            best = max(loops, key=_signed)
-        if best is None or len(best) <= 24 or eps * 2 > size / 20:
-            break
-        eps *= 2
-    if best is None:                      # too thin to inset: the outline itself
-        best = max((np.asarray(q, dtype=float) for q in region.to_polygons()), key=_signed)
-    return [(float(x), float(y)) for x, y in best]
 
 
 class _Near:
@@ -730,12 +715,16 @@ def _inner(a: _Openings, i: int, j: int, common) -> int | None:
 
 
 def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
-                     shapes: dict | None = None) -> set:
+                     shapes: dict | None = None, d: Drawing | None = None,
+                     shape=None) -> set:
     """W0508 for each two holes that cut one opening and W0507 for each web of ``a``; returns
     the name pairs reported (the opening test of :func:`_check_walls` skips them).
     ``shapes``: the booleans' shape of each structure (``Drawing.shapes``), which tells a
-    solid drawn inside another hole's opening (:func:`_refiller`)."""
+    solid drawn inside another hole's opening (:func:`_refiller`); ``d`` and ``shape`` (the
+    part's final shape): for W0508's fix, a move that clears (:func:`_merge_fix`)."""
     covered = set()
+    moves = 0                           # W0508 moves looked for (at most MAX_MOVES a part)
+    near: dict = {}                     # what the moves share: the holes' boxes, made once
     for i, j, depth, common in a.merges:
         first, second = a.names[i], a.names[j]
         covered.add(frozenset((first, second)))
@@ -776,11 +765,17 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
                  "write `AllowOverlap(NAME)` after it (the list holds the original and every "
                  "copy)" if stmt == "" else
                  "draw both shapes in one hole structure (the faces of one hole may overlap)")
+        move, fix = f"move {second} {far} further from {first}", None
+        if stmt and _copies_of_one(stmt, a.cuts[i - 1].hole, a.cuts[j - 1].hole) \
+                and depth >= max(t, MIN_WALL):
+            fix = _insert_fix(where, stmt, sink)     # copies that overlap deeply: meant
+        elif d is not None and shape is not None and a.cuts and moves < MAX_MOVES:
+            moves += 1
+            move, fix = _merge_fix(d, s, shape, a, i, j, t, sink, move, near)
         sink.warning("W0508", f"{first} and {second} of `{s.path}` {how}, so they cut one "
                      "opening, not two", a.spans[j], labels=labels,
-                     hint=f"move {second} {far} further from {first} (or shrink one of them) so that "
-                          f"material is left between them; if one opening is meant, {meant}",
-                     fix=_insert_fix(where, stmt, sink) if stmt else None)
+                     hint=f"{move}; or shrink one of them so that material is left between "
+                          f"them; if one opening is meant, {meant}", fix=fix)
     inner = len(a.names) - 1
     for i, j, w, length, (x, y) in a.webs:
         covered.add(frozenset((a.names[i], a.names[j])))
@@ -809,6 +804,40 @@ def _enough(v: float) -> str:
     0.29 mm at a 0.5 mm minimum left a 0.49 mm wall, W0507)."""
     from ...geometry.tessellate import CHORD_TOL
     return f"{math.ceil(round((v + 2 * CHORD_TOL) * 100, 6)) / 100:.2f}"
+
+
+MAX_MOVES = 16         # W0508 fixes (moves) looked for in one part; later pairs: the hint
+
+
+def _copies_of_one(stmt: str, hi: Structure, hj: Structure) -> bool:
+    """Holes ``hi`` and ``hj`` are copies of one pattern: ``stmt`` allows them by its list
+    (``AllowOverlap(vents)``), or one is the pattern's original and the other its first copy
+    (``vent`` and ``vents[1]``)."""
+    return "," not in stmt or hi.pattern_original is hj or hj.pattern_original is hi
+
+
+def _merge_fix(d: Drawing, s: Structure, shape, a: _Openings, i: int, j: int, t: float, sink,
+               move: str, near: dict) -> tuple:
+    """W0508's hint sentence and fix for holes ``i`` and ``j`` of ``a`` that are not copies
+    of one pattern overlapping by design: a move of ``j`` (else ``i``) that leaves ``t`` mm
+    (at least :data:`MIN_WALL`) of material to the other and to everything around it
+    (:func:`.clearing.move_fix`), or no fix at all, never an ``AllowOverlap`` that would hide
+    the defect (``move``: the sentence when no move is found; ``near``: what the part's
+    moves share, :func:`.clearing.move_fix`)."""
+    wall = max(t, MIN_WALL)
+    for mover, other in ((j, i), (i, j)):
+        got = move_fix(d, s, shape, a.cuts, mover - 1, other - 1, wall, sink, near)
+        if got is None:
+            continue
+        fix, (dx, dy), g, n, size = got
+        what = f"`{g.label}`" if n == 1 else \
+            f"the {n} copies of `{g.label.rsplit('[', 1)[0]}` (one statement)"
+        smaller = f"; or make its radius {size} so that it clears" if size else ""
+        return (f"move {a.names[mover]} {_enough(math.hypot(dx, dy) - 2 * CHORD_TOL)} mm "
+                f"further from {a.names[other]}: by ({dx:.2f}, {dy:.2f}) mm, the shortest move "
+                f"that leaves {wall:g} mm of material between them and as much to the other "
+                f"holes and the outline (the suggested fix moves {what} so){smaller}", fix)
+    return move, None
 
 
 def _holes_allowed(ci, cj) -> bool:
