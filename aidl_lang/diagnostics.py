@@ -32,7 +32,7 @@ LINE_BREAK = re.compile(r"\r\n|\r|\n")
 
 # Characters that make a line display otherwise than it reads (bidirectional embeddings,
 # overrides and isolates) or that an editor may show as a line break the compiler does not
-# count (U+2028, U+2029): warned in comments and strings (W0112, aidl_lang.controls), and
+# count (U+2028, U+2029): warned in comments and strings (W0112, aidl_lang.parsing.controls), and
 # shown as U+FFFD, one column wide, when a diagnostic prints its source line
 CONTROLS = re.compile("[\u202a-\u202e\u2066-\u2069\u2028\u2029]")
 _SHOWN = {c: "\ufffd" for c in [*range(0x202A, 0x202F), *range(0x2066, 0x206A), 0x2028, 0x2029]}

@@ -13,7 +13,7 @@ import json
 
 import pytest
 
-from aidl_lang.controls import code_point
+from aidl_lang.parsing.controls import code_point
 
 RLO, LRI, PDI, LS, PS = "\u202e", "\u2066", "\u2069", "\u2028", "\u2029"
 ALL = [chr(c) for c in [*range(0x202A, 0x202F), *range(0x2066, 0x206A), 0x2028, 0x2029]]

@@ -7,7 +7,7 @@ import threading
 from itertools import accumulate
 
 from .. import ast as A
-from ..controls import check_controls
+from .controls import check_controls
 from ..diagnostics import DiagnosticSink, Span, as_lf
 from ..memory import gc_paused
 from .brackets import _report_brackets

@@ -152,7 +152,7 @@ def fix_edits(src: str, path: str, d, lines: list[str] | None = None) -> list[di
     suggestions but no ``Fix`` gets them as replacements of the name its span starts with, when
     the message quotes that name (an unknown keyword argument). Fixes located in another file
     are left out. Carried in ``Diagnostic.data`` for ``textDocument/codeAction``."""
-    from ...controls import code_point, invisible
+    from ...parsing.controls import code_point, invisible
     from ...diagnostics import Fix
     fix = d.fix
     if fix is None and d.suggestions and d.span is not None and d.span.file == path:
