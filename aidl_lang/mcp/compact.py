@@ -256,6 +256,8 @@ def line(tool: str, doc: dict) -> str:
             said.append(doc["job"]["text"])
         if doc.get("layout"):
             said.append(doc["layout"]["text"])
+    if doc.get("superseded"):
+        said.append(doc["superseded"])
     if tool == "values":
         vs = doc.get("values", [])
         g = [v for v in vs if v.get("kind") == "group"]

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import json
 from collections.abc import Callable
+from contextvars import ContextVar
 from pathlib import Path
 from typing import Annotated, Literal
 
@@ -42,7 +43,12 @@ from . import stdio
 from . import tools as T
 from .schemas import (CheckResult, DescribeResult, ImportResult, MeasureResult, RenderResult,
                       SetParamsResult, ValuesResult, WriteResult)
+from .order import Call, Calls
 from .wording import for_agents
+
+# the call being answered, in the task that answers it (:class:`_Server` numbers each call
+# as it comes in: :mod:`.order`)
+CALL: ContextVar[Call | None] = ContextVar("aidl_mcp_call", default=None)
 
 # what one program may build (aidl_lang/limits.py, the parser's and the importer's limits),
 # said once, in `check`'s description (the first tool: an agent reads it first)
@@ -75,8 +81,7 @@ Output = Annotated[str | None, Field(
     description="Also write the drawing to this file in the allowed folder; format by "
                 "extension: " + ", ".join(k for k in FORMATS if k != ".stp") + ".")]
 Picture = Annotated[bool, Field(
-    description="Also return a PNG picture, `width` pixels wide (default: none, the figures "
-                "say what was made).")]
+    description="Also return a PNG picture, `width` pixels wide (default: none).")]
 Width = Annotated[int, Field(
     description="Width in pixels of the picture and of a written .png.",
     ge=16, le=T.MAX_PNG_WIDTH)]
@@ -210,6 +215,25 @@ def answer(tool: str, doc: dict, pngs: list[bytes] = (), detail: bool = False
     said = C.line(tool, doc)           # before the repeats go: the line says the job's text
     return CallToolResult(content=pictures + [TextContent(type="text", text=said)],
                           structured_content=C.no_repeats(doc, detail))
+
+
+def _commit(calls: Calls, doc: dict, files: list, key: str) -> None:
+    """Write the files a call's worker made (:meth:`.order.Calls.write`, in the order the
+    calls were made); a file a later call wrote is left, and ``doc`` says so in
+    ``superseded`` (and no longer names it under ``key``).  Raises :class:`~.tools.Refused`
+    (``output_failed``) for a write that fails."""
+    call = CALL.get(None) or calls.arrive("render")
+    try:
+        kept = calls.write(call, files)
+    except OSError as e:
+        raise T.Refused(str(e), "output_failed", "output") from None
+    if kept:
+        if files and Path(files[0][0]) in {t for t, _, _ in kept}:
+            doc.pop(key, None)
+        later = max(seq for _, _, seq in kept)
+        doc["superseded"] = (f"{', '.join(s for _, s, _ in kept)} not written: call #{later}, "
+                             f"made after this one (#{call.seq}), wrote it; of two calls "
+                             "writing one file the one made last wins")
 
 
 def refusal(code: str, message: str, argument: str | None = None) -> CallToolResult:
@@ -437,17 +461,24 @@ class _Server(MCPServer):
     that is not text, is an invalid-params error saying so (the SDK's own failure there is a
     bare "Error rendering prompt" with a traceback on stderr)."""
 
-    def __init__(self, *args, tools: list[Tool], **kwargs) -> None:
+    def __init__(self, *args, tools: list[Tool], calls: Calls, **kwargs) -> None:
         _share(tools)                     # every tool's, wherever it is defined
         super().__init__(*args, tools=tools, **kwargs)
         self.accepted = {t.name: list(t.parameters["properties"]) for t in tools}
+        self.calls = calls
 
     async def call_tool(self, name: str, arguments: dict, context=None):
-        if name in self.accepted:
-            try:
-                T.check_arguments(name, arguments, self.accepted[name])
-            except T.Refused as e:
-                return refusal(e.code, str(e), e.argument)
+        if name not in self.accepted:     # JSON-RPC's invalid params (the MCP spec's words)
+            from ..diagnostics import did_you_mean
+            near = did_you_mean(str(name), list(self.accepted), 1)
+            raise MCPError(INVALID_PARAMS, f"Unknown tool: `{name}`"
+                           + (f"; did you mean `{near[0]}`?" if near else "")
+                           + f" The tools: {', '.join(self.accepted)}")
+        try:
+            T.check_arguments(name, arguments, self.accepted[name])
+        except T.Refused as e:
+            return refusal(e.code, str(e), e.argument)
+        CALL.set(self.calls.arrive(name))     # numbered as it came in (.order)
         try:
             return await super().call_tool(name, arguments, context)
         except ToolError as e:
@@ -505,6 +536,14 @@ def build_server(root: str, budget: float = 1.0,
     work = Pool(str(ws.root), budget)
     if warm:
         work.warm()
+    # the files are written here, in the order the calls were made; a cancelled call's
+    # worker is stopped and it writes nothing (.order, issue 91)
+    calls = Calls(lambda target, data, program, shown: T.write_inside(ws, target, data,
+                                                                      program, shown))
+
+    async def run(name: str, *args, budget: float | None = None):
+        call = CALL.get(None) or calls.arrive(name)
+        return await calls.work(call, work, name, *args, budget=budget)
     from importlib.metadata import PackageNotFoundError, version
     try:
         ver = version("aidl-lang")
@@ -525,28 +564,28 @@ def build_server(root: str, budget: float = 1.0,
                              open_world_hint=False)
 
     @tool(reads)
-    def check(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
+    async def check(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
               dof: Dof = False, budget: Budget = None, sweep: Sweep = False,
               detail: Detail = False) -> Annotated[CallToolResult, CheckResult]:
         """Parse, check and solve an AIDL program; write nothing. Returns ok, located
         diagnostics (code, span, hint, fix), parts (bbox mm), freedom and the assembled fit.
         Every result: structured content and one line of text; a refused call: isError with
         error {code, message, argument}."""
-        return answer("check", work.call("check", source, path, overrides, dof, budget,
+        return answer("check", await run("check", source, path, overrides, dof, budget,
                                          sweep, budget=budget), detail=detail)
 
     @tool(writes)
-    def write_program(path: WritePath, text: WriteText = None, old: Old = None,
+    async def write_program(path: WritePath, text: WriteText = None, old: Old = None,
                       new: New = None, start: Start = None, end: End = None,
                       dof: Dof = False, detail: Detail = False
                       ) -> Annotated[CallToolResult, WriteResult]:
         """Write a .aidl file (the whole `text`, or a patch: `old` -> `new`, or `start`..`end`
         -> `new`), then check it as `check` does; the other tools then take it by `path`."""
-        return answer("write_program", work.call("write_program", path, text, old, new, start,
+        return answer("write_program", await run("write_program", path, text, old, new, start,
                                                  end, dof), detail=detail)
 
     @tool(writes)
-    def render(source: Source = None, path: ProgramPath = None, output: Output = None,
+    async def render(source: Source = None, path: ProgramPath = None, output: Output = None,
                picture: Picture = False, width: Width = 800, overrides: Overrides = None,
                style: Style = "preview", budget: Budget = None, assembled: Assembled = False,
                layout: LayoutKind = None, sheet: Sheet = None, gap: Gap = None,
@@ -556,62 +595,64 @@ def build_server(root: str, budget: float = 1.0,
         """Compile, write `output` and return its figures: size, parts, fit, and for a
         cutting file the job (path length per pass, passes, cut, travel, time at the
         `machine`'s speeds). A picture only with `picture`."""
-        doc, pngs = work.call("render", source, path, output, width, overrides, budget,
-                              style, assembled, layout, sheet, gap, rotate, kerf,
-                              thickness, machine, page, picture, budget=budget)
+        (doc, pngs), files = await run("render", source, path, output, width, overrides,
+                                       budget, style, assembled, layout, sheet, gap, rotate,
+                                       kerf, thickness, machine, page, picture, budget=budget)
+        _commit(calls, doc, files, "written")
         return answer("render", doc, pngs, detail)
 
     @tool(reads)
-    def values(source: Source = None, path: ProgramPath = None, names: Names = None,
+    async def values(source: Source = None, path: ProgramPath = None, names: Names = None,
                overrides: Overrides = None, budget: Budget = None,
                detail: Detail = False) -> Annotated[CallToolResult, ValuesResult]:
         """Solved values of named entities in the file's units: points (center, start, end,
         corners), sizes (radius, diameter, width, height), frame origins and boxes, every
         copy of a pattern (corners[0] is the original)."""
-        return answer("values", work.call("values", source, path, names, overrides, budget,
+        return answer("values", await run("values", source, path, names, overrides, budget,
                                           budget=budget), detail=detail)
 
     @tool(reads)
-    def describe(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
+    async def describe(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
                  budget: Budget = None,
                  detail: Detail = False) -> Annotated[CallToolResult, DescribeResult]:
         """The final part in words and data, to check it without a picture: outline,
         openings (kind, centre, size), engravings, copies, symmetries; mm."""
-        return answer("describe", work.call("describe", source, path, overrides, budget,
+        return answer("describe", await run("describe", source, path, overrides, budget,
                                             budget=budget), detail=detail)
 
     @tool(writes)
-    def import_drawing(path: DrawingPath, infer: Infer = True, parts: Parts = False,
+    async def import_drawing(path: DrawingPath, infer: Infer = True, parts: Parts = False,
                        units: Units = None, output: ProgramOutput = None,
                        budget: Budget = None) -> Annotated[CallToolResult, ImportResult]:
         """Turn a DXF or SVG drawing into an AIDL program to edit: with `infer`, the design
         (RoundedRectangle, Slot, ...; hole patterns as loops; one param per repeated size,
         pitch and count), exact to 1e-6 mm."""
-        doc = work.call("import_drawing", path, infer, parts, units, output, budget,
-                        budget=budget)
+        doc, files = await run("import_drawing", path, infer, parts, units, output, budget,
+                               budget=budget)
+        _commit(calls, doc, files, "output")
         if not doc.get("ok") and doc.get("diagnostics"):
             d = doc["diagnostics"][0]
             doc["error"] = {"code": d["code"], "message": d["message"]}
         return answer("import_drawing", doc)
 
     @tool(writes)
-    def set_params(path: WritePath, values: ParamValues, dof: Dof = False,
+    async def set_params(path: WritePath, values: ParamValues, dof: Dof = False,
                    budget: Budget = None, detail: Detail = False
                    ) -> Annotated[CallToolResult, SetParamsResult]:
         """Change `param` values in a .aidl file: only each value's text is rewritten
         (comments, formatting kept), checked against the param's kind and min/max first
         (refused: file untouched), then checked as `check`. Unknown name: no_match."""
-        return answer("set_params", work.call("set_params", path, values, dof, budget,
+        return answer("set_params", await run("set_params", path, values, dof, budget,
                                               budget=budget), detail=detail)
 
     @tool(reads)
-    def measure(a: EntityName, b: EntityName, source: Source = None,
+    async def measure(a: EntityName, b: EntityName, source: Source = None,
                 path: ProgramPath = None, overrides: Overrides = None,
                 budget: Budget = None) -> Annotated[CallToolResult, MeasureResult]:
         """Between two named entities of the solved program, mm, exact: distance and
         points, center_distance, angle (two lines), clearance and contact (two shapes or
         parts: apart, touching, overlapping as negative)."""
-        return answer("measure", work.call("measure", a, b, source, path, overrides, budget,
+        return answer("measure", await run("measure", a, b, source, path, overrides, budget,
                                            budget=budget))
 
     @tool(reads, structured=False)
@@ -625,7 +666,7 @@ def build_server(root: str, budget: float = 1.0,
         that compiles."""
         return T.docs(name)
 
-    server = _Server("aidl", instructions=INSTRUCTIONS, version=ver, tools=tools)
+    server = _Server("aidl", instructions=INSTRUCTIONS, version=ver, tools=tools, calls=calls)
     _resources(server, prompt)
     return server
 

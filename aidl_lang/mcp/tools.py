@@ -362,7 +362,8 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
            budget: float | None = None, style: str = "preview", assembled: bool = False,
            layout: str | None = None, sheet: str | None = None, gap=None, rotate=None,
            kerf=None, thickness=None, machine=None,
-           page: str | None = None, picture: bool = False) -> tuple[dict, list[bytes]]:
+           page: str | None = None, picture: bool = False,
+           files: list | None = None) -> tuple[dict, list[bytes]]:
     """Compile, write ``output`` and draw: ``(summary, pictures)``.  The summary gives the
     figures of what was made (``size`` [width, height] mm of the drawing,
     ``parts``, ``fit``; ``job`` for a cutting file; ``layout`` on sheets); with ``picture``,
@@ -380,7 +381,10 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
     STL, 3MF, STEP, GLB; default the program's, else 3); ``page`` (a ``.pdf`` output tiled
     over paper of this size, ``"A4"``, ``"A4-landscape"``, ...; default one page the drawing's
     size).  Lengths are numbers of mm or strings with a unit.  ``machine``: G-code's machine
-    profile, ``laser``, ``router``, ``plotter`` or a TOML file inside the allowed folder."""
+    profile, ``laser``, ``router``, ``plotter`` or a TOML file inside the allowed folder.
+    ``files``: a list to put each file's ``(target, data, program, shown)`` in instead of
+    writing it (the server writes them in the order the calls were made: :mod:`.order`)."""
+    put = files.append if files is not None else lambda f: write_inside(ws, *f)
     if not isinstance(width, int) or not 16 <= width <= MAX_PNG_WIDTH:
         raise Refused(f"width is a number of pixels from 16 to {MAX_PNG_WIDTH}; got {width!r}",
                       "bad_argument", "width")
@@ -453,7 +457,7 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
                     check_output_path(f, prog)
                 for f, data in zip(files, sheets.encode(target.suffix, machine=prof, page=page,
                                                         **drawn)):
-                    _write_inside(ws, f, data, prog, ws.relative(f))
+                    put((f, data, prog, ws.relative(f)))
                 doc["written"] = ws.relative(files[0])
             use = sheets.use()
             doc["layout"] = {"sheets": sheets.sheets, "size": list(sheets.size),
@@ -469,7 +473,7 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
                 out = check_output_path(target, prog)
                 data = r.encode(out.suffix, kerf_mm, assembled=assembled, machine=prof,
                                 page=page, **drawn)
-                _write_inside(ws, target, data, prog, output)
+                put((target, data, prog, output))
                 doc["written"] = ws.relative(out)
                 if not assembled and out.suffix.lower() not in _SOLID_FORMATS:
                     from ..output import for_cutting
@@ -551,7 +555,7 @@ def describe(ws: Workspace, source: str | None = None, path: str | None = None,
     return doc
 
 
-def _write_inside(ws: Workspace, target: Path, data: bytes, program: str | None,
+def write_inside(ws: Workspace, target: Path, data: bytes, program: str | None,
                   shown: str) -> None:
     """Write ``data`` to ``target`` (a path below the root with no link in it, checked when
     the call came in: :meth:`Workspace.output`) through the folder opened from the root
@@ -580,13 +584,14 @@ def _write_inside(ws: Workspace, target: Path, data: bytes, program: str | None,
 
 def import_drawing(ws: Workspace, path: str, infer: bool = True, parts: bool = False,
                    units: str | None = None, output: str | None = None,
-                   budget: float | None = None) -> dict:
+                   budget: float | None = None, files: list | None = None) -> dict:
     """``aidl import [--infer] [--parts] [--units U] FILE [-o OUTPUT]`` for the drawing
     ``path`` (a ``.dxf`` or ``.svg`` inside the root): ``{ok, program, notes, output}``, or
     ``{ok: false, diagnostics}`` for a drawing the importer refuses (its ``E013x``/``E0304``,
     docs/import.md).  ``infer``: the design (recognised shapes, loops, params: docs/import.md,
     "Inferring the design"), else the pieces.  ``output``: also write the program there
-    (``.aidl``, inside the root, never through a link).  Raises :class:`Refused`."""
+    (``.aidl``, inside the root, never through a link; with ``files``, put there as
+    :func:`render` does).  Raises :class:`Refused`."""
     from ..drawing.infer import import_drawing as _import
     from ..drawing.model import DrawingError
     from ..limits import DEFAULT_BUDGET
@@ -615,10 +620,13 @@ def import_drawing(ws: Workspace, path: str, infer: bool = True, parts: bool = F
     doc = {"ok": True, "program": text,
            "notes": [{"code": n.code, "message": n.message, "hint": n.hint} for n in notes]}
     if target is not None:
-        try:
-            _write_inside(ws, target, text.encode("utf-8"), None, output)
-        except OSError as e:
-            raise Refused(str(e), "output_failed", "output") from None
+        if files is not None:
+            files.append((target, text.encode("utf-8"), None, output))
+        else:
+            try:
+                write_inside(ws, target, text.encode("utf-8"), None, output)
+            except OSError as e:
+                raise Refused(str(e), "output_failed", "output") from None
         doc["output"] = ws.relative(target)
     doc["check"] = _check_summary(ws, text, target or real.with_suffix(".aidl"), k)
     return doc
@@ -690,7 +698,7 @@ def write_program(ws: Workspace, path: str, text: str | None = None, old: str | 
         raise Refused(f"the program is longer than {MAX_SOURCE} characters", "bad_argument",
                       "text")
     try:
-        _write_inside(ws, target, text.encode("utf-8"), None, path)
+        write_inside(ws, target, text.encode("utf-8"), None, path)
     except OSError as e:
         raise Refused(str(e), "output_failed", "path") from None
     doc = check(ws, path=ws.relative(target), dof=dof)
@@ -723,7 +731,7 @@ def set_params(ws: Workspace, path: str, values: dict, dof: bool = False,
     except ValueError as e:
         raise Refused(str(e), "bad_argument", "path") from None
     try:
-        _write_inside(ws, target, text.encode("utf-8"), None, path)
+        write_inside(ws, target, text.encode("utf-8"), None, path)
     except OSError as e:
         raise Refused(str(e), "output_failed", "path") from None
     doc = check(ws, path=ws.relative(target), dof=dof, budget=budget)

@@ -22,6 +22,9 @@ from ..limits import DEFAULT_BUDGET, wall_limit
 from . import tools as T
 
 POOL_SIZE = 3               # calls that may run at the same time (each in its own process)
+# the tools whose files come back from the worker as ``(answer, files)``, written by the
+# server in the order the calls were made (:mod:`.order`)
+WRITERS = ("render", "import_drawing")
 
 
 def _handler(root: str, budget: float):
@@ -38,6 +41,9 @@ def _handler(root: str, budget: float):
             return False, T.Refused(f"unknown tool `{name}`")
         oom = False
         try:
+            if name in WRITERS:         # the files come back: the server writes them in order
+                files: list = []
+                return True, (getattr(T, name)(ws, *args, files=files), files)
             return True, getattr(T, name)(ws, *args)
         except T.Refused as e:
             return False, T.Refused(str(e), e.code, e.argument)
