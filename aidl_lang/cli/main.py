@@ -23,7 +23,6 @@ from pathlib import Path
 
 from ..diagnostics import DiagnosticSink, render_text
 from ..limits import now
-from ..solver import solve_text
 from .arguments import SUBCOMMANDS, _parser
 
 
@@ -170,6 +169,7 @@ def cmd_check(args) -> int:
     _emit(res.sink, args.json, res.ok, extra)
     if res.ok and not args.json:
         s = res.solve
+        from ..solver import solve_text     # (numpy: not for `aidl mcp`'s start, issue 95)
         print(f"{args.file}: ok ({len(res.model.structures)} structures, {solve_text(s)}; "
               f"{extra.get('freedom', 'not solved')})")
         if dofs is not None:

@@ -180,6 +180,7 @@ class Value(TypedDict):
 
 class ValuesResult(_Compiled):
     values: NotRequired[list[Value]]
+    unmatched: NotRequired[list[str]]
     text: NotRequired[Annotated[str, Field(description="one `name = value unit` line each")]]
 
 

@@ -34,7 +34,6 @@ from mcp_types import INVALID_PARAMS, CallToolResult, TextContent, ToolAnnotatio
 from pydantic import Field
 
 from ..limits import DEFAULT_BUDGET, MAX_ITER, MAX_TEMPLATE_DEPTH
-from ..output.writers import FORMATS
 from ..parser import MAX_NESTING
 from ..sources import EXAMPLES as _EXAMPLES    # inside the package: shipped in the wheel
 from ..sources import MAX_DRAWING_BYTES
@@ -49,6 +48,12 @@ from .wording import for_agents
 # the call being answered, in the task that answers it (:class:`_Server` numbers each call
 # as it comes in: :mod:`.order`)
 CALL: ContextVar[Call | None] = ContextVar("aidl_mcp_call", default=None)
+
+# the formats `render` writes, by extension (aidl_lang/output/writers' FORMATS but `.stp`,
+# said here so that the server starts without the writers and what they import: numpy,
+# Manifold; tests/test_mcp_text.py holds the two the same)
+OUTPUT_FORMATS = (".svg", ".dxf", ".pdf", ".png", ".stl", ".3mf", ".step", ".glb", ".gcode",
+                  ".nc", ".lbrn2", ".plt", ".hpgl")
 
 # what one program may build (aidl_lang/limits.py, the parser's and the importer's limits),
 # said once, in `check`'s description (the first tool: an agent reads it first)
@@ -79,7 +84,7 @@ Sweep = Annotated[bool, Field(
     description="Also check the design across its params' min..max ranges (W0110).")]
 Output = Annotated[str | None, Field(
     description="Also write the drawing to this file in the allowed folder; format by "
-                "extension: " + ", ".join(k for k in FORMATS if k != ".stp") + ".")]
+                "extension: " + ", ".join(OUTPUT_FORMATS) + ".")]
 Picture = Annotated[bool, Field(
     description="Also return a PNG picture, `width` pixels wide (default: none).")]
 Width = Annotated[int, Field(
@@ -123,11 +128,11 @@ Units = Annotated[Literal["mm", "cm", "m", "in", "ft", "pt", "px"] | None, Field
 ProgramOutput = Annotated[str | None, Field(
     description="Also write the program to this .aidl file in the allowed folder.")]
 Names = Annotated[list[Annotated[str, Field(max_length=500)]] | None, Field(
-    description="Dotted name prefixes to keep, e.g. [\"plate.bore\"] (the root's name may "
-                "be left out); default: all.", max_length=200)]
+    description="Dotted name prefixes, e.g. [\"plate.bore\"] (the root's name optional); "
+                "default: all.", max_length=200)]
 Detail = Annotated[bool, Field(
-    description=f"Every item in full; default: more than {C.GROUP_AT} alike items said once "
-                "with their count.")]
+    description=f"Every item in full (default: over {C.GROUP_AT} alike items said once, "
+                "counted).")]
 WritePath = Annotated[str, Field(
     description="The .aidl file to write in the allowed folder (folders made).")]
 WriteText = Annotated[str | None, Field(
@@ -195,8 +200,9 @@ def _json(doc: dict) -> str:
 def answer(tool: str, doc: dict, pngs: list[bytes] = (), detail: bool = False
            ) -> CallToolResult:
     """A compiling tool's result: ``doc`` as structured content, compact unless ``detail``
-    (:mod:`.compact`), the pictures, and one line of text; a program with errors also
-    carries ``error`` (its first error's code and the summary)."""
+    (:mod:`.compact`), the pictures, and the same as text: a first line (the figures) and a
+    line per diagnostic, value, feature, ... (:func:`.compact.body`); a program with errors
+    also carries ``error`` (its first error's code and the summary)."""
     if "diagnostics" in doc and isinstance(doc["diagnostics"], list) and tool != "import_drawing":
         doc["diagnostics"] = C.diagnostics(doc["diagnostics"], detail)
     if tool == "values" and "values" in doc:
@@ -212,7 +218,9 @@ def answer(tool: str, doc: dict, pngs: list[bytes] = (), detail: bool = False
             doc["error"] = {"code": first["code"],
                             "message": doc.get("summary") or first["message"]}
     pictures = [Image(data=png, format="png").to_image_content() for png in pngs]
-    said = C.line(tool, doc)           # before the repeats go: the line says the job's text
+    # the first line, then the rest of what the structured content holds (issue 95: a host
+    # may show the model the text only); before the repeats go: the line says the job's text
+    said = "\n".join([C.line(tool, doc), *C.body(tool, doc)])
     return CallToolResult(content=pictures + [TextContent(type="text", text=said)],
                           structured_content=C.no_repeats(doc, detail))
 
@@ -466,6 +474,7 @@ class _Server(MCPServer):
         super().__init__(*args, tools=tools, **kwargs)
         self.accepted = {t.name: list(t.parameters["properties"]) for t in tools}
         self.calls = calls
+        self.topics_offered = False       # the docs' topics: offered on the first resources call
 
     async def call_tool(self, name: str, arguments: dict, context=None):
         if name not in self.accepted:     # JSON-RPC's invalid params (the MCP spec's words)
@@ -473,7 +482,7 @@ class _Server(MCPServer):
             near = did_you_mean(str(name), list(self.accepted), 1)
             raise MCPError(INVALID_PARAMS, f"Unknown tool: `{name}`"
                            + (f"; did you mean `{near[0]}`?" if near else "")
-                           + f" The tools: {', '.join(self.accepted)}")
+                           + f"; the tools: {', '.join(self.accepted)}")
         try:
             T.check_arguments(name, arguments, self.accepted[name])
         except T.Refused as e:
@@ -513,6 +522,19 @@ class _Server(MCPServer):
                     raise MCPError(INVALID_PARAMS, f"`{k}` is text of at most {MAX_REQUEST} "
                                                    "characters")
         return await super().get_prompt(name, arguments, context)
+
+    async def list_resources(self):
+        self._topics()
+        return await super().list_resources()
+
+    async def read_resource(self, uri, context=None):
+        self._topics()
+        return await super().read_resource(uri, context)
+
+    def _topics(self) -> None:
+        if not self.topics_offered:
+            self.topics_offered = True
+            _topic_resources(self)
 
     async def run_stdio_async(self) -> None:
         """The SDK's stdio serving, with JSON-RPC's error replies to lines that are no
@@ -671,6 +693,16 @@ def build_server(root: str, budget: float = 1.0,
     return server
 
 
+def _topic_resources(server: MCPServer) -> None:
+    """Offer each topic of ``aidl docs`` as ``aidl://docs/topic/NAME`` (listing them parses the
+    standard library: done on the first resources call, not before the first tools/list)."""
+    from ..reference import topics
+    for name, topic in topics().items():
+        server.resource(f"aidl://docs/topic/{name}", name=f"aidl docs {name}",
+                        mime_type="text/plain",
+                        description=f"{topic.kind}: {topic.summary}")(_worded(topic.render))
+
+
 def _worded(render: Callable[[], str]) -> Callable[[], str]:
     """``render``'s text worded for the tools (:func:`.wording.for_agents`)."""
     def read() -> str:
@@ -681,14 +713,10 @@ def _worded(render: Callable[[], str]) -> Callable[[], str]:
 def _resources(server: MCPServer, prompt: Callable[[], str] | None) -> None:
     """Offer the docs, the prompt (worded for the tools), the standard library and the
     examples as resources of ``server`` (see the module text)."""
-    from ..reference import index_text, topics
+    from ..reference import index_text
     server.resource("aidl://docs/topics", name="aidl docs topics", mime_type="text/plain",
                     description="`aidl docs`: every topic (statements, shapes, constraints, "
                                 "relations, operations, stdlib templates)")(index_text)
-    for name, topic in topics().items():
-        server.resource(f"aidl://docs/topic/{name}", name=f"aidl docs {name}",
-                        mime_type="text/plain",
-                        description=f"{topic.kind}: {topic.summary}")(_worded(topic.render))
     server.resource("aidl://docs/language", name="language reference", mime_type="text/markdown",
                     description="The AIDL language reference (docs/language.md)")(
         _text_of(_DOCS / "language.md", "docs/language.md"))

@@ -10,10 +10,9 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from ..api import NotCompiled, Result, WriteError, compile as compile_program
+from ..api import NotCompiled, Result, compile as compile_program
 from ..sources import SourceRefused, decode_program
 from ..files import FileRefused, open_beneath, open_dir_beneath, read_regular
-from ..output.writers.write import write_in_dir
 from .wording import for_agents, reword_diagnostics
 
 MAX_BUDGET = 4.0          # a tool call may ask for at most 4x the default evaluation budget
@@ -224,6 +223,36 @@ class Workspace:
             raise Refused(f"cannot read `{path}`: {e}", "not_found", "path") from None
 
 
+SOURCE_NAME = "<source>"     # the file of a program given as `source` in what a tool says
+
+
+def unrooted(ws: Workspace, doc, source: bool):
+    """``doc`` (a tool's answer: dicts, lists, tuples, strings; bytes left as they are) with
+    the server's own paths said as an agent names them (issue 95): a file inside the root
+    relative to it, the standard library's as ``std/...`` (never its install folder), and
+    a program given as ``source`` (compiled as ``ROOT/untitled.aidl``) as ``<source>``."""
+    from ..sources import STDLIB
+    swaps = [(f"{os.path.realpath(STDLIB)}{os.sep}", "std/"), (f"{STDLIB}{os.sep}", "std/")]
+    if source:
+        swaps.append((str(ws.root / "untitled.aidl"), SOURCE_NAME))
+    swaps.append((f"{ws.root}{os.sep}", ""))
+
+    def walk(x):
+        if isinstance(x, str):
+            for old, new in swaps:
+                if old in x:
+                    x = x.replace(old, new)
+            return x
+        if isinstance(x, dict):
+            return {k: walk(v) for k, v in x.items()}
+        if isinstance(x, list):
+            return [walk(v) for v in x]
+        if isinstance(x, tuple):
+            return tuple(walk(v) for v in x)
+        return x
+    return walk(doc)
+
+
 def _summary(ws: Workspace, r: Result) -> dict:
     """``{"ok", "diagnostics", "units", "solve"?, "summary"?}`` of ``r``, the diagnostics
     worded for agents (:mod:`.wording`: tools and arguments, not command-line flags)."""
@@ -312,9 +341,9 @@ def values(ws: Workspace, source: str | None = None, path: str | None = None,
     if not r.ok:
         return _summary(ws, r)
     vals = r.values_matching(names or [], sizes=True)
+    from ..diagnostics import did_you_mean
+    every = sorted({n for v in r.sizes() for n in _prefixes(v.name)}) if names else []
     if names and not vals:
-        from ..diagnostics import did_you_mean
-        every = sorted({n for v in r.sizes() for n in _prefixes(v.name)})
         asked = [n for n in names if isinstance(n, str)][:3]
         near = did_you_mean(asked[0], every, 3) if asked else []
         more = f" and {len(names) - 3} more" if len(names) > 3 else ""
@@ -322,8 +351,17 @@ def values(ws: Workspace, source: str | None = None, path: str | None = None,
                       + (f"; did you mean {', '.join(f'`{n}`' for n in near)}?" if near
                          else "; call `values` without `names` for every name"),
                       "no_match", "names")
-    return {"ok": True, "units": r.units, "values": [v.to_json() for v in vals],
-            "text": "\n".join(v.text() for v in vals)}
+    doc = {"ok": True, "units": r.units, "values": [v.to_json() for v in vals],
+           "text": "\n".join(v.text() for v in vals)}
+    # a name among several that matches nothing is said (issue 95: it was left out silently)
+    alone = [n for n in dict.fromkeys(names or []) if isinstance(n, str) and n.strip()
+             and not r.values_matching([n], sizes=True)][:10]
+    if alone:
+        doc["unmatched"] = [
+            f"no value matches `{n[:80]}`" + (f"; did you mean {', '.join(f'`{x}`' for x in near)}?"
+                                             if (near := did_you_mean(n, every, 3)) else "")
+            for n in alone]
+    return doc
 
 
 def _prefixes(name: str) -> list[str]:
@@ -442,6 +480,7 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
     doc = _summary(ws, r)
     if not r.ok:
         return doc, []
+    from ..api import WriteError
     from ..output import MissingDependency, OutputError
     from ..output.fabrication.layout import LayoutError
     from ..output.writers.write import check_output_path
@@ -564,6 +603,7 @@ def write_inside(ws: Workspace, target: Path, data: bytes, program: str | None,
     written through, and a link at the file itself is refused
     (:func:`aidl_lang.output.writers.write.write_in_dir`); never over the program file ``program``.
     Raises ``OSError`` (:class:`aidl_lang.files.FileRefused`)."""
+    from ..output.writers.write import write_in_dir
     rel = target.relative_to(ws.root)
     dfd = open_dir_beneath(ws.root, rel.parent, create=True)
     try:

@@ -40,11 +40,13 @@ def _handler(root: str, budget: float):
                         "write_program", "set_params", "measure"):
             return False, T.Refused(f"unknown tool `{name}`")
         oom = False
+        given = program_argument(name, args) == "source"
         try:
             if name in WRITERS:         # the files come back: the server writes them in order
                 files: list = []
-                return True, (getattr(T, name)(ws, *args, files=files), files)
-            return True, getattr(T, name)(ws, *args)
+                got = getattr(T, name)(ws, *args, files=files)
+                return True, (T.unrooted(ws, got, given), files)
+            return True, T.unrooted(ws, getattr(T, name)(ws, *args), given)
         except T.Refused as e:
             return False, T.Refused(str(e), e.code, e.argument)
         except BaseException as e:      # noqa: BLE001 - answered, never a silent worker

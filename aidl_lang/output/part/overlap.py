@@ -116,14 +116,16 @@ def _inside(o: tuple[float, float], outline: list[tuple]) -> bool:
 
 def _near(p: tuple, o: tuple[float, float]) -> float:
     """Distance from ``o`` to piece ``p``."""
-    from .gaps import point_to
-    return point_to(o, _normal(p))[0] if p[0] == "A" else point_to(o, p)[0]
-
-
-def _normal(p: tuple) -> tuple:
-    """An arc piece as :func:`.gaps.pieces` gives it (sweep >= 0)."""
-    _, c, r, t0, sw = p
-    return ("A", c, r, t0, sw) if sw >= 0 else ("A", c, r, t0 + sw, -sw)
+    if p[0] == "L":
+        (ax, ay), (bx, by) = p[1], p[2]
+        dx, dy = bx - ax, by - ay
+        L2 = dx * dx + dy * dy
+        t = 0.0 if L2 == 0 else max(0.0, min(1.0, ((o[0] - ax) * dx + (o[1] - ay) * dy) / L2))
+        return math.hypot(o[0] - ax - t * dx, o[1] - ay - t * dy)
+    _, (cx, cy), r, t0, sw = p
+    if abs(sw) >= TAU - 1e-15 or _param(p, o) <= 1:
+        return abs(math.hypot(o[0] - cx, o[1] - cy) - r)
+    return min(math.dist(o, _at(p, 0.0)), math.dist(o, _at(p, 1.0)))
 
 
 def _tangent(p: tuple, t: float) -> tuple[float, float]:
