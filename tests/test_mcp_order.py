@@ -123,3 +123,25 @@ def test_the_file_is_the_last_calls_whatever_order_they_finish_in(tmp_path):
             assert disk[target] == f"call {max(live)}".encode()
             cases += 1
     assert cases == 120
+
+
+@pytest.mark.asyncio
+async def test_two_edits_of_one_program_made_together_both_land(tmp_path):
+    """`set_params` calls on one file made together read, change and write it one at a
+    time, in the order they were made: all three params end up set (before, each read the
+    file as it was and the last to finish wrote it with only its own change)."""
+    (tmp_path / "p.aidl").write_text(
+        "units mm\nparam w = 40 mm\nparam h = 20 mm\nparam r = 4 mm\n"
+        "solid plate {\n    body = Rectangle(center=(0, 0), width=w, height=h)\n"
+        "    hole bore { c = Circle(center=(0, 0), radius=r) }\n}\n")
+    with open(tmp_path / "server.log", "w") as log:
+        async with _session(tmp_path, log) as session:
+            got = await asyncio.gather(*(session.call_tool("set_params", {
+                "path": "p.aidl", "values": {k: v}})
+                for k, v in (("w", "50 mm"), ("h", "30 mm"), ("r", "5 mm"))))
+            assert all(not r.is_error and r.structured_content["ok"] for r in got), \
+                [_text(r) for r in got]
+    text = (tmp_path / "p.aidl").read_text()
+    assert "param w = 50 mm" in text and "param h = 30 mm" in text and "param r = 5 mm" in text
+    said = (tmp_path / "server.log").read_text()
+    assert [int(n) for n in re.findall(r"#(\d+) set_params wrote p\.aidl", said)] == [1, 2, 3]

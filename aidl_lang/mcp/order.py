@@ -3,7 +3,9 @@
 A render's worker process makes the file's bytes; the server writes them, here, in the order
 the calls were made: each call is numbered as it comes in (:meth:`Calls.arrive`), and a file
 is written only when no call made later has written it already (:meth:`Calls.write`), so of
-two renders to one path the one called last wins, whatever finishes last.  A call the
+two renders to one path the one called last wins, whatever finishes last.  The calls that edit a
+program (``write_program``, ``set_params``) take it one at a time (:meth:`Calls.program`),
+so two edits made together both land.  A call the
 client cancels (``notifications/cancelled``) writes nothing: its worker process is stopped
 (:meth:`Calls.cancel`) and whatever it made is dropped.  Each of these is said on the server's
 log (stderr), one line each: ``aidl mcp: #3 render cancelled by the client: ...``.
@@ -41,6 +43,20 @@ class Calls:
         self.lock = threading.Lock()
         self.count = 0
         self.last: dict[Path, int] = {}
+        self.locks: dict = {}
+
+    def program(self, path: str):
+        """A lock for the program file ``path`` (as the agent wrote it, normalised): the calls
+        that edit it (``write_program`` patches, ``set_params``) read, change and write it
+        one at a time, in the order they were made, so no edit is lost to another made at
+        the same time."""
+        import asyncio
+        import os
+        key = os.path.normpath(str(path))
+        lock = self.locks.get(key)
+        if lock is None:
+            lock = self.locks[key] = asyncio.Lock()
+        return lock
 
     def arrive(self, tool: str) -> Call:
         """Number a call as it comes in."""

@@ -225,7 +225,7 @@ def answer(tool: str, doc: dict, pngs: list[bytes] = (), detail: bool = False
                           structured_content=C.no_repeats(doc, detail))
 
 
-def _commit(calls: Calls, doc: dict, files: list, key: str) -> None:
+def _commit(calls: Calls, doc: dict, files: list, key: str, argument: str = "output") -> None:
     """Write the files a call's worker made (:meth:`.order.Calls.write`, in the order the
     calls were made); a file a later call wrote is left, and ``doc`` says so in
     ``superseded`` (and no longer names it under ``key``).  Raises :class:`~.tools.Refused`
@@ -234,7 +234,7 @@ def _commit(calls: Calls, doc: dict, files: list, key: str) -> None:
     try:
         kept = calls.write(call, files)
     except OSError as e:
-        raise T.Refused(str(e), "output_failed", "output") from None
+        raise T.Refused(str(e), "output_failed", argument) from None
     if kept:
         if files and Path(files[0][0]) in {t for t, _, _ in kept}:
             doc.pop(key, None)
@@ -603,8 +603,10 @@ def build_server(root: str, budget: float = 1.0,
                       ) -> Annotated[CallToolResult, WriteResult]:
         """Write a .aidl file (the whole `text`, or a patch: `old` -> `new`, or `start`..`end`
         -> `new`), then check it as `check` does; the other tools then take it by `path`."""
-        return answer("write_program", await run("write_program", path, text, old, new, start,
-                                                 end, dof), detail=detail)
+        async with calls.program(path):      # one edit of a file at a time, in call order
+            doc, files = await run("write_program", path, text, old, new, start, end, dof)
+            _commit(calls, doc, files, "written", "path")
+        return answer("write_program", doc, detail=detail)
 
     @tool(writes)
     async def render(source: Source = None, path: ProgramPath = None, output: Output = None,
@@ -664,8 +666,10 @@ def build_server(root: str, budget: float = 1.0,
         """Change `param` values in a .aidl file: only each value's text is rewritten
         (comments, formatting kept), checked against the param's kind and min/max first
         (refused: file untouched), then checked as `check`. Unknown name: no_match."""
-        return answer("set_params", await run("set_params", path, values, dof, budget,
-                                              budget=budget), detail=detail)
+        async with calls.program(path):
+            doc, files = await run("set_params", path, values, dof, budget, budget=budget)
+            _commit(calls, doc, files, "written", "path")
+        return answer("set_params", doc, detail=detail)
 
     @tool(reads)
     async def measure(a: EntityName, b: EntityName, source: Source = None,

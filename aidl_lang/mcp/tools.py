@@ -293,7 +293,12 @@ def check(ws: Workspace, source: str | None = None, path: str | None = None,
     last two when the program solved; ``freedom`` per structure with ``dof``; with
     ``sweep``, ``sweep`` (:meth:`aidl_lang.sweep.SweepReport.to_json`) and its W0110 among
     the diagnostics)."""
-    r = ws.compile(source, path, overrides, budget)
+    return _checked(ws, ws.compile(source, path, overrides, budget), dof, budget, sweep)
+
+
+def _checked(ws: Workspace, r: Result, dof: bool = False, budget: float | None = None,
+             sweep: bool = False) -> dict:
+    """:func:`check`'s answer for the compiled program ``r``."""
     r.find_redundant()                    # W0401, as `aidl check` reports them
     report = None
     if sweep and r.ok:
@@ -693,7 +698,7 @@ def _check_summary(ws: Workspace, text: str, where: Path, budget: float) -> dict
 
 def write_program(ws: Workspace, path: str, text: str | None = None, old: str | None = None,
                   new: str | None = None, start: int | None = None, end: int | None = None,
-                  dof: bool = False) -> dict:
+                  dof: bool = False, files: list | None = None) -> dict:
     """Write the program file ``path`` (``.aidl``, inside the root, never through a link,
     its folders made) and check it: the whole ``text``; or a patch of the file as it is:
     ``old`` -> ``new`` (``old`` found exactly once), or the characters ``start`` to ``end``
@@ -701,7 +706,8 @@ def write_program(ws: Workspace, path: str, text: str | None = None, old: str | 
     ``new``.  Returns :func:`check`'s result of the file written, with ``written`` (the path)
     and ``lines``.  Raises :class:`Refused` (``no_match``: ``old`` not found; ``not_unique``:
     found more than once; ``bad_argument``: a mix of the three ways, or offsets outside the
-    file)."""
+    file).  ``files``: a list to put the file in instead of writing it, as :func:`render`
+    does (the check is of the text, as the file will hold it)."""
     ways = [text is not None, old is not None, start is not None or end is not None]
     if sum(ways) != 1:
         raise Refused("give one of: `text` (the whole program), `old` with `new` (replace "
@@ -737,18 +743,30 @@ def write_program(ws: Workspace, path: str, text: str | None = None, old: str | 
     if len(text) > MAX_SOURCE:
         raise Refused(f"the program is longer than {MAX_SOURCE} characters", "bad_argument",
                       "text")
-    try:
-        write_inside(ws, target, text.encode("utf-8"), None, path)
-    except OSError as e:
-        raise Refused(str(e), "output_failed", "path") from None
-    doc = check(ws, path=ws.relative(target), dof=dof)
-    doc["written"] = ws.relative(target)
+    doc = _written_and_checked(ws, target, text, path, files, dof)
     doc["lines"] = text.count("\n") + (not text.endswith("\n") and bool(text))
     return doc
 
 
+def _written_and_checked(ws: Workspace, target: Path, text: str, shown: str,
+                         files: list | None, dof: bool, budget: float | None = None) -> dict:
+    """Write the program ``text`` to ``target`` (or put it in ``files``: :func:`render`) and
+    :func:`check` it as that file: the answer, with ``written``."""
+    if files is not None:
+        files.append((target, text.encode("utf-8"), None, shown))
+    else:
+        try:
+            write_inside(ws, target, text.encode("utf-8"), None, shown)
+        except OSError as e:
+            raise Refused(str(e), "output_failed", "path") from None
+    k = ws.budget if budget is None else budget
+    doc = _checked(ws, compile_program(source=text, path=str(target), budget=k), dof, budget)
+    doc["written"] = ws.relative(target)
+    return doc
+
+
 def set_params(ws: Workspace, path: str, values: dict, dof: bool = False,
-               budget: float | None = None) -> dict:
+               budget: float | None = None, files: list | None = None) -> dict:
     """Set the ``param`` values ``values`` (name -> value: ``"50 mm"``, a number in the
     file's units, a bool) in the program file ``path`` (:func:`aidl_lang.api.set_params`:
     only each value's text changes, comments and formatting kept), write it and check it:
@@ -770,13 +788,7 @@ def set_params(ws: Workspace, path: str, values: dict, dof: bool = False,
                       "bad_argument", "values") from None
     except ValueError as e:
         raise Refused(str(e), "bad_argument", "path") from None
-    try:
-        write_inside(ws, target, text.encode("utf-8"), None, path)
-    except OSError as e:
-        raise Refused(str(e), "output_failed", "path") from None
-    doc = check(ws, path=ws.relative(target), dof=dof, budget=budget)
-    doc["written"] = ws.relative(target)
-    return doc
+    return _written_and_checked(ws, target, text, path, files, dof, budget)
 
 
 def measure(ws: Workspace, a: str, b: str, source: str | None = None,

@@ -24,7 +24,7 @@ from . import tools as T
 POOL_SIZE = 3               # calls that may run at the same time (each in its own process)
 # the tools whose files come back from the worker as ``(answer, files)``, written by the
 # server in the order the calls were made (:mod:`.order`)
-WRITERS = ("render", "import_drawing")
+WRITERS = ("render", "import_drawing", "write_program", "set_params")
 
 
 def _handler(root: str, budget: float):
@@ -48,7 +48,7 @@ def _handler(root: str, budget: float):
                 return True, (T.unrooted(ws, got, given), files)
             return True, T.unrooted(ws, getattr(T, name)(ws, *args), given)
         except T.Refused as e:
-            return False, T.Refused(str(e), e.code, e.argument)
+            return False, T.Refused(T.unrooted(ws, str(e), given), e.code, e.argument)
         except BaseException as e:      # noqa: BLE001 - answered, never a silent worker
             from ..limits import is_out_of_memory
             oom = is_out_of_memory(e)
