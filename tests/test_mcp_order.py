@@ -128,8 +128,8 @@ def test_the_file_is_the_last_calls_whatever_order_they_finish_in(tmp_path):
 @pytest.mark.asyncio
 async def test_two_edits_of_one_program_made_together_both_land(tmp_path):
     """`set_params` calls on one file made together read, change and write it one at a
-    time, in the order they were made: all three params end up set (before, each read the
-    file as it was and the last to finish wrote it with only its own change)."""
+    time, in the order they were made: all three params end up set (before, they ran side
+    by side and one edit was lost: `h` stayed 20 mm)."""
     (tmp_path / "p.aidl").write_text(
         "units mm\nparam w = 40 mm\nparam h = 20 mm\nparam r = 4 mm\n"
         "solid plate {\n    body = Rectangle(center=(0, 0), width=w, height=h)\n"
