@@ -1,7 +1,8 @@
 """Issue 91: the MCP server writes files in the order the calls were made, and a cancelled call
 writes nothing.  Through the official SDK's stdio client (a real server subprocess), as an
 agent would: render A (a panel of 20,000 holes) to race.gcode, cancel it, render B (a 10 mm
-disc) to the same file; the file is B's G-code, read back by gcodeparser, and stays so."""
+disc) to the same file; the file is B's G-code, read back by gcodeparser, and stays so; and
+three edits of one program sent together all land."""
 import asyncio
 import contextlib
 import itertools
@@ -56,6 +57,10 @@ async def test_a_cancelled_render_never_writes_and_the_last_call_made_wins(tmp_p
     (tmp_path / "panel.aidl").write_text(PANEL.replace("N", "200"))
     (tmp_path / "small.aidl").write_text(PANEL.replace("N", "6"))
     (tmp_path / "disc.aidl").write_text(DISC)
+    (tmp_path / "p.aidl").write_text(
+        "units mm\nparam w = 40 mm\nparam h = 20 mm\nparam r = 4 mm\n"
+        "solid plate {\n    body = Rectangle(center=(0, 0), width=w, height=h)\n"
+        "    hole bore { c = Circle(center=(0, 0), radius=r) }\n}\n")
     with open(log_path, "w") as log:
         async with _session(tmp_path, log) as session:
             # the disc alone: its arcs, the count the file must have at the end
@@ -91,10 +96,22 @@ async def test_a_cancelled_render_never_writes_and_the_last_call_made_wins(tmp_p
                 assert "written" not in first.structured_content
                 assert re.search(r"race2\.gcode not written: call #\d+, made after this one",
                                  _text(first)), _text(first)
+            # three edits of one program made together (set_params) take turns in call
+            # order: all three params end up set (before, they ran side by side and one was
+            # lost: `h` stayed 20 mm)
+            got = await asyncio.gather(*(session.call_tool("set_params", {
+                "path": "p.aidl", "values": {k: v}})
+                for k, v in (("w", "50 mm"), ("h", "30 mm"), ("r", "5 mm"))))
+            assert all(not r.is_error and r.structured_content["ok"] for r in got), \
+                [_text(r) for r in got]
             # a call made after them all: A's worker is gone, nothing of it is left to write
             r = await session.call_tool("check", {"path": "disc.aidl"})
             assert not r.is_error
+    text = (tmp_path / "p.aidl").read_text()
+    assert "param w = 50 mm" in text and "param h = 30 mm" in text and "param r = 5 mm" in text
     said = log_path.read_text()
+    edits = [int(n) for n in re.findall(r"#(\d+) set_params wrote p\.aidl", said)]
+    assert len(edits) == 3 and edits == sorted(edits), said
     assert not re.search(r"#2 render wrote", said), said
     assert _arcs(tmp_path / "race.gcode") == disc
     assert _arcs(tmp_path / "race2.gcode") == disc
@@ -123,25 +140,3 @@ def test_the_file_is_the_last_calls_whatever_order_they_finish_in(tmp_path):
             assert disk[target] == f"call {max(live)}".encode()
             cases += 1
     assert cases == 120
-
-
-@pytest.mark.asyncio
-async def test_two_edits_of_one_program_made_together_both_land(tmp_path):
-    """`set_params` calls on one file made together read, change and write it one at a
-    time, in the order they were made: all three params end up set (before, they ran side
-    by side and one edit was lost: `h` stayed 20 mm)."""
-    (tmp_path / "p.aidl").write_text(
-        "units mm\nparam w = 40 mm\nparam h = 20 mm\nparam r = 4 mm\n"
-        "solid plate {\n    body = Rectangle(center=(0, 0), width=w, height=h)\n"
-        "    hole bore { c = Circle(center=(0, 0), radius=r) }\n}\n")
-    with open(tmp_path / "server.log", "w") as log:
-        async with _session(tmp_path, log) as session:
-            got = await asyncio.gather(*(session.call_tool("set_params", {
-                "path": "p.aidl", "values": {k: v}})
-                for k, v in (("w", "50 mm"), ("h", "30 mm"), ("r", "5 mm"))))
-            assert all(not r.is_error and r.structured_content["ok"] for r in got), \
-                [_text(r) for r in got]
-    text = (tmp_path / "p.aidl").read_text()
-    assert "param w = 50 mm" in text and "param h = 30 mm" in text and "param r = 5 mm" in text
-    said = (tmp_path / "server.log").read_text()
-    assert [int(n) for n in re.findall(r"#(\d+) set_params wrote p\.aidl", said)] == [1, 2, 3]
