@@ -543,6 +543,15 @@ class _Server(MCPServer):
                           self._lowlevel_server.create_initialization_options())
 
 
+def _version() -> str:
+    """The installed package's version ("0+unknown" for a source tree not installed)."""
+    from importlib.metadata import PackageNotFoundError, version
+    try:
+        return version("aidl-lang")
+    except PackageNotFoundError:
+        return "0+unknown"
+
+
 def build_server(root: str, budget: float = 1.0,
                  prompt: Callable[[], str] | None = None, warm: bool = True) -> MCPServer:
     """The server for the allowed folder ``root`` with ``budget`` (a factor of the default
@@ -566,11 +575,6 @@ def build_server(root: str, budget: float = 1.0,
     async def run(name: str, *args, budget: float | None = None):
         call = CALL.get(None) or calls.arrive(name)
         return await calls.work(call, work, name, *args, budget=budget)
-    from importlib.metadata import PackageNotFoundError, version
-    try:
-        ver = version("aidl-lang")
-    except PackageNotFoundError:         # a source tree that is not installed
-        ver = "0+unknown"
     tools: list[Tool] = []
 
     def tool(annotations: ToolAnnotations, structured: bool = True):
@@ -692,7 +696,8 @@ def build_server(root: str, budget: float = 1.0,
         that compiles."""
         return T.docs(name)
 
-    server = _Server("aidl", instructions=INSTRUCTIONS, version=ver, tools=tools, calls=calls)
+    server = _Server("aidl", instructions=INSTRUCTIONS, version=_version(), tools=tools,
+                     calls=calls)
     _resources(server, prompt)
     return server
 
