@@ -812,15 +812,14 @@ def cmd_batch(args) -> int:
 def cmd_mcp(args) -> int:
     if not os.path.isdir(args.root):
         return _usage(f"--root `{args.root}` is not a folder")
-    try:
-        import mcp.server.mcpserver  # noqa: F401  (the `mcp` extra)
-    except ImportError:
+    import importlib.util               # (the `mcp` extra; found, not loaded: .mcp.fast)
+    if importlib.util.find_spec("mcp") is None:
         print("aidl: error: `aidl mcp` needs the MCP SDK: pip install 'aidl-lang[mcp]'",
               file=sys.stderr)
         return 2
     from ..llm.prompt import agent_prompt
-    from ..mcp.server import main as mcp_main
-    return mcp_main(args.root, min(args.budget, 4.0), agent_prompt)
+    from ..mcp.fast import serve        # the first answers while the SDK loads (issue 95)
+    return serve(args.root, min(args.budget, 4.0), agent_prompt)
 
 
 def main(argv: list[str] | None = None, cap_memory: bool = False) -> int:

@@ -540,7 +540,8 @@ class _Server(MCPServer):
         """The SDK's stdio serving, with JSON-RPC's error replies to lines that are no
         message (the SDK drops them: :mod:`.stdio`)."""
         await stdio.serve(self._lowlevel_server,
-                          self._lowlevel_server.create_initialization_options())
+                          self._lowlevel_server.create_initialization_options(),
+                          getattr(self, "first", None))
 
 
 def _version() -> str:
@@ -766,8 +767,12 @@ def _resources(server: MCPServer, prompt: Callable[[], str] | None) -> None:
                 _text_of(f, f"examples/{rel}"))
 
 
-def main(root: str, budget: float = 1.0, prompt: Callable[[], str] | None = None) -> int:
-    """Serve over stdin/stdout until the client closes them."""
+def main(root: str, budget: float = 1.0, prompt: Callable[[], str] | None = None,
+         first=None) -> int:
+    """Serve over stdin/stdout until the client closes them (``first``: what :mod:`.fast`
+    read and answered before the SDK was loaded)."""
     import os
-    build_server(root, budget, prompt, warm=not os.environ.get("AIDL_MCP_COLD")).run("stdio")
+    server = build_server(root, budget, prompt, warm=not os.environ.get("AIDL_MCP_COLD"))
+    server.first = first
+    server.run("stdio")
     return 0
