@@ -102,7 +102,7 @@ def first_answers(kept: dict, fd_in: int = 0, fd_out: int = 1) -> tuple[list[str
         read.append(line)
         try:
             msg = json.loads(line)
-        except ValueError:
+        except (ValueError, RecursionError):     # the SDK's server answers it (.stdio)
             return read, answered
         if not isinstance(msg, dict) or msg.get("jsonrpc") != "2.0":
             return read, answered
