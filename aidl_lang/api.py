@@ -429,7 +429,9 @@ class Result:
         ``clearance`` and ``contact`` between two closed shapes or parts
         (:func:`aidl_lang.output.part.gaps.clearance`: ``apart`` with the gap, ``touching``
         0, ``overlapping`` negative: how deep one runs into the other, and
-        ``overlap_area`` mm²).  Raises :class:`NotCompiled`, and :class:`KeyError` for a
+        ``overlap_area`` mm², exact for outlines of lines, arcs and circles, else an estimate
+        with ``overlap_area_within`` its bound).  An assembly (a structure with no outline
+        of its own) is measured as its parts together.  Raises :class:`NotCompiled`, and :class:`KeyError` for a
         name that is none of these: ``args`` (the message, with the nearest names; ``"a"``
         or ``"b"``)."""
         self._need("measure")
@@ -454,8 +456,9 @@ class Result:
         if ea.get("loops") and eb.get("loops"):
             c = G.clearance(ea["loops"], eb["loops"])
             out["clearance"], out["contact"] = c["clearance"], c["contact"]
-            if "overlap_area" in c:
-                out["overlap_area"] = c["overlap_area"]
+            for k in ("overlap_area", "overlap_area_within"):
+                if k in c:
+                    out[k] = c[k]
             out["points"] = c["points"]
         return out
 
@@ -481,13 +484,22 @@ class Result:
             loops = part.loops if part is not None else [
                 lp for gg in s.geometry if not gg.construction
                 for lp in self._renderer().loops_of(gg)]
+            if not loops and part is None:     # an assembly: the parts inside it, each a region
+                inner = [pt for pt in self.output.parts if pt.name.startswith(s.path + ".")]
+                if not inner:
+                    raise KeyError(f"`{name}` has no outline of its own and no parts inside "
+                                   "it: nothing to measure; measure a shape or part in it")
+                loops = [pt.loops for pt in inner]
+                part = False
             own = [gg for gg in s.geometry if not gg.construction
                    and ("center" in gg.points or "top_right" in gg.points)]
             first = next((gg for gg in own if gg.kind == "Circle"), own[0] if own else None)
             center = self._geometry_entity(first)["center"] if first is not None else \
                 next((tuple(v.mm) for v in self.values if v.name == name + ".origin"), None)
-            return {"kind": "part" if part is not None else "structure", "loops": loops,
-                    "pieces": G.pieces([sg for lp in loops for sg in lp.segments]),
+            flat = [lp for r in G.regions(loops) for lp in r]
+            kind = "assembly" if part is False else "part" if part is not None else "structure"
+            return {"kind": kind, "loops": loops,
+                    "pieces": G.pieces([sg for lp in flat for sg in lp.segments]),
                     "center": center}
         from .diagnostics import did_you_mean
         every = sorted(set(geo) | set(structs) | set(points))

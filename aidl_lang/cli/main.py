@@ -23,7 +23,6 @@ from pathlib import Path
 
 from ..diagnostics import DiagnosticSink, render_text
 from ..limits import now
-from ..solver import solve_text
 from .arguments import SUBCOMMANDS, _parser
 
 
@@ -170,6 +169,7 @@ def cmd_check(args) -> int:
     _emit(res.sink, args.json, res.ok, extra)
     if res.ok and not args.json:
         s = res.solve
+        from ..solver import solve_text     # (numpy: not for `aidl mcp`'s start, issue 95)
         print(f"{args.file}: ok ({len(res.model.structures)} structures, {solve_text(s)}; "
               f"{extra.get('freedom', 'not solved')})")
         if dofs is not None:
@@ -812,15 +812,14 @@ def cmd_batch(args) -> int:
 def cmd_mcp(args) -> int:
     if not os.path.isdir(args.root):
         return _usage(f"--root `{args.root}` is not a folder")
-    try:
-        import mcp.server.mcpserver  # noqa: F401  (the `mcp` extra)
-    except ImportError:
+    import importlib.util               # (the `mcp` extra; found, not loaded: .mcp.fast)
+    if importlib.util.find_spec("mcp") is None:
         print("aidl: error: `aidl mcp` needs the MCP SDK: pip install 'aidl-lang[mcp]'",
               file=sys.stderr)
         return 2
     from ..llm.prompt import agent_prompt
-    from ..mcp.server import main as mcp_main
-    return mcp_main(args.root, min(args.budget, 4.0), agent_prompt)
+    from ..mcp.fast import serve        # the first answers while the SDK loads (issue 95)
+    return serve(args.root, min(args.budget, 4.0), agent_prompt)
 
 
 def main(argv: list[str] | None = None, cap_memory: bool = False) -> int:

@@ -228,8 +228,92 @@ def _parts(doc: dict) -> str:
     return _plural(len(ps), "part") + " (" + "; ".join(shown) + more + ")"
 
 
+def _num(v) -> str:
+    """A number to 1e-6 (``12.5``, ``-0.000001``, ``1234.567891``)."""
+    if isinstance(v, bool) or not isinstance(v, (int, float)):
+        return str(v)
+    v = round(float(v), 6)
+    return f"{0.0 if v == 0 else v:.12g}"
+
+
+def _val(v) -> str:
+    if isinstance(v, (list, tuple)):
+        return "(" + ", ".join(_num(c) for c in v) + ")"
+    return _num(v)
+
+
+def _span(s: dict | None) -> str:
+    if not s:
+        return ""
+    return f"{s.get('file') or ''}:{s['line']}:{s['column']}"
+
+
+def _diagnostic(d: dict) -> str:
+    """One diagnostic in one line: ``error E0103 at plate.aidl:3:15: message; hint: ...; fix:
+    replace 3:15-3:21 (offsets 47..53) with `Circle```."""
+    said = f"{d.get('severity', 'error')} {d['code']}"
+    if d.get("span"):
+        said += f" at {_span(d['span'])}"
+    elif d.get("line"):
+        said += f" at line {d['line']}"
+    said += f": {d['message']}"
+    for lab in d.get("labels") or []:
+        if not lab.get("primary") and lab.get("message"):
+            at = "" if ", at " in lab["message"] else f" at {_span(lab.get('span'))}"
+            said += f" [{lab['message']}{at}]"
+    if d.get("hint"):
+        said += f"; hint: {d['hint']}"
+    fix = d.get("fix")
+    if fix:
+        sp = fix["span"]
+        said += (f"; fix: replace {sp['line']}:{sp['column']}-{sp['end_line']}:"
+                 f"{sp['end_column']} (offsets {sp['start']}..{sp['end']}) with "
+                 f"`{fix['replacement']}`")
+    return " ".join(said.split("\n"))
+
+
+def body(tool: str, doc: dict) -> list[str]:
+    """The lines of text after a result's first line: what its structured content holds,
+    compact (issue 95: a host may show the model the text only): each diagnostic, each
+    value, the description, the freedom left, each collision, the import's notes."""
+    out: list[str] = [_diagnostic(d) for d in doc.get("diagnostics") or []
+                      if isinstance(d, dict) and "code" in d]
+    if tool == "values":
+        for v in doc.get("values") or []:
+            unit = f" {v['unit']}" if v.get("unit") else ""
+            if v.get("kind") == "group":
+                out.append(f"{v['name']} = {_val(v['value'])}{unit} ({v['count']} "
+                           f"{v.get('of', 'value')}s: " + ("all equal)" if not isinstance(
+                               v["value"], list) else "the range they span)"))
+            else:
+                out.append(f"{v['name']} = {_val(v['value'])}{unit}")
+    if tool == "describe" and doc.get("text"):
+        out += doc["text"].splitlines()
+    f = doc.get("freedom") or {}
+    if f.get("text") and f.get("dof"):
+        out.append(f["text"])
+    for s in f.get("structures") or []:
+        out.append(f"{s['structure']}: {s['dof']} of {s['unknowns']} free"
+                   + (f" ({', '.join(s['floating'])})" if s.get("floating") else ""))
+    fit = doc.get("fit") or {}
+    for c in fit.get("collisions") or []:
+        out.append(f"collision {c['a']} / {c['b']}: {_num(c['volume'])} mm³, "
+                   f"{_num(c['depth'])} mm deep")
+    for c in fit.get("floating") or []:
+        out.append(f"floating {c['part']}: {_num(c['gap'])} mm from {c['nearest']}")
+    for n in doc.get("notes") or []:
+        out.append(f"{n['code']}: {n['message']}")
+    c = doc.get("check") or {}
+    out += c.get("warnings") or []
+    return out
+
+
 def line(tool: str, doc: dict) -> str:
-    """The one line of text beside a result's structured content."""
+    """The first line of text of a result (its :func:`body` follows it)."""
+    diags = [d for d in doc.get("diagnostics") or [] if isinstance(d, dict) and "code" in d]
+    if not doc.get("ok") and diags and tool != "import_drawing":     # each one follows
+        n = sum(d.get("severity") == "error" for d in diags)
+        return f"not ok: {_plural(n, 'error')}; {_warnings(doc)}"
     if "error" in doc and not doc.get("ok"):
         e = doc["error"]
         return f"error {e['code']}: {e['message']}"
@@ -256,6 +340,8 @@ def line(tool: str, doc: dict) -> str:
             said.append(doc["job"]["text"])
         if doc.get("layout"):
             said.append(doc["layout"]["text"])
+    if doc.get("superseded"):
+        said.append(doc["superseded"])
     if tool == "values":
         vs = doc.get("values", [])
         g = [v for v in vs if v.get("kind") == "group"]
@@ -263,14 +349,20 @@ def line(tool: str, doc: dict) -> str:
                                                  "detail=true lists each)" if g else ""))
     if tool == "measure" and doc.get("measure"):
         m = doc["measure"]
-        said.append(", ".join(f"{k} {m[k]:g}" + ("" if k == "angle" else " mm")
-                              for k in ("distance", "center_distance", "angle", "clearance")
-                              if k in m) + (f" ({m['contact']})" if "contact" in m else ""))
+        said.append(f"{m['a']['name']} ({m['a']['kind']}) to {m['b']['name']} "
+                    f"({m['b']['kind']}): "
+                    + ", ".join(f"{k} {_num(m[k])}" + (" deg" if k == "angle" else " mm")
+                                for k in ("distance", "center_distance", "angle", "clearance")
+                                if k in m) + (f" ({m['contact']})" if "contact" in m else "")
+                    + (f", overlap_area {_num(m['overlap_area'])}" + (
+                        f" +- {_num(m['overlap_area_within'])}" if "overlap_area_within" in m
+                        else "") + " mm²" if "overlap_area" in m else "")
+                    + ", nearest points " + " and ".join(_val(p) for p in m["points"]))
     if tool == "import_drawing" and doc.get("check"):
         c = doc["check"]
         said.append(("checked ok" if c.get("ok") else "check: " + c.get("summary", "not ok"))
                     + ("; " + _parts(c) if c.get("parts") else ""))
-    if tool == "describe" and doc.get("text"):
-        said.append(doc["text"].splitlines()[-1])
+    if tool == "values":
+        said += doc.get("unmatched") or []
     said.append(_warnings(doc))
-    return "; ".join(said) + " (details: structured content)"
+    return "; ".join(said)

@@ -156,6 +156,7 @@ class Measured(TypedDict):
         description="two shapes or parts: the gap; 0 touching; negative overlapping")]]
     contact: NotRequired[Literal["apart", "touching", "overlapping"]]
     overlap_area: NotRequired[Annotated[float, Field(description="mm² shared")]]
+    overlap_area_within: NotRequired[Annotated[float, Field(description="estimated: ± mm²")]]
 
 
 class MeasureResult(_Compiled):
@@ -179,6 +180,7 @@ class Value(TypedDict):
 
 class ValuesResult(_Compiled):
     values: NotRequired[list[Value]]
+    unmatched: NotRequired[list[str]]
     text: NotRequired[Annotated[str, Field(description="one `name = value unit` line each")]]
 
 
@@ -230,6 +232,7 @@ class RenderResult(_Compiled):
     written: NotRequired[Annotated[str, Field(
         description="the file written (the first sheet's with a layout), relative to the "
                     "allowed folder")]]
+    superseded: NotRequired[str]
     layout: NotRequired[LayoutInfo]
     job: NotRequired[Job]
     fit: NotRequired[Fit]
@@ -263,6 +266,7 @@ class ImportResult(TypedDict):
     program: NotRequired[Annotated[str, Field(description="the AIDL program's text")]]
     notes: NotRequired[list[ImportNote]]
     output: NotRequired[Annotated[str, Field(description="the .aidl file written")]]
+    superseded: NotRequired[str]
     check: NotRequired[ImportCheck]
     diagnostics: NotRequired[list[ImportProblem]]
     error: NotRequired[Error]

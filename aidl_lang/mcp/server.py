@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import json
 from collections.abc import Callable
+from contextvars import ContextVar
 from pathlib import Path
 from typing import Annotated, Literal
 
@@ -33,7 +34,6 @@ from mcp_types import INVALID_PARAMS, CallToolResult, TextContent, ToolAnnotatio
 from pydantic import Field
 
 from ..limits import DEFAULT_BUDGET, MAX_ITER, MAX_TEMPLATE_DEPTH
-from ..output.writers import FORMATS
 from ..parser import MAX_NESTING
 from ..sources import EXAMPLES as _EXAMPLES    # inside the package: shipped in the wheel
 from ..sources import MAX_DRAWING_BYTES
@@ -42,7 +42,18 @@ from . import stdio
 from . import tools as T
 from .schemas import (CheckResult, DescribeResult, ImportResult, MeasureResult, RenderResult,
                       SetParamsResult, ValuesResult, WriteResult)
+from .order import Call, Calls
 from .wording import for_agents
+
+# the call being answered, in the task that answers it (:class:`_Server` numbers each call
+# as it comes in: :mod:`.order`)
+CALL: ContextVar[Call | None] = ContextVar("aidl_mcp_call", default=None)
+
+# the formats `render` writes, by extension (aidl_lang/output/writers' FORMATS but `.stp`,
+# said here so that the server starts without the writers and what they import: numpy,
+# Manifold; tests/test_mcp_text.py holds the two the same)
+OUTPUT_FORMATS = (".svg", ".dxf", ".pdf", ".png", ".stl", ".3mf", ".step", ".glb", ".gcode",
+                  ".nc", ".lbrn2", ".plt", ".hpgl")
 
 # what one program may build (aidl_lang/limits.py, the parser's and the importer's limits),
 # said once, in `check`'s description (the first tool: an agent reads it first)
@@ -73,10 +84,9 @@ Sweep = Annotated[bool, Field(
     description="Also check the design across its params' min..max ranges (W0110).")]
 Output = Annotated[str | None, Field(
     description="Also write the drawing to this file in the allowed folder; format by "
-                "extension: " + ", ".join(k for k in FORMATS if k != ".stp") + ".")]
+                "extension: " + ", ".join(OUTPUT_FORMATS) + ".")]
 Picture = Annotated[bool, Field(
-    description="Also return a PNG picture, `width` pixels wide (default: none, the figures "
-                "say what was made).")]
+    description="Also return a PNG picture, `width` pixels wide (default: none).")]
 Width = Annotated[int, Field(
     description="Width in pixels of the picture and of a written .png.",
     ge=16, le=T.MAX_PNG_WIDTH)]
@@ -118,11 +128,11 @@ Units = Annotated[Literal["mm", "cm", "m", "in", "ft", "pt", "px"] | None, Field
 ProgramOutput = Annotated[str | None, Field(
     description="Also write the program to this .aidl file in the allowed folder.")]
 Names = Annotated[list[Annotated[str, Field(max_length=500)]] | None, Field(
-    description="Dotted name prefixes to keep, e.g. [\"plate.bore\"] (the root's name may "
-                "be left out); default: all.", max_length=200)]
+    description="Dotted name prefixes, e.g. [\"plate.bore\"] (the root's name optional); "
+                "default: all.", max_length=200)]
 Detail = Annotated[bool, Field(
-    description=f"Every item in full; default: more than {C.GROUP_AT} alike items said once "
-                "with their count.")]
+    description=f"Every item in full (default: over {C.GROUP_AT} alike items said once, "
+                "counted).")]
 WritePath = Annotated[str, Field(
     description="The .aidl file to write in the allowed folder (folders made).")]
 WriteText = Annotated[str | None, Field(
@@ -190,8 +200,9 @@ def _json(doc: dict) -> str:
 def answer(tool: str, doc: dict, pngs: list[bytes] = (), detail: bool = False
            ) -> CallToolResult:
     """A compiling tool's result: ``doc`` as structured content, compact unless ``detail``
-    (:mod:`.compact`), the pictures, and one line of text; a program with errors also
-    carries ``error`` (its first error's code and the summary)."""
+    (:mod:`.compact`), the pictures, and the same as text: a first line (the figures) and a
+    line per diagnostic, value, feature, ... (:func:`.compact.body`); a program with errors
+    also carries ``error`` (its first error's code and the summary)."""
     if "diagnostics" in doc and isinstance(doc["diagnostics"], list) and tool != "import_drawing":
         doc["diagnostics"] = C.diagnostics(doc["diagnostics"], detail)
     if tool == "values" and "values" in doc:
@@ -207,9 +218,30 @@ def answer(tool: str, doc: dict, pngs: list[bytes] = (), detail: bool = False
             doc["error"] = {"code": first["code"],
                             "message": doc.get("summary") or first["message"]}
     pictures = [Image(data=png, format="png").to_image_content() for png in pngs]
-    said = C.line(tool, doc)           # before the repeats go: the line says the job's text
+    # the first line, then the rest of what the structured content holds (issue 95: a host
+    # may show the model the text only); before the repeats go: the line says the job's text
+    said = "\n".join([C.line(tool, doc), *C.body(tool, doc)])
     return CallToolResult(content=pictures + [TextContent(type="text", text=said)],
                           structured_content=C.no_repeats(doc, detail))
+
+
+def _commit(calls: Calls, doc: dict, files: list, key: str, argument: str = "output") -> None:
+    """Write the files a call's worker made (:meth:`.order.Calls.write`, in the order the
+    calls were made); a file a later call wrote is left, and ``doc`` says so in
+    ``superseded`` (and no longer names it under ``key``).  Raises :class:`~.tools.Refused`
+    (``output_failed``) for a write that fails."""
+    call = CALL.get(None) or calls.arrive("render")
+    try:
+        kept = calls.write(call, files)
+    except OSError as e:
+        raise T.Refused(str(e), "output_failed", argument) from None
+    if kept:
+        if files and Path(files[0][0]) in {t for t, _, _ in kept}:
+            doc.pop(key, None)
+        later = max(seq for _, _, seq in kept)
+        doc["superseded"] = (f"{', '.join(s for _, s, _ in kept)} not written: call #{later}, "
+                             f"made after this one (#{call.seq}), wrote it; of two calls "
+                             "writing one file the one made last wins")
 
 
 def refusal(code: str, message: str, argument: str | None = None) -> CallToolResult:
@@ -437,17 +469,25 @@ class _Server(MCPServer):
     that is not text, is an invalid-params error saying so (the SDK's own failure there is a
     bare "Error rendering prompt" with a traceback on stderr)."""
 
-    def __init__(self, *args, tools: list[Tool], **kwargs) -> None:
+    def __init__(self, *args, tools: list[Tool], calls: Calls, **kwargs) -> None:
         _share(tools)                     # every tool's, wherever it is defined
         super().__init__(*args, tools=tools, **kwargs)
         self.accepted = {t.name: list(t.parameters["properties"]) for t in tools}
+        self.calls = calls
+        self.topics_offered = False       # the docs' topics: offered on the first resources call
 
     async def call_tool(self, name: str, arguments: dict, context=None):
-        if name in self.accepted:
-            try:
-                T.check_arguments(name, arguments, self.accepted[name])
-            except T.Refused as e:
-                return refusal(e.code, str(e), e.argument)
+        if name not in self.accepted:     # JSON-RPC's invalid params (the MCP spec's words)
+            from ..diagnostics import did_you_mean
+            near = did_you_mean(str(name), list(self.accepted), 1)
+            raise MCPError(INVALID_PARAMS, f"Unknown tool: `{name}`"
+                           + (f"; did you mean `{near[0]}`?" if near else "")
+                           + f"; the tools: {', '.join(self.accepted)}")
+        try:
+            T.check_arguments(name, arguments, self.accepted[name])
+        except T.Refused as e:
+            return refusal(e.code, str(e), e.argument)
+        CALL.set(self.calls.arrive(name))     # numbered as it came in (.order)
         try:
             return await super().call_tool(name, arguments, context)
         except ToolError as e:
@@ -483,11 +523,34 @@ class _Server(MCPServer):
                                                    "characters")
         return await super().get_prompt(name, arguments, context)
 
+    async def list_resources(self):
+        self._topics()
+        return await super().list_resources()
+
+    async def read_resource(self, uri, context=None):
+        self._topics()
+        return await super().read_resource(uri, context)
+
+    def _topics(self) -> None:
+        if not self.topics_offered:
+            self.topics_offered = True
+            _topic_resources(self)
+
     async def run_stdio_async(self) -> None:
         """The SDK's stdio serving, with JSON-RPC's error replies to lines that are no
         message (the SDK drops them: :mod:`.stdio`)."""
         await stdio.serve(self._lowlevel_server,
-                          self._lowlevel_server.create_initialization_options())
+                          self._lowlevel_server.create_initialization_options(),
+                          getattr(self, "first", None))
+
+
+def _version() -> str:
+    """The installed package's version ("0+unknown" for a source tree not installed)."""
+    from importlib.metadata import PackageNotFoundError, version
+    try:
+        return version("aidl-lang")
+    except PackageNotFoundError:
+        return "0+unknown"
 
 
 def build_server(root: str, budget: float = 1.0,
@@ -505,11 +568,14 @@ def build_server(root: str, budget: float = 1.0,
     work = Pool(str(ws.root), budget)
     if warm:
         work.warm()
-    from importlib.metadata import PackageNotFoundError, version
-    try:
-        ver = version("aidl-lang")
-    except PackageNotFoundError:         # a source tree that is not installed
-        ver = "0+unknown"
+    # the files are written here, in the order the calls were made; a cancelled call's
+    # worker is stopped and it writes nothing (.order, issue 91)
+    calls = Calls(lambda target, data, program, shown: T.write_inside(ws, target, data,
+                                                                      program, shown))
+
+    async def run(name: str, *args, budget: float | None = None):
+        call = CALL.get(None) or calls.arrive(name)
+        return await calls.work(call, work, name, *args, budget=budget)
     tools: list[Tool] = []
 
     def tool(annotations: ToolAnnotations, structured: bool = True):
@@ -525,28 +591,30 @@ def build_server(root: str, budget: float = 1.0,
                              open_world_hint=False)
 
     @tool(reads)
-    def check(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
+    async def check(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
               dof: Dof = False, budget: Budget = None, sweep: Sweep = False,
               detail: Detail = False) -> Annotated[CallToolResult, CheckResult]:
         """Parse, check and solve an AIDL program; write nothing. Returns ok, located
         diagnostics (code, span, hint, fix), parts (bbox mm), freedom and the assembled fit.
         Every result: structured content and one line of text; a refused call: isError with
         error {code, message, argument}."""
-        return answer("check", work.call("check", source, path, overrides, dof, budget,
+        return answer("check", await run("check", source, path, overrides, dof, budget,
                                          sweep, budget=budget), detail=detail)
 
     @tool(writes)
-    def write_program(path: WritePath, text: WriteText = None, old: Old = None,
+    async def write_program(path: WritePath, text: WriteText = None, old: Old = None,
                       new: New = None, start: Start = None, end: End = None,
                       dof: Dof = False, detail: Detail = False
                       ) -> Annotated[CallToolResult, WriteResult]:
         """Write a .aidl file (the whole `text`, or a patch: `old` -> `new`, or `start`..`end`
         -> `new`), then check it as `check` does; the other tools then take it by `path`."""
-        return answer("write_program", work.call("write_program", path, text, old, new, start,
-                                                 end, dof), detail=detail)
+        async with calls.program(path):      # one edit of a file at a time, in call order
+            doc, files = await run("write_program", path, text, old, new, start, end, dof)
+            _commit(calls, doc, files, "written", "path")
+        return answer("write_program", doc, detail=detail)
 
     @tool(writes)
-    def render(source: Source = None, path: ProgramPath = None, output: Output = None,
+    async def render(source: Source = None, path: ProgramPath = None, output: Output = None,
                picture: Picture = False, width: Width = 800, overrides: Overrides = None,
                style: Style = "preview", budget: Budget = None, assembled: Assembled = False,
                layout: LayoutKind = None, sheet: Sheet = None, gap: Gap = None,
@@ -556,62 +624,66 @@ def build_server(root: str, budget: float = 1.0,
         """Compile, write `output` and return its figures: size, parts, fit, and for a
         cutting file the job (path length per pass, passes, cut, travel, time at the
         `machine`'s speeds). A picture only with `picture`."""
-        doc, pngs = work.call("render", source, path, output, width, overrides, budget,
-                              style, assembled, layout, sheet, gap, rotate, kerf,
-                              thickness, machine, page, picture, budget=budget)
+        (doc, pngs), files = await run("render", source, path, output, width, overrides,
+                                       budget, style, assembled, layout, sheet, gap, rotate,
+                                       kerf, thickness, machine, page, picture, budget=budget)
+        _commit(calls, doc, files, "written")
         return answer("render", doc, pngs, detail)
 
     @tool(reads)
-    def values(source: Source = None, path: ProgramPath = None, names: Names = None,
+    async def values(source: Source = None, path: ProgramPath = None, names: Names = None,
                overrides: Overrides = None, budget: Budget = None,
                detail: Detail = False) -> Annotated[CallToolResult, ValuesResult]:
         """Solved values of named entities in the file's units: points (center, start, end,
         corners), sizes (radius, diameter, width, height), frame origins and boxes, every
         copy of a pattern (corners[0] is the original)."""
-        return answer("values", work.call("values", source, path, names, overrides, budget,
+        return answer("values", await run("values", source, path, names, overrides, budget,
                                           budget=budget), detail=detail)
 
     @tool(reads)
-    def describe(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
+    async def describe(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
                  budget: Budget = None,
                  detail: Detail = False) -> Annotated[CallToolResult, DescribeResult]:
         """The final part in words and data, to check it without a picture: outline,
         openings (kind, centre, size), engravings, copies, symmetries; mm."""
-        return answer("describe", work.call("describe", source, path, overrides, budget,
+        return answer("describe", await run("describe", source, path, overrides, budget,
                                             budget=budget), detail=detail)
 
     @tool(writes)
-    def import_drawing(path: DrawingPath, infer: Infer = True, parts: Parts = False,
+    async def import_drawing(path: DrawingPath, infer: Infer = True, parts: Parts = False,
                        units: Units = None, output: ProgramOutput = None,
                        budget: Budget = None) -> Annotated[CallToolResult, ImportResult]:
         """Turn a DXF or SVG drawing into an AIDL program to edit: with `infer`, the design
         (RoundedRectangle, Slot, ...; hole patterns as loops; one param per repeated size,
         pitch and count), exact to 1e-6 mm."""
-        doc = work.call("import_drawing", path, infer, parts, units, output, budget,
-                        budget=budget)
+        doc, files = await run("import_drawing", path, infer, parts, units, output, budget,
+                               budget=budget)
+        _commit(calls, doc, files, "output")
         if not doc.get("ok") and doc.get("diagnostics"):
             d = doc["diagnostics"][0]
             doc["error"] = {"code": d["code"], "message": d["message"]}
         return answer("import_drawing", doc)
 
     @tool(writes)
-    def set_params(path: WritePath, values: ParamValues, dof: Dof = False,
+    async def set_params(path: WritePath, values: ParamValues, dof: Dof = False,
                    budget: Budget = None, detail: Detail = False
                    ) -> Annotated[CallToolResult, SetParamsResult]:
         """Change `param` values in a .aidl file: only each value's text is rewritten
         (comments, formatting kept), checked against the param's kind and min/max first
         (refused: file untouched), then checked as `check`. Unknown name: no_match."""
-        return answer("set_params", work.call("set_params", path, values, dof, budget,
-                                              budget=budget), detail=detail)
+        async with calls.program(path):
+            doc, files = await run("set_params", path, values, dof, budget, budget=budget)
+            _commit(calls, doc, files, "written", "path")
+        return answer("set_params", doc, detail=detail)
 
     @tool(reads)
-    def measure(a: EntityName, b: EntityName, source: Source = None,
+    async def measure(a: EntityName, b: EntityName, source: Source = None,
                 path: ProgramPath = None, overrides: Overrides = None,
                 budget: Budget = None) -> Annotated[CallToolResult, MeasureResult]:
         """Between two named entities of the solved program, mm, exact: distance and
         points, center_distance, angle (two lines), clearance and contact (two shapes or
         parts: apart, touching, overlapping as negative)."""
-        return answer("measure", work.call("measure", a, b, source, path, overrides, budget,
+        return answer("measure", await run("measure", a, b, source, path, overrides, budget,
                                            budget=budget))
 
     @tool(reads, structured=False)
@@ -625,9 +697,20 @@ def build_server(root: str, budget: float = 1.0,
         that compiles."""
         return T.docs(name)
 
-    server = _Server("aidl", instructions=INSTRUCTIONS, version=ver, tools=tools)
+    server = _Server("aidl", instructions=INSTRUCTIONS, version=_version(), tools=tools,
+                     calls=calls)
     _resources(server, prompt)
     return server
+
+
+def _topic_resources(server: MCPServer) -> None:
+    """Offer each topic of ``aidl docs`` as ``aidl://docs/topic/NAME`` (listing them parses the
+    standard library: done on the first resources call, not before the first tools/list)."""
+    from ..reference import topics
+    for name, topic in topics().items():
+        server.resource(f"aidl://docs/topic/{name}", name=f"aidl docs {name}",
+                        mime_type="text/plain",
+                        description=f"{topic.kind}: {topic.summary}")(_worded(topic.render))
 
 
 def _worded(render: Callable[[], str]) -> Callable[[], str]:
@@ -640,14 +723,10 @@ def _worded(render: Callable[[], str]) -> Callable[[], str]:
 def _resources(server: MCPServer, prompt: Callable[[], str] | None) -> None:
     """Offer the docs, the prompt (worded for the tools), the standard library and the
     examples as resources of ``server`` (see the module text)."""
-    from ..reference import index_text, topics
+    from ..reference import index_text
     server.resource("aidl://docs/topics", name="aidl docs topics", mime_type="text/plain",
                     description="`aidl docs`: every topic (statements, shapes, constraints, "
                                 "relations, operations, stdlib templates)")(index_text)
-    for name, topic in topics().items():
-        server.resource(f"aidl://docs/topic/{name}", name=f"aidl docs {name}",
-                        mime_type="text/plain",
-                        description=f"{topic.kind}: {topic.summary}")(_worded(topic.render))
     server.resource("aidl://docs/language", name="language reference", mime_type="text/markdown",
                     description="The AIDL language reference (docs/language.md)")(
         _text_of(_DOCS / "language.md", "docs/language.md"))
@@ -688,8 +767,12 @@ def _resources(server: MCPServer, prompt: Callable[[], str] | None) -> None:
                 _text_of(f, f"examples/{rel}"))
 
 
-def main(root: str, budget: float = 1.0, prompt: Callable[[], str] | None = None) -> int:
-    """Serve over stdin/stdout until the client closes them."""
+def main(root: str, budget: float = 1.0, prompt: Callable[[], str] | None = None,
+         first=None) -> int:
+    """Serve over stdin/stdout until the client closes them (``first``: what :mod:`.fast`
+    read and answered before the SDK was loaded)."""
     import os
-    build_server(root, budget, prompt, warm=not os.environ.get("AIDL_MCP_COLD")).run("stdio")
+    server = build_server(root, budget, prompt, warm=not os.environ.get("AIDL_MCP_COLD"))
+    server.first = first
+    server.run("stdio")
     return 0

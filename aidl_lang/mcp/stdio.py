@@ -82,18 +82,40 @@ def _is_request_id(value) -> bool:
 class CheckedLines:
     """An async iterable of the stdin lines that are messages, for the SDK's reader; a line
     that is none (:func:`rejection`) is answered on ``answers`` (an error, id null) instead.
-    Blank lines are no message and are skipped without an answer."""
+    Blank lines are no message and are skipped without an answer.  ``first``: lines read
+    before (:mod:`.fast`), given before ``lines``; ``watch``: request id -> the method of each
+    ``initialize`` (with its protocol version) and ``tools/list`` passed on, whose answers
+    are kept for the next start."""
 
-    def __init__(self, lines, answers: anyio.abc.ObjectSendStream) -> None:
+    def __init__(self, lines, answers: anyio.abc.ObjectSendStream, first: list[str] = (),
+                 watch: dict | None = None) -> None:
         self.lines, self.answers = lines, answers
+        self.first, self.watch = list(first), watch
+
+    async def _all(self):
+        for line in self.first:
+            yield line
+        async for line in self.lines:
+            yield line
+
+    def _note(self, line: str) -> None:
+        if self.watch is None or ('"initialize"' not in line and '"tools/list"' not in line):
+            return
+        msg = json.loads(line)
+        params = msg.get("params") if isinstance(msg.get("params"), dict) else {}
+        if msg.get("method") == "initialize" and "id" in msg:
+            self.watch[msg["id"]] = ("initialize", str(params.get("protocolVersion")))
+        elif msg.get("method") == "tools/list" and "id" in msg and not params.get("cursor"):
+            self.watch[msg["id"]] = ("tools/list", None)
 
     async def __aiter__(self) -> AsyncIterator[str]:
         async with self.answers:
-            async for line in self.lines:
+            async for line in self._all():
                 if not line.strip():
                     continue
                 error = rejection(line)
                 if error is None:
+                    self._note(line)
                     yield line
                 else:
                     reply = types.JSONRPCError(jsonrpc="2.0", id=None, error=error)
@@ -116,17 +138,55 @@ def _claimed_stdin():
         os.dup2(wire, 0)
 
 
-async def serve(lowlevel, options) -> None:
+async def serve(lowlevel, options, first=None) -> None:
     """Serve the SDK's low-level server ``lowlevel`` over stdin/stdout until stdin closes, every
-    line that is no message answered as JSON-RPC 2.0 says (:func:`rejection`)."""
+    line that is no message answered as JSON-RPC 2.0 says (:func:`rejection`).  ``first``:
+    ``(lines read, ids answered, keep, kept answers)`` from :mod:`.fast`: those lines are
+    read first, the SDK's answers to those ids are dropped, and its answers to
+    ``initialize`` and ``tools/list`` are given to ``keep`` for the next start."""
+    read_first, answered, key, kept = first or ([], set(), None, {})
+    watch: dict = {}
     answers, rejected = anyio.create_memory_object_stream[SessionMessage](0)
+    ours, sent = anyio.create_memory_object_stream[SessionMessage](0)
     with _claimed_stdin() as wire:
         lines = anyio.wrap_file(TextIOWrapper(wire, encoding="utf-8", errors="replace"))
-        async with stdio_server(stdin=CheckedLines(lines, answers)) as (read, write):
+        checked = CheckedLines(lines, answers, read_first, watch if key else None)
+        async with stdio_server(stdin=checked) as (read, write):
             async with anyio.create_task_group() as tg:
                 tg.start_soon(_forward, rejected, write)
-                await lowlevel.run(read, write, options)
+                tg.start_soon(_pass, sent, write, set(answered), watch, key, dict(kept))
+                async with ours:
+                    await lowlevel.run(read, ours, options)
                 tg.cancel_scope.cancel()        # stdin is closed: nothing more to answer
+            await write.aclose()                # (the SDK closes the stream it was given)
+
+
+async def _pass(sent, write, answered: set, watch: dict, key, kept: dict) -> None:
+    """Pass the server's messages on to the wire, but its answers to ids :mod:`.fast` answered
+    already; keep its answers to ``initialize`` and ``tools/list`` for the next start."""
+    async with sent:
+        async for reply in sent:
+            msg = reply.message
+            rid = getattr(msg, "id", None)
+            result = getattr(msg, "result", None)
+            if rid is not None and not hasattr(msg, "method") and rid in watch:
+                what, version = watch.pop(rid)
+                if key and isinstance(result, dict):
+                    if what == "initialize":
+                        inits = dict(kept.get("initialize") or {})
+                        inits[version] = result
+                        kept["initialize"] = inits
+                    else:
+                        kept["tools/list"] = result
+                    if kept.get("initialize") and kept.get("tools/list"):
+                        key(kept)
+            if rid is not None and not hasattr(msg, "method") and rid in answered:
+                answered.discard(rid)
+                continue
+            try:
+                await write.send(reply)
+            except (anyio.ClosedResourceError, anyio.BrokenResourceError):
+                return
 
 
 async def _forward(rejected, write) -> None:

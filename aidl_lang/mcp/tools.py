@@ -10,11 +10,10 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from ..api import NotCompiled, Result, WriteError, compile as compile_program
+from ..api import NotCompiled, Result, compile as compile_program
 from ..diagnostics import split_lines
 from ..sources import SourceRefused, decode_program
 from ..files import FileRefused, open_beneath, open_dir_beneath, read_regular
-from ..output.writers.write import write_in_dir
 from .wording import for_agents, reword_diagnostics
 
 MAX_BUDGET = 4.0          # a tool call may ask for at most 4x the default evaluation budget
@@ -225,6 +224,36 @@ class Workspace:
             raise Refused(f"cannot read `{path}`: {e}", "not_found", "path") from None
 
 
+SOURCE_NAME = "<source>"     # the file of a program given as `source` in what a tool says
+
+
+def unrooted(ws: Workspace, doc, source: bool):
+    """``doc`` (a tool's answer: dicts, lists, tuples, strings; bytes left as they are) with
+    the server's own paths said as an agent names them (issue 95): a file inside the root
+    relative to it, the standard library's as ``std/...`` (never its install folder), and
+    a program given as ``source`` (compiled as ``ROOT/untitled.aidl``) as ``<source>``."""
+    from ..sources import STDLIB
+    swaps = [(f"{os.path.realpath(STDLIB)}{os.sep}", "std/"), (f"{STDLIB}{os.sep}", "std/")]
+    if source:
+        swaps.append((str(ws.root / "untitled.aidl"), SOURCE_NAME))
+    swaps.append((f"{ws.root}{os.sep}", ""))
+
+    def walk(x):
+        if isinstance(x, str):
+            for old, new in swaps:
+                if old in x:
+                    x = x.replace(old, new)
+            return x
+        if isinstance(x, dict):
+            return {k: walk(v) for k, v in x.items()}
+        if isinstance(x, list):
+            return [walk(v) for v in x]
+        if isinstance(x, tuple):
+            return tuple(walk(v) for v in x)
+        return x
+    return walk(doc)
+
+
 def _summary(ws: Workspace, r: Result) -> dict:
     """``{"ok", "diagnostics", "units", "solve"?, "summary"?}`` of ``r``, the diagnostics
     worded for agents (:mod:`.wording`: tools and arguments, not command-line flags)."""
@@ -265,7 +294,12 @@ def check(ws: Workspace, source: str | None = None, path: str | None = None,
     last two when the program solved; ``freedom`` per structure with ``dof``; with
     ``sweep``, ``sweep`` (:meth:`aidl_lang.sweep.SweepReport.to_json`) and its W0110 among
     the diagnostics)."""
-    r = ws.compile(source, path, overrides, budget)
+    return _checked(ws, ws.compile(source, path, overrides, budget), dof, budget, sweep)
+
+
+def _checked(ws: Workspace, r: Result, dof: bool = False, budget: float | None = None,
+             sweep: bool = False) -> dict:
+    """:func:`check`'s answer for the compiled program ``r``."""
     r.find_redundant()                    # W0401, as `aidl check` reports them
     report = None
     if sweep and r.ok:
@@ -313,9 +347,9 @@ def values(ws: Workspace, source: str | None = None, path: str | None = None,
     if not r.ok:
         return _summary(ws, r)
     vals = r.values_matching(names or [], sizes=True)
+    from ..diagnostics import did_you_mean
+    every = sorted({n for v in r.sizes() for n in _prefixes(v.name)}) if names else []
     if names and not vals:
-        from ..diagnostics import did_you_mean
-        every = sorted({n for v in r.sizes() for n in _prefixes(v.name)})
         asked = [n for n in names if isinstance(n, str)][:3]
         near = did_you_mean(asked[0], every, 3) if asked else []
         more = f" and {len(names) - 3} more" if len(names) > 3 else ""
@@ -323,8 +357,17 @@ def values(ws: Workspace, source: str | None = None, path: str | None = None,
                       + (f"; did you mean {', '.join(f'`{n}`' for n in near)}?" if near
                          else "; call `values` without `names` for every name"),
                       "no_match", "names")
-    return {"ok": True, "units": r.units, "values": [v.to_json() for v in vals],
-            "text": "\n".join(v.text() for v in vals)}
+    doc = {"ok": True, "units": r.units, "values": [v.to_json() for v in vals],
+           "text": "\n".join(v.text() for v in vals)}
+    # a name among several that matches nothing is said (issue 95: it was left out silently)
+    alone = [n for n in dict.fromkeys(names or []) if isinstance(n, str) and n.strip()
+             and not r.values_matching([n], sizes=True)][:10]
+    if alone:
+        doc["unmatched"] = [
+            f"no value matches `{n[:80]}`" + (f"; did you mean {', '.join(f'`{x}`' for x in near)}?"
+                                             if (near := did_you_mean(n, every, 3)) else "")
+            for n in alone]
+    return doc
 
 
 def _prefixes(name: str) -> list[str]:
@@ -363,7 +406,8 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
            budget: float | None = None, style: str = "preview", assembled: bool = False,
            layout: str | None = None, sheet: str | None = None, gap=None, rotate=None,
            kerf=None, thickness=None, machine=None,
-           page: str | None = None, picture: bool = False) -> tuple[dict, list[bytes]]:
+           page: str | None = None, picture: bool = False,
+           files: list | None = None) -> tuple[dict, list[bytes]]:
     """Compile, write ``output`` and draw: ``(summary, pictures)``.  The summary gives the
     figures of what was made (``size`` [width, height] mm of the drawing,
     ``parts``, ``fit``; ``job`` for a cutting file; ``layout`` on sheets); with ``picture``,
@@ -381,7 +425,10 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
     STL, 3MF, STEP, GLB; default the program's, else 3); ``page`` (a ``.pdf`` output tiled
     over paper of this size, ``"A4"``, ``"A4-landscape"``, ...; default one page the drawing's
     size).  Lengths are numbers of mm or strings with a unit.  ``machine``: G-code's machine
-    profile, ``laser``, ``router``, ``plotter`` or a TOML file inside the allowed folder."""
+    profile, ``laser``, ``router``, ``plotter`` or a TOML file inside the allowed folder.
+    ``files``: a list to put each file's ``(target, data, program, shown)`` in instead of
+    writing it (the server writes them in the order the calls were made: :mod:`.order`)."""
+    put = files.append if files is not None else lambda f: write_inside(ws, *f)
     if not isinstance(width, int) or not 16 <= width <= MAX_PNG_WIDTH:
         raise Refused(f"width is a number of pixels from 16 to {MAX_PNG_WIDTH}; got {width!r}",
                       "bad_argument", "width")
@@ -439,6 +486,7 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
     doc = _summary(ws, r)
     if not r.ok:
         return doc, []
+    from ..api import WriteError
     from ..output import MissingDependency, OutputError
     from ..output.fabrication.layout import LayoutError
     from ..output.writers.write import check_output_path
@@ -454,7 +502,7 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
                     check_output_path(f, prog)
                 for f, data in zip(files, sheets.encode(target.suffix, machine=prof, page=page,
                                                         **drawn)):
-                    _write_inside(ws, f, data, prog, ws.relative(f))
+                    put((f, data, prog, ws.relative(f)))
                 doc["written"] = ws.relative(files[0])
             use = sheets.use()
             doc["layout"] = {"sheets": sheets.sheets, "size": list(sheets.size),
@@ -470,7 +518,7 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
                 out = check_output_path(target, prog)
                 data = r.encode(out.suffix, kerf_mm, assembled=assembled, machine=prof,
                                 page=page, **drawn)
-                _write_inside(ws, target, data, prog, output)
+                put((target, data, prog, output))
                 doc["written"] = ws.relative(out)
                 if not assembled and out.suffix.lower() not in _SOLID_FORMATS:
                     from ..output import for_cutting
@@ -552,7 +600,7 @@ def describe(ws: Workspace, source: str | None = None, path: str | None = None,
     return doc
 
 
-def _write_inside(ws: Workspace, target: Path, data: bytes, program: str | None,
+def write_inside(ws: Workspace, target: Path, data: bytes, program: str | None,
                   shown: str) -> None:
     """Write ``data`` to ``target`` (a path below the root with no link in it, checked when
     the call came in: :meth:`Workspace.output`) through the folder opened from the root
@@ -561,6 +609,7 @@ def _write_inside(ws: Workspace, target: Path, data: bytes, program: str | None,
     written through, and a link at the file itself is refused
     (:func:`aidl_lang.output.writers.write.write_in_dir`); never over the program file ``program``.
     Raises ``OSError`` (:class:`aidl_lang.files.FileRefused`)."""
+    from ..output.writers.write import write_in_dir
     rel = target.relative_to(ws.root)
     dfd = open_dir_beneath(ws.root, rel.parent, create=True)
     try:
@@ -581,13 +630,14 @@ def _write_inside(ws: Workspace, target: Path, data: bytes, program: str | None,
 
 def import_drawing(ws: Workspace, path: str, infer: bool = True, parts: bool = False,
                    units: str | None = None, output: str | None = None,
-                   budget: float | None = None) -> dict:
+                   budget: float | None = None, files: list | None = None) -> dict:
     """``aidl import [--infer] [--parts] [--units U] FILE [-o OUTPUT]`` for the drawing
     ``path`` (a ``.dxf`` or ``.svg`` inside the root): ``{ok, program, notes, output}``, or
     ``{ok: false, diagnostics}`` for a drawing the importer refuses (its ``E013x``/``E0304``,
     docs/import.md).  ``infer``: the design (recognised shapes, loops, params: docs/import.md,
     "Inferring the design"), else the pieces.  ``output``: also write the program there
-    (``.aidl``, inside the root, never through a link).  Raises :class:`Refused`."""
+    (``.aidl``, inside the root, never through a link; with ``files``, put there as
+    :func:`render` does).  Raises :class:`Refused`."""
     from ..drawing.infer import import_drawing as _import
     from ..drawing.model import DrawingError
     from ..limits import DEFAULT_BUDGET
@@ -616,10 +666,13 @@ def import_drawing(ws: Workspace, path: str, infer: bool = True, parts: bool = F
     doc = {"ok": True, "program": text,
            "notes": [{"code": n.code, "message": n.message, "hint": n.hint} for n in notes]}
     if target is not None:
-        try:
-            _write_inside(ws, target, text.encode("utf-8"), None, output)
-        except OSError as e:
-            raise Refused(str(e), "output_failed", "output") from None
+        if files is not None:
+            files.append((target, text.encode("utf-8"), None, output))
+        else:
+            try:
+                write_inside(ws, target, text.encode("utf-8"), None, output)
+            except OSError as e:
+                raise Refused(str(e), "output_failed", "output") from None
         doc["output"] = ws.relative(target)
     doc["check"] = _check_summary(ws, text, target or real.with_suffix(".aidl"), k)
     return doc
@@ -646,7 +699,7 @@ def _check_summary(ws: Workspace, text: str, where: Path, budget: float) -> dict
 
 def write_program(ws: Workspace, path: str, text: str | None = None, old: str | None = None,
                   new: str | None = None, start: int | None = None, end: int | None = None,
-                  dof: bool = False) -> dict:
+                  dof: bool = False, files: list | None = None) -> dict:
     """Write the program file ``path`` (``.aidl``, inside the root, never through a link,
     its folders made) and check it: the whole ``text``; or a patch of the file as it is:
     ``old`` -> ``new`` (``old`` found exactly once), or the characters ``start`` to ``end``
@@ -654,7 +707,8 @@ def write_program(ws: Workspace, path: str, text: str | None = None, old: str | 
     ``new``.  Returns :func:`check`'s result of the file written, with ``written`` (the path)
     and ``lines``.  Raises :class:`Refused` (``no_match``: ``old`` not found; ``not_unique``:
     found more than once; ``bad_argument``: a mix of the three ways, or offsets outside the
-    file)."""
+    file).  ``files``: a list to put the file in instead of writing it, as :func:`render`
+    does (the check is of the text, as the file will hold it)."""
     ways = [text is not None, old is not None, start is not None or end is not None]
     if sum(ways) != 1:
         raise Refused("give one of: `text` (the whole program), `old` with `new` (replace "
@@ -690,18 +744,30 @@ def write_program(ws: Workspace, path: str, text: str | None = None, old: str | 
     if len(text) > MAX_SOURCE:
         raise Refused(f"the program is longer than {MAX_SOURCE} characters", "bad_argument",
                       "text")
-    try:
-        _write_inside(ws, target, text.encode("utf-8"), None, path)
-    except OSError as e:
-        raise Refused(str(e), "output_failed", "path") from None
-    doc = check(ws, path=ws.relative(target), dof=dof)
-    doc["written"] = ws.relative(target)
+    doc = _written_and_checked(ws, target, text, path, files, dof)
     doc["lines"] = text.count("\n") + (not text.endswith("\n") and bool(text))
     return doc
 
 
+def _written_and_checked(ws: Workspace, target: Path, text: str, shown: str,
+                         files: list | None, dof: bool, budget: float | None = None) -> dict:
+    """Write the program ``text`` to ``target`` (or put it in ``files``: :func:`render`) and
+    :func:`check` it as that file: the answer, with ``written``."""
+    if files is not None:
+        files.append((target, text.encode("utf-8"), None, shown))
+    else:
+        try:
+            write_inside(ws, target, text.encode("utf-8"), None, shown)
+        except OSError as e:
+            raise Refused(str(e), "output_failed", "path") from None
+    k = ws.budget if budget is None else budget
+    doc = _checked(ws, compile_program(source=text, path=str(target), budget=k), dof, budget)
+    doc["written"] = ws.relative(target)
+    return doc
+
+
 def set_params(ws: Workspace, path: str, values: dict, dof: bool = False,
-               budget: float | None = None) -> dict:
+               budget: float | None = None, files: list | None = None) -> dict:
     """Set the ``param`` values ``values`` (name -> value: ``"50 mm"``, a number in the
     file's units, a bool) in the program file ``path`` (:func:`aidl_lang.api.set_params`:
     only each value's text changes, comments and formatting kept), write it and check it:
@@ -723,13 +789,7 @@ def set_params(ws: Workspace, path: str, values: dict, dof: bool = False,
                       "bad_argument", "values") from None
     except ValueError as e:
         raise Refused(str(e), "bad_argument", "path") from None
-    try:
-        _write_inside(ws, target, text.encode("utf-8"), None, path)
-    except OSError as e:
-        raise Refused(str(e), "output_failed", "path") from None
-    doc = check(ws, path=ws.relative(target), dof=dof, budget=budget)
-    doc["written"] = ws.relative(target)
-    return doc
+    return _written_and_checked(ws, target, text, path, files, dof, budget)
 
 
 def measure(ws: Workspace, a: str, b: str, source: str | None = None,

@@ -22,6 +22,9 @@ from ..limits import DEFAULT_BUDGET, wall_limit
 from . import tools as T
 
 POOL_SIZE = 3               # calls that may run at the same time (each in its own process)
+# the tools whose files come back from the worker as ``(answer, files)``, written by the
+# server in the order the calls were made (:mod:`.order`)
+WRITERS = ("render", "import_drawing", "write_program", "set_params")
 
 
 def _handler(root: str, budget: float):
@@ -37,10 +40,15 @@ def _handler(root: str, budget: float):
                         "write_program", "set_params", "measure"):
             return False, T.Refused(f"unknown tool `{name}`")
         oom = False
+        given = program_argument(name, args) == "source"
         try:
-            return True, getattr(T, name)(ws, *args)
+            if name in WRITERS:         # the files come back: the server writes them in order
+                files: list = []
+                got = getattr(T, name)(ws, *args, files=files)
+                return True, (T.unrooted(ws, got, given), files)
+            return True, T.unrooted(ws, getattr(T, name)(ws, *args), given)
         except T.Refused as e:
-            return False, T.Refused(str(e), e.code, e.argument)
+            return False, T.Refused(T.unrooted(ws, str(e), given), e.code, e.argument)
         except BaseException as e:      # noqa: BLE001 - answered, never a silent worker
             from ..limits import is_out_of_memory
             oom = is_out_of_memory(e)

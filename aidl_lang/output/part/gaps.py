@@ -14,6 +14,7 @@ import math
 import numpy as np
 
 from ...geometry.curves import Arc, Circle, Line, sample_xy
+from ...geometry.tessellate import CHORD_TOL
 
 TAU = 2 * math.pi
 Point = tuple[float, float]
@@ -177,10 +178,15 @@ def gap(a: list[tuple], b: list[tuple]) -> tuple[float, Point, Point]:
 def _polygon(loops) -> list[np.ndarray]:
     out = []
     for lp in loops:
-        pts = lp.points(1e-4)
+        pts = lp.points(CHORD)
         if len(pts) >= 3:
             out.append(pts)
     return out
+
+
+# mm: the chords' sagitta in the polygons of a region (the outlines' own chord tolerance:
+# Loop.points takes no finer)
+CHORD = CHORD_TOL
 
 
 def _inside(p: Point, polys: list[np.ndarray]) -> bool:
@@ -197,23 +203,41 @@ def _inside(p: Point, polys: list[np.ndarray]) -> bool:
     return inside
 
 
+def regions(loops) -> list[list]:
+    """``loops`` as a list of regions, each a list of loops (one part's: holes clockwise):
+    a list of loops is one region; a list of lists (an assembly's parts) is one region each."""
+    if loops and isinstance(loops[0], (list, tuple)):
+        return [list(r) for r in loops if r]
+    return [list(loops)] if loops else []
+
+
 def clearance(loops_a, loops_b) -> dict:
-    """How two regions (lists of exact :class:`~aidl_lang.geometry.curves.Loop`, holes
-    clockwise) lie: ``{"clearance" mm, "contact", "points"}``.  ``contact`` ``apart``: the
+    """How two regions lie (each a list of exact :class:`~aidl_lang.geometry.curves.Loop`,
+    holes clockwise, or a list of such lists: the union of several parts, :func:`regions`):
+    ``{"clearance" mm, "contact", "points"}``.  ``contact`` ``apart``: the
     smallest gap between their outlines, exact; ``touching``: 0, the outlines meet without
     the regions sharing area; ``overlapping``: the regions share area (one may hold the
     other), ``clearance`` the negative of how deep the deepest point of one outline lies
-    inside the other (exact for circles; else over the outlines' vertices within 1e-4 mm),
-    ``overlap_area`` mm² (Manifold, over chords within 1e-4 mm)."""
+    inside the other (exact for circles; else over the outlines' vertices, chords within
+    :data:`CHORD`),
+    ``overlap_area`` mm²: exact for two regions of lines, arcs and circles
+    (:func:`.overlap.shared_area`); else Manifold's over chords within :data:`CHORD`, rounded
+    to the digits it holds, with ``overlap_area_within``: its bound (mm², the chords' sagitta
+    times the outlines' length)."""
     import manifold3d as mf
-    pa = pieces([s for lp in loops_a for s in lp.segments])
-    pb = pieces([s for lp in loops_b for s in lp.segments])
+    from .overlap import shared_area
+    ra, rb = regions(loops_a), regions(loops_b)
+    pa = pieces([s for r in ra for lp in r for s in lp.segments])
+    pb = pieces([s for r in rb for lp in r for s in lp.segments])
     d, p, q = gap(pa, pb)
-    A, B = _polygon(loops_a), _polygon(loops_b)
-    sa = mf.CrossSection([P.tolist() for P in A], mf.FillRule.EvenOdd)
-    sb = mf.CrossSection([P.tolist() for P in B], mf.FillRule.EvenOdd)
+    A, B = [_polygon(r) for r in ra], [_polygon(r) for r in rb]
+    sa, sb = (_union([mf.CrossSection([P.tolist() for P in g], mf.FillRule.EvenOdd)
+                      for g in G]) for G in (A, B))
     shared = (sa ^ sb).area()
     small = 1e-6 * max(1.0, min(sa.area(), sb.area()))
+    # the exact area where the estimate finds some (the outlines meet or one holds the other)
+    exact = shared_area(ra[0], rb[0]) if shared > 0 and len(ra) == len(rb) == 1 else None
+    shared = shared if exact is None else exact
     if shared <= small:
         contact = "touching" if d <= 1e-9 else "apart"
         return {"clearance": 0.0 if contact == "touching" else d, "contact": contact,
@@ -221,7 +245,7 @@ def clearance(loops_a, loops_b) -> dict:
     depth = 0.0
     for own, other, P in ((pa, pb, A), (pb, pa, B)):
         circ = [x for x in other if x[0] == "A" and x[4] >= TAU - 1e-15]
-        cands = [tuple(v) for poly in P for v in poly]
+        cands = [tuple(v) for g in P for poly in g for v in poly]
         for c in own:                   # a circle's deepest point: on the line of centres
             if c[0] == "A" and c[4] >= TAU - 1e-15:
                 for o in circ:
@@ -229,9 +253,23 @@ def clearance(loops_a, loops_b) -> dict:
                     if dd > 0:
                         ux, uy = (o[1][0] - c[1][0]) / dd, (o[1][1] - c[1][1]) / dd
                         cands.append((c[1][0] + c[2] * ux, c[1][1] + c[2] * uy))
-        polys = B if own is pa else A
+        groups = B if own is pa else A
         for v in cands:
-            if _inside(v, polys):
+            if any(_inside(v, g) for g in groups):
                 depth = max(depth, gap([("L", v, v)], other)[0])
-    return {"clearance": -depth if depth else 0.0, "contact": "overlapping", "overlap_area": shared,
-            "points": [list(p), list(q)]}
+    out = {"clearance": -depth if depth else 0.0, "contact": "overlapping",
+           "overlap_area": shared, "points": [list(p), list(q)]}
+    if exact is None:
+        bound = CHORD * sum(lp.perimeter for r in ra + rb for lp in r)
+        digits = max(0, -math.floor(math.log10(bound))) if bound > 0 else 9
+        out["overlap_area"] = round(shared, digits)
+        out["overlap_area_within"] = float(f"{bound:.1g}")
+    return out
+
+
+def _union(sections: list):
+    """The union of Manifold cross-sections (one region each)."""
+    out = sections[0]
+    for s in sections[1:]:
+        out = out + s
+    return out
