@@ -24,7 +24,7 @@ from pathlib import Path
 from . import ast as A
 from .registry import (BBOX_MEMBERS, CONSTANTS, ENTRIES, FUNCTIONS, SWAPPED, SYNONYM_DOCS,
                        SYNONYMS, UNITS_ANGLE, UNITS_LENGTH, Entry, arg_synonyms)
-from .geometry.transforms import EXAMPLE_LINES as _TRANSFORM_LINES
+from .geometry.scaling import EXAMPLE_LINES as _TRANSFORM_LINES
 from .sources import STDLIB
 
 # ---------------------------------------------------------------- units of parameters

@@ -20,13 +20,6 @@ from .values import PV, GeomRef, StructRef
 IN_PLACE = {"Scale": "Scaled", "Translate": "Translated", "Flip": "Mirrored"}
 
 # `aidl docs` examples (reference.EXAMPLES): the line in a plate with a 4 mm hole at (-20, -10)
-EXAMPLE_LINES = {
-    "Scaled": "small = Scaled(h, 0.5, center=(20, 10))    # a 2 mm hole at (0, 0)",
-    "Scale": "Scale(h, 1.5, center=(-20, -10))    # the hole 6 mm across, where it was",
-    "Translated": "m = Translated(h, by=(30, 0))    # a copy at (10, -10)",
-    "Translate": "Translate(h, (30, 20))    # the hole moved to (10, 10)",
-    "Flip": "Flip(h, about=axis)    # the hole now at (20, -10), mirrored",
-}
 
 
 def _scale(c: PV, k: float):
