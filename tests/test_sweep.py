@@ -42,7 +42,9 @@ solid plate {
 
 def test_a_hole_leaving_its_plate_inside_the_range_is_found_and_the_range_narrowed():
     rep = sweep(HOLE, "plate.aidl")
-    assert rep.ok and rep.swept == ["offset"] and rep.unranged == ["r"]
+    # r declares no range: swept across its slider's default span (0.74-6 mm), clean there
+    assert rep.ok and rep.swept == ["offset", "r"] and rep.unranged == ["r"]
+    assert "`r` (no declared range, swept 0.74-6 mm): clean 0.74-6 mm" in rep.text()
     [f] = rep.findings
     assert f.values == {"offset": 30.0}          # the high end, where the hole cuts nothing
     assert f.code == "W0502"
@@ -53,7 +55,10 @@ def test_a_hole_leaving_its_plate_inside_the_range_is_found_and_the_range_narrow
     assert d.code == "W0110" and d.severity == "warning"
     assert d.span.line == 1 and d.span.col == 1              # the `param offset` line
     assert "offset=30 mm" in d.message and "W0502" in d.message and "W0507" in d.message
-    assert f"max={hi:.12g} mm" in d.hint
+    assert f"max={hi:.12g} mm" in d.hint and "(bisected: 0.3 mm)" in d.hint
+    # the fix writes the clean range into the declaration
+    assert d.fix.replacement == f"10 mm, min = 0 mm, max = {hi:.12g} mm"
+    assert HOLE[d.fix.span.start:d.fix.span.end] == "10 mm, min = 0 mm, max = 30 mm"
 
 
 def test_a_design_clean_across_its_ranges_has_no_finding():
@@ -73,19 +78,25 @@ def test_the_solver_is_reused_between_points():
     assert rep.warm == rep.points
 
 
-def test_the_budget_bounds_the_sweep_and_says_how_many_points_were_skipped():
-    planned = sweep(CLEAN, "plate.aidl").points
-    rep = sweep(CLEAN, "plate.aidl", seconds=0.0)
+def test_the_budget_bounds_the_sweep_and_says_how_many_points_were_not_judged():
+    full = sweep(CLEAN, "plate.aidl")
+    planned = full.points
+    rep = sweep(CLEAN, "plate.aidl", seconds=0.0)        # the CPU guard: nothing judged
     assert rep.points == 0 and rep.skipped == planned and rep.findings == []
-    assert f"{rep.skipped} points skipped" in rep.text()
+    assert f"{rep.skipped} planned points not judged, out of budget" in rep.text()
+    # the work budget: each compile costs the same units on any machine
+    per = full.work / full.points
+    rep = sweep(CLEAN, "plate.aidl", work=3.5 * per)
+    assert rep.points == 4 and rep.skipped == planned - 4
 
 
-def test_params_without_a_range_are_named_once_and_not_swept():
+def test_params_without_a_range_are_swept_across_the_sliders_span():
     rep = sweep("param w = 40 mm\nsolid s { b = Rectangle(center=(0, 0), width=w, height=10) }",
                 "s.aidl")
-    assert rep.swept == [] and rep.unranged == ["w"] and rep.points == 0
-    assert rep.text().count("not swept (no declared range): w") == 1
-    assert "nothing swept" in rep.text()
+    assert rep.swept == ["w"] and rep.unranged == ["w"] and rep.points == 3
+    assert rep.ranges == {"w": (10.0, 80.0)}           # default_span: a quarter to twice
+    assert "`w` (no declared range, swept 10-80 mm): clean 10-80 mm" in rep.text()
+    assert "nothing swept" not in rep.text()
 
 
 def test_a_program_that_does_not_compile_is_not_swept():
@@ -124,7 +135,8 @@ def test_cli_check_sweep(tmp_path):
                        capture_output=True, text=True, env=env, cwd=str(ROOT))
     assert p.returncode == 0                # a finding is a warning
     assert "warning[W0110]" in p.stderr + p.stdout
-    assert "1 finding (W0110)" in p.stdout and "not swept (no declared range): r" in p.stdout
+    assert "1 finding (W0110)" in p.stdout
+    assert "`r` (no declared range, swept 0.74-6 mm): clean 0.74-6 mm" in p.stdout
     p = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", str(f), "--sweep",
                         "--json"], capture_output=True, text=True, env=env, cwd=str(ROOT))
     doc = json.loads(p.stdout)
@@ -148,7 +160,7 @@ async def test_mcp_check_with_sweep_through_the_sdk_client(tmp_path):
             await session.initialize()
             r = await session.call_tool("check", {"source": HOLE, "sweep": True})
             doc = r.structured_content
-            assert doc["ok"] and doc["sweep"]["swept"] == ["offset"]
+            assert doc["ok"] and doc["sweep"]["swept"] == ["offset", "r"]
             [f] = doc["sweep"]["findings"]
             assert f["values"] == {"offset": 30.0} and f["code"] == "W0502"
             assert 21.2 <= f["clean"]["offset"][1] < 21.5
