@@ -286,7 +286,10 @@ class _Sweep:
                 p.on_grid(self.tol)
                 self.params.append(p)
             elif why == "fixed":
-                self.report.fixed.append(f"{st.name} = {value_text(q.const() * display(q)[1], display(q)[0], True)}")
+                unit, k = display(q)
+                x = round(q.const() * k, 9)
+                whole = not unit and float(x).is_integer()
+                self.report.fixed.append(f"{st.name} = {value_text(x, unit, whole)}")
 
     def _counts(self, name: str, v: float, rng: dict) -> bool:
         """Whether the plain whole-number param ``name`` (value ``v``, declared range ``rng``)

@@ -351,3 +351,69 @@ def test_a_generator_assert_over_its_arguments_is_the_forms_range(id, values, pa
         assert "219.5 mm .. 440 mm" in r.errors[0].message
         r = gallery.compile_entry(e, dict(values, width="219.5"))
         assert r.ok and [d.code for d in r.diagnostics if d.severity != "info"] == []
+
+
+# ------------------------------------------------------------- honest judgements (issue 92)
+def test_a_range_other_values_empty_is_a_finding():
+    """b's range starts at a + 5 mm and ends at 70 mm: past a = 65 mm no b fits (E0124);
+    that is a finding (it was called clean), bisected to a's 65 mm."""
+    src = ("param a = 50 mm, min = 40 mm, max = 80 mm\n"
+           "param b = 60 mm, min = a + 5 mm, max = 70 mm\n\n"
+           "solid plate { body = Rectangle(center=(0, 0), width=a + b, height=20) }\n")
+    rep = sweep(src, "s.aidl", points=0)
+    [f] = rep.findings
+    assert f.code == "E0124" and f.values == {"a": 80.0}
+    assert 65.0 - 0.4 - 0.2 <= f.clean["a"][1] <= 65.0
+
+
+def test_a_plain_number_is_a_real_unless_it_counts():
+    """k = 1 in 0..3 scales a radius: swept as a real (0.5 and 1.5 are clean), not narrowed to
+    `min=1, max=1`; n in range() counts; m given to a count's place is refused at 2.5 and
+    counts too."""
+    src = ("param k = 1, min = 0, max = 3\nparam n = 3, min = 1, max = 5\n"
+           "solid plate {\n    body = Rectangle(center=(0, 0), width=80, height=30)\n"
+           "    for i in range(n) {\n"
+           "        hole h { c = Circle(center=(-30 + 12 * i, 0), radius=2 * k) }\n    }\n}\n")
+    rep = sweep(src, "s.aidl", points=0)
+    by = {f.values["k"]: f for f in rep.findings if "k" in f.values}
+    assert set(by) == {0.0, 3.0}                  # a zero radius; the holes merge
+    lo, hi = rep.clean_ranges()["k"]
+    assert 0 < lo < 0.1 and 2.875 - 0.03 - 0.02 <= hi <= 2.88   # 12 mm apart: 4k < 11.5
+    assert "min=1, max=1" not in "".join(d.hint for d in rep.diagnostics)
+    assert "k=1.5" not in "".join(d.message for d in rep.diagnostics)
+    assert rep.ranges["n"] == (1.0, 5.0)
+    assert all(float(v).is_integer() for f in rep.findings for n, v in f.values.items()
+               if n == "n")
+
+
+def test_a_range_of_one_value_is_said_as_such():
+    rep = sweep("param w = 40 mm, min = 40 mm, max = 40 mm\n"
+                "solid s { b = Rectangle(center=(0, 0), width=w, height=10) }", "s.aidl")
+    assert rep.swept == [] and rep.fixed == ["w = 40 mm"]
+    assert "not swept (`min` = `max`, one value): w = 40 mm" in rep.text()
+    assert "no declared range" not in rep.text()
+
+
+def test_set_and_mcp_set_params_refuse_a_value_with_a_comment(tmp_path):
+    """`aidl set x.aidl 'w=50 mm # x'` wrote the value verbatim: the comment hid the range
+    (`w=500 mm` was then accepted).  Refused now, located at the value, the file untouched;
+    MCP `set_params` refuses it the same (bad_argument)."""
+    from aidl_lang.mcp import tools as T
+    src = ("param w = 40 mm, min = 10 mm, max = 80 mm\n"
+           "solid s { b = Rectangle(center=(0, 0), width=w, height=10) }\n")
+    f = tmp_path / "x.aidl"
+    f.write_text(src)
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    p = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "set", str(f), "w=50 mm # x"],
+                       capture_output=True, text=True, env=env, cwd=str(ROOT))
+    assert p.returncode == 1 and f.read_text() == src
+    assert "x.aidl:1:11: error[E0113]" in p.stderr
+    assert "(`, min = 10 mm, max = 80 mm` and its range with it)" in p.stderr
+    assert "hint: give the value alone: `w=50 mm`" in p.stderr
+    with pytest.raises(T.Refused) as e:
+        T.set_params(T.Workspace(tmp_path), "x.aidl", {"w": "50 mm /* x */"})
+    assert e.value.code == "bad_argument" and "holds a comment" in str(e.value)
+    assert f.read_text() == src
+    # a `#` inside a string value is text, not a comment
+    from aidl_lang.api import _comment_at
+    assert _comment_at('"no #1"') == -1 and _comment_at('"a" # b') == 4
