@@ -155,12 +155,17 @@ class SweepReport:
                         "not judged, out of budget (--budget K gives K times more)")
         clean = self.clean_ranges()
         for name in self.unranged:
+            if name not in self.ranges:
+                continue
             lo, hi = self.ranges[name]
             u = self.units.get(name, "")
             a, b = clean.get(name, (lo, hi))
             whole = u == "" and all(float(x).is_integer() for x in (lo, hi, a, b))
             out += (f"\nsweep: `{name}` (no declared range, swept {_span(lo, hi, u, whole)}): "
                     f"clean {_span(a, b, u, whole)}")
+        left = [n for n in self.unranged if n not in self.ranges]
+        if left:
+            out += f"\nsweep: not swept (no declared range): {', '.join(left)}"
         for line in self.not_judged():
             out += f"\nsweep: {line}"
         if self.fixed:
@@ -195,13 +200,16 @@ def _display(q):
 
 def sweep(source: str, path: str = "<source>", budget: float | Budget | None = None,
           points: int = LHS_POINTS, seconds: float | None = None, seed: int = SEED,
-          tolerance: float = TOLERANCE, work: float | None = None) -> SweepReport:
+          tolerance: float = TOLERANCE, work: float | None = None,
+          unranged: bool = True) -> SweepReport:
     """Check ``source`` (named ``path``: diagnostics and imports) across its params'
     ranges (see the module's docstring).  ``budget``: each compile's budget, a factor or a
     :class:`~aidl_lang.limits.Budget` as :func:`aidl_lang.compile`, which also scales the
     sweep's work (:data:`~aidl_lang.sweep_plan.WORK` units; ``work`` overrides it): what
     the points share, counted the same on any machine; ``seconds``: the outer guard, the
-    whole sweep's CPU seconds (default: the budget's); ``points``: the Latin hypercube's
+    whole sweep's CPU seconds (default: the budget's); ``unranged``: False sweeps only the
+    params with a declared ``min=`` and ``max=`` (the others as before issue 92, named in
+    ``unranged`` and not swept); ``points``: the Latin hypercube's
     size (0: only the ends and middles); ``tolerance``: the bisection's stopping width, a
     fraction of each range.  Never raises for a mistake in the program (the report's
     ``errors``); :class:`ValueError` for ``points < 0`` or a tolerance outside (0, 0.5]."""
@@ -211,12 +219,14 @@ def sweep(source: str, path: str = "<source>", budget: float | Budget | None = N
     b = budget if isinstance(budget, Budget) else (
         DEFAULT_BUDGET if budget is None else DEFAULT_BUDGET.scaled(float(budget)))
     w = WORK * b.steps / DEFAULT_BUDGET.steps if work is None else float(work)
-    return run_deep(lambda: _Sweep(source, path, b, points, seed, tolerance, w).run(
+    return run_deep(lambda: _Sweep(source, path, b, points, seed, tolerance, w, unranged).run(
         b.seconds if seconds is None else float(seconds)))
 
 
 class _Sweep:
-    def __init__(self, source, path, budget, points, seed, tolerance, work_units):
+    def __init__(self, source, path, budget, points, seed, tolerance, work_units,
+                 unranged=True):
+        self.defaults = unranged
         self.source, self.path, self.budget = source, str(path), budget
         self.n_lhs, self.seed, self.tol = points, seed, tolerance
         self.report = SweepReport()
@@ -252,8 +262,8 @@ class _Sweep:
         self.hints: dict = {}
         self.params = []
         self._params(base.fctx)
+        rep.unranged += [p.name for p in self.params if not p.declared]
         rep.swept = [p.name for p in self.params]
-        rep.unranged = [p.name for p in self.params if not p.declared]
         rep.tolerance = self.tol
         rep.ranges = {p.name: (p.lo, p.hi) for p in self.params}
         rep.units = {p.name: p.unit for p in self.params}
@@ -279,6 +289,10 @@ class _Sweep:
             counts = st.name in counted or bool(
                 not display(q)[0] and (r or {}).get("step")
                 and float((r or {}).get("step")).is_integer())
+            declared = r is not None and r.get("min") is not None and r.get("max") is not None
+            if not declared and not self.defaults:
+                self.report.unranged.append(st.name)
+                continue
             if ambiguous(st, q, r, counted):
                 counts = self._counts(st.name, q.const(), r or {})
             p, why = make_param(st, q, r, counts)
