@@ -149,7 +149,7 @@ class SweepReport:
             its = "its range" if len(self.swept) == 1 else "their ranges"
             out = (f"sweep: {', '.join(self.swept)} across {its}: {self.points} points, "
                    + (f"{n} finding{'s' if n != 1 else ''} (W0110)" if n else "clean")
-                   + f"; bounds bisected to {self.tolerance:.3g} of each range")
+                   + f"; bounds bisected to {100 * self.tolerance:.3g}% of each range")
             if self.skipped:
                 out += (f"; {self.skipped} planned point{'s' if self.skipped != 1 else ''} "
                         "not judged, out of budget (--budget K gives K times more)")
