@@ -105,9 +105,12 @@ class SweepReport:
 
     def clean_ranges(self) -> dict:
         """``{param: (lo, hi)}`` (display units): each swept param's range, narrowed to the
-        clean sub-range of every finding that moved it."""
+        clean sub-range of every finding that moved it alone (a combination is a finding of
+        its own, :meth:`combinations`, not a narrowing of each of its params)."""
         out = {}
         for f in self.findings:
+            if len(f.clean) != 1:
+                continue
             for name, (lo, hi) in f.clean.items():
                 a, b = out.get(name, (lo, hi))
                 out[name] = (max(a, lo), min(b, hi))
@@ -117,6 +120,23 @@ class SweepReport:
     def diagnostics(self) -> list[Diagnostic]:
         """The findings' ``W0110`` diagnostics."""
         return [f.diagnostic for f in self.findings]
+
+    def combinations(self) -> list[str]:
+        """Each combination finding in words: ``teeth below 14 with bore above 13 mm: E0405``
+        (each param's side of the written value and the end of what bisection found clean
+        on the way there)."""
+        out = []
+        for f in self.findings:
+            if len(f.clean) < 2:
+                continue
+            parts = []
+            for n, (lo, hi) in f.clean.items():
+                unit = self.units.get(n, "")
+                v = f.values[n]
+                side, end = ("above", hi) if v > hi else ("below", lo)
+                parts.append(f"`{n}` {side} {_text(end, unit, not unit and float(end).is_integer())}")
+            out.append(f"{' with '.join(parts)}: {f.code}")
+        return out
 
     def not_judged(self) -> list[str]:
         """``pitch below 4 mm: not judged, out of budget`` for each finding whose bisection
@@ -163,6 +183,8 @@ class SweepReport:
             whole = u == "" and all(float(x).is_integer() for x in (lo, hi, a, b))
             out += (f"\nsweep: `{name}` (no declared range, swept {_span(lo, hi, u, whole)}): "
                     f"clean {_span(a, b, u, whole)}")
+        for line in self.combinations():
+            out += f"\nsweep: combination: {line}"
         left = [n for n in self.unranged if n not in self.ranges]
         if left:
             out += f"\nsweep: not swept (no declared range): {', '.join(left)}"
@@ -177,7 +199,7 @@ class SweepReport:
                 "fixed": self.fixed, "points": self.points, "skipped": self.skipped,
                 "warm": self.warm, "tolerance": self.tolerance,
                 "ranges": {k: list(v) for k, v in self.ranges.items()},
-                "not_judged": self.not_judged(),
+                "not_judged": self.not_judged(), "combinations": self.combinations(),
                 "findings": [{"values": f.values, "code": f.code, "message": f.message,
                               "clean": {k: list(v) for k, v in f.clean.items()},
                               "declared": f.declared, "cut": f.cut}
@@ -201,7 +223,8 @@ def _display(q):
 def sweep(source: str, path: str = "<source>", budget: float | Budget | None = None,
           points: int = LHS_POINTS, seconds: float | None = None, seed: int = SEED,
           tolerance: float = TOLERANCE, work: float | None = None,
-          unranged: bool = True) -> SweepReport:
+          unranged: bool = True, values: dict | None = None,
+          spans: dict | None = None) -> SweepReport:
     """Check ``source`` (named ``path``: diagnostics and imports) across its params'
     ranges (see the module's docstring).  ``budget``: each compile's budget, a factor or a
     :class:`~aidl_lang.limits.Budget` as :func:`aidl_lang.compile`, which also scales the
@@ -209,7 +232,10 @@ def sweep(source: str, path: str = "<source>", budget: float | Budget | None = N
     the points share, counted the same on any machine; ``seconds``: the outer guard, the
     whole sweep's CPU seconds (default: the budget's); ``unranged``: False sweeps only the
     params with a declared ``min=`` and ``max=`` (the others as before issue 92, named in
-    ``unranged`` and not swept); ``points``: the Latin hypercube's
+    ``unranged`` and not swept); ``values``: ``--set`` texts every compile starts from (the
+    studio's sliders where they are: each param is then swept with the others at these
+    values); ``spans``: ``{param: (lo, hi)}`` (display units) swept for a param that
+    declares no range instead of its default span (the sliders' own); ``points``: the Latin hypercube's
     size (0: only the ends and middles); ``tolerance``: the bisection's stopping width, a
     fraction of each range.  Never raises for a mistake in the program (the report's
     ``errors``); :class:`ValueError` for ``points < 0`` or a tolerance outside (0, 0.5]."""
@@ -219,14 +245,15 @@ def sweep(source: str, path: str = "<source>", budget: float | Budget | None = N
     b = budget if isinstance(budget, Budget) else (
         DEFAULT_BUDGET if budget is None else DEFAULT_BUDGET.scaled(float(budget)))
     w = WORK * b.steps / DEFAULT_BUDGET.steps if work is None else float(work)
-    return run_deep(lambda: _Sweep(source, path, b, points, seed, tolerance, w, unranged).run(
+    return run_deep(lambda: _Sweep(source, path, b, points, seed, tolerance, w, unranged,
+                                   dict(values or {}), dict(spans or {})).run(
         b.seconds if seconds is None else float(seconds)))
 
 
 class _Sweep:
     def __init__(self, source, path, budget, points, seed, tolerance, work_units,
-                 unranged=True):
-        self.defaults = unranged
+                 unranged=True, values=None, spans=None):
+        self.defaults, self.values, self.spans = unranged, values or {}, spans or {}
         self.source, self.path, self.budget = source, str(path), budget
         self.n_lhs, self.seed, self.tol = points, seed, tolerance
         self.report = SweepReport()
@@ -296,6 +323,9 @@ class _Sweep:
             if ambiguous(st, q, r, counted):
                 counts = self._counts(st.name, q.const(), r or {})
             p, why = make_param(st, q, r, counts)
+            if p is not None and not p.declared and st.name in self.spans:
+                lo, hi = self.spans[st.name]
+                p.lo, p.hi = min(lo, p.value), max(hi, p.value)
             if p is not None:
                 p.on_grid(self.tol)
                 self.params.append(p)
@@ -327,7 +357,7 @@ class _Sweep:
         sink = DiagnosticSink()
         sink.sources.update(self.sources)
         own = now() + self.budget.seconds      # the written values' compile: its own budget
-        interp = Interpreter(sink, ov, self.budget,
+        interp = Interpreter(sink, {**self.values, **ov}, self.budget,
                              deadline=own if self.end is None else min(own, self.end))
         model = interp.run(self.program)
         out = _Point(sink, interp.file)
@@ -375,7 +405,9 @@ class _Sweep:
                 continue                    # past a bound a finding already narrowed
             t, start, cut = self._bisect(written, vals)
             for p in moved:
-                x = p.at(written[p.name] + t * (vals[p.name] - written[p.name]))
+                # the value judged clean (t = 0: the written value itself, off the grid)
+                x = p.at(written[p.name] + t * (vals[p.name] - written[p.name])) if t > 0 \
+                    else written[p.name]
                 lo, hi = clean[p.name]
                 clean[p.name] = [lo, min(hi, x)] if vals[p.name] > written[p.name] \
                     else [max(lo, x), hi]
@@ -418,7 +450,9 @@ class _Sweep:
         self.report.points += 1
         if ov is None:
             by = {p.name: p for p in self.params}
-            ov = {n: by[n].text(x) for n, x in vals.items()}
+            # only the params moved: one computed from them (`param pitch = af + wall`)
+            # follows them as it does under `--set`
+            ov = {n: by[n].text(x) for n, x in vals.items() if x != by[n].value}
         res = self._compile(ov)
         cost = res.cost
         for _ in range(CLAMPS):

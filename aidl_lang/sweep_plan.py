@@ -11,13 +11,15 @@ import math
 
 # work units of one sweep at budget factor 1: each compile costs PER_COMPILE plus its
 # interpreter steps, objects and the model's unknowns, and PER_DIAGNOSTIC for each thing it
-# says (:func:`work`).  Measured (quiet cores): 6-25 us of CPU a unit over the 20 examples'
-# sweeps, 24 us on the 8,000-hole panel (a clean point ~80,000 units, 1.6 s; at pitch 2 mm
-# its 31,463 warnings ~550,000 units, 10.3 s): a sweep stops after about 10 s of CPU at
-# most, under the compile's 15 s (the outer guard, :func:`aidl_lang.limits.now`)
-WORK = 400_000
+# says (:func:`work`).  Measured: 6-25 us of CPU a unit over the 20 examples' sweeps, 19 us
+# on the gallery's planetary (18 points, 670,000 units, 12.5 s at load 12 on 2 cores); a
+# diagnostic costs 280-670 us (the 8,000-hole panel at pitch 2 mm: 31,463 overlaps in 10.3 s;
+# at 3 mm 7,921 thin walls in 6.9 s), so one that says thousands spends the budget alone.
+# A sweep stops after about 13 s of CPU at most, under the compile's 15 s (the outer guard,
+# :func:`aidl_lang.limits.now`, reached only by a point far costlier than its units)
+WORK = 700_000
 PER_COMPILE = 2_000
-PER_DIAGNOSTIC = 15
+PER_DIAGNOSTIC = 40
 
 
 def work(interp, model, sink=None) -> int:
