@@ -224,7 +224,7 @@ def sweep(source: str, path: str = "<source>", budget: float | Budget | None = N
           points: int = LHS_POINTS, seconds: float | None = None, seed: int = SEED,
           tolerance: float = TOLERANCE, work: float | None = None,
           unranged: bool = True, values: dict | None = None,
-          spans: dict | None = None) -> SweepReport:
+          spans: dict | None = None, only=None) -> SweepReport:
     """Check ``source`` (named ``path``: diagnostics and imports) across its params'
     ranges (see the module's docstring).  ``budget``: each compile's budget, a factor or a
     :class:`~aidl_lang.limits.Budget` as :func:`aidl_lang.compile`, which also scales the
@@ -235,7 +235,8 @@ def sweep(source: str, path: str = "<source>", budget: float | Budget | None = N
     ``unranged`` and not swept); ``values``: ``--set`` texts every compile starts from (the
     studio's sliders where they are: each param is then swept with the others at these
     values); ``spans``: ``{param: (lo, hi)}`` (display units) swept for a param that
-    declares no range instead of its default span (the sliders' own); ``points``: the Latin hypercube's
+    declares no range instead of its default span (the sliders' own); ``only``: the names
+    of the params to sweep (None: every numeric param); ``points``: the Latin hypercube's
     size (0: only the ends and middles); ``tolerance``: the bisection's stopping width, a
     fraction of each range.  Never raises for a mistake in the program (the report's
     ``errors``); :class:`ValueError` for ``points < 0`` or a tolerance outside (0, 0.5]."""
@@ -246,14 +247,15 @@ def sweep(source: str, path: str = "<source>", budget: float | Budget | None = N
         DEFAULT_BUDGET if budget is None else DEFAULT_BUDGET.scaled(float(budget)))
     w = WORK * b.steps / DEFAULT_BUDGET.steps if work is None else float(work)
     return run_deep(lambda: _Sweep(source, path, b, points, seed, tolerance, w, unranged,
-                                   dict(values or {}), dict(spans or {})).run(
+                                   dict(values or {}), dict(spans or {}), only).run(
         b.seconds if seconds is None else float(seconds)))
 
 
 class _Sweep:
     def __init__(self, source, path, budget, points, seed, tolerance, work_units,
-                 unranged=True, values=None, spans=None):
+                 unranged=True, values=None, spans=None, only=None):
         self.defaults, self.values, self.spans = unranged, values or {}, spans or {}
+        self.only = None if only is None else set(only)
         self.source, self.path, self.budget = source, str(path), budget
         self.n_lhs, self.seed, self.tol = points, seed, tolerance
         self.report = SweepReport()
@@ -311,7 +313,7 @@ class _Sweep:
             if not isinstance(st, A.ParamDecl):
                 continue
             q, r = fctx.params.get(st.name), ranges.get(st.name)
-            if display(q) is None:
+            if display(q) is None or (self.only is not None and st.name not in self.only):
                 continue
             counts = st.name in counted or bool(
                 not display(q)[0] and (r or {}).get("step")

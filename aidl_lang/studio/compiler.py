@@ -372,41 +372,58 @@ def sweep_ranges(folder: str, source: str, budget=None, values: dict | None = No
     declared = {p.name: p for p in declared_params(source, path) or []}
     spans = {n: (p.min, p.max) for n, p in declared.items()
              if not p.declared and p.min is not None and p.max is not None}
-    rep = sweep(source, path, budget=budget, values=values or None, spans=spans)
+    values = {k: v for k, v in (values or {}).items() if k in declared}
+    rep = sweep(source, path, budget=budget, values=values, spans=spans)
     out = {"ok": rep.ok, "swept": list(rep.swept), "points": rep.points,
            "skipped": rep.skipped, "summary": rep.text(), "params": {},
            "combinations": [for_forms(c) for c in rep.combinations()]}
     if not rep.ok:
         return out
-    clean = rep.clean_ranges()
+    # a slider moved from its written value is swept alone from there with the others at
+    # their values (not from its own value: the hatch is where it breaks the design)
+    of = {n: rep for n in rep.swept if n not in values}
+    for n in values:
+        alone = sweep(source, path, budget=budget, points=0, only={n}, spans=spans,
+                      values={k: v for k, v in values.items() if k != n})
+        if alone.ok and n in alone.swept:
+            of[n] = alone
+            out["points"] += alone.points
+            out["skipped"] += alone.skipped
     for name in rep.swept:
-        p = declared.get(name)
-        if p is None or p.min is None or p.max is None:
-            continue
-        lo, hi = clean.get(name, (p.min, p.max))
-        row = {"min": p.min, "max": p.max, "unit": p.unit,
-               "clean": [_stop(p, lo, up=True), _stop(p, hi, up=False)],
-               "below": None, "above": None}
-        for f in rep.findings:
-            if list(f.clean) != [name]:
-                continue                # a combination: said in words, no slider hatched
-            above = f.values[name] > f.clean[name][1]
-            side = "above" if above else "below"
-            at = f.clean[name][1 if above else 0]
-            if row[side] is not None and (at >= row[side]["bound"] if above
-                                          else at <= row[side]["bound"]):
-                continue
-            end = row["clean"][1 if above else 0]
-            code, what = (f.first[1], f.first[2]) if f.first else (f.code, f.problem)
-            text = f"{side} {_shown(end, p.unit)}: {for_forms(what)}"
-            if f.first:
-                text += f"; at {_shown(f.values[name], p.unit)}: {for_forms(f.problem)}"
-            row[side] = {"bound": at, "at": end, "code": code, "text": text}
-        for side in ("below", "above"):
-            if row[side] is not None:
-                row[side].pop("bound")
-        out["params"][name] = row
+        if name in of:
+            _row(out, name, declared.get(name), of[name], for_forms)
     return out
+
+
+def _row(out: dict, name: str, p, rep, for_forms) -> None:
+    """The slider row of param ``name`` (``p``: its declared view) from the sweep ``rep``
+    that moved it: its clean range and what happens past each end (findings of it alone)."""
+    clean = rep.clean_ranges()
+    if p is None or p.min is None or p.max is None:
+        return
+    lo, hi = clean.get(name, (p.min, p.max))
+    row = {"min": p.min, "max": p.max, "unit": p.unit,
+           "clean": [_stop(p, lo, up=True), _stop(p, hi, up=False)],
+           "below": None, "above": None}
+    for f in rep.findings:
+        if list(f.clean) != [name]:
+            continue                # a combination: said in words, no slider hatched
+        above = f.values[name] > f.clean[name][1]
+        side = "above" if above else "below"
+        at = f.clean[name][1 if above else 0]
+        if row[side] is not None and (at >= row[side]["bound"] if above
+                                      else at <= row[side]["bound"]):
+            continue
+        end = row["clean"][1 if above else 0]
+        code, what = (f.first[1], f.first[2]) if f.first else (f.code, f.problem)
+        text = f"{side} {_shown(end, p.unit)}: {for_forms(what)}"
+        if f.first:
+            text += f"; at {_shown(f.values[name], p.unit)}: {for_forms(f.problem)}"
+        row[side] = {"bound": at, "at": end, "code": code, "text": text}
+    for side in ("below", "above"):
+        if row[side] is not None:
+            row[side].pop("bound")
+    out["params"][name] = row
 
 
 def _stop(p, x: float, up: bool) -> float:
