@@ -1,6 +1,6 @@
 """What ``aidl check --sweep`` sweeps and how much (:mod:`aidl_lang.sweep`): each numeric
 param's range (its declared ``min=``/``max=``, else the span the studio's sliders give it:
-:func:`aidl_lang.serve.params.default_span`), whether a plain number counts (whole steps) or
+:func:`default_span`, which ``aidl serve``, the studio and the notebook share), whether a plain number counts (whole steps) or
 is a real, the plan of points fixed before the sweep starts (ends, middles, a seeded Latin
 hypercube), and the budget the points share, counted in work a compile does (interpreter
 steps, objects and the model's unknowns, the same on any machine) rather than in seconds.
@@ -8,6 +8,43 @@ steps, objects and the model's unknowns, the same on any machine) rather than in
 from __future__ import annotations
 
 import math
+
+
+def default_span(kind: str, v: float, counts: bool | None = None) -> tuple[float, float, float]:
+    """Slider span for a param without a declared range (``aidl serve``, the studio, the
+    notebook: :mod:`aidl_lang.serve.params`; and the range ``aidl check --sweep`` sweeps it
+    across): a quarter to twice a length or number, a
+    full turn for an angle; a count (``counts``; None: any whole number) in whole steps from 1
+    (0 for a count written 0) to twice it, at least 10 (a negative one: twice it to a
+    quarter of it)."""
+    if kind == "angle":
+        return -180.0, 360.0 if v > 180 else 180.0, 1.0
+    if counts is None:
+        counts = kind == "number" and float(v).is_integer()
+    if kind == "number" and counts:
+        if v >= 1:
+            return 1.0, float(math.ceil(max(2 * v, 10))), 1.0
+        if v < 0:
+            return float(math.floor(2 * v)), float(math.ceil(v / 4)), 1.0
+        return 0.0, 10.0, 1.0
+    if v == 0:
+        return (-100.0, 100.0, 0.5) if kind == "length" else (-10.0, 10.0, 0.1)
+    a, b = sorted((v / 4, v * 2)) if v > 0 else sorted((v * 2, v / 4))
+    step = _nice((b - a) / 200)
+    return math.floor(a / step) * step, math.ceil(b / step) * step, step
+
+
+def _nice(x: float) -> float:
+    """The 1-2-5 step not above ``x``."""
+    if x <= 0:
+        return 1.0
+    e = math.floor(math.log10(x))
+    for m in (5, 2, 1):
+        if m * 10 ** e <= x:
+            return m * 10 ** e
+    return 10 ** e
+
+
 
 # work units of one sweep at budget factor 1: each compile costs PER_COMPILE plus its
 # interpreter steps, objects and the model's unknowns, and PER_DIAGNOSTIC for each thing it
@@ -52,7 +89,6 @@ class Param:
     def on_grid(self, tolerance: float) -> None:
         """The values swept (a real's without ``step=``) on a grid of the 1-2-5 step under
         half ``tolerance`` x the range: clean bounds such as 12.6 mm, not 12.578125 mm."""
-        from .serve.params import _nice
         if not self.integer and not self.step:
             self.grid = _nice(tolerance * (self.hi - self.lo) / 2)
 
@@ -127,9 +163,7 @@ def make_param(decl, q, rng: dict | None, counts: bool) -> tuple[Param | None, s
     not (``"fixed"``: ``min = max``; ``""``: swept, or not a number).  ``counts``: a plain
     number that takes whole values only (a whole ``step=``, used in ``range()``, or refused
     at a half-way value).  Without both ``min=`` and ``max=`` the range is the one the
-    studio's slider offers (:func:`aidl_lang.serve.params.default_span`), a declared end
-    kept."""
-    from .serve.params import default_span
+    studio's slider offers (:func:`default_span`), a declared end kept."""
     shown = display(q)
     if shown is None:
         return None, ""
