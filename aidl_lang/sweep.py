@@ -163,7 +163,8 @@ class SweepReport:
         if not self.ok:
             return "sweep: not run: the program does not compile at its written values"
         if not self.swept:
-            out = "sweep: no numeric param to sweep: nothing swept"
+            out = ("sweep: the program declares no numeric `param` to sweep (declare the values a "
+                   "maker may change: `param NAME = VALUE, min = LO, max = HI`)")
         else:
             n = len(self.findings)
             its = "its range" if len(self.swept) == 1 else "their ranges"

@@ -4,7 +4,8 @@ swept (a param without a range across its slider's span), and each finding is ch
 plain compile with ``--set`` at the values it names (the finding's code must be there) and
 at the clean end it gives (no error, no warning the written values do not have).  Prints one
 line a file and the totals; exit 1 when a file says "nothing swept" while it has a numeric
-param, or a finding does not hold under ``--set``.  Not in the suite (minutes of CPU); the
+param, or a finding does not hold under ``--set`` (a file with no numeric param has nothing to
+sweep: counted apart).  Not in the suite (minutes of CPU); the
 suite's small pass is tests/test_sweep_programs.py.
 
     PYTHONPATH=$PWD python benchmarks/sweep_programs.py [FILE ...]
@@ -56,7 +57,7 @@ def verify(source: str, path: str, rep) -> list[str]:
 def main(argv=None) -> int:
     from aidl_lang.sweep import sweep
     todo = [Path(a) for a in (argv or [])] or files()
-    total = found = wrong = nothing = skipped = 0
+    total = found = wrong = nothing = skipped = none = 0
     for p in todo:
         src = p.read_text(encoding="utf-8")
         rep = sweep(src, str(p))
@@ -68,15 +69,20 @@ def main(argv=None) -> int:
         bad = verify(src, str(p), rep)
         wrong += len(bad)
         if not rep.swept and not rep.fixed:
-            nothing += 1
+            numeric = any(ln.lstrip().startswith("param ") and '"' not in ln
+                          and "true" not in ln and "false" not in ln
+                          for ln in src.splitlines())
+            nothing += numeric
+            none += not numeric
         rel = p.relative_to(ROOT) if p.is_absolute() else p
         print(f"{rel}: {len(rep.swept)} params, {rep.points} points, {rep.seconds:.1f} s, "
               f"{len(rep.findings)} finding(s)" + (f", {len(bad)} NOT HOLDING" if bad else "")
-              + (", nothing swept" if not rep.swept else ""), flush=True)
+              + ("" if rep.swept else ", no numeric param"), flush=True)
         for b in bad:
             print(f"    {b}", flush=True)
-    print(f"{len(todo)} files ({skipped} not compiling), {found} findings, {wrong} not holding "
-          f"under --set, {nothing} with nothing swept, {total:.0f} s CPU")
+    print(f"{len(todo)} files ({skipped} not compiling, {none} with no numeric param), {found} "
+          f"findings, {wrong} not holding under --set, {nothing} with a numeric param not "
+          f"swept, {total:.0f} s CPU")
     return 1 if wrong or nothing else 0
 
 
