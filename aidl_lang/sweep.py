@@ -169,7 +169,8 @@ class SweepReport:
             n = len(self.findings)
             its = "its range" if len(self.swept) == 1 else "their ranges"
             out = (f"sweep: {', '.join(self.swept)} across {its}: {self.points} points, "
-                   + (f"{n} finding{'s' if n != 1 else ''} (W0110)" if n else "clean")
+                   + (f"{n} finding{'s' if n != 1 else ''} (W0110)" if n else
+                      "no finding in the points judged" if self.skipped else "clean")
                    + f"; bounds bisected to {100 * self.tolerance:.3g}% of each range")
             if self.skipped:
                 out += (f"; {self.skipped} planned point{'s' if self.skipped != 1 else ''} "
