@@ -1141,8 +1141,11 @@ def set_params(source: str, values: Mapping[str, str | float | bool],
                    " (it declares none: add `param NAME = VALUE` at the top)"),
                 "no_match", str(k), near)
     texts = {k: _param_text(v, decls[k].value) for k, v in values.items()}
+    from .set_values import comment_problem
     for k, t in texts.items():
-        _refuse_comment(source, name, decls[k], t)
+        d = comment_problem(source, decls[k], t)
+        if d is not None:           # `w=40 mm # x` would comment out the range (E0113)
+            raise ParamsRefused(d.message, "bad_value", k, diagnostics=[d])
     # the values checked as overrides: the kind of value and the declared range
     checked = compile(source=source, path=name, overrides=texts, budget=budget)
     for d in checked.diagnostics:
@@ -1158,39 +1161,6 @@ def set_params(source: str, values: Mapping[str, str | float | bool],
         last = st.value.span.end
     text = "".join(out) + source[last:]
     return text, compile(source=text, path=name, budget=budget)
-
-
-def _comment_at(text: str) -> int:
-    """Where a comment (``#``, ``/*``) starts in the value text ``text``, outside its string
-    literals; -1 when it has none."""
-    quote = False
-    for i, ch in enumerate(text):
-        if ch == '"' and (i == 0 or text[i - 1] != "\\"):
-            quote = not quote
-        elif not quote and (ch == "#" or text.startswith("/*", i)):
-            return i
-    return -1
-
-
-def _refuse_comment(source: str, path: str, decl, text: str) -> None:
-    """Raise :class:`ParamsRefused` (``bad_value``, a located ``E0113`` at the param's value)
-    when the new value ``text`` of ``decl`` holds a comment: written in place of the value it
-    would comment out the rest of the line, the param's ``min=``/``max=`` with it."""
-    i = _comment_at(text)
-    if i < 0:
-        return
-    from .diagnostics import Diagnostic
-    s = decl.value.span
-    rest = source[s.end:].split("\n", 1)[0].strip()
-    lost = f" (`{rest}` and its range with it)" if rest.startswith(",") else ""
-    alone = text[:i].strip()
-    msg = (f"the value `{text}` for `{decl.name}` holds a comment (`{text[i:].strip()}`): "
-           f"written in place of `{source[s.start:s.end]}` it would comment out the rest of "
-           f"the line{lost}")
-    d = Diagnostic("E0113", msg, s, "error",
-                   hint=(f"give the value alone: `{decl.name}={alone}`" if alone else
-                         "give the value alone, without a comment"))
-    raise ParamsRefused(msg, "bad_value", decl.name, diagnostics=[d])
 
 
 def _param_text(value, old) -> str:

@@ -416,5 +416,5 @@ def test_set_and_mcp_set_params_refuse_a_value_with_a_comment(tmp_path):
     assert e.value.code == "bad_argument" and "holds a comment" in str(e.value)
     assert f.read_text() == src
     # a `#` inside a string value is text, not a comment
-    from aidl_lang.api import _comment_at
-    assert _comment_at('"no #1"') == -1 and _comment_at('"a" # b') == 4
+    from aidl_lang.set_values import comment_at
+    assert comment_at('"no #1"') == -1 and comment_at('"a" # b') == 4
