@@ -359,13 +359,15 @@ class Result:
 
     def sweep(self, budget: float | Budget | None = None, points: int | None = None,
               seconds: float | None = None):
-        """This program checked across its params' declared ranges (``aidl check --sweep``,
-        MCP ``check`` with ``sweep: true``; docs/language.md, "Sweeping the ranges"): a
+        """This program checked across its params' ranges (``aidl check --sweep``, MCP
+        ``check`` with ``sweep: true``; docs/language.md, "Sweeping the ranges": the declared
+        ``min=``/``max=``, else the span the studio's slider gives the param): a
         :class:`~aidl_lang.sweep.SweepReport` whose ``findings`` (``W0110``, located at the
         ``param`` lines) name each value where the design stops compiling, a part changes
         topology or a new warning appears, with the largest clean sub-range.  ``budget``: a
-        factor or :class:`~aidl_lang.limits.Budget` for each compile and, in CPU seconds,
-        for the whole sweep (``seconds`` overrides that total); ``points``: the Latin
+        factor or :class:`~aidl_lang.limits.Budget` for each compile, scaling the sweep's work
+        budget (:data:`aidl_lang.sweep_plan.WORK`: the same answer on any machine), and in
+        CPU seconds the whole sweep's outer guard (``seconds`` overrides it); ``points``: the Latin
         hypercube's size (default :data:`aidl_lang.sweep.LHS_POINTS`).  The report is kept
         as :attr:`swept`: a notebook form made from this result
         (:func:`aidl_lang.notebook.form`) offers only its clean ranges.  Raises
@@ -1151,6 +1153,11 @@ def set_params(source: str, values: Mapping[str, str | float | bool],
                    " (it declares none: add `param NAME = VALUE` at the top)"),
                 "no_match", str(k), near)
     texts = {k: _param_text(v, decls[k].value) for k, v in values.items()}
+    from .set_values import comment_problem
+    for k, t in texts.items():
+        d = comment_problem(source, decls[k], t)
+        if d is not None:           # `w=40 mm # x` would comment out the range (E0113)
+            raise ParamsRefused(d.message, "bad_value", k, diagnostics=[d])
     # the values checked as overrides: the kind of value and the declared range
     checked = compile(source=source, path=name, overrides=texts, budget=budget)
     for d in checked.diagnostics:

@@ -109,7 +109,10 @@ value is of another kind than the param's default (a length for an angle, a word
 number). The error names the `--set` argument (also a value given to `aidl_lang.compile`
 or a live-preview slider); the file is then compiled with the default, so its uses of the
 param are not blamed. Declare overridable values with `param NAME = VALUE` at the top of
-the file.
+the file. `aidl set` and MCP `set_params` also refuse a value that holds a comment
+(`aidl set f.aidl 'w=40 mm # x'`): written in place of the value it would comment out the
+rest of the line, the param's `min=`/`max=` with it (located at the value, the file left as
+it was).
 
     param leg = 100 mm
     aidl check part.aidl --set leg=100 deg   # `leg` is a length like its default `100 mm`
@@ -1000,17 +1003,21 @@ hole with constraints as usual.
         CutInto(lid_hole, box.lid)                                 # the fix: a hole in the lid
     }
 """),
-    "W0110": ("design breaks inside a param's declared range", """
+    "W0110": ("design breaks inside a param's range", """
 `aidl check --sweep` (and `Result.sweep()`, MCP `check` with `sweep: true`) compiles the
-design across its params' declared ranges (`min=` and `max=`): each ranged param at its low
-end, middle and high end (the others at their written values), then a small seeded Latin
-hypercube of combinations, within the compile's CPU budget. This warning, located at the
-`param` line (the other params of a combination as labels), names the values at which the
-design stops compiling (an error), a part changes its topology (a solid falls into pieces, a
-hole leaves its solid or breaks through its outline, holes merge: as W0510), or a warning
-appears that the written values do not have; the message gives that code and its message.
-The hint gives the largest clean range found by bisection between the written values and the
-failing ones: narrow the range to it, or fix the design so that it holds across the range.
+design across its params' ranges: the declared `min=`..`max=`, or for a param that declares
+none the span the studio's slider gives it. Each param at its low end, middle and high end
+(the others at their written values), then a small seeded Latin hypercube of combinations,
+within a budget of work that is the same on any machine (what it leaves is said as "not
+judged, out of budget", never as bisected). This warning, located at the `param` line (the
+other params of a combination as labels), names the values at which the design stops
+compiling (an error; values that leave a dependent range empty, E0124, too), a part changes
+its topology (a solid falls into pieces, a hole leaves its solid or breaks through its
+outline, holes merge: as W0510), or a warning appears that the written values do not have;
+the message gives that code and its message. The hint gives the largest clean range found
+by bisection between the written values and the failing ones, and the fix writes it into
+the `param` line: narrow (or declare) the range to it, or fix the design so that it holds
+across the range.
 
     param offset = 10 mm, min = 0 mm, max = 30 mm   # warning: with offset=30 mm, W0502
     solid plate {

@@ -377,7 +377,7 @@ def test_the_example_notebook_runs_and_shows_the_drawing_and_the_form(tmp_path, 
                if m["model_name"] in ("IntSliderModel", "FloatSliderModel")}
     assert sliders["bolts"]["value"] == 6 and sliders["pitch (mm)"]["value"] == 25
     bolts = sliders["bolts"]
-    assert (bolts["min"], bolts["max"], bolts["step"]) == (0, 10, 1)   # a count's default span
+    assert (bolts["min"], bolts["max"], bolts["step"]) == (1, 10, 1)   # a count from 1 (issue 92)
     html = [m["state"]["value"] for m in state.values() if m["model_name"] == "HTMLModel"
             and "aidl-result" in m["state"]["value"]]
     assert len(html) == 1

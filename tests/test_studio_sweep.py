@@ -147,19 +147,52 @@ def test_law_the_clean_end_is_where_the_wall_gets_thinner_than_min_wall(width, r
     assert off["above"]["text"].startswith(f"above {hi:g} mm: a wall of `plate`")
 
 
-def test_a_combination_is_said_with_the_other_values_it_had():
+def test_a_combination_is_said_in_words_and_hatches_no_slider():
     """Each param alone is clean across its range (off = 25 mm leaves a 2 mm wall, r = 18 mm
     2 mm to the right and bottom edges of a 60 x 40 mm plate); together they break the wall
-    (30 - off - r < 0.5 mm): the Latin hypercube finds it, and the slider's text names the
-    other value it had."""
+    (30 - off - r < 0.5 mm): the Latin hypercube finds it, and it is said as a combination
+    (issue 92: it hatched both sliders, whose values each compile clean alone)."""
     from aidl_lang.studio.compiler import sweep_ranges
     source = (SLID.replace("height=20", "height=40").replace("max=40 mm", "max=25 mm")
               .replace("max=5 mm", "max=18 mm"))
     got = sweep_ranges("/nonexistent-session", source)
     said = [(n, q[s]) for n, q in got["params"].items() for s in ("below", "above") if q[s]]
-    assert said, got
-    for name, past in said:
-        other = "r" if name == "off" else "off"
-        assert f"(with `{other}` = " in past["text"], past
-        lo, hi = got["params"][name]["clean"]
-        assert past["at"] == hi and past["text"].startswith(f"above {hi:g} mm: ")
+    assert said == [], got
+    assert got["params"]["off"]["clean"] == [0.0, 25.0]
+    [c] = got["combinations"]
+    assert c.startswith("`off` above ") and " with `r` above " in c, c
+
+
+def test_a_slider_is_hatched_where_it_alone_breaks_at_the_others_values():
+    """The sliders where they are: with r at 12 mm (its written value 3 mm), off alone breaks
+    the wall past 30 - 12 - 0.5 = 17.5 mm, which the written values' sweep does not say (off
+    to 25 mm is clean at r = 3 mm); a compile at the hatch's edge is clean, past it not."""
+    import aidl_lang
+    from aidl_lang.studio.compiler import sweep_ranges
+    source = (SLID.replace("height=20", "height=40").replace("max=40 mm", "max=25 mm")
+              .replace("max=5 mm", "max=18 mm"))
+    got = sweep_ranges("/nonexistent-session", source, values={"r": "12 mm"})
+    lo, hi = got["params"]["off"]["clean"]
+    assert 17.5 - 0.25 - 0.2 <= hi <= 17.5 and got["params"]["off"]["above"]["code"] == "W0507"
+    edge = aidl_lang.compile(source=source, path="p.aidl",
+                             overrides={"r": "12 mm", "off": f"{hi} mm"})
+    past = aidl_lang.compile(source=source, path="p.aidl",
+                             overrides={"r": "12 mm", "off": "17.8 mm"})
+    assert edge.ok and not [d for d in edge.diagnostics if d.code == "W0507"]
+    assert [d for d in past.diagnostics if d.code == "W0507"]
+
+
+def test_the_sweeps_cache_keys_uploads_by_their_bytes(tmp_path):
+    """Two sessions with the same text (a file name built by an expression) and their own
+    uploads of one name get two sweeps; the same values and bytes, one."""
+    from aidl_lang.studio.app import Sweeps
+    a, b = tmp_path / "a", tmp_path / "b"
+    a.mkdir()
+    b.mkdir()
+    (a / "logo.svg").write_bytes(b"<svg>1</svg>")
+    (b / "logo.svg").write_bytes(b"<svg>2</svg>")
+    src = 'param n = "logo"\nsolid s { d = Drawing2D(n + ".svg") }\n'
+    assert Sweeps.key(src, str(a), 1.0) != Sweeps.key(src, str(b), 1.0)
+    (b / "logo.svg").write_bytes(b"<svg>1</svg>")
+    assert Sweeps.key(src, str(a), 1.0) == Sweeps.key(src, str(b), 1.0)
+    assert Sweeps.key(src, str(a), 1.0, {"n": "2"}) != Sweeps.key(src, str(a), 1.0)

@@ -267,9 +267,10 @@ def _check_arguments(c) -> None:
                    help="report degrees of freedom per structure, floating entities and "
                         "redundant constraints")
     c.add_argument("--sweep", action="store_true",
-                   help="also check the design across its params' declared min=/max= ranges "
-                        "(ends, middles, a Latin hypercube; within the budget): W0110 at each "
-                        "param value where it breaks, with the clean range to narrow to")
+                   help="also check the design across its params' min=/max= ranges (a param "
+                        "without one: its slider's span; ends, middles, a Latin hypercube; "
+                        "within a work budget, the same on any machine): W0110 at each param "
+                        "value where it breaks, with the clean range to narrow to or declare")
     c.add_argument("--values", nargs="*", default=None, metavar="NAME",
                    help="print the solved values of named entities (points, sizes, frames, "
                         "boxes) in the file's units; NAMEs filter by dotted prefix")

@@ -33,7 +33,8 @@ and text, not filled), `assembly NAME { ... }` (separate parts). Inside a struct
 (`body = Rectangle(center=(0, 0), width=40, height=20)`), child structures, constraints as
 statements (`Above(lid, body)`, `Coincident(a.end, b.start)`) and equations
 (`lid.bb.width == body.bb.width`, `x <= 60`; join with `and`). Geometry and constraints only
-live inside structures. Top of file: `units mm` (default; also `units in`), `param NAME = VALUE` (a
+live inside structures. Top of file: `units mm` (default; also `units in`), `param NAME = VALUE,
+min = LO, max = HI` (always declare the range it still works across: sliders use it; a
 param may be computed from params above it, `param h = w / 2`, and follows `--set w=60`),
 constants `NAME = expr`, templates `def NAME(p1, p2=default) -> solid { ... }` (instantiate:
 `part = NAME(p1=...)`), `import "file.aidl"` or `import stdlib.shapes` (or
@@ -106,7 +107,7 @@ W0512, W0517), `construction=true` (W0506), an `assembly` for separate pieces (W
 with `fully constrained` or `N degrees of freedom left`: harmless: "stays where written";
 "can slide" needs constraints.
 `aidl check --describe` describes the final part. `aidl import --infer d.dxf` writes a
-drawing as a program. `aidl set f.aidl NAME=VALUE` changes a param's value in the file. `aidl check --sweep` tries each `param`'s `min=`..`max=` range.
+drawing as a program. `aidl set f.aidl NAME=VALUE` changes a param's value in the file. `aidl check --sweep` tries each `param`'s range and says the clean one.
 There is no Rotate/Union. A warning means the program runs but probably not as
 meant: fix it. When fixing errors, keep
 every structure and constraint that carries design intent: correct the call rather than

@@ -11,6 +11,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from ..sweep_plan import _nice, default_span  # noqa: F401 - the sliders' default span
+
 @dataclass
 class Param:
     """A ``param`` as the customizer shows it.  ``kind``: length (mm), angle (deg), number,
@@ -68,31 +70,6 @@ def _param(name: str, v, rng: dict | None, line: int, default=None) -> Param | N
     for a in ("min", "max", "step"):
         setattr(p, a, round(getattr(p, a), 9))
     return p
-
-
-def default_span(kind: str, v: float) -> tuple[float, float, float]:
-    """Slider span for a param without a declared range: a quarter to twice a length or number
-    (an integer keeps step 1: it may count things), a full turn for an angle."""
-    if kind == "angle":
-        return -180.0, 360.0 if v > 180 else 180.0, 1.0
-    if v == 0:
-        return (-100.0, 100.0, 0.5) if kind == "length" else (0.0, 10.0, 1.0)
-    a, b = sorted((v / 4, v * 2)) if v > 0 else sorted((v * 2, v / 4))
-    if kind == "number" and float(v).is_integer():
-        return math.floor(min(a, 0 if v > 0 else a)), math.ceil(max(b, 10 if v > 0 else b)), 1.0
-    step = _nice((b - a) / 200)
-    return math.floor(a / step) * step, math.ceil(b / step) * step, step
-
-
-def _nice(x: float) -> float:
-    """The 1-2-5 step not above ``x``."""
-    if x <= 0:
-        return 1.0
-    e = math.floor(math.log10(x))
-    for m in (5, 2, 1):
-        if m * 10 ** e <= x:
-            return m * 10 ** e
-    return 10 ** e
 
 
 def declared_params(source: str, path: str) -> list[Param] | None:

@@ -25,13 +25,15 @@ Routes:
   :func:`.compiler.view`).  One preview of a session compiles at a time; one that waited
   while a newer one of the session came is answered ``{"superseded": true}`` uncompiled.
   ``POST /api/download/FORMAT``: the same plus ``"settings"`` -> the file.
-* ``POST /api/sweep``: ``{"sid", "source"}`` -> the program checked across its params'
-  declared ranges (:func:`.compiler.sweep_ranges`: each slider's clean range and what happens
-  past it), asked by the page in the background after a picture of a new program.  Run by
-  the sweep workers (``sweepers``, apart from the previews' compilers; on the cluster with
-  ``--scheduler``), bounded by the sweep's budget, answered from a cache by the program's hash
-  (the same program is swept once), and the session's sweep in flight is stopped when it asks
-  for another program's (:class:`Sweeps`).
+* ``POST /api/sweep``: ``{"sid", "source", "values"}`` -> the program checked across its
+  params' ranges, each slider alone with the others at their ``values`` (:func:`.compiler.
+  sweep_ranges`: each slider's clean range and what happens past it; the combinations in
+  words), asked by the page in the background after a picture of a new program or values.
+  Run by the sweep workers (``sweepers``, apart from the previews' compilers; on the cluster
+  with ``--scheduler``), bounded by the sweep's budget, answered from a cache keyed by the
+  program's text, the values and the bytes of the session's uploads (the same program is
+  swept once), and the session's sweep in flight is stopped when it asks for another
+  (:class:`Sweeps`).
 * ``POST /api/glb``: ``{"sid", "source", "values", "settings"}`` -> the 3D view's GLB (a
   smaller mesh than the download, made from the preview's drawing; gzip when the browser
   takes it).
@@ -253,7 +255,6 @@ SWEPT = 256                 # sweeps a server process keeps (by the program's ha
 SWEEP_WAIT = 60.0           # s a sweep waits for a free sweep worker before "busy"
 SWEEP_SUPERSEDED = {"ok": None, "superseded": True, "params": {},
                     "error": "the design changed: the check of its ranges was stopped"}
-_NAMES_A_FILE = re.compile(r'"[^"\n]*\.(?:aidl|dxf|svg)"', re.I)
 
 
 class SweepJob:
@@ -264,6 +265,25 @@ class SweepJob:
         self.sids: set = set()
         self.cancelled = False
         self.worker = None
+
+
+def _uploads_digest(folder: str) -> bytes:
+    """sha256 over the session folder's regular files (name and bytes, sorted by name); empty
+    bytes for a folder that cannot be read."""
+    h = hashlib.sha256()
+    try:
+        with os.scandir(folder) as it:
+            entries = sorted((e for e in it if e.is_file(follow_symlinks=False)),
+                             key=lambda e: e.name)
+            for e in entries:
+                h.update(e.name.encode("utf-8", "surrogatepass") + b"\0")
+                with open(e.path, "rb") as f:
+                    for chunk in iter(lambda: f.read(1 << 20), b""):
+                        h.update(chunk)
+                h.update(b"\0")
+    except OSError:
+        return b""
+    return h.digest()
 
 
 class Sweeps:
@@ -278,12 +298,13 @@ class Sweeps:
         self.of: dict = {}
 
     @staticmethod
-    def key(source: str, folder: str, budget: float) -> str:
-        """The program's hash; with the session's uploads (names, sizes, times) when it names
-        a file (``import "x.aidl"``, ``Drawing2D("y.dxf")``): the same text may read others."""
-        h = hashlib.sha256(f"{budget!r}\0{source}".encode("utf-8", "surrogatepass"))
-        if _NAMES_A_FILE.search(source):
-            h.update(repr(compiler._listing(folder)).encode())
+    def key(source: str, folder: str, budget: float, values: dict | None = None) -> str:
+        """The program's hash with the sliders' ``values`` and the bytes of the session's
+        uploads (each file's name and content): the same text may read other files (a name
+        built by an expression too), and two sessions' uploads of one name differ."""
+        h = hashlib.sha256(f"{budget!r}\0{source}\0".encode("utf-8", "surrogatepass"))
+        h.update(json.dumps(values or {}, sort_keys=True, default=str).encode())
+        h.update(_uploads_digest(folder))
         return h.hexdigest()
 
     def keep(self, key: str, answer: dict) -> None:
@@ -399,7 +420,7 @@ class Studio:
         """Whether this studio sweeps programs (``sweepers`` > 0, or a cluster)."""
         return self.sweepers is not None or bool(self.settings.scheduler)
 
-    async def sweep(self, sid: str, folder: str, source: str) -> dict:
+    async def sweep(self, sid: str, folder: str, source: str, values: dict | None = None) -> dict:
         """The sweep of ``source`` for session ``sid`` (:func:`.compiler.sweep_ranges`): from
         the cache when this program was swept, else run by a sweep worker (one sweep per
         program however many sessions ask).  A session's earlier sweep of another program that
@@ -407,7 +428,7 @@ class Studio:
         :class:`Limited` (503) when the sweep workers stay busy."""
         import asyncio
         sw = self.sweeps
-        key = sw.key(source, folder, self.settings.budget)
+        key = sw.key(source, folder, self.settings.budget, values)
         if key in sw.done:
             sw.done.move_to_end(key)
             self.served["sweeps_cached"] += 1
@@ -431,7 +452,7 @@ class Studio:
                                    "seconds", 10)
             job = sw.running[key] = SweepJob()
             job.task = asyncio.ensure_future(self._sweep_job(key, job, (
-                "sweep", sid, folder, source)))
+                "sweep", sid, folder, source, dict(values or {}))))
         job.sids.add(sid)
         answer = await asyncio.shield(job.task)
         if answer.get("busy"):
@@ -743,11 +764,11 @@ def _compile_routes(st: Studio, guarded) -> list[Route]:
         doc = await read_json(request)
         sid = doc.get("sid", "")
         folder = st.folders.folder(sid)
-        source, _ = program_of(doc)
+        source, values = program_of(doc)
         if not st.sweeping:
             return JSONResponse({"ok": None, "off": True, "params": {},
                                  "error": "this studio does not check ranges (sweepers 0)"})
-        return JSONResponse(await st.sweep(sid, folder, source))
+        return JSONResponse(await st.sweep(sid, folder, source, values))
 
     async def glb(request):
         doc = await read_json(request)

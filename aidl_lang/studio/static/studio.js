@@ -13,7 +13,7 @@ const state = {
   seq: 0, shown: 0, inflight: false, again: false, timer: null, glbSeq: 0, reframe: true,
   config: null, svgUrl: null, view: null,
   // the sweep of the program (/api/sweep): its answer, the program it is of, the one asked
-  sweep: { answer: null, source: null, asked: null, ctrl: null, timer: null },
+  sweep: { answer: null, source: null, key: null, asked: null, ctrl: null, timer: null },
 };
 // read by the browser tests: views shown, 3D loads asked, the last view and its diagnostics
 window.studio = { ready: false, idle: false, views: 0, sweeps: 0, sweep: null, glbs: 0, glbView: 0, view: null, state, errors: [],
@@ -479,9 +479,12 @@ function cleanOf(name) {
   const a = state.sweep.answer, q = a && a.params && a.params[name];
   return q ? q.clean : null;
 }
+// a sweep is of the program and the sliders where they are: each slider alone is hatched where
+// it breaks the design at the other sliders' values
+function sweepKey() { return state.source + "\u0000" + JSON.stringify(state.values || {}); }
 function askSweep() {
-  const sw = state.sweep;
-  if (!state.config || !state.config.sweep || sw.source === state.source || sw.asked === state.source) return;
+  const sw = state.sweep, key = sweepKey();
+  if (!state.config || !state.config.sweep || sw.key === key || sw.asked === key) return;
   clearTimeout(sw.timer);
   sw.timer = setTimeout(runSweep, 500);
 }
@@ -492,48 +495,50 @@ function sweepChanged(fresh) {
   clearTimeout(sw.timer);
   if (sw.ctrl) sw.ctrl.abort();
   sw.ctrl = null; sw.asked = null;
-  if (fresh) { sw.answer = null; sw.source = null; }
+  if (fresh) { sw.answer = null; sw.source = null; sw.key = null; }
   markRanges();
 }
 async function runSweep() {
-  const sw = state.sweep, source = state.source;
+  const sw = state.sweep, source = state.source, key = sweepKey(), values = { ...state.values };
   if (sw.ctrl) sw.ctrl.abort();
   const ctrl = sw.ctrl = new AbortController();
-  sw.asked = source;
+  sw.asked = key;
   sweepStatus("checking the sliders' ranges…");
   let r = null;
   try {
     r = await fetch("/api/sweep", { method: "POST", signal: ctrl.signal, headers: { "Content-Type": "application/json" },
-                                    body: JSON.stringify({ sid: state.sid, source }) });
+                                    body: JSON.stringify({ sid: state.sid, source, values }) });
   } catch (e) { r = null; }
-  if (ctrl !== sw.ctrl || source !== state.source) return;       // stopped, or another program
+  if (ctrl !== sw.ctrl || key !== sweepKey()) return;      // stopped, or another program or values
   sw.ctrl = null;
   const doc = r ? await r.json().catch(() => null) : null;
   if (!r || r.status === 429 || r.status === 503 || !doc) {       // busy: asked again, quietly
     const wait = (r && Number(r.headers.get("Retry-After"))) || 10;
     sweepStatus(`the sliders' ranges are checked when the studio has a free worker (in ${wait} s)`);
     sw.asked = null;
-    sw.timer = setTimeout(() => { if (source === state.source) runSweep(); }, wait * 1000);
+    sw.timer = setTimeout(() => { if (key === sweepKey()) runSweep(); }, wait * 1000);
     return;
   }
   if (doc.superseded) { sw.asked = null; return; }
-  sw.answer = doc; sw.source = source;
+  sw.answer = doc; sw.source = source; sw.key = key;
   window.studio.sweeps += 1;
   window.studio.sweep = doc;
   markRanges();
 }
 function sweepStatus(text) { const el = $("sweep-status"); if (el) el.textContent = text; }
 function markRanges() {
-  const sw = state.sweep, a = sw.answer, stale = !!a && sw.source !== state.source;
+  const sw = state.sweep, a = sw.answer, stale = !!a && sw.key !== sweepKey();
   if (!a) sweepStatus("");
   else if (!a.ok) sweepStatus(a.error && !a.off ? `the sliders' ranges were not checked: ${a.error}` : "");
   else {
     const narrowed = Object.values(a.params || {}).filter((q) => q.below || q.above).length;
-    sweepStatus(stale ? "the hatched parts are of the program before your edit: checking again…"
-      : !a.swept.length ? "" : narrowed
-        ? `hatched: values at which the design breaks (${a.points} values checked)`
-        : `every slider's range checks clean (${a.points} values checked)`
-          + (a.skipped ? `; ${a.skipped} not checked in the time allowed` : ""));
+    const together = (a.combinations || []).length
+      ? `; sliders that break it only together: ${a.combinations.join("; ")}` : "";
+    sweepStatus(stale ? "the hatched parts are of the design before your change: checking again…"
+      : !a.swept.length ? "" : (narrowed
+        ? `hatched: values at which the design breaks, each slider alone (${a.points} values checked)`
+        : `every slider's range checks clean alone (${a.points} values checked)`
+          + (a.skipped ? `; ${a.skipped} not checked in the time allowed` : "")) + together);
   }
   for (const p of state.params) {
     const row = $("params").querySelector(`[data-name="${CSS.escape(p.name)}"]`);
