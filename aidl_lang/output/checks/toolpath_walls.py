@@ -26,7 +26,7 @@ checks of :mod:`.through`) and not said again.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -53,39 +53,64 @@ class Eaten:
     length: float
     min_wall: float
     more: int = 0       # further warnings of this part, counted in this one (the last shown)
+    two_cuts: bool = False      # ``other`` is a through-cut too: the tool eats from both
 
 
 class _Paths:
     """The chords of some exact paths: ``A``, ``B`` (n x 2) each chord's ends, ``F`` its
-    path's index, ``C`` its segment's carrier; ``V`` (m x 2) the vertices (every chord's
-    start and each open path's end), ``VF`` their path's index."""
+    path's index, ``C`` its segment's carrier (with ``carriers``); ``V`` (m x 2) the
+    vertices (every chord's start and each open path's end), ``VF`` their path's index;
+    ``box`` (paths x 4) each path's bounding box, ``first`` (paths + 1) where each path's
+    chords start in ``A``."""
 
-    def __init__(self, paths: list, closed: list, first: int = 0):
-        A, B, F, C, V, VF = [], [], [], [], [], []
-        for k, (segs, shut) in enumerate(zip(paths, closed), first):
+    def __init__(self, paths: list, closed: list, first: int = 0, carriers: bool = True):
+        xs, ys, F, C, ends = [], [], [], [], []      # every point; a chord from each but
+        for k, (segs, shut) in enumerate(zip(paths, closed), first):     # the last of a run
             for seg in segs:
-                xs, ys = [], []
+                n0 = len(xs)
                 sample_xy([seg], xs, ys)
                 end = getattr(seg, "end", None)         # a whole circle: back to its start
-                xs.append(end[0] if end is not None else xs[0])
-                ys.append(end[1] if end is not None else ys[0])
-                P = np.column_stack([xs, ys])
-                A.append(P[:-1])
-                B.append(P[1:])
-                F.append(np.full(len(P) - 1, k))
-                C += [carrier(seg)] * (len(P) - 1)
-                V.append(P[:-1])
-                VF.append(np.full(len(P) - 1, k))
-            if not shut and segs and getattr(segs[-1], "end", None) is not None:
-                V.append(np.asarray([segs[-1].end], dtype=float))
-                VF.append(np.asarray([k]))
-        z2, zi = np.zeros((0, 2)), np.zeros(0, dtype=np.intp)
-        self.A = np.concatenate(A) if A else z2
-        self.B = np.concatenate(B) if B else z2
-        self.F = np.concatenate(F).astype(np.intp) if F else zi
-        self.C = C
-        self.V = np.concatenate(V) if V else z2
-        self.VF = np.concatenate(VF).astype(np.intp) if VF else zi
+                xs.append(end[0] if end is not None else xs[n0])
+                ys.append(end[1] if end is not None else ys[n0])
+                ends.append(len(xs) - 1)
+                F.append((k, len(xs) - n0 - 1))
+                if carriers:
+                    C.append((carrier(seg), len(xs) - n0 - 1))
+        P = np.column_stack([xs, ys]) if xs else np.zeros((0, 2))
+        last = np.zeros(len(P), dtype=bool)
+        last[ends] = True
+        chord = np.flatnonzero(~last)               # a chord from each point but a run's end
+        self.A, self.B = P[chord], P[chord + 1]
+        counts = np.asarray([c for _, c in F], dtype=np.intp)
+        self.F = np.repeat(np.asarray([f for f, _ in F], dtype=np.intp), counts)
+        self.C = [c for c, n in C for _ in range(n)]
+        # the vertices: the chords' starts, and the end of each open path
+        V, VF = [self.A], [self.F]
+        tail = [(e, k) for (k, shut), e in zip(self._last_of(paths, closed, first), ends)
+                if k is not None]
+        if tail:
+            V.append(P[[e for e, _ in tail]])
+            VF.append(np.asarray([k for _, k in tail], dtype=np.intp))
+        self.V, self.VF = np.concatenate(V), np.concatenate(VF)
+        order = np.argsort(self.VF, kind="stable")  # each path's vertices together, in order
+        self.V, self.VF = self.V[order], self.VF[order]
+        n = len(paths)
+        self.first = np.searchsorted(self.F, np.arange(first, first + n + 1))
+        self.box = np.full((n, 4), np.nan)          # NaN: a path with no chords (left out)
+        full = np.flatnonzero(self.first[1:] > self.first[:-1])
+        if len(full):
+            at = self.first[full]
+            self.box[full, :2] = np.minimum.reduceat(np.minimum(self.A, self.B), at)
+            self.box[full, 2:] = np.maximum.reduceat(np.maximum(self.A, self.B), at)
+
+    @staticmethod
+    def _last_of(paths, closed, first):
+        """For each segment in order: (the path's index, closed) at an open path's last
+        segment, else (None, None)."""
+        for k, (segs, shut) in enumerate(zip(paths, closed), first):
+            for j, seg in enumerate(segs):
+                yield ((k, shut) if j == len(segs) - 1 and not shut
+                       and getattr(seg, "end", None) is not None else (None, None))
 
 
 def _exact(dist, foot, A, B, C, P) -> np.ndarray:
@@ -104,22 +129,57 @@ def _exact(dist, foot, A, B, C, P) -> np.ndarray:
     return out
 
 
-def _crossing(P: _Paths, Q: _Paths) -> np.ndarray:
-    """The pairs (path of ``P``, path of ``Q``) some chords of which cross (k x 2)."""
-    if not len(P.A) or not len(Q.A):
-        return np.zeros((0, 2), dtype=np.intp)
-    pb = np.hstack([np.minimum(P.A, P.B), np.maximum(P.A, P.B)])
-    qb = np.hstack([np.minimum(Q.A, Q.B), np.maximum(Q.A, Q.B)])
-    ij = box_pairs_between(pb, qb, TOUCH)
+def _crossing(P: _Paths, Q: _Paths) -> list:
+    """The pairs (path of ``P``, path of ``Q``) some chords of which cross: the chords of
+    the paths of ``Q`` whose boxes meet a path of ``P``'s, against ``P``'s chords whose boxes
+    meet theirs."""
+    ip, iq = (np.flatnonzero(~np.isnan(X.box[:, 0])) for X in (P, Q))
+    fp = box_pairs_between(P.box[ip], Q.box[iq], TOUCH)
+    if not len(fp):
+        return []
+    near = np.unique(iq[fp[:, 1]])
+    qk = np.concatenate([np.arange(Q.first[j], Q.first[j + 1]) for j in near])
+    box = lambda A, B: np.hstack([np.minimum(A, B), np.maximum(A, B)])     # noqa: E731
+    ij = box_pairs_between(box(P.A, P.B), box(Q.A[qk], Q.B[qk]), TOUCH)
     if not len(ij):
-        return np.zeros((0, 2), dtype=np.intp)
-    i, j = ij[:, 0], ij[:, 1]
+        return []
+    i, j = ij[:, 0], qk[ij[:, 1]]
     a, b, c, d = P.A[i], P.B[i], Q.A[j], Q.B[j]
 
     def orient(p, q, r):
         return (q[:, 0] - p[:, 0]) * (r[:, 1] - p[:, 1]) - (q[:, 1] - p[:, 1]) * (r[:, 0] - p[:, 0])
     hit = (orient(a, b, c) * orient(a, b, d) <= 0) & (orient(c, d, a) * orient(c, d, b) <= 0)
-    return np.unique(np.column_stack([P.F[i[hit]], Q.F[j[hit]]]), axis=0)
+    return [(int(x), int(y)) for x, y in
+            np.unique(np.column_stack([P.F[i[hit]], Q.F[j[hit]]]), axis=0)]
+
+
+def _seg_box(seg) -> tuple:
+    """A box around exact segment ``seg`` (a whole circle's or arc's: its circle's)."""
+    c = carrier(seg)
+    if c[0] == "C":
+        return (c[1] - c[3], c[2] - c[3], c[1] + c[3], c[2] + c[3])
+    if c[0] == "L":
+        (x0, y0), (x1, y1) = seg.start, seg.end
+        return (min(x0, x1), min(y0, y1), max(x0, x1), max(y0, y1))
+    xs, ys = [], []
+    sample_xy([seg], xs, ys)
+    xs.append(seg.end[0])
+    ys.append(seg.end[1])
+    pad = 1e-2                               # a curve's chords within CHORD_TOL of it
+    return (min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad)
+
+
+def _near_loops(loops: list, slits: _Paths, reach: float) -> list:
+    """``loops`` with those farther than ``reach`` from every through-cut's box left empty
+    (so that a panel of 20,000 holes samples only the holes beside its cuts)."""
+    if not len(loops):
+        return []
+    boxes = np.asarray([[f(v) for f, v in zip((min, min, max, max), zip(
+        *[_seg_box(g) for g in lp.segments]))] if lp.segments else [np.nan] * 4
+        for lp in loops], dtype=float)
+    full = np.flatnonzero(~np.isnan(slits.box[:, 0]))
+    near = set(box_pairs_between(slits.box[full], boxes, reach)[:, 1].tolist())
+    return [lp.segments if k in near else [] for k, lp in enumerate(loops)]
 
 
 def _meets(slits: _Paths, design: _Paths, m: int) -> tuple[set, np.ndarray]:
@@ -207,10 +267,6 @@ def eaten_walls(output, width, min_wall_of, apart: bool = False, design=None,
         w = width.get(p.name, 0.0) if isinstance(width, dict) else width
         found = _part(p, drawn_parts.get(p.name, p), strokes, tooled[p.name], w / 2,
                       min_wall_of(p.name))
-        found.sort(key=lambda e: e.left)
-        if len(found) > SHOWN:
-            last = found[SHOWN - 1]
-            found = found[:SHOWN - 1] + [Eaten(**{**last.__dict__, "more": len(found) - SHOWN})]
         out += found
     return out
 
@@ -224,13 +280,13 @@ def _part(p, drawn, strokes: list, loops: list, r: float, t: float) -> list[Eate
     ``strokes``, its tool-path ``loops`` and a tool of radius ``r``, minimum wall ``t``."""
     m = len(strokes)
     slits = _Paths([st.segments for st in strokes], [st.closed for st in strokes])
-    design = _Paths([st.segments for st in strokes] + [lp.segments for lp in drawn.loops],
-                    [st.closed for st in strokes] + [True] * len(drawn.loops))
+    reach = 2 * r + max(t, 0.0) + 1e-6
+    design = _Paths([st.segments for st in strokes] + _near_loops(drawn.loops, slits, reach),
+                    [st.closed for st in strokes] + [True] * len(drawn.loops), carriers=False)
     meet, touching = _meets(slits, design, m)
     chain = np.asarray(_chains(meet, m), dtype=np.intp)
-    path = _Paths([lp.segments for lp in loops], [True] * len(loops), first=m)
+    path = _Paths(_near_loops(loops, slits, reach), [True] * len(loops), first=m)
     meets_loop = {(int(chain[a]), b) for a, b in meet if b >= m}
-    reach = 2 * r + max(t, 0.0) + 1e-6
     found: dict = {}        # (kind, cut, other) -> [left, at, point on the cut, vertices]
 
     def note(key, left, at, on_cut, vi):
@@ -271,22 +327,28 @@ def _part(p, drawn, strokes: list, loops: list, r: float, t: float) -> list[Eate
         left = float(dist[q]) - 2 * r
         if thin(left):
             note(("loop", i, o), left, (path.V[v[q]] + ft[q]) / 2, ft[q], None)
-    said = (_said(p, drawn, strokes, slits, key, got, r, t, m,
-                  path if key[0] == "loop" else slits) for key, got in found.items())
-    return [e for e in said if e is not None]
+    kept = []
+    for key, got in found.items():
+        e = _said(p, drawn, strokes, key, got, r, t, m)
+        if e is not None:
+            kept.append((e, key))
+    kept.sort(key=lambda ek: ek[0].left)
+    out = [replace(e, length=_stretch(slits, key, path if key[0] == "loop" else slits, r, t))
+           for e, key in kept[:SHOWN]]
+    if len(kept) > SHOWN:
+        out[-1] = replace(out[-1], more=len(kept) - SHOWN)
+    return out
 
 
 def _free_ends(slits: _Paths, strokes: list, touching: np.ndarray) -> dict:
     """Vertex index -> the direction out of its cut, for each end of an open cut that
     touches nothing in the design (a free end, inside the material)."""
     out = {}
+    first = np.searchsorted(slits.VF, np.arange(len(strokes) + 1))
     for i, st in enumerate(strokes):
-        if st.closed:
+        if st.closed or first[i + 1] - first[i] < 2:
             continue
-        idx = np.flatnonzero(slits.VF == i)
-        if len(idx) < 2:
-            continue
-        a, b = int(idx[0]), int(idx[-1])
+        a, b = int(first[i]), int(first[i + 1]) - 1
         if not touching[a]:
             out[a] = slits.V[a] - slits.V[a + 1]
         if not touching[b]:
@@ -303,34 +365,53 @@ def _ahead(ends: dict, vi: int, foot, at) -> bool:
     return float(np.dot(toward, d)) >= -1e-3 * float(np.hypot(*toward) * np.hypot(*d))
 
 
-def _said(p, drawn, strokes, slits: _Paths, key, got, r, t, m, others: _Paths) -> Eaten | None:
-    """The :class:`Eaten` of one pair (``key``: ("cut", i, j) or ("loop", i, loop), the
-    other path's chords among ``others``); None when it is as thin as drawn (the design's
-    W0507 says it)."""
-    left, at, on_cut, hits = got
+def _said(p, drawn, strokes, key, got, r, t, m) -> Eaten | None:
+    """The :class:`Eaten` of one pair (``key``: ("cut", i, j) or ("loop", i, loop)), its
+    stretch not yet measured; None when it is as thin as drawn (the design's W0507 says
+    it)."""
+    left, at, on_cut, _ = got
     kind, i, o = key
     if kind == "cut":
         drawn_w = left + 2 * r
-        other = f"through-cut `{strokes[o].source}`"
+        other = (f"another through-cut drawn by `{strokes[o].source}`"
+                 if strokes[o].source == strokes[i].source else
+                 f"through-cut `{strokes[o].source}`")
     else:
         lp = drawn.loops[o - m] if o - m < len(drawn.loops) else None
         drawn_w = _distance_to_loop(on_cut, lp) if lp is not None else left + r
         other = _loop_name(p.name, lp) if lp is not None else f"an edge of `{p.name}`"
     if t > 0 and drawn_w < t - 1e-9 * max(1.0, t):
         return None
-    length = 0.0
-    if len(hits) > 1:           # the chords of the cut thin at both ends and in the middle
-        k = np.flatnonzero(slits.F == i)
-        ok = np.isin(slits.A[k], slits.V[list(hits)]).all(1) & \
-            np.isin(slits.B[k], slits.V[list(hits)]).all(1)
-        k = k[ok]
-        if len(k):
-            mid = (slits.A[k] + slits.B[k]) / 2
-            sel = others.F == o
-            gone = _least(mid, others.A[sel], others.B[sel]) - 2 * r < max(t, 1e-9)
-            length = float(np.hypot(*(slits.B[k] - slits.A[k])[gone].T).sum())
     return Eaten(p.name, strokes[i].source or "a through-cut", other, float(drawn_w),
-                 float(left), (float(at[0]), float(at[1])), length, t)
+                 float(left), (float(at[0]), float(at[1])), 0.0, t, two_cuts=kind == "cut")
+
+
+STRETCH_SAMPLES = 4000      # points along a cut at most, where its stretch is measured
+
+
+def _stretch(slits: _Paths, key, others: _Paths, r: float, t: float) -> float:
+    """The length (mm) of cut ``key[1]`` along which less than ``t`` is left between it and
+    path ``key[2]`` (among ``others``): the cut sampled every ``min(r, t) / 2`` mm or so."""
+    _, i, o = key
+    k = np.flatnonzero(slits.F == i)
+    A, B = slits.A[k], slits.B[k]
+    L = np.hypot(*(B - A).T)
+    total = float(L.sum())
+    if total <= 0:
+        return 0.0
+    h = max(min(r, t if t > 0 else r) / 2, total / STRETCH_SAMPLES, 1e-3)
+    n = np.maximum(1, np.ceil(L / h).astype(int))
+    f = np.concatenate([(np.arange(c) + 0.5) / c for c in n])
+    which = np.repeat(np.arange(len(k)), n)
+    P = A[which] + f[:, None] * (B - A)[which]
+    w = np.repeat(L / n, n)
+    sel = others.F == o
+    OA, OB = others.A[sel], others.B[sel]
+    reach = 2 * r + t + 1e-6                  # only the other path's chords within reach
+    lo, hi = P.min(0) - reach, P.max(0) + reach
+    near = (np.maximum(OA, OB) >= lo).all(1) & (np.minimum(OA, OB) <= hi).all(1)
+    thin = _least(P, OA[near], OB[near]) - 2 * r < max(t, 1e-9)
+    return float(w[thin].sum())
 
 
 def _least(P, A, B) -> np.ndarray:
@@ -378,7 +459,7 @@ def eaten_message(e: Eaten, width: float, router: bool) -> tuple[str, str]:
     """The warning's words and its hint for ``e`` (``width``: the tool's mm)."""
     r = width / 2
     tool, half = _words(r, router)
-    sides = "each cut's side" if e.other.startswith("through-cut") else "the cut's side"
+    sides = "each cut's side" if e.two_cuts else "the cut's side"
     stretch = f" over {e.length:.3g} mm of the cut" if e.length > 2 * r else ""
     what = "strip" if stretch else "bridge"
     where = f"near ({e.at[0]:.2f}, {e.at[1]:.2f})"
@@ -393,7 +474,7 @@ def eaten_message(e: Eaten, width: float, router: bool) -> tuple[str, str]:
                 f"{e.min_wall:g} mm")
     if e.more:
         said += f" (and {e.more} more like it in `{e.part}`)"
-    gap = (2 * r if sides == "each cut's side" else r) + e.min_wall
+    gap = (2 * r if e.two_cuts else r) + e.min_wall
     smaller = "a smaller tool (the profile's `tool_diameter`)" if router else \
         "a smaller kerf (`kerf` in the program, or --kerf)"
     hint = (f"keep `{e.cut}` at least {_mm(gap)} mm from {e.other} (the tool's reach plus the "
