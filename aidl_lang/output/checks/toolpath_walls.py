@@ -31,6 +31,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ...geometry.curves import carrier, distance_to, sample_xy
+from ...geometry.curves import foot as foot_on
+from ...geometry.tessellate import CHORD_TOL
 from ..part.nearby import box_pairs_between, close_pairs
 
 TOUCH = 1e-6        # mm: a through-cut this near a loop or another cut meets it in the design
@@ -42,7 +44,8 @@ class Eaten:
     """Material of part ``part`` between through-cut ``cut`` (its label) and ``other``
     (words: ``the outer edge of `p```, ``hole `p.h```, ``through-cut `p.s.b```): ``drawn``
     mm wide in the design, ``left`` mm once the tool has cut (0 or less: cut through),
-    nearest at ``at`` (x, y mm, the middle of what is left there); over ``length`` mm of the
+    nearest at ``at`` (x, y mm, the middle of what is left there, or the point of the cut
+    where nothing is); over ``length`` mm of the
     cut less than ``min_wall`` mm is left (0: at a point, a bridge at the cut's end)."""
     part: str
     cut: str
@@ -88,12 +91,17 @@ class _Paths:
         V, VF = [self.A], [self.F]
         tail = [(e, k) for (k, shut), e in zip(self._last_of(paths, closed, first), ends)
                 if k is not None]
+        VC = list(self.C)
         if tail:
             V.append(P[[e for e, _ in tail]])
             VF.append(np.asarray([k for _, k in tail], dtype=np.intp))
+            if carriers:
+                last = np.searchsorted(self.F, [k for _, k in tail], side="right") - 1
+                VC += [self.C[j] for j in last]
         self.V, self.VF = np.concatenate(V), np.concatenate(VF)
         order = np.argsort(self.VF, kind="stable")  # each path's vertices together, in order
         self.V, self.VF = self.V[order], self.VF[order]
+        self.VC = [VC[j] for j in order] if carriers else None      # each vertex's carrier
         n = len(paths)
         self.first = np.searchsorted(self.F, np.arange(first, first + n + 1))
         self.box = np.full((n, 4), np.nan)          # NaN: a path with no chords (left out)
@@ -113,20 +121,41 @@ class _Paths:
                        and getattr(seg, "end", None) is not None else (None, None))
 
 
-def _exact(dist, foot, A, B, C, P) -> np.ndarray:
-    """``dist`` (from points ``P`` to chords ``A``-``B`` with feet ``foot``) made exact
-    where the foot lies inside a chord of a circle (the point's distance to the circle)."""
+def _exact(dist, foot, A, B, C, P, PC=None) -> tuple:
+    """``dist`` (from points ``P`` to chords ``A``-``B`` with feet ``foot``) made exact on
+    circles: where the foot lies inside a chord of a circle, the point's distance to the
+    circle; where the point lies on a circle (its carrier in ``PC``) and the chord on a line,
+    the circle's distance to the chord when its nearest point is within a chord of ``P``
+    (a hole's round edge beside a straight slit, between its vertices).  Returns the
+    distances, and the points and feet moved to where they are reached."""
     out = np.array(dist, dtype=float)
+    P, foot = np.array(P, dtype=float).reshape(-1, 2), np.array(foot, dtype=float).reshape(-1, 2)
     if not len(out):
-        return out
+        return out, P, foot
     e = B - A
     L2 = np.einsum("ij,ij->i", e, e)
     u = np.einsum("ij,ij->i", foot - A, e) / np.where(L2 > 0, L2, 1.0)
-    for q in np.flatnonzero((u > 1e-9) & (u < 1 - 1e-9)):
+    for q in range(len(out)):
         c = C[q]
         if c[0] == "C":
-            out[q] = distance_to(c, tuple(P[q]))
-    return out
+            if 1e-9 < u[q] < 1 - 1e-9:
+                out[q] = distance_to(c, tuple(P[q]))
+                foot[q] = foot_on(c, tuple(P[q]))
+            continue
+        pc = PC[q] if PC is not None else None
+        if c[0] != "L" or pc is None or pc[0] != "C":
+            continue
+        o = np.asarray(pc[1:3])
+        k = min(max(float(np.dot(o - A[q], e[q]) / L2[q]) if L2[q] > 0 else 0.0, 0.0), 1.0)
+        f = A[q] + k * e[q]                         # the chord's point nearest the centre
+        L = float(np.hypot(*(f - o)))
+        d = L - pc[3]
+        if d > 0 and L > 0:
+            x = o + (f - o) / L * pc[3]             # the circle's point nearest the chord
+            if np.hypot(*(x - P[q])) <= 4 * math.sqrt(2 * pc[3] * CHORD_TOL) + 1e-9 \
+                    and d < out[q]:
+                out[q], P[q], foot[q] = d, x, f
+    return out, P, foot
 
 
 def _crossing(P: _Paths, Q: _Paths) -> list:
@@ -305,7 +334,10 @@ def _part(p, drawn, strokes: list, loops: list, r: float, t: float) -> list[Eate
     C = slits.C + path.C
     SF = np.concatenate([slits.F, path.F])
     v, s, dist, ft = close_pairs(slits.V, chain[slits.VF], A, B, F, reach)
-    dist = _exact(dist, ft, A[s], B[s], [C[k] for k in s], slits.V[v])
+    keep = np.flatnonzero(dist - 2 * r < max(t, tol) + 4 * CHORD_TOL)   # may be thin
+    v, s, ft = v[keep], s[keep], ft[keep]
+    dist, on, ft = _exact(dist[keep], ft, A[s], B[s], [C[k] for k in s], slits.V[v],
+                          [slits.VC[k] for k in v])
     ends = _free_ends(slits, strokes, touching)
     for q in np.flatnonzero(dist - 2 * r < max(t, tol)):
         vi, k = int(v[q]), int(s[q])
@@ -316,17 +348,20 @@ def _part(p, drawn, strokes: list, loops: list, r: float, t: float) -> list[Eate
         left = float(dist[q]) - 2 * r
         if thin(left):
             key = ("cut", min(i, o), max(i, o)) if o < m else ("loop", i, o)
-            note(key, left, (slits.V[vi] + ft[q]) / 2, slits.V[vi], vi)
+            note(key, left, (on[q] + ft[q]) / 2, on[q], vi)
     # the loops' vertices against the cuts' chords (a hole's corner beside a long slit)
     v, s, dist, ft = close_pairs(path.V, path.VF, slits.A, slits.B, chain[slits.F], reach)
-    dist = _exact(dist, ft, slits.A[s], slits.B[s], [slits.C[k] for k in s], path.V[v])
+    keep = np.flatnonzero(dist - 2 * r < max(t, tol) + 4 * CHORD_TOL)
+    v, s, ft = v[keep], s[keep], ft[keep]
+    dist, on, ft = _exact(dist[keep], ft, slits.A[s], slits.B[s], [slits.C[k] for k in s],
+                          path.V[v], [path.VC[k] for k in v])
     for q in np.flatnonzero(dist - 2 * r < max(t, tol)):
         i, o = int(slits.F[s[q]]), int(path.VF[v[q]])
         if (int(chain[i]), o) in meets_loop:
             continue
         left = float(dist[q]) - 2 * r
         if thin(left):
-            note(("loop", i, o), left, (path.V[v[q]] + ft[q]) / 2, ft[q], None)
+            note(("loop", i, o), left, (on[q] + ft[q]) / 2, ft[q], None)
     kept = []
     for key, got in found.items():
         e = _said(p, drawn, strokes, key, got, r, t, m)
@@ -378,10 +413,14 @@ def _said(p, drawn, strokes, key, got, r, t, m) -> Eaten | None:
                  f"through-cut `{strokes[o].source}`")
     else:
         lp = drawn.loops[o - m] if o - m < len(drawn.loops) else None
-        drawn_w = _distance_to_loop(on_cut, lp) if lp is not None else left + r
+        drawn_w = _drawn_distance(strokes[i].segments, lp, at, 2 * r + t + 1.0) \
+            if lp is not None else left + r
+        drawn_w = left + r if not math.isfinite(drawn_w) else drawn_w
         other = _loop_name(p.name, lp) if lp is not None else f"an edge of `{p.name}`"
     if t > 0 and drawn_w < t - 1e-9 * max(1.0, t):
         return None
+    if left <= 0:               # nothing left: where on the cut it breaks through
+        at = on_cut
     return Eaten(p.name, strokes[i].source or "a through-cut", other, float(drawn_w),
                  float(left), (float(at[0]), float(at[1])), 0.0, t, two_cuts=kind == "cut")
 
@@ -429,18 +468,37 @@ def _least(P, A, B) -> np.ndarray:
     return out
 
 
-def _distance_to_loop(P, lp) -> float:
-    """The least distance from point ``P`` to loop ``lp`` (exact on lines and circles)."""
-    L = _Paths([lp.segments], [True])
-    e = L.B - L.A
-    L2 = np.einsum("ij,ij->i", e, e)
-    u = np.clip(np.einsum("ij,ij->i", np.asarray(P)[None] - L.A, e) / np.where(L2 > 0, L2, 1.0),
-                0.0, 1.0)
-    foot = L.A + u[:, None] * e
-    d = np.hypot(*(np.asarray(P)[None] - foot).T)
-    k = int(np.argmin(d))
-    return float(_exact(d[k:k + 1], foot[k:k + 1], L.A[k:k + 1], L.B[k:k + 1], [L.C[k]],
-                        np.asarray([P]))[0])
+def _feet(V, A, B):
+    """For each point ``V``: the index of its nearest chord ``A``-``B``, the distance and
+    the foot."""
+    e = B - A
+    L2 = np.where(np.einsum("ij,ij->i", e, e) > 0, np.einsum("ij,ij->i", e, e), 1.0)
+    d = V[:, None, :] - A[None]
+    u = np.clip(np.einsum("pij,ij->pi", d, e) / L2, 0.0, 1.0)
+    q = d - u[..., None] * e[None]
+    dist = np.sqrt(np.einsum("pij,pij->pi", q, q))
+    k = dist.argmin(1)
+    rows = np.arange(len(V))
+    return k, dist[rows, k], A[k] + u[rows, k][:, None] * e[k]
+
+
+def _drawn_distance(segments, lp, at, pad: float) -> float:
+    """The least distance, as drawn, between a through-cut (its exact ``segments``) and loop
+    ``lp`` within ``pad`` of ``at`` (exact on lines and circles)."""
+    P, Q = _Paths([segments], [False]), _Paths([lp.segments], [True])
+    lo, hi = np.asarray(at) - pad, np.asarray(at) + pad
+    best = math.inf
+    for X, Y in ((P, Q), (Q, P)):
+        inV = ((X.V >= lo) & (X.V <= hi)).all(1)
+        inC = ((np.maximum(Y.A, Y.B) >= lo) & (np.minimum(Y.A, Y.B) <= hi)).all(1)
+        V, VC = X.V[inV], [c for c, ok in zip(X.VC, inV) if ok]
+        ci = np.flatnonzero(inC)
+        if not len(V) or not len(ci):
+            continue
+        k, d, ft = _feet(V, Y.A[ci], Y.B[ci])
+        d = _exact(d, ft, Y.A[ci][k], Y.B[ci][k], [Y.C[j] for j in ci[k]], V, VC)[0]
+        best = min(best, float(d.min()))
+    return best
 
 
 def _mm(x: float) -> str:
