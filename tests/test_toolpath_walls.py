@@ -4,8 +4,9 @@ minimum wall is a located W0507 naming the width left and where
 (aidl_lang/output/checks/toolpath_walls.py).  The widths are checked against the G-code
 itself, replayed by test_gcode's independent reader (``gcodeparser``) and measured with
 shapely; a law over generated slit-to-edge distances (and arc slits in a disc) holds
-"warned iff the width left < the minimum wall".  Cost: about 6 s CPU (20 generated programs
-compiled, two rendered through the command line, two scaling runs of 0.1 and 0.4 s)."""
+"warned iff the width left < the minimum wall"; the flex box (the only example with
+through-cuts) is warned only where it should be.  Cost: about 9 s CPU (20 generated programs
+compiled, eight rendered through the command line, two scaling runs of 0.1 and 0.4 s)."""
 import math
 import re
 import time
@@ -191,3 +192,20 @@ def test_a_panel_of_holes_and_slits_is_checked_in_n_log_n():
         # the bridges between rows, and the first and last rows' to the plate's edges
         assert len(said) == 5 and said[-1].more == (nx - 1) * (ny + 1) - 5
     assert cpu[1] < 6 * max(cpu[0], 0.02), cpu
+
+
+def test_the_flex_box_hinge_is_warned_only_where_the_bit_leaves_too_little(tmp_path, capsys):
+    """The only example with through-cuts (examples/generators/flex_box.aidl: a living hinge,
+    slits 2 mm apart): a 1 mm bit leaves 1 mm between them, no word; a 1.6 mm bit leaves
+    0.4 mm, under the 0.5 mm minimum: its first five pairs said, the rest counted."""
+    from pathlib import Path
+    src = (Path(__file__).parent.parent / "examples" / "generators" / "flex_box.aidl").read_text()
+    for tool, warned in ((1.0, False), (1.6, True)):
+        (tmp_path / "m.toml").write_text(f'kind = "router"\ntool_diameter = {tool}\n')
+        f, said = _render_cli(tmp_path, capsys, src, "b.gcode", "--machine",
+                              str(tmp_path / "m.toml"))
+        assert ("W0507" in said) == warned
+        if warned:
+            assert said.count("warning[W0507]: the router's bit (1.6 mm across) leaves 0.4 mm "
+                              "of the strip of `round_box.box.wall` between through-cut") == 5
+            assert re.search(r"\(and \d+ more like it in `round_box.box.wall`\)", said)
