@@ -209,3 +209,20 @@ def test_the_flex_box_hinge_is_warned_only_where_the_bit_leaves_too_little(tmp_p
             assert said.count("warning[W0507]: the router's bit (1.6 mm across) leaves 0.4 mm "
                               "of the strip of `round_box.box.wall` between through-cut") == 5
             assert re.search(r"\(and \d+ more like it in `round_box.box.wall`\)", said)
+
+
+def test_the_mcp_render_says_it_too(tmp_path):
+    """MCP `render` of the 1.6 mm bridge to G-code for the router (and of the kerf's bridge to
+    SVG): the same located W0507 among its diagnostics, the file written as before."""
+    pytest.importorskip("mcp")
+    from aidl_lang.mcp import tools as T
+    (tmp_path / "p.aidl").write_text(_slit_plate(1.6))
+    (tmp_path / "k.aidl").write_text("kerf 0.3 mm\n" + _slit_plate(0.6))
+    ws = T.Workspace(tmp_path)
+    doc, _ = T.render(ws, path="p.aidl", output="p.gcode", machine="router")
+    (w,) = [d for d in doc["diagnostics"] if d["code"] == "W0507"]
+    assert w["message"].startswith("the router's bit (3.175 mm across) leaves 0.0125 mm")
+    assert w["span"]["line"] == 4 and (tmp_path / "p.gcode").exists()
+    doc, _ = T.render(ws, path="k.aidl", output="k.svg")
+    (w,) = [d for d in doc["diagnostics"] if d["code"] == "W0507"]
+    assert w["message"].startswith("the laser's kerf (0.3 mm) leaves 0.45 mm")

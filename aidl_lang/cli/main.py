@@ -545,14 +545,15 @@ def cmd_render(args) -> int:
                          "and .stl show them bent")
         routed = machine is not None and machine.kind == "router" and any(
             j[2] in (".gcode", ".nc") for j in jobs)
-        if routed:
-            split = _router_splits(res, output, machine.tool_diameter)
-            _tool_walls(res, cut, output, machine.tool_diameter, True, args.min_wall,
-                        bool(args.layout), skip=split)
+        from ..output.checks.toolpath_walls import machine_warnings
+        if routed:              # W0510 (cut apart) and W0507 (too little left), located
+            machine_warnings(res.drawing, cut, output, machine.tool_diameter, True, res.sink,
+                             args.min_wall, bool(args.layout))
         elif cut is not output and not args.assembled and any(j[2] in CUT_FORMATS
                                                               for j in jobs):
-            _tool_walls(res, output, output, kerf if kerf is not None else
-                        output.drawing.kerf, False, args.min_wall, bool(args.layout))
+            machine_warnings(res.drawing, output, output, kerf if kerf is not None else
+                             output.drawing.kerf, False, res.sink, args.min_wall,
+                             bool(args.layout))
         items = _encode_all(jobs, opt, res.deadline)
     except MissingDependency as e:           # not the program's fault: install the extra
         print(f"aidl: error: {e}", file=sys.stderr)
@@ -578,7 +579,7 @@ def cmd_render(args) -> int:
         if _suffix(o, args) in GCODE_FORMATS:
             estimate, warnings, said_notes = read_summary(data)
             for w in warnings:
-                if w.endswith(LOCATED_TAGS):     # said located (_router_splits, _tool_walls)
+                if w.endswith(LOCATED_TAGS):     # said located (machine_warnings)
                     continue
                 if w not in said:
                     said.add(w)
@@ -594,54 +595,6 @@ def cmd_render(args) -> int:
             if o != STDOUT:
                 print(f"wrote {o}", file=info)
     return 0
-
-
-def _router_splits(res, output, diameter: float) -> set:
-    """W0510 in ``res.sink`` for each part of ``output`` (the design) that a router's bit of
-    ``diameter`` mm cuts into more pieces than the design has (through-cuts nearer the
-    part's edges, holes or each other than the bit's reach), located at the through-cut's
-    structure (else the part's); the names of those parts."""
-    from ..output.fabrication.bridges import router_bridges, split_message
-    _, splits = router_bridges(output, diameter)
-    for sp in splits:
-        node = res.drawing.part_of.get(sp.part)
-        if node is None:
-            continue
-        path = sp.bridges[0].cut
-        rest = path[len(sp.part) + 1:].split(".") if path.startswith(sp.part + ".") else []
-        for name in rest:
-            child = node.children.get(name) if hasattr(node, "children") else None
-            if child is None:
-                break
-            node = child
-        res.sink.warning("W0510", split_message(sp, diameter), node.span,
-                         hint="the design (`aidl check`, `aidl parts`) has one piece; the bit "
-                              "cuts the through-cut as wide as itself, round past its ends")
-    return {sp.part for sp in splits}
-
-
-def _tool_walls(res, cut, design, width, router: bool, given, apart: bool,
-                skip=frozenset()) -> None:
-    """W0507 in ``res.sink`` for the material beside the through-cuts of ``cut`` (what the
-    machine gets) that a cutter of ``width`` mm (a router's bit, ``router``; else a laser's
-    kerf: mm or a dict part name -> mm) leaves thinner than the minimum wall (``given``:
-    --min-wall) or cuts away (:func:`~..output.checks.toolpath_walls.eaten_walls`), located
-    at the through-cut; the parts ``skip`` (W0510 already) are not said again."""
-    from ..output.checks import part_min_wall
-    from ..output.checks.toolpath_walls import eaten_message, eaten_walls
-    d = res.drawing
-    if not width or not getattr(d, "through", ()):
-        return
-    spans = {th.geometry.label: th.geometry.span for th in d.through}
-    for e in eaten_walls(cut, width, lambda n: part_min_wall(d, d.part_of.get(n), given),
-                         apart=apart, design=design):
-        if e.part in skip:
-            continue
-        w = width.get(e.part, 0.0) if isinstance(width, dict) else width
-        said, hint = eaten_message(e, w, router)
-        node = d.part_of.get(e.part)
-        res.sink.warning("W0507", said, spans.get(e.cut) or (node.span if node else None),
-                         hint=hint)
 
 
 def cmd_parts(args) -> int:

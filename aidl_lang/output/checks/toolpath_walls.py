@@ -541,4 +541,55 @@ def eaten_message(e: Eaten, width: float, router: bool) -> tuple[str, str]:
     return said, hint
 
 
-__all__ = ["Eaten", "eaten_walls", "eaten_message"]
+def machine_warnings(drawing, cut, design, width, router: bool, sink, given=None,
+                     apart: bool = False) -> None:
+    """The warnings of cutting ``cut`` (what the machine gets; ``design``: as drawn) with a
+    tool of ``width`` mm (a router's bit, ``router``; else a laser's kerf: mm or a dict part
+    name -> mm) into ``sink``, located: W0510 for each part a router's bit cuts into more
+    pieces than the design has (:func:`~..fabrication.bridges.router_bridges`, at the
+    through-cut's structure), W0507 for the material beside the through-cuts the tool leaves
+    thinner than the minimum wall (``given``: ``--min-wall``, else the program's) or cuts
+    away (:func:`eaten_walls`, at the through-cut), the parts of a W0510 not said again.
+    ``drawing``: the booleans' result (the spans, the minimum walls)."""
+    from . import part_min_wall
+    if not width or not getattr(drawing, "through", ()):
+        return
+    split = _splits(drawing, design, width, sink) if router else set()
+    spans = {th.geometry.label: th.geometry.span for th in drawing.through}
+    for e in eaten_walls(cut, width, lambda n: part_min_wall(drawing, drawing.part_of.get(n),
+                                                             given),
+                         apart=apart, design=design):
+        if e.part in split:
+            continue
+        w = width.get(e.part, 0.0) if isinstance(width, dict) else width
+        said, hint = eaten_message(e, w, router)
+        node = drawing.part_of.get(e.part)
+        sink.warning("W0507", said, spans.get(e.cut) or (node.span if node else None),
+                     hint=hint)
+
+
+def _splits(drawing, output, diameter: float, sink) -> set:
+    """W0510 in ``sink`` for each part of ``output`` (the design) that a router's bit of
+    ``diameter`` mm cuts into more pieces than the design has (through-cuts nearer the
+    part's edges, holes or each other than the bit's reach), located at the through-cut's
+    structure (else the part's); the names of those parts."""
+    from ..fabrication.bridges import router_bridges, split_message
+    _, splits = router_bridges(output, diameter)
+    for sp in splits:
+        node = drawing.part_of.get(sp.part)
+        if node is None:
+            continue
+        path = sp.bridges[0].cut
+        rest = path[len(sp.part) + 1:].split(".") if path.startswith(sp.part + ".") else []
+        for name in rest:
+            child = node.children.get(name) if hasattr(node, "children") else None
+            if child is None:
+                break
+            node = child
+        sink.warning("W0510", split_message(sp, diameter), node.span,
+                     hint="the design (`aidl check`, `aidl parts`) has one piece; the bit "
+                          "cuts the through-cut as wide as itself, round past its ends")
+    return {sp.part for sp in splits}
+
+
+__all__ = ["Eaten", "eaten_walls", "eaten_message", "machine_warnings"]
