@@ -316,14 +316,16 @@ def _part(p, drawn, strokes: list, loops: list, r: float, t: float) -> list[Eate
     chain = np.asarray(_chains(meet, m), dtype=np.intp)
     path = _Paths(_near_loops(loops, slits, reach), [True] * len(loops), first=m)
     meets_loop = {(int(chain[a]), b) for a, b in meet if b >= m}
-    found: dict = {}        # (kind, cut, other) -> [left, at, point on the cut, vertices]
+    # (kind, chain, other chain or loop) -> [left, at, point on the cut, (kind, cut, other)]:
+    # one warning for the thinnest place between two chains of cuts, or a chain and a loop
+    found: dict = {}
 
-    def note(key, left, at, on_cut, vi):
-        got = found.setdefault(key, [math.inf, None, None, set()])
+    def note(kind, i, o, left, at, on_cut):
+        key = (kind, *sorted((int(chain[i]), int(chain[o])))) if kind == "cut" else \
+            (kind, int(chain[i]), o)
+        got = found.setdefault(key, [math.inf, None, None, None])
         if left < got[0]:
-            got[0], got[1], got[2] = left, at, on_cut
-        if vi is not None:
-            got[3].add(vi)
+            got[:] = [left, at, on_cut, (kind, i, o)]
     tol = 1e-9 * max(1.0, t)
     thin = (lambda left: left < t - tol or left <= tol)
     # the cuts' vertices against every other path's chords (cuts by chain: one chain's own
@@ -347,8 +349,7 @@ def _part(p, drawn, strokes: list, loops: list, r: float, t: float) -> list[Eate
             continue
         left = float(dist[q]) - 2 * r
         if thin(left):
-            key = ("cut", min(i, o), max(i, o)) if o < m else ("loop", i, o)
-            note(key, left, (on[q] + ft[q]) / 2, on[q], vi)
+            note("cut" if o < m else "loop", i, o, left, (on[q] + ft[q]) / 2, on[q])
     # the loops' vertices against the cuts' chords (a hole's corner beside a long slit)
     v, s, dist, ft = close_pairs(path.V, path.VF, slits.A, slits.B, chain[slits.F], reach)
     keep = np.flatnonzero(dist - 2 * r < max(t, tol) + 4 * CHORD_TOL)
@@ -361,12 +362,14 @@ def _part(p, drawn, strokes: list, loops: list, r: float, t: float) -> list[Eate
             continue
         left = float(dist[q]) - 2 * r
         if thin(left):
-            note(("loop", i, o), left, (on[q] + ft[q]) / 2, ft[q], None)
+            note("loop", i, o, left, (on[q] + ft[q]) / 2, ft[q])
     kept = []
-    for key, got in found.items():
-        e = _said(p, drawn, strokes, key, got, r, t, m)
+    for got in found.values():
+        kind, i, o = got[3]
+        pair = ("cut", min(i, o), max(i, o)) if kind == "cut" else got[3]   # at the first
+        e = _said(p, drawn, strokes, pair, got, r, t, m)
         if e is not None:
-            kept.append((e, key))
+            kept.append((e, pair))
     kept.sort(key=lambda ek: ek[0].left)
     out = [replace(e, length=_stretch(slits, key, path if key[0] == "loop" else slits, r, t))
            for e, key in kept[:SHOWN]]
