@@ -249,8 +249,9 @@ def _chains(meet: set, m: int) -> list[int]:
 
 def _tooled(output, width, apart: bool) -> dict:
     """Part name -> its loops as the machine cuts them (offset by half of ``width``: mm, or a
-    dict part name -> mm), for the parts with through-cuts; a part whose offset fails (a
-    feature smaller than the tool: the writer refuses it) is left out."""
+    dict part name -> mm), for the parts with through-cuts, and whether they are offset: a
+    part whose exact offset fails (a spline or ellipse, which the router's writer first makes
+    arcs; a feature smaller than the tool, which it refuses) keeps its loops as drawn."""
     from ..fabrication.layout import LayoutError, compensate
     names = {st.part for st in output.cuts if st.part}
     w = {n: (width.get(n, 0.0) if isinstance(width, dict) else width) for n in names}
@@ -259,16 +260,16 @@ def _tooled(output, width, apart: bool) -> dict:
         return {}
     try:
         done = compensate(output, w, apart=apart)
-        return {p.name: p.loops for p in done.parts if p.name in w}
+        return {p.name: (p.loops, True) for p in done.parts if p.name in w}
     except LayoutError:
         pass
-    out = {}
+    out = {p.name: (p.loops, False) for p in output.parts if p.name in w}
     for n, k in w.items():
         try:
             done = compensate(output, {n: k}, apart=apart)
         except LayoutError:
             continue
-        out.update({p.name: p.loops for p in done.parts if p.name == n})
+        out.update({p.name: (p.loops, True) for p in done.parts if p.name == n})
     return out
 
 
@@ -294,8 +295,9 @@ def eaten_walls(output, width, min_wall_of, apart: bool = False, design=None,
             continue
         tick()
         w = width.get(p.name, 0.0) if isinstance(width, dict) else width
-        found = _part(p, drawn_parts.get(p.name, p), strokes, tooled[p.name], w / 2,
-                      min_wall_of(p.name))
+        loops, offset = tooled[p.name]
+        found = _part(p, drawn_parts.get(p.name, p), strokes, loops, w / 2,
+                      min_wall_of(p.name), offset)
         out += found
     return out
 
@@ -304,9 +306,13 @@ def _loop_name(part: str, lp) -> str:
     return f"a hole of `{part}`" if lp.is_hole else f"the outer edge of `{part}`"
 
 
-def _part(p, drawn, strokes: list, loops: list, r: float, t: float) -> list[Eaten]:
+def _part(p, drawn, strokes: list, loops: list, r: float, t: float,
+          offset: bool = True) -> list[Eaten]:
     """:func:`eaten_walls` for one part ``p`` (``drawn``: as in the design) with through-cuts
-    ``strokes``, its tool-path ``loops`` and a tool of radius ``r``, minimum wall ``t``."""
+    ``strokes``, its tool-path ``loops`` (``offset`` False: as drawn, the tool outside them)
+    and a tool of radius ``r``, minimum wall ``t``."""
+    eat = 2 * r if offset else r            # what a cut and a loop's path leave less than
+    # their distance; two cuts' paths, 2 r
     m = len(strokes)
     slits = _Paths([st.segments for st in strokes], [st.closed for st in strokes])
     reach = 2 * r + max(t, 0.0) + 1e-6
@@ -336,31 +342,32 @@ def _part(p, drawn, strokes: list, loops: list, r: float, t: float) -> list[Eate
     C = slits.C + path.C
     SF = np.concatenate([slits.F, path.F])
     v, s, dist, ft = close_pairs(slits.V, chain[slits.VF], A, B, F, reach)
-    keep = np.flatnonzero(dist - 2 * r < max(t, tol) + 4 * CHORD_TOL)   # may be thin
-    v, s, ft = v[keep], s[keep], ft[keep]
+    sub = np.where(SF[s] < m, 2 * r, eat)
+    keep = np.flatnonzero(dist - sub < max(t, tol) + 4 * CHORD_TOL)   # may be thin
+    v, s, ft, sub = v[keep], s[keep], ft[keep], sub[keep]
     dist, on, ft = _exact(dist[keep], ft, A[s], B[s], [C[k] for k in s], slits.V[v],
                           [slits.VC[k] for k in v])
     ends = _free_ends(slits, strokes, touching)
-    for q in np.flatnonzero(dist - 2 * r < max(t, tol)):
+    for q in np.flatnonzero(dist - sub < max(t, tol)):
         vi, k = int(v[q]), int(s[q])
         i, o = int(slits.VF[vi]), int(SF[k])
         if o >= m and (int(chain[i]), o) in meets_loop and not _ahead(ends, vi, ft[q],
                                                                       slits.V[vi]):
             continue
-        left = float(dist[q]) - 2 * r
+        left = float(dist[q] - sub[q])
         if thin(left):
             note("cut" if o < m else "loop", i, o, left, (on[q] + ft[q]) / 2, on[q])
     # the loops' vertices against the cuts' chords (a hole's corner beside a long slit)
     v, s, dist, ft = close_pairs(path.V, path.VF, slits.A, slits.B, chain[slits.F], reach)
-    keep = np.flatnonzero(dist - 2 * r < max(t, tol) + 4 * CHORD_TOL)
+    keep = np.flatnonzero(dist - eat < max(t, tol) + 4 * CHORD_TOL)
     v, s, ft = v[keep], s[keep], ft[keep]
     dist, on, ft = _exact(dist[keep], ft, slits.A[s], slits.B[s], [slits.C[k] for k in s],
                           path.V[v], [path.VC[k] for k in v])
-    for q in np.flatnonzero(dist - 2 * r < max(t, tol)):
+    for q in np.flatnonzero(dist - eat < max(t, tol)):
         i, o = int(slits.F[s[q]]), int(path.VF[v[q]])
         if (int(chain[i]), o) in meets_loop:
             continue
-        left = float(dist[q]) - 2 * r
+        left = float(dist[q]) - eat
         if thin(left):
             note("loop", i, o, left, (on[q] + ft[q]) / 2, ft[q])
     kept = []
@@ -371,7 +378,8 @@ def _part(p, drawn, strokes: list, loops: list, r: float, t: float) -> list[Eate
         if e is not None:
             kept.append((e, pair))
     kept.sort(key=lambda ek: ek[0].left)
-    out = [replace(e, length=_stretch(slits, key, path if key[0] == "loop" else slits, r, t))
+    out = [replace(e, length=_stretch(slits, key, path if key[0] == "loop" else slits,
+                                      eat if key[0] == "loop" else 2 * r, t))
            for e, key in kept[:SHOWN]]
     if len(kept) > SHOWN:
         out[-1] = replace(out[-1], more=len(kept) - SHOWN)
@@ -431,9 +439,11 @@ def _said(p, drawn, strokes, key, got, r, t, m) -> Eaten | None:
 STRETCH_SAMPLES = 4000      # points along a cut at most, where its stretch is measured
 
 
-def _stretch(slits: _Paths, key, others: _Paths, r: float, t: float) -> float:
+def _stretch(slits: _Paths, key, others: _Paths, eat: float, t: float) -> float:
     """The length (mm) of cut ``key[1]`` along which less than ``t`` is left between it and
-    path ``key[2]`` (among ``others``): the cut sampled every ``min(r, t) / 2`` mm or so."""
+    path ``key[2]`` (among ``others``; the tool leaves ``eat`` mm less than their distance):
+    the cut sampled every ``min(eat / 2, t) / 2`` mm or so."""
+    r = eat / 2
     _, i, o = key
     k = np.flatnonzero(slits.F == i)
     A, B = slits.A[k], slits.B[k]
@@ -449,10 +459,10 @@ def _stretch(slits: _Paths, key, others: _Paths, r: float, t: float) -> float:
     w = np.repeat(L / n, n)
     sel = others.F == o
     OA, OB = others.A[sel], others.B[sel]
-    reach = 2 * r + t + 1e-6                  # only the other path's chords within reach
+    reach = eat + t + 1e-6                  # only the other path's chords within reach
     lo, hi = P.min(0) - reach, P.max(0) + reach
     near = (np.maximum(OA, OB) >= lo).all(1) & (np.minimum(OA, OB) <= hi).all(1)
-    thin = _least(P, OA[near], OB[near]) - 2 * r < max(t, 1e-9)
+    thin = _least(P, OA[near], OB[near]) - eat < max(t, 1e-9)
     return float(w[thin].sum())
 
 
