@@ -20,7 +20,7 @@ from shapely.geometry import LineString, Point, box  # noqa: E402
 from shapely.ops import unary_union  # noqa: E402
 
 from test_gcode import replay  # noqa: E402
-from test_machine_safety import _pts, _render_cli, _slit_plate  # noqa: E402
+from test_machine_safety import _pieces_after_the_bit, _pts, _render_cli, _slit_plate  # noqa: E402
 
 from aidl_lang.geometry.curves import Circle, Line, Loop  # noqa: E402
 from aidl_lang.output import build, for_cutting  # noqa: E402
@@ -226,3 +226,21 @@ def test_the_mcp_render_says_it_too(tmp_path):
     doc, _ = T.render(ws, path="k.aidl", output="k.svg")
     (w,) = [d for d in doc["diagnostics"] if d["code"] == "W0507"]
     assert w["message"].startswith("the laser's kerf (0.3 mm) leaves 0.45 mm")
+
+
+def test_a_slit_from_the_edge_that_turns_and_stops_short_cuts_a_corner_off(tmp_path, capsys):
+    """A slit from the top edge down 10 mm, then right to 1.2 mm short of the side: the bit
+    cuts the 1.2 mm bridge at its free end through and the corner falls out (2 pieces in the
+    replayed G-code).  The cut meets the edge, so its distance to the outline is 0 and W0510
+    measured no bridge and said nothing; now W0510 (the pieces) and W0507 (the bridge)."""
+    src = """solid plate {
+    body = Rectangle(center=(30, 20), width=60, height=40)
+    cut l { p = Polyline(points=[(20, 40), (20, 30), (58.8, 30)]) }
+}
+"""
+    f, said = _render_cli(tmp_path, capsys, src, "p.gcode", "--machine", "router")
+    assert _pieces_after_the_bit(f.read_text(), R) == 2
+    assert "t.aidl:3:5: warning[W0510]: part `plate` comes out of the router in 2 pieces" in said
+    assert ("t.aidl:3:17: warning[W0507]: the router's bit (3.175 mm across) cuts away the "
+            "bridge of `plate` between through-cut `plate.l.p` and the outer edge of `plate` "
+            "near (58.80, 30.00): 1.2 mm as drawn") in said

@@ -35,7 +35,8 @@ from ...geometry.curves import foot as foot_on
 from ...geometry.tessellate import CHORD_TOL
 from ..part.nearby import box_pairs_between, close_pairs
 
-TOUCH = 1e-6        # mm: a through-cut this near a loop or another cut meets it in the design
+TOUCH = 2 * CHORD_TOL   # mm: a through-cut this near a loop or another cut meets it in the
+                        # design (on chords, up to CHORD_TOL inside a curve)
 SHOWN = 5           # warnings per part; the rest are counted in the last one
 
 
@@ -585,14 +586,14 @@ def _splits(drawing, output, diameter: float, sink) -> set:
     """W0510 in ``sink`` for each part of ``output`` (the design) that a router's bit of
     ``diameter`` mm cuts into more pieces than the design has (through-cuts nearer the
     part's edges, holes or each other than the bit's reach), located at the through-cut's
-    structure (else the part's); the names of those parts."""
+    structure (else the part's); the names of those parts whose warning names a bridge."""
     from ..fabrication.bridges import router_bridges, split_message
     _, splits = router_bridges(output, diameter)
     for sp in splits:
         node = drawing.part_of.get(sp.part)
         if node is None:
             continue
-        path = sp.bridges[0].cut
+        path = sp.bridges[0].cut if sp.bridges else (sp.cuts or [""])[0]
         rest = path[len(sp.part) + 1:].split(".") if path.startswith(sp.part + ".") else []
         for name in rest:
             child = node.children.get(name) if hasattr(node, "children") else None
@@ -602,7 +603,7 @@ def _splits(drawing, output, diameter: float, sink) -> set:
         sink.warning("W0510", split_message(sp, diameter), node.span,
                      hint="the design (`aidl check`, `aidl parts`) has one piece; the bit "
                           "cuts the through-cut as wide as itself, round past its ends")
-    return {sp.part for sp in splits}
+    return {sp.part for sp in splits if sp.bridges}     # else W0507 names the bridges
 
 
 __all__ = ["Eaten", "eaten_walls", "eaten_message", "machine_warnings"]

@@ -723,7 +723,7 @@ def router_notes(output: Output, diameter: float) -> tuple[list[str], list[str]]
     from ..checks.toolpath_walls import eaten_message, eaten_walls
     from ..fabrication.bridges import router_bridges, split_message
     _, splits = router_bridges(output, diameter)
-    split = {s.part for s in splits}
+    split = {s.part for s in splits if s.bridges}       # else W0507 names the bridges
     d = output.drawing
 
     def min_wall_of(name):
