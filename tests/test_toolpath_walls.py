@@ -244,3 +244,33 @@ def test_a_slit_from_the_edge_that_turns_and_stops_short_cuts_a_corner_off(tmp_p
     assert ("t.aidl:3:17: warning[W0507]: the router's bit (3.175 mm across) cuts away the "
             "bridge of `plate` between through-cut `plate.l.p` and the outer edge of `plate` "
             "near (58.80, 30.00): 1.2 mm as drawn") in said
+
+
+SPLIT = """solid plate {
+    body = Rectangle(center=(30, 20), width=60, height=40)
+    cut sep { l = Line((30, 0), (30, 40)) }
+    cut near { l = Line((31.8, 10), (31.8, 30)) }
+}
+"""
+
+
+def test_a_slit_on_a_freed_piece_goes_with_it_and_is_judged_on_it(tmp_path, capsys):
+    """A cut from edge to edge frees `plate.piece1` (x 30..60); a slit 1.8 mm inside it,
+    beside the shared cut.  Laid out, the slit was written with `plate` (into the scrap 1.8 mm
+    beside it); now on `plate.piece1`, 1.8 mm from its edge (ezdxf).  The router's bit runs
+    the shared cut on its line (nothing left: 1.8 - 2 x 1.5875) and, laid out apart, outside
+    the piece (0.2125 mm left)."""
+    ezdxf = pytest.importorskip("ezdxf")
+    f, _ = _render_cli(tmp_path, capsys, SPLIT, "s.dxf", "--layout", "sheet")
+    doc = ezdxf.readfile(f)
+    (slit,) = [e for e in doc.modelspace() if e.dxftype() == "LINE"]
+    (piece,) = [e for e in doc.modelspace() if e.dxftype() == "LWPOLYLINE"
+                and e.dxf.layer == slit.dxf.layer]
+    assert slit.dxf.layer.endswith("plate.piece1")
+    assert slit.dxf.start[0] - min(p[0] for p in piece.get_points()) == pytest.approx(1.8)
+    _, said = _render_cli(tmp_path, capsys, SPLIT, "s.gcode", "--machine", "router")
+    assert ("cuts away the strip of `plate.piece1` between through-cut `plate.near.l` and the "
+            "outer edge of `plate.piece1` over 20 mm of the cut") in said
+    _, said = _render_cli(tmp_path, capsys, SPLIT, "s.gcode", "--machine", "router",
+                          "--layout", "sheet")
+    assert "leaves 0.2125 mm of the strip of `plate.piece1`" in said
