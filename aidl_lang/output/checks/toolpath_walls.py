@@ -234,18 +234,24 @@ def _meets(slits: _Paths, design: _Paths, m: int) -> tuple[set, np.ndarray]:
 
 
 def _chains(meet: set, m: int) -> list[int]:
-    """Each through-cut's chain (the cuts that meet, joined): a root index per cut."""
-    root = list(range(m))
-
-    def find(i):
-        while root[i] != i:
-            root[i] = root[root[i]]
-            i = root[i]
-        return i
+    """Each through-cut's chain (the cuts that meet, joined): the first cut of its chain,
+    by a walk over the cuts that meet."""
+    nbrs: list = [[] for _ in range(m)]
     for a, b in meet:
-        if b < m:
-            root[find(a)] = find(b)
-    return [find(i) for i in range(m)]
+        if b < m and a != b:
+            nbrs[a].append(b)
+            nbrs[b].append(a)
+    chain = [-1] * m
+    for first in range(m):
+        if chain[first] >= 0:
+            continue
+        chain[first], todo = first, [first]
+        while todo:
+            for b in nbrs[todo.pop()]:
+                if chain[b] < 0:
+                    chain[b] = first
+                    todo.append(b)
+    return chain
 
 
 def _tooled(output, width, apart: bool) -> dict:
