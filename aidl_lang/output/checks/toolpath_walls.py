@@ -555,9 +555,11 @@ def eaten_message(e: Eaten, width: float, router: bool) -> tuple[str, str]:
     gap = (2 * r if e.two_cuts else r) + e.min_wall
     smaller = "a smaller tool (the profile's `tool_diameter`)" if router else \
         "a smaller kerf (`kerf` in the program, or --kerf)"
+    meant = (f"; a bridge this thin, meant: a smaller `min_wall` in `{e.part}`"
+             if e.left > 0 else "")
     hint = (f"keep `{e.cut}` at least {_mm(gap)} mm from {e.other} (the tool's reach plus the "
             f"minimum wall), or use {smaller}; if the cut is meant to go through, run it on to "
-            "meet it")
+            f"meet it{meant}")
     return said, hint
 
 
