@@ -302,13 +302,17 @@ def _onto_pieces(strokes: list[Stroke], pieces: list[PartOutline]) -> None:
     over the piece's loops), not to ``P`` whatever piece it lies on: a slit on a freed piece
     was laid out with the other piece, in the scrap beside it (`--layout sheet`)."""
     import re
-    roots = {p.name for p in pieces if not re.search(r"\.piece\d+$", p.name)}
+    families: dict = {}             # P -> (its pieces, their boxes)
+    for p in pieces:
+        m = re.search(r"\.piece\d+$", p.name)
+        families.setdefault(p.name[:m.start()] if m else p.name, [[], []])[0].append(p)
     for st in strokes:
-        if st.part not in roots or not st.segments:
+        fam = families.get(st.part)
+        if fam is None or len(fam[0]) < 2 or not st.segments:
             continue
-        family = [p for p in pieces if p.name == st.part or p.name.startswith(st.part + ".piece")]
-        if len(family) < 2:
-            continue
+        if not len(fam[1]):         # the pieces' boxes, once, for a family with strokes
+            pts = [np.vstack([lp.points() for lp in p.loops]) for p in fam[0]]
+            fam[1] = np.array([(*P.min(0), *P.max(0)) for P in pts]).reshape(-1, 4)
         xs, ys = [], []
         sample_xy(st.segments[:1], xs, ys)
         end = getattr(st.segments[0], "end", None)
@@ -316,10 +320,13 @@ def _onto_pieces(strokes: list[Stroke], pieces: list[PartOutline]) -> None:
             xs.append(end[0])
             ys.append(end[1])
         k = len(xs) // 2
-        at = ((xs[k - 1] + xs[k]) / 2, (ys[k - 1] + ys[k]) / 2) if len(xs) > 1 else (xs[0], ys[0])
-        for p in family:
-            if _holds(p.loops, at):
-                st.part = p.name
+        x, y = ((xs[k - 1] + xs[k]) / 2, (ys[k - 1] + ys[k]) / 2) if len(xs) > 1 else \
+            (xs[0], ys[0])
+        box = fam[1]
+        for j in np.flatnonzero((box[:, 0] <= x) & (x <= box[:, 2]) & (box[:, 1] <= y)
+                                & (y <= box[:, 3])):
+            if _holds(fam[0][j].loops, (x, y)):
+                st.part = fam[0][j].name
                 break
 
 
