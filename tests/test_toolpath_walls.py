@@ -5,8 +5,9 @@ minimum wall is a located W0507 naming the width left and where
 itself, replayed by test_gcode's independent reader (``gcodeparser``) and measured with
 shapely; a law over generated slit-to-edge distances (and arc slits in a disc) holds
 "warned iff the width left < the minimum wall"; the flex box (the only example with
-through-cuts) is warned only where it should be.  Cost: about 5.3 s CPU, imports included (20 generated programs
-compiled, eight rendered through the command line, two scaling runs of 0.1 and 0.4 s)."""
+through-cuts) is warned only where it should be.  Cost: about 5.3 s CPU, imports included
+(20 generated programs compiled, ten rendered through the command line, two scaling runs
+of 0.1 and 0.4 s)."""
 import math
 import re
 import time

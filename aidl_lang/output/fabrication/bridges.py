@@ -179,7 +179,8 @@ def split_message(s: Split, diameter: float) -> str:
         return (f"part `{s.part}` comes out of the router in {s.pieces} pieces, not "
                 f"{s.design}: the bit ({diameter:g} mm across) cuts its through-cuts as wide "
                 f"as itself and cuts away the bridges they leave (at the end of through-cut "
-                f"`{s.cuts[0] if s.cuts else 'a through-cut'}`: W0507 says each); leave bridges wider "
+                f"`{s.cuts[0] if s.cuts else 'a through-cut'}`: W0507 says each); leave "
+                "bridges wider "
                 "than the bit's radius or use a smaller tool (the profile's `tool_diameter`)")
     first = s.bridges[0]
     more = len(s.bridges) - 1
