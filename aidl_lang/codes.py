@@ -590,6 +590,24 @@ another cut, a hole or the outline (two slits ending 0.05 mm apart, a slit endin
 the edge), named with the cut, what it stops short of and the width (exact on lines and
 circles: a living hinge's bridges exactly `min_wall` wide pass). End the cut farther away, or
 run it on to meet the other curve when it is meant to cut through.
+Also from `aidl render` (a machine file): what the cutter leaves. A through-cut has no width
+in the design; a router's bit cuts it as wide as itself (`--machine router`: its
+`tool_diameter`), a laser as wide as its kerf (the program's `kerf`, or `--kerf`), round past
+each end, while the outlines and holes are offset to keep their size. So the material beside
+a through-cut is narrower than drawn by the tool's radius (by its diameter between two
+through-cuts): a slit 1.6 mm from a plate's edge passes at 0.5 mm, and a 3.175 mm bit leaves
+0.0125 mm of that bridge. Every bridge, rim or strip the tool leaves thinner than the minimum
+wall (or cuts away: "nothing is left there") is a warning at the through-cut, with the width
+as drawn, the width left, where (and over how much of the cut, for a strip along it), and how
+far to keep the cut; measured between the tool's own paths (exact on lines and circles), the
+first five of a part said and the rest counted. A bridge already thinner than the minimum as
+drawn is the warning above, not said again; a part the bit cuts into pieces is W0510.
+
+    solid plate {
+        body = Rectangle(center=(30, 20), width=60, height=40)
+        cut slit { l = Line((30, 1.6), (30, 38.4)) }    # --machine router: 0.0125 mm left
+    }
+
 Two members of one part (shapes of its union, its own or a solid child's) that join over a neck
 narrower than the minimum, or only at a point's worth of overlap (a hook's loop resting on the
 tip of a leaf's stem: the part hangs by it), are named with the neck's width and place: the
@@ -690,7 +708,8 @@ a through-cut and the part's outline or a hole (narrower than its diameter betwe
 through-cuts) is cut away. A slit stopped 1 mm short of both edges of a plate comes out, with a
 3.175 mm bit, as a slot through both edges: two pieces where `aidl check` and `aidl parts`
 say one. The warning is located at the through-cut and gives the bridge's width and the bit's
-reach; a bridge cut away that splits nothing is a note in the G-code. Leave bridges wider than
+reach; a bridge cut away that splits nothing, or left thinner than the minimum wall, is W0507
+(located too, and a `; warning:` line in the G-code). Leave bridges wider than
 the bit's radius or use a smaller tool (the profile's `tool_diameter`).
 
     solid plate {

@@ -659,6 +659,10 @@ other (an assembly placed in 3D) are refused (E0501): use `--layout sheet`. Each
 range (`passes` 1-100, `depth_per_pass` 0.01-100 mm, speeds 1-100000 mm/min, `tabs` 0-16,
 `lead_in` 0 or 0.01-100 mm); past it the profile is refused naming the key and the range. A
 lead-in keeps 0.5 mm from every other cut; a router's bit that cuts a part apart is W0510.
+A through-cut is cut as wide as the tool (the bit's diameter; a laser's kerf) while outlines and
+holes are offset: a bridge, rim or strip beside it that the tool leaves thinner than the
+minimum wall, or cuts away, is W0507 at the cut (a slit 1.6 mm from the edge: 0.0125 mm left
+with a 3.175 mm bit); keep cuts the tool's radius plus `min_wall` from edges and holes.
 """, ["gcode", "g-code", "grbl", "--machine", "machine profile", "cnc", "router", "toolpath",
       "nc"]),
     "assembled": ("statement", "The assembled product: parts placed in 3D with `Place`, "

@@ -545,8 +545,15 @@ def cmd_render(args) -> int:
                          "and .stl show them bent")
         routed = machine is not None and machine.kind == "router" and any(
             j[2] in (".gcode", ".nc") for j in jobs)
-        if routed:
-            _router_splits(res, output, machine.tool_diameter)
+        from ..output.checks.toolpath_walls import machine_warnings
+        if routed:              # W0510 (cut apart) and W0507 (too little left), located
+            machine_warnings(res.drawing, cut, output, machine.tool_diameter, True, res.sink,
+                             args.min_wall, bool(args.layout))
+        elif cut is not output and not args.assembled and any(j[2] in CUT_FORMATS
+                                                              for j in jobs):
+            machine_warnings(res.drawing, output, output, kerf if kerf is not None else
+                             output.drawing.kerf, False, res.sink, args.min_wall,
+                             bool(args.layout))
         items = _encode_all(jobs, opt, res.deadline)
     except MissingDependency as e:           # not the program's fault: install the extra
         print(f"aidl: error: {e}", file=sys.stderr)
@@ -566,13 +573,13 @@ def cmd_render(args) -> int:
         print(f"aidl: error: {err}", file=sys.stderr)
         return 1
     _emit(res.sink, args.json, True, {"output": str(outs[0]), "outputs": [str(o) for o in outs]})
-    from ..output.writers.gcode import GCODE_FORMATS, W0510_TAG, read_summary
+    from ..output.writers.gcode import GCODE_FORMATS, LOCATED_TAGS, read_summary
     said = set()
     for o, data in items:                    # G-code: the estimates, the profile's warnings
         if _suffix(o, args) in GCODE_FORMATS:
             estimate, warnings, said_notes = read_summary(data)
             for w in warnings:
-                if w.endswith(W0510_TAG):        # said as a located W0510 (_router_splits)
+                if w.endswith(LOCATED_TAGS):     # said located (machine_warnings)
                     continue
                 if w not in said:
                     said.add(w)
@@ -588,29 +595,6 @@ def cmd_render(args) -> int:
             if o != STDOUT:
                 print(f"wrote {o}", file=info)
     return 0
-
-
-def _router_splits(res, output, diameter: float) -> None:
-    """W0510 in ``res.sink`` for each part of ``output`` (the design) that a router's bit of
-    ``diameter`` mm cuts into more pieces than the design has (through-cuts nearer the
-    part's edges, holes or each other than the bit's reach), located at the through-cut's
-    structure (else the part's)."""
-    from ..output.fabrication.bridges import router_bridges, split_message
-    _, splits = router_bridges(output, diameter)
-    for sp in splits:
-        node = res.drawing.part_of.get(sp.part)
-        if node is None:
-            continue
-        path = sp.bridges[0].cut
-        rest = path[len(sp.part) + 1:].split(".") if path.startswith(sp.part + ".") else []
-        for name in rest:
-            child = node.children.get(name) if hasattr(node, "children") else None
-            if child is None:
-                break
-            node = child
-        res.sink.warning("W0510", split_message(sp, diameter), node.span,
-                         hint="the design (`aidl check`, `aidl parts`) has one piece; the bit "
-                              "cuts the through-cut as wide as itself, round past its ends")
 
 
 def cmd_parts(args) -> int:

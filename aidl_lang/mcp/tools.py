@@ -522,7 +522,9 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
                 doc["written"] = ws.relative(out)
                 if not assembled and out.suffix.lower() not in _SOLID_FORMATS:
                     from ..output import for_cutting
-                    doc["job"] = _job([for_cutting(r.output, kerf_mm)], prof, thick_mm)
+                    cut = for_cutting(r.output, kerf_mm)
+                    doc["job"] = _job([cut], prof, thick_mm)
+                    _machine_warnings(r, cut, out.suffix.lower(), prof, kerf_mm, doc)
     except LayoutError as e:                # a part larger than the sheet
         raise Refused(str(e), "bad_argument", "sheet") from None
     except (MissingDependency, OutputError, WriteError, NotCompiled, OSError) as e:
@@ -542,6 +544,25 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
 
 
 _SOLID_FORMATS = (".stl", ".3mf", ".step", ".stp", ".glb", ".png")
+
+
+def _machine_warnings(r, cut, suffix: str, prof, kerf_mm, doc: dict) -> None:
+    """What the cutter does beside the through-cuts of ``cut`` (written as ``suffix``), as
+    ``aidl render`` says it (:func:`~aidl_lang.output.checks.toolpath_walls.machine_warnings`:
+    a router's G-code, W0510 and W0507; else a kerf applied, W0507), added to ``r``'s
+    diagnostics and ``doc``'s."""
+    from ..output.checks.toolpath_walls import machine_warnings
+    from ..output.writers.gcode import GCODE_FORMATS
+    before = len(r.sink.items)
+    drawing = r.compiled.drawing
+    if prof is not None and prof.kind == "router" and suffix in GCODE_FORMATS:
+        machine_warnings(drawing, cut, r.output, prof.tool_diameter, True, r.sink)
+    elif cut is not r.output:
+        machine_warnings(drawing, r.output, r.output,
+                         kerf_mm if kerf_mm is not None else drawing.kerf, False, r.sink)
+    if len(r.sink.items) > before:
+        reword_diagnostics(r.sink.items[before:])
+        doc["diagnostics"] = r.diagnostics_json()
 
 
 def _job(outputs: list, machine, thickness: float | None) -> dict:

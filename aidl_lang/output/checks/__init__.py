@@ -32,6 +32,9 @@ One module per family:
 * :mod:`.assembly`: ``W0517`` parts that collide once assembled, ``W0518`` a part that
   touches no other;
 * :mod:`.changes`: ``W0510`` a part whose topology differs from the defaults';
+* :mod:`.toolpath_walls` (``aidl render``, not this entry point): ``W0507`` the material
+  beside a through-cut that the cutter's own width (a router's bit, a laser's kerf) leaves
+  thinner than the minimum wall, and ``W0510`` a part the bit cuts apart;
 * :mod:`.common`: the tolerances and helpers they share.
 
 :func:`check_drawing` itself writes ``W0509`` (from :func:`.parts.empty_faces`, and for a

@@ -19,7 +19,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-TOUCH = 1e-6      # mm: a through-cut nearer than this to a loop meets it in the design
+# mm: a through-cut nearer than this to a loop meets it in the design (measured on chords,
+# which lie up to CHORD_TOL, 0.005 mm, inside a curve: a relief cut ending on a round hole was
+# a 'bridge' of 0.00367 mm that W0510 named instead of the one the bit cut through)
+TOUCH = 0.01
 SLIVER = 1e-6     # mm^2: pieces of less area left by the booleans' rounding are not pieces
 
 
@@ -45,6 +48,7 @@ class Split:
     pieces: int
     design: int
     bridges: list = field(default_factory=list)
+    cuts: list = field(default_factory=list)   # with no bridge measured: the cut that meets an edge
 
 
 def _polyline(segments, closed: bool) -> np.ndarray:
@@ -131,7 +135,7 @@ def router_bridges(output, diameter: float) -> tuple[list[Bridge], list[Split]]:
                 for st in strokes]
         loops = [((f"a hole of `{p.name}`" if lp.is_hole else f"the outline of `{p.name}`"),
                   _polyline(lp.segments, True)) for lp in p.loops]
-        found = []
+        found, meets = [], []
         for i, (name, P) in enumerate(cuts):
             lo, hi = P.min(0) - 2 * r, P.max(0) + 2 * r
             others = [(what, Q, r) for what, Q in loops] + \
@@ -142,16 +146,21 @@ def router_bridges(output, diameter: float) -> tuple[list[Bridge], list[Split]]:
                 d = distance(P, Q)
                 if TOUCH < d < reach:
                     found.append(Bridge(p.name, name, what, d, d - reach))
+                elif d <= TOUCH:
+                    meets.append(name)
         bridges += found
-        if not found:
+        if not found and not meets:
             continue
+        # a cut that meets an edge hides the bridges at its other end from the distance
+        # (0 to the edge): a slit from the top edge that turns and stops 1.2 mm short of the
+        # side cuts a corner off, said by nothing), so the pieces are counted then too
         from manifold3d import CrossSection, OpType
         swept = CrossSection.batch_boolean([_capsules(P, r) for _, P in cuts], OpType.Add)
         left = p.shape - swept
         pieces = sum(1 for c in left.decompose() if c.area() > SLIVER)
         design = sum(1 for lp in p.loops if not lp.is_hole)
         if pieces > design:
-            splits.append(Split(p.name, pieces, design, found))
+            splits.append(Split(p.name, pieces, design, found, meets[:1]))
     return bridges, splits
 
 
@@ -166,6 +175,13 @@ def bridge_note(b: Bridge, diameter: float) -> str:
 
 def split_message(s: Split, diameter: float) -> str:
     """W0510's words for a part the bit cuts into pieces."""
+    if not s.bridges:           # only cuts that meet an edge: the bridges at their ends
+        return (f"part `{s.part}` comes out of the router in {s.pieces} pieces, not "
+                f"{s.design}: the bit ({diameter:g} mm across) cuts its through-cuts as wide "
+                f"as itself and cuts away the bridges they leave (at the end of through-cut "
+                f"`{s.cuts[0] if s.cuts else 'a through-cut'}`: W0507 says each); leave "
+                "bridges wider "
+                "than the bit's radius or use a smaller tool (the profile's `tool_diameter`)")
     first = s.bridges[0]
     more = len(s.bridges) - 1
     return (f"part `{s.part}` comes out of the router in {s.pieces} pieces, not {s.design}: the "

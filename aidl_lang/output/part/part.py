@@ -291,8 +291,58 @@ def _build(drawing: Drawing, title: str, thickness, deadline) -> Output:
     split = getattr(drawing, "split", ())
     if split:
         strokes = _off_outlines(strokes, [p for p in out.parts if p.name in split])
+        _onto_pieces(strokes, [p for p in out.parts if p.name in split])
     out.engrave = _join(_cut_once(strokes, out.parts))
     return out
+
+
+def _onto_pieces(strokes: list[Stroke], pieces: list[PartOutline]) -> None:
+    """Each stroke of a part a cut split (``pieces``: the part ``P`` and its ``P.pieceK``)
+    given to the piece whose material holds it (the middle of its first segment; even-odd
+    over the piece's loops), not to ``P`` whatever piece it lies on: a slit on a freed piece
+    was laid out with the other piece, in the scrap beside it (`--layout sheet`)."""
+    import re
+    families: dict = {}             # P -> (its pieces, their boxes)
+    for p in pieces:
+        m = re.search(r"\.piece\d+$", p.name)
+        families.setdefault(p.name[:m.start()] if m else p.name, [[], []])[0].append(p)
+    for st in strokes:
+        fam = families.get(st.part)
+        if fam is None or len(fam[0]) < 2 or not st.segments:
+            continue
+        if not len(fam[1]):         # the pieces' boxes, once, for a family with strokes
+            pts = [np.vstack([lp.points() for lp in p.loops]) for p in fam[0]]
+            fam[1] = np.array([(*P.min(0), *P.max(0)) for P in pts]).reshape(-1, 4)
+        xs, ys = [], []
+        sample_xy(st.segments[:1], xs, ys)
+        end = getattr(st.segments[0], "end", None)
+        if end is not None:
+            xs.append(end[0])
+            ys.append(end[1])
+        k = len(xs) // 2
+        x, y = ((xs[k - 1] + xs[k]) / 2, (ys[k - 1] + ys[k]) / 2) if len(xs) > 1 else \
+            (xs[0], ys[0])
+        box = fam[1]
+        for j in np.flatnonzero((box[:, 0] <= x) & (x <= box[:, 2]) & (box[:, 1] <= y)
+                                & (y <= box[:, 3])):
+            if _holds(fam[0][j].loops, (x, y)):
+                st.part = fam[0][j].name
+                break
+
+
+def _holds(loops: list[Loop], at) -> bool:
+    """Point ``at`` lies inside ``loops`` (even-odd over their chords)."""
+    x, y = at
+    inside = False
+    for lp in loops:
+        P = lp.points()
+        Q = np.roll(P, -1, axis=0)
+        cross = (P[:, 1] > y) != (Q[:, 1] > y)
+        if not cross.any():
+            continue
+        t = (y - P[cross, 1]) / (Q[cross, 1] - P[cross, 1])
+        inside ^= bool(np.count_nonzero(P[cross, 0] + t * (Q[cross, 0] - P[cross, 0]) > x) % 2)
+    return inside
 
 
 def _cut_once(strokes: list[Stroke], parts: list[PartOutline]) -> list[Stroke]:

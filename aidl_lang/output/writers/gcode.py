@@ -51,7 +51,8 @@ a hole), a straight ``G1`` onto it, every point of which keeps :data:`LEAD_CLEAR
 every other cut and the sheet's edge (:func:`lead_in`: shortened, moved to another entry of
 the loop, or left out, with a note).  The first travel is always written, also to X0 Y0:
 where the head is when the program starts is unknown.  A router's bit that cuts a part apart
-(through-cuts nearer its edges than the bit's reach) is a warning (:func:`router_notes`).
+(through-cuts nearer its edges than the bit's reach) is a warning (:func:`router_notes`), and so is
+a bridge or strip beside a through-cut that the bit leaves thinner than the minimum wall.
 Tabs that do not fit a cut are fewer or smaller (:func:`fit_tabs`, with a note).  The notes
 are ``; note:`` lines of the header (:func:`read_summary`).
 
@@ -707,20 +708,29 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
 
 
 W0510_TAG = " (W0510)"      # ends a warning `aidl render` gives as a located W0510 instead
+W0507_TAG = " (W0507)"      # ... and as a located W0507 (the material the bit leaves)
+LOCATED_TAGS = (W0510_TAG, W0507_TAG)
 
 
 def router_notes(output: Output, diameter: float) -> tuple[list[str], list[str]]:
     """What a router's bit of ``diameter`` mm does to ``output``'s through-cuts beyond the
-    design (:func:`~..fabrication.bridges.router_bridges`): the notes of the bridges it cuts
-    through (three at most, then their count) and the warnings of the parts it cuts into
-    more pieces (each ending :data:`W0510_TAG`)."""
-    from ..fabrication.bridges import bridge_note, router_bridges, split_message
-    bridges, splits = router_bridges(output, diameter)
-    split = {s.part for s in splits}
-    said = [bridge_note(b, diameter) for b in bridges if b.part not in split]
-    notes = said[:3] + ([f"and {len(said) - 3} more bridges the bit cuts away"]
-                        if len(said) > 3 else [])
-    return notes, [split_message(s, diameter) + W0510_TAG for s in splits]
+    design: the warnings of the parts it cuts into more pieces
+    (:func:`~..fabrication.bridges.router_bridges`, each ending :data:`W0510_TAG`) and, in
+    the other parts, of the bridges and strips it leaves thinner than the program's minimum
+    wall or cuts away (:func:`~..checks.toolpath_walls.eaten_walls`, each ending
+    :data:`W0507_TAG`); ``(notes, warnings)``, the notes empty (kept for the callers)."""
+    from ..checks import part_min_wall
+    from ..checks.toolpath_walls import eaten_message, eaten_walls
+    from ..fabrication.bridges import router_bridges, split_message
+    _, splits = router_bridges(output, diameter)
+    split = {s.part for s in splits if s.bridges}       # else W0507 names the bridges
+    d = output.drawing
+
+    def min_wall_of(name):
+        return part_min_wall(d, d.part_of.get(name)) if d is not None else 0.5
+    eaten = [e for e in eaten_walls(output, diameter, min_wall_of) if e.part not in split]
+    return [], [split_message(s, diameter) + W0510_TAG for s in splits] + \
+        [eaten_message(e, diameter, True)[0] + W0507_TAG for e in eaten]
 
 
 def tool_path(output: Output, diameter: float) -> Output:
