@@ -405,12 +405,105 @@ def _write_all(items: list[tuple[Path, bytes]], follow: bool = False) -> str | N
 
 def cmd_render(args) -> int:
     from ..pipeline import compile_source, report_out_of_budget, report_stacked
-    from ..output import MissingDependency, Options, OutputError, build, encode
+    from ..output import MissingDependency, Options, OutputError, build
     from ..output.writers import StackedParts
-    from ..output.fabrication.layout import parse_length, parse_rotate, parse_sheet
     outs = _outputs(args)
     if isinstance(outs, int):
         return outs
+    got = _render_settings(args, outs)
+    if isinstance(got, int):
+        return got
+    show, thickness, kerf, sheet, gap, rotate, machine = got
+    if args.file == "-":
+        src = sys.stdin.read()
+    else:
+        src = _read(args.file, args.json)
+        if src is None:
+            return 1
+    global _program
+    _program = (args.file, src)
+    res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall,
+                         budget=_budget(args))
+    if not res.ok:
+        _emit(res.sink, args.json, False)
+        return 1
+    opt = Options(show=show, style=args.svg_style, dpi=args.dpi, width=args.png_width,
+                  thickness=thickness, margin=args.margin, assembled=args.assembled,
+                  machine=machine, page=args.page)
+    notes = []
+    try:
+        output = build(res.drawing, res.model.root.name, deadline=res.deadline)
+        from ..output import CUT_FORMATS, for_cutting
+        # --kerf, else the program's `kerf`; laid out, the pieces of a cut lie apart and each
+        # is offset whole, else an edge two pieces share is cut once along its line
+        cut = for_cutting(output, kerf, res.deadline, apart=bool(args.layout))
+        from ..output.fabrication.layout import through_cut_note
+        from ..output.part.shared import shared_note
+        kept = through_cut_note(output, cut)       # --kerf leaves the through-cuts
+        if kept:
+            notes.append(kept)
+        if cut is not output and not args.layout:
+            notes += shared_note(output, kerf if kerf is not None else output.drawing.kerf)
+        flat, solid = [cut], [output]
+        if args.layout:
+            flat, solid = _lay_out(args, res, output, cut, sheet, gap, rotate, notes)
+        if len(flat) > 1 and STDOUT in outs:
+            print(f"aidl: error: the layout has {len(flat)} sheets and standard output takes "
+                  "one: write them to files (-o cut.svg writes cut-1.svg, cut-2.svg, ...)",
+                  file=sys.stderr)
+            return 1
+        names = _sheet_names(outs, len(flat)) if len(flat) > 1 else [[o] for o in outs]
+        outs = [n for per in names for n in per]
+        cutting = () if args.assembled else CUT_FORMATS      # an assembled PNG: designed
+        jobs = [(n, s, _suffix(o, args)) for o, per in zip([p[0] for p in names], names)
+                for n, s in zip(per, flat if _suffix(o, args) in cutting else solid)]
+        if args.assembled and not getattr(res.drawing, "placement", None):
+            notes.append("note: no part is placed (`Place`): the assembled product is the "
+                         "parts as on the sheet")
+        if args.assembled and getattr(res.drawing, "bends", None) and any(
+                j[2] in (".step", ".stp") for j in jobs):
+            notes.append("note: STEP shows the bent parts (`Bend`) flat, as cut; .3mf, .glb "
+                         "and .stl show them bent")
+        routed = machine is not None and machine.kind == "router" and any(
+            j[2] in (".gcode", ".nc") for j in jobs)
+        from ..output.checks.toolpath_walls import machine_warnings
+        if routed:              # W0510 (cut apart) and W0507 (too little left), located
+            machine_warnings(res.drawing, cut, output, machine.tool_diameter, True, res.sink,
+                             args.min_wall, bool(args.layout))
+        elif cut is not output and not args.assembled and any(j[2] in CUT_FORMATS
+                                                              for j in jobs):
+            machine_warnings(res.drawing, output, output, kerf if kerf is not None else
+                             output.drawing.kerf, False, res.sink, args.min_wall,
+                             bool(args.layout))
+        items = _encode_all(jobs, opt, res.deadline)
+    except MissingDependency as e:           # not the program's fault: install the extra
+        print(f"aidl: error: {e}", file=sys.stderr)
+        return 2
+    except OutputError as e:                 # an impossible size, or bounded work ran out
+        if e.budget is not None:                 # located: which structure, which stage
+            report_out_of_budget(res.sink, e.budget)
+            _emit(res.sink, args.json, False)
+        elif isinstance(e, StackedParts):        # located at the first of the two parts
+            report_stacked(res.sink, res.drawing, e)
+            _emit(res.sink, args.json, False)
+        else:
+            print(f"aidl: error: {e}", file=sys.stderr)
+        return 1
+    err = _write_all(items, args.follow_symlinks)
+    if err:
+        print(f"aidl: error: {err}", file=sys.stderr)
+        return 1
+    _emit(res.sink, args.json, True, {"output": str(outs[0]), "outputs": [str(o) for o in outs]})
+    _report_written(args, items, outs, notes)
+    return 0
+
+
+def _render_settings(args, outs):
+    """`aidl render`'s settings from its flags, checked before anything is compiled: the
+    tuple (show, thickness, kerf, sheet, gap, rotate, machine), or the exit code of a usage
+    error already printed (2)."""
+    from ..output import OutputError
+    from ..output.fabrication.layout import parse_length, parse_rotate, parse_sheet
     show = tuple(x.strip() for x in args.show.split(",") if x.strip())
     from ..output.writers.svg import SHOW
     if set(show) - set(SHOW):
@@ -471,108 +564,43 @@ def cmd_render(args) -> int:
                 not os.path.exists(args.machine) else load(args.machine)
         except MachineError as e:
             return _usage(str(e))
-    if args.file == "-":
-        src = sys.stdin.read()
-    else:
-        src = _read(args.file, args.json)
-        if src is None:
-            return 1
-    global _program
-    _program = (args.file, src)
-    res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall,
-                         budget=_budget(args))
-    if not res.ok:
-        _emit(res.sink, args.json, False)
-        return 1
-    opt = Options(show=show, style=args.svg_style, dpi=args.dpi, width=args.png_width,
-                  thickness=thickness, margin=args.margin, assembled=args.assembled,
-                  machine=machine, page=args.page)
-    notes = []
-    try:
-        output = build(res.drawing, res.model.root.name, deadline=res.deadline)
-        from ..output import CUT_FORMATS, for_cutting
-        # --kerf, else the program's `kerf`; laid out, the pieces of a cut lie apart and each
-        # is offset whole, else an edge two pieces share is cut once along its line
-        cut = for_cutting(output, kerf, res.deadline, apart=bool(args.layout))
-        from ..output.fabrication.layout import through_cut_note
-        from ..output.part.shared import shared_note
-        kept = through_cut_note(output, cut)       # --kerf leaves the through-cuts
-        if kept:
-            notes.append(kept)
-        if cut is not output and not args.layout:
-            notes += shared_note(output, kerf if kerf is not None else output.drawing.kerf)
-        flat, solid = [cut], [output]
-        if args.layout:
-            from ..output.fabrication.layout import place, plan
-            if args.nest_time and res.deadline is not None:
-                # the nesting's own time limit comes on top of the compile's budget (the CPU
-                # seconds of its threads)
-                from ..limits import Deadline
-                from ..output.fabrication.layout import nest_cpu_seconds
-                res.deadline = Deadline(res.deadline.at + nest_cpu_seconds(args.nest_time),
-                                        res.deadline.budget)
-            where = plan(cut, sheet, gap, rotate, args.nest_time, deadline=res.deadline)
-            flat, dropped = place(cut, where, sheet)
-            solid, _ = place(output, where, sheet)
-            notes.append(f"laid out {sum(len(s.parts) for s in flat)} parts on "
-                         f"{len(flat)} sheet{'s' if len(flat) != 1 else ''} of "
-                         f"{sheet[0]:g} x {sheet[1]:g} mm" + _materials(flat))
-            if dropped:
-                placed = {name for moves in where for name in moves}
-                sheet_level = sum(1 for st in cut.engrave
-                                  if st.style == "cut" and st.part not in placed)
-                kinds = [f"{n} {what} stroke{'s' if n != 1 else ''}" for n, what in
-                         ((dropped - sheet_level, "engraving"), (sheet_level, "sheet-level cut"))
-                         if n]
-                notes.append(f"note: {' and '.join(kinds)} outside every part left out of the "
-                             "layout")
-        if len(flat) > 1 and STDOUT in outs:
-            print(f"aidl: error: the layout has {len(flat)} sheets and standard output takes "
-                  "one: write them to files (-o cut.svg writes cut-1.svg, cut-2.svg, ...)",
-                  file=sys.stderr)
-            return 1
-        names = _sheet_names(outs, len(flat)) if len(flat) > 1 else [[o] for o in outs]
-        outs = [n for per in names for n in per]
-        cutting = () if args.assembled else CUT_FORMATS      # an assembled PNG: designed
-        jobs = [(n, s, _suffix(o, args)) for o, per in zip([p[0] for p in names], names)
-                for n, s in zip(per, flat if _suffix(o, args) in cutting else solid)]
-        if args.assembled and not getattr(res.drawing, "placement", None):
-            notes.append("note: no part is placed (`Place`): the assembled product is the "
-                         "parts as on the sheet")
-        if args.assembled and getattr(res.drawing, "bends", None) and any(
-                j[2] in (".step", ".stp") for j in jobs):
-            notes.append("note: STEP shows the bent parts (`Bend`) flat, as cut; .3mf, .glb "
-                         "and .stl show them bent")
-        routed = machine is not None and machine.kind == "router" and any(
-            j[2] in (".gcode", ".nc") for j in jobs)
-        from ..output.checks.toolpath_walls import machine_warnings
-        if routed:              # W0510 (cut apart) and W0507 (too little left), located
-            machine_warnings(res.drawing, cut, output, machine.tool_diameter, True, res.sink,
-                             args.min_wall, bool(args.layout))
-        elif cut is not output and not args.assembled and any(j[2] in CUT_FORMATS
-                                                              for j in jobs):
-            machine_warnings(res.drawing, output, output, kerf if kerf is not None else
-                             output.drawing.kerf, False, res.sink, args.min_wall,
-                             bool(args.layout))
-        items = _encode_all(jobs, opt, res.deadline)
-    except MissingDependency as e:           # not the program's fault: install the extra
-        print(f"aidl: error: {e}", file=sys.stderr)
-        return 2
-    except OutputError as e:                 # an impossible size, or bounded work ran out
-        if e.budget is not None:                 # located: which structure, which stage
-            report_out_of_budget(res.sink, e.budget)
-            _emit(res.sink, args.json, False)
-        elif isinstance(e, StackedParts):        # located at the first of the two parts
-            report_stacked(res.sink, res.drawing, e)
-            _emit(res.sink, args.json, False)
-        else:
-            print(f"aidl: error: {e}", file=sys.stderr)
-        return 1
-    err = _write_all(items, args.follow_symlinks)
-    if err:
-        print(f"aidl: error: {err}", file=sys.stderr)
-        return 1
-    _emit(res.sink, args.json, True, {"output": str(outs[0]), "outputs": [str(o) for o in outs]})
+    return show, thickness, kerf, sheet, gap, rotate, machine
+
+
+def _lay_out(args, res, output, cut, sheet, gap, rotate, notes: list):
+    """`--layout sheet`: the parts of ``cut`` (as cut) and ``output`` (as designed) nested on
+    sheets of ``sheet`` mm (``gap`` apart, turned by ``rotate``); returns the two lists of
+    sheets and adds what it did to ``notes``.  Raises the layout's :class:`OutputError`."""
+    from ..output.fabrication.layout import place, plan
+    if args.nest_time and res.deadline is not None:
+        # the nesting's own time limit comes on top of the compile's budget (the CPU
+        # seconds of its threads)
+        from ..limits import Deadline
+        from ..output.fabrication.layout import nest_cpu_seconds
+        res.deadline = Deadline(res.deadline.at + nest_cpu_seconds(args.nest_time),
+                                res.deadline.budget)
+    where = plan(cut, sheet, gap, rotate, args.nest_time, deadline=res.deadline)
+    flat, dropped = place(cut, where, sheet)
+    solid, _ = place(output, where, sheet)
+    notes.append(f"laid out {sum(len(s.parts) for s in flat)} parts on "
+                 f"{len(flat)} sheet{'s' if len(flat) != 1 else ''} of "
+                 f"{sheet[0]:g} x {sheet[1]:g} mm" + _materials(flat))
+    if dropped:
+        placed = {name for moves in where for name in moves}
+        sheet_level = sum(1 for st in cut.engrave
+                          if st.style == "cut" and st.part not in placed)
+        kinds = [f"{n} {what} stroke{'s' if n != 1 else ''}" for n, what in
+                 ((dropped - sheet_level, "engraving"), (sheet_level, "sheet-level cut"))
+                 if n]
+        notes.append(f"note: {' and '.join(kinds)} outside every part left out of the "
+                     "layout")
+    return flat, solid
+
+
+def _report_written(args, items, outs, notes: list) -> None:
+    """After the files are written: each G-code file's estimate and its profile's warnings
+    not said located already, the notes and a `wrote` line per file (on stderr when the
+    drawing went to standard output)."""
     from ..output.writers.gcode import GCODE_FORMATS, LOCATED_TAGS, read_summary
     said = set()
     for o, data in items:                    # G-code: the estimates, the profile's warnings
@@ -594,8 +622,6 @@ def cmd_render(args) -> int:
         for o in outs:
             if o != STDOUT:
                 print(f"wrote {o}", file=info)
-    return 0
-
 
 def cmd_parts(args) -> int:
     from ..pipeline import compile_source

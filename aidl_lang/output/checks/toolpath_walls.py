@@ -573,7 +573,7 @@ def machine_warnings(drawing, cut, design, width, router: bool, sink, given=None
     thinner than the minimum wall (``given``: ``--min-wall``, else the program's) or cuts
     away (:func:`eaten_walls`, at the through-cut), the parts of a W0510 not said again.
     ``drawing``: the booleans' result (the spans, the minimum walls)."""
-    from . import part_min_wall
+    from ..checks import part_min_wall      # the package's own function (a module of it here)
     if not width or not getattr(drawing, "through", ()):
         return
     split = _splits(drawing, design, width, sink) if router else set()
