@@ -54,59 +54,17 @@ from .engraving import _engraving
 from .labels import _at_as_drawn, _label_place
 from .features import edge_notches
 from .makers import SINGLE_PARAMS, _MakerFeatures
+from .chamfers import _chamfered, _clear_of_chamfers
+from .naming import _named_parts, _short_names, _summary
 from ..chains.layers import _hole_layers
 from .mirror import mirrored_pair, pair_items, write_pair
 from .sinks import Marks
-from .rings import _start_angle, rings
+from .rings import _start, _start_angle, rings
+from . import turns
 from ..write.program import (_Names, _Writer, _containers, _cut_notes, _emit_holds, _holds,
                              _ident, _layer_items, _length, _num, _place, _pt, _whole_ellipse)
 from ..write.units import UNIT, in_unit
 from ..model import Drawing, Note, _segs_box
-
-
-def _clear_of_chamfers(cuts: list, rect: Shape, leg: float) -> bool:
-    """Whether every notch ``(side, shape, lo, hi, depth)`` leaves at least two chamfer legs
-    of its side between it and each corner: ``Chamfer`` cuts at most half of each segment of
-    the final outline, so a notch nearer a corner would shorten that corner's chamfer."""
-    for side, _, lo, hi, _ in cuts:
-        axis = 1 if side in ("left", "right") else 0
-        key = "width" if axis == 0 else "height"
-        a = rect.center[axis] - rect.args[key] / 2
-        b = rect.center[axis] + rect.args[key] / 2
-        if lo - a < 2 * leg - 1e-9 or b - hi < 2 * leg - 1e-9:
-            return False
-    return True
-
-
-def _chamfered(sh: Shape | None) -> tuple | None:
-    """A Polygon of 8 corners that is an upright rectangle with its four corners cut by
-    equal 45-degree chamfers: ``(the Rectangle, the chamfer's leg in mm)``, else None."""
-    if sh is None or sh.kind != "Polygon" or len(sh.args["points"]) != 8:
-        return None
-    pts = sh.args["points"]
-    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
-    x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
-    legs = []
-    for (ax, ay), (bx, by) in zip(pts, pts[1:] + pts[:1]):
-        on_side = (abs(ax - bx) <= EQUAL_TOL and min(abs(ax - x0), abs(ax - x1)) <= EQUAL_TOL) \
-            or (abs(ay - by) <= EQUAL_TOL and min(abs(ay - y0), abs(ay - y1)) <= EQUAL_TOL)
-        if on_side:
-            continue
-        dx, dy = abs(bx - ax), abs(by - ay)
-        if abs(dx - dy) > EQUAL_TOL:
-            return None
-        legs.append(dx)
-    if len(legs) != 4 or max(legs) - min(legs) > EQUAL_TOL or min(legs) <= EQUAL_TOL or \
-            2 * legs[0] >= min(x1 - x0, y1 - y0) - EQUAL_TOL:
-        return None
-    # every corner point on the box's sides, a leg in from its corner
-    for x, y in pts:
-        if min(abs(x - x0), abs(x - x1)) > EQUAL_TOL and min(abs(y - y0), abs(y - y1)) > EQUAL_TOL:
-            return None
-    W, H = x1 - x0, y1 - y0
-    rect = Shape("Rectangle", ((x0 + x1) / 2, (y0 + y1) / 2), {"width": W, "height": H},
-                 ("Rectangle", W, H), sh.pieces)
-    return rect, legs[0]
 
 
 def _add0(base: str, term: str) -> str:
@@ -520,17 +478,20 @@ class _Part(_Anchored, _MakerFeatures):
             _emit_holds(w, depth, _holds(segs, f"{hn}.e"))
 
     def hole_block(self, depth: int, hn: str, sh: Shape, center: str, sizes=None,
-                   loop: bool = False) -> None:
-        var = "h"
-        self.w.emit(depth, f"hole {hn} {{ {var} = {_ctor(sh, center, sizes)} }}")
-        self.w.emit(depth, f"Fixed({hn}.{var})")
+                   index=None) -> None:
+        """``hole hn { h = ... }`` and its ``Fixed``, and the countersink marks of the holes
+        it writes (:attr:`sinks`), a subset of a loop's by ``index`` (Shape -> the loop's
+        variables on its turn, :meth:`~.sinks.Marks.write`)."""
+        self.w.emit(depth, f"hole {hn} {{ h = {_ctor(sh, center, sizes)} }}")
+        self.w.emit(depth, f"Fixed({hn}.h)")
         if self.sinks is not None and sh.kind == "Circle":
-            self.marks.write(self, depth, hn, sh, center, self.sinks)
+            self.marks.write(self, depth, hn, sh, center, self.sinks, self.sink_members, index)
 
     def sunk_as(self, members: list) -> bool:
-        """Say that the holes written next are ``members`` (:attr:`sinks`: their common
-        countersink, :meth:`~.sinks.Marks.common`); True."""
+        """Say that the holes written next are ``members`` (:attr:`sinks`: their marks by
+        size, :meth:`~.sinks.Marks.common`); True."""
         self.sinks = Marks.common(self.sunk, members) if self.sunk else None
+        self.sink_members = members
         return True
 
     def size_params(self, base: str, sh: Shape, many: bool) -> dict:
@@ -585,7 +546,7 @@ class _Part(_Anchored, _MakerFeatures):
                     c = f"({self.from_body_centre(0, ex, mid[0])}, {self.from_body_centre(1, ey, mid[1])})"
                     w.emit(depth, "for sx in [-1, 1] {")
                     w.emit(depth + 1, "for sy in [-1, 1] {")
-                    self.hole_block(depth + 2, hn, sh, c, sizes)
+                    self.hole_block(depth + 2, hn, sh, c, sizes, turns.corners(mid))
                     w.emit(depth + 1, "}")
                     w.emit(depth, "}")
                     self.stats.patterns["corner"] += 1
@@ -607,7 +568,7 @@ class _Part(_Anchored, _MakerFeatures):
                 ang = _start_angle(a0, n, cnt)
                 w.emit(depth, f"for i in range({cnt}) {{")
                 self.hole_block(depth + 1, hn, sh, f"polar({self.pos(C)}, {pcd} / 2, {ang})",
-                                sizes)
+                                sizes, turns.polar(C, _start(a0, n), n))
                 w.emit(depth, "}")
                 centres.append(C)
                 self.stats.patterns["bolt circle"] += 1
@@ -640,7 +601,8 @@ class _Part(_Anchored, _MakerFeatures):
                 else:
                     ey = self.at(y1, 1)
                 w.emit(depth, "for s in [-1, 1] {")
-                self.hole_block(depth + 1, hn, sh, f"({ex}, {ey})", sizes)
+                self.hole_block(depth + 1, hn, sh, f"({ex}, {ey})", sizes,
+                                turns.mirrored(B, sym_x))
                 w.emit(depth, "}")
                 self.stats.patterns["mirrored pair"] += 1
                 return True
@@ -681,7 +643,7 @@ class _Part(_Anchored, _MakerFeatures):
             cnt = self.p(hn + "_n", n, unit="")
             c = f"polar({first}, i * {pitch}, {_deg(math.atan2(dy, dx))})"
             w.emit(depth, f"for i in range({cnt}) {{")
-            self.hole_block(depth + 1, hn, sh, c, sizes)
+            self.hole_block(depth + 1, hn, sh, c, sizes, turns.row(p0, (dx, dy)))
             w.emit(depth, "}")
             self.stats.patterns["row"] += 1
             return True
@@ -720,7 +682,8 @@ class _Part(_Anchored, _MakerFeatures):
                         self.run_at(run[0][0], run[-1][0], 1 - axis, "i", cnt, pitch)
                     c[axis] = self.at(first[axis], axis)
                     w.emit(depth, f"for i in range({cnt}) {{")
-                    self.hole_block(depth + 1, hn, sh, f"({c[0]}, {c[1]})", sizes)
+                    self.hole_block(depth + 1, hn, sh, f"({c[0]}, {c[1]})", sizes,
+                                    turns.row(first, (step, 0) if axis else (0, step)))
                     w.emit(depth, "}")
                     self.stats.patterns["row"] += 1
                     done.update(id(m) for _, m in run)
@@ -807,7 +770,7 @@ class _Part(_Anchored, _MakerFeatures):
         for ln in loops:
             self.w.emit(d, ln)
             d += 1
-        self.hole_block(d, hn, sh, f"({out[0]}, {out[1]})", sizes)
+        self.hole_block(d, hn, sh, f"({out[0]}, {out[1]})", sizes, turns.grid(*gr))
         for _ in loops:
             d -= 1
             self.w.emit(d, "}")
@@ -849,7 +812,8 @@ class _Part(_Anchored, _MakerFeatures):
         ey = _add0(oy if here(1) else self.at(mid[1], 1), term)
         self.w.emit(depth, f"for j in range({nrows}) {{")
         self.w.emit(depth + 1, f"for i in range({n_j}) {{")
-        self.hole_block(depth + 2, hn, sh, f"({ex}, {ey})", sizes)
+        self.hole_block(depth + 2, hn, sh, f"({ex}, {ey})", sizes,
+                        turns.stagger(xa, xb, pitch, y0, dy))
         self.w.emit(depth + 1, "}")
         self.w.emit(depth, "}")
         self.stats.patterns["staggered grid"] += 1
@@ -890,7 +854,7 @@ class _Part(_Anchored, _MakerFeatures):
         for n, cond in enumerate(ifs):
             w.emit(depth + 2 + n, f"if {cond} {{")
         self.hole_block(depth + 2 + len(ifs), hn, sh, f"({_add0(ax, x)}, {_add0(ay, y)})",
-                        sizes)
+                        sizes, turns.hex_nodes((cx, cy), pitch, shift))
         for n in reversed(range(len(ifs))):
             w.emit(depth + 2 + n, "}")
         w.emit(depth + 1, "}")
@@ -1134,56 +1098,6 @@ def _refuse_too_large(layers: list, source: str, deadline) -> None:
                      f"started",
             "import it without --infer (its exact pieces), a part of it with --layer, or "
             "raise --budget") from None
-
-
-# layer names that say nothing of the part on them (CAD's layer 0, a laser's CUT layer)
-_GENERIC = {"l_0", "cut_", "cut", "part", "outline", "outlines", "contour", "profile",
-            "default", "layer1", "layer_1", "l_1"}
-
-
-def _named_parts(items: list) -> list:
-    """``items`` with a solid on a layer whose name says nothing (:data:`_GENERIC`) named
-    for what its body is: ``plate`` (a rectangle or polygon), ``disc`` (a circle), else
-    ``part``; each name once."""
-    used = {it[1] for it in items}
-    out = []
-    for it in items:
-        kind, name, d = it[:3]
-        if kind != "solid" or name.lower() not in _GENERIC:
-            out.append(it)
-            continue
-        loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
-        big = max(loops, key=lambda s: abs(Loop(list(s)).area), default=None)
-        sh = recognise(big) if big is not None else None
-        word = "part" if sh is None else "disc" if sh.kind == "Circle" else "plate"
-        used.discard(name)
-        new = _ident(word, used)
-        out.append((kind, new, d) + tuple(it[3:]))
-    return out
-
-
-def _short_names(names: list) -> dict:
-    """Each part's name for its params: the last word of its name (``cut_kit_plate``:
-    ``plate``) when no other part's ends so, else the whole name."""
-    last = {n: (n.rsplit("_", 1)[-1] if "_" in n else n) for n in names}
-    count = Counter(last.values())
-    # (a name that ends in "_", a keyword made a name such as `cut_`, keeps its whole name)
-    return {n: (v if v and count[v] == 1 and not v[0].isdigit() else n)
-            for n, v in last.items()}
-
-
-def _summary(st: _Stats) -> list[str]:
-    """The header lines saying what was recognised and the tolerances."""
-    shapes = ", ".join(f"{n} {k}" for k, n in sorted(st.kinds.items(), key=lambda x: -x[1]))
-    pats = ", ".join(f"{n} {k}" for k, n in st.patterns.items())
-    out = [f"recognised: {st.in_shapes} of {st.pieces} pieces of outlines and holes in "
-           f"{sum(st.kinds.values())} shapes ({shapes or 'none'})"]
-    if pats:
-        out.append(f"patterns: {pats}")
-    u = UNIT.get()
-    out.append(f"equal within {EQUAL_TOL:g} {u}, numbers rounded within {ROUND_TOL:g} {u}; "
-               f"the rest stays exact Line/Arc chains")
-    return out
 
 
 def import_drawing(data: bytes, name: str, infer: bool = False, **options):

@@ -44,12 +44,11 @@ def rings(centers: list, about: list) -> list[list[int]] | None:
     return None
 
 
-def _start_angle(a0: float, n: int, cnt: str) -> str:
-    """The angle of hole ``i`` of a bolt circle of ``n`` (the param ``cnt``) whose holes are
-    at ``a0 + k 360/n`` (radians), written by the rule that keeps its meaning when the count
-    changes: a hole on the x axis (``i * 360 deg / n``), else two straddling it, half a
-    pitch off (``(i + 0.5) * 360 deg / n``), else one at the top (``90 deg + ...``), else
-    from ``a0``.  Where two rules draw the same holes the x axis is the one a person reads
+def _start(a0: float, n: int) -> float:
+    """The angle (radians) of hole 0 of a bolt circle of ``n`` holes at ``a0 + k 360/n``, by
+    the rule that keeps its meaning when the count changes: a hole on the x axis (0), else
+    two straddling it, half a pitch off (``180/n``), else one at the top (90 deg), else
+    ``a0``.  Where two rules draw the same holes the x axis is the one a person reads
     from: 4 or 8 holes with one at the top have one on the x axis; 6 with one at the top
     are half a pitch off it."""
     step = 2 * math.pi / n
@@ -57,10 +56,22 @@ def _start_angle(a0: float, n: int, cnt: str) -> str:
     def on(angle: float) -> bool:
         k = (angle - a0) / step
         return abs(k - round(k)) * step * 1e3 <= 1e-6      # 1e-9 rad at 1 m
-    if on(0.0):
+    for angle in (0.0, step / 2, math.pi / 2):
+        if on(angle):
+            return angle
+    return a0
+
+
+def _start_angle(a0: float, n: int, cnt: str) -> str:
+    """The angle of hole ``i`` of a bolt circle of ``n`` (the param ``cnt``) whose holes are
+    at ``a0 + k 360/n`` (radians), from its first hole's (:func:`_start`): ``i * 360 deg /
+    n`` on the x axis, ``(i + 0.5) * 360 deg / n`` half a pitch off it, else ``90 deg +
+    ...`` or ``a0 + ...``."""
+    start = _start(a0, n)
+    if start == 0.0:
         return f"i * 360 deg / {cnt}"
-    if on(step / 2):
+    if abs(start - math.pi / n) <= 1e-15:
         return f"(i + 0.5) * 360 deg / {cnt}"
-    if on(math.pi / 2):
+    if start == math.pi / 2:
         return f"90 deg + i * 360 deg / {cnt}"
     return f"{_deg(a0)} + i * 360 deg / {cnt}"
