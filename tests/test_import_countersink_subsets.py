@@ -16,6 +16,7 @@ import math
 import re
 
 import ezdxf
+import pytest
 from hypothesis import given, settings, HealthCheck, strategies as st
 
 import aidl_lang
@@ -91,3 +92,50 @@ def test_marks_follow_their_holes_whatever_subset_is_marked(tmp_path_factory, ca
         if not edit:
             want = sorted((round(centres[k][0], 6), round(centres[k][1], 6)) for k in marked)
             assert sorted((round(x, 6), round(y, 6)) for x, y in marks) == want
+
+
+def _label_dxf(centres: list, label) -> bytes:
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    m = doc.modelspace()
+    for ly in ("OUTLINE", "HOLES", "LABELS"):
+        doc.layers.add(ly)
+    m.add_lwpolyline([(0, 0), (W, 0), (W, H), (0, H)], close=True, dxfattribs={"layer": "OUTLINE"})
+    for c in centres:
+        m.add_circle(c, 1.6, dxfattribs={"layer": "HOLES"})
+    m.add_text("M3", height=3, dxfattribs={"layer": "LABELS", "insert": label})
+    s = io.StringIO()
+    doc.write(s)
+    return s.getvalue().encode()
+
+
+def _label_box(res) -> tuple:
+    doc = ezdxf.read(io.StringIO(res.to_dxf()))
+    pts = [p[:2] for e in doc.modelspace() if e.dxf.layer == "ENGRAVE" and e.dxftype() == "LWPOLYLINE"
+           for p in e.get_points()]
+    return min(p[0] for p in pts), min(p[1] for p in pts)
+
+
+@pytest.mark.parametrize("kind, member, off, edit", [
+    ("corner", 1, (0, 6), {"corner_inset": 11, "width": 150}),
+    ("row", 4, (0, -7), {"holes_pitch": 15}),
+    ("bolt", 0, (5, 0), {"bolt_circle_pcd": 64}),
+])
+def test_a_label_beside_a_member_of_a_pattern_follows_it(tmp_path, kind, member, off, edit):
+    """A label beside one hole of a pattern ("M3" 6 mm above a corner hole) was placed from
+    the body's edge: a new inset moved the hole and not its label.  Now it is placed at its
+    member's turn of the loop (the loop's variables replaced by that turn's values), so it
+    moves by exactly the hole's move (ezdxf: the label's outlines and the hole's circle)."""
+    centres = _holes(kind, 5)
+    c = centres[member]
+    text, _ = import_drawing(_label_dxf(centres, (c[0] + off[0], c[1] + off[1])), "l.dxf", infer=True)
+    assert all(k in text for k in edit), text
+    path = tmp_path / "l.aidl"
+    before = aidl_lang.compile(text, path=path)
+    after = aidl_lang.compile(text, path=path, overrides=edit)
+    assert before.ok and after.ok, text
+    (bx, by), (ax, ay) = _label_box(before), _label_box(after)
+    hole_after = min(_circles(after, "CUT"), key=lambda h: math.hypot(h[0] - ax, h[1] - ay))
+    moved = (hole_after[0] - c[0], hole_after[1] - c[1])
+    assert abs(moved[0]) + abs(moved[1]) > 1.0, (moved, text)        # the edit moved it
+    assert abs(ax - bx - moved[0]) <= 1e-9 and abs(ay - by - moved[1]) <= 1e-9, text

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from .params import _center, _plus, _r
 from .shapes import ROUND_TOL, Shape
+from .turns import at_turn
 
 
 def _add(text: str, d: float) -> str:
@@ -39,7 +40,9 @@ class _Anchored:
     """The placing half of :class:`~.infer._Part`: needs ``anchor`` (the body Shape and its
     size params, or None), ``frame`` (per axis what stays: -1, 0, 1), ``shift`` (terms added
     to every position, or None), ``named`` / ``named_as`` (shared centres), ``shared`` and
-    ``written`` (``{centre: (x text, y text)}``, :meth:`write_at`)."""
+    ``written`` (``{centre: (x text, y text)}``, :meth:`write_at`) and ``looped`` (the
+    patterns written, ``(members, centre text, index)``: :meth:`written_at` places a label
+    by its member's turn, :func:`~.turns.at_turn`)."""
 
     def plus(self, v: float, term: str, axis: int = 0) -> str:
         if self.shift is not None and self.shift[axis]:
@@ -123,7 +126,17 @@ class _Anchored:
         ``base``: that feature's place as written plus the offset (a label under a cut-out
         moves with its centre when its width changes, :meth:`write_at`), else placed from
         the body's reference ``base`` is tied to (:meth:`at`)."""
-        got = self.written.get((round(base[0], 9), round(base[1], 9)))
+        key = (round(base[0], 9), round(base[1], 9))
+        got = self.written.get(key)
+        if got is None and self.looped:         # a member of a pattern: its turn's place
+            for members, center, index in self.looped:
+                for m in members:
+                    self.written.setdefault((round(m.center[0], 9), round(m.center[1], 9)),
+                                            (center, index(m)))
+            self.looped = []
+            got = self.written.get(key)
+        if got is not None and isinstance(got[1], tuple):
+            got = self.written[key] = at_turn(*got)
         if got is None:
             return self.at(v, axis, ref=base[axis])
         return _add(got[axis], v - base[axis])

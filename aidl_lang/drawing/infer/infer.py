@@ -95,6 +95,8 @@ class _Part(_Anchored, _MakerFeatures):
         self.named_as: list[str] = []       # named_as[i] is named.points[i]'s)
         self.kinds: dict = {}               # (kind, sizes) -> size params (kind_params)
         self.written: dict = {}             # centre -> its place as written (write_at)
+        self.looped: list = []              # patterns (members, centre, index): written_at
+        self.sink_members: list = []        # the holes the next hole statement writes
         self.marks: Marks | None = None     # the import's countersink marks (sinks.py)
         self.sunk: dict = {}                # id(hole Shape) -> its mark (Marks.attach)
         self.sinks = None                   # the marks of the holes being written, or None
@@ -484,6 +486,8 @@ class _Part(_Anchored, _MakerFeatures):
         variables on its turn, :meth:`~.sinks.Marks.write`)."""
         self.w.emit(depth, f"hole {hn} {{ h = {_ctor(sh, center, sizes)} }}")
         self.w.emit(depth, f"Fixed({hn}.h)")
+        if index is not None:       # a label beside a member follows it (written_at)
+            self.looped.append((self.sink_members, center, index))
         if self.sinks is not None and sh.kind == "Circle":
             self.marks.write(self, depth, hn, sh, center, self.sinks, self.sink_members, index)
 
@@ -627,6 +631,7 @@ class _Part(_Anchored, _MakerFeatures):
             # reference, one size param (`holes_2_d` when `holes` is taken)
             sizes = self.size_params(self.name(base + "s"), sh, True)
             for m in g:
+                self.sunk_as([m])
                 self.hole_block(depth, self.numbered(base) if base == "hole" else
                                 self.name(base), m, self.pos(m.center), sizes)
             self.stats.patterns["equal sizes"] += 1
@@ -682,6 +687,7 @@ class _Part(_Anchored, _MakerFeatures):
                         self.run_at(run[0][0], run[-1][0], 1 - axis, "i", cnt, pitch)
                     c[axis] = self.at(first[axis], axis)
                     w.emit(depth, f"for i in range({cnt}) {{")
+                    self.sunk_as([m for _, m in run])
                     self.hole_block(depth + 1, hn, sh, f"({c[0]}, {c[1]})", sizes,
                                     turns.row(first, (step, 0) if axis else (0, step)))
                     w.emit(depth, "}")
@@ -696,12 +702,14 @@ class _Part(_Anchored, _MakerFeatures):
             pts = ", ".join(f"({self.at(m.center[0], 0, mid[0], nearest=True)}, "
                             f"{self.at(m.center[1], 1, mid[1], nearest=True)})" for m in rest)
             w.emit(depth, f"for c in [{pts}] {{")
+            self.sunk_as(rest)
             self.hole_block(depth + 1, hn, sh, "c", sizes)
             w.emit(depth, "}")
         else:                   # one or two: each from its own reference; beside a row of
             for s in rest:      # their size, each a feature of its own (its own size param)
                 hn = self.numbered(base) if base == "hole" else self.name(base)
                 own = self.size_params(hn, s, True) if done else sizes
+                self.sunk_as([s])
                 self.hole_block(depth, hn, s, self.pos(s.center), own)
         if rest:
             self.stats.patterns["equal sizes"] += 1

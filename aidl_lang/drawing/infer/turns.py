@@ -7,6 +7,7 @@ mm, angles in radians."""
 from __future__ import annotations
 
 import math
+import re
 
 
 def _k(v: float, v0: float, step: float) -> int:
@@ -73,3 +74,32 @@ def hex_nodes(c, pitch: float, shift: bool) -> callable:
         par = (j + 1) % 2 if shift else j % 2
         return ("j", j), ("i", round((sh.center[0] - c[0]) / pitch - par / 2))
     return index
+
+
+def _split(point: str) -> tuple[str, str] | None:
+    """``(x, y)`` of a point written ``(x, y)``, split at its top-level comma; None when it
+    is written otherwise (``polar(...)``)."""
+    if not (point.startswith("(") and point.endswith(")")):
+        return None
+    level = 0
+    for k, ch in enumerate(point[1:-1], start=1):
+        level += ch in "([" and 1 or ch in ")]" and -1 or 0
+        if level < 0:
+            return None             # `(a) + (b)`: not one point's brackets
+        if ch == "," and level == 0:
+            return point[1:k].strip(), point[k + 1:-1].strip()
+    return None
+
+
+def at_turn(center: str, turn: tuple) -> tuple[str, str]:
+    """The x and y text of the hole a loop writes at ``center`` (program text over its
+    variables) on the turn ``turn`` (``((variable, value), ...)``): each variable replaced
+    by its value, so that a label beside one member of a pattern follows that member
+    (a corner pattern's inset, a row's pitch)."""
+    for var, val in turn:
+        center = re.sub(rf"\b{var}\b", str(val) if val >= 0 else f"({val})", center)
+    for a, b in (("+ (-1) * ", "- "), ("- (-1) * ", "+ "), ("(-1) * ", "-"), ("+ 1 * ", "+ "),
+                 ("- 1 * ", "- "), ("(1 * ", "(")):
+        center = center.replace(a, b)
+    xy = _split(center)
+    return xy if xy is not None else (f"{center}.x", f"{center}.y")
