@@ -59,7 +59,7 @@ from .naming import _named_parts, _short_names, _summary
 from ..chains.layers import _hole_layers
 from .mirror import mirrored_pair, pair_items, write_pair
 from .sinks import Marks
-from .rings import _start, _start_angle, rings
+from .rings import _start, rings, start_angle
 from . import turns
 from ..write.program import (_Names, _Writer, _containers, _cut_notes, _emit_holds, _holds,
                              _ident, _layer_items, _length, _num, _place, _pt, _whole_ellipse)
@@ -78,6 +78,7 @@ class _Stats:
         self.in_shapes = 0          # of them, in recognised shapes
         self.kinds: Counter = Counter()
         self.patterns: Counter = Counter()
+        self.readings: list = []    # where two readings fit one drawing: which was taken
 
 
 class _Part(_Anchored, _MakerFeatures):
@@ -356,6 +357,12 @@ class _Part(_Anchored, _MakerFeatures):
         singles = []
         centres = []          # bolt circle centres, for naming a bore
         self.share_centres(depth, groups, body)
+        # the middles of the groups of three or more and how far their holes are from it
+        # (a motor plate's corner slots about its bore, outside its motor holes)
+        self.rings_at = [(mid, sum(math.dist(h.center, mid) for h in g) / len(g))
+                         for g in groups.values() if len(g) >= 3
+                         for mid in [(sum(h.center[0] for h in g) / len(g),
+                                      sum(h.center[1] for h in g) / len(g))]]
         for k, (key, g) in enumerate(groups.items()):
             if len(g) == 1 or g[0].kind == "Polygon":
                 singles += g
@@ -526,7 +533,7 @@ class _Part(_Anchored, _MakerFeatures):
         # four at the corners of the body, centred on it
         mid_all = (sum(c[0] for c in cs) / len(cs), sum(c[1] for c in cs) / len(cs))
         if len(g) == 4 and body is not None and body[0].kind != "Circle" and \
-                self.surrounds(mid_all) is None:
+                self.at_corners(g, mid_all):
             bsh, bsizes, bname = body
             gr = _grid(cs)
             if gr is not None and gr[4] == 2 and gr[5] == 2:
@@ -548,6 +555,8 @@ class _Part(_Anchored, _MakerFeatures):
                     ex = f"sx * ({wx} / 2 - {inx})" if wx else f"sx * {_r(dx / 2)}"
                     ey = f"sy * ({hy} / 2 - {iny})" if hy else f"sy * {_r(dy / 2)}"
                     c = f"({self.from_body_centre(0, ex, mid[0])}, {self.from_body_centre(1, ey, mid[1])})"
+                    w.emit(depth, f"# at the corners, {inx if inx == iny else inx + ' and ' + iny}"
+                                  f" in from the edges")
                     w.emit(depth, "for sx in [-1, 1] {")
                     w.emit(depth + 1, "for sy in [-1, 1] {")
                     self.hole_block(depth + 2, hn, sh, c, sizes, turns.corners(mid))
@@ -569,7 +578,7 @@ class _Part(_Anchored, _MakerFeatures):
                 pcd = self.p(f"{hn}_pcd", 2 * R, "pitch circle diameter")
                 sizes = self.size_params(hn, sh, True)
                 cnt = self.p(f"{hn}_n", n, "holes", unit="")
-                ang = _start_angle(a0, n, cnt)
+                ang = start_angle(self, hn, a0, n, cnt)
                 w.emit(depth, f"for i in range({cnt}) {{")
                 self.hole_block(depth + 1, hn, sh, f"polar({self.pos(C)}, {pcd} / 2, {ang})",
                                 sizes, turns.polar(C, _start(a0, n), n))
@@ -713,6 +722,24 @@ class _Part(_Anchored, _MakerFeatures):
                 self.hole_block(depth, hn, s, self.pos(s.center), own)
         if rest:
             self.stats.patterns["equal sizes"] += 1
+        return True
+
+    def at_corners(self, g: list, mid) -> bool:
+        """Whether four equal holes about ``mid`` may be read as at the body's corners
+        (docs/import.md, "What an edit means"): about no feature, or, about one (a bore),
+        when they are not round (a motor plate's corner slots) or another group about it is
+        nearer it (the motor's holes inside them): then said in the head."""
+        around = self.surrounds(mid)
+        if around is None:
+            return True
+        far = sum(math.dist(h.center, mid) for h in g) / len(g)
+        inner = any(math.dist(c, mid) <= EQUAL_TOL and r < far - EQUAL_TOL
+                    for c, r in self.rings_at)
+        if g[0].kind == "Circle" and not inner:
+            return False
+        self.stats.readings.append(
+            f"{len(g)} {_hole_name(g[0])}s both about {self.shared(mid)} and at the corners: "
+            f"read as at the corners (their inset kept when the plate grows)")
         return True
 
     def name_near(self, base: str, c) -> str:
@@ -1068,7 +1095,8 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
         w.emit(0, "}")
     _cut_notes(w, source)
     head = [f"# imported from {source} by `aidl import --infer`: edit freely"]
-    head += ["# " + ln for ln in _summary(stats) + moved] + [f"units {UNIT.get()}"]
+    head += ["# " + ln for ln in _summary(stats) + moved + stats.readings] + \
+        [f"units {UNIT.get()}"]
     text = "\n".join(head + params.lines + w.lines) + "\n"
     return text, w.notes
 

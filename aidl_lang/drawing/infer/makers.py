@@ -66,6 +66,9 @@ class _MakerFeatures(_BoreFeatures):
             c, d, flat, ang = got
             hn = self.name("d_hole")
             ps = self.kind_params("d_hole", (("d", d), ("flat", flat)))
+            if ps[1][0].isalpha():        # the flat cuts the circle: short of its radius
+                self.params.bound(ps[1], "0 mm", f"{ps[0]} / 2",
+                                  "the flat cuts the circle: nearer its centre than its radius")
             turn = f"{_deg(ang)} " if abs(ang) > 1e-15 else ""
             start, end = (f"{turn}+ t", f"{turn}- t") if turn else ("t", "-t")
             w.emit(depth, f"hole {hn} {{")

@@ -3,13 +3,12 @@ two bolt circles of one hole size about a flange's centre (5 on a 60 mm circle, 
 32 mm one), or a bolt circle and a lone hole of its size, are no one pattern and too far
 apart for :func:`~.patterns._features` to split; about the body's centre or a feature's
 (a bore), split by their distance from it, each ring of three or more evenly spaced a bolt
-circle of its own; and :func:`_start_angle`, how a bolt circle's first hole is written so
+circle of its own; and :func:`start_angle`, how a bolt circle's first hole is written so
 that a new count keeps its meaning.  Coordinates in mm."""
 from __future__ import annotations
 
 import math
 
-from .params import _deg
 from .patterns import _polar
 from .shapes import EQUAL_TOL
 
@@ -62,16 +61,18 @@ def _start(a0: float, n: int) -> float:
     return a0
 
 
-def _start_angle(a0: float, n: int, cnt: str) -> str:
-    """The angle of hole ``i`` of a bolt circle of ``n`` (the param ``cnt``) whose holes are
-    at ``a0 + k 360/n`` (radians), from its first hole's (:func:`_start`): ``i * 360 deg /
-    n`` on the x axis, ``(i + 0.5) * 360 deg / n`` half a pitch off it, else ``90 deg +
-    ...`` or ``a0 + ...``."""
+def start_angle(part, hn: str, a0: float, n: int, cnt: str) -> str:
+    """The angle of hole ``i`` of a bolt circle ``hn`` of ``n`` (the param ``cnt``) whose
+    holes are at ``a0 + k 360/n`` (radians), from a param ``<hn>_angle`` (issue 93: its first
+    hole's angle, one word to turn the pattern): ``angle + i * 360 deg / n`` from the first
+    hole's angle (:func:`_start`: on the x axis 0, at the top 90, else as drawn), or, with
+    two holes straddling the x axis, ``angle + (i + 0.5) * 360 deg / n`` (the axis they
+    straddle, 0), so that a new count keeps the reading."""
     start = _start(a0, n)
-    if start == 0.0:
-        return f"i * 360 deg / {cnt}"
-    if abs(start - math.pi / n) <= 1e-15:
-        return f"(i + 0.5) * 360 deg / {cnt}"
-    if start == math.pi / 2:
-        return f"90 deg + i * 360 deg / {cnt}"
-    return f"{_deg(a0)} + i * 360 deg / {cnt}"
+    if abs(start - math.pi / n) <= 1e-15 and n > 2:
+        ang = part.p(f"{hn}_angle", 0.0, "the axis two holes straddle, from the x axis",
+                     unit="deg")
+        return f"{ang} + (i + 0.5) * 360 deg / {cnt}"
+    ang = part.p(f"{hn}_angle", math.degrees(start), "its first hole's, from the x axis",
+                 unit="deg")
+    return f"{ang} + i * 360 deg / {cnt}"
