@@ -129,7 +129,8 @@ HINTS = {"hole": ("hole",), "slot": ("slot",), "cutout": ("cut", "window", "open
          "notch": ("notch",), "row": ("row", "holes", "slots"), "grid": ("grid", "holes"),
          "hexgrid": ("hex", "grid", "grille", "holes"), "boltcircle": ("bolt", "circle"),
          "keyhole": ("key",), "csk": ("countersink", "hole"), "dhole": ("d_hole", "dhole", "flat"), "arcslot": ("arc",),
-         "plate": ("plate", "body")}
+         "plate": ("plate", "body"), "corners": ("corner",), "comb": ("notch",),
+         "board": ("holes",), "flange": ("bolt", "circle")}
 UNIT_MM = {"mm": 1.0, "cm": 10.0, "in": 25.4, "inch": 25.4, "m": 1000.0}
 
 
@@ -423,9 +424,12 @@ def main(argv=None) -> int:
                     "edit not meant, its program and its edits, into this folder")
     ap.add_argument("--kinds", default="", help="the generated features' kinds: `new` (the "
                     "kinds drawn only when asked: double-D holes, keyways, skewed vent rows, countersunk holes), "
+                    "`round5` (issue 93's: corner holes and slots, combs, board hole sets, "
+                    "flanges at a drawn angle), "
                     "`all`, or names joined by commas (default: the first set, as always)")
     a = ap.parse_args(argv)
-    kinds = {"": gen.KINDS, "new": gen.NEW_KINDS, "all": gen.ALL_KINDS}.get(
+    kinds = {"": gen.KINDS, "new": gen.NEW_KINDS, "round5": gen.ROUND5_KINDS,
+             "all": gen.ALL_KINDS}.get(
         a.kinds, tuple(a.kinds.split(",")))
     if not set(kinds) <= set(gen.ALL_KINDS):
         ap.error(f"--kinds: not a kind: {', '.join(sorted(set(kinds) - set(gen.ALL_KINDS)))}")

@@ -52,7 +52,15 @@ KINDS = ("hole", "slot", "cutout", "notch", "row", "grid", "hexgrid", "boltcircl
 # kinds drawn only when asked (``random_design(pool=ALL_KINDS)``, benchmarks/infer_edits.py
 # --kinds): the drawings of KINDS from a seed stay the ones they were before these were added
 NEW_KINDS = ("ddhole", "keyway", "ventrow", "csk")
-ALL_KINDS = KINDS + NEW_KINDS
+# issue 93 (round five), drawn only when asked (--kinds round5), their truths from the spec
+# (docs/import.md, "What an edit means"): four holes or slots at the corners by their inset,
+# a comb's notches (count, pitch, width, depth), a board's holes (an Arduino's, one set from
+# its nearest corner), a flange's bolt circle at a drawn first-hole angle (an edit turns it)
+ROUND5_KINDS = ("corners", "comb", "board", "flange")
+ALL_KINDS = KINDS + NEW_KINDS + ROUND5_KINDS
+# a board's hole sets (mm, from the set's lower left): an Arduino Uno's, a sensor's
+BOARDS = [[(14.0, 2.5), (15.3, 50.7), (66.1, 7.6), (66.1, 35.5)],
+          [(0.0, 0.0), (20.3, 3.8), (5.1, 17.8)]]
 
 
 # --- exact geometry of lines and arcs --------------------------------------------------------
@@ -232,6 +240,8 @@ class Design:
         if f["kind"] == "label" and "of" in f:
             cx, cy = self.place(self.features[f["of"]])
             return (cx + f["dx"], cy + f["dy"])
+        if "ax" not in f:           # at the corners, a comb: the plate's centre
+            return (self.origin[0] + self.width / 2, self.origin[1] + self.height / 2)
         sx, sy = span(f)
         return (self._axis(f["ax"], sx, 0), self._axis(f["ay"], sy, 1))
 
@@ -244,7 +254,8 @@ class Design:
         kind, c = self.corner
         c = c if kind != "square" else 0.0
         segs = []
-        notches = [f for f in self.features if f["kind"] == "notch"]
+        notches = [f for f in self.features if f["kind"] == "notch"] + \
+            [g for f in self.features if f["kind"] == "comb" for g in self.comb_notches(f)]
         for i in range(4):
             e, n = dirs[i], (-dirs[i][1], dirs[i][0])
             p, q = corners[i], corners[(i + 1) % 4]
@@ -295,11 +306,31 @@ class Design:
                     segs.append(("L", b, (q[0] + c * nxt[0], q[1] + c * nxt[1])))
         return segs
 
+    def comb_notches(self, f) -> list:
+        """A comb's notches as notch features, each placed by its centre (design units)."""
+        axis = 0 if f["edge"] in "BT" else 1
+        c = self._axis(f["at"], span(f)[axis], axis)
+        mid = self.origin[axis] + (self.width if axis == 0 else self.height) / 2
+        return [{"kind": "notch", "edge": f["edge"], "shape": "square", "w": f["w"],
+                 "depth": f["depth"], "at": ("C", c - mid + (i - (f["n"] - 1) / 2) * f["p"])}
+                for i in range(f["n"])]
+
+    def corner_members(self, f) -> list:
+        """The centres of four features at the plate's corners, ``f["inset"]`` in."""
+        x0, y0 = self.origin
+        t = f["inset"]
+        return [(x, y) for x in (x0 + t, x0 + self.width - t) for y in (y0 + t, y0 + self.height - t)]
+
     def feature_loops(self, i: int) -> list:
         """The loops of feature ``i`` (design units): its holes (a notch: none, it is in the
         outline; a label: none)."""
         f = self.features[i]
-        return loops_of(f, self.place(f)) if f["kind"] not in ("notch", "label") else []
+        if f["kind"] == "corners":
+            if f["member"] == "hole":
+                return [circle(c, f["d"] / 2) for c in self.corner_members(f)]
+            return [slot_loop(c, f["length"], f["w"], math.radians(f["angle"]))
+                    for c in self.corner_members(f)]
+        return loops_of(f, self.place(f)) if f["kind"] not in ("notch", "label", "comb") else []
 
     def loops(self) -> list:
         """``[(owner, loop in mm)]``: ``owner`` is ``-1`` for the outline, else the feature's
@@ -343,8 +374,10 @@ class Design:
                               if key not in ("kind", "ax", "ay", "at", "of", "dx", "dy"))
             if k == "label" and "of" in f:
                 where = f"{f['dx']:+g}, {f['dy']:+g} from feature {f['of']}"
-            elif k == "notch":
+            elif k in ("notch", "comb"):
                 where = at(f["at"], 0 if f["edge"] in "BT" else 1)
+            elif k == "corners":
+                where = f"at the corners, {f['inset']:g} in"
             else:
                 where = f"{at(f['ax'], 0)}, {at(f['ay'], 1)}"
             out.append(f"{i}: {k} ({sizes}): {where}")
@@ -403,8 +436,26 @@ class Design:
                     [(r"(countersink_|csk_|sink_)(d|dia|diameter)", 1.0)])
                 add("pitch", "p", "pitch", P)
                 add("count", "n", "count", N)
-            if k == "boltcircle" and f.get("bore"):
+            if k in ("boltcircle", "flange") and f.get("bore"):
                 add("size", "bore", "bore", [(r"(bore_)?(d|diameter)", 1.0)])
+            if k == "corners":
+                if f["member"] == "hole":
+                    add("size", "d", "diameter", D)
+                else:
+                    add("size", "length", "slot length", [(r"length|len|l", 1.0)])
+                add("pitch", "inset", "inset", [(r"inset|margin", 1.0)])
+            if k == "comb":
+                add("size", "w", "notch width", [(r"width|w", 1.0)])
+                add("size", "depth", "notch depth", [(r"depth", 1.0)])
+                add("pitch", "p", "pitch", P)
+                add("count", "n", "count", N)
+            if k == "board":
+                add("size", "d", "diameter", D)
+            if k == "flange":
+                add("size", "d", "diameter", D)
+                add("pitch", "pcd", "pitch circle", [(r"pcd|pitch_d|pitch_circle_d", 1.0)])
+                add("count", "n", "count", N)
+                add("pitch", "a0", "first hole's angle", [(r"angle|start_angle", 1.0)])
             if k in ("row", "grid"):
                 add("pitch", "p" if k == "row" else "px", "pitch", P)
                 add("count", "n" if k == "row" else "nx", "count", N)
@@ -457,8 +508,22 @@ class Edit:
 
 
 def span(f) -> tuple:
-    """Half the span an edge anchor measures to (design units)."""
+    """Half the span an edge anchor measures to (design units): none along an axis the
+    feature is placed by its middle (``f["mid"]``, the spec's rows and grids)."""
+    out = _span(f)
+    mid = f.get("mid", ())
+    return tuple(0.0 if a in mid else v for a, v in enumerate(out))
+
+
+def _span(f) -> tuple:
     k = f["kind"]
+    if k == "board":
+        pts = _board(f)
+        return ((max(p[0] for p in pts) - min(p[0] for p in pts)) / 2,
+                (max(p[1] for p in pts) - min(p[1] for p in pts)) / 2)
+    if k == "comb":
+        s = (f["n"] - 1) * f["p"] / 2
+        return (s, 0.0) if f["edge"] in "BT" else (0.0, s)
     if k == "cutout":
         return f["w"] / 2, f["h"] / 2
     if k in ("row", "ventrow", "csk"):
@@ -543,9 +608,23 @@ def arcslot_loop(c, R, a0, sw, w) -> list:
             ("A", c, R - w / 2, a1, -sw), ("A", e0, w / 2, a0 + math.pi, math.pi)]
 
 
+def _board(f) -> list:
+    """A board's hole set in design units, from its lower left."""
+    return [(x / f["u"], y / f["u"]) for x, y in BOARDS[f["board"]]]
+
+
 def members(f, c) -> list:
     """The centres of a pattern's members (design units)."""
     k = f["kind"]
+    if k == "flange":
+        a0 = math.radians(f["a0"])
+        return [(c[0] + f["pcd"] / 2 * math.cos(a0 + TAU * i / f["n"]),
+                 c[1] + f["pcd"] / 2 * math.sin(a0 + TAU * i / f["n"])) for i in range(f["n"])]
+    if k == "board":
+        pts = _board(f)
+        mx = (max(p[0] for p in pts) + min(p[0] for p in pts)) / 2
+        my = (max(p[1] for p in pts) + min(p[1] for p in pts)) / 2
+        return [(c[0] + x - mx, c[1] + y - my) for x, y in pts]
     if k in ("row", "ventrow", "csk"):
         s = [(i - (f["n"] - 1) / 2) * f["p"] for i in range(f["n"])]
         return [(c[0] + t, c[1]) if f["dir"] == "x" else (c[0], c[1] + t) for t in s]
@@ -603,7 +682,7 @@ def loops_of(f, c) -> list:
         return [slot_loop(m, f["length"], f["w"], math.pi / 2 if f["dir"] == "x" else 0.0)
                 for m in members(f, c)]
     out = [circle(m, f["d"] / 2) for m in members(f, c)]
-    if k == "boltcircle" and f.get("bore"):
+    if k in ("boltcircle", "flange") and f.get("bore"):
         out.append(circle(c, f["bore"] / 2))
     return out
 
@@ -686,6 +765,20 @@ def _valid(d: Design) -> bool:
                                   or (f.get("bore") and f["bore"] + f["d"] + 2 * m > f["pcd"])):
             return False
         if k == "hexgrid" and (f["p"] < f["d"] + m or len(members(f, (0, 0))) < 3):
+            return False
+        if k == "comb":
+            axis = 0 if f["edge"] in "BT" else 1
+            c = d._axis(f["at"], span(f)[axis], axis)
+            lo = d.origin[axis] + (d.corner[1] if d.corner[0] != "square" else 0) + 2 * m
+            hi = d.origin[axis] + (d.width if axis == 0 else d.height) - (lo - d.origin[axis])
+            half = (f["n"] - 1) * f["p"] / 2 + f["w"] / 2
+            if f["p"] < f["w"] + 2 * m or c - half < lo or c + half > hi or f["depth"] > \
+                    (d.height if axis == 0 else d.width) / 3:
+                return False
+        if k == "corners" and f["inset"] * 2 > min(d.width, d.height) / 2:
+            return False
+        if k == "flange" and (f["pcd"] * math.sin(math.pi / f["n"]) < f["d"] + m
+                              or (f.get("bore") and f["bore"] + f["d"] + 2 * m > f["pcd"])):
             return False
     plate = _poly(d.outline())
     if not plate.is_valid:
@@ -803,15 +896,83 @@ def random_feature(rng: random.Random, T: dict, kind: str) -> dict:
     elif kind == "csk":
         f.update(dir=rng.choice("xy"), n=rng.randint(2, 4), p=rng.choice(T["pitch"]), d=d,
                  D=round(d * rng.choice([1.6, 2.0, 2.2]), 4))
+    elif kind == "corners":
+        f = {"kind": kind, "member": rng.choice(["hole", "hole", "slot"]), "d": d,
+             "inset": rng.choice(T["off"][1:])}
+        if f["member"] == "slot":
+            f.update(w=d, length=d + rng.choice(T["pitch"][:3]), angle=rng.choice([0, 90]))
+            del f["d"]
+    elif kind == "comb":
+        f = {"kind": kind, "edge": rng.choice("BRTL"), "n": rng.randint(3, 8),
+             "p": rng.choice(T["pitch"][:4]), "w": rng.choice(T["pitch"][:2]) / 2}
+        f["depth"] = f["w"] * rng.choice([2, 3, 4])
+        f["at"] = _anchor(rng, T, 0 if f["edge"] in "BT" else 1)
+    elif kind == "board":
+        f.update(board=rng.randrange(len(BOARDS)), d=rng.choice(T["d"][2:6]),
+                 u=INCH if T is IN else 1.0)
+        f["ax"] = (rng.choice("LR"), rng.choice(T["off"]))
+        f["ay"] = (rng.choice("BT"), rng.choice(T["off"]))
+    elif kind == "flange":
+        f.update(n=rng.choice([3, 4, 5, 6, 8]), d=d, pcd=rng.choice(T["big"]) * 2,
+                 bore=rng.choice([0, rng.choice(T["big"])]))
+        # a first hole at a drawn angle none of the x axis, the top or straddling it
+        f["a0"] = rng.choice([15, 20, 25, 35, 40]) % (360 / f["n"])
     elif kind == "arcslot":
         f.update(R=rng.choice(T["big"]), w=rng.choice(T["d"][:4]), a0=rng.choice([0, 30, 45, 200]),
                  sweep=rng.choice([45, 60, 90]))
     return f
 
 
+def _spec_anchor(d: Design, f) -> dict:
+    """``f`` (a row, a grid, a comb) placed as the spec reads it (docs/import.md, "What an
+    edit means"), per axis along which it has a pitch: on the centre line, centred; with an
+    end member nearer its edge than one pitch, by that end from that edge (ties: the low
+    one); else by its middle, from the edge nearer it (``f["mid"]``: no span on that axis)."""
+    k = f["kind"]
+    if k in ("row", "ventrow", "csk"):
+        axes = [(0 if f["dir"] == "x" else 1, f["p"], "ax" if f["dir"] == "x" else "ay")]
+    elif k == "grid":
+        axes = [(0, f["px"], "ax"), (1, f["py"] or f["px"], "ay")]
+    elif k == "comb":
+        axes = [(0 if f["edge"] in "BT" else 1, f["p"], "at")]
+    else:
+        return f
+    for axis, p, key in axes:
+        sp = span(f)[axis]
+        c = d._axis(f[key], sp, axis)
+        lo = d.origin[axis]
+        hi = lo + (d.width if axis == 0 else d.height)
+        mid = set(f.get("mid", ())) - {axis}
+        f["mid"] = tuple(sorted(mid))
+        full = _span(f)[axis]
+        if abs(c - (lo + hi) / 2) < 1e-9:
+            f[key] = ("C", 0.0)
+            continue
+        gl, gh = c - full - lo, hi - (c + full)
+        names = ("L", "R") if axis == 0 else ("B", "T")
+        if min(gl, gh) < p - 1e-9:
+            f[key] = (names[0], gl) if gl <= gh else (names[1], gh)
+        else:
+            f["mid"] = tuple(sorted(mid | {axis}))
+            f[key] = (names[0], c - lo) if c - lo <= hi - c else (names[1], hi - c)
+    return f
+
+
 def _plain_anchor(d: Design, f) -> dict:
     """``f`` with an edge anchor that puts it on the plate's centre line said as centred: as
-    far from both edges, a maker means the centre (the design must not be ambiguous)."""
+    far from both edges, a maker means the centre (the design must not be ambiguous); a
+    row, grid or comb placed as the spec reads it (:func:`_spec_anchor`)."""
+    if f["kind"] in ("row", "ventrow", "csk", "grid", "comb"):
+        return _spec_anchor(d, f)
+    if f["kind"] == "board":        # one set, from the corner nearest its holes' middle
+        ms = members(f, d.place(f))
+        for axis, key, names in ((0, "ax", "LR"), (1, "ay", "BT")):
+            m = sum(p[axis] for p in ms) / len(ms)
+            lo = d.origin[axis]
+            hi = lo + (d.width if axis == 0 else d.height)
+            c, sp = d.place(f)[axis], span(f)[axis]
+            f[key] = (names[0], c - sp - lo) if m - lo <= hi - m else (names[1], hi - c - sp)
+        return f
     keys = [("at", 0 if f["edge"] in "BT" else 1)] if f["kind"] == "notch" else \
         [("ax", 0), ("ay", 1)] if "ax" in f else []
     for key, axis in keys:
@@ -946,7 +1107,8 @@ def _dxf_loop(m, loop, att, bulges: bool):
 def _local_loops(f) -> list | None:
     """A pattern's one member at the origin, for a block (``None``: not drawn by blocks)."""
     k = f["kind"]
-    if k in ("grid", "hexgrid", "boltcircle") or (k == "row" and f["member"] == "hole"):
+    if k in ("grid", "hexgrid", "boltcircle", "flange", "board") or \
+            (k == "row" and f["member"] == "hole"):
         return [circle((0.0, 0.0), f["d"] / 2)]
     if k in ("row", "ventrow"):
         return [slot_loop((0.0, 0.0), f["length"], f["w"], 0.0)]
@@ -971,7 +1133,7 @@ def to_dxf(d: Design) -> bytes:
     _dxf_loop(m, d.outline(), {"layer": lay[0]}, bul)
     nb = 0
     for i, f in enumerate(d.features):
-        if f["kind"] in ("notch", "label"):
+        if f["kind"] in ("notch", "label", "comb"):
             continue
         local = _local_loops(f) if st.get("blocks") else None
         if local is None:
@@ -987,7 +1149,7 @@ def to_dxf(d: Design) -> bytes:
             float(f["angle"]) if f["kind"] == "ventrow" else 0.0
         for p in members(f, c):
             m.add_blockref(blk.name, p, dxfattribs={"layer": lay[1], "rotation": rot})
-        if f["kind"] == "boltcircle" and f.get("bore"):
+        if f["kind"] in ("boltcircle", "flange") and f.get("bore"):
             m.add_circle(c, f["bore"] / 2, dxfattribs={"layer": lay[1]})
     if d.marks():
         doc.layers.add("CSK")
@@ -1037,7 +1199,7 @@ def to_svg(d: Design) -> bytes:
     dw.add(flip)
     flip.add(dw.path(d=_path_d(d.outline()), **style))
     for i, f in enumerate(d.features):
-        if f["kind"] in ("notch", "label"):
+        if f["kind"] in ("notch", "label", "comb"):
             continue
         c = d.place(f)
         local = _local_loops(f) if d.style.get("blocks") else None
@@ -1061,7 +1223,7 @@ def to_svg(d: Design) -> bytes:
                     q.add(dw.circle(center=(0, 0), r=lp[0][2], **style))
                 else:
                     q.add(dw.path(d=_path_d(lp), **style))
-        if f["kind"] == "boltcircle" and f.get("bore"):
+        if f["kind"] in ("boltcircle", "flange") and f.get("bore"):
             flip.add(dw.circle(center=c, r=f["bore"] / 2, **style))
     texts = dw.g(id="labels")
     dw.add(texts)

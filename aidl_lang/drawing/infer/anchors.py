@@ -172,14 +172,32 @@ class _Anchored:
         return _add(head, -side * gap)
 
     def run_at(self, first: float, last: float, axis: int, var: str, cnt: str,
-               pitch: str) -> str:
+               pitch: str, step: float | None = None) -> str:
         """Member ``var`` of a row from ``first`` to ``last`` (mm along ``axis``, ``cnt``
-        members ``pitch`` apart): from the body's edge nearer its end member than the row's
-        middle is to the centre line, by that end member (the right end of a row tied to the
-        right edge stays when the pitch or count changes); nearer the centre line but not on
-        it, by the end member nearer its edge (never by its first member)."""
+        members ``pitch`` apart, ``step`` mm): by the spec (docs/import.md, "What an edit
+        means"), by its end member when that end sits nearer its edge than one ``step`` (the
+        row grows away from the edge), else by its middle placed from the body's nearer
+        edge (a new pitch or count spreads it about its centre).  Without ``step``: from the
+        body's edge nearer its end member than the row's middle is to the centre line, by
+        that end member; nearer the centre line but not on it, by the end member nearer its
+        edge (never by its first member)."""
         lo, hi = min(first, last), max(first, last)
-        side = self.nearest(lo, hi, axis)
+        if step is not None and self.anchor is not None and self.on_centre((lo + hi) / 2, axis):
+            k = f"({var} - ({cnt} - 1) / 2)" if last >= first else f"(({cnt} - 1) / 2 - {var})"
+            return self.from_body_centre(axis, f"{k} * {pitch}", (lo + hi) / 2)
+        if step is not None and self.anchor is not None:
+            sh = self.anchor[0]
+            key = "width" if axis == 0 else "height"
+            c, half = sh.center[axis], sh.args[key] / 2
+            gl, gh = lo - (c - half), (c + half) - hi
+            if min(gl, gh) >= step - 1e-9:      # no end at a set distance: by its middle
+                k = f"({var} - ({cnt} - 1) / 2)" if last >= first else \
+                    f"(({cnt} - 1) / 2 - {var})"
+                mid = self.at((lo + hi) / 2, axis)
+                return f"{k} * {pitch}" if mid == "0" else f"{mid} + {k} * {pitch}"
+            side = -1 if gl <= gh else 1
+        else:
+            side = self.nearest(lo, hi, axis)
         if side == 0 and self.anchor is not None:
             # off the centre line (a centred run is written by its middle before this):
             # by the end nearer its edge, never by its first member

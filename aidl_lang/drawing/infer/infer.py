@@ -52,7 +52,7 @@ from .shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
 from .anchors import _Anchored
 from .engraving import _engraving
 from .labels import _at_as_drawn, _label_place
-from .features import edge_notches
+from .features import edge_notches, notch_rows
 from .makers import SINGLE_PARAMS, _MakerFeatures
 from .chamfers import _chamfered, _clear_of_chamfers
 from .naming import _named_parts, _short_names, _summary
@@ -228,9 +228,14 @@ class _Part(_Anchored, _MakerFeatures):
         if chamfer is not None and not (corners_drawn and "width" in sizes):
             self.w.emit(depth, f"Chamfer({nm}, {self.p('chamfer', leg, 'at each corner')})")
             st.patterns["chamfered corners"] += 1
-        for k, cut in enumerate(cuts or []):
-            self.edge_notch(depth, cut)
-            st.patterns["notch in a side"] += 1
+        for group in notch_rows(cuts or []):
+            if len(group) > 2:
+                self.notch_row(depth, group)
+                st.patterns["notches in a side"] += 1
+                continue
+            for cut in group:
+                self.edge_notch(depth, cut)
+                st.patterns["notch in a side"] += 1
         if teeth:
             self.teeth(depth, sh, teeth, "tooth")
         own = {id(x) for x in segs}
@@ -287,9 +292,8 @@ class _Part(_Anchored, _MakerFeatures):
             pp = self.p(hn + "_pitch", pitch, times=n)
             if abs(mid - c[along]) <= EQUAL_TOL:
                 pos = self.from_body_centre(along, f"(i - ({cnt} - 1) / 2) * {pp}", c[along])
-            else:
-                f0 = self.at(centres[0], along, ref=mid)
-                pos = f"i * {pp}" if f0 == "0" else f"{f0} + i * {pp}"
+            else:           # by its middle, or its end within a pitch of an edge (the spec)
+                pos = self.run_at(centres[0], centres[-1], along, "i", cnt, pp, pitch)
             head = f"for i in range({cnt}) {{"
         else:
             pos = "x"
@@ -693,7 +697,7 @@ class _Part(_Anchored, _MakerFeatures):
                     c[1 - axis] = self.from_body_centre(
                         1 - axis, f"(i - ({cnt} - 1) / 2) * {pitch}", mid) \
                         if self.on_centre(mid, 1 - axis) else \
-                        self.run_at(run[0][0], run[-1][0], 1 - axis, "i", cnt, pitch)
+                        self.run_at(run[0][0], run[-1][0], 1 - axis, "i", cnt, pitch, step)
                     c[axis] = self.at(first[axis], axis)
                     w.emit(depth, f"for i in range({cnt}) {{")
                     self.sunk_as([m for _, m in run])
@@ -703,17 +707,8 @@ class _Part(_Anchored, _MakerFeatures):
                     self.stats.patterns["row"] += 1
                     done.update(id(m) for _, m in run)
             rest = [m for m in rest if id(m) not in done]
-        if len(rest) > 2:       # no pattern: the instances listed, one loop, one size
-            # placed together, by the reference nearest their middle (a board's holes move
-            # as one when the plate grows)
-            mid = [sum(m.center[k] for m in rest) / len(rest) for k in (0, 1)]
-            hn = self.name_near(base + "s", mid)
-            pts = ", ".join(f"({self.at(m.center[0], 0, mid[0], nearest=True)}, "
-                            f"{self.at(m.center[1], 1, mid[1], nearest=True)})" for m in rest)
-            w.emit(depth, f"for c in [{pts}] {{")
-            self.sunk_as(rest)
-            self.hole_block(depth + 1, hn, sh, "c", sizes)
-            w.emit(depth, "}")
+        if len(rest) > 2:       # no pattern: a board's holes, one loop, one size
+            self.hole_set(depth, rest, sh, base, sizes)
         else:                   # one or two: each from its own reference; beside a row of
             for s in rest:      # their size, each a feature of its own (its own size param)
                 hn = self.numbered(base) if base == "hole" else self.name(base)
@@ -741,6 +736,50 @@ class _Part(_Anchored, _MakerFeatures):
             f"{len(g)} {_hole_name(g[0])}s both about {self.shared(mid)} and at the corners: "
             f"read as at the corners (their inset kept when the plate grows)")
         return True
+
+    def hole_set(self, depth: int, rest: list, sh: Shape, base: str, sizes: dict) -> None:
+        """Holes of one size in no pattern (a board's) as one set placed from the body's
+        corner nearest their middle (the spec, docs/import.md: a board's holes move as one
+        with that corner): params ``<set>_x`` and ``<set>_y`` from those edges to the hole
+        nearest it, the others listed as offsets from that hole."""
+        mid = [sum(m.center[k] for m in rest) / len(rest) for k in (0, 1)]
+        hn = self.name_near(base + "s", mid)
+        if self.anchor is None:
+            pts = ", ".join(self.center(m.center) for m in rest)
+            self.w.emit(depth, f"for c in [{pts}] {{")
+            self.sunk_as(rest)
+            self.hole_block(depth + 1, hn, sh, "c", sizes)
+            self.w.emit(depth, "}")
+            return
+        body = self.anchor[0]
+        sides = [self.nearest(mid[k], mid[k], k) for k in (0, 1)]
+        # the hole nearest that corner (on a centre line: nearest the centre) is the origin
+        corner = [body.center[k] + sides[k] * body.args["width" if k == 0 else "height"] / 2
+                  for k in (0, 1)]
+        ref = min(rest, key=lambda m: (math.dist(m.center, corner), m.center))
+        at, said = [], []
+        for k, word in ((0, "x"), (1, "y")):
+            side = sides[k]
+            if side == 0:
+                at.append(self.at(ref.center[k], k))
+                said.append("centre line")
+                continue
+            gap = abs(ref.center[k] - corner[k])
+            e = self.edge(k, side)
+            g = self.p(f"{hn}_{word}", gap, "the set's hole nearest the corner, from the " +
+                       {(0, -1): "left", (0, 1): "right", (1, -1): "bottom",
+                        (1, 1): "top"}[(k, side)] + " edge")
+            at.append((g if e == "0" else f"{e} + {g}") if side < 0 else
+                      (f"-{g}" if e == "0" else f"{e} - {g}"))
+            said.append({(0, -1): "left", (0, 1): "right", (1, -1): "bottom", (1, 1): "top"}[(k, side)])
+        offs = ", ".join(_pt((m.center[0] - ref.center[0], m.center[1] - ref.center[1]))
+                         for m in rest)
+        self.w.emit(depth, f"# {len(rest)} holes in no pattern (a board's): one set, from the "
+                           f"{' '.join(dict.fromkeys(reversed(said)))} corner")
+        self.w.emit(depth, f"for c in [{offs}] {{")
+        self.sunk_as(rest)
+        self.hole_block(depth + 1, hn, sh, f"({at[0]} + c.x, {at[1]} + c.y)", sizes)
+        self.w.emit(depth, "}")
 
     def name_near(self, base: str, c) -> str:
         """``base`` when it is free, else named for where ``c`` sits on the body
@@ -800,7 +839,7 @@ class _Part(_Anchored, _MakerFeatures):
                 term = f"({var} - ({cnt} - 1) / 2) * {pitch}"
                 out.append(term if o == "0" else f"{o} + {term}")
             else:
-                out.append(self.run_at(v0, v0 + (n - 1) * step, axis, var, cnt, pitch))
+                out.append(self.run_at(v0, v0 + (n - 1) * step, axis, var, cnt, pitch, step))
         d = depth
         for ln in loops:
             self.w.emit(d, ln)
