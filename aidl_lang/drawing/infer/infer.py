@@ -59,6 +59,7 @@ from .naming import _named_parts, _short_names, _summary
 from ..chains.layers import _hole_layers
 from .mirror import mirrored_pair, pair_items, write_pair
 from .sinks import Marks
+from .groups import _Groups, follows
 from .rings import _start, rings, start_angle
 from . import turns
 from ..write.program import (_Names, _Writer, _containers, _cut_notes, _emit_holds, _holds,
@@ -81,7 +82,7 @@ class _Stats:
         self.readings: list = []    # where two readings fit one drawing: which was taken
 
 
-class _Part(_Anchored, _MakerFeatures):
+class _Part(_Anchored, _MakerFeatures, _Groups):
     """One part's statements, written into ``w`` at ``depth``."""
 
     def __init__(self, w: _Writer, params: _Params, stats: _Stats, prefix: str) -> None:
@@ -583,6 +584,10 @@ class _Part(_Anchored, _MakerFeatures):
                 sizes = self.size_params(hn, sh, True)
                 cnt = self.p(f"{hn}_n", n, "holes", unit="")
                 ang = start_angle(self, hn, a0, n, cnt)
+                on_body = self.anchor is not None and \
+                    math.dist(C, self.anchor[0].center) <= EQUAL_TOL
+                w.emit(depth, f"# about {self.shared(C) or ('the body' if on_body else 'its')}"
+                              f"{'' if self.shared(C) else ' centre'}, its first hole at {ang.split(' + ')[0]}")
                 w.emit(depth, f"for i in range({cnt}) {{")
                 self.hole_block(depth + 1, hn, sh, f"polar({self.pos(C)}, {pcd} / 2, {ang})",
                                 sizes, turns.polar(C, _start(a0, n), n))
@@ -617,6 +622,7 @@ class _Part(_Anchored, _MakerFeatures):
                     ey = self.from_body_centre(1, f"{sign} * {self.p(name, abs(dy))} / 2", B[1])
                 else:
                     ey = self.at(y1, 1)
+                w.emit(depth, "# mirrored about the centre line" + ("s" if sym_x and sym_y else ""))
                 w.emit(depth, "for s in [-1, 1] {")
                 self.hole_block(depth + 1, hn, sh, f"({ex}, {ey})", sizes,
                                 turns.mirrored(B, sym_x))
@@ -699,6 +705,7 @@ class _Part(_Anchored, _MakerFeatures):
                         if self.on_centre(mid, 1 - axis) else \
                         self.run_at(run[0][0], run[-1][0], 1 - axis, "i", cnt, pitch, step)
                     c[axis] = self.at(first[axis], axis)
+                    w.emit(depth, f"# row: {follows(c) or 'about its middle'}")
                     w.emit(depth, f"for i in range({cnt}) {{")
                     self.sunk_as([m for _, m in run])
                     self.hole_block(depth + 1, hn, sh, f"({c[0]}, {c[1]})", sizes,
@@ -718,68 +725,6 @@ class _Part(_Anchored, _MakerFeatures):
         if rest:
             self.stats.patterns["equal sizes"] += 1
         return True
-
-    def at_corners(self, g: list, mid) -> bool:
-        """Whether four equal holes about ``mid`` may be read as at the body's corners
-        (docs/import.md, "What an edit means"): about no feature, or, about one (a bore),
-        when they are not round (a motor plate's corner slots) or another group about it is
-        nearer it (the motor's holes inside them): then said in the head."""
-        around = self.surrounds(mid)
-        if around is None:
-            return True
-        far = sum(math.dist(h.center, mid) for h in g) / len(g)
-        inner = any(math.dist(c, mid) <= EQUAL_TOL and r < far - EQUAL_TOL
-                    for c, r in self.rings_at)
-        if g[0].kind == "Circle" and not inner:
-            return False
-        self.stats.readings.append(
-            f"{len(g)} {_hole_name(g[0])}s both about {self.shared(mid)} and at the corners: "
-            f"read as at the corners (their inset kept when the plate grows)")
-        return True
-
-    def hole_set(self, depth: int, rest: list, sh: Shape, base: str, sizes: dict) -> None:
-        """Holes of one size in no pattern (a board's) as one set placed from the body's
-        corner nearest their middle (the spec, docs/import.md: a board's holes move as one
-        with that corner): params ``<set>_x`` and ``<set>_y`` from those edges to the hole
-        nearest it, the others listed as offsets from that hole."""
-        mid = [sum(m.center[k] for m in rest) / len(rest) for k in (0, 1)]
-        hn = self.name_near(base + "s", mid)
-        if self.anchor is None:
-            pts = ", ".join(self.center(m.center) for m in rest)
-            self.w.emit(depth, f"for c in [{pts}] {{")
-            self.sunk_as(rest)
-            self.hole_block(depth + 1, hn, sh, "c", sizes)
-            self.w.emit(depth, "}")
-            return
-        body = self.anchor[0]
-        sides = [self.nearest(mid[k], mid[k], k) for k in (0, 1)]
-        # the hole nearest that corner (on a centre line: nearest the centre) is the origin
-        corner = [body.center[k] + sides[k] * body.args["width" if k == 0 else "height"] / 2
-                  for k in (0, 1)]
-        ref = min(rest, key=lambda m: (math.dist(m.center, corner), m.center))
-        at, said = [], []
-        for k, word in ((0, "x"), (1, "y")):
-            side = sides[k]
-            if side == 0:
-                at.append(self.at(ref.center[k], k))
-                said.append("centre line")
-                continue
-            gap = abs(ref.center[k] - corner[k])
-            e = self.edge(k, side)
-            g = self.p(f"{hn}_{word}", gap, "the set's hole nearest the corner, from the " +
-                       {(0, -1): "left", (0, 1): "right", (1, -1): "bottom",
-                        (1, 1): "top"}[(k, side)] + " edge")
-            at.append((g if e == "0" else f"{e} + {g}") if side < 0 else
-                      (f"-{g}" if e == "0" else f"{e} - {g}"))
-            said.append({(0, -1): "left", (0, 1): "right", (1, -1): "bottom", (1, 1): "top"}[(k, side)])
-        offs = ", ".join(_pt((m.center[0] - ref.center[0], m.center[1] - ref.center[1]))
-                         for m in rest)
-        self.w.emit(depth, f"# {len(rest)} holes in no pattern (a board's): one set, from the "
-                           f"{' '.join(dict.fromkeys(reversed(said)))} corner")
-        self.w.emit(depth, f"for c in [{offs}] {{")
-        self.sunk_as(rest)
-        self.hole_block(depth + 1, hn, sh, f"({at[0]} + c.x, {at[1]} + c.y)", sizes)
-        self.w.emit(depth, "}")
 
     def name_near(self, base: str, c) -> str:
         """``base`` when it is free, else named for where ``c`` sits on the body
@@ -841,6 +786,9 @@ class _Part(_Anchored, _MakerFeatures):
             else:
                 out.append(self.run_at(v0, v0 + (n - 1) * step, axis, var, cnt, pitch, step))
         d = depth
+        if follows(out):
+            self.w.emit(d, f"# {'grid' if both else 'row'}: {follows(out)}"
+                           + (f", about {self.shared(mid)}" if around else ""))
         for ln in loops:
             self.w.emit(d, ln)
             d += 1

@@ -1,0 +1,92 @@
+"""``aidl import --infer``: groups of holes read as the spec says a maker means them
+(issue 93; docs/import.md, "What an edit means"): four at the body's corners even about a
+bore (:meth:`_Groups.at_corners`), a board's holes as one set from the corner nearest them
+(:meth:`_Groups.hole_set`), and the comment saying what a row or grid follows
+(:func:`follows`).  The writing half of :class:`~.infer._Part`: needs ``w``, ``p``,
+``stats``, ``anchor``, ``at``, ``edge``, ``nearest``, ``center``, ``shared``,
+``surrounds``, ``rings_at``, ``name_near``, ``sunk_as`` and ``hole_block``.  Coordinates in
+mm; the results are program text."""
+from __future__ import annotations
+
+import math
+
+from .params import _hole_name
+from .shapes import EQUAL_TOL, Shape
+from ..write.program import _pt
+
+
+def follows(terms: list) -> str:
+    """What a row or grid written with the coordinate texts ``terms`` (x, y) follows, as
+    its comment says it: ``about its middle`` or ``from its end member`` along each axis
+    it runs along."""
+    out = []
+    for axis, t in enumerate(terms):
+        if " - 1) / 2)" in t or "- 1) / 2 -" in t:
+            out.append(f"{'xy'[axis]} about its middle")
+        elif "range" not in t and any(v in t for v in ("i *", "j *", "(i -", "(j -")):
+            out.append(f"{'xy'[axis]} from its end member")
+    return ", ".join(out)
+
+
+class _Groups:
+    def at_corners(self, g: list, mid) -> bool:
+        """Whether four equal holes about ``mid`` may be read as at the body's corners
+        (docs/import.md, "What an edit means"): about no feature, or, about one (a bore),
+        when they are not round (a motor plate's corner slots) or another group about it is
+        nearer it (the motor's holes inside them): then said in the head."""
+        around = self.surrounds(mid)
+        if around is None:
+            return True
+        far = sum(math.dist(h.center, mid) for h in g) / len(g)
+        inner = any(math.dist(c, mid) <= EQUAL_TOL and r < far - EQUAL_TOL
+                    for c, r in self.rings_at)
+        if g[0].kind == "Circle" and not inner:
+            return False
+        self.stats.readings.append(
+            f"{len(g)} {_hole_name(g[0])}s both about {self.shared(mid)} and at the corners: "
+            f"read as at the corners (their inset kept when the plate grows)")
+        return True
+
+    def hole_set(self, depth: int, rest: list, sh: Shape, base: str, sizes: dict) -> None:
+        """Holes of one size in no pattern (a board's) as one set placed from the body's
+        corner nearest their middle (the spec, docs/import.md: a board's holes move as one
+        with that corner): params ``<set>_x`` and ``<set>_y`` from those edges to the hole
+        nearest it, the others listed as offsets from that hole."""
+        mid = [sum(m.center[k] for m in rest) / len(rest) for k in (0, 1)]
+        hn = self.name_near(base + "s", mid)
+        if self.anchor is None:
+            pts = ", ".join(self.center(m.center) for m in rest)
+            self.w.emit(depth, f"for c in [{pts}] {{")
+            self.sunk_as(rest)
+            self.hole_block(depth + 1, hn, sh, "c", sizes)
+            self.w.emit(depth, "}")
+            return
+        body = self.anchor[0]
+        sides = [self.nearest(mid[k], mid[k], k) for k in (0, 1)]
+        # the hole nearest that corner (on a centre line: nearest the centre) is the origin
+        corner = [body.center[k] + sides[k] * body.args["width" if k == 0 else "height"] / 2
+                  for k in (0, 1)]
+        ref = min(rest, key=lambda m: (math.dist(m.center, corner), m.center))
+        at, said = [], []
+        for k, word in ((0, "x"), (1, "y")):
+            side = sides[k]
+            if side == 0:
+                at.append(self.at(ref.center[k], k))
+                said.append("centre line")
+                continue
+            gap = abs(ref.center[k] - corner[k])
+            e = self.edge(k, side)
+            g = self.p(f"{hn}_{word}", gap, "the set's hole nearest the corner, from the " +
+                       {(0, -1): "left", (0, 1): "right", (1, -1): "bottom",
+                        (1, 1): "top"}[(k, side)] + " edge")
+            at.append((g if e == "0" else f"{e} + {g}") if side < 0 else
+                      (f"-{g}" if e == "0" else f"{e} - {g}"))
+            said.append({(0, -1): "left", (0, 1): "right", (1, -1): "bottom", (1, 1): "top"}[(k, side)])
+        offs = ", ".join(_pt((m.center[0] - ref.center[0], m.center[1] - ref.center[1]))
+                         for m in rest)
+        self.w.emit(depth, f"# {len(rest)} holes in no pattern (a board's): one set, from the "
+                           f"{' '.join(dict.fromkeys(reversed(said)))} corner")
+        self.w.emit(depth, f"for c in [{offs}] {{")
+        self.sunk_as(rest)
+        self.hole_block(depth + 1, hn, sh, f"({at[0]} + c.x, {at[1]} + c.y)", sizes)
+        self.w.emit(depth, "}")
