@@ -4,11 +4,11 @@ four corner holes wrote the three marks as fixed circles in the layer's `drawing
 width=200` moved the holes and left the marks on bare material (with all four marked they
 followed).  Now a mark is written with its hole whatever subset is marked: in the pattern's
 loop, under an `if` naming the marked turns (`if not (sx == 1 and sy == 1)`), its centre the
-hole's.  The law: plates of a corner pattern, a row, a grid, a bolt circle or a mirrored
-pair, any non-empty subset of the n holes marked; after each edit of the plate's size and
+hole's.  The law: plates of a corner pattern, a row, a grid, a bolt circle, a mirrored
+pair or a board's hole set, any non-empty subset of the n holes marked; after each edit of the plate's size and
 the pattern's own params every mark (read back by ezdxf from the compiled DXF) sits on a
 hole centre to 1e-9 mm, the marked holes are as many as drawn, and as drawn they are the
-drawn ones.  Cost: 16 generated plates, 3 compiles each (about 12 s of CPU)."""
+drawn ones.  Cost: 18 generated plates, 3 compiles each (about 12 s of CPU)."""
 from __future__ import annotations
 
 import io
@@ -37,6 +37,8 @@ def _holes(kind: str, n: int) -> list:
     if kind == "bolt":
         return [(W / 2 + 25 * math.cos(2 * math.pi * k / n), H / 2 + 25 * math.sin(2 * math.pi * k / n))
                 for k in range(n)]
+    if kind == "board":             # an Arduino Uno's holes, by the plate's right bottom corner
+        return [(40 + x, 8 + y) for x, y in [(14.0, 2.5), (15.3, 50.7), (66.1, 7.6), (66.1, 35.5)]]
     return [(W / 2 - 35.0, 30.0), (W / 2 + 35.0, 30.0)]        # a mirrored pair
 
 
@@ -64,14 +66,14 @@ def _circles(res, layer: str) -> list:
 
 @st.composite
 def plates(draw):
-    kind = draw(st.sampled_from(["corner", "row", "grid", "bolt", "pair"]))
+    kind = draw(st.sampled_from(["corner", "row", "grid", "bolt", "pair", "board"]))
     n = draw(st.integers(3, 6))
     centres = _holes(kind, n)
     marked = draw(st.sets(st.integers(0, len(centres) - 1), min_size=1))
     return kind, centres, marked
 
 
-@settings(max_examples=16, deadline=None, suppress_health_check=list(HealthCheck))
+@settings(max_examples=18, deadline=None, suppress_health_check=list(HealthCheck))
 @given(plates())
 def test_marks_follow_their_holes_whatever_subset_is_marked(tmp_path_factory, case):
     kind, centres, marked = case
@@ -79,7 +81,7 @@ def test_marks_follow_their_holes_whatever_subset_is_marked(tmp_path_factory, ca
     assert "drawing csk" not in text, text          # every mark written with its hole
     assert ("holes, as drawn" in text) == (len(marked) < len(centres)), text
     own = [nm for nm in re.findall(r"^param (\w+) = ([\d.]+) mm", text, re.M)
-           if re.search(r"_(pitch|inset|pcd|spacing)\w*$", nm[0])]
+           if re.search(r"_(pitch|inset|pcd|spacing|x)$", nm[0])]
     edits = [{}, {"width": 170, "height": 95}] + [{nm: float(v) * 1.25} for nm, v in own[:1]]
     path = tmp_path_factory.mktemp("csk") / "p.aidl"
     for edit in edits:

@@ -81,12 +81,17 @@ class _Groups:
                         (1, 1): "top"}[(k, side)] + " edge")
             at.append((g if e == "0" else f"{e} + {g}") if side < 0 else
                       (f"-{g}" if e == "0" else f"{e} - {g}"))
-            said.append({(0, -1): "left", (0, 1): "right", (1, -1): "bottom", (1, 1): "top"}[(k, side)])
-        offs = ", ".join(_pt((m.center[0] - ref.center[0], m.center[1] - ref.center[1]))
-                         for m in rest)
+            said.append({(0, -1): "left", (0, 1): "right", (1, -1): "bottom",
+                         (1, 1): "top"}[(k, side)])
+        pts = [_pt((m.center[0] - ref.center[0], m.center[1] - ref.center[1])) for m in rest]
+        offs = ", ".join(pts)
+        # each hole's turn of the loop: its offset (a countersink on some, a label)
+        turn = {id(m): (("c.x", p[1:-1].split(", ")[0]), ("c.y", p[1:-1].split(", ")[1]))
+                for m, p in zip(rest, pts)}
         self.w.emit(depth, f"# {len(rest)} holes in no pattern (a board's): one set, from the "
                            f"{' '.join(dict.fromkeys(reversed(said)))} corner")
         self.w.emit(depth, f"for c in [{offs}] {{")
         self.sunk_as(rest)
-        self.hole_block(depth + 1, hn, sh, f"({at[0]} + c.x, {at[1]} + c.y)", sizes)
+        self.hole_block(depth + 1, hn, sh, f"({at[0]} + c.x, {at[1]} + c.y)", sizes,
+                        lambda m: turn[id(m)])
         self.w.emit(depth, "}")

@@ -97,7 +97,12 @@ def at_turn(center: str, turn: tuple) -> tuple[str, str]:
     by its value, so that a label beside one member of a pattern follows that member
     (a corner pattern's inset, a row's pitch)."""
     for var, val in turn:
-        center = re.sub(rf"\b{var}\b", str(val) if val >= 0 else f"({val})", center)
+        text = str(val)
+        center = re.sub(rf"\b{re.escape(var)}\b", text if not text.startswith("-")
+                        else f"({text})", center)
+    # `x + (-52.1)`: `x - 52.1` (a value put in for a variable)
+    center = re.sub(r"\+ \(-([\d.]+(?:e-?\d+)?)\)(?! \*)", r"- \1", center)
+    center = re.sub(r"- \(-([\d.]+(?:e-?\d+)?)\)(?! \*)", r"+ \1", center)
     for a, b in (("+ (-1) * ", "- "), ("- (-1) * ", "+ "), ("(-1) * ", "-"), ("+ 1 * ", "+ "),
                  ("- 1 * ", "- "), ("(1 * ", "(")):
         center = center.replace(a, b)
