@@ -926,7 +926,7 @@ def random_feature(rng: random.Random, T: dict, kind: str) -> dict:
 def _spec_anchor(d: Design, f) -> dict:
     """``f`` (a row, a grid, a comb) placed as the spec reads it (docs/import.md, "What an
     edit means"), per axis along which it has a pitch: on the centre line, centred; with an
-    end member nearer its edge than one pitch, by that end from that edge (ties: the low
+    end member nearer its edge than one and a half pitches, by that end from that edge (ties: the low
     one); else by its middle, from the edge nearer it (``f["mid"]``: no span on that axis)."""
     k = f["kind"]
     if k in ("row", "ventrow", "csk"):
@@ -950,7 +950,7 @@ def _spec_anchor(d: Design, f) -> dict:
             continue
         gl, gh = c - full - lo, hi - (c + full)
         names = ("L", "R") if axis == 0 else ("B", "T")
-        if min(gl, gh) < p - 1e-9:
+        if min(gl, gh) < 1.5 * p - 1e-9:       # the inference's SET_END
             f[key] = (names[0], gl) if gl <= gh else (names[1], gh)
         else:
             f["mid"] = tuple(sorted(mid | {axis}))
@@ -964,14 +964,17 @@ def _plain_anchor(d: Design, f) -> dict:
     row, grid or comb placed as the spec reads it (:func:`_spec_anchor`)."""
     if f["kind"] in ("row", "ventrow", "csk", "grid", "comb"):
         return _spec_anchor(d, f)
-    if f["kind"] == "board":        # one set, from the corner nearest its holes' middle
+    if f["kind"] == "board":        # one set, from the reference nearest its holes' middle
         ms = members(f, d.place(f))
         for axis, key, names in ((0, "ax", "LR"), (1, "ay", "BT")):
             m = sum(p[axis] for p in ms) / len(ms)
             lo = d.origin[axis]
             hi = lo + (d.width if axis == 0 else d.height)
             c, sp = d.place(f)[axis], span(f)[axis]
-            f[key] = (names[0], c - sp - lo) if m - lo <= hi - m else (names[1], hi - c - sp)
+            if abs(m - (lo + hi) / 2) <= min(m - lo, hi - m):
+                f[key] = ("C", c - (lo + hi) / 2)
+            else:
+                f[key] = (names[0], c - sp - lo) if m - lo <= hi - m else (names[1], hi - c - sp)
         return f
     keys = [("at", 0 if f["edge"] in "BT" else 1)] if f["kind"] == "notch" else \
         [("ax", 0), ("ay", 1)] if "ax" in f else []

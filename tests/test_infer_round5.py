@@ -116,18 +116,18 @@ def test_a_row_off_the_centre_line_changes_pitch_about_its_centre(tmp_path):
 
 
 def test_a_boards_holes_move_as_one_with_their_nearest_corner(tmp_path):
-    doc, m = _doc(150, 100)
+    doc, m = _doc(150, 160)
     uno = [(14.0, 2.5), (15.3, 50.7), (66.1, 7.6), (66.1, 35.5)]
     for x, y in uno:
-        m.add_circle((70 + x, 10 + y), 1.6)
+        m.add_circle((80 + x, 10 + y), 1.6)
     text = _text(doc)
-    assert "param holes_x = 13.9 mm" in text and "param holes_y = 17.6 mm" in text, text
-    ms = _out(text, tmp_path, width=180, height=120)
-    want = sorted((round(100 + x, 9), round(10 + y, 9)) for x, y in uno)
+    assert "param holes_x = 3.9 mm" in text and "param holes_y = 17.6 mm" in text, text
+    ms = _out(text, tmp_path, width=180, height=190)
+    want = sorted((round(110 + x, 9), round(10 + y, 9)) for x, y in uno)
     assert max(math.dist(a, b) for a, b in zip(_circles(ms), want)) < 1e-9, text
-    ms = _out(text, tmp_path, holes_x=20)           # the set's place, one param
+    ms = _out(text, tmp_path, holes_x=10)           # the set's place, one param
     assert max(math.dist(a, (b[0] - 6.1, b[1])) for a, b in
-               zip(_circles(ms), sorted((70 + x, 10 + y) for x, y in uno))) < 1e-9
+               zip(_circles(ms), sorted((80 + x, 10 + y) for x, y in uno))) < 1e-9
 
 
 def test_a_bolt_circles_first_hole_angle_is_a_param(tmp_path):

@@ -24,6 +24,10 @@ def _add(text: str, d: float) -> str:
 
 
 CENTRE_TOL = 1e-6   # mm: a feature (a span's middle) this near the centre line is on it
+# a row's end member nearer its edge than this many pitches sits at a set distance from it
+# (docs/import.md, "What an edit means": terminals 10 mm in on a 9 mm pitch keep that end;
+# pots 30 mm in on a 20 mm pitch change pitch about their middle)
+SET_END = 1.5
 
 
 def _tied(gaps: dict) -> int:
@@ -175,8 +179,8 @@ class _Anchored:
                pitch: str, step: float | None = None) -> str:
         """Member ``var`` of a row from ``first`` to ``last`` (mm along ``axis``, ``cnt``
         members ``pitch`` apart, ``step`` mm): by the spec (docs/import.md, "What an edit
-        means"), by its end member when that end sits nearer its edge than one ``step`` (the
-        row grows away from the edge), else by its middle placed from the body's nearer
+        means"), by its end member when that end sits nearer its edge than :data:`SET_END`
+        ``step`` (the row grows away from the edge), else by its middle placed from the body's nearer
         edge (a new pitch or count spreads it about its centre).  Without ``step``: from the
         body's edge nearer its end member than the row's middle is to the centre line, by
         that end member; nearer the centre line but not on it, by the end member nearer its
@@ -190,7 +194,7 @@ class _Anchored:
             key = "width" if axis == 0 else "height"
             c, half = sh.center[axis], sh.args[key] / 2
             gl, gh = lo - (c - half), (c + half) - hi
-            if min(gl, gh) >= step - 1e-9:      # no end at a set distance: by its middle
+            if min(gl, gh) >= SET_END * step - 1e-9:    # no end at a set distance: its middle
                 k = f"({var} - ({cnt} - 1) / 2)" if last >= first else \
                     f"(({cnt} - 1) / 2 - {var})"
                 mid = self.at((lo + hi) / 2, axis)

@@ -50,7 +50,7 @@ class _Groups:
     def hole_set(self, depth: int, rest: list, sh: Shape, base: str, sizes: dict) -> None:
         """Holes of one size in no pattern (a board's) as one set placed from the body's
         corner nearest their middle (the spec, docs/import.md: a board's holes move as one
-        with that corner): params ``<set>_x`` and ``<set>_y`` from those edges to the hole
+        with that corner; per axis the centre line when it is nearer): params ``<set>_x`` and ``<set>_y`` from those edges to the hole
         nearest it, the others listed as offsets from that hole."""
         mid = [sum(m.center[k] for m in rest) / len(rest) for k in (0, 1)]
         hn = self.name_near(base + "s", mid)
@@ -62,7 +62,12 @@ class _Groups:
             self.w.emit(depth, "}")
             return
         body = self.anchor[0]
-        sides = [self.nearest(mid[k], mid[k], k) for k in (0, 1)]
+        # per axis the reference nearest their middle: an edge, or the centre line when it
+        # is nearer (a board nearly centred on its plate: its holes are not symmetric)
+        sides = []
+        for k, key in ((0, "width"), (1, "height")):
+            gaps = {s: abs(mid[k] - body.center[k] - s * body.args[key] / 2) for s in (0, -1, 1)}
+            sides.append(min((0, -1, 1), key=lambda s: (round(gaps[s], 9), s != 0, s)))
         # the hole nearest that corner (on a centre line: nearest the centre) is the origin
         corner = [body.center[k] + sides[k] * body.args["width" if k == 0 else "height"] / 2
                   for k in (0, 1)]
@@ -71,7 +76,7 @@ class _Groups:
         for k, word in ((0, "x"), (1, "y")):
             side = sides[k]
             if side == 0:
-                at.append(self.at(ref.center[k], k))
+                at.append(self.from_side(ref.center[k], k, 0))
                 said.append("centre line")
                 continue
             gap = abs(ref.center[k] - corner[k])
@@ -88,8 +93,11 @@ class _Groups:
         # each hole's turn of the loop: its offset (a countersink on some, a label)
         turn = {id(m): (("c.x", p[1:-1].split(", ")[0]), ("c.y", p[1:-1].split(", ")[1]))
                 for m, p in zip(rest, pts)}
-        self.w.emit(depth, f"# {len(rest)} holes in no pattern (a board's): one set, from the "
-                           f"{' '.join(dict.fromkeys(reversed(said)))} corner")
+        edges = [x for x in reversed(said) if x != "centre line"]
+        where = f"the {' '.join(edges)} corner" if len(edges) == 2 else \
+            f"the {edges[0]} edge, about the centre line" if edges else "the centre"
+        self.w.emit(depth, f"# {len(rest)} holes in no pattern (a board's): one set, from "
+                           f"{where}")
         self.w.emit(depth, f"for c in [{offs}] {{")
         self.sunk_as(rest)
         self.hole_block(depth + 1, hn, sh, f"({at[0]} + c.x, {at[1]} + c.y)", sizes,
