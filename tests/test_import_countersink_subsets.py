@@ -42,17 +42,21 @@ def _holes(kind: str, n: int) -> list:
     return [(W / 2 - 35.0, 30.0), (W / 2 + 35.0, 30.0)]        # a mirrored pair
 
 
-def _dxf(centres: list, marked: set) -> bytes:
+def _dxf(centres: list, marked: set = frozenset(), layer: str = "CSK", label=None) -> bytes:
+    """The plate with holes at ``centres`` on HOLES: the ``marked`` ones with a countersink
+    mark on ``layer``, or a text "M3" at ``label`` on it."""
     doc = ezdxf.new("R2010")
     doc.units = 4
     m = doc.modelspace()
-    for ly in ("OUTLINE", "HOLES", "CSK"):
+    for ly in ("OUTLINE", "HOLES", layer):
         doc.layers.add(ly)
     m.add_lwpolyline([(0, 0), (W, 0), (W, H), (0, H)], close=True, dxfattribs={"layer": "OUTLINE"})
     for k, c in enumerate(centres):
         m.add_circle(c, 1.6, dxfattribs={"layer": "HOLES"})
         if k in marked:
-            m.add_circle(c, 3.2, dxfattribs={"layer": "CSK"})
+            m.add_circle(c, 3.2, dxfattribs={"layer": layer})
+    if label is not None:
+        m.add_text("M3", height=3, dxfattribs={"layer": layer, "insert": label})
     s = io.StringIO()
     doc.write(s)
     return s.getvalue().encode()
@@ -96,21 +100,6 @@ def test_marks_follow_their_holes_whatever_subset_is_marked(tmp_path_factory, ca
             assert sorted((round(x, 6), round(y, 6)) for x, y in marks) == want
 
 
-def _label_dxf(centres: list, label) -> bytes:
-    doc = ezdxf.new("R2010")
-    doc.units = 4
-    m = doc.modelspace()
-    for ly in ("OUTLINE", "HOLES", "LABELS"):
-        doc.layers.add(ly)
-    m.add_lwpolyline([(0, 0), (W, 0), (W, H), (0, H)], close=True, dxfattribs={"layer": "OUTLINE"})
-    for c in centres:
-        m.add_circle(c, 1.6, dxfattribs={"layer": "HOLES"})
-    m.add_text("M3", height=3, dxfattribs={"layer": "LABELS", "insert": label})
-    s = io.StringIO()
-    doc.write(s)
-    return s.getvalue().encode()
-
-
 def _label_box(res) -> tuple:
     doc = ezdxf.read(io.StringIO(res.to_dxf()))
     pts = [p[:2] for e in doc.modelspace() if e.dxf.layer == "ENGRAVE" and e.dxftype() == "LWPOLYLINE"
@@ -130,7 +119,8 @@ def test_a_label_beside_a_member_of_a_pattern_follows_it(tmp_path, kind, member,
     moves by exactly the hole's move (ezdxf: the label's outlines and the hole's circle)."""
     centres = _holes(kind, 5)
     c = centres[member]
-    text, _ = import_drawing(_label_dxf(centres, (c[0] + off[0], c[1] + off[1])), "l.dxf", infer=True)
+    text, _ = import_drawing(_dxf(centres, layer="LABELS", label=(c[0] + off[0], c[1] + off[1])),
+                             "l.dxf", infer=True)
     assert all(k in text for k in edit), text
     path = tmp_path / "l.aidl"
     before = aidl_lang.compile(text, path=path)
