@@ -144,9 +144,13 @@ class Statements:
                             self.error(e)
                             if overridden and e.code == "E0124":
                                 # a `--set` past the range: that one error, the file goes
-                                # on with the default (no math error where it is used)
-                                val = default
-                            elif getattr(e, "outside", False):
+                                # on with the default (no math error where it is used);
+                                # the value asked for stays the param's (a form moves it
+                                # back into the range: aidl studio)
+                                fctx.scope.vars[st.name] = default
+                                fctx.params[st.name] = val
+                                continue
+                            if getattr(e, "outside", False):
                                 # past a range that follows other params (`max=d / 2`
                                 # after `--set d=...`): that one error, its uses quiet
                                 fctx.scope.vars[st.name] = POISON
