@@ -721,6 +721,24 @@ def _label_box(d: Design, f):
         box(x, y, x + w, y + h)
 
 
+def _reads_as_tied(d: Design, f) -> bool:
+    """Whether a label tied to the plate sits in line with a hole of a round-five kind
+    (:data:`ROUND5_KINDS`; the kinds before them are drawn as they always were): the spec
+    reads such a label as its hole's (docs/import.md, "What an edit means"), so a design
+    that means otherwise is not drawn."""
+    if not any(g["kind"] in ROUND5_KINDS for g in d.features):
+        return False
+    x, y = d.place(f)
+    for i, g in enumerate(d.features):
+        if g["kind"] in ("label", "notch", "comb"):
+            continue
+        for lp in d.feature_loops(i):
+            _, cx, cy, *_ = signature(lp)
+            if abs(cx - x) <= 1e-9 or abs(cy - y) <= 1e-9:
+                return True
+    return False
+
+
 def _valid(d: Design) -> bool:
     """Every feature well inside the plate, clear of every other, each shape sound."""
     m = 1.5 / d.u
@@ -775,8 +793,8 @@ def _valid(d: Design) -> bool:
             if f["p"] < f["w"] + 2 * m or c - half < lo or c + half > hi or f["depth"] > \
                     (d.height if axis == 0 else d.width) / 3:
                 return False
-        if k == "corners" and f["inset"] * 2 > min(d.width, d.height) / 2:
-            return False
+        if k == "corners" and f["inset"] * 4 >= min(d.width, d.height) - 1e-9:
+            return False        # nearer the edges than the centre lines (a tie: no corner)
         if k == "flange" and (f["pcd"] * math.sin(math.pi / f["n"]) < f["d"] + m
                               or (f.get("bore") and f["bore"] + f["d"] + 2 * m > f["pcd"])):
             return False
@@ -793,6 +811,8 @@ def _valid(d: Design) -> bool:
             if not inner.contains(b):
                 return False
             shapes.append((i, b, True))
+            if "of" not in f and _reads_as_tied(d, f):
+                return False
             continue
         for lp in d.feature_loops(i):
             p = _poly(lp)

@@ -28,6 +28,26 @@ def follows(terms: list) -> str:
     return ", ".join(out)
 
 
+def corner_sets(centres: list, body) -> list[list[int]] | None:
+    """Equal holes that are two or more sets of four at a rectangular body's corners (its
+    mounting holes 5 mm in and its feet 12 mm in): their indices by set, each four about the
+    body's centre at one distance from it and a 2 x 2 grid; else None."""
+    if body is None or body[0].kind == "Circle" or len(centres) < 8 or len(centres) % 4:
+        return None
+    c = body[0].center
+    by: dict = {}
+    for i, p in enumerate(centres):
+        by.setdefault(round(math.dist(p, c), 6), []).append(i)
+    sets = list(by.values())
+    for g in sets:
+        pts = [centres[i] for i in g]
+        if len(g) != 4 or len({round(abs(p[0] - c[0]), 6) for p in pts}) != 1 or \
+                len({round(abs(p[1] - c[1]), 6) for p in pts}) != 1 or \
+                len({(p[0] > c[0], p[1] > c[1]) for p in pts}) != 4:
+            return None
+    return sets if len(sets) > 1 else None
+
+
 class _Groups:
     def at_corners(self, g: list, mid) -> bool:
         """Whether four equal holes about ``mid`` may be read as at the body's corners

@@ -59,7 +59,7 @@ from .naming import _named_parts, _short_names, _summary
 from ..chains.layers import _hole_layers
 from .mirror import mirrored_pair, pair_items, write_pair
 from .sinks import Marks
-from .groups import _Groups, follows
+from .groups import _Groups, corner_sets, follows
 from .rings import _start, rings, start_angle
 from . import turns
 from ..write.program import (_Names, _Writer, _containers, _cut_notes, _emit_holds, _holds,
@@ -375,8 +375,8 @@ class _Part(_Anchored, _MakerFeatures, _Groups):
             self.check(k, "finding the patterns of the holes", every=1)
             r = g[0].args.get("radius", 0.0) if g[0].kind == "Circle" else 0.0
             cs = [sh.center for sh in g]
-            parts = None if _whole(cs, r) else _features(cs, r) or rings(
-                cs, ([body[0].center] if body is not None else []) + self.named.points)
+            parts = None if _whole(cs, r) else corner_sets(cs, body) or _features(cs, r) or \
+                rings(cs, ([body[0].center] if body is not None else []) + self.named.points)
             # equal holes of several features (a grille and a grid): each its own pattern
             for part in parts or [range(len(g))]:
                 sub = [g[i] for i in part]
@@ -549,13 +549,20 @@ class _Part(_Anchored, _MakerFeatures, _Groups):
                 # at the corners: nearer the edges than the centre lines (else a square
                 # or a bolt circle about the centre, placed by it)
                 if math.dist(mid, bsh.center) <= EQUAL_TOL and 0 < ix < W / 4 and 0 < iy < H / 4:
-                    sizes = self.size_params("corner_" + base, sh, True)
+                    # a second set at the corners: corner_2_inset, corner_2_hole_d (a name
+                    # that ends as every inset's and diameter's)
+                    pre, k = "corner", 1
+                    while self.prefix + pre + "_inset" in self.params.used or \
+                            self.prefix + pre + "_inset_x" in self.params.used:
+                        k += 1
+                        pre = f"corner_{k}"
+                    sizes = self.size_params(f"{pre}_{base}", sh, True)
                     if abs(ix - iy) <= ROUND_TOL:
-                        inx = iny = self.p("corner_inset", ix, "from the edges")
+                        inx = iny = self.p(f"{pre}_inset", ix, "from the edges")
                     else:
-                        inx = self.p("corner_inset_x", ix, "from the left and right edges")
-                        iny = self.p("corner_inset_y", iy, "from the top and bottom edges")
-                    hn = self.name(f"corner_{base}s")
+                        inx = self.p(f"{pre}_inset_x", ix, "from the left and right edges")
+                        iny = self.p(f"{pre}_inset_y", iy, "from the top and bottom edges")
+                    hn = self.name(f"{pre}_{base}s")
                     wx, hy = bsizes.get("width"), bsizes.get("height")
                     ex = f"sx * ({wx} / 2 - {inx})" if wx else f"sx * {_r(dx / 2)}"
                     ey = f"sy * ({hy} / 2 - {iny})" if hy else f"sy * {_r(dy / 2)}"
