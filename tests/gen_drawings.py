@@ -793,6 +793,9 @@ def _valid(d: Design) -> bool:
             if f["p"] < f["w"] + 2 * m or c - half < lo or c + half > hi or f["depth"] > \
                     (d.height if axis == 0 else d.width) / 3:
                 return False
+        if k == "board" and any(g is not f and g["kind"] == "board" and g["d"] == f["d"]
+                                for g in d.features):
+            return False        # two boards' holes of one size: one set (no pattern tells)
         if k == "corners" and f["inset"] * 4 >= min(d.width, d.height) - 1e-9:
             return False        # nearer the edges than the centre lines (a tie: no corner)
         if k == "flange" and (f["pcd"] * math.sin(math.pi / f["n"]) < f["d"] + m

@@ -680,7 +680,12 @@ class _Part(_Anchored, _MakerFeatures, _Groups):
             return True
         # no pattern for them all: rows and columns of three or more among them, the rest
         # one by one, one size param for all
-        sizes = self.size_params(base, sh, True)
+        # (one size param named for the holes, `holes_2_d` when `holes` is taken: a name
+        # ending in `_d` as every diameter's)
+        stem = next(t for k in range(1, 10 ** 6) for t in [f"{base}s" + (f"_{k}" if k > 1 else "")]
+                    if t not in self.used and not any(u.startswith(self.prefix + t + "_")
+                                                      for u in self.params.used))
+        sizes = self.size_params(stem, sh, True)
         rest = list(g)
         done: set = set()               # (ids) in rows: left out of `rest` after each axis
         for axis in (1, 0):             # equal y: a row along x; equal x: a column
