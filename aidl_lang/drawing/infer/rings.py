@@ -39,6 +39,11 @@ def rings(centers: list, about: list) -> list[list[int]] | None:
         big = [g for g in groups if len(g) >= 3]
         if big and all((pol := _polar([centers[k] for k in g])) is not None
                        and math.dist(pol[0], c) <= EQUAL_TOL for g in big):
+            # the holes left one or two at a distance: a bolt circle of its own about
+            # another centre when they are evenly round one (a second flange's)
+            small = sorted(k for g in groups if len(g) < 3 for k in g)
+            if len(small) >= 3 and _polar([centers[k] for k in small]) is not None:
+                return [sorted(g) for g in big] + [small]
             return [sorted(g) for g in groups]
     return None
 
