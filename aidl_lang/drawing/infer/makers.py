@@ -96,24 +96,26 @@ class _MakerFeatures(_BoreFeatures):
         step = (mids[-1] - mids[0]) / (n - 1)
         pp = self.p(hn + "_pitch", step, times=n)
         mid = self.run_at(mids[0], mids[-1], along, "i", cnt, pp, step)
+        # the pattern's own sizes (another comb's notches of one size are its own)
+        own = (self.p(hn + "_width", hi - lo), self.p(hn + "_depth", dep))
         self.w.emit(depth, f"# {n} notches in the {side} side, {pp} apart: a pattern of the side")
         self.w.emit(depth, f"for i in range({cnt}) {{")
-        self.edge_notch(depth + 1, group[0], mid, hn)
+        self.edge_notch(depth + 1, group[0], mid, hn, own)
         self.w.emit(depth, "}")
 
     def edge_notch(self, depth: int, cut: tuple, mid: str | None = None,
-                   hn: str | None = None) -> None:
+                   hn: str | None = None, sizes: tuple | None = None) -> None:
         """A notch cut into a side of the body (:func:`~.features.edge_notches`) as a hole
         flush with the side: a Rectangle (square), a Rectangle and a Circle (round bottom) or
         a triangle (V), its width and depth params, placed along the side from the edge or
         centre its near side is tied to (:meth:`span_at`), or at ``mid`` (its centre along
-        the side, a row's member) named ``hn``."""
+        the side, a row's member) named ``hn``, its width and depth ``sizes``."""
         side, shape, lo, hi, dep = cut
         across = 0 if side in ("left", "right") else 1
         along = 1 - across
         sign = 1 if side in ("right", "top") else -1
-        wd, dp = self.kind_params(f"{shape}_notch" if shape != "square" else "notch",
-                                  (("width", hi - lo), ("depth", dep)))
+        wd, dp = sizes or self.kind_params(f"{shape}_notch" if shape != "square" else "notch",
+                                           (("width", hi - lo), ("depth", dep)))
         edge = self.edge(across, sign)
 
         def inward(term: str) -> str:        # the side moved into the part by `term`
