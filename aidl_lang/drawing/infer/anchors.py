@@ -180,11 +180,11 @@ class _Anchored:
         """Member ``var`` of a row from ``first`` to ``last`` (mm along ``axis``, ``cnt``
         members ``pitch`` apart, ``step`` mm): by the spec (docs/import.md, "What an edit
         means"), by its end member when that end sits nearer its edge than :data:`SET_END`
-        ``step`` (the row grows away from the edge), else by its middle placed from the body's nearer
-        edge (a new pitch or count spreads it about its centre).  Without ``step``: from the
-        body's edge nearer its end member than the row's middle is to the centre line, by
-        that end member; nearer the centre line but not on it, by the end member nearer its
-        edge (never by its first member)."""
+        ``step`` (the row grows away from the edge), else by its middle placed from the
+        body's nearer edge (a new pitch or count spreads it about its centre).  Without
+        ``step``: from the body's edge nearer its end member than the row's middle is to the
+        centre line, by that end member; nearer the centre line but not on it, by the end
+        member nearer its edge (never by its first member)."""
         lo, hi = min(first, last), max(first, last)
         if step is not None and self.anchor is not None and self.on_centre((lo + hi) / 2, axis):
             k = f"({var} - ({cnt} - 1) / 2)" if last >= first else f"(({cnt} - 1) / 2 - {var})"

@@ -70,8 +70,9 @@ class _Groups:
     def hole_set(self, depth: int, rest: list, sh: Shape, base: str, sizes: dict) -> None:
         """Holes of one size in no pattern (a board's) as one set placed from the body's
         corner nearest their middle (the spec, docs/import.md: a board's holes move as one
-        with that corner; per axis the centre line when it is nearer): params ``<set>_x`` and ``<set>_y`` from those edges to the hole
-        nearest it, the others listed as offsets from that hole."""
+        with that corner; per axis the centre line when it is nearer): params ``<set>_x``
+        and ``<set>_y`` from those edges to the hole nearest it, the others listed as
+        offsets from that hole."""
         mid = [sum(m.center[k] for m in rest) / len(rest) for k in (0, 1)]
         hn = self.name_near(base + "s", mid)
         if self.anchor is None:

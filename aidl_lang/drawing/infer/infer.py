@@ -593,8 +593,8 @@ class _Part(_Anchored, _MakerFeatures, _Groups):
                 ang = start_angle(self, hn, a0, n, cnt)
                 on_body = self.anchor is not None and \
                     math.dist(C, self.anchor[0].center) <= EQUAL_TOL
-                w.emit(depth, f"# about {self.shared(C) or ('the body' if on_body else 'its')}"
-                              f"{'' if self.shared(C) else ' centre'}, its first hole at {ang.split(' + ')[0]}")
+                about = self.shared(C) or ("the body centre" if on_body else "its centre")
+                w.emit(depth, f"# about {about}, its first hole at {ang.split(' + ')[0]}")
                 w.emit(depth, f"for i in range({cnt}) {{")
                 self.hole_block(depth + 1, hn, sh, f"polar({self.pos(C)}, {pcd} / 2, {ang})",
                                 sizes, turns.polar(C, _start(a0, n), n))

@@ -1,13 +1,13 @@
 """``aidl import --infer``: countersinks and counterbores written with their holes (issue 85,
 "countersink pairs").  A layer of circles named for them (COUNTERSINK, CSK, C-BORE, Spotface:
 :data:`~..chains.layers._SINK_LAYER`) is marked, not cut; a mark concentric with a hole and
-larger than it is the top circle of that hole's countersink.  Each mark is written in its hole's statement -
-its centre the hole's centre as written, its diameter a param (``countersink_d``) - so that
-every edit that moves the holes (the plate's size, an inset, a pitch) moves the marks with
-them; when only some of a pattern's holes are marked (issue 91: three of four corner
-holes), under an ``if`` naming their turns of the loop (:func:`condition`, the turns from
-:mod:`.turns`).  A mark on no hole stays where the drawing puts it, in the layer's
-``drawing``.  Lengths in the drawing's unit; the results are program text.
+larger than it is the top circle of that hole's countersink.  Each mark is written in its
+hole's statement - its centre the hole's centre as written, its diameter a param
+(``countersink_d``) - so that every edit that moves the holes (the plate's size, an inset, a
+pitch) moves the marks with them; when only some of a pattern's holes are marked (issue 91:
+three of four corner holes), under an ``if`` naming their turns of the loop (:func:`condition`,
+the turns from :mod:`.turns`).  A mark on no hole stays where the drawing puts it, in the
+layer's ``drawing``.  Lengths in the drawing's unit; the results are program text.
 """
 from __future__ import annotations
 
