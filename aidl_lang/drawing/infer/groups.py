@@ -28,24 +28,32 @@ def follows(terms: list) -> str:
     return ", ".join(out)
 
 
-def corner_sets(centres: list, body) -> list[list[int]] | None:
+def corner_sets(centres: list, body, rest: bool = False) -> list[list[int]] | None:
     """Equal holes that are two or more sets of four at a rectangular body's corners (its
     mounting holes 5 mm in and its feet 12 mm in): their indices by set, each four about the
-    body's centre at one distance from it and a 2 x 2 grid; else None."""
-    if body is None or body[0].kind == "Circle" or len(centres) < 8 or len(centres) % 4:
+    body's centre at one distance from it, a 2 x 2 grid nearer the edges than the centre
+    lines; else None.  ``rest``: also when other holes are left (a flange's bolt circle of
+    the corner holes' size), the others one group after the sets."""
+    if body is None or body[0].kind == "Circle" or len(centres) < (5 if rest else 8):
         return None
     c = body[0].center
+    W, H = body[0].args.get("width", 0.0), body[0].args.get("height", 0.0)
     by: dict = {}
     for i, p in enumerate(centres):
         by.setdefault(round(math.dist(p, c), 6), []).append(i)
-    sets = list(by.values())
-    for g in sets:
+    sets, others = [], []
+    for g in by.values():
         pts = [centres[i] for i in g]
-        if len(g) != 4 or len({round(abs(p[0] - c[0]), 6) for p in pts}) != 1 or \
-                len({round(abs(p[1] - c[1]), 6) for p in pts}) != 1 or \
-                len({(p[0] > c[0], p[1] > c[1]) for p in pts}) != 4:
-            return None
-    return sets if len(sets) > 1 else None
+        if len(g) == 4 and len({round(abs(p[0] - c[0]), 6) for p in pts}) == 1 and \
+                len({round(abs(p[1] - c[1]), 6) for p in pts}) == 1 and \
+                len({(p[0] > c[0], p[1] > c[1]) for p in pts}) == 4 and \
+                abs(pts[0][0] - c[0]) > W / 4 and abs(pts[0][1] - c[1]) > H / 4:
+            sets.append(g)
+        else:
+            others += g
+    if not sets or (others and not rest) or (not others and len(sets) < 2):
+        return None
+    return sets + ([sorted(others)] if others else [])
 
 
 class _Groups:

@@ -376,7 +376,8 @@ class _Part(_Anchored, _MakerFeatures, _Groups):
             r = g[0].args.get("radius", 0.0) if g[0].kind == "Circle" else 0.0
             cs = [sh.center for sh in g]
             parts = None if _whole(cs, r) else corner_sets(cs, body) or _features(cs, r) or \
-                rings(cs, ([body[0].center] if body is not None else []) + self.named.points)
+                rings(cs, ([body[0].center] if body is not None else []) + self.named.points) \
+                or corner_sets(cs, body, rest=True)
             # equal holes of several features (a grille and a grid): each its own pattern
             for part in parts or [range(len(g))]:
                 sub = [g[i] for i in part]
