@@ -132,6 +132,7 @@ HINTS = {"hole": ("hole",), "slot": ("slot",), "cutout": ("cut", "window", "open
          "plate": ("plate", "body"), "corners": ("corner",), "comb": ("notch",),
          "board": ("holes",), "flange": ("bolt", "circle")}
 UNIT_MM = {"mm": 1.0, "cm": 10.0, "in": 25.4, "inch": 25.4, "m": 1000.0}
+ANGLES = {"a0"}         # design keys that are angles (degrees): not scaled by the unit
 
 
 def program_params(text: str) -> list:
@@ -164,6 +165,10 @@ def find_params(text: str, design, e) -> list:
             if e.kind == "count":
                 if v == now:
                     found.append((name, repr(int(e.new))))
+                break
+            if e.key in ANGLES:             # degrees in any unit of length
+                if abs(v - now * factor) <= 1e-7 * max(1.0, abs(now)):
+                    found.append((name, f"{e.new * factor!r} deg"))
                 break
             want = now * factor * design.u
             if abs(v * mm - want) <= 1e-7 * max(1.0, abs(want)):
