@@ -129,8 +129,10 @@ HINTS = {"hole": ("hole",), "slot": ("slot",), "cutout": ("cut", "window", "open
          "notch": ("notch",), "row": ("row", "holes", "slots"), "grid": ("grid", "holes"),
          "hexgrid": ("hex", "grid", "grille", "holes"), "boltcircle": ("bolt", "circle"),
          "keyhole": ("key",), "csk": ("countersink", "hole"), "dhole": ("d_hole", "dhole", "flat"), "arcslot": ("arc",),
-         "plate": ("plate", "body")}
+         "plate": ("plate", "body"), "corners": ("corner",), "comb": ("notch",),
+         "board": ("holes",), "flange": ("bolt", "circle")}
 UNIT_MM = {"mm": 1.0, "cm": 10.0, "in": 25.4, "inch": 25.4, "m": 1000.0}
+ANGLES = {"a0"}         # design keys that are angles (degrees): not scaled by the unit
 
 
 def program_params(text: str) -> list:
@@ -163,6 +165,10 @@ def find_params(text: str, design, e) -> list:
             if e.kind == "count":
                 if v == now:
                     found.append((name, repr(int(e.new))))
+                break
+            if e.key in ANGLES:             # degrees in any unit of length
+                if abs(v - now * factor) <= 1e-7 * max(1.0, abs(now)):
+                    found.append((name, f"{e.new * factor!r} deg"))
                 break
             want = now * factor * design.u
             if abs(v * mm - want) <= 1e-7 * max(1.0, abs(want)):
@@ -423,9 +429,12 @@ def main(argv=None) -> int:
                     "edit not meant, its program and its edits, into this folder")
     ap.add_argument("--kinds", default="", help="the generated features' kinds: `new` (the "
                     "kinds drawn only when asked: double-D holes, keyways, skewed vent rows, countersunk holes), "
+                    "`round5` (issue 93's: corner holes and slots, combs, board hole sets, "
+                    "flanges at a drawn angle), "
                     "`all`, or names joined by commas (default: the first set, as always)")
     a = ap.parse_args(argv)
-    kinds = {"": gen.KINDS, "new": gen.NEW_KINDS, "all": gen.ALL_KINDS}.get(
+    kinds = {"": gen.KINDS, "new": gen.NEW_KINDS, "round5": gen.ROUND5_KINDS,
+             "all": gen.ALL_KINDS}.get(
         a.kinds, tuple(a.kinds.split(",")))
     if not set(kinds) <= set(gen.ALL_KINDS):
         ap.error(f"--kinds: not a kind: {', '.join(sorted(set(kinds) - set(gen.ALL_KINDS)))}")

@@ -14,14 +14,24 @@ centre: radius, start angle, sweep, width); drawn only when asked (:data:`NEW_KI
 ``ddhole`` (a double-D: two flats ``af`` apart), ``keyway`` (a bore with a key slot: width
 ``kw``, ``depth`` past the bore), ``ventrow`` (a row of slots turned at an angle to it) and
 ``csk`` (a row of ``n`` countersunk holes: each hole ``d`` and the top circle of its countersink,
-``D``, on a CSK layer: marked, not cut; DXF only);
+``D``, on a CSK layer: marked, not cut; DXF only); drawn only when asked too (issue 93,
+:data:`ROUND5_KINDS`), their truths written from the spec (docs/import.md, "What an edit
+means") and not from the inference: ``corners`` (four holes or slots at the plate's corners,
+``inset`` in), ``comb`` (``n`` notches ``p`` apart in one edge, ``w`` wide, ``depth`` deep),
+``board`` (an Arduino Uno's or a sensor's holes, one set from the corner nearest them) and
+``flange`` (a bolt circle whose first hole is at ``a0`` degrees: an edit turns it);
 and ``label`` (a DXF TEXT or MTEXT, an SVG
 ``text``) tied to a feature (it moves with it) or to the plate.
+
+A row, grid or comb is placed as the spec reads it (:func:`_spec_anchor`: by its end
+member when that end sits within one and a half pitches of its edge, else by its middle from
+the nearer edge), whatever anchor it was drawn from.
 
 The design is data (:meth:`Design.edit` changes one number and checks the design still makes
 sense), so the drawing a person meant after an edit is the edited design drawn again.  Its
 geometry, :meth:`Design.loops` (every outline and hole as exact lines and arcs, in mm), is
-the truth; :func:`to_dxf` and :func:`to_svg` export it as real programs do: ezdxf with layers,
+the truth; :func:`to_dxf` and :func:`to_svg` (in gen_io.py, with the readers) export it as
+real programs do: ezdxf with layers,
 blocks and rotated INSERTs, LWPOLYLINEs with bulges or ARC+LINE corners, ``$INSUNITS`` set,
 0 or missing (mm only: a headerless inch drawing is the user's to say); svgwrite with a mm (or
 inch) viewBox, the y axis turned by a transformed group, patterns in nested translated and
@@ -36,13 +46,10 @@ Used by benchmarks/infer_edits.py (the generated set) and tests/test_infer_gener
 from __future__ import annotations
 
 import copy
-import io
 import math
 import random
-import re
 from dataclasses import dataclass, field
 
-import ezdxf
 
 TAU = 2 * math.pi
 INCH = 25.4
@@ -52,7 +59,15 @@ KINDS = ("hole", "slot", "cutout", "notch", "row", "grid", "hexgrid", "boltcircl
 # kinds drawn only when asked (``random_design(pool=ALL_KINDS)``, benchmarks/infer_edits.py
 # --kinds): the drawings of KINDS from a seed stay the ones they were before these were added
 NEW_KINDS = ("ddhole", "keyway", "ventrow", "csk")
-ALL_KINDS = KINDS + NEW_KINDS
+# issue 93 (round five), drawn only when asked (--kinds round5), their truths from the spec
+# (docs/import.md, "What an edit means"): four holes or slots at the corners by their inset,
+# a comb's notches (count, pitch, width, depth), a board's holes (an Arduino's, one set from
+# its nearest corner), a flange's bolt circle at a drawn first-hole angle (an edit turns it)
+ROUND5_KINDS = ("corners", "comb", "board", "flange")
+ALL_KINDS = KINDS + NEW_KINDS + ROUND5_KINDS
+# a board's hole sets (mm, from the set's lower left): an Arduino Uno's, a sensor's
+BOARDS = [[(14.0, 2.5), (15.3, 50.7), (66.1, 7.6), (66.1, 35.5)],
+          [(0.0, 0.0), (20.3, 3.8), (5.1, 17.8)]]
 
 
 # --- exact geometry of lines and arcs --------------------------------------------------------
@@ -232,6 +247,8 @@ class Design:
         if f["kind"] == "label" and "of" in f:
             cx, cy = self.place(self.features[f["of"]])
             return (cx + f["dx"], cy + f["dy"])
+        if "ax" not in f:           # at the corners, a comb: the plate's centre
+            return (self.origin[0] + self.width / 2, self.origin[1] + self.height / 2)
         sx, sy = span(f)
         return (self._axis(f["ax"], sx, 0), self._axis(f["ay"], sy, 1))
 
@@ -244,7 +261,8 @@ class Design:
         kind, c = self.corner
         c = c if kind != "square" else 0.0
         segs = []
-        notches = [f for f in self.features if f["kind"] == "notch"]
+        notches = [f for f in self.features if f["kind"] == "notch"] + \
+            [g for f in self.features if f["kind"] == "comb" for g in self.comb_notches(f)]
         for i in range(4):
             e, n = dirs[i], (-dirs[i][1], dirs[i][0])
             p, q = corners[i], corners[(i + 1) % 4]
@@ -295,11 +313,31 @@ class Design:
                     segs.append(("L", b, (q[0] + c * nxt[0], q[1] + c * nxt[1])))
         return segs
 
+    def comb_notches(self, f) -> list:
+        """A comb's notches as notch features, each placed by its centre (design units)."""
+        axis = 0 if f["edge"] in "BT" else 1
+        c = self._axis(f["at"], span(f)[axis], axis)
+        mid = self.origin[axis] + (self.width if axis == 0 else self.height) / 2
+        return [{"kind": "notch", "edge": f["edge"], "shape": "square", "w": f["w"],
+                 "depth": f["depth"], "at": ("C", c - mid + (i - (f["n"] - 1) / 2) * f["p"])}
+                for i in range(f["n"])]
+
+    def corner_members(self, f) -> list:
+        """The centres of four features at the plate's corners, ``f["inset"]`` in."""
+        x0, y0 = self.origin
+        t = f["inset"]
+        return [(x, y) for x in (x0 + t, x0 + self.width - t) for y in (y0 + t, y0 + self.height - t)]
+
     def feature_loops(self, i: int) -> list:
         """The loops of feature ``i`` (design units): its holes (a notch: none, it is in the
         outline; a label: none)."""
         f = self.features[i]
-        return loops_of(f, self.place(f)) if f["kind"] not in ("notch", "label") else []
+        if f["kind"] == "corners":
+            if f["member"] == "hole":
+                return [circle(c, f["d"] / 2) for c in self.corner_members(f)]
+            return [slot_loop(c, f["length"], f["w"], math.radians(f["angle"]))
+                    for c in self.corner_members(f)]
+        return loops_of(f, self.place(f)) if f["kind"] not in ("notch", "label", "comb") else []
 
     def loops(self) -> list:
         """``[(owner, loop in mm)]``: ``owner`` is ``-1`` for the outline, else the feature's
@@ -343,8 +381,10 @@ class Design:
                               if key not in ("kind", "ax", "ay", "at", "of", "dx", "dy"))
             if k == "label" and "of" in f:
                 where = f"{f['dx']:+g}, {f['dy']:+g} from feature {f['of']}"
-            elif k == "notch":
+            elif k in ("notch", "comb"):
                 where = at(f["at"], 0 if f["edge"] in "BT" else 1)
+            elif k == "corners":
+                where = f"at the corners, {f['inset']:g} in"
             else:
                 where = f"{at(f['ax'], 0)}, {at(f['ay'], 1)}"
             out.append(f"{i}: {k} ({sizes}): {where}")
@@ -403,8 +443,26 @@ class Design:
                     [(r"(countersink_|csk_|sink_)(d|dia|diameter)", 1.0)])
                 add("pitch", "p", "pitch", P)
                 add("count", "n", "count", N)
-            if k == "boltcircle" and f.get("bore"):
+            if k in ("boltcircle", "flange") and f.get("bore"):
                 add("size", "bore", "bore", [(r"(bore_)?(d|diameter)", 1.0)])
+            if k == "corners":
+                if f["member"] == "hole":
+                    add("size", "d", "diameter", D)
+                else:
+                    add("size", "length", "slot length", [(r"length|len|l", 1.0)])
+                add("pitch", "inset", "inset", [(r"inset|margin", 1.0)])
+            if k == "comb":
+                add("size", "w", "notch width", [(r"width|w", 1.0)])
+                add("size", "depth", "notch depth", [(r"depth", 1.0)])
+                add("pitch", "p", "pitch", P)
+                add("count", "n", "count", N)
+            if k == "board":
+                add("size", "d", "diameter", D)
+            if k == "flange":
+                add("size", "d", "diameter", D)
+                add("pitch", "pcd", "pitch circle", [(r"pcd|pitch_d|pitch_circle_d", 1.0)])
+                add("count", "n", "count", N)
+                add("pitch", "a0", "first hole's angle", [(r"angle|start_angle", 1.0)])
             if k in ("row", "grid"):
                 add("pitch", "p" if k == "row" else "px", "pitch", P)
                 add("count", "n" if k == "row" else "nx", "count", N)
@@ -457,8 +515,22 @@ class Edit:
 
 
 def span(f) -> tuple:
-    """Half the span an edge anchor measures to (design units)."""
+    """Half the span an edge anchor measures to (design units): none along an axis the
+    feature is placed by its middle (``f["mid"]``, the spec's rows and grids)."""
+    out = _span(f)
+    mid = f.get("mid", ())
+    return tuple(0.0 if a in mid else v for a, v in enumerate(out))
+
+
+def _span(f) -> tuple:
     k = f["kind"]
+    if k == "board":
+        pts = _board(f)
+        return ((max(p[0] for p in pts) - min(p[0] for p in pts)) / 2,
+                (max(p[1] for p in pts) - min(p[1] for p in pts)) / 2)
+    if k == "comb":
+        s = (f["n"] - 1) * f["p"] / 2
+        return (s, 0.0) if f["edge"] in "BT" else (0.0, s)
     if k == "cutout":
         return f["w"] / 2, f["h"] / 2
     if k in ("row", "ventrow", "csk"):
@@ -543,9 +615,23 @@ def arcslot_loop(c, R, a0, sw, w) -> list:
             ("A", c, R - w / 2, a1, -sw), ("A", e0, w / 2, a0 + math.pi, math.pi)]
 
 
+def _board(f) -> list:
+    """A board's hole set in design units, from its lower left."""
+    return [(x / f["u"], y / f["u"]) for x, y in BOARDS[f["board"]]]
+
+
 def members(f, c) -> list:
     """The centres of a pattern's members (design units)."""
     k = f["kind"]
+    if k == "flange":
+        a0 = math.radians(f["a0"])
+        return [(c[0] + f["pcd"] / 2 * math.cos(a0 + TAU * i / f["n"]),
+                 c[1] + f["pcd"] / 2 * math.sin(a0 + TAU * i / f["n"])) for i in range(f["n"])]
+    if k == "board":
+        pts = _board(f)
+        mx = (max(p[0] for p in pts) + min(p[0] for p in pts)) / 2
+        my = (max(p[1] for p in pts) + min(p[1] for p in pts)) / 2
+        return [(c[0] + x - mx, c[1] + y - my) for x, y in pts]
     if k in ("row", "ventrow", "csk"):
         s = [(i - (f["n"] - 1) / 2) * f["p"] for i in range(f["n"])]
         return [(c[0] + t, c[1]) if f["dir"] == "x" else (c[0], c[1] + t) for t in s]
@@ -603,7 +689,7 @@ def loops_of(f, c) -> list:
         return [slot_loop(m, f["length"], f["w"], math.pi / 2 if f["dir"] == "x" else 0.0)
                 for m in members(f, c)]
     out = [circle(m, f["d"] / 2) for m in members(f, c)]
-    if k == "boltcircle" and f.get("bore"):
+    if k in ("boltcircle", "flange") and f.get("bore"):
         out.append(circle(c, f["bore"] / 2))
     return out
 
@@ -640,6 +726,24 @@ def _label_box(d: Design, f):
     w, h = len(f["text"]) * f["h"] * 0.9, f["h"]
     return box(x - w / 2, y - h / 2, x + w / 2, y + h / 2) if f["align"] == "centre" else \
         box(x, y, x + w, y + h)
+
+
+def _reads_as_tied(d: Design, f) -> bool:
+    """Whether a label tied to the plate sits in line with a hole of a round-five kind
+    (:data:`ROUND5_KINDS`; the kinds before them are drawn as they always were): the spec
+    reads such a label as its hole's (docs/import.md, "What an edit means"), so a design
+    that means otherwise is not drawn."""
+    if not any(g["kind"] in ROUND5_KINDS for g in d.features):
+        return False
+    x, y = d.place(f)
+    for i, g in enumerate(d.features):
+        if g["kind"] in ("label", "notch", "comb"):
+            continue
+        for lp in d.feature_loops(i):
+            _, cx, cy, *_ = signature(lp)
+            if abs(cx - x) <= 1e-9 or abs(cy - y) <= 1e-9:
+                return True
+    return False
 
 
 def _valid(d: Design) -> bool:
@@ -687,6 +791,23 @@ def _valid(d: Design) -> bool:
             return False
         if k == "hexgrid" and (f["p"] < f["d"] + m or len(members(f, (0, 0))) < 3):
             return False
+        if k == "comb":
+            axis = 0 if f["edge"] in "BT" else 1
+            c = d._axis(f["at"], span(f)[axis], axis)
+            lo = d.origin[axis] + (d.corner[1] if d.corner[0] != "square" else 0) + 2 * m
+            hi = d.origin[axis] + (d.width if axis == 0 else d.height) - (lo - d.origin[axis])
+            half = (f["n"] - 1) * f["p"] / 2 + f["w"] / 2
+            if f["p"] < f["w"] + 2 * m or c - half < lo or c + half > hi or f["depth"] > \
+                    (d.height if axis == 0 else d.width) / 3:
+                return False
+        if k == "board" and any(g is not f and g["kind"] == "board" and g["d"] == f["d"]
+                                for g in d.features):
+            return False        # two boards' holes of one size: one set (no pattern tells)
+        if k == "corners" and f["inset"] * 4 >= min(d.width, d.height) - 1e-9:
+            return False        # nearer the edges than the centre lines (a tie: no corner)
+        if k == "flange" and (f["pcd"] * math.sin(math.pi / f["n"]) < f["d"] + m
+                              or (f.get("bore") and f["bore"] + f["d"] + 2 * m > f["pcd"])):
+            return False
     plate = _poly(d.outline())
     if not plate.is_valid:
         return False
@@ -700,6 +821,8 @@ def _valid(d: Design) -> bool:
             if not inner.contains(b):
                 return False
             shapes.append((i, b, True))
+            if "of" not in f and _reads_as_tied(d, f):
+                return False
             continue
         for lp in d.feature_loops(i):
             p = _poly(lp)
@@ -803,15 +926,86 @@ def random_feature(rng: random.Random, T: dict, kind: str) -> dict:
     elif kind == "csk":
         f.update(dir=rng.choice("xy"), n=rng.randint(2, 4), p=rng.choice(T["pitch"]), d=d,
                  D=round(d * rng.choice([1.6, 2.0, 2.2]), 4))
+    elif kind == "corners":
+        f = {"kind": kind, "member": rng.choice(["hole", "hole", "slot"]), "d": d,
+             "inset": rng.choice(T["off"][1:])}
+        if f["member"] == "slot":
+            f.update(w=d, length=d + rng.choice(T["pitch"][:3]), angle=rng.choice([0, 90]))
+            del f["d"]
+    elif kind == "comb":
+        f = {"kind": kind, "edge": rng.choice("BRTL"), "n": rng.randint(3, 8),
+             "p": rng.choice(T["pitch"][:4]), "w": rng.choice(T["pitch"][:2]) / 2}
+        f["depth"] = f["w"] * rng.choice([2, 3, 4])
+        f["at"] = _anchor(rng, T, 0 if f["edge"] in "BT" else 1)
+    elif kind == "board":
+        f.update(board=rng.randrange(len(BOARDS)), d=rng.choice(T["d"][2:6]),
+                 u=INCH if T is IN else 1.0)
+        f["ax"] = (rng.choice("LR"), rng.choice(T["off"]))
+        f["ay"] = (rng.choice("BT"), rng.choice(T["off"]))
+    elif kind == "flange":
+        f.update(n=rng.choice([3, 4, 5, 6, 8]), d=d, pcd=rng.choice(T["big"]) * 2,
+                 bore=rng.choice([0, rng.choice(T["big"])]))
+        # a first hole at a drawn angle none of the x axis, the top or straddling it
+        f["a0"] = rng.choice([15, 20, 25, 35, 40]) % (360 / f["n"])
     elif kind == "arcslot":
         f.update(R=rng.choice(T["big"]), w=rng.choice(T["d"][:4]), a0=rng.choice([0, 30, 45, 200]),
                  sweep=rng.choice([45, 60, 90]))
     return f
 
 
+def _spec_anchor(d: Design, f) -> dict:
+    """``f`` (a row, a grid, a comb) placed as the spec reads it (docs/import.md, "What an
+    edit means"), per axis along which it has a pitch: on the centre line, centred; with an
+    end member nearer its edge than one and a half pitches, by that end from that edge (ties: the low
+    one); else by its middle, from the edge nearer it (``f["mid"]``: no span on that axis)."""
+    k = f["kind"]
+    if k in ("row", "ventrow", "csk"):
+        axes = [(0 if f["dir"] == "x" else 1, f["p"], "ax" if f["dir"] == "x" else "ay")]
+    elif k == "grid":
+        axes = [(0, f["px"], "ax"), (1, f["py"] or f["px"], "ay")]
+    elif k == "comb":
+        axes = [(0 if f["edge"] in "BT" else 1, f["p"], "at")]
+    else:
+        return f
+    for axis, p, key in axes:
+        sp = span(f)[axis]
+        c = d._axis(f[key], sp, axis)
+        lo = d.origin[axis]
+        hi = lo + (d.width if axis == 0 else d.height)
+        mid = set(f.get("mid", ())) - {axis}
+        f["mid"] = tuple(sorted(mid))
+        full = _span(f)[axis]
+        if abs(c - (lo + hi) / 2) < 1e-9:
+            f[key] = ("C", 0.0)
+            continue
+        gl, gh = c - full - lo, hi - (c + full)
+        names = ("L", "R") if axis == 0 else ("B", "T")
+        if min(gl, gh) < 1.5 * p - 1e-9:       # the inference's SET_END
+            f[key] = (names[0], gl) if gl <= gh else (names[1], gh)
+        else:
+            f["mid"] = tuple(sorted(mid | {axis}))
+            f[key] = (names[0], c - lo) if c - lo <= hi - c else (names[1], hi - c)
+    return f
+
+
 def _plain_anchor(d: Design, f) -> dict:
     """``f`` with an edge anchor that puts it on the plate's centre line said as centred: as
-    far from both edges, a maker means the centre (the design must not be ambiguous)."""
+    far from both edges, a maker means the centre (the design must not be ambiguous); a
+    row, grid or comb placed as the spec reads it (:func:`_spec_anchor`)."""
+    if f["kind"] in ("row", "ventrow", "csk", "grid", "comb"):
+        return _spec_anchor(d, f)
+    if f["kind"] == "board":        # one set, from the reference nearest its holes' middle
+        ms = members(f, d.place(f))
+        for axis, key, names in ((0, "ax", "LR"), (1, "ay", "BT")):
+            m = sum(p[axis] for p in ms) / len(ms)
+            lo = d.origin[axis]
+            hi = lo + (d.width if axis == 0 else d.height)
+            c, sp = d.place(f)[axis], span(f)[axis]
+            if abs(m - (lo + hi) / 2) <= min(m - lo, hi - m):
+                f[key] = ("C", c - (lo + hi) / 2)
+            else:
+                f[key] = (names[0], c - sp - lo) if m - lo <= hi - m else (names[1], hi - c - sp)
+        return f
     keys = [("at", 0 if f["edge"] in "BT" else 1)] if f["kind"] == "notch" else \
         [("ax", 0), ("ay", 1)] if "ax" in f else []
     for key, axis in keys:
@@ -908,244 +1102,7 @@ def random_edit(rng: random.Random, d: Design, e: Edit) -> Design | None:
     return None
 
 
-# --- export ----------------------------------------------------------------------------------------
+# --- export and the independent readers: gen_io.py (this module's size) ----------------------------
 
-
-def _bulges(loop) -> list:
-    """``(x, y, bulge)`` vertices of a loop for an LWPOLYLINE (arcs of at most 180 degrees
-    each: bigger ones split in two)."""
-    out = []
-    for g in loop:
-        if g[0] == "L":
-            out.append((g[1][0], g[1][1], 0.0))
-            continue
-        _, c, r, a, sw = g
-        k = 1 if abs(sw) <= math.pi + 1e-12 else 2
-        for j in range(k):
-            t = a + sw * j / k
-            out.append((c[0] + r * math.cos(t), c[1] + r * math.sin(t), math.tan(sw / k / 4)))
-    return out
-
-
-def _dxf_loop(m, loop, att, bulges: bool):
-    if len(loop) == 1 and loop[0][0] == "A" and abs(loop[0][4]) >= TAU - 1e-12:
-        m.add_circle(loop[0][1], loop[0][2], dxfattribs=att)
-        return
-    if bulges:
-        m.add_lwpolyline(_bulges(loop), format="xyb", close=True, dxfattribs=att)
-        return
-    for g in loop:
-        if g[0] == "L":
-            m.add_line(g[1], g[2], dxfattribs=att)
-        else:
-            _, c, r, a, sw = g
-            a0, a1 = (a, a + sw) if sw > 0 else (a + sw, a)
-            m.add_arc(c, r, math.degrees(a0), math.degrees(a1), dxfattribs=att)
-
-
-def _local_loops(f) -> list | None:
-    """A pattern's one member at the origin, for a block (``None``: not drawn by blocks)."""
-    k = f["kind"]
-    if k in ("grid", "hexgrid", "boltcircle") or (k == "row" and f["member"] == "hole"):
-        return [circle((0.0, 0.0), f["d"] / 2)]
-    if k in ("row", "ventrow"):
-        return [slot_loop((0.0, 0.0), f["length"], f["w"], 0.0)]
-    return None
-
-
-def to_dxf(d: Design) -> bytes:
-    """The design as a DXF, the way ``d.style`` says (see the module doc)."""
-    st = d.style
-    doc = ezdxf.new("R2010")
-    if st.get("insunits", True):
-        doc.units = 1 if d.units == "in" else 4
-    elif st.get("insunits") is None:
-        del doc.header["$INSUNITS"]         # no header variable at all
-    else:
-        doc.units = 0                       # "unitless"
-    lay = st.get("layers") or ("0", "0", "0")
-    for name in set(lay) - {"0"}:
-        doc.layers.add(name)
-    m = doc.modelspace()
-    bul = st.get("bulges", True)
-    _dxf_loop(m, d.outline(), {"layer": lay[0]}, bul)
-    nb = 0
-    for i, f in enumerate(d.features):
-        if f["kind"] in ("notch", "label"):
-            continue
-        local = _local_loops(f) if st.get("blocks") else None
-        if local is None:
-            for lp in d.feature_loops(i):
-                _dxf_loop(m, lp, {"layer": lay[1]}, bul)
-            continue
-        nb += 1
-        blk = doc.blocks.new(f"P{nb}")
-        for lp in local:
-            _dxf_loop(blk, lp, {"layer": "0"}, bul)
-        c = d.place(f)
-        rot = 90.0 if f["kind"] == "row" and f["member"] == "slot" and f["dir"] == "x" else \
-            float(f["angle"]) if f["kind"] == "ventrow" else 0.0
-        for p in members(f, c):
-            m.add_blockref(blk.name, p, dxfattribs={"layer": lay[1], "rotation": rot})
-        if f["kind"] == "boltcircle" and f.get("bore"):
-            m.add_circle(c, f["bore"] / 2, dxfattribs={"layer": lay[1]})
-    if d.marks():
-        doc.layers.add("CSK")
-    for c, r in d.marks():
-        m.add_circle(c, r, dxfattribs={"layer": "CSK"})
-    for _, text, (x, y), h, typ, align in d.labels():
-        if typ == "TEXT":
-            t = m.add_text(text, height=h, dxfattribs={"layer": lay[2]})
-            t.set_placement((x, y), align=ezdxf.enums.TextEntityAlignment.MIDDLE_CENTER
-                            if align == "centre" else ezdxf.enums.TextEntityAlignment.LEFT)
-        else:
-            m.add_mtext(text, dxfattribs={"layer": lay[2], "char_height": h, "insert": (x, y),
-                                          "attachment_point": 5 if align == "centre" else 7})
-    s = io.StringIO()
-    doc.write(s)
-    return s.getvalue().encode()
-
-
-def _path_d(loop) -> str:
-    x, y = seg_ends(loop[0])[0]
-    out = [f"M {x!r} {y!r}"]
-    for g in loop:
-        if g[0] == "L":
-            out.append(f"L {g[2][0]!r} {g[2][1]!r}")
-            continue
-        _, c, r, a, sw = g
-        k = 1 if abs(sw) < math.pi - 1e-9 else (2 if abs(sw) <= TAU - 1e-9 else 4)
-        for j in range(1, k + 1):
-            t = a + sw * j / k
-            px, py = c[0] + r * math.cos(t), c[1] + r * math.sin(t)
-            out.append(f"A {r!r} {r!r} 0 0 {1 if sw > 0 else 0} {px!r} {py!r}")
-    return " ".join(out) + " Z"
-
-
-def to_svg(d: Design) -> bytes:
-    """The design as an SVG: a viewBox in the design's unit, the y axis turned by a group's
-    ``matrix(1 0 0 -1 ...)``, patterns as groups translated to their centre (a row of slots
-    turned by ``rotate(90)``), texts in a y-down group."""
-    import svgwrite
-    x0, y0 = d.origin
-    W, H = d.width, d.height
-    u = "in" if d.units == "in" else "mm"
-    dw = svgwrite.Drawing(size=(f"{W!r}{u}", f"{H!r}{u}"), viewBox=f"0 0 {W!r} {H!r}",
-                          profile="full", debug=False)
-    style = {"fill": "none", "stroke": "black", "stroke_width": 0.1 if u == "mm" else 0.004}
-    flip = dw.g(transform=f"matrix(1 0 0 -1 {-x0!r} {H + y0!r})", id="drawing")
-    dw.add(flip)
-    flip.add(dw.path(d=_path_d(d.outline()), **style))
-    for i, f in enumerate(d.features):
-        if f["kind"] in ("notch", "label"):
-            continue
-        c = d.place(f)
-        local = _local_loops(f) if d.style.get("blocks") else None
-        if local is None:
-            for lp in d.feature_loops(i):
-                if len(lp) == 1 and abs(lp[0][4]) >= TAU - 1e-12:
-                    flip.add(dw.circle(center=lp[0][1], r=lp[0][2], **style))
-                else:
-                    flip.add(dw.path(d=_path_d(lp), **style))
-            continue
-        g = dw.g(transform=f"translate({c[0]!r} {c[1]!r})")
-        flip.add(g)
-        rot = 90 if f["kind"] == "row" and f["member"] == "slot" and f["dir"] == "x" else \
-            f["angle"] if f["kind"] == "ventrow" else 0
-        for p in members(f, c):
-            q = dw.g(transform=f"translate({p[0] - c[0]!r} {p[1] - c[1]!r})"
-                     + (f" rotate({rot})" if rot else ""))
-            g.add(q)
-            for lp in local:
-                if len(lp) == 1:
-                    q.add(dw.circle(center=(0, 0), r=lp[0][2], **style))
-                else:
-                    q.add(dw.path(d=_path_d(lp), **style))
-        if f["kind"] == "boltcircle" and f.get("bore"):
-            flip.add(dw.circle(center=c, r=f["bore"] / 2, **style))
-    texts = dw.g(id="labels")
-    dw.add(texts)
-    for _, text, (x, y), h, typ, align in d.labels():
-        sx, sy = x - x0, H - (y - y0)
-        t = dw.text(text, insert=(sx, sy), font_size=h / 0.7, fill="black")
-        t["text-anchor"] = "middle" if align == "centre" else "start"
-        if align == "centre":
-            t["dominant-baseline"] = "middle"
-        texts.add(t)
-    return dw.tostring().encode()
-
-
-def export(d: Design) -> tuple[str, bytes]:
-    """``(file name suffix, bytes)`` of the design in its style's format."""
-    if d.style.get("format") == "svg":
-        return ".svg", to_svg(d)
-    return ".dxf", to_dxf(d)
-
-
-# --- independent readers -------------------------------------------------------------------------
-
-
-def _dxf_segments(e, out, texts):
-    t = e.dxftype()
-    if t == "INSERT":
-        for v in e.virtual_entities():
-            _dxf_segments(v, out, texts)
-    elif t in ("LWPOLYLINE", "POLYLINE"):
-        for v in e.virtual_entities():
-            _dxf_segments(v, out, texts)
-    elif t == "LINE":
-        out.append((e.dxf.layer, ("L", (e.dxf.start.x, e.dxf.start.y), (e.dxf.end.x, e.dxf.end.y))))
-    elif t == "ARC":
-        a0, a1 = math.radians(e.dxf.start_angle), math.radians(e.dxf.end_angle)
-        out.append((e.dxf.layer, ("A", (e.dxf.center.x, e.dxf.center.y), e.dxf.radius, a0,
-                                  (a1 - a0) % TAU or TAU)))
-    elif t == "CIRCLE":
-        out.append((e.dxf.layer, ("A", (e.dxf.center.x, e.dxf.center.y), e.dxf.radius, 0.0, TAU)))
-    elif t in ("TEXT", "MTEXT"):
-        texts.append(e)
-
-
-def read_dxf(data, scale: float = 1.0) -> tuple[dict, list]:
-    """``({layer: [loops]}, [TEXT/MTEXT entities])`` of a DXF read by ezdxf alone: blocks
-    placed with ezdxf's ``virtual_entities``, polylines exploded, pieces chained (each loop
-    scaled by ``scale``)."""
-    if isinstance(data, bytes):
-        data = data.decode()
-    doc = ezdxf.read(io.StringIO(data))
-    segs, texts = [], []
-    for e in doc.modelspace():
-        _dxf_segments(e, segs, texts)
-    out = {}
-    for layer in {s[0] for s in segs}:
-        loops, open_ = chain([s for lay, s in segs if lay == layer])
-        out[layer] = [scaled(lp, scale) for lp in loops] + [("open", o) for o in open_]
-    return out, texts
-
-
-def read_svg(data: bytes) -> tuple[list, list]:
-    """``(loops in mm, [(text, x, y)])`` of an SVG read by svgelements alone (its root's
-    ``width`` in mm or inches over svgelements' pixels; y turned up)."""
-    import svgelements as se
-    svg = se.SVG.parse(io.BytesIO(data))
-    # svgelements takes 1 mm as 3.7795296 px (rounded): the root's own width says the scale
-    m = re.search(rb'<svg[^>]*?\swidth="([\d.e+-]+)(mm|in)"', data)
-    k = float(m.group(1)) * (INCH if m.group(2) == b"in" else 1.0) / svg.width
-    segs, texts = [], []
-
-    def pt(p):
-        return (p.x * k, -p.y * k)
-    for el in svg.elements():
-        if isinstance(el, se.Text):
-            texts.append((el.text, el.x * k, -el.y * k))
-            continue
-        if not isinstance(el, se.Shape):
-            continue
-        for s in se.Path(el).segments():
-            if isinstance(s, se.Line):
-                segs.append(("L", pt(s.start), pt(s.end)))
-            elif isinstance(s, se.Arc):
-                c, a = pt(s.center), pt(s.start)
-                segs.append(("A", c, math.dist(c, a), math.atan2(a[1] - c[1], a[0] - c[0]),
-                             -s.sweep))
-    loops, open_ = chain(segs)
-    return loops, texts
+from gen_io import (_bulges, _dxf_loop, _dxf_segments, _local_loops, _path_d,  # noqa: E402,F401
+                    export, read_dxf, read_svg, to_dxf, to_svg)

@@ -235,7 +235,9 @@ def notch_at_chamfer(path, w: float = 15.0) -> None:
 
 def grille_and_grid(path, px: float = 10.0) -> None:
     """A plate 100 x 50 with a staggered grille (rows of 4, 3, 4, pitch 8, about (0, 10) from
-    the plate's centre) and a 5 x 2 grid of pitches ``px`` and 8 near its bottom, all holes
+    the plate's centre) and a 5 x 2 grid of pitches ``px`` and 8 near its bottom, about
+    x = 65 (its right end 15 mm from the edge at ``px`` 10: one and a half pitches, no set
+    end, so a new pitch keeps its middle: docs/import.md, "What an edit means"), all holes
     4.5 mm."""
     doc, m = _doc(100.0, 50.0)
     dy = 8 * math.sqrt(3) / 2
@@ -245,7 +247,7 @@ def grille_and_grid(path, px: float = 10.0) -> None:
             m.add_circle((50 + (i - (n - 1) / 2) * 8, 35 + (j - 1) * dy), 2.25)
     for i in range(5):
         for j in range(2):
-            m.add_circle((85 - (4 - i) * px, 5 + j * 8), 2.25)
+            m.add_circle((65 + (i - 2) * px, 5 + j * 8), 2.25)
     doc.saveas(path)
 
 

@@ -153,3 +153,40 @@ def test_a_notch_within_two_chamfers_of_a_corner_keeps_the_drawing(tmp_path):
     assert res.ok
     (tmp_path / "back.dxf").write_text(res.to_dxf())
     assert _same(tmp_path / "n.dxf", tmp_path / "back.dxf") == ([], []), text
+
+
+@pytest.mark.parametrize("edit, names", [
+    ({"d_hole_flat": 5.5}, "`d_hole_flat`"),            # past the radius (5 mm)
+    ({"d_hole_d": 6}, "`d_hole_flat`"),                 # the radius under the flat (4 mm)
+])
+def test_a_d_holes_flat_past_its_radius_is_one_error_naming_its_range(tmp_path, edit, names):
+    """Issue 91: an inferred D-hole whose flat was set past the radius gave "math domain
+    error" and a cascade of "unknown name `t`" (the import wrote no `max` for the flat).  Now
+    the flat's param has its range (`min=0 mm, max=d_hole_d / 2`) and an assert short of
+    the radius: one located error naming the param and the range, nothing else."""
+    draw(tmp_path / "d.dxf", "d_hole", {"d": 10.0, "flat": 4.0})
+    text, _ = import_drawing((tmp_path / "d.dxf").read_bytes(), "d.dxf", infer=True)
+    assert "param d_hole_flat = 4 mm, min=0 mm, max=d_hole_d / 2" in text, text
+    assert "assert d_hole_flat < d_hole_d / 2" in text, text
+    assert aidl_lang.compile(text, path=tmp_path / "d.aidl").ok
+    res = aidl_lang.compile(text, path=tmp_path / "d.aidl", overrides=edit)
+    errs = [d for d in res.diagnostics if d.severity == "error"]
+    assert [d.code for d in errs] == ["E0124"], [str(d) for d in errs]
+    assert names in errs[0].message and "0 mm .. " in errs[0].message
+    assert errs[0].span is not None and errs[0].span.line > 1
+
+
+def test_a_math_domain_error_is_located_at_its_call_and_says_nothing_more(tmp_path):
+    """`t = acos(x)` with x past 1 (a hand-written D-hole) was "math error: math domain
+    error" at the statement and "unknown name `t`" at each use: now one error at the call,
+    with the value it was given."""
+    src = ("units mm\nparam d = 10 mm\nparam flat = 6 mm\nsolid p {\n"
+           "    body = Rectangle(center=(0, 0), width=40, height=30)\n    Fixed(body)\n"
+           "    hole h {\n        t = acos(2 * flat / d)\n"
+           "        e0 = Arc(center=(0, 0), start=polar((0, 0), d / 2, t), end=polar((0, 0), d / 2, -t))\n"
+           "        e1 = Line(start=e0.end, end=e0.start)\n    }\n    Fixed(h.e0)\n}\n")
+    res = aidl_lang.compile(src, path=tmp_path / "m.aidl")
+    errs = [d for d in res.diagnostics if d.severity == "error"]
+    assert len(errs) == 1, [str(d) for d in errs]
+    assert errs[0].code == "E0112" and "`acos` of 1.2: outside -1 .. 1" in errs[0].message
+    assert (errs[0].span.line, errs[0].span.col) == (8, 13)

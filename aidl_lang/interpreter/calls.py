@@ -791,6 +791,12 @@ class Calls:
             return Q(func(nm, q[0].expr), NUM, q[0].owners)
         if nm in ("asin", "acos", "atan"):
             self._dimless(q[0], nm, sp)
+            c = q[0].const()
+            if nm != "atan" and c is not None and abs(c) > 1 + 1e-12:
+                raise EvalError("E0112", f"`{nm}` of {_fmt_num(c)}: outside -1 .. 1", sp,
+                                hint="the value it is given comes from params set past what "
+                                     "they allow: keep it within -1 .. 1 (a ratio of a length "
+                                     "to a larger one)")
             return Q(func(nm, q[0].expr), ANG, q[0].owners)
         if nm == "atan2":
             a, b, _ = self._unify(q[0], q[1], sp)

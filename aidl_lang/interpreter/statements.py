@@ -127,7 +127,7 @@ class Statements:
                 elif isinstance(st, A.ParamDecl):
                     fctx.params[st.name] = None
                     overridden = st.name in self.overrides and is_main
-                    val = self.eval(st.value)
+                    val = default = self.eval(st.value)
                     if overridden:
                         try:
                             val = self._eval_override(st.name, self.overrides[st.name], fctx,
@@ -142,6 +142,20 @@ class Statements:
                             self._param_range(st, val, overridden, fctx.param_ranges)
                         except EvalError as e:
                             self.error(e)
+                            if overridden and e.code == "E0124":
+                                # a `--set` past the range: that one error, the file goes
+                                # on with the default (no math error where it is used);
+                                # the value asked for stays the param's (a form moves it
+                                # back into the range: aidl studio)
+                                fctx.scope.vars[st.name] = default
+                                fctx.params[st.name] = val
+                                continue
+                            if getattr(e, "outside", False):
+                                # past a range that follows other params (`max=d / 2`
+                                # after `--set d=...`): that one error, its uses quiet
+                                fctx.scope.vars[st.name] = POISON
+                                fctx.params[st.name] = val
+                                continue
                     fctx.scope.vars[st.name] = val
                     fctx.params[st.name] = val
             except EvalError as e:
@@ -209,8 +223,10 @@ class Statements:
                 raise EvalError("E0124", f"`--set {st.name}={self.overrides[st.name]}`: {shown} is "
                                 f"outside the range {rng} declared for `{st.name}`", opt[bad].span,
                                 hint=f"choose a value from {rng}, or widen the range here")
-            raise EvalError("E0124", f"param `{st.name}` = {shown} is outside its own range {rng}",
+            err = EvalError("E0124", f"param `{st.name}` = {shown} is outside its own range {rng}",
                             st.value.span, hint=f"change the value or `{bad}`")
+            err.outside = True          # its uses say nothing more (the value is not meant)
+            raise err
         return out
 
     def _eval_override(self, name: str, text: str, fctx: FileCtx, default=None):
@@ -364,7 +380,8 @@ class Statements:
     def _stmt_failed(self, st, ex: Exception) -> None:
         """What a statement that raised ``ex`` (one of ``_STMT_ERRORS``) reports: nothing
         for a name whose definition already failed, the error itself, a math error (E0112)
-        or too deep an expression (E0302); the statement is skipped."""
+        or too deep an expression (E0302); the statement is skipped, and the name it would
+        have defined poisoned (its uses say nothing more)."""
         # later uses of the names it defines stay quiet (issue 95: a name left unbound by a
         # failed or skipped definition was "unknown name" at each use, a cascade)
         if isinstance(st, A.Assign):
@@ -375,8 +392,8 @@ class Statements:
             for name in _definition_lines([st]):
                 self.scope.vars.setdefault(name, POISON)
         if isinstance(ex, _Silent):
-            return
-        if isinstance(ex, EvalError):
+            pass
+        elif isinstance(ex, EvalError):
             self.error(ex)
         elif isinstance(ex, (ValueError, ZeroDivisionError, OverflowError)):
             self.error(EvalError("E0112", f"math error: {ex}", st.span,

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from .params import _center, _plus, _r
 from .shapes import ROUND_TOL, Shape
+from .turns import at_turn
 
 
 def _add(text: str, d: float) -> str:
@@ -23,6 +24,10 @@ def _add(text: str, d: float) -> str:
 
 
 CENTRE_TOL = 1e-6   # mm: a feature (a span's middle) this near the centre line is on it
+# a row's end member nearer its edge than this many pitches sits at a set distance from it
+# (docs/import.md, "What an edit means": terminals 10 mm in on a 9 mm pitch keep that end;
+# pots 30 mm in on a 20 mm pitch change pitch about their middle)
+SET_END = 1.5
 
 
 def _tied(gaps: dict) -> int:
@@ -39,7 +44,9 @@ class _Anchored:
     """The placing half of :class:`~.infer._Part`: needs ``anchor`` (the body Shape and its
     size params, or None), ``frame`` (per axis what stays: -1, 0, 1), ``shift`` (terms added
     to every position, or None), ``named`` / ``named_as`` (shared centres), ``shared`` and
-    ``written`` (``{centre: (x text, y text)}``, :meth:`write_at`)."""
+    ``written`` (``{centre: (x text, y text)}``, :meth:`write_at`) and ``looped`` (the
+    patterns written, ``(members, centre text, index)``: :meth:`written_at` places a label
+    by its member's turn, :func:`~.turns.at_turn`)."""
 
     def plus(self, v: float, term: str, axis: int = 0) -> str:
         if self.shift is not None and self.shift[axis]:
@@ -123,7 +130,17 @@ class _Anchored:
         ``base``: that feature's place as written plus the offset (a label under a cut-out
         moves with its centre when its width changes, :meth:`write_at`), else placed from
         the body's reference ``base`` is tied to (:meth:`at`)."""
-        got = self.written.get((round(base[0], 9), round(base[1], 9)))
+        key = (round(base[0], 9), round(base[1], 9))
+        got = self.written.get(key)
+        if got is None and self.looped:         # a member of a pattern: its turn's place
+            for members, center, index in self.looped:
+                for m in members:
+                    self.written.setdefault((round(m.center[0], 9), round(m.center[1], 9)),
+                                            (center, index(m)))
+            self.looped = []
+            got = self.written.get(key)
+        if got is not None and isinstance(got[1], tuple):
+            got = self.written[key] = at_turn(*got)
         if got is None:
             return self.at(v, axis, ref=base[axis])
         return _add(got[axis], v - base[axis])
@@ -159,14 +176,32 @@ class _Anchored:
         return _add(head, -side * gap)
 
     def run_at(self, first: float, last: float, axis: int, var: str, cnt: str,
-               pitch: str) -> str:
+               pitch: str, step: float | None = None) -> str:
         """Member ``var`` of a row from ``first`` to ``last`` (mm along ``axis``, ``cnt``
-        members ``pitch`` apart): from the body's edge nearer its end member than the row's
-        middle is to the centre line, by that end member (the right end of a row tied to the
-        right edge stays when the pitch or count changes); nearer the centre line but not on
-        it, by the end member nearer its edge (never by its first member)."""
+        members ``pitch`` apart, ``step`` mm): by the spec (docs/import.md, "What an edit
+        means"), by its end member when that end sits nearer its edge than :data:`SET_END`
+        ``step`` (the row grows away from the edge), else by its middle placed from the
+        body's nearer edge (a new pitch or count spreads it about its centre).  Without
+        ``step``: from the body's edge nearer its end member than the row's middle is to the
+        centre line, by that end member; nearer the centre line but not on it, by the end
+        member nearer its edge (never by its first member)."""
         lo, hi = min(first, last), max(first, last)
-        side = self.nearest(lo, hi, axis)
+        if step is not None and self.anchor is not None and self.on_centre((lo + hi) / 2, axis):
+            k = f"({var} - ({cnt} - 1) / 2)" if last >= first else f"(({cnt} - 1) / 2 - {var})"
+            return self.from_body_centre(axis, f"{k} * {pitch}", (lo + hi) / 2)
+        if step is not None and self.anchor is not None:
+            sh = self.anchor[0]
+            key = "width" if axis == 0 else "height"
+            c, half = sh.center[axis], sh.args[key] / 2
+            gl, gh = lo - (c - half), (c + half) - hi
+            if min(gl, gh) >= SET_END * step - 1e-9:    # no end at a set distance: its middle
+                k = f"({var} - ({cnt} - 1) / 2)" if last >= first else \
+                    f"(({cnt} - 1) / 2 - {var})"
+                mid = self.at((lo + hi) / 2, axis)
+                return f"{k} * {pitch}" if mid == "0" else f"{mid} + {k} * {pitch}"
+            side = -1 if gl <= gh else 1
+        else:
+            side = self.nearest(lo, hi, axis)
         if side == 0 and self.anchor is not None:
             # off the centre line (a centred run is written by its middle before this):
             # by the end nearer its edge, never by its first member

@@ -99,6 +99,9 @@ class _BoreFeatures:
         if got is not None:
             c, d, af, ang = got
             D, F = self.kind_params("ddhole", (("d", d), ("flat", af)))
+            if F[0].isalpha():            # the flats cut the circle: closer than its diameter
+                self.params.bound(F, "0 mm", D, "the flats cut the circle: closer together "
+                                                "than its diameter")
             turn = f"{_deg(ang)} " if abs(ang) > 1e-15 else ""
 
             def at(term: str) -> str:        # an angle `term` from the flats' normal

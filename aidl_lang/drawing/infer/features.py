@@ -200,3 +200,24 @@ def _notch(run: list, sides: dict, side_of) -> tuple | None:
         depth = abs(apex[ax] - v)
         return (side, "V", lo, hi, depth) if depth > EQUAL_TOL else None
     return None
+
+
+def notch_rows(cuts: list) -> list[list]:
+    """The notches of :func:`edge_notches` (``(side, shape, lo, hi, depth)``) in groups to
+    write: the notches of one side, shape, width and depth evenly spaced along it (three or
+    more: a comb's teeth, finger slots, castellations) as one group, in order; each other
+    notch a group of its own."""
+    by: dict = {}
+    for cut in cuts:
+        side, shape, lo, hi, dep = cut
+        by.setdefault((side, shape, round(hi - lo, 6), round(dep, 6)), []).append(cut)
+    out = []
+    for group in by.values():
+        group.sort(key=lambda c: c[2])
+        mids = [(c[2] + c[3]) / 2 for c in group]
+        steps = [b - a for a, b in zip(mids, mids[1:])]
+        if len(group) > 2 and max(steps) - min(steps) <= EQUAL_TOL:
+            out.append(group)
+        else:
+            out += [[c] for c in group]
+    return out

@@ -52,61 +52,20 @@ from .shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
 from .anchors import _Anchored
 from .engraving import _engraving
 from .labels import _at_as_drawn, _label_place
-from .features import edge_notches
+from .features import edge_notches, notch_rows
 from .makers import SINGLE_PARAMS, _MakerFeatures
+from .chamfers import _chamfered, _clear_of_chamfers
+from .naming import _named_parts, _short_names, _summary
 from ..chains.layers import _hole_layers
 from .mirror import mirrored_pair, pair_items, write_pair
 from .sinks import Marks
-from .rings import _start_angle, rings
+from .groups import _Groups, corner_sets, follows
+from .rings import _start, rings, start_angle
+from . import turns
 from ..write.program import (_Names, _Writer, _containers, _cut_notes, _emit_holds, _holds,
                              _ident, _layer_items, _length, _num, _place, _pt, _whole_ellipse)
 from ..write.units import UNIT, in_unit
 from ..model import Drawing, Note, _segs_box
-
-
-def _clear_of_chamfers(cuts: list, rect: Shape, leg: float) -> bool:
-    """Whether every notch ``(side, shape, lo, hi, depth)`` leaves at least two chamfer legs
-    of its side between it and each corner: ``Chamfer`` cuts at most half of each segment of
-    the final outline, so a notch nearer a corner would shorten that corner's chamfer."""
-    for side, _, lo, hi, _ in cuts:
-        axis = 1 if side in ("left", "right") else 0
-        key = "width" if axis == 0 else "height"
-        a = rect.center[axis] - rect.args[key] / 2
-        b = rect.center[axis] + rect.args[key] / 2
-        if lo - a < 2 * leg - 1e-9 or b - hi < 2 * leg - 1e-9:
-            return False
-    return True
-
-
-def _chamfered(sh: Shape | None) -> tuple | None:
-    """A Polygon of 8 corners that is an upright rectangle with its four corners cut by
-    equal 45-degree chamfers: ``(the Rectangle, the chamfer's leg in mm)``, else None."""
-    if sh is None or sh.kind != "Polygon" or len(sh.args["points"]) != 8:
-        return None
-    pts = sh.args["points"]
-    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
-    x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
-    legs = []
-    for (ax, ay), (bx, by) in zip(pts, pts[1:] + pts[:1]):
-        on_side = (abs(ax - bx) <= EQUAL_TOL and min(abs(ax - x0), abs(ax - x1)) <= EQUAL_TOL) \
-            or (abs(ay - by) <= EQUAL_TOL and min(abs(ay - y0), abs(ay - y1)) <= EQUAL_TOL)
-        if on_side:
-            continue
-        dx, dy = abs(bx - ax), abs(by - ay)
-        if abs(dx - dy) > EQUAL_TOL:
-            return None
-        legs.append(dx)
-    if len(legs) != 4 or max(legs) - min(legs) > EQUAL_TOL or min(legs) <= EQUAL_TOL or \
-            2 * legs[0] >= min(x1 - x0, y1 - y0) - EQUAL_TOL:
-        return None
-    # every corner point on the box's sides, a leg in from its corner
-    for x, y in pts:
-        if min(abs(x - x0), abs(x - x1)) > EQUAL_TOL and min(abs(y - y0), abs(y - y1)) > EQUAL_TOL:
-            return None
-    W, H = x1 - x0, y1 - y0
-    rect = Shape("Rectangle", ((x0 + x1) / 2, (y0 + y1) / 2), {"width": W, "height": H},
-                 ("Rectangle", W, H), sh.pieces)
-    return rect, legs[0]
 
 
 def _add0(base: str, term: str) -> str:
@@ -120,9 +79,10 @@ class _Stats:
         self.in_shapes = 0          # of them, in recognised shapes
         self.kinds: Counter = Counter()
         self.patterns: Counter = Counter()
+        self.readings: list = []    # where two readings fit one drawing: which was taken
 
 
-class _Part(_Anchored, _MakerFeatures):
+class _Part(_Anchored, _MakerFeatures, _Groups):
     """One part's statements, written into ``w`` at ``depth``."""
 
     def __init__(self, w: _Writer, params: _Params, stats: _Stats, prefix: str) -> None:
@@ -137,6 +97,8 @@ class _Part(_Anchored, _MakerFeatures):
         self.named_as: list[str] = []       # named_as[i] is named.points[i]'s)
         self.kinds: dict = {}               # (kind, sizes) -> size params (kind_params)
         self.written: dict = {}             # centre -> its place as written (write_at)
+        self.looped: list = []              # patterns (members, centre, index): written_at
+        self.sink_members: list = []        # the holes the next hole statement writes
         self.marks: Marks | None = None     # the import's countersink marks (sinks.py)
         self.sunk: dict = {}                # id(hole Shape) -> its mark (Marks.attach)
         self.sinks = None                   # the marks of the holes being written, or None
@@ -267,9 +229,14 @@ class _Part(_Anchored, _MakerFeatures):
         if chamfer is not None and not (corners_drawn and "width" in sizes):
             self.w.emit(depth, f"Chamfer({nm}, {self.p('chamfer', leg, 'at each corner')})")
             st.patterns["chamfered corners"] += 1
-        for k, cut in enumerate(cuts or []):
-            self.edge_notch(depth, cut)
-            st.patterns["notch in a side"] += 1
+        for group in notch_rows(cuts or []):
+            if len(group) > 2:
+                self.notch_row(depth, group)
+                st.patterns["notches in a side"] += 1
+                continue
+            for cut in group:
+                self.edge_notch(depth, cut)
+                st.patterns["notch in a side"] += 1
         if teeth:
             self.teeth(depth, sh, teeth, "tooth")
         own = {id(x) for x in segs}
@@ -326,9 +293,8 @@ class _Part(_Anchored, _MakerFeatures):
             pp = self.p(hn + "_pitch", pitch, times=n)
             if abs(mid - c[along]) <= EQUAL_TOL:
                 pos = self.from_body_centre(along, f"(i - ({cnt} - 1) / 2) * {pp}", c[along])
-            else:
-                f0 = self.at(centres[0], along, ref=mid)
-                pos = f"i * {pp}" if f0 == "0" else f"{f0} + i * {pp}"
+            else:           # by its middle, or its end within a pitch of an edge (the spec)
+                pos = self.run_at(centres[0], centres[-1], along, "i", cnt, pp, pitch)
             head = f"for i in range({cnt}) {{"
         else:
             pos = "x"
@@ -396,6 +362,12 @@ class _Part(_Anchored, _MakerFeatures):
         singles = []
         centres = []          # bolt circle centres, for naming a bore
         self.share_centres(depth, groups, body)
+        # the middles of the groups of three or more and how far their holes are from it
+        # (a motor plate's corner slots about its bore, outside its motor holes)
+        self.rings_at = [(mid, sum(math.dist(h.center, mid) for h in g) / len(g))
+                         for g in groups.values() if len(g) >= 3
+                         for mid in [(sum(h.center[0] for h in g) / len(g),
+                                      sum(h.center[1] for h in g) / len(g))]]
         for k, (key, g) in enumerate(groups.items()):
             if len(g) == 1 or g[0].kind == "Polygon":
                 singles += g
@@ -403,8 +375,9 @@ class _Part(_Anchored, _MakerFeatures):
             self.check(k, "finding the patterns of the holes", every=1)
             r = g[0].args.get("radius", 0.0) if g[0].kind == "Circle" else 0.0
             cs = [sh.center for sh in g]
-            parts = None if _whole(cs, r) else _features(cs, r) or rings(
-                cs, ([body[0].center] if body is not None else []) + self.named.points)
+            parts = None if _whole(cs, r) else corner_sets(cs, body) or _features(cs, r) or \
+                rings(cs, ([body[0].center] if body is not None else []) + self.named.points) \
+                or corner_sets(cs, body, rest=True)
             # equal holes of several features (a grille and a grid): each its own pattern
             for part in parts or [range(len(g))]:
                 sub = [g[i] for i in part]
@@ -520,17 +493,22 @@ class _Part(_Anchored, _MakerFeatures):
             _emit_holds(w, depth, _holds(segs, f"{hn}.e"))
 
     def hole_block(self, depth: int, hn: str, sh: Shape, center: str, sizes=None,
-                   loop: bool = False) -> None:
-        var = "h"
-        self.w.emit(depth, f"hole {hn} {{ {var} = {_ctor(sh, center, sizes)} }}")
-        self.w.emit(depth, f"Fixed({hn}.{var})")
+                   index=None) -> None:
+        """``hole hn { h = ... }`` and its ``Fixed``, and the countersink marks of the holes
+        it writes (:attr:`sinks`), a subset of a loop's by ``index`` (Shape -> the loop's
+        variables on its turn, :meth:`~.sinks.Marks.write`)."""
+        self.w.emit(depth, f"hole {hn} {{ h = {_ctor(sh, center, sizes)} }}")
+        self.w.emit(depth, f"Fixed({hn}.h)")
+        if index is not None:       # a label beside a member follows it (written_at)
+            self.looped.append((self.sink_members, center, index))
         if self.sinks is not None and sh.kind == "Circle":
-            self.marks.write(self, depth, hn, sh, center, self.sinks)
+            self.marks.write(self, depth, hn, sh, center, self.sinks, self.sink_members, index)
 
     def sunk_as(self, members: list) -> bool:
-        """Say that the holes written next are ``members`` (:attr:`sinks`: their common
-        countersink, :meth:`~.sinks.Marks.common`); True."""
+        """Say that the holes written next are ``members`` (:attr:`sinks`: their marks by
+        size, :meth:`~.sinks.Marks.common`); True."""
         self.sinks = Marks.common(self.sunk, members) if self.sunk else None
+        self.sink_members = members
         return True
 
     def size_params(self, base: str, sh: Shape, many: bool) -> dict:
@@ -561,7 +539,7 @@ class _Part(_Anchored, _MakerFeatures):
         # four at the corners of the body, centred on it
         mid_all = (sum(c[0] for c in cs) / len(cs), sum(c[1] for c in cs) / len(cs))
         if len(g) == 4 and body is not None and body[0].kind != "Circle" and \
-                self.surrounds(mid_all) is None:
+                self.at_corners(g, mid_all):
             bsh, bsizes, bname = body
             gr = _grid(cs)
             if gr is not None and gr[4] == 2 and gr[5] == 2:
@@ -572,20 +550,29 @@ class _Part(_Anchored, _MakerFeatures):
                 # at the corners: nearer the edges than the centre lines (else a square
                 # or a bolt circle about the centre, placed by it)
                 if math.dist(mid, bsh.center) <= EQUAL_TOL and 0 < ix < W / 4 and 0 < iy < H / 4:
-                    sizes = self.size_params("corner_" + base, sh, True)
+                    # a second set at the corners: corner_2_inset, corner_2_hole_d (a name
+                    # that ends as every inset's and diameter's)
+                    pre, k = "corner", 1
+                    while self.prefix + pre + "_inset" in self.params.used or \
+                            self.prefix + pre + "_inset_x" in self.params.used:
+                        k += 1
+                        pre = f"corner_{k}"
+                    sizes = self.size_params(f"{pre}_{base}", sh, True)
                     if abs(ix - iy) <= ROUND_TOL:
-                        inx = iny = self.p("corner_inset", ix, "from the edges")
+                        inx = iny = self.p(f"{pre}_inset", ix, "from the edges")
                     else:
-                        inx = self.p("corner_inset_x", ix, "from the left and right edges")
-                        iny = self.p("corner_inset_y", iy, "from the top and bottom edges")
-                    hn = self.name(f"corner_{base}s")
+                        inx = self.p(f"{pre}_inset_x", ix, "from the left and right edges")
+                        iny = self.p(f"{pre}_inset_y", iy, "from the top and bottom edges")
+                    hn = self.name(f"{pre}_{base}s")
                     wx, hy = bsizes.get("width"), bsizes.get("height")
                     ex = f"sx * ({wx} / 2 - {inx})" if wx else f"sx * {_r(dx / 2)}"
                     ey = f"sy * ({hy} / 2 - {iny})" if hy else f"sy * {_r(dy / 2)}"
                     c = f"({self.from_body_centre(0, ex, mid[0])}, {self.from_body_centre(1, ey, mid[1])})"
+                    w.emit(depth, f"# at the corners, {inx if inx == iny else inx + ' and ' + iny}"
+                                  f" in from the edges")
                     w.emit(depth, "for sx in [-1, 1] {")
                     w.emit(depth + 1, "for sy in [-1, 1] {")
-                    self.hole_block(depth + 2, hn, sh, c, sizes)
+                    self.hole_block(depth + 2, hn, sh, c, sizes, turns.corners(mid))
                     w.emit(depth + 1, "}")
                     w.emit(depth, "}")
                     self.stats.patterns["corner"] += 1
@@ -604,10 +591,14 @@ class _Part(_Anchored, _MakerFeatures):
                 pcd = self.p(f"{hn}_pcd", 2 * R, "pitch circle diameter")
                 sizes = self.size_params(hn, sh, True)
                 cnt = self.p(f"{hn}_n", n, "holes", unit="")
-                ang = _start_angle(a0, n, cnt)
+                ang = start_angle(self, hn, a0, n, cnt)
+                on_body = self.anchor is not None and \
+                    math.dist(C, self.anchor[0].center) <= EQUAL_TOL
+                about = self.shared(C) or ("the body centre" if on_body else "its centre")
+                w.emit(depth, f"# about {about}, its first hole at {ang.split(' + ')[0]}")
                 w.emit(depth, f"for i in range({cnt}) {{")
                 self.hole_block(depth + 1, hn, sh, f"polar({self.pos(C)}, {pcd} / 2, {ang})",
-                                sizes)
+                                sizes, turns.polar(C, _start(a0, n), n))
                 w.emit(depth, "}")
                 centres.append(C)
                 self.stats.patterns["bolt circle"] += 1
@@ -639,8 +630,10 @@ class _Part(_Anchored, _MakerFeatures):
                     ey = self.from_body_centre(1, f"{sign} * {self.p(name, abs(dy))} / 2", B[1])
                 else:
                     ey = self.at(y1, 1)
+                w.emit(depth, "# mirrored about the centre line" + ("s" if sym_x and sym_y else ""))
                 w.emit(depth, "for s in [-1, 1] {")
-                self.hole_block(depth + 1, hn, sh, f"({ex}, {ey})", sizes)
+                self.hole_block(depth + 1, hn, sh, f"({ex}, {ey})", sizes,
+                                turns.mirrored(B, sym_x))
                 w.emit(depth, "}")
                 self.stats.patterns["mirrored pair"] += 1
                 return True
@@ -665,6 +658,7 @@ class _Part(_Anchored, _MakerFeatures):
             # reference, one size param (`holes_2_d` when `holes` is taken)
             sizes = self.size_params(self.name(base + "s"), sh, True)
             for m in g:
+                self.sunk_as([m])
                 self.hole_block(depth, self.numbered(base) if base == "hole" else
                                 self.name(base), m, self.pos(m.center), sizes)
             self.stats.patterns["equal sizes"] += 1
@@ -681,13 +675,18 @@ class _Part(_Anchored, _MakerFeatures):
             cnt = self.p(hn + "_n", n, unit="")
             c = f"polar({first}, i * {pitch}, {_deg(math.atan2(dy, dx))})"
             w.emit(depth, f"for i in range({cnt}) {{")
-            self.hole_block(depth + 1, hn, sh, c, sizes)
+            self.hole_block(depth + 1, hn, sh, c, sizes, turns.row(p0, (dx, dy)))
             w.emit(depth, "}")
             self.stats.patterns["row"] += 1
             return True
         # no pattern for them all: rows and columns of three or more among them, the rest
         # one by one, one size param for all
-        sizes = self.size_params(base, sh, True)
+        # (one size param named for the holes, `holes_2_d` when `holes` is taken: a name
+        # ending in `_d` as every diameter's)
+        stem = next(t for k in range(1, 10 ** 6) for t in [f"{base}s" + (f"_{k}" if k > 1 else "")]
+                    if t not in self.used and not any(u.startswith(self.prefix + t + "_")
+                                                      for u in self.params.used))
+        sizes = self.size_params(stem, sh, True)
         rest = list(g)
         done: set = set()               # (ids) in rows: left out of `rest` after each axis
         for axis in (1, 0):             # equal y: a row along x; equal x: a column
@@ -717,28 +716,24 @@ class _Part(_Anchored, _MakerFeatures):
                     c[1 - axis] = self.from_body_centre(
                         1 - axis, f"(i - ({cnt} - 1) / 2) * {pitch}", mid) \
                         if self.on_centre(mid, 1 - axis) else \
-                        self.run_at(run[0][0], run[-1][0], 1 - axis, "i", cnt, pitch)
+                        self.run_at(run[0][0], run[-1][0], 1 - axis, "i", cnt, pitch, step)
                     c[axis] = self.at(first[axis], axis)
+                    w.emit(depth, f"# row: {follows(c) or 'about its middle'}")
                     w.emit(depth, f"for i in range({cnt}) {{")
-                    self.hole_block(depth + 1, hn, sh, f"({c[0]}, {c[1]})", sizes)
+                    self.sunk_as([m for _, m in run])
+                    self.hole_block(depth + 1, hn, sh, f"({c[0]}, {c[1]})", sizes,
+                                    turns.row(first, (step, 0) if axis else (0, step)))
                     w.emit(depth, "}")
                     self.stats.patterns["row"] += 1
                     done.update(id(m) for _, m in run)
             rest = [m for m in rest if id(m) not in done]
-        if len(rest) > 2:       # no pattern: the instances listed, one loop, one size
-            # placed together, by the reference nearest their middle (a board's holes move
-            # as one when the plate grows)
-            mid = [sum(m.center[k] for m in rest) / len(rest) for k in (0, 1)]
-            hn = self.name_near(base + "s", mid)
-            pts = ", ".join(f"({self.at(m.center[0], 0, mid[0], nearest=True)}, "
-                            f"{self.at(m.center[1], 1, mid[1], nearest=True)})" for m in rest)
-            w.emit(depth, f"for c in [{pts}] {{")
-            self.hole_block(depth + 1, hn, sh, "c", sizes)
-            w.emit(depth, "}")
+        if len(rest) > 2:       # no pattern: a board's holes, one loop, one size
+            self.hole_set(depth, rest, sh, base, sizes)
         else:                   # one or two: each from its own reference; beside a row of
             for s in rest:      # their size, each a feature of its own (its own size param)
                 hn = self.numbered(base) if base == "hole" else self.name(base)
                 own = self.size_params(hn, s, True) if done else sizes
+                self.sunk_as([s])
                 self.hole_block(depth, hn, s, self.pos(s.center), own)
         if rest:
             self.stats.patterns["equal sizes"] += 1
@@ -802,12 +797,15 @@ class _Part(_Anchored, _MakerFeatures):
                 term = f"({var} - ({cnt} - 1) / 2) * {pitch}"
                 out.append(term if o == "0" else f"{o} + {term}")
             else:
-                out.append(self.run_at(v0, v0 + (n - 1) * step, axis, var, cnt, pitch))
+                out.append(self.run_at(v0, v0 + (n - 1) * step, axis, var, cnt, pitch, step))
         d = depth
+        if follows(out):
+            self.w.emit(d, f"# {'grid' if both else 'row'}: {follows(out)}"
+                           + (f", about {self.shared(mid)}" if around else ""))
         for ln in loops:
             self.w.emit(d, ln)
             d += 1
-        self.hole_block(d, hn, sh, f"({out[0]}, {out[1]})", sizes)
+        self.hole_block(d, hn, sh, f"({out[0]}, {out[1]})", sizes, turns.grid(*gr))
         for _ in loops:
             d -= 1
             self.w.emit(d, "}")
@@ -849,7 +847,8 @@ class _Part(_Anchored, _MakerFeatures):
         ey = _add0(oy if here(1) else self.at(mid[1], 1), term)
         self.w.emit(depth, f"for j in range({nrows}) {{")
         self.w.emit(depth + 1, f"for i in range({n_j}) {{")
-        self.hole_block(depth + 2, hn, sh, f"({ex}, {ey})", sizes)
+        self.hole_block(depth + 2, hn, sh, f"({ex}, {ey})", sizes,
+                        turns.stagger(xa, xb, pitch, y0, dy))
         self.w.emit(depth + 1, "}")
         self.w.emit(depth, "}")
         self.stats.patterns["staggered grid"] += 1
@@ -890,7 +889,7 @@ class _Part(_Anchored, _MakerFeatures):
         for n, cond in enumerate(ifs):
             w.emit(depth + 2 + n, f"if {cond} {{")
         self.hole_block(depth + 2 + len(ifs), hn, sh, f"({_add0(ax, x)}, {_add0(ay, y)})",
-                        sizes)
+                        sizes, turns.hex_nodes((cx, cy), pitch, shift))
         for n in reversed(range(len(ifs))):
             w.emit(depth + 2 + n, "}")
         w.emit(depth + 1, "}")
@@ -1096,7 +1095,8 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
         w.emit(0, "}")
     _cut_notes(w, source)
     head = [f"# imported from {source} by `aidl import --infer`: edit freely"]
-    head += ["# " + ln for ln in _summary(stats) + moved] + [f"units {UNIT.get()}"]
+    head += ["# " + ln for ln in _summary(stats) + moved + stats.readings] + \
+        [f"units {UNIT.get()}"]
     text = "\n".join(head + params.lines + w.lines) + "\n"
     return text, w.notes
 
@@ -1134,56 +1134,6 @@ def _refuse_too_large(layers: list, source: str, deadline) -> None:
                      f"started",
             "import it without --infer (its exact pieces), a part of it with --layer, or "
             "raise --budget") from None
-
-
-# layer names that say nothing of the part on them (CAD's layer 0, a laser's CUT layer)
-_GENERIC = {"l_0", "cut_", "cut", "part", "outline", "outlines", "contour", "profile",
-            "default", "layer1", "layer_1", "l_1"}
-
-
-def _named_parts(items: list) -> list:
-    """``items`` with a solid on a layer whose name says nothing (:data:`_GENERIC`) named
-    for what its body is: ``plate`` (a rectangle or polygon), ``disc`` (a circle), else
-    ``part``; each name once."""
-    used = {it[1] for it in items}
-    out = []
-    for it in items:
-        kind, name, d = it[:3]
-        if kind != "solid" or name.lower() not in _GENERIC:
-            out.append(it)
-            continue
-        loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
-        big = max(loops, key=lambda s: abs(Loop(list(s)).area), default=None)
-        sh = recognise(big) if big is not None else None
-        word = "part" if sh is None else "disc" if sh.kind == "Circle" else "plate"
-        used.discard(name)
-        new = _ident(word, used)
-        out.append((kind, new, d) + tuple(it[3:]))
-    return out
-
-
-def _short_names(names: list) -> dict:
-    """Each part's name for its params: the last word of its name (``cut_kit_plate``:
-    ``plate``) when no other part's ends so, else the whole name."""
-    last = {n: (n.rsplit("_", 1)[-1] if "_" in n else n) for n in names}
-    count = Counter(last.values())
-    # (a name that ends in "_", a keyword made a name such as `cut_`, keeps its whole name)
-    return {n: (v if v and count[v] == 1 and not v[0].isdigit() else n)
-            for n, v in last.items()}
-
-
-def _summary(st: _Stats) -> list[str]:
-    """The header lines saying what was recognised and the tolerances."""
-    shapes = ", ".join(f"{n} {k}" for k, n in sorted(st.kinds.items(), key=lambda x: -x[1]))
-    pats = ", ".join(f"{n} {k}" for k, n in st.patterns.items())
-    out = [f"recognised: {st.in_shapes} of {st.pieces} pieces of outlines and holes in "
-           f"{sum(st.kinds.values())} shapes ({shapes or 'none'})"]
-    if pats:
-        out.append(f"patterns: {pats}")
-    u = UNIT.get()
-    out.append(f"equal within {EQUAL_TOL:g} {u}, numbers rounded within {ROUND_TOL:g} {u}; "
-               f"the rest stays exact Line/Arc chains")
-    return out
 
 
 def import_drawing(data: bytes, name: str, infer: bool = False, **options):

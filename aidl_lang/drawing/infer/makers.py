@@ -66,6 +66,9 @@ class _MakerFeatures(_BoreFeatures):
             c, d, flat, ang = got
             hn = self.name("d_hole")
             ps = self.kind_params("d_hole", (("d", d), ("flat", flat)))
+            if ps[1][0].isalpha():        # the flat cuts the circle: short of its radius
+                self.params.bound(ps[1], "0 mm", f"{ps[0]} / 2",
+                                  "the flat cuts the circle: nearer its centre than its radius")
             turn = f"{_deg(ang)} " if abs(ang) > 1e-15 else ""
             start, end = (f"{turn}+ t", f"{turn}- t") if turn else ("t", "-t")
             w.emit(depth, f"hole {hn} {{")
@@ -80,17 +83,39 @@ class _MakerFeatures(_BoreFeatures):
             return True
         return False
 
-    def edge_notch(self, depth: int, cut: tuple) -> None:
+    def notch_row(self, depth: int, group: list) -> None:
+        """Notches of one size evenly spaced along a side (:func:`~.features.notch_rows`) as
+        one loop of :meth:`edge_notch`: their count and pitch params, placed by their middle
+        or by their end within a pitch of an edge (:meth:`run_at`)."""
+        side, shape, lo, hi, dep = group[0]
+        along = 1 if side in ("left", "right") else 0
+        mids = [(c[2] + c[3]) / 2 for c in group]
+        hn = self.name({"square": "notches", "round": "round_notches", "V": "v_notches"}[shape])
+        n = len(group)
+        cnt = self.p(hn + "_n", n, unit="")
+        step = (mids[-1] - mids[0]) / (n - 1)
+        pp = self.p(hn + "_pitch", step, times=n)
+        mid = self.run_at(mids[0], mids[-1], along, "i", cnt, pp, step)
+        # the pattern's own sizes (another comb's notches of one size are its own)
+        own = (self.p(hn + "_width", hi - lo), self.p(hn + "_depth", dep))
+        self.w.emit(depth, f"# {n} notches in the {side} side, {pp} apart: a pattern of the side")
+        self.w.emit(depth, f"for i in range({cnt}) {{")
+        self.edge_notch(depth + 1, group[0], mid, hn, own)
+        self.w.emit(depth, "}")
+
+    def edge_notch(self, depth: int, cut: tuple, mid: str | None = None,
+                   hn: str | None = None, sizes: tuple | None = None) -> None:
         """A notch cut into a side of the body (:func:`~.features.edge_notches`) as a hole
         flush with the side: a Rectangle (square), a Rectangle and a Circle (round bottom) or
         a triangle (V), its width and depth params, placed along the side from the edge or
-        centre its near side is tied to (:meth:`span_at`)."""
+        centre its near side is tied to (:meth:`span_at`), or at ``mid`` (its centre along
+        the side, a row's member) named ``hn``, its width and depth ``sizes``."""
         side, shape, lo, hi, dep = cut
         across = 0 if side in ("left", "right") else 1
         along = 1 - across
         sign = 1 if side in ("right", "top") else -1
-        wd, dp = self.kind_params(f"{shape}_notch" if shape != "square" else "notch",
-                                  (("width", hi - lo), ("depth", dep)))
+        wd, dp = sizes or self.kind_params(f"{shape}_notch" if shape != "square" else "notch",
+                                           (("width", hi - lo), ("depth", dep)))
         edge = self.edge(across, sign)
 
         def inward(term: str) -> str:        # the side moved into the part by `term`
@@ -101,8 +126,8 @@ class _MakerFeatures(_BoreFeatures):
             if edge == "0":
                 return f"-{t}" if sign > 0 else t
             return f"{edge} {'-' if sign > 0 else '+'} {t}"
-        mid = self.span_at(lo, hi, along, wd)
-        hn = self.name({"square": "notch", "round": "round_notch", "V": "v_notch"}[shape])
+        mid = mid or self.span_at(lo, hi, along, wd)
+        hn = hn or self.name({"square": "notch", "round": "round_notch", "V": "v_notch"}[shape])
 
         def pt(a: str, c: str) -> str:       # (along, across) as (x, y)
             return f"({a}, {c})" if along == 0 else f"({c}, {a})"

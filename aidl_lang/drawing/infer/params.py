@@ -45,6 +45,22 @@ class _Params:
         return nm
 
 
+    def bound(self, name: str, lo: str, hi: str, why: str) -> None:
+        """Give the param ``name`` (a line of :attr:`lines`) the range ``min=lo, max=hi``
+        (program text: ``hi`` may follow a param above it, ``d_hole_d / 2``) and an
+        ``assert`` that it stays short of ``hi`` (``why``: what holds it there), so that a
+        ``--set`` past it is one located error naming the param and its range (issue 91:
+        an inferred D-hole's flat past its radius was a math domain error)."""
+        for k, line in enumerate(self.lines):
+            if line.startswith(f"param {name} = "):
+                head, _, note = line.partition("  # ")
+                if "min=" in head:
+                    return
+                self.lines[k] = f"{head}, min={lo}, max={hi}" + (f"  # {note}" if note else "")
+                self.lines.insert(k + 1, f'assert {name} < {hi}, "{why}"')
+                return
+
+
 def _plus(base: float, term: str) -> str:
     """``base + term`` as text (``term`` alone when base is 0)."""
     if abs(base) <= ROUND_TOL:

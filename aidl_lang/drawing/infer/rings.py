@@ -3,13 +3,12 @@ two bolt circles of one hole size about a flange's centre (5 on a 60 mm circle, 
 32 mm one), or a bolt circle and a lone hole of its size, are no one pattern and too far
 apart for :func:`~.patterns._features` to split; about the body's centre or a feature's
 (a bore), split by their distance from it, each ring of three or more evenly spaced a bolt
-circle of its own; and :func:`_start_angle`, how a bolt circle's first hole is written so
+circle of its own; and :func:`start_angle`, how a bolt circle's first hole is written so
 that a new count keeps its meaning.  Coordinates in mm."""
 from __future__ import annotations
 
 import math
 
-from .params import _deg
 from .patterns import _polar
 from .shapes import EQUAL_TOL
 
@@ -40,16 +39,20 @@ def rings(centers: list, about: list) -> list[list[int]] | None:
         big = [g for g in groups if len(g) >= 3]
         if big and all((pol := _polar([centers[k] for k in g])) is not None
                        and math.dist(pol[0], c) <= EQUAL_TOL for g in big):
+            # the holes left one or two at a distance: a bolt circle of its own about
+            # another centre when they are evenly round one (a second flange's)
+            small = sorted(k for g in groups if len(g) < 3 for k in g)
+            if len(small) >= 3 and _polar([centers[k] for k in small]) is not None:
+                return [sorted(g) for g in big] + [small]
             return [sorted(g) for g in groups]
     return None
 
 
-def _start_angle(a0: float, n: int, cnt: str) -> str:
-    """The angle of hole ``i`` of a bolt circle of ``n`` (the param ``cnt``) whose holes are
-    at ``a0 + k 360/n`` (radians), written by the rule that keeps its meaning when the count
-    changes: a hole on the x axis (``i * 360 deg / n``), else two straddling it, half a
-    pitch off (``(i + 0.5) * 360 deg / n``), else one at the top (``90 deg + ...``), else
-    from ``a0``.  Where two rules draw the same holes the x axis is the one a person reads
+def _start(a0: float, n: int) -> float:
+    """The angle (radians) of hole 0 of a bolt circle of ``n`` holes at ``a0 + k 360/n``, by
+    the rule that keeps its meaning when the count changes: a hole on the x axis (0), else
+    two straddling it, half a pitch off (``180/n``), else one at the top (90 deg), else
+    ``a0``.  Where two rules draw the same holes the x axis is the one a person reads
     from: 4 or 8 holes with one at the top have one on the x axis; 6 with one at the top
     are half a pitch off it."""
     step = 2 * math.pi / n
@@ -57,10 +60,24 @@ def _start_angle(a0: float, n: int, cnt: str) -> str:
     def on(angle: float) -> bool:
         k = (angle - a0) / step
         return abs(k - round(k)) * step * 1e3 <= 1e-6      # 1e-9 rad at 1 m
-    if on(0.0):
-        return f"i * 360 deg / {cnt}"
-    if on(step / 2):
-        return f"(i + 0.5) * 360 deg / {cnt}"
-    if on(math.pi / 2):
-        return f"90 deg + i * 360 deg / {cnt}"
-    return f"{_deg(a0)} + i * 360 deg / {cnt}"
+    for angle in (0.0, step / 2, math.pi / 2):
+        if on(angle):
+            return angle
+    return a0
+
+
+def start_angle(part, hn: str, a0: float, n: int, cnt: str) -> str:
+    """The angle of hole ``i`` of a bolt circle ``hn`` of ``n`` (the param ``cnt``) whose
+    holes are at ``a0 + k 360/n`` (radians), from a param ``<hn>_angle`` (issue 93: its first
+    hole's angle, one word to turn the pattern): ``angle + i * 360 deg / n`` from the first
+    hole's angle (:func:`_start`: on the x axis 0, at the top 90, else as drawn), or, with
+    two holes straddling the x axis, ``angle + (i + 0.5) * 360 deg / n`` (the axis they
+    straddle, 0), so that a new count keeps the reading."""
+    start = _start(a0, n)
+    if abs(start - math.pi / n) <= 1e-15 and n > 2:
+        ang = part.p(f"{hn}_angle", 0.0, "the axis two holes straddle, from the x axis",
+                     unit="deg")
+        return f"{ang} + (i + 0.5) * 360 deg / {cnt}"
+    ang = part.p(f"{hn}_angle", math.degrees(start), "its first hole's, from the x axis",
+                 unit="deg")
+    return f"{ang} + i * 360 deg / {cnt}"

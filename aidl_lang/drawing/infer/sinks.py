@@ -1,12 +1,13 @@
 """``aidl import --infer``: countersinks and counterbores written with their holes (issue 85,
 "countersink pairs").  A layer of circles named for them (COUNTERSINK, CSK, C-BORE, Spotface:
 :data:`~..chains.layers._SINK_LAYER`) is marked, not cut; a mark concentric with a hole and
-larger than it is the top circle of that hole's countersink.  When every hole of one kind and
-size has such a mark, of one diameter, each mark is written in the hole's statement - its
-centre the hole's centre as written, its diameter a param (``countersink_d``) - so that
-every edit that moves the holes (the plate's size, an inset, a pitch) moves the marks with
-them.  A mark on no hole, or on a group only partly marked, stays where the drawing puts it,
-in the layer's ``drawing``.  Lengths in the drawing's unit; the results are program text.
+larger than it is the top circle of that hole's countersink.  Each mark is written in its
+hole's statement - its centre the hole's centre as written, its diameter a param
+(``countersink_d``) - so that every edit that moves the holes (the plate's size, an inset, a
+pitch) moves the marks with them; when only some of a pattern's holes are marked (issue 91:
+three of four corner holes), under an ``if`` naming their turns of the loop (:func:`condition`,
+the turns from :mod:`.turns`).  A mark on no hole stays where the drawing puts it, in the
+layer's ``drawing``.  Lengths in the drawing's unit; the results are program text.
 """
 from __future__ import annotations
 
@@ -62,33 +63,61 @@ class Marks:
         return out
 
     @staticmethod
-    def common(sunk: dict, members: list) -> tuple | None:
-        """``(word, radius, mark ids)`` when every one of ``members`` (the Shapes one hole
-        statement writes: a pattern's, or a single hole) has a mark in ``sunk``
-        (:meth:`attach`), all of one word and radius (within EQUAL_TOL); else None (the
-        marks stay as drawn)."""
-        got = [sunk.get(id(sh)) for sh in members]
-        if not got or None in got or any(g[1] != got[0][1] or abs(g[0] - got[0][0]) > EQUAL_TOL
-                                          for g in got):
-            return None
-        return got[0][1], got[0][0], [g[2] for g in got]
+    def common(sunk: dict, members: list) -> list | None:
+        """The marks of the holes one hole statement writes (``members``: a pattern's Shapes,
+        or a single hole), by word and radius (within EQUAL_TOL): ``[(word, radius, mark
+        ids, marked Shapes)]``; None when no member has a mark in ``sunk`` (:meth:`attach`).
+        A group that is every member is written as the hole's own mark; a group of some
+        (three of four corner holes countersunk) under an ``if`` naming those members
+        (:meth:`write`)."""
+        groups: list = []
+        for sh in members:
+            g = sunk.get(id(sh))
+            if g is None:
+                continue
+            radius, word_g, mark = g
+            for word, r, ids, shapes in groups:
+                if word == word_g and abs(r - radius) <= EQUAL_TOL:
+                    ids.append(mark)
+                    shapes.append(sh)
+                    break
+            else:
+                groups.append((word_g, radius, [mark], [sh]))
+        return groups or None
 
-    def write(self, part, depth: int, hn: str, sh: Shape, center: str, got: tuple) -> None:
-        """The mark of hole ``hn`` (Shape ``sh`` at ``center``, program text) as a
+    def write(self, part, depth: int, hn: str, sh: Shape, center: str, groups: list,
+              members: list, index=None) -> None:
+        """The marks of hole ``hn`` (Shape ``sh`` at ``center``, program text) as a
         ``drawing`` beside it in ``part``: a circle at the same centre, its diameter the
         param of its word, one for each pattern of holes, named by them (``countersink_d``
-        of ``holes``, ``corner_countersink_d`` of ``corner_holes``)."""
-        word, r, ids = got
-        self.used.update(ids)
-        key = (id(part), hn)       # a pattern written in several statements: one param
-        if key not in self.words:
-            base = re.sub(r"_?holes?$", "", hn)
-            self.words[key] = part.params.add(f"{base}_{word}_d" if base else f"{word}_d",
-                                             2 * r, f"marked about {hn}, not cut")
-        nm = f"{hn}_{word}"
-        part.w.emit(depth, f"drawing {nm} {{ c = Circle(center={center}, "
+        of ``holes``, ``corner_countersink_d`` of ``corner_holes``).  A group marking some
+        of ``members`` only is written under ``if`` over the loop's variables
+        (``index(Shape)``: ``((variable, value), ...)`` of that member's turn of the loop,
+        :func:`condition`); without ``index`` it stays as drawn."""
+        for k, (word, r, ids, marked) in enumerate(groups):
+            cond = None
+            if len(marked) < len(members):
+                cond = condition(index, marked, members) if index is not None else None
+                if cond is None:
+                    continue
+            self.used.update(ids)
+            key = (id(part), hn, k)    # a pattern written in several statements: one param
+            if key not in self.words:
+                base = re.sub(r"_?holes?$", "", hn)
+                self.words[key] = part.params.add(
+                    f"{base}_{word}_d" if base else f"{word}_d", 2 * r,
+                    f"marked about {hn}" + (" (some of them)" if cond else "") + ", not cut")
+            nm = f"{hn}_{word}" + (f"_{k + 1}" if k else "")
+            d = depth
+            if cond is not None:
+                part.w.emit(depth, f"if {cond} {{     # {word}s on {len(marked)} of these "
+                                   f"{len(members)} holes, as drawn")
+                d += 1
+            part.w.emit(d, f"drawing {nm} {{ c = Circle(center={center}, "
                            f"diameter={self.words[key]}) }}")
-        part.w.emit(depth, f"Fixed({nm}.c)")
+            part.w.emit(d, f"Fixed({nm}.c)")
+            if cond is not None:
+                part.w.emit(depth, "}")
 
     def left(self, name: str, d: Drawing) -> Drawing | None:
         """The drawing item ``name`` (``d``) without the circles written with a hole; None
@@ -98,3 +127,29 @@ class Marks:
         d = replace(d, circles=[c for c in d.circles if id(c) not in self.used])
         return None if not d.circles else d
 
+
+
+def condition(index, marked: list, members: list) -> str | None:
+    """The condition over a loop's variables that holds on the turns writing ``marked`` and
+    no other of ``members`` (``index(Shape)``: ``((variable, value), ...)``): the marked
+    turns listed (``i == 1 or i == 3``), or the others excluded (``i != 2``,
+    ``not (sx == 1 and sy == 1)``), whichever is shorter; None when two members share a
+    turn (the index does not tell them apart)."""
+    keys = {id(sh): tuple(index(sh)) for sh in members}
+    if len(set(keys.values())) != len(members) or not all(keys.values()):
+        return None
+    ids = {id(sh) for sh in marked}
+    yes = [keys[id(sh)] for sh in members if id(sh) in ids]
+    no = [keys[id(sh)] for sh in members if id(sh) not in ids]
+
+    def term(t: tuple, op: str = "==", join: str = " and ") -> str:
+        return join.join(f"{v} {op} {x}" for v, x in t)
+
+    def wrap(t: tuple) -> str:
+        return f"({term(t)})" if len(t) > 1 else term(t)
+    pos = " or ".join(term(t) if len(yes) == 1 else wrap(t) for t in yes)
+    if len(no) == 1:
+        neg = term(no[0], "!=", " or ") if len(no[0]) == 1 else f"not ({term(no[0])})"
+    else:
+        neg = f"not ({' or '.join(wrap(t) for t in no)})"
+    return pos if len(pos) <= len(neg) else neg

@@ -1,0 +1,134 @@
+"""``aidl import --infer``: groups of holes read as the spec says a maker means them
+(issue 93; docs/import.md, "What an edit means"): four at the body's corners even about a
+bore (:meth:`_Groups.at_corners`), a board's holes as one set from the corner nearest them
+(:meth:`_Groups.hole_set`), and the comment saying what a row or grid follows
+(:func:`follows`).  The writing half of :class:`~.infer._Part`: needs ``w``, ``p``,
+``stats``, ``anchor``, ``at``, ``edge``, ``nearest``, ``center``, ``shared``,
+``surrounds``, ``rings_at``, ``name_near``, ``sunk_as`` and ``hole_block``.  Coordinates in
+mm; the results are program text."""
+from __future__ import annotations
+
+import math
+
+from .params import _hole_name
+from .shapes import EQUAL_TOL, Shape
+from ..write.program import _pt
+
+
+def follows(terms: list) -> str:
+    """What a row or grid written with the coordinate texts ``terms`` (x, y) follows, as
+    its comment says it: ``about its middle`` or ``from its end member`` along each axis
+    it runs along."""
+    out = []
+    for axis, t in enumerate(terms):
+        if " - 1) / 2)" in t or "- 1) / 2 -" in t:
+            out.append(f"{'xy'[axis]} about its middle")
+        elif "range" not in t and any(v in t for v in ("i *", "j *", "(i -", "(j -")):
+            out.append(f"{'xy'[axis]} from its end member")
+    return ", ".join(out)
+
+
+def corner_sets(centres: list, body, rest: bool = False) -> list[list[int]] | None:
+    """Equal holes that are two or more sets of four at a rectangular body's corners (its
+    mounting holes 5 mm in and its feet 12 mm in): their indices by set, each four about the
+    body's centre at one distance from it, a 2 x 2 grid nearer the edges than the centre
+    lines; else None.  ``rest``: also when other holes are left (a flange's bolt circle of
+    the corner holes' size), the others one group after the sets."""
+    if body is None or body[0].kind == "Circle" or len(centres) < (5 if rest else 8):
+        return None
+    c = body[0].center
+    W, H = body[0].args.get("width", 0.0), body[0].args.get("height", 0.0)
+    by: dict = {}
+    for i, p in enumerate(centres):
+        by.setdefault(round(math.dist(p, c), 6), []).append(i)
+    sets, others = [], []
+    for g in by.values():
+        pts = [centres[i] for i in g]
+        if len(g) == 4 and len({round(abs(p[0] - c[0]), 6) for p in pts}) == 1 and \
+                len({round(abs(p[1] - c[1]), 6) for p in pts}) == 1 and \
+                len({(p[0] > c[0], p[1] > c[1]) for p in pts}) == 4 and \
+                abs(pts[0][0] - c[0]) > W / 4 and abs(pts[0][1] - c[1]) > H / 4:
+            sets.append(g)
+        else:
+            others += g
+    if not sets or (others and not rest) or (not others and len(sets) < 2):
+        return None
+    return sets + ([sorted(others)] if others else [])
+
+
+class _Groups:
+    def at_corners(self, g: list, mid) -> bool:
+        """Whether four equal holes about ``mid`` may be read as at the body's corners
+        (docs/import.md, "What an edit means"): about no feature, or, about one (a bore),
+        when they are not round (a motor plate's corner slots) or another group about it is
+        nearer it (the motor's holes inside them): then said in the head."""
+        around = self.surrounds(mid)
+        if around is None:
+            return True
+        far = sum(math.dist(h.center, mid) for h in g) / len(g)
+        inner = any(math.dist(c, mid) <= EQUAL_TOL and r < far - EQUAL_TOL
+                    for c, r in self.rings_at)
+        if g[0].kind == "Circle" and not inner:
+            return False
+        self.stats.readings.append(
+            f"{len(g)} {_hole_name(g[0])}s both about {self.shared(mid)} and at the corners: "
+            f"read as at the corners (their inset kept when the plate grows)")
+        return True
+
+    def hole_set(self, depth: int, rest: list, sh: Shape, base: str, sizes: dict) -> None:
+        """Holes of one size in no pattern (a board's) as one set placed from the body's
+        corner nearest their middle (the spec, docs/import.md: a board's holes move as one
+        with that corner; per axis the centre line when it is nearer): params ``<set>_x``
+        and ``<set>_y`` from those edges to the hole nearest it, the others listed as
+        offsets from that hole."""
+        mid = [sum(m.center[k] for m in rest) / len(rest) for k in (0, 1)]
+        hn = self.name_near(base + "s", mid)
+        if self.anchor is None:
+            pts = ", ".join(self.center(m.center) for m in rest)
+            self.w.emit(depth, f"for c in [{pts}] {{")
+            self.sunk_as(rest)
+            self.hole_block(depth + 1, hn, sh, "c", sizes)
+            self.w.emit(depth, "}")
+            return
+        body = self.anchor[0]
+        # per axis the reference nearest their middle: an edge, or the centre line when it
+        # is nearer (a board nearly centred on its plate: its holes are not symmetric)
+        sides = []
+        for k, key in ((0, "width"), (1, "height")):
+            gaps = {s: abs(mid[k] - body.center[k] - s * body.args[key] / 2) for s in (0, -1, 1)}
+            sides.append(min((0, -1, 1), key=lambda s: (round(gaps[s], 9), s != 0, s)))
+        # the hole nearest that corner (on a centre line: nearest the centre) is the origin
+        corner = [body.center[k] + sides[k] * body.args["width" if k == 0 else "height"] / 2
+                  for k in (0, 1)]
+        ref = min(rest, key=lambda m: (math.dist(m.center, corner), m.center))
+        at, said = [], []
+        for k, word in ((0, "x"), (1, "y")):
+            side = sides[k]
+            if side == 0:
+                at.append(self.from_side(ref.center[k], k, 0))
+                said.append("centre line")
+                continue
+            gap = abs(ref.center[k] - corner[k])
+            e = self.edge(k, side)
+            g = self.p(f"{hn}_{word}", gap, "the set's hole nearest the corner, from the " +
+                       {(0, -1): "left", (0, 1): "right", (1, -1): "bottom",
+                        (1, 1): "top"}[(k, side)] + " edge")
+            at.append((g if e == "0" else f"{e} + {g}") if side < 0 else
+                      (f"-{g}" if e == "0" else f"{e} - {g}"))
+            said.append({(0, -1): "left", (0, 1): "right", (1, -1): "bottom",
+                         (1, 1): "top"}[(k, side)])
+        pts = [_pt((m.center[0] - ref.center[0], m.center[1] - ref.center[1])) for m in rest]
+        offs = ", ".join(pts)
+        # each hole's turn of the loop: its offset (a countersink on some, a label)
+        turn = {id(m): (("c.x", p[1:-1].split(", ")[0]), ("c.y", p[1:-1].split(", ")[1]))
+                for m, p in zip(rest, pts)}
+        edges = [x for x in reversed(said) if x != "centre line"]
+        where = f"the {' '.join(edges)} corner" if len(edges) == 2 else \
+            f"the {edges[0]} edge, about the centre line" if edges else "the centre"
+        self.w.emit(depth, f"# {len(rest)} holes in no pattern (a board's): one set, from "
+                           f"{where}")
+        self.w.emit(depth, f"for c in [{offs}] {{")
+        self.sunk_as(rest)
+        self.hole_block(depth + 1, hn, sh, f"({at[0]} + c.x, {at[1]} + c.y)", sizes,
+                        lambda m: turn[id(m)])
+        self.w.emit(depth, "}")
