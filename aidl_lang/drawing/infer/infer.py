@@ -531,12 +531,10 @@ class _Part(_Anchored, _MakerFeatures, _Groups):
             return {"radius": self.p(base + "_radius", a["radius"])}
         return {}
 
-    def pattern(self, depth: int, g: list, body, centres: list) -> bool:
+    def _corner_set(self, depth: int, g: list, body, sh, base: str, cs: list) -> bool:
+        """Four holes at the corners of the body, centred on it, as a corner set (a loop over
+        ``sx``, ``sy`` with the inset from the edges); False when they are not one."""
         w = self.w
-        cs = [sh.center for sh in g]
-        sh = g[0]
-        base = _hole_name(sh)
-        # four at the corners of the body, centred on it
         mid_all = (sum(c[0] for c in cs) / len(cs), sum(c[1] for c in cs) / len(cs))
         if len(g) == 4 and body is not None and body[0].kind != "Circle" and \
                 self.at_corners(g, mid_all):
@@ -577,7 +575,12 @@ class _Part(_Anchored, _MakerFeatures, _Groups):
                     w.emit(depth, "}")
                     self.stats.patterns["corner"] += 1
                     return True
-        # a bolt circle: circles evenly round a centre, its count a param
+        return False
+
+    def _bolt_circle(self, depth: int, sh, cs: list, centres: list) -> bool:
+        """Circles evenly round a centre as a bolt circle (its count, diameter and first
+        hole's angle params); False when they are not one."""
+        w = self.w
         if sh.kind == "Circle":
             pol = _polar(cs)
             sq = _grid(cs) if len(cs) == 4 else None
@@ -603,6 +606,19 @@ class _Part(_Anchored, _MakerFeatures, _Groups):
                 centres.append(C)
                 self.stats.patterns["bolt circle"] += 1
                 return True
+        return False
+
+    def pattern(self, depth: int, g: list, body, centres: list) -> bool:
+        w = self.w
+        cs = [sh.center for sh in g]
+        sh = g[0]
+        base = _hole_name(sh)
+        # four at the corners of the body, centred on it
+        if self._corner_set(depth, g, body, sh, base, cs):
+            return True
+        # a bolt circle: circles evenly round a centre, its count a param
+        if self._bolt_circle(depth, sh, cs, centres):
+            return True
         # a pair placed symmetrically about the body's centre (mirrored about its axis)
         if len(g) == 2 and body is not None:
             B = body[0].center
