@@ -947,7 +947,7 @@ def synthesize(t) -> str:
 
 
 def _synthesized_entry(t) -> Entry:
-    src = synthesize(t)
+    src = page_program(synthesize(t))
     purpose = purpose_of(t.doc)
     return Entry(f"generator/{_slug(t.name)}", title_of(t.name), purpose, "generator", src,
                  param_rows(src), _tags(t.name, src, modules=[t.module]),

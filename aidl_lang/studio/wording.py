@@ -36,14 +36,29 @@ _AUTHOR_ONLY = [re.compile(p) for p in [
 ]]
 
 
+def _outside_quotes(text: str, sep: str) -> list[str]:
+    """``text`` split at each ``sep`` that is not between backticks."""
+    out, start, inside, i = [], 0, False, 0
+    while i < len(text):
+        if text[i] == "`":
+            inside = not inside
+        elif not inside and text.startswith(sep, i):
+            out.append(text[start:i])
+            start = i + len(sep)
+            i = start
+            continue
+        i += 1
+    return out + [text[start:]]
+
+
 def _plain(clause: str) -> str:
     """One ``; ``-separated clause without its code advice: a conditional clause (``if ... is
     meant, write `X(...)```) goes whole; else its ``, ``-separated parts that hold code."""
     if not _has_code(clause):
         return clause
-    if re.match(r"\s*(?:if|else)\b", clause):
+    if re.match(r"\s*(?:if|else|write|add|declare|name)\b", clause):
         return ""
-    parts = [q for q in re.split(r",\s+", clause) if not _has_code(q)]
+    parts = [q for q in _outside_quotes(clause, ", ") if not _has_code(q)]
     if parts and re.match(r"\s*or\b", parts[0]):
         return ""
     return ", ".join(parts)
@@ -59,7 +74,7 @@ _PHRASES: list[tuple[re.Pattern, str]] = [(re.compile(p), r) for p, r in [
     (r"`?aidl render --layout sheet`?", "“Nest the parts on sheets”"),
     (r"`?--layout sheet`?", "“Nest the parts on sheets”"),
     # the solver's freedom summary
-    (r",? see --dof", ""),
+    (r"(?:,\s*|\s|^)see --dof", ""),
     # the evaluation budget: a visitor cannot raise it
     (r"build less or raise the budget \(`--budget \d+`\)", "build less"),
     (r",? ?(?:or )?raise (?:the budget|every figure) with `--budget \d+`(?: \(or more\))?",
@@ -78,6 +93,7 @@ _PHRASES: list[tuple[re.Pattern, str]] = [(re.compile(p), r) for p, r in [
     (r"\(?`aidl docs ([^`]+)`\)?", r"the reference of \1"),
     # any other option left: never a flag on the page
     (r"\s?\(?--[a-z][\w-]*(?:[ =][\w.,x]+)?\)?", ""),
+    (r"\s?``", ""),                              # (a quoted flag, now gone)
 ]]
 
 def for_page(text: str | None) -> str | None:
@@ -89,7 +105,7 @@ def for_page(text: str | None) -> str | None:
         text = p.sub(r, text)
     for p in _AUTHOR_ONLY:
         text = p.sub("", text)
-    clauses = [_plain(c) for c in text.split("; ")]
+    clauses = [_plain(c) for c in _outside_quotes(text, "; ")]
     text = "; ".join(re.sub(r"^\s*else\s+", "", c) for c in clauses if c.strip())
     text = _QUOTED.sub(lambda m: f"“{m.group(1)}”", text)
     text = re.sub(r" {2,}", " ", text)
@@ -119,9 +135,23 @@ def page_answer(obj, key: str | None = None):
 _COMMAND_COMMENT = re.compile(r"^\s*#\s*(?:aidl\s|Try:|\$ aidl|python\s).*$|^\s*#.*\s--[a-z][\w-]*.*$")
 
 
+# a command line inside a comment's sentence, said as what the page has (a line break and its
+# `#` may fall inside the phrase: `aidl render\n# --assembled`)
+_NL = r"\s*(?:\n#\s*)?"
+_COMMENT_PHRASES = [(re.compile(p), r) for p, r in [
+    (rf"\(`aidl{_NL}render{_NL}--assembled`\)", "(the Assembled view)"),
+    (rf"`aidl{_NL}parts`{_NL}lists them", "the cutting sheet lists them"),
+    (rf"`--kerf{_NL}([\d.]+) ?mm`", r"a kerf of \1 mm (Material and machine)"),
+]]
+
+
 def page_program(source: str) -> str:
     """``source`` without its comment lines that are command lines (``#   aidl render
-    x.aidl -o x.png``, ``# Try: --set bolts=5``): the studio's visitor has sliders."""
+    x.aidl -o x.png``, ``# Try: --set bolts=5``), and a command line in a comment's sentence
+    said as what the page has (``(`aidl render --assembled`)``: the Assembled view): the
+    studio's visitor has sliders."""
+    for p, r in _COMMENT_PHRASES:
+        source = p.sub(r, source)
     lines = source.splitlines(keepends=True)
     kept = [ln for ln in lines if not _COMMAND_COMMENT.match(ln)]
     return "".join(kept)
