@@ -37,21 +37,30 @@ function init() {
   scene.add(camera);
   const controls = new OrbitControls(camera, r.domElement);
   controls.enableDamping = false;
-  // a touch screen: one finger scrolls the page over the view, two fingers pinch to zoom and
-  // turn it (OrbitControls sets touch-action none; the page's scroll gets one finger back)
-  controls.touches = { ONE: null, TWO: THREE.TOUCH.DOLLY_ROTATE };
-  r.domElement.style.touchAction = "pan-x pan-y";
-  r.domElement.addEventListener("touchmove", (e) => { if (e.touches.length > 1) e.preventDefault(); },
-                                { passive: false });
+  // a page that scrolls (aidl studio on a phone: data-touch="scroll"): one finger scrolls the
+  // page over the view, two fingers pinch to zoom and turn it (OrbitControls sets touch-action
+  // none; the page's scroll gets one finger back). aidl serve's fixed page: one finger turns
+  if (host.dataset.touch === "scroll") {
+    controls.touches = { ONE: null, TWO: THREE.TOUCH.DOLLY_ROTATE };
+    r.domElement.style.touchAction = "pan-x pan-y";
+    r.domElement.addEventListener("touchmove", (e) => { if (e.touches.length > 1) e.preventDefault(); },
+                                  { passive: false });
+  }
   // drawn on change only (a camera move, a model, a resize): no frame while nothing moves
-  controls.addEventListener("change", redraw);
+  controls.addEventListener("change", () => redraw());
   Object.assign(state, { renderer: r, scene, camera, controls });
   new ResizeObserver(resize).observe(host);
   resize();
 }
 
-// one frame at the next repaint, however many changes ask for it before then
-function redraw() {
+// one frame at the next repaint, however many changes ask for it before then (`now`: at once,
+// a new model: on the screen when `loaded` counts it)
+function redraw(now = false) {
+  if (now && state.renderer) {
+    state.renderer.render(state.scene, state.camera);
+    window.aidl3d.frames += 1;
+    return;
+  }
   if (state.pending || !state.renderer) return;
   state.pending = true;
   requestAnimationFrame(() => {
@@ -176,8 +185,8 @@ async function load(url, opts = {}) {   // opts.reframe: a new design, look at a
     // (the old model was all in view, the new one is not: not when the user zoomed in)
     if (!state.framed || (before <= 1 && reach() > 1)) { frame(); state.framed = true; }
     Object.assign(window.aidl3d, { parts, colours, error: null });
+    redraw(true);
     window.aidl3d.loaded += 1;
-    redraw();
   } catch (e) {
     window.aidl3d.error = String(e && e.message || e);
   }
