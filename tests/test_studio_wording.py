@@ -76,6 +76,11 @@ def test_an_answer_is_reworded_in_its_texts_only():
     assert got["params"] == answer["params"] and got["diagnostics"][0]["rendered"] == "--> `x`"
     assert got["diagnostics"][0]["message"] == "the field “w” = “95mm”: too big"
     assert got["diagnostics"][0]["hint"] == "" and got["notes"] == ["a"]
+    # an error of the program being edited keeps its code (the name it meant, its arguments)
+    error = {"severity": "error", "message": "unknown function `divider_trey`",
+             "hint": "did you mean `divider_tray`? `divider_tray(rows=2) -> assembly`; see --dof"}
+    assert page_answer({"diagnostics": [error]})["diagnostics"][0] == {
+        **error, "hint": "did you mean `divider_tray`? `divider_tray(rows=2) -> assembly`"}
 
 
 def test_the_gallerys_programs_hold_no_command_line():

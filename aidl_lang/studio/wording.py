@@ -12,7 +12,8 @@ server's :func:`aidl_lang.mcp.wording.for_agents` words the same phrases for age
 
 :func:`page_answer` rewords the texts of a worker's answer (``message``, ``hint``, ``error``,
 ``text``, ``summary``, ``notes``, ``import_error``; never the SVG, the program or a rendered
-source excerpt).  :func:`page_program` drops a gallery program's comment lines that are
+source excerpt); an error's message and hint keep their code (the visitor is editing the
+program: ``did you mean `divider_tray`? `divider_tray(length=...)```), its options reworded.  :func:`page_program` drops a gallery program's comment lines that are
 command lines (``# aidl render tray.aidl --assembled -o tray.png``, ``# Try: --set bolts=5``).
 """
 from __future__ import annotations
@@ -96,34 +97,41 @@ _PHRASES: list[tuple[re.Pattern, str]] = [(re.compile(p), r) for p, r in [
     (r"\s?``", ""),                              # (a quoted flag, now gone)
 ]]
 
-def for_page(text: str | None) -> str | None:
-    """``text`` written for the studio's page (see the module text); None stays None."""
+def for_page(text: str | None, code: bool = False) -> str | None:
+    """``text`` written for the studio's page (see the module text); None stays None.
+    ``code``: the text of an error in the program the visitor is editing (an unknown name, a
+    call's arguments): only the command line's options are reworded, its code stays."""
     if not text:
         return text
     text = for_forms(text)
     for p, r in _PHRASES:
         text = p.sub(r, text)
+    if code:
+        return re.sub(r"\s+([,;.:)])", r"\1", re.sub(r" {2,}", " ", text)).strip(" ;,")
     for p in _AUTHOR_ONLY:
         text = p.sub("", text)
     clauses = [_plain(c) for c in _outside_quotes(text, "; ")]
     text = "; ".join(re.sub(r"^\s*else\s+", "", c) for c in clauses if c.strip())
     text = _QUOTED.sub(lambda m: f"“{m.group(1)}”", text)
     text = re.sub(r" {2,}", " ", text)
-    return re.sub(r"\s+([,;.:)])", r"\1", text).strip()
+    return re.sub(r"\s+([,;.:)])", r"\1", text).strip(" ;,")
 
 
 # the answer's keys whose strings a visitor reads
 _TEXTS = frozenset(("message", "hint", "error", "text", "summary", "notes", "import_error",
                     "problem"))
 # never reworded: pictures, programs, source excerpts
-_KEEP = frozenset(("svg", "source", "program", "code", "rendered", "values", "params",
-                   "clamped", "dropped", "span"))
+_KEEP = frozenset(("svg", "source", "program", "code", "rendered", "values", "clamped",
+                   "dropped", "span"))
 
 
 def page_answer(obj, key: str | None = None):
     """``obj`` (a worker's JSON-ready answer) with the texts a visitor reads reworded by
     :func:`for_page`; bytes, numbers, pictures and programs as they are."""
     if isinstance(obj, dict):
+        if obj.get("severity") == "error" and "message" in obj:     # a diagnostic of the code
+            return {k: for_page(v, code=True) if k in ("message", "hint") and isinstance(v, str)
+                    else v if k in _KEEP else page_answer(v, k) for k, v in obj.items()}
         return {k: v if k in _KEEP else page_answer(v, k) for k, v in obj.items()}
     if isinstance(obj, list):
         return [page_answer(x, key) for x in obj]
