@@ -107,14 +107,14 @@ def for_page(text: str | None, code: bool = False) -> str | None:
     for p, r in _PHRASES:
         text = p.sub(r, text)
     if code:
-        return re.sub(r"\s+([,;.:)])", r"\1", re.sub(r" {2,}", " ", text)).strip(" ;,")
+        return re.sub(r"\s+([,;:)]|\.(?!\.))", r"\1", re.sub(r" {2,}", " ", text)).strip(" ;,")
     for p in _AUTHOR_ONLY:
         text = p.sub("", text)
     clauses = [_plain(c) for c in _outside_quotes(text, "; ")]
     text = "; ".join(re.sub(r"^\s*else\s+", "", c) for c in clauses if c.strip())
     text = _QUOTED.sub(lambda m: f"“{m.group(1)}”", text)
     text = re.sub(r" {2,}", " ", text)
-    return re.sub(r"\s+([,;.:)])", r"\1", text).strip(" ;,")
+    return re.sub(r"\s+([,;:)]|\.(?!\.))", r"\1", text).strip(" ;,")
 
 
 # the answer's keys whose strings a visitor reads
