@@ -44,11 +44,19 @@ def bad(text: str) -> bool:
     return bool(FLAG.search(text) or CODE.search(text) or "`" in text)
 
 
+def kinds(text: str) -> set:
+    """What a text holds that a visitor cannot use: an option, code, a name in backticks."""
+    return {k for k, hit in (("option", FLAG.search(text)), ("code", CODE.search(text)),
+                             ("backticks", "`" in text)) if hit}
+
+
 def main() -> int:
     folder = tempfile.mkdtemp(prefix="aidl-wording-")
     sessions: OrderedDict = OrderedDict()
     ends = before = after = 0
     first_before, first_after = [], []
+    counts: dict = {}
+    said: dict = {}
     t0 = time.process_time()
     for e in gallery.entries():
         for p in e.params:
@@ -65,9 +73,13 @@ def main() -> int:
                 for answer in got:
                     raw = compiler.hide_paths(answer, folder)
                     for t in texts(raw):
+                        for k in kinds(t):
+                            counts[k] = counts.get(k, 0) + 1
                         if bad(t):
                             before += 1
                             first_before.append((e.id, p["name"], end, t))
+                            if FLAG.search(t) or CODE.search(t):
+                                said.setdefault(re.sub(r"[\d.]+", "N", t)[:60], t)
                     for t in texts(page_answer(raw)):
                         if bad(t):
                             after += 1
@@ -75,8 +87,11 @@ def main() -> int:
     print(f"{ends} slider ends, {time.process_time() - t0:.1f} CPU-s")
     print(f"texts with an option or code: {before} as the compiler writes them, "
           f"{after} as the page shows them")
-    for row in first_before[:20]:
-        print("  before:", row)
+    print("  as the compiler writes them:", counts)
+    from aidl_lang.studio.wording import for_page
+    for t in list(said.values())[:40]:
+        print("  before:", t)
+        print("  page:  ", for_page(t))
     for row in first_after[:20]:
         print("  after: ", row)
     return 1 if after else 0

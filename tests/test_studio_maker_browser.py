@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import io
 import re
+import time
 from pathlib import Path
 
 import pytest
@@ -68,6 +69,10 @@ def opened(chromium, url: str, how: dict, eid: str, locale: str = "en-US"):
     page.on("response", lambda r: page.refused.append((r.status, r.url))
             if r.status in (429, 503) else None)
     page.refused = []
+    page.asked = []         # (seconds, path) of every compile request the page sends
+    page.on("request", lambda r: page.asked.append((time.monotonic(), r.url.split("/api/", 1)[1]))
+            if "/api/" in r.url and r.url.rsplit("/", 1)[1].split("?")[0] in ("view", "glb", "sweep")
+            else None)
     page.goto(url)
     page.wait_for_function("() => window.studio && window.studio.ready && window.studio.view"
                            " && window.studio.view.ok", timeout=HANG)
@@ -266,6 +271,12 @@ def test_a_long_drag_stays_under_the_rate_limit(server, chromium, tmp_path):
         assert sent > 300
         settled(page)
         assert page.refused == []                          # no 429, no 503
+        # what the page sent: in any 10 s, at most 60 % of the rate and a burst of 10
+        times = [t for t, _ in page.asked]
+        most = max(sum(1 for u in times if t <= u < t + 10) for t in times)
+        print(f"drag: {sent} moves, {len(times)} requests "
+              f"({sum(1 for _, u in page.asked if u == 'view')} previews), at most {most} in 10 s")
+        assert most <= 46
         want = float(page.input_value('#params input[name="length-value"]'))
         assert drawn(page, "length") == pytest.approx(want)
         with page.expect_download() as got:

@@ -34,6 +34,9 @@ def _has_code(text: str) -> bool:
 # advice in words that only a program's author can follow
 _AUTHOR_ONLY = [re.compile(p) for p in [
     r",? derive the spacing from the param so that the design follows it",
+    # a hole cut by its own solid only: where it is declared is the program's
+    r"declare the hole in `[^`]*`, the common parent, so that it cuts everything united "
+    r"there, or (?=move)",
 ]]
 
 
