@@ -25,7 +25,7 @@ from ..serve.wording import for_forms
 # code: a backticked call, assignment or option (`AllowOverlap(a, b)`, `min=`, `NAME = `), a
 # construct's name (`Place`, `Drawing2D`) or a command (`aidl ...`); a quoted name of the
 # visitor's design (`plate.h`) is no code
-_CODE = re.compile(r"[^`]*[(=][^`]*|[A-Z]\w*|aidl .*")
+_CODE = re.compile(r"[^`]*[(=][^`]*|[A-Z]\w*|aidl .*|(?:min_wall|thickness|kerf|units) .*")
 _QUOTED = re.compile(r"`([^`\n]*)`")
 
 
@@ -37,16 +37,22 @@ _AUTHOR_ONLY = [re.compile(p) for p in [
     # a hole cut by its own solid only: where it is declared is the program's
     r"declare the hole in `[^`]*`, the common parent, so that it cuts everything united "
     r"there, or (?=move)",
+    r",? or declare it in the solid it should cut",
+    r",? or, if they are separate parts, make the structure an `assembly`",
+    # an example in code, in parentheses: "move the hole inside `p` (for example `X(a, b)`)"
+    r"\s*\((?:for example|e\.g\.) `[^`]*`[^()]*\)",
 ]]
 
 
 def _outside_quotes(text: str, sep: str) -> list[str]:
-    """``text`` split at each ``sep`` that is not between backticks."""
-    out, start, inside, i = [], 0, False, 0
+    """``text`` split at each ``sep`` that is neither between backticks nor in parentheses."""
+    out, start, inside, depth, i = [], 0, False, 0, 0
     while i < len(text):
         if text[i] == "`":
             inside = not inside
-        elif not inside and text.startswith(sep, i):
+        elif not inside and text[i] in "()":
+            depth = max(0, depth + (1 if text[i] == "(" else -1))
+        elif not inside and depth == 0 and text.startswith(sep, i):
             out.append(text[start:i])
             start = i + len(sep)
             i = start
@@ -60,7 +66,7 @@ def _plain(clause: str) -> str:
     meant, write `X(...)```) goes whole; else its ``, ``-separated parts that hold code."""
     if not _has_code(clause):
         return clause
-    if re.match(r"\s*(?:if|else|write|add|declare|name)\b", clause):
+    if re.match(r"\s*(?:if|else|or|write|add|declare|name)\b", clause):
         return ""
     parts = [q for q in _outside_quotes(clause, ", ") if not _has_code(q)]
     if parts and re.match(r"\s*or\b", parts[0]):
