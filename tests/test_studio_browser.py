@@ -302,7 +302,7 @@ def test_a_visitors_program_is_swept_and_its_slider_marks_the_bad_range():
         assert box["x"] + box["width"] == pytest.approx(track["x"] + track["width"] - thumb / 2,
                                                         abs=1.5)
         title = zone.get_attribute("title")
-        assert title.startswith(f"above {hi:g} mm: a wall of `plate`") and "cuts nothing" in title
+        assert title.startswith(f"above {hi:g} mm: a wall of “plate”") and "cuts nothing" in title
         assert page.inner_text('.param[data-name="off"] .unit') == f"mm (0–40, clean 0–{hi:g})"
         # its accessible description names the clean range and what is past it
         slider = page.locator(SLIDER)

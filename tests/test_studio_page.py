@@ -214,7 +214,7 @@ def test_slider_ends_and_an_off_grid_default_are_exact(server, browser):
     page = opened(browser, server, DESKTOP)
     set_program(page, SLIDER)
     r = page.locator('#params input[type=range][name="w"]')
-    num = page.locator('#params input[type=number][name="w-value"]')
+    num = page.locator('#params input[name="w-value"]')
     assert "(0.4–480)" in page.inner_text('#params .param[data-name="w"] .unit')
 
     def press(key: str) -> float:

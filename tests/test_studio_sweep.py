@@ -66,10 +66,11 @@ def test_the_sweep_answer_carries_each_sliders_clean_range_and_what_is_past_it(c
     assert off["below"] is None
     above = off["above"]
     assert above["at"] == hi and above["code"] == "W0507"
-    assert above["text"].startswith(f"above {hi:g} mm: a wall of `plate`")
-    assert "hole `plate.h`" in above["text"] and "thinner than 0.5 mm" in above["text"]
+    # as the page says it (aidl_lang/studio/wording.py): names in quotation marks, no code
+    assert above["text"].startswith(f"above {hi:g} mm: a wall of “plate”")
+    assert "hole “plate.h”" in above["text"] and "thinner than 0.5 mm" in above["text"]
     # the far end says what it does there: the hole cuts nothing
-    assert "at 40 mm: hole `plate.h` cuts nothing" in above["text"]
+    assert "at 40 mm: hole “plate.h” cuts nothing" in above["text"]
     # the radius: 5 mm leaves a 15 mm wall to the edge at off = 10 mm: clean across its range
     assert got["params"]["r"]["clean"] == [1.0, 5.0]
     assert got["params"]["r"]["above"] is None and got["params"]["r"]["below"] is None

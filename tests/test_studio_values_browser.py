@@ -43,7 +43,7 @@ const read = () => {
   const sliders = {}, off = [];
   for (const row of document.querySelectorAll('#params .param')) {
     const r = row.querySelector('input[type=range]'), c = row.querySelector('input[type=checkbox]');
-    const n = row.querySelector('input[type=number]');
+    const n = row.querySelector('input.value');
     if (r) {       // the value as the field says it; the slider's thumb on its nearest step
       sliders[row.dataset.name] = Number(n.value);
       // the range input's step is "any" (the page puts it on its stops): half the param's step

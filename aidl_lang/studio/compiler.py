@@ -101,6 +101,7 @@ def handler(budget: float = 1.0):
     """The worker's request handler (run once in the new process); ``budget``: the factor of
     the default evaluation budget every compile gets (``aidl studio --budget``)."""
     from ..limits import DEFAULT_BUDGET
+    from .wording import page_answer
     # trimesh (1.5 s to import on a busy machine) and Manifold now, in the new process, not
     # on its first 3D view
     from ..output.writers.mesh import _trimesh
@@ -141,6 +142,8 @@ def handler(budget: float = 1.0):
             answer = out_of_memory_answer(request)
         if kind in ("view", "download", "glb", "sweep") and len(request) > 2:
             answer = hide_paths(answer, request[1] if kind == "download" else request[2])
+        if isinstance(answer, dict):    # every text a visitor reads, worded for the page
+            answer = page_answer(answer)
         if rss() > RETIRE_RSS and isinstance(answer, dict):
             answer["retire"] = True     # give the memory back: a fresh worker takes over
         return answer
@@ -558,7 +561,8 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
     if not res.ok:
         return {"error": "the program does not compile with these values",
                 "diagnostics": _errors(res)[:8]}
-    name = res.compiled.model.root.name if res.compiled.model is not None else "part"
+    name = file_base(settings.get("name")) or (
+        res.compiled.model.root.name if res.compiled.model is not None else "part")
     options = {"thickness": thickness, "machine": machine, "assembled": assembled, "page": page}
     media = FORMATS[suffix].media
     try:
@@ -572,6 +576,8 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
                 for i, data in enumerate(sheets, 1):
                     z.writestr(f"{name}-sheet-{i}{suffix}", data)
             return buf.getvalue(), f"{name}-sheets.zip", "application/zip"
+        if suffix == ".stl" and assembled:
+            return closed_stl(res.output, thickness), f"{name}{suffix}", media
         if FORMATS[suffix].module == "gcode" and not assembled:
             return gcode_at_origin(res.output, kerf, suffix, options), f"{name}{suffix}", media
         return res.encode(suffix, kerf, **options), f"{name}{suffix}", media
@@ -581,6 +587,34 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
             report_out_of_budget(res.sink, e.budget)
             return {"error": str(e), "diagnostics": _errors(res)}
         return {"error": str(e)}
+
+
+def file_base(text) -> str:
+    """A download's name as the page asks for it (the design and its changed values:
+    ``divider_tray-rows_5-cols_2``): letters, digits, ``.``, ``_``, ``-``, at most 96; "" for
+    none."""
+    base = re.sub(r"[^\w.-]+", "_", str(text or ""))[:96].strip("._-")
+    return base
+
+
+def closed_stl(output, thickness=None) -> bytes:
+    """The assembled product as one closed STL: every placed part's body joined by Manifold's
+    union (the bodies of a finger box meet face to face at every finger: written side by
+    side, their shared faces made 852 edges of more than two faces once read back)."""
+    import manifold3d as mf
+    import numpy as np
+
+    from ..output.writers.mesh import _trimesh, bodies
+    trimesh = _trimesh()
+    solids = [mf.Manifold(mf.Mesh(vert_properties=np.asarray(m.vertices, dtype=np.float32),
+                                  tri_verts=np.asarray(m.faces, dtype=np.uint32)))
+              for _, m in bodies(output, thickness, assembled=True)]
+    if not solids or any(m.status() != mf.Error.NoError for m in solids):
+        from ..output.writers.mesh import to_stl    # (a bent body Manifold does not take)
+        return to_stl(output, thickness, assembled=True)
+    mesh = mf.Manifold.batch_boolean(solids, mf.OpType.Add).to_mesh64()
+    return trimesh.Trimesh(np.asarray(mesh.vert_properties)[:, :3],
+                           np.asarray(mesh.tri_verts), process=False).export(file_type="stl")
 
 
 def _errors(res) -> list[dict]:

@@ -53,6 +53,7 @@ from pathlib import Path
 
 from .. import ast as A
 from ..sources import EXAMPLES     # aidl_lang/examples: shipped in the wheel
+from .wording import page_program
 
 KINDS = ("example", "generator")
 # the gallery's own programs of some examples/generators files (same name): their arguments
@@ -878,7 +879,7 @@ def _example_entry(p: Path) -> Entry:
     """``example/NAME`` of a top-level example file (its own params; counts from 1,
     :func:`counts_from_one`)."""
     raw, src = _own_source(p)
-    src = counts_from_one(src, str(p))
+    src = page_program(counts_from_one(src, str(p)))
     prog = _parse_or_none(src, str(p))
     gens = renderable_generators()
     shown = p.stem if p.stem in gens and prog and _calls(prog, {p.stem}) else ""
@@ -903,6 +904,7 @@ def _generator_example_entry(p: Path) -> Entry:
             src = lift_params(src, str(p), t) or src
         except ValueError:
             pass
+    src = page_program(src)
     prog = _parse_or_none(src, str(p))
     shown = p.stem if p.stem in gens and prog and _calls(prog, {p.stem}) else ""
     purpose = purpose_of(header_comment(raw))
@@ -946,7 +948,7 @@ def synthesize(t) -> str:
 
 
 def _synthesized_entry(t) -> Entry:
-    src = synthesize(t)
+    src = page_program(synthesize(t))
     purpose = purpose_of(t.doc)
     return Entry(f"generator/{_slug(t.name)}", title_of(t.name), purpose, "generator", src,
                  param_rows(src), _tags(t.name, src, modules=[t.module]),

@@ -12,7 +12,7 @@ const host = document.getElementById("viewer3d");
 const state = { renderer: null, scene: null, camera: null, controls: null, root: null,
                 framed: false, seq: 0 };
 // read by the browser test: loads finished, the part names and their colours, the last error
-window.aidl3d = { loaded: 0, parts: [], colours: {}, error: null, load, frame, clear, reach,
+window.aidl3d = { loaded: 0, frames: 0, parts: [], colours: {}, error: null, load, frame, clear, reach,
                  framed: 0, camera: () => state.camera ? state.camera.position.toArray() : null };
 
 function init() {
@@ -37,10 +37,37 @@ function init() {
   scene.add(camera);
   const controls = new OrbitControls(camera, r.domElement);
   controls.enableDamping = false;
+  // a page that scrolls (aidl studio on a phone: data-touch="scroll"): one finger scrolls the
+  // page over the view, two fingers pinch to zoom and turn it (OrbitControls sets touch-action
+  // none; the page's scroll gets one finger back). aidl serve's fixed page: one finger turns
+  if (host.dataset.touch === "scroll") {
+    controls.touches = { ONE: null, TWO: THREE.TOUCH.DOLLY_ROTATE };
+    r.domElement.style.touchAction = "pan-x pan-y";
+    r.domElement.addEventListener("touchmove", (e) => { if (e.touches.length > 1) e.preventDefault(); },
+                                  { passive: false });
+  }
+  // drawn on change only (a camera move, a model, a resize): no frame while nothing moves
+  controls.addEventListener("change", () => redraw());
   Object.assign(state, { renderer: r, scene, camera, controls });
   new ResizeObserver(resize).observe(host);
   resize();
-  r.setAnimationLoop(() => { controls.update(); r.render(scene, camera); });
+}
+
+// one frame at the next repaint, however many changes ask for it before then (`now`: at once,
+// a new model: on the screen when `loaded` counts it)
+function redraw(now = false) {
+  if (now && state.renderer) {
+    state.renderer.render(state.scene, state.camera);
+    window.aidl3d.frames += 1;
+    return;
+  }
+  if (state.pending || !state.renderer) return;
+  state.pending = true;
+  requestAnimationFrame(() => {
+    state.pending = false;
+    state.renderer.render(state.scene, state.camera);
+    window.aidl3d.frames += 1;
+  });
 }
 
 function resize() {
@@ -50,6 +77,7 @@ function resize() {
   state.renderer.domElement.style.height = "100%";
   state.camera.aspect = w / h;
   state.camera.updateProjectionMatrix();
+  redraw();
 }
 
 function onKey(e) {
@@ -67,6 +95,7 @@ function onKey(e) {
   else return;
   e.preventDefault();
   c.update();
+  redraw();
 }
 
 // how far the product reaches across the view: the largest |x| or |y| of its bounding box's
@@ -103,6 +132,7 @@ function frame() {    // look at the whole product from above its front-left cor
   state.camera.updateProjectionMatrix();
   state.controls.target.copy(c);
   state.controls.update();
+  redraw();
 }
 
 function clear() {    // no model on the screen (aidl studio: another design is being built)
@@ -111,6 +141,7 @@ function clear() {    // no model on the screen (aidl studio: another design is 
     state.scene.remove(state.root);
     state.root.traverse((o) => { if (o.geometry) o.geometry.dispose(); });
     state.root = null;
+    redraw();
   }
   Object.assign(window.aidl3d, { parts: [], colours: {} });
 }
@@ -154,6 +185,7 @@ async function load(url, opts = {}) {   // opts.reframe: a new design, look at a
     // (the old model was all in view, the new one is not: not when the user zoomed in)
     if (!state.framed || (before <= 1 && reach() > 1)) { frame(); state.framed = true; }
     Object.assign(window.aidl3d, { parts, colours, error: null });
+    redraw(true);
     window.aidl3d.loaded += 1;
   } catch (e) {
     window.aidl3d.error = String(e && e.message || e);

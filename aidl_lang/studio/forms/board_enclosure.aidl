@@ -4,8 +4,8 @@ import "std/enclosures.aidl"
 
 # How the arguments depend on each other: the board sits on the standoffs (1.6 mm thick) and
 # its tallest port (8 mm) stays under the lid, so the box is at least standoff + 9.6 mm deep.
-# With 11 mm the port's wall to the lid stays 0.5 mm (aidl check --sweep: W0507 past
-# standoff + 10.6 mm), and a board under 53 mm tall leaves the standoff holes off the bottom.
+# With 11 mm the port's wall to the lid stays 0.5 mm (checked across the sliders: thinner
+# past standoff + 10.6 mm), and a board under 53 mm tall leaves the standoff holes off the bottom.
 param width = 85 mm, min = 60 mm, max = 340 mm, step = 0.5 mm
 param height = 56 mm, min = 53 mm, max = 224 mm, step = 0.5 mm
 param thickness = 3 mm, min = 1 mm, max = 12 mm, step = 0.5 mm

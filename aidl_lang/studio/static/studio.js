@@ -54,7 +54,9 @@ function status(text) { $("status").textContent = text; }
 // ------------------------------------------------------------------ the program
 function settings() {
   const num = (id) => { const v = $(id).value; return v === "" ? null : Number(v); };
-  return { thickness: num("thickness"), kerf: num("kerf"), machine: $("machine").value || "laser",
+  // the thickness is the design's own `thickness` param (the Material field sets it): the
+  // joints, the 3D view and the 3D files have one thickness (issue 94)
+  return { thickness: null, kerf: num("kerf"), machine: $("machine").value || "laser",
            layout: $("layout").checked, sheet: [num("sheet-w") || 600, num("sheet-h") || 400] };
 }
 
@@ -103,6 +105,27 @@ function setText(p, v) {       // the value as `aidl render --set` takes it
   return fmt(v);
 }
 
+// The server's rate limit (`--rate`, /api/config: "300/minute", "40/10 seconds"): the page's
+// previews and 3D views are spaced so that a visitor who drags a slider for minutes stays
+// at 60 % of it (a drag is coalesced: the values of the moment a request leaves)
+function paceGap() {
+  const text = String((state.config && state.config.limits && state.config.limits.rate) || "300/minute");
+  const m = /(\d+)\s*(?:\/|per)\s*(\d*)\s*(second|minute|hour|day)/i.exec(text);
+  if (!m) return 0;
+  const unit = { second: 1, minute: 60, hour: 3600, day: 86400 }[m[3].toLowerCase()];
+  return (Number(m[2] || 1) * unit * 1000) / (0.6 * Number(m[1]));
+}
+// a burst of 10 goes at once (a click, its 3D), then one every paceGap() ms: in any window of
+// the server's period at most 60 % of its rate and 10 (GCRA: each request reserves its slot)
+async function pace() {
+  const gap = paceGap(), now = performance.now();
+  state.tat = Math.max(state.tat || 0, now);
+  const wait = state.tat - 9 * gap - now;
+  state.tat += gap;
+  if (wait > 0) await new Promise((ok) => setTimeout(ok, wait));
+}
+window.studio.paceGap = paceGap;
+
 function schedule(delay = 200) {
   clearTimeout(state.timer);
   window.studio.idle = false;
@@ -135,6 +158,7 @@ function building2d(on) {
 async function compile() {
   if (state.inflight) { state.again = true; return; }
   state.inflight = true;
+  try { await pace(); } catch (_) { /* never */ }
   const seq = ++state.seq;
   const t0 = performance.now();
   try {
@@ -168,7 +192,11 @@ function answered(view, raw) {
   }
   for (const [name, v] of Object.entries(view.clamped || {})) {
     made[name] = v;
-    if (same(state.values[name], raw[name])) state.values[name] = v;
+    if (same(state.values[name], raw[name])) {
+      state.values[name] = v;
+      const p = (view.params || state.params).find((q) => q.name === name);
+      typedNote(name, `${name} moved to ${fmt(v)}${p && p.unit ? " " + p.unit : ""}: its range follows the other values`);
+    }
   }
   if (view.params) state.params = view.params;
   return sameValues(chosenRaw(made), chosenRaw());
@@ -197,7 +225,7 @@ function show(view, ms) {
   showDiagnostics(diags, view.error);
   window.studio.views += 1;
   window.studio.shownAt[window.studio.views] = performance.now();
-  if (view.ok) { building(true); load3d(); askSweep(); }
+  if (view.ok) { building(true); if (!state.timer && !state.again) load3d(); askSweep(); }
   else {          // the last good model, dimmed like the last good picture, and why
     state.glbSeq += 1;
     building(true);
@@ -306,6 +334,8 @@ $("flat").addEventListener("pointermove", (e) => {
   const last = flat.pointers.get(e.pointerId);
   if (!last) return;
   const now = panePoint(e);
+  // one finger on a touch screen scrolls the page (touch-action: pan-x pan-y), never pans
+  if (e.pointerType === "touch" && flat.pointers.size < 2) { flat.pointers.set(e.pointerId, now); return; }
   if (flat.pointers.size >= 2) {              // pinch: the two first fingers
     flat.pointers.set(e.pointerId, now);
     const [a, b] = [...flat.pointers.values()];
@@ -326,6 +356,8 @@ function flatUp(e) {
   flat.pinch = null;
   if (!flat.pointers.size) $("flat").classList.remove("dragging");
 }
+// two fingers are the picture's (pinch, pan), not the page's: the browser does not scroll them
+$("flat").addEventListener("touchmove", (e) => { if (e.touches.length > 1) e.preventDefault(); }, { passive: false });
 $("flat").addEventListener("pointerup", flatUp);
 $("flat").addEventListener("pointercancel", flatUp);
 $("flat").addEventListener("dblclick", (e) => { if (!e.target.closest(".pane-tools")) flatFit(); });
@@ -346,7 +378,7 @@ function showParams(params) {
   if (key !== state.paramKey) {
     state.paramKey = key;
     form.innerHTML = "";
-    if (!params.length) form.textContent = "This program declares no `param`.";
+    if (!params.length) form.textContent = "This design has no sizes to change.";
     for (const p of params) form.appendChild(control(p));
   }
   for (const p of params) {
@@ -358,6 +390,7 @@ function showParams(params) {
     row.classList.toggle("changed", !same(v, p.default));
   }
   markRanges();
+  bindThickness();
 }
 
 // A slider's stops: its grid (min + k step), its two ends and its default, exact: the range
@@ -427,12 +460,22 @@ function control(p) {
     Object.assign(r, { type: "range", name: p.name, min: p.min, max: p.max, step: "any", id });
     r._param = p;
     const n = document.createElement("input");
-    Object.assign(n, { type: "number", name: p.name + "-value", step: "any" });
+    Object.assign(n, { type: "text", name: p.name + "-value", className: "value", inputMode: "decimal",
+                       spellcheck: false, autocomplete: "off" });
     n.setAttribute("aria-label", `${p.name}${p.unit ? ", " + p.unit : ""}`);
-    const put = (v) => { r.value = v; n.value = v; change(v); pastNote(row, p.name, v); };
-    r.oninput = () => put(snap(r._param, Number(r.value)));
-    stopKeys(r, put);
-    n.onchange = () => { const v = Number(n.value); if (Number.isFinite(v)) put(v); };
+    const put = (v) => { r.value = v; n.value = fmt(v); change(v); pastNote(row, p.name, v); };
+    r.oninput = () => { typedNote(p.name, ""); put(snap(r._param, Number(r.value))); };
+    stopKeys(r, (v) => { typedNote(p.name, ""); put(v); });
+    n.oninput = () => { row._typing = true; };
+    n.onchange = () => {
+      row._typing = false;
+      const [v, said] = typedValue(r._param, n.value);
+      if (v !== null && !said && same(v, Number(r.value))) return;     // (a blur after Enter)
+      typedNote(p.name, said);
+      if (v === null) { n.value = fmt(Number(r.value)); return; }
+      put(v);
+    };
+    n.onkeydown = (e) => { if (e.key === "Enter") { e.preventDefault(); n.dispatchEvent(new Event("change")); } };
     const u = document.createElement("span"); u.className = "unit";
     u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)})`;
     // the track: the slider over the parts of its range the sweep did not find clean
@@ -445,7 +488,10 @@ function control(p) {
     const note = document.createElement("div"); note.className = "sweep-note"; note.id = id + "-sweep";
     r.setAttribute("aria-describedby", note.id);
     line.append(track, n, u);
-    row.appendChild(note);
+    const typed = document.createElement("div"); typed.className = "typed-note"; typed.id = id + "-typed";
+    typed.setAttribute("role", "status");
+    n.setAttribute("aria-describedby", typed.id);
+    row.append(note, typed);
   }
   return row;
 }
@@ -464,10 +510,68 @@ function setControl(row, p, v) {
     // a shown answer holds the sliders' values: the slider in hand is set to what it holds (or
     // to where its range moved it); a number being typed is left alone
     inputs[0].value = v;
-    if (document.activeElement !== inputs[1]) inputs[1].value = v;
+    if (!row._typing) inputs[1].value = fmt(v);
     pastNote(row, p.name, v);
   }
 }
+
+// A number as a visitor types it: "12.5", "12,5" (a comma as the decimal mark, as in de-DE),
+// "1,234.5" or "1.234,5" (grouped), "−3" (a minus sign)
+function parseNumber(text) {
+  let t = String(text).trim().replace(/[\u2212\u2012\u2013]/g, "-").replace(/[\s\u00a0\u202f']/g, "");
+  const c = t.lastIndexOf(","), d = t.lastIndexOf(".");
+  if (c >= 0 && d >= 0) t = c > d ? t.replace(/\./g, "").replace(",", ".") : t.replace(/,/g, "");
+  else if (c >= 0) t = /^-?\d{1,3}(,\d{3}){2,}$/.test(t) ? t.replace(/,/g, "") : t.replace(",", ".");
+  if (!/^[-+]?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?$/i.test(t)) return NaN;
+  return Number(t);
+}
+// the value a typed text gives the param p, and what the page says of it: [value, message]
+// (value null: nothing usable, the field goes back to the slider's value)
+function typedValue(p, text) {
+  const unit = p.unit ? ` ${p.unit}` : "";
+  const x = parseNumber(text);
+  if (!Number.isFinite(x)) return [null, `“${String(text).trim()}” is not a number: ${p.name} stays at ${fmt(state.values[p.name] ?? p.value)}${unit}`];
+  if (x > p.max + 1e-9) return [p.max, `${fmt(p.max)}${unit} is the most: ${p.name} is ${fmt(p.max)}${unit}, not ${fmt(x)}`];
+  if (x < p.min - 1e-9) return [p.min, `${fmt(p.min)}${unit} is the least: ${p.name} is ${fmt(p.min)}${unit}, not ${fmt(x)}`];
+  if (p.kind === "number" && p.step >= 1 && Number.isInteger(p.step) && Number.isInteger(p.min)) {
+    const g = Math.min(p.max, p.min + Math.round((x - p.min) / p.step) * p.step);
+    if (Math.abs(g - x) > 1e-9) return [g, `${p.name} is a whole number of steps of ${fmt(p.step)}: ${fmt(g)}, not ${fmt(x)}`];
+  }
+  return [x, ""];
+}
+function typedNote(name, text) {
+  const row = $("params").querySelector(`[data-name="${CSS.escape(name)}"]`);
+  const el = row && row.querySelector(".typed-note");
+  if (el) el.textContent = text;
+  if (name === (state.thicknessParam && state.thicknessParam.name)) $("thickness-note").textContent = text;
+}
+
+// One thickness (issue 94): a design with a `thickness` param has it set by the Material
+// field too (so the joints, the 3D view and the 3D files follow); a design without one hides
+// the field (its parts' thicknesses are the program's)
+function bindThickness() {
+  const p = state.params.find((q) => q.name === "thickness" && q.kind === "length") || null;
+  state.thicknessParam = p;
+  $("thickness-row").hidden = !p;
+  if (!p) { $("thickness-note").textContent = ""; return; }
+  const v = state.values[p.name] !== undefined ? state.values[p.name] : p.value;
+  if (document.activeElement !== $("thickness")) $("thickness").value = fmt(v);
+  $("thickness").setAttribute("aria-label", `thickness, mm (${fmt(p.min)}–${fmt(p.max)}): the design's thickness param`);
+}
+$("thickness").addEventListener("change", () => {
+  const p = state.thicknessParam;
+  if (!p) return;
+  const [v, said] = typedValue(p, $("thickness").value);
+  typedNote(p.name, said);
+  const row = $("params").querySelector(`[data-name="${CSS.escape(p.name)}"]`);
+  if (v === null) { bindThickness(); return; }
+  $("thickness").value = fmt(v);
+  state.values[p.name] = v;
+  if (row) { setControl(row, p, v); row.classList.toggle("changed", !same(v, p.default)); }
+  schedule(30);
+});
+$("thickness").addEventListener("keydown", (e) => { if (e.key === "Enter") { e.preventDefault(); $("thickness").dispatchEvent(new Event("change")); } });
+$("params").addEventListener("submit", (e) => e.preventDefault());
 
 // ------------------------------------------------------------------ the ranges the sweep found clean
 // After a picture of a program not swept yet, the page asks /api/sweep for it in the background
@@ -588,9 +692,22 @@ function pastNote(row, name, v) {
 $("reset").onclick = () => { state.values = {}; state.paramKey = ""; schedule(0); };
 
 // ------------------------------------------------------------------ 3D and downloads
+// a download's name: the design and the values changed from its own (divider_tray-rows_5-cols_2)
+function downloadName() {
+  const slug = (t) => String(t).toLowerCase().replace(/[^a-z0-9.]+/g, "_").replace(/^_+|_+$/g, "");
+  const base = state.entry ? state.entry.replace(/^.*\//, "") : slug($("title").textContent) || "design";
+  const raw = chosenRaw();
+  const parts = Object.keys(raw).sort().map((k) => {
+    const v = raw[k];
+    return `${slug(k)}_${typeof v === "boolean" ? (v ? "yes" : "no") : typeof v === "number" ? fmt(v) : slug(v)}`;
+  });
+  return [base, ...parts].join("-").slice(0, 96);
+}
+window.studio.downloadName = downloadName;
+
 async function fetchFile(ext, extra = {}) {
-  const r = await post(`/api/download/${ext}`, { sid: state.sid, source: state.source,
-                                                 values: chosen(), settings: { ...settings(), ...extra } }, true);
+  const r = await post(`/api/download/${ext}`, { sid: state.sid, source: state.source, values: chosen(),
+                                                 settings: { ...settings(), name: downloadName(), ...extra } }, true);
   if (!r.ok) {
     const doc = await r.json().catch(() => ({}));
     const msg = (doc.error || `HTTP ${r.status}`) + (doc.diagnostics && doc.diagnostics.length ? ": " + doc.diagnostics[0].message : "");
@@ -608,6 +725,8 @@ async function load3d() {
   // a share link's values are sent once the params are known: its 3D is framed again
   // until a model with all of them is shown (not left framed on the defaults)
   const sent = chosen();
+  await pace();
+  if (seq !== state.glbSeq) return;
   const withLink = !!state.linkValues && state.params.length > 0;   // the link's values were sent
   const reframe = state.reframe || !!state.linkValues;
   try {
@@ -681,7 +800,6 @@ async function download(f) {
     $("download-status").textContent = `${f.ext.toUpperCase()}: ${e.message || e}`;
   }
 }
-$("thickness").addEventListener("change", () => { building(true); load3d(); });     // the 3D panels' thickness
 $("fit3d").onclick = () => { if (window.aidl3d) window.aidl3d.frame(); };
 
 // ------------------------------------------------------------------ the gallery
@@ -734,6 +852,7 @@ function setProgram(source, values, given = null) {
   state.linkValues = null;                  // (a share link sets its own after this)
   state.glbSeq += 1;                        // a 3D still on its way is the old design's
   state.fitNext = true;                     // the flat view shows all of the new design
+  $("download-status").textContent = "";    // the last design's download is not this one's
   building(true, true);
   if (editor) editor.setText(source);
   schedule(0);
@@ -963,7 +1082,6 @@ async function start() {
       const doc = await unpack(m[1]);
       $("title").textContent = doc.title || "Shared design";
       const s = doc.settings || {};
-      if (s.thickness != null) $("thickness").value = s.thickness;
       if (s.kerf != null) $("kerf").value = s.kerf;
       if (s.sheet) { $("sheet-w").value = s.sheet[0]; $("sheet-h").value = s.sheet[1]; }
       if (s.machine) $("machine").value = s.machine;

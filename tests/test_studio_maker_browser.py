@@ -1,0 +1,294 @@
+"""The studio as makers meet it, round four (issue 94), in Debian's Chromium through Playwright:
+one `aidl studio` (two compile workers, a rate limit of 30 requests per 5 s: the page paces
+itself by the rate the server states, so a window of 5 s proves what a minute proves at the
+default 300/minute, in a twelfth of the time), one page per test, at a desktop's 1280 x 800 and a
+phone's 390 x 844 (touch), in en-US and de-DE.
+
+- A typed value is the value used, or a line under the field says what was used: rows (1-12)
+  typed 999 is 12 ("12 is the most"), a height of -20 is 10 mm ("10 mm is the least"), "12,5"
+  is 12.5 (never 125) in both locales; the server drew what the field shows.
+- One thickness: the Material field sets the design's `thickness` param (the slider follows, and
+  the finger box's assembled STL, re-read by trimesh, is closed and its panels that thick); a
+  design without one hides the field.
+- The 3D view draws on change only: no frame in 2 s of idle after its model is shown.
+- Phone: a one-finger swipe over either picture scrolls the page (the picture does not pan); two
+  fingers zoom the flat view; checkboxes 44 px.
+- A scripted drag of one slider for 10 s (two windows of the rate): no answer 429 or 503, and
+  the picture at the end is the slider's; the download is named with the design and its values.
+
+Screenshots: out/studio-maker-*.png.
+"""
+from __future__ import annotations
+
+import io
+import re
+import time
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+OUT = ROOT / "out"
+pytest.importorskip("playwright")
+if not Path("/usr/bin/chromium").exists():
+    pytest.skip("needs Debian's chromium (apt-get install chromium; .ci/run installs it)",
+                allow_module_level=True)
+
+from benchmarks.serve_latency import CHROMIUM, CHROMIUM_ARGS  # noqa: E402
+from benchmarks.studio_server import studio  # noqa: E402
+
+HANG = 180_000          # ms: a guard against a hung page, not a speed limit
+DESKTOP = {"viewport": {"width": 1280, "height": 800}}
+PHONE = {"viewport": {"width": 390, "height": 844}, "has_touch": True, "is_mobile": True,
+         "device_scale_factor": 2}
+
+
+@pytest.fixture(scope="module")
+def server():
+    with studio("--compilers", "2", "--rate", "30/5 seconds") as (url, _proc):
+        yield url
+
+
+@pytest.fixture(scope="module")
+def chromium():
+    from playwright.sync_api import sync_playwright
+    with sync_playwright() as pw:
+        b = pw.chromium.launch(executable_path=CHROMIUM, headless=True, args=CHROMIUM_ARGS)
+        try:
+            yield b
+        finally:
+            b.close()
+
+
+def opened(chromium, url: str, how: dict, eid: str, locale: str = "en-US"):
+    """A new page (its own context: size, touch, locale) with design ``eid`` open, its picture
+    and its 3D shown."""
+    ctx = chromium.new_context(locale=locale, accept_downloads=True, **how)
+    ctx.route("**/api/thumb/**", lambda r: r.abort())      # the gallery's pictures: not here
+    page = ctx.new_page()
+    page.on("response", lambda r: page.refused.append((r.status, r.url))
+            if r.status in (429, 503) else None)
+    page.refused = []
+    page.asked = []         # (seconds, path) of every compile request the page sends
+    page.on("request", lambda r: page.asked.append((time.monotonic(), r.url.split("/api/", 1)[1]))
+            if "/api/" in r.url and r.url.rsplit("/", 1)[1].split("?")[0] in ("view", "glb", "sweep")
+            else None)
+    page.goto(url)
+    page.wait_for_function("() => window.studio && window.studio.ready && window.studio.view"
+                           " && window.studio.view.ok", timeout=HANG)
+    page.keyboard.press("Escape")
+    n = views(page)
+    page.click("#open-gallery")
+    page.click(f'#cards .card[data-id="{eid}"]')
+    settled(page, n)
+    return page
+
+
+def views(page) -> int:
+    return page.evaluate("window.studio.views")
+
+
+def settled(page, n: int | None = None) -> None:
+    cond = ("window.studio.idle && window.studio.view && window.studio.view.ok "
+            "&& window.studio.glbView === window.studio.views")
+    if n is not None:
+        cond += f" && window.studio.views > {n}"
+    page.wait_for_function(f"() => {cond}", timeout=HANG)
+
+
+def drawn(page, name: str) -> float:
+    """The value the server drew param ``name`` with (its answer's params)."""
+    return page.evaluate(f"window.studio.view.params.find((p) => p.name === {name!r}).value")
+
+
+def type_value(page, name: str, text: str) -> None:
+    n = views(page)
+    field = page.locator(f'#params input[name="{name}-value"]')
+    field.fill(text)
+    field.press("Enter")
+    settled(page, n)
+
+
+def note(page, name: str) -> str:
+    return page.inner_text(f'#params .param[data-name="{name}"] .typed-note')
+
+
+def shot(page, name: str) -> None:
+    OUT.mkdir(exist_ok=True)
+    page.screenshot(path=str(OUT / f"studio-maker-{name}.png"))
+
+
+@pytest.mark.parametrize("how,locale", [(DESKTOP, "en-US"), (PHONE, "de-DE")],
+                         ids=["desktop-en", "phone-de"])
+def test_a_typed_value_is_the_value_used_or_said(server, chromium, how, locale):
+    page = opened(chromium, server, how, "generator/divider_tray", locale)
+    try:
+        type_value(page, "rows", "999")
+        assert page.input_value('#params input[name="rows-value"]') == "12"
+        assert "12 is the most" in note(page, "rows")
+        assert drawn(page, "rows") == 12 and page.input_value('input[type=range][name="rows"]') == "12"
+        type_value(page, "height", "-20")
+        assert page.input_value('#params input[name="height-value"]') == "10"
+        assert "10 mm is the least" in note(page, "height")
+        assert drawn(page, "height") == 10
+        assert "12 is the most" in note(page, "rows")      # still said, under its own field
+        type_value(page, "height", "12,5")           # a comma as the decimal mark: 12.5
+        assert page.input_value('#params input[name="height-value"]') == "12.5"
+        assert note(page, "height") == "" and drawn(page, "height") == 12.5
+        type_value(page, "height", "1,234.5")        # grouped (en): 1234.5 -> the most, said
+        assert drawn(page, "height") == 160 and "160 mm is the most" in note(page, "height")
+        page.locator('#params input[name="height-value"]').fill("abc")
+        page.locator('#params input[name="height-value"]').press("Enter")
+        assert "is not a number" in note(page, "height")
+        assert page.input_value('#params input[name="height-value"]') == "160"
+        page.locator('#params .param[data-name="rows"]').scroll_into_view_if_needed()
+        shot(page, f"typed-{'phone' if how is PHONE else 'desktop'}")
+    finally:
+        page.context.close()
+
+
+def test_one_thickness_the_material_field_sets_the_design(server, chromium, tmp_path):
+    import trimesh
+    page = opened(chromium, server, DESKTOP, "generator/finger_box")
+    try:
+        assert page.is_visible("#thickness")
+        assert page.input_value("#thickness") == page.input_value('#params input[name="thickness-value"]')
+        n = views(page)
+        page.fill("#thickness", "4,5")
+        page.press("#thickness", "Enter")
+        settled(page, n)
+        assert drawn(page, "thickness") == 4.5           # the design's param: the joints follow
+        assert page.input_value('#params input[name="thickness-value"]') == "4.5"
+        assert page.evaluate("window.studio.view.values") == {"thickness": "4.5mm"}
+        with page.expect_download() as got:
+            page.click('#downloads button[data-ext="stl"]')
+        assert got.value.suggested_filename == "finger_box-thickness_4.5.stl"
+        path = tmp_path / "box.stl"
+        got.value.save_as(path)
+        mesh = trimesh.load(io.BytesIO(path.read_bytes()), file_type="stl")
+        assert mesh.is_watertight and mesh.volume > 0
+        # every wall 4.5 mm: the box's outside is its inside plus two walls
+        from aidl_lang import api
+        from aidl_lang.studio import gallery
+        res = api.compile(source=gallery.entry("generator/finger_box").source, path="x/main.aidl",
+                          overrides={"thickness": "4.5mm"})
+        assert {round(p.thickness, 6) for p in res.output.parts if p.kind == "solid"} == {4.5}
+        shot(page, "thickness")
+        # a design without a thickness param: no field to disagree with it
+        n = views(page)
+        page.click("#open-gallery")
+        page.click('#cards .card[data-id="generator/spur_gear"]')
+        settled(page, n)
+        assert not page.is_visible("#thickness")
+    finally:
+        page.context.close()
+
+
+def test_the_3d_view_draws_on_change_only(server, chromium):
+    page = opened(chromium, server, DESKTOP, "generator/sliding_lid_box")
+    try:
+        page.wait_for_timeout(300)                        # the model's own frame
+        before = page.evaluate("window.aidl3d.frames")
+        assert before >= 1
+        page.wait_for_timeout(2000)
+        assert page.evaluate("window.aidl3d.frames") == before      # idle: 0 frames in 2 s
+        page.focus("#viewer3d canvas")
+        page.keyboard.press("ArrowLeft")                  # a turn: drawn again
+        page.wait_for_function(f"() => window.aidl3d.frames > {before}", timeout=HANG)
+    finally:
+        page.context.close()
+
+
+def swipe(page, selector: str, dy: float, fingers: int = 1) -> None:
+    """A touch swipe of ``fingers`` fingers up by ``dy`` px over ``selector`` (CDP touch events,
+    as a phone's screen sends them)."""
+    b = page.locator(selector).bounding_box()
+    x, y = b["x"] + b["width"] / 2, b["y"] + b["height"] * 0.7
+    cdp = page.context.new_cdp_session(page)
+
+    def points(k):
+        return [{"x": x + 60 * i, "y": y - dy * k, "id": i} for i in range(fingers)]
+    cdp.send("Input.dispatchTouchEvent", {"type": "touchStart", "touchPoints": points(0)})
+    for k in range(1, 11):
+        cdp.send("Input.dispatchTouchEvent", {"type": "touchMove", "touchPoints": points(k / 10)})
+        page.wait_for_timeout(16)
+    cdp.send("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
+    page.wait_for_timeout(400)
+
+
+def test_on_a_phone_a_swipe_scrolls_and_two_fingers_zoom(server, chromium):
+    page = opened(chromium, server, PHONE, "generator/divider_tray")
+    try:
+        for pane in ("#flat", "#viewer3d canvas"):
+            page.evaluate("window.scrollTo(0, 0)")
+            camera = page.evaluate("window.aidl3d.camera()")
+            flat = page.evaluate("[window.studio.flat.x, window.studio.flat.y, window.studio.flat.s]")
+            swipe(page, pane, 200)
+            assert page.evaluate("window.scrollY") > 100, pane          # the page scrolled
+            assert page.evaluate("[window.studio.flat.x, window.studio.flat.y, window.studio.flat.s]") == flat
+            assert page.evaluate("window.aidl3d.camera()") == pytest.approx(camera)
+        page.evaluate("window.scrollTo(0, 0)")
+        s = page.evaluate("window.studio.flat.s")
+        b = page.locator("#flat").bounding_box()
+        cdp = page.context.new_cdp_session(page)
+        cx, cy = b["x"] + b["width"] / 2, b["y"] + b["height"] / 2
+        cdp.send("Input.dispatchTouchEvent", {"type": "touchStart", "touchPoints": [
+            {"x": cx - 20, "y": cy, "id": 0}, {"x": cx + 20, "y": cy, "id": 1}]})
+        for k in range(1, 11):          # the fingers move apart: zoom in, the page stays
+            cdp.send("Input.dispatchTouchEvent", {"type": "touchMove", "touchPoints": [
+                {"x": cx - 20 - 8 * k, "y": cy, "id": 0}, {"x": cx + 20 + 8 * k, "y": cy, "id": 1}]})
+            page.wait_for_timeout(16)
+        cdp.send("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
+        assert page.evaluate("window.studio.flat.s") > s * 2
+        assert page.evaluate("window.scrollY") == 0
+        # a checkbox: 44 px each way
+        box = page.locator('#params input[type=checkbox][name="outside"]').bounding_box()
+        assert box["width"] >= 44 and box["height"] >= 44, box
+        box = page.locator("#layout").bounding_box()
+        assert box["width"] >= 44 and box["height"] >= 44, box
+        page.locator('#params .param[data-name="outside"]').scroll_into_view_if_needed()
+        shot(page, "phone-params")
+    finally:
+        page.context.close()
+
+
+def test_a_long_drag_stays_under_the_rate_limit(server, chromium, tmp_path):
+    page = opened(chromium, server, DESKTOP, "generator/divider_tray")
+    try:
+        assert page.evaluate("window.studio.paceGap()") == pytest.approx(5_000 / 18)
+        sent = page.evaluate("""async () => {
+            const r = document.querySelector('input[type=range][name="length"]');
+            const lo = Number(r.min), hi = Number(r.max);
+            let k = 0;
+            const t0 = performance.now();
+            while (performance.now() - t0 < 10000) {          // 10 s: two windows of the rate
+              const f = (Math.sin(k / 15) + 1) / 2;           // back and forth, 30 moves a second
+              r.value = lo + f * (hi - lo) * 0.5; r.dispatchEvent(new Event('input', { bubbles: true }));
+              k += 1;
+              await new Promise((ok) => setTimeout(ok, 33));
+            }
+            return k; }""")
+        assert sent > 150
+        settled(page)
+        assert page.refused == []                          # no 429, no 503
+        # what the page sent: in any 5 s, at most 60 % of the rate and a burst of 10
+        times = [t for t, _ in page.asked]
+        most = max(sum(1 for u in times if t <= u < t + 5) for t in times)
+        print(f"drag: {sent} moves, {len(times)} requests "
+              f"({sum(1 for _, u in page.asked if u == 'view')} previews), at most {most} in 5 s")
+        assert most <= 28
+        want = float(page.input_value('#params input[name="length-value"]'))
+        assert drawn(page, "length") == pytest.approx(want)
+        with page.expect_download() as got:
+            page.click('#downloads button[data-ext="svg"]')
+        name = got.value.suggested_filename
+        assert re.fullmatch(rf"divider_tray-length_{re.escape(f'{want:g}')}-sheet\.svg", name), name
+        assert page.inner_text("#download-status").startswith(name)
+        shot(page, "drag")
+        n = views(page)
+        page.click("#open-gallery")
+        page.click('#cards .card[data-id="generator/spur_gear"]')
+        settled(page, n)
+        assert page.inner_text("#download-status") == ""    # not the tray's file any more
+    finally:
+        page.context.close()
