@@ -6,7 +6,7 @@ They were dataclasses.  ``dataclass`` writes each record's methods as source tex
 it through Python's parser and compiler when the module is imported
 (``dataclasses._create_fn``, one ``exec`` per method on Python 3.11): 106 M instructions for
 the 176 methods of the 55 records on the path of ``aidl check``, 12% of a cold check
-(``benchmarks/record_methods.py``; docs/dev/performance.md, "Dense drawings (issue 58)").
+(``benchmarks/compile/record_methods.py``; docs/dev/performance.md, "Dense drawings (issue 58)").
 Written in their modules, the methods are in the ``.pyc``.  The fields are slots; every
 record also keeps a ``__dict__``, as the dataclasses had, for what is set besides the fields
 (an arc's ends and a part's mesh, kept once computed; the interpreter's marks on a

@@ -41,7 +41,7 @@ A loop is compared by its exact :func:`signature` (area, centroid, perimeter and
 from the lines' and arcs' own integrals), so a circle drawn as one CIRCLE or four arcs, or an
 outline as one polyline or as lines and arcs, are the same loop.
 
-Used by benchmarks/infer_edits.py (the generated set) and tests/test_infer_generated.py.
+Used by benchmarks/imports/infer_edits.py (the generated set) and tests/test_infer_generated.py.
 """
 from __future__ import annotations
 
@@ -56,7 +56,7 @@ INCH = 25.4
 
 KINDS = ("hole", "slot", "cutout", "notch", "row", "grid", "hexgrid", "boltcircle",
          "keyhole", "dhole", "arcslot")
-# kinds drawn only when asked (``random_design(pool=ALL_KINDS)``, benchmarks/infer_edits.py
+# kinds drawn only when asked (``random_design(pool=ALL_KINDS)``, benchmarks/imports/infer_edits.py
 # --kinds): the drawings of KINDS from a seed stay the ones they were before these were added
 NEW_KINDS = ("ddhole", "keyway", "ventrow", "csk")
 # issue 93 (round five), drawn only when asked (--kinds round5), their truths from the spec

@@ -11,7 +11,7 @@ any part prefix allowed) and whose value is the current one is set to the new va
 program rendered must be the drawing of the function with that keyword, up to a translation
 (the plate may grow about its centre where the drawing grows from its corner).
 
-Used by benchmarks/infer_edits.py (the share of edits that do what was meant) and
+Used by benchmarks/imports/infer_edits.py (the share of edits that do what was meant) and
 tests/test_import_infer_edits.py (the key edits).
 """
 from __future__ import annotations

@@ -10,7 +10,7 @@ import pytest
 from aidl_lang.geometry import bbox
 from aidl_lang.geometry.expr import Lin, Nl, func
 from aidl_lang.pipeline import compile_source
-from benchmarks.families import hierarchy
+from benchmarks.solver.families import hierarchy
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 

@@ -72,7 +72,7 @@ def test_a_20000_hole_panel_checks_ok_beside_a_cpu_hog_on_every_core(tmp_path):
     CI's second run two more)."""
     sys.path.insert(0, ROOT)
     try:
-        from benchmarks.perforated import panel_aidl
+        from benchmarks.checks.perforated import panel_aidl
     finally:
         sys.path.remove(ROOT)
     prog = tmp_path / "panel.aidl"

@@ -283,7 +283,7 @@ def test_a_plate_of_thousands_of_holes_is_checked_whole(monkeypatch, cpu_clock):
     budget to 45 s (a share of 9 s), in CPU seconds (``cpu_clock``)."""
     from aidl_lang.limits import Budget
     from aidl_lang.output.checks import walls
-    from benchmarks.checks_scaling import plate
+    from benchmarks.checks.checks_scaling import plate
     monkeypatch.setattr(walls, "THIN_SECONDS_PER_VERTEX", 300e-6)
     c = compile_source(plate(2500, 4.3), "grid.aidl", budget=Budget(seconds=45))
     codes = [d.code for d in c.sink.items]

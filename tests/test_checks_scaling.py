@@ -20,7 +20,7 @@ from aidl_lang.diagnostics import DiagnosticSink
 from aidl_lang.limits import DEFAULT_BUDGET, Deadline, now
 from aidl_lang.output import checks
 from aidl_lang.pipeline import _compile, run_deep
-from benchmarks import check_families as F
+from benchmarks.checks import check_families as F
 
 pytestmark = pytest.mark.timing
 

@@ -104,7 +104,7 @@ def page():
     if not Path("/usr/bin/chromium").exists():
         pytest.skip("needs Debian's chromium (apt-get install chromium; .ci/run installs it)")
     sys.path.insert(0, str(ROOT))
-    from benchmarks.serve_latency import chromium
+    from benchmarks.serve.serve_latency import chromium
 
     def serve(route):
         path = route.request.url.split("://", 1)[1].split("/", 1)[1].split("?")[0]

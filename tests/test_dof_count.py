@@ -24,7 +24,7 @@ PROGRAMS = sorted((ROOT / "examples").glob("*.aidl")) + sorted((ROOT / "tests/pr
 
 
 def _generated():
-    from benchmarks.families import hierarchy
+    from benchmarks.solver.families import hierarchy
     return [hierarchy(n, seed=s).source for n, s in ((3, 1), (10, 2), (25, 3))]
 
 
@@ -412,7 +412,7 @@ def test_the_count_of_a_generated_hierarchy_is_the_placement_of_the_whole(tmp_pa
     older tree counted, per part, the part's shapes against its own frame and the hole's circle
     against the hole's frame: moves that change nothing drawn (a frame shifted one way, its
     contents the other).  What is visible is the whole row's position: 2, harmless."""
-    from benchmarks.families import hierarchy
+    from benchmarks.solver.families import hierarchy
     doc = _check(tmp_path, hierarchy(60, seed=3).source, "--json")
     assert doc["freedom"] == ("2 degrees of freedom left (free: only where the whole part sits "
                               "(harmless)), see --dof")
@@ -479,13 +479,13 @@ def test_a_structure_moving_with_its_frame_is_counted_once(tmp_path):
     rectangle of 4 points held by 6 constraints, a hole placed by CenterInside) can only move
     as a whole: 2.  Its shapes shifted inside p0's frame, p0 shifted inside g0's and g0 inside
     the row's are that one move, which was counted 3 times (6).  Three solids of a rectangle
-    and a free round hole each (benchmarks/compare_trees.py `structures(3)`): each solid's place
+    and a free round hole each (benchmarks/compile/compare_trees.py `structures(3)`): each solid's place
     (2) and its hole's slide (2), 12, was 18 (the circle moving inside its hole counted
     beside the hole's frame), and 24 on the older tree."""
     import sys
     sys.path.insert(0, str(ROOT))
-    from benchmarks.families import hierarchy
-    from benchmarks.compare_trees import structures
+    from benchmarks.solver.families import hierarchy
+    from benchmarks.compile.compare_trees import structures
     doc = _check(tmp_path, hierarchy(3).source, "--json", "--dof")
     assert doc["freedom"] == ("2 degrees of freedom left (free: only where the whole part sits "
                               "(harmless)), see --dof")

@@ -14,7 +14,7 @@ from aidl_lang import cli
 from aidl_lang.geometry.bbox import numeric_box
 from aidl_lang.pipeline import compile_source
 from aidl_lang.solver import Solver, constraint_residuals, hierarchy, run, solve
-from benchmarks.families import FLAT, hierarchy as hierarchy_family
+from benchmarks.solver.families import FLAT, hierarchy as hierarchy_family
 
 from conftest import EXAMPLES
 

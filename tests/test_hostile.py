@@ -78,7 +78,7 @@ for src in srcs:
 sys.path.insert(0, str(HERE.parent))
 from hypothesis import HealthCheck, given, settings, strategies as st  # noqa: E402
 
-from benchmarks.nasty import DrawChooser, program, verdict  # noqa: E402
+from benchmarks.checks.nasty import DrawChooser, program, verdict  # noqa: E402
 from aidl_lang.limits import Budget  # noqa: E402
 
 SMALL = Budget(steps=20_000, objects=5_000, size=100_000, seconds=10.0)
@@ -94,7 +94,7 @@ def nasty_programs(draw):
 @given(nasty_programs())
 def test_generated_nasty_programs(src):
     """No exception, every diagnostic located, never ok without a converged solve, no NaN in
-    an SVG, within the (reduced) budget's time; benchmarks/fuzz_nasty.py runs thousands.
+    an SVG, within the (reduced) budget's time; benchmarks/checks/fuzz_nasty.py runs thousands.
     The budget and verdict's "slow" limit count CPU seconds (tests/cpu_clock.py): a loaded
     machine's wall clock is no measure."""
     from cpu_clock import cpu_time

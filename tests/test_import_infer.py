@@ -332,7 +332,7 @@ def test_a_part_holding_what_infer_does_not_know_is_written_piece_by_piece(plate
 def test_a_real_drawing_renders_as_the_plain_import(tmp_path):
     """ezdxf's hatches_2.dxf (an outline with an elliptical arc whose ends lie on a straight
     side, which once passed for a rectangle with a tab): the inferred program renders as
-    `aidl import`'s own to 1e-6 mm (benchmarks/import_infer.py --corpus does all 69)."""
+    `aidl import`'s own to 1e-6 mm (benchmarks/imports/import_infer.py --corpus does all 69)."""
     import gzip
     data = gzip.decompress((ROOT / "tests/data/ezdxf/examples_dxf_hatches_2.dxf.gz")
                            .read_bytes())

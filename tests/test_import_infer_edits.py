@@ -1,7 +1,7 @@
 """`aidl import --infer` gives a program a person keeps (issue 71): role options infer as
 without them, a pitch holds every instance to 1e-7 mm, holes on their own layer are the
 part's holes, and the edits a maker makes through the params do what was meant (the maker
-drawings of tests/maker_drawings.py; benchmarks/infer_edits.py runs them all)."""
+drawings of tests/maker_drawings.py; benchmarks/imports/infer_edits.py runs them all)."""
 from __future__ import annotations
 
 import ezdxf
@@ -10,7 +10,7 @@ import pytest
 import aidl_lang
 import dxf_compare
 from aidl_lang.drawing.infer import import_drawing
-from benchmarks.infer_edits import run_one, same
+from benchmarks.imports.infer_edits import run_one, same
 from maker_drawings import front_panel
 
 

@@ -16,7 +16,7 @@ counted from 1 for each name, the rows fallback removed each member from a list,
 centres (``bore_c``) were looked up along every one, and the cut paths were told from the
 rest by a scan (500 -> 2,000: 5.2 - 16 times).  Calls counted, not
 time: the figures do not depend on the machine's load; times are in
-``benchmarks/infer_scaling.py``.
+``benchmarks/imports/infer_scaling.py``.
 
 The budget: a drawing whose inference would end past the deadline is ``E0304`` before any is
 done (its estimate from the counts, ``infer.infer_seconds``), and each stage of it looks at

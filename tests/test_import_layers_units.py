@@ -314,7 +314,7 @@ def test_arc_slot_plate_imports_clean(tmp_path, infer):
     half-circle end cap held by its radius, which pins nothing at a half turn), the plain
     import W0504 (the parts in one solid) and 66 free degrees.  Now both check with no
     warning, fully constrained, and render the drawing exactly (1e-9 mm)."""
-    from benchmarks.infer_edits import same
+    from benchmarks.imports.infer_edits import same
     data = arc_slot_plate(tmp_path / "a.dxf", seed=3)
     text, _ = import_drawing(data, "a.dxf", infer=infer)
     assert "Mirrored(" in text if infer else text.count("solid ") == 4   # plate, 3 parts

@@ -174,7 +174,7 @@ def test_a_50000_hole_dxf_panel_is_read_not_refused(tmp_path):
     assert sorted(c.center for c in d.circles)[-1] == (2495.0, 1995.0)
     assert d.outlines[0].area == pytest.approx(2500 * 2000, abs=1e-6)
     # and Drawing2D's loading of the file (the byte limit) lets it through (a whole `aidl
-    # check` of `Drawing2D("panel.dxf")`, ~5 s CPU more, is left to benchmarks/perforated.py)
+    # check` of `Drawing2D("panel.dxf")`, ~5 s CPU more, is left to benchmarks/checks/perforated.py)
     real, data = load_drawing("panel.dxf", str(tmp_path / "p.aidl"))
     assert len(data) == size and real.name == "panel.dxf"
     # and the default budget's outline vertices hold its holes' chords (issue 74: 2,000,000

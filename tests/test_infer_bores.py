@@ -5,7 +5,7 @@ keeps (``ddhole_d``, ``ddhole_flat`` across the flats; ``keyway_d``, ``keyway_w`
 ``keyway_depth`` past the bore; the slots' length), the program exactly the drawing,
 compiling clean and fully constrained, and each param, edited, gives the drawing of the
 edited design (the generator's, tests/gen_drawings.py, drawn again and compared loop by loop
-to 1e-6 mm by benchmarks/infer_edits.py's independent reader)."""
+to 1e-6 mm by benchmarks/imports/infer_edits.py's independent reader)."""
 from __future__ import annotations
 
 import math
@@ -22,7 +22,7 @@ from aidl_lang.drawing.infer import import_drawing
 from aidl_lang.drawing.infer.bores import double_d, keyway
 from aidl_lang.drawing.infer.shapes import merged
 from aidl_lang.geometry.curves import Arc, Line
-from benchmarks import infer_edits as bench
+from benchmarks.imports import infer_edits as bench
 
 FEATURES = {
     "ddhole": {"kind": "ddhole", "ax": ("L", 20), "ay": ("B", 15), "d": 10, "af": 7,

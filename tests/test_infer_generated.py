@@ -1,4 +1,4 @@
-"""The generated measure of `aidl import --infer` (issue 85, benchmarks/infer_edits.py): the
+"""The generated measure of `aidl import --infer` (issue 85, benchmarks/imports/infer_edits.py): the
 generator's drawings re-read by ezdxf and svgelements are the design's geometry exactly, the
 exact loop signature is right on shapes of known area and centroid, edits run end to end, and
 the comparison catches a program that is wrong by 0.001 mm (the measure can fail).  The share
@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 
 import gen_drawings as gen
 from aidl_lang.drawing.infer import import_drawing
-from benchmarks import infer_edits as bench
+from benchmarks.imports import infer_edits as bench
 
 
 def _sigs(loops):

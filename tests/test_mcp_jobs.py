@@ -1,5 +1,5 @@
 """Whole jobs through `aidl mcp` and the official SDK's stdio client
-(benchmarks/mcp_tokens.py), each job's files re-read (ezdxf, trimesh, the G-code's own header)
+(benchmarks/agents/mcp_tokens.py), each job's files re-read (ezdxf, trimesh, the G-code's own header)
 and what the server returned counted (characters / 4).
 
 Issue 86's four (a plate's M4 holes made M5 and the plate 150 mm wide, a finger-jointed box
@@ -18,7 +18,7 @@ import pytest
 
 pytest.importorskip("mcp")
 ezdxf = pytest.importorskip("ezdxf")
-from benchmarks import mcp_tokens as M  # noqa: E402
+from benchmarks.agents import mcp_tokens as M  # noqa: E402
 
 BUDGET = {"plate": 3000, "box": 3000, "drawing": 3000, "gears": 3000,     # issue 86
           "switch": 2500, "hinge": 2500, "sheet": 2500, "import": 1500}    # tokens (chars/4)

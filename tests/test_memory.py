@@ -1,5 +1,5 @@
 """Memory per structure (issue 26, item 5): the exact-outline recovery, the largest transient
-of a compile of thousands of structures (``benchmarks/memory_per_structure.py``), works in
+of a compile of thousands of structures (``benchmarks/compile/memory_per_structure.py``), works in
 blocks whose size does not grow with the drawing."""
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Issue 73's model run (benchmarks/model_run/: 24 requests written from `aidl prompt` alone):
+"""Issue 73's model run (data/model_runs/issue73/: 24 requests written from `aidl prompt` alone):
 the defects it found, each as the .aidl text that exposed it (tests/programs/model_run73/),
 through the real pipeline (``compile_source``), the hint followed as a model would.
 

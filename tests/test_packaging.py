@@ -436,7 +436,7 @@ def test_from_the_wheel_the_studio_serves_its_gallery(plain_install, empty):
     import urllib.request
 
     from aidl_lang.studio import gallery
-    from benchmarks.serve_latency import launched
+    from benchmarks.serve.serve_latency import launched
     venv, _ = plain_install
     env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
     with launched([str(venv / "bin" / "aidl"), "studio", "--port", "0", "--compilers", "1"],

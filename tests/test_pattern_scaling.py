@@ -19,7 +19,7 @@ from aidl_lang.solver import freedom
 from aidl_lang.solver.freedom import degrees_of_freedom, freedom_text
 from aidl_lang.solver.redundancy import redundancies
 from aidl_lang.solver.tape import Tape
-from benchmarks.perforated import panel_aidl as panel   # the panel: a loop of holes
+from benchmarks.checks.perforated import panel_aidl as panel   # the panel: a loop of holes
 
 
 def _counts(nx: int, ny: int, monkeypatch) -> dict:

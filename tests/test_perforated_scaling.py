@@ -23,7 +23,7 @@ its chords are indexed, the hole outlines made before anything reads them, and t
 collector's passes over the model (each walks its tens of thousands of objects).
 
 Counts, not time: the figures do not depend on the machine's load.  Times are in
-``benchmarks/perforated.py``.
+``benchmarks/checks/perforated.py``.
 """
 from __future__ import annotations
 
@@ -45,7 +45,7 @@ from aidl_lang.output import Options, build, checks, encode
 from aidl_lang.output.fabrication import toolpath
 from aidl_lang.output.part import booleans, nearby
 from aidl_lang.pipeline import compile_source, run_deep
-from benchmarks.perforated import grid, panel_aidl, reader, write_dxf
+from benchmarks.checks.perforated import grid, panel_aidl, reader, write_dxf
 
 # (folder in aidl_lang/, stage); the first that matches names a function's stage
 STAGES = [("aidl_lang/drawing/", "reading"), ("aidl_lang/interp", "interpreter"),
@@ -350,10 +350,10 @@ ROW = 600          # circles 1 mm apart: past the booleans' turn (scanwork.plan,
 
 @pytest.fixture(scope="module")
 def long_row():
-    """The collinear plate of ``benchmarks/perforated.py`` at ROW holes of r 0.6 mm (they
+    """The collinear plate of ``benchmarks/checks/perforated.py`` at ROW holes of r 0.6 mm (they
     overlap: one long opening), compiled once; the holes' union as the booleans hand it to
     the part's last booleans (``Renderer.union(..., frame=True)``: (shape, turned))."""
-    from benchmarks.perforated import collinear_aidl
+    from benchmarks.checks.perforated import collinear_aidl
     framed = []
     real = booleans.Renderer.union
 
@@ -533,7 +533,7 @@ def test_holes_whose_boxes_are_apart_are_not_intersected(monkeypatch):
     W0507 webs) measure each hole's area twice (the region kept, its area: 200 areas; 299
     before, one per neighbour pair's intersection too)."""
     from aidl_lang.output.checks import openings
-    from benchmarks.perforated import collinear_aidl
+    from benchmarks.checks.perforated import collinear_aidl
     areas, inside = [], []
     real, analyse = openings._area, checks._analyse
 

@@ -8,7 +8,7 @@ import pytest
 
 from aidl_lang.pipeline import compile_source
 from aidl_lang.solver import Solver, run
-from benchmarks.families import FLAT, hierarchy
+from benchmarks.solver.families import FLAT, hierarchy
 
 
 def _model(src: str):

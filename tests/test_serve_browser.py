@@ -21,7 +21,7 @@ if not Path("/usr/bin/chromium").exists():
     pytest.skip("needs Debian's chromium (apt-get install chromium; .ci/run installs it)",
                 allow_module_level=True)
 
-from benchmarks.serve_latency import chromium, move_slider, open_page, p95, save_latency, served  # noqa: E402
+from benchmarks.serve.serve_latency import chromium, move_slider, open_page, p95, save_latency, served  # noqa: E402
 
 
 def outline(page):

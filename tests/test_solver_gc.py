@@ -12,7 +12,7 @@ from aidl_lang.pipeline import compile_source
 from aidl_lang.solver import Solver
 from aidl_lang.memory import gc_paused
 from aidl_lang.solver.tape import Tape
-from benchmarks.families import hierarchy
+from benchmarks.solver.families import hierarchy
 
 
 @pytest.mark.parametrize("shared", [False, True])

@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 from aidl_lang.geometry.expr import Lin, Nl
 from aidl_lang.solver import Solver
 from aidl_lang.solver.tape import Tape, TapeError
-from benchmarks.families import hierarchy
+from benchmarks.solver.families import hierarchy
 
 ARRAYS = ("aff_rows", "a_row", "a_col", "a_val", "b", "l_row", "l_col", "l_val", "lconst",
           "leaf_node", "nl_rows", "nl_roots", "op", "a0", "a1", "level", "root_of", "marg",

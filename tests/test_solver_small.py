@@ -28,7 +28,7 @@ from aidl_lang.solver.reduce import reduce
 from aidl_lang.solver.small import SMALL_ROWS, SmallTape, small_tape
 from aidl_lang.solver.tape import Tape
 
-from benchmarks.families import FLAT
+from benchmarks.solver.families import FLAT
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 N = 7          # parameters of the random systems
@@ -217,7 +217,7 @@ def _has_other_op(e) -> bool:
 def test_rows_the_small_path_cannot_take_are_marked_from_the_whole_tape():
     """With the whole tape compiled, every row with another operator (a bounding box's
     min/max) is marked at once, and a row set holding one is left to the tape."""
-    from benchmarks.families import hierarchy
+    from benchmarks.solver.families import hierarchy
     c = compile_source(hierarchy(10, seed=3).source, "t.aidl", do_solve=False)
     s = Solver(c.model)
     exprs = s.rows.exprs

@@ -12,7 +12,7 @@ from hypothesis import given, settings, strategies as st
 from aidl_lang.pipeline import compile_source
 from aidl_lang.solver import Solver
 from aidl_lang.solver.tape import Tape
-from benchmarks.families import hierarchy
+from benchmarks.solver.families import hierarchy
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 ARRAYS = ("aff_rows", "a_row", "a_col", "a_val", "b", "l_row", "l_col", "l_val", "lconst",

@@ -235,7 +235,7 @@ def test_two_server_processes_behind_one_port_share_the_uploads(tmp_path):
     program, so either process answers; an upload made through one is read by the other."""
     import json
     import urllib.request
-    from benchmarks.studio_server import studio
+    from benchmarks.serve.studio_server import studio
 
     def call(url, path, body=None, raw=None):
         data = raw if raw is not None else (json.dumps(body).encode() if body is not None else None)
@@ -293,7 +293,7 @@ def test_sigterm_stops_a_studio_of_several_processes_and_its_workers():
     import signal
     import subprocess
     import time
-    from benchmarks.studio_server import studio
+    from benchmarks.serve.studio_server import studio
 
     def children(pid):
         out = set()

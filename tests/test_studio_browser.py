@@ -26,8 +26,8 @@ if not Path("/usr/bin/chromium").exists():
     pytest.skip("needs Debian's chromium (apt-get install chromium; .ci/run installs it)",
                 allow_module_level=True)
 
-from benchmarks.serve_latency import chromium  # noqa: E402
-from benchmarks.studio_server import studio  # noqa: E402
+from benchmarks.serve.serve_latency import chromium  # noqa: E402
+from benchmarks.serve.studio_server import studio  # noqa: E402
 from test_studio_sweep import SLID  # noqa: E402
 
 # ms: each page wait ends on its outcome (the page's answer); this only stops a hung page,

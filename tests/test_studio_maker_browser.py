@@ -34,8 +34,8 @@ if not Path("/usr/bin/chromium").exists():
     pytest.skip("needs Debian's chromium (apt-get install chromium; .ci/run installs it)",
                 allow_module_level=True)
 
-from benchmarks.serve_latency import CHROMIUM, CHROMIUM_ARGS  # noqa: E402
-from benchmarks.studio_server import studio  # noqa: E402
+from benchmarks.serve.serve_latency import CHROMIUM, CHROMIUM_ARGS  # noqa: E402
+from benchmarks.serve.studio_server import studio  # noqa: E402
 
 HANG = 180_000          # ms: a guard against a hung page, not a speed limit
 DESKTOP = {"viewport": {"width": 1280, "height": 800}}

@@ -20,7 +20,7 @@ from starlette.testclient import TestClient  # noqa: E402
 
 from aidl_lang.studio.app import Settings, create_app  # noqa: E402
 from aidl_lang.studio.sessions import MAX_FILES  # noqa: E402
-from benchmarks.studio_cluster import (free_port, get, nginx, nginx_path, post,  # noqa: E402
+from benchmarks.serve.studio_cluster import (free_port, get, nginx, nginx_path, post,  # noqa: E402
                                        redis_server, redis_server_path, studio_processes)
 
 ROOT = Path(__file__).resolve().parent.parent

@@ -28,8 +28,8 @@ if not Path("/usr/bin/chromium").exists():
     pytest.skip("needs Debian's chromium (apt-get install chromium; .ci/run installs it)",
                 allow_module_level=True)
 
-from benchmarks.serve_latency import chromium  # noqa: E402
-from benchmarks.studio_server import studio  # noqa: E402
+from benchmarks.serve.serve_latency import chromium  # noqa: E402
+from benchmarks.serve.studio_server import studio  # noqa: E402
 
 from aidl_lang import api  # noqa: E402
 from aidl_lang.serve.params import declared_params  # noqa: E402

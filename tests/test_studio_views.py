@@ -86,8 +86,8 @@ def _browser():
     pytest.importorskip("playwright")
     if not Path("/usr/bin/chromium").exists():
         pytest.skip("needs Debian's chromium (apt-get install chromium; .ci/run installs it)")
-    from benchmarks.serve_latency import chromium
-    from benchmarks.studio_server import studio
+    from benchmarks.serve.serve_latency import chromium
+    from benchmarks.serve.studio_server import studio
     return studio, chromium
 
 
@@ -163,7 +163,7 @@ def test_the_3d_keeps_up_and_the_flat_view_zooms_and_pans():
         v = page.evaluate("window.studio.views")
         gap = page.evaluate(f"window.studio.builtAt[{v}] - window.studio.shownAt[{v}]")
         # after its 2D, never before; the 1 s it takes on a quiet machine is measured by
-        # benchmarks/studio_glb.py (this wall-clock gap was 1,143 ms with every core busy)
+        # benchmarks/serve/studio_glb.py (this wall-clock gap was 1,143 ms with every core busy)
         assert 0 <= gap < 10_000, gap
         assert sum("planet_gear" in p for p in page.evaluate("window.aidl3d.parts")) == 3
 

@@ -114,7 +114,7 @@ NESTED = ("example/coat_hanger", "example/toy_sword", "generator/divider_tray", 
 def test_the_cutting_sheet_at_every_slider_top_says_what_to_change_on_the_page(tmp_path):
     """Each param of the 8 designs at its top end (where parts grow), nested on the page's
     default 600 x 400 mm sheet through the compile worker's own handler: a part too big is said
-    with the sheet size to set, never an option (benchmarks/studio_wording.py does every text
+    with the sheet size to set, never an option (benchmarks/serve/studio_wording.py does every text
     at both ends of every entry: 299 texts with an option or code before, 0 after).  ~8 CPU-s."""
     from aidl_lang.studio import compiler
     handle = compiler.handler()

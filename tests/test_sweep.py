@@ -175,7 +175,7 @@ async def test_mcp_check_with_sweep_through_the_sdk_client(tmp_path):
 # examples/generators/*.aidl, the studio's forms, the synthesized generator programs) with
 # ranged params, swept at each param's ends and middle and at a small seeded Latin hypercube
 # of SUITE_LHS combinations (the default sweep's 8 over every entry:
-# benchmarks/sweep_gallery.py).  h12-sweep left 11 entries here; h13-sweep fixed the designs
+# benchmarks/checks/sweep_gallery.py).  h12-sweep left 11 entries here; h13-sweep fixed the designs
 # (washer, rounded_tab, mounting_plate, planetary asserts; hinged_box's cheek wall; W0510 on a
 # count's new holes) or narrowed the ranges (phone_stand's slot, the gear forms, flex_box's
 # height, text spacing); the combinations (h14-lhs) found finger_panel's corner squares
@@ -200,7 +200,7 @@ def _ranged():
 
 @pytest.mark.parametrize("entry", _ranged())
 def test_every_gallery_entry_is_clean_across_its_declared_ranges(entry, tmp_path):
-    # the declared ranges only (the sliders' default spans: benchmarks/sweep_programs.py)
+    # the declared ranges only (the sliders' default spans: benchmarks/checks/sweep_programs.py)
     rep = sweep(entry.source, str(tmp_path / "main.aidl"), points=SUITE_LHS, unranged=False)
     assert rep.skipped == 0
     assert rep.ok

@@ -1,5 +1,5 @@
 """Every example and every program models wrote is swept (issue 92; all of them:
-benchmarks/sweep_programs.py), ranges declared or not, and each finding holds under a plain
+benchmarks/checks/sweep_programs.py), ranges declared or not, and each finding holds under a plain
 `--set` compile at the values it names, with no problem at the clean end it gives.  A few
 here: an example with no declared range, and two programs models wrote whose findings were
 wrong before the fixes (honeycomb: `param pitch = af + wall` held at its written value

@@ -16,7 +16,7 @@ from hypothesis import given, settings, strategies as st
 from conftest import EXAMPLES, ROOT
 from aidl_lang.diagnostics import DiagnosticSink
 from aidl_lang.parser import parse
-from benchmarks.syntax_errors import bracket_pairs as _pairs
+from benchmarks.compile.syntax_errors import bracket_pairs as _pairs
 
 FILES = EXAMPLES + sorted((ROOT / "stdlib").glob("*.aidl")) + \
     sorted((ROOT / "tests/programs").glob("*.aidl"))

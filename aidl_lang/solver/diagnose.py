@@ -80,7 +80,7 @@ def dependencies(J: np.ndarray, order: list[int], deadline: float | None = None,
     dependent row's coefficients come from one triangular solve ``L^T c = Q v`` instead of a
     least-squares problem; a row's projection only touches the basis vectors that overlap it.
     Cost O(rows x rank x overlap): well under a second for a few thousand rows of a sparse
-    Jacobian (benchmarks/bench_diagnose.py).  Past ``deadline`` (:func:`aidl_lang.limits.now`: CPU seconds,
+    Jacobian (benchmarks/solver/bench_diagnose.py).  Past ``deadline`` (:func:`aidl_lang.limits.now`: CPU seconds,
     looked at before every row) it stops early: one row costs at most ``3 rank n`` flops, so
     the pass needs no estimate before it starts.
 

@@ -74,7 +74,7 @@ class Format:
         return getattr(module, self.function)(output, options)
 
 
-# What one writer costs (per_item, per_vertex), measured by benchmarks/writer_cost.py on the
+# What one writer costs (per_item, per_vertex), measured by benchmarks/outputs/writer_cost.py on the
 # reference machine (2 cores, busy) and rounded up about twice: seconds per item of the output,
 # an item being a part, a loop or a segment (engraving strokes' segments included); STL, 3MF
 # and GLB per vertex of the drawing's shapes (their triangles follow the tessellation); PNG adds

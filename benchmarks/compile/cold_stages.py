@@ -1,0 +1,98 @@
+"""Where a cold ``aidl check`` spends its instructions, stage by stage (callgrind):
+
+    .venv/bin/python benchmarks/compile/cold_stages.py                       # examples/telephone.aidl
+    .venv/bin/python benchmarks/compile/cold_stages.py examples/gear.aidl
+
+Each stage is one fresh process under ``valgrind --tool=callgrind`` that runs the check up to
+that stage and ends with ``os._exit`` (no interpreter teardown, as the ``aidl`` command ends);
+a stage's cost is the difference from the one before.  The stages: Python with NumPy,
+Manifold and the standard-library modules a check imports; the check's own modules; the
+parse; the name check; the interpretation; the solve; the extent, assertion and branch checks
+and the booleans (``after_solve`` without the shape checks); the shape checks; and the whole
+``aidl check`` command (the freedom count, the redundancy search, the argument parsing and
+the printing).  ``PYTHONHASHSEED=0``, one BLAS thread, bytecode compiled first, run from an
+empty folder, as ``benchmarks/compile/compare_trees.py``; the counts repeat to 0.1 M.  The issue-38 note in
+docs/dev/performance.md quotes them.
+"""
+from __future__ import annotations
+
+import os
+import re
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+
+STAGES = ["python, numpy, manifold3d, stdlib", "aidl_lang modules", "parse", "name check",
+          "interpret", "solve", "extent, branches, booleans", "shape checks",
+          "freedom count, redundancy, CLI"]
+
+_RUN = r'''
+import os, sys, time, warnings
+S, F = int(sys.argv[1]), sys.argv[2]
+if S == 0:
+    import numpy, manifold3d, argparse, json, dataclasses, threading, gettext, copy, zlib
+    os._exit(0)
+import aidl_lang.cli.main, aidl_lang.api, aidl_lang.pipeline, aidl_lang.solver.diagnose
+import aidl_lang.solver.freedom, aidl_lang.solver.redundancy, aidl_lang.solver.sliding
+import aidl_lang.output.checks
+if S == 8:
+    from aidl_lang.cli.main import main
+    main(["check", "--budget", "100", F])
+    sys.stdout.flush()
+    os._exit(0)
+import numpy as np
+from aidl_lang.pipeline import parse, check, Interpreter, solve, after_solve, DiagnosticSink
+from aidl_lang.limits import DEFAULT_BUDGET
+sys.setrecursionlimit(20000)
+sink = DiagnosticSink()
+if S >= 2:
+    prog = parse(open(F, encoding="utf-8").read(), F, sink)
+if S >= 3:
+    check(prog, sink)
+if S >= 4:
+    b = DEFAULT_BUDGET.scaled(100)
+    model = Interpreter(sink, None, b, time.monotonic() + b.seconds).run(prog)
+if S >= 5:
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        solve(model, deadline=time.monotonic() + 100)
+if S >= 6:
+    after_solve(sink, model, shape_checks=S >= 7)
+os._exit(0)
+'''
+
+
+ENV = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+ENV.update(OPENBLAS_NUM_THREADS="1", PYTHONHASHSEED="0")
+
+
+def callgrind(*args: str) -> float:
+    """Instructions (millions) of ``python ARGS`` under callgrind, run from an empty folder
+    (``python -c`` searches the current folder first: a crowded one costs millions)."""
+    with tempfile.TemporaryDirectory() as empty:
+        r = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null",
+                            sys.executable, *args], capture_output=True, text=True, env=ENV,
+                           cwd=empty)
+    m = re.search(r"Collected : (\d+)", r.stderr)
+    return int(m.group(1)) / 1e6 if m else float("nan")
+
+
+def main() -> None:
+    path = str(Path(sys.argv[1] if len(sys.argv) > 1 else ROOT / "examples" / "telephone.aidl")
+               .resolve())
+    subprocess.run([sys.executable, "-m", "compileall", "-q", str(ROOT / "aidl_lang")],
+                   stdout=subprocess.DEVNULL, env=ENV, check=False)
+    floor = callgrind("-c", "import numpy")
+    print(f"{path}\n`python -c \"import numpy\"`: {floor:.1f} M\n")
+    print(f"{'stage':<36}{'instr M':>10}{'total M':>10}{'x numpy':>9}")
+    before = 0.0
+    for i, name in enumerate(STAGES):
+        total = callgrind("-c", _RUN, str(i), path)
+        print(f"{name:<36}{total - before:>10.1f}{total:>10.1f}{total / floor:>9.2f}")
+        before = total
+
+
+if __name__ == "__main__":
+    main()
