@@ -916,7 +916,7 @@ def _unreadable(name: str, e: Exception) -> Result:
 def exact_bbox(segments) -> tuple[float, float, float, float]:
     """``(x0, y0, x1, y1)`` of exact lines, arcs and circles (an arc's extreme points where
     it crosses an axis direction, not its chords); zeros when there are none."""
-    from .geometry.curves import Arc, Circle, EllipticArc, Spline
+    from .geometry.shapes.curves import Arc, Circle, EllipticArc, Spline
     xs: list[float] = []
     ys: list[float] = []
     for s in segments:
@@ -956,8 +956,8 @@ def _below(name: str, prefix: str) -> bool:
 
 # ------------------------------------------------------------------ solved values
 def _values(model, scale: float, unit: str, sizes: bool = False) -> list[Value]:
-    from .geometry.bbox import numeric_box
-    from .geometry.expr import evaluate
+    from .geometry.relations.bbox import numeric_box
+    from .geometry.core.expr import evaluate
     x = model.x
     xs = model.xs()
     root = model.root
@@ -1082,8 +1082,8 @@ def _named_quantities(scope: dict, prefix: str, x, origin, scale: float,
     (params and constants), solved: lengths in the file's unit, angles in degrees, bare
     numbers as they are, points in the model frame.  Geometry, structures, lists and other
     dimensions (an area) are left out."""
-    from .geometry.expr import evaluate
-    from .geometry.values import ANG, LEN, NUM, PV, Q
+    from .geometry.core.expr import evaluate
+    from .geometry.core.values import ANG, LEN, NUM, PV, Q
     out = []
     for name, v in scope.items():
         n = prefix + name

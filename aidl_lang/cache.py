@@ -4,7 +4,7 @@
 data (JSON, text), never a pickle, and a file is read only when this user owns it and no one
 else can write it (issue 15: a file another local user could plant must never be loaded).
 Users: the parse table (:func:`aidl_lang.parsing.tables.data`) and the Hershey font
-(:mod:`aidl_lang.geometry.text`).  Anything in the folder may be deleted at any time.
+(:mod:`aidl_lang.geometry.shapes.text`).  Anything in the folder may be deleted at any time.
 """
 from __future__ import annotations
 

@@ -1,9 +1,9 @@
-"""Interpret a checked AIDL program into a :class:`~aidl_lang.geometry.model.Model`.
+"""Interpret a checked AIDL program into a :class:`~aidl_lang.geometry.core.model.Model`.
 
 Runs the statements of each structure (post-order children are created as their declarations
-are met), evaluating expressions to values with units (:mod:`aidl_lang.geometry.values`),
-creating geometry (:mod:`aidl_lang.geometry.primitives`) and compiling constraints to residual
-equations (:mod:`aidl_lang.geometry.constraints`).  Errors found while running (types, units,
+are met), evaluating expressions to values with units (:mod:`aidl_lang.geometry.core.values`),
+creating geometry (:mod:`aidl_lang.geometry.shapes.primitives`) and compiling constraints to residual
+equations (:mod:`aidl_lang.geometry.relations.constraints`).  Errors found while running (types, units,
 indices, limits, the paper's two validity rules on the exact objects referenced) become
 diagnostics; the statement is skipped and interpretation goes on, so one run reports several
 problems.
@@ -22,8 +22,8 @@ import time
 from pathlib import Path
 
 from .diagnostics import Diagnostic, DiagnosticSink, EvalError, Label, Span
-from .geometry.expr import Lin, evaluate, lift
-from .geometry.model import Model, Structure
+from .geometry.core.expr import Lin, evaluate, lift
+from .geometry.core.model import Model, Structure
 from .interpreter.calls import Calls
 from .interpreter.common import BudgetExhausted, FileCtx, Scope
 from .interpreter.expressions import Expressions
@@ -42,7 +42,7 @@ __all__ = ["Interpreter", "EvalError", "STDLIB", "MAX_ITER", "MAX_GEOMETRY", "MA
 STRING_CHARS = 64
 
 class Interpreter(Statements, Calls, Expressions):
-    """Runs a checked :class:`~aidl_lang.ast.Program` into a :class:`~aidl_lang.geometry.model.Model`.
+    """Runs a checked :class:`~aidl_lang.ast.Program` into a :class:`~aidl_lang.geometry.core.model.Model`.
 
     Usage: ``Interpreter(sink, overrides).run(program)``; errors go to ``sink`` as diagnostics.
     The methods live in the parts under :mod:`aidl_lang.interpreter`.

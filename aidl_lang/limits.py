@@ -71,7 +71,7 @@ class Budget(Frozen):
       time is an outer guard at :data:`WALL_GUARD` x that (150 s);
     - ``vertices``: 3 000 000 vertices of the tessellated outlines handed to the booleans
       (counted before they are made: a circle of radius ``r`` needs
-      :func:`~aidl_lang.geometry.tessellate.segments_for` ``(r)``; a perforated sheet of
+      :func:`~aidl_lang.geometry.shapes.tessellate.segments_for` ``(r)``; a perforated sheet of
       50 000 holes of r 2 mm needs 2 250 000, checked in about 830 MB);
     - ``items``: :data:`MAX_ITER` (10 000) items of one loop, ``range`` or comprehension
       (``E0301``);

@@ -19,8 +19,8 @@ from .interp import Interpreter
 from .memory import gc_paused
 from .limits import (DEFAULT_BUDGET, MAX_EXTENT, MEMORY_HINT, Budget, Deadline, OutOfBudget,
                      OutOfMemory, is_out_of_memory, memory_fix, memory_text, now)
-from .geometry.expr import Lin, Nl
-from .geometry.model import Model
+from .geometry.core.expr import Lin, Nl
+from .geometry.core.model import Model
 from .parser import parse
 from .output.part.booleans import Drawing, render_model
 from .output.checks import check_drawing, check_stray_holes, check_topology, topology
@@ -426,7 +426,7 @@ def check_assertions(sink: DiagnosticSink, model: Model, held_only: bool = False
     a failed solve, ``held_only``: those that read no solved value)."""
     if not model.assertions:
         return
-    from .geometry.assertions import describe, failed
+    from .geometry.relations.assertions import describe, failed
     for a, bad in failed(model, held_only):
         sink.add(Diagnostic("E0405", describe(a, bad), a.span, "error",
                             hint="an `assert` states what must be true of the design; change "
@@ -451,7 +451,7 @@ def instance_calls(s) -> list:
 def check_branches(sink: DiagnosticSink, model: Model) -> None:
     """W0403 for a convention-dependent constraint that ended on another branch than the one
     chosen at the start (paper, appendix "Solver Details", *Deferred expressions*)."""
-    from .geometry.expr import evaluate
+    from .geometry.core.expr import evaluate
     x = model.xs()
     for c in model.constraints:
         for eq in c.equations:

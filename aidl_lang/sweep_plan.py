@@ -123,7 +123,7 @@ def value_text(x: float, unit: str, integer: bool = False) -> str:
 def display(q) -> tuple[str, float] | None:
     """``(unit, factor)`` of a param's value (display unit = factor x the model's unit:
     mm, deg from radians, plain numbers); None for one that is not a known number."""
-    from .geometry.values import ANG, LEN, NUM, Q
+    from .geometry.core.values import ANG, LEN, NUM, Q
     if isinstance(q, bool) or not isinstance(q, Q) or q.const() is None:
         return None
     return {LEN: ("mm", 1.0), ANG: ("deg", 180 / math.pi), NUM: ("", 1.0)}.get(q.dim)

@@ -4,7 +4,7 @@ operation or a statement, each in the smallest part that shows it.  Plain string
 compiled here."""
 from __future__ import annotations
 
-from .geometry.scaling import EXAMPLE_LINES as _TRANSFORM_LINES
+from .geometry.derived.scaling import EXAMPLE_LINES as _TRANSFORM_LINES
 
 
 def _indent(text: str, pad: str) -> str:

@@ -239,7 +239,7 @@ def test_no_program_of_the_corpus_changes(monkeypatch):
     from pathlib import Path
     import re
 
-    import aidl_lang.geometry.values as values
+    import aidl_lang.geometry.core.values as values
     import aidl_lang.interpreter.calls as calls
     import aidl_lang.interpreter.statements as statements
     from aidl_lang.pipeline import compile_source

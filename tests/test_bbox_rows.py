@@ -7,8 +7,8 @@ import pathlib
 
 import pytest
 
-from aidl_lang.geometry import bbox
-from aidl_lang.geometry.expr import Lin, Nl, func
+from aidl_lang.geometry.relations import bbox
+from aidl_lang.geometry.core.expr import Lin, Nl, func
 from aidl_lang.pipeline import compile_source
 from benchmarks.solver.families import hierarchy
 

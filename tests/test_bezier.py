@@ -189,7 +189,7 @@ def test_step_edges_lie_on_the_chain(tmp_path):
     heart's cubics (their own control points, evaluated here) to 1e-9 mm."""
     pytest.importorskip("OCP")
     from exact_geometry import step_edge_points
-    from aidl_lang.geometry.spline import bezier_chain
+    from aidl_lang.geometry.shapes.spline import bezier_chain
     r = _ok(f"solid heart {{\n    b = Bezier(points={_pts(HEART)}, closed=true)\n}}\n", tmp_path)
     step = tmp_path / "h.step"
     r.write(step)

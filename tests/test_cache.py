@@ -162,7 +162,7 @@ def test_a_cache_folder_or_file_owned_by_someone_else_is_not_used(tmp_path):
 
 FONT_CHILD = """
 import sys
-from aidl_lang.geometry.text import text_extent
+from aidl_lang.geometry.shapes.text import text_extent
 print(*(round(v, 9) for v in text_extent("AIDL 42", 5.0)))
 print("package-imported" if "HersheyFonts" in sys.modules else "package-not-imported")
 """
@@ -194,7 +194,7 @@ def test_the_font_is_cached_owner_only_and_gives_the_same_strokes(tmp_path):
     ref = HersheyFonts()
     ref.load_default_font("futural")
     ref.normalize_rendering(1.0)
-    from aidl_lang.geometry import text
+    from aidl_lang.geometry.shapes import text
     env_cache = os.environ.get("XDG_CACHE_HOME")
     os.environ["XDG_CACHE_HOME"] = str(tmp_path / "cache")
     try:

@@ -1079,7 +1079,7 @@ solid protractor {
 
 def test_W0513_text_over_text_and_over_a_tick_mark(compile_text):
     import re
-    from aidl_lang.geometry.text import text_strokes
+    from aidl_lang.geometry.shapes.text import text_strokes
     over, tick = warnings(compile_text, PROTRACTOR % ("3, 31", "44, 0"), "W0513")
     assert over.span.line == 9 and '"100"' in over.message and '"90"' in over.message
     assert over.labels[0].span.line == 8

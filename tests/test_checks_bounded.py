@@ -311,7 +311,7 @@ def test_a_sheet_of_parts_asks_each_part_for_its_own_solids_only(monkeypatch, cp
     W0521).  Now one index per drawing (common._solids_within): the calls grow with the
     structures, not with their square."""
     from aidl_lang.diagnostics import DiagnosticSink
-    from aidl_lang.geometry.model import Structure
+    from aidl_lang.geometry.core.model import Structure
     from aidl_lang.output.checks import check_drawing
     calls = []
     for n in (200, 400):
@@ -524,7 +524,7 @@ def test_the_shape_key_gives_the_groups_of_every_pair():
 def test_the_shape_key_is_every_pair_near_the_tolerance(radii):
     """Circles (and pairs of them) whose radii differ by fractions and multiples of the
     tolerance, across the key's cells: the same groups as every pair."""
-    from aidl_lang.geometry.curves import Circle, Loop
+    from aidl_lang.geometry.shapes.curves import Circle, Loop
     from aidl_lang.output.checks import inventory
     from aidl_lang.output.part.part import PartOutline
     parts = []

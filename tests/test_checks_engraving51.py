@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from aidl_lang.codes import CODES
-from aidl_lang.geometry.text import text_strokes
+from aidl_lang.geometry.shapes.text import text_strokes
 
 
 def warnings(compile_text, src, code):

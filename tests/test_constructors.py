@@ -90,7 +90,7 @@ def _exact(src):
 
 def test_arc_slot_is_four_tangent_arcs_of_the_asked_radii():
     import math
-    from aidl_lang.geometry.curves import Arc, turn_between
+    from aidl_lang.geometry.shapes.curves import Arc, turn_between
     c, o = _exact("solid s { a = ArcSlot(center=(3, -2), radius=15, start_angle=20 deg, "
                   "end_angle=160 deg, width=5) }")
     (loop,) = o.parts[0].loops
@@ -123,7 +123,7 @@ def test_arc_slot_members_and_bounding_box(compile_text):
     assert (x[pe.ix], x[pe.iy]) == pytest.approx((0, 10), abs=1e-9)
     h = 10 / math.sqrt(2)
     assert (x[pm.ix], x[pm.iy]) == pytest.approx((h, h), abs=1e-9)
-    from aidl_lang.geometry.bbox import numeric_box
+    from aidl_lang.geometry.relations.bbox import numeric_box
     # caps around (10, 0) and (0, 10) of radius 1, the outer arc's extremes at x = 11, y = 11
     assert numeric_box(g["a"], c.model.root, x) == pytest.approx((-1, 11, -1, 11), abs=1e-9)
 
@@ -160,7 +160,7 @@ def test_star_and_arc_slot_errors_are_located(compile_text, src, msg):
 def test_fillet_and_chamfer_take_two_edges_as_their_corner():
     """`Fillet(edge1, edge2, radius=r)` (what models write) rounds the corner where the two
     edges meet, as `Fillet([edge1, edge2], r)` does; it was "`radius` given twice"."""
-    from aidl_lang.geometry.curves import Arc, Line
+    from aidl_lang.geometry.shapes.curves import Arc, Line
     c, o = _exact("solid p {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
                   "    Fillet(body.top, body.right, radius=5)\n"
                   "    Chamfer(body.bottom, body.left, 3)\n}\n")
@@ -173,7 +173,7 @@ def test_fillet_and_chamfer_take_two_edges_as_their_corner():
 
 
 def test_text_center_is_the_middle_of_its_strokes(compile_text):
-    from aidl_lang.geometry.text import text_extent
+    from aidl_lang.geometry.shapes.text import text_extent
     c = compile_text("drawing d {\n    t = Text(\"HELLO\", (10, 30), size=5)\n"
                      "    p = Point(at=t.center)\n}\n")
     assert c.ok

@@ -14,8 +14,8 @@ from hypothesis import given, settings, strategies as st
 
 from aidl_lang import ast as A
 from aidl_lang.diagnostics import DiagnosticSink
-from aidl_lang.geometry.expr import evaluate
-from aidl_lang.geometry.text import text_extent
+from aidl_lang.geometry.core.expr import evaluate
+from aidl_lang.geometry.shapes.text import text_extent
 from aidl_lang.output import render_model
 from aidl_lang.parser import mask_comments, parse
 from aidl_lang.pipeline import compile_source

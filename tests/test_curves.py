@@ -1,4 +1,4 @@
-"""Exact curves (aidl_lang/geometry/curves.py) and provenance (aidl_lang/output/part/exact.py):
+"""Exact curves (aidl_lang/geometry/shapes/curves.py) and provenance (aidl_lang/output/part/exact.py):
 carriers meet where both say, and a boolean's result goes back onto the exact curves.
 
 The laws: an intersection lies on both carriers; every output loop of a union or cut of
@@ -14,7 +14,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from aidl_lang.geometry.curves import (Arc, Circle, Line, carrier, distance_to, intersect,
+from aidl_lang.geometry.shapes.curves import (Arc, Circle, Line, carrier, distance_to, intersect,
                                        tangent_at, turn_between)
 from aidl_lang.output.part.part import build
 from aidl_lang.pipeline import compile_source
@@ -143,9 +143,9 @@ def test_a_slot_is_two_lines_and_two_half_circles():
 
 
 def test_segment_boxes_are_the_design_numbers():
-    """Every segment kind has one exact ``box()`` (geometry/curves.py), which the extent, the
+    """Every segment kind has one exact ``box()`` (geometry/shapes/curves.py), which the extent, the
     PDF tiles, the layout, ``--describe`` and the drawing readers all use."""
-    from aidl_lang.geometry.curves import Arc, Circle, Line
+    from aidl_lang.geometry.shapes.curves import Arc, Circle, Line
     assert Line((3, -1), (-2, 4)).box() == (-2, -1, 3, 4)
     assert Circle((1, 2), 5).box() == (-4, -3, 6, 7)
     assert Arc((0, 0), 5, 0.0, math.pi).box() == (-5.0, 0.0, 5.0, 5.0)          # upper half
@@ -160,7 +160,7 @@ def test_segment_boxes_are_the_design_numbers():
 def test_an_arc_box_holds_every_point_of_the_arc_and_no_more(a0, sweep, r):
     """The box holds 2,001 points along the arc and each of its sides is touched by one of
     them (within the spacing's sagitta)."""
-    from aidl_lang.geometry.curves import Arc
+    from aidl_lang.geometry.shapes.curves import Arc
     arc = Arc((1.5, -2.0), r, a0, sweep)
     x0, y0, x1, y1 = arc.box()
     t = a0 + sweep * np.linspace(0, 1, 2001)

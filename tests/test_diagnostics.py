@@ -391,7 +391,7 @@ def test_imports_bring_templates_and_constants_not_structures(tmp_path):
     assert [s.path for s in m.structures] == ["s", "s.a", "s.b"]
     radii = sorted(m.x[g.scalars["radius"].index] for g in m.all_geometry())
     assert radii == [7.0, 8.0]
-    from aidl_lang.geometry.bbox import numeric_box
+    from aidl_lang.geometry.relations.bbox import numeric_box
     la, ra, _, _ = numeric_box(m.root.children["a"], None, m.xs())
     lb, rb, _, _ = numeric_box(m.root.children["b"], None, m.xs())
     assert ra - la == pytest.approx(14) and rb - lb == pytest.approx(16)
@@ -565,7 +565,7 @@ def test_E0202_fix_in_the_common_parent_compiles(compile_text):
 }
 """)
     assert c.ok
-    from aidl_lang.geometry.bbox import numeric_box
+    from aidl_lang.geometry.relations.bbox import numeric_box
     m = c.model
     base, dial = m.root.children["base"], m.root.children["dial"]
     bl, br, bb, bt = numeric_box(base, None, m.xs())
@@ -1045,7 +1045,7 @@ def test_text_along_a_circle_too_short_for_it_W0111(compile_text):
     """Issue 91: a Text longer than the circle it follows ran round onto its own first
     letters in silence; W0111 at the Text gives both lengths and a size that fits, and that
     size compiles clean."""
-    from aidl_lang.geometry.text import text_extent
+    from aidl_lang.geometry.shapes.text import text_extent
     src = ("solid s {{\n    body = Rectangle(center=(0, 0), width=40, height=40)\n"
            "    drawing d {{\n        c = Circle(center=(0, 0), radius=5, construction=true)\n"
            "        t = Text(\"HELLO WORLD AGAIN\", along=c, size={})\n    }}\n}}\n")

@@ -94,7 +94,7 @@ def _xy(v):
 
 
 def _ellipse(cx, cy, rx, ry, rot_deg=0.0):
-    from aidl_lang.geometry.ellipse import ellipse
+    from aidl_lang.geometry.shapes.ellipse import ellipse
     return ellipse((cx, cy), rx, ry, math.radians(rot_deg))[0]
 
 
@@ -138,7 +138,7 @@ def test_offset_of_an_ellipse_is_within_its_stated_bound_both_ways(parts):
     assert far <= BOUND, far
     # its area is Steiner's: the ellipse's + d x perimeter + pi d^2 (to the flattening's
     # 1e-5 mm sagitta over a 210 mm outline)
-    from aidl_lang.geometry.curves import EllipticArc
+    from aidl_lang.geometry.shapes.curves import EllipticArc
     pts = []
     for v in ents:
         q = [(p.x, p.y) for p in v.construction_tool().flattening(1e-5)]
@@ -247,7 +247,7 @@ def test_fillet_between_an_ellipse_and_a_line_is_a_tangent_arc(parts):
 
 
 def test_chamfer_at_an_ellipse_corner_takes_its_length_along_the_ellipse(parts):
-    from aidl_lang.geometry.curves import EllipticArc
+    from aidl_lang.geometry.shapes.curves import EllipticArc
     ents = parts["bevel"]
     e = _ellipse(250, 0, 30, 15)
     (el,) = [v for v in ents if v.dxftype() == "ELLIPSE"]

@@ -488,7 +488,7 @@ def test_an_ellipse_with_an_ellipse_or_a_circle_has_its_exact_area(d, r1, r2, ro
     A = _ellipse_poly(0, 0, rx, ry, rots[0])
     B = _ellipse_poly(d[0], d[1], sx, sx if circle else sy, 0 if circle else rots[1])
     assert o.area == pytest.approx(A.union(B).area, abs=1e-4)
-    from aidl_lang.geometry.curves import carrier, distance_to
+    from aidl_lang.geometry.shapes.curves import carrier, distance_to
     for p in o.parts:
         for lp in p.loops:
             segs = lp.segments

@@ -555,7 +555,7 @@ def test_stacked_copies_of_one_outline_are_matched_once():
     union is still the one exact circle."""
     import time
     import manifold3d as mf
-    from aidl_lang.geometry.curves import Circle as XC, Loop
+    from aidl_lang.geometry.shapes.curves import Circle as XC, Loop
     from aidl_lang.output.part.exact import Provenance
     prov = Provenance()
     one = Loop([XC((5.0, -2.0), 3.0, True)])

@@ -52,7 +52,7 @@ def test_samples_equal_the_per_item_samples(items):
 def _points_reference(segments):
     """Loop.points as it was written before (one tuple per vertex, through Arc.at)."""
     import math
-    from aidl_lang.geometry.tessellate import segments_for
+    from aidl_lang.geometry.shapes.tessellate import segments_for
     from aidl_lang.output.part.part import Arc, Line
     out = []
     for s in segments:

@@ -18,7 +18,7 @@ import math
 import numpy as np
 import pytest
 
-from aidl_lang.geometry.curves import Circle, Loop
+from aidl_lang.geometry.shapes.curves import Circle, Loop
 from aidl_lang.output.checks import openings
 from aidl_lang.output.part import nearby
 from aidl_lang.output.part.exact import Provenance

@@ -337,7 +337,7 @@ def test_ellipse_and_spline_within_curve_tol():
 
     def dense(lp, n=4000):
         """The loop's curves sampled here from their own definitions (n points a piece)."""
-        from aidl_lang.geometry.spline import bez_at
+        from aidl_lang.geometry.shapes.spline import bez_at
         from aidl_lang.output.part.part import EllipticArc, Spline
         pts = []
         for g in lp.segments:

@@ -11,7 +11,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from aidl_lang import cli
-from aidl_lang.geometry.bbox import numeric_box
+from aidl_lang.geometry.relations.bbox import numeric_box
 from aidl_lang.pipeline import compile_source
 from aidl_lang.solver import Solver, constraint_residuals, hierarchy, run, solve
 from benchmarks.solver.families import FLAT, hierarchy as hierarchy_family
@@ -320,7 +320,7 @@ _OPS = st.sampled_from(["add", "mul", "div", "sin", "cos", "atan", "sqrt", "atan
 
 @st.composite
 def _expr(draw, depth=3):
-    from aidl_lang.geometry.expr import Lin, Nl
+    from aidl_lang.geometry.core.expr import Lin, Nl
     if depth == 0 or draw(st.booleans()):
         k = draw(st.integers(1, 3))
         terms = {draw(st.integers(0, 5)): draw(st.floats(-2, 2)) for _ in range(k)}
@@ -345,7 +345,7 @@ def _expr(draw, depth=3):
        x=st.lists(st.floats(-1.5, 1.5), min_size=6, max_size=6))
 def test_tape_values_and_jacobian_match_the_expressions(exprs, x):
     """Tape values equal expr.evaluate; its reverse-mode Jacobian equals central differences."""
-    from aidl_lang.geometry.expr import evaluate
+    from aidl_lang.geometry.core.expr import evaluate
     from aidl_lang.solver.tape import Tape
     x = np.asarray(x)
     t = Tape(exprs, 6)

@@ -188,7 +188,7 @@ def test_the_deadline_covers_the_fillets_of_each_loop(monkeypatch):
     structure (and the exact recovery before them) were one step with no look at the
     deadline.  Now each loop's fillets are preceded by one; shown with a slowed fillet."""
     import time as _time
-    from aidl_lang.geometry import corners
+    from aidl_lang.geometry.derived import corners
     from aidl_lang.limits import DEFAULT_BUDGET, Deadline, OutOfBudget
     from aidl_lang.output.part.booleans import render_model
     holes = "\n".join(f"    hole h{i} {{ s = Star(center=({i % 10 * 12 - 54}, {i // 10 * 12 - 54}), "

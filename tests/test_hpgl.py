@@ -12,8 +12,8 @@ import math
 import numpy as np
 import pytest
 
-from aidl_lang.geometry.curves import Arc, Circle, EllipticArc, Line, Spline
-from aidl_lang.geometry.spline import bez_at
+from aidl_lang.geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Spline
+from aidl_lang.geometry.shapes.spline import bez_at
 from aidl_lang.output import encode, for_cutting
 from aidl_lang.output.part.extent import extent
 from aidl_lang.output.fabrication.toolpath import plan
@@ -326,7 +326,7 @@ def test_rounding_bound_holds_off_the_grid():
     """A drawing whose every point lies between plotter units: every written point within
     half a unit in x and y of the design, every drawn point within one unit."""
     from aidl_lang.output.part.part import Output, PartOutline
-    from aidl_lang.geometry.curves import Loop
+    from aidl_lang.geometry.shapes.curves import Loop
     segs = [Line((0.013, 0.0071), (30.0123, 0.0071)),
             Arc((30.0123, 10.0071), 10.0, -math.pi / 2, math.pi),
             Line((30.0123, 20.0071), (0.013, 20.0071)),

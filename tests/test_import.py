@@ -74,7 +74,7 @@ def _doc():
 def test_bulges_splines_and_units(tmp_path):
     """An LWPOLYLINE with a bulge, a SPLINE and $INSUNITS = inches come in exactly."""
     from aidl_lang.drawing import read_drawing
-    from aidl_lang.geometry.curves import Arc, Spline
+    from aidl_lang.geometry.shapes.curves import Arc, Spline
     doc = ezdxf.new("R2010")
     doc.units = 1                               # inches
     msp = doc.modelspace()
@@ -436,7 +436,7 @@ def test_dxf_text_is_imported_as_text_engravings(tmp_path):
     r = aidl_lang.compile(path=tmp_path / "plate.aidl")
     assert r.ok and not r.diagnostics, [str(x) for x in r.diagnostics]
     strokes = [st for st in r.output.engrave if st.source == "plate.d"]
-    from aidl_lang.geometry.text import text_strokes
+    from aidl_lang.geometry.shapes.text import text_strokes
     want = {(round(10 + a[0], 9), round(10 + a[1], 9)) for a, b in
             text_strokes("R1", 4, "start", "baseline", math.radians(30))}
     got = {(round(s.start[0], 9), round(s.start[1], 9)) for st in strokes

@@ -176,7 +176,7 @@ def test_unitless_mm_drawings_are_not_said_inches(tmp_path):
     unit are read as millimetres with the plain note."""
     from aidl_lang.drawing.model import Drawing, Outline
     from aidl_lang.drawing.write.units import fits_inches
-    from aidl_lang.geometry.curves import Circle, Line
+    from aidl_lang.geometry.shapes.curves import Circle, Line
 
     def plate(w, h, holes):
         segs = [Line((0, 0), (w, 0)), Line((w, 0), (w, h)), Line((w, h), (0, h)),

@@ -179,7 +179,7 @@ def test_a_50000_hole_dxf_panel_is_read_not_refused(tmp_path):
     assert len(data) == size and real.name == "panel.dxf"
     # and the default budget's outline vertices hold its holes' chords (issue 74: 2,000,000
     # refused it up front, E0304 "outlines of more than 2,000,000 vertices", at 3.4 s CPU)
-    from aidl_lang.geometry.tessellate import segments_for
+    from aidl_lang.geometry.shapes.tessellate import segments_for
     from aidl_lang.limits import Budget
     assert 2_000_000 < 50_000 * segments_for(2.0) + 4 <= Budget().vertices
 

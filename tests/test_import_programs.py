@@ -18,7 +18,7 @@ import pytest
 import aidl_lang
 from aidl_lang.drawing.write.program import import_drawing
 from aidl_lang.drawing.read import read_drawing
-from aidl_lang.geometry.curves import Arc, Circle, Line
+from aidl_lang.geometry.shapes.curves import Arc, Circle, Line
 
 EXACT = 1e-9
 

@@ -3,7 +3,7 @@ Drawing2D's loops with the same work per hole at 2,000 and at 19,900 holes: coun
 wall time.
 
 - the DXF reader takes a plain CIRCLE in one step (``dxf.WORK["plain_circles"]``);
-- :func:`~aidl_lang.geometry.drawing2d.local_parts` tests each hole's probe against the
+- :func:`~aidl_lang.geometry.shapes.drawing2d.local_parts` tests each hole's probe against the
   polygons whose box holds it, as arrays: one probe test per hole (the outline), no circle's
   polygon sampled (``drawing2d.WORK``).  Before, every loop was masked against the boxes of
   all the others (n^2 comparisons: 2.2 s of the 19,000-hole panel) and every circle sampled;
@@ -20,7 +20,7 @@ import pytest
 import aidl_lang
 from aidl_lang.drawing.read import dxf as dxf_reader
 from aidl_lang.drawing.read import read_drawing
-from aidl_lang.geometry import drawing2d
+from aidl_lang.geometry.shapes import drawing2d
 
 PITCH, R = 10.0, 2.0
 

@@ -22,7 +22,7 @@ from hypothesis import HealthCheck, assume, example, given, settings, strategies
 import aidl_lang
 from aidl_lang.drawing import read_drawing
 from aidl_lang.drawing.write.program import import_drawing
-from aidl_lang.geometry.curves import Arc, Circle, EllipticArc, Line
+from aidl_lang.geometry.shapes.curves import Arc, Circle, EllipticArc, Line
 
 TAU = 2 * math.pi
 FLIP = np.diag([1.0, -1.0])            # SVG user units (y down, 1 unit = 1 mm here) to mm

@@ -11,7 +11,7 @@ import math
 from hypothesis import given, settings, strategies as st
 
 from aidl_lang.drawing.infer.shapes import _as_rrect, _as_slot, recognise, rrect_pieces
-from aidl_lang.geometry.curves import Arc, Line
+from aidl_lang.geometry.shapes.curves import Arc, Line
 
 
 def _obround(c, length, width, rot) -> list:

@@ -10,11 +10,11 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from aidl_lang.diagnostics import DiagnosticSink
-from aidl_lang.geometry.bbox import BBTerm, contains_bbox
-from aidl_lang.geometry import constraints as C
-from aidl_lang.geometry.expr import Lin, Nl, add, func, hypot, mul, sub
-from aidl_lang.geometry.model import Equation, equation
-from aidl_lang.geometry.values import GeomRef, LEN, Q, owners_in, owners_of
+from aidl_lang.geometry.relations.bbox import BBTerm, contains_bbox
+from aidl_lang.geometry.relations import constraints as C
+from aidl_lang.geometry.core.expr import Lin, Nl, add, func, hypot, mul, sub
+from aidl_lang.geometry.core.model import Equation, equation
+from aidl_lang.geometry.core.values import GeomRef, LEN, Q, owners_in, owners_of
 from aidl_lang.interp import Interpreter
 from aidl_lang.parser import parse
 from aidl_lang.typecheck import check
@@ -226,8 +226,8 @@ def test_two_constants_fold_as_mul_and_div_do(a, b, op, da, db):
     ``a * (1 / b)`` there, not a correctly rounded quotient), its dimension and owners."""
     from aidl_lang import ast as A
     from aidl_lang.diagnostics import Span
-    from aidl_lang.geometry.expr import div
-    from aidl_lang.geometry.values import mul_dim
+    from aidl_lang.geometry.core.expr import div
+    from aidl_lang.geometry.core.values import mul_dim
     if op == "/" and b == 0.0:
         b = 1.0
     it = Interpreter(DiagnosticSink(), {})
@@ -288,8 +288,8 @@ def test_a_list_index_fast_or_not_gives_the_same_item_or_error(compile_text, ind
 def test_an_arc_ends_offset_row_is_the_operators_row(i, j, d):
     """``primitives._offset`` (an ``Arc``'s end from its center, built directly) is the very
     ``Lin`` the operators make of ``var(i) - var(j) - d``: terms in order, floats by bits."""
-    from aidl_lang.geometry.expr import var
-    from aidl_lang.geometry.primitives import _offset
+    from aidl_lang.geometry.core.expr import var
+    from aidl_lang.geometry.shapes.primitives import _offset
     if i == j:
         j = i + 1
     assert _key(_offset(i, j, d)) == _key(var(i) - var(j) - d)
@@ -308,7 +308,7 @@ terms = st.one_of(small, small_lins,
 def test_combine_is_the_sum_of_its_products(pairs, c, x):
     """``combine`` (a copy's point as one affine combination) is ``c + sum(k * e)``: one Lin
     when every term is affine or a number, else the plain sum, each constant counted once."""
-    from aidl_lang.geometry.expr import combine, evaluate
+    from aidl_lang.geometry.core.expr import combine, evaluate
     got = combine(pairs, c)
     want = c + sum(k * evaluate(e, x) for k, e in pairs)
     assert abs(evaluate(got, x) - want) <= 1e-9 * max(1.0, sum(
@@ -328,9 +328,9 @@ def test_a_rotated_copys_point_is_the_four_term_combination(px, py, cx, cy, th):
     in both of the center's coordinates): each point is then the very Lin of the four-term
     ``combine``, terms in order and floats by bits, so the pinned values do not change."""
     import math
-    from aidl_lang.geometry.expr import combine
-    from aidl_lang.geometry.operations import _rotate
-    from aidl_lang.geometry.values import PV
+    from aidl_lang.geometry.core.expr import combine
+    from aidl_lang.geometry.derived.operations import _rotate
+    from aidl_lang.geometry.core.values import PV
     xf, rot, flip = _rotate(PV(cx, cy), th)
     cs, sn = math.cos(th), math.sin(th)
     X, Y = xf(px, py)
@@ -342,8 +342,8 @@ def test_a_rotated_copys_point_is_the_four_term_combination(px, py, cx, cy, th):
 def _copy_point_reference(turn, model, p, dest, eqs):
     """A copied point as ``_Cloner.point`` made it before ``_Turn.copy_point``: the image's
     expressions, their values, a new point and its two rows by the operators."""
-    from aidl_lang.geometry.expr import evaluate
-    from aidl_lang.geometry.model import Point
+    from aidl_lang.geometry.core.expr import evaluate
+    from aidl_lang.geometry.core.model import Point
     X, Y = turn(*p.in_frame(dest))
     ix, iy = model.new_pair(evaluate(X, model.x), evaluate(Y, model.x), True, dest, p.label)
     q = Point(ix, iy, dest, None, p.label)
@@ -360,9 +360,9 @@ def test_a_turned_copys_rows_are_the_operators_rows(ix, iy, cx, cy, th, xs):
     value made directly) is the point the image's expressions and the operators make: the
     same new unknowns, start values by bits, rows with their terms in order and floats by
     bits, including a center sharing an unknown with the point (then the general path)."""
-    from aidl_lang.geometry.model import Model, Point, Structure
-    from aidl_lang.geometry.operations import _Turn
-    from aidl_lang.geometry.values import PV
+    from aidl_lang.geometry.core.model import Model, Point, Structure
+    from aidl_lang.geometry.derived.operations import _Turn
+    from aidl_lang.geometry.core.values import PV
     if ix == iy:
         iy = (ix + 1) % 7
     made = []

@@ -96,7 +96,7 @@ def test_an_ellipse_cut_to_a_band_keeps_its_elliptic_arcs(done):
 
 
 def test_strings_clipped_to_the_head_end_exactly_on_its_ellipse(done):
-    from aidl_lang.geometry.ellipse import ellipse
+    from aidl_lang.geometry.shapes.ellipse import ellipse
     _, ents = done
     lines = [v for v in _layer(ents, "ENGRAVE") if v.dxftype() == "LINE"
              and abs(v.dxf.start.x) < 60 and abs(v.dxf.start.y) < 60]
@@ -151,7 +151,7 @@ def test_wrong_use_is_located_at_the_call(tmp_path, body, code, words):
 
 
 def test_an_arc_clipped_in_a_solid_is_engraved_between_its_crossings(done):
-    from aidl_lang.geometry.ellipse import ellipse
+    from aidl_lang.geometry.shapes.ellipse import ellipse
     _, ents = done
     (arc,) = [v for v in _layer(ents, "ENGRAVE") if v.dxftype() == "ARC"
               and v.dxf.center.y < -250]

@@ -307,7 +307,7 @@ def test_free_rotation_and_rigid_motions_are_exact(tmp_path):
     check_sheets(sheets, view, 200.0, 200.0, 0.0)
     m = Motion(90.0, (1.0, 2.0), (10.0, 20.0))
     assert m.point((2.0, 2.0)) == (10.0, 21.0)          # exact at multiples of 90 degrees
-    from aidl_lang.geometry.curves import Arc
+    from aidl_lang.geometry.shapes.curves import Arc
     a = m.segment(Arc((2.0, 2.0), 3.0, 0.25, 1.0))
     assert a.center == (10.0, 21.0) and a.radius == 3.0 and a.sweep == 1.0
     assert a.start_angle == pytest.approx(0.25 + math.pi / 2, abs=1e-15)

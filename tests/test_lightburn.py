@@ -14,7 +14,7 @@ import re
 import numpy as np
 import pytest
 
-from aidl_lang.geometry.curves import Arc, Circle, EllipticArc, Line, Spline
+from aidl_lang.geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Spline
 from aidl_lang.output import encode, for_cutting
 from aidl_lang.output.fabrication.machine import DEFAULTS, from_dict
 from aidl_lang.output.fabrication.toolpath import plan

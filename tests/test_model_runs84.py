@@ -105,7 +105,7 @@ assembly drive {
 def test_prompt_text_width_law_a_capital_or_digit_takes_about_its_size(text, size):
     # the prompt's Text line (13_door_sign: 16 mm "MEETING ROOM" ran over the screw holes: the
     # model had no way to know a text's width): `size = room / characters` fits
-    from aidl_lang.geometry.text import text_extent
+    from aidl_lang.geometry.shapes.text import text_extent
     from aidl_lang.llm.prompt import system_prompt
     assert "size: cap height (~ a capital's width)" in system_prompt()
     x0, x1, _, _ = text_extent(text, size)

@@ -452,7 +452,7 @@ def _exact_loops(c):
     """Every closed exact outline of the compiled model, as (vertices, arcs): the segment
     starts and the arcs' (centre, radius), each rounded for comparison."""
     from aidl_lang.output.part.booleans import Renderer
-    from aidl_lang.geometry.curves import Arc as XA
+    from aidl_lang.geometry.shapes.curves import Arc as XA
     r = Renderer(c.model)
     out = []
     stack = [c.model.root]

@@ -22,7 +22,7 @@ def centers(c, kind="Circle"):
             if g.kind == kind:
                 p = g.points["center"]
                 ox, oy = s.frame_offset(None)
-                from aidl_lang.geometry.expr import evaluate
+                from aidl_lang.geometry.core.expr import evaluate
                 out.append((round(x[p.ix] + evaluate(ox, x), 6), round(x[p.iy] + evaluate(oy, x), 6)))
     return out
 

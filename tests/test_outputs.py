@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from conftest import EXAMPLES
-from aidl_lang.geometry.tessellate import CHORD_TOL
+from aidl_lang.geometry.shapes.tessellate import CHORD_TOL
 from aidl_lang.output import Options, build, encode
 from aidl_lang.output.part.part import Arc, Circle, Line
 

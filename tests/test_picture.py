@@ -87,7 +87,7 @@ def test_the_text_size_the_hint_gives_clears_the_frame():
        mark=st.sampled_from(["frame", "tick", "line"]),
        valign=st.sampled_from(["middle", "baseline", "top"]))
 def test_law_followed_the_size_hint_clears_the_warning(size, gap, text, mark, valign):
-    from aidl_lang.geometry.text import text_extent
+    from aidl_lang.geometry.shapes.text import text_extent
     x0, x1, y0, y1 = text_extent(text, size, "middle", valign)
     if mark == "frame":
         w, h = 2 * max(-x0, x1) + 2 * gap, 2 * max(-y0, y1) + 2 * gap

@@ -181,7 +181,7 @@ def test_a_row_without_its_unknown_pins_nothing():
 # coefficient aside: it pinned with it, then divided by it).
 
 def _reference_pinned(rows, free, is_frame, owner):
-    from aidl_lang.geometry.expr import Expr, Lin, Nl
+    from aidl_lang.geometry.core.expr import Expr, Lin, Nl
     from aidl_lang.solver.system import EQ, PIVOT
     exprs, kind, cons = rows.exprs, rows.kind, rows.constraint
     n = rows.n_model
@@ -266,7 +266,7 @@ def _row_sets(draw):
     """Random rows over a few structures: affine equations (mostly over one structure's
     unknowns, some reaching into another's), nonlinear rows and inequalities; parameters
     held, frames or free."""
-    from aidl_lang.geometry.expr import Lin, mul, var
+    from aidl_lang.geometry.core.expr import Lin, mul, var
     from aidl_lang.solver.system import Rows
     structs = [object() for _ in range(draw(st.integers(1, 3)))]
     n = draw(st.integers(1, 14))
@@ -312,7 +312,7 @@ def test_the_peel_from_a_python_level_into_an_array_level():
     """A level peeled in Python can leave a row with no unknown in the next level's list
     (two of its unknowns pinned in that level): the array level must skip it.  Rows
     ``a``, ``b``, ``a + b`` (dependent: it spoils the component), ``a + c``, ``b + d``."""
-    from aidl_lang.geometry.expr import Lin
+    from aidl_lang.geometry.core.expr import Lin
     from aidl_lang.solver.system import Rows
     s = object()
     rows = Rows(n_model=4, n_params=4)

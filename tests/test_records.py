@@ -11,7 +11,7 @@ import sys
 import pytest
 
 from aidl_lang.diagnostics import Diagnostic, Label, Span
-from aidl_lang.geometry.curves import Arc, Circle, Line, Loop
+from aidl_lang.geometry.shapes.curves import Arc, Circle, Line, Loop
 from aidl_lang.limits import Budget
 from aidl_lang.records import Compared, Frozen, Record
 

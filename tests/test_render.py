@@ -305,7 +305,7 @@ def test_svg_paths_flip_y(compile_text):
     "Polygon([(0, 0), (10, 0), (12, 5), (4, 9), (-3, 4)])",
 ])
 def test_bounding_box_matches_the_drawn_shape(compile_text, shape):
-    from aidl_lang.geometry.bbox import numeric_box
+    from aidl_lang.geometry.relations.bbox import numeric_box
     c = compile_text(f"solid s {{ g = {shape} }}")
     assert c.ok, [(d.code, d.message) for d in c.sink.items]
     l, r, b, t = numeric_box(c.model.root, None, c.model.xs())
@@ -315,7 +315,7 @@ def test_bounding_box_matches_the_drawn_shape(compile_text, shape):
 
 @pytest.mark.parametrize("anchor, x0", [("start", 10.0), ("middle", None), ("end", None)])
 def test_text_size_is_cap_height_and_anchor_places_it(compile_text, anchor, x0):
-    from aidl_lang.geometry.bbox import numeric_box
+    from aidl_lang.geometry.relations.bbox import numeric_box
     c = compile_text(f'drawing d {{ t = Text("AIDL", (10, 20), size=8, anchor="{anchor}") }}')
     assert c.ok
     d = render_model(c.model)

@@ -238,7 +238,7 @@ def test_hull_of_two_pulleys_is_a_belt(tmp_path):
 
 
 def test_hull_of_a_list_of_shapes_and_its_bounding_box(compile_text):
-    from aidl_lang.geometry.bbox import numeric_box
+    from aidl_lang.geometry.relations.bbox import numeric_box
     c = compile_text("solid s {\n    r = Rectangle(center=(0, 0), width=10, height=10)\n"
                      "    c = Circle(center=(20, 0), radius=5)\n    h = ConvexHull([r, c])\n}\n")
     assert c.ok, [d.message for d in c.sink.items]
@@ -302,9 +302,9 @@ def test_hull_law(circles, rect, slot):
     """The hull of circles, a rectangle and a slot (its end arcs are half circles) is
     convex, its lines meet its arcs tangent, every arc lies on one of the circles, and every
     circle and corner lies inside it."""
-    from aidl_lang.geometry.curves import Arc, Circle, Line, Loop, turn_between
-    from aidl_lang.geometry.hull import hull_loop
-    from aidl_lang.geometry.offset import sweep_loops
+    from aidl_lang.geometry.shapes.curves import Arc, Circle, Line, Loop, turn_between
+    from aidl_lang.geometry.derived.hull import hull_loop
+    from aidl_lang.geometry.derived.offset import sweep_loops
     x, y, w, h = rect
     corners = [(x, y), (x + w, y), (x + w, y + h), (x, y + h)]
     loops = [Loop([Circle((cx, cy), r)]) for cx, cy, r in circles]

@@ -194,7 +194,7 @@ def test_off_outlines_is_the_every_pair_measure(seed, sizes):
     past ON_OUTLINE) and across them; also with tiny stretches, queries and candidate limits
     (the halving path)."""
     import aidl_lang.output.part.part as P
-    from aidl_lang.geometry.curves import Arc, Line
+    from aidl_lang.geometry.shapes.curves import Arc, Line
     rng = np.random.default_rng(seed)
     old = P._STRETCH, P._QUERY, P._CANDIDATES
     P._STRETCH, P._QUERY, P._CANDIDATES = sizes

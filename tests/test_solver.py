@@ -5,7 +5,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from aidl_lang.geometry.bbox import numeric_box
+from aidl_lang.geometry.relations.bbox import numeric_box
 from aidl_lang.solver import constraint_residuals
 
 from test_basic import geom, pos

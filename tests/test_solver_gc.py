@@ -45,7 +45,7 @@ def test_repeated_compiles_do_not_pile_up_dead_models():
     kept every dead model and its arrays (1.5 GB after 224 fuzz programs, then
     ``SystemError`` from C code out of memory): 40 models alive after 40 compiles.  Now the
     collector's own full collections take them (about 10-17 alive, as the heuristic goes)."""
-    from aidl_lang.geometry.model import Structure
+    from aidl_lang.geometry.core.model import Structure
     src = hierarchy(120, seed=3).source
     gc.collect()
     for _ in range(40):

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from aidl_lang.geometry.expr import Lin, Nl, evaluate
+from aidl_lang.geometry.core.expr import Lin, Nl, evaluate
 from aidl_lang.solver.tape import Tape
 
 N = 5      # parameters

@@ -10,7 +10,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from aidl_lang.geometry.expr import Lin, Nl
+from aidl_lang.geometry.core.expr import Lin, Nl
 from aidl_lang.solver import Solver
 from aidl_lang.solver.tape import Tape, TapeError
 from benchmarks.solver.families import hierarchy

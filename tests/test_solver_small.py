@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from aidl_lang.geometry.expr import Lin, Nl
+from aidl_lang.geometry.core.expr import Lin, Nl
 from aidl_lang.pipeline import compile_source
 from aidl_lang.solver import Solver, run
 from aidl_lang.solver.newton import newton, solve_dense

@@ -123,7 +123,7 @@ def test_a_very_deep_row_compiles_like_a_shallow_one():
     """A row nested deeper than Python's recursion limit falls back to the explicit stack and
     gives the same tape as the same row nested shallowly would evaluate."""
     import sys
-    from aidl_lang.geometry.expr import func, var
+    from aidl_lang.geometry.core.expr import func, var
     depth = sys.getrecursionlimit() + 500
     e = var(0)
     for _ in range(depth):

@@ -1,4 +1,4 @@
-"""Spline: the interpolating cubic spline through points (aidl_lang/geometry/spline.py), its
+"""Spline: the interpolating cubic spline through points (aidl_lang/geometry/shapes/spline.py), its
 exact segment in the output model, and `Spline(points=[...], closed=true)` in the language.
 
 Numbers are checked against the definition (passes through the points, C2 joins, natural
@@ -12,8 +12,8 @@ import numpy as np
 import pytest
 from hypothesis import example, given, settings, strategies as st
 
-from aidl_lang.geometry.curves import Circle, Line, Loop, Spline, reverse, simplify
-from aidl_lang.geometry.spline import (SplineError, bez_at, bez_box, bez_pieces, interpolate,
+from aidl_lang.geometry.shapes.curves import Circle, Line, Loop, Spline, reverse, simplify
+from aidl_lang.geometry.shapes.spline import (SplineError, bez_at, bez_box, bez_pieces, interpolate,
                                        split)
 from aidl_lang.output.part.exact import Provenance
 
@@ -88,7 +88,7 @@ def test_box_is_exact_against_dense_samples():
 
 
 def test_tessellation_within_chord_tolerance():
-    from aidl_lang.geometry.tessellate import CHORD_TOL
+    from aidl_lang.geometry.shapes.tessellate import CHORD_TOL
     c = interpolate(GUITAR, True)
     for i in range(c.n):
         b = c.span(i)
@@ -472,7 +472,7 @@ solid s {
 }
 """
     c = _compile(src, tmp_path)
-    from aidl_lang.geometry.bbox import numeric_box
+    from aidl_lang.geometry.relations.bbox import numeric_box
     body = next(g for g in c.model.root.geometry if g.kind == "Spline")
     left, right, bottom, top = numeric_box(body, c.model.root, c.model.xs())
     ref = interpolate([(0, 0), (30, 0), (30, 20), (0, 20)], True).box()
@@ -663,7 +663,7 @@ def test_a_closed_spline_that_crosses_itself_is_a_located_error(tmp_path):
     errs = _diag(src, tmp_path)
     assert [d.code for d in errs] == ["E0108"] and errs[0].span.line == 3
     assert "crosses itself at (9.24204, 7.5)" in errs[0].message
-    from aidl_lang.geometry.spline import self_crossings
+    from aidl_lang.geometry.shapes.spline import self_crossings
     c = interpolate([(0, 0), (20, 15), (40, 0), (40, 15), (20, 0), (0, 15)], True)
     cross = self_crossings(c)
     assert len(cross) == 2                       # a pretzel: it crosses itself twice
@@ -676,7 +676,7 @@ def test_a_spline_that_doubles_back_is_E0108_after_bounded_work(tmp_path):
     """Points that double back make spans that lie on each other: the subdivision search
     stopped after MAX_LEAVES small boxes per span pair (it took 28 s / 90 s before), and
     the compile's deadline stops it too."""
-    from aidl_lang.geometry import spline as sp
+    from aidl_lang.geometry.shapes import spline as sp
     back = [(0, 0), (10, 0), (0, 0), (10, 0), (0, 0), (10, 0), (0, 0), (10, 0), (0, 0), (5, 5)]
     src = f"units mm\nsolid s {{\n    body = Spline(points={back}, closed=true)\n}}\n"
     errs = _diag(src, tmp_path)
@@ -735,7 +735,7 @@ def test_curves_that_run_along_each_other_start_few_newton_polishes(monkeypatch)
     as Boxes.py's burn-corrected end caps along a fan blade's edge): the box halving leaves
     2,048 small box pairs along the stretch and each was polished by Newton (FanHole's import:
     9.3 of its 10.2 s CPU in crossings); 33 of them, evenly along, still find the crossing."""
-    import aidl_lang.geometry.spline as S
+    import aidl_lang.geometry.shapes.spline as S
     line = [(0, 0), (10, 10 / 3), (20, 20 / 3), (30, 10)]           # y = x / 3
     a = S.bezier_chain(line)
     b = S.bezier_chain([(x, y + e) for (x, y), e in zip(line, (-1e-4, 4e-5, 4e-5, 1e-4))])

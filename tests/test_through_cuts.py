@@ -368,7 +368,7 @@ def _near(p, q, tol=0.0125 + 1e-9):
 def _on(p, line, tol=TOL) -> bool:
     """Point ``p`` on the segment ``line`` (an exact Line or Arc, by its ends and its
     distance)."""
-    from aidl_lang.geometry.curves import Line
+    from aidl_lang.geometry.shapes.curves import Line
     if not isinstance(line, Line):
         return False
     (ax, ay), (bx, by) = line.start, line.end

@@ -41,7 +41,7 @@ def _plan(src, name="t.aidl"):
 
 def _enclosed(inner, outer) -> bool:
     import numpy as np
-    from aidl_lang.geometry.curves import Loop
+    from aidl_lang.geometry.shapes.curves import Loop
     pts = Loop(outer.segments).points()
     return _inside(tuple(Loop(inner.segments).points()[0]), np.asarray(pts))
 
@@ -174,7 +174,7 @@ def test_the_tour_and_the_depths_through_a_grid_are_those_of_every_entry(on_grid
     near entries on a grid of holes: the first) and the same depths as every entry measured
     and every box tested at each step."""
     import numpy as np
-    from aidl_lang.geometry.curves import Circle, Line, Loop
+    from aidl_lang.geometry.shapes.curves import Circle, Line, Loop
     from aidl_lang.output.fabrication.toolpath import TOUR_SMALL, Cut, _depths, _depths_each, _tour
     rng = np.random.default_rng(74)
     cuts = []
@@ -205,7 +205,7 @@ def test_the_tour_and_the_depths_through_a_grid_are_those_of_every_entry(on_grid
 
 def _sheet(n, rng, on_grid):
     """An output of ``n`` parts, each a 4 mm square with a round hole, spread on a sheet."""
-    from aidl_lang.geometry.curves import Circle, Line, Loop
+    from aidl_lang.geometry.shapes.curves import Circle, Line, Loop
     from aidl_lang.output.part.part import Output, PartOutline
     parts = []
     for k in range(n):

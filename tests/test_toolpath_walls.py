@@ -23,7 +23,7 @@ from shapely.ops import unary_union  # noqa: E402
 from test_gcode import replay  # noqa: E402
 from test_machine_safety import _pieces_after_the_bit, _pts, _render_cli, _slit_plate  # noqa: E402
 
-from aidl_lang.geometry.curves import Circle, Line, Loop  # noqa: E402
+from aidl_lang.geometry.shapes.curves import Circle, Line, Loop  # noqa: E402
 from aidl_lang.output import build, for_cutting  # noqa: E402
 from aidl_lang.output.checks.toolpath_walls import eaten_walls  # noqa: E402
 from aidl_lang.output.part.part import Output, PartOutline, Stroke  # noqa: E402

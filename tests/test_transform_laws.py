@@ -32,8 +32,8 @@ from shapely.ops import unary_union
 
 import aidl_lang
 from aidl_lang.api import exact_bbox
-from aidl_lang.geometry.bbox import numeric_box
-from aidl_lang.geometry.curves import Arc, Circle, EllipticArc, Line, Spline
+from aidl_lang.geometry.relations.bbox import numeric_box
+from aidl_lang.geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Spline
 from aidl_lang.output.part.booleans import Renderer
 from aidl_lang.registry import ENTRIES
 
@@ -349,7 +349,7 @@ def _curve_points(r, g) -> list:
     if g.kind == "Point":
         return [cen_xy(r, g.points["p"] if "p" in g.points else next(iter(g.points.values())))]
     if g.kind == "Polyline":
-        from aidl_lang.geometry.members import points_of
+        from aidl_lang.geometry.relations.members import points_of
         return [cen_xy(r, p) for p in points_of(g)]
     seg = Renderer(r.compiled.model).segment(g)
     if isinstance(seg, Line):

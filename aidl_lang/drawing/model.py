@@ -12,8 +12,8 @@ import contextvars
 import math
 from dataclasses import dataclass, field
 
-from ..geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
-from ..geometry.spline import CubicSpline
+from ..geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
+from ..geometry.shapes.spline import CubicSpline
 from ..limits import MAX_EXTENT
 
 JOIN_TOL = 1e-6          # mm: pieces whose ends are this close chain into one

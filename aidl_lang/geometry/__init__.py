@@ -1,10 +1,15 @@
-"""Geometry: what a program builds and what the solver and the outputs read.
+"""Geometry: what a program builds and what the solver and the outputs read, in four rooms by
+what a reader looks for, each importing only the rooms after it (the contract in
+``pyproject.toml``):
 
-:mod:`.expr` (residual expressions), :mod:`.model` (structures, points, scalars, equations),
-:mod:`.values` (the interpreter's values with units), :mod:`.primitives` (shapes),
-:mod:`.members` (their members: ``rect.top_left``, ``line.length``), :mod:`.constraints`
-(constraints to equations), :mod:`.bbox` (bounding boxes), :mod:`.operations` (mirror,
-patterns, fillets and chamfers), :mod:`.tessellate` (chords for arcs), :mod:`.text`
-(single-stroke font).  Imports nothing above it but the core's
-diagnostics, registry and limits (the contract in ``pyproject.toml``).
+- :mod:`.derived`: shapes made from shapes (mirror, patterns, fillets and chamfers; Offset,
+  Hull, Clip);
+- :mod:`.relations`: what a program says about shapes (members, constraints to equations,
+  asserts, bounding boxes);
+- :mod:`.shapes`: the shapes and the exact curves they are made of (primitives, lines, arcs,
+  ellipses, splines, the font, drawings);
+- :mod:`.core`: the expression and structure model (residual expressions, structures, points,
+  scalars, equations, values with units).
+
+Imports nothing above it but the core's diagnostics, registry and limits.
 """

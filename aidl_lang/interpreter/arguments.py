@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from .. import ast as A
 from ..diagnostics import EvalError, Label, shown_path
-from ..geometry.values import ANG, LEN, NUM, Q, dim_name, type_name
+from ..geometry.core.values import ANG, LEN, NUM, Q, dim_name, type_name
 from ..registry import FUNCTIONS, UNITS_LENGTH
 from .common import _STMT_ERRORS, POISON, Scope, _a, _const, _definition_lines, _src, _value
 
@@ -214,8 +214,8 @@ def precheck_asserts(ip, d: A.Def, tscope: Scope, given: dict, spans: dict) -> N
 
 def _failed(ip, st: A.Assert, d: A.Def, named: list, spans: dict) -> EvalError | None:
     """The error at the call when assert ``st`` fails on the arguments ``named``, else None."""
-    from ..geometry.assertions import describe, holds
-    from ..geometry.model import Assertion
+    from ..geometry.relations.assertions import describe, holds
+    from ..geometry.core.model import Assertion
     sides: list = []
     try:
         ip._assert_sides(st.expr, sides)

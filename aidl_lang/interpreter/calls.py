@@ -8,12 +8,12 @@ import math
 
 from .. import ast as A
 from ..diagnostics import EvalError, did_you_mean, shown_path
-from ..geometry.constraints import BUILDERS, ConstraintError
-from ..geometry.expr import Lin, _lin, _new, as_const, func, lift, mul, var
-from ..geometry.members import member as geom_member
-from ..geometry.model import Constraint, Equation, Point, Scalar
-from ..geometry.primitives import PrimitiveError, build
-from ..geometry.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
+from ..geometry.relations.constraints import BUILDERS, ConstraintError
+from ..geometry.core.expr import Lin, _lin, _new, as_const, func, lift, mul, var
+from ..geometry.relations.members import member as geom_member
+from ..geometry.core.model import Constraint, Equation, Point, Scalar
+from ..geometry.shapes.primitives import PrimitiveError, build
+from ..geometry.core.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
                                Template, UnitError, angle_scale, dim_name, mul_dim, owners_in, owners_of,
                                rad_power, radians_of, type_name)
 from ..limits import MAX_EXTENT
@@ -160,7 +160,7 @@ class Calls:
                 return self._bend(conv, node, spans)
             return self._place(conv, node, spans)
         if entry.category == "operation":
-            from ..geometry.operations import OperationError, apply
+            from ..geometry.derived.operations import OperationError, apply
             self._check_subtree(owners_of(*conv.values()), node.span, self._need_struct(node.span))
             if cname == "CutInto":
                 return self._cut_into(conv, node, spans)
@@ -169,7 +169,7 @@ class Calls:
                 conv = dict(conv, _span=node.span)
             n0 = len(self.model.constraints)
             if cname in TRANSFORMS:          # issue 95: Scale, Translate, Flip of a whole structure
-                from ..geometry.transforms import apply
+                from ..geometry.derived.transforms import apply
             try:
                 out = apply(self, cname, conv, name)
             except OperationError as ex:
@@ -417,7 +417,7 @@ class Calls:
             raise EvalError("E0108", str(ex), node.span,
                             hint=getattr(ex, "hint", None) or lookup(kind).signature())
         if kind == "Text":
-            from ..geometry.text import missing_glyphs, text_extent
+            from ..geometry.shapes.text import missing_glyphs, text_extent
             self.check_size(len(g.data["text"]), node.span, "a Text")
             g.data["extent"] = g.data.get("extent") or text_extent(g.data["text"], g.data["size"], g.data["anchor"],
                                            g.data["valign"], g.data["rotation"])

@@ -6,8 +6,8 @@ import math
 
 from .. import ast as A
 from ..diagnostics import DiagnosticSink, EvalError, Span
-from ..geometry.expr import Lin
-from ..geometry.model import Structure
+from ..geometry.core.expr import Lin
+from ..geometry.core.model import Structure
 from ..registry import (FUNCTIONS, lookup)
 
 DEG = math.pi / 180.0
@@ -131,8 +131,8 @@ def show(v, unit_scale: float = 1.0, depth: int = 0) -> str:
     """The text ``str(v)`` and an f-string give for a value: numbers in the file's unit,
     points as ``(x, y)``, geometry and structures by kind and path; never an internal repr
     or a file path."""
-    from ..geometry.expr import as_const
-    from ..geometry.values import (ANG, LEN, PV, BBoxRef, Builtin, GeomRef, Namespace, Q,
+    from ..geometry.core.expr import as_const
+    from ..geometry.core.values import (ANG, LEN, PV, BBoxRef, Builtin, GeomRef, Namespace, Q,
                                    StructRef, Template, type_name)
     if isinstance(v, bool):
         return "true" if v else "false"

@@ -8,10 +8,10 @@ import math
 
 from .. import ast as A
 from ..diagnostics import EvalError, did_you_mean
-from ..geometry.bbox import BBTerm
-from ..geometry.expr import Lin, _lin, _new, as_const, func, lift
-from ..geometry.members import member as geom_member, member_names
-from ..geometry.values import (_EMPTY, ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, Radians,
+from ..geometry.relations.bbox import BBTerm
+from ..geometry.core.expr import Lin, _lin, _new, as_const, func, lift
+from ..geometry.relations.members import member as geom_member, member_names
+from ..geometry.core.values import (_EMPTY, ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, Radians,
                                StructRef, dim_name, mul_dim, rad_power, radians_of, type_name)
 from ..registry import (CONSTANTS, FUNCTIONS, UNITS_ANGLE, UNITS_LENGTH, lookup)
 from .common import (DEG, POISON, Scope, _Silent, _a, _fmt_num, show)
@@ -398,7 +398,7 @@ class Expressions:
     def _radians_op(self, op: str, l: Q, r: Q, e: A.BinOp) -> Q:
         """``l op r`` where ``pi``, ``tau`` or a value made from them (:class:`Radians`)
         takes part: the value of :meth:`_q_op` (next to an angle a number of radians is read
-        as radians, :func:`~aidl_lang.geometry.values.unify_add`), carrying the radian to the
+        as radians, :func:`~aidl_lang.geometry.core.values.unify_add`), carrying the radian to the
         power units combine to: ``2 * pi / n`` and ``pi * module / pitch_r`` 1, ``pi * pi``
         2, ``pi / pi`` 0; ``+``/``-`` keep the power of their side that has one (``tau -
         0.1``: a plain number next to radians is radians, as in ``sin``), and a sum of two

@@ -9,11 +9,11 @@ from pathlib import Path
 
 from .. import ast as A
 from ..diagnostics import EvalError, Span, did_you_mean
-from ..geometry.bbox import contains_bbox
-from ..geometry.model import Constraint, Equation, Model, Structure
-from ..geometry.members import member as geom_member
-from ..geometry.expr import Lin, _new
-from ..geometry.values import (ANG, LEN, NUM, dim_name, PV, GeomRef, Namespace, Q, StructRef, Template, UnitError, angle_scale, owners_of, type_name, unify_add)
+from ..geometry.relations.bbox import contains_bbox
+from ..geometry.core.model import Constraint, Equation, Model, Structure
+from ..geometry.relations.members import member as geom_member
+from ..geometry.core.expr import Lin, _new
+from ..geometry.core.values import (ANG, LEN, NUM, dim_name, PV, GeomRef, Namespace, Q, StructRef, Template, UnitError, angle_scale, owners_of, type_name, unify_add)
 from ..limits import MAX_TEMPLATE_DEPTH, MIN_WALL_LEAST, min_wall_problem
 from ..registry import CONSTANTS, UNITS_LENGTH, template_param
 from ..sources import ImportRefused, read_import, resolve_import
@@ -179,7 +179,7 @@ class Statements:
         written to ``into[NAME]`` once the range itself is sound, before the value is checked
         against it (a form moves a value that left its range, one that depends on other
         params, back into it: aidl studio)."""
-        from ..geometry.values import dim_name
+        from ..geometry.core.values import dim_name
         if not isinstance(val, Q) or val.const() is None:
             raise EvalError("E0124", f"param `{st.name}` has a range but is not a number, length "
                             "or angle", st.options[0].span,
@@ -238,7 +238,7 @@ class Statements:
         28).  A bare number stands for a length or an angle like a bare number in the file;
         a unit given for a param whose default is a bare number is checked where it is used
         (:meth:`override_misuse`)."""
-        from ..geometry.values import ANG, dim_name
+        from ..geometry.core.values import ANG, dim_name
         from ..parser import ParseError, parse_expression
         arg = f"`--set {name}={text}`"
         want = type_name(default) if default is not None else "value"
@@ -801,8 +801,8 @@ class Statements:
     def _assert(self, st) -> None:
         """``assert cond[, "message"]``: comparisons joined by ``and``.  Sides known now
         (params, constants) are checked at once; the rest are kept on the model
-        (:class:`~aidl_lang.geometry.model.Assertion`) and checked after solving (E0405)."""
-        from ..geometry.model import Assertion
+        (:class:`~aidl_lang.geometry.core.model.Assertion`) and checked after solving (E0405)."""
+        from ..geometry.core.model import Assertion
         sides = []
         self._assert_sides(st.expr, sides)
         scale = self.unit_scale
@@ -814,7 +814,7 @@ class Statements:
         for side in sides:
             op, l, r, dim = side
             if _const(l) and _const(r):
-                from ..geometry.assertions import holds
+                from ..geometry.relations.assertions import holds
                 if not holds(op, _value(l), _value(r)):
                     known.append((op, _value(l), _value(r), dim))
             else:
@@ -822,7 +822,7 @@ class Statements:
         if known:
             # reported now, and the program goes on: every false assert is reported, those
             # checked after solving too (the pipeline solves when E0405 is the only error)
-            from ..geometry.assertions import describe
+            from ..geometry.relations.assertions import describe
             self.sink.error("E0405", describe(a, known), st.span, hint=_ASSERT_HINT)
         elif a.sides:
             self.model.assertions.append(a)

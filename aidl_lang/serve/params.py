@@ -43,7 +43,7 @@ def _param(name: str, v, rng: dict | None, line: int, default=None) -> Param | N
         return Param(name, "bool", v, v if default is None else default, line=line)
     if isinstance(v, str):
         return Param(name, "string", v, v if default is None else default, line=line)
-    from ..geometry.values import ANG, LEN, NUM, Q
+    from ..geometry.core.values import ANG, LEN, NUM, Q
     if not isinstance(v, Q) or v.const() is None:
         return None
     c = v.const()

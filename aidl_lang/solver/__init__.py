@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..records import Compared
-from ..geometry.model import Constraint, Model
+from ..geometry.core.model import Constraint, Model
 from .hierarchy import CHECK_TOL, ITER_BUDGET, Solver
 from .holds import build_rows
 from .system import LINK, SIGN, user_residuals

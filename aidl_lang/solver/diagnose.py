@@ -34,7 +34,7 @@ from ..limits import now
 from ..records import Compared
 from .arrays import unique
 
-from ..geometry.model import Constraint
+from ..geometry.core.model import Constraint
 from .system import user_residuals
 
 DEP_TOL = 1e-7

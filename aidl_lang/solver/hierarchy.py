@@ -38,7 +38,7 @@ from ..limits import now
 from ..records import Compared, Record
 from .arrays import unique
 
-from ..geometry.model import Model, Structure
+from ..geometry.core.model import Model, Structure
 from ..memory import gc_paused
 from .batch import newton_batch
 from .newton import TOL, dense_enough, newton

@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..geometry.expr import Lin, Nl
-from ..geometry.model import Model
+from ..geometry.core.expr import Lin, Nl
+from ..geometry.core.model import Model
 from .system import EQ, SIGN, Rows
 from .system import build_rows as _all_rows
 
@@ -41,7 +41,7 @@ def row_vars(e, out: set) -> None:
 def settle_holds(rows: Rows, model: Model, x: np.ndarray) -> Rows:
     """``rows`` less each hold row that is not needed (issue 49).
 
-    A hold (:attr:`~aidl_lang.geometry.model.Constraint.hold`: a ``Drawing2D``'s origin at
+    A hold (:attr:`~aidl_lang.geometry.core.model.Constraint.hold`: a ``Drawing2D``'s origin at
     its ``at``, ``origin.x - a == 0`` and ``origin.y - b == 0``) keeps a placement only
     along the directions the other constraints leave free: a hold row is kept when its
     unknown still moves in the null space of the Jacobian of the other equations (and the
@@ -52,7 +52,7 @@ def settle_holds(rows: Rows, model: Model, x: np.ndarray) -> Rows:
     their slacks) are left out of the Jacobian: an inactive bound places nothing; but a bound
     the held drawing breaks must move it, so the holds kept in a component with an
     inequality are listed in ``bounded_holds``, and a failed solve is run again with them
-    released (:attr:`~aidl_lang.geometry.model.Constraint.released`; :func:`..run`).  A
+    released (:attr:`~aidl_lang.geometry.core.model.Constraint.released`; :func:`..run`).  A
     released hold's rows are dropped.
 
     Only the rows connected to the holds' unknowns (through free unknowns) are looked at:

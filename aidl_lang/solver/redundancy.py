@@ -17,7 +17,7 @@ from ..limits import now
 from ..records import Compared
 from .arrays import unique
 
-from ..geometry.model import Constraint
+from ..geometry.core.model import Constraint
 from .diagnose import (MAX_DENSE, _components, _dense_components, _dense_cut, _dense_refused,
                        _order_key, _peeled_rows, _row_entries, _with_pins, dependencies,
                        used_free_columns)

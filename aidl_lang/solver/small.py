@@ -30,7 +30,7 @@ import math
 
 import numpy as np
 
-from ..geometry.expr import Lin, Nl
+from ..geometry.core.expr import Lin, Nl
 from .newton import NewtonResult, _Step, dense_enough
 from .reduce import _KEEP, Reduction, classes
 

@@ -21,9 +21,9 @@ import numpy as np
 
 from ..records import Compared, Record
 from ..memory import gc_paused
-from ..geometry.bbox import collect, exclusions, expand, side_expr
-from ..geometry.expr import Lin, add, func, mul, var
-from ..geometry.model import Constraint, Model
+from ..geometry.relations.bbox import collect, exclusions, expand, side_expr
+from ..geometry.core.expr import Lin, add, func, mul, var
+from ..geometry.core.model import Constraint, Model
 
 EQ, LINK, SIGN = 0, 1, 2
 

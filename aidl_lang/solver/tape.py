@@ -32,7 +32,7 @@ from ..records import Record
 from ..memory import gc_paused
 from .arrays import unique
 
-from ..geometry.expr import Lin, Nl
+from ..geometry.core.expr import Lin, Nl
 
 LEAF, ADD, MUL, DIV, POW, ATAN2, MIN, MAX = range(8)
 _UNARY_OPS = ["sin", "cos", "tan", "asin", "acos", "atan", "sqrt", "abs", "exp", "log"]

@@ -28,7 +28,7 @@ scaled, as ``--budget`` does).
 The floor (the ``floor`` column, one per case, also a fresh process, CPU the same way):
 ``ezdxf.readfile`` of the case's DXF, ONE Manifold ``CrossSection`` boolean (the outline minus
 every circle, each a polygon of as many chords as our booleans cut it into:
-``aidl_lang.geometry.tessellate.segments_for``, sagitta <= ``CHORD_TOL`` 0.005 mm; the
+``aidl_lang.geometry.shapes.tessellate.segments_for``, sagitta <= ``CHORD_TOL`` 0.005 mm; the
 circles built as one ``CrossSection``, then one difference, its polygons read out) and an
 ezdxf write of the outline and the circles.  ``ratio`` is ours / floor; the goal of issue 74
 is <= 2 for the 20,000-hole panel, and the 50,000-hole panel within the default budget.
@@ -65,7 +65,7 @@ import tempfile
 import time
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-CHORD_TOL = 0.005          # aidl_lang.geometry.tessellate.CHORD_TOL (the floor's chords)
+CHORD_TOL = 0.005          # aidl_lang.geometry.shapes.tessellate.CHORD_TOL (the floor's chords)
 
 SIZES = {2000: (50, 40), 19000: (100, 190), 20000: (200, 100), 50000: (250, 200)}
 DEFAULT_SIZES = [2000, 20000, 50000]

@@ -8,12 +8,12 @@ loops where it crosses itself cut off (:func:`_trim_small_loops`), a loop that s
 itself (:func:`_crossing`) split at its crossings on a cut role (:func:`_lobes`), else at
 the points it passes through twice, a crumb pinched off there cut off (:func:`_pinched_lobes`),
 else kept as a path.  Crossings are exact on the pieces' own carriers
-(:func:`~aidl_lang.geometry.curves.crossings`)."""
+(:func:`~aidl_lang.geometry.shapes.curves.crossings`)."""
 from __future__ import annotations
 
 import math
 
-from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
+from ...geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from ..model import (_OPTS, JOIN_TOL, Drawing, Note, Outline, Path, _plural, _segs_box,
                      bezier_spline)
 
@@ -90,7 +90,7 @@ def _chain(pieces: list, tol: float = JOIN_TOL, gaps: list | None = None,
     ``tol`` above :data:`JOIN_TOL` (the closing tolerance): ends that far apart are made to
     meet exactly (:func:`_meet`) and each gap so closed is appended to ``gaps`` as ``(gap mm,
     where)``.  ``deadline``: a :class:`~aidl_lang.limits.Deadline`, checked as it goes."""
-    from ...geometry.curves import reverse
+    from ...geometry.shapes.curves import reverse
     pieces = [list(p) for p in pieces]
     used = [False] * len(pieces)
     grid: dict = {}
@@ -208,10 +208,10 @@ def _piece_length(s) -> float:
 
 def _split_at(s, x) -> tuple | None:
     """Segment ``s`` cut at its point ``x``: ``(s from its start to x, s from x to its
-    end)``, each on ``s``'s own carrier (:func:`~aidl_lang.geometry.curves.with_ends`:
+    end)``, each on ``s``'s own carrier (:func:`~aidl_lang.geometry.shapes.curves.with_ends`:
     exact, a line stays a line, an arc an arc, a curve the same curve); None when ``x`` is
     not on ``s`` between its ends (their lengths do not add up to its own)."""
-    from ...geometry.curves import with_ends
+    from ...geometry.shapes.curves import with_ends
     try:
         a, b = with_ends(s, s.start, x), with_ends(s, x, s.end)
         la, lb, l0 = _piece_length(a), _piece_length(b), _piece_length(s)
@@ -235,10 +235,10 @@ def _distinct(pts, tol: float = 1e-9) -> list:
 
 def _splits(a, b):
     """Each exact crossing ``x`` of pieces ``a`` and ``b`` (of their carriers,
-    :func:`~aidl_lang.geometry.curves.crossings`, distinct) with both split there:
+    :func:`~aidl_lang.geometry.shapes.curves.crossings`, distinct) with both split there:
     ``(x, (a before, a after), (b before, b after))``; a crossing where either cannot be
     split is skipped, and a pair whose carriers the solver cannot cross gives none."""
-    from ...geometry.curves import carrier, crossings
+    from ...geometry.shapes.curves import carrier, crossings
     try:
         pts = _distinct(crossings(carrier(a), carrier(b)))
     except Exception:
@@ -255,7 +255,7 @@ def _overshoot(segs: list, bound: float):
     theirs): ``(loop, overshoot mm, crossing)``, the loop running from the crossing to the
     crossing with the bits before and after it trimmed, or None.  The trimmed bits each run
     at most ``bound`` mm along the chain; the crossing is exact on both pieces' carriers
-    (:func:`~aidl_lang.geometry.curves.crossings`)."""
+    (:func:`~aidl_lang.geometry.shapes.curves.crossings`)."""
     if bound <= 0 or len(segs) < 2 or math.dist(segs[0].start, segs[-1].end) > 2 * bound:
         return None
     heads, run = [], 0.0            # the pieces whose start lies within bound of the start
@@ -368,7 +368,7 @@ def _split_crossing(segs: list, hit, boxes=None) -> tuple[list, list] | None:
     """The closed loop ``segs`` split at its crossing near ``hit`` (a point :func:`_crossing`
     found on the chords) into the two loops that meet there, ``(from the crossing round to
     it on the first piece's side, the rest)``: the two crossing pieces cut at the exact
-    crossing of their carriers (:func:`~aidl_lang.geometry.curves.crossings`), so every piece
+    crossing of their carriers (:func:`~aidl_lang.geometry.shapes.curves.crossings`), so every piece
     drawn is kept, end to end, in one loop or the other.  None when no exact crossing of two
     pieces lies within :data:`CROSSING_NEAR` of ``hit`` (with a loop longer than
     :data:`LOBE_MIN` on each side)."""
@@ -507,7 +507,7 @@ def degenerate_tol(pieces, loops, circles, ellipses) -> float:
     absolute coordinate of the pieces' ends, circles' and ellipses' centres.  The compiler
     calls two points one when they are within ``1e-9 * max(1 mm, the largest coordinate of
     the statement)`` (``Bezier`` and ``Spline``: E0108 "is one point",
-    :func:`aidl_lang.geometry.spline.check_points`), so a piece kept here stays ten times
+    :func:`aidl_lang.geometry.shapes.spline.check_points`), so a piece kept here stays ten times
     past what it refuses, after the writer's shortest-decimal rounding (1e-12 mm); and
     :data:`JOIN_TOL` is where two ends are one point for the chaining."""
     c = 0.0
@@ -551,7 +551,7 @@ def _drop_in(segs: list, tol: float, dropped: dict) -> list:
                 dropped["Bézier piece"] = dropped.get("Bézier piece", 0) + len(spans) - len(keep)
                 if not keep:
                     continue
-                from ...geometry.curves import _span_steps
+                from ...geometry.shapes.curves import _span_steps
                 h = _span_steps(s)
                 kept = [list(spans[i]) for i in keep]
                 for j in range(1, len(kept)):        # each span starts where the last ended
@@ -576,8 +576,8 @@ def _corner_loops(segs: list) -> tuple[list, int]:
     were turned round."""
     import numpy as np
 
-    from ...geometry.curves import reverse, sample_xy
-    from ...geometry.drawing2d import _inside
+    from ...geometry.shapes.curves import reverse, sample_xy
+    from ...geometry.shapes.drawing2d import _inside
     at = [i for i, s in enumerate(segs) if _is_corner_loop(s)]
     if not at or len(at) == len(segs):
         return segs, 0
@@ -607,7 +607,7 @@ SPIKE_TOL = 0.005        # mm: a curve out to a cusp and back this near itself i
 def _beside(s, other, tol: float) -> bool:
     """Whether every point of segment ``s`` (its chord ends) lies within ``tol`` of
     ``other``'s carrier."""
-    from ...geometry.curves import carrier, distance_to, sample_xy
+    from ...geometry.shapes.curves import carrier, distance_to, sample_xy
     xs: list = []
     ys: list = []
     sample_xy([s], xs, ys)
@@ -623,7 +623,7 @@ def _cusp_spikes(segs: list) -> tuple[list, int]:
     A laser cuts the spike once and it adds nothing to the part: the shorter piece is left
     out, the longer one cut at the foot of the shorter one's far end (on its own carrier)
     and a line bridges the hair between them.  Returns the loop and how many spikes."""
-    from ...geometry.curves import carrier, foot, tangent_at
+    from ...geometry.shapes.curves import carrier, foot, tangent_at
     out, n_cut, i = list(segs), 0, 0
     while i < len(out) and len(out) > 3:
         a, b = out[i], out[(i + 1) % len(out)]
@@ -669,7 +669,7 @@ def _cusp_spline_crossings(a: Spline, b: Spline) -> list:
     mm all along where they run within 1e-3 mm of each other from the cusp (hundreds of box
     pairs, each polished: 0.1 s a cusp); this is about 40 points a piece."""
     import numpy as np
-    from ...geometry.spline import newton2
+    from ...geometry.shapes.spline import newton2
     F = [0.0] + [2.0 ** -k for k in range(40, -1, -1)]
     ua = [a.u1 + (a.u0 - a.u1) * f for f in F]           # from the cusp back along a
     vb = [b.u0 + (b.u1 - b.u0) * f for f in F]           # from the cusp on along b
@@ -710,7 +710,7 @@ def _cusp_crossings(segs: list, bound: float) -> tuple[list, int]:
     statement the compiler checks so) that loops over itself is no outline (E0108).  Of
     several such crossings the farthest from the cusp within ``bound`` is taken.  Returns
     the loop and the number of loops cut out."""
-    from ...geometry.curves import tangent_at
+    from ...geometry.shapes.curves import tangent_at
     out, n_cut, i = list(segs), 0, 0
     while i < len(out) and len(out) > 2:
         j = (i + 1) % len(out)
@@ -881,7 +881,7 @@ def _finish(pieces, loops, circles, ellipses, notes, unit, name,
             if len(parts) > 1 and abs(o.area) <= LOBE_MIN ** 2:
                 continue        # a curve drawn out and back over itself: no area, no loop
             if o.area < 0:
-                from ...geometry.curves import reverse
+                from ...geometry.shapes.curves import reverse
                 o.segments = [reverse(s) for s in reversed(o.segments)]
             if opts.split_crossings:             # a cut role: corner loops cut
                 o.segments = _corner_loops(o.segments)[0]

@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import math
 
-from ...geometry.curves import Arc, Circle, EllipticArc, Loop, Spline
-from ...geometry.drawing2d import _inside_many
+from ...geometry.shapes.curves import Arc, Circle, EllipticArc, Loop, Spline
+from ...geometry.shapes.drawing2d import _inside_many
 from ..model import Drawing
 from .hole_cuts import polygons_overlap
 from .notches import NOTCH_AREA, _notches, _polygons_touch
@@ -119,7 +119,7 @@ def _whole_ellipse(el: tuple) -> EllipticArc:
     """The whole ellipse ``(cx, cy, rx, ry, rotation)`` of a :class:`Drawing` (mm, radians)
     as a loop's one segment, its numbers as the drawing gives them (written back as they
     are: :func:`_loop`)."""
-    from ...geometry.ellipse import EllipseCurve
+    from ...geometry.shapes.ellipse import EllipseCurve
     cx, cy, rx, ry, rot = el
     return EllipticArc(EllipseCurve((cx, cy), rx, ry, rot), 0.0, 2 * math.pi)
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 
-from ...geometry.curves import Arc, Circle, EllipticArc, Loop, Spline
+from ...geometry.shapes.curves import Arc, Circle, EllipticArc, Loop, Spline
 from ..model import GAP_NOTE, Path
 
 
@@ -80,7 +80,7 @@ def inner_rests(loops: list, inside: list, deadline=None,
     a set to which each pair of overlapping holes is added, as the frozenset of their
     :func:`loop_key` (so that the writer can say that the two may cut one opening,
     whichever part the loops are written in)."""
-    from ...geometry.drawing2d import _inside
+    from ...geometry.shapes.drawing2d import _inside
     partners, poly = overlapping_holes(loops, inside, deadline)
     if pairs is not None:
         pairs.update(frozenset((loop_key(loops[i]), loop_key(loops[j])))
@@ -102,7 +102,7 @@ def inner_rests(loops: list, inside: list, deadline=None,
 def loop_key(segs: list):
     """A key of the closed loop ``segs`` (segments) that stays the same however often the
     loop is built from its drawing: its first segment's identity; a whole ellipse's own
-    value (a :class:`~aidl_lang.geometry.curves.EllipticArc` made afresh from the drawing's
+    value (a :class:`~aidl_lang.geometry.shapes.curves.EllipticArc` made afresh from the drawing's
     numbers each time, :func:`~.program._whole_ellipse`)."""
     s = segs[0]
     return s if isinstance(s, EllipticArc) and s.whole else id(s)
@@ -116,7 +116,7 @@ def _middle(s) -> tuple[float, float]:
     if isinstance(s, EllipticArc):
         return s.at(s.start_param + s.sweep / 2)
     if isinstance(s, Spline):
-        from ...geometry.spline import bez_at
+        from ...geometry.shapes.spline import bez_at
         return bez_at(s.spans[len(s.spans) // 2], 0.5)
     return ((s.start[0] + s.end[0]) / 2, (s.start[1] + s.end[1]) / 2)
 
@@ -140,14 +140,14 @@ def _hull_box(s) -> tuple[float, float, float, float]:
 
 def cut_at_crossings(segs: list, others: list, box=None) -> tuple[list, list]:
     """``(pieces, near)``: the closed loop ``segs`` (segments, mm) cut exactly at every point
-    where it crosses a segment of ``others`` (:func:`~aidl_lang.geometry.curves.crossings` of
+    where it crosses a segment of ``others`` (:func:`~aidl_lang.geometry.shapes.curves.crossings` of
     their carriers, each point on both segments), its pieces in its order, each on its own
     carrier (:func:`~.chain._split_at`: a line stays a line, an arc an arc, a curve the same
     curve); a whole circle that is crossed is first made the full-turn arc from its first
     crossing, turning as it does.  With ``box`` (``(x0, y0, x1, y1)``, mm) only the segments
     whose box meets it are cut, the others kept whole; ``near`` says which pieces come of
     segments that were cut (all, without ``box``)."""
-    from ...geometry.curves import carrier, crossings
+    from ...geometry.shapes.curves import carrier, crossings
     from .chain import _distinct, _piece_length, _split_at
 
     boxes = [_hull_box(t) for t in others]

@@ -30,8 +30,8 @@ def _notches(out: list, across: dict, polys: list, loops: list, areas: list,
     import manifold3d as mf
     import numpy as np
 
-    from ...geometry.curves import Loop
-    from ...geometry.drawing2d import _inside_many
+    from ...geometry.shapes.curves import Loop
+    from ...geometry.shapes.drawing2d import _inside_many
     found: dict = {}
     for i, cand in across.items():
         H = polys[i]

@@ -6,9 +6,9 @@ decimals, so no curve of theirs is exactly round and an exact-only import keeps 
 splines.  :func:`snap_drawing` replaces, in a :class:`~.model.Drawing` read from a file:
 
 * a closed loop made only of Bézier pieces that lies within ``TOL`` of one circle by a
-  :class:`~aidl_lang.geometry.curves.Circle` (the drawing's ``circles``);
+  :class:`~aidl_lang.geometry.shapes.curves.Circle` (the drawing's ``circles``);
 * a run of Bézier pieces in a loop or an open path that lies within ``TOL`` of one arc by an
-  :class:`~aidl_lang.geometry.curves.Arc` through the run's own two ends (the loop stays
+  :class:`~aidl_lang.geometry.shapes.curves.Arc` through the run's own two ends (the loop stays
   closed, its neighbours untouched); a run that is no one arc is cut where it stops being
   one (a burn corner of 0.1 mm, then a straight piece, ...).
 
@@ -28,7 +28,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from ...geometry.curves import Arc, Circle, Spline
+from ...geometry.shapes.curves import Arc, Circle, Spline
 from ..model import Drawing
 
 SAMPLES = 16        # points per Bézier span at which the deviation is taken

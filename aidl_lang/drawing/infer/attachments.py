@@ -1,8 +1,8 @@
 """``aidl import --infer``: outlines no one primitive makes, read as a primitive with
 attachments (issue 60; docs/import.md, "Inferring the design"; used by :class:`~.infer._Part`).
 
-In: one closed loop of :class:`~aidl_lang.geometry.curves.Line` and
-:class:`~aidl_lang.geometry.curves.Arc` pieces (mm, radians).  Out, or None:
+In: one closed loop of :class:`~aidl_lang.geometry.shapes.curves.Line` and
+:class:`~aidl_lang.geometry.shapes.curves.Arc` pieces (mm, radians).  Out, or None:
 
 * :func:`_attachments`: a rectangle (rounded or not) with tabs standing out of its sides:
   the rectangle's :class:`~.infer_shapes.Shape` and each tab as a closed chain (its pieces off
@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import math
 
-from ...geometry.curves import Arc, Line
+from ...geometry.shapes.curves import Arc, Line
 from .shapes import EQUAL_TOL, Shape, _close, rrect_pieces
 
 

@@ -5,7 +5,7 @@ hole's exact loop and written with the size params a person keeps (``ddhole_d``,
 ``ddhole_flat`` across the flats; ``keyway_d``, ``keyway_w``, ``keyway_depth`` past the
 bore) by :meth:`_BoreFeatures.bore_hole`, placed from the body (:mod:`.anchors`).
 
-The recognisers take the loop's pieces (:class:`~aidl_lang.geometry.curves.Arc` and
+The recognisers take the loop's pieces (:class:`~aidl_lang.geometry.shapes.curves.Arc` and
 ``Line``, in any order and direction, arcs on one circle joined by
 :func:`~.shapes.merged`) and return the numbers the program writes (mm, radians) or None.
 """

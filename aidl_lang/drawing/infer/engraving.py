@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import math
 
-from ...geometry.curves import Line
+from ...geometry.shapes.curves import Line
 from ..model import Drawing, Note
 from ..write.program import _Writer, _emit_holds, _holds, _num, _pt, _string
 from .params import _center, _ctor, _deg, _plus, _r

@@ -3,13 +3,13 @@
 closed by two half circles, ``ArcSlot``), a keyhole (:func:`keyhole`: a head circle and a
 slot running from its centre, the standard library's ``keyhole``) and a D-hole
 (:func:`d_hole`: a circle with one flat).  Each returns the numbers the program writes (mm,
-radians) or None; the loop's pieces are :class:`~aidl_lang.geometry.curves.Arc` and
+radians) or None; the loop's pieces are :class:`~aidl_lang.geometry.shapes.curves.Arc` and
 ``Line`` in any order and direction."""
 from __future__ import annotations
 
 import math
 
-from ...geometry.curves import Arc, Line
+from ...geometry.shapes.curves import Arc, Line
 from .shapes import EQUAL_TOL, _close, arcs_and_lines, merged
 
 

@@ -41,7 +41,7 @@ from __future__ import annotations
 import math
 from collections import Counter
 
-from ...geometry.curves import Loop
+from ...geometry.shapes.curves import Loop
 from .attachments import _attachments, _circle_attachments, _notches
 from .params import _Params, _ctor, _deg, _hole_name, _r
 from .patterns import (_Cells, _copies, _grid, _line, _polar,

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 
-from ...geometry.curves import Arc, Circle, Line
+from ...geometry.shapes.curves import Arc, Circle, Line
 from ..model import Drawing
 
 TOL = 1e-7              # mm: a mirrored piece against the other part's

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from collections import Counter
 
-from ...geometry.curves import Loop
+from ...geometry.shapes.curves import Loop
 from .shapes import EQUAL_TOL, ROUND_TOL, circular, recognise
 from ..write.program import _ident
 from ..write.units import UNIT

@@ -23,7 +23,7 @@ from __future__ import annotations
 import bisect
 import math
 
-from ...geometry.curves import Arc, Line
+from ...geometry.shapes.curves import Arc, Line
 from .params import _r
 from .shapes import EQUAL_TOL, _snap_angle, circular, recognise
 from ..write.program import _containers, _ident

@@ -1,9 +1,9 @@
 """``aidl import --infer``: the primitives recognised in a closed chain of exact pieces
 (docs/import.md, "Inferring the design").
 
-:func:`recognise` takes one closed loop (a list of :class:`~aidl_lang.geometry.curves.Line`
-and :class:`~aidl_lang.geometry.curves.Arc` pieces, or one
-:class:`~aidl_lang.geometry.curves.Circle`) and returns a :class:`Shape`: a ``Circle``,
+:func:`recognise` takes one closed loop (a list of :class:`~aidl_lang.geometry.shapes.curves.Line`
+and :class:`~aidl_lang.geometry.shapes.curves.Arc` pieces, or one
+:class:`~aidl_lang.geometry.shapes.curves.Circle`) and returns a :class:`Shape`: a ``Circle``,
 ``Rectangle``, ``RoundedRectangle`` (every corner, or some: ``corner_radii=``), ``Slot``,
 ``RegularPolygon``, ``Sector`` (a pie slice or an annulus segment) or ``Polygon``, turned by
 its ``rotation``; or None when the loop is none of them (it stays an exact chain).
@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from ...geometry.curves import Arc, Circle, Line
+from ...geometry.shapes.curves import Arc, Circle, Line
 from ..chains.chain import circular  # noqa: F401  (the loops' own form, as the plain import reads them)
 
 EQUAL_TOL = 1e-7    # mm: two points, radii or lengths this close are the same

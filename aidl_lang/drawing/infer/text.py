@@ -4,13 +4,13 @@ font (issue 71; docs/import.md, "Inferring the design"; used by :func:`~.engravi
 In: line segments ``((x0, y0), (x1, y1))`` in mm (the engraving's polylines and polygons of
 lines, as AIDL writes a ``Text``).  Out: ``(text, position, size, rotation)`` for ``Text(text,
 position=, size=, anchor="start", valign="baseline", rotation=)`` when the segments are
-exactly that text's strokes (:func:`~aidl_lang.geometry.text.text_strokes`, at any turn),
+exactly that text's strokes (:func:`~aidl_lang.geometry.shapes.text.text_strokes`, at any turn),
 each within :data:`TOL`; else None.  Decoded glyph by glyph from the leftmost stroke: the
 first glyph fixes the scale, the turn and the pen's origin (unturned: from one segment's
 direction; turned: from two joined segments, whose angle and length ratio do not change
 under a turn), each next one is the glyph whose strokes all lie at the pen (a space where
 none does), until every segment is used; the text found is then drawn again by
-:func:`~aidl_lang.geometry.text.text_strokes` and must give every segment back.
+:func:`~aidl_lang.geometry.shapes.text.text_strokes` and must give every segment back.
 :func:`along_texts`: what is left, read as text laid along a circle (each letter upright on
 it), ``Text(text, along=, angle=, size=)``.
 """
@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 from functools import lru_cache
 
-from ...geometry.text import _baseline, _cap_height, _glyphs, _raw, text_strokes
+from ...geometry.shapes.text import _baseline, _cap_height, _glyphs, _raw, text_strokes
 
 TOL = 1e-7          # mm: each stroke end of the text found against the drawing's
 MAX_SEGMENTS = 4000
@@ -397,8 +397,8 @@ def along_texts(polys: list, taken: set) -> list:
     (:func:`_turned_starts`); two or more on one circle (the lines through each letter's
     baseline middle square to it meet at one centre) whose middles are the font's advances
     apart along it are one text, drawn again by
-    :func:`~aidl_lang.geometry.text.text_strokes_along` and checked to :data:`TOL`."""
-    from ...geometry.text import text_strokes_along
+    :func:`~aidl_lang.geometry.shapes.text.text_strokes_along` and checked to :data:`TOL`."""
+    from ...geometry.shapes.text import text_strokes_along
     idx = [i for i, p in enumerate(polys) if i not in taken]
     segs = [s for i in idx for s in polys[i]]
     owner = [i for i in idx for _ in polys[i]]

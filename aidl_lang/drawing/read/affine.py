@@ -4,16 +4,16 @@ semi-axes of the original curve: ``p(t) = center + u cos t + v sin t``, mm, y up
 any affine map (a transform list with skews, a general matrix, nested DXF blocks with
 non-uniform scales, mirrors, extrusions) keeps exact, and get back the true curve: its
 principal semi-axes and turn from the singular value decomposition of ``[u v]``
-(:func:`principal_axes`), a :class:`~aidl_lang.geometry.curves.Circle` or ``Arc`` when the
+(:func:`principal_axes`), a :class:`~aidl_lang.geometry.shapes.curves.Circle` or ``Arc`` when the
 map is a similarity, else a whole ellipse ``(cx, cy, rx, ry, rotation)`` or an exact
-:class:`~aidl_lang.geometry.curves.EllipticArc` (:func:`whole_curve`, :func:`arc_curve`).
+:class:`~aidl_lang.geometry.shapes.curves.EllipticArc` (:func:`whole_curve`, :func:`arc_curve`).
 A map that flattens the curve (``u`` and ``v`` parallel, or one of them zero) gives None:
 the caller skips the shape with a note naming it (:func:`singular`)."""
 from __future__ import annotations
 
 import math
 
-from ...geometry.curves import Arc, Circle, elliptic_arc
+from ...geometry.shapes.curves import Arc, Circle, elliptic_arc
 
 SINGULAR = 1e-12        # |u x v| at or below this times |u| |v|: the map flattens the curve
 ROUND = 1e-12           # semi-axes equal to this (relative): a circle
@@ -66,7 +66,7 @@ def whole_curve(center, u, v):
 def arc_curve(center, u, v, t0: float, sweep: float, start=None, end=None):
     """The piece of ``center + u cos t + v sin t`` from parameter ``t0`` sweeping ``sweep``
     radians of the parameter (either sign): an :class:`Arc` when the semi-axes are equal,
-    else an exact :class:`~aidl_lang.geometry.curves.EllipticArc` (counter-clockwise in the
+    else an exact :class:`~aidl_lang.geometry.shapes.curves.EllipticArc` (counter-clockwise in the
     plane when ``sweep`` and ``u x v`` have one sign); ``start`` and ``end``: the ends as
     the file gives them (the pieces chain end to end), else computed.  None when the
     semi-diameters span no area (:func:`singular`)."""

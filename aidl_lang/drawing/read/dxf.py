@@ -16,7 +16,7 @@ import math
 from contextlib import contextmanager
 from contextvars import ContextVar
 
-from ...geometry.curves import Arc, Circle, Line, elliptic_arc
+from ...geometry.shapes.curves import Arc, Circle, Line, elliptic_arc
 from ...limits import MAX_EXTENT
 from .affine import arc_curve, dxf_conic, flattens, whole_curve
 from ..chains.chain import _chain, _finish
@@ -836,7 +836,7 @@ def _entity_spline(e, ctx: _DxfReading) -> None:
 
 def _entity_ellipse(e, ctx: _DxfReading) -> None:
     """ELLIPSE: a whole one as ``(cx, cy, rx, ry, rotation)``, a partial one as a piece of
-    one exact :class:`~aidl_lang.geometry.curves.EllipticArc`."""
+    one exact :class:`~aidl_lang.geometry.shapes.curves.EllipticArc`."""
     t = "ELLIPSE"
     # center and major axis are in world coordinates (not the OCS of ARC and
     # CIRCLE); the extrusion only turns the parameter: the minor axis is
@@ -992,7 +992,7 @@ def _copies(e) -> int:
 def _loop_key(segs) -> tuple:
     """A loop's segments as a set of rounded starts and kinds (the same loop whatever its
     direction and first segment)."""
-    from ...geometry.curves import reverse
+    from ...geometry.shapes.curves import reverse
     a = sorted((type(s).__name__, round(s.start[0], 6), round(s.start[1], 6),
                 round(s.end[0], 6), round(s.end[1], 6)) for s in segs)
     b = sorted((type(s).__name__, round(r.start[0], 6), round(r.start[1], 6),

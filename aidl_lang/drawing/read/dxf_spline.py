@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import math
 
-from ...geometry.curves import Spline
+from ...geometry.shapes.curves import Spline
 from ..model import _lerp, _plural, _Skip, bezier_spline
 
 

@@ -1,7 +1,7 @@
 """Reading a DXF (``ezdxf``) or SVG (``svgelements``) drawing as exact curves.
 
 :func:`read_drawing` turns the bytes of a drawing into a :class:`Drawing` in millimetres with
-the y axis up: its closed **outlines** (loops of :class:`~aidl_lang.geometry.curves.Line`,
+the y axis up: its closed **outlines** (loops of :class:`~aidl_lang.geometry.shapes.curves.Line`,
 ``Arc`` and ``Spline`` pieces, counter-clockwise, largest area first), its **circles**, its
 full **ellipses** ``(cx, cy, rx, ry, rotation)`` and its open **paths**.  Nothing is
 approximated: a DXF ``LINE``, ``ARC``, ``CIRCLE``, ``LWPOLYLINE``/``POLYLINE`` (bulges are

@@ -15,7 +15,7 @@ from __future__ import annotations
 import io
 import math
 
-from ...geometry.curves import Circle, Line
+from ...geometry.shapes.curves import Circle, Line
 from .affine import arc_curve, singular, whole_curve
 from ..chains.chain import _finish
 from ..model import (_OPTS, JOIN_TOL, UNIT_MM, Drawing, DrawingError, Note, _check_made,

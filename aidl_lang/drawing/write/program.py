@@ -21,8 +21,8 @@ from __future__ import annotations
 import math
 import re
 
-from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
-from ...geometry.drawing2d import _inside, _inside_many
+from ...geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
+from ...geometry.shapes.drawing2d import _inside, _inside_many
 from ..chains.containment import (_apart, _containers, _loops_of, _overlapping_parts, _probe,
                                   _whole_ellipse)
 from ..chains.layers import engraved_layer
@@ -115,7 +115,7 @@ _KEYWORDS = {"solid", "hole", "cut", "drawing", "assembly", "def", "for", "in", 
 def _spline_points(s: Spline, closed: bool):
     """The points a ``Spline(...)`` statement passes through to give piece ``s`` exactly, or
     None when the piece is not an interpolating spline of its span ends."""
-    from ...geometry.spline import SplineError, interpolate
+    from ...geometry.shapes.spline import SplineError, interpolate
     spans = s.spans
     pts = [spans[0][0]] + [b[3] for b in spans]
     if closed:
@@ -147,7 +147,7 @@ def _bezier_runs(segs: list) -> list:
     """``segs`` with each run of consecutive spline pieces that are no interpolating spline
     through their span ends joined into one piece (one ``Bezier`` statement): its spans are
     the pieces' spans, end to end, each piece's start its predecessor's end bit for bit."""
-    from ...geometry.spline import CubicSpline
+    from ...geometry.shapes.spline import CubicSpline
     out: list = []
     run: list = []
 
@@ -700,7 +700,7 @@ def _close_loose_cuts(d: Drawing, source: str, notes: list) -> Drawing:
 
     import numpy as np
 
-    from ...geometry.curves import reverse
+    from ...geometry.shapes.curves import reverse
     from ..chains.chain import OVERSHOOT, _crossing, _trim_small_loops
     from ..model import CLOSE_TOL, GAP_NOTE
     if not d.paths_cut or not d.paths:

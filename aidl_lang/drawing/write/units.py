@@ -10,9 +10,9 @@ from __future__ import annotations
 import contextvars
 from dataclasses import replace
 
-from ...geometry.curves import Arc, Circle, EllipticArc, Line, Spline
-from ...geometry.ellipse import EllipseCurve
-from ...geometry.spline import CubicSpline
+from ...geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Spline
+from ...geometry.shapes.ellipse import EllipseCurve
+from ...geometry.shapes.spline import CubicSpline
 from ..model import Drawing, Note, Outline, Path
 
 # the unit the program is written in (`units in` for a drawing read in inches: its numbers

@@ -9,14 +9,14 @@ one hole that merge), shapes of one solid (W0515: used when they silenced a warn
 the opening they enclose), or two solid parts (W0511, and W0517 once assembled: a program that
 places its parts in 3D is left alone, the 3D collision not being a flat overlap).  It is
 found where it is written (``Structure.allowances``, kept by
-:func:`aidl_lang.geometry.operations._allow_overlap`); the shapes are the booleans'
+:func:`aidl_lang.geometry.derived.operations._allow_overlap`); the shapes are the booleans'
 (:attr:`Drawing.own` for a shape, :attr:`Drawing.shapes` for a structure)."""
 from __future__ import annotations
 
 import numpy as np
 
 from ...diagnostics import DiagnosticSink
-from ...geometry.model import Structure
+from ...geometry.core.model import Structure
 from ..part.booleans import Drawing
 from ..part.nearby import box_pairs
 from .common import _area

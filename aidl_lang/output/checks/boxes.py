@@ -2,7 +2,7 @@
 
 The solve reads ``x0.bb.left`` (and every ``Align*``, ``Above``, ``Inside``... that reads
 boxes) from the structure's geometry as drawn, before its ``Fillet`` or ``Chamfer`` (those act
-on the finished outline, after the booleans: :func:`aidl_lang.geometry.operations.finish`).
+on the finished outline, after the booleans: :func:`aidl_lang.geometry.derived.operations.finish`).
 A fillet on a corner that is the box's extreme moves that side in (a 45-degree X's tips by
 ``r * (sqrt(2) - 1)``), so ``AlignLeft(x0, board)`` leaves the rounded X short of the board's
 edge.  An ``Offset`` or ``Shell`` is boxed from its source's box grown by the distance: exact
@@ -14,9 +14,9 @@ side of its final exact outline, and warns with the difference and the constrain
 from __future__ import annotations
 
 from ...diagnostics import DiagnosticSink
-from ...geometry.bbox import SIDES, BBTerm, collect, exclusions, numeric_box, side_expr
-from ...geometry.expr import Nl, const, evaluate, rebuild
-from ...geometry.model import Model, Structure
+from ...geometry.relations.bbox import SIDES, BBTerm, collect, exclusions, numeric_box, side_expr
+from ...geometry.core.expr import Nl, const, evaluate, rebuild
+from ...geometry.core.model import Model, Structure
 from ..part.booleans import Drawing
 
 BOX_TOL = 1e-6        # mm: sides closer than this are the same

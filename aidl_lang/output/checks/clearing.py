@@ -25,8 +25,8 @@ import manifold3d as mf
 import numpy as np
 
 from ...diagnostics import Fix, in_stdlib
-from ...geometry.model import Structure
-from ...geometry.tessellate import CHORD_TOL
+from ...geometry.core.model import Structure
+from ...geometry.shapes.tessellate import CHORD_TOL
 from ...registry import bind_variant, lookup
 from .common import _area, _edges, _inside, _signed
 

@@ -11,7 +11,7 @@ import threading
 import manifold3d as mf
 import numpy as np
 
-from ...geometry.model import Structure, within_index
+from ...geometry.core.model import Structure, within_index
 from ..part.booleans import Drawing
 
 MIN_FRACTION = 0.02      # of a hole's or child's area

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...geometry.tessellate import CHORD_TOL
+from ...geometry.shapes.tessellate import CHORD_TOL
 from .common import _signed
 
 NEAR = 4 * CHORD_TOL     # mm: boundary points this close to the other boundary are in contact

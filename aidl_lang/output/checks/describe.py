@@ -40,9 +40,9 @@ import math
 
 import numpy as np
 
-from ...geometry.curves import Arc, Circle, EllipticArc, Line
-from ...geometry.tessellate import CHORD_TOL
-from ...geometry.model import within_index
+from ...geometry.shapes.curves import Arc, Circle, EllipticArc, Line
+from ...geometry.shapes.tessellate import CHORD_TOL
+from ...geometry.core.model import within_index
 from .inventory import parts_list
 from ..fabrication.layout import part_box
 from ..part.part import Output, PartOutline

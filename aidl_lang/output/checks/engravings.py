@@ -41,7 +41,7 @@ def _sample(item) -> np.ndarray:
         arc = item[1]
         return np.array([arc.at(arc.start_param + arc.sweep * i / 16) for i in range(17)])
     if kind == "spline":                 # 9 points along each span
-        from ...geometry.spline import bez_at
+        from ...geometry.shapes.spline import bez_at
         return np.array([bez_at(b, float(t)) for b in item[1].spans for t in _T9[:, 0]])
     _, c, r, a1, a2 = item
     sweep = (a2 - a1) % (2 * math.pi) or 2 * math.pi

@@ -10,7 +10,7 @@ laser-cut part can be turned over, though its engraving would then be mirrored).
 """
 from __future__ import annotations
 
-from ...geometry.curves import Arc, Circle, EllipticArc, Line
+from ...geometry.shapes.curves import Arc, Circle, EllipticArc, Line
 from ..fabrication.layout import part_box
 from ..part.part import Output, OutputError, PartOutline
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 
-from ...geometry.model import Structure
+from ...geometry.core.model import Structure
 from ..part.booleans import Drawing
 
 NICK_TURN = 2 * math.pi / 3     # rad: a slit's two sides meet at a nick's floor at a corner
@@ -26,7 +26,7 @@ def _nick_corners(d: Drawing, s: Structure) -> list:
     meet: each concave join sharper than 60 degrees (turning right by more than
     :data:`NICK_TURN`), as (x, y, cusp) (``cusp``: the sides leave it along one tangent,
     which no fillet rounds).  Exact: ``Fillet(at=[...])`` matches it."""
-    from ...geometry.curves import Circle, turn_between
+    from ...geometry.shapes.curves import Circle, turn_between
     shape = d.shapes.get(s)
     if shape is None or shape.is_empty():
         return []

@@ -32,8 +32,8 @@ import numpy as np
 
 from ...records import Compared
 from ...diagnostics import DiagnosticSink, Label
-from ...geometry.model import Structure
-from ...geometry.tessellate import CHORD_TOL
+from ...geometry.core.model import Structure
+from ...geometry.shapes.tessellate import CHORD_TOL
 from ..part.booleans import Drawing
 from ..part.nearby import (boundaries, boundary, box_pairs, box_pairs_between,
                            close_pairs)
@@ -802,7 +802,7 @@ def _enough(v: float) -> str:
     up to 0.01 mm after adding two chords' error (``2 * CHORD_TOL``, one per side), so that
     the move, made as written, clears the check (issue 84: "0.78 mm" for an overlap of
     0.29 mm at a 0.5 mm minimum left a 0.49 mm wall, W0507)."""
-    from ...geometry.tessellate import CHORD_TOL
+    from ...geometry.shapes.tessellate import CHORD_TOL
     return f"{math.ceil(round((v + 2 * CHORD_TOL) * 100, 6)) / 100:.2f}"
 
 

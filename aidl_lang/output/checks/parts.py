@@ -18,7 +18,7 @@ import math
 import numpy as np
 
 from ...diagnostics import Diagnostic, DiagnosticSink, Fix, Label, Span, in_stdlib
-from ...geometry.model import Structure
+from ...geometry.core.model import Structure
 from ..part.booleans import Drawing
 from ..part.nearby import box_pairs
 from ..part.scanwork import decompose

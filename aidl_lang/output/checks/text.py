@@ -485,7 +485,7 @@ def _fitting_size(tseg, mseg, ends, box3, size: float, g) -> float | None:
     a curve or a text whose strokes are not its font's at its position (placed by a
     transform); 0.0 when no size down to a twentieth of it clears the mark (the mark runs
     through the position, or ends nearer it than :data:`MIN_CLEAR`: no smaller text helps)."""
-    from ...geometry.text import text_strokes
+    from ...geometry.shapes.text import text_strokes
     if g.data.get("along") is not None or not size > 0 or g.data.get("text") is None:
         return None
     own = np.asarray(text_strokes(g.data["text"], size, g.data.get("anchor", "middle"),

@@ -28,8 +28,8 @@ import manifold3d as mf
 import numpy as np
 
 from ...diagnostics import DiagnosticSink
-from ...geometry.curves import Line, Loop, carrier, distance_to
-from ...geometry.tessellate import CHORD_TOL
+from ...geometry.shapes.curves import Line, Loop, carrier, distance_to
+from ...geometry.shapes.tessellate import CHORD_TOL
 from ..part.booleans import SLIT_HALF, Drawing, _quad
 from ..part.nearby import close_pairs, meeting
 from ..part.shared import TWO_PI, _span
@@ -244,7 +244,7 @@ def _webs(s, whole, slit, cuts: list, t: float, sink: DiagnosticSink, seen: list
 def _cut_chords(cuts: list):
     """The chords of the through-cuts ``cuts`` (each :class:`~..part.booleans.Through`):
     ``(A, B, feature, carriers, kind)`` with A, B (n x 2, mm), each chord's cut index, and
-    the carrier (:func:`~aidl_lang.geometry.curves.carrier`) of the exact segment it
+    the carrier (:func:`~aidl_lang.geometry.shapes.curves.carrier`) of the exact segment it
     follows; and each cut's two ends (m x 2 x 2)."""
     A, B, F, C = [], [], [], []
     ends = np.zeros((len(cuts), 2, 2))
@@ -274,7 +274,7 @@ def _end_bridges(d: Drawing, s, whole, cuts: list, t: float, sink: DiagnosticSin
     one chain, whose own bends are no bridges) or a loop of ``whole`` (the outline or an
     opening); behind the end lies the cut's own side (a cut that crosses another and
     overshoots it by 0.1 mm leaves a corner there, no bridge).  Distances are taken on the
-    chords of every curve (within :data:`~aidl_lang.geometry.tessellate.CHORD_TOL`), then
+    chords of every curve (within :data:`~aidl_lang.geometry.shapes.tessellate.CHORD_TOL`), then
     exactly where the nearest point lies inside a chord of a circle; so a bridge exactly
     ``t`` wide, on lines or arcs, passes.  A bridge inside a web already reported (``seen``)
     is not told again, nor the same bridge from its other end."""

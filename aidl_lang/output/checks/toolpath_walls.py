@@ -30,9 +30,9 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ...geometry.curves import carrier, distance_to, sample_xy
-from ...geometry.curves import foot as foot_on
-from ...geometry.tessellate import CHORD_TOL
+from ...geometry.shapes.curves import carrier, distance_to, sample_xy
+from ...geometry.shapes.curves import foot as foot_on
+from ...geometry.shapes.tessellate import CHORD_TOL
 from ..part.nearby import box_pairs_between, close_pairs
 
 TOUCH = 2 * CHORD_TOL   # mm: a through-cut this near a loop or another cut meets it in the

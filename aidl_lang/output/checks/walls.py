@@ -17,7 +17,7 @@ import manifold3d as mf
 import numpy as np
 
 from ...diagnostics import Diagnostic, DiagnosticSink, Fix, Label, Span
-from ...geometry.model import Structure
+from ...geometry.core.model import Structure
 from ..part.booleans import Drawing
 from ..part.nearby import _median, box_pairs
 from ..part.nearby import components as _components

@@ -87,7 +87,7 @@ def bent(m, bends, t: float, tol: float | None = None):
     each chord stays within ``tol`` mm (default ``CHORD_TOL``) of the bent surface
     (:func:`~..part.placement.refine_for_bends`), then every vertex moved."""
     import manifold3d as mf
-    from ...geometry.tessellate import CHORD_TOL
+    from ...geometry.shapes.tessellate import CHORD_TOL
     from ..part.placement import bend_points, refine_for_bends
     mesh = m.to_mesh64()
     v, f = refine_for_bends(np.asarray(mesh.vert_properties, dtype=float)[:, :3],

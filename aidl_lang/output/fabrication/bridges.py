@@ -54,7 +54,7 @@ class Split:
 def _polyline(segments, closed: bool) -> np.ndarray:
     """The chords of exact ``segments`` as a polyline (k x 2, mm), closed back to its start
     when ``closed``."""
-    from ...geometry.curves import sample_xy
+    from ...geometry.shapes.curves import sample_xy
     xs, ys = [], []
     sample_xy(segments, xs, ys)
     if closed:

@@ -26,8 +26,8 @@ from __future__ import annotations
 import math
 import os
 
-from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
-from ...geometry.offset import OffsetError, offset_loop
+from ...geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
+from ...geometry.derived.offset import OffsetError, offset_loop
 from ..part.part import MissingDependency, Output, OutputError, PartOutline, Stroke
 from ..part.shared import shared_edges
 
@@ -66,13 +66,13 @@ class Motion:
 
     def segment(self, s):
         if isinstance(s, Spline):          # a rigid motion of the control points is exact
-            from ...geometry.spline import CubicSpline
+            from ...geometry.shapes.spline import CubicSpline
             c = s.curve
             moved = CubicSpline(tuple(self.point(p) for p in c.ctrl), c.h, c.closed)
             return Spline(moved, s.u0, s.u1)
         if isinstance(s, EllipticArc):     # the same ellipse turned: its parameter is kept
             e = s.curve
-            from ...geometry.ellipse import ellipse
+            from ...geometry.shapes.ellipse import ellipse
             moved, shift = ellipse(self.point(e.center), e.rx, e.ry,
                                    e.rotation + math.radians(self.deg))
             return EllipticArc(moved, s.start_param - shift, s.sweep)

@@ -30,7 +30,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...geometry.curves import Circle, Loop, Segment, reverse
+from ...geometry.shapes.curves import Circle, Loop, Segment, reverse
 from ..part.part import Output
 from ..part.shared import cut_once, loop_paths
 

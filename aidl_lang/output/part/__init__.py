@@ -1,6 +1,6 @@
 """The part: the solved model in, the one exact output model out.
 
-In: the solved :class:`~aidl_lang.geometry.model.Model` (exact outlines per structure, from the
+In: the solved :class:`~aidl_lang.geometry.core.model.Model` (exact outlines per structure, from the
 interpreter and solver).  Out: :class:`~.booleans.Drawing` (Manifold's booleans per part, with
 what each hole cut, which the checks read) and :class:`~.part.Output` (lines, arcs, circles,
 splines per part, engraving strokes; mm, y up), which fabrication and every writer read.

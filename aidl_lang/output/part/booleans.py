@@ -1,6 +1,6 @@
 """From solved model to 2D shapes (Manifold booleans), keeping the exact curves.
 
-Every closed shape has an exact outline (:mod:`aidl_lang.geometry.curves`, made by
+Every closed shape has an exact outline (:mod:`aidl_lang.geometry.shapes.curves`, made by
 :mod:`.outlines`: a slot is two lines and two half circles meeting at their tangent points, a
 rounded rectangle four lines and four quarter arcs, a full round one two lines and two half
 circles; lines and arcs whose endpoints meet in a cycle become one loop).  A solid is the union of its faces and solid children minus
@@ -22,16 +22,16 @@ import math
 import manifold3d as mf
 import numpy as np
 
-from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline, carrier, reverse
-from ...geometry.ellipse import ellipse
-from ...geometry.model import Geometry, Model, Structure
-from ...geometry.hull import hull_loop
-from ...geometry.offset import offset_pieces
-from ...geometry.biarc import without_ellipses
-from ...geometry.primitives import region_of
-from ...geometry.corners import SplineCorner, finish
-from ...geometry.tessellate import CHORD_TOL
-from ...geometry.text import text_strokes
+from ...geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Loop, Spline, carrier, reverse
+from ...geometry.shapes.ellipse import ellipse
+from ...geometry.core.model import Geometry, Model, Structure
+from ...geometry.derived.hull import hull_loop
+from ...geometry.derived.offset import offset_pieces
+from ...geometry.shapes.biarc import without_ellipses
+from ...geometry.shapes.primitives import region_of
+from ...geometry.derived.corners import SplineCorner, finish
+from ...geometry.shapes.tessellate import CHORD_TOL
+from ...geometry.shapes.text import text_strokes
 from ...limits import DEFAULT_BUDGET, Deadline, OutOfBudget, now
 from .exact import Provenance
 from .nearby import faces_apart, meeting
@@ -167,8 +167,8 @@ class Renderer:
         """The exact :class:`Spline` segment of a ``Spline`` geometry at the solved points:
         the whole curve (closed or open); None when the solved points give no spline (two
         consecutive ones moved onto each other)."""
-        from ...geometry.spline import SplineError, bezier_chain, interpolate
-        from ...geometry.members import points_of
+        from ...geometry.shapes.spline import SplineError, bezier_chain, interpolate
+        from ...geometry.relations.members import points_of
         try:
             pts = [self._pt(p) for p in points_of(g)]
             if g.kind == "Bezier":          # the control points as given (closed: back to p0)
@@ -203,7 +203,7 @@ class Renderer:
         """The exact arc of an ``Ellipse(..., start_angle=, end_angle=)`` at its solved
         points: the ellipse of its center, vertex and co-vertex, from its start through its
         midpoint to its end (a mirrored copy runs clockwise)."""
-        from ...geometry.curves import elliptic_arc
+        from ...geometry.shapes.curves import elliptic_arc
         c, v, w, s0, m, e = (self._pt(g.points[n]) for n in
                              ("center", "vertex", "co_vertex", "start", "midpoint", "end"))
         arc = elliptic_arc(c, math.dist(c, v), math.dist(c, w),
@@ -215,7 +215,7 @@ class Renderer:
         """The exact segments of an open curve in order: a Polyline's lines, else the one
         :meth:`segment` (none when it has none)."""
         if g.kind == "Polyline":
-            from ...geometry.members import points_of
+            from ...geometry.relations.members import points_of
             P = [self._pt(p) for p in points_of(g)]
             return [Line(P[i], P[i + 1]) for i in range(len(P) - 1)]
         seg = self.segment(g)
@@ -224,7 +224,7 @@ class Renderer:
     def curve(self, g: Geometry) -> np.ndarray:
         """Polyline of an open curve (Line, Arc, Spline or Polyline), from start to end."""
         if g.kind == "Polyline":
-            from ...geometry.members import points_of
+            from ...geometry.relations.members import points_of
             return np.array([self.P(p) for p in points_of(g)])
         seg = self.segment(g)
         if seg is None:
@@ -241,7 +241,7 @@ class Renderer:
             seg = self.spline(g) if g.closed else None
             if seg is None:
                 return None
-            from ...geometry.spline import self_crossings
+            from ...geometry.shapes.spline import self_crossings
             cross = self_crossings(seg.curve, self.tick)
             if cross:
                 x, y = seg.curve.at(cross[0][0])
@@ -265,7 +265,7 @@ class Renderer:
             rx, ry = (abs(self.x[g.scalars[n].index]) for n in ("rx", "ry"))
             if rx <= 0 or ry <= 0:
                 return None
-            from ...geometry.bbox import held_rotation
+            from ...geometry.relations.bbox import held_rotation
             c, rot = self._pt(g.points["center"]), held_rotation(g, self.x)
             if rx == ry:
                 return Loop([Circle(c, float(rx))])
@@ -295,12 +295,12 @@ class Renderer:
             loops = self.loops_of(g)
             return loops[0] if len(loops) == 1 else None
         if k == "RoundedRectangle" and g.data.get("corner_radii"):
-            from ...geometry.members import points_of
+            from ...geometry.relations.members import points_of
             return Loop(rounded_outline_radii([self.P(p) for p in points_of(g)],
                                               g.data["corner_radii"]))
         if k in ("Rectangle", "RoundedRectangle", "Triangle", "Polygon", "RegularPolygon",
                  "Trapezoid", "Star") or (k == "Polyline" and g.closed):
-            from ...geometry.members import points_of
+            from ...geometry.relations.members import points_of
             pts = np.array([self.P(p) for p in (points_of(g) if k != "Triangle" else
                                                  [g.points[n] for n in ("a", "b", "c")])])
             if k == "RoundedRectangle":
@@ -313,8 +313,8 @@ class Renderer:
     def drawing2d(self, g: Geometry) -> tuple[list[Loop], list[list]]:
         """The exact loops (holes clockwise) and open paths of a ``Drawing2D`` at its solved
         origin."""
-        from ...geometry.bbox import held_turn
-        from ...geometry.drawing2d import copied, moved
+        from ...geometry.relations.bbox import held_turn
+        from ...geometry.shapes.drawing2d import copied, moved
         ox, oy = self._pt(g.points["origin"])
         held, held_paths = g.data["loops"], g.data["paths"]
         turn = held_turn(g, self.x) if g.data.get("mirror_lines") else 0.0
@@ -346,7 +346,7 @@ class Renderer:
 
     def derived_section(self, g: Geometry) -> mf.CrossSection | None:
         """The shape of an ``Offset`` or ``Shell`` (cached): its source's shape with the
-        sweeps of :func:`~aidl_lang.geometry.offset.offset_pieces` added (outward) or cut
+        sweeps of :func:`~aidl_lang.geometry.derived.offset.offset_pieces` added (outward) or cut
         (inset), all exact loops, so :mod:`.exact` puts the result back on the offset lines
         and arcs; None (and an E0406 in :attr:`shape_errors`) when nothing is left."""
         if id(g) in self.derived:
@@ -409,7 +409,7 @@ class Renderer:
         """The exact pieces of a clipping ``Intersect``'s open curves that lie inside the
         common area of its closed shapes: each curve cut where it crosses the area's
         outline (exact crossings of the carriers), a piece kept when its middle is inside."""
-        from ...geometry.clip import clip
+        from ...geometry.derived.clip import clip
         region, curves = region_of(g)
         if len(region) == 1:
             loops = self.loops_of(region[0])
@@ -442,13 +442,13 @@ class Renderer:
 
     def _stroke(self, g: Geometry) -> mf.CrossSection | None:
         """The band of a ``Stroke``: the union of every path segment's sweep by a disc of
-        radius width/2 (:func:`~aidl_lang.geometry.offset.sweep_loops`: stadiums, arc slots);
+        radius width/2 (:func:`~aidl_lang.geometry.derived.offset.sweep_loops`: stadiums, arc slots);
         with flat caps the first and last segments are swept square at the free end (a
         rectangle, an annulus segment) and a disc keeps the join round.  Exact lines and
         arcs; a Spline piece's band is :func:`.outlines.spline_band` (within
         :data:`.outlines.STROKE_TOL`; a bend tighter than width/2 is E0108 at the call)."""
-        from ...geometry.offset import sweep_loops
-        from ...geometry.spline import SplineError
+        from ...geometry.derived.offset import sweep_loops
+        from ...geometry.shapes.spline import SplineError
         h = g.data["width"] / 2
         path = self.stroke_path(g)
         if not path:
@@ -732,7 +732,7 @@ class Renderer:
     def text_along(self, g: Geometry, along: Geometry) -> list:
         """The strokes of a Text along a Circle or Arc (relative to its solved center): at
         its ``angle``, else the arc's middle (a circle's top)."""
-        from ...geometry.text import text_strokes_along, wraps
+        from ...geometry.shapes.text import text_strokes_along, wraps
         flip = bool(g.data.get("flip"))
         if along.kind == "Arc":
             arc = self.segment(along)

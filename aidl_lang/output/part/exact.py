@@ -1,9 +1,9 @@
 """Provenance: the booleans run on polygons, their result is put back on the exact curves.
 
-Every face a renderer hands to Manifold is an exact :class:`~aidl_lang.geometry.curves.Loop`
+Every face a renderer hands to Manifold is an exact :class:`~aidl_lang.geometry.shapes.curves.Loop`
 (lines, arcs, circles).  :meth:`Provenance.section` tessellates it — every segment end is a
 polygon vertex, every arc is cut into chords within
-:data:`~aidl_lang.geometry.tessellate.CHORD_TOL` — and records, for each chord, the *carrier*
+:data:`~aidl_lang.geometry.shapes.tessellate.CHORD_TOL` — and records, for each chord, the *carrier*
 it came from (the segment's infinite line or full circle) and, for each segment end, the exact
 point.  A boolean's result polygon (Manifold keeps edges on their input edges: every result
 edge is a piece of one input chord, every result vertex an input vertex or the crossing of two
@@ -15,10 +15,10 @@ chords, to its 1e-8 mm grid) is then rebuilt by :meth:`Provenance.recover`:
    (a loop that is one circle's run is a :class:`Circle`);
 3. each vertex between two runs becomes exact: the input segment end it stands for, when it
    lies on both carriers, else the carriers' exact intersection nearest to it
-   (:func:`~aidl_lang.geometry.curves.intersect`: line-line, line-circle, circle-circle;
+   (:func:`~aidl_lang.geometry.shapes.curves.intersect`: line-line, line-circle, circle-circle;
    touching carriers give their touching point, so a tangent join stays tangent);
 4. a run whose exact ends come out in the wrong order or closer than
-   :data:`~aidl_lang.geometry.curves.EPS` (an overlap thinner than the chords can show) is
+   :data:`~aidl_lang.geometry.shapes.curves.EPS` (an overlap thinner than the chords can show) is
    dropped and its neighbours joined at their own intersection; a loop left with fewer than
    two runs closes on nothing in exact geometry (a sliver where two curves touch, cut by
    their chords) and is left out.
@@ -35,10 +35,10 @@ import math
 import manifold3d as mf
 import numpy as np
 
-from ...geometry.curves import (Arc, Circle, EllipticArc, Line, Loop, Spline, carrier,
+from ...geometry.shapes.curves import (Arc, Circle, EllipticArc, Line, Loop, Spline, carrier,
                                distance_to, ellipse_chords, ellipse_xy, foot, intersect,
                                same_carrier, simplify, spline_chords, spline_xy, tolerance)
-from ...geometry.tessellate import CHORD_TOL, segments_for
+from ...geometry.shapes.tessellate import CHORD_TOL, segments_for
 from ...limits import OutOfBudget
 
 MATCH_TOL = 1e-6       # mm: a result vertex lies this close to its input chord (grid 1e-8)

@@ -1,5 +1,5 @@
 """The exact extent of an output: the bounding box of its lines, arcs and circles computed from
-the curves themselves (each segment's ``box()``, geometry/curves.py: an arc's box includes
+the curves themselves (each segment's ``box()``, geometry/shapes/curves.py: an arc's box includes
 each axis extreme its sweep passes), not from sampled chords.  The SVG page (``--margin 0``
 makes it exactly this box) and the DXF header's ``$EXTMIN`` / ``$EXTMAX`` use it."""
 from __future__ import annotations

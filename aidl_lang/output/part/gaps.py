@@ -1,6 +1,6 @@
 """Exact distances between outlines (``measure``'s clearance, :meth:`aidl_lang.api.Result.measure`).
 
-An outline is a list of exact segments (:mod:`aidl_lang.geometry.curves`: lines, arcs,
+An outline is a list of exact segments (:mod:`aidl_lang.geometry.shapes.curves`: lines, arcs,
 circles; splines and elliptic arcs as their chords, within ``CHORD_TOL``).  The smallest
 distance between two lines or arcs is at an end of one, at a crossing, or where the segment
 joining them is normal to both: for a line and an arc the arc's point on the normal through
@@ -13,8 +13,8 @@ import math
 
 import numpy as np
 
-from ...geometry.curves import Arc, Circle, Line, sample_xy
-from ...geometry.tessellate import CHORD_TOL
+from ...geometry.shapes.curves import Arc, Circle, Line, sample_xy
+from ...geometry.shapes.tessellate import CHORD_TOL
 
 TAU = 2 * math.pi
 Point = tuple[float, float]
@@ -80,7 +80,7 @@ def point_to(p: Point, q: tuple) -> tuple[float, Point]:
 
 def _crossing(a: tuple, b: tuple) -> Point | None:
     """A point where pieces ``a`` and ``b`` meet, or None."""
-    from ...geometry.curves import crossings
+    from ...geometry.shapes.curves import crossings
     ca, cb = _carrier(a), _carrier(b)
     if ca is None or cb is None:
         return None
@@ -212,7 +212,7 @@ def regions(loops) -> list[list]:
 
 
 def clearance(loops_a, loops_b) -> dict:
-    """How two regions lie (each a list of exact :class:`~aidl_lang.geometry.curves.Loop`,
+    """How two regions lie (each a list of exact :class:`~aidl_lang.geometry.shapes.curves.Loop`,
     holes clockwise, or a list of such lists: the union of several parts, :func:`regions`):
     ``{"clearance" mm, "contact", "points"}``.  ``contact`` ``apart``: the
     smallest gap between their outlines, exact; ``touching``: 0, the outlines meet without

@@ -1,10 +1,10 @@
 """Exact outlines of shapes: the lines, arcs and spline pieces the booleans are made from.
 
 In: a shape's solved points and dimensions (mm, radians; points as ``(x, y)`` tuples or
-arrays).  Out: the exact segments of its outline (:mod:`aidl_lang.geometry.curves`: ``Line``,
+arrays).  Out: the exact segments of its outline (:mod:`aidl_lang.geometry.shapes.curves`: ``Line``,
 ``Arc``, ``Circle``, ``Spline``), counter-clockwise, each join exact (a slot's sides meet its
 end arcs at their tangent points, a rounded rectangle's lines end where its quarter arcs do),
-or a :class:`~aidl_lang.geometry.curves.Loop` of them.  The renderer (:mod:`.booleans`) makes
+or a :class:`~aidl_lang.geometry.shapes.curves.Loop` of them.  The renderer (:mod:`.booleans`) makes
 Manifold shapes of these loops and records which curve every chord came from (:mod:`.exact`).
 A Stroke's band along a spline is within :data:`STROKE_TOL` of its true sides (the offset of
 a cubic is no cubic); every other outline here is exact.
@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from ...geometry.curves import Arc, Circle, Line, Loop, Spline, reverse, simplify
+from ...geometry.shapes.curves import Arc, Circle, Line, Loop, Spline, reverse, simplify
 
 
 def _arc_through(c, s, e) -> Arc:
@@ -94,7 +94,7 @@ def spline_band(sg: Spline, h: float, flat=(False, False)) -> Loop:
     true offset everywhere checked (the midpoints of the samples); the ends are half circles
     of radius ``h`` (``flat[k]``: a straight end).  Raises ``SplineError`` where the path
     bends tighter than ``h`` (the inner side would fold over itself)."""
-    from ...geometry.spline import SplineError, _polish_foot, bez_at, interpolate
+    from ...geometry.shapes.spline import SplineError, _polish_foot, bez_at, interpolate
     c, u0, u1 = sg.curve, sg.u0, sg.u1
     span = u1 - u0
 

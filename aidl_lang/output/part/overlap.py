@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 
-from ...geometry.curves import Arc, Circle, Line, carrier, crossings
+from ...geometry.shapes.curves import Arc, Circle, Line, carrier, crossings
 
 TAU = 2 * math.pi
 # a direction no outline of a drawing runs along: the ray of the inside test
@@ -198,7 +198,7 @@ def _half(own: list[tuple], other: list[tuple], first: bool) -> float:
 
 def shared_area(loops_a, loops_b) -> float | None:
     """The area (mm²) the regions of ``loops_a`` and ``loops_b`` share (lists of
-    :class:`~aidl_lang.geometry.curves.Loop`, holes clockwise), exact to rounding; None when
+    :class:`~aidl_lang.geometry.shapes.curves.Loop`, holes clockwise), exact to rounding; None when
     an outline has a spline or an elliptic arc."""
     a, b = _arcs(loops_a), _arcs(loops_b)
     if a is None or b is None or not a or not b:

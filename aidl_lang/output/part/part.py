@@ -1,6 +1,6 @@
 """The one output model: exact lines, arcs and circles per part, from the booleans' result.
 
-Every face handed to Manifold was an exact outline (:mod:`aidl_lang.geometry.curves`), and the
+Every face handed to Manifold was an exact outline (:mod:`aidl_lang.geometry.shapes.curves`), and the
 booleans' :class:`~.exact.Provenance` knows which exact curve each polygon edge came from.
 :func:`build` puts each part's polygons back on those curves (docs/outputs.md, "Exact
 geometry"): each run of edges on one carrier is one :class:`Line`, :class:`Arc` or
@@ -22,7 +22,7 @@ import math
 import numpy as np
 
 from ...records import Compared
-from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Segment, Spline, sample_xy
+from ...geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Loop, Segment, Spline, sample_xy
 from ...limits import OutOfBudget, OutOfMemory, is_out_of_memory
 from ...memory import gc_paused
 from .booleans import Drawing
@@ -171,7 +171,7 @@ def _join(strokes: list[Stroke]) -> list[Stroke]:
     runs: wherever exactly two open ends meet, the two strokes become one (one is turned
     round when needed), so a laser runs each run without lifting; a run that comes back to
     its start is a closed stroke.  Strokes of other sources, closed ones and circles stay."""
-    from ...geometry.curves import reverse
+    from ...geometry.shapes.curves import reverse
     out: list[Stroke] = []
     groups: dict = {}
     for st in strokes:

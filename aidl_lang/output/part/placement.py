@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 
-from ...geometry.model import Structure
+from ...geometry.core.model import Structure
 
 
 def rotation_matrix(rx: float, ry: float, rz: float) -> np.ndarray:
@@ -132,7 +132,7 @@ def refine_for_bends(v: np.ndarray, f: np.ndarray, bends, t: float, tol: float):
     """The mesh ``v`` (n x 3, the flat sheet), ``f`` (m x 3 vertex indices) of a part to be
     bent, cut across each bend zone by evenly spaced planes x = const: as many as the chords
     of an arc of the inside radius over the bend's angle need
-    (:func:`~aidl_lang.geometry.tessellate.segments_for`, the tessellation of every arc
+    (:func:`~aidl_lang.geometry.shapes.tessellate.segments_for`, the tessellation of every arc
     written), times the least whole number that keeps the outside face's chords within ``tol``
     mm too, so the inside face's vertices fall on those of a concentric arc drawn with that
     radius (a lid's lip at zero clearance touches the wall, and shares no volume with it).  The
@@ -140,7 +140,7 @@ def refine_for_bends(v: np.ndarray, f: np.ndarray, bends, t: float, tol: float):
     at a vertex shared by both sides of each edge, so a watertight mesh stays watertight.  At
     most :data:`MAX_BENT_PLANES` planes in all (fewer past it: the chords grow, never the
     work).  Returns the new ``(v, f)``."""
-    from ...geometry.tessellate import segments_for
+    from ...geometry.shapes.tessellate import segments_for
     zones = bend_zones(bends, t)
     counts = []
     for x0, x1, a, r in zones:

@@ -7,7 +7,7 @@ from __future__ import annotations
 import manifold3d as mf
 import numpy as np
 
-from ...geometry.model import Geometry, Structure
+from ...geometry.core.model import Geometry, Structure
 from ...records import Compared
 from .exact import Provenance
 from .hole_outlines import HoleOutlines

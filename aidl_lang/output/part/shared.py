@@ -28,7 +28,7 @@ from __future__ import annotations
 import bisect
 import math
 
-from ...geometry.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
+from ...geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 
 SHARED_TOL = 1e-6      # mm: a stretch shorter than this is not shared (ends that only touch)
 TWO_PI = 2 * math.pi

@@ -14,9 +14,9 @@ import math
 
 import manifold3d as mf
 
-from ...geometry.curves import Line, Loop
-from ...geometry.offset import sweep_loops
-from ...geometry.text import text_strokes
+from ...geometry.shapes.curves import Line, Loop
+from ...geometry.derived.offset import sweep_loops
+from ...geometry.shapes.text import text_strokes
 
 
 def stencil_section(R, g, position) -> mf.CrossSection | None:

@@ -64,7 +64,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from ...geometry.curves import reverse
+from ...geometry.shapes.curves import reverse
 from ..part.part import Arc, Circle, EllipticArc, Line, Output, OutputError, Spline
 from ..fabrication.machine import MAX_DEPTH_PASSES, MAX_JOB_MOVES, too_long
 
@@ -312,7 +312,7 @@ def as_arcs(s) -> list:
         pts = [s.start] + [f(k / n) for k in range(1, n)] + [s.end]
         return [g for k in range(n) for g in _fit(f, d, k / n, (k + 1) / n, pts[k], pts[k + 1])]
     if isinstance(s, Spline):
-        from ...geometry.spline import bez_at, bez_d1, bez_d2
+        from ...geometry.shapes.spline import bez_at, bez_d1, bez_d2
         out = []
         for b in s.spans:
             def f(t, b=b):
@@ -406,7 +406,7 @@ class _Paths:
         """``reach``: the longest lead-in :meth:`room` is asked about (mm): the size of the
         grid cells the chords are filed in, so that a question looks at a few cells."""
         import numpy as np
-        from ...geometry.curves import sample_xy
+        from ...geometry.shapes.curves import sample_xy
         a, b, owner = [], [], []
         self.index = {}
         for k, c in enumerate(cuts):
@@ -545,7 +545,7 @@ def lead_in(cut, path: list, lead: float, paths: "_Paths"):
     path's own start is tried first, then its other segment ends (up to :data:`LEAD_TRIES`):
     the first where the whole lead-in fits, else the longest.  ``(path, None, 0)`` when none
     is at least a quarter of ``lead`` (the cut starts on its path)."""
-    from ...geometry.curves import Loop, tangent_at
+    from ...geometry.shapes.curves import Loop, tangent_at
     from ..fabrication.toolpath import _inside
     import numpy as np
     poly = None
@@ -739,7 +739,7 @@ def tool_path(output: Output, diameter: float) -> Output:
     spline pieces are first made arcs (:func:`as_arcs`, within :data:`CURVE_TOL`), whose
     offset is exact.  Raises :class:`~..part.part.OutputError` naming the part where the tool is
     too large for a feature."""
-    from ...geometry.curves import Loop
+    from ...geometry.shapes.curves import Loop
     from ..fabrication.layout import LayoutError, compensate
     from ..part.part import PartOutline
     parts = []

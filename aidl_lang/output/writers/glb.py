@@ -45,7 +45,7 @@ def view_tolerance(output: Output) -> float:
     """The chord tolerance (mm) of :func:`to_view_glb`: a quarter pixel of a view
     :data:`VIEW_PIXELS` wide across the drawing's diagonal, at least ``CHORD_TOL``."""
     import math
-    from ...geometry.tessellate import CHORD_TOL
+    from ...geometry.shapes.tessellate import CHORD_TOL
     x0, y0, x1, y1 = output.bounds()
     return max(CHORD_TOL, math.hypot(x1 - x0, y1 - y0) / VIEW_PIXELS / 4)
 

@@ -211,7 +211,7 @@ def _ellipse_points(s: EllipticArc, tol: float) -> list:
 
 def _spline_points(s: Spline, tol: float) -> list:
     """Points after the start of spline piece ``s``, its chords within ``tol`` mm."""
-    from ...geometry.spline import bez_at, bez_pieces
+    from ...geometry.shapes.spline import bez_at, bez_pieces
     out = []
     for b in s.spans:
         k = bez_pieces(b, tol)

@@ -5,7 +5,7 @@ trimesh's 3MF writer needs ``networkx`` and ``lxml`` (the ``mesh`` extra); witho
 :func:`to_3mf` raises :class:`~.part.MissingDependency` naming the install line.
 
 The profile extruded is the part's boolean result (circles as chords within
-:data:`~aidl_lang.geometry.tessellate.CHORD_TOL`), so the volume is the profile's area times the
+:data:`~aidl_lang.geometry.shapes.tessellate.CHORD_TOL`), so the volume is the profile's area times the
 thickness, and each body is watertight (Manifold guarantees a manifold mesh).  Units: mm.
 """
 from __future__ import annotations
@@ -38,7 +38,7 @@ def bodies(output: Output, thickness: float | None = None,
     d = output.drawing
     where = (getattr(d, "placement", None) or {}) if assembled and d is not None else {}
     bent = (getattr(d, "bends", None) or {}) if assembled and d is not None else {}
-    from ...geometry.tessellate import CHORD_TOL
+    from ...geometry.shapes.tessellate import CHORD_TOL
     from ..part.placement import bend_points, refine_for_bends
     out = []
     for p in output.parts:

@@ -73,7 +73,7 @@ def _ellipse_edge(s: EllipticArc):
 
 def _bspline(s):
     """OCP ``Geom_BSplineCurve`` of a spline piece: the clamped degree-3 form of
-    :meth:`~aidl_lang.geometry.curves.Spline.bspline` (distinct knots with multiplicities 4,
+    :meth:`~aidl_lang.geometry.shapes.curves.Spline.bspline` (distinct knots with multiplicities 4,
     3, ..., 3, 4), written as STEP ``B_SPLINE_CURVE_WITH_KNOTS``."""
     from OCP.Geom import Geom_BSplineCurve
     from OCP.gp import gp_Pnt

@@ -16,8 +16,8 @@ from __future__ import annotations
 
 import math
 
-from .curves import Arc, Circle, Line, Loop, simplify
-from .tessellate import segments_for
+from ..shapes.curves import Arc, Circle, Line, Loop, simplify
+from ..shapes.tessellate import segments_for
 
 TWO_PI = 2 * math.pi
 TOUCH = 1e-12          # relative: two sites this close to touching inside touch
@@ -120,7 +120,7 @@ def hull_loop(loops: list[Loop]) -> Loop | None:
     """The exact convex hull (a counter-clockwise :class:`~.curves.Loop`) of the outlines
     ``loops`` (any orientation); None when it encloses no area (all points on one line).
     Outlines holding elliptic arcs go to :func:`envelope_hull`."""
-    from .curves import EllipticArc
+    from ..shapes.curves import EllipticArc
     if any(isinstance(s, EllipticArc) for lp in loops for s in lp.segments):
         return envelope_hull(loops)
     sites, samples = _sites(loops)
@@ -274,7 +274,7 @@ class _Site:
 
 
 def _envelope_sites(loops: list[Loop]) -> list[_Site]:
-    from .curves import EllipticArc
+    from ..shapes.curves import EllipticArc
     sites: list[_Site] = []
     index: dict = {}
 
@@ -349,7 +349,7 @@ def envelope_hull(loops: list[Loop]) -> Loop | None:
     :class:`~.curves.EllipticArc` of its own ellipse, an :class:`~.curves.Arc` of its own
     circle) and along the line tangent to two consecutive ones at the switching direction,
     whose ends lie on the two curves.  None when the hull encloses no area."""
-    from .curves import EllipticArc
+    from ..shapes.curves import EllipticArc
     sites = _envelope_sites(loops)
     if not sites:
         return None

@@ -12,9 +12,9 @@ from __future__ import annotations
 
 import math
 
-from .expr import Lin, _new, as_const, hypot, var
-from .model import Equation, Geometry, equation
-from .values import ANG, LEN, NUM, PV, GeomRef, Q, type_name
+from ..core.expr import Lin, _new, as_const, hypot, var
+from ..core.model import Equation, Geometry, equation
+from ..core.values import ANG, LEN, NUM, PV, GeomRef, Q, type_name
 
 
 class PrimitiveError(Exception):

@@ -15,7 +15,7 @@ and position of it, holes, fillets and text included.
 from __future__ import annotations
 
 from .operations import OperationError, _as_construction, _copy, _mirror, _target, _translate
-from .values import PV, GeomRef, StructRef
+from ..core.values import PV, GeomRef, StructRef
 
 IN_PLACE = {"Scale": "Scaled", "Translate": "Translated", "Flip": "Mirrored"}
 

@@ -2,7 +2,7 @@
 ``CHORD_TOL`` (0.005 mm: a 100 mm circle deviates less than 0.01 mm from the true curve).
 
 Used by the booleans (:mod:`aidl_lang.output.part.booleans`) and by fillets
-(:mod:`aidl_lang.geometry.operations`).
+(:mod:`aidl_lang.geometry.derived.operations`).
 """
 from __future__ import annotations
 

@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..records import Record
-from ..diagnostics import Span
+from ...records import Record
+from ...diagnostics import Span
 from .expr import Expr, Lin, _new, var
 
 

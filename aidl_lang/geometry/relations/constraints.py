@@ -11,10 +11,10 @@ from __future__ import annotations
 import math
 
 from .bbox import BBTerm
-from .expr import Expr, Lin, _new, add, evaluate, func, hypot, mul, sub, var
-from .model import Equation, equation
+from ..core.expr import Expr, Lin, _new, add, evaluate, func, hypot, mul, sub, var
+from ..core.model import Equation, equation
 from .members import _pv, member
-from .values import PV, BBoxRef, GeomRef, Q, StructRef, type_name, unify_add
+from ..core.values import PV, BBoxRef, GeomRef, Q, StructRef, type_name, unify_add
 
 
 class ConstraintError(Exception):

@@ -10,8 +10,8 @@ from __future__ import annotations
 import math
 
 from .bbox import collect, contains_bbox, exclusions, expand
-from .expr import Lin, evaluate
-from .model import Assertion, Model
+from ..core.expr import Lin, evaluate
+from ..core.model import Assertion, Model
 
 TOL = 1e-6
 

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import math
 
-from .curves import (EllipticArc, Spline, Arc, Circle, Line, Loop, Segment, carrier, crossings,
+from ..shapes.curves import (EllipticArc, Spline, Arc, Circle, Line, Loop, Segment, carrier, crossings,
                      intersect, reverse, simplify,
                      tangent_at, turn_between, with_ends)
 

@@ -41,7 +41,7 @@ def _glyphs() -> dict:
     archive of every Hershey font."""
     import json
 
-    from ..cache import cache_dir, read_checked, write_checked
+    from ...cache import cache_dir, read_checked, write_checked
     d = cache_dir()
     key = f"hershey {FONT} {_GLYPHS_FORMAT}"
     path = d / f"hershey-{FONT}.json" if d is not None else None

@@ -348,9 +348,9 @@ def build(ctx, g, a, const) -> None:
     solve may shift; a constraint that places it (``d.bb.left == 30``,
     ``Fixed(d.origin)``) takes that direction over.  A derived ``at`` (another shape's
     point) is an equation, as for any shape."""
-    from .expr import as_const, var
-    from .model import Constraint, Equation, Geometry
-    from .values import ANG, PV, Q
+    from ..core.expr import as_const, var
+    from ..core.model import Constraint, Equation, Geometry
+    from ..core.values import ANG, PV, Q
     d = a["_drawing"]
     rot = const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
     at = a.get("at")
@@ -424,9 +424,9 @@ class _CircleMaker:
         return (_CircleMaker, (None, None, None, None, []))
 
     def __call__(self) -> None:
-        from .expr import var
-        from .model import Equation, Geometry
-        from .values import PV
+        from ..core.expr import var
+        from ..core.model import Equation, Geometry
+        from ..core.values import PV
         ctx, g, struct, o, circles = self.ctx, self.g, self.struct, self.o, self.circles
         out = g.data["circles"] if g is not None else None
         if not circles or out:

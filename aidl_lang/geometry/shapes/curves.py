@@ -4,7 +4,7 @@ computations on their *carriers* (the infinite line or the full circle a segment
 These are the output's geometry (issue "Exact by construction"): every shape of a program has
 an exact outline made of these segments (:mod:`aidl_lang.output.part.booleans` builds them from the
 solved model), the booleans' polygons are put back on them (:mod:`aidl_lang.output.part.exact`),
-fillets and chamfers are cut on them (:mod:`aidl_lang.geometry.operations`), and every writer
+fillets and chamfers are cut on them (:mod:`aidl_lang.geometry.derived.operations`), and every writer
 reads them.  All lengths are in millimetres, angles in radians, counter-clockwise positive,
 y up.
 
@@ -30,7 +30,7 @@ from functools import cached_property
 
 from .ellipse import EllipseCurve, cross_circle as _e_circle, cross_ellipse as _e_ellipse, \
     cross_line as _e_line, cross_spline as _e_spline, nearest_approach as _e_nearest
-from ..records import Compared, Frozen
+from ...records import Compared, Frozen
 
 Point = tuple[float, float]
 
@@ -344,7 +344,7 @@ class Loop(Compared):
 
     def points(self, tol: float | None = None):
         """A polyline of the loop (N x 2 array, mm, closed implicitly), arcs and circles sampled
-        by :func:`~aidl_lang.geometry.tessellate.segments_for` chords within ``tol`` (mm; None:
+        by :func:`~aidl_lang.geometry.shapes.tessellate.segments_for` chords within ``tol`` (mm; None:
         ``CHORD_TOL``; splines and ellipses always within ``CHORD_TOL``), every vertex on the
         exact curve."""
         import numpy as np
@@ -360,7 +360,7 @@ class Loop(Compared):
 def sample_xy(segments, xs: list, ys: list, tol: float | None = None) -> None:
     """Append the vertices of :meth:`Loop.points` of ``segments`` to ``xs`` and ``ys``: each
     line's start, each arc's start and its interior chord ends, each circle's chord ends
-    (:func:`~aidl_lang.geometry.tessellate.segments_for` chords within ``tol`` mm, None:
+    (:func:`~aidl_lang.geometry.shapes.tessellate.segments_for` chords within ``tol`` mm, None:
     ``CHORD_TOL``)."""
     from .tessellate import CHORD_TOL, segments_for
     tol = CHORD_TOL if tol is None else max(float(tol), CHORD_TOL)

@@ -9,7 +9,7 @@ import math
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from .model import Structure
+    from ..core.model import Structure
 
 CORNER_TURN = 1e-3      # rad: a join that turns less is tangent (a slot's side into its end)
 CORNER_TOL = 1e-3       # mm: a chosen corner matches an outline vertex this close
@@ -54,7 +54,7 @@ class Chosen:
         return Chosen(self.what, tuple(f(px, py) for px, py in self.points), self.name)
 
     def placed(self, x) -> "Chosen":
-        from .expr import evaluate
+        from ..core.expr import evaluate
         return Chosen(self.what, tuple((float(evaluate(px, x)), float(evaluate(py, x)))
                                        for px, py in self.points), self.name)
 
@@ -202,7 +202,7 @@ def _where(p, loops: list) -> tuple[str, tuple | None]:
     """Why point ``p`` is no corner of ``loops`` (the outline runs straight through it, or
     it lies inside or outside the outline, how far), and the nearest corner of the outline
     (or None)."""
-    from .curves import turn_between
+    from ..shapes.curves import turn_between
     best, inside = math.inf, False
     x, y = p
     for lp in loops:
@@ -250,7 +250,7 @@ def corners(loop, size: float, fillet: bool, only=None, got=None):
     exact (:mod:`.curves`).  ``got`` (a dict): for each corner rounded (or found and not
     rounded), the index into ``only`` (or -1 without ``only``) -> the smallest radius (or
     leg) it got, 0 for none."""
-    from .curves import Arc, Circle, Loop, simplify, turn_between, with_ends
+    from ..shapes.curves import Arc, Circle, Loop, simplify, turn_between, with_ends
     segs = loop.segments
     n = len(segs)
     if n < 2 or any(isinstance(g, Circle) for g in segs):
@@ -289,7 +289,7 @@ def _corner(a, b, turn: float, size: float, fillet: bool):
     """(end of ``a``, start of ``b``, the fillet Arc or chamfer Line) at the corner where
     segment ``a`` runs into ``b`` (None: no fillet arc fits); raises :class:`SplineCorner`
     where a spline, or an ellipse beside another ellipse, makes it inexact."""
-    from .curves import EllipticArc, Spline
+    from ..shapes.curves import EllipticArc, Spline
     p = b.start
     el = next((g for g in (a, b) if isinstance(g, EllipticArc)), None)
     what = "Fillet" if fillet else "Chamfer"
@@ -318,7 +318,7 @@ def _corner(a, b, turn: float, size: float, fillet: bool):
 
 def _offset(g, d: float):
     """The carrier of segment ``g`` moved ``d`` mm to its left (None: a circle shrunk away)."""
-    from .curves import Line, carrier
+    from ..shapes.curves import Line, carrier
     c = carrier(g)
     if isinstance(g, Line):
         _, px, py, ux, uy = c
@@ -331,7 +331,7 @@ def _fraction(g, p, from_end: bool) -> float:
     """How far along segment ``g`` point ``p`` (on its carrier) lies from its start (or its
     end), as a fraction of its length; negative before it (an elliptic arc: of its
     parameter's sweep)."""
-    from .curves import EllipticArc, Line
+    from ..shapes.curves import EllipticArc, Line
     if isinstance(g, Line):
         (x0, y0), (x1, y1) = g.start, g.end
         L2 = (x1 - x0) ** 2 + (y1 - y0) ** 2
@@ -356,7 +356,7 @@ def _fillet_at(a, b, turn: float, r: float):
     ``r`` toward the corner's inside cross, it must run the way both segments run where it
     touches them, and its tangent points must lie in the halves of ``a`` and ``b`` next to
     the corner."""
-    from .curves import Arc, EllipticArc, carrier, crossings, foot, tangent_at
+    from ..shapes.curves import Arc, EllipticArc, carrier, crossings, foot, tangent_at
     s = 1.0 if turn > 0 else -1.0
     p = b.start
     best = None
@@ -404,7 +404,7 @@ def _ellipse_centres(a, b, s: float, r: float) -> list:
     its signed distance from the other segment's carrier offset by ``r`` (sign changes over
     :data:`ELLIPSE_SCAN` steps of the half next to the corner, then bisection to the last
     bit); the tangent point on the ellipse is ``P(t)`` itself, on the other its foot."""
-    from .curves import EllipticArc, carrier, foot
+    from ..shapes.curves import EllipticArc, carrier, foot
     el_first = isinstance(a, EllipticArc)
     el, other = (a, b) if el_first else (b, a)
     if isinstance(other, EllipticArc):
@@ -453,7 +453,7 @@ def _ellipse_centres(a, b, s: float, r: float) -> list:
 
 def with_ends_at(g, t, start: bool = False):
     """``g`` cut to end (or, with ``start``, to begin) at ``t`` on its carrier."""
-    from .curves import with_ends
+    from ..shapes.curves import with_ends
     return with_ends(g, t, g.end) if start else with_ends(g, g.start, t)
 
 
@@ -474,14 +474,14 @@ def _fillet(a, b, turn: float, r: float):
 
 
 def _dir(g, end: bool):
-    from .curves import tangent_at
+    from ..shapes.curves import tangent_at
     return tangent_at(g, end)
 
 
 def _chamfer(a, b, d: float):
     """(point on a, point on b, the chamfer Line) ``d`` mm from the corner along each
     segment: two equal legs, at most half of the shorter segment."""
-    from .curves import Line
+    from ..shapes.curves import Line
     d = min(d, a.length / 2, b.length / 2)
     pa, pb = _along(a, d, True), _along(b, d, False)
     return pa, pb, Line(pa, pb)
@@ -489,8 +489,8 @@ def _chamfer(a, b, d: float):
 
 def _along(g, d: float, from_end: bool):
     """The point ``d`` mm (at most half the segment) from ``g``'s end (or start)."""
-    from .curves import Line
-    from .curves import EllipticArc
+    from ..shapes.curves import Line
+    from ..shapes.curves import EllipticArc
     d = min(d, g.length / 2)
     if isinstance(g, EllipticArc):       # the parameter whose arc length is d: bisection
         lo, hi = 0.0, abs(g.sweep) / 2

@@ -30,13 +30,13 @@ from __future__ import annotations
 
 import math
 
-from ..diagnostics import EvalError
-from ..limits import DEFAULT_BUDGET
-from .expr import Lin, _lin, combine, var
+from ...diagnostics import EvalError
+from ...limits import DEFAULT_BUDGET
+from ..core.expr import Lin, _lin, combine, var
 from .corners import Chosen, FinishCall
-from .model import Constraint, Equation, Geometry, Point, Structure, equation
+from ..core.model import Constraint, Equation, Geometry, Point, Structure, equation
 from .scaling import ScaleRefused, scaled_data
-from .values import PV, GeomRef, Q, StructRef, type_name
+from ..core.values import PV, GeomRef, Q, StructRef, type_name
 
 
 class OperationError(Exception):
@@ -224,7 +224,7 @@ class _Cloner:
                 raise OperationError(str(ex)) from None
         if g.kind == "Drawing2D" and (self.flip or self.rot):
             # its curves are held in its own frame: the copy's are the mirrored or turned ones
-            from .drawing2d import copied
+            from ..shapes.drawing2d import copied
             new.data["loops"], new.data["paths"] = copied(
                 g.data["loops"], g.data["paths"], self.rot or 0.0,
                 self.line_angle if self.flip else None)
@@ -389,7 +389,7 @@ def apply(ctx, kind: str, args: dict, name: str | None):
             args = dict(args, at=[args["a"], args["b"]])
         if "at" in args:
             ox, oy = S.frame_offset(None)
-            from .bbox import contains_bbox
+            from ..relations.bbox import contains_bbox
             at = _chosen(ctx, args["at"], S, kind)
             if any(contains_bbox(p.x) or contains_bbox(p.y) for c in at for p in c.points):
                 raise OperationError(f"{kind} at: name corners by geometry (`body.top_right`, "
@@ -479,7 +479,7 @@ def _zero_step(n: int, steps: list, what: str, fix: str, zero: str = "(0, 0)",
     """An OperationError when a pattern of ``n`` instances (``n`` > 1) moves each copy by a
     step known to be (0, 0) (``steps``: (x, y) expressions, each a step that is used): every
     copy would land on the original."""
-    from .expr import as_const
+    from ..core.expr import as_const
     for sx, sy in steps:
         x, y = as_const(sx), as_const(sy)
         if n > 1 and x is not None and y is not None and x == 0 and y == 0:
@@ -490,7 +490,7 @@ def _zero_step(n: int, steps: list, what: str, fix: str, zero: str = "(0, 0)",
 def _mirror(ctx, S, target, about, name, k: int, indexed: bool):
     """The mirror image of ``target`` about the line ``about`` (its copy ``name``, or
     ``name[k]`` for the k-th item of a mirrored list)."""
-    from .members import member
+    from ..relations.members import member
     line = about.geom
     a, b = member(line, "start", S), member(line, "end", S)
     dx, dy = ctx.value_of(b.x - a.x), ctx.value_of(b.y - a.y)
@@ -713,7 +713,7 @@ def _corners(ctx, target, args: dict, name: str | None) -> Copies:
     placed on the first point, a copy moved onto each other point; the points are a
     Rectangle's corners (bottom_left, bottom_right, top_right, top_left), each ``inset``
     toward the center along the rectangle's own sides, or the list ``at``."""
-    from .members import _pv
+    from ..relations.members import _pv
     S = ctx.struct
     span = ctx.cur_span
     if "at" in args:
@@ -731,7 +731,7 @@ def _corners(ctx, target, args: dict, name: str | None) -> Copies:
         g = rect.geom
         inset_x, inset_y = _inset(ctx, args.get("inset", 0.0))
         if "start" in g.points:      # a bar: its direction follows its ends
-            from .expr import hypot
+            from ..core.expr import hypot
             bl, br, tl = (_pv(g.points[n], S) for n in ("bottom_left", "bottom_right", "top_left"))
             wu, wv = hypot(br.x - bl.x, br.y - bl.y), hypot(tl.x - bl.x, tl.y - bl.y)
             ux, uy = (br.x - bl.x) / wu, (br.y - bl.y) / wu
@@ -752,7 +752,7 @@ def _corners(ctx, target, args: dict, name: str | None) -> Copies:
         # placing its box's center would pull its extreme shapes apart)
         _rigid(ctx, [target])
     if isinstance(target, GeomRef):
-        from .members import member
+        from ..relations.members import member
         ref = member(target.geom, "center", S)
     if not isinstance(ref, PV):
         ref = ctx.member(ctx.member(target, "bb", span), "center", span)
@@ -769,7 +769,7 @@ def _corners(ctx, target, args: dict, name: str | None) -> Copies:
 def _same_points(pts: list) -> None:
     """An OperationError when two of CornerPattern's ``at`` points are the same numbers (two
     copies on one spot)."""
-    from .expr import as_const
+    from ..core.expr import as_const
     seen: dict = {}
     for i, p in enumerate(pts):
         xy = (as_const(getattr(p, "x", None)), as_const(getattr(p, "y", None)))
@@ -833,8 +833,8 @@ def _chosen(ctx, v, S, kind: str) -> list:
     ``Fillet(at, ...)``/``Chamfer(at, ...)`` names: a point; two lines (the corner where they
     meet, found after the solve: at their ends, where they cross, or where one ends on the
     other); a line (both ends); a shape (its outline corners); or a list of these."""
-    from .constraints import _kind
-    from .members import member, points_of
+    from ..relations.constraints import _kind
+    from ..relations.members import member, points_of
     if isinstance(v, PV):
         return [Chosen("point", (v,), "")]
     if isinstance(v, (tuple, list)) and len(v) == 2 and all(isinstance(c, Q) for c in v):
@@ -852,7 +852,7 @@ def _chosen(ctx, v, S, kind: str) -> list:
             return [Chosen("ends", (member(g, "start", S), member(g, "end", S)), _name(g, S))]
         pts = points_of(g) if g.closed else []
         if pts and g.kind not in ("Circle", "Ellipse", "Slot"):
-            from .members import _pv
+            from ..relations.members import _pv
             return [Chosen("corners", tuple(_pv(p, S) for p in pts), _name(g, S))]
     raise OperationError(f"{kind} at: give a point, two edges [a, b] (their corner), a line, "
                          f"a polygonal shape, or a list of these; got {_kind(v)}")

@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import math
 
-from .expr import Expr, Lin, Nl, evaluate, func, rebuild, var
-from .model import Geometry, Structure
+from ..core.expr import Expr, Lin, Nl, evaluate, func, rebuild, var
+from ..core.model import Geometry, Structure
 
 SIDES = ("left", "right", "bottom", "top")
 
@@ -276,7 +276,7 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
         # rigid: its ends and the extremes of x and y its sweep passes, each the center
         # plus its offset at the values (the arc of a copy, turned or mirrored, from its
         # own points)
-        from .curves import elliptic_arc
+        from ..shapes.curves import elliptic_arc
         pt = {n: (float(x[g.points[n].ix]), float(x[g.points[n].iy]))
               for n in ("center", "vertex", "co_vertex", "start", "midpoint", "end")}
         c = pt["center"]
@@ -296,12 +296,12 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
         _spline_candidates(g, P, x, xs, ys)
         return
     if k == "Drawing2D":
-        from .drawing2d import local_box
+        from ..shapes.drawing2d import local_box
         ox, oy = P["origin"]
         bx = g.data.get("box")
         turn = held_turn(g, x) if g.data.get("mirror_lines") else 0.0
         if abs(turn) > 1e-15:           # a mirrored copy about a line the solve turned
-            from .drawing2d import copied
+            from ..shapes.drawing2d import copied
             bx = local_box(*copied(g.data["loops"], g.data["paths"], turn, None))
         elif bx is None:
             bx = g.data["box"] = local_box(g.data["loops"], g.data["paths"])
@@ -327,7 +327,7 @@ def _spline_candidates(g: Geometry, P: dict, x, xs: list, ys: list) -> None:
     taken at the values ``x`` (the chord lengths and turning parameters there): exact for a
     rigid spline (literal points move together), a first-order model of a flexible one."""
     import numpy as np
-    from .spline import _steps, bez_extremes, interpolation_matrix
+    from ..shapes.spline import _steps, bez_extremes, interpolation_matrix
     names = g.data["order"]
     pts = [g.points[n] for n in names]
     V = np.array([(float(x[p.ix]), float(x[p.iy])) for p in pts])

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 
-from .curves import Arc, Line, carrier, crossings, with_ends
+from ..shapes.curves import Arc, Line, carrier, crossings, with_ends
 
 EPS = 1e-9          # relative: a crossing this near a segment's end is on it
 
@@ -23,7 +23,7 @@ def _angle_in(a: float, start: float, sweep: float, tol: float) -> bool:
 
 def on_segment(s, p, tol: float | None = None) -> bool:
     """True when ``p`` (a point of ``s``'s carrier) lies within segment ``s``."""
-    from .curves import Circle, EllipticArc
+    from ..shapes.curves import Circle, EllipticArc
     scale = max(1.0, abs(p[0]), abs(p[1]))
     tol = EPS * scale if tol is None else tol
     if isinstance(s, Line):

@@ -9,9 +9,9 @@ on it follows the solved shape.  The members each kind lists are the registry's
 """
 from __future__ import annotations
 
-from .expr import Lin, _new, func, hypot, var
-from .model import Geometry
-from .values import ANG, LEN, PV, GeomRef, Q
+from ..core.expr import Lin, _new, func, hypot, var
+from ..core.model import Geometry
+from ..core.values import ANG, LEN, PV, GeomRef, Q
 
 def _pv(p, frame) -> PV:
     o = p.owner
@@ -158,7 +158,7 @@ def member(g: Geometry, name: str, frame):
             return _pv(pts[-1 if not g.closed else 0], frame)
     if k == "Drawing2D":
         if name == "circles":            # made when first named (drawing2d.build)
-            from .drawing2d import drawing_circles
+            from ..shapes.drawing2d import drawing_circles
             return [GeomRef(e) for e in drawing_circles(g)]
         if name == "outlines":
             return [GeomRef(e) for e in g.data.get(name, [])]
@@ -196,7 +196,7 @@ def _centroid(pvs: list, own) -> PV:
 
 
 def member_names(g: Geometry) -> list[str]:
-    from ..registry import ENTRIES
+    from ...registry import ENTRIES
     names = set(ENTRIES[g.kind].members) if g.kind in ENTRIES else set()
     names |= set(g.points) | set(g.parts) | set(g.scalars)
     return sorted(n for n in names if not (n[:1] == "p" and n[1:].isdigit()))
