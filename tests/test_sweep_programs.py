@@ -12,8 +12,7 @@ import pytest
 from aidl_lang.sweep import sweep
 from conftest import ROOT
 
-sys.path.insert(0, str(ROOT / "benchmarks"))
-from sweep_programs import verify  # noqa: E402
+from benchmarks.checks.sweep_programs import verify
 
 
 @pytest.mark.parametrize("rel", [

@@ -140,6 +140,9 @@ class Statements:
                     if st.options:
                         try:
                             self._param_range(st, val, overridden, fctx.param_ranges)
+                        except _Silent:
+                            pass    # its range reads a param already said to be wrong: the
+                            # value stays, its range is not judged (no second message)
                         except EvalError as e:
                             self.error(e)
                             if overridden and e.code == "E0124":
@@ -158,6 +161,10 @@ class Statements:
                                 continue
                     fctx.scope.vars[st.name] = val
                     fctx.params[st.name] = val
+            except _Silent:
+                # a param whose value reads one already said to be wrong: quiet, as its uses
+                if isinstance(st, A.ParamDecl):
+                    fctx.scope.vars[st.name] = POISON
             except EvalError as e:
                 self.error(e)
         if not is_main:
