@@ -1058,3 +1058,18 @@ def test_text_along_a_circle_too_short_for_it_W0111(compile_text):
     assert 0 < fit < 5 * 31.42 / (x1 - x0)
     c = compile_text(src.format(fit))
     assert not [d for d in c.sink.items if d.code == "W0111"]
+
+
+def test_a_range_that_reads_a_param_already_wrong_is_quiet_not_a_traceback(compile_text):
+    """`--set d=3 mm` puts `flat` (max = d / 2) past its range: one E0124 naming `flat`, whose
+    uses stay quiet.  A third param's range that reads `flat` escaped as an internal exception
+    (the gallery sweep of hinged_box and planetary, the studio's slider ends) until it was
+    caught: the value stays, its range unjudged, nothing more said."""
+    src = ("param d = 6 mm, min = 2 mm, max = 20 mm\n"
+           "param flat = 2 mm, min = 0 mm, max = d / 2\n"
+           "param w = 10 mm, min = flat, max = 40 mm\n"
+           "solid p { c = Circle(center=(0, 0), radius=w) }\n")
+    c = compile_text(src, overrides={"d": "3 mm"})
+    errors = [d for d in c.sink.items if d.severity == "error"]
+    assert [d.code for d in errors] == ["E0124"] and "`flat`" in errors[0].message, \
+        [(d.code, d.message) for d in c.sink.items]
