@@ -176,9 +176,13 @@ def test_every_slider_end_shows_the_sliders_picture(browser, tmp_path):
         settled(page)
     # the share link holds the sliders' values, the DXF download is drawn with them
     now = settled(page)
-    page.click("#share")
+    page.evaluate("window.studio.shared = null")
+    page.click("#share")        # the link is packed (a CompressionStream) before the dialog opens
+    page.wait_for_function("() => window.studio.shared && document.getElementById('share-dialog').open",
+                           timeout=HANG)
     link = page.evaluate("window.studio.shared")
     page.keyboard.press("Escape")
+    page.wait_for_function("() => !document.getElementById('share-dialog').open", timeout=HANG)
     packed = link.split("#p=", 1)[1]
     doc = json.loads(zlib.decompress(base64.urlsafe_b64decode(packed + "=" * (-len(packed) % 4)), -15))
     defaults = own(now["source"])
