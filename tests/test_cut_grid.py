@@ -439,15 +439,18 @@ def shapely_parts(outline, cuts, width: float = 1e-3) -> list:
     plate = Polygon(outline)
     lines = [plate.exterior] + [LineString(c).intersection(plate) for c in cuts]
     faces = list(shapely.polygonize([shapely.union_all(lines)]).geoms)
-    cutaway = shapely.union_all([LineString(c).buffer(width / 2, cap_style="square")
-                                 for c in cuts])
+    strips = [LineString(c).buffer(width / 2, cap_style="square") for c in cuts]
+    cutaway = shapely.union_all(strips)
+    by_strip = shapely.STRtree(strips)
     material = plate.difference(cutaway)
     pieces = list(getattr(material, "geoms", [material]))
     filled = [Polygon(p.exterior) for p in pieces]
     by_piece, by_filled = shapely.STRtree(pieces), shapely.STRtree(filled)
     parts = []
     for f in faces:
-        inner = f.buffer(-width).difference(cutaway)    # clear of a slit that ends in f
+        shrunk = f.buffer(-width)               # clear of a slit that ends in f: the
+        near = [strips[j] for j in by_strip.query(shrunk)]   # strips that reach f, not all
+        inner = shrunk.difference(shapely.union_all(near)) if near else shrunk
         p = (inner if not inner.is_empty else f).representative_point()
         (k,) = [j for j in by_piece.query(p) if pieces[j].contains(p)]
         if not any(j != k and filled[j].contains(pieces[k])
@@ -465,30 +468,34 @@ def test_a_100_by_100_grid_of_crossing_slits_gives_its_pieces_within_the_budget(
     Now: 101 x 101 squares of 4 mm^2 (edge to edge), or one part, the frame 2 mm wide whose
     10,000 cells fall out (stopping short), as Shapely counts them, each edge cut once."""
     pytest.importorskip("shapely")
-    src = _slit_grid_src(100, span)
-    res = _compile(src, tmp_path)
-    assert res.ok, [d.message for d in res.diagnostics]
+    import json
+
+    from aidl_lang.output.checks.inventory import parts_text
+    (tmp_path / "t.aidl").write_text(_slit_grid_src(100, span))
     size = 202.0
     cuts = []
     lo, hi = (0.0, size) if span else (0.5, size - 0.5)
     for i in range(1, 101):
         cuts += [[(lo, 2.0 * i), (hi, 2.0 * i)], [(2.0 * i, lo), (2.0 * i, hi)]]
     want = shapely_parts([(0, 0), (size, 0), (size, size), (0, size)], cuts)
-    got = sorted(p.area for p in res.output.parts)
     assert len(want) == (10201 if span else 1)
+    # two compiles, each by the command line at its default budget: the parts list (its
+    # areas, as JSON, and the text it prints for them), then one `render` writing the laser
+    # SVG and, edge to edge, the G-code too (one budget for both files)
+    cli = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "parts", "--json",
+                          str(tmp_path / "t.aidl")], capture_output=True, text=True, timeout=300)
+    assert cli.returncode == 0, cli.stderr
+    rows = json.loads(cli.stdout)["parts"]
+    got = sorted(r["area"] for r in rows)
     assert len(got) == len(want)
     assert got == pytest.approx(want, abs=1e-6)
     if not span:
         assert got == pytest.approx([size ** 2 - 198.0 ** 2], abs=1e-6)
-    # the command line, at its default budget: the parts list and a laser SVG
-    cli = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "parts", str(tmp_path / "t.aidl")],
-                         capture_output=True, text=True, timeout=300)
-    assert cli.returncode == 0, cli.stderr
-    assert f"{len(want)} part{'s' if span else ''}, 1 shape" in cli.stdout
-    svg = tmp_path / "g.svg"
+    assert f"{len(want)} part{'s' if span else ''}, 1 shape" in parts_text(rows)
+    svg, nc = tmp_path / "g.svg", tmp_path / "g.nc"
     cli = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "render", str(tmp_path / "t.aidl"),
-                          "-o", str(svg), "--svg-style", "laser"], capture_output=True, text=True,
-                         timeout=300)
+                          "-o", str(svg)] + (["-o", str(nc)] if span else [])
+                         + ["--svg-style", "laser"], capture_output=True, text=True, timeout=300)
     assert cli.returncode == 0, cli.stderr
     if span:                                   # each 2 mm edge of the 101 x 101 cells once
         counted = _count(_svg_stretches(svg.read_text()), 2.0)
@@ -496,11 +503,6 @@ def test_a_100_by_100_grid_of_crossing_slits_gives_its_pieces_within_the_budget(
         # the G-code too (refused before as "about 18.9 s more would end past the 15 s": the
         # writer's estimate was 300 us an item, it takes about 17 us here): each edge once a
         # pass, the built-in laser's two passes
-        nc = tmp_path / "g.nc"
-        cli = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "render",
-                              str(tmp_path / "t.aidl"), "-o", str(nc)], capture_output=True,
-                             text=True, timeout=300)
-        assert cli.returncode == 0, cli.stderr
         counted = _count(_gcode_stretches(nc.read_text()), 2.0)
         assert counted == {e: 2 for e in _all_unit_edges(101, 2.0)}
 
