@@ -23,6 +23,7 @@ ROOT = Path(__file__).resolve().parent.parent
 TIMEOUT = 20.0          # the per-program time-out of these batches (the runaway needs minutes;
 #                         the slowest example, gear_pair, 1.2 s at a load of 3: a loaded
 #                         machine's wall clock has room, 8 s left it little)
+RUNAWAY_TIMEOUT = 2.0   # the runaway's own batch: broken programs beside it end in ms
 PLATES = 60             # generated plates: every width of _plate's 50, every hole count and radius
 
 # within --budget 0.02's loop cap (200 items a range) but past its evaluation steps: E0304
@@ -105,19 +106,30 @@ def corpus(tmp_path_factory):
 def test_local_pool_and_dask_give_the_same_rows(corpus, tmp_path):
     pytest.importorskip("dask.distributed")
     folder, inputs = corpus
+    # the runaway first, beside the broken programs, under a time-out of its own (in the
+    # big batch it held a worker for TIMEOUT, 20 s of this test): stopped and recorded, in
+    # input order, and the batch went on
+    broken = tmp_path / "broken.jsonl"
+    broken.write_text("".join(json.dumps({"id": f"broken-{k}", "source": src}) + "\n"
+                              for k, src in enumerate(BROKEN)))
+    stop = run_batch([inputs[0], str(broken)], tmp_path / "stop.jsonl", workers=2,
+                     timeout=RUNAWAY_TIMEOUT)
+    assert [r["id"] for r in stop["rows"]] == ["runaway"] + [f"broken-{k}"
+                                                             for k in range(len(BROKEN))]
+    run = stop["rows"][0]
+    assert run["status"] == "timeout" and not run["ok"]
+    assert "timed out" in run["failure"] and run["compile_s"] >= RUNAWAY_TIMEOUT
+    assert all(r["status"] == "error" and r["errors"] for r in stop["rows"][1:])
+
     renders = tmp_path / "renders"
-    local = run_batch(inputs, tmp_path / "local.jsonl", workers=2, timeout=TIMEOUT,
+    assert inputs[0].endswith("runaway.jsonl")
+    local = run_batch(inputs[1:], tmp_path / "local.jsonl", workers=2, timeout=TIMEOUT,
                       render=[".svg"], out_dir=renders)
     rows = local["rows"]
     assert len(rows) >= 100 and local["ran"] == len(rows)
-    assert rows[0]["id"] == "runaway"                     # input order
+    assert "/examples/" in rows[0]["path"] and rows[-1]["id"] == "over-budget"   # input order
     by_id = {r["id"]: r for r in rows}
     assert len(by_id) == len(rows)
-
-    # the runaway was stopped and recorded; the batch went on
-    run = by_id["runaway"]
-    assert run["status"] == "timeout" and not run["ok"]
-    assert "timed out" in run["failure"] and run["compile_s"] >= TIMEOUT
     over = by_id["over-budget"]
     assert over["status"] == "error" and [e["code"] for e in over["errors"]] == ["E0304"]
     assert over["errors"][0]["line"] == 2
