@@ -21,7 +21,30 @@ if not Path("/usr/bin/chromium").exists():
     pytest.skip("needs Debian's chromium (apt-get install chromium; .ci/run installs it)",
                 allow_module_level=True)
 
-from benchmarks.serve.serve_latency import chromium, move_slider, open_page, p95, save_latency, served  # noqa: E402
+from benchmarks.serve.serve_latency import CHROMIUM, CHROMIUM_ARGS, move_slider, open_page, p95, save_latency, served  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def pw():
+    """One Playwright for the module (a second sync one cannot start inside it)."""
+    from playwright.sync_api import sync_playwright
+    with sync_playwright() as p:
+        yield p
+
+
+@pytest.fixture(scope="module")
+def browser(pw):
+    """One Chromium for the tests here, as ``chromium()`` launches it (a launch costs about
+    3 s); each test serves its own file and opens it in the context's first page."""
+    import tempfile
+    with tempfile.TemporaryDirectory(prefix="aidl-chromium-") as profile:
+        ctx = pw.chromium.launch_persistent_context(
+            profile, executable_path=CHROMIUM, headless=True, args=CHROMIUM_ARGS,
+            viewport={"width": 1400, "height": 900})
+        try:
+            yield ctx
+        finally:
+            ctx.close()
 
 
 def outline(page):
@@ -56,13 +79,14 @@ def base_and_handset(page):
             bool(bottom_xs))
 
 
-def test_live_preview_of_the_telephone(tmp_path):
+def test_live_preview_of_the_telephone(browser, tmp_path):
     src = (ROOT / "examples" / "telephone.aidl").read_text()
     f = tmp_path / "telephone.aidl"
     f.write_text(src)
     shot = Path(os.environ.get("AIDL_SCREENSHOT", ROOT / "out" / "serve-telephone.png"))
     shot.parent.mkdir(parents=True, exist_ok=True)
-    with served(f) as url, chromium() as ctx:
+    ctx = browser
+    with served(f) as url:
         page = open_page(ctx, url)
         # the picture is there, with the file's values
         assert page.locator("#viewer svg #part-desk_telephone").count() == 1
@@ -129,11 +153,12 @@ solid tag {
 """
 
 
-def test_customizer_controls_zoom_and_set_line(tmp_path):
+def test_customizer_controls_zoom_and_set_line(browser, tmp_path):
     (ROOT / "out").mkdir(exist_ok=True)
     f = tmp_path / "tag.aidl"
     f.write_text(KINDS)
-    with served(f) as url, chromium() as ctx:
+    ctx = browser
+    with served(f) as url:
         page = open_page(ctx, url)
         r = page.locator('input[type=range][name="width"]')
         assert (r.get_attribute("min"), r.get_attribute("max"), r.get_attribute("step")) == ("20", "80", "2")
@@ -169,12 +194,13 @@ def test_customizer_controls_zoom_and_set_line(tmp_path):
 LOCK = (Path(__file__).resolve().parent / "programs" / "preview" / "lock.aidl").read_text()
 
 
-def test_shape_checks_follow_the_picture(tmp_path):
+def test_shape_checks_follow_the_picture(browser, tmp_path):
     """A slider move shows its picture, then its shape checks (W0501: the shackle refills
     the key hole) arrive in a second message and are listed without moving the slider."""
     f = tmp_path / "lock.aidl"
     f.write_text(LOCK)
-    with served(f) as url, chromium() as ctx:
+    ctx = browser
+    with served(f) as url:
         page = open_page(ctx, url)
         assert "W0501" not in page.locator("#diagnostics").inner_text()
         move_slider(page, "shackle_y", 14)
@@ -199,12 +225,13 @@ def _wait_ready(page, url):
     page.wait_for_function("window.aidl && window.aidl.ready")
 
 
-def test_reload_while_broken_shows_the_last_good_picture(tmp_path):
+def test_reload_while_broken_shows_the_last_good_picture(browser, tmp_path):
     """Issue 28: a page opened or reloaded while the file is broken draws the picture the
     server kept, marked as the last good one; with no good compile yet it says so."""
     f = tmp_path / "plate.aidl"
     f.write_text(PLATE)
-    with served(f) as url, chromium() as ctx:
+    ctx = browser
+    with served(f) as url:
         page = open_page(ctx, url)
         good = page.locator("#viewer svg").inner_html()
         assert page.locator("#viewer svg #part-plate").count() == 1
@@ -223,7 +250,7 @@ def test_reload_while_broken_shows_the_last_good_picture(tmp_path):
         page.screenshot(path=str(ROOT / "out" / "serve-reload-broken.png"))
     g = tmp_path / "broken.aidl"
     g.write_text(PLATE.replace("width=w,", "width=w"))
-    with served(g) as url, chromium() as ctx:
+    with served(g) as url:
         page = ctx.pages[0] if ctx.pages else ctx.new_page()
         _wait_ready(page, url)
         assert page.locator("#viewer svg").count() == 0
@@ -240,7 +267,7 @@ def test_reload_while_broken_shows_the_last_good_picture(tmp_path):
         assert not page.locator("#stale").is_visible()
 
 
-def test_assembled_3d_view_orbits_and_follows_a_slider(tmp_path):
+def test_assembled_3d_view_orbits_and_follows_a_slider(pw, tmp_path):
     """The 3D view (three.js, vendored): the phone stand's two parts in the flat view's
     colours, loaded from /download/glb; a drag orbits the camera (the picture changes), a
     slider reloads the product (live) without moving the camera, the toggle goes back to the
@@ -249,7 +276,6 @@ def test_assembled_3d_view_orbits_and_follows_a_slider(tmp_path):
 
     import numpy as np
     from PIL import Image
-    from playwright.sync_api import sync_playwright
     f = tmp_path / "stand.aidl"
     f.write_text((ROOT / "examples" / "phone_stand.aidl").read_text())
     shot = Path(os.environ.get("AIDL_SCREENSHOT_3D", ROOT / "out" / "serve-assembled.png"))
@@ -268,7 +294,7 @@ def test_assembled_3d_view_orbits_and_follows_a_slider(tmp_path):
     def orange(im) -> float:          # the foot's #d55e00
         r, g, b = im[:, :, 0], im[:, :, 1], im[:, :, 2]
         return float(((r > b + 80) & (r > g + 30)).mean())
-    with served(f) as url, tempfile.TemporaryDirectory() as prof, sync_playwright() as pw:
+    with served(f) as url, tempfile.TemporaryDirectory() as prof:
         ctx = pw.chromium.launch_persistent_context(
             prof, executable_path="/usr/bin/chromium", headless=True, args=args,
             viewport={"width": 1200, "height": 800})
