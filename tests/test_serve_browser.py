@@ -21,30 +21,17 @@ if not Path("/usr/bin/chromium").exists():
     pytest.skip("needs Debian's chromium (apt-get install chromium; .ci/run installs it)",
                 allow_module_level=True)
 
-from benchmarks.serve.serve_latency import CHROMIUM, CHROMIUM_ARGS, move_slider, open_page, p95, save_latency, served  # noqa: E402
+from benchmarks.serve.serve_latency import chromium, move_slider, open_page, p95, save_latency, served  # noqa: E402
 
 
 @pytest.fixture(scope="module")
-def pw():
-    """One Playwright for the module (a second sync one cannot start inside it)."""
-    from playwright.sync_api import sync_playwright
-    with sync_playwright() as p:
-        yield p
-
-
-@pytest.fixture(scope="module")
-def browser(pw):
-    """One Chromium for the tests here, as ``chromium()`` launches it (a launch costs about
-    3 s); each test serves its own file and opens it in the context's first page."""
-    import tempfile
-    with tempfile.TemporaryDirectory(prefix="aidl-chromium-") as profile:
-        ctx = pw.chromium.launch_persistent_context(
-            profile, executable_path=CHROMIUM, headless=True, args=CHROMIUM_ARGS,
-            viewport={"width": 1400, "height": 900})
-        try:
-            yield ctx
-        finally:
-            ctx.close()
+def browser():
+    """One Chromium for the tests here (a launch costs about 3 s); each test serves its own
+    file and opens it in the context's first page (``open_page``).  The 3D view's test, on
+    SwiftShader, is tests/test_serve_browser_3d.py (a second sync Playwright cannot start
+    inside this one)."""
+    with chromium() as ctx:
+        yield ctx
 
 
 def outline(page):
@@ -265,71 +252,3 @@ def test_reload_while_broken_shows_the_last_good_picture(browser, tmp_path):
         save_latency(page, g, PLATE)
         assert page.locator("#viewer svg #part-plate").count() == 1
         assert not page.locator("#stale").is_visible()
-
-
-def test_assembled_3d_view_orbits_and_follows_a_slider(pw, tmp_path):
-    """The 3D view (three.js, vendored): the phone stand's two parts in the flat view's
-    colours, loaded from /download/glb; a drag orbits the camera (the picture changes), a
-    slider reloads the product (live) without moving the camera, the toggle goes back to the
-    sheet.  WebGL runs on SwiftShader (no GPU); the screenshot is out/serve-assembled.png."""
-    import tempfile
-
-    import numpy as np
-    from PIL import Image
-    f = tmp_path / "stand.aidl"
-    f.write_text((ROOT / "examples" / "phone_stand.aidl").read_text())
-    shot = Path(os.environ.get("AIDL_SCREENSHOT_3D", ROOT / "out" / "serve-assembled.png"))
-    shot.parent.mkdir(parents=True, exist_ok=True)
-    args = ["--headless", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-            "--disable-quic", "--no-first-run", "--disable-background-networking"]
-
-    def view(page) -> np.ndarray:
-        return np.asarray(Image.open(__import__("io").BytesIO(
-            page.locator("#viewer3d").screenshot())).convert("RGB")).astype(int)
-
-    def blue(im) -> float:            # the support's #0072b2, however lit
-        r, g, b = im[:, :, 0], im[:, :, 1], im[:, :, 2]
-        return float(((b > r + 60) & (b > g + 20)).mean())
-
-    def orange(im) -> float:          # the foot's #d55e00
-        r, g, b = im[:, :, 0], im[:, :, 1], im[:, :, 2]
-        return float(((r > b + 80) & (r > g + 30)).mean())
-    with served(f) as url, tempfile.TemporaryDirectory() as prof:
-        ctx = pw.chromium.launch_persistent_context(
-            prof, executable_path="/usr/bin/chromium", headless=True, args=args,
-            viewport={"width": 1200, "height": 800})
-        try:
-            page = open_page(ctx, url)
-            page.click("#mode3d")
-            page.wait_for_function("window.aidl3d && (window.aidl3d.loaded > 0 || window.aidl3d.error)",
-                                   timeout=30_000)
-            got = page.evaluate("({parts: window.aidl3d.parts, colours: window.aidl3d.colours,"
-                                " error: window.aidl3d.error})")
-            assert got["error"] is None and sorted(got["parts"]) == ["stand.foot", "stand.support"]
-            assert got["colours"] == {"stand.support": "#0072b2", "stand.foot": "#d55e00"}
-            assert page.locator("#viewer").is_hidden() and page.locator("#viewer3d canvas").count() == 1
-            page.wait_for_timeout(500)
-            before = view(page)
-            # both parts drawn, shaded, in their colours (blue support, orange foot)
-            assert blue(before) > 0.03 and orange(before) > 0.01
-            page.screenshot(path=str(shot))
-            # a drag orbits: the picture changes
-            box = page.locator("#viewer3d").bounding_box()
-            cx, cy = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
-            page.mouse.move(cx, cy)
-            page.mouse.down()
-            page.mouse.move(cx + 150, cy + 20, steps=8)
-            page.mouse.up()
-            page.wait_for_timeout(300)
-            turned = view(page)
-            assert np.abs(turned - before).sum(axis=2).astype(bool).mean() > 0.02
-            # a slider: the product is loaded again (live), with the new values
-            n = page.evaluate("window.aidl3d.loaded")
-            move_slider(page, "angle", 55)
-            page.wait_for_function(f"window.aidl3d.loaded > {n}", timeout=30_000)
-            assert page.evaluate("window.aidl3d.error") is None
-            # back to the flat sheet
-            page.click("#mode3d")
-            assert page.locator("#viewer").is_visible() and page.locator("#viewer3d").is_hidden()
-        finally:
-            ctx.close()
