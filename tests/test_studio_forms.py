@@ -20,7 +20,7 @@ from benchmarks.checks.slider_extremes import NUMERIC, extremes
 
 # the generators whose numeric params all declare their ranges and whose slider extremes
 # compile without a move (the full run: benchmarks/checks/slider_extremes.py, 392 extremes
-# of 48 entries, 24.5 s CPU): tests/test_sweep.py sweeps these at their declared ends
+# of 48 entries, 24.5 s CPU): tests/test_sweep_gallery*.py sweep these at their declared ends
 LEFT_TO_THE_SWEEP = {"generator/ring_gear", "generator/drawer", "generator/rack_and_pinion",
                      "generator/divider_tray", "generator/spur_gear", "generator/finger_box",
                      "generator/wall_shelf", "generator/lid_box"}
@@ -30,7 +30,7 @@ def test_every_slider_extreme_of_every_gallery_entry_compiles(tmp_path):
     """Every entry but LEFT_TO_THE_SWEEP (10.5 s of the 24.5): each slider extreme compiles,
     settled where it needs another value moved; the full run over every entry is
     benchmarks/checks/slider_extremes.py."""
-    from test_sweep import LEFT, _ranged
+    from test_sweep_gallery import LEFT, _ranged
     swept = {p.values[0].id for p in _ranged()}
     failed, moved, count = [], [], 0
     for e in gallery.entries():

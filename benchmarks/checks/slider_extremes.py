@@ -4,7 +4,7 @@ when it fails, settled by :func:`aidl_lang.studio.compiler.settle` (issue 62, "F
 cannot fail"); prints each entry's extremes, CPU seconds, failures and the values moved.
 The suite runs a sample (tests/test_studio_forms.py::
 test_every_slider_extreme_of_every_gallery_entry_compiles: every entry but the generators
-whose ranges are all declared and need no move, which tests/test_sweep.py sweeps at their
+whose ranges are all declared and need no move, which tests/test_sweep_gallery*.py sweep at their
 ends); this runs them all.
 
     PYTHONPATH=$PWD python benchmarks/checks/slider_extremes.py [ID ...]

@@ -1,7 +1,8 @@
 """The default ``aidl check --sweep`` (each param's ends and middle, then its seeded Latin
 hypercube of combinations) over every gallery entry with ranged params; prints each entry's
 points, CPU seconds and findings (issue 84).  Not in the suite (minutes of CPU); the suite's
-small pass is tests/test_sweep.py::test_every_gallery_entry_is_clean_at_a_few_combinations.
+small pass is tests/test_sweep_gallery.py and tests/test_sweep_gallery_late.py
+(test_every_gallery_entry_is_clean_across_its_declared_ranges).
 
     PYTHONPATH=$PWD python benchmarks/checks/sweep_gallery.py [--points N] [--seed S] [ID ...]
 
@@ -9,7 +10,7 @@ h14-lhs (34 ranged entries, 8 points, seed 0): before, 7 findings in 84 s CPU (f
 on 6.5 mm sheet colliding in finger_box, lid_box, drawer; screw=7 in mounting_plate and
 wall_shelf; divider_tray's assert over locals; sliding_lid_box's pull at 10 mm sheet); after,
 0 findings in 78 s.  The suite's 3 combinations (seed 0) find two more, left in
-tests/test_sweep.py's LEFT (flex_box's web, spur_gear's pointed teeth).
+tests/test_sweep_gallery.py's LEFT (flex_box's web, spur_gear's pointed teeth).
 """
 from __future__ import annotations
 

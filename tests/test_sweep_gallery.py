@@ -1,0 +1,54 @@
+"""Every example and generator of the gallery swept across its declared ranges
+(`aidl check --sweep`, aidl_lang/sweep.py, issue 84), first part: the examples and the
+generators up to ``generator/hinged_box``; tests/test_sweep_gallery_late.py sweeps the rest
+(one file of 66 s set the suite's tail under ``--dist loadfile``).  The default sweep over
+every entry: benchmarks/checks/sweep_gallery.py."""
+import pytest
+
+from aidl_lang.sweep import sweep
+
+# every example and generator of the gallery (aidl_lang/studio/gallery.py: examples/*.aidl,
+# examples/generators/*.aidl, the studio's forms, the synthesized generator programs) with
+# ranged params, swept at each param's ends and middle and at a small seeded Latin hypercube
+# of SUITE_LHS combinations (the default sweep's 8 over every entry:
+# benchmarks/checks/sweep_gallery.py).  h12-sweep left 11 entries here; h13-sweep fixed the designs
+# (washer, rounded_tab, mounting_plate, planetary asserts; hinged_box's cheek wall; W0510 on a
+# count's new holes) or narrowed the ranges (phone_stand's slot, the gear forms, flex_box's
+# height, text spacing); the combinations (h14-lhs) found finger_panel's corner squares
+# filling a slot under narrow fingers, the screw slider's 7, divider_tray's assert over
+# locals and sliding_lid_box's pull on a thick sheet, and a wall lower than three sheets
+# (the far edge's tabs in the slots), all fixed; two it found are left:
+LEFT: dict = {
+}
+SUITE_LHS = 3
+
+
+LATE = "generator/i"     # entries whose id sorts from here on: tests/test_sweep_gallery_late.py
+
+
+def _ranged(part: int | None = None):
+    """The ranged entries as pytest params: all (None), before LATE (0) or from it on (1)."""
+    from aidl_lang.studio import gallery
+    out = []
+    for e in gallery.entries():
+        if part is not None and (e.id >= LATE) != bool(part):
+            continue
+        if any(p["declared"] and p["min"] is not None and p["max"] is not None
+               and p["kind"] in ("length", "angle", "number", "integer") for p in e.params):
+            marks = ([pytest.mark.xfail(run=False, reason=LEFT[e.id])] if e.id in LEFT else [])
+            out.append(pytest.param(e, id=e.id, marks=marks))
+    return out
+
+
+def swept_clean(entry, tmp_path) -> None:
+    # the declared ranges only (the sliders' default spans: benchmarks/checks/sweep_programs.py)
+    rep = sweep(entry.source, str(tmp_path / "main.aidl"), points=SUITE_LHS, unranged=False)
+    assert rep.skipped == 0
+    assert rep.ok
+    assert rep.findings == [], "\n".join(
+        f"{d.message}\n  {d.hint}" for d in rep.diagnostics)
+
+
+@pytest.mark.parametrize("entry", _ranged(0))
+def test_every_gallery_entry_is_clean_across_its_declared_ranges(entry, tmp_path):
+    swept_clean(entry, tmp_path)
