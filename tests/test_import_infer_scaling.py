@@ -25,6 +25,7 @@ the deadline as it goes.
 from __future__ import annotations
 
 import cProfile
+import functools
 import io
 import math
 import pstats
@@ -176,6 +177,7 @@ def _module(filename: str) -> str | None:
     return None
 
 
+@functools.lru_cache(maxsize=None)     # the 500-hole panel: measured once, its text compiled
 def _calls(kind: str, n: int) -> tuple[Counter, str]:
     doc, want = FAMILIES[kind](n)
     data = _bytes(doc)
