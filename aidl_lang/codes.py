@@ -1172,6 +1172,17 @@ a `cut` inside the part's solid; a sheet-level cut belongs beside the parts, off
         cut slits { b = Line(start=(-10, 0), end=(10, 0)) }       # across the plate: W0525
     }
 """),
+    "W0526": ("hole in a drawing that hides none of its lines", """
+A `hole` inside a `drawing` hides that drawing's lines where it covers them (engraving minus
+engraving: a compass rose's points behind the ones in front). This hole covers none of them:
+it is somewhere else, or in the wrong drawing (it hides only the drawing it is declared in and
+that drawing's children). Move it over the lines it should hide, or delete it.
+
+    drawing back {
+        p = Polygon(points=[(0, 0), (20, 5), (30, 30), (5, 20)])
+        hole front { q = Circle(center=(60, 0), radius=5) }     # covers nothing: W0526
+    }
+"""),
     "W0130": ("drawing entities skipped", """
 Entities of a drawing that have no exact form here are skipped and counted, named by kind:
 rational or high-degree splines, hatches, dimensions, images, a mirrored or skewed SVG text
