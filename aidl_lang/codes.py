@@ -377,6 +377,14 @@ corners are an error only when none of them is a corner. Nothing is written.
         Fillet([stem.body.right, stem.body.left], 2)     # parallel: E0408
     }
 """),
+    "E0502": ("a sheet layout of a design with no solid part", """
+`--layout sheet` nests the design's solid parts on sheets, and this design has none: only
+drawings (engraved lines and text) or nothing to cut. Nothing is written. Render it without
+`--layout` to get the drawing as it is, or put the drawing inside the `solid` plate it is
+engraved on (then the plate is laid out, with its engraving).
+
+    drawing label { t = Text("HI", position=(0, 0), size=5) }     # --layout sheet: E0502
+"""),
     "E0501": ("parts lie over each other in a machine file", """
 A machine file (G-code, LightBurn, HP-GL) is written as the program draws the parts, and two
 separate parts lie over each other there: the machine would cut one part through the other.
