@@ -24,7 +24,7 @@ import numpy as np
 
 from ...geometry.derived.clip import inside
 from ...geometry.shapes.curves import (Arc, Circle, EllipticArc, Line, Loop, Spline, carrier,
-                                       crossings, distance_to, foot, with_ends)
+                                       crossings, distance_to, with_ends)
 
 EPS = 1e-9          # relative: points this near are one point
 
