@@ -377,6 +377,14 @@ corners are an error only when none of them is a corner. Nothing is written.
         Fillet([stem.body.right, stem.body.left], 2)     # parallel: E0408
     }
 """),
+    "E0502": ("a sheet layout of a design with no solid part", """
+`--layout sheet` nests the design's solid parts on sheets, and this design has none: only
+drawings (engraved lines and text) or nothing to cut. Nothing is written. Render it without
+`--layout` to get the drawing as it is, or put the drawing inside the `solid` plate it is
+engraved on (then the plate is laid out, with its engraving).
+
+    drawing label { t = Text("HI", position=(0, 0), size=5) }     # --layout sheet: E0502
+"""),
     "E0501": ("parts lie over each other in a machine file", """
 A machine file (G-code, LightBurn, HP-GL) is written as the program draws the parts, and two
 separate parts lie over each other there: the machine would cut one part through the other.
@@ -1170,6 +1178,17 @@ a `cut` inside the part's solid; a sheet-level cut belongs beside the parts, off
         solid plate { r = Rectangle(center=(0, 0), width=60, height=40) }
         cut scrap { a = Line(start=(40, -10), end=(40, 10)) }     # beside the plate: fine
         cut slits { b = Line(start=(-10, 0), end=(10, 0)) }       # across the plate: W0525
+    }
+"""),
+    "W0526": ("hole in a drawing that hides none of its lines", """
+A `hole` inside a `drawing` hides that drawing's lines where it covers them (engraving minus
+engraving: a compass rose's points behind the ones in front). This hole covers none of them:
+it is somewhere else, or in the wrong drawing (it hides only the drawing it is declared in and
+that drawing's children). Move it over the lines it should hide, or delete it.
+
+    drawing back {
+        p = Polygon(points=[(0, 0), (20, 5), (30, 30), (5, 20)])
+        hole front { q = Circle(center=(60, 0), radius=5) }     # covers nothing: W0526
     }
 """),
     "W0130": ("drawing entities skipped", """

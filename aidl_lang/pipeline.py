@@ -388,6 +388,22 @@ def report_stacked(sink: DiagnosticSink, drawing, ex) -> None:
     sink.add(Diagnostic("E0501", ex.message, getattr(s, "span", None), "error", hint=ex.hint))
 
 
+def report_nothing(sink: DiagnosticSink, model: Model, ex) -> None:
+    """One ``E0502`` for a sheet layout of a design with no solid part
+    (:class:`~aidl_lang.output.fabrication.layout.NothingToLayOut` ``ex``), at the design's
+    first structure: the design named as written, "this design" for the implicit `model`."""
+    root = model.root
+    implicit = root.name == "model" and getattr(root.span, "start", 1) == 0
+    first = next(iter(root.children.values()), root) if implicit else root
+    one = first if not implicit or len(root.children) == 1 else None
+    name = f"{one.kind} `{one.name}`" if one is not None else "this design"
+    sink.add(Diagnostic("E0502", (
+        f"nothing to lay out on a sheet: {name} has no solid part to cut, {ex.holds} "
+        "(a drawing is lines, not a part)"), getattr(first, "span", None), "error",
+        hint="render it without `--layout` (the drawing as it is), or put the drawing inside "
+             "the `solid` plate it is engraved on"))
+
+
 def _empty_drawing(program, model: Model) -> bool:
     """W0104's condition: nothing at all in the file, or structures that build no geometry.
     A file of only templates, params and constants is a library: no warning."""

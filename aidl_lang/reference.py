@@ -725,8 +725,10 @@ material; W0507: a web thinner than the minimum wall between cuts. Templates may
     "drawing": ("statement", "`drawing NAME { ... }`: engraved lines and text, not filled.", """
 `drawing NAME { ... }`: its shapes are drawn as lines (closed shapes as outlines) and Text as
 single strokes, on the `engrave` layer; nothing is filled or cut. Text is only allowed in a
-drawing. Put it inside the solid it marks.
-""", ["engraving", "engrave", "label", "mark"]),
+drawing. Put it inside the solid it marks. A `hole` in a drawing hides the drawing's lines
+(its own and its children's) where it covers them: a shape behind another (`drawing back {
+p = Polygon(...) hole front { q = Polygon(...) } }`); one that hides nothing is W0526.
+""", ["engraving", "engrave", "label", "mark", "engraving minus engraving", "hide lines"]),
     "assembly": ("statement", "`assembly NAME { ... }`: separate parts.", """
 `assembly NAME { ... }`: each child is a separate part, drawn where the solver puts it
 (parts may overlap); `aidl render --layout sheet` lays them out flat for cutting. Its own

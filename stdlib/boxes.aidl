@@ -14,7 +14,7 @@ import "std/joints.aidl"
 # the walls with a smaller plate, the `lip`, glued under it: the lip fits
 # inside the walls with `clearance` all round and keeps the lid in place.
 # `length` x `width` x `height` (mm) is the outer size (lid included) when
-# `outside=true`, else the space inside; `thickness` is the material,
+# `outside=true`, else the space inside (floor to the lip); `thickness` is the material,
 # `finger` the least finger width. Members: `body` (an open finger_box),
 # `lid`, `lip`.
 def lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=10 mm,
@@ -23,7 +23,7 @@ def lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=10 
     gap = 5 mm
     lo = length if outside else length + 2 * t
     wo = width if outside else width + 2 * t
-    ho = height if outside else height + 2 * t
+    ho = height if outside else height + 3 * t  # inside: floor to the lip under the lid
     hb = ho - t
     # over the arguments, so a form's ranges follow them (hb > 2 t; c < t)
     assert height > (3 if outside else 1) * thickness, "the box must be taller than three thicknesses (one, inside)"
@@ -400,7 +400,8 @@ import "std/plates.aidl"
 # the wall's middle line (the straight sides and four quarter arcs), its ends
 # meeting mid-front, with a `living_hinge` over each arc. `length` x `width`
 # x `height` (mm) and `radius` are outer sizes when `outside=true`, else
-# inner. Assembled, the wall is shown bent round the corners (`Bend`).
+# inner (the height between the base's lip and the lid's). Assembled, the
+# wall is shown bent round the corners (`Bend`).
 # Members: `base`, `lid`, `lip` (base's, lid's), `wall`.
 def flex_box(length=120 mm, width=80 mm, height=50 mm, radius=20 mm, thickness=3 mm, clearance=0.3 mm,
              outside=true, cx=0 mm, cy=0 mm) -> assembly {
@@ -409,7 +410,7 @@ def flex_box(length=120 mm, width=80 mm, height=50 mm, radius=20 mm, thickness=3
     gap = 5 mm
     lo = length if outside else length + 2 * t
     wo = width if outside else width + 2 * t
-    ho = height if outside else height + 2 * t
+    ho = height if outside else height + 4 * t  # inside: between the two lips
     ro = radius if outside else radius + t
     assert clearance >= 0 mm and clearance < thickness, "the clearance is between 0 and the thickness"
     assert ro >= 2 * t + c, "the radius must be at least twice the thickness"

@@ -72,7 +72,7 @@ def test_lid_box_sizes_outside_and_inside(tmp_path, outside, kerf):
     r = compile_src(tmp_path, program(LID.format(L=L, W=W, H=H, o=outside), kerf=kerf))
     parts = cut_dxf(r)
     assert set(parts) == {"body.bottom", "body.front", "body.back", "body.left", "body.right", "lid", "lip"}
-    lo, wo, ho = (L, W, H) if outside == "true" else (L + 2 * T, W + 2 * T, H + 2 * T)
+    lo, wo, ho = (L, W, H) if outside == "true" else (L + 2 * T, W + 2 * T, H + 3 * T)
     k = kerf
     assert size(parts["body.bottom"]) == pytest.approx((lo + k, wo + k), abs=1e-9)
     assert size(parts["lid"]) == pytest.approx((lo + k, wo + k), abs=1e-9)
@@ -81,7 +81,8 @@ def test_lid_box_sizes_outside_and_inside(tmp_path, outside, kerf):
     bl, bw = size(parts["body.bottom"])
     assert (bl - 2 * T, bw - 2 * T) == pytest.approx((lo - 2 * T + k, wo - 2 * T + k), abs=1e-9)
     if outside == "false":
-        assert (bl - 2 * T - k, bw - 2 * T - k, size(parts["body.front"])[1] - 2 * T + T - k) == \
+        # (the height: the floor to the lip under the lid, the space a user fills)
+        assert (bl - 2 * T - k, bw - 2 * T - k, size(parts["body.front"])[1] - 2 * T - k) == \
             pytest.approx((L, W, H), abs=1e-9)
     # the lip: the inside less the clearance all round
     assert size(parts["lip"]) == pytest.approx((lo - 2 * T - 2 * C + k, wo - 2 * T - 2 * C + k), abs=1e-9)

@@ -245,7 +245,7 @@ def test_flex_box_wall_is_as_long_as_the_base_perimeter(tmp_path, outside, dims)
     radii = arcs(base)
     assert len(radii) == 4 and max(radii) - min(radii) < 1e-9
     ro = radii[0]
-    lo, wo, ho, r_out = (L, W, H, R) if outside == "true" else (L + 2 * T, W + 2 * T, H + 2 * T, R + T)
+    lo, wo, ho, r_out = (L, W, H, R) if outside == "true" else (L + 2 * T, W + 2 * T, H + 4 * T, R + T)
     assert (bl, bw, ro) == pytest.approx((lo, wo, r_out), abs=1e-9)
     assert size(polys["lid"]) == pytest.approx((lo, wo), abs=1e-9)
     # the wall: as long as the base's perimeter at the wall's middle line (the straight sides

@@ -1073,3 +1073,18 @@ def test_a_range_that_reads_a_param_already_wrong_is_quiet_not_a_traceback(compi
     errors = [d for d in c.sink.items if d.severity == "error"]
     assert [d.code for d in errors] == ["E0124"] and "`flat`" in errors[0].message, \
         [(d.code, d.message) for d in c.sink.items]
+
+
+def test_hole_in_a_drawing_and_a_layout_of_no_part_W0526_E0502(tmp_path, capsys):
+    """Issue 95: a hole in a drawing that covers none of its lines hides nothing ("W0526",
+    at its shape); `--layout sheet` of drawings alone is "E0502" at the first structure."""
+    f = tmp_path / "d.aidl"
+    f.write_text("drawing back {\n    p = Polygon(points=[(0, 0), (20, 5), (30, 30)])\n"
+                 "    hole front { q = Circle(center=(60, 0), radius=5) }\n}\n")
+    rc, doc = _cli_json(capsys, "check", str(f), "--json")
+    assert rc == 0 and [(d["code"], d["span"]["line"]) for d in doc["diagnostics"]] == \
+        [("W0526", 3)]
+    rc, doc = _cli_json(capsys, "render", str(f), "--json", "--layout", "sheet",
+                        "-o", str(tmp_path / "d.svg"))
+    assert rc == 1 and [(d["code"], d["span"]["line"]) for d in doc["diagnostics"]] == \
+        [("W0526", 3), ("E0502", 1)]

@@ -625,10 +625,26 @@ def test_a_design_with_no_solid_part_lays_out_nothing_and_says_so(tmp_path, caps
     out.write_text("<svg>kept</svg>")
     assert main(["render", str(prog), "--layout", "sheet", "-o", str(out)]) == 1
     err = capsys.readouterr().err
-    assert "nothing to lay out" in err and "no solid part" in err and "5 engraving" in err
+    assert "nothing to lay out" in err and "no solid part" in err and "5 engraved lines" in err
+    # located at the design, named as written (issue 95: it said "`model`", unlocated)
+    assert "sign.aidl:2:16: error[E0502]" in err and "drawing `sign` has no solid part" in err
+    assert "`model`" not in err
     assert out.read_text() == "<svg>kept</svg>"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["sign.aidl", "x.svg"]
     from aidl_lang.studio.compiler import download
     got = download(str(tmp_path), prog.read_text(), {}, "svg", {"layout": True})
     assert isinstance(got, dict) and "nothing to lay out" in got["error"], got
     assert "--" not in got["error"]                  # written for the page: no flag
+
+
+def test_a_layout_of_loose_drawings_names_this_design_at_its_first_structure(tmp_path, capsys):
+    """Two top-level drawings (the implicit root `model`): the error is at the first drawing's
+    line, and says "this design", not the name no one wrote."""
+    prog = tmp_path / "marks.aidl"
+    prog.write_text('units mm\ndrawing a { t = Text("HI", position=(0, 0), size=5) }\n'
+                    "drawing b { c = Circle(center=(20, 0), radius=4) }\n")
+    assert main(["render", str(prog), "--layout", "sheet", "-o", str(tmp_path / "x.svg")]) == 1
+    err = capsys.readouterr().err
+    assert "marks.aidl:2:1: error[E0502]: nothing to lay out on a sheet: this design has no " \
+        "solid part to cut, only 5 engraved lines" in err
+    assert "`model`" not in err and "hint: render it without `--layout`" in err

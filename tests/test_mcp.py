@@ -248,6 +248,11 @@ async def test_tool_schemas_describe_every_argument_with_its_values_and_ranges(t
                         said = first[name]["description"]
                         assert {k: v for k, v in first[name].items() if k != "description"} \
                             == {k: v for k, v in prop.items() if k != "description"}
+                    elif said.startswith("as `"):     # as an earlier argument of the tool
+                        like = props[said[len("as `"):-1]]
+                        said = like["description"]
+                        assert {k: v for k, v in like.items() if k != "description"} \
+                            == {k: v for k, v in prop.items() if k != "description"}
                     assert len(said) > 20, (t.name, name)
             render = tools["render"].input_schema["properties"]
             assert render["style"]["enum"] == ["preview", "laser"]

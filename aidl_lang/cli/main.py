@@ -486,6 +486,10 @@ def cmd_render(args) -> int:
         elif isinstance(e, StackedParts):        # located at the first of the two parts
             report_stacked(res.sink, res.drawing, e)
             _emit(res.sink, args.json, False)
+        elif hasattr(e, "holds"):                # a layout with no solid part: at the design
+            from ..pipeline import report_nothing
+            report_nothing(res.sink, res.model, e)
+            _emit(res.sink, args.json, False)
         else:
             print(f"aidl: error: {e}", file=sys.stderr)
         return 1

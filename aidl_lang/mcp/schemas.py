@@ -187,9 +187,7 @@ class ValuesResult(_Compiled):
 class DescribeResult(_Compiled):
     text: NotRequired[Annotated[str, Field(description="one line per feature")]]
     describe: NotRequired[Annotated[dict[str, Any], Field(
-        description="each part's outline, openings, engravings, copies (parts of the same "
-                    "shape listed once under the first, each with its box) and symmetries (mm; "
-                    "docs/outputs.md, Describing the part)")]]
+        description="per part: outline, openings, engravings, copies, symmetries (mm)")]]
 
 
 class ImageInfo(TypedDict):
@@ -230,8 +228,7 @@ class RenderResult(_Compiled):
     parts: NotRequired[list[Part]]
     image: NotRequired[Annotated[ImageInfo, Field(description="with `picture`")]]
     written: NotRequired[Annotated[str, Field(
-        description="the file written (the first sheet's with a layout), relative to the "
-                    "allowed folder")]]
+        description="the file (a layout's first sheet), relative to the root")]]
     superseded: NotRequired[str]
     layout: NotRequired[LayoutInfo]
     job: NotRequired[Job]

@@ -57,13 +57,12 @@ OUTPUT_FORMATS = (".svg", ".dxf", ".pdf", ".png", ".stl", ".3mf", ".step", ".glb
 
 # what one program may build (aidl_lang/limits.py, the parser's and the importer's limits),
 # said once, in `check`'s description (the first tool: an agent reads it first)
-LIMITS = (f"Limits: a program of at most {T.MAX_SOURCE:,} characters, brackets nested at "
-          f"most {MAX_NESTING} deep, at most {MAX_ITER:,} items in one loop, templates "
-          f"nested {MAX_TEMPLATE_DEPTH} deep, {DEFAULT_BUDGET.steps:,} loop steps and "
-          f"{DEFAULT_BUDGET.objects:,} objects per compile, {DEFAULT_BUDGET.seconds:g} s "
-          f"(x `budget`); a DXF or SVG drawing of at most "
-          f"{MAX_DRAWING_BYTES // 1_000_000} MB. Past one: a located E0304 (or E0003, "
-          f"E0301), not a hang.")
+LIMITS = (f"Limits: {T.MAX_SOURCE:,} characters, brackets {MAX_NESTING} deep, "
+          f"{MAX_ITER:,} items in one loop, templates {MAX_TEMPLATE_DEPTH} deep, "
+          f"{DEFAULT_BUDGET.steps:,} loop steps, {DEFAULT_BUDGET.objects:,} objects, "
+          f"{DEFAULT_BUDGET.seconds:g} s (x `budget`); drawings "
+          f"{MAX_DRAWING_BYTES // 1_000_000} MB. Past one: a located E0304 (E0003, E0301), "
+          f"not a hang.")
 
 # The tools' arguments: the SDK turns each description, allowed value and range into the
 # JSON Schema of `tools/list`, and checks calls against it before a tool runs.  An argument
@@ -76,15 +75,15 @@ Overrides = Annotated[dict[str, str | int | float | bool] | None, Field(
     description="Param values: {\"width\": \"40 mm\"}, {\"width\": 40} (the file's units), "
                 "{\"holes\": true}.")]
 Budget = Annotated[float | None, Field(
-    description="Factor of the evaluation budget (15 s of CPU time, steps, objects); "
+    description="Times the budget (15 s CPU, steps, objects); "
                 "default 1.", gt=0, le=T.MAX_BUDGET)]
 Dof = Annotated[bool, Field(
-    description="Count the degrees of freedom left per structure and what still moves.")]
+    description="Count the degrees of freedom per structure, and what still moves.")]
 Sweep = Annotated[bool, Field(
     description="Also check the design across its params' min..max ranges (W0110).")]
 Output = Annotated[str | None, Field(
-    description="Also write the drawing to this file in the allowed folder; format by "
-                "extension: " + ", ".join(OUTPUT_FORMATS) + ".")]
+    description="Also write this file (in the allowed folder), by its extension: "
+                + ", ".join(OUTPUT_FORMATS) + ".")]
 Picture = Annotated[bool, Field(
     description="Also return a PNG picture, `width` pixels wide (default: none).")]
 Width = Annotated[int, Field(
@@ -93,8 +92,8 @@ Width = Annotated[int, Field(
 Style = Annotated[Literal["preview", "laser"], Field(
     description="preview: filled parts; laser: hairline cut paths.")]
 Assembled = Annotated[bool, Field(
-    description="The assembled product in 3D (parts placed by `Place`, collisions in red) "
-                "instead of the flat parts; for a picture, .png, .stl, .3mf, .step, .glb.")]
+    description="The product in 3D (parts placed by `Place`, collisions red), not the flat "
+                "parts: a picture, .png, .stl, .3mf, .step, .glb.")]
 LayoutKind = Annotated[Literal["sheet"] | None, Field(
     description="\"sheet\": nest the solid parts on cutting sheets, one file (cut-1.dxf, "
                 "...) and picture per sheet.")]
@@ -144,10 +143,10 @@ New = Annotated[str | None, Field(
     description="Patch: the replacement of `old`, or of characters `start`..`end`.",
     max_length=T.MAX_SOURCE)]
 Start = Annotated[int | None, Field(
-    description="Patch: 0-based offset of the first character replaced (a span's start).",
+    description="Patch: 0-based offset of the first character replaced.",
     ge=0)]
 End = Annotated[int | None, Field(
-    description="Patch: offset after the last character replaced (a span's end).", ge=0)]
+    description="Patch: offset after the last character replaced.", ge=0)]
 ParamValues = Annotated[dict[str, str | int | float | bool], Field(
     description="Param name -> new value: \"50 mm\", 50 (file units), true.",
     min_length=1, max_length=200)]
@@ -412,6 +411,7 @@ def _tool(fn: Callable, annotations: ToolAnnotations, structured: bool) -> Tool:
     is the resource ``aidl://schemas/NAME.json``, and each result is still checked against
     it before it is sent)."""
     tool = Tool.from_function(fn, annotations=annotations, structured_output=structured)
+    tool.description = " ".join((tool.description or "").split())     # (no docstring indent)
     tool.parameters = slim(tool.parameters)
     tool.parameters["additionalProperties"] = False
     if "source" in tool.parameters["properties"]:
@@ -441,12 +441,19 @@ def _share(tools: list[Tool]) -> None:
     description (``as `check`: ok, error, ...``; a schema without it still accepts it)."""
     first: dict[str, str] = {}
     for t in tools:
+        own: dict[str, str] = {}            # an argument as an earlier one of the same tool
         for name, prop in t.parameters.get("properties", {}).items():
             key = json.dumps(["in", name, prop], sort_keys=True)
+            alike = json.dumps(prop, sort_keys=True)
             if key in first:
                 prop["description"] = f"as in `{first[key]}`"
+            elif alike in own and "description" in prop:
+                prop["description"] = f"as `{own[alike]}`"
             else:
                 first.setdefault(key, t.name)
+                own.setdefault(alike, name)
+    fields = {t.name: list((t.fn_metadata.output_schema or {}).get("properties", {}))
+              for t in tools}
     for t in tools:
         out = t.fn_metadata.output_schema
         if not out:
@@ -457,7 +464,8 @@ def _share(tools: list[Tool]) -> None:
             if first.setdefault(key, t.name) != t.name:
                 shared.setdefault(first[key], []).append(name)
                 del out["properties"][name]
-        said = [f"as `{k}`: {', '.join(v)}" for k, v in shared.items()]
+        said = [f"as `{k}`: " + ("all its fields" if v == fields[k] else ", ".join(v))
+                for k, v in shared.items()]
         out["description"] = "; ".join(said + [out.get("description", "")]).strip("; ")
 
 
@@ -596,8 +604,8 @@ def build_server(root: str, budget: float = 1.0,
               detail: Detail = False) -> Annotated[CallToolResult, CheckResult]:
         """Parse, check and solve an AIDL program; write nothing. Returns ok, located
         diagnostics (code, span, hint, fix), parts (bbox mm), freedom and the assembled fit.
-        Every result: structured content and one line of text; a refused call: isError with
-        error {code, message, argument}."""
+        Every result: whole in text and in structured content; refused: isError, error
+        {code, message, argument}."""
         return answer("check", await run("check", source, path, overrides, dof, budget,
                                          sweep, budget=budget), detail=detail)
 
@@ -634,9 +642,9 @@ def build_server(root: str, budget: float = 1.0,
     async def values(source: Source = None, path: ProgramPath = None, names: Names = None,
                overrides: Overrides = None, budget: Budget = None,
                detail: Detail = False) -> Annotated[CallToolResult, ValuesResult]:
-        """Solved values of named entities in the file's units: points (center, start, end,
-        corners), sizes (radius, diameter, width, height), frame origins and boxes, every
-        copy of a pattern (corners[0] is the original)."""
+        """Solved values of named entities, in the file's units: points, sizes (radius,
+        width, ...), frame origins, boxes, every copy of a pattern (corners[0]: the
+        original)."""
         return answer("values", await run("values", source, path, names, overrides, budget,
                                           budget=budget), detail=detail)
 
@@ -653,9 +661,9 @@ def build_server(root: str, budget: float = 1.0,
     async def import_drawing(path: DrawingPath, infer: Infer = True, parts: Parts = False,
                        units: Units = None, output: ProgramOutput = None,
                        budget: Budget = None) -> Annotated[CallToolResult, ImportResult]:
-        """Turn a DXF or SVG drawing into an AIDL program to edit: with `infer`, the design
-        (RoundedRectangle, Slot, ...; hole patterns as loops; one param per repeated size,
-        pitch and count), exact to 1e-6 mm."""
+        """A DXF or SVG drawing as an AIDL program to edit; with `infer`, the design
+        (RoundedRectangle, Slot, ..., hole patterns as loops, a param per repeated size,
+        pitch, count), exact to 1e-6 mm."""
         doc, files = await run("import_drawing", path, infer, parts, units, output, budget,
                                budget=budget)
         _commit(calls, doc, files, "output")
@@ -668,9 +676,9 @@ def build_server(root: str, budget: float = 1.0,
     async def set_params(path: WritePath, values: ParamValues, dof: Dof = False,
                    budget: Budget = None, detail: Detail = False
                    ) -> Annotated[CallToolResult, SetParamsResult]:
-        """Change `param` values in a .aidl file: only each value's text is rewritten
-        (comments, formatting kept), checked against the param's kind and min/max first
-        (refused: file untouched), then checked as `check`. Unknown name: no_match."""
+        """Change `param` values in a .aidl file, rewriting only each value's text; each is
+        checked against its kind and min/max first (refused: file untouched), then the
+        file as `check`. Unknown name: no_match."""
         async with calls.program(path):
             doc, files = await run("set_params", path, values, dof, budget, budget=budget)
             _commit(calls, doc, files, "written", "path")
@@ -680,9 +688,9 @@ def build_server(root: str, budget: float = 1.0,
     async def measure(a: EntityName, b: EntityName, source: Source = None,
                 path: ProgramPath = None, overrides: Overrides = None,
                 budget: Budget = None) -> Annotated[CallToolResult, MeasureResult]:
-        """Between two named entities of the solved program, mm, exact: distance and
-        points, center_distance, angle (two lines), clearance and contact (two shapes or
-        parts: apart, touching, overlapping as negative)."""
+        """Two named entities of the solved program, exact, mm: distance and points,
+        center_distance, angle (two lines), clearance and contact (shapes or parts: apart,
+        touching, overlapping negative)."""
         return answer("measure", await run("measure", a, b, source, path, overrides, budget,
                                            budget=budget))
 

@@ -525,8 +525,9 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
                     cut = for_cutting(r.output, kerf_mm)
                     doc["job"] = _job([cut], prof, thick_mm)
                     _machine_warnings(r, cut, out.suffix.lower(), prof, kerf_mm, doc)
-    except LayoutError as e:                # a part larger than the sheet
-        raise Refused(str(e), "bad_argument", "sheet") from None
+    except LayoutError as e:                # a part larger than the sheet, or no part at all
+        raise Refused(str(e), "bad_argument", "sheet" if not hasattr(e, "holds") else
+                      "source" if source is not None else "path") from None
     except (MissingDependency, OutputError, WriteError, NotCompiled, OSError) as e:
         raise Refused(str(e), "output_failed", "output" if target is not None else
                       "layout" if layout else "source" if source is not None else "path") \

@@ -445,7 +445,7 @@ def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90
     Wu, Hu = W - 2 * inset, H - 2 * inset
     solids = [p for p in output.parts if p.kind == "solid"]
     if not solids:
-        raise LayoutError(_nothing_to_lay_out(output))
+        raise NothingToLayOut(_nothing_to_lay_out(output), _holds(output))
     # copies (one outer outline moved) are one shape for the packer, with their number
     shapes, about, members, first_of = {}, {}, {}, {}
     for i, p in enumerate(solids):
@@ -494,15 +494,28 @@ def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90
     return [{solids[i].name: m for i, m in placed} for placed in sheets]
 
 
+class NothingToLayOut(LayoutError):
+    """A layout of a design with no solid part; ``holds`` says what it has instead (the
+    command line says it at the design: :func:`~aidl_lang.pipeline.report_nothing`)."""
+
+    def __init__(self, message: str, holds: str):
+        super().__init__(message)
+        self.holds = holds
+
+
+def _holds(output: Output) -> str:
+    n = len(output.engrave)
+    return f"only {n} engraved line{'s' if n != 1 else ''}" if n else "nothing to cut"
+
+
 def _nothing_to_lay_out(output: Output) -> str:
     """The message for a layout of a design with no solid part (only engraving, or only
     drawings): a layout nests solid parts, so there is nothing to place and no sheet to write
     (issue 94: it wrote nothing and said "wrote ...")."""
-    what = f"{len(output.engrave)} engraving stroke{'s' if len(output.engrave) != 1 else ''}" \
-        if output.engrave else "nothing to cut"
-    return (f"nothing to lay out: `{output.title}` has no solid part (it holds {what}); a "
+    name = "this design" if output.title == "model" else f"`{output.title}`"
+    return (f"nothing to lay out: {name} has no solid part to cut, {_holds(output)}; a "
             "cutting layout nests solid parts on sheets. Draw the design as it is (no sheet "
-            "layout), or make the engraving part of a `solid` plate")
+            "layout), or put the engraving on a `solid` plate")
 
 
 def _sheets(shapes: dict, members: dict, about: dict, Hu: float, Wu: float, inset: float,

@@ -820,6 +820,8 @@ class Renderer:
                 self.assembly(c, out)
             elif c.kind == "cut":           # a sheet-level cut
                 self.sheet_cut(c, out)
+            elif c.kind == "hole" and s.kind == "drawing":
+                continue                    # hides the drawing's lines (:mod:`.masks`)
             else:
                 self.part(c, out)
 
@@ -842,12 +844,17 @@ class Renderer:
             self.sheet_cut(k, out)
 
     def drawing(self, s: Structure, out: Drawing) -> None:
+        mark = len(out.strokes), len(out.lines)
         for g in s.geometry:
             if g.construction:
                 self.construct(g, out)
             else:
                 self.draw_lines(g, out)
         self.children(s, out)
+        masks = [c for c in s.children.values() if c.kind == "hole" and c.cuts_into is None]
+        if masks:                       # engraving minus engraving (issue 95)
+            from .masks import masked
+            masked(self, s, masks, out, mark)
 
     def assembly(self, s: Structure, out: Drawing) -> None:
         faces = self.own_faces(s, out)
