@@ -292,3 +292,45 @@ def test_a_long_drag_stays_under_the_rate_limit(server, chromium, tmp_path):
         assert page.inner_text("#download-status") == ""    # not the tray's file any more
     finally:
         page.context.close()
+
+
+@pytest.mark.parametrize("how", [DESKTOP, PHONE], ids=["desktop", "phone"])
+def test_an_imported_bolt_circle_follows_its_diameter(server, chromium, how, tmp_path):
+    """A flange opened as an editable design: at 70 mm its 75 mm bolt circle moves to 60 mm
+    (its range follows the diameter: 1 mm of material to the edge), said under its field; the
+    DXF downloaded, re-read by ezdxf, has the 8 holes inside the 35 mm outline."""
+    import math
+
+    import ezdxf
+
+    from maker_drawings import flange
+    dxf = tmp_path / "flange.dxf"
+    dxf.write_bytes(flange())
+    page = opened(chromium, server, how, "generator/spur_gear")
+    try:
+        n = views(page)
+        page.click("#open-drawing")
+        page.check('input[name="open-as"][value="infer"]')
+        page.set_input_files("#drawing-file", str(dxf))
+        settled(page, n)
+        assert "bolt circle follows" in page.text_content("#upload-status")
+        type_value(page, "diameter", "70")
+        assert drawn(page, "diameter") == 70 and drawn(page, "bolt_circle_pcd") == 60
+        assert page.input_value('#params input[name="bolt_circle_pcd-value"]') == "60"
+        assert "moved to 60 mm" in note(page, "bolt_circle_pcd")
+        assert not [d for d in page.evaluate("window.studio.view.diagnostics")
+                    if d["severity"] == "warning"]
+        page.locator('#params .param[data-name="bolt_circle_pcd"]').scroll_into_view_if_needed()
+        shot(page, f"flange-{'phone' if how is PHONE else 'desktop'}")
+        if how is PHONE:
+            return
+        with page.expect_download() as got:
+            page.click('#downloads button[data-ext="dxf"]')
+        doc = ezdxf.read(io.StringIO(Path(got.value.path()).read_text()))
+        found = sorted(((c.dxf.center.x, c.dxf.center.y, c.dxf.radius)
+                        for c in doc.modelspace().query("CIRCLE")), key=lambda c: -c[2])
+        (cx, cy, r), holes = found[0], [c for c in found if c[2] == pytest.approx(4)]
+        assert r == pytest.approx(35) and len(holes) == 8
+        assert all(math.hypot(x - cx, y - cy) + 4 == pytest.approx(34) for x, y, _ in holes)
+    finally:
+        page.context.close()
