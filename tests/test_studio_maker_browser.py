@@ -334,3 +334,42 @@ def test_an_imported_bolt_circle_follows_its_diameter(server, chromium, how, tmp
         assert all(math.hypot(x - cx, y - cy) + 4 == pytest.approx(34) for x, y, _ in holes)
     finally:
         page.context.close()
+
+
+SIZES = {   # every generator's sizes as sliders (issue 94: these five had none but the text)
+    "generator/cross_halving": ("height", {"thickness", "height", "length_a", "length_b"}),
+    "generator/dovetail": ("tails", {"length", "tails", "depth", "angle", "clearance"}),
+    "generator/finger_edge": ("finger", {"thickness", "length", "finger", "depth", "height"}),
+    "generator/tab_and_slot": ("tabs", {"screw", "thickness", "tabs", "length", "tab", "height"}),
+    "example/logo_plate": ("text_size", {"width", "height", "corner_radius", "screw_d", "text_size"}),
+}
+
+
+@pytest.mark.parametrize("how", [DESKTOP, PHONE], ids=["desktop", "phone"])
+def test_every_generator_s_sizes_are_sliders(server, chromium, how):
+    """The joint demonstrations and the logo plate open with a slider for each size; the
+    slider named first in SIZES at its top end draws with no warning (a count's new holes are
+    no "change": the tab and slot's 4 tabs cut 7 openings where 2 cut 3)."""
+    page = opened(chromium, server, how, "generator/cross_halving")
+    try:
+        for i, (eid, (moved, sizes)) in enumerate(SIZES.items()):
+            if i:
+                n = views(page)
+                page.click("#open-gallery")
+                page.click(f'#cards .card[data-id="{eid}"]')
+                settled(page, n)
+            names = set(page.eval_on_selector_all("#params input[type=range]",
+                                                  "els => els.map(e => e.name)"))
+            assert sizes <= names, (eid, names)
+            slider = page.locator(f'input[type=range][name="{moved}"]')
+            top = slider.get_attribute("max")
+            n = views(page)
+            slider.fill(top)                                    # the slider at its end
+            settled(page, n)
+            assert drawn(page, moved) == pytest.approx(float(top)), eid
+            assert note(page, moved) == "", eid          # its own end: nothing moved
+            said = [d["message"] for d in page.evaluate("window.studio.view.diagnostics")]
+            assert said == [], (eid, said)
+        shot(page, f"sizes-{'phone' if how is PHONE else 'desktop'}")
+    finally:
+        page.context.close()

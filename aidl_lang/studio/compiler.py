@@ -488,7 +488,10 @@ def into_range(params: list[dict], grid: bool = False) -> dict[str, tuple[str, f
         if not grid and lo - 1e-9 <= v <= hi + 1e-9:
             continue
         w = min(max(v, lo), hi)
-        if step and step > 0:           # onto the slider's grid, inside the range
+        near = 1e-6 * max(1.0, abs(w))  # the page sends values rounded to 1e-6
+        if abs(v - hi) <= near or abs(v - lo) <= near:
+            w = hi if abs(v - hi) <= near else lo   # a slider's end: that end, not a step
+        elif step and step > 0:         # onto the slider's grid, inside the range
             w = lo + round((w - lo) / step) * step
             if w > hi + 1e-9:
                 w -= step

@@ -195,7 +195,9 @@ function answered(view, raw) {
     if (same(state.values[name], raw[name])) {
       state.values[name] = v;
       const p = (view.params || state.params).find((q) => q.name === name);
-      typedNote(name, `${name} moved to ${fmt(v)}${p && p.unit ? " " + p.unit : ""}: its range follows the other values`);
+      // a slider's end sent rounded (to 1e-6) and put back on it: no move to speak of
+      const moved = !(typeof raw[name] === "number" && Math.abs(v - raw[name]) <= 1e-6 * Math.max(1, Math.abs(v)));
+      if (moved) typedNote(name, `${name} moved to ${fmt(v)}${p && p.unit ? " " + p.unit : ""}: its range follows the other values`);
     }
   }
   if (view.params) state.params = view.params;
