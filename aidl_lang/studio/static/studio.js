@@ -605,6 +605,9 @@ function sweepChanged(fresh) {
   markRanges();
 }
 async function runSweep() {
+  // paced with the previews and 3D models: a minute of dragging sent a sweep at each pause,
+  // unpaced, and 31 requests fell in one 5 s window of a limit of 30
+  try { await pace(); } catch (_) { /* never */ }
   const sw = state.sweep, source = state.source, key = sweepKey(), values = { ...state.values };
   if (sw.ctrl) sw.ctrl.abort();
   const ctrl = sw.ctrl = new AbortController();
