@@ -107,3 +107,12 @@ def test_a_download_of_nothing_is_an_error_not_an_empty_file(imported):
         assert isinstance(got, dict) and got["error"].startswith("nothing to make"), got
         assert "removes all of" in got["error"]
         assert got["diagnostics"][0]["code"] == "W0503"
+
+
+def test_a_bolt_circle_off_the_body_s_centre_is_not_related():
+    """The ranges hold only for a bolt circle about the outline's centre."""
+    from aidl_lang.drawing.infer import import_drawing
+    text, _ = import_drawing(flange(), "flange.dxf", infer=True)
+    moved = text.replace("bore_c = (50, 50)", "bore_c = (60, 50)")
+    assert moved != text and with_relations(moved) == (moved, [])
+    assert with_relations(text)[1]

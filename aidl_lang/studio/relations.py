@@ -9,8 +9,8 @@ declared above it, and the compile worker moves a value that leaves its range ba
 
 What is related (found in the program's syntax, never in its param names):
 
-* a round body ``Circle(..., diameter=D)`` with a bolt circle, a ``for i in range(N)`` of
-  holes ``Circle(center=polar(C, P / 2, ...), diameter=d)``, and a bore
+* a round body ``Circle(center=C, diameter=D)`` with a bolt circle about its centre, a
+  ``for i in range(N)`` of holes ``Circle(center=polar(C, P / 2, ...), diameter=d)``, and a bore
   ``Circle(center=C, diameter=B)`` on the bolt circle's centre (optional): the holes stay
   :data:`WALL` inside the edge and clear of the bore, the bore inside the holes, and ``N``
   holes fit round the circle without touching.
@@ -68,14 +68,18 @@ def _bolt_circle(source, prog, params):
     return None
 
 
-def _round_body(prog, params, skip: set) -> str | None:
-    """The diameter param of the program's round outline: a ``Circle`` assigned to a name
-    outside every ``hole`` (the body)."""
+def _round_body(source, prog, params, skip: set, centre: str) -> str | None:
+    """The diameter param of the program's round outline: a ``Circle`` outside every
+    ``hole`` (the body) centred where the bolt circle is (``centre``, or a name assigned
+    that point as written)."""
     holes = {id(n) for s in A.walk(prog) if isinstance(s, A.StructDecl) and s.kind == "hole"
              for n in A.walk(s)}
+    same = {centre} | {_text(source, a.value) for a in A.walk(prog)
+                       if isinstance(a, A.Assign) and a.name == centre}
     for c in _circles(prog):
-        d = _name(_kw(c, "diameter"), params)
-        if id(c) not in holes and d and d not in skip:
+        d, at = _name(_kw(c, "diameter"), params), _kw(c, "center")
+        if id(c) not in holes and d and d not in skip and at is not None \
+                and _text(source, at) in same:
             return d
     return None
 
@@ -99,7 +103,7 @@ def flange_ranges(source: str, prog, params) -> dict[str, str]:
     if found is None:
         return {}
     n, pcd, d, centre = found
-    body = _round_body(prog, params, {n, pcd, d})
+    body = _round_body(source, prog, params, {n, pcd, d}, centre)
     if body is None:
         return {}
     bore = _bore(source, prog, params, centre, {n, pcd, d, body})
