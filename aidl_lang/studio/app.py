@@ -394,7 +394,7 @@ class Studio:
             self.affinity[sid] = w
         if isinstance(answer, dict) and answer.pop("retire", False):
             w.retiring = True           # its memory grew: a fresh process for its next request
-        if w.retiring and hasattr(w, "renew"):     # (answered: replaced now, in the background)
+        if getattr(w, "retiring", False) and hasattr(w, "renew"):   # replaced now, in the background
             import asyncio
             asyncio.get_running_loop().run_in_executor(None, w.renew)
         return answer
