@@ -91,8 +91,11 @@ class Worker:
     """One warm process answering requests with ``target(*args)``'s handler, one at a time
     (:meth:`request`); ``memory``: its address-space cap in bytes (None: none)."""
 
-    def __init__(self, target, args: tuple = (), memory: int | None = None) -> None:
+    def __init__(self, target, args: tuple = (), memory: int | None = None,
+                 recycle: int = 0) -> None:
         self.target, self.args, self.memory = target, tuple(args), memory
+        self.recycle = recycle      # > 0: a process retires after answering this many requests
+        self.answered = 0           # requests the current process answered
         self.proc = None
         self.conn = None
         self.lock = threading.Lock()
@@ -117,6 +120,7 @@ class Worker:
             proc.join()
             raise NotReady("the compiler's worker process did not start")
         self.proc, self.conn = proc, parent
+        self.answered = 0
 
     def stop(self) -> None:
         """End the worker process (the next request starts another)."""
@@ -161,7 +165,11 @@ class Worker:
                 self.stop()
                 raise TimedOut(seconds)
             try:
-                return self.conn.recv()
+                answer = self.conn.recv()
+                self.answered += 1
+                if self.recycle > 0 and self.answered >= self.recycle:
+                    self.retiring = True    # its memory back: a fresh process takes over
+                return answer
             except (OSError, EOFError):
                 self.restarts += 1
                 self.stop()
@@ -169,6 +177,21 @@ class Worker:
                     self.cancelled = False
                     raise Died("the request was cancelled") from None
                 raise Died("the worker process ended while compiling (out of memory?)") from None
+
+    def renew(self) -> bool:
+        """Replace a retiring worker's process now (the answer that retired it is already
+        given), so that its next request does not wait for a new process to start; True when
+        a new process runs.  A request that comes meanwhile waits for it (nothing is lost)."""
+        with self.lock:
+            if not self.retiring:
+                return False
+            self.retiring = False
+            self.stop()
+            try:
+                self._start()
+            except NotReady:
+                return False
+            return True
 
     def rss(self) -> int:
         """The process's resident memory in bytes (0 when it is not running)."""

@@ -246,12 +246,14 @@ def test_a_lifted_example_draws_what_its_file_draws(e):
     assert mine.to_svg() == file.to_svg()
 
 
-def test_the_joint_demonstrations_are_kept_as_written():
-    """Files that call a generator twice keep their literal arguments (no params)."""
-    for name in ("cross_halving", "dovetail", "finger_edge", "tab_and_slot"):
+def test_the_joint_demonstrations_have_their_sizes_as_sliders():
+    """Files that call a generator twice are shown as their forms (studio/forms/, issue 94:
+    they had no slider): every size a param with a declared range."""
+    for name, n in (("cross_halving", 4), ("dovetail", 5), ("finger_edge", 5),
+                    ("tab_and_slot", 6)):
         e = g.entry(f"generator/{name}")
-        # (but for their command-line comments: the studio's visitor has sliders)
-        assert e.source == page_program((ROOT / e.origin).read_text()) and e.params == []
+        assert e.source == page_program((g.FORMS / f"{name}.aidl").read_text())
+        assert len(e.params) == n and all(p["declared"] for p in e.params), name
 
 
 @pytest.mark.parametrize("id", ["generator/divider_tray", "generator/text_on_arc",

@@ -103,6 +103,7 @@ class Settings:
     rate: str = "300/minute"        # per client (``limits`` notation)
     describes: int = 2              # model loops that may run at once
     sweepers: int = 1               # sweep worker processes per server process; 0: no sweeps
+    recycle: int = 200              # a worker's process is replaced after this many answers
     store: str = ""                 # redis://HOST:PORT/DB: uploads and rate counters there
     scheduler: str = ""             # tcp://HOST:PORT: compiles on this Dask cluster
     model: dict | None = field(default=None, repr=False)   # describe.model_config()
@@ -111,7 +112,7 @@ class Settings:
            "memory_mb": "AIDL_STUDIO_MEMORY_MB", "budget": "AIDL_STUDIO_BUDGET",
            "wait": "AIDL_STUDIO_WAIT", "queue": "AIDL_STUDIO_QUEUE",
            "rate": "AIDL_STUDIO_RATE", "describes": "AIDL_STUDIO_DESCRIBES",
-           "sweepers": "AIDL_STUDIO_SWEEPERS",
+           "sweepers": "AIDL_STUDIO_SWEEPERS", "recycle": "AIDL_STUDIO_RECYCLE",
            "store": "AIDL_STUDIO_STORE", "scheduler": "AIDL_STUDIO_SCHEDULER"}
 
     @classmethod
@@ -328,12 +329,13 @@ class Studio:
             from .remote import Remote
             self.pool = Remote(settings.scheduler, settings.budget, memory, settings.queue)
         else:
-            self.pool = W.Pool([W.Worker(compiler.handler, (settings.budget,), memory)
+            self.pool = W.Pool([W.Worker(compiler.handler, (settings.budget,), memory,
+                                         settings.recycle)
                                 for _ in range(max(1, settings.compilers))])
         self.limiter = MovingWindowRateLimiter(limiter_storage(self.folders))
         self.rate = parse(settings.rate)
         self.sweepers = None if settings.scheduler or settings.sweepers <= 0 else W.Pool(
-            [W.Worker(compiler.handler, (settings.budget,), memory)
+            [W.Worker(compiler.handler, (settings.budget,), memory, settings.recycle)
              for _ in range(settings.sweepers)])
         self.sweeps = Sweeps()
         self.affinity: dict[str, W.Worker] = {}
@@ -392,6 +394,9 @@ class Studio:
             self.affinity[sid] = w
         if isinstance(answer, dict) and answer.pop("retire", False):
             w.retiring = True           # its memory grew: a fresh process for its next request
+        if getattr(w, "retiring", False) and hasattr(w, "renew"):   # replaced now, in the background
+            import asyncio
+            asyncio.get_running_loop().run_in_executor(None, w.renew)
         return answer
 
     async def newest(self, sid: str, request_data: tuple) -> dict:

@@ -202,8 +202,12 @@ def import_upload(folder: str, name: str, infer: bool, budget=None) -> dict:
         return _unreadable(name, e)
     except DrawingError as e:
         return _refused(name, e)
+    related: list[str] = []
+    if infer is True:               # its sizes' relations as ranges that follow each other
+        from .relations import with_relations
+        text, related = with_relations(text)
     return {"program": text,
-            "notes": [f"{name}: warning[{n.code}]: {n.message}" for n in notes]}
+            "notes": [f"{name}: warning[{n.code}]: {n.message}" for n in notes] + related}
 
 
 def drawing_program(folder: str, name: str) -> dict:
@@ -484,7 +488,10 @@ def into_range(params: list[dict], grid: bool = False) -> dict[str, tuple[str, f
         if not grid and lo - 1e-9 <= v <= hi + 1e-9:
             continue
         w = min(max(v, lo), hi)
-        if step and step > 0:           # onto the slider's grid, inside the range
+        near = 1e-6 * max(1.0, abs(w))  # the page sends values rounded to 1e-6
+        if abs(v - hi) <= near or abs(v - lo) <= near:
+            w = hi if abs(v - hi) <= near else lo   # a slider's end: that end, not a step
+        elif step and step > 0:         # onto the slider's grid, inside the range
             w = lo + round((w - lo) / step) * step
             if w > hi + 1e-9:
                 w -= step
@@ -561,6 +568,8 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
     if not res.ok:
         return {"error": "the program does not compile with these values",
                 "diagnostics": _errors(res)[:8]}
+    if not res.output.parts and not res.output.engrave:
+        return nothing_to_make(res)
     name = file_base(settings.get("name")) or (
         res.compiled.model.root.name if res.compiled.model is not None else "part")
     options = {"thickness": thickness, "machine": machine, "assembled": assembled, "page": page}
@@ -587,6 +596,20 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
             report_out_of_budget(res.sink, e.budget)
             return {"error": str(e), "diagnostics": _errors(res)}
         return {"error": str(e)}
+
+
+def nothing_to_make(res) -> dict:
+    """The answer to a download whose design holds nothing with these values (a hole that
+    removes all of its solid): an error naming why, never an empty file (issue 94: a DXF of 0
+    entities, an empty ZIP, both behind HTTP 200)."""
+    from ..serve.wording import for_forms
+    for d in res.diagnostics:
+        d.reword(for_forms)
+    said = [{k: d[k] for k in ("code", "severity", "message", "rendered")}
+            for d in res.diagnostics_json() if d["severity"] in ("error", "warning")]
+    said.sort(key=lambda d: d["code"] != "W0503")      # "removes all of solid" first
+    why = f": {said[0]['message']}" if said else ""
+    return {"error": f"nothing to make with these values{why}", "diagnostics": said[:8]}
 
 
 def file_base(text) -> str:

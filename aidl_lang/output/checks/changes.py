@@ -20,10 +20,10 @@ from .openings import _analyse
 class Topology(Compared):
     """What W0510 compares of one solid part between the program's defaults and a `--set`."""
     __slots__ = ("span", "pieces", "openings", "merges", "notches", "contacts", "holes", "faces",
-                 "freed")
+                 "freed", "loops")
 
     def __init__(self, span: object, pieces: int, openings: int, merges: set, notches: set,
-                 contacts: set, holes: set, faces: set, freed: int = 0):
+                 contacts: set, holes: set, faces: set, freed: int = 0, loops: int | None = None):
         self.span = span
         self.pieces = pieces
         self.openings = openings
@@ -33,6 +33,7 @@ class Topology(Compared):
         self.holes = holes  # every hole name
         self.faces = faces  # every solid face name
         self.freed = freed  # pieces its through-cuts cut off (parts `PART.piece1`, ...)
+        self.loops = loops  # the separate areas of its holes that reach no outline
 
 
 STAGE = "the comparison with the defaults (W0510)"
@@ -92,7 +93,9 @@ def _topology(d: Drawing, deadline=None) -> dict:
         out[s.path] = Topology(s.span, pos, len(loops) - pos,
                                {frozenset((a.names[i], a.names[j])) for i, j, _, _ in a.merges},
                                {a.names[j] for j in a.notches}, contacts, set(a.names[1:]),
-                               {n for n, _, _ in faces}, freed.get(s.path, 0))
+                               {n for n, _, _ in faces}, freed.get(s.path, 0),
+                               sum(_outer_loops(c.region) for k, c in enumerate(a.cuts, 1)
+                                   if k not in a.notches))
     return out
 
 
@@ -117,10 +120,21 @@ def _family(hole: str) -> str:
     return re.sub(r"\[\d+\]", "[]", hole)
 
 
+def _outer_loops(region) -> int:
+    """How many separate areas a hole's region is (a tab-and-slot's one hole: its slots and
+    its screw holes)."""
+    return sum(_signed(np.asarray(p, dtype=float)) > 0 for p in region.to_polygons())
+
+
 def _apart(t: Topology) -> int:
-    """The openings ``t``'s holes would cut each on its own: every hole, less those that
-    reach the outline (notches) and one per pair that merges."""
-    return len(t.holes) - len(t.notches) - len(t.merges)
+    """The openings ``t``'s holes would cut each on its own: the separate areas of every
+    hole that does not reach the outline (a tab-and-slot's one hole: its slots and screw
+    holes; not the part's own inner edges, which no hole cut: a spur gear's bore slider from
+    0 made "1 opening instead of 0"), less one per pair of holes that merges."""
+    if t.loops is not None:
+        return t.loops - len(t.merges)
+    holes = [h for h in t.holes if not h.startswith("an inner edge of")]
+    return len(holes) - len(t.notches) - len(t.merges)
 
 
 def topology_changes(base: Topology, new: Topology) -> list[str]:

@@ -195,7 +195,9 @@ function answered(view, raw) {
     if (same(state.values[name], raw[name])) {
       state.values[name] = v;
       const p = (view.params || state.params).find((q) => q.name === name);
-      typedNote(name, `${name} moved to ${fmt(v)}${p && p.unit ? " " + p.unit : ""}: its range follows the other values`);
+      // a slider's end sent rounded (to 1e-6) and put back on it: no move to speak of
+      const moved = !(typeof raw[name] === "number" && Math.abs(v - raw[name]) <= 1e-6 * Math.max(1, Math.abs(v)));
+      if (moved) typedNote(name, `${name} moved to ${fmt(v)}${p && p.unit ? " " + p.unit : ""}: its range follows the other values`);
     }
   }
   if (view.params) state.params = view.params;
@@ -603,6 +605,9 @@ function sweepChanged(fresh) {
   markRanges();
 }
 async function runSweep() {
+  // paced with the previews and 3D models: a minute of dragging sent a sweep at each pause,
+  // unpaced, and 31 requests fell in one 5 s window of a limit of 30
+  try { await pace(); } catch (_) { /* never */ }
   const sw = state.sweep, source = state.source, key = sweepKey(), values = { ...state.values };
   if (sw.ctrl) sw.ctrl.abort();
   const ctrl = sw.ctrl = new AbortController();
