@@ -57,6 +57,7 @@ from .makers import SINGLE_PARAMS, _MakerFeatures
 from .chamfers import _chamfered, _clear_of_chamfers
 from .naming import _named_parts, _short_names, _summary
 from ..chains.layers import _hole_layers
+from .profiles.write import _Profiles
 from .mirror import mirrored_pair, pair_items, write_pair
 from .sinks import Marks
 from .groups import _Groups, corner_sets, follows
@@ -82,7 +83,7 @@ class _Stats:
         self.readings: list = []    # where two readings fit one drawing: which was taken
 
 
-class _Part(_Anchored, _MakerFeatures, _Groups):
+class _Part(_Anchored, _MakerFeatures, _Groups, _Profiles):
     """One part's statements, written into ``w`` at ``depth``."""
 
     def __init__(self, w: _Writer, params: _Params, stats: _Stats, prefix: str) -> None:
@@ -102,6 +103,19 @@ class _Part(_Anchored, _MakerFeatures, _Groups):
         self.marks: Marks | None = None     # the import's countersink marks (sinks.py)
         self.sunk: dict = {}                # id(hole Shape) -> its mark (Marks.attach)
         self.sinks = None                   # the marks of the holes being written, or None
+        self.keep = None                    # a mirrored pair's mirror line (grows)
+
+    def grows(self, sh: Shape) -> tuple:
+        """:meth:`grows_from`, but a part drawn beside its mirror image (:attr:`keep`, the
+        mirror line) keeps its edge nearest that line, so the gap between the two stays."""
+        out = list(self.grows_from(sh))
+        if self.keep is not None:
+            axis = 0 if self.keep[0] == "x" else 1
+            key = "width" if axis == 0 else "height"
+            lo = sh.center[axis] - sh.args[key] / 2
+            hi = lo + sh.args[key]
+            out[axis] = -1 if abs(lo - self.keep[1]) <= abs(hi - self.keep[1]) else 1
+        return tuple(out)
 
     def shared(self, c) -> str | None:
         """The name of the first shared centre within EQUAL_TOL of ``c``, or None."""
@@ -154,6 +168,10 @@ class _Part(_Anchored, _MakerFeatures, _Groups):
             got = _notches(segs)
             if got is not None:
                 return self.notched(depth, segs, first, got)
+        if first and (sh is None or sh.kind == "Polygon") and len(segs) >= 6:
+            got = self.profile_body(depth, segs)      # an L, T, U, Z, a stepped plate
+            if got is not None:
+                return got
         cuts = None
         corners_drawn = False       # a chamfered plate written corner by corner
         if first and (sh is None or sh.kind == "Polygon"):
@@ -207,7 +225,7 @@ class _Part(_Anchored, _MakerFeatures, _Groups):
             sizes["diameter"] = self.p("diameter", 2 * sh.args["radius"])
         if "width" in sizes and abs(sh.args.get("rotation", 0.0)) <= 1e-15:
             self.anchor = (sh, sizes)
-            self.frame = self.grows_from(sh)
+            self.frame = self.grows(sh)
         if chamfer is not None and corners_drawn and "width" in sizes:
             ch = self.p("chamfer", leg, "at each corner")
             L, R, B, T = (self.edge(0, -1), self.edge(0, 1), self.edge(1, -1),
@@ -276,7 +294,7 @@ class _Part(_Anchored, _MakerFeatures, _Groups):
                  "height": self.p("height", rect.args["height"])} if first else {}
         if sizes:
             self.anchor = (rect, sizes)
-            self.frame = self.grows_from(rect)
+            self.frame = self.grows(rect)
         self.shape_line(depth, nm, rect, self.body_centre(rect), sizes)
         self.w.emit(depth, f"Fixed({nm})")
         n = len(centres)
@@ -951,7 +969,7 @@ class _Part(_Anchored, _MakerFeatures, _Groups):
 
 
 def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d: Drawing,
-           prefix: str, shift=None, marks: Marks | None = None):
+           prefix: str, shift=None, marks: Marks | None = None, keep=None):
     """Write the solid ``name`` of ``d``; returns how its labels are placed
     (:func:`_label_place`: a drawing of texts on their own layer uses it too)."""
     if _unknown(d) or (d.engrave is not None and _unknown(d.engrave)):
@@ -961,6 +979,7 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
     part = _Part(w, params, stats, prefix)
     part.shift = shift
     part.marks = marks
+    part.keep = keep
     loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
     # whole ellipses are loops too: a part's outline, a hole, an island in a hole
     every = loops + [[_whole_ellipse(el)] for el in d.ellipses]
@@ -1082,7 +1101,8 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
         elif kind == "solid" and (pair := mirrored_pair(d, deadline)) is not None:
             word = _named_parts([("solid", "part", pair[0])])[0][1]
             write_pair(w, depth, name if name != word else word + "s", pair[0], pair[1], d.box(),
-                       word, lambda dp, nm, dd: _solid(w, params, stats, dp, nm, dd, "", marks=marks))
+                       word, lambda dp, nm, dd: _solid(w, params, stats, dp, nm, dd, "", marks=marks,
+                                                         keep=pair[1]))
             stats.patterns["mirrored part"] += 1
             name = name if name != word else word + "s"
         else:
