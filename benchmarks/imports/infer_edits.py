@@ -51,6 +51,7 @@ import aidl_lang  # noqa: E402
 import dxf_compare  # noqa: E402
 import ezdxf  # noqa: E402
 import gen_drawings as gen  # noqa: E402
+import gen_profiles  # noqa: E402
 from aidl_lang.drawing.model import DrawingError  # noqa: E402
 from aidl_lang.drawing.infer import import_drawing  # noqa: E402
 from maker_drawings import DRAWINGS  # noqa: E402
@@ -329,8 +330,13 @@ def designs(seed: int, kinds: tuple = gen.KINDS):
     others drawn from ``kinds``; the default, :data:`gen.KINDS`, draws what it always drew)."""
     rng = random.Random(seed)
     i = 0
+    plates = tuple(k for k in kinds if k not in gen_profiles.PROFILE_KINDS) or gen.KINDS
     while True:
-        yield gen.random_design(rng, [kinds[i % len(kinds)]], pool=kinds), rng
+        k = kinds[i % len(kinds)]
+        if k in gen_profiles.PROFILE_KINDS:     # a profile is its own part
+            yield gen_profiles.random_profile(rng, k), rng
+        else:
+            yield gen.random_design(rng, [k], pool=plates), rng
         i += 1
 
 
@@ -430,14 +436,16 @@ def main(argv=None) -> int:
     ap.add_argument("--kinds", default="", help="the generated features' kinds: `new` (the "
                     "kinds drawn only when asked: double-D holes, keyways, skewed vent rows, countersunk holes), "
                     "`round5` (issue 93's: corner holes and slots, combs, board hole sets, "
-                    "flanges at a drawn angle), "
+                    "flanges at a drawn angle), `profiles` (L, T, U, Z brackets, stepped "
+                    "plates), "
                     "`all`, or names joined by commas (default: the first set, as always)")
     a = ap.parse_args(argv)
+    every = gen.ALL_KINDS + gen_profiles.PROFILE_KINDS
     kinds = {"": gen.KINDS, "new": gen.NEW_KINDS, "round5": gen.ROUND5_KINDS,
-             "all": gen.ALL_KINDS}.get(
+             "profiles": gen_profiles.PROFILE_KINDS, "all": every}.get(
         a.kinds, tuple(a.kinds.split(",")))
-    if not set(kinds) <= set(gen.ALL_KINDS):
-        ap.error(f"--kinds: not a kind: {', '.join(sorted(set(kinds) - set(gen.ALL_KINDS)))}")
+    if not set(kinds) <= set(every):
+        ap.error(f"--kinds: not a kind: {', '.join(sorted(set(kinds) - set(every)))}")
     ok = True
     if not a.generated and not a.quick:
         ok = run_handmade(a.names or list(DRAWINGS), a.v)

@@ -80,6 +80,10 @@ def read_profile(segs: list) -> tuple | None:
     if area < 0:                    # counter-clockwise: corner k's radius stays its own
         corners = corners[::-1]
         radii = radii[::-1]
+    for k in range(n):              # `Fillet` rounds with at most half of each side
+        side = math.dist(corners[k], corners[(k + 1) % n])
+        if max(radii[k], radii[(k + 1) % n]) > side / 2 + EQUAL_TOL:
+            return None
     convex = []
     for k in range(n):
         p, q, r = corners[k - 1], corners[k], corners[(k + 1) % n]

@@ -138,7 +138,10 @@ class _Profiles:
         how = hole_place(fc, v, axis)
         if how[0] == "mid":
             a, b = (self._face_text(fc, w, axis, {}) for w in how[1:])
-            return f"{b} / 2" if a == "0" else f"{a} / 2" if b == "0" else f"({a} + {b}) / 2"
+            one = b if a == "0" else a if b == "0" else None
+            if one is not None:
+                return f"{one} / 2" if one.isidentifier() else f"({one}) / 2"
+            return f"({a} + {b}) / 2"
         base = self._face_text(fc, how[1], axis, {})
         d = how[2]
         if abs(d) <= 1e-9:
