@@ -104,6 +104,7 @@ class _Part(_Anchored, _MakerFeatures, _Groups, _Profiles):
         self.sunk: dict = {}                # id(hole Shape) -> its mark (Marks.attach)
         self.sinks = None                   # the marks of the holes being written, or None
         self.keep = None                    # a mirrored pair's mirror line (grows)
+        self.rects: set = set()             # names written as a Rectangle or RoundedRectangle
 
     def grows(self, sh: Shape) -> tuple:
         """:meth:`grows_from`, but a part drawn beside its mirror image (:attr:`keep`, the
@@ -150,6 +151,8 @@ class _Part(_Anchored, _MakerFeatures, _Groups, _Profiles):
 
     def shape_line(self, depth: int, nm: str, sh: Shape, center: str, sizes=None) -> None:
         self.w.emit(depth, f"{nm} = {_ctor(sh, center, sizes)}")
+        if sh.kind in ("Rectangle", "RoundedRectangle"):
+            self.rects.add(nm)          # a CornerPattern's rectangle (_corner_set)
 
     # the body ---------------------------------------------------------------
     def body(self, depth: int, segs: list, first: bool) -> tuple | None:
@@ -586,6 +589,17 @@ class _Part(_Anchored, _MakerFeatures, _Groups, _Profiles):
                     c = f"({self.from_body_centre(0, ex, mid[0])}, {self.from_body_centre(1, ey, mid[1])})"
                     w.emit(depth, f"# at the corners, {inx if inx == iny else inx + ' and ' + iny}"
                                   f" in from the edges")
+                    if self.sinks is None and bname in self.rects:
+                        # the language's own: the inset is one word to change (issue 93)
+                        first = c.replace("sx", "-1").replace("sy", "-1")
+                        if wx and hy:       # the bottom-left corner's, where it goes
+                            first = f"({_add0(self.edge(0, -1), inx)}, {_add0(self.edge(1, -1), iny)})"
+                        w.emit(depth, f"hole {hn} {{ h = {_ctor(sh, first, sizes)} }}")
+                        w.emit(depth, f"CornerPattern({hn}, {bname}, inset="
+                                      f"{inx if inx == iny else f'({inx}, {iny})'})")
+                        self.looped.append((self.sink_members, c, turns.corners(mid)))
+                        self.stats.patterns["corner"] += 1
+                        return True
                     w.emit(depth, "for sx in [-1, 1] {")
                     w.emit(depth + 1, "for sy in [-1, 1] {")
                     self.hole_block(depth + 2, hn, sh, c, sizes, turns.corners(mid))
