@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from .params import _center, _plus, _r
 from .shapes import ROUND_TOL, Shape
-from .turns import at_turn
+from .patterns.turns import at_turn
 
 
 def _add(text: str, d: float) -> str:

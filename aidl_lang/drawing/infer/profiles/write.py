@@ -13,7 +13,7 @@ or height param, an inner face by the thickness, a centred width or its own step
 (:meth:`_Profiles.profile_at`).  The mixin of :class:`~..infer._Part` that writes it."""
 from __future__ import annotations
 
-from ..features import edge_notches
+from ..holes.features import edge_notches
 from ..params import _r
 from ..shapes import EQUAL_TOL, Shape
 from .faces import Faces, find_faces, hole_place

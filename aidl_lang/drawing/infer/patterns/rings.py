@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import math
 
-from .patterns import _polar
-from .shapes import EQUAL_TOL
+from .find import _polar
+from ..shapes import EQUAL_TOL
 
 MAX_RINGS = 2000    # holes: more are a grille's, not rings about a centre
 
