@@ -141,3 +141,39 @@ def test_a_bolt_circles_first_hole_angle_is_a_param(tmp_path):
     want = sorted((round(50 + 30 * math.cos(math.radians(35 + 60 * k)), 9),
                    round(50 + 30 * math.sin(math.radians(35 + 60 * k)), 9)) for k in range(6))
     assert max(math.dist(a, b) for a, b in zip(_circles(ms), want)) < 1e-9, text
+
+
+def test_a_panels_mounting_holes_round_its_window_keep_their_corners(tmp_path):
+    """Four holes 5 mm in from a panel's corners, about its centred display window: nearer
+    their corners than the window's edge, so they are at the corners (the language's
+    `CornerPattern`, the inset one param), not a grid about the window; a motor's holes
+    that hug their bore stay about it (test_a_motor_plates_corner_slots_keep_their_inset)."""
+    doc, m = _doc(120, 80)
+    m.add_lwpolyline([(40, 25), (80, 25), (80, 55), (40, 55)], close=True)
+    for x in (5, 115):
+        for y in (5, 75):
+            m.add_circle((x, y), 1.6)
+    text = _text(doc)
+    assert "CornerPattern(corner_holes, body, inset=corner_inset)" in text, text
+    ms = _out(text, tmp_path, width=150, corner_inset=6)
+    assert _circles(ms) == [(6, 6), (6, 74), (144, 6), (144, 74)], text
+
+
+def test_a_grilles_mounting_holes_the_size_of_its_holes_are_at_the_corners(tmp_path):
+    """A hex grille of 5 mm holes and four 5 mm mounting holes 6 mm in from the corners: the
+    grille one pattern, the four a corner pattern (they were four holes each on its own,
+    each with its own size param: the inset no param)."""
+    doc, m = _doc(100, 100)
+    for j in range(-2, 3):
+        for i in range(-3, 4):
+            x, y = (i + (j % 2) / 2) * 8, j * 8 * math.sqrt(3) / 2
+            if math.hypot(x, y) + 2.5 <= 20:
+                m.add_circle((50 + x, 50 + y), 2.5)
+    for x in (6, 94):
+        for y in (6, 94):
+            m.add_circle((x, y), 2.5)
+    text = _text(doc)
+    assert "CornerPattern(corner_holes, body, inset=corner_inset)" in text, text
+    ms = _out(text, tmp_path, corner_inset=8, width=120)
+    assert [p for p in _circles(ms) if p[0] < 15 or p[0] > 105] == \
+        [(8, 8), (8, 92), (112, 8), (112, 92)], text

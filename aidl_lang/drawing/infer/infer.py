@@ -57,7 +57,7 @@ from ..chains.layers import _hole_layers
 from .profiles.write import _Profiles
 from .mirror import mirrored_pair, pair_items, write_pair
 from .holes.sinks import Marks
-from .patterns.groups import _Groups, corner_sets, follows
+from .patterns.groups import _Groups, corner_sets, corners_and_pattern, follows
 from .patterns.rings import _start, rings, start_angle
 from .patterns import turns
 from ..write.program import _containers, _cut_notes, _layer_items, _place, _whole_ellipse
@@ -187,7 +187,8 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
             self.check(k, "finding the patterns of the holes", every=1)
             r = g[0].args.get("radius", 0.0) if g[0].kind == "Circle" else 0.0
             cs = [sh.center for sh in g]
-            parts = None if _whole(cs, r) else corner_sets(cs, body) or _features(cs, r) or \
+            parts = None if _whole(cs, r) else corner_sets(cs, body) or \
+                corners_and_pattern(cs, body, r) or _features(cs, r) or \
                 rings(cs, ([body[0].center] if body is not None else []) + self.named.points) \
                 or corner_sets(cs, body, rest=True)
             # equal holes of several features (a grille and a grid): each its own pattern

@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 
 from ..params import _hole_name
+from .find import _whole
 from ..shapes import EQUAL_TOL, Shape
 from ...write.writer import _pt
 
@@ -65,6 +66,16 @@ def _edge_gap(feat: Shape, p) -> float:
         dy = max(abs(p[1] - c[1]) - feat.args["height"] / 2, 0.0)
         return math.hypot(dx, dy)
     return math.dist(p, c) - feat.args.get("radius", 0.0)
+
+
+def corners_and_pattern(centres: list, body, r: float) -> list[list[int]] | None:
+    """Four (or more sets of four) holes at the body's corners and the rest of that size
+    one pattern (a grille's mounting holes the size of its holes): the sets, then the
+    pattern; else None (:func:`corner_sets`)."""
+    sets = corner_sets(centres, body, rest=True)
+    if sets is None or len(sets) < 2 or not _whole([centres[i] for i in sets[-1]], r):
+        return None
+    return sets
 
 
 class _Groups:
