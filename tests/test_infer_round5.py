@@ -143,6 +143,17 @@ def test_a_bolt_circles_first_hole_angle_is_a_param(tmp_path):
     assert max(math.dist(a, b) for a, b in zip(_circles(ms), want)) < 1e-9, text
 
 
+def _corner_pattern(doc, m, W: float, H: float, inset: float, r: float) -> str:
+    """Four holes of radius ``r`` ``inset`` in from the corners of a W x H plate added,
+    the drawing inferred: its program, which holds them as one corner pattern."""
+    for x in (inset, W - inset):
+        for y in (inset, H - inset):
+            m.add_circle((x, y), r)
+    text = _text(doc)
+    assert "CornerPattern(corner_holes, body, inset=corner_inset)" in text, text
+    return text
+
+
 def test_a_panels_mounting_holes_round_its_window_keep_their_corners(tmp_path):
     """Four holes 5 mm in from a panel's corners, about its centred display window: nearer
     their corners than the window's edge, so they are at the corners (the language's
@@ -150,11 +161,7 @@ def test_a_panels_mounting_holes_round_its_window_keep_their_corners(tmp_path):
     that hug their bore stay about it (test_a_motor_plates_corner_slots_keep_their_inset)."""
     doc, m = _doc(120, 80)
     m.add_lwpolyline([(40, 25), (80, 25), (80, 55), (40, 55)], close=True)
-    for x in (5, 115):
-        for y in (5, 75):
-            m.add_circle((x, y), 1.6)
-    text = _text(doc)
-    assert "CornerPattern(corner_holes, body, inset=corner_inset)" in text, text
+    text = _corner_pattern(doc, m, 120, 80, 5, 1.6)
     ms = _out(text, tmp_path, width=150, corner_inset=6)
     assert _circles(ms) == [(6, 6), (6, 74), (144, 6), (144, 74)], text
 
@@ -169,11 +176,7 @@ def test_a_grilles_mounting_holes_the_size_of_its_holes_are_at_the_corners(tmp_p
             x, y = (i + (j % 2) / 2) * 8, j * 8 * math.sqrt(3) / 2
             if math.hypot(x, y) + 2.5 <= 20:
                 m.add_circle((50 + x, 50 + y), 2.5)
-    for x in (6, 94):
-        for y in (6, 94):
-            m.add_circle((x, y), 2.5)
-    text = _text(doc)
-    assert "CornerPattern(corner_holes, body, inset=corner_inset)" in text, text
+    text = _corner_pattern(doc, m, 100, 100, 6, 2.5)
     ms = _out(text, tmp_path, corner_inset=8, width=120)
     assert [p for p in _circles(ms) if p[0] < 15 or p[0] > 105] == \
         [(8, 8), (8, 92), (112, 8), (112, 92)], text
