@@ -58,7 +58,7 @@ from .profiles.write import _Profiles
 from .mirror import mirrored_pair, pair_items, write_pair
 from .holes.sinks import Marks
 from .patterns.groups import _Groups, corner_sets, corners_and_pattern, follows
-from .patterns.rings import _start, rings, start_angle
+from .patterns.rings import _start, ring_in_scatter, rings, start_angle
 from .patterns import turns
 from ..write.program import _containers, _cut_notes, _layer_items, _place, _whole_ellipse
 from ..write.writer import _Names, _Writer, _emit_holds, _holds, _ident, _length, _num, _pt
@@ -190,7 +190,7 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
             parts = None if _whole(cs, r) else corner_sets(cs, body) or \
                 corners_and_pattern(cs, body, r) or _features(cs, r) or \
                 rings(cs, ([body[0].center] if body is not None else []) + self.named.points) \
-                or corner_sets(cs, body, rest=True)
+                or corner_sets(cs, body, rest=True) or ring_in_scatter(cs)
             # equal holes of several features (a grille and a grid): each its own pattern
             for part in parts or [range(len(g))]:
                 sub = [g[i] for i in part]
