@@ -180,3 +180,19 @@ def test_a_grilles_mounting_holes_the_size_of_its_holes_are_at_the_corners(tmp_p
     ms = _out(text, tmp_path, corner_inset=8, width=120)
     assert [p for p in _circles(ms) if p[0] < 15 or p[0] > 105] == \
         [(8, 8), (8, 92), (112, 8), (112, 92)], text
+
+
+def test_a_bolt_circle_beside_a_board_of_its_hole_size_is_its_own(tmp_path):
+    """Five 4 mm holes evenly round a centre nothing marks, beside an Arduino's four 4 mm
+    holes: a bolt circle (its count and angle params) and the board's set, not one listed
+    set of nine (the count and the circle were no param)."""
+    doc, m = _doc(160, 100)
+    for k in range(5):
+        a = math.radians(15 + 72 * k)
+        m.add_circle((40 + 12 * math.cos(a), 50 + 12 * math.sin(a)), 2.0)
+    for x, y in [(14.0, 2.5), (15.3, 50.7), (66.1, 7.6), (66.1, 35.5)]:
+        m.add_circle((80 + x, 20 + y), 2.0)
+    text = _text(doc)
+    assert "param bolt_circle_n = 5" in text and "param bolt_circle_angle = 15 deg" in text, text
+    ms = _out(text, tmp_path, bolt_circle_n=6)
+    assert len(_circles(ms)) == 10, text
