@@ -68,16 +68,8 @@ def _distinct(vals) -> list:
     return out
 
 
-def thickness(corners: list, convex: list) -> float:
-    """The profile's thickness: its shortest side between two outside corners (an arm's
-    end)."""
-    n = len(corners)
-    ends = [abs(corners[k][0] - corners[(k + 1) % n][0]) + abs(corners[k][1] - corners[(k + 1) % n][1])
-            for k in range(n) if convex[k] and convex[(k + 1) % n]]
-    return min(ends) if ends else 0.0
-
-
 def arm_ends(corners: list, convex: list) -> list:
+    """The lengths of the sides between two outside corners (each arm's end)."""
     n = len(corners)
     return [abs(corners[k][0] - corners[(k + 1) % n][0]) + abs(corners[k][1] - corners[(k + 1) % n][1])
             for k in range(n) if convex[k] and convex[(k + 1) % n]]
@@ -88,9 +80,9 @@ def find_faces(corners: list, convex: list) -> Faces:
     xs = [p[0] for p in corners]
     ys = [p[1] for p in corners]
     box = (min(xs), min(ys), max(xs), max(ys))
-    t = thickness(corners, convex)
-    out = Faces(box, t)
     ends = arm_ends(corners, convex)
+    t = min(ends) if ends else 0.0     # the thickness: the shortest arm's end
+    out = Faces(box, t)
     for axis, vals in ((0, xs), (1, ys)):
         lo, hi = box[axis], box[axis + 2]
         got = out.faces[axis]
