@@ -2,10 +2,10 @@
 widths, thickness, with their fillets"; docs/import.md, "What an edit means"):
 
     param leg = 40 mm
-    param thickness = 15 mm
-    body = Polygon([(0, 0), (leg, 0), (leg, thickness), (thickness, thickness), ...])
+    param wall = 15 mm          # the thickness (`thickness` is the language's keyword)
+    body = Polygon([(0, 0), (leg, 0), (leg, wall), (wall, wall), (wall, leg), (0, leg)])
     Fixed(body)
-    Fillet(at=[(thickness, thickness)], radius=fillet)
+    Fillet(at=[(wall, wall)], radius=fillet)
 
 each corner's x and y the text of the face it lies on (:mod:`.faces`: an edge by the width
 or height param, an inner face by the thickness, a centred width or its own step), so that
