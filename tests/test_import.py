@@ -385,7 +385,7 @@ def test_a_bulge_over_a_half_turn_keeps_its_centre(sweep_deg):
     about the mirrored centre once the writer kept such arcs whole)."""
     import math
 
-    from aidl_lang.drawing.read.dxf import _bulge_arc
+    from aidl_lang.drawing.read.dxf_entities import _bulge_arc
     c, r = (3.0, -2.0), 7.5
     a0 = math.radians(20)
     sweep = math.radians(sweep_deg)

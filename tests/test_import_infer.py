@@ -114,7 +114,9 @@ def test_plate_comes_back_as_its_design(plate):
     # the row kept by its member nearest the right edge (16 mm in): a new pitch or count
     # keeps that end where it is
     assert "Slot(center=(width / 2 - 16 + (i - (slots_n - 1)) * slots_pitch, 0)" in text
-    assert "for sx in [-1, 1] {" in text and "hole corner_holes" in text
+    # the corner holes by the language's CornerPattern: the inset one word (issue 93)
+    assert "CornerPattern(corner_holes, body, inset=corner_inset)" in text and \
+        "hole corner_holes" in text
     assert "for i in range(bolt_circle_n) {" in text and "hole bolt_circle" in text
     assert "param bolt_circle_n = 6" in text and "i * 360 deg / bolt_circle_n" in text
     # the bolt circle is centred on the bore it surrounds: one centre for both, off the

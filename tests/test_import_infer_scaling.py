@@ -224,7 +224,7 @@ def test_infer_grows_linearly_with_the_drawing(kind):
     worst = {m: g for m, g in grew.items() if g > GROWTH}
     assert not worst, (f"past {GROWTH}x from 500 to 2,000: {worst}; calls: "
                        + str({m: (small[m], large[m]) for m in worst}))
-    assert "infer.py" in large and "patterns.py" in large, large
+    assert "infer.py" in large and "find.py" in large, large     # patterns/find.py
 
 
 def test_the_inferred_panel_is_the_drawing(tmp_path):

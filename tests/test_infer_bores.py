@@ -19,7 +19,7 @@ from hypothesis import strategies as st
 import aidl_lang
 import gen_drawings as gen
 from aidl_lang.drawing.infer import import_drawing
-from aidl_lang.drawing.infer.bores import double_d, keyway
+from aidl_lang.drawing.infer.holes.bores import double_d, keyway
 from aidl_lang.drawing.infer.shapes import merged
 from aidl_lang.geometry.shapes.curves import Arc, Line
 from benchmarks.imports import infer_edits as bench

@@ -141,3 +141,58 @@ def test_a_bolt_circles_first_hole_angle_is_a_param(tmp_path):
     want = sorted((round(50 + 30 * math.cos(math.radians(35 + 60 * k)), 9),
                    round(50 + 30 * math.sin(math.radians(35 + 60 * k)), 9)) for k in range(6))
     assert max(math.dist(a, b) for a, b in zip(_circles(ms), want)) < 1e-9, text
+
+
+def _corner_pattern(doc, m, W: float, H: float, inset: float, r: float) -> str:
+    """Four holes of radius ``r`` ``inset`` in from the corners of a W x H plate added,
+    the drawing inferred: its program, which holds them as one corner pattern."""
+    for x in (inset, W - inset):
+        for y in (inset, H - inset):
+            m.add_circle((x, y), r)
+    text = _text(doc)
+    assert "CornerPattern(corner_holes, body, inset=corner_inset)" in text, text
+    return text
+
+
+def test_a_panels_mounting_holes_round_its_window_keep_their_corners(tmp_path):
+    """Four holes 5 mm in from a panel's corners, about its centred display window: nearer
+    their corners than the window's edge, so they are at the corners (the language's
+    `CornerPattern`, the inset one param), not a grid about the window; a motor's holes
+    that hug their bore stay about it (test_a_motor_plates_corner_slots_keep_their_inset)."""
+    doc, m = _doc(120, 80)
+    m.add_lwpolyline([(40, 25), (80, 25), (80, 55), (40, 55)], close=True)
+    text = _corner_pattern(doc, m, 120, 80, 5, 1.6)
+    ms = _out(text, tmp_path, width=150, corner_inset=6)
+    assert _circles(ms) == [(6, 6), (6, 74), (144, 6), (144, 74)], text
+
+
+def test_a_grilles_mounting_holes_the_size_of_its_holes_are_at_the_corners(tmp_path):
+    """A hex grille of 5 mm holes and four 5 mm mounting holes 6 mm in from the corners: the
+    grille one pattern, the four a corner pattern (they were four holes each on its own,
+    each with its own size param: the inset no param)."""
+    doc, m = _doc(100, 100)
+    for j in range(-2, 3):
+        for i in range(-3, 4):
+            x, y = (i + (j % 2) / 2) * 8, j * 8 * math.sqrt(3) / 2
+            if math.hypot(x, y) + 2.5 <= 20:
+                m.add_circle((50 + x, 50 + y), 2.5)
+    text = _corner_pattern(doc, m, 100, 100, 6, 2.5)
+    ms = _out(text, tmp_path, corner_inset=8, width=120)
+    assert [p for p in _circles(ms) if p[0] < 15 or p[0] > 105] == \
+        [(8, 8), (8, 92), (112, 8), (112, 92)], text
+
+
+def test_a_bolt_circle_beside_a_board_of_its_hole_size_is_its_own(tmp_path):
+    """Five 4 mm holes evenly round a centre nothing marks, beside an Arduino's four 4 mm
+    holes: a bolt circle (its count and angle params) and the board's set, not one listed
+    set of nine (the count and the circle were no param)."""
+    doc, m = _doc(160, 100)
+    for k in range(5):
+        a = math.radians(15 + 72 * k)
+        m.add_circle((40 + 12 * math.cos(a), 50 + 12 * math.sin(a)), 2.0)
+    for x, y in [(14.0, 2.5), (15.3, 50.7), (66.1, 7.6), (66.1, 35.5)]:
+        m.add_circle((80 + x, 20 + y), 2.0)
+    text = _text(doc)
+    assert "param bolt_circle_n = 5" in text and "param bolt_circle_angle = 15 deg" in text, text
+    ms = _out(text, tmp_path, bolt_circle_n=6)
+    assert len(_circles(ms)) == 10, text

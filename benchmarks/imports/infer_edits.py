@@ -51,6 +51,8 @@ import aidl_lang  # noqa: E402
 import dxf_compare  # noqa: E402
 import ezdxf  # noqa: E402
 import gen_drawings as gen  # noqa: E402
+import gen_panels  # noqa: E402
+import gen_profiles  # noqa: E402
 from aidl_lang.drawing.model import DrawingError  # noqa: E402
 from aidl_lang.drawing.infer import import_drawing  # noqa: E402
 from maker_drawings import DRAWINGS  # noqa: E402
@@ -329,8 +331,17 @@ def designs(seed: int, kinds: tuple = gen.KINDS):
     others drawn from ``kinds``; the default, :data:`gen.KINDS`, draws what it always drew)."""
     rng = random.Random(seed)
     i = 0
+    plates = tuple(k for k in kinds if k in gen.ALL_KINDS) or gen.KINDS
     while True:
-        yield gen.random_design(rng, [kinds[i % len(kinds)]], pool=kinds), rng
+        k = kinds[i % len(kinds)]
+        if k in gen_profiles.PROFILE_KINDS:     # a profile is its own part
+            d = gen_profiles.random_profile(rng, k)
+        elif k in gen_panels.PANEL_KINDS:       # a panel: features of its own kinds
+            d = gen_panels.random_panel(rng, k)
+        else:
+            d = gen.random_design(rng, [k], pool=plates)
+            d.kind = k
+        yield d, rng
         i += 1
 
 
@@ -353,7 +364,7 @@ def run_generated(seed: int, count: int, per: int = 5, keep: pathlib.Path | None
     "errors"}``."""
     t0 = time.perf_counter()
     rows = {k: collections.defaultdict(collections.Counter) for k in
-            ("kind", "feature", "format", "misplaced")}
+            ("kind", "drawing", "feature", "format", "misplaced")}
     res = {"edits": [], "drawings": 0, "exact": 0, "errors": []}
     with tempfile.TemporaryDirectory() as d:
         tmp = pathlib.Path(d)
@@ -370,6 +381,7 @@ def run_generated(seed: int, count: int, per: int = 5, keep: pathlib.Path | None
                 res["edits"].append((n, e, outcome, detail))
                 rows["kind"][e.kind][outcome] += 1
                 rows["feature"][e.feature_kind][outcome] += 1
+                rows["drawing"][design.kind][outcome] += 1
                 rows["format"][fmt][outcome] += 1
                 if outcome == "wrong":
                     for k in detail.split("misplaced ")[-1].split(", "):
@@ -388,6 +400,7 @@ def run_generated(seed: int, count: int, per: int = 5, keep: pathlib.Path | None
           f"{len(res['errors'])} failed to import or compile, {n} edits "
           f"({time.perf_counter() - t0:.0f} s)")
     _table("edit kind", rows["kind"])
+    _table("drawing", rows["drawing"])
     _table("feature", rows["feature"])
     _table("format", rows["format"])
     print("features a wrong edit misplaced: " + ", ".join(
@@ -430,14 +443,19 @@ def main(argv=None) -> int:
     ap.add_argument("--kinds", default="", help="the generated features' kinds: `new` (the "
                     "kinds drawn only when asked: double-D holes, keyways, skewed vent rows, countersunk holes), "
                     "`round5` (issue 93's: corner holes and slots, combs, board hole sets, "
-                    "flanges at a drawn angle), "
+                    "flanges at a drawn angle), `profiles` (L, T, U, Z brackets, stepped "
+                    "plates), `panels` (front panels of rows and windows, grilles), `issue93` "
+                    "(round5, profiles and panels), "
                     "`all`, or names joined by commas (default: the first set, as always)")
     a = ap.parse_args(argv)
+    every = gen.ALL_KINDS + gen_profiles.PROFILE_KINDS + gen_panels.PANEL_KINDS
     kinds = {"": gen.KINDS, "new": gen.NEW_KINDS, "round5": gen.ROUND5_KINDS,
-             "all": gen.ALL_KINDS}.get(
+             "profiles": gen_profiles.PROFILE_KINDS, "panels": gen_panels.PANEL_KINDS,
+             "issue93": gen.ROUND5_KINDS + gen_profiles.PROFILE_KINDS + gen_panels.PANEL_KINDS,
+             "all": every}.get(
         a.kinds, tuple(a.kinds.split(",")))
-    if not set(kinds) <= set(gen.ALL_KINDS):
-        ap.error(f"--kinds: not a kind: {', '.join(sorted(set(kinds) - set(gen.ALL_KINDS)))}")
+    if not set(kinds) <= set(every):
+        ap.error(f"--kinds: not a kind: {', '.join(sorted(set(kinds) - set(every)))}")
     ok = True
     if not a.generated and not a.quick:
         ok = run_handmade(a.names or list(DRAWINGS), a.v)

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from .params import _center, _plus, _r
 from .shapes import ROUND_TOL, Shape
-from .turns import at_turn
+from .patterns.turns import at_turn
 
 
 def _add(text: str, d: float) -> str:
@@ -100,6 +100,8 @@ class _Anchored:
         with the centre it is nearest, as a board centred on the plate does)."""
         if self.anchor is None:
             return self.lit(v, axis)
+        if getattr(self, "profile", None) is not None:
+            return self.profile_at(v, axis)     # by the profile's faces (profiles/)
         sh, sizes = self.anchor
         key = "width" if axis == 0 else "height"
         c, half = sh.center[axis], sh.args[key] / 2

@@ -42,28 +42,26 @@ import math
 from collections import Counter
 
 from ...geometry.shapes.curves import Loop
-from .attachments import _attachments, _circle_attachments, _notches
+from .attachments import _attachments, _circle_attachments
 from .params import _Params, _ctor, _deg, _hole_name, _r
-from .patterns import (_Cells, _copies, _grid, _line, _polar,
-                       _polar_chain, _polar_polys, _runs, _stagger, _steps, _hex_field,
-                       _hex_rect, _whole, _features, _unknown)
-from .shapes import (EQUAL_TOL, ROUND_TOL, Shape, _close, _snap_angle, circular,
-                     recognise)
+from .patterns.find import (_Cells, _copies, _grid, _line, _polar, _runs, _stagger,
+                            _hex_field, _hex_rect, _whole, _features, _unknown)
+from .shapes import EQUAL_TOL, ROUND_TOL, Shape, _close, circular, recognise
 from .anchors import _Anchored
-from .engraving import _engraving
-from .labels import _at_as_drawn, _label_place
-from .features import edge_notches, notch_rows
-from .makers import SINGLE_PARAMS, _MakerFeatures
-from .chamfers import _chamfered, _clear_of_chamfers
+from .body import _Bodies
+from .engrave.engraving import _engraving
+from .engrave.labels import _at_as_drawn, _label_place
+from .holes.makers import SINGLE_PARAMS, _MakerFeatures
 from .naming import _named_parts, _short_names, _summary
 from ..chains.layers import _hole_layers
+from .profiles.write import _Profiles
 from .mirror import mirrored_pair, pair_items, write_pair
-from .sinks import Marks
-from .groups import _Groups, corner_sets, follows
-from .rings import _start, rings, start_angle
-from . import turns
-from ..write.program import (_Names, _Writer, _containers, _cut_notes, _emit_holds, _holds,
-                             _ident, _layer_items, _length, _num, _place, _pt, _whole_ellipse)
+from .holes.sinks import Marks
+from .patterns.groups import _Groups, corner_sets, corners_and_pattern, follows
+from .patterns.rings import _start, ring_in_scatter, rings, start_angle
+from .patterns import turns
+from ..write.program import _containers, _cut_notes, _layer_items, _place, _whole_ellipse
+from ..write.writer import _Names, _Writer, _emit_holds, _holds, _ident, _length, _num, _pt
 from ..write.units import UNIT, in_unit
 from ..model import Drawing, Note, _segs_box
 
@@ -82,7 +80,7 @@ class _Stats:
         self.readings: list = []    # where two readings fit one drawing: which was taken
 
 
-class _Part(_Anchored, _MakerFeatures, _Groups):
+class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
     """One part's statements, written into ``w`` at ``depth``."""
 
     def __init__(self, w: _Writer, params: _Params, stats: _Stats, prefix: str) -> None:
@@ -102,6 +100,20 @@ class _Part(_Anchored, _MakerFeatures, _Groups):
         self.marks: Marks | None = None     # the import's countersink marks (sinks.py)
         self.sunk: dict = {}                # id(hole Shape) -> its mark (Marks.attach)
         self.sinks = None                   # the marks of the holes being written, or None
+        self.keep = None                    # a mirrored pair's mirror line (grows)
+        self.rects: set = set()             # names written as a Rectangle or RoundedRectangle
+
+    def grows(self, sh: Shape) -> tuple:
+        """:meth:`grows_from`, but a part drawn beside its mirror image (:attr:`keep`, the
+        mirror line) keeps its edge nearest that line, so the gap between the two stays."""
+        out = list(self.grows_from(sh))
+        if self.keep is not None:
+            axis = 0 if self.keep[0] == "x" else 1
+            key = "width" if axis == 0 else "height"
+            lo = sh.center[axis] - sh.args[key] / 2
+            hi = lo + sh.args[key]
+            out[axis] = -1 if abs(lo - self.keep[1]) <= abs(hi - self.keep[1]) else 1
+        return tuple(out)
 
     def shared(self, c) -> str | None:
         """The name of the first shared centre within EQUAL_TOL of ``c``, or None."""
@@ -136,208 +148,8 @@ class _Part(_Anchored, _MakerFeatures, _Groups):
 
     def shape_line(self, depth: int, nm: str, sh: Shape, center: str, sizes=None) -> None:
         self.w.emit(depth, f"{nm} = {_ctor(sh, center, sizes)}")
-
-    # the body ---------------------------------------------------------------
-    def body(self, depth: int, segs: list, first: bool) -> tuple | None:
-        """Write an outer loop; returns the body's (Shape, param names) when it is a
-        rectangle-like shape the holes may be placed by."""
-        st = self.stats
-        st.pieces += len(segs)
-        sh = recognise(segs)
-        tabs = None
-        teeth = None
-        if sh is None:          # a circle with teeth, before a rectangle with tabs
-            got = _circle_attachments(segs)
-            if got is not None:
-                sh, teeth = got
-        if sh is None or sh.kind == "Polygon" and len(segs) > 4:
-            got = _notches(segs)
-            if got is not None:
-                return self.notched(depth, segs, first, got)
-        cuts = None
-        corners_drawn = False       # a chamfered plate written corner by corner
-        if first and (sh is None or sh.kind == "Polygon"):
-            got = edge_notches(segs)        # notches of any shape cut into the sides
-            if got is not None:
-                plain = recognise(got[0])
-                cut_corner = _chamfered(plain)
-                if cut_corner is not None or \
-                        plain is not None and plain.kind in ("Rectangle", "RoundedRectangle") \
-                        and abs(plain.args.get("rotation", 0.0)) <= 1e-15:
-                    sh, cuts = plain, got[1]
-                    # a notch within two chamfer legs of a corner: `Chamfer` (at most half
-                    # of each side it meets) cannot cut that corner, so the plate's eight
-                    # corners are written from its width, height and chamfer
-                    corners_drawn = cut_corner is not None and \
-                        not _clear_of_chamfers(got[1], *cut_corner)
-        if sh is None or sh.kind == "Polygon" and len(segs) > 4:
-            got = _attachments(segs)
-            if got is not None:
-                sh, tabs = got
-        nm = self.name("body" if first else "outline")
-        chamfer = _chamfered(sh) if first else None
-        if chamfer is not None:
-            sh, leg = chamfer
-        if sh is None:
-            pc = _polar_chain(segs)
-            if pc is not None:
-                C, n, period = pc
-                self.stats.patterns["outline turned round a centre"] += 1
-                self.stats.in_shapes += len(segs)
-                pre = nm + "_s"
-                if self.w.chain(depth, period, False, pre):
-                    names = [f"{pre}{i}" for i in range(len(period))]
-                    _emit_holds(self.w, depth, _holds(period, pre, False))
-                    self.w.emit(depth, f"for e in [{', '.join(names)}] {{ "
-                                       f"CircularPattern(e, {n}, {self.center(C)}) }}")
-                    # its centre names a bore (no pieces to place holes by)
-                    return Shape("Circle", C, {"radius": 0.0}, (), 0), {}, nm
-            if self.w.chain(depth, segs, True, nm + "_s"):
-                _emit_holds(self.w, depth, _holds(segs, nm + "_s"))
-            return None
-        st.kinds[sh.kind] += 1
-        st.in_shapes += sh.pieces
-        sizes: dict = {}
-        if first and sh.kind in ("Rectangle", "RoundedRectangle"):
-            sizes["width"] = self.p("width", sh.args["width"])
-            sizes["height"] = self.p("height", sh.args["height"])
-            if "corner_radius" in sh.args:
-                sizes["corner_radius"] = self.p("corner_radius", sh.args["corner_radius"])
-        elif first and sh.kind == "Circle":
-            sizes["diameter"] = self.p("diameter", 2 * sh.args["radius"])
-        if "width" in sizes and abs(sh.args.get("rotation", 0.0)) <= 1e-15:
-            self.anchor = (sh, sizes)
-            self.frame = self.grows_from(sh)
-        if chamfer is not None and corners_drawn and "width" in sizes:
-            ch = self.p("chamfer", leg, "at each corner")
-            L, R, B, T = (self.edge(0, -1), self.edge(0, 1), self.edge(1, -1),
-                          self.edge(1, 1))
-
-            def at(edge: str, sign: str) -> str:     # an edge moved in by the chamfer
-                if edge == "0":
-                    return ch if sign == "+" else f"-{ch}"
-                return f"{edge} {sign} {ch}"
-            pts = [(at(L, "+"), B), (at(R, "-"), B), (R, at(B, "+")), (R, at(T, "-")),
-                   (at(R, "-"), T), (at(L, "+"), T), (L, at(T, "-")), (L, at(B, "+"))]
-            self.w.emit(depth, f"{nm} = Polygon([" + ", ".join(f"({a}, {b})" for a, b in pts)
-                        + "])")
-            self.w.emit(depth, f"Fixed({nm})")
-            st.patterns["chamfered corners"] += 1
-        else:
-            self.shape_line(depth, nm, sh, self.body_centre(sh), sizes)
-            self.w.emit(depth, f"Fixed({nm})")
-        if chamfer is not None and not (corners_drawn and "width" in sizes):
-            self.w.emit(depth, f"Chamfer({nm}, {self.p('chamfer', leg, 'at each corner')})")
-            st.patterns["chamfered corners"] += 1
-        for group in notch_rows(cuts or []):
-            if len(group) > 2:
-                self.notch_row(depth, group)
-                st.patterns["notches in a side"] += 1
-                continue
-            for cut in group:
-                self.edge_notch(depth, cut)
-                st.patterns["notch in a side"] += 1
-        if teeth:
-            self.teeth(depth, sh, teeth, "tooth")
-        own = {id(x) for x in segs}
-        for chain in tabs or []:
-            tn = self.name("tab")
-            if isinstance(chain, Shape):
-                st.kinds[chain.kind] += 1
-                st.in_shapes += 3
-                self.shape_line(depth, tn, chain, self.pos(chain.center))
-                self.w.emit(depth, f"Fixed({tn})")
-                continue
-            t = recognise(chain)
-            if t is not None and t.kind != "Polygon":
-                st.kinds[t.kind] += 1
-                self.shape_line(depth, tn, t, self.pos(t.center))
-                self.w.emit(depth, f"Fixed({tn})")
-            elif t is not None:
-                self.shape_line(depth, tn, t, "")
-                self.w.emit(depth, f"Fixed({tn})")
-            elif self.w.chain(depth, chain, True, tn + "_s"):
-                _emit_holds(self.w, depth, _holds(chain, tn + "_s"))
-            st.in_shapes += sum(1 for s in chain if id(s) in own)
-        if sh.kind in ("Rectangle", "RoundedRectangle", "Circle") and \
-                abs(sh.args.get("rotation", 0.0)) <= 1e-15:
-            return sh, sizes, nm
-        return None
-
-    def notched(self, depth: int, segs: list, first: bool, got: tuple) -> tuple:
-        """A rectangle with equal notches cut into one side (:func:`_notches`): the
-        rectangle, and the notches as one row of ``hole``s flush with that side (their
-        count, pitch, width and depth params; centred on the body where they are)."""
-        rect, side, centres, w, dep = got
-        self.stats.kinds["Rectangle"] += 1
-        self.stats.in_shapes += len(segs)
-        nm = self.name("body" if first else "outline")
-        sizes = {"width": self.p("width", rect.args["width"]),
-                 "height": self.p("height", rect.args["height"])} if first else {}
-        if sizes:
-            self.anchor = (rect, sizes)
-            self.frame = self.grows_from(rect)
-        self.shape_line(depth, nm, rect, self.body_centre(rect), sizes)
-        self.w.emit(depth, f"Fixed({nm})")
-        n = len(centres)
-        along = 0 if side in ("top", "bottom") else 1
-        across = 1 - along
-        hn = self.name("notches")
-        pitch = _steps(centres)
-        cnt = self.p(hn + "_n", n, unit="")
-        nw = self.p(hn + "_width", w)
-        nd = self.p(hn + "_depth", dep)
-        c = rect.center
-        mid = (centres[0] + centres[-1]) / 2
-        if pitch is not None:
-            pp = self.p(hn + "_pitch", pitch, times=n)
-            if abs(mid - c[along]) <= EQUAL_TOL:
-                pos = self.from_body_centre(along, f"(i - ({cnt} - 1) / 2) * {pp}", c[along])
-            else:           # by its middle, or its end within a pitch of an edge (the spec)
-                pos = self.run_at(centres[0], centres[-1], along, "i", cnt, pp, pitch)
-            head = f"for i in range({cnt}) {{"
-        else:
-            pos = "x"
-            head = f"for x in [{', '.join(self.at(v, along) for v in centres)}] {{"
-        size = sizes.get("height" if across else "width") or \
-            _r(rect.args["height" if across else "width"])
-        sign = "" if side in ("top", "right") else "-"
-        dpos = self.from_body_centre(across, f"{sign}({size} / 2 - {nd} / 2)", c[across])
-        xy = (pos, dpos) if along == 0 else (dpos, pos)
-        wh = (nw, nd) if along == 0 else (nd, nw)
-        self.w.emit(depth, head)
-        self.w.emit(depth + 1, f"hole {hn} {{ h = Rectangle(center=({xy[0]}, {xy[1]}), "
-                               f"width={wh[0]}, height={wh[1]}) }}")
-        self.w.emit(depth + 1, f"Fixed({hn}.h)")
-        self.w.emit(depth, "}")
-        self.stats.patterns["notches in a side"] += 1
-        return rect, sizes, nm
-
-    def teeth(self, depth: int, base: Shape, teeth: list, word: str) -> None:
-        """The polygons standing out of a circle: one loop when they are one polygon turned
-        evenly round it (a gear's teeth), else each on its own."""
-        C = base.center
-        pol = _polar_polys(teeth, C)
-        c = self.center(C)
-        if pol is not None:
-            n, verts = pol
-            step = _num(360 / n, 1e-10)
-            pts = ", ".join(f"polar({c}, {_num(r)}, {_deg(_snap_angle(a, r))} + "
-                            f"i * {step} deg)" for r, a in verts)
-            self.w.emit(depth, f"for i in range({n}) {{")
-            self.w.emit(depth + 1, f"{word} = Polygon([{pts}])")
-            self.w.emit(depth + 1, f"Fixed({word})")
-            self.w.emit(depth, "}")
-            self.stats.patterns[f"{'teeth' if word == 'tooth' else word + 'es'} round a "
-                                f"circle"] += 1
-            self.stats.kinds["Polygon"] += n
-            return
-        for t in teeth:
-            tn = self.name(word)
-            pts = ", ".join(self.center(p) for p in t)
-            self.w.emit(depth, f"{tn} = Polygon([{pts}])")
-            self.w.emit(depth, f"Fixed({tn})")
-            self.stats.kinds["Polygon"] += 1
+        if sh.kind in ("Rectangle", "RoundedRectangle"):
+            self.rects.add(nm)          # a CornerPattern's rectangle (_corner_set)
 
     # the holes --------------------------------------------------------------
     def holes(self, depth: int, loops: list, body) -> None:
@@ -375,9 +187,10 @@ class _Part(_Anchored, _MakerFeatures, _Groups):
             self.check(k, "finding the patterns of the holes", every=1)
             r = g[0].args.get("radius", 0.0) if g[0].kind == "Circle" else 0.0
             cs = [sh.center for sh in g]
-            parts = None if _whole(cs, r) else corner_sets(cs, body) or _features(cs, r) or \
+            parts = None if _whole(cs, r) else corner_sets(cs, body) or \
+                corners_and_pattern(cs, body, r) or _features(cs, r) or \
                 rings(cs, ([body[0].center] if body is not None else []) + self.named.points) \
-                or corner_sets(cs, body, rest=True)
+                or corner_sets(cs, body, rest=True) or ring_in_scatter(cs)
             # equal holes of several features (a grille and a grid): each its own pattern
             for part in parts or [range(len(g))]:
                 sub = [g[i] for i in part]
@@ -422,6 +235,8 @@ class _Part(_Anchored, _MakerFeatures, _Groups):
             self.named_as.append(var)
             self.shared_kind = getattr(self, "shared_kind", {})
             self.shared_kind[var] = sh.kind
+            self.shared_shape = getattr(self, "shared_shape", {})
+            self.shared_shape[var] = sh        # (groups: corner holes nearer the corners)
 
     def compound_hole(self, depth: int, segs: list, body) -> None:
         """A hole no one primitive makes: a circle with a keyway (a tooth), a rectangle with
@@ -568,6 +383,17 @@ class _Part(_Anchored, _MakerFeatures, _Groups):
                     c = f"({self.from_body_centre(0, ex, mid[0])}, {self.from_body_centre(1, ey, mid[1])})"
                     w.emit(depth, f"# at the corners, {inx if inx == iny else inx + ' and ' + iny}"
                                   f" in from the edges")
+                    if self.sinks is None and bname in self.rects:
+                        # the language's own: the inset is one word to change (issue 93)
+                        first = c.replace("sx", "-1").replace("sy", "-1")
+                        if wx and hy:       # the bottom-left corner's, where it goes
+                            first = f"({_add0(self.edge(0, -1), inx)}, {_add0(self.edge(1, -1), iny)})"
+                        w.emit(depth, f"hole {hn} {{ h = {_ctor(sh, first, sizes)} }}")
+                        w.emit(depth, f"CornerPattern({hn}, {bname}, inset="
+                                      f"{inx if inx == iny else f'({inx}, {iny})'})")
+                        self.looped.append((self.sink_members, c, turns.corners(mid)))
+                        self.stats.patterns["corner"] += 1
+                        return True
                     w.emit(depth, "for sx in [-1, 1] {")
                     w.emit(depth + 1, "for sy in [-1, 1] {")
                     self.hole_block(depth + 2, hn, sh, c, sizes, turns.corners(mid))
@@ -951,7 +777,7 @@ class _Part(_Anchored, _MakerFeatures, _Groups):
 
 
 def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d: Drawing,
-           prefix: str, shift=None, marks: Marks | None = None):
+           prefix: str, shift=None, marks: Marks | None = None, keep=None):
     """Write the solid ``name`` of ``d``; returns how its labels are placed
     (:func:`_label_place`: a drawing of texts on their own layer uses it too)."""
     if _unknown(d) or (d.engrave is not None and _unknown(d.engrave)):
@@ -961,6 +787,7 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
     part = _Part(w, params, stats, prefix)
     part.shift = shift
     part.marks = marks
+    part.keep = keep
     loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
     # whole ellipses are loops too: a part's outline, a hole, an island in a hole
     every = loops + [[_whole_ellipse(el)] for el in d.ellipses]
@@ -1082,7 +909,8 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
         elif kind == "solid" and (pair := mirrored_pair(d, deadline)) is not None:
             word = _named_parts([("solid", "part", pair[0])])[0][1]
             write_pair(w, depth, name if name != word else word + "s", pair[0], pair[1], d.box(),
-                       word, lambda dp, nm, dd: _solid(w, params, stats, dp, nm, dd, "", marks=marks))
+                       word, lambda dp, nm, dd: _solid(w, params, stats, dp, nm, dd, "", marks=marks,
+                                                         keep=pair[1]))
             stats.patterns["mirrored part"] += 1
             name = name if name != word else word + "s"
         else:

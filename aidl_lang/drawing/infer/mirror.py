@@ -128,7 +128,7 @@ def write_pair(w, depth: int, name: str, first: Drawing, axis: tuple, box: tuple
     the first part written by ``solid(depth, part name, drawing)`` (the inferred solid's
     writer), its mirror image made by ``Mirrored`` about a held construction line; an
     assembly, the two parts being apart (a solid of both would be ``W0504``)."""
-    from ..write.program import _pt
+    from ..write.writer import _pt
     inner = word if word != name else f"{word}_a"
     w.emit(depth, f"assembly {name} {{")
     solid(depth + 1, inner, first)
@@ -148,7 +148,7 @@ def pair_items(items: list, deadline=None) -> list:
     ``Mirrored`` of it."""
     import os
 
-    from ..write.program import _ident
+    from ..write.writer import _ident
     used = {it[1] for it in items}
     out, i = [], 0
     while i < len(items):

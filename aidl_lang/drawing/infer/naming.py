@@ -7,7 +7,7 @@ from collections import Counter
 
 from ...geometry.shapes.curves import Loop
 from .shapes import EQUAL_TOL, ROUND_TOL, circular, recognise
-from ..write.program import _ident
+from ..write.writer import _ident
 from ..write.units import UNIT
 
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 
 from .shapes import ROUND_TOL, Shape
-from ..write.program import _Names, _ident, _num, _pt
+from ..write.writer import _Names, _ident, _num, _pt
 
 
 def _r(v: float) -> str:

@@ -10,9 +10,10 @@ from __future__ import annotations
 
 import math
 
-from .params import _hole_name
-from .shapes import EQUAL_TOL, Shape
-from ..write.program import _pt
+from ..params import _hole_name
+from .find import _whole
+from ..shapes import EQUAL_TOL, Shape
+from ...write.writer import _pt
 
 
 def follows(terms: list) -> str:
@@ -56,6 +57,27 @@ def corner_sets(centres: list, body, rest: bool = False) -> list[list[int]] | No
     return sets + ([sorted(others)] if others else [])
 
 
+def _edge_gap(feat: Shape, p) -> float:
+    """How far point ``p`` is from the edge of the feature ``feat`` (a circle, a
+    rectangle's box, a regular polygon's circle), outside it."""
+    c = feat.center
+    if feat.kind in ("Rectangle", "RoundedRectangle") and not feat.args.get("rotation"):
+        dx = max(abs(p[0] - c[0]) - feat.args["width"] / 2, 0.0)
+        dy = max(abs(p[1] - c[1]) - feat.args["height"] / 2, 0.0)
+        return math.hypot(dx, dy)
+    return math.dist(p, c) - feat.args.get("radius", 0.0)
+
+
+def corners_and_pattern(centres: list, body, r: float) -> list[list[int]] | None:
+    """Four (or more sets of four) holes at the body's corners and the rest of that size
+    one pattern (a grille's mounting holes the size of its holes): the sets, then the
+    pattern; else None (:func:`corner_sets`)."""
+    sets = corner_sets(centres, body, rest=True)
+    if sets is None or len(sets) < 2 or not _whole([centres[i] for i in sets[-1]], r):
+        return None
+    return sets
+
+
 class _Groups:
     def at_corners(self, g: list, mid) -> bool:
         """Whether four equal holes about ``mid`` may be read as at the body's corners
@@ -68,11 +90,26 @@ class _Groups:
         far = sum(math.dist(h.center, mid) for h in g) / len(g)
         inner = any(math.dist(c, mid) <= EQUAL_TOL and r < far - EQUAL_TOL
                     for c, r in self.rings_at)
-        if g[0].kind == "Circle" and not inner:
+        if g[0].kind == "Circle" and not inner and not self._nearer_corners(g, mid):
             return False
         self.stats.readings.append(
             f"{len(g)} {_hole_name(g[0])}s both about {self.shared(mid)} and at the corners: "
             f"read as at the corners (their inset kept when the plate grows)")
+        return True
+
+    def _nearer_corners(self, g: list, mid) -> bool:
+        """Whether each of four holes about a feature is nearer its corner of the body
+        than the feature's edge (a panel's mounting holes round a window, a grille's round
+        its fan's bore; a motor's holes hug their bore)."""
+        feat = getattr(self, "shared_shape", {}).get(self.shared(mid))
+        if feat is None or self.anchor is None:
+            return False
+        body = self.anchor[0]
+        half = (body.args["width"] / 2, body.args["height"] / 2)
+        for h in g:
+            inset = [half[a] - abs(h.center[a] - body.center[a]) for a in (0, 1)]
+            if min(inset) <= 0 or _edge_gap(feat, h.center) <= math.hypot(*inset) + EQUAL_TOL:
+                return False
         return True
 
     def hole_set(self, depth: int, rest: list, sh: Shape, base: str, sizes: dict) -> None:

@@ -7,10 +7,11 @@ circle of its own; and :func:`start_angle`, how a bolt circle's first hole is wr
 that a new count keeps its meaning.  Coordinates in mm."""
 from __future__ import annotations
 
+import itertools
 import math
 
-from .patterns import _polar
-from .shapes import EQUAL_TOL
+from .find import _polar
+from ..shapes import EQUAL_TOL
 
 MAX_RINGS = 2000    # holes: more are a grille's, not rings about a centre
 
@@ -46,6 +47,41 @@ def rings(centers: list, about: list) -> list[list[int]] | None:
                 return [sorted(g) for g in big] + [small]
             return [sorted(g) for g in groups]
     return None
+
+
+MAX_SCATTER = 16    # holes: a ring sought among scattered holes by their triples (n^4)
+
+
+def ring_in_scatter(centers: list) -> list[list[int]] | None:
+    """Equal holes of no pattern that hold a bolt circle about a centre nothing marks (a
+    flange's holes beside a board's of their size): ``[the ring, the rest]``, the ring the
+    most holes evenly round one centre (three of them fix it), else None."""
+    n = len(centers)
+    if n < 4 or n > MAX_SCATTER:
+        return None
+    best: list = []
+    for i, j, k in itertools.combinations(range(n), 3):
+        c = _circumcentre(centers[i], centers[j], centers[k])
+        if c is None:
+            continue
+        R = math.dist(c, centers[i])
+        ring = [m for m in range(n) if abs(math.dist(c, centers[m]) - R) <= EQUAL_TOL]
+        if len(best) < len(ring) < n:
+            pol = _polar([centers[m] for m in ring])
+            if pol is not None and math.dist(pol[0], c) <= EQUAL_TOL:
+                best = ring
+    if not best:
+        return None
+    return [best, [m for m in range(n) if m not in best]]
+
+
+def _circumcentre(a, b, c) -> tuple | None:
+    d = 2 * (a[0] * (b[1] - c[1]) + b[0] * (c[1] - a[1]) + c[0] * (a[1] - b[1]))
+    if abs(d) <= EQUAL_TOL:
+        return None
+    sa, sb, sc = (p[0] ** 2 + p[1] ** 2 for p in (a, b, c))
+    return ((sa * (b[1] - c[1]) + sb * (c[1] - a[1]) + sc * (a[1] - b[1])) / d,
+            (sa * (c[0] - b[0]) + sb * (a[0] - c[0]) + sc * (b[0] - a[0])) / d)
 
 
 def _start(a0: float, n: int) -> float:

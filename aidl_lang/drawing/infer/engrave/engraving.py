@@ -6,12 +6,12 @@ from __future__ import annotations
 
 import math
 
-from ...geometry.shapes.curves import Line
-from ..model import Drawing, Note
-from ..write.program import _Writer, _emit_holds, _holds, _num, _pt, _string
-from .params import _center, _ctor, _deg, _plus, _r
-from .patterns import _periodic, _tick_families
-from .shapes import ROUND_TOL, circular, recognise
+from ....geometry.shapes.curves import Line
+from ...model import Drawing, Note
+from ...write.writer import _Writer, _emit_holds, _holds, _num, _pt, _string
+from ..params import _center, _ctor, _deg, _plus, _r
+from ..patterns.find import _periodic, _tick_families
+from ..shapes import ROUND_TOL, circular, recognise
 from .text import along_texts, stroke_texts
 
 

@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 from functools import lru_cache
 
-from ...geometry.shapes.text import _baseline, _cap_height, _glyphs, _raw, text_strokes
+from ....geometry.shapes.text import _baseline, _cap_height, _glyphs, _raw, text_strokes
 
 TOL = 1e-7          # mm: each stroke end of the text found against the drawing's
 MAX_SEGMENTS = 4000
@@ -398,7 +398,7 @@ def along_texts(polys: list, taken: set) -> list:
     baseline middle square to it meet at one centre) whose middles are the font's advances
     apart along it are one text, drawn again by
     :func:`~aidl_lang.geometry.shapes.text.text_strokes_along` and checked to :data:`TOL`."""
-    from ...geometry.shapes.text import text_strokes_along
+    from ....geometry.shapes.text import text_strokes_along
     idx = [i for i, p in enumerate(polys) if i not in taken]
     segs = [s for i in idx for s in polys[i]]
     owner = [i for i in idx for _ in polys[i]]

@@ -7,8 +7,8 @@ from __future__ import annotations
 
 from .bores import _BoreFeatures
 from .features import arc_slot, d_hole, keyhole
-from .shapes import merged
-from .params import _deg, _r
+from ..shapes import merged
+from ..params import _deg, _r
 
 SINGLE_PARAMS = 12     # a part with more holes of sizes no other has: their sizes as numbers
 

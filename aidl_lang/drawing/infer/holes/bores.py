@@ -13,8 +13,8 @@ from __future__ import annotations
 
 import math
 
-from .params import _deg
-from .shapes import EQUAL_TOL, _close, arcs_and_lines
+from ..params import _deg
+from ..shapes import EQUAL_TOL, _close, arcs_and_lines
 
 
 def _across(p, c, ux, uy) -> tuple[float, float]:

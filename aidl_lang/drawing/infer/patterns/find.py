@@ -23,11 +23,12 @@ from __future__ import annotations
 import bisect
 import math
 
-from ...geometry.shapes.curves import Arc, Line
-from .params import _r
-from .shapes import EQUAL_TOL, _snap_angle, circular, recognise
-from ..write.program import _containers, _ident
-from ..model import Drawing
+from ....geometry.shapes.curves import Arc, Line
+from ..params import _r
+from ..shapes import EQUAL_TOL, _snap_angle, circular, recognise
+from ...write.program import _containers
+from ...write.writer import _ident
+from ...model import Drawing
 
 
 # ------------------------------------------------------------------ points
@@ -375,7 +376,7 @@ def _polar_chain(segs: list):
             ((g.start[0] + g.end[0]) / 2, (g.start[1] + g.end[1]) / 2)
         return (isinstance(g, Arc), round(g.length, 6), round(math.dist(m, C), 6))
     sigs = [sig(g) for g in segs]
-    from .shapes import _same
+    from ..shapes import _same
     for n in range(n_all // 2, 2, -1):
         if n_all % n:
             continue

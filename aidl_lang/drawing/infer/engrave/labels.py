@@ -9,11 +9,11 @@ from __future__ import annotations
 import math
 from collections import Counter
 
-from .features import arc_slot, d_hole, keyhole, merged
-from .shapes import EQUAL_TOL, recognise
-from ..write.program import _pt
-from ..write.units import UNIT
-from ..model import _segs_box
+from ..holes.features import arc_slot, d_hole, keyhole, merged
+from ..shapes import EQUAL_TOL, recognise
+from ...write.writer import _pt
+from ...write.units import UNIT
+from ...model import _segs_box
 
 
 def _at_as_drawn(p, size: float) -> str:

@@ -12,11 +12,11 @@ layer's ``drawing``.  Lengths in the drawing's unit; the results are program tex
 from __future__ import annotations
 
 import re
-from .shapes import EQUAL_TOL, Shape
-from ..chains.layers import _SINK_LAYER
+from ..shapes import EQUAL_TOL, Shape
+from ...chains.layers import _SINK_LAYER
 from dataclasses import replace
 
-from ..model import Drawing
+from ...model import Drawing
 
 
 def _word(layer: str) -> str:

@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import math
 
-from ...geometry.shapes.curves import Arc, Line
-from .shapes import EQUAL_TOL, _close, arcs_and_lines, merged
+from ....geometry.shapes.curves import Arc, Line
+from ..shapes import EQUAL_TOL, _close, arcs_and_lines, merged
 
 
 def _ccw(a: Arc) -> tuple[float, float]:
