@@ -4,18 +4,16 @@ matching each tool's output schema, the arguments' schema states the source/path
 refuses unknown names, and the messages name tools and arguments instead of command-line
 flags."""
 import asyncio
-import contextlib
 import json
 import time
 
 import pytest
-import pytest_asyncio
 
 mcp = pytest.importorskip("mcp")
 from mcp.client.session import ClientSession  # noqa: E402
 from mcp.client.stdio import stdio_client  # noqa: E402
 
-from test_mcp import GOOD, _doc, _server, _text  # noqa: E402
+from test_mcp import GOOD, _doc, _server, _session, _text, shared  # noqa: E402,F401
 
 # seconds of work that ends in E0304: the shape checks of 3,000 overlapping holes stop at
 # their shares of the budget (W0521), then the exact outlines of the stacked circles run past
@@ -23,40 +21,6 @@ from test_mcp import GOOD, _doc, _server, _text  # noqa: E402
 SLOW = ("units mm\nsolid plate {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
         "    for i in range(3000) { hole h { c = Circle(center=(i * 0.001, 0), radius=1) } }\n"
         "}\n")
-
-
-@contextlib.asynccontextmanager
-async def _session(root):
-    async with stdio_client(_server(root)) as (read, write):
-        async with ClientSession(read, write) as session:
-            await session.initialize()
-            yield session
-
-
-@pytest_asyncio.fixture(scope="module", loop_scope="module")
-async def shared(tmp_path_factory):
-    """One `aidl mcp --root ROOT` for the module's tests that need no server of their own
-    (each test's files have their own names in ROOT): 7 server and worker-pool start-ups
-    saved.  The session lives in a task of its own, as the SDK's task group must be entered
-    and left in one task; the slow call and the prompt's stderr keep their own servers."""
-    root = tmp_path_factory.mktemp("mcp-root")
-    ready = asyncio.get_running_loop().create_future()
-    stop = asyncio.Event()
-
-    async def hold():
-        try:
-            async with _session(root) as session:
-                ready.set_result(session)
-                await stop.wait()
-        except BaseException as e:
-            if not ready.done():
-                ready.set_exception(e)
-            raise
-    task = asyncio.create_task(hold())
-    session = await ready
-    yield session, root
-    stop.set()
-    await task
 
 
 @pytest.mark.timing

@@ -10,7 +10,7 @@ import pytest
 mcp = pytest.importorskip("mcp")
 
 from test_mcp import GOOD, _text  # noqa: E402
-from test_mcp_agents import shared  # noqa: E402,F401  (one server for the module)
+from test_mcp import shared  # noqa: E402,F401  (one server for the module)
 
 PLATE = """units mm
 # a plate with a bore
