@@ -212,7 +212,9 @@ def test_law_pi_means_180_deg_where_it_meets_an_angle(exprs):
             assert g["tan"] == pytest.approx(w["tan"], rel=1e-6, abs=1e-9), x
 
 
-@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+# 10 examples (40 before): issue 84's defect (pi next to an angle read as 3.14 deg, every
+# angle_scale giving deg) fails it in 10 of 10 seeds at 3 examples already
+@settings(max_examples=10, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(_ANGLE_LEAVES, st.integers(0, 3).flatmap(lambda d: _expr("rad", d, True)))
 def test_law_radians_added_to_an_angle_are_radians(theta, x):
     """For every number made from pi and tau (plain numbers added to it included, and

@@ -47,7 +47,8 @@ def pos(src: str, needle: str, k: int = 0, nth: int = 0) -> tuple[int, int]:
 
 
 # ------------------------------------------------------------------ over stdio
-@pytest_lsp.fixture(config=ClientServerConfig(
+# one server for the module's two tests (each opens its own documents): one start-up saved
+@pytest_lsp.fixture(scope="module", config=ClientServerConfig(
     server_command=[sys.executable, "-m", "aidl_lang.cli", "lsp"]))
 async def client(lsp_client: LanguageClient):
     keep(lsp_client)
@@ -72,7 +73,7 @@ async def _diagnostics(client: LanguageClient, uri: str, version: int | None = N
     return await published(client, uri, version)
 
 
-@pytest.mark.asyncio
+@pytest.mark.asyncio(loop_scope="module")
 async def test_server_diagnostics_hover_completion_definition(client: LanguageClient, tmp_path):
     uri = (tmp_path / "plate.aidl").as_uri()
     _open(client, uri, BROKEN)
@@ -122,7 +123,7 @@ async def test_server_diagnostics_hover_completion_definition(client: LanguageCl
     assert [c.name for c in syms[1].children] == ["body", "bore"]
 
 
-@pytest.mark.asyncio
+@pytest.mark.asyncio(loop_scope="module")
 async def test_server_survives_garbage_and_formats(client: LanguageClient, tmp_path):
     uri = (tmp_path / "junk.aidl").as_uri()
     garbage = 'solid {{ ( ] "unterminated\n\x00 é😀 f"{" // -> ** else elif\n' + TELEPHONE[:700]

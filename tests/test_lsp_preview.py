@@ -85,7 +85,8 @@ def test_preview_svg_maps_shapes_to_source_and_sliders(tmp_path):
     assert r4["svg"] is None and r4["shapes"] == [] and not r4["ok"]
 
 
-@pytest_lsp.fixture(config=ClientServerConfig(
+# one server for the module's two requests (each opens its own document): one start-up saved
+@pytest_lsp.fixture(scope="module", config=ClientServerConfig(
     server_command=[sys.executable, "-m", "aidl_lang.cli", "lsp"]))
 async def client(lsp_client: LanguageClient):
     # VS Code refreshes inlay hints and code lenses when the server asks (after each analysis)
@@ -97,7 +98,7 @@ async def client(lsp_client: LanguageClient):
     await lsp_client.shutdown_session()
 
 
-@pytest.mark.asyncio
+@pytest.mark.asyncio(loop_scope="module")
 async def test_preview_request_over_stdio(client: LanguageClient):
     uri = TELEPHONE.as_uri()
     text = TELEPHONE.read_text()
@@ -131,7 +132,7 @@ def test_the_cache_keeps_the_last_documents_only(tmp_path):
     assert list(cache.good) == ["file:///c.aidl", "file:///b.aidl"]
 
 
-@pytest.mark.asyncio
+@pytest.mark.asyncio(loop_scope="module")
 async def test_preview_request_assembled_carries_the_glb(client: LanguageClient):
     """`"assembled": true`: the result's `glb` is the phone stand placed in 3D (trimesh reads
     two named nodes; the foot turned a quarter about z); without it there is none."""

@@ -2,12 +2,15 @@
 (`mcp.client.stdio.stdio_client` + `ClientSession`): tools, resources, a located diagnostic,
 a PNG image block, solved values, a file written inside the root and paths refused outside
 it (also through a symlink)."""
+import asyncio
 import base64
+import contextlib
 import json
 import os
 import sys
 
 import pytest
+import pytest_asyncio
 
 mcp = pytest.importorskip("mcp")
 from mcp.client.session import ClientSession  # noqa: E402
@@ -36,6 +39,41 @@ def _server(root) -> StdioServerParameters:
     return StdioServerParameters(command=sys.executable,
                                  args=["-m", "aidl_lang.cli", "mcp", "--root", str(root)],
                                  env=env, cwd=str(ROOT))
+
+
+@contextlib.asynccontextmanager
+async def _session(root):
+    async with stdio_client(_server(root)) as (read, write):
+        async with ClientSession(read, write) as session:
+            await session.initialize()
+            yield session
+
+
+@pytest_asyncio.fixture(scope="module", loop_scope="module")
+async def shared(tmp_path_factory):
+    """One `aidl mcp --root ROOT` for the tests of a module that need no server of their own
+    (each test's files have their own names in ROOT), imported by each module that shares
+    one: a server and its worker pool start once per module, not once per test.  The session
+    lives in a task of its own, as the SDK's task group must be entered and left in one
+    task."""
+    root = tmp_path_factory.mktemp("mcp-root")
+    ready = asyncio.get_running_loop().create_future()
+    stop = asyncio.Event()
+
+    async def hold():
+        try:
+            async with _session(root) as session:
+                ready.set_result(session)
+                await stop.wait()
+        except BaseException as e:
+            if not ready.done():
+                ready.set_exception(e)
+            raise
+    task = asyncio.create_task(hold())
+    session = await ready
+    yield session, root
+    stop.set()
+    await task
 
 
 def _text(result) -> str:
@@ -224,55 +262,52 @@ def test_server_info_version_is_the_package_version():
     assert version("aidl-lang") and server.version == version("aidl-lang")
 
 
-@pytest.mark.asyncio
-async def test_tool_schemas_describe_every_argument_with_its_values_and_ranges(tmp_path):
+@pytest.mark.asyncio(loop_scope="module")
+async def test_tool_schemas_describe_every_argument_with_its_values_and_ranges(shared):
     """`tools/list` gives each argument a description, the allowed values (style) and ranges
     (width, budget), and the SDK refuses a call outside them before the tool runs (issue 37:
     the schemas had titles only)."""
-    params = _server(tmp_path)
-    async with stdio_client(params) as (read, write):
-        async with ClientSession(read, write) as session:
-            await session.initialize()
-            tools = {t.name: t for t in (await session.list_tools()).tools}
-            assert set(tools) == {"check", "render", "values", "describe", "explain", "docs",
-                                  "import_drawing", "write_program", "set_params", "measure"}
-            # an argument several tools take alike is described in full once, in the first
-            # of them; the others say `as in `FIRST`` (issue 86: tools/list in few tokens)
-            for t in tools.values():
-                props = t.input_schema["properties"]
-                assert props, t.name
-                for name, prop in props.items():
-                    said = prop.get("description", "")
-                    if said.startswith("as in `"):
-                        first = tools[said[len("as in `"):-1]].input_schema["properties"]
-                        said = first[name]["description"]
-                        assert {k: v for k, v in first[name].items() if k != "description"} \
-                            == {k: v for k, v in prop.items() if k != "description"}
-                    elif said.startswith("as `"):     # as an earlier argument of the tool
-                        like = props[said[len("as `"):-1]]
-                        said = like["description"]
-                        assert {k: v for k, v in like.items() if k != "description"} \
-                            == {k: v for k, v in prop.items() if k != "description"}
-                    assert len(said) > 20, (t.name, name)
-            render = tools["render"].input_schema["properties"]
-            assert render["style"]["enum"] == ["preview", "laser"]
-            assert render["style"]["default"] == "preview"
-            assert (render["width"]["minimum"], render["width"]["maximum"]) == (16, 4096)
-            for t in ("check", "render", "values", "describe"):
-                budget = tools[t].input_schema["properties"]["budget"]
-                assert budget["type"] == ["number", "null"]
-                assert budget["exclusiveMinimum"] == 0 and budget["maximum"] == 4
-            assert tools["explain"].input_schema["required"] == ["code"]
+    session, root = shared
+    tools = {t.name: t for t in (await session.list_tools()).tools}
+    assert set(tools) == {"check", "render", "values", "describe", "explain", "docs",
+                          "import_drawing", "write_program", "set_params", "measure"}
+    # an argument several tools take alike is described in full once, in the first
+    # of them; the others say `as in `FIRST`` (issue 86: tools/list in few tokens)
+    for t in tools.values():
+        props = t.input_schema["properties"]
+        assert props, t.name
+        for name, prop in props.items():
+            said = prop.get("description", "")
+            if said.startswith("as in `"):
+                first = tools[said[len("as in `"):-1]].input_schema["properties"]
+                said = first[name]["description"]
+                assert {k: v for k, v in first[name].items() if k != "description"} \
+                    == {k: v for k, v in prop.items() if k != "description"}
+            elif said.startswith("as `"):     # as an earlier argument of the tool
+                like = props[said[len("as `"):-1]]
+                said = like["description"]
+                assert {k: v for k, v in like.items() if k != "description"} \
+                    == {k: v for k, v in prop.items() if k != "description"}
+            assert len(said) > 20, (t.name, name)
+    render = tools["render"].input_schema["properties"]
+    assert render["style"]["enum"] == ["preview", "laser"]
+    assert render["style"]["default"] == "preview"
+    assert (render["width"]["minimum"], render["width"]["maximum"]) == (16, 4096)
+    for t in ("check", "render", "values", "describe"):
+        budget = tools[t].input_schema["properties"]["budget"]
+        assert budget["type"] == ["number", "null"]
+        assert budget["exclusiveMinimum"] == 0 and budget["maximum"] == 4
+    assert tools["explain"].input_schema["required"] == ["code"]
 
-            # a call outside the schema is refused, naming the argument; a good one is not
-            for args in ({"style": "blueprint"}, {"width": 0}, {"budget": 0},
-                         {"budget": 5.0}):
-                r = await session.call_tool("render", {"source": GOOD, **args})
-                assert r.is_error, args
-                assert next(iter(args)) in _text(r), (args, _text(r))
-            r = await session.call_tool("render", {"source": GOOD, "style": "laser",
-                                                   "width": 64, "budget": 0.5})
-            assert not r.is_error and _doc((r))["ok"], _text(r)
+    # a call outside the schema is refused, naming the argument; a good one is not
+    for args in ({"style": "blueprint"}, {"width": 0}, {"budget": 0},
+                 {"budget": 5.0}):
+        r = await session.call_tool("render", {"source": GOOD, **args})
+        assert r.is_error, args
+        assert next(iter(args)) in _text(r), (args, _text(r))
+    r = await session.call_tool("render", {"source": GOOD, "style": "laser",
+                                           "width": 64, "budget": 0.5})
+    assert not r.is_error and _doc((r))["ok"], _text(r)
 
 
 def test_a_program_path_that_is_not_utf8_or_has_a_bom_reads_as_aidl_check_reads_it(tmp_path):
@@ -285,43 +320,38 @@ def test_a_program_path_that_is_not_utf8_or_has_a_bom_reads_as_aidl_check_reads_
     assert T.Workspace(tmp_path).read("bom.aidl")[1] == "units mm\n"
 
 
-@pytest.mark.asyncio
-async def test_render_assembled_returns_the_product_in_3d(tmp_path):
+@pytest.mark.asyncio(loop_scope="module")
+async def test_render_assembled_returns_the_product_in_3d(shared):
     """`assembled`: the image is the phone stand stood up (a collision boxed in red when the
     slot is too narrow), a written .glb has one node per part, an .svg is refused."""
+    session, root = shared
     import io
 
     import numpy as np
     import trimesh
     from PIL import Image
-    root = tmp_path / "work"
-    root.mkdir()
     # the example's range stops at the sheet (3 mm): opened to 1 mm to show the collision
     (root / "stand.aidl").write_text((ROOT / "examples" / "phone_stand.aidl").read_text()
                                      .replace("min = 3 mm, max = 6 mm", "min = 1 mm, max = 6 mm"))
-    params = _server(root)
-    async with stdio_client(params) as (read, write):
-        async with ClientSession(read, write) as session:
-            await session.initialize()
-            reds = []
-            for slot in ("3mm", "2.5mm"):
-                r = await session.call_tool("render", {
-                    "path": "stand.aidl", "width": 240, "assembled": True, "picture": True,
-                    "overrides": {"slot": slot}, "output": "stand.glb"})
-                assert not r.is_error, _text(r)
-                doc = _doc((r))
-                assert doc["image"]["view"] == "assembled" and doc["written"] == "stand.glb"
-                [img] = [c for c in r.content if c.type == "image"]
-                im = np.asarray(Image.open(io.BytesIO(base64.b64decode(img.data))).convert("RGB"))
-                assert im.shape[1] == 240
-                im = im.astype(int)
-                reds.append(int(((im[:, :, 0] > 200) & (im[:, :, 1] < 60) & (im[:, :, 2] < 60)).sum()))
-            assert reds[0] == 0 and reds[1] > 20
-            sc = trimesh.load(root / "stand.glb")
-            assert sorted(sc.graph.nodes_geometry) == ["stand.foot", "stand.support"]
-            r = await session.call_tool("render", {"path": "stand.aidl", "assembled": True,
-                                                   "output": "stand.svg"})
-            assert r.is_error and "not `.svg`" in _text(r)
+    reds = []
+    for slot in ("3mm", "2.5mm"):
+        r = await session.call_tool("render", {
+            "path": "stand.aidl", "width": 240, "assembled": True, "picture": True,
+            "overrides": {"slot": slot}, "output": "stand.glb"})
+        assert not r.is_error, _text(r)
+        doc = _doc((r))
+        assert doc["image"]["view"] == "assembled" and doc["written"] == "stand.glb"
+        [img] = [c for c in r.content if c.type == "image"]
+        im = np.asarray(Image.open(io.BytesIO(base64.b64decode(img.data))).convert("RGB"))
+        assert im.shape[1] == 240
+        im = im.astype(int)
+        reds.append(int(((im[:, :, 0] > 200) & (im[:, :, 1] < 60) & (im[:, :, 2] < 60)).sum()))
+    assert reds[0] == 0 and reds[1] > 20
+    sc = trimesh.load(root / "stand.glb")
+    assert sorted(sc.graph.nodes_geometry) == ["stand.foot", "stand.support"]
+    r = await session.call_tool("render", {"path": "stand.aidl", "assembled": True,
+                                           "output": "stand.svg"})
+    assert r.is_error and "not `.svg`" in _text(r)
 
 
 @pytest.mark.timing
@@ -376,24 +406,21 @@ def test_check_and_render_read_a_drawing_beside_the_program_inside_the_root(tmp_
     assert "secret" not in json.dumps(doc)
 
 
-@pytest.mark.asyncio
-async def test_every_resource_uri_of_the_docs_is_served(tmp_path):
+@pytest.mark.asyncio(loop_scope="module")
+async def test_every_resource_uri_of_the_docs_is_served(shared):
     """Issue 37: docs/mcp.md gave stdlib resource URIs that did not exist.  Every concrete
     `aidl://` URI written in docs/mcp.md (NAME placeholders aside) is one the server lists and
     reads."""
+    session, root = shared
     import re
     text = (ROOT / "docs" / "mcp.md").read_text(encoding="utf-8")
     said = {u.rstrip(".,)") for u in re.findall(r"aidl://[\w./-]+", text) if "NAME" not in u}
     assert len(said) >= 8
-    params = _server(tmp_path)
-    async with stdio_client(params) as (read, write):
-        async with ClientSession(read, write) as session:
-            await session.initialize()
-            listed = {str(x.uri) for x in (await session.list_resources()).resources}
-            assert sorted(said - listed) == []
-            for uri in sorted(said):
-                got = await session.read_resource(uri)
-                assert got.contents[0].text.strip(), uri
+    listed = {str(x.uri) for x in (await session.list_resources()).resources}
+    assert sorted(said - listed) == []
+    for uri in sorted(said):
+        got = await session.read_resource(uri)
+        assert got.contents[0].text.strip(), uri
 
 
 # A line that is no JSON-RPC message, and the error JSON-RPC 2.0 answers it with (issue 83):

@@ -10,7 +10,7 @@ import pytest
 mcp = pytest.importorskip("mcp")
 
 from test_mcp import GOOD, _text  # noqa: E402
-from test_mcp_agents import _session  # noqa: E402
+from test_mcp import shared  # noqa: E402,F401  (one server for the module)
 
 PLATE = """units mm
 # a plate with a bore
@@ -38,88 +38,88 @@ assembly kit {
 """
 
 
-@pytest.mark.asyncio
-async def test_set_params_rewrites_only_the_values_and_checks(tmp_path):
+@pytest.mark.asyncio(loop_scope="module")
+async def test_set_params_rewrites_only_the_values_and_checks(shared):
     """The value text of each named `param` line changes, nothing else (comments, options,
     spacing); the answer is the new file's check; a value of the wrong kind, outside the
     declared range or for an unknown name is refused naming `values`, the file untouched."""
-    f = tmp_path / "plate.aidl"
+    session, root = shared
+    f = root / "plate.aidl"
     f.write_text(PLATE)
-    async with _session(tmp_path) as session:
-        tools = {t.name: t for t in (await session.list_tools()).tools}
-        assert tools["set_params"].output_schema and len(tools["set_params"].description) < 400
-        r = await session.call_tool("set_params", {"path": "plate.aidl",
-                                                   "values": {"width": "50 mm", "bore_r": 5}})
-        assert not r.is_error, _text(r)
-        doc = r.structured_content
-        assert doc["ok"] and doc["written"] == "plate.aidl"
-        assert doc["parts"][0]["bbox"] == [-25.0, -10.0, 25.0, 10.0]
-        assert f.read_text() == PLATE.replace("width = 40 mm,", "width = 50 mm,").replace(
-            "bore_r = 4 ", "bore_r = 5 ")
-        before = f.read_text()
-        for values, code, said in (({"width": "200 mm"}, "bad_argument", "outside the range"),
-                                   ({"width": "30 deg"}, "bad_argument", "angle"),
-                                   ({"widht": 45}, "no_match", "did you mean `width`")):
-            r = await session.call_tool("set_params", {"path": "plate.aidl", "values": values})
-            assert r.is_error, values
-            err = r.structured_content["error"]
-            assert (err["code"], err["argument"]) == (code, "values"), err
-            assert said in err["message"], err
-            assert "--set" not in err["message"]
-            assert f.read_text() == before
+    tools = {t.name: t for t in (await session.list_tools()).tools}
+    assert tools["set_params"].output_schema and len(tools["set_params"].description) < 400
+    r = await session.call_tool("set_params", {"path": "plate.aidl",
+                                               "values": {"width": "50 mm", "bore_r": 5}})
+    assert not r.is_error, _text(r)
+    doc = r.structured_content
+    assert doc["ok"] and doc["written"] == "plate.aidl"
+    assert doc["parts"][0]["bbox"] == [-25.0, -10.0, 25.0, 10.0]
+    assert f.read_text() == PLATE.replace("width = 40 mm,", "width = 50 mm,").replace(
+        "bore_r = 4 ", "bore_r = 5 ")
+    before = f.read_text()
+    for values, code, said in (({"width": "200 mm"}, "bad_argument", "outside the range"),
+                               ({"width": "30 deg"}, "bad_argument", "angle"),
+                               ({"widht": 45}, "no_match", "did you mean `width`")):
+        r = await session.call_tool("set_params", {"path": "plate.aidl", "values": values})
+        assert r.is_error, values
+        err = r.structured_content["error"]
+        assert (err["code"], err["argument"]) == (code, "values"), err
+        assert said in err["message"], err
+        assert "--set" not in err["message"]
+        assert f.read_text() == before
 
 
-@pytest.mark.asyncio
-async def test_measure_gives_exact_distances_angles_and_clearances(tmp_path):
+@pytest.mark.asyncio(loop_scope="module")
+async def test_measure_gives_exact_distances_angles_and_clearances(shared):
     """Circles 20 mm apart centre to centre with radii 3 and 5: clearance 12; the gears'
     centres 31 mm apart (m (12 + 18) / 2 = 30 would mesh; 31 leaves them apart); two lines
     at 45 degrees; a point to a circle."""
-    (tmp_path / "kit.aidl").write_text(GEARS)
-    async with _session(tmp_path) as session:
-        async def m(a, b):
-            r = await session.call_tool("measure", {"path": "kit.aidl", "a": a, "b": b})
-            assert not r.is_error, _text(r)
-            return r.structured_content["measure"]
+    session, root = shared
+    (root / "kit.aidl").write_text(GEARS)
+    async def m(a, b):
+        r = await session.call_tool("measure", {"path": "kit.aidl", "a": a, "b": b})
+        assert not r.is_error, _text(r)
+        return r.structured_content["measure"]
 
-        got = await m("disks.a.c", "disks.b.c")
-        assert got["center_distance"] == pytest.approx(20, abs=1e-9)
-        assert got["clearance"] == pytest.approx(12, abs=1e-9) and got["contact"] == "apart"
-        assert got["distance"] == pytest.approx(12, abs=1e-9)
-        got = await m("gear_a", "gear_b")
-        assert got["center_distance"] == pytest.approx(31, abs=1e-9)
-        assert got["contact"] == "apart" and 0 < got["clearance"] < 2
-        got = await m("disks.l1", "disks.l2")
-        assert got["angle"] == pytest.approx(45, abs=1e-9)
-        assert got["distance"] == pytest.approx(10, abs=1e-9)
-        got = await m("disks.a.c.center", "disks.b.c")
-        assert got["distance"] == pytest.approx(15, abs=1e-9)
-        r = await session.call_tool("measure", {"path": "kit.aidl", "a": "disks.a.c",
-                                                "b": "gear_c"})
-        assert r.is_error
-        err = r.structured_content["error"]
-        assert (err["code"], err["argument"]) == ("no_match", "b")
-        assert "gear_a" in err["message"] or "gear_b" in err["message"]
+    got = await m("disks.a.c", "disks.b.c")
+    assert got["center_distance"] == pytest.approx(20, abs=1e-9)
+    assert got["clearance"] == pytest.approx(12, abs=1e-9) and got["contact"] == "apart"
+    assert got["distance"] == pytest.approx(12, abs=1e-9)
+    got = await m("gear_a", "gear_b")
+    assert got["center_distance"] == pytest.approx(31, abs=1e-9)
+    assert got["contact"] == "apart" and 0 < got["clearance"] < 2
+    got = await m("disks.l1", "disks.l2")
+    assert got["angle"] == pytest.approx(45, abs=1e-9)
+    assert got["distance"] == pytest.approx(10, abs=1e-9)
+    got = await m("disks.a.c.center", "disks.b.c")
+    assert got["distance"] == pytest.approx(15, abs=1e-9)
+    r = await session.call_tool("measure", {"path": "kit.aidl", "a": "disks.a.c",
+                                            "b": "gear_c"})
+    assert r.is_error
+    err = r.structured_content["error"]
+    assert (err["code"], err["argument"]) == ("no_match", "b")
+    assert "gear_a" in err["message"] or "gear_b" in err["message"]
 
 
-@pytest.mark.asyncio
-async def test_import_drawing_returns_the_check_of_its_program(tmp_path):
+@pytest.mark.asyncio(loop_scope="module")
+async def test_import_drawing_returns_the_check_of_its_program(shared):
     """The program written from a DXF is checked in the same call: ok, its parts, dof."""
+    session, root = shared
     ezdxf = pytest.importorskip("ezdxf")
     doc = ezdxf.new()
     doc.header["$INSUNITS"] = 4
     msp = doc.modelspace()
     msp.add_lwpolyline([(0, 0), (60, 0), (60, 30), (0, 30)], close=True)
     msp.add_circle((15, 15), 3)
-    doc.saveas(tmp_path / "plate.dxf")
-    async with _session(tmp_path) as session:
-        r = await session.call_tool("import_drawing", {"path": "plate.dxf"})
-        assert not r.is_error, _text(r)
-        check = r.structured_content["check"]
-        assert check["ok"] and len(check["parts"]) == 1
-        x0, y0, x1, y1 = check["parts"][0]["bbox"]
-        assert (x1 - x0, y1 - y0) == pytest.approx((60, 30), abs=1e-6)
-        assert check["parts"][0]["holes"] == 1
-        assert "checked ok" in _text(r)
+    doc.saveas(root / "plate.dxf")
+    r = await session.call_tool("import_drawing", {"path": "plate.dxf"})
+    assert not r.is_error, _text(r)
+    check = r.structured_content["check"]
+    assert check["ok"] and len(check["parts"]) == 1
+    x0, y0, x1, y1 = check["parts"][0]["bbox"]
+    assert (x1 - x0, y1 - y0) == pytest.approx((60, 30), abs=1e-6)
+    assert check["parts"][0]["holes"] == 1
+    assert "checked ok" in _text(r)
 
 
 # each refusal kind, and the argument it must name
@@ -152,18 +152,18 @@ REFUSALS = [
 ]
 
 
-@pytest.mark.asyncio
-async def test_every_refusal_names_its_argument(tmp_path):
+@pytest.mark.asyncio(loop_scope="module")
+async def test_every_refusal_names_its_argument(shared):
     """docs/mcp.md: a refused call is `{ok: false, error: {code, message, argument}}`; each
     kind of refusal, driven through the real client, names the argument at fault (a refused
     `assembled` + `.dxf` render had none: issue 86)."""
-    (tmp_path / "plate.aidl").write_text(PLATE)
-    (tmp_path / "board.dxf").write_text("0\nEOF\n")
-    (tmp_path / "real").mkdir()
-    os.symlink(tmp_path / "real", tmp_path / "link")
-    async with _session(tmp_path) as session:
-        for tool, args, code, argument in REFUSALS:
-            r = await session.call_tool(tool, args)
-            assert r.is_error, (tool, args, _text(r))
-            err = r.structured_content["error"]
-            assert (err["code"], err.get("argument")) == (code, argument), (tool, args, err)
+    session, root = shared
+    (root / "plate.aidl").write_text(PLATE)
+    (root / "board.dxf").write_text("0\nEOF\n")
+    (root / "real").mkdir()
+    os.symlink(root / "real", root / "link")
+    for tool, args, code, argument in REFUSALS:
+        r = await session.call_tool(tool, args)
+        assert r.is_error, (tool, args, _text(r))
+        err = r.structured_content["error"]
+        assert (err["code"], err.get("argument")) == (code, argument), (tool, args, err)

@@ -323,7 +323,7 @@ LSP_ROWS = [t for t in TABLE if t[1] in ("gear_train", "finger_panel", "keyhole"
                                          "tool_holder")]
 
 
-@pytest.mark.asyncio
+@pytest.mark.asyncio(loop_scope="module")   # test_lsp's client: one server per module
 async def test_language_server_puts_template_errors_on_the_call(client: LanguageClient, tmp_path):
     """The editor shows the error on the call's line (0-based 3 for line 4), the template's
     line as related information in the template's own file."""
