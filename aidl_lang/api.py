@@ -11,7 +11,7 @@ True
 
 Every front end (``aidl check``/``render``, the MCP server, editors) goes through
 :func:`compile` and :class:`Result`; docs/api.md describes them.  A mistake in the program is
-never an exception: it is a :class:`~aidl_lang.diagnostics.Diagnostic` in
+never an exception: it is a :class:`~aidl_lang.base.diagnostics.Diagnostic` in
 :attr:`Result.diagnostics` and ``ok`` is False.  Exceptions are kept for mistakes in the
 *call* (:class:`TypeError`, :class:`ValueError`), for asking a failed result for geometry
 (:class:`NotCompiled`), and for outputs that cannot be made or written
@@ -32,8 +32,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Literal
 
-from .diagnostics import Diagnostic, DiagnosticSink
-from .limits import DEFAULT_BUDGET, Budget, now
+from .base.diagnostics import Diagnostic, DiagnosticSink
+from .base.limits import DEFAULT_BUDGET, Budget, now
 
 # `aidl check`, the language server and MCP's `check` look for redundant constraints (W0401)
 # for at most this long, in blocks of at most this many rows sharing unknowns (`aidl check
@@ -193,15 +193,15 @@ class Result:
     """What :func:`compile` made.
 
     Attributes: ``ok`` (no error diagnostics), ``diagnostics`` (every
-    :class:`~aidl_lang.diagnostics.Diagnostic`, errors and warnings, in the order found),
-    ``sink`` (the :class:`~aidl_lang.diagnostics.DiagnosticSink`: diagnostics and source texts,
+    :class:`~aidl_lang.base.diagnostics.Diagnostic`, errors and warnings, in the order found),
+    ``sink`` (the :class:`~aidl_lang.base.diagnostics.DiagnosticSink`: diagnostics and source texts,
     for :meth:`diagnostics_json`), ``path`` (the file name diagnostics are located in),
     ``source`` (the program text), ``units`` and ``unit_scale`` (the file's length unit and its
     size in mm), ``compiled`` (the pipeline's :class:`~aidl_lang.pipeline.Compiled`: model,
     solve, drawing), ``not_searched`` (the user constraints :meth:`find_redundant` did not
     look at) and ``not_searched_why`` (why: ``"out of time"``, ``"too large"`` or both, joined
     by " and "; "" when all were searched), ``deadline`` (a
-    :class:`~aidl_lang.limits.Deadline` bounding :attr:`output` and :attr:`description`;
+    :class:`~aidl_lang.base.limits.Deadline` bounding :attr:`output` and :attr:`description`;
     None, the default: the program's budget's seconds from each call)."""
 
     def __init__(self, compiled, path: str, source: str | None) -> None:
@@ -300,7 +300,7 @@ class Result:
         for v in self.values:
             if v.name == name or v.name == f"{self.compiled.model.root.name}.{name}":
                 return v
-        from .diagnostics import did_you_mean
+        from .base.diagnostics import did_you_mean
         near = did_you_mean(name, [v.name for v in self.values])
         raise KeyError(f"no value `{name}`" + (f"; did you mean {', '.join(near)}?" if near else ""))
 
@@ -310,15 +310,15 @@ class Result:
         ..."}``; with ``detail``, ``"structures"``: per structure ``{"structure", "unknowns",
         "dof", "floating"}`` (entities still free to move; costs a null-space computation;
         ``dof`` None and ``"not_counted"`` the reason for a structure not counted).
-        ``deadline`` (:func:`aidl_lang.limits.now`: CPU seconds) bounds the count; by default
+        ``deadline`` (:func:`aidl_lang.base.limits.now`: CPU seconds) bounds the count; by default
         the program's budget from now (15 s of CPU time), so no call runs unbounded (issue 48).  Raises
         :class:`NotCompiled`."""
         self._need("degrees of freedom")
-        from .solver.freedom import degrees_of_freedom, freedom_text
+        from .solver.diagnosis.freedom import degrees_of_freedom, freedom_text
         if deadline is None:
             budget = self.compiled.deadline.budget if self.compiled.deadline else DEFAULT_BUDGET
             deadline = now() + budget.seconds
-        from .limits import is_out_of_memory, memory_text
+        from .base.limits import is_out_of_memory, memory_text
         try:
             dofs = degrees_of_freedom(self.compiled.solve.solver, floating=detail,
                                       deadline=deadline)
@@ -344,14 +344,14 @@ class Result:
         return doc
 
     def sliding(self):
-        """What the freedom left means (:class:`~aidl_lang.solver.sliding.Sliding`: the parts
+        """What the freedom left means (:class:`~aidl_lang.solver.diagnosis.sliding.Sliding`: the parts
         whose whole body may move, harmless, and the features that can slide relative to
         their part, ``W0404``), or None for a model too large to search.  Raises
         :class:`NotCompiled`."""
         self._need("degrees of freedom")
         if self._sliding is None:
             from .pipeline import MAX_SLIDING_UNKNOWNS
-            from .solver.sliding import sliding
+            from .solver.diagnosis.sliding import sliding
             solver = self.compiled.solve.solver
             if int(solver.free.sum()) <= MAX_SLIDING_UNKNOWNS:
                 self._sliding = sliding(solver)
@@ -362,17 +362,17 @@ class Result:
         """This program checked across its params' ranges (``aidl check --sweep``, MCP
         ``check`` with ``sweep: true``; docs/language.md, "Sweeping the ranges": the declared
         ``min=``/``max=``, else the span the studio's slider gives the param): a
-        :class:`~aidl_lang.sweep.SweepReport` whose ``findings`` (``W0110``, located at the
+        :class:`~aidl_lang.params.sweep.SweepReport` whose ``findings`` (``W0110``, located at the
         ``param`` lines) name each value where the design stops compiling, a part changes
         topology or a new warning appears, with the largest clean sub-range.  ``budget``: a
-        factor or :class:`~aidl_lang.limits.Budget` for each compile, scaling the sweep's work
-        budget (:data:`aidl_lang.sweep_plan.WORK`: the same answer on any machine), and in
+        factor or :class:`~aidl_lang.base.limits.Budget` for each compile, scaling the sweep's work
+        budget (:data:`aidl_lang.params.sweep_plan.WORK`: the same answer on any machine), and in
         CPU seconds the whole sweep's outer guard (``seconds`` overrides it); ``points``: the Latin
-        hypercube's size (default :data:`aidl_lang.sweep.LHS_POINTS`).  The report is kept
+        hypercube's size (default :data:`aidl_lang.params.sweep.LHS_POINTS`).  The report is kept
         as :attr:`swept`: a notebook form made from this result
         (:func:`aidl_lang.notebook.form`) offers only its clean ranges.  Raises
         :class:`TypeError` for a result with no source text."""
-        from .sweep import LHS_POINTS, sweep
+        from .params.sweep import LHS_POINTS, sweep
         if self.source is None:
             raise TypeError("sweep() needs the program's source text")
         self.swept = sweep(self.source, self.path, budget,
@@ -385,7 +385,7 @@ class Result:
         """Look for constraints that others already imply and add each as a ``W0401`` warning
         to :attr:`diagnostics` (what ``aidl check`` does; docs/solver.md §6); returns those
         warnings.  ``seconds`` bounds the search (None: no bound), and so does ``deadline``
-        (a :func:`aidl_lang.limits.now` value: the end of the run's budget in CPU seconds), ``max_rows``
+        (a :func:`aidl_lang.base.limits.now` value: the end of the run's budget in CPU seconds), ``max_rows``
         the blocks of rows it ranks; the user constraints not looked at (out of time, or in
         a block too large) are counted in :attr:`not_searched`.  Runs once per result; []
         when the program did not solve.  A search that runs out of memory adds one located
@@ -393,7 +393,7 @@ class Result:
         if self._redundant is None:
             self._redundant = []
             if self.compiled.ok and self.compiled.solve is not None:
-                from .limits import is_out_of_memory
+                from .base.limits import is_out_of_memory
                 from .pipeline import out_of_memory_sink, report_redundancies, report_sliding
                 before = len(self.sink.items)
                 why: set = set()
@@ -429,7 +429,7 @@ class Result:
         centre, else its origin);
         ``angle`` between two lines (0 to 180 degrees, from ``a``'s direction to ``b``'s);
         ``clearance`` and ``contact`` between two closed shapes or parts
-        (:func:`aidl_lang.output.part.gaps.clearance`: ``apart`` with the gap, ``touching``
+        (:func:`aidl_lang.output.part.measure.gaps.clearance`: ``apart`` with the gap, ``touching``
         0, ``overlapping`` negative: how deep one runs into the other, and
         ``overlap_area`` mm², exact for outlines of lines, arcs and circles, else an estimate
         with ``overlap_area_within`` its bound).  An assembly (a structure with no outline
@@ -503,7 +503,7 @@ class Result:
             return {"kind": kind, "loops": loops,
                     "pieces": G.pieces([sg for lp in flat for sg in lp.segments]),
                     "center": center}
-        from .diagnostics import did_you_mean
+        from .base.diagnostics import did_you_mean
         every = sorted(set(geo) | set(structs) | set(points))
         near = did_you_mean(name, every, 3)
         raise KeyError(f"nothing is named `{name}`"
@@ -512,7 +512,7 @@ class Result:
 
     def _renderer(self):
         if self._measure_renderer is None:
-            from .output.part.booleans import Renderer
+            from .output.part.build.booleans import Renderer
             self._measure_renderer = Renderer(self.compiled.model)
         return self._measure_renderer
 
@@ -594,13 +594,13 @@ class Result:
         return self._output
 
     def _after_deadline(self):
-        """The :class:`~aidl_lang.limits.Deadline` of the output, the parts list and the
+        """The :class:`~aidl_lang.base.limits.Deadline` of the output, the parts list and the
         description: :attr:`deadline` when set (``aidl check --describe`` sets the compile's
         own, one budget for the whole command), else the program's budget's seconds from now
         (past it: :class:`~aidl_lang.output.part.part.OutputError`, a located ``E0304``)."""
         if self.deadline is not None:
             return self.deadline
-        from .limits import Deadline
+        from .base.limits import Deadline
         budget = self.compiled.deadline.budget if self.compiled.deadline else DEFAULT_BUDGET
         return Deadline.starting(budget)
 
@@ -610,18 +610,18 @@ class Result:
         each part its outline's kind, size and box, each opening's kind (circle ``d``, slot
         ``w`` x ``l``, rectangle, polygon ``n``, outline), centre and size, its engravings
         (text with its string) and place, its copies and symmetries; mm and degrees
-        (:func:`aidl_lang.output.checks.describe.describe`): a part of the same shape as one
+        (:func:`aidl_lang.output.checks.reports.describe.describe`): a part of the same shape as one
         described, with nothing of its own, is one of its ``copies`` (name and box).  Raises
         :class:`NotCompiled`, and :class:`~aidl_lang.output.part.part.OutputError` past the
         wall-time budget (:meth:`_after_deadline`)."""
-        from .output.checks.describe import describe
+        from .output.checks.reports.describe import describe
         deadline = self._after_deadline()
         return describe(self._built(deadline), deadline)
 
     def describe(self) -> str:
         """:attr:`description` as compact text, one line per feature, e.g. ``circle d=6 at
         (10, 5)`` (``aidl check --describe``).  Raises :class:`NotCompiled`."""
-        from .output.checks.describe import describe_text
+        from .output.checks.reports.describe import describe_text
         return describe_text(self.description)
 
     @property
@@ -690,7 +690,7 @@ class Result:
         from .output.fabrication.layout import place, plan
         deadline = self.compiled.deadline
         if deadline is not None and nest_time:
-            from .limits import Deadline
+            from .base.limits import Deadline
             from .output.fabrication.layout import nest_cpu_seconds
             deadline = Deadline(deadline.at + nest_cpu_seconds(nest_time), deadline.budget)
         cut = for_cutting(self.output, kerf, deadline, apart=True)   # pieces apart: whole
@@ -823,7 +823,7 @@ def compile(source: str | None = None, path: str | os.PathLike | None = None,
     ``import "x.aidl"`` is resolved from) or ``path`` alone (the file is read as UTF-8).
     ``overrides``: param values as ``aidl render --set`` takes them (``{"width": "40 mm"}``,
     numbers are in the file's units).  ``budget``: a factor of the default evaluation budget
-    (``aidl --budget K``) or a :class:`~aidl_lang.limits.Budget`.  ``min_wall``: the W0507 wall
+    (``aidl --budget K``) or a :class:`~aidl_lang.base.limits.Budget`.  ``min_wall``: the W0507 wall
     thickness in mm (0: off), overriding the program's ``min_wall`` statements (None: theirs,
     else 0.5 mm).
 
@@ -831,7 +831,7 @@ def compile(source: str | None = None, path: str | os.PathLike | None = None,
     diagnostics and ``ok`` is False.  Raises :class:`TypeError` when neither ``source`` nor
     ``path`` is given, and :class:`ValueError` for a budget factor outside (0, 1000] or a
     ``min_wall`` that is neither 0 nor from 0.001 to 1e6 mm (NaN, negative, infinite:
-    :func:`~aidl_lang.limits.min_wall_problem`)."""
+    :func:`~aidl_lang.base.limits.min_wall_problem`)."""
     from .pipeline import compile_source
     if source is None and path is None:
         raise TypeError("compile() needs source= (the program text) or path= (a file)")
@@ -845,13 +845,13 @@ def compile(source: str | None = None, path: str | os.PathLike | None = None,
             raise ValueError(f"budget expects a factor between 0 and 1000, got {budget!r}")
         b = DEFAULT_BUDGET.scaled(k)
     if min_wall is not None:
-        from .limits import min_wall_problem
+        from .base.limits import min_wall_problem
         why = min_wall_problem(float(min_wall))
         if why is not None:
             raise ValueError(f"min_wall: {why}")
     name = os.fspath(path) if path is not None else "<source>"
     if source is None:
-        from .sources import SourceRefused, read_program
+        from .library.sources import SourceRefused, read_program
         try:
             source = read_program(name)
         except SourceRefused as e:
@@ -880,7 +880,7 @@ def _html(result: Result, svg: str | None, problem: list[Diagnostic] | None) -> 
     drawing; every text escaped."""
     import base64
     from html import escape
-    from .diagnostics import render_text
+    from .base.diagnostics import render_text
     parts = [f'<div class="aidl-result"><div style="font-family:monospace">'
              f'{escape(result.summary())}</div>']
     if svg is not None:
@@ -906,7 +906,7 @@ def _html(result: Result, svg: str | None, problem: list[Diagnostic] | None) -> 
 def _unreadable(name: str, e: Exception) -> Result:
     from .pipeline import Compiled
     sink = DiagnosticSink()
-    from .diagnostics import Span
+    from .base.diagnostics import Span
     sink.add(Diagnostic("E0004", str(e), Span(name, 1, 1, 1, 1, 0, 0),
                         hint="give a regular UTF-8 .aidl file (programs and imports have at "
                              "most 1000000 bytes)"))
@@ -1132,7 +1132,7 @@ def set_params(source: str, values: Mapping[str, str | float | bool],
     (``no_match`` for an unknown name, with the nearest; ``bad_value`` with the E0113/E0124
     diagnostic: nothing is returned to write), :class:`ValueError` for a program that does not
     parse (its params cannot be found) or an empty ``values``."""
-    from .diagnostics import did_you_mean
+    from .base.diagnostics import did_you_mean
     from .parser import parse
     from . import ast as A
     if not values:
@@ -1153,7 +1153,7 @@ def set_params(source: str, values: Mapping[str, str | float | bool],
                    " (it declares none: add `param NAME = VALUE` at the top)"),
                 "no_match", str(k), near)
     texts = {k: _param_text(v, decls[k].value) for k, v in values.items()}
-    from .set_values import comment_problem
+    from .params.set_values import comment_problem
     for k, t in texts.items():
         d = comment_problem(source, decls[k], t)
         if d is not None:           # `w=40 mm # x` would comment out the range (E0113)

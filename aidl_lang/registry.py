@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 
-from .records import Frozen, Record
+from .base.records import Frozen, Record
 
 REQUIRED = object()
 
@@ -812,7 +812,7 @@ def near_args(name: str, names: list[str]) -> list[str]:
     """Accepted argument names near ``name`` in spelling, for did-you-mean: none shorter than
     3 letters unless ``name`` is that short too (`font` is not `on`, though difflib says
     0.67)."""
-    from .diagnostics import did_you_mean
+    from .base.diagnostics import did_you_mean
     return [c for c in did_you_mean(name, names) if len(c) >= 3 or len(name) <= 3]
 
 

@@ -1,12 +1,12 @@
 """The freedom count on `aidl check`'s ok line (each structure's unknowns against its own rows
-and its ancestors' rows that use them) (solver/diagnose.py `degrees_of_freedom(...,
+and its ancestors' rows that use them) (solver/diagnosis/diagnose.py `degrees_of_freedom(...,
 floating=False)`) takes each structure's Jacobian out of the whole model's one, and ranks
 single-row blocks without an SVD: the same matrices, bit for bit, and the same counts as each
 structure's own tape and an SVD per block, on every example, test program and generated
 hierarchy."""
 from __future__ import annotations
 
-from aidl_lang.limits import now as budget_clock      # the budget's clock: CPU seconds
+from aidl_lang.base.limits import now as budget_clock      # the budget's clock: CPU seconds
 
 import pathlib
 import time
@@ -16,8 +16,8 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from aidl_lang.pipeline import compile_source
-from aidl_lang.solver import diagnose as D, freedom, redundancy, sliding
-from aidl_lang.solver.arrays import unique
+from aidl_lang.solver.diagnosis import diagnose as D, freedom, redundancy, sliding
+from aidl_lang.solver.core.arrays import unique
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 PROGRAMS = sorted((ROOT / "examples").glob("*.aidl")) + sorted((ROOT / "tests/programs").glob("*.aidl"))
@@ -563,7 +563,7 @@ def test_a_chain_of_2500_points_is_searched_for_redundancy_in_a_blink(monkeypatc
     """The issue's reproducer: 2 500 chained points, and one Distance said twice.  The whole
     chain peels to the two rows of the repeated constraint."""
     src = _chain(2500, "    Distance(pts[0], pts[1], 0.1)\n")
-    from aidl_lang.limits import DEFAULT_BUDGET
+    from aidl_lang.base.limits import DEFAULT_BUDGET
     c = compile_source(src, "chain.aidl", budget=DEFAULT_BUDGET.scaled(5))
     assert c.ok
     sizes = []

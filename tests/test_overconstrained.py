@@ -13,7 +13,7 @@ finds.
 """
 from __future__ import annotations
 
-from aidl_lang.limits import now as budget_clock      # the budget's clock: CPU seconds
+from aidl_lang.base.limits import now as budget_clock      # the budget's clock: CPU seconds
 
 import random
 import re
@@ -25,9 +25,10 @@ from hypothesis import HealthCheck, event, given, settings
 from hypothesis import strategies as st
 
 import aidl_lang
-from aidl_lang.limits import DEFAULT_BUDGET
+from aidl_lang.base.limits import DEFAULT_BUDGET
 from aidl_lang.pipeline import compile_source
-from aidl_lang.solver import Solver, diagnose as D, freedom, redundancy
+from aidl_lang.solver import Solver
+from aidl_lang.solver.diagnosis import diagnose as D, freedom, redundancy
 
 from conftest import EXAMPLES, ROOT
 

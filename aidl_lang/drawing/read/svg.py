@@ -62,7 +62,7 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
                         break
             if el is None:
                 ids = sorted({x.id for x in svg.elements() if getattr(x, "id", None)})
-                from ...diagnostics import did_you_mean
+                from ...base.diagnostics import did_you_mean
                 sugg = did_you_mean(w, ids)
                 raise DrawingError("E0132", f"`{name}` has no element or group with {what} "
                                             f"`{w}`",

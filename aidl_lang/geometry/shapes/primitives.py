@@ -1091,7 +1091,7 @@ def _build_Text(ctx, g, a):
 
 def _stencil(ctx, g, a) -> None:
     """``Text(..., stencil=true)``: a closed shape, the letters' openings with bridges
-    (:mod:`aidl_lang.output.part.stencil`); ``weight`` and ``bridge`` in mm."""
+    (:mod:`aidl_lang.output.part.build.stencil`); ``weight`` and ``bridge`` in mm."""
     if a.get("along") is not None:
         raise PrimitiveError("a stencil Text is written on a straight baseline: leave out "
                              "along=, or engrave the text along the curve (stencil=false)")

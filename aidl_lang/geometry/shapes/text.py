@@ -36,12 +36,12 @@ def _glyphs() -> dict:
     """Every glyph of the font, normalized (``normalize_rendering(1.0)``): character ->
     ``(strokes, advance)``, each stroke a tuple of ``(x, y)`` points at pen position 0 and
     ``advance`` the pen's move to the next character, exactly as the package's render iterator
-    computes them.  Kept as JSON in the user's cache folder (:mod:`aidl_lang.cache`), so a
+    computes them.  Kept as JSON in the user's cache folder (:mod:`aidl_lang.host.cache`), so a
     cold run neither imports the package (~10 ms: it imports ``tarfile``) nor unpacks its bz2
     archive of every Hershey font."""
     import json
 
-    from ...cache import cache_dir, read_checked, write_checked
+    from ...host.cache import cache_dir, read_checked, write_checked
     d = cache_dir()
     key = f"hershey {FONT} {_GLYPHS_FORMAT}"
     path = d / f"hershey-{FONT}.json" if d is not None else None

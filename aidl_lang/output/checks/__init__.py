@@ -1,12 +1,12 @@
 """Geometry checks on the final shape: warnings about parts that solve but come out wrong.
 
-In: the booleans' :class:`~aidl_lang.output.part.booleans.Drawing`, the exact output model and
+In: the booleans' :class:`~aidl_lang.output.part.build.booleans.Drawing`, the exact output model and
 (for the fit check) the assembled product.  Out: W05xx diagnostics on the sink, and what the
 final part is as data and text (:mod:`.describe`, ``aidl check --describe``) and its parts list
 (:mod:`.inventory`, ``aidl parts``).  Imports the part and fabrication stages, never the writers.
 
-The booleans (:mod:`aidl_lang.output.part.booleans`) record each structure's shape and what each hole cut; these
-checks read them (docs/outputs.md, "Checks"; every code is in :mod:`aidl_lang.codes`).
+The booleans (:mod:`aidl_lang.output.part.build.booleans`) record each structure's shape and what each hole cut; these
+checks read them (docs/outputs.md, "Checks"; every code is in :mod:`aidl_lang.base.codes`).
 :func:`check_drawing` is the one entry point (run by :mod:`aidl_lang.pipeline` and the live
 preview); :func:`check_topology` (W0510) is run beside it when param values are overridden.
 One module per family:
@@ -48,24 +48,24 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...diagnostics import DiagnosticSink
-from ..part.booleans import Drawing
+from ...base.diagnostics import DiagnosticSink
+from ..part.build.booleans import Drawing
 from .allowances import check_allowances
 from .assembly import _check_fit
 from .changes import Topology, check_topology, topology, topology_changes
-from .common import (MIN_AREA, MIN_FRACTION, MIN_WALL, _cut_openings, _edges, _inside,
+from .common import (MIN_AREA, MIN_FRACTION, MIN_WALL, part_min_wall, _cut_openings, _edges, _inside,
                      _inside_loops, _part_of, _part_roots, _signed, _union)
-from .engravings import (_SURELY_GROWN, ENGRAVE_TOL, _check_engraving, _check_zero_lines,
+from .marks.engravings import (_SURELY_GROWN, ENGRAVE_TOL, _check_engraving, _check_zero_lines,
                          _n_samples, _sample,
                          _samples, _within)
-from .openings import (TOUCH, _analyse, _check_flush, _check_hole, _check_overlapping_circles,
+from .holes.openings import (TOUCH, _analyse, _check_flush, _check_hole, _check_overlapping_circles,
                        _check_repeated_faces,
                        _check_voids, _intended, _Near, _report_openings)
 from .parts import (_check_interpenetration, _check_steps, _check_invisible, _check_pieces,
                     check_stray_holes, empty_faces)
-from .text import _check_text_overlap
-from .through import check_sheet_cuts, check_through
-from .walls import (THIN_SECONDS_PER_VERTEX, _check_slits, TILE_VERTS, UNION_GROUP, WHOLE_LOOPS, WHOLE_VERTS,
+from .marks.text import _check_text_overlap
+from .material.through import check_sheet_cuts, check_through
+from .material.walls import (THIN_SECONDS_PER_VERTEX, _check_slits, TILE_VERTS, UNION_GROUP, WHOLE_LOOPS, WHOLE_VERTS,
                     _check_necks, _check_walls, _isolated_loops, _loop_boxes, _open, _point_of, _thin)
 
 # the names other modules, the tests and the benchmarks import from here (patching one of the
@@ -78,16 +78,6 @@ __all__ = ["check_drawing", "check_stray_holes", "check_topology", "topology", "
            "_intended", "_isolated_loops", "_loop_boxes", "_n_samples", "_Near", "_open",
            "_part_of", "_part_roots", "_point_of", "_report_openings", "_sample", "_samples",
            "_signed", "_thin", "_union", "_within"]
-
-def part_min_wall(d: Drawing, part, given: float | None = None) -> float:
-    """The minimum wall (mm) the checks hold part ``part`` to: ``given`` (the command line's
-    ``--min-wall``) when set, else the program's ``min_wall`` statement for it (its own, an
-    ancestor's or the top level's: :attr:`Drawing.min_wall`), else :data:`MIN_WALL`."""
-    if given is not None:
-        return given
-    own = getattr(d, "min_wall", None) or {}
-    name = getattr(part, "path", None)
-    return own.get(name, MIN_WALL) if name is not None else MIN_WALL
 
 
 CHECK_SHARE = 0.2     # of the budget's CPU time (3 s of the default 15 s): what each family
@@ -131,7 +121,7 @@ class _Shares:
     live preview's own call) there are no shares, only the pair limit."""
 
     def __init__(self, deadline):
-        from ...limits import now
+        from ...base.limits import now
         self.clock = now               # the budget's clock: CPU seconds
         self.deadline = deadline
         self.seconds = (deadline.budget.seconds * CHECK_SHARE if deadline is not None
@@ -156,7 +146,7 @@ class _Shares:
     def run(self, family: str, part, fn):
         """``fn()`` as family ``family`` on ``part`` (a Structure or None); its result, or
         None when it was stopped or not run."""
-        from ..part.nearby import TooManyPairs
+        from ..part.measure.nearby import TooManyPairs
         if family in self.skipped:
             self.skipped[family][1].append(part)
             return None
@@ -177,7 +167,7 @@ class _Shares:
     def guard(self, family: str, part, fn):
         """``fn()`` with no share of its own (it runs on the compile's deadline alone), only
         the pair limit: a family that must end with E0304 rather than stop early."""
-        from ..part.nearby import TooManyPairs
+        from ..part.measure.nearby import TooManyPairs
         try:
             return fn()
         except TooManyPairs as ex:
@@ -186,7 +176,7 @@ class _Shares:
 
     def notes(self, sink: DiagnosticSink, min_wall: float) -> None:
         """One ``W0521`` note per family that did not check everything."""
-        from ...diagnostics import Diagnostic
+        from ...base.diagnostics import Diagnostic
         for family, (why, parts) in self.skipped.items():
             what, codes = FAMILIES[family]
             named = list(dict.fromkeys(f"`{p.path}`" for p in parts if p is not None))
@@ -252,8 +242,8 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float | None = Non
     (mm) is W0507's minimum wall (0 turns that check off; W0508, holes that merge, stays on),
     overriding the program's ``min_wall`` statements (:func:`part_min_wall`); None: theirs,
     else :data:`MIN_WALL`.
-    ``deadline``: the compile's :class:`~aidl_lang.limits.Deadline`, checked between
-    structures and holes (raises :class:`~aidl_lang.limits.OutOfBudget`); each family of
+    ``deadline``: the compile's :class:`~aidl_lang.base.limits.Deadline`, checked between
+    structures and holes (raises :class:`~aidl_lang.base.limits.OutOfBudget`); each family of
     checks holds :data:`CHECK_SHARE` of it and past that stops with a ``W0521`` note
     (:class:`_Shares`)."""
     from . import common

@@ -15,10 +15,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...diagnostics import DiagnosticSink
+from ...base.diagnostics import DiagnosticSink
 from ...geometry.core.model import Structure
-from ..part.booleans import Drawing
-from ..part.nearby import box_pairs
+from ..part.build.booleans import Drawing
+from ..part.measure.nearby import box_pairs
 from .common import _area
 
 TOUCH = 1e-3        # mm: two shapes this close touch (W0508 merges touching holes)

@@ -1,0 +1,3 @@
+"""The exact edges of the output: :mod:`.exact` (which exact curve each polygon edge came from),
+:mod:`.shared` (the edges two pieces of one part share). Imports geometry only.
+"""
