@@ -190,7 +190,7 @@ def main(argv: list[str]) -> int:
     from . import row as rows
     from .. import pipeline  # noqa: F401
     from ..output import build, encode  # noqa: F401
-    from ..solver import diagnose, freedom, redundancy, sliding  # noqa: F401
+    from ..solver.diagnosis import diagnose, freedom, redundancy, sliding  # noqa: F401
     _warm_up(rows)
     tx.send("ready")
     while True:

@@ -1,39 +1,18 @@
-"""The public Python API: compile an AIDL program and read what it made.
-
->>> import aidl_lang
->>> r = aidl_lang.compile(source="solid plate { body = Rectangle(center=(0, 0), width=40, height=20) }")
->>> r.ok
-True
->>> r.value("plate.body.width").text()
-'plate.body.width = 40.000 mm'
->>> r.parts[0].bbox
-(-20.0, -10.0, 20.0, 10.0)
-
-Every front end (``aidl check``/``render``, the MCP server, editors) goes through
-:func:`compile` and :class:`Result`; docs/api.md describes them.  A mistake in the program is
-never an exception: it is a :class:`~aidl_lang.base.diagnostics.Diagnostic` in
-:attr:`Result.diagnostics` and ``ok`` is False.  Exceptions are kept for mistakes in the
-*call* (:class:`TypeError`, :class:`ValueError`), for asking a failed result for geometry
-(:class:`NotCompiled`), and for outputs that cannot be made or written
-(:class:`~aidl_lang.output.part.part.OutputError`, :class:`~aidl_lang.output.writers.write.WriteError`).
-
-Units: the model is solved in millimetres and radians.  :attr:`Result.parts` and
-:meth:`Result.to_svg`/``write`` are in millimetres; :attr:`Result.values` are given in the
-file's own units (``units in`` / ``cm`` / ...; mm when the file declares none) and degrees,
-with the unit named in :attr:`Value.unit`.
+"""The result of a compile, :class:`Result`: the diagnostics, the solved values and what the
+program made (parts, outputs, measures, the degrees of freedom), each made when first read;
+:class:`NotCompiled` for a failed result asked for geometry.  Made by :mod:`.compiling`; the
+records it reports in are :mod:`.values`.
 """
 from __future__ import annotations
 
 import math
 import os
-import re
-from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
+from collections.abc import Iterable
 from pathlib import Path
-from typing import Literal
 
-from .base.diagnostics import Diagnostic, DiagnosticSink
-from .base.limits import DEFAULT_BUDGET, Budget, now
+from ..base.diagnostics import Diagnostic, DiagnosticSink
+from ..base.limits import DEFAULT_BUDGET, Budget, now
+from .values import Layout, PartInfo, Value, _below, _geometry_names, _values, exact_bbox, file_units
 
 # `aidl check`, the language server and MCP's `check` look for redundant constraints (W0401)
 # for at most this long, in blocks of at most this many rows sharing unknowns (`aidl check
@@ -41,152 +20,9 @@ from .base.limits import DEFAULT_BUDGET, Budget, now
 REDUNDANCY_SECONDS = 1.0
 REDUNDANCY_ROWS = 1000
 
-__all__ = ["compile", "Result", "Value", "PartInfo", "Layout", "NotCompiled", "WriteError",
-           "set_params", "ParamsRefused"]
-
-
-def __getattr__(name: str):
-    # WriteError lives with the output-file rules (aidl_lang.output.writers.write); imported on first
-    # use, as the output package loads Manifold (0.3 s) and this facade stays quick to import
-    if name == "WriteError":
-        from .output.writers.write import WriteError
-        return WriteError
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
 class NotCompiled(RuntimeError):
     """Raised when a :class:`Result` whose program has errors is asked for geometry or an
     output (``parts``, ``to_svg``, ``write``, ...); read :attr:`Result.diagnostics` instead."""
-
-
-@dataclass(frozen=True)
-class Value:
-    """One solved value of a named entity.
-
-    ``name``: the dotted path (``plate.corner[0].h.center``); ``kind``: ``point`` (``value`` is
-    ``(x, y)``), ``length`` or ``angle`` or ``number`` (a float), ``box`` (``(left, bottom,
-    right, top)``); ``unit``: the unit of ``value`` (the file's length unit, ``deg`` for
-    angles, ``""`` for plain numbers).  ``mm`` holds the same value in millimetres (or radians
-    for an angle): what the solver and the writers use."""
-
-    name: str
-    kind: Literal["point", "length", "angle", "number", "box"]
-    value: float | tuple[float, ...]
-    unit: str
-    mm: float | tuple[float, ...]
-
-    def text(self, digits: int = 3) -> str:
-        """``name = value unit``, e.g. ``plate.bore.c.center = (-25.000, -15.000) mm``."""
-        if isinstance(self.value, tuple):
-            v = "(" + ", ".join(f"{c:.{digits}f}" for c in self.value) + ")"
-        else:
-            v = f"{self.value:.{digits}f}"
-        return f"{self.name} = {v}" + (f" {self.unit}" if self.unit else "")
-
-    def to_json(self) -> dict:
-        """``{"name", "kind", "value", "unit", "mm"}``; tuples as lists."""
-        def j(v):
-            return list(v) if isinstance(v, tuple) else v
-        return {"name": self.name, "kind": self.kind, "value": j(self.value), "unit": self.unit,
-                "mm": j(self.mm)}
-
-
-@dataclass(frozen=True)
-class PartInfo:
-    """One part of the final shape (after the booleans), in millimetres.
-
-    ``name``: the structure's path; ``kind``: ``solid`` (or ``hole`` for a hole with no solid to
-    cut); ``bbox``: ``(x0, y0, x1, y1)``; ``area``: mm² (holes subtracted); ``holes``: the
-    number of inner loops (holes through the part); ``loops``: every loop (outer and inner)."""
-
-    name: str
-    kind: str
-    bbox: tuple[float, float, float, float]
-    area: float
-    holes: int
-    loops: int
-
-    def to_json(self) -> dict:
-        return {"name": self.name, "kind": self.kind, "bbox": list(self.bbox),
-                "area": self.area, "holes": self.holes, "loops": self.loops}
-
-
-class Layout:
-    """A cutting layout (:meth:`Result.layout`, ``aidl render --layout sheet``): every solid
-    part placed once, flat, without overlap, on sheets of ``size`` = (width, height) mm, one
-    material thickness per sheet.
-
-    ``sheets``: the number of sheets; ``parts``: the number of parts placed; ``dropped``: the
-    engraving strokes outside every part, left out; ``text``: ``laid out 6 parts on 2 sheets
-    of 200 x 150 mm``; ``where``: one dict part name -> turn in degrees per sheet.
-    :meth:`encode` gives each sheet's file, :meth:`placements` where each part went."""
-
-    def __init__(self, cut: list, solid: list, size: tuple[float, float], dropped: int,
-                 where: list | None = None) -> None:
-        self._cut, self._solid = cut, solid
-        self.size = (float(size[0]), float(size[1]))
-        self.sheets = len(cut)
-        self.parts = sum(len(s.parts) for s in cut)
-        self.dropped = dropped
-        self.where = [{name: float(m.deg) for name, m in moves.items()}
-                      for moves in (where or [])]
-
-    def placements(self) -> list[dict]:
-        """Where each part went: ``[{"part", "sheet" (1-based), "rotation" (degrees),
-        "bbox" [x0, y0, x1, y1] mm on the sheet (as designed, before the kerf)}]``, and
-        each sheet's use: :meth:`use`."""
-        out = []
-        for j, sheet in enumerate(self._solid):
-            turns = self.where[j] if j < len(self.where) else {}
-            for p in sheet.parts:
-                box = exact_bbox(seg for lp in p.loops for seg in lp.segments)
-                out.append({"part": p.name, "sheet": j + 1,
-                            "rotation": turns.get(p.name, 0.0),
-                            "bbox": [round(float(v), 6) for v in box]})
-        return out
-
-    def use(self) -> list[float]:
-        """Each sheet's use: the parts' area (holes subtracted) over the sheet's, 0 to 1."""
-        whole = self.size[0] * self.size[1]
-        return [round(sum(float(p.area) for p in s.parts) / whole, 4) for s in self._solid]
-
-    @property
-    def text(self) -> str:
-        return (f"laid out {self.parts} parts on {self.sheets} "
-                f"sheet{'s' if self.sheets != 1 else ''} of {self.size[0]:g} x {self.size[1]:g} mm")
-
-    def encode(self, fmt: str, **options) -> list[bytes]:
-        """Every sheet in format ``fmt`` (as :meth:`Result.encode`), one item per sheet: SVG,
-        DXF and PNG the cuts as laid out (offset by half the kerf the layout was made with),
-        STL, 3MF, STEP and GLB the designed parts placed as on the sheet.  ``options``: those
-        of :meth:`Result.encode` but ``assembled``.  Raises :class:`ValueError` for an unknown
-        format, :class:`~aidl_lang.output.part.part.MissingDependency` and
-        :class:`~aidl_lang.output.part.part.OutputError`."""
-        from .output import CUT_FORMATS, FORMATS, Options, encode
-        suffix = "." + fmt.lower().lstrip(".")
-        if suffix not in FORMATS:
-            raise ValueError(f"unknown output format `{fmt}`; use one of "
-                             + ", ".join(sorted(f[1:] for f in FORMATS)))
-        sheets = self._cut if suffix in CUT_FORMATS else self._solid
-        return [encode(s, suffix, Options(**options)) for s in sheets]
-
-    def __repr__(self) -> str:
-        return f"<aidl Layout {self.text}>"
-
-
-_UNITS = re.compile(r"^[ \t]*units[ \t]+([A-Za-z]+)", re.M)
-
-
-def file_units(source: str) -> tuple[str, float]:
-    """The length unit a file declares (``units in``) and its size in mm; ``("mm", 1.0)``
-    when it declares none or an unknown one."""
-    from .registry import UNITS_LENGTH
-    for m in _UNITS.finditer(source):
-        u = m.group(1).lower()
-        if u in UNITS_LENGTH:
-            name = {"inch": "in", "inches": "in"}.get(u, u)
-            return name, UNITS_LENGTH[u]
-    return "mm", 1.0
 
 
 class Result:
@@ -300,7 +136,7 @@ class Result:
         for v in self.values:
             if v.name == name or v.name == f"{self.compiled.model.root.name}.{name}":
                 return v
-        from .base.diagnostics import did_you_mean
+        from ..base.diagnostics import did_you_mean
         near = did_you_mean(name, [v.name for v in self.values])
         raise KeyError(f"no value `{name}`" + (f"; did you mean {', '.join(near)}?" if near else ""))
 
@@ -314,11 +150,11 @@ class Result:
         the program's budget from now (15 s of CPU time), so no call runs unbounded (issue 48).  Raises
         :class:`NotCompiled`."""
         self._need("degrees of freedom")
-        from .solver.diagnosis.freedom import degrees_of_freedom, freedom_text
+        from ..solver.diagnosis.freedom import degrees_of_freedom, freedom_text
         if deadline is None:
             budget = self.compiled.deadline.budget if self.compiled.deadline else DEFAULT_BUDGET
             deadline = now() + budget.seconds
-        from .base.limits import is_out_of_memory, memory_text
+        from ..base.limits import is_out_of_memory, memory_text
         try:
             dofs = degrees_of_freedom(self.compiled.solve.solver, floating=detail,
                                       deadline=deadline)
@@ -350,8 +186,8 @@ class Result:
         :class:`NotCompiled`."""
         self._need("degrees of freedom")
         if self._sliding is None:
-            from .pipeline import MAX_SLIDING_UNKNOWNS
-            from .solver.diagnosis.sliding import sliding
+            from ..pipeline import MAX_SLIDING_UNKNOWNS
+            from ..solver.diagnosis.sliding import sliding
             solver = self.compiled.solve.solver
             if int(solver.free.sum()) <= MAX_SLIDING_UNKNOWNS:
                 self._sliding = sliding(solver)
@@ -372,7 +208,7 @@ class Result:
         as :attr:`swept`: a notebook form made from this result
         (:func:`aidl_lang.notebook.form`) offers only its clean ranges.  Raises
         :class:`TypeError` for a result with no source text."""
-        from .params.sweep import LHS_POINTS, sweep
+        from ..params.sweep import LHS_POINTS, sweep
         if self.source is None:
             raise TypeError("sweep() needs the program's source text")
         self.swept = sweep(self.source, self.path, budget,
@@ -393,8 +229,8 @@ class Result:
         if self._redundant is None:
             self._redundant = []
             if self.compiled.ok and self.compiled.solve is not None:
-                from .base.limits import is_out_of_memory
-                from .pipeline import out_of_memory_sink, report_redundancies, report_sliding
+                from ..base.limits import is_out_of_memory
+                from ..pipeline import out_of_memory_sink, report_redundancies, report_sliding
                 before = len(self.sink.items)
                 why: set = set()
                 try:
@@ -437,7 +273,7 @@ class Result:
         name that is none of these: ``args`` (the message, with the nearest names; ``"a"``
         or ``"b"``)."""
         self._need("measure")
-        from .output.part import gaps as G
+        from ..output.part.measure import gaps as G
         found = []
         for which, name in (("a", a), ("b", b)):
             try:
@@ -467,7 +303,7 @@ class Result:
     def _entity(self, name: str) -> dict:
         """``{"kind", "pieces", "center"?, "ends"?, "loops"?}`` of the entity named ``name``
         (see :meth:`measure`).  Raises :class:`KeyError`."""
-        from .output.part import gaps as G
+        from ..output.part.measure import gaps as G
         geo, structs = self._named_geometry()
         points = {v.name: v for v in self.values if v.kind == "point"}
         root = self.compiled.model.root.name
@@ -503,7 +339,7 @@ class Result:
             return {"kind": kind, "loops": loops,
                     "pieces": G.pieces([sg for lp in flat for sg in lp.segments]),
                     "center": center}
-        from .base.diagnostics import did_you_mean
+        from ..base.diagnostics import did_you_mean
         every = sorted(set(geo) | set(structs) | set(points))
         near = did_you_mean(name, every, 3)
         raise KeyError(f"nothing is named `{name}`"
@@ -512,13 +348,13 @@ class Result:
 
     def _renderer(self):
         if self._measure_renderer is None:
-            from .output.part.build.booleans import Renderer
+            from ..output.part.build.booleans import Renderer
             self._measure_renderer = Renderer(self.compiled.model)
         return self._measure_renderer
 
     def _geometry_entity(self, g) -> dict:
         """The entity of geometry ``g`` (model frame, mm)."""
-        from .output.part import gaps as G
+        from ..output.part.measure import gaps as G
         x = self.compiled.model.x
         ox = oy = 0.0
         t = g.owner
@@ -588,7 +424,7 @@ class Result:
         if self.compiled.drawing is None:
             raise NotCompiled("no output: the solved model failed the extent check (E0305)")
         if self._output is None:
-            from .output import build
+            from ..output import build
             self._output = build(self.compiled.drawing, self.compiled.model.root.name,
                                  deadline=deadline or self._after_deadline())
         return self._output
@@ -600,7 +436,7 @@ class Result:
         (past it: :class:`~aidl_lang.output.part.part.OutputError`, a located ``E0304``)."""
         if self.deadline is not None:
             return self.deadline
-        from .base.limits import Deadline
+        from ..base.limits import Deadline
         budget = self.compiled.deadline.budget if self.compiled.deadline else DEFAULT_BUDGET
         return Deadline.starting(budget)
 
@@ -614,14 +450,14 @@ class Result:
         described, with nothing of its own, is one of its ``copies`` (name and box).  Raises
         :class:`NotCompiled`, and :class:`~aidl_lang.output.part.part.OutputError` past the
         wall-time budget (:meth:`_after_deadline`)."""
-        from .output.checks.reports.describe import describe
+        from ..output.checks.reports.describe import describe
         deadline = self._after_deadline()
         return describe(self._built(deadline), deadline)
 
     def describe(self) -> str:
         """:attr:`description` as compact text, one line per feature, e.g. ``circle d=6 at
         (10, 5)`` (``aidl check --describe``).  Raises :class:`NotCompiled`."""
-        from .output.checks.reports.describe import describe_text
+        from ..output.checks.reports.describe import describe_text
         return describe_text(self.description)
 
     @property
@@ -664,7 +500,7 @@ class Result:
         :class:`~aidl_lang.output.part.part.MissingDependency` (a format's library is not
         installed) and :class:`~aidl_lang.output.part.part.OutputError` (also a kerf larger than a
         feature, naming the part)."""
-        from .output import CUT_FORMATS, FORMATS, Options, encode, for_cutting
+        from ..output import CUT_FORMATS, FORMATS, Options, encode, for_cutting
         suffix = "." + fmt.lower().lstrip(".")
         if suffix not in FORMATS:
             raise ValueError(f"unknown output format `{fmt}`; use one of "
@@ -686,12 +522,12 @@ class Result:
         :class:`NotCompiled`, :class:`~aidl_lang.output.part.part.MissingDependency` (no
         ``spyrrow``) and :class:`~aidl_lang.output.part.part.OutputError` (a part larger than the
         sheet, a kerf larger than a feature, a nesting that would end past the budget)."""
-        from .output import for_cutting
-        from .output.fabrication.layout import place, plan
+        from ..output import for_cutting
+        from ..output.fabrication.layout import place, plan
         deadline = self.compiled.deadline
         if deadline is not None and nest_time:
-            from .base.limits import Deadline
-            from .output.fabrication.layout import nest_cpu_seconds
+            from ..base.limits import Deadline
+            from ..output.fabrication.layout import nest_cpu_seconds
             deadline = Deadline(deadline.at + nest_cpu_seconds(nest_time), deadline.budget)
         cut = for_cutting(self.output, kerf, deadline, apart=True)   # pieces apart: whole
         where = plan(cut, sheet, gap, rotate, nest_time, deadline=deadline)
@@ -724,7 +560,7 @@ class Result:
         (:class:`~aidl_lang.output.writers.write.NotRegularFile`), written to a temporary file
         beside it and renamed, a new file gets the umask's permissions.  Returns the path.
         Raises :class:`~aidl_lang.output.writers.write.WriteError`, :class:`NotCompiled` and the errors of :meth:`encode`."""
-        from .output.writers.write import check_output_path, write_atomic
+        from ..output.writers.write import check_output_path, write_atomic
         out = check_output_path(path, self.path, follow_symlinks, force)
         data = self.encode(out.suffix, kerf, **options)
         write_atomic(out, data, follow_symlinks)
@@ -804,7 +640,7 @@ class Result:
             if self.errors:
                 self._svg_problem = self.errors
             else:
-                from .output import OutputError
+                from ..output import OutputError
                 try:
                     self._svg_text = self.to_svg()
                 except NotCompiled as e:
@@ -814,59 +650,12 @@ class Result:
         return self._svg_text, self._svg_problem
 
 
-def compile(source: str | None = None, path: str | os.PathLike | None = None,
-            overrides: Mapping[str, str | float] | None = None,
-            budget: float | Budget | None = None, min_wall: float | None = None) -> Result:
-    """Compile an AIDL program: parse, check, interpret, solve, booleans and the shape checks.
-
-    Give ``source`` (the program text; ``path`` then only names it in diagnostics and is where
-    ``import "x.aidl"`` is resolved from) or ``path`` alone (the file is read as UTF-8).
-    ``overrides``: param values as ``aidl render --set`` takes them (``{"width": "40 mm"}``,
-    numbers are in the file's units).  ``budget``: a factor of the default evaluation budget
-    (``aidl --budget K``) or a :class:`~aidl_lang.base.limits.Budget`.  ``min_wall``: the W0507 wall
-    thickness in mm (0: off), overriding the program's ``min_wall`` statements (None: theirs,
-    else 0.5 mm).
-
-    Never raises for a mistake in the program or an unreadable file (``E0004``): those are
-    diagnostics and ``ok`` is False.  Raises :class:`TypeError` when neither ``source`` nor
-    ``path`` is given, and :class:`ValueError` for a budget factor outside (0, 1000] or a
-    ``min_wall`` that is neither 0 nor from 0.001 to 1e6 mm (NaN, negative, infinite:
-    :func:`~aidl_lang.base.limits.min_wall_problem`)."""
-    from .pipeline import compile_source
-    if source is None and path is None:
-        raise TypeError("compile() needs source= (the program text) or path= (a file)")
-    if budget is None:
-        b = DEFAULT_BUDGET
-    elif isinstance(budget, Budget):
-        b = budget
-    else:
-        k = float(budget)
-        if not 0 < k <= 1000:
-            raise ValueError(f"budget expects a factor between 0 and 1000, got {budget!r}")
-        b = DEFAULT_BUDGET.scaled(k)
-    if min_wall is not None:
-        from .base.limits import min_wall_problem
-        why = min_wall_problem(float(min_wall))
-        if why is not None:
-            raise ValueError(f"min_wall: {why}")
-    name = os.fspath(path) if path is not None else "<source>"
-    if source is None:
-        from .library.sources import SourceRefused, read_program
-        try:
-            source = read_program(name)
-        except SourceRefused as e:
-            return _unreadable(name, e)
-    ov = {str(k): str(v) for k, v in (overrides or {}).items()}
-    return Result(compile_source(source, name, ov or None, min_wall=min_wall, budget=b),
-                  name, source)
-
-
 def _output_problem(e: Exception) -> list[Diagnostic]:
     """The diagnostic shown instead of a drawing that could not be made: the located
     ``E0304`` ``aidl render`` prints for bounded work that ran out, else the message."""
     budget = getattr(e, "budget", None)
     if budget is not None:
-        from .pipeline import report_out_of_budget
+        from ..pipeline import report_out_of_budget
         sink = DiagnosticSink()
         report_out_of_budget(sink, budget)
         return list(sink.items)
@@ -880,7 +669,7 @@ def _html(result: Result, svg: str | None, problem: list[Diagnostic] | None) -> 
     drawing; every text escaped."""
     import base64
     from html import escape
-    from .base.diagnostics import render_text
+    from ..base.diagnostics import render_text
     parts = [f'<div class="aidl-result"><div style="font-family:monospace">'
              f'{escape(result.summary())}</div>']
     if svg is not None:
@@ -903,295 +692,3 @@ def _html(result: Result, svg: str | None, problem: list[Diagnostic] | None) -> 
     return "".join(parts) + "</div>"
 
 
-def _unreadable(name: str, e: Exception) -> Result:
-    from .pipeline import Compiled
-    sink = DiagnosticSink()
-    from .base.diagnostics import Span
-    sink.add(Diagnostic("E0004", str(e), Span(name, 1, 1, 1, 1, 0, 0),
-                        hint="give a regular UTF-8 .aidl file (programs and imports have at "
-                             "most 1000000 bytes)"))
-    return Result(Compiled(sink), name, None)
-
-
-def exact_bbox(segments) -> tuple[float, float, float, float]:
-    """``(x0, y0, x1, y1)`` of exact lines, arcs and circles (an arc's extreme points where
-    it crosses an axis direction, not its chords); zeros when there are none."""
-    from .geometry.shapes.curves import Arc, Circle, EllipticArc, Spline
-    xs: list[float] = []
-    ys: list[float] = []
-    for s in segments:
-        if isinstance(s, (Spline, EllipticArc)):
-            x0, y0, x1, y1 = s.box()
-            xs += (x0, x1)
-            ys += (y0, y1)
-        elif isinstance(s, Circle):
-            (cx, cy), r = s.center, s.radius
-            xs += (cx - r, cx + r)
-            ys += (cy - r, cy + r)
-        elif isinstance(s, Arc):
-            (cx, cy), r = s.center, s.radius
-            a0, sw = s.start_angle, s.sweep
-            lo, hi = (a0, a0 + sw) if sw >= 0 else (a0 + sw, a0)
-            for a in (lo, hi):
-                xs.append(cx + r * math.cos(a))
-                ys.append(cy + r * math.sin(a))
-            k = math.ceil(lo / (math.pi / 2))
-            while k * math.pi / 2 <= hi:
-                a = k * math.pi / 2
-                xs.append(cx + r * round(math.cos(a)))
-                ys.append(cy + r * round(math.sin(a)))
-                k += 1
-        else:
-            for px, py in (s.start, s.end):
-                xs.append(px)
-                ys.append(py)
-    if not xs:
-        return (0.0, 0.0, 0.0, 0.0)
-    return (float(min(xs)), float(min(ys)), float(max(xs)), float(max(ys)))
-
-
-def _below(name: str, prefix: str) -> bool:
-    return name == prefix or name.startswith((prefix + ".", prefix + "["))
-
-
-# ------------------------------------------------------------------ solved values
-def _values(model, scale: float, unit: str, sizes: bool = False) -> list[Value]:
-    from .geometry.relations.bbox import numeric_box
-    from .geometry.core.expr import evaluate
-    x = model.x
-    xs = model.xs()
-    root = model.root
-    implicit = root.name == "model" and root.span is not None and root.span.start == 0
-
-    def name_of(s) -> str:
-        p = s.path
-        if implicit:
-            p = p[len("model"):].lstrip(".")
-        return p
-
-    def length(n, mm):
-        return Value(n, "length", mm / scale, unit, mm)
-
-    def point(n, px, py):
-        return Value(n, "point", (px / scale, py / scale), unit, (px, py))
-
-    def geometry(g, name: str, ox: float, oy: float) -> list[Value]:
-        """The points and sizes of geometry ``g`` (of a structure whose frame is at ``(ox,
-        oy)``), named ``name.center``, ``name.radius``, ..."""
-        vals = []
-        pts = {pn: (x[p.ix] + ox, x[p.iy] + oy) for pn, p in g.points.items()}
-        if "center" not in pts and {"bottom_left", "top_right"} <= set(pts):
-            a, c = pts["bottom_left"], pts["top_right"]
-            pts = {"center": ((a[0] + c[0]) / 2, (a[1] + c[1]) / 2), **pts}
-        for pn, (px, py) in pts.items():
-            vals.append(point(f"{name}.{pn}", px, py))
-        for sn, sc in g.scalars.items():
-            v = x[sc.index]
-            if sc.dim == "length":
-                vals.append(length(f"{name}.{sn}", v))
-            elif sc.dim == "angle":
-                vals.append(Value(f"{name}.{sn}", "angle", math.degrees(v), "deg", v))
-            else:
-                vals.append(Value(f"{name}.{sn}", "number", v, "", v))
-            if sizes and sn == "radius" and sc.dim == "length":   # a circle's size as drawn
-                vals.append(length(f"{name}.diameter", 2 * v))
-        # a rounded rectangle's corners (fixed when it is built: data, not solved scalars)
-        if sizes and isinstance(g.data.get("corner_radius"), (int, float)):
-            radii = g.data.get("corner_radii")
-            if radii is None:
-                vals.append(length(f"{name}.corner_radius", float(g.data["corner_radius"])))
-            else:                                           # bottom_left, ..., top_left
-                for cn, r in zip(("bottom_left", "bottom_right", "top_right", "top_left"),
-                                 radii):
-                    vals.append(length(f"{name}.corner_radius.{cn}", float(r)))
-        return vals
-
-    def structure(s, base: str) -> list[Value]:
-        """The values of structure ``s`` named from ``base`` (its path, or the name it also
-        has in a pattern's list: ``holes[0]``): origin, bbox, named geometry, scope."""
-        vals = []
-        ox = oy = 0.0
-        t = s
-        while t is not None:
-            ox += x[t.fx]
-            oy += x[t.fy]
-            t = t.parent
-        prefix = base + "." if base else ""
-        # a copy's frame is held on its parent's: its origin is where the original's went
-        origin = (ox, oy) if s.copy_origin is None else \
-            tuple(evaluate(e, x) for e in s.copy_origin)
-        vals.append(point(prefix + "origin", *origin))
-        box = numeric_box(s, None, xs)
-        if box is not None:
-            l, r, b, tp = (float(v) for v in box)
-            vals.append(Value(prefix + "bbox", "box", tuple(v / scale for v in (l, b, r, tp)),
-                              unit, (l, b, r, tp)))
-        for gname, g in _geometry_names(s):
-            vals += geometry(g, prefix + gname, ox, oy)
-        vals += _named_quantities(s.scope, prefix, x, (ox, oy), scale, unit)
-        return vals
-
-    def subtree(s):
-        yield s
-        for ch in s.children.values():
-            yield from subtree(ch)
-
-    # first the file's own params and constants (`param width = 40 mm`, `length = width * 2`)
-    out: list[Value] = _named_quantities(model.constants, "", x, (0.0, 0.0), scale, unit)
-    for s in model.structures:
-        base = name_of(s)
-        first = s.pattern_original
-        if first is not None and base.endswith("[1]"):
-            # `holes = LinearPattern(bolt, ...)`: `holes[0]` is the original `bolt`, listed
-            # before the copies under that name too (its children with it)
-            alias, own = base[:-3] + "[0]", name_of(first)
-            for t in subtree(first):
-                out += structure(t, alias + name_of(t)[len(own):])
-        out += structure(s, base)
-    return out
-
-
-def _geometry_names(s) -> list[tuple[str, object]]:
-    """``(name, geometry)`` of each named geometry of structure ``s`` as :attr:`Result.values`
-    names it: ``c``, or ``c[0]``, ``c[1]`` when a name is given to several (a loop's);
-    a pattern's original first as ``dots[0]`` (``dots = LinearPattern(c, ...)``: its first
-    copy is ``dots[1]``)."""
-    counts: dict[str, int] = {}
-    for g in s.geometry:
-        if g.name:
-            counts[g.name] = counts.get(g.name, 0) + 1
-    seen: dict[str, int] = {}
-    out: list[tuple[str, object]] = []
-    for g in s.geometry:
-        if not g.name:
-            continue
-        gname = g.name
-        if counts[g.name] > 1:
-            gname = f"{g.name}[{seen.get(g.name, 0)}]"
-            seen[g.name] = seen.get(g.name, 0) + 1
-        if g.pattern_original is not None and gname.endswith("[1]"):
-            out.append((gname[:-3] + "[0]", g.pattern_original))
-        out.append((gname, g))
-    return out
-
-
-def _named_quantities(scope: dict, prefix: str, x, origin, scale: float,
-                      unit: str) -> list[Value]:
-    """The named numbers and points of a structure's ``scope`` (its template's parameters and
-    its ``name = expression`` constants, e.g. ``pair.center_distance``) or of the file's
-    (params and constants), solved: lengths in the file's unit, angles in degrees, bare
-    numbers as they are, points in the model frame.  Geometry, structures, lists and other
-    dimensions (an area) are left out."""
-    from .geometry.core.expr import evaluate
-    from .geometry.core.values import ANG, LEN, NUM, PV, Q
-    out = []
-    for name, v in scope.items():
-        n = prefix + name
-        if isinstance(v, Q) and v.dim in (LEN, ANG, NUM):
-            mm = evaluate(v.expr, x)
-            if v.dim == LEN:
-                out.append(Value(n, "length", mm / scale, unit, mm))
-            elif v.dim == ANG:
-                out.append(Value(n, "angle", math.degrees(mm), "deg", mm))
-            else:
-                out.append(Value(n, "number", mm, "", mm))
-        elif isinstance(v, PV) and v.obj is None:       # a point that is not a geometry's
-            px, py = evaluate(v.x, x) + origin[0], evaluate(v.y, x) + origin[1]
-            out.append(Value(n, "point", (px / scale, py / scale), unit, (px, py)))
-    return out
-
-
-# ------------------------------------------------------------------ editing params
-class ParamsRefused(ValueError):
-    """:func:`set_params` refused the values: ``code`` ``no_match`` (a name that is not a
-    top-level ``param`` of the file; ``nearest``: the nearest names) or ``bad_value`` (a value
-    of the wrong kind or outside the param's declared range: ``diagnostics``, the E0113 or
-    E0124 the compiler gives for it); ``name``: the param at fault."""
-
-    def __init__(self, message: str, code: str, name: str,
-                 nearest: list[str] | None = None,
-                 diagnostics: list[Diagnostic] | None = None) -> None:
-        super().__init__(message)
-        self.code, self.name = code, name
-        self.nearest = nearest or []
-        self.diagnostics = diagnostics or []
-
-
-def set_params(source: str, values: Mapping[str, str | float | bool],
-               path: str | os.PathLike = "<source>",
-               budget: float | Budget | None = None) -> tuple[str, Result]:
-    """The program ``source`` with the value of each top-level ``param NAME = VALUE`` named in
-    ``values`` replaced, and its :class:`Result`: ``(new text, result)``.  Only the value's
-    text changes (``param width = 40 mm, min=20 mm`` -> ``param width = 50 mm, min=20 mm``):
-    comments, spacing and every other line stay as written.  A value is a string read as the
-    program reads one (``"50 mm"``, ``"2 * 25"``), a number (in the file's units, written as
-    it is) or a bool; a string param's new text is quoted when it is not already.
-
-    The values are first checked as :func:`compile`'s ``overrides`` are (the kind of the
-    param's value, its declared ``min``/``max``).  Raises :class:`ParamsRefused`
-    (``no_match`` for an unknown name, with the nearest; ``bad_value`` with the E0113/E0124
-    diagnostic: nothing is returned to write), :class:`ValueError` for a program that does not
-    parse (its params cannot be found) or an empty ``values``."""
-    from .base.diagnostics import did_you_mean
-    from .parser import parse
-    from . import ast as A
-    if not values:
-        raise ValueError("give at least one param name and value")
-    name = os.fspath(path)
-    sink = DiagnosticSink()
-    program = parse(source, name, sink)
-    if sink.has_errors:
-        raise ValueError("the program does not parse: fix its syntax first (`check` says where)")
-    decls = {st.name: st for st in program.stmts if isinstance(st, A.ParamDecl)}
-    for k in values:
-        if k not in decls:
-            near = did_you_mean(str(k), list(decls), 3)
-            raise ParamsRefused(
-                f"the program has no param `{k}`"
-                + (f"; did you mean {', '.join(f'`{n}`' for n in near)}?" if near else "")
-                + (f" (params: {', '.join(sorted(decls))})" if decls else
-                   " (it declares none: add `param NAME = VALUE` at the top)"),
-                "no_match", str(k), near)
-    texts = {k: _param_text(v, decls[k].value) for k, v in values.items()}
-    from .params.set_values import comment_problem
-    for k, t in texts.items():
-        d = comment_problem(source, decls[k], t)
-        if d is not None:           # `w=40 mm # x` would comment out the range (E0113)
-            raise ParamsRefused(d.message, "bad_value", k, diagnostics=[d])
-    # the values checked as overrides: the kind of value and the declared range
-    checked = compile(source=source, path=name, overrides=texts, budget=budget)
-    for d in checked.diagnostics:
-        if d.code in ("E0113", "E0124") and "`--set " in d.message:
-            at = next((k for k in texts if f"`--set {k}=" in d.message), next(iter(texts)))
-            d.message = d.message.replace("`--set ", "`")
-            if d.hint:
-                d.hint = d.hint.replace("`--set ", "`")
-            raise ParamsRefused(d.message, "bad_value", at, diagnostics=[d])
-    out, last = [], 0
-    for st in sorted((decls[k] for k in texts), key=lambda s: s.value.span.start):
-        out += [source[last:st.value.span.start], texts[st.name]]
-        last = st.value.span.end
-    text = "".join(out) + source[last:]
-    return text, compile(source=text, path=name, budget=budget)
-
-
-def _param_text(value, old) -> str:
-    """The text of a param's new ``value`` (as :func:`set_params` takes it) in place of the
-    expression ``old``: a bool as ``true``/``false``, a number as Python writes it, a string
-    as given, quoted when the param's value was a string literal and it is not quoted."""
-    from . import ast as A
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, (int, float)):
-        if not math.isfinite(value):
-            raise ParamsRefused(f"{value!r} is not a finite number", "bad_value", "")
-        return repr(value) if isinstance(value, int) or not value.is_integer() \
-            else str(int(value))
-    text = str(value).strip()
-    if isinstance(old, A.Str) and not text.startswith('"'):
-        import json
-        return json.dumps(text)
-    if "\n" in text or not text:
-        raise ParamsRefused(f"a param's value is one line of text; got {value!r}",
-                            "bad_value", "")
-    return text
