@@ -83,10 +83,10 @@ def _pairwise_groups(P, r):
 
 @pytest.mark.parametrize("seed", range(40))
 def test_cell_grouping_is_the_pairwise_grouping(seed):
-    """W0519's groups by cells of half the minimum (walls._clusters) are the groups of the
+    """W0519's groups by cells of half the minimum (slits._clusters) are the groups of the
     pairwise test, labelled by their least point, on clouds dense and sparse, round and
     along a line."""
-    from aidl_lang.output.checks.material.walls import _clusters
+    from aidl_lang.output.checks.material.slits import _clusters
     rng = np.random.default_rng(seed)
     n = int(rng.integers(2, 400))
     r = float(rng.choice([0.1, 0.37, 0.5, 1.0]))
@@ -173,13 +173,13 @@ def test_close_pairs_skips_the_feature_pairs_asked_and_only_them():
 @pytest.mark.parametrize("example", ["telephone", "violin", "bottle_opener"])
 def test_one_search_of_the_faces_names_the_face_each_point_is_on(example):
     """W0519 and W0520 name the shapes on a slit's or ledge's sides by one search of the
-    faces' edges (walls._faces_at); it gives the face the per-point reference loop over
-    every face (walls._face_at) gives, for the outline's own vertices and for points near
+    faces' edges (slits._faces_at); it gives the face the per-point reference loop over
+    every face (necks._face_at) gives, for the outline's own vertices and for points near
     and far from it."""
     from pathlib import Path
 
     from aidl_lang.output.checks.common import _part_roots
-    from aidl_lang.output.checks.material.walls import _faces_at
+    from aidl_lang.output.checks.material.slits import _faces_at
     f = Path(__file__).resolve().parents[1] / "examples" / f"{example}.aidl"
     if not f.exists():
         pytest.skip(f"no examples/{example}.aidl")
@@ -610,7 +610,7 @@ def test_the_pair_loops_of_the_checks_look_at_the_deadline(monkeypatch):
     from aidl_lang.base.diagnostics import DiagnosticSink
     from aidl_lang.base.limits import Deadline, OutOfBudget
     from aidl_lang.output.checks import changes, parts
-    from aidl_lang.output.checks.holes import openings
+    from aidl_lang.output.checks.holes import repeats
     src = DRILLS.replace("assembly kit {\n    p = plate()\n}\n", "")
     c = compile_source(src, "drills.aidl")
     h = next(s for s in c.drawing.own if s.kind == "hole")
@@ -618,10 +618,10 @@ def test_the_pair_loops_of_the_checks_look_at_the_deadline(monkeypatch):
 
     def tick():
         ticks[0] += 1
-    openings._check_repeated_faces(c.drawing, h, DiagnosticSink(), tick)
+    repeats._check_repeated_faces(c.drawing, h, DiagnosticSink(), tick)
     assert ticks[0] == 19               # the 20 copies: each overlaps its neighbour
     ticks[0] = 0
-    openings._check_overlapping_circles(c.drawing, h, DiagnosticSink(), 0.5, tick)
+    repeats._check_overlapping_circles(c.drawing, h, DiagnosticSink(), 0.5, tick)
     assert ticks[0] == 1                # a and b, two statements 3 mm apart
     past = Deadline(0.0)
     with pytest.raises(OutOfBudget):
@@ -680,11 +680,12 @@ def test_one_segment_whose_box_holds_too_many_vertices_is_refused_not_looped(mon
 
 @pytest.mark.parametrize("seed", range(3))
 def test_the_facing_search_keeps_every_facing_pair_in_order(seed):
-    """walls._check_slits asks nearby.close_pairs_facing for its pairs: on a large input
+    """slits._check_slits asks nearby.close_pairs_facing for its pairs: on a large input
     (rings of over SMALL_VERTS vertices: zigzags, hairpins, circles, random walks) the pairs
     whose vertex faces its segment (walls._facing, 30 degrees) are those of close_pairs over
     every vertex, with the same distances, feet and order."""
-    from aidl_lang.output.checks.material.walls import FACING, _facing, _ring
+    from aidl_lang.output.checks.material.slits import FACING
+    from aidl_lang.output.checks.material.walls import _facing, _ring
     from aidl_lang.output.part.measure import nearby
     rng = np.random.default_rng(seed)
     loops = []

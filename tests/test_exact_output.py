@@ -576,13 +576,13 @@ def test_matching_in_blocks_gives_the_same_outlines(monkeypatch):
     pairs (bounded memory when thousands of chords lie on top of each other): blocks of 50
     give the same exact outlines as one block."""
     import aidl_lang
-    from aidl_lang.output.part.edges import exact
+    from aidl_lang.output.part.edges import matching
     src = next(p for p in EXAMPLES if p.stem == "telephone").read_text()
     def outlines(r):
         return [(p.name, [repr(s) for lp in p.loops for s in lp.segments])
                 for p in r.output.parts]
     whole = outlines(aidl_lang.compile(source=src))
-    monkeypatch.setattr(exact, "PAIRS_PER_BLOCK", 50)
+    monkeypatch.setattr(matching, "PAIRS_PER_BLOCK", 50)
     blocks = outlines(aidl_lang.compile(source=src + "\n"))      # not the compile cache's
     assert blocks == whole and sum(len(s) for _, s in whole) > 40
 

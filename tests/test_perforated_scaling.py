@@ -272,7 +272,7 @@ def test_each_stage_grows_linearly_with_the_holes(tmp_path, how):
 
 
 def test_the_slit_search_measures_no_neighbours_along_the_holes(tmp_path, monkeypatch):
-    """W0519's search (walls._check_slits) of a DXF panel of 100 round holes (4,504 chord
+    """W0519's search (slits._check_slits) of a DXF panel of 100 round holes (4,504 chord
     vertices: the large path): it measured each vertex against the chords beside it on its
     own circle (21,608 candidate pairs, 4.8 per vertex; 3.2 million at 20,000 holes, past the
     pair limit at 50,000: the slits went unchecked, W0521), every one then dropped as not
@@ -315,12 +315,12 @@ def _circle_loop(cx, cy, r, n, turn=0.0, cw=True):
                           st.floats(0, 6.3)), min_size=60, max_size=60),
        st.floats(0.1, 2.0))
 def test_the_slit_search_leaves_out_only_circles_that_pair_with_nothing(rows, t):
-    """walls._lone_circles (a law): a loop it leaves out of W0519's search holds no vertex
+    """slits._lone_circles (a law): a loop it leaves out of W0519's search holds no vertex
     and no edge of a pair the search measures and keeps on all the loops (close_pairs_facing,
-    then not adjacent, apart, facing: walls._check_slits's own filters), so the warnings are
+    then not adjacent, apart, facing: slits._check_slits's own filters), so the warnings are
     the same; circles of a grid (some -0.3 to 0.8 mm from their neighbour or the outline, radii
     0.2-3 mm, 8-60 chords, any phase, either way round), in a square outline."""
-    from aidl_lang.output.checks.material import walls
+    from aidl_lang.output.checks.material import slits, walls
     loops = [np.array([[-40.0, -40.0], [40.0, -40.0], [40.0, 40.0], [-40.0, 40.0]])]
     for k, (r, gap, n, turn) in enumerate(rows):
         cy = -36 + 8 * (k // 10)
@@ -337,10 +337,10 @@ def test_the_slit_search_leaves_out_only_circles_that_pair_with_nothing(rows, t)
         loops += [_circle_loop(0, 50, 4, nearby.SMALL_VERTS)]   # past the small path
         V, nxt, prv = walls._ring(loops)
     of = np.repeat(np.arange(len(loops)), [len(P) for P in loops])
-    v, sg, dist, _ = nearby.close_pairs_facing(V, nxt, prv, t, walls.FACING)
-    ok = (v != nxt[sg]) & (dist > 1e-6) & walls._facing(V, nxt, prv, v, sg, walls.FACING)
+    v, sg, dist, _ = nearby.close_pairs_facing(V, nxt, prv, t, slits.FACING)
+    ok = (v != nxt[sg]) & (dist > 1e-6) & walls._facing(V, nxt, prv, v, sg, slits.FACING)
     paired = set(of[v[ok]].tolist()) | set(of[sg[ok]].tolist())
-    out = set(np.flatnonzero(walls._lone_circles(loops, t)).tolist())
+    out = set(np.flatnonzero(slits._lone_circles(loops, t)).tolist())
     assert not out & paired, sorted(out & paired)
     assert out, "no circle left out"
 

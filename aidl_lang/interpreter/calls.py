@@ -12,7 +12,8 @@ from ..geometry.relations.constraints import BUILDERS, ConstraintError
 from ..geometry.core.expr import Lin, _lin, _new, as_const, func, lift, mul, var
 from ..geometry.relations.members import member as geom_member
 from ..geometry.core.model import Constraint, Equation, Point, Scalar
-from ..geometry.shapes.primitives import PrimitiveError, build
+from ..geometry.shapes.constructors import build
+from ..geometry.shapes.primitives import PrimitiveError
 from ..geometry.core.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
                                Template, UnitError, angle_scale, dim_name, mul_dim, owners_in, owners_of,
                                rad_power, radians_of, type_name)

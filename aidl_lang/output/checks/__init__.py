@@ -53,20 +53,21 @@ from ..part.build.booleans import Drawing
 from .allowances import check_allowances
 from .assembly import _check_fit
 from .changes import Topology, check_topology, topology, topology_changes
-from .common import (MIN_AREA, MIN_FRACTION, MIN_WALL, part_min_wall, _cut_openings, _edges, _inside,
-                     _inside_loops, _part_of, _part_roots, _signed, _union)
+from .common import (MIN_AREA, MIN_FRACTION, MIN_WALL, _cut_openings, _edges, _inside,
+                     _inside_loops, _part_of, _part_roots, _signed, _union, part_min_wall)
+from .holes.openings import TOUCH, _analyse, _check_flush, _check_hole, _intended, _Near, _report_openings
+from .holes.repeats import _check_overlapping_circles, _check_repeated_faces
+from .holes.voids import _check_voids
 from .marks.engravings import (_SURELY_GROWN, ENGRAVE_TOL, _check_engraving, _check_zero_lines,
-                         _n_samples, _sample,
-                         _samples, _within)
-from .holes.openings import (TOUCH, _analyse, _check_flush, _check_hole, _check_overlapping_circles,
-                       _check_repeated_faces,
-                       _check_voids, _intended, _Near, _report_openings)
+                               _n_samples, _sample, _samples, _within)
 from .parts import (_check_interpenetration, _check_steps, _check_invisible, _check_pieces,
                     check_stray_holes, empty_faces)
 from .marks.text import _check_text_overlap
 from .material.through import check_sheet_cuts, check_through
-from .material.walls import (THIN_SECONDS_PER_VERTEX, _check_slits, TILE_VERTS, UNION_GROUP, WHOLE_LOOPS, WHOLE_VERTS,
-                    _check_necks, _check_walls, _isolated_loops, _loop_boxes, _open, _point_of, _thin)
+from .material.necks import _check_necks
+from .material.slits import _check_slits
+from .material.walls import (THIN_SECONDS_PER_VERTEX, TILE_VERTS, UNION_GROUP, WHOLE_LOOPS, WHOLE_VERTS,
+                             _check_walls, _isolated_loops, _loop_boxes, _open, _point_of, _thin)
 
 # the names other modules, the tests and the benchmarks import from here (patching one of the
 # others' helpers, e.g. walls._open, means patching it in the module that uses it)

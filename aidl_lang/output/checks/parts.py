@@ -375,12 +375,12 @@ def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     offset sideways by more than 0.01 mm (twice the tessellation's chord error) and less than
     ``t``: two faces that almost but not quite align.  ``2 t`` bounds the step's own length:
     a longer link between two edges less than ``t`` apart is a gentle taper, not a ledge.
-    The step is reported when the shapes at its two corners differ (:func:`.walls._faces_at`;
+    The step is reported when the shapes at its two corners differ (:func:`.material.slits._faces_at`;
     a step drawn in one polygon is meant).  Loops of holes' openings are left out.  O(n)
     in the outline's vertices, plus a face search per step found.  ``cut_open``:
     :func:`.common._cut_openings` of ``loops``, when the caller has it."""
     from .common import _cut_openings
-    from .material.walls import _faces_at
+    from .material.slits import _faces_at
     if t <= 0 or not loops:
         return
     if cut_open is None:
