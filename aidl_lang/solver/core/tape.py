@@ -183,127 +183,14 @@ class Tape:
         entries are gathered from each distinct affine leaf's terms.  Returns False (nothing
         set) for an expression nested deeper than the recursion limit or DAGs whose trees
         would be much larger than their nodes; :meth:`_compile` then does it row by row."""
-        gnodes = []                           # distinct nodes: (operator, p, q, arity)
-        gmarg = []                            # argument runs of min/max (node ids)
-        glin = []                             # distinct leaves (Lin), in order
-        memo: dict[int, int] = {}
-        node_add, lin_add = gnodes.append, glin.append
-        codes = {**_UNARY, **_BINARY}
-
-        def visit(item) -> int:
-            args = item.args
-            k = len(args)
-            out = [0] * k
-            for j in range(k - 1, -1, -1):
-                arg = args[j]
-                n = memo.get(id(arg))
-                if n is None:
-                    if type(arg) is Lin or isinstance(arg, Lin):
-                        memo[id(arg)] = n = len(gnodes)
-                        node_add((LEAF, len(glin), 0, 0))
-                        lin_add(arg)
-                    elif isinstance(arg, Nl):
-                        n = visit(arg)
-                    else:
-                        raise TapeError(f"cannot compile {type(arg).__name__} into a residual")
-                out[j] = n
-            code = codes.get(item.op)
-            if code is None:
-                raise TapeError(f"unknown operator `{item.op}`")
-            if code == MIN or code == MAX:
-                if not k:
-                    raise TapeError(f"operator `{item.op}` with no arguments")
-                memo[id(item)] = n = len(gnodes)
-                node_add((code, len(gmarg), 0, k))
-                gmarg.extend(out)
-            elif k == 1:
-                memo[id(item)] = n = len(gnodes)
-                node_add((code, out[0], out[0], 1))
-            elif k == 2:
-                memo[id(item)] = n = len(gnodes)
-                node_add((code, out[0], out[1], 2))
-            else:
-                raise TapeError(f"operator `{item.op}` with {k} arguments")
-            return n
-
-        aff, arows, nl_rows, roots = [], [], [], []
-        try:
-            for r, e in enumerate(exprs):
-                if type(e) is Lin or isinstance(e, Lin):
-                    aff.append(e)
-                    arows.append(r)
-                    continue
-                if not isinstance(e, Nl):
-                    raise TapeError(f"cannot compile {type(e).__name__} into a residual")
-                n = memo.get(id(e))
-                nl_rows.append(r)
-                roots.append(visit(e) if n is None else n)
-        except RecursionError:
+        walked = _distinct_nodes(exprs)
+        if walked is None:
             return False
-        finally:
-            visit = None                      # break the closure's self-reference
-        G = len(gnodes)
-        ga = np.fromiter(chain.from_iterable(gnodes), np.int64, 4 * G).reshape(G, 4)
-        gnodes.clear()
-        gop, ga0, ga1, nargs = ga[:, 0].copy(), ga[:, 1].copy(), ga[:, 2].copy(), ga[:, 3].copy()
-        gmarg = np.asarray(gmarg, dtype=np.int64)
-        # each node's arguments in order, as a CSR run: a min/max its run of gmarg, a
-        # two-argument node (p, q), a one-argument node (p)
-        mm = (gop == MIN) | (gop == MAX)
-        cstart = np.concatenate([[0], np.cumsum(nargs)])
-        child = np.empty(int(cstart[-1]), dtype=np.int64)
-        mm_nodes = np.flatnonzero(mm)
-        if len(mm_nodes):
-            cnt = nargs[mm_nodes]
-            rel = np.arange(int(cnt.sum()), dtype=np.int64) - np.repeat(np.cumsum(cnt) - cnt, cnt)
-            child[np.repeat(cstart[mm_nodes], cnt) + rel] = gmarg[np.repeat(ga0[mm_nodes], cnt)
-                                                                  + rel]
-        bi = np.flatnonzero(~mm & (nargs >= 1))
-        child[cstart[bi]] = ga0[bi]
-        b2 = bi[nargs[bi] == 2]
-        child[cstart[b2] + 1] = ga1[b2]
-        # subtree sizes of the tree expansions, by depth (a node's depth: 1 + its deepest
-        # argument's; the walk emitted every argument before its node)
-        depth = _levels(gop, ga0, np.where(mm, nargs, ga1), gmarg)
-        size = np.ones(G, dtype=np.int64)
-        order = np.argsort(depth, kind="stable")
-        bounds = np.searchsorted(depth[order], np.arange(int(depth.max(initial=0)) + 2))
-        for lv in range(1, len(bounds) - 1):
-            nodes = order[bounds[lv]:bounds[lv + 1]]
-            na_ = nargs[nodes]
-            grp = np.cumsum(na_) - na_
-            idx = np.repeat(cstart[nodes], na_) + (np.arange(int(na_.sum()), dtype=np.int64)
-                                                   - np.repeat(grp, na_))
-            size[nodes] = np.minimum(1 + np.add.reduceat(size[child[idx]], grp), 1 << 40)
-        roots = np.asarray(roots, dtype=np.int64)
-        total = int(size[roots].sum()) if len(roots) else 0
-        if total > _SHARED_BLOWUP * (G + len(roots)) + 1024:
+        gnodes, gmarg, glin, aff, arows, nl_rows, roots = walked
+        occ = _occurrences(gnodes, gmarg, roots)
+        if occ is None:
             return False
-        # every tree occurrence: its node, row and position (breadth-first by depth)
-        pos_node = np.empty(total, dtype=np.int64)
-        pos_row = np.empty(total, dtype=np.int64)
-        fn = roots
-        fr = np.arange(len(roots), dtype=np.int64)
-        fo = np.cumsum(size[roots]) - size[roots]
-        while len(fn):
-            at = fo + size[fn] - 1                 # post-order: a node ends its subtree
-            pos_node[at] = fn
-            pos_row[at] = fr
-            na_ = nargs[fn]
-            has = na_ > 0
-            fn, fr, fo, na_ = fn[has], fr[has], fo[has], na_[has]
-            if not len(fn):
-                break
-            k = int(na_.sum())
-            grp = np.cumsum(na_) - na_
-            rel = np.arange(k, dtype=np.int64) - np.repeat(grp, na_)
-            ch = child[np.repeat(cstart[fn], na_) + rel]
-            cs = size[ch]
-            # last argument first: argument j starts after the subtrees of arguments > j
-            incl = np.cumsum(cs)
-            gend = np.repeat(incl[grp + na_ - 1], na_)
-            fo = np.repeat(fo, na_) + (gend - incl)
-            fn, fr = ch, np.repeat(fr, na_)
+        G, gop, ga0, nargs, child, cstart, roots, pos_node, pos_row = occ
         # the first occurrence of each (row, node), in position order
         key = pos_row * G + pos_node
         srt = np.argsort(key, kind="stable")
@@ -870,3 +757,143 @@ class _Reduced:
         self.urows = uniq // nz
         self.indptr = np.searchsorted(self.urows, np.arange(len(red.keep) + 1)).astype(np.int32)
         self.shape = (len(red.keep), len(red.z0))
+
+
+def _distinct_nodes(exprs: list):
+    """One walk over the distinct expression nodes of all rows ``exprs`` (memoised by
+    identity across rows), for :meth:`Tape._compile_shared`: ``(gnodes, gmarg, glin, aff,
+    arows, nl_rows, roots)``, the distinct nodes as ``(operator, p, q, arity)``, the argument
+    runs of min/max, the distinct affine leaves, the affine rows and their indices, the
+    nonlinear rows' indices and root nodes; None for an expression nested deeper than the
+    recursion limit."""
+    gnodes = []                           # distinct nodes: (operator, p, q, arity)
+    gmarg = []                            # argument runs of min/max (node ids)
+    glin = []                             # distinct leaves (Lin), in order
+    memo: dict[int, int] = {}
+    node_add, lin_add = gnodes.append, glin.append
+    codes = {**_UNARY, **_BINARY}
+
+    def visit(item) -> int:
+        args = item.args
+        k = len(args)
+        out = [0] * k
+        for j in range(k - 1, -1, -1):
+            arg = args[j]
+            n = memo.get(id(arg))
+            if n is None:
+                if type(arg) is Lin or isinstance(arg, Lin):
+                    memo[id(arg)] = n = len(gnodes)
+                    node_add((LEAF, len(glin), 0, 0))
+                    lin_add(arg)
+                elif isinstance(arg, Nl):
+                    n = visit(arg)
+                else:
+                    raise TapeError(f"cannot compile {type(arg).__name__} into a residual")
+            out[j] = n
+        code = codes.get(item.op)
+        if code is None:
+            raise TapeError(f"unknown operator `{item.op}`")
+        if code == MIN or code == MAX:
+            if not k:
+                raise TapeError(f"operator `{item.op}` with no arguments")
+            memo[id(item)] = n = len(gnodes)
+            node_add((code, len(gmarg), 0, k))
+            gmarg.extend(out)
+        elif k == 1:
+            memo[id(item)] = n = len(gnodes)
+            node_add((code, out[0], out[0], 1))
+        elif k == 2:
+            memo[id(item)] = n = len(gnodes)
+            node_add((code, out[0], out[1], 2))
+        else:
+            raise TapeError(f"operator `{item.op}` with {k} arguments")
+        return n
+
+    aff, arows, nl_rows, roots = [], [], [], []
+    try:
+        for r, e in enumerate(exprs):
+            if type(e) is Lin or isinstance(e, Lin):
+                aff.append(e)
+                arows.append(r)
+                continue
+            if not isinstance(e, Nl):
+                raise TapeError(f"cannot compile {type(e).__name__} into a residual")
+            n = memo.get(id(e))
+            nl_rows.append(r)
+            roots.append(visit(e) if n is None else n)
+    except RecursionError:
+        return None
+    finally:
+        visit = None                      # break the closure's self-reference
+    return gnodes, gmarg, glin, aff, arows, nl_rows, roots
+
+
+def _occurrences(gnodes: list, gmarg: list, roots: list):
+    """Every occurrence of the distinct nodes ``gnodes`` in the rows' trees (their DAGs
+    expanded), for :meth:`Tape._compile_shared`: its node and row by position (breadth-first,
+    one array pass per depth; post-order within each row, last argument first), with the
+    nodes' arrays ``(G, gop, ga0, nargs, child, cstart, roots, pos_node, pos_row)``; None when
+    the trees would be much larger than their nodes (:data:`_SHARED_BLOWUP`)."""
+    G = len(gnodes)
+    ga = np.fromiter(chain.from_iterable(gnodes), np.int64, 4 * G).reshape(G, 4)
+    gnodes.clear()
+    gop, ga0, ga1, nargs = ga[:, 0].copy(), ga[:, 1].copy(), ga[:, 2].copy(), ga[:, 3].copy()
+    gmarg = np.asarray(gmarg, dtype=np.int64)
+    # each node's arguments in order, as a CSR run: a min/max its run of gmarg, a
+    # two-argument node (p, q), a one-argument node (p)
+    mm = (gop == MIN) | (gop == MAX)
+    cstart = np.concatenate([[0], np.cumsum(nargs)])
+    child = np.empty(int(cstart[-1]), dtype=np.int64)
+    mm_nodes = np.flatnonzero(mm)
+    if len(mm_nodes):
+        cnt = nargs[mm_nodes]
+        rel = np.arange(int(cnt.sum()), dtype=np.int64) - np.repeat(np.cumsum(cnt) - cnt, cnt)
+        child[np.repeat(cstart[mm_nodes], cnt) + rel] = gmarg[np.repeat(ga0[mm_nodes], cnt)
+                                                              + rel]
+    bi = np.flatnonzero(~mm & (nargs >= 1))
+    child[cstart[bi]] = ga0[bi]
+    b2 = bi[nargs[bi] == 2]
+    child[cstart[b2] + 1] = ga1[b2]
+    # subtree sizes of the tree expansions, by depth (a node's depth: 1 + its deepest
+    # argument's; the walk emitted every argument before its node)
+    depth = _levels(gop, ga0, np.where(mm, nargs, ga1), gmarg)
+    size = np.ones(G, dtype=np.int64)
+    order = np.argsort(depth, kind="stable")
+    bounds = np.searchsorted(depth[order], np.arange(int(depth.max(initial=0)) + 2))
+    for lv in range(1, len(bounds) - 1):
+        nodes = order[bounds[lv]:bounds[lv + 1]]
+        na_ = nargs[nodes]
+        grp = np.cumsum(na_) - na_
+        idx = np.repeat(cstart[nodes], na_) + (np.arange(int(na_.sum()), dtype=np.int64)
+                                               - np.repeat(grp, na_))
+        size[nodes] = np.minimum(1 + np.add.reduceat(size[child[idx]], grp), 1 << 40)
+    roots = np.asarray(roots, dtype=np.int64)
+    total = int(size[roots].sum()) if len(roots) else 0
+    if total > _SHARED_BLOWUP * (G + len(roots)) + 1024:
+        return None
+    # every tree occurrence: its node, row and position (breadth-first by depth)
+    pos_node = np.empty(total, dtype=np.int64)
+    pos_row = np.empty(total, dtype=np.int64)
+    fn = roots
+    fr = np.arange(len(roots), dtype=np.int64)
+    fo = np.cumsum(size[roots]) - size[roots]
+    while len(fn):
+        at = fo + size[fn] - 1                 # post-order: a node ends its subtree
+        pos_node[at] = fn
+        pos_row[at] = fr
+        na_ = nargs[fn]
+        has = na_ > 0
+        fn, fr, fo, na_ = fn[has], fr[has], fo[has], na_[has]
+        if not len(fn):
+            break
+        k = int(na_.sum())
+        grp = np.cumsum(na_) - na_
+        rel = np.arange(k, dtype=np.int64) - np.repeat(grp, na_)
+        ch = child[np.repeat(cstart[fn], na_) + rel]
+        cs = size[ch]
+        # last argument first: argument j starts after the subtrees of arguments > j
+        incl = np.cumsum(cs)
+        gend = np.repeat(incl[grp + na_ - 1], na_)
+        fo = np.repeat(fo, na_) + (gend - incl)
+        fn, fr = ch, np.repeat(fr, na_)
+    return G, gop, ga0, nargs, child, cstart, roots, pos_node, pos_row
