@@ -624,6 +624,55 @@ def _check_marks_over_marks(d: Drawing, sink: DiagnosticSink, tick=None) -> None
 
     The segment pairs come from one box search (:func:`..part.nearby.box_pairs`), O(n log n)
     in the segments but for the pairs it finds."""
+    found, items_of = _marks_over_marks(d, tick)
+    for key, rows in found.items():
+        if tick is not None:
+            tick()
+        if key[0] == "into":
+            # a pattern of marks run into one outline (a scale's ticks into a bar drawn over
+            # them); one or two marks that cross into an outline are read as meant (a dial's
+            # finger stop across its rim, a guitar's strings into its rosette)
+            per: dict = {}
+            for r in rows:
+                per.setdefault(id(r[2]), set()).add(id(r[1]))
+            if max(len(v) for v in per.values()) < INTO_LEAST:
+                continue
+        if key[0] == "twice":
+            rows.sort(key=lambda r: -r[0])
+            L, a, b, share = rows[0]
+            more = (f"; {len(rows) - 1} more pair{'s' if len(rows) > 2 else ''} of these "
+                    "statements on each other") if len(rows) > 1 else ""
+            whole = " (all of it)" if share > 0.999 else f" ({_pct(share, 1.0)} of it)"
+            sink.warning(
+                "W0513", f"the engraved `{_copy_label(b)}` lies on the engraved "
+                f"`{_copy_label(a)}` over {L:.2f} mm{whole}: the laser burns that stretch "
+                f"twice (a deeper, wider line){more}", b.span,
+                labels=[Label(a.span, f"`{a.label}` is here", primary=False)],
+                hint=f"draw each stroke once: leave `{b.label}` out where `{a.label}` already "
+                     f"runs (skip those copies of its loop), or move one of them clear")
+            continue
+        p_g, q_g = rows[0][1], rows[0][2]
+        count = len(rows)
+        fix = _clearing_move([g for g in items_of if g.span == key[1]],
+                             [g for g in items_of if g.span == key[2]], items_of, rows)
+        how = (f"move `{q_g.name or q_g.label}` {fix[0]:.2f} mm (by ({fix[1]:.2f}, "
+               f"{fix[2]:.2f}) mm) so that the marks stay {MIN_CLEAR:g} mm clear of it, or "
+               if fix is not None else "move the outline clear of the marks, or ")
+        sink.warning(
+            "W0513", f"the engraved `{_copy_label(p_g)}` runs into the engraved outline "
+            f"`{_copy_label(q_g)}` and ends inside it"
+            + (f" ({count} such marks of these statements)" if count > 1 else "")
+            + ": engraving drawn over engraving, the marks cross the outline's line",
+            p_g.span, labels=[Label(q_g.span, f"`{q_g.label}` is here", primary=False)],
+            hint=f"{how}end the marks on the outline or before it (a mark that crosses an "
+                 "outline and goes on, as a grid's lines do, is not warned)")
+
+
+def _marks_over_marks(d: Drawing, tick=None) -> tuple[dict, dict]:
+    """What :func:`_check_marks_over_marks` reports, found: ``(found, items_of)``, the pairs of
+    statements keyed ``("twice", span, span)`` (strokes on strokes: ``[(length, over, under,
+    share)]``) or ``("into", span, span)`` (open marks ending inside an outline: ``[(gap,
+    mark, outline, end inside, end outside)]``), and each engraved geometry's stroke items."""
     from ...part.measure.nearby import box_pairs
     from ..common import _edges, _inside, _part_of, _part_roots
     roots = _part_roots(d)
@@ -638,7 +687,7 @@ def _check_marks_over_marks(d: Drawing, sink: DiagnosticSink, tick=None) -> None
         if part_of[g] is not None:          # engraved on a part (not an illustration)
             items_of.setdefault(g, []).append(item)
     if len(items_of) < 2:
-        return
+        return {}, items_of
     marks = list(items_of)
     home = np.array([id(part_of[g]) for g in marks])
     segs, owner, closed = [], [], []
@@ -651,7 +700,7 @@ def _check_marks_over_marks(d: Drawing, sink: DiagnosticSink, tick=None) -> None
             owner.append(np.full(len(P) - 1, k))
             closed.append(np.full(len(P) - 1, _closed(it)))
     if not segs:
-        return
+        return {}, items_of
     S = np.concatenate(segs)
     own = np.concatenate(owner)
     A, B = S[:, 0], S[:, 1]
@@ -731,47 +780,7 @@ def _check_marks_over_marks(d: Drawing, sink: DiagnosticSink, tick=None) -> None
                 out_end = ends[0] if inside[1] else ends[1]
                 key = ("into", marks[p].span, marks[q].span)
                 found.setdefault(key, []).append((min(gaps), marks[p], marks[q], into, out_end))
-    for key, rows in found.items():
-        if tick is not None:
-            tick()
-        if key[0] == "into":
-            # a pattern of marks run into one outline (a scale's ticks into a bar drawn over
-            # them); one or two marks that cross into an outline are read as meant (a dial's
-            # finger stop across its rim, a guitar's strings into its rosette)
-            per: dict = {}
-            for r in rows:
-                per.setdefault(id(r[2]), set()).add(id(r[1]))
-            if max(len(v) for v in per.values()) < INTO_LEAST:
-                continue
-        if key[0] == "twice":
-            rows.sort(key=lambda r: -r[0])
-            L, a, b, share = rows[0]
-            more = (f"; {len(rows) - 1} more pair{'s' if len(rows) > 2 else ''} of these "
-                    "statements on each other") if len(rows) > 1 else ""
-            whole = " (all of it)" if share > 0.999 else f" ({_pct(share, 1.0)} of it)"
-            sink.warning(
-                "W0513", f"the engraved `{_copy_label(b)}` lies on the engraved "
-                f"`{_copy_label(a)}` over {L:.2f} mm{whole}: the laser burns that stretch "
-                f"twice (a deeper, wider line){more}", b.span,
-                labels=[Label(a.span, f"`{a.label}` is here", primary=False)],
-                hint=f"draw each stroke once: leave `{b.label}` out where `{a.label}` already "
-                     f"runs (skip those copies of its loop), or move one of them clear")
-            continue
-        p_g, q_g = rows[0][1], rows[0][2]
-        count = len(rows)
-        fix = _clearing_move([g for g in items_of if g.span == key[1]],
-                             [g for g in items_of if g.span == key[2]], items_of, rows)
-        how = (f"move `{q_g.name or q_g.label}` {fix[0]:.2f} mm (by ({fix[1]:.2f}, "
-               f"{fix[2]:.2f}) mm) so that the marks stay {MIN_CLEAR:g} mm clear of it, or "
-               if fix is not None else "move the outline clear of the marks, or ")
-        sink.warning(
-            "W0513", f"the engraved `{_copy_label(p_g)}` runs into the engraved outline "
-            f"`{_copy_label(q_g)}` and ends inside it"
-            + (f" ({count} such marks of these statements)" if count > 1 else "")
-            + ": engraving drawn over engraving, the marks cross the outline's line",
-            p_g.span, labels=[Label(q_g.span, f"`{q_g.label}` is here", primary=False)],
-            hint=f"{how}end the marks on the outline or before it (a mark that crosses an "
-                 "outline and goes on, as a grid's lines do, is not warned)")
+    return found, items_of
 
 
 def _clearing_move(A_marks, B_marks, items_of, rows):
