@@ -4,8 +4,6 @@
 """
 from __future__ import annotations
 
-
-
 import numpy as np
 
 from ....base.diagnostics import DiagnosticSink, Label
@@ -13,31 +11,6 @@ from ....geometry.core.model import Structure
 from ...part.build.booleans import Drawing
 from ...part.measure.nearby import box_pairs
 from ..common import MIN_AREA, MIN_WALL, _area, _depth, _insert_fix, _union
-
-def _intended(hole: Structure, owner: Structure, obj) -> bool:
-    """``AllowOverlap(hole, x)`` was written for this hole (or a structure between it and
-    the solid it cuts) with ``x`` the refilling ``obj`` (a shape or a solid), a structure
-    around it, or a shape inside it."""
-    allowed: set = set()
-    s = hole
-    while s is not None:
-        allowed |= getattr(s, "overlap_ok", set())
-        if s is owner:
-            break
-        s = s.parent
-    if not allowed:
-        return False
-    t = obj if isinstance(obj, Structure) else obj.owner
-    if obj in allowed:
-        return True
-    if isinstance(obj, Structure) and any(not isinstance(a, Structure) and a.owner.is_within(obj)
-                                          for a in allowed):
-        return True                  # a shape named in AllowOverlap, inside this solid
-    while t is not None:
-        if t in allowed:
-            return True
-        t = t.parent
-    return False
 from .openings import TOUCH, _ref
 
 

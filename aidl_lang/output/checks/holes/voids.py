@@ -5,8 +5,6 @@
 """
 from __future__ import annotations
 
-
-
 import manifold3d as mf
 import numpy as np
 
@@ -16,31 +14,6 @@ from ...part.build.booleans import Drawing
 from ...part.measure.nearby import box_pairs, box_pairs_between
 from ..common import (MIN_AREA, _area, _cut_openings, _insert_fix, _inside, _loop_boxes, _signed,
                       _say_few, _solids_within)
-
-def _intended(hole: Structure, owner: Structure, obj) -> bool:
-    """``AllowOverlap(hole, x)`` was written for this hole (or a structure between it and
-    the solid it cuts) with ``x`` the refilling ``obj`` (a shape or a solid), a structure
-    around it, or a shape inside it."""
-    allowed: set = set()
-    s = hole
-    while s is not None:
-        allowed |= getattr(s, "overlap_ok", set())
-        if s is owner:
-            break
-        s = s.parent
-    if not allowed:
-        return False
-    t = obj if isinstance(obj, Structure) else obj.owner
-    if obj in allowed:
-        return True
-    if isinstance(obj, Structure) and any(not isinstance(a, Structure) and a.owner.is_within(obj)
-                                          for a in allowed):
-        return True                  # a shape named in AllowOverlap, inside this solid
-    while t is not None:
-        if t in allowed:
-            return True
-        t = t.parent
-    return False
 from .openings import TOUCH, _NAMEABLE, _ref
 
 
