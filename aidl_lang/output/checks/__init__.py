@@ -2,37 +2,41 @@
 
 In: the booleans' :class:`~aidl_lang.output.part.build.booleans.Drawing`, the exact output model and
 (for the fit check) the assembled product.  Out: W05xx diagnostics on the sink, and what the
-final part is as data and text (:mod:`.describe`, ``aidl check --describe``) and its parts list
-(:mod:`.inventory`, ``aidl parts``).  Imports the part and fabrication stages, never the writers.
+final part is as data and text (:mod:`.reports.describe`, ``aidl check --describe``) and its parts
+list (:mod:`.reports.inventory`, ``aidl parts``).  Imports the part and fabrication stages, never the writers.
 
 The booleans (:mod:`aidl_lang.output.part.build.booleans`) record each structure's shape and what each hole cut; these
 checks read them (docs/outputs.md, "Checks"; every code is in :mod:`aidl_lang.base.codes`).
 :func:`check_drawing` is the one entry point (run by :mod:`aidl_lang.pipeline` and the live
 preview); :func:`check_topology` (W0510) is run beside it when param values are overridden.
-One module per family:
+One module per family, in rooms by what they look at (:mod:`.holes`, :mod:`.material`,
+:mod:`.marks`; :mod:`.reports` for what they report), the contract in pyproject.toml:
 
-* :mod:`.openings`: ``W0501`` a hole refilled by a solid, ``W0502`` a hole that cuts nothing,
+* :mod:`.holes.openings`: ``W0501`` a hole refilled by a solid, ``W0502`` a hole that cuts nothing,
   ``W0503`` a hole that removes all of its solid, ``W0507`` a wall between two holes (or a
   hole and the outline) thinner than the minimum, ``W0508`` two holes that cut one opening,
-  ``W0512`` a statement's repeated faces (or two circles of one hole) that merge, ``W0514`` a
-  hole flush with the outer edge, ``W0515`` an opening no hole cuts (a void, or a window the
-  faces of one solid merge around);
-* :mod:`.walls`: ``W0507`` a wall thinner than ``min_wall`` (default :data:`MIN_WALL`,
-  0.5 mm), by a morphological opening of the part; ``W0519`` a slit of empty space narrower
-  than ``min_wall`` between two shapes of one outline;
+  ``W0514`` a hole flush with the outer edge;
+* :mod:`.holes.repeats`: ``W0512`` a statement's repeated faces (or two circles of one hole)
+  that merge;
+* :mod:`.holes.voids`: ``W0515`` an opening no hole cuts (a void, or a window the faces of
+  one solid merge around);
+* :mod:`.material.walls`: ``W0507`` a wall thinner than ``min_wall`` (default :data:`MIN_WALL`,
+  0.5 mm), by a morphological opening of the part; :mod:`.material.necks`: ``W0507`` two
+  members joined over a neck; :mod:`.material.slits`: ``W0519`` a slit of empty space
+  narrower than ``min_wall`` between two shapes of one outline;
 * :mod:`.parts`: ``W0504`` a part that falls apart into pieces, ``W0506`` a child solid that
   adds nothing, ``W0509`` a face of zero area, ``W0511`` parts that interpenetrate,
   ``W0520`` a ledge where one shape pokes past another's edge by less than ``min_wall``;
-* :mod:`.engravings`: ``W0505`` engraving off the material, ``W0516`` engraving along the cut,
+* :mod:`.marks.engravings`: ``W0505`` engraving off the material, ``W0516`` engraving along the cut,
   ``W0524`` a drawing's Line of zero length;
 * :mod:`.allowances`: ``W0523`` an ``AllowOverlap`` that allows nothing;
-* :mod:`.text`: ``W0513`` text drawn over text or over an engraved mark;
-* :mod:`.through`: ``W0522`` a through-cut off the material or along the outline (or a segment of one), or one
+* :mod:`.marks.text`: ``W0513`` text drawn over text or over an engraved mark;
+* :mod:`.material.through`: ``W0522`` a through-cut off the material or along the outline (or a segment of one), or one
   along another, ``W0507`` a web thinner than the minimum between through-cuts (or a through-cut and the outline);
 * :mod:`.assembly`: ``W0517`` parts that collide once assembled, ``W0518`` a part that
   touches no other;
 * :mod:`.changes`: ``W0510`` a part whose topology differs from the defaults';
-* :mod:`.toolpath_walls` (``aidl render``, not this entry point): ``W0507`` the material
+* :mod:`.material.toolpath_walls` (``aidl render``, not this entry point): ``W0507`` the material
   beside a through-cut that the cutter's own width (a router's bit, a laser's kerf) leaves
   thinner than the minimum wall, and ``W0510`` a part the bit cuts apart;
 * :mod:`.common`: the tolerances and helpers they share.
