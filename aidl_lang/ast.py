@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import functools
 
-from .diagnostics import Span
+from .base.diagnostics import Span
 
 STRUCTURE_KINDS = ("solid", "hole", "cut", "drawing", "assembly")
 

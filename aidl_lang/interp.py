@@ -12,7 +12,7 @@ This module is the entry point; the interpreter's parts are in :mod:`aidl_lang.i
 ``statements`` (files, imports, bodies, loops, templates, constraints), ``calls`` (constructors,
 coercion, built-in functions) and ``expressions`` (operators, units, members).
 
-Limits (docs/language.md, "Limits"; :mod:`aidl_lang.limits`): loops and comprehensions at most
+Limits (docs/language.md, "Limits"; :mod:`aidl_lang.base.limits`): loops and comprehensions at most
 ``MAX_ITER`` iterations, at most ``MAX_GEOMETRY`` geometry objects, template nesting at most
 ``MAX_TEMPLATE_DEPTH``.
 """
@@ -21,17 +21,17 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
-from .diagnostics import Diagnostic, DiagnosticSink, EvalError, Label, Span
+from .base.diagnostics import Diagnostic, DiagnosticSink, EvalError, Label, Span
 from .geometry.core.expr import Lin, evaluate, lift
 from .geometry.core.model import Model, Structure
 from .interpreter.calls import Calls
 from .interpreter.common import BudgetExhausted, FileCtx, Scope
 from .interpreter.expressions import Expressions
 from .interpreter.statements import Statements
-from .limits import (DEFAULT_BUDGET, MAX_GEOMETRY, MAX_ITER, MAX_TEMPLATE_DEPTH, WALL_GUARD, Budget,
+from .base.limits import (DEFAULT_BUDGET, MAX_GEOMETRY, MAX_ITER, MAX_TEMPLATE_DEPTH, WALL_GUARD, Budget,
                      cpu_text, now, wall_text)
-from .memory import gc_paused
-from .sources import STDLIB
+from .base.memory import gc_paused
+from .library.sources import STDLIB
 
 __all__ = ["Interpreter", "EvalError", "STDLIB", "MAX_ITER", "MAX_GEOMETRY", "MAX_TEMPLATE_DEPTH"]
 
@@ -88,7 +88,7 @@ class Interpreter(Statements, Calls, Expressions):
         restored): a run makes hundreds of thousands of small objects (values, expressions,
         records) that reference counting frees, and the collector's full passes over a large
         heap were up to half the time (docs/dev/performance.md, "The interpreter").  What a run
-        makes is bounded by its :class:`~aidl_lang.limits.Budget`."""
+        makes is bounded by its :class:`~aidl_lang.base.limits.Budget`."""
         if self.sink.main is None:       # diagnostics in other files: at the call (issue 86)
             self.sink.main = program.path
         with gc_paused():

@@ -13,16 +13,16 @@ import warnings
 
 import numpy as np
 
-from .records import Compared
-from .diagnostics import Diagnostic, DiagnosticSink, Label, as_lf, in_stdlib, shown_path
+from .base.records import Compared
+from .base.diagnostics import Diagnostic, DiagnosticSink, Label, as_lf, in_stdlib, shown_path
 from .interp import Interpreter
-from .memory import gc_paused
-from .limits import (DEFAULT_BUDGET, MAX_EXTENT, MEMORY_HINT, Budget, Deadline, OutOfBudget,
+from .base.memory import gc_paused
+from .base.limits import (DEFAULT_BUDGET, MAX_EXTENT, MEMORY_HINT, Budget, Deadline, OutOfBudget,
                      OutOfMemory, is_out_of_memory, memory_fix, memory_text, now)
 from .geometry.core.expr import Lin, Nl
 from .geometry.core.model import Model
 from .parser import parse
-from .output.part.booleans import Drawing, render_model
+from .output.part.build.booleans import Drawing, render_model
 from .output.checks import check_drawing, check_stray_holes, check_topology, topology
 from .output.checks.boxes import check_final_boxes
 from .solver import SolveResult, solve
@@ -55,7 +55,7 @@ def compile_source(source: str, path: str, overrides: dict[str, str] | None = No
                    budget: Budget = DEFAULT_BUDGET) -> Compiled:
     """Run the pipeline on ``source``; never raises for bad input (errors are diagnostics).
 
-    ``budget`` bounds interpretation and solving together (:class:`aidl_lang.limits.Budget`;
+    ``budget`` bounds interpretation and solving together (:class:`aidl_lang.base.limits.Budget`;
     running out is ``E0304``)."""
     sink = DiagnosticSink()
     if source.startswith("\ufeff"):       # a UTF-8 byte order mark is not part of the program
@@ -239,7 +239,7 @@ def _structure_span(path: str, source: str):
     """The first top-level structure's header line (``solid plate {``), else line 1: where a
     whole-program error (out of memory) is shown."""
     import re
-    from .diagnostics import Span
+    from .base.diagnostics import Span
     m = re.search(r"^(solid|hole|drawing|assembly)[ \t]+\w+", source, re.M)
     start, end = (m.start(), m.end()) if m else (0, len(source.split("\n", 1)[0]))
     line = source.count("\n", 0, start) + 1
@@ -250,7 +250,7 @@ def _structure_span(path: str, source: str):
 def _deep_span(ex, path: str, source: str):
     """The line with the most operators (the deepest expression, as far as one can tell)."""
     import re
-    from .diagnostics import Span
+    from .base.diagnostics import Span
     best, best_score, start = None, -1, 0
     for no, line in enumerate(source.split("\n"), 1):
         score = len(re.findall(r"\*\*|\bif\b|\bnot\b|\band\b|\bor\b|[-+*/(\[]", line))
@@ -418,7 +418,7 @@ def _empty_drawing(program, model: Model) -> bool:
 
 def check_extent(sink: DiagnosticSink, model: Model) -> bool:
     """After solving: every unknown finite and within the model extent
-    (:data:`~aidl_lang.limits.MAX_EXTENT`), else one E0305 at the structure that holds the
+    (:data:`~aidl_lang.base.limits.MAX_EXTENT`), else one E0305 at the structure that holds the
     first offending unknown (no NaN or absurd coordinate reaches a writer)."""
     import math
     x = np.asarray(model.x, dtype=float)
@@ -454,7 +454,7 @@ def check_assertions(sink: DiagnosticSink, model: Model, held_only: bool = False
 def instance_calls(s) -> list:
     """The template calls (outermost first: ``("`name`", call span)``) that made structure
     ``s`` or the instance it is in: where a diagnostic on its geometry, constraints or
-    asserts in a template's file is reported (:func:`aidl_lang.diagnostics.at_call_site`;
+    asserts in a template's file is reported (:func:`aidl_lang.base.diagnostics.at_call_site`;
     one on a structure itself, whose span is in its parent's text: ``s.parent``'s)."""
     out = []
     while s is not None:
@@ -484,13 +484,13 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
                         seconds: float | None = None, max_rows: int | None = None,
                         deadline: float | None = None, why: set | None = None) -> int:
     """W0401 for each user constraint that others already imply (``aidl check``; what it
-    measures: :func:`aidl_lang.solver.redundancy.redundancies`).  ``seconds`` bounds the search
+    measures: :func:`aidl_lang.solver.diagnosis.redundancy.redundancies`).  ``seconds`` bounds the search
     (the constraints found by then are reported) and ``max_rows`` the blocks of rows sharing
-    unknowns that it ranks; ``deadline`` (:func:`~aidl_lang.limits.now`: the run's end in CPU seconds) bounds it
+    unknowns that it ranks; ``deadline`` (:func:`~aidl_lang.base.limits.now`: the run's end in CPU seconds) bounds it
     too.  Returns the number of user constraints not looked at (out of time, or in a block
     too large)."""
-    from .solver.diagnose import MAX_DENSE
-    from .solver.redundancy import search
+    from .solver.core.rank import MAX_DENSE
+    from .solver.diagnosis.redundancy import search
     if seconds is not None:
         end = now() + seconds
         deadline = end if deadline is None else min(deadline, end)
@@ -550,11 +550,11 @@ def report_sliding(sink: DiagnosticSink, result: SolveResult):
     """W0404 for each feature (a structure inside a part) that can move relative to its part
     although a constraint places it (in the other direction, typically: `AlignCenterX(bits,
     plate)` and nothing for y), so only its starting guess holds it there
-    (:func:`aidl_lang.solver.sliding.sliding`); a feature placed by its coordinates alone is
+    (:func:`aidl_lang.solver.diagnosis.sliding.sliding`); a feature placed by its coordinates alone is
     listed on the ok line, not warned.
     Freedom of a whole part (where it sits) is harmless and not reported.  Returns the
-    :class:`~aidl_lang.solver.sliding.Sliding` found (None for a model too large)."""
-    from .solver.sliding import sliding
+    :class:`~aidl_lang.solver.diagnosis.sliding.Sliding` found (None for a model too large)."""
+    from .solver.diagnosis.sliding import sliding
     solver = result.solver
     if int(solver.free.sum()) > MAX_SLIDING_UNKNOWNS:
         return None
@@ -594,7 +594,7 @@ def _report_groups(sink: DiagnosticSink, reds: list, found, makes: set) -> set:
     nothing is lost (issue 84): a standard-library template's own constraints and statements
     that make geometry (a pattern's placement, :func:`_makers`) are kept, and the others are
     tried from the last written back, each dropped only when the kept ones still hold every
-    unknown the group held (``found.rank_lost``, :class:`~aidl_lang.solver.redundancy.Search`;
+    unknown the group held (``found.rank_lost``, :class:`~aidl_lang.solver.diagnosis.redundancy.Search`;
     each member is implied by the others, not any two by any one).  With nothing safe to drop
     the redundancy is named without a drop list.  Returns the ids of the constraints so
     reported."""

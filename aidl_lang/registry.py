@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 
-from .records import Frozen, Record
+from .base.records import Frozen, Record
 
 REQUIRED = object()
 
@@ -142,7 +142,19 @@ def _c(*variants, doc, cat="constraint", varargs=False):
     return (cat, [tuple(v) for v in variants], doc, {}, varargs)
 
 
+def _op(doc: str, *more):
+    """An operation on a ``target`` (geometry or a structure) and the arguments ``more``."""
+    return _c([A("target", "boxed"), *more], cat="operation", doc=doc)
+
+
+def _boxes(doc: str, *more):
+    """A structural constraint between two boxed things ``a`` and ``b`` (and the arguments
+    ``more`` after them)."""
+    return _c([A("a", "boxed"), A("b", "boxed"), *more], cat="structural", doc=doc)
+
+
 A = Arg
+_GAP = A("gap", "length", 0.0)      # the optional gap of Above, Below, LeftOf, RightOf
 # Scaled and Scale (issue 95): the same arguments, and the words models give them
 _SCALE_ARGS = [A("target", "boxed"), A("factor", "number"), A("center", "point", None)]
 _SCALE_WORDS = {"scale": "factor", "by": "factor", "k": "factor", "ratio": "factor",
@@ -364,38 +376,23 @@ _DEFS = {
                 doc="The angle from line a to line b; the sense (cw/ccw) nearest the starting "
                     "geometry is used."),
     # ------------------------------------------------------------ structural
-    "Above": _c([A("a", "boxed"), A("b", "boxed"), A("gap", "length", 0.0)], cat="structural",
-                doc="a sits on top of b: a.bb.bottom == b.bb.top + gap."),
-    "Below": _c([A("a", "boxed"), A("b", "boxed"), A("gap", "length", 0.0)], cat="structural",
-                doc="a sits under b: a.bb.top == b.bb.bottom - gap."),
-    "LeftOf": _c([A("a", "boxed"), A("b", "boxed"), A("gap", "length", 0.0)], cat="structural",
-                 doc="a touches b from the left: a.bb.right == b.bb.left - gap."),
-    "RightOf": _c([A("a", "boxed"), A("b", "boxed"), A("gap", "length", 0.0)], cat="structural",
-                  doc="a touches b from the right: a.bb.left == b.bb.right + gap."),
-    "Gap": _c([A("a", "boxed"), A("b", "boxed"), A("gap", "length"), A("axis", "string", "x")],
-              cat="structural",
-              doc="Empty space between a's and b's bounding boxes along axis \"x\" or \"y\", "
-                  "whichever side each is on."),
-    "Inside": _c([A("a", "boxed"), A("b", "boxed"), A("margin", "length", 0.0)],
-                 cat="structural", doc="a's bounding box lies within b's, at least margin in."),
-    "CenterInside": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
-                       doc="a is centered in b: their bounding-box centers coincide."),
-    "Taller": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
-                 doc="a.bb.height >= b.bb.height."),
-    "Wider": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
-                doc="a.bb.width >= b.bb.width."),
-    "AlignCenterX": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
-                       doc="Same horizontal center: a.bb.center_x == b.bb.center_x."),
-    "AlignCenterY": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
-                       doc="Same vertical center: a.bb.center_y == b.bb.center_y."),
-    "AlignLeft": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
-                    doc="a.bb.left == b.bb.left."),
-    "AlignRight": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
-                     doc="a.bb.right == b.bb.right."),
-    "AlignTop": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
-                   doc="a.bb.top == b.bb.top."),
-    "AlignBottom": _c([A("a", "boxed"), A("b", "boxed")], cat="structural",
-                      doc="a.bb.bottom == b.bb.bottom."),
+    "Above": _boxes("a sits on top of b: a.bb.bottom == b.bb.top + gap.", _GAP),
+    "Below": _boxes("a sits under b: a.bb.top == b.bb.bottom - gap.", _GAP),
+    "LeftOf": _boxes("a touches b from the left: a.bb.right == b.bb.left - gap.", _GAP),
+    "RightOf": _boxes("a touches b from the right: a.bb.left == b.bb.right + gap.", _GAP),
+    "Gap": _boxes("Empty space between a's and b's bounding boxes along axis \"x\" or \"y\", "
+                  "whichever side each is on.", A("gap", "length"), A("axis", "string", "x")),
+    "Inside": _boxes("a's bounding box lies within b's, at least margin in.",
+                     A("margin", "length", 0.0)),
+    "CenterInside": _boxes("a is centered in b: their bounding-box centers coincide."),
+    "Taller": _boxes("a.bb.height >= b.bb.height."),
+    "Wider": _boxes("a.bb.width >= b.bb.width."),
+    "AlignCenterX": _boxes("Same horizontal center: a.bb.center_x == b.bb.center_x."),
+    "AlignCenterY": _boxes("Same vertical center: a.bb.center_y == b.bb.center_y."),
+    "AlignLeft": _boxes("a.bb.left == b.bb.left."),
+    "AlignRight": _boxes("a.bb.right == b.bb.right."),
+    "AlignTop": _boxes("a.bb.top == b.bb.top."),
+    "AlignBottom": _boxes("a.bb.bottom == b.bb.bottom."),
     # ------------------------------------------------------------ placement (3D)
     "Place": _c([A("part", "boxed"), A("position", "any", None), A("rotation", "any", None)],
                 cat="placement",
@@ -413,27 +410,26 @@ _DEFS = {
                    "on the sheet, the part left of it stays where Place puts it, the rest "
                    "turns; all known before solving. The sheet stays flat."),
     # ------------------------------------------------------------ operations
-    "Mirrored": _c([A("target", "boxed"), A("about", "line")], cat="operation",
-                   doc="A copy of geometry or a structure mirrored about a line; it follows the "
-                       "original. Of a list (`Mirrored(legs, axis)`): the list of each item's "
-                       "mirror image, in order. `Mirror(a, b, about)` is the Symmetric "
-                       "constraint."),
+    "Mirrored": _op("A copy of geometry or a structure mirrored about a line; it follows the "
+                    "original. Of a list (`Mirrored(legs, axis)`): the list of each item's "
+                    "mirror image, in order. `Mirror(a, b, about)` is the Symmetric "
+                    "constraint.",
+                    A("about", "line")),
     "Scaled": _c(_SCALE_ARGS, cat="operation",
                  doc="A copy scaled by factor about center (the origin unless given)."),
     "Scale": _c(_SCALE_ARGS, cat="operation",
                 doc="Resize a whole structure or shape in place, never by rewriting its "
                     "numbers: `Scale(plaque, 0.7)` is 30 % smaller (the original: construction "
                     "`plaque_original`)."),
-    "Translated": _c([A("target", "boxed"), A("by", "point")], cat="operation",
-                     doc="A copy moved by the vector by."),
-    "Translate": _c([A("target", "boxed"), A("by", "point")], cat="operation",
-                    doc="Move a structure or shape in place by the vector by."),
-    "Flip": _c([A("target", "boxed"), A("about", "line")], cat="operation",
-               doc="Mirror a structure or shape in place about a line."),
-    "LinearPattern": _c([A("target", "boxed"), A("count", "number"), A("step", "point")],
-                        cat="operation",
-                        doc="count instances in all, each moved by step (a vector) from the last; "
-                            "gives the list [original, copy1, ...]."),
+    "Translated": _op("A copy moved by the vector by.",
+                      A("by", "point")),
+    "Translate": _op("Move a structure or shape in place by the vector by.",
+                     A("by", "point")),
+    "Flip": _op("Mirror a structure or shape in place about a line.",
+                A("about", "line")),
+    "LinearPattern": _op("count instances in all, each moved by step (a vector) from the last; "
+                         "gives the list [original, copy1, ...].",
+                         A("count", "number"), A("step", "point")),
     "CircularPattern": _c([A("target", "boxed"), A("count", "number"), A("center", "point"),
                            A("angle", "angle", 2 * math.pi), A("start_angle", "angle", 0.0)],
                           [A("target", "boxed"), A("count", "number"), A("center", "point"),
@@ -812,7 +808,7 @@ def near_args(name: str, names: list[str]) -> list[str]:
     """Accepted argument names near ``name`` in spelling, for did-you-mean: none shorter than
     3 letters unless ``name`` is that short too (`font` is not `on`, though difflib says
     0.67)."""
-    from .diagnostics import did_you_mean
+    from .base.diagnostics import did_you_mean
     return [c for c in did_you_mean(name, names) if len(c) >= 3 or len(name) <= 3]
 
 

@@ -15,11 +15,11 @@ from __future__ import annotations
 
 
 from . import ast as A
-from .diagnostics import Diagnostic, DiagnosticSink, Fix, Label, did_you_mean
+from .base.diagnostics import Diagnostic, DiagnosticSink, Fix, Label, did_you_mean
 from .registry import (ARG_NOTES, CONSTANTS, ENTRIES, FUNCTIONS, SYNONYMS, accepted_args,
                        choose_variant, UNITS_ANGLE, UNITS_LENGTH, lookup, near_args,
                        template_param)
-from .sources import ImportRefused
+from .library.sources import ImportRefused
 
 
 def _real(path: str) -> str:
@@ -382,13 +382,13 @@ class Checker:
                                              "standard-library template")
             d_sugg = (self.templates.get(sugg[0]) or self.imported.get(sugg[0])) if sugg else None
             if d_sugg is not None and n not in HALLUCINATIONS:
-                from .reference import template_params_hint
+                from .library.reference import template_params_hint
                 hint += " " + template_params_hint(d_sugg)
             elif sugg and n not in HALLUCINATIONS and lookup(sugg[0]) is not None:
                 e_sugg = lookup(sugg[0])
                 hint += " " + "; ".join(e_sugg.signature(v) for v in e_sugg.variants)
             elif not sugg and n not in HALLUCINATIONS:
-                from .reference import find
+                from .library.reference import find
                 t = find(n)             # `aidl docs` knows it: a stdlib template not imported
                 if t is not None and t.kind.endswith(".aidl"):
                     module = t.kind.rsplit("std/", 1)[1]
@@ -413,7 +413,7 @@ class Checker:
         if bad is not None and self.sibling(e, entry, bad):
             return
         if bad is not None:
-            from .reference import entry_units_hint
+            from .library.reference import entry_units_hint
             note = ARG_NOTES.get((entry.name, bad.name))
             sugg = [] if note else near_args(bad.name, all_names)
             self.sink.error("E0105", f"`{n}` has no argument `{bad.name}`", bad.span,
@@ -438,7 +438,7 @@ class Checker:
         names the sibling, the hint and the fix give the call rewritten (the constructor's name
         and the keyword's canonical name replaced, the rest as written).  False when no
         sibling fits (the ordinary E0105 follows)."""
-        from .diagnostics import Fix
+        from .base.diagnostics import Fix
         from .registry import arg_synonyms
         kwnames = [k.name for k in e.kwargs]
         for sib in SIBLINGS.get(entry.name, ()):
@@ -484,7 +484,7 @@ class Checker:
         a constraint on its box after the assignment, written out (the fix replaces the
         statement with the call without those keywords and the constraint), or placement
         parameters added to the ``def``."""
-        from .diagnostics import Fix
+        from .base.diagnostics import Fix
         names = ", ".join(f"`{k.name}`" for k in placing)
         span = placing[0].span.cover(placing[-1].span)
         src = self.sink.sources.get(e.span.file) or ""
@@ -538,7 +538,7 @@ class Checker:
             if name is None and kw in placing:
                 continue
             if name is None:
-                from .reference import template_params_hint
+                from .library.reference import template_params_hint
                 sugg = did_you_mean(kw.name, params)
                 self.sink.error("E0105", f"`{d.name}` has no parameter `{kw.name}`", kw.span,
                                 hint=(f"did you mean `{sugg[0]}`? " if sugg else "")
@@ -561,14 +561,14 @@ def _imported_names(path: str, target: str, seen: frozenset = frozenset(),
                     memo: dict | None = None, defs: dict | None = None) -> set:
     """Names ``import "target"`` (in the file ``path``) brings without ``as``: the file's
     templates, params and top-level constants, aliases, and what it imported in turn
-    (docs/language.md §2.2).  Raises :class:`~aidl_lang.sources.ImportRefused` for the
+    (docs/language.md §2.2).  Raises :class:`~aidl_lang.library.sources.ImportRefused` for the
     import itself; a refused or cyclic import *inside* the imported file adds no names (the
     interpreter reports it where it is written).  ``memo`` (real path -> names) makes each
     file read and parsed once per check: an import graph costs linear time (a diamond of
     16 levels, each file importing the two of the next, was read on every path: 2^16
     times, 82 s).  ``defs`` (name -> :class:`~aidl_lang.ast.Def`), when given, receives the
     templates read, for the hints that list a template's parameters."""
-    from .sources import read_import, resolve_import
+    from .library.sources import read_import, resolve_import
     from .parser import parse_import
     real = resolve_import(target, path)
     key = str(real)

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Regenerate ``docs/codes.md`` (every diagnostic code and its explanation, the page the
-language server's ``codeDescription.href`` links to) from ``aidl_lang/codes.py``:
+language server's ``codeDescription.href`` links to) from ``aidl_lang/base/codes.py``:
 ``python editors/gen_codes_doc.py``; ``--check`` writes nothing and exits 1 if it is stale.
 """
 import sys
@@ -9,7 +9,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from aidl_lang.codes import codes_markdown  # noqa: E402
+from aidl_lang.base.codes import codes_markdown  # noqa: E402
 from generated import write_or_check  # noqa: E402
 
 TARGET = ROOT / "docs" / "codes.md"

@@ -171,7 +171,7 @@ def corpus_sources() -> dict[str, list[tuple[str, str]]]:
 
 def lark_syntax_errors(source: str, path: str = "<corpus>") -> list:
     """The errors the Lark parser (aidl_lang/parser.py, the parse alone) reports for ``source``."""
-    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.base.diagnostics import DiagnosticSink
     from aidl_lang.parser import parse
 
     sink = DiagnosticSink()

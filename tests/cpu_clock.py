@@ -1,6 +1,6 @@
 """A compile's clock that does not depend on how busy the machine is, for the tests of budgets.
 
-Since issue 83 the compile's budget is CPU seconds itself (aidl_lang/limits.py ``now``,
+Since issue 83 the compile's budget is CPU seconds itself (aidl_lang/base/limits.py ``now``,
 ``Deadline``; tests/test_budget_clock.py), with wall time only as its outer guard at
 ``limits.WALL_GUARD`` times the seconds, and the servers' wall-time limits
 (``limits.wall_limit``) far beyond it.  This helper remains for the tests that time their own

@@ -44,12 +44,11 @@ def test_every_relative_import_resolves(path, parts, is_pkg):
 
 
 def test_flat_package_is_gone():
-    """The stages live in their folders; the top level holds only the compiler core and the
-    public API (`api`)."""
+    """The stages live in their folders; the top level holds only the compiler core (the design
+    card's ``parser``, ``typecheck``, ``interp``), the vocabulary, the pipeline and the public
+    API (the package ``api``); the rest is in rooms: ``base``, ``host``, ``library``, ``params``."""
     top = sorted(p.stem for p in PKG.glob("*.py") if p.stem != "__init__")
-    assert top == ["api", "ast", "cache", "codes", "diagnostics", "files", "interp", "limits",
-                   "memory", "parser", "pipeline", "records", "reference", "registry", "set_values",
-                   "sources", "sweep", "sweep_plan", "topic_examples", "typecheck", "workers"]
+    assert top == ["ast", "interp", "parser", "pipeline", "registry", "typecheck"]
 
 
 def test_readme_layout_names_every_package_and_core_module():
@@ -62,26 +61,43 @@ def test_readme_layout_names_every_package_and_core_module():
             assert f"`{m.stem}`" in layout, m.stem
 
 
-MAX_MODULE_LINES = 1_200     # issue 63: a module past this is split by what its parts are
-MAX_FUNCTION_LINES = 200     # from `def` to its last line, nested functions included
+MAX_MODULE_LINES = 1_000     # issue 96: a module holds one idea, whatever its length lands at
+MAX_FUNCTION_LINES = 150     # from `def` to its last line, nested functions included
+MAX_FOLDER_LINES = 5_000     # the modules of one folder (its sub-packages not counted)
+# a module past the bound that is one idea, and why
+ONE_IDEA = {"base/codes.py": "one table: the text of every diagnostic code"}
+# issue 96: drawing/ is cut by the helper who works in it (h16-infer); named here until it lands
+PENDING = {"drawing/infer/infer.py", "drawing/write/program.py", "drawing/read/dxf.py",
+           "drawing/infer/"}
 
 
 def test_no_module_or_function_is_too_long():
-    """No module under aidl_lang/ over MAX_MODULE_LINES lines and no function over
-    MAX_FUNCTION_LINES (the parser is a package of its own since issue 96); codes.py is one table,
-    the text of every diagnostic code, and may pass it."""
+    """No module under aidl_lang/ over MAX_MODULE_LINES lines but those ONE_IDEA names, and no
+    function over MAX_FUNCTION_LINES."""
     long_modules, long_functions = [], []
     for f in sorted(PKG.rglob("*.py")):
         text = f.read_text()
-        where = f.relative_to(ROOT)
-        if text.count("\n") > MAX_MODULE_LINES and f != PKG / "codes.py":
+        where = f.relative_to(PKG).as_posix()
+        if text.count("\n") > MAX_MODULE_LINES and where not in ONE_IDEA and where not in PENDING:
             long_modules.append(f"{where} ({text.count(chr(10))} lines)")
         for node in ast.walk(ast.parse(text)):
             if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
                 n = node.end_lineno - node.lineno + 1
-                if n > MAX_FUNCTION_LINES:
+                if n > MAX_FUNCTION_LINES and f"{where}:{node.name}" not in PENDING:
                     long_functions.append(f"{where}:{node.lineno} {node.name} ({n} lines)")
     assert not long_modules and not long_functions, long_modules + long_functions
+
+
+def test_no_folder_is_too_large():
+    """No folder of modules over MAX_FOLDER_LINES lines (issue 96): a folder that grows past it
+    is split into rooms by what a reader looks for."""
+    large = []
+    for d in sorted({f.parent for f in PKG.rglob("*.py")}):
+        n = sum(f.read_text().count("\n") for f in d.glob("*.py"))
+        where = d.relative_to(PKG).as_posix() + "/"
+        if n > MAX_FOLDER_LINES and where not in PENDING:
+            large.append(f"{where} ({n} lines)")
+    assert not large, large
 
 
 def test_architecture_md_names_every_module_and_folder():

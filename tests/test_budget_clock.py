@@ -16,8 +16,8 @@ import time
 
 import pytest
 
-from aidl_lang import limits
-from aidl_lang.limits import DEFAULT_BUDGET, Budget, Deadline, OutOfBudget
+from aidl_lang.base import limits
+from aidl_lang.base.limits import DEFAULT_BUDGET, Budget, Deadline, OutOfBudget
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 

@@ -24,7 +24,7 @@ PROGRAM = "solid s {\n    a = Point(0, 0)\n    b = Point(3, 4)\n    Distance(a, 
 
 CHILD = """
 import sys
-from aidl_lang.diagnostics import DiagnosticSink
+from aidl_lang.base.diagnostics import DiagnosticSink
 from aidl_lang.parser import parse
 sink = DiagnosticSink()
 prog = parse(sys.argv[1], "t.aidl", sink)
@@ -241,7 +241,7 @@ def _rebuilt(tmp_path, f):
     r = _run(tmp_path)
     assert r.returncode == 0 and r.stdout.split() == ["StructDecl", "s"], r.stderr
     assert stat.S_ISREG(os.lstat(f).st_mode)
-    from aidl_lang.cache import read_checked
+    from aidl_lang.host.cache import read_checked
     head = json.loads(f.read_text().split("\n", 1)[0])
     assert read_checked(f, head["key"]) is not None
 

@@ -263,14 +263,14 @@ def test_shape_warnings_reach_check_json(tmp_path, capsys):
 
 
 def test_every_shape_code_is_explained():
-    from aidl_lang.codes import CODES
+    from aidl_lang.base.codes import CODES
     assert SHAPE_CODES <= set(CODES)
 
 
 # ------------------------------------------------------------ W0507's whole-area bound
 def _wall_warnings(drawing, min_wall, quick):
     """W0507's messages, spans and hints for every part, with or without the bound."""
-    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.base.diagnostics import DiagnosticSink
     from aidl_lang.output import checks as C
     roots = C._part_roots(drawing)
     by_part: dict = {}
@@ -389,7 +389,7 @@ def test_W0506_area_bound_gives_the_measured_warnings(children, w, h):
     """W0506 skips measuring a child whose area exceeds the others' by far: the same warnings
     as measuring every child, for child solids of any size inside, across or outside their
     parent and each other."""
-    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.base.diagnostics import DiagnosticSink
     from aidl_lang.output import checks as C
     from aidl_lang.pipeline import compile_source
     body = [f"    solid c{i} {{\n        r = Rectangle(center=({x:.3f}, {y:.3f}), width={cw:.3f}, "
@@ -561,7 +561,7 @@ def test_W0509_an_empty_part_is_never_a_silent_ok(compile_text):
 def test_W0509_reads_the_booleans_empty_faces():
     """The booleans' own record of zero-area faces (`Drawing.empty_faces`, when present) is
     reported with its area, each geometry once."""
-    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.base.diagnostics import DiagnosticSink
     from aidl_lang.output import checks as C
     from aidl_lang.pipeline import compile_source
     c = compile_source("solid s {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
@@ -586,12 +586,12 @@ def test_box_pairs_finds_every_overlapping_pair(boxes, pad):
     """box_pairs (a grid over the centres, large boxes apart; or, for few boxes, all
     pairs) gives exactly the pairs that the all-pairs reference gives."""
     import numpy as np
-    from aidl_lang.output.part.nearby import box_pairs
+    from aidl_lang.output.part.measure.nearby import box_pairs
     B = np.array([(x, y, x + w, y + h) for x, y, w, h in boxes]).reshape(-1, 4)
     want = {(i, j) for i in range(len(B)) for j in range(i + 1, len(B))
             if B[i, 0] - pad <= B[j, 2] + pad and B[j, 0] - pad <= B[i, 2] + pad
             and B[i, 1] - pad <= B[j, 3] + pad and B[j, 1] - pad <= B[i, 3] + pad}
-    from aidl_lang.output.part import nearby
+    from aidl_lang.output.part.measure import nearby
     for small in (nearby.SMALL_BOXES, 0):       # all pairs, then the grid
         old, nearby.SMALL_BOXES = nearby.SMALL_BOXES, small
         try:
@@ -609,11 +609,11 @@ def test_close_pairs_is_the_all_pairs_distance(points, feats, dist):
     (vertex, segment) pair of different features closer than `dist`, with the exact
     distance, as measuring all pairs does."""
     import numpy as np
-    from aidl_lang.output.part.nearby import close_pairs
+    from aidl_lang.output.part.measure.nearby import close_pairs
     V = np.array(points, dtype=float)
     f = np.array(feats[:len(V)])
     A, B = V, np.roll(V, -1, axis=0)
-    from aidl_lang.output.part import nearby
+    from aidl_lang.output.part.measure import nearby
     gots = []
     for small in (nearby.SMALL_VERTS, 0):       # the y band, then the grid
         old, nearby.SMALL_VERTS = nearby.SMALL_VERTS, small
@@ -649,7 +649,7 @@ def test_band_pairs_through_the_grid_are_the_bands_own(n, dist, cx, r):
     ones the bands give, pair for pair and in the same order, so that every check's result
     stays the same."""
     import numpy as np
-    from aidl_lang.output.part import nearby
+    from aidl_lang.output.part.measure import nearby
     t = np.linspace(0, 2 * np.pi, n, endpoint=False)
     V = np.column_stack([cx + r * np.cos(t), r * np.sin(3 * t) / 3 + r * np.sin(t)])
     A, B = V, np.roll(V, -1, axis=0)
@@ -675,7 +675,7 @@ def test_close_pairs_of_features_apart_are_those_of_all_vertices(loops, dist):
     inside a gear: nothing of the gear's outline); the arrays are the very ones all of them
     give, pair for pair and in the same order."""
     import numpy as np
-    from aidl_lang.output.part import nearby
+    from aidl_lang.output.part.measure import nearby
     polys, feats = [], []
     for k, (cx, cy, r, n) in enumerate(loops):
         t = np.linspace(0, 2 * np.pi, n, endpoint=False)
@@ -1304,7 +1304,7 @@ def test_W0507_equal_lone_holes_are_opened_once_and_thin_walls_still_found(monke
     least 2 t^2 as the opening of the whole plate, and the same area removed."""
     import manifold3d as mf
     import numpy as np
-    from aidl_lang.output.checks import walls as C     # patched where _thin looks it up
+    from aidl_lang.output.checks.material import walls as C     # patched where _thin looks it up
     t = 1.0
     holes = [mf.CrossSection.circle(2.0, 45).translate((6.0 * i + 3, 6.0 * j + 3))
              for i in range(8) for j in range(8)]
@@ -1335,7 +1335,7 @@ def test_W0507_a_long_loop_and_its_bore_are_opened_whole(monkeypatch):
     import math
 
     import manifold3d as mf
-    from aidl_lang.output.checks import walls as C     # patched where _thin looks it up
+    from aidl_lang.output.checks.material import walls as C     # patched where _thin looks it up
     n, t = 2880, 0.5
     pts = [((40 + 2 * math.cos(36 * 2 * math.pi * k / n)) * math.cos(2 * math.pi * k / n),
             (40 + 2 * math.cos(36 * 2 * math.pi * k / n)) * math.sin(2 * math.pi * k / n))

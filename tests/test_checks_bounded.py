@@ -1,5 +1,5 @@
 """The shape checks stay bounded on dense drawings (issue 58): W0519's grouping of gap
-middles by cells (no list of pairs), the pair limit of output/part/nearby.py, and each family's
+middles by cells (no list of pairs), the pair limit of output/part/measure/nearby.py, and each family's
 share of the wall time, past which a ``"W0521"`` note says what was not checked."""
 from __future__ import annotations
 
@@ -83,10 +83,10 @@ def _pairwise_groups(P, r):
 
 @pytest.mark.parametrize("seed", range(40))
 def test_cell_grouping_is_the_pairwise_grouping(seed):
-    """W0519's groups by cells of half the minimum (walls._clusters) are the groups of the
+    """W0519's groups by cells of half the minimum (slits._clusters) are the groups of the
     pairwise test, labelled by their least point, on clouds dense and sparse, round and
     along a line."""
-    from aidl_lang.output.checks.walls import _clusters
+    from aidl_lang.output.checks.material.slits import _clusters
     rng = np.random.default_rng(seed)
     n = int(rng.integers(2, 400))
     r = float(rng.choice([0.1, 0.37, 0.5, 1.0]))
@@ -117,10 +117,10 @@ def test_a_family_past_its_share_of_the_time_says_what_it_did_not_check(monkeypa
 
 
 def test_more_pairs_than_the_limit_is_a_note_not_a_list(monkeypatch):
-    """Past the pair limit the search stops before listing them (output/part/nearby.py's
+    """Past the pair limit the search stops before listing them (output/part/measure/nearby.py's
     TooManyPairs) and W0519 says so instead of a warning.  (The slit search lists only
     the vertices that face a segment, 6 per direction class for this tag: limit 5.)"""
-    from aidl_lang.output.part import nearby
+    from aidl_lang.output.part.measure import nearby
     monkeypatch.setattr(nearby, "MAX_PAIRS", 5)
     monkeypatch.setattr(nearby, "CHUNK", 2)
     monkeypatch.setattr(nearby, "SMALL_VERTS", 10)      # the chunked grid path
@@ -134,7 +134,7 @@ def test_more_pairs_than_the_limit_is_a_note_not_a_list(monkeypatch):
 def test_close_pairs_in_runs_are_the_pairs_of_one_query(monkeypatch):
     """close_pairs on a large input lists its candidates a run of segments at a time: the
     same pairs, distances and feet, in the same order, as with no run limit."""
-    from aidl_lang.output.part import nearby
+    from aidl_lang.output.part.measure import nearby
     rng = np.random.default_rng(3)
     V = rng.random((6000, 2)) * 40
     A, B = V, np.roll(V, -1, axis=0)
@@ -152,7 +152,7 @@ def test_close_pairs_skips_the_feature_pairs_asked_and_only_them():
     overlap are not measured again) answers what it answers without ``skip`` less the pairs
     of those features, in the same order: small inputs, the grid (a feature per 7 vertices)
     and the runs (a feature per 60 vertices of a walk), pairs given either way round."""
-    from aidl_lang.output.part import nearby
+    from aidl_lang.output.part.measure import nearby
     rng = np.random.default_rng(3)
     V = np.cumsum(rng.normal(size=(4500, 2)) * 0.3, axis=0)    # a walk: runs of a feature
     A, B = V, np.roll(V, -1, axis=0)
@@ -173,13 +173,13 @@ def test_close_pairs_skips_the_feature_pairs_asked_and_only_them():
 @pytest.mark.parametrize("example", ["telephone", "violin", "bottle_opener"])
 def test_one_search_of_the_faces_names_the_face_each_point_is_on(example):
     """W0519 and W0520 name the shapes on a slit's or ledge's sides by one search of the
-    faces' edges (walls._faces_at); it gives the face the per-point reference loop over
-    every face (walls._face_at) gives, for the outline's own vertices and for points near
+    faces' edges (slits._faces_at); it gives the face the per-point reference loop over
+    every face (necks._face_at) gives, for the outline's own vertices and for points near
     and far from it."""
     from pathlib import Path
 
     from aidl_lang.output.checks.common import _part_roots
-    from aidl_lang.output.checks.walls import _faces_at
+    from aidl_lang.output.checks.material.slits import _faces_at
     f = Path(__file__).resolve().parents[1] / "examples" / f"{example}.aidl"
     if not f.exists():
         pytest.skip(f"no examples/{example}.aidl")
@@ -281,8 +281,8 @@ def test_a_plate_of_thousands_of_holes_is_checked_whole(monkeypatch, cpu_clock):
     left unchecked.  To hold that with a wide margin either way on a loaded machine, the
     cost a vertex is set ten times higher (a 34 s guess for the old up-front one) and the
     budget to 45 s (a share of 9 s), in CPU seconds (``cpu_clock``)."""
-    from aidl_lang.limits import Budget
-    from aidl_lang.output.checks import walls
+    from aidl_lang.base.limits import Budget
+    from aidl_lang.output.checks.material import walls
     from benchmarks.checks.checks_scaling import plate
     monkeypatch.setattr(walls, "THIN_SECONDS_PER_VERTEX", 300e-6)
     c = compile_source(plate(2500, 4.3), "grid.aidl", budget=Budget(seconds=45))
@@ -310,7 +310,7 @@ def test_a_sheet_of_parts_asks_each_part_for_its_own_solids_only(monkeypatch, cp
     structures `is_within` calls (a sheet of 4,000 parts: W0515 took 3.3 s and stopped with
     W0521).  Now one index per drawing (common._solids_within): the calls grow with the
     structures, not with their square."""
-    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.base.diagnostics import DiagnosticSink
     from aidl_lang.geometry.core.model import Structure
     from aidl_lang.output.checks import check_drawing
     calls = []
@@ -367,7 +367,7 @@ ROW = """solid row {{
 
 _ROW_CHILD = r"""
 import json, sys, time
-from aidl_lang.limits import Budget
+from aidl_lang.base.limits import Budget
 from aidl_lang.pipeline import compile_source
 t = time.process_time()
 c = compile_source(sys.stdin.read(), "row.aidl", budget=Budget(seconds=60))
@@ -455,7 +455,7 @@ SIZES = """assembly sheet {{
 def _pairwise_shapes(parts):
     """The reference grouping of the parts list: each part against every part that starts a
     shape (O(n^2) comparisons)."""
-    from aidl_lang.output.checks.inventory import same_shape
+    from aidl_lang.output.checks.reports.inventory import same_shape
     group = [-1] * len(parts)
     n = 0
     for i, p in enumerate(parts):
@@ -476,7 +476,7 @@ def test_the_parts_list_groups_shapes_by_a_key_not_by_pairs(monkeypatch):
     and perimeter (cells of the tolerance) and a part is compared only within its cell and
     the neighbouring ones: about one comparison a part, the same groups as every pair."""
     from aidl_lang.output import build
-    from aidl_lang.output.checks import inventory
+    from aidl_lang.output.checks.reports import inventory
     n = 1500
     c = compile_source(SIZES.format(n=n), "sizes.aidl")
     assert c.ok
@@ -509,7 +509,7 @@ def test_the_shape_key_gives_the_groups_of_every_pair():
     """The grouping by key is the pairwise grouping: turned copies, a mirrored triangle,
     radii within the tolerance, holes apart from solids of the same outline."""
     from aidl_lang.output import build
-    from aidl_lang.output.checks import inventory
+    from aidl_lang.output.checks.reports import inventory
     c = compile_source(MIXED, "mixed.aidl")
     assert c.ok, [d.message for d in c.sink.items if d.is_error]
     parts = build(c.drawing, "kit").parts
@@ -525,7 +525,7 @@ def test_the_shape_key_is_every_pair_near_the_tolerance(radii):
     """Circles (and pairs of them) whose radii differ by fractions and multiples of the
     tolerance, across the key's cells: the same groups as every pair."""
     from aidl_lang.geometry.shapes.curves import Circle, Loop
-    from aidl_lang.output.checks import inventory
+    from aidl_lang.output.checks.reports import inventory
     from aidl_lang.output.part.part import PartOutline
     parts = []
     for k, (a, b, two) in enumerate(radii):
@@ -542,7 +542,7 @@ def test_the_parts_list_and_the_description_past_the_deadline_are_a_located_e030
     """Past the wall-time budget, `aidl parts` and `aidl check --describe` stop with the
     program's located E0304 at the part being listed (they did not look at the deadline)."""
     from aidl_lang.cli.main import main
-    from aidl_lang.limits import Deadline, OutOfBudget
+    from aidl_lang.base.limits import Deadline, OutOfBudget
     f = tmp_path / "sizes.aidl"
     f.write_text(SIZES.format(n=40))
     real = Deadline.check
@@ -607,9 +607,10 @@ def test_the_pair_loops_of_the_checks_look_at_the_deadline(monkeypatch):
     """W0512's pairs of copies and of circles call their tick before each pair's boolean;
     W0109's holes against every solid and W0510's comparison with the defaults (`--set`)
     look at the deadline: past it, a located E0304 naming the stage, not minutes more."""
-    from aidl_lang.diagnostics import DiagnosticSink
-    from aidl_lang.limits import Deadline, OutOfBudget
-    from aidl_lang.output.checks import changes, openings, parts
+    from aidl_lang.base.diagnostics import DiagnosticSink
+    from aidl_lang.base.limits import Deadline, OutOfBudget
+    from aidl_lang.output.checks import changes, parts
+    from aidl_lang.output.checks.holes import repeats
     src = DRILLS.replace("assembly kit {\n    p = plate()\n}\n", "")
     c = compile_source(src, "drills.aidl")
     h = next(s for s in c.drawing.own if s.kind == "hole")
@@ -617,10 +618,10 @@ def test_the_pair_loops_of_the_checks_look_at_the_deadline(monkeypatch):
 
     def tick():
         ticks[0] += 1
-    openings._check_repeated_faces(c.drawing, h, DiagnosticSink(), tick)
+    repeats._check_repeated_faces(c.drawing, h, DiagnosticSink(), tick)
     assert ticks[0] == 19               # the 20 copies: each overlaps its neighbour
     ticks[0] = 0
-    openings._check_overlapping_circles(c.drawing, h, DiagnosticSink(), 0.5, tick)
+    repeats._check_overlapping_circles(c.drawing, h, DiagnosticSink(), 0.5, tick)
     assert ticks[0] == 1                # a and b, two statements 3 mm apart
     past = Deadline(0.0)
     with pytest.raises(OutOfBudget):
@@ -657,7 +658,7 @@ def test_one_segment_whose_box_holds_too_many_vertices_is_refused_not_looped(mon
     Now TooManyPairs (the check's W0521 note); here 5,000 vertices under one diagonal."""
     import threading
 
-    from aidl_lang.output.part import nearby
+    from aidl_lang.output.part.measure import nearby
     monkeypatch.setattr(nearby, "MAX_PAIRS", 100)
     monkeypatch.setattr(nearby, "CHUNK", 50)
     V = np.random.default_rng(1).random((5000, 2)) * 10
@@ -679,12 +680,13 @@ def test_one_segment_whose_box_holds_too_many_vertices_is_refused_not_looped(mon
 
 @pytest.mark.parametrize("seed", range(3))
 def test_the_facing_search_keeps_every_facing_pair_in_order(seed):
-    """walls._check_slits asks nearby.close_pairs_facing for its pairs: on a large input
+    """slits._check_slits asks nearby.close_pairs_facing for its pairs: on a large input
     (rings of over SMALL_VERTS vertices: zigzags, hairpins, circles, random walks) the pairs
     whose vertex faces its segment (walls._facing, 30 degrees) are those of close_pairs over
     every vertex, with the same distances, feet and order."""
-    from aidl_lang.output.checks.walls import FACING, _facing, _ring
-    from aidl_lang.output.part import nearby
+    from aidl_lang.output.checks.material.slits import FACING
+    from aidl_lang.output.checks.material.walls import _facing, _ring
+    from aidl_lang.output.part.measure import nearby
     rng = np.random.default_rng(seed)
     loops = []
     for k in range(60):

@@ -9,7 +9,7 @@ import re
 import numpy as np
 import pytest
 
-from aidl_lang.codes import CODES
+from aidl_lang.base.codes import CODES
 from aidl_lang.geometry.shapes.text import text_strokes
 
 
@@ -272,7 +272,7 @@ def test_the_gap_to_a_glyph_box_squeezed_to_a_line_is_measured_without_a_divisio
     the gap is measured to its end points, with no NumPy warning (it printed one)."""
     import warnings
     import numpy as np
-    from aidl_lang.output.checks.text import _quad_gap
+    from aidl_lang.output.checks.marks.text import _quad_gap
     p = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], float)
     line = np.array([[3, 0], [3, 0], [3, 1], [3, 1]], float)
     with warnings.catch_warnings():

@@ -16,8 +16,8 @@ import time
 import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
-from aidl_lang.diagnostics import DiagnosticSink
-from aidl_lang.limits import DEFAULT_BUDGET, Deadline, now
+from aidl_lang.base.diagnostics import DiagnosticSink
+from aidl_lang.base.limits import DEFAULT_BUDGET, Deadline, now
 from aidl_lang.output import checks
 from aidl_lang.pipeline import _compile, run_deep
 from benchmarks.checks import check_families as F
@@ -87,7 +87,7 @@ def test_box_groups_are_the_components_of_box_pairs(bs, pad, scale):
     of its component, exactly as the components of :func:`box_pairs`'s pairs do; on integer
     boxes (touching edges and corners, nested, equal) and scaled ones (0.1 s for 150)."""
     import numpy as np
-    from aidl_lang.output.part.nearby import box_groups, box_pairs, components
+    from aidl_lang.output.part.measure.nearby import box_groups, box_pairs, components
     B = np.array([(x, y, x + w, y + h) for x, y, w, h in bs], dtype=float) * scale
     p = box_pairs(B, pad)
     assert p.tolist() == sorted(p.tolist())      # rows sorted (W0512 walks them in order)
@@ -100,7 +100,7 @@ def test_box_groups_of_nested_boxes_list_no_pairs():
     group, in far less than the pairs' work: under a fifth of the CPU seconds of a sort of
     as many numbers as there are pairs (the reference, timed beside it)."""
     import numpy as np
-    from aidl_lang.output.part.nearby import box_groups
+    from aidl_lang.output.part.measure.nearby import box_groups
     r = np.arange(1, 3001, dtype=float)
     B = np.column_stack([-r, -r, r, r])
     t0 = time.process_time()
@@ -120,7 +120,7 @@ def test_a_moved_part_sums_its_columns_as_the_block_did():
     forms."""
     import numpy as np
     import scipy.sparse as sp
-    from aidl_lang.solver.sliding import _block, _moved
+    from aidl_lang.solver.diagnosis.sliding import _block, _moved
     rng = np.random.default_rng(91)
     for _ in range(100):
         m, n = (int(v) for v in rng.integers(1, 30, 2))

@@ -256,7 +256,7 @@ def test_explain_unknown_code_exit_2():
 
 def test_every_code_can_be_explained():
     from aidl_lang.cli import main
-    from aidl_lang.codes import CODES
+    from aidl_lang.base.codes import CODES
     import contextlib
     import io
     for code in CODES:

@@ -13,7 +13,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from aidl_lang import ast as A
-from aidl_lang.diagnostics import DiagnosticSink
+from aidl_lang.base.diagnostics import DiagnosticSink
 from aidl_lang.geometry.core.expr import evaluate
 from aidl_lang.geometry.shapes.text import text_extent
 from aidl_lang.output import render_model

@@ -1,4 +1,4 @@
-"""Exact curves (aidl_lang/geometry/shapes/curves.py) and provenance (aidl_lang/output/part/exact.py):
+"""Exact curves (aidl_lang/geometry/shapes/curves.py) and provenance (aidl_lang/output/part/edges/exact.py):
 carriers meet where both say, and a boolean's result goes back onto the exact curves.
 
 The laws: an intersection lies on both carriers; every output loop of a union or cut of

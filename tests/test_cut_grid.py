@@ -388,7 +388,7 @@ def test_the_kerf_on_a_sheet_of_2000_discs_cut_in_two_stays_o_n_log_n():
 
     from test_slit_sheets import _split_sheet
 
-    from aidl_lang.limits import Budget
+    from aidl_lang.base.limits import Budget
     from aidl_lang.output.part.part import build
     from aidl_lang.pipeline import compile_source
     c = compile_source(_split_sheet(2000), "discs.aidl", budget=Budget(seconds=60))

@@ -1,4 +1,4 @@
-"""`aidl check --describe`, `Result.describe()` (aidl_lang/output/checks/describe.py): the final part
+"""`aidl check --describe`, `Result.describe()` (aidl_lang/output/checks/reports/describe.py): the final part
 in words and numbers, read from the exact output model."""
 import json
 from pathlib import Path
@@ -261,7 +261,7 @@ def test_turns_and_mirrors_the_moments_rule_out_are_not_tried(monkeypatch):
     tried: a plate of 4,000 holes 4 m long spent 22 s in one uninterruptible boolean (its
     turn by 120 degrees) past every deadline; now 4 comparisons (the mirrors, a half turn and
     a turn too small to tell).  The symmetries of every example are those of trying all."""
-    from aidl_lang.output.checks import describe as D
+    from aidl_lang.output.checks.reports import describe as D
     r = aidl_lang.compile(source="""solid plate {
     base = Rectangle(center=(0, 0), width=100, height=4000)
     for i in range(4000) {

@@ -8,8 +8,8 @@ import sys
 import pytest
 
 from aidl_lang import cli
-from aidl_lang.codes import CODES
-from aidl_lang.diagnostics import render_text
+from aidl_lang.base.codes import CODES
+from aidl_lang.base.diagnostics import render_text
 
 
 def span4(d):
@@ -226,7 +226,7 @@ def test_E0104_for_the_documented_example(compile_text):
 def test_the_checker_reports_every_bad_call_of_a_shape_and_passes_good_ones():
     """The checker remembers the call shapes that bind (name, positional count, keyword
     names); a shape that does not bind is reported at each call, names at every use."""
-    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.base.diagnostics import DiagnosticSink
     from aidl_lang.parser import parse
     from aidl_lang.typecheck import check
     src = ("solid s {\n    a = Circle((0, 0), 5)\n    b = Circle((1, 0), 5)\n"
@@ -684,7 +684,7 @@ def test_every_producible_code_has_a_test():
 
 def test_solver_codes_E0402_W0401_W0403(tmp_path, capsys, monkeypatch):
     """Budget overrun, redundancy (with --dof) and a flipped branch, through the CLI."""
-    from aidl_lang.solver import hierarchy
+    from aidl_lang.solver.core import hierarchy
     f = tmp_path / "w.aidl"
     f.write_text("solid s {\n    l1 = Line((0, 0), (10, 0))\n    l2 = Line((10, 0), (18, 5))\n"
                  "    Fixed(l1)\n    Fixed(l2.start)\n    Angle(l1, l2, 30)\n"
@@ -701,7 +701,7 @@ def test_solver_codes_E0402_W0401_W0403(tmp_path, capsys, monkeypatch):
 
 
 def test_E0304_budget_names_the_outer_loop(compile_text):
-    from aidl_lang.limits import Budget
+    from aidl_lang.base.limits import Budget
     c = compile_text("solid s {\n    for i in range(200) {\n        for j in range(200) { x = 1 }\n"
                      "    }\n}\n", budget=Budget(steps=10_000))
     d = the_error(c, "E0304")
@@ -812,7 +812,7 @@ def test_W0404_a_hole_placed_in_x_only_slides_in_y():
 def test_explain_E0105_example_is_an_E0105():
     """`aidl explain E0105`'s example is an error of that code (it showed `r=5`, which is
     accepted as `radius`)."""
-    from aidl_lang.codes import CODES
+    from aidl_lang.base.codes import CODES
     from aidl_lang.pipeline import compile_source
     example = [ln.split("#")[0].strip() for ln in CODES["E0105"][1].splitlines()
                if ln.startswith("    ")][0]
@@ -843,7 +843,7 @@ def test_an_error_flood_prints_the_first_ten_of_a_code_and_counts_the_rest(tmp_p
 def test_the_sink_drops_repeats_by_key_after_items_are_edited_in_place():
     """DiagnosticSink.add keeps one diagnostic per (code, span, message), also after a caller
     removed items from ``sink.items`` (the parser's bracket pass does)."""
-    from aidl_lang.diagnostics import DiagnosticSink, Span
+    from aidl_lang.base.diagnostics import DiagnosticSink, Span
     sink = DiagnosticSink()
     spans = [Span("f", 1, i, 1, i + 1, i, i + 1) for i in range(1, 6)]
     for _ in range(2):
@@ -859,7 +859,7 @@ def test_the_sink_drops_repeats_by_key_after_items_are_edited_in_place():
 def test_range_and_geometry_caps_grow_with_the_budget():
     """`range()`'s 10,000 items and the 50,000 geometry objects are budget figures: twice
     the budget allows twice as many (docs/language.md 8.1)."""
-    from aidl_lang.limits import DEFAULT_BUDGET
+    from aidl_lang.base.limits import DEFAULT_BUDGET
     from aidl_lang.pipeline import compile_source
     loop = "solid s {\n    for i in range(15000) { p = Point(i, 0) }\n}\n"
     c = compile_source(loop, "r.aidl", do_solve=False)

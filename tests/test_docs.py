@@ -15,7 +15,7 @@ parts list it shows is what ``aidl parts`` prints).
 
 Also: the command table (docs/language.md §10.1) lists every ``aidl`` subcommand of the CLI
 parser and only options that the parser has; the code table (§10.4) lists exactly the codes
-of :mod:`aidl_lang.codes`.  Failure messages name the file, the line of the block's first
+of :mod:`aidl_lang.base.codes`.  Failure messages name the file, the line of the block's first
 code line and what went wrong, so a re-run after a merge says which block to fix.
 """
 from __future__ import annotations
@@ -28,7 +28,7 @@ from pathlib import Path
 import pytest
 
 import aidl_lang
-from aidl_lang.codes import CODES
+from aidl_lang.base.codes import CODES
 
 ROOT = Path(__file__).resolve().parent.parent
 DOCS = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md")),
@@ -161,17 +161,17 @@ def test_the_command_table_lists_every_subcommand_and_only_real_options():
 
 
 def test_the_code_table_lists_exactly_the_codes_of_the_registry():
-    """docs/language.md §10.4 lists every code of ``aidl_lang.codes.CODES`` once, and no
+    """docs/language.md §10.4 lists every code of ``aidl_lang.base.codes.CODES`` once, and no
     other; ``aidl explain`` knows each."""
     table = _section("10.4 Diagnostic codes")
     listed = re.findall(r"^\| `([EW]\d{4})` \|", table, flags=re.M)
     dupes = sorted({c for c in listed if listed.count(c) > 1})
     assert not dupes, f"docs/language.md §10.4 lists codes twice: {dupes}"
     missing = sorted(set(CODES) - set(listed))
-    assert not missing, (f"docs/language.md §10.4 does not list {missing} (aidl_lang/codes.py "
+    assert not missing, (f"docs/language.md §10.4 does not list {missing} (aidl_lang/base/codes.py "
                          f"has them: {[CODES[c][0] for c in missing]})")
     unknown = sorted(set(listed) - set(CODES))
-    assert not unknown, f"docs/language.md §10.4 lists codes aidl_lang/codes.py lacks: {unknown}"
+    assert not unknown, f"docs/language.md §10.4 lists codes aidl_lang/base/codes.py lacks: {unknown}"
     assert listed == sorted(listed), "docs/language.md §10.4: keep the codes in order"
 
 

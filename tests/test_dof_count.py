@@ -1,12 +1,12 @@
 """The freedom count on `aidl check`'s ok line (each structure's unknowns against its own rows
-and its ancestors' rows that use them) (solver/diagnose.py `degrees_of_freedom(...,
+and its ancestors' rows that use them) (solver/diagnosis/diagnose.py `degrees_of_freedom(...,
 floating=False)`) takes each structure's Jacobian out of the whole model's one, and ranks
 single-row blocks without an SVD: the same matrices, bit for bit, and the same counts as each
 structure's own tape and an SVD per block, on every example, test program and generated
 hierarchy."""
 from __future__ import annotations
 
-from aidl_lang.limits import now as budget_clock      # the budget's clock: CPU seconds
+from aidl_lang.base.limits import now as budget_clock      # the budget's clock: CPU seconds
 
 import pathlib
 import time
@@ -16,8 +16,9 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from aidl_lang.pipeline import compile_source
-from aidl_lang.solver import diagnose as D, freedom, redundancy, sliding
-from aidl_lang.solver.arrays import unique
+from aidl_lang.solver.core import rank as R
+from aidl_lang.solver.diagnosis import diagnose as D, freedom, redundancy, sliding
+from aidl_lang.solver.core.arrays import unique
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 PROGRAMS = sorted((ROOT / "examples").glob("*.aidl")) + sorted((ROOT / "tests/programs").glob("*.aidl"))
@@ -111,10 +112,10 @@ def _frame_moves(solver, s, J, cols) -> list:
 
 
 def _svd_rank(J: np.ndarray) -> int:
-    """:func:`D._dense_block_rank` with an SVD for every block (no single-row shortcut)."""
+    """:func:`R._dense_block_rank` with an SVD for every block (no single-row shortcut)."""
     if J.shape[0] == 0:
         return 0
-    lab = D._dense_components(J)
+    lab = R._dense_components(J)
     rank = 0
     for k in unique(lab):
         sub = J[lab == k]
@@ -149,7 +150,7 @@ def test_count_equals_per_structure_tapes(name, src):
     W, wcols = whole        # dense, or CSR for a large model (the protractor)
     for rows, cols in systems:
         own = solver.tape(rows).jacobian(solver.x, cols, dense=True)
-        cut = D._dense_cut(W, wcols, rows, cols)
+        cut = R._dense_cut(W, wcols, rows, cols)
         assert own.shape == cut.shape and np.array_equal(own, cut)
         assert (np.signbit(own) == np.signbit(cut)).all()
 
@@ -164,7 +165,7 @@ def test_block_rank_equals_an_svd_per_block(m, n, data):
     """The single-row shortcut counts what the SVD counts, right at its 1e-9 threshold too."""
     J = np.array(data.draw(st.lists(st.lists(_entry, min_size=n, max_size=n), min_size=m,
                                     max_size=m)), dtype=float)
-    assert D._dense_block_rank(J) == _svd_rank(J)
+    assert R._dense_block_rank(J) == _svd_rank(J)
 
 
 # ------------------------------------------------------------------ ancestors (issue 23)
@@ -271,7 +272,7 @@ def test_null_support_equals_a_full_svd(m, n, data):
                               max_size=m))
     rows += [rows[i] for i in data.draw(st.lists(st.integers(0, m - 1), max_size=2))]
     J = np.array(rows, dtype=float)
-    rank, moving = D.null_support(sp.csr_matrix(J))
+    rank, moving = R.null_support(sp.csr_matrix(J))
     want_rank, want_moving = _svd_null_support(J)
     assert rank == want_rank
     assert moving.tolist() == want_moving.tolist()
@@ -452,7 +453,7 @@ def test_a_dof_count_too_large_for_a_dense_svd_is_not_counted_and_stops(tmp_path
     counted; a ring (nothing peels) whose rest is past the bound too is "not counted".
     Shown here on 300 points with the bound lowered."""
     from aidl_lang.cli.main import main
-    monkeypatch.setattr(D, "MAX_SVD_FLOPS", 1e6)
+    monkeypatch.setattr(R, "MAX_SVD_FLOPS", 1e6)
     f = tmp_path / "pts.aidl"
     f.write_text(_chain(300))
     assert main(["check", "--dof", str(f)]) == 0
@@ -469,7 +470,7 @@ def test_a_dof_count_too_large_for_a_dense_svd_is_not_counted_and_stops(tmp_path
     doc = json.loads(capsys.readouterr().out)
     assert doc["dof"] == [{"structure": "d", "unknowns": 600, "dof": None, "floating": [],
                            "not_counted": "too large"}]
-    monkeypatch.setattr(D, "MAX_SVD_FLOPS", 1e10)      # counted: 600 unknowns, rank 299
+    monkeypatch.setattr(R, "MAX_SVD_FLOPS", 1e10)      # counted: 600 unknowns, rank 299
     assert main(["check", "--dof", str(f)]) == 0
     assert "301 degrees of freedom left" in capsys.readouterr().out
 
@@ -542,9 +543,9 @@ def test_the_redundancy_search_peels_independent_rows_and_finds_the_same(seed, m
     only entry of some column take part in no dependency and are peeled off first; what it
     finds is the same as without peeling, on models past the dense path's size."""
     solver = _solved(_sparse_model(seed), "sparse.aidl")
-    assert solver.whole.n_rows * len(D.used_free_columns(solver)) > D.DENSE_CELLS
+    assert solver.whole.n_rows * len(D.used_free_columns(solver)) > R.DENSE_CELLS
     sizes = []
-    dependencies = D.dependencies
+    dependencies = R.dependencies
 
     def counted(J, order, deadline=None, basis=None):
         sizes.append(J.shape[0])
@@ -563,11 +564,11 @@ def test_a_chain_of_2500_points_is_searched_for_redundancy_in_a_blink(monkeypatc
     """The issue's reproducer: 2 500 chained points, and one Distance said twice.  The whole
     chain peels to the two rows of the repeated constraint."""
     src = _chain(2500, "    Distance(pts[0], pts[1], 0.1)\n")
-    from aidl_lang.limits import DEFAULT_BUDGET
+    from aidl_lang.base.limits import DEFAULT_BUDGET
     c = compile_source(src, "chain.aidl", budget=DEFAULT_BUDGET.scaled(5))
     assert c.ok
     sizes = []
-    dependencies = D.dependencies
+    dependencies = R.dependencies
 
     def counted(J, order, deadline=None, basis=None):
         sizes.append(J.shape)
@@ -676,7 +677,7 @@ def test_the_sparse_null_space_counts_what_the_svd_counts(name, src):
             continue
         J = solver.tape(rows).jacobian(solver.x, cols)
         J = J[np.flatnonzero(np.diff(J.tocsr().indptr))]
-        rank, moving = D._sparse_null_support(J)
+        rank, moving = R._sparse_null_support(J)
         want_rank, want_moving = _dense_null_support(J.toarray())
         assert rank == want_rank, s.path
         assert np.array_equal(moving, want_moving), s.path
@@ -722,6 +723,6 @@ def test_peeling_every_block_at_once_is_peeling_each_block(blocks, data):
     lab = np.array(lab)
     J = sp.block_diag(parts, format="csr")
     order = np.array(data.draw(st.permutations(range(J.shape[0]))))
-    together = D._peeled_rows(J[order], lab[order])[np.argsort(order)]
-    alone = np.concatenate([D._peeled_rows(sp.csr_matrix(P)) for P in parts])
+    together = R._peeled_rows(J[order], lab[order])[np.argsort(order)]
+    alone = np.concatenate([R._peeled_rows(sp.csr_matrix(P)) for P in parts])
     assert (together == alone).all()

@@ -556,7 +556,7 @@ def test_stacked_copies_of_one_outline_are_matched_once():
     import time
     import manifold3d as mf
     from aidl_lang.geometry.shapes.curves import Circle as XC, Loop
-    from aidl_lang.output.part.exact import Provenance
+    from aidl_lang.output.part.edges.exact import Provenance
     prov = Provenance()
     one = Loop([XC((5.0, -2.0), 3.0, True)])
     n = len(prov.polygon(one))
@@ -576,13 +576,13 @@ def test_matching_in_blocks_gives_the_same_outlines(monkeypatch):
     pairs (bounded memory when thousands of chords lie on top of each other): blocks of 50
     give the same exact outlines as one block."""
     import aidl_lang
-    from aidl_lang.output.part import exact
+    from aidl_lang.output.part.edges import matching
     src = next(p for p in EXAMPLES if p.stem == "telephone").read_text()
     def outlines(r):
         return [(p.name, [repr(s) for lp in p.loops for s in lp.segments])
                 for p in r.output.parts]
     whole = outlines(aidl_lang.compile(source=src))
-    monkeypatch.setattr(exact, "PAIRS_PER_BLOCK", 50)
+    monkeypatch.setattr(matching, "PAIRS_PER_BLOCK", 50)
     blocks = outlines(aidl_lang.compile(source=src + "\n"))      # not the compile cache's
     assert blocks == whole and sum(len(s) for _, s in whole) > 40
 
@@ -595,7 +595,7 @@ def test_circle_sweeps_are_each_runs_own_sweep_sum(n, cuts, kinds, seed):
     length summed as the rows of one array) are, float for float, each run's own
     _sweep_sum (the reference), for runs of every length that wrap around the polygon."""
     import numpy as np
-    from aidl_lang.output.part import exact
+    from aidl_lang.output.part.edges import exact
     P = np.random.default_rng(seed).normal(size=(n, 2)) * 10
     cuts = sorted({c % n for c in cuts})
     carriers = [("C", 1.0, 2.0, 3.0), ("L", 0.0, 0.0, 1.0, 0.0), ("C", -4.0, 0.5, 1.0),

@@ -1,6 +1,6 @@
 """The final-part stage stays linear in the number of holes (issue 74), counted, not timed.
 
-* :func:`aidl_lang.output.part.nearby.close_pairs` pairs the boundaries of whole-loop
+* :func:`aidl_lang.output.part.measure.nearby.close_pairs` pairs the boundaries of whole-loop
   features (a plate's holes) run by run: the candidate (vertex, segment) pairs it measures
   per hole are the same at 2,000 and 20,000 holes, none within one hole (the grid over the
   vertices listed each hole's own neighbours, ~450 candidates per hole, and searched them
@@ -19,9 +19,9 @@ import numpy as np
 import pytest
 
 from aidl_lang.geometry.shapes.curves import Circle, Loop
-from aidl_lang.output.checks import openings
-from aidl_lang.output.part import nearby
-from aidl_lang.output.part.exact import Provenance
+from aidl_lang.output.checks.holes import openings
+from aidl_lang.output.part.measure import nearby
+from aidl_lang.output.part.edges.exact import Provenance
 from aidl_lang.pipeline import compile_source
 
 

@@ -10,7 +10,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 import aidl_lang
-from aidl_lang.limits import Budget
+from aidl_lang.base.limits import Budget
 from aidl_lang.output.fabrication import assembly
 
 from conftest import ROOT

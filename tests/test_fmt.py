@@ -5,7 +5,7 @@ import sys
 import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
-from aidl_lang.diagnostics import DiagnosticSink
+from aidl_lang.base.diagnostics import DiagnosticSink
 from aidl_lang.editor.fmt import FormatError, comments, dump, format_source
 from aidl_lang.parser import parse
 
@@ -310,7 +310,7 @@ def test_fmt_handles_the_deep_programs_the_compiler_handles(expr, tmp_path):
     from aidl_lang.editor.fmt import dump, format_source
     from aidl_lang.parser import parse
     from aidl_lang.pipeline import compile_source, run_deep
-    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.base.diagnostics import DiagnosticSink
     src = f"x = 3\ny = {expr}\nsolid s {{ c = Circle((0, 0), 1 + y * 0) }}\n"
     assert compile_source(src, "deep.aidl").ok
     out = format_source(src, "deep.aidl")

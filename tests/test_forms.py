@@ -346,7 +346,7 @@ def test_rigid_shapes_move_together(compile_text):
     assert _pt(c, "windmill.spar.center") == pytest.approx((0, 85), abs=1e-9)
     assert _pt(c, "windmill.sail.center") == pytest.approx((9, 95), abs=1e-9)
     # one placing point per held shape: no redundant rows (W0401 under --dof)
-    from aidl_lang.solver.redundancy import redundancies
+    from aidl_lang.solver.diagnosis.redundancy import redundancies
     assert not [r for r in redundancies(c.solve.solver) if r.constraint.kind == "Rigid"]
 
 

@@ -7,8 +7,8 @@ import pytest
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
-from aidl_lang.codes import CODES
-from aidl_lang.diagnostics import LINE_BREAK, render_text, split_lines
+from aidl_lang.base.codes import CODES
+from aidl_lang.base.diagnostics import LINE_BREAK, render_text, split_lines
 from aidl_lang.pipeline import compile_source
 from aidl_lang.output import render_model, to_svg
 

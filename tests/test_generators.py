@@ -27,7 +27,7 @@ def test_a_demo_compiles_clean_and_its_generator_is_in_the_docs_and_the_prompt(p
     """The demo says what it is and compiles with no message at all; `aidl docs NAME` finds
     the generator in its stdlib module and `aidl prompt` has its line (the model is a user)."""
     from aidl_lang.llm.prompt import system_prompt
-    from aidl_lang.reference import lookup_text
+    from aidl_lang.library.reference import lookup_text
     name, src = path.stem, path.read_text()
     assert src.startswith("# ") and f"{name}(" in src
     r = aidl_lang.compile(source=src, path=path)

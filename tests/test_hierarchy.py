@@ -13,7 +13,8 @@ from hypothesis import strategies as st
 from aidl_lang import cli
 from aidl_lang.geometry.relations.bbox import numeric_box
 from aidl_lang.pipeline import compile_source
-from aidl_lang.solver import Solver, constraint_residuals, hierarchy, run, solve
+from aidl_lang.solver import Solver, constraint_residuals, run, solve
+from aidl_lang.solver.core import hierarchy
 from benchmarks.solver.families import FLAT, hierarchy as hierarchy_family
 
 from conftest import EXAMPLES
@@ -346,7 +347,7 @@ def _expr(draw, depth=3):
 def test_tape_values_and_jacobian_match_the_expressions(exprs, x):
     """Tape values equal expr.evaluate; its reverse-mode Jacobian equals central differences."""
     from aidl_lang.geometry.core.expr import evaluate
-    from aidl_lang.solver.tape import Tape
+    from aidl_lang.solver.core.tape import Tape
     x = np.asarray(x)
     t = Tape(exprs, 6)
     F = t.evaluate(x)

@@ -337,9 +337,9 @@ def _drop(src: str, spans: list) -> str:
 def _checked(c) -> tuple:
     """What `aidl check` adds after the compile: the W0401 and W0404 warnings, and the
     degrees of freedom per structure."""
-    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.base.diagnostics import DiagnosticSink
     from aidl_lang.pipeline import report_redundancies, report_sliding
-    from aidl_lang.solver import freedom
+    from aidl_lang.solver.diagnosis import freedom
     sink = DiagnosticSink()
     report_redundancies(sink, c.solve)
     report_sliding(sink, c.solve)

@@ -3,7 +3,7 @@ tests/programs/hostile/ says on its first line what it must give —
 ``# expect: CODE LINE:COL`` (the first diagnostic with that code, at that position),
 ``# expect: CODE`` (an unlocated-by-design diagnostic, e.g. an empty file) or ``# expect: ok``
 — and must finish within :data:`SECONDS` under the default budget."""
-from aidl_lang.limits import now as budget_clock      # the budget's clock: CPU seconds
+from aidl_lang.base.limits import now as budget_clock      # the budget's clock: CPU seconds
 import pathlib
 import re
 import subprocess
@@ -79,7 +79,7 @@ sys.path.insert(0, str(HERE.parent))
 from hypothesis import HealthCheck, given, settings, strategies as st  # noqa: E402
 
 from benchmarks.checks.nasty import DrawChooser, program, verdict  # noqa: E402
-from aidl_lang.limits import Budget  # noqa: E402
+from aidl_lang.base.limits import Budget  # noqa: E402
 
 SMALL = Budget(steps=20_000, objects=5_000, size=100_000, seconds=10.0)
 
@@ -117,7 +117,7 @@ from aidl_lang.pipeline import compile_source
 src = ("def fan(n = 3) -> assembly {\n    if n > 0 {\n        s0 = fan(n - 1)\n"
        "        s1 = fan(n - 1)\n    }\n    c = Circle((0, 0), 1)\n}\n"
        "solid top {\n    v = fan(15)\n}\n")
-from aidl_lang.limits import Budget
+from aidl_lang.base.limits import Budget
 # memory, not time or the counts, runs out
 c = compile_source(src, "m.aidl", budget=Budget(seconds=120, objects=2_000_000,
                                                 steps=10_000_000, geometry=2_000_000))
@@ -147,7 +147,7 @@ def test_a_SystemError_from_an_allocation_that_failed_in_C_is_E0304(monkeypatch)
     assert [(d.code, d.span.line, d.message[:40]) for d in c.sink.items] == \
         [("E0304", 1, "the program ran out of memory while comp")]
     other = SystemError("some other bug")
-    from aidl_lang.limits import is_out_of_memory
+    from aidl_lang.base.limits import is_out_of_memory
     assert not is_out_of_memory(other)
     try:
         raise SystemError("wrapped") from MemoryError()
@@ -172,7 +172,7 @@ def test_many_large_strings_are_E0304_before_they_fill_the_memory():
     assert "strings of more than 64,000,000 characters in all" in d.message
     assert grown_mb < 1024
     # --budget scales it: a quarter of the budget stops at a quarter of the characters
-    from aidl_lang.limits import DEFAULT_BUDGET
+    from aidl_lang.base.limits import DEFAULT_BUDGET
     small = compile_source(src.replace("999999", "200000"), "strings.aidl",
                            budget=DEFAULT_BUDGET.scaled(0.25))
     assert any("16,000,000 characters in all" in d.message for d in small.sink.items)
@@ -189,8 +189,8 @@ def test_the_deadline_covers_the_fillets_of_each_loop(monkeypatch):
     deadline.  Now each loop's fillets are preceded by one; shown with a slowed fillet."""
     import time as _time
     from aidl_lang.geometry.derived import corners
-    from aidl_lang.limits import DEFAULT_BUDGET, Deadline, OutOfBudget
-    from aidl_lang.output.part.booleans import render_model
+    from aidl_lang.base.limits import DEFAULT_BUDGET, Deadline, OutOfBudget
+    from aidl_lang.output.part.build.booleans import render_model
     holes = "\n".join(f"    hole h{i} {{ s = Star(center=({i % 10 * 12 - 54}, {i // 10 * 12 - 54}), "
                       "points=5, outer_radius=4, inner_radius=2) }" for i in range(100))
     src = (f"units mm\nsolid plate {{\n    body = Rectangle(center=(0, 0), width=130, "

@@ -21,10 +21,10 @@ import re
 import pytest
 
 from aidl_lang import api
-from aidl_lang.diagnostics import DiagnosticSink
+from aidl_lang.base.diagnostics import DiagnosticSink
 from aidl_lang.drawing import DrawingError
 from aidl_lang.drawing.write.program import import_drawing
-from aidl_lang.limits import Budget
+from aidl_lang.base.limits import Budget
 from aidl_lang.pipeline import _compile, compile_source, run_deep
 
 DATA = pathlib.Path(__file__).resolve().parent / "data" / "ezdxf"

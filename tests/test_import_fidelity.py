@@ -270,7 +270,7 @@ def _entities(doc) -> list:
 def test_a_big_drawing_is_written_compactly_with_the_same_geometry(monkeypatch):
     """CarbonFilter, GridfinityBaseSplit, HobbyCase and Planetary2 were refused ("would pass
     1,000,000 bytes"); here the limit is lowered to the plain program's size less one byte."""
-    import aidl_lang.limits as L
+    import aidl_lang.base.limits as L
     data = _big_svg()
     plain, _ = import_drawing(data, "big.svg")
     monkeypatch.setattr(L, "MAX_SOURCE_BYTES", len(plain.encode()) - 1)
@@ -289,9 +289,9 @@ def test_a_panel_of_round_holes_is_written_compactly_and_found_in_a_grid(monkeyp
     are now written once in a `for` over their centres (250 KB, imported in 2.1 s CPU), and
     which loop lies in which is found through a grid of boxes, a whole circle measured as
     itself (each probe against every loop's box: 4.3 s at 20,000 holes, quadratic)."""
-    import aidl_lang.limits as L
+    import aidl_lang.base.limits as L
     from aidl_lang.drawing.write import program as program_mod
-    from aidl_lang.output.part import nearby
+    from aidl_lang.output.part.measure import nearby
     holes = [(10 + 10 * i, 10 + 10 * j, 3 if (i + j) % 3 else 2) for i in range(12)
              for j in range(8)]
     body = '<path d="M 0 0 L 130 0 L 130 90 L 0 90 Z" stroke="black" fill="none"/>' + "".join(
@@ -345,7 +345,7 @@ def test_islands_of_one_shape_are_written_once_in_a_compact_program(monkeypatch)
     program was 1,044,664 bytes and refused (E0304 "would be more than 1000000 bytes", at
     any --budget); islands of one shape moved, holes too, are now written once in a `for`
     over their places (766,636 bytes, compiled, 100.00 % of its cut)."""
-    import aidl_lang.limits as L
+    import aidl_lang.base.limits as L
     piece = ("M {x} {y} L {x2} {y} C {x3} {y} {x3} {y} {x3} {y1} L {x3} {y4} "
              "C {x3} {y5} {x3} {y5} {x2} {y5} L {x} {y5} Z")
     paths = ["M 0 0 L 200 0 L 200 100 L 0 100 Z", "M 5 5 L 195 5 L 195 95 L 5 95 Z"]

@@ -39,7 +39,7 @@ import aidl_lang
 from aidl_lang.drawing.infer import infer, shapes as infer_shapes
 from aidl_lang.drawing.infer import import_drawing, to_program_inferred
 from aidl_lang.drawing.model import DrawingError
-from aidl_lang.limits import DEFAULT_BUDGET, Deadline, OutOfBudget, now
+from aidl_lang.base.limits import DEFAULT_BUDGET, Deadline, OutOfBudget, now
 
 GROWTH = 4.6        # linear: 4 times (less with fixed work); pairs: 16; n log n Python ~4.9
 FEW = 200           # calls at N below which a module counts as FEW

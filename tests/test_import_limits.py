@@ -10,7 +10,7 @@ import sys
 import ezdxf
 import pytest
 
-from aidl_lang.limits import MAX_EXTENT
+from aidl_lang.base.limits import MAX_EXTENT
 
 AIDL = [sys.executable, "-m", "aidl_lang.cli"]
 INF, NAN = float("inf"), float("nan")
@@ -163,7 +163,7 @@ def _panel_dxf(path, nx, ny, pitch=10.0, r=2.0):
 def test_a_50000_hole_dxf_panel_is_read_not_refused(tmp_path):
     from aidl_lang.drawing import read_drawing
     from aidl_lang.drawing.model import MAX_ENTITIES
-    from aidl_lang.sources import MAX_DRAWING_BYTES, load_drawing
+    from aidl_lang.library.sources import MAX_DRAWING_BYTES, load_drawing
     _panel_dxf(tmp_path / "panel.dxf", 250, 200)
     size = (tmp_path / "panel.dxf").stat().st_size
     assert 4_900_000 < size < MAX_DRAWING_BYTES / 2        # was refused: over 5,000,000 bytes
@@ -180,7 +180,7 @@ def test_a_50000_hole_dxf_panel_is_read_not_refused(tmp_path):
     # and the default budget's outline vertices hold its holes' chords (issue 74: 2,000,000
     # refused it up front, E0304 "outlines of more than 2,000,000 vertices", at 3.4 s CPU)
     from aidl_lang.geometry.shapes.tessellate import segments_for
-    from aidl_lang.limits import Budget
+    from aidl_lang.base.limits import Budget
     assert 2_000_000 < 50_000 * segments_for(2.0) + 4 <= Budget().vertices
 
 
@@ -201,7 +201,7 @@ def test_an_svg_just_over_the_shape_limit_is_refused_at_the_call(tmp_path):
 
 
 def test_a_drawing_just_over_the_byte_limit_is_refused_at_the_call(tmp_path):
-    from aidl_lang.sources import MAX_DRAWING_BYTES
+    from aidl_lang.library.sources import MAX_DRAWING_BYTES
     assert MAX_DRAWING_BYTES == 20_000_000
     (tmp_path / "big.dxf").write_bytes(b"0\nEOF\n" + b" " * (MAX_DRAWING_BYTES - 5))
     (tmp_path / "p.aidl").write_text('solid p {\n  d = Drawing2D("big.dxf")\n}\n')
@@ -220,7 +220,7 @@ def test_aidl_import_budget_scales_the_shape_limit_of_a_dxf_as_of_an_svg(tmp_pat
     the command runs).  The files written by ezdxf and by hand."""
     from aidl_lang.drawing.write.program import import_drawing
     from aidl_lang.drawing.read import DrawingError
-    from aidl_lang.limits import DEFAULT_BUDGET
+    from aidl_lang.base.limits import DEFAULT_BUDGET
     rows = ['<svg xmlns="http://www.w3.org/2000/svg" width="600mm" height="600mm" '
             'viewBox="0 0 600 600">']
     doc = ezdxf.new("R2010")

@@ -9,7 +9,7 @@ general paths give.
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from aidl_lang.diagnostics import DiagnosticSink
+from aidl_lang.base.diagnostics import DiagnosticSink
 from aidl_lang.geometry.relations.bbox import BBTerm, contains_bbox
 from aidl_lang.geometry.relations import constraints as C
 from aidl_lang.geometry.core.expr import Lin, Nl, add, func, hypot, mul, sub
@@ -225,7 +225,7 @@ def test_two_constants_fold_as_mul_and_div_do(a, b, op, da, db):
     """``_q_op``'s two-constant shortcut gives the bits ``mul`` / ``div`` give (``a / b`` is
     ``a * (1 / b)`` there, not a correctly rounded quotient), its dimension and owners."""
     from aidl_lang import ast as A
-    from aidl_lang.diagnostics import Span
+    from aidl_lang.base.diagnostics import Span
     from aidl_lang.geometry.core.expr import div
     from aidl_lang.geometry.core.values import mul_dim
     if op == "/" and b == 0.0:
@@ -245,7 +245,7 @@ def test_the_circle_runs_sweeps_at_once_equal_each_runs_sweep():
     """``exact._circle_sweeps`` (all runs of a result polygon in one array operation) gives
     each run the very float :func:`exact._sweep_sum` gives it, on the gear pair's outlines
     (about a thousand arcs)."""
-    from aidl_lang.output.part import exact as X
+    from aidl_lang.output.part.edges import exact as X
     from aidl_lang.pipeline import compile_source
     path = ROOT / "examples" / "gear_pair.aidl"
     c = compile_source(path.read_text(), str(path))

@@ -8,7 +8,7 @@ rigidly (area and perimeter within 1e-6, from the exact output model and from th
 """
 from __future__ import annotations
 
-from aidl_lang.limits import now as budget_clock      # the budget's clock: CPU seconds
+from aidl_lang.base.limits import now as budget_clock      # the budget's clock: CPU seconds
 
 import json
 import math
@@ -143,7 +143,7 @@ def dxf_parts(path) -> dict:
 def check_sheets(sheets, view, W, H, gap):
     """No overlap, inside the sheet (and ``gap`` from its edge), each part once and the same
     shape as in the assembly view."""
-    from aidl_lang.output.checks.inventory import same_shape
+    from aidl_lang.output.checks.reports.inventory import same_shape
     from aidl_lang.output.fabrication.layout import part_box
     solids = {p.name: p for p in view.parts if p.kind == "solid"}
     seen = []
@@ -527,7 +527,7 @@ def test_a_nesting_that_cannot_end_in_time_is_refused_before_it_starts(monkeypat
     on the SVG writer.  The nesting is estimated (its shapes and parts: ``nest_seconds``) and
     refused as "the layout"."""
     import time
-    from aidl_lang.limits import DEFAULT_BUDGET, Deadline
+    from aidl_lang.base.limits import DEFAULT_BUDGET, Deadline
     from aidl_lang.output import build
     from aidl_lang.output.fabrication.layout import nest_seconds, plan
     from aidl_lang.output.part.part import OutputError

@@ -1,5 +1,5 @@
 """One definition of a line break (issue 83): CR LF, a lone CR and LF each end a line, as the
-Language Server Protocol and every editor count lines (``aidl_lang.diagnostics.LINE_BREAK``).
+Language Server Protocol and every editor count lines (``aidl_lang.base.diagnostics.LINE_BREAK``).
 
 The law: a program written with any mix of the three, in comments and between statements,
 compiles to what its LF version compiles to (the same values, the same diagnostics at the same
@@ -21,7 +21,7 @@ from lsprotocol import types as T
 from pytest_lsp import LanguageClient
 
 import aidl_lang
-from aidl_lang.diagnostics import LINE_BREAK, as_lf, split_lines
+from aidl_lang.base.diagnostics import LINE_BREAK, as_lf, split_lines
 from aidl_lang.editor.fmt import format_file_text, newline_of
 from aidl_lang.editor.lsp import analysis as an
 

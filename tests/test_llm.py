@@ -169,7 +169,7 @@ def test_the_agents_prompt_is_shorter_and_keeps_the_vocabulary(compile_text):
     `docs`), one example program that compiles clean (the others are resources)."""
     from aidl_lang.api import compile as aidl_compile
     from aidl_lang.llm.prompt import agent_prompt
-    from aidl_lang.reference import stdlib_templates
+    from aidl_lang.library.reference import stdlib_templates
     text = agent_prompt()
     for name in ENTRIES:
         assert f"- {name}(" in text, name

@@ -17,7 +17,7 @@ from pytest_lsp import ClientServerConfig, LanguageClient
 from aidl_lang.editor.lsp import boot, hints, navigate, plain
 from aidl_lang.editor.lsp import analysis as an
 from aidl_lang.parser import parse
-from aidl_lang.diagnostics import DiagnosticSink
+from aidl_lang.base.diagnostics import DiagnosticSink
 
 from conftest import ROOT
 from lsp_published import keep, published

@@ -11,7 +11,7 @@ import time
 
 import pytest
 
-from aidl_lang.sources import MAX_IMPORT_BYTES
+from aidl_lang.library.sources import MAX_IMPORT_BYTES
 
 pytestmark = pytest.mark.timing
 

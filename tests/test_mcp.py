@@ -178,7 +178,7 @@ async def test_mcp_server_over_stdio(tmp_path):
             assert "Rectangle" in got.contents[0].text
 
             # docs: the tool gives what `aidl docs` prints; every topic is a resource
-            from aidl_lang.reference import find, index_text, topics
+            from aidl_lang.library.reference import find, index_text, topics
             r = await session.call_tool("docs", {"name": "SpurGear"})
             assert not r.is_error and _text(r) == find("spur_gear").render()
             assert "bore_hole" in _text(r) and "phase = 0 deg: an angle" in _text(r)

@@ -280,7 +280,7 @@ async def test_messages_name_tools_and_arguments_not_command_line_flags(shared):
     # the command line's (and the API's) own wording
     r = aidl_lang.compile(source=width, overrides={"nope": 1})
     assert r.errors[0].message == "`--set nope=...`: the model has no param `nope`"
-    from aidl_lang.reference import lookup_text
+    from aidl_lang.library.reference import lookup_text
     assert "`aidl docs` lists every topic." in lookup_text("spur_gaer")[0]
 
 

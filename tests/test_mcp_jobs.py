@@ -193,7 +193,7 @@ def test_write_program_writes_and_patches_inside_the_root(jobs):
 
 
 def test_limits_are_stated_once_in_the_descriptions(jobs):
-    from aidl_lang.limits import MAX_ITER
+    from aidl_lang.base.limits import MAX_ITER
     from aidl_lang.parser import MAX_NESTING
     said = [name for name, t in EXTRA["tools"].items()
             if f"{MAX_ITER:,} items in one loop" in t.description]
@@ -203,7 +203,7 @@ def test_limits_are_stated_once_in_the_descriptions(jobs):
 
 
 def test_the_docs_served_name_tool_arguments_not_cli_flags(jobs):
-    from aidl_lang.reference import find
+    from aidl_lang.library.reference import find
     for topic, flag, said in (("finger_box", "--assembled", "`render` with assembled=true"),
                               ("kerf", "--kerf", '`render` with kerf="0.2mm"'),
                               ("param", "--set", "`overrides`"),

@@ -176,7 +176,7 @@ def test_board_enclosure_bad_side_is_named(tmp_path):
 
 
 def test_board_enclosure_docs_name_its_ports_and_vents():
-    from aidl_lang.reference import lookup_text
+    from aidl_lang.library.reference import lookup_text
     d, found = lookup_text("board_enclosure")
     assert found and "ports" in d and "vent" in d
 

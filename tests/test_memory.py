@@ -7,7 +7,7 @@ import tracemalloc
 
 import numpy as np
 
-from aidl_lang.output.part import exact
+from aidl_lang.output.part.edges import exact
 
 
 def chords(m: int):

@@ -78,7 +78,7 @@ def test_stdlib_locations_read_std_not_the_install_path():
 def _stdlib_line(name: str, text: str, after: str = "") -> int:
     """The 1-based line of the standard library file ``name`` that holds ``text`` (the first
     after the line holding ``after``): the tests follow the file's edits."""
-    from aidl_lang.sources import STDLIB
+    from aidl_lang.library.sources import STDLIB
     lines = (Path(STDLIB) / name).read_text().splitlines()
     start = next((i for i, ln in enumerate(lines) if after in ln), 0) if after else 0
     return next(i + 1 for i in range(start, len(lines)) if text in lines[i])

@@ -451,7 +451,7 @@ def test_mirror_law_the_outline_equals_its_reflection(tmp_path_factory, half):
 def _exact_loops(c):
     """Every closed exact outline of the compiled model, as (vertices, arcs): the segment
     starts and the arcs' (centre, radius), each rounded for comparison."""
-    from aidl_lang.output.part.booleans import Renderer
+    from aidl_lang.output.part.build.booleans import Renderer
     from aidl_lang.geometry.shapes.curves import Arc as XA
     r = Renderer(c.model)
     out = []

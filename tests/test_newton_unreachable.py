@@ -8,9 +8,9 @@ import scipy.sparse as sp
 from hypothesis import given, settings, strategies as st
 
 from aidl_lang.geometry.core.expr import Lin, Nl
-from aidl_lang.solver import newton as newton_mod
-from aidl_lang.solver.newton import newton, unreachable
-from aidl_lang.solver.tape import Tape
+from aidl_lang.solver.core import newton as newton_mod
+from aidl_lang.solver.core.newton import newton, unreachable
+from aidl_lang.solver.core.tape import Tape
 
 N = 6
 

@@ -377,7 +377,7 @@ vim.cmd('qa!')
 def _lark_names(path: Path):
     """Structure, template, template-parameter and param names of a file, by the Lark parser."""
     from aidl_lang import ast as A
-    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.base.diagnostics import DiagnosticSink
     from aidl_lang.parser import parse
     prog = parse(path.read_text(encoding="utf-8"), str(path), DiagnosticSink())
     names = {"class": [], "function": [], "parameter_def": [], "constant_def": []}

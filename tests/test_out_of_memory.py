@@ -44,7 +44,7 @@ def test_the_cli_caps_its_memory_and_running_out_is_a_located_E0304(tmp_path):
 
 
 def test_the_default_cap_is_half_the_machine_and_a_normal_render_works_under_it(tmp_path):
-    from aidl_lang.memory import MIN_CAP, default_cap, machine_memory
+    from aidl_lang.base.memory import MIN_CAP, default_cap, machine_memory
     cap = default_cap()
     if cap is None:
         pytest.skip("no /proc/meminfo here")
@@ -118,7 +118,7 @@ def test_api_freedom_and_redundancy_search_out_of_memory(monkeypatch):
     MemoryError."""
     import aidl_lang
     from aidl_lang import pipeline
-    from aidl_lang.solver import freedom
+    from aidl_lang.solver.diagnosis import freedom
     r = aidl_lang.compile(path=str(PLATE))
     assert r.ok
     monkeypatch.setattr(freedom, "degrees_of_freedom", _boom)

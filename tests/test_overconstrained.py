@@ -13,7 +13,7 @@ finds.
 """
 from __future__ import annotations
 
-from aidl_lang.limits import now as budget_clock      # the budget's clock: CPU seconds
+from aidl_lang.base.limits import now as budget_clock      # the budget's clock: CPU seconds
 
 import random
 import re
@@ -25,9 +25,11 @@ from hypothesis import HealthCheck, event, given, settings
 from hypothesis import strategies as st
 
 import aidl_lang
-from aidl_lang.limits import DEFAULT_BUDGET
+from aidl_lang.base.limits import DEFAULT_BUDGET
 from aidl_lang.pipeline import compile_source
-from aidl_lang.solver import Solver, diagnose as D, freedom, redundancy
+from aidl_lang.solver import Solver
+from aidl_lang.solver.core import rank as R
+from aidl_lang.solver.diagnosis import freedom, redundancy
 
 from conftest import EXAMPLES, ROOT
 
@@ -137,7 +139,7 @@ def test_no_svd_starts_past_its_estimate(monkeypatch):
 """
     c = compile_source(src, "t.aidl")
     assert c.ok
-    monkeypatch.setattr(D, "MAX_SVD_FLOPS", 0.0)
+    monkeypatch.setattr(R, "MAX_SVD_FLOPS", 0.0)
 
     def refused(*a, **kw):
         raise AssertionError("an SVD started past its estimate")
@@ -150,7 +152,7 @@ def test_no_svd_starts_past_its_estimate(monkeypatch):
 def test_the_cli_says_why_constraints_were_not_searched(tmp_path, capsys, monkeypatch):
     """Plain ``aidl check`` names the reason on its own line (it said nothing before)."""
     from aidl_lang.cli.main import main
-    monkeypatch.setattr(D, "MAX_SVD_FLOPS", 0.0)
+    monkeypatch.setattr(R, "MAX_SVD_FLOPS", 0.0)
     f = tmp_path / "t.aidl"
     f.write_text("solid s {\n    a = Point(0, 0)\n    b = Point(10, 0)\n    Fixed(a)\n"
                  "    Distance(a, b, 10)\n    b.x - a.x == 10\n    Horizontal(Line(a, b))\n}\n")

@@ -37,7 +37,7 @@ def _outcome_lark(lp, text):
 
 
 def _outcome_ours(text):
-    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.base.diagnostics import DiagnosticSink
     LA._STATE.builder = LA._Builder("edit.aidl", DiagnosticSink())
     try:
         LA._run_lalr(text, "start")
@@ -118,7 +118,7 @@ def test_a_freshly_built_table_parses_as_the_cached_one():
     """Lark numbers its states differently from run to run; what the table parses does not
     change (the cache's key covers the grammar, the options and Lark's version)."""
     import json
-    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.base.diagnostics import DiagnosticSink
     cached = LA._tables()
     fresh = LA._Tables(json.loads(json.dumps(T._tables_data())))
     outs = []
@@ -155,7 +155,7 @@ def test_keyword_patterns_and_the_literal_table_lex_the_same():
 
 
 def _parse_with(tables, text):
-    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.base.diagnostics import DiagnosticSink
     cached = LA._tables()
     LA._TABLES = tables
     try:

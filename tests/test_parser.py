@@ -7,7 +7,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from aidl_lang import ast as A
-from aidl_lang.diagnostics import DiagnosticSink
+from aidl_lang.base.diagnostics import DiagnosticSink
 from aidl_lang.parser import parse
 
 
@@ -582,7 +582,7 @@ def test_walk_reaches_the_fields_a_node_inherits():
     the template call of ``solid t = tab(w=p)`` is a ``KindAssign``'s ``value``, a field of
     ``Assign`` (the language server's name uses and keyword tokens are found by walking)."""
     from aidl_lang import ast as A
-    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.base.diagnostics import DiagnosticSink
     from aidl_lang.parser import parse
     sink = DiagnosticSink()
     prog = parse("def tab(w=1) -> solid { r = Rectangle(center=(0, 0), width=w, height=2) }\n"

@@ -14,11 +14,12 @@ import re
 import pytest
 
 from aidl_lang.pipeline import compile_source
-from aidl_lang.solver import hierarchy, solve
-from aidl_lang.solver import freedom
-from aidl_lang.solver.freedom import degrees_of_freedom, freedom_text
-from aidl_lang.solver.redundancy import redundancies
-from aidl_lang.solver.tape import Tape
+from aidl_lang.solver.core import hierarchy
+from aidl_lang.solver import solve
+from aidl_lang.solver.diagnosis import freedom
+from aidl_lang.solver.diagnosis.freedom import degrees_of_freedom, freedom_text
+from aidl_lang.solver.diagnosis.redundancy import redundancies
+from aidl_lang.solver.core.tape import Tape
 from benchmarks.checks.perforated import panel_aidl as panel   # the panel: a loop of holes
 
 

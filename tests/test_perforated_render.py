@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from aidl_lang.output import Options, build, encode
-from aidl_lang.output.part import booleans
+from aidl_lang.output.part.build import booleans
 from aidl_lang.pipeline import compile_source
 
 # 12 x 10 holes apart (radii 1.5 and 2.5 mm in turn), a pair that overlaps, one across the
@@ -137,9 +137,9 @@ def test_the_pairs_to_match_are_bounded_per_edge_not_only_in_all(compiled, monke
     ~2,250,000 edges of 50,000 holes (~4.5 pairs each) passed the fixed 10,000,000 and were
     refused as 'curves drawn on top of each other'.  Here the fixed cap is made smaller than
     this plate's pairs (~4 per edge): the plate is still recovered whole."""
-    from aidl_lang.output.part import exact
+    from aidl_lang.output.part.edges import matching
     c, _ = compiled
     shape = c.drawing.parts[0].shape
     want = c.drawing.exact.loops_of([shape])[0]
-    monkeypatch.setattr(exact, "MAX_CANDIDATES", shape.num_vert())
+    monkeypatch.setattr(matching, "MAX_CANDIDATES", shape.num_vert())
     assert c.drawing.exact.loops_of([shape])[0] == want and len(want) == 1 + APART + 2

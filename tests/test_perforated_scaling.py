@@ -40,10 +40,11 @@ from hypothesis import given, settings, strategies as st
 import manifold3d as mf
 import numpy as np
 
-from aidl_lang.limits import DEFAULT_BUDGET
+from aidl_lang.base.limits import DEFAULT_BUDGET
 from aidl_lang.output import Options, build, checks, encode
 from aidl_lang.output.fabrication import toolpath
-from aidl_lang.output.part import booleans, nearby
+from aidl_lang.output.part.build import booleans
+from aidl_lang.output.part.measure import nearby
 from aidl_lang.pipeline import compile_source, run_deep
 from benchmarks.checks.perforated import grid, panel_aidl, reader, write_dxf
 
@@ -145,7 +146,7 @@ def _run(tmp_path, nx: int, ny: int, how: str) -> tuple[Counter, int, bytes]:
     mp = pytest.MonkeyPatch()
     mp.setattr(booleans, "mf", _Manifold(work))
     mp.setattr(toolpath, "np", _NumPy(work, "toolpath"))
-    from aidl_lang.output.part import exact as exact_mod
+    from aidl_lang.output.part.edges import exact as exact_mod
     real_cells, real_match = exact_mod._Grid._cells, exact_mod._Grid.match
 
     def cells(grid, M):                 # edges looked up in the exact recovery's grid
@@ -163,7 +164,7 @@ def _run(tmp_path, nx: int, ny: int, how: str) -> tuple[Counter, int, bytes]:
     mp.setattr(exact_mod._Grid, "_cells", cells)
     mp.setattr(exact_mod._Grid, "match", match)
     mp.setattr(exact_mod._Grid, "__init__", indexed)
-    from aidl_lang.output.checks import openings
+    from aidl_lang.output.checks.holes import openings
     real_local = openings._Near.local
 
     def local(near, part, region):      # a hole's neighbourhood to intersect (W0501)
@@ -271,7 +272,7 @@ def test_each_stage_grows_linearly_with_the_holes(tmp_path, how):
 
 
 def test_the_slit_search_measures_no_neighbours_along_the_holes(tmp_path, monkeypatch):
-    """W0519's search (walls._check_slits) of a DXF panel of 100 round holes (4,504 chord
+    """W0519's search (slits._check_slits) of a DXF panel of 100 round holes (4,504 chord
     vertices: the large path): it measured each vertex against the chords beside it on its
     own circle (21,608 candidate pairs, 4.8 per vertex; 3.2 million at 20,000 holes, past the
     pair limit at 50,000: the slits went unchecked, W0521), every one then dropped as not
@@ -314,12 +315,12 @@ def _circle_loop(cx, cy, r, n, turn=0.0, cw=True):
                           st.floats(0, 6.3)), min_size=60, max_size=60),
        st.floats(0.1, 2.0))
 def test_the_slit_search_leaves_out_only_circles_that_pair_with_nothing(rows, t):
-    """walls._lone_circles (a law): a loop it leaves out of W0519's search holds no vertex
+    """slits._lone_circles (a law): a loop it leaves out of W0519's search holds no vertex
     and no edge of a pair the search measures and keeps on all the loops (close_pairs_facing,
-    then not adjacent, apart, facing: walls._check_slits's own filters), so the warnings are
+    then not adjacent, apart, facing: slits._check_slits's own filters), so the warnings are
     the same; circles of a grid (some -0.3 to 0.8 mm from their neighbour or the outline, radii
     0.2-3 mm, 8-60 chords, any phase, either way round), in a square outline."""
-    from aidl_lang.output.checks import walls
+    from aidl_lang.output.checks.material import slits, walls
     loops = [np.array([[-40.0, -40.0], [40.0, -40.0], [40.0, 40.0], [-40.0, 40.0]])]
     for k, (r, gap, n, turn) in enumerate(rows):
         cy = -36 + 8 * (k // 10)
@@ -336,10 +337,10 @@ def test_the_slit_search_leaves_out_only_circles_that_pair_with_nothing(rows, t)
         loops += [_circle_loop(0, 50, 4, nearby.SMALL_VERTS)]   # past the small path
         V, nxt, prv = walls._ring(loops)
     of = np.repeat(np.arange(len(loops)), [len(P) for P in loops])
-    v, sg, dist, _ = nearby.close_pairs_facing(V, nxt, prv, t, walls.FACING)
-    ok = (v != nxt[sg]) & (dist > 1e-6) & walls._facing(V, nxt, prv, v, sg, walls.FACING)
+    v, sg, dist, _ = nearby.close_pairs_facing(V, nxt, prv, t, slits.FACING)
+    ok = (v != nxt[sg]) & (dist > 1e-6) & walls._facing(V, nxt, prv, v, sg, slits.FACING)
     paired = set(of[v[ok]].tolist()) | set(of[sg[ok]].tolist())
-    out = set(np.flatnonzero(walls._lone_circles(loops, t)).tolist())
+    out = set(np.flatnonzero(slits._lone_circles(loops, t)).tolist())
     assert not out & paired, sorted(out & paired)
     assert out, "no circle left out"
 
@@ -379,7 +380,7 @@ def long_row():
     mp.setattr(booleans.Renderer, "union", union)
     mp.setattr(nearby, "_measure", counted_measure)
     mp.setattr(checks, "_analyse", counted_analyse)
-    from aidl_lang.output.checks import openings
+    from aidl_lang.output.checks.holes import openings
     real_refill = openings._Near._near_refill
 
     def refill(near, part, regions):    # the row's opening within the holes (one boolean)
@@ -422,8 +423,8 @@ def test_a_long_row_of_holes_is_cut_and_opened_scanned_along_it(long_row, monkey
     ``TURN_ASPECT`` times wider than tall; the tiles were 20 times wider), and clips the
     tiles in arrays (``_clip_ring``: the region of Clipper's intersection with each tile's
     box), with the same pieces as the whole opening."""
-    from aidl_lang.output.checks import walls
-    from aidl_lang.output.part.scanwork import turned, turned_back
+    from aidl_lang.output.checks.material import walls
+    from aidl_lang.output.part.build.scanwork import turned, turned_back
     res, framed, _ = long_row
     assert res.ok
     (part,) = res.drawing.parts
@@ -474,7 +475,7 @@ def test_the_webs_distances_in_one_pass_are_each_webs_own():
     import math
 
     import shapely
-    from aidl_lang.output.checks.openings import _seg_distances
+    from aidl_lang.output.checks.holes.openings import _seg_distances
     rng = np.random.default_rng(7)
     sf = np.sort(rng.choice([0, 1, 2, 4, 5, 9], size=300))   # features 3, 6-8: no segment
     A, B = rng.normal(size=(300, 2)), rng.normal(size=(300, 2))
@@ -499,7 +500,7 @@ def test_loops_clipped_in_arrays_are_clippers_intersection():
     region of the clipped loops is Clipper's intersection of the shape with the box, for a
     plate with holes near, across and around the box's edges and corners, boxes cutting
     through holes, between them, inside one and around the whole."""
-    from aidl_lang.output.checks import walls
+    from aidl_lang.output.checks.material import walls
     from aidl_lang.output.checks.common import _loop_boxes
     rng = np.random.default_rng(3)
     plate = mf.CrossSection.square((40.0, 20.0)) - mf.CrossSection.batch_boolean(
@@ -532,7 +533,7 @@ def test_holes_whose_boxes_are_apart_are_not_intersected(monkeypatch):
     is no longer intersected: 100 holes of r 0.4 mm 1 mm apart (0.2 mm walls, reported as
     W0507 webs) measure each hole's area twice (the region kept, its area: 200 areas; 299
     before, one per neighbour pair's intersection too)."""
-    from aidl_lang.output.checks import openings
+    from aidl_lang.output.checks.holes import openings
     from benchmarks.checks.perforated import collinear_aidl
     areas, inside = [], []
     real, analyse = openings._area, checks._analyse
@@ -557,8 +558,8 @@ def test_holes_apart_in_a_row_are_united_in_one_pass(monkeypatch):
     r 0.4 mm 1 mm apart in a row: scanned along the row, and, their boxes apart, in one
     ``batch_boolean`` over their vertices once (12,000; in groups of 16, then the groups'
     results, and theirs: 36,000 before), with the same union."""
-    from aidl_lang.output.checks import openings
-    from aidl_lang.output.part.scanwork import plan
+    from aidl_lang.output.checks.holes import openings
+    from aidl_lang.output.part.build.scanwork import plan
     holes = [mf.CrossSection.circle(0.4, 24).translate((float(i), 0.0)) for i in range(500)]
     assert plan(holes)[0]                                     # the row: scanned along it
     work: Counter = Counter()

@@ -1,4 +1,4 @@
-"""Geometry pinned in its structure's frame adds no unknowns (issue 38, solver/system.py
+"""Geometry pinned in its structure's frame adds no unknowns (issue 38, solver/core/system.py
 `pinned`): the solve, the degrees of freedom, the redundant constraints (W0401), what slides
 and every diagnostic are those of the solve that keeps the pinned geometry as unknowns held by
 its rows (``Solver.pinning`` off), on the gear pair and on generated programs mixing pinned,
@@ -12,8 +12,9 @@ import numpy as np
 from hypothesis import example, given, settings, strategies as st
 
 from aidl_lang.pipeline import compile_source
-from aidl_lang.solver import Solver, freedom, redundancy, sliding
-from aidl_lang.solver.system import pinned
+from aidl_lang.solver import Solver
+from aidl_lang.solver.diagnosis import freedom, redundancy, sliding
+from aidl_lang.solver.core.system import pinned
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 
@@ -182,7 +183,7 @@ def test_a_row_without_its_unknown_pins_nothing():
 
 def _reference_pinned(rows, free, is_frame, owner):
     from aidl_lang.geometry.core.expr import Expr, Lin, Nl
-    from aidl_lang.solver.system import EQ, PIVOT
+    from aidl_lang.solver.core.system import EQ, PIVOT
     exprs, kind, cons = rows.exprs, rows.kind, rows.constraint
     n = rows.n_model
     ok_var = (np.asarray(free[:n], dtype=bool) & ~np.asarray(is_frame[:n], dtype=bool)).tolist()
@@ -267,7 +268,7 @@ def _row_sets(draw):
     unknowns, some reaching into another's), nonlinear rows and inequalities; parameters
     held, frames or free."""
     from aidl_lang.geometry.core.expr import Lin, mul, var
-    from aidl_lang.solver.system import Rows
+    from aidl_lang.solver.core.system import Rows
     structs = [object() for _ in range(draw(st.integers(1, 3)))]
     n = draw(st.integers(1, 14))
     owner = [draw(st.sampled_from(structs + [None])) if draw(st.integers(0, 7)) == 0
@@ -313,7 +314,7 @@ def test_the_peel_from_a_python_level_into_an_array_level():
     (two of its unknowns pinned in that level): the array level must skip it.  Rows
     ``a``, ``b``, ``a + b`` (dependent: it spoils the component), ``a + c``, ``b + d``."""
     from aidl_lang.geometry.core.expr import Lin
-    from aidl_lang.solver.system import Rows
+    from aidl_lang.solver.core.system import Rows
     s = object()
     rows = Rows(n_model=4, n_params=4)
     for terms in ({0: 1.0}, {1: 1.0}, {0: 1.0, 1: 1.0}, {0: 1.0, 2: 1.0}, {1: 1.0, 3: 1.0},
@@ -323,7 +324,7 @@ def test_the_peel_from_a_python_level_into_an_array_level():
 
 
 def _check_peel(rows, free, is_frame, owner, xs):
-    from aidl_lang.solver import system
+    from aidl_lang.solver.core import system
     free_all = np.concatenate([free, np.ones(rows.n_params - len(free), dtype=bool)])
     frame_all = np.concatenate([is_frame, np.zeros(rows.n_params - len(free), dtype=bool)])
     want = _reference_pinned(rows, free_all, frame_all, owner)

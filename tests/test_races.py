@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from aidl_lang.files import FileRefused
+from aidl_lang.host.files import FileRefused
 
 SWAPPER = r'''
 import os, sys, time
@@ -197,7 +197,7 @@ def test_an_import_never_passes_through_a_folder_swapped_for_a_link(tmp_path):
 
 def test_read_import_refuses_a_folder_that_became_a_link_after_the_check(tmp_path):
     """The window made certain: resolved while `sub` is a folder, read once it is a link."""
-    from aidl_lang.sources import ImportRefused, read_import, resolve_import
+    from aidl_lang.library.sources import ImportRefused, read_import, resolve_import
     root = tmp_path / "root"
     (root / "sub").mkdir(parents=True)
     outside = tmp_path / "outside"

@@ -1,4 +1,4 @@
-"""The value records written as plain classes (aidl_lang/records.py) behave as the dataclasses
+"""The value records written as plain classes (aidl_lang/base/records.py) behave as the dataclasses
 they replaced: the same ``repr``, equality, hashing and immutability; and the modules of
 ``aidl check`` no longer have ``dataclasses`` compile methods at import (issue 58's cold start)."""
 import copy
@@ -10,10 +10,10 @@ import sys
 
 import pytest
 
-from aidl_lang.diagnostics import Diagnostic, Label, Span
+from aidl_lang.base.diagnostics import Diagnostic, Label, Span
 from aidl_lang.geometry.shapes.curves import Arc, Circle, Line, Loop
-from aidl_lang.limits import Budget
-from aidl_lang.records import Compared, Frozen, Record
+from aidl_lang.base.limits import Budget
+from aidl_lang.base.records import Compared, Frozen, Record
 
 
 def _twin(cls, **options):
@@ -101,8 +101,8 @@ def spy(name, *a, **k):
     count[f.f_locals["cls"].__qualname__] += 1
     return made(name, *a, **k)
 dataclasses._create_fn = spy
-import aidl_lang.cli.main, aidl_lang.api, aidl_lang.pipeline, aidl_lang.solver.diagnose
-import aidl_lang.solver.freedom, aidl_lang.solver.redundancy, aidl_lang.solver.sliding
+import aidl_lang.cli.main, aidl_lang.api, aidl_lang.pipeline, aidl_lang.solver.diagnosis.diagnose
+import aidl_lang.solver.diagnosis.freedom, aidl_lang.solver.diagnosis.redundancy, aidl_lang.solver.diagnosis.sliding
 import aidl_lang.output.checks
 print(sorted(count.items()))
 """

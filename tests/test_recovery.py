@@ -17,7 +17,7 @@ from lsprotocol import types as T
 from pytest_lsp import LanguageClient
 
 from aidl_lang import ast as A
-from aidl_lang.diagnostics import DiagnosticSink
+from aidl_lang.base.diagnostics import DiagnosticSink
 from aidl_lang.editor.lsp import analysis as an
 from aidl_lang.parser import parse
 

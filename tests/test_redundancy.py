@@ -14,7 +14,7 @@ import pytest
 
 from conftest import EXAMPLES, ROOT
 from aidl_lang.pipeline import compile_source
-from aidl_lang.solver import redundancy
+from aidl_lang.solver.diagnosis import redundancy
 
 
 def _rank(A: np.ndarray) -> int:

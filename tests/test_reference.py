@@ -1,4 +1,4 @@
-"""`aidl docs` and the reference it prints (aidl_lang/reference.py): a topic for every registry
+"""`aidl docs` and the reference it prints (aidl_lang/library/reference.py): a topic for every registry
 name, statement and standard-library template, each with an example that compiles; lenient
 lookups; the stdlib doc comments the prompt and the topics are generated from."""
 from __future__ import annotations
@@ -13,7 +13,7 @@ from aidl_lang.api import compile as aidl_compile
 from aidl_lang.cli.main import main
 from aidl_lang.llm.prompt import system_prompt
 from aidl_lang.pipeline import compile_source
-from aidl_lang.reference import (STATEMENTS, find, index_text, lookup_text, stdlib_templates,
+from aidl_lang.library.reference import (STATEMENTS, find, index_text, lookup_text, stdlib_templates,
                                  suggest, topics)
 from aidl_lang.registry import ENTRIES, SYNONYMS
 
@@ -172,7 +172,7 @@ def test_no_message_or_hint_names_a_file_the_model_cannot_read():
     from pathlib import Path
 
     import aidl_lang
-    from aidl_lang.codes import CODES
+    from aidl_lang.base.codes import CODES
     md = re.compile(r"\b[\w./-]+\.md\b")
     for code, (title, text) in CODES.items():
         assert not md.search(title + text), code
@@ -213,7 +213,7 @@ def _diag(src: str, code: str, tmp_path):
 
 
 def test_did_you_mean_ignores_case_and_word_style():
-    from aidl_lang.diagnostics import did_you_mean
+    from aidl_lang.base.diagnostics import did_you_mean
     assert did_you_mean("SpurGear", ["spur_gear", "Rectangle", "gear_pair"])[0] == "spur_gear"
     assert did_you_mean("spur-gear", ["spur_gear"]) == ["spur_gear"]
     assert did_you_mean("ROUNDED_PLATE", ["rounded_plate", "rounded_tab"])[0] == "rounded_plate"
@@ -324,9 +324,9 @@ def test_template_parameters_say_their_kind_and_a_missing_default_as_required():
     """Issue 86: a template parameter without a default is `required`, lists say what they
     hold, a point default is a point."""
     from aidl_lang import ast as A
-    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.base.diagnostics import DiagnosticSink
     from aidl_lang.parser import parse
-    from aidl_lang.reference import StdTemplate, _template_topic
+    from aidl_lang.library.reference import StdTemplate, _template_topic
     src = ("def tray(cells, widths=[10 mm, 20 mm], at=(0, 0), spots=[(1, 2), (3, 4)],\n"
            "         rows=[[1, 2], [3, 4]]) -> solid {\n"
            "    body = Rectangle(center=at, width=10, height=10)\n}\n")

@@ -2,7 +2,7 @@
 compile beyond its budget, work that grows faster than the input), each with a time bound."""
 from __future__ import annotations
 
-from aidl_lang.limits import now as budget_clock      # the budget's clock: CPU seconds
+from aidl_lang.base.limits import now as budget_clock      # the budget's clock: CPU seconds
 
 import time
 
@@ -60,7 +60,7 @@ def test_constraints_on_every_primitive_answer_with_diagnostics(name):
 def test_fixed_polygon_holds_every_vertex(kind):
     c = compile_source(f"solid p {{\n g = {PRIMS[kind]}\n Fixed(g)\n}}\n", "p.aidl")
     assert c.ok, [(d.code, d.message) for d in c.sink.items]
-    from aidl_lang.solver.freedom import degrees_of_freedom
+    from aidl_lang.solver.diagnosis.freedom import degrees_of_freedom
     assert sum(d.dof for d in degrees_of_freedom(c.solve.solver, floating=False)) == 0
 
 
@@ -73,10 +73,10 @@ def _errors(c):
 def test_the_deadline_reaches_the_booleans_and_the_shape_checks():
     """After the solve the compile's deadline still counts: a passed deadline ends the
     booleans, or the shape checks, with one E0304 at the structure, naming it and the stage."""
-    from aidl_lang.diagnostics import DiagnosticSink
-    from aidl_lang.limits import Deadline
+    from aidl_lang.base.diagnostics import DiagnosticSink
+    from aidl_lang.base.limits import Deadline
     from aidl_lang.output import checks
-    from aidl_lang.output.part.booleans import render_model
+    from aidl_lang.output.part.build.booleans import render_model
     from aidl_lang.pipeline import after_solve
     src = "solid plate {\n    body = Circle(center=(0, 0), radius=9)\n" \
           "    hole bore { c = Circle(center=(0, 0), radius=2) }\n}\n"
@@ -89,7 +89,7 @@ def test_the_deadline_reaches_the_booleans_and_the_shape_checks():
     assert "in the booleans of `plate`: more than 15 s of CPU time" in d.message
     drawing = render_model(c.model)
     sink = DiagnosticSink()
-    from aidl_lang.limits import OutOfBudget
+    from aidl_lang.base.limits import OutOfBudget
     with pytest.raises(OutOfBudget) as ex:
         checks.check_drawing(drawing, sink, deadline=Deadline(budget_clock() - 1))
     assert ex.value.stage == "the shape checks" and ex.value.where is not None
@@ -98,7 +98,7 @@ def test_the_deadline_reaches_the_booleans_and_the_shape_checks():
 def test_outline_vertices_are_counted_before_they_are_made():
     """The budget's `vertices` bounds the tessellated outlines: counted from the radii before
     any chord is computed; E0304 at the structure that went over, scaled by --budget."""
-    from aidl_lang.limits import Budget
+    from aidl_lang.base.limits import Budget
     src = ("solid plate {\n    body = Rectangle(center=(0, 0), width=900, height=900)\n"
            "    hole holes {\n"
            "        for i in range(40) { c = Circle(center=(i * 10 - 200, 0), radius=4) }\n"
@@ -158,9 +158,9 @@ def test_freedom_count_of_a_long_pattern_peels_its_copies():
     minutes); rows that alone hold some unknown are peeled off first, in O(non-zeros)."""
     import numpy as np
     import scipy.sparse as sp
-    from aidl_lang.solver.diagnose import _block_rank
-    from aidl_lang.solver.freedom import degrees_of_freedom, freedom_text
-    from aidl_lang.limits import Budget
+    from aidl_lang.solver.core.rank import _block_rank
+    from aidl_lang.solver.diagnosis.freedom import degrees_of_freedom, freedom_text
+    from aidl_lang.base.limits import Budget
     # wall time to spare: on a loaded machine the default 15 s ran out in the compile
     c = compile_source(_circles(5000, None, pattern=True), "lp.aidl", budget=Budget(seconds=120))
     assert c.ok
@@ -207,7 +207,7 @@ def test_chaining_many_lines_into_a_loop_is_linear():
     curve at every step (O(n^2), 12 s); through a grid of their ends, well under a second."""
     import math
     import random
-    from aidl_lang.output.part.booleans import Renderer
+    from aidl_lang.output.part.build.booleans import Renderer
     n = 5000
     pts = [(round(100 * math.cos(2 * math.pi * i / n), 9), round(100 * math.sin(2 * math.pi * i / n), 9))
            for i in range(n)]
@@ -247,7 +247,7 @@ def test_an_import_diamond_reads_each_file_once(tmp_path, monkeypatch):
     """16 levels of diamonds (33 files): the checker read every file on every path (2^16
     reads, 82 s); each file is now read and parsed once by the checker and once by the
     interpreter, and names still flow from the bottom file to the top."""
-    from aidl_lang import sources
+    from aidl_lang.library import sources
     main = _diamond(tmp_path)
     reads = []
     real = sources.read_import
@@ -312,8 +312,8 @@ def test_a_step_sure_to_overrun_the_deadline_is_refused_before_it_starts(monkeyp
     refused at once, long before the 10 s deadline: the thin-wall check stops with its
     W0521 note (a guess about a check that only warns never fails the compile; it was E0304
     before issue 58's second round), and the part compiles."""
-    from aidl_lang.limits import Budget, Deadline, OutOfBudget
-    from aidl_lang.output.checks import walls as checks     # patched where it is used
+    from aidl_lang.base.limits import Budget, Deadline, OutOfBudget
+    from aidl_lang.output.checks.material import walls as checks     # patched where it is used
     d = Deadline(budget_clock() + 10)
     d.check("here", ahead=5)
     with pytest.raises(OutOfBudget):
@@ -344,7 +344,7 @@ def test_the_wall_check_unites_only_pieces_that_meet_across_tiles(monkeypatch):
     the pieces' areas add up to the untiled opening's, and a thin wall that crosses tiles
     comes out as one piece."""
     import manifold3d as mf
-    from aidl_lang.output.checks import walls as checks     # patched where it is used
+    from aidl_lang.output.checks.material import walls as checks     # patched where it is used
     sizes = []
     real = checks._union
     monkeypatch.setattr(checks, "_union", lambda xs: (sizes.append(len(list(xs))), real(xs))[1])
@@ -379,7 +379,7 @@ def test_the_wall_check_unites_only_pieces_that_meet_across_tiles(monkeypatch):
 def test_a_row_of_five_thousand_circles_checks_within_the_budget():
     """Fuzz seed 1542 (5,000 circles 1 mm apart in one solid): 22-34 s, 25 s of them in the
     last union of W0507's tiles; now no union and no W0507, within the 15 s budget."""
-    from aidl_lang.limits import Budget
+    from aidl_lang.base.limits import Budget
     src = ("solid top {\n    for j in range(5000) { solid c { k = Circle(center=(j * 3, 0), "
            "radius=1) } }\n}\n")
     t0 = time.process_time()
@@ -446,7 +446,7 @@ def test_the_exact_outlines_stop_at_the_deadline(tmp_path):
     for 32,767 parts, outside the budget): it looks at the compile's deadline every
     POLYGONS_PER_CHECK polygons.  A deadline already past stops it at the first look, with an
     OutputError carrying the located budget error (the stage and the part)."""
-    from aidl_lang.limits import Deadline
+    from aidl_lang.base.limits import Deadline
     from aidl_lang.output import OutputError, build
     c = compile_source(FAN.replace("FANS", "4"), "fan.aidl")
     assert c.ok and c.deadline is not None
@@ -462,7 +462,7 @@ def test_the_kerf_offset_stops_at_the_deadline():
     """The kerf offset of every part (a Python loop over the parts, after the exact outlines)
     looks at the compile's deadline before each part: past it, an OutputError carrying the
     located budget error ("the kerf offset", the part's structure)."""
-    from aidl_lang.limits import Deadline
+    from aidl_lang.base.limits import Deadline
     from aidl_lang.output import OutputError, build, for_cutting
     c = compile_source("kerf 0.2 mm\n" + FAN.replace("FANS", "2"), "fan.aidl")
     assert c.ok
@@ -481,8 +481,8 @@ def test_a_union_sure_to_end_past_the_deadline_is_refused_before_it_starts(monke
     machine); like the shape checks' steps, it is refused before it starts when its vertex
     count says it would end past the deadline.  Here the cost per vertex is set absurdly
     high: E0304 in the booleans at once."""
-    from aidl_lang.limits import Budget
-    from aidl_lang.output.part import booleans
+    from aidl_lang.base.limits import Budget
+    from aidl_lang.output.part.build import booleans
     monkeypatch.setattr(booleans, "UNION_SECONDS_PER_VERTEX", 1.0)
     src = ("solid plate {\n    a = Circle(center=(0, 0), radius=5)\n"
            "    b = Circle(center=(4, 0), radius=5)\n}\n")
@@ -512,7 +512,7 @@ def test_patterns_of_thousands_copy_in_linear_time_and_stop_at_the_deadline():
     O(n^2) a pattern) and the wall clock was read only between evaluation steps, while one
     pattern call is a single step.  Now 30,000 copies compile in a few seconds, and a 0.2 s
     budget ends 100,000 copies with a located E0304 soon after."""
-    from aidl_lang.limits import Budget
+    from aidl_lang.base.limits import Budget
     t0 = time.process_time()
     c = compile_source(PATTERN_OF_POINTS.replace("N", "3"), "pat.aidl", do_solve=False,
                        budget=Budget(seconds=120))      # CPU is measured, not the wall clock

@@ -1,4 +1,4 @@
-"""The import sandbox (docs/language.md §8.2): one resolver (aidl_lang/sources.py) for the
+"""The import sandbox (docs/language.md §8.2): one resolver (aidl_lang/library/sources.py) for the
 checker, the interpreter and the language server; nothing outside the importing file's folder
 tree or the standard library is read, and no diagnostic reveals anything about a refused
 target (names defined in it, its contents, its absolute path)."""

@@ -5,7 +5,7 @@ paths) took 15.3 s in the booleans, past the default budget (E0304): every throu
 was intersected with the whole part to find its area on the material, and each piece a cut
 freed was intersected with every piece of the part as it was (and, to find whether it falls
 out, compared with the union of all the others).  Now each band and each piece meets only
-the pieces whose bounding boxes meet its own (:func:`~aidl_lang.output.part.nearby.meeting`):
+the pieces whose bounding boxes meet its own (:func:`~aidl_lang.output.part.measure.nearby.meeting`):
 the Lamp in 3.6 s, the sheets below in a few seconds where they took 11 to 60 s.  And
 the exact output drops the through-cuts that run along a split part's outline (cut once, as
 the outline) by asking a grid of their sample points for the edges near each
@@ -21,8 +21,8 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from aidl_lang import api
-from aidl_lang.limits import Budget
-from aidl_lang.output.part.nearby import meeting as _meeting
+from aidl_lang.base.limits import Budget
+from aidl_lang.output.part.measure.nearby import meeting as _meeting
 from aidl_lang.pipeline import compile_source
 from cpu_reference import cpu_bound
 
@@ -152,7 +152,7 @@ def test_meeting_is_every_pair_of_boxes_that_meet(a, b):
 # ------------------------------------------------------------------ _off_outlines
 def _off_outlines_reference(strokes, parts):
     """The measure before issue 58's second round: every sample point against every edge."""
-    from aidl_lang.output.part.booleans import _chain_points
+    from aidl_lang.output.part.build.booleans import _chain_points
     from aidl_lang.output.part.part import ON_OUTLINE, Stroke
     A = np.vstack([np.asarray(lp.points(), float) for p in parts for lp in p.loops])
     B = np.vstack([np.roll(np.asarray(lp.points(), float), -1, axis=0)
@@ -258,7 +258,7 @@ def test_meeting_of_90601_squares_is_listed_in_blocks():
     - 2)^2 pairs in all.  Before: the grid query listed its 6.3 million candidates at once and
     refused past 3 million (TooManyPairs: an internal error of `aidl parts`); now the queries
     go in blocks of at most 3 million, and only a dense cluster is refused."""
-    from aidl_lang.output.part.nearby import MAX_PAIRS, TooManyPairs, box_pairs_between
+    from aidl_lang.output.part.measure.nearby import MAX_PAIRS, TooManyPairs, box_pairs_between
     n = 301
     i, j = np.divmod(np.arange(n * n), n)
     boxes = np.column_stack([2.0 * i, 2.0 * j, 2.0 * i + 2, 2.0 * j + 2])

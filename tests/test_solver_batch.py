@@ -16,7 +16,7 @@ from hypothesis import strategies as st
 
 from aidl_lang.pipeline import compile_source
 from aidl_lang.solver import Solver, run
-from aidl_lang.solver.hierarchy import _independent
+from aidl_lang.solver.core.hierarchy import _independent
 from benchmarks.solver.families import hierarchy
 
 EXAMPLES = sorted((pathlib.Path(__file__).resolve().parents[1] / "examples").glob("*.aidl"))

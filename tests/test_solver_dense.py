@@ -9,7 +9,7 @@ import sys
 
 import numpy as np
 
-from aidl_lang.solver.newton import _Step, dense_enough
+from aidl_lang.solver.core.newton import _Step, dense_enough
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 

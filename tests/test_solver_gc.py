@@ -10,8 +10,8 @@ import pytest
 
 from aidl_lang.pipeline import compile_source
 from aidl_lang.solver import Solver
-from aidl_lang.memory import gc_paused
-from aidl_lang.solver.tape import Tape
+from aidl_lang.base.memory import gc_paused
+from aidl_lang.solver.core.tape import Tape
 from benchmarks.solver.families import hierarchy
 
 

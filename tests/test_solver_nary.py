@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from aidl_lang.geometry.core.expr import Lin, Nl, evaluate
-from aidl_lang.solver.tape import Tape
+from aidl_lang.solver.core.tape import Tape
 
 N = 5      # parameters
 
@@ -97,7 +97,7 @@ def _depth(e) -> int:
 def test_levels_are_depths_by_array_passes_and_by_the_ordered_pass(leaves, ops):
     """A node's level is its depth (leaves 0); the array relaxation and the fallback pass in
     node order (used past _LEVEL_PASSES levels) give the same levels."""
-    import aidl_lang.solver.tape as tape_mod
+    import aidl_lang.solver.core.tape as tape_mod
     e = leaves[0]
     for i, op in enumerate(ops):
         other = leaves[i % len(leaves)]
@@ -115,6 +115,6 @@ def test_levels_are_depths_by_array_passes_and_by_the_ordered_pass(leaves, ops):
 
 
 def test_min_without_arguments_is_a_tape_error():
-    from aidl_lang.solver.tape import TapeError
+    from aidl_lang.solver.core.tape import TapeError
     with pytest.raises(TapeError, match="no arguments"):
         Tape([Nl("max", ())], 1)

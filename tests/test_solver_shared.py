@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 
 from aidl_lang.geometry.core.expr import Lin, Nl
 from aidl_lang.solver import Solver
-from aidl_lang.solver.tape import Tape, TapeError
+from aidl_lang.solver.core.tape import Tape, TapeError
 from benchmarks.solver.families import hierarchy
 
 ARRAYS = ("aff_rows", "a_row", "a_col", "a_val", "b", "l_row", "l_col", "l_val", "lconst",

@@ -1,4 +1,4 @@
-"""The small-system path (solver/small.py) computes the general path's numbers bit for bit.
+"""The small-system path (solver/core/small.py) computes the general path's numbers bit for bit.
 
 Laws (hypothesis, on random rows of affine pairs, fixed values, general affine rows and
 nonlinear trees of +, *, /, sqrt and abs with shared subexpressions):
@@ -23,10 +23,10 @@ from hypothesis import given, settings, strategies as st
 from aidl_lang.geometry.core.expr import Lin, Nl
 from aidl_lang.pipeline import compile_source
 from aidl_lang.solver import Solver, run
-from aidl_lang.solver.newton import newton, solve_dense
-from aidl_lang.solver.reduce import reduce
-from aidl_lang.solver.small import SMALL_ROWS, SmallTape, small_tape
-from aidl_lang.solver.tape import Tape
+from aidl_lang.solver.core.newton import newton, solve_dense
+from aidl_lang.solver.core.reduce import reduce
+from aidl_lang.solver.core.small import SMALL_ROWS, SmallTape, small_tape
+from aidl_lang.solver.core.tape import Tape
 
 from benchmarks.solver.families import FLAT
 

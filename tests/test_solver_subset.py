@@ -11,7 +11,7 @@ from hypothesis import given, settings, strategies as st
 
 from aidl_lang.pipeline import compile_source
 from aidl_lang.solver import Solver
-from aidl_lang.solver.tape import Tape
+from aidl_lang.solver.core.tape import Tape
 from benchmarks.solver.families import hierarchy
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
@@ -101,7 +101,7 @@ def test_the_whole_row_set_cut_out_is_the_whole_tape(which):
 @given(which=st.sampled_from(sorted(_SOLVERS)), seed=st.integers(0, 1000))
 def test_the_reduced_jacobian_is_j_keep_times_s(which, seed):
     """``Tape.jacobian(reduction=...)`` (summed from the entries) equals ``J[keep] @ S``."""
-    from aidl_lang.solver.reduce import reduce
+    from aidl_lang.solver.core.reduce import reduce
     s = _SOLVERS[which]
     rows = np.arange(len(s.rows.exprs))
     t = s.whole

@@ -129,7 +129,7 @@ def test_fmt_refuses_a_fifo_source(tmp_path, make_node):
 def test_fmt_leaves_a_file_swapped_for_a_fifo_after_it_was_read(tmp_path, monkeypatch, capsys):
     """The write of `aidl fmt` checks the file again: one replaced by a FIFO between the read
     and the write is left as it is (it used to be renamed over)."""
-    import aidl_lang.sources as sources
+    import aidl_lang.library.sources as sources
     from aidl_lang.editor.fmt import main as fmt_main
     p = tmp_path / "x.aidl"
     p.write_text("units mm\nsolid  plate {\n    body = Rectangle(center=(0,0), width=4, height=2)\n}\n")

@@ -15,7 +15,7 @@ from hypothesis import example, given, settings, strategies as st
 from aidl_lang.geometry.shapes.curves import Circle, Line, Loop, Spline, reverse, simplify
 from aidl_lang.geometry.shapes.spline import (SplineError, bez_at, bez_box, bez_pieces, interpolate,
                                        split)
-from aidl_lang.output.part.exact import Provenance
+from aidl_lang.output.part.edges.exact import Provenance
 
 GUITAR = [(0, -60), (38, -52), (44, -20), (26, 2), (32, 30), (18, 52), (0, 56), (-18, 52),
           (-32, 30), (-26, 2), (-44, -20), (-38, -52)]

@@ -315,7 +315,7 @@ solid plate {
 }
 """)
     assert c.ok and not c.sink.items, [d.message for d in c.sink.items]
-    from aidl_lang.solver.freedom import degrees_of_freedom
+    from aidl_lang.solver.diagnosis.freedom import degrees_of_freedom
     dofs = degrees_of_freedom(c.compiled.solve.solver, floating=False)
     assert all(d.dof == 0 for d in dofs if d.structure.path.startswith("plate.bolts")), \
         [(d.structure.path, d.dof) for d in dofs]

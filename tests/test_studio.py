@@ -272,7 +272,7 @@ def test_the_operators_budget_bounds_every_compile(tmp_path):
 def test_a_worker_marked_retiring_answers_its_next_request_from_a_fresh_process():
     """A compile worker whose memory grew past compiler.RETIRE_RSS says so with its answer;
     the server marks it, and its next request starts a new process (the memory goes back)."""
-    from aidl_lang import workers as W
+    from aidl_lang.host import workers as W
     from aidl_lang.studio import compiler
     w = W.Worker(compiler.handler, (1.0,))
     try:

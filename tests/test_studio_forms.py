@@ -111,7 +111,7 @@ def test_a_form_draws_what_its_example_draws(name, tmp_path):
     """A form (aidl_lang/studio/forms/) is its examples/generators file with params: at its
     defaults, the same parts of the same outlines."""
     from aidl_lang import api
-    from aidl_lang.sources import EXAMPLES
+    from aidl_lang.library.sources import EXAMPLES
     e = gallery.entry(f"generator/{name}")
     assert e.source == (gallery.FORMS / f"{name}.aidl").read_text()
     mine = api.compile(source=e.source, path=str(tmp_path / "main.aidl"))

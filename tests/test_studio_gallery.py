@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 
 from aidl_lang import api
-from aidl_lang.reference import stdlib_templates
+from aidl_lang.library.reference import stdlib_templates
 from aidl_lang.studio import gallery as g
 from aidl_lang.studio.wording import page_program
 

@@ -1,4 +1,4 @@
-"""`aidl check --sweep` (aidl_lang/sweep.py, issue 84): the design compiled across its
+"""`aidl check --sweep` (aidl_lang/params/sweep.py, issue 84): the design compiled across its
 params' declared ranges through the real parser, solver and Manifold; a hole that leaves its
 plate past a value inside the range is found, bisected and located at the `param` line; a
 design clean across its ranges has no finding; the budget bound counts the points skipped;
@@ -12,7 +12,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 import aidl_lang
-from aidl_lang.sweep import sweep
+from aidl_lang.params.sweep import sweep
 from conftest import ROOT
 
 # the hole (radius 3) sits at x = offset on a plate 50 mm wide (edges at +-25): past
@@ -384,5 +384,5 @@ def test_set_and_mcp_set_params_refuse_a_value_with_a_comment(tmp_path):
     assert e.value.code == "bad_argument" and "holds a comment" in str(e.value)
     assert f.read_text() == src
     # a `#` inside a string value is text, not a comment
-    from aidl_lang.set_values import comment_at
+    from aidl_lang.params.set_values import comment_at
     assert comment_at('"no #1"') == -1 and comment_at('"a" # b') == 4

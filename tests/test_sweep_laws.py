@@ -1,4 +1,4 @@
-"""`aidl check --sweep` (aidl_lang/sweep.py, issue 92): one answer on any machine and bounds
+"""`aidl check --sweep` (aidl_lang/params/sweep.py, issue 92): one answer on any machine and bounds
 within the stated tolerance, over generated designs with a known breaking value, through
 the real parser, solver and Manifold.
 
@@ -19,7 +19,7 @@ import sys
 from hypothesis import given, settings, strategies as st
 
 from aidl_lang.serve.params import _nice
-from aidl_lang.sweep import TOLERANCE, sweep
+from aidl_lang.params.sweep import TOLERANCE, sweep
 
 ROW = """param pitch = {p:.3f} mm, min = {lo:.3f} mm, max = {hi:.3f} mm
 

@@ -9,7 +9,7 @@ import sys
 
 import pytest
 
-from aidl_lang.sweep import sweep
+from aidl_lang.params.sweep import sweep
 from conftest import ROOT
 
 from benchmarks.checks.sweep_programs import verify

@@ -14,7 +14,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from conftest import EXAMPLES, ROOT
-from aidl_lang.diagnostics import DiagnosticSink
+from aidl_lang.base.diagnostics import DiagnosticSink
 from aidl_lang.parser import parse
 from benchmarks.compile.syntax_errors import bracket_pairs as _pairs
 

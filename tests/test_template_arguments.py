@@ -14,7 +14,7 @@ import pytest
 
 import aidl_lang
 from aidl_lang import ast as A
-from aidl_lang.diagnostics import STDLIB, DiagnosticSink
+from aidl_lang.base.diagnostics import STDLIB, DiagnosticSink
 from aidl_lang.interpreter.arguments import _plan, default_kind
 from aidl_lang.interpreter.common import _definition_lines
 from aidl_lang.parser import parse

@@ -15,7 +15,7 @@ from lsprotocol import types as T
 from pytest_lsp import LanguageClient
 
 import aidl_lang
-from aidl_lang.diagnostics import STDLIB
+from aidl_lang.base.diagnostics import STDLIB
 from aidl_lang.mcp import tools as M
 from test_lsp import _open, client  # noqa: F401 - the language server over stdio (pytest-lsp)
 from lsp_published import published

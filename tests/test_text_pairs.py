@@ -1,4 +1,4 @@
-"""Laws of W0513's array passes (aidl_lang/output/checks/text.py): the pairs of texts and
+"""Laws of W0513's array passes (aidl_lang/output/checks/marks/text.py): the pairs of texts and
 marks measured one by one are found for all pairs at once, and the passes must find every
 pair that the one-by-one measures would (the one-by-one code then decides as before)."""
 import math
@@ -6,10 +6,10 @@ import math
 import numpy as np
 from hypothesis import given, settings, strategies as st
 
-from aidl_lang.output.checks.engravings import _seg_gap
-from aidl_lang.output.checks.text import (_Segments, _inside_by_pair, _length_inside,
+from aidl_lang.output.checks.marks.engravings import _seg_gap
+from aidl_lang.output.checks.marks.text import (_Segments, _inside_by_pair, _length_inside,
                                           _near_pairs)
-from aidl_lang.output.part.nearby import box_pairs_between
+from aidl_lang.output.part.measure.nearby import box_pairs_between
 
 coord = st.floats(-20, 20, allow_nan=False, width=32)
 segment = st.tuples(coord, coord, coord, coord)

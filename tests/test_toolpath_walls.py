@@ -1,7 +1,7 @@
 """What the cutter leaves beside a through-cut (issue 91: "a router eats a wall without a
 word"): a bridge, rim or web that a router's bit (or a laser's kerf) leaves thinner than the
 minimum wall is a located W0507 naming the width left and where
-(aidl_lang/output/checks/toolpath_walls.py).  The widths are checked against the G-code
+(aidl_lang/output/checks/material/toolpath_walls.py).  The widths are checked against the G-code
 itself, replayed by test_gcode's independent reader (``gcodeparser``) and measured with
 shapely; a law over generated slit-to-edge distances (and arc slits in a disc) holds
 "warned iff the width left < the minimum wall"; the flex box (the only example with
@@ -25,7 +25,7 @@ from test_machine_safety import _pieces_after_the_bit, _pts, _render_cli, _slit_
 
 from aidl_lang.geometry.shapes.curves import Circle, Line, Loop  # noqa: E402
 from aidl_lang.output import build, for_cutting  # noqa: E402
-from aidl_lang.output.checks.toolpath_walls import eaten_walls  # noqa: E402
+from aidl_lang.output.checks.material.toolpath_walls import eaten_walls  # noqa: E402
 from aidl_lang.output.part.part import Output, PartOutline, Stroke  # noqa: E402
 from aidl_lang.pipeline import compile_source  # noqa: E402
 

@@ -34,7 +34,7 @@ import aidl_lang
 from aidl_lang.api import exact_bbox
 from aidl_lang.geometry.relations.bbox import numeric_box
 from aidl_lang.geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Spline
-from aidl_lang.output.part.booleans import Renderer
+from aidl_lang.output.part.build.booleans import Renderer
 from aidl_lang.registry import ENTRIES
 
 REL = 1e-9                 # symmetric difference / area

@@ -28,7 +28,7 @@ import pytest
 import tree_sitter
 
 from aidl_lang import ast as A
-from aidl_lang.diagnostics import DiagnosticSink
+from aidl_lang.base.diagnostics import DiagnosticSink
 from aidl_lang.parser import parse
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -586,7 +586,7 @@ def _statements_by_offset(node) -> list:
 def test_a_lone_cr_ends_a_line_and_a_comment_as_lf_does(parser, src):
     """A line break is CR LF, a lone CR or LF (issue 83): the scanner reads the text as it
     reads its LF version (same bytes, so the same offsets), a `#` comment ending at the CR."""
-    from aidl_lang.diagnostics import as_lf
+    from aidl_lang.base.diagnostics import as_lf
     tree, ref = parser.parse(src.encode()), parser.parse(as_lf(src).encode())
     assert not tree.root_node.has_error and not ref.root_node.has_error
     got = _statements_by_offset(tree.root_node)

@@ -2,12 +2,12 @@
 scan line) costs about the distinct heights of the vertices times the edges crossing each
 scan line, so 4,000 disjoint circles of different radii on one row along x took 45 s of CPU
 in one uninterruptible union (the per-vertex estimate said 0.6 s) and then an unlocated
-E0304.  Now the union's scan-line work is estimated (output/part/scanwork.py): a row along x
+E0304.  Now the union's scan-line work is estimated (output/part/build/scanwork.py): a row along x
 is united along x (an exact quarter turn and back), and a union sure to end past the
 deadline is refused before it starts, at the structure being united."""
 from __future__ import annotations
 
-from aidl_lang.limits import now as budget_clock      # the budget's clock: CPU seconds
+from aidl_lang.base.limits import now as budget_clock      # the budget's clock: CPU seconds
 
 import math
 import resource
@@ -18,8 +18,8 @@ import manifold3d as mf
 import numpy as np
 import pytest
 
-from aidl_lang.limits import Deadline, OutOfBudget
-from aidl_lang.output.part import scanwork
+from aidl_lang.base.limits import Deadline, OutOfBudget
+from aidl_lang.output.part.build import scanwork
 from aidl_lang.pipeline import compile_source
 from cpu_clock import AIDL_CPU
 
@@ -142,7 +142,7 @@ def test_the_estimate_refuses_a_union_that_would_take_too_long(cpu_clock):
     assert scanwork.union_seconds(scanwork.turned(row), left=1.0) < 0.1
     assert scanwork.union_seconds(row, left=1000.0) == 0.0
     # through the renderer: refused before it starts, at the structure being united
-    from aidl_lang.output.part.booleans import Renderer
+    from aidl_lang.output.part.build.booleans import Renderer
     import time
     c = compile_source(ROW.format(x="i*3", y="0", n=10), "r.aidl")
     ren = Renderer(c.model, Deadline(budget_clock() + 1.0))    # CPU seconds: cpu_clock
@@ -181,7 +181,7 @@ def test_a_row_united_along_x_writes_the_same_circles(tmp_path, monkeypatch):
     """Through the pipeline: 600 circles on a row (united along x) give the same part as
     united along y (turning off), vertex for vertex, and the same exact circles in the DXF
     (re-read by ezdxf, as sets: the order of the loops may differ)."""
-    from aidl_lang.output.part import booleans
+    from aidl_lang.output.part.build import booleans
     src = ROW.format(x="i*3", y="0", n=600)
     turns = []
     real = booleans.plan
@@ -258,7 +258,7 @@ def test_a_union_that_ends_past_the_deadline_is_reported_at_its_structure():
     """After the last union of a structure the deadline is looked at again, at that
     structure: a union that overran is an E0304 "in the booleans of `a`", not the next
     stage's."""
-    from aidl_lang.output.part.booleans import Renderer
+    from aidl_lang.output.part.build.booleans import Renderer
     c = compile_source(ROW.format(x="i*3", y="0", n=40), "r.aidl")
     d = _Recorder()
     Renderer(c.model, d).run()

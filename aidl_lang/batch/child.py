@@ -190,7 +190,7 @@ def main(argv: list[str]) -> int:
     from . import row as rows
     from .. import pipeline  # noqa: F401
     from ..output import build, encode  # noqa: F401
-    from ..solver import diagnose, freedom, redundancy, sliding  # noqa: F401
+    from ..solver.diagnosis import diagnose, freedom, redundancy, sliding  # noqa: F401
     _warm_up(rows)
     tx.send("ready")
     while True:
@@ -205,7 +205,7 @@ def main(argv: list[str]) -> int:
         try:
             row = rows.run_one(task, cfg)
         except Exception as e:              # a bug in aidl: this row says so, the batch goes on
-            from ..limits import is_out_of_memory
+            from ..base.limits import is_out_of_memory
             oom = is_out_of_memory(e)
             if not oom:
                 row = blank_row(task, "crashed", f"internal error: {type(e).__name__}: {e}")

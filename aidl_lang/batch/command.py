@@ -16,7 +16,7 @@ import time
 from collections import Counter
 from pathlib import Path
 
-from ..limits import DEFAULT_BUDGET, min_wall_argument, wall_limit
+from ..base.limits import DEFAULT_BUDGET, min_wall_argument, wall_limit
 from .row import TIMINGS
 
 

@@ -8,8 +8,8 @@ import os
 import re
 from pathlib import Path
 
-from ..files import FileRefused, read_file
-from ..sources import MAX_IMPORT_BYTES, SourceRefused, decode_program
+from ..host.files import FileRefused, read_file
+from ..library.sources import MAX_IMPORT_BYTES, SourceRefused, decode_program
 from .row import options_key, sha256
 
 

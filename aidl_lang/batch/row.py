@@ -56,7 +56,7 @@ def run_one(task: dict, cfg: dict) -> dict:
     """The row of one task: ``task`` has ``id``, ``path`` (or None), ``source``, ``sha256``,
     ``options``, ``overrides``, ``budget`` (a factor) and ``stem`` (the rendered files' name);
     ``cfg`` has ``render`` (suffixes such as ``.svg``), ``out_dir``, ``min_wall``."""
-    from ..limits import DEFAULT_BUDGET
+    from ..base.limits import DEFAULT_BUDGET
     from ..pipeline import compile_source
     if task.get("read_error"):               # the parent could not read the file: E0004
         return blank_row(task, "error", errors=[{"code": "E0004", "line": None, "column": None,
@@ -70,7 +70,7 @@ def run_one(task: dict, cfg: dict) -> dict:
                     warnings=[_diag(d) for d in res.sink.items if d.severity == "warning"],
                     solve_s=res.solve_seconds if res.solve is not None else None)
     if res.ok and res.solve is not None:
-        from ..solver.freedom import degrees_of_freedom
+        from ..solver.diagnosis.freedom import degrees_of_freedom
         # in what the compile left of the program's budget, as `aidl check` counts (issue 48)
         end = res.deadline.at if res.deadline is not None else None
         dofs = degrees_of_freedom(res.solve.solver, floating=False, deadline=end)

@@ -22,7 +22,7 @@ import os
 from pathlib import Path
 
 from ..output.writers.write import write_atomic
-from ..files import NOFOLLOW, NONBLOCK, FileRefused, open_append
+from ..host.files import NOFOLLOW, NONBLOCK, FileRefused, open_append
 from .row import FIELDS
 
 
@@ -55,7 +55,7 @@ def need_arrow() -> None:
 def read_jsonl(path: Path, follow_symlinks: bool = True) -> list[dict]:
     """The rows of a JSONL file; a line that is not a row (one cut short by a crash) is
     skipped.  ``follow_symlinks=False``: a link is refused
-    (:class:`~aidl_lang.files.FileRefused`), as a batch reads its own journal."""
+    (:class:`~aidl_lang.host.files.FileRefused`), as a batch reads its own journal."""
     rows = []
     try:
         flags = os.O_RDONLY | (0 if follow_symlinks else NOFOLLOW)

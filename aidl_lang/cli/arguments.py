@@ -6,7 +6,7 @@ In: the subcommand given (or None); out: :func:`_parser`, the ``ArgumentParser``
 the given subcommand's parser is built (:class:`_Unused` stands in for the others: cold
 start), and every message reads the same as with all of them.  Usage errors exit 2 with a
 short message (:class:`_Parser`); the argument types (:func:`_port`, :func:`_budget_factor`,
-:func:`_memory_size`, :func:`~aidl_lang.limits.min_wall_argument`) word a bad value as one.  ``prompt``, ``generate`` and ``eval`` add
+:func:`_memory_size`, :func:`~aidl_lang.base.limits.min_wall_argument`) word a bad value as one.  ``prompt``, ``generate`` and ``eval`` add
 theirs from :mod:`aidl_lang.cli.llm`, ``batch`` from :mod:`aidl_lang.batch.command`.
 """
 from __future__ import annotations
@@ -15,7 +15,7 @@ import argparse
 import os
 import sys
 
-from ..limits import min_wall_argument
+from ..base.limits import min_wall_argument
 
 
 _COLUMNS: int | None = None
@@ -378,7 +378,7 @@ def _budget_arg(p) -> None:
 
 
 def _memory_size(text: str):
-    from ..memory import parse_size
+    from ..base.memory import parse_size
     try:
         size = parse_size(text)
     except ValueError as e:

@@ -21,15 +21,15 @@ import os
 import sys
 from pathlib import Path
 
-from ..diagnostics import DiagnosticSink, render_text
-from ..limits import now
+from ..base.diagnostics import DiagnosticSink, render_text
+from ..base.limits import now
 from .arguments import SUBCOMMANDS, _parser
 
 
 def _cap_memory(args) -> None:
     """``aidl check/render/parts/import``: cap the address space (``--memory``; by default
-    :func:`aidl_lang.memory.default_cap`), so running out is a located E0304."""
-    from ..memory import default_cap, limit_memory
+    :func:`aidl_lang.base.memory.default_cap`), so running out is a located E0304."""
+    from ..base.memory import default_cap, limit_memory
     size = args.memory
     if size is None:
         size = default_cap()
@@ -37,7 +37,7 @@ def _cap_memory(args) -> None:
 
 
 def _budget(args):
-    from ..limits import DEFAULT_BUDGET
+    from ..base.limits import DEFAULT_BUDGET
     return DEFAULT_BUDGET.scaled(args.budget)
 
 
@@ -80,7 +80,7 @@ def _emit(sink: DiagnosticSink, as_json: bool, ok: bool, extra: dict | None = No
 
 
 def _read(path: str, as_json: bool) -> str | None:
-    from ..sources import SourceRefused, read_program
+    from ..library.sources import SourceRefused, read_program
     try:
         return read_program(path)          # a regular file, size-limited, never blocking
     except SourceRefused as e:
@@ -131,7 +131,7 @@ def cmd_check(args) -> int:
                           "unknowns": res.solve.n_unknowns, "equations": res.solve.n_equations,
                           "settled": res.solve.n_settled,
                           "max_residual": res.solve.max_residual}
-        from ..solver.freedom import degrees_of_freedom, freedom_text
+        from ..solver.diagnosis.freedom import degrees_of_freedom, freedom_text
         if args.dof and res.ok:
             dofs = degrees_of_freedom(res.solve.solver, deadline=end)
             extra["dof"] = [{"structure": d.structure.path, "unknowns": d.unknowns,
@@ -189,7 +189,7 @@ def cmd_check(args) -> int:
         for v in values or ():
             print(v.text())
         if "describe" in extra:
-            from ..output.checks.describe import describe_text
+            from ..output.checks.reports.describe import describe_text
             print(describe_text(extra["describe"]))
         if values is not None and not values:
             print(f"aidl: no value matches {' '.join(args.values)}", file=sys.stderr)
@@ -438,7 +438,7 @@ def cmd_render(args) -> int:
         # is offset whole, else an edge two pieces share is cut once along its line
         cut = for_cutting(output, kerf, res.deadline, apart=bool(args.layout))
         from ..output.fabrication.layout import through_cut_note
-        from ..output.part.shared import shared_note
+        from ..output.part.edges.shared import shared_note
         kept = through_cut_note(output, cut)       # --kerf leaves the through-cuts
         if kept:
             notes.append(kept)
@@ -466,7 +466,7 @@ def cmd_render(args) -> int:
                          "and .stl show them bent")
         routed = machine is not None and machine.kind == "router" and any(
             j[2] in (".gcode", ".nc") for j in jobs)
-        from ..output.checks.toolpath_walls import machine_warnings
+        from ..output.checks.material.toolpath_walls import machine_warnings
         if routed:              # W0510 (cut apart) and W0507 (too little left), located
             machine_warnings(res.drawing, cut, output, machine.tool_diameter, True, res.sink,
                              args.min_wall, bool(args.layout))
@@ -518,7 +518,7 @@ def _render_settings(args, outs):
         if thickness is None:
             return _usage(f"--thickness expects a positive length up to 1 km, such as 3mm, got "
                           f"`{args.thickness}`")
-    from ..limits import MAX_EXTENT
+    from ..base.limits import MAX_EXTENT
     if args.margin is not None and not 0 <= args.margin <= MAX_EXTENT:
         return _usage(f"--margin expects a length in mm from 0 to 1e6, got `{args.margin:g}`")
     if args.page is not None:
@@ -579,7 +579,7 @@ def _lay_out(args, res, output, cut, sheet, gap, rotate, notes: list):
     if args.nest_time and res.deadline is not None:
         # the nesting's own time limit comes on top of the compile's budget (the CPU
         # seconds of its threads)
-        from ..limits import Deadline
+        from ..base.limits import Deadline
         from ..output.fabrication.layout import nest_cpu_seconds
         res.deadline = Deadline(res.deadline.at + nest_cpu_seconds(args.nest_time),
                                 res.deadline.budget)
@@ -630,7 +630,7 @@ def _report_written(args, items, outs, notes: list) -> None:
 def cmd_parts(args) -> int:
     from ..pipeline import compile_source
     from ..output import build
-    from ..output.checks.inventory import parts_list, parts_text
+    from ..output.checks.reports.inventory import parts_list, parts_text
     src = _read(args.file, args.json)
     if src is None:
         return 1
@@ -651,7 +651,7 @@ def cmd_parts(args) -> int:
 
 
 def cmd_explain(args) -> int:
-    from ..codes import CODES
+    from ..base.codes import CODES
     code = args.code.upper()
     if code not in CODES:
         print(f"aidl: unknown code `{args.code}`; known codes: {', '.join(sorted(CODES))}",
@@ -663,7 +663,7 @@ def cmd_explain(args) -> int:
 
 
 def cmd_docs(args) -> int:
-    from ..reference import index_text, lookup_text
+    from ..library.reference import index_text, lookup_text
     if args.name is None:
         sys.stdout.write(index_text())
         return 0
@@ -680,8 +680,8 @@ def cmd_import(args) -> int:
     stderr, nothing written)."""
     from ..drawing.infer import import_drawing
     from ..drawing.model import DrawingError
-    from ..files import FileRefused, read_file
-    from ..sources import MAX_DRAWING_BYTES
+    from ..host.files import FileRefused, read_file
+    from ..library.sources import MAX_DRAWING_BYTES
     src = args.file
     try:
         data = read_file(src, MAX_DRAWING_BYTES)
@@ -874,7 +874,7 @@ def main(argv: list[str] | None = None, cap_memory: bool = False) -> int:
         print("aidl: error[E0302]: the program is nested too deeply to compile", file=sys.stderr)
         return 1
     except (MemoryError, SystemError) as e:
-        from ..limits import is_out_of_memory
+        from ..base.limits import is_out_of_memory
         if not is_out_of_memory(e):
             return _internal(e)
         oom = True                 # said below, once the failed frames are freed
@@ -914,7 +914,7 @@ def _out_of_memory(args) -> int:
     search, the exact outlines, a writer, an import): one located ``E0304``, exit 1, nothing
     written."""
     from ..pipeline import out_of_memory_sink
-    from ..limits import memory_text
+    from ..base.limits import memory_text
     if args.cmd == "import":
         print(f"{args.file}: error[E0304]: importing `{args.file}` ran out of memory: "
               f"{memory_text()}\n  = help: import a smaller drawing, or one layer at a time "

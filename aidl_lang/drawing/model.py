@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 
 from ..geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from ..geometry.shapes.spline import CubicSpline
-from ..limits import MAX_EXTENT
+from ..base.limits import MAX_EXTENT
 
 JOIN_TOL = 1e-6          # mm: pieces whose ends are this close chain into one
 MAX_ENTITIES = 120_000   # entities (DXF) or shapes (SVG) read from one drawing
@@ -230,7 +230,7 @@ def _plural(n: int, word: str) -> str:
 @dataclass
 class _Options:
     """What :func:`read_drawing` asks of the readers beyond the selection: the closing
-    tolerance (mm), the wall-time :class:`~aidl_lang.limits.Deadline` (or None), the role
+    tolerance (mm), the wall-time :class:`~aidl_lang.base.limits.Deadline` (or None), the role
     filter ``keep(layer, rgb, aci)`` (or None: everything), the shape budget, and whether a
     loop that crosses itself is split at its crossings (``split_crossings``: on a cut role,
     where a laser cuts every line) instead of kept as a stroke."""

@@ -25,7 +25,7 @@ import re
 from dataclasses import dataclass
 
 from .. import ast as A
-from ..diagnostics import LINE_BREAK, DiagnosticSink
+from ..base.diagnostics import LINE_BREAK, DiagnosticSink
 from ..parser import mask_comments, parse
 from ..parsing.lexing import _lex
 
@@ -120,7 +120,7 @@ def _space(prev: _Item, cur: _Item, prev_kind: str | None, in_parens: bool) -> s
 
 def newline_of(text: str) -> str:
     """The line ending ``aidl fmt`` writes for ``text``: its first line break's (CR LF, CR or
-    LF: :data:`aidl_lang.diagnostics.LINE_BREAK`), LF when it has none."""
+    LF: :data:`aidl_lang.base.diagnostics.LINE_BREAK`), LF when it has none."""
     m = LINE_BREAK.search(text)
     return m.group() if m else "\n"
 
@@ -341,9 +341,9 @@ def main(files: list[str], check: bool = False) -> int:
     import sys
     from pathlib import Path
 
-    from ..diagnostics import render_text
+    from ..base.diagnostics import render_text
     from ..output.writers.write import WriteError, write_atomic
-    from ..sources import SourceRefused, read_program
+    from ..library.sources import SourceRefused, read_program
 
     status = 0
     for f in files:

@@ -17,7 +17,7 @@ may be, so that a wrong call never floods the caller with the template's insides
 from __future__ import annotations
 
 from .. import ast as A
-from ..diagnostics import EvalError, Label, shown_path
+from ..base.diagnostics import EvalError, Label, shown_path
 from ..geometry.core.values import ANG, LEN, NUM, Q, dim_name, type_name
 from ..registry import FUNCTIONS, UNITS_LENGTH
 from .common import _STMT_ERRORS, POISON, Scope, _a, _const, _definition_lines, _src, _value

@@ -7,16 +7,17 @@ from __future__ import annotations
 import math
 
 from .. import ast as A
-from ..diagnostics import EvalError, did_you_mean, shown_path
+from ..base.diagnostics import EvalError, did_you_mean, shown_path
 from ..geometry.relations.constraints import BUILDERS, ConstraintError
 from ..geometry.core.expr import Lin, _lin, _new, as_const, func, lift, mul, var
 from ..geometry.relations.members import member as geom_member
 from ..geometry.core.model import Constraint, Equation, Point, Scalar
-from ..geometry.shapes.primitives import PrimitiveError, build
+from ..geometry.shapes.constructors import build
+from ..geometry.shapes.primitives import PrimitiveError
 from ..geometry.core.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
                                Template, UnitError, angle_scale, dim_name, mul_dim, owners_in, owners_of,
                                rad_power, radians_of, type_name)
-from ..limits import MAX_EXTENT
+from ..base.limits import MAX_EXTENT
 from ..registry import (ENTRIES, FUNCTIONS, accepted_args, bind_variant, canonical, canonical_args,
                         lookup)
 from .common import (DEG, _a, _fmt_num, show)
@@ -111,7 +112,7 @@ class Calls:
             ok = accepted_args(entry)
             bad_kw = next((kw for kw in node.kwargs if kw.name not in ok), None)
             if bad_kw is not None:
-                from ..reference import entry_units_hint
+                from ..library.reference import entry_units_hint
                 from ..registry import ARG_NOTES, near_args
                 note = ARG_NOTES.get((entry.name, bad_kw.name))
                 raise EvalError("E0105", f"`{nm}` has no argument `{bad_kw.name}`", bad_kw.span,
@@ -207,7 +208,7 @@ class Calls:
         cuts the solid ``part`` instead of being a part of its own.  Both are in the
         subtree of the structure the statement is written in (validity rule 2, checked by
         the caller); nothing moves in the structure tree, so every constraint keeps its
-        frames: the booleans subtract the hole from the part (output/part/booleans.py)."""
+        frames: the booleans subtract the hole from the part (output/part/build/booleans.py)."""
         h, part = conv["hole"], conv["part"]
         hspan, pspan = spans.get("hole", node.span), spans.get("part", node.span)
         if not isinstance(h, StructRef) or h.struct.kind != "hole":
@@ -290,7 +291,7 @@ class Calls:
         """``Bend(part, at=x, angle=a, radius=r)``: a bend of a solid part in the assembled
         product (mm and radians, known before solving), kept on its structure as ``bends =
         [(at, angle, radius, span)]``; the flat sheet is not changed
-        (:func:`~aidl_lang.output.part.placement.bend_points`)."""
+        (:func:`~aidl_lang.output.part.build.placement.bend_points`)."""
         target = self._part_to_place(conv, node, spans, "Bend", "bends")
         if target.kind != "solid":
             raise EvalError("E0108", f"`Bend` bends a solid part, not {target.kind} "
@@ -439,7 +440,7 @@ class Calls:
         compile per (real path, selection); its notes are warnings at the call, and an open
         or self-crossing chain where an outline is needed is E0131 (with the gap and where)."""
         from ..drawing import DrawingError, read_drawing
-        from ..sources import ImportRefused, load_drawing
+        from ..library.sources import ImportRefused, load_drawing
         at = spans.get("file", node.span)
 
         def sel(v, what):
@@ -931,7 +932,7 @@ class Calls:
     def _check_magnitudes(self, v, span, arg: str) -> None:
         """Arguments of primitives, constraints and operations: every number known before
         solving must be finite (E0112), and lengths and coordinates within the model extent
-        :data:`~aidl_lang.limits.MAX_EXTENT` (E0305)."""
+        :data:`~aidl_lang.base.limits.MAX_EXTENT` (E0305)."""
         t = type(v)
         if t is Q:                     # the common case: one number
             e = v.expr

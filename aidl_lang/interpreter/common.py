@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 
 from .. import ast as A
-from ..diagnostics import DiagnosticSink, EvalError, Span
+from ..base.diagnostics import DiagnosticSink, EvalError, Span
 from ..geometry.core.expr import Lin
 from ..geometry.core.model import Structure
 from ..registry import (FUNCTIONS, lookup)
@@ -24,7 +24,7 @@ _STMT_ERRORS = (_Silent, EvalError, ValueError, ZeroDivisionError, OverflowError
 
 
 class BudgetExhausted(Exception):
-    """Raised when the compile's evaluation budget (:class:`aidl_lang.limits.Budget`) runs
+    """Raised when the compile's evaluation budget (:class:`aidl_lang.base.limits.Budget`) runs
     out; it unwinds the whole interpretation (no statement catches it) and
     :meth:`aidl_lang.interp.Interpreter.run` turns it into one ``E0304``."""
 

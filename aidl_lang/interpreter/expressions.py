@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 
 from .. import ast as A
-from ..diagnostics import EvalError, did_you_mean
+from ..base.diagnostics import EvalError, did_you_mean
 from ..geometry.relations.bbox import BBTerm
 from ..geometry.core.expr import Lin, _lin, _new, as_const, func, lift
 from ..geometry.relations.members import member as geom_member, member_names
@@ -427,7 +427,7 @@ class Expressions:
         meant.  Once per ``//``.  The fix replaces the operator with ``/``; the hint also says
         how to write a comment when the right operand is a single word ending the line (the
         ``// comment`` reading the rule did not take)."""
-        from ..diagnostics import Fix, Label, Span
+        from ..base.diagnostics import Fix, Label, Span
         key = ("W0106", e.span)
         if key in self.reported:
             return

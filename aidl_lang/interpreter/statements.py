@@ -8,15 +8,15 @@ from __future__ import annotations
 from pathlib import Path
 
 from .. import ast as A
-from ..diagnostics import EvalError, Span, did_you_mean
+from ..base.diagnostics import EvalError, Span, did_you_mean
 from ..geometry.relations.bbox import contains_bbox
 from ..geometry.core.model import Constraint, Equation, Model, Structure
 from ..geometry.relations.members import member as geom_member
 from ..geometry.core.expr import Lin, _new
 from ..geometry.core.values import (ANG, LEN, NUM, dim_name, PV, GeomRef, Namespace, Q, StructRef, Template, UnitError, angle_scale, owners_of, type_name, unify_add)
-from ..limits import MAX_TEMPLATE_DEPTH, MIN_WALL_LEAST, min_wall_problem
+from ..base.limits import MAX_TEMPLATE_DEPTH, MIN_WALL_LEAST, min_wall_problem
 from ..registry import CONSTANTS, UNITS_LENGTH, template_param
-from ..sources import ImportRefused, read_import, resolve_import
+from ..library.sources import ImportRefused, read_import, resolve_import
 from .arguments import check_kinds, kind_error, precheck_asserts
 from .common import (DEG, POISON, FileCtx, Scope, _STMT_ERRORS, _Silent, _a, _common_ancestor, _const,
                      _definition_lines, _fmt_num, _src, _is_geometry_stmt, _is_plain_const, _value)
@@ -659,7 +659,7 @@ class Statements:
         for kw in call.kwargs:
             param = template_param(kw.name, params)
             if param is None:
-                from ..reference import template_params_hint
+                from ..library.reference import template_params_hint
                 sugg = did_you_mean(kw.name, params)
                 raise EvalError("E0105", f"`{d.name}` has no parameter `{kw.name}`", kw.span,
                                 hint=(f"did you mean `{sugg[0]}`? " if sugg else "")

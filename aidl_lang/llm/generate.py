@@ -25,7 +25,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Callable
 
-from ..diagnostics import render_text
+from ..base.diagnostics import render_text
 from .client import ChatClient, LLMError
 from ..pipeline import compile_source
 from .prompt import system_prompt

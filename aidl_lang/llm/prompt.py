@@ -4,7 +4,7 @@ Built from the registry (every primitive, constraint, structural relation, opera
 function with its signature and one-line doc; of the synonyms only those that swap their
 arguments, since the others are accepted silently), from the standard library's doc comments
 (every template with its signature and the first sentence of the comment above its ``def``:
-:func:`aidl_lang.reference.stdlib_lines`) and from a few bundled example programs, so it never
+:func:`aidl_lang.library.reference.stdlib_lines`) and from a few bundled example programs, so it never
 drifts from the implementation.  It is kept compact because a model reads it on every
 call: :func:`word_count` measures it (about 0.75 words per token for English and code).
 """
@@ -12,10 +12,10 @@ from __future__ import annotations
 
 import re
 
-from ..reference import stdlib_lines
+from ..library.reference import stdlib_lines
 from ..registry import (BBOX_MEMBERS, ENTRIES, FUNCTIONS, SWAPPED, SYNONYMS, UNITS_ANGLE,
                         UNITS_LENGTH)
-from ..sources import EXAMPLES as EXAMPLES_DIR    # inside the package: shipped in the wheel
+from ..library.sources import EXAMPLES as EXAMPLES_DIR    # inside the package: shipped in the wheel
 # short and varied, most useful first: holes, loops and bounding-box equations; templates,
 # fillets and patterns; hierarchy + stacking relations; drawings, text and params.
 # `aidl prompt` gives the first DEFAULT_EXAMPLES; `--examples N` the first N.

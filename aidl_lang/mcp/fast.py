@@ -3,7 +3,7 @@ for its first ``tools/list`` on a quiet machine, most of it the SDK's own import
 
 The SDK's answers to ``initialize`` (one per protocol version asked) and to ``tools/list``
 depend on nothing but this code and the SDK's: :mod:`.stdio` keeps them, as the SDK sent
-them, in the user's cache folder (:mod:`aidl_lang.cache`) under a key of the Python, SDK and
+them, in the user's cache folder (:mod:`aidl_lang.host.cache`) under a key of the Python, SDK and
 aidl versions and every aidl source file's size and time.  On the next start,
 :func:`first_answers` reads the client's first lines from fd 0 itself, one byte at a time (so
 nothing is read past them), while the SDK loads in a thread: an ``initialize`` of a known
@@ -47,7 +47,7 @@ def cache_key() -> str:
 def load() -> tuple[str, dict]:
     """``(key, answers)``: the kept answers (``{"initialize": {version: result},
     "tools/list": result}``) if they are this code's, else empty ones."""
-    from ..cache import cache_dir, read_checked
+    from ..host.cache import cache_dir, read_checked
     key = cache_key()
     d = cache_dir()
     text = read_checked(d / CACHE_NAME, key) if d is not None else None
@@ -61,7 +61,7 @@ def load() -> tuple[str, dict]:
 def keep(key: str, answers: dict) -> None:
     """Store ``answers`` for the next start (quietly nothing when the cache folder is not
     usable)."""
-    from ..cache import cache_dir, write_checked
+    from ..host.cache import cache_dir, write_checked
     d = cache_dir()
     if d is not None:
         write_checked(d / CACHE_NAME, key, json.dumps(answers, separators=(",", ":")))

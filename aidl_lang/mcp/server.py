@@ -33,10 +33,10 @@ from mcp.shared.exceptions import MCPError
 from mcp_types import INVALID_PARAMS, CallToolResult, TextContent, ToolAnnotations
 from pydantic import Field
 
-from ..limits import DEFAULT_BUDGET, MAX_ITER, MAX_TEMPLATE_DEPTH
+from ..base.limits import DEFAULT_BUDGET, MAX_ITER, MAX_TEMPLATE_DEPTH
 from ..parser import MAX_NESTING
-from ..sources import EXAMPLES as _EXAMPLES    # inside the package: shipped in the wheel
-from ..sources import MAX_DRAWING_BYTES
+from ..library.sources import EXAMPLES as _EXAMPLES    # inside the package: shipped in the wheel
+from ..library.sources import MAX_DRAWING_BYTES
 from . import compact as C
 from . import stdio
 from . import tools as T
@@ -55,7 +55,7 @@ CALL: ContextVar[Call | None] = ContextVar("aidl_mcp_call", default=None)
 OUTPUT_FORMATS = (".svg", ".dxf", ".pdf", ".png", ".stl", ".3mf", ".step", ".glb", ".gcode",
                   ".nc", ".lbrn2", ".plt", ".hpgl")
 
-# what one program may build (aidl_lang/limits.py, the parser's and the importer's limits),
+# what one program may build (aidl_lang/base/limits.py, the parser's and the importer's limits),
 # said once, in `check`'s description (the first tool: an agent reads it first)
 LIMITS = (f"Limits: {T.MAX_SOURCE:,} characters, brackets {MAX_NESTING} deep, "
           f"{MAX_ITER:,} items in one loop, templates {MAX_TEMPLATE_DEPTH} deep, "
@@ -486,7 +486,7 @@ class _Server(MCPServer):
 
     async def call_tool(self, name: str, arguments: dict, context=None):
         if name not in self.accepted:     # JSON-RPC's invalid params (the MCP spec's words)
-            from ..diagnostics import did_you_mean
+            from ..base.diagnostics import did_you_mean
             near = did_you_mean(str(name), list(self.accepted), 1)
             raise MCPError(INVALID_PARAMS, f"Unknown tool: `{name}`"
                            + (f"; did you mean `{near[0]}`?" if near else "")
@@ -714,7 +714,7 @@ def build_server(root: str, budget: float = 1.0,
 def _topic_resources(server: MCPServer) -> None:
     """Offer each topic of ``aidl docs`` as ``aidl://docs/topic/NAME`` (listing them parses the
     standard library: done on the first resources call, not before the first tools/list)."""
-    from ..reference import topics
+    from ..library.reference import topics
     for name, topic in topics().items():
         server.resource(f"aidl://docs/topic/{name}", name=f"aidl docs {name}",
                         mime_type="text/plain",
@@ -731,7 +731,7 @@ def _worded(render: Callable[[], str]) -> Callable[[], str]:
 def _resources(server: MCPServer, prompt: Callable[[], str] | None) -> None:
     """Offer the docs, the prompt (worded for the tools), the standard library and the
     examples as resources of ``server`` (see the module text)."""
-    from ..reference import index_text
+    from ..library.reference import index_text
     server.resource("aidl://docs/topics", name="aidl docs topics", mime_type="text/plain",
                     description="`aidl docs`: every topic (statements, shapes, constraints, "
                                 "relations, operations, stdlib templates)")(index_text)
@@ -761,7 +761,7 @@ def _resources(server: MCPServer, prompt: Callable[[], str] | None) -> None:
                         mime_type="application/schema+json",
                         description=f"the full JSON Schema of `{name}`'s structured content")(
             (lambda doc: lambda: json.dumps(doc, indent=1))(schema))
-    from ..sources import STDLIB
+    from ..library.sources import STDLIB
     for f in sorted(Path(STDLIB).glob("**/*.aidl")):
         rel = f.relative_to(STDLIB).as_posix()
         server.resource(f"aidl://stdlib/{rel}", name=f"std/{rel}", mime_type="text/plain",

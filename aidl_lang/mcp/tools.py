@@ -11,9 +11,9 @@ import os
 from pathlib import Path
 
 from ..api import NotCompiled, Result, compile as compile_program
-from ..diagnostics import split_lines
-from ..sources import SourceRefused, decode_program
-from ..files import FileRefused, open_beneath, open_dir_beneath, read_regular
+from ..base.diagnostics import split_lines
+from ..library.sources import SourceRefused, decode_program
+from ..host.files import FileRefused, open_beneath, open_dir_beneath, read_regular
 from .wording import for_agents, reword_diagnostics
 
 MAX_BUDGET = 4.0          # a tool call may ask for at most 4x the default evaluation budget
@@ -50,7 +50,7 @@ def check_arguments(tool: str, arguments: dict, accepted: list[str]) -> None:
     Raises :class:`Refused`."""
     unknown = [a for a in arguments if a not in accepted]
     if unknown:
-        from ..diagnostics import did_you_mean
+        from ..base.diagnostics import did_you_mean
         near = did_you_mean(unknown[0], accepted, 1)
         said = ", ".join(f"`{a}`" for a in unknown)
         raise Refused(f"unknown argument{'s' if len(unknown) > 1 else ''} {said} for `{tool}`"
@@ -192,7 +192,7 @@ class Workspace:
     def read(self, path: str) -> tuple[Path, str]:
         """``(real path, text)`` of the program file ``path``: its real path checked to be
         inside the root, then opened once from the root's folder without following any link
-        (:func:`aidl_lang.files.open_beneath`: a file or folder swapped for a link after the
+        (:func:`aidl_lang.host.files.open_beneath`: a file or folder swapped for a link after the
         check is refused, never read), a regular file of at most :data:`MAX_SOURCE` bytes of
         UTF-8 text, named ``.aidl`` (a drawing or any other file is refused, not parsed as
         AIDL).  Raises :class:`Refused`."""
@@ -232,7 +232,7 @@ def unrooted(ws: Workspace, doc, source: bool):
     the server's own paths said as an agent names them (issue 95): a file inside the root
     relative to it, the standard library's as ``std/...`` (never its install folder), and
     a program given as ``source`` (compiled as ``ROOT/untitled.aidl``) as ``<source>``."""
-    from ..sources import STDLIB
+    from ..library.sources import STDLIB
     swaps = [(f"{os.path.realpath(STDLIB)}{os.sep}", "std/"), (f"{STDLIB}{os.sep}", "std/")]
     if source:
         swaps.append((str(ws.root / "untitled.aidl"), SOURCE_NAME))
@@ -292,7 +292,7 @@ def check(ws: Workspace, source: str | None = None, path: str | None = None,
     """``{"ok", "diagnostics" (JSON, with spans and fixes; redundant constraints as W0401,
     looked for at most 1 s, as ``aidl check``), "units", "solve", "freedom", "parts"}`` (the
     last two when the program solved; ``freedom`` per structure with ``dof``; with
-    ``sweep``, ``sweep`` (:meth:`aidl_lang.sweep.SweepReport.to_json`) and its W0110 among
+    ``sweep``, ``sweep`` (:meth:`aidl_lang.params.sweep.SweepReport.to_json`) and its W0110 among
     the diagnostics)."""
     return _checked(ws, ws.compile(source, path, overrides, budget), dof, budget, sweep)
 
@@ -347,7 +347,7 @@ def values(ws: Workspace, source: str | None = None, path: str | None = None,
     if not r.ok:
         return _summary(ws, r)
     vals = r.values_matching(names or [], sizes=True)
-    from ..diagnostics import did_you_mean
+    from ..base.diagnostics import did_you_mean
     every = sorted({n for v in r.sizes() for n in _prefixes(v.name)}) if names else []
     if names and not vals:
         asked = [n for n in names if isinstance(n, str)][:3]
@@ -549,10 +549,10 @@ _SOLID_FORMATS = (".stl", ".3mf", ".step", ".stp", ".glb", ".png")
 
 def _machine_warnings(r, cut, suffix: str, prof, kerf_mm, doc: dict) -> None:
     """What the cutter does beside the through-cuts of ``cut`` (written as ``suffix``), as
-    ``aidl render`` says it (:func:`~aidl_lang.output.checks.toolpath_walls.machine_warnings`:
+    ``aidl render`` says it (:func:`~aidl_lang.output.checks.material.toolpath_walls.machine_warnings`:
     a router's G-code, W0510 and W0507; else a kerf applied, W0507), added to ``r``'s
     diagnostics and ``doc``'s."""
-    from ..output.checks.toolpath_walls import machine_warnings
+    from ..output.checks.material.toolpath_walls import machine_warnings
     from ..output.writers.gcode import GCODE_FORMATS
     before = len(r.sink.items)
     drawing = r.compiled.drawing
@@ -597,7 +597,7 @@ def docs(name: str | None = None) -> str:
     """The reference of one topic (a shape, constraint, statement or stdlib template), as
     ``aidl docs NAME`` prints it; no name: the list of topics.  Raises :class:`Refused` for an
     unknown name, with the nearest topics."""
-    from ..reference import index_text, lookup_text
+    from ..library.reference import index_text, lookup_text
     if not (name or "").strip():
         return for_agents(index_text())
     text, found = lookup_text(name)
@@ -616,7 +616,7 @@ def describe(ws: Workspace, source: str | None = None, path: str | None = None,
     described = _after_compile(r, lambda: r.description)
     doc = _summary(ws, r)
     if r.ok:
-        from ..output.checks.describe import describe_text
+        from ..output.checks.reports.describe import describe_text
         doc["describe"] = described
         doc["text"] = describe_text(described)
     return doc
@@ -626,11 +626,11 @@ def write_inside(ws: Workspace, target: Path, data: bytes, program: str | None,
                   shown: str) -> None:
     """Write ``data`` to ``target`` (a path below the root with no link in it, checked when
     the call came in: :meth:`Workspace.output`) through the folder opened from the root
-    without following links (:func:`aidl_lang.files.open_dir_beneath`, ``O_NOFOLLOW`` at
+    without following links (:func:`aidl_lang.host.files.open_dir_beneath`, ``O_NOFOLLOW`` at
     each step), so a folder swapped for a link while the program compiled is refused, never
     written through, and a link at the file itself is refused
     (:func:`aidl_lang.output.writers.write.write_in_dir`); never over the program file ``program``.
-    Raises ``OSError`` (:class:`aidl_lang.files.FileRefused`)."""
+    Raises ``OSError`` (:class:`aidl_lang.host.files.FileRefused`)."""
     from ..output.writers.write import write_in_dir
     rel = target.relative_to(ws.root)
     dfd = open_dir_beneath(ws.root, rel.parent, create=True)
@@ -662,8 +662,8 @@ def import_drawing(ws: Workspace, path: str, infer: bool = True, parts: bool = F
     :func:`render` does).  Raises :class:`Refused`."""
     from ..drawing.infer import import_drawing as _import
     from ..drawing.model import DrawingError
-    from ..limits import DEFAULT_BUDGET
-    from ..sources import MAX_DRAWING_BYTES
+    from ..base.limits import DEFAULT_BUDGET
+    from ..library.sources import MAX_DRAWING_BYTES
     real = ws.inside(path, must_exist=True)
     if Path(path).suffix.lower() not in (".dxf", ".svg"):
         raise Refused(f"`{path}` is not a .dxf or .svg drawing", "wrong_kind", "path")
@@ -870,7 +870,7 @@ def warm(ws: Workspace) -> dict:
 def explain(code: str) -> str:
     """``CODE: title`` and the explanation (as ``aidl explain``).  Raises :class:`Refused` for
     an unknown code, naming the known ones."""
-    from ..codes import CODES
+    from ..base.codes import CODES
     c = (code or "").strip().upper()
     if c not in CODES:
         raise Refused(f"unknown code `{code}`; known codes: {', '.join(sorted(CODES))}",

@@ -86,7 +86,7 @@ def for_agents(text: str | None) -> str | None:
 
 
 def reword_diagnostics(diagnostics) -> None:
-    """Reword each :class:`~aidl_lang.diagnostics.Diagnostic` of ``diagnostics`` (message,
+    """Reword each :class:`~aidl_lang.base.diagnostics.Diagnostic` of ``diagnostics`` (message,
     hint, labels) in place with :func:`for_agents`; its rendered text follows."""
     for d in diagnostics:
         d.reword(for_agents)

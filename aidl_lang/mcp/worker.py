@@ -5,7 +5,7 @@ cannot be stopped, a process can (issue 37; ``aidl batch`` does the same with it
 :class:`Worker` keeps one process (``multiprocessing``, spawn) with its own
 :class:`~.tools.Workspace`; a call is sent over a pipe and its answer (or its
 :class:`~.tools.Refused`) comes back.  A call that has not answered within
-:func:`aidl_lang.limits.wall_limit` of its budget (10 x its 15 s x ``budget`` of CPU time, plus
+:func:`aidl_lang.base.limits.wall_limit` of its budget (10 x its 15 s x ``budget`` of CPU time, plus
 10 s: 160 s by default) kills the process and is refused with a message saying so; the next call
 starts a fresh process.  The compile's own deadline
 normally ends it first, with a located ``E0304``: this is the last resort for what the
@@ -17,8 +17,8 @@ process is started on a worker's first call), and waits for one when all are bus
 """
 from __future__ import annotations
 
-from .. import workers as W
-from ..limits import DEFAULT_BUDGET, wall_limit
+from ..host import workers as W
+from ..base.limits import DEFAULT_BUDGET, wall_limit
 from . import tools as T
 
 POOL_SIZE = 3               # calls that may run at the same time (each in its own process)
@@ -50,7 +50,7 @@ def _handler(root: str, budget: float):
         except T.Refused as e:
             return False, T.Refused(T.unrooted(ws, str(e), given), e.code, e.argument)
         except BaseException as e:      # noqa: BLE001 - answered, never a silent worker
-            from ..limits import is_out_of_memory
+            from ..base.limits import is_out_of_memory
             oom = is_out_of_memory(e)
             if not oom:
                 return False, T.Refused(f"internal error: {type(e).__name__}: {e}",

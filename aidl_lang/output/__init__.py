@@ -18,7 +18,7 @@ of a cold ``aidl check``'s instructions, under the 5% rule's bar; docs/dev/perfo
 from __future__ import annotations
 
 from .fabrication.layout import for_cutting
-from .part.booleans import Drawing, Part, area, render_model
+from .part.build.booleans import Drawing, Part, area, render_model
 from .part.part import MissingDependency, Output, OutputError, build
 from .writers import ASSEMBLED_FORMATS, CUT_FORMATS, FORMATS, TEXT_FORMATS, Options, encode
 from .writers.svg import to_svg

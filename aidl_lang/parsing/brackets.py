@@ -4,7 +4,7 @@ indentation and by how many problems each reading leaves), in place of the parse
 follow from it.  Imports :mod:`.tokens` and :mod:`.lexing`."""
 from __future__ import annotations
 
-from ..diagnostics import DiagnosticSink, Label, Span
+from ..base.diagnostics import DiagnosticSink, Label, Span
 from .lexing import _lex_lists
 from .tokens import MAX_BRACKET_DECISIONS, MAX_ERRORS
 

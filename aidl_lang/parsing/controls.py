@@ -14,7 +14,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
-from ..diagnostics import CONTROLS, DiagnosticSink, Fix, Span
+from ..base.diagnostics import CONTROLS, DiagnosticSink, Fix, Span
 
 def code_point(ch: str) -> str:
     """``U+202E RIGHT-TO-LEFT OVERRIDE``: the character's code point and Unicode name."""

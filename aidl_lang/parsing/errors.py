@@ -6,7 +6,7 @@ from __future__ import annotations
 import re
 
 from .controls import code_point, invisible
-from ..diagnostics import DiagnosticSink, Span
+from ..base.diagnostics import DiagnosticSink, Span
 from .lexing import _lex_lists
 from .tokens import TOKEN_NAMES, ParseError, UnexpectedCharacters, UnexpectedToken
 

@@ -9,7 +9,7 @@ import re
 import threading
 
 from .. import ast as A
-from ..diagnostics import DiagnosticSink, Span, as_lf
+from ..base.diagnostics import DiagnosticSink, Span, as_lf
 from . import tables
 from .lexing import _lex_lists, _postlex, _token
 from .tokens import UnexpectedCharacters, UnexpectedToken, _BuildError, _new_span, parse_number

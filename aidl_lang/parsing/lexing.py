@@ -8,7 +8,7 @@ from __future__ import annotations
 import re
 import threading
 
-from ..diagnostics import Span
+from ..base.diagnostics import Span
 from . import tables
 from .tokens import Token, UnexpectedCharacters, _new_span
 

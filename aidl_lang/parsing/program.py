@@ -8,8 +8,8 @@ from itertools import accumulate
 
 from .. import ast as A
 from .controls import check_controls
-from ..diagnostics import DiagnosticSink, Span, as_lf
-from ..memory import gc_paused
+from ..base.diagnostics import DiagnosticSink, Span, as_lf
+from ..base.memory import gc_paused
 from .brackets import _report_brackets
 from .comments import _ANY_BRACKET, _BRACKET_STEP, mask_comments
 from .lalr import _STATE, _Builder, _tables

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import re
 
-from ..diagnostics import DiagnosticSink
+from ..base.diagnostics import DiagnosticSink
 from .comments import _ANY_BRACKET, _BRACKET_STEP, _STRINGS
 from .errors import _error_pos, _report, _slash_hint
 from .lalr import _Builder, _run_lalr

@@ -8,7 +8,7 @@ import re
 import threading
 from pathlib import Path
 
-from ..cache import cache_dir, read_checked, write_checked
+from ..host.cache import cache_dir, read_checked, write_checked
 from .tokens import GRAMMAR
 
 _LARK_OPTIONS = dict(parser="lalr", lexer="basic", maybe_placeholders=True, start=["start", "expr"])
@@ -174,7 +174,7 @@ _DATA_LOCK = threading.Lock()
 
 def data() -> dict:
     """The lexer's and the LALR table's data (:func:`_tables_data`), read from the user's cache
-    folder (plain JSON, owner-only, see :mod:`aidl_lang.cache`) or built with Lark and written
+    folder (plain JSON, owner-only, see :mod:`aidl_lang.host.cache`) or built with Lark and written
     there; keyed by the grammar text, the options, the table format and Lark's version (all
     kept in the file and compared).  A cold ``aidl check`` so never imports Lark (~35 ms) nor
     unpacks its serialized parser."""

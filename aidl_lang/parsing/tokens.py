@@ -7,7 +7,7 @@ import re
 from functools import partial
 from pathlib import Path
 
-from ..diagnostics import Span
+from ..base.diagnostics import Span
 
 # a Span from a 7-tuple in one C call (no Python __init__): tokens and reduction extents
 _new_span = partial(tuple.__new__, Span)

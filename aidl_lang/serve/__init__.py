@@ -46,7 +46,7 @@ def serve(path: str, port: int = 8765, quiet: bool = False) -> int:
         print(f"aidl: error: `aidl serve` cannot import {e.name}, one of aidl's dependencies: "
               "reinstall aidl (pip install -e /path/to/aidl)", file=sys.stderr)
         return 2
-    from ..sources import SourceRefused, read_program
+    from ..library.sources import SourceRefused, read_program
     try:
         read_program(path)          # missing, a FIFO, a device, too large: E0004, never a hang
     except SourceRefused as e:

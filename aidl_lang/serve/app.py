@@ -154,7 +154,7 @@ def parse_message(raw: dict, names: set[str] | None) -> tuple[dict | None, dict 
     if names is not None:
         unknown = sorted(k for k in out if k not in names)
         if unknown:
-            from ..diagnostics import did_you_mean
+            from ..base.diagnostics import did_you_mean
             shown = ", ".join(f"`{k[:64]}`" for k in unknown[:5])
             near = did_you_mean(unknown[0], names) if names else []
             return error(f"unknown param{'s' if len(unknown) > 1 else ''} {shown}: the program "

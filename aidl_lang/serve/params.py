@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..sweep_plan import _nice, default_span  # noqa: F401 - the sliders' default span
+from ..params.sweep_plan import _nice, default_span  # noqa: F401 - the sliders' default span
 
 @dataclass
 class Param:
@@ -75,10 +75,10 @@ def _param(name: str, v, rng: dict | None, line: int, default=None) -> Param | N
 def declared_params(source: str, path: str) -> list[Param] | None:
     """The top-level params of ``source`` (named ``path``) with the file's own values, in
     declaration order (``line``: 1-based, ``span``: the declaration's
-    :class:`~aidl_lang.diagnostics.Span`, set as an attribute); ``None`` when the program does
+    :class:`~aidl_lang.base.diagnostics.Span`, set as an attribute); ``None`` when the program does
     not parse, check or interpret (its diagnostics are for the compile to report)."""
     from .. import ast as A
-    from ..diagnostics import DiagnosticSink
+    from ..base.diagnostics import DiagnosticSink
     from ..interp import Interpreter
     from ..parser import parse
     from ..pipeline import run_deep

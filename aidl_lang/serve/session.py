@@ -26,16 +26,16 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .. import ast as A
-from ..diagnostics import Diagnostic, DiagnosticSink
+from ..base.diagnostics import Diagnostic, DiagnosticSink
 from ..interp import Interpreter
-from ..limits import Deadline
+from ..base.limits import Deadline
 from ..output import build, to_svg
 from ..parser import parse
 from ..output.checks import check_drawing, check_topology, topology
 from ..pipeline import after_solve, report_failure
 from ..solver import Solver, run
-from ..solver.holds import reuse
-from ..sources import SourceRefused, read_program
+from ..solver.core.holds import reuse
+from ..library.sources import SourceRefused, read_program
 from ..typecheck import check
 from .params import Param, _nice, _param, default_span  # noqa: F401 - the customizer's params
 from .wording import for_forms
@@ -86,7 +86,7 @@ class Session:
         self._checks_pending: tuple | None = None  # (version, drawing, sink) of set_params' picture
         self._base: object = None                 # the defaults' Drawing, then its topology
         self.last: dict = {}                      # timings and warm/cold of the last compile
-        from ..limits import DEFAULT_BUDGET
+        from ..base.limits import DEFAULT_BUDGET
         self.budget = DEFAULT_BUDGET              # each compile's evaluation budget
 
     # ------------------------------------------------------------------ public
@@ -304,8 +304,8 @@ class Session:
         self.dof = []
         if solver is None:
             return
-        from ..limits import DEFAULT_BUDGET, now
-        from ..solver.freedom import degrees_of_freedom
+        from ..base.limits import DEFAULT_BUDGET, now
+        from ..solver.diagnosis.freedom import degrees_of_freedom
         try:            # bounded as a compile is (issue 48): a structure past it is not counted
             end = now() + DEFAULT_BUDGET.seconds
             self.dof = [{"structure": d.structure.path, "unknowns": d.unknowns,
@@ -331,7 +331,7 @@ class Session:
         """The sink of a compile that raised ``e``: out of memory (a ``MemoryError``
         anywhere: NumPy, Manifold, the checks) is the program's located ``E0304``; anything
         else is a bug, ``E0900`` (:func:`_internal`)."""
-        from ..limits import is_out_of_memory
+        from ..base.limits import is_out_of_memory
         from ..pipeline import out_of_memory_sink
         if is_out_of_memory(e):
             return out_of_memory_sink(self.name, self.source or None)

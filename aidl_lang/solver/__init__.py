@@ -19,12 +19,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..records import Compared
+from ..base.records import Compared
 from ..geometry.core.model import Constraint, Model
-from .hierarchy import CHECK_TOL, ITER_BUDGET, Solver
-from .holds import build_rows
-from .system import LINK, SIGN, user_residuals
-from .tape import Tape
+from .core.hierarchy import CHECK_TOL, ITER_BUDGET, Solver
+from .core.holds import build_rows
+from .core.system import LINK, SIGN, user_residuals
+from .core.tape import Tape
 
 
 class SolveResult(Compared):
@@ -83,7 +83,7 @@ def solve(model: Model, flat: bool = False, diagnose: bool = True,
     """Solve ``model`` in place (``model.x`` is updated even on failure, for diagnostics).
 
     ``flat=True`` solves everything at once instead of hierarchically (for benchmarks);
-    ``deadline`` (a :func:`aidl_lang.limits.now` value: CPU seconds) stops the solve and the conflict search when
+    ``deadline`` (a :func:`aidl_lang.base.limits.now` value: CPU seconds) stops the solve and the conflict search when
     passed (``SolveResult.out_of_time``)."""
     solver = Solver(model)
     solver.deadline = deadline
@@ -139,7 +139,7 @@ def _run(solver: Solver, flat: bool = False, diagnose: bool = True) -> SolveResu
         res.unsatisfied = sorted(((c, v) for c, v in per.values()), key=lambda cv: -cv[1])
         res.max_residual = worst
         if diagnose and tr.failures:
-            from .diagnose import conflicts
+            from .diagnosis.diagnose import conflicts
             for f in tr.failures:
                 res.conflicts += conflicts(solver, f.attempt.rows, f.attempt.cols, solver.x)
     return res

@@ -45,7 +45,7 @@ Shared state (``--store redis://...``: uploads and rate counters in Redis, :mod:
 compiles on a Dask cluster (``--scheduler``, :mod:`.remote`) let any process of any machine
 answer any request.
 
-Many users: each compile runs in a worker process (:mod:`aidl_lang.workers`) with the
+Many users: each compile runs in a worker process (:mod:`aidl_lang.host.workers`) with the
 compile's budget (CPU seconds), a wall-time limit (ten times that, and 10 s) and a memory cap; a request waits at most
 ``wait`` seconds for a worker and at most ``queue`` requests wait, past that the answer is
 ``503`` with ``Retry-After`` and a message the page shows.  Each client (its address; behind
@@ -72,8 +72,8 @@ from starlette.requests import Request
 from starlette.responses import JSONResponse, PlainTextResponse, Response, StreamingResponse
 from starlette.routing import Route
 
-from .. import workers as W
-from ..limits import DEFAULT_BUDGET, MAX_SOURCE_BYTES, wall_limit
+from ..host import workers as W
+from ..base.limits import DEFAULT_BUDGET, MAX_SOURCE_BYTES, wall_limit
 from . import compiler
 from .metrics import Metrics, RequestMetrics
 from .sessions import MAX_UPLOAD, Refused, new_id
@@ -135,7 +135,7 @@ class Settings:
 
     @property
     def seconds(self) -> float:
-        """The wall-time limit of one compile request (:func:`~aidl_lang.limits.wall_limit`:
+        """The wall-time limit of one compile request (:func:`~aidl_lang.base.limits.wall_limit`:
         its budget is CPU seconds, so a busy server does not refuse what a quiet one accepts)."""
         return self.kill_after or wall_limit(DEFAULT_BUDGET.seconds * self.budget)
 
@@ -668,7 +668,7 @@ def _reference_routes(st: Studio, guarded) -> list[Route]:
                                  "Content-Security-Policy": "default-src 'none'; style-src 'unsafe-inline'"})
 
     async def docs(request):
-        from ..reference import lookup_text
+        from ..library.reference import lookup_text
         name = request.query_params.get("name", "")
         if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_.]{0,63}", name):
             return JSONResponse({"text": None})

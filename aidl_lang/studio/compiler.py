@@ -1,4 +1,4 @@
-"""What a studio worker process does (:mod:`aidl_lang.workers` runs it, memory- and
+"""What a studio worker process does (:mod:`aidl_lang.host.workers` runs it, memory- and
 time-limited): compile a user's program into the page's view, encode a download, draw a
 gallery thumbnail.  Nothing here touches HTTP; every request and answer is plain data.
 
@@ -12,7 +12,7 @@ Requests (tuples, the first item names the kind):
   (at most :data:`MAX_SESSIONS`, the least recently used dropped): a slider move re-solves on
   the compiled tapes instead of compiling again.  The program is named ``folder/main.aidl``,
   so its imports and ``Drawing2D`` files resolve only inside the session's own folder (its
-  uploads) and the standard library (:mod:`aidl_lang.sources`, the import sandbox).
+  uploads) and the standard library (:mod:`aidl_lang.library.sources`, the import sandbox).
 * ``("download", folder, source, values, fmt, settings)``: ``(bytes, file name, media type)``
   or ``{"error": message, "diagnostics": [...]}``; ``settings`` as :func:`download` takes.
 * ``("glb", sid, folder, source, values, settings)``: the 3D view's GLB
@@ -20,7 +20,7 @@ Requests (tuples, the first item names the kind):
   ``(bytes, name, media type)`` or ``{"error"}``, made from the drawing the session's last
   ``view`` of this program and these values drew (no second compile), else compiled.
 * ``("sweep", sid, folder, source, values)``: the program checked across its params' ranges,
-  each slider alone at the others' ``values`` (:func:`aidl_lang.sweep.sweep`, bounded by its
+  each slider alone at the others' ``values`` (:func:`aidl_lang.params.sweep.sweep`, bounded by its
   budget) as the sliders mark it (:func:`sweep_ranges`).
 * ``("thumb", id)``: the gallery entry's picture as SVG text (``""`` when it fails).
 * ``("import", folder, name, infer)``: the uploaded drawing ``name`` of the session's folder
@@ -38,7 +38,7 @@ import re
 import zipfile
 from collections import OrderedDict
 
-from ..workers import rss
+from ..host.workers import rss
 
 MAX_SESSIONS = 24               # warm sessions one worker keeps
 MAX_CLAMPS = 4                  # compiles that move values back into dependent ranges
@@ -72,7 +72,7 @@ def hide_paths(obj, folder: str):
     ``folder`` written ``SESSION`` in every string (spans' ``file``, labels, messages, hints,
     rendered texts, the SVG) and the studio's data folder above it ``SESSION/..``: no server
     path reaches a visitor (docs/studio.md).  Bytes (a download) are left as they are."""
-    from ..diagnostics import _stdlib_roots
+    from ..base.diagnostics import _stdlib_roots
     folder = os.path.normpath(str(folder))
     pairs = []
     for f in dict.fromkeys((folder, os.path.realpath(folder))):
@@ -100,7 +100,7 @@ def hide_paths(obj, folder: str):
 def handler(budget: float = 1.0):
     """The worker's request handler (run once in the new process); ``budget``: the factor of
     the default evaluation budget every compile gets (``aidl studio --budget``)."""
-    from ..limits import DEFAULT_BUDGET
+    from ..base.limits import DEFAULT_BUDGET
     from .wording import page_answer
     # trimesh (1.5 s to import on a busy machine) and Manifold now, in the new process, not
     # on its first 3D view
@@ -133,7 +133,7 @@ def handler(budget: float = 1.0):
             else:
                 answer = {"error": f"unknown request `{kind}`"}
         except Exception as e:          # noqa: BLE001 - answered, never a dead worker
-            from ..limits import is_out_of_memory
+            from ..base.limits import is_out_of_memory
             oom = is_out_of_memory(e)
             if not oom:
                 answer = {"error": f"internal error: {type(e).__name__}: {e}"}
@@ -152,7 +152,7 @@ def handler(budget: float = 1.0):
 
 
 def collect_garbage(threshold: tuple) -> None:
-    """After an answer is sent (:mod:`aidl_lang.workers` calls the handler's ``idle``): the
+    """After an answer is sent (:mod:`aidl_lang.host.workers` calls the handler's ``idle``): the
     young objects of the request just answered collected (its compile's cycles: 0.02 to 0.15
     s for a planetary move), the whole heap every ``threshold[2]``-th time (CPython's own
     rhythm), and the collector's ``threshold`` set back until the next request."""
@@ -166,8 +166,8 @@ def collect_garbage(threshold: tuple) -> None:
 def _upload_bytes(folder: str, name: str) -> bytes:
     """The bytes of the session's upload ``name``, opened once beneath ``folder`` without
     following a link, at most the drawings' size limit; ``OSError`` when it cannot be."""
-    from ..files import open_beneath, read_regular
-    from ..sources import MAX_DRAWING_BYTES
+    from ..host.files import open_beneath, read_regular
+    from ..library.sources import MAX_DRAWING_BYTES
     fd = open_beneath(folder, name)
     try:
         return read_regular(fd, MAX_DRAWING_BYTES, name)
@@ -262,7 +262,7 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
          defaults: dict | None = None, budget=None) -> dict:
     """The live preview of ``source`` with the customizer's ``values`` ({name: "40 mm"});
     ``defaults``: ``{name: default}`` (display units, as the answer's params give them) the
-    page chose ``values`` against; ``budget``: a :class:`~aidl_lang.limits.Budget` (None:
+    page chose ``values`` against; ``budget``: a :class:`~aidl_lang.base.limits.Budget` (None:
     the default).
 
     The answer depends on the request only, never on what this worker compiled before for
@@ -360,7 +360,7 @@ def view_glb(sessions: OrderedDict, sid: str, folder: str, source: str, values: 
 
 def sweep_ranges(folder: str, source: str, budget=None, values: dict | None = None) -> dict:
     """``source`` (named ``folder/main.aidl``: its imports from the session's uploads) swept
-    across its params' ranges (:func:`aidl_lang.sweep.sweep`, within its budget; a param
+    across its params' ranges (:func:`aidl_lang.params.sweep.sweep`, within its budget; a param
     with no declared range across its slider's span), each param alone with the others at
     the sliders' ``values`` (``--set`` texts; None: the written values), as the sliders show
     it: ``{"ok", "swept", "points", "skipped", "summary", "combinations", "params": {name:
@@ -374,7 +374,7 @@ def sweep_ranges(folder: str, source: str, budget=None, values: dict | None = No
     values (nothing swept)."""
     from ..serve.params import declared_params
     from ..serve.wording import for_forms
-    from ..sweep import sweep
+    from ..params.sweep import sweep
     path = os.path.join(folder, "main.aidl")
     declared = {p.name: p for p in declared_params(source, path) or []}
     spans = {n: (p.min, p.max) for n, p in declared.items()

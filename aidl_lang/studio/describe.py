@@ -157,7 +157,7 @@ class _Scrub:
         real = os.path.realpath(folder)
         if real != folder:
             self.pairs.append((real + os.sep, ""))
-        from ..sources import STDLIB
+        from ..library.sources import STDLIB
         self.pairs.append((str(STDLIB.resolve()) + os.sep, "std/"))
         self.pairs += [(client.url, ENDPOINT), (str(config["url"]).strip(), ENDPOINT)]
         if config.get("key"):

@@ -14,7 +14,7 @@ import time
 
 from starlette.concurrency import run_in_threadpool
 
-from .. import workers as W
+from ..host import workers as W
 
 DEADLINE = 180.0            # s the whole loop may take (model calls included)
 MEMORY = 1500 << 20         # bytes: the loop process's address-space cap

@@ -36,7 +36,7 @@ Units: ``params`` are in display units, as :mod:`aidl_lang.serve.params` gives t
 in mm, angles in degrees, numbers plain.  :func:`thumbnail` returns an SVG whose user units
 are millimetres, sized in pixels.
 
-The examples are read from ``aidl_lang/examples`` (:data:`aidl_lang.sources.EXAMPLES`: a
+The examples are read from ``aidl_lang/examples`` (:data:`aidl_lang.library.sources.EXAMPLES`: a
 link to the repository's ``examples/`` folder in a checkout, a copy inside the wheel) and the generators from the
 bundled standard library.  Not part of the stable API.
 """
@@ -52,7 +52,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
 from .. import ast as A
-from ..sources import EXAMPLES     # aidl_lang/examples: shipped in the wheel
+from ..library.sources import EXAMPLES     # aidl_lang/examples: shipped in the wheel
 from .wording import page_program
 
 KINDS = ("example", "generator")
@@ -184,7 +184,7 @@ def thumbnail(entry: Entry, size: int = 240) -> str:
     return re.sub(r"(\d\.\d\d)\d+", r"\1", svg)
 
 
-THUMBS = "gallery"          # the thumbnails' folder in the user's cache (aidl_lang.cache)
+THUMBS = "gallery"          # the thumbnails' folder in the user's cache (aidl_lang.host.cache)
 
 
 @functools.cache
@@ -222,7 +222,7 @@ def thumbnail_key(entry: Entry, size: int = 240) -> str:
 
 
 def _thumb_path(key: str) -> Path | None:
-    from ..cache import cache_dir
+    from ..host.cache import cache_dir
     base = cache_dir()
     if base is None:
         return None
@@ -237,8 +237,8 @@ def _thumb_path(key: str) -> Path | None:
 def kept_thumbnail(entry: Entry, size: int = 240) -> str | None:
     """The thumbnail of ``entry`` made before (by this or another server, this build, the
     same program text: :func:`thumbnail_key`) and kept in the user's cache
-    (``~/.cache/aidl/gallery``, :mod:`aidl_lang.cache`: checked, this user's own), or None."""
-    from ..cache import read_checked
+    (``~/.cache/aidl/gallery``, :mod:`aidl_lang.host.cache`: checked, this user's own), or None."""
+    from ..host.cache import read_checked
     key = thumbnail_key(entry, size)
     path = _thumb_path(key)
     return read_checked(path, key) if path is not None else None
@@ -247,7 +247,7 @@ def kept_thumbnail(entry: Entry, size: int = 240) -> str | None:
 def keep_thumbnail(entry: Entry, svg: str, size: int = 240) -> bool:
     """Keep ``svg`` as ``entry``'s thumbnail for :func:`kept_thumbnail`; False when the
     cache cannot be written (the picture is then only kept in memory)."""
-    from ..cache import write_checked
+    from ..host.cache import write_checked
     key = thumbnail_key(entry, size)
     path = _thumb_path(key)
     return path is not None and write_checked(path, key, svg)
@@ -257,15 +257,15 @@ def keep_thumbnail(entry: Entry, svg: str, size: int = 240) -> bool:
 def renderable_generators() -> dict:
     """The standard library's generators the gallery shows, by name: documented ``def``\\ s
     whose name does not start with ``_`` and whose result is a solid, an assembly or a
-    drawing (:class:`aidl_lang.reference.StdTemplate` values)."""
-    from ..reference import stdlib_templates
+    drawing (:class:`aidl_lang.library.reference.StdTemplate` values)."""
+    from ..library.reference import stdlib_templates
     return {n: t for n, t in stdlib_templates().items()
             if not n.startswith("_") and t.doc and t.node.kind in RENDERABLE}
 
 
 def skipped() -> dict[str, str]:
     """The stdlib ``def``\\ s the gallery leaves out, each with the reason."""
-    from ..reference import stdlib_templates
+    from ..library.reference import stdlib_templates
     out = {}
     for n, t in stdlib_templates().items():
         if n.startswith("_"):
@@ -287,7 +287,7 @@ def param_rows(source: str, path: str = "main.aidl") -> list[dict]:
     (the range is written in the program) and ``help`` (the comment at the end of the
     ``param`` line, or ``""``).  ``[]`` when the program does not parse or interpret."""
     from ..serve.params import declared_params
-    from ..diagnostics import split_lines     # lines as the compiler counts them (not at U+2028)
+    from ..base.diagnostics import split_lines     # lines as the compiler counts them (not at U+2028)
     params = declared_params(source, path) or []
     lines = split_lines(source)
     rows = []
@@ -369,7 +369,7 @@ def assert_relations(template) -> dict[str, dict[str, list[tuple[str, bool]]]]:
     backlash bound where its teeth come to a point).  :func:`synthesize` and :func:`lift_params` make them the
     params' ``min=``/``max=`` (a range that follows the other params), declared after the
     params they use."""
-    from ..sources import STDLIB
+    from ..library.sources import STDLIB
     try:
         text = (Path(STDLIB) / f"{template.module}.aidl").read_text(encoding="utf-8")
     except OSError:
@@ -566,7 +566,7 @@ def _literal(node) -> tuple[str, float | None] | None:
     """``(kind, number in display units)`` of a literal argument or default (``40 mm``,
     ``20 deg``, ``3``, ``"hex"``, ``true``); ``None`` for anything else (a list, an
     expression) or a unit the gallery does not convert."""
-    from ..reference import kind_of_default
+    from ..library.reference import kind_of_default
     kind = kind_of_default(node)
     if kind in ("string", "bool"):
         return kind, None
@@ -648,7 +648,7 @@ def purpose_of(text: str) -> str:
     that fit, then an ellipsis (``A flat bottle opener: a round head with the cap-lifting
     cut-out, a handle with grip slots made by a loop, …``), or with no colon it is cut after
     its last whole word that fits.  ``""`` for an empty text."""
-    from ..reference import sentences
+    from ..library.reference import sentences
     parts = sentences(re.sub(r"\s+", " ", text))
     s = re.sub(r"\s+", " ", parts[0]).strip().replace("`", "") if parts else ""
     s = _drop_asides(s, keep=lambda a: not re.search(r'"|\.aidl|/|\bimport\b', a))
@@ -687,7 +687,7 @@ def _tags(stem: str, source: str, modules=()) -> list[str]:
 
 # ------------------------------------------------------------------------ rewriting
 def _parse(source: str, path: str):
-    from ..diagnostics import DiagnosticSink
+    from ..base.diagnostics import DiagnosticSink
     from ..parser import parse
     sink = DiagnosticSink()
     prog = parse(source, path, sink)
@@ -719,7 +719,7 @@ def self_contained(source: str, path: Path, depth: int = 0) -> str:
     from ``std/drawings/`` (see the module's docstring).  Raises :class:`ValueError` when
     that cannot be done (an import with ``as``, an imported file with params or structures,
     a drawing with no identical copy in the standard library)."""
-    from ..sources import STDLIB
+    from ..library.sources import STDLIB
     prog = _parse(source, str(path))
     edits = []
     for st in prog.stmts:
@@ -773,7 +773,7 @@ def _call_text(name: str, args: list[str], indent: int, width: int = 96) -> str:
 
 def lift_params(source: str, path: str, template) -> str | None:
     """``source`` with the literal arguments of its one call of ``template`` (a
-    :class:`~aidl_lang.reference.StdTemplate`) made ``param``\\ s: the call's own value, else
+    :class:`~aidl_lang.library.reference.StdTemplate`) made ``param``\\ s: the call's own value, else
     the template's default, with a slider range (:func:`slider_range`).  Arguments given as
     other expressions (lists, names) stay as written; ``cx``/``cy`` stay as written and are
     not added.  ``None`` when the program declares params already or does not call
@@ -839,7 +839,7 @@ def _after_header(source: str) -> int:
 
 
 def _default_source(node) -> str:
-    from ..reference import default_text
+    from ..library.reference import default_text
     return default_text(node)
 
 
@@ -892,7 +892,7 @@ def _example_entry(p: Path) -> Entry:
 def _generator_example_entry(p: Path) -> Entry:
     """``generator/NAME`` of an ``examples/generators`` file (params lifted when it calls
     one generator and declares none)."""
-    from ..reference import stdlib_templates
+    from ..library.reference import stdlib_templates
     raw, src = _own_source(p)
     gens = renderable_generators()
     t = stdlib_templates().get(p.stem)
@@ -915,7 +915,7 @@ def _generator_example_entry(p: Path) -> Entry:
 
 def synthesize(t) -> str:
     """The program of a generator without an example (a
-    :class:`~aidl_lang.reference.StdTemplate`): its doc comment, ``units mm``, the import, a
+    :class:`~aidl_lang.library.reference.StdTemplate`): its doc comment, ``units mm``, the import, a
     ``param`` with a range for each argument with a literal default (not ``cx``/``cy``),
     ``thickness`` following a ``thickness`` param, and ``NAME = generator(arg=arg, ...)``
     in a structure of the generator's kind named after it."""

@@ -1,11 +1,11 @@
 """Compiles on a Dask cluster: ``aidl studio --scheduler tcp://HOST:PORT`` (issue 62;
 docs/studio.md, "Compiles on Dask").
 
-:class:`Remote` stands where the local :class:`~aidl_lang.workers.Pool` stands (the same
+:class:`Remote` stands where the local :class:`~aidl_lang.host.workers.Pool` stands (the same
 ``request(request, seconds, wait, prefer) -> (answer, worker)``, ``waiting``, ``workers``,
 ``stop``), so :meth:`.app.Studio.compile` treats both alike.  Each request becomes one task,
 :func:`run_remote`, on a ``dask.distributed`` worker, which hands it to a warm compile process
-of its own (:class:`~aidl_lang.workers.Worker`, one per worker thread) with the same budget,
+of its own (:class:`~aidl_lang.host.workers.Worker`, one per worker thread) with the same budget,
 wall-time limit (``seconds``, then the process is killed) and memory cap (``RLIMIT_AS``) as
 the local workers, and the same no-file-access rule: the program is compiled from memory
 under the name ``SESSION/main.aidl`` in a folder of the Dask worker's machine that holds
@@ -13,9 +13,9 @@ exactly the session's uploads, sent with the task (:func:`.store.write_files`).
 
 Saturation is answered, never waited out: the cluster's load (tasks running and queued on the
 scheduler, against its worker threads) is read at most once a second; past ``threads + queue``
-the request is refused at once (``503`` with ``Retry-After``, :class:`~aidl_lang.workers.Busy`),
+the request is refused at once (``503`` with ``Retry-After``, :class:`~aidl_lang.host.workers.Busy`),
 and a task without an answer within ``wait + seconds`` is cancelled and refused the same way.
-An unreachable scheduler is :class:`~aidl_lang.workers.NotReady` (``503``).
+An unreachable scheduler is :class:`~aidl_lang.host.workers.NotReady` (``503``).
 """
 from __future__ import annotations
 
@@ -24,7 +24,7 @@ import tempfile
 import threading
 import time
 
-from .. import workers as W
+from ..host import workers as W
 from .compiler import handler
 from .store import read_files, write_files
 

@@ -122,8 +122,8 @@ FAMILIES = {
 _STAGE = r"""
 import json, sys, time
 sys.path.insert(0, sys.argv[1])
-from aidl_lang.diagnostics import DiagnosticSink
-from aidl_lang.limits import DEFAULT_BUDGET, Deadline, now
+from aidl_lang.base.diagnostics import DiagnosticSink
+from aidl_lang.base.limits import DEFAULT_BUDGET, Deadline, now
 from aidl_lang.output import checks
 from aidl_lang.pipeline import _compile, run_deep
 src = open(sys.argv[2]).read()

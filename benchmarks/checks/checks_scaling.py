@@ -20,7 +20,7 @@ import time
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
-from aidl_lang.diagnostics import DiagnosticSink  # noqa: E402
+from aidl_lang.base.diagnostics import DiagnosticSink  # noqa: E402
 from aidl_lang.output import checks as C  # noqa: E402
 from aidl_lang.pipeline import compile_source  # noqa: E402
 

@@ -26,7 +26,7 @@ import time
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
-from aidl_lang.limits import DEFAULT_BUDGET, Budget  # noqa: E402
+from aidl_lang.base.limits import DEFAULT_BUDGET, Budget  # noqa: E402
 from benchmarks.checks.nasty import RandomChooser, diamond_dir, program, verdict  # noqa: E402
 
 BUDGET = Budget(steps=20_000, objects=5_000, size=100_000, seconds=10.0)

@@ -258,7 +258,7 @@ def program(c) -> str:
 
 def verdict(src: str, path: str, budget=None, seconds: float = 30.0, render: bool = True):
     """``None`` if the pipeline answered properly, else a short failure kind."""
-    from aidl_lang.codes import CODES
+    from aidl_lang.base.codes import CODES
     from aidl_lang.pipeline import compile_source
     t0 = time.perf_counter()
     try:

@@ -27,7 +27,7 @@ def ranged(entry) -> bool:
 
 def main(argv=None) -> int:
     from aidl_lang.studio import gallery
-    from aidl_lang.sweep import LHS_POINTS, SEED, sweep
+    from aidl_lang.params.sweep import LHS_POINTS, SEED, sweep
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("ids", nargs="*", help="entry ids (default: every ranged entry)")
     ap.add_argument("--points", type=int, default=LHS_POINTS, help="Latin hypercube size")

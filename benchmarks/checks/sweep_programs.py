@@ -55,7 +55,7 @@ def verify(source: str, path: str, rep) -> list[str]:
 
 
 def main(argv=None) -> int:
-    from aidl_lang.sweep import sweep
+    from aidl_lang.params.sweep import sweep
     todo = [Path(a) for a in (argv or [])] or files()
     total = found = wrong = nothing = skipped = none = 0
     for p in todo:

@@ -35,8 +35,8 @@ S, F = int(sys.argv[1]), sys.argv[2]
 if S == 0:
     import numpy, manifold3d, argparse, json, dataclasses, threading, gettext, copy, zlib
     os._exit(0)
-import aidl_lang.cli.main, aidl_lang.api, aidl_lang.pipeline, aidl_lang.solver.diagnose
-import aidl_lang.solver.freedom, aidl_lang.solver.redundancy, aidl_lang.solver.sliding
+import aidl_lang.cli.main, aidl_lang.api, aidl_lang.pipeline, aidl_lang.solver.diagnosis.diagnose
+import aidl_lang.solver.diagnosis.freedom, aidl_lang.solver.diagnosis.redundancy, aidl_lang.solver.diagnosis.sliding
 import aidl_lang.output.checks
 if S == 8:
     from aidl_lang.cli.main import main
@@ -45,7 +45,7 @@ if S == 8:
     os._exit(0)
 import numpy as np
 from aidl_lang.pipeline import parse, check, Interpreter, solve, after_solve, DiagnosticSink
-from aidl_lang.limits import DEFAULT_BUDGET
+from aidl_lang.base.limits import DEFAULT_BUDGET
 sys.setrecursionlimit(20000)
 sink = DiagnosticSink()
 if S >= 2:

@@ -132,14 +132,14 @@ print(json.dumps(out))
 
 DIAGNOSE = r"""
 import json, sys, time
-from aidl_lang.limits import DEFAULT_BUDGET
+from aidl_lang.base.limits import DEFAULT_BUDGET
 from aidl_lang.pipeline import compile_source
 import scipy.sparse                      # imported by the check anyway: not counted below
 c = compile_source(open(sys.argv[1]).read(), "s1000.aidl", budget=DEFAULT_BUDGET.scaled(100))
 assert c.ok, [d.message for d in c.sink.items]
-from aidl_lang.solver import diagnose as D
+from aidl_lang.solver.diagnosis import diagnose as D
 try:                                     # split out of diagnose.py (issue 63)
-    from aidl_lang.solver import freedom as F, redundancy as R, sliding as S
+    from aidl_lang.solver.diagnosis import freedom as F, redundancy as R, sliding as S
 except ImportError:                      # an older tree: all in diagnose.py
     F = R = S = D
 def cpu(fn):
@@ -153,9 +153,9 @@ print(json.dumps(out))
 
 HOLES = r"""
 import json, sys, time
-from aidl_lang.diagnostics import DiagnosticSink
+from aidl_lang.base.diagnostics import DiagnosticSink
 from aidl_lang.output.checks import check_drawing
-from aidl_lang.limits import DEFAULT_BUDGET
+from aidl_lang.base.limits import DEFAULT_BUDGET
 from aidl_lang.pipeline import compile_source
 c = compile_source(open(sys.argv[1]).read(), "grid.aidl", min_wall=0,
                    budget=DEFAULT_BUDGET.scaled(100))      # no E0304 on a loaded machine
@@ -213,7 +213,7 @@ except ImportError:          # no session API: a move is the override compile
         compile_source(src, path, overrides={"pinion_teeth": str(13 + k % 2)})
 else:
     import aidl_lang.serve.session as S
-    from aidl_lang.limits import DEFAULT_BUDGET
+    from aidl_lang.base.limits import DEFAULT_BUDGET
     if hasattr(S, "Interpreter"):    # a budget of 100: no deadline cuts a move short under callgrind
         _I = S.Interpreter
         S.Interpreter = lambda *a, **k: _I(*a, budget=DEFAULT_BUDGET.scaled(100), **k)

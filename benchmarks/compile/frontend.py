@@ -176,7 +176,7 @@ def _timed(fn, repeat: int):
 
 
 def parse_throughput(repeat: int) -> None:
-    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.base.diagnostics import DiagnosticSink
     from aidl_lang import parser as P
     from aidl_lang.parsing import lexing as LX, tables as T
     from aidl_lang.parser import mask_comments, parse
@@ -207,7 +207,7 @@ def _slope(xs, ys) -> float:
 
 
 def stages(sizes, repeat: int) -> None:
-    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.base.diagnostics import DiagnosticSink
     from aidl_lang.interp import Interpreter
     from aidl_lang.parser import parse
     from aidl_lang.solver import solve

@@ -22,7 +22,7 @@ from cold_stages import ENV, ROOT, callgrind
 
 _BASE = "import os, numpy, manifold3d, argparse, json, dataclasses, threading, gettext, copy, zlib\n"
 _MODULES = ("import aidl_lang.cli.main, aidl_lang.api, aidl_lang.pipeline, "
-            "aidl_lang.solver.diagnose, aidl_lang.output.checks\n")
+            "aidl_lang.solver.diagnosis.diagnose, aidl_lang.output.checks\n")
 _STUB = '''
 made = dataclasses._create_fn
 def stub(name, *args, **kwargs):

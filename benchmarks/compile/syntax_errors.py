@@ -41,7 +41,7 @@ def bracket_pairs(src: str) -> list[tuple[int, int, int]]:
 
 
 def main(paths: list[str]) -> None:
-    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.base.diagnostics import DiagnosticSink
     from aidl_lang.parser import parse
     files = paths or sorted(str(p) for p in (ROOT / "examples").glob("*.aidl"))
     right = total = 0

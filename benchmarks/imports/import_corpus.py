@@ -38,7 +38,7 @@ import traceback
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
-from aidl_lang.diagnostics import DiagnosticSink  # noqa: E402
+from aidl_lang.base.diagnostics import DiagnosticSink  # noqa: E402
 from aidl_lang.drawing.write.program import import_drawing  # noqa: E402
 from aidl_lang.drawing.model import DrawingError  # noqa: E402
 from aidl_lang.pipeline import _compile, compile_source, run_deep  # noqa: E402

@@ -49,7 +49,7 @@ sys.path.insert(0, str(ROOT))
 from aidl_lang.drawing.write.program import import_drawing  # noqa: E402
 from aidl_lang.drawing.model import DrawingError  # noqa: E402
 from aidl_lang.pipeline import compile_source  # noqa: E402
-from aidl_lang.limits import DEFAULT_BUDGET  # noqa: E402
+from aidl_lang.base.limits import DEFAULT_BUDGET  # noqa: E402
 
 CUT_RGB = [(0, 0, 0), (0, 0, 255)]        # Boxes.py: OUTER_CUT black, INNER_CUT blue
 RED = (255, 0, 0)                         # Boxes.py: ANNOTATIONS

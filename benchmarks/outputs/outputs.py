@@ -18,7 +18,7 @@ import time
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
-from aidl_lang.diagnostics import DiagnosticSink  # noqa: E402
+from aidl_lang.base.diagnostics import DiagnosticSink  # noqa: E402
 from aidl_lang.output import Options, build, encode, render_model  # noqa: E402
 from aidl_lang.output.checks import check_drawing  # noqa: E402
 from aidl_lang.output.part.part import MissingDependency  # noqa: E402

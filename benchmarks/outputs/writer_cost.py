@@ -41,7 +41,7 @@ def main() -> None:
     ap.add_argument("--n", type=int, nargs="+", default=[500, 2000])
     ap.add_argument("--formats", default=None, help="comma-separated suffixes (default: all)")
     args = ap.parse_args()
-    from aidl_lang.limits import DEFAULT_BUDGET
+    from aidl_lang.base.limits import DEFAULT_BUDGET
     from aidl_lang.output import MissingDependency, Options, OutputError, build, encode
     from aidl_lang.output.writers import FORMATS, writer_seconds
     from aidl_lang.pipeline import compile_source

@@ -35,14 +35,14 @@ STAGES = ("solver", "render", "chords", "build", "svg", "check", "topology", "pi
 
 CHILD = r"""
 import os, subprocess, sys, time
-from aidl_lang.diagnostics import DiagnosticSink
+from aidl_lang.base.diagnostics import DiagnosticSink
 from aidl_lang.interp import Interpreter
-from aidl_lang.limits import DEFAULT_BUDGET
+from aidl_lang.base.limits import DEFAULT_BUDGET
 from aidl_lang.output import to_svg
-from aidl_lang.output.part.booleans import render_model
+from aidl_lang.output.part.build.booleans import render_model
 from aidl_lang.output.checks import check_drawing, topology
 from aidl_lang.output.part.part import build
-from aidl_lang.limits import Deadline
+from aidl_lang.base.limits import Deadline
 from aidl_lang.pipeline import after_solve
 from aidl_lang.serve.session import Session
 from aidl_lang.solver import Solver, run

@@ -28,7 +28,7 @@ def check_entry(entry, n: int, seed: int, folder: str) -> tuple[int, int, list[s
     """``(values checked, agreeing, mismatches)`` for one gallery entry."""
     from aidl_lang.studio import gallery
     from aidl_lang.studio.compiler import sweep_ranges
-    from aidl_lang.sweep import TOLERANCE
+    from aidl_lang.params.sweep import TOLERANCE
     got = sweep_ranges(folder, entry.source)
     if not got["ok"]:
         return 0, 0, []

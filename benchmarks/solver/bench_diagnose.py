@@ -24,7 +24,7 @@ sys.path.insert(0, str(ROOT))
 
 from aidl_lang.pipeline import compile_source  # noqa: E402
 from aidl_lang.solver import Solver, run  # noqa: E402
-from aidl_lang.solver.diagnose import conflicts  # noqa: E402
+from aidl_lang.solver.diagnosis.diagnose import conflicts  # noqa: E402
 
 
 def star(n: int) -> str:

@@ -1,5 +1,5 @@
 """What W0401's search costs on a plain ``aidl check`` (issue 23): the redundancy search
-(``pipeline.report_redundancies``: :func:`aidl_lang.solver.redundancy.redundancies`) next to the
+(``pipeline.report_redundancies``: :func:`aidl_lang.solver.diagnosis.redundancy.redundancies`) next to the
 whole compile of the same file, CPU milliseconds, best of 10 (the compile: mean of 3), and
 whether SciPy was imported (it is not below 250 000 Jacobian cells).
 
@@ -15,7 +15,7 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 
 def main(paths: list[str]) -> None:
-    from aidl_lang.diagnostics import DiagnosticSink
+    from aidl_lang.base.diagnostics import DiagnosticSink
     from aidl_lang.pipeline import compile_source, report_redundancies
     files = paths or sorted(str(p) for p in (ROOT / "examples").glob("*.aidl"))
     print(f"{'file':24s} {'W0401 ms':>9s} {'compile ms':>11s} {'found':>6s}  scipy")

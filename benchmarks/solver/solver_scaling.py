@@ -52,7 +52,7 @@ sys.path.insert(0, str(ROOT))
 
 from aidl_lang.pipeline import compile_source  # noqa: E402
 from aidl_lang.solver import Solver, run, solve  # noqa: E402
-from aidl_lang.solver.tape import Tape  # noqa: E402
+from aidl_lang.solver.core.tape import Tape  # noqa: E402
 from benchmarks.solver.families import FLAT, hierarchy  # noqa: E402
 
 

@@ -89,7 +89,7 @@ def _chain(pieces: list, tol: float = JOIN_TOL, gaps: list | None = None,
 
     ``tol`` above :data:`JOIN_TOL` (the closing tolerance): ends that far apart are made to
     meet exactly (:func:`_meet`) and each gap so closed is appended to ``gaps`` as ``(gap mm,
-    where)``.  ``deadline``: a :class:`~aidl_lang.limits.Deadline`, checked as it goes."""
+    where)``.  ``deadline``: a :class:`~aidl_lang.base.limits.Deadline`, checked as it goes."""
     from ...geometry.shapes.curves import reverse
     pieces = [list(p) for p in pieces]
     used = [False] * len(pieces)

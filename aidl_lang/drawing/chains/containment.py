@@ -39,7 +39,7 @@ def _containers(loops: list, deadline=None) -> list[list[int]]:
     loop's hole (its notch) whatever its probe point."""
     import numpy as np
 
-    from ...output.part.nearby import box_pairs_between
+    from ...output.part.measure.nearby import box_pairs_between
     # a whole circle is measured as itself (its area, a distance), not as its polygon
     polys = [None if len(segs) == 1 and isinstance(segs[0], Circle) else
              np.asarray(Loop(list(segs)).points(), dtype=float) for segs in loops]

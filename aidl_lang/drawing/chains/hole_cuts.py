@@ -32,10 +32,10 @@ def overlapping_holes(loops: list, inside: list, deadline=None) -> tuple[dict, d
     (``inside``: for each loop the indices of the loops it lies inside,
     :func:`~.program._containers`), its part the one of those one level up.  Only holes whose
     boxes overlap are compared (:func:`~..output.part.nearby.box_pairs`: a plate of 5,000
-    holes is not 12 million pairs).  ``deadline``: a :class:`~aidl_lang.limits.Deadline` checked per part, or None."""
+    holes is not 12 million pairs).  ``deadline``: a :class:`~aidl_lang.base.limits.Deadline` checked per part, or None."""
     import numpy as np
 
-    from ...output.part.nearby import box_pairs
+    from ...output.part.measure.nearby import box_pairs
     depth = [len(c) for c in inside]
     holes: dict = {}                                    # a part's loop -> its holes
     for i in range(len(loops)):
@@ -76,7 +76,7 @@ def inner_rests(loops: list, inside: list, deadline=None,
     whose middles lie inside one of those holes are returned in the hole's order, but for
     those no longer than :data:`~.model.GAP_NOTE` (a burn-correction overlap).  A hole that
     crosses none of them (one drawn twice) gives nothing.  ``deadline``: a
-    :class:`~aidl_lang.limits.Deadline` checked per part and per hole, or None.  ``pairs``:
+    :class:`~aidl_lang.base.limits.Deadline` checked per part and per hole, or None.  ``pairs``:
     a set to which each pair of overlapping holes is added, as the frozenset of their
     :func:`loop_key` (so that the writer can say that the two may cut one opening,
     whichever part the loops are written in)."""

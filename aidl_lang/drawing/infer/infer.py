@@ -868,7 +868,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
     was recognised (pieces -> shapes, patterns) and the tolerances; and the notes of what was
     left out.  Lengths in mm.  Raises :class:`~.model.DrawingError` ``E0304`` before any
     inference when :func:`infer_seconds` would end past ``deadline``, and
-    :class:`~aidl_lang.limits.OutOfBudget` once it has passed (each stage looks at it as it
+    :class:`~aidl_lang.base.limits.OutOfBudget` once it has passed (each stage looks at it as it
     goes; :func:`~.program.import_drawing` words it as ``E0304``)."""
     _refuse_too_large(layers, source, deadline)
     w = _Writer(deadline)
@@ -965,7 +965,7 @@ def _refuse_too_large(layers: list, source: str, deadline) -> None:
     :func:`infer_seconds` of ``layers`` would end past ``deadline`` (the import's)."""
     if deadline is None:
         return
-    from ...limits import OutOfBudget
+    from ...base.limits import OutOfBudget
     from ..model import DrawingError
     from ..write.program import _count_segments
     try:

@@ -17,7 +17,7 @@ from contextlib import contextmanager
 from contextvars import ContextVar
 
 from ...geometry.shapes.curves import Circle
-from ...limits import MAX_EXTENT
+from ...base.limits import MAX_EXTENT
 from .affine import arc_curve, dxf_conic, flattens, whole_curve
 from ..chains.chain import _chain, _finish
 from .dxf_entities import (FLAT_TOL, _entity_arc, _entity_circle, _entity_ellipse, _entity_line, _entity_lwpolyline, _entity_polyline, _entity_spline, _entity_text, _ocs_flipped, _poly_segments)
@@ -252,7 +252,7 @@ def _check_layers(doc, msp, name: str, layer, layers: set) -> None:
     missing = [ly for ly in ([layer] if isinstance(layer, str) else layer)
                if ly.lower() not in known]
     if missing and not any(entity_layer(e).lower() in layers for e in msp):
-        from ...diagnostics import did_you_mean
+        from ...base.diagnostics import did_you_mean
         sugg = did_you_mean(missing[0], [ly.dxf.name for ly in doc.layers])
         raise DrawingError("E0132", f"`{name}` has no layer `{missing[0]}`",
                            ("did you mean " + ", ".join(f"`{s}`" for s in sugg) + "?")

@@ -29,7 +29,7 @@ call).
 
 Every number read is checked before it is used: a coordinate, radius, semi-axis or text
 height (in mm, after the unit) that is not finite (``inf``, ``nan``) or beyond
-:data:`~aidl_lang.limits.MAX_EXTENT` (1e6 mm, the model extent of a program), and a number
+:data:`~aidl_lang.base.limits.MAX_EXTENT` (1e6 mm, the model extent of a program), and a number
 derived from them (the centre and radius of a DXF bulge, a spline's steps), is ``E0130``
 naming the entity (DXF: its kind, handle and line; SVG: the element and its id).
 
@@ -69,8 +69,8 @@ def read_drawing(data: bytes, name: str, layer=None, color=None, ident=None,
     ``cut``/``engrave``/``ignore``/``roles``: the role of each shape by layer or colour
     (:func:`_role_of`): what is cut is the drawing, what is engraved its ``engrave``
     drawing, the rest left out (counted in a note).  ``deadline``: a
-    :class:`~aidl_lang.limits.Deadline` the reading is held to (``E0304``, raised as
-    :class:`~aidl_lang.limits.OutOfBudget`); ``max_shapes``: the shape limit (default
+    :class:`~aidl_lang.base.limits.Deadline` the reading is held to (``E0304``, raised as
+    :class:`~aidl_lang.base.limits.OutOfBudget`); ``max_shapes``: the shape limit (default
     :data:`MAX_ENTITIES`).  Raises :class:`DrawingError`."""
     if unit is not None and unit not in UNIT_MM:
         raise DrawingError("E0130", f"unknown unit `{unit}`",

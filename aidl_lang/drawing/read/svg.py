@@ -22,20 +22,10 @@ from ..model import (_OPTS, JOIN_TOL, UNIT_MM, Drawing, DrawingError, Note, _che
                      _finite, _lerp, _mm, _OutOfRange, _range_error, bezier_spline)
 
 
-def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> Drawing:
-    import svgelements as S
-    notes: list[Note] = []
-    data = _svg_root(data, name, unit, notes)
-    try:
-        # reify=False: svgelements' reification folds a transform's scale into a circle's,
-        # ellipse's or rect's own numbers, the signs of a negative one too (scale(-1,-1): r
-        # -5), so each shape keeps its own numbers and its whole transform, applied here
-        svg = S.SVG.parse(io.BytesIO(data), reify=False, ppi=96.0)
-    except Exception as ex:
-        raise DrawingError("E0130", f"`{name}` is not a readable SVG file ({type(ex).__name__})",
-                           "save it as plain SVG") from None
-    # svgelements gives px (its mm-to-px factor is rounded): undo its viewBox scale k (px per
-    # user unit) and apply the exact mm per user unit from the width attribute and viewBox
+def _svg_scale(svg, unit: str | None) -> tuple[float, str]:
+    """``(scale, unit)``: mm per px of svgelements' numbers (its viewBox scale undone, the exact
+    mm per user unit from ``unit``, else the width attribute and viewBox, else CSS px) and the
+    drawing's unit."""
     vb = getattr(svg, "viewbox", None)
     k = (float(svg.width) / vb.width) if vb is not None and vb.width and svg.width else 1.0
     if unit is not None:
@@ -45,7 +35,12 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
         mm_per_user = _css_mm(svg.values.get("width"), vb.width if vb is not None else None)
         if mm_per_user is None:
             mm_per_user = k * 25.4 / 96
-    scale = mm_per_user / k
+    return mm_per_user / k, unit
+
+
+def _svg_roots(S, svg, name: str, ident, layer) -> list:
+    """The elements read: the whole ``svg``, or those ``ident`` (ids) and ``layer`` (group ids or
+    Inkscape labels) select; E0132 naming the nearest ids for one that is not there."""
     roots = [svg]
     for sel, what in ((ident, "id"), (layer, "layer")):
         if sel is None:
@@ -62,7 +57,7 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
                         break
             if el is None:
                 ids = sorted({x.id for x in svg.elements() if getattr(x, "id", None)})
-                from ...diagnostics import did_you_mean
+                from ...base.diagnostics import did_you_mean
                 sugg = did_you_mean(w, ids)
                 raise DrawingError("E0132", f"`{name}` has no element or group with {what} "
                                             f"`{w}`",
@@ -70,6 +65,25 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
                                    if sugg else "ids: " + ", ".join(ids)[:300])
             found.append(el)
         roots = found
+    return roots
+
+
+def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> Drawing:
+    import svgelements as S
+    notes: list[Note] = []
+    data = _svg_root(data, name, unit, notes)
+    try:
+        # reify=False: svgelements' reification folds a transform's scale into a circle's,
+        # ellipse's or rect's own numbers, the signs of a negative one too (scale(-1,-1): r
+        # -5), so each shape keeps its own numbers and its whole transform, applied here
+        svg = S.SVG.parse(io.BytesIO(data), reify=False, ppi=96.0)
+    except Exception as ex:
+        raise DrawingError("E0130", f"`{name}` is not a readable SVG file ({type(ex).__name__})",
+                           "save it as plain SVG") from None
+    # svgelements gives px (its mm-to-px factor is rounded): undo its viewBox scale k (px per
+    # user unit) and apply the exact mm per user unit from the width attribute and viewBox
+    scale, unit = _svg_scale(svg, unit)
+    roots = _svg_roots(S, svg, name, ident, layer)
     pieces, loops, circles, ellipses = [], [], [], []
     texts: list = []
     lost_text: list = []            # "`the words` (why)", each a text not written

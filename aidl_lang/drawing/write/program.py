@@ -585,9 +585,9 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
                    budget=None, writer=None, snap: float | None = None) -> tuple[str, list[Note]]:
     """``aidl import``: the program of the drawing ``data`` (``name``: its file name) and the
     notes (skipped entities, left-out loops).  ``budget`` (a
-    :class:`~aidl_lang.limits.Budget`, default the compile's): the wall time of the whole
+    :class:`~aidl_lang.base.limits.Budget`, default the compile's): the wall time of the whole
     import, the shapes read (its ``geometry`` figure) and the program's size; a program
-    the compiler would refuse (more than :data:`~aidl_lang.limits.MAX_SOURCE_BYTES` or
+    the compiler would refuse (more than :data:`~aidl_lang.base.limits.MAX_SOURCE_BYTES` or
     ``budget.geometry`` statements) is ``E0304``, naming ``Drawing2D`` (nothing is
     written).  ``writer``: the function that writes the program from the layers read
     (default :func:`to_program`; ``aidl import --infer`` passes
@@ -595,8 +595,8 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
     (mm, ``--snap``): Bézier circles and arcs within it taken as true ones
     (:func:`~.snap.snap_drawing`), said in the program's header.  Raises
     :class:`~.read.DrawingError`."""
-    from ...limits import DEFAULT_BUDGET, Deadline, OutOfBudget
-    from ...limits import MAX_SOURCE_BYTES as MAX_IMPORT_BYTES
+    from ...base.limits import DEFAULT_BUDGET, Deadline, OutOfBudget
+    from ...base.limits import MAX_SOURCE_BYTES as MAX_IMPORT_BYTES
     from ..read.reader import MAX_ENTITIES, DrawingError, read_drawing
     budget = budget or DEFAULT_BUDGET
     deadline = Deadline.starting(budget)

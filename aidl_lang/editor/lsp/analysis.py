@@ -25,7 +25,7 @@ from lsprotocol import types as T
 
 from ... import ast as A
 from ... import registry as R
-from ...diagnostics import DiagnosticSink, Span, as_lf
+from ...base.diagnostics import DiagnosticSink, Span, as_lf
 from ...parser import mask_comments, parse
 from ...parsing.recovery import _blank_logical_line
 from . import plain
@@ -228,7 +228,7 @@ class Index:
     def _import(self, st: A.Import) -> None:
         """Bind what ``import`` brings: the other file's templates, params and top-level
         constants (or, with ``as``, a namespace holding them)."""
-        from ...sources import ImportRefused, load_import
+        from ...library.sources import ImportRefused, load_import
         if len(self._seen) > self.MAX_IMPORT_DEPTH:
             return
         try:

@@ -2,7 +2,7 @@
 (``textDocument/prepareRename``, ``textDocument/rename``).
 
 Quick fixes are generic: every pipeline diagnostic that carries a suggested fix
-(:class:`aidl_lang.diagnostics.Fix`, e.g. the did-you-mean renames of ``E0101``-``E0103``)
+(:class:`aidl_lang.base.diagnostics.Fix`, e.g. the did-you-mean renames of ``E0101``-``E0103``)
 publishes it in ``Diagnostic.data["fixes"]`` (:func:`~aidl_lang.editor.lsp.analysis.fix_edits`),
 and a code action request turns each into a ``quickfix`` action (the first one preferred), so
 new checks that attach a ``Fix`` show up in editors with no change here.

@@ -63,8 +63,8 @@ def configure(opts) -> None:
 
 def explain(code) -> dict:
     """The ``aidl/explain`` answer for ``code`` (raises ``KeyError`` with a message)."""
-    from ...codes import CODES
-    from ...diagnostics import did_you_mean
+    from ...base.codes import CODES
+    from ...base.diagnostics import did_you_mean
     from .plain import code_href
     c = str(code or "").strip().upper()
     if c not in CODES:

@@ -115,7 +115,7 @@ def _freedom(result) -> dict[str, str]:
     is done (``Result.freedom(detail=True)``, as ``aidl check --dof``: propagation, then an
     SVD of what is left, ~0.1 s for the 5 000-unknown gear pair) only when no structure has
     more than :data:`MAX_NAMED_UNKNOWNS` unknowns."""
-    from ...solver.freedom import degrees_of_freedom
+    from ...solver.diagnosis.freedom import degrees_of_freedom
     model = result.compiled.model
     counts = degrees_of_freedom(result.compiled.solve.solver, floating=False)
     root = model.root

@@ -19,7 +19,7 @@ import time
 
 from .preview import preview
 from .worker import diagnostics_json
-from ...workers import limit_memory, rss
+from ...host.workers import limit_memory, rss
 
 # four previews of large strings took the server to 3.9 GB, kept after the documents closed
 MEMORY_LIMIT = 3 << 30
@@ -58,7 +58,7 @@ def _serve() -> int:
                 answer = {"id": job["id"], "diagnostics": diags, "values": values,
                           "facts": extra}
         except Exception as e:        # answered, never a dead worker
-            from ...limits import is_out_of_memory
+            from ...base.limits import is_out_of_memory
             answer = {"id": job.get("id") if isinstance(job, dict) else None,
                       "oom" if is_out_of_memory(e) else "error": f"{type(e).__name__}: {e}"}
         if "oom" in answer:           # once the failed frames are gone: the located E0304

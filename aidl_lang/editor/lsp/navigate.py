@@ -11,7 +11,7 @@ links for ``import`` paths, workspace symbols.  Pure functions over source text 
   respected); any other word (``Circle``, ``mm``) every occurrence as a whole word outside
   comments and strings (``Text``);
 * :func:`document_links` — the path of each ``import "file.aidl"`` links to the file it
-  resolves to (:func:`aidl_lang.sources.resolve_import`: the importer's folder, then the
+  resolves to (:func:`aidl_lang.library.sources.resolve_import`: the importer's folder, then the
   standard library); an import that does not resolve gets no link (its diagnostic says why);
 * :func:`workspace_symbols` — structures, params, templates (and named geometry) of the open
   documents and of the ``.aidl`` files under the workspace folders, whose name contains the
@@ -130,7 +130,7 @@ def document_links(src: str, path: str, tooltips: bool = False) -> list[T.Docume
     """See the module doc; ``tooltips``: give each link the target's path as its tooltip (for
     clients that declare ``tooltipSupport``)."""
     from ... import ast as A
-    from ...sources import ImportRefused, resolve_import
+    from ...library.sources import ImportRefused, resolve_import
     prog = parse_tolerant(src, path)
     out = []
     for st in prog.stmts:

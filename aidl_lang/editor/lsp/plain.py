@@ -19,7 +19,7 @@ import os
 import re
 from pathlib import Path
 
-from ...diagnostics import Span, shown_path, split_lines
+from ...base.diagnostics import Span, shown_path, split_lines
 
 _SEVERITY = {"error": 1, "warning": 2, "note": 3}
 
@@ -74,7 +74,7 @@ def span_range(src: str, sp: Span, lines: list[str] | None = None) -> dict:
 
 def diagnostic_json(src: str, path: str, d, uri: str | None = None,
                     lines: list[str] | None = None, sources: dict | None = None) -> dict:
-    """One pipeline :class:`~aidl_lang.diagnostics.Diagnostic` as an LSP ``Diagnostic`` dict
+    """One pipeline :class:`~aidl_lang.base.diagnostics.Diagnostic` as an LSP ``Diagnostic`` dict
     (see the module doc). A diagnostic raised inside a template of another file is at its
     call in the document already (the pipeline moved it: issue 86), the template's place a
     label; one still located in another file is put on line 1 with its location in the
@@ -153,7 +153,7 @@ def fix_edits(src: str, path: str, d, lines: list[str] | None = None) -> list[di
     the message quotes that name (an unknown keyword argument). Fixes located in another file
     are left out. Carried in ``Diagnostic.data`` for ``textDocument/codeAction``."""
     from ...parsing.controls import code_point, invisible
-    from ...diagnostics import Fix
+    from ...base.diagnostics import Fix
     fix = d.fix
     if fix is None and d.suggestions and d.span is not None and d.span.file == path:
         # no Fix, but suggestions for the name the diagnostic is about: when its span starts
@@ -192,7 +192,7 @@ def quick_diagnostics(src: str, path: str, uri: str | None = None) -> list[dict]
     When they hold an error they are exactly what the whole pipeline reports (it stops at the
     first stage with errors).  None if the program is too deep to check here (the pipeline
     checks it on a large stack)."""
-    from ...diagnostics import DiagnosticSink
+    from ...base.diagnostics import DiagnosticSink
     from ...parser import parse
     from ...typecheck import check
     text = src[1:] if src.startswith("\ufeff") else src     # as the pipeline reads it

@@ -34,7 +34,7 @@ from pygls.protocol import LanguageServerProtocol
 from pygls.protocol.language_server import lsp_method
 from pygls.workspace import TextDocument
 
-from ...diagnostics import as_lf
+from ...base.diagnostics import as_lf
 from ..fmt import newline_of
 from . import analysis, edits, features, preview, semantic, signature, window
 from .worker import AnalysisTimeout, Analyzer
@@ -233,7 +233,7 @@ async def shutdown(ls: LanguageServer, params):
 
 class _Document(TextDocument):
     """pygls' document with the lines a client counts, ended by CR LF, a lone CR or LF only
-    (:data:`aidl_lang.diagnostics.LINE_BREAK`): pygls splits with ``str.splitlines``, which
+    (:data:`aidl_lang.base.diagnostics.LINE_BREAK`): pygls splits with ``str.splitlines``, which
     also breaks at a form feed, a vertical tab, U+001C-U+001E, U+0085, U+2028 and U+2029, so
     an edit on a line after one of them (in a comment, in a string) landed a line late."""
 
@@ -253,7 +253,7 @@ _LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+\Z")     # a line with its b
 
 def _lines_as_lf(ls: LanguageServer, uri: str) -> None:
     """After pygls applied an open or a change: the document as the server reads it has each
-    lone CR as LF (:func:`aidl_lang.diagnostics.as_lf`: the same lines, columns and offsets as
+    lone CR as LF (:func:`aidl_lang.base.diagnostics.as_lf`: the same lines, columns and offsets as
     the client's, whose lines end at CR LF, CR or LF), so every feature counts lines as the
     client does; the line ending its formatting writes is kept (the client's first)."""
     doc = ls.workspace.get_text_document(uri)

@@ -28,7 +28,7 @@ import sys
 import threading
 import time
 
-from ...limits import DEFAULT_BUDGET, wall_limit
+from ...base.limits import DEFAULT_BUDGET, wall_limit
 
 
 def diagnostics_json(src: str, path: str, solve: bool = True, uri: str | None = None,

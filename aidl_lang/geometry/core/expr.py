@@ -4,7 +4,7 @@ An expression is either affine, :class:`Lin` (``sum(coef_i * x_i) + c``: most CA
 kept as sparse rows), or a nonlinear :class:`Nl` tree.  Values are in mm and radians.
 :func:`evaluate` computes one value in Python (the interpreter's starting values, branch
 choices); the solver compiles expressions into a vectorised tape with a reverse-mode Jacobian
-(:mod:`aidl_lang.solver.tape`), where ``min``/``max`` become frozen branch selections (paper,
+(:mod:`aidl_lang.solver.core.tape`), where ``min``/``max`` become frozen branch selections (paper,
 appendix "Solver Details", *Iterated Newton solve for branching expressions*).
 """
 from __future__ import annotations

@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...records import Record
-from ...diagnostics import Span
+from ...base.records import Record
+from ...base.diagnostics import Span
 from .expr import Expr, Lin, _new, var
 
 
@@ -270,12 +270,12 @@ class Constraint(Record):
         self.text = text
         self.implicit = implicit  # created by a constructor, not written by the user
         # a hold (a Drawing2D's placement at its `at`): its rows are kept only along what the
-        # other constraints leave free (aidl_lang.solver.holds.settle_holds)
+        # other constraints leave free (aidl_lang.solver.core.holds.settle_holds)
         self.hold = hold
         self.released = released  # a hold given up after a failed solve (settle_holds)
         # the structures each argument reaches, in the order written (a written constraint
         # relating more than one structure; else None): the first-named moves to the later
-        # ones (aidl_lang.solver.hierarchy, "who moves")
+        # ones (aidl_lang.solver.core.hierarchy, "who moves")
         self.args = None
 
     def describe(self) -> str:

@@ -10,7 +10,7 @@ validity rules can be checked where the value is used.
 """
 from __future__ import annotations
 
-from ...records import Record
+from ...base.records import Record
 from .expr import Expr, _lin, as_const, lift
 from .model import Geometry, Point, Structure
 

@@ -30,8 +30,8 @@ from __future__ import annotations
 
 import math
 
-from ...diagnostics import EvalError
-from ...limits import DEFAULT_BUDGET
+from ...base.diagnostics import EvalError
+from ...base.limits import DEFAULT_BUDGET
 from ..core.expr import Lin, _lin, combine, var
 from .corners import Chosen, FinishCall
 from ..core.model import Constraint, Equation, Geometry, Point, Structure, equation
@@ -510,7 +510,7 @@ def _allow_overlap(items: list, S=None, span=None) -> None:
     """``AllowOverlap(a, b, ...)``: the shapes and structures named (lists, such as the
     copies a loop makes, are spread out) may overlap.  Each hole among them (a hole structure,
     or a shape in one) may be refilled by every other (W0501, W0508:
-    :func:`aidl_lang.output.checks.openings._intended`); every two solid structures among them
+    :func:`aidl_lang.output.checks.holes.openings._intended`); every two solid structures among them
     (parts of an assembly) may interpenetrate (W0511:
     :func:`aidl_lang.output.checks.parts._allowed`).  Both are kept in the structures'
     ``overlap_ok`` sets; the call itself (``span``, the things named) in the ``allowances`` of
@@ -598,7 +598,7 @@ def _flat(items: list) -> list:
 
 def _rigid(ctx, items: list) -> None:
     """``Rigid(a, b, ...)``: a structure is marked rigid (the solver of its ancestors moves it
-    only by its frame, :func:`aidl_lang.solver.hierarchy._rigid_below`); shapes keep their
+    only by its frame, :func:`aidl_lang.solver.core.hierarchy._rigid_below`); shapes keep their
     points' starting offsets from the first shape's first point (two linear equations per
     point, in the writing structure's frame): they move together, translation only."""
     S = ctx.struct

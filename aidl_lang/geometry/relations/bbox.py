@@ -180,45 +180,8 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
             xs += [px - r, px + r]
             ys += [py - r, py + r]
         return
-    if k == "ArcSlot":
-        # the end caps (half circles of width/2 around start and end) and the outer arc's
-        # extremes that its sweep passes (held shape: angles and radii are numbers)
-        h = g.data["dims"]["width"] / 2
-        Ro = g.data["dims"]["outer_radius"]
-        a1, sweep = g.data["angles"]
-        for n in ("start", "end"):
-            px, py = P[n]
-            xs += [px - h, px + h]
-            ys += [py - h, py + h]
-        cx, cy = P["center"]
-        for ang, (dx, dy) in ((0.0, (1, 0)), (math.pi / 2, (0, 1)), (math.pi, (-1, 0)),
-                              (1.5 * math.pi, (0, -1))):
-            if (ang - a1) % (2 * math.pi) <= sweep:
-                if dx:
-                    xs.append(cx + Ro * dx)
-                else:
-                    ys.append(cy + Ro * dy)
-        return
-    if k == "Sector":
-        # the radial lines' ends (the center of a pie slice) and the outer arc's extremes
-        # that its sweep passes (a held shape: angles and radii are numbers)
-        R = g.data["dims"]["radius"]
-        sweep = g.data["angles"][1]
-        c, m = g.points["center"], g.points["midpoint"]       # a copy's, turned or mirrored
-        a1 = math.atan2(x[m.iy] - x[c.iy], x[m.ix] - x[c.ix]) - sweep / 2
-        for n in ("start", "end", "inner_start", "inner_end") if "inner_start" in P else \
-                ("start", "end", "center"):
-            px, py = P[n]
-            xs.append(px)
-            ys.append(py)
-        cx, cy = P["center"]
-        for ang, (dx, dy) in ((0.0, (1, 0)), (math.pi / 2, (0, 1)), (math.pi, (-1, 0)),
-                              (1.5 * math.pi, (0, -1))):
-            if (ang - a1) % (2 * math.pi) <= sweep:
-                if dx:
-                    xs.append(cx + R * dx)
-                else:
-                    ys.append(cy + R * dy)
+    if k in _ARCS:
+        _arc_candidates(g, P, x, xs, ys)
         return
     if k == "Intersect":
         # inside its first closed shape: that shape's box (larger than the common area's)
@@ -240,28 +203,6 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
         xs += sx
         ys += sy
         return
-    if k == "Arc":
-        cx, cy = P["center"]
-        sx, sy = P["start"]
-        ex, ey = P["end"]
-        xs += [sx, ex]
-        ys += [sy, ey]
-        c = g.points["center"]
-        s = g.points["start"]
-        e = g.points["end"]
-        a1 = math.atan2(x[s.iy] - x[c.iy], x[s.ix] - x[c.ix])
-        a2 = math.atan2(x[e.iy] - x[c.iy], x[e.ix] - x[c.ix])
-        sweep = (a2 - a1) % (2 * math.pi) or 2 * math.pi
-        r = func("sqrt", (var(s.ix) - var(c.ix)) * (var(s.ix) - var(c.ix))
-                 + (var(s.iy) - var(c.iy)) * (var(s.iy) - var(c.iy)))
-        for ang, (dx, dy) in ((0.0, (1, 0)), (math.pi / 2, (0, 1)), (math.pi, (-1, 0)),
-                              (1.5 * math.pi, (0, -1))):
-            if (ang - a1) % (2 * math.pi) <= sweep:
-                if dx:
-                    xs.append(cx + r * dx)
-                else:
-                    ys.append(cy + r * dy)
-        return
     if k == "Ellipse":
         cx, cy = P["center"]
         rx, ry = var(g.scalars["rx"].index), var(g.scalars["ry"].index)
@@ -271,26 +212,6 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
         ey = func("sqrt", rx * rx * (sn * sn) + ry * ry * (cs * cs))
         xs += [cx - ex, cx + ex]
         ys += [cy - ey, cy + ey]
-        return
-    if k == "EllipticArc":
-        # rigid: its ends and the extremes of x and y its sweep passes, each the center
-        # plus its offset at the values (the arc of a copy, turned or mirrored, from its
-        # own points)
-        from ..shapes.curves import elliptic_arc
-        pt = {n: (float(x[g.points[n].ix]), float(x[g.points[n].iy]))
-              for n in ("center", "vertex", "co_vertex", "start", "midpoint", "end")}
-        c = pt["center"]
-        arc = elliptic_arc(c, math.dist(c, pt["vertex"]), math.dist(c, pt["co_vertex"]),
-                           math.atan2(pt["vertex"][1] - c[1], pt["vertex"][0] - c[0]),
-                           pt["start"], pt["midpoint"], pt["end"])
-        cx, cy = P["center"]
-        for n in ("start", "end"):
-            px, py = P[n]
-            xs.append(px)
-            ys.append(py)
-        x0, y0, x1, y1 = arc.box()
-        xs += [cx + (x0 - c[0]), cx + (x1 - c[0])]
-        ys += [cy + (y0 - c[1]), cy + (y1 - c[1])]
         return
     if k in ("Spline", "Bezier"):
         _spline_candidates(g, P, x, xs, ys)
@@ -319,6 +240,91 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
             continue
         xs.append(px)
         ys.append(py)
+
+
+_ARCS = ("ArcSlot", "Sector", "Arc", "EllipticArc")
+
+
+def _arc_candidates(g: Geometry, P: dict, x, xs: list, ys: list) -> None:
+    """:func:`_geom_candidates` of the kinds with a sweep (:data:`_ARCS`): their ends and the
+    extremes of x and y the sweep passes."""
+    k = g.kind
+    if k == "ArcSlot":
+        # the end caps (half circles of width/2 around start and end) and the outer arc's
+        # extremes that its sweep passes (held shape: angles and radii are numbers)
+        h = g.data["dims"]["width"] / 2
+        Ro = g.data["dims"]["outer_radius"]
+        a1, sweep = g.data["angles"]
+        for n in ("start", "end"):
+            px, py = P[n]
+            xs += [px - h, px + h]
+            ys += [py - h, py + h]
+        cx, cy = P["center"]
+        _quadrants(cx, cy, Ro, a1, sweep, xs, ys)
+        return
+    if k == "Sector":
+        # the radial lines' ends (the center of a pie slice) and the outer arc's extremes
+        # that its sweep passes (a held shape: angles and radii are numbers)
+        R = g.data["dims"]["radius"]
+        sweep = g.data["angles"][1]
+        c, m = g.points["center"], g.points["midpoint"]       # a copy's, turned or mirrored
+        a1 = math.atan2(x[m.iy] - x[c.iy], x[m.ix] - x[c.ix]) - sweep / 2
+        for n in ("start", "end", "inner_start", "inner_end") if "inner_start" in P else \
+                ("start", "end", "center"):
+            px, py = P[n]
+            xs.append(px)
+            ys.append(py)
+        cx, cy = P["center"]
+        _quadrants(cx, cy, R, a1, sweep, xs, ys)
+        return
+    if k == "Arc":
+        cx, cy = P["center"]
+        sx, sy = P["start"]
+        ex, ey = P["end"]
+        xs += [sx, ex]
+        ys += [sy, ey]
+        c = g.points["center"]
+        s = g.points["start"]
+        e = g.points["end"]
+        a1 = math.atan2(x[s.iy] - x[c.iy], x[s.ix] - x[c.ix])
+        a2 = math.atan2(x[e.iy] - x[c.iy], x[e.ix] - x[c.ix])
+        sweep = (a2 - a1) % (2 * math.pi) or 2 * math.pi
+        r = func("sqrt", (var(s.ix) - var(c.ix)) * (var(s.ix) - var(c.ix))
+                 + (var(s.iy) - var(c.iy)) * (var(s.iy) - var(c.iy)))
+        _quadrants(cx, cy, r, a1, sweep, xs, ys)
+        return
+    if k == "EllipticArc":
+        # rigid: its ends and the extremes of x and y its sweep passes, each the center
+        # plus its offset at the values (the arc of a copy, turned or mirrored, from its
+        # own points)
+        from ..shapes.curves import elliptic_arc
+        pt = {n: (float(x[g.points[n].ix]), float(x[g.points[n].iy]))
+              for n in ("center", "vertex", "co_vertex", "start", "midpoint", "end")}
+        c = pt["center"]
+        arc = elliptic_arc(c, math.dist(c, pt["vertex"]), math.dist(c, pt["co_vertex"]),
+                           math.atan2(pt["vertex"][1] - c[1], pt["vertex"][0] - c[0]),
+                           pt["start"], pt["midpoint"], pt["end"])
+        cx, cy = P["center"]
+        for n in ("start", "end"):
+            px, py = P[n]
+            xs.append(px)
+            ys.append(py)
+        x0, y0, x1, y1 = arc.box()
+        xs += [cx + (x0 - c[0]), cx + (x1 - c[0])]
+        ys += [cy + (y0 - c[1]), cy + (y1 - c[1])]
+        return
+
+
+def _quadrants(cx, cy, r, a1: float, sweep: float, xs: list, ys: list) -> None:
+    """The extremes of x and y (at 0, 90, 180, 270 degrees) of the circle about ``(cx, cy)``
+    of radius ``r`` that the sweep ``sweep`` from angle ``a1`` passes, added to ``xs``, ``ys``."""
+    for ang, (dx, dy) in ((0.0, (1, 0)), (math.pi / 2, (0, 1)), (math.pi, (-1, 0)),
+                          (1.5 * math.pi, (0, -1))):
+        if (ang - a1) % (2 * math.pi) <= sweep:
+            if dx:
+                xs.append(cx + r * dx)
+            else:
+                ys.append(cy + r * dy)
 
 
 def _spline_candidates(g: Geometry, P: dict, x, xs: list, ys: list) -> None:

@@ -468,24 +468,27 @@ def _bb(ctx, v, side, name):
     return b
 
 
-def above(ctx, a, b, gap=None, **_):
+def _apart(ctx, far, near, gap) -> list:
+    """``far``'s box side less ``near``'s is ``gap`` (0 when not given); each a triple
+    ``(value, side, argument name)``: Above, Below, LeftOf, RightOf."""
     g = gap.expr if gap is not None else 0.0
-    return [equation(sub(sub(_bb(ctx, a, "bottom", "a"), _bb(ctx, b, "top", "b")), g))]
+    return [equation(sub(sub(_bb(ctx, *far), _bb(ctx, *near)), g))]
+
+
+def above(ctx, a, b, gap=None, **_):
+    return _apart(ctx, (a, "bottom", "a"), (b, "top", "b"), gap)
 
 
 def below(ctx, a, b, gap=None, **_):
-    g = gap.expr if gap is not None else 0.0
-    return [equation(sub(sub(_bb(ctx, b, "bottom", "b"), _bb(ctx, a, "top", "a")), g))]
+    return _apart(ctx, (b, "bottom", "b"), (a, "top", "a"), gap)
 
 
 def left_of(ctx, a, b, gap=None, **_):
-    g = gap.expr if gap is not None else 0.0
-    return [equation(sub(sub(_bb(ctx, b, "left", "b"), _bb(ctx, a, "right", "a")), g))]
+    return _apart(ctx, (b, "left", "b"), (a, "right", "a"), gap)
 
 
 def right_of(ctx, a, b, gap=None, **_):
-    g = gap.expr if gap is not None else 0.0
-    return [equation(sub(sub(_bb(ctx, a, "left", "a"), _bb(ctx, b, "right", "b")), g))]
+    return _apart(ctx, (a, "left", "a"), (b, "right", "b"), gap)
 
 
 def inside(ctx, a, b, margin=None, **_):

@@ -2,8 +2,8 @@
 computations on their *carriers* (the infinite line or the full circle a segment lies on).
 
 These are the output's geometry (issue "Exact by construction"): every shape of a program has
-an exact outline made of these segments (:mod:`aidl_lang.output.part.booleans` builds them from the
-solved model), the booleans' polygons are put back on them (:mod:`aidl_lang.output.part.exact`),
+an exact outline made of these segments (:mod:`aidl_lang.output.part.build.booleans` builds them from the
+solved model), the booleans' polygons are put back on them (:mod:`aidl_lang.output.part.edges.exact`),
 fillets and chamfers are cut on them (:mod:`aidl_lang.geometry.derived.operations`), and every writer
 reads them.  All lengths are in millimetres, angles in radians, counter-clockwise positive,
 y up.
@@ -30,7 +30,7 @@ from functools import cached_property
 
 from .ellipse import EllipseCurve, cross_circle as _e_circle, cross_ellipse as _e_ellipse, \
     cross_line as _e_line, cross_spline as _e_spline, nearest_approach as _e_nearest
-from ...records import Compared, Frozen
+from ...base.records import Compared, Frozen
 
 Point = tuple[float, float]
 

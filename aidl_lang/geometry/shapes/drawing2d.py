@@ -344,7 +344,7 @@ def build(ctx, g, a, const) -> None:
     The origin is *held* at a constant ``at`` (a :attr:`~.model.Constraint.hold`, issue 49):
     along every direction the program's constraints leave free it stays there, so a drawing
     nothing places sits exactly where its file (or ``at``) puts it, pinned as one rigid body
-    (:func:`~aidl_lang.solver.system.pinned`), instead of floating with 2 freedoms that a
+    (:func:`~aidl_lang.solver.core.system.pinned`), instead of floating with 2 freedoms that a
     solve may shift; a constraint that places it (``d.bb.left == 30``,
     ``Fixed(d.origin)``) takes that direction over.  A derived ``at`` (another shape's
     point) is an equation, as for any shape."""

@@ -21,7 +21,7 @@ import math
 
 import numpy as np
 
-from ...records import Frozen
+from ...base.records import Frozen
 
 Point = tuple[float, float]
 

@@ -7,6 +7,9 @@ given rotation: six linear equations).  Paper section "AIDL by example": shared 
 implicit coincidence constraints.
 
 Members (``rect.top_left``, ``line.midpoint`` ...) are resolved by :func:`.members.member`.
+This module holds the basic shapes and the helpers every constructor shares; shapes given by
+points are :mod:`.point_shapes`', shapes made from shapes :mod:`.composites`', and the entry,
+:func:`~.constructors.build`, :mod:`.constructors`'.
 """
 from __future__ import annotations
 
@@ -24,27 +27,6 @@ class PrimitiveError(Exception):
     def __init__(self, message: str, hint: str | None = None):
         super().__init__(message)
         self.hint = hint
-
-
-def build(ctx, kind: str, args: dict, span) -> Geometry:
-    """Create geometry ``kind`` in ``ctx.struct`` from bound arguments ``args``."""
-    g = _new(Geometry)                 # Geometry(kind, ctx.struct, span, ...) without the class call
-    g.kind = kind
-    g.owner = ctx.struct
-    g.span = span
-    g.name = ""
-    g.points = {}
-    g.scalars = {}
-    g.data = {}
-    g.parts = {}
-    g.construction = bool(args.get("construction", False))
-    g.closed = False
-    g.listed = True
-    g.pattern_original = None
-    fn = _BUILD.get(kind) or globals()["_build_" + kind]
-    fn(ctx, g, args)
-    ctx.struct.geometry.append(g)
-    return g
 
 
 def _cos_sin(rot: float) -> tuple[float, float]:
@@ -498,119 +480,6 @@ def _hold_literal_shape(ctx, g, given: list, pts: list, a: dict) -> None:
     ctx.internal(g, eqs, f"{g.kind} shape (literal coordinates)")
 
 
-def _build_Polygon(ctx, g, a):
-    pts_in = a["points"]
-    if len(pts_in) < 3:
-        raise PrimitiveError(f"a Polygon needs at least 3 points, got {len(pts_in)}")
-    _check_polygon_points(ctx, pts_in)
-    pts = _point_list(ctx, g, pts_in, a)
-    g.data["edges"] = _polygon_edges(ctx, g, pts)
-    g.closed = True
-
-
-def _build_Polyline(ctx, g, a):
-    """An open chain of straight segments through the points (closed=true: a Polygon)."""
-    if a.get("closed"):
-        _build_Polygon(ctx, g, a)
-        g.data["closed"] = True
-        return
-    pts_in = a["points"]
-    if len(pts_in) < 2:
-        raise PrimitiveError(f"an open Polyline needs at least 2 points, got {len(pts_in)}")
-    xy = _start_xy(ctx, pts_in)
-    if xy is not None:
-        scale = _size(xy)
-        for i in range(len(xy) - 1):
-            (x0, y0), (x1, y1) = xy[i], xy[i + 1]
-            if math.hypot(x1 - x0, y1 - y0) <= 1e-9 * scale:
-                raise PrimitiveError(f"a Polyline's points[{i}] and points[{i + 1}] are the "
-                                     f"same point ({x0:g}, {y0:g}): a segment of zero "
-                                     f"length; remove one of them")
-    pts = _point_list(ctx, g, pts_in, a)
-    g.data["closed"] = False
-    g.data["edges"] = _polygon_edges(ctx, g, pts)[:-1]
-    g.closed = False
-
-
-def _build_Spline(ctx, g, a):
-    from .spline import SplineError, check_points
-    pts_in = a["points"]
-    closed = bool(a.get("closed", False))
-    xy = _start_xy(ctx, pts_in)
-    try:
-        check_points(xy if xy is not None else [(0.0, float(i)) for i in range(len(pts_in))],
-                     closed)
-    except SplineError as ex:
-        raise PrimitiveError(str(ex)) from None
-    pts = _point_list(ctx, g, pts_in, a)
-    g.data["closed"] = closed
-    g.data["corners"] = _spline_corners(ctx, a.get("corners"), len(pts), closed)
-    g.closed = closed
-
-
-def _build_Bezier(ctx, g, a):
-    """A chain of cubic Bézier segments: ``points`` are ``p0, c1, c2, p1, c3, c4, p2, ...``
-    (``3 k + 1`` for ``k`` segments, each ``p_i, c, c, p_i+1``, mm); ``closed``: the last point
-    is the first (held as one point) and the chain is an outline.  The curve is the control
-    points' own cubics, exactly (the carrier is :class:`~.spline.CubicSpline`)."""
-    pts_in = list(a["points"])
-    closed = bool(a.get("closed", False))
-    m = len(pts_in)
-    if m < 4 or (m - 1) % 3:
-        k = max(1, round((m - 1) / 3))
-        raise PrimitiveError(
-            f"a Bezier chain takes 3k+1 points (p0, c1, c2, p1, c3, c4, p2, ...: each cubic "
-            f"segment two control points and an end point), got {m}: give "
-            f"{3 * k + 1} points for {k} segment{'s' if k != 1 else ''}"
-            + (" (the last repeating the first when closed)" if closed else ""))
-    if m > 3 * 2000 + 1:
-        raise PrimitiveError(f"a Bezier chain takes at most {3 * 2000 + 1} points, got {m}")
-    xy = _start_xy(ctx, pts_in)
-    if xy is not None:
-        scale = _size(xy)
-        if closed and math.dist(xy[0], xy[-1]) > 1e-9 * scale:
-            raise PrimitiveError(
-                f"a closed Bezier chain ends where it starts: its last point "
-                f"({xy[-1][0]:g}, {xy[-1][1]:g}) is not its first ({xy[0][0]:g}, "
-                f"{xy[0][1]:g}); repeat the first point at the end, or use closed=false")
-        for i in range(0, m - 1, 3):
-            if all(math.dist(xy[i], xy[i + j]) <= 1e-9 * scale for j in (1, 2, 3)):
-                raise PrimitiveError(
-                    f"a Bezier's segment {i // 3} (points[{i}] to points[{i + 3}]) is one "
-                    f"point ({xy[i][0]:g}, {xy[i][1]:g}): remove it")
-    keep = pts_in[:-1] if closed else pts_in
-    pts = _point_list(ctx, g, keep, a)
-    g.data["closed"] = closed
-    g.data["bezier"] = True
-    g.closed = closed
-
-
-def _spline_corners(ctx, v, m: int, closed: bool) -> tuple[int, ...]:
-    """``corners=[i, ...]``: indices (0 .. m - 1) of a Spline's points where it turns sharply;
-    an open spline's first and last points are ends already."""
-    if v is None:
-        return ()
-    items = list(v) if isinstance(v, (list, tuple)) else [v]
-    out = []
-    for q in items:
-        c = q.const() if isinstance(q, Q) and q.dim == NUM else None
-        if c is None or abs(c - round(c)) > 1e-9:
-            raise PrimitiveError(f"a Spline's corners are indices of its points (whole numbers "
-                                 f"0 to {m - 1}), got {type_name(q) if c is None else f'{c:g}'}")
-        i = int(round(c))
-        if i < 0:
-            i += m                                  # corners=[-1]: the last point, as lists
-        if not 0 <= i < m:
-            raise PrimitiveError(f"a Spline's corner {int(round(c))} is not one of its points "
-                                 f"(indices 0 to {m - 1})")
-        if not closed and i in (0, m - 1):
-            raise PrimitiveError(f"corner {i} is an end of the open Spline, where it stops "
-                                 f"anyway: name inner points (1 to {m - 2}), or use "
-                                 f"closed=true")
-        out.append(i)
-    return tuple(sorted(set(out)))
-
-
 def _start_xy(ctx, pts) -> list[tuple[float, float]] | None:
     """The starting coordinates (mm) of a point list, or None when an item is not a point
     (its own error comes where the points are made)."""
@@ -623,84 +492,6 @@ def _start_xy(ctx, pts) -> list[tuple[float, float]] | None:
 def _size(xy) -> float:
     """The scale for "the same point" tests on ``xy``: its largest coordinate, at least 1 mm."""
     return max(1.0, max(abs(v) for pt in xy for v in pt))
-
-
-def _check_polygon_points(ctx, pts) -> None:
-    """Starting points: no two consecutive ones equal (a zero-length edge), not all on one
-    line (no area)."""
-    xy = _start_xy(ctx, pts)
-    if xy is None:
-        return
-    n = len(xy)
-    scale = _size(xy)
-    for i in range(n):
-        (x0, y0), (x1, y1) = xy[i], xy[(i + 1) % n]
-        if math.hypot(x1 - x0, y1 - y0) <= 1e-9 * scale:
-            raise PrimitiveError(f"a Polygon's points[{i}] and points[{(i + 1) % n}] are the "
-                                 f"same point ({x0:g}, {y0:g}): an edge of zero length")
-    area = sum(xy[i][0] * xy[(i + 1) % n][1] - xy[(i + 1) % n][0] * xy[i][1] for i in range(n))
-    if abs(area) <= 1e-9 * scale * scale:
-        _no_area(xy, scale)
-
-
-def _no_area(xy, scale: float) -> None:
-    """The E0108 of a Polygon whose starting points ``xy`` enclose no area: two edges that
-    cross (a "bowtie" whose two halves cancel), with the points' order around their centre
-    as the fix when that order does not cross; else all on one line, or an outline that goes
-    out and back along itself."""
-    crossing = _first_crossing(xy)
-    if crossing is not None:
-        i, j, (x, y) = crossing
-        n = len(xy)
-        hint = "reorder the points so that they go once around the outline without crossing"
-        order = sorted(range(n), key=lambda k: math.atan2(xy[k][1] - sum(p[1] for p in xy) / n,
-                                                          xy[k][0] - sum(p[0] for p in xy) / n))
-        if _first_crossing([xy[k] for k in order]) is None:
-            hint += (": " + ", ".join(f"points[{k}]" for k in order) + " ("
-                     + ", ".join(f"({xy[k][0]:g}, {xy[k][1]:g})" for k in order) + ")")
-        raise PrimitiveError(
-            f"a Polygon's edges cross: edge {i} (points[{i}] to points[{(i + 1) % n}]) crosses "
-            f"edge {j} (points[{j}] to points[{(j + 1) % n}]) at ({x:g}, {y:g}); the outline "
-            "is self-intersecting (a bowtie) and its two halves cancel: it has no area",
-            hint=hint)
-    x0, y0 = xy[0]
-    far = max(xy, key=lambda p: math.hypot(p[0] - x0, p[1] - y0))
-    L = math.hypot(far[0] - x0, far[1] - y0)
-    if all(abs((p[0] - x0) * (far[1] - y0) - (p[1] - y0) * (far[0] - x0)) <= 1e-9 * scale * L
-           for p in xy):
-        raise PrimitiveError("a Polygon's points are all on one line: it has no area")
-    raise PrimitiveError("a Polygon's outline goes out and comes back along itself: it "
-                         "encloses no area", hint="give it points that go once around an "
-                         "inside, in order")
-
-
-def _first_crossing(xy) -> tuple | None:
-    """``(i, j, point)``: the first two edges ``i < j`` of the closed polygon ``xy`` (its
-    points in order, mm) that cross each other properly (each edge's ends strictly on both
-    sides of the other), or None; edges sharing a point are not compared.  None too past
-    2,000 points (n^2 pairs, a check not worth its time there)."""
-    import numpy as np            # only on this error's path
-    n = len(xy)
-    if n > 2000:
-        return None
-    P = np.asarray(xy, dtype=float)
-    Q = np.roll(P, -1, axis=0)
-    D = Q - P
-    for i in range(n - 2):
-        j = np.arange(i + 2, n - (1 if i == 0 else 0))
-        if not len(j):
-            continue
-        a = D[i, 0] * (P[j, 1] - P[i, 1]) - D[i, 1] * (P[j, 0] - P[i, 0])
-        b = D[i, 0] * (Q[j, 1] - P[i, 1]) - D[i, 1] * (Q[j, 0] - P[i, 0])
-        c = D[j, 0] * (P[i, 1] - P[j, 1]) - D[j, 1] * (P[i, 0] - P[j, 0])
-        d = D[j, 0] * (Q[i, 1] - P[j, 1]) - D[j, 1] * (Q[i, 0] - P[j, 0])
-        hit = np.flatnonzero((a * b < 0) & (c * d < 0))
-        if len(hit):
-            k = int(j[hit[0]])
-            u = float(c[hit[0]] / (c[hit[0]] - d[hit[0]]))
-            x, y = P[i] + u * D[i]
-            return i, k, (round(float(x), 9) + 0.0, round(float(y), 9) + 0.0)
-    return None
 
 
 def _build_RegularPolygon(ctx, g, a):
@@ -821,185 +612,6 @@ def _build_Sector(ctx, g, a):
     g.closed = True
 
 
-def _source(v, what: str) -> Geometry:
-    """The shape an Offset, Shell or Hull is made from: geometry with an inside."""
-    if not isinstance(v, GeomRef):
-        raise PrimitiveError(f"{what} takes shapes (a Circle, Rectangle, Polygon, Slot, ...), "
-                             f"got {type_name(v)}")
-    g = v.geom
-    if g.kind in ("Spline", "Bezier"):
-        raise PrimitiveError(f"{what} of a {g.kind} cannot be exact: the offset (or hull) of a "
-                             f"cubic spline is not a cubic spline, and outputs here are exact "
-                             f"or refused; draw the grown outline as a second Spline through "
-                             f"offset points, or offset a Polygon or arcs instead")
-    if not g.closed or g.kind == "Text":
-        raise PrimitiveError(f"{what} takes closed shapes (a Circle, Rectangle, Polygon, "
-                             f"Slot, ...), not a {g.kind}")
-    return g
-
-
-def _consume(g: Geometry, sources: list) -> None:
-    """``g`` is made from ``sources``, which are no longer drawn (construction geometry:
-    still solved, shown with ``--show construction``), as OpenSCAD's offset() and hull()
-    replace their children."""
-    for src in sources:
-        src.construction = True
-    g.data["sources"] = list(sources)
-    g.closed = True
-
-
-def _join(a) -> str:
-    j = a.get("join", "round")
-    if j not in ("round", "miter"):
-        raise PrimitiveError(f'join must be "round" or "miter", got "{j}"')
-    return j
-
-
-def _build_Offset(ctx, g, a, sign: float = 1.0):
-    src = _source(a["shape"], "Offset" if sign > 0 else "Inset")
-    g.data["distance"] = sign * _const(ctx, a["distance"], "Offset distance")
-    g.data["join"] = _join(a)
-    _consume(g, [src])
-
-
-def _build_Inset(ctx, g, a):
-    g.kind = "Offset"
-    _build_Offset(ctx, g, a, -1.0)
-
-
-def _build_Shell(ctx, g, a):
-    src = _source(a["shape"], "Shell")
-    t = _const(ctx, a["thickness"], "Shell thickness")
-    if t == 0:
-        raise PrimitiveError("a Shell needs a non-zero thickness (positive: the wall outside "
-                             "the shape; negative: inside it)")
-    g.data["thickness"] = t
-    g.data["join"] = _join(a)
-    _consume(g, [src])
-
-
-def _build_Hull(ctx, g, a):
-    if "shapes" in a:
-        v = a["shapes"]
-        items = list(v) if isinstance(v, (list, tuple)) else [v]
-    else:
-        items = [a[f"shape{i}"] for i in range(1, 7) if a.get(f"shape{i}") is not None]
-    if not items:
-        raise PrimitiveError("Hull needs at least one shape")
-    _consume(g, [_source(v, "Hull") for v in items])
-
-
-CLIPPED = ("Line", "Arc", "Polyline")       # open curves an Intersect clips
-
-
-def _build_Intersect(ctx, g, a):
-    """What the closed shapes have in common; open curves among them are clipped to it (a
-    clip: ``g.data["clip"]``, the open sources, drawn as lines).  Lists are flattened."""
-    raw = a["shapes"] if "shapes" in a else \
-        [a[f"shape{i}"] for i in range(1, 7) if a.get(f"shape{i}") is not None]
-    items: list = []
-    stack = list(raw) if isinstance(raw, (list, tuple)) else [raw]
-    while stack:
-        v = stack.pop(0)
-        if isinstance(v, (list, tuple)):
-            stack[0:0] = list(v)
-        else:
-            items.append(v)
-    closed, open_ = [], []
-    for v in items:
-        if not isinstance(v, GeomRef):
-            raise PrimitiveError(f"Intersect takes shapes (a Circle, Rectangle, Ellipse, "
-                                 f"Polygon, ...) and open Lines, Arcs or Polylines to clip, "
-                                 f"got {type_name(v)}")
-        src = v.geom
-        if src.closed and src.kind != "Text":
-            closed.append(src)
-        elif src.kind in CLIPPED:
-            open_.append(src)
-        else:
-            raise PrimitiveError(f"Intersect cannot take a {src.kind}: give closed shapes "
-                                 f"(their common area) and open Lines, Arcs or Polylines "
-                                 f"(clipped to it)")
-    if not closed:
-        raise PrimitiveError("Intersect needs at least one closed shape: the area to keep "
-                             "(e.g. `Intersect(strings, head)` with `head` an Ellipse)")
-    if not open_ and len(closed) < 2:
-        raise PrimitiveError("Intersect needs two closed shapes (their common area), or open "
-                             "Lines, Arcs or Polylines and the closed shape to clip them to")
-    _consume(g, open_ + closed)      # (copies remap the sources: see region_of)
-    g.closed = not open_
-
-
-def region_of(g: Geometry) -> tuple[list, list]:
-    """An ``Intersect``'s (closed shapes, open curves to clip) from its sources."""
-    src = g.data["sources"]
-    return [s for s in src if s.closed], [s for s in src if not s.closed]
-
-
-_STROKE_PATHS = ("Line", "Arc", "Polyline", "Spline", "Bezier")
-
-
-def _build_Stroke(ctx, g, a):
-    """A band of constant width along an open path: the path's Minkowski sum with a disc of
-    radius width/2 (round caps), or with the ends cut square (flat caps).  The path is one
-    open curve or a list of them that join end to end (in any direction)."""
-    v = a["path"]
-    items = list(v) if isinstance(v, (list, tuple)) else [v]
-    if not items:
-        raise PrimitiveError("a Stroke needs a path: a Line, Arc, Polyline, Spline or Bezier, or a "
-                             "list of them joined end to end")
-    srcs = []
-    for it in items:
-        if not isinstance(it, GeomRef) or it.geom.kind not in _STROKE_PATHS:
-            raise PrimitiveError(f"a Stroke follows a Line, Arc, open Polyline, Spline or Bezier "
-                                 f"(or a list of them), got "
-                                 f"{it.geom.kind if isinstance(it, GeomRef) else type_name(it)}"
-                                 + (": for a band around a closed shape use Shell(shape, "
-                                    "width)" if isinstance(it, GeomRef) else ""))
-        src = it.geom
-        if src.closed:
-            raise PrimitiveError(f"a Stroke follows an open path, not a closed {src.kind}: "
-                                 f"for a band around a closed shape use Shell(shape, width)")
-        srcs.append(src)
-    _positive(a["width"], "width", "Stroke")
-    w = _const(ctx, a["width"], "Stroke width")
-    cap = a.get("cap", "round")
-    cap = {"square": "flat", "butt": "flat"}.get(cap, cap)
-    if cap not in ("round", "flat"):
-        raise PrimitiveError(f'a Stroke\'s cap must be "round" or "flat", not "{cap}"')
-    _stroke_chain(ctx, srcs)
-    g.data["width"] = w
-    g.data["cap"] = cap
-    _consume(g, srcs)
-
-
-def _stroke_ends(ctx, src) -> tuple:
-    names = src.data.get("order") or ["start", "end"]
-    p, q = src.points[names[0]], src.points[names[-1]]
-    return tuple((ctx.value_of(var(pt.ix)), ctx.value_of(var(pt.iy))) for pt in (p, q))
-
-
-def _stroke_chain(ctx, srcs) -> None:
-    """The pieces of a Stroke's path must join end to end (as they start): the first
-    gap is named."""
-    if len(srcs) < 2:
-        return
-    ends = [_stroke_ends(ctx, s) for s in srcs]
-    tail = None
-    for i in range(len(srcs) - 1):
-        a, b = ends[i], ends[i + 1]
-        cands = [a[1], a[0]] if tail is None else [tail]
-        best = min(((math.dist(p, q), q, other) for p in cands for q, other in
-                    ((b[0], b[1]), (b[1], b[0]))), key=lambda t: t[0])
-        gap, _q, other = best
-        scale = max(1.0, *(abs(c) for pt in a + b for c in pt))
-        if gap > 1e-6 * scale:
-            raise PrimitiveError(f"a Stroke's path pieces {i} and {i + 1} do not join: their "
-                                 f"nearest ends are {gap:g} mm apart; start each piece where "
-                                 f"the previous one ends (e.g. `start=a.end`)")
-        tail = other
-
-
 def _build_Slot(ctx, g, a):
     if "angle" in a:                # polar: from start (an end arc's center) by length, angle
         _positive(a["length"], "length", "Slot")
@@ -1091,7 +703,7 @@ def _build_Text(ctx, g, a):
 
 def _stencil(ctx, g, a) -> None:
     """``Text(..., stencil=true)``: a closed shape, the letters' openings with bridges
-    (:mod:`aidl_lang.output.part.stencil`); ``weight`` and ``bridge`` in mm."""
+    (:mod:`aidl_lang.output.part.build.stencil`); ``weight`` and ``bridge`` in mm."""
     if a.get("along") is not None:
         raise PrimitiveError("a stencil Text is written on a straight baseline: leave out "
                              "along=, or engrave the text along the curve (stencil=false)")
@@ -1149,4 +761,3 @@ def _build_Drawing2D(ctx, g, a):
     build(ctx, g, a, _const)
 
 
-_BUILD = {k[7:]: f for k, f in list(globals().items()) if k.startswith("_build_")}

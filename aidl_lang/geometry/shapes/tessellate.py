@@ -1,7 +1,7 @@
 """Tessellation of circles and arcs: how many chords keep the chord deviation (sagitta) below
 ``CHORD_TOL`` (0.005 mm: a 100 mm circle deviates less than 0.01 mm from the true curve).
 
-Used by the booleans (:mod:`aidl_lang.output.part.booleans`) and by fillets
+Used by the booleans (:mod:`aidl_lang.output.part.build.booleans`) and by fillets
 (:mod:`aidl_lang.geometry.derived.operations`).
 """
 from __future__ import annotations

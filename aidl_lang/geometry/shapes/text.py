@@ -36,12 +36,12 @@ def _glyphs() -> dict:
     """Every glyph of the font, normalized (``normalize_rendering(1.0)``): character ->
     ``(strokes, advance)``, each stroke a tuple of ``(x, y)`` points at pen position 0 and
     ``advance`` the pen's move to the next character, exactly as the package's render iterator
-    computes them.  Kept as JSON in the user's cache folder (:mod:`aidl_lang.cache`), so a
+    computes them.  Kept as JSON in the user's cache folder (:mod:`aidl_lang.host.cache`), so a
     cold run neither imports the package (~10 ms: it imports ``tarfile``) nor unpacks its bz2
     archive of every Hershey font."""
     import json
 
-    from ...cache import cache_dir, read_checked, write_checked
+    from ...host.cache import cache_dir, read_checked, write_checked
     d = cache_dir()
     key = f"hershey {FONT} {_GLYPHS_FORMAT}"
     path = d / f"hershey-{FONT}.json" if d is not None else None
@@ -117,6 +117,22 @@ def _cap_height() -> float:
 VALIGNS = ("baseline", "middle", "top", "bottom")
 
 
+def _placement(segs: list, size: float, anchor: str, valign: str) -> tuple:
+    """``(base, k, dx, dy)`` of the font's strokes ``segs`` drawn ``size`` mm tall: the font's
+    baseline, its scale to mm, and the shifts (dx in font units, dy in mm) that put the
+    position point at ``anchor`` (start, middle, end) and ``valign`` (baseline, middle, top,
+    bottom)."""
+    base = _baseline()
+    k = size / _cap_height()
+    xs = [p[0] for s in segs for p in s]
+    lo, hi = min(xs), max(xs)
+    dx = {"start": -lo, "middle": -(lo + hi) / 2, "end": -hi}[anchor]
+    low = min(p[1] for s in segs for p in s)
+    dy = {"baseline": 0.0, "middle": -size / 2, "top": -size,
+          "bottom": -(low - base) * k}[valign]
+    return base, k, dx, dy
+
+
 def text_strokes(text: str, size: float, anchor: str = "middle", valign: str = "baseline",
                  rotation: float = 0.0) -> list[tuple[tuple, tuple]]:
     """Line segments ((x0, y0), (x1, y1)) in mm, relative to the text's position point.
@@ -129,14 +145,7 @@ def text_strokes(text: str, size: float, anchor: str = "middle", valign: str = "
     segs = _raw(text)
     if not segs:
         return []
-    base = _baseline()
-    k = size / _cap_height()
-    xs = [p[0] for s in segs for p in s]
-    lo, hi = min(xs), max(xs)
-    dx = {"start": -lo, "middle": -(lo + hi) / 2, "end": -hi}[anchor]
-    low = min(p[1] for s in segs for p in s)
-    dy = {"baseline": 0.0, "middle": -size / 2, "top": -size,
-          "bottom": -(low - base) * k}[valign]
+    base, k, dx, dy = _placement(segs, size, anchor, valign)
     cs, sn = math.cos(rotation), math.sin(rotation)
 
     def f(p):
@@ -159,14 +168,7 @@ def text_strokes_along(text: str, size: float, radius: float, angle: float,
     segs = _raw(text)
     if not segs or radius <= 0:
         return []
-    base = _baseline()
-    k = size / _cap_height()
-    xs = [p[0] for s in segs for p in s]
-    lo, hi = min(xs), max(xs)
-    dx = {"start": -lo, "middle": -(lo + hi) / 2, "end": -hi}[anchor]
-    low = min(p[1] for s in segs for p in s)
-    dy = {"baseline": 0.0, "middle": -size / 2, "top": -size,
-          "bottom": -(low - base) * k}[valign]
+    base, k, dx, dy = _placement(segs, size, anchor, valign)
     out = []
     pen = 0.0
     for ch in text:

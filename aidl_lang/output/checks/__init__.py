@@ -1,38 +1,42 @@
 """Geometry checks on the final shape: warnings about parts that solve but come out wrong.
 
-In: the booleans' :class:`~aidl_lang.output.part.booleans.Drawing`, the exact output model and
+In: the booleans' :class:`~aidl_lang.output.part.build.booleans.Drawing`, the exact output model and
 (for the fit check) the assembled product.  Out: W05xx diagnostics on the sink, and what the
-final part is as data and text (:mod:`.describe`, ``aidl check --describe``) and its parts list
-(:mod:`.inventory`, ``aidl parts``).  Imports the part and fabrication stages, never the writers.
+final part is as data and text (:mod:`.reports.describe`, ``aidl check --describe``) and its parts
+list (:mod:`.reports.inventory`, ``aidl parts``).  Imports the part and fabrication stages, never the writers.
 
-The booleans (:mod:`aidl_lang.output.part.booleans`) record each structure's shape and what each hole cut; these
-checks read them (docs/outputs.md, "Checks"; every code is in :mod:`aidl_lang.codes`).
+The booleans (:mod:`aidl_lang.output.part.build.booleans`) record each structure's shape and what each hole cut; these
+checks read them (docs/outputs.md, "Checks"; every code is in :mod:`aidl_lang.base.codes`).
 :func:`check_drawing` is the one entry point (run by :mod:`aidl_lang.pipeline` and the live
 preview); :func:`check_topology` (W0510) is run beside it when param values are overridden.
-One module per family:
+One module per family, in rooms by what they look at (:mod:`.holes`, :mod:`.material`,
+:mod:`.marks`; :mod:`.reports` for what they report), the contract in pyproject.toml:
 
-* :mod:`.openings`: ``W0501`` a hole refilled by a solid, ``W0502`` a hole that cuts nothing,
+* :mod:`.holes.openings`: ``W0501`` a hole refilled by a solid, ``W0502`` a hole that cuts nothing,
   ``W0503`` a hole that removes all of its solid, ``W0507`` a wall between two holes (or a
   hole and the outline) thinner than the minimum, ``W0508`` two holes that cut one opening,
-  ``W0512`` a statement's repeated faces (or two circles of one hole) that merge, ``W0514`` a
-  hole flush with the outer edge, ``W0515`` an opening no hole cuts (a void, or a window the
-  faces of one solid merge around);
-* :mod:`.walls`: ``W0507`` a wall thinner than ``min_wall`` (default :data:`MIN_WALL`,
-  0.5 mm), by a morphological opening of the part; ``W0519`` a slit of empty space narrower
-  than ``min_wall`` between two shapes of one outline;
+  ``W0514`` a hole flush with the outer edge;
+* :mod:`.holes.repeats`: ``W0512`` a statement's repeated faces (or two circles of one hole)
+  that merge;
+* :mod:`.holes.voids`: ``W0515`` an opening no hole cuts (a void, or a window the faces of
+  one solid merge around);
+* :mod:`.material.walls`: ``W0507`` a wall thinner than ``min_wall`` (default :data:`MIN_WALL`,
+  0.5 mm), by a morphological opening of the part; :mod:`.material.necks`: ``W0507`` two
+  members joined over a neck; :mod:`.material.slits`: ``W0519`` a slit of empty space
+  narrower than ``min_wall`` between two shapes of one outline;
 * :mod:`.parts`: ``W0504`` a part that falls apart into pieces, ``W0506`` a child solid that
   adds nothing, ``W0509`` a face of zero area, ``W0511`` parts that interpenetrate,
   ``W0520`` a ledge where one shape pokes past another's edge by less than ``min_wall``;
-* :mod:`.engravings`: ``W0505`` engraving off the material, ``W0516`` engraving along the cut,
+* :mod:`.marks.engravings`: ``W0505`` engraving off the material, ``W0516`` engraving along the cut,
   ``W0524`` a drawing's Line of zero length;
 * :mod:`.allowances`: ``W0523`` an ``AllowOverlap`` that allows nothing;
-* :mod:`.text`: ``W0513`` text drawn over text or over an engraved mark;
-* :mod:`.through`: ``W0522`` a through-cut off the material or along the outline (or a segment of one), or one
+* :mod:`.marks.text`: ``W0513`` text drawn over text or over an engraved mark;
+* :mod:`.material.through`: ``W0522`` a through-cut off the material or along the outline (or a segment of one), or one
   along another, ``W0507`` a web thinner than the minimum between through-cuts (or a through-cut and the outline);
 * :mod:`.assembly`: ``W0517`` parts that collide once assembled, ``W0518`` a part that
   touches no other;
 * :mod:`.changes`: ``W0510`` a part whose topology differs from the defaults';
-* :mod:`.toolpath_walls` (``aidl render``, not this entry point): ``W0507`` the material
+* :mod:`.material.toolpath_walls` (``aidl render``, not this entry point): ``W0507`` the material
   beside a through-cut that the cutter's own width (a router's bit, a laser's kerf) leaves
   thinner than the minimum wall, and ``W0510`` a part the bit cuts apart;
 * :mod:`.common`: the tolerances and helpers they share.
@@ -48,25 +52,26 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...diagnostics import DiagnosticSink
-from ..part.booleans import Drawing
+from ...base.diagnostics import DiagnosticSink
+from ..part.build.booleans import Drawing
 from .allowances import check_allowances
 from .assembly import _check_fit
 from .changes import Topology, check_topology, topology, topology_changes
 from .common import (MIN_AREA, MIN_FRACTION, MIN_WALL, _cut_openings, _edges, _inside,
-                     _inside_loops, _part_of, _part_roots, _signed, _union)
-from .engravings import (_SURELY_GROWN, ENGRAVE_TOL, _check_engraving, _check_zero_lines,
-                         _n_samples, _sample,
-                         _samples, _within)
-from .openings import (TOUCH, _analyse, _check_flush, _check_hole, _check_overlapping_circles,
-                       _check_repeated_faces,
-                       _check_voids, _intended, _Near, _report_openings)
+                     _inside_loops, _part_of, _part_roots, _signed, _union, part_min_wall)
+from .holes.openings import TOUCH, _analyse, _check_flush, _check_hole, _intended, _Near, _report_openings
+from .holes.repeats import _check_overlapping_circles, _check_repeated_faces
+from .holes.voids import _check_voids
+from .marks.engravings import (_SURELY_GROWN, ENGRAVE_TOL, _check_engraving, _check_zero_lines,
+                               _n_samples, _sample, _samples, _within)
 from .parts import (_check_interpenetration, _check_steps, _check_invisible, _check_pieces,
                     check_stray_holes, empty_faces)
-from .text import _check_text_overlap
-from .through import check_sheet_cuts, check_through
-from .walls import (THIN_SECONDS_PER_VERTEX, _check_slits, TILE_VERTS, UNION_GROUP, WHOLE_LOOPS, WHOLE_VERTS,
-                    _check_necks, _check_walls, _isolated_loops, _loop_boxes, _open, _point_of, _thin)
+from .marks.text import _check_text_overlap
+from .material.through import check_sheet_cuts, check_through
+from .material.necks import _check_necks
+from .material.slits import _check_slits
+from .material.walls import (THIN_SECONDS_PER_VERTEX, TILE_VERTS, UNION_GROUP, WHOLE_LOOPS, WHOLE_VERTS,
+                             _check_walls, _isolated_loops, _loop_boxes, _open, _point_of, _thin)
 
 # the names other modules, the tests and the benchmarks import from here (patching one of the
 # others' helpers, e.g. walls._open, means patching it in the module that uses it)
@@ -78,16 +83,6 @@ __all__ = ["check_drawing", "check_stray_holes", "check_topology", "topology", "
            "_intended", "_isolated_loops", "_loop_boxes", "_n_samples", "_Near", "_open",
            "_part_of", "_part_roots", "_point_of", "_report_openings", "_sample", "_samples",
            "_signed", "_thin", "_union", "_within"]
-
-def part_min_wall(d: Drawing, part, given: float | None = None) -> float:
-    """The minimum wall (mm) the checks hold part ``part`` to: ``given`` (the command line's
-    ``--min-wall``) when set, else the program's ``min_wall`` statement for it (its own, an
-    ancestor's or the top level's: :attr:`Drawing.min_wall`), else :data:`MIN_WALL`."""
-    if given is not None:
-        return given
-    own = getattr(d, "min_wall", None) or {}
-    name = getattr(part, "path", None)
-    return own.get(name, MIN_WALL) if name is not None else MIN_WALL
 
 
 CHECK_SHARE = 0.2     # of the budget's CPU time (3 s of the default 15 s): what each family
@@ -131,7 +126,7 @@ class _Shares:
     live preview's own call) there are no shares, only the pair limit."""
 
     def __init__(self, deadline):
-        from ...limits import now
+        from ...base.limits import now
         self.clock = now               # the budget's clock: CPU seconds
         self.deadline = deadline
         self.seconds = (deadline.budget.seconds * CHECK_SHARE if deadline is not None
@@ -156,7 +151,7 @@ class _Shares:
     def run(self, family: str, part, fn):
         """``fn()`` as family ``family`` on ``part`` (a Structure or None); its result, or
         None when it was stopped or not run."""
-        from ..part.nearby import TooManyPairs
+        from ..part.measure.nearby import TooManyPairs
         if family in self.skipped:
             self.skipped[family][1].append(part)
             return None
@@ -177,7 +172,7 @@ class _Shares:
     def guard(self, family: str, part, fn):
         """``fn()`` with no share of its own (it runs on the compile's deadline alone), only
         the pair limit: a family that must end with E0304 rather than stop early."""
-        from ..part.nearby import TooManyPairs
+        from ..part.measure.nearby import TooManyPairs
         try:
             return fn()
         except TooManyPairs as ex:
@@ -186,7 +181,7 @@ class _Shares:
 
     def notes(self, sink: DiagnosticSink, min_wall: float) -> None:
         """One ``W0521`` note per family that did not check everything."""
-        from ...diagnostics import Diagnostic
+        from ...base.diagnostics import Diagnostic
         for family, (why, parts) in self.skipped.items():
             what, codes = FAMILIES[family]
             named = list(dict.fromkeys(f"`{p.path}`" for p in parts if p is not None))
@@ -252,8 +247,8 @@ def check_drawing(d: Drawing, sink: DiagnosticSink, min_wall: float | None = Non
     (mm) is W0507's minimum wall (0 turns that check off; W0508, holes that merge, stays on),
     overriding the program's ``min_wall`` statements (:func:`part_min_wall`); None: theirs,
     else :data:`MIN_WALL`.
-    ``deadline``: the compile's :class:`~aidl_lang.limits.Deadline`, checked between
-    structures and holes (raises :class:`~aidl_lang.limits.OutOfBudget`); each family of
+    ``deadline``: the compile's :class:`~aidl_lang.base.limits.Deadline`, checked between
+    structures and holes (raises :class:`~aidl_lang.base.limits.OutOfBudget`); each family of
     checks holds :data:`CHECK_SHARE` of it and past that stops with a ``W0521`` note
     (:class:`_Shares`)."""
     from . import common

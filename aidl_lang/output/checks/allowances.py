@@ -15,10 +15,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...diagnostics import DiagnosticSink
+from ...base.diagnostics import DiagnosticSink
 from ...geometry.core.model import Structure
-from ..part.booleans import Drawing
-from ..part.nearby import box_pairs
+from ..part.build.booleans import Drawing
+from ..part.measure.nearby import box_pairs
 from .common import _area
 
 TOUCH = 1e-3        # mm: two shapes this close touch (W0508 merges touching holes)
@@ -64,7 +64,7 @@ def _one_solid(a, b) -> bool:
 
 def _enclosed(a, objs) -> bool:
     """The shapes of ``a``'s solid among ``objs`` silenced a W0515: the window they
-    enclose was said to be meant (:func:`.openings._report_enclosed` keeps the sets used)."""
+    enclose was said to be meant (:func:`.holes.voids._report_enclosed` keeps the sets used)."""
     named = frozenset(o for o in objs if not isinstance(o, Structure) and o.owner is a.owner)
     return named in getattr(a.owner, "enclosure_used", ())
 

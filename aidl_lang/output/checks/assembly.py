@@ -6,8 +6,8 @@
 * ``W0518`` a part that touches no other (a tab short of its slot: the gap)."""
 from __future__ import annotations
 
-from ...diagnostics import DiagnosticSink, Label
-from ..part.booleans import Drawing
+from ...base.diagnostics import DiagnosticSink, Label
+from ..part.build.booleans import Drawing
 
 def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
     """The fit check of the assembled product (:func:`.assembly.fit`, for a program that
@@ -49,7 +49,7 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                           f"meant to share material (a press fit, an inlay), "
                           f"`AllowOverlap({c.a.split('.')[-1]}, {c.b.split('.')[-1]})` in their "
                           "assembly says so")
-    from ...diagnostics import in_stdlib
+    from ...base.diagnostics import in_stdlib
 
     def templates(name) -> bool:
         sp = at(name)
@@ -68,7 +68,7 @@ def _check_bends(d: Drawing, sink: DiagnosticSink) -> None:
     """E0108 at a ``Bend`` whose zone on the sheet (``|angle| * (radius + thickness / 2)``
     wide, known once the part's thickness is) runs into the previous bend's of its part."""
     from ..fabrication.assembly import DEFAULT_THICKNESS
-    from ..part.placement import bend_zones
+    from ..part.build.placement import bend_zones
     for name, bends in (getattr(d, "bends", None) or {}).items():
         t = float(d.thickness.get(name) or DEFAULT_THICKNESS)
         s = d.part_of.get(name)

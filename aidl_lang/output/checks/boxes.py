@@ -13,11 +13,11 @@ side of its final exact outline, and warns with the difference and the constrain
 """
 from __future__ import annotations
 
-from ...diagnostics import DiagnosticSink
+from ...base.diagnostics import DiagnosticSink
 from ...geometry.relations.bbox import SIDES, BBTerm, collect, exclusions, numeric_box, side_expr
 from ...geometry.core.expr import Nl, const, evaluate, rebuild
 from ...geometry.core.model import Model, Structure
-from ..part.booleans import Drawing
+from ..part.build.booleans import Drawing
 
 BOX_TOL = 1e-6        # mm: sides closer than this are the same
 

@@ -9,12 +9,12 @@ import re
 
 import numpy as np
 
-from ...records import Compared
-from ...diagnostics import DiagnosticSink
-from ..part.booleans import Drawing
-from ..part.nearby import box_pairs
+from ...base.records import Compared
+from ...base.diagnostics import DiagnosticSink
+from ..part.build.booleans import Drawing
+from ..part.measure.nearby import box_pairs
 from .common import _area, _part_of, _part_roots, _signed
-from .openings import _analyse
+from .holes.openings import _analyse
 
 # ------------------------------------------------------------ topology under `--set` (W0510)
 class Topology(Compared):
@@ -42,9 +42,9 @@ STAGE = "the comparison with the defaults (W0510)"
 def topology(d: Drawing, deadline=None) -> dict:
     """What W0510 compares, per solid part of ``d`` (:func:`_topology`); empty when the part
     is too dense to compare (more pairs than :data:`..nearby.MAX_PAIRS`: no W0510 then,
-    never an unbounded list).  ``deadline`` (:class:`~aidl_lang.limits.Deadline`): looked at
-    for each part and every 64 face pairs (raises :class:`~aidl_lang.limits.OutOfBudget`)."""
-    from ..part.nearby import TooManyPairs
+    never an unbounded list).  ``deadline`` (:class:`~aidl_lang.base.limits.Deadline`): looked at
+    for each part and every 64 face pairs (raises :class:`~aidl_lang.base.limits.OutOfBudget`)."""
+    from ..part.measure.nearby import TooManyPairs
     try:
         return _topology(d, deadline)
     except TooManyPairs:

@@ -12,7 +12,7 @@ import manifold3d as mf
 import numpy as np
 
 from ...geometry.core.model import Structure, within_index
-from ..part.booleans import Drawing
+from ..part.build.booleans import Drawing
 
 MIN_FRACTION = 0.02      # of a hole's or child's area
 MIN_AREA = 0.05          # mm^2
@@ -31,8 +31,8 @@ def _union(shapes) -> mf.CrossSection:
     that many, then the groups' results, and so on (a balanced tree).  One batch costs about
     vertices x edges across a scan line: W0507's neck search united 1,000 concentric circles
     in 8.9 s CPU, in groups 0.05 s (the inner ones vanish in the first level)."""
-    from ..part.booleans import UNION_GROUP
-    from ..part.nearby import faces_apart
+    from ..part.build.booleans import UNION_GROUP
+    from ..part.measure.nearby import faces_apart
     shapes = [s for s in shapes if s is not None and not s.is_empty()]
     if not shapes:
         return mf.CrossSection()
@@ -140,7 +140,7 @@ def _inside(pts: np.ndarray, loops, tick=None) -> np.ndarray:
     candidates.  The crossing abscissa is computed with the same floating-point expression
     as the reference :func:`_inside_loops` (a cell's left and right are decided with a margin
     far above its rounding), so the result is identical to it.  ``tick()``: called at each
-    cell (the deadline, :class:`~aidl_lang.limits.Deadline`; it may raise)."""
+    cell (the deadline, :class:`~aidl_lang.base.limits.Deadline`; it may raise)."""
     pts = np.asarray(pts, dtype=float).reshape(-1, 2)
     n = len(pts)
     x1, y1, x2, y2 = loops if isinstance(loops, tuple) else _edges(loops)
@@ -323,7 +323,7 @@ def _cut_openings(loops: list, cuts) -> np.ndarray:
     meeting the box of a hole's cut region, :func:`_cut_boxes`): a bool per loop,
     all loops in one box pass (:func:`..part.nearby.box_pairs_between`).  Taken once per part
     and shared by W0515, W0519 and W0520, which leave these loops out."""
-    from ..part.nearby import box_pairs_between
+    from ..part.measure.nearby import box_pairs_between
     out = np.zeros(len(loops), dtype=bool)
     hb = _cut_boxes(cuts)
     inner = [k for k, P in enumerate(loops) if len(P) and _signed(P) < 0]
@@ -336,12 +336,12 @@ def _cut_openings(loops: list, cuts) -> np.ndarray:
 
 
 def _insert_fix(struct: Structure, stmt: str, sink=None):
-    """A :class:`~aidl_lang.diagnostics.Fix` that writes the statement ``stmt`` as the last
+    """A :class:`~aidl_lang.base.diagnostics.Fix` that writes the statement ``stmt`` as the last
     of structure ``struct``'s body (before its closing ``}``), indented one step inside it,
     or None when the structure is not in a source of ``sink`` (the program's own files: a
     stdlib template's, a generated one is not edited); ``sink``'s ``sources`` also tell
     whether the ``}`` stands on a line of its own."""
-    from ...diagnostics import Fix, Span, in_stdlib
+    from ...base.diagnostics import Fix, Span, in_stdlib
     sp = getattr(struct, "span", None)
     if sp is None or not sp.file or sp.end <= sp.start or in_stdlib(sp.file):
         return None
@@ -368,3 +368,14 @@ def _say_few(sink, code: str, path: str, finds: list) -> None:
         if rest > 0 and k == SHOWN - 1:
             message += f" (and {rest} more like it in `{path}`)"
         sink.warning(code, message, span, **kw)
+
+
+def part_min_wall(d: Drawing, part, given: float | None = None) -> float:
+    """The minimum wall (mm) the checks hold part ``part`` to: ``given`` (the command line's
+    ``--min-wall``) when set, else the program's ``min_wall`` statement for it (its own, an
+    ancestor's or the top level's: :attr:`Drawing.min_wall`), else :data:`MIN_WALL`."""
+    if given is not None:
+        return given
+    own = getattr(d, "min_wall", None) or {}
+    name = getattr(part, "path", None)
+    return own.get(name, MIN_WALL) if name is not None else MIN_WALL

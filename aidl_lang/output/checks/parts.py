@@ -17,11 +17,11 @@ import math
 
 import numpy as np
 
-from ...diagnostics import Diagnostic, DiagnosticSink, Fix, Label, Span, in_stdlib
+from ...base.diagnostics import Diagnostic, DiagnosticSink, Fix, Label, Span, in_stdlib
 from ...geometry.core.model import Structure
-from ..part.booleans import Drawing
-from ..part.nearby import box_pairs
-from ..part.scanwork import decompose
+from ..part.build.booleans import Drawing
+from ..part.measure.nearby import box_pairs
+from ..part.build.scanwork import decompose
 from .common import MIN_AREA, _area, _contributors, _depth, _say_few, _signed, _union
 
 MAX_CHILDREN = 64        # W0506 compares each child with the union of the others
@@ -375,12 +375,12 @@ def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     offset sideways by more than 0.01 mm (twice the tessellation's chord error) and less than
     ``t``: two faces that almost but not quite align.  ``2 t`` bounds the step's own length:
     a longer link between two edges less than ``t`` apart is a gentle taper, not a ledge.
-    The step is reported when the shapes at its two corners differ (:func:`.walls._faces_at`;
+    The step is reported when the shapes at its two corners differ (:func:`.material.slits._faces_at`;
     a step drawn in one polygon is meant).  Loops of holes' openings are left out.  O(n)
     in the outline's vertices, plus a face search per step found.  ``cut_open``:
     :func:`.common._cut_openings` of ``loops``, when the caller has it."""
     from .common import _cut_openings
-    from .walls import _faces_at
+    from .material.slits import _faces_at
     if t <= 0 or not loops:
         return
     if cut_open is None:
@@ -551,8 +551,8 @@ def check_stray_holes(sink: DiagnosticSink, drawing: Drawing, deadline=None) -> 
     61: `hole lid_hole` beside `box = finger_box(...)`), naming the solid part it lies over
     (the most overlap, one whose name the hole's names first) and carrying the fix that
     cuts it there: `CutInto(lid_hole, box.lid)` inserted above the hole, in the assembly.
-    ``deadline`` (:class:`~aidl_lang.limits.Deadline`): looked at for each hole and every
-    256 solids it is compared with (raises :class:`~aidl_lang.limits.OutOfBudget`)."""
+    ``deadline`` (:class:`~aidl_lang.base.limits.Deadline`): looked at for each hole and every
+    256 solids it is compared with (raises :class:`~aidl_lang.base.limits.OutOfBudget`)."""
     holes = [p for p in drawing.parts if p.kind == "hole"]
     if not holes:
         return

@@ -60,8 +60,8 @@ def extrude(parts, where: dict, thickness: float | None = None, deadline=None,
     """(name, ``manifold3d.Manifold``) of each solid of ``parts`` = [(name, kind,
     CrossSection, thickness mm or None)], extruded, bent by ``bends[name]`` (its ``Bend``s:
     :func:`~..part.placement.bend_points`, chords within ``CHORD_TOL``) and moved by
-    ``where[name]`` (4x4).  ``deadline``: a :class:`~aidl_lang.limits.Deadline` checked
-    before each part (raises :class:`~aidl_lang.limits.OutOfBudget`)."""
+    ``where[name]`` (4x4).  ``deadline``: a :class:`~aidl_lang.base.limits.Deadline` checked
+    before each part (raises :class:`~aidl_lang.base.limits.OutOfBudget`)."""
     import manifold3d as mf
     out = []
     bends = bends or {}
@@ -88,7 +88,7 @@ def bent(m, bends, t: float, tol: float | None = None):
     (:func:`~..part.placement.refine_for_bends`), then every vertex moved."""
     import manifold3d as mf
     from ...geometry.shapes.tessellate import CHORD_TOL
-    from ..part.placement import bend_points, refine_for_bends
+    from ..part.build.placement import bend_points, refine_for_bends
     mesh = m.to_mesh64()
     v, f = refine_for_bends(np.asarray(mesh.vert_properties, dtype=float)[:, :3],
                             np.asarray(mesh.tri_verts, dtype=np.int64), bends, t,
@@ -134,8 +134,8 @@ def fit(bodies: list[tuple[str, object]], deadline=None, normals: dict | None = 
     Only the pairs whose bounding boxes overlap (:func:`box_pairs`, a sort and sweep) are
     intersected; a part's nearest neighbour is sought in the order of the boxes' distances,
     stopping at the first box farther than the best gap found.  ``deadline``: a
-    :class:`~aidl_lang.limits.Deadline` checked before every boolean and every distance
-    (raises :class:`~aidl_lang.limits.OutOfBudget`), so the check ends within the compile's
+    :class:`~aidl_lang.base.limits.Deadline` checked before every boolean and every distance
+    (raises :class:`~aidl_lang.base.limits.OutOfBudget`), so the check ends within the compile's
     budget plus one Manifold call.
 
     ``plates``: part name -> (``CrossSection``, 4x4 placement or None, thickness mm), the

@@ -29,7 +29,7 @@ import os
 from ...geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from ...geometry.derived.offset import OffsetError, offset_loop
 from ..part.part import MissingDependency, Output, OutputError, PartOutline, Stroke
-from ..part.shared import shared_edges
+from ..part.edges.shared import shared_edges
 
 SAFETY = 0.01        # mm added to the gap around each part: chords, the packer's f32 positions
 INSTALL = "pip install 'aidl-lang[layout]'"
@@ -120,7 +120,7 @@ def for_cutting(output: Output, kerf: float | dict | None = None, deadline=None,
         kerf = output.drawing.kerf
     if not kerf:
         return output
-    from ...limits import OutOfBudget, OutOfMemory, is_out_of_memory
+    from ...base.limits import OutOfBudget, OutOfMemory, is_out_of_memory
     try:
         try:
             return compensate(output, kerf, deadline, apart)
@@ -160,8 +160,8 @@ def compensate(output: Output, kerf, deadline=None, apart: bool = False) -> Outp
     on its own, as a layout places them).  ``kerf``: mm for every part, or a dict part name ->
     mm (parts missing from it are not offset).  Engraving and through-cuts (:func:`through_cut_note`)
     are not offset.  Raises :class:`LayoutError` naming the part where a feature is smaller
-    than the offset; ``deadline`` (a :class:`~aidl_lang.limits.Deadline`, or None) is looked
-    at before each part (:class:`~aidl_lang.limits.OutOfBudget` naming the part's structure)."""
+    than the offset; ``deadline`` (a :class:`~aidl_lang.base.limits.Deadline`, or None) is looked
+    at before each part (:class:`~aidl_lang.base.limits.OutOfBudget` naming the part's structure)."""
     parts = []
     where = output.drawing.part_of if output.drawing is not None else {}
     shared = {} if apart else shared_edges(output)
@@ -193,7 +193,7 @@ def _spline_fix(output: Output, e: OffsetError) -> str:
     kind = "Ellipse" if src is not None and src.kind == "Ellipse" else "Spline"
     if src is not None and src.span is not None:
         sp = src.span
-        from ...diagnostics import shown_path
+        from ...base.diagnostics import shown_path
         at = f" (the {kind} `{src.label}` at {shown_path(sp.file)}:{sp.line}:{sp.col})"
     redraw = "an Ellipse with rx and ry grown" if kind == "Ellipse" else \
         "the spline through points moved out"
@@ -211,7 +211,7 @@ def parse_length(text: str, zero: bool = False) -> float | None:
         return None
     v = float(m.group(1)) * {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4}[
         (m.group(2) or "mm").lower()]
-    from ...limits import MAX_EXTENT
+    from ...base.limits import MAX_EXTENT
     return v if (0 < v or zero and v == 0) and v <= MAX_EXTENT else None
 
 
@@ -343,7 +343,7 @@ NEST_WORKERS = os.cpu_count() or 1
 
 
 def nest_cpu_seconds(seconds: float) -> float:
-    """The CPU seconds (the budget's clock, :func:`aidl_lang.limits.now`) of ``seconds`` of
+    """The CPU seconds (the budget's clock, :func:`aidl_lang.base.limits.now`) of ``seconds`` of
     spyrrow's improving: it runs :data:`NEST_WORKERS` threads for that long."""
     return seconds * NEST_WORKERS
 
@@ -431,7 +431,7 @@ def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90
     copies are prepared once.  ``seconds``: the packer's time to improve its first packing (0:
     the first packing, a fraction of a second).  Raises :class:`MissingDependency` without
     spyrrow and :class:`LayoutError` for a part larger than the sheet.  ``deadline`` (a
-    :class:`~aidl_lang.limits.Deadline`, or None): spyrrow cannot be stopped once started, so
+    :class:`~aidl_lang.base.limits.Deadline`, or None): spyrrow cannot be stopped once started, so
     each nesting is estimated first (:func:`nest_seconds` of its shapes and parts, plus
     ``seconds``) and refused when it would end past the deadline (an :class:`OutputError`
     whose ``budget`` names "the layout" and the assembly)."""
@@ -478,7 +478,7 @@ def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90
     def check(ids: list, parts: int) -> None:
         if deadline is None:
             return
-        from ...limits import OutOfBudget
+        from ...base.limits import OutOfBudget
         try:
             deadline.check("the layout", _assembly(output, solids),
                            nest_seconds([len(shapes[k]) for k in ids], parts, seconds))

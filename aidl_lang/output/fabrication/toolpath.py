@@ -32,7 +32,7 @@ import numpy as np
 
 from ...geometry.shapes.curves import Circle, Loop, Segment, reverse
 from ..part.part import Output
-from ..part.shared import cut_once, loop_paths
+from ..part.edges.shared import cut_once, loop_paths
 
 Point = tuple[float, float]
 
@@ -313,7 +313,7 @@ def _depths(loops: list[Loop], made: dict | None = None) -> list[int]:
     # is inside exactly the loops that enclose it)
     probe = np.array([p[0] if len(p) else (0.0, 0.0) for p in polys])
     area = (boxes[:, 2] - boxes[:, 0]) * (boxes[:, 3] - boxes[:, 1])
-    from ..part.nearby import TooManyPairs, _Grid, _median
+    from ..part.measure.nearby import TooManyPairs, _Grid, _median
     try:
         cell = max(_median(np.maximum(boxes[:, 2:] - boxes[:, :2], 0.0).ravel()), 1e-6)
         j, i = _Grid(probe, cell).in_boxes(boxes[:, :2], boxes[:, 2:])

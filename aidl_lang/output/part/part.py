@@ -21,11 +21,11 @@ import math
 
 import numpy as np
 
-from ...records import Compared
+from ...base.records import Compared
 from ...geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Loop, Segment, Spline, sample_xy
-from ...limits import OutOfBudget, OutOfMemory, is_out_of_memory
-from ...memory import gc_paused
-from .booleans import Drawing
+from ...base.limits import OutOfBudget, OutOfMemory, is_out_of_memory
+from ...base.memory import gc_paused
+from .build.booleans import Drawing
 
 __all__ = ["Arc", "Circle", "EllipticArc", "Line", "Loop", "Segment", "Spline", "Output", "PartOutline", "Stroke",
            "OutputError", "MissingDependency", "build"]
@@ -40,7 +40,7 @@ PALETTE = ("#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#b
 class OutputError(RuntimeError):
     """A writer cannot produce this file from this part (for example a PNG larger than the
     rasteriser allows); the message says why and what to change.  ``budget``: the
-    :class:`~aidl_lang.limits.OutOfBudget` behind it when bounded work ran out (its ``where``
+    :class:`~aidl_lang.base.limits.OutOfBudget` behind it when bounded work ran out (its ``where``
     names the structure), so that a front end with the compile's diagnostics can report it as
     a located ``E0304`` (:func:`aidl_lang.pipeline.report_out_of_budget`); else ``None``."""
 
@@ -241,16 +241,16 @@ def build(drawing: Drawing, title: str = "", thickness=None, deadline=None) -> O
     """The exact :class:`Output` of a booleans :class:`Drawing`.  ``thickness`` maps a part's
     name to its thickness in mm (or is one number for all parts); by default the program's
     (``thickness 3 mm``, :attr:`Drawing.thickness`).  ``deadline``: the compile's
-    :class:`~aidl_lang.limits.Deadline` (``aidl render``), or None for no wall-time bound.
+    :class:`~aidl_lang.base.limits.Deadline` (``aidl render``), or None for no wall-time bound.
     Raises :class:`OutputError` (with its ``budget``) when the exact outlines cannot be
     recovered within bounded work (thousands of curves on top of each other) or before the
-    deadline.  The collector is paused meanwhile (:func:`~aidl_lang.memory.gc_paused`)."""
+    deadline.  The collector is paused meanwhile (:func:`~aidl_lang.base.memory.gc_paused`)."""
     with gc_paused():
         return _build(drawing, title, thickness, deadline)
 
 
 def _build(drawing: Drawing, title: str, thickness, deadline) -> Output:
-    from .exact import Provenance
+    from .edges.exact import Provenance
     exact = drawing.exact if drawing.exact is not None else Provenance()
     out = Output(title=title, drawing=drawing)
     if thickness is None:
@@ -364,7 +364,7 @@ def _cut_once(strokes: list[Stroke], parts: list[PartOutline]) -> list[Stroke]:
     :data:`.shared.SHARED_TOL` mm); the rest of a segment is its own piece
     (:func:`.shared._piece`).  Each carrier's ranges are kept sorted: O(n log n).  Other
     strokes, and cut strokes that share nothing, are kept as they are (the same objects)."""
-    from .shared import _add, _piece, _span, _uncovered
+    from .edges.shared import _add, _piece, _span, _uncovered
     if not any(st.style == "cut" for st in strokes):
         return strokes
     cover: dict = {}
@@ -420,8 +420,8 @@ def _off_outlines(strokes: list[Stroke], parts: list[PartOutline]) -> list[Strok
     stretches, so inside that stretch's grown box); the distance is then to the whole edge, as
     before.  Every point against every edge cost points x edges: 11 s for a plate with 2,000
     closed cuts."""
-    from .booleans import _chain_points
-    from .nearby import TooManyPairs, _Grid
+    from .build.booleans import _chain_points
+    from .measure.nearby import TooManyPairs, _Grid
     edges = []
     for p in parts:
         for lp in p.loops:

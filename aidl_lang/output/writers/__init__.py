@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ...records import Compared
+from ...base.records import Compared
 from ..part.part import Output, OutputError
 
 
@@ -170,18 +170,18 @@ def encode(output: Output, suffix: str, options: Options | None = None,
     """The bytes of ``output`` in the format named by ``suffix`` (``.svg``, ...).  Raises
     ``KeyError`` for an unknown suffix and :class:`~.part.MissingDependency` when the format's
     library is not installed.  ``deadline``: the compile's
-    :class:`~aidl_lang.limits.Deadline` (``aidl render``, ``aidl batch``), or None: a writer
+    :class:`~aidl_lang.base.limits.Deadline` (``aidl render``, ``aidl batch``), or None: a writer
     whose :func:`writer_seconds` would end past it is refused before it starts, with an
     :class:`~.part.OutputError` whose ``budget`` names the part with the most segments; a
     writer that runs out of memory raises the same, its ``budget`` an
-    :class:`~aidl_lang.limits.OutOfMemory`."""
+    :class:`~aidl_lang.base.limits.OutOfMemory`."""
     fmt = FORMATS[suffix.lower()]
     if not fmt.empty:
         _refuse_empty(output, suffix, fmt)
     if fmt.cut and not fmt.empty:
         _refuse_stacked(output, suffix)
     if deadline is not None:
-        from ...limits import OutOfBudget
+        from ...base.limits import OutOfBudget
         try:
             deadline.check(f"the {suffix.lstrip('.').upper()} writer",
                            ahead=writer_seconds(output, suffix, options))
@@ -191,8 +191,8 @@ def encode(output: Output, suffix: str, options: Options | None = None,
             raise OutputError(f"the {suffix.lstrip('.').upper()} writer would end past the "
                               f"budget ({ex.what}); build less or raise the budget "
                               "(`--budget 2`)", ex) from None
-    from ...limits import OutOfMemory, is_out_of_memory
-    from ...memory import gc_paused
+    from ...base.limits import OutOfMemory, is_out_of_memory
+    from ...base.memory import gc_paused
     try:
         with gc_paused():           # its entities: many small objects, no cycles to collect
             return fmt.write(output, options or Options())
@@ -244,7 +244,7 @@ def _refuse_stacked(output: Output, suffix: str) -> None:
     (``--layout sheet``) lays them apart.  Candidate pairs come from the parts' bounding boxes
     (their exact segments' boxes, :func:`..part.nearby.box_pairs`, O(n log n)); each is
     intersected with Manifold's CrossSection (the parts' outlines in chords within 0.005 mm)."""
-    from ..part.nearby import box_pairs
+    from ..part.measure.nearby import box_pairs
     solids = [p for p in output.parts if p.kind == "solid" and p.loops]
     if len(solids) < 2:
         return

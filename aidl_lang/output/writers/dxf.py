@@ -33,7 +33,7 @@ import math
 
 from ..part.extent import extent
 from ..part.part import Arc, Circle, EllipticArc, Line, Output, PartOutline, Spline
-from ..part.shared import cut_once
+from ..part.edges.shared import cut_once
 
 CUT, ENGRAVE = "CUT", "ENGRAVE"
 CHAIN_TOL = 1e-6     # mm: a segment continues the chain when it starts this close to its end

@@ -684,7 +684,7 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     warnings = _warnings(output, m)
     notes = []
     if m.kind == "router":
-        from ..part.shared import shared_note
+        from ..part.edges.shared import shared_note
         notes += [n[len("note: "):] for n in shared_note(output, m.tool_diameter, "the bit")]
         more, split = router_notes(output, m.tool_diameter)
         notes += more
@@ -720,7 +720,7 @@ def router_notes(output: Output, diameter: float) -> tuple[list[str], list[str]]
     wall or cuts away (:func:`~..checks.toolpath_walls.eaten_walls`, each ending
     :data:`W0507_TAG`); ``(notes, warnings)``, the notes empty (kept for the callers)."""
     from ..checks import part_min_wall
-    from ..checks.toolpath_walls import eaten_message, eaten_walls
+    from ..checks.material.toolpath_walls import eaten_message, eaten_walls
     from ..fabrication.bridges import router_bridges, split_message
     _, splits = router_bridges(output, diameter)
     split = {s.part for s in splits if s.bridges}       # else W0507 names the bridges

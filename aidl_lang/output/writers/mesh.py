@@ -39,7 +39,7 @@ def bodies(output: Output, thickness: float | None = None,
     where = (getattr(d, "placement", None) or {}) if assembled and d is not None else {}
     bent = (getattr(d, "bends", None) or {}) if assembled and d is not None else {}
     from ...geometry.shapes.tessellate import CHORD_TOL
-    from ..part.placement import bend_points, refine_for_bends
+    from ..part.build.placement import bend_points, refine_for_bends
     out = []
     for p in output.parts:
         if p.kind != "solid" or p.shape is None or p.shape.is_empty():

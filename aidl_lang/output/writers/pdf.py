@@ -56,7 +56,7 @@ import numpy as np
 
 from ..part.extent import extent
 from ..part.part import Arc, Circle, EllipticArc, Line, MissingDependency, Output, OutputError
-from ..part.shared import cut_once, loop_paths
+from ..part.edges.shared import cut_once, loop_paths
 from . import beziers
 
 PT_PER_MM = 72.0 / 25.4

@@ -23,7 +23,7 @@ import math
 import numpy as np
 
 from ..part.extent import extent
-from ..part.shared import cut_once, loop_paths
+from ..part.edges.shared import cut_once, loop_paths
 from ..part.part import (PALETTE, Arc, Circle, EllipticArc, Line, Loop, Output, OutputError, Spline,
                     build)
 

@@ -319,10 +319,10 @@ def write_in_dir(dfd: int, name: str, data: bytes, shown: str | None = None,
     by the rename, never written through; a FIFO, device, socket or directory is refused
     (:class:`NotRegularFile`, before anything is written and again before the rename).
     ``shown``: the path as the user gave it, for messages.  Raises :class:`WriteError`,
-    :class:`aidl_lang.files.FileRefused` or ``OSError`` (nothing left behind)."""
+    :class:`aidl_lang.host.files.FileRefused` or ``OSError`` (nothing left behind)."""
     import secrets
 
-    from ...files import CLOEXEC, NOFOLLOW, FileRefused
+    from ...host.files import CLOEXEC, NOFOLLOW, FileRefused
     shown = shown or name
     if os.sep in name or name in ("", ".", ".."):
         raise FileRefused(f"`{shown}` is not a file name")

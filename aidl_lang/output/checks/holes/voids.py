@@ -1,0 +1,210 @@
+"""``W0515``: an opening that no hole cut: a tiny void left between shapes that nearly meet
+(:func:`_check_voids`), or a window the overlapping faces of one solid enclose
+(:func:`_check_enclosed`, said as meant when an ``AllowOverlap`` names the faces:
+:mod:`..allowances` reads the sets used).
+"""
+from __future__ import annotations
+
+import manifold3d as mf
+import numpy as np
+
+from ....base.diagnostics import Label
+from ....geometry.core.model import Structure
+from ...part.build.booleans import Drawing
+from ...part.measure.nearby import box_pairs, box_pairs_between
+from ..common import (MIN_AREA, _area, _cut_openings, _insert_fix, _inside, _loop_boxes, _signed,
+                      _say_few, _solids_within)
+from .openings import TOUCH, _NAMEABLE, _ref
+
+
+def _check_voids(d: Drawing, s: Structure, loops, cuts, t: float, sink,
+                 tick=lambda ahead=0.0: None, cut_open=None) -> None:
+    """W0515 for each tiny opening of part ``s`` that no hole cut: an inner loop (clockwise)
+    of less than ``max(2 t^2, 1)`` mm^2 whose box meets no hole's: a void left between merged
+    shapes (two solids that nearly meet around a gap).  ``tick()``: the compile's deadline,
+    looked at as the openings are searched.  ``cut_open``: :func:`.common._cut_openings` of
+    ``loops``, when the caller has it."""
+    signed = [_signed(P) for P in loops]         # once per loop (20,000 holes: 3 times)
+    inner = [k for k, a in enumerate(signed) if a < 0]
+    if not inner:
+        return
+    if cut_open is None:
+        cut_open = _cut_openings(loops, cuts)
+    limit = max(2 * t * t, 1.0)
+    _check_enclosed(d, s, [loops[k] for k in inner if -signed[k] >= limit], cuts, sink,
+                    tick)
+    voids: list = []                     # said by _say_few: the first few, then a count
+    for k in inner:
+        P = loops[k]
+        area = -signed[k]
+        if area >= limit or cut_open[k]:
+            continue
+        x0, y0 = P.min(axis=0)
+        x1, y1 = P.max(axis=0)
+        width = area / max(1e-12, max(x1 - x0, y1 - y0))
+        voids.append((f"a void of {area:.3f} mm^2 (about {width:.2f} mm wide, "
+                      f"{max(x1 - x0, y1 - y0):.2f} mm long) is cut through `{s.path}` near "
+                      f"({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}): no hole declares it, the "
+                      "shapes around it do not quite meet, so a sliver comes out there",
+                      s.span,
+                      {"hint": "make the shapes around it overlap (e.g. `gap=-1 mm`, or a "
+                               "larger size) so that no gap is left; if an opening is meant, "
+                               "cut it with a hole"}))
+    _say_few(sink, "W0515", s.path, voids)
+
+
+def _solid_faces(d: Drawing, s: Structure, near) -> list:
+    """The faces of part ``s``'s solids (its own and its solid descendants', :attr:`Drawing.own`)
+    that meet the region ``near`` (a CrossSection): ``[(structure, geometry, face)]``, in the
+    order of :attr:`Drawing.own`."""
+    x0, y0, x1, y1 = near.bounds()
+    out = []
+    for t, faces in _solids_within(d, s):
+        for g, f in faces:
+            if f is None or f.is_empty():
+                continue
+            a, b, c, e = f.bounds()
+            if a > x1 or c < x0 or b > y1 or e < y0:
+                continue
+            if _area(near ^ f) > 1e-9:
+                out.append((t, g, f))
+    return out
+
+
+def _check_enclosed(d: Drawing, s: Structure, openings, cuts, sink,
+                    tick=lambda ahead=0.0: None) -> None:
+    """W0515 for each opening of part ``s`` (``openings``: clockwise loops of its final shape,
+    each of at least :func:`_check_voids`' limit) that no hole cuts or covers (no hole shape
+    of the part meets it; candidates by :func:`.nearby.box_pairs`, so a plate of 5,000 holes
+    costs n log n) and that the faces of ONE solid structure enclose: shapes merged around a
+    window the program never declares (a dinosaur's legs and belly).  Left alone: an
+    opening framed by faces of several solid structures (a telephone's cradle between its
+    base and handset, each placed by a constraint), or by faces that only abut, none
+    overlapping another (a frame of bars laid edge to edge): built to enclose it; and an
+    opening inside one face's own outer loop, which is that face's own hole (a ``Drawing2D``
+    of 19,000 holes, a polygon drawn with a hole), found by boxes and one point test each."""
+    if not openings:
+        return
+    own = _own_outlines(d, s)
+    holes = [d.shapes[c.hole] for c in cuts
+             if d.shapes.get(c.hole) is not None and not d.shapes[c.hole].is_empty()]
+    boxes = _loop_boxes(openings)            # (one array op, not two per opening)
+    near: dict = {}
+    if holes:
+        n = len(openings)
+        pairs = box_pairs(np.vstack([boxes, np.array([h.bounds() for h in holes],
+                                                     dtype=float).reshape(-1, 4)]))
+        for i, j in pairs[(pairs[:, 0] < n) & (pairs[:, 1] >= n)]:
+            near.setdefault(int(i), []).append(holes[int(j) - n])
+    framed = _inside_one_face(openings, boxes, own)
+    for k, P in enumerate(openings):
+        if k % 64 == 0:
+            tick()
+        if framed[k]:
+            continue                          # a face's own hole (a drawing's inner loop)
+        region = mf.CrossSection([P[::-1].tolist()], mf.FillRule.Positive)
+        if region.is_empty() or any(_area(h ^ region) > MIN_AREA for h in near.get(k, ())):
+            continue                          # a hole cuts it, or is declared over it
+        _report_enclosed(d, s, P, -_signed(P), region, sink)
+
+
+def _own_outlines(d: Drawing, s: Structure) -> tuple:
+    """The outer loops (counter-clockwise polylines) of every face of part ``s``'s solids and
+    their boxes (k x 4): ``(loops, boxes)``."""
+    outer = []
+    for t, faces in _solids_within(d, s):
+        for _, f in faces:
+            if f is None or f.is_empty():
+                continue
+            outer += [P for P in (np.asarray(q, dtype=float) for q in f.to_polygons())
+                      if len(P) >= 3 and _signed(P) > 0]
+    boxes = np.array([(P[:, 0].min(), P[:, 1].min(), P[:, 0].max(), P[:, 1].max())
+                      for P in outer], dtype=float).reshape(-1, 4)
+    return outer, boxes
+
+
+def _inside_one_face(openings, boxes, own) -> np.ndarray:
+    """For each opening of ``openings`` (clockwise polylines; ``boxes``: theirs): whether it
+    lies inside the outer loop of one face of ``own`` (:func:`_own_outlines`: its mean vertex
+    within that loop, the loop's box around its own), the face's own hole, since the face
+    would otherwise cover it.  Candidates by box (:func:`.nearby.box_pairs_between`), then one
+    even-odd test (:func:`.common._inside`) per face loop for all the openings it may hold."""
+    outer, oboxes = own
+    res = np.zeros(len(openings), dtype=bool)
+    if not len(oboxes) or not len(openings):
+        return res
+    ob = np.asarray(boxes, dtype=float).reshape(-1, 4)
+    pairs = box_pairs_between(ob, oboxes)
+    i, j = pairs[:, 0], pairs[:, 1]
+    holds = ((oboxes[j, 0] <= ob[i, 0]) & (oboxes[j, 1] <= ob[i, 1]) & (oboxes[j, 2] >= ob[i, 2])
+             & (oboxes[j, 3] >= ob[i, 3]))
+    i, j = i[holds], j[holds]
+    order = np.argsort(j, kind="stable")
+    i, j = i[order], j[order]
+    mean = {}
+    for a, z in zip(*_runs(j)):
+        idx = [k for k in i[a:z].tolist() if not res[k]]
+        if not idx:
+            continue
+        for k in idx:
+            if k not in mean:
+                mean[k] = openings[k].mean(axis=0)
+        res[idx] |= _inside(np.array([mean[k] for k in idx]), [outer[int(j[a])]])
+    return res
+
+
+def _runs(keys) -> tuple:
+    """The runs of equal values of the sorted array ``keys``: (starts, stops)."""
+    if not len(keys):
+        return np.zeros(0, dtype=np.intp), np.zeros(0, dtype=np.intp)
+    starts = np.flatnonzero(np.r_[True, keys[1:] != keys[:-1]])
+    return starts, np.r_[starts[1:], len(keys)]
+
+
+def _report_enclosed(d: Drawing, s: Structure, P, area: float, region, sink) -> None:
+    """The W0515 of :func:`_check_enclosed` for the opening ``P`` (its ``region``), when the
+    faces around it are of one solid structure."""
+    near = region.offset(2 * TOUCH, mf.JoinType.Miter, 2.0, 16) - region
+    faces = _solid_faces(d, s, near)
+    owners = list(dict.fromkeys(t for t, _, _ in faces))
+    if len(owners) != 1:
+        return
+    shapes = [f for _, _, f in faces]
+    if not any(_area(shapes[i] ^ shapes[j]) > MIN_AREA
+               for i, j in box_pairs(np.array([f.bounds() for f in shapes], dtype=float))):
+        return                  # edge to edge (a frame of bars that abut): built to enclose it
+    owner = owners[0]
+    around = {g for _, g, _ in faces}
+    said = [ok for ok in getattr(owner, "enclosure_ok", ()) if around <= ok]
+    if said:                    # AllowOverlap(the shapes around it): the window is meant
+        owner.enclosure_used = getattr(owner, "enclosure_used", set()) | set(map(frozenset,
+                                                                                 said))
+        return
+    x0, y0 = P.min(axis=0)
+    x1, y1 = P.max(axis=0)
+    w, h = x1 - x0, y1 - y0
+    cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+    names = list(dict.fromkeys(f"`{g.label}`" for _, g, _ in faces))
+    who = ", ".join(names[:4]) + (f" and {len(names) - 4} more" if len(names) > 4 else "")
+    g0 = faces[0][1]
+    labels = [Label(g.span, "bounds it", primary=False) for _, g, _ in faces[1:4]
+              if g.span is not None and g.span != g0.span]
+    final = d.shapes.get(s)
+    island = final is not None and _area(region ^ final) > MIN_AREA
+    refs = list(dict.fromkeys(_ref(g, owner) for _, g, _ in faces))
+    stmt = f"AllowOverlap({', '.join(refs)})" if "self" not in refs \
+        and all(_NAMEABLE.match(r) for r in refs) else None
+    say = (f"say so with `{stmt}` in `{owner.path}` (the suggested fix: the part stays as it "
+           "is, cut with this opening, and the statement names the shapes, so it holds "
+           "whatever the params make of them)" if stmt else
+           f"name the shapes around it and write `AllowOverlap(` them `)` in `{owner.path}` "
+           "(the part stays as it is)")
+    sink.warning("W0515", f"an opening of {w:.2f} x {h:.2f} mm ({area:.2f} mm^2) near "
+                 f"({cx:.1f}, {cy:.1f}) is cut through `{owner.path}`"
+                 + (" around an island of material inside it" if island else "")
+                 + f": {who} enclose it and no hole declares it, so the part comes out with "
+                 "a window there", g0.span or owner.span, labels=labels,
+                 hint=f"if it is meant, {say}; if it is not meant, fill it: make the shapes "
+                      "around it overlap across it (or move them apart so that it opens onto "
+                      "the edge), and the opening is gone",
+                 fix=_insert_fix(owner, stmt, sink) if stmt else None)

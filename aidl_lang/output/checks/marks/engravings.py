@@ -1,0 +1,665 @@
+"""Engraving (the strokes of ``drawing`` structures) against the material it is drawn on:
+
+* ``W0505`` engraving outside the material or across a hole (the part grown by
+  :data:`ENGRAVE_TOL`);
+* ``W0516`` an engraved mark that runs along the cut edge (the laser engraves over the cut,
+  so it is not seen), or that comes within :data:`CUT_CLEAR` of it (ends on it, or a hair
+  short of it: the engraving meets the cut).
+
+Also the sample points of engraving items (:func:`_sample`, :func:`_samples`), which the text
+check (:mod:`.text`) measures marks with."""
+from __future__ import annotations
+
+import math
+
+import manifold3d as mf
+import numpy as np
+
+from ....base.diagnostics import DiagnosticSink
+from ...part.build.booleans import Drawing
+from ..common import _edges, _inside, _part_of, _pct, _signed
+
+ENGRAVE_TOL = 0.05       # mm: engraving this close to an edge still counts as on the material
+
+
+_T9 = np.linspace(0, 1, 9)[:, None]
+
+
+def _sample(item) -> np.ndarray:
+    kind = item[0]
+    if kind == "line":
+        p, q = np.asarray(item[1], float), np.asarray(item[2], float)
+        return p + _T9 * (q - p)
+    if kind == "poly":
+        P = np.asarray(item[1], float)
+        return np.vstack([P, (P + np.roll(P, -1, axis=0)) / 2])
+    if kind == "circle":
+        c, r = np.asarray(item[1], float), float(item[2])
+        t = np.linspace(0, 2 * math.pi, 32, endpoint=False)
+        return np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)])
+    if kind == "ellipse_arc":            # 17 points along it
+        arc = item[1]
+        return np.array([arc.at(arc.start_param + arc.sweep * i / 16) for i in range(17)])
+    if kind == "spline":                 # 9 points along each span
+        from ....geometry.shapes.spline import bez_at
+        return np.array([bez_at(b, float(t)) for b in item[1].spans for t in _T9[:, 0]])
+    _, c, r, a1, a2 = item
+    sweep = (a2 - a1) % (2 * math.pi) or 2 * math.pi
+    t = a1 + np.linspace(0, sweep, 17)
+    return np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)])
+
+
+def _n_samples(item) -> int:
+    """How many points :func:`_sample` gives for ``item``."""
+    kind = item[0]
+    if kind == "poly":
+        return 2 * len(item[1])
+    if kind == "spline":
+        return 9 * len(item[1].spans)
+    return {"line": 9, "circle": 32}.get(kind, 17)
+
+
+_T32 = np.linspace(0, 2 * math.pi, 32, endpoint=False)
+_COS32, _SIN32 = np.cos(_T32), np.sin(_T32)
+
+
+def _samples(items) -> np.ndarray:
+    """The sample points of engraving ``items``, in order: :func:`_sample` of each, with the
+    runs of lines and of circles each taken as one array operation (the same floating-point
+    operations per point)."""
+    out, run, kind = [], [], None
+
+    def flush():
+        if kind == "line":
+            L = np.asarray(run, dtype=float)             # k x 2 x 2
+            p, q = L[:, 0][:, None, :], L[:, 1][:, None, :]
+            out.append((p + _T9[None] * (q - p)).reshape(-1, 2))
+        elif kind == "circle":
+            C = np.asarray([c for c, _ in run], dtype=float)    # k x 2
+            R = np.asarray([r for _, r in run], dtype=float)[:, None]
+            xy = np.empty((len(run), 32, 2))
+            xy[:, :, 0] = C[:, :1] + R * _COS32
+            xy[:, :, 1] = C[:, 1:] + R * _SIN32
+            out.append(xy.reshape(-1, 2))
+        run.clear()
+    for it in items:
+        k = it[0]
+        if k != kind and run:
+            flush()
+        if k == "line":
+            run.append((it[1], it[2]))
+        elif k == "circle":
+            run.append((it[1], float(it[2])))
+        else:
+            out.append(_sample(it))
+        kind = k if k in ("line", "circle") else None
+    if run:
+        flush()
+    return np.vstack(out)
+
+
+# Manifold's round offset puts its arc vertices on the circle (Clipper2's round joins, arc
+# tolerance r (1 - cos(pi / segments)) with 16 segments), so the part grown by ENGRAVE_TOL
+# holds every point within ENGRAVE_TOL cos(pi / 16) of the part, less the 1e-8 mm grid
+_SURELY_GROWN = ENGRAVE_TOL * math.cos(math.pi / 16) - 1e-6
+_EPS = 2.220446049250313e-16      # np.finfo(float).eps, without its first call
+
+
+def _all_on_material(shape, pts: np.ndarray, loops: list | None = None) -> bool:
+    """True when every point of ``pts`` is certainly inside ``shape`` grown by
+    :data:`ENGRAVE_TOL` (what W0505 tests), without growing it: each point is inside the
+    outline itself or within :data:`_SURELY_GROWN` of one of its edges.  False means "not
+    shown": the grown outline then decides (engraving drawn on the edge is the usual case
+    the outline alone cannot settle).  ``loops``: the shape's polygons, when at hand."""
+    if loops is None:
+        loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+    return bool(_surely_on_material(pts, loops).all())
+
+
+def _surely_on_material(pts: np.ndarray, loops: list) -> np.ndarray:
+    """Per point of ``pts`` (N x 2, mm): True when it is certainly inside the outline
+    ``loops`` grown by :data:`ENGRAVE_TOL`: inside the outline or within
+    :data:`_SURELY_GROWN` of an edge.  Loops of less than ``ENGRAVE_TOL^2`` of area are left
+    out: a sliver the booleans leave (a circle added, then cut again: 3e-9 mm^2) is no
+    material, and Manifold's offset drops it; a hole that small holds no point farther than
+    ``ENGRAVE_TOL / sqrt(pi)`` from its edge, which the grown outline covers."""
+    loops = [p for p in loops if len(p) >= 3 and abs(_loop_area(p)) >= ENGRAVE_TOL ** 2]
+    edges = _edges(loops)
+    surely = _inside(pts, edges)
+    out = ~surely
+    if out.any():
+        surely[out] = _within(pts[out], edges, _SURELY_GROWN)
+    return surely
+
+
+def _loop_area(p: np.ndarray) -> float:
+    """The signed area of closed polygon ``p`` (N x 2, mm^2; the shoelace formula)."""
+    x, y = p[:, 0], p[:, 1]
+    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+
+
+def _within(pts: np.ndarray, edges: tuple, dist: float, max_pairs: int = 2_000_000) -> np.ndarray:
+    """True where a point of ``pts`` (N x 2) lies within ``dist`` of one of the segments
+    ``edges`` (x1, y1, x2, y2 arrays).  Each segment is measured only against the points
+    in its box grown by ``dist`` (a grid over the points, :class:`..nearby._Grid`).  All
+    False when more than ``max_pairs`` pairs would be measured."""
+    pts = np.asarray(pts, dtype=float).reshape(-1, 2)
+    n = len(pts)
+    x1, y1, x2, y2 = edges
+    res = np.zeros(n, dtype=bool)
+    if not n or not len(x1):
+        return res
+    from ...part.measure.nearby import TooManyPairs, _Grid, _median
+    x, y = pts[:, 0], pts[:, 1]
+    lo = np.column_stack([np.minimum(x1, x2), np.minimum(y1, y2)])
+    hi = np.column_stack([np.maximum(x1, x2), np.maximum(y1, y2)])
+    # the window is wider than ``dist`` by a few units in the last place, so that a point
+    # which the distance below rounds to exactly ``dist`` is never filtered out first; the
+    # points in each edge's box so grown, from a grid over the points (box tests first: the
+    # band of y alone held every point across a round part)
+    pad = (dist + 8 * _EPS * (np.abs(lo) + np.abs(hi) + dist))
+    try:
+        edge, pt = _Grid(pts, max(_median(np.hypot(x2 - x1, y2 - y1)), dist, 1e-9)).in_boxes(
+            lo - pad, hi + pad, limit=max_pairs)
+    except TooManyPairs:
+        return res
+    if not len(edge):
+        return res
+    ax, ay = x1[edge], y1[edge]
+    dx, dy = x2[edge] - ax, y2[edge] - ay
+    px, py = x[pt] - ax, y[pt] - ay
+    L2 = dx * dx + dy * dy
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.clip(np.where(L2 > 0, (px * dx + py * dy) / L2, 0.0), 0.0, 1.0)
+    ex, ey = px - t * dx, py - t * dy
+    res[pt[ex * ex + ey * ey <= dist * dist]] = True
+    return res
+
+
+def _holes_crossed(d: Drawing, roots, part, off: np.ndarray) -> list[str]:
+    """The holes of ``part`` whose cut region's box holds one of the points ``off`` (Nx2,
+    mm) of an engraving over an opening, named `path` in the order of the program."""
+    names = []
+    for c in d.cuts:
+        if c.region is None or c.region.is_empty() or _part_of(c.owner, roots) is not part:
+            continue
+        x0, y0, x1, y1 = c.region.bounds()
+        t = 2 * ENGRAVE_TOL
+        if ((off[:, 0] >= x0 - t) & (off[:, 0] <= x1 + t)
+                & (off[:, 1] >= y0 - t) & (off[:, 1] <= y1 + t)).any():
+            names.append(f"`{c.hole.path}`")
+    return names
+
+
+def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None = None,
+                     tick=None) -> None:
+    """W0505 for each engraved geometry with sample points off its part's material (the part
+    grown by :data:`ENGRAVE_TOL`); W0516 (:func:`_check_on_cut`, :func:`_check_meets_cut`).
+    ``tick(part)``: called before each part's work (the compile's deadline, which raises
+    :class:`~aidl_lang.base.limits.OutOfBudget`).  The points of all the geometries of one part are tested
+    in one :func:`_inside` call (a point's verdict does not depend on the other points), and
+    a part whose points are all certainly on it (:func:`_all_on_material`) is not grown."""
+    by_geom: dict = {}
+    for style, item, g in d.strokes:
+        if style == "drawing" and g is not None:
+            by_geom.setdefault(g, []).append(item)
+    by_part: dict = {}
+    for g, items in by_geom.items():
+        part = _part_of(g.owner, roots)
+        if part is None or part.kind != "solid" or roots[part].is_empty():
+            continue
+        by_part.setdefault(part, []).append((g, items))
+    verdicts: dict = {}
+    warned: set = set()             # the geometries a W0505 or W0516 already reports
+    for part, geoms in by_part.items():
+        if tick is not None:
+            tick(part)
+        shp = roots[part]
+        pts = _samples([it for _, items in geoms for it in items])
+        warned |= _check_on_cut(part, shp, geoms, pts, (loops or {}).get(part), sink)
+        if _all_on_material(shp, pts, (loops or {}).get(part)):
+            continue
+        grown = shp.offset(ENGRAVE_TOL, mf.JoinType.Round, 2.0, 16)
+        grown_loops = [np.asarray(p, dtype=float) for p in grown.to_polygons()]
+        inside = _inside(pts, _edges(grown_loops))
+        at = 0
+        for g, items in geoms:
+            n = sum(_n_samples(it) for it in items)
+            verdicts[g] = (part, pts[at:at + n], inside[at:at + n], grown_loops)
+            at += n
+    outer_of: dict = {}
+    for g in by_geom:
+        if g not in verdicts:
+            continue
+        part, pts, inside, grown_loops = verdicts[g]
+        if inside.all():
+            continue
+        if part not in outer_of:
+            outer_of[part] = _edges([p for p in grown_loops if _signed(p) > 0])
+        in_outline = _inside(pts[~inside], outer_of[part])
+        where = "across a hole" if in_outline.all() else (
+            "outside the outline" if not in_outline.any() else "outside the outline and across a hole")
+        warned.add(g)
+        off = float((~inside).sum())
+        # a letter's stroke over a screw hole is under 1% of a long text's samples: "0%" read
+        # as "nothing is off" (issue 84's door sign), so a small share is said as such
+        share = _pct(off, float(len(pts))) if off >= 0.005 * len(pts) else "under 1%"
+        hint = _off_outline_hint(d, part, g, pts, pts[~inside])
+        if where == "across a hole":
+            holes = _holes_crossed(d, roots, part, pts[~inside])
+            hint = (f"it crosses {', '.join(holes) if holes else 'an opening'}: shrink or move "
+                    "the drawing clear of it, or move the hole")
+        sink.warning("W0505", f"engraving `{g.label}` runs {where} of `{part.path}` "
+                     f"({share} of it is off the material)", g.span, hint=hint)
+    for part, geoms in by_part.items():
+        if tick is not None:
+            tick(part)
+        _check_meets_cut(part, roots[part], [(g, it) for g, it in geoms if g not in warned],
+                         (loops or {}).get(part), sink)
+
+
+def _off_outline_hint(d: Drawing, part, g, pts: np.ndarray, off: np.ndarray) -> str:
+    """W0505's hint for engraving ``g`` of ``part`` off its outline (``pts``: its samples,
+    n x 2 mm; ``off``: those off the material): where it leaves (the off sample nearest their
+    middle, mm), and a constraint only where one mends it: the mark reaches past the box of
+    the part's largest own shape, and fits in it with :data:`CUT_CLEAR` to spare, so
+    `Inside(d.mark, body, margin=0.5 mm)` (the names as written in the part) moves it onto
+    the material, clear of the cut; a mark larger than that shape is told to shrink.
+    Before (issue 84): "e.g. `Inside(label, body)`" named shapes the program did not have,
+    was offered for a knight's mane crossing the outline inside the box (which no box
+    constraint mends), and, made as `Inside(d.mark, body)`, set the mark on the cut edge
+    (W0516 again); made with `self` it conflicted (E0401)."""
+    from ..common import _solids_within
+    label, prefix = getattr(g, "label", ""), part.path + "."
+    p = off[int(np.argmin(np.hypot(*(off - off.mean(axis=0)).T)))]
+    hint = (f"it leaves the material at about ({p[0]:.2f}, {p[1]:.2f}): move, shrink or "
+            f"redraw `{label.rsplit('.', 1)[-1]}` so that it lies on the material, or move "
+            "the part's edge")
+    own = [(f.area(), geo, f.bounds()) for st, fs in _solids_within(d, part) if st is part
+           for geo, f in fs if f is not None and not f.is_empty() and geo.name]
+    if not own or not label.startswith(prefix):
+        return hint
+    _, body, (x0, y0, x1, y1) = max(own, key=lambda o: o[0])
+    lo, hi = off.min(axis=0), off.max(axis=0)
+    if not (lo[0] < x0 - ENGRAVE_TOL or lo[1] < y0 - ENGRAVE_TOL or hi[0] > x1 + ENGRAVE_TOL
+            or hi[1] > y1 + ENGRAVE_TOL):
+        return hint             # it crosses the outline inside the box: no box constraint mends it
+    w, h = np.ptp(pts[:, 0]), np.ptp(pts[:, 1])
+    if w + 2 * CUT_CLEAR > x1 - x0 or h + 2 * CUT_CLEAR > y1 - y0:
+        return (f"shrink the drawing to fit on `{body.name}`, or move it onto the material "
+                f"({hint})")
+    mark = label[len(prefix):]
+    return (f"{hint}; or constrain it onto the material: `Inside({mark}, {body.name}, "
+            f"margin={CUT_CLEAR} mm)` in `{part.path}` (its box inside `{body.name}`'s, "
+            f"{CUT_CLEAR} mm clear of the cut)")
+
+
+ON_CUT = 1 / 3           # of an engraving's samples: more on the outline is engraved over the cut
+
+
+def _check_on_cut(part, shape, geoms, pts: np.ndarray, loops, sink) -> set:
+    """W0516 for each engraved geometry of ``part`` of which more than :data:`ON_CUT` of the
+    sample points (at least 3) lie within :data:`ENGRAVE_TOL` of the part's outline: a mark
+    drawn along the cut edge (a protractor's 0 and 180 deg ticks on its straight edge), which
+    the laser engraves over the cut, so it is not seen.  ``pts``: the samples of ``geoms`` in
+    order (:func:`_samples`).  Returns the geometries warned."""
+    if loops is None:
+        loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+    on = _within(pts, _edges(loops), ENGRAVE_TOL)
+    said: set = set()
+    if not on.any():
+        return said
+    at = 0
+    for g, items in geoms:
+        n = sum(_n_samples(it) for it in items)
+        k = int(on[at:at + n].sum())
+        at += n
+        if k < 3 or k <= ON_CUT * n:
+            continue
+        said.add(g)
+        sink.warning("W0516", f"engraving `{g.label}` runs along the cut edge of `{part.path}` "
+                     f"({_pct(float(k), float(n))} of it lies on the outline): the laser "
+                     "engraves over the cut, so the mark is not seen", g.span,
+                     hint="move the mark inside the outline (start it at least its line "
+                          "width from the edge) or leave it out; the cut already draws the edge")
+    return said
+
+
+CUT_CLEAR = 0.5          # mm: an engraved mark closer to the cut edge runs into it
+SQUARE = math.radians(15)   # a straight mark ending on the edge this near square is a tick
+SCALE = 3                # ticks ending square on the edges of one part: a scale (a ruler)
+
+
+def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
+    """W0516 for an engraved mark (not text) of ``part`` that comes within :data:`CUT_CLEAR`
+    of the part's cut edge (its outline or a hole's edge) without running along it (that is
+    :func:`_check_on_cut`) or off the material (W0505): a knight's mouth line drawn to the
+    outline, a line ending a hair short of it.  The laser's engraving meets the cut, and a
+    sliver under half a millimetre between them chars or breaks off.  Straight marks that
+    end on the edge (within :data:`ENGRAVE_TOL`) and meet it square (within :data:`SQUARE`),
+    :data:`SCALE` or more on one part, are a scale's ticks hanging from the edge (a ruler, a
+    protractor) and are not warned; nor is a mark whose ends all lie at the edge (a band or a
+    seam drawn across the part, a cord wrapped round a grip), nor any copy of a loop statement
+    of which half the copies or more are such bands.  The warning names the mark, the part, which edge, the gap in mm and where
+    (x, y), and how far inside to end or move the mark.  ``geoms``: (geometry, its stroke
+    items); near-linear (the marks' and edges' boxes paired by :func:`box_pairs`)."""
+    from ...part.measure.nearby import box_pairs_between
+    geoms = [(g, items) for g, items in geoms if g.kind != "Text"]
+    if not geoms:
+        return
+    if loops is None:
+        loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+    loops = [lp for lp in loops if len(lp) >= 2]
+    if not loops:
+        return
+    E0 = np.concatenate(loops)
+    E1 = np.concatenate([np.roll(lp, -1, axis=0) for lp in loops])
+    hole = np.concatenate([np.full(len(lp), _signed(lp) < 0) for lp in loops])
+    segs = [_mark_segments(items) for _, items in geoms]
+    S0 = np.concatenate([sg[0] for sg in segs])
+    S1 = np.concatenate([sg[1] for sg in segs])
+    owner = np.repeat(np.arange(len(segs)), [len(sg[0]) for sg in segs])
+    pairs = box_pairs_between(np.column_stack([np.minimum(S0, S1), np.maximum(S0, S1)]),
+                              np.column_stack([np.minimum(E0, E1), np.maximum(E0, E1)]),
+                              CUT_CLEAR / 2)       # marks against edges, not edge pairs
+    if not len(pairs):
+        return
+    si, ej_all = pairs[:, 0], pairs[:, 1]
+    d, pa, _ = _pair_gap(S0[si], S1[si], E0[ej_all], E1[ej_all])
+    mk = owner[si]
+    order = np.lexsort((d, mk))
+    mk, d, pa, ej_all = mk[order], d[order], pa[order], ej_all[order]
+    starts = np.r_[0, np.flatnonzero(mk[1:] != mk[:-1]) + 1]
+    stops = np.r_[starts[1:], len(mk)]
+    # 0.5 mm clear to within 1e-6 mm is clear: a mark set by `Inside(..., margin=0.5 mm)`
+    # ends 0.4999999 mm from the edge after solving (W0505's hint, issue 84)
+    close = [(int(mk[a]), a, z) for a, z in zip(starts, stops) if d[a] < CUT_CLEAR - 1e-6]
+    # each close mark's open ends against the edges near it, all in one array operation
+    ends = [_open_ends(*segs[k]) for k, _, _ in close]
+    qi, qe, qo, near_edges = [], [], [], []
+    for c, ((k, a, z), q) in enumerate(zip(close, ends)):
+        e = np.sort(ej_all[a:z])                 # np.unique imports numpy.ma (18 ms cold)
+        e = e[np.r_[True, e[1:] != e[:-1]]]
+        near_edges.append(e)
+        for t in range(len(q)):
+            qi.append(np.full(len(e), len(qo)))
+            qe.append(e)
+            qo.append((c, t))
+    de_of: dict = {}
+    if qo:
+        qi, qe = np.concatenate(qi), np.concatenate(qe)
+        Q = np.array([ends[c][t] for c, t in qo])
+        dq, _, _ = _pair_gap(Q[qi], Q[qi], E0[qe], E1[qe])
+        o = np.lexsort((dq, qi))
+        qi, dq, qe = qi[o], dq[o], qe[o]
+        first = np.r_[0, np.flatnonzero(qi[1:] != qi[:-1]) + 1]
+        for f in first:
+            de_of[qo[int(qi[f])]] = (float(dq[f]), int(qe[f]))
+    found = []
+    bands: dict = {}                 # statement span -> its copies that run edge to edge
+    for c, (k, a, _) in enumerate(close):
+        g, items = geoms[k]
+        gap, pm, ej = float(d[a]), pa[a], int(ej_all[a])
+        q = ends[c]
+        de = np.array([de_of.get((c, t), (math.inf, -1))[0] for t in range(len(q))])
+        if len(q) >= 2 and (de < CUT_CLEAR).all():
+            bands[g.span] = bands.get(g.span, 0) + 1
+            continue                         # edge to edge: a band, a seam across the part
+        end = None
+        if len(q) and de.min() < CUT_CLEAR and de.min() - gap <= max(ENGRAVE_TOL, 1e-6):
+            t = int(np.argmin(de))
+            end, pm = q[t], q[t]
+            gap, ej = de_of[(c, t)]
+        tick = False
+        line = len(items) == 1 and items[0][0] == "line"
+        if line and end is not None and gap <= ENGRAVE_TOL:
+            u, w = np.asarray(items[0][2], float) - items[0][1], E1[ej] - E0[ej]
+            nu, nw = float(np.hypot(*u)), float(np.hypot(*w))
+            tick = nu > 0 and nw > 0 and abs(float(u @ w)) / (nu * nw) <= math.sin(SQUARE)
+        found.append((g, items, near_edges[c], gap, ej, pm, end, line, tick))
+    scale = sum(f[-1] for f in found) >= SCALE
+    copies: dict = {}
+    for g, _ in geoms:
+        copies[g.span] = copies.get(g.span, 0) + 1
+    by_statement: dict = {}
+    for f in found:
+        if f[-1] and scale:                  # a scale's ticks hanging from the edge: not warned
+            continue
+        if f[0].span is not None and 2 * bands.get(f[0].span, 0) >= copies[f[0].span]:
+            continue                         # one of a loop of bands (its last one ends inside)
+        by_statement.setdefault(f[0].span or f[0], []).append(f)
+    for group in by_statement.values():
+        group.sort(key=lambda f: f[3])
+        g, items, e, gap, ej, pm, end, line, _ = group[0]
+        which = "a hole's edge" if hole[ej] else "the outline"
+        t = r = None
+        if line and end is not None:
+            p, q = np.asarray(items[0][1], float), np.asarray(items[0][2], float)
+            if np.hypot(*(end - p)) < np.hypot(*(end - q)):
+                p, q = q, p                              # q: the end at the edge
+            t, r = _shorten_clear(p, q, E0[e], E1[e])
+        if end is not None:
+            how = "ends on" if gap <= ENGRAVE_TOL else f"ends {gap:.2f} mm from"
+        else:
+            how = "touches" if gap <= ENGRAVE_TOL else f"comes {gap:.2f} mm from"
+        if t is not None:
+            fix = (f"end `{g.label}` {t:.2f} mm further inside, at ({r[0]:.2f}, {r[1]:.2f}) "
+                   f"(shorten it by {t:.2f} mm), so that it stops {CUT_CLEAR} mm short of the "
+                   "edge")
+            if len(group) > 1:
+                ts = [_shorten_clear(*_far_near(f), E0[f[2]], E1[f[2]])[0]
+                      if f[7] and f[6] is not None else None for f in group]
+                if all(x is not None for x in ts):
+                    fix = (f"end each copy of `{g.label}` at least {max(ts):.2f} mm further "
+                           f"inside (shorten it), so that it stops {CUT_CLEAR} mm short of the "
+                           "edge")
+                else:
+                    fix = (f"end or move each copy of `{g.label}` at least {CUT_CLEAR} mm "
+                           "inside the edge")
+        else:
+            fix = (f"keep `{g.label}` {math.ceil((CUT_CLEAR - gap) * 100) / 100:.2f} mm "
+                   "further from the edge (move it, or change its size)")
+        more = ""
+        if len(group) > 1:
+            rest = ", ".join(f"`{_copy_label(f[0], short=True)}` ({f[3]:.2f} mm at "
+                             f"({f[5][0]:.2f}, {f[5][1]:.2f}))" for f in group[1:4])
+            more = (f"; {len(group) - 1} more cop{'ies' if len(group) > 2 else 'y'} of this "
+                    f"statement as close: {rest}{', ...' if len(group) > 4 else ''}")
+        sink.warning("W0516", f"engraving `{_copy_label(g)}` {how} the cut edge of "
+                     f"`{part.path}` ({which}) at ({pm[0]:.2f}, {pm[1]:.2f}): the engraving "
+                     f"meets the cut (a mark needs {CUT_CLEAR} mm clear of the edge), so it "
+                     f"runs into the edge{more}", g.span,
+                     hint=fix + "; the cut already draws the edge")
+
+
+def _far_near(f) -> tuple:
+    """A found straight mark's ends as (far, near): near is its end at the edge."""
+    items, end = f[1], f[6]
+    p, q = np.asarray(items[0][1], float), np.asarray(items[0][2], float)
+    return (q, p) if np.hypot(*(end - p)) < np.hypot(*(end - q)) else (p, q)
+
+
+def _open_ends(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """The open ends (k x 2) of a mark's segments (starts ``a``, ends ``b``): the points that
+    end one segment only (a line's two ends; none for a circle or a closed outline)."""
+    P = np.vstack([a, b])
+    if len(a) == 1:
+        return P if float(np.hypot(*(a[0] - b[0]))) > 1e-9 else P[:0]
+    key = (np.round(P, 9) + 0.0).view(np.complex128).ravel()     # x + iy; + 0.0: -0.0 is 0.0
+    order = np.argsort(key)             # equal points side by side (np.unique imports numpy.ma)
+    k = key[order]
+    run = np.cumsum(np.r_[True, k[1:] != k[:-1]]) - 1
+    once = np.empty(len(k), dtype=bool)
+    once[order] = np.bincount(run)[run] == 1
+    return P[once]
+
+
+def _shorten_clear(p, q, E0, E1) -> tuple:
+    """How much (mm, to 0.01) to shorten the line ``p``-``q`` at ``q`` so that it stays
+    :data:`CUT_CLEAR` from the edges ``E0``-``E1``, and its new end (rounded to 0.01 mm, the
+    figures a hint prints, checked to clear): ``(t, end)``, or ``(None, None)``."""
+    length = float(np.hypot(*(q - p)))
+    if length <= 0:
+        return None, None
+    u = (q - p) / length
+
+    def clear(t):
+        r = q - t * u
+        return _seg_gap(p[None], r[None], E0, E1)[0] >= CUT_CLEAR
+    top = length * (1 - 1e-9)
+    if not clear(top):
+        return None, None
+    lo, hi = 0.0, top
+    while hi - lo > 1e-3:
+        mid = (lo + hi) / 2
+        lo, hi = (lo, mid) if clear(mid) else (mid, hi)
+    t = math.ceil(hi * 100 - 1e-9) / 100
+    for _ in range(5):                  # the figures as printed must clear the edge
+        r = np.round(q - t * u, 2)
+        if _seg_gap(p[None], r[None], E0, E1)[0] >= CUT_CLEAR:
+            return t, r
+        t += 0.01
+    return None, None
+
+
+def _copy_label(g, short: bool = False) -> str:
+    """``g``'s label (``short``: its name alone), with ``[k]`` when ``g`` is the k-th copy of
+    a statement run in a loop (the geometries of its structure with its name and its
+    statement's span, in the order made): ``clock.dial.ticks[0]``.  Copies made by nested
+    loops are counted as one run."""
+    owner = getattr(g, "owner", None)
+    name = g.name if short and g.name else g.label
+    if not getattr(g, "name", None) or owner is None or g.span is None:
+        return name
+    same = [h for h in owner.geometry if h.name == g.name and h.span == g.span]
+    if len(same) < 2 or g not in same:
+        return name
+    return f"{name}[{same.index(g)}]"
+
+
+def _pair_gap(a0, a1, b0, b1) -> tuple:
+    """The distance (mm) between each segment ``a0[k]``-``a1[k]`` and ``b0[k]``-``b1[k]``
+    (k x 2 arrays each, paired row by row): ``(d, pa, pb)``, the k distances and the nearest
+    points on each (0 and the crossing point where two cross)."""
+    da, db = a1 - a0, b1 - b0
+
+    def foot(p, s0, dd):
+        l2 = np.einsum("ij,ij->i", dd, dd)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = np.clip(np.where(l2 > 0, np.einsum("ij,ij->i", p - s0, dd) / l2, 0.0), 0, 1)
+        return s0 + t[:, None] * dd
+    cand = [(a0, foot(a0, b0, db)), (a1, foot(a1, b0, db)),
+            (foot(b0, a0, da), b0), (foot(b1, a0, da), b1)]
+    dist = np.array([np.hypot(*(p - q).T) for p, q in cand])       # 4 x k
+    best = np.argmin(dist, axis=0)
+    r = np.arange(len(a0))
+    pa = np.stack([c[0] for c in cand])[best, r]
+    pb = np.stack([c[1] for c in cand])[best, r]
+    d = dist[best, r]
+
+    def cross(u, v):
+        return u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]
+    s1, s2 = cross(da, b0 - a0), cross(da, b1 - a0)
+    s3, s4 = cross(db, a0 - b0), cross(db, a1 - b0)
+    hit = (s1 * s2 < 0) & (s3 * s4 < 0)
+    if hit.any():
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = s3[hit] / (s3[hit] - s4[hit])
+        x = a0[hit] + t[:, None] * da[hit]
+        d = np.where(hit, 0.0, d)
+        pa[hit] = x
+        pb[hit] = x
+    return d, pa, pb
+
+
+def _seg_gap(A0, A1, B0, B1) -> tuple:
+    """The least distance (mm) between the segments ``A0[i]``-``A1[i]`` (n x 2 each) and
+    ``B0[j]``-``B1[j]`` (m x 2): ``(d, i, j, pa, pb)`` with the nearest points ``pa`` on
+    segment ``i`` of A and ``pb`` on segment ``j`` of B (0 and the crossing point when two
+    segments cross).  All n x m pairs in one array operation: for the small sets of one mark
+    and one text, or one mark and the edges near it.  ``(inf, -1, -1, None, None)`` when
+    either set is empty."""
+    A0, A1 = np.asarray(A0, float).reshape(-1, 2), np.asarray(A1, float).reshape(-1, 2)
+    B0, B1 = np.asarray(B0, float).reshape(-1, 2), np.asarray(B1, float).reshape(-1, 2)
+    if not len(A0) or not len(B0):
+        return math.inf, -1, -1, None, None
+    a0, a1 = A0[:, None, :], A1[:, None, :]
+    b0, b1 = B0[None, :, :], B1[None, :, :]
+    da, db = a1 - a0, b1 - b0
+
+    def foot(p, s0, d):             # the nearest point to p on the segments s0 + t d
+        l2 = (d * d).sum(-1)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = np.clip(np.where(l2 > 0, ((p - s0) * d).sum(-1) / l2, 0.0), 0.0, 1.0)
+        return s0 + t[..., None] * d
+    cands = []                      # (distance n x m, point on A, point on B)
+    for p, on_b in ((a0, True), (a1, True), (b0, False), (b1, False)):
+        if on_b:
+            q = foot(p, b0, db)
+            pa, pb = np.broadcast_to(p, q.shape), q
+        else:
+            q = foot(p, a0, da)
+            pa, pb = q, np.broadcast_to(p, q.shape)
+        cands.append((np.hypot(*(pa - pb).transpose(2, 0, 1)), pa, pb))
+    d = np.minimum.reduce([c[0] for c in cands])
+    # proper crossings: the ends of each segment on opposite sides of the other
+    def cross(u, v):
+        return u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]
+    s1, s2 = cross(da, b0 - a0), cross(da, b1 - a0)
+    s3, s4 = cross(db, a0 - b0), cross(db, a1 - b0)
+    hit = (s1 * s2 < 0) & (s3 * s4 < 0)
+    d = np.where(hit, 0.0, d)
+    i, j = np.unravel_index(int(np.argmin(d)), d.shape)
+    if hit[i, j]:
+        t = s3[i, j] / (s3[i, j] - s4[i, j])
+        p = A0[i] + t * (A1[i] - A0[i])
+        return 0.0, int(i), int(j), p, p.copy()
+    best = min(cands, key=lambda c: c[0][i, j])
+    return float(best[0][i, j]), int(i), int(j), np.array(best[1][i, j]), np.array(best[2][i, j])
+
+
+def _mark_segments(items) -> tuple:
+    """The segments of an engraved mark's ``items`` as (starts, ends), k x 2 each: lines
+    exact, curves as the polylines of their W0505 samples."""
+    a, b = [], []
+    for it in items:
+        P = _polyline(it)
+        a.append(P[:-1])
+        b.append(P[1:])
+    return np.concatenate(a), np.concatenate(b)
+
+
+def _polyline(item) -> np.ndarray:
+    """An engraving item as a polyline (lines exact, curves sampled as in W0505)."""
+    if item[0] == "line":
+        return np.array([item[1], item[2]], dtype=float)
+    if item[0] == "poly":
+        P = np.asarray(item[1], dtype=float)
+        return np.vstack([P, P[:1]])
+    if item[0] == "circle":
+        P = _sample(item)
+        return np.vstack([P, P[:1]])
+    return _sample(item)
+
+
+def _check_zero_lines(d: Drawing, sink: DiagnosticSink) -> None:
+    """W0524 for each statement of a ``drawing`` whose Line has no length (its start and
+    end at one place, within 1e-9 mm: ``Line((x, y), (x, y))``): it engraves no line, only a
+    plunge at a point, and nothing holds its two points (each a free starting guess).  One
+    warning per statement, with the number of its copies (a loop's)."""
+    by_span: dict = {}
+    for style, item, g in d.strokes:
+        if style != "drawing" or g is None or item[0] != "line" or g.span is None:
+            continue
+        p, q = np.asarray(item[1], dtype=float), np.asarray(item[2], dtype=float)
+        if float(np.hypot(*(q - p))) <= 1e-9:
+            by_span.setdefault(g.span, []).append((g, p))
+    for span, hits in by_span.items():
+        g, p = hits[0]
+        many = f" ({len(hits)} copies)" if len(hits) > 1 else ""
+        sink.warning("W0524", f"`{g.label}` is a Line of zero length{many}: its start and end "
+                     f"are both at ({p[0]:.6g}, {p[1]:.6g}), so it engraves no line (a "
+                     "plunge at a point) and nothing holds its two points", span,
+                     hint="give the Line two different points (its end where the stroke should "
+                          "end, e.g. `Line((x, y), (x + 10, y))`), or delete it; a dot is a "
+                          "small Circle")
