@@ -58,3 +58,15 @@ def test_a_program_without_params_is_swept_by_its_numbers(rel):
     assert [(d.code, d.span and d.span.line) for d in copy.diagnostics] == \
         [(d.code, d.span and d.span.line) for d in mine.diagnostics]
     assert [round(x.area, 6) for x in copy.parts] == [round(x.area, 6) for x in mine.parts]
+
+
+def test_a_value_the_lifted_sweep_tried_compiles_without_a_traceback():
+    """The robot chassis' cable hole at 40 mm (the sweep of its numbers tried it) runs into
+    the caster's holes: W0508, whose fix looked for a move and raised a TypeError (a local
+    named like the holes' boxes it was given, output/checks/clearing.py)."""
+    import aidl_lang
+    p = ROOT / "data/model_runs/issue84/run/11_robot_chassis.aidl"
+    src = p.read_text()
+    assert "diameter=20)" in src
+    r = aidl_lang.compile(source=src.replace("diameter=20)", "diameter=40)"), path=str(p))
+    assert "W0508" in {d.code for d in r.diagnostics}
