@@ -1,8 +1,9 @@
 """``aidl check --sweep``: a design checked across its params' ranges.
 
 :func:`sweep` compiles the program at its written values, then with each numeric param at
-the low end, the middle and the high end of its range (the others at their values), then
-at a small Latin hypercube of combinations (seeded: the same points on every run).  A
+the low end, the middle and the high end of its range (the others at their values), each
+count at its values (all of a short range, else its ends) against each other param's ends,
+then at a small Latin hypercube of combinations (seeded: the same points on every run).  A
 param's range is its ``min=``/``max=``, else the span the studio's slider gives it
 (:func:`aidl_lang.serve.params.default_span`); a plain number is a real unless it counts
 (a whole ``step=``, used in ``range()``, or refused half a step past its value:
