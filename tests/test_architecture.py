@@ -49,7 +49,8 @@ def test_flat_package_is_gone():
     top = sorted(p.stem for p in PKG.glob("*.py") if p.stem != "__init__")
     assert top == ["api", "ast", "cache", "codes", "diagnostics", "files", "interp", "limits",
                    "memory", "parser", "pipeline", "records", "reference", "registry", "set_values",
-                   "sources", "sweep", "sweep_plan", "topic_examples", "typecheck", "workers"]
+                   "sources", "sweep", "sweep_literals", "sweep_plan", "sweep_scan", "topic_examples",
+                   "typecheck", "workers"]
 
 
 def test_readme_layout_names_every_package_and_core_module():
