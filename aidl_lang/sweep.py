@@ -508,13 +508,15 @@ class _Sweep:
             self.report.points -= 1
             return None
         self.report.warm += bool(res.warm)
-        got = [(errs[0].code, errs[0].message)] if errs else self._changes(res)
+        counted = any(p.integer and vals.get(p.name, p.value) != p.value for p in self.params)
+        got = [(errs[0].code, errs[0].message)] if errs else self._changes(res, counted)
         self.problems[key] = got
         return got
 
-    def _changes(self, res) -> list[tuple[str, str]]:
+    def _changes(self, res, counted: bool = False) -> list[tuple[str, str]]:
         """The new warnings of a compile (not at the written values) and its parts' changes
-        of topology (``W0510``)."""
+        of topology (``W0510``); ``counted``: a count moved, so a different number of
+        openings is what it is for (a handle's grips copied in one hole: no new names)."""
         from .output.checks.changes import topology, topology_changes
         got = [(d.code, d.message) for d in res.sink.items
                if d.code not in NOT_COMPARED and _key(d) not in self.base_keys]
@@ -524,7 +526,8 @@ class _Sweep:
                 if b is None:
                     continue
                 what = [w for w in topology_changes(b, t)
-                        if not (" opening" in w and "instead of" in w and b.holes != t.holes)]
+                        if not (" opening" in w and "instead of" in w
+                                and (counted or b.holes != t.holes))]
                 if what:
                     got.append(("W0510", f"part `{part}` changes: " + "; ".join(what[:3])))
         return got
