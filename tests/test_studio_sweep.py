@@ -231,3 +231,21 @@ def test_law_a_band_between_clean_values_is_hatched_as_a_band(c, d):
     for x in (band["from"], band["to"]):
         r = aidl_lang.compile(source=source, path="p.aidl", overrides={"off": f"{x} mm"})
         assert r.ok and not [g for g in r.diagnostics if g.code in ("W0507", "W0508")], x
+
+
+def test_a_gallery_sample_is_hatched_where_set_breaks_it(tmp_path):
+    """benchmarks/serve/studio_hatching.py over a sample: the rounded tab (its W0520 band at
+    width 32.6-39 mm with its length at 20 mm, clean on both sides, hatched as a band) at 8
+    seeded random values of each slider, each compiled with `--set`: the hatching agrees with
+    every one; the bracket's bolt counts (1-10) break at each odd count (W0508: a bolt on the
+    vents' circle), each hatched alone.  About 6 s of CPU."""
+    from aidl_lang.studio import gallery
+    from aidl_lang.sweep_scan import scan
+    from benchmarks.serve.studio_hatching import check_entry
+    by = {e.id: e for e in gallery.entries()}
+    checked, agree, bad = check_entry(by["generator/rounded_tab"], 8, 0, str(tmp_path))
+    assert checked >= 12 and agree == checked, bad
+    rep = scan(by["example/bracket"].source, str(tmp_path / "main.aidl"), only={"bolts"})
+    assert [(a, b) for a, b, _ in rep.broken("bolts")] == [
+        (None, 2.0), (2.0, 4.0), (4.0, 6.0), (6.0, 8.0), (8.0, 10.0)]
+    assert {r.code for r in rep.runs["bolts"] if r.broken} == {"W0508"}
