@@ -1,4 +1,5 @@
-"""``aidl check --sweep`` over every example (examples/*.aidl) and every program models wrote
+"""``aidl check --sweep`` over every example (examples/*.aidl, examples/generators/*.aidl) and
+every program models wrote
 (data/model_runs/**/*.aidl), ranges declared or not, params or not (issue 92): each file that
 compiles is swept (a param without a range across its slider's span; a program without a
 numeric param by the numbers that size its parts, :mod:`aidl_lang.sweep_literals`), and each
@@ -21,7 +22,8 @@ NOT_COMPARED = {"W0510", "W0521", "W0110"}
 
 
 def files() -> list[Path]:
-    return sorted(ROOT.glob("examples/*.aidl")) + sorted(ROOT.glob("data/model_runs/**/*.aidl"))
+    return (sorted(ROOT.glob("examples/*.aidl")) + sorted(ROOT.glob("examples/generators/*.aidl"))
+            + sorted(ROOT.glob("data/model_runs/**/*.aidl")))
 
 
 def _texts(values: dict, units: dict) -> dict:
