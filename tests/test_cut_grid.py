@@ -470,7 +470,7 @@ def test_a_100_by_100_grid_of_crossing_slits_gives_its_pieces_within_the_budget(
     pytest.importorskip("shapely")
     import json
 
-    from aidl_lang.output.checks.inventory import parts_text
+    from aidl_lang.output.checks.reports.inventory import parts_text
     (tmp_path / "t.aidl").write_text(_slit_grid_src(100, span))
     size = 202.0
     cuts = []

@@ -292,7 +292,7 @@ def test_a_worker_is_replaced_after_its_recycle_count_and_no_answer_is_lost(tmp_
     studio replaces it in the background (:meth:`Worker.renew`) after the answer that reached
     the count. By counts, at recycle 2: 5 previews, every one answered and drawn, by 3
     processes (2 + 2 + 1); the one renewed before a request answers it at once."""
-    from aidl_lang import workers as W
+    from aidl_lang.host import workers as W
     from aidl_lang.studio import compiler
     assert Settings.from_env({"AIDL_STUDIO_RECYCLE": "7"}).recycle == 7
     assert Settings().recycle == 200

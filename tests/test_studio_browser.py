@@ -368,3 +368,23 @@ def test_a_visitors_program_is_swept_and_its_slider_marks_the_bad_range(pages):
     assert phone.locator(ZONE).is_visible()
     phone.locator(SLIDER).scroll_into_view_if_needed()
     phone.screenshot(path=str(OUT / "studio-sweep-phone.png"), full_page=True)
+
+    # holes at x = 18 and 34 mm: `off` slides through them, merging while |off - x| < 6.5
+    # mm: the band next to its clean range is the `above` mark, the one past the clean
+    # values between them a mark of its own
+    sweeps = page.evaluate("window.studio.sweeps")
+    page.evaluate("""() => { const v = window.studio.editor.view;
+        const at = v.state.doc.toString().lastIndexOf('}');
+        v.dispatch({changes: {from: at, to: at,
+            insert: '    hole k { c = Circle(center=(18, 0), radius=3) }\\n'
+                  + '    hole m { c = Circle(center=(34, 0), radius=3) }\\n'}}); }""")
+    page.wait_for_function(f"() => window.studio.sweeps > {sweeps} && window.studio.sweep.ok",
+                           timeout=HANG_GUARD)
+    first, second = page.evaluate("window.studio.sweep.params.off.bands")
+    assert 10.9 <= first["from"] <= 11.5 and 24.5 <= first["to"] <= 25.1, first
+    assert 26.9 <= second["from"] <= 27.5 and second["to"] is None, second
+    assert page.locator(ZONE).get_attribute("title") == first["text"]
+    band = page.locator('.param[data-name="off"] .unclean.band')
+    assert band.count() == 1 and band.is_visible()
+    assert band.get_attribute("title") == second["text"]
+    assert second["text"].startswith(f"above {second['from']:g} mm: ")

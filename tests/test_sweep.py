@@ -65,9 +65,10 @@ def test_a_design_clean_across_its_ranges_has_no_finding():
     rep = sweep(CLEAN, "plate.aidl")
     assert rep.ok and rep.swept == ["width", "r", "n"] and rep.unranged == []
     assert rep.findings == [] and rep.skipped == 0
-    # ends and middles (3 x 3, less width's and r's middles: their written values) and 8
-    # combinations on the sliders' steps (less one met twice)
-    assert 7 + 6 <= rep.points <= 7 + 8
+    # ends and middles (3 x 3, less width's and r's middles: their written values), the
+    # count n at its values not met yet (at most 1), n at either end with each other param
+    # at either end (8) and 8 combinations on the sliders' steps (less those met before)
+    assert 7 + 8 + 6 <= rep.points <= 7 + 1 + 8 + 8
     assert "clean" in rep.text()
 
 

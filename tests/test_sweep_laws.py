@@ -105,3 +105,63 @@ def test_the_same_file_gives_the_same_lines_beside_two_busy_loops():
     assert cut and quiet.not_judged()
     assert all("bisected" not in f.diagnostic.hint for f in cut)
     assert "not judged, out of budget" in quiet.text()
+
+
+LITERAL_PLATE = """solid plate {{
+    body = Rectangle(center=(0, 0), width={w:.3f}, height=40)
+    hole h {{ c = Circle(center=({off}, 0), diameter={d}) }}
+}}
+"""
+
+
+@settings(max_examples=3, deadline=None)
+@given(off=st.sampled_from([5, 10, 15]), d=st.sampled_from([3, 5, 8]),
+       over=st.floats(1.3, 1.9))
+def test_law_a_plate_without_params_is_bounded_at_the_computed_width(off, d, over):
+    """No `param`: the literal width is lifted and swept across its slider's span (a quarter
+    to twice it); its clean low end is where the wall breaks, and the finding is located at
+    the literal."""
+    brk = 2 * (off + d / 2 + 0.5)
+    w = brk * over
+    src = LITERAL_PLATE.format(w=w, off=off, d=d)
+    rep = sweep(src, "plate.aidl", points=0)
+    assert rep.ok and "body_width" in rep.lifted
+    [f] = [f for f in rep.findings if list(f.clean) == ["body_width"]
+           and f.values["body_width"] < w]
+    a, _ = f.clean["body_width"]
+    lo, hi = rep.ranges["body_width"]
+    assert lo <= w / 4 + 0.01 and hi >= 2 * w - 0.01
+    assert brk - 0.02 <= a <= brk + _slack(lo, hi), (brk, a)
+    sp = f.diagnostic.span
+    assert src[sp.start:sp.end] == f"{w:.3f}" and sp.line == 2
+
+
+CORNER = """param n = 2, min = 1, max = {N}, step = 1
+param d = 4 mm, min = 2 mm, max = {dmax} mm
+
+solid strip {{
+    body = Rectangle(center=(0, 0), width={W:.3f}, height=30)
+    for i in range(n) {{
+        hole h {{ c = Circle(center=({x0:.3f} + i * {P}, 0), diameter=d) }}
+    }}
+}}
+"""
+
+
+@settings(max_examples=3, deadline=None)
+@given(N=st.integers(3, 12), P=st.sampled_from([10, 12, 14]), slack=st.floats(0.6, 2.4))
+def test_law_a_count_breaking_only_with_another_params_end_is_found(N, P, slack):
+    """A row of `n` holes of diameter `d` at pitch P: its last hole's wall to the edge is
+    `slack` + 0.5 mm at n = N with the written d, and breaks only with d at its high end too
+    (each alone is clean).  With no Latin hypercube the sweep finds the combination: the
+    count is tried at each of its values against the other param's ends; it holds under
+    `--set`."""
+    from benchmarks.checks.sweep_programs import verify
+    dmax = P - 1                          # neighbours never merge
+    W = P * (N - 1) + 10 + 2 + 0.5 + slack  # first centre 10 mm in; d=4 leaves slack + 0.5
+    src = CORNER.format(N=N, dmax=dmax, W=W, x0=-W / 2 + 10, P=P)
+    rep = sweep(src, "strip.aidl", points=0)
+    assert rep.ok and rep.skipped == 0
+    assert all(len(f.clean) == 2 for f in rep.findings), rep.text()   # neither alone
+    assert any(f.values == {"n": N, "d": dmax} for f in rep.findings), rep.text()
+    assert rep.combinations() and verify(src, "strip.aidl", rep) == []

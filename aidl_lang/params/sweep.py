@@ -1,8 +1,9 @@
 """``aidl check --sweep``: a design checked across its params' ranges.
 
 :func:`sweep` compiles the program at its written values, then with each numeric param at
-the low end, the middle and the high end of its range (the others at their values), then
-at a small Latin hypercube of combinations (seeded: the same points on every run).  A
+the low end, the middle and the high end of its range (the others at their values), each
+count at its values (all of a short range, else its ends) against each other param's ends,
+then at a small Latin hypercube of combinations (seeded: the same points on every run).  A
 param's range is its ``min=``/``max=``, else the span the studio's slider gives it
 (:func:`aidl_lang.serve.params.default_span`); a plain number is a real unless it counts
 (a whole ``step=``, used in ``range()``, or refused half a step past its value:
@@ -86,7 +87,10 @@ class SweepReport:
     sweep (the written values' compile included); ``work``: the work units the points
     spent (:func:`~aidl_lang.params.sweep_plan.work`); ``tolerance``: the bisection's stopping
     width (a fraction of each range); ``ranges``: ``{param: (lo, hi)}`` swept (display
-    units); ``findings``: :class:`Finding` list (empty: clean across the ranges)."""
+    units); ``findings``: :class:`Finding` list (empty: clean across the ranges);
+    ``lifted``: for a program without a numeric ``param``, ``{name: Literal}`` of the numbers
+    swept as params (:mod:`aidl_lang.params.sweep_literals`; :func:`~aidl_lang.params.sweep_literals.written`
+    writes a finding's values into the file)."""
 
     ok: bool = True
     swept: list = field(default_factory=list)
@@ -100,6 +104,7 @@ class SweepReport:
     work: int = 0
     ranges: dict = field(default_factory=dict)
     units: dict = field(default_factory=dict)
+    lifted: dict = field(default_factory=dict)
     findings: list = field(default_factory=list)
     errors: list = field(default_factory=list)
 
@@ -166,9 +171,13 @@ class SweepReport:
             out = ("sweep: the program declares no numeric `param` to sweep (declare the values a "
                    "maker may change: `param NAME = VALUE, min = LO, max = HI`)")
         else:
+            out = ""
+            if self.lifted:
+                out = ("sweep: no numeric `param`: the numbers that size the parts are swept as "
+                       f"params ({len(self.lifted)} lifted in a copy, the file untouched)\n")
             n = len(self.findings)
             its = "its range" if len(self.swept) == 1 else "their ranges"
-            out = (f"sweep: {', '.join(self.swept)} across {its}: {self.points} points, "
+            out += (f"sweep: {', '.join(self.swept)} across {its}: {self.points} points, "
                    + (f"{n} finding{'s' if n != 1 else ''} (W0110)" if n else
                       "no finding in the points judged" if self.skipped else "clean")
                    + f"; bounds bisected to {100 * self.tolerance:.3g}% of each range")
@@ -183,7 +192,9 @@ class SweepReport:
             u = self.units.get(name, "")
             a, b = clean.get(name, (lo, hi))
             whole = u == "" and all(float(x).is_integer() for x in (lo, hi, a, b))
-            out += (f"\nsweep: `{name}` (no declared range, swept {_span(lo, hi, u, whole)}): "
+            what = (self.lifted[name].where + ", no param" if name in self.lifted
+                    else "no declared range")
+            out += (f"\nsweep: `{name}` ({what}, swept {_span(lo, hi, u, whole)}): "
                     f"clean {_span(a, b, u, whole)}")
         for line in self.combinations():
             out += f"\nsweep: combination: {line}"
@@ -202,6 +213,9 @@ class SweepReport:
                 "warm": self.warm, "tolerance": self.tolerance,
                 "ranges": {k: list(v) for k, v in self.ranges.items()},
                 "not_judged": self.not_judged(), "combinations": self.combinations(),
+                "lifted": {n: {"where": x.where, "value": x.text,
+                               "lines": sorted({sp.line for sp in x.spans})}
+                           for n, x in self.lifted.items()},
                 "findings": [{"values": f.values, "code": f.code, "message": f.message,
                               "clean": {k: list(v) for k, v in f.clean.items()},
                               "declared": f.declared, "cut": f.cut}
@@ -248,15 +262,29 @@ def sweep(source: str, path: str = "<source>", budget: float | Budget | None = N
     b = budget if isinstance(budget, Budget) else (
         DEFAULT_BUDGET if budget is None else DEFAULT_BUDGET.scaled(float(budget)))
     w = WORK * b.steps / DEFAULT_BUDGET.steps if work is None else float(work)
-    return run_deep(lambda: _Sweep(source, path, b, points, seed, tolerance, w, unranged,
-                                   dict(values or {}), dict(spans or {}), only).run(
-        b.seconds if seconds is None else float(seconds)))
+    secs = b.seconds if seconds is None else float(seconds)
+    rep = run_deep(lambda: _Sweep(source, path, b, points, seed, tolerance, w, unranged,
+                                  dict(values or {}), dict(spans or {}), only).run(secs))
+    if rep.ok and not rep.swept and not rep.fixed and unranged and only is None:
+        # no numeric param: the numbers that size the parts, lifted into params of a copy
+        from .sweep_literals import lift
+        lifted = lift(source, str(path))
+        if lifted is not None:
+            again = run_deep(lambda: _Sweep(lifted.source, path, b, points, seed, tolerance,
+                                            w, True, {}, {}, None,
+                                            lifted.literals).run(secs))
+            if again.ok and again.swept:
+                again.lifted = {n: x for n, x in lifted.literals.items() if n in again.swept}
+                again.seconds += rep.seconds
+                return again
+    return rep
 
 
 class _Sweep:
     def __init__(self, source, path, budget, points, seed, tolerance, work_units,
-                 unranged=True, values=None, spans=None, only=None):
+                 unranged=True, values=None, spans=None, only=None, lifted=None):
         self.defaults, self.values, self.spans = unranged, values or {}, spans or {}
+        self.lifted = lifted or {}
         self.only = None if only is None else set(only)
         self.source, self.path, self.budget = source, str(path), budget
         self.n_lhs, self.seed, self.tol = points, seed, tolerance
@@ -330,6 +358,8 @@ class _Sweep:
             if p is not None and not p.declared and st.name in self.spans:
                 lo, hi = self.spans[st.name]
                 p.lo, p.hi = min(lo, p.value), max(hi, p.value)
+            if p is not None and st.name in self.lifted:
+                p.span = self.lifted[st.name].span      # the number in the file
             if p is not None:
                 p.on_grid(self.tol)
                 self.params.append(p)
@@ -478,13 +508,15 @@ class _Sweep:
             self.report.points -= 1
             return None
         self.report.warm += bool(res.warm)
-        got = [(errs[0].code, errs[0].message)] if errs else self._changes(res)
+        counted = any(p.integer and vals.get(p.name, p.value) != p.value for p in self.params)
+        got = [(errs[0].code, errs[0].message)] if errs else self._changes(res, counted)
         self.problems[key] = got
         return got
 
-    def _changes(self, res) -> list[tuple[str, str]]:
+    def _changes(self, res, counted: bool = False) -> list[tuple[str, str]]:
         """The new warnings of a compile (not at the written values) and its parts' changes
-        of topology (``W0510``)."""
+        of topology (``W0510``); ``counted``: a count moved, so a different number of
+        openings is what it is for (a handle's grips copied in one hole: no new names)."""
         from ..output.checks.changes import topology, topology_changes
         got = [(d.code, d.message) for d in res.sink.items
                if d.code not in NOT_COMPARED and _key(d) not in self.base_keys]
@@ -494,7 +526,8 @@ class _Sweep:
                 if b is None:
                     continue
                 what = [w for w in topology_changes(b, t)
-                        if not (" opening" in w and "instead of" in w and b.holes != t.holes)]
+                        if not (" opening" in w and "instead of" in w
+                                and (counted or b.holes != t.holes))]
                 if what:
                     got.append(("W0510", f"part `{part}` changes: " + "; ".join(what[:3])))
         return got
@@ -512,6 +545,13 @@ class _Sweep:
             p = by[n]
             lo, hi = clean[n]
             verb, how = self.hints[id(f)]
+            if n in self.lifted:
+                lit = self.lifted[n]
+                f.diagnostic.hint = (f"make it a param with the largest clean range found: "
+                                     f"`param {n} = {lit.text}, min = {p.text(lo)}, max = "
+                                     f"{p.text(hi)}`, used for {lit.where}{how}, or fix the "
+                                     "design at these values")
+                continue
             f.diagnostic.hint = (f"{verb} the largest clean range found: `{n}`: "
                                  f"`min={p.text(lo)}, max={p.text(hi)}`{how}, or fix the "
                                  "design at these values")
@@ -541,8 +581,9 @@ class _Sweep:
         labels = [Label(p.span, f"`{p.name}` = {p.text(vals[p.name])} here", primary=False)
                   for p in moved[1:] if p.span is not None]
         where = "inside the declared range" if declared else "; ".join(
-            f"`{p.name}` no declared range, swept {p.range_text()}" for p in moved
-            if not p.declared)
+            f"`{p.name}` " + (f"is {self.lifted[p.name].where}, no param:" if p.name in
+                              self.lifted else "no declared range,")
+            + f" swept {p.range_text()}" for p in moved if not p.declared)
         verb = "narrow the range to" if declared else "declare"
         d = Diagnostic("W0110", f"with {at(vals)} ({where}), {message}",
                        first.span, "warning",

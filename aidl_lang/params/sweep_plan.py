@@ -55,6 +55,9 @@ def _nice(x: float) -> float:
 # A sweep stops after about 13 s of CPU at most, under the compile's 15 s (the outer guard,
 # :func:`aidl_lang.base.limits.now`, reached only by a point far costlier than its units)
 WORK = 700_000
+# a count whose range holds at most this many values is tried alone at every one of them
+# (:func:`count_values`)
+SMALL_COUNT = 12
 PER_COMPILE = 2_000
 PER_DIAGNOSTIC = 40
 
@@ -185,11 +188,22 @@ def make_param(decl, q, rng: dict | None, counts: bool) -> tuple[Param | None, s
     return Param(decl.name, unit, k, v, a, b, 0.0, counts, decl, declared=False), ""
 
 
+def count_values(p: Param) -> list[float]:
+    """The values of the count ``p`` tried alone (:func:`plan`): every value of a range that
+    holds at most :data:`SMALL_COUNT` (a bracket's odd bolt counts), else none past its ends
+    and middle."""
+    step = p.step if p.step >= 1 else 1.0
+    n = int(math.floor((p.hi - p.lo) / step + 1e-9)) + 1
+    return [p.at(p.lo + k * step) for k in range(n)] if n <= SMALL_COUNT else []
+
+
 def plan(params: list[Param], n_lhs: int, seed: int) -> list[dict]:
     """The points fixed before the sweep starts: each param at its low end, middle and high
-    end (the others at their written values), then ``n_lhs`` combinations of a Latin
-    hypercube seeded ``seed`` (two or more params), each on the params' steps; the written
-    values and repeats left out."""
+    end (the others at their written values); then each count at each value of a short range
+    (:func:`count_values`), and at either end with each other param at either end, the rest
+    at their written values (a combination a random sample misses: a gear's fewest teeth with
+    its largest bore); then ``n_lhs`` combinations of a Latin hypercube seeded ``seed`` (two
+    or more params), each on the params' steps; the written values and repeats left out."""
     written = {p.name: p.value for p in params}
     out, seen = [], {tuple(sorted(written.items()))}
 
@@ -201,6 +215,15 @@ def plan(params: list[Param], n_lhs: int, seed: int) -> list[dict]:
     for p in params:
         for x in (p.lo, (p.lo + p.hi) / 2, p.hi):
             add(dict(written, **{p.name: p.at(x)}))
+    for p in params:
+        if p.integer:
+            for x in count_values(p):
+                add(dict(written, **{p.name: x}))
+            for x in (p.lo, p.hi):
+                for q in params:
+                    if q is not p:
+                        for end in (q.lo, q.hi):
+                            add(dict(written, **{p.name: x, q.name: q.at(end)}))
     if n_lhs and len(params) > 1:
         from scipy.stats import qmc
         u = qmc.LatinHypercube(d=len(params), seed=seed).random(n_lhs)

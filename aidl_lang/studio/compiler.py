@@ -39,6 +39,7 @@ import zipfile
 from collections import OrderedDict
 
 from ..host.workers import rss
+from .hatching import sweep_ranges  # noqa: F401 - the sweep workers' answer (and its tests)
 
 MAX_SESSIONS = 24               # warm sessions one worker keeps
 MAX_CLAMPS = 4                  # compiles that move values back into dependent ranges
@@ -356,97 +357,6 @@ def view_glb(sessions: OrderedDict, sid: str, folder: str, source: str, values: 
         return to_view_glb(output, thickness), "view.glb", "model/gltf-binary"
     except (OutputError, ValueError) as e:
         return {"error": str(e)}
-
-
-def sweep_ranges(folder: str, source: str, budget=None, values: dict | None = None) -> dict:
-    """``source`` (named ``folder/main.aidl``: its imports from the session's uploads) swept
-    across its params' ranges (:func:`aidl_lang.params.sweep.sweep`, within its budget; a param
-    with no declared range across its slider's span), each param alone with the others at
-    the sliders' ``values`` (``--set`` texts; None: the written values), as the sliders show
-    it: ``{"ok", "swept", "points", "skipped", "summary", "combinations", "params": {name:
-    {"min", "max", "unit", "clean": [lo, hi], "below", "above"}}}`` (display units: mm, deg,
-    plain).  ``clean``: the range the sweep found clean for that slider alone, its ends on the
-    slider's steps (inward); ``below``/``above``: None, or what happens past that end
-    (``{"at", "code", "text"}``, ``text`` as the page says it: ``above 26.4 mm: a wall of
-    `plate` ... is 0.36 mm wide ...``).  A combination (two or more sliders away from their
-    values together) hatches no slider: ``combinations`` says it in words (``teeth below 14
-    with bore above 13 mm: E0405``).  ``ok`` false: the program does not compile at these
-    values (nothing swept)."""
-    from ..serve.params import declared_params
-    from ..serve.wording import for_forms
-    from ..params.sweep import sweep
-    path = os.path.join(folder, "main.aidl")
-    declared = {p.name: p for p in declared_params(source, path) or []}
-    spans = {n: (p.min, p.max) for n, p in declared.items()
-             if not p.declared and p.min is not None and p.max is not None}
-    values = {k: v for k, v in (values or {}).items() if k in declared}
-    rep = sweep(source, path, budget=budget, values=values, spans=spans)
-    out = {"ok": rep.ok, "swept": list(rep.swept), "points": rep.points,
-           "skipped": rep.skipped, "summary": rep.text(), "params": {},
-           "combinations": [for_forms(c) for c in rep.combinations()]}
-    if not rep.ok:
-        return out
-    # a slider moved from its written value is swept alone from there with the others at
-    # their values (not from its own value: the hatch is where it breaks the design)
-    of = {n: rep for n in rep.swept if n not in values}
-    for n in values:
-        alone = sweep(source, path, budget=budget, points=0, only={n}, spans=spans,
-                      values={k: v for k, v in values.items() if k != n})
-        if alone.ok and n in alone.swept:
-            of[n] = alone
-            out["points"] += alone.points
-            out["skipped"] += alone.skipped
-    for name in rep.swept:
-        if name in of:
-            _row(out, name, declared.get(name), of[name], for_forms)
-    return out
-
-
-def _row(out: dict, name: str, p, rep, for_forms) -> None:
-    """The slider row of param ``name`` (``p``: its declared view) from the sweep ``rep``
-    that moved it: its clean range and what happens past each end (findings of it alone)."""
-    clean = rep.clean_ranges()
-    if p is None or p.min is None or p.max is None:
-        return
-    lo, hi = clean.get(name, (p.min, p.max))
-    row = {"min": p.min, "max": p.max, "unit": p.unit,
-           "clean": [_stop(p, lo, up=True), _stop(p, hi, up=False)],
-           "below": None, "above": None}
-    for f in rep.findings:
-        if list(f.clean) != [name]:
-            continue                # a combination: said in words, no slider hatched
-        above = f.values[name] > f.clean[name][1]
-        side = "above" if above else "below"
-        at = f.clean[name][1 if above else 0]
-        if row[side] is not None and (at >= row[side]["bound"] if above
-                                      else at <= row[side]["bound"]):
-            continue
-        end = row["clean"][1 if above else 0]
-        code, what = (f.first[1], f.first[2]) if f.first else (f.code, f.problem)
-        text = f"{side} {_shown(end, p.unit)}: {for_forms(what)}"
-        if f.first:
-            text += f"; at {_shown(f.values[name], p.unit)}: {for_forms(f.problem)}"
-        row[side] = {"bound": at, "at": end, "code": code, "text": text}
-    for side in ("below", "above"):
-        if row[side] is not None:
-            row[side].pop("bound")
-    out["params"][name] = row
-
-
-def _stop(p, x: float, up: bool) -> float:
-    """``x`` moved onto the slider of param ``p`` (its ``min + k * step``), up or down: a clean
-    range's end is shown where the slider stops, inside what the sweep found clean."""
-    import math
-    if not p.step or p.step <= 0:
-        return x
-    k = (x - p.min) / p.step
-    k = math.ceil(k - 1e-9) if up else math.floor(k + 1e-9)
-    return round(min(max(p.min + k * p.step, p.min), p.max), 9)
-
-
-def _shown(x: float, unit: str) -> str:
-    """A number as the sliders show it: ``26.4 mm``, ``30 deg``, ``6``."""
-    return f"{float(x):.6f}".rstrip("0").rstrip(".") + (f" {unit}" if unit else "")
 
 
 def settle(run, values: dict, doc: dict) -> tuple[dict, dict]:

@@ -129,7 +129,7 @@ def with_relations(program: str, path: str = "main.aidl") -> tuple[str, list[str
     relates (see the module's docstring), its ``param`` lines in the order the ranges need,
     and a note for each relation written; the program as it is, ``[]``, when it has none or
     does not parse, or when a range would not hold the drawing's own values."""
-    from ..diagnostics import DiagnosticSink
+    from ..base.diagnostics import DiagnosticSink
     from ..parser import parse
     sink = DiagnosticSink()
     prog = parse(program, path, sink)

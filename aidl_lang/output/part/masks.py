@@ -34,7 +34,7 @@ def masked(R, s, masks: list, out, mark: tuple[int, int]) -> None:
     ``mark`` (lengths of ``out.strokes`` and ``out.lines`` before ``s`` drew): those strokes
     are replaced by their exact pieces outside the holes, and their polylines by the pieces'.
     A hole that hides nothing is said (``W0526``, once per hole)."""
-    from ..part.result import Drawing
+    from .build.result import Drawing
     scratch = Drawing()
     sections = [(c, R.shape(c, scratch)) for c in masks]
     drawn = out.strokes[mark[0]:]

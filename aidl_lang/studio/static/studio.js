@@ -581,9 +581,16 @@ $("params").addEventListener("submit", (e) => e.preventDefault());
 // its range the sweep did not find clean hatched, and says what happens there (its title, its
 // accessible description, and a line under it while its value is there): dragging into it is
 // allowed, and said.
-function cleanOf(name) {
+function cleanOf(name) {            // the clean values a slider stops at: its clean range's ends, each band's
   const a = state.sweep.answer, q = a && a.params && a.params[name];
-  return q ? q.clean : null;
+  if (!q) return null;
+  return [...q.clean, ...(q.bands || []).flatMap((b) => [b.from, b.to]).filter((x) => x !== null)];
+}
+// the band of the sweep's answer row q that holds the value v (a value the slider alone breaks the
+// design at), or null
+function bandAt(q, v) {
+  if (!q || typeof v !== "number") return null;
+  return (q.bands || []).find((b) => (b.from === null || v > b.from + 1e-9) && (b.to === null || v < b.to - 1e-9)) || null;
 }
 // a sweep is of the program and the sliders where they are: each slider alone is hatched where
 // it breaks the design at the other sliders' values
@@ -640,7 +647,7 @@ function markRanges() {
   if (!a) sweepStatus("");
   else if (!a.ok) sweepStatus(a.error && !a.off ? `the sliders' ranges were not checked: ${a.error}` : "");
   else {
-    const narrowed = Object.values(a.params || {}).filter((q) => q.below || q.above).length;
+    const narrowed = Object.values(a.params || {}).filter((q) => (q.bands || []).length).length;
     const together = (a.combinations || []).length
       ? `; sliders that break it only together: ${a.combinations.join("; ")}` : "";
     sweepStatus(stale ? "the hatched parts are of the design before your change: checking again…"
@@ -655,21 +662,34 @@ function markRanges() {
     if (!r) continue;
     const q = a && a.ok && a.params ? a.params[p.name] : null;
     row.classList.toggle("swept-stale", !!q && stale);
-    const span = p.max - p.min;
+    // each band where the slider alone breaks the design: the two next to its clean range in the
+    // track's `below`/`above` marks, the others (a band between clean values, an odd count) each
+    // a mark of its own
+    const span = p.max - p.min, bands = (q && q.bands) || [];
+    const frac = (x, end) => (x === null ? end : Math.min(1, Math.max(0, (x - p.min) / span)));
+    const mark = (z, b) => {
+      z.hidden = !b || !(span > 0);
+      if (z.hidden) return;
+      z.style.setProperty("--from", frac(b.from, 0));
+      z.style.setProperty("--to", frac(b.to, 1));
+      z.title = b.text;
+    };
+    const track = row.querySelector(".track");
+    for (const z of track.querySelectorAll(".unclean.band")) z.remove();
     for (const side of ["below", "above"]) {
-      const z = row.querySelector(`.unclean.${side}`);
-      const past = q && q[side];
-      z.hidden = !past || !(span > 0);
-      if (z.hidden) continue;
-      const f = Math.min(1, Math.max(0, (past.at - p.min) / span));
-      z.style.setProperty("--from", side === "below" ? 0 : f);
-      z.style.setProperty("--to", side === "below" ? f : 1);
-      z.title = past.text;
+      const b = q && q[side] && bands.find((x) => x.text === q[side].text);
+      mark(row.querySelector(`.unclean.${side}`), b || null);
+    }
+    for (const b of bands) {
+      if ((q.below && b.text === q.below.text) || (q.above && b.text === q.above.text)) continue;
+      const z = document.createElement("span"); z.className = "unclean band";
+      track.appendChild(z);
+      mark(z, b);
     }
     const u = row.querySelector(".unit");
-    const clean = q && (q.below || q.above) ? `, clean ${fmt(q.clean[0])}–${fmt(q.clean[1])}` : "";
+    const clean = bands.length ? `, clean ${fmt(q.clean[0])}–${fmt(q.clean[1])}` : "";
     u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)}${clean})`;
-    r.title = q && (q.below || q.above) ? [q.below, q.above].filter(Boolean).map((x) => x.text).join("\n") : "";
+    r.title = bands.map((x) => x.text).join("\n");
     const v = state.values[p.name] !== undefined ? state.values[p.name] : p.value;
     pastNote(row, p.name, v);
   }
@@ -681,12 +701,16 @@ function pastNote(row, name, v) {
   const a = state.sweep.answer, q = a && a.ok && a.params ? a.params[name] : null;
   const p = state.params.find((x) => x.name === name) || {};
   const unit = p.unit ? ` ${p.unit}` : "";
-  const past = q && typeof v === "number" ? (v < q.clean[0] - 1e-9 ? q.below : v > q.clean[1] + 1e-9 ? q.above : null) : null;
-  const ends = [q && q.below, q && q.above].filter(Boolean);
+  const past = bandAt(q, v);
+  const ends = (q && q.bands) || [];
   note.classList.toggle("past", !!past);
   if (past) {
-    note.textContent = `${fmt(v)}${unit} is outside the range the sweep found clean (${fmt(q.clean[0])}–${fmt(q.clean[1])}${unit}): ${past.text}`;
-    r.setAttribute("aria-valuetext", `${fmt(v)}${unit}, outside the clean range: ${past.text}`);
+    const beside = (q.below && past.text === q.below.text) || (q.above && past.text === q.above.text);
+    note.textContent = beside
+      ? `${fmt(v)}${unit} is outside the range the sweep found clean (${fmt(q.clean[0])}–${fmt(q.clean[1])}${unit}): ${past.text}`
+      : `${fmt(v)}${unit} is in a part of the range where the design breaks, between clean values: ${past.text}`;
+    r.setAttribute("aria-valuetext", beside ? `${fmt(v)}${unit}, outside the clean range: ${past.text}`
+      : `${fmt(v)}${unit}, where the design breaks: ${past.text}`);
   } else {
     note.textContent = ends.length
       ? `clean from ${fmt(q.clean[0])} to ${fmt(q.clean[1])}${unit}; ${ends.map((x) => x.text).join("; ")}` : "";

@@ -404,8 +404,8 @@ def move_fix(d, part: Structure, shape, cuts: list, mover: int, other: int, t: f
         return None
     if staying:
         together = mf.CrossSection.batch_boolean([f for _, f in moving], mf.OpType.Add)
-        near = together.offset(t + MARGIN, mf.JoinType.Round, 2.0, 32)
-        if any(_area(near ^ f) > 1e-9 for f in staying):
+        around = together.offset(t + MARGIN, mf.JoinType.Round, 2.0, 32)
+        if any(_area(around ^ f) > 1e-9 for f in staying):
             return None                # one opening of several statements: a move tears it
     g = moving[0][0]
     src = getattr(sink, "sources", {}).get(span.file)
