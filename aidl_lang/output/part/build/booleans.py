@@ -468,7 +468,7 @@ class Renderer(Faces):
         self.children(s, out)
         masks = [c for c in s.children.values() if c.kind == "hole" and c.cuts_into is None]
         if masks:                       # engraving minus engraving (issue 95)
-            from ..masks import masked
+            from .masks import masked
             masked(self, s, masks, out, mark)
 
     def assembly(self, s: Structure, out: Drawing) -> None:

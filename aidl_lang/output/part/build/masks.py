@@ -22,8 +22,8 @@ import math
 
 import numpy as np
 
-from ...geometry.derived.clip import inside
-from ...geometry.shapes.curves import (Arc, Circle, EllipticArc, Line, Loop, Spline, carrier,
+from ....geometry.derived.clip import inside
+from ....geometry.shapes.curves import (Arc, Circle, EllipticArc, Line, Loop, Spline, carrier,
                                        crossings, distance_to, with_ends)
 
 EPS = 1e-9          # relative: points this near are one point
@@ -34,7 +34,7 @@ def masked(R, s, masks: list, out, mark: tuple[int, int]) -> None:
     ``mark`` (lengths of ``out.strokes`` and ``out.lines`` before ``s`` drew): those strokes
     are replaced by their exact pieces outside the holes, and their polylines by the pieces'.
     A hole that hides nothing is said (``W0526``, once per hole)."""
-    from .build.result import Drawing
+    from .result import Drawing
     scratch = Drawing()
     sections = [(c, R.shape(c, scratch)) for c in masks]
     drawn = out.strokes[mark[0]:]
@@ -216,7 +216,7 @@ def _changed(segs: list, pieces: list) -> bool:
 
 
 def _polyline(seg) -> np.ndarray:
-    from ...geometry.shapes.curves import sample_xy
+    from ....geometry.shapes.curves import sample_xy
     xs: list = []
     ys: list = []
     sample_xy([seg], xs, ys)
