@@ -5,7 +5,7 @@ units mm
 
 param name = "GREEN LAB"
 param width = 100 mm, min = 70 mm, max = 240 mm, step = 1 mm
-param height = 34 mm, min = 24 mm, max = 80 mm, step = 1 mm   # the logo is 20 mm tall
+param height = 34 mm, min = 24 mm, max = 80 mm, step = 1 mm  # the logo is 20 mm tall
 param corner_radius = 4 mm, min = 0.5 mm, max = height / 2 - 1 mm, step = 0.5 mm
 param screw_d = 3.4 mm, min = 1.5 mm, max = 8 mm, step = 0.1 mm
 # the name runs from the logo to the right screw hole: about 0.75 x its size a letter

@@ -13,12 +13,16 @@ assembly drawing_import {
         body = RoundedRectangle(center=(width / 2, height / 2), width=width, height=height, corner_radius=corner_radius)
         Fixed(body)
         # at the corners, corner_inset in from the edges
-        hole corner_holes { h = Circle(center=(corner_inset, corner_inset), diameter=corner_hole_d) }
+        hole corner_holes {
+            h = Circle(center=(corner_inset, corner_inset), diameter=corner_hole_d)
+        }
         CornerPattern(corner_holes, body, inset=corner_inset)
     }
     drawing f_silks {
         t1 = Text("SENSOR-BOARD rev A", position=(8, 20), size=1.5, anchor="start", valign="baseline")
         Fixed(t1)
     }
-    for p in [edge_cuts, f_silks] { Fixed(p) }
+    for p in [edge_cuts, f_silks] {
+        Fixed(p)
+    }
 }
