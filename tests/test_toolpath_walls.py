@@ -187,9 +187,12 @@ def test_a_panel_of_holes_and_slits_is_checked_in_n_log_n():
     cpu = []
     for nx, ny in ((25, 20), (50, 40)):
         out = _panel(nx, ny)
-        t = time.process_time()
-        said = eaten_walls(out, 3.175, lambda n: 0.5)
-        cpu.append(time.process_time() - t)
+        best = float("inf")
+        for _ in range(3):      # the least of three: a thread left by another test in this
+            t = time.process_time()     # worker counts in process_time (the suite saw 7.2x once)
+            said = eaten_walls(out, 3.175, lambda n: 0.5)
+            best = min(best, time.process_time() - t)
+        cpu.append(best)
         # the bridges between rows, and the first and last rows' to the plate's edges
         assert len(said) == 5 and said[-1].more == (nx - 1) * (ny + 1) - 5
     assert cpu[1] < 6 * max(cpu[0], 0.02), cpu
