@@ -98,7 +98,14 @@ def settled(page, n: int | None = None) -> None:
             "&& window.studio.glbView === window.studio.views")
     if n is not None:
         cond += f" && window.studio.views > {n}"
-    page.wait_for_function(f"() => {cond}", timeout=HANG)
+    try:
+        page.wait_for_function(f"() => {cond}", timeout=HANG)
+    except Exception as e:      # what the page was waiting for, said
+        state = page.evaluate("""() => ({ idle: window.studio.idle, views: window.studio.views,
+            glbView: window.studio.glbView, ok: !!(window.studio.view && window.studio.view.ok),
+            status: (document.getElementById('upload-status') || {}).textContent,
+            drawing: (document.getElementById('drawing-status') || {}).textContent })""")
+        raise AssertionError(f"the page never settled: {state}, refused {page.refused}") from e
 
 
 def drawn(page, name: str) -> float:

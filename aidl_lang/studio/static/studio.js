@@ -105,6 +105,31 @@ function setText(p, v) {       // the value as `aidl render --set` takes it
   return fmt(v);
 }
 
+// What a visitor asked for once (the gallery, a design, a download, their files) is asked again
+// when the studio answers busy (429/503: the page's own previews and sweeps count in the rate
+// too), after the wait it names, a few times; never left as a broken list or a lost click
+async function again(ask, tries = 5) {
+  for (let i = 1; ; i++) {
+    try { return await ask(); } catch (e) {
+      if (!e.retry || i >= tries) throw e;
+      await new Promise((ok) => setTimeout(ok, e.retry * 1000));
+    }
+  }
+}
+async function getJSON(path) {
+  return again(async () => {
+    const r = await fetch(path);
+    if (r.status === 429 || r.status === 503) {
+      const doc = await r.json().catch(() => ({}));
+      const wait = Number(r.headers.get("Retry-After")) || 5;
+      showBusy(doc.error || "the studio is busy", wait);
+      const e = new Error(doc.error || "busy"); e.retry = wait; throw e;
+    }
+    hideBusy();
+    return r.json();
+  });
+}
+
 // The server's rate limit (`--rate`, /api/config: "300/minute", "40/10 seconds"): the page's
 // previews and 3D views are spaced so that a visitor who drags a slider for minutes stays
 // at 60 % of it (a drag is coalesced: the values of the moment a request leaves)
@@ -735,8 +760,8 @@ function downloadName() {
 window.studio.downloadName = downloadName;
 
 async function fetchFile(ext, extra = {}) {
-  const r = await post(`/api/download/${ext}`, { sid: state.sid, source: state.source, values: chosen(),
-                                                 settings: { ...settings(), name: downloadName(), ...extra } }, true);
+  const r = await again(() => post(`/api/download/${ext}`, { sid: state.sid, source: state.source, values: chosen(),
+                                                             settings: { ...settings(), name: downloadName(), ...extra } }, true));
   if (!r.ok) {
     const doc = await r.json().catch(() => ({}));
     const msg = (doc.error || `HTTP ${r.status}`) + (doc.diagnostics && doc.diagnostics.length ? ": " + doc.diagnostics[0].message : "");
@@ -835,7 +860,7 @@ $("fit3d").onclick = () => { if (window.aidl3d) window.aidl3d.frame(); };
 async function openGallery() {
   const dlg = $("gallery");
   if (!state.gallery) {
-    state.gallery = await fetch("/api/gallery").then((r) => r.json());
+    state.gallery = await getJSON("/api/gallery");
     const cards = $("cards");
     for (const e of state.gallery) {
       const c = document.createElement("button");
@@ -867,7 +892,7 @@ $("gallery-search").oninput = () => {
 };
 
 async function openEntry(id) {
-  const e = await fetch(`/api/gallery/${id}`).then((r) => r.json());
+  const e = await getJSON(`/api/gallery/${id}`);
   state.entry = id;
   $("title").textContent = e.title;
   setProgram(e.source, {});
@@ -1010,13 +1035,13 @@ $("describe-go").onclick = describe;
 
 // ------------------------------------------------------------------ uploads
 async function refreshFiles() {
-  const doc = await fetch(`/api/files?sid=${state.sid}`).then((r) => r.json());
+  const doc = await getJSON(`/api/files?sid=${state.sid}`);
   const ul = $("files"); ul.innerHTML = "";
   for (const f of doc.files || []) {
     const li = document.createElement("li");
     li.textContent = `${f.name} (${f.bytes.toLocaleString()} bytes) `;
     const del = document.createElement("button"); del.type = "button"; del.textContent = "delete";
-    del.onclick = async () => { await post("/api/delete", { sid: state.sid, name: f.name }); refreshFiles(); schedule(0); };
+    del.onclick = async () => { await again(() => post("/api/delete", { sid: state.sid, name: f.name })); refreshFiles(); schedule(0); };
     li.appendChild(del); ul.appendChild(li);
   }
 }
@@ -1027,13 +1052,23 @@ function fileName(name) {
   return (name.slice(0, name.length - ext.length).replace(/[^\w.-]+/g, "_")
     .slice(0, 64 - ext.length) || "drawing") + ext;
 }
-async function send(f, how) {       // the upload's answer, or {error}
+async function send(f, how, said) {       // the upload's answer, or {error}
   const q = how ? `&import=${how}` : "";
   try {
-    const r = await fetch(`/api/upload?sid=${state.sid}&name=${encodeURIComponent(fileName(f.name))}${q}`,
-                          { method: "POST", body: f });
-    const doc = await r.json().catch(() => ({}));
-    return r.ok ? doc : { error: doc.error || `the upload failed (HTTP ${r.status})` };
+    for (let tries = 0; ; tries++) {
+      const r = await fetch(`/api/upload?sid=${state.sid}&name=${encodeURIComponent(fileName(f.name))}${q}`,
+                            { method: "POST", body: f });
+      const doc = await r.json().catch(() => ({}));
+      // busy (the page's own previews and sweeps count in the rate too): sent again after the
+      // wait the server names, a few times, saying so; the visitor asked once
+      if ((r.status === 429 || r.status === 503) && tries < 4) {
+        const wait = Number(r.headers.get("Retry-After")) || 5;
+        if (said) said.textContent = `the studio is busy: sending ${f.name} again in ${wait} s…`;
+        await new Promise((ok) => setTimeout(ok, wait * 1000));
+        continue;
+      }
+      return r.ok ? doc : { error: doc.error || `the upload failed (HTTP ${r.status})` };
+    }
   } catch (e) { return { error: String(e.message || e) }; }
 }
 
@@ -1041,7 +1076,7 @@ async function send(f, how) {       // the upload's answer, or {error}
 $("upload").onchange = async () => {
   const f = $("upload").files[0];
   if (!f) return;
-  const doc = await send(f, null);
+  const doc = await send(f, null, $("upload-status"));
   $("upload").value = "";
   $("upload-status").textContent = doc.error || `${doc.name} is kept for your program`;
   refreshFiles(); schedule(0);
@@ -1056,7 +1091,7 @@ $("drawing-file").onchange = async () => {
   const how = document.querySelector('input[name="open-as"]:checked').value;
   const said = $("drawing-status");
   said.textContent = `reading ${f.name}…`;
-  const doc = await send(f, how);
+  const doc = await send(f, how, said);
   $("drawing-file").value = "";
   window.studio.uploaded = doc;
   if (doc.error || doc.import_error) { said.textContent = doc.error || `${doc.name} cannot be opened: ${doc.import_error}`; return; }
@@ -1084,8 +1119,8 @@ async function hover(text, pos) {
 
 async function start() {
   if (EMBED) document.body.classList.add("embed");
-  state.config = await fetch("/api/config").then((r) => r.json());
-  state.sid = (await post("/api/session", {})).sid;
+  state.config = await getJSON("/api/config");
+  state.sid = (await again(() => post("/api/session", {}))).sid;
   window.addEventListener("pagehide", () =>
     navigator.sendBeacon("/api/close", new Blob([JSON.stringify({ sid: state.sid })], { type: "application/json" })));
   if (!EMBED) {
