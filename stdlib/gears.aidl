@@ -33,6 +33,9 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
     # form's backlash slider ends where the teeth would come to a point
     assert backlash < module * teeth * (pi / (2 * teeth) + tan(pressure_angle) - pressure_angle / (1 rad) - sqrt(square((teeth + 2) / (teeth * cos(pressure_angle))) - 1) + atan(sqrt(square((teeth + 2) / (teeth * cos(pressure_angle))) - 1)) / (1 rad)), "the teeth come to a point before the tip circle: use more teeth, a smaller pressure angle or less backlash"
     assert root_r > bore / 2, "the bore is larger than the root circle"
+    # a bore leaves a wall of 0.55 mm or more inside the root circle (module * (teeth - 2.5)
+    # across; the forms' axles, W0507's 0.5 mm)
+    assert bore <= max(0 mm, module * (teeth - 2.5) - 1.1 mm), "the bore leaves a wall thinner than 0.55 mm inside the root circle: bore <= module * (teeth - 2.5) - 1.1 mm (or more teeth, a larger module)"
     # the flank as n biarcs: both ends of each on the involute with the involute's own
     # direction there, so every join is tangent; n grows with the module (deviation ~ m/n^3)
     # and the ends crowd toward the base circle (t ~ k^1.2), where the involute curves most
