@@ -11,8 +11,12 @@ param wheel_teeth = 36, min = 20, max = 120
 param module = 1.5 mm, min = 0.5 mm, max = 3 mm, step = 0.25 mm
 param backlash = 0.05 mm
 
+# the bores follow the module: the pinion's (3 mm at 1.5 mm) leaves a wall inside the root
+# circle of its fewest teeth (module x (8 - 2.5) across); the wheel's is 8 mm where that
+# leaves a wall of 0.55 mm (less on a wheel of few small teeth)
 assembly drive {
     pair = gear_pair(teeth1=pinion_teeth, teeth2=wheel_teeth, module=module,
-                     bore1=3 mm, bore2=8 mm, backlash=backlash)
+                     bore1=2 * module, bore2=min(8 mm, module * (wheel_teeth - 2.5) - 1.1 mm),
+                     backlash=backlash)
     Fixed(pair.gear1.hub.center)
 }

@@ -7,7 +7,10 @@ units mm
 param waist = 26, min = 10, max = 52, step = 1       # half width at the waist
 param lower_bout = 44, min = 20, max = 88, step = 1  # half width of the lower bout
 param upper_bout = 32, min = 18, max = 64, step = 1  # half width of the upper bout
-param hole_radius = 12, min = 4, max = 15, step = 1
+# the rosette (5 mm wider than the hole) stays inside the body between the waist and the
+# upper bout: its radius follows them (the bounds found on the spline's outline)
+param hole_radius = 12, min = 4, step = 1, max = min(15, upper_bout - 5,
+                                                     upper_bout / 2 + waist / 4 - 4, waist / 2 + 8)
 thickness 3 mm
 
 solid body {

@@ -33,6 +33,9 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
     # form's backlash slider ends where the teeth would come to a point
     assert backlash < module * teeth * (pi / (2 * teeth) + tan(pressure_angle) - pressure_angle / (1 rad) - sqrt(square((teeth + 2) / (teeth * cos(pressure_angle))) - 1) + atan(sqrt(square((teeth + 2) / (teeth * cos(pressure_angle))) - 1)) / (1 rad)), "the teeth come to a point before the tip circle: use more teeth, a smaller pressure angle or less backlash"
     assert root_r > bore / 2, "the bore is larger than the root circle"
+    # a bore leaves a wall of 0.55 mm or more inside the root circle (module * (teeth - 2.5)
+    # across; the forms' axles, W0507's 0.5 mm)
+    assert bore <= max(0 mm, module * (teeth - 2.5) - 1.1 mm), "the bore leaves a wall thinner than 0.55 mm inside the root circle: bore <= module * (teeth - 2.5) - 1.1 mm (or more teeth, a larger module)"
     # the flank as n biarcs: both ends of each on the involute with the involute's own
     # direction there, so every join is tangent; n grows with the module (deviation ~ m/n^3)
     # and the ends crowd toward the base circle (t ~ k^1.2), where the involute curves most
@@ -233,8 +236,8 @@ def gear_train(teeth=[12, 36, 12, 30], module=2 mm, axle=4 mm, backlash=0.05 mm,
 # flanks at the pressure angle 20 deg, addendum 1 module, dedendum 1.25
 # module) on a bar `height` below the roots; the pinion (`teeth`, bored for
 # `axle`) has its centre module * teeth / 2 above the rack's pitch line, a gap
-# over the rack's middle tooth. `backlash` thins the rack's teeth and the
-# pinion's. Flat, the base plate is at (cx, cy) and the rack and pinion in mesh
+# over the rack's middle tooth (of an even count: the one right of the middle).
+# `backlash` thins the rack's teeth and the pinion's. Flat, the base plate is at (cx, cy) and the rack and pinion in mesh
 # above it; assembled, both lie on the plate (`lift` higher: a gap under
 # them, for spacers). Members: `rack`, `pinion`
 # (a spur_gear), `base`, `pitch` (the rack's pitch).
@@ -269,20 +272,22 @@ def rack_and_pinion(teeth=16, module=2 mm, rack_teeth=12, height=8 mm, axle=4 mm
             Fixed(tooth.points[0])
         }
     }
-    # the middle of the rack: a tooth (odd count) or a gap (even); the pinion turns a
-    # gap (tooth) down to it
-    down = -90 deg + (180 deg / teeth if rack_teeth % 2 == 1 else 0 deg)
+    # the pinion over the rack's middle tooth (an odd count) or the tooth half a pitch right of
+    # the middle gap (even), a gap turned down onto it: its teeth straddle that tooth (a tooth
+    # turned down into a gap runs the rack's tips into the flanks of a pinion of few teeth)
+    px = cx + (0 mm if rack_teeth % 2 == 1 else pitch / 2)
+    down = -90 deg + 180 deg / teeth
     pinion = spur_gear(teeth=teeth, module=module, bore=axle, backlash=backlash, phase=down,
-                       cx=cx, cy=line + r)
-    pinion.hub.center == (cx, line + r)
+                       cx=px, cy=line + r)
+    pinion.hub.center == (px, line + r)
     solid base {
         body = Rectangle(center=(cx, cy), width=length, height=base_h)
         Fixed(body.center)
         hole axle_hole {
-            c = Circle(center=(cx, cy - base_h / 2 + gap + height + 1.25 * module + r), diameter=axle)
+            c = Circle(center=(px, cy - base_h / 2 + gap + height + 1.25 * module + r), diameter=axle)
             Fixed(c.center)
         }
-        axle_hole.c.center == (cx, cy - base_h / 2 + gap + height + 1.25 * module + r)
+        axle_hole.c.center == (px, cy - base_h / 2 + gap + height + 1.25 * module + r)
     }
     # assembled: the base on z = 0, the rack and the pinion on it, the rack's bar along its
     # lower edge less `gap`

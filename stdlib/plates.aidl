@@ -35,6 +35,9 @@ def mounting_plate(width=80 mm, height=50 mm, corner_radius=4 mm, screw=3, fit="
     assert len([s for s in metric_sizes if s == screw]) == 1, "metric sizes are 2, 2.5, 3, 4, 5, 6 and 8 (M2 to M8)"
     # each hole (a clearance hole at most 1.3 x screw across, at the coarse fit) keeps a wall
     # of more than 0.5 mm to the straight edges, the rounded corner and the next hole
+    # the plate leaves the holes an inset between the two bounds below (the inset's range)
+    assert height > 2.6 mm * screw + 1.5 mm, "the plate is too low for a hole at the top and the bottom: height > 2.6 mm * screw + 1.5 mm (or a smaller screw)"
+    assert width > 2.6 mm * screw + 1.5 mm, "the plate is too narrow for a hole at the left and the right: width > 2.6 mm * screw + 1.5 mm (or a smaller screw)"
     assert inset > 0.65 mm * screw + 0.5 mm, "the holes break through the edges: inset > 0.65 mm * screw + 0.5 mm (a wall of 0.5 mm beside a clearance hole 1.3 x screw across)"
     assert inset < height / 2 - 0.65 mm * screw - 0.25 mm, "the holes at the top and bottom merge: inset < height / 2 - 0.65 mm * screw - 0.25 mm"
     assert inset < width / 2 - 0.65 mm * screw - 0.25 mm, "the holes at the left and right merge: inset < width / 2 - 0.65 mm * screw - 0.25 mm"
