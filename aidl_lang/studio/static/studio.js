@@ -20,13 +20,12 @@ window.studio = { ready: false, idle: false, views: 0, sweeps: 0, sweep: null, g
                   shownAt: {}, builtAt: {} };     // view number -> performance.now() of its 2D, its 3D
 
 // ------------------------------------------------------------------ requests
-async function post(path, body, raw = false) {
+// one request: an answer, or an Error with `retry` (seconds) when the studio is busy (429/503)
+// or cannot be reached (no answer, 502/504: the proxy lost its studio process, docs/studio.md;
+// another answers), said on the busy line
+async function request(path, opts = {}) {
   let r;
-  try {
-    r = await fetch(path, { method: "POST", headers: { "Content-Type": "application/json" },
-                            body: JSON.stringify(body) });
-  } catch (err) { r = null; }          // the network, or a proxy that dropped the connection
-  // 502/504 or no answer: the proxy lost its studio process (docs/studio.md); another answers
+  try { r = await fetch(path, opts); } catch (err) { r = null; }   // the network, or a dropped connection
   if (!r || r.status === 502 || r.status === 504) {
     const message = "the studio cannot be reached; your design is kept here";
     showBusy(message, 3);
@@ -39,8 +38,12 @@ async function post(path, body, raw = false) {
     const e = new Error(doc.error || "busy"); e.retry = wait; throw e;
   }
   hideBusy();
-  if (raw) return r;
-  return r.json();
+  return r;
+}
+async function post(path, body, raw = false) {
+  const r = await request(path, { method: "POST", headers: { "Content-Type": "application/json" },
+                                  body: JSON.stringify(body) });
+  return raw ? r : r.json();
 }
 
 function showBusy(message, wait) {
@@ -117,17 +120,7 @@ async function again(ask, tries = 5) {
   }
 }
 async function getJSON(path) {
-  return again(async () => {
-    const r = await fetch(path);
-    if (r.status === 429 || r.status === 503) {
-      const doc = await r.json().catch(() => ({}));
-      const wait = Number(r.headers.get("Retry-After")) || 5;
-      showBusy(doc.error || "the studio is busy", wait);
-      const e = new Error(doc.error || "busy"); e.retry = wait; throw e;
-    }
-    hideBusy();
-    return r.json();
-  });
+  return (await again(() => request(path))).json();
 }
 
 // The server's rate limit (`--rate`, /api/config: "300/minute", "40/10 seconds"): the page's
@@ -1052,23 +1045,13 @@ function fileName(name) {
   return (name.slice(0, name.length - ext.length).replace(/[^\w.-]+/g, "_")
     .slice(0, 64 - ext.length) || "drawing") + ext;
 }
-async function send(f, how, said) {       // the upload's answer, or {error}
+async function send(f, how) {       // the upload's answer, or {error}
   const q = how ? `&import=${how}` : "";
   try {
-    for (let tries = 0; ; tries++) {
-      const r = await fetch(`/api/upload?sid=${state.sid}&name=${encodeURIComponent(fileName(f.name))}${q}`,
-                            { method: "POST", body: f });
-      const doc = await r.json().catch(() => ({}));
-      // busy (the page's own previews and sweeps count in the rate too): sent again after the
-      // wait the server names, a few times, saying so; the visitor asked once
-      if ((r.status === 429 || r.status === 503) && tries < 4) {
-        const wait = Number(r.headers.get("Retry-After")) || 5;
-        if (said) said.textContent = `the studio is busy: sending ${f.name} again in ${wait} s…`;
-        await new Promise((ok) => setTimeout(ok, wait * 1000));
-        continue;
-      }
-      return r.ok ? doc : { error: doc.error || `the upload failed (HTTP ${r.status})` };
-    }
+    const r = await again(() => request(
+      `/api/upload?sid=${state.sid}&name=${encodeURIComponent(fileName(f.name))}${q}`, { method: "POST", body: f }));
+    const doc = await r.json().catch(() => ({}));
+    return r.ok ? doc : { error: doc.error || `the upload failed (HTTP ${r.status})` };
   } catch (e) { return { error: String(e.message || e) }; }
 }
 
@@ -1076,7 +1059,7 @@ async function send(f, how, said) {       // the upload's answer, or {error}
 $("upload").onchange = async () => {
   const f = $("upload").files[0];
   if (!f) return;
-  const doc = await send(f, null, $("upload-status"));
+  const doc = await send(f, null);
   $("upload").value = "";
   $("upload-status").textContent = doc.error || `${doc.name} is kept for your program`;
   refreshFiles(); schedule(0);
@@ -1091,7 +1074,7 @@ $("drawing-file").onchange = async () => {
   const how = document.querySelector('input[name="open-as"]:checked').value;
   const said = $("drawing-status");
   said.textContent = `reading ${f.name}…`;
-  const doc = await send(f, how, said);
+  const doc = await send(f, how);
   $("drawing-file").value = "";
   window.studio.uploaded = doc;
   if (doc.error || doc.import_error) { said.textContent = doc.error || `${doc.name} cannot be opened: ${doc.import_error}`; return; }
