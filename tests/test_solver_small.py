@@ -15,6 +15,7 @@ nonlinear trees of +, *, /, sqrt and abs with shared subexpressions):
 from __future__ import annotations
 
 import pathlib
+import warnings
 
 import numpy as np
 import pytest
@@ -119,6 +120,29 @@ def _small_tape_is_the_tape(rows, x, cols, scale):
     assert np.array_equal(a.x, b.x, equal_nan=True)
     assert (a.iterations, a.converged) == (b.iterations, b.converged)
     assert a.residual == b.residual or (np.isnan(a.residual) and np.isnan(b.residual))
+
+
+@pytest.mark.parametrize("p", [0.0, -0.0, 1.0, -2.0])
+def test_a_quotient_by_an_exact_zero_differentiates_without_a_warning(p):
+    """``x0 / x1`` at ``x1 = 0`` (divided by 1e-300 instead): d/dx0 = 1e300 and
+    d/dx1 = -(1/q)(p/q), 0 for p = 0 (it was 0/0 = NaN with a RuntimeWarning, q*q underflowing
+    to 0: phone_handset's perturbed solve in test_solver_batch) and -inf by sign otherwise,
+    the same on both tapes; Newton from p = 0 stops at once, solved."""
+    rows = [Nl("div", (Lin({0: 1.0}, 0.0), Lin({1: 1.0}, 0.0))), Lin({2: 1.0}, -1.0)]
+    x, cols, ch = np.array([p, 0.0, 1.0]), np.arange(3), np.zeros(0, dtype=np.int64)
+    big, small = Tape(rows, 3), SmallTape(rows, 3)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        J = big.jacobian(x, cols, ch, dense=True)
+        _, V = small.values(x.tolist(), [0])
+        plan = small.plan(0, dict(zip(range(3), range(3))), None)
+        Js = small.jacobian_rows([0], V, [plan], 3)
+        runs = [newton(t, x, cols, None, ch) for t in (big, small)] if p == 0 else []
+    assert J[0, 0] == 1.0 / 1e-300 and J[0, 2] == 0.0
+    assert J[0, 1] == (0.0 if p == 0 else -np.inf * np.sign(p))
+    assert np.array_equal(np.asarray(Js).reshape(-1), J[0])
+    for r in runs:
+        assert r.converged and r.iterations == 0 and np.array_equal(r.x, x)
 
 
 @settings(max_examples=30, deadline=None)

@@ -94,7 +94,8 @@ class _Step:
             Js, dense = Js.toarray(), True
         self.Js, self.dense = Js, dense
         if dense:
-            self.G = Js @ Js.T
+            with np.errstate(over="ignore"):     # entries near 1e300 (a quotient's derivative
+                self.G = Js @ Js.T               # at an exact 0): inf, solve_dense's singular
         else:
             # G + diag(d) in CSC, laid out once per step: G's entries and the diagonal are
             # summed by np.bincount into a fixed pattern (0 + G_ii + d_i: the same sum, bit for

@@ -179,9 +179,9 @@ class SmallTape:
                 for n, a, b in nodes:
                     q = v[b]
                     q = q if q != 0.0 else _TINY
-                    w = adj[n]
-                    adj[a] += w / q
-                    d1.append(_div(-w * v[a], q * q))
+                    d0 = adj[n] / q                 # as Tape: -(w / q) * (p / q), no q * q
+                    adj[a] += d0
+                    d1.append(-d0 * (v[a] / q))
                 for (n, a, b), d in zip(nodes, d1):
                     adj[b] += d
             elif op == _SQRT:

@@ -585,7 +585,11 @@ class Tape:
                 d0, d1 = w * q, w * p
             elif o == DIV:
                 qq = np.where(q == 0.0, _TINY, q)
-                d0, d1 = w / qq, -w * p / (qq * qq)
+                # -w p / q^2 as two quotients (q^2 underflows to 0 at q = _TINY: 0/0 where
+                # w p = 0); past 1e308 it is inf, as in small.py's Python floats
+                with np.errstate(over="ignore"):
+                    d0 = w / qq
+                    d1 = -d0 * (p / qq)
             elif o == POW:
                 with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
                     d0 = w * np.where((p != 0) | (q >= 1), q * np.power(p, q - 1), 0.0)
