@@ -598,7 +598,7 @@ def _flat(items: list) -> list:
 
 def _rigid(ctx, items: list) -> None:
     """``Rigid(a, b, ...)``: a structure is marked rigid (the solver of its ancestors moves it
-    only by its frame, :func:`aidl_lang.solver.core.hierarchy._rigid_below`); shapes keep their
+    only by its frame, :func:`aidl_lang.solver.core.tree._rigid_below`); shapes keep their
     points' starting offsets from the first shape's first point (two linear equations per
     point, in the writing structure's frame): they move together, translation only."""
     S = ctx.struct

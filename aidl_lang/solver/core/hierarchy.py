@@ -12,10 +12,10 @@ only ``S``'s own constraints are solved; everything deeper is held.  When that f
 
 Before those stages, when a constraint of ``S`` relates ``S``'s own geometry (a part) to a
 descendant's (a feature: a hole, a child solid, a pattern's target), the part is placed by
-its own constraints and held while the features move (:meth:`Solver._features_first`,
+its own constraints and held while the features move (:mod:`.parts_first`,
 issue 73: parts stay, features move); only when that fails do the stages above move it.
 Between two children related by a constraint of ``S`` the first-named moves to the second,
-which is held the same way (:func:`_who_moves`, issue 84; a hole, cut or engraving moves to a
+which is held the same way (:func:`.tree._who_moves`, issue 84; a hole, cut or engraving moves to a
 solid whichever is named first).
 
 The solve of ``S`` fails only when stage 2 has reached the bottom of its subtree (then the
@@ -35,18 +35,20 @@ from __future__ import annotations
 import numpy as np
 
 from ...base.limits import now
-from ...base.records import Compared, Record
 from .arrays import unique
 
 from ...geometry.core.model import Model, Structure
 from ...base.memory import gc_paused
+from .attempts import Attempt, Failure, Trace
 from .batch import newton_batch
 from .newton import TOL, dense_enough, newton
-from .holds import build_rows, row_vars
+from .holds import build_rows
+from .parts_first import PartsFirst
 from .system import LINK, SIGN, Rows, pin_values, pinned, pinned_none
 from .reduce import reduce
 from .small import SMALL_ROWS, small_tape
 from .tape import Tape
+from .tree import _cut_parts, _helpers, _levels, _post_order, _rigid_below
 
 MAX_ROUNDS = 12           # min/max branch re-checks per attempt
 MAX_ITER = 100            # Newton steps per attempt and round
@@ -56,47 +58,7 @@ FRAME_SCALE = 100.0       # frames move 1e4x cheaper (in the squared step norm) 
 SLACK_SCALE = 100.0       # an inactive inequality barely resists motion
 
 
-class Attempt(Compared):
-    """One Newton solve of a row set for a set of unknowns."""
-    __slots__ = ("stage", "depth", "rows", "cols", "ok", "iterations", "rounds", "order", "x_end")
-
-    def __init__(self, stage: str, depth: int, rows: np.ndarray, cols: np.ndarray,
-                 ok: bool = False, iterations: int = 0, rounds: int = 0, order: int = 0,
-                 x_end: np.ndarray | None = None):
-        self.stage = stage  # "local", "translate", "deform", "flat", "features" or "shapes"
-        self.depth = depth
-        self.rows = rows
-        self.cols = cols
-        self.ok = ok
-        self.iterations = iterations
-        self.rounds = rounds
-        self.order = order  # post-order position of its structure (trace order)
-        self.x_end = x_end  # x[cols] where it ended (a failure restores it)
-
-
-class Failure(Record):
-    """A structure whose solve failed, with the attempt that failed."""
-    __slots__ = ("structure", "attempt")
-
-    def __init__(self, structure: Structure, attempt: Attempt):
-        self.structure = structure
-        self.attempt = attempt
-
-
-class Trace(Record):
-    """What the hierarchical solve did: its attempts, failures, iterations and limits hit."""
-    __slots__ = ("attempts", "failures", "iterations", "budget_exceeded", "out_of_time")
-
-    def __init__(self, attempts: list | None = None, failures: list | None = None,
-                 iterations: int = 0, budget_exceeded: bool = False, out_of_time: bool = False):
-        self.attempts = [] if attempts is None else attempts
-        self.failures = [] if failures is None else failures
-        self.iterations = iterations
-        self.budget_exceeded = budget_exceeded
-        self.out_of_time = out_of_time
-
-
-class Solver:
+class Solver(PartsFirst):
     """Compiled solver state for one model.
 
     ``x``: extended parameter vector (model parameters, then inequality slacks), mm / rad.
@@ -586,358 +548,6 @@ class Solver:
                 self.failed.add(id(self.rows.constraint[r]))
         return False
 
-    def _features_first(self, s: Structure, local: np.ndarray, order: int, own, frames):
-        """Parts stay, features move (issue 73): the stages tried at ``s`` before the
-        paper's, when one of ``s``'s constraints relates its own geometry (a part's) to a
-        descendant's (a hole, a child solid, a pattern's target; or a part to a hole that
-        ``CutInto`` cuts into it).  A generator like :meth:`steps`, with its ``own`` and
-        ``frames`` (the unknowns of structures, less those of rigid ones); returns whether
-        ``s`` was solved.
-
-        The part's unknowns (:meth:`_part_unknowns`) are held while the rest moves (stage
-        "features", the paper's two deepenings without the part: the descendants' frames
-        one level deeper at a time, then also the geometry of the descendants that have no
-        frame of their own to move, copies made by a pattern or a mirror).  The first such
-        attempt takes every row of ``s`` (it ends at once when they all hold, as the local
-        stage would); when it fails, the part is placed by the rows that read nothing else
-        (stage "own") and the features stages follow.  So a hole placed on a plate goes to
-        the plate, and the plate stays where it is written.  When no stage succeeds (the
-        part is the only thing free: ``Fixed(h)`` on the feature, a feature that would have
-        to change shape, ...) the point is restored and the paper's ladder runs as before,
-        moving the part."""
-        held, first, helpers, later = self._part_unknowns(s, own, frames)
-        if not held or not self._related(local, held):
-            return False
-        stages = self._feature_stages(s, held, own, frames, helpers)
-        top = next(stages, None)
-        if top is None:
-            return False
-        ranks = _who_moves(s)[1] if len(s.children) > 2 else []
-        for k in range(1, len(ranks)):    # a chain: each placed on its reference in turn
-            yield from self._place_rank(s, local, order, held, ranks, k, frames)
-        if (yield Attempt("features", top[0], top[1], top[2], order=order)):
-            return True
-        saved = None
-        rows = local[self._own_rows(local, held)]
-        if len(rows):
-            cols = self._cols(first + later, rows)
-            saved = (cols, self.x[cols].copy())
-            att = Attempt("own", 0, rows, self._cols(first, rows), order=order)
-            if (not first or not (yield att)) and not later:
-                return False
-            if not att.ok:                 # a reference sibling placed by its own rows
-                att = Attempt("own", 1, rows, cols, order=order)
-                if not (yield att):
-                    return False
-            if att.iterations and (yield Attempt("features", top[0], top[1], top[2],
-                                                 order=order)):
-                return True                # the part placed, the first stage again
-        for d, rows, cols in stages:
-            if self.trace.budget_exceeded:
-                break
-            if (yield Attempt("features", d, rows, cols, order=order)):
-                return True
-        if saved is not None:              # back to where the paper's ladder starts
-            cols, values = saved
-            self.x = self.x.copy()
-            self.x[cols] = values
-        return False
-
-    def _place_rank(self, s: Structure, local: np.ndarray, order: int, held: set,
-                    ranks: list, k: int, frames):
-        """Before the features stages, when siblings are placed on siblings placed on
-        others (``AlignCenterX(b, c)``, ``AlignCenterY(a, b)``): the children of rank ``k``
-        (:func:`_who_moves`) move by their frames to meet the rows of ``s`` that read
-        nothing of a higher rank, those of lower ranks and the references held (so ``b``
-        keeps its written y, which ``a`` then takes).  A failure changes nothing; the
-        features stages follow either way.  A generator like :meth:`steps`."""
-        mine = set(frames(ranks[k]))
-        later = {i for t in ranks[k + 1:] for c in t for i in self._subtree_unknowns(c)}
-        if not mine:
-            return
-        free, n, exprs = self._free_list(), self.n_model, self.rows.exprs
-        pick = []
-        for r in local.tolist():
-            vs: set = set()
-            row_vars(exprs[r], vs)
-            vs = {v for v in vs if v < n and free[v]}
-            if vs & mine and not vs & later:
-                pick.append(r)
-        if pick:
-            rows = np.asarray(pick, dtype=np.int64)
-            yield Attempt("rank", k, rows, self._cols(sorted(mine), rows), order=order)
-
-    def _subtree_unknowns(self, c: Structure) -> list:
-        return [i for t in c.subtree() for i in self.frame.get(id(t), ()) +
-                self.own.get(id(t), [])]
-
-    def _shape_first(self, s: Structure, local: np.ndarray, order: int, own):
-        """Parts stay within one structure (issue 73): when one of a solid's constraints
-        relates its first drawn closed shape (the part: ``body = Ellipse(...)``) to another
-        of its shapes (``knob = Circle(...)``, ``Coincident(knob.center, body)``), an
-        attempt first solves its rows with the part's unknowns held, so the knob goes to the
-        body and the body stays where it is written.  When that fails (the knob is
-        ``Fixed``, or only the part can move) the part is first placed by its own rows, those
-        that read none of the other shapes' unknowns (stage "own": ``c.center.y == 2`` on the
-        part; as :meth:`_features_first` does), and stage shapes runs again; when that fails
-        too the point is restored and the paper's stages follow as before.  So the solve is
-        the same whether such an affine row is met by pinning (:func:`.system.pinned`: the
-        value is no unknown, the row no row) or by the solve.  A generator like
-        :meth:`steps`; returns whether ``s`` was solved."""
-        part = _part_shape(s)
-        if part is None:
-            return False
-        mine = own([s])
-        held = {i for p in part.points.values() for i in (p.ix, p.iy)}
-        held.update(sc.index for sc in part.scalars.values())
-        held.intersection_update(mine)
-        cols = [i for i in mine if i not in held]
-        if not held or not cols or not self._related(local, held):
-            return False
-        shapes = self._cols(cols, local)
-        if (yield Attempt("shapes", 0, local, shapes, order=order)):
-            return True
-        rows = local[self._own_rows(local, held)]
-        if not len(rows):
-            return False
-        first = [i for i in mine if i in held]
-        own_cols = self._cols(first, rows)
-        saved = self.x[own_cols].copy()
-        att = Attempt("own", 0, rows, own_cols, order=order)
-        if not (yield att):
-            return False
-        moved = not np.array_equal(self.x[own_cols], saved)   # (a substitution takes no step)
-        if moved and (yield Attempt("shapes", 0, local, shapes, order=order)):
-            return True                    # the part placed, the other shapes to it
-        self.x = self.x.copy()             # back to where the paper's stages start
-        self.x[own_cols] = saved
-        return False
-
-    def _feature_stages(self, s: Structure, held: set, own, frames, helpers=()):
-        """The features stages at ``s`` (:meth:`_features_first`), lazily: ``(depth, rows,
-        unknowns)`` with the part's unknowns ``held`` left out, none without unknowns.
-        ``helpers``: the unknowns of ``s``'s own construction geometry, free in every stage
-        (a construction square for a bolt pattern goes to the plate, not the plate to it)."""
-        levels = _levels(s)
-        D = len(levels) - 1
-        upto = lambda d: [t for lv in levels[:d + 1] for t in lv]
-        below = lambda d: [t for lv in levels[1:d + 1] for t in lv]
-        helpers = list(helpers)
-        if helpers:                        # the part's helpers alone, against its own rows
-            rows = self.rows_of([s])
-            yield 0, rows, self._cols(helpers, rows)
-        for d in range(1, D + 1):          # descendants translate
-            params = helpers + [i for i in frames(below(d)) if i not in held]
-            if params:
-                rows = self.rows_of(upto(d - 1))
-                yield d, rows, self._cols(params, rows)
-        # then the geometry of what cannot translate by itself (a pattern's or a mirror's
-        # copies, held on the frame of the structure that made them) follows: a feature
-        # that can translate is not deformed to spare its part (its `Fixed` frame holds)
-        all_frames = frames(below(D))
-        for d in range(1, D + 1):
-            params = helpers + [i for i in all_frames + own([t for t in below(d)
-                                                             if id(t) not in self.frame])
-                                if i not in held]
-            if params:
-                rows = self.rows_of(upto(max(d, D - 1)))
-                yield d, rows, self._cols(params, rows)
-
-    def _part_unknowns(self, s: Structure, own, frames) -> tuple[set, list, list, list]:
-        """(the unknowns the features-first stages hold at ``s``, those its stage "own"
-        frees, those of its construction geometry, those stage "own" frees when the first
-        do not meet its rows: the frames of the siblings other siblings are placed on,
-        :func:`_references`): ``s``'s own unknowns less those of its
-        construction geometry (a helper, placed on the part like a feature: issue 73's
-        model run, a NEMA 17 plate moved 15 mm to meet its construction bolt square); and
-        when ``s`` is an assembly that declares a hole
-        (``hole lid_hole {...}`` beside ``box = finger_box(...)``, with ``CutInto(lid_hole,
-        box.lid)``), every unknown of its other children (``box``) held, their frames freed
-        in stage own (relations between parts are met there as before: both move)."""
-        first = own([s])
-        helpers: list = []
-        made = _helpers(s)
-        if made:
-            mine = set(first)
-            drawn: set = set()
-            for g in s.geometry:
-                if not g.construction and not g.__dict__.get("copied"):
-                    _unknowns(g, drawn)
-            if drawn & mine:               # a drawn part to hold: its helpers move, and the
-                cons: set = set()          # copies made of its shapes follow them (a mirror
-                for g in s.geometry:       # about a construction line the solve turns)
-                    if g.construction or g.__dict__.get("copied"):
-                        _unknowns(g, cons)
-                cons = (cons & mine) - drawn
-                helpers = [i for i in first if i in cons]
-                first = [i for i in first if i not in cons]
-        held = set(first)
-        refs = _references(s)
-        later: list = []
-        for c in list(self.cut_parts.get(id(s), ())) + refs:
-            sub = list(c.subtree())
-            held.update(frames(sub))
-            held.update(own(sub))
-            (later if c in refs else first).extend(frames([c]))
-        return held, first, helpers, later
-
-    def _related(self, rows: np.ndarray, held: set) -> bool:
-        """Whether one of ``rows`` reads unknowns both in ``held`` and outside it (slacks
-        and held values do not count)."""
-        free, n, exprs = self._free_list(), self.n_model, self.rows.exprs
-        for r in rows.tolist():
-            vs: set = set()
-            row_vars(exprs[r], vs)
-            inside = outside = False
-            for v in vs:
-                if v < n and free[v]:
-                    if v in held:
-                        inside = True
-                    else:
-                        outside = True
-            if inside and outside:
-                return True
-        return False
-
-    def _free_list(self) -> list:
-        """:attr:`free` as a list of bools (indexed one at a time in Python), made once."""
-        f = self.__dict__.get("_free")
-        if f is None:
-            f = self._free = self.free.tolist()
-        return f
-
-    def _own_rows(self, rows: np.ndarray, held: set) -> np.ndarray:
-        """A mask of ``rows``: those that read no unknown outside ``held``."""
-        free, n, exprs = self._free_list(), self.n_model, self.rows.exprs
-        mask = np.zeros(len(rows), dtype=bool)
-        for k, r in enumerate(rows.tolist()):
-            vs: set = set()
-            row_vars(exprs[r], vs)
-            mask[k] = not any(v < n and free[v] and v not in held for v in vs)
-        return mask
-
-
-FEATURE_KINDS = ("hole", "cut", "drawing")   # placed on a part (engraved); the rest are parts
-
-
-def _references(s: Structure) -> list:
-    """The children of ``s`` that a constraint of ``s`` relates another child to and that no
-    constraint of ``s`` moves ("who moves": between siblings the first-named moves to the
-    second, the reference; a feature, a hole or a cut, moves to a part whatever the order).
-    Read off each written constraint's arguments (``Constraint.args``): the child of ``s``
-    each argument lies in, in the order written (an argument on ``s``'s own geometry, the
-    part, is held anyway).  Held in the features stages (:meth:`Solver._part_unknowns`)
-    like ``s``'s own part; a child both moved by one constraint and the reference of
-    another is not held (it moves to its own reference, the others follow it)."""
-    return _who_moves(s)[0]
-
-
-def _who_moves(s: Structure) -> tuple[list, list]:
-    """(:func:`_references` of ``s``, the children of ``s`` that move to another in rank
-    order: ``ranks[0]`` those placed on the references only, ``ranks[1]`` those placed on
-    ``ranks[0]`` or a reference, ...; a child in a cycle of relations is in none)."""
-    if not s.children:
-        return [], []
-    movers: dict[int, Structure] = {}
-    refs: dict[int, Structure] = {}
-    edges: dict[int, set] = {}          # id(mover) -> ids of its references
-    for c in s.constraints:
-        args = c.args
-        if not args:
-            continue
-        groups: list = []           # s's children reached, in the order written
-        part = False
-        for owners in args:
-            for o in sorted(owners, key=_depth):
-                t = _child_toward(s, o)
-                if t is None:
-                    part = True
-                elif t not in groups:
-                    groups.append(t)
-        if len(groups) < 1 + (not part):
-            continue
-        if part:                    # s's own part is the reference: every child moves
-            for t in groups:
-                movers[id(t)] = t
-                edges.setdefault(id(t), set())
-            continue
-        solids = [t for t in groups if t.kind not in FEATURE_KINDS]
-        ref = solids[-1] if solids and len(solids) < len(groups) else groups[-1]
-        refs[id(ref)] = ref
-        for t in groups:
-            if t is not ref:
-                movers[id(t)] = t
-                edges.setdefault(id(t), set()).add(id(ref))
-    placed = {k for k in refs if k not in movers}
-    ranks: list = []
-    todo = dict(movers)
-    while todo:
-        now = [k for k in todo if edges[k] <= placed]
-        if not now:
-            break                       # a cycle: left to the stages
-        ranks.append([todo.pop(k) for k in now])
-        placed.update(now)
-    return [t for k, t in refs.items() if k not in movers], ranks
-
-
-def _depth(t: Structure) -> int:
-    n = 0
-    while t.parent is not None:
-        t, n = t.parent, n + 1
-    return n
-
-
-def _child_toward(s: Structure, o: Structure):
-    """The child of ``s`` whose subtree holds ``o`` (None: ``o`` is ``s`` or not below it)."""
-    while o is not None and o.parent is not s:
-        o = o.parent
-    return o
-
-
-def _helpers(s: Structure) -> list:
-    """``s``'s own construction geometry (``construction=true``): solved, never drawn."""
-    return [g for g in s.geometry if g.construction]
-
-
-def _unknowns(g, out: set) -> None:
-    """Add the parameter indices of geometry ``g`` (its points, scalars and parts) to
-    ``out``."""
-    for p in g.points.values():
-        out.add(p.ix)
-        out.add(p.iy)
-    for sc in g.scalars.values():
-        out.add(sc.index)
-    for part in g.parts.values():
-        if hasattr(part, "points"):
-            _unknowns(part, out)
-
-
-def _part_shape(s: Structure):
-    """A solid's part among its own shapes: the first drawn closed one (not construction
-    geometry, not a copy made by a pattern), or None."""
-    if s.kind != "solid":
-        return None
-    for g in s.geometry:
-        if g.closed and not g.construction and g.pattern_original is None \
-                and g.kind not in ("Text", "Point"):
-            return g
-    return None
-
-
-def _cut_parts(model: Model) -> dict[int, list]:
-    """``id(assembly)`` -> its children that are parts (not holes), for each assembly that
-    declares a hole: a hole declared in an assembly is placed on a part of it (and cut into
-    it with ``CutInto(lid_hole, box.lid)``, where both meet; without it, ``W0109``, whose
-    fix writes it, so that the fix moves nothing), so those children are held like a
-    structure's own geometry (:meth:`Solver._part_unknowns`)."""
-    out: dict[int, list] = {}
-    for t in model.structures:
-        a = t.parent
-        if t.kind in ("hole", "cut") and a is not None and a.kind == "assembly" \
-                and id(a) not in out:
-            out[id(a)] = [c for c in a.children.values() if c.kind not in ("hole", "cut")]
-    return out
-
 
 def _count(ids, n: int, which: np.ndarray) -> dict[int, int]:
     """How many of ``which`` (indices into the ``n`` ids ``ids``) have each id."""
@@ -960,41 +570,3 @@ def _independent(t: Tape, rows: np.ndarray, cols: np.ndarray, blocks: list) -> b
     lo = owner[t.l_col]
     return not (bool(np.any((ao >= 0) & (ao != rowblock[t.aff_rows[t.a_row]]))) or
                 bool(np.any((lo >= 0) & (lo != rowblock[t.root_of[t.leaf_node[t.l_row]]]))))
-
-
-def _rigid_below(s: Structure) -> tuple[set, set]:
-    """(ids of structures whose own parameters, ids of those whose frames) the solve of ``s``
-    may not free: every rigid structure strictly below ``s`` keeps its own parameters and
-    its whole subtree (only its own frame moves); ``s``'s own rigidity does not concern its
-    own solve."""
-    no_own: set = set()
-    no_frame: set = set()
-    todo = list(s.children.values())
-    while todo:
-        t = todo.pop()
-        if getattr(t, "rigid", False):
-            inner = [t]
-            while inner:
-                u = inner.pop()
-                no_own.add(id(u))
-                if u is not t:
-                    no_frame.add(id(u))
-                inner += u.children.values()
-        else:
-            todo += t.children.values()
-    return no_own, no_frame
-
-
-def _post_order(s: Structure):
-    for c in s.children.values():
-        yield from _post_order(c)
-    yield s
-
-
-def _levels(s: Structure) -> list[list[Structure]]:
-    out = [[s]]
-    while True:
-        nxt = [c for t in out[-1] for c in t.children.values()]
-        if not nxt:
-            return out
-        out.append(nxt)

@@ -296,7 +296,7 @@ def _shift_axes(solver, s, params: list, axis: list, pinned_axes=()) -> int:
 def _held_by_rigid(model) -> set:
     """The ids of the structures whose inside ``Rigid`` holds: each rigid structure and every
     structure below it (the solver moves them only by the rigid structure's frame,
-    :func:`aidl_lang.solver.core.hierarchy._rigid_below`)."""
+    :func:`aidl_lang.solver.core.tree._rigid_below`)."""
     out: set = set()
     todo = [s for s in model.structures if getattr(s, "rigid", False)]
     while todo:

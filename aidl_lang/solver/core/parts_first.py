@@ -1,0 +1,253 @@
+"""Parts stay, features move (issues 73 and 84): the stages the hierarchical solve
+(:meth:`.hierarchy.Solver.steps`) tries at a structure before the paper's deepening, when one
+of its constraints relates its own geometry (a part) to a descendant's (a hole, a child
+solid, a pattern's target) or to another of its own shapes (a knob on a body).  The part's
+unknowns are held while the rest moves; only when that fails is the part placed by its own
+rows, and only when that fails too does the paper's ladder move it.
+
+:class:`PartsFirst` is a mixin of :class:`.hierarchy.Solver`: its methods read the solver's
+rows (``rows``, ``rows_of``, ``_cols``), its unknowns (``own``, ``frame``, ``free``,
+``n_model``, ``cut_parts``), its point ``x`` and its ``trace``; each stage is a generator
+like ``Solver.steps`` (yields an :class:`~.attempts.Attempt`, is sent whether it succeeded)."""
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry.core.model import Structure
+from .attempts import Attempt
+from .holds import row_vars
+from .tree import _helpers, _levels, _part_shape, _references, _unknowns, _who_moves
+
+
+class PartsFirst:
+    """The features-first and shapes-first stages of :class:`.hierarchy.Solver`."""
+
+    def _features_first(self, s: Structure, local: np.ndarray, order: int, own, frames):
+        """Parts stay, features move (issue 73): the stages tried at ``s`` before the
+        paper's, when one of ``s``'s constraints relates its own geometry (a part's) to a
+        descendant's (a hole, a child solid, a pattern's target; or a part to a hole that
+        ``CutInto`` cuts into it).  A generator like :meth:`~.hierarchy.Solver.steps`, with
+        its ``own`` and ``frames`` (the unknowns of structures, less those of rigid ones);
+        returns whether ``s`` was solved.
+
+        The part's unknowns (:meth:`_part_unknowns`) are held while the rest moves (stage
+        "features", the paper's two deepenings without the part: the descendants' frames
+        one level deeper at a time, then also the geometry of the descendants that have no
+        frame of their own to move, copies made by a pattern or a mirror).  The first such
+        attempt takes every row of ``s`` (it ends at once when they all hold, as the local
+        stage would); when it fails, the part is placed by the rows that read nothing else
+        (stage "own") and the features stages follow.  So a hole placed on a plate goes to
+        the plate, and the plate stays where it is written.  When no stage succeeds (the
+        part is the only thing free: ``Fixed(h)`` on the feature, a feature that would have
+        to change shape, ...) the point is restored and the paper's ladder runs as before,
+        moving the part."""
+        held, first, helpers, later = self._part_unknowns(s, own, frames)
+        if not held or not self._related(local, held):
+            return False
+        stages = self._feature_stages(s, held, own, frames, helpers)
+        top = next(stages, None)
+        if top is None:
+            return False
+        ranks = _who_moves(s)[1] if len(s.children) > 2 else []
+        for k in range(1, len(ranks)):    # a chain: each placed on its reference in turn
+            yield from self._place_rank(s, local, order, held, ranks, k, frames)
+        if (yield Attempt("features", top[0], top[1], top[2], order=order)):
+            return True
+        saved = None
+        rows = local[self._own_rows(local, held)]
+        if len(rows):
+            cols = self._cols(first + later, rows)
+            saved = (cols, self.x[cols].copy())
+            att = Attempt("own", 0, rows, self._cols(first, rows), order=order)
+            if (not first or not (yield att)) and not later:
+                return False
+            if not att.ok:                 # a reference sibling placed by its own rows
+                att = Attempt("own", 1, rows, cols, order=order)
+                if not (yield att):
+                    return False
+            if att.iterations and (yield Attempt("features", top[0], top[1], top[2],
+                                                 order=order)):
+                return True                # the part placed, the first stage again
+        for d, rows, cols in stages:
+            if self.trace.budget_exceeded:
+                break
+            if (yield Attempt("features", d, rows, cols, order=order)):
+                return True
+        if saved is not None:              # back to where the paper's ladder starts
+            cols, values = saved
+            self.x = self.x.copy()
+            self.x[cols] = values
+        return False
+
+    def _place_rank(self, s: Structure, local: np.ndarray, order: int, held: set,
+                    ranks: list, k: int, frames):
+        """Before the features stages, when siblings are placed on siblings placed on
+        others (``AlignCenterX(b, c)``, ``AlignCenterY(a, b)``): the children of rank ``k``
+        (:func:`_who_moves`) move by their frames to meet the rows of ``s`` that read
+        nothing of a higher rank, those of lower ranks and the references held (so ``b``
+        keeps its written y, which ``a`` then takes).  A failure changes nothing; the
+        features stages follow either way.  A generator like :meth:`~.hierarchy.Solver.steps`."""
+        mine = set(frames(ranks[k]))
+        later = {i for t in ranks[k + 1:] for c in t for i in self._subtree_unknowns(c)}
+        if not mine:
+            return
+        free, n, exprs = self._free_list(), self.n_model, self.rows.exprs
+        pick = []
+        for r in local.tolist():
+            vs: set = set()
+            row_vars(exprs[r], vs)
+            vs = {v for v in vs if v < n and free[v]}
+            if vs & mine and not vs & later:
+                pick.append(r)
+        if pick:
+            rows = np.asarray(pick, dtype=np.int64)
+            yield Attempt("rank", k, rows, self._cols(sorted(mine), rows), order=order)
+
+    def _subtree_unknowns(self, c: Structure) -> list:
+        return [i for t in c.subtree() for i in self.frame.get(id(t), ()) +
+                self.own.get(id(t), [])]
+
+    def _shape_first(self, s: Structure, local: np.ndarray, order: int, own):
+        """Parts stay within one structure (issue 73): when one of a solid's constraints
+        relates its first drawn closed shape (the part: ``body = Ellipse(...)``) to another
+        of its shapes (``knob = Circle(...)``, ``Coincident(knob.center, body)``), an
+        attempt first solves its rows with the part's unknowns held, so the knob goes to the
+        body and the body stays where it is written.  When that fails (the knob is
+        ``Fixed``, or only the part can move) the part is first placed by its own rows, those
+        that read none of the other shapes' unknowns (stage "own": ``c.center.y == 2`` on the
+        part; as :meth:`_features_first` does), and stage shapes runs again; when that fails
+        too the point is restored and the paper's stages follow as before.  So the solve is
+        the same whether such an affine row is met by pinning (:func:`.system.pinned`: the
+        value is no unknown, the row no row) or by the solve.  A generator like
+        :meth:`~.hierarchy.Solver.steps`; returns whether ``s`` was solved."""
+        part = _part_shape(s)
+        if part is None:
+            return False
+        mine = own([s])
+        held = {i for p in part.points.values() for i in (p.ix, p.iy)}
+        held.update(sc.index for sc in part.scalars.values())
+        held.intersection_update(mine)
+        cols = [i for i in mine if i not in held]
+        if not held or not cols or not self._related(local, held):
+            return False
+        shapes = self._cols(cols, local)
+        if (yield Attempt("shapes", 0, local, shapes, order=order)):
+            return True
+        rows = local[self._own_rows(local, held)]
+        if not len(rows):
+            return False
+        first = [i for i in mine if i in held]
+        own_cols = self._cols(first, rows)
+        saved = self.x[own_cols].copy()
+        att = Attempt("own", 0, rows, own_cols, order=order)
+        if not (yield att):
+            return False
+        moved = not np.array_equal(self.x[own_cols], saved)   # (a substitution takes no step)
+        if moved and (yield Attempt("shapes", 0, local, shapes, order=order)):
+            return True                    # the part placed, the other shapes to it
+        self.x = self.x.copy()             # back to where the paper's stages start
+        self.x[own_cols] = saved
+        return False
+
+    def _feature_stages(self, s: Structure, held: set, own, frames, helpers=()):
+        """The features stages at ``s`` (:meth:`_features_first`), lazily: ``(depth, rows,
+        unknowns)`` with the part's unknowns ``held`` left out, none without unknowns.
+        ``helpers``: the unknowns of ``s``'s own construction geometry, free in every stage
+        (a construction square for a bolt pattern goes to the plate, not the plate to it)."""
+        levels = _levels(s)
+        D = len(levels) - 1
+        upto = lambda d: [t for lv in levels[:d + 1] for t in lv]
+        below = lambda d: [t for lv in levels[1:d + 1] for t in lv]
+        helpers = list(helpers)
+        if helpers:                        # the part's helpers alone, against its own rows
+            rows = self.rows_of([s])
+            yield 0, rows, self._cols(helpers, rows)
+        for d in range(1, D + 1):          # descendants translate
+            params = helpers + [i for i in frames(below(d)) if i not in held]
+            if params:
+                rows = self.rows_of(upto(d - 1))
+                yield d, rows, self._cols(params, rows)
+        # then the geometry of what cannot translate by itself (a pattern's or a mirror's
+        # copies, held on the frame of the structure that made them) follows: a feature
+        # that can translate is not deformed to spare its part (its `Fixed` frame holds)
+        all_frames = frames(below(D))
+        for d in range(1, D + 1):
+            params = helpers + [i for i in all_frames + own([t for t in below(d)
+                                                             if id(t) not in self.frame])
+                                if i not in held]
+            if params:
+                rows = self.rows_of(upto(max(d, D - 1)))
+                yield d, rows, self._cols(params, rows)
+
+    def _part_unknowns(self, s: Structure, own, frames) -> tuple[set, list, list, list]:
+        """(the unknowns the features-first stages hold at ``s``, those its stage "own"
+        frees, those of its construction geometry, those stage "own" frees when the first
+        do not meet its rows: the frames of the siblings other siblings are placed on,
+        :func:`_references`): ``s``'s own unknowns less those of its
+        construction geometry (a helper, placed on the part like a feature: issue 73's
+        model run, a NEMA 17 plate moved 15 mm to meet its construction bolt square); and
+        when ``s`` is an assembly that declares a hole
+        (``hole lid_hole {...}`` beside ``box = finger_box(...)``, with ``CutInto(lid_hole,
+        box.lid)``), every unknown of its other children (``box``) held, their frames freed
+        in stage own (relations between parts are met there as before: both move)."""
+        first = own([s])
+        helpers: list = []
+        made = _helpers(s)
+        if made:
+            mine = set(first)
+            drawn: set = set()
+            for g in s.geometry:
+                if not g.construction and not g.__dict__.get("copied"):
+                    _unknowns(g, drawn)
+            if drawn & mine:               # a drawn part to hold: its helpers move, and the
+                cons: set = set()          # copies made of its shapes follow them (a mirror
+                for g in s.geometry:       # about a construction line the solve turns)
+                    if g.construction or g.__dict__.get("copied"):
+                        _unknowns(g, cons)
+                cons = (cons & mine) - drawn
+                helpers = [i for i in first if i in cons]
+                first = [i for i in first if i not in cons]
+        held = set(first)
+        refs = _references(s)
+        later: list = []
+        for c in list(self.cut_parts.get(id(s), ())) + refs:
+            sub = list(c.subtree())
+            held.update(frames(sub))
+            held.update(own(sub))
+            (later if c in refs else first).extend(frames([c]))
+        return held, first, helpers, later
+
+    def _related(self, rows: np.ndarray, held: set) -> bool:
+        """Whether one of ``rows`` reads unknowns both in ``held`` and outside it (slacks
+        and held values do not count)."""
+        free, n, exprs = self._free_list(), self.n_model, self.rows.exprs
+        for r in rows.tolist():
+            vs: set = set()
+            row_vars(exprs[r], vs)
+            inside = outside = False
+            for v in vs:
+                if v < n and free[v]:
+                    if v in held:
+                        inside = True
+                    else:
+                        outside = True
+            if inside and outside:
+                return True
+        return False
+
+    def _free_list(self) -> list:
+        """:attr:`free` as a list of bools (indexed one at a time in Python), made once."""
+        f = self.__dict__.get("_free")
+        if f is None:
+            f = self._free = self.free.tolist()
+        return f
+
+    def _own_rows(self, rows: np.ndarray, held: set) -> np.ndarray:
+        """A mask of ``rows``: those that read no unknown outside ``held``."""
+        free, n, exprs = self._free_list(), self.n_model, self.rows.exprs
+        mask = np.zeros(len(rows), dtype=bool)
+        for k, r in enumerate(rows.tolist()):
+            vs: set = set()
+            row_vars(exprs[r], vs)
+            mask[k] = not any(v < n and free[v] and v not in held for v in vs)
+        return mask

@@ -1,0 +1,170 @@
+"""The structure tree as the hierarchical solve (:mod:`.hierarchy`) reads it: its levels and
+post-order, the rigid structures below a structure (they move only by their own frames), a
+structure's construction geometry (helpers) and part shape (the first drawn closed shape),
+the parts of an assembly that declares a hole, and "who moves" between siblings (issue 84:
+:func:`_who_moves`, the references held and the ranks of those placed on them).  Pure
+functions of :class:`~aidl_lang.geometry.core.model.Structure`: no solver state."""
+from __future__ import annotations
+
+from ...geometry.core.model import Model, Structure
+
+
+FEATURE_KINDS = ("hole", "cut", "drawing")   # placed on a part (engraved); the rest are parts
+
+
+def _references(s: Structure) -> list:
+    """The children of ``s`` that a constraint of ``s`` relates another child to and that no
+    constraint of ``s`` moves ("who moves": between siblings the first-named moves to the
+    second, the reference; a feature, a hole or a cut, moves to a part whatever the order).
+    Read off each written constraint's arguments (``Constraint.args``): the child of ``s``
+    each argument lies in, in the order written (an argument on ``s``'s own geometry, the
+    part, is held anyway).  Held in the features stages
+    (:meth:`.parts_first.PartsFirst._part_unknowns`) like ``s``'s own part; a child both moved
+    by one constraint and the reference of another is not held (it moves to its own
+    reference, the others follow it)."""
+    return _who_moves(s)[0]
+
+
+def _who_moves(s: Structure) -> tuple[list, list]:
+    """(:func:`_references` of ``s``, the children of ``s`` that move to another in rank
+    order: ``ranks[0]`` those placed on the references only, ``ranks[1]`` those placed on
+    ``ranks[0]`` or a reference, ...; a child in a cycle of relations is in none)."""
+    if not s.children:
+        return [], []
+    movers: dict[int, Structure] = {}
+    refs: dict[int, Structure] = {}
+    edges: dict[int, set] = {}          # id(mover) -> ids of its references
+    for c in s.constraints:
+        args = c.args
+        if not args:
+            continue
+        groups: list = []           # s's children reached, in the order written
+        part = False
+        for owners in args:
+            for o in sorted(owners, key=_depth):
+                t = _child_toward(s, o)
+                if t is None:
+                    part = True
+                elif t not in groups:
+                    groups.append(t)
+        if len(groups) < 1 + (not part):
+            continue
+        if part:                    # s's own part is the reference: every child moves
+            for t in groups:
+                movers[id(t)] = t
+                edges.setdefault(id(t), set())
+            continue
+        solids = [t for t in groups if t.kind not in FEATURE_KINDS]
+        ref = solids[-1] if solids and len(solids) < len(groups) else groups[-1]
+        refs[id(ref)] = ref
+        for t in groups:
+            if t is not ref:
+                movers[id(t)] = t
+                edges.setdefault(id(t), set()).add(id(ref))
+    placed = {k for k in refs if k not in movers}
+    ranks: list = []
+    todo = dict(movers)
+    while todo:
+        now = [k for k in todo if edges[k] <= placed]
+        if not now:
+            break                       # a cycle: left to the stages
+        ranks.append([todo.pop(k) for k in now])
+        placed.update(now)
+    return [t for k, t in refs.items() if k not in movers], ranks
+
+
+def _depth(t: Structure) -> int:
+    n = 0
+    while t.parent is not None:
+        t, n = t.parent, n + 1
+    return n
+
+
+def _child_toward(s: Structure, o: Structure):
+    """The child of ``s`` whose subtree holds ``o`` (None: ``o`` is ``s`` or not below it)."""
+    while o is not None and o.parent is not s:
+        o = o.parent
+    return o
+
+
+def _helpers(s: Structure) -> list:
+    """``s``'s own construction geometry (``construction=true``): solved, never drawn."""
+    return [g for g in s.geometry if g.construction]
+
+
+def _unknowns(g, out: set) -> None:
+    """Add the parameter indices of geometry ``g`` (its points, scalars and parts) to
+    ``out``."""
+    for p in g.points.values():
+        out.add(p.ix)
+        out.add(p.iy)
+    for sc in g.scalars.values():
+        out.add(sc.index)
+    for part in g.parts.values():
+        if hasattr(part, "points"):
+            _unknowns(part, out)
+
+
+def _part_shape(s: Structure):
+    """A solid's part among its own shapes: the first drawn closed one (not construction
+    geometry, not a copy made by a pattern), or None."""
+    if s.kind != "solid":
+        return None
+    for g in s.geometry:
+        if g.closed and not g.construction and g.pattern_original is None \
+                and g.kind not in ("Text", "Point"):
+            return g
+    return None
+
+
+def _cut_parts(model: Model) -> dict[int, list]:
+    """``id(assembly)`` -> its children that are parts (not holes), for each assembly that
+    declares a hole: a hole declared in an assembly is placed on a part of it (and cut into
+    it with ``CutInto(lid_hole, box.lid)``, where both meet; without it, ``W0109``, whose
+    fix writes it, so that the fix moves nothing), so those children are held like a
+    structure's own geometry (:meth:`.parts_first.PartsFirst._part_unknowns`)."""
+    out: dict[int, list] = {}
+    for t in model.structures:
+        a = t.parent
+        if t.kind in ("hole", "cut") and a is not None and a.kind == "assembly" \
+                and id(a) not in out:
+            out[id(a)] = [c for c in a.children.values() if c.kind not in ("hole", "cut")]
+    return out
+
+
+def _rigid_below(s: Structure) -> tuple[set, set]:
+    """(ids of structures whose own parameters, ids of those whose frames) the solve of ``s``
+    may not free: every rigid structure strictly below ``s`` keeps its own parameters and
+    its whole subtree (only its own frame moves); ``s``'s own rigidity does not concern its
+    own solve."""
+    no_own: set = set()
+    no_frame: set = set()
+    todo = list(s.children.values())
+    while todo:
+        t = todo.pop()
+        if getattr(t, "rigid", False):
+            inner = [t]
+            while inner:
+                u = inner.pop()
+                no_own.add(id(u))
+                if u is not t:
+                    no_frame.add(id(u))
+                inner += u.children.values()
+        else:
+            todo += t.children.values()
+    return no_own, no_frame
+
+
+def _post_order(s: Structure):
+    for c in s.children.values():
+        yield from _post_order(c)
+    yield s
+
+
+def _levels(s: Structure) -> list[list[Structure]]:
+    out = [[s]]
+    while True:
+        nxt = [c for t in out[-1] for c in t.children.values()]
+        if not nxt:
+            return out
+        out.append(nxt)
