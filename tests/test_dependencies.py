@@ -256,3 +256,18 @@ def test_every_test_that_needs_ocp_is_marked_step():
         if needs and not marked:
             unmarked.append(f"{p.name}::{f.name}")
     assert not unmarked, f"needs OCP, add @pytest.mark.step: {unmarked}"
+
+
+def test_every_pytest_plugin_a_test_imports_is_declared_by_name():
+    """A pytest plugin a test imports (``import pytest_asyncio`` in test_mcp.py) is named in
+    the test extra itself, not only reached through another plugin's requirements
+    (pytest-lsp's): its API is the test's (``loop_scope`` needs pytest-asyncio 0.24), and a
+    plugin that drops the requirement would take it away.  A regex over the files' text
+    (cheap: no parse)."""
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
+    named = {_key(Requirement(r).name) for r in project["optional-dependencies"]["test"]}
+    used = {(_key(m), p.name) for p in TESTS.glob("*.py")
+            for m in re.findall(r"^\s*(?:from|import) (pytest_\w+)",
+                                p.read_text(encoding="utf-8"), re.M)}
+    assert ("pytest-asyncio", "test_mcp.py") in used
+    assert [u for u in sorted(used) if u[0] not in named] == []
