@@ -8,6 +8,7 @@ import io
 import json
 import os
 import threading
+import time
 from pathlib import Path
 
 import pytest
@@ -311,6 +312,45 @@ def test_a_worker_is_replaced_after_its_recycle_count_and_no_answer_is_lost(tmp_
         assert w.restarts == 0 and w.answered == 1
     finally:
         w.stop()
+
+
+def test_the_recycle_option_reaches_every_worker_of_the_server_process(tmp_path, monkeypatch,
+                                                                       capsys):
+    """`aidl studio --recycle N` (AIDL_STUDIO_RECYCLE without the environment): the command
+    line, through studio()'s environment, to the app a server process builds (uvicorn's run
+    stands in: it builds the app as a worker does and serves it through the test client).
+    At --recycle 1, 2 previews are answered by 2 processes (a process started per answer);
+    every compile and sweep worker carries the count; a negative count is a usage error."""
+    import signal
+    import uvicorn
+    from aidl_lang.cli.main import main
+    from aidl_lang.host import workers as W
+    for var, value in Settings(data=str(tmp_path / "d")).to_env().items():
+        monkeypatch.setenv(var, value)      # undone after the test (studio() sets them all)
+    monkeypatch.setattr(signal, "signal", lambda *a: None)
+    starts, seen = [], {}
+    start = W.Worker._start
+    monkeypatch.setattr(W.Worker, "_start", lambda w: (starts.append(1), start(w))[1])
+
+    def run(server, sockets=None):
+        for s in sockets or ():
+            s.close()
+        app = create_app()                  # from the environment, as a server process
+        st = app.state.studio
+        seen["recycle"] = [w.recycle for w in st.pool.workers + st.sweepers.workers]
+        with TestClient(app) as c:
+            sid = session(c)
+            seen["ok"] = [view(c, sid, BRACKET, {})["ok"] for _ in range(2)]
+            for w in st.pool.workers:       # the renewal after the last answer, done before
+                while w.retiring:           # the app stops (renew() clears it, holding the
+                    time.sleep(0.05)        # lock while the new process starts)
+                with w.lock:
+                    pass
+    monkeypatch.setattr(uvicorn.Server, "run", run)
+    assert main(["studio", "--port", "0", "--compilers", "2", "--recycle", "1"]) == 0
+    assert seen == {"recycle": [1, 1, 1], "ok": [True, True]} and len(starts) >= 2
+    assert main(["studio", "--port", "0", "--recycle", "-1"]) == 2
+    assert "--recycle takes 0 (never) to 1000000 answers, got -1" in capsys.readouterr().err
 
 
 def test_sigterm_stops_a_studio_of_several_processes_and_its_workers():

@@ -347,6 +347,9 @@ def _studio_arguments(so) -> None:
                     help="requests per client, such as 300/minute (the default)")
     so.add_argument("--memory", type=int, default=None, metavar="MB",
                     help="memory cap of one compile worker (default 1500)")
+    so.add_argument("--recycle", type=int, default=None, metavar="N",
+                    help="replace a compile worker's process after N answers, so its memory "
+                         "stays flat (default 200; 0: never)")
     so.add_argument("--store", default=None, metavar="redis://HOST:PORT/DB",
                     help="keep uploads and rate counters in this Redis: any process of any "
                          "machine answers any request (default: a local folder)")

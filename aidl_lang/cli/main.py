@@ -795,6 +795,8 @@ def cmd_studio(args) -> int:
     from ..studio import studio
     if not 1 <= args.processes <= 64 or not 1 <= args.compilers <= 64:
         return _usage("--processes and --compilers take 1 to 64")
+    if args.recycle is not None and not 0 <= args.recycle <= 1_000_000:
+        return _usage(f"--recycle takes 0 (never) to 1000000 answers, got {args.recycle}")
     if args.rate is not None:
         from limits import parse
         try:
@@ -815,7 +817,7 @@ def cmd_studio(args) -> int:
                       f"tcp://HOST:8786, got `{args.scheduler}`")
     return studio(args.host, args.port, args.processes, args.compilers, rate=args.rate,
                   memory_mb=args.memory, budget=getattr(args, "budget", None),
-                  store=args.store, scheduler=args.scheduler)
+                  store=args.store, scheduler=args.scheduler, recycle=args.recycle)
 
 
 def cmd_batch(args) -> int:
