@@ -1,11 +1,13 @@
 """An imported drawing's inferred relations as the studio's sliders (issue 94,
 aidl_lang/studio/relations.py): a round flange opened as an editable design has a bolt circle
 whose range follows the outline's diameter and the bore, so the holes follow a smaller flange
-instead of breaking through its edge; and a download is the design or an error, never an
+instead of breaking through its edge; a rectangular plate (a NEMA 17 mount's hole square
+about its bore, a grid, corner holes) keeps its holes centred or at their inset and inside
+its edges at any width and height; and a download is the design or an error, never an
 empty file.
 
 Every drawing is re-read by ezdxf (the outline, the bore and the holes as the DXF holds them).
-Cost: one import and about 25 compiles (under 10 s of CPU on a loaded 2-core machine).
+Cost: four imports and about 60 compiles (about 4 s of CPU on a loaded 2-core machine).
 """
 from __future__ import annotations
 
@@ -19,7 +21,7 @@ from hypothesis import strategies as st
 
 from aidl_lang.studio import compiler
 from aidl_lang.studio.relations import WALL, with_relations
-from maker_drawings import flange
+from maker_drawings import flange, nema17
 
 ezdxf = pytest.importorskip("ezdxf")
 
@@ -116,3 +118,141 @@ def test_a_bolt_circle_off_the_body_s_centre_is_not_related():
     moved = text.replace("bore_c = (50, 50)", "bore_c = (60, 50)")
     assert moved != text and with_relations(moved) == (moved, [])
     assert with_relations(text)[1]
+
+
+# ---------------------------------------------------------------- rectangular plates
+def plate(width: float, height: float, holes, hole: float) -> bytes:
+    """A ``width`` x ``height`` plate (its corner at the origin) with holes of diameter
+    ``hole`` at ``holes``, as ezdxf writes it."""
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    m = doc.modelspace()
+    m.add_lwpolyline([(0, 0), (width, 0), (width, height), (0, height)], close=True)
+    for at in holes:
+        m.add_circle(at, hole / 2)
+    s = io.StringIO()
+    doc.write(s)
+    return s.getvalue().encode()
+
+
+def corner_plate(width=80.0, height=50.0, inset=5.0, hole=3.4) -> bytes:
+    """A hole at each corner, ``inset`` in from both edges."""
+    return plate(width, height, [(x, y) for x in (inset, width - inset)
+                                 for y in (inset, height - inset)], hole)
+
+
+def grid_plate(width=80.0, height=70.0, pitch=25.0, hole=5.0) -> bytes:
+    """2 columns x 3 rows of holes about the plate's centre, ``pitch`` apart both ways."""
+    return plate(width, height, [(width / 2 + i * pitch / 2, height / 2 + j * pitch)
+                                 for i in (-1, 1) for j in (-1, 0, 1)], hole)
+
+
+@pytest.fixture(scope="module")
+def plates(tmp_path_factory):
+    """The NEMA 17 mount (60 x 60, a 22 mm bore, 4 holes of 3.4 mm on a 31 mm square about
+    it), a grid without a bore (2 x 3 holes of 5 mm on 80 x 70) and the corner plate (80 x
+    50, 3.4 mm holes 5 mm in), as the studio opens them (imported with --infer, related)."""
+    folder = tmp_path_factory.mktemp("plates")
+    out = {}
+    for name, data in (("nema17", nema17()),
+                       ("grid", grid_plate()),
+                       ("corners", corner_plate())):
+        (folder / f"{name}.dxf").write_bytes(data)
+        doc = compiler.import_upload(str(folder), f"{name}.dxf", True)
+        assert "program" in doc, doc
+        out[name] = doc
+    return str(folder), out
+
+
+def outline_and_holes(data: bytes):
+    """The plate's box ``(x0, y0, x1, y1)`` and its circles ``(x, y, r)`` as ezdxf reads a
+    DXF download."""
+    d = ezdxf.read(io.StringIO(data.decode()))
+    m = d.modelspace()
+    pts = [p for e in m.query("LWPOLYLINE") for p in e.get_points("xy")]
+    box = (min(p[0] for p in pts), min(p[1] for p in pts), max(p[0] for p in pts),
+           max(p[1] for p in pts))
+    return box, [(c.dxf.center.x, c.dxf.center.y, c.dxf.radius) for c in m.query("CIRCLE")]
+
+
+def test_a_motor_mount_s_hole_square_stays_centred_and_inside(plates):
+    """At 30 mm wide (drawn 60), the 31 mm hole square would reach 0.5 mm past both side
+    edges (the program without its ranges: the four holes are notches in the outline,
+    W0510); with them, the pitch
+    follows to 24.5 (at most 30 - 3.4 - 2 x 1) and the bore to 19.1 (at most 19.19: clear of
+    the holes by 1 mm), the square about the plate's centre."""
+    folder, docs = plates
+    doc = docs["nema17"]
+    assert any("grid stays centred" in n for n in doc["notes"])
+    src = doc["program"]
+    assert "param width = 60 mm, min = 11.23 mm, max = 120 mm" in src
+    view = compiler.view(OrderedDict(), "m", folder, src, {"width": "30mm"})
+    assert view["ok"], view["diagnostics"]
+    # onto the sliders' steps inside the ranges (bore 0.1 mm, pitch 0.2 mm from its min)
+    assert view["clamped"] == {"bore_d": pytest.approx(19.1),
+                               "motor_holes_pitch": pytest.approx(24.5)}
+    assert not [d for d in view["diagnostics"] if d["severity"] == "warning"]
+    box, circles = outline_and_holes(compiler.download(folder, src, view["values"], "dxf",
+                                                       {})[0])
+    assert box == pytest.approx((0, 0, 30, 60))
+    holes = sorted(c for c in circles if c[2] == pytest.approx(1.7))
+    assert [u for x, y, _ in holes for u in (x, y)] == pytest.approx(
+        [2.75, 17.75, 2.75, 42.25, 27.25, 17.75, 27.25, 42.25])  # 24.5 apart about (15, 30)
+    assert [c for c in circles if c[2] > 2] == [pytest.approx((15, 30, 9.55))]
+    # 1.05 mm to the side edges, 1.05 mm from the bore's edge to each hole's
+    from aidl_lang.drawing.infer import import_drawing
+    bare, _ = import_drawing(nema17(), "nema17.dxf", infer=True)
+    before = compiler.view(OrderedDict(), "b", folder, bare, {"width": "30mm"})
+    assert [d["code"] for d in before["diagnostics"]] == ["W0510"]   # "now breaks through"
+    got = compiler.download(folder, bare, {"width": "30mm"}, "dxf", {})
+    box, circles = outline_and_holes(got[0])
+    assert len(circles) == 1                        # the bore; the holes are notches now
+
+
+@settings(max_examples=9, deadline=None, derandomize=True,
+          suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(name=st.sampled_from(["nema17", "grid", "corners"]),
+       width=st.floats(0, 1), height=st.floats(0, 1), d=st.floats(0.8, 12),
+       other=st.floats(1, 60), n=st.integers(1, 8))
+def test_at_any_plate_size_the_holes_stay_inside_and_in_their_pattern(plates, name, width,
+                                                                     height, d, other, n):
+    """Whatever the sliders hold (the plate's width and height within their sliders' spans,
+    given as fractions of them), the worker moves the dependent ones into their ranges and
+    the DXF's holes are inside the plate by WALL, clear of each other (and of the bore); a
+    grid is centred on the plate with cols x rows holes, corner holes sit at the inset from
+    both edges they are nearest."""
+    folder, docs = plates
+    src = docs[name]["program"]
+    rows = compiler.view(OrderedDict(), "p", folder, src, {})["params"]
+    values = {p["name"]: f"{p['min'] + k * (p['max'] - p['min']):.3f}mm"
+              for p, k in zip(rows[:2], (width, height))}
+    for p in rows[2:]:                  # a count on its slider's steps (by 2 about a bore)
+        values[p["name"]] = (
+            str(int(p["min"] + (p["step"] or 1) * (n - 1))) if not p["unit"] else
+            f"{d:.3f}mm" if p["name"].endswith("_d") and "bore" not in p["name"] else
+            f"{other:.3f}mm")
+    view = compiler.view(OrderedDict(), "p", folder, src, values)
+    assert view["ok"], [x["message"] for x in view["diagnostics"]]
+    v = {p["name"]: p["value"] for p in view["params"]}
+    got = compiler.download(folder, src, view["values"], "dxf", {})
+    assert not isinstance(got, dict), got
+    (x0, y0, x1, y1), circles = outline_and_holes(got[0])
+    assert (x1 - x0, y1 - y0) == pytest.approx((v["width"], v["height"]))
+    bore = [c for c in circles if "bore_d" in v and c[2] == pytest.approx(v["bore_d"] / 2)
+            and (c[0], c[1]) == pytest.approx(((x0 + x1) / 2, (y0 + y1) / 2))]
+    holes = [c for c in circles if c not in bore]
+    for i, (x, y, r) in enumerate(holes):
+        assert min(x - x0, x1 - x, y - y0, y1 - y) >= r + WALL - 1e-6
+        for x2, y2, r2 in holes[i + 1:] + bore:
+            assert math.hypot(x - x2, y - y2) >= r + r2 + WALL - 1e-6
+    counts = [v[k] for k in v if k.endswith(("_cols", "_rows"))]
+    if counts:
+        assert len(holes) == counts[0] * counts[1]
+        assert (sum(h[0] for h in holes) / len(holes), sum(h[1] for h in holes) / len(holes)) \
+            == pytest.approx(((x0 + x1) / 2, (y0 + y1) / 2))
+    else:
+        inset = next(v[k] for k in v if k.endswith("inset"))
+        assert len(holes) == 4
+        for x, y, _ in holes:
+            assert min(x - x0, x1 - x) == pytest.approx(inset)
+            assert min(y - y0, y1 - y) == pytest.approx(inset)

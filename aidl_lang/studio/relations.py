@@ -15,38 +15,19 @@ What is related (found in the program's syntax, never in its param names):
   :data:`WALL` inside the edge and clear of the bore, the bore inside the holes, and ``N``
   holes fit round the circle without touching.
 
+A rectangular plate's grid of holes about its centre, and its corner holes
+(:mod:`.plate_relations`), are related the same way.
+
 Anything else of the program is left as it is (its sliders keep their default spans).
 Not part of the stable API.
 """
 from __future__ import annotations
 
 from .. import ast as A
+from .plate_relations import corner_ranges, grid_ranges
+from .relation_syntax import WALL, _circles, _fmt, _kw, _name, _params, _text
 
-WALL = 1.0          # mm of material kept between a hole and an edge or another hole
-
-
-def _params(prog) -> dict:
-    """The top-level ``param``\\ s with a plain literal value and no range, by name."""
-    return {s.name: s for s in prog.stmts if isinstance(s, A.ParamDecl) and not s.options
-            and isinstance(s.value, A.Num) and s.value.unit in (None, "mm")}
-
-
-def _kw(call, name):
-    return next((k.value for k in call.kwargs if k.name == name), None)
-
-
-def _circles(node):
-    """Every ``Circle(...)`` call beneath ``node``."""
-    return [n for n in A.walk(node) if isinstance(n, A.Call) and isinstance(n.func, A.Name)
-            and n.func.id == "Circle"]
-
-
-def _name(node, params) -> str | None:
-    return node.id if isinstance(node, A.Name) and node.id in params else None
-
-
-def _text(source: str, node) -> str:
-    return source[node.span.start:node.span.end]
+__all__ = ["WALL", "flange_ranges", "with_relations"]
 
 
 def _bolt_circle(source, prog, params):
@@ -92,10 +73,6 @@ def _bore(source, prog, params, centre: str, skip: set) -> str | None:
     return None
 
 
-def _fmt(x: float) -> str:
-    return f"{x:.6g}"
-
-
 def flange_ranges(source: str, prog, params) -> dict[str, str]:
     """``{param: ", min = ..., max = ..."}`` of a round body with a bolt circle (and a bore),
     in the order they must be declared; {} when the program has none."""
@@ -124,6 +101,16 @@ def flange_ranges(source: str, prog, params) -> dict[str, str]:
     return out
 
 
+_FINDERS = (   # the first that finds its relations in the program writes them
+    (flange_ranges, "the bolt circle follows the outline's size: its holes stay {wall} mm "
+                    "inside the edge and clear of the bore, and as many fit as its slider offers"),
+    (grid_ranges, "the hole grid stays centred on the plate as its size changes: its holes "
+                  "stay {wall} mm inside the edges and clear of each other and of a bore, and "
+                  "as many fit as its sliders offer"),
+    (corner_ranges, "the corner holes keep their inset as the plate's size changes: each "
+                    "stays {wall} mm inside both edges, clear of the others"))
+
+
 def with_relations(program: str, path: str = "main.aidl") -> tuple[str, list[str]]:
     """``program`` (what ``aidl import --infer`` wrote) with the ranges of the features it
     relates (see the module's docstring), its ``param`` lines in the order the ranges need,
@@ -136,8 +123,11 @@ def with_relations(program: str, path: str = "main.aidl") -> tuple[str, list[str
     if sink.has_errors or prog is None:
         return program, []
     params = _params(prog)
-    ranges = flange_ranges(program, prog, params)
-    if not ranges:
+    for find, note in _FINDERS:
+        ranges = find(program, prog, params)
+        if ranges:
+            break
+    else:
         return program, []
     lines = program.splitlines(keepends=True)
     decls = [s for s in prog.stmts if isinstance(s, A.ParamDecl)]
@@ -157,8 +147,7 @@ def with_relations(program: str, path: str = "main.aidl") -> tuple[str, list[str
     text = "".join(new)
     if not _holds(text, path):
         return program, []
-    return text, [f"the bolt circle follows the outline's size: its holes stay {_fmt(WALL)} mm "
-                  "inside the edge and clear of the bore, and as many fit as its slider offers"]
+    return text, [note.format(wall=_fmt(WALL))]
 
 
 def _ranged(line: str, decl, source: str, options: str) -> str:

@@ -1,0 +1,218 @@
+"""A rectangular plate's inferred relations as the studio's sliders (:mod:`.relations`, issue
+94): the ranges that keep a plate's holes inside it when its width or height slides, found in
+the program's syntax (never in its param names).
+
+* a grid of holes about the plate's centre (a NEMA 17 motor mount: four holes on a 31 mm
+  square about its 22 mm bore): ``body = Rectangle(center=C, width=W, height=H)``, a
+  ``for i in range(NX) { for j in range(NY) { hole ... Circle(center=(C.x + (i - (NX - 1) /
+  2) * PX, C.y + (j - (NY - 1) / 2) * PY), diameter=D) } }`` (``C`` the body's centre as
+  written, or a name assigned it; ``PX`` and ``PY`` may be one param) and, optional, a bore
+  ``Circle(center=C, diameter=B)``.  The grid stays centred (the import wrote it about the
+  centre) and :data:`~.relation_syntax.WALL` inside the edges; its holes clear each other and
+  the bore; a count fits the plate at the smallest pitch (with a bore the counts go by 2, so
+  that no hole comes onto it).
+* holes at the plate's corners, ``CornerPattern(holes, body, inset=I)`` of a ``hole`` with a
+  ``Circle(..., diameter=D)``: the inset keeps each hole ``WALL`` inside both edges and the
+  holes clear of each other.
+
+Each returns ``{param: ", min = ..., max = ..."}`` in the order the params must be declared
+(a bound reads only the params above it), or {} when the program has no such plate.
+Not part of the stable API.
+"""
+from __future__ import annotations
+
+from .. import ast as A
+from .relation_syntax import WALL, _circles, _fmt, _kw, _name, _text
+
+COUNT_CAP = 16      # a count's slider reaches at least this far (or twice the drawing's)
+EPS = 0.01          # mm a range keeps from its neighbour's end: at the smallest plate each
+#                     range still holds a value after rounding (11.2 - 9.5 is 1.6999999999999993)
+
+
+def _plate(source, prog, params):
+    """``(name, W, H, centre node)`` of every ``X = Rectangle(center=..., width=W,
+    height=H)`` outside ``hole``\\ s whose width and height are params."""
+    holes = _in_holes(prog)
+    out = []
+    for a in A.walk(prog):
+        if isinstance(a, A.Assign) and isinstance(a.value, A.Call) and id(a.value) not in holes \
+                and isinstance(a.value.func, A.Name) and a.value.func.id == "Rectangle":
+            w, h = _name(_kw(a.value, "width"), params), _name(_kw(a.value, "height"), params)
+            at = _kw(a.value, "center")
+            if w and h and w != h and isinstance(at, A.TupleLit) and len(at.items) == 2:
+                out.append((a.name, w, h, at))
+    return out
+
+
+def _in_holes(prog) -> set:
+    return {id(n) for s in _holes(prog) for n in A.walk(s)}
+
+
+def _holes(prog) -> list:
+    return [s for s in A.walk(prog) if isinstance(s, A.StructDecl) and s.kind == "hole"]
+
+
+def _only(prog, circles) -> bool:
+    """Whether every ``hole`` of the program holds one of ``circles`` (a plate with another
+    feature, a row of pot holes or a window, keeps its sliders' default spans: its ranges
+    would not keep that feature inside)."""
+    want = {id(c) for c in circles if c is not None}
+    return all(any(id(n) in want for n in A.walk(s)) for s in _holes(prog))
+
+
+def _about_middle(expr, var: str, params):
+    """``(base, count, pitch)`` of ``base + (var - (count - 1) / 2) * pitch`` (params
+    ``count`` and ``pitch``), or None."""
+    if not (isinstance(expr, A.BinOp) and expr.op == "+" and isinstance(expr.right, A.BinOp)
+            and expr.right.op == "*"):
+        return None
+    off, pitch = expr.right.left, _name(expr.right.right, params)
+    if not (pitch and isinstance(off, A.BinOp) and off.op == "-"
+            and isinstance(off.left, A.Name) and off.left.id == var):
+        return None
+    half = off.right
+    if not (isinstance(half, A.BinOp) and half.op == "/" and isinstance(half.right, A.Num)
+            and half.right.value == 2 and isinstance(half.left, A.BinOp)
+            and half.left.op == "-" and isinstance(half.left.right, A.Num)
+            and half.left.right.value == 1):
+        return None
+    count = _name(half.left.left, params)
+    return (expr.left, count, pitch) if count else None
+
+
+def _ranged_loop(node, params):
+    """``(var, count)`` of ``for var in range(count)`` with ``count`` a param, or None."""
+    it = node.iter if isinstance(node, A.For) else None
+    if isinstance(it, A.Call) and isinstance(it.func, A.Name) and it.func.id == "range" \
+            and len(it.args) == 1 and _name(it.args[0], params):
+        return node.var, it.args[0].id
+    return None
+
+
+def _grid(source, prog, params, holes):
+    """``(x axis (base text, count, pitch), y axis, D, the Circle)`` of the first two nested
+    loops of a hole ``Circle`` placed about the middle of both, or None."""
+    for outer in (n for n in A.walk(prog) if isinstance(n, A.For)):
+        o = _ranged_loop(outer, params)
+        for inner in (n for n in A.walk(outer.body) if isinstance(n, A.For)) if o else ():
+            i = _ranged_loop(inner, params)
+            if i is None:
+                continue
+            loops = dict([o, i])
+            for c in _circles(inner.body):
+                at, d = _kw(c, "center"), _name(_kw(c, "diameter"), params)
+                if id(c) not in holes or not d or not isinstance(at, A.TupleLit) \
+                        or len(at.items) != 2:
+                    continue
+                axes = []
+                for e in at.items:
+                    m = next((_about_middle(e, v, params) for v in loops
+                              if _about_middle(e, v, params)), None)
+                    if m is None or loops.get(_loop_var(e)) != m[1]:
+                        break
+                    axes.append((_text(source, m[0]), m[1], m[2]))
+                if len(axes) == 2 and axes[0][1] != axes[1][1]:
+                    return axes[0], axes[1], d, c
+    return None
+
+
+def _loop_var(expr) -> str:
+    return expr.right.left.left.id
+
+
+def _centre_texts(source, prog, centre, part: int | None) -> set:
+    """How the program writes the point ``centre`` (a ``TupleLit``) or its x (``part`` 0) or
+    y (1): as written, or through a name assigned it (``bore_c.x``)."""
+    whole = _text(source, centre)
+    names = {a.name for a in A.walk(prog) if isinstance(a, A.Assign)
+             and _text(source, a.value) == whole}
+    if part is None:
+        return {whole} | names
+    return {_text(source, centre.items[part])} | {f"{n}.{'xy'[part]}" for n in names}
+
+
+def grid_ranges(source: str, prog, params) -> dict[str, str]:
+    """The ranges of a plate with a grid of holes about its centre (and a bore); {} without."""
+    holes = _in_holes(prog)
+    grid = _grid(source, prog, params, holes)
+    if grid is None:
+        return {}
+    (bx, nx, px), (by, ny, py), d, hole = grid
+    plate = next((p for p in _plate(source, prog, params)
+                  if bx in _centre_texts(source, prog, p[3], 0)
+                  and by in _centre_texts(source, prog, p[3], 1)), None)
+    if plate is None:
+        return {}
+    _, w, h, centre = plate
+    same = _centre_texts(source, prog, centre, None)
+    bore, bore_circle = next(((b, c) for c in _circles(prog) if id(c) in holes
+                              and _text(source, _kw(c, "center") or c) in same
+                              for b in [_name(_kw(c, "diameter"), params)]
+                              if b and b not in (d, w, h)), (None, None))
+    if not _only(prog, (hole, bore_circle)):
+        return {}
+    used = {w, h, d, nx, ny, px, py} | ({bore} if bore else set())
+    if len(used) != 6 + bool(bore) + (px != py):
+        return {}                       # one param in two roles: left as it is
+    v = {k: params[k].value.value for k in used}
+    if bore and (v[nx] % 2 or v[ny] % 2):
+        return {}                       # a hole on the bore's centre: nothing to keep
+    lo_d, lo_b = v[d] / 4, (v[bore] / 4 if bore else 0.0)
+    wall, two = _fmt(WALL), _fmt(2 * WALL)
+    if bore:                # each bound EPS inside the next one's: see EPS
+        least = lo_b + 2 * lo_d + 4 * WALL + 3 * EPS
+        d_max = f"(min({w}, {h}) - {_fmt(lo_b + 4 * WALL + 2 * EPS)} mm) / 2"
+        pitch_min = f"{bore} + {d} + {two} mm"
+    else:
+        least = 2 * lo_d + 3 * WALL + 2 * EPS
+        d_max = f"(min({w}, {h}) - {_fmt(3 * WALL + EPS)} mm) / 2"
+        pitch_min = f"{d} + {wall} mm"
+    out = {w: f", min = {_fmt(least)} mm, max = {_fmt(2 * v[w])} mm",
+           h: f", min = {_fmt(least)} mm, max = {_fmt(2 * v[h])} mm",
+           d: f", min = {_fmt(lo_d)} mm, max = {d_max}"}
+    if bore:
+        out[bore] = f", min = {_fmt(lo_b)} mm, max = min({w}, {h}) - 2 * {d} - " \
+                    f"{_fmt(4 * WALL + EPS)} mm"
+    for n, side in ((nx, w), (ny, h)):     # as many as fit at the smallest pitch (and EPS)
+        cap = max(COUNT_CAP, 2 * int(v[n]))
+        fit = f"({side} - {d} - {two} mm) / ({pitch_min} + {_fmt(EPS)} mm)"
+        out[n] = (f", min = 2, max = min({cap}, 2 * floor(({fit} + 1) / 2)), step = 2"
+                  if bore else f", min = 1, max = min({cap}, floor({fit}) + 1)")
+    spans = [f"({side} - {d} - {two} mm) / max({n} - 1, 1)"
+             for n, side, p in ((nx, w, px), (ny, h, py)) if p == px]
+    out[px] = f", min = {pitch_min}, max = " + (spans[0] if len(spans) == 1 else
+                                                  f"min({', '.join(spans)})")
+    if py != px:
+        out[py] = f", min = {pitch_min}, max = ({h} - {d} - {two} mm) / max({ny} - 1, 1)"
+    return out
+
+
+def corner_ranges(source: str, prog, params) -> dict[str, str]:
+    """The ranges of a plate with a hole at each corner, ``inset`` in from the edges; {}
+    without."""
+    plates = {p[0]: p for p in _plate(source, prog, params)}
+    structs = {s.name: s for s in A.walk(prog) if isinstance(s, A.StructDecl)
+               and s.kind == "hole"}
+    for call in A.walk(prog):
+        if not (isinstance(call, A.Call) and isinstance(call.func, A.Name)
+                and call.func.id == "CornerPattern" and len(call.args) == 2
+                and all(isinstance(a, A.Name) for a in call.args)):
+            continue
+        hole, plate = structs.get(call.args[0].id), plates.get(call.args[1].id)
+        inset = _name(_kw(call, "inset"), params)
+        circles = _circles(hole) if hole is not None else []
+        d = _name(_kw(circles[0], "diameter"), params) if len(circles) == 1 else None
+        if plate is None or not inset or not d or len({d, inset, plate[1], plate[2]}) != 4 \
+                or not _only(prog, circles):
+            continue
+        _, w, h, _ = plate
+        v = {k: params[k].value.value for k in (w, h, d, inset)}
+        lo_d = v[d] / 4
+        least = _fmt(2 * lo_d + 3 * WALL + 2 * EPS)
+        return {w: f", min = {least} mm, max = {_fmt(2 * v[w])} mm",
+                h: f", min = {least} mm, max = {_fmt(2 * v[h])} mm",
+                d: f", min = {_fmt(lo_d)} mm, "
+                   f"max = (min({w}, {h}) - {_fmt(3 * WALL + EPS)} mm) / 2",
+                inset: f", min = {d} / 2 + {_fmt(WALL)} mm, "
+                       f"max = (min({w}, {h}) - {d} - {_fmt(WALL)} mm) / 2"}
+    return {}
