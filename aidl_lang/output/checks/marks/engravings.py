@@ -647,13 +647,16 @@ def _check_zero_lines(d: Drawing, sink: DiagnosticSink) -> None:
     end at one place, within 1e-9 mm: ``Line((x, y), (x, y))``): it engraves no line, only a
     plunge at a point, and nothing holds its two points (each a free starting guess).  One
     warning per statement, with the number of its copies (a loop's)."""
+    lines = [(g, item) for style, item, g in d.strokes
+             if style == "drawing" and g is not None and item[0] == "line" and g.span is not None]
+    if not lines:
+        return
+    # every line's length in one array operation (a text's strokes are lines too: hundreds)
+    ends = np.array([(item[1], item[2]) for _, item in lines], dtype=float)     # k x 2 x 2
     by_span: dict = {}
-    for style, item, g in d.strokes:
-        if style != "drawing" or g is None or item[0] != "line" or g.span is None:
-            continue
-        p, q = np.asarray(item[1], dtype=float), np.asarray(item[2], dtype=float)
-        if float(np.hypot(*(q - p))) <= 1e-9:
-            by_span.setdefault(g.span, []).append((g, p))
+    for k in np.flatnonzero(np.hypot(*(ends[:, 1] - ends[:, 0]).T) <= 1e-9).tolist():
+        g = lines[k][0]
+        by_span.setdefault(g.span, []).append((g, ends[k, 0]))
     for span, hits in by_span.items():
         g, p = hits[0]
         many = f" ({len(hits)} copies)" if len(hits) > 1 else ""
