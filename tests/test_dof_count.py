@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from aidl_lang.base.limits import now as budget_clock      # the budget's clock: CPU seconds
 
+import functools
 import pathlib
 import time
 
@@ -33,6 +34,13 @@ def _solved(src: str, name: str):
     c = compile_source(src, name)
     assert c.ok and c.solve is not None and c.solve.converged
     return c.solve.solver
+
+
+@functools.cache
+def _solved_once(src: str, name: str):
+    """:func:`_solved`, once for each program of :func:`_sources` in this process: three
+    tests read every example's solver (and none changes it), 3 compiles of each were 1."""
+    return _solved(src, name)
 
 
 def _unpinned(solver):
@@ -133,7 +141,7 @@ def _sources():
 
 @pytest.mark.parametrize("name,src", _sources(), ids=lambda v: pathlib.Path(v).stem if len(v) < 200 else "")
 def test_count_equals_per_structure_tapes(name, src):
-    solver = _solved(src, name)
+    solver = _solved_once(src, name)
     got = [(d.structure.path, d.unknowns, d.rank) for d in freedom.degrees_of_freedom(solver, floating=False)]
     # the reference keeps pinned geometry (a gear's teeth, system.pinned) as unknowns held
     # by their rows, as every solve did before issue 38: the counts are the same
@@ -283,7 +291,7 @@ def test_floating_entities_equal_a_full_svd_on_every_program():
     structure's whole Jacobian, on every example and test program (structures of up to 600
     columns: the gear pair's 3 000-column SVDs take half a minute each)."""
     for name, src in _sources():
-        solver = _solved(src, name)
+        solver = _solved_once(src, name)
         plain = _unpinned(solver)       # the reference: pinned geometry as unknowns again
         for d in freedom.degrees_of_freedom(solver, floating=True):
             params, rows, cols = _system(plain, d.structure)
@@ -669,7 +677,7 @@ def test_the_sparse_null_space_counts_what_the_svd_counts(name, src):
     finds the moving columns by projecting random vectors on the null space (one sparse LU):
     the same rank and the same floating columns as the thin SVD, on every structure of every
     example, test program, generated hierarchy and a few sketches made to peel or not."""
-    solver = _solved(src, name)
+    solver = _solved_once(src, name)
     seen = 0
     for s in solver.model.structures:
         _params, rows, cols = _system(solver, s)

@@ -3,8 +3,9 @@
 AllowOverlap takes a loop's list and any number of refillers (W0501 names them all at once),
 silences W0511 for two parts of an assembly; E0105 redirects an argument of a sibling
 constructor (`Rectangle(..., corner_radius=3)`: RoundedRectangle) and placement keywords on
-a template of the file (`cx`, `cy`) to a constraint; the prompt says so.  The law at the end
-applies every fix and every "write `STMT` in `PATH`" hint to the program it came from."""
+a template of the file (`cx`, `cy`) to a constraint; the prompt says so.  The law that applies
+every fix and every "write `STMT` in `PATH`" hint to the program it came from is in
+tests/test_hints_safe.py (it compiles the same programs)."""
 import re
 
 import pytest
@@ -187,56 +188,6 @@ def test_the_prompt_says_what_AllowOverlap_templates_and_loop_names_do():
     assert "the current copy inside, the list after" in text    # its length: test_llm.py
 
 
-# ------------------------------------------------------------------ the law of hints
-STMT = re.compile(r"write `([A-Za-z_]\w*\([^`]*\))` in `([\w.\[\]]+)`")
-
-
-def _apply(src, d, model):
-    """The program with diagnostic ``d``'s proposed code applied, or None when it proposes
-    none: its fix replaces its span; a "write `STMT` in `PATH`" hint inserts the statement at
-    the end of that structure's block."""
-    if d.fix is not None:
-        sp = d.fix.span
-        return src[:sp.start] + d.fix.replacement + src[sp.end:]
-    m = STMT.search(d.hint or "")
-    if m is None:
-        return None
-    stmt, path = m.groups()
-    s = next(x for x in model.structures if x.path == path)
-    end = s.span.end
-    assert src[end - 1] == "}", (path, src[s.span.start:end])
-    return src[:end - 1] + f"    {stmt}\n" + src[end - 1:]
-
-
-def _programs():
-    out = [(name, src) for name, src in FIXTURES.items()]
-    for p in EXAMPLES + sorted((ROOT / "tests" / "programs").glob("*.aidl")) \
-            + sorted((ROOT / "data" / "model_runs").glob("*/*/*.aidl")):
-        out.append((p.name, p.read_text()))
-    return out
-
-
-@pytest.mark.parametrize("name,src", _programs(), ids=[n for n, _ in _programs()])
-def test_every_proposed_code_compiles_and_removes_its_diagnostic(compile_text, name, src):
-    c = compile_text(src, name if name.endswith(".aidl") else name + ".aidl")
-    model = getattr(c, "model", None)
-    tried = 0
-    for d in list(c.sink.items):
-        if d.code == "E0101":
-            continue            # a misspelt name's fix is the nearest name: not always meant
-        new = _apply(src, d, model)
-        if new is None:
-            continue
-        tried += 1
-        after = compile_text(new, "fixed_" + (name if name.endswith(".aidl") else name + ".aidl"))
-        before_errors = {x.code for x in c.sink.items if x.severity == "error"}
-        errs = [(x.code, x.message) for x in after.sink.items if x.severity == "error"
-                and x.code not in before_errors]
-        assert not errs, (d.code, d.message, errs)
-        same = [x for x in after.sink.items if x.code == d.code
-                and x.message.split(":")[0] == d.message.split(":")[0]]
-        assert len(same) < len([x for x in c.sink.items if x.code == d.code
-                                and x.message.split(":")[0] == d.message.split(":")[0]]), \
-            (d.code, d.message, [x.message for x in same])
-    if name in FIXTURES and name not in ("wheel", "moon"):   # drawn in the opening: silent
-        assert tried, "each issue fixture proposes code"
+# the law of hints (every fix and every "write `STMT` in `PATH`" hint of FIXTURES, the examples,
+# tests/programs and the model runs, applied and compiled): tests/test_hints_safe.py, which
+# shares its compiles with that module's laws
