@@ -247,7 +247,7 @@ def sweep(source: str, path: str = "<source>", budget: float | Budget | None = N
           points: int = LHS_POINTS, seconds: float | None = None, seed: int = SEED,
           tolerance: float = TOLERANCE, work: float | None = None,
           unranged: bool = True, values: dict | None = None,
-          spans: dict | None = None, only=None) -> SweepReport:
+          spans: dict | None = None, only=None, pairs: bool | str = True) -> SweepReport:
     """Check ``source`` (named ``path``: diagnostics and imports) across its params'
     ranges (see the module's docstring).  ``budget``: each compile's budget, a factor or a
     :class:`~aidl_lang.base.limits.Budget` as :func:`aidl_lang.compile`, which also scales the
@@ -261,7 +261,10 @@ def sweep(source: str, path: str = "<source>", budget: float | Budget | None = N
     declares no range instead of its default span (the sliders' own); ``only``: the names
     of the params to sweep (None: every numeric param); ``points``: the Latin hypercube's
     size (0: only the ends and middles); ``tolerance``: the bisection's stopping width, a
-    fraction of each range.  Never raises for a mistake in the program (the report's
+    fraction of each range; ``pairs``: each count at either end with every other param at
+    either end (True), or only with those its range reads or whose ranges read it
+    (``"related"``, :func:`~aidl_lang.params.sweep_plan.plan`: the suite's cheaper plan).
+    Never raises for a mistake in the program (the report's
     ``errors``); :class:`ValueError` for ``points < 0`` or a tolerance outside (0, 0.5]."""
     from ..pipeline import run_deep
     if points < 0 or not 0 < tolerance <= 0.5:
@@ -272,7 +275,8 @@ def sweep(source: str, path: str = "<source>", budget: float | Budget | None = N
     secs = b.seconds if seconds is None else float(seconds)
     with _collector_spaced():
         rep = run_deep(lambda: _Sweep(source, path, b, points, seed, tolerance, w, unranged,
-                                      dict(values or {}), dict(spans or {}), only).run(secs))
+                                      dict(values or {}), dict(spans or {}), only,
+                                      pairs=pairs).run(secs))
     if rep.ok and not rep.swept and not rep.fixed and unranged and only is None:
         # no numeric param: the numbers that size the parts, lifted into params of a copy
         from .sweep_literals import lift
@@ -281,7 +285,7 @@ def sweep(source: str, path: str = "<source>", budget: float | Budget | None = N
             with _collector_spaced():
                 again = run_deep(lambda: _Sweep(lifted.source, path, b, points, seed,
                                                 tolerance, w, True, {}, {}, None,
-                                                lifted.literals).run(secs))
+                                                lifted.literals, pairs).run(secs))
             if again.ok and again.swept:
                 again.lifted = {n: x for n, x in lifted.literals.items() if n in again.swept}
                 again.seconds += rep.seconds
@@ -319,8 +323,10 @@ _GC_SAVED: list = []         # the thresholds before the first sweep, then one N
 
 class _Sweep:
     def __init__(self, source, path, budget, points, seed, tolerance, work_units,
-                 unranged=True, values=None, spans=None, only=None, lifted=None):
+                 unranged=True, values=None, spans=None, only=None, lifted=None,
+                 pairs=True):
         self.defaults, self.values, self.spans = unranged, values or {}, spans or {}
+        self.pairs = pairs
         self.lifted = lifted or {}
         self.only = None if only is None else set(only)
         self.source, self.path, self.budget = source, str(path), budget
@@ -463,7 +469,7 @@ class _Sweep:
     def _sweep(self) -> None:
         from .sweep_plan import plan
         rep = self.report
-        points = plan(self.params, self.n_lhs, self.seed)
+        points = plan(self.params, self.n_lhs, self.seed, self.pairs)
         failing = []
         for k, vals in enumerate(points):
             got = self._judge(vals)
