@@ -29,8 +29,9 @@ from aidl_lang.params.sweep import sweep
 # author declared; every count x every other param's ends: benchmarks/checks/sweep_gallery.py,
 # 990 -> 741 points over the gallery); tool_holder is judged whole (51 points); planetary
 # is not (its own cost: 17,000 unknowns of patterned teeth a point, 20,000-60,000 work units;
-# 34 points need about 1,000,000 of the 700,000; its full plan judged in the benchmark found
-# 12-tooth planets with 4 or 5 planets touching the ring, W0517: the form's planet min is 13)
+# 34 points need about 1,000,000 of the 700,000; its full plan, judged without a budget, finds
+# small planets touching the ring, W0517: planets=5, planet=12, sun=13 share 0.008 mm^3,
+# planet=13, sun=9 0.0015 mm^3: left to the gears' owner)
 LEFT: dict = {
     "generator/planetary": "34 planned points need about 1,000,000 work units of 700,000 "
                            "(17,000 unknowns of patterned teeth a point)",

@@ -33,16 +33,19 @@ def main(argv=None) -> int:
     ap.add_argument("--points", type=int, default=LHS_POINTS, help="Latin hypercube size")
     ap.add_argument("--seed", type=int, default=SEED)
     ap.add_argument("--budget", type=float, default=None, help="budget factor per sweep")
+    ap.add_argument("--related", action="store_true",
+                    help="the suite's plan: a count at its ends only with the params related "
+                         "to it (sweep(pairs='related')); default every pair")
     a = ap.parse_args(argv)
     todo = [e for e in gallery.entries() if ranged(e) and (not a.ids or e.id in a.ids)]
     total, found = 0.0, 0
     with tempfile.TemporaryDirectory() as d:
         for e in todo:
             rep = sweep(e.source, str(Path(d) / "main.aidl"), budget=a.budget,
-                        points=a.points, seed=a.seed)
+                        points=a.points, seed=a.seed, pairs="related" if a.related else True)
             total += rep.seconds
             found += len(rep.findings)
-            print(f"{e.id}: {rep.points} points, {rep.seconds:.1f} s, "
+            print(f"{e.id}: {rep.points} points, {rep.work:,} work units, {rep.seconds:.1f} s, "
                   f"{len(rep.findings)} finding(s)" + (f", {rep.skipped} skipped"
                                                       if rep.skipped else ""), flush=True)
             for f in rep.findings:
