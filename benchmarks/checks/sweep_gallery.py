@@ -11,6 +11,12 @@ on 6.5 mm sheet colliding in finger_box, lid_box, drawer; screw=7 in mounting_pl
 wall_shelf; divider_tray's assert over locals; sliding_lid_box's pull at 10 mm sheet); after,
 0 findings in 78 s.  The suite's 3 combinations (seed 0) find two more, left in
 tests/test_sweep_gallery.py's LEFT (flex_box's web, spur_gear's pointed teeth).
+
+h17-sweep (40 entries, 8 points, every pair, load 18-20 on 2 cores): 137 s CPU, each entry within
+the 15 s guard (tool_holder 15.0 s: the guard cut it at 88 of 100 points, 510,289 units, its
+CPU a unit ~29 us, above the calibration); planetary 27 points and 32 not judged (730,534
+units), ring_gear 2 not judged; 19 findings, all on params without a declared range but
+planetary's (planet=13, sun=9: W0517).  ``--related`` runs the suite's plan.
 """
 from __future__ import annotations
 
