@@ -188,6 +188,13 @@ sliders, and checked by `--set`):
 The value, and any `--set width=...`, must lie between `min` and `max` (both optional);
 `min`, `max` and `step` have the param's unit (a bare number means the file's unit), `min` is
 not larger than `max`, and `step` is positive.  Choose a value inside the range or widen it.
+
+A `min` larger than its `max` written as numbers is a slip: the hint says to swap them when
+the swapped range holds the value.  Bounds that follow other params (`min = max(a, 10 mm),
+max = min(c, 70 mm)`) are never swapped (that changes what they mean): the message says what
+each bound came to at the other params' values, and the hint which values of which param
+empty the range ("`a` above 60 mm empties it with `c` = 60 mm"), found along that param's
+declared range.
 """),
     "E0125": ("a `cut` where it cuts nothing", """
 A `cut` structure holds through-cuts: the laser cuts along each of its curves, open or closed,

@@ -213,8 +213,8 @@ class Statements:
         lo, hi, step = out["min"], out["max"], out["step"]
         opt = {o.name: o for o in st.options}
         if lo is not None and hi is not None and lo > hi:
-            raise EvalError("E0124", f"param `{st.name}`: min is larger than max", opt["min"].span,
-                            hint="swap them")
+            from .empty_range import empty_range     # "swap them" only where it is safe
+            raise empty_range(self, st, opt, lo, hi, val, _fmt_q)
         if step is not None and step <= 0:
             raise EvalError("E0124", f"param `{st.name}`: step must be positive", opt["step"].span)
         if into is not None:

@@ -197,13 +197,29 @@ def count_values(p: Param) -> list[float]:
     return [p.at(p.lo + k * step) for k in range(n)] if n <= SMALL_COUNT else []
 
 
-def plan(params: list[Param], n_lhs: int, seed: int) -> list[dict]:
+def related(p: Param, q: Param) -> bool:
+    """Whether the range of ``p`` reads ``q`` or the range of ``q`` reads ``p`` (``min=``,
+    ``max=``, ``step=`` written over the other param: a dependency the author declared)."""
+    return q.name in _reads(p) or p.name in _reads(q)
+
+
+def _reads(p: Param) -> set:
+    from .. import ast as A
+    if p.decl is None:
+        return set()
+    return {n.id for o in p.decl.options for n in A.walk(o.value) if isinstance(n, A.Name)}
+
+
+def plan(params: list[Param], n_lhs: int, seed: int, pairs: bool | str = True) -> list[dict]:
     """The points fixed before the sweep starts: each param at its low end, middle and high
     end (the others at their written values); then each count at each value of a short range
     (:func:`count_values`), and at either end with each other param at either end, the rest
     at their written values (a combination a random sample misses: a gear's fewest teeth with
     its largest bore); then ``n_lhs`` combinations of a Latin hypercube seeded ``seed`` (two
-    or more params), each on the params' steps; the written values and repeats left out."""
+    or more params), each on the params' steps; the written values and repeats left out.
+    ``pairs="related"``: a count at either end only with the params its range reads or whose
+    ranges read it (:func:`related`: the dependencies the author declared, checked at their
+    corners; the suite's cheaper plan, the full one in benchmarks/checks/sweep_gallery.py)."""
     written = {p.name: p.value for p in params}
     out, seen = [], {tuple(sorted(written.items()))}
 
@@ -221,7 +237,7 @@ def plan(params: list[Param], n_lhs: int, seed: int) -> list[dict]:
                 add(dict(written, **{p.name: x}))
             for x in (p.lo, p.hi):
                 for q in params:
-                    if q is not p:
+                    if q is not p and (pairs is True or related(p, q)):
                         for end in (q.lo, q.hi):
                             add(dict(written, **{p.name: x, q.name: q.at(end)}))
     if n_lhs and len(params) > 1:
