@@ -7,8 +7,10 @@ should be hatched (inside one of
 the slider's ``bands``) exactly then.  Values within the bisection's tolerance of a band's
 edge are not counted (the edge is known to that width), nor values that leave a range
 following another param (E0124: the studio's form moves the dependent param into its range,
-as the sweep does; a plain ``--set`` does not).  Prints each entry's agreement; exit 1 on a mismatch (issue 92: the rounded
-tab hatched more than half of three sliders from one combination, each value clean alone).
+as the sweep does; a plain ``--set`` does not), nor values in a part the budget left not
+judged (the row's ``unjudged``: neither hatched nor clean; counted apart).  Prints each
+entry's agreement; exit 1 on a mismatch (issue 92: the rounded tab hatched more than half of
+three sliders from one combination, each value clean alone).
 
     PYTHONPATH=$PWD python benchmarks/serve/studio_hatching.py [--n 20] [--seed 0] [ID ...]
 """
@@ -47,17 +49,21 @@ def check_entry(entry, n: int, seed: int, folder: str) -> tuple[int, int, list[s
     base = _said(gallery.compile_entry(entry, {}))
     rnd = random.Random(seed)
     checked = agree = 0
-    bad = []
+    bad, unjudged = [], []
     steps = {p["name"]: p.get("step") or 0 for p in entry.params}
     for name, row in got["params"].items():
         step = steps.get(name) or 0
         tol = TOLERANCE * (row["max"] - row["min"])
         edges = [x for b in row["bands"] for x in (b["from"], b["to"]) if x is not None]
+        gaps = [(g["from"], g["to"]) for g in row.get("unjudged", [])]
         for _ in range(n):
             x = rnd.uniform(row["min"], row["max"])
             if step > 0:                       # on the slider's steps, as a visitor sets it
                 x = min(row["min"] + round((x - row["min"]) / step) * step, row["max"])
             if any(abs(x - e) <= tol for e in edges):
+                continue
+            if any(a < x < b for a, b in gaps):
+                unjudged.append(x)
                 continue
             text = f"{x:.6g} {row['unit']}".strip()
             r = gallery.compile_entry(entry, {name: text})
@@ -75,6 +81,8 @@ def check_entry(entry, n: int, seed: int, folder: str) -> tuple[int, int, list[s
                            f"{'hatched' if hatched else 'not hatched'}"
                            + (f" {sorted(c for c, _ in new)}" if new else "")
                            + f" (bands {[(b['from'], b['to']) for b in row['bands']]})")
+    if unjudged:
+        bad.insert(0, f"({len(unjudged)} values in parts not judged, out of budget: not counted)")
     return checked, agree, bad
 
 

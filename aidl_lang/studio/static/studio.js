@@ -668,11 +668,14 @@ function markRanges() {
     const narrowed = Object.values(a.params || {}).filter((q) => (q.bands || []).length).length;
     const together = (a.combinations || []).length
       ? `; sliders that break it only together: ${a.combinations.join("; ")}` : "";
+    // what the time allowed cut: said, never hatched nor cleared (dotted grey on the track)
+    const open = Object.values(a.params || {}).filter((q) => (q.unjudged || []).length).length;
+    const cut = (a.skipped ? `; ${a.skipped} planned values not checked in the time allowed` : "")
+      + (open ? `; dotted: not checked in the time allowed` : "");
     sweepStatus(stale ? "the hatched parts are of the design before your change: checking again…"
       : !a.swept.length ? "" : (narrowed
         ? `hatched: values at which the design breaks, each slider alone (${a.points} values checked)`
-        : `every slider's range checks clean alone (${a.points} values checked)`
-          + (a.skipped ? `; ${a.skipped} not checked in the time allowed` : "")) + together);
+        : `every slider's range checks clean alone (${a.points} values checked)`) + cut + together);
   }
   for (const p of state.params) {
     const row = $("params").querySelector(`[data-name="${CSS.escape(p.name)}"]`);
@@ -693,7 +696,12 @@ function markRanges() {
       z.title = b.text;
     };
     const track = row.querySelector(".track");
-    for (const z of track.querySelectorAll(".unclean.band")) z.remove();
+    for (const z of track.querySelectorAll(".unclean.band, .unjudged")) z.remove();
+    for (const g of (q && q.unjudged) || []) {
+      const z = document.createElement("span"); z.className = "unjudged";
+      track.appendChild(z);
+      mark(z, g);
+    }
     for (const side of ["below", "above"]) {
       const b = q && q[side] && bands.find((x) => x.text === q[side].text);
       mark(row.querySelector(`.unclean.${side}`), b || null);
@@ -707,7 +715,7 @@ function markRanges() {
     const u = row.querySelector(".unit");
     const clean = bands.length ? `, clean ${fmt(q.clean[0])}–${fmt(q.clean[1])}` : "";
     u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)}${clean})`;
-    r.title = bands.map((x) => x.text).join("\n");
+    r.title = [...bands, ...((q && q.unjudged) || [])].map((x) => x.text).join("\n");
     const v = state.values[p.name] !== undefined ? state.values[p.name] : p.value;
     pastNote(row, p.name, v);
   }
@@ -721,7 +729,9 @@ function pastNote(row, name, v) {
   const unit = p.unit ? ` ${p.unit}` : "";
   const past = bandAt(q, v);
   const ends = (q && q.bands) || [];
+  const open = !past && q ? (q.unjudged || []).find((g) => typeof v === "number" && v > g.from + 1e-9 && v < g.to - 1e-9) : null;
   note.classList.toggle("past", !!past);
+  note.classList.toggle("open", !!open);
   if (past) {
     const beside = (q.below && past.text === q.below.text) || (q.above && past.text === q.above.text);
     note.textContent = beside
@@ -729,6 +739,9 @@ function pastNote(row, name, v) {
       : `${fmt(v)}${unit} is in a part of the range where the design breaks, between clean values: ${past.text}`;
     r.setAttribute("aria-valuetext", beside ? `${fmt(v)}${unit}, outside the clean range: ${past.text}`
       : `${fmt(v)}${unit}, where the design breaks: ${past.text}`);
+  } else if (open) {
+    note.textContent = `${fmt(v)}${unit} was not checked in the time allowed (${open.text})`;
+    r.setAttribute("aria-valuetext", `${fmt(v)}${unit}, not checked in the time allowed`);
   } else {
     note.textContent = ends.length
       ? `clean from ${fmt(q.clean[0])} to ${fmt(q.clean[1])}${unit}; ${ends.map((x) => x.text).join("; ")}` : "";
