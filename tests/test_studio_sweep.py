@@ -172,6 +172,12 @@ def test_a_combination_is_said_in_words_and_hatches_no_slider():
     assert got["params"]["off"]["clean"] == [0.0, 25.0]
     [c] = got["combinations"]
     assert c.startswith("`off` above ") and " with `r` above " in c, c
+    # in words: what breaks there, not a code; the page's wording as its other texts
+    said = c.split(": ", 1)[1]
+    assert ("hole `plate.h`" in said or "a wall of `plate`" in said) and "W0" not in c, c
+    from aidl_lang.studio.wording import page_answer
+    [shown] = page_answer(got)["combinations"]
+    assert shown.startswith("“off” above ") and "`" not in shown, shown
 
 
 def test_a_slider_is_hatched_where_it_alone_breaks_at_the_others_values():

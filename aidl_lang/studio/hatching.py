@@ -31,7 +31,8 @@ def sweep_ranges(folder: str, source: str, budget=None, values: dict | None = No
     ``clean``); ``skipped``: the points planned and not judged; ``points``, ``work``: what
     the request judged and spent (:func:`aidl_lang.params.sweep_scan.scan_and_sweep`).  A
     combination (two or more sliders away from their values together) hatches no slider:
-    ``combinations`` says it in words (``teeth below 11 with bore above 15.5 mm: E0405``).
+    ``combinations`` says it in words (``teeth below 11 with bore above 15.5 mm: the bore
+    ...``: the page words it as its other texts).
     ``ok`` false: the program does not compile at these values (nothing swept)."""
     from ..serve.params import declared_params
     from ..serve.wording import for_forms
@@ -44,7 +45,7 @@ def sweep_ranges(folder: str, source: str, budget=None, values: dict | None = No
     alone, rep = scan_and_sweep(source, path, budget=budget, values=values, spans=spans)
     out = {"ok": rep.ok, "swept": list(rep.swept), "points": rep.points,
            "skipped": rep.skipped, "work": rep.work, "summary": rep.text(), "params": {},
-           "combinations": [for_forms(c) for c in rep.combinations()]}
+           "combinations": _combinations(rep, for_forms)}
     if not rep.ok:
         return out
     for name in alone.swept:
@@ -52,6 +53,15 @@ def sweep_ranges(folder: str, source: str, budget=None, values: dict | None = No
         if p is not None and p.min is not None and p.max is not None:
             out["params"][name] = _row(p, alone, name, for_forms)
     return out
+
+
+def _combinations(rep, for_forms) -> list[str]:
+    """Each combination of the sweep ``rep`` in words: which sliders, past which values, and
+    what breaks there (``teeth below 11 with bore above 15.5 mm: the bore ...``), not a
+    code."""
+    combos = [f for f in rep.findings if len(f.clean) >= 2]
+    return [for_forms(f"{line.rsplit(': ', 1)[0]}: {f.problem or f.code}")
+            for line, f in zip(rep.combinations(), combos)]
 
 
 def _row(p, alone, name: str, for_forms) -> dict:

@@ -688,11 +688,14 @@ function markRanges() {
     // a mark of its own
     const span = p.max - p.min, bands = (q && q.bands) || [];
     const frac = (x, end) => (x === null ? end : Math.min(1, Math.max(0, (x - p.min) / span)));
-    const mark = (z, b) => {
+    // a band's clean values judged on either side are the slider's steps: the hatch stops
+    // half a step short of them (a count's odd values each their own mark, not the track)
+    const half = p.step > 0 ? p.step / 2 : 0;
+    const mark = (z, b, inset = half) => {
       z.hidden = !b || !(span > 0);
       if (z.hidden) return;
-      z.style.setProperty("--from", frac(b.from, 0));
-      z.style.setProperty("--to", frac(b.to, 1));
+      z.style.setProperty("--from", frac(b.from === null ? null : b.from + inset, 0));
+      z.style.setProperty("--to", frac(b.to === null ? null : b.to - inset, 1));
       z.title = b.text;
     };
     const track = row.querySelector(".track");
@@ -700,7 +703,7 @@ function markRanges() {
     for (const g of (q && q.unjudged) || []) {
       const z = document.createElement("span"); z.className = "unjudged";
       track.appendChild(z);
-      mark(z, g);
+      mark(z, g, 0);
     }
     for (const side of ["below", "above"]) {
       const b = q && q[side] && bands.find((x) => x.text === q[side].text);
@@ -713,7 +716,12 @@ function markRanges() {
       mark(z, b);
     }
     const u = row.querySelector(".unit");
-    const clean = bands.length ? `, clean ${fmt(q.clean[0])}–${fmt(q.clean[1])}` : "";
+    // a count broken at scattered values: its clean values named (`clean at 2, 4, 6, 8, 10`)
+    const counts = p.step >= 1 && !p.unit && bands.length > 1 && span / p.step <= 12
+      ? Array.from({ length: Math.round(span / p.step) + 1 }, (_, k) => p.min + k * p.step)
+        .filter((x) => !bandAt(q, x)) : null;
+    const clean = !bands.length ? "" : counts ? `, clean at ${counts.map(fmt).join(", ")}`
+      : `, clean ${fmt(q.clean[0])}–${fmt(q.clean[1])}`;
     u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)}${clean})`;
     r.title = [...bands, ...((q && q.unjudged) || [])].map((x) => x.text).join("\n");
     const v = state.values[p.name] !== undefined ? state.values[p.name] : p.value;
