@@ -318,3 +318,31 @@ def test_a_studio_sweep_is_the_one_budget_request(tmp_path):
     both = sweep_all(SLID, "p.aidl").points + scan(SLID, "p.aidl").points
     assert got["points"] < both, (got["points"], both)
     assert all(q["unjudged"] == [] for q in got["params"].values())
+
+
+def test_a_slider_dragged_into_a_band_leaves_the_others_judged_against_the_written_values():
+    """The page sweeps again with the sliders where they are: `off` dragged to 27 mm (past
+    its clean end, 26.5 mm: the wall under 0.5 mm).  Judged against that broken point, every
+    clean value of `r` was a change and hatched (clean 3-3 mm, `off` clean 27-27 mm: seen in
+    Chromium); judged against the written values, `r` alone is clean while 30 - 27 - r >=
+    0.5 mm (to 2.5 mm) as `--set` says, and `off`'s own row is the one at its written value
+    (its hatch not taken from its own value), the clean part nearest 27 mm.  With `off` at
+    40 mm (the hole off the plate) every `r` breaks: one band across the range, no clean
+    part.  About 3 s of CPU."""
+    import aidl_lang
+    from aidl_lang.studio.hatching import sweep_ranges
+    written = sweep_ranges("/nonexistent-session", SLID)["params"]["off"]
+    got = sweep_ranges("/nonexistent-session", SLID, values={"off": "27 mm"})
+    off, r = got["params"]["off"], got["params"]["r"]
+    assert off["clean"] == written["clean"] and off["bands"] == written["bands"]
+    assert off["above"]["at"] == off["clean"][1] <= 26.5
+    lo, hi = r["clean"]
+    assert lo == 1.0 and 2.5 - 0.04 - 1e-9 <= hi <= 2.5, r
+    assert [(b["from"], b["to"], b["code"]) for b in r["bands"]] == [(hi, None, "W0507")]
+    for x, thin in ((hi, False), (hi + 0.1, True)):
+        c = aidl_lang.compile(source=SLID, path="p.aidl", overrides={"off": "27 mm", "r": f"{x} mm"})
+        assert bool([d for d in c.diagnostics if d.code == "W0507"]) is thin, x
+    away = sweep_ranges("/nonexistent-session", SLID, values={"off": "40 mm"})["params"]["r"]
+    [band] = away["bands"]
+    assert away["clean"] == [] and (band["from"], band["to"]) == (None, None)
+    assert band["text"].startswith("1–5 mm: hole `plate.h` cuts nothing"), band

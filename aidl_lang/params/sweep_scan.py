@@ -152,9 +152,29 @@ def _scan_report(s, rep) -> ScanReport:
 
 class _Scan(_Sweep):
     n = SCAN
+    current: list = []
 
     def _fixes(self) -> None:
         pass
+
+    def _params(self, fctx) -> None:
+        """The swept params; with the sliders moved (``values``), what breaks the design is
+        what its written values do not say (as ``--set`` says it: W0510 "not so with the
+        defaults"), not what the sliders' own point does not: a slider dragged into a band
+        left the others judged against a broken design (each clean value of theirs hatched as
+        a change from it)."""
+        super()._params(fctx)
+        if not self.values:
+            return
+        from ..output.checks import topology
+        from .sweep import _key
+        moved, self.values = self.values, {}
+        ref = self._compile({})
+        self.values = moved
+        self.solver = self.keys = None
+        if ref.drawing is not None and not ref.sink.has_errors:
+            self.base_keys = {_key(d) for d in ref.sink.items if not d.is_error}
+            self.base_topology = topology(ref.drawing)
 
     def _grid(self, p) -> list[float]:
         """The values of ``p`` scanned, in order of judging (coarse to fine)."""
@@ -197,6 +217,8 @@ class _Scan(_Sweep):
                 if i < len(self.grids[p.name]):
                     plan.append((p, self.grids[p.name][i]))
         self.left = 0
+        # the sliders' own point, judged against the written values (clean when it is them)
+        self.current = (self._judge(written) or []) if self.values else []
         for k, (p, x) in enumerate(plan):
             if self._judge(dict(written, **{p.name: x})) is None:
                 self.left = len(plan) - k
@@ -209,7 +231,7 @@ class _Scan(_Sweep):
         """``{param: {value: problems}}``: every point judged so far that moved one param
         alone (the others at their values), the written values clean."""
         written = {p.name: p.value for p in self.params}
-        seen: dict = {p.name: {p.value: []} for p in self.params}
+        seen: dict = {p.name: {p.value: self.current} for p in self.params}
         for key, got in self.problems.items():
             vals = dict(key)
             if key in self.probes or vals.keys() != written.keys():

@@ -23,7 +23,7 @@ def sweep_ranges(folder: str, source: str, budget=None, values: dict | None = No
     "code", "text"}``: the values strictly between ``from`` and ``to`` (the clean values
     judged on either side; None: from the range's end), ``text`` as the page says it
     (``32.2-39.6 mm: a ledge ...``).  ``clean``: the clean part that holds the slider's
-    value, its ends on the slider's steps (inward); ``below``/``above``: None, or the band
+    value (else the nearest one; empty: none), its ends on the slider's steps (inward); ``below``/``above``: None, or the band
     next to it on that side (``{"at": its clean end, "from"/"to", "code", "text"}``,
     ``text`` as ``above 26.4 mm: a wall of `plate` ...``).  ``unjudged``: the parts of the
     range where the budget cut the bisection between a clean and a broken value
@@ -69,11 +69,13 @@ def _row(p, alone, name: str, for_forms) -> dict:
     value = alone.values.get(name, p.value)
     hatches = alone.broken(name)
     runs = alone.runs.get(name, [])
-    cur = next((r for r in runs if r.broken is False and r.lo - 1e-9 <= value <= r.hi + 1e-9),
-               None)
-    lo, hi = (p.min, p.max) if cur is None else (
-        p.min if cur is runs[0] else cur.lo, p.max if cur is runs[-1] else cur.hi)
-    clean = [_stop(p, lo, up=True), _stop(p, hi, up=False)]
+    # the clean part that holds the slider's value, else the one nearest it (the value in a
+    # band); none: the slider alone breaks the design everywhere (``clean`` empty)
+    cleans = [r for r in runs if r.broken is False]
+    cur = min(cleans, default=None, key=lambda r: max(r.lo - value, value - r.hi, 0.0))
+    clean = [] if cur is None and runs else [
+        _stop(p, p.min if cur is None or cur is runs[0] else cur.lo, up=True),
+        _stop(p, p.max if cur is None or cur is runs[-1] else cur.hi, up=False)]
     row = {"min": p.min, "max": p.max, "unit": p.unit, "clean": clean,
            "below": None, "above": None, "bands": [],
            "unjudged": [{"from": a, "to": b, "text": f"{_shown(a, '')}–{_shown(b, p.unit)}: "
@@ -82,7 +84,8 @@ def _row(p, alone, name: str, for_forms) -> dict:
         a = None if after is None else _stop(p, after, up=False)
         b = None if before is None else _stop(p, before, up=True)
         below = b is not None and b <= value + 1e-9
-        where = (f"below {_shown(b, p.unit)}" if a is None else
+        where = (f"{_shown(p.min, '')}–{_shown(p.max, p.unit)}" if a is None and b is None else
+                 f"below {_shown(b, p.unit)}" if a is None else
                  f"above {_shown(a, p.unit)}" if b is None else
                  f"{_shown(a, '')}–{_shown(b, p.unit)}")
         text = f"{where}: {for_forms(r.problem)}"
@@ -91,6 +94,8 @@ def _row(p, alone, name: str, for_forms) -> dict:
             text += f"; at {_shown(far[0], p.unit)}: {for_forms(far[2])}"
         band = {"from": a, "to": b, "code": r.code, "text": text}
         row["bands"].append(band)
+        if not clean:
+            continue
         if below and b == clean[0]:
             row["below"] = {"at": b, "from": a, "code": r.code, "text": text}
         elif not below and a == clean[1]:

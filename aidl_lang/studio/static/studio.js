@@ -721,7 +721,7 @@ function markRanges() {
       ? Array.from({ length: Math.round(span / p.step) + 1 }, (_, k) => p.min + k * p.step)
         .filter((x) => !bandAt(q, x)) : null;
     const clean = !bands.length ? "" : counts ? `, clean at ${counts.map(fmt).join(", ")}`
-      : `, clean ${fmt(q.clean[0])}–${fmt(q.clean[1])}`;
+      : !q.clean.length ? ", no clean value found" : `, clean ${fmt(q.clean[0])}–${fmt(q.clean[1])}`;
     u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)}${clean})`;
     r.title = [...bands, ...((q && q.unjudged) || [])].map((x) => x.text).join("\n");
     const v = state.values[p.name] !== undefined ? state.values[p.name] : p.value;
@@ -744,14 +744,15 @@ function pastNote(row, name, v) {
     const beside = (q.below && past.text === q.below.text) || (q.above && past.text === q.above.text);
     note.textContent = beside
       ? `${fmt(v)}${unit} is outside the range the sweep found clean (${fmt(q.clean[0])}–${fmt(q.clean[1])}${unit}): ${past.text}`
-      : `${fmt(v)}${unit} is in a part of the range where the design breaks, between clean values: ${past.text}`;
+      : !q.clean.length ? `${fmt(v)}${unit}: the design breaks at every value of this slider (the others where they are): ${past.text}`
+        : `${fmt(v)}${unit} is in a part of the range where the design breaks, between clean values: ${past.text}`;
     r.setAttribute("aria-valuetext", beside ? `${fmt(v)}${unit}, outside the clean range: ${past.text}`
       : `${fmt(v)}${unit}, where the design breaks: ${past.text}`);
   } else if (open) {
     note.textContent = `${fmt(v)}${unit} was not checked in the time allowed (${open.text})`;
     r.setAttribute("aria-valuetext", `${fmt(v)}${unit}, not checked in the time allowed`);
   } else {
-    note.textContent = ends.length
+    note.textContent = ends.length && q.clean.length
       ? `clean from ${fmt(q.clean[0])} to ${fmt(q.clean[1])}${unit}; ${ends.map((x) => x.text).join("; ")}` : "";
     if (typeof v === "number") r.setAttribute("aria-valuetext", `${fmt(v)}${unit}`);
   }
