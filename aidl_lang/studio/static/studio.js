@@ -671,7 +671,8 @@ function markRanges() {
     // what the time allowed cut: said, never hatched nor cleared (dotted grey on the track)
     const open = Object.values(a.params || {}).filter((q) => (q.unjudged || []).length).length;
     const cut = (a.skipped ? `; ${a.skipped} planned values not checked in the time allowed` : "")
-      + (open ? `; dotted: not checked in the time allowed` : "");
+      + (open ? (a.skipped ? " (dotted: where a slider's edge was not narrowed down)"
+        : "; dotted: not checked in the time allowed") : "");
     sweepStatus(stale ? "the hatched parts are of the design before your change: checking again…"
       : !a.swept.length ? "" : (narrowed
         ? `hatched: values at which the design breaks, each slider alone (${a.points} values checked)`
@@ -720,7 +721,7 @@ function markRanges() {
     const counts = p.step >= 1 && !p.unit && bands.length > 1 && span / p.step <= 12
       ? Array.from({ length: Math.round(span / p.step) + 1 }, (_, k) => p.min + k * p.step)
         .filter((x) => !bandAt(q, x)) : null;
-    const clean = !bands.length ? "" : counts ? `, clean at ${counts.map(fmt).join(", ")}`
+    const clean = !bands.length && !((q && q.unjudged) || []).length ? "" : counts ? `, clean at ${counts.map(fmt).join(", ")}`
       : !q.clean.length ? ", no clean value found" : `, clean ${fmt(q.clean[0])}–${fmt(q.clean[1])}`;
     u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)}${clean})`;
     r.title = [...bands, ...((q && q.unjudged) || [])].map((x) => x.text).join("\n");
@@ -736,7 +737,7 @@ function pastNote(row, name, v) {
   const p = state.params.find((x) => x.name === name) || {};
   const unit = p.unit ? ` ${p.unit}` : "";
   const past = bandAt(q, v);
-  const ends = (q && q.bands) || [];
+  const ends = [...((q && q.bands) || []), ...((q && q.unjudged) || [])];
   const open = !past && q ? (q.unjudged || []).find((g) => typeof v === "number" && v > g.from + 1e-9 && v < g.to - 1e-9) : null;
   note.classList.toggle("past", !!past);
   note.classList.toggle("open", !!open);
