@@ -164,7 +164,7 @@ class _Scan(_Sweep):
         left the others judged against a broken design (each clean value of theirs hatched as
         a change from it)."""
         super()._params(fctx)
-        if not self.values:
+        if not self.values or not self.params:
             return
         from ..output.checks import topology
         from .sweep import _key
