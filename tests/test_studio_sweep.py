@@ -10,7 +10,7 @@ import asyncio
 import time
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 pytest.importorskip("starlette")
@@ -87,13 +87,23 @@ def test_a_clean_program_and_a_broken_one(client):
 
 
 def test_the_same_program_is_swept_once(client):
-    a, b = session(client), session(client)
+    """Once per program and uploads: another session with the same text and no uploads is
+    answered from the cache; one whose upload differs is swept again (the text may read it),
+    and a third with the same upload's bytes is answered from that sweep (issue 92)."""
+    a, b, c, d = (session(client) for _ in range(4))
     first = sweep(client, a, SLID)
     assert "cached" not in first
     again = sweep(client, b, SLID)              # another session, the same program
     assert again.pop("cached") is True and again == first
     stats = client.app.state.studio.served
     assert stats["sweeps"] == 1 and stats["sweeps_cached"] == 1
+    svg = b'<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"></svg>'
+    for sid in (c, d):
+        r = client.post(f"/api/upload?sid={sid}&name=logo.svg", content=svg)
+        assert r.status_code == 200, r.text
+    assert "cached" not in sweep(client, c, SLID)
+    assert sweep(client, d, SLID).get("cached") is True
+    assert stats["sweeps"] == 2 and stats["sweeps_cached"] == 2
 
 
 def test_a_sessions_sweep_in_flight_is_stopped_by_its_next_program(client):
@@ -162,6 +172,12 @@ def test_a_combination_is_said_in_words_and_hatches_no_slider():
     assert got["params"]["off"]["clean"] == [0.0, 25.0]
     [c] = got["combinations"]
     assert c.startswith("`off` above ") and " with `r` above " in c, c
+    # in words: what breaks there, not a code; the page's wording as its other texts
+    said = c.split(": ", 1)[1]
+    assert ("hole `plate.h`" in said or "a wall of `plate`" in said) and "W0" not in c, c
+    from aidl_lang.studio.wording import page_answer
+    [shown] = page_answer(got)["combinations"]
+    assert shown.startswith("“off” above ") and "`" not in shown, shown
 
 
 def test_a_slider_is_hatched_where_it_alone_breaks_at_the_others_values():
@@ -249,3 +265,84 @@ def test_a_gallery_sample_is_hatched_where_set_breaks_it(tmp_path):
     assert [(a, b) for a, b, _ in rep.broken("bolts")] == [
         (None, 2.0), (2.0, 4.0), (4.0, 6.0), (6.0, 8.0), (8.0, 10.0)]
     assert {r.code for r in rep.runs["bolts"] if r.broken} == {"W0508"}
+
+
+@settings(max_examples=3, deadline=None, derandomize=True)
+@given(work=st.integers(30_000, 140_000))
+@example(work=60_000)
+def test_law_one_sweep_request_spends_one_budget_and_says_what_it_cut(work):
+    """Issue 92: a sweep request ran the sweep and then the scan, each with a full budget (up
+    to twice the work).  One request now spends one budget (the scan and the sweep share the
+    points judged and the work; past it by at most one point, about 2,100 units here), and
+    where the budget cut a change between clean and broken the row says it not judged:
+    neither hatched nor clean (`off` breaks above 26.5 mm: a wall under 0.5 mm).  Alone, the
+    scan and the sweep each spend up to the budget; the full request judges fewer points
+    than the two did.  About 1.5 s of CPU."""
+    from aidl_lang.params.sweep import sweep as sweep_all
+    from aidl_lang.params.sweep_scan import scan, scan_and_sweep
+    alone, rep = scan_and_sweep(SLID, "p.aidl", work=work)
+    assert rep.work == alone.work and rep.work <= work + 2_500, (rep.work, work)
+    assert sweep_all(SLID, "p.aidl", work=work).work + scan(SLID, "p.aidl", work=work).work \
+        > work + 2_500
+    for name in alone.swept:
+        runs = alone.runs[name]
+        for a, b in alone.unjudged(name):
+            # a part not judged lies between a clean and a broken value judged, and no hatch
+            # or clean run reaches into it
+            assert any(r.hi == a for r in runs if r.broken is not None)
+            assert not any(r.broken is not None and a < x < b for r in runs
+                           for x in (r.lo, r.hi))
+            for after, before, _ in alone.broken(name):
+                assert (before is not None and before <= a) or (after is not None and after >= b)
+    runs = alone.runs["off"]
+    assert runs[0].broken is False and runs[0].lo == 0.0 and runs[0].hi <= 26.5
+    assert runs[-1].broken and runs[-1].hi == 40.0
+    # where it starts to break (26.5 mm) is inside the part not judged, or bisected
+    for a, b in alone.unjudged("off"):
+        assert a <= 26.5 <= b
+    if work == 60_000:
+        assert alone.unjudged("off") == [(25.0, 30.0)] and rep.skipped > 0
+
+
+def test_a_studio_sweep_is_the_one_budget_request(tmp_path):
+    """The studio's answer is :func:`scan_and_sweep`'s (its work, points and the rows'
+    runs): at the full budget the slid hole's request judges fewer points than the scan and
+    the sweep did one after the other (they share the ends, middles and the one-param
+    bisection), none skipped, nothing not judged."""
+    from aidl_lang.params.sweep import sweep as sweep_all
+    from aidl_lang.params.sweep_scan import scan, scan_and_sweep
+    from aidl_lang.studio.hatching import sweep_ranges
+    got = sweep_ranges(str(tmp_path), SLID)
+    alone, rep = scan_and_sweep(SLID, str(tmp_path / "main.aidl"))
+    assert (got["work"], got["points"], got["skipped"]) == (rep.work, rep.points, 0)
+    both = sweep_all(SLID, "p.aidl").points + scan(SLID, "p.aidl").points
+    assert got["points"] < both, (got["points"], both)
+    assert all(q["unjudged"] == [] for q in got["params"].values())
+
+
+def test_a_slider_dragged_into_a_band_leaves_the_others_judged_against_the_written_values():
+    """The page sweeps again with the sliders where they are: `off` dragged to 27 mm (past
+    its clean end, 26.5 mm: the wall under 0.5 mm).  Judged against that broken point, every
+    clean value of `r` was a change and hatched (clean 3-3 mm, `off` clean 27-27 mm: seen in
+    Chromium); judged against the written values, `r` alone is clean while 30 - 27 - r >=
+    0.5 mm (to 2.5 mm) as `--set` says, and `off`'s own row is the one at its written value
+    (its hatch not taken from its own value), the clean part nearest 27 mm.  With `off` at
+    40 mm (the hole off the plate) every `r` breaks: one band across the range, no clean
+    part.  About 3 s of CPU."""
+    import aidl_lang
+    from aidl_lang.studio.hatching import sweep_ranges
+    written = sweep_ranges("/nonexistent-session", SLID)["params"]["off"]
+    got = sweep_ranges("/nonexistent-session", SLID, values={"off": "27 mm"})
+    off, r = got["params"]["off"], got["params"]["r"]
+    assert off["clean"] == written["clean"] and off["bands"] == written["bands"]
+    assert off["above"]["at"] == off["clean"][1] <= 26.5
+    lo, hi = r["clean"]
+    assert lo == 1.0 and 2.5 - 0.04 - 1e-9 <= hi <= 2.5, r
+    assert [(b["from"], b["to"], b["code"]) for b in r["bands"]] == [(hi, None, "W0507")]
+    for x, thin in ((hi, False), (hi + 0.1, True)):
+        c = aidl_lang.compile(source=SLID, path="p.aidl", overrides={"off": "27 mm", "r": f"{x} mm"})
+        assert bool([d for d in c.diagnostics if d.code == "W0507"]) is thin, x
+    away = sweep_ranges("/nonexistent-session", SLID, values={"off": "40 mm"})["params"]["r"]
+    [band] = away["bands"]
+    assert away["clean"] == [] and (band["from"], band["to"]) == (None, None)
+    assert band["text"].startswith("1–5 mm: hole `plate.h` cuts nothing"), band

@@ -2,7 +2,8 @@
 at their values, scanned across its range (:func:`aidl_lang.params.sweep_scan.scan`: a band between
 clean values and scattered counts included, each change bisected), and the combinations that
 break the design only together from the program's sweep (:func:`aidl_lang.params.sweep.sweep`), said
-in words and hatching no slider.  Run by the studio's sweep workers
+in words and hatching no slider; the two within one budget
+(:func:`aidl_lang.params.sweep_scan.scan_and_sweep`), what it cut said as not judged.  Run by the studio's sweep workers
 (:mod:`aidl_lang.studio.compiler`).  Not part of the stable API.
 """
 from __future__ import annotations
@@ -13,39 +14,40 @@ import os
 
 def sweep_ranges(folder: str, source: str, budget=None, values: dict | None = None) -> dict:
     """``source`` (named ``folder/main.aidl``: its imports from the session's uploads) as its
-    sliders mark it, within the sweep's budget (a param with no declared range across its
-    slider's span), each slider alone at the others' ``values`` (``--set`` texts; None: the
-    written values): ``{"ok", "swept", "points", "skipped", "summary", "combinations",
-    "params": {name: {"min", "max", "unit", "clean": [lo, hi], "below", "above",
-    "bands"}}}`` (display units: mm, deg, plain).  ``bands``: every part of the range where
-    that slider alone breaks the design, ``{"from", "to", "code", "text"}``: the values
-    strictly between ``from`` and ``to`` (the clean values judged on either side; None: from
-    the range's end), ``text`` as the page says it (``32.2-39.6 mm: a ledge ...``).
-    ``clean``: the clean part that holds the slider's value, its ends on the slider's steps
-    (inward); ``below``/``above``: None, or the band next to it on that side (``{"at": its
-    clean end, "from"/"to", "code", "text"}``, ``text`` as ``above 26.4 mm: a wall of
-    `plate` ...``).  A combination (two or more sliders away from their values together)
-    hatches no slider: ``combinations`` says it in words (``teeth below 11 with bore above
-    15.5 mm: E0405``).  ``ok`` false: the program does not compile at these values (nothing
-    swept)."""
+    sliders mark it, within one sweep budget for the whole request (a param with no declared
+    range across its slider's span), each slider alone at the others' ``values`` (``--set``
+    texts; None: the written values): ``{"ok", "swept", "points", "skipped", "work",
+    "summary", "combinations", "params": {name: {"min", "max", "unit", "clean": [lo, hi],
+    "below", "above", "bands", "unjudged"}}}`` (display units: mm, deg, plain).  ``bands``:
+    every part of the range where that slider alone breaks the design, ``{"from", "to",
+    "code", "text"}``: the values strictly between ``from`` and ``to`` (the clean values
+    judged on either side; None: from the range's end), ``text`` as the page says it
+    (``32.2-39.6 mm: a ledge ...``).  ``clean``: the clean part that holds the slider's
+    value (else the nearest one; empty: none), its ends on the slider's steps (inward); ``below``/``above``: None, or the band
+    next to it on that side (``{"at": its clean end, "from"/"to", "code", "text"}``,
+    ``text`` as ``above 26.4 mm: a wall of `plate` ...``).  ``unjudged``: the parts of the
+    range where the budget cut the bisection between a clean and a broken value
+    (``{"from", "to", "text"}``, the values strictly between: neither hatched nor in
+    ``clean``); ``skipped``: the points planned and not judged; ``points``, ``work``: what
+    the request judged and spent (:func:`aidl_lang.params.sweep_scan.scan_and_sweep`).  A
+    combination (two or more sliders away from their values together) hatches no slider:
+    ``combinations`` says it in words (``teeth below 11 with bore above 15.5 mm: the bore
+    ...``: the page words it as its other texts).
+    ``ok`` false: the program does not compile at these values (nothing swept)."""
     from ..serve.params import declared_params
     from ..serve.wording import for_forms
-    from ..params.sweep import sweep
-    from ..params.sweep_scan import scan
+    from ..params.sweep_scan import scan_and_sweep
     path = os.path.join(folder, "main.aidl")
     declared = {p.name: p for p in declared_params(source, path) or []}
     spans = {n: (p.min, p.max) for n, p in declared.items()
              if not p.declared and p.min is not None and p.max is not None}
     values = {k: v for k, v in (values or {}).items() if k in declared}
-    rep = sweep(source, path, budget=budget, values=values, spans=spans)
+    alone, rep = scan_and_sweep(source, path, budget=budget, values=values, spans=spans)
     out = {"ok": rep.ok, "swept": list(rep.swept), "points": rep.points,
-           "skipped": rep.skipped, "summary": rep.text(), "params": {},
-           "combinations": [for_forms(c) for c in rep.combinations()]}
+           "skipped": rep.skipped, "work": rep.work, "summary": rep.text(), "params": {},
+           "combinations": _combinations(rep, for_forms)}
     if not rep.ok:
         return out
-    alone = scan(source, path, budget=budget, values=values, spans=spans)
-    out["points"] += alone.points
-    out["skipped"] += alone.skipped
     for name in alone.swept:
         p = declared.get(name)
         if p is not None and p.min is not None and p.max is not None:
@@ -53,23 +55,37 @@ def sweep_ranges(folder: str, source: str, budget=None, values: dict | None = No
     return out
 
 
+def _combinations(rep, for_forms) -> list[str]:
+    """Each combination of the sweep ``rep`` in words: which sliders, past which values, and
+    what breaks there (``teeth below 11 with bore above 15.5 mm: the bore ...``), not a
+    code."""
+    combos = [f for f in rep.findings if len(f.clean) >= 2]
+    return [for_forms(f"{line.rsplit(': ', 1)[0]}: {f.problem or f.code}")
+            for line, f in zip(rep.combinations(), combos)]
+
+
 def _row(p, alone, name: str, for_forms) -> dict:
     """The slider row of param ``p`` from the scan ``alone``."""
     value = alone.values.get(name, p.value)
     hatches = alone.broken(name)
     runs = alone.runs.get(name, [])
-    cur = next((r for r in runs if r.broken is False and r.lo - 1e-9 <= value <= r.hi + 1e-9),
-               None)
-    lo, hi = (p.min, p.max) if cur is None else (
-        p.min if cur is runs[0] else cur.lo, p.max if cur is runs[-1] else cur.hi)
-    clean = [_stop(p, lo, up=True), _stop(p, hi, up=False)]
+    # the clean part that holds the slider's value, else the one nearest it (the value in a
+    # band); none: the slider alone breaks the design everywhere (``clean`` empty)
+    cleans = [r for r in runs if r.broken is False]
+    cur = min(cleans, default=None, key=lambda r: max(r.lo - value, value - r.hi, 0.0))
+    clean = [] if cur is None and runs else [
+        _stop(p, p.min if cur is None or cur is runs[0] else cur.lo, up=True),
+        _stop(p, p.max if cur is None or cur is runs[-1] else cur.hi, up=False)]
     row = {"min": p.min, "max": p.max, "unit": p.unit, "clean": clean,
-           "below": None, "above": None, "bands": []}
+           "below": None, "above": None, "bands": [],
+           "unjudged": [{"from": a, "to": b, "text": f"{_shown(a, '')}–{_shown(b, p.unit)}: "
+                         "not checked in the time allowed"} for a, b in alone.unjudged(name)]}
     for after, before, r in hatches:
         a = None if after is None else _stop(p, after, up=False)
         b = None if before is None else _stop(p, before, up=True)
         below = b is not None and b <= value + 1e-9
-        where = (f"below {_shown(b, p.unit)}" if a is None else
+        where = (f"{_shown(p.min, '')}–{_shown(p.max, p.unit)}" if a is None and b is None else
+                 f"below {_shown(b, p.unit)}" if a is None else
                  f"above {_shown(a, p.unit)}" if b is None else
                  f"{_shown(a, '')}–{_shown(b, p.unit)}")
         text = f"{where}: {for_forms(r.problem)}"
@@ -78,6 +94,8 @@ def _row(p, alone, name: str, for_forms) -> dict:
             text += f"; at {_shown(far[0], p.unit)}: {for_forms(far[2])}"
         band = {"from": a, "to": b, "code": r.code, "text": text}
         row["bands"].append(band)
+        if not clean:
+            continue
         if below and b == clean[0]:
             row["below"] = {"at": b, "from": a, "code": r.code, "text": text}
         elif not below and a == clean[1]:

@@ -128,7 +128,7 @@ def for_page(text: str | None, code: bool = False) -> str | None:
 
 # the answer's keys whose strings a visitor reads
 _TEXTS = frozenset(("message", "hint", "error", "text", "summary", "notes", "import_error",
-                    "problem"))
+                    "problem", "combinations"))
 # never reworded: pictures, programs, source excerpts
 _KEEP = frozenset(("svg", "source", "program", "code", "rendered", "values", "clamped",
                    "dropped", "span"))

@@ -668,11 +668,15 @@ function markRanges() {
     const narrowed = Object.values(a.params || {}).filter((q) => (q.bands || []).length).length;
     const together = (a.combinations || []).length
       ? `; sliders that break it only together: ${a.combinations.join("; ")}` : "";
+    // what the time allowed cut: said, never hatched nor cleared (dotted grey on the track)
+    const open = Object.values(a.params || {}).filter((q) => (q.unjudged || []).length).length;
+    const cut = (a.skipped ? `; ${a.skipped} planned values not checked in the time allowed` : "")
+      + (open ? (a.skipped ? " (dotted: where a slider's edge was not narrowed down)"
+        : "; dotted: not checked in the time allowed") : "");
     sweepStatus(stale ? "the hatched parts are of the design before your change: checking again…"
       : !a.swept.length ? "" : (narrowed
         ? `hatched: values at which the design breaks, each slider alone (${a.points} values checked)`
-        : `every slider's range checks clean alone (${a.points} values checked)`
-          + (a.skipped ? `; ${a.skipped} not checked in the time allowed` : "")) + together);
+        : `every slider's range checks clean alone (${a.points} values checked)`) + cut + together);
   }
   for (const p of state.params) {
     const row = $("params").querySelector(`[data-name="${CSS.escape(p.name)}"]`);
@@ -685,15 +689,23 @@ function markRanges() {
     // a mark of its own
     const span = p.max - p.min, bands = (q && q.bands) || [];
     const frac = (x, end) => (x === null ? end : Math.min(1, Math.max(0, (x - p.min) / span)));
-    const mark = (z, b) => {
+    // a band's clean values judged on either side are the slider's steps: the hatch stops
+    // half a step short of them (a count's odd values each their own mark, not the track)
+    const half = p.step > 0 ? p.step / 2 : 0;
+    const mark = (z, b, inset = half) => {
       z.hidden = !b || !(span > 0);
       if (z.hidden) return;
-      z.style.setProperty("--from", frac(b.from, 0));
-      z.style.setProperty("--to", frac(b.to, 1));
+      z.style.setProperty("--from", frac(b.from === null ? null : b.from + inset, 0));
+      z.style.setProperty("--to", frac(b.to === null ? null : b.to - inset, 1));
       z.title = b.text;
     };
     const track = row.querySelector(".track");
-    for (const z of track.querySelectorAll(".unclean.band")) z.remove();
+    for (const z of track.querySelectorAll(".unclean.band, .unjudged")) z.remove();
+    for (const g of (q && q.unjudged) || []) {
+      const z = document.createElement("span"); z.className = "unjudged";
+      track.appendChild(z);
+      mark(z, g, 0);
+    }
     for (const side of ["below", "above"]) {
       const b = q && q[side] && bands.find((x) => x.text === q[side].text);
       mark(row.querySelector(`.unclean.${side}`), b || null);
@@ -705,9 +717,14 @@ function markRanges() {
       mark(z, b);
     }
     const u = row.querySelector(".unit");
-    const clean = bands.length ? `, clean ${fmt(q.clean[0])}–${fmt(q.clean[1])}` : "";
+    // a count broken at scattered values: its clean values named (`clean at 2, 4, 6, 8, 10`)
+    const counts = p.step >= 1 && !p.unit && bands.length > 1 && span / p.step <= 12
+      ? Array.from({ length: Math.round(span / p.step) + 1 }, (_, k) => p.min + k * p.step)
+        .filter((x) => !bandAt(q, x)) : null;
+    const clean = !bands.length && !((q && q.unjudged) || []).length ? "" : counts ? `, clean at ${counts.map(fmt).join(", ")}`
+      : !q.clean.length ? ", no clean value found" : `, clean ${fmt(q.clean[0])}–${fmt(q.clean[1])}`;
     u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)}${clean})`;
-    r.title = bands.map((x) => x.text).join("\n");
+    r.title = [...bands, ...((q && q.unjudged) || [])].map((x) => x.text).join("\n");
     const v = state.values[p.name] !== undefined ? state.values[p.name] : p.value;
     pastNote(row, p.name, v);
   }
@@ -720,17 +737,23 @@ function pastNote(row, name, v) {
   const p = state.params.find((x) => x.name === name) || {};
   const unit = p.unit ? ` ${p.unit}` : "";
   const past = bandAt(q, v);
-  const ends = (q && q.bands) || [];
+  const ends = [...((q && q.bands) || []), ...((q && q.unjudged) || [])];
+  const open = !past && q ? (q.unjudged || []).find((g) => typeof v === "number" && v > g.from + 1e-9 && v < g.to - 1e-9) : null;
   note.classList.toggle("past", !!past);
+  note.classList.toggle("open", !!open);
   if (past) {
     const beside = (q.below && past.text === q.below.text) || (q.above && past.text === q.above.text);
     note.textContent = beside
       ? `${fmt(v)}${unit} is outside the range the sweep found clean (${fmt(q.clean[0])}–${fmt(q.clean[1])}${unit}): ${past.text}`
-      : `${fmt(v)}${unit} is in a part of the range where the design breaks, between clean values: ${past.text}`;
+      : !q.clean.length ? `${fmt(v)}${unit}: the design breaks at every value of this slider (the others where they are): ${past.text}`
+        : `${fmt(v)}${unit} is in a part of the range where the design breaks, between clean values: ${past.text}`;
     r.setAttribute("aria-valuetext", beside ? `${fmt(v)}${unit}, outside the clean range: ${past.text}`
       : `${fmt(v)}${unit}, where the design breaks: ${past.text}`);
+  } else if (open) {
+    note.textContent = `${fmt(v)}${unit} was not checked in the time allowed (${open.text})`;
+    r.setAttribute("aria-valuetext", `${fmt(v)}${unit}, not checked in the time allowed`);
   } else {
-    note.textContent = ends.length
+    note.textContent = ends.length && q.clean.length
       ? `clean from ${fmt(q.clean[0])} to ${fmt(q.clean[1])}${unit}; ${ends.map((x) => x.text).join("; ")}` : "";
     if (typeof v === "number") r.setAttribute("aria-valuetext", `${fmt(v)}${unit}`);
   }
