@@ -34,16 +34,17 @@ def cpu_clock(monkeypatch):
     return time.process_time
 
 
-# ------------------------------------------------------------------ one studio, one Chromium
-# The studio's browser test files (test_studio_browser, _page, _values_browser, _views,
-# _maker_browser) share one headless Chromium per test process (each module opens its own
-# context, its pages' sizes, scripts and routes its own), and all but the maker's (its rate
-# limit of 30 per 5 s is what it tests) share one `aidl studio`: under `--dist loadfile` the
-# files a worker runs meet one server and one browser (each cost a file about 5 s to start), and
-# the server's caches (the gallery's thumbnails, the sweeps) are made once.
-@pytest.fixture(scope="session")
+# ------------------------------------------------------------------ one studio per process
+# The studio's browser test files (test_studio_browser, _page, _values_browser, _views) share
+# one `aidl studio` per test process (the maker's has its own: its rate limit of 30 per 5 s is
+# what it tests): under `--dist loadfile` the files a worker runs meet one server (a start costs
+# a file about 5 s), and its caches (the gallery's thumbnails, the sweeps) are made once.
+# Chromium is launched per module: a sync Playwright that lives on marks the thread's asyncio
+# loop as running, and the next file's asyncio tests and sync Playwright could not start.
+@pytest.fixture(scope="module")
 def chromium_browser():
-    """Debian's Chromium, headless, through Playwright's sync API; skips without them."""
+    """Debian's Chromium, headless, through Playwright's sync API (one per module; each test
+    or module opens its own context); skips without them."""
     pytest.importorskip("playwright")
     from benchmarks.serve.serve_latency import CHROMIUM, CHROMIUM_ARGS
     if not pathlib.Path(CHROMIUM).exists():
@@ -60,34 +61,12 @@ def chromium_browser():
 @pytest.fixture(scope="session")
 def studio_url():
     """``aidl studio --port 0`` as a visitor meets it (two compile workers, one sweep worker,
-    the default rate) with no model endpoint: its URL.  The page's first design (the divider
-    tray at its defaults) is swept here once, as a studio that has served one visitor has it
-    cached: 29 s of CPU that each page opening on the tray spent again before (the sweep was
-    stopped when its tab closed, or ran on and held up the next file's sweeps)."""
+    the default rate) with no model endpoint: its URL.  (Its first design's sweep made here
+    once, 29 s of CPU, cost more than it saved: a tab's sweep stops when the tab closes.)"""
     pytest.importorskip("starlette")
     from benchmarks.serve.studio_server import studio
     with studio(env={"AIDL_STUDIO_MODEL_URL": ""}) as (url, _proc):
-        _sweep_first_design(url)
         yield url
-
-
-def _sweep_first_design(url: str) -> None:
-    import json
-    import urllib.request
-
-    from aidl_lang.studio import gallery
-
-    def post(path: str, doc: dict) -> dict:
-        req = urllib.request.Request(url + path, data=json.dumps(doc).encode(), method="POST",
-                                     headers={"Content-Type": "application/json"})
-        with urllib.request.urlopen(req, timeout=600) as r:         # a hang guard
-            return json.loads(r.read())
-    sid = post("api/session", {})["sid"]
-    # best effort: a sweep stopped at its limit on a loaded machine is not cached, and the
-    # pages then ask for it as they did before
-    post("api/sweep", {"sid": sid, "source": gallery.entry("generator/divider_tray").source,
-                       "values": {}})
-    post("api/close", {"sid": sid})
 
 
 # ------------------------------------------------------------------ no process left behind
