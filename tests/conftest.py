@@ -34,6 +34,41 @@ def cpu_clock(monkeypatch):
     return time.process_time
 
 
+# ------------------------------------------------------------------ one studio per process
+# The studio's browser test files (test_studio_browser, _page, _values_browser, _views) share
+# one `aidl studio` per test process (the maker's has its own: its rate limit of 30 per 5 s is
+# what it tests): under `--dist loadfile` the files a worker runs meet one server (a start costs
+# a file about 5 s), and its caches (the gallery's thumbnails, the sweeps) are made once.
+# Chromium is launched per module: a sync Playwright that lives on marks the thread's asyncio
+# loop as running, and the next file's asyncio tests and sync Playwright could not start.
+@pytest.fixture(scope="module")
+def chromium_browser():
+    """Debian's Chromium, headless, through Playwright's sync API (one per module; each test
+    or module opens its own context); skips without them."""
+    pytest.importorskip("playwright")
+    from benchmarks.serve.serve_latency import CHROMIUM, CHROMIUM_ARGS
+    if not pathlib.Path(CHROMIUM).exists():
+        pytest.skip("needs Debian's chromium (apt-get install chromium; .ci/run installs it)")
+    from playwright.sync_api import sync_playwright
+    with sync_playwright() as pw:
+        browser = pw.chromium.launch(executable_path=CHROMIUM, headless=True, args=CHROMIUM_ARGS)
+        try:
+            yield browser
+        finally:
+            browser.close()
+
+
+@pytest.fixture(scope="session")
+def studio_url():
+    """``aidl studio --port 0`` as a visitor meets it (two compile workers, one sweep worker,
+    the default rate) with no model endpoint: its URL.  (Its first design's sweep made here
+    once, 29 s of CPU, cost more than it saved: a tab's sweep stops when the tab closes.)"""
+    pytest.importorskip("starlette")
+    from benchmarks.serve.studio_server import studio
+    with studio(env={"AIDL_STUDIO_MODEL_URL": ""}) as (url, _proc):
+        yield url
+
+
 # ------------------------------------------------------------------ no process left behind
 # A test that starts workers, servers or pools stops them (in its fixture's `finally`).  At
 # the end of the session every child process of this pytest process must have ended (after a

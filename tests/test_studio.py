@@ -287,6 +287,36 @@ def test_a_worker_marked_retiring_answers_its_next_request_from_a_fresh_process(
         w.stop()
 
 
+def test_a_worker_stopped_while_its_process_starts_ends_that_process_at_once():
+    """A studio stopped while a sweep worker restarts (after a stopped sweep): stop() ends the
+    starting process, and the request waiting for it fails at once (before, it waited up to
+    READY_SECONDS; the studio was killed and its new worker orphaned).  A start that takes
+    ten minutes (time.sleep as the handler's maker); about 0.5 s of CPU."""
+    import time
+    from aidl_lang.host import workers as W
+    w = W.Worker(time.sleep, (600,))
+    got: dict = {}
+
+    def ask():
+        try:
+            w.request("x", 60)
+        except W.NotReady as e:
+            got["refused"] = e
+    t = threading.Thread(target=ask)
+    t.start()
+    for _ in range(1200):                   # until its process is starting (a hang guard)
+        if w.starting is not None:
+            break
+        time.sleep(0.05)
+    proc = w.starting
+    assert proc is not None
+    w.stop()
+    t.join(60)
+    assert not t.is_alive() and isinstance(got.get("refused"), W.NotReady)
+    proc.join(10)
+    assert not proc.is_alive() and w.proc is None
+
+
 def test_a_worker_is_replaced_after_its_recycle_count_and_no_answer_is_lost(tmp_path):
     """Worker memory stays flat (issue 94: 195 -> 530 MB over 2,000 compiles): a compile
     worker's process answers ``recycle`` requests (``AIDL_STUDIO_RECYCLE``, 200), then the

@@ -26,7 +26,6 @@ if not Path("/usr/bin/chromium").exists():
     pytest.skip("needs Debian's chromium (apt-get install chromium; .ci/run installs it)",
                 allow_module_level=True)
 
-from benchmarks.serve.serve_latency import chromium  # noqa: E402
 from benchmarks.serve.studio_server import studio  # noqa: E402
 from test_studio_sweep import SLID  # noqa: E402
 
@@ -36,12 +35,15 @@ HANG_GUARD = 300_000
 
 
 @pytest.fixture(scope="module")
-def shared():
-    """One studio (no model endpoint) and one Chromium for the tests here: ``(url, ctx)``;
-    each test opens its own pages and closes them (a studio and a browser each cost a test
-    about 5 s of start-up)."""
-    with studio(env={"AIDL_STUDIO_MODEL_URL": ""}) as (url, _proc), chromium() as ctx:
-        yield url, ctx
+def shared(studio_url, chromium_browser):
+    """The test process's studio (no model endpoint) and Chromium (tests/conftest.py), a
+    context of this module's: ``(url, ctx)``; each test opens its own pages and closes them
+    (a studio and a browser each cost a test about 5 s of start-up)."""
+    ctx = chromium_browser.new_context(viewport={"width": 1400, "height": 900})
+    try:
+        yield studio_url, ctx
+    finally:
+        ctx.close()
 
 
 @pytest.fixture

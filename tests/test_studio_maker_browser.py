@@ -39,7 +39,6 @@ if not Path("/usr/bin/chromium").exists():
     pytest.skip("needs Debian's chromium (apt-get install chromium; .ci/run installs it)",
                 allow_module_level=True)
 
-from benchmarks.serve.serve_latency import CHROMIUM, CHROMIUM_ARGS  # noqa: E402
 from benchmarks.serve.studio_server import studio  # noqa: E402
 
 HANG = 180_000          # ms: a guard against a hung page, not a speed limit
@@ -55,14 +54,8 @@ def server():
 
 
 @pytest.fixture(scope="module")
-def chromium():
-    from playwright.sync_api import sync_playwright
-    with sync_playwright() as pw:
-        b = pw.chromium.launch(executable_path=CHROMIUM, headless=True, args=CHROMIUM_ARGS)
-        try:
-            yield b
-        finally:
-            b.close()
+def chromium(chromium_browser):
+    return chromium_browser             # the test process's (tests/conftest.py)
 
 
 def opened(chromium, url: str, how: dict, eid: str, locale: str = "en-US"):

@@ -1,5 +1,6 @@
 """The studio's page on a phone, from the keyboard, and its missing pieces (issue 72), in Debian's
-Chromium driven by Playwright against one real `aidl studio --port 0` for the module.
+Chromium driven by Playwright against one real `aidl studio --port 0` (the test process's,
+tests/conftest.py).
 
 * axe-core (tests/vendor/axe-core, MPL-2.0) run in the page: no serious or critical violation on
   the main page and the gallery at 390 x 844 (a phone) and 1440 x 900; screenshots of both
@@ -27,8 +28,6 @@ if not Path("/usr/bin/chromium").exists():
     pytest.skip("needs Debian's chromium (apt-get install chromium; .ci/run installs it)",
                 allow_module_level=True)
 
-from benchmarks.serve.serve_latency import chromium  # noqa: E402
-from benchmarks.serve.studio_server import studio  # noqa: E402
 
 PHONE = {"width": 390, "height": 844}
 DESKTOP = {"width": 1440, "height": 900}
@@ -38,15 +37,17 @@ HANG_GUARD = 300_000
 
 
 @pytest.fixture(scope="module")
-def server():
-    with studio() as (url, _proc):
-        yield url
+def server(studio_url):
+    return studio_url                   # the test process's studio (tests/conftest.py)
 
 
 @pytest.fixture(scope="module")
-def browser():
-    with chromium() as ctx:
+def browser(chromium_browser):
+    ctx = chromium_browser.new_context(viewport={"width": 1400, "height": 900})
+    try:
         yield ctx
+    finally:
+        ctx.close()
 
 
 def opened(ctx, url: str, size: dict, gallery: bool = False):

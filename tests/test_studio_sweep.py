@@ -29,6 +29,9 @@ solid plate {
     hole h { c = Circle(center=(off, 0), radius=r) }
 }
 """
+# a sweep that cannot end by itself within a test: a loop of 10^8 steps at each point
+SPIN = SLID.replace("solid plate {", "solid plate {\n    for i in range(10000) "
+                    "{ for j in range(10000) { k = i * j } }")
 CLEAN = """units mm
 param w = 40 mm, min=20 mm, max=80 mm
 solid plate { body = Rectangle(center=(0, 0), width=w, height=20) }
@@ -113,12 +116,9 @@ def test_a_sessions_sweep_in_flight_is_stopped_by_its_next_program(client):
     st = client.app.state.studio
     sid = session(client)
     folder = st.folders.folder(sid)
-    # a sweep that cannot end by itself within the test: a loop of 10^8 steps at each point
-    slow = SLID.replace("solid plate {", "solid plate {\n    for i in range(10000) "
-                        "{ for j in range(10000) { k = i * j } }")
 
     async def both():
-        first = asyncio.ensure_future(st.sweep(sid, folder, slow))
+        first = asyncio.ensure_future(st.sweep(sid, folder, SPIN))
         for _ in range(600):                    # until its worker runs it (no wall-clock claim)
             await asyncio.sleep(0.1)
             job = next(iter(st.sweeps.running.values()), None)
@@ -346,3 +346,36 @@ def test_a_slider_dragged_into_a_band_leaves_the_others_judged_against_the_writt
     [band] = away["bands"]
     assert away["clean"] == [] and (band["from"], band["to"]) == (None, None)
     assert band["text"].startswith("1–5 mm: hole `plate.h` cuts nothing"), band
+
+
+def test_a_closed_tabs_sweep_in_flight_is_stopped_when_no_other_tab_waits_for_it(client):
+    """Two tabs wait for one sweep that takes long: the first closing (``/api/close``, the
+    page's pagehide beacon) leaves it running for the second; the second closing stops it
+    (its worker process killed, the answer `superseded`).  Before, a closed tab's sweep ran
+    on in the only sweep worker and the next visitor's sweep waited for it (in
+    test_studio_browser, 65 s of its sweep test)."""
+    import threading
+    st = client.app.state.studio
+    a, b = session(client), session(client)
+    got: dict = {}
+    asks = [threading.Thread(target=lambda s=s: got.update({s: sweep(client, s, SPIN)}))
+            for s in (a, b)]
+    for t in asks:
+        t.start()
+    for _ in range(600):                        # until its worker runs it (no wall-clock claim)
+        job = next(iter(st.sweeps.running.values()), None)
+        if job is not None and len(job.sids) == 2 and job.worker is not None \
+                and job.worker.proc is not None:
+            break
+        time.sleep(0.1)
+    assert job.sids == {a, b}
+    proc = job.worker.proc
+    assert client.post("/api/close", json={"sid": a}).json() == {"closed": True}
+    assert not job.cancelled and proc.is_alive() and job.sids == {b}     # b still waits
+    client.post("/api/close", json={"sid": b})
+    for t in asks:
+        t.join(60)                              # a hang guard
+    assert got[a]["superseded"] is True and got[b]["superseded"] is True
+    proc.join(10)
+    assert not proc.is_alive() and st.served["sweeps_stopped"] == 1
+    assert not st.sweeps.running and a not in st.sweeps.of and b not in st.sweeps.of

@@ -28,9 +28,6 @@ if not Path("/usr/bin/chromium").exists():
     pytest.skip("needs Debian's chromium (apt-get install chromium; .ci/run installs it)",
                 allow_module_level=True)
 
-from benchmarks.serve.serve_latency import chromium  # noqa: E402
-from benchmarks.serve.studio_server import studio  # noqa: E402
-
 from aidl_lang import api  # noqa: E402
 from aidl_lang.serve.params import declared_params  # noqa: E402
 
@@ -144,8 +141,10 @@ def pick(page, eid: str) -> int:
 
 
 @pytest.fixture(scope="module")
-def browser():
-    with studio("--compilers", "2") as (url, _proc), chromium() as ctx:
+def browser(studio_url, chromium_browser):
+    # the test process's studio (two compile workers) and Chromium (tests/conftest.py)
+    url, ctx = studio_url, chromium_browser.new_context(viewport={"width": 1400, "height": 900})
+    try:
         ctx.add_init_script(RECORD)
         ctx.route("**/api/thumb/**", lambda r: r.abort())     # the gallery's pictures: not here
         page = ctx.new_page()
@@ -154,6 +153,8 @@ def browser():
                                " && window.studio.view.ok", timeout=HANG)
         page.keyboard.press("Escape")
         yield url, ctx, page
+    finally:
+        ctx.close()
 
 
 def test_every_slider_end_shows_the_sliders_picture(browser, tmp_path):

@@ -8,6 +8,7 @@ Screenshots: out/studio-flat-zoomed.png, out/studio-3d-building.png.
 """
 from __future__ import annotations
 
+import contextlib
 import io
 import json
 import math
@@ -82,15 +83,6 @@ def test_the_view_glb_is_small_and_shares_the_planets_mesh(planetary):
 
 
 # ------------------------------------------------------------------ in Chromium
-def _browser():
-    pytest.importorskip("playwright")
-    if not Path("/usr/bin/chromium").exists():
-        pytest.skip("needs Debian's chromium (apt-get install chromium; .ci/run installs it)")
-    from benchmarks.serve.serve_latency import chromium
-    from benchmarks.serve.studio_server import studio
-    return studio, chromium
-
-
 def _pick(page, eid: str) -> int:
     """Choose gallery entry ``eid``; returns the number of views before it."""
     n = page.evaluate("window.studio.views")
@@ -103,10 +95,11 @@ def _img_box(page) -> dict:
     return page.locator("#flat-img").bounding_box()
 
 
-def test_the_3d_keeps_up_and_the_flat_view_zooms_and_pans():
-    studio, chromium = _browser()
+def test_the_3d_keeps_up_and_the_flat_view_zooms_and_pans(studio_url, chromium_browser):
+    """The test process's studio and Chromium (tests/conftest.py), a context of its own."""
     OUT.mkdir(exist_ok=True)
-    with studio() as (url, _proc), chromium() as ctx:
+    url = studio_url
+    with contextlib.closing(chromium_browser.new_context(viewport={"width": 1400, "height": 900})) as ctx:
         page = ctx.new_page()
         page.route("**/api/thumb/**", lambda r: r.abort())      # the gallery's pictures: not here
         page.goto(url)

@@ -103,6 +103,7 @@ class Worker:
         self.requests = 0
         self.retiring = False       # set: the next request starts a fresh process
         self.cancelled = False      # set by cancel(): the request in flight (or starting) ends
+        self.starting = None        # the process _start waits for (stop() ends it too)
 
     def _start(self) -> None:
         ctx = multiprocessing.get_context("spawn")
@@ -111,10 +112,13 @@ class Worker:
                            daemon=True)
         proc.start()
         child.close()
+        self.starting = proc
         try:
             ready = parent.poll(READY_SECONDS) and parent.recv() == "ready"
         except (EOFError, OSError):
             ready = False
+        finally:
+            self.starting = None
         if not ready:
             proc.kill()
             proc.join()
@@ -123,7 +127,12 @@ class Worker:
         self.answered = 0
 
     def stop(self) -> None:
-        """End the worker process (the next request starts another)."""
+        """End the worker process (the next request starts another), and one starting: its
+        start fails at once (before, a studio stopped while a sweep worker restarted waited
+        for it, up to READY_SECONDS, and was killed, its new worker orphaned)."""
+        starting = self.starting
+        if starting is not None and starting.is_alive():
+            starting.kill()
         proc, self.proc = self.proc, None
         if self.conn is not None:
             self.conn.close()

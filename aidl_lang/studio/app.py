@@ -32,8 +32,8 @@ Routes:
   Run by the sweep workers (``sweepers``, apart from the previews' compilers; on the cluster
   with ``--scheduler``), bounded by the sweep's budget, answered from a cache keyed by the
   program's text, the values and the bytes of the session's uploads (the same program is
-  swept once), and the session's sweep in flight is stopped when it asks for another
-  (:class:`Sweeps`).
+  swept once), and the session's sweep in flight is stopped when it asks for another or
+  its tab closes (``/api/close``) and no other session waits for it (:class:`Sweeps`).
 * ``POST /api/glb``: ``{"sid", "source", "values", "settings"}`` -> the 3D view's GLB (a
   smaller mesh than the download, made from the preview's drawing; gzip when the browser
   takes it).
@@ -438,12 +438,8 @@ class Studio:
             sw.done.move_to_end(key)
             self.served["sweeps_cached"] += 1
             return {**sw.done[key], "cached": True}
-        old = sw.of.get(sid)
-        if old is not None and old != key and old in sw.running:
-            job = sw.running[old]
-            job.sids.discard(sid)
-            if not job.sids:
-                self.stop_sweep(job)
+        if sw.of.get(sid) != key:
+            self.leave_sweep(sid)
         if len(sw.of) > 10_000:
             sw.of.clear()
         sw.of[sid] = key
@@ -463,6 +459,18 @@ class Studio:
         if answer.get("busy"):
             raise Limited(503, answer["error"], 10)
         return answer
+
+    def leave_sweep(self, sid: str) -> None:
+        """Session ``sid`` no longer waits for the sweep it asked for last (it asks for another
+        program, or its tab closed): that sweep is stopped when no other session waits for it
+        (before, a closed tab's sweep ran on to its end in the only sweep worker, and the next
+        visitor's sweep waited for it)."""
+        old = self.sweeps.of.pop(sid, None)
+        job = self.sweeps.running.get(old) if old is not None else None
+        if job is not None:
+            job.sids.discard(sid)
+            if not job.sids:
+                self.stop_sweep(job)
 
     def stop_sweep(self, job: SweepJob) -> None:
         """Stop the sweep ``job``: not started, or its worker process killed."""
@@ -695,6 +703,8 @@ def _session_routes(st: Studio, guarded) -> list[Route]:
         with contextlib.suppress(Refused):
             st.folders.close(doc.get("sid"))
         st.affinity.pop(doc.get("sid"), None)
+        if isinstance(doc.get("sid"), str):
+            st.leave_sweep(doc["sid"])
         return JSONResponse({"closed": True})
 
     async def files(request):

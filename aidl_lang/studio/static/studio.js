@@ -632,7 +632,9 @@ function sweepChanged(fresh) {
 async function runSweep() {
   // paced with the previews and 3D models: a minute of dragging sent a sweep at each pause,
   // unpaced, and 31 requests fell in one 5 s window of a limit of 30
-  try { await pace(); } catch (_) { /* never */ }
+  // two slots: the server counts a sweep as 2 of its rate (unpaced so, a drag met 429 once the
+  // sweep worker answered at once)
+  try { await pace(); await pace(); } catch (_) { /* never */ }
   const sw = state.sweep, source = state.source, key = sweepKey(), values = { ...state.values };
   if (sw.ctrl) sw.ctrl.abort();
   const ctrl = sw.ctrl = new AbortController();
