@@ -134,12 +134,13 @@ function paceGap() {
   return (Number(m[2] || 1) * unit * 1000) / (0.6 * Number(m[1]));
 }
 // a burst of 10 goes at once (a click, its 3D), then one every paceGap() ms: in any window of
-// the server's period at most 60 % of its rate and 10 (GCRA: each request reserves its slot)
-async function pace() {
+// the server's period at most 60 % of its rate and 10 (GCRA: each request reserves its slot;
+// `cost`: the slots the server counts the request as, its route's cost in app.py)
+async function pace(cost = 1) {
   const gap = paceGap(), now = performance.now();
   state.tat = Math.max(state.tat || 0, now);
-  const wait = state.tat - 9 * gap - now;
-  state.tat += gap;
+  const wait = state.tat + (cost - 1) * gap - 9 * gap - now;
+  state.tat += cost * gap;
   if (wait > 0) await new Promise((ok) => setTimeout(ok, wait));
 }
 window.studio.paceGap = paceGap;
@@ -632,9 +633,9 @@ function sweepChanged(fresh) {
 async function runSweep() {
   // paced with the previews and 3D models: a minute of dragging sent a sweep at each pause,
   // unpaced, and 31 requests fell in one 5 s window of a limit of 30
-  // two slots: the server counts a sweep as 2 of its rate (unpaced so, a drag met 429 once the
-  // sweep worker answered at once)
-  try { await pace(); await pace(); } catch (_) { /* never */ }
+  // the server counts a sweep as 2 of its rate (paced as 1, a drag met 429 once the sweep
+  // worker answered at once)
+  try { await pace(2); } catch (_) { /* never */ }
   const sw = state.sweep, source = state.source, key = sweepKey(), values = { ...state.values };
   if (sw.ctrl) sw.ctrl.abort();
   const ctrl = sw.ctrl = new AbortController();
