@@ -156,7 +156,8 @@ def plates(tmp_path_factory):
     out = {}
     for name, data in (("nema17", nema17()),
                        ("grid", grid_plate()),
-                       ("corners", corner_plate())):
+                       ("corners", corner_plate()),
+                       ("nema17_42", nema17(42.0, 42.0))):
         (folder / f"{name}.dxf").write_bytes(data)
         doc = compiler.import_upload(str(folder), f"{name}.dxf", True)
         assert "program" in doc, doc
@@ -209,9 +210,38 @@ def test_a_motor_mount_s_hole_square_stays_centred_and_inside(plates):
     assert len(circles) == 1                        # the bore; the holes are notches now
 
 
+def test_a_motor_face_s_corner_holes_keep_their_inset_and_clear_the_bore(plates):
+    """The motor's own face, 42 x 42 mm: its four holes 5.5 mm in from the edges are read as
+    corner holes (the import's rule), beside a 22 mm bore.  At 30 x 30 mm the bore's range
+    follows to at most sqrt(2) (30 - 3.4 - 2) - 3.4 - 2.01 = 29.38 mm (22 stays) and the inset
+    to at most 15 - (22 + 3.4 + 2) / (2 sqrt 2) = 5.313 mm (5.5 is moved there): 1 mm of
+    material between each hole and the bore, as ezdxf reads the download.  Before, no
+    relation was found (a bore beside corner holes): 0.73 mm of material at 30 x 30, and at
+    26 x 26 the holes ran into the bore (W0508)."""
+    folder, docs = plates
+    doc = docs["nema17_42"]
+    assert any("corner holes keep their inset" in n for n in doc["notes"]), doc["notes"]
+    src = doc["program"]
+    view = compiler.view(OrderedDict(), "q", folder, src, {"width": "30mm", "height": "30mm"})
+    assert view["ok"], view["diagnostics"]
+    v = {p["name"]: p["value"] for p in view["params"]}
+    inset = 15 - (22 + 3.4 + 2) / (2 * math.sqrt(2))
+    assert v["corner_inset"] <= inset + 1e-9 and v["corner_inset"] > inset - 0.1
+    assert not [d for d in view["diagnostics"] if d["severity"] == "warning"]
+    box, circles = outline_and_holes(compiler.download(folder, src, view["values"], "dxf",
+                                                       {})[0])
+    assert box == pytest.approx((0, 0, 30, 30))
+    [bore] = [c for c in circles if c[2] == pytest.approx(11)]
+    holes = [c for c in circles if c[2] == pytest.approx(1.7)]
+    assert len(holes) == 4 and bore[:2] == pytest.approx((15, 15))
+    for x, y, r in holes:
+        assert min(x, 30 - x) == pytest.approx(v["corner_inset"])
+        assert math.hypot(x - 15, y - 15) - r - 11 >= WALL - 1e-6
+
+
 @settings(max_examples=9, deadline=None, derandomize=True,
           suppress_health_check=[HealthCheck.function_scoped_fixture])
-@given(name=st.sampled_from(["nema17", "grid", "corners"]),
+@given(name=st.sampled_from(["nema17", "grid", "corners", "nema17_42"]),
        width=st.floats(0, 1), height=st.floats(0, 1), d=st.floats(0.8, 12),
        other=st.floats(1, 60), n=st.integers(1, 8))
 def test_at_any_plate_size_the_holes_stay_inside_and_in_their_pattern(plates, name, width,

@@ -21,6 +21,8 @@ Not part of the stable API.
 """
 from __future__ import annotations
 
+import math
+
 from .. import ast as A
 from .relation_syntax import WALL, _circles, _fmt, _kw, _name, _text
 
@@ -188,11 +190,16 @@ def grid_ranges(source: str, prog, params) -> dict[str, str]:
 
 
 def corner_ranges(source: str, prog, params) -> dict[str, str]:
-    """The ranges of a plate with a hole at each corner, ``inset`` in from the edges; {}
-    without."""
+    """The ranges of a plate with a hole at each corner, ``inset`` in from the edges, and a
+    bore at its centre or none (a square NEMA 17 mount: the import reads its four holes as
+    at the corners); {} without.  With a bore of diameter ``B`` the corner holes (``D``) keep
+    ``WALL`` from it: a hole's centre is at least sqrt(2) (min(W, H) / 2 - inset) from the
+    plate's centre, so ``inset <= min(W, H) / 2 - (B / 2 + D / 2 + WALL) / sqrt(2)``; the
+    bore's and the hole's ranges keep that above the least inset (``D / 2 + WALL``)."""
     plates = {p[0]: p for p in _plate(source, prog, params)}
     structs = {s.name: s for s in A.walk(prog) if isinstance(s, A.StructDecl)
                and s.kind == "hole"}
+    holes = _in_holes(prog)
     for call in A.walk(prog):
         if not (isinstance(call, A.Call) and isinstance(call.func, A.Name)
                 and call.func.id == "CornerPattern" and len(call.args) == 2
@@ -202,17 +209,41 @@ def corner_ranges(source: str, prog, params) -> dict[str, str]:
         inset = _name(_kw(call, "inset"), params)
         circles = _circles(hole) if hole is not None else []
         d = _name(_kw(circles[0], "diameter"), params) if len(circles) == 1 else None
-        if plate is None or not inset or not d or len({d, inset, plate[1], plate[2]}) != 4 \
-                or not _only(prog, circles):
+        if plate is None or not inset or not d or len({d, inset, plate[1], plate[2]}) != 4:
             continue
-        _, w, h, _ = plate
-        v = {k: params[k].value.value for k in (w, h, d, inset)}
+        _, w, h, centre = plate
+        same = _centre_texts(source, prog, centre, None)
+        bore, bore_circle = next(((b, c) for c in _circles(prog) if id(c) in holes
+                                  and _text(source, _kw(c, "center") or c) in same
+                                  for b in [_name(_kw(c, "diameter"), params)]
+                                  if b and b not in (d, w, h, inset)), (None, None))
+        if not _only(prog, circles + [bore_circle]):
+            continue
+        v = {k: params[k].value.value for k in (w, h, d, inset) + ((bore,) if bore else ())}
         lo_d = v[d] / 4
-        least = _fmt(2 * lo_d + 3 * WALL + 2 * EPS)
-        return {w: f", min = {least} mm, max = {_fmt(2 * v[w])} mm",
-                h: f", min = {least} mm, max = {_fmt(2 * v[h])} mm",
-                d: f", min = {_fmt(lo_d)} mm, "
-                   f"max = (min({w}, {h}) - {_fmt(3 * WALL + EPS)} mm) / 2",
+        s_ = f"min({w}, {h})"
+        if not bore:
+            least = 2 * lo_d + 3 * WALL + 2 * EPS
+            return {w: f", min = {_fmt(least)} mm, max = {_fmt(2 * v[w])} mm",
+                    h: f", min = {_fmt(least)} mm, max = {_fmt(2 * v[h])} mm",
+                    d: f", min = {_fmt(lo_d)} mm, "
+                       f"max = ({s_} - {_fmt(3 * WALL + EPS)} mm) / 2",
+                    inset: f", min = {d} / 2 + {_fmt(WALL)} mm, "
+                           f"max = ({s_} - {d} - {_fmt(WALL)} mm) / 2"}
+        # the bore's largest with the holes at their least inset: r2 (S - D - 2 WALL) - D -
+        # 2 WALL (r2 = sqrt 2), and inside the plate; each bound EPS inside the next (EPS)
+        r2, lo_b = math.sqrt(2), v[bore] / 4
+        least = max(2 * lo_d + 3 * WALL + 2 * EPS, lo_b + 2 * WALL + 3 * EPS,
+                    ((1 + r2) * (lo_d + EPS) + lo_b + (2 + 2 * r2) * WALL + 2 * EPS) / r2)
+        return {w: f", min = {_fmt(least)} mm, max = {_fmt(2 * v[w])} mm",
+                h: f", min = {_fmt(least)} mm, max = {_fmt(2 * v[h])} mm",
+                d: f", min = {_fmt(lo_d)} mm, max = min(({s_} - {_fmt(3 * WALL + EPS)} mm) / 2, "
+                   f"(sqrt(2) * {s_} - {_fmt(lo_b + (2 + 2 * r2) * WALL + 2 * EPS)} mm) / "
+                   f"(1 + sqrt(2)))",
+                bore: f", min = {_fmt(lo_b)} mm, max = min({s_} - {_fmt(2 * WALL + EPS)} mm, "
+                      f"sqrt(2) * ({s_} - {d} - {_fmt(2 * WALL)} mm) - {d} - "
+                      f"{_fmt(2 * WALL + EPS)} mm)",
                 inset: f", min = {d} / 2 + {_fmt(WALL)} mm, "
-                       f"max = (min({w}, {h}) - {d} - {_fmt(WALL)} mm) / 2"}
+                       f"max = min(({s_} - {d} - {_fmt(WALL)} mm) / 2, {s_} / 2 - "
+                       f"({bore} + {d} + {_fmt(2 * WALL)} mm) / (2 * sqrt(2)))"}
     return {}
