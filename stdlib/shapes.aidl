@@ -28,17 +28,23 @@ def bolt_circle(count=6, pcd=40 mm, hole_d=5 mm, start=0 deg,
 }
 
 # A mounting tab: a rectangle with a round end (pointing up) and a hole in
-# the round end. `length` runs from the flat base to the tip of the round end
-# (make it at least `width`, or the round end pokes out below the base).
-# Members: `stem` (Rectangle), `end` (Circle), `eye` (the hole; `eye.e`).
+# the round end. `length` runs from the flat base to the tip of the round end;
+# the round end is a half disc (a short tab, length under width, stays flat
+# at its base), and the eye keeps a wall of more than 0.5 mm above the base.
+# Members: `body` (the outline, a RoundedRectangle), `stem` (construction
+# Rectangle, below the round end), `end` (construction Circle of the round
+# end), `eye` (the hole; `eye.e`).
 def rounded_tab(width=20 mm, length=20 mm, hole_d=6 mm, cx=0 mm, cy=0 mm) -> solid {
-    assert length > width / 2, "the round end's center is above the base: length > width / 2"
     assert hole_d > 0 mm and hole_d < width - 1 mm, "the eye leaves a wall more than 0.5 mm wide in the round end: hole_d < width - 1 mm"
-    stem = Rectangle(bottom_left=(cx - width / 2, cy), width=width, height=length - width / 2)
-    end = Circle(center=(cx, cy + length - width / 2), diameter=width)
+    assert length > (width + hole_d) / 2 + 0.5 mm, "the eye leaves a wall more than 0.5 mm wide above the base: length > (width + hole_d) / 2 + 0.5 mm"
+    body = RoundedRectangle(center=(cx, cy + length / 2), width=width, height=length,
+                            corner_radii=[width / 2, width / 2, 0 mm, 0 mm])
+    stem = Rectangle(bottom_left=(cx - width / 2, cy), width=width, height=length - width / 2, construction=true)
+    end = Circle(center=(cx, cy + length - width / 2), diameter=width, construction=true)
     hole eye {
         e = Circle(center=(cx, cy + length - width / 2), diameter=hole_d)
     }
+    Coincident(body.bottom.midpoint, stem.bottom.midpoint)
     Coincident(end.center, stem.top.midpoint)
     Concentric(eye.e, end)
 }

@@ -250,8 +250,9 @@ def test_law_a_band_between_clean_values_is_hatched_as_a_band(c, d):
 
 
 def test_a_gallery_sample_is_hatched_where_set_breaks_it(tmp_path):
-    """benchmarks/serve/studio_hatching.py over a sample: the rounded tab (its W0520 band at
-    width 32.6-39 mm with its length at 20 mm, clean on both sides, hatched as a band) at 8
+    """benchmarks/serve/studio_hatching.py over a sample: the rounded tab (clean at every
+    value since its round end is a half disc; before, a W0520 band at width 32.6-39 mm with
+    its length at 20 mm, hatched as a band) at 8
     seeded random values of each slider, each compiled with `--set`: the hatching agrees with
     every one; the bracket's bolt counts (1-10) break at each odd count (W0508: a bolt on the
     vents' circle), each hatched alone.  About 6 s of CPU."""

@@ -192,6 +192,9 @@ def _diags(src, tmp_path, overrides=None):
     ("washer(outer=10 mm, inner=9.5 mm)", "W0507", "inner < outer - 1 mm"),
     ("rounded_tab(width=5 mm, length=20 mm, hole_d=6 mm)", "W0510", "hole_d < width - 1 mm"),
     ("rounded_tab(width=20 mm, length=20 mm, hole_d=19.5 mm)", "W0507", "hole_d < width - 1 mm"),
+    # the round end a half disc on the stem: the eye breaks through the base (issue 92)
+    ("rounded_tab(width=40 mm, length=22 mm, hole_d=6 mm)", "W0510",
+     "length > (width + hole_d) / 2 + 0.5 mm"),
     ("mounting_plate(width=80 mm, height=12.5 mm)", "W0508", "inset < height / 2"),
     ("mounting_plate(width=80 mm, height=50 mm, corner_radius=16 mm)", "W0507", "corner_radius <"),
     ("mounting_plate(width=80 mm, height=50 mm, inset=1.5 mm)", "W0510", "inset > 0.65 mm"),
