@@ -28,7 +28,7 @@ def bolt_circle(count=6, pcd=40 mm, hole_d=5 mm, start=0 deg,
 }
 
 # A mounting tab: a rectangle with a round end (pointing up) and a hole in
-# the round end. `length` runs from the flat base to the tip of the round end;
+# it. `length` runs from the flat base to the tip of the round end;
 # the round end is a half disc (a short tab, length under width, stays flat
 # at its base), and the eye keeps a wall of more than 0.5 mm above the base.
 # Members: `body` (the outline, a RoundedRectangle), `stem` (construction

@@ -256,7 +256,7 @@ def test_at_any_plate_size_the_holes_stay_inside_and_in_their_pattern(plates, na
     rows = compiler.view(OrderedDict(), "p", folder, src, {})["params"]
     values = {p["name"]: f"{p['min'] + k * (p['max'] - p['min']):.3f}mm"
               for p, k in zip(rows[:2], (width, height))}
-    for p in rows[2:]:                  # a count on its slider's steps (by 2 about a bore)
+    for p in rows[2:]:                  # a count on its slider's steps
         values[p["name"]] = (
             str(int(p["min"] + (p["step"] or 1) * (n - 1))) if not p["unit"] else
             f"{d:.3f}mm" if p["name"].endswith("_d") and "bore" not in p["name"] else
@@ -276,8 +276,8 @@ def test_at_any_plate_size_the_holes_stay_inside_and_in_their_pattern(plates, na
         for x2, y2, r2 in holes[i + 1:] + bore:
             assert math.hypot(x - x2, y - y2) >= r + r2 + WALL - 1e-6
     counts = [v[k] for k in v if k.endswith(("_cols", "_rows"))]
-    if counts:
-        assert len(holes) == counts[0] * counts[1]
+    if counts:                          # odd both ways about a bore: none on the bore
+        assert len(holes) == counts[0] * counts[1] - (bool(bore) and counts[0] * counts[1] % 2)
         assert (sum(h[0] for h in holes) / len(holes), sum(h[1] for h in holes) / len(holes)) \
             == pytest.approx(((x0 + x1) / 2, (y0 + y1) / 2))
     else:
@@ -286,3 +286,39 @@ def test_at_any_plate_size_the_holes_stay_inside_and_in_their_pattern(plates, na
         for x, y, _ in holes:
             assert min(x - x0, x1 - x) == pytest.approx(inset)
             assert min(y - y0, y1 - y) == pytest.approx(inset)
+
+
+def test_every_count_the_ranges_allow_keeps_the_holes_off_the_bore(plates, tmp_path):
+    """Issue 92: the counts about a bore went by 2 on the slider, but `--set` (and MCP
+    set_params) take any whole count, and 3 x 3 put the middle hole on the bore (W0508: it
+    cuts nothing of its own).  The grid's loop now leaves that hole out (`if 2 * i != cols - 1
+    or 2 * j != rows - 1`), so the counts go by 1: at 120 x 120 mm, pitch 27.5 mm, every
+    cols x rows of 2..5 compiles without a warning and the DXF ezdxf reads has cols x rows
+    holes (one fewer when both are odd), each 1 mm clear of the bore, the edges and each
+    other.  16 compiles, about 1 s of CPU."""
+    import aidl_lang
+    _, docs = plates
+    src = docs["nema17"]["program"]
+    assert "if 2 * i != motor_holes_cols - 1 or 2 * j != motor_holes_rows - 1 {" in src
+    assert any("left out" in n for n in docs["nema17"]["notes"])
+    assert "param motor_holes_cols = 2, min = 2, max = min(16, floor((width" in src
+    sizes = {"width": "120 mm", "height": "120 mm", "motor_holes_pitch": "27.5 mm"}
+    for name in ("motor_holes_cols", "motor_holes_rows"):     # (120 - 5.4) / 27.41 + 1
+        over = aidl_lang.compile(source=src, path=str(tmp_path / "m.aidl"),
+                                 overrides={**sizes, name: "6"})
+        assert [d.code for d in over.errors] == ["E0124"] and "range 2 .. 5" in \
+            over.errors[0].message
+    for cols in range(2, 6):
+        for rows in range(2, 6):
+            r = aidl_lang.compile(source=src, path=str(tmp_path / "m.aidl"), overrides={
+                **sizes, "motor_holes_cols": str(cols), "motor_holes_rows": str(rows)})
+            assert r.ok and not [d for d in r.diagnostics if d.severity != "info"], \
+                (cols, rows, [d.message for d in r.diagnostics])
+            box, found = outline_and_holes(r.to_dxf().encode())
+            [bore] = [c for c in found if c[2] == pytest.approx(11)]
+            holes = [c for c in found if c[2] == pytest.approx(1.7)]
+            assert len(holes) == cols * rows - (cols * rows) % 2, (cols, rows)
+            for i, (x, y, rad) in enumerate(holes):
+                assert min(x - box[0], box[2] - x, y - box[1], box[3] - y) >= rad + WALL - 1e-6
+                for x2, y2, r2 in holes[i + 1:] + [bore]:
+                    assert math.hypot(x - x2, y - y2) >= rad + r2 + WALL - 1e-6

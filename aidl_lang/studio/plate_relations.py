@@ -92,8 +92,9 @@ def _ranged_loop(node, params):
 
 
 def _grid(source, prog, params, holes):
-    """``(x axis (base text, count, pitch), y axis, D, the Circle)`` of the first two nested
-    loops of a hole ``Circle`` placed about the middle of both, or None."""
+    """``(x axis (base text, count, pitch), y axis, D, the Circle, the inner loop, (x's loop
+    variable, y's))`` of the first two nested loops of a hole ``Circle`` placed about the
+    middle of both, or None."""
     for outer in (n for n in A.walk(prog) if isinstance(n, A.For)):
         o = _ranged_loop(outer, params)
         for inner in (n for n in A.walk(outer.body) if isinstance(n, A.For)) if o else ():
@@ -114,7 +115,7 @@ def _grid(source, prog, params, holes):
                         break
                     axes.append((_text(source, m[0]), m[1], m[2]))
                 if len(axes) == 2 and axes[0][1] != axes[1][1]:
-                    return axes[0], axes[1], d, c
+                    return axes[0], axes[1], d, c, inner, tuple(map(_loop_var, at.items))
     return None
 
 
@@ -133,18 +134,19 @@ def _centre_texts(source, prog, centre, part: int | None) -> set:
     return {_text(source, centre.items[part])} | {f"{n}.{'xy'[part]}" for n in names}
 
 
-def grid_ranges(source: str, prog, params) -> dict[str, str]:
-    """The ranges of a plate with a grid of holes about its centre (and a bore); {} without."""
+def _grid_parts(source, prog, params):
+    """``(grid of :func:`_grid`, plate of :func:`_plate`, bore param or None)`` of a plate
+    with a grid of holes about its centre (and a bore on it), or None."""
     holes = _in_holes(prog)
     grid = _grid(source, prog, params, holes)
     if grid is None:
-        return {}
-    (bx, nx, px), (by, ny, py), d, hole = grid
+        return None
+    (bx, nx, px), (by, ny, py), d, hole = grid[:4]
     plate = next((p for p in _plate(source, prog, params)
                   if bx in _centre_texts(source, prog, p[3], 0)
                   and by in _centre_texts(source, prog, p[3], 1)), None)
     if plate is None:
-        return {}
+        return None
     _, w, h, centre = plate
     same = _centre_texts(source, prog, centre, None)
     bore, bore_circle = next(((b, c) for c in _circles(prog) if id(c) in holes
@@ -152,12 +154,50 @@ def grid_ranges(source: str, prog, params) -> dict[str, str]:
                               for b in [_name(_kw(c, "diameter"), params)]
                               if b and b not in (d, w, h)), (None, None))
     if not _only(prog, (hole, bore_circle)):
-        return {}
+        return None
     used = {w, h, d, nx, ny, px, py} | ({bore} if bore else set())
     if len(used) != 6 + bool(bore) + (px != py):
-        return {}                       # one param in two roles: left as it is
+        return None                     # one param in two roles: left as it is
+    return grid, plate, bore
+
+
+def bore_skip(source: str, prog, params) -> tuple[int, int, str] | None:
+    """``(first line, last line, condition)`` (0-based) of the body of a grid's inner loop
+    that a bore on the grid's centre wraps in ``if CONDITION { ... }``: with odd counts both
+    ways the grid's middle hole sits on the bore's centre (``--set`` takes any whole count,
+    whatever the slider's step), and the condition leaves that one hole out.  None without a
+    bore, or when the body's statements do not stand on lines of their own."""
+    parts = _grid_parts(source, prog, params)
+    if parts is None or parts[2] is None:
+        return None
+    (_, nx, _), (_, ny, _), _, _, inner, (vx, vy) = parts[0]
+    stmts = inner.body.stmts
+    if not stmts:
+        return None
+    first, last = stmts[0].span, stmts[-1].span
+    head = source[source.rfind("\n", 0, first.start) + 1:first.start]
+    end = source.find("\n", last.end)
+    tail = source[last.end:end if end >= 0 else len(source)]
+    if head.strip() or tail.strip() or inner.span.line >= first.line \
+            or inner.span.end_line <= last.end_line:
+        return None
+    return (first.line - 1, last.end_line - 1,
+            f"2 * {vx} != {nx} - 1 or 2 * {vy} != {ny} - 1")
+
+
+def grid_ranges(source: str, prog, params) -> dict[str, str]:
+    """The ranges of a plate with a grid of holes about its centre (and a bore); {} without.
+    About a bore, the counts go by 1 where :func:`bore_skip` can leave out the hole on the
+    bore (odd counts both ways), else by 2 from 2 (and an odd ``--set`` count still puts a
+    hole on the bore)."""
+    parts = _grid_parts(source, prog, params)
+    if parts is None:
+        return {}
+    ((bx, nx, px), (by, ny, py), d, hole, _, _), (_, w, h, _), bore = parts
+    used = {w, h, d, nx, ny, px, py} | ({bore} if bore else set())
     v = {k: params[k].value.value for k in used}
-    if bore and (v[nx] % 2 or v[ny] % 2):
+    skips = bool(bore) and bore_skip(source, prog, params) is not None
+    if bore and not skips and (v[nx] % 2 or v[ny] % 2):
         return {}                       # a hole on the bore's centre: nothing to keep
     lo_d, lo_b = v[d] / 4, (v[bore] / 4 if bore else 0.0)
     wall, two = _fmt(WALL), _fmt(2 * WALL)
@@ -179,7 +219,8 @@ def grid_ranges(source: str, prog, params) -> dict[str, str]:
         cap = max(COUNT_CAP, 2 * int(v[n]))
         fit = f"({side} - {d} - {two} mm) / ({pitch_min} + {_fmt(EPS)} mm)"
         out[n] = (f", min = 2, max = min({cap}, 2 * floor(({fit} + 1) / 2)), step = 2"
-                  if bore else f", min = 1, max = min({cap}, floor({fit}) + 1)")
+                  if bore and not skips else
+                  f", min = {2 if bore else 1}, max = min({cap}, floor({fit}) + 1)")
     spans = [f"({side} - {d} - {two} mm) / max({n} - 1, 1)"
              for n, side, p in ((nx, w, px), (ny, h, py)) if p == px]
     out[px] = f", min = {pitch_min}, max = " + (spans[0] if len(spans) == 1 else

@@ -24,7 +24,7 @@ Not part of the stable API.
 from __future__ import annotations
 
 from .. import ast as A
-from .plate_relations import corner_ranges, grid_ranges
+from .plate_relations import bore_skip, corner_ranges, grid_ranges
 from .relation_syntax import WALL, _circles, _fmt, _kw, _name, _params, _text
 
 __all__ = ["WALL", "flange_ranges", "with_relations"]
@@ -106,7 +106,7 @@ _FINDERS = (   # the first that finds its relations in the program writes them
                     "inside the edge and clear of the bore, and as many fit as its slider offers"),
     (grid_ranges, "the hole grid stays centred on the plate as its size changes: its holes "
                   "stay {wall} mm inside the edges and clear of each other and of a bore, and "
-                  "as many fit as its sliders offer"),
+                  "as many fit as its sliders offer{skip}"),
     (corner_ranges, "the corner holes keep their inset as the plate's size changes: each "
                     "stays {wall} mm inside both edges, clear of the others"))
 
@@ -130,6 +130,9 @@ def with_relations(program: str, path: str = "main.aidl") -> tuple[str, list[str
     else:
         return program, []
     lines = program.splitlines(keepends=True)
+    skip = bore_skip(program, prog, params) if find is grid_ranges else None
+    if skip is not None:
+        _wrap(lines, *skip)
     decls = [s for s in prog.stmts if isinstance(s, A.ParamDecl)]
     rows = {s.name: s.span.line - 1 for s in decls}
     if any(s.span.line != s.span.end_line for s in decls if s.name in ranges):
@@ -147,7 +150,22 @@ def with_relations(program: str, path: str = "main.aidl") -> tuple[str, list[str
     text = "".join(new)
     if not _holds(text, path):
         return program, []
-    return text, [note.format(wall=_fmt(WALL))]
+    return text, [note.format(wall=_fmt(WALL), skip=(
+        " (at odd counts both ways, the hole that would fall on the bore is left out)"
+        if skip else ""))]
+
+
+def _wrap(lines: list[str], first: int, last: int, condition: str) -> None:
+    """Lines ``first``..``last`` of ``lines`` inside ``if condition { ... }``, one level in
+    (each element may then hold several lines: the count of elements stays)."""
+    pad = lines[first][:len(lines[first]) - len(lines[first].lstrip())]
+    for k in range(first, last + 1):
+        if lines[k].strip():
+            lines[k] = "    " + lines[k]
+    if not lines[last].endswith("\n"):
+        lines[last] += "\n"
+    lines[first] = f"{pad}if {condition} {{  # no hole on the bore\n" + lines[first]
+    lines[last] += f"{pad}}}\n"
 
 
 def _ranged(line: str, decl, source: str, options: str) -> str:
