@@ -21,7 +21,7 @@ from hypothesis import strategies as st
 
 from aidl_lang.studio import compiler
 from aidl_lang.studio.relations import WALL, with_relations
-from maker_drawings import flange, nema17
+from maker_drawings import flange, nema17, rpi
 
 ezdxf = pytest.importorskip("ezdxf")
 
@@ -157,7 +157,8 @@ def plates(tmp_path_factory):
     for name, data in (("nema17", nema17()),
                        ("grid", grid_plate()),
                        ("corners", corner_plate()),
-                       ("nema17_42", nema17(42.0, 42.0))):
+                       ("nema17_42", nema17(42.0, 42.0)),
+                       ("rpi", rpi())):
         (folder / f"{name}.dxf").write_bytes(data)
         doc = compiler.import_upload(str(folder), f"{name}.dxf", True)
         assert "program" in doc, doc
@@ -239,9 +240,9 @@ def test_a_motor_face_s_corner_holes_keep_their_inset_and_clear_the_bore(plates)
         assert math.hypot(x - 15, y - 15) - r - 11 >= WALL - 1e-6
 
 
-@settings(max_examples=9, deadline=None, derandomize=True,
+@settings(max_examples=10, deadline=None, derandomize=True,
           suppress_health_check=[HealthCheck.function_scoped_fixture])
-@given(name=st.sampled_from(["nema17", "grid", "corners", "nema17_42"]),
+@given(name=st.sampled_from(["nema17", "grid", "corners", "nema17_42", "rpi"]),
        width=st.floats(0, 1), height=st.floats(0, 1), d=st.floats(0.8, 12),
        other=st.floats(1, 60), n=st.integers(1, 8))
 def test_at_any_plate_size_the_holes_stay_inside_and_in_their_pattern(plates, name, width,
@@ -278,8 +279,11 @@ def test_at_any_plate_size_the_holes_stay_inside_and_in_their_pattern(plates, na
     counts = [v[k] for k in v if k.endswith(("_cols", "_rows"))]
     if counts:                          # odd both ways about a bore: none on the bore
         assert len(holes) == counts[0] * counts[1] - (bool(bore) and counts[0] * counts[1] % 2)
-        assert (sum(h[0] for h in holes) / len(holes), sum(h[1] for h in holes) / len(holes)) \
-            == pytest.approx(((x0 + x1) / 2, (y0 + y1) / 2))
+        mid = (sum(h[0] for h in holes) / len(holes), sum(h[1] for h in holes) / len(holes))
+        if name == "rpi":               # its first column 8 mm from the left edge
+            assert (min(h[0] for h in holes) - x0, mid[1]) == pytest.approx((8, (y0 + y1) / 2))
+        else:
+            assert mid == pytest.approx(((x0 + x1) / 2, (y0 + y1) / 2))
     else:
         inset = next(v[k] for k in v if k.endswith("inset"))
         assert len(holes) == 4
@@ -322,3 +326,28 @@ def test_every_count_the_ranges_allow_keeps_the_holes_off_the_bore(plates, tmp_p
                 assert min(x - box[0], box[2] - x, y - box[1], box[3] - y) >= rad + WALL - 1e-6
                 for x2, y2, r2 in holes[i + 1:] + [bore]:
                     assert math.hypot(x - x2, y - y2) >= rad + r2 + WALL - 1e-6
+
+
+def test_a_pi_mount_s_holes_keep_their_edge_and_stay_inside(plates):
+    """Issue 92: a grid off the plate's centre (a Raspberry Pi's four 2.7 mm holes, 58 x 49
+    mm apart, the first column 8 mm from the left edge of a 160 x 70 plate, centred on its
+    height) had no relation: at 40 mm wide its right column sat at x = 66, off the plate.
+    Now the x pitch follows the width from the end member (at most 40 - 8 - 1.35 - 1 =
+    29.65 mm: 29.2 on its step), the hole size stays under 2 (8 - 1) mm, and the DXF ezdxf
+    reads has the first column at x = 8 and the last 1 mm or more inside the right edge."""
+    folder, docs = plates
+    doc = docs["rpi"]
+    assert any("keeps its end 8 mm from the left edge and stays centred on the height" in n
+               for n in doc["notes"]), doc["notes"]
+    src = doc["program"]
+    assert "holes_pitch_x = 58 mm, min = holes_d + 1 mm, max = (width - 8 mm - holes_d / 2 " \
+           "- 1 mm) / max(holes_cols - 1, 1)" in src
+    view = compiler.view(OrderedDict(), "r", folder, src, {"width": "40mm"})
+    assert view["ok"] and not [d for d in view["diagnostics"] if d["severity"] == "warning"]
+    assert view["clamped"] == {"holes_pitch_x": pytest.approx(29.2)}
+    box, circles = outline_and_holes(compiler.download(folder, src, view["values"], "dxf",
+                                                       {})[0])
+    assert box == pytest.approx((0, 0, 40, 70))
+    assert sorted((round(x, 6), round(y, 6)) for x, y, _ in circles) == \
+        [(8, 10.5), (8, 59.5), (37.2, 10.5), (37.2, 59.5)]
+    assert 40 - max(x + r for x, _, r in circles) >= WALL

@@ -9,8 +9,13 @@ the program's syntax (never in its param names).
   written, or a name assigned it; ``PX`` and ``PY`` may be one param) and, optional, a bore
   ``Circle(center=C, diameter=B)``.  The grid stays centred (the import wrote it about the
   centre) and :data:`~.relation_syntax.WALL` inside the edges; its holes clear each other and
-  the bore; a count fits the plate at the smallest pitch (with a bore the counts go by 2, so
-  that no hole comes onto it).
+  the bore; a count fits the plate at the smallest pitch.  With a bore the loop's body is
+  wrapped in ``if 2 * i != NX - 1 or 2 * j != NY - 1`` (:func:`bore_skip`): odd counts both
+  ways would put the middle hole on the bore, and ``--set`` takes any whole count.
+* the same grid from an end member along either axis (a Raspberry Pi's holes 8 mm from the
+  left edge, centred on the height: ``8 + i * PX``, or ``W - 8 + (i - (NX - 1)) * PX`` from
+  the right edge) on a plate whose corner is at the origin (centre ``(W / 2, H / 2)``): the
+  end member keeps its distance, the row ``WALL`` inside the far edge (no bore).
 * holes at the plate's corners, ``CornerPattern(holes, body, inset=I)`` of a ``hole`` with a
   ``Circle(..., diameter=D)``: the inset keeps each hole ``WALL`` inside both edges and the
   holes clear of each other.
@@ -91,10 +96,48 @@ def _ranged_loop(node, params):
     return None
 
 
+def _from_end(expr, var: str, params):
+    """``(kind, a, count, pitch, side)`` of a row from its end member ``a`` mm from an edge:
+    ``a + var * pitch`` (kind ``"low"``, side None: from the edge at 0) or ``side - a + (var
+    - (count - 1)) * pitch`` (``"high"``: from the edge at ``side``, a param), ``a`` a number
+    in mm; or None (count None for ``"low"``: the loop's)."""
+    if not (isinstance(expr, A.BinOp) and expr.op == "+" and isinstance(expr.right, A.BinOp)
+            and expr.right.op == "*"):
+        return None
+    left, k, pitch = expr.left, expr.right.left, _name(expr.right.right, params)
+    if not pitch:
+        return None
+    if isinstance(left, A.Num) and left.unit in (None, "mm") and isinstance(k, A.Name) \
+            and k.id == var:
+        return "low", float(left.value), None, pitch, None
+    if isinstance(left, A.BinOp) and left.op == "-" and _name(left.left, params) \
+            and isinstance(left.right, A.Num) and left.right.unit in (None, "mm") \
+            and isinstance(k, A.BinOp) and k.op == "-" and isinstance(k.left, A.Name) \
+            and k.left.id == var and isinstance(k.right, A.BinOp) and k.right.op == "-" \
+            and _name(k.right.left, params) and isinstance(k.right.right, A.Num) \
+            and k.right.right.value == 1:
+        return "high", float(left.right.value), k.right.left.id, pitch, left.left.id
+    return None
+
+
+def _axis(source, expr, loops: dict, params):
+    """One coordinate of a grid's hole: ``("mid", base text, count, pitch, var)`` about its
+    middle (:func:`_about_middle`), ``("low" | "high", a, count, pitch, var, side)`` from an
+    end member (:func:`_from_end`), or None."""
+    for var, count in loops.items():
+        m = _about_middle(expr, var, params)
+        if m is not None and m[1] == count:
+            return "mid", _text(source, m[0]), count, m[2], var
+        e = _from_end(expr, var, params)
+        if e is not None and e[2] in (None, count):
+            return e[0], e[1], count, e[3], var, e[4]
+    return None
+
+
 def _grid(source, prog, params, holes):
-    """``(x axis (base text, count, pitch), y axis, D, the Circle, the inner loop, (x's loop
-    variable, y's))`` of the first two nested loops of a hole ``Circle`` placed about the
-    middle of both, or None."""
+    """``(x axis, y axis (of :func:`_axis`), D, the Circle, the inner loop)`` of the first two
+    nested loops of a hole ``Circle`` placed about the middle of both or from an end member,
+    or None."""
     for outer in (n for n in A.walk(prog) if isinstance(n, A.For)):
         o = _ranged_loop(outer, params)
         for inner in (n for n in A.walk(outer.body) if isinstance(n, A.For)) if o else ():
@@ -107,20 +150,10 @@ def _grid(source, prog, params, holes):
                 if id(c) not in holes or not d or not isinstance(at, A.TupleLit) \
                         or len(at.items) != 2:
                     continue
-                axes = []
-                for e in at.items:
-                    m = next((_about_middle(e, v, params) for v in loops
-                              if _about_middle(e, v, params)), None)
-                    if m is None or loops.get(_loop_var(e)) != m[1]:
-                        break
-                    axes.append((_text(source, m[0]), m[1], m[2]))
-                if len(axes) == 2 and axes[0][1] != axes[1][1]:
-                    return axes[0], axes[1], d, c, inner, tuple(map(_loop_var, at.items))
+                axes = [_axis(source, e, loops, params) for e in at.items]
+                if None not in axes and axes[0][2] != axes[1][2] and axes[0][4] != axes[1][4]:
+                    return axes[0], axes[1], d, c, inner
     return None
-
-
-def _loop_var(expr) -> str:
-    return expr.right.left.left.id
 
 
 def _centre_texts(source, prog, centre, part: int | None) -> set:
@@ -136,15 +169,23 @@ def _centre_texts(source, prog, centre, part: int | None) -> set:
 
 def _grid_parts(source, prog, params):
     """``(grid of :func:`_grid`, plate of :func:`_plate`, bore param or None)`` of a plate
-    with a grid of holes about its centre (and a bore on it), or None."""
+    with a grid of holes about its centre (and a bore on it) or from an end member at a set
+    distance from an edge along either axis (then no bore), or None."""
     holes = _in_holes(prog)
     grid = _grid(source, prog, params, holes)
     if grid is None:
         return None
-    (bx, nx, px), (by, ny, py), d, hole = grid[:4]
-    plate = next((p for p in _plate(source, prog, params)
-                  if bx in _centre_texts(source, prog, p[3], 0)
-                  and by in _centre_texts(source, prog, p[3], 1)), None)
+    ax, ay, d, hole = grid[:4]
+
+    def fits(p, axis, a) -> bool:
+        side = p[1 + axis]
+        if a[0] == "mid":
+            return a[1] in _centre_texts(source, prog, p[3], axis)
+        # an end member from the edge at 0 (the plate's centre at side / 2) or at `side`
+        return _text(source, p[3].items[axis]) == f"{side} / 2" and a[5] in (None, side)
+
+    plate = next((p for p in _plate(source, prog, params) if fits(p, 0, ax) and fits(p, 1, ay)),
+                 None)
     if plate is None:
         return None
     _, w, h, centre = plate
@@ -153,10 +194,12 @@ def _grid_parts(source, prog, params):
                               and _text(source, _kw(c, "center") or c) in same
                               for b in [_name(_kw(c, "diameter"), params)]
                               if b and b not in (d, w, h)), (None, None))
+    if bore and (ax[0], ay[0]) != ("mid", "mid"):
+        return None                     # a bore beside a grid off the centre: not related
     if not _only(prog, (hole, bore_circle)):
         return None
-    used = {w, h, d, nx, ny, px, py} | ({bore} if bore else set())
-    if len(used) != 6 + bool(bore) + (px != py):
+    used = {w, h, d, ax[2], ay[2], ax[3], ay[3]} | ({bore} if bore else set())
+    if len(used) != 6 + bool(bore) + (ax[3] != ay[3]):
         return None                     # one param in two roles: left as it is
     return grid, plate, bore
 
@@ -170,7 +213,8 @@ def bore_skip(source: str, prog, params) -> tuple[int, int, str] | None:
     parts = _grid_parts(source, prog, params)
     if parts is None or parts[2] is None:
         return None
-    (_, nx, _), (_, ny, _), _, _, inner, (vx, vy) = parts[0]
+    (ax, ay, _, _, inner), nx, ny = parts[0], parts[0][0][2], parts[0][1][2]
+    vx, vy = ax[4], ay[4]
     stmts = inner.body.stmts
     if not stmts:
         return None
@@ -185,15 +229,37 @@ def bore_skip(source: str, prog, params) -> tuple[int, int, str] | None:
             f"2 * {vx} != {nx} - 1 or 2 * {vy} != {ny} - 1")
 
 
+def grid_place(source: str, prog, params) -> str:
+    """How the grid keeps its place as the plate's size changes, in words (the studio's
+    note): ``stays centred on the plate``, or from an end member along an axis (``keeps its
+    end 8 mm from the left edge and stays centred on the height``)."""
+    parts = _grid_parts(source, prog, params)
+    if parts is None or (parts[0][0][0], parts[0][1][0]) == ("mid", "mid"):
+        return "stays centred on the plate"
+    ends, mids = [], []
+    for a, edges, size in ((parts[0][0], ("left", "right"), "width"),
+                           (parts[0][1], ("bottom", "top"), "height")):
+        if a[0] == "mid":
+            mids.append(f"stays centred on the {size}")
+        else:
+            ends.append(f"{_fmt(a[1])} mm from the {edges[a[0] == 'high']} edge")
+    return " and ".join([f"keeps its end {' and '.join(ends)}"] + mids)
+
+
 def grid_ranges(source: str, prog, params) -> dict[str, str]:
-    """The ranges of a plate with a grid of holes about its centre (and a bore); {} without.
-    About a bore, the counts go by 1 where :func:`bore_skip` can leave out the hole on the
-    bore (odd counts both ways), else by 2 from 2 (and an odd ``--set`` count still puts a
-    hole on the bore)."""
+    """The ranges of a plate with a grid of holes about its centre (and a bore) or from an
+    end member a set distance ``a`` from an edge (a Raspberry Pi's four holes 8 mm from the
+    left edge, centred on the height); {} without.  Along an axis about the middle the grid
+    spans at most ``S - D - 2 WALL`` of the side ``S``; from an end member at most ``S - a -
+    D / 2 - WALL``, and the hole keeps ``WALL`` to its edge (``D <= 2 (a - WALL)``).  About a
+    bore, the counts go by 1 where :func:`bore_skip` can leave out the hole on the bore (odd
+    counts both ways), else by 2 from 2 (and an odd ``--set`` count still puts a hole on the
+    bore)."""
     parts = _grid_parts(source, prog, params)
     if parts is None:
         return {}
-    ((bx, nx, px), (by, ny, py), d, hole, _, _), (_, w, h, _), bore = parts
+    (ax, ay, d, hole, _), (_, w, h, _), bore = parts
+    nx, px, ny, py = ax[2], ax[3], ay[2], ay[3]
     used = {w, h, d, nx, ny, px, py} | ({bore} if bore else set())
     v = {k: params[k].value.value for k in used}
     skips = bool(bore) and bore_skip(source, prog, params) is not None
@@ -201,32 +267,48 @@ def grid_ranges(source: str, prog, params) -> dict[str, str]:
         return {}                       # a hole on the bore's centre: nothing to keep
     lo_d, lo_b = v[d] / 4, (v[bore] / 4 if bore else 0.0)
     wall, two = _fmt(WALL), _fmt(2 * WALL)
-    if bore:                # each bound EPS inside the next one's: see EPS
-        least = lo_b + 2 * lo_d + 4 * WALL + 3 * EPS
+    ends = [a[1] for a in (ax, ay) if a[0] != "mid"]
+    if any(2 * (a - WALL) < lo_d + EPS for a in ends):
+        return {}                       # the drawing's hole is (nearly) at its edge
+    avail, least = {}, {}
+    for a, side in ((ax, w), (ay, h)):  # each bound EPS inside the next one's: see EPS
+        if a[0] == "mid":
+            avail[side] = f"{side} - {d} - {two} mm"
+            least[side] = lo_b + 2 * lo_d + 4 * WALL + 3 * EPS if bore else \
+                2 * lo_d + 3 * WALL + 2 * EPS
+        else:
+            avail[side] = f"{side} - {_fmt(a[1])} mm - {d} / 2 - {wall} mm"
+            least[side] = a[1] + 2 * WALL + 1.5 * (lo_d + EPS) + 2 * EPS
+    if bore:
         d_max = f"(min({w}, {h}) - {_fmt(lo_b + 4 * WALL + 2 * EPS)} mm) / 2"
         pitch_min = f"{bore} + {d} + {two} mm"
-    else:
-        least = 2 * lo_d + 3 * WALL + 2 * EPS
+    elif not ends:
         d_max = f"(min({w}, {h}) - {_fmt(3 * WALL + EPS)} mm) / 2"
         pitch_min = f"{d} + {wall} mm"
-    out = {w: f", min = {_fmt(least)} mm, max = {_fmt(2 * v[w])} mm",
-           h: f", min = {_fmt(least)} mm, max = {_fmt(2 * v[h])} mm",
+    else:
+        terms = [f"({side} - {_fmt(3 * WALL + EPS)} mm) / 2" if a[0] == "mid" else
+                 f"2 * ({side} - {_fmt(a[1] + 2 * WALL + EPS)} mm) / 3"
+                 for a, side in ((ax, w), (ay, h))]
+        d_max = f"min({', '.join(terms)}, {_fmt(2 * (min(ends) - WALL))} mm)"
+        pitch_min = f"{d} + {wall} mm"
+    out = {w: f", min = {_fmt(least[w])} mm, max = {_fmt(2 * v[w])} mm",
+           h: f", min = {_fmt(least[h])} mm, max = {_fmt(2 * v[h])} mm",
            d: f", min = {_fmt(lo_d)} mm, max = {d_max}"}
     if bore:
         out[bore] = f", min = {_fmt(lo_b)} mm, max = min({w}, {h}) - 2 * {d} - " \
                     f"{_fmt(4 * WALL + EPS)} mm"
     for n, side in ((nx, w), (ny, h)):     # as many as fit at the smallest pitch (and EPS)
         cap = max(COUNT_CAP, 2 * int(v[n]))
-        fit = f"({side} - {d} - {two} mm) / ({pitch_min} + {_fmt(EPS)} mm)"
+        fit = f"({avail[side]}) / ({pitch_min} + {_fmt(EPS)} mm)"
         out[n] = (f", min = 2, max = min({cap}, 2 * floor(({fit} + 1) / 2)), step = 2"
                   if bore and not skips else
                   f", min = {2 if bore else 1}, max = min({cap}, floor({fit}) + 1)")
-    spans = [f"({side} - {d} - {two} mm) / max({n} - 1, 1)"
+    spans = [f"({avail[side]}) / max({n} - 1, 1)"
              for n, side, p in ((nx, w, px), (ny, h, py)) if p == px]
     out[px] = f", min = {pitch_min}, max = " + (spans[0] if len(spans) == 1 else
                                                   f"min({', '.join(spans)})")
     if py != px:
-        out[py] = f", min = {pitch_min}, max = ({h} - {d} - {two} mm) / max({ny} - 1, 1)"
+        out[py] = f", min = {pitch_min}, max = ({avail[h]}) / max({ny} - 1, 1)"
     return out
 
 

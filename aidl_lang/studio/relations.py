@@ -24,7 +24,7 @@ Not part of the stable API.
 from __future__ import annotations
 
 from .. import ast as A
-from .plate_relations import bore_skip, corner_ranges, grid_ranges
+from .plate_relations import bore_skip, corner_ranges, grid_place, grid_ranges
 from .relation_syntax import WALL, _circles, _fmt, _kw, _name, _params, _text
 
 __all__ = ["WALL", "flange_ranges", "with_relations"]
@@ -104,7 +104,7 @@ def flange_ranges(source: str, prog, params) -> dict[str, str]:
 _FINDERS = (   # the first that finds its relations in the program writes them
     (flange_ranges, "the bolt circle follows the outline's size: its holes stay {wall} mm "
                     "inside the edge and clear of the bore, and as many fit as its slider offers"),
-    (grid_ranges, "the hole grid stays centred on the plate as its size changes: its holes "
+    (grid_ranges, "the hole grid {place} as the plate's size changes: its holes "
                   "stay {wall} mm inside the edges and clear of each other and of a bore, and "
                   "as many fit as its sliders offer{skip}"),
     (corner_ranges, "the corner holes keep their inset as the plate's size changes: each "
@@ -150,7 +150,8 @@ def with_relations(program: str, path: str = "main.aidl") -> tuple[str, list[str
     text = "".join(new)
     if not _holds(text, path):
         return program, []
-    return text, [note.format(wall=_fmt(WALL), skip=(
+    place = grid_place(program, prog, params) if find is grid_ranges else ""
+    return text, [note.format(wall=_fmt(WALL), place=place, skip=(
         " (at odd counts both ways, the hole that would fall on the bore is left out)"
         if skip else ""))]
 
