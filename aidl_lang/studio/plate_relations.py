@@ -274,13 +274,13 @@ def grid_ranges(source: str, prog, params) -> dict[str, str]:
     for a, side in ((ax, w), (ay, h)):  # each bound EPS inside the next one's: see EPS
         if a[0] == "mid":
             avail[side] = f"{side} - {d} - {two} mm"
-            least[side] = lo_b + 2 * lo_d + 4 * WALL + 3 * EPS if bore else \
+            least[side] = lo_b + 2 * lo_d + 4 * WALL + 4 * EPS if bore else \
                 2 * lo_d + 3 * WALL + 2 * EPS
         else:
             avail[side] = f"{side} - {_fmt(a[1])} mm - {d} / 2 - {wall} mm"
             least[side] = a[1] + 2 * WALL + 1.5 * (lo_d + EPS) + 2 * EPS
     if bore:
-        d_max = f"(min({w}, {h}) - {_fmt(lo_b + 4 * WALL + 2 * EPS)} mm) / 2"
+        d_max = f"(min({w}, {h}) - {_fmt(lo_b + 4 * WALL + 3 * EPS)} mm) / 2"
         pitch_min = f"{bore} + {d} + {two} mm"
     elif not ends:
         d_max = f"(min({w}, {h}) - {_fmt(3 * WALL + EPS)} mm) / 2"
@@ -294,9 +294,9 @@ def grid_ranges(source: str, prog, params) -> dict[str, str]:
     out = {w: f", min = {_fmt(least[w])} mm, max = {_fmt(2 * v[w])} mm",
            h: f", min = {_fmt(least[h])} mm, max = {_fmt(2 * v[h])} mm",
            d: f", min = {_fmt(lo_d)} mm, max = {d_max}"}
-    if bore:
+    if bore:                # 2 EPS: at the bore's max two holes a side still fit by EPS
         out[bore] = f", min = {_fmt(lo_b)} mm, max = min({w}, {h}) - 2 * {d} - " \
-                    f"{_fmt(4 * WALL + EPS)} mm"
+                    f"{_fmt(4 * WALL + 2 * EPS)} mm"
     for n, side in ((nx, w), (ny, h)):     # as many as fit at the smallest pitch (and EPS)
         cap = max(COUNT_CAP, 2 * int(v[n]))
         fit = f"({avail[side]}) / ({pitch_min} + {_fmt(EPS)} mm)"
