@@ -21,7 +21,7 @@ from hypothesis import strategies as st
 
 from aidl_lang.studio import compiler
 from aidl_lang.studio.relations import WALL, with_relations
-from maker_drawings import flange, nema17, rpi
+from maker_drawings import flange, lcd_panel, nema17, rpi
 
 ezdxf = pytest.importorskip("ezdxf")
 
@@ -158,7 +158,8 @@ def plates(tmp_path_factory):
                        ("grid", grid_plate()),
                        ("corners", corner_plate()),
                        ("nema17_42", nema17(42.0, 42.0)),
-                       ("rpi", rpi())):
+                       ("rpi", rpi()),
+                       ("lcd", lcd_panel())):
         (folder / f"{name}.dxf").write_bytes(data)
         doc = compiler.import_upload(str(folder), f"{name}.dxf", True)
         assert "program" in doc, doc
@@ -364,3 +365,62 @@ def test_the_related_program_sweeps_clean(plates, name, tmp_path):
     rep = sweep(plates[1][name]["program"], str(tmp_path / "main.aidl"))
     assert rep.ok and rep.skipped == 0 and rep.findings == [], \
         [f.diagnostic.message for f in rep.findings]
+
+
+def _rect_gap(x, y, box) -> float:
+    """How far the point (x, y) is outside the box ``(x0, y0, x1, y1)``."""
+    return math.hypot(max(box[0] - x, 0, x - box[2]), max(box[1] - y, 0, y - box[3]))
+
+
+@settings(max_examples=8, deadline=None, derandomize=True,
+          suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(k=st.lists(st.floats(0, 1), min_size=7, max_size=7))
+def test_an_lcd_bezel_keeps_its_window_and_screws_at_any_slider_values(plates, k):
+    """Issue 92: an LCD panel (140 x 90, a 71 x 24 window 35 mm below the top edge, centred
+    on the width, four 3 mm screws 75 x 31 apart round it: each 2.5 mm clear of the window's
+    corner, though 0.5 mm of the window's side in x) had no relation: at 60 mm wide the screws
+    and the window left the plate.  Now, at sliders anywhere in their spans (fractions ``k``
+    of them, the dependent ones moved into their ranges), the DXF ezdxf reads has the window
+    centred on the width and 35 mm from the top, it and the four screws 1 mm inside the
+    edges, each screw 1 mm clear of the window.  8 settings, about 1 s of CPU (80 outside
+    the suite passed)."""
+    folder, docs = plates
+    doc = docs["lcd"]
+    assert any("35 mm from the top edge" in n for n in doc["notes"]), doc["notes"]
+    src = doc["program"]
+    rows = compiler.view(OrderedDict(), "l", folder, src, {})["params"]
+    values = {p["name"]: f"{p['min'] + f * (p['max'] - p['min']):.3f}mm"
+              for p, f in zip([p for p in rows if p["unit"]], k)}
+    view = compiler.view(OrderedDict(), "l", folder, src, values)
+    assert view["ok"], [x["message"] for x in view["diagnostics"]]
+    assert not [x for x in view["diagnostics"] if x["severity"] == "warning"]
+    v = {p["name"]: p["value"] for p in view["params"]}
+    got = compiler.download(folder, src, view["values"], "dxf", {})
+    d = ezdxf.read(io.StringIO(got[0].decode()))
+    boxes = sorted(((min(p[0] for p in pts), min(p[1] for p in pts), max(p[0] for p in pts),
+                     max(p[1] for p in pts)) for e in d.modelspace().query("LWPOLYLINE")
+                    for pts in [list(e.get_points("xy"))]), key=lambda b: b[2] - b[0])
+    window, plate = boxes
+    assert plate == pytest.approx((0, 0, v["width"], v["height"]))
+    assert ((window[0] + window[2]) / 2, (window[1] + window[3]) / 2) == \
+        pytest.approx((v["width"] / 2, v["height"] - 35))
+    assert min(window[0], window[1], v["width"] - window[2], v["height"] - window[3]) \
+        >= WALL - 1e-6
+    screws = [(c.dxf.center.x, c.dxf.center.y, c.dxf.radius)
+              for c in d.modelspace().query("CIRCLE")]
+    assert len(screws) == 4
+    for x, y, r in screws:
+        assert min(x, y, v["width"] - x, v["height"] - y) >= r + WALL - 1e-6
+        assert _rect_gap(x, y, window) >= r + WALL - 1e-6
+
+
+def test_an_lcd_bezel_at_60_mm_keeps_its_screws_round_its_window(plates):
+    """At 60 mm wide (drawn 140) the window follows to 57.75 mm (at most 60 - 2) and the
+    screws' x pitch to 55 mm (at most 60 - 3 - 2); their y pitch stays 31 mm (at least 24 +
+    2 x 2.5: the screws now above and below the window, 2 mm clear of it).  Without
+    the ranges: the four screws lie off the plate (W0502) and the window cuts it in two."""
+    folder, docs = plates
+    view = compiler.view(OrderedDict(), "l", folder, docs["lcd"]["program"], {"width": "60mm"})
+    assert view["ok"] and view["clamped"] == {"window_width": pytest.approx(57.75),
+                                              "screw_holes_pitch_x": pytest.approx(55)}
+    assert not [x for x in view["diagnostics"] if x["severity"] == "warning"]

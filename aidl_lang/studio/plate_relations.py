@@ -16,6 +16,10 @@ the program's syntax (never in its param names).
   left edge, centred on the height: ``8 + i * PX``, or ``W - 8 + (i - (NX - 1)) * PX`` from
   the right edge) on a plate whose corner is at the origin (centre ``(W / 2, H / 2)``): the
   end member keeps its distance, the row ``WALL`` inside the far edge (no bore).
+* a panel's rectangular window ``Rectangle(center=C, width=WW, height=WH)`` (a hole) with a
+  2 x 2 grid of screws about ``C = (X, Y)``, ``X`` and ``Y`` on the plate's centre line or a
+  number of mm from an edge (an LCD's bezel, :func:`window_ranges`): the window and the
+  screws stay ``WALL`` inside the edges and each screw ``WALL`` clear of the window's corner.
 * holes at the plate's corners, ``CornerPattern(holes, body, inset=I)`` of a ``hole`` with a
   ``Circle(..., diameter=D)``: the inset keeps each hole ``WALL`` inside both edges and the
   holes clear of each other.
@@ -370,3 +374,112 @@ def corner_ranges(source: str, prog, params) -> dict[str, str]:
                        f"max = min(({s_} - {d} - {_fmt(WALL)} mm) / 2, {s_} / 2 - "
                        f"({bore} + {d} + {_fmt(2 * WALL)} mm) / (2 * sqrt(2)))"}
     return {}
+
+
+def _anchor(source, expr, side: str):
+    """Where a coordinate ``expr`` of a point sits along a plate's side ``side`` (its
+    corner at the origin): ``("mid", None)`` at ``side / 2``, ``("low", c)`` at a number
+    ``c``, ``("high", c)`` at ``side - c``; or None."""
+    if _text(source, expr) == f"{side} / 2":
+        return "mid", None
+    if isinstance(expr, A.Num) and expr.unit in (None, "mm"):
+        return "low", float(expr.value)
+    if isinstance(expr, A.BinOp) and expr.op == "-" and isinstance(expr.left, A.Name) \
+            and expr.left.id == side and isinstance(expr.right, A.Num) \
+            and expr.right.unit in (None, "mm"):
+        return "high", float(expr.right.value)
+    return None
+
+
+def _window(source, prog, params):
+    """``(plate, window centre name, (x anchor, y anchor), window width, height, grid)`` of
+    a plate (its corner at the origin) with a rectangular ``hole`` window centred on a point
+    ``C = (X, Y)`` and a 2 x 2 grid of screw holes about ``C`` (an LCD's bezel), or None."""
+    holes = _in_holes(prog)
+    grid = _grid(source, prog, params, holes)
+    if grid is None or grid[0][0] != "mid" or grid[1][0] != "mid":
+        return None
+    points = {a.name: a.value for a in A.walk(prog) if isinstance(a, A.Assign)
+              and isinstance(a.value, A.TupleLit) and len(a.value.items) == 2}
+    for r in (n for n in A.walk(prog) if isinstance(n, A.Call) and id(n) in holes
+              and isinstance(n.func, A.Name) and n.func.id == "Rectangle"):
+        at = _kw(r, "center")
+        ww, wh = _name(_kw(r, "width"), params), _name(_kw(r, "height"), params)
+        if not (isinstance(at, A.Name) and at.id in points and ww and wh and not _kw(r, "rotation")
+                and (grid[0][1], grid[1][1]) == (f"{at.id}.x", f"{at.id}.y")):
+            continue
+        for plate in _plate(source, prog, params):
+            _, w, h, centre = plate
+            if _text(source, centre) != f"({w} / 2, {h} / 2)":
+                continue
+            anchors = (_anchor(source, points[at.id].items[0], w),
+                       _anchor(source, points[at.id].items[1], h))
+            if None not in anchors and _only(prog, (grid[3], r)):
+                return plate, at.id, anchors, ww, wh, grid
+    return None
+
+
+def _across(anchor, side: str) -> str:
+    """Twice the half-room about a point anchored ``anchor`` along ``side``, as text:
+    ``side`` (on the centre line), or ``2 * min(c, side - c)``."""
+    kind, c = anchor
+    if kind == "mid":
+        return side
+    return f"2 * min({_fmt(c)} mm, {side} - {_fmt(c)} mm)"
+
+
+def window_place(source: str, prog, params) -> str:
+    """Where the window and its screws stay, in words (the studio's note)."""
+    found = _window(source, prog, params)
+    if found is None:
+        return ""
+    said = []
+    for (kind, c), edges, size in zip(found[2], (("left", "right"), ("bottom", "top")),
+                                      ("width", "height")):
+        said.append(f"centred on the {size}" if kind == "mid" else
+                    f"{_fmt(c)} mm from the {edges[kind == 'high']} edge")
+    return " and ".join(said)
+
+
+def window_ranges(source: str, prog, params) -> dict[str, str]:
+    """The ranges of a panel with a rectangular window and a 2 x 2 grid of screws about its
+    centre (an LCD's bezel: the screws just beyond the window's corners), the window's centre
+    on the plate's centre line or a set distance ``c`` from an edge along each axis; {}
+    without.  With ``R`` the half-room about that centre (``S / 2``, or ``min(c, S - c)``):
+    the window and the screws stay ``WALL`` inside the edges (``ww <= 2 Rx - 2 WALL``, ``px
+    <= 2 Rx - D - 2 WALL``, the same in y), and each screw ``WALL`` clear of the window's
+    corner: ``py >= wh + 2 sqrt((D / 2 + WALL)^2 - max(px - ww, 0)^2 / 4)`` (its height then
+    keeps ``py``'s range open: ``wh <= 2 Ry - 2 D - 4 WALL``); the counts stay 2 (more
+    screws would sit on the window's sides)."""
+    found = _window(source, prog, params)
+    if found is None:
+        return {}
+    (_, w, h, _), _, (axx, axy), ww, wh, ((_, _, nx, px, _), (_, _, ny, py, _), d, _, _) = found
+    used = {w, h, d, ww, wh, nx, ny, px, py}
+    if len(used) != 9:
+        return {}
+    v = {k: params[k].value.value for k in used}
+    if (v[nx], v[ny]) != (2, 2):
+        return {}
+    lo_d, lo_ww, lo_wh = v[d] / 4, v[ww] / 4, v[wh] / 4
+    need = {w: max(2 * lo_d + 3 * WALL + 3 * EPS, lo_ww + 2 * WALL + EPS) / 2,
+            h: (2 * lo_d + 4 * WALL + lo_wh + 4 * EPS) / 2}
+    least = {}
+    for anchor, side in ((axx, w), (axy, h)):
+        kind, c = anchor
+        if kind != "mid" and c < need[side] + EPS:
+            return {}                   # the drawing's window sits too near its edge
+        least[side] = 2 * need[side] + EPS if kind == "mid" else c + need[side] + EPS
+    rx, ry = _across(axx, w), _across(axy, h)
+    wall = _fmt(WALL)
+    return {w: f", min = {_fmt(least[w])} mm, max = {_fmt(2 * v[w])} mm",
+            h: f", min = {_fmt(least[h])} mm, max = {_fmt(2 * v[h])} mm",
+            d: f", min = {_fmt(lo_d)} mm, max = min(({rx} - {_fmt(3 * WALL + EPS)} mm) / 2, "
+               f"({ry} - {_fmt(4 * WALL + lo_wh + 2 * EPS)} mm) / 2)",
+            ww: f", min = {_fmt(lo_ww)} mm, max = {rx} - {_fmt(2 * WALL)} mm",
+            wh: f", min = {_fmt(lo_wh)} mm, max = {ry} - 2 * {d} - {_fmt(4 * WALL + EPS)} mm",
+            nx: ", min = 2, max = 2", ny: ", min = 2, max = 2",
+            px: f", min = {d} + {wall} mm, max = {rx} - {d} - {_fmt(2 * WALL)} mm",
+            py: f", min = max({d} + {wall} mm, {wh} + 2 * sqrt(max(square({d} / 2 + {wall} mm) "
+                f"- square(max({px} - {ww}, 0 mm) / 2), 0 mm * 0 mm))), "
+                f"max = {ry} - {d} - {_fmt(2 * WALL)} mm"}

@@ -15,8 +15,9 @@ What is related (found in the program's syntax, never in its param names):
   :data:`WALL` inside the edge and clear of the bore, the bore inside the holes, and ``N``
   holes fit round the circle without touching.
 
-A rectangular plate's grid of holes about its centre, and its corner holes
-(:mod:`.plate_relations`), are related the same way.
+A rectangular plate's grid of holes about its centre or from an end member, a panel's window
+with its four screws, and its corner holes (:mod:`.plate_relations`), are related the same
+way.
 
 Anything else of the program is left as it is (its sliders keep their default spans).
 Not part of the stable API.
@@ -24,7 +25,8 @@ Not part of the stable API.
 from __future__ import annotations
 
 from .. import ast as A
-from .plate_relations import bore_skip, corner_ranges, grid_place, grid_ranges
+from .plate_relations import (bore_skip, corner_ranges, grid_place, grid_ranges, window_place,
+                              window_ranges)
 from .relation_syntax import WALL, _circles, _fmt, _kw, _name, _params, _text
 
 __all__ = ["WALL", "flange_ranges", "with_relations"]
@@ -108,7 +110,11 @@ _FINDERS = (   # the first that finds its relations in the program writes them
                   "stay {wall} mm inside the edges and clear of each other and of a bore, and "
                   "as many fit as its sliders offer{skip}"),
     (corner_ranges, "the corner holes keep their inset as the plate's size changes: each "
-                    "stays {wall} mm inside both edges, clear of the others"))
+                    "stays {wall} mm inside both edges, clear of the others"),
+    (window_ranges, "the window and its screws stay {place} as the plate's size changes: "
+                    "each {wall} mm inside the edges, the screws {wall} mm clear of the "
+                    "window's corners"))
+_PLACES = {grid_ranges: grid_place, window_ranges: window_place}
 
 
 def with_relations(program: str, path: str = "main.aidl") -> tuple[str, list[str]]:
@@ -150,7 +156,7 @@ def with_relations(program: str, path: str = "main.aidl") -> tuple[str, list[str
     text = "".join(new)
     if not _holds(text, path):
         return program, []
-    place = grid_place(program, prog, params) if find is grid_ranges else ""
+    place = _PLACES[find](program, prog, params) if find in _PLACES else ""
     return text, [note.format(wall=_fmt(WALL), place=place, skip=(
         " (at odd counts both ways, the hole that would fall on the bore is left out)"
         if skip else ""))]
