@@ -128,7 +128,7 @@ def test_law_the_rounded_tab_is_clean_at_every_slider_setting(w, fd, fl):
     length 29.2: the stem poked 0.23 mm past the round end's circle, which reached 20 mm below
     the base at width 50, length 30).  The round end is now a half disc on the stem (a
     RoundedRectangle), the length's range follows the width and the eye: no diagnostic at any
-    setting inside the form's ranges (15 compiles, about 0.2 s of CPU; 308 random settings
+    setting inside the form's ranges (15 compiles, about 0.5 s of CPU; 308 random settings
     outside the suite: none)."""
     import aidl_lang
     src = gallery.entry("generator/rounded_tab").source
