@@ -9,16 +9,18 @@
 # `module` (pitch diameter module * teeth, outer diameter module * (teeth + 2)),
 # is centered at (cx, cy), one tooth pointing along `phase` (0 deg: along +x).
 # A `bore` of 0 leaves the center solid. `backlash` thins every tooth by that
-# much along the pitch circle. Members: `pitch` and `tip` (construction
+# much along the pitch circle. `addendum` is the tip's height over the pitch
+# circle in modules (1: ISO 53; `ring_gear` cuts its spaces 1.25 deep). Members: `pitch` and `tip` (construction
 # circles of the pitch and outer diameters), `hub` (the root disk; the gear's
 # center is `hub.center`), `teeth_ring`, `bore_hole` (a hole, when the bore is not 0).
 def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
-              backlash=0 mm, phase=0 deg, cx=0 mm, cy=0 mm) -> solid {
+              backlash=0 mm, phase=0 deg, cx=0 mm, cy=0 mm, addendum=1) -> solid {
     assert teeth >= 3 and teeth == round(teeth), "a gear has a whole number of teeth, at least 3"
     assert module > 0 mm, "the module (the pitch diameter / teeth) is more than 0, e.g. 2 mm"
+    assert addendum > 0, "the addendum (the tip's height over the pitch circle, in modules) is more than 0, e.g. 1"
     pitch_r = module * teeth / 2
     base_r = pitch_r * cos(pressure_angle)
-    tip_r = pitch_r + module
+    tip_r = pitch_r + addendum * module
     root_r = pitch_r - 1.25 * module
     # the involute starts on the base circle, or just inside the root circle
     start_r = max(base_r, root_r - 0.1 * module)
@@ -31,7 +33,7 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
     start_half = half - t0 + atan(t0) / (1 rad)
     # tip_half > 0, written over the arguments alone (half - t1 + atan(t1) > 0), so that a
     # form's backlash slider ends where the teeth would come to a point
-    assert backlash < module * teeth * (pi / (2 * teeth) + tan(pressure_angle) - pressure_angle / (1 rad) - sqrt(square((teeth + 2) / (teeth * cos(pressure_angle))) - 1) + atan(sqrt(square((teeth + 2) / (teeth * cos(pressure_angle))) - 1)) / (1 rad)), "the teeth come to a point before the tip circle: use more teeth, a smaller pressure angle or less backlash"
+    assert backlash < module * teeth * (pi / (2 * teeth) + tan(pressure_angle) - pressure_angle / (1 rad) - sqrt(square((teeth + 2 * addendum) / (teeth * cos(pressure_angle))) - 1) + atan(sqrt(square((teeth + 2 * addendum) / (teeth * cos(pressure_angle))) - 1)) / (1 rad)), "the teeth come to a point before the tip circle: use more teeth, a smaller pressure angle or less backlash"
     assert root_r > bore / 2, "the bore is larger than the root circle"
     # a bore leaves a wall of 0.55 mm or more inside the root circle (module * (teeth - 2.5)
     # across; the forms' axles, W0507's 0.5 mm)
@@ -131,30 +133,40 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
 # An internal (ring) gear: `teeth` teeth of `module` pointing inward from an
 # annular plate, centered at (cx, cy). Its tooth spaces are an external
 # spur_gear's teeth (the same involute, `backlash` widening every space along
-# the pitch circle), its teeth cut back to the addendum circle
-# module * (teeth - 2) / 2, and the plate reaches `rim` past the roots
-# (outer diameter module * (teeth + 2.5) + 2 rim). At `phase` 0 deg a tooth
-# space points along +x. A pinion of z teeth meshes inside it at the centre
-# distance module * (teeth - z) / 2 (`planetary` builds a whole set).
+# the pitch circle) 1.25 modules deep (ISO 53's dedendum: a pinion's tips clear
+# the roots by 0.25 module), its teeth cut back to the addendum circle
+# module * (teeth - 2) / 2, or further out when the `pinion` (the teeth of the
+# smallest gear meshing inside it; 0: not given) would meet them below its base
+# circle, and the plate reaches `rim` past the roots (outer diameter
+# module * (teeth + 2.5) + 2 rim). At `phase` 0 deg a tooth space points along
+# +x. A pinion of z teeth meshes inside it at the centre distance
+# module * (teeth - z) / 2 (`planetary` builds a whole set).
 # Members: `body` (the plate's circle), `cut` (the hole: `cut.teeth`, the
 # spur_gear of the spaces, and `cut.tips`, the addendum circle), `pitch` (a
 # construction circle of the pitch diameter module * teeth).
 def ring_gear(teeth=48, module=2 mm, pressure_angle=20 deg, rim=6 mm, backlash=0.05 mm,
-              phase=0 deg, cx=0 mm, cy=0 mm) -> solid {
+              phase=0 deg, cx=0 mm, cy=0 mm, pinion=0) -> solid {
     assert teeth >= 10 and teeth == round(teeth), "a ring gear has a whole number of teeth, at least 10"
     assert module > 0 mm, "the module (the pitch diameter / teeth) is more than 0, e.g. 2 mm"
     assert rim > 0 mm, "the rim past the tooth roots is more than 0"
     assert backlash >= 0 mm, "the backlash is 0 or more (it widens the spaces)"
+    assert pinion >= 0 and pinion < teeth and pinion == round(pinion), "the pinion is a whole number of teeth, fewer than the ring's, or 0 (not given)"
     rr = module * teeth / 2
     z = teeth
+    # the tips: where the line of action touches the pinion's base circle (its involute's
+    # start) lies sqrt(rb^2 + (a sin(pressure angle))^2) from the centre, rb the ring's base
+    # radius and a the centre distance; tips inside that would run into the pinion's flank
+    # below its base circle (involute interference), so they end there
+    clear_r = sqrt(square(rr * cos(pressure_angle)) + square(module * (teeth - pinion) / 2 * sin(pressure_angle)))
+    tip_r = rr - module if pinion == 0 else max(rr - module, clear_r)
     body = Circle(center=(cx, cy), radius=rr + 1.25 * module + rim)
     Fixed(body.center)
     pitch = Circle(center=(cx, cy), radius=rr, construction=true)
     Concentric(pitch, body)
     hole cut {
         teeth = spur_gear(teeth=z, module=module, pressure_angle=pressure_angle,
-                          backlash=-backlash, phase=phase, cx=cx, cy=cy)
-        tips = Circle(center=(cx, cy), radius=rr - module)
+                          backlash=-backlash, phase=phase, cx=cx, cy=cy, addendum=1.25)
+        tips = Circle(center=(cx, cy), radius=tip_r)
         Fixed(tips.center)
         teeth.hub.center == tips.center
     }
@@ -341,7 +353,7 @@ def planetary(sun=12, planet=18, ring=48, planets=3, module=2 mm, axle=4 mm,
     }
     # the ring (`ring_gear`, above): a space where planet 0's tooth points out
     ring_gear = ring_gear(teeth=ring, module=module, rim=rim, backlash=backlash,
-                          phase=(planet - 1) / 2 * 360 deg / ring, cx=cx, cy=cy)
+                          phase=(planet - 1) / 2 * 360 deg / ring, cx=cx, cy=cy, pinion=planet)
     ring_gear.body.center == (cx, cy)
     # the carrier: flat, beside the ring; assembled, under the set
     ox = cx + 2 * (rr + 1.25 * module + rim) + gap
