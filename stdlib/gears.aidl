@@ -10,17 +10,26 @@
 # is centered at (cx, cy), one tooth pointing along `phase` (0 deg: along +x).
 # A `bore` of 0 leaves the center solid. `backlash` thins every tooth by that
 # much along the pitch circle. `addendum` is the tip's height over the pitch
-# circle in modules (1: ISO 53; `ring_gear` cuts its spaces 1.25 deep). Members: `pitch` and `tip` (construction
+# circle in modules (1: ISO 53; `ring_gear` cuts its spaces 1.25 deep). `mate`,
+# the teeth of the gear it meshes (0: not given), cuts the tips back to where
+# the line of action meets the mate's base circle, so that they never run into
+# a small mate's flank below it (involute interference; `gear_pair`,
+# `gear_train` and `planetary` give it). Members: `pitch` and `tip` (construction
 # circles of the pitch and outer diameters), `hub` (the root disk; the gear's
 # center is `hub.center`), `teeth_ring`, `bore_hole` (a hole, when the bore is not 0).
 def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
-              backlash=0 mm, phase=0 deg, cx=0 mm, cy=0 mm, addendum=1) -> solid {
+              backlash=0 mm, phase=0 deg, cx=0 mm, cy=0 mm, addendum=1, mate=0) -> solid {
     assert teeth >= 3 and teeth == round(teeth), "a gear has a whole number of teeth, at least 3"
     assert module > 0 mm, "the module (the pitch diameter / teeth) is more than 0, e.g. 2 mm"
     assert addendum > 0, "the addendum (the tip's height over the pitch circle, in modules) is more than 0, e.g. 1"
     pitch_r = module * teeth / 2
     base_r = pitch_r * cos(pressure_angle)
-    tip_r = pitch_r + addendum * module
+    assert mate >= 0 and mate == round(mate), "the mate is a whole number of teeth, or 0 (not given)"
+    # the tips end where the line of action touches the mate's base circle (where its
+    # involute starts): sqrt(rb^2 + (a sin(pressure angle))^2) from the centre, a the
+    # centre distance; a mate of 17 teeth or more never needs it
+    mate_r = sqrt(square(base_r) + square(module * (teeth + mate) / 2 * sin(pressure_angle)))
+    tip_r = pitch_r + addendum * module if mate == 0 else min(pitch_r + addendum * module, mate_r)
     root_r = pitch_r - 1.25 * module
     # the involute starts on the base circle, or just inside the root circle
     start_r = max(base_r, root_r - 0.1 * module)
@@ -183,9 +192,9 @@ def gear_pair(teeth1=12, teeth2=36, module=2 mm, pressure_angle=20 deg,
               cx=0 mm, cy=0 mm) -> assembly {
     center_distance = module * (teeth1 + teeth2) / 2
     gear1 = spur_gear(teeth=teeth1, module=module, pressure_angle=pressure_angle,
-                      bore=bore1, backlash=backlash, phase=angle, cx=cx, cy=cy)
+                      bore=bore1, backlash=backlash, phase=angle, cx=cx, cy=cy, mate=teeth2)
     gear2 = spur_gear(teeth=teeth2, module=module, pressure_angle=pressure_angle,
-                      bore=bore2, backlash=backlash,
+                      bore=bore2, backlash=backlash, mate=teeth1,
                       phase=angle + 180 deg + 180 deg / teeth2,
                       cx=cx + center_distance * cos(angle), cy=cy + center_distance * sin(angle))
     gear2.hub.center == gear1.hub.center + (center_distance * cos(angle), center_distance * sin(angle))
@@ -235,7 +244,9 @@ def gear_train(teeth=[12, 36, 12, 30], module=2 mm, axle=4 mm, backlash=0.05 mm,
         # a tooth of gear k-1 points at gear k, so gear k turns a gap to it: half a pitch
         # more for each even count among gears 1..k
         half = len([1 for j in range(1, k + 1) if z[j] % 2 == 0]) % 2
-        gear = spur_gear(teeth=z[k], module=module, bore=axle, backlash=backlash,
+        # its tips cut back for the smaller of its neighbours (`spur_gear`'s mate)
+        mate = min([z[j] for j in [k - 1, k + 1] if j >= 0 and j < n])
+        gear = spur_gear(teeth=z[k], module=module, bore=axle, backlash=backlash, mate=mate,
                          phase=half * 180 deg / z[k], cx=left + x[k], cy=above)
         gear.hub.center == (left + x[k], above)
         Place(gear, position=(-cx, -above, thickness + lift))
@@ -340,13 +351,13 @@ def planetary(sun=12, planet=18, ring=48, planets=3, module=2 mm, axle=4 mm,
     assert (sun + planet) * sin(180 deg / planets) > planet + 2, "the planets run into each other: fewer planets, a larger sun or smaller planets ((sun + planet) x sin(180 deg / planets) > planet + 2)"
     center_distance = module * (sun + planet) / 2
     rr = module * ring / 2
-    sun_gear = spur_gear(teeth=sun, module=module, bore=axle, backlash=backlash, cx=cx, cy=cy)
+    sun_gear = spur_gear(teeth=sun, module=module, bore=axle, backlash=backlash, cx=cx, cy=cy, mate=planet)
     sun_gear.hub.center == (cx, cy)
     for k in range(planets) {
         a = k * 360 deg / planets
         # the sun's tooth offset seen from planet k, in pitches: -k sun / planets; the planet
         # puts a gap there
-        planet_gear = spur_gear(teeth=planet, module=module, bore=axle, backlash=backlash,
+        planet_gear = spur_gear(teeth=planet, module=module, bore=axle, backlash=backlash, mate=sun,
                                 phase=a + 180 deg + (k * sun / planets - 0.5) * 360 deg / planet,
                                 cx=cx + center_distance * cos(a), cy=cy + center_distance * sin(a))
         planet_gear.hub.center == (cx + center_distance * cos(a), cy + center_distance * sin(a))
