@@ -256,8 +256,8 @@ def gear_train(teeth=[12, 36, 12, 30], module=2 mm, axle=4 mm, backlash=0.05 mm,
 
 # A rack and a pinion in mesh, on a base plate.
 # The rack has `rack_teeth` straight teeth of `module` (pitch pi * module,
-# flanks at the pressure angle 20 deg, addendum 1 module, dedendum 1.25
-# module) on a bar `height` below the roots; the pinion (`teeth`, bored for
+# flanks at the pressure angle 20 deg, addendum 1 module, or r sin^2(20 deg)
+# for a pinion of radius r under 18 teeth, dedendum 1.25 module) on a bar `height` below the roots; the pinion (`teeth`, bored for
 # `axle`) has its centre module * teeth / 2 above the rack's pitch line, a gap
 # over the rack's middle tooth (of an even count: the one right of the middle).
 # `backlash` thins the rack's teeth and the pinion's. Flat, the base plate is at (cx, cy) and the rack and pinion in mesh
@@ -283,14 +283,18 @@ def rack_and_pinion(teeth=16, module=2 mm, rack_teeth=12, height=8 mm, axle=4 mm
         # pitch / 2 - backlash wide at the pitch line, its flanks at 20 deg
         ta = tan(20 deg)
         w = (pitch / 2 - backlash) / 2
+        # the tips end where the line of action touches the pinion's base circle, r sin^2(20
+        # deg) over the pitch line (under 18 teeth: less than a module), so that they never
+        # run into the pinion's flank below it (involute interference)
+        ha = min(module, r * square(sin(20 deg)))
         for i in range(rack_teeth) {
             xc = cx + (i - (rack_teeth - 1) / 2) * pitch
             wr = w + 1.25 * module * ta
             tooth = Polygon([(xc - wr, line - 1.25 * module - height / 2),
                              (xc + wr, line - 1.25 * module - height / 2),
                              (xc + wr, line - 1.25 * module),
-                             (xc + w - module * ta, line + module),
-                             (xc - w + module * ta, line + module),
+                             (xc + w - ha * ta, line + ha),
+                             (xc - w + ha * ta, line + ha),
                              (xc - wr, line - 1.25 * module)])
             Fixed(tooth.points[0])
         }
