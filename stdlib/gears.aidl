@@ -27,7 +27,7 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
     assert mate >= 0 and mate == round(mate), "the mate is a whole number of teeth, or 0 (not given)"
     # the tips end where the line of action touches the mate's base circle (where its
     # involute starts): sqrt(rb^2 + (a sin(pressure angle))^2) from the centre, a the
-    # centre distance; a mate of 17 teeth or more never needs it
+    # centre distance; a mate of 17 teeth or more never needs it (short of a rack)
     mate_r = sqrt(square(base_r) + square(module * (teeth + mate) / 2 * sin(pressure_angle)))
     tip_r = pitch_r + addendum * module if mate == 0 else min(pitch_r + addendum * module, mate_r)
     root_r = pitch_r - 1.25 * module
