@@ -40,9 +40,11 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
     half = pi / (2 * teeth) - backlash / (2 * pitch_r) + tan(pressure_angle) - pressure_angle / (1 rad)
     tip_half = half - t1 + atan(t1) / (1 rad)
     start_half = half - t0 + atan(t0) / (1 rad)
-    # tip_half > 0, written over the arguments alone (half - t1 + atan(t1) > 0), so that a
-    # form's backlash slider ends where the teeth would come to a point
-    assert backlash < module * teeth * (pi / (2 * teeth) + tan(pressure_angle) - pressure_angle / (1 rad) - sqrt(square((teeth + 2 * addendum) / (teeth * cos(pressure_angle))) - 1) + atan(sqrt(square((teeth + 2 * addendum) / (teeth * cos(pressure_angle))) - 1)) / (1 rad)), "the teeth come to a point before the tip circle: use more teeth, a smaller pressure angle or less backlash"
+    # tip_half > 0 at the ISO tip circle (addendum 1), written over the arguments alone (half -
+    # t1 + atan(t1) > 0), so that a form's backlash slider ends where the teeth would come to a
+    # point; then the same at the tip circle drawn (another addendum, a mate's cut)
+    assert backlash < module * teeth * (pi / (2 * teeth) + tan(pressure_angle) - pressure_angle / (1 rad) - sqrt(square((teeth + 2) / (teeth * cos(pressure_angle))) - 1) + atan(sqrt(square((teeth + 2) / (teeth * cos(pressure_angle))) - 1)) / (1 rad)), "the teeth come to a point before the tip circle: use more teeth, a smaller pressure angle or less backlash"
+    assert tip_half > 0, "the teeth come to a point before the tip circle: a smaller addendum, more teeth or less backlash"
     assert root_r > bore / 2, "the bore is larger than the root circle"
     # a bore leaves a wall of 0.55 mm or more inside the root circle (module * (teeth - 2.5)
     # across; the forms' axles, W0507's 0.5 mm)
@@ -143,7 +145,7 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
 # annular plate, centered at (cx, cy). Its tooth spaces are an external
 # spur_gear's teeth (the same involute, `backlash` widening every space along
 # the pitch circle) 1.25 modules deep (ISO 53's dedendum: a pinion's tips clear
-# the roots by 0.25 module), its teeth cut back to the addendum circle
+# the roots by 0.25 module; less where the spaces would come to a point), its teeth cut back to the addendum circle
 # module * (teeth - 2) / 2, or further out when the `pinion` (the teeth of the
 # smallest gear meshing inside it; 0: not given) would meet them below its base
 # circle, and the plate reaches `rim` past the roots (outer diameter
@@ -168,13 +170,17 @@ def ring_gear(teeth=48, module=2 mm, pressure_angle=20 deg, rim=6 mm, backlash=0
     # below its base circle (involute interference), so they end there
     clear_r = sqrt(square(rr * cos(pressure_angle)) + square(module * (teeth - pinion) / 2 * sin(pressure_angle)))
     tip_r = rr - module if pinion == 0 else max(rr - module, clear_r)
+    # the spaces 1.25 modules deep, or as deep (in steps of 0.05 module) as they go before
+    # they come to a point (few teeth at a large pressure angle: at 30 deg, under 38 teeth)
+    sp = pi / (2 * teeth) + backlash / (module * teeth) + tan(pressure_angle) - pressure_angle / (1 rad)
+    depth = max([1] + [d for d in [1.05, 1.1, 1.15, 1.2, 1.25] if sp - sqrt(square((teeth + 2 * d) / (teeth * cos(pressure_angle))) - 1) + atan(sqrt(square((teeth + 2 * d) / (teeth * cos(pressure_angle))) - 1)) / (1 rad) > 0.002])
     body = Circle(center=(cx, cy), radius=rr + 1.25 * module + rim)
     Fixed(body.center)
     pitch = Circle(center=(cx, cy), radius=rr, construction=true)
     Concentric(pitch, body)
     hole cut {
         teeth = spur_gear(teeth=z, module=module, pressure_angle=pressure_angle,
-                          backlash=-backlash, phase=phase, cx=cx, cy=cy, addendum=1.25)
+                          backlash=-backlash, phase=phase, cx=cx, cy=cy, addendum=depth)
         tips = Circle(center=(cx, cy), radius=tip_r)
         Fixed(tips.center)
         teeth.hub.center == tips.center
