@@ -26,13 +26,13 @@ def _overlaps(c) -> list:
 @pytest.mark.parametrize("z,p,m", [(40, 14, 2), (48, 18, 1.5)])
 def test_a_pinion_meshes_in_the_ring_gear_and_only_in_mesh(tmp_path, z, p, m):
     a = m * (z - p) / 2
-    c = run(tmp_path, RING.format(z=z, p=p, m=m, phase=0, cx=a, given=''))
+    c = run(tmp_path, RING.format(z=z, p=p, m=m, phase=0, cx=a, given=f', pinion={p}'))
     assert c.ok and _overlaps(c) == [], [(d.code, d.message) for d in c.sink.items]
     # half a pinion pitch turned: tooth on tooth
-    c = run(tmp_path, RING.format(z=z, p=p, m=m, phase=180 / p, cx=a, given=''))
+    c = run(tmp_path, RING.format(z=z, p=p, m=m, phase=180 / p, cx=a, given=f', pinion={p}'))
     assert c.ok and len(_overlaps(c)) == 1
     # 0.5 mm deeper: the pinion's tips in the ring's teeth
-    c = run(tmp_path, RING.format(z=z, p=p, m=m, phase=0, cx=a + 0.5, given=''))
+    c = run(tmp_path, RING.format(z=z, p=p, m=m, phase=0, cx=a + 0.5, given=f', pinion={p}'))
     assert c.ok and len(_overlaps(c)) == 1
 
 
