@@ -9,16 +9,27 @@
 # `module` (pitch diameter module * teeth, outer diameter module * (teeth + 2)),
 # is centered at (cx, cy), one tooth pointing along `phase` (0 deg: along +x).
 # A `bore` of 0 leaves the center solid. `backlash` thins every tooth by that
-# much along the pitch circle. Members: `pitch` and `tip` (construction
+# much along the pitch circle. `addendum` is the tip's height over the pitch
+# circle in modules (1: ISO 53; `ring_gear` cuts its spaces 1.25 deep). `mate`,
+# the teeth of the gear it meshes (0: not given), cuts the tips back to where
+# the line of action meets the mate's base circle, so that they never run into
+# a small mate's flank below it (involute interference; `gear_pair`,
+# `gear_train` and `planetary` give it). Members: `pitch` and `tip` (construction
 # circles of the pitch and outer diameters), `hub` (the root disk; the gear's
 # center is `hub.center`), `teeth_ring`, `bore_hole` (a hole, when the bore is not 0).
 def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
-              backlash=0 mm, phase=0 deg, cx=0 mm, cy=0 mm) -> solid {
+              backlash=0 mm, phase=0 deg, cx=0 mm, cy=0 mm, addendum=1, mate=0) -> solid {
     assert teeth >= 3 and teeth == round(teeth), "a gear has a whole number of teeth, at least 3"
     assert module > 0 mm, "the module (the pitch diameter / teeth) is more than 0, e.g. 2 mm"
+    assert addendum > 0, "the addendum (the tip's height over the pitch circle, in modules) is more than 0, e.g. 1"
     pitch_r = module * teeth / 2
     base_r = pitch_r * cos(pressure_angle)
-    tip_r = pitch_r + module
+    assert mate >= 0 and mate == round(mate), "the mate is a whole number of teeth, or 0 (not given)"
+    # the tips end where the line of action touches the mate's base circle (where its
+    # involute starts): sqrt(rb^2 + (a sin(pressure angle))^2) from the centre, a the
+    # centre distance; a mate of 17 teeth or more never needs it (short of a rack)
+    mate_r = sqrt(square(base_r) + square(module * (teeth + mate) / 2 * sin(pressure_angle)))
+    tip_r = pitch_r + addendum * module if mate == 0 else min(pitch_r + addendum * module, mate_r)
     root_r = pitch_r - 1.25 * module
     # the involute starts on the base circle, or just inside the root circle
     start_r = max(base_r, root_r - 0.1 * module)
@@ -29,9 +40,11 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
     half = pi / (2 * teeth) - backlash / (2 * pitch_r) + tan(pressure_angle) - pressure_angle / (1 rad)
     tip_half = half - t1 + atan(t1) / (1 rad)
     start_half = half - t0 + atan(t0) / (1 rad)
-    # tip_half > 0, written over the arguments alone (half - t1 + atan(t1) > 0), so that a
-    # form's backlash slider ends where the teeth would come to a point
+    # tip_half > 0 at the ISO tip circle (addendum 1), written over the arguments alone (half -
+    # t1 + atan(t1) > 0), so that a form's backlash slider ends where the teeth would come to a
+    # point; then the same at the tip circle drawn (another addendum, a mate's cut)
     assert backlash < module * teeth * (pi / (2 * teeth) + tan(pressure_angle) - pressure_angle / (1 rad) - sqrt(square((teeth + 2) / (teeth * cos(pressure_angle))) - 1) + atan(sqrt(square((teeth + 2) / (teeth * cos(pressure_angle))) - 1)) / (1 rad)), "the teeth come to a point before the tip circle: use more teeth, a smaller pressure angle or less backlash"
+    assert tip_half > 0, "the teeth come to a point before the tip circle: a smaller addendum, more teeth or less backlash"
     assert root_r > bore / 2, "the bore is larger than the root circle"
     # a bore leaves a wall of 0.55 mm or more inside the root circle (module * (teeth - 2.5)
     # across; the forms' axles, W0507's 0.5 mm)
@@ -131,30 +144,44 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
 # An internal (ring) gear: `teeth` teeth of `module` pointing inward from an
 # annular plate, centered at (cx, cy). Its tooth spaces are an external
 # spur_gear's teeth (the same involute, `backlash` widening every space along
-# the pitch circle), its teeth cut back to the addendum circle
-# module * (teeth - 2) / 2, and the plate reaches `rim` past the roots
-# (outer diameter module * (teeth + 2.5) + 2 rim). At `phase` 0 deg a tooth
-# space points along +x. A pinion of z teeth meshes inside it at the centre
-# distance module * (teeth - z) / 2 (`planetary` builds a whole set).
+# the pitch circle) 1.25 modules deep (ISO 53's dedendum: a pinion's tips clear
+# the roots by 0.25 module; less where the spaces would come to a point), its teeth cut back to the addendum circle
+# module * (teeth - 2) / 2, or further out when the `pinion` (the teeth of the
+# smallest gear meshing inside it; 0: not given) would meet them below its base
+# circle, and the plate reaches `rim` past the roots (outer diameter
+# module * (teeth + 2.5) + 2 rim). At `phase` 0 deg a tooth space points along
+# +x. A pinion of z teeth meshes inside it at the centre distance
+# module * (teeth - z) / 2 (`planetary` builds a whole set).
 # Members: `body` (the plate's circle), `cut` (the hole: `cut.teeth`, the
 # spur_gear of the spaces, and `cut.tips`, the addendum circle), `pitch` (a
 # construction circle of the pitch diameter module * teeth).
 def ring_gear(teeth=48, module=2 mm, pressure_angle=20 deg, rim=6 mm, backlash=0.05 mm,
-              phase=0 deg, cx=0 mm, cy=0 mm) -> solid {
+              phase=0 deg, cx=0 mm, cy=0 mm, pinion=0) -> solid {
     assert teeth >= 10 and teeth == round(teeth), "a ring gear has a whole number of teeth, at least 10"
     assert module > 0 mm, "the module (the pitch diameter / teeth) is more than 0, e.g. 2 mm"
     assert rim > 0 mm, "the rim past the tooth roots is more than 0"
     assert backlash >= 0 mm, "the backlash is 0 or more (it widens the spaces)"
+    assert pinion >= 0 and pinion < teeth and pinion == round(pinion), "the pinion is a whole number of teeth, fewer than the ring's, or 0 (not given)"
     rr = module * teeth / 2
     z = teeth
+    # the tips: where the line of action touches the pinion's base circle (its involute's
+    # start) lies sqrt(rb^2 + (a sin(pressure angle))^2) from the centre, rb the ring's base
+    # radius and a the centre distance; tips inside that would run into the pinion's flank
+    # below its base circle (involute interference), so they end there
+    clear_r = sqrt(square(rr * cos(pressure_angle)) + square(module * (teeth - pinion) / 2 * sin(pressure_angle)))
+    tip_r = rr - module if pinion == 0 else max(rr - module, clear_r)
+    # the spaces 1.25 modules deep, or as deep (in steps of 0.05 module) as they go before
+    # they come to a point (few teeth at a large pressure angle: at 30 deg, under 38 teeth)
+    sp = pi / (2 * teeth) + backlash / (module * teeth) + tan(pressure_angle) - pressure_angle / (1 rad)
+    depth = max([1] + [d for d in [1.05, 1.1, 1.15, 1.2, 1.25] if sp - sqrt(square((teeth + 2 * d) / (teeth * cos(pressure_angle))) - 1) + atan(sqrt(square((teeth + 2 * d) / (teeth * cos(pressure_angle))) - 1)) / (1 rad) > 0.002])
     body = Circle(center=(cx, cy), radius=rr + 1.25 * module + rim)
     Fixed(body.center)
     pitch = Circle(center=(cx, cy), radius=rr, construction=true)
     Concentric(pitch, body)
     hole cut {
         teeth = spur_gear(teeth=z, module=module, pressure_angle=pressure_angle,
-                          backlash=-backlash, phase=phase, cx=cx, cy=cy)
-        tips = Circle(center=(cx, cy), radius=rr - module)
+                          backlash=-backlash, phase=phase, cx=cx, cy=cy, addendum=depth)
+        tips = Circle(center=(cx, cy), radius=tip_r)
         Fixed(tips.center)
         teeth.hub.center == tips.center
     }
@@ -171,9 +198,9 @@ def gear_pair(teeth1=12, teeth2=36, module=2 mm, pressure_angle=20 deg,
               cx=0 mm, cy=0 mm) -> assembly {
     center_distance = module * (teeth1 + teeth2) / 2
     gear1 = spur_gear(teeth=teeth1, module=module, pressure_angle=pressure_angle,
-                      bore=bore1, backlash=backlash, phase=angle, cx=cx, cy=cy)
+                      bore=bore1, backlash=backlash, phase=angle, cx=cx, cy=cy, mate=teeth2)
     gear2 = spur_gear(teeth=teeth2, module=module, pressure_angle=pressure_angle,
-                      bore=bore2, backlash=backlash,
+                      bore=bore2, backlash=backlash, mate=teeth1,
                       phase=angle + 180 deg + 180 deg / teeth2,
                       cx=cx + center_distance * cos(angle), cy=cy + center_distance * sin(angle))
     gear2.hub.center == gear1.hub.center + (center_distance * cos(angle), center_distance * sin(angle))
@@ -223,7 +250,9 @@ def gear_train(teeth=[12, 36, 12, 30], module=2 mm, axle=4 mm, backlash=0.05 mm,
         # a tooth of gear k-1 points at gear k, so gear k turns a gap to it: half a pitch
         # more for each even count among gears 1..k
         half = len([1 for j in range(1, k + 1) if z[j] % 2 == 0]) % 2
-        gear = spur_gear(teeth=z[k], module=module, bore=axle, backlash=backlash,
+        # its tips cut back for the smaller of its neighbours (`spur_gear`'s mate)
+        mate = min([z[j] for j in [k - 1, k + 1] if j >= 0 and j < n])
+        gear = spur_gear(teeth=z[k], module=module, bore=axle, backlash=backlash, mate=mate,
                          phase=half * 180 deg / z[k], cx=left + x[k], cy=above)
         gear.hub.center == (left + x[k], above)
         Place(gear, position=(-cx, -above, thickness + lift))
@@ -233,8 +262,8 @@ def gear_train(teeth=[12, 36, 12, 30], module=2 mm, axle=4 mm, backlash=0.05 mm,
 
 # A rack and a pinion in mesh, on a base plate.
 # The rack has `rack_teeth` straight teeth of `module` (pitch pi * module,
-# flanks at the pressure angle 20 deg, addendum 1 module, dedendum 1.25
-# module) on a bar `height` below the roots; the pinion (`teeth`, bored for
+# flanks at the pressure angle 20 deg, addendum 1 module, or r sin^2(20 deg)
+# for a pinion of radius r under 18 teeth, dedendum 1.25 module) on a bar `height` below the roots; the pinion (`teeth`, bored for
 # `axle`) has its centre module * teeth / 2 above the rack's pitch line, a gap
 # over the rack's middle tooth (of an even count: the one right of the middle).
 # `backlash` thins the rack's teeth and the pinion's. Flat, the base plate is at (cx, cy) and the rack and pinion in mesh
@@ -260,14 +289,18 @@ def rack_and_pinion(teeth=16, module=2 mm, rack_teeth=12, height=8 mm, axle=4 mm
         # pitch / 2 - backlash wide at the pitch line, its flanks at 20 deg
         ta = tan(20 deg)
         w = (pitch / 2 - backlash) / 2
+        # the tips end where the line of action touches the pinion's base circle, r sin^2(20
+        # deg) over the pitch line (under 18 teeth: less than a module), so that they never
+        # run into the pinion's flank below it (involute interference)
+        ha = min(module, r * square(sin(20 deg)))
         for i in range(rack_teeth) {
             xc = cx + (i - (rack_teeth - 1) / 2) * pitch
             wr = w + 1.25 * module * ta
             tooth = Polygon([(xc - wr, line - 1.25 * module - height / 2),
                              (xc + wr, line - 1.25 * module - height / 2),
                              (xc + wr, line - 1.25 * module),
-                             (xc + w - module * ta, line + module),
-                             (xc - w + module * ta, line + module),
+                             (xc + w - ha * ta, line + ha),
+                             (xc - w + ha * ta, line + ha),
                              (xc - wr, line - 1.25 * module)])
             Fixed(tooth.points[0])
         }
@@ -328,20 +361,20 @@ def planetary(sun=12, planet=18, ring=48, planets=3, module=2 mm, axle=4 mm,
     assert (sun + planet) * sin(180 deg / planets) > planet + 2, "the planets run into each other: fewer planets, a larger sun or smaller planets ((sun + planet) x sin(180 deg / planets) > planet + 2)"
     center_distance = module * (sun + planet) / 2
     rr = module * ring / 2
-    sun_gear = spur_gear(teeth=sun, module=module, bore=axle, backlash=backlash, cx=cx, cy=cy)
+    sun_gear = spur_gear(teeth=sun, module=module, bore=axle, backlash=backlash, cx=cx, cy=cy, mate=planet)
     sun_gear.hub.center == (cx, cy)
     for k in range(planets) {
         a = k * 360 deg / planets
         # the sun's tooth offset seen from planet k, in pitches: -k sun / planets; the planet
         # puts a gap there
-        planet_gear = spur_gear(teeth=planet, module=module, bore=axle, backlash=backlash,
+        planet_gear = spur_gear(teeth=planet, module=module, bore=axle, backlash=backlash, mate=sun,
                                 phase=a + 180 deg + (k * sun / planets - 0.5) * 360 deg / planet,
                                 cx=cx + center_distance * cos(a), cy=cy + center_distance * sin(a))
         planet_gear.hub.center == (cx + center_distance * cos(a), cy + center_distance * sin(a))
     }
     # the ring (`ring_gear`, above): a space where planet 0's tooth points out
     ring_gear = ring_gear(teeth=ring, module=module, rim=rim, backlash=backlash,
-                          phase=(planet - 1) / 2 * 360 deg / ring, cx=cx, cy=cy)
+                          phase=(planet - 1) / 2 * 360 deg / ring, cx=cx, cy=cy, pinion=planet)
     ring_gear.body.center == (cx, cy)
     # the carrier: flat, beside the ring; assembled, under the set
     ox = cx + 2 * (rr + 1.25 * module + rim) + gap

@@ -291,15 +291,20 @@ def test_rack_pitch_and_pinion_distance_from_the_dxf(tmp_path, z, m, n):
                   if abs(a[1] - top) < 1e-9 and abs(b[1] - top) < 1e-9)
     assert len(tips) == n
     assert all(b - a == pytest.approx(math.pi * m, abs=1e-9) for a, b in zip(tips, tips[1:]))
-    # a tooth's flanks: at the pitch line (one module under the tips) pi m / 2 - backlash wide
+    # a tooth's flanks: at the pitch line pi m / 2 - backlash wide; the tips ha over it, a
+    # module or, for a pinion under 18 teeth, r sin^2(20 deg) (where the line of action meets
+    # its base circle: 16 teeth of 2 mm, 1.871 mm)
     ta = math.tan(math.radians(20))
+    ha = min(m, m * z / 2 * math.sin(math.radians(20)) ** 2)
     tip_w = [abs(b[0] - a[0]) for a, b in zip(pts, pts[1:] + pts[:1])
              if abs(a[1] - top) < 1e-9 and abs(b[1] - top) < 1e-9]
-    assert all(w + 2 * m * ta == pytest.approx(math.pi * m / 2 - 0.1, abs=1e-9) for w in tip_w)
+    assert all(w + 2 * ha * ta == pytest.approx(math.pi * m / 2 - 0.1, abs=1e-9) for w in tip_w)
+    bar = min(y for _, y in pts) + 8       # the bar's top (its default height 8 mm): the roots
+    assert top - bar == pytest.approx(1.25 * m + ha, abs=1e-9)
     # the pinion's centre (its bore) m z / 2 above the pitch line, over the rack's middle
     # tooth (of an even count, the one half a pitch right of the middle)
     (px, py, _), = circles(part(layers, "pinion"))
-    assert py - (top - m) == pytest.approx(m * z / 2, abs=1e-9)
+    assert py - (top - ha) == pytest.approx(m * z / 2, abs=1e-9)
     assert px == pytest.approx(tips[n // 2], abs=1e-9)
 
 
@@ -347,12 +352,17 @@ def test_planetary_centre_distances_and_ring_from_the_dxf(tmp_path, s, p, r, n, 
     cx, cy = body[0], body[1]
     assert sorted(round(math.hypot(x - cx, y - cy), 9) for x, y, _ in holes) == pytest.approx(
         [0] + [a] * n, abs=1e-9)
-    # the ring: internal teeth whose tips lie on the circle m (ring - 2) / 2 about the sun's axis
+    # the ring: internal teeth whose tips lie on the circle m (ring - 2) / 2 about the sun's
+    # axis, or further out where the line of action meets the planets' base circles
+    # (sqrt(rb^2 + (a sin 20)^2), a = m (ring - planet) / 2: 46.26 mm for 48/18 of 2 mm), and
+    # roots 1.25 m past the pitch circle
     ring = part(layers, "ring_gear")
     inner = min((e for e in ring if e.dxftype() == "LWPOLYLINE"), key=lambda e: bbox([e])[2] - bbox([e])[0])
     radii = [math.hypot(x - sx, y - sy) for x, y in inner.get_points("xy")]
-    assert min(radii) == pytest.approx(m * (r - 2) / 2, abs=1e-9)
-    assert max(radii) == pytest.approx(m * (r + 2) / 2, abs=1e-6)
+    a20 = math.radians(20)
+    tips = max(m * (r - 2) / 2, math.hypot(m * r / 2 * math.cos(a20), m * (r - p) / 2 * math.sin(a20)))
+    assert min(radii) == pytest.approx(tips, abs=1e-9)
+    assert max(radii) == pytest.approx(m * (r + 2.5) / 2, abs=1e-6)
 
 
 def test_planetary_fit_and_thick_material(tmp_path):

@@ -90,6 +90,14 @@ def inv(a):
     return math.tan(a) - a
 
 
+def tip_r(z, mate, m=1.0, alpha=math.radians(20)):
+    """The tip radius of a gear of z teeth meshing one of `mate` teeth (gear_pair gives each
+    the other's count): m (z + 2) / 2, or where the line of action meets the mate's base
+    circle, sqrt(rb^2 + (a sin alpha)^2), when that is less (a 90-tooth wheel on a 12-tooth
+    pinion: 45.743 mm of 46 at m 1)."""
+    return min(m * (z + 2) / 2, math.hypot(m * z / 2 * math.cos(alpha), m * (z + mate) / 2 * math.sin(alpha)))
+
+
 @pytest.fixture(scope="module")
 def pair_90_12(tmp_path_factory):
     tmp = tmp_path_factory.mktemp("gears")
@@ -115,11 +123,13 @@ def test_gear_teeth_tip_root_and_pitch_circle(pair_90_12, which, z, phase):
     assert c == pytest.approx((0.0, 0.0) if which == 0 else (51.0, 0.0), abs=1e-9)
     segs = segments(outline)
     centred = [s for s in segs if s[0] == "A" and math.dist(s[1], c) < 1e-9]
-    tips = [s for s in centred if abs(s[2] - m * (z + 2) / 2) < 1e-9]
+    tip = tip_r(z, 102 - z, m)              # the wheel's cut back for the 12-tooth pinion
+    assert (round(tip, 3) == 45.743) if z == 90 else tip == 7
+    tips = [s for s in centred if abs(s[2] - tip) < 1e-9]
     roots = [s for s in centred if abs(s[2] - m * (z - 2.5) / 2) < 1e-9]
     assert len(tips) == z and len(roots) == z                    # tooth count
     radii = [math.dist(p[:2], c) for p in outline.get_points("xy")]
-    assert max(radii) == pytest.approx(m * (z + 2) / 2, abs=1e-9)   # outer diameter m(z+2)
+    assert max(radii) == pytest.approx(tip, abs=1e-9)   # outer diameter m(z+2), or cut back
     assert min(radii) == pytest.approx(m * (z - 2.5) / 2, abs=1e-9)  # root: dedendum 1.25 m
     # the teeth are as thick as the gaps on the pitch circle (diameter m z): pi m / 2 each
     rp = m * z / 2
@@ -171,7 +181,7 @@ def test_gear_pair_centre_distance_and_mesh(tmp_path):
     assert b1.dxf.radius == pytest.approx(1.5, abs=1e-12) and b2.dxf.radius == pytest.approx(4, abs=1e-12)
     for g, z in (("gear1", 12), ("gear2", 90)):            # pitch diameter m z, tip m (z + 2)
         assert r.value(f"drive.pair.{g}.pitch.radius").mm == pytest.approx(z / 2, abs=1e-12)
-        assert r.value(f"drive.pair.{g}.tip.radius").mm == pytest.approx((z + 2) / 2, abs=1e-12)
+        assert r.value(f"drive.pair.{g}.tip.radius").mm == pytest.approx(tip_r(z, 102 - z), abs=1e-12)
         assert r.value(f"drive.pair.{g}.pitch.center").value == pytest.approx(
             tuple((b1 if g == "gear1" else b2).dxf.center)[:2], abs=1e-9)
     from shapely import affinity

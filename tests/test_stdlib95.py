@@ -2,8 +2,8 @@
 
 `ring_gear` (the internal gear that was only inside `planetary`): a pinion set at the centre
 distance module * (ring - pinion) / 2 meshes in it without a word, and turned half a pitch or
-set 0.5 mm deeper the parts interpenetrate (W0511); its tips and roots re-read from the DXF
-(ezdxf).  `finger_box(outside=false)`: the sizes are the space inside, the panels two
+set 0.5 mm deeper the parts interpenetrate (W0511); its tips (cut back for a given pinion) and
+roots (1.25 modules deep) re-read from the DXF (ezdxf).  `finger_box(outside=false)`: the sizes are the space inside, the panels two
 thicknesses larger, re-read from the DXF; assembled, the fit check finds nothing.  (~4 s CPU.)"""
 import math
 
@@ -13,7 +13,7 @@ from test_mechanisms import by_layer, bbox, circles, dxf_render, part, run
 
 RING = """import "std/gears.aidl"
 assembly set {{
-    ring = ring_gear(teeth={z}, module={m} mm)
+    ring = ring_gear(teeth={z}, module={m} mm{given})
     pinion = spur_gear(teeth={p}, module={m} mm, phase={phase} deg, cx={cx} mm)
 }}
 """
@@ -26,19 +26,20 @@ def _overlaps(c) -> list:
 @pytest.mark.parametrize("z,p,m", [(40, 14, 2), (48, 18, 1.5)])
 def test_a_pinion_meshes_in_the_ring_gear_and_only_in_mesh(tmp_path, z, p, m):
     a = m * (z - p) / 2
-    c = run(tmp_path, RING.format(z=z, p=p, m=m, phase=0, cx=a))
+    c = run(tmp_path, RING.format(z=z, p=p, m=m, phase=0, cx=a, given=f', pinion={p}'))
     assert c.ok and _overlaps(c) == [], [(d.code, d.message) for d in c.sink.items]
     # half a pinion pitch turned: tooth on tooth
-    c = run(tmp_path, RING.format(z=z, p=p, m=m, phase=180 / p, cx=a))
+    c = run(tmp_path, RING.format(z=z, p=p, m=m, phase=180 / p, cx=a, given=f', pinion={p}'))
     assert c.ok and len(_overlaps(c)) == 1
     # 0.5 mm deeper: the pinion's tips in the ring's teeth
-    c = run(tmp_path, RING.format(z=z, p=p, m=m, phase=0, cx=a + 0.5))
+    c = run(tmp_path, RING.format(z=z, p=p, m=m, phase=0, cx=a + 0.5, given=f', pinion={p}'))
     assert c.ok and len(_overlaps(c)) == 1
 
 
-def test_the_ring_gear_s_tips_roots_and_rim_from_the_dxf(tmp_path):
+@pytest.mark.parametrize("given", ["", ", pinion=14"])
+def test_the_ring_gear_s_tips_roots_and_rim_from_the_dxf(tmp_path, given):
     z, m = 40, 2
-    layers = by_layer(dxf_render(tmp_path, RING.format(z=z, p=14, m=m, phase=0, cx=26)))
+    layers = by_layer(dxf_render(tmp_path, RING.format(z=z, p=14, m=m, phase=0, cx=26, given=given)))
     ring = part(layers, "ring")
     (bx, by, br), = circles(ring)
     assert (bx, by) == pytest.approx((0, 0), abs=1e-9)
@@ -46,8 +47,15 @@ def test_the_ring_gear_s_tips_roots_and_rim_from_the_dxf(tmp_path):
     inner = min((e for e in ring if e.dxftype() == "LWPOLYLINE"),
                 key=lambda e: bbox([e])[2] - bbox([e])[0])
     radii = [math.hypot(x, y) for x, y in inner.get_points("xy")]
-    assert min(radii) == pytest.approx(m * (z - 2) / 2, abs=1e-9)         # the teeth's tips
-    assert max(radii) == pytest.approx(m * (z + 2) / 2, abs=1e-6)         # the spaces' roots
+    # the teeth's tips: the addendum circle m (z - 2) / 2 = 38 mm; for a 14-tooth pinion, cut
+    # back to where the line of action meets its base circle, sqrt(rb^2 + (a sin 20)^2) =
+    # 38.63 mm (rb = 40 cos 20 deg, a = 26 mm)
+    a20 = math.radians(20)
+    tips = math.hypot(m * z / 2 * math.cos(a20), 26 * math.sin(a20)) if given else m * (z - 2) / 2
+    assert min(radii) == pytest.approx(tips, abs=1e-9)
+    assert (round(tips, 2) == 38.63) if given else tips == 38
+    # the spaces' roots: 1.25 m past the pitch circle (ISO 53's dedendum; they were m)
+    assert max(radii) == pytest.approx(m * (z + 2.5) / 2, abs=1e-6)
     # a space along +x: the outline reaches the roots there
     far = max(inner.get_points("xy"), key=lambda q: q[0])
     assert math.atan2(far[1], far[0]) == pytest.approx(0, abs=0.05)

@@ -75,8 +75,10 @@ WORD_TAGS = {"box": r"\bbox\b|\btray\b|\bdrawer\b", "gear": r"\bgears?\b|\bpinio
              "tool": r"\bwrench\b|\bruler\b|\bprotractor\b|\bopener\b|\bkey\b"}
 ACRONYMS = {"pcb": "PCB", "usb": "USB"}
 PURPOSE_MAX = 120
-# arguments that only place an instance: never params of a synthesized program
-PLACEMENT_ARGS = ("cx", "cy")
+# arguments that only place an instance, or that a template takes for another's use
+# (spur_gear's `addendum`: ring_gear's deeper spaces; a whole module more comes to points):
+# never params of a synthesized program
+PLACEMENT_ARGS = ("cx", "cy", "addendum")
 
 
 @dataclass
