@@ -52,17 +52,18 @@ def _nice(x: float) -> float:
 # checks walk: PER_VERTEX a vertex of the parts' final outlines, PER_PART a part, a point of
 # an engraved line, and the fit check's PER_FIT_VERTEX a vertex extruded and PER_BOOLEAN a 3D
 # boolean or distance (the Manifold work the count missed before: tool_holder and
-# board_enclosure spent 21-30 us a unit, the gallery's tiny designs 1.5).  Calibrated by least
-# squares over every compile of the 48 gallery designs' sweeps and the 8,000-hole panel's
-# (h18-work, load 4-6 on 2 cores, the sweep's points without its first compile): 2.3 / 7.9 /
-# 11.5 us of CPU a unit (min / median / max per design; before: 1.5 / 8.8 / 30.5).  A
-# diagnostic counts 40 (the panel's overlaps: 280-670 us each).  WORK x the largest 11.5 us
-# is 6.9 s, under the compile's 15 s guard (:func:`aidl_lang.base.limits.now`) by 2.2x: a
-# machine twice as slow as that busy one still ends a sweep by its work (what load adds:
-# beside two busy loops the same compiles took 1.05-1.3x the CPU; at load 10-14 the heavy
-# gallery sweeps spent 11.5-14.9 us a unit, 9 s at most; h17's load 18-20 1.4x).  The
-# suite's plans (tests/test_sweep_gallery.py) need 520,000 at most (tool_holder,
-# divider_tray, board_enclosure); the planetary's about 1,500,000
+# board_enclosure spent 21-30 us a unit, the gallery's tiny designs 1.5).  The weights fitted
+# by least squares over 1,500 compiles of the 48 gallery designs' sweeps and the 8,000-hole
+# panel's; measured with them (benchmarks/checks/sweep_gallery.py --units: each design's
+# default sweep to 40,000 units, its first compile left out, load 8-10 on 2 cores): 2.0 /
+# 7.3 / 12.5 us of CPU a unit, min / median / max per design (before: 1.5 / 8.8 / 30.5).  A
+# diagnostic counts 40 (the panel's overlaps: 280-670 us each).  WORK x the largest 12.5 us
+# is 7.5 s, half the compile's 15 s guard (:func:`aidl_lang.base.limits.now`): a machine
+# twice as slow as that busy one still ends a sweep by its work (what load adds: beside two
+# busy loops the same compiles took 1.05-1.3x the CPU; at load 10-14 the heavy gallery
+# sweeps spent 11.5-14.9 us a unit; h17's load 18-20 1.4x).  The suite's plans
+# (tests/test_sweep_gallery.py) need 520,000 at most (tool_holder, divider_tray,
+# board_enclosure); the planetary's about 1,500,000
 WORK = 600_000
 # a count whose range holds at most this many values is tried alone at every one of them
 # (:func:`count_values`)

@@ -12,9 +12,13 @@ one budget, the request's JSON compared whole).
     PYTHONPATH=$PWD python benchmarks/checks/sweep_load.py [--holes 8000] [--busy 2]
     PYTHONPATH=$PWD python benchmarks/checks/sweep_load.py --entry generator/board_enclosure --studio
 
-h18-work (load 6-12 on 2 cores from the other sessions): tool_holder and board_enclosure
-through ``aidl check --sweep`` and through the studio's request, each the same quiet and
-beside two busy loops (the hashes in the round's report).
+h18-work (load 6-12 on 2 cores from the other sessions; "quiet": no busy loop of ours), the
+lines' sha256 quiet / busy: tool_holder ``--sweep`` e1f1b66b5e8fbb85 / the same (8.7 / 8.1 s
+CPU, 57 points, 43 not judged), ``--studio`` df775639a18982c8 / the same (7.7 / 8.6 s, 68
+points); board_enclosure ``--sweep`` baa73fffd6fb616c / the same (6.3 / 6.4 s, 29 points, 3
+not judged), ``--studio`` 3b0907d8338eacf6 / the same (6.3 / 6.9 s, 32 points); the 8,000-hole
+panel 65de46dffdc31785 / the same (11.7 / 13.4 s: its 2 mm end, 31,000 overlaps, spends the
+budget alone; below 4 mm not judged).
 """
 from __future__ import annotations
 
