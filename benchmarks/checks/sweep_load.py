@@ -13,10 +13,10 @@ one budget, the request's JSON compared whole).
     PYTHONPATH=$PWD python benchmarks/checks/sweep_load.py --entry generator/board_enclosure --studio
 
 h18-work (load 6-12 on 2 cores from the other sessions; "quiet": no busy loop of ours), the
-lines' sha256 quiet / busy: tool_holder ``--sweep`` e1f1b66b5e8fbb85 / the same (8.7 / 8.1 s
-CPU, 57 points, 43 not judged), ``--studio`` df775639a18982c8 / the same (7.7 / 8.6 s, 68
-points); board_enclosure ``--sweep`` baa73fffd6fb616c / the same (6.3 / 6.4 s, 29 points, 3
-not judged), ``--studio`` 3b0907d8338eacf6 / the same (6.3 / 6.9 s, 32 points); the 8,000-hole
+lines' sha256 quiet / busy: tool_holder ``--sweep`` 83a14b9e2172f1f8 / the same (8.7 / 9.1 s
+CPU, 58 points, 42 not judged), ``--studio`` df775639a18982c8 / the same (8.2 / 8.6 s, 68
+points); board_enclosure ``--sweep`` baa73fffd6fb616c / the same (5.8 / 6.8 s, 29 points, 3
+not judged), ``--studio`` 3b0907d8338eacf6 / the same (6.7 / 6.7 s, 32 points); the 8,000-hole
 panel 65de46dffdc31785 / the same (11.7 / 13.4 s: its 2 mm end, 31,000 overlaps, spends the
 budget alone; below 4 mm not judged).
 """
