@@ -46,30 +46,60 @@ def _nice(x: float) -> float:
 
 
 
-# work units of one sweep at budget factor 1: each compile costs PER_COMPILE plus its
-# interpreter steps, objects and the model's unknowns, and PER_DIAGNOSTIC for each thing it
-# says (:func:`work`).  Measured: 6-25 us of CPU a unit over the 20 examples' sweeps, 19 us
-# on the gallery's planetary (18 points, 670,000 units, 12.5 s at load 12 on 2 cores); a
-# diagnostic costs 280-670 us (the 8,000-hole panel at pitch 2 mm: 31,463 overlaps in 10.3 s;
-# at 3 mm 7,921 thin walls in 6.9 s), so one that says thousands spends the budget alone.
-# A sweep stops after about 13 s of CPU at most, under the compile's 15 s (the outer guard,
-# :func:`aidl_lang.base.limits.now`, reached only by a point far costlier than its units)
-WORK = 700_000
+# work units of one sweep at budget factor 1 (:func:`work`): each compile costs PER_COMPILE,
+# its interpreter steps, PER_OBJECT a value or shape it made, PER_UNKNOWN the model's unknowns,
+# PER_ITERATION a Newton step, PER_DIAGNOSTIC a thing it says, and what the booleans and the
+# checks walk: PER_VERTEX a vertex of the parts' final outlines, PER_PART a part, a point of
+# an engraved line, and the fit check's PER_FIT_VERTEX a vertex extruded and PER_BOOLEAN a 3D
+# boolean or distance (the Manifold work the count missed before: tool_holder and
+# board_enclosure spent 21-30 us a unit, the gallery's tiny designs 1.5).  The weights fitted
+# by least squares over 1,500 compiles of the 48 gallery designs' sweeps and the 8,000-hole
+# panel's; measured with them (benchmarks/checks/sweep_gallery.py --units: each design's
+# default sweep to 40,000 units, its first compile left out, load 8-10 on 2 cores): 2.0 /
+# 7.3 / 12.5 us of CPU a unit, min / median / max per design (before: 1.5 / 8.8 / 30.5).  A
+# diagnostic counts 40 (the panel's overlaps: 280-670 us each).  WORK x the largest 12.5 us
+# is 7.5 s, half the compile's 15 s guard (:func:`aidl_lang.base.limits.now`): a machine
+# twice as slow as that busy one still ends a sweep by its work (what load adds: beside two
+# busy loops the same compiles took 1.05-1.3x the CPU; at load 10-14 the heavy gallery
+# sweeps spent 11.5-14.9 us a unit; h17's load 18-20 1.4x).  The suite's plans
+# (tests/test_sweep_gallery.py) need 520,000 at most (tool_holder, divider_tray,
+# board_enclosure); the planetary's about 1,500,000
+WORK = 600_000
 # a count whose range holds at most this many values is tried alone at every one of them
 # (:func:`count_values`)
 SMALL_COUNT = 12
-PER_COMPILE = 2_000
+PER_COMPILE = 1_000
+PER_OBJECT = 5
+PER_UNKNOWN = 0.25
+PER_ITERATION = 80
 PER_DIAGNOSTIC = 40
+PER_VERTEX = 0.6
+PER_PART = 120
+PER_FIT_VERTEX = 0.5
+PER_BOOLEAN = 50
 
 
-def work(interp, model, sink=None) -> int:
-    """The load-independent cost of one compile: :data:`PER_COMPILE` + the interpreter's
-    steps and objects + the model's unknowns (0 for what was not built) +
-    :data:`PER_DIAGNOSTIC` x the diagnostics of ``sink``."""
+def work(interp, model, sink=None, drawing=None, solved=None) -> int:
+    """The load-independent cost of one compile (the constants above): :data:`PER_COMPILE` +
+    the interpreter's steps and objects + the model's unknowns (0 for what was not built) +
+    the solve's Newton iterations (``solved``, a :class:`~aidl_lang.solver.SolveResult`) +
+    the diagnostics of ``sink`` + what the booleans made (``drawing``: its solid parts'
+    outline vertices, its parts, its engraved lines' points) + the fit check's vertices
+    extruded and booleans (``drawing.fit_counts``)."""
     n = 0 if model is None else len(getattr(model, "x", ()) or ())
     said = 0 if sink is None else len(sink.items)
-    return (PER_COMPILE + int(getattr(interp, "steps", 0)) + int(getattr(interp, "objects", 0))
-            + n + PER_DIAGNOSTIC * said)
+    out = (PER_COMPILE + int(getattr(interp, "steps", 0))
+           + PER_OBJECT * int(getattr(interp, "objects", 0)) + PER_UNKNOWN * n
+           + PER_DIAGNOSTIC * said
+           + PER_ITERATION * int(getattr(solved, "iterations", 0) or 0))
+    if drawing is not None:
+        solids = [p for p in drawing.parts if p.kind == "solid" and p.shape is not None]
+        out += (PER_VERTEX * sum(int(p.shape.num_vert()) for p in solids)
+                + PER_PART * len(solids) + sum(len(ln[1]) for ln in drawing.lines))
+        fit = getattr(drawing, "fit_counts", None) or {}
+        out += (PER_FIT_VERTEX * fit.get("vertices", 0)
+                + PER_BOOLEAN * (fit.get("booleans", 0) + fit.get("gaps", 0)))
+    return int(out)
 
 
 class Param:

@@ -14,12 +14,15 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
     places its parts with ``Place``): W0517 for two parts whose solids collide (a slot
     narrower than its partner's thickness: the depth is by how much), W0518 for a part that
     touches no other (a tab short of its slot: the gap)."""
-    from ..fabrication.assembly import extrude, fit, normals_of, plates_of
+    from ..fabrication.assembly import Bodies, fit, normals_of, plates_of
     _check_bends(d, sink)
     parts = [(p.name, p.kind, p.shape, d.thickness.get(p.name)) for p in d.parts]
     bends = getattr(d, "bends", None)
-    hits, gaps = fit(extrude(parts, d.placement, deadline=deadline, bends=bends), deadline,
-                     normals_of(d.placement), plates_of(parts, d.placement, bends=bends))
+    # what the check did (vertices, booleans, distances): a sweep's work (sweep_plan.work)
+    d.fit_counts = {}
+    hits, gaps = fit(Bodies(parts, d.placement, deadline=deadline, bends=bends), deadline,
+                     normals_of(d.placement), plates_of(parts, d.placement, bends=bends),
+                     counts=d.fit_counts)
 
     def at(name):
         s = d.part_of.get(name)

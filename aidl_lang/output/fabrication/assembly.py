@@ -123,7 +123,8 @@ class Gap:
 
 
 def fit(bodies: list[tuple[str, object]], deadline=None, normals: dict | None = None,
-        plates: dict | None = None) -> tuple[list[Collision], list[Gap]]:
+        plates: dict | None = None, counts: dict | None = None
+        ) -> tuple[list[Collision], list[Gap]]:
     """The fit check of the assembled product with Manifold's 3D booleans: every pair of parts
     whose solids overlap by more than :data:`VOLUME_TOL` (and :data:`DEPTH_TOL` deep), and,
     with two parts or more, every part that comes no nearer than :data:`GAP_TOL` to any
@@ -142,25 +143,47 @@ def fit(bodies: list[tuple[str, object]], deadline=None, normals: dict | None = 
     plates ``bodies`` were extruded from (:func:`plates_of`): two parallel plates whose
     sheets are apart along their normal, or meet face to face over a common area (a carrier
     stacked on its gears), are decided from their outlines in 2D (:func:`_stacked`), without
-    the 3D boolean (the same answer: 20 to 60 ms a pair of toothed plates -> under 1 ms)."""
+    the 3D boolean (the same answer: 20 to 60 ms a pair of toothed plates -> under 1 ms).
+
+    ``counts``: a dict given is filled with what the check did, the same on any machine
+    (``vertices`` of the bodies, ``booleans`` 3D intersections, ``gaps`` distances asked):
+    the sweep's work (:func:`aidl_lang.params.sweep_plan.work`)."""
+    lazy = isinstance(bodies, Bodies)
+    tally = {"vertices": 0 if lazy else sum(int(m.num_vert()) for _, m in bodies),
+             "booleans": 0, "gaps": 0}
+    if counts is not None:
+        counts.update(tally)
+        tally = counts
+
     def tick():
         if deadline is not None:
             deadline.check("the fit check", None)
-    boxes = np.array([_box(m) for _, m in bodies], dtype=float).reshape(-1, 6)
+    boxes = np.array([bodies.box(i) for i in range(len(bodies))] if lazy else
+                     [_box(m) for _, m in bodies], dtype=float).reshape(-1, 6)
     normals = normals or {}
     hits: list[Collision] = []
     touching = set()
     n = len(bodies)
     for i, j in box_pairs(boxes, GAP_TOL):
         tick()
-        (na, ma), (nb, mb) = bodies[i], bodies[j]
+        na, nb = (bodies.name(i), bodies.name(j)) if lazy else (bodies[i][0], bodies[j][0])
         if plates is not None and na in plates and nb in plates:
             stacked = _stacked(plates[na], plates[nb])
             if stacked is not None:
                 if stacked:
                     touching.update((i, j))
                 continue
+            # each plate cut to the pair's common box (grown by the gap's reach) before the
+            # boolean: what lies outside it is in no common part and no nearer than
+            # 2 GAP_TOL (a lid's vents far from its walls' tabs); a whole solid extruded
+            # only when the box holds all of its outline
+            near = _common_box(boxes[i], boxes[j], 2 * GAP_TOL)
+            ma = _within(plates[na], near, lambda: bodies[i][1], tally)
+            mb = _within(plates[nb], near, lambda: bodies[j][1], tally)
+        else:
+            ma, mb = bodies[i][1], bodies[j][1]
         common = ma ^ mb
+        tally["booleans"] += 1
         vol = float(common.volume()) if not common.is_empty() else 0.0
         if vol > VOLUME_TOL:
             # the connected pieces with volume (Manifold leaves zero-volume sheets where
@@ -176,6 +199,7 @@ def fit(bodies: list[tuple[str, object]], deadline=None, normals: dict | None = 
                 continue
         if i not in touching or j not in touching:
             # faces in contact leave a common part of no volume; else ask how far apart
+            tally["gaps"] += common.is_empty()
             if not common.is_empty() or ma.min_gap(mb, 2 * GAP_TOL) <= GAP_TOL:
                 touching.update((i, j))
     gaps = []
@@ -191,11 +215,14 @@ def fit(bodies: list[tuple[str, object]], deadline=None, normals: dict | None = 
                     break            # no nearer part can be in a box this far
                 tick()
                 g = float(d[j])
+                tally["gaps"] += g < 1e3
                 g = float(bodies[i][1].min_gap(bodies[j][1], g + 1.0)) if g < 1e3 else g
                 if best is None or g < best[0]:
                     best = (g, bodies[j][0])
             if not any(g.part == best[1] and g.nearest == bodies[i][0] for g in gaps):
                 gaps.append(Gap(bodies[i][0], best[1], best[0]))    # a pair is said once
+    if lazy:
+        tally["vertices"] += bodies.vertices
     return hits, gaps
 
 
@@ -307,6 +334,88 @@ def _depth(common, na, nb, box) -> float:
     if not figures:
         return float(min(box[3] - box[0], box[4] - box[1], box[5] - box[2]))
     return max(set(figures), key=lambda v: (figures.count(v), -v))
+
+
+# a plate is cut to a pair's common box (:func:`_within`) when that holds at most this part
+# of its outline's bounds: else the whole solid, extruded once, serves every pair
+CLIP = 0.25
+
+
+def _common_box(a: np.ndarray, b: np.ndarray, pad: float) -> np.ndarray:
+    """The box (x0, y0, z0, x1, y1, z1) common to ``a`` and ``b`` each grown by ``pad``."""
+    return np.concatenate([np.maximum(a[:3], b[:3]) - pad, np.minimum(a[3:], b[3:]) + pad])
+
+
+def _within(plate, box: np.ndarray, whole, tally: dict):
+    """The plate ``(CrossSection, placement, thickness)`` extruded and placed as
+    :func:`extrude` does, cut first to the rectangle of its sheet that holds all of ``box``
+    (its eight corners taken back through the placement; its vertices counted in
+    ``tally``); ``whole()`` (its whole solid) when that rectangle holds the whole outline."""
+    import manifold3d as mf
+    shape, M, t = plate
+    corners = np.array([[box[0 + 3 * (k & 1)], box[1 + 3 * (k >> 1 & 1)],
+                         box[2 + 3 * (k >> 2 & 1)], 1.0] for k in range(8)])
+    local = corners if M is None else corners @ np.linalg.inv(np.asarray(M, float)).T
+    x0, y0 = local[:, :2].min(axis=0)
+    x1, y1 = local[:, :2].max(axis=0)
+    bx0, by0, bx1, by1 = shape.bounds()
+    x0, y0, x1, y1 = max(x0, bx0), max(y0, by0), min(x1, bx1), min(y1, by1)
+    if (x1 - x0) * (y1 - y0) > CLIP * (bx1 - bx0) * (by1 - by0):
+        return whole()
+    rect = mf.CrossSection.square((max(x1 - x0, 1e-9), max(y1 - y0, 1e-9))).translate((x0, y0))
+    m = mf.Manifold.extrude(shape ^ rect, t)
+    tally["vertices"] += int(m.num_vert())
+    return m if M is None else m.transform(np.asarray(M, dtype=float)[:3, :4])
+
+
+class Bodies:
+    """``(name, Manifold)`` of each solid of ``parts`` (as :func:`extrude` takes them and
+    makes them), each extruded when first asked for: the fit check cuts a pair of plates to
+    their common box and extrudes that (:func:`_within`), so a plate whose every pair is cut
+    is never extruded whole (a lid's hundred vents).  ``box(i)``: the bounding box of body
+    ``i`` from its outline's bounds and placement (its solid's for a bent part), without
+    extruding it; ``vertices``: those of the bodies extruded so far."""
+
+    def __init__(self, parts, where: dict, thickness: float | None = None, deadline=None,
+                 bends: dict | None = None):
+        self.parts = [(name, shape, t) for name, kind, shape, t in parts
+                      if kind == "solid" and shape is not None and not shape.is_empty()]
+        self.where, self.thickness, self.deadline = where, thickness, deadline
+        self.bends = bends or {}
+        self.made: dict = {}
+        self.vertices = 0
+
+    def __len__(self) -> int:
+        return len(self.parts)
+
+    def __getitem__(self, i: int):
+        if i not in self.made:
+            name, shape, t = self.parts[i]
+            bends = {name: self.bends[name]} if self.bends.get(name) else None
+            (got,) = extrude([(name, "solid", shape, t)], self.where, self.thickness,
+                             self.deadline, bends)
+            self.made[i] = got
+            self.vertices += int(got[1].num_vert())
+        return self.made[i]
+
+    def __iter__(self):
+        return (self[i] for i in range(len(self)))
+
+    def name(self, i: int) -> str:
+        return self.parts[i][0]
+
+    def box(self, i: int) -> tuple:
+        name, shape, t = self.parts[i]
+        if self.bends.get(name):
+            return _box(self[i][1])
+        t = float(self.thickness or t or DEFAULT_THICKNESS)
+        x0, y0, x1, y1 = shape.bounds()
+        c = np.array([[x, y, z, 1.0] for x in (x0, x1) for y in (y0, y1) for z in (0.0, t)])
+        M = self.where.get(name)
+        if M is not None:
+            c = c @ np.asarray(M, dtype=float).T
+        return tuple(float(v) for v in np.concatenate([c[:, :3].min(axis=0),
+                                                       c[:, :3].max(axis=0)]))
 
 
 def _box(m) -> tuple:
