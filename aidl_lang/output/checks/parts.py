@@ -181,10 +181,12 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
                 "so that material joins the pieces where it crosses (or widen the shape "
                 "there); only if the pieces are meant to be separate parts, make the "
                 "structure an `assembly`")
+    # pieces of one shape cut apart by holes: the holes say it, not "{`a`}; {`a`}; ..."
+    listed = "" if apart and len(set(groups)) == 1 else (
+        ": " + "; ".join(groups) + ("; ..." if len(pieces) > 6 else ""))
     sink.warning(
         "W0504",
-        f"solid `{s.path}` falls apart into {len(pieces)} separate pieces: "
-        + "; ".join(groups) + ("; ..." if len(pieces) > 6 else "") + apart,
+        f"solid `{s.path}` falls apart into {len(pieces)} separate pieces" + listed + apart,
         s.span, hint=hint)
 
 
