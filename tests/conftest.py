@@ -82,7 +82,8 @@ def studio_url():
 # still running; 5 s before: a process that is ending on a loaded machine may take longer)
 _LEFT_GRACE = float(os.environ.get("AIDL_TEST_LEFT_GRACE", "30"))
 # multiprocessing's own helpers live as long as the process that started them, by design, and
-# end when it does (their pipe closes): not a test's leftovers
+# end when it does (their pipe closes): not a test's leftovers; a forkserver's children are
+# (the compile workers, aidl_lang.host.workers.context, are forked from it)
 _HELPERS = ("multiprocessing.resource_tracker", "multiprocessing.forkserver")
 _first_seen: dict[int, str] = {}        # pid -> the test after which it was first seen
 _left: list[str] = []
@@ -103,8 +104,20 @@ def _state(pid: int) -> str:
 
 
 def _children() -> set[int]:
-    """The live (not zombie) child processes of this one, helpers excluded."""
-    me = os.getpid()
+    """The live (not zombie) child processes of this one, helpers excluded but not a
+    helper's own children (a forkserver's workers)."""
+    out: set[int] = set()
+    for p in _child_pids(os.getpid()):
+        if _state(p) in ("", "Z"):
+            continue
+        if any(h in _proc_text(p, "cmdline") for h in _HELPERS):
+            out.update(c for c in _child_pids(p) if _state(c) not in ("", "Z"))
+        else:
+            out.add(p)
+    return out
+
+
+def _child_pids(me: int) -> set[int]:
     pids: set[int] = set()
     tasks = pathlib.Path(f"/proc/{me}/task")
     files = list(tasks.glob("*/children")) if tasks.is_dir() else []
@@ -120,8 +133,7 @@ def _children() -> set[int]:
                 stat = _proc_text(int(d.name), "stat")
                 if stat and int(stat[stat.rfind(")") + 2:].split()[1]) == me:
                     pids.add(int(d.name))
-    return {p for p in pids if _state(p) not in ("", "Z")
-            and not any(h in _proc_text(p, "cmdline") for h in _HELPERS)}
+    return pids
 
 
 def _reap() -> None:
