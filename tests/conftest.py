@@ -1,3 +1,4 @@
+import collections
 import os
 import pathlib
 import sys
@@ -204,6 +205,44 @@ _skipped: list[str] = []
 def pytest_runtest_logreport(report):
     if report.skipped and not hasattr(report, "wasxfail") and report.nodeid not in _skipped:
         _skipped.append(report.nodeid)
+    _file_seconds[report.nodeid.split("::")[0]] += report.duration
+
+
+# ------------------------------------------------------------------ the order of the files
+# pytest-xdist (--dist loadfile --no-loadscope-reorder, pyproject.toml) hands the files to its
+# workers in collection order: the slowest of the last run first (their seconds kept in
+# pytest's cache, aidl/file_seconds), so the run ends on small files and both workers end
+# together; files the cache does not know (a fresh clone: all of them) by their count of
+# tests, most first (xdist's own order).  The controller reads the cache once and gives both
+# workers the same figures (their collections must match).
+_file_seconds: collections.Counter = collections.Counter()
+_SECONDS_KEY = "aidl/file_seconds"
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_configure_node(node):
+    cache = getattr(node.config, "cache", None)
+    node.workerinput["aidl_file_seconds"] = cache.get(_SECONDS_KEY, {}) if cache else {}
+
+
+def pytest_collection_modifyitems(session, config, items):
+    if _worker(config):
+        seconds = config.workerinput.get("aidl_file_seconds", {})
+    else:
+        cache = getattr(config, "cache", None)
+        seconds = cache.get(_SECONDS_KEY, {}) if cache else {}
+    count = collections.Counter(item.nodeid.split("::")[0] for item in items)
+    rank = {f: i for i, f in enumerate(sorted(count, key=lambda f: (-seconds.get(f, 0.0),
+                                                                     -count[f], f)))}
+    items.sort(key=lambda item: rank[item.nodeid.split("::")[0]])     # stable within a file
+
+
+def _keep_file_seconds(config) -> None:
+    cache = getattr(config, "cache", None)
+    if cache is not None and _file_seconds:
+        kept = cache.get(_SECONDS_KEY, {})
+        kept.update({f: round(t, 2) for f, t in _file_seconds.items()})
+        cache.set(_SECONDS_KEY, kept)
 
 
 def _worker(config) -> bool:
@@ -225,6 +264,7 @@ def pytest_sessionfinish(session, exitstatus):
     cache = getattr(session.config, "cache", None)
     if cache is not None and not _worker(session.config):
         cache.set("aidl/skipped", _skipped)
+        _keep_file_seconds(session.config)
     if not _CHECK:
         return
     import time
