@@ -1,7 +1,17 @@
+import collections
 import os
 import pathlib
+import sys
 
 import pytest
+
+# pytest's assertion-rewritten test modules are cached (tests/__pycache__/*-pytest-*.pyc) even
+# where PYTHONDONTWRITEBYTECODE is set (this machine, CI): without the cache every pytest
+# process (each xdist worker) rewrote all 235 test files on each run, 23 s of CPU a process
+# to collect the suite; with it 4 s.  Nothing else changes: the package and the benchmarks
+# are byte-compiled before the workers start (_compile_bytecode), and subprocesses keep the
+# environment's setting.
+sys.dont_write_bytecode = False
 
 # One BLAS thread, as the `aidl` command uses (aidl_lang/cli/__init__.py): the matrices are
 # small, and threaded OpenBLAS spun on a busy 2-core machine (one example's dense solves took
@@ -82,7 +92,8 @@ def studio_url():
 # still running; 5 s before: a process that is ending on a loaded machine may take longer)
 _LEFT_GRACE = float(os.environ.get("AIDL_TEST_LEFT_GRACE", "30"))
 # multiprocessing's own helpers live as long as the process that started them, by design, and
-# end when it does (their pipe closes): not a test's leftovers
+# end when it does (their pipe closes): not a test's leftovers; a forkserver's children are
+# (the compile workers, aidl_lang.host.workers.context, are forked from it)
 _HELPERS = ("multiprocessing.resource_tracker", "multiprocessing.forkserver")
 _first_seen: dict[int, str] = {}        # pid -> the test after which it was first seen
 _left: list[str] = []
@@ -103,8 +114,20 @@ def _state(pid: int) -> str:
 
 
 def _children() -> set[int]:
-    """The live (not zombie) child processes of this one, helpers excluded."""
-    me = os.getpid()
+    """The live (not zombie) child processes of this one, helpers excluded but not a
+    helper's own children (a forkserver's workers)."""
+    out: set[int] = set()
+    for p in _child_pids(os.getpid()):
+        if _state(p) in ("", "Z"):
+            continue
+        if any(h in _proc_text(p, "cmdline") for h in _HELPERS):
+            out.update(c for c in _child_pids(p) if _state(c) not in ("", "Z"))
+        else:
+            out.add(p)
+    return out
+
+
+def _child_pids(me: int) -> set[int]:
     pids: set[int] = set()
     tasks = pathlib.Path(f"/proc/{me}/task")
     files = list(tasks.glob("*/children")) if tasks.is_dir() else []
@@ -120,8 +143,7 @@ def _children() -> set[int]:
                 stat = _proc_text(int(d.name), "stat")
                 if stat and int(stat[stat.rfind(")") + 2:].split()[1]) == me:
                     pids.add(int(d.name))
-    return {p for p in pids if _state(p) not in ("", "Z")
-            and not any(h in _proc_text(p, "cmdline") for h in _HELPERS)}
+    return pids
 
 
 def _reap() -> None:
@@ -183,6 +205,44 @@ _skipped: list[str] = []
 def pytest_runtest_logreport(report):
     if report.skipped and not hasattr(report, "wasxfail") and report.nodeid not in _skipped:
         _skipped.append(report.nodeid)
+    _file_seconds[report.nodeid.split("::")[0]] += report.duration
+
+
+# ------------------------------------------------------------------ the order of the files
+# pytest-xdist (--dist loadfile --no-loadscope-reorder, pyproject.toml) hands the files to its
+# workers in collection order: the slowest of the last run first (their seconds kept in
+# pytest's cache, aidl/file_seconds), so the run ends on small files and both workers end
+# together; files the cache does not know (a fresh clone: all of them) by their count of
+# tests, most first (xdist's own order).  The controller reads the cache once and gives both
+# workers the same figures (their collections must match).
+_file_seconds: collections.Counter = collections.Counter()
+_SECONDS_KEY = "aidl/file_seconds"
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_configure_node(node):
+    cache = getattr(node.config, "cache", None)
+    node.workerinput["aidl_file_seconds"] = cache.get(_SECONDS_KEY, {}) if cache else {}
+
+
+def pytest_collection_modifyitems(session, config, items):
+    if _worker(config):
+        seconds = config.workerinput.get("aidl_file_seconds", {})
+    else:
+        cache = getattr(config, "cache", None)
+        seconds = cache.get(_SECONDS_KEY, {}) if cache else {}
+    count = collections.Counter(item.nodeid.split("::")[0] for item in items)
+    rank = {f: i for i, f in enumerate(sorted(count, key=lambda f: (-seconds.get(f, 0.0),
+                                                                     -count[f], f)))}
+    items.sort(key=lambda item: rank[item.nodeid.split("::")[0]])     # stable within a file
+
+
+def _keep_file_seconds(config) -> None:
+    cache = getattr(config, "cache", None)
+    if cache is not None and _file_seconds:
+        kept = cache.get(_SECONDS_KEY, {})
+        kept.update({f: round(t, 2) for f, t in _file_seconds.items()})
+        cache.set(_SECONDS_KEY, kept)
 
 
 def _worker(config) -> bool:
@@ -204,6 +264,7 @@ def pytest_sessionfinish(session, exitstatus):
     cache = getattr(session.config, "cache", None)
     if cache is not None and not _worker(session.config):
         cache.set("aidl/skipped", _skipped)
+        _keep_file_seconds(session.config)
     if not _CHECK:
         return
     import time

@@ -2,7 +2,7 @@
 processes, so that every call ends within its time limit whatever the program does: a thread
 cannot be stopped, a process can (issue 37; ``aidl batch`` does the same with its workers).
 
-:class:`Worker` keeps one process (``multiprocessing``, spawn) with its own
+:class:`Worker` keeps one process (:func:`aidl_lang.host.workers.context`) with its own
 :class:`~.tools.Workspace`; a call is sent over a pipe and its answer (or its
 :class:`~.tools.Refused`) comes back.  A call that has not answered within
 :func:`aidl_lang.base.limits.wall_limit` of its budget (10 x its 15 s x ``budget`` of CPU time, plus
@@ -22,6 +22,9 @@ from ..base.limits import DEFAULT_BUDGET, wall_limit
 from . import tools as T
 
 POOL_SIZE = 3               # calls that may run at the same time (each in its own process)
+# what the tools import, imported once by the forkserver the workers are forked from
+PRELOAD = ("aidl_lang.mcp.worker", "aidl_lang.pipeline", "aidl_lang.output", "ezdxf", "cairosvg",
+           "manifold3d", "PIL.Image")
 # the tools whose files come back from the worker as ``(answer, files)``, written by the
 # server in the order the calls were made (:mod:`.order`)
 WRITERS = ("render", "import_drawing", "write_program", "set_params")
@@ -93,7 +96,7 @@ class Worker(W.Worker):
     factor ``budget``); :meth:`call` runs one, one at a time."""
 
     def __init__(self, root: str, budget: float = 1.0) -> None:
-        super().__init__(_handler, (str(root), budget))
+        super().__init__(_handler, (str(root), budget), preload=PRELOAD)
         self.root, self.budget = str(root), budget
 
     def seconds(self, budget: float | None) -> float:

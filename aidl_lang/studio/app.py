@@ -330,12 +330,13 @@ class Studio:
             self.pool = Remote(settings.scheduler, settings.budget, memory, settings.queue)
         else:
             self.pool = W.Pool([W.Worker(compiler.handler, (settings.budget,), memory,
-                                         settings.recycle)
+                                         settings.recycle, compiler.PRELOAD)
                                 for _ in range(max(1, settings.compilers))])
         self.limiter = MovingWindowRateLimiter(limiter_storage(self.folders))
         self.rate = parse(settings.rate)
         self.sweepers = None if settings.scheduler or settings.sweepers <= 0 else W.Pool(
-            [W.Worker(compiler.handler, (settings.budget,), memory, settings.recycle)
+            [W.Worker(compiler.handler, (settings.budget,), memory, settings.recycle,
+                      compiler.PRELOAD)
              for _ in range(settings.sweepers)])
         self.sweeps = Sweeps()
         self.affinity: dict[str, W.Worker] = {}

@@ -25,7 +25,7 @@ import threading
 import time
 
 from ..host import workers as W
-from .compiler import handler
+from .compiler import PRELOAD, handler
 from .store import read_files, write_files
 
 PROBE_EVERY = 1.0               # s between two reads of the cluster's load
@@ -54,7 +54,7 @@ def run_remote(request: tuple, files: dict, budget: float, seconds: float,
         pool = _local.workers = {}
     w = pool.get((budget, memory))
     if w is None:
-        w = pool[(budget, memory)] = W.Worker(handler, (budget,), memory)
+        w = pool[(budget, memory)] = W.Worker(handler, (budget,), memory, preload=PRELOAD)
     at = folder_at(request)
     if at is not None:
         folder = _mirror(os.path.basename(str(request[at])), files)
