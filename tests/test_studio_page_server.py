@@ -139,14 +139,16 @@ def test_a_drawing_opens_as_it_is_with_drawing2d(client, sid):
 
 
 def test_a_standard_library_message_is_located_at_the_call(client, sid):
-    """The planetary set at planet = 8 has messages raised in std/gears.aidl: they are at the
-    call of `planetary` in the program (issue 86), the library's line named in their text as
-    the program imports it (std/gears.aidl:298:5), never the server's path to it."""
-    # (the form's planet starts at 12 since issue 84's sweep: its range widened back here)
-    form = (ROOT / "aidl_lang" / "studio" / "forms" / "planetary.aidl").read_text() \
-        .replace("param planet = 18, min = 12,", "param planet = 18, min = 8,")
-    assert "min = 8," in form
-    v = client.post("/api/view", json={"sid": sid, "source": form, "values": {"planet": "8"}}).json()
+    """The planetary set with a sun of 13 (ring 49 + sun 13 does not divide by its 3 planets) has a message raised in std/gears.aidl (E0405, the spacing rule): it is at the
+    call of `planetary` in the program (issue 86), the library's line named in its text as
+    the program imports it (std/gears.aidl:358:5), never the server's path to it.  (It was
+    planet = 8 until h18-gears cut the ring's tips for small planets: that compiles clean.)"""
+    # (the sun's range follows its steps, which keep the rule, in the form: a plain range here)
+    lines = (ROOT / "aidl_lang" / "studio" / "forms" / "planetary.aidl").read_text().splitlines()
+    form = "\n".join("param sun = 12, min = 8, max = 48" if x.startswith("param sun =") else x
+                     for x in lines) + "\n"
+    v = client.post("/api/view", json={"sid": sid, "source": form, "values": {"sun": "13"}}).json()
+    assert [d["code"] for d in v["diagnostics"]] == ["E0405"], v["diagnostics"]
     spans = [d["span"] for d in v["diagnostics"] if d.get("span")]
     assert spans, v["diagnostics"]
     assert all(not s["file"].startswith("/") for s in spans), spans
