@@ -144,14 +144,14 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
 # An internal (ring) gear: `teeth` teeth of `module` pointing inward from an
 # annular plate, centered at (cx, cy). Its tooth spaces are an external
 # spur_gear's teeth (the same involute, `backlash` widening every space along
-# the pitch circle) 1.25 modules deep (ISO 53's dedendum: a pinion's tips clear
-# the roots by 0.25 module; less where the spaces would come to a point), its teeth cut back to the addendum circle
-# module * (teeth - 2) / 2, or further out when the `pinion` (the teeth of the
-# smallest gear meshing inside it; 0: not given) would meet them below its base
-# circle, and the plate reaches `rim` past the roots (outer diameter
-# module * (teeth + 2.5) + 2 rim). At `phase` 0 deg a tooth space points along
-# +x. A pinion of z teeth meshes inside it at the centre distance
-# module * (teeth - z) / 2 (`planetary` builds a whole set).
+# the pitch circle) 1.25 modules deep (ISO 53's dedendum: a pinion's tips
+# clear the roots by 0.25 module; less where the spaces would come to a point).
+# Its teeth are cut back to the addendum circle module * (teeth - 2) / 2, or
+# further out when the `pinion` (the teeth of the smallest gear meshing inside
+# it; 0: not given) would meet them below its base circle. The plate reaches
+# `rim` past the roots (outer diameter module * (teeth + 2.5) + 2 rim). At
+# `phase` 0 deg a tooth space points along +x. A pinion of z teeth meshes inside
+# it at the centre distance module * (teeth - z) / 2 (`planetary` builds a set).
 # Members: `body` (the plate's circle), `cut` (the hole: `cut.teeth`, the
 # spur_gear of the spaces, and `cut.tips`, the addendum circle), `pitch` (a
 # construction circle of the pitch diameter module * teeth).
@@ -263,12 +263,13 @@ def gear_train(teeth=[12, 36, 12, 30], module=2 mm, axle=4 mm, backlash=0.05 mm,
 # A rack and a pinion in mesh, on a base plate.
 # The rack has `rack_teeth` straight teeth of `module` (pitch pi * module,
 # flanks at the pressure angle 20 deg, addendum 1 module, or r sin^2(20 deg)
-# for a pinion of radius r under 18 teeth, dedendum 1.25 module) on a bar `height` below the roots; the pinion (`teeth`, bored for
-# `axle`) has its centre module * teeth / 2 above the rack's pitch line, a gap
-# over the rack's middle tooth (of an even count: the one right of the middle).
-# `backlash` thins the rack's teeth and the pinion's. Flat, the base plate is at (cx, cy) and the rack and pinion in mesh
-# above it; assembled, both lie on the plate (`lift` higher: a gap under
-# them, for spacers). Members: `rack`, `pinion`
+# for a pinion of radius r under 18 teeth, dedendum 1.25 module) on a bar
+# `height` below the roots; the pinion (`teeth`, bored for `axle`) has its
+# centre module * teeth / 2 above the rack's pitch line, a gap over the rack's
+# middle tooth (of an even count: the one right of the middle). `backlash`
+# thins the rack's teeth and the pinion's. Flat, the base plate is at (cx, cy)
+# and the rack and pinion in mesh above it; assembled, both lie on the plate
+# (`lift` higher: a gap under them, for spacers). Members: `rack`, `pinion`
 # (a spur_gear), `base`, `pitch` (the rack's pitch).
 def rack_and_pinion(teeth=16, module=2 mm, rack_teeth=12, height=8 mm, axle=4 mm,
                     backlash=0.05 mm, thickness=3 mm, lift=0 mm, cx=0 mm, cy=0 mm) -> assembly {

@@ -142,7 +142,7 @@ def test_a_standard_library_message_is_located_at_the_call(client, sid):
     """The planetary set with a sun of 13 (ring 49 + sun 13 does not divide by its 3
     planets) has a message raised in std/gears.aidl (E0405, the spacing rule): it is at the
     call of `planetary` in the program (issue 86), the library's line named in its text as
-    the program imports it (std/gears.aidl:358:5), never the server's path to it.  (It was
+    the program imports it (std/gears.aidl:359:5), never the server's path to it.  (It was
     planet = 8 until h18-gears cut the ring's tips for small planets: that compiles clean.)"""
     # (the sun's range follows its steps, which keep the rule, in the form: a plain range here)
     lines = (ROOT / "aidl_lang" / "studio" / "forms" / "planetary.aidl").read_text().splitlines()
