@@ -296,7 +296,7 @@ def at_call_site(d: Diagnostic, calls, main: str) -> Diagnostic:
     ``calls`` are ``(what, span)`` outermost first: the call in ``main`` becomes the primary
     span; each call between (inside a template of another file) is a note ("inside
     `gear_train`: `spur_gear` is called here"), and the original place the last note
-    ("inside `spur_gear`, at std/gears.aidl:17:5"), before ``d``'s own labels.  A fix in
+    ("inside `spur_gear`, at std/gears.aidl:22:5"), before ``d``'s own labels.  A fix in
     another file is dropped (the user edits the call), and a "line N" in the message or
     the hint names its file.  Unchanged when ``calls`` does not start in ``main``.  Returns ``d``."""
     calls = [c for c in calls if c[1] is not None]

@@ -273,7 +273,7 @@ def _summary(ws: Workspace, r: Result) -> dict:
 
 
 def _inside(d) -> str:
-    """`` (inside `spur_gear`, at std/gears.aidl:17:5)`` for a diagnostic raised inside a
+    """`` (inside `spur_gear`, at std/gears.aidl:22:5)`` for a diagnostic raised inside a
     template of another file (its line is the call's: issue 86; templates that call
     templates: ``inside `gear_pair` > `spur_gear`, at ...``), else ""."""
     outer = []
