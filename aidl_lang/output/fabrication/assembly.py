@@ -122,14 +122,15 @@ class Gap:
     gap: float
 
 
-def fit(bodies: list[tuple[str, object]], deadline=None, normals: dict | None = None,
+def fit(bodies, deadline=None, normals: dict | None = None,
         plates: dict | None = None, counts: dict | None = None
         ) -> tuple[list[Collision], list[Gap]]:
     """The fit check of the assembled product with Manifold's 3D booleans: every pair of parts
     whose solids overlap by more than :data:`VOLUME_TOL` (and :data:`DEPTH_TOL` deep), and,
     with two parts or more, every part that comes no nearer than :data:`GAP_TOL` to any
     other (a tab that does not reach its slot).  ``bodies``: (name, ``Manifold``) placed
-    (:func:`solids`, :func:`extrude`); ``normals``: part name -> the unit normal of its sheet
+    (:func:`solids`, :func:`extrude`), or a :class:`Bodies` that extrudes each when first
+    needed; ``normals``: part name -> the unit normal of its sheet
     (the placement's z axis; +z when missing), for the depth (:func:`_depth`).
 
     Only the pairs whose bounding boxes overlap (:func:`box_pairs`, a sort and sweep) are
@@ -148,9 +149,9 @@ def fit(bodies: list[tuple[str, object]], deadline=None, normals: dict | None = 
     ``counts``: a dict given is filled with what the check did, the same on any machine
     (``vertices`` of the bodies, ``booleans`` 3D intersections, ``gaps`` distances asked):
     the sweep's work (:func:`aidl_lang.params.sweep_plan.work`)."""
-    lazy = isinstance(bodies, Bodies)
-    tally = {"vertices": 0 if lazy else sum(int(m.num_vert()) for _, m in bodies),
-             "booleans": 0, "gaps": 0}
+    if not isinstance(bodies, Bodies):
+        bodies = _Made(bodies)
+    tally = {"vertices": 0, "booleans": 0, "gaps": 0}
     if counts is not None:
         counts.update(tally)
         tally = counts
@@ -158,15 +159,14 @@ def fit(bodies: list[tuple[str, object]], deadline=None, normals: dict | None = 
     def tick():
         if deadline is not None:
             deadline.check("the fit check", None)
-    boxes = np.array([bodies.box(i) for i in range(len(bodies))] if lazy else
-                     [_box(m) for _, m in bodies], dtype=float).reshape(-1, 6)
+    boxes = np.array([bodies.box(i) for i in range(len(bodies))], dtype=float).reshape(-1, 6)
     normals = normals or {}
     hits: list[Collision] = []
     touching = set()
     n = len(bodies)
     for i, j in box_pairs(boxes, GAP_TOL):
         tick()
-        na, nb = (bodies.name(i), bodies.name(j)) if lazy else (bodies[i][0], bodies[j][0])
+        na, nb = bodies.name(i), bodies.name(j)
         if plates is not None and na in plates and nb in plates:
             stacked = _stacked(plates[na], plates[nb])
             if stacked is not None:
@@ -218,11 +218,10 @@ def fit(bodies: list[tuple[str, object]], deadline=None, normals: dict | None = 
                 tally["gaps"] += g < 1e3
                 g = float(bodies[i][1].min_gap(bodies[j][1], g + 1.0)) if g < 1e3 else g
                 if best is None or g < best[0]:
-                    best = (g, bodies[j][0])
-            if not any(g.part == best[1] and g.nearest == bodies[i][0] for g in gaps):
-                gaps.append(Gap(bodies[i][0], best[1], best[0]))    # a pair is said once
-    if lazy:
-        tally["vertices"] += bodies.vertices
+                    best = (g, bodies.name(j))
+            if not any(g.part == best[1] and g.nearest == bodies.name(i) for g in gaps):
+                gaps.append(Gap(bodies.name(i), best[1], best[0]))    # a pair is said once
+    tally["vertices"] += bodies.vertices
     return hits, gaps
 
 
@@ -366,6 +365,27 @@ def _within(plate, box: np.ndarray, whole, tally: dict):
     m = mf.Manifold.extrude(shape ^ rect, t)
     tally["vertices"] += int(m.num_vert())
     return m if M is None else m.transform(np.asarray(M, dtype=float)[:3, :4])
+
+
+class _Made:
+    """``(name, Manifold)`` solids already made (a list as :func:`extrude` gives), read the
+    way :func:`fit` reads a :class:`Bodies`."""
+
+    def __init__(self, bodies) -> None:
+        self.items = list(bodies)
+        self.vertices = sum(int(m.num_vert()) for _, m in self.items)
+
+    def __len__(self) -> int:
+        return len(self.items)
+
+    def __getitem__(self, i: int):
+        return self.items[i]
+
+    def name(self, i: int) -> str:
+        return self.items[i][0]
+
+    def box(self, i: int) -> tuple:
+        return _box(self.items[i][1])
 
 
 class Bodies:
