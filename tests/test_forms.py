@@ -473,7 +473,11 @@ from hypothesis import given, settings, strategies as st  # noqa: E402
 
 @settings(max_examples=12, deadline=None)
 @given(rows=st.integers(1, 4), cols=st.integers(1, 4),
-       dx=st.integers(-30, 30).filter(lambda v: v != 0), dy=st.integers(-30, 30),
+       # a spacing of 0 with two rows or columns is E0108 (the copies land on one another,
+       # tests/test_operations.py), not a lattice: a drawn dy of 0 failed this law in a full
+       # run (rows=2, dy=0; about 1 run in 7 at 12 examples)
+       dx=st.integers(-30, 30).filter(lambda v: v != 0),
+       dy=st.integers(-30, 30).filter(lambda v: v != 0),
        x0=st.integers(-50, 50), y0=st.integers(-50, 50))
 def test_grid_copy_r_c_sits_at_the_lattice_point(tmp_path_factory, rows, cols, dx, dy, x0, y0):
     from aidl_lang.pipeline import compile_source
