@@ -29,7 +29,7 @@ from .interpreter.common import BudgetExhausted, FileCtx, Scope
 from .interpreter.expressions import Expressions
 from .interpreter.statements import Statements
 from .base.limits import (DEFAULT_BUDGET, MAX_GEOMETRY, MAX_ITER, MAX_TEMPLATE_DEPTH, WALL_GUARD, Budget,
-                     cpu_text, now, wall_text)
+                     Work, cpu_text, interp_work, now, wall_text)
 from .base.memory import gc_paused
 from .library.sources import STDLIB
 
@@ -49,12 +49,16 @@ class Interpreter(Statements, Calls, Expressions):
     """
 
     def __init__(self, sink: DiagnosticSink, overrides: dict[str, str] | None = None,
-                 budget: Budget = DEFAULT_BUDGET, deadline: float | None = None):
+                 budget: Budget = DEFAULT_BUDGET, deadline: float | None = None,
+                 work: Work | None = None):
         self.sink = sink
         self.budget = budget
-        # the compile's end on the budget's clock (CPU seconds, limits.now) and its wall guard
-        self.deadline = deadline if deadline is not None else now() + budget.seconds
-        self.wall_end = time.monotonic() + WALL_GUARD * max(self.deadline - now(), 0.0)
+        # the compile's backstop on CPU seconds (limits.now) and its wall guard: the steps,
+        # objects and sizes below decide; these only stop what they do not count
+        self.deadline = deadline if deadline is not None else now() + budget.backstop
+        self.wall_end = time.monotonic() + WALL_GUARD * budget.seconds
+        # the compile's work meter: the steps and objects are added to it when the run ends
+        self.work = work
         self.steps = 0
         self.objects = 0
         self.chars = 0                                # characters of every string built so far
@@ -97,6 +101,9 @@ class Interpreter(Statements, Calls, Expressions):
             except BudgetExhausted as ex:
                 self.budget_error(ex)
                 return self.model
+            finally:
+                if self.work is not None:
+                    self.work.add(interp_work(self.steps, self.objects), "interpreting")
 
     # ------------------------------------------------------------------ the budget
     def step(self, span=None) -> None:
@@ -113,7 +120,8 @@ class Interpreter(Statements, Calls, Expressions):
     def check_time(self, span=None) -> None:
         """The deadline (the budget's last resort): its CPU seconds, or its wall guard."""
         if now() > self.deadline:
-            raise BudgetExhausted(cpu_text(self.budget.seconds), span or self.cur_span, self.frames)
+            raise BudgetExhausted(cpu_text(self.budget.backstop), span or self.cur_span,
+                                  self.frames)
         if time.monotonic() > self.wall_end:
             raise BudgetExhausted(wall_text(self.budget.seconds), span or self.cur_span,
                                   self.frames)

@@ -18,7 +18,8 @@ from .base.diagnostics import Diagnostic, DiagnosticSink, Label, as_lf, in_stdli
 from .interp import Interpreter
 from .base.memory import gc_paused
 from .base.limits import (DEFAULT_BUDGET, MAX_EXTENT, MEMORY_HINT, Budget, Deadline, OutOfBudget,
-                     OutOfMemory, is_out_of_memory, memory_fix, memory_text, now)
+                     OutOfMemory, Work, is_out_of_memory, memory_fix, memory_text, now,
+                     solve_work)
 from .geometry.core.expr import Lin, Nl
 from .geometry.core.model import Model
 from .parser import parse
@@ -31,12 +32,13 @@ from .typecheck import check
 
 class Compiled(Compared):
     """What :func:`compile_source` made: the diagnostics, and each stage's result it reached."""
-    __slots__ = ("sink", "model", "solve", "drawing", "solve_seconds", "params", "deadline")
+    __slots__ = ("sink", "model", "solve", "drawing", "solve_seconds", "params", "deadline",
+                 "work")
 
     def __init__(self, sink: DiagnosticSink, model: Model | None = None,
                  solve: SolveResult | None = None, drawing: Drawing | None = None,
                  solve_seconds: float = 0.0, params: dict | None = None,
-                 deadline: Deadline | None = None):
+                 deadline: Deadline | None = None, work: Work | None = None):
         self.sink = sink
         self.model = model
         self.solve = solve
@@ -44,6 +46,10 @@ class Compiled(Compared):
         self.solve_seconds = solve_seconds  # wall time of the solve alone (``aidl batch`` rows)
         self.params = params  # the main file's params: name -> value (Q, bool, str)
         self.deadline = deadline  # the compile's end (limits.Deadline), for the writers after it
+        # the compile's work meter (limits.Work): the units each stage spent, the same on any
+        # machine (`--json`'s `work`); the writers after it spend from the same meter
+        self.work = work if work is not None else (deadline.work if deadline is not None
+                                                   else None)
 
     @property
     def ok(self) -> bool:
@@ -269,14 +275,15 @@ _deep_state = threading.local()
 
 def _compile(sink, source, path, overrides, do_solve, min_wall=None,
              budget: Budget = DEFAULT_BUDGET, shape_checks: bool = True) -> Compiled:
-    deadline = now() + budget.seconds
+    end = Deadline.starting(budget)     # the work meter and the backstops, for every stage
+    work = end.work
     program = parse(source, path, sink)
     if sink.has_errors:
-        return Compiled(sink)
+        return Compiled(sink, work=work)
     check(program, sink)
     if sink.has_errors:
-        return Compiled(sink)
-    interp = Interpreter(sink, overrides, budget, deadline)
+        return Compiled(sink, work=work)
+    interp = Interpreter(sink, overrides, budget, end.at, work=work)
     model = interp.run(program)
     params = getattr(interp.file, "params", None)
     if not sink.has_errors and _empty_drawing(program, model):
@@ -285,18 +292,18 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=None,
                      hint="add a structure with shapes, e.g. `solid plate { body = "
                           "Rectangle(center=(0, 0), width=40, height=20) }`")
     if not do_solve or sink.has_errors and not _only_requirements(sink):
-        return Compiled(sink, model, params=params)
+        return Compiled(sink, model, params=params, work=work)
     with warnings.catch_warnings(), np.errstate(all="ignore"):
         # overflow in a residual is reported as a failed solve, not as a numpy warning
         warnings.simplefilter("ignore", RuntimeWarning)
         t0 = time.perf_counter()
-        result = solve(model, deadline=deadline)
+        result = solve(model, deadline=end.at)
         took = time.perf_counter() - t0
+    work.add(solve_work(result.iterations, len(model.x)), "solving")
     if not result.converged:
         report_failure(sink, result, path)
         check_assertions(sink, model, held_only=True)
-        return Compiled(sink, model, result, solve_seconds=took, params=params)
-    end = Deadline(deadline, budget)
+        return Compiled(sink, model, result, solve_seconds=took, params=params, work=work)
     return Compiled(sink, model, result, after_solve(sink, model, min_wall, shape_checks, end),
                     solve_seconds=took, params=params, deadline=end)
 

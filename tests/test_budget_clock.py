@@ -1,12 +1,11 @@
-"""A compile's budget is CPU seconds, not wall time (issue 83): the same program gets the same
-answer on a quiet machine and on one whose every core is busy.
+"""A compile's budget is work units, not seconds (issue 101; before it CPU seconds, issue 83,
+and before that wall time): the same program gets the same answer, the same message and the
+same output on a quiet machine, a busy one and a slower one.
 
-Before, the budget's 15 s were wall time (``time.monotonic``): at load 10 the 20,000-hole panel
-that checks in 4 s of CPU ended in E0304 after 2-5 s of CPU, and Boxes.py's ShutterBox import
-(1.4 s CPU, 19 s wall) was refused the same way.  Now ``limits.now`` (this process's CPU time,
-every thread) is the budget's clock, and wall time is only an outer guard at
-``limits.WALL_GUARD`` times the seconds (a machine that gives a compile less than a tenth of a
-core); the servers kill a worker at ``limits.wall_limit`` past that."""
+Each stage pays work units for what it walks (``limits.Work``) before it walks it; CPU seconds
+(``limits.now``, times ``AIDL_CPU_SCALE``) are only a backstop at ``limits.BACKSTOP`` times the
+budget's seconds, and wall time an outer guard at ``limits.WALL_GUARD`` times them; the servers
+kill a worker at ``limits.wall_limit`` past that."""
 from __future__ import annotations
 
 import os
@@ -29,40 +28,77 @@ def _spin(cpu_seconds: float) -> None:
         pass
 
 
-def test_a_deadline_counts_cpu_seconds_not_the_time_the_process_waits():
-    """Waiting (a process that the machine does not run) spends no budget; work does."""
+def test_a_deadline_counts_work_not_the_time_the_process_waits_or_spins():
+    """Neither waiting nor CPU time spends the budget: the work paid does, and the step that
+    would pass it is refused before it starts, with the units said."""
     d = Deadline.starting(Budget(seconds=0.5))
-    time.sleep(1.0)                       # twice the budget of wall time, no CPU (the wall
-    d.check("the booleans")               # guard is 5 s): not past, the budget is CPU seconds
-    _spin(0.55)
+    assert d.work.limit == 66_667 == round(0.5 / limits.UNIT_SECONDS)
+    time.sleep(0.2)
+    _spin(0.3)                             # CPU the stage did not count: not the budget
+    d.check("the booleans", ahead=60_000)  # 60,001 units paid
     with pytest.raises(OutOfBudget) as e:
-        d.check("the booleans")
-    assert str(e.value) == "more than 0.5 s of CPU time"
+        d.check("the booleans", ahead=10_000)
+    assert str(e.value) == "it needs more than 70,002 work units, past its budget of 66,667"
+    assert e.value.stage == "the booleans" and "--budget" in e.value.hint
+    assert d.work.spent == 60_001 and d.work.by_stage == {"the booleans": 60_001}
 
 
-def test_the_wall_guard_ends_a_compile_that_gets_less_than_a_tenth_of_a_core():
+def test_the_cpu_backstop_and_the_wall_guard_say_what_they_are():
     before = time.monotonic()
     d = Deadline.starting(Budget(seconds=2.0))
     after = time.monotonic()
-    # ten times the CPU seconds left when it was made (a hair under 2 s of them)
-    assert before + limits.WALL_GUARD * 1.9 <= d.wall_at <= after + limits.WALL_GUARD * 2.0
+    # the wall guard: ten times the budget's seconds
+    assert before + limits.WALL_GUARD * 2.0 <= d.wall_at <= after + limits.WALL_GUARD * 2.0
+    # the CPU backstop: BACKSTOP times them, on the scaled clock
+    assert d.at - limits.now() <= limits.BACKSTOP * 2.0
+    d.at = limits.now() - 1e-3
+    with pytest.raises(OutOfBudget) as e:
+        d.check("the shape checks")
+    assert str(e.value).startswith("more than 12 s of CPU time (the backstop, 6 x the "
+                                   "budget's time")
+    d = Deadline.starting(Budget(seconds=2.0))
     d.wall_at = time.monotonic() - 1e-3   # 20 s of wall time gone, hardly any CPU
     with pytest.raises(OutOfBudget) as e:
         d.check("the shape checks")
-    assert str(e.value).startswith("more than 20 s of wall time (10 x its 2 s of CPU time")
+    assert str(e.value).startswith("more than 20 s of wall time (10 x its 2 s budget")
     assert limits.wall_limit(DEFAULT_BUDGET.seconds) == 160.0     # the servers' kill: after it
 
 
-def test_the_interpreter_counts_cpu_seconds_too(compile_text):
-    """A loop that runs past a small budget's CPU seconds ends in E0304 saying CPU time, at the
-    loop (the steps budget is raised so that time is what runs out; 0.3 s, so that its wall
-    guard, 3 s, is not reached first even when the process gets a fifth of a core)."""
+def test_the_cpu_scale_hook_counts_every_reading_k_times():
+    """``AIDL_CPU_SCALE=3``: the product's CPU readings count three times (a machine three
+    times slower); a value that is not a positive number is 1."""
+    code = ("import time\nfrom aidl_lang.base import limits\n"
+            "a, b = limits.now(), time.process_time()\n"
+            "print(limits.CPU_SCALE, round(a / b))")
+    for k, want in (("3", "3.0 3"), ("abc", "1.0 1"), ("-2", "1.0 1"), ("", "1.0 1")):
+        r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                           env={**os.environ, "AIDL_CPU_SCALE": k}, timeout=120, cwd=ROOT)
+        assert r.stdout.strip() == want, (k, r.stdout, r.stderr)
+
+
+def test_a_runaway_loop_ends_on_its_steps_the_same_way_twice(compile_text):
+    """A loop past the budget's steps ends in E0304 at the loop, the same text every run
+    (the steps are work counted, not time)."""
     src = ("solid s {\n    body = Rectangle(center=(0, 0), width=10, height=10)\n"
            "    for i in range(10000) { for j in range(1000) { t = sqrt(i * j + 1) } }\n}\n")
-    res = compile_text(src, budget=Budget(steps=10**9, objects=10**9, size=10**9, seconds=0.3,
+    texts = []
+    for _ in range(2):
+        res = compile_text(src)
+        [d] = [d for d in res.sink.items if d.code == "E0304"]
+        assert "more than 250,000 evaluation steps" in d.message and d.span.line == 3
+        texts.append((d.message, d.hint))
+    assert texts[0] == texts[1]
+
+
+def test_the_interpreter_stops_at_its_cpu_backstop_when_nothing_counted_runs_out(compile_text):
+    """With every count raised out of reach, the backstop still ends the loop (BACKSTOP x
+    0.1 s of CPU), saying it is the backstop."""
+    src = ("solid s {\n    body = Rectangle(center=(0, 0), width=10, height=10)\n"
+           "    for i in range(10000) { for j in range(1000) { t = sqrt(i * j + 1) } }\n}\n")
+    res = compile_text(src, budget=Budget(steps=10**9, objects=10**9, size=10**9, seconds=0.1,
                                           items=10**6))
     [d] = [d for d in res.sink.items if d.code == "E0304"]
-    assert "more than 0.3 s of CPU time" in d.message and d.span.line == 3
+    assert "of CPU time (the backstop" in d.message and d.span.line == 3
 
 
 @pytest.mark.timing

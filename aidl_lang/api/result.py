@@ -528,7 +528,8 @@ class Result:
         if deadline is not None and nest_time:
             from ..base.limits import Deadline
             from ..output.fabrication.layout import nest_cpu_seconds
-            deadline = Deadline(deadline.at + nest_cpu_seconds(nest_time), deadline.budget)
+            deadline = Deadline(deadline.at + nest_cpu_seconds(nest_time), deadline.budget,
+                                work=deadline.work)
         cut = for_cutting(self.output, kerf, deadline, apart=True)   # pieces apart: whole
         where = plan(cut, sheet, gap, rotate, nest_time, deadline=deadline)
         flat, dropped = place(cut, where, sheet)

@@ -5,19 +5,66 @@ The per-construct limits (``MAX_ITER``, ``MAX_TEMPLATE_DEPTH``...) are the first
 stops one construct that is too large by itself.  The :class:`Budget` bounds the product: every
 loop iteration, comprehension element, call and template instance is one *step*; geometry
 points, geometry objects, structures and constraints share one *object* count; every string or list a program
-builds is limited in size; and CPU seconds are the last resort (:func:`now`, the budget's clock: this
-process's CPU time, so a program gets the same answer on a quiet machine and a busy one), with wall
-time only as an outer guard at :data:`WALL_GUARD` times the seconds.  A program that goes past any of
-them gets one located diagnostic (``E0304``) naming the loops and template instances on the
-stack (after the solve: the structure and the stage, :class:`OutOfBudget`), never a hang, a
-crash or unbounded memory.  ``aidl check/render --budget K`` multiplies
-every budget figure by ``K``.
+builds is limited in size; and every stage (interpreting, solving, the booleans, the shape checks,
+the writers, imports, sweeps) spends *work units* (:class:`Work`) counted from what it walks
+(vertices, Newton steps, pairs, entities, points judged): the same program at the same budget
+spends the same work and gets the same answer, the same message and the same output on any
+machine at any load (issue 101; prior art: Z3's ``rlimit``, wasmtime's fuel, gas).  A unit is
+about :data:`UNIT_SECONDS` of CPU on the reference machine.  CPU seconds (:func:`now`) are only
+a far backstop at :data:`BACKSTOP` times the budget's seconds, and wall time an outer guard at
+:data:`WALL_GUARD` times them.  A program that goes past any of them gets one located
+diagnostic (``E0304``) naming the loops and template instances on the stack (after the solve:
+the structure and the stage, :class:`OutOfBudget`), never a hang, a crash or unbounded memory.
+``aidl check/render --budget K`` multiplies every budget figure by ``K``.
 """
 from __future__ import annotations
 
+import os
 import time
 
 from .records import Frozen
+
+# CPU seconds of one work unit on the reference machine (the calibration: the sweep's weights,
+# aidl_lang/params/sweep_plan.py, fitted over the gallery's compiles: 2.0 / 7.3 / 12.5 us a unit,
+# min / median / max per design on 2 cores); the default budget's 15 s are 2,000,000 units
+UNIT_SECONDS = 7.5e-6
+# the CPU-second backstop: a compile also ends after BACKSTOP x its budget's seconds of CPU time
+# (90 s for the default 15 s), far above what its work units take on the reference machine (at
+# most 12.5 / 7.5 of the seconds), so that it never decides for a program the work accepts
+BACKSTOP = 6.0
+
+
+# the weights of the work unit for the stages bounded by counts of their own (fitted with the
+# sweep's, aidl_lang/params/sweep_plan.py): an interpreter step 1, an object it made
+# PER_OBJECT, a Newton step PER_ITERATION, an unknown of the model PER_UNKNOWN
+PER_OBJECT = 5
+PER_UNKNOWN = 0.25
+PER_ITERATION = 80
+
+
+def interp_work(steps: int, objects: int) -> float:
+    """The work units of interpreting: its ``steps`` and ``PER_OBJECT`` x its ``objects``."""
+    return steps + PER_OBJECT * objects
+
+
+def solve_work(iterations: int, unknowns: int) -> float:
+    """The work units of a solve: ``PER_ITERATION`` a Newton step, ``PER_UNKNOWN`` an
+    unknown."""
+    return PER_ITERATION * iterations + PER_UNKNOWN * unknowns
+
+
+def _cpu_scale() -> float:
+    """``AIDL_CPU_SCALE`` (a test hook, default 1): every CPU-time reading the product takes
+    (:func:`now`) counts this many times, as on a machine that many times slower; a value that
+    is not a positive number is 1."""
+    try:
+        k = float(os.environ.get("AIDL_CPU_SCALE") or 1.0)
+    except ValueError:
+        return 1.0
+    return k if k > 0 and k == k and k != float("inf") else 1.0
+
+
+CPU_SCALE = _cpu_scale()
 
 MAX_ITER = 10_000            # iterations of one loop or comprehension (Budget.items)
 MAX_GEOMETRY = 50_000        # geometry objects in one model (Budget.geometry)
@@ -65,10 +112,13 @@ class Budget(Frozen):
       instances (about 2 s of interpretation);
     - ``objects``: 120 000 points, geometry objects, structures and constraints together;
     - ``size``: 1 000 000 characters of one string / items of one list;
-    - ``seconds``: 15 s of CPU time (:func:`now`) for the whole compile: interpreting,
-      solving, the booleans and the shape checks (and, in ``aidl render``, the writers; in
-      ``aidl parts`` the parts list; in ``aidl check --describe`` the description); wall
-      time is an outer guard at :data:`WALL_GUARD` x that (150 s);
+    - ``seconds``: 15, the budget's size in seconds of the reference machine: its
+      :attr:`work`, ``seconds`` / :data:`UNIT_SECONDS` = 2 000 000 work units for the whole
+      compile (interpreting, solving, the booleans and the shape checks; in ``aidl render``
+      the writers; in ``aidl parts`` the parts list; in ``aidl check --describe`` the
+      description; in ``aidl import`` the reading and inference); CPU time (:func:`now`) is a
+      backstop at :data:`BACKSTOP` x that (90 s) and wall time an outer guard at
+      :data:`WALL_GUARD` x that (150 s);
     - ``vertices``: 3 000 000 vertices of the tessellated outlines handed to the booleans
       (counted before they are made: a circle of radius ``r`` needs
       :func:`~aidl_lang.geometry.shapes.tessellate.segments_for` ``(r)``; a perforated sheet of
@@ -90,6 +140,17 @@ class Budget(Frozen):
         object.__setattr__(self, "items", items)
         object.__setattr__(self, "geometry", geometry)
 
+    @property
+    def work(self) -> int:
+        """The work units (:class:`Work`) of this budget: ``seconds`` / :data:`UNIT_SECONDS`."""
+        return int(round(self.seconds / UNIT_SECONDS))
+
+    @property
+    def backstop(self) -> float:
+        """The CPU seconds after which a compile ends whatever its work: :data:`BACKSTOP` x
+        ``seconds``."""
+        return BACKSTOP * self.seconds
+
     def scaled(self, k: float) -> "Budget":
         """Every figure multiplied by ``k`` (``--budget K``); ``k`` > 0."""
         return Budget(int(self.steps * k), int(self.objects * k), int(self.size * k),
@@ -110,9 +171,11 @@ class OutOfBudget(Exception):
     that no budget raises).  :func:`aidl_lang.pipeline.after_solve` turns it into one located
     ``E0304``."""
 
-    def __init__(self, what: str, stage: str, where=None, hint: str | None = None):
+    def __init__(self, what: str, stage: str, where=None, hint: str | None = None,
+                 work: float | None = None):
         super().__init__(what)
         self.what, self.stage, self.where, self.hint = what, stage, where, hint
+        self.work = work          # the work units spent or needed when it ran out, if known
 
 
 class OutOfMemory(OutOfBudget):
@@ -190,56 +253,140 @@ def wall_limit(seconds: float) -> float:
 
 
 def now() -> float:
-    """The budget's clock, in seconds: this process's CPU time (``time.process_time()``, every
-    thread of the process: the compile's own and the libraries' it calls).  A compile's
-    ``deadline`` floats and :attr:`Deadline.at` are values of this clock, so the same program
-    reaches its budget after the same work on a quiet machine and on one where every core is
-    busy (issue 83: the 20,000-hole panel was E0304 at load 10 and ``ok`` at load 0).  A process
+    """The backstop's clock, in seconds: this process's CPU time (``time.process_time()``,
+    every thread of the process: the compile's own and the libraries' it calls) times
+    :data:`CPU_SCALE` (``AIDL_CPU_SCALE``, a test hook for a slower machine).  A compile's
+    ``deadline`` floats and :attr:`Deadline.at` are values of this clock: the backstop
+    (:data:`BACKSTOP`), never what decides for a program its work units accept.  A process
     runs one compile at a time (every front end compiles in its own worker process or thread
     joined before the next), so its CPU time is that compile's."""
-    return time.process_time()
+    return time.process_time() * CPU_SCALE
+
+
+def budget_factor_text(need: float, budget: "Budget") -> str:
+    """The smallest ``--budget K`` (a round number) whose work is at least ``need`` units,
+    for ``budget`` at factor 1 = :data:`DEFAULT_BUDGET` (``--budget 2``, ``--budget 40``)."""
+    k = need / max(DEFAULT_BUDGET.work, 1)
+    for nice in (1.5, 2, 3, 4, 5, 6, 8, 10, 15, 20, 30, 40, 50, 60, 80, 100):
+        if nice >= k * 1.05:
+            return f"--budget {nice:g}"
+    return f"--budget {int(k * 1.05) + 1}"
+
+
+class Work:
+    """The work meter of one compile (or one import, one sweep): ``spent`` work units of its
+    ``limit`` (:attr:`Budget.work`), each stage's share in ``by_stage``.  A stage spends units
+    for what it walks *before* it walks it (:meth:`spend`, as gas is paid before a step): the
+    step that would pass the limit is refused with :class:`OutOfBudget` naming the stage, the
+    units it needs, the budget and the ``--budget`` that would do.  Counted from the program
+    alone, so the same on every machine and at any load."""
+
+    __slots__ = ("limit", "spent", "by_stage")
+
+    def __init__(self, limit: float):
+        self.limit = float(limit)
+        self.spent = 0.0
+        self.by_stage: dict[str, float] = {}
+
+    def add(self, units: float, stage: str) -> None:
+        """Count ``units`` already spent by ``stage`` (a stage bounded by limits of its own:
+        the interpreter's steps, the solver's Newton steps); the next :meth:`spend` refuses
+        once the total is past the limit."""
+        self.spent += units
+        self.by_stage[stage] = self.by_stage.get(stage, 0.0) + units
+
+    def spend(self, units: float, stage: str, where=None) -> None:
+        """Pay ``units`` for the next step of ``stage`` (on the structure ``where``), or raise
+        :class:`OutOfBudget` when the total would pass the limit (nothing is spent then)."""
+        if self.spent + units > self.limit:
+            raise OutOfBudget(self.text(units), stage, where,
+                              hint=self.hint(units), work=self.spent + units)
+        self.add(units, stage)
+
+    def text(self, units: float = 0.0) -> str:
+        """What ran out, for ``E0304``: the units needed against the budget."""
+        return (f"it needs more than {int(self.spent + units):,} work units, past its budget "
+                f"of {int(self.limit):,}")
+
+    def hint(self, units: float = 0.0) -> str:
+        """The fix: build less, or the ``--budget`` whose work covers what was needed."""
+        need = max(self.spent + units, self.limit)
+        return ("build less (fewer or smaller shapes: every circle and arc becomes chords of "
+                f"0.005 mm), or raise the budget with `{budget_factor_text(need, DEFAULT_BUDGET)}`"
+                " (or more)")
+
+    def __int__(self) -> int:
+        return int(self.spent)
+
+    def to_json(self) -> dict:
+        """``{"spent": units, "budget": units, "stages": {stage: units}}`` (``--json``'s
+        ``work``): whole units, the same on every machine."""
+        return {"spent": int(self.spent), "budget": int(self.limit),
+                "stages": {k: int(v) for k, v in self.by_stage.items()}}
 
 
 class Deadline:
-    """The end of one compile on the budget's clock (:func:`now`: CPU seconds) and the budget
-    it comes from, with its wall-time guard (``wall_at``, ``time.monotonic()`` seconds;
-    by default :data:`WALL_GUARD` times the CPU seconds left when it is made); :meth:`check`
-    raises :class:`OutOfBudget` once either has passed."""
+    """The budget of one compile after the interpreter: its work meter (``work``, a
+    :class:`Work` of the budget's units) and the backstops, its CPU end ``at`` (:func:`now`:
+    :attr:`Budget.backstop` CPU seconds from the start) and its wall-time guard (``wall_at``,
+    ``time.monotonic()`` seconds; by default :data:`WALL_GUARD` times the budget's seconds).
+    :meth:`check` pays a step's work and raises :class:`OutOfBudget` once any of them has
+    passed."""
 
-    __slots__ = ("at", "budget", "wall_at")
+    __slots__ = ("at", "budget", "wall_at", "work")
 
-    def __init__(self, at: float, budget: Budget = DEFAULT_BUDGET, wall_at: float | None = None):
+    def __init__(self, at: float, budget: Budget = DEFAULT_BUDGET, wall_at: float | None = None,
+                 work: Work | None = None):
         self.at, self.budget = at, budget
         self.wall_at = (wall_at if wall_at is not None
-                        else time.monotonic() + WALL_GUARD * max(at - now(), 0.0))
+                        else time.monotonic() + WALL_GUARD * budget.seconds)
+        self.work = work if work is not None else Work(budget.work)
 
     @classmethod
-    def starting(cls, budget: Budget = DEFAULT_BUDGET) -> "Deadline":
-        """The deadline of a compile that starts now with ``budget``: ``budget.seconds`` CPU
-        seconds from :func:`now`, and :data:`WALL_GUARD` times that of wall time."""
-        return cls(now() + budget.seconds, budget)
+    def starting(cls, budget: Budget = DEFAULT_BUDGET, work: Work | None = None) -> "Deadline":
+        """The deadline of a compile that starts now with ``budget``: its work units, the
+        backstop :attr:`Budget.backstop` CPU seconds from :func:`now`, and :data:`WALL_GUARD`
+        times its seconds of wall time."""
+        return cls(now() + budget.backstop, budget, work=work)
 
     def check(self, stage: str, where=None, ahead: float = 0.0) -> None:
-        """Raise :class:`OutOfBudget` once the deadline has passed (its CPU seconds, or the wall
-        guard), or when a step expected to take ``ahead`` CPU seconds (a single call into
-        Manifold that cannot be interrupted) would end past it: refused before it starts."""
-        t = now()
-        if t > self.at:
-            raise OutOfBudget(cpu_text(self.budget.seconds), stage, where)
+        """Pay one work unit and ``ahead`` more (the work units of the next step: a single
+        call into Manifold that cannot be interrupted, priced before it starts) for ``stage``;
+        raise :class:`OutOfBudget` when that would pass the work budget (refused before it
+        starts), or once the CPU backstop or the wall guard has passed."""
+        self.work.spend(1.0 + ahead, stage, where)
+        self.backstop(stage, where)
+
+    def seconds_left(self) -> float:
+        """The work units left, as seconds of the reference machine (:data:`UNIT_SECONDS`):
+        what a stage that plans by an estimate in seconds (a union's scan-line work) may
+        spend, the same on every machine."""
+        return max(self.work.limit - self.work.spent, 0.0) * UNIT_SECONDS
+
+    def backstop(self, stage: str, where=None) -> None:
+        """Raise :class:`OutOfBudget` once the CPU backstop or the wall guard has passed."""
+        if now() > self.at:
+            raise OutOfBudget(cpu_text(self.budget.backstop), stage, where,
+                              work=self.work.spent)
         if time.monotonic() > self.wall_at:
-            raise OutOfBudget(wall_text(self.budget.seconds), stage, where)
-        if t + ahead > self.at:
-            raise OutOfBudget(f"about {ahead:.3g} s more would end past the "
-                              f"{self.budget.seconds:g} s of CPU time", stage, where)
+            raise OutOfBudget(wall_text(self.budget.seconds), stage, where,
+                              work=self.work.spent)
+
+
+def seconds_as_work(seconds: float) -> float:
+    """An estimate in reference-machine CPU seconds (a Manifold call's, a writer's) as work
+    units: ``seconds`` / :data:`UNIT_SECONDS`."""
+    return seconds / UNIT_SECONDS
 
 
 def cpu_text(seconds: float) -> str:
-    """What ran out, for ``E0304``, when a compile used its ``seconds`` of CPU time."""
-    return f"more than {seconds:g} s of CPU time"
+    """What ran out, for ``E0304``, when a compile reached its CPU backstop (``seconds``)."""
+    return (f"more than {seconds:g} s of CPU time (the backstop, {BACKSTOP:g} x the budget's "
+            "time: a stage that counted too little of its work)")
 
 
 def wall_text(seconds: float) -> str:
     """What ran out, for ``E0304``, when the wall-time guard of a ``seconds`` budget passed."""
     return (f"more than {WALL_GUARD * seconds:g} s of wall time ({WALL_GUARD:g} x its "
-            f"{seconds:g} s of CPU time: this machine gave the compile less than "
+            f"{seconds:g} s budget: this machine gave the compile less than "
             f"{1 / WALL_GUARD:.0%} of a core)")

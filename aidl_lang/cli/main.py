@@ -55,6 +55,11 @@ def _overrides(items: list[str]) -> dict[str, str]:
 PRINTED_PER_CODE = 10      # diagnostics of one code printed in full; the rest are counted
 
 
+def _work_of(res) -> dict:
+    """``{"work": ...}``: the work units a compile's stages spent (``--json``), or ``{}``."""
+    return {"work": res.work.to_json()} if getattr(res, "work", None) is not None else {}
+
+
 def _emit(sink: DiagnosticSink, as_json: bool, ok: bool, extra: dict | None = None) -> None:
     if as_json:
         doc = {"ok": ok, "diagnostics": [d.to_json(sink.sources) for d in sink.items]}
@@ -166,6 +171,8 @@ def cmd_check(args) -> int:
         for d in report.diagnostics:
             res.sink.add(d)
         extra["sweep"] = report.to_json()
+    if res.work is not None:
+        extra["work"] = res.work.to_json()
     _emit(res.sink, args.json, res.ok, extra)
     if res.ok and not args.json:
         s = res.solve
@@ -425,7 +432,7 @@ def cmd_render(args) -> int:
     res = compile_source(src, args.file, _overrides(args.set), min_wall=args.min_wall,
                          budget=_budget(args))
     if not res.ok:
-        _emit(res.sink, args.json, False)
+        _emit(res.sink, args.json, False, _work_of(res))
         return 1
     opt = Options(show=show, style=args.svg_style, dpi=args.dpi, width=args.png_width,
                   thickness=thickness, margin=args.margin, assembled=args.assembled,
@@ -482,14 +489,14 @@ def cmd_render(args) -> int:
     except OutputError as e:                 # an impossible size, or bounded work ran out
         if e.budget is not None:                 # located: which structure, which stage
             report_out_of_budget(res.sink, e.budget)
-            _emit(res.sink, args.json, False)
+            _emit(res.sink, args.json, False, _work_of(res))
         elif isinstance(e, StackedParts):        # located at the first of the two parts
             report_stacked(res.sink, res.drawing, e)
-            _emit(res.sink, args.json, False)
+            _emit(res.sink, args.json, False, _work_of(res))
         elif hasattr(e, "holds"):                # a layout with no solid part: at the design
             from ..pipeline import report_nothing
             report_nothing(res.sink, res.model, e)
-            _emit(res.sink, args.json, False)
+            _emit(res.sink, args.json, False, _work_of(res))
         else:
             print(f"aidl: error: {e}", file=sys.stderr)
         return 1
@@ -497,7 +504,8 @@ def cmd_render(args) -> int:
     if err:
         print(f"aidl: error: {err}", file=sys.stderr)
         return 1
-    _emit(res.sink, args.json, True, {"output": str(outs[0]), "outputs": [str(o) for o in outs]})
+    _emit(res.sink, args.json, True, {"output": str(outs[0]), "outputs": [str(o) for o in outs]}
+          | _work_of(res))
     _report_written(args, items, outs, notes)
     return 0
 
@@ -582,7 +590,7 @@ def _lay_out(args, res, output, cut, sheet, gap, rotate, notes: list):
         from ..base.limits import Deadline
         from ..output.fabrication.layout import nest_cpu_seconds
         res.deadline = Deadline(res.deadline.at + nest_cpu_seconds(args.nest_time),
-                                res.deadline.budget)
+                                res.deadline.budget, work=res.deadline.work)
     where = plan(cut, sheet, gap, rotate, args.nest_time, deadline=res.deadline)
     flat, dropped = place(cut, where, sheet)
     solid, _ = place(output, where, sheet)

@@ -965,11 +965,11 @@ def _refuse_too_large(layers: list, source: str, deadline) -> None:
     :func:`infer_seconds` of ``layers`` would end past ``deadline`` (the import's)."""
     if deadline is None:
         return
-    from ...base.limits import OutOfBudget
+    from ...base.limits import OutOfBudget, seconds_as_work
     from ..model import DrawingError
     from ..write.program import _count_segments
     try:
-        deadline.check("inferring the design", ahead=infer_seconds(layers))
+        deadline.check("inferring the design", ahead=seconds_as_work(infer_seconds(layers)))
     except OutOfBudget as ex:
         pieces = sum(_count_segments(d) for _, d in layers)
         raise DrawingError(

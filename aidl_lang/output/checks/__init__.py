@@ -85,8 +85,9 @@ __all__ = ["check_drawing", "check_stray_holes", "check_topology", "topology", "
            "_signed", "_thin", "_union", "_within"]
 
 
-CHECK_SHARE = 0.2     # of the budget's CPU time (3 s of the default 15 s): what each family
-                      # of checks below may take over all the parts before it stops (W0521)
+CHECK_SHARE = 0.2     # of the budget's work units (400,000 of the default 2,000,000): what
+                      # each family of checks below may spend over all the parts before it
+                      # stops (W0521)
 
 # the families of checks that hold a share, in the order they run: (name, codes)
 FAMILIES = {"holes": ("holes", "W0501-W0503"), "pieces": ("pieces", "W0504"),
@@ -103,9 +104,9 @@ FAMILIES = {"holes": ("holes", "W0501-W0503"), "pieces": ("pieces", "W0504"),
 
 
 class _OutOfShare(Exception):
-    """A family of checks has used its :data:`CHECK_SHARE` of the CPU time, or its next step
-    (``ahead`` seconds, > 0) is expected to end past that share or past the compile's
-    deadline."""
+    """A family of checks has used its :data:`CHECK_SHARE` of the compile's work units, or its
+    next step (``ahead`` reference seconds, > 0) is priced past that share or past the
+    compile's work budget."""
 
     def __init__(self, ahead: float = 0.0, past_deadline: bool = False):
         super().__init__(ahead)
@@ -113,40 +114,43 @@ class _OutOfShare(Exception):
 
 
 class _Shares:
-    """Each family of checks (:data:`FAMILIES`) with its share of the compile's CPU time
-    (:data:`CHECK_SHARE` of the budget's seconds, summed over the parts it looks at): a
-    family past its share, or refused by :class:`..nearby.TooManyPairs` (a cluster too dense
-    to list its pairs), stops where it is, is not run on the parts after, and one ``W0521``
-    note per family says which parts it did not check and why.  A step of a family that
-    cannot be interrupted (one call into Manifold) and is expected to end past the family's
-    share or past the compile's deadline is not started: the family stops with the same note
-    (these checks only warn, so a guess never fails a compile).  The compile's deadline,
-    once passed, still ends everything with ``E0304`` (:meth:`tick` checks it first), as
-    does a step expected to overrun it outside any family; without a deadline (a test, the
-    live preview's own call) there are no shares, only the pair limit."""
+    """Each family of checks (:data:`FAMILIES`) with its share of the compile's work
+    (:data:`CHECK_SHARE` of the budget's work units, :class:`~aidl_lang.base.limits.Work`,
+    summed over the parts it looks at): a family past its share, or refused by
+    :class:`..nearby.TooManyPairs` (a cluster too dense to list its pairs), stops where it is,
+    is not run on the parts after, and one ``W0521`` note per family says which parts it did
+    not check and why.  A step of a family that cannot be interrupted (one call into Manifold)
+    and is priced past the family's share or past the compile's budget is not started: the
+    family stops with the same note (these checks only warn, so a guess never fails a
+    compile).  The compile's budget, once spent, still ends everything with ``E0304``
+    (:meth:`tick` pays through it), as does a step priced past it outside any family; without
+    a deadline (a test, the live preview's own call) there are no shares, only the pair limit.
+    Work, not CPU seconds: the same checks run and the same notes are said on every machine."""
 
     def __init__(self, deadline):
-        from ...base.limits import now
-        self.clock = now               # the budget's clock: CPU seconds
         self.deadline = deadline
-        self.seconds = (deadline.budget.seconds * CHECK_SHARE if deadline is not None
-                        else float("inf"))
+        self.share = (deadline.budget.work * CHECK_SHARE if deadline is not None
+                      else float("inf"))
         self.spent: dict = {}
         self.skipped: dict = {}      # family -> [reason, parts]
         self.family, self.since = None, 0.0
 
+    def _spent(self) -> float:
+        return self.deadline.work.spent if self.deadline is not None else 0.0
+
     def tick(self, s, ahead: float = 0.0) -> None:
-        if self.family is None:
+        from ...base.limits import seconds_as_work
+        units = seconds_as_work(ahead)
+        if self.family is None or self.deadline is None:
             if self.deadline is not None:
-                self.deadline.check("the shape checks", s, ahead)
+                self.deadline.check("the shape checks", s, units)
             return
-        if self.deadline is not None:
-            self.deadline.check("the shape checks", s)
-        now = self.clock()
-        if self.spent.get(self.family, 0.0) + now - self.since + ahead > self.seconds:
-            raise _OutOfShare(ahead)
-        if ahead and self.deadline is not None and now + ahead > self.deadline.at:
+        work = self.deadline.work
+        if units and work.spent + 1.0 + units > work.limit:
             raise _OutOfShare(ahead, past_deadline=True)
+        if self.spent.get(self.family, 0.0) + work.spent - self.since + 1.0 + units > self.share:
+            raise _OutOfShare(ahead)
+        self.deadline.check("the shape checks", s, units)
 
     def run(self, family: str, part, fn):
         """``fn()`` as family ``family`` on ``part`` (a Structure or None); its result, or
@@ -155,7 +159,7 @@ class _Shares:
         if family in self.skipped:
             self.skipped[family][1].append(part)
             return None
-        self.family, self.since = family, self.clock()
+        self.family, self.since = family, self._spent()
         try:
             if part is not None:
                 self.tick(part)
@@ -165,7 +169,7 @@ class _Shares:
         except TooManyPairs as ex:
             self.skipped[family] = [ex, [part]]
         finally:
-            self.spent[family] = self.spent.get(family, 0.0) + self.clock() - self.since
+            self.spent[family] = self.spent.get(family, 0.0) + self._spent() - self.since
             self.family = None
         return None
 
@@ -188,17 +192,19 @@ class _Shares:
             where = (" in " + ", ".join(named[:3]) + (f" and {len(named) - 3} more"
                                                       if len(named) > 3 else "")) if named else ""
             if isinstance(why, _OutOfShare):
-                total = self.deadline.budget.seconds
-                share = f"its share of the time ({self.seconds:.3g} s of the {total:g} s budget)"
+                from ...base.limits import seconds_as_work
+                total = self.deadline.budget.work
+                share = (f"its share of the work ({int(self.share):,} of the {total:,} work "
+                         "units of the budget)")
+                step = f"{int(seconds_as_work(why.ahead)):,} work units"
                 if why.past_deadline:
-                    reason = (f"its next step, expected to take about {why.ahead:.3g} s, would "
-                              f"end past the compile's {total:g} s budget: not started")
+                    reason = (f"its next step, priced at {step}, would pass the compile's "
+                              f"{total:,}: not started")
                 elif why.ahead:
-                    reason = (f"its next step, expected to take about {why.ahead:.3g} s, would "
-                              f"end past {share}: not started")
+                    reason = f"its next step, priced at {step}, would pass {share}: not started"
                 else:
                     reason = f"out of {share}"
-                hint = "`--budget 2` (or more) gives every check twice the time"
+                hint = "`--budget 2` (or more) gives every check twice the work"
             else:
                 reason = (f"{why.count:,} pairs of edges or shapes within reach of one "
                           f"another, more than the {why.limit:,} it measures (a dense "

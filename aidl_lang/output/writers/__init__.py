@@ -181,10 +181,10 @@ def encode(output: Output, suffix: str, options: Options | None = None,
     if fmt.cut and not fmt.empty:
         _refuse_stacked(output, suffix)
     if deadline is not None:
-        from ...base.limits import OutOfBudget
+        from ...base.limits import OutOfBudget, seconds_as_work
         try:
             deadline.check(f"the {suffix.lstrip('.').upper()} writer",
-                           ahead=writer_seconds(output, suffix, options))
+                           ahead=seconds_as_work(writer_seconds(output, suffix, options)))
         except OutOfBudget as ex:
             ex.where = _biggest_part(output)
             ex.what += "; nothing was written"

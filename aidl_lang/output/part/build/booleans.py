@@ -27,7 +27,7 @@ from ....geometry.core.model import Geometry, Model, Structure
 from ....geometry.derived.corners import SplineCorner, finish
 from ....geometry.shapes.tessellate import CHORD_TOL
 from ....geometry.shapes.text import text_strokes
-from ....base.limits import DEFAULT_BUDGET, Deadline, OutOfBudget, now
+from ....base.limits import DEFAULT_BUDGET, Deadline, OutOfBudget, seconds_as_work
 from ..edges.exact import Provenance
 from ..measure.nearby import faces_apart, meeting
 from .outlines import _shoelace, _weld
@@ -95,9 +95,9 @@ class Renderer(Faces):
             vertices = sum(f.num_vert() for f in faces)
             ahead = vertices * UNION_SECONDS_PER_VERTEX
             if watched and len(faces) > 1:
-                ahead = max(ahead, union_seconds(faces, self.deadline.at - now(),
+                ahead = max(ahead, union_seconds(faces, self.deadline.seconds_left(),
                                                  vertices))
-            self.deadline.check(self.STAGE, s or self.current, ahead)
+            self.deadline.check(self.STAGE, s or self.current, seconds_as_work(ahead))
 
     def union(self, faces: list, s: Structure | None = None, frame: bool = False):
         """The union of ``faces``: groups of :data:`UNION_GROUP` united, then the groups'
@@ -114,7 +114,7 @@ class Renderer(Faces):
         booleans with it scanned the same way (:meth:`shape`)."""
         if not faces:
             return (mf.CrossSection(), False) if frame else mf.CrossSection()
-        left = (self.deadline.at - now() if self.deadline is not None
+        left = (self.deadline.seconds_left() if self.deadline is not None
                 else float("inf"))
         turn, watched = plan(faces, left)
         if turn:
