@@ -92,7 +92,9 @@ class SweepReport:
     and count probes included); ``skipped``: planned points not judged once the budget was
     spent; ``warm``: points solved on the reused solver; ``seconds``: CPU seconds of the
     sweep (the written values' compile included); ``work``: the work units the points
-    spent (:func:`~aidl_lang.params.sweep_plan.work`); ``tolerance``: the bisection's stopping
+    spent (:func:`~aidl_lang.params.sweep_plan.work`); ``judged``: ``{param: points}``, the points
+    judged with that param off its written value (a param with none is not judged, never
+    clean); ``bisections``: the bisection steps judged; ``tolerance``: the bisection's stopping
     width (a fraction of each range); ``ranges``: ``{param: (lo, hi)}`` swept (display
     units); ``findings``: :class:`Finding` list (empty: clean across the ranges);
     ``lifted``: for a program without a numeric ``param``, ``{name: Literal}`` of the numbers
@@ -109,6 +111,8 @@ class SweepReport:
     seconds: float = 0.0
     tolerance: float = TOLERANCE
     work: int = 0
+    judged: dict = field(default_factory=dict)
+    bisections: int = 0
     ranges: dict = field(default_factory=dict)
     units: dict = field(default_factory=dict)
     lifted: dict = field(default_factory=dict)
@@ -150,11 +154,24 @@ class SweepReport:
             out.append(f"{' with '.join(parts)}: {f.code}")
         return out
 
+    def unjudged(self) -> list[str]:
+        """The swept params with no point judged off their written values (the budget was
+        spent before any): not judged, never clean."""
+        return [n for n in self.swept if not self.judged.get(n)]
+
     def not_judged(self) -> list[str]:
         """``pitch below 4 mm: not judged, out of budget`` for each finding whose bisection
         the budget cut (one param moved), the values between its clean end and the failing
-        value; the combinations' as ``with a=.., b=..``."""
+        value; the combinations' as ``with a=.., b=..``; and ``cols (swept 1-200): no value
+        but the written one judged, out of budget`` for each param no point judged."""
         out = []
+        for n in self.unjudged():
+            lo, hi = self.ranges.get(n, (None, None))
+            unit = self.units.get(n, "")
+            span = (f" (swept {_span(lo, hi, unit, unit == '' and all(float(x).is_integer() for x in (lo, hi)))})"
+                    if lo is not None else "")
+            out.append(f"`{n}`{span}: no value but the written one judged, out of budget "
+                       "(--budget K gives K times more)")
         for f in self.findings:
             if not f.cut:
                 continue
@@ -186,8 +203,10 @@ class SweepReport:
             its = "its range" if len(self.swept) == 1 else "their ranges"
             out += (f"sweep: {', '.join(self.swept)} across {its}: {self.points} points, "
                    + (f"{n} finding{'s' if n != 1 else ''} (W0110)" if n else
-                      "no finding in the points judged" if self.skipped else "clean")
-                   + f"; bounds bisected to {100 * self.tolerance:.3g}% of each range")
+                      "no finding in the points judged" if self.skipped or self.unjudged()
+                      else "clean")
+                   + (f"; bounds bisected to {100 * self.tolerance:.3g}% of each range"
+                      if self.bisections else ""))
             if self.skipped:
                 out += (f"; {self.skipped} planned point{'s' if self.skipped != 1 else ''} "
                         "not judged, out of budget (--budget K gives K times more)")
@@ -195,6 +214,8 @@ class SweepReport:
         for name in self.unranged:
             if name not in self.ranges:
                 continue
+            if name in self.unjudged():
+                continue                # said by not_judged(): never "clean"
             lo, hi = self.ranges[name]
             u = self.units.get(name, "")
             a, b = clean.get(name, (lo, hi))
@@ -220,6 +241,7 @@ class SweepReport:
                 "warm": self.warm, "tolerance": self.tolerance,
                 "ranges": {k: list(v) for k, v in self.ranges.items()},
                 "not_judged": self.not_judged(), "combinations": self.combinations(),
+                "work": self.work, "judged": dict(self.judged), "bisections": self.bisections,
                 "lifted": {n: {"where": x.where, "value": x.text,
                                "lines": sorted({sp.line for sp in x.spans})}
                            for n, x in self.lifted.items()},
@@ -272,7 +294,7 @@ def sweep(source: str, path: str = "<source>", budget: float | Budget | None = N
     b = budget if isinstance(budget, Budget) else (
         DEFAULT_BUDGET if budget is None else DEFAULT_BUDGET.scaled(float(budget)))
     w = WORK * b.steps / DEFAULT_BUDGET.steps if work is None else float(work)
-    secs = b.seconds if seconds is None else float(seconds)
+    secs = b.backstop if seconds is None else float(seconds)
     with _collector_spaced():
         rep = run_deep(lambda: _Sweep(source, path, b, points, seed, tolerance, w, unranged,
                                       dict(values or {}), dict(spans or {}), only,
@@ -433,17 +455,24 @@ class _Sweep:
         (:func:`~aidl_lang.solver.core.holds.reuse`), then the booleans and the shape checks; its
         deadline the sweep's (each point shares the one budget, none gets its own)."""
         from ..interp import Interpreter
-        from ..base.limits import Deadline
+        from ..base.limits import Deadline, Work, solve_work
         from ..pipeline import after_solve, report_failure
         from ..solver import Solver, run
         from ..solver.core.holds import reuse
         sink = DiagnosticSink()
         sink.sources.update(self.sources)
-        own = now() + self.budget.seconds      # the written values' compile: its own budget
+        own = now() + self.budget.backstop     # the written values' compile: its own budget
+        # a point's compile may spend at most the sweep's work left (the written values'
+        # compile, its whole budget): past it, E0304 means not judged, never a finding
+        cap = (self.budget.work if self.end is None
+               else min(self.budget.work, max(self.work_left, 0.0)))
+        meter = Work(cap)
         interp = Interpreter(sink, {**self.values, **ov}, self.budget,
-                             deadline=own if self.end is None else min(own, self.end))
+                             deadline=own if self.end is None else min(own, self.end),
+                             work=meter)
         model = interp.run(self.program)
         out = _Point(sink, interp.file)
+        out.capped = cap < self.budget.work
         out.cost = work(interp, model, sink)
         if sink.has_errors:
             return out
@@ -453,6 +482,7 @@ class _Sweep:
         solver = self.solver
         solver.deadline = interp.deadline                # the point's one time budget
         solved = run(solver)
+        meter.add(solve_work(solved.iterations, len(model.x)), "solving")
         if solved.solver is not None and solved.solver is not solver:
             solver = self.solver = solved.solver         # solved again with a hold released
             self.keys = None
@@ -463,7 +493,8 @@ class _Sweep:
             self.solver = self.keys = None
             out.cost = work(interp, model, sink, solved=solved)
             return out
-        out.drawing = after_solve(sink, model, deadline=Deadline(interp.deadline, interp.budget))
+        out.drawing = after_solve(sink, model, deadline=Deadline(interp.deadline, interp.budget,
+                                                                 work=meter))
         out.cost = work(interp, model, sink, out.drawing, solved)
         return out
 
@@ -514,6 +545,7 @@ class _Sweep:
             got = self._judge(vals)
             if got is None:
                 return lo, start, True
+            self.report.bisections += 1
             if got:
                 hi, start = m, (vals, got)
             else:
@@ -563,11 +595,15 @@ class _Sweep:
         self.work_left -= cost
         self.report.work += cost
         errs = [d for d in res.sink.items if d.is_error]
-        if errs and errs[0].code == "E0304" and now() >= self.end:
-            self.cpu_out = True             # the guard, not the design: not judged
+        if errs and errs[0].code == "E0304" and (now() >= self.end or res.capped):
+            # the sweep's budget (its work left, or the backstop), not the design: not judged
+            self.cpu_out = True
             self.report.points -= 1
             return None
         self.report.warm += bool(res.warm)
+        for p in self.params:
+            if vals.get(p.name, p.value) != p.value:
+                self.report.judged[p.name] = self.report.judged.get(p.name, 0) + 1
         got = [(errs[0].code, errs[0].message)] if errs else self._changes(res, counted)
         self.problems[key] = self.settled[same] = got
         return got
@@ -680,10 +716,11 @@ class _Sweep:
 
 
 class _Point:
-    __slots__ = ("sink", "fctx", "drawing", "warm", "cost")
+    __slots__ = ("sink", "fctx", "drawing", "warm", "cost", "capped")
 
     def __init__(self, sink, fctx):
         self.sink, self.fctx, self.drawing, self.warm, self.cost = sink, fctx, None, False, 0
+        self.capped = False     # its compile's work was capped by the sweep's work left
 
 
 def _into_ranges(fctx) -> dict[str, str]:

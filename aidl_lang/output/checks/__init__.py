@@ -308,7 +308,8 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
             min_wall = part_min_wall(d, s, given)
 
             def openings():
-                a = _analyse(d, s, shape, cuts, min_wall, loops[s], tick=lambda: tick(s))
+                a = _analyse(d, s, shape, cuts, min_wall, loops[s],
+                             tick=lambda ahead=0.0: tick(s, ahead))
                 covered = _report_openings(a, s, min_wall, sink, d.shapes, d, shape)
                 _check_flush(d, s, shape, a, cuts, min_wall, sink)
                 return covered

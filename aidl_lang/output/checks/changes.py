@@ -80,7 +80,7 @@ def _topology(d: Drawing, deadline=None) -> dict:
         check(s)
         loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
         pos = sum(_signed(p) > 0 for p in loops)
-        a = _analyse(d, s, shape, by_part.get(s, []), 0.0, loops, tick=lambda: check(s))
+        a = _analyse(d, s, shape, by_part.get(s, []), 0.0, loops, tick=lambda ahead=0.0: check(s))
         faces = faces_of.get(s, [])
         contacts = set()
         if len(faces) > 1:
