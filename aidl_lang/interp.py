@@ -118,7 +118,13 @@ class Interpreter(Statements, Calls, Expressions):
             self.check_time(span)
 
     def check_time(self, span=None) -> None:
-        """The deadline (the budget's last resort): its CPU seconds, or its wall guard."""
+        """The budget's work units (the steps and objects so far, and what the meter holds
+        from before), then the backstops: the CPU seconds, or the wall guard."""
+        spent = interp_work(self.steps, self.objects) + (self.work.spent if self.work else 0.0)
+        if spent > self.budget.work:
+            raise BudgetExhausted(f"it needs more than {int(spent):,} work units, past its "
+                                  f"budget of {self.budget.work:,}", span or self.cur_span,
+                                  self.frames)
         if now() > self.deadline:
             raise BudgetExhausted(cpu_text(self.budget.backstop), span or self.cur_span,
                                   self.frames)

@@ -109,8 +109,8 @@ def test_a_family_past_its_share_of_the_time_says_what_it_did_not_check(monkeypa
     assert "W0519" not in [d.code for d in c.sink.items]
     slits = [d for d in notes if "(W0519)" in d.message]
     assert len(slits) == 1 and slits[0].message == (
-        "not checked: slits (W0519) in `tag`: out of its share of the time "
-        "(0 s of the 15 s budget)"), slits
+        "not checked: slits (W0519) in `tag`: out of its share of the work "
+        "(0 of the 2,000,000 work units of the budget)"), slits
     assert (slits[0].span.line, slits[0].span.col) == (1, 1)
     assert "--budget 2" in slits[0].hint
     assert len(notes) == len({d.message.split(" in ")[0] for d in notes}) >= 5

@@ -39,7 +39,7 @@ import aidl_lang
 from aidl_lang.drawing.infer import infer, shapes as infer_shapes
 from aidl_lang.drawing.infer import import_drawing, to_program_inferred
 from aidl_lang.drawing.model import DrawingError
-from aidl_lang.base.limits import DEFAULT_BUDGET, Deadline, OutOfBudget, now
+from aidl_lang.base.limits import DEFAULT_BUDGET, UNIT_SECONDS, Deadline, OutOfBudget, Work, now
 
 GROWTH = 4.6        # linear: 4 times (less with fixed work); pairs: 16; n log n Python ~4.9
 FEW = 200           # calls at N below which a module counts as FEW
@@ -289,7 +289,8 @@ def test_a_design_past_the_deadline_is_refused_before_any_inference(monkeypatch)
         return real(segs)
     monkeypatch.setattr(infer, "recognise", counted)
     with pytest.raises(DrawingError) as ex:
-        to_program_inferred(layers, "panel.dxf", deadline=Deadline(now() + 0.1))
+        to_program_inferred(layers, "panel.dxf",       # 0.1 s of work units left
+                            deadline=Deadline(now() + 1e6, work=Work(0.1 / UNIT_SECONDS)))
     assert ex.value.code == "E0304" and "refused before it started" in ex.value.message
     assert "2004 lines, arcs, curves and texts" in ex.value.message, ex.value.message
     assert "--budget" in ex.value.hint and not seen

@@ -549,7 +549,9 @@ def test_a_nesting_that_cannot_end_in_time_is_refused_before_it_starts(monkeypat
     monkeypatch.setattr(layout, "_nest", nest)
     # CPU seconds (cpu_clock): the deadline is half the estimate after the same work, however
     # busy the machine (a wall deadline could pass before the estimate is even asked)
-    soon = Deadline(budget_clock() + 0.5 * nest_seconds([4] * n, n), DEFAULT_BUDGET)
+    from aidl_lang.base.limits import Work, seconds_as_work
+    soon = Deadline(budget_clock() + 600, DEFAULT_BUDGET,     # work units: half the estimate
+                    work=Work(0.5 * seconds_as_work(nest_seconds([4] * n, n))))
     with pytest.raises(OutputError) as e:
         plan(out, deadline=soon)
     assert nested == []                           # refused before spyrrow ran

@@ -83,15 +83,23 @@ def test_the_deadline_reaches_the_booleans_and_the_shape_checks():
     c = compile_source(src, "p.aidl")
     assert c.ok
     sink = DiagnosticSink()
-    assert after_solve(sink, c.model, deadline=Deadline(budget_clock() - 1)) is None
+    from aidl_lang.base.limits import Work
+    spent = Deadline(budget_clock() + 100, work=Work(0))      # its work units all spent
+    assert after_solve(sink, c.model, deadline=spent) is None
     (d,) = sink.items
     assert d.code == "E0304" and (d.span.line, d.span.col) == (1, 1)
-    assert "in the booleans of `plate`: more than 15 s of CPU time" in d.message
+    assert "in the booleans of `plate`: it needs more than 1 work units, past its budget " \
+           "of 0" in d.message
+    # the CPU backstop too, saying it is the backstop
+    sink = DiagnosticSink()
+    assert after_solve(sink, c.model, deadline=Deadline(budget_clock() - 1)) is None
+    assert "of CPU time (the backstop" in sink.items[0].message
     drawing = render_model(c.model)
     sink = DiagnosticSink()
     from aidl_lang.base.limits import OutOfBudget
     with pytest.raises(OutOfBudget) as ex:
-        checks.check_drawing(drawing, sink, deadline=Deadline(budget_clock() - 1))
+        checks.check_drawing(drawing, sink, deadline=Deadline(budget_clock() + 100,
+                                                              work=Work(0)))
     assert ex.value.stage == "the shape checks" and ex.value.where is not None
 
 
@@ -302,8 +310,9 @@ def test_thousands_of_stacked_curves_are_refused_before_memory_runs_out(tmp_path
     assert main(["check", str(f), "--budget", "4"]) == 0
 
 
-@pytest.mark.parametrize("share,past", [(None, "past its share of the time (2 s of the 10 s budget)"),
-                                        (100.0, "past the compile's 10 s budget")])
+@pytest.mark.parametrize("share,past", [
+    (None, "pass its share of the work (266,666 of the 1,333,333 work units of the budget)"),
+    (100.0, "pass the compile's 1,333,333")])
 def test_a_step_sure_to_overrun_the_deadline_is_refused_before_it_starts(monkeypatch, share, past):
     """The wall-thickness check's opening and decomposition are single calls into Manifold
     that no deadline interrupts (fuzz seed 1951: 10 s + 12 s on a 515 000-vertex sliver set,
@@ -314,10 +323,10 @@ def test_a_step_sure_to_overrun_the_deadline_is_refused_before_it_starts(monkeyp
     before issue 58's second round), and the part compiles."""
     from aidl_lang.base.limits import Budget, Deadline, OutOfBudget
     from aidl_lang.output.checks.material import walls as checks     # patched where it is used
-    d = Deadline(budget_clock() + 10)
-    d.check("here", ahead=5)
+    d = Deadline(budget_clock() + 10, Budget(seconds=10))
+    d.check("here", ahead=5 / 7.5e-6)             # work units: 5 s of the reference machine
     with pytest.raises(OutOfBudget):
-        d.check("here", ahead=20)
+        d.check("here", ahead=20 / 7.5e-6)
     monkeypatch.setattr(checks, "THIN_SECONDS_PER_VERTEX", 1.0)
     if share is not None:                # a share larger than the budget: the deadline stops it
         from aidl_lang import output
@@ -331,8 +340,8 @@ def test_a_step_sure_to_overrun_the_deadline_is_refused_before_it_starts(monkeyp
     assert c.ok and not [x for x in c.sink.items if x.code == "E0304"]
     (n,) = [x for x in c.sink.items if x.code == "W0521"]
     assert n.message.startswith("not checked: thin walls (W0507) in `plate`: its next step, "
-                                "expected to take about "), n.message
-    assert f"would end {past}: not started" in n.message, n.message
+                                "priced at "), n.message
+    assert f"would {past}: not started" in n.message, n.message
 
 
 def test_the_wall_check_unites_only_pieces_that_meet_across_tiles(monkeypatch):
@@ -490,8 +499,8 @@ def test_a_union_sure_to_end_past_the_deadline_is_refused_before_it_starts(monke
     c = compile_source(src, "u.aidl", budget=Budget(seconds=10))
     assert time.process_time() - t0 < 5
     (e,) = [x for x in c.sink.items if x.code == "E0304"]
-    assert "in the booleans of `plate`: about" in e.message, e.message
-    assert "would end past the 10 s of CPU time" in e.message
+    assert "in the booleans of `plate`: it needs more than " in e.message, e.message
+    assert "work units, past its budget of 1,333,333" in e.message
     monkeypatch.undo()
     assert compile_source(src, "u.aidl", budget=Budget(seconds=10)).ok
 
@@ -524,6 +533,6 @@ def test_patterns_of_thousands_copy_in_linear_time_and_stop_at_the_deadline():
                        budget=Budget(seconds=0.2))      # before E0303's 50,000 copies
     took = time.process_time() - t0
     (e,) = [d for d in c.sink.items if d.code == "E0304"]
-    assert "0.2 s of CPU time" in e.message and e.span.line == 2          # the loop
+    assert "work units, past its budget of 26,667" in e.message and e.span.line == 2  # the loop
     assert [lb.span.line for lb in e.labels] == [5]                        # the pattern call
     assert took < 3, took

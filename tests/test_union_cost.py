@@ -145,10 +145,12 @@ def test_the_estimate_refuses_a_union_that_would_take_too_long(cpu_clock):
     from aidl_lang.output.part.build.booleans import Renderer
     import time
     c = compile_source(ROW.format(x="i*3", y="0", n=10), "r.aidl")
-    ren = Renderer(c.model, Deadline(budget_clock() + 1.0))    # CPU seconds: cpu_clock
+    from aidl_lang.base.limits import Work
+    ren = Renderer(c.model, Deadline(budget_clock() + 600, work=Work(1.0 / 7.5e-6)))  # 1 s
     with pytest.raises(OutOfBudget) as ex:
         ren.tick(c.model.root, row)
-    assert ex.value.where is c.model.root and "would end past" in ex.value.what
+    assert ex.value.where is c.model.root and "work units, past its budget of 133,333" \
+        in ex.value.what
 
 
 # the faces are made in the test (a CrossSection held by the collected parameters outlives the
@@ -238,8 +240,8 @@ def test_two_crossing_rows_are_refused_before_the_union_located(tmp_path):
     r, cpu = _cli("parts", f, "--budget", "0.5")
     assert r.returncode == 1, r.stdout[-2000:]
     assert f"{f}:2:1: error[E0304]: the program ran out of its evaluation budget in the " \
-           "booleans of `a`: about" in r.stderr, r.stderr[-2000:]
-    assert "would end past the 7.5 s of CPU time" in r.stderr
+           "booleans of `a`: it needs more than " in r.stderr, r.stderr[-2000:]
+    assert "work units, past its budget of 1,000,000" in r.stderr
     assert cpu < 7.5 + 4, cpu
 
 

@@ -528,8 +528,10 @@ class Result:
         if deadline is not None and nest_time:
             from ..base.limits import Deadline
             from ..output.fabrication.layout import nest_cpu_seconds
+            from ..base.limits import seconds_as_work
             deadline = Deadline(deadline.at + nest_cpu_seconds(nest_time), deadline.budget,
                                 work=deadline.work)
+            deadline.work.limit += seconds_as_work(nest_cpu_seconds(nest_time))
         cut = for_cutting(self.output, kerf, deadline, apart=True)   # pieces apart: whole
         where = plan(cut, sheet, gap, rotate, nest_time, deadline=deadline)
         flat, dropped = place(cut, where, sheet)

@@ -587,10 +587,11 @@ def _lay_out(args, res, output, cut, sheet, gap, rotate, notes: list):
     if args.nest_time and res.deadline is not None:
         # the nesting's own time limit comes on top of the compile's budget (the CPU
         # seconds of its threads)
-        from ..base.limits import Deadline
+        from ..base.limits import Deadline, seconds_as_work
         from ..output.fabrication.layout import nest_cpu_seconds
         res.deadline = Deadline(res.deadline.at + nest_cpu_seconds(args.nest_time),
                                 res.deadline.budget, work=res.deadline.work)
+        res.deadline.work.limit += seconds_as_work(nest_cpu_seconds(args.nest_time))
     where = plan(cut, sheet, gap, rotate, args.nest_time, deadline=res.deadline)
     flat, dropped = place(cut, where, sheet)
     solid, _ = place(output, where, sheet)

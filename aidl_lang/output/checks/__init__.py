@@ -146,10 +146,10 @@ class _Shares:
                 self.deadline.check("the shape checks", s, units)
             return
         work = self.deadline.work
-        if units and work.spent + 1.0 + units > work.limit:
-            raise _OutOfShare(ahead, past_deadline=True)
         if self.spent.get(self.family, 0.0) + work.spent - self.since + 1.0 + units > self.share:
             raise _OutOfShare(ahead)
+        if units and work.spent + 1.0 + units > work.limit:
+            raise _OutOfShare(ahead, past_deadline=True)
         self.deadline.check("the shape checks", s, units)
 
     def run(self, family: str, part, fn):

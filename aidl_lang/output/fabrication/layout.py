@@ -478,10 +478,10 @@ def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90
     def check(ids: list, parts: int) -> None:
         if deadline is None:
             return
-        from ...base.limits import OutOfBudget
+        from ...base.limits import OutOfBudget, seconds_as_work
         try:
-            deadline.check("the layout", _assembly(output, solids),
-                           nest_seconds([len(shapes[k]) for k in ids], parts, seconds))
+            deadline.check("the layout", _assembly(output, solids), seconds_as_work(
+                nest_seconds([len(shapes[k]) for k in ids], parts, seconds)))
         except OutOfBudget as ex:
             ex.hint = ("each sheet's nesting packs every part not yet placed: lay out fewer "
                        "parts at a time (one assembly per run), or raise the budget with "
