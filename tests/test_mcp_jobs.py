@@ -226,8 +226,9 @@ def test_tools_list_leaves_room_for_two_more_tools_under_5000_tokens(jobs):
     assert n >= 8 and listed["tokens"] * (n + 2) / n <= LISTED, listed
     # issue 95 (round six): 4,166 tokens, exactly at the bound; the descriptions unindented,
     # the limits said tighter, alike outputs "as `check`: all its fields": 3,968 (chars / 4),
-    # 5 % under it, room for a field or two
-    assert listed["tokens"] <= 3970 or figures["_counter"] != "characters/4", listed
+    # 5 % under it, room for a field or two; issue 101's `work` ({spent, budget}) in every
+    # compiling tool's and import_drawing's result: 3,990
+    assert listed["tokens"] <= 3995 or figures["_counter"] != "characters/4", listed
     # 7,365 before; 6,801 with the line of `set_params` and `measure`, 6,828 with who moves,
     # 6,845 with `check` with sweep=true; issue 95's transforms, ring_gear, stencil and inside
     # sizes and issue 91's crossing Fillet: 7,046; issue 92's "declare each param's range": 7,069;

@@ -313,6 +313,9 @@ def _import_arguments(im) -> None:
                     help="a preset of roles by colour: laser = Boxes.py's colours (black and "
                          "blue cut, open paths too; green and cyan engraved, red annotations "
                          "left out)")
+    im.add_argument("--json", action="store_true",
+                    help="the import's result as JSON: ok, output, notes, diagnostics and the "
+                         "work units it spent (`work`)")
     _budget_arg(im)
     _memory_arg(im)
 

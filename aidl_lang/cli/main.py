@@ -691,7 +691,16 @@ def cmd_import(args) -> int:
     from ..drawing.model import DrawingError
     from ..host.files import FileRefused, read_file
     from ..library.sources import MAX_DRAWING_BYTES
+    from ..base.limits import Work
     src = args.file
+    work = Work(_budget(args).work)
+    as_json = getattr(args, "json", False)
+
+    def said(ok: bool, diagnostics=(), notes=(), output=None) -> None:
+        if as_json:          # one JSON document on stdout (the program goes to the file)
+            print(json.dumps({"ok": ok, "output": output, "diagnostics": list(diagnostics),
+                              "notes": [{"code": n.code, "message": n.message, "hint": n.hint}
+                                        for n in notes], "work": work.to_json()}, indent=2))
     try:
         data = read_file(src, MAX_DRAWING_BYTES)
         def sel(v):
@@ -701,22 +710,28 @@ def cmd_import(args) -> int:
                                      cut=sel(args.cut), engrave=sel(args.engrave),
                                      ignore=sel(args.ignore), roles=args.roles,
                                      budget=_budget(args), infer=args.infer,
-                                     snap=args.snap)
+                                     snap=args.snap, work=work)
     except (OSError, FileRefused) as ex:
-        print(f"{src}: error[E0130]: cannot read `{src}`: {getattr(ex, 'message', None) or ex.strerror or ex}",
-              file=sys.stderr)
+        msg = f"cannot read `{src}`: {getattr(ex, 'message', None) or ex.strerror or ex}"
+        print(f"{src}: error[E0130]: {msg}", file=sys.stderr)
+        said(False, [{"code": "E0130", "message": msg, "hint": None, "line": None}])
         return 1
     except DrawingError as ex:
         at = f"{src}:{ex.line}" if ex.line else src        # a DXF entity's line
         print(f"{at}: error[{ex.code}]: {ex.message}" + (f"\n  = help: {ex.hint}" if ex.hint else ""),
               file=sys.stderr)
+        said(False, [{"code": ex.code, "message": ex.message, "hint": ex.hint,
+                      "line": ex.line}])
         return 1
     for n in notes:
         print(f"{src}: warning[{n.code}]: {n.message}" + (f"\n  = help: {n.hint}" if n.hint else ""),
               file=sys.stderr)
     out = args.output or os.path.splitext(src)[0] + ".aidl"
     if out == "-":
-        sys.stdout.write(text)
+        if as_json:
+            said(True, notes=notes, output="-")
+        else:
+            sys.stdout.write(text)
         return 0
     from ..output.writers.write import write_in_dir
     folder, base = os.path.split(os.path.abspath(out))
@@ -731,8 +746,10 @@ def cmd_import(args) -> int:
         why = str(ex) if isinstance(ex, FileRefused) or not ex.strerror else \
             f"cannot write `{out}`: {ex.strerror}"
         print(f"aidl: error: {why}", file=sys.stderr)
+        said(False, [{"code": None, "message": why, "hint": None, "line": None}], notes)
         return 1
     print(f"wrote {out}", file=sys.stderr)
+    said(True, notes=notes, output=out)
     return 0
 
 

@@ -259,6 +259,9 @@ def _summary(ws: Workspace, r: Result) -> dict:
     worded for agents (:mod:`.wording`: tools and arguments, not command-line flags)."""
     reword_diagnostics(r.diagnostics)
     doc: dict = {"ok": r.ok, "diagnostics": r.diagnostics_json(), "units": r.units}
+    w = r.compiled.work
+    if w is not None:         # the work units spent and the budget: the same on any machine
+        doc["work"] = {"spent": int(w.spent), "budget": int(w.limit)}
     s = r.compiled.solve
     if s is not None:
         doc["solve"] = {"converged": s.converged, "iterations": s.iterations,
@@ -679,13 +682,17 @@ def import_drawing(ws: Workspace, path: str, infer: bool = True, parts: bool = F
         raise Refused(f"budget is a factor of the default evaluation budget, between 0 and "
                       f"{MAX_BUDGET:g}; got {budget!r}", "bad_argument", "budget")
     data = ws.read_bytes(real, MAX_DRAWING_BYTES, path)
+    from ..base.limits import Work
+    work = Work(DEFAULT_BUDGET.scaled(k).work)
     try:
         text, notes = _import(data, path, unit=units, parts=parts, infer=infer,
-                              budget=DEFAULT_BUDGET.scaled(k))
+                              budget=DEFAULT_BUDGET.scaled(k), work=work)
     except DrawingError as e:
         return {"ok": False, "diagnostics": [{"code": e.code, "message": e.message,
-                                              "hint": e.hint, "line": e.line}]}
+                                              "hint": e.hint, "line": e.line}],
+                "work": {"spent": int(work.spent), "budget": int(work.limit)}}
     doc = {"ok": True, "program": text,
+           "work": {"spent": int(work.spent), "budget": int(work.limit)},
            "notes": [{"code": n.code, "message": n.message, "hint": n.hint} for n in notes]}
     if target is not None:
         if files is not None:

@@ -18,6 +18,9 @@ from ..model import (_OPTS, JOIN_TOL, Drawing, Note, Outline, Path, _plural, _se
                      bezier_spline)
 
 MAX_CROSSING_CHORDS = 6000   # loops with more chords are not checked for crossing themselves
+# work units of _chord_hits: a row of chords (numpy's calls: about 25 us) and a pair of chords
+CROSSING_ROW_UNITS = 3.3
+CROSSING_PAIR_UNITS = 0.004
 
 
 def _meet(a, b) -> tuple[list, list]:
@@ -179,6 +182,10 @@ def _chord_hits(segs):
     n = len(P)
     if n < 4 or n > MAX_CROSSING_CHORDS:
         return
+    deadline = getattr(_OPTS.get(None), "deadline", None)
+    if deadline is not None:        # paid before: n rows of chords, each against the rest
+        deadline.check("finding where the loops cross themselves",
+                       ahead=n * (CROSSING_ROW_UNITS + CROSSING_PAIR_UNITS * n))
     A, B = P, np.roll(P, -1, axis=0)
     for i in range(n - 2):
         j0, j1 = i + 2, n if i > 0 else n - 1

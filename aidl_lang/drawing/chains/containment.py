@@ -15,6 +15,9 @@ from .hole_cuts import polygons_overlap
 from .notches import NOTCH_AREA, _notches, _polygons_touch
 
 
+# work units of one probe point tested against one edge of a loop (numpy: about 8 ns)
+PROBE_EDGE_UNITS = 0.001
+
 def _probe(segs) -> tuple[float, float]:
     s = segs[0]
     if isinstance(s, Circle):
@@ -70,9 +73,10 @@ def _containers(loops: list, deadline=None) -> list[list[int]]:
     i_all, j_all = i_all[order], j_all[order]
     starts = np.flatnonzero(np.r_[True, j_all[1:] != j_all[:-1]]) if len(j_all) else []
     for a, b in zip(starts, list(starts[1:]) + [len(j_all)]):
-        if deadline is not None:
-            deadline.check("finding the holes of the drawing")
         j, ii = int(j_all[a]), i_all[a:b]
+        if deadline is not None:    # paid before: each probe against each edge of the loop
+            deadline.check("finding the holes of the drawing", ahead=PROBE_EDGE_UNITS * len(ii)
+                           * (1 if polys[j] is None else len(polys[j])))
         x, y = probes[ii, 0], probes[ii, 1]
         if polys[j] is None:
             (cx, cy), r = loops[j][0].center, loops[j][0].radius

@@ -582,7 +582,8 @@ def _count_segments(d: Drawing) -> int:
 def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, color=None,
                    ident=None, parts: bool = False, close_tolerance: float | None = None,
                    cut=None, engrave=None, ignore=None, roles=None,
-                   budget=None, writer=None, snap: float | None = None) -> tuple[str, list[Note]]:
+                   budget=None, writer=None, snap: float | None = None,
+                   work=None) -> tuple[str, list[Note]]:
     """``aidl import``: the program of the drawing ``data`` (``name``: its file name) and the
     notes (skipped entities, left-out loops).  ``budget`` (a
     :class:`~aidl_lang.base.limits.Budget`, default the compile's): the wall time of the whole
@@ -593,13 +594,15 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
     (default :func:`to_program`; ``aidl import --infer`` passes
     :func:`~.infer.to_program_inferred` through :func:`~.infer.import_drawing`).  ``snap``
     (mm, ``--snap``): Bézier circles and arcs within it taken as true ones
-    (:func:`~.snap.snap_drawing`), said in the program's header.  Raises
-    :class:`~.read.DrawingError`."""
-    from ...base.limits import DEFAULT_BUDGET, Deadline, OutOfBudget
+    (:func:`~.snap.snap_drawing`), said in the program's header.  ``work``: the
+    :class:`~aidl_lang.base.limits.Work` meter the import spends from (default a new one of
+    ``budget``'s units; pass one to read what it spent: ``aidl import --json``'s ``work``).
+    Raises :class:`~.read.DrawingError`."""
+    from ...base.limits import DEFAULT_BUDGET, Deadline, OutOfBudget, budget_factor_text
     from ...base.limits import MAX_SOURCE_BYTES as MAX_IMPORT_BYTES
     from ..read.reader import MAX_ENTITIES, DrawingError, read_drawing
     budget = budget or DEFAULT_BUDGET
-    deadline = Deadline.starting(budget)
+    deadline = Deadline.starting(budget, work=work)
     limit = max(1, int(MAX_ENTITIES * budget.geometry / DEFAULT_BUDGET.geometry))
     base = name.replace("\\", "/").rsplit("/", 1)[-1]
     too_big = ("keep the drawing as one reference instead: `d = Drawing2D(\"" + base + "\")` "
@@ -657,9 +660,12 @@ def import_drawing(data: bytes, name: str, unit: str | None = None, layer=None, 
             finally:
                 UNIT.reset(token)
     except OutOfBudget as ex:
-        raise DrawingError("E0304", f"importing `{base}` took {ex.what} (while {ex.stage})",
+        what = ex.what[3:] if ex.what.startswith("it needs") else "took " + ex.what
+        more = (f" with `{budget_factor_text(ex.work, budget)}`"
+                if ex.what.startswith("it needs") and ex.work else "")
+        raise DrawingError("E0304", f"importing `{base}` {what} (while {ex.stage})",
                            "import a part of it with --layer, keep it as one `Drawing2D`, "
-                           "or raise --budget") from None
+                           f"or raise the budget{more}") from None
     if snap:
         from ..chains.snap import header_line
         head, _, rest = text.partition("\n")
