@@ -491,19 +491,21 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
                         seconds: float | None = None, max_rows: int | None = None,
                         deadline: float | None = None, why: set | None = None) -> int:
     """W0401 for each user constraint that others already imply (``aidl check``; what it
-    measures: :func:`aidl_lang.solver.diagnosis.redundancy.redundancies`).  ``seconds`` bounds the search
-    (the constraints found by then are reported) and ``max_rows`` the blocks of rows sharing
+    measures: :func:`aidl_lang.solver.diagnosis.redundancy.redundancies`).  ``seconds`` bounds the search, in
+    seconds of the reference machine (its factorisations' flops at
+    :data:`~aidl_lang.solver.core.rank.SVD_FLOPS_PER_SECOND`: the blocks searched by then are
+    reported, the same on every machine) and ``max_rows`` the blocks of rows sharing
     unknowns that it ranks; ``deadline`` (:func:`~aidl_lang.base.limits.now`: the run's end in CPU seconds) bounds it
     too.  Returns the number of user constraints not looked at (out of time, or in a block
     too large)."""
-    from .solver.core.rank import MAX_DENSE
+    from .solver.core.rank import MAX_DENSE, SVD_FLOPS_PER_SECOND
     from .solver.diagnosis.redundancy import search
-    if seconds is not None:
-        end = now() + seconds
-        deadline = end if deadline is None else min(deadline, end)
     skipped: list = []
+    # `seconds` of the reference machine, as the flops of the search's factorisations: the
+    # same blocks searched on every machine; the deadline (CPU) is only the backstop
     found = search(result.solver, deadline=deadline, max_rows=max_rows or MAX_DENSE,
-                   skipped=skipped, why=why)
+                   skipped=skipped, why=why,
+                   flops=None if seconds is None else seconds * SVD_FLOPS_PER_SECOND)
     reds = found.found
     makes = _makers(result.solver.model)
     grouped = _report_groups(sink, reds, found, makes)

@@ -647,7 +647,7 @@ def test_check_dof_out_of_time_says_what_was_not_counted(tmp_path, capsys, monke
     assert "degrees of freedom not counted (out of time)" in out
     assert "d       600    ?  not counted (out of time)" in out
     assert ("redundant constraints (W0401): not counted: 300 constraints not searched (out "
-            "of time: the budget's 15 s of CPU time; --budget K gives K times more)") in out
+            "of time: the backstop's 90 s of CPU time; --budget K gives K times more)") in out
     assert main(["check", "--dof", "--json", str(f)]) == 0
     doc = json.loads(capsys.readouterr().out)
     assert doc["dof"] == [{"structure": "d", "unknowns": 600, "dof": None, "floating": [],

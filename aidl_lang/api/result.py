@@ -153,7 +153,7 @@ class Result:
         from ..solver.diagnosis.freedom import degrees_of_freedom, freedom_text
         if deadline is None:
             budget = self.compiled.deadline.budget if self.compiled.deadline else DEFAULT_BUDGET
-            deadline = now() + budget.seconds
+            deadline = now() + budget.backstop
         from ..base.limits import is_out_of_memory, memory_text
         try:
             dofs = degrees_of_freedom(self.compiled.solve.solver, floating=detail,

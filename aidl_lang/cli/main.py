@@ -130,7 +130,7 @@ def cmd_check(args) -> int:
     # the whole run has one budget (15 s x --budget) from the start of the compile:
     # the freedom count and the redundancy search get what the parse, solve and checks left
     end = (res.deadline.at if res.deadline is not None
-           else now() + _budget(args).seconds)
+           else now() + _budget(args).backstop)
     if res.solve is not None:
         extra["solve"] = {"converged": res.solve.converged, "iterations": res.solve.iterations,
                           "unknowns": res.solve.n_unknowns, "equations": res.solve.n_equations,
@@ -184,11 +184,12 @@ def cmd_check(args) -> int:
         if program.not_searched:
             n = program.not_searched
             why = program.not_searched_why
-            if why == "out of time":
-                why += (f": the budget's {_budget(args).seconds:g} s of CPU time; --budget K "
-                        "gives K times more" if args.dof else
-                        f": the search's {REDUNDANCY_SECONDS:g} s; `--dof` searches in the "
-                        "whole budget")
+            if why == "out of time":           # the CPU backstop
+                why += (f": the backstop's {_budget(args).backstop:g} s of CPU time; "
+                        "--budget K gives K times more")
+            elif why == "out of budget":       # the search's own work (flops): plain check
+                why += (f": the search's {REDUNDANCY_SECONDS:g} s of work; `--dof` searches "
+                        "in the whole budget")
             elif why == "too large" and not args.dof:
                 why += f": blocks past {REDUNDANCY_ROWS} rows; `--dof` ranks larger ones"
             print(f"redundant constraints (W0401): not counted: {n} constraint"

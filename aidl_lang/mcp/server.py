@@ -60,7 +60,7 @@ OUTPUT_FORMATS = (".svg", ".dxf", ".pdf", ".png", ".stl", ".3mf", ".step", ".glb
 LIMITS = (f"Limits: {T.MAX_SOURCE:,} characters, brackets {MAX_NESTING} deep, "
           f"{MAX_ITER:,} items in one loop, templates {MAX_TEMPLATE_DEPTH} deep, "
           f"{DEFAULT_BUDGET.steps:,} loop steps, {DEFAULT_BUDGET.objects:,} objects, "
-          f"{DEFAULT_BUDGET.seconds:g} s (x `budget`); drawings "
+          f"{DEFAULT_BUDGET.work:,} work units (x `budget`); drawings "
           f"{MAX_DRAWING_BYTES // 1_000_000} MB. Past one: a located E0304 (E0003, E0301), "
           f"not a hang.")
 

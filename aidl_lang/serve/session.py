@@ -307,7 +307,7 @@ class Session:
         from ..base.limits import DEFAULT_BUDGET, now
         from ..solver.diagnosis.freedom import degrees_of_freedom
         try:            # bounded as a compile is (issue 48): a structure past it is not counted
-            end = now() + DEFAULT_BUDGET.seconds
+            end = now() + DEFAULT_BUDGET.backstop
             self.dof = [{"structure": d.structure.path, "unknowns": d.unknowns,
                          "dof": d.dof if d.rank >= 0 else None, "floating": d.floating[:12]}
                         for d in degrees_of_freedom(solver, deadline=end)]

@@ -138,10 +138,14 @@ def _restricted(null: list, deps, idx: list) -> list:
 
 
 def search(solver, deadline: float | None = None, max_rows: int = MAX_DENSE,
-           skipped: list | None = None, why: set | None = None) -> Search:
+           skipped: list | None = None, why: set | None = None,
+           flops: float | None = None) -> Search:
     """:func:`redundancies` (the same arguments), with what judging a drop set needs kept
     (:class:`Search`, :meth:`Search.rank_lost`: W0401's hint drops only a set that frees
-    nothing, issue 84)."""
+    nothing, issue 84).  ``flops``: the search's work, in floating-point operations of its
+    factorisations (a block's core of ``m`` rows costs ``m`` cubed, paid before it is ranked):
+    a block past it is left out, ``"out of budget"``, the same on every machine; the CPU
+    ``deadline`` is the backstop."""
     system = _flat_system(solver)
     if system is None:
         return Search()
@@ -150,7 +154,7 @@ def search(solver, deadline: float | None = None, max_rows: int = MAX_DENSE,
     by_c: dict[int, list[int]] = {}
     for i, c in enumerate(cons):
         by_c.setdefault(id(c), []).append(i)
-    found = _Found()
+    found = _Found(flops)
     for comp in unique(lab[live]):
         local = np.flatnonzero((lab == comp) & live)
         if deadline is not None and now() > deadline:
@@ -228,9 +232,13 @@ class _Found:
     rank(J without C)`` summed over blocks; ``rank_c``, ``rank(J_C)`` beyond the constructors'
     span; ``by``, the other constraints in its dependencies; ``unknown``, why it was not
     searched (the first reason given)."""
-    __slots__ = ("contribution", "rank_c", "by", "unknown", "blocks", "alone")
+    __slots__ = ("contribution", "rank_c", "by", "unknown", "blocks", "alone", "flops_left")
 
-    def __init__(self):
+    def __init__(self, flops: float | None = None):
+        # the search's budget in floating-point operations of its factorisations (estimated
+        # from each block's core, before it is ranked): the same blocks searched on every
+        # machine (issue 101); None: no bound but the deadline
+        self.flops_left = float("inf") if flops is None else float(flops)
         self.contribution: dict[int, int] = {}
         self.rank_c: dict[int, int] = {}
         self.by: dict[int, list] = {}
@@ -311,6 +319,11 @@ def _search_block(J, local: np.ndarray, lc: list, keys: np.ndarray, peeled, posi
     if len(b.core) > min(max_rows, MAX_DENSE):
         found.leave_out((id(c) for c in lc), "too large")
         return
+    cost = float(len(b.core)) ** 3
+    if cost > found.flops_left:
+        found.leave_out((id(c) for c in lc), "out of budget")
+        return
+    found.flops_left -= cost
     b.find_dependencies(keys, deadline)
     if deadline is not None and now() > deadline:
         found.leave_out((id(c) for c in lc), "out of time")  # the basis may be incomplete
