@@ -66,6 +66,14 @@ class Result:
 
     # ------------------------------------------------------------------ status
     @property
+    def work(self) -> dict | None:
+        """The work units the compile's stages spent: ``{"spent", "budget", "stages"}``
+        (:meth:`aidl_lang.base.limits.Work.to_json`), the same on every machine and at any
+        load; grows as outputs are made from the same budget; None before any stage ran."""
+        w = self.compiled.work
+        return w.to_json() if w is not None else None
+
+    @property
     def ok(self) -> bool:
         """True when the program has no errors (warnings allowed) and solved."""
         return self.compiled.ok and self.compiled.drawing is not None
