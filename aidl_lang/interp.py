@@ -113,7 +113,8 @@ class Interpreter(Statements, Calls, Expressions):
         if self.steps > self.budget.steps:
             raise BudgetExhausted(f"more than {self.budget.steps:,} evaluation steps (loop "
                                   "iterations, comprehension elements, calls and template "
-                                  "instances)", span or self.cur_span, self.frames)
+                                  "instances: a work unit each)", span or self.cur_span,
+                                  self.frames)
         if not self.steps & 127:
             self.check_time(span)
 

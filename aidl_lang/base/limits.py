@@ -264,13 +264,15 @@ def now() -> float:
 
 
 def budget_factor_text(need: float, budget: "Budget") -> str:
-    """The smallest ``--budget K`` (a round number) whose work is at least ``need`` units,
-    for ``budget`` at factor 1 = :data:`DEFAULT_BUDGET` (``--budget 2``, ``--budget 40``)."""
-    k = need / max(DEFAULT_BUDGET.work, 1)
-    for nice in (1.5, 2, 3, 4, 5, 6, 8, 10, 15, 20, 30, 40, 50, 60, 80, 100):
-        if nice >= k * 1.05:
-            return f"--budget {nice:g}"
-    return f"--budget {int(k * 1.05) + 1}"
+    """The ``--budget K`` whose work covers ``need`` units with 5 % to spare, ``K`` rounded up
+    to two significant digits (``--budget 1.5``, ``--budget 0.038``, ``--budget 14``): a
+    factor of :data:`DEFAULT_BUDGET`, as ``--budget`` is (``budget``: the one that ran out,
+    for its name only)."""
+    import math
+    k = max(need, 1.0) * 1.05 / max(DEFAULT_BUDGET.work, 1)
+    step = 10.0 ** (math.floor(math.log10(k)) - 1)
+    nice = math.ceil(round(k / step, 9)) * step
+    return f"--budget {float(f'{nice:.2g}'):g}"
 
 
 class Work:

@@ -131,8 +131,9 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
             if id(el) in seen:
                 continue
             seen.add(id(el))
-            if opts.deadline is not None and len(seen) % 512 == 0:
-                # the 512 elements parsed and walked, paid (svgelements: about 0.3 ms each)
+            if opts.deadline is not None and len(seen) % 512 == 1:
+                # the next 512 elements paid before they are walked (svgelements: about
+                # 0.3 ms each, parse and walk)
                 opts.deadline.check("reading the drawing", ahead=512 * SVG_ELEMENT_UNITS)
             if opts.keep is not None and isinstance(el, (S.Shape, S.Text)):
                 c = getattr(el, "stroke", None)
