@@ -72,7 +72,7 @@ Source = Annotated[str | None, Field(
 ProgramPath = Annotated[str | None, Field(
     description="A .aidl file in the allowed folder; or give `source`.")]
 Overrides = Annotated[dict[str, str | int | float | bool] | None, Field(
-    description="Param values: {\"width\": \"40 mm\"}, {\"width\": 40} (the file's units), "
+    description="Param values: {\"width\": \"40 mm\"}, {\"width\": 40} (the param's own unit), "
                 "{\"holes\": true}.")]
 Budget = Annotated[float | None, Field(
     description="Times the budget (15 s CPU, steps, objects); "
