@@ -176,6 +176,9 @@ class Interpreter(Statements, Calls, Expressions):
             for k, v in e.terms.items():
                 s += v * x[k]
             return s
+        from .geometry.relations.bbox import contains_bbox, expand
+        if contains_bbox(e):             # a box's side (`hull.center`, `r.bb.center`): at x
+            e = expand(e, self.model.x, set())
         return evaluate(lift(e), self.model.x)
 
     def error(self, e: EvalError) -> None:

@@ -225,13 +225,13 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         at = 0
         for g, items in geoms:
             n = sum(_n_samples(it) for it in items)
-            verdicts[g] = (part, pts[at:at + n], inside[at:at + n], grown_loops)
+            verdicts[g] = (part, pts[at:at + n], inside[at:at + n], grown_loops, items)
             at += n
     outer_of: dict = {}
     for g in by_geom:
         if g not in verdicts:
             continue
-        part, pts, inside, grown_loops = verdicts[g]
+        part, pts, inside, grown_loops, items = verdicts[g]
         if inside.all():
             continue
         if part not in outer_of:
@@ -249,6 +249,9 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
             holes = _holes_crossed(d, roots, part, pts[~inside])
             hint = (f"it crosses {', '.join(holes) if holes else 'an opening'}: shrink or move "
                     "the drawing clear of it, or move the hole")
+        arc = _arc_on_material(g, items, roots[part])
+        if arc:
+            hint = f"{arc}; or {hint}"
         sink.warning("W0505", f"engraving `{g.label}` runs {where} of `{part.path}` "
                      f"({share} of it is off the material)", g.span, hint=hint)
     for part, geoms in by_part.items():
@@ -256,6 +259,56 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
             tick(part)
         _check_meets_cut(part, roots[part], [(g, it) for g, it in geoms if g not in warned],
                          (loops or {}).get(part), sink)
+
+
+ARC_STEPS = 1440          # samples of an engraved circle when W0505 offers the arc on the material
+ARC_LEAST = math.radians(30)    # the arc offered is at least this long
+
+
+def _arc_on_material(g, items, shape) -> str | None:
+    """W0505's fix for an engraved Circle that crosses its part's outline or a hole (a ring
+    that meets a notch in the rim, issue 105): the longest arc of the circle on the
+    material, clear of the cut by ``2 CUT_CLEAR``, as the ``Arc(center=, radius=,
+    start_angle=, end_angle=)`` that replaces it (mm and degrees, counter-clockwise, ends
+    rounded inward to 0.1 deg); None for another shape, or when no such arc of at least
+    :data:`ARC_LEAST` is left."""
+    if getattr(g, "kind", None) != "Circle" or len(items) != 1 or items[0][0] != "circle":
+        return None
+    (cx, cy), r = items[0][1], float(items[0][2])
+    if not r > 0:
+        return None
+    loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+    edges = _edges(loops)
+    t = np.arange(ARC_STEPS) * (2 * math.pi / ARC_STEPS)
+    pts = np.column_stack([cx + r * np.cos(t), cy + r * np.sin(t)])
+    clear = _inside(pts, edges) & ~_within(pts, edges, 2 * CUT_CLEAR)
+    if clear.all() or not clear.any():
+        return None
+    k0 = int(np.argmin(clear))                 # start the walk at an off sample
+    order = np.roll(np.arange(ARC_STEPS), -k0)
+    best, run, start = (0, 0), 0, 0
+    for i, k in enumerate(order):
+        if clear[k]:
+            if run == 0:
+                start = i
+            run += 1
+            if run > best[0]:
+                best = (run, start)
+        else:
+            run = 0
+    n, s = best
+    if n < 2 or (n - 1) * 2 * math.pi / ARC_STEPS < ARC_LEAST:
+        return None
+    a1 = math.degrees(t[order[s]])
+    a2 = math.degrees(t[order[s + n - 1]])
+    a1, a2 = math.ceil(a1 * 10) / 10, math.floor(a2 * 10) / 10
+    if a2 <= a1:
+        a2 += 360
+    name = str(getattr(g, "label", "")).rsplit(".", 1)[-1] or "mark"
+    return (f"to stop the circle at the cut, engrave the arc on the material instead: `{name} = "
+            f"Arc(center=({cx:.6g} mm, {cy:.6g} mm), radius={r:.6g} mm, start_angle={a1:g} deg, "
+            f"end_angle={a2:g} deg)` (the circle's center and radius, counter-clockwise, "
+            f"{2 * CUT_CLEAR:g} mm clear of the cut)")
 
 
 def _off_outline_hint(d: Drawing, part, g, pts: np.ndarray, off: np.ndarray) -> str:

@@ -195,6 +195,13 @@ class Faces:
                 r = float(g.data.get("corner_radius", 0.0))
                 if r > 0:
                     return Loop(rounded_outline(pts, r))
+            if k == "Star" and g.data.get("tip"):
+                # rounded tips (tip_radius=): each tip's corner filleted exactly, as Fillet
+                # rounds an outline's corner (the notches, odd points, stay sharp)
+                from ....geometry.derived.corners import corners
+                loop = _polygon(pts)
+                return loop if loop is None else corners(
+                    loop, g.data["dims"]["tip_radius"], True, only=[tuple(p) for p in pts[::2]])
             return _polygon(pts)
         return None
 
