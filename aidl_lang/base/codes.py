@@ -194,7 +194,8 @@ the swapped range holds the value.  Bounds that follow other params (`min = max(
 max = min(c, 70 mm)`) are never swapped (that changes what they mean): the message says what
 each bound came to at the other params' values, and the hint which values of which param
 empty the range ("`a` above 60 mm empties it with `c` = 60 mm"), found along that param's
-declared range.
+declared range.  Bounds written as expressions of numbers alone (`min = max(10 mm,
+25 mm)`) are not swapped either: the hint asks for the wrong bound to be changed.
 """),
     "E0125": ("a `cut` where it cuts nothing", """
 A `cut` structure holds through-cuts: the laser cuts along each of its curves, open or closed,
