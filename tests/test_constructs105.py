@@ -98,8 +98,8 @@ def test_star_tip_radius_rounds_each_tip_exactly():
 def test_star_tip_radius_too_large_names_the_largest():
     r = aidl_lang.compile(STAR.replace("tip_radius=3 mm", "tip_radius=20 mm"))
     [e] = r.errors
-    assert e.code == "E0108" and "at most 7.459 mm" in e.message
-    assert aidl_lang.compile(STAR.replace("tip_radius=3 mm", "tip_radius=7.45 mm")).ok
+    assert e.code == "E0108" and "less than 7.467 mm" in e.message
+    assert aidl_lang.compile(STAR.replace("tip_radius=3 mm", "tip_radius=7.46 mm")).ok
 
 
 @settings(max_examples=25, deadline=None)
@@ -173,3 +173,48 @@ def test_w0505_offers_the_arc_that_stops_at_the_notch():
     fixed = aidl_lang.compile(NOTCH.replace("c = Circle(center=(0, 0), radius=33)", fix))
     assert fixed.ok and not [d for d in fixed.diagnostics if d.code.startswith("W05")], \
         fixed.diagnostics
+
+
+def _exact_extents(e):
+    """(x0, y0, x1, y1) of an LWPOLYLINE with bulges: its vertices and its arcs' extremes."""
+    pts = list(e.get_points("xyb"))
+    xs, ys = [], []
+    for i, (x, y, b) in enumerate(pts):
+        xs.append(x)
+        ys.append(y)
+        if b:
+            c, a0, a1, r = bulge_to_arc((x, y), pts[(i + 1) % len(pts)][:2], b)
+            sweep = (a1 - a0) % (2 * math.pi)
+            for k in range(4):
+                t = k * math.pi / 2
+                if (t - a0) % (2 * math.pi) <= sweep:
+                    xs.append(c.x + r * math.cos(t))
+                    ys.append(c.y + r * math.sin(t))
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def test_rounded_stars_copied_turned_and_mirrored_keep_exact_boxes():
+    """A rounded star whose tips take most of each side (no shrinking, unlike a Fillet past
+    half a side), turned, copied round a circle and mirrored: every copy's box is the
+    extents of its written outline (arcs' extremes included) to 1e-9 mm."""
+    src = ("solid plate {\n    body = Rectangle(center=(0, 0), width=200, height=120)\n"
+           "    hole h { s = Star(center=(40, 0), points=6, outer_radius=15, inner_radius=7, "
+           "tip_radius=2, rotation=10 deg) }\n    CircularPattern(h, 4, body.center)\n}\n"
+           "drawing d {\n    axis = Line(start=(0, -50), end=(0, 50), construction=true)\n"
+           "    s = Star(center=(60, 0), points=5, outer_radius=10, inner_radius=4, "
+           "tip_radius=1.5)\n    m = Mirrored(s, axis)\n}\n")
+    r = aidl_lang.compile(src)
+    assert r.ok, r.diagnostics
+    msp = _dxf(r)
+    cut = sorted(_exact_extents(e) for e in msp.query("LWPOLYLINE[layer=='CUT']")
+                 if len(list(e.get_points("xy"))) > 4)
+    holes = sorted(r.value(n).mm for n in ("plate.h.bbox", "plate.h_pattern[1].bbox",
+                                             "plate.h_pattern[2].bbox", "plate.h_pattern[3].bbox"))
+    assert len(cut) == 4
+    for g, w in zip(cut, holes):
+        assert g == pytest.approx(w, abs=1e-9)
+    eng = [_exact_extents(e) for e in msp.query("LWPOLYLINE[layer=='ENGRAVE']")]
+    assert len(eng) == 2
+    union = (min(b[0] for b in eng), min(b[1] for b in eng), max(b[2] for b in eng),
+             max(b[3] for b in eng))
+    assert union == pytest.approx(r.value("d.bbox").mm, abs=1e-9)

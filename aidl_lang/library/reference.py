@@ -899,7 +899,7 @@ DETAILS: dict[str, str] = {
             "Fillet rounds a corner (exact arcs; the notches stay sharp); the rounded tip "
             "reaches a little less than outer_radius, r (1 / sin(h) - 1) less for a tip of "
             "angle 2h, and its box is the rounded outline's. A radius whose rounding would "
-            "run past the notches is E0108 (it says the largest that fits). Members "
+            "run past the notches is E0108 (it says the bound). Members "
             "outer_radius, inner_radius, tip_radius; points, edges, center of the sharp star.",
     "Hull": "`.center` is the center of the hull's bounding box (as `.bb.center`), a point "
             "that follows the shapes: `Circle(center=grip.center, radius=3)` centers a hole on "

@@ -565,18 +565,19 @@ def _star_tip(n: int, ro: float, ri: float, rt: float) -> tuple[float, float]:
     """A Star's rounded tip (``tip_radius`` ``rt``): ``(the distance from the star's center
     to the fillet arc's center, the arc's half sweep)`` (mm, radians).  The tip's interior
     angle is ``2 h``; the arc is tangent to both sides ``rt / tan(h)`` from the sharp tip,
-    which must leave the side's other end (the notch) on the side: else PrimitiveError."""
+    which must leave some of the side to the notch: else PrimitiveError, naming the largest
+    radius (to a thousandth of a mm below the one that leaves none)."""
     tip = (0.0, ro)
     notch = (ri * math.cos(math.pi / 2 + math.pi / n), ri * math.sin(math.pi / 2 + math.pi / n))
     side = (notch[0] - tip[0], notch[1] - tip[1])
     length = math.hypot(*side)
     h = math.asin(min(1.0, abs(side[0]) / length))     # half the tip's angle (the axis: -y)
     reach = rt / math.tan(h)
-    if not reach < length:
+    if not reach < length * (1 - 1e-9):
         most = length * math.tan(h)
         raise PrimitiveError(f"a Star's tip_radius ({rt:g} mm) is too large for its tips: "
-                             f"the rounding would run past the notches (at most "
-                             f"{math.floor(most * 0.999 * 1000) / 1000:g} mm here)")
+                             f"the rounding would run past the notches (less than "
+                             f"{math.floor(most * 1000) / 1000:g} mm here)")
     return ro - rt / math.sin(h), math.pi / 2 - h
 
 

@@ -196,12 +196,10 @@ class Faces:
                 if r > 0:
                     return Loop(rounded_outline(pts, r))
             if k == "Star" and g.data.get("tip"):
-                # rounded tips (tip_radius=): each tip's corner filleted exactly, as Fillet
-                # rounds an outline's corner (the notches, odd points, stay sharp)
-                from ....geometry.derived.corners import corners
-                loop = _polygon(pts)
-                return loop if loop is None else corners(
-                    loop, g.data["dims"]["tip_radius"], True, only=[tuple(p) for p in pts[::2]])
+                # rounded tips (tip_radius=): each tip an exact arc tangent to its sides,
+                # the notches (odd points) sharp
+                from .outlines import star_outline
+                return Loop(star_outline(pts, g.data["dims"]["tip_radius"]))
             return _polygon(pts)
         return None
 
