@@ -268,7 +268,7 @@ _DEFS = {
                [A("start", "point"), A("length", "length"), A("angle", "angle"),
                 A("width", "length")],
                doc="A stadium around the segment start-end (its end arcs' centers); radius = "
-                   "width/2 is held; by center or start, length (end to end) and rotation "
+                   "width/2 is held; by center or start, length and rotation "
                    "or angle are held too.",
                members=SLOT_MEMBERS),
     "ArcSlot": _p([A("center", "point"), A("radius", "length"), A("start_angle", "angle"),
@@ -454,9 +454,10 @@ _DEFS = {
                                                                      "a length, or (dx, dy)")],
                         [A("target", "boxed"), A("at", "points")], cat="operation",
                         doc="target centered on each corner of a Rectangle or "
-                            "RoundedRectangle rect (inset inward: a length or (dx, dy)), or on "
+                            "RoundedRectangle rect (inset inward: length or (dx, dy)), or on "
                             "each point of at: the original at the bottom-left corner (at[0]), "
-                            "copies at the others; a Fixed original pulls the plate to it."),
+                            "copies at the others; what is Fixed stays put (a Fixed original "
+                            "pulls the plate)."),
     "CutInto": _c([A("hole", "boxed"), A("part", "boxed")], cat="operation",
                   doc="A hole declared in an assembly cuts a solid of it, e.g. a part of a "
                       "template instance (`CutInto(lid_hole, box.lid)`: a hole in "
