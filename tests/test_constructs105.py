@@ -218,3 +218,8 @@ def test_rounded_stars_copied_turned_and_mirrored_keep_exact_boxes():
     union = (min(b[0] for b in eng), min(b[1] for b in eng), max(b[2] for b in eng),
              max(b[3] for b in eng))
     assert union == pytest.approx(r.value("d.bbox").mm, abs=1e-9)
+
+
+def test_describe_names_a_rounded_star():
+    text = aidl_lang.compile(STAR).describe()
+    assert "5-point star, outer radius 30, inner 12, tips rounded 3 at (0, 0)" in text
