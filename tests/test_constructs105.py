@@ -223,3 +223,14 @@ def test_rounded_stars_copied_turned_and_mirrored_keep_exact_boxes():
 def test_describe_names_a_rounded_star():
     text = aidl_lang.compile(STAR).describe()
     assert "5-point star, outer radius 30, inner 12, tips rounded 3 at (0, 0)" in text
+
+
+def test_w0505_offers_the_longest_part_of_an_arc_on_the_material():
+    src = NOTCH.replace("c = Circle(center=(0, 0), radius=33)",
+                        "c = Arc(center=(0, 0), radius=33, start_angle=-60 deg, end_angle=90 deg)")
+    [w] = [d for d in aidl_lang.compile(src).diagnostics if d.code == "W0505"]
+    fix = re.search(r"`(c = Arc\([^`]*\))`", w.hint).group(1)
+    assert "start_angle=10.5 deg, end_angle=90 deg" in fix      # 79.5 deg above the notch
+    fixed = aidl_lang.compile(src.replace(
+        "c = Arc(center=(0, 0), radius=33, start_angle=-60 deg, end_angle=90 deg)", fix))
+    assert fixed.ok and not [d for d in fixed.diagnostics if d.code.startswith("W05")]

@@ -563,8 +563,8 @@ Off the outline, the hint says where the mark leaves the material (x, y); where 
 reaches past the box of the part's largest own shape and fits in it, it also writes the
 constraint that sets it there clear of the cut, `Inside(d.mark, body, margin=0.5 mm)` (a mark
 that touches the cut is W0516), and a mark larger than that shape is told to shrink.
-An engraved Circle that crosses the outline or a hole (a ring that meets a notch in the rim)
-is offered the arc that stops at the cut: the longest arc of the circle on the material, 1 mm
+An engraved Circle or Arc that crosses the outline or a hole (a ring that meets a notch in the
+rim) is offered the arc that stops at the cut: the longest arc of it on the material, 1 mm
 clear of the cut, written as the `Arc(center=..., radius=..., start_angle=..., end_angle=...)`
 that replaces it.
 """),

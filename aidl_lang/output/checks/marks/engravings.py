@@ -266,26 +266,31 @@ ARC_LEAST = math.radians(30)    # the arc offered is at least this long
 
 
 def _arc_on_material(g, items, shape) -> str | None:
-    """W0505's fix for an engraved Circle that crosses its part's outline or a hole (a ring
-    that meets a notch in the rim, issue 105): the longest arc of the circle on the
+    """W0505's fix for an engraved Circle (or Arc) that crosses its part's outline or a hole
+    (a ring that meets a notch in the rim, issue 105): the longest arc of it on the
     material, clear of the cut by ``2 CUT_CLEAR``, as the ``Arc(center=, radius=,
     start_angle=, end_angle=)`` that replaces it (mm and degrees, counter-clockwise, ends
     rounded inward to 0.1 deg); None for another shape, or when no such arc of at least
     :data:`ARC_LEAST` is left."""
-    if getattr(g, "kind", None) != "Circle" or len(items) != 1 or items[0][0] != "circle":
+    kind = getattr(g, "kind", None)
+    if len(items) != 1 or (kind, items[0][0]) not in (("Circle", "circle"), ("Arc", "arc")):
         return None
     (cx, cy), r = items[0][1], float(items[0][2])
     if not r > 0:
         return None
+    whole = kind == "Circle"
+    a0, sweep = (0.0, 2 * math.pi) if whole else \
+        (float(items[0][3]), (float(items[0][4]) - float(items[0][3])) % (2 * math.pi) or 2 * math.pi)
     loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
     edges = _edges(loops)
-    t = np.arange(ARC_STEPS) * (2 * math.pi / ARC_STEPS)
+    steps = ARC_STEPS if whole else max(8, int(ARC_STEPS * sweep / (2 * math.pi)) + 1)
+    t = a0 + np.arange(steps) * (sweep / (ARC_STEPS if whole else steps - 1))
     pts = np.column_stack([cx + r * np.cos(t), cy + r * np.sin(t)])
     clear = _inside(pts, edges) & ~_within(pts, edges, 2 * CUT_CLEAR)
     if clear.all() or not clear.any():
         return None
-    k0 = int(np.argmin(clear))                 # start the walk at an off sample
-    order = np.roll(np.arange(ARC_STEPS), -k0)
+    k0 = int(np.argmin(clear)) if whole else 0       # a circle: start at an off sample
+    order = np.roll(np.arange(steps), -k0)
     best, run, start = (0, 0), 0, 0
     for i, k in enumerate(order):
         if clear[k]:
@@ -299,15 +304,31 @@ def _arc_on_material(g, items, shape) -> str | None:
     n, s = best
     if n < 2 or (n - 1) * 2 * math.pi / ARC_STEPS < ARC_LEAST:
         return None
-    a1 = math.degrees(t[order[s]])
-    a2 = math.degrees(t[order[s + n - 1]])
-    a1, a2 = math.ceil(a1 * 10) / 10, math.floor(a2 * 10) / 10
-    if a2 <= a1:
-        a2 += 360
+    def ok(th: float) -> bool:
+        p = np.array([[cx + r * math.cos(th), cy + r * math.sin(th)]])
+        return bool(_inside(p, edges)[0] and not _within(p, edges, 2 * CUT_CLEAR)[0])
+
+    def edge(good: float, bad: float) -> float:
+        """The clear end between a clear angle and a blocked one (bisected to 1e-9 rad)."""
+        for _ in range(40):
+            m = (good + bad) / 2
+            good, bad = (m, bad) if ok(m) else (good, m)
+        return good
+    lo, hi = t[order[s]], t[order[s + n - 1]]
+    if hi < lo:
+        hi += 2 * math.pi
+    if whole or s > 0:                 # a blocked sample before the run (a circle: always)
+        lo = edge(lo, lo - sweep / (ARC_STEPS if whole else steps - 1))
+    if whole or s + n < steps:
+        hi = edge(hi, hi + sweep / (ARC_STEPS if whole else steps - 1))
+    a1 = math.degrees(lo) % 360
+    a2 = a1 + math.degrees(hi - lo)
+    a1, a2 = math.ceil(a1 * 10 - 1e-6) / 10, math.floor(a2 * 10 + 1e-6) / 10
     name = str(getattr(g, "label", "")).rsplit(".", 1)[-1] or "mark"
-    return (f"to stop the circle at the cut, engrave the arc on the material instead: `{name} = "
+    what = "circle" if whole else "arc"
+    return (f"to stop the {what} at the cut, engrave the arc on the material instead: `{name} = "
             f"Arc(center=({cx:.6g} mm, {cy:.6g} mm), radius={r:.6g} mm, start_angle={a1:g} deg, "
-            f"end_angle={a2:g} deg)` (the circle's center and radius, counter-clockwise, "
+            f"end_angle={a2:g} deg)` (the {what}'s center and radius, counter-clockwise, "
             f"{2 * CUT_CLEAR:g} mm clear of the cut)")
 
 
