@@ -24,6 +24,7 @@ from pathlib import Path
 from .base.diagnostics import Diagnostic, DiagnosticSink, EvalError, Label, Span
 from .geometry.core.expr import Lin, evaluate, lift
 from .geometry.core.model import Model, Structure
+from .geometry.relations.bbox import contains_bbox, expand
 from .interpreter.calls import Calls
 from .interpreter.common import BudgetExhausted, FileCtx, Scope
 from .interpreter.expressions import Expressions
@@ -191,6 +192,8 @@ class Interpreter(Statements, Calls, Expressions):
             for k, v in e.terms.items():
                 s += v * x[k]
             return s
+        if contains_bbox(e):             # a box's side (`hull.center`, `r.bb.center`): at x
+            e = expand(e, self.model.x, set())
         return evaluate(lift(e), self.model.x)
 
     def error(self, e: EvalError) -> None:

@@ -110,19 +110,21 @@ POLY_MEMBERS = {"points": "points", "edges": "lines", "center": "point", "centro
                 "bb": "bbox"}
 TRI_MEMBERS = {"a": "point", "b": "point", "c": "point", "points": "points",
                "ab": "line", "bc": "line", "ca": "line", "edges": "lines", "center": "point",
-               "centroid": "point", "bb": "bbox"}
+               "centroid": "point", "incenter": "point", "inradius": "length", "bb": "bbox"}
 TRAP_MEMBERS = {k: v for k, v in RECT_MEMBERS.items() if k != "width"} | {
     "points": "points", "edges": "lines", "bottom_width": "length", "top_width": "length"}
 ELLIPSE_MEMBERS = {"center": "point", "rx": "length", "ry": "length", "bb": "bbox"}
 SLOT_MEMBERS = {"start": "point", "end": "point", "center": "point", "radius": "length",
                 "width": "length", "length": "length", "spine": "line", "bb": "bbox"}
 TEXT_MEMBERS = {"position": "point", "center": "point", "size": "length", "bb": "bbox"}
-STAR_MEMBERS = POLY_MEMBERS | {"outer_radius": "length", "inner_radius": "length"}
+STAR_MEMBERS = POLY_MEMBERS | {"outer_radius": "length", "inner_radius": "length",
+                               "tip_radius": "length"}
 ARCSLOT_MEMBERS = {"center": "point", "start": "point", "end": "point", "midpoint": "point",
                    "radius": "length", "width": "length", "inner_radius": "length",
                    "outer_radius": "length", "bb": "bbox"}
 SECTOR_MEMBERS = ARCSLOT_MEMBERS
 DERIVED_MEMBERS = {"bb": "bbox"}
+HULL_MEMBERS = {"bb": "bbox", "center": "point"}     # center: its box's (issue 105)
 SPLINE_MEMBERS = {"points": "points", "start": "point", "end": "point", "bb": "bbox"}
 BBOX_MEMBERS = {"left": "coordinate", "right": "coordinate", "top": "coordinate",
                 "bottom": "coordinate", "width": "length", "height": "length",
@@ -185,9 +187,9 @@ _DEFS = {
                      A("rotation", "angle", 0.0)],
                     [A("corner", "point"), A("opposite", "point"), A("rotation", "angle", 0.0)],
                     [A("start", "point"), A("end", "point"), A("width", "length")],
-                    doc="A rectangle; width, height and rotation are held, its position is a "
-                        "starting guess. By two corners only the rotation is held. By start, "
-                        "end: a bar along the segment.",
+                    doc="A rectangle (sizes and rotation held, position a guess). By two "
+                        "corners only the rotation is held. By start, end: a bar along the "
+                        "segment.",
                     members=RECT_MEMBERS),
     "RoundedRectangle": _p([A("center", "point"), A("width", "length"), A("height", "length"),
                             A("corner_radius", "length", None), A("rotation", "angle", 0.0),
@@ -266,7 +268,7 @@ _DEFS = {
                [A("start", "point"), A("length", "length"), A("angle", "angle"),
                 A("width", "length")],
                doc="A stadium around the segment start-end (its end arcs' centers); radius = "
-                   "width/2 is held; by center or start, length (end to end) and rotation "
+                   "width/2 is held; by center or start, length and rotation "
                    "or angle are held too.",
                members=SLOT_MEMBERS),
     "ArcSlot": _p([A("center", "point"), A("radius", "length"), A("start_angle", "angle"),
@@ -282,9 +284,11 @@ _DEFS = {
                  doc="Pie slice; inner_radius=: annulus.",
                  members=SECTOR_MEMBERS),
     "Star": _p([A("center", "point"), A("points", "number"), A("outer_radius", "length"),
-                A("inner_radius", "length"), A("rotation", "angle", 0.0)],
+                A("inner_radius", "length"), A("rotation", "angle", 0.0),
+                A("tip_radius", "length", 0.0, "> 0: each tip rounded by an arc of this radius "
+                  "tangent to its two sides (the notches stay sharp)", kw_only=True)],
                doc="A rigid star: `points` tips at outer_radius, notches at inner_radius, "
-                   "first tip up (+y), turned by rotation.",
+                   "first tip up (+y); tip_radius=: rounded tips.",
                members=STAR_MEMBERS),
     "Offset": _p([A("shape", "geometry"), A("distance", "length"), A("join", "string", "round")],
                  doc="The shape grown by distance (negative: shrunk), join \"round\" or "
@@ -303,7 +307,7 @@ _DEFS = {
                [A("shape1", "geometry"), A("shape2", "geometry")]
                + [A(f"shape{i}", "geometry", None) for i in range(3, 7)],
                doc="The convex hull of shapes (a list, or up to six), not drawn.",
-               members=DERIVED_MEMBERS),
+               members=HULL_MEMBERS),
     "Intersect": _p([A("shapes", "any")],
                     [A("shape1", "any"), A("shape2", "any")]
                     + [A(f"shape{i}", "any", None) for i in range(3, 7)],
@@ -324,12 +328,15 @@ _DEFS = {
                 A("weight", "length", None, "with stencil=: the letters' stroke width "
                   "(default size / 6)", kw_only=True),
                 A("bridge", "length", None, "with stencil=: the bridges' width (default "
-                  "size / 10)", kw_only=True)],
+                  "size / 10)", kw_only=True),
+                A("max_width", "length", None, "the text's width along its baseline at most "
+                  "this: a longer text is drawn at the size that fits (note W0113)",
+                  kw_only=True)],
                doc="Single-stroke text in a drawing (one font, no `font=`); size: cap "
                    "height (~ a capital's width); anchor: start, "
                    "middle, end; valign: baseline, middle, top, bottom; rotation about "
-                   "position; along=circle, angle=; stencil=true (in a hole): cut out, "
-                   "bridged.", members=TEXT_MEMBERS),
+                   "position; along=circle, angle=; stencil=true (in a hole): cut out; "
+                   "max_width=: shrinks to fit.", members=TEXT_MEMBERS),
     # ------------------------------------------------------------ geometric constraints
     "Coincident": _c([A("a", "geometry"), A("b", "geometry")],
                      doc="Two points are the same point (a point and a line, circle, arc or "
@@ -446,11 +453,11 @@ _DEFS = {
     "CornerPattern": _c([A("target", "boxed"), A("rect", "boxed"), A("inset", "any", 0.0,
                                                                      "a length, or (dx, dy)")],
                         [A("target", "boxed"), A("at", "points")], cat="operation",
-                        doc="target centered on each corner of Rectangle rect (inset inward: a "
-                            "length, or (dx, dy) along its width and height), "
-                            "or on each point of at: the original goes to the bottom-left "
-                            "corner (at[0]), copies to the others; what is Fixed stays put "
-                            "(fix the plate, not the original, or the plate moves to it)."),
+                        doc="target centered on each corner of a Rectangle or "
+                            "RoundedRectangle rect (inset inward: length or (dx, dy)), or on "
+                            "each point of at: the original at the bottom-left corner (at[0]), "
+                            "copies at the others; what is Fixed stays put (a Fixed original "
+                            "pulls the plate)."),
     "CutInto": _c([A("hole", "boxed"), A("part", "boxed")], cat="operation",
                   doc="A hole declared in an assembly cuts a solid of it, e.g. a part of a "
                       "template instance (`CutInto(lid_hole, box.lid)`: a hole in "
@@ -611,7 +618,9 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
     "Star": {"position": "center", "at": "center", "n_points": "points", "tips": "points",
              "count": "points", "num_points": "points", "r_outer": "outer_radius",
              "r_inner": "inner_radius", "radius": "outer_radius",
-             "outer": "outer_radius", "inner": "inner_radius"},
+             "outer": "outer_radius", "inner": "inner_radius", "tip_fillet": "tip_radius",
+             "fillet": "tip_radius", "corner_radius": "tip_radius", "round": "tip_radius",
+             "rounding": "tip_radius", "tip_round": "tip_radius", "tip_r": "tip_radius"},
     "Offset": _OFFSET,
     "Inset": _OFFSET,
     "Shell": {**_OFFSET, "amount": "thickness", "by": "thickness", "offset": "thickness",

@@ -33,7 +33,12 @@ _BOOL = "booleans come from structure kinds: a `solid` unions its children, `hol
 _TWO_D = "AIDL is 2D: draw the outline (Circle, Rectangle, Polygon, ...); the SVG is the part's profile"
 _STRUCT = "group parts in a structure block: `solid NAME { ... }` (also hole, drawing, assembly)"
 _PATTERN = "repeat with `LinearPattern(target, count, spacing)`, `CircularPattern(target, count, center)` or a `for i in range(n) { ... }` loop"
+_TO_ANGLE = ("an angle from a plain number of radians: `x * 1 rad` (a literal: `0.5 rad`); from "
+             "degrees: `radians(x)` or `x * 1 deg`; an angle as a number: `degrees(a)`; from a "
+             "ratio: `atan(y / x)`, `atan2(y, x)`")
 HALLUCINATIONS = {
+    **{n: _TO_ANGLE for n in ("rad", "deg", "to_radians", "to_degrees", "deg2rad", "rad2deg",
+                              "toRadians", "toDegrees", "rads", "degs")},
     "Rotate": "there is no Rotate: give shapes a `rotation=` argument, or relate lines with `Angle(a, b, 30 deg)`",
     "Rotation": "rotation is an argument: `Rectangle(center=(0, 0), width=10, height=5, rotation=30 deg)`",
     "Rotated": "rotation is an argument: `Rectangle(center=(0, 0), width=10, height=5, rotation=30 deg)`",

@@ -93,3 +93,19 @@ def test_bad_conditions_are_located_errors(cond, code):
     src = f"a = 1\nb = 2\nsolid s {{\n    c = Circle((0, 0), 1)\n    assert {cond}\n}}\n"
     r = aidl_lang.compile(source=src.replace("a or b", "a > 0 or b > 0"))
     assert r.errors and r.errors[0].code == code and r.errors[0].span.line == 5
+
+
+def test_a_strict_comparison_inside_the_tolerance_says_the_gap():
+    """`assert a > 0` at `a = 1e-7` holds as plain numbers but not within the 1e-6 the
+    compiler judges every comparison to: the message says the gap and the tolerance (issue
+    105: it said only "1e-07 > 0 is false"); a failure by more says nothing of it."""
+    src = ('param a = 1e-7\nassert a > 0, "positive"\nparam b = 2 mm\n'
+           "assert b < 2.0000005 mm\nassert b > 3 mm\n"
+           "solid s { c = Circle(center=(0, 0), radius=3) }\n")
+    r = aidl_lang.compile(source=src)
+    msgs = [m for _, _, m in errors(r)]
+    assert msgs[0] == ("assertion failed: `a > 0` (positive): 1e-07 > 0 is false (the sides "
+                       "are only 1e-07 apart: `>` needs a gap of more than 1e-06, the tolerance "
+                       "every comparison is judged within)")
+    assert "only 5e-07 mm apart: `<` needs a gap of more than 1e-06 mm" in msgs[1]
+    assert msgs[2] == "assertion failed: `b > 3 mm`: 2 mm > 3 mm is false"

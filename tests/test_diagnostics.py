@@ -668,6 +668,15 @@ def test_constraint_on_constructor_held_sizes_names_them(compile_text):
         (4, "`radius` is held at 2 in by this constructor")]
 
 
+def test_text_shrunk_to_max_width_is_a_note_W0113(compile_text):
+    c = compile_text('drawing d { t = Text("ROSEMARY", position=(0, 0), size=10, '
+                     'max_width=60) }\n')
+    (d,) = [d for d in c.sink.items if d.code == "W0113"]
+    assert d.severity == "note" and not c.sink.has_errors
+    assert "is 75.24 mm wide, more than its max_width 60 mm: drawn at size 7.975 mm" in d.message
+    assert span4(d)[:2] == (1, 70)            # at `60`, the max_width given
+
+
 def test_every_producible_code_has_a_test():
     import pathlib
     here = pathlib.Path(__file__)

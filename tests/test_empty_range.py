@@ -7,6 +7,8 @@ the value it names) never makes things worse: the range is no longer empty and n
 added.  Cost: about 60 small compiles (no solve past a rectangle), under 2 s CPU."""
 import re
 
+import pytest
+
 from hypothesis import given, settings, strategies as st
 
 import aidl_lang
@@ -90,3 +92,17 @@ def test_following_an_E0124_hint_never_makes_things_worse(tmp_path_factory, a, c
         assert not _empty(after), (d.hint, fixed)
         # no new kind of error (the value of `b` may still lie outside its range: E0124)
         assert {e.code for e in after} <= {e.code for e in errs} | {"E0124"}
+
+
+@pytest.mark.parametrize("bound", ["max(10 mm, 25 mm)", "2 * 12.5 mm", "25 mm + 0 mm"])
+def test_no_swap_for_bounds_written_as_expressions(bound):
+    """`min = max(10 mm, 25 mm)` above `max = 20 mm`: swapping the expressions would change
+    what they compute (issue 105), so E0124 proposes no swap, even where the swapped range
+    would hold the value; bounds written as numbers still get "swap them"."""
+    src = (f"param w = 22 mm, min = {bound}, max = 20 mm\n"
+           "solid s { c = Circle(center=(0, 0), radius=w) }\n")
+    [e] = aidl_lang.compile(source=src).errors
+    assert e.code == "E0124" and "min = 25 mm" in e.message and f"`{bound}`" in e.message
+    assert "swap" not in e.hint.replace("swapping the expressions would change", "")
+    plain = aidl_lang.compile(source=src.replace(bound, "25 mm"))
+    assert plain.errors[0].hint == "swap them"

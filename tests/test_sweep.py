@@ -390,3 +390,56 @@ def test_set_and_mcp_set_params_refuse_a_value_with_a_comment(tmp_path):
     # a `#` inside a string value is text, not a comment
     from aidl_lang.params.set_values import comment_at
     assert comment_at('"no #1"') == -1 and comment_at('"a" # b') == 4
+
+
+BOX = """param width = 40 mm, min = 10 mm, max = 80 mm
+param wall = 3 mm, min = 0.75 mm, max = 6 mm
+param height = 30 mm, min = 8 mm, max = 60 mm
+solid box {
+    body = Rectangle(center=(0, 0), width=width, height=height)
+    hole h { c = Rectangle(center=(0, 0), width=width - 2 * wall, height=30 - 2 * wall) }
+}
+"""
+
+
+def test_a_combination_names_only_the_params_that_change_its_finding():
+    """Each param a combination finding names plays a part in it: held at its written value
+    (the others at the finding's) the design no longer fails that way (issue 105: a
+    combination named `width` above 63 mm though the wall was as thin at 40 mm)."""
+    rep = aidl_lang.compile(source=BOX).sweep()
+    combos = [f for f in rep.findings if len(f.values) > 1]
+    assert combos, rep.text()
+    written = {"width": 40.0, "wall": 3.0, "height": 30.0}
+    for f in combos:
+        assert "width" not in f.values, f.values       # the thin wall is the same at any width
+        for held in f.values:
+            ov = {n: f"{v} mm" for n, v in f.values.items() if n != held}
+            r = aidl_lang.compile(source=BOX, overrides=ov)
+            assert f.code not in {d.code for d in r.diagnostics}, (f.values, held)
+        r = aidl_lang.compile(source=BOX, overrides={n: f"{v} mm" for n, v in f.values.items()})
+        assert f.code in {d.code for d in r.diagnostics}
+    assert all(written.keys() >= f.values.keys() for f in rep.findings)
+
+
+def test_a_constant_assigned_twice_is_lifted_once():
+    """`wall = 3 mm` written twice at the top of a program without a param is one lifted
+    param (it was swept twice, the copy declaring it twice), named with both lines; a
+    finding's values are written into both literals."""
+    from aidl_lang.params.sweep_literals import lift, written
+    src = ("wall = 3 mm\nwidth = 40 mm\nwall = 3 mm\nsolid box {\n"
+           "    body = Rectangle(center=(0, 0), width=width, height=30)\n"
+           "    hole h { c = Rectangle(center=(0, 0), width=width - 2 * wall, "
+           "height=30 - 2 * wall) }\n}\n")
+    got = lift(src, "<t>")
+    assert list(got.literals).count("wall") == 1
+    assert got.source.count("param wall =") == 1 and "# wall = 3 mm" in got.source
+    assert got.literals["wall"].where == "`wall = 3 mm` on lines 1, 3"
+    assert written(src, got.literals, {"wall": "2 mm"}).count("wall = (2 mm)") == 2
+    rep = aidl_lang.compile(source=src).sweep()
+    assert rep.swept.count("wall") == 1
+    # assigned twice with different values: the last, the one in effect, is the param
+    two = src.replace("wall = 3 mm\nsolid", "wall = 4 mm\nsolid")
+    got = lift(two, "<t>")
+    assert got.literals["wall"].value == 4.0 and "param wall = 4 mm" in got.source
+    assert "the last of 2 assignments" in got.literals["wall"].where
+    assert aidl_lang.compile(source=got.source).ok

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 import os
+import re
 from collections.abc import Mapping
 
 from ..base.diagnostics import Diagnostic, DiagnosticSink
@@ -94,8 +95,9 @@ def set_params(source: str, values: Mapping[str, str | float | bool],
     ``values`` replaced, and its :class:`Result`: ``(new text, result)``.  Only the value's
     text changes (``param width = 40 mm, min=20 mm`` -> ``param width = 50 mm, min=20 mm``):
     comments, spacing and every other line stay as written.  A value is a string read as the
-    program reads one (``"50 mm"``, ``"2 * 25"``), a number (in the file's units, written as
-    it is) or a bool; a string param's new text is quoted when it is not already.
+    program reads one (``"50 mm"``, ``"2 * 25"``), a number (a bare number for a length or
+    angle param is in the param's own unit and written with it: ``40`` on ``param w = 60 mm``
+    writes ``40 mm``) or a bool; a string param's new text is quoted when it is not already.
 
     The values are first checked as :func:`compile`'s ``overrides`` are (the kind of the
     param's value, its declared ``min``/``max``).  Raises :class:`ParamsRefused`
@@ -137,12 +139,51 @@ def set_params(source: str, values: Mapping[str, str | float | bool],
             if d.hint:
                 d.hint = d.hint.replace("`--set ", "`")
             raise ParamsRefused(d.message, "bad_value", at, diagnostics=[d])
+    texts = _units_written(source, decls, texts, checked.compiled.params or {})
     out, last = [], 0
     for st in sorted((decls[k] for k in texts), key=lambda s: s.value.span.start):
         out += [source[last:st.value.span.start], texts[st.name]]
         last = st.value.span.end
     text = "".join(out) + source[last:]
     return text, compile(source=text, path=name, budget=budget)
+
+
+_NUMBER = re.compile(r"[+-]?\s*(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
+
+
+def _units_written(source: str, decls: dict, texts: dict[str, str],
+                   params: dict) -> dict[str, str]:
+    """``texts`` with a bare number given to a length or angle param written with the
+    param's own unit (issue 105: ``w=40`` on ``param w = 60 mm, min = 20 mm`` wrote
+    ``param w = 40, min = 20 mm``, which no longer compiled): ``40 mm``, as the check compile
+    read it (:func:`~aidl_lang.interpreter.param_units.own_unit`); an expression of bare
+    numbers as ``(2 * 20) * 1 mm``.  ``params``: the checked compile's values, name -> value
+    (their dimensions); a value that names anything but ``pi``/``tau`` stays as given."""
+    from .. import ast as A
+    from ..base.diagnostics import DiagnosticSink
+    from ..geometry.core.values import ANG, LEN, Q
+    from ..interpreter.param_units import own_unit
+    from ..parsing.lalr import parse_expression
+    from ..registry import CONSTANTS
+    from .values import file_units
+    out = dict(texts)
+    for k, t in texts.items():
+        v = params.get(k)
+        if not isinstance(v, Q) or v.dim not in (LEN, ANG):
+            continue
+        sink = DiagnosticSink()
+        try:
+            node = parse_expression(t, "<set>", sink)
+        except Exception:       # noqa: BLE001 - the check compile read it; leave it be
+            continue
+        if sink.has_errors or any(isinstance(n, A.Num) and n.unit is not None
+                                  or isinstance(n, A.Name) and n.id not in CONSTANTS
+                                  or isinstance(n, (A.Str, A.Call)) for n in A.walk(node)):
+            continue
+        unit = own_unit(decls[k].value, v.dim, file_units(source)[0])
+        plain = _NUMBER.fullmatch(t.strip()) is not None
+        out[k] = f"{t} {unit}" if plain else f"({t}) * 1 {unit}"
+    return out
 
 
 def _param_text(value, old) -> str:

@@ -194,7 +194,8 @@ the swapped range holds the value.  Bounds that follow other params (`min = max(
 max = min(c, 70 mm)`) are never swapped (that changes what they mean): the message says what
 each bound came to at the other params' values, and the hint which values of which param
 empty the range ("`a` above 60 mm empties it with `c` = 60 mm"), found along that param's
-declared range.
+declared range.  Bounds written as expressions of numbers alone (`min = max(10 mm,
+25 mm)`) are not swapped either: the hint asks for the wrong bound to be changed.
 """),
     "E0125": ("a `cut` where it cuts nothing", """
 A `cut` structure holds through-cuts: the laser cuts along each of its curves, open or closed,
@@ -562,6 +563,10 @@ Off the outline, the hint says where the mark leaves the material (x, y); where 
 reaches past the box of the part's largest own shape and fits in it, it also writes the
 constraint that sets it there clear of the cut, `Inside(d.mark, body, margin=0.5 mm)` (a mark
 that touches the cut is W0516), and a mark larger than that shape is told to shrink.
+An engraved Circle or Arc that crosses the outline or a hole (a ring that meets a notch in the
+rim) is offered the arc that stops at the cut: the longest arc of it on the material, 1 mm
+clear of the cut, written as the `Arc(center=..., radius=..., start_angle=..., end_angle=...)`
+that replaces it.
 """),
     "W0506": ("geometry that adds nothing", """
 A child solid lies wholly inside the rest of its parent, so it changes nothing in the final
@@ -1086,6 +1091,18 @@ under its caret.
 
     # admin<U+202E> nimda      <- with the character itself there, the rest of the comment
                                #    shows reversed: W0112 at line 1, column 8
+"""),
+    "W0113": ("text shrunk to fit its max_width", """
+A `Text(..., max_width=w)` whose text is wider than `w` along its baseline at its `size` is
+drawn at the size at which it is exactly `w` wide (a note, not a warning: the program asked for
+it). The note gives the size asked, the width it had and the size drawn; give that size (or
+less) to draw it without the note, or a wider `max_width`. A stencil's width counts its stroke
+`weight`; along a curve the width is its length along the curve.
+
+    drawing label {
+        t = Text("ROSEMARY", position=(0, 0), size=10 mm, max_width=60 mm)
+        # note: 75.2 mm wide at size 10 mm: drawn at size 7.98 mm, 60 mm wide
+    }
 """),
     "W0104": ("empty drawing", """
 The file is empty (nothing but comments), or its structures build no geometry at all, so the

@@ -141,7 +141,7 @@ def _parser(only: str | None = None) -> argparse.ArgumentParser:
                          "as it was), then check the file as `aidl check` does.")
     st.add_argument("file", metavar="FILE", help="the .aidl program")
     st.add_argument("values", nargs="+", metavar="NAME=VALUE",
-                    help="e.g. width=\"50 mm\" holes=6 (bare numbers in the file's unit)")
+                    help="e.g. width=\"50 mm\" holes=6 (a bare number in the param's own unit, written with it)")
     st.add_argument("--json", action="store_true", help="the check's result as JSON")
     _budget_arg(st)
     lsp = add("lsp", help="run the language server on stdin/stdout (for editors)")

@@ -20,7 +20,7 @@ from ..geometry.core.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef
 from ..base.limits import MAX_EXTENT
 from ..registry import (ENTRIES, FUNCTIONS, accepted_args, bind_variant, canonical, canonical_args,
                         lookup)
-from .common import (DEG, _a, _fmt_num, show)
+from .common import (_defer_boxes, said_shrunk, DEG, _a, _fmt_num, show)
 
 
 _DIMS = {"length": LEN, "angle": ANG, "number": NUM}
@@ -422,6 +422,8 @@ class Calls:
             self.check_size(len(g.data["text"]), node.span, "a Text")
             g.data["extent"] = g.data.get("extent") or text_extent(g.data["text"], g.data["size"], g.data["anchor"],
                                            g.data["valign"], g.data["rotation"])
+            if g.data.get("shrunk"):
+                said_shrunk(self.sink, g, spans.get("max_width", node.span))
             lost = missing_glyphs(g.data["text"])
             if lost:
                 shown = ", ".join(f"`{c}` (U+{ord(c):04X})" for c in lost[:8])
@@ -537,6 +539,7 @@ class Calls:
         if cx is None or cy is None:
             c = Constraint("internal", s, None, [Equation(var(ix) - v.x), Equation(var(iy) - v.y)],
                            text=f"{label} placed at a derived point", implicit=True)
+            _defer_boxes(c)
             s.constraints.append(c)
             self.model.constraints.append(c)
         return p
@@ -548,6 +551,7 @@ class Calls:
         sc = self.new_scalar(self.value_of(q.expr), label, held=False)
         c2 = Constraint("internal", self.struct, None, [Equation(var(sc.index) - q.expr)],
                         text=f"{label} from an expression", implicit=True)
+        _defer_boxes(c2)
         self.struct.constraints.append(c2)
         self.model.constraints.append(c2)
         return sc
@@ -974,3 +978,4 @@ class Calls:
 
 def _nonfinite(c: float) -> str:
     return "not a number (NaN)" if c != c else "infinite"
+

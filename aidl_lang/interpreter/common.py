@@ -201,3 +201,29 @@ def _definition_lines(stmts, out=None) -> dict[str, int]:
             if st.orelse is not None:
                 _definition_lines(st.orelse.stmts, out)
     return out
+
+
+def said_shrunk(sink, g, span) -> None:
+    """The note W0113 of a ``Text(..., max_width=)`` (geometry ``g``) drawn smaller than its
+    ``size`` to fit, at ``span``: the size asked, the width it had, the size drawn."""
+    import math
+    from ..base.diagnostics import Diagnostic
+    asked, wide = g.data["shrunk"]
+    m, fit = g.data["max_width"], g.data["size"]
+    t = g.data["text"]
+    shown = t if len(t) <= 40 else t[:37] + "..."
+    sink.add(Diagnostic(
+        "W0113", f"the text \"{shown}\" at size {asked:.4g} mm is {wide:.4g} mm wide, more "
+        f"than its max_width {m:.4g} mm: drawn at size {fit:.4g} mm, {m:.4g} mm wide", span,
+        "note", hint=f"give `size={math.floor(fit * 100) / 100:g}` (or less) to draw it at "
+                     "that size without this note, a wider max_width, or a shorter text"))
+
+
+def _defer_boxes(c) -> None:
+    """A constructor's point or size read from a bounding box (``Circle(center=hull.center)``,
+    ``r.bb.center``): its equations deferred as a box constraint's are (expanded when the
+    whole tree is known), not compiled with a box side in them (was an internal error)."""
+    from ..geometry.core.expr import Lin
+    from ..geometry.relations.bbox import contains_bbox
+    if any(type(e.expr) is not Lin and contains_bbox(e.expr) for e in c.equations):
+        c.deferred, c.equations = c.equations, []

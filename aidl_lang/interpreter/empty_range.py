@@ -2,7 +2,8 @@
 
 Bounds written as numbers (``min = 80 mm, max = 20 mm``) are a slip: the hint says to swap
 them, and only when the swapped range holds the param's value (the design then compiles as
-written).  Bounds that follow other params (``min = max(a, 10 mm), max = min(c, 70 mm)``)
+written).  Bounds written as expressions of numbers alone (``min = max(10 mm, 25 mm)``) get
+no swap either: the hint asks for the bound that is wrong to be changed.  Bounds that follow other params (``min = max(a, 10 mm), max = min(c, 70 mm)``)
 are no slip: swapping them would change what the author meant (``b`` at least ``a`` and at
 most ``c``), so nothing is proposed; the message says what each bound reads and came to, and
 the hint says in words which values of which param empty the range, found along each such
@@ -26,6 +27,13 @@ def empty_range(interp, st, opt: dict, lo: float, hi: float, val, fmt) -> EvalEr
     said = ", ".join(f"{k} = {fmt(x, dim)}" + (f" (`{w}`)" if w and w != fmt(x, dim) else "")
                      for k, x, w in (("min", lo, _text(interp, opt["min"])),
                                      ("max", hi, _text(interp, opt["max"]))))
+    if not reads and not all(_literal(opt[k].value) for k in ("min", "max")):
+        # bounds written as expressions of numbers (`min = max(10 mm, 25 mm)`): swapping the
+        # expressions would change what they compute (issue 105), so none is proposed
+        return EvalError("E0124", f"param `{st.name}`: min is larger than max ({said})",
+                         opt["min"].span,
+                         hint="change the bound that is wrong so that min comes out at most "
+                              "max (swapping the expressions would change what they mean)")
     if not reads:
         v = val.const()
         hint = ("swap them" if hi - 1e-9 <= v <= lo + 1e-9 else
@@ -43,6 +51,13 @@ def empty_range(interp, st, opt: dict, lo: float, hi: float, val, fmt) -> EvalEr
             + " so this range cannot empty")
     return EvalError("E0124", f"param `{st.name}`: its range is empty at {at}: {said}",
                      opt["min"].span, hint=hint)
+
+
+def _literal(node) -> bool:
+    """A bound written as a number (``20 mm``, ``-5``), the only kind "swap them" fits."""
+    if isinstance(node, A.Neg):
+        node = node.operand
+    return isinstance(node, A.Num)
 
 
 def _text(interp, o) -> str:

@@ -203,6 +203,8 @@ class Expressions:
             g = obj.geom
             if name == "bb":
                 return BBoxRef(g)
+            if name == "center" and g.kind == "Hull":      # its box's center, as `.bb.center`
+                return self.member(BBoxRef(g), name, span)
             v = geom_member(g, name, S)
             if v is not None:
                 return v

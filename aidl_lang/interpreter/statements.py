@@ -131,7 +131,7 @@ class Statements:
                     if overridden:
                         try:
                             val = self._eval_override(st.name, self.overrides[st.name], fctx,
-                                                      val)
+                                                      val, st.value)
                         except EvalError as e:
                             # one error that names the `--set` argument; the file goes on
                             # with the default, so nothing in it is blamed for the value
@@ -201,10 +201,6 @@ class Statements:
             if isinstance(q, Q) and q.dim != val.dim and q.const() is not None \
                     and q.dim == (0, 0) and val.dim == (1, 0):
                 q = Q.num(q.const() * self.file.unit_scale, val.dim)     # a bare number: file units
-            if overridden and isinstance(q, Q) and q.dim == (1, 0) and val.dim == (0, 0):
-                # `--set length=120` for a length param: a bare number in the file's units,
-                # as it would be written in the file (was E0124 "must be a number")
-                val = Q.num(val.const() * self.file.unit_scale, q.dim)
             if not isinstance(q, Q) or q.const() is None or q.dim != val.dim:
                 want = dim_name(val.dim)
                 raise EvalError("E0124", f"`{o.name}` of param `{st.name}` must be a {want} like "
@@ -236,15 +232,17 @@ class Statements:
             raise err
         return out
 
-    def _eval_override(self, name: str, text: str, fctx: FileCtx, default=None):
+    def _eval_override(self, name: str, text: str, fctx: FileCtx, default=None, expr=None):
         """The value of ``--set NAME=TEXT`` (also ``aidl_lang.compile(overrides=...)`` and the
         live preview's sliders) for the param whose value in the file is ``default``.  Raises
         E0113, naming the ``--set`` argument, when ``TEXT`` does not read as a value or is of
         another kind than the default (a length for an angle, a word for a number): that one
         error, not the errors the wrong value would cause where the param is used (issue
-        28).  A bare number stands for a length or an angle like a bare number in the file;
-        a unit given for a param whose default is a bare number is checked where it is used
-        (:meth:`override_misuse`)."""
+        28).  A bare number for a length or an angle param is in the param's own unit, the
+        one its value ``expr`` is written in (``--set w=40`` on ``param w = 60 mm`` is 40 mm,
+        ``--set angle=20`` on ``param angle = 30 deg`` is 20 deg; else the file's units or
+        degrees: :func:`~.param_units.own_unit`, issue 105); a unit given for a param whose
+        default is a bare number is checked where it is used (:meth:`override_misuse`)."""
         from ..geometry.core.values import ANG, dim_name
         from ..parser import ParseError, parse_expression
         arg = f"`--set {name}={text}`"
@@ -283,6 +281,13 @@ class Statements:
                                 None, hint=f"give it in {_a(dim_name(a))} unit, e.g. {example}")
             if a == NUM and b != NUM:
                 self.override_units[name] = (text, b)
+            if a in (LEN, ANG) and b == NUM and val.const() is not None:
+                # a bare number in the param's own unit (was the file's units, and an angle
+                # param's range refused it: issue 105)
+                from .param_units import own_unit, unit_scale
+                unit = own_unit(expr, a, next((u for u, k in UNITS_LENGTH.items()
+                                               if k == fctx.unit_scale), "mm"))
+                val = Q.num(val.const() * unit_scale(unit), a)
         elif isinstance(default, Q) or isinstance(default, bool):
             if not (isinstance(default, bool) and isinstance(val, bool)):
                 raise EvalError("E0113", f"{arg}: `{name}` is {like}, got {_a(type_name(val))}", None,

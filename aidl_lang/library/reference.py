@@ -784,7 +784,10 @@ number made from them (`2 * pi / n`, `pi * module / pitch_r`, `tau - 0.1`) meets
 radians, where any other bare number is degrees: `theta + pi / 2` is `theta + 90 deg`, and
 `theta + k * (tau - 2 * theta) / n` steps from `theta` to a whole turn less `theta`. `pi / pi`
 is a plain number again. `180 deg`, `360 deg` or `tau * 1 rad` say the same explicitly.
-""", ["PI", "tau", "constants"]),
+Conversions: a number of radians as an angle is `x * 1 rad` (`0.5 rad` for a literal); a
+number of degrees `radians(x)` (or `x * 1 deg`); an angle as a number of degrees `degrees(a)`;
+an angle from a ratio `atan(y / x)` or `atan2(y, x)`. There is no `rad()` or `deg()`.
+""", ["PI", "tau", "constants", "rad", "radians", "degrees", "conversion"]),
 }
 
 # ---------------------------------------------------------------- details of entries
@@ -886,5 +889,29 @@ DETAILS: dict[str, str] = {
             "text under a circle, the right way up (its default place: the circle's bottom). "
             "Labels round a center: `for a in range(0, 181, 10) { t = "
             "Text(str(a), along=ring, angle=a * 1 deg, size=3) }`, no cos or sin. The "
-            "text's position is the curve's center; its box is taken at the starting radius.",
+            "text's position is the curve's center; its box is taken at the starting radius. "
+            "max_width=w keeps the text at most w wide along its baseline: a longer one is "
+            "drawn at the size at which it is exactly w wide (note W0113 gives that size; "
+            "`t.size` is the size drawn), e.g. `Text(\"ROSEMARY\", position=(0, 0), "
+            "size=10 mm, max_width=60 mm)` is 60 mm wide at size 7.98 mm. A stencil's width "
+            "counts its stroke weight; along a curve the width is its length along it.",
+    "Star": "tip_radius=r rounds each tip by an arc of radius r tangent to its two sides, as "
+            "Fillet rounds a corner (exact arcs; the notches stay sharp); the rounded tip "
+            "reaches a little less than outer_radius, r (1 / sin(h) - 1) less for a tip of "
+            "angle 2h, and its box is the rounded outline's. A radius whose rounding would "
+            "run past the notches is E0108 (it says the bound). Members "
+            "outer_radius, inner_radius, tip_radius; points, edges, center of the sharp star.",
+    "Hull": "`.center` is the center of the hull's bounding box (as `.bb.center`), a point "
+            "that follows the shapes: `Circle(center=grip.center, radius=3)` centers a hole on "
+            "it.",
+    "Triangle": "`.incenter` is the center of the inscribed circle (the vertices weighted by "
+                "the lengths of the sides opposite them), `.inradius` its radius (twice the area "
+                "over the perimeter): `Circle(center=t.incenter, radius=t.inradius - 2)` is a "
+                "circle 2 mm inside all three sides. `.centroid` (`.center`) is the mean of the "
+                "vertices. Both follow the solved triangle.",
+    "CornerPattern": "rect may be a Rectangle or a RoundedRectangle: its corners are the "
+                     "points where its sides meet before rounding (bottom_left, bottom_right, "
+                     "top_right, top_left), so an inset of at least the corner radius keeps "
+                     "the holes on the flat: `CornerPattern(h, plate, inset=8)` on "
+                     "`plate = RoundedRectangle(..., corner_radius=6)`.",
 }

@@ -45,7 +45,8 @@ constants `NAME = expr`, templates `def NAME(p1, p2=default) -> solid { ... }` (
 comparisons, `and or not`, `a if c else b`; `range(start, stop, step)`. Comments start with `#`
 (not `//`). Numbers take units (`5 mm`, `2 in`, `30 deg`); a bare
 number is a length in the file unit or an angle in degrees (but `sin`/`cos`/`tan` read
-radians: write `cos(i * 10 deg)`); `pi`, `tau` count radians: `a + pi / 2` is `a + 90 deg`.
+radians: write `cos(i * 10 deg)`); `pi`, `tau` count radians: `a + pi / 2` is `a + 90 deg`;
+`x * 1 rad` is an angle.
 
 Constructor dimensions (width, radius, ...) are held; positions are starting guesses: what
 no constraint pulls on stays exactly where it is written; a part stays, its features (holes,

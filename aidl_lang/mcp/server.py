@@ -72,7 +72,7 @@ Source = Annotated[str | None, Field(
 ProgramPath = Annotated[str | None, Field(
     description="A .aidl file in the allowed folder; or give `source`.")]
 Overrides = Annotated[dict[str, str | int | float | bool] | None, Field(
-    description="Param values: {\"width\": \"40 mm\"}, {\"width\": 40} (the file's units), "
+    description="Param values: {\"width\": \"40 mm\"}, {\"width\": 40} (the param's own unit), "
                 "{\"holes\": true}.")]
 Budget = Annotated[float | None, Field(
     description="Times the budget (15 s CPU, steps, objects); "
@@ -148,7 +148,7 @@ Start = Annotated[int | None, Field(
 End = Annotated[int | None, Field(
     description="Patch: offset after the last character replaced.", ge=0)]
 ParamValues = Annotated[dict[str, str | int | float | bool], Field(
-    description="Param name -> new value: \"50 mm\", 50 (file units), true.",
+    description="Param name -> new value: \"50 mm\", 50 (the param's own unit), true.",
     min_length=1, max_length=200)]
 EntityName = Annotated[str, Field(
     description="A name as `values` gives it: a point, line, circle, shape, part "

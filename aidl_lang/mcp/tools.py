@@ -798,7 +798,7 @@ def _written_and_checked(ws: Workspace, target: Path, text: str, shown: str,
 def set_params(ws: Workspace, path: str, values: dict, dof: bool = False,
                budget: float | None = None, files: list | None = None) -> dict:
     """Set the ``param`` values ``values`` (name -> value: ``"50 mm"``, a number in the
-    file's units, a bool) in the program file ``path`` (:func:`aidl_lang.api.set_params`:
+    param's own unit, written with it: ``40`` on ``param w = 60 mm`` is ``40 mm``; a bool) in the program file ``path`` (:func:`aidl_lang.api.set_params`:
     only each value's text changes, comments and formatting kept), write it and check it:
     :func:`check`'s result with ``written``.
     Raises :class:`Refused` (``no_match``: an unknown name, with the nearest;

@@ -234,13 +234,27 @@ class _Finder:
     def lifted(self) -> Lifted:
         src = self.source
         edits, decls, out = [], [], {}
+        by_name: dict = {}
         for st in self.consts:
-            v, unit, _neg = _number(st.value)
-            text = src[st.value.span.start:st.value.span.end]
-            lit = Literal(st.name, text, v, [st.value.span], [False],
-                          f"`{st.name} = {text}` on line {st.span.line}")
-            out[st.name] = lit
-            edits.append((st.span.start, st.span.start, "param "))
+            by_name.setdefault(st.name, []).append(st)
+        for name, sts in by_name.items():
+            # a constant assigned more than once is one param (issue 105: it was swept
+            # twice, and the copy declared the param twice): the last value, the one in
+            # effect, lifted there; the others commented out of the copy; the file's
+            # literals of that value are those a finding writes
+            last = sts[-1]
+            v, unit, _neg = _number(last.value)
+            text = src[last.value.span.start:last.value.span.end]
+            same = [st for st in sts if _number(st.value)[:2] == (v, unit)]
+            lines = sorted({st.span.line for st in same})
+            where = (f"`{name} = {text}` on line {lines[0]}" if len(lines) == 1 else
+                     f"`{name} = {text}` on lines {', '.join(map(str, lines))}")
+            if len(sts) > len(same):
+                where += f" (the last of {len(sts)} assignments, the one in effect)"
+            out[name] = Literal(name, text, v, [st.value.span for st in same],
+                                [False] * len(same), where)
+            edits.append((last.span.start, last.span.start, "param "))
+            edits += [(st.span.start, st.span.start, "# ") for st in sts[:-1]]
         for (struct, arg, v, unit, kind), occ in _merged(self.groups):
             scopes = {s for _, s, _, _ in occ}
             name = self._name(f"{scopes.pop() if len(scopes) == 1 else struct or 'the'}_"

@@ -39,8 +39,20 @@ def describe(a: Assertion, found: list) -> str:
     why = f" ({a.message})" if a.message else ""
     parts = []
     for op, l, r, dim in found[:3]:
-        parts.append(f"{_show(l, dim, a)} {op} {_show(r, dim, a)} is false")
+        parts.append(f"{_show(l, dim, a)} {op} {_show(r, dim, a)} is false" + _within_tol(op, l, r, dim))
     return f"assertion failed: `{a.text}`{why}: " + "; ".join(parts)
+
+
+def _within_tol(op: str, left: float, right: float, dim) -> str:
+    """What a strict comparison that holds as plain numbers but not within :data:`TOL`
+    needs (issue 105: `assert a > 0` at `a = 1e-7` said only "1e-07 > 0 is false"): the
+    gap, and the tolerance, in mm, radians or plain units; "" for any other failure."""
+    d = left - right
+    if not (math.isfinite(d) and ((op == ">" and 0 < d <= TOL) or (op == "<" and -TOL <= d < 0))):
+        return ""
+    unit = {(1, 0): " mm", (0, 1): " rad"}.get(dim, "")
+    return (f" (the sides are only {abs(d):.3g}{unit} apart: `{op}` needs a gap of more than "
+            f"{TOL:g}{unit}, the tolerance every comparison is judged within)")
 
 
 def _eval(e, x, exclude: set) -> float:

@@ -229,6 +229,28 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
         xs += [ox + bx[0], ox + bx[2]]
         ys += [oy + bx[1], oy + bx[3]]
         return
+    if k == "Star" and g.data.get("tip"):
+        # rounded tips: each tip's fillet arc (its extremes that its sweep passes, its
+        # ends), the notches as points; the arc's center on the line from the star's center
+        # to the sharp tip, at the values x for its direction (a rigid star)
+        dc, half = g.data["tip"]
+        ro, rt = g.data["dims"]["outer_radius"], g.data["dims"]["tip_radius"]
+        cx, cy = P["center"]
+        c = g.points["center"]
+        for i, name in enumerate(g.data["order"]):
+            px, py = P[name]
+            if i % 2:
+                xs.append(px)
+                ys.append(py)
+                continue
+            p = g.points[name]
+            ang = math.atan2(x[p.iy] - x[c.iy], x[p.ix] - x[c.ix])
+            fx, fy = cx + (px - cx) * (dc / ro), cy + (py - cy) * (dc / ro)
+            for e in (ang - half, ang + half):
+                xs.append(fx + rt * math.cos(e))
+                ys.append(fy + rt * math.sin(e))
+            _quadrants(fx, fy, rt, ang - half, 2 * half, xs, ys)
+        return
     if k == "Text":
         px, py = P["position"]
         x0, x1, y0, y1 = g.data.get("extent", (0.0, 0.0, 0.0, 0.0))

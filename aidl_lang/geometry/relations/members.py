@@ -144,6 +144,8 @@ def member(g: Geometry, name: str, frame):
             return PV(sx, sy, None, own)
         if name == "centroid":
             return _centroid([_pv(p, frame) for p in pts], own)
+        if k == "Triangle" and name in ("incenter", "inradius"):
+            return _incircle([_pv(p, frame) for p in pts], name, own)
     if k == "Polyline" and name == "edges":
         return [GeomRef(e) for e in g.data["edges"]]
     if k in ("Spline", "Polyline", "Bezier"):
@@ -173,6 +175,22 @@ def member(g: Geometry, name: str, frame):
         x0, x1, y0, y1 = g.data.get("extent", (0.0, 0.0, 0.0, 0.0))
         return PV(p.x + (x0 + x1) / 2, p.y + (y0 + y1) / 2, None, own)
     return None
+
+
+def _incircle(pvs: list, name: str, own):
+    """A triangle's inscribed circle, exactly, as expressions of its vertices ``a, b, c``:
+    ``incenter`` the mean of the vertices weighted by the lengths of the sides opposite them,
+    ``(|bc| a + |ca| b + |ab| c) / (|ab| + |bc| + |ca|)`` (a point), ``inradius`` twice the
+    area over the perimeter, ``|(b - a) x (c - a)| / (|ab| + |bc| + |ca|)`` (a length)."""
+    a, b, c = pvs
+    la, lb, lc = (hypot(c.x - b.x, c.y - b.y), hypot(a.x - c.x, a.y - c.y),
+                  hypot(b.x - a.x, b.y - a.y))
+    per = la + lb + lc
+    if name == "inradius":
+        cross = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)
+        return Q(func("abs", cross) / per, LEN, own)
+    return PV((a.x * la + b.x * lb + c.x * lc) / per, (a.y * la + b.y * lb + c.y * lc) / per,
+              None, own)
 
 
 def _centroid(pvs: list, own) -> PV:

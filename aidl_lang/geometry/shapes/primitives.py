@@ -549,11 +549,36 @@ def _build_Star(ctx, g, a):
         t = math.pi / 2 + math.pi * k / n
         r = ro if k % 2 == 0 else ri
         offsets[f"p{k}"] = (r * math.cos(t), r * math.sin(t))
+    rt = _const(ctx, a.get("tip_radius", Q.num(0.0, LEN)), "tip_radius")
+    if rt < 0:
+        raise PrimitiveError(f"a Star's tip_radius is 0 (sharp) or more, got {rt:g} mm")
     pts = _rigid(ctx, g, a, offsets, "Star")
     g.data["order"] = list(offsets)
     g.data["edges"] = _polygon_edges(ctx, g, pts)
-    g.data["dims"] = {"outer_radius": ro, "inner_radius": ri}
+    g.data["dims"] = {"outer_radius": ro, "inner_radius": ri, "tip_radius": rt}
+    if rt > 0:
+        g.data["tip"] = _star_tip(n, ro, ri, rt)
     g.closed = True
+
+
+def _star_tip(n: int, ro: float, ri: float, rt: float) -> tuple[float, float]:
+    """A Star's rounded tip (``tip_radius`` ``rt``): ``(the distance from the star's center
+    to the fillet arc's center, the arc's half sweep)`` (mm, radians).  The tip's interior
+    angle is ``2 h``; the arc is tangent to both sides ``rt / tan(h)`` from the sharp tip,
+    which must leave some of the side to the notch: else PrimitiveError, naming the largest
+    radius (to a thousandth of a mm below the one that leaves none)."""
+    tip = (0.0, ro)
+    notch = (ri * math.cos(math.pi / 2 + math.pi / n), ri * math.sin(math.pi / 2 + math.pi / n))
+    side = (notch[0] - tip[0], notch[1] - tip[1])
+    length = math.hypot(*side)
+    h = math.asin(min(1.0, abs(side[0]) / length))     # half the tip's angle (the axis: -y)
+    reach = rt / math.tan(h)
+    if not reach < length * (1 - 1e-9):
+        most = length * math.tan(h)
+        raise PrimitiveError(f"a Star's tip_radius ({rt:g} mm) is too large for its tips: "
+                             f"the rounding would run past the notches (less than "
+                             f"{math.floor(most * 1000) / 1000:g} mm here)")
+    return ro - rt / math.sin(h), math.pi / 2 - h
 
 
 def _build_ArcSlot(ctx, g, a):
@@ -687,6 +712,8 @@ def _build_Text(ctx, g, a):
                              f"not \"{valign}\"")
     g.data["valign"] = valign
     g.data["rotation"] = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
+    if a.get("max_width") is not None:
+        _fit_width(ctx, g, a)
     if a.get("stencil"):
         _stencil(ctx, g, a)
     if a.get("along") is not None:
@@ -699,6 +726,29 @@ def _build_Text(ctx, g, a):
         xs = [p[0] for s_ in segs for p in s_] or [0.0]
         ys = [p[1] for s_ in segs for p in s_] or [0.0]
         g.data["extent"] = (min(xs), max(xs), min(ys), max(ys))
+
+
+def _fit_width(ctx, g, a) -> None:
+    """``Text(..., max_width=)``: the size lowered, when the text is wider than ``max_width``
+    along its baseline (a stencil's letters with their stroke ``weight``), to the size at
+    which it is exactly that wide; ``data["shrunk"]`` = (size asked, width at it) for the
+    note the interpreter gives (W0113).  Along a curve the width is its length along it."""
+    from .text import fit_size
+    m = _const(ctx, a["max_width"], "max_width")
+    if not m > 0:
+        raise PrimitiveError(f"a Text's max_width is more than 0, got {m:g} mm")
+    size = g.data["size"]
+    weight = a.get("weight") if a.get("stencil") else None
+    fixed = _const(ctx, weight, "weight") if weight is not None else 0.0
+    per_size = 1 / 6 if a.get("stencil") and weight is None else 0.0
+    if fixed >= m:
+        raise PrimitiveError(f"a stencil Text's weight ({fixed:g} mm) leaves nothing of its "
+                             f"max_width ({m:g} mm): give a wider max_width or a thinner weight")
+    fit, wide = fit_size(g.data["text"], size, m, fixed, per_size)
+    g.data["max_width"] = m
+    if fit < size:
+        g.data["size"] = fit
+        g.data["shrunk"] = (size, wide)
 
 
 def _stencil(ctx, g, a) -> None:

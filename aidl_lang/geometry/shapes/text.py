@@ -210,6 +210,24 @@ def text_extent(text: str, size: float, anchor: str = "middle", valign: str = "b
     return min(xs), max(xs), min(ys), max(ys)
 
 
+def fit_size(text: str, size: float, max_width: float, extra: float = 0.0,
+             per_size: float = 0.0) -> tuple[float, float]:
+    """``(the size, the width at size)``: ``size`` when ``text`` is at most ``max_width`` mm
+    wide along its baseline, else the size (mm, cap height) at which it is exactly
+    ``max_width`` wide.  The width is the strokes' extent plus ``extra`` mm and ``per_size``
+    times the size (a stencil's stroke weight, given or a share of the size); the strokes
+    scale with the size, so the size that fits is exact.  Raises ValueError for a
+    ``max_width`` that ``extra`` alone fills."""
+    x0, x1, _, _ = text_extent(text, size, "start")
+    wide = (x1 - x0) + extra + per_size * size
+    if wide <= max_width:
+        return size, wide
+    if max_width <= extra:
+        raise ValueError(f"max_width {max_width:g} mm is not wider than {extra:g} mm")
+    per = (x1 - x0) / size + per_size              # mm of width per mm of size
+    return (max_width - extra) / per, wide
+
+
 def wraps(text: str, size: float, r: float) -> tuple[str, str] | None:
     """(what, the fix) when ``text`` at ``size`` laid along a circle of radius ``r`` (mm) is
     longer than the whole circle, so that its last letters run round onto its first ones

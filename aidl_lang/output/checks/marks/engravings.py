@@ -225,13 +225,13 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         at = 0
         for g, items in geoms:
             n = sum(_n_samples(it) for it in items)
-            verdicts[g] = (part, pts[at:at + n], inside[at:at + n], grown_loops)
+            verdicts[g] = (part, pts[at:at + n], inside[at:at + n], grown_loops, items)
             at += n
     outer_of: dict = {}
     for g in by_geom:
         if g not in verdicts:
             continue
-        part, pts, inside, grown_loops = verdicts[g]
+        part, pts, inside, grown_loops, items = verdicts[g]
         if inside.all():
             continue
         if part not in outer_of:
@@ -249,6 +249,9 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
             holes = _holes_crossed(d, roots, part, pts[~inside])
             hint = (f"it crosses {', '.join(holes) if holes else 'an opening'}: shrink or move "
                     "the drawing clear of it, or move the hole")
+        arc = _arc_on_material(g, items, roots[part])
+        if arc:
+            hint = f"{arc}; or {hint}"
         sink.warning("W0505", f"engraving `{g.label}` runs {where} of `{part.path}` "
                      f"({share} of it is off the material)", g.span, hint=hint)
     for part, geoms in by_part.items():
@@ -256,6 +259,77 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
             tick(part)
         _check_meets_cut(part, roots[part], [(g, it) for g, it in geoms if g not in warned],
                          (loops or {}).get(part), sink)
+
+
+ARC_STEPS = 1440          # samples of an engraved circle when W0505 offers the arc on the material
+ARC_LEAST = math.radians(30)    # the arc offered is at least this long
+
+
+def _arc_on_material(g, items, shape) -> str | None:
+    """W0505's fix for an engraved Circle (or Arc) that crosses its part's outline or a hole
+    (a ring that meets a notch in the rim, issue 105): the longest arc of it on the
+    material, clear of the cut by ``2 CUT_CLEAR``, as the ``Arc(center=, radius=,
+    start_angle=, end_angle=)`` that replaces it (mm and degrees, counter-clockwise, ends
+    rounded inward to 0.1 deg); None for another shape, or when no such arc of at least
+    :data:`ARC_LEAST` is left."""
+    kind = getattr(g, "kind", None)
+    if len(items) != 1 or (kind, items[0][0]) not in (("Circle", "circle"), ("Arc", "arc")):
+        return None
+    (cx, cy), r = items[0][1], float(items[0][2])
+    if not r > 0:
+        return None
+    whole = kind == "Circle"
+    a0, sweep = (0.0, 2 * math.pi) if whole else \
+        (float(items[0][3]), (float(items[0][4]) - float(items[0][3])) % (2 * math.pi) or 2 * math.pi)
+    loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+    edges = _edges(loops)
+    steps = ARC_STEPS if whole else max(8, int(ARC_STEPS * sweep / (2 * math.pi)) + 1)
+    t = a0 + np.arange(steps) * (sweep / (ARC_STEPS if whole else steps - 1))
+    pts = np.column_stack([cx + r * np.cos(t), cy + r * np.sin(t)])
+    clear = _inside(pts, edges) & ~_within(pts, edges, 2 * CUT_CLEAR)
+    if clear.all() or not clear.any():
+        return None
+    k0 = int(np.argmin(clear)) if whole else 0       # a circle: start at an off sample
+    order = np.roll(np.arange(steps), -k0)
+    best, run, start = (0, 0), 0, 0
+    for i, k in enumerate(order):
+        if clear[k]:
+            if run == 0:
+                start = i
+            run += 1
+            if run > best[0]:
+                best = (run, start)
+        else:
+            run = 0
+    n, s = best
+    if n < 2 or (n - 1) * 2 * math.pi / ARC_STEPS < ARC_LEAST:
+        return None
+    def ok(th: float) -> bool:
+        p = np.array([[cx + r * math.cos(th), cy + r * math.sin(th)]])
+        return bool(_inside(p, edges)[0] and not _within(p, edges, 2 * CUT_CLEAR)[0])
+
+    def edge(good: float, bad: float) -> float:
+        """The clear end between a clear angle and a blocked one (bisected to 1e-9 rad)."""
+        for _ in range(40):
+            m = (good + bad) / 2
+            good, bad = (m, bad) if ok(m) else (good, m)
+        return good
+    lo, hi = t[order[s]], t[order[s + n - 1]]
+    if hi < lo:
+        hi += 2 * math.pi
+    if whole or s > 0:                 # a blocked sample before the run (a circle: always)
+        lo = edge(lo, lo - sweep / (ARC_STEPS if whole else steps - 1))
+    if whole or s + n < steps:
+        hi = edge(hi, hi + sweep / (ARC_STEPS if whole else steps - 1))
+    a1 = math.degrees(lo) % 360
+    a2 = a1 + math.degrees(hi - lo)
+    a1, a2 = math.ceil(a1 * 10 - 1e-6) / 10, math.floor(a2 * 10 + 1e-6) / 10
+    name = str(getattr(g, "label", "")).rsplit(".", 1)[-1] or "mark"
+    what = "circle" if whole else "arc"
+    return (f"to stop the {what} at the cut, engrave the arc on the material instead: `{name} = "
+            f"Arc(center=({cx:.6g} mm, {cy:.6g} mm), radius={r:.6g} mm, start_angle={a1:g} deg, "
+            f"end_angle={a2:g} deg)` (the {what}'s center and radius, counter-clockwise, "
+            f"{2 * CUT_CLEAR:g} mm clear of the cut)")
 
 
 def _off_outline_hint(d: Drawing, part, g, pts: np.ndarray, off: np.ndarray) -> str:

@@ -167,6 +167,8 @@ def _star(segments, g) -> dict | None:
     n = len(g.data["order"]) // 2
     dims = g.data["dims"]
     ro, ri = dims["outer_radius"], dims["inner_radius"]
+    if g.data.get("tip"):
+        return _rounded_star(segments, g, n)
     if len(segments) != 2 * n or not all(isinstance(s, Line) for s in segments):
         return None
     P = np.array([s.start for s in segments], dtype=float)
@@ -181,6 +183,29 @@ def _star(segments, g) -> dict | None:
     ang = 0.0 if min(ang, step - ang) < 1e-6 else ang
     return {"kind": "star", "center": _pt(c), "points": n, "outer_radius": _r(ro),
             "inner_radius": _r(ri), "angle": _r(ang)}
+
+
+def _rounded_star(segments, g, n: int) -> dict | None:
+    """A Star with ``tip_radius``: n arcs of that radius whose centers lie ``dc`` from the
+    star's center, and 2 n lines; the center the mean of the arcs' centers."""
+    dims = g.data["dims"]
+    arcs = [s for s in segments if isinstance(s, Arc)]
+    lines = [s for s in segments if isinstance(s, Line)]
+    rt, (dc, _half) = dims["tip_radius"], g.data["tip"]
+    if len(arcs) != n or len(lines) != 2 * n or \
+            any(abs(a.radius - rt) > 1e-6 * dims["outer_radius"] for a in arcs):
+        return None
+    C = np.array([a.center for a in arcs], dtype=float)
+    c = C.mean(axis=0)
+    if np.any(np.abs(np.hypot(*(C - c).T) - dc) > 1e-6 * dims["outer_radius"]):
+        return None
+    t = C[int(np.argmax(C[:, 1]))] - c if n else C[0] - c
+    step = 360.0 / n
+    ang = (math.degrees(math.atan2(t[1], t[0])) - 90.0) % step
+    ang = 0.0 if min(ang, step - ang) < 1e-6 else ang
+    return {"kind": "star", "center": _pt(c), "points": n,
+            "outer_radius": _r(dims["outer_radius"]), "inner_radius": _r(dims["inner_radius"]),
+            "tip_radius": _r(rt), "angle": _r(ang)}
 
 
 def _arc_slot(segments, g) -> dict | None:
@@ -546,8 +571,9 @@ def shape_text(s: dict) -> str:
         return f"rounded rectangle {_n(s['w'])} x {_n(s['h'])}, corner radius {_n(s['r'])}" \
                f"{ang} at {_at(s['center'])}"
     if k == "star":
+        tips = f", tips rounded {_n(s['tip_radius'])}" if s.get("tip_radius") else ""
         return f"{s['points']}-point star, outer radius {_n(s['outer_radius'])}, inner " \
-               f"{_n(s['inner_radius'])}{ang} at {_at(s['center'])}"
+               f"{_n(s['inner_radius'])}{tips}{ang} at {_at(s['center'])}"
     if k == "arc slot":
         a1 = s["start_angle"]
         return f"arc slot radius {_n(s['radius'])}, {_n(s['width'])} wide, from {_n(a1)} to " \

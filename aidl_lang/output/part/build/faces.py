@@ -195,6 +195,11 @@ class Faces:
                 r = float(g.data.get("corner_radius", 0.0))
                 if r > 0:
                     return Loop(rounded_outline(pts, r))
+            if k == "Star" and g.data.get("tip"):
+                # rounded tips (tip_radius=): each tip an exact arc tangent to its sides,
+                # the notches (odd points) sharp
+                from .outlines import star_outline
+                return Loop(star_outline(pts, g.data["dims"]["tip_radius"]))
             return _polygon(pts)
         return None
 

@@ -213,6 +213,36 @@ def rounded_outline(corners, r: float) -> list:
     return simplify(fixed, max(abs(float(v)) for p in P for v in p))
 
 
+def star_outline(points, r: float) -> list:
+    """The exact outline of a Star with rounded tips: ``points`` its vertices in order (N x 2,
+    mm; tips at the even indices, notches sharp at the odd ones), each tip rounded by an arc
+    of radius ``r`` tangent to its two sides (the primitive checks that it leaves each side
+    some line: :func:`~aidl_lang.geometry.shapes.primitives._star_tip`); lines and arcs,
+    counter-clockwise, each line from the previous arc's end exactly."""
+    P = [np.asarray(p, dtype=float) for p in points]
+    if _shoelace(P) < 0:
+        P = P[::-1]
+        P = P[-1:] + P[:-1]                             # tips stay at the even indices
+    n = len(P)
+    arcs = []
+    for i in range(0, n, 2):
+        tip, a, b = P[i], P[i - 1], P[(i + 1) % n]
+        ua = (a - tip) / float(np.hypot(*(a - tip)))
+        ub = (b - tip) / float(np.hypot(*(b - tip)))
+        half = math.acos(max(-1.0, min(1.0, float(ua @ ub)))) / 2     # half the tip's angle
+        bis = (ua + ub) / float(np.hypot(*(ua + ub)))
+        c = tip + bis * (r / math.sin(half))
+        ta = tip + ua * (r / math.tan(half))                # where the arc leaves side a
+        a0 = math.atan2(ta[1] - c[1], ta[0] - c[0])
+        arcs.append(Arc(_t(c), r, a0, math.pi - 2 * half))
+    segs = []
+    for k, arc in enumerate(arcs):
+        notch = _t(P[(2 * k + 1) % n])
+        nxt = arcs[(k + 1) % len(arcs)]
+        segs += [arc, Line(arc.end, notch), Line(notch, nxt.start)]
+    return simplify(segs, max(abs(float(v)) for p in P for v in p))
+
+
 def rounded_outline_radii(corners, radii) -> list:
     """The exact outline of a rectangle (four corners in order, mm) whose corner ``k`` is
     rounded by ``radii[k]`` (mm; 0: a sharp corner): lines and quarter arcs,
