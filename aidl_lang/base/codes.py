@@ -1198,6 +1198,20 @@ that drawing's children). Move it over the lines it should hide, or delete it.
         hole front { q = Circle(center=(60, 0), radius=5) }     # covers nothing: W0526
     }
 """),
+    "W0527": ("inside corners the router's bit does not reach", """
+A router's bit is round: at an inside corner of a part's material (the bottom of a finger
+joint's slot, a tab's slot, a halving, a rectangular hole) its centre runs the outline offset by
+its radius r, so its edge stays r / sin(a/2) - r from the drawn corner (0.658 mm for a 90 degree
+corner and a 3.175 mm bit) and the mating part's square corner does not seat. `aidl render
+--machine` with a router profile whose `relief = "none"` says it, at the part, naming the
+corners and how far the material stays. Set `relief = "dogbone"` (the bit runs along the
+corner's bisector until its edge touches it; the built-in router profile's default) or
+`relief = "tbone"` (along the longer side) in the profile; the SVG and DXF stay as drawn.
+
+    # router.toml
+    kind = "router"
+    relief = "dogbone"
+"""),
     "W0130": ("drawing entities skipped", """
 Entities of a drawing that have no exact form here are skipped and counted, named by kind:
 rational or high-degree splines, hatches, dimensions, images, a mirrored or skewed SVG text

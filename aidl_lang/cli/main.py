@@ -469,7 +469,7 @@ def cmd_render(args) -> int:
         from ..output.checks.material.toolpath_walls import machine_warnings
         if routed:              # W0510 (cut apart) and W0507 (too little left), located
             machine_warnings(res.drawing, cut, output, machine.tool_diameter, True, res.sink,
-                             args.min_wall, bool(args.layout))
+                             args.min_wall, bool(args.layout), machine.relief)
         elif cut is not output and not args.assembled and any(j[2] in CUT_FORMATS
                                                               for j in jobs):
             machine_warnings(res.drawing, output, output, kerf if kerf is not None else

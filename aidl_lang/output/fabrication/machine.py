@@ -14,6 +14,8 @@ A profile is a small TOML file (``aidl render --machine FILE``), every key optio
     tab_width = 3             # mm along the cut
     tab_height = 1            # mm of material left standing (router); a laser skips the tab
     lead_in = 0               # mm: start each cut this far off the loop (0: on it)
+    relief = "dogbone"        # router: dogbone | tbone | none: the bit run into each inside
+                              # corner until its edge touches it (the built-in router: dogbone)
 
     [engrave]                 # text and drawings
     power = 20                # percent of max_power (laser)
@@ -41,6 +43,8 @@ from dataclasses import dataclass, field, replace
 from ..part.part import OutputError
 
 KINDS = ("laser", "router", "plotter")
+# what a router does at an inside corner its round bit cannot reach (:mod:`.reliefs`)
+RELIEFS = ("dogbone", "tbone", "none")
 OPERATIONS = ("engrave", "score", "cut_inner", "cut_outer")
 
 
@@ -78,6 +82,7 @@ class Machine:
     tab_width: float = 3.0
     tab_height: float = 1.0
     lead_in: float = 0.0
+    relief: str = "none"
     kerf: float | None = None
     thickness: float | None = None
     operations: dict = field(default_factory=dict)
@@ -100,11 +105,12 @@ DEFAULTS: dict[str, Machine] = {
         score=Operation(power=40, speed=2000),
         cut_inner=Operation(power=100, speed=400, passes=2),
         cut_outer=Operation(power=100, speed=400, passes=2))),
-    "router": Machine("router", tool_diameter=3.175, safe_height=5.0, operations=_ops(
-        engrave=Operation(speed=1200, depth_per_pass=0.5, plunge=300),
-        score=Operation(speed=1200, depth_per_pass=0.5, plunge=300),
-        cut_inner=Operation(speed=1000, depth_per_pass=1.5, plunge=300),
-        cut_outer=Operation(speed=1000, depth_per_pass=1.5, plunge=300))),
+    "router": Machine("router", tool_diameter=3.175, safe_height=5.0, relief="dogbone",
+                      operations=_ops(
+                          engrave=Operation(speed=1200, depth_per_pass=0.5, plunge=300),
+                          score=Operation(speed=1200, depth_per_pass=0.5, plunge=300),
+                          cut_inner=Operation(speed=1000, depth_per_pass=1.5, plunge=300),
+                          cut_outer=Operation(speed=1000, depth_per_pass=1.5, plunge=300))),
     "plotter": Machine("plotter", travel_speed=12000, operations=_ops(
         engrave=Operation(speed=3000), score=Operation(speed=3000),
         cut_inner=Operation(speed=1500), cut_outer=Operation(speed=1500))),
@@ -229,7 +235,7 @@ def from_dict(data: dict, source: str = "") -> Machine:
     if units not in ("mm", "inch"):
         raise bad("units", f"is `{units}`, not `mm` or `inch`")
     scale = INCH if units == "inch" else 1.0
-    known = {"kind", "units", "laser_mode", "tabs", *_NUMBER, *OPERATIONS}
+    known = {"kind", "units", "laser_mode", "tabs", "relief", *_NUMBER, *OPERATIONS}
     for key in data:
         if key not in known:
             near = [k for k in sorted(known) if k.split("_")[0] == str(key).split("_")[0]]
@@ -269,6 +275,11 @@ def from_dict(data: dict, source: str = "") -> Machine:
         if data["laser_mode"] not in ("M3", "M4"):
             raise bad("laser_mode", f"is {data['laser_mode']!r}, not \"M3\" or \"M4\"")
         values["laser_mode"] = data["laser_mode"]
+    if "relief" in data:
+        if data["relief"] not in RELIEFS:
+            raise bad("relief", f"is {_shown(data['relief'])}, not one of "
+                      + ", ".join(f'"{r}"' for r in RELIEFS))
+        values["relief"] = data["relief"]
     if "tabs" in data:
         values["tabs"] = number("tabs", data["tabs"], *RANGES["tabs"])
     tabs = values.get("tabs", base.tabs)
