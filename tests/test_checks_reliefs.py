@@ -11,7 +11,9 @@ the tool's centre path measured against the drawn corners:
   a disc of the tool's radius (Manifold's exact area of the swept stadium inside the
   part), and without a relief the material stays ``r / sin(a/2) - r`` from each;
 * examples/generators/drawer.aidl to the built-in router: every inside corner of its finger
-  joints reached; with ``relief = "none"`` W0527 names the corners, located at each part.
+  joints reached; with ``relief = "none"`` W0527 names the corners, located at each part,
+  and the assembled fit check of the parts as routed fails (W0517 at each joint), while it
+  passes with dogbones and T-bones.
 """
 from __future__ import annotations
 
@@ -210,6 +212,19 @@ def test_drawer_without_a_relief_is_w0527_at_each_part(tmp_path):
     text = (tmp_path / "d.nc").read_text()
     cuts = _cutting(replay(text, "router"), -3.0)
     assert not _spikes(cuts)
+    # the assembled fit check of the routed parts: the finger joints collide without reliefs
+    # (each joint's pair once) and not with dogbones or T-bones (the design's check passes)
+    assert said.count("warning[W0517]: assembled as the router cuts them (3.175 mm bit, "
+                      "with no relief)") == 10
+    assert "`desk_drawer.unit.carcass.bottom` and `desk_drawer.unit.carcass.back` collide: " \
+        "they share 45.5 mm^3" in said
+    for relief in ("dogbone", "tbone"):
+        prof.write_text(f'kind = "router"\nrelief = "{relief}"\n')
+        err = io.StringIO()
+        with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
+            rc = main(["render", str(DRAWER), "-o", str(tmp_path / "d.nc"), "--machine",
+                       str(prof)])
+        assert rc == 0 and "W0517" not in err.getvalue() and "W0527" not in err.getvalue()
 
 
 def test_relief_key_is_checked():

@@ -470,6 +470,9 @@ def cmd_render(args) -> int:
         if routed:              # W0510 (cut apart) and W0507 (too little left), located
             machine_warnings(res.drawing, cut, output, machine.tool_diameter, True, res.sink,
                              args.min_wall, bool(args.layout), machine.relief)
+            from ..output.checks.assembly import check_routed_fit
+            check_routed_fit(res.drawing, output, machine.tool_diameter, machine.relief,
+                             res.sink, res.deadline)
         elif cut is not output and not args.assembled and any(j[2] in CUT_FORMATS
                                                               for j in jobs):
             machine_warnings(res.drawing, output, output, kerf if kerf is not None else

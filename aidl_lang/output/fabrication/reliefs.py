@@ -202,6 +202,33 @@ def relieved(design: Output, tooled: Output, m, tag: str = "") -> tuple[Output, 
                     "each until its edge touches the drawn corner"]
 
 
+def routed_shape(part: PartOutline, radius: float, style: str):
+    """The material of ``part`` as a router's bit of ``radius`` mm leaves it (a manifold3d
+    ``CrossSection``, chords within the part's own): the part closed by the bit (every inside
+    corner rounded to the bit's radius, a gap narrower than the bit filled), less the stroke
+    of each relief of ``style`` (:data:`RELIEFS`; ``none``: no relief).  What the assembled fit
+    check of a routed job reads."""
+    import manifold3d as mf
+    shape = part.shape
+    if radius <= 0 or part.kind != "solid" or shape.is_empty():
+        return shape
+    n = max(16, int(math.ceil(2 * math.pi / math.acos(max(-1.0, 1 - 1e-3 / radius)))))
+    n = min(n, 720)
+    rnd = mf.JoinType.Round
+    got = shape.offset(radius, rnd, 2.0, n).offset(-radius, rnd, 2.0, n)
+    if style != "none":
+        strokes = []
+        out = radius / math.cos(math.pi / n)       # the polygon holds the bit's whole disc
+        for c in inside_corners(part, radius):
+            p, q = path_corner(c, radius), relief_point(c, radius, style)
+            strokes.append(mf.CrossSection.batch_hull([
+                mf.CrossSection.circle(out, n).translate(list(p)),
+                mf.CrossSection.circle(out, n).translate(list(q))]))
+        if strokes:
+            got = got - mf.CrossSection.batch_boolean(strokes, mf.OpType.Add)
+    return got
+
+
 def unreached(output: Output, radius: float) -> dict[str, list[Corner]]:
     """Part name -> its inside corners a bit of ``radius`` mm running the offset path leaves
     material in (more than 1e-6 mm from the drawn corner): what ``relief = "none"`` cuts."""
@@ -232,4 +259,4 @@ RELIEF_HINT = ("set `relief = \"dogbone\"` (or `\"tbone\"`) in the machine profi
                "then runs into each inside corner until its edge touches it")
 
 __all__ = ["RELIEFS", "Corner", "inside_corners", "relief_point", "path_corner", "relieve",
-           "relieved", "unreached", "unreached_message", "RELIEF_HINT"]
+           "relieved", "routed_shape", "unreached", "unreached_message", "RELIEF_HINT"]
