@@ -464,6 +464,20 @@ _DEFS = {
                        cat="operation", varargs=True,
                        doc="these may overlap: refilled hole (W0501), holes (W0508, "
                            "W0512), assembly parts (W0511), windows (W0515)."),
+    "Countersink": _c([A("hole", "any"), A("diameter", "length"),
+                       A("angle", "angle", math.pi / 2)], cat="operation",
+                      doc="A cone sunk into the top of a round hole (a flat-head screw's "
+                          "seat): hole a hole structure with a Circle, a Circle of one, or a "
+                          "list of them (a pattern); diameter the cone's top (the head), angle "
+                          "its included angle (90 deg: metric screws, 82 deg: inch). A laser "
+                          "engraves the head's circle (layer countersink), a router plunges a "
+                          "V-bit after the through-cuts; STL/3MF cut the cone."),
+    "Counterbore": _c([A("hole", "any"), A("diameter", "length"), A("depth", "length")],
+                      cat="operation",
+                      doc="A flat-bottomed recess of diameter, depth deep, at the top of a "
+                          "round hole (a socket-head screw's seat): hole as Countersink's. A "
+                          "laser engraves the recess's circle (layer counterbore), a router "
+                          "pockets it after the through-cuts; STL/3MF cut the step."),
     "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],
                  [A("a", "any"), A("b", "any"), A("radius", "length")],
                  cat="operation",
@@ -534,6 +548,10 @@ SYNONYMS: dict[str, str] = {
     "OverlapOK": "AllowOverlap",
     "PlaceAt": "At",
     "AtCorners": "CornerPattern",
+    "CounterSink": "Countersink",
+    "Csink": "Countersink",
+    "CounterBore": "Counterbore",
+    "Cbore": "Counterbore",
     "BSpline": "Spline",
     "PolyLine": "Polyline",
     "LineString": "Polyline",
@@ -623,6 +641,10 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
                "cyclic": "closed", "is_closed": "closed", "loop": "closed",
                "sharp": "corners", "sharp_points": "corners", "cusps": "corners",
                "kinks": "corners", "corner_points": "corners", "sharp_corners": "corners"},
+    "Countersink": {"holes": "hole", "of": "hole", "d": "diameter", "head": "diameter",
+                    "head_diameter": "diameter", "included_angle": "angle"},
+    "Counterbore": {"holes": "hole", "of": "hole", "d": "diameter", "head": "diameter",
+                    "head_diameter": "diameter", "deep": "depth"},
     "Polyline": {"through": "points", "pts": "points", "vertices": "points",
                  "is_closed": "closed", "loop": "closed", "close": "closed"},
     "Bezier": {"control_points": "points", "controls": "points", "ctrl": "points",

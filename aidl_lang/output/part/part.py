@@ -293,6 +293,9 @@ def _build(drawing: Drawing, title: str, thickness, deadline) -> Output:
         strokes = _off_outlines(strokes, [p for p in out.parts if p.name in split])
         _onto_pieces(strokes, [p for p in out.parts if p.name in split])
     out.engrave = _join(_cut_once(strokes, out.parts))
+    # the head of each countersink and counterbore: its circle, on a layer of its own
+    out.engrave += [Stroke([Circle(sk.center, sk.diameter / 2)], sk.kind, True, sk.hole,
+                           sk.part) for sk in getattr(drawing, "sinks", ())]
     return out
 
 
