@@ -16,6 +16,9 @@ A profile is a small TOML file (``aidl render --machine FILE``), every key optio
     lead_in = 0               # mm: start each cut this far off the loop (0: on it)
     relief = "dogbone"        # router: dogbone | tbone | none: the bit run into each inside
                               # corner until its edge touches it (the built-in router: dogbone)
+    v_bit_angle = 90          # router: deg, the V-bit that plunges each countersink's cone
+    pocket_tool = 0           # router: mm, the end mill that pockets each counterbore (0: the
+                              # profile's tool_diameter)
 
     [engrave]                 # text and drawings
     power = 20                # percent of max_power (laser)
@@ -83,6 +86,8 @@ class Machine:
     tab_height: float = 1.0
     lead_in: float = 0.0
     relief: str = "none"
+    v_bit_angle: float = 90.0
+    pocket_tool: float = 0.0
     kerf: float | None = None
     thickness: float | None = None
     operations: dict = field(default_factory=dict)
@@ -117,7 +122,7 @@ DEFAULTS: dict[str, Machine] = {
 }
 
 _NUMBER = ("max_power", "travel_speed", "tool_diameter", "safe_height", "tab_width",
-           "tab_height", "lead_in", "kerf", "thickness")
+           "tab_height", "lead_in", "kerf", "thickness", "v_bit_angle", "pocket_tool")
 _OP_KEYS = ("power", "speed", "passes", "depth_per_pass", "plunge", "spindle")
 # The range of every number a profile may give, ``key: (low, high, unit)``, the ends included;
 # lengths in mm and speeds in mm/min (an inch profile's values are converted first).  They
@@ -138,6 +143,8 @@ RANGES: dict[str, tuple[float, float, str]] = {
     "lead_in": (0.0, 100.0, "mm"),
     "kerf": (0.0, 10.0, "mm"),
     "thickness": (0.0, 1000.0, "mm"),
+    "v_bit_angle": (30.0, 150.0, "deg"),
+    "pocket_tool": (0.0, 50.0, "mm"),
 }
 OP_RANGES: dict[str, tuple[float, float, str]] = {
     "power": (0.0, 100.0, "%"),
@@ -151,9 +158,9 @@ OP_RANGES: dict[str, tuple[float, float, str]] = {
 # tool are 0 or at least a step of the machine (0.01 mm, as `depth_per_pass`); a lead-in of
 # 1e-308 mm ran through the lead-in search to a note of "no room for one of 2.5e-309 mm"
 LENGTH_LEAST = 0.01
-_ZERO_OR_LEAST = ("tool_diameter", "tab_width", "tab_height", "lead_in")
+_ZERO_OR_LEAST = ("tool_diameter", "tab_width", "tab_height", "lead_in", "pocket_tool")
 _WHOLE = ("tabs", "passes")          # whole numbers
-_PLAIN = ("max_power", "power", "spindle", "tabs", "passes")   # not lengths: never scaled
+_PLAIN = ("max_power", "power", "spindle", "tabs", "passes", "v_bit_angle")   # never scaled
 # router passes of one cut (thickness / depth_per_pass, rounded up): past it the G-code writer
 # refuses the job naming the part (a 1 km thick part at 0.01 mm a pass)
 MAX_DEPTH_PASSES = 1000

@@ -685,8 +685,7 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     from ..fabrication import machine as M
     from ..fabrication.toolpath import plan
     m = machine or M.default("laser")
-    warnings = _warnings(output, m)
-    notes = []
+    warnings, notes, heads = _warnings(output, m), [], []
     if m.kind == "router":
         from ..part.edges.shared import shared_note
         notes += [n[len("note: "):] for n in shared_note(output, m.tool_diameter, "the bit")]
@@ -695,6 +694,9 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
         warnings += split
         output, relief_said = routed_path(output, m)
         (notes if m.relief != "none" else warnings).extend(relief_said)
+        from .gcode_sinks import split as split_heads
+        rest, heads = split_heads(output)       # sunk by a second operation, not engraved
+        output = Output(output.parts, rest, output.title, output.drawing, output.page)
     # a laser runs an open path there and back (_body): an even number of passes ends it
     # where it started, and the tour goes on from there
     back = tuple(op for op in ("engrave", "score", "cut_inner", "cut_outer")
@@ -702,6 +704,7 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     cuts = plan(output, back=back)
     thick = {p.name: (thickness or p.thickness or DEFAULT_THICKNESS) for p in output.parts}
     w = _Writer(m)
+    w.heads = heads if m.kind == "router" else []
     w.warnings = warnings
     w.notes = notes
     body = _body(w, cuts, m, thick, output)
@@ -974,6 +977,9 @@ def _body(w: _Writer, cuts, m, thick: dict, output: Output) -> list[str]:
                     else:
                         w.segment(s)
             w.rapid(z=m.safe_height)
+    if getattr(w, "heads", None):           # the router's countersinks and counterbores
+        from .gcode_sinks import write as sink_ops
+        w.notes += sink_ops(w, m, w.heads, output, thick, DEFAULT_THICKNESS)
     if m.kind == "laser":
         w.out("M5")
         w.rapid(0.0, 0.0, off=True)
