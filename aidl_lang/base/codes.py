@@ -1198,6 +1198,32 @@ that drawing's children). Move it over the lines it should hide, or delete it.
         hole front { q = Circle(center=(60, 0), radius=5) }     # covers nothing: W0526
     }
 """),
+    "W0528": ("countersink or counterbore head larger than the material around it", """
+The head of a `Countersink` or `Counterbore` (its `diameter`) must be larger than its hole and
+fit the material around it: a head that reaches past the part's edge or into another hole
+leaves a screw's head unsupported there (and a router's V-bit cuts the edge away). Move the
+hole half the head's diameter or more from the edges and the other holes, or give a smaller
+head (an M4 flat-head screw: a 4.5 mm hole, a 9 mm head).
+
+    solid plate {
+        body = Rectangle(center=(0, 0), width=40, height=20)
+        hole h { c = Circle(center=(17, 0), diameter=4.5 mm) }
+        Countersink(h, diameter=9 mm)                # 3 mm from the edge: W0528
+    }
+"""),
+    "W0529": ("countersink or counterbore deeper than the part", """
+A countersink's cone is `(diameter - hole) / 2 / tan(angle / 2)` deep; a counterbore is its
+`depth` deep. At or past the part's thickness the head goes through the part and leaves no
+seat for the screw's head. Give a smaller head, a wider angle or a shallower depth, or use
+thicker material.
+
+    thickness 3 mm
+    solid plate {
+        body = Rectangle(center=(0, 0), width=40, height=20)
+        hole h { c = Circle(center=(0, 0), diameter=4 mm) }
+        Counterbore(h, diameter=8 mm, depth=4 mm)    # 4 mm in 3 mm: W0529
+    }
+"""),
     "W0527": ("inside corners the router's bit does not reach", """
 A router's bit is round: at an inside corner of a part's material (the bottom of a finger
 joint's slot, a tab's slot, a halving, a rectangular hole) its centre runs the outline offset by

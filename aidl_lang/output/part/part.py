@@ -299,6 +299,55 @@ def _build(drawing: Drawing, title: str, thickness, deadline) -> Output:
     return out
 
 
+SINK_STYLES = ("countersink", "counterbore")
+
+
+def sink_heads(output: Output) -> list[tuple]:
+    """The countersinks and counterbores of ``output`` where its head strokes are (moved
+    with their parts by a layout): ``[(centre, SinkAt)]``, each head stroke matched to the
+    booleans' record (``output.drawing.sinks``) of its part, hole and diameter."""
+    recs = list(getattr(output.drawing, "sinks", None) or ())
+    out = []
+    for st in output.engrave:
+        if st.style not in SINK_STYLES:
+            continue
+        c = st.segments[0]
+        rec = next((r for r in recs if r.kind == st.style and r.part == st.part
+                    and r.hole == st.source and abs(r.diameter / 2 - c.radius) < 1e-9), None)
+        if rec is not None:
+            recs.remove(rec)
+            out.append((tuple(c.center), rec))
+    return out
+
+
+def sink_tools(heads: list, t: float) -> list:
+    """The solids a part ``t`` mm thick loses to its ``heads`` (:func:`sink_heads`): a
+    countersink's cone from the hole's diameter up to the head's at the top face, a
+    counterbore's cylinder down its depth; each reaching 0.01 mm above the top
+    (``manifold3d.Manifold``, mm)."""
+    import manifold3d as mf
+    e = 0.01
+    out = []
+    for (x, y), r in heads:
+        depth = r.cone_depth()
+        if depth <= 0:
+            continue
+        # the hole's own polygon (its chords, as the part's section has them), scaled: the
+        # tool's rings have the hole's vertices' angles, so no edge of it crosses the hole's
+        # wall between two of them (near-equal vertices that a reader's merge would break)
+        ring = Loop([Circle((0.0, 0.0), r.hole_d / 2)]).points()
+        section = mf.CrossSection([ring.tolist()])
+        if r.kind == "countersink":
+            k = math.tan(r.angle / 2)
+            tool = mf.Manifold.extrude(section, depth + e, 0, 0.0,
+                                       [(r.diameter / 2 + e * k) / (r.hole_d / 2)] * 2)
+        else:
+            s_ = r.diameter / r.hole_d
+            tool = mf.Manifold.extrude(section.scale([s_, s_]), depth + e)
+        out.append(tool.translate([x, y, t - depth]))
+    return out
+
+
 def _onto_pieces(strokes: list[Stroke], pieces: list[PartOutline]) -> None:
     """Each stroke of a part a cut split (``pieces``: the part ``P`` and its ``P.pieceK``)
     given to the piece whose material holds it (the middle of its first segment; even-odd

@@ -13,15 +13,14 @@ naming the tool, ``M0``: GRBL pauses until resumed) and sinks each head:
   centre from the middle out, ``0.4`` of the tool's diameter apart, the last with the
   tool's edge on the recess's edge (a whole circle as two half-circles).
 
-The heads come from the strokes of the two styles (:data:`~.svg.SINK_STYLES`: the head's
-circle, moved with its part by a layout) and their sizes from the booleans' records
-(``output.drawing.sinks``, :class:`~..part.build.result.SinkAt`).
+The heads come from the strokes of the two styles (the head's circle, moved with its part by
+a layout) and their sizes from the booleans' records (:func:`~..part.part.sink_heads`).
 """
 from __future__ import annotations
 
 import math
 
-from ..part.part import Arc, Line
+from ..part.part import Arc, Line, Output, sink_heads
 
 SINKS = ("countersink", "counterbore")
 STEPOVER = 0.4          # of the pocket tool's diameter: the rings' spacing
@@ -36,26 +35,11 @@ def split(output) -> tuple[list, list]:
     return rest, heads
 
 
-def _records(output, heads: list) -> list:
-    """Each head stroke with its :class:`~..part.build.result.SinkAt` (matched by part, hole
-    and diameter): ``[(centre, record)]``."""
-    recs = list(getattr(output.drawing, "sinks", None) or ())
-    out = []
-    for st in heads:
-        c = st.segments[0]
-        rec = next((r for r in recs if r.kind == st.style and r.part == st.part
-                    and r.hole == st.source and abs(r.diameter / 2 - c.radius) < 1e-9), None)
-        if rec is not None:
-            recs.remove(rec)
-            out.append((c.center, rec))
-    return out
-
-
 def write(w, m, heads: list, output, thick: dict, default_t: float) -> list[str]:
     """The countersinks and counterbores of ``heads`` (strokes) as router profile ``m``
     sinks them, written through ``w`` (the G-code writer); ``thick``: part name -> mm.
     Returns the notes (what the tools do, what cannot be sunk)."""
-    got = _records(output, heads)
+    got = sink_heads(Output([], list(heads), output.title, output.drawing))
     notes: list[str] = []
     op = m.operation("cut_inner")
     for kind in SINKS:
