@@ -466,18 +466,13 @@ _DEFS = {
                            "W0512), assembly parts (W0511), windows (W0515)."),
     "Countersink": _c([A("hole", "any"), A("diameter", "length"),
                        A("angle", "angle", math.pi / 2)], cat="operation",
-                      doc="A cone sunk into the top of a round hole (a flat-head screw's "
-                          "seat): hole a hole structure with a Circle, a Circle of one, or a "
-                          "list of them (a pattern); diameter the cone's top (the head), angle "
-                          "its included angle (90 deg: metric screws, 82 deg: inch). A laser "
-                          "engraves the head's circle (layer countersink), a router plunges a "
-                          "V-bit after the through-cuts; STL/3MF cut the cone."),
+                      doc="Flat-head screw seat: a cone of top diameter (the head's) and "
+                          "included angle at the top of round holes (a hole, its Circle or a "
+                          "pattern's list)."),
     "Counterbore": _c([A("hole", "any"), A("diameter", "length"), A("depth", "length")],
                       cat="operation",
-                      doc="A flat-bottomed recess of diameter, depth deep, at the top of a "
-                          "round hole (a socket-head screw's seat): hole as Countersink's. A "
-                          "laser engraves the recess's circle (layer counterbore), a router "
-                          "pockets it after the through-cuts; STL/3MF cut the step."),
+                      doc="Socket-head screw seat: a flat recess of diameter, depth deep, at "
+                          "the top of round holes (as Countersink's)."),
     "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],
                  [A("a", "any"), A("b", "any"), A("radius", "length")],
                  cat="operation",
