@@ -466,13 +466,11 @@ _DEFS = {
                            "W0512), assembly parts (W0511), windows (W0515)."),
     "Countersink": _c([A("hole", "any"), A("diameter", "length"),
                        A("angle", "angle", math.pi / 2)], cat="operation",
-                      doc="Flat-head screw seat: a cone of top diameter (the head's) and "
-                          "included angle at the top of round holes (a hole, its Circle or a "
-                          "pattern's list)."),
+                      doc="Flat-head screw seat: a cone (top diameter, included angle) "
+                          "atop round holes (a hole, its Circle or a list)."),
     "Counterbore": _c([A("hole", "any"), A("diameter", "length"), A("depth", "length")],
                       cat="operation",
-                      doc="Socket-head screw seat: a flat recess of diameter, depth deep, at "
-                          "the top of round holes (as Countersink's)."),
+                      doc="Socket-head screw seat: a flat recess atop round holes."),
     "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],
                  [A("a", "any"), A("b", "any"), A("radius", "length")],
                  cat="operation",

@@ -226,10 +226,26 @@ def test_errors_are_located_at_the_call(call, code, said):
     assert errs[0].span.line == 6
 
 
-def test_synonyms_and_a_pattern_list():
-    """`CounterSink(holes=..., d=...)` is the same call; a list of a hole and a Circle."""
-    res = aidl_lang.compile(PLATE.replace("Countersink(corners, diameter=9 mm)",
-                                          "CounterSink(holes=corners, d=9 mm)"))
-    assert res.ok and len(res.compiled.drawing.sinks) == 4
-    res = aidl_lang.compile(BORED)
-    assert res.ok and [s.hole for s in res.compiled.drawing.sinks] == ["plate.h.c", "plate.g.c"]
+def _sunk(src: str) -> list:
+    res = aidl_lang.compile(src)
+    assert res.ok, res.diagnostics
+    return [(s.kind, s.hole, s.diameter, s.angle, s.depth) for s in res.compiled.drawing.sinks]
+
+
+@pytest.mark.parametrize("syn", ["CounterSink", "Csink"])
+def test_countersink_synonyms_are_the_same_call(syn):
+    """`CounterSink(holes=..., d=..., included_angle=...)` is Countersink's call."""
+    want = _sunk(PLATE.replace("Countersink(corners, diameter=9 mm)",
+                               "Countersink(corners, diameter=9 mm, angle=82 deg)"))
+    assert len(want) == 4 and want[0][3] == pytest.approx(math.radians(82))
+    assert _sunk(PLATE.replace("Countersink(corners, diameter=9 mm)",
+                               f"{syn}(holes=corners, d=9 mm, included_angle=82 deg)")) == want
+
+
+@pytest.mark.parametrize("syn", ["CounterBore", "Cbore"])
+def test_counterbore_synonyms_and_a_list_of_a_hole_and_a_circle(syn):
+    want = _sunk(BORED)
+    assert want == [("counterbore", "plate.h.c", 8.0, None, 2.5),
+                    ("counterbore", "plate.g.c", 8.0, None, 2.5)]
+    assert _sunk(BORED.replace("Counterbore([h, g.c], diameter=8, depth=2.5)",
+                               f"{syn}(of=[h, g.c], head=8, deep=2.5)")) == want
