@@ -109,6 +109,23 @@ def test_plate_of_four_countersunk_holes_laser_svg_router_gcode_and_parts(tmp_pa
     assert all(s["depth"] == pytest.approx(2.25, abs=1e-12) for s in sinks)
 
 
+def test_laid_out_the_heads_move_with_their_holes(tmp_path):
+    """`--layout sheet` moves (and may turn) the plate: the V-bit still plunges at the centre
+    of each hole the router cut (the centres of its G2 circles)."""
+    rc, _, err = _run(tmp_path, PLATE, "render", "--layout", "sheet", "-o",
+                      str(tmp_path / "l.nc"), "--machine", "router")
+    assert rc == 0, err
+    text = (tmp_path / "l.nc").read_text()
+    head, _ = text.split("\nM0\n")
+    moves = replay(text, "router")
+    n = len(replay(head + "\n", "router"))
+    holes = sorted({(round(mv.center[0], 6), round(mv.center[1], 6)) for mv in moves[:n]
+                    if mv.on and mv.g == 2 and abs(mv.radius - (2.25 - 1.5875)) < 1e-9})
+    plunges = sorted((round(mv.p[0], 6), round(mv.p[1], 6)) for mv in moves[n:]
+                     if mv.g == 1 and mv.p == mv.q)
+    assert len(holes) == 4 and plunges == holes
+
+
 def test_countersinks_dxf_layer_stl_cone_describe_and_measure(tmp_path):
     res = aidl_lang.compile(PLATE)
     assert res.ok and not res.diagnostics, res.diagnostics

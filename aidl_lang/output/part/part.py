@@ -101,6 +101,21 @@ class Stroke(Compared):
         self.part = part
 
 
+class SinkStroke(Stroke):
+    """The head of a countersink or counterbore (issue 102): its circle, of style
+    ``countersink`` or ``counterbore``, and ``sink``, the booleans' record of it
+    (:class:`~.build.result.SinkAt`: the hole, the sizes), which a layout's moves keep."""
+    __slots__ = ("sink",)
+
+    def __init__(self, segments, style, closed, source, part, sink):
+        super().__init__(segments, style, closed, source, part)
+        self.sink = sink
+
+    def moved(self, segments: list) -> "SinkStroke":
+        """This head with ``segments`` (moved by a layout)."""
+        return SinkStroke(segments, self.style, self.closed, self.source, self.part, self.sink)
+
+
 class Output(Compared):
     """What the writers get: exact part outlines and engraving strokes (mm); the strokes of
     style ``cut`` are through-cuts (:attr:`cuts`), cut through the material, not engraved."""
@@ -294,30 +309,16 @@ def _build(drawing: Drawing, title: str, thickness, deadline) -> Output:
         _onto_pieces(strokes, [p for p in out.parts if p.name in split])
     out.engrave = _join(_cut_once(strokes, out.parts))
     # the head of each countersink and counterbore: its circle, on a layer of its own
-    out.engrave += [Stroke([Circle(sk.center, sk.diameter / 2)], sk.kind, True, sk.hole,
-                           sk.part) for sk in getattr(drawing, "sinks", ())]
+    out.engrave += [SinkStroke([Circle(sk.center, sk.diameter / 2)], sk.kind, True, sk.hole,
+                               sk.part, sk) for sk in getattr(drawing, "sinks", ())]
     return out
-
-
-SINK_STYLES = ("countersink", "counterbore")
 
 
 def sink_heads(output: Output) -> list[tuple]:
     """The countersinks and counterbores of ``output`` where its head strokes are (moved
-    with their parts by a layout): ``[(centre, SinkAt)]``, each head stroke matched to the
-    booleans' record (``output.drawing.sinks``) of its part, hole and diameter."""
-    recs = list(getattr(output.drawing, "sinks", None) or ())
-    out = []
-    for st in output.engrave:
-        if st.style not in SINK_STYLES:
-            continue
-        c = st.segments[0]
-        rec = next((r for r in recs if r.kind == st.style and r.part == st.part
-                    and r.hole == st.source and abs(r.diameter / 2 - c.radius) < 1e-9), None)
-        if rec is not None:
-            recs.remove(rec)
-            out.append((tuple(c.center), rec))
-    return out
+    with their parts by a layout): ``[(centre, SinkAt)]`` (:class:`SinkStroke`)."""
+    return [(tuple(st.segments[0].center), st.sink) for st in output.engrave
+            if isinstance(st, SinkStroke) and st.segments]
 
 
 def sink_tools(heads: list, t: float) -> list:
