@@ -162,6 +162,34 @@ def test_countersinks_dxf_layer_stl_cone_describe_and_measure(tmp_path):
         "`plate.holes.c` at (-30, -15)" in out
 
 
+def test_step_cuts_the_exact_cone_and_step(tmp_path):
+    """STEP (the `step` extra): the cones a `CONICAL_SURFACE` each and the counterbores'
+    steps exact; the file read back (OCP's STEP reader) has the volume of the plate less the
+    holes and the heads to 1e-6 mm^3."""
+    pytest.importorskip("OCP")
+    from OCP.BRepGProp import BRepGProp
+    from OCP.GProp import GProp_GProps
+    from OCP.STEPControl import STEPControl_Reader
+
+    def volume(src: str, name: str) -> tuple[float, str]:
+        f = tmp_path / f"{name}.aidl"
+        f.write_text(src)
+        assert main(["render", str(f), "-o", str(tmp_path / f"{name}.step")]) == 0
+        r = STEPControl_Reader()
+        r.ReadFile(str(tmp_path / f"{name}.step"))
+        r.TransferRoots()
+        g = GProp_GProps()
+        BRepGProp.VolumeProperties_s(r.OneShape(), g)
+        return g.Mass(), (tmp_path / f"{name}.step").read_text()
+    v, text = volume(PLATE, "csk")
+    assert text.count("CONICAL_SURFACE") == 4
+    cone = _frustum(4.5, 2.25, 2.25) - math.pi * 2.25 ** 2 * 2.25
+    assert v == pytest.approx(80 * 50 * 6 - 4 * math.pi * 2.25 ** 2 * 6 - 4 * cone, abs=1e-6)
+    v, _ = volume(BORED, "cb")
+    step = math.pi * (4 ** 2 - 2.25 ** 2) * 2.5
+    assert v == pytest.approx(60 * 40 * 6 - 2 * math.pi * 2.25 ** 2 * 6 - 2 * step, abs=1e-6)
+
+
 def test_counterbores_are_pocketed_by_the_router_and_stepped_in_the_stl(tmp_path):
     """Two 8 mm counterbores 2.5 mm deep: the router pockets each with its 3.175 mm end mill
     in rings out to 4 - 1.5875 mm, in two depths of 1.25 mm; the STL loses two 8 mm x 2.5 mm
