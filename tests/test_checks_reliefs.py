@@ -12,8 +12,8 @@ the tool's centre path measured against the drawn corners:
   part), and without a relief the material stays ``r / sin(a/2) - r`` from each;
 * examples/generators/drawer.aidl to the built-in router: every inside corner of its finger
   joints reached; with ``relief = "none"`` W0527 names the corners, located at each part,
-  and the assembled fit check of the parts as routed fails (W0517 at each joint), while it
-  passes with dogbones and T-bones.
+  and the assembled fit check of the parts as routed fails (W0517 at each of its 16 joints),
+  while it passes with dogbones and T-bones.
 """
 from __future__ import annotations
 
@@ -212,10 +212,11 @@ def test_drawer_without_a_relief_is_w0527_at_each_part(tmp_path):
     text = (tmp_path / "d.nc").read_text()
     cuts = _cutting(replay(text, "router"), -3.0)
     assert not _spikes(cuts)
-    # the assembled fit check of the routed parts: the finger joints collide without reliefs
-    # (each joint's pair once) and not with dogbones or T-bones (the design's check passes)
+    # the assembled fit check of the routed parts: the 16 finger joints collide without
+    # reliefs (each joint's pair once; the first 10 said, `--json` lists all) and not with
+    # dogbones or T-bones (the design's check passes)
     assert said.count("warning[W0517]: assembled as the router cuts them (3.175 mm bit, "
-                      "with no relief)") == 10
+                      "with no relief)") == 10 and "and 6 more of W0517" in said
     assert "`desk_drawer.unit.carcass.bottom` and `desk_drawer.unit.carcass.back` collide: " \
         "they share 45.5 mm^3" in said
     for relief in ("dogbone", "tbone"):
@@ -232,3 +233,19 @@ def test_relief_key_is_checked():
         from_dict({"kind": "router", "relief": "dogbones"})
     assert from_dict({"kind": "laser"}).relief == "none"
     assert from_dict({"kind": "router", "relief": "tbone"}).relief == "tbone"
+
+
+def test_mcp_render_to_a_router_says_the_corners_and_the_routed_fit(tmp_path):
+    """The MCP `render` tool as `aidl render`: with `relief = "none"` W0527 at each part and
+    the routed fit check's W0517; with the built-in router (dogbones) neither."""
+    pytest.importorskip("mcp")
+    from aidl_lang.mcp import tools as T
+    (tmp_path / "none.toml").write_text('kind = "router"\nrelief = "none"\n')
+    src = DRAWER.read_text()
+    codes = {}
+    for prof in ("none.toml", "router"):
+        doc, _ = T.render(T.Workspace(tmp_path), source=src, output="d.nc", width=64,
+                          machine=prof)
+        codes[prof] = [d["code"] for d in doc.get("diagnostics", [])]
+    assert codes["none.toml"].count("W0527") == 10 and codes["none.toml"].count("W0517") == 16
+    assert "W0527" not in codes["router"] and "W0517" not in codes["router"]
