@@ -149,6 +149,10 @@ def test_countersinks_dxf_layer_stl_cone_describe_and_measure(tmp_path):
     cone = _frustum(4.5, 2.25, 2.25) - math.pi * 2.25 ** 2 * 2.25     # less the hole's share
     assert vols[1] - vols[0] == pytest.approx(4 * cone, rel=5e-3)
     assert vols[1] - vols[0] > 4 * cone * 0.99
+    # the GLB (the studio's 3D view) cuts the same cones
+    assert main(["render", str(tmp_path / "a.aidl"), "-o", str(tmp_path / "a.glb")]) == 0
+    glb = trimesh.load(tmp_path / "a.glb").to_geometry()
+    assert glb.volume == pytest.approx(vols[0], abs=1e-6)
     # describe and measure
     d = res.description
     part = d["parts"][0]
