@@ -91,7 +91,9 @@ def test_marks_follow_their_holes_whatever_subset_is_marked(tmp_path_factory, ca
     for edit in edits:
         res = aidl_lang.compile(text, path=path, overrides=edit)
         assert res.ok, ([str(d) for d in res.errors], text)
-        holes, marks = _circles(res, "CUT"), _circles(res, "ENGRAVE")
+        # each mark is its hole's `Countersink` (issue 102): on the COUNTERSINK layer
+        assert text.count("Countersink(") >= 1 and not _circles(res, "ENGRAVE"), text
+        holes, marks = _circles(res, "CUT"), _circles(res, "COUNTERSINK")
         assert len(holes) == len(centres) and len(marks) == len(marked), (edit, text)
         for mx, my in marks:
             assert min(math.hypot(mx - x, my - y) for x, y in holes) <= 1e-9, (edit, text)

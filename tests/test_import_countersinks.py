@@ -56,8 +56,12 @@ def test_countersinks_move_with_their_holes(tmp_path, edit):
     assert res.ok, [str(d) for d in res.errors]
     assert not [d for d in res.diagnostics if d.severity == "warning"], res.diagnostics
     holes = _circles(res, "CUT")
-    marks = _circles(res, "ENGRAVE")
-    assert len(holes) == 7 and len(marks) == 8, (holes, marks)
+    # the marks on holes are their holes' `Countersink`s (issue 102: the COUNTERSINK layer),
+    # the mark on no hole stays a drawing (ENGRAVE)
+    sunk, marks = _circles(res, "COUNTERSINK"), _circles(res, "ENGRAVE")
+    assert text.count("Countersink(") == 2, text
+    assert len(holes) == 7 and len(sunk) == 7 and len(marks) == 1, (holes, sunk, marks)
+    marks += sunk
     lone = [mk for mk in marks if abs(mk[2] - 2.5) < 1e-9]
     assert len(lone) == 1 and abs(lone[0][0] - LONE[0]) < 1e-9 and abs(lone[0][1] - LONE[1]) < 1e-9
     for x, y, r in holes:

@@ -408,10 +408,15 @@ def test_countersink_circles_are_marked_and_the_holes_are_the_parts(tmp_path, in
     text, _ = import_drawing((tmp_path / "csk.dxf").read_bytes(), "csk.dxf", infer=infer)
     assert "# holes: layer `HOLES` in `OUTLINE`" in text, text
     assert f"# countersinks: layer `{layer}` (4 circles) marked, not cut" in text, text
-    assert text.count("solid ") == 1 and text.count("drawing ") == 1, text
+    # inferred, each countersink's mark is its hole's `Countersink` (issue 102), on the
+    # COUNTERSINK layer; a counterbore's (no depth in the drawing) stays a drawing
+    sunk = infer and "bore" not in layer.lower()
+    assert text.count("solid ") == 1 and text.count("drawing ") == (0 if sunk else 1), text
+    assert ("Countersink(" in text) == sunk, text
     res = _compile(text, tmp_path)
     assert not [d for d in res.diagnostics if d.severity == "warning"], res.diagnostics
     cut = sorted(e[1:] for e in _entities(res, "CUT") if e[0] == "C")
-    marked = sorted(e[1:] for e in _entities(res, "ENGRAVE") if e[0] == "C")
+    marked = sorted(e[1:] for e in _entities(res, "COUNTERSINK" if sunk else "ENGRAVE")
+                    if e[0] == "C")
     assert cut == sorted((x, y, 1.65) for x, y in centres)
     assert marked == sorted((x, y, 3.3) for x, y in centres)

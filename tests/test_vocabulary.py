@@ -47,8 +47,9 @@ SAMPLE = {
 }
 # canonical entries that change no solved value, or make copies (their synonyms are tested
 # where they act: AllowOverlap's in tests/test_forms.py, the transforms' in
-# tests/test_transform_scale.py)
-NO_SOLUTION = {"AllowOverlap", "Translate", "Translated", "Scale", "Scaled"}
+# tests/test_transform_scale.py, Countersink's and Counterbore's in tests/test_checks_sinks.py)
+NO_SOLUTION = {"AllowOverlap", "Translate", "Translated", "Scale", "Scaled", "Countersink",
+               "Counterbore"}
 # the sample for a synonym whose arguments are swapped
 SWAPPED_SAMPLE = {"Contains": "r1, r2, 2"}
 

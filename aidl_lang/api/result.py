@@ -306,6 +306,24 @@ class Result:
                 if k in c:
                     out[k] = c[k]
             out["points"] = c["points"]
+        sunk = self._sinks_at(a, b)
+        if sunk:
+            out["sinks"] = sunk
+        return out
+
+    def _sinks_at(self, *names: str) -> list[dict]:
+        """The countersinks and counterbores (issue 102) on the holes ``names`` name (a
+        hole's Circle, or a structure or part holding it), as the parts list gives them."""
+        d = getattr(self.compiled, "drawing", None)
+        out = []
+        for sk in getattr(d, "sinks", None) or ():
+            if any(sk.hole == n or sk.hole.startswith(n + ".") for n in names):
+                item = {"kind": sk.kind, "hole": sk.hole, "center": list(sk.center),
+                        "hole_d": sk.hole_d, "diameter": sk.diameter,
+                        "depth": sk.cone_depth()}
+                if sk.kind == "countersink":
+                    item["angle"] = math.degrees(sk.angle)
+                out.append(item)
         return out
 
     def _entity(self, name: str) -> dict:

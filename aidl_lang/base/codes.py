@@ -252,10 +252,13 @@ instance to other parts with constraints in the parent structure.
 One compile has one evaluation budget (`aidl check --budget K` multiplies it): 250 000 steps (every loop
 iteration, comprehension element, call and template instance counts one), 120 000 points,
 geometry objects, structures and constraints together, 1 000 000 characters in one string or items in
-one list (and 64 000 000 characters in all the strings a compile builds), and 15 s of CPU time
-for the whole compile (this process's CPU seconds, all its threads: the same program gets the
-same answer on a quiet machine and on a busy one; wall time is only an outer guard, at 10 times
-the CPU seconds, for a machine that gives the compile less than a tenth of a core). Each construct's own limit
+one list (and 64 000 000 characters in all the strings a compile builds), and 2 000 000 work
+units for the whole compile (each stage pays for what it walks before it walks it: steps,
+objects, Newton steps, vertices, pairs, segments; about 15 s of the reference machine, and the
+same count on every machine at any load, so the same program gets the same answer, the same
+message and the same output everywhere: docs/language.md §8.1). CPU time is only a backstop,
+at 6 times 15 s, and its message says so; wall time an outer guard, at 10 times 15 s, for a
+machine that gives the compile less than a tenth of a core. Each construct's own limit
 (E0301, E0302, E0303) stops one loop or template that is too large by itself; the budget stops
 their product: nested loops, a template that instantiates itself several times per level.
 The error points at the outermost loop or template instance running when the budget ran out
@@ -268,14 +271,16 @@ and labels the ones inside it.
     }
 
 Build less, or, if the model really needs it, raise every figure with `--budget K`
-(e.g. `aidl render model.aidl --budget 4`). The CPU time reaches every stage after the
-solve too, each looking at it as it goes (every few parts, pairs or cells): the booleans, the
+(e.g. `aidl render model.aidl --budget 4`); the message names the `--budget K` that covers
+what was needed. The work reaches every stage after the
+solve too, each paying as it goes (every few parts, pairs or cells): the booleans, the
 shape checks, the exact outlines, the writers, `aidl parts`' list and `aidl check
 --describe`'s description (one budget for the whole command; `Result.output` and
 `Result.description` of the Python API, and the MCP `describe`, get a fresh budget per call)
 and the comparison with the defaults under `--set` (W0510): "the program ran out of its
-evaluation budget in the parts list of `sheet.p[12]`: more than 7.5 s of CPU time", at that
-part's structure. A program that runs out of memory
+evaluation budget in the parts list of `sheet.p[12]`: it needs more than 1,000,512 work units,
+past its budget of 1,000,000", at that part's structure, with the hint "... raise the budget
+with `--budget 0.53`". A program that runs out of memory
 before any figure of the budget is also `E0304`, wherever it happens (interpreting, solving,
 the booleans, the shape checks, the exact outlines, a writer) and in every front end (the
 CLI, the Python API, `aidl serve`, `aidl studio`, MCP, the editor, `aidl batch`): "the program
@@ -1121,17 +1126,17 @@ out; the warning names each one with its code point.
 A note, not a warning: a family of the shape checks on the final part stopped before it had
 looked at everything, so what it would have said about the parts named is not known. Each
 family (holes, pieces, engravings, walls between features, openings, thin walls, slits,
-ledges, text, copies that merge) holds a share of the compile's CPU time (a fifth of the
-budget: 3 s of the default 15 s) and stops past it, or before a step that cannot be interrupted
-(one Manifold call) when that step is expected to end past its share or past the compile's
-budget; and none lists more than 3,000,000 pairs
+ledges, text, copies that merge) holds a share of the compile's work (a fifth of the
+budget: 400 000 of the default 2 000 000 units, the same on every machine) and stops past it,
+or before a step that cannot be interrupted (one Manifold call) when that step's price would
+pass its share or the compile's budget; and none lists more than 3,000,000 pairs
 of edges or shapes within reach of one another (a map of a country imported a few mm wide
 puts every edge within the minimum wall of hundreds of others). Nothing is wrong with the
-part because of it: `--budget 2` gives every check twice the time; a drawing scaled to its
+part because of it: `--budget 2` gives every check twice the work; a drawing scaled to its
 real size (or a smaller `--min-wall`) has fewer edges within reach.
 
     aidl check usa.aidl
-    # note[W0521]: not checked: slits (W0519) in `borders`: out of its share of the time (3 s of the 15 s budget)
+    # note[W0521]: not checked: slits (W0519) in `borders`: out of its share of the work (400,000 of the 2,000,000 work units of the budget)
 """),
     "W0522": ("through-cut that cuts nothing (or a stretch already cut)", """
 A curve of a `cut` structure is a through-cut: the laser cuts along it through the part. This
@@ -1214,6 +1219,46 @@ that drawing's children). Move it over the lines it should hide, or delete it.
         p = Polygon(points=[(0, 0), (20, 5), (30, 30), (5, 20)])
         hole front { q = Circle(center=(60, 0), radius=5) }     # covers nothing: W0526
     }
+"""),
+    "W0528": ("countersink or counterbore head larger than the material around it", """
+The head of a `Countersink` or `Counterbore` (its `diameter`) must be larger than its hole and
+fit the material around it: a head that reaches past the part's edge or into another hole
+leaves a screw's head unsupported there (and a router's V-bit cuts the edge away). Move the
+hole half the head's diameter or more from the edges and the other holes, or give a smaller
+head (an M4 flat-head screw: a 4.5 mm hole, a 9 mm head).
+
+    solid plate {
+        body = Rectangle(center=(0, 0), width=40, height=20)
+        hole h { c = Circle(center=(17, 0), diameter=4.5 mm) }
+        Countersink(h, diameter=9 mm)                # 3 mm from the edge: W0528
+    }
+"""),
+    "W0529": ("countersink or counterbore deeper than the part", """
+A countersink's cone is `(diameter - hole) / 2 / tan(angle / 2)` deep; a counterbore is its
+`depth` deep. At or past the part's thickness the head goes through the part and leaves no
+seat for the screw's head. Give a smaller head, a wider angle or a shallower depth, or use
+thicker material.
+
+    thickness 3 mm
+    solid plate {
+        body = Rectangle(center=(0, 0), width=40, height=20)
+        hole h { c = Circle(center=(0, 0), diameter=4 mm) }
+        Counterbore(h, diameter=8 mm, depth=4 mm)    # 4 mm in 3 mm: W0529
+    }
+"""),
+    "W0527": ("inside corners the router's bit does not reach", """
+A router's bit is round: at an inside corner of a part's material (the bottom of a finger
+joint's slot, a tab's slot, a halving, a rectangular hole) its centre runs the outline offset by
+its radius r, so its edge stays r / sin(a/2) - r from the drawn corner (0.658 mm for a 90 degree
+corner and a 3.175 mm bit) and the mating part's square corner does not seat. `aidl render
+--machine` with a router profile whose `relief = "none"` says it, at the part, naming the
+corners and how far the material stays. Set `relief = "dogbone"` (the bit runs along the
+corner's bisector until its edge touches it; the built-in router profile's default) or
+`relief = "tbone"` (along the longer side) in the profile; the SVG and DXF stay as drawn.
+
+    # router.toml
+    kind = "router"
+    relief = "dogbone"
 """),
     "W0130": ("drawing entities skipped", """
 Entities of a drawing that have no exact form here are skipped and counted, named by kind:

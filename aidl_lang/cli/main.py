@@ -474,10 +474,14 @@ def cmd_render(args) -> int:
                          "and .stl show them bent")
         routed = machine is not None and machine.kind == "router" and any(
             j[2] in (".gcode", ".nc") for j in jobs)
+        notes += _sink_notes(res.drawing, jobs, routed)
         from ..output.checks.material.toolpath_walls import machine_warnings
         if routed:              # W0510 (cut apart) and W0507 (too little left), located
             machine_warnings(res.drawing, cut, output, machine.tool_diameter, True, res.sink,
-                             args.min_wall, bool(args.layout))
+                             args.min_wall, bool(args.layout), machine.relief)
+            from ..output.checks.assembly import check_routed_fit
+            check_routed_fit(res.drawing, output, machine.tool_diameter, machine.relief,
+                             res.sink, res.deadline)
         elif cut is not output and not args.assembled and any(j[2] in CUT_FORMATS
                                                               for j in jobs):
             machine_warnings(res.drawing, output, output, kerf if kerf is not None else
@@ -509,6 +513,26 @@ def cmd_render(args) -> int:
           | _work_of(res))
     _report_written(args, items, outs, notes)
     return 0
+
+
+def _sink_notes(drawing, jobs, routed: bool) -> list[str]:
+    """The note of a flat file holding countersink or counterbore heads (issue 102): their
+    circles are marks on a layer of their own; the cone or the step is not cut by a laser."""
+    from ..output import CUT_FORMATS
+    sinks = getattr(drawing, "sinks", None) or ()
+    flat = [j for j in jobs if j[2] in CUT_FORMATS and not (routed and j[2] in (".gcode", ".nc"))]
+    if not sinks or not flat:
+        return []
+    out = []
+    for kind in ("countersink", "counterbore"):
+        these = [s for s in sinks if s.kind == kind]
+        if these:
+            sizes = ", ".join(f"{d:g}" for d in sorted({s.diameter for s in these}))
+            out.append(f"note: {len(these)} {kind} head{'s' if len(these) != 1 else ''} "
+                       f"({sizes} mm) drawn as circles on the engrave layer `{kind}`: the "
+                       f"holes are cut through, the {'cones' if kind == 'countersink' else 'steps'}"
+                       " are not (sink them by hand, or with `--machine router`)")
+    return out
 
 
 def _render_settings(args, outs):

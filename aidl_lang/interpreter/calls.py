@@ -165,6 +165,9 @@ class Calls:
             self._check_subtree(owners_of(*conv.values()), node.span, self._need_struct(node.span))
             if cname == "CutInto":
                 return self._cut_into(conv, node, spans)
+            if cname in ("Countersink", "Counterbore"):
+                from .sinks import sink_call
+                return sink_call(self, cname, conv, node, spans)
             if cname in ("AllowOverlap", "Fillet", "Chamfer"):
                 # W0523 locates one that allows nothing; E0408, W0406 a corner not rounded
                 conv = dict(conv, _span=node.span)

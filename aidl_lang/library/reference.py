@@ -663,8 +663,15 @@ A through-cut is cut as wide as the tool (the bit's diameter; a laser's kerf) wh
 holes are offset: a bridge, rim or strip beside it that the tool leaves thinner than the
 minimum wall, or cuts away, is W0507 at the cut (a slit 1.6 mm from the edge: 0.0125 mm left
 with a 3.175 mm bit); keep cuts the tool's radius plus `min_wall` from edges and holes.
+A router's round bit cannot cut a square inside corner: `relief = "dogbone"` (the built-in
+router's default: along the bisector) or `"tbone"` (along the longer side) runs it in until
+its edge touches every inside corner of the joints; `relief = "none"` warns W0527 naming the
+corners (and the assembled fit of the routed parts, W0517). `Countersink` / `Counterbore`
+holes: a router sinks them after the through-cuts with a V-bit (`v_bit_angle`, 90 deg) or
+pockets them (`pocket_tool` mm; 0: `tool_diameter`); a laser engraves the head's circle on a
+layer of its own (`countersink`, `counterbore`).
 """, ["gcode", "g-code", "grbl", "--machine", "machine profile", "cnc", "router", "toolpath",
-      "nc"]),
+      "nc", "dogbone", "t-bone", "tbone", "relief", "inside corner"]),
     "assembled": ("statement", "The assembled product: parts placed in 3D with `Place`, "
                   "written by `aidl render --assembled`, checked for fit.", """
 `Place(part, position=(x, y, z), rotation=(rx, ry, rz))` in the assembly that holds the part

@@ -221,6 +221,16 @@ EXAMPLES: dict[str, str] = {
     "CornerPattern": _solid("body = Rectangle(center=(0, 0), width=60, height=40)\n"
                             "hole h { c = Circle(center=(0, 0), radius=2) }\nFixed(body)\n"
                             "corners = CornerPattern(h, body, 5)", "plate"),
+    "Countersink": _solid("body = Rectangle(center=(0, 0), width=60, height=40)\n"
+                          "hole h { c = Circle(center=(0, 0), diameter=4.5) }\nFixed(body)\n"
+                          "corners = CornerPattern(h, body, 8)\n"
+                          "Countersink(corners, diameter=9)    # M4 flat heads: 90 deg cones",
+                          "plate"),
+    "Counterbore": _solid("body = Rectangle(center=(0, 0), width=60, height=40)\n"
+                          "hole h { c = Circle(center=(0, 0), diameter=4.5) }\nFixed(body)\n"
+                          "corners = CornerPattern(h, body, 8)\n"
+                          "Counterbore(corners, diameter=8, depth=2)    # M4 socket heads",
+                          "plate"),
     "Rigid": _solid("body = Rectangle(center=(0, 0), width=40, height=20)\n"
                     "hole pins {\n    a = Circle(center=(-10, 0), radius=3)\n"
                     "    b = Circle(center=(10, 0), radius=3)\n    Rigid(a, b)    # shapes: "

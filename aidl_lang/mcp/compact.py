@@ -154,7 +154,7 @@ def describe(doc: dict, detail: bool = False) -> dict:
     parts = []
     for p in d.get("parts", []):
         p = dict(p)
-        for k in ("openings", "through_cuts", "notches", "copies"):
+        for k in ("openings", "through_cuts", "notches", "copies", "sinks"):
             if isinstance(p.get(k), list):
                 p[k] = group(p[k])
         parts.append(p)

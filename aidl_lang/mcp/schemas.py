@@ -164,6 +164,9 @@ class Measured(TypedDict):
     contact: NotRequired[Literal["apart", "touching", "overlapping"]]
     overlap_area: NotRequired[Annotated[float, Field(description="mm² shared")]]
     overlap_area_within: NotRequired[Annotated[float, Field(description="estimated: ± mm²")]]
+    sinks: NotRequired[Annotated[list[dict], Field(
+        description="countersinks/counterbores on the holes named: kind, hole, center, "
+                    "hole_d, diameter, depth (mm), angle (deg)")]]
 
 
 class MeasureResult(_Compiled):

@@ -560,7 +560,10 @@ def _machine_warnings(r, cut, suffix: str, prof, kerf_mm, doc: dict) -> None:
     before = len(r.sink.items)
     drawing = r.compiled.drawing
     if prof is not None and prof.kind == "router" and suffix in GCODE_FORMATS:
-        machine_warnings(drawing, cut, r.output, prof.tool_diameter, True, r.sink)
+        machine_warnings(drawing, cut, r.output, prof.tool_diameter, True, r.sink,
+                         relief=prof.relief)
+        from ..output.checks.assembly import check_routed_fit     # the parts as routed
+        check_routed_fit(drawing, r.output, prof.tool_diameter, prof.relief, r.sink)
     elif cut is not r.output:
         machine_warnings(drawing, r.output, r.output,
                          kerf_mm if kerf_mm is not None else drawing.kerf, False, r.sink)

@@ -191,11 +191,17 @@ def _names(name: str, kind: str) -> bool:
     return any(h in name for h in HINTS.get(kind, ()))
 
 
+# the layers a program's DXF engraves on: its drawings, and the heads of its countersinks and
+# counterbores (issue 102: `Countersink` of a hole, what --infer writes for a mark)
+MARKED = ("ENGRAVE", "COUNTERSINK", "COUNTERBORE")
+
+
 def _engraved(doc, shift) -> list:
-    """Each ENGRAVE entity of a document as a tuple of numbers, moved by ``-shift``."""
+    """Each entity of a document's engraved layers (:data:`MARKED`) as a tuple of numbers,
+    moved by ``-shift``."""
     out = []
     for x in doc.modelspace():
-        if x.dxf.layer != "ENGRAVE":
+        if x.dxf.layer not in MARKED:
             continue
         t = x.dxftype()
         if t == "LWPOLYLINE":
@@ -236,7 +242,7 @@ def output_of(text: str, path, overrides=None):
     doc = ezdxf.read(io.StringIO(res.to_dxf()))
     segs, texts = [], []
     for x in doc.modelspace():
-        if x.dxf.layer != "ENGRAVE":
+        if x.dxf.layer not in MARKED:
             gen._dxf_segments(x, segs, texts)
     loops, _ = gen.chain([s for _, s in segs])
     return [gen.signature(lp) for lp in loops], doc

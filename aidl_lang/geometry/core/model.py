@@ -28,6 +28,7 @@ class Model:
         self.assertions: list[Assertion] = []     # `assert` statements left for after solving
         self.constants: dict = {}     # the main file's top-level names (params, constants)
         self.holds = 0                # constraints with ``hold`` (solver.holds.settle_holds)
+        self.sinks: list[Sink] = []   # `Countersink` / `Counterbore` calls (issue 102)
 
     def new_param(self, value: float, free: bool, owner: "Structure | None", label: str) -> int:
         self.x.append(float(value))
@@ -54,6 +55,19 @@ class Model:
     def all_geometry(self):
         for s in self.structures:
             yield from s.geometry
+
+
+class Sink:
+    """A ``Countersink`` or ``Counterbore`` call: ``kind`` (``countersink`` |
+    ``counterbore``), the round holes it sinks (``circles``: Circle geometries of hole
+    structures), the head's ``diameter`` (mm), a countersink's included ``angle`` (radians),
+    a counterbore's ``depth`` (mm); ``span``: the call."""
+    __slots__ = ("kind", "circles", "diameter", "angle", "depth", "span")
+
+    def __init__(self, kind: str, circles: list, diameter: float, angle: float | None,
+                 depth: float | None, span: Span | None):
+        self.kind, self.circles, self.diameter = kind, circles, diameter
+        self.angle, self.depth, self.span = angle, depth, span
 
 
 class Structure(Record):

@@ -61,6 +61,7 @@ from .common import (MIN_AREA, MIN_FRACTION, MIN_WALL, _cut_openings, _edges, _i
                      _inside_loops, _part_of, _part_roots, _signed, _union, part_min_wall)
 from .holes.openings import TOUCH, _analyse, _check_flush, _check_hole, _intended, _Near, _report_openings
 from .holes.repeats import _check_overlapping_circles, _check_repeated_faces
+from .holes.sinks import check_sinks
 from .holes.voids import _check_voids
 from .marks.engravings import (_SURELY_GROWN, ENGRAVE_TOL, _check_engraving, _check_zero_lines,
                                _n_samples, _sample, _samples, _within)
@@ -350,6 +351,8 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
     if getattr(d, "placement", None):
         tick(None)
         _check_fit(d, sink, deadline)
+    if getattr(d, "sinks", None):
+        run("sinks", None, lambda: check_sinks(d, sink, lambda: tick(None)))
     for s in list(d.shapes):
         if s.kind == "hole":
             t = part_min_wall(d, _part_of(s, roots), given)

@@ -67,6 +67,39 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                           "with its `Place`, or lengthen the tab")
 
 
+def check_routed_fit(d: Drawing, output, diameter: float, relief: str, sink: DiagnosticSink,
+                     deadline=None) -> None:
+    """The fit check of the assembled product as a router cuts it (``aidl render --machine``
+    with a router profile, a program that places its parts): each part as the bit of
+    ``diameter`` mm leaves it (:func:`~..fabrication.reliefs.routed_shape` of ``output``'s
+    exact parts: inside corners rounded to the bit, less the profile's ``relief``), W0517 for
+    each pair that collides so and not as drawn (the material the bit leaves in an inside
+    corner where the partner's square corner must go)."""
+    if not getattr(d, "placement", None) or not diameter:
+        return
+    from ..fabrication.assembly import Bodies, fit, normals_of, plates_of
+    from ..fabrication.reliefs import routed_shape
+    drawn = {(c["a"], c["b"]) for c in (getattr(d, "fit", None) or {}).get("collisions", ())}
+    parts = [(p.name, p.kind, routed_shape(p, diameter / 2, relief), d.thickness.get(p.name))
+             for p in output.parts]
+    hits, _ = fit(Bodies(parts, d.placement, deadline=deadline), deadline,
+                  normals_of(d.placement), plates_of(parts, d.placement))
+    from .parts import _allowed
+    for c in hits:
+        sa_, sb_ = d.part_of.get(c.a), d.part_of.get(c.b)
+        if (c.a, c.b) in drawn or (c.b, c.a) in drawn or \
+                (sa_ is not None and sb_ is not None and _allowed(sa_, sb_)):
+            continue
+        how = "with no relief" if relief == "none" else f"with {relief} reliefs"
+        sp = getattr(d.part_of.get(c.b), "span", None) or getattr(sa_, "span", None)
+        sink.warning("W0517", f"assembled as the router cuts them ({diameter:g} mm bit, {how}), "
+                     f"parts `{c.a}` and `{c.b}` collide: they share {c.volume:.3g} mm^3, "
+                     f"{c.depth:.3g} mm deep: the bit leaves material in the inside corners "
+                     "where the partner's corners go", sp,
+                     hint="set `relief = \"dogbone\"` (or `\"tbone\"`) in the machine "
+                          "profile, or use a smaller bit (`tool_diameter`)")
+
+
 def _check_bends(d: Drawing, sink: DiagnosticSink) -> None:
     """E0108 at a ``Bend`` whose zone on the sheet (``|angle| * (radius + thickness / 2)``
     wide, known once the part's thickness is) runs into the previous bend's of its part."""

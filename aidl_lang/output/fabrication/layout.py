@@ -90,8 +90,10 @@ class Motion:
         return PartOutline(p.name, p.kind, [self.loop(lp) for lp in p.loops], p.thickness)
 
     def stroke(self, st: Stroke) -> Stroke:
-        return Stroke([self.segment(s) for s in st.segments], st.style, st.closed, st.source,
-                      st.part)
+        moved = [self.segment(s) for s in st.segments]
+        if hasattr(st, "moved"):            # a countersink's head keeps its record
+            return st.moved(moved)
+        return Stroke(moved, st.style, st.closed, st.source, st.part)
 
 
 def part_box(p: PartOutline) -> tuple[float, float, float, float]:

@@ -14,6 +14,11 @@ A profile is a small TOML file (``aidl render --machine FILE``), every key optio
     tab_width = 3             # mm along the cut
     tab_height = 1            # mm of material left standing (router); a laser skips the tab
     lead_in = 0               # mm: start each cut this far off the loop (0: on it)
+    relief = "dogbone"        # router: dogbone | tbone | none: the bit run into each inside
+                              # corner until its edge touches it (the built-in router: dogbone)
+    v_bit_angle = 90          # router: deg, the V-bit that plunges each countersink's cone
+    pocket_tool = 0           # router: mm, the end mill that pockets each counterbore (0: the
+                              # profile's tool_diameter)
 
     [engrave]                 # text and drawings
     power = 20                # percent of max_power (laser)
@@ -41,6 +46,8 @@ from dataclasses import dataclass, field, replace
 from ..part.part import OutputError
 
 KINDS = ("laser", "router", "plotter")
+# what a router does at an inside corner its round bit cannot reach (:mod:`.reliefs`)
+RELIEFS = ("dogbone", "tbone", "none")
 OPERATIONS = ("engrave", "score", "cut_inner", "cut_outer")
 
 
@@ -78,6 +85,9 @@ class Machine:
     tab_width: float = 3.0
     tab_height: float = 1.0
     lead_in: float = 0.0
+    relief: str = "none"
+    v_bit_angle: float = 90.0
+    pocket_tool: float = 0.0
     kerf: float | None = None
     thickness: float | None = None
     operations: dict = field(default_factory=dict)
@@ -100,18 +110,19 @@ DEFAULTS: dict[str, Machine] = {
         score=Operation(power=40, speed=2000),
         cut_inner=Operation(power=100, speed=400, passes=2),
         cut_outer=Operation(power=100, speed=400, passes=2))),
-    "router": Machine("router", tool_diameter=3.175, safe_height=5.0, operations=_ops(
-        engrave=Operation(speed=1200, depth_per_pass=0.5, plunge=300),
-        score=Operation(speed=1200, depth_per_pass=0.5, plunge=300),
-        cut_inner=Operation(speed=1000, depth_per_pass=1.5, plunge=300),
-        cut_outer=Operation(speed=1000, depth_per_pass=1.5, plunge=300))),
+    "router": Machine("router", tool_diameter=3.175, safe_height=5.0, relief="dogbone",
+                      operations=_ops(
+                          engrave=Operation(speed=1200, depth_per_pass=0.5, plunge=300),
+                          score=Operation(speed=1200, depth_per_pass=0.5, plunge=300),
+                          cut_inner=Operation(speed=1000, depth_per_pass=1.5, plunge=300),
+                          cut_outer=Operation(speed=1000, depth_per_pass=1.5, plunge=300))),
     "plotter": Machine("plotter", travel_speed=12000, operations=_ops(
         engrave=Operation(speed=3000), score=Operation(speed=3000),
         cut_inner=Operation(speed=1500), cut_outer=Operation(speed=1500))),
 }
 
 _NUMBER = ("max_power", "travel_speed", "tool_diameter", "safe_height", "tab_width",
-           "tab_height", "lead_in", "kerf", "thickness")
+           "tab_height", "lead_in", "kerf", "thickness", "v_bit_angle", "pocket_tool")
 _OP_KEYS = ("power", "speed", "passes", "depth_per_pass", "plunge", "spindle")
 # The range of every number a profile may give, ``key: (low, high, unit)``, the ends included;
 # lengths in mm and speeds in mm/min (an inch profile's values are converted first).  They
@@ -132,6 +143,8 @@ RANGES: dict[str, tuple[float, float, str]] = {
     "lead_in": (0.0, 100.0, "mm"),
     "kerf": (0.0, 10.0, "mm"),
     "thickness": (0.0, 1000.0, "mm"),
+    "v_bit_angle": (30.0, 150.0, "deg"),
+    "pocket_tool": (0.0, 50.0, "mm"),
 }
 OP_RANGES: dict[str, tuple[float, float, str]] = {
     "power": (0.0, 100.0, "%"),
@@ -145,9 +158,9 @@ OP_RANGES: dict[str, tuple[float, float, str]] = {
 # tool are 0 or at least a step of the machine (0.01 mm, as `depth_per_pass`); a lead-in of
 # 1e-308 mm ran through the lead-in search to a note of "no room for one of 2.5e-309 mm"
 LENGTH_LEAST = 0.01
-_ZERO_OR_LEAST = ("tool_diameter", "tab_width", "tab_height", "lead_in")
+_ZERO_OR_LEAST = ("tool_diameter", "tab_width", "tab_height", "lead_in", "pocket_tool")
 _WHOLE = ("tabs", "passes")          # whole numbers
-_PLAIN = ("max_power", "power", "spindle", "tabs", "passes")   # not lengths: never scaled
+_PLAIN = ("max_power", "power", "spindle", "tabs", "passes", "v_bit_angle")   # never scaled
 # router passes of one cut (thickness / depth_per_pass, rounded up): past it the G-code writer
 # refuses the job naming the part (a 1 km thick part at 0.01 mm a pass)
 MAX_DEPTH_PASSES = 1000
@@ -229,7 +242,7 @@ def from_dict(data: dict, source: str = "") -> Machine:
     if units not in ("mm", "inch"):
         raise bad("units", f"is `{units}`, not `mm` or `inch`")
     scale = INCH if units == "inch" else 1.0
-    known = {"kind", "units", "laser_mode", "tabs", *_NUMBER, *OPERATIONS}
+    known = {"kind", "units", "laser_mode", "tabs", "relief", *_NUMBER, *OPERATIONS}
     for key in data:
         if key not in known:
             near = [k for k in sorted(known) if k.split("_")[0] == str(key).split("_")[0]]
@@ -269,6 +282,11 @@ def from_dict(data: dict, source: str = "") -> Machine:
         if data["laser_mode"] not in ("M3", "M4"):
             raise bad("laser_mode", f"is {data['laser_mode']!r}, not \"M3\" or \"M4\"")
         values["laser_mode"] = data["laser_mode"]
+    if "relief" in data:
+        if data["relief"] not in RELIEFS:
+            raise bad("relief", f"is {_shown(data['relief'])}, not one of "
+                      + ", ".join(f'"{r}"' for r in RELIEFS))
+        values["relief"] = data["relief"]
     if "tabs" in data:
         values["tabs"] = number("tabs", data["tabs"], *RANGES["tabs"])
     tabs = values.get("tabs", base.tabs)

@@ -101,6 +101,21 @@ class Stroke(Compared):
         self.part = part
 
 
+class SinkStroke(Stroke):
+    """The head of a countersink or counterbore (issue 102): its circle, of style
+    ``countersink`` or ``counterbore``, and ``sink``, the booleans' record of it
+    (:class:`~.build.result.SinkAt`: the hole, the sizes), which a layout's moves keep."""
+    __slots__ = ("sink",)
+
+    def __init__(self, segments, style, closed, source, part, sink):
+        super().__init__(segments, style, closed, source, part)
+        self.sink = sink
+
+    def moved(self, segments: list) -> "SinkStroke":
+        """This head with ``segments`` (moved by a layout)."""
+        return SinkStroke(segments, self.style, self.closed, self.source, self.part, self.sink)
+
+
 class Output(Compared):
     """What the writers get: exact part outlines and engraving strokes (mm); the strokes of
     style ``cut`` are through-cuts (:attr:`cuts`), cut through the material, not engraved."""
@@ -293,6 +308,44 @@ def _build(drawing: Drawing, title: str, thickness, deadline) -> Output:
         strokes = _off_outlines(strokes, [p for p in out.parts if p.name in split])
         _onto_pieces(strokes, [p for p in out.parts if p.name in split])
     out.engrave = _join(_cut_once(strokes, out.parts))
+    # the head of each countersink and counterbore: its circle, on a layer of its own
+    out.engrave += [SinkStroke([Circle(sk.center, sk.diameter / 2)], sk.kind, True, sk.hole,
+                               sk.part, sk) for sk in getattr(drawing, "sinks", ())]
+    return out
+
+
+def sink_heads(output: Output) -> list[tuple]:
+    """The countersinks and counterbores of ``output`` where its head strokes are (moved
+    with their parts by a layout): ``[(centre, SinkAt)]`` (:class:`SinkStroke`)."""
+    return [(tuple(st.segments[0].center), st.sink) for st in output.engrave
+            if isinstance(st, SinkStroke) and st.segments]
+
+
+def sink_tools(heads: list, t: float) -> list:
+    """The solids a part ``t`` mm thick loses to its ``heads`` (:func:`sink_heads`): a
+    countersink's cone from the hole's diameter up to the head's at the top face, a
+    counterbore's cylinder down its depth; each reaching 0.01 mm above the top
+    (``manifold3d.Manifold``, mm)."""
+    import manifold3d as mf
+    e = 0.01
+    out = []
+    for (x, y), r in heads:
+        depth = r.cone_depth()
+        if depth <= 0:
+            continue
+        # the hole's own polygon (its chords, as the part's section has them), scaled: the
+        # tool's rings have the hole's vertices' angles, so no edge of it crosses the hole's
+        # wall between two of them (near-equal vertices that a reader's merge would break)
+        ring = Loop([Circle((0.0, 0.0), r.hole_d / 2)]).points()
+        section = mf.CrossSection([ring.tolist()])
+        if r.kind == "countersink":
+            k = math.tan(r.angle / 2)
+            tool = mf.Manifold.extrude(section, depth + e, 0, 0.0,
+                                       [(r.diameter / 2 + e * k) / (r.hole_d / 2)] * 2)
+        else:
+            s_ = r.diameter / r.hole_d
+            tool = mf.Manifold.extrude(section.scale([s_, s_]), depth + e)
+        out.append(tool.translate([x, y, t - depth]))
     return out
 
 

@@ -134,6 +134,9 @@ def to_dxf_document(output: Output):
     doc.header["$MEASUREMENT"] = 1
     doc.layers.add(CUT, color=1)
     doc.layers.add(ENGRAVE, color=5)
+    for st in output.engrave:                 # a countersink's heads: a layer of their own
+        if st.style in ("countersink", "counterbore") and st.style.upper() not in doc.layers:
+            doc.layers.add(st.style.upper(), color=3)
     msp = doc.modelspace()
     x0, y0, x1, y1 = extent(output)
     msp.reset_extents((x0, y0, 0.0), (x1, y1, 0.0))
@@ -164,7 +167,8 @@ def to_dxf_document(output: Output):
     layers = {p.name: layer_of(p, output) for p in output.parts}
     for st in output.engrave:
         # a through-cut on its part's cut layer (CUT when it cuts no part)
-        att = {"layer": layers.get(st.part, CUT) if st.style == "cut" else ENGRAVE}
+        att = {"layer": layers.get(st.part, CUT) if st.style == "cut" else
+               st.style.upper() if st.style in ("countersink", "counterbore") else ENGRAVE}
         _path(msp, st.segments, st.closed, att)
     return doc
 

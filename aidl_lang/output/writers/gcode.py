@@ -36,7 +36,11 @@ ends ``M5``, ``G0 X0 Y0``, ``M2``.
 Router (``kind = "router"``): the paths are the cuts offset by the tool radius (outside the
 outlines, inside the holes: :func:`~..fabrication.layout.compensate` with a kerf of ``tool_diameter``,
 exact lines and arcs; an edge two pieces share on its own line, cut once, with a note), run in the loops' own direction (outlines counter-clockwise, holes
-clockwise: conventional milling with a clockwise spindle).  ``M3 S<spindle>``, travel at
+clockwise: conventional milling with a clockwise spindle); at every inside corner between
+two straight edges the bit runs into the corner and back until its edge touches the drawn
+corner (profile ``relief``: ``dogbone`` along the bisector, the built-in router's default,
+``tbone`` along the longer edge; ``none``: a warning naming the corners, :func:`routed_path`).
+``M3 S<spindle>``, travel at
 ``safe_height`` (``G0 Z``), then down ``depth_per_pass`` at a time (``G1 Z.. F<plunge>``) to
 the part's thickness (``Options.thickness``, else the program's ``thickness``, else 3 mm),
 each depth one run of the path; over a tab the tool rises to ``tab_height`` above the bottom.
@@ -681,15 +685,18 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     from ..fabrication import machine as M
     from ..fabrication.toolpath import plan
     m = machine or M.default("laser")
-    warnings = _warnings(output, m)
-    notes = []
+    warnings, notes, heads = _warnings(output, m), [], []
     if m.kind == "router":
         from ..part.edges.shared import shared_note
         notes += [n[len("note: "):] for n in shared_note(output, m.tool_diameter, "the bit")]
         more, split = router_notes(output, m.tool_diameter)
         notes += more
         warnings += split
-        output = tool_path(output, m.tool_diameter)
+        output, relief_said = routed_path(output, m)
+        (notes if m.relief != "none" else warnings).extend(relief_said)
+        from .gcode_sinks import split as split_heads
+        rest, heads = split_heads(output)       # sunk by a second operation, not engraved
+        output = Output(output.parts, rest, output.title, output.drawing, output.page)
     # a laser runs an open path there and back (_body): an even number of passes ends it
     # where it started, and the tour goes on from there
     back = tuple(op for op in ("engrave", "score", "cut_inner", "cut_outer")
@@ -697,6 +704,7 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
     cuts = plan(output, back=back)
     thick = {p.name: (thickness or p.thickness or DEFAULT_THICKNESS) for p in output.parts}
     w = _Writer(m)
+    w.heads = heads if m.kind == "router" else []
     w.warnings = warnings
     w.notes = notes
     body = _body(w, cuts, m, thick, output)
@@ -709,7 +717,8 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
 
 W0510_TAG = " (W0510)"      # ends a warning `aidl render` gives as a located W0510 instead
 W0507_TAG = " (W0507)"      # ... and as a located W0507 (the material the bit leaves)
-LOCATED_TAGS = (W0510_TAG, W0507_TAG)
+W0527_TAG = " (W0527)"      # ... and as a located W0527 (inside corners the bit leaves)
+LOCATED_TAGS = (W0510_TAG, W0507_TAG, W0527_TAG)
 
 
 def router_notes(output: Output, diameter: float) -> tuple[list[str], list[str]]:
@@ -757,6 +766,13 @@ def tool_path(output: Output, diameter: float) -> Output:
         raise OutputError(f"{msg}; use a smaller tool (the profile's `tool_diameter`)") \
             from None
     return tooled
+
+
+def routed_path(output: Output, m) -> tuple[Output, list[str]]:
+    """What router profile ``m``'s bit runs on ``output``: :func:`tool_path` with the
+    profile's reliefs (:func:`~..fabrication.reliefs.relieved`), and their words."""
+    from ..fabrication.reliefs import relieved
+    return relieved(output, tool_path(output, m.tool_diameter), m, W0527_TAG)
 
 
 def _warnings(output: Output, m) -> list[str]:
@@ -961,6 +977,9 @@ def _body(w: _Writer, cuts, m, thick: dict, output: Output) -> list[str]:
                     else:
                         w.segment(s)
             w.rapid(z=m.safe_height)
+    if getattr(w, "heads", None):           # the router's countersinks and counterbores
+        from .gcode_sinks import write as sink_ops
+        w.notes += sink_ops(w, m, w.heads, output, thick, DEFAULT_THICKNESS)
     if m.kind == "laser":
         w.out("M5")
         w.rapid(0.0, 0.0, off=True)

@@ -4,7 +4,7 @@ view (mm; glTF's y is up, so a viewer turns the product's z up itself)."""
 from __future__ import annotations
 
 from ..fabrication.assembly import _rgba, colours
-from ..part.part import Output, OutputError
+from ..part.part import Output, OutputError, sink_heads, sink_tools
 from .mesh import _trimesh, bodies
 
 
@@ -78,6 +78,7 @@ def to_view_glb(output: Output, thickness: float | None = None, assembled: bool 
     sc = trimesh.Scene()
     shapes: dict[bytes, str] = {}
     node_colour: dict[str, str] = {}
+    heads = sink_heads(output)
     for p in output.parts:
         if p.kind != "solid" or not p.loops:
             continue
@@ -89,7 +90,12 @@ def to_view_glb(output: Output, thickness: float | None = None, assembled: bool 
         local = [q - origin for q in polys]
         t = float(thickness or p.thickness or DEFAULT_THICKNESS)
         bends = [(at - float(origin[0]), a, r) for at, a, r in bent.get(p.name, ())]
-        h = hashlib.sha1(repr((round(t, 9), bends)).encode())
+        # its countersinks and counterbores, in the part's own frame (issue 102)
+        sunk = [((c[0] - float(origin[0]), c[1] - float(origin[1])), r)
+                for c, r in heads if r.part == p.name]
+        h = hashlib.sha1(repr((round(t, 9), bends, [(np.round(c, 6).tolist(), r.kind,
+                                                     r.diameter, r.angle, r.depth)
+                                                    for c, r in sunk])).encode())
         for q in local:
             h.update(np.round(q, 6).tobytes())
         key = h.digest()
@@ -102,6 +108,9 @@ def to_view_glb(output: Output, thickness: float | None = None, assembled: bool 
         if geom is None:
             m = mf.Manifold.extrude(mf.CrossSection([q.tolist() for q in local],
                                                     mf.FillRule.NonZero), t)
+            tools = sink_tools(sunk, t)
+            if tools:
+                m = m - mf.Manifold.batch_boolean(tools, mf.OpType.Add)
             m = (bend(m, bends, t, tol) if bends else m).to_mesh64()
             mesh = trimesh.Trimesh(vertices=np.asarray(m.vert_properties)[:, :3],
                                    faces=np.asarray(m.tri_verts, dtype=np.int64), process=False)

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..part.part import MissingDependency, Output
+from ..part.part import MissingDependency, Output, sink_heads, sink_tools
 
 DEFAULT_THICKNESS = 3.0
 
@@ -41,11 +41,15 @@ def bodies(output: Output, thickness: float | None = None,
     from ...geometry.shapes.tessellate import CHORD_TOL
     from ..part.build.placement import bend_points, refine_for_bends
     out = []
+    heads = sink_heads(output)
     for p in output.parts:
         if p.kind != "solid" or p.shape is None or p.shape.is_empty():
             continue
         t = float(thickness or p.thickness or DEFAULT_THICKNESS)
         m = mf.Manifold.extrude(p.shape, t)
+        tools = sink_tools([h for h in heads if h[1].part == p.name], t)
+        if tools:           # the countersinks' cones and the counterbores' steps, cut
+            m = m - mf.Manifold.batch_boolean(tools, mf.OpType.Add)
         bends = bent.get(p.name)
         mesh = m.to_mesh64()
         v = _exact(np.asarray(mesh.vert_properties, dtype=float)[:, :3], p.loops)

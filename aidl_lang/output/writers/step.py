@@ -6,7 +6,8 @@ ellipse an ``ELLIPSE`` (whole, or trimmed between its parameters).
 Each solid part becomes one solid: its outer loops are faces (lines as straight edges, arcs
 and circles as circular edges, ``gp_Circ``), its hole loops are inner wires of the face that
 contains them, and the face is extruded along +z by the part's thickness
-(``BRepPrimAPI_MakePrism``).  Each part is one named, coloured shape of an XCAF document
+(``BRepPrimAPI_MakePrism``); a ``Countersink``'s cone and a ``Counterbore``'s step are cut
+from its top face, exact (a cone and a cylinder: :func:`_sunk`).  Each part is one named, coloured shape of an XCAF document
 (``--assembled``: moved by its placement), written as AP214 STEP in mm.
 """
 from __future__ import annotations
@@ -122,6 +123,8 @@ def solids(output: Output, thickness: float | None = None, assembled: bool = Fal
     d = output.drawing
     where = (getattr(d, "placement", None) or {}) if assembled and d is not None else {}
     out = []
+    from ..part.part import sink_heads
+    heads = sink_heads(output)
     for p in output.parts:
         if p.kind != "solid" or not p.loops:
             continue
@@ -145,11 +148,47 @@ def solids(output: Output, thickness: float | None = None, assembled: bool = Fal
                 mf.Add(_wire(h, False))
             prism = BRepPrimAPI_MakePrism(mf.Face(), gp_Vec(0, 0, t)).Shape()
             builder.Add(comp, prism)
+        comp = _sunk(comp, [h for h in heads if h[1].part == p.name], t)
         M = where.get(p.name)
         if M is not None:
             comp = _moved(comp, M)
         out.append((p.name, comp))
     return out
+
+
+def _sunk(shape, heads: list, t: float):
+    """``shape`` (a part ``t`` mm thick) less its countersinks' cones and counterbores'
+    cylinders (``heads``: :func:`~..part.part.sink_heads`), exact: a ``CONICAL_SURFACE`` from
+    the hole's circle up to the head's at the top face, a ``CYLINDRICAL_SURFACE`` down a
+    counterbore's depth (each tool from inside the hole to 0.01 mm above the top)."""
+    if not heads:
+        return shape
+    import math
+    from OCP.BRepAlgoAPI import BRepAlgoAPI_Cut
+    from OCP.BRepPrimAPI import BRepPrimAPI_MakeCone, BRepPrimAPI_MakeCylinder
+    from OCP.ShapeFix import ShapeFix_Shape
+    from OCP.gp import gp_Ax2, gp_Dir, gp_Pnt
+    # the prisms' faces oriented as a boolean needs them (a hole's wire as the face's inner
+    # wire: the booleans cut nothing from the prism as made; the file read back is the same)
+    fix = ShapeFix_Shape(shape)
+    fix.Perform()
+    shape = fix.Shape()
+    e = 0.01
+    for (x, y), r in heads:
+        depth = r.cone_depth()
+        if depth <= 0:
+            continue
+        if r.kind == "countersink":
+            k = math.tan(r.angle / 2)
+            low = r.hole_d / 4                  # from inside the hole: no rim on its wall
+            z0 = t - depth - (r.hole_d / 2 - low) / k
+            tool = BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(x, y, z0), gp_Dir(0, 0, 1)), low,
+                                        r.diameter / 2 + e * k, t + e - z0).Shape()
+        else:
+            tool = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x, y, t - depth), gp_Dir(0, 0, 1)),
+                                            r.diameter / 2, depth + e).Shape()
+        shape = BRepAlgoAPI_Cut(shape, tool).Shape()
+    return shape
 
 
 def _moved(shape, M):

@@ -28,6 +28,9 @@ from ..part.part import (PALETTE, Arc, Circle, EllipticArc, Line, Loop, Output, 
                     build)
 
 SHOW = ("holes", "bboxes", "construction")
+# the engrave layers of the heads of countersinks and counterbores (issue 102): their own
+# group (``id``), colour and, in the DXF, layer, so a laser can engrave or skip them
+SINK_STYLES = ("countersink", "counterbore")
 STYLES = ("preview", "laser")
 CHAIN_TOL = 1e-6     # mm: a segment starting this close to the pen continues the subpath
 DIGITS = 9           # decimals of a mm written for lines, arcs and sizes: 1e-9 mm
@@ -200,14 +203,25 @@ def to_svg(output, title: str = "", show=(), style: str = "preview",
     eng = d.g(id="engrave", fill="none", stroke="#0000ff" if laser else "#1565c0",
               stroke_width=_f(hairline if laser else sw), stroke_linecap="round",
               stroke_linejoin="round")
+    sinks: dict = {}
     for st in output.engrave:
         if st.style == "cut":
             continue
         e = _element(d, st.segments, st.closed)
+        if st.style in SINK_STYLES:         # a countersink's head: an engrave layer of its own
+            sinks.setdefault(st.style, []).append(e)
+            continue
         if st.style == "open" and not laser:
             e.update({"stroke": "#ef6c00"})
         eng.add(e)
     d.add(eng)
+    for style in SINK_STYLES:
+        if style in sinks:
+            gk = d.g(id=style, fill="none", stroke="#00a000" if laser else "#2e7d32",
+                     stroke_width=_f(hairline if laser else sw))
+            for e in sinks[style]:
+                gk.add(e)
+            d.add(gk)
     if d0 is not None and "holes" in show and d0.hole_outlines:
         gh = d.g(id="holes", fill="none", stroke="#c62828", stroke_width=_f(sw * 0.8),
                  stroke_dasharray=f"{_f(4 * sw)},{_f(2 * sw)}")

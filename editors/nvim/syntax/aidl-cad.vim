@@ -24,16 +24,17 @@ syntax keyword aidlCadPrimitive SmoothCurve Spline Star Stroke Sweep Text ThickL
 syntax keyword aidlCadPrimitive Trace Trapezoid Triangle Wedge Wire ZigZag convex_hull
 syntax keyword aidlCadConstraint Above AlignBottom AlignCenterX AlignCenterY AlignLeft AlignRight AlignTop AllowOverlap
 syntax keyword aidlCadConstraint Anchor Angle ArrayPattern At AtCorners AtMidpoint AtOffset Below
-syntax keyword aidlCadConstraint Bend CenterInside Centered Chamfer CircularPattern Coincide Coincident Collinear
-syntax keyword aidlCadConstraint Concentric CornerPattern CutInto Diameter Distance DistanceX DistanceY Equal
-syntax keyword aidlCadConstraint EqualLength EqualRadius Fillet Fix Fixed Flip Gap GridPattern
-syntax keyword aidlCadConstraint Horizontal HorizontalDistance HorizontallyCentered Inside IntendedOverlap Join LeftOf Length
-syntax keyword aidlCadConstraint LinearPattern Lock Midpoint Mirror MirrorSymmetric Mirrored Move MoveTogether
-syntax keyword aidlCadConstraint Moved OnArc OnCircle OnLine OnTopOf Orthogonal Over OverlapOK
-syntax keyword aidlCadConstraint Parallel Perpendicular Place PlaceAt PointOnLine Radius RectangularPattern Resize
-syntax keyword aidlCadConstraint Resized RightOf Rigid RigidGroup Same Scale Scaled Shift
-syntax keyword aidlCadConstraint Symmetric Taller Tangent ToTheLeftOf ToTheRightOf Translate Translated Under
-syntax keyword aidlCadConstraint Underneath Vertical VerticalDistance VerticallyCentered Wider Within
+syntax keyword aidlCadConstraint Bend Cbore CenterInside Centered Chamfer CircularPattern Coincide Coincident
+syntax keyword aidlCadConstraint Collinear Concentric CornerPattern CounterBore CounterSink Counterbore Countersink Csink
+syntax keyword aidlCadConstraint CutInto Diameter Distance DistanceX DistanceY Equal EqualLength EqualRadius
+syntax keyword aidlCadConstraint Fillet Fix Fixed Flip Gap GridPattern Horizontal HorizontalDistance
+syntax keyword aidlCadConstraint HorizontallyCentered Inside IntendedOverlap Join LeftOf Length LinearPattern Lock
+syntax keyword aidlCadConstraint Midpoint Mirror MirrorSymmetric Mirrored Move MoveTogether Moved OnArc
+syntax keyword aidlCadConstraint OnCircle OnLine OnTopOf Orthogonal Over OverlapOK Parallel Perpendicular
+syntax keyword aidlCadConstraint Place PlaceAt PointOnLine Radius RectangularPattern Resize Resized RightOf
+syntax keyword aidlCadConstraint Rigid RigidGroup Same Scale Scaled Shift Symmetric Taller
+syntax keyword aidlCadConstraint Tangent ToTheLeftOf ToTheRightOf Translate Translated Under Underneath Vertical
+syntax keyword aidlCadConstraint VerticalDistance VerticallyCentered Wider Within
 syntax match aidlCadConstraint /\<Contains\>/
 syntax keyword aidlCadFunction abs acos asin atan atan2 ceil cos degrees
 syntax keyword aidlCadFunction distance floor len max min mirror norm polar

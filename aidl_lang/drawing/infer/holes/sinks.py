@@ -1,10 +1,11 @@
 """``aidl import --infer``: countersinks and counterbores written with their holes (issue 85,
 "countersink pairs").  A layer of circles named for them (COUNTERSINK, CSK, C-BORE, Spotface:
 :data:`~..chains.layers._SINK_LAYER`) is marked, not cut; a mark concentric with a hole and
-larger than it is the top circle of that hole's countersink.  Each mark is written in its
-hole's statement - its centre the hole's centre as written, its diameter a param
-(``countersink_d``) - so that every edit that moves the holes (the plate's size, an inset, a
-pitch) moves the marks with them; when only some of a pattern's holes are marked (issue 91:
+larger than it is the top circle of that hole's countersink.  Each mark is written with its
+hole's statement - a countersink's as ``Countersink(HOLE, diameter=countersink_d)`` (issue
+102), a counterbore's or spotface's (whose depth the drawing does not give) as a circle at the
+hole's centre as written - its diameter a param, so that every edit that moves the holes (the
+plate's size, an inset, a pitch) moves the marks with them; when only some of a pattern's holes are marked (issue 91:
 three of four corner holes), under an ``if`` naming their turns of the loop (:func:`condition`,
 the turns from :mod:`.turns`).  A mark on no hole stays where the drawing puts it, in the
 layer's ``drawing``.  Lengths in the drawing's unit; the results are program text.
@@ -87,9 +88,9 @@ class Marks:
 
     def write(self, part, depth: int, hn: str, sh: Shape, center: str, groups: list,
               members: list, index=None) -> None:
-        """The marks of hole ``hn`` (Shape ``sh`` at ``center``, program text) as a
-        ``drawing`` beside it in ``part``: a circle at the same centre, its diameter the
-        param of its word, one for each pattern of holes, named by them (``countersink_d``
+        """The marks of hole ``hn`` (Shape ``sh`` at ``center``, program text) beside it in
+        ``part``: ``Countersink(hn, diameter=...)`` for a countersink, else a ``drawing`` of a
+        circle at the same centre; the diameter the param of its word, one for each pattern of holes, named by them (``countersink_d``
         of ``holes``, ``corner_countersink_d`` of ``corner_holes``).  A group marking some
         of ``members`` only is written under ``if`` over the loop's variables
         (``index(Shape)``: ``((variable, value), ...)`` of that member's turn of the loop,
@@ -113,9 +114,12 @@ class Marks:
                 part.w.emit(depth, f"if {cond} {{     # {word}s on {len(marked)} of these "
                                    f"{len(members)} holes, as drawn")
                 d += 1
-            part.w.emit(d, f"drawing {nm} {{ c = Circle(center={center}, "
-                           f"diameter={self.words[key]}) }}")
-            part.w.emit(d, f"Fixed({nm}.c)")
+            if word == "countersink":       # the hole's own countersink (issue 102)
+                part.w.emit(d, f"Countersink({hn}, diameter={self.words[key]})")
+            else:                           # a counterbore's depth is not in the drawing
+                part.w.emit(d, f"drawing {nm} {{ c = Circle(center={center}, "
+                               f"diameter={self.words[key]}) }}")
+                part.w.emit(d, f"Fixed({nm}.c)")
             if cond is not None:
                 part.w.emit(depth, "}")
 

@@ -565,7 +565,7 @@ def eaten_message(e: Eaten, width: float, router: bool) -> tuple[str, str]:
 
 
 def machine_warnings(drawing, cut, design, width, router: bool, sink, given=None,
-                     apart: bool = False) -> None:
+                     apart: bool = False, relief: str = "none") -> None:
     """The warnings of cutting ``cut`` (what the machine gets; ``design``: as drawn) with a
     tool of ``width`` mm (a router's bit, ``router``; else a laser's kerf: mm or a dict part
     name -> mm) into ``sink``, located: W0510 for each part a router's bit cuts into more
@@ -573,7 +573,11 @@ def machine_warnings(drawing, cut, design, width, router: bool, sink, given=None
     through-cut's structure), W0507 for the material beside the through-cuts the tool leaves
     thinner than the minimum wall (``given``: ``--min-wall``, else the program's) or cuts
     away (:func:`eaten_walls`, at the through-cut), the parts of a W0510 not said again.
-    ``drawing``: the booleans' result (the spans, the minimum walls)."""
+    ``drawing``: the booleans' result (the spans, the minimum walls).  A router whose
+    profile has ``relief`` ``none``: W0527 at each part with inside corners the bit does not
+    reach (:func:`~...fabrication.reliefs.unreached`)."""
+    if router and width and relief == "none":
+        _corners(drawing, cut, width, sink)
     if not width or not getattr(drawing, "through", ()):
         return
     split = _splits(drawing, design, width, sink) if router else set()
@@ -588,6 +592,16 @@ def machine_warnings(drawing, cut, design, width, router: bool, sink, given=None
         node = drawing.part_of.get(e.part)
         sink.warning("W0507", said, spans.get(e.cut) or (node.span if node else None),
                      hint=hint)
+
+
+def _corners(drawing, cut, diameter: float, sink) -> None:
+    """W0527 in ``sink`` for each part of ``cut`` with inside corners a router's bit of
+    ``diameter`` mm leaves material in (no relief), at the part's structure."""
+    from ...fabrication.reliefs import RELIEF_HINT, unreached, unreached_message
+    for part, corners in unreached(cut, diameter / 2).items():
+        node = drawing.part_of.get(part) if drawing is not None else None
+        sink.warning("W0527", unreached_message(part, corners, diameter),
+                     node.span if node is not None else None, hint=RELIEF_HINT)
 
 
 def _splits(drawing, output, diameter: float, sink) -> set:

@@ -437,7 +437,8 @@ def describe(output: Output, deadline=None) -> dict:
     ``area`` mm^2, ``outline`` (its outer loops' kinds, :func:`loop_shape`), ``openings``
     (each inner loop's kind, centre and size), ``engravings``, ``symmetry``
     (:func:`symmetries`), ``thickness`` (mm) and ``thickness_set``, ``kerf`` (mm or None),
-    ``notches`` (:func:`notches`), ``through_cuts`` (each cut along a curve of a ``cut``
+    ``notches`` (:func:`notches`), ``sinks`` (when it has any: its countersinks and
+    counterbores, :func:`.inventory.sinks_of`), ``through_cuts`` (each cut along a curve of a ``cut``
     structure: ``{"name", "kind", "from", "to", "length"}``, mm), ``shape`` (its number in
     the parts list), ``same_shape`` (how many parts have that shape, itself included) and
     ``copies``.  A part of the same shape as one described, with no engravings, notches or
@@ -493,7 +494,8 @@ def _describe(output: Output, rows: list[dict], deadline) -> dict:
         engraved = texts_of.get(p.name, [])
         through = _through(strokes_of.get(p.name, ()))
         cut_in = notches(output, p, cuts_within)
-        own = bool(engraved or through or cut_in)
+        sunk = [_sink(sk) for sk in row.get("sinks", ())]
+        own = bool(engraved or through or cut_in or sunk)
         lead = plain.get((row["shape"], material))
         if lead is not None and not own:
             lead["copies"].append({"name": p.name, "box": box})
@@ -509,6 +511,8 @@ def _describe(output: Output, rows: list[dict], deadline) -> dict:
                "thickness": material[0], "thickness_set": material[1], "kerf": material[2],
                "notches": cut_in, "through_cuts": through,
                "shape": row["shape"], "same_shape": row["copies"], "copies": []}
+        if sunk:
+            doc["sinks"] = sunk
         if row["shape"] in first:
             doc["copy_of"] = first[row["shape"]]
         else:
@@ -518,6 +522,13 @@ def _describe(output: Output, rows: list[dict], deadline) -> dict:
         parts.append(doc)
     return {"units": "mm", "parts": parts, "engravings": texts_of.get("", []),
             "count": {"parts": len(rows), "shapes": len({r["shape"] for r in rows})}}
+
+
+def _sink(d: dict) -> dict:
+    """A countersink or counterbore of the parts list (:func:`.inventory.sinks_of`), its
+    numbers rounded as the description's others (1e-3 mm, degrees)."""
+    return {k: (_r(v) if isinstance(v, float) else [_r(x) for x in v] if k == "center"
+                else v) for k, v in d.items()}
 
 
 def _through(strokes) -> list[dict]:
@@ -618,6 +629,11 @@ def describe_text(doc: dict) -> str:
         for c in p.get("through_cuts", ()):
             out.append(f"  through-cut: {c['kind']} `{c['name']}` from {_at(c['from'])} to "
                        f"{_at(c['to'])}, {_n(c['length'])} mm (cut along, no width)")
+        for c in p.get("sinks", ()):
+            how = (f"{_n(c['angle'])} deg cone" if c["kind"] == "countersink" else "flat")
+            out.append(f"  {c['kind']}: d={_n(c['diameter'])} head, {how}, {_n(c['depth'])} mm "
+                       f"deep, on the d={_n(c['hole_d'])} hole `{c['hole']}` at "
+                       f"{_at(c['center'])}")
         for e in p["engravings"]:
             out.append("  engraving: " + _engraving(e))
         if p.get("copy_of"):

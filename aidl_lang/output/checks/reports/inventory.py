@@ -10,6 +10,8 @@ laser-cut part can be turned over, though its engraving would then be mirrored).
 """
 from __future__ import annotations
 
+import math
+
 from ....geometry.shapes.curves import Arc, Circle, EllipticArc, Line
 from ...fabrication.layout import part_box
 from ...part.part import Output, OutputError, PartOutline
@@ -124,7 +126,44 @@ def parts_list(output: Output, deadline=None) -> list[dict]:
                      "perimeter": p.perimeter, "thickness": p.thickness,
                      "holes": sum(1 for lp in p.loops if lp.is_hole),
                      "copies": count[group[i]], "shape": group[i] + 1})
+        sunk = sinks_of(output, p.name)
+        if sunk:
+            rows[-1]["sinks"] = sunk
     return rows
+
+
+def sinks_of(output: Output, part: str) -> list[dict]:
+    """The countersinks and counterbores of part ``part`` (issue 102), one dict per hole:
+    ``kind``, ``hole`` (the hole's Circle), ``center`` [x, y], ``hole_d``, ``diameter`` (the
+    head's), ``depth`` (how deep the head goes), and a countersink's ``angle`` (deg); mm."""
+    out = []
+    for sk in getattr(output.drawing, "sinks", None) or ():
+        if sk.part != part:
+            continue
+        d = {"kind": sk.kind, "hole": sk.hole, "center": list(sk.center),
+             "hole_d": sk.hole_d, "diameter": sk.diameter, "depth": sk.cone_depth()}
+        if sk.kind == "countersink":
+            d["angle"] = math.degrees(sk.angle)
+        out.append(d)
+    return out
+
+
+def sinks_text(rows: list[dict]) -> list[str]:
+    """The parts' countersinks and counterbores in words, one line per part and kind, alike
+    holes counted (``plate: 4 countersinks, 4.5 mm holes, 9 mm heads at 90 deg, 2.25 mm
+    deep``)."""
+    from collections import Counter
+    lines = []
+    for r in rows:
+        seen = Counter((d["kind"], round(d["hole_d"], 6), round(d["diameter"], 6),
+                        round(d.get("angle", 0.0), 6), round(d["depth"], 6))
+                       for d in r.get("sinks", ()))
+        for (kind, hd, dd, ang, depth), n in seen.items():
+            how = f" at {ang:g} deg" if kind == "countersink" else ""
+            lines.append(f"{r['path']}: {n} {kind}{'s' if n != 1 else ''}, {hd:g} mm "
+                         f"hole{'s' if n != 1 else ''}, {dd:g} mm head{'s' if n != 1 else ''}"
+                         f"{how}, {depth:.4g} mm deep")
+    return lines
 
 
 def _groups(output: Output, deadline) -> list[int]:
@@ -168,4 +207,7 @@ def parts_text(rows: list[dict]) -> str:
     shapes = len({r["shape"] for r in rows})
     lines.append(f"{len(rows)} part{'s' if len(rows) != 1 else ''}, {shapes} "
                  f"shape{'s' if shapes != 1 else ''}")
+    sunk = sinks_text(rows)
+    if sunk:
+        lines += ["countersinks and counterbores:", *(f"  {x}" for x in sunk)]
     return "\n".join(lines)

@@ -32,7 +32,7 @@ from ..edges.exact import Provenance
 from ..measure.nearby import faces_apart, meeting
 from .outlines import _shoelace, _weld
 from .placement import bends_of, placement_matrix
-from .result import Cut, Drawing, Part, Through
+from .result import Cut, Drawing, Part, SinkAt, Through
 from .scanwork import TURN, TURN_BACK, plan, turned, turned_back, union_seconds
 from .faces import Faces, _dist
 
@@ -723,7 +723,30 @@ class Renderer(Faces):
         if any(getattr(s, "placement", None) is not None for s in self.m.structures):
             out.placement = {name: placement_matrix(s, self.x) for name, s in out.part_of.items()}
         out.bends = {n: b for n, s in out.part_of.items() if (b := bends_of(s, self.x))}
+        out.sinks = self.sinks(out)
         return out
+
+    def sinks(self, out: Drawing) -> list[SinkAt]:
+        """Each round hole a ``Countersink`` / ``Counterbore`` names, at its solved place:
+        :class:`~.result.SinkAt` (its part: the solid the hole cuts)."""
+        if not getattr(self.m, "sinks", None):
+            return []
+        part = {}
+        for name, s in out.part_of.items():
+            part.setdefault(id(s), name)
+        got = []
+        for sk in self.m.sinks:
+            for g in sk.circles:
+                st = g.owner
+                owner = st.cuts_into if st.cuts_into is not None else st
+                name = next((part[id(a)] for a in [owner, *owner.ancestors()]
+                             if id(a) in part), None)
+                if name is None:
+                    continue
+                r = abs(self.x[g.scalars["radius"].index])
+                got.append(SinkAt(sk.kind, name, g.label, self._pt(g.points["center"]),
+                                  2 * float(r), sk.diameter, sk.angle, sk.depth, sk.span))
+        return got
 
 
 def _units(segs: list) -> list:

@@ -4,6 +4,8 @@ part's final shape), a :class:`Cut` (a hole or cut and the part it cuts), a :cla
 checks, the exact outlines and the writers read."""
 from __future__ import annotations
 
+import math
+
 import manifold3d as mf
 import numpy as np
 
@@ -62,6 +64,28 @@ class Through(Compared):
         self.along = along
         # the pieces judged one by one: its segments, an open Spline's (Bezier's) by span
         self.units = segments if units is None else units
+
+
+class SinkAt(Compared):
+    """A countersink or counterbore at one round hole (issue 102): ``kind`` (countersink |
+    counterbore), ``part`` (the part's name), ``hole`` (the hole's Circle, its label),
+    ``center`` (x, y mm, sheet frame), ``hole_d`` and ``diameter`` (the hole's and the
+    head's, mm), ``angle`` (a countersink's included angle, radians), ``depth`` (a
+    counterbore's, mm); ``span``: the call."""
+    __slots__ = ("kind", "part", "hole", "center", "hole_d", "diameter", "angle", "depth",
+                 "span")
+
+    def __init__(self, kind, part, hole, center, hole_d, diameter, angle, depth, span):
+        self.kind, self.part, self.hole, self.center = kind, part, hole, tuple(center)
+        self.hole_d, self.diameter, self.angle, self.depth = hole_d, diameter, angle, depth
+        self.span = span
+
+    def cone_depth(self) -> float:
+        """How deep the head goes (mm): a countersink's cone from the head's diameter down
+        to the hole's (``(D - d) / 2 / tan(angle / 2)``), a counterbore's depth."""
+        if self.kind == "counterbore":
+            return float(self.depth)
+        return max(0.0, (self.diameter - self.hole_d) / 2 / math.tan(self.angle / 2))
 
 
 class Drawing(Compared):

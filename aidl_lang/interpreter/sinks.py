@@ -1,0 +1,92 @@
+"""``Countersink`` and ``Counterbore`` (issue 102): the call checked and recorded on the
+model (:class:`~..geometry.core.model.Sink`); the outputs cut them after the solve."""
+from __future__ import annotations
+
+import math
+
+from ..base.diagnostics import EvalError
+from ..base.limits import MAX_EXTENT
+from ..geometry.core.values import ANG, LEN, NUM, GeomRef, Q, StructRef, angle_scale, type_name
+from .common import DEG, _a
+
+
+def sink_call(interp, cname: str, conv, node, spans):
+    """``Countersink(hole, diameter, angle)`` / ``Counterbore(hole, diameter, depth)``
+    (issue 102): the round holes named (a hole structure's Circles, a Circle of a hole,
+    or a list of these: a pattern) get a head recorded on the model
+    (:class:`~..geometry.core.model.Sink`), cut by the outputs after the solve.  The
+    sizes are known before solving; else a located E0109, and E0108 for what is no
+    round hole or a size out of range."""
+    from ..geometry.core.model import Sink
+    hspan = spans.get("hole", node.span)
+    eg = ("Countersink(holes, diameter=9 mm)" if cname == "Countersink"
+          else "Counterbore(holes, diameter=10 mm, depth=5 mm)")
+    circles: list = []
+
+    def take(v) -> None:
+        if isinstance(v, (list, tuple)):
+            for item in v:
+                take(item)
+            return
+        if isinstance(v, GeomRef) and v.geom.kind == "Circle" and \
+                v.geom.owner.kind == "hole":
+            circles.append(v.geom)
+            return
+        if isinstance(v, StructRef) and v.struct.kind == "hole":
+            found = [g for st in [v.struct, *_descendants(v.struct)] for g in st.geometry
+                     if g.kind == "Circle" and not g.construction]
+            if found:
+                circles.extend(found)
+                return
+            raise EvalError("E0108", f"`{cname}` sinks round holes: hole "
+                            f"`{v.struct.path}` has no Circle", hspan,
+                            hint=f"draw the hole as a Circle, then `{eg}`")
+        raise EvalError("E0108", f"`{cname}` sinks a round hole (a hole structure with a "
+                        f"Circle, a Circle of one, or a list of them), got "
+                        f"{_a(type_name(v))}", hspan,
+                        hint=f"name the hole: `hole holes {{ c = Circle(center=(10, 10), "
+                             f"diameter=4.5 mm) }}` then `{eg}`")
+    take(conv["hole"])
+    vals = {}
+    for k, dim in (("diameter", LEN), ("angle", ANG), ("depth", LEN)):
+        q = conv.get(k)
+        if q is None:
+            continue
+        sp = spans.get(k, node.span)
+        c = q.const() if isinstance(q, Q) and q.dim in (dim, NUM) else None
+        if c is None:
+            raise EvalError("E0109", f"`{k}` of `{cname}` must be "
+                            f"{'an angle' if dim is ANG else 'a length'} known before "
+                            "solving", sp, hint=f"use numbers and params: `{eg}`")
+        scale = 1.0 if q.dim == dim else ((interp.file.unit_scale if interp.file else 1.0)
+                                          if dim is LEN else angle_scale(q, DEG))
+        vals[k] = float(c) * scale
+    if not 0 < vals["diameter"] <= MAX_EXTENT:
+        raise EvalError("E0108", f"the `diameter` of `{cname}` is {vals['diameter']:g} mm: "
+                        "the head's diameter is above 0", spans.get("diameter", node.span),
+                        hint=f"write e.g. `{eg}`")
+    angle = vals.get("angle")
+    if angle is not None and not math.radians(30) <= angle <= math.radians(150):
+        raise EvalError("E0108", f"the `angle` of `Countersink` is "
+                        f"{math.degrees(angle):g} deg: a countersink's included angle is "
+                        "from 30 to 150 deg (90 deg for metric flat-head screws, 82 deg "
+                        "for inch)", spans.get("angle", node.span),
+                        hint="write `angle=90 deg`, or leave it out (90 deg)")
+    depth = vals.get("depth")
+    if depth is not None and not 0 < depth <= MAX_EXTENT:
+        raise EvalError("E0108", f"the `depth` of `Counterbore` is {depth:g} mm: a "
+                        "counterbore is more than 0 deep", spans.get("depth", node.span),
+                        hint=f"write e.g. `{eg}`")
+    interp.model.sinks.append(Sink(cname.lower(), circles, vals["diameter"], angle, depth,
+                                 node.span))
+    return None
+
+
+def _descendants(s) -> list:
+    """Every structure under ``s`` (its children, theirs, ...)."""
+    out, todo = [], list(s.children.values())
+    while todo:
+        c = todo.pop()
+        out.append(c)
+        todo.extend(c.children.values())
+    return out
