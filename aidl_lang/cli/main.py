@@ -250,7 +250,7 @@ def _sheet_names(outs: list[Path], n: int) -> list[list[Path]]:
 
 
 STDOUT = Path("-")           # `-o -`: standard output (no file name: it has no extension)
-NOT_REGULAR_HINT = "choose another path, or `-o -` to write to standard output"
+from .importing import NOT_REGULAR_HINT  # noqa: E402  (the outputs' hint; one place)
 
 
 def _stdout_format(args, outs: list[Path]) -> int | None:
@@ -709,73 +709,9 @@ def cmd_docs(args) -> int:
     return 0
 
 
-def cmd_import(args) -> int:
-    """``aidl import FILE -o PART.aidl``: exit 0 written, 1 refused (a located message on
-    stderr, nothing written)."""
-    from ..drawing.infer import import_drawing
-    from ..drawing.model import DrawingError
-    from ..host.files import FileRefused, read_file
-    from ..library.sources import MAX_DRAWING_BYTES
-    from ..base.limits import Work
-    src = args.file
-    work = Work(_budget(args).work)
-    as_json = getattr(args, "json", False)
-
-    def said(ok: bool, diagnostics=(), notes=(), output=None) -> None:
-        if as_json:          # one JSON document on stdout (the program goes to the file)
-            print(json.dumps({"ok": ok, "output": output, "diagnostics": list(diagnostics),
-                              "notes": [{"code": n.code, "message": n.message, "hint": n.hint}
-                                        for n in notes], "work": work.to_json()}, indent=2))
-    try:
-        data = read_file(src, MAX_DRAWING_BYTES)
-        def sel(v):
-            return None if v is None else [int(x) if x.strip().isdigit() else x for x in v]
-        text, notes = import_drawing(data, src, unit=args.units, layer=args.layer,
-                                     parts=args.parts, close_tolerance=args.close_tolerance,
-                                     cut=sel(args.cut), engrave=sel(args.engrave),
-                                     ignore=sel(args.ignore), roles=args.roles,
-                                     budget=_budget(args), infer=args.infer,
-                                     snap=args.snap, work=work)
-    except (OSError, FileRefused) as ex:
-        msg = f"cannot read `{src}`: {getattr(ex, 'message', None) or ex.strerror or ex}"
-        print(f"{src}: error[E0130]: {msg}", file=sys.stderr)
-        said(False, [{"code": "E0130", "message": msg, "hint": None, "line": None}])
-        return 1
-    except DrawingError as ex:
-        at = f"{src}:{ex.line}" if ex.line else src        # a DXF entity's line
-        print(f"{at}: error[{ex.code}]: {ex.message}" + (f"\n  = help: {ex.hint}" if ex.hint else ""),
-              file=sys.stderr)
-        said(False, [{"code": ex.code, "message": ex.message, "hint": ex.hint,
-                      "line": ex.line}])
-        return 1
-    for n in notes:
-        print(f"{src}: warning[{n.code}]: {n.message}" + (f"\n  = help: {n.hint}" if n.hint else ""),
-              file=sys.stderr)
-    out = args.output or os.path.splitext(src)[0] + ".aidl"
-    if out == "-":
-        if as_json:
-            said(True, notes=notes, output="-")
-        else:
-            sys.stdout.write(text)
-        return 0
-    from ..output.writers.write import write_in_dir
-    folder, base = os.path.split(os.path.abspath(out))
-    try:
-        dfd = os.open(folder, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
-        try:
-            # never over a link, a FIFO or a device such as /dev/null (NotRegularFile)
-            write_in_dir(dfd, base, text.encode("utf-8"), out, NOT_REGULAR_HINT)
-        finally:
-            os.close(dfd)
-    except OSError as ex:            # FileRefused, NotRegularFile: their message says it all
-        why = str(ex) if isinstance(ex, FileRefused) or not ex.strerror else \
-            f"cannot write `{out}`: {ex.strerror}"
-        print(f"aidl: error: {why}", file=sys.stderr)
-        said(False, [{"code": None, "message": why, "hint": None, "line": None}], notes)
-        return 1
-    print(f"wrote {out}", file=sys.stderr)
-    said(True, notes=notes, output=out)
-    return 0
+def _cmd_import(args) -> int:
+    from .importing import cmd_import
+    return cmd_import(args, _budget(args))
 
 
 def cmd_fmt(args) -> int:
@@ -910,7 +846,7 @@ def main(argv: list[str] | None = None, cap_memory: bool = False) -> int:
         run = {"check": cmd_check, "render": cmd_render, "parts": cmd_parts,
                "explain": cmd_explain, "docs": cmd_docs,
                "fmt": cmd_fmt, "set": cmd_set, "lsp": cmd_lsp, "serve": cmd_serve, "studio": cmd_studio, "mcp": cmd_mcp,
-               "batch": cmd_batch, "import": cmd_import}.get(args.cmd)
+               "batch": cmd_batch, "import": _cmd_import}.get(args.cmd)
         if run is None:
             from .llm import COMMANDS
             run = COMMANDS[args.cmd]
