@@ -70,6 +70,8 @@ def _one(ctx, kind, args, target, name, i: int, indexed: bool):
                 cloners=cloners)
     if in_place and op == "Scaled":
         _carry_relations(ctx, target, cloners[0])
+        made = out.struct if isinstance(out, StructRef) else out.geom
+        made.scaled_in_place = k              # said by W0504's hint
         if isinstance(out, GeomRef):          # it and its original move as one shape
             out.geom.in_place_of = target.geom
     return _finish(ctx, out, target, in_place, name)

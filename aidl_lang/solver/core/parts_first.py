@@ -49,7 +49,7 @@ class PartsFirst:
         top = next(stages, None)
         if top is None:
             return False
-        ranks = _who_moves(s)[1] if len(s.children) > 2 else []
+        ranks = _who_moves(s)[1] if len(s.children) > 1 else []
         for k in range(1, len(ranks)):    # a chain: each placed on its reference in turn
             yield from self._place_rank(s, local, order, held, ranks, k, frames)
         if (yield Attempt("features", top[0], top[1], top[2], order=order)):

@@ -81,7 +81,8 @@ def _shape_ranks(s: Structure, mine: set) -> tuple[list, list]:
     list), and ``ranks[k]`` the unknowns of the shapes placed on the references and on
     ranks below ``k`` (``ranks[0]``: on references only); a shape in a cycle of relations
     is in none.  A shape is one of ``s``'s listed geometries, those sharing an unknown
-    (a Triangle through a Rectangle's corners) one; the arguments are read off each written
+    (a Triangle through a Rectangle's corners) one, and a shape scaled in place one with its
+    original; the arguments are read off each written
     constraint's parameters (``Constraint.reach``: ``At(ear.center, head.center)`` relates
     ear to head), so an equation's two sides are its arguments here too."""
     cons = [c for c in s.constraints if c.reach is not None]
@@ -98,6 +99,9 @@ def _shape_ranks(s: Structure, mine: set) -> tuple[list, list]:
     for g in s.geometry:                # one shape per geometry, joined where they share
         vs: set = set()
         _unknowns(g, vs)
+        was = g.__dict__.get("in_place_of")
+        if was is not None:             # Scale(ear, 1.5): the copy moves with its original
+            _unknowns(was, vs)
         root = None
         for v in vs:
             parent.setdefault(v, v)
