@@ -77,6 +77,23 @@ def _one(ctx, kind, args, target, name, i: int, indexed: bool):
     return _finish(ctx, out, target, in_place, name)
 
 
+def _mark_replaced(target) -> None:
+    """The original of a change in place keeps its box: its drawn geometry, made construction
+    next, still counts in the box of the original itself (``plaque_original.bb``, and a
+    constraint on its size written before the change, ``plaque.bb.width == 20``, which stays
+    on it), not in the boxes of the structures around it (``bbox._candidates``)."""
+    if isinstance(target, GeomRef):
+        return
+    todo = [target.struct]
+    while todo:
+        s = todo.pop()
+        s.replaced = True
+        for g in s.geometry:
+            if not g.construction:
+                g.replaced = True
+        todo += s.children.values()
+
+
 def _own_centre(ctx, target) -> PV:
     """The centre ``Scale`` scales ``target`` about when no ``center=`` is given: its
     bounding box's centre as written (the starting values), in the frame of the structure
@@ -254,6 +271,7 @@ def _finish(ctx, out, target, in_place: bool, old: str | None = None):
     shape's copy takes its name."""
     if not in_place:
         return out
+    _mark_replaced(target)
     _as_construction(target)
     if isinstance(out, GeomRef) and old:
         out.geom.name = old

@@ -190,9 +190,13 @@ def _candidates(target, frame, x, exclude: set, offs: dict) -> tuple[list, list]
     xs: list = []
     ys: list = []
     if isinstance(target, Structure):
+        # the original of a structure changed in place (`plaque_original`, its shapes made
+        # construction by Scale, Translate, Flip) keeps its own box: its drawn shapes count
+        # in it, and in nothing around it
+        kept = target.__dict__.get("replaced", False)
         for s in _subtree(target, exclude, top=target):
             for g in s.geometry:
-                if not g.construction:
+                if not g.construction or kept and g.__dict__.get("replaced", False):
                     _geom_candidates(g, frame, x, xs, ys, offs)
     else:
         _geom_candidates(target, frame, x, xs, ys, offs)
