@@ -289,3 +289,36 @@ solid cat {
     assert v["cat.ear.radius"] == pytest.approx(4.5, abs=1e-9)
     assert v["cat.head.center"] == pytest.approx((15, 12), abs=1e-9)
     assert v["cat.body.center"] == pytest.approx((0, 0), abs=1e-9)
+
+
+def _law_kinds():
+    from test_who_moves import KINDS
+    from aidl_lang import registry
+    return sorted(k for k in KINDS if registry.lookup(k).category != "operation")
+
+
+@pytest.mark.parametrize("kind", _law_kinds())
+@LAWS
+@given(data=st.data())
+def test_law_a_relation_written_before_scale_is_one_written_after_it(kind, data):
+    """Every relating constraint of the registry (tests/test_who_moves.py's kinds, less the
+    operations): a part, a feature (a hole, a child solid) related to it, then `Scale(h, k)`
+    -- the scaled feature ends exactly where the same relation written after the `Scale`
+    (naming the scaled one) puts it: the relation carries to the scaled copy."""
+    from test_who_moves import programs
+    src, *_ = data.draw(programs(kind).filter(lambda c: "LinearPattern" not in c[0]))
+    k = data.draw(st.sampled_from([0.5, 1.5]))
+    rel = src.splitlines()[-2]
+    assert rel.startswith("    ") and "h" in rel
+    before = src.replace(rel, f"{rel}\n    Scale(h, {k})")
+    after = src.replace(rel, f"    Scale(h, {k})\n{rel}")
+
+    def feature(text):
+        r = aidl_lang.compile(source=text)
+        assert r.ok, (text, [(d.code, d.message) for d in r.errors])
+        return {x.name: x.mm for x in r.values if x.name.startswith("plate.h.")
+                and x.name.endswith((".center", ".radius"))}
+    got, want = feature(before), feature(after)
+    assert got.keys() == want.keys() and len(got) >= 2
+    for name, v in want.items():
+        assert got[name] == pytest.approx(v, abs=1e-9), (name, before)
