@@ -115,7 +115,8 @@ class PartsFirst:
         :meth:`_features_first` freed every shape, and the substitution started each class
         of unknowns at its members' mean: the ear moved 0.67 mm, everything else 0.33 mm
         the other way).  A rank whose rows all hold ends at once; one that fails changes
-        nothing, and the stages after it run as before.  A generator like
+        nothing, and the stages after it run as before; ranks whose relations determine
+        their shapes go together.  A generator like
         :meth:`~.hierarchy.Solver.steps`."""
         mine = own([s])
         if not mine:
@@ -141,12 +142,38 @@ class PartsFirst:
                         top = k
             if top >= 0:
                 picks[top].append(r)
+        # consecutive ranks whose rows are at least as many as their unknowns (each shape
+        # determined by its relations once the ranks below are placed: `At`, a chain of
+        # rectangles by their corners) go in one attempt, whose solution is then the same;
+        # a rank with fewer rows (`AlignCenterY(ear, head)` leaves the ear's x) goes alone,
+        # so that a shape above it cannot give way to it
+        group: list = []                    # [first rank, rows, unknowns]
         for k, pick in enumerate(picks):
             if self.trace.budget_exceeded:
                 return
-            if pick:
-                rows = np.asarray(pick, dtype=np.int64)
-                yield Attempt("shape rank", k, rows, self._cols(ranks[k], rows), order=order)
+            if not pick:
+                continue
+            sl = self.slack[np.asarray(pick, dtype=np.int64)]
+            determined = len(pick) >= len(ranks[k]) + int(np.count_nonzero(sl >= 0))
+            if group and not determined:
+                yield self._shape_rank(group, order)
+                group = []
+            if group:
+                group[1] += pick
+                group[2] += ranks[k]
+            else:
+                group = [k, list(pick), list(ranks[k])]
+            if not determined:
+                yield self._shape_rank(group, order)
+                group = []
+        if group and not self.trace.budget_exceeded:
+            yield self._shape_rank(group, order)
+
+    def _shape_rank(self, group: list, order: int) -> Attempt:
+        """The attempt of :meth:`_place_shapes` for ``group``: [first rank, rows, unknowns]."""
+        k, pick, cols = group
+        rows = np.asarray(sorted(pick), dtype=np.int64)
+        return Attempt("shape rank", k, rows, self._cols(cols, rows), order=order)
 
     def _subtree_unknowns(self, c: Structure) -> list:
         return [i for t in c.subtree() for i in self.frame.get(id(t), ()) +
