@@ -12,8 +12,8 @@ structures (solids and holes, each with a chain of its own), each relation writt
 0.1-5 mm or not at all: every shape ends where its relation puts it from its reference's
 final place, on the axes the relation places, and where written on the others -- so
 whatever is not first-named in a relation that is off (nor placed on one that moves) stays
-where written, to 1e-9 mm.  (~5 s CPU; 2,500 programs pass, and none of the first three did
-before issue 105.)
+where written, to 1e-9 mm.  (~5 s CPU; of the first 200 programs drawn, 53 broke the rule
+before issue 105, none after; 2,500 pass.)
 Compiled through the public API; positions read back from ``Result.values``."""
 from __future__ import annotations
 
