@@ -9,8 +9,14 @@ the original's name (in the structure and, for a name written alone, in the prog
 so the statements after it reach it) and the original becomes construction under the name
 ``NAME_original`` -- solved and referable, never drawn, as the template of a
 ``CircularPattern(..., start_angle=)``.  So ``Scale(plaque, 0.7)`` after a plaque's block
-makes the drawn plaque 30 % smaller about ``center`` (the origin unless given), every size
-and position of it, holes, fillets and text included.
+makes the drawn plaque 30 % smaller, every size and position of it, holes, fillets and text
+included, about ``center``: for ``Scale``, the thing's own centre unless given (its bounding
+box's centre as written; issue 105), for ``Scaled`` the origin.  ``Scale`` also carries the
+constraints that place the thing, written before it outside it, to the scaled copy
+(:func:`_carry_relations`): ``Scale(star, 1.5)`` after ``At(star.s.center, tree.body.center,
+dy=45)`` keeps the star's centre where the ``At`` puts it; the original keeps its own box
+(``bbox._candidates``), so a size written before stays on it and the copy is that size
+scaled.
 """
 from __future__ import annotations
 
