@@ -425,9 +425,10 @@ _DEFS = {
     "Scaled": _c(_SCALE_ARGS, cat="operation",
                  doc="A copy scaled by factor about center (the origin unless given)."),
     "Scale": _c(_SCALE_ARGS, cat="operation",
-                doc="Resize a whole structure or shape in place, never by rewriting its "
-                    "numbers: `Scale(plaque, 0.7)` is 30 % smaller (the original: construction "
-                    "`plaque_original`)."),
+                doc="Resize a whole structure or shape in place about its own centre (its "
+                    "box's, unless center=), never by rewriting its numbers: `Scale(plaque, "
+                    "0.7)` is 30 % smaller; the constraints that placed it place the scaled one "
+                    "(the original: construction `plaque_original`)."),
     "Translated": _op("A copy moved by the vector by.",
                       A("by", "point")),
     "Translate": _op("Move a structure or shape in place by the vector by.",

@@ -174,3 +174,151 @@ def test_a_synonym_is_its_transform(syn, canon, args):
         return sorted((p.name, _box(p)) for p in r.output.parts)
     want = parts(canon)
     assert parts(syn) == want and len(want) >= 1
+
+
+# ---------------------------------------------------------------- issue 105: Scale in place
+STAR_ON_TREE = """units mm
+{kind} card {{
+    solid tree {{
+        body = Triangle(center=(0, 0), base=60, height=80)
+    }}
+    solid star {{
+        s = Star(center=(10, 60), points=5, outer_radius=8, inner_radius=4)
+    }}
+    At(star.s.center, tree.body.center, dy={dy})
+    Scale(star, {k})
+}}
+"""
+
+
+def _star_tips(r, name="card.star.s"):
+    v = {x.name: x.mm for x in r.values}
+    c = v[f"{name}.center"]
+    return c, [math.dist(v[f"{name}.p{i}"], c) for i in range(0, 10, 2)]
+
+
+@pytest.mark.parametrize("kind", ["assembly", "solid"])
+def test_the_issues_star_scaled_after_its_at_keeps_the_centre_the_at_gave_it(kind):
+    """`Scale(star, 1.5)` after `At(star.s.center, tree.body.center, dy=45)`: the scaled star
+    is the one placed, its centre at (0, 45) and its tips 12 mm out (before: scaled about
+    the origin, the `At` held the hidden original and the star's centre was at (0, 67.5),
+    off the tree: W0504 in a solid, whose hint added a second placement)."""
+    r = aidl_lang.compile(source=STAR_ON_TREE.format(kind=kind, dy=45, k=1.5))
+    assert r.ok and "W0504" not in [d.code for d in r.diagnostics]
+    c, tips = _star_tips(r)
+    assert c == pytest.approx((0, 45), abs=1e-9)
+    assert tips == pytest.approx([12] * 5, abs=1e-9)
+    drawn = {p.name for p in r.output.parts}
+    assert not any("star_original" in n for n in drawn)
+
+
+def test_a_scaled_star_that_falls_off_says_to_change_its_placement_not_add_one():
+    r = aidl_lang.compile(source=STAR_ON_TREE.format(kind="solid", dy=52, k=0.5))
+    [w] = [d for d in r.diagnostics if d.code == "W0504"]
+    assert "`card.star` is scaled in place (`Scale`, factor 0.5) about its own centre" in w.hint
+    assert "not by adding a second placement" in w.hint and "Above(" not in w.hint
+    assert _star_tips(r)[0] == pytest.approx((0, 52), abs=1e-9)
+
+
+def test_scale_keeps_a_things_own_centre_and_scaled_keeps_the_origin():
+    """Nothing places them: `Scale` of a shape and of a structure (its box: the ring and a
+    hole poking out of it) keeps the box's centre where it is written; `Scaled` without
+    `center=` scales about the origin (issue 95's default)."""
+    src = """units mm
+assembly a {
+    solid ring {
+        o = Circle(center=(40, 10), radius=10)
+        hole h { c = Circle(center=(50, 10), radius=4) }
+    }
+    solid dot { d = Circle(center=(-30, 5), radius=2) }
+    solid far { f = Rectangle(center=(20, -40), width=10, height=6) }
+    Scale(ring, 2)
+    Scale(dot.d, 3)
+    twice = Scaled(far, 2)
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [(d.code, d.message) for d in r.errors]
+    v = {x.name: x.mm for x in r.values}
+    # the ring's box: x from 30 to 54 (the hole pokes 4 mm out), y from 0 to 20: centre (42, 10)
+    assert v["a.ring.o.center"] == pytest.approx((42 + 2 * (40 - 42), 10), abs=1e-9)
+    assert v["a.ring.h.c.center"] == pytest.approx((42 + 2 * (50 - 42), 10), abs=1e-9)
+    assert v["a.ring.o.radius"] == pytest.approx(20, abs=1e-9)
+    assert v["a.dot.d.center"] == pytest.approx((-30, 5), abs=1e-9)
+    assert v["a.dot.d.radius"] == pytest.approx(6, abs=1e-9)
+    assert v["a.twice.f.center"] == pytest.approx((40, -80), abs=1e-9)
+
+
+def test_what_places_it_carries_to_the_scaled_copy_and_its_size_stays_the_originals():
+    """Written before the `Scale`, outside the thing: `plate.bb.left == 5` places it (its
+    residual changes when the plate moves), so it holds on the scaled plate; `plate.bb.width
+    == 20` sizes it, so it stays on the original and the drawn plate is 2 x 20 mm wide."""
+    src = """units mm
+assembly a {
+    solid plate { r = Rectangle(corner=(0, 0), opposite=(10, 8)) }
+    plate.bb.width == 20
+    plate.bb.left == 5
+    Scale(plate, 2)
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [(d.code, d.message) for d in r.errors]
+    [part] = [p for p in r.output.parts if p.name == "a.plate"]
+    x0, x1, y0, y1 = _box(part)
+    assert (x0, x1 - x0) == pytest.approx((5, 40), abs=1e-9)
+    assert y1 - y0 == pytest.approx(16, abs=1e-9)
+
+
+def test_a_shape_scaled_in_place_is_placed_on_its_reference():
+    """`Scale(ear, 1.5)` after `At(ear.center, head.center, dx=-3, dy=6)` (the ear written 1
+    mm off): the scaled ear goes to its place on the head; the head and body stay."""
+    src = """units mm
+solid cat {
+    body = Ellipse(center=(0, 0), rx=20, ry=15)
+    head = Circle(center=(15, 12), radius=8)
+    ear = Circle(center=(12, 19), radius=3)
+    At(head.center, body.center, dx=15, dy=12)
+    At(ear.center, head.center, dx=-3, dy=6)
+    Scale(ear, 1.5)
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok
+    v = {x.name: x.mm for x in r.values}
+    assert v["cat.ear.center"] == pytest.approx((12, 18), abs=1e-9)
+    assert v["cat.ear.radius"] == pytest.approx(4.5, abs=1e-9)
+    assert v["cat.head.center"] == pytest.approx((15, 12), abs=1e-9)
+    assert v["cat.body.center"] == pytest.approx((0, 0), abs=1e-9)
+
+
+def _law_kinds():
+    from test_who_moves import KINDS
+    from aidl_lang import registry
+    return sorted(k for k in KINDS if registry.lookup(k).category != "operation")
+
+
+@pytest.mark.parametrize("kind", _law_kinds())
+@LAWS
+@given(data=st.data())
+def test_law_a_relation_written_before_scale_is_one_written_after_it(kind, data):
+    """Every relating constraint of the registry (tests/test_who_moves.py's kinds, less the
+    operations): a part, a feature (a hole, a child solid) related to it, then `Scale(h, k)`
+    -- the scaled feature ends exactly where the same relation written after the `Scale`
+    (naming the scaled one) puts it: the relation carries to the scaled copy."""
+    from test_who_moves import programs
+    src, *_ = data.draw(programs(kind).filter(lambda c: "LinearPattern" not in c[0]))
+    k = data.draw(st.sampled_from([0.5, 1.5]))
+    rel = src.splitlines()[-2]
+    assert rel.startswith("    ") and "h" in rel
+    before = src.replace(rel, f"{rel}\n    Scale(h, {k})")
+    after = src.replace(rel, f"    Scale(h, {k})\n{rel}")
+
+    def feature(text):
+        r = aidl_lang.compile(source=text)
+        assert r.ok, (text, [(d.code, d.message) for d in r.errors])
+        return {x.name: x.mm for x in r.values if x.name.startswith("plate.h.")
+                and x.name.endswith((".center", ".radius"))}
+    got, want = feature(before), feature(after)
+    assert got.keys() == want.keys() and len(got) >= 2
+    for name, v in want.items():
+        assert got[name] == pytest.approx(v, abs=1e-9), (name, before)

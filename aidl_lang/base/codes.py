@@ -557,6 +557,9 @@ that holds as drawn, the smaller piece first (it moves), `Below(foot, body, gap=
 When a hole cuts one shape apart (a slot across a strip, a ring of overlapping arc slots
 around a hub), the warning names the hole(s) and the shape, and the hint says to move,
 shorten or shrink them: an `assembly` there would ship a part in pieces.
+When a piece is scaled in place (`Scale(star, 0.5)`), the hint says so: it is scaled about
+its own centre and stays where its constraints place it (they carry to the scaled copy), so
+the pieces are joined by changing that placement or the factor, not by a second placement.
 """),
     "W0505": ("engraving off the material", """
 A drawing inside a solid part runs outside the part's outline or across one of its holes, where

@@ -8,6 +8,7 @@ import math
 
 from .. import ast as A
 from ..base.diagnostics import EvalError, did_you_mean, shown_path
+from ..geometry.relations.bbox import reach as bbox_reach
 from ..geometry.relations.constraints import BUILDERS, ConstraintError
 from ..geometry.core.expr import Lin, _lin, _new, as_const, func, lift, mul, var
 from ..geometry.relations.members import member as geom_member
@@ -196,7 +197,9 @@ class Calls:
         except UnitError as ex:
             raise EvalError("E0109", str(ex), node.span)
         args = [owners_of(v) for v in conv.values()] if len(owners) > 1 else None
-        self._add_constraint(cname, eqs, node.span, None, owners, args)
+        # who moves between shapes of one structure: what each argument reads
+        reach = bbox_reach(conv.values()) if len(owners) == 1 else None
+        self._add_constraint(cname, eqs, node.span, None, owners, args, reach)
         return None
 
     def _rebind(self, name: str, value) -> None:

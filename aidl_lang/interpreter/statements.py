@@ -9,7 +9,7 @@ from pathlib import Path
 
 from .. import ast as A
 from ..base.diagnostics import EvalError, Span, did_you_mean
-from ..geometry.relations.bbox import contains_bbox
+from ..geometry.relations.bbox import contains_bbox, reach as bbox_reach
 from ..geometry.core.model import Constraint, Equation, Model, Structure
 from ..geometry.relations.members import member as geom_member
 from ..geometry.core.expr import Lin, _new
@@ -744,10 +744,12 @@ class Statements:
 
     # ------------------------------------------------------------------ constraints
     def _add_constraint(self, kind: str, eqs: list[Equation], span, text: str | None,
-                        owners, args=None) -> None:
+                        owners, args=None, reach=None) -> None:
         """Add a written constraint to the structure being run (``text`` None: the source
         text at ``span``, cut when first read; see ``Constraint.text``).  ``args``: the
-        structures each argument reaches, in the order written (``Constraint.args``)."""
+        structures each argument reaches, in the order written (``Constraint.args``);
+        ``reach``: the parameters each reads, for a constraint within one structure
+        (``Constraint.reach``)."""
         s = self.struct
         if s is None:
             s = self._need_struct(span)
@@ -776,6 +778,7 @@ class Statements:
             c._text = text
         c.implicit = c.hold = c.released = False
         c.args = args
+        c.reach = reach
         s.constraints.append(c)
         self.model.constraints.append(c)
 
@@ -808,7 +811,8 @@ class Statements:
             # constraint like an Align*: the first-named side moves to the second
             owners = owners_of(l, r)
             self._add_constraint("equation", eqs, e.span, None, owners,
-                                 [owners_of(l), owners_of(r)] if len(owners) > 1 else None)
+                                 [owners_of(l), owners_of(r)] if len(owners) > 1 else None,
+                                 bbox_reach((l, r)) if len(owners) == 1 else None)
 
     def _assert(self, st) -> None:
         """``assert cond[, "message"]``: comparisons joined by ``and``.  Sides known now

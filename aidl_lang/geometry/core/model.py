@@ -269,7 +269,7 @@ class Constraint(Record):
     """A constraint as written in the source and the equations it adds."""
     # ``text`` is a property (below): a written constraint's text is cut from ``_src``
     __slots__ = ("kind", "owner", "span", "equations", "deferred", "text", "implicit", "hold",
-                 "released", "args")
+                 "released", "args", "reach")
 
     def __init__(self, kind: str, owner: Structure, span: Span | None,
                  equations: list[Equation] | None = None, deferred: list[Equation] | None = None,
@@ -291,6 +291,10 @@ class Constraint(Record):
         # relating more than one structure; else None): the first-named moves to the later
         # ones (aidl_lang.solver.core.hierarchy, "who moves")
         self.args = None
+        # the parameters each argument reads, in the order written (a written constraint
+        # relating two or more shapes of its own structure; else None): between shapes too,
+        # the first-named moves to the later ones (aidl_lang.solver.core.tree._shape_ranks)
+        self.reach = None
 
     def describe(self) -> str:
         return self.text or self.kind

@@ -312,10 +312,14 @@ def _loop_suffix(ctx) -> str:
 
 
 def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_angle=0.0,
-          indexed: bool = False, line=None, scale: float = 1.0):
+          indexed: bool = False, line=None, scale: float = 1.0, cloners: list | None = None):
+    """The copy of ``target`` (``xf``: the map of points); ``cloners``, if given, gets the
+    :class:`_Cloner` that made it (what each original point, shape and structure became)."""
     S = ctx.struct
     cl = _Cloner(ctx, S, xf, rot, flip, line_angle, line)
     cl.scale = scale
+    if cloners is not None:
+        cloners.append(cl)
     if isinstance(target, StructRef):
         # copies belong where the original is: siblings of it, whichever structure the
         # operation is written in (paper rule: the original lies in that structure's subtree)

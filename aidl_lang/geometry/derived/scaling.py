@@ -7,7 +7,7 @@ from __future__ import annotations
 # the scaling, so the reference reads them without loading the geometry's numpy
 EXAMPLE_LINES = {
     "Scaled": "small = Scaled(h, 0.5, center=(20, 10))    # a 2 mm hole at (0, 0)",
-    "Scale": "Scale(h, 1.5, center=(-20, -10))    # the hole 6 mm across, where it was",
+    "Scale": "Scale(h, 1.5)    # the hole 6 mm across, about its own centre (-20, -10)",
     "Translated": "m = Translated(h, by=(30, 0))    # a copy at (10, -10)",
     "Translate": "Translate(h, (30, 20))    # the hole moved to (10, 10)",
     "Flip": "Flip(h, about=axis)    # the hole now at (20, -10), mirrored",

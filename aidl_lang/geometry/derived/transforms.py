@@ -9,12 +9,20 @@ the original's name (in the structure and, for a name written alone, in the prog
 so the statements after it reach it) and the original becomes construction under the name
 ``NAME_original`` -- solved and referable, never drawn, as the template of a
 ``CircularPattern(..., start_angle=)``.  So ``Scale(plaque, 0.7)`` after a plaque's block
-makes the drawn plaque 30 % smaller about ``center`` (the origin unless given), every size
-and position of it, holes, fillets and text included.
+makes the drawn plaque 30 % smaller, every size and position of it, holes, fillets and text
+included, about ``center``: for ``Scale``, the thing's own centre unless given (its bounding
+box's centre as written; issue 105), for ``Scaled`` the origin.  ``Scale`` also carries the
+constraints that place the thing, written before it outside it, to the scaled copy
+(:func:`_carry_relations`): ``Scale(star, 1.5)`` after ``At(star.s.center, tree.body.center,
+dy=45)`` keeps the star's centre where the ``At`` puts it; the original keeps its own box
+(``bbox._candidates``), so a size written before stays on it and the copy is that size
+scaled.
 """
 from __future__ import annotations
 
 from .operations import OperationError, _as_construction, _copy, _mirror, _target, _translate
+from ..core.expr import Lin, _lin, _new
+from ..core.model import equation
 from ..core.values import PV, GeomRef, StructRef
 
 IN_PLACE = {"Scale": "Scaled", "Translate": "Translated", "Flip": "Mirrored"}
@@ -57,12 +65,190 @@ def _one(ctx, kind, args, target, name, i: int, indexed: bool):
             raise OperationError(f"{kind} needs a factor more than 0 known before solving "
                                  f"(0.7: 30 % smaller; a mirror image is `Flip` or `Mirrored`)")
         c = args.get("center")
-        xf, what, scale = _scale(c if c is not None else PV(0.0, 0.0), k), "scaled", k
+        if c is None:              # Scale: about its own centre; Scaled: about the origin
+            c = _own_centre(ctx, target) if in_place else PV(_lin({}, 0.0), _lin({}, 0.0))
+        xf, what, scale = _scale(c, k), "scaled", k
     else:
         by = args["by"]
         xf, what, scale = _translate(by.x, by.y)[0], "moved", 1.0
-    out = _copy(ctx, target, xf, 0.0, False, name, i, what, indexed=indexed, scale=scale)
+    cloners: list = []
+    out = _copy(ctx, target, xf, 0.0, False, name, i, what, indexed=indexed, scale=scale,
+                cloners=cloners)
+    if in_place and op == "Scaled":
+        _carry_relations(ctx, target, cloners[0])
+        made = out.struct if isinstance(out, StructRef) else out.geom
+        made.scaled_in_place = k              # said by W0504's hint
+        if isinstance(out, GeomRef):          # it and its original move as one shape
+            out.geom.in_place_of = target.geom
     return _finish(ctx, out, target, in_place, name)
+
+
+def _mark_replaced(target) -> None:
+    """The original of a change in place keeps its box: its drawn geometry, made construction
+    next, still counts in the box of the original itself (``plaque_original.bb``, and a
+    constraint on its size written before the change, ``plaque.bb.width == 20``, which stays
+    on it), not in the boxes of the structures around it (``bbox._candidates``)."""
+    if isinstance(target, GeomRef):
+        return
+    todo = [target.struct]
+    while todo:
+        s = todo.pop()
+        s.replaced = True
+        for g in s.geometry:
+            if not g.construction:
+                g.replaced = True
+        todo += s.children.values()
+
+
+def _own_centre(ctx, target) -> PV:
+    """The centre ``Scale`` scales ``target`` about when no ``center=`` is given: its
+    bounding box's centre as written (the starting values), in the frame of the structure
+    the call is written in (a structure's box: its drawn shapes and children, holes
+    included; construction geometry only when it is all there is).  The origin when it
+    holds no geometry."""
+    from ..relations.bbox import numeric_box
+    what = target.struct if isinstance(target, StructRef) else target.geom
+    box = numeric_box(what, ctx.struct, ctx.model.x)
+    if box is None:
+        return PV(_lin({}, 0.0), _lin({}, 0.0))
+    x0, x1, y0, y1 = box
+    return PV(_lin({}, (x0 + x1) / 2), _lin({}, (y0 + y1) / 2))
+
+
+def _carry_relations(ctx, target, cl) -> None:
+    """``Scale`` in place (issue 105): the relations that place ``target`` -- the written
+    constraints outside it (in the structures above it, or beside a shape) that read it and
+    whose residual changes when it moves (``At(star.s.center, tree.body.center, dy=45)``,
+    ``AlignCenterX(star, tree)``, ``Fixed(star)``) -- now hold on the scaled copy, which is
+    the thing placed: the star's centre stays where its ``At`` puts it.  Constraints inside
+    it (its shape) and those on it alone that do not place it (``star.bb.width == 20``,
+    ``Radius(c, 5)``: its size, scaled with it) stay on the original, which the copy
+    follows.  (Before: the ``At`` held the hidden original, and the star drawn 1.5 times as
+    far from the origin floated off the tree.)  Each carried constraint's equations are
+    rewritten on the copy's parameters (``cl``: what each original point, size, shape and
+    structure became), its boxes on the copy's, and its who-moves arguments with them."""
+    from ..core.expr import Nl, evaluate
+    from ..relations.bbox import BBTerm, collect, exclusions, expand
+    m = ctx.model
+    if isinstance(target, StructRef):
+        root = target.struct
+        inside = set(root.subtree())
+        ids = {i for t in inside for i in (t.fx, t.fy)}
+        for t in inside:
+            for g in t.geometry:
+                _params(g, ids)
+        shift = ([root.fx], [root.fy])
+        home = root.parent
+        objs = dict(cl.structs)
+    else:
+        root = None
+        inside = set()
+        ids = set()
+        _params(target.geom, ids)
+        pts: list = []
+        _points(target.geom, pts)
+        shift = ([p.ix for p in pts], [p.iy for p in pts])
+        home = target.geom.owner
+        objs = {}
+    objs.update(cl.geoms)
+    vmap: dict = {}
+    for p, q in cl.points.items():
+        vmap[p.ix], vmap[p.iy] = q.ix, q.iy
+    for g, new in cl.geoms.items():
+        for n, sc in g.scalars.items():
+            if n in new.scalars:
+                vmap[sc.index] = new.scalars[n].index
+    for t, c in cl.structs.items():
+        vmap[t.fx], vmap[t.fy] = c.fx, c.fy
+
+    def reads(e) -> bool:
+        todo = [e]
+        while todo:
+            a = todo.pop()
+            ta = type(a)
+            if ta is Lin:
+                if not ids.isdisjoint(a.terms):
+                    return True
+            elif ta is Nl:
+                todo += a.args
+            elif ta is BBTerm and a.target in objs:
+                return True
+        return False
+
+    x = list(m.x)
+
+    def places(eqs) -> bool:
+        for eq in eqs:
+            e = eq.expr
+            terms = collect(e, [])
+            if terms:
+                e = expand(e, x, exclusions(terms))
+            v0 = evaluate(e, x)
+            for axis in shift:
+                moved = list(x)
+                for i in axis:
+                    moved[i] += 1.0
+                if abs(evaluate(e, moved) - v0) > 1e-9:
+                    return True
+        return False
+
+    def remap(e):
+        te = type(e)
+        if te is Lin:
+            return _lin({vmap.get(k, k): v for k, v in e.terms.items()}, e.const)
+        if te is Nl:
+            out = _new(Nl)
+            out.op, out.args = e.op, tuple(remap(a) for a in e.args)
+            return out
+        if te is BBTerm and e.target in objs:
+            return BBTerm(objs[e.target], e.side, e.frame)
+        return e
+
+    s = home
+    while s is not None:
+        for c in s.constraints:
+            if c.implicit or c.hold or (root is not None and c.owner in inside):
+                continue
+            eqs = c.deferred if c.deferred is not None else c.equations
+            if not any(reads(eq.expr) for eq in eqs) or not places(eqs):
+                continue
+            new = [equation(remap(eq.expr), eq.ineq,
+                            None if eq.branch is None else remap(eq.branch)) for eq in eqs]
+            if c.deferred is not None:
+                c.deferred = new
+            else:
+                c.equations = new
+            if c.args is not None:
+                c.args = [frozenset(objs.get(o, o) for o in a) for a in c.args]
+            if c.reach is not None:
+                c.reach = [frozenset(vmap.get(v, v) for v in r) for r in c.reach]
+        s = s.parent
+
+
+def _params(g, out: set) -> None:
+    for p in g.points.values():
+        out.add(p.ix)
+        out.add(p.iy)
+    for sc in g.scalars.values():
+        out.add(sc.index)
+    for q in g.parts.values():
+        if hasattr(q, "points"):
+            _params(q, out)
+        elif hasattr(q, "ix"):
+            out.add(q.ix)
+            out.add(q.iy)
+
+
+def _points(g, out: list) -> None:
+    """The distinct points of shape ``g`` (its parts' too)."""
+    seen = {id(p) for p in out}
+    for p in g.points.values():
+        if id(p) not in seen:
+            seen.add(id(p))
+            out.append(p)
+    for q in g.parts.values():
+        if hasattr(q, "points"):
+            _points(q, out)
 
 
 def _rename_original(ctx, target, i):
@@ -91,6 +277,7 @@ def _finish(ctx, out, target, in_place: bool, old: str | None = None):
     shape's copy takes its name."""
     if not in_place:
         return out
+    _mark_replaced(target)
     _as_construction(target)
     if isinstance(out, GeomRef) and old:
         out.geom.name = old

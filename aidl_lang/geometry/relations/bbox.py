@@ -51,6 +51,63 @@ def contains_bbox(e) -> bool:
     return False
 
 
+def reach(vals) -> list | None:
+    """The parameters each of ``vals`` (a call's arguments, or an equation's two sides)
+    reads, in the order given, as frozensets of indices into the model's parameter vector:
+    a point's coordinates, a shape's points and sizes (its parts' too), a shape's box's
+    (``body.bb.center``), structures' frames as their expressions hold them; a structure
+    named or boxed reads nothing here (``Constraint.args`` says which structures).  None
+    when fewer than two arguments read anything (one shape, sizes only).  Who moves
+    between the shapes of one structure is read off it (``Constraint.reach``)."""
+    out = []
+    for v in vals:
+        got: set = set()
+        _reach_into(v, got)
+        out.append(frozenset(got))
+    return out if sum(1 for r in out if r) >= 2 else None
+
+
+def _reach_into(v, out: set) -> None:
+    from ..core.values import PV, BBoxRef, GeomRef, Q
+    todo = [v]
+    while todo:
+        v = todo.pop()
+        t = type(v)
+        if t is GeomRef:
+            _geom_params(v.geom, out)
+        elif t is PV:
+            todo += (v.x, v.y)
+        elif isinstance(v, Q):
+            todo.append(v.expr)
+        elif t is Lin:
+            out.update(v.terms)
+        elif t is Nl:
+            todo += v.args
+        elif t is BBTerm or t is BBoxRef:
+            if isinstance(v.target, Geometry):
+                _geom_params(v.target, out)
+        elif isinstance(v, (list, tuple)):
+            todo += v
+
+
+def _geom_params(g: Geometry, out: set) -> None:
+    """Add the parameters of ``g`` (its points, sizes and parts') to ``out``."""
+    todo = [g]
+    while todo:
+        g = todo.pop()
+        for p in g.points.values():
+            out.add(p.ix)
+            out.add(p.iy)
+        for sc in g.scalars.values():
+            out.add(sc.index)
+        for q in g.parts.values():
+            if isinstance(q, Geometry):
+                todo.append(q)
+            elif hasattr(q, "ix"):                   # a point among the parts
+                out.add(q.ix)
+                out.add(q.iy)
+
+
 def collect(e, out: list) -> list:
     if isinstance(e, BBTerm):
         out.append(e)
@@ -133,9 +190,13 @@ def _candidates(target, frame, x, exclude: set, offs: dict) -> tuple[list, list]
     xs: list = []
     ys: list = []
     if isinstance(target, Structure):
+        # the original of a structure changed in place (`plaque_original`, its shapes made
+        # construction by Scale, Translate, Flip) keeps its own box: its drawn shapes count
+        # in it, and in nothing around it
+        kept = target.__dict__.get("replaced", False)
         for s in _subtree(target, exclude, top=target):
             for g in s.geometry:
-                if not g.construction:
+                if not g.construction or kept and g.__dict__.get("replaced", False):
                     _geom_candidates(g, frame, x, xs, ys, offs)
     else:
         _geom_candidates(target, frame, x, xs, ys, offs)

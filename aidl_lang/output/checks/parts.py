@@ -167,9 +167,21 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
                     break
         groups.append("{" + ", ".join(names[:4]) + (", ..." if len(names) > 4 else "") + "}")
         named.append(names)
-    hint = ("make the pieces overlap (" + _joining(s, pieces, named) + ") or share an edge "
-            "(touching at a point is not enough), or, if they are separate parts, make the "
-            "structure an `assembly`")
+    scaled = [(n, o) for n, _, _, o in _contributors(d, s, objects=True)
+              if getattr(o, "scaled_in_place", None) is not None and
+              any(n in names for names in named)]
+    if scaled:                 # Scale keeps its placement: adding a second one would fight it
+        n, o = scaled[0]
+        hint = (f"{n} is scaled in place (`Scale`, factor {o.scaled_in_place:g}) about its own "
+                "centre and stays where its constraints (without any, its coordinates) place "
+                "it: make the pieces overlap by changing that placement (an offset) or the "
+                "factor, not by adding a second placement; or share an edge (touching at a "
+                "point is not enough), or, if they are separate parts, make the structure an "
+                "`assembly`")
+    else:
+        hint = ("make the pieces overlap (" + _joining(s, pieces, named) + ") or share an edge "
+                "(touching at a point is not enough), or, if they are separate parts, make the "
+                "structure an `assembly`")
     cutters = _cutters(d, s, shape, [items[k] for k in split]) if split else []
     apart = ""
     if cutters:

@@ -505,6 +505,8 @@ class Solver(PartsFirst):
                                for i in self.own.get(id(t), ())]
         frames = lambda structs: [i for t in structs if id(t) not in no_frame
                                   for i in self.frame.get(id(t), ())]
+        if s.geometry:                     # of two shapes related, the first-named moves
+            yield from self._place_shapes(s, local, order, own)
         if (s.children or _helpers(s)) \
                 and (yield from self._features_first(s, local, order, own, frames)):
             return True

@@ -73,6 +73,90 @@ def _who_moves(s: Structure) -> tuple[list, list]:
     return [t for k, t in refs.items() if k not in movers], ranks
 
 
+def _shape_ranks(s: Structure, mine: set) -> tuple[list, list]:
+    """Who moves between the shapes of ``s`` (issue 105): the first-named moves to the
+    second, as between siblings (:func:`_who_moves`).  ``mine``: ``s``'s own unknowns (its
+    shapes' free parameters).  Returns ``(references, ranks)``: the unknowns of the shapes
+    a written constraint of ``s`` relates another shape to and that none moves (each a
+    list), and ``ranks[k]`` the unknowns of the shapes placed on the references and on
+    ranks below ``k`` (``ranks[0]``: on references only); a shape in a cycle of relations
+    is in none.  A shape is one of ``s``'s listed geometries, those sharing an unknown
+    (a Triangle through a Rectangle's corners) one, and a shape scaled in place one with its
+    original; the arguments are read off each written
+    constraint's parameters (``Constraint.reach``: ``At(ear.center, head.center)`` relates
+    ear to head), so an equation's two sides are its arguments here too."""
+    cons = [c for c in s.constraints if c.reach is not None]
+    if not cons:
+        return [], []
+    parent: dict[int, int] = {}
+
+    def find(i: int) -> int:
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    for g in s.geometry:                # one shape per geometry, joined where they share
+        vs: set = set()
+        _unknowns(g, vs)
+        was = g.__dict__.get("in_place_of")
+        if was is not None:             # Scale(ear, 1.5): the copy moves with its original
+            _unknowns(was, vs)
+        root = None
+        for v in vs:
+            parent.setdefault(v, v)
+            r = find(v)
+            if root is None:
+                root = r
+            elif r != root:
+                parent[r] = root
+    unit = {v: find(v) for v in parent}
+    movers: set = set()
+    refs: list = []
+    edges: dict[int, set] = {}
+    for c in cons:
+        groups: list = []               # shapes reached, in the order written
+        for r in c.reach:
+            for u in sorted({unit[v] for v in r if v in unit}):
+                if u not in groups:
+                    groups.append(u)
+        if len(groups) < 2:
+            continue
+        ref = groups[-1]
+        if ref not in refs:
+            refs.append(ref)
+        for u in groups[:-1]:
+            movers.add(u)
+            edges.setdefault(u, set()).add(ref)
+    # rank by rank (Kahn's order): a shape's rank is one more than its highest reference's
+    level = {u: -1 for u in refs if u not in movers}
+    waits = {u: len(edges[u]) for u in movers}
+    users: dict[int, list] = {}
+    for u in sorted(movers):
+        for r in edges[u]:
+            users.setdefault(r, []).append(u)
+    ready = list(level)
+    while ready:
+        nxt = []
+        for r in ready:
+            for u in users.get(r, ()):
+                waits[u] -= 1
+                if not waits[u]:
+                    level[u] = max(level[t] for t in edges[u]) + 1
+                    nxt.append(u)
+        ready = nxt
+    ranks: list = [[] for _ in range(max(level.values(), default=-1) + 1)]
+    for u in sorted(movers):
+        if u in level:                      # (a shape in a cycle has none)
+            ranks[level[u]].append(u)
+    members: dict[int, list] = {}
+    for v in sorted(unit):
+        if v in mine:
+            members.setdefault(unit[v], []).append(v)
+    return ([members.get(u, []) for u in refs if u not in movers],
+            [[v for u in rank for v in members.get(u, ())] for rank in ranks])
+
+
 def _depth(t: Structure) -> int:
     n = 0
     while t.parent is not None:
