@@ -113,7 +113,7 @@ def scan(source: str, path: str = "<source>", budget: float | Budget | None = No
     s = _Scan(source, path, b, 0, 0, tolerance, w, True, dict(values or {}),
               dict(spans or {}), only)
     s.n = max(2, int(n))
-    rep = run_deep(lambda: s.run(b.seconds if seconds is None else float(seconds)))
+    rep = run_deep(lambda: s.run(b.backstop if seconds is None else float(seconds)))
     return _scan_report(s, rep)
 
 
@@ -124,7 +124,7 @@ def scan_and_sweep(source: str, path: str = "<source>", budget: float | Budget |
     """The studio's sweep request within one budget: :func:`scan` (spending at most ``share``
     of the work), then :func:`~aidl_lang.params.sweep.sweep`'s plan for the combinations with
     the rest, one object: a point either judges is judged once, one work budget (``work``,
-    else the budget's) and one deadline (``seconds``, else the budget's) for both.  The scan's
+    else the budget's) and one CPU backstop (``seconds``, else the budget's backstop) for both.  The scan's
     runs take every point that moved one param alone, the sweep's too; the sweep's
     one-param findings take their bounds from the scan's where it bisected them.  What the
     budget cut is not judged (:meth:`ScanReport.unjudged`; the sweep's ``skipped`` and
@@ -136,7 +136,7 @@ def scan_and_sweep(source: str, path: str = "<source>", budget: float | Budget |
     s = _Both(source, path, b, LHS_POINTS, SEED, TOLERANCE, w, True, dict(values or {}),
               dict(spans or {}), None)
     s.share = min(max(float(share), 0.0), 1.0)
-    rep = run_deep(lambda: s.run(b.seconds if seconds is None else float(seconds)))
+    rep = run_deep(lambda: s.run(b.backstop if seconds is None else float(seconds)))
     return _scan_report(s, rep), rep
 
 
