@@ -44,7 +44,7 @@ from collections import Counter
 from ...geometry.shapes.curves import Loop
 from .attachments import _attachments, _circle_attachments
 from .params import _Params, _ctor, _deg, _hole_name, _r
-from .patterns.find import (_Cells, _copies, _grid, _line, _polar, _runs, _stagger,
+from .patterns.find import (_Cells, _copies, _gapped_grid, _grid, _line, _polar, _runs, _stagger,
                             _hex_field, _hex_rect, _whole, _features, _unknown)
 from .shapes import EQUAL_TOL, ROUND_TOL, Shape, _close, circular, recognise
 from .anchors import _Anchored
@@ -64,6 +64,19 @@ from ..write.program import _containers, _cut_notes, _layer_items, _place, _whol
 from ..write.writer import _Names, _Writer, _emit_holds, _holds, _ident, _length, _num, _pt
 from ..write.units import UNIT, in_unit
 from ..model import Drawing, Note, _segs_box
+
+
+ODD_SIZE = 1.5      # a hole at most this many times larger (or smaller) than a pattern's
+#                     may be its odd member (merge_odd: 4.4 mm among 4 mm holes)
+
+
+def _near_size(a: Shape, b: Shape) -> bool:
+    """Whether ``a`` and ``b`` are circles whose diameters are within :data:`ODD_SIZE` of
+    each other (an odd member is a round hole: a clearance hole drilled larger)."""
+    if a.kind != "Circle" or b.kind != "Circle":
+        return False
+    x, y = a.args["radius"], b.args["radius"]
+    return 0 < min(x, y) and max(x, y) <= ODD_SIZE * min(x, y)
 
 
 def _add0(base: str, term: str) -> str:
@@ -174,6 +187,7 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
         singles = []
         centres = []          # bolt circle centres, for naming a bore
         self.share_centres(depth, groups, body)
+        self.merge_odd(groups)
         # the middles of the groups of three or more and how far their holes are from it
         # (a motor plate's corner slots about its bore, outside its motor holes)
         self.rings_at = [(mid, sum(math.dist(h.center, mid) for h in g) / len(g))
@@ -204,6 +218,56 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
             self.sunk_as([sh])
             self.single(depth, sh, body, centres, few)
         self.sinks = None
+
+    def merge_odd(self, groups: dict) -> None:
+        """A hole of a size no other has that completes a pattern of holes of its kind and
+        a near size (one corner hole 4.4 mm among three of 4 mm, a row's last hole larger)
+        joined to that pattern's group (``groups``: size key -> holes, changed in place) as
+        its odd member (:attr:`odd`), so the pattern stays one and the odd hole keeps its
+        own size (:meth:`hole_block`); the others of the group not a pattern without it, or
+        one it extends.  A hole a pattern surrounds (a bore) is never one."""
+        self.odd = {}
+        for key in [k for k, g in groups.items() if len(g) == 1]:
+            odd = groups[key][0]
+            if odd.kind == "Polygon" or self.shared(odd.center) is not None:
+                continue
+            for k2, g in groups.items():
+                if k2 == key or len(g) < 3 or g[0].kind != odd.kind or \
+                        not _near_size(odd, g[0]):
+                    continue
+                r = g[0].args.get("radius", 0.0) if odd.kind == "Circle" else 0.0
+                if _whole([m.center for m in g] + [odd.center], r):
+                    self.stats.readings.append(
+                        f"a {_num(2 * odd.args['radius'])} mm hole at {_pt(odd.center)} completes "
+                        f"a pattern of {_num(2 * g[0].args['radius'])} mm holes: one pattern, "
+                        f"that hole its own size (`_odd_d`)")
+                    g.append(odd)
+                    del groups[key]
+                    self.odd[id(odd)] = g
+                    break
+
+    def own_sizes(self, hn: str, sh: Shape, sizes: dict, index=None) -> dict:
+        """The sizes a pattern's hole statement writes: ``sizes`` (its common params), with
+        each odd member's own (:meth:`merge_odd`: ``<hn>_odd_d``) chosen on its turn of the
+        loop (``index``: Shape -> the loop's variables on that turn), ``(corner_holes_odd_d
+        if sx == 1 and sy == 1 else corner_hole_d)``; the odd member's own when ``sh`` is
+        it and there is no loop."""
+        odd = getattr(self, "odd", None)
+        if not odd or not sizes:
+            return sizes
+        if index is None:
+            return self.size_params(hn + "_odd", sh, True) if id(sh) in odd else sizes
+        out = dict(sizes)
+        for m in self.sink_members:
+            if id(m) not in odd or not any(x is sh for x in odd[id(m)]):
+                continue
+            own = self.size_params(hn + "_odd", m, True)
+            turn = index(m)
+            cond = " and ".join(f"{v} == {x}" for v, x in turn) if turn else "true"
+            for k in out:
+                if k in own:
+                    out[k] = f"({own[k]} if {cond} else {out[k]})"
+        return out
 
     def check(self, k: int, stage: str, every: int = 128) -> None:
         """The import's deadline looked at (``stage``) on every ``every``-th step ``k``."""
@@ -312,6 +376,7 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
         """``hole hn { h = ... }`` and its ``Fixed``, and the countersink marks of the holes
         it writes (:attr:`sinks`), a subset of a loop's by ``index`` (Shape -> the loop's
         variables on its turn, :meth:`~.sinks.Marks.write`)."""
+        sizes = self.own_sizes(hn, sh, sizes, index)
         self.w.emit(depth, f"hole {hn} {{ h = {_ctor(sh, center, sizes)} }}")
         self.w.emit(depth, f"Fixed({hn}.h)")
         if index is not None:       # a label beside a member follows it (written_at)
@@ -383,7 +448,8 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
                     c = f"({self.from_body_centre(0, ex, mid[0])}, {self.from_body_centre(1, ey, mid[1])})"
                     w.emit(depth, f"# at the corners, {inx if inx == iny else inx + ' and ' + iny}"
                                   f" in from the edges")
-                    if self.sinks is None and bname in self.rects:
+                    if self.sinks is None and bname in self.rects and \
+                            not any(id(m) in getattr(self, "odd", {}) for m in g):
                         # the language's own: the inset is one word to change (issue 93)
                         first = c.replace("sx", "-1").replace("sy", "-1")
                         if wx and hy:       # the bottom-left corner's, where it goes
@@ -483,6 +549,10 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
         gr = _grid(cs)
         if gr is not None:
             self.grid(depth, sh, base, gr)
+            return True
+        gg = _gapped_grid(cs) if _stagger(cs) is None else None
+        if gg is not None:      # a grid or row with holes left out: its gap list
+            self.grid(depth, sh, base, gg[0], gg[1])
             return True
         # a hex lattice clipped to a round field, else to a rectangular one (the rosette
         # of seven is a round field), before any other staggered grid
@@ -602,11 +672,14 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
         nm = self.shared(c)
         return None if nm is None else getattr(self, "shared_kind", {}).get(nm)
 
-    def grid(self, depth: int, sh: Shape, base: str, gr: tuple) -> None:
+    def grid(self, depth: int, sh: Shape, base: str, gr: tuple, missing=()) -> None:
         """A row, column or grid (``gr`` from :func:`_grid`) as loops over count params:
         centred on the feature it surrounds or on the body where it is (``(i - (n - 1) /
         2) * pitch``), else from its first instance placed by the nearest edge or centre;
-        one pitch param when the steps are equal both ways."""
+        one pitch param when the steps are equal both ways.  ``missing``: the nodes ``(i,
+        j)`` of the lattice left out (:func:`_gapped_grid`), written as the loop's gap list
+        (``if not (i == 2 and j == 1) { ... }``), so the pattern keeps its pitch and
+        place."""
         x0, y0, dx, dy, nx, ny = gr
         mid = (x0 + dx * (nx - 1) / 2, y0 + dy * (ny - 1) / 2)
         around = self.surrounds(mid)
@@ -647,11 +720,24 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
         for ln in loops:
             self.w.emit(d, ln)
             d += 1
+        if missing:
+            gaps = " or ".join(" and ".join(f"{v} == {k}" for v, k, n in
+                                            (("i", i, nx), ("j", j, ny)) if n > 1)
+                               for i, j in missing)
+            many = len(missing) > 1
+            self.w.emit(d, f"if not ({gaps}) {{     # the gap{'s' if many else ''}: "
+                           f"{len(missing)} hole{'s' if many else ''} of the "
+                           f"{'grid' if both else 'row'} left out, as drawn")
+            d += 1
         self.hole_block(d, hn, sh, f"({out[0]}, {out[1]})", sizes, turns.grid(*gr))
+        if missing:
+            d -= 1
+            self.w.emit(d, "}")
         for _ in loops:
             d -= 1
             self.w.emit(d, "}")
-        self.stats.patterns["grid" if both else "row"] += 1
+        kind = "grid" if both else "row"
+        self.stats.patterns[kind + (" with a gap list" if missing else "")] += 1
 
     def stagger(self, depth: int, sh: Shape, base: str, st: tuple) -> None:
         """A staggered (hex) grid (``st`` from :func:`_stagger`) as one pattern: one pitch,

@@ -8,6 +8,7 @@ when there is none.  Every pattern is checked member by member to
 * points (the centres of equal holes): a whole turn round a centre (:func:`_polar`, a bolt
   circle), an axis-aligned row, column or grid (:func:`_grid`), evenly spaced on one line
   (:func:`_line`), runs of equal steps (:func:`_runs`), a staggered grid (:func:`_stagger`),
+  a row or grid with nodes missing (:func:`_gapped_grid`, written with a gap list),
   a hex lattice clipped to a round or rectangular field (:func:`_hex_field`,
   :func:`_hex_rect`; the field's size by :func:`_field_size`);
 * an outline that is one run of pieces turned ``n`` times round a centre (:func:`_polar_chain`,
@@ -285,12 +286,62 @@ def _hex_rect(centers: list, r: float):
     return (cx, cy), pitch, shift, _field_size(*wide, pitch), _field_size(*high, pitch)
 
 
+MAX_GAPS = 1 / 4     # of a lattice's nodes, at most this share may be missing (a gap list)
+
+
+def _lattice_axis(vals: list):
+    """``(v0, step, n)`` when sorted distinct ``vals`` lie on one pitch with some nodes
+    missing (``v0 + k step``, ``k`` whole, each within EQUAL_TOL): the pitch is the
+    shortest step between them; else None.  One value: ``(v, 0, 1)``."""
+    if len(vals) == 1:
+        return vals[0], 0.0, 1
+    step = min(b - a for a, b in zip(vals, vals[1:]))
+    if step <= EQUAL_TOL:
+        return None
+    n = round((vals[-1] - vals[0]) / step) + 1
+    if n > 2 * len(vals) + 2:
+        return None
+    step = (vals[-1] - vals[0]) / (n - 1)
+    if any(abs(v - vals[0] - round((v - vals[0]) / step) * step) > EQUAL_TOL for v in vals):
+        return None
+    return vals[0], step, n
+
+
+def _gapped_grid(centers: list):
+    """``((x0, y0, dx, dy, cols, rows), missing)`` when ``centers`` are an axis-aligned
+    lattice (a row or a grid) with some nodes left out (a 4 x 3 grid with one hole
+    missing, a perforated row with a gap): at least four holes, at least one node missing
+    and at most :data:`MAX_GAPS` of them, every hole on a node to EQUAL_TOL; ``missing``
+    the nodes' ``(i, j)`` (column, row from ``(x0, y0)``); else None."""
+    n = len(centers)
+    if n < 4:
+        return None
+    ax = _lattice_axis(_distinct([p[0] for p in centers]))
+    ay = _lattice_axis(_distinct([p[1] for p in centers]))
+    if ax is None or ay is None:
+        return None
+    (x0, dx, nx), (y0, dy, ny) = ax, ay
+    nodes = nx * ny
+    if nodes <= n or nodes - n > max(1, int(nodes * MAX_GAPS)) or (nx < 3 and ny < 3):
+        return None
+    held = set()
+    for p in centers:
+        i = round((p[0] - x0) / dx) if nx > 1 else 0
+        j = round((p[1] - y0) / dy) if ny > 1 else 0
+        if math.dist(p, (x0 + i * dx, y0 + j * dy)) > EQUAL_TOL or (i, j) in held:
+            return None
+        held.add((i, j))
+    missing = [(i, j) for i in range(nx) for j in range(ny) if (i, j) not in held]
+    return (x0, y0, dx, dy, nx, ny), missing
+
+
 def _whole(centers: list, r: float) -> bool:
     """Whether ``centers`` (holes of radius ``r``, a circle's; 0 for other shapes) are one
     pattern: a bolt circle, a grid, a staggered or clipped hex grid, or a row."""
     return len(centers) >= 2 and (_grid(centers) is not None or _line(centers) is not None or
                                   _polar(centers) is not None or _stagger(centers) is not None
-                                  or (r > 0 and _hex_field(centers, r) is not None))
+                                  or (r > 0 and _hex_field(centers, r) is not None)
+                                  or _gapped_grid(centers) is not None)
 
 
 MAX_SPLIT = 400     # equal holes split into features by their neighbours (n^2 distances)

@@ -1,0 +1,100 @@
+"""Drawing to design, round six (issue 103): drawings that are not perfectly regular, as
+makers' files are, keep the spec's relations (docs/import.md, "What an edit means").  The
+drawings are made here with ezdxf (not from the inference's rules); each edit is compiled
+through the real compiler and its DXF read back with ezdxf, the hole centres compared with
+the edited part's, numerically.  A corner plate with one odd hole (4.4 among 4 mm) keeps its
+holes at the corners (they were three "board" holes from the centre and one from its
+corner); a 4 x 3 grid with one hole missing keeps its 30 mm pitch about the centre (it was
+a grid, a row and a 4-hole set); a row whose holes CAD rounded up to 0.05 mm off the pitch
+stays one row, exact.  Cost: a few imports and about ten compiles (seconds)."""
+from __future__ import annotations
+
+import io
+
+import ezdxf
+import pytest
+
+import aidl_lang
+from aidl_lang.drawing.infer import import_drawing
+
+
+def _doc(w: float, h: float):
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    m = doc.modelspace()
+    m.add_lwpolyline([(0, 0), (w, 0), (w, h), (0, h)], close=True)
+    return doc, m
+
+
+def _text(doc) -> str:
+    s = io.StringIO()
+    doc.write(s)
+    text, _ = import_drawing(s.getvalue().encode(), "p.dxf", infer=True)
+    return text
+
+
+def _holes(text: str, tmp_path, **edit) -> list:
+    """``(x, y, diameter)`` of every circle of the compiled program, read back by ezdxf."""
+    res = aidl_lang.compile(text, path=tmp_path / "p.aidl", overrides=edit)
+    assert res.ok, ([str(d) for d in res.errors], text)
+    ms = ezdxf.read(io.StringIO(res.to_dxf())).modelspace()
+    return sorted((round(e.dxf.center.x, 9) + 0.0, round(e.dxf.center.y, 9) + 0.0,
+                   round(2 * e.dxf.radius, 9)) for e in ms if e.dxftype() == "CIRCLE")
+
+
+def _corner_plate(odd):
+    doc, m = _doc(160, 100)
+    for x in (10, 150):
+        for y in (10, 90):
+            m.add_circle((x, y), 2.2 if (x, y) == odd else 2.0)
+    return doc
+
+
+@pytest.mark.parametrize("odd", [(150, 90), (10, 10)])
+def test_a_corner_plate_with_one_odd_hole_keeps_its_corners(tmp_path, odd):
+    text = _text(_corner_plate(odd))
+    assert "in no pattern" not in text and "corner_inset = 10 mm" in text, text
+    got = _holes(text, tmp_path, width=200)
+    want = sorted((x if x == 10 else 190, y, 4.4 if (x, y) == odd else 4.0)
+                  for x in (10, 150) for y in (10, 90))
+    assert got == want, (got, text)
+    # the inset moves all four, the odd one keeps its own size; its size is one param
+    got = _holes(text, tmp_path, corner_inset=15, corner_holes_odd_d=5)
+    moved = (15 if odd[0] == 10 else 145, 15 if odd[1] == 10 else 85)
+    want = sorted((x, y, 5.0 if (x, y) == moved else 4.0) for x in (15, 145) for y in (15, 85))
+    assert got == want, (got, text)
+
+
+def _gapped_grid(missing):
+    doc, m = _doc(160, 100)
+    for i, x in enumerate((35, 65, 95, 125)):
+        for j, y in enumerate((20, 50, 80)):
+            if (i, j) not in missing:
+                m.add_circle((x, y), 2.5)
+    return doc
+
+
+@pytest.mark.parametrize("missing", [[(2, 1)], [(0, 0)], [(1, 2), (3, 0)]])
+def test_a_grid_with_holes_missing_keeps_its_columns(tmp_path, missing):
+    text = _text(_gapped_grid(missing))
+    assert "param holes_pitch = 30 mm" in text and "left out, as drawn" in text, text
+    got = _holes(text, tmp_path, width=200)
+    want = sorted((x, y, 5.0) for i, x in enumerate((55, 85, 115, 145))
+                  for j, y in enumerate((20, 50, 80)) if (i, j) not in missing)
+    assert got == want, (got, text)
+    # a new pitch spreads it about the plate's centre, the gaps where they were
+    got = _holes(text, tmp_path, holes_pitch=25)
+    want = sorted((80 + (i - 1.5) * 25, 50 + (j - 1) * 25, 5.0) for i in range(4)
+                  for j in range(3) if (i, j) not in missing)
+    assert got == want, (got, text)
+
+
+def test_a_row_missing_a_hole_is_one_row_with_a_gap(tmp_path):
+    doc, m = _doc(120, 40)
+    for x in (10, 20, 30, 50, 60):          # 10 mm in on a 10 mm pitch, 40 left out
+        m.add_circle((x, 20), 1.5)
+    text = _text(doc)
+    assert "param holes_n = 6" in text and "if not (i == 3)" in text, text
+    # its end member 10 mm in from the left edge stays (nearer it than 1.5 pitches)
+    got = _holes(text, tmp_path, holes_pitch=12, width=150)
+    assert [g[0] for g in got] == [10, 22, 34, 58, 70], (got, text)
