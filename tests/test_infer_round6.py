@@ -98,3 +98,22 @@ def test_a_row_missing_a_hole_is_one_row_with_a_gap(tmp_path):
     # its end member 10 mm in from the left edge stays (nearer it than 1.5 pitches)
     got = _holes(text, tmp_path, holes_pitch=12, width=150)
     assert [g[0] for g in got] == [10, 22, 34, 58, 70], (got, text)
+
+
+def test_a_row_cad_rounded_off_its_pitch_stays_one_row_exactly(tmp_path):
+    doc, m = _doc(120, 40)
+    pitch = 25.4 / 3                        # six pots a third of an inch apart,
+    xs = [round(30 + k * pitch, 1) for k in range(6)]   # written to 0.1 mm by the CAD
+    for x in xs:
+        m.add_circle((x, 20), 3.5)
+    text = _text(doc)
+    assert "param holes_n = 6" in text and "(CAD rounding)" in text, text
+    # as drawn, to 1e-9 mm: each hole's offset off the pitch kept
+    assert _holes(text, tmp_path) == [(x, 20.0, 7.0) for x in xs], text
+    # a new pitch spreads the row about its middle, placed from the left edge (30 mm in:
+    # more than one and a half pitches); each hole within CAD rounding of the edited part's
+    got = _holes(text, tmp_path, holes_pitch=10, width=150)
+    mid = 30 + 2.5 * pitch
+    want = [mid + (k - 2.5) * 10 for k in range(6)]
+    assert max(abs(g[0] - w) for g, w in zip(got, want)) <= 0.05, (got, text)
+    assert [g[1] for g in got] == [20.0] * 6, got

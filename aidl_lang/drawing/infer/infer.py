@@ -44,7 +44,7 @@ from collections import Counter
 from ...geometry.shapes.curves import Loop
 from .attachments import _attachments, _circle_attachments
 from .params import _Params, _ctor, _deg, _hole_name, _r
-from .patterns.find import (_Cells, _copies, _gapped_grid, _grid, _line, _polar, _runs, _stagger,
+from .patterns.find import (_Cells, _copies, _gapped_grid, _grid, _line, _near_grid, _polar, _runs, _stagger,
                             _hex_field, _hex_rect, _whole, _features, _unknown)
 from .shapes import EQUAL_TOL, ROUND_TOL, Shape, _close, circular, recognise
 from .anchors import _Anchored
@@ -269,6 +269,43 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
                     out[k] = f"({own[k]} if {cond} else {out[k]})"
         return out
 
+    def off_turns(self, center: str, index) -> str:
+        """``center`` (a loop's ``(x, y)`` text) with each member's offset off its node
+        (:attr:`offs`, a pattern CAD rounded: :func:`~.find._near_grid`) added on its turn
+        (``index``), ``x + (0.02 if i == 1 else -0.01 if i == 3 else 0)``, so the program
+        draws every hole where the drawing has it."""
+        offs = getattr(self, "offs", None)
+        if not offs or index is None:
+            return center
+        xy = turns._split(center)
+        if xy is None:
+            return center
+        terms = [[], []]
+        for axis, var in ((0, "i"), (1, "j")):
+            # one offset a column (row) when the CAD rounded each column's x (row's y)
+            lines: dict = {}
+            for m in self.sink_members:
+                turn = dict(index(m))
+                if var in turn:
+                    lines.setdefault(turn[var], set()).add(
+                        round(offs.get(id(m), (0.0, 0.0))[axis] / ROUND_TOL))
+            by_line = bool(lines) and all(len(v) == 1 for v in lines.values())
+            for m in self.sink_members:
+                d = offs.get(id(m), (0.0, 0.0))
+                if abs(d[axis]) <= ROUND_TOL:
+                    continue
+                turn = index(m)
+                if by_line:
+                    cond = f"{var} == {dict(turn)[var]}"
+                    if any(t.endswith(f"if {cond} else ") for t in terms[axis]):
+                        continue
+                else:
+                    cond = " and ".join(f"{v} == {x}" for v, x in turn) or "true"
+                terms[axis].append(f"{_r(d[axis])} if {cond} else ")
+        out = [f"{t} + ({''.join(terms[a])}0 mm)" if terms[a] else t
+               for a, t in enumerate(xy)]
+        return f"({out[0]}, {out[1]})"
+
     def check(self, k: int, stage: str, every: int = 128) -> None:
         """The import's deadline looked at (``stage``) on every ``every``-th step ``k``."""
         if self.w.deadline is not None and k % every == 0:
@@ -377,6 +414,7 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
         it writes (:attr:`sinks`), a subset of a loop's by ``index`` (Shape -> the loop's
         variables on its turn, :meth:`~.sinks.Marks.write`)."""
         sizes = self.own_sizes(hn, sh, sizes, index)
+        center = self.off_turns(center, index)
         self.w.emit(depth, f"hole {hn} {{ h = {_ctor(sh, center, sizes)} }}")
         self.w.emit(depth, f"Fixed({hn}.h)")
         if index is not None:       # a label beside a member follows it (written_at)
@@ -553,6 +591,17 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
         gg = _gapped_grid(cs) if _stagger(cs) is None else None
         if gg is not None:      # a grid or row with holes left out: its gap list
             self.grid(depth, sh, base, gg[0], gg[1])
+            return True
+        ng = _near_grid(cs)
+        if ng is not None:      # a grid or row CAD rounded off its pitch: its offsets
+            self.offs = {id(g[m]): d for m, d in ng[1].items()}
+            worst = max(max(abs(d[0]), abs(d[1])) for d in ng[1].values())
+            self.stats.readings.append(
+                f"{len(g)} holes within {_num(worst)} mm of the nodes of one "
+                f"{'grid' if ng[0][4] > 1 and ng[0][5] > 1 else 'row'} (CAD rounding): one "
+                f"pattern, {len(ng[1])} of them written off their node as drawn")
+            self.grid(depth, sh, base, ng[0])
+            self.offs = {}
             return True
         # a hex lattice clipped to a round field, else to a rectangular one (the rosette
         # of seven is a round field), before any other staggered grid

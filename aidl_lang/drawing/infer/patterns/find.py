@@ -8,7 +8,8 @@ when there is none.  Every pattern is checked member by member to
 * points (the centres of equal holes): a whole turn round a centre (:func:`_polar`, a bolt
   circle), an axis-aligned row, column or grid (:func:`_grid`), evenly spaced on one line
   (:func:`_line`), runs of equal steps (:func:`_runs`), a staggered grid (:func:`_stagger`),
-  a row or grid with nodes missing (:func:`_gapped_grid`, written with a gap list),
+  a row or grid with nodes missing (:func:`_gapped_grid`, written with a gap list), a row or
+  grid CAD rounded up to 0.05 mm off its pitch (:func:`_near_grid`, written with offsets),
   a hex lattice clipped to a round or rectangular field (:func:`_hex_field`,
   :func:`_hex_rect`; the field's size by :func:`_field_size`);
 * an outline that is one run of pieces turned ``n`` times round a centre (:func:`_polar_chain`,
@@ -335,13 +336,99 @@ def _gapped_grid(centers: list):
     return (x0, y0, dx, dy, nx, ny), missing
 
 
+PITCH_TOL = 0.05    # mm: a hole this near its node is on a pattern CAD rounded (issue 103)
+MAX_OFF = 64        # holes off their node a pattern writes as offsets (else none)
+
+
+def _clusters(vals: list, tol: float) -> list[list[float]]:
+    """Sorted ``vals`` in runs whose neighbours are within ``2 tol`` of each other."""
+    out: list = []
+    for v in sorted(vals):
+        if out and v - out[-1][-1] <= 2 * tol:
+            out[-1].append(v)
+        else:
+            out.append([v])
+    return out
+
+
+def _short(v: float) -> bool:
+    """Whether ``v`` (mm) is within 1e-9 mm of a decimal of at most 4 places (what a CAD
+    program that rounds writes: 38.5, 46.87)."""
+    return abs(v - round(v, 4)) <= 1e-9
+
+
+def _nearest(vals: list, v: float) -> int:
+    """The index of the value of sorted ``vals`` nearest ``v`` (a binary search)."""
+    k = bisect.bisect_left(vals, v)
+    return min((j for j in (k - 1, k) if 0 <= j < len(vals)), key=lambda j: abs(vals[j] - v))
+
+
+def _round_fit(vals: list, k: list, tol: float):
+    """``(v0, step)``: the shortest decimals (0 to 6 places) with every ``vals[m]`` within
+    ``tol`` of ``v0 + k[m] step``, from the least-squares line; None when none is."""
+    n = len(vals)
+    km = sum(k) / n
+    vm = sum(vals) / n
+    den = sum((x - km) ** 2 for x in k)
+    step = sum((x - km) * (v - vm) for x, v in zip(k, vals)) / den if den else 0.0
+    v0 = vm - step * km
+    for places in range(7):
+        a, b = round(v0, places), round(step, places)
+        if all(abs(v - a - x * b) <= tol for v, x in zip(vals, k)):
+            return a, b
+    return None
+
+
+def _near_grid(centers: list, tol: float = PITCH_TOL):
+    """``((x0, y0, dx, dy, cols, rows), offsets)`` when ``centers`` are an axis-aligned row
+    or grid of at least three holes whose positions a CAD program rounded: every hole
+    within ``tol`` (0.05 mm) of its node along each axis, the pitch at least 20 ``tol``,
+    the lattice's numbers the shortest decimals that hold them all (:func:`_round_fit`);
+    ``offsets`` ``{index: (dx, dy)}`` of the holes off their node by more than EQUAL_TOL
+    (at most :data:`MAX_OFF`), so that the pattern, written with them, draws every hole
+    exactly where the drawing has it; else None (and None when the lattice is exact:
+    :func:`_grid`)."""
+    n = len(centers)
+    if n < 3 or _grid(centers) is not None:
+        return None
+    fits, idx = [], []
+    for axis in (0, 1):
+        cl = _clusters([p[axis] for p in centers], tol)
+        mids = [sum(c) / len(c) for c in cl]
+        if len(cl) > 1:
+            pitch = (mids[-1] - mids[0]) / (len(cl) - 1)
+            if pitch < 20 * tol or any(abs(m - mids[0] - j * pitch) > 2 * tol
+                                       for j, m in enumerate(mids)):
+                return None         # (a node missing too: gap lists are exact)
+        if len(cl) > 1 and any(not _short(p[axis]) for p in centers):
+            return None             # not CAD rounding (a drift of 1e-5 mm is no rounding)
+        ks = [_nearest(mids, p[axis]) for p in centers]
+        fit = _round_fit([p[axis] for p in centers], ks, tol)
+        if fit is None:
+            return None
+        fits.append((fit, len(cl)))
+        idx.append(ks)
+    ((x0, dx), nx), ((y0, dy), ny) = fits
+    if nx * ny != n or len(set(zip(*idx))) != n or max(nx, ny) < 3:
+        return None
+    offs = {}
+    for m, p in enumerate(centers):
+        d = (p[0] - x0 - idx[0][m] * dx, p[1] - y0 - idx[1][m] * dy)
+        if max(abs(d[0]), abs(d[1])) > EQUAL_TOL:
+            offs[m] = d
+    if not offs or len(offs) > MAX_OFF or len(centers) > 4 * MAX_OFF:
+        return None
+    return (x0, y0, dx, dy, nx, ny), offs
+
+
 def _whole(centers: list, r: float) -> bool:
     """Whether ``centers`` (holes of radius ``r``, a circle's; 0 for other shapes) are one
     pattern: a bolt circle, a grid, a staggered or clipped hex grid, or a row."""
     return len(centers) >= 2 and (_grid(centers) is not None or _line(centers) is not None or
                                   _polar(centers) is not None or _stagger(centers) is not None
                                   or (r > 0 and _hex_field(centers, r) is not None)
-                                  or _gapped_grid(centers) is not None)
+                                  or _gapped_grid(centers) is not None
+                                  or _near_grid(centers) is not None)
 
 
 MAX_SPLIT = 400     # equal holes split into features by their neighbours (n^2 distances)
