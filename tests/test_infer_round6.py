@@ -117,3 +117,21 @@ def test_a_row_cad_rounded_off_its_pitch_stays_one_row_exactly(tmp_path):
     want = [mid + (k - 2.5) * 10 for k in range(6)]
     assert max(abs(g[0] - w) for g, w in zip(got, want)) <= 0.05, (got, text)
     assert [g[1] for g in got] == [20.0] * 6, got
+
+
+def test_an_odd_corner_hole_beside_a_grid_of_the_corner_holes_size(tmp_path):
+    """Three corner holes of 3 mm, the fourth 3.3 mm, and a 3 x 2 grid of 3 mm holes: the
+    corner holes are one corner pattern (its odd member its own size), the grid its own."""
+    doc, m = _doc(150, 60)
+    for x in (5, 145):
+        for y in (5, 55):
+            m.add_circle((x, y), 1.65 if (x, y) == (5, 5) else 1.5)
+    for x in (63, 75, 87):
+        for y in (24, 36):
+            m.add_circle((x, y), 1.5)
+    text = _text(doc)
+    assert "corner_inset = 5 mm" in text and "holes_cols = 3" in text, text
+    got = _holes(text, tmp_path, width=170, corner_inset=6)
+    want = sorted([(6.0, 6.0, 3.3), (6.0, 54.0, 3.0), (164.0, 6.0, 3.0), (164.0, 54.0, 3.0)] +
+                  [(x + 10.0, y, 3.0) for x in (63, 75, 87) for y in (24, 36)])
+    assert got == want, (got, text)

@@ -38,6 +38,7 @@ ticks, copies of a part) and :mod:`.infer_params` (numbers, params and construct
 """
 from __future__ import annotations
 
+import bisect
 import math
 from collections import Counter
 
@@ -187,7 +188,7 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
         singles = []
         centres = []          # bolt circle centres, for naming a bore
         self.share_centres(depth, groups, body)
-        self.merge_odd(groups)
+        self.merge_odd(groups, body)
         # the middles of the groups of three or more and how far their holes are from it
         # (a motor plate's corner slots about its bore, outside its motor holes)
         self.rings_at = [(mid, sum(math.dist(h.center, mid) for h in g) / len(g))
@@ -219,24 +220,39 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
             self.single(depth, sh, body, centres, few)
         self.sinks = None
 
-    def merge_odd(self, groups: dict) -> None:
+    def merge_odd(self, groups: dict, body) -> None:
         """A hole of a size no other has that completes a pattern of holes of its kind and
         a near size (one corner hole 4.4 mm among three of 4 mm, a row's last hole larger)
         joined to that pattern's group (``groups``: size key -> holes, changed in place) as
         its odd member (:attr:`odd`), so the pattern stays one and the odd hole keeps its
         own size (:meth:`hole_block`); the others of the group not a pattern without it, or
-        one it extends.  A hole a pattern surrounds (a bore) is never one."""
+        one it extends, or four at the corners of ``body`` among them.  A hole a pattern
+        surrounds (a bore) is never one."""
         self.odd = {}
-        for key in [k for k, g in groups.items() if len(g) == 1]:
+        # the groups an odd hole may join, by radius: each hole looks only at those of a
+        # near size (a binary search), not at every group (8,000 holes each of its own size)
+        big = sorted(((g[0].args["radius"], k) for k, g in groups.items()
+                      if len(g) >= 3 and g[0].kind == "Circle"), key=lambda t: t[0])
+        radii = [r for r, _ in big]
+        for n, key in enumerate([k for k, g in groups.items() if len(g) == 1] if big else []):
+            self.check(n, "finding the odd members of the patterns")
             odd = groups[key][0]
-            if odd.kind == "Polygon" or self.shared(odd.center) is not None:
+            if odd.kind != "Circle" or self.shared(odd.center) is not None:
                 continue
-            for k2, g in groups.items():
-                if k2 == key or len(g) < 3 or g[0].kind != odd.kind or \
-                        not _near_size(odd, g[0]):
+            r0 = odd.args["radius"]
+            lo = bisect.bisect_left(radii, r0 / ODD_SIZE)
+            hi = bisect.bisect_right(radii, r0 * ODD_SIZE)
+            for _, k2 in big[lo:hi][:8]:
+                g = groups[k2]
+                if not _near_size(odd, g[0]):
                     continue
                 r = g[0].args.get("radius", 0.0) if odd.kind == "Circle" else 0.0
-                if _whole([m.center for m in g] + [odd.center], r):
+                cs = [m.center for m in g] + [odd.center]
+                # the pattern it completes: the group's, or four at the body's corners
+                # among the group's holes (three corner holes of a grille's hole size)
+                sets = corner_sets(cs, body, rest=True) if len(cs) >= 5 else None
+                if _whole(cs, r) or sets and any(len(cs) - 1 in st for st in sets
+                                                 if len(st) == 4):
                     self.stats.readings.append(
                         f"a {_num(2 * odd.args['radius'])} mm hole at {_pt(odd.center)} completes "
                         f"a pattern of {_num(2 * g[0].args['radius'])} mm holes: one pattern, "

@@ -392,8 +392,11 @@ def _near_grid(centers: list, tol: float = PITCH_TOL):
     if n < 3 or _grid(centers) is not None:
         return None
     fits, idx = [], []
+    cls = [_clusters([p[axis] for p in centers], tol) for axis in (0, 1)]
+    if len(cls[0]) * len(cls[1]) != n:
+        return None                 # not every node of one lattice held once
     for axis in (0, 1):
-        cl = _clusters([p[axis] for p in centers], tol)
+        cl = cls[axis]
         mids = [sum(c) / len(c) for c in cl]
         if len(cl) > 1:
             pitch = (mids[-1] - mids[0]) / (len(cl) - 1)
