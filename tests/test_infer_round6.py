@@ -10,6 +10,7 @@ stays one row, exact.  Cost: a few imports and about ten compiles (seconds)."""
 from __future__ import annotations
 
 import io
+import math
 
 import ezdxf
 import pytest
@@ -135,3 +136,24 @@ def test_an_odd_corner_hole_beside_a_grid_of_the_corner_holes_size(tmp_path):
     want = sorted([(6.0, 6.0, 3.3), (6.0, 54.0, 3.0), (164.0, 6.0, 3.0), (164.0, 54.0, 3.0)] +
                   [(x + 10.0, y, 3.0) for x in (63, 75, 87) for y in (24, 36)])
     assert got == want, (got, text)
+
+
+def _fan(p: float, d: float, field: float, c=(40.0, 40.0)) -> list:
+    """The holes of a square-set grille clipped to a round field (mm), as the edited part's
+    drawing has them: every node ``p`` apart about ``c`` whose hole lies whole in it."""
+    k = int(field / p) + 2
+    return sorted((round(c[0] + i * p, 9) + 0.0, round(c[1] + j * p, 9) + 0.0, d)
+                  for i in range(-k, k + 1) for j in range(-k, k + 1)
+                  if math.hypot(i * p, j * p) + d / 2 <= field / 2 + 1e-9)
+
+
+def test_a_fan_grilles_square_set_holes_in_a_round_field_have_a_field_param(tmp_path):
+    doc, m = _doc(80, 80)
+    for x, y, _ in _fan(6, 4, 60):
+        m.add_circle((x, y), 2)
+    text = _text(doc)
+    assert "param holes_field_d = 60 mm" in text and "if not" not in text, text
+    assert _holes(text, tmp_path) == _fan(6, 4, 60), text
+    # a smaller field, a new pitch, on a wider plate: refilled about the plate's centre
+    assert _holes(text, tmp_path, holes_field_d=48) == _fan(6, 4, 48), text
+    assert _holes(text, tmp_path, holes_pitch=7, width=100) == _fan(7, 4, 60, (50, 40)), text

@@ -45,7 +45,7 @@ from collections import Counter
 from ...geometry.shapes.curves import Loop
 from .attachments import _attachments, _circle_attachments
 from .params import _Params, _ctor, _deg, _hole_name, _r
-from .patterns.find import (_Cells, _copies, _gapped_grid, _grid, _line, _near_grid, _polar, _runs, _stagger,
+from .patterns.find import (_Cells, _copies, _gapped_grid, _grid, _grid_field, _line, _near_grid, _polar, _runs, _stagger,
                             _hex_field, _hex_rect, _whole, _features, _unknown)
 from .shapes import EQUAL_TOL, ROUND_TOL, Shape, _close, circular, recognise
 from .anchors import _Anchored
@@ -604,6 +604,10 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
         if gr is not None:
             self.grid(depth, sh, base, gr)
             return True
+        gf = _grid_field(cs, sh.args["radius"]) if sh.kind == "Circle" else None
+        if gf is not None:      # a square-set grid clipped to a round field (a fan grille)
+            self.grid_field(depth, sh, base, gf)
+            return True
         gg = _gapped_grid(cs) if _stagger(cs) is None else None
         if gg is not None:      # a grid or row with holes left out: its gap list
             self.grid(depth, sh, base, gg[0], gg[1])
@@ -889,6 +893,42 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
         w.emit(depth, "}")
         self.stats.patterns["hex grid in a " + ("round" if len(f) == 1 else "rectangular")
                             + " field"] += 1
+
+    def grid_field(self, depth: int, sh: Shape, base: str, gf: tuple) -> None:
+        """A square-set grid clipped to a round field (``gf`` from :func:`_grid_field`, a
+        fan grille) as one grid: every node of the lattice about the field's centre whose
+        hole lies whole in the field, so that a new pitch, hole size or field diameter keeps
+        one grid filling its field; placed by its centre (:meth:`at`); params ``_pitch``
+        (``_pitch_x``, ``_pitch_y``), ``_d`` and ``_field_d``."""
+        (cx, cy), (dx, dy), half, field = gf
+        hn = self.name(base + "s")
+        sizes = self.size_params(hn, sh, True)
+        times = int(field / min(dx, dy)) + 1
+        if abs(dx - dy) <= EQUAL_TOL:
+            px = py = self.p(hn + "_pitch", dx, times=times)
+        else:
+            px = self.p(hn + "_pitch_x", dx, times=times)
+            py = self.p(hn + "_pitch_y", dy, times=times)
+        f = self.p(hn + "_field_d", field, "the round field the holes lie whole in")
+        k = self.name(hn + "_k")
+        x = f"(i + 0.5) * {px}" if half[0] else f"i * {px}"
+        y = f"(j + 0.5) * {py}" if half[1] else f"j * {py}"
+        d = sizes.get("diameter", _r(2 * sh.args["radius"]))
+        w = self.w
+        least = f"min(norm(({px}, 0)), norm(({py}, 0)))" if px != py else f"norm(({px}, 0))"
+        w.emit(depth, f"# a grid clipped to a round field, about its centre")
+        w.emit(depth, f"{k} = floor(norm(({f}, 0)) / {least}) + 1     # nodes each way from "
+                      f"the centre")
+        w.emit(depth, f"for j in range(-{k}, {k} + 1) {{")
+        w.emit(depth + 1, f"for i in range(-{k}, {k} + 1) {{")
+        w.emit(depth + 2, f"if norm(({x}, {y})) + {d} / 2 <= {f} / 2 + 1e-7 mm {{")
+        self.hole_block(depth + 3, hn, sh, f"({_add0(self.at(cx, 0), x)}, "
+                                           f"{_add0(self.at(cy, 1), y)})",
+                        sizes, turns.grid_nodes((cx, cy), (dx, dy), half))
+        w.emit(depth + 2, "}")
+        w.emit(depth + 1, "}")
+        w.emit(depth, "}")
+        self.stats.patterns["grid in a round field"] += 1
 
     def single(self, depth: int, sh: Shape, body, centres: list, few: bool = False) -> None:
         """One hole of a size no other has: its sizes params named after it (``slot_length``,

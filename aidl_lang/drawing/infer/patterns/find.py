@@ -8,7 +8,8 @@ when there is none.  Every pattern is checked member by member to
 * points (the centres of equal holes): a whole turn round a centre (:func:`_polar`, a bolt
   circle), an axis-aligned row, column or grid (:func:`_grid`), evenly spaced on one line
   (:func:`_line`), runs of equal steps (:func:`_runs`), a staggered grid (:func:`_stagger`),
-  a row or grid with nodes missing (:func:`_gapped_grid`, written with a gap list), a row or
+  a square-set grid clipped to a round field (:func:`_grid_field`, a fan grille), a row or
+  grid with nodes missing (:func:`_gapped_grid`, written with a gap list), a row or
   grid CAD rounded up to 0.05 mm off its pitch (:func:`_near_grid`, written with offsets),
   a hex lattice clipped to a round or rectangular field (:func:`_hex_field`,
   :func:`_hex_rect`; the field's size by :func:`_field_size`);
@@ -336,6 +337,43 @@ def _gapped_grid(centers: list):
     return (x0, y0, dx, dy, nx, ny), missing
 
 
+def _grid_field(centers: list, r: float):
+    """``(centre, (dx, dy), (half_x, half_y), field diameter)`` when ``centers`` are the
+    holes (radius ``r``) of an axis-aligned lattice that lie whole inside a round field
+    centred on it (a fan grille of square-set holes in a round cut-out): every node of the
+    lattice whose hole fits in the field a hole and no other, at least three rows and
+    columns, the lattice not full; ``half_x`` when the centre falls between two columns (an
+    even count: nodes at ``(i + 0.5) dx``); the field's diameter, of those that keep exactly
+    those holes, a whole number of pitches or else the roundest (:func:`_field_size`); else
+    None."""
+    n = len(centers)
+    if n < 9 or r <= 0:
+        return None
+    ax = _lattice_axis(_distinct([p[0] for p in centers]))
+    ay = _lattice_axis(_distinct([p[1] for p in centers]))
+    if ax is None or ay is None or ax[2] < 3 or ay[2] < 3 or ax[2] * ay[2] == n:
+        return None
+    (x0, dx, nx), (y0, dy, ny) = ax, ay
+    held = set()
+    for p in centers:
+        i, j = round((p[0] - x0) / dx), round((p[1] - y0) / dy)
+        if math.dist(p, (x0 + i * dx, y0 + j * dy)) > EQUAL_TOL or (i, j) in held:
+            return None
+        held.add((i, j))
+    mx, my = (nx - 1) / 2, (ny - 1) / 2
+
+    def dist(i, j):
+        return math.hypot((i - mx) * dx, (j - my) * dy)
+    inside = max(dist(i, j) for i, j in held)
+    outside = min((dist(i, j) for i in range(-2, nx + 2) for j in range(-2, ny + 2)
+                   if (i, j) not in held), default=math.inf)
+    if outside - inside <= 2 * EQUAL_TOL:
+        return None
+    c = (x0 + mx * dx, y0 + my * dy)
+    return c, (dx, dy), (nx % 2 == 0, ny % 2 == 0), \
+        _field_size(2 * (inside + r), 2 * (outside + r), min(dx, dy))
+
+
 PITCH_TOL = 0.05    # mm: a hole this near its node is on a pattern CAD rounded (issue 103)
 MAX_OFF = 64        # holes off their node a pattern writes as offsets (else none)
 
@@ -430,6 +468,7 @@ def _whole(centers: list, r: float) -> bool:
     return len(centers) >= 2 and (_grid(centers) is not None or _line(centers) is not None or
                                   _polar(centers) is not None or _stagger(centers) is not None
                                   or (r > 0 and _hex_field(centers, r) is not None)
+                                  or (r > 0 and _grid_field(centers, r) is not None)
                                   or _gapped_grid(centers) is not None
                                   or _near_grid(centers) is not None)
 
