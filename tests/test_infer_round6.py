@@ -157,3 +157,23 @@ def test_a_fan_grilles_square_set_holes_in_a_round_field_have_a_field_param(tmp_
     # a smaller field, a new pitch, on a wider plate: refilled about the plate's centre
     assert _holes(text, tmp_path, holes_field_d=48) == _fan(6, 4, 48), text
     assert _holes(text, tmp_path, holes_pitch=7, width=100) == _fan(7, 4, 60, (50, 40)), text
+
+
+def test_two_parts_side_by_side_keep_their_gap(tmp_path):
+    """Two plates drawn side by side in one file, 10 mm apart: the second is placed from
+    the first's right edge by a gap param and grows from its edge nearer the first, so a
+    wider first plate moves it along, a wider second one grows away, a new gap moves it."""
+    doc, m = _doc(60, 40)
+    m.add_lwpolyline([(70, 0), (120, 0), (120, 40), (70, 40)], close=True)
+    for x in (5, 55):
+        for y in (5, 35):
+            m.add_circle((x, y), 1.6)
+    m.add_circle((95, 20), 4)
+    text = _text(doc)
+    assert "param l_02_gap = 10 mm" in text, text
+    for edit, bore in (({}, 95.0), ({"l_01_width": 80}, 115.0), ({"l_02_width": 70}, 105.0),
+                       ({"l_02_gap": 5}, 90.0)):
+        got = _holes(text, tmp_path, **edit)
+        corners = [(5.0, 5.0), (5.0, 35.0)] + [(5.0 + edit.get("l_01_width", 60) - 10, y)
+                                               for y in (5.0, 35.0)]
+        assert [g[:2] for g in got] == sorted(corners + [(bore, 20.0)]), (edit, got, text)

@@ -127,6 +127,8 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
             lo = sh.center[axis] - sh.args[key] / 2
             hi = lo + sh.args[key]
             out[axis] = -1 if abs(lo - self.keep[1]) <= abs(hi - self.keep[1]) else 1
+        if getattr(self, "after", None) is not None:
+            out[self.after] = -1        # beside the part before it: from its near edge
         return tuple(out)
 
     def shared(self, c) -> str | None:
@@ -968,9 +970,13 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
 
 
 def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d: Drawing,
-           prefix: str, shift=None, marks: Marks | None = None, keep=None):
+           prefix: str, shift=None, marks: Marks | None = None, keep=None, after=None,
+           made: list | None = None):
     """Write the solid ``name`` of ``d``; returns how its labels are placed
-    (:func:`_label_place`: a drawing of texts on their own layer uses it too)."""
+    (:func:`_label_place`: a drawing of texts on their own layer uses it too).  ``after``:
+    the axis along which the part follows the one before it (:func:`_beside`: it grows
+    from its edge nearer that part); ``made``: a list the written :class:`_Part` is added
+    to."""
     if _unknown(d) or (d.engrave is not None and _unknown(d.engrave)):
         from ..write.program import _structure
         _structure(w, depth, "solid", name, d)
@@ -979,6 +985,9 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
     part.shift = shift
     part.marks = marks
     part.keep = keep
+    part.after = after
+    if made is not None:
+        made.append(part)
     loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
     # whole ellipses are loops too: a part's outline, a hole, an island in a hole
     every = loops + [[_whole_ellipse(el)] for el in d.ellipses]
@@ -1077,6 +1086,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
         w.emit(0, "assembly " + ("sheet" if parts else "drawing_import") + " {")
     short = _short_names([it[1] for it in items])
     names = []
+    prev = None             # the plain part written last: (name, Drawing, _Part)
     drawings = []           # (line index, name, d): written after the parts, placed by them
     place = _at_as_drawn
     for kind, name, d, *rep in items:
@@ -1096,6 +1106,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
                 w.emit(depth + 1, f"Fixed({name})")
             w.emit(depth, "}")
             stats.patterns["row of parts"] += 1
+            prev = None
             continue
         elif kind == "solid" and (pair := mirrored_pair(d, deadline)) is not None:
             word = _named_parts([("solid", "part", pair[0])])[0][1]
@@ -1104,10 +1115,17 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
                                                          keep=pair[1]))
             stats.patterns["mirrored part"] += 1
             name = name if name != word else word + "s"
+            prev = None
         else:
-            placed = _solid(w, params, stats, depth, name, d,
-                            short[name] + "_" if solids > 1 else "", marks=marks)
+            pre = short[name] + "_" if solids > 1 else ""
+            got = _beside(prev, d, params, pre, stats) if not parts and solids <= 3 else None
+            made: list = []
+            placed = _solid(w, params, stats, depth, name, d, pre, marks=marks,
+                            shift=got and got[1], after=got and got[0], made=made)
             place = placed if solids == 1 else _at_as_drawn
+            names.append(name)
+            prev = (name, d, made[0] if made else None)
+            continue
         names.append(name)
     # a layer of texts beside one part (LABELS beside OUTLINE): its labels placed with the
     # part's features, as the part's own engraving is
@@ -1134,6 +1152,33 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
         [f"units {UNIT.get()}"]
     text = "\n".join(head + params.lines + w.lines) + "\n"
     return text, w.notes
+
+
+def _beside(prev, d: Drawing, params: _Params, prefix: str, stats: _Stats):
+    """``(axis, shift)`` when the part ``d`` lies beside the part written before it,
+    ``prev`` (``(name, Drawing, _Part)``), along x (else y): past its right (top) edge,
+    their spans across overlapping (two brackets side by side in one file); the shift
+    (program text, 0 as drawn) places ``d`` from that part's edge by a gap param
+    (``<prefix>gap``), so that a wider first part moves the second along and keeps the gap
+    (docs/import.md, "What an edit means"); else None."""
+    if prev is None or prev[2] is None or prev[2].anchor is None:
+        return None
+    a, b = prev[1].box(), d.box()
+    if a is None or b is None:
+        return None
+    for axis in (0, 1):
+        lo, hi = axis, axis + 2
+        other = 1 - axis
+        gap = b[lo] - a[hi]
+        if gap > EQUAL_TOL and min(a[other + 2], b[other + 2]) - max(a[other], b[other]) > 0:
+            edge = prev[2].edge(axis, 1)
+            g = params.add(prefix + "gap", gap, f"from {prev[0]}'s "
+                                                f"{'right' if axis == 0 else 'top'} edge")
+            stats.readings.append(f"`{prefix[:-1] or 'part'}` beside `{prev[0]}`: placed from "
+                                  f"its {'right' if axis == 0 else 'top'} edge by `{g}`")
+            shift = f"({edge} + {g} - {_r(b[lo])})"
+            return axis, (shift, None) if axis == 0 else (None, shift)
+    return None
 
 
 # CPU seconds of inferring a design, to refuse one sure to end past the deadline before it

@@ -351,7 +351,8 @@ def _grid_field(centers: list, r: float):
         return None
     ax = _lattice_axis(_distinct([p[0] for p in centers]))
     ay = _lattice_axis(_distinct([p[1] for p in centers]))
-    if ax is None or ay is None or ax[2] < 3 or ay[2] < 3 or ax[2] * ay[2] == n:
+    if ax is None or ay is None or ax[2] < 3 or ay[2] < 3 or ax[2] * ay[2] == n or \
+            ax[2] * ay[2] > 2 * n:      # a round field holds 79 % of its square's nodes
         return None
     (x0, dx, nx), (y0, dy, ny) = ax, ay
     held = set()
