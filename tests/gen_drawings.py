@@ -69,9 +69,10 @@ ROUND5_KINDS = ("corners", "comb", "board", "flange")
 # edit means"): four corner holes one of which is drilled larger (``odd``: its index in
 # :meth:`Design.corner_members`, ``d_odd`` its diameter; it keeps its own size and its corner),
 # a grid with a node left out (``gaps``: ``[(i, j)]``, column and row from the lower left; the
-# gap stays at its turn when the counts change)
-IRREGULAR_KINDS = ("oddcorners", "gapgrid")
-BASE_KINDS = {"oddcorners": "corners", "gapgrid": "grid"}
+# gap stays at its turn when the counts change), a row of holes a CAD program rounded (``off``:
+# each hole's offset off the pitch, at most 0.03 mm or 0.0015 in; it stays as drawn)
+IRREGULAR_KINDS = ("oddcorners", "gapgrid", "cadrow")
+BASE_KINDS = {"oddcorners": "corners", "gapgrid": "grid", "cadrow": "row"}
 ALL_KINDS = KINDS + NEW_KINDS + ROUND5_KINDS + IRREGULAR_KINDS
 
 
@@ -647,7 +648,9 @@ def members(f, c) -> list:
         my = (max(p[1] for p in pts) + min(p[1] for p in pts)) / 2
         return [(c[0] + x - mx, c[1] + y - my) for x, y in pts]
     if k in ("row", "ventrow", "csk"):
-        s = [(i - (f["n"] - 1) / 2) * f["p"] for i in range(f["n"])]
+        off = f.get("off", [])          # a CAD-rounded row: each hole's offset off the pitch
+        s = [(i - (f["n"] - 1) / 2) * f["p"] + (off[i] if i < len(off) else 0.0)
+             for i in range(f["n"])]
         return [(c[0] + t, c[1]) if f["dir"] == "x" else (c[0], c[1] + t) for t in s]
     if k == "grid":
         py = f["py"] or f["px"]
@@ -899,6 +902,12 @@ def random_feature(rng: random.Random, T: dict, kind: str) -> dict:
              "w": rng.choice(T["pitch"][:4])}
         f["depth"] = f["w"] * rng.choice([1, 1.5, 2])
         f["at"] = _anchor(rng, T, 0 if f["edge"] in "BT" else 1)
+    elif kind == "cadrow":              # a row of holes a CAD program rounded
+        f.update(dir=rng.choice("xy"), n=rng.randint(3, 6), p=rng.choice(T["pitch"]),
+                 member="hole", d=d)
+        q = 0.01 if T is MM else 0.0005          # 0.01 mm, 0.0005 in: 0.0127 mm
+        f["off"] = [rng.choice([-3, -2, -1, 0, 1, 2, 3]) * q for _ in range(f["n"])]
+        f["off"][rng.randrange(f["n"])] = q
     elif kind == "row":
         f.update(dir=rng.choice("xy"), n=rng.randint(3, 6), p=rng.choice(T["pitch"]),
                  member=rng.choice(["hole", "hole", "slot"]), d=d)

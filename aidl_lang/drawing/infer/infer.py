@@ -320,7 +320,7 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
                 else:
                     cond = " and ".join(f"{v} == {x}" for v, x in turn) or "true"
                 terms[axis].append(f"{_r(d[axis])} if {cond} else ")
-        out = [f"{t} + ({''.join(terms[a])}0 mm)" if terms[a] else t
+        out = [f"{t} + ({''.join(terms[a])}0)" if terms[a] else t
                for a, t in enumerate(xy)]
         return f"({out[0]}, {out[1]})"
 

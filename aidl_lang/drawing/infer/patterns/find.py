@@ -391,8 +391,8 @@ def _clusters(vals: list, tol: float) -> list[list[float]]:
 
 
 def _short(v: float) -> bool:
-    """Whether ``v`` (mm) is within 1e-9 mm of a decimal of at most 4 places (what a CAD
-    program that rounds writes: 38.5, 46.87)."""
+    """Whether ``v`` (the drawing's unit) is within 1e-9 of a decimal of at most 4 places
+    (what a CAD program that rounds writes: 38.5, 46.87 mm; 0.251 in)."""
     return abs(v - round(v, 4)) <= 1e-9
 
 
@@ -403,8 +403,9 @@ def _nearest(vals: list, v: float) -> int:
 
 
 def _round_fit(vals: list, k: list, tol: float):
-    """``(v0, step)``: the shortest decimals (0 to 6 places) with every ``vals[m]`` within
-    ``tol`` of ``v0 + k[m] step``, from the least-squares line; None when none is."""
+    """``(v0, step)``: the shortest decimals (0 to 6 places, in the unit the program is
+    written in: an inch drawing's 0.6 in) with every ``vals[m]`` within ``tol`` of ``v0 +
+    k[m] step``, from the least-squares line; None when none is."""
     n = len(vals)
     km = sum(k) / n
     vm = sum(vals) / n
@@ -418,7 +419,7 @@ def _round_fit(vals: list, k: list, tol: float):
     return None
 
 
-def _near_grid(centers: list, tol: float = PITCH_TOL):
+def _near_grid(centers: list, tol: float | None = None):
     """``((x0, y0, dx, dy, cols, rows), offsets)`` when ``centers`` are an axis-aligned row
     or grid of at least three holes whose positions a CAD program rounded: every hole
     within ``tol`` (0.05 mm) of its node along each axis, the pitch at least 20 ``tol``,
@@ -430,6 +431,9 @@ def _near_grid(centers: list, tol: float = PITCH_TOL):
     n = len(centers)
     if n < 3 or _grid(centers) is not None:
         return None
+    if tol is None:                 # 0.05 mm in the unit the drawing is inferred in
+        from ...write.units import UNIT
+        tol = PITCH_TOL / (25.4 if UNIT.get() == "in" else 1.0)
     fits, idx = [], []
     cls = [_clusters([p[axis] for p in centers], tol) for axis in (0, 1)]
     if len(cls[0]) * len(cls[1]) != n:
