@@ -38,14 +38,13 @@ ticks, copies of a part) and :mod:`.infer_params` (numbers, params and construct
 """
 from __future__ import annotations
 
-import bisect
 import math
 from collections import Counter
 
 from ...geometry.shapes.curves import Loop
 from .attachments import _attachments, _circle_attachments
-from .params import _Params, _ctor, _deg, _hole_name, _r
-from .patterns.find import (_Cells, _copies, _gapped_grid, _grid, _grid_field, _line, _near_grid, _polar, _runs, _stagger,
+from .params import _Params, _add0, _ctor, _deg, _hole_name, _r
+from .patterns.find import (_Cells, _copies, _grid, _line, _polar, _runs, _stagger,
                             _hex_field, _hex_rect, _whole, _features, _unknown)
 from .shapes import EQUAL_TOL, ROUND_TOL, Shape, _close, circular, recognise
 from .anchors import _Anchored
@@ -59,30 +58,15 @@ from .profiles.write import _Profiles
 from .mirror import mirrored_pair, pair_items, write_pair
 from .holes.sinks import Marks
 from .patterns.groups import _Groups, corner_sets, corners_and_pattern, follows
+from .patterns.irregular import _Irregular
+from .patterns.fields import _Fields
+from .beside import _beside
 from .patterns.rings import _start, ring_in_scatter, rings, start_angle
 from .patterns import turns
 from ..write.program import _containers, _cut_notes, _layer_items, _place, _whole_ellipse
 from ..write.writer import _Names, _Writer, _emit_holds, _holds, _ident, _length, _num, _pt
 from ..write.units import UNIT, in_unit
 from ..model import Drawing, Note, _segs_box
-
-
-ODD_SIZE = 1.5      # a hole at most this many times larger (or smaller) than a pattern's
-#                     may be its odd member (merge_odd: 4.4 mm among 4 mm holes)
-
-
-def _near_size(a: Shape, b: Shape) -> bool:
-    """Whether ``a`` and ``b`` are circles whose diameters are within :data:`ODD_SIZE` of
-    each other (an odd member is a round hole: a clearance hole drilled larger)."""
-    if a.kind != "Circle" or b.kind != "Circle":
-        return False
-    x, y = a.args["radius"], b.args["radius"]
-    return 0 < min(x, y) and max(x, y) <= ODD_SIZE * min(x, y)
-
-
-def _add0(base: str, term: str) -> str:
-    """``base + term`` as text, ``term`` alone when ``base`` is ``0``."""
-    return term if base == "0" else f"{base} + {term}"
 
 
 class _Stats:
@@ -94,7 +78,7 @@ class _Stats:
         self.readings: list = []    # where two readings fit one drawing: which was taken
 
 
-class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
+class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, _Fields):
     """One part's statements, written into ``w`` at ``depth``."""
 
     def __init__(self, w: _Writer, params: _Params, stats: _Stats, prefix: str) -> None:
@@ -221,108 +205,6 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
             self.sunk_as([sh])
             self.single(depth, sh, body, centres, few)
         self.sinks = None
-
-    def merge_odd(self, groups: dict, body) -> None:
-        """A hole of a size no other has that completes a pattern of holes of its kind and
-        a near size (one corner hole 4.4 mm among three of 4 mm, a row's last hole larger)
-        joined to that pattern's group (``groups``: size key -> holes, changed in place) as
-        its odd member (:attr:`odd`), so the pattern stays one and the odd hole keeps its
-        own size (:meth:`hole_block`); the others of the group not a pattern without it, or
-        one it extends, or four at the corners of ``body`` among them.  A hole a pattern
-        surrounds (a bore) is never one."""
-        self.odd = {}
-        # the groups an odd hole may join, by radius: each hole looks only at those of a
-        # near size (a binary search), not at every group (8,000 holes each of its own size)
-        big = sorted(((g[0].args["radius"], k) for k, g in groups.items()
-                      if len(g) >= 3 and g[0].kind == "Circle"), key=lambda t: t[0])
-        radii = [r for r, _ in big]
-        for n, key in enumerate([k for k, g in groups.items() if len(g) == 1] if big else []):
-            self.check(n, "finding the odd members of the patterns")
-            odd = groups[key][0]
-            if odd.kind != "Circle" or self.shared(odd.center) is not None:
-                continue
-            r0 = odd.args["radius"]
-            lo = bisect.bisect_left(radii, r0 / ODD_SIZE)
-            hi = bisect.bisect_right(radii, r0 * ODD_SIZE)
-            for _, k2 in big[lo:hi][:8]:
-                g = groups[k2]
-                if not _near_size(odd, g[0]):
-                    continue
-                r = g[0].args.get("radius", 0.0) if odd.kind == "Circle" else 0.0
-                cs = [m.center for m in g] + [odd.center]
-                # the pattern it completes: the group's, or four at the body's corners
-                # among the group's holes (three corner holes of a grille's hole size)
-                sets = corner_sets(cs, body, rest=True) if len(cs) >= 5 else None
-                if _whole(cs, r) or sets and any(len(cs) - 1 in st for st in sets
-                                                 if len(st) == 4):
-                    self.stats.readings.append(
-                        f"a {_num(2 * odd.args['radius'])} mm hole at {_pt(odd.center)} completes "
-                        f"a pattern of {_num(2 * g[0].args['radius'])} mm holes: one pattern, "
-                        f"that hole its own size (`_odd_d`)")
-                    g.append(odd)
-                    del groups[key]
-                    self.odd[id(odd)] = g
-                    break
-
-    def own_sizes(self, hn: str, sh: Shape, sizes: dict, index=None) -> dict:
-        """The sizes a pattern's hole statement writes: ``sizes`` (its common params), with
-        each odd member's own (:meth:`merge_odd`: ``<hn>_odd_d``) chosen on its turn of the
-        loop (``index``: Shape -> the loop's variables on that turn), ``(corner_holes_odd_d
-        if sx == 1 and sy == 1 else corner_hole_d)``; the odd member's own when ``sh`` is
-        it and there is no loop."""
-        odd = getattr(self, "odd", None)
-        if not odd or not sizes:
-            return sizes
-        if index is None:
-            return self.size_params(hn + "_odd", sh, True) if id(sh) in odd else sizes
-        out = dict(sizes)
-        for m in self.sink_members:
-            if id(m) not in odd or not any(x is sh for x in odd[id(m)]):
-                continue
-            own = self.size_params(hn + "_odd", m, True)
-            turn = index(m)
-            cond = " and ".join(f"{v} == {x}" for v, x in turn) if turn else "true"
-            for k in out:
-                if k in own:
-                    out[k] = f"({own[k]} if {cond} else {out[k]})"
-        return out
-
-    def off_turns(self, center: str, index) -> str:
-        """``center`` (a loop's ``(x, y)`` text) with each member's offset off its node
-        (:attr:`offs`, a pattern CAD rounded: :func:`~.find._near_grid`) added on its turn
-        (``index``), ``x + (0.02 if i == 1 else -0.01 if i == 3 else 0)``, so the program
-        draws every hole where the drawing has it."""
-        offs = getattr(self, "offs", None)
-        if not offs or index is None:
-            return center
-        xy = turns._split(center)
-        if xy is None:
-            return center
-        terms = [[], []]
-        for axis, var in ((0, "i"), (1, "j")):
-            # one offset a column (row) when the CAD rounded each column's x (row's y)
-            lines: dict = {}
-            for m in self.sink_members:
-                turn = dict(index(m))
-                if var in turn:
-                    lines.setdefault(turn[var], set()).add(
-                        round(offs.get(id(m), (0.0, 0.0))[axis] / ROUND_TOL))
-            by_line = bool(lines) and all(len(v) == 1 for v in lines.values())
-            for m in self.sink_members:
-                d = offs.get(id(m), (0.0, 0.0))
-                if abs(d[axis]) <= ROUND_TOL:
-                    continue
-                turn = index(m)
-                if by_line:
-                    cond = f"{var} == {dict(turn)[var]}"
-                    if any(t.endswith(f"if {cond} else ") for t in terms[axis]):
-                        continue
-                else:
-                    cond = " and ".join(f"{v} == {x}" for v, x in turn) or "true"
-                terms[axis].append(f"{_r(d[axis])} if {cond} else ")
-        out = [f"{t} + ({''.join(terms[a])}0)" if terms[a] else t
-               for a, t in enumerate(xy)]
-        return f"({out[0]}, {out[1]})"
 
     def check(self, k: int, stage: str, every: int = 128) -> None:
         """The import's deadline looked at (``stage``) on every ``every``-th step ``k``."""
@@ -606,24 +488,7 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
         if gr is not None:
             self.grid(depth, sh, base, gr)
             return True
-        gf = _grid_field(cs, sh.args["radius"]) if sh.kind == "Circle" else None
-        if gf is not None:      # a square-set grid clipped to a round field (a fan grille)
-            self.grid_field(depth, sh, base, gf)
-            return True
-        gg = _gapped_grid(cs) if _stagger(cs) is None else None
-        if gg is not None:      # a grid or row with holes left out: its gap list
-            self.grid(depth, sh, base, gg[0], gg[1])
-            return True
-        ng = _near_grid(cs)
-        if ng is not None:      # a grid or row CAD rounded off its pitch: its offsets
-            self.offs = {id(g[m]): d for m, d in ng[1].items()}
-            worst = max(max(abs(d[0]), abs(d[1])) for d in ng[1].values())
-            self.stats.readings.append(
-                f"{len(g)} holes within {_num(worst)} mm of the nodes of one "
-                f"{'grid' if ng[0][4] > 1 and ng[0][5] > 1 else 'row'} (CAD rounding): one "
-                f"pattern, {len(ng[1])} of them written off their node as drawn")
-            self.grid(depth, sh, base, ng[0])
-            self.offs = {}
+        if self.irregular(depth, g, sh, base, cs):  # a fan grille, a gap list, CAD rounding
             return True
         # a hex lattice clipped to a round field, else to a rectangular one (the rosette
         # of seven is a round field), before any other staggered grid
@@ -852,86 +717,6 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
         self.w.emit(depth, "}")
         self.stats.patterns["staggered grid"] += 1
 
-    def hex_field(self, depth: int, sh: Shape, base: str, hf: tuple) -> None:
-        """A hex grid clipped to a round field (``hf`` from :func:`_hex_field`) or to a
-        rectangular one (:func:`_hex_rect`) as one grid: every node of the lattice about the
-        field's centre whose hole lies whole in the field, so that a new pitch, hole size or
-        field keeps one grid filling its field; placed by its centre (:meth:`pos`); params
-        ``_pitch``, ``_d`` and ``_field_d`` (``_field_width``, ``_field_height``)."""
-        (cx, cy), pitch, shift, *field = hf
-        hn = self.name(base + "s")
-        sizes = self.size_params(hn, sh, True)
-        p = self.p(hn + "_pitch", pitch, times=int(max(field) / pitch) + 1)
-        if len(field) == 1:
-            f = [self.p(hn + "_field_d", field[0], "the round field the holes lie whole in")]
-        else:
-            f = [self.p(hn + "_field_width", field[0], "the field the holes lie whole in"),
-                 self.p(hn + "_field_height", field[1])]
-        k = self.name(hn + "_k")
-        par = "j % 2" if not shift else "(j + 1) % 2"
-        x = f"(i + {par} / 2) * {p}"
-        y = f"j * {p} * sqrt(3) / 2"
-        d = sizes.get("diameter", _r(2 * sh.args["radius"]))
-        ax, ay = self.at(cx, 0), self.at(cy, 1)
-        w = self.w
-        # lengths as points' norms: a bare number given for one (`--set holes_pitch=8`) is
-        # in mm there, as in a point, so that range() still has a plain count
-        big = ", ".join(f"norm(({v}, 0))" for v in f)
-        big = big if len(f) == 1 else f"max({big})"
-        w.emit(depth, f"{k} = floor({big} / norm(({p}, 0))) + 1     # nodes each way from "
-                      f"the centre")
-        w.emit(depth, f"for j in range(-{k}, {k} + 1) {{")
-        w.emit(depth + 1, f"for i in range(-{k}, {k} + 1) {{")
-        # the hole whole in the field: round, or across and up in a rectangle
-        ifs = [f"norm(({x}, {y})) + {d} / 2 <= {f[0]} / 2 + 1e-7 mm"] if len(f) == 1 else \
-            [f"abs({v}) + {d} / 2 <= {fk} / 2 + 1e-7 mm" for v, fk in ((x, f[0]), (y, f[1]))]
-        for n, cond in enumerate(ifs):
-            w.emit(depth + 2 + n, f"if {cond} {{")
-        self.hole_block(depth + 2 + len(ifs), hn, sh, f"({_add0(ax, x)}, {_add0(ay, y)})",
-                        sizes, turns.hex_nodes((cx, cy), pitch, shift))
-        for n in reversed(range(len(ifs))):
-            w.emit(depth + 2 + n, "}")
-        w.emit(depth + 1, "}")
-        w.emit(depth, "}")
-        self.stats.patterns["hex grid in a " + ("round" if len(f) == 1 else "rectangular")
-                            + " field"] += 1
-
-    def grid_field(self, depth: int, sh: Shape, base: str, gf: tuple) -> None:
-        """A square-set grid clipped to a round field (``gf`` from :func:`_grid_field`, a
-        fan grille) as one grid: every node of the lattice about the field's centre whose
-        hole lies whole in the field, so that a new pitch, hole size or field diameter keeps
-        one grid filling its field; placed by its centre (:meth:`at`); params ``_pitch``
-        (``_pitch_x``, ``_pitch_y``), ``_d`` and ``_field_d``."""
-        (cx, cy), (dx, dy), half, field = gf
-        hn = self.name(base + "s")
-        sizes = self.size_params(hn, sh, True)
-        times = int(field / min(dx, dy)) + 1
-        if abs(dx - dy) <= EQUAL_TOL:
-            px = py = self.p(hn + "_pitch", dx, times=times)
-        else:
-            px = self.p(hn + "_pitch_x", dx, times=times)
-            py = self.p(hn + "_pitch_y", dy, times=times)
-        f = self.p(hn + "_field_d", field, "the round field the holes lie whole in")
-        k = self.name(hn + "_k")
-        x = f"(i + 0.5) * {px}" if half[0] else f"i * {px}"
-        y = f"(j + 0.5) * {py}" if half[1] else f"j * {py}"
-        d = sizes.get("diameter", _r(2 * sh.args["radius"]))
-        w = self.w
-        least = f"min(norm(({px}, 0)), norm(({py}, 0)))" if px != py else f"norm(({px}, 0))"
-        w.emit(depth, f"# a grid clipped to a round field, about its centre")
-        w.emit(depth, f"{k} = floor(norm(({f}, 0)) / {least}) + 1     # nodes each way from "
-                      f"the centre")
-        w.emit(depth, f"for j in range(-{k}, {k} + 1) {{")
-        w.emit(depth + 1, f"for i in range(-{k}, {k} + 1) {{")
-        w.emit(depth + 2, f"if norm(({x}, {y})) + {d} / 2 <= {f} / 2 + 1e-7 mm {{")
-        self.hole_block(depth + 3, hn, sh, f"({_add0(self.at(cx, 0), x)}, "
-                                           f"{_add0(self.at(cy, 1), y)})",
-                        sizes, turns.grid_nodes((cx, cy), (dx, dy), half))
-        w.emit(depth + 2, "}")
-        w.emit(depth + 1, "}")
-        w.emit(depth, "}")
-        self.stats.patterns["grid in a round field"] += 1
-
     def single(self, depth: int, sh: Shape, body, centres: list, few: bool = False) -> None:
         """One hole of a size no other has: its sizes params named after it (``slot_length``,
         ``cutout_width``) when the part has ``few`` such holes (:data:`SINGLE_PARAMS`), else
@@ -1152,33 +937,6 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
         [f"units {UNIT.get()}"]
     text = "\n".join(head + params.lines + w.lines) + "\n"
     return text, w.notes
-
-
-def _beside(prev, d: Drawing, params: _Params, prefix: str, stats: _Stats):
-    """``(axis, shift)`` when the part ``d`` lies beside the part written before it,
-    ``prev`` (``(name, Drawing, _Part)``), along x (else y): past its right (top) edge,
-    their spans across overlapping (two brackets side by side in one file); the shift
-    (program text, 0 as drawn) places ``d`` from that part's edge by a gap param
-    (``<prefix>gap``), so that a wider first part moves the second along and keeps the gap
-    (docs/import.md, "What an edit means"); else None."""
-    if prev is None or prev[2] is None or prev[2].anchor is None:
-        return None
-    a, b = prev[1].box(), d.box()
-    if a is None or b is None:
-        return None
-    for axis in (0, 1):
-        lo, hi = axis, axis + 2
-        other = 1 - axis
-        gap = b[lo] - a[hi]
-        if gap > EQUAL_TOL and min(a[other + 2], b[other + 2]) - max(a[other], b[other]) > 0:
-            edge = prev[2].edge(axis, 1)
-            g = params.add(prefix + "gap", gap, f"from {prev[0]}'s "
-                                                f"{'right' if axis == 0 else 'top'} edge")
-            stats.readings.append(f"`{prefix[:-1] or 'part'}` beside `{prev[0]}`: placed from "
-                                  f"its {'right' if axis == 0 else 'top'} edge by `{g}`")
-            shift = f"({edge} + {g} - {_r(b[lo])})"
-            return axis, (shift, None) if axis == 0 else (None, shift)
-    return None
 
 
 # CPU seconds of inferring a design, to refuse one sure to end past the deadline before it
