@@ -39,9 +39,10 @@ class _Irregular:
         a near size (one corner hole 4.4 mm among three of 4 mm, a row's last hole larger)
         joined to that pattern's group (``groups``: size key -> holes, changed in place) as
         its odd member (:attr:`odd`), so the pattern stays one and the odd hole keeps its
-        own size (:meth:`hole_block`); the others of the group not a pattern without it, or
-        one it extends, or four at the corners of ``body`` among them.  A hole a pattern
-        surrounds (a bore) is never one."""
+        own size (:meth:`hole_block`): when the group with it is one pattern (a grid it
+        completes, a row it extends) or it is one of four at the corners of ``body`` among
+        them (three corner holes of a grille's hole size).  A hole a pattern surrounds (a
+        bore) is never one; only the first eight groups of a near size are tried."""
         self.odd = {}
         # the groups an odd hole may join, by radius: each hole looks only at those of a
         # near size (a binary search), not at every group (8,000 holes each of its own size)
@@ -67,10 +68,11 @@ class _Irregular:
                 sets = corner_sets(cs, body, rest=True) if len(cs) >= 5 else None
                 if _whole(cs, r) or sets and any(len(cs) - 1 in st for st in sets
                                                  if len(st) == 4):
+                    u = UNIT.get()
                     self.stats.readings.append(
-                        f"a {_num(2 * odd.args['radius'])} mm hole at {_pt(odd.center)} completes "
-                        f"a pattern of {_num(2 * g[0].args['radius'])} mm holes: one pattern, "
-                        f"that hole its own size (`_odd_d`)")
+                        f"a {_num(2 * r0)} {u} hole at {_pt(odd.center)} completes a "
+                        f"pattern of {_num(2 * r)} {u} holes: one pattern, that hole its "
+                        f"own size (`_odd_d`)")
                     g.append(odd)
                     del groups[key]
                     self.odd[id(odd)] = g
