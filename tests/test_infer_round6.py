@@ -177,3 +177,25 @@ def test_two_parts_side_by_side_keep_their_gap(tmp_path):
         corners = [(5.0, 5.0), (5.0, 35.0)] + [(5.0 + edit.get("l_01_width", 60) - 10, y)
                                                for y in (5.0, 35.0)]
         assert [g[:2] for g in got] == sorted(corners + [(bore, 20.0)]), (edit, got, text)
+
+
+def test_an_inch_row_cad_rounded_keeps_its_pitch_in_inches(tmp_path):
+    """An inch drawing ($INSUNITS 1) of a row on a 0.4 in pitch, its holes written to the
+    thousandth a little off it: one row, its pitch 0.4 in (the 0.05 mm tolerance taken in
+    inches, not 0.05 in), drawn exactly; a new pitch keeps each hole's offset."""
+    doc = ezdxf.new("R2010")
+    doc.units = 1
+    m = doc.modelspace()
+    m.add_lwpolyline([(0, 0), (3, 0), (3, 1), (0, 1)], close=True)
+    off = [0.001, -0.001, 0.0, 0.0015]
+    for k, o in enumerate(off):
+        m.add_circle((0.9 + k * 0.4 + o, 0.5), 0.1)
+    text = _text(doc)
+    assert "units in" in text and "param holes_pitch = 0.4 in" in text, text
+    got = _holes(text, tmp_path)
+    want = [round((0.9 + k * 0.4 + o) * 25.4, 9) for k, o in enumerate(off)]
+    assert [g[0] for g in got] == want, (got, text)
+    got = _holes(text, tmp_path, holes_pitch="0.5 in")
+    mid = 0.9 + 1.5 * 0.4                   # about its middle (0.9 in: past 1.5 pitches)
+    want = [(mid + (k - 1.5) * 0.5 + o) * 25.4 for k, o in enumerate(off)]
+    assert max(abs(g[0] - w) for g, w in zip(got, want)) < 1e-6, (got, text)
