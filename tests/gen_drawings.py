@@ -64,7 +64,21 @@ NEW_KINDS = ("ddhole", "keyway", "ventrow", "csk")
 # a comb's notches (count, pitch, width, depth), a board's holes (an Arduino's, one set from
 # its nearest corner), a flange's bolt circle at a drawn first-hole angle (an edit turns it)
 ROUND5_KINDS = ("corners", "comb", "board", "flange")
-ALL_KINDS = KINDS + NEW_KINDS + ROUND5_KINDS
+# issue 103 (round six), drawn only when asked (--kinds irregular): drawings that are not
+# perfectly regular, as makers' files are, their truths from the spec (docs/import.md, "What an
+# edit means"): four corner holes one of which is drilled larger (``odd``: its index in
+# :meth:`Design.corner_members`, ``d_odd`` its diameter; it keeps its own size and its corner),
+# a grid with a node left out (``gaps``: ``[(i, j)]``, column and row from the lower left; the
+# gap stays at its turn when the counts change), a row of holes a CAD program rounded (``off``:
+# each hole's offset off the pitch, at most 0.03 mm or 0.0015 in; it stays as drawn)
+IRREGULAR_KINDS = ("oddcorners", "gapgrid", "cadrow")
+BASE_KINDS = {"oddcorners": "corners", "gapgrid": "grid", "cadrow": "row"}
+ALL_KINDS = KINDS + NEW_KINDS + ROUND5_KINDS + IRREGULAR_KINDS
+
+
+def base_kind(f) -> str:
+    """The kind a feature is drawn as (an irregular kind's regular one)."""
+    return BASE_KINDS.get(f["kind"], f["kind"])
 # a board's hole sets (mm, from the set's lower left): an Arduino Uno's, a sensor's
 BOARDS = [[(14.0, 2.5), (15.3, 50.7), (66.1, 7.6), (66.1, 35.5)],
           [(0.0, 0.0), (20.3, 3.8), (5.1, 17.8)]]
@@ -332,9 +346,10 @@ class Design:
         """The loops of feature ``i`` (design units): its holes (a notch: none, it is in the
         outline; a label: none)."""
         f = self.features[i]
-        if f["kind"] == "corners":
+        if base_kind(f) == "corners":
             if f["member"] == "hole":
-                return [circle(c, f["d"] / 2) for c in self.corner_members(f)]
+                return [circle(c, (f["d_odd"] if k == f.get("odd") else f["d"]) / 2)
+                        for k, c in enumerate(self.corner_members(f))]
             return [slot_loop(c, f["length"], f["w"], math.radians(f["angle"]))
                     for c in self.corner_members(f)]
         return loops_of(f, self.place(f)) if f["kind"] not in ("notch", "label", "comb") else []
@@ -375,7 +390,7 @@ class Design:
                + f", drawn from ({self.origin[0]:g}, {self.origin[1]:g}); "
                + ", ".join(f"{k} {v}" for k, v in self.style.items())]
         for i, f in enumerate(self.features):
-            k = f["kind"]
+            k = base_kind(f)
             sizes = ", ".join(f"{key} {v:g}" if isinstance(v, (int, float)) else f"{key} {v}"
                               for key, v in f.items()
                               if key not in ("kind", "ax", "ay", "at", "of", "dx", "dy"))
@@ -401,10 +416,10 @@ class Design:
         P = [(r"pitch(_[xy])?|spacing(_[xy])?|d[xy]", 1.0)]
         N = [(r"n(_[xy])?|count|cols|rows|n[xy]", 1.0)]
         for i, f in enumerate(self.features):
-            k = f["kind"]
+            k = base_kind(f)
 
             def add(kind, key, label, pats):
-                out.append(Edit(kind, k, i, key, f"{k} {label}", pats))
+                out.append(Edit(kind, f["kind"], i, key, f"{f['kind']} {label}", pats))
             if k in ("hole", "grid", "hexgrid", "boltcircle", "dhole"):
                 add("size", "d", "diameter", D)
             if k == "row":
@@ -523,7 +538,7 @@ def span(f) -> tuple:
 
 
 def _span(f) -> tuple:
-    k = f["kind"]
+    k = base_kind(f)
     if k == "board":
         pts = _board(f)
         return ((max(p[0] for p in pts) - min(p[0] for p in pts)) / 2,
@@ -622,7 +637,7 @@ def _board(f) -> list:
 
 def members(f, c) -> list:
     """The centres of a pattern's members (design units)."""
-    k = f["kind"]
+    k = base_kind(f)
     if k == "flange":
         a0 = math.radians(f["a0"])
         return [(c[0] + f["pcd"] / 2 * math.cos(a0 + TAU * i / f["n"]),
@@ -633,16 +648,18 @@ def members(f, c) -> list:
         my = (max(p[1] for p in pts) + min(p[1] for p in pts)) / 2
         return [(c[0] + x - mx, c[1] + y - my) for x, y in pts]
     if k in ("row", "ventrow", "csk"):
-        s = [(i - (f["n"] - 1) / 2) * f["p"] for i in range(f["n"])]
+        off = f.get("off", [])          # a CAD-rounded row: each hole's offset off the pitch
+        s = [(i - (f["n"] - 1) / 2) * f["p"] + (off[i] if i < len(off) else 0.0)
+             for i in range(f["n"])]
         return [(c[0] + t, c[1]) if f["dir"] == "x" else (c[0], c[1] + t) for t in s]
     if k == "grid":
         py = f["py"] or f["px"]
         return [(c[0] + (i - (f["nx"] - 1) / 2) * f["px"], c[1] + (j - (f["ny"] - 1) / 2) * py)
-                for i in range(f["nx"]) for j in range(f["ny"])]
+                for i in range(f["nx"]) for j in range(f["ny"]) if (i, j) not in f.get("gaps", ())]
     if k == "boltcircle":
         # the first hole on the x axis, on the y axis, or the axis between two holes: kept so
         # when the count changes
-        a0 = {"axis": 0.0, "top": math.pi / 2, "between": math.pi / f["n"]}[f["start"]]
+        a0 = {"axis": 0.0, "top": math.pi / 2, "between": f["a0r"]}[f["start"]]
         return [(c[0] + f["pcd"] / 2 * math.cos(a0 + TAU * i / f["n"]),
                  c[1] + f["pcd"] / 2 * math.sin(a0 + TAU * i / f["n"])) for i in range(f["n"])]
     if k == "hexgrid":
@@ -665,7 +682,7 @@ def members(f, c) -> list:
 
 
 def loops_of(f, c) -> list:
-    k = f["kind"]
+    k = base_kind(f)
     if k == "hole":
         return [circle(c, f["d"] / 2)]
     if k == "slot":
@@ -759,7 +776,7 @@ def _valid(d: Design) -> bool:
             return False
         if f.get("n", 2) < 2 or f.get("nx", 2) < 2 or f.get("ny", 2) < 2:
             return False
-        k = f["kind"]
+        k = base_kind(f)
         if (k == "slot" or (k == "row" and f["member"] == "slot")) and f["length"] <= f["w"] + m:
             return False
         if k == "keyhole" and not (f["w"] < f["D"] - m and f["L"] > f["D"] / 2 + m):
@@ -803,6 +820,9 @@ def _valid(d: Design) -> bool:
         if k == "board" and any(g is not f and g["kind"] == "board" and g["d"] == f["d"]
                                 for g in d.features):
             return False        # two boards' holes of one size: one set (no pattern tells)
+        if f["kind"] == "gapgrid" and (f["nx"] * f["ny"] < 6 or
+                                       not any(i < f["nx"] and j < f["ny"] for i, j in f["gaps"])):
+            return False        # a gap list needs a lattice a gap leaves one (issue 103)
         if k == "corners" and f["inset"] * 4 >= min(d.width, d.height) - 1e-9:
             return False        # nearer the edges than the centre lines (a tie: no corner)
         if k == "flange" and (f["pcd"] * math.sin(math.pi / f["n"]) < f["d"] + m
@@ -882,6 +902,12 @@ def random_feature(rng: random.Random, T: dict, kind: str) -> dict:
              "w": rng.choice(T["pitch"][:4])}
         f["depth"] = f["w"] * rng.choice([1, 1.5, 2])
         f["at"] = _anchor(rng, T, 0 if f["edge"] in "BT" else 1)
+    elif kind == "cadrow":              # a row of holes a CAD program rounded
+        f.update(dir=rng.choice("xy"), n=rng.randint(3, 6), p=rng.choice(T["pitch"]),
+                 member="hole", d=d)
+        q = 0.01 if T is MM else 0.0005          # 0.01 mm, 0.0005 in: 0.0127 mm
+        f["off"] = [rng.choice([-3, -2, -1, 0, 1, 2, 3]) * q for _ in range(f["n"])]
+        f["off"][rng.randrange(f["n"])] = q
     elif kind == "row":
         f.update(dir=rng.choice("xy"), n=rng.randint(3, 6), p=rng.choice(T["pitch"]),
                  member=rng.choice(["hole", "hole", "slot"]), d=d)
@@ -901,10 +927,14 @@ def random_feature(rng: random.Random, T: dict, kind: str) -> dict:
         f.update(n=rng.choice([3, 4, 5, 6, 8]), d=d, pcd=rng.choice(T["big"]) * 2,
                  bore=rng.choice([0, rng.choice(T["big"])]))
         f["start"] = rng.choice(["axis", "between", "top"])
-        # one reading of the holes drawn: with one at the top, 4 or 8 have one on the x axis
-        # and 6 are half a pitch off it (the x axis is what a person reads from)
-        if f["start"] == "top" and f["n"] % 2 == 0:
-            f["start"] = "axis" if f["n"] % 4 == 0 else "between"
+        # one reading of the holes drawn (the spec's: a new count keeps the first hole where
+        # it is, on the x axis, else at the top, else at its drawn angle): with one at the
+        # top, 4 or 8 have one on the x axis; 6 half a pitch off it have one at the top
+        if f["start"] == "top" and f["n"] % 4 == 0:
+            f["start"] = "axis"
+        if f["start"] == "between" and f["n"] == 6:
+            f["start"] = "top"
+        f["a0r"] = math.pi / f["n"]          # "between": drawn half a pitch off, kept so
     elif kind == "keyhole":
         f.update(D=rng.choice(T["big"][:3]) / 2, angle=rng.choice([0, 0, 90, 180]))
         f["w"] = f["D"] / 2
@@ -926,6 +956,16 @@ def random_feature(rng: random.Random, T: dict, kind: str) -> dict:
     elif kind == "csk":
         f.update(dir=rng.choice("xy"), n=rng.randint(2, 4), p=rng.choice(T["pitch"]), d=d,
                  D=round(d * rng.choice([1.6, 2.0, 2.2]), 4))
+    elif kind == "oddcorners":          # one of four corner holes drilled larger
+        f = {"kind": kind, "member": "hole", "d": d, "inset": rng.choice(T["off"][1:]),
+             "odd": rng.randrange(4)}
+        f["d_odd"] = round(d * 1.1, 1) if T is MM else d + 1 / 64
+    elif kind == "gapgrid":             # a grid with one node left out
+        f.update(nx=rng.randint(3, 5), ny=rng.randint(2, 4), px=rng.choice(T["pitch"]), d=d)
+        f["py"] = rng.choice([None, rng.choice(T["pitch"])])
+        if f["py"] == f["px"]:
+            f["py"] = None
+        f["gaps"] = [(rng.randrange(f["nx"]), rng.randrange(f["ny"]))]
     elif kind == "corners":
         f = {"kind": kind, "member": rng.choice(["hole", "hole", "slot"]), "d": d,
              "inset": rng.choice(T["off"][1:])}
@@ -958,7 +998,7 @@ def _spec_anchor(d: Design, f) -> dict:
     edit means"), per axis along which it has a pitch: on the centre line, centred; with an
     end member nearer its edge than one and a half pitches, by that end from that edge (ties: the low
     one); else by its middle, from the edge nearer it (``f["mid"]``: no span on that axis)."""
-    k = f["kind"]
+    k = base_kind(f)
     if k in ("row", "ventrow", "csk"):
         axes = [(0 if f["dir"] == "x" else 1, f["p"], "ax" if f["dir"] == "x" else "ay")]
     elif k == "grid":
@@ -992,7 +1032,7 @@ def _plain_anchor(d: Design, f) -> dict:
     """``f`` with an edge anchor that puts it on the plate's centre line said as centred: as
     far from both edges, a maker means the centre (the design must not be ambiguous); a
     row, grid or comb placed as the spec reads it (:func:`_spec_anchor`)."""
-    if f["kind"] in ("row", "ventrow", "csk", "grid", "comb"):
+    if base_kind(f) in ("row", "ventrow", "csk", "grid", "comb"):
         return _spec_anchor(d, f)
     if f["kind"] == "board":        # one set, from the reference nearest its holes' middle
         ms = members(f, d.place(f))

@@ -9,7 +9,7 @@ import re
 
 import ezdxf
 
-from gen_drawings import (INCH, TAU, Design, chain, circle, members, scaled,  # noqa: F401
+from gen_drawings import (INCH, TAU, Design, base_kind, chain, circle, members, scaled,  # noqa: F401
                           seg_ends, slot_loop)
 
 
@@ -50,7 +50,7 @@ def _dxf_loop(m, loop, att, bulges: bool):
 
 def _local_loops(f) -> list | None:
     """A pattern's one member at the origin, for a block (``None``: not drawn by blocks)."""
-    k = f["kind"]
+    k = base_kind(f)
     if k in ("grid", "hexgrid", "boltcircle", "flange", "board") or \
             (k == "row" and f["member"] == "hole"):
         return [circle((0.0, 0.0), f["d"] / 2)]

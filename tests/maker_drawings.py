@@ -11,6 +11,11 @@ any part prefix allowed) and whose value is the current one is set to the new va
 program rendered must be the drawing of the function with that keyword, up to a translation
 (the plate may grow about its centre where the drawing grows from its corner).
 
+Issue 103 (round six) adds drawings that are not perfectly regular, as makers' files are: a
+corner plate with one hole drilled larger, a grid with a hole left out, a fan grille of
+square-set holes in a round field, a flange's four holes at 45 degrees, two plates side by
+side in one file.
+
 Used by benchmarks/imports/infer_edits.py (the share of edits that do what was meant) and
 tests/test_import_infer_edits.py (the key edits).
 """
@@ -182,6 +187,72 @@ def brackets(leg=40.0, width=15.0, hole=4.0, gap=10.0) -> bytes:
 
 
 # name: (function, [(label, param pattern, current value, new value, keyword)])
+def corner_plate(width=160.0, height=100.0, inset=10.0, hole=4.0, odd=4.4) -> bytes:
+    """Four corner holes, the top right one drilled larger (issue 103: a clearance hole)."""
+    doc, m = _doc()
+    _rect(m, 0, 0, width, height)
+    for x in (inset, width - inset):
+        for y in (inset, height - inset):
+            big = x > width / 2 and y > height / 2
+            m.add_circle((x, y), (odd if big else hole) / 2)
+    return _bytes(doc)
+
+
+def gapped_grid(width=160.0, height=100.0, pitch=30.0, cols=4, rows=3, hole=5.0,
+                gap=(2, 1)) -> bytes:
+    """A grid of holes centred on the plate with one left out (issue 103), the gap at its
+    column and row from the lower left."""
+    doc, m = _doc()
+    _rect(m, 0, 0, width, height)
+    for i in range(cols):
+        for j in range(rows):
+            if (i, j) != gap:
+                m.add_circle((width / 2 + (i - (cols - 1) / 2) * pitch,
+                              height / 2 + (j - (rows - 1) / 2) * pitch), hole / 2)
+    return _bytes(doc)
+
+
+def fan_grille(width=80.0, height=80.0, pitch=6.0, hole=4.0, field=60.0, corner=3.4) -> bytes:
+    """A fan grille of square-set round holes clipped to a round field on the plate's centre
+    (issue 103), four mounting holes 4 mm in from the corners."""
+    doc, m = _doc()
+    _rect(m, 0, 0, width, height)
+    k = int(field / pitch) + 1
+    for i in range(-k, k + 1):
+        for j in range(-k, k + 1):
+            if math.hypot(i * pitch, j * pitch) + hole / 2 <= field / 2 + 1e-9:
+                m.add_circle((width / 2 + i * pitch, height / 2 + j * pitch), hole / 2)
+    for x in (4, width - 4):
+        for y in (4, height - 4):
+            m.add_circle((x, y), corner / 2)
+    return _bytes(doc)
+
+
+def flange45(width=80.0, height=80.0, count=4, pcd=50.0, hole=5.5, angle=45.0) -> bytes:
+    """A square flange: a bore and ``count`` holes on a circle, the first at 45 degrees."""
+    doc, m = _doc()
+    _rect(m, 0, 0, width, height)
+    c = (width / 2, height / 2)
+    m.add_circle(c, 10)
+    for k in range(count):
+        a = math.radians(angle) + 2 * math.pi * k / count
+        m.add_circle((c[0] + pcd / 2 * math.cos(a), c[1] + pcd / 2 * math.sin(a)), hole / 2)
+    return _bytes(doc)
+
+
+def two_plates(first=60.0, second=50.0, gap=10.0, height=40.0) -> bytes:
+    """Two plates side by side in one file (issue 103): four corner holes in the first, a
+    bore in the middle of the second."""
+    doc, m = _doc()
+    _rect(m, 0, 0, first, height)
+    _rect(m, first + gap, 0, second, height)
+    for x in (5, first - 5):
+        for y in (5, height - 5):
+            m.add_circle((x, y), 1.6)
+    m.add_circle((first + gap + second / 2, height / 2), 4)
+    return _bytes(doc)
+
+
 DRAWINGS = {
     "nema17": (nema17, [
         ("plate width", r"width", 60, 70, "width"),
@@ -239,5 +310,33 @@ DRAWINGS = {
     "brackets": (brackets, [
         ("hole size", r"holes?_d", 4, 5, "hole"),
         ("leg length", r"\w*leg\w*", 40, 50, "leg"),
+    ]),
+    "corner_plate": (corner_plate, [
+        ("plate width", r"width", 160, 200, "width"),
+        ("corner inset", r"corner_inset", 10, 12, "inset"),
+        ("corner hole size", r"corner_hole_d", 4, 3.5, "hole"),
+        ("odd hole size", r"\w*odd_d", 4.4, 5, "odd"),
+    ]),
+    "gapped_grid": (gapped_grid, [
+        ("plate width", r"width", 160, 200, "width"),
+        ("grid pitch", r"holes_pitch", 30, 25, "pitch"),
+        ("grid columns", r"holes_cols", 4, 5, "cols"),
+        ("hole size", r"holes_d", 5, 6, "hole"),
+    ]),
+    "fan_grille": (fan_grille, [
+        ("field size", r"holes_field_d", 60, 50, "field"),
+        ("grille pitch", r"holes_pitch", 6, 7, "pitch"),
+        ("grille hole size", r"holes_d", 4, 3.5, "hole"),
+        ("plate width", r"width", 80, 90, "width"),
+    ]),
+    "flange45": (flange45, [
+        ("bolt count", r"\w*_n", 4, 6, "count"),
+        ("pitch circle", r"\w*_pcd", 50, 56, "pcd"),
+        ("first hole's angle", r"\w*_angle", 45, 30, "angle"),
+    ]),
+    "two_plates": (two_plates, [
+        ("first plate's width", r"l_01_width", 60, 80, "first"),
+        ("second plate's width", r"l_02_width", 50, 70, "second"),
+        ("gap", r"l_02_gap", 10, 5, "gap"),
     ]),
 }

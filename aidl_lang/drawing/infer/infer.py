@@ -43,7 +43,7 @@ from collections import Counter
 
 from ...geometry.shapes.curves import Loop
 from .attachments import _attachments, _circle_attachments
-from .params import _Params, _ctor, _deg, _hole_name, _r
+from .params import _Params, _add0, _ctor, _deg, _hole_name, _r
 from .patterns.find import (_Cells, _copies, _grid, _line, _polar, _runs, _stagger,
                             _hex_field, _hex_rect, _whole, _features, _unknown)
 from .shapes import EQUAL_TOL, ROUND_TOL, Shape, _close, circular, recognise
@@ -58,17 +58,15 @@ from .profiles.write import _Profiles
 from .mirror import mirrored_pair, pair_items, write_pair
 from .holes.sinks import Marks
 from .patterns.groups import _Groups, corner_sets, corners_and_pattern, follows
+from .patterns.irregular import _Irregular
+from .patterns.fields import _Fields
+from .beside import _beside
 from .patterns.rings import _start, ring_in_scatter, rings, start_angle
 from .patterns import turns
 from ..write.program import _containers, _cut_notes, _layer_items, _place, _whole_ellipse
 from ..write.writer import _Names, _Writer, _emit_holds, _holds, _ident, _length, _num, _pt
 from ..write.units import UNIT, in_unit
 from ..model import Drawing, Note, _segs_box
-
-
-def _add0(base: str, term: str) -> str:
-    """``base + term`` as text, ``term`` alone when ``base`` is ``0``."""
-    return term if base == "0" else f"{base} + {term}"
 
 
 class _Stats:
@@ -80,7 +78,7 @@ class _Stats:
         self.readings: list = []    # where two readings fit one drawing: which was taken
 
 
-class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
+class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, _Fields):
     """One part's statements, written into ``w`` at ``depth``."""
 
     def __init__(self, w: _Writer, params: _Params, stats: _Stats, prefix: str) -> None:
@@ -113,6 +111,8 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
             lo = sh.center[axis] - sh.args[key] / 2
             hi = lo + sh.args[key]
             out[axis] = -1 if abs(lo - self.keep[1]) <= abs(hi - self.keep[1]) else 1
+        if getattr(self, "after", None) is not None:
+            out[self.after] = -1        # beside the part before it: from its near edge
         return tuple(out)
 
     def shared(self, c) -> str | None:
@@ -174,6 +174,7 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
         singles = []
         centres = []          # bolt circle centres, for naming a bore
         self.share_centres(depth, groups, body)
+        self.merge_odd(groups, body)
         # the middles of the groups of three or more and how far their holes are from it
         # (a motor plate's corner slots about its bore, outside its motor holes)
         self.rings_at = [(mid, sum(math.dist(h.center, mid) for h in g) / len(g))
@@ -312,6 +313,8 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
         """``hole hn { h = ... }`` and its ``Fixed``, and the countersink marks of the holes
         it writes (:attr:`sinks`), a subset of a loop's by ``index`` (Shape -> the loop's
         variables on its turn, :meth:`~.sinks.Marks.write`)."""
+        sizes = self.own_sizes(hn, sh, sizes, index)
+        center = self.off_turns(center, index)
         self.w.emit(depth, f"hole {hn} {{ h = {_ctor(sh, center, sizes)} }}")
         self.w.emit(depth, f"Fixed({hn}.h)")
         if index is not None:       # a label beside a member follows it (written_at)
@@ -383,7 +386,8 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
                     c = f"({self.from_body_centre(0, ex, mid[0])}, {self.from_body_centre(1, ey, mid[1])})"
                     w.emit(depth, f"# at the corners, {inx if inx == iny else inx + ' and ' + iny}"
                                   f" in from the edges")
-                    if self.sinks is None and bname in self.rects:
+                    if self.sinks is None and bname in self.rects and \
+                            not any(id(m) in getattr(self, "odd", {}) for m in g):
                         # the language's own: the inset is one word to change (issue 93)
                         first = c.replace("sx", "-1").replace("sy", "-1")
                         if wx and hy:       # the bottom-left corner's, where it goes
@@ -483,6 +487,8 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
         gr = _grid(cs)
         if gr is not None:
             self.grid(depth, sh, base, gr)
+            return True
+        if self.irregular(depth, g, sh, base, cs):  # a fan grille, a gap list, CAD rounding
             return True
         # a hex lattice clipped to a round field, else to a rectangular one (the rosette
         # of seven is a round field), before any other staggered grid
@@ -602,11 +608,14 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
         nm = self.shared(c)
         return None if nm is None else getattr(self, "shared_kind", {}).get(nm)
 
-    def grid(self, depth: int, sh: Shape, base: str, gr: tuple) -> None:
+    def grid(self, depth: int, sh: Shape, base: str, gr: tuple, missing=()) -> None:
         """A row, column or grid (``gr`` from :func:`_grid`) as loops over count params:
         centred on the feature it surrounds or on the body where it is (``(i - (n - 1) /
         2) * pitch``), else from its first instance placed by the nearest edge or centre;
-        one pitch param when the steps are equal both ways."""
+        one pitch param when the steps are equal both ways.  ``missing``: the nodes ``(i,
+        j)`` of the lattice left out (:func:`_gapped_grid`), written as the loop's gap list
+        (``if not (i == 2 and j == 1) { ... }``), so the pattern keeps its pitch and
+        place."""
         x0, y0, dx, dy, nx, ny = gr
         mid = (x0 + dx * (nx - 1) / 2, y0 + dy * (ny - 1) / 2)
         around = self.surrounds(mid)
@@ -647,11 +656,24 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
         for ln in loops:
             self.w.emit(d, ln)
             d += 1
+        if missing:
+            gaps = " or ".join(" and ".join(f"{v} == {k}" for v, k, n in
+                                            (("i", i, nx), ("j", j, ny)) if n > 1)
+                               for i, j in missing)
+            many = len(missing) > 1
+            self.w.emit(d, f"if not ({gaps}) {{     # the gap{'s' if many else ''}: "
+                           f"{len(missing)} hole{'s' if many else ''} of the "
+                           f"{'grid' if both else 'row'} left out, as drawn")
+            d += 1
         self.hole_block(d, hn, sh, f"({out[0]}, {out[1]})", sizes, turns.grid(*gr))
+        if missing:
+            d -= 1
+            self.w.emit(d, "}")
         for _ in loops:
             d -= 1
             self.w.emit(d, "}")
-        self.stats.patterns["grid" if both else "row"] += 1
+        kind = "grid" if both else "row"
+        self.stats.patterns[kind + (" with a gap list" if missing else "")] += 1
 
     def stagger(self, depth: int, sh: Shape, base: str, st: tuple) -> None:
         """A staggered (hex) grid (``st`` from :func:`_stagger`) as one pattern: one pitch,
@@ -695,50 +717,6 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
         self.w.emit(depth, "}")
         self.stats.patterns["staggered grid"] += 1
 
-    def hex_field(self, depth: int, sh: Shape, base: str, hf: tuple) -> None:
-        """A hex grid clipped to a round field (``hf`` from :func:`_hex_field`) or to a
-        rectangular one (:func:`_hex_rect`) as one grid: every node of the lattice about the
-        field's centre whose hole lies whole in the field, so that a new pitch, hole size or
-        field keeps one grid filling its field; placed by its centre (:meth:`pos`); params
-        ``_pitch``, ``_d`` and ``_field_d`` (``_field_width``, ``_field_height``)."""
-        (cx, cy), pitch, shift, *field = hf
-        hn = self.name(base + "s")
-        sizes = self.size_params(hn, sh, True)
-        p = self.p(hn + "_pitch", pitch, times=int(max(field) / pitch) + 1)
-        if len(field) == 1:
-            f = [self.p(hn + "_field_d", field[0], "the round field the holes lie whole in")]
-        else:
-            f = [self.p(hn + "_field_width", field[0], "the field the holes lie whole in"),
-                 self.p(hn + "_field_height", field[1])]
-        k = self.name(hn + "_k")
-        par = "j % 2" if not shift else "(j + 1) % 2"
-        x = f"(i + {par} / 2) * {p}"
-        y = f"j * {p} * sqrt(3) / 2"
-        d = sizes.get("diameter", _r(2 * sh.args["radius"]))
-        ax, ay = self.at(cx, 0), self.at(cy, 1)
-        w = self.w
-        # lengths as points' norms: a bare number given for one (`--set holes_pitch=8`) is
-        # in mm there, as in a point, so that range() still has a plain count
-        big = ", ".join(f"norm(({v}, 0))" for v in f)
-        big = big if len(f) == 1 else f"max({big})"
-        w.emit(depth, f"{k} = floor({big} / norm(({p}, 0))) + 1     # nodes each way from "
-                      f"the centre")
-        w.emit(depth, f"for j in range(-{k}, {k} + 1) {{")
-        w.emit(depth + 1, f"for i in range(-{k}, {k} + 1) {{")
-        # the hole whole in the field: round, or across and up in a rectangle
-        ifs = [f"norm(({x}, {y})) + {d} / 2 <= {f[0]} / 2 + 1e-7 mm"] if len(f) == 1 else \
-            [f"abs({v}) + {d} / 2 <= {fk} / 2 + 1e-7 mm" for v, fk in ((x, f[0]), (y, f[1]))]
-        for n, cond in enumerate(ifs):
-            w.emit(depth + 2 + n, f"if {cond} {{")
-        self.hole_block(depth + 2 + len(ifs), hn, sh, f"({_add0(ax, x)}, {_add0(ay, y)})",
-                        sizes, turns.hex_nodes((cx, cy), pitch, shift))
-        for n in reversed(range(len(ifs))):
-            w.emit(depth + 2 + n, "}")
-        w.emit(depth + 1, "}")
-        w.emit(depth, "}")
-        self.stats.patterns["hex grid in a " + ("round" if len(f) == 1 else "rectangular")
-                            + " field"] += 1
-
     def single(self, depth: int, sh: Shape, body, centres: list, few: bool = False) -> None:
         """One hole of a size no other has: its sizes params named after it (``slot_length``,
         ``cutout_width``) when the part has ``few`` such holes (:data:`SINGLE_PARAMS`), else
@@ -777,9 +755,13 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles):
 
 
 def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d: Drawing,
-           prefix: str, shift=None, marks: Marks | None = None, keep=None):
+           prefix: str, shift=None, marks: Marks | None = None, keep=None, after=None,
+           made: list | None = None):
     """Write the solid ``name`` of ``d``; returns how its labels are placed
-    (:func:`_label_place`: a drawing of texts on their own layer uses it too)."""
+    (:func:`_label_place`: a drawing of texts on their own layer uses it too).  ``after``:
+    the axis along which the part follows the one before it (:func:`_beside`: it grows
+    from its edge nearer that part); ``made``: a list the written :class:`_Part` is added
+    to."""
     if _unknown(d) or (d.engrave is not None and _unknown(d.engrave)):
         from ..write.program import _structure
         _structure(w, depth, "solid", name, d)
@@ -788,6 +770,9 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
     part.shift = shift
     part.marks = marks
     part.keep = keep
+    part.after = after
+    if made is not None:
+        made.append(part)
     loops = [circular(o.segments) for o in d.outlines] + [[c] for c in d.circles]
     # whole ellipses are loops too: a part's outline, a hole, an island in a hole
     every = loops + [[_whole_ellipse(el)] for el in d.ellipses]
@@ -886,6 +871,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
         w.emit(0, "assembly " + ("sheet" if parts else "drawing_import") + " {")
     short = _short_names([it[1] for it in items])
     names = []
+    prev = None             # the plain part written last: (name, Drawing, _Part)
     drawings = []           # (line index, name, d): written after the parts, placed by them
     place = _at_as_drawn
     for kind, name, d, *rep in items:
@@ -905,6 +891,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
                 w.emit(depth + 1, f"Fixed({name})")
             w.emit(depth, "}")
             stats.patterns["row of parts"] += 1
+            prev = None
             continue
         elif kind == "solid" and (pair := mirrored_pair(d, deadline)) is not None:
             word = _named_parts([("solid", "part", pair[0])])[0][1]
@@ -913,10 +900,17 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
                                                          keep=pair[1]))
             stats.patterns["mirrored part"] += 1
             name = name if name != word else word + "s"
+            prev = None
         else:
-            placed = _solid(w, params, stats, depth, name, d,
-                            short[name] + "_" if solids > 1 else "", marks=marks)
+            pre = short[name] + "_" if solids > 1 else ""
+            got = _beside(prev, d, params, pre, stats) if not parts and solids <= 3 else None
+            made: list = []
+            placed = _solid(w, params, stats, depth, name, d, pre, marks=marks,
+                            shift=got and got[1], after=got and got[0], made=made)
             place = placed if solids == 1 else _at_as_drawn
+            names.append(name)
+            prev = (name, d, made[0] if made else None)
+            continue
         names.append(name)
     # a layer of texts beside one part (LABELS beside OUTLINE): its labels placed with the
     # part's features, as the part's own engraving is

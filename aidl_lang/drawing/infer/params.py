@@ -119,3 +119,7 @@ def _hole_name(sh: Shape) -> str:
         return "hex" if sh.args["sides"] == 6 else "polygon"
     return _HOLE_NAMES.get(sh.kind, "cutout")
 
+
+def _add0(base: str, term: str) -> str:
+    """``base + term`` as text, ``term`` alone when ``base`` is ``0``."""
+    return term if base == "0" else f"{base} + {term}"

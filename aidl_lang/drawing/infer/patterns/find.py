@@ -8,6 +8,9 @@ when there is none.  Every pattern is checked member by member to
 * points (the centres of equal holes): a whole turn round a centre (:func:`_polar`, a bolt
   circle), an axis-aligned row, column or grid (:func:`_grid`), evenly spaced on one line
   (:func:`_line`), runs of equal steps (:func:`_runs`), a staggered grid (:func:`_stagger`),
+  a square-set grid clipped to a round field (:func:`_grid_field`, a fan grille), a row or
+  grid with nodes missing (:func:`_gapped_grid`, written with a gap list), a row or
+  grid CAD rounded up to 0.05 mm off its pitch (:func:`_near_grid`, written with offsets),
   a hex lattice clipped to a round or rectangular field (:func:`_hex_field`,
   :func:`_hex_rect`; the field's size by :func:`_field_size`);
 * an outline that is one run of pieces turned ``n`` times round a centre (:func:`_polar_chain`,
@@ -285,12 +288,194 @@ def _hex_rect(centers: list, r: float):
     return (cx, cy), pitch, shift, _field_size(*wide, pitch), _field_size(*high, pitch)
 
 
+MAX_GAPS = 1 / 4     # of a lattice's nodes, at most this share may be missing (a gap list)
+
+
+def _lattice_axis(vals: list):
+    """``(v0, step, n)`` when sorted distinct ``vals`` lie on one pitch with some nodes
+    missing (``v0 + k step``, ``k`` whole, each within EQUAL_TOL): the pitch is the
+    shortest step between them; else None.  One value: ``(v, 0, 1)``."""
+    if len(vals) == 1:
+        return vals[0], 0.0, 1
+    step = min(b - a for a, b in zip(vals, vals[1:]))
+    if step <= EQUAL_TOL:
+        return None
+    n = round((vals[-1] - vals[0]) / step) + 1
+    if n > 2 * len(vals) + 2:
+        return None
+    step = (vals[-1] - vals[0]) / (n - 1)
+    if any(abs(v - vals[0] - round((v - vals[0]) / step) * step) > EQUAL_TOL for v in vals):
+        return None
+    return vals[0], step, n
+
+
+def _gapped_grid(centers: list):
+    """``((x0, y0, dx, dy, cols, rows), missing)`` when ``centers`` are an axis-aligned
+    lattice (a row or a grid) with some nodes left out (a 4 x 3 grid with one hole
+    missing, a perforated row with a gap): at least four holes, at least one node missing
+    and at most :data:`MAX_GAPS` of them, every hole on a node to EQUAL_TOL; ``missing``
+    the nodes' ``(i, j)`` (column, row from ``(x0, y0)``); else None."""
+    n = len(centers)
+    if n < 4:
+        return None
+    ax = _lattice_axis(_distinct([p[0] for p in centers]))
+    ay = _lattice_axis(_distinct([p[1] for p in centers]))
+    if ax is None or ay is None:
+        return None
+    (x0, dx, nx), (y0, dy, ny) = ax, ay
+    nodes = nx * ny
+    if nodes <= n or nodes - n > max(1, int(nodes * MAX_GAPS)) or (nx < 3 and ny < 3):
+        return None
+    held = set()
+    for p in centers:
+        i = round((p[0] - x0) / dx) if nx > 1 else 0
+        j = round((p[1] - y0) / dy) if ny > 1 else 0
+        if math.dist(p, (x0 + i * dx, y0 + j * dy)) > EQUAL_TOL or (i, j) in held:
+            return None
+        held.add((i, j))
+    missing = [(i, j) for i in range(nx) for j in range(ny) if (i, j) not in held]
+    return (x0, y0, dx, dy, nx, ny), missing
+
+
+def _grid_field(centers: list, r: float):
+    """``(centre, (dx, dy), (half_x, half_y), field diameter)`` when ``centers`` are the
+    holes (radius ``r``) of an axis-aligned lattice that lie whole inside a round field
+    centred on it (a fan grille of square-set holes in a round cut-out): every node of the
+    lattice whose hole fits in the field a hole and no other, at least three rows and
+    columns, the lattice not full; ``half_x`` when the centre falls between two columns (an
+    even count: nodes at ``(i + 0.5) dx``); the field's diameter, of those that keep exactly
+    those holes, a whole number of pitches or else the roundest (:func:`_field_size`); else
+    None."""
+    n = len(centers)
+    if n < 9 or r <= 0:
+        return None
+    ax = _lattice_axis(_distinct([p[0] for p in centers]))
+    ay = _lattice_axis(_distinct([p[1] for p in centers]))
+    if ax is None or ay is None or ax[2] < 3 or ay[2] < 3 or ax[2] * ay[2] == n or \
+            ax[2] * ay[2] > 2 * n:      # a round field holds 79 % of its square's nodes
+        return None
+    (x0, dx, nx), (y0, dy, ny) = ax, ay
+    held = set()
+    for p in centers:
+        i, j = round((p[0] - x0) / dx), round((p[1] - y0) / dy)
+        if math.dist(p, (x0 + i * dx, y0 + j * dy)) > EQUAL_TOL or (i, j) in held:
+            return None
+        held.add((i, j))
+    mx, my = (nx - 1) / 2, (ny - 1) / 2
+
+    def dist(i, j):
+        return math.hypot((i - mx) * dx, (j - my) * dy)
+    inside = max(dist(i, j) for i, j in held)
+    outside = min((dist(i, j) for i in range(-2, nx + 2) for j in range(-2, ny + 2)
+                   if (i, j) not in held), default=math.inf)
+    if outside - inside <= 2 * EQUAL_TOL:
+        return None
+    c = (x0 + mx * dx, y0 + my * dy)
+    return c, (dx, dy), (nx % 2 == 0, ny % 2 == 0), \
+        _field_size(2 * (inside + r), 2 * (outside + r), min(dx, dy))
+
+
+PITCH_TOL = 0.05    # mm: a hole this near its node is on a pattern CAD rounded (issue 103)
+MAX_OFF = 64        # holes off their node a pattern writes as offsets (else none)
+
+
+def _clusters(vals: list, tol: float) -> list[list[float]]:
+    """Sorted ``vals`` in runs whose neighbours are within ``2 tol`` of each other."""
+    out: list = []
+    for v in sorted(vals):
+        if out and v - out[-1][-1] <= 2 * tol:
+            out[-1].append(v)
+        else:
+            out.append([v])
+    return out
+
+
+def _short(v: float) -> bool:
+    """Whether ``v`` (the drawing's unit) is within 1e-9 of a decimal of at most 4 places
+    (what a CAD program that rounds writes: 38.5, 46.87 mm; 0.251 in)."""
+    return abs(v - round(v, 4)) <= 1e-9
+
+
+def _nearest(vals: list, v: float) -> int:
+    """The index of the value of sorted ``vals`` nearest ``v`` (a binary search)."""
+    k = bisect.bisect_left(vals, v)
+    return min((j for j in (k - 1, k) if 0 <= j < len(vals)), key=lambda j: abs(vals[j] - v))
+
+
+def _round_fit(vals: list, k: list, tol: float):
+    """``(v0, step)``: the shortest decimals (0 to 6 places, in the unit the program is
+    written in: an inch drawing's 0.6 in) with every ``vals[m]`` within ``tol`` of ``v0 +
+    k[m] step``, from the least-squares line; None when none is."""
+    n = len(vals)
+    km = sum(k) / n
+    vm = sum(vals) / n
+    den = sum((x - km) ** 2 for x in k)
+    step = sum((x - km) * (v - vm) for x, v in zip(k, vals)) / den if den else 0.0
+    v0 = vm - step * km
+    for places in range(7):
+        a, b = round(v0, places), round(step, places)
+        if all(abs(v - a - x * b) <= tol for v, x in zip(vals, k)):
+            return a, b
+    return None
+
+
+def _near_grid(centers: list, tol: float | None = None):
+    """``((x0, y0, dx, dy, cols, rows), offsets)`` when ``centers`` are an axis-aligned row
+    or grid of at least three holes whose positions a CAD program rounded: every hole
+    within ``tol`` (0.05 mm) of its node along each axis, the pitch at least 20 ``tol``,
+    the lattice's numbers the shortest decimals that hold them all (:func:`_round_fit`);
+    ``offsets`` ``{index: (dx, dy)}`` of the holes off their node by more than EQUAL_TOL
+    (at most :data:`MAX_OFF`), so that the pattern, written with them, draws every hole
+    exactly where the drawing has it; else None (and None when the lattice is exact:
+    :func:`_grid`)."""
+    n = len(centers)
+    if n < 3 or _grid(centers) is not None:
+        return None
+    if tol is None:                 # 0.05 mm in the unit the drawing is inferred in
+        from ...write.units import UNIT
+        tol = PITCH_TOL / (25.4 if UNIT.get() == "in" else 1.0)
+    fits, idx = [], []
+    cls = [_clusters([p[axis] for p in centers], tol) for axis in (0, 1)]
+    if len(cls[0]) * len(cls[1]) != n:
+        return None                 # not every node of one lattice held once
+    for axis in (0, 1):
+        cl = cls[axis]
+        mids = [sum(c) / len(c) for c in cl]
+        if len(cl) > 1:
+            pitch = (mids[-1] - mids[0]) / (len(cl) - 1)
+            if pitch < 20 * tol or any(abs(m - mids[0] - j * pitch) > 2 * tol
+                                       for j, m in enumerate(mids)):
+                return None         # (a node missing too: gap lists are exact)
+        if len(cl) > 1 and any(not _short(p[axis]) for p in centers):
+            return None             # not CAD rounding (a drift of 1e-5 mm is no rounding)
+        ks = [_nearest(mids, p[axis]) for p in centers]
+        fit = _round_fit([p[axis] for p in centers], ks, tol)
+        if fit is None:
+            return None
+        fits.append((fit, len(cl)))
+        idx.append(ks)
+    ((x0, dx), nx), ((y0, dy), ny) = fits
+    if nx * ny != n or len(set(zip(*idx))) != n or max(nx, ny) < 3:
+        return None
+    offs = {}
+    for m, p in enumerate(centers):
+        d = (p[0] - x0 - idx[0][m] * dx, p[1] - y0 - idx[1][m] * dy)
+        if max(abs(d[0]), abs(d[1])) > EQUAL_TOL:
+            offs[m] = d
+    if not offs or len(offs) > MAX_OFF or len(centers) > 4 * MAX_OFF:
+        return None
+    return (x0, y0, dx, dy, nx, ny), offs
+
+
 def _whole(centers: list, r: float) -> bool:
     """Whether ``centers`` (holes of radius ``r``, a circle's; 0 for other shapes) are one
     pattern: a bolt circle, a grid, a staggered or clipped hex grid, or a row."""
     return len(centers) >= 2 and (_grid(centers) is not None or _line(centers) is not None or
                                   _polar(centers) is not None or _stagger(centers) is not None
-                                  or (r > 0 and _hex_field(centers, r) is not None))
+                                  or (r > 0 and _hex_field(centers, r) is not None)
+                                  or (r > 0 and _grid_field(centers, r) is not None)
+                                  or _gapped_grid(centers) is not None
+                                  or _near_grid(centers) is not None)
 
 
 MAX_SPLIT = 400     # equal holes split into features by their neighbours (n^2 distances)

@@ -164,6 +164,9 @@ class _Groups:
             f"the {edges[0]} edge, about the centre line" if edges else "the centre"
         self.w.emit(depth, f"# {len(rest)} holes in no pattern (a board's): one set, from "
                            f"{where}")
+        # the head says it too (issue 103: a drawing that fits no row of the spec says so)
+        self.stats.readings.append(f"{len(rest)} {_hole_name(sh)}s fit no pattern: one set "
+                                   f"`{hn}`, placed from {where}")
         self.w.emit(depth, f"for c in [{offs}] {{")
         self.sunk_as(rest)
         self.hole_block(depth + 1, hn, sh, f"({at[0]} + c.x, {at[1]} + c.y)", sizes,

@@ -86,17 +86,19 @@ def _circumcentre(a, b, c) -> tuple | None:
 
 def _start(a0: float, n: int) -> float:
     """The angle (radians) of hole 0 of a bolt circle of ``n`` holes at ``a0 + k 360/n``, by
-    the rule that keeps its meaning when the count changes: a hole on the x axis (0), else
-    two straddling it, half a pitch off (``180/n``), else one at the top (90 deg), else
-    ``a0``.  Where two rules draw the same holes the x axis is the one a person reads
-    from: 4 or 8 holes with one at the top have one on the x axis; 6 with one at the top
-    are half a pitch off it."""
+    the spec (docs/import.md, "What an edit means": a new count keeps the first hole where
+    it is): a hole on the x axis (0), else one at the top (90 deg), else ``a0``, the first
+    hole's drawn angle (issue 103: four holes at 45 deg keep one at 45 deg when they become
+    six; they were read as straddling the x axis, the first then at 30 deg, 6.2 mm off on a
+    47.5 mm circle).  Where two readings draw the same holes the x axis wins, then the top
+    (4 or 8 holes with one at the top have one on the x axis; 6 at 30 deg have one at the
+    top)."""
     step = 2 * math.pi / n
 
     def on(angle: float) -> bool:
         k = (angle - a0) / step
         return abs(k - round(k)) * step * 1e3 <= 1e-6      # 1e-9 rad at 1 m
-    for angle in (0.0, step / 2, math.pi / 2):
+    for angle in (0.0, math.pi / 2):
         if on(angle):
             return angle
     return a0
@@ -106,14 +108,9 @@ def start_angle(part, hn: str, a0: float, n: int, cnt: str) -> str:
     """The angle of hole ``i`` of a bolt circle ``hn`` of ``n`` (the param ``cnt``) whose
     holes are at ``a0 + k 360/n`` (radians), from a param ``<hn>_angle`` (issue 93: its first
     hole's angle, one word to turn the pattern): ``angle + i * 360 deg / n`` from the first
-    hole's angle (:func:`_start`: on the x axis 0, at the top 90, else as drawn), or, with
-    two holes straddling the x axis, ``angle + (i + 0.5) * 360 deg / n`` (the axis they
-    straddle, 0), so that a new count keeps the reading."""
+    hole's angle (:func:`_start`: on the x axis 0, at the top 90, else as drawn), so that a
+    new count keeps the first hole where it is."""
     start = _start(a0, n)
-    if abs(start - math.pi / n) <= 1e-15 and n > 2:
-        ang = part.p(f"{hn}_angle", 0.0, "the axis two holes straddle, from the x axis",
-                     unit="deg")
-        return f"{ang} + (i + 0.5) * 360 deg / {cnt}"
     ang = part.p(f"{hn}_angle", math.degrees(start), "its first hole's, from the x axis",
                  unit="deg")
     return f"{ang} + i * 360 deg / {cnt}"

@@ -76,6 +76,15 @@ def hex_nodes(c, pitch: float, shift: bool) -> callable:
     return index
 
 
+def grid_nodes(c, d, half) -> callable:
+    """``for j in range(-k, k + 1) { for i in range(-k, k + 1) }`` of a square-set field
+    about ``c``: a node at ``((i + hx / 2) dx, (j + hy / 2) dy)``, ``hx`` 1 when ``half[0]``."""
+    def index(sh):
+        return (("j", round((sh.center[1] - c[1]) / d[1] - half[1] / 2)),
+                ("i", round((sh.center[0] - c[0]) / d[0] - half[0] / 2)))
+    return index
+
+
 def _split(point: str) -> tuple[str, str] | None:
     """``(x, y)`` of a point written ``(x, y)``, split at its top-level comma; None when it
     is written otherwise (``polar(...)``)."""

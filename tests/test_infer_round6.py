@@ -1,0 +1,201 @@
+"""Drawing to design, round six (issue 103): drawings that are not perfectly regular, as
+makers' files are, keep the spec's relations (docs/import.md, "What an edit means").  The
+drawings are made here with ezdxf (not from the inference's rules); each edit is compiled
+through the real compiler and its DXF read back with ezdxf, the hole centres compared with
+the edited part's, numerically.  A corner plate with one odd hole (4.4 among 4 mm) keeps its
+holes at the corners (they were three "board" holes from the centre and one from its
+corner); a 4 x 3 grid with one hole missing keeps its 30 mm pitch about the centre (it was
+a grid, a row and a 4-hole set); a row whose holes CAD rounded up to 0.05 mm off the pitch
+stays one row, exact.  Cost: a few imports and about ten compiles (seconds)."""
+from __future__ import annotations
+
+import io
+import math
+
+import ezdxf
+import pytest
+
+import aidl_lang
+from aidl_lang.drawing.infer import import_drawing
+
+
+def _doc(w: float, h: float):
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    m = doc.modelspace()
+    m.add_lwpolyline([(0, 0), (w, 0), (w, h), (0, h)], close=True)
+    return doc, m
+
+
+def _text(doc) -> str:
+    s = io.StringIO()
+    doc.write(s)
+    text, _ = import_drawing(s.getvalue().encode(), "p.dxf", infer=True)
+    return text
+
+
+def _holes(text: str, tmp_path, **edit) -> list:
+    """``(x, y, diameter)`` of every circle of the compiled program, read back by ezdxf."""
+    res = aidl_lang.compile(text, path=tmp_path / "p.aidl", overrides=edit)
+    assert res.ok, ([str(d) for d in res.errors], text)
+    ms = ezdxf.read(io.StringIO(res.to_dxf())).modelspace()
+    return sorted((round(e.dxf.center.x, 9) + 0.0, round(e.dxf.center.y, 9) + 0.0,
+                   round(2 * e.dxf.radius, 9)) for e in ms if e.dxftype() == "CIRCLE")
+
+
+def _corner_plate(odd):
+    doc, m = _doc(160, 100)
+    for x in (10, 150):
+        for y in (10, 90):
+            m.add_circle((x, y), 2.2 if (x, y) == odd else 2.0)
+    return doc
+
+
+@pytest.mark.parametrize("odd", [(150, 90), (10, 10)])
+def test_a_corner_plate_with_one_odd_hole_keeps_its_corners(tmp_path, odd):
+    text = _text(_corner_plate(odd))
+    assert "in no pattern" not in text and "corner_inset = 10 mm" in text, text
+    got = _holes(text, tmp_path, width=200)
+    want = sorted((x if x == 10 else 190, y, 4.4 if (x, y) == odd else 4.0)
+                  for x in (10, 150) for y in (10, 90))
+    assert got == want, (got, text)
+    # the inset moves all four, the odd one keeps its own size; its size is one param
+    got = _holes(text, tmp_path, corner_inset=15, corner_holes_odd_d=5)
+    moved = (15 if odd[0] == 10 else 145, 15 if odd[1] == 10 else 85)
+    want = sorted((x, y, 5.0 if (x, y) == moved else 4.0) for x in (15, 145) for y in (15, 85))
+    assert got == want, (got, text)
+
+
+def _gapped_grid(missing):
+    doc, m = _doc(160, 100)
+    for i, x in enumerate((35, 65, 95, 125)):
+        for j, y in enumerate((20, 50, 80)):
+            if (i, j) not in missing:
+                m.add_circle((x, y), 2.5)
+    return doc
+
+
+@pytest.mark.parametrize("missing", [[(2, 1)], [(0, 0)], [(1, 2), (3, 0)]])
+def test_a_grid_with_holes_missing_keeps_its_columns(tmp_path, missing):
+    text = _text(_gapped_grid(missing))
+    assert "param holes_pitch = 30 mm" in text and "left out, as drawn" in text, text
+    got = _holes(text, tmp_path, width=200)
+    want = sorted((x, y, 5.0) for i, x in enumerate((55, 85, 115, 145))
+                  for j, y in enumerate((20, 50, 80)) if (i, j) not in missing)
+    assert got == want, (got, text)
+    # a new pitch spreads it about the plate's centre, the gaps where they were
+    got = _holes(text, tmp_path, holes_pitch=25)
+    want = sorted((80 + (i - 1.5) * 25, 50 + (j - 1) * 25, 5.0) for i in range(4)
+                  for j in range(3) if (i, j) not in missing)
+    assert got == want, (got, text)
+
+
+def test_a_row_missing_a_hole_is_one_row_with_a_gap(tmp_path):
+    doc, m = _doc(120, 40)
+    for x in (10, 20, 30, 50, 60):          # 10 mm in on a 10 mm pitch, 40 left out
+        m.add_circle((x, 20), 1.5)
+    text = _text(doc)
+    assert "param holes_n = 6" in text and "if not (i == 3)" in text, text
+    # its end member 10 mm in from the left edge stays (nearer it than 1.5 pitches)
+    got = _holes(text, tmp_path, holes_pitch=12, width=150)
+    assert [g[0] for g in got] == [10, 22, 34, 58, 70], (got, text)
+
+
+def test_a_row_cad_rounded_off_its_pitch_stays_one_row_exactly(tmp_path):
+    doc, m = _doc(120, 40)
+    pitch = 25.4 / 3                        # six pots a third of an inch apart,
+    xs = [round(30 + k * pitch, 1) for k in range(6)]   # written to 0.1 mm by the CAD
+    for x in xs:
+        m.add_circle((x, 20), 3.5)
+    text = _text(doc)
+    assert "param holes_n = 6" in text and "(CAD rounding)" in text, text
+    # as drawn, to 1e-9 mm: each hole's offset off the pitch kept
+    assert _holes(text, tmp_path) == [(x, 20.0, 7.0) for x in xs], text
+    # a new pitch spreads the row about its middle, placed from the left edge (30 mm in:
+    # more than one and a half pitches); each hole within CAD rounding of the edited part's
+    got = _holes(text, tmp_path, holes_pitch=10, width=150)
+    mid = 30 + 2.5 * pitch
+    want = [mid + (k - 2.5) * 10 for k in range(6)]
+    assert max(abs(g[0] - w) for g, w in zip(got, want)) <= 0.05, (got, text)
+    assert [g[1] for g in got] == [20.0] * 6, got
+
+
+def test_an_odd_corner_hole_beside_a_grid_of_the_corner_holes_size(tmp_path):
+    """Three corner holes of 3 mm, the fourth 3.3 mm, and a 3 x 2 grid of 3 mm holes: the
+    corner holes are one corner pattern (its odd member its own size), the grid its own."""
+    doc, m = _doc(150, 60)
+    for x in (5, 145):
+        for y in (5, 55):
+            m.add_circle((x, y), 1.65 if (x, y) == (5, 5) else 1.5)
+    for x in (63, 75, 87):
+        for y in (24, 36):
+            m.add_circle((x, y), 1.5)
+    text = _text(doc)
+    assert "corner_inset = 5 mm" in text and "holes_cols = 3" in text, text
+    got = _holes(text, tmp_path, width=170, corner_inset=6)
+    want = sorted([(6.0, 6.0, 3.3), (6.0, 54.0, 3.0), (164.0, 6.0, 3.0), (164.0, 54.0, 3.0)] +
+                  [(x + 10.0, y, 3.0) for x in (63, 75, 87) for y in (24, 36)])
+    assert got == want, (got, text)
+
+
+def _fan(p: float, d: float, field: float, c=(40.0, 40.0)) -> list:
+    """The holes of a square-set grille clipped to a round field (mm), as the edited part's
+    drawing has them: every node ``p`` apart about ``c`` whose hole lies whole in it."""
+    k = int(field / p) + 2
+    return sorted((round(c[0] + i * p, 9) + 0.0, round(c[1] + j * p, 9) + 0.0, d)
+                  for i in range(-k, k + 1) for j in range(-k, k + 1)
+                  if math.hypot(i * p, j * p) + d / 2 <= field / 2 + 1e-9)
+
+
+def test_a_fan_grilles_square_set_holes_in_a_round_field_have_a_field_param(tmp_path):
+    doc, m = _doc(80, 80)
+    for x, y, _ in _fan(6, 4, 60):
+        m.add_circle((x, y), 2)
+    text = _text(doc)
+    assert "param holes_field_d = 60 mm" in text and "if not" not in text, text
+    assert _holes(text, tmp_path) == _fan(6, 4, 60), text
+    # a smaller field, a new pitch, on a wider plate: refilled about the plate's centre
+    assert _holes(text, tmp_path, holes_field_d=48) == _fan(6, 4, 48), text
+    assert _holes(text, tmp_path, holes_pitch=7, width=100) == _fan(7, 4, 60, (50, 40)), text
+
+
+def test_two_parts_side_by_side_keep_their_gap(tmp_path):
+    """Two plates drawn side by side in one file, 10 mm apart: the second is placed from
+    the first's right edge by a gap param and grows from its edge nearer the first, so a
+    wider first plate moves it along, a wider second one grows away, a new gap moves it."""
+    doc, m = _doc(60, 40)
+    m.add_lwpolyline([(70, 0), (120, 0), (120, 40), (70, 40)], close=True)
+    for x in (5, 55):
+        for y in (5, 35):
+            m.add_circle((x, y), 1.6)
+    m.add_circle((95, 20), 4)
+    text = _text(doc)
+    assert "param l_02_gap = 10 mm" in text, text
+    for edit, bore in (({}, 95.0), ({"l_01_width": 80}, 115.0), ({"l_02_width": 70}, 105.0),
+                       ({"l_02_gap": 5}, 90.0)):
+        got = _holes(text, tmp_path, **edit)
+        corners = [(5.0, 5.0), (5.0, 35.0)] + [(5.0 + edit.get("l_01_width", 60) - 10, y)
+                                               for y in (5.0, 35.0)]
+        assert [g[:2] for g in got] == sorted(corners + [(bore, 20.0)]), (edit, got, text)
+
+
+def test_an_inch_row_cad_rounded_keeps_its_pitch_in_inches(tmp_path):
+    """An inch drawing ($INSUNITS 1) of a row on a 0.4 in pitch, its holes written to the
+    thousandth a little off it: one row, its pitch 0.4 in (the 0.05 mm tolerance taken in
+    inches, not 0.05 in), drawn exactly; a new pitch keeps each hole's offset."""
+    doc = ezdxf.new("R2010")
+    doc.units = 1
+    m = doc.modelspace()
+    m.add_lwpolyline([(0, 0), (3, 0), (3, 1), (0, 1)], close=True)
+    off = [0.001, -0.001, 0.0, 0.0015]
+    for k, o in enumerate(off):
+        m.add_circle((0.9 + k * 0.4 + o, 0.5), 0.1)
+    text = _text(doc)
+    assert "units in" in text and "param holes_pitch = 0.4 in" in text, text
+    got = _holes(text, tmp_path)
+    want = [round((0.9 + k * 0.4 + o) * 25.4, 9) for k, o in enumerate(off)]
+    assert [g[0] for g in got] == want, (got, text)
+    got = _holes(text, tmp_path, holes_pitch="0.5 in")
+    mid = 0.9 + 1.5 * 0.4                   # about its middle (0.9 in: past 1.5 pitches)
+    want = [(mid + (k - 1.5) * 0.5 + o) * 25.4 for k, o in enumerate(off)]
+    assert max(abs(g[0] - w) for g, w in zip(got, want)) < 1e-6, (got, text)
