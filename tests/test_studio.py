@@ -80,23 +80,70 @@ RANGED = ("units mm\nparam w = 40 mm, min=20 mm, max=80 mm\n"
 
 
 def test_a_form_value_out_of_range_or_of_the_wrong_kind_is_said_without_the_cli(client):
-    """The page's values come from its fields and sliders: a value out of its range (a
-    download does not move it into the range as the view does) or of the wrong kind is
-    said naming the field `w`, never the command line's `--set` (issue 83)."""
+    """The page's values come from its fields and sliders: a value out of its range is moved
+    into it by the view and by the download alike (issue 104: the view drew 80 mm, the
+    download refused 95 mm with a 422); a value of the wrong kind is said naming the field
+    `w`, never the command line's `--set` (issue 83)."""
+    import svgelements
     sid = session(client)
-    r = client.post("/api/download/svg", json={"sid": sid, "source": RANGED,
-                                               "values": {"w": "95mm"}})
-    assert r.status_code == 422 and "--set" not in r.text
-    [d] = r.json()["diagnostics"]
-    assert d["code"] == "E0124" and d["message"] == (
-        "the field `w` = `95mm`: 95 mm is outside the range 20 mm .. 80 mm declared for `w`")
     v = view(client, sid, RANGED, {"w": "95mm"})     # the view moves it in: 80 mm, drawn
     assert v["ok"] and v["clamped"] == {"w": 80.0}
+    r = client.post("/api/download/svg", json={"sid": sid, "source": RANGED,
+                                               "values": {"w": "95mm"}})
+    assert r.status_code == 200, r.text
+    import xml.etree.ElementTree as ET
+    [d] = [e.get("d") for e in ET.fromstring(r.content).iter("{http://www.w3.org/2000/svg}path")]
+    x0, _, x1, _ = svgelements.Path(d).bbox()       # user units: mm
+    assert x1 - x0 == pytest.approx(80, abs=1e-9)
     v = view(client, sid, RANGED, {"w": "50 deg"})
     assert not v["ok"] and "--set" not in json.dumps(v)
     [d] = v["diagnostics"]
     assert d["code"] == "E0113" and d["message"].startswith("the field `w` = `50 deg`: ")
     assert d["hint"] == "give it in a length unit, e.g. `40mm` in the field `w`"
+
+
+def test_the_svg_download_is_a_cutting_file_and_each_format_has_its_own_name(client):
+    """Issue 104: the SVG download is `aidl render --svg-style laser` (red cut and blue engrave
+    hairlines of 0.01 mm, nothing filled, no sheet outline), the picture only when asked
+    (`style: preview`, named `-preview`); a finger box nested on several sheets downloads its
+    DXF, SVG and PDF sheets under three names (all three were `finger_box-sheets.zip`)."""
+    import zipfile
+    import ezdxf
+    import svgelements
+    from aidl_lang.studio import gallery
+    sid = session(client)
+    box = gallery.entry("generator/finger_box").source
+    nested = {"layout": True, "sheet": [150, 120], "name": "finger_box"}
+    names, inside = {}, {}
+    for fmt in ("dxf", "svg", "pdf"):
+        r = client.post(f"/api/download/{fmt}", json={"sid": sid, "source": box,
+                                                      "settings": nested})
+        assert r.status_code == 200, r.text
+        names[fmt] = r.headers["content-disposition"].split('filename="')[1].rstrip('"')
+        inside[fmt] = zipfile.ZipFile(io.BytesIO(r.content))
+    assert names == {f: f"finger_box-sheets-{f}.zip" for f in ("dxf", "svg", "pdf")}
+    for fmt, z in inside.items():
+        assert z.namelist() == [f"finger_box-sheet-{i}.{fmt}" for i in range(1, 5)]
+    # every sheet's SVG: stroke-only hairlines, no fill, no sheet rectangle; its outlines those
+    # of the DXF of the same sheet (ezdxf: the same number of closed cut loops)
+    for i in range(1, 5):
+        text = inside["svg"].read(f"finger_box-sheet-{i}.svg").decode()
+        svg = svgelements.SVG.parse(io.StringIO(text))
+        shapes = [e for e in svg.elements() if isinstance(e, svgelements.Shape)]
+        assert shapes and not any(isinstance(e, svgelements.Rect) for e in shapes)
+        assert all(e.fill is None or e.fill.value is None for e in shapes)
+        assert {e.stroke.hex for e in shapes} == {"#ff0000"}
+        # the stroke in user units (the viewBox is in mm): a hairline of 0.01 mm
+        assert 'id="cut" stroke="#ff0000" stroke-width="0.01"' in text
+        doc = ezdxf.read(io.StringIO(inside["dxf"].read(f"finger_box-sheet-{i}.dxf").decode()))
+        loops = [e for e in doc.modelspace().query("LWPOLYLINE") if e.closed]
+        assert len(loops) == len(shapes) > 0
+    # the picture: asked for, filled, named as what it is
+    r = client.post("/api/download/svg", json={"sid": sid, "source": box, "settings": {
+        "layout": False, "style": "preview", "name": "finger_box"}})
+    assert r.status_code == 200 and 'filename="finger_box-preview.svg"' in \
+        r.headers["content-disposition"]
+    assert 'fill="#cfd8dc"' in r.text
 
 
 def test_a_program_reads_only_its_own_sessions_uploads(client, tmp_path):
@@ -225,10 +272,20 @@ def test_requests_that_are_not_programs_are_refused_clearly(client):
     r = client.post("/api/view", content=b"{not json", headers={"content-type": "application/json"})
     assert r.status_code == 400 and "not JSON" in r.json()["error"]
     r = client.post("/api/download/doc", json={"sid": sid, "source": BRACKET})
-    assert r.status_code == 422 and "unknown format" in r.json()["error"]
-    r = client.post("/api/download/dxf", json={"sid": sid, "source": BRACKET,
-                                               "settings": {"kerf": 50}})
-    assert r.status_code == 422 and "kerf" in r.json()["error"]
+    assert r.status_code == 400 and r.json()["error"].startswith(
+        "`doc` is not a format this studio makes; it makes 3mf, dxf")
+    for settings, said in [({"kerf": 50}, "kerf expects a number between 0 and 10 mm, got 50"),
+                           ({"style": "fancy"}, "style expects laser (the cutting file) or "
+                                                "preview (the picture), got `fancy`"),
+                           ({"layout": True, "sheet": [1e400]}, "sheet expects [width, height]"),
+                           ({"layout": True, "sheet": [1e400, 5]}, "sheet expects a number between"),
+                           ({"kerf": 10 ** 400}, "kerf expects a number in mm"),
+                           ({"name": ["x"]}, "name expects a text"),
+                           ([1, 2], "`settings` is an object")]:
+        body = json.dumps({"sid": sid, "source": BRACKET, "settings": settings})   # (Infinity)
+        r = client.post("/api/download/dxf", content=body,
+                        headers={"content-type": "application/json"})
+        assert r.status_code == 400 and r.json()["error"].startswith(said), r.text
 
 
 def test_two_server_processes_behind_one_port_share_the_uploads(tmp_path):

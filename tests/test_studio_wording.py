@@ -54,6 +54,10 @@ def test_the_compilers_phrases_are_said_for_the_page():
         "12 degrees or more passes)",
         "the compile ran out of its budget; build less or raise the budget (`--budget 2`)":
         "the compile ran out of its budget; build less",
+        # a dot that starts a word keeps its space (issue 104: "is not a.dxf or.svg drawing")
+        "`/etc/passwd` is not a .dxf or .svg drawing":
+        "“/etc/passwd” is not a .dxf or .svg drawing",
+        "a hole of .5 mm , see --dof .": "a hole of .5 mm.",
     }
     for text, want in cases.items():
         assert for_page(text) == want, text

@@ -323,6 +323,8 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
         doc["params"] = None            # the params of a program that checked before, not this
     if s.svg_source != source:          # the last good picture is another program's
         doc["svg"], doc["values"] = None, {}
+    elif s.shown is not None and getattr(s.shown[1], "title", None):
+        doc["title"] = s.shown[1].title  # its design's name: a pasted program's header
     doc.pop("file", None)
     doc.pop("source", None)             # the page has it
     return doc
@@ -433,7 +435,7 @@ def _number(settings: dict, key: str, lo: float, hi: float) -> float | None:
         return None
     try:
         x = float(v)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         raise ValueError(f"{key} expects a number in mm, got `{str(v)[:40]}`") from None
     if not lo <= x <= hi:
         raise ValueError(f"{key} expects a number between {lo:g} and {hi:g} mm, got {x:g}")
@@ -454,40 +456,37 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
     :data:`PAGES`, as ``aidl render --page``).  G-code without ``layout`` has the drawing's
     lower-left corner on the machine's origin (the sheet's corner: no negative coordinate)."""
     from .. import api
-    from ..output import ASSEMBLED_FORMATS, FORMATS
+    from ..output import FORMATS
     from ..output.part.part import MissingDependency, OutputError
     suffix = "." + str(fmt).lower().lstrip(".")
     if suffix not in FORMATS:
         return {"error": f"unknown format `{fmt}`; use one of "
                          + ", ".join(sorted(f[1:] for f in FORMATS))}
-    settings = settings if isinstance(settings, dict) else {}
     try:
-        kerf = _number(settings, "kerf", 0.0, 10.0)
-        thickness = _number(settings, "thickness", 0.1, 100.0)
-        machine = settings.get("machine") or None
-        if machine is not None and machine not in MACHINES:
-            raise ValueError(f"machine expects one of {', '.join(MACHINES)}, got `{machine}`")
-        assembled = bool(settings.get("assembled")) and suffix in ASSEMBLED_FORMATS
-        page = _page(settings.get("page")) if suffix == ".pdf" else None
-        layout = bool(settings.get("layout")) and FORMATS[suffix].cut
-        sheet = settings.get("sheet") or [600, 400]
-        if layout:
-            if not (isinstance(sheet, (list, tuple)) and len(sheet) == 2):
-                raise ValueError("sheet expects [width, height] in mm")
-            sheet = tuple(_number({"sheet": v}, "sheet", 10.0, MAX_SHEET) for v in sheet)
+        got = download_settings(suffix, settings)
     except ValueError as e:
         return {"error": str(e)}
-    res = api.compile(source=source, path=os.path.join(folder, "main.aidl"),
-                      overrides={str(k): str(v) for k, v in (values or {}).items()},
-                      budget=budget)
+    kerf, layout, sheet, options = got["kerf"], got["layout"], got["sheet"], got["options"]
+    overrides = {str(k): str(v) for k, v in (values or {}).items()}
+    path = os.path.join(folder, "main.aidl")
+    res = api.compile(source=source, path=path, overrides=overrides, budget=budget)
+    if not res.ok and overrides:
+        # the values as the preview draws them: a value outside a range that follows the
+        # other params is moved into it (:func:`settle`), so /api/view and /api/download
+        # agree; a value that cannot be moved keeps its error
+        drawn = view(OrderedDict(), "", folder, source, overrides, None, budget=budget)
+        if drawn.get("ok") and drawn.get("clamped") and drawn.get("values"):
+            res = api.compile(source=source, path=path, overrides=dict(drawn["values"]),
+                              budget=budget)
     if not res.ok:
         return {"error": "the program does not compile with these values",
                 "diagnostics": _errors(res)[:8]}
     if not res.output.parts and not res.output.engrave:
         return nothing_to_make(res)
-    name = file_base(settings.get("name")) or (
+    name = file_base(settings.get("name") if isinstance(settings, dict) else None) or (
         res.compiled.model.root.name if res.compiled.model is not None else "part")
-    options = {"thickness": thickness, "machine": machine, "assembled": assembled, "page": page}
+    if options.get("style") == "preview":
+        name += "-preview"              # the picture, never under the cutting file's name
     media = FORMATS[suffix].media
     try:
         if layout:
@@ -499,9 +498,11 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
             with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as z:
                 for i, data in enumerate(sheets, 1):
                     z.writestr(f"{name}-sheet-{i}{suffix}", data)
-            return buf.getvalue(), f"{name}-sheets.zip", "application/zip"
+            # one name per format: the DXF, SVG and PDF sheets never overwrite each other
+            return buf.getvalue(), f"{name}-sheets-{suffix[1:]}.zip", "application/zip"
+        assembled = options.get("assembled")
         if suffix == ".stl" and assembled:
-            return closed_stl(res.output, thickness), f"{name}{suffix}", media
+            return closed_stl(res.output, options["thickness"]), f"{name}{suffix}", media
         if FORMATS[suffix].module == "gcode" and not assembled:
             return gcode_at_origin(res.output, kerf, suffix, options), f"{name}{suffix}", media
         return res.encode(suffix, kerf, **options), f"{name}{suffix}", media
@@ -511,6 +512,50 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
             report_out_of_budget(res.sink, e.budget)
             return {"error": str(e), "diagnostics": _errors(res)}
         return {"error": str(e)}
+
+
+SVG_STYLES = ("laser", "preview")
+
+
+def download_settings(suffix: str, settings) -> dict:
+    """A download's ``settings`` (see :func:`download`) checked for the format ``suffix``
+    (``.svg``): ``{"kerf", "layout", "sheet", "options"}``, ``options`` the writer's
+    (``thickness``, ``machine``, ``assembled``, ``page``; ``style`` for SVG: ``laser`` unless
+    ``preview`` is asked).  Raises :class:`ValueError` with a sentence for a setting that is
+    not one the download takes (the server answers it 400 before any compile)."""
+    from ..output import ASSEMBLED_FORMATS, FORMATS
+    if settings is None:
+        settings = {}
+    if not isinstance(settings, dict):
+        raise ValueError("`settings` is an object of download settings (kerf, sheet, machine...)")
+    kerf = _number(settings, "kerf", 0.0, 10.0)
+    thickness = _number(settings, "thickness", 0.1, 100.0)
+    machine = settings.get("machine") or None
+    if machine is not None and machine not in MACHINES:
+        raise ValueError(f"machine expects one of {', '.join(MACHINES)}, got "
+                         f"`{str(machine)[:40]}`")
+    assembled = bool(settings.get("assembled")) and suffix in ASSEMBLED_FORMATS
+    page = _page(settings.get("page")) if suffix == ".pdf" else None
+    layout = bool(settings.get("layout")) and FORMATS[suffix].cut
+    sheet = settings.get("sheet") or [600, 400]
+    if layout:
+        if not (isinstance(sheet, (list, tuple)) and len(sheet) == 2):
+            raise ValueError("sheet expects [width, height] in mm")
+        sheet = tuple(_number({"sheet": v}, "sheet", 10.0, MAX_SHEET) for v in sheet)
+    name = settings.get("name")
+    if name is not None and not isinstance(name, str):
+        raise ValueError("name expects a text (the file's name)")
+    options = {"thickness": thickness, "machine": machine, "assembled": assembled, "page": page}
+    style = settings.get("style") or "laser"
+    if style not in SVG_STYLES:
+        raise ValueError(f"style expects laser (the cutting file) or preview (the picture), "
+                         f"got `{str(style)[:40]}`")
+    if suffix == ".svg" and not assembled:
+        # the cutting file by default (`aidl render --svg-style laser`): red cut and blue
+        # engrave hairlines, one element per loop, no sheet outline; the page's picture
+        # (filled parts) only when asked
+        options["style"] = style
+    return {"kerf": kerf, "layout": layout, "sheet": sheet, "options": options}
 
 
 def nothing_to_make(res) -> dict:

@@ -106,6 +106,11 @@ _PHRASES: list[tuple[re.Pattern, str]] = [(re.compile(p), r) for p, r in [
     (r"\s?``", ""),                              # (a quoted flag, now gone)
 ]]
 
+# a space left before punctuation by a phrase taken out ("the sheet , or" -> "the sheet, or");
+# a dot that starts a word is no punctuation (".dxf", ".5 mm": "is not a .dxf or .svg drawing")
+_TIGHT = re.compile(r"\s+([,;:)]|\.(?![.\w]))")
+
+
 def for_page(text: str | None, code: bool = False) -> str | None:
     """``text`` written for the studio's page (see the module text); None stays None.
     ``code``: the text of an error in the program the visitor is editing (an unknown name, a
@@ -116,14 +121,14 @@ def for_page(text: str | None, code: bool = False) -> str | None:
     for p, r in _PHRASES:
         text = p.sub(r, text)
     if code:
-        return re.sub(r"\s+([,;:)]|\.(?!\.))", r"\1", re.sub(r" {2,}", " ", text)).strip(" ;,")
+        return _TIGHT.sub(r"\1", re.sub(r" {2,}", " ", text)).strip(" ;,")
     for p in _AUTHOR_ONLY:
         text = p.sub("", text)
     clauses = [_plain(c) for c in _outside_quotes(text, "; ")]
     text = "; ".join(re.sub(r"^\s*else\s+", "", c) for c in clauses if c.strip())
     text = _QUOTED.sub(lambda m: f"“{m.group(1)}”", text)
     text = re.sub(r" {2,}", " ", text)
-    return re.sub(r"\s+([,;:)]|\.(?!\.))", r"\1", text).strip(" ;,")
+    return _TIGHT.sub(r"\1", text).strip(" ;,")
 
 
 # the answer's keys whose strings a visitor reads

@@ -223,8 +223,15 @@ function answered(view, raw) {
   return sameValues(chosenRaw(made), chosenRaw());
 }
 
+// a design's name as the header says it: divider_tray -> Divider tray
+function titleOf(name) {
+  const words = String(name).split("_").filter(Boolean);
+  return words.length ? [words[0][0].toUpperCase() + words[0].slice(1), ...words.slice(1)].join(" ") : String(name);
+}
+
 function show(view, ms) {
   state.view = view;
+  if (state.ownTitle && view.ok && view.title) $("title").textContent = titleOf(view.title);
   window.studio.view = view;
   const diags = view.diagnostics || [];
   const errors = diags.filter((d) => d.severity === "error").length;
@@ -467,7 +474,7 @@ function control(p) {
   row.appendChild(name);
   const line = document.createElement("div"); line.className = "line";
   row.appendChild(line);
-  const change = (v) => { state.values[p.name] = v; row.classList.toggle("changed", !same(v, p.default)); schedule(30); };
+  const change = (v) => { state.values[p.name] = v; row.classList.toggle("changed", !same(v, p.default)); downloadChanged(); schedule(30); };
   if (p.kind === "bool") {
     const cb = document.createElement("input"); cb.type = "checkbox"; cb.name = p.name; cb.id = id;
     cb.onchange = () => change(cb.checked);
@@ -588,6 +595,7 @@ $("thickness").addEventListener("change", () => {
   if (v === null) { bindThickness(); return; }
   $("thickness").value = fmt(v);
   state.values[p.name] = v;
+  downloadChanged();
   if (row) { setControl(row, p, v); row.classList.toggle("changed", !same(v, p.default)); }
   schedule(30);
 });
@@ -644,7 +652,7 @@ async function runSweep() {
   let r = null;
   try {
     r = await fetch("/api/sweep", { method: "POST", signal: ctrl.signal, headers: { "Content-Type": "application/json" },
-                                    body: JSON.stringify({ sid: state.sid, source, values }) });
+                                    body: JSON.stringify({ sid: state.sid, source, values: texts(chosenRaw(values)) }) });
   } catch (e) { r = null; }
   if (ctrl !== sw.ctrl || key !== sweepKey()) return;      // stopped, or another program or values
   sw.ctrl = null;
@@ -766,9 +774,12 @@ $("reset").onclick = () => { state.values = {}; state.paramKey = ""; schedule(0)
 
 // ------------------------------------------------------------------ 3D and downloads
 // a download's name: the design and the values changed from its own (divider_tray-rows_5-cols_2)
+// a pasted program's is its own title (the header's), an opened drawing's its file's name
+// without the extension (flange80-d_90, not flange80.dxf-d_90)
 function downloadName() {
   const slug = (t) => String(t).toLowerCase().replace(/[^a-z0-9.]+/g, "_").replace(/^_+|_+$/g, "");
-  const base = state.entry ? state.entry.replace(/^.*\//, "") : slug($("title").textContent) || "design";
+  const base = (state.entry ? state.entry.replace(/^.*\//, "")
+    : slug($("title").textContent).replace(/\.(dxf|svg|aidl)$/, "").replace(/\./g, "_")) || "design";
   const raw = chosenRaw();
   const parts = Object.keys(raw).sort().map((k) => {
     const v = raw[k];
@@ -858,11 +869,18 @@ function showDownloads() {
   }
 }
 
+// the line under the buttons names the last file made: cleared when a value changes (it named
+// the 3 mm STL after the thickness went to 6)
+function downloadChanged() { $("download-status").textContent = ""; }
+
 async function download(f) {
   $("download-status").textContent = `making ${f.ext.toUpperCase()}…`;
   try {
     const extra = f.cut ? {} : { layout: false, assembled: f.assembled };
     if (f.ext === "pdf" && $("page").value) extra.page = $("page").value;   // tiled 1:1 on paper
+    // the SVG is the cutting file (hairlines, cut and engrave layers, no sheet outline) unless
+    // the picture is chosen
+    if (f.ext === "svg") extra.style = $("svg-style").value || "laser";
     const { blob, name } = await fetchFile(f.ext, extra);
     const a = document.createElement("a");
     a.href = URL.createObjectURL(blob); a.download = name;
@@ -913,6 +931,7 @@ $("gallery-search").oninput = () => {
 async function openEntry(id) {
   const e = await getJSON(`/api/gallery/${id}`);
   state.entry = id;
+  state.ownTitle = false;
   $("title").textContent = e.title;
   setProgram(e.source, {});
 }
@@ -1045,7 +1064,7 @@ function onEvent(ev, list) {
     $("describe-status").textContent = `round ${ev.n}…`;
   } else if (ev.type === "done") {
     $("describe-status").textContent = ev.message || (ev.ok ? "done" : "no program checked");
-    if (ev.code) { $("title").textContent = "Described part"; state.entry = null; setProgram(ev.code, {}); }
+    if (ev.code) { $("title").textContent = "Described part"; state.entry = null; state.ownTitle = true; setProgram(ev.code, {}); }
   } else if (ev.type === "error") {
     $("describe-status").textContent = ev.message;
   }
@@ -1105,8 +1124,9 @@ $("drawing-file").onchange = async () => {
   window.studio.uploaded = doc;
   if (doc.error || doc.import_error) { said.textContent = doc.error || `${doc.name} cannot be opened: ${doc.import_error}`; return; }
   $("drawing-dialog").close();
-  $("title").textContent = doc.name;
+  $("title").textContent = doc.name.replace(/\.(dxf|svg)$/i, "");
   state.entry = null;
+  state.ownTitle = false;
   setProgram(doc.program, {});
   $("upload-status").textContent = `opened ${doc.name} ${how === "infer" ? "as an editable design" : "as a drawing"}`
     + (doc.notes && doc.notes.length ? `; ${doc.notes.join("; ")}` : "");
@@ -1135,7 +1155,9 @@ async function start() {
   if (!EMBED) {
     editor = createEditor($("code"), { doc: "", hover, wrap: true, label: "the program",
       onChange: (text) => {
-        if (replaced(state.source, text)) newProgram();
+        // another program pasted over this one: its own title (the header and the
+        // downloads' names follow it, not the gallery design it replaced)
+        if (replaced(state.source, text)) { newProgram(); state.entry = null; state.ownTitle = true; }
         else sweepChanged(false);
         state.source = text; schedule(250);
       } });
