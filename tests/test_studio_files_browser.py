@@ -123,3 +123,62 @@ def test_each_file_is_named_for_what_it_holds_and_the_svg_is_a_cutting_file(serv
         shot(page, "pasted-desktop")
     finally:
         page.context.close()
+
+
+def decimals(x) -> int:
+    text = f"{float(x):.9f}".rstrip("0").rstrip(".")
+    return len(text.split(".")[1]) if "." in text else 0
+
+
+@pytest.mark.parametrize("how", [DESKTOP, PHONE], ids=["desktop", "phone"])
+def test_nothing_internal_reaches_the_page(server, chromium, how):
+    """An enumerated param is a list of its values (the mounting plate's `fit`, the board
+    enclosure's `vent`: free-text fields before, `tight` answered with the template's
+    assertion); a length typed with its unit is converted ("150 mm", "15cm"); the Material field
+    does not keep "abc"; every range end is on its slider's step; no tooltip names a flag."""
+    page = opened(chromium, server, how, "generator/mounting_plate")
+    try:
+        assert page.eval_on_selector_all('select[name="fit"] option', "os => os.map(o => o.value)") \
+            == ["fine", "medium", "coarse"]
+        assert page.input_value('select[name="fit"]') == "medium"
+        n = views(page)
+        page.select_option('select[name="fit"]', "coarse")
+        settled(page, n)
+        assert page.evaluate("window.studio.view.values") == {"fit": '"coarse"'}
+        for typed, want in [("150 mm", 150), ("12cm", 120), ("9,5 cm", 95)]:
+            n = views(page)
+            field = page.locator('#params input[name="width-value"]')
+            field.fill(typed)
+            field.press("Enter")
+            settled(page, n)
+            assert page.evaluate("window.studio.view.params.find((p) => p.name === 'width').value") \
+                == pytest.approx(want), typed
+            assert page.input_value('#params input[name="width-value"]') == f"{want:g}"
+        field = page.locator('#params input[name="width-value"]')
+        field.fill("40 deg")
+        field.press("Enter")
+        said = page.inner_text('#params .param[data-name="width"] .typed-note')
+        assert said.startswith("“40 deg” is not in mm") and "width stays at 95 mm" in said, said
+        for p in page.evaluate("window.studio.view.params"):
+            if p.get("step") and p["kind"] in ("length", "number", "angle"):
+                unit = page.inner_text(f'#params .param[data-name="{p["name"]}"] .unit')
+                for x in __import__("re").findall(r"-?\d+(?:\.\d+)?", unit):
+                    assert decimals(x) <= decimals(p["step"]), (p["name"], unit)
+        titles = page.eval_on_selector_all("#downloads button", "bs => bs.map(b => b.title)")
+        assert titles and not [t for t in titles if "--" in t], titles
+        # the board enclosure's vents: a list too
+        n = views(page)
+        page.click("#open-gallery")
+        page.click('#cards .card[data-id="generator/board_enclosure"]')
+        settled(page, n)
+        assert page.eval_on_selector_all('select[name="vent"] option', "os => os.map(o => o.value)") \
+            == ["slots", "hex", "none"]
+        assert page.input_value('select[name="vent"]') == "hex"
+        page.fill("#thickness", "abc")
+        page.press("#thickness", "Enter")
+        assert page.input_value("#thickness") == "3"
+        assert page.inner_text("#thickness-note").startswith("“abc” is not a number")
+        page.locator('select[name="vent"]').scroll_into_view_if_needed()
+        shot(page, f"lists-{'phone' if how is PHONE else 'desktop'}")
+    finally:
+        page.context.close()

@@ -661,11 +661,12 @@ def _reference_routes(st: Studio, guarded) -> list[Route]:
 
     async def config(request):
         from ..output import FORMATS
+        from .wording import for_page
         formats, seen = [], set()
         for k, f in FORMATS.items():        # one button per writer (.stp is .step, .nc .gcode)
             if (f.module, f.function) not in seen:
                 seen.add((f.module, f.function))
-                formats.append({"ext": k.lstrip("."), "about": f.about, "cut": f.cut,
+                formats.append({"ext": k.lstrip("."), "about": for_page(f.about), "cut": f.cut,
                                 "assembled": f.assembled, "available": compiler.can_make(k)})
         return JSONResponse({
             "formats": formats,

@@ -325,6 +325,12 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
         doc["svg"], doc["values"] = None, {}
     elif s.shown is not None and getattr(s.shown[1], "title", None):
         doc["title"] = s.shown[1].title  # its design's name: a pasted program's header
+    if doc.get("params"):               # a text param of a few values: the page's list
+        from .choices import choices
+        listed = choices(source)
+        doc["params"] = [{**p, "choices": listed[p["name"]]}
+                         if p.get("kind") == "string" and p.get("name") in listed else p
+                         for p in doc["params"]]
     doc.pop("file", None)
     doc.pop("source", None)             # the page has it
     return doc
@@ -360,6 +366,11 @@ def view_glb(sessions: OrderedDict, sid: str, folder: str, source: str, values: 
             output = res.output
         except OutputError as e:
             return {"error": str(e)}
+    if not any(p.kind == "solid" for p in output.parts) and not output.engrave:
+        # a hole that removes all of its part: the right reason in this pane (it said "only
+        # lines: a drawing")
+        return {"error": "nothing to show in 3D with these values: no part is left (the "
+                         "messages under the program say why)"}
     try:
         return to_view_glb(output, thickness), "view.glb", "model/gltf-binary"
     except (OutputError, ValueError) as e:

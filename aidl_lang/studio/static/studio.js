@@ -216,7 +216,7 @@ function answered(view, raw) {
       const p = (view.params || state.params).find((q) => q.name === name);
       // a slider's end sent rounded (to 1e-6) and put back on it: no move to speak of
       const moved = !(typeof raw[name] === "number" && Math.abs(v - raw[name]) <= 1e-6 * Math.max(1, Math.abs(v)));
-      if (moved) typedNote(name, `${name} moved to ${fmt(v)}${p && p.unit ? " " + p.unit : ""}: its range follows the other values`);
+      if (moved) typedNote(name, `${name} moved to ${p ? onStep(p, v) : fmt(v)}${p && p.unit ? " " + p.unit : ""}: its range follows the other values`);
     }
   }
   if (view.params) state.params = view.params;
@@ -400,7 +400,7 @@ function showParams(params) {
   // the form is built again only for other params (a new program); a range that follows other
   // params (its min or max depends on them) and the values are updated in place, so a slider
   // being dragged stays in hand
-  const key = JSON.stringify(params.map((p) => [p.name, p.kind, p.default]));
+  const key = JSON.stringify(params.map((p) => [p.name, p.kind, p.default, p.choices || null]));
   state.params = params;
   const form = $("params");
   if (key !== state.paramKey) {
@@ -479,6 +479,16 @@ function control(p) {
     const cb = document.createElement("input"); cb.type = "checkbox"; cb.name = p.name; cb.id = id;
     cb.onchange = () => change(cb.checked);
     line.appendChild(cb);
+  } else if (p.kind === "string" && (p.choices || []).length) {
+    // a text param of a few values (the program compares it with them): a list, never a
+    // free-text field that takes `tight` and answers with the template's assertion
+    const sel = document.createElement("select"); sel.name = p.name; sel.id = id;
+    for (const c of p.choices) {
+      const o = document.createElement("option"); o.value = c; o.textContent = c;
+      sel.appendChild(o);
+    }
+    sel.onchange = () => change(sel.value);
+    line.appendChild(sel);
   } else if (p.kind === "string") {
     const t = document.createElement("input"); t.type = "text"; t.name = p.name; t.id = id;
     t.oninput = () => change(t.value);
@@ -505,7 +515,7 @@ function control(p) {
     };
     n.onkeydown = (e) => { if (e.key === "Enter") { e.preventDefault(); n.dispatchEvent(new Event("change")); } };
     const u = document.createElement("span"); u.className = "unit";
-    u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)})`;
+    u.textContent = `${p.unit || ""} (${onStep(p, p.min)}–${onStep(p, p.max)})`;
     // the track: the slider over the parts of its range the sweep did not find clean
     const track = document.createElement("span"); track.className = "track";
     for (const side of ["below", "above"]) {
@@ -526,14 +536,16 @@ function control(p) {
 
 function setControl(row, p, v) {
   const inputs = row.querySelectorAll("input");
+  const sel = row.querySelector("select");
   if (p.kind === "bool") inputs[0].checked = !!v;
+  else if (sel) sel.value = v;
   else if (p.kind === "string") inputs[0].value = v;
   else {
     inputs[0]._param = p;                   // its stops (a range may follow other params)
     if (String(inputs[0].min) !== String(p.min) || String(inputs[0].max) !== String(p.max)) {
       Object.assign(inputs[0], { min: p.min, max: p.max });
       const u = row.querySelector(".unit");
-      if (u) u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)})`;
+      if (u) u.textContent = `${p.unit || ""} (${onStep(p, p.min)}–${onStep(p, p.max)})`;
     }
     // a shown answer holds the sliders' values: the slider in hand is set to what it holds (or
     // to where its range moved it); a number being typed is left alone
@@ -553,14 +565,33 @@ function parseNumber(text) {
   if (!/^[-+]?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?$/i.test(t)) return NaN;
   return Number(t);
 }
+// a typed unit, converted to the param's own (display units: mm, deg): "150 mm", "15cm",
+// "2 in", "90°"; [the number's text, its factor, the unit typed] (factor undefined: a unit of
+// another kind, such as "40 deg" for a length)
+const UNITS = { length: { mm: 1, cm: 10, m: 1000, in: 25.4, inch: 25.4, inches: 25.4, '"': 25.4 },
+                angle: { deg: 1, "°": 1, rad: 180 / Math.PI } };
+function withUnit(p, text) {
+  const m = /^(.*?\d\.?)\s*(mm|cm|m|inch(?:es)?|in|"|deg|°|rad)$/i.exec(String(text).trim());
+  if (!m) return [text, 1, null];
+  return [m[1], (UNITS[p.kind] || {})[m[2].toLowerCase()], m[2]];
+}
+// a number as the slider of p shows it: to its step's decimals (14.52, not 14.520739)
+function onStep(p, x) {
+  if (x == null || !(p.step > 0)) return fmt(x);
+  const d = (String(fmt(p.step)).split(".")[1] || "").length;
+  return fmt(Number(Number(x).toFixed(Math.min(6, d))));
+}
 // the value a typed text gives the param p, and what the page says of it: [value, message]
 // (value null: nothing usable, the field goes back to the slider's value)
 function typedValue(p, text) {
   const unit = p.unit ? ` ${p.unit}` : "";
-  const x = parseNumber(text);
-  if (!Number.isFinite(x)) return [null, `“${String(text).trim()}” is not a number: ${p.name} stays at ${fmt(state.values[p.name] ?? p.value)}${unit}`];
-  if (x > p.max + 1e-9) return [p.max, `${fmt(p.max)}${unit} is the most: ${p.name} is ${fmt(p.max)}${unit}, not ${fmt(x)}`];
-  if (x < p.min - 1e-9) return [p.min, `${fmt(p.min)}${unit} is the least: ${p.name} is ${fmt(p.min)}${unit}, not ${fmt(x)}`];
+  const [digits, k, typedUnit] = withUnit(p, text);
+  const now = `${p.name} stays at ${onStep(p, state.values[p.name] ?? p.value)}${unit}`;
+  if (typedUnit && k === undefined) return [null, `“${String(text).trim()}” is not ${p.unit ? "in " + p.unit + " or another " + p.kind + " unit" : "a plain number"}: ${now}`];
+  const x = parseNumber(digits) * k;
+  if (!Number.isFinite(x)) return [null, `“${String(text).trim()}” is not a number: ${now}`];
+  if (x > p.max + 1e-9) return [p.max, `${onStep(p, p.max)}${unit} is the most: ${p.name} is ${onStep(p, p.max)}${unit}, not ${fmt(x)}${unit}`];
+  if (x < p.min - 1e-9) return [p.min, `${onStep(p, p.min)}${unit} is the least: ${p.name} is ${onStep(p, p.min)}${unit}, not ${fmt(x)}${unit}`];
   if (p.kind === "number" && p.step >= 1 && Number.isInteger(p.step) && Number.isInteger(p.min)) {
     const g = Math.min(p.max, p.min + Math.round((x - p.min) / p.step) * p.step);
     if (Math.abs(g - x) > 1e-9) return [g, `${p.name} is a whole number of steps of ${fmt(p.step)}: ${fmt(g)}, not ${fmt(x)}`];
@@ -584,7 +615,7 @@ function bindThickness() {
   if (!p) { $("thickness-note").textContent = ""; return; }
   const v = state.values[p.name] !== undefined ? state.values[p.name] : p.value;
   if (document.activeElement !== $("thickness")) $("thickness").value = fmt(v);
-  $("thickness").setAttribute("aria-label", `thickness, mm (${fmt(p.min)}–${fmt(p.max)}): the design's thickness param`);
+  $("thickness").setAttribute("aria-label", `thickness, mm (${onStep(p, p.min)}–${onStep(p, p.max)}): the design's thickness param`);
 }
 $("thickness").addEventListener("change", () => {
   const p = state.thicknessParam;
@@ -592,7 +623,8 @@ $("thickness").addEventListener("change", () => {
   const [v, said] = typedValue(p, $("thickness").value);
   typedNote(p.name, said);
   const row = $("params").querySelector(`[data-name="${CSS.escape(p.name)}"]`);
-  if (v === null) { bindThickness(); return; }
+  // text that is no thickness ("abc") is not kept on screen: the field shows the value used
+  if (v === null) { $("thickness").value = fmt(state.values[p.name] !== undefined ? state.values[p.name] : p.value); return; }
   $("thickness").value = fmt(v);
   state.values[p.name] = v;
   downloadChanged();
@@ -732,9 +764,9 @@ function markRanges() {
     const counts = p.step >= 1 && !p.unit && bands.length > 1 && span / p.step <= 12
       ? Array.from({ length: Math.round(span / p.step) + 1 }, (_, k) => p.min + k * p.step)
         .filter((x) => !bandAt(q, x)) : null;
-    const clean = !bands.length && !((q && q.unjudged) || []).length ? "" : counts ? `, clean at ${counts.map(fmt).join(", ")}`
-      : !q.clean.length ? ", no clean value found" : `, clean ${fmt(q.clean[0])}–${fmt(q.clean[1])}`;
-    u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)}${clean})`;
+    const clean = !bands.length && !((q && q.unjudged) || []).length ? "" : counts ? `, clean at ${counts.map((x) => onStep(p, x)).join(", ")}`
+      : !q.clean.length ? ", no clean value found" : `, clean ${onStep(p, q.clean[0])}–${onStep(p, q.clean[1])}`;
+    u.textContent = `${p.unit || ""} (${onStep(p, p.min)}–${onStep(p, p.max)}${clean})`;
     r.title = [...bands, ...((q && q.unjudged) || [])].map((x) => x.text).join("\n");
     const v = state.values[p.name] !== undefined ? state.values[p.name] : p.value;
     pastNote(row, p.name, v);
@@ -755,7 +787,7 @@ function pastNote(row, name, v) {
   if (past) {
     const beside = (q.below && past.text === q.below.text) || (q.above && past.text === q.above.text);
     note.textContent = beside
-      ? `${fmt(v)}${unit} is outside the range the sweep found clean (${fmt(q.clean[0])}–${fmt(q.clean[1])}${unit}): ${past.text}`
+      ? `${onStep(p, v)}${unit} is outside the range the sweep found clean (${onStep(p, q.clean[0])}–${onStep(p, q.clean[1])}${unit}): ${past.text}`
       : !q.clean.length ? `${fmt(v)}${unit}: the design breaks at every value of this slider (the others where they are): ${past.text}`
         : `${fmt(v)}${unit} is in a part of the range where the design breaks, between clean values: ${past.text}`;
     r.setAttribute("aria-valuetext", beside ? `${fmt(v)}${unit}, outside the clean range: ${past.text}`
@@ -765,7 +797,7 @@ function pastNote(row, name, v) {
     r.setAttribute("aria-valuetext", `${fmt(v)}${unit}, not checked in the time allowed`);
   } else {
     note.textContent = ends.length && q.clean.length
-      ? `clean from ${fmt(q.clean[0])} to ${fmt(q.clean[1])}${unit}; ${ends.map((x) => x.text).join("; ")}` : "";
+      ? `clean from ${onStep(p, q.clean[0])} to ${onStep(p, q.clean[1])}${unit}; ${ends.map((x) => x.text).join("; ")}` : "";
     if (typeof v === "number") r.setAttribute("aria-valuetext", `${fmt(v)}${unit}`);
   }
 }
