@@ -32,7 +32,7 @@ def test_the_compilers_phrases_are_said_for_the_page():
         # W0511's hint: the move stays, the AllowOverlap goes
         "move `b` at least 2.00 mm further from `a` or shrink one; if the overlap is meant (a "
         "picture of parts stacked), write `AllowOverlap(a, b)` in their assembly":
-        "move “b” at least 2.00 mm further from “a” or shrink one",
+        "move “b” at least 2 mm further from “a” or shrink one",
         "space the copies at least 2.00 mm further apart, or say so: write `AllowOverlap(c)` "
         "in `h`": "space the copies at least 2.00 mm further apart",
         "if `s` is meant to fill h and g to cut it (keep both), write `AllowOverlap(h, s)` in "
