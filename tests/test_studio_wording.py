@@ -34,7 +34,7 @@ def test_the_compilers_phrases_are_said_for_the_page():
         "picture of parts stacked), write `AllowOverlap(a, b)` in their assembly":
         "move “b” at least 2 mm further from “a” or shrink one",
         "space the copies at least 2.00 mm further apart, or say so: write `AllowOverlap(c)` "
-        "in `h`": "space the copies at least 2.00 mm further apart",
+        "in `h`": "space the copies at least 2 mm further apart",
         "if `s` is meant to fill h and g to cut it (keep both), write `AllowOverlap(h, s)` in "
         "`p`; else move g clear of h or `s` out of it": "move g clear of h or “s” out of it",
         "`--set w=95mm`: 95 mm is outside the range 10..50 mm":
