@@ -716,10 +716,14 @@ function markRanges() {
     const cut = (a.skipped ? `; ${a.skipped} planned values not checked in the time allowed` : "")
       + (open ? (a.skipped ? " (dotted: where a slider's edge was not narrowed down)"
         : "; dotted: not checked in the time allowed") : "");
+    // what was judged, said as a share of what was planned: "15 of 147 values checked", never
+    // "checks clean" of a range the time allowed only part of
+    const checked = a.skipped ? `${a.points} of ${a.points + a.skipped} values checked` : `${a.points} values checked`;
     sweepStatus(stale ? "the hatched parts are of the design before your change: checking again…"
       : !a.swept.length ? "" : (narrowed
-        ? `hatched: values at which the design breaks, each slider alone (${a.points} values checked)`
-        : `every slider's range checks clean alone (${a.points} values checked)`) + cut + together);
+        ? `hatched: values at which the design breaks, each slider alone (${checked})`
+        : a.skipped || open ? `no break found in the values checked, each slider alone (${checked})`
+          : `every slider's range checks clean alone (${checked})`) + cut + together);
   }
   for (const p of state.params) {
     const row = $("params").querySelector(`[data-name="${CSS.escape(p.name)}"]`);
