@@ -200,12 +200,21 @@ def test_uploads_are_checked_and_never_written_through_a_link(client, tmp_path):
     assert not os.path.islink(tmp_path / "data" / sid / "board.dxf")
 
 
-def test_a_client_past_its_rate_gets_429_with_retry_after(tmp_path):
+def test_a_client_past_its_rate_gets_429_with_retry_after_and_browsing_costs_none(tmp_path):
+    """The rate counts what compiles; browsing (the gallery, its thumbnails, a hover's docs)
+    costs none (issue 104: after four designs' galleries a 20 s drag had 8 of 30 refused)."""
     app = create_app(Settings(data=str(tmp_path / "d"), compilers=1, rate="5/minute"))
     with TestClient(app) as c:
-        codes = [c.get("/api/docs?name=Circle").status_code for _ in range(7)]
-        assert codes[:5] == [200] * 5 and codes[5:] == [429, 429]
-        r = c.get("/api/docs?name=Circle")
+        for _ in range(3):
+            assert c.get("/api/docs?name=Circle").status_code == 200
+            assert c.get("/api/gallery").status_code == 200
+            assert c.get("/api/gallery/example/bracket").status_code == 200
+            assert c.get("/api/thumb/nope.svg").status_code == 404
+        sid = session(c)
+        codes = [c.post("/api/view", json={"sid": sid, "source": RANGED}).status_code
+                 for _ in range(6)]
+        assert codes[:4] == [200] * 4 and codes[4:] == [429, 429]      # (the session: 1)
+        r = c.post("/api/view", json={"sid": sid, "source": RANGED})
         assert int(r.headers["retry-after"]) >= 1 and "too many requests" in r.json()["error"]
 
 

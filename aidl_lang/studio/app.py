@@ -602,7 +602,8 @@ def _guard(st: Studio):
     def guarded(handler, cost: int = 1):
         async def endpoint(request: Request):
             try:
-                st.check_rate(request, cost)
+                if cost:                # (0: what browsing reads; never a drag's rate)
+                    st.check_rate(request, cost)
                 st.folders.sweep()
                 return await handler(request)
             except Limited as e:
@@ -719,11 +720,14 @@ def _reference_routes(st: Studio, guarded) -> list[Route]:
         text, found = lookup_text(name)
         return JSONResponse({"text": text if found else None})
 
+    # browsing costs no rate (issue 104: after four designs' galleries, thumbnails and hovers,
+    # a 20 s drag had 8 of 30 requests refused): each answer is a table lookup, the
+    # thumbnails made once per build (kept on disk), the docs a lookup
     return [Route("/api/config", config),
-            Route("/api/gallery", guarded(gallery_list)),
-            Route("/api/gallery/{id:path}", guarded(gallery_entry)),
-            Route("/api/thumb/{id:path}.svg", guarded(thumb)),
-            Route("/api/docs", guarded(docs))]
+            Route("/api/gallery", guarded(gallery_list, 0)),
+            Route("/api/gallery/{id:path}", guarded(gallery_entry, 0)),
+            Route("/api/thumb/{id:path}.svg", guarded(thumb, 0)),
+            Route("/api/docs", guarded(docs, 0))]
 
 
 def _session_routes(st: Studio, guarded) -> list[Route]:

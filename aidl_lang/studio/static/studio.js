@@ -17,7 +17,12 @@ const state = {
 };
 // read by the browser tests: views shown, 3D loads asked, the last view and its diagnostics
 window.studio = { ready: false, idle: false, views: 0, sweeps: 0, sweep: null, glbs: 0, glbView: 0, view: null, state, errors: [],
-                  shownAt: {}, builtAt: {} };     // view number -> performance.now() of its 2D, its 3D
+                  shownAt: {}, builtAt: {},      // view number -> performance.now() of its 2D, its 3D
+                  // the page's benchmark (issue 104): view number -> where its time went, ms from
+                  // the change (a slider's move): waited (the page's debounce and pacing), sent,
+                  // answered (compile_ms of it in the worker, the rest transfer and queue), drawn
+                  // (the picture decoded and on screen), built (its 3D on screen)
+                  timeline: {} };
 
 // ------------------------------------------------------------------ requests
 // one request: an answer, or an Error with `retry` (seconds) when the studio is busy (429/503)
@@ -144,9 +149,16 @@ async function pace(cost = 1) {
   if (wait > 0) await new Promise((ok) => setTimeout(ok, wait));
 }
 window.studio.paceGap = paceGap;
+// the slots of the pace's burst free now (10: none spent)
+function paceRoom() {
+  const gap = paceGap();
+  return gap ? 10 - Math.max(0, (state.tat || 0) - performance.now()) / gap : 10;
+}
+window.studio.paceRoom = paceRoom;
 
 function schedule(delay = 200) {
   clearTimeout(state.timer);
+  if (!state.changedAt) state.changedAt = performance.now();     // (the benchmark's start)
   window.studio.idle = false;
   building2d(true);
   state.timer = setTimeout(() => { state.timer = null; compile(); }, delay);
@@ -180,13 +192,22 @@ async function compile() {
   try { await pace(); } catch (_) { /* never */ }
   const seq = ++state.seq;
   const t0 = performance.now();
+  const changedAt = state.changedAt || t0;
+  state.changedAt = 0;
   try {
     const source = state.source, raw = chosenRaw(), values = texts(raw), defaults = {};
     for (const p of state.params) if (p.name in raw) defaults[p.name] = p.default;
     const view = await post("/api/view", { sid: state.sid, source, values, defaults });
     if (seq !== state.seq || source !== state.source) { /* another program since: dropped */ }
     else if (view.superseded) state.again = true;
-    else if (answered(view, raw)) { state.shownSent = values; show(view, performance.now() - t0); }
+    else if (answered(view, raw)) {
+      state.shownSent = values;
+      const got = performance.now();
+      show(view, got - t0);
+      const t = view.timing || {};
+      window.studio.timeline[window.studio.views] = { changed: changedAt, waited: t0 - changedAt, sent: t0,
+        answered: got, compile_ms: t.worker_ms ?? t.total_ms ?? null, drawn: null, built: null };
+    }
     else state.again = true;        // the sliders moved on meanwhile: not their picture
   } catch (e) {
     window.studio.errors.push(String(e.message || e));
@@ -392,7 +413,11 @@ $("flat").addEventListener("dblclick", (e) => { if (!e.target.closest(".pane-too
 $("flat-fit").onclick = flatFit;
 $("flat-zoom-in").onclick = () => flatZoom(1.5, $("flat").clientWidth / 2, $("flat").clientHeight / 2);
 $("flat-zoom-out").onclick = () => flatZoom(1 / 1.5, $("flat").clientWidth / 2, $("flat").clientHeight / 2);
-$("flat-img").addEventListener("load", () => { if (state.fitNext) { state.fitNext = false; flatFit(); } else flatLayout(); });
+$("flat-img").addEventListener("load", () => {
+  if (state.fitNext) { state.fitNext = false; flatFit(); } else flatLayout();
+  const t = window.studio.timeline[window.studio.views];
+  if (t && t.drawn === null) t.drawn = performance.now();
+});
 new ResizeObserver(() => flatLayout()).observe($("flat"));
 
 // ------------------------------------------------------------------ the customizer
@@ -670,13 +695,25 @@ function sweepChanged(fresh) {
   if (fresh) { sw.answer = null; sw.source = null; sw.key = null; }
   markRanges();
 }
+// slots the sweep leaves in the burst: a release's picture and its 3D, twice (issue 104: a
+// sweep after each release spent the burst, and the next release's picture waited for the pace)
+const SWEEP_LEAVES = 4;
 async function runSweep() {
   // paced with the previews and 3D models: a minute of dragging sent a sweep at each pause,
   // unpaced, and 31 requests fell in one 5 s window of a limit of 30
   // the server counts a sweep as 2 of its rate (paced as 1, a drag met 429 once the sweep
   // worker answered at once)
+  const sw = state.sweep;
+  // the background's turn comes when the pictures have theirs: never while a picture is on
+  // its way, and never with the burst's last slots (what the visitor waits for)
+  const room = paceRoom();
+  if (state.inflight || state.timer || room < 2 + SWEEP_LEAVES) {
+    clearTimeout(sw.timer);
+    sw.timer = setTimeout(runSweep, Math.max(300, (2 + SWEEP_LEAVES - room) * paceGap()));
+    return;
+  }
   try { await pace(2); } catch (_) { /* never */ }
-  const sw = state.sweep, source = state.source, key = sweepKey(), values = { ...state.values };
+  const source = state.source, key = sweepKey(), values = { ...state.values };
   if (sw.ctrl) sw.ctrl.abort();
   const ctrl = sw.ctrl = new AbortController();
   sw.asked = key;
@@ -875,6 +912,7 @@ async function load3d() {
     window.studio.glbs += 1;
     window.studio.glbView = shown;          // the view whose 3D is on the screen
     window.studio.builtAt[shown] = performance.now();
+    if (window.studio.timeline[shown]) window.studio.timeline[shown].built = window.studio.builtAt[shown];
     building(false);
     $("viewer3d").classList.remove("empty");
   } catch (e) {
