@@ -146,6 +146,33 @@ def test_the_svg_download_is_a_cutting_file_and_each_format_has_its_own_name(cli
     assert 'fill="#cfd8dc"' in r.text
 
 
+EDGE = ("units mm\nparam w = 120 mm, min = 20 mm, max = 220 mm, step = 0.5 mm\n"
+        "solid p {\n    body = Rectangle(center=(0, 0), width=w, height=30)\n"
+        "    hole h { c = Circle(center=(35.15 mm, 0), radius=5 mm) }\n}\n")
+
+
+def test_a_moves_shape_checks_come_after_its_picture(client):
+    """Issue 104: the page asks a slider move's picture without its shape checks (`"checks":
+    "later"`: the answer says `"checks": "pending"`, 0.2 of a planetary move's 0.5 s) and then
+    `/api/checks` for the picture's values: the warnings the one request gave (W0507: a wall
+    0.35 mm wide at 81 mm), from the worker's session, or compiled again by a worker without
+    it (another session id)."""
+    sid = session(client)
+    assert view(client, sid, EDGE)["ok"]
+    r = client.post("/api/view", json={"sid": sid, "source": EDGE, "values": {"w": "81mm"},
+                                       "checks": "later"})
+    moved = r.json()
+    assert moved["ok"] and moved["checks"] == "pending" and moved["svg"]
+    assert [d["code"] for d in moved["diagnostics"]] == []
+    whole = view(client, session(client), EDGE, {"w": "81mm"})      # one request: all of it
+    assert [d["code"] for d in whole["diagnostics"]] == ["W0507"] and "checks" not in whole
+    for who in (sid, session(client)):
+        got = client.post("/api/checks", json={"sid": who, "source": EDGE,
+                                               "values": moved["values"]}).json()
+        assert got["ok"] and [d["code"] for d in got["diagnostics"]] == ["W0507"], got
+        assert got["diagnostics"][0]["message"] == whole["diagnostics"][0]["message"]
+
+
 def test_a_program_reads_only_its_own_sessions_uploads(client, tmp_path):
     a, b = session(client), session(client)
     assert not view(client, a, USES_BOARD)["ok"]       # not uploaded yet

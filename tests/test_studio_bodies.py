@@ -25,7 +25,7 @@ from aidl_lang.studio.app import Settings, create_app  # noqa: E402
 PLATE = ("units mm\nparam w = 40 mm, min=20 mm, max=80 mm\nparam holes = true\n"
          "solid p { body = Rectangle(center=(0, 0), width=w, height=20) }\n")
 ENDPOINTS = ["/api/view", "/api/download/dxf", "/api/download/svg", "/api/download/nope",
-             "/api/glb", "/api/sweep", "/api/close", "/api/delete"]
+             "/api/glb", "/api/sweep", "/api/checks", "/api/close", "/api/delete"]
 KEYS = ["sid", "source", "values", "defaults", "settings", "name", "w", "holes", "kerf",
         "sheet", "layout", "style", "thickness", "machine", "page", "description"]
 

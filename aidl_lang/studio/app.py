@@ -797,10 +797,22 @@ def _compile_routes(st: Studio, guarded) -> list[Route]:
         sid = doc.get("sid", "")
         folder = st.folders.folder(sid)
         source, values = program_of(doc)
-        answer = await st.newest(sid, ("view", sid, folder, source, values, defaults_of(doc)))
+        later = doc.get("checks") == "later"        # the shape checks asked apart (/api/checks)
+        answer = await st.newest(sid, ("view", sid, folder, source, values, defaults_of(doc),
+                                        later))
         if "error" in answer and "svg" not in answer:
             return JSONResponse({"ok": False, "svg": None, "params": None, "diagnostics": [],
                                  "error": answer["error"]})
+        return JSONResponse(answer)
+
+    async def checks(request):
+        doc = await read_json(request)
+        sid = doc.get("sid", "")
+        folder = st.folders.folder(sid)
+        source, values = program_of(doc)
+        answer = await st.compile(("checks", sid, folder, source, values), sid)
+        if "error" in answer and "diagnostics" not in answer:
+            return JSONResponse({"ok": False, "diagnostics": [], "error": answer["error"]})
         return JSONResponse(answer)
 
     async def download(request):
@@ -875,6 +887,7 @@ def _compile_routes(st: Studio, guarded) -> list[Route]:
                                  headers={"Cache-Control": "no-store"})
 
     return [Route("/api/view", guarded(view), methods=["POST"]),
+            Route("/api/checks", guarded(checks), methods=["POST"]),
             Route("/api/download/{fmt}", guarded(download, 4), methods=["POST"]),
             Route("/api/glb", guarded(glb), methods=["POST"]),
             Route("/api/sweep", guarded(sweep, 2), methods=["POST"]),

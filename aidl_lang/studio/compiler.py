@@ -127,6 +127,8 @@ def handler(budget: float = 1.0):
         try:
             if kind == "view":
                 answer = view(sessions, *request[1:], budget=scaled)
+            elif kind == "checks":
+                answer = checks(sessions, *request[1:], budget=scaled)
             elif kind == "download":
                 answer = download(*request[1:], budget=scaled)
             elif kind == "glb":
@@ -148,7 +150,7 @@ def handler(budget: float = 1.0):
         if oom:                         # said once the failed frames are gone
             sessions.clear()
             answer = out_of_memory_answer(request)
-        if kind in ("view", "download", "glb", "sweep") and len(request) > 2:
+        if kind in ("view", "checks", "download", "glb", "sweep") and len(request) > 2:
             answer = hide_paths(answer, request[1] if kind == "download" else request[2])
         if isinstance(answer, dict):    # every text a visitor reads, worded for the page
             answer = page_answer(answer)
@@ -272,7 +274,7 @@ def out_of_memory_answer(request) -> dict:
 
 
 def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict,
-         defaults: dict | None = None, budget=None) -> dict:
+         defaults: dict | None = None, later: bool = False, budget=None) -> dict:
     """The live preview of ``source`` with the customizer's ``values`` ({name: "40 mm"});
     ``defaults``: ``{name: default}`` (display units, as the answer's params give them) the
     page chose ``values`` against; ``budget``: a :class:`~aidl_lang.base.limits.Budget` (None:
@@ -285,7 +287,11 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
     ``dropped`` (a new program starts from its own values); ``values`` is what the picture
     was drawn with (the kept values, and the ``clamped`` ones moved into their ranges).  An
     answer whose program does not check has no ``params`` and no ``svg`` (the last good
-    picture of another program is not this program's)."""
+    picture of another program is not this program's).
+
+    ``later``: a slider move's shape checks (W0402, W0501-W0510: the warnings; 0.2 of a
+    planetary move's 0.5 s) are left for :func:`checks`, asked right after the picture is
+    shown; the answer says ``"checks": "pending"``."""
     from ..serve.session import Session, keep_values
     s = sessions.pop(sid, None)
     if s is None:
@@ -312,7 +318,8 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
         kept = keep_values(values, s.defaults, assumed)
         if kept != s.values:
             doc = s.set_params(kept)
-            doc = s.update_checks() or doc
+            if not later:
+                doc = s.update_checks() or doc
         else:
             doc = s.view()
     clamped: dict = {}
@@ -323,6 +330,8 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
         elif settled is not doc:
             s.set_params(kept)          # no better: the visitor's values, and their error
     doc = dict(doc)
+    if later and getattr(s, "_checks_pending", None) is not None and doc.get("ok"):
+        doc["checks"] = "pending"       # the page asks /api/checks for them
     if clamped:
         doc["clamped"] = clamped
     doc["dropped"] = sorted(set(values) - set(kept))
@@ -341,6 +350,23 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
     doc.pop("file", None)
     doc.pop("source", None)             # the page has it
     return doc
+
+
+def checks(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict,
+           budget=None) -> dict:
+    """The shape checks a ``view`` with ``later`` left (see :func:`view`): ``{"ok",
+    "version", "values", "diagnostics"}`` of the picture of ``source`` with ``values`` (the
+    ``--set`` texts it was drawn with), every message of it, the checks' warnings included.
+    Run on the session ``sid`` this worker keeps when it drew that picture (its drawing is
+    checked: no compile); else (another worker drew it) the picture's compile again here."""
+    values = {str(k): str(v) for k, v in (values or {}).items()}
+    s = sessions.get(sid)
+    if s is None or s.source != source or s.svg_values != values:
+        doc = view(sessions, sid, folder, source, values, None, budget=budget)
+    else:
+        doc = s.update_checks() or s.view()
+    return {"ok": bool(doc.get("ok")), "version": doc.get("version"),
+            "values": doc.get("values") or {}, "diagnostics": doc.get("diagnostics") or []}
 
 
 def view_glb(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict,

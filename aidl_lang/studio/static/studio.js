@@ -197,7 +197,8 @@ async function compile() {
   try {
     const source = state.source, raw = chosenRaw(), values = texts(raw), defaults = {};
     for (const p of state.params) if (p.name in raw) defaults[p.name] = p.default;
-    const view = await post("/api/view", { sid: state.sid, source, values, defaults });
+    // the shape checks (the warnings) are asked apart, once the picture is shown (/api/checks)
+    const view = await post("/api/view", { sid: state.sid, source, values, defaults, checks: "later" });
     if (seq !== state.seq || source !== state.source) { /* another program since: dropped */ }
     else if (view.superseded) state.again = true;
     else if (answered(view, raw)) {
@@ -216,7 +217,7 @@ async function compile() {
   } finally {
     state.inflight = false;
     if (state.again) { state.again = false; compile(); }
-    else if (!state.timer) window.studio.idle = true;     // read by the tests: nothing pending
+    else if (!state.timer && !state.checking) window.studio.idle = true;     // read by the tests: nothing pending
   }
 }
 
@@ -274,13 +275,46 @@ function show(view, ms) {
   showDiagnostics(diags, view.error);
   window.studio.views += 1;
   window.studio.shownAt[window.studio.views] = performance.now();
-  if (view.ok) { building(true); if (!state.timer && !state.again) load3d(); askSweep(); }
+  if (view.ok) {
+    building(true);
+    if (!state.timer && !state.again) load3d();
+    if (view.checks === "pending") askChecks(view);
+    askSweep();
+  }
   else {          // the last good model, dimmed like the last good picture, and why
     state.glbSeq += 1;
     building(true);
     clearTimeout(state.buildingTimer);
     $("building3d").textContent = "the 3D waits for a program that checks";
     $("building3d").hidden = false;
+  }
+}
+
+// The shape checks of a picture (its warnings: a wall too thin, a hole that cuts nothing), asked
+// once it is shown (issue 104: they were 0.2 s of a planetary move's 0.5 s before its picture):
+// added to its messages when they come, if it is still the picture on the page
+async function askChecks(view) {
+  const source = state.source, values = view.values || {}, shown = view;
+  const me = state.checkSeq = (state.checkSeq || 0) + 1;
+  state.checking = true;
+  window.studio.idle = false;
+  try {
+    await pace();
+    if (state.view !== shown) return;           // another picture since: its own checks
+    const got = await post("/api/checks", { sid: state.sid, source, values });
+    if (state.view !== shown || source !== state.source || !got.ok) return;
+    shown.diagnostics = got.diagnostics || [];
+    delete shown.checks;
+    showDiagnostics(shown.diagnostics, shown.error);
+    const n = shown.diagnostics.length;
+    if (!shown.error && n) status(`${$("status").textContent.replace(/ · \d+ messages?$/, "")} · ${n} message${n > 1 ? "s" : ""}`);
+  } catch (e) {
+    window.studio.errors.push("checks: " + (e.message || e));
+  } finally {
+    if (me === state.checkSeq) {                // (a later picture's checks: theirs)
+      state.checking = false;
+      if (!state.inflight && !state.timer && !state.again) window.studio.idle = true;
+    }
   }
 }
 
