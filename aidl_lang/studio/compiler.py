@@ -342,7 +342,7 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
     elif s.shown is not None and getattr(s.shown[1], "title", None):
         doc["title"] = s.shown[1].title  # its design's name: a pasted program's header
     if doc.get("params"):               # a text param of a few values: the page's list
-        from .choices import choices
+        from .forms.choices import choices
         listed = choices(source)
         doc["params"] = [{**p, "choices": listed[p["name"]]}
                          if p.get("kind") == "string" and p.get("name") in listed else p

@@ -67,6 +67,9 @@ def run(url: str, runs: int, designs: dict) -> dict:
             ctx = browser.new_context(viewport={"width": 1280, "height": 800})
             ctx.route("**/api/thumb/**", lambda r: r.abort())
             page = ctx.new_page()
+            page.asked = []             # the compile requests the page sent (for a stuck page)
+            page.on("request", lambda r, page=page: page.asked.append(r.url.rsplit("/", 1)[1])
+                    if "/api/" in r.url else None)
             page.goto(url)
             page.wait_for_function("() => window.studio && window.studio.ready && window.studio.view"
                                    " && window.studio.view.ok", timeout=300_000)
@@ -81,11 +84,14 @@ def run(url: str, runs: int, designs: dict) -> dict:
             print(f"{eid}: {name} {values}", file=sys.stderr, flush=True)
             for i in range(runs):
                 n = page.evaluate("window.studio.views")
+                page.asked.clear()
                 page.evaluate(RELEASE, [name, values[(i + 1) % 2]])
                 try:
                     settle(page, n)
                 except RuntimeError as e:       # said, and the design's other runs left
-                    print(f"{eid}: {e}", file=sys.stderr, flush=True)
+                    print(f"{eid}: {e}; asked since the release: {page.asked[:40]}; "
+                          f"values {page.evaluate('JSON.stringify(window.studio.state.values)')}",
+                          file=sys.stderr, flush=True)
                     rows.append({"flat": None, "built": None, "split": None})
                     break
                 rows.append(page.evaluate("""() => {
