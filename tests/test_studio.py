@@ -80,23 +80,97 @@ RANGED = ("units mm\nparam w = 40 mm, min=20 mm, max=80 mm\n"
 
 
 def test_a_form_value_out_of_range_or_of_the_wrong_kind_is_said_without_the_cli(client):
-    """The page's values come from its fields and sliders: a value out of its range (a
-    download does not move it into the range as the view does) or of the wrong kind is
-    said naming the field `w`, never the command line's `--set` (issue 83)."""
+    """The page's values come from its fields and sliders: a value out of its range is moved
+    into it by the view and by the download alike (issue 104: the view drew 80 mm, the
+    download refused 95 mm with a 422); a value of the wrong kind is said naming the field
+    `w`, never the command line's `--set` (issue 83)."""
+    import svgelements
     sid = session(client)
-    r = client.post("/api/download/svg", json={"sid": sid, "source": RANGED,
-                                               "values": {"w": "95mm"}})
-    assert r.status_code == 422 and "--set" not in r.text
-    [d] = r.json()["diagnostics"]
-    assert d["code"] == "E0124" and d["message"] == (
-        "the field `w` = `95mm`: 95 mm is outside the range 20 mm .. 80 mm declared for `w`")
     v = view(client, sid, RANGED, {"w": "95mm"})     # the view moves it in: 80 mm, drawn
     assert v["ok"] and v["clamped"] == {"w": 80.0}
+    r = client.post("/api/download/svg", json={"sid": sid, "source": RANGED,
+                                               "values": {"w": "95mm"}})
+    assert r.status_code == 200, r.text
+    import xml.etree.ElementTree as ET
+    [d] = [e.get("d") for e in ET.fromstring(r.content).iter("{http://www.w3.org/2000/svg}path")]
+    x0, _, x1, _ = svgelements.Path(d).bbox()       # user units: mm
+    assert x1 - x0 == pytest.approx(80, abs=1e-9)
     v = view(client, sid, RANGED, {"w": "50 deg"})
     assert not v["ok"] and "--set" not in json.dumps(v)
     [d] = v["diagnostics"]
     assert d["code"] == "E0113" and d["message"].startswith("the field `w` = `50 deg`: ")
     assert d["hint"] == "give it in a length unit, e.g. `40mm` in the field `w`"
+
+
+def test_the_svg_download_is_a_cutting_file_and_each_format_has_its_own_name(client):
+    """Issue 104: the SVG download is `aidl render --svg-style laser` (red cut and blue engrave
+    hairlines of 0.01 mm, nothing filled, no sheet outline), the picture only when asked
+    (`style: preview`, named `-preview`); a finger box nested on several sheets downloads its
+    DXF, SVG and PDF sheets under three names (all three were `finger_box-sheets.zip`)."""
+    import zipfile
+    import ezdxf
+    import svgelements
+    from aidl_lang.studio import gallery
+    sid = session(client)
+    box = gallery.entry("generator/finger_box").source
+    nested = {"layout": True, "sheet": [150, 120], "name": "finger_box"}
+    names, inside = {}, {}
+    for fmt in ("dxf", "svg", "pdf"):
+        r = client.post(f"/api/download/{fmt}", json={"sid": sid, "source": box,
+                                                      "settings": nested})
+        assert r.status_code == 200, r.text
+        names[fmt] = r.headers["content-disposition"].split('filename="')[1].rstrip('"')
+        inside[fmt] = zipfile.ZipFile(io.BytesIO(r.content))
+    assert names == {f: f"finger_box-sheets-{f}.zip" for f in ("dxf", "svg", "pdf")}
+    for fmt, z in inside.items():
+        assert z.namelist() == [f"finger_box-sheet-{i}.{fmt}" for i in range(1, 5)]
+    # every sheet's SVG: stroke-only hairlines, no fill, no sheet rectangle; its outlines those
+    # of the DXF of the same sheet (ezdxf: the same number of closed cut loops)
+    for i in range(1, 5):
+        text = inside["svg"].read(f"finger_box-sheet-{i}.svg").decode()
+        svg = svgelements.SVG.parse(io.StringIO(text))
+        shapes = [e for e in svg.elements() if isinstance(e, svgelements.Shape)]
+        assert shapes and not any(isinstance(e, svgelements.Rect) for e in shapes)
+        assert all(e.fill is None or e.fill.value is None for e in shapes)
+        assert {e.stroke.hex for e in shapes} == {"#ff0000"}
+        # the stroke in user units (the viewBox is in mm): a hairline of 0.01 mm
+        assert 'id="cut" stroke="#ff0000" stroke-width="0.01"' in text
+        doc = ezdxf.read(io.StringIO(inside["dxf"].read(f"finger_box-sheet-{i}.dxf").decode()))
+        loops = [e for e in doc.modelspace().query("LWPOLYLINE") if e.closed]
+        assert len(loops) == len(shapes) > 0
+    # the picture: asked for, filled, named as what it is
+    r = client.post("/api/download/svg", json={"sid": sid, "source": box, "settings": {
+        "layout": False, "style": "preview", "name": "finger_box"}})
+    assert r.status_code == 200 and 'filename="finger_box-preview.svg"' in \
+        r.headers["content-disposition"]
+    assert 'fill="#cfd8dc"' in r.text
+
+
+EDGE = ("units mm\nparam w = 120 mm, min = 20 mm, max = 220 mm, step = 0.5 mm\n"
+        "solid p {\n    body = Rectangle(center=(0, 0), width=w, height=30)\n"
+        "    hole h { c = Circle(center=(35.15 mm, 0), radius=5 mm) }\n}\n")
+
+
+def test_a_moves_shape_checks_come_after_its_picture(client):
+    """Issue 104: the page asks a slider move's picture without its shape checks (`"checks":
+    "later"`: the answer says `"checks": "pending"`, 0.2 of a planetary move's 0.5 s) and then
+    `/api/checks` for the picture's values: the warnings the one request gave (W0507: a wall
+    0.35 mm wide at 81 mm), from the worker's session, or compiled again by a worker without
+    it (another session id)."""
+    sid = session(client)
+    assert view(client, sid, EDGE)["ok"]
+    r = client.post("/api/view", json={"sid": sid, "source": EDGE, "values": {"w": "81mm"},
+                                       "checks": "later"})
+    moved = r.json()
+    assert moved["ok"] and moved["checks"] == "pending" and moved["svg"]
+    assert [d["code"] for d in moved["diagnostics"]] == []
+    whole = view(client, session(client), EDGE, {"w": "81mm"})      # one request: all of it
+    assert [d["code"] for d in whole["diagnostics"]] == ["W0507"] and "checks" not in whole
+    for who in (sid, session(client)):
+        got = client.post("/api/checks", json={"sid": who, "source": EDGE,
+                                               "values": moved["values"]}).json()
+        assert got["ok"] and [d["code"] for d in got["diagnostics"]] == ["W0507"], got
+        assert got["diagnostics"][0]["message"] == whole["diagnostics"][0]["message"]
 
 
 def test_a_program_reads_only_its_own_sessions_uploads(client, tmp_path):
@@ -153,12 +227,21 @@ def test_uploads_are_checked_and_never_written_through_a_link(client, tmp_path):
     assert not os.path.islink(tmp_path / "data" / sid / "board.dxf")
 
 
-def test_a_client_past_its_rate_gets_429_with_retry_after(tmp_path):
+def test_a_client_past_its_rate_gets_429_with_retry_after_and_browsing_costs_none(tmp_path):
+    """The rate counts what compiles; browsing (the gallery, its thumbnails, a hover's docs)
+    costs none (issue 104: after four designs' galleries a 20 s drag had 8 of 30 refused)."""
     app = create_app(Settings(data=str(tmp_path / "d"), compilers=1, rate="5/minute"))
     with TestClient(app) as c:
-        codes = [c.get("/api/docs?name=Circle").status_code for _ in range(7)]
-        assert codes[:5] == [200] * 5 and codes[5:] == [429, 429]
-        r = c.get("/api/docs?name=Circle")
+        for _ in range(3):
+            assert c.get("/api/docs?name=Circle").status_code == 200
+            assert c.get("/api/gallery").status_code == 200
+            assert c.get("/api/gallery/example/bracket").status_code == 200
+            assert c.get("/api/thumb/nope.svg").status_code == 404
+        sid = session(c)
+        codes = [c.post("/api/view", json={"sid": sid, "source": RANGED}).status_code
+                 for _ in range(6)]
+        assert codes[:4] == [200] * 4 and codes[4:] == [429, 429]      # (the session: 1)
+        r = c.post("/api/view", json={"sid": sid, "source": RANGED})
         assert int(r.headers["retry-after"]) >= 1 and "too many requests" in r.json()["error"]
 
 
@@ -225,10 +308,20 @@ def test_requests_that_are_not_programs_are_refused_clearly(client):
     r = client.post("/api/view", content=b"{not json", headers={"content-type": "application/json"})
     assert r.status_code == 400 and "not JSON" in r.json()["error"]
     r = client.post("/api/download/doc", json={"sid": sid, "source": BRACKET})
-    assert r.status_code == 422 and "unknown format" in r.json()["error"]
-    r = client.post("/api/download/dxf", json={"sid": sid, "source": BRACKET,
-                                               "settings": {"kerf": 50}})
-    assert r.status_code == 422 and "kerf" in r.json()["error"]
+    assert r.status_code == 400 and r.json()["error"].startswith(
+        "`doc` is not a format this studio makes; it makes 3mf, dxf")
+    for settings, said in [({"kerf": 50}, "kerf expects a number between 0 and 10 mm, got 50"),
+                           ({"style": "fancy"}, "style expects laser (the cutting file) or "
+                                                "preview (the picture), got `fancy`"),
+                           ({"layout": True, "sheet": [1e400]}, "sheet expects [width, height]"),
+                           ({"layout": True, "sheet": [1e400, 5]}, "sheet expects a number between"),
+                           ({"kerf": 10 ** 400}, "kerf expects a number in mm"),
+                           ({"name": ["x"]}, "name expects a text"),
+                           ([1, 2], "`settings` is an object")]:
+        body = json.dumps({"sid": sid, "source": BRACKET, "settings": settings})   # (Infinity)
+        r = client.post("/api/download/dxf", content=body,
+                        headers={"content-type": "application/json"})
+        assert r.status_code == 400 and r.json()["error"].startswith(said), r.text
 
 
 def test_two_server_processes_behind_one_port_share_the_uploads(tmp_path):

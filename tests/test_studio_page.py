@@ -259,7 +259,7 @@ def test_open_my_drawing_as_an_editable_design_and_as_a_drawing(server, browser,
     page.check('input[name="open-as"][value="infer"]')
     page.set_input_files("#drawing-file", str(dxf))
     idle_after(page, n)
-    assert page.inner_text("#title") == "My_plate_2_.dxf"
+    assert page.inner_text("#title") == "My_plate_2_"       # (its files: My_plate_2_.dxf)
     names = page.eval_on_selector_all("#params input[type=range]", "els => els.map(e => e.name)")
     assert {"width", "height"} <= set(names), names
     width = page.evaluate("window.studio.view.params.find((p) => p.name === 'width')")

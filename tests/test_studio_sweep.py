@@ -285,24 +285,31 @@ def test_law_one_sweep_request_spends_one_budget_and_says_what_it_cut(work):
     assert rep.work == alone.work and rep.work <= work + 2_500, (rep.work, work)
     assert sweep_all(SLID, "p.aidl", work=work).work + scan(SLID, "p.aidl", work=work).work \
         > work + 2_500
+    changes = {}
     for name in alone.swept:
         runs = alone.runs[name]
+        state = {x: r.broken for r in runs if r.broken is not None for x in (r.lo, r.hi)}
         for a, b in alone.unjudged(name):
-            # a part not judged lies between a clean and a broken value judged, and no hatch
-            # or clean run reaches into it
-            assert any(r.hi == a for r in runs if r.broken is not None)
+            # a part not judged lies between two values judged, and no hatch or clean run
+            # reaches into it; between a clean and a broken one (the bisection cut), or between
+            # two alike with a grid value the budget never reached (issue 104: never "clean")
+            assert a in state and b in state
             assert not any(r.broken is not None and a < x < b for r in runs
                            for x in (r.lo, r.hi))
             for after, before, _ in alone.broken(name):
                 assert (before is not None and before <= a) or (after is not None and after >= b)
+            if state[a] != state[b]:
+                changes.setdefault(name, []).append((a, b))
+            else:
+                assert rep.skipped > 0
     runs = alone.runs["off"]
     assert runs[0].broken is False and runs[0].lo == 0.0 and runs[0].hi <= 26.5
     assert runs[-1].broken and runs[-1].hi == 40.0
-    # where it starts to break (26.5 mm) is inside the part not judged, or bisected
-    for a, b in alone.unjudged("off"):
+    # where it starts to break (26.5 mm) is inside the change not judged, or bisected
+    for a, b in changes.get("off", []):
         assert a <= 26.5 <= b
     if work == 35_000:
-        assert alone.unjudged("off") == [(25.0, 30.0)] and rep.skipped > 0
+        assert changes["off"] == [(25.0, 30.0)] and rep.skipped > 0
 
 
 def test_a_studio_sweep_is_the_one_budget_request(tmp_path):
@@ -380,3 +387,28 @@ def test_a_closed_tabs_sweep_in_flight_is_stopped_when_no_other_tab_waits_for_it
     proc.join(10)
     assert not proc.is_alive() and st.served["sweeps_stopped"] == 1
     assert not st.sweeps.running and a not in st.sweeps.of and b not in st.sweeps.of
+
+
+EDGE = ("units mm\nparam w = 120 mm, min = 20 mm, max = 220 mm, step = 0.5 mm\n"
+        "solid p {{\n    body = Rectangle(center=(0, 0), width=w, height=30)\n"
+        "    hole h {{ c = Circle(center=({cx} mm, 0), radius=5 mm) }}\n}}\n")
+
+
+@settings(max_examples=4, deadline=None, derandomize=True)
+@given(cx=st.floats(20, 60).map(lambda x: round(x, 2)))
+@example(cx=35.15)
+def test_law_a_hatch_ends_on_the_slider_step_next_to_the_clean_value(cx):
+    """Issue 104: an edge was bisected to 1 % of the range (2 mm here), so up to 2 mm of clean
+    values were hatched (a mounting plate's width 70 hatched and checking clean). Now to the
+    slider's step: the clean end is clean and the step below it, the first one hatched, breaks
+    (`aidl render --set` through the real compiler), and the clean range runs to the slider's
+    other end (220 mm, not a step short)."""
+    from aidl_lang import api
+    from aidl_lang.studio.hatching import sweep_ranges
+    src = EDGE.format(cx=cx)
+    q = sweep_ranges("/nonexistent", src)["params"]["w"]
+    lo, hi = q["clean"]
+    assert hi == 220.0 and q["below"] and q["below"]["at"] == lo and not q["unjudged"]
+    said = {w: {d.code for d in api.compile(source=src, overrides={"w": f"{w}mm"}).diagnostics}
+            for w in (lo - 0.5, lo)}
+    assert said[lo] == set() and said[lo - 0.5], (cx, lo, said)

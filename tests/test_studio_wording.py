@@ -32,9 +32,9 @@ def test_the_compilers_phrases_are_said_for_the_page():
         # W0511's hint: the move stays, the AllowOverlap goes
         "move `b` at least 2.00 mm further from `a` or shrink one; if the overlap is meant (a "
         "picture of parts stacked), write `AllowOverlap(a, b)` in their assembly":
-        "move “b” at least 2.00 mm further from “a” or shrink one",
+        "move “b” at least 2 mm further from “a” or shrink one",
         "space the copies at least 2.00 mm further apart, or say so: write `AllowOverlap(c)` "
-        "in `h`": "space the copies at least 2.00 mm further apart",
+        "in `h`": "space the copies at least 2 mm further apart",
         "if `s` is meant to fill h and g to cut it (keep both), write `AllowOverlap(h, s)` in "
         "`p`; else move g clear of h or `s` out of it": "move g clear of h or “s” out of it",
         "`--set w=95mm`: 95 mm is outside the range 10..50 mm":
@@ -54,6 +54,10 @@ def test_the_compilers_phrases_are_said_for_the_page():
         "12 degrees or more passes)",
         "the compile ran out of its budget; build less or raise the budget (`--budget 2`)":
         "the compile ran out of its budget; build less",
+        # a dot that starts a word keeps its space (issue 104: "is not a.dxf or.svg drawing")
+        "`/etc/passwd` is not a .dxf or .svg drawing":
+        "“/etc/passwd” is not a .dxf or .svg drawing",
+        "a hole of .5 mm , see --dof .": "a hole of .5 mm.",
     }
     for text, want in cases.items():
         assert for_page(text) == want, text

@@ -199,9 +199,22 @@ async def read_json(request: Request) -> dict:
         doc = json.loads(body)
     except ValueError:
         raise Refused("the request is not JSON") from None
+    except RecursionError:          # [[[[...]]]] 100,000 deep: json's parser recurses
+        raise Refused("the request is nested too deeply: it is not what this address "
+                      "takes") from None
     if not isinstance(doc, dict):
         raise Refused("the request is not a JSON object")
     return doc
+
+
+def _text(v: str, what: str) -> str:
+    """``v`` checked as text the answer may quote: a lone UTF-16 surrogate (``"\\ud800"`` in
+    the JSON) cannot be written back as UTF-8.  Raises :class:`Refused`."""
+    try:
+        v.encode("utf-8")
+    except UnicodeEncodeError:
+        raise Refused(f"{what} is not valid text (it holds a lone UTF-16 surrogate)") from None
+    return v
 
 
 def program_of(doc: dict) -> tuple[str, dict]:
@@ -209,6 +222,7 @@ def program_of(doc: dict) -> tuple[str, dict]:
     source = doc.get("source")
     if not isinstance(source, str):
         raise Refused("give the program as `source` (text)")
+    _text(source, "the program")
     if len(source.encode("utf-8", "surrogatepass")) > MAX_SOURCE_BYTES:
         raise Refused(f"a program has at most {MAX_SOURCE_BYTES:,} bytes")
     values = doc.get("values") or {}
@@ -216,11 +230,28 @@ def program_of(doc: dict) -> tuple[str, dict]:
         raise Refused(f"`values` is an object of at most {MAX_VALUES} param values")
     out = {}
     for k, v in values.items():
-        if isinstance(v, bool) or not isinstance(v, (str, int, float)) \
-                or len(k) > MAX_VALUE or len(str(v)) > MAX_VALUE:
-            raise Refused(f"the value of `{str(k)[:40]}` is not a short text or number")
-        out[k] = str(v)
+        _text(k, "a param's name")
+        if isinstance(v, bool):         # a checkbox (the sweep sends them as they are)
+            v = "true" if v else "false"
+        if not isinstance(v, (str, int, float)) or len(k) > MAX_VALUE or len(str(v)) > MAX_VALUE:
+            raise Refused(f"the value of `{str(k)[:40]}` is not a short text, number or "
+                          "true/false")
+        out[k] = _text(str(v), f"the value of `{k[:40]}`")
     return source, out
+
+
+def settings_of(fmt: str, doc: dict) -> None:
+    """Check a download's format and ``settings`` before any compile (:func:`.compiler.
+    download_settings`).  Raises :class:`Refused`."""
+    from ..output import FORMATS
+    suffix = "." + str(fmt).lower().lstrip(".")
+    if suffix not in FORMATS:
+        raise Refused(f"`{fmt[:40]}` is not a format this studio makes; it makes "
+                      + ", ".join(sorted({f[1:] for f in FORMATS})))
+    try:
+        compiler.download_settings(suffix, doc.get("settings"))
+    except ValueError as e:
+        raise Refused(str(e)) from None
 
 
 def defaults_of(doc: dict) -> dict:
@@ -231,10 +262,13 @@ def defaults_of(doc: dict) -> dict:
     if not isinstance(got, dict) or len(got) > MAX_VALUES:
         raise Refused(f"`defaults` is an object of at most {MAX_VALUES} param defaults")
     for k, v in got.items():
+        _text(k, "a param's name")
         if not isinstance(v, (str, int, float, bool)) or len(k) > MAX_VALUE \
                 or len(str(v)) > MAX_VALUE:
             raise Refused(f"the default of `{str(k)[:40]}` is not a short text, number or "
                           "true/false")
+        if isinstance(v, str):
+            _text(v, f"the default of `{k[:40]}`")
     return got
 
 
@@ -568,7 +602,8 @@ def _guard(st: Studio):
     def guarded(handler, cost: int = 1):
         async def endpoint(request: Request):
             try:
-                st.check_rate(request, cost)
+                if cost:                # (0: what browsing reads; never a drag's rate)
+                    st.check_rate(request, cost)
                 st.folders.sweep()
                 return await handler(request)
             except Limited as e:
@@ -627,11 +662,12 @@ def _reference_routes(st: Studio, guarded) -> list[Route]:
 
     async def config(request):
         from ..output import FORMATS
+        from .wording import for_page
         formats, seen = [], set()
         for k, f in FORMATS.items():        # one button per writer (.stp is .step, .nc .gcode)
             if (f.module, f.function) not in seen:
                 seen.add((f.module, f.function))
-                formats.append({"ext": k.lstrip("."), "about": f.about, "cut": f.cut,
+                formats.append({"ext": k.lstrip("."), "about": for_page(f.about), "cut": f.cut,
                                 "assembled": f.assembled, "available": compiler.can_make(k)})
         return JSONResponse({
             "formats": formats,
@@ -684,11 +720,14 @@ def _reference_routes(st: Studio, guarded) -> list[Route]:
         text, found = lookup_text(name)
         return JSONResponse({"text": text if found else None})
 
+    # browsing costs no rate (issue 104: after four designs' galleries, thumbnails and hovers,
+    # a 20 s drag had 8 of 30 requests refused): each answer is a table lookup, the
+    # thumbnails made once per build (kept on disk), the docs a lookup
     return [Route("/api/config", config),
-            Route("/api/gallery", guarded(gallery_list)),
-            Route("/api/gallery/{id:path}", guarded(gallery_entry)),
-            Route("/api/thumb/{id:path}.svg", guarded(thumb)),
-            Route("/api/docs", guarded(docs))]
+            Route("/api/gallery", guarded(gallery_list, 0)),
+            Route("/api/gallery/{id:path}", guarded(gallery_entry, 0)),
+            Route("/api/thumb/{id:path}.svg", guarded(thumb, 0)),
+            Route("/api/docs", guarded(docs, 0))]
 
 
 def _session_routes(st: Studio, guarded) -> list[Route]:
@@ -701,11 +740,13 @@ def _session_routes(st: Studio, guarded) -> list[Route]:
 
     async def close(request):
         doc = await read_json(request)
+        sid = doc.get("sid")
+        if not isinstance(sid, str):
+            raise Refused("give the page's session as `sid` (text)")
         with contextlib.suppress(Refused):
-            st.folders.close(doc.get("sid"))
-        st.affinity.pop(doc.get("sid"), None)
-        if isinstance(doc.get("sid"), str):
-            st.leave_sweep(doc["sid"])
+            st.folders.close(sid)
+        st.affinity.pop(sid, None)
+        st.leave_sweep(sid)
         return JSONResponse({"closed": True})
 
     async def files(request):
@@ -756,10 +797,22 @@ def _compile_routes(st: Studio, guarded) -> list[Route]:
         sid = doc.get("sid", "")
         folder = st.folders.folder(sid)
         source, values = program_of(doc)
-        answer = await st.newest(sid, ("view", sid, folder, source, values, defaults_of(doc)))
+        later = doc.get("checks") == "later"        # the shape checks asked apart (/api/checks)
+        answer = await st.newest(sid, ("view", sid, folder, source, values, defaults_of(doc),
+                                        later))
         if "error" in answer and "svg" not in answer:
             return JSONResponse({"ok": False, "svg": None, "params": None, "diagnostics": [],
                                  "error": answer["error"]})
+        return JSONResponse(answer)
+
+    async def checks(request):
+        doc = await read_json(request)
+        sid = doc.get("sid", "")
+        folder = st.folders.folder(sid)
+        source, values = program_of(doc)
+        answer = await st.compile(("checks", sid, folder, source, values), sid)
+        if "error" in answer and "diagnostics" not in answer:
+            return JSONResponse({"ok": False, "diagnostics": [], "error": answer["error"]})
         return JSONResponse(answer)
 
     async def download(request):
@@ -767,6 +820,7 @@ def _compile_routes(st: Studio, guarded) -> list[Route]:
         folder = st.folders.folder(doc.get("sid", ""))
         source, values = program_of(doc)
         fmt = request.path_params["fmt"]
+        settings_of(fmt, doc)
         answer = await st.compile(("download", folder, source, values, fmt,
                                    doc.get("settings") or {}), doc.get("sid"))
         if isinstance(answer, dict):
@@ -791,6 +845,10 @@ def _compile_routes(st: Studio, guarded) -> list[Route]:
         sid = doc.get("sid", "")
         folder = st.folders.folder(sid)
         source, values = program_of(doc)
+        try:
+            compiler.download_settings(".glb", doc.get("settings"))
+        except ValueError as e:
+            raise Refused(str(e)) from None
         answer = await st.compile(("glb", sid, folder, source, values,
                                    doc.get("settings") or {}), sid)
         if isinstance(answer, dict):
@@ -810,6 +868,9 @@ def _compile_routes(st: Studio, guarded) -> list[Route]:
         doc = await read_json(request)
         folder = st.folders.folder(doc.get("sid", ""))
         text = doc.get("description")
+        if not isinstance(text, str) or not text.strip():
+            raise Refused("give what the part is as `description` (text)")
+        _text(text, "the description")
         if st.describing >= settings.describes:
             raise Limited(503, "the studio is busy: every model conversation slot is taken; "
                                "try again in a minute", 30)
@@ -826,6 +887,7 @@ def _compile_routes(st: Studio, guarded) -> list[Route]:
                                  headers={"Cache-Control": "no-store"})
 
     return [Route("/api/view", guarded(view), methods=["POST"]),
+            Route("/api/checks", guarded(checks), methods=["POST"]),
             Route("/api/download/{fmt}", guarded(download, 4), methods=["POST"]),
             Route("/api/glb", guarded(glb), methods=["POST"]),
             Route("/api/sweep", guarded(sweep, 2), methods=["POST"]),

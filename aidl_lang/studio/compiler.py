@@ -35,6 +35,7 @@ from __future__ import annotations
 import io
 import os
 import re
+import time
 import zipfile
 from collections import OrderedDict
 
@@ -121,10 +122,13 @@ def handler(budget: float = 1.0):
     def handle(request):
         kind = request[0]
         oom = False
+        started = time.perf_counter()
         gc.set_threshold(YOUNG_OBJECTS, YOUNG_ROUNDS, 1 << 30)    # collect_garbage: back
         try:
             if kind == "view":
                 answer = view(sessions, *request[1:], budget=scaled)
+            elif kind == "checks":
+                answer = checks(sessions, *request[1:], budget=scaled)
             elif kind == "download":
                 answer = download(*request[1:], budget=scaled)
             elif kind == "glb":
@@ -146,10 +150,15 @@ def handler(budget: float = 1.0):
         if oom:                         # said once the failed frames are gone
             sessions.clear()
             answer = out_of_memory_answer(request)
-        if kind in ("view", "download", "glb", "sweep") and len(request) > 2:
+        if kind in ("view", "checks", "download", "glb", "sweep") and len(request) > 2:
             answer = hide_paths(answer, request[1] if kind == "download" else request[2])
         if isinstance(answer, dict):    # every text a visitor reads, worded for the page
             answer = page_answer(answer)
+        if kind == "view" and isinstance(answer, dict) and isinstance(answer.get("timing"), dict):
+            # the request's whole time in this worker (the compile, the shape checks, a move
+            # into the ranges, the wording): the page's benchmark splits it from the transfer
+            answer["timing"] = {**answer["timing"],
+                                "worker_ms": round((time.perf_counter() - started) * 1000, 1)}
         if rss() > RETIRE_RSS and isinstance(answer, dict):
             answer["retire"] = True     # give the memory back: a fresh worker takes over
         return answer
@@ -265,7 +274,7 @@ def out_of_memory_answer(request) -> dict:
 
 
 def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict,
-         defaults: dict | None = None, budget=None) -> dict:
+         defaults: dict | None = None, later: bool = False, budget=None) -> dict:
     """The live preview of ``source`` with the customizer's ``values`` ({name: "40 mm"});
     ``defaults``: ``{name: default}`` (display units, as the answer's params give them) the
     page chose ``values`` against; ``budget``: a :class:`~aidl_lang.base.limits.Budget` (None:
@@ -278,7 +287,11 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
     ``dropped`` (a new program starts from its own values); ``values`` is what the picture
     was drawn with (the kept values, and the ``clamped`` ones moved into their ranges).  An
     answer whose program does not check has no ``params`` and no ``svg`` (the last good
-    picture of another program is not this program's)."""
+    picture of another program is not this program's).
+
+    ``later``: a slider move's shape checks (W0402, W0501-W0510: the warnings; 0.2 of a
+    planetary move's 0.5 s) are left for :func:`checks`, asked right after the picture is
+    shown; the answer says ``"checks": "pending"``."""
     from ..serve.session import Session, keep_values
     s = sessions.pop(sid, None)
     if s is None:
@@ -305,7 +318,8 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
         kept = keep_values(values, s.defaults, assumed)
         if kept != s.values:
             doc = s.set_params(kept)
-            doc = s.update_checks() or doc
+            if not later:
+                doc = s.update_checks() or doc
         else:
             doc = s.view()
     clamped: dict = {}
@@ -316,6 +330,8 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
         elif settled is not doc:
             s.set_params(kept)          # no better: the visitor's values, and their error
     doc = dict(doc)
+    if later and getattr(s, "_checks_pending", None) is not None and doc.get("ok"):
+        doc["checks"] = "pending"       # the page asks /api/checks for them
     if clamped:
         doc["clamped"] = clamped
     doc["dropped"] = sorted(set(values) - set(kept))
@@ -323,9 +339,34 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
         doc["params"] = None            # the params of a program that checked before, not this
     if s.svg_source != source:          # the last good picture is another program's
         doc["svg"], doc["values"] = None, {}
+    elif s.shown is not None and getattr(s.shown[1], "title", None):
+        doc["title"] = s.shown[1].title  # its design's name: a pasted program's header
+    if doc.get("params"):               # a text param of a few values: the page's list
+        from .forms.choices import choices
+        listed = choices(source)
+        doc["params"] = [{**p, "choices": listed[p["name"]]}
+                         if p.get("kind") == "string" and p.get("name") in listed else p
+                         for p in doc["params"]]
     doc.pop("file", None)
     doc.pop("source", None)             # the page has it
     return doc
+
+
+def checks(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict,
+           budget=None) -> dict:
+    """The shape checks a ``view`` with ``later`` left (see :func:`view`): ``{"ok",
+    "version", "values", "diagnostics"}`` of the picture of ``source`` with ``values`` (the
+    ``--set`` texts it was drawn with), every message of it, the checks' warnings included.
+    Run on the session ``sid`` this worker keeps when it drew that picture (its drawing is
+    checked: no compile); else (another worker drew it) the picture's compile again here."""
+    values = {str(k): str(v) for k, v in (values or {}).items()}
+    s = sessions.get(sid)
+    if s is None or s.source != source or s.svg_values != values:
+        doc = view(sessions, sid, folder, source, values, None, budget=budget)
+    else:
+        doc = s.update_checks() or s.view()
+    return {"ok": bool(doc.get("ok")), "version": doc.get("version"),
+            "values": doc.get("values") or {}, "diagnostics": doc.get("diagnostics") or []}
 
 
 def view_glb(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict,
@@ -358,6 +399,11 @@ def view_glb(sessions: OrderedDict, sid: str, folder: str, source: str, values: 
             output = res.output
         except OutputError as e:
             return {"error": str(e)}
+    if not any(p.kind == "solid" for p in output.parts) and not output.engrave:
+        # a hole that removes all of its part: the right reason in this pane (it said "only
+        # lines: a drawing")
+        return {"error": "nothing to show in 3D with these values: no part is left (the "
+                         "messages under the program say why)"}
     try:
         return to_view_glb(output, thickness), "view.glb", "model/gltf-binary"
     except (OutputError, ValueError) as e:
@@ -433,7 +479,7 @@ def _number(settings: dict, key: str, lo: float, hi: float) -> float | None:
         return None
     try:
         x = float(v)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         raise ValueError(f"{key} expects a number in mm, got `{str(v)[:40]}`") from None
     if not lo <= x <= hi:
         raise ValueError(f"{key} expects a number between {lo:g} and {hi:g} mm, got {x:g}")
@@ -454,40 +500,37 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
     :data:`PAGES`, as ``aidl render --page``).  G-code without ``layout`` has the drawing's
     lower-left corner on the machine's origin (the sheet's corner: no negative coordinate)."""
     from .. import api
-    from ..output import ASSEMBLED_FORMATS, FORMATS
+    from ..output import FORMATS
     from ..output.part.part import MissingDependency, OutputError
     suffix = "." + str(fmt).lower().lstrip(".")
     if suffix not in FORMATS:
         return {"error": f"unknown format `{fmt}`; use one of "
                          + ", ".join(sorted(f[1:] for f in FORMATS))}
-    settings = settings if isinstance(settings, dict) else {}
     try:
-        kerf = _number(settings, "kerf", 0.0, 10.0)
-        thickness = _number(settings, "thickness", 0.1, 100.0)
-        machine = settings.get("machine") or None
-        if machine is not None and machine not in MACHINES:
-            raise ValueError(f"machine expects one of {', '.join(MACHINES)}, got `{machine}`")
-        assembled = bool(settings.get("assembled")) and suffix in ASSEMBLED_FORMATS
-        page = _page(settings.get("page")) if suffix == ".pdf" else None
-        layout = bool(settings.get("layout")) and FORMATS[suffix].cut
-        sheet = settings.get("sheet") or [600, 400]
-        if layout:
-            if not (isinstance(sheet, (list, tuple)) and len(sheet) == 2):
-                raise ValueError("sheet expects [width, height] in mm")
-            sheet = tuple(_number({"sheet": v}, "sheet", 10.0, MAX_SHEET) for v in sheet)
+        got = download_settings(suffix, settings)
     except ValueError as e:
         return {"error": str(e)}
-    res = api.compile(source=source, path=os.path.join(folder, "main.aidl"),
-                      overrides={str(k): str(v) for k, v in (values or {}).items()},
-                      budget=budget)
+    kerf, layout, sheet, options = got["kerf"], got["layout"], got["sheet"], got["options"]
+    overrides = {str(k): str(v) for k, v in (values or {}).items()}
+    path = os.path.join(folder, "main.aidl")
+    res = api.compile(source=source, path=path, overrides=overrides, budget=budget)
+    if not res.ok and overrides:
+        # the values as the preview draws them: a value outside a range that follows the
+        # other params is moved into it (:func:`settle`), so /api/view and /api/download
+        # agree; a value that cannot be moved keeps its error
+        drawn = view(OrderedDict(), "", folder, source, overrides, None, budget=budget)
+        if drawn.get("ok") and drawn.get("clamped") and drawn.get("values"):
+            res = api.compile(source=source, path=path, overrides=dict(drawn["values"]),
+                              budget=budget)
     if not res.ok:
         return {"error": "the program does not compile with these values",
                 "diagnostics": _errors(res)[:8]}
     if not res.output.parts and not res.output.engrave:
         return nothing_to_make(res)
-    name = file_base(settings.get("name")) or (
+    name = file_base(settings.get("name") if isinstance(settings, dict) else None) or (
         res.compiled.model.root.name if res.compiled.model is not None else "part")
-    options = {"thickness": thickness, "machine": machine, "assembled": assembled, "page": page}
+    if options.get("style") == "preview":
+        name += "-preview"              # the picture, never under the cutting file's name
     media = FORMATS[suffix].media
     try:
         if layout:
@@ -499,9 +542,11 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
             with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as z:
                 for i, data in enumerate(sheets, 1):
                     z.writestr(f"{name}-sheet-{i}{suffix}", data)
-            return buf.getvalue(), f"{name}-sheets.zip", "application/zip"
+            # one name per format: the DXF, SVG and PDF sheets never overwrite each other
+            return buf.getvalue(), f"{name}-sheets-{suffix[1:]}.zip", "application/zip"
+        assembled = options.get("assembled")
         if suffix == ".stl" and assembled:
-            return closed_stl(res.output, thickness), f"{name}{suffix}", media
+            return closed_stl(res.output, options["thickness"]), f"{name}{suffix}", media
         if FORMATS[suffix].module == "gcode" and not assembled:
             return gcode_at_origin(res.output, kerf, suffix, options), f"{name}{suffix}", media
         return res.encode(suffix, kerf, **options), f"{name}{suffix}", media
@@ -511,6 +556,50 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
             report_out_of_budget(res.sink, e.budget)
             return {"error": str(e), "diagnostics": _errors(res)}
         return {"error": str(e)}
+
+
+SVG_STYLES = ("laser", "preview")
+
+
+def download_settings(suffix: str, settings) -> dict:
+    """A download's ``settings`` (see :func:`download`) checked for the format ``suffix``
+    (``.svg``): ``{"kerf", "layout", "sheet", "options"}``, ``options`` the writer's
+    (``thickness``, ``machine``, ``assembled``, ``page``; ``style`` for SVG: ``laser`` unless
+    ``preview`` is asked).  Raises :class:`ValueError` with a sentence for a setting that is
+    not one the download takes (the server answers it 400 before any compile)."""
+    from ..output import ASSEMBLED_FORMATS, FORMATS
+    if settings is None:
+        settings = {}
+    if not isinstance(settings, dict):
+        raise ValueError("`settings` is an object of download settings (kerf, sheet, machine...)")
+    kerf = _number(settings, "kerf", 0.0, 10.0)
+    thickness = _number(settings, "thickness", 0.1, 100.0)
+    machine = settings.get("machine") or None
+    if machine is not None and machine not in MACHINES:
+        raise ValueError(f"machine expects one of {', '.join(MACHINES)}, got "
+                         f"`{str(machine)[:40]}`")
+    assembled = bool(settings.get("assembled")) and suffix in ASSEMBLED_FORMATS
+    page = _page(settings.get("page")) if suffix == ".pdf" else None
+    layout = bool(settings.get("layout")) and FORMATS[suffix].cut
+    sheet = settings.get("sheet") or [600, 400]
+    if layout:
+        if not (isinstance(sheet, (list, tuple)) and len(sheet) == 2):
+            raise ValueError("sheet expects [width, height] in mm")
+        sheet = tuple(_number({"sheet": v}, "sheet", 10.0, MAX_SHEET) for v in sheet)
+    name = settings.get("name")
+    if name is not None and not isinstance(name, str):
+        raise ValueError("name expects a text (the file's name)")
+    options = {"thickness": thickness, "machine": machine, "assembled": assembled, "page": page}
+    style = settings.get("style") or "laser"
+    if style not in SVG_STYLES:
+        raise ValueError(f"style expects laser (the cutting file) or preview (the picture), "
+                         f"got `{str(style)[:40]}`")
+    if suffix == ".svg" and not assembled:
+        # the cutting file by default (`aidl render --svg-style laser`): red cut and blue
+        # engrave hairlines, one element per loop, no sheet outline; the page's picture
+        # (filled parts) only when asked
+        options["style"] = style
+    return {"kerf": kerf, "layout": layout, "sheet": sheet, "options": options}
 
 
 def nothing_to_make(res) -> dict:

@@ -108,6 +108,9 @@ def _stop(p, x: float, up: bool) -> float:
     value is shown where the slider stops, on the clean side."""
     if not p.step or p.step <= 0:
         return x
+    for end in (p.min, p.max):      # a slider's end is a stop (the grid may not reach it):
+        if abs(x - end) <= 1e-9 * max(1.0, abs(end)):   # a clean range runs to the end
+            return end
     k = (x - p.min) / p.step
     k = math.ceil(k - 1e-9) if up else math.floor(k + 1e-9)
     return round(min(max(p.min + k * p.step, p.min), p.max), 9)

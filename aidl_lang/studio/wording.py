@@ -101,10 +101,37 @@ _PHRASES: list[tuple[re.Pattern, str]] = [(re.compile(p), r) for p, r in [
     # the reference
     (r"\(?see `aidl explain ([^`]+)`\)?", ""),
     (r"\(?`aidl docs ([^`]+)`\)?", r"the reference of \1"),
+    # the G-code format's note (a download button's tooltip, issue 104)
+    (r"\(--machine\)", "(the Machine field)"),
     # any other option left: never a flag on the page
     (r"\s?\(?--[a-z][\w-]*(?:[ =][\w.,x]+)?\)?", ""),
     (r"\s?``", ""),                              # (a quoted flag, now gone)
 ]]
+
+# a space left before punctuation by a phrase taken out ("the sheet , or" -> "the sheet, or");
+# a dot that starts a word is no punctuation (".dxf", ".5 mm": "is not a .dxf or .svg drawing")
+_TIGHT = re.compile(r"\s+([,;:)]|\.(?![.\w]))")
+
+
+# numbers as a visitor reads them (issue 104), outside code quotes (what was typed stays as
+# typed): a unit after a space ("with d = 60 mm", not "with d=60mm"), no trailing zeros ("0.5 mm
+# wide, thinner than 0.5 mm", not "0.50 mm")
+_NUMBERS = [(re.compile(p), r) for p, r in [
+    (r"(?<![\w.])([A-Za-z_][\w.]*)=(-?\d+(?:\.\d+)?) ?(mm|deg|cm|in)\b", r"\1 = \2 \3"),
+    (r"(?<![\w.])(-?\d+)\.0+(?= ?(?:mm|deg|cm|in)\b)", r"\1"),
+    (r"(?<![\w.])(-?\d+\.\d*?[1-9])0+(?= ?(?:mm|deg|cm|in)\b)", r"\1"),
+    (r"(?<=\d)(mm|deg)\b", r" \1"),
+]]
+
+
+def _numbers(text: str) -> str:
+    """``text`` with :data:`_NUMBERS` applied outside backticks."""
+    parts = text.split("`")
+    for i in range(0, len(parts), 2):           # the even parts: outside the quotes
+        for p, r in _NUMBERS:
+            parts[i] = p.sub(r, parts[i])
+    return "`".join(parts)
+
 
 def for_page(text: str | None, code: bool = False) -> str | None:
     """``text`` written for the studio's page (see the module text); None stays None.
@@ -115,15 +142,16 @@ def for_page(text: str | None, code: bool = False) -> str | None:
     text = for_forms(text)
     for p, r in _PHRASES:
         text = p.sub(r, text)
+    text = _numbers(text)
     if code:
-        return re.sub(r"\s+([,;:)]|\.(?!\.))", r"\1", re.sub(r" {2,}", " ", text)).strip(" ;,")
+        return _TIGHT.sub(r"\1", re.sub(r" {2,}", " ", text)).strip(" ;,")
     for p in _AUTHOR_ONLY:
         text = p.sub("", text)
     clauses = [_plain(c) for c in _outside_quotes(text, "; ")]
     text = "; ".join(re.sub(r"^\s*else\s+", "", c) for c in clauses if c.strip())
     text = _QUOTED.sub(lambda m: f"“{m.group(1)}”", text)
     text = re.sub(r" {2,}", " ", text)
-    return re.sub(r"\s+([,;:)]|\.(?!\.))", r"\1", text).strip(" ;,")
+    return _TIGHT.sub(r"\1", text).strip(" ;,")
 
 
 # the answer's keys whose strings a visitor reads

@@ -17,7 +17,12 @@ const state = {
 };
 // read by the browser tests: views shown, 3D loads asked, the last view and its diagnostics
 window.studio = { ready: false, idle: false, views: 0, sweeps: 0, sweep: null, glbs: 0, glbView: 0, view: null, state, errors: [],
-                  shownAt: {}, builtAt: {} };     // view number -> performance.now() of its 2D, its 3D
+                  shownAt: {}, builtAt: {},      // view number -> performance.now() of its 2D, its 3D
+                  // the page's benchmark (issue 104): view number -> where its time went, ms from
+                  // the change (a slider's move): waited (the page's debounce and pacing), sent,
+                  // answered (compile_ms of it in the worker, the rest transfer and queue), drawn
+                  // (the picture decoded and on screen), built (its 3D on screen)
+                  timeline: {} };
 
 // ------------------------------------------------------------------ requests
 // one request: an answer, or an Error with `retry` (seconds) when the studio is busy (429/503)
@@ -144,9 +149,16 @@ async function pace(cost = 1) {
   if (wait > 0) await new Promise((ok) => setTimeout(ok, wait));
 }
 window.studio.paceGap = paceGap;
+// the slots of the pace's burst free now (10: none spent)
+function paceRoom() {
+  const gap = paceGap();
+  return gap ? 10 - Math.max(0, (state.tat || 0) - performance.now()) / gap : 10;
+}
+window.studio.paceRoom = paceRoom;
 
 function schedule(delay = 200) {
   clearTimeout(state.timer);
+  if (!state.changedAt) state.changedAt = performance.now();     // (the benchmark's start)
   window.studio.idle = false;
   building2d(true);
   state.timer = setTimeout(() => { state.timer = null; compile(); }, delay);
@@ -180,13 +192,23 @@ async function compile() {
   try { await pace(); } catch (_) { /* never */ }
   const seq = ++state.seq;
   const t0 = performance.now();
+  const changedAt = state.changedAt || t0;
+  state.changedAt = 0;
   try {
     const source = state.source, raw = chosenRaw(), values = texts(raw), defaults = {};
     for (const p of state.params) if (p.name in raw) defaults[p.name] = p.default;
-    const view = await post("/api/view", { sid: state.sid, source, values, defaults });
+    // the shape checks (the warnings) are asked apart, once the picture is shown (/api/checks)
+    const view = await post("/api/view", { sid: state.sid, source, values, defaults, checks: "later" });
     if (seq !== state.seq || source !== state.source) { /* another program since: dropped */ }
     else if (view.superseded) state.again = true;
-    else if (answered(view, raw)) { state.shownSent = values; show(view, performance.now() - t0); }
+    else if (answered(view, raw)) {
+      state.shownSent = values;
+      const got = performance.now();
+      show(view, got - t0);
+      const t = view.timing || {};
+      window.studio.timeline[window.studio.views] = { changed: changedAt, waited: t0 - changedAt, sent: t0,
+        answered: got, compile_ms: t.worker_ms ?? t.total_ms ?? null, drawn: null, built: null };
+    }
     else state.again = true;        // the sliders moved on meanwhile: not their picture
   } catch (e) {
     window.studio.errors.push(String(e.message || e));
@@ -195,7 +217,7 @@ async function compile() {
   } finally {
     state.inflight = false;
     if (state.again) { state.again = false; compile(); }
-    else if (!state.timer) window.studio.idle = true;     // read by the tests: nothing pending
+    else if (!state.timer && !state.checking) window.studio.idle = true;     // read by the tests: nothing pending
   }
 }
 
@@ -216,15 +238,22 @@ function answered(view, raw) {
       const p = (view.params || state.params).find((q) => q.name === name);
       // a slider's end sent rounded (to 1e-6) and put back on it: no move to speak of
       const moved = !(typeof raw[name] === "number" && Math.abs(v - raw[name]) <= 1e-6 * Math.max(1, Math.abs(v)));
-      if (moved) typedNote(name, `${name} moved to ${fmt(v)}${p && p.unit ? " " + p.unit : ""}: its range follows the other values`);
+      if (moved) typedNote(name, `${name} moved to ${p ? onStep(p, v) : fmt(v)}${p && p.unit ? " " + p.unit : ""}: its range follows the other values`);
     }
   }
   if (view.params) state.params = view.params;
   return sameValues(chosenRaw(made), chosenRaw());
 }
 
+// a design's name as the header says it: divider_tray -> Divider tray
+function titleOf(name) {
+  const words = String(name).split("_").filter(Boolean);
+  return words.length ? [words[0][0].toUpperCase() + words[0].slice(1), ...words.slice(1)].join(" ") : String(name);
+}
+
 function show(view, ms) {
   state.view = view;
+  if (state.ownTitle && view.ok && view.title) $("title").textContent = titleOf(view.title);
   window.studio.view = view;
   const diags = view.diagnostics || [];
   const errors = diags.filter((d) => d.severity === "error").length;
@@ -246,13 +275,46 @@ function show(view, ms) {
   showDiagnostics(diags, view.error);
   window.studio.views += 1;
   window.studio.shownAt[window.studio.views] = performance.now();
-  if (view.ok) { building(true); if (!state.timer && !state.again) load3d(); askSweep(); }
+  if (view.ok) {
+    building(true);
+    if (!state.timer && !state.again) load3d();
+    if (view.checks === "pending") askChecks(view);
+    askSweep();
+  }
   else {          // the last good model, dimmed like the last good picture, and why
     state.glbSeq += 1;
     building(true);
     clearTimeout(state.buildingTimer);
     $("building3d").textContent = "the 3D waits for a program that checks";
     $("building3d").hidden = false;
+  }
+}
+
+// The shape checks of a picture (its warnings: a wall too thin, a hole that cuts nothing), asked
+// once it is shown (issue 104: they were 0.2 s of a planetary move's 0.5 s before its picture):
+// added to its messages when they come, if it is still the picture on the page
+async function askChecks(view) {
+  const source = state.source, values = view.values || {}, shown = view;
+  const me = state.checkSeq = (state.checkSeq || 0) + 1;
+  state.checking = true;
+  window.studio.idle = false;
+  try {
+    await pace();
+    if (state.view !== shown) return;           // another picture since: its own checks
+    const got = await post("/api/checks", { sid: state.sid, source, values });
+    if (state.view !== shown || source !== state.source || !got.ok) return;
+    shown.diagnostics = got.diagnostics || [];
+    delete shown.checks;
+    showDiagnostics(shown.diagnostics, shown.error);
+    const n = shown.diagnostics.length;
+    if (!shown.error && n) status(`${$("status").textContent.replace(/ · \d+ messages?$/, "")} · ${n} message${n > 1 ? "s" : ""}`);
+  } catch (e) {
+    window.studio.errors.push("checks: " + (e.message || e));
+  } finally {
+    if (me === state.checkSeq) {                // (a later picture's checks: theirs)
+      state.checking = false;
+      if (!state.inflight && !state.timer && !state.again) window.studio.idle = true;
+    }
   }
 }
 
@@ -385,7 +447,11 @@ $("flat").addEventListener("dblclick", (e) => { if (!e.target.closest(".pane-too
 $("flat-fit").onclick = flatFit;
 $("flat-zoom-in").onclick = () => flatZoom(1.5, $("flat").clientWidth / 2, $("flat").clientHeight / 2);
 $("flat-zoom-out").onclick = () => flatZoom(1 / 1.5, $("flat").clientWidth / 2, $("flat").clientHeight / 2);
-$("flat-img").addEventListener("load", () => { if (state.fitNext) { state.fitNext = false; flatFit(); } else flatLayout(); });
+$("flat-img").addEventListener("load", () => {
+  if (state.fitNext) { state.fitNext = false; flatFit(); } else flatLayout();
+  const t = window.studio.timeline[window.studio.views];
+  if (t && t.drawn === null) t.drawn = performance.now();
+});
 new ResizeObserver(() => flatLayout()).observe($("flat"));
 
 // ------------------------------------------------------------------ the customizer
@@ -393,7 +459,7 @@ function showParams(params) {
   // the form is built again only for other params (a new program); a range that follows other
   // params (its min or max depends on them) and the values are updated in place, so a slider
   // being dragged stays in hand
-  const key = JSON.stringify(params.map((p) => [p.name, p.kind, p.default]));
+  const key = JSON.stringify(params.map((p) => [p.name, p.kind, p.default, p.choices || null]));
   state.params = params;
   const form = $("params");
   if (key !== state.paramKey) {
@@ -467,11 +533,21 @@ function control(p) {
   row.appendChild(name);
   const line = document.createElement("div"); line.className = "line";
   row.appendChild(line);
-  const change = (v) => { state.values[p.name] = v; row.classList.toggle("changed", !same(v, p.default)); schedule(30); };
+  const change = (v) => { state.values[p.name] = v; row.classList.toggle("changed", !same(v, p.default)); downloadChanged(); schedule(30); };
   if (p.kind === "bool") {
     const cb = document.createElement("input"); cb.type = "checkbox"; cb.name = p.name; cb.id = id;
     cb.onchange = () => change(cb.checked);
     line.appendChild(cb);
+  } else if (p.kind === "string" && (p.choices || []).length) {
+    // a text param of a few values (the program compares it with them): a list, never a
+    // free-text field that takes `tight` and answers with the template's assertion
+    const sel = document.createElement("select"); sel.name = p.name; sel.id = id;
+    for (const c of p.choices) {
+      const o = document.createElement("option"); o.value = c; o.textContent = c;
+      sel.appendChild(o);
+    }
+    sel.onchange = () => change(sel.value);
+    line.appendChild(sel);
   } else if (p.kind === "string") {
     const t = document.createElement("input"); t.type = "text"; t.name = p.name; t.id = id;
     t.oninput = () => change(t.value);
@@ -498,7 +574,7 @@ function control(p) {
     };
     n.onkeydown = (e) => { if (e.key === "Enter") { e.preventDefault(); n.dispatchEvent(new Event("change")); } };
     const u = document.createElement("span"); u.className = "unit";
-    u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)})`;
+    u.textContent = `${p.unit || ""} (${onStep(p, p.min)}–${onStep(p, p.max)})`;
     // the track: the slider over the parts of its range the sweep did not find clean
     const track = document.createElement("span"); track.className = "track";
     for (const side of ["below", "above"]) {
@@ -519,14 +595,16 @@ function control(p) {
 
 function setControl(row, p, v) {
   const inputs = row.querySelectorAll("input");
+  const sel = row.querySelector("select");
   if (p.kind === "bool") inputs[0].checked = !!v;
+  else if (sel) sel.value = v;
   else if (p.kind === "string") inputs[0].value = v;
   else {
     inputs[0]._param = p;                   // its stops (a range may follow other params)
     if (String(inputs[0].min) !== String(p.min) || String(inputs[0].max) !== String(p.max)) {
       Object.assign(inputs[0], { min: p.min, max: p.max });
       const u = row.querySelector(".unit");
-      if (u) u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)})`;
+      if (u) u.textContent = `${p.unit || ""} (${onStep(p, p.min)}–${onStep(p, p.max)})`;
     }
     // a shown answer holds the sliders' values: the slider in hand is set to what it holds (or
     // to where its range moved it); a number being typed is left alone
@@ -546,14 +624,33 @@ function parseNumber(text) {
   if (!/^[-+]?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?$/i.test(t)) return NaN;
   return Number(t);
 }
+// a typed unit, converted to the param's own (display units: mm, deg): "150 mm", "15cm",
+// "2 in", "90°"; [the number's text, its factor, the unit typed] (factor undefined: a unit of
+// another kind, such as "40 deg" for a length)
+const UNITS = { length: { mm: 1, cm: 10, m: 1000, in: 25.4, inch: 25.4, inches: 25.4, '"': 25.4 },
+                angle: { deg: 1, "°": 1, rad: 180 / Math.PI } };
+function withUnit(p, text) {
+  const m = /^(.*?\d\.?)\s*(mm|cm|m|inch(?:es)?|in|"|deg|°|rad)$/i.exec(String(text).trim());
+  if (!m) return [text, 1, null];
+  return [m[1], (UNITS[p.kind] || {})[m[2].toLowerCase()], m[2]];
+}
+// a number as the slider of p shows it: to its step's decimals (14.52, not 14.520739)
+function onStep(p, x) {
+  if (x == null || !(p.step > 0)) return fmt(x);
+  const d = (String(fmt(p.step)).split(".")[1] || "").length;
+  return fmt(Number(Number(x).toFixed(Math.min(6, d))));
+}
 // the value a typed text gives the param p, and what the page says of it: [value, message]
 // (value null: nothing usable, the field goes back to the slider's value)
 function typedValue(p, text) {
   const unit = p.unit ? ` ${p.unit}` : "";
-  const x = parseNumber(text);
-  if (!Number.isFinite(x)) return [null, `“${String(text).trim()}” is not a number: ${p.name} stays at ${fmt(state.values[p.name] ?? p.value)}${unit}`];
-  if (x > p.max + 1e-9) return [p.max, `${fmt(p.max)}${unit} is the most: ${p.name} is ${fmt(p.max)}${unit}, not ${fmt(x)}`];
-  if (x < p.min - 1e-9) return [p.min, `${fmt(p.min)}${unit} is the least: ${p.name} is ${fmt(p.min)}${unit}, not ${fmt(x)}`];
+  const [digits, k, typedUnit] = withUnit(p, text);
+  const now = `${p.name} stays at ${onStep(p, state.values[p.name] ?? p.value)}${unit}`;
+  if (typedUnit && k === undefined) return [null, `“${String(text).trim()}” is not ${p.unit ? "in " + p.unit + " or another " + p.kind + " unit" : "a plain number"}: ${now}`];
+  const x = parseNumber(digits) * k;
+  if (!Number.isFinite(x)) return [null, `“${String(text).trim()}” is not a number: ${now}`];
+  if (x > p.max + 1e-9) return [p.max, `${onStep(p, p.max)}${unit} is the most: ${p.name} is ${onStep(p, p.max)}${unit}, not ${fmt(x)}${unit}`];
+  if (x < p.min - 1e-9) return [p.min, `${onStep(p, p.min)}${unit} is the least: ${p.name} is ${onStep(p, p.min)}${unit}, not ${fmt(x)}${unit}`];
   if (p.kind === "number" && p.step >= 1 && Number.isInteger(p.step) && Number.isInteger(p.min)) {
     const g = Math.min(p.max, p.min + Math.round((x - p.min) / p.step) * p.step);
     if (Math.abs(g - x) > 1e-9) return [g, `${p.name} is a whole number of steps of ${fmt(p.step)}: ${fmt(g)}, not ${fmt(x)}`];
@@ -577,7 +674,7 @@ function bindThickness() {
   if (!p) { $("thickness-note").textContent = ""; return; }
   const v = state.values[p.name] !== undefined ? state.values[p.name] : p.value;
   if (document.activeElement !== $("thickness")) $("thickness").value = fmt(v);
-  $("thickness").setAttribute("aria-label", `thickness, mm (${fmt(p.min)}–${fmt(p.max)}): the design's thickness param`);
+  $("thickness").setAttribute("aria-label", `thickness, mm (${onStep(p, p.min)}–${onStep(p, p.max)}): the design's thickness param`);
 }
 $("thickness").addEventListener("change", () => {
   const p = state.thicknessParam;
@@ -585,9 +682,11 @@ $("thickness").addEventListener("change", () => {
   const [v, said] = typedValue(p, $("thickness").value);
   typedNote(p.name, said);
   const row = $("params").querySelector(`[data-name="${CSS.escape(p.name)}"]`);
-  if (v === null) { bindThickness(); return; }
+  // text that is no thickness ("abc") is not kept on screen: the field shows the value used
+  if (v === null) { $("thickness").value = fmt(state.values[p.name] !== undefined ? state.values[p.name] : p.value); return; }
   $("thickness").value = fmt(v);
   state.values[p.name] = v;
+  downloadChanged();
   if (row) { setControl(row, p, v); row.classList.toggle("changed", !same(v, p.default)); }
   schedule(30);
 });
@@ -630,13 +729,25 @@ function sweepChanged(fresh) {
   if (fresh) { sw.answer = null; sw.source = null; sw.key = null; }
   markRanges();
 }
+// slots the sweep leaves in the burst: a release's picture and its 3D, twice (issue 104: a
+// sweep after each release spent the burst, and the next release's picture waited for the pace)
+const SWEEP_LEAVES = 4;
 async function runSweep() {
   // paced with the previews and 3D models: a minute of dragging sent a sweep at each pause,
   // unpaced, and 31 requests fell in one 5 s window of a limit of 30
   // the server counts a sweep as 2 of its rate (paced as 1, a drag met 429 once the sweep
   // worker answered at once)
+  const sw = state.sweep;
+  // the background's turn comes when the pictures have theirs: never while a picture is on
+  // its way, and never with the burst's last slots (what the visitor waits for)
+  const room = paceRoom();
+  if (state.inflight || state.timer || room < 2 + SWEEP_LEAVES) {
+    clearTimeout(sw.timer);
+    sw.timer = setTimeout(runSweep, Math.max(300, (2 + SWEEP_LEAVES - room) * paceGap()));
+    return;
+  }
   try { await pace(2); } catch (_) { /* never */ }
-  const sw = state.sweep, source = state.source, key = sweepKey(), values = { ...state.values };
+  const source = state.source, key = sweepKey(), values = { ...state.values };
   if (sw.ctrl) sw.ctrl.abort();
   const ctrl = sw.ctrl = new AbortController();
   sw.asked = key;
@@ -644,7 +755,7 @@ async function runSweep() {
   let r = null;
   try {
     r = await fetch("/api/sweep", { method: "POST", signal: ctrl.signal, headers: { "Content-Type": "application/json" },
-                                    body: JSON.stringify({ sid: state.sid, source, values }) });
+                                    body: JSON.stringify({ sid: state.sid, source, values: texts(chosenRaw(values)) }) });
   } catch (e) { r = null; }
   if (ctrl !== sw.ctrl || key !== sweepKey()) return;      // stopped, or another program or values
   sw.ctrl = null;
@@ -676,10 +787,14 @@ function markRanges() {
     const cut = (a.skipped ? `; ${a.skipped} planned values not checked in the time allowed` : "")
       + (open ? (a.skipped ? " (dotted: where a slider's edge was not narrowed down)"
         : "; dotted: not checked in the time allowed") : "");
+    // what was judged, said as a share of what was planned: "15 of 147 values checked", never
+    // "checks clean" of a range the time allowed only part of
+    const checked = a.skipped ? `${a.points} of ${a.points + a.skipped} values checked` : `${a.points} values checked`;
     sweepStatus(stale ? "the hatched parts are of the design before your change: checking again…"
       : !a.swept.length ? "" : (narrowed
-        ? `hatched: values at which the design breaks, each slider alone (${a.points} values checked)`
-        : `every slider's range checks clean alone (${a.points} values checked)`) + cut + together);
+        ? `hatched: values at which the design breaks, each slider alone (${checked})`
+        : a.skipped || open ? `no break found in the values checked, each slider alone (${checked})`
+          : `every slider's range checks clean alone (${checked})`) + cut + together);
   }
   for (const p of state.params) {
     const row = $("params").querySelector(`[data-name="${CSS.escape(p.name)}"]`);
@@ -724,9 +839,9 @@ function markRanges() {
     const counts = p.step >= 1 && !p.unit && bands.length > 1 && span / p.step <= 12
       ? Array.from({ length: Math.round(span / p.step) + 1 }, (_, k) => p.min + k * p.step)
         .filter((x) => !bandAt(q, x)) : null;
-    const clean = !bands.length && !((q && q.unjudged) || []).length ? "" : counts ? `, clean at ${counts.map(fmt).join(", ")}`
-      : !q.clean.length ? ", no clean value found" : `, clean ${fmt(q.clean[0])}–${fmt(q.clean[1])}`;
-    u.textContent = `${p.unit || ""} (${fmt(p.min)}–${fmt(p.max)}${clean})`;
+    const clean = !bands.length && !((q && q.unjudged) || []).length ? "" : counts ? `, clean at ${counts.map((x) => onStep(p, x)).join(", ")}`
+      : !q.clean.length ? ", no clean value found" : `, clean ${onStep(p, q.clean[0])}–${onStep(p, q.clean[1])}`;
+    u.textContent = `${p.unit || ""} (${onStep(p, p.min)}–${onStep(p, p.max)}${clean})`;
     r.title = [...bands, ...((q && q.unjudged) || [])].map((x) => x.text).join("\n");
     const v = state.values[p.name] !== undefined ? state.values[p.name] : p.value;
     pastNote(row, p.name, v);
@@ -747,7 +862,7 @@ function pastNote(row, name, v) {
   if (past) {
     const beside = (q.below && past.text === q.below.text) || (q.above && past.text === q.above.text);
     note.textContent = beside
-      ? `${fmt(v)}${unit} is outside the range the sweep found clean (${fmt(q.clean[0])}–${fmt(q.clean[1])}${unit}): ${past.text}`
+      ? `${onStep(p, v)}${unit} is outside the range the sweep found clean (${onStep(p, q.clean[0])}–${onStep(p, q.clean[1])}${unit}): ${past.text}`
       : !q.clean.length ? `${fmt(v)}${unit}: the design breaks at every value of this slider (the others where they are): ${past.text}`
         : `${fmt(v)}${unit} is in a part of the range where the design breaks, between clean values: ${past.text}`;
     r.setAttribute("aria-valuetext", beside ? `${fmt(v)}${unit}, outside the clean range: ${past.text}`
@@ -757,7 +872,7 @@ function pastNote(row, name, v) {
     r.setAttribute("aria-valuetext", `${fmt(v)}${unit}, not checked in the time allowed`);
   } else {
     note.textContent = ends.length && q.clean.length
-      ? `clean from ${fmt(q.clean[0])} to ${fmt(q.clean[1])}${unit}; ${ends.map((x) => x.text).join("; ")}` : "";
+      ? `clean from ${onStep(p, q.clean[0])} to ${onStep(p, q.clean[1])}${unit}; ${ends.map((x) => x.text).join("; ")}` : "";
     if (typeof v === "number") r.setAttribute("aria-valuetext", `${fmt(v)}${unit}`);
   }
 }
@@ -766,9 +881,12 @@ $("reset").onclick = () => { state.values = {}; state.paramKey = ""; schedule(0)
 
 // ------------------------------------------------------------------ 3D and downloads
 // a download's name: the design and the values changed from its own (divider_tray-rows_5-cols_2)
+// a pasted program's is its own title (the header's), an opened drawing's its file's name
+// without the extension (flange80-d_90, not flange80.dxf-d_90)
 function downloadName() {
   const slug = (t) => String(t).toLowerCase().replace(/[^a-z0-9.]+/g, "_").replace(/^_+|_+$/g, "");
-  const base = state.entry ? state.entry.replace(/^.*\//, "") : slug($("title").textContent) || "design";
+  const base = (state.entry ? state.entry.replace(/^.*\//, "")
+    : slug($("title").textContent).replace(/\.(dxf|svg|aidl)$/, "").replace(/\./g, "_")) || "design";
   const raw = chosenRaw();
   const parts = Object.keys(raw).sort().map((k) => {
     const v = raw[k];
@@ -828,6 +946,7 @@ async function load3d() {
     window.studio.glbs += 1;
     window.studio.glbView = shown;          // the view whose 3D is on the screen
     window.studio.builtAt[shown] = performance.now();
+    if (window.studio.timeline[shown]) window.studio.timeline[shown].built = window.studio.builtAt[shown];
     building(false);
     $("viewer3d").classList.remove("empty");
   } catch (e) {
@@ -858,11 +977,18 @@ function showDownloads() {
   }
 }
 
+// the line under the buttons names the last file made: cleared when a value changes (it named
+// the 3 mm STL after the thickness went to 6)
+function downloadChanged() { $("download-status").textContent = ""; }
+
 async function download(f) {
   $("download-status").textContent = `making ${f.ext.toUpperCase()}…`;
   try {
     const extra = f.cut ? {} : { layout: false, assembled: f.assembled };
     if (f.ext === "pdf" && $("page").value) extra.page = $("page").value;   // tiled 1:1 on paper
+    // the SVG is the cutting file (hairlines, cut and engrave layers, no sheet outline) unless
+    // the picture is chosen
+    if (f.ext === "svg") extra.style = $("svg-style").value || "laser";
     const { blob, name } = await fetchFile(f.ext, extra);
     const a = document.createElement("a");
     a.href = URL.createObjectURL(blob); a.download = name;
@@ -913,6 +1039,7 @@ $("gallery-search").oninput = () => {
 async function openEntry(id) {
   const e = await getJSON(`/api/gallery/${id}`);
   state.entry = id;
+  state.ownTitle = false;
   $("title").textContent = e.title;
   setProgram(e.source, {});
 }
@@ -1045,7 +1172,7 @@ function onEvent(ev, list) {
     $("describe-status").textContent = `round ${ev.n}…`;
   } else if (ev.type === "done") {
     $("describe-status").textContent = ev.message || (ev.ok ? "done" : "no program checked");
-    if (ev.code) { $("title").textContent = "Described part"; state.entry = null; setProgram(ev.code, {}); }
+    if (ev.code) { $("title").textContent = "Described part"; state.entry = null; state.ownTitle = true; setProgram(ev.code, {}); }
   } else if (ev.type === "error") {
     $("describe-status").textContent = ev.message;
   }
@@ -1105,8 +1232,9 @@ $("drawing-file").onchange = async () => {
   window.studio.uploaded = doc;
   if (doc.error || doc.import_error) { said.textContent = doc.error || `${doc.name} cannot be opened: ${doc.import_error}`; return; }
   $("drawing-dialog").close();
-  $("title").textContent = doc.name;
+  $("title").textContent = doc.name.replace(/\.(dxf|svg)$/i, "");
   state.entry = null;
+  state.ownTitle = false;
   setProgram(doc.program, {});
   $("upload-status").textContent = `opened ${doc.name} ${how === "infer" ? "as an editable design" : "as a drawing"}`
     + (doc.notes && doc.notes.length ? `; ${doc.notes.join("; ")}` : "");
@@ -1135,7 +1263,9 @@ async function start() {
   if (!EMBED) {
     editor = createEditor($("code"), { doc: "", hover, wrap: true, label: "the program",
       onChange: (text) => {
-        if (replaced(state.source, text)) newProgram();
+        // another program pasted over this one: its own title (the header and the
+        // downloads' names follow it, not the gallery design it replaced)
+        if (replaced(state.source, text)) { newProgram(); state.entry = null; state.ownTitle = true; }
         else sweepChanged(false);
         state.source = text; schedule(250);
       } });
