@@ -166,6 +166,7 @@ def test_countersinks_dxf_layer_stl_cone_describe_and_measure(tmp_path):
         "`plate.holes.c` at (-30, -15)" in out
 
 
+@pytest.mark.step
 def test_step_cuts_the_exact_cone_and_step(tmp_path):
     """STEP (the `step` extra): the cones a `CONICAL_SURFACE` each and the counterbores'
     steps exact; the file read back (OCP's STEP reader) has the volume of the plate less the

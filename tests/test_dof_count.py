@@ -600,12 +600,14 @@ def test_check_dof_spends_the_compile_budget_not_a_fresh_one(tmp_path, capsys, m
     from aidl_lang import pipeline
     from aidl_lang.cli.main import main
     made, given = [], {}
-    real_deadline = pipeline.Deadline
 
-    def recorded(at, budget):
-        made.append(at)
-        return real_deadline(at, budget)
-    monkeypatch.setattr(pipeline, "Deadline", recorded)
+    class Recorded(pipeline.Deadline):
+        @classmethod
+        def starting(cls, budget=pipeline.DEFAULT_BUDGET, work=None):
+            d = super().starting(budget, work)
+            made.append(d.at)            # the compile's backstop: what the count gets too
+            return d
+    monkeypatch.setattr(pipeline, "Deadline", Recorded)
     searched, dof = redundancy.search, freedom.degrees_of_freedom
 
     def red(solver, deadline=None, **kw):

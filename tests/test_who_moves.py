@@ -142,6 +142,8 @@ NOT_RELATING = {
     "CutInto": "places nothing", "Rigid": "places nothing", "AllowOverlap": "places nothing",
     "Fillet": "places nothing", "Chamfer": "places nothing",
     "Place": "3D placement", "Bend": "3D placement",
+    # issue 102: a hole's head (countersink, counterbore) is a machining note on one hole
+    "Countersink": "places nothing", "Counterbore": "places nothing",
     # issue 95's transforms: one target each (a copy reached as a feature, or the thing itself
     # changed in place), nothing related to another structure
     "Scaled": "one target: its copy is reached as a feature",

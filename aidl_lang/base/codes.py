@@ -256,7 +256,7 @@ one list (and 64 000 000 characters in all the strings a compile builds), and 2 
 units for the whole compile (each stage pays for what it walks before it walks it: steps,
 objects, Newton steps, vertices, pairs, segments; about 15 s of the reference machine, and the
 same count on every machine at any load, so the same program gets the same answer, the same
-message and the same output everywhere: docs/language.md §8.1). CPU time is only a backstop,
+message and the same output everywhere). CPU time is only a backstop,
 at 6 times 15 s, and its message says so; wall time an outer guard, at 10 times 15 s, for a
 machine that gives the compile less than a tenth of a core. Each construct's own limit
 (E0301, E0302, E0303) stops one loop or template that is too large by itself; the budget stops

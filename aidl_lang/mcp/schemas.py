@@ -58,12 +58,6 @@ class Solve(TypedDict):
     max_residual: float
 
 
-class Work(TypedDict):
-    """Work units spent, of the budget (the same on any machine)."""
-    spent: int
-    budget: int
-
-
 class StructureFreedom(TypedDict):
     structure: str
     unknowns: int
@@ -128,7 +122,7 @@ class _Compiled(TypedDict):
     diagnostics: NotRequired[list[Diagnostic]]
     units: Annotated[str, Field(description="the file's length unit (mm when it names none)")]
     solve: NotRequired[Solve]
-    work: NotRequired[Work]
+    work: NotRequired[dict]
     summary: NotRequired[Annotated[str, Field(description="with errors: one line per error")]]
 
 
@@ -274,7 +268,7 @@ class ImportResult(TypedDict):
     notes: NotRequired[list[ImportNote]]
     output: NotRequired[Annotated[str, Field(description="the .aidl file written")]]
     superseded: NotRequired[str]
-    work: NotRequired[Work]
+    work: NotRequired[dict]
     check: NotRequired[ImportCheck]
     diagnostics: NotRequired[list[ImportProblem]]
     error: NotRequired[Error]
