@@ -43,14 +43,14 @@ def test_a_deadline_counts_work_not_the_time_the_process_waits_or_spins():
     assert d.work.spent == 60_001 and d.work.by_stage == {"the booleans": 60_001}
 
 
-def test_the_cpu_backstop_and_the_wall_guard_say_what_they_are():
-    before = time.monotonic()
+def test_the_cpu_backstop_and_the_wall_guard_say_what_they_are(monkeypatch):
+    # the clocks stood still at known values: the guards' places are what is asserted
+    monkeypatch.setattr(limits.time, "monotonic", lambda: 1000.0)
+    monkeypatch.setattr(limits, "now", lambda: 50.0)
     d = Deadline.starting(Budget(seconds=2.0))
-    after = time.monotonic()
-    # the wall guard: ten times the budget's seconds
-    assert before + limits.WALL_GUARD * 2.0 <= d.wall_at <= after + limits.WALL_GUARD * 2.0
-    # the CPU backstop: BACKSTOP times them, on the scaled clock
-    assert d.at - limits.now() <= limits.BACKSTOP * 2.0
+    assert d.wall_at == 1000.0 + limits.WALL_GUARD * 2.0     # the wall guard: 10 x 2 s
+    assert d.at == 50.0 + limits.BACKSTOP * 2.0              # the CPU backstop: 6 x 2 s
+    monkeypatch.undo()
     d.at = limits.now() - 1e-3
     with pytest.raises(OutOfBudget) as e:
         d.check("the shape checks")

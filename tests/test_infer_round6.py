@@ -16,22 +16,7 @@ import ezdxf
 import pytest
 
 import aidl_lang
-from aidl_lang.drawing.infer import import_drawing
-
-
-def _doc(w: float, h: float):
-    doc = ezdxf.new("R2010")
-    doc.units = 4
-    m = doc.modelspace()
-    m.add_lwpolyline([(0, 0), (w, 0), (w, h), (0, h)], close=True)
-    return doc, m
-
-
-def _text(doc) -> str:
-    s = io.StringIO()
-    doc.write(s)
-    text, _ = import_drawing(s.getvalue().encode(), "p.dxf", infer=True)
-    return text
+from test_infer_round5 import _doc, _text  # a plate drawn with ezdxf; its import (--infer)
 
 
 def _holes(text: str, tmp_path, **edit) -> list:
