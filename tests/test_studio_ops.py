@@ -128,15 +128,17 @@ def _two_studios_one_redis(url, redis_proc, tmp_path):
         apps = [create_app(Settings(data=str(tmp_path / n), compilers=1, store=url1,
                                     rate="5/minute")) for n in "cd"]
         with TestClient(apps[0]) as c, TestClient(apps[1]) as d:
-            codes = [x.get("/api/docs?name=Circle").status_code for x in (c, d, c, d, c)]
+            # (what compiles or opens a session pays; browsing, /api/docs, costs none: issue 104)
+            codes = [x.post("/api/session").status_code for x in (c, d, c, d, c)]
             assert codes == [200] * 5
-            r = d.get("/api/docs?name=Circle")
+            assert d.get("/api/docs?name=Circle").status_code == 200
+            r = d.post("/api/session")
             assert r.status_code == 429 and int(r.headers["Retry-After"]) >= 1
             m = metrics(d)
             assert m[("aidl_studio_rate_limited_total", ())] == 1
             for status, n in (("429", 1), ("200", 2)):
                 assert m[("aidl_studio_requests_total", (
-                    ("method", "GET"), ("route", "/api/docs"), ("status", status)))] == n
+                    ("method", "POST"), ("route", "/api/session"), ("status", status)))] == n
 
         # Redis gone: not ready, and a request is a 503 to retry, not a traceback
         redis_proc.kill()
