@@ -19,7 +19,8 @@ class ScaleRefused(ValueError):
 
 
 # data of a shape that are lengths (mm), scaled with it
-_LENGTHS = ("corner_radius", "distance", "thickness", "width", "size", "weight", "bridge")
+_LENGTHS = ("corner_radius", "distance", "thickness", "width", "size", "weight", "bridge",
+            "max_width")
 
 
 def scaled_data(g, k: float) -> None:
@@ -38,6 +39,11 @@ def scaled_data(g, k: float) -> None:
         d["corner_radii"] = [r * k for r in d["corner_radii"]]
     if "dims" in d:
         d["dims"] = {n: v * k for n, v in d["dims"].items()}
+    if "tip" in d:              # a Star's rounded tips: (the tip arc's centre from the star's
+        dc, half = d["tip"]     # centre, mm; the arc's half sweep, radians: kept)
+        d["tip"] = (dc * k, half)
+    if "shrunk" in d:           # a Text shrunk to its max_width: (size asked, width at it)
+        d["shrunk"] = tuple(v * k for v in d["shrunk"])
     if "extent" in d:
         d["extent"] = tuple(v * k for v in d["extent"])
     d.pop("box", None)

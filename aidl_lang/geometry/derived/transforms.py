@@ -74,6 +74,8 @@ def _one(ctx, kind, args, target, name, i: int, indexed: bool):
     cloners: list = []
     out = _copy(ctx, target, xf, 0.0, False, name, i, what, indexed=indexed, scale=scale,
                 cloners=cloners)
+    if in_place:
+        _carry_derived(target, cloners[0])
     if in_place and op == "Scaled":
         _carry_relations(ctx, target, cloners[0])
         made = out.struct if isinstance(out, StructRef) else out.geom
@@ -105,14 +107,47 @@ def _own_centre(ctx, target) -> PV:
     bounding box's centre as written (the starting values), in the frame of the structure
     the call is written in (a structure's box: its drawn shapes and children, holes
     included; construction geometry only when it is all there is).  The origin when it
-    holds no geometry."""
+    holds no geometry.  The centre moves with the structure that holds the thing (its own
+    frame, for a structure): where the solve moves that structure, the scaled copy moves
+    with it, rigidly (``Scale(small.outline, 0.6)`` in an assembly that places ``small``
+    by ``RightOf``: before, the centre stayed where ``small`` was written, the copy moved
+    0.6 mm for each mm ``small`` moved, and its neighbour was pulled along)."""
+    from ..core.expr import evaluate
     from ..relations.bbox import numeric_box
     what = target.struct if isinstance(target, StructRef) else target.geom
     box = numeric_box(what, ctx.struct, ctx.model.x)
     if box is None:
         return PV(_lin({}, 0.0), _lin({}, 0.0))
     x0, x1, y0, y1 = box
-    return PV(_lin({}, (x0 + x1) / 2), _lin({}, (y0 + y1) / 2))
+    holder = target.struct if isinstance(target, StructRef) else target.geom.owner
+    if holder is ctx.struct or not holder.is_within(ctx.struct):
+        return PV(_lin({}, (x0 + x1) / 2), _lin({}, (y0 + y1) / 2))
+    fx, fy = holder.frame_offset(ctx.struct)
+    x = ctx.model.x
+    return PV(_lin(fx.terms, (x0 + x1) / 2 - evaluate(fx, x)),
+              _lin(fy.terms, (y0 + y1) / 2 - evaluate(fy, x)))
+
+
+def _carry_derived(target, cl) -> None:
+    """``Scale`` or ``Translate`` in place: the shapes made from the thing before the change,
+    outside it (``wall = Shell(outline, 2.5)`` before ``Scale(small.outline, 0.6)``; an
+    ``Offset`` or ``Hull`` of it in a structure above), are made from the changed copy from
+    then on, as every later statement is: the wall follows its outline.  (Before: the wall
+    kept the original's size and place, and the Scale changed nothing drawn, silently; the
+    fresh models' run data/model_runs/issue105b, request 10.)"""
+    if isinstance(target, StructRef):
+        inside = set(target.struct.subtree())
+        s = target.struct.parent
+    else:
+        inside = set()
+        s = target.geom.owner
+    made = set(map(id, cl.geoms.values()))
+    while s is not None:
+        for g in s.geometry:
+            src = g.data.get("sources")
+            if src and id(g) not in made and g.owner not in inside:
+                g.data["sources"] = [cl.geoms.get(q, q) for q in src]
+        s = s.parent
 
 
 def _carry_relations(ctx, target, cl) -> None:

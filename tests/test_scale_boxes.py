@@ -1,0 +1,96 @@
+"""``Scale`` in place carries the relations that place a shape (issue 105): the box those
+relations see on the scaled copy must be the box of the outline drawn, for every kind of
+shape, whatever lengths it keeps beside its points (a Star's rounded tips, a rounded corner's
+radii, an ArcSlot's width).  The fresh models' run data/model_runs/issue105b (request 10)
+found a rounded star scaled to 0.6 placed 18.94 mm from its neighbour instead of 8: its copy
+kept the full-size tip's distance from the centre, so its box was the wrong one.
+
+Each case: a 10 mm square fixed at the origin, and a part of one shape written over it,
+scaled, then placed ``RightOf`` the square with a gap of 8 mm and centred on it in y; the
+drawn parts (Manifold's outlines, the part's box) must stand 8 mm apart and centred."""
+from __future__ import annotations
+
+import pytest
+
+import aidl_lang
+
+SHAPES = {
+    "rounded star": "Star(center=(3, 2), points=5, outer_radius=40, inner_radius=17, "
+                    "tip_radius=4)",
+    "sharp star": "Star(center=(3, 2), points=5, outer_radius=40, inner_radius=17)",
+    "rounded rectangle": "RoundedRectangle(center=(0, 5), width=40, height=30, "
+                         "corner_radius=6)",
+    "corner radii": "RoundedRectangle(center=(0, 5), width=40, height=30, "
+                    "corner_radii=[8, 2, 0, 5])",
+    "slot": "Slot(center=(0, 0), length=30, width=8, rotation=30 deg)",
+    "arc slot": "ArcSlot(center=(0, 0), radius=20, start_angle=10 deg, end_angle=120 deg, "
+                "width=6)",
+    "ellipse": "Ellipse(center=(2, 0), rx=20, ry=10, rotation=30 deg)",
+    "hexagon": "RegularPolygon(center=(0, 0), radius=15, sides=6, rotation=10 deg)",
+    "sector": "Sector(center=(0, 0), radius=20, start_angle=0 deg, end_angle=100 deg)",
+    "closed spline": "Spline([(0, 0), (20, 5), (25, 25), (5, 20)], closed=true)",
+}
+
+PROGRAM = """units mm
+def ref_part() -> solid {{
+    sq = Rectangle(center=(0, 0), width=10, height=10)
+}}
+def thing() -> solid {{
+    s = {shape}
+}}
+assembly a {{
+    r = ref_part()
+    t = thing()
+    Fixed(r.sq)
+    RightOf(t, r, gap=8)
+    AlignCenterY(t, r)
+    Scale(t, {k})
+}}
+"""
+
+
+@pytest.mark.parametrize("k", [0.6, 1.7])
+@pytest.mark.parametrize("kind", sorted(SHAPES))
+def test_a_scaled_shape_is_placed_by_its_drawn_box(kind, k):
+    res = aidl_lang.compile(source=PROGRAM.format(shape=SHAPES[kind], k=k), path="scale.aidl")
+    assert res.ok, [d.message for d in res.diagnostics]
+    boxes = {p.name.split(".")[-1]: p.bbox for p in res.parts}
+    x0, y0, x1, y1 = boxes["t"]
+    assert boxes["r"] == pytest.approx((-5, -5, 5, 5), abs=1e-9)
+    assert x0 - 5 == pytest.approx(8, abs=1e-6), (kind, boxes["t"])
+    assert (y0 + y1) / 2 == pytest.approx(0, abs=1e-6), (kind, boxes["t"])
+
+
+STAR_CUTTERS = """units mm
+def star_cutter() -> solid {
+    outline = Star(center=(0, 0), points=5, outer_radius=40, inner_radius=17,
+                   tip_radius=4, construction=true)
+    wall = Shell(outline, 2.5)
+}
+assembly cutters {
+    large = star_cutter()
+    small = star_cutter()
+    RightOf(small, large, gap=8)
+    AlignCenterY(small, large)
+    Scale(%s, 0.6)
+}
+"""
+
+
+@pytest.mark.parametrize("what", ["small", "small.outline"])
+def test_the_models_star_cutters_stand_8_mm_apart_and_the_large_one_stays_where_written(what):
+    """Request 10 of data/model_runs/issue105b: the small cutter scaled (the whole, or the
+    outline its wall is a Shell of) stands 8 mm right of the large one, centred on it; the
+    large one, which nothing moves, stays where written (its star centred on the origin).
+    Scaling the outline scales the wall made from it (before: the wall kept its size and the
+    Scale drew nothing), its 2.5 mm thickness kept."""
+    res = aidl_lang.compile(source=STAR_CUTTERS % what, path="cutters.aidl")
+    assert res.ok, [d.message for d in res.diagnostics]
+    boxes = {p.name.split(".")[-1]: p.bbox for p in res.parts}
+    lx0, ly0, lx1, ly1 = boxes["large"]
+    sx0, sy0, sx1, sy1 = boxes["small"]
+    assert (lx0, lx1) == pytest.approx((-33.85, 33.85), abs=1e-3)       # where written
+    assert sx0 - lx1 == pytest.approx(8, abs=1e-6)
+    assert (sy0 + sy1) / 2 == pytest.approx((ly0 + ly1) / 2, abs=1e-6)
+    wide = 0.6 * (lx1 - lx0) if what == "small" else 0.6 * (lx1 - lx0 - 5) + 5
+    assert sx1 - sx0 == pytest.approx(wide, abs=1e-6)
