@@ -94,3 +94,20 @@ def test_the_models_star_cutters_stand_8_mm_apart_and_the_large_one_stays_where_
     assert (sy0 + sy1) / 2 == pytest.approx((ly0 + ly1) / 2, abs=1e-6)
     wide = 0.6 * (lx1 - lx0) if what == "small" else 0.6 * (lx1 - lx0 - 5) + 5
     assert sx1 - sx0 == pytest.approx(wide, abs=1e-6)
+
+
+def test_e0109_names_each_side_and_a_bare_number_in_a_ratio():
+    """Request 13 of data/model_runs/issue105b: `(bridge + 6) / 2 / r * 1 rad` with `r` from
+    a list of bare numbers was "cannot combine a angle with a length", naming neither side.
+    Now each side is quoted with its unit kind, and the hint says why the ratio is a length."""
+    src = ("units mm\nparam bridge = 4 mm\nradii = [15, 25]\nsolid s {\n"
+           "    c = Circle(center=(0, 0), radius=30)\n    for r in radii {\n"
+           "        a = ArcSlot(center=(0, 0), radius=r, start_angle=45 deg + (bridge + 6) / 2 / r"
+           " * 1 rad, end_angle=135 deg, width=3)\n    }\n}\n")
+    res = aidl_lang.compile(source=src, path="fan.aidl")
+    [d] = [d for d in res.diagnostics if d.code == "E0109"]
+    assert d.message == ("cannot combine an angle with a length: `45 deg` is an angle, "
+                         "`(bridge + 6) / 2 / r * 1 rad` is a length")
+    assert "`length / r` is a length, not a ratio: write `15 mm`" in d.hint
+    fixed = aidl_lang.compile(source=src.replace("[15, 25]", "[15 mm, 25 mm]"), path="fan.aidl")
+    assert fixed.ok, [d.message for d in fixed.diagnostics]

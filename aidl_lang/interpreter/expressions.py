@@ -332,7 +332,7 @@ class Expressions:
                 if res is None:
                     raise EvalError("E0108", f"cannot order {type_name(l)} and {type_name(r)}", e.span)
             else:
-                a, b, _ = self._unify(self._q(l, e.span), self._q(r, e.span), e.span)
+                a, b, _ = self._unify(self._q(l, e.span), self._q(r, e.span), e.span, e)
                 ca, cb = as_const(a), as_const(b)
                 if ca is None or cb is None:
                     raise EvalError("E0118", "a condition cannot depend on geometry the solver moves",
@@ -476,7 +476,7 @@ class Expressions:
             if op == "/" and re_.const != 0.0:
                 return Q(_lin({}, (1.0 / re_.const) * le.const), mul_dim(l.dim, r.dim, -1), own)
         if op in ("+", "-"):
-            a, b, d = self._unify(l, r, e.span)
+            a, b, d = self._unify(l, r, e.span, e)
             return Q(a + b if op == "+" else a - b, d, own)
         if op == "*":
             return Q(lift(l.expr) * r.expr, mul_dim(l.dim, r.dim), own)

@@ -894,12 +894,24 @@ class Statements:
             return [Equation(re_ - le, True)]
         return [Equation(le - re_, True)]
 
-    def _unify(self, a: Q, b: Q, span):
+    def _unify(self, a: Q, b: Q, span, node=None):
+        """``unify_add`` of two operands, or a located E0109 that names each side and its
+        unit kind (``node``: the ``BinOp``, whose sides' texts it quotes)."""
         try:
             return unify_add(a, b, self.unit_scale, DEG)
         except UnitError as ex:
-            raise EvalError("E0109", str(ex), span,
-                            hint="both sides must have the same unit kind (length, angle or number)")
+            msg, hint = str(ex), "both sides must have the same unit kind (length, angle or number)"
+            left, right = (getattr(node, "left", None), getattr(node, "right", None))
+            if left is not None and right is not None:
+                lt, rt = _src(self.sink, left.span), _src(self.sink, right.span)
+                if lt and rt and len(lt) + len(rt) < 160:
+                    msg = (f"cannot combine {_a(dim_name(a.dim))} with {_a(dim_name(b.dim))}: "
+                           f"`{lt}` is {_a(dim_name(a.dim))}, `{rt}` is {_a(dim_name(b.dim))}")
+                if "/" in lt + rt:        # a ratio that was meant to be a plain number
+                    hint += ("; in `*` and `/` a bare number (`r = 15`, a list `[15, 25]`) "
+                             "stays a plain number, so `length / r` is a length, not a ratio: "
+                             "write `15 mm` where a length is meant")
+            raise EvalError("E0109", msg, span, hint=hint)
 
     # ------------------------------------------------------------------ calls
 

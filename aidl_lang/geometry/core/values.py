@@ -236,7 +236,8 @@ def unify_add(a: Q, b: Q, scale: float, deg: float) -> tuple[Expr, Expr, tuple]:
         return lift(a.expr) * _coef(b.dim, scale, angle_scale(a, deg)), b.expr, b.dim
     if b.dim == NUM:
         return a.expr, lift(b.expr) * _coef(a.dim, scale, angle_scale(b, deg)), a.dim
-    raise UnitError(f"cannot combine a {dim_name(a.dim)} with a {dim_name(b.dim)}")
+    an = {n: ("an " if n[:1] in "aeiou" else "a ") + n for n in (dim_name(a.dim), dim_name(b.dim))}
+    raise UnitError(f"cannot combine {an[dim_name(a.dim)]} with {an[dim_name(b.dim)]}")
 
 
 def _coef(dim: tuple, scale: float, deg: float) -> float:
