@@ -27,6 +27,10 @@ from .output.part.build.booleans import Drawing, render_model
 from .output.checks import check_drawing, check_stray_holes, check_topology, topology
 from .output.checks.boxes import check_final_boxes
 from .solver import SolveResult, solve
+
+# the shape findings said as notes, not warnings: a design may mean them (W0410: a Fillet of
+# the whole outline that rounds a narrow hole's ends)
+NOTE_CODES = frozenset({"W0410"})
 from .typecheck import check
 
 
@@ -340,8 +344,9 @@ def after_solve(sink: DiagnosticSink, model: Model, min_wall: float | None = Non
                     drawing = render_model(model, deadline)
                 for g, message, hint, *code in drawing.shape_errors:
                     code = code[0] if code else "E0406"     # (a W code: a warning, W0406)
-                    sink.add(Diagnostic(code, message, g.span,
-                                        "warning" if code[0] == "W" else "error", hint=hint),
+                    severity = ("note" if code in NOTE_CODES else
+                                "warning" if code[0] == "W" else "error")
+                    sink.add(Diagnostic(code, message, g.span, severity, hint=hint),
                              calls=instance_calls(g.owner))
                 check_final_boxes(sink, model, drawing, instance_calls)
                 check_stray_holes(sink, drawing, deadline)

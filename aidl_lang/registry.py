@@ -482,9 +482,10 @@ _DEFS = {
     "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],
                  [A("a", "any"), A("b", "any"), A("radius", "length")],
                  cat="operation",
-                 doc="Round every corner of this solid's (or hole's) final outline, or only "
-                     "the corners at: a point, [edge1, edge2] (where they meet or cross; also "
-                     "Fillet(edge1, edge2, radius)), a shape's corners, or a list of these."),
+                 doc="Round every corner of this solid's (or hole's) final outline, holes "
+                     "included, or only the corners at: a point, [edge1, edge2] (where they "
+                     "meet or cross), a shape's corners (`Fillet(plate, 4)`), or a list of "
+                     "these."),
     "Chamfer": _c([A("distance", "length")], [A("at", "any"), A("distance", "length")],
                   [A("a", "any"), A("b", "any"), A("distance", "length")],
                   cat="operation",

@@ -668,6 +668,15 @@ def test_constraint_on_constructor_held_sizes_names_them(compile_text):
         (4, "`radius` is held at 2 in by this constructor")]
 
 
+def test_a_whole_outline_fillet_rounding_a_narrow_slot_is_a_note_W0410(compile_text):
+    c = compile_text("solid b {\n    p = Rectangle(center=(0, 0), width=100, height=60)\n"
+                     "    Fillet(4)\n    hole t { s = Rectangle(center=(0, -20), width=40, "
+                     "height=4.2) }\n}\n")
+    (d,) = [d for d in c.sink.items if d.code == "W0410"]
+    assert d.severity == "note" and not c.sink.has_errors and span4(d)[:2] == (3, 5)
+    assert "4.2 mm across: only 2.1 mm fits" in d.message and "`Fillet(p, 4)`" in d.hint
+
+
 def test_text_shrunk_to_max_width_is_a_note_W0113(compile_text):
     c = compile_text('drawing d { t = Text("ROSEMARY", position=(0, 0), size=10, '
                      'max_width=60) }\n')

@@ -501,12 +501,26 @@ warning points at the call, names the corner and gives the size it got; ask for 
 or make the edges beside the corner longer. Also a `Fillet(radius)` (or `Chamfer(distance)`)
 of the whole outline that finds no corner to round (no outside corner to cut): an outline of
 circles and smooth joins only. (A whole-outline fillet that shrinks at a short piece is said
-nowhere: rounding every corner up to the radius is what it is for.)
+nowhere: rounding every corner up to the radius is what it is for, except at a hole: W0410.)
 
     solid s {
         stem = Rectangle(center=(0, 0), width=10, height=60)
         arm = Rectangle(center=(20, -25), width=50, height=10)
         Fillet([stem.right, arm.top], 30)    # 20 mm: arm.top's 40 mm piece, half each corner
+    }
+"""),
+    "W0410": ("whole-outline Fillet rounds a narrow hole's ends", """
+A note, not a warning: a `Fillet(radius)` (or `Chamfer(distance)`) without `at` rounds every
+corner of the part's final outline, the holes cut into it included, and a hole narrower than
+two radii can take only half its width at each corner: a 4.2 mm slot under `Fillet(4)` gets
+its ends rounded by 2.1 mm, and a square tab no longer fits it. The note names the hole (its
+centre and least width) and the size that fitted. Nothing to change when round ends are meant;
+to round the part's own outline alone, name its shape, `Fillet(plate, 4)`:
+
+    solid bracket {
+        plate = Rectangle(center=(0, 0), width=100, height=60)
+        Fillet(4)                  # also the slot's four corners: W0410
+        hole tab { s = Rectangle(center=(0, -20), width=40, height=4.2) }
     }
 """),
     "W0501": ("hole refilled by another solid", """
@@ -1103,8 +1117,10 @@ under its caret.
     "W0113": ("text shrunk to fit its max_width", """
 A `Text(..., max_width=w)` whose text is wider than `w` along its baseline at its `size` is
 drawn at the size at which it is exactly `w` wide (a note, not a warning: the program asked for
-it). The note gives the size asked, the width it had and the size drawn; give that size (or
-less) to draw it without the note, or a wider `max_width`. A stencil's width counts its stroke
+it). The note gives the size asked, the width it had and the size drawn. Nothing to change
+when fitting is meant: the size follows `max_width` and the text whenever they change (a hard
+size would not); for a set size instead, give that size (or less) without `max_width`, or a
+wider `max_width`. A stencil's width counts its stroke
 `weight`; along a curve the width is its length along the curve.
 
     drawing label {

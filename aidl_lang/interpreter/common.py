@@ -215,8 +215,9 @@ def said_shrunk(sink, g, span) -> None:
     sink.add(Diagnostic(
         "W0113", f"the text \"{shown}\" at size {asked:.4g} mm is {wide:.4g} mm wide, more "
         f"than its max_width {m:.4g} mm: drawn at size {fit:.4g} mm, {m:.4g} mm wide", span,
-        "note", hint=f"give `size={math.floor(fit * 100) / 100:g}` (or less) to draw it at "
-                     "that size without this note, a wider max_width, or a shorter text"))
+        "note", hint="nothing to change when fitting the width is meant: the size follows "
+                     "max_width (and the text) whenever they change; for a set size instead, "
+                     f"`size={math.floor(fit * 100) / 100:g}` without max_width"))
 
 
 def _defer_boxes(c) -> None:

@@ -123,16 +123,68 @@ def finish(s: Structure, loops: list, x=None, check=None, said=None) -> list:
                 meet, why[i] = c.targets()
                 pts += [(p, i) for p in meet]
         got = {}                  # index into pts -> the size that corner got (0: none)
-        done = []
+        done, narrow = [], []
         for lp in loops:
             if check is not None:
                 check()
+            mine: dict = {}
             done.append(corners(lp, r, kind == "Fillet",
-                                None if pts is None else [p for p, _ in pts], got))
+                                None if pts is None else [p for p, _ in pts], mine))
+            for j, v in mine.items():
+                got[j] = min(v, got.get(j, v))
+            if pts is None and lp.is_hole and 0 < mine.get(-1, r) < r * (1 - SHRUNK):
+                narrow.append((lp, mine[-1]))
         if said is not None:
             said += report(kind, r, call, chosen, why, pts, got, loops)
+            if narrow:
+                body = next((g.name for g in s.geometry if g.closed and g.name
+                             and not g.construction), None)
+                said += _narrow_holes(kind, r, call, narrow, body)
         loops = done
     return loops
+
+
+def _narrow_holes(kind: str, r: float, call, narrow: list, body: str | None) -> list:
+    """The note W0410 for each hole of the outline that a ``Fillet``/``Chamfer`` of the
+    whole outline (no ``at``) could round only with less than its size, because the hole is
+    narrower than two of it: its ends come out round (a 4.2 mm slot under ``Fillet(4)``),
+    which a reader of ``Fillet(4)`` written beside the plate did not expect (the fresh
+    models' run data/model_runs/issue105b, request 8: a tab slot that no tab fits).
+    ``narrow``: [(the hole's loop, the least size its corners got)]; ``body``: the name of
+    the structure's own outline shape, for the hint (None: said in words)."""
+    out = []
+    what = "radius" if kind == "Fillet" else "distance"
+    path = getattr(getattr(call, "owner", None), "path", "") or "?"
+    for lp, least in narrow[:3]:
+        xy = lp.points()
+        x0, y0 = xy.min(axis=0)
+        x1, y1 = xy.max(axis=0)
+        across = _width(xy)
+        verb = "rounds" if kind == "Fillet" else "cuts"
+        out.append((call, "W0410", -2 - len(out),
+                    f"`{kind}` ({what} {r:.6g} mm) of the whole outline of `{path}` also "
+                    f"{verb} the corners of the hole at ({(x0 + x1) / 2:.6g}, "
+                    f"{(y0 + y1) / 2:.6g}) mm, {across:.6g} mm across: only {least:.6g} mm "
+                    f"fits, so its ends come out {'round' if kind == 'Fillet' else 'pointed'}",
+                    f"nothing to change if that is meant; to {verb[:-1]} the outside alone, "
+                    + (f"name it: `{kind}({body}, {r:.6g})`" if body else
+                       f"name the outline shape: `{kind}(SHAPE, {r:.6g})`")))
+    return out
+
+
+def _width(xy) -> float:
+    """The least width of a polygon's points ``xy`` (N x 2) across any of its edges'
+    directions (rotating calipers: the least width of a convex outline is across one of its
+    edges; a slot's short side)."""
+    import numpy as np
+    d = np.roll(xy, -1, axis=0) - xy
+    n = np.hypot(d[:, 0], d[:, 1])
+    keep = n > 1e-9
+    if not keep.any():
+        return 0.0
+    u = d[keep] / n[keep, None]
+    proj = xy @ np.stack([-u[:, 1], u[:, 0]])           # N x E: across each edge
+    return float((proj.max(axis=0) - proj.min(axis=0)).min())
 
 
 def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
