@@ -102,10 +102,11 @@ def test_the_interpreter_stops_at_the_budgets_work_when_each_count_is_out_of_rea
 
 
 @pytest.mark.timing
-def test_a_20000_hole_panel_checks_ok_beside_a_cpu_hog_on_every_core(tmp_path):
+def test_a_20000_hole_panel_checks_ok_at_the_default_budget(tmp_path):
     """The issue's done-when: the panel (4 s of CPU on a quiet machine) checks ``ok`` at the
-    default budget with every core busy (here one busy loop per core of the test's own, and in
-    CI's second run two more)."""
+    default budget, which counts work, not seconds: CI's step 2 runs this beside a busy loop
+    on every core, and step 1b with ``AIDL_CPU_SCALE=3`` (a busy loop of the test's own cost
+    the other pytest worker its core for 16 s, for nothing those runs do not show)."""
     sys.path.insert(0, ROOT)
     try:
         from benchmarks.checks.perforated import panel_aidl
@@ -113,14 +114,7 @@ def test_a_20000_hole_panel_checks_ok_beside_a_cpu_hog_on_every_core(tmp_path):
         sys.path.remove(ROOT)
     prog = tmp_path / "panel.aidl"
     prog.write_text(panel_aidl(200, 100))          # 20,000 holes of r 2 mm on a 10 mm pitch
-    hogs = [subprocess.Popen([sys.executable, "-c", "while True: pass"])
-            for _ in range(os.cpu_count() or 1)]
-    try:
-        r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", str(prog)],
-                           capture_output=True, text=True, timeout=600, cwd=tmp_path)
-    finally:
-        for h in hogs:
-            h.kill()
-            h.wait()
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", str(prog)],
+                       capture_output=True, text=True, timeout=600, cwd=tmp_path)
     assert r.returncode == 0, r.stderr
     assert ": ok (20001 structures" in r.stdout

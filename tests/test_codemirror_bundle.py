@@ -100,9 +100,8 @@ HOVER_TEXT = "Rectangle(center, width, height)\n<b>a shape</b> & more"
 
 @pytest.fixture(scope="module")
 def page():
-    pytest.importorskip("playwright", reason="needs Playwright for Python (pip install playwright)")
-    if not Path("/usr/bin/chromium").exists():
-        pytest.skip("needs Debian's chromium (apt-get install chromium; .ci/run installs it)")
+    from conftest import skip_without_chromium
+    skip_without_chromium()
     sys.path.insert(0, str(ROOT))
     from benchmarks.serve.serve_latency import chromium
 

@@ -24,8 +24,10 @@ import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 EXT = ROOT / "editors" / "vscode"
-pytest.importorskip("playwright")
-if not Path("/usr/bin/chromium").exists() or shutil.which("node") is None \
+from conftest import skip_without_chromium  # noqa: E402
+
+skip_without_chromium()
+if shutil.which("node") is None \
         or not (EXT / "dist" / "webview" / "three.js").exists():
     pytest.skip("needs Debian's chromium, node and `npm ci && npm run bundle` in editors/vscode",
                 allow_module_level=True)

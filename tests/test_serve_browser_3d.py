@@ -9,11 +9,10 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
-pytest.importorskip("playwright")
 pytest.importorskip("starlette")
-if not Path("/usr/bin/chromium").exists():
-    pytest.skip("needs Debian's chromium (apt-get install chromium; .ci/run installs it)",
-                allow_module_level=True)
+from conftest import skip_without_chromium  # noqa: E402
+
+skip_without_chromium()
 
 from benchmarks.serve.serve_latency import move_slider, open_page, served  # noqa: E402
 
