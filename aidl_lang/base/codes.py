@@ -575,6 +575,14 @@ An engraved Circle or Arc that crosses the outline or a hole (a ring that meets 
 rim) is offered the arc that stops at the cut: the longest arc of it on the material, 1 mm
 clear of the cut, written as the `Arc(center=..., radius=..., start_angle=..., end_angle=...)`
 that replaces it.
+Engraved text (on a straight baseline) is said in letters: which letters reach off the
+material, of how many ("the letters "B" and "Y", 2 of its 5"), and each place it leaves it: the
+hole it crosses and at which letters, the end that runs off the outline and where. Its fix is
+the width it has room for where it is written, computed (scaled about its position point, as a
+smaller size draws it, 0.5 mm clear of the cut): `max_width=29.9 mm` (it shrinks to fit), or
+that `size=`. An `Inside(...)` of its box is offered only when it leaves by the outline alone, the
+part has no hole, and the fit would shrink it by more than a tenth; a text wider than the room
+conflicts (E0401) with such a constraint.
 """),
     "W0506": ("geometry that adds nothing", """
 A child solid lies wholly inside the rest of its parent, so it changes nothing in the final

@@ -1,0 +1,100 @@
+"""Issue 105's messages after the fresh-model run (data/model_runs/issue105/REPORT.md): W0505
+on engraved text (where it leaves the material, in letters, and a fix that holds), W0513 on a
+ring around a word, a keyhole's slot through the part's edge, W0401's sources, the dof
+summary.  Every hint's fix is applied to the program and the program checked again."""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings, strategies as st
+
+import aidl_lang
+
+RUN = Path(__file__).resolve().parent.parent / "data" / "model_runs" / "issue105" / "run"
+
+
+def _codes(r) -> set:
+    return {d.code for d in r.diagnostics}
+
+
+def _w(r, code):
+    return [d for d in r.diagnostics if d.code == code]
+
+
+def _text_fixes(src: str, word: str, hint: str) -> list[str]:
+    """The programs the W0505 hint of text ``word`` makes: its `max_width=` added, its
+    `size=` replaced, and its `Inside(...)` (when offered) written in the part."""
+    m = re.search(r'Text\("' + word + r'"[^\n]*\)', src)
+    call = m.group(0)
+    out = []
+    mw = re.search(r"`max_width=([\d.]+) mm`", hint)
+    if mw:
+        out.append(src.replace(call, call[:-1] + f", max_width={mw.group(1)} mm)"))
+    sz = re.search(r"`size=([\d.]+) mm`", hint)
+    if sz:
+        out.append(src.replace(call, re.sub(r"size=[\d.]+( mm)?", f"size={sz.group(1)} mm", call)))
+    ins = re.search(r"`(Inside\([^`]*\))` in `(\w+)`", hint)
+    if ins:
+        out.append(src.rstrip().rstrip("}") + f"    {ins.group(1)}\n}}\n")
+    return out
+
+
+def test_dog_tag_text_over_the_ring_and_off_the_end():
+    """The run's dog tag: "BUDDY" crosses the ring hole at its "B" and runs off the right end
+    at its "Y".  The warning says both places and the letters (2 of 5), not "2%"; its hint
+    offers `max_width=` (the room at its place) and a `size=`, not `Inside(...)` (E0401 there);
+    each fix checks clean, the text then no wider than the room said."""
+    src = (RUN / "16_dog_tag.first_valid.aidl").read_text()
+    r = aidl_lang.compile(src)
+    [w] = _w(r, "W0505")
+    assert '"B" and "Y", 2 of its 5' in w.message and "%" not in w.message
+    assert 'crosses `tag.ring` at "B"' in w.hint and 'off the outline at "Y"' in w.hint
+    assert "`Inside(text" not in w.hint
+    room = float(re.search(r"room for ([\d.]+) mm", w.hint).group(1))
+    assert 29.0 < room < 30.5          # between the hole (x = -12) and the end (x = 19), less 2 x 0.5
+    fixes = _text_fixes(src, "BUDDY", w.hint)
+    assert len(fixes) == 2
+    for fixed in fixes:
+        after = aidl_lang.compile(fixed)
+        assert after.ok and not {"W0505", "E0401", "W0516", "W0513"} & _codes(after), fixed
+
+
+PLATE = """solid p {{
+    body = Rectangle(center=(0, 0), width={W}, height=20)
+    hole h {{ c = Circle(center=({hx}, 0), radius={hr}) }}
+    drawing d {{
+        word = Text("{word}", position=({tx}, -2), size={size})
+    }}
+{extra}}}
+"""
+
+
+@settings(max_examples=14, deadline=None, derandomize=True, database=None)
+@given(W=st.integers(40, 70), hr=st.sampled_from([1.5, 2.5, 3.5]), fx=st.floats(-0.45, 0.2),
+       word=st.sampled_from(["MINT", "ROSEMARY", "OK", "THYME 2"]), size=st.sampled_from([5, 7, 9]),
+       held=st.booleans())
+def test_law_a_text_off_the_material_fixed_as_told_checks_clean(W, hr, fx, word, size, held):
+    """A word near a hole on a plate, free or held where written by a relation (``held``):
+    when W0505 warns, each fix its hint offers (`max_width=`, `size=`, `Inside(...)`) checks
+    with neither W0505 nor E0401, and the letters it names are among the word's."""
+    hx = -W / 2 + hr + 3
+    tx = round(W * fx, 2)
+    extra = "    d.word.position.x == %s\n" % tx if held else ""
+    src = PLATE.format(W=W, hx=hx, hr=hr, word=word, tx=tx, size=size, extra=extra)
+    r = aidl_lang.compile(src)
+    assert r.ok
+    ws = _w(r, "W0505")
+    if not ws:
+        return
+    [w] = ws
+    letters = re.findall(r'"(.)"', w.message)
+    assert letters and all(ch in word for ch in letters)
+    fixes = _text_fixes(src, word, w.hint)
+    if "no room where it is written" not in w.hint:
+        assert re.search(r"`max_width=[\d.]+ mm`", w.hint), w.hint
+    for fixed in fixes:
+        after = aidl_lang.compile(fixed)
+        assert after.ok and not {"W0505", "E0401"} & _codes(after), (w.hint, fixed,
+                                                                    [d.message for d in after.diagnostics])
