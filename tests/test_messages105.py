@@ -98,3 +98,34 @@ def test_law_a_text_off_the_material_fixed_as_told_checks_clean(W, hr, fx, word,
         after = aidl_lang.compile(fixed)
         assert after.ok and not {"W0505", "E0401"} & _codes(after), (w.hint, fixed,
                                                                     [d.message for d in after.diagnostics])
+
+
+def test_sheriff_ring_around_the_word_offers_the_width_inside():
+    """The run's sheriff star: a 30 mm ring around "SHERIFF" (29 mm wide) crosses it at its
+    first and last letters.  W0513 says so (no "tick mark" wording: that is for a dial's
+    marks) and offers `max_width=` (computed) or `size=`; each checks clean."""
+    src = (RUN / "05_sheriff_star.first_valid.aidl").read_text()
+    r = aidl_lang.compile(src)
+    [w] = _w(r, "W0513")
+    assert 'crosses it at "S" and "F"' in w.message
+    assert "tick" not in w.hint
+    mw = float(re.search(r"`max_width=([\d.]+) mm`", w.hint).group(1))
+    assert 24.0 < mw < 27.0           # the chord of the ring across the word's band, less clearance
+    for fixed in _text_fixes(src, "SHERIFF", w.hint):
+        after = aidl_lang.compile(fixed)
+        assert after.ok and not {"W0513", "W0505"} & _codes(after), fixed
+
+
+def test_tick_through_a_label_keeps_the_tick_wording():
+    """A straight tick drawn through a dial's number: the hint still says to move the label
+    beside the tick, and names the letter it crosses."""
+    r = aidl_lang.compile("""solid dial {
+    body = Circle(center=(0, 0), radius=40)
+    drawing d {
+        n = Text("120", position=(0, 30), size=5)
+        tick = Line((1.5, 25), (1.5, 38))
+    }
+}
+""")
+    [w] = _w(r, "W0513")
+    assert "beside a tick mark" in w.hint and 'crosses it at "2"' in w.message

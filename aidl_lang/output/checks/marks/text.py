@@ -282,15 +282,64 @@ def _check_marks(strokes, marks, tg, boxes, bb, sizes, said, sink, tick=None) ->
             continue
         said.add(g)
         labels = [Label(m.span, f"`{m.label}` is here", primary=False)] if m.span else []
+        at = _letters_crossed(g, strokes[i], segs[m], boxes[i][1], inner[i])
+        at = f" at {at}" if at else ""
+        if all(it[0] == "line" for it in marks[m]) and len(marks[m]) == 1:     # a tick mark
+            sink.warning("W0513", f"text `{g.label}` (\"{g.data.get('text', '')}\") is drawn "
+                         f"over the engraved `{m.label}`: the mark crosses it{at}, "
+                         f"{length:.2f} mm of it inside the text's box", g.span, labels=labels,
+                         hint=f"move `{g.label}` clear of `{m.label}` (beside a tick mark, not "
+                              "on it: e.g. further out along the same direction), or shorten "
+                              "the mark")
+            continue
+        fit = _fitting_size((strokes[i][:, 0], strokes[i][:, 1]), segs[m],
+                            _open_ends(*segs[m]), boxes[i], size, g)
+        ways = []
+        if fit:
+            u0, _, u1, _ = boxes[i][2]
+            w = math.floor((u1 - u0) * fit / size * 10) / 10
+            ways.append(f"shrink it clear of the mark: `max_width={w:g} mm` in `{g.label.rsplit('.', 1)[-1]}` "
+                        f"(it shrinks about its position point; it is {u1 - u0:.1f} mm wide), "
+                        f"or `size={fit:g} mm`")
+        ways.append(f"move `{g.label}` clear of `{m.label}`")
+        if not fit:
+            ways.append("make the text smaller")
         sink.warning("W0513", f"text `{g.label}` (\"{g.data.get('text', '')}\") is drawn over "
-                     f"the engraved `{m.label}`: it runs {length:.2f} mm through the text",
-                     g.span, labels=labels,
-                     hint=f"move `{g.label}` clear of `{m.label}` (beside a tick mark, not on "
-                          "it: e.g. further out along the same direction), or shorten the mark")
+                     f"the engraved `{m.label}`: `{m.label.rsplit('.', 1)[-1]}` crosses it{at}, "
+                     f"{length:.2f} mm of it inside the text's box", g.span, labels=labels,
+                     hint="; or ".join(ways))
     entering = {(i, j) for (i, j), x in zip(pairs.tolist(), inside)
                 if x > IN_BOX - 1e-9 and tg[i].data.get("along") is None}
     _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs,
                      M, entering, sink, tick)
+
+
+def _letters_crossed(g, L, mseg, rot: float, box) -> str:
+    """The letters of text ``g`` (its strokes ``L``, k x 2 x 2, in the order of its font) at
+    which the mark's segments ``mseg`` (starts, ends) run inside the box ``box`` (u0, v0, u1,
+    v1 in the frame turned by ``rot``): each letter whose strokes span the u of a point of
+    the mark inside the box (its segments' ends and midpoints), said as ``"S" and "F"``; ""
+    when the strokes cannot be read as letters."""
+    from .engravings import _letters_of, _say_letters
+    text = str(g.data.get("text", ""))
+    per = _letters_of(text, len(L))
+    if per is None:
+        return ""
+    c, s_ = math.cos(rot), math.sin(rot)
+    P = np.vstack([mseg[0], mseg[1], (mseg[0] + mseg[1]) / 2])
+    u, v = P[:, 0] * c + P[:, 1] * s_, -P[:, 0] * s_ + P[:, 1] * c
+    u0, v0, u1, v1 = box
+    u = u[(u >= u0) & (u <= u1) & (v >= v0) & (v <= v1)]
+    if not len(u):
+        return ""
+    su = L[:, :, 0] * c + L[:, :, 1] * s_            # k x 2: the strokes' ends along the baseline
+    per = np.asarray(per)
+    spans = {i: (su[per == i].min(), su[per == i].max()) for i in set(per.tolist())}
+    hit = set()
+    for x in u:
+        near = min(spans, key=lambda i: max(spans[i][0] - x, x - spans[i][1], 0.0))
+        hit.add(near)
+    return _say_letters(text, sorted(hit))
 
 
 def _clear_of(tseg, mseg, rot, box, c: float, shift=(0.0, 0.0)) -> bool:
