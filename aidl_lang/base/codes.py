@@ -1262,6 +1262,22 @@ thicker material.
         Counterbore(h, diameter=8 mm, depth=4 mm)    # 4 mm in 3 mm: W0529
     }
 """),
+    "W0530": ("a closed opening runs out through the part's edge", """
+A hole made by a standard template whose opening is meant to be closed (`keyhole`,
+`clearance_hole`, `nut_trap`, `hex_pocket`) reaches past the part's outer edge, so the part
+gets an open notch where a closed opening was asked: a keyhole whose slot (10 mm long by
+default) runs out through the top edge no longer holds on its screw. The warning names the
+hole, how far it runs out (its farthest point from the part's edge, and where) and the fix:
+shorten its slot (`length=`) or shrink it, or move it inward, by that much and a wall of twice
+the minimum. An edge notch meant as one (a finger notch, a cable exit, drawn with a shape of
+its own) is not warned.
+
+    import "std/plates.aidl"
+    solid plate {
+        body = Rectangle(center=(0, 0), width=60, height=40)
+        hang = keyhole(head=8 mm, cx=0 mm, cy=12 mm)    # its 10 mm slot reaches y = 24
+    }
+"""),
     "W0527": ("inside corners the router's bit does not reach", """
 A router's bit is round: at an inside corner of a part's material (the bottom of a finger
 joint's slot, a tab's slot, a halving, a rectangular hole) its centre runs the outline offset by

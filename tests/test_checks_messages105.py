@@ -129,3 +129,31 @@ def test_tick_through_a_label_keeps_the_tick_wording():
 """)
     [w] = _w(r, "W0513")
     assert "beside a tick mark" in w.hint and 'crosses it at "2"' in w.message
+
+
+def test_keyhole_slot_through_the_edge_is_warned_and_the_fix_closes_it():
+    """The run's pick holder: the std keyhole 8 mm below the top edge, its slot 10 mm long
+    (default) with a 4 mm width, reaches 27 + 10 + 2 = 39 mm on a plate whose top is at 35:
+    W0530 names it, 4 mm out; shortening the slot by what the hint says leaves it closed
+    (no W0530, nor W0507/W0514).  The desk organiser's finger notches (meant) stay silent."""
+    src = (RUN / "11_pick_holder.first_valid.aidl").read_text()
+    r = aidl_lang.compile(src)
+    [w] = _w(r, "W0530")
+    assert "`holder.hang`" in w.message and "by 4.00 mm" in w.message
+    by = float(re.search(r"by at least ([\d.]+) mm", w.hint).group(1))
+    assert "length=" in w.hint and by == 5.0
+    fixed = aidl_lang.compile(src.replace("keyhole(head=8 mm)", f"keyhole(head=8 mm, length={10 - by:g} mm)"))
+    assert fixed.ok and not {"W0530", "W0507", "W0514"} & _codes(fixed)
+    notch = aidl_lang.compile((RUN / "13_desk_organiser.first_valid.aidl").read_text())
+    assert notch.ok and "W0530" not in _codes(notch)
+
+
+def test_clearance_hole_over_the_edge_and_a_plain_notch():
+    """A std clearance hole whose circle crosses the plate's edge is W0530; the same circle
+    written as a plain hole (a notch by design) is not."""
+    base = 'import "std/fasteners.aidl"\nsolid p {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n'
+    r = aidl_lang.compile(base + "    h = clearance_hole(size=3, cx=19 mm, cy=0 mm)\n}\n")
+    [w] = _w(r, "W0530")
+    assert "`clearance_hole`" in w.message
+    plain = aidl_lang.compile(base + "    hole h { c = Circle(center=(19, 0), diameter=3.4) }\n}\n")
+    assert plain.ok and "W0530" not in _codes(plain)
