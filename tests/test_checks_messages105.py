@@ -4,7 +4,10 @@ ring around a word, a keyhole's slot through the part's edge, W0401's sources, t
 summary.  Every hint's fix is applied to the program and the program checked again."""
 from __future__ import annotations
 
+import json
 import re
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -157,3 +160,18 @@ def test_clearance_hole_over_the_edge_and_a_plain_notch():
     assert "`clearance_hole`" in w.message
     plain = aidl_lang.compile(base + "    hole h { c = Circle(center=(19, 0), diameter=3.4) }\n}\n")
     assert plain.ok and "W0530" not in _codes(plain)
+
+
+def test_W0401_names_what_it_follows_from_as_written_in_the_code():
+    """The run's pick holder: W0401 named "`RoundedRectangle shape`", "`Triangle shape`",
+    "`pattern copy`", nothing a reader finds in the code; now the shapes by their names and
+    the pattern by its statement's name."""
+    out = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", "--json",
+                          str(RUN / "11_pick_holder.first_valid.aidl")], capture_output=True,
+                         text=True, timeout=120)
+    [w] = [d for d in json.loads(out.stdout)["diagnostics"] if d["code"] == "W0401"]
+    assert w["message"] == (
+        "`AlignCenterX(picks[1], plate)` is redundant: it follows from `At(picks[1].tri.center, "
+        "plate.center, dy=-5)`, the shape of `plate`, the shape of `pick.tri`, the pattern "
+        "`picks`'s copy rule, so removing it would free nothing")
+    assert " shape`" not in w["message"] and "pattern copy" not in w["message"]

@@ -423,7 +423,10 @@ the file. Please report it with the input file.
     "W0401": ("redundant constraint", """
 The constraint holds already because other constraints (or a constructor's held dimension) imply
 it: it adds no information. It is harmless, but if a value in it changes later the model becomes
-over-constrained. Reported by every `aidl check`. Constraints that each follow from the others
+over-constrained. Reported by every `aidl check`. What it follows from is named as a reader
+finds it in the code: a written constraint as written, a shape's own relations as `the shape of
+`picks[1].tri``, a pattern's or mirror's tie to its original as `the pattern `picks`'s copy
+rule`. Constraints that each follow from the others
 (two `Fixed` of points of one held shape, `Coincident(a, b)` beside `a == b`) are one warning
 for the group, whose hint says which to keep and which to drop: the drop set frees nothing
 (the kept constraints still hold every unknown the group held; each member follows from the
