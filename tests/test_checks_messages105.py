@@ -175,3 +175,30 @@ def test_W0401_names_what_it_follows_from_as_written_in_the_code():
         "plate.center, dy=-5)`, the shape of `plate`, the shape of `pick.tri`, the pattern "
         "`picks`'s copy rule, so removing it would free nothing")
     assert " shape`" not in w["message"] and "pattern copy" not in w["message"]
+
+
+def _cli(*args) -> str:
+    out = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "check", *map(str, args)],
+                         capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    return out.stdout
+
+
+def test_dof_summary_says_what_the_freedom_is_and_agrees_with_dof():
+    """The run's jar lid said "2 degrees of freedom left" with no word of what; the phone
+    stand said "no hole ... slides" while `--dof` listed `phone_stand.cable (position)` as
+    floating.  Now the count is always qualified, the parts' placement and the rest counted
+    (summing to N), and `--dof` ends with the same words."""
+    lid = _cli(RUN / "02_jar_lid.first_valid.aidl")
+    assert ("2 degrees of freedom left (free: shapes or parts that nothing places, which stay "
+            "where written (harmless); nothing slides against its part), see --dof") in lid
+    stand = _cli(RUN / "09_phone_stand.first_valid.aidl", "--dof")
+    m = re.search(r"(\d+) degrees of freedom left \(free: (\d+) where the parts sit and (\d+) "
+                  r"of shapes or parts that nothing places, which stay where written "
+                  r"\(harmless\); nothing slides against its part\)", stand)
+    assert m and int(m.group(1)) == int(m.group(2)) + int(m.group(3)) == 13
+    rows = [l.split() for l in stand.splitlines() if l.startswith("phone_stand")]
+    assert sum(int(r[2]) for r in rows) == 13          # the table's dof add up to the count
+    last = stand.strip().splitlines()[-1]
+    assert last.startswith("floating: ") and "not what slides" in last
+    assert last.endswith(stand[stand.index("(free: ") + 7:stand.index("), see --dof")])
