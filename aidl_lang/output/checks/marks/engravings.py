@@ -291,7 +291,12 @@ def _letters_of(text: str, n_items: int) -> list[int] | None:
 
 
 def _say_letters(text: str, idx) -> str:
-    return " and ".join(", ".join(f'"{text[i]}"' for i in idx).rsplit(", ", 1)) if idx else ""
+    """Letters ``idx`` of ``text`` as a reader finds them: ``"B" and "Y"``; a letter the text
+    holds more than once with its place, ``"M" (letter 1) and "M" (letter 11)``."""
+    def one(i: int) -> str:
+        nth = sum(1 for ch in text[:i + 1] if not ch.isspace())      # spaces are no letters
+        return f'"{text[i]}"' + (f" (letter {nth})" if text.count(text[i]) > 1 else "")
+    return " and ".join(", ".join(one(i) for i in idx).rsplit(", ", 1)) if idx else ""
 
 
 def _text_off(d: Drawing, roots, part, g, items, pts, inside, in_outline, tick=None):
@@ -376,8 +381,7 @@ def _text_off(d: Drawing, roots, part, g, items, pts, inside, in_outline, tick=N
         if "`Inside(" in other:
             return share, (f"{fit}; or, if no other relation places it, "
                            f"{other[other.index('constrain it onto'):]}")
-    return share, (f"{fit}; or move it where it has room (an `Inside(...)` of a text wider "
-                   "than the room conflicts)")
+    return share, f"{fit}; or move it where it has room"
 
 
 ARC_STEPS = 1440          # samples of an engraved circle when W0505 offers the arc on the material
