@@ -202,3 +202,33 @@ def test_dof_summary_says_what_the_freedom_is_and_agrees_with_dof():
     last = stand.strip().splitlines()[-1]
     assert last.startswith("floating: ") and "not what slides" in last
     assert last.endswith(stand[stand.index("(free: ") + 7:stand.index("), see --dof")])
+
+
+MARKS = """solid p {
+    body = Rectangle(center=(0, 0), width=80, height=60)
+    drawing d {
+        word = Text("HELLO", position=(0, 0), size=6, valign="middle")
+        ring = Arc(center=(0, 0), radius=12, start_angle=-60 deg, end_angle=60 deg)
+        frame = Rectangle(center=(0, 20), width=20, height=8)
+        w2 = Text("LONGWORD", position=(0, 20), size=5, valign="middle")
+        cross = Line((-30, -20), (30, -10))
+        w3 = Text("CROSS", position=(0, -15), size=5, valign="middle")
+    }
+}
+"""
+
+
+def test_W0513_an_arc_a_frame_and_a_line_through_a_word():
+    """An arc and a frame across words are offered the width that clears them (applied: no
+    W0513 on that word); a line running through the whole word and past it is no tick (no
+    "tick mark" wording) and names every letter."""
+    r = aidl_lang.compile(MARKS)
+    by = {re.search(r'\("(\w+)"\)', w.message).group(1): w for w in _w(r, "W0513")}
+    assert set(by) == {"HELLO", "LONGWORD", "CROSS"}
+    assert 'crosses it at "N" and "O" (letter 6)' in by["LONGWORD"].message
+    assert "at every letter" in by["CROSS"].message and "tick" not in by["CROSS"].hint
+    for word in ("HELLO", "LONGWORD"):
+        for fixed in _text_fixes(MARKS, word, by[word].hint):
+            after = aidl_lang.compile(fixed)
+            still = [w for w in _w(after, "W0513") if f'("{word}")' in w.message]
+            assert after.ok and not still, (word, [w.message for w in still])

@@ -819,9 +819,9 @@ clear (beside the tick, further out), shorten the mark, grow the frame, or make 
 smaller: the hint gives the largest size at which the clearance holds (`size=N mm`: the
 strokes and the clearance scale with the size about the text's position), and says nothing of
 size when no smaller text clears the mark.
-A mark drawn through a text names the letters it crosses (`ring` crosses it at "S" and "F").
-For a straight tick through a label the hint says to move the label beside the tick; for any
-other mark (a ring around a word, an arc, an outline) it offers the width at which the text
+A mark drawn through a text names the letters it crosses (`ring` crosses it at "S" and "F",
+or "every letter"). For a tick through a label (one straight line with an end at the text) the
+hint says to move the label beside the tick; for any other mark (a ring around a word, an arc, an outline) it offers the width at which the text
 clears it where it is written, computed (`max_width=26.4 mm`: it shrinks about its position
 point), or that `size=`, or moving the text.
 Engraved marks drawn over each other (text aside): a stroke that lies on another mark's stroke

@@ -284,7 +284,7 @@ def _check_marks(strokes, marks, tg, boxes, bb, sizes, said, sink, tick=None) ->
         labels = [Label(m.span, f"`{m.label}` is here", primary=False)] if m.span else []
         at = _letters_crossed(g, strokes[i], segs[m], boxes[i][1], inner[i])
         at = f" at {at}" if at else ""
-        if all(it[0] == "line" for it in marks[m]) and len(marks[m]) == 1:     # a tick mark
+        if _is_tick(marks[m], boxes[i][1], full[i], size):     # a dial's tick mark
             sink.warning("W0513", f"text `{g.label}` (\"{g.data.get('text', '')}\") is drawn "
                          f"over the engraved `{m.label}`: the mark crosses it{at}, "
                          f"{length:.2f} mm of it inside the text's box", g.span, labels=labels,
@@ -302,7 +302,7 @@ def _check_marks(strokes, marks, tg, boxes, bb, sizes, said, sink, tick=None) ->
                         f"(it shrinks about its position point; it is {u1 - u0:.1f} mm wide), "
                         f"or `size={fit:g} mm`")
         ways.append(f"move `{g.label}` clear of `{m.label}`")
-        if not fit:
+        if fit is None:                 # not measured (0.0: no smaller text clears the mark)
             ways.append("make the text smaller")
         sink.warning("W0513", f"text `{g.label}` (\"{g.data.get('text', '')}\") is drawn over "
                      f"the engraved `{m.label}`: `{m.label.rsplit('.', 1)[-1]}` crosses it{at}, "
@@ -312,6 +312,23 @@ def _check_marks(strokes, marks, tg, boxes, bb, sizes, said, sink, tick=None) ->
                 if x > IN_BOX - 1e-9 and tg[i].data.get("along") is None}
     _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs,
                      M, entering, sink, tick)
+
+
+def _is_tick(items, rot: float, box, size: float) -> bool:
+    """True for a mark that is one straight line with an end at the text (in its box, in the
+    frame turned by ``rot``, grown by the text's ``size``): a dial's tick under its number,
+    whose fix is to move the label beside it.  A line that runs through and past the text on
+    both sides, a ring, an arc or an outline is not a tick (issue 105: a ring around a word was
+    told "beside a tick mark")."""
+    if len(items) != 1 or items[0][0] != "line":
+        return False
+    u0, v0, u1, v1 = box
+    c, s_ = math.cos(rot), math.sin(rot)
+    for p in (items[0][1], items[0][2]):
+        u, v = p[0] * c + p[1] * s_, -p[0] * s_ + p[1] * c
+        if u0 - size <= u <= u1 + size and v0 - size <= v <= v1 + size:
+            return True
+    return False
 
 
 def _letters_crossed(g, L, mseg, rot: float, box) -> str:
@@ -326,9 +343,17 @@ def _letters_crossed(g, L, mseg, rot: float, box) -> str:
     if per is None:
         return ""
     c, s_ = math.cos(rot), math.sin(rot)
-    P = np.vstack([mseg[0], mseg[1], (mseg[0] + mseg[1]) / 2])
-    u, v = P[:, 0] * c + P[:, 1] * s_, -P[:, 0] * s_ + P[:, 1] * c
     u0, v0, u1, v1 = box
+    A, B = np.asarray(mseg[0], float), np.asarray(mseg[1], float)
+    au, av = A[:, 0] * c + A[:, 1] * s_, -A[:, 0] * s_ + A[:, 1] * c
+    bu, bv = B[:, 0] * c + B[:, 1] * s_, -B[:, 0] * s_ + B[:, 1] * c
+    meet = ((np.maximum(au, bu) >= u0) & (np.minimum(au, bu) <= u1)
+            & (np.maximum(av, bv) >= v0) & (np.minimum(av, bv) <= v1))
+    # the segments whose box meets the text's, each at 65 points (a long line through the
+    # whole word: its ends and middle alone named one letter)
+    t = np.linspace(0.0, 1.0, 65)[None, :]
+    u = (au[meet][:, None] + t * (bu - au)[meet][:, None]).ravel()
+    v = (av[meet][:, None] + t * (bv - av)[meet][:, None]).ravel()
     u = u[(u >= u0) & (u <= u1) & (v >= v0) & (v <= v1)]
     if not len(u):
         return ""
@@ -339,6 +364,8 @@ def _letters_crossed(g, L, mseg, rot: float, box) -> str:
     for x in u:
         near = min(spans, key=lambda i: max(spans[i][0] - x, x - spans[i][1], 0.0))
         hit.add(near)
+    if len(hit) > 2 and len(hit) == len(spans):
+        return "every letter"
     return _say_letters(text, sorted(hit))
 
 
