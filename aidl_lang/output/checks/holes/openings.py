@@ -120,7 +120,7 @@ def _check_flush(d: Drawing, s: Structure, shape, a: _Openings, cuts, min_wall: 
 # is an open notch, not the feature asked for (issue 105's pick holder: a keyhole whose slot,
 # 10 mm long by default, broke through the top edge).  An edge notch meant as one (a finger
 # notch, a cable exit) is drawn with a shape or a template of its own and is not warned.
-CLOSED_OPENINGS = {"keyhole": "its slot's `length=`", "clearance_hole": "its `size=`",
+CLOSED_OPENINGS = {"keyhole": "its slot's `length=`, 10 mm unless given", "clearance_hole": "its `size=`",
                    "nut_trap": "its `size=`", "hex_pocket": "its `across_flats=`"}
 MAX_DEPTH_POINTS = 4000     # vertices of the part outside measured for the depth (at most)
 
