@@ -438,6 +438,9 @@ def freedom_meaning(n: int, slide: "Sliding") -> str:
                 f"{WRITTEN}; {NONE_SLIDES}")
     if not said:
         return f"free: shapes or parts {WRITTEN}; {NONE_SLIDES}"
+    if slide.features and slide.placement:      # the features said; the placement too
+        sits = "the whole part sits" if len(slide.placement) == 1 else "the parts sit"
+        return f"{said}; {placed} where {sits} (harmless)"
     return said
 
 
