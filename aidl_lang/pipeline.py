@@ -518,7 +518,7 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
         c = red.constraint
         if id(c) in grouped or _in_template(c):
             continue            # reported with its group; or a template's own (issue 61)
-        by = ", ".join(f"`{b.describe()}`" for b in red.by[:4])
+        by = ", ".join(_source_of(b, c.owner) for b in red.by[:4])
         more = f" and {len(red.by) - 4} more" if len(red.by) > 4 else ""
         labels = [Label(b.span, "overlaps with this" if red.partly else "implied by this",
                         primary=False)
@@ -540,6 +540,28 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
         sink.add(Diagnostic("W0401", msg, c.span, "warning", hint=hint, labels=labels),
                  calls=instance_calls(c.owner))
     return len(skipped)
+
+
+def _source_of(b, owner) -> str:
+    """A constraint ``b`` as W0401's "it follows from" says it: a written one as written (in
+    backquotes); a shape's own relations ("RoundedRectangle shape", issue 105) as the shape
+    a reader finds in the code, ``the shape of `picks[1].tri```, its path from ``owner`` (the
+    redundant constraint's structure); a copy rule as made (``the pattern `picks`'s copy
+    rule``)."""
+    if b.kind != "internal":
+        return f"`{b.describe()}`"
+    text = b.describe()
+    if text.startswith("the "):
+        return text
+    g = next((g for g in getattr(b.owner, "geometry", ()) if g.span == b.span and g.name), None)
+    if g is None:
+        return f"`{text}`"
+    path = g.label
+    if owner is not None and path.startswith(owner.path + "."):
+        path = path[len(owner.path) + 1:]
+    what = text[:-len(" shape")] if text.endswith(" shape") else text
+    return (f"the shape of `{path}`" if text.endswith(" shape") else
+            f"the {what[0].lower() + what[1:]} of `{path}`")
 
 
 def _makers(model) -> set:

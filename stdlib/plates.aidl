@@ -55,7 +55,8 @@ def mounting_plate(width=80 mm, height=50 mm, corner_radius=4 mm, screw=3, fit="
 # A keyhole to hang a part on a screw. A round opening of `head` diameter for
 # the screw head, at (cx, cy), and a slot of `slot_width` (the shank) running
 # `length` from its center toward `direction` (90 deg: up, so the part drops
-# onto the screw). Members: `head_hole` (Circle), `slot` (Slot).
+# onto the screw). Keep the slot inside the part: one that runs out through the
+# edge is an open notch (W0530). Members: `head_hole` (Circle), `slot` (Slot).
 def keyhole(head=8 mm, slot_width=4 mm, length=10 mm, direction=90 deg, cx=0 mm, cy=0 mm) -> hole {
     assert slot_width > 0 mm and slot_width < head, "the slot must be narrower than the head opening"
     head_hole = Circle(center=(cx, cy), diameter=head)

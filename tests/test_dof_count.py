@@ -335,8 +335,9 @@ def test_a_feature_that_can_slide_is_named_and_warned(tmp_path):
     W0404 warns at each of them, and one more constraint leaves only the part's placement
     (harmless, no warning)."""
     doc = _check(tmp_path, GAUGE.replace("EXTRA", ""), "--json")
+    # (issue 105: the part's own placement said beside what slides)
     assert "(free: hole `gauge.bits` can slide along y; drawing `gauge.labels` can slide along " \
-           "y)" in doc["freedom"]
+           "y; 2 where the whole part sits (harmless))" in doc["freedom"]
     ws = [d for d in doc["diagnostics"] if d["code"] == "W0404"]
     assert [(w["span"]["line"], w["message"]) for w in ws] == [
         (5, "hole `gauge.bits` can slide along y relative to `gauge`: only its starting "
@@ -360,7 +361,8 @@ def test_a_feature_placed_by_its_coordinates_alone_stays_where_written(tmp_path)
     src = GAUGE.replace("EXTRA", "hole recess { r = Rectangle(center=(20, -5), width=6, "
                                  "height=4) }")
     said = ("(free: hole `gauge.bits` can slide along y; drawing `gauge.labels` can slide "
-            "along y; hole `gauge.recess` free but stays where written (harmless))")
+            "along y; hole `gauge.recess` free but stays where written (harmless); 2 where the "
+            "whole part sits (harmless))")
     doc = _check(tmp_path, src, "--json")
     assert said in doc["freedom"]
     assert [d["message"].split()[1] for d in doc["diagnostics"] if d["code"] == "W0404"] == [
@@ -371,7 +373,8 @@ def test_a_feature_placed_by_its_coordinates_alone_stays_where_written(tmp_path)
     placed = src.replace("\n}\n", "\n    bits.bb.top == plate.bb.top - 5\n}\n")
     doc = _check(tmp_path, placed, "--json")
     assert doc["freedom"].endswith("degrees of freedom left (hole `gauge.recess` free but "
-                                   "stays where written (harmless)), see --dof")
+                                   "stays where written (harmless); 2 where the whole part "
+                                   "sits (harmless)), see --dof")
     assert not [d for d in doc["diagnostics"] if d["code"] == "W0404"]
 
 
@@ -406,7 +409,7 @@ def test_rigid_takes_any_number_of_structures_and_holds_their_inside(tmp_path):
     free = _check(tmp_path, src.replace("RIGID", ""), "--json", "--dof")
     assert free["freedom"] == ("10 degrees of freedom left (hole `plate.a`, hole `plate.b`, "
                                "hole `plate.c` and 1 more free but stay where written "
-                               "(harmless)), see --dof")
+                               "(harmless); 2 where the whole part sits (harmless)), see --dof")
     doc = _check(tmp_path, src.replace("RIGID", "Rigid([a, b, c, d, body])"), "--json", "--dof")
     assert doc["freedom"] == ("2 degrees of freedom left (free: only where the whole part sits "
                               "(harmless)), see --dof")
@@ -503,7 +506,7 @@ def test_a_structure_moving_with_its_frame_is_counted_once(tmp_path):
     doc = _check(tmp_path, structures(3), "--json", "--dof")
     assert doc["freedom"].startswith("12 degrees of freedom left (hole `a.s[0].h`, hole "
                                      "`a.s[1].h`, hole `a.s[2].h` free but stay where written "
-                                     "(harmless))")
+                                     "(harmless); 6 where the parts sit (harmless))")
     dof = {d["structure"]: (d["dof"], d["floating"]) for d in doc["dof"]}
     assert dof["a"] == (6, ["a.s[0] (position)", "a.s[1] (position)", "a.s[2] (position)"])
     assert all(dof[f"a.s[{i}]"] == (2, [f"a.s[{i}].h (position)", f"a.s[{i}].r"])

@@ -61,7 +61,8 @@ def test_W0505_text_over_a_screw_hole_says_a_small_share_and_names_the_hole(comp
     # said "(0% of it is off the material)" with the hint `Inside(label, body)` (no `body`, and
     # the text is inside the plate's box already)
     (w,) = _codes(compile_text, SIGN.replace("SIZE", "16"), "W0505")
-    assert "under 1%" in w.message and "0%" not in w.message
+    # (issue 105: a text's share is said in letters, each M over its screw hole)
+    assert '"M" (letter 1) and "M" (letter 11), 2 of its 11' in w.message and "0%" not in w.message
     assert "`sign.screws`" in w.hint and "Inside(" not in w.hint
     assert not _codes(compile_text, SIGN.replace("SIZE", "13"), "W0505")
 

@@ -118,7 +118,7 @@ def _check(tmp_path, src, *flags):
 def test_plain_check_reports_W0401_with_its_measure(tmp_path):
     (w,) = _check(tmp_path, SMALL["horizontal_top"])           # no --dof needed
     assert w["span"]["line"] == 3 and w["message"] == (
-        "`Horizontal(r.top)` is redundant: it follows from `Rectangle shape`, so removing it "
+        "`Horizontal(r.top)` is redundant: it follows from the shape of `r`, so removing it "
         "would free nothing")
     assert [lab["span"]["line"] for lab in w["labels"]] == [2]
 

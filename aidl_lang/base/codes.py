@@ -423,7 +423,10 @@ the file. Please report it with the input file.
     "W0401": ("redundant constraint", """
 The constraint holds already because other constraints (or a constructor's held dimension) imply
 it: it adds no information. It is harmless, but if a value in it changes later the model becomes
-over-constrained. Reported by every `aidl check`. Constraints that each follow from the others
+over-constrained. Reported by every `aidl check`. What it follows from is named as a reader
+finds it in the code: a written constraint as written, a shape's own relations as `the shape of
+`picks[1].tri``, a pattern's or mirror's tie to its original as `the pattern `picks`'s copy
+rule`. Constraints that each follow from the others
 (two `Fixed` of points of one held shape, `Coincident(a, b)` beside `a == b`) are one warning
 for the group, whose hint says which to keep and which to drop: the drop set frees nothing
 (the kept constraints still hold every unknown the group held; each member follows from the
@@ -589,6 +592,14 @@ An engraved Circle or Arc that crosses the outline or a hole (a ring that meets 
 rim) is offered the arc that stops at the cut: the longest arc of it on the material, 1 mm
 clear of the cut, written as the `Arc(center=..., radius=..., start_angle=..., end_angle=...)`
 that replaces it.
+Engraved text (on a straight baseline) is said in letters: which letters reach off the
+material, of how many ("the letters "B" and "Y", 2 of its 5"), and each place it leaves it: the
+hole it crosses and at which letters, the end that runs off the outline and where. Its fix is
+the width it has room for where it is written, computed (scaled about its position point, as a
+smaller size draws it, 0.5 mm clear of the cut): `max_width=29.9 mm` (it shrinks to fit), or
+that `size=`. An `Inside(...)` of its box is offered only when it leaves by the outline alone, the
+part has no hole, and the fit would shrink it by more than a tenth; a text wider than the room
+conflicts (E0401) with such a constraint.
 """),
     "W0506": ("geometry that adds nothing", """
 A child solid lies wholly inside the rest of its parent, so it changes nothing in the final
@@ -822,6 +833,11 @@ clear (beside the tick, further out), shorten the mark, grow the frame, or make 
 smaller: the hint gives the largest size at which the clearance holds (`size=N mm`: the
 strokes and the clearance scale with the size about the text's position), and says nothing of
 size when no smaller text clears the mark.
+A mark drawn through a text names the letters it crosses (`ring` crosses it at "S" and "F",
+or "every letter"). For a tick through a label (one straight line with an end at the text) the
+hint says to move the label beside the tick; for any other mark (a ring around a word, an arc, an outline) it offers the width at which the text
+clears it where it is written, computed (`max_width=26.4 mm`: it shrinks about its position
+point), or that `size=`, or moving the text.
 Engraved marks drawn over each other (text aside): a stroke that lies on another mark's stroke
 (parallel, within 0.05 mm, over at least 0.3 mm: a ruler's millimetre ticks drawn again under
 its centimetre ticks, a bar's side along a tick) is burnt twice, a deeper and wider line,
@@ -1263,6 +1279,22 @@ thicker material.
         body = Rectangle(center=(0, 0), width=40, height=20)
         hole h { c = Circle(center=(0, 0), diameter=4 mm) }
         Counterbore(h, diameter=8 mm, depth=4 mm)    # 4 mm in 3 mm: W0529
+    }
+"""),
+    "W0530": ("a closed opening runs out through the part's edge", """
+A hole made by a standard template whose opening is meant to be closed (`keyhole`,
+`clearance_hole`, `nut_trap`, `hex_pocket`) reaches past the part's outer edge, so the part
+gets an open notch where a closed opening was asked: a keyhole whose slot (10 mm long by
+default) runs out through the top edge no longer holds on its screw. The warning names the
+hole, how far it runs out (its farthest point from the part's edge, and where) and the fix:
+shorten its slot (`length=`) or shrink it, or move it inward, by that much and a wall of twice
+the minimum. An edge notch meant as one (a finger notch, a cable exit, drawn with a shape of
+its own) is not warned.
+
+    import "std/plates.aidl"
+    solid plate {
+        body = Rectangle(center=(0, 0), width=60, height=40)
+        hang = keyhole(head=8 mm, cx=0 mm, cy=12 mm)    # its 10 mm slot reaches y = 24
     }
 """),
     "W0527": ("inside corners the router's bit does not reach", """

@@ -181,6 +181,9 @@ def cmd_check(args) -> int:
               f"{extra.get('freedom', 'not solved')})")
         if dofs is not None:
             _print_dof(dofs)
+            if "freedom" in extra and extra["freedom"] != "fully constrained":
+                from ..solver.diagnosis.freedom import floating_legend
+                print(floating_legend(extra["freedom"]))
         if program.not_searched:
             n = program.not_searched
             why = program.not_searched_why

@@ -346,7 +346,12 @@ def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_
             out.struct.pattern_original = target.struct
         else:
             out.geom.pattern_original = target.geom
-    c = Constraint("internal", S, ctx.cur_span, cl.eqs, text=f"{what} copy", implicit=True)
+    # named as a reader finds it in the code (W0401's "it follows from"): the statement's
+    # name, or what it copies (issue 105: "pattern copy" named nothing one could find)
+    of = (f"`{name}`" if name else
+          f"`{target.struct.name if isinstance(target, StructRef) else target.geom.name}`")
+    c = Constraint("internal", S, ctx.cur_span, cl.eqs, text=(
+        f"the {what} {of}'s copy rule" if name else f"the {what} copy of {of}"), implicit=True)
     S.constraints.append(c)
     ctx.model.constraints.append(c)
     return out

@@ -92,6 +92,9 @@ class Solver(PartsFirst):
                 if self.pinning else pinned_none()
         self.pinned_by: dict[int, int] = {}     # id(structure) -> its pinned parameters
         self.pinned_rows: dict[int, int] = {}   # id(constraint) -> its rows dropped so
+        # each solver row's index among the rows built (pinning rows included): the order of
+        # rows the diagnostics take, the same with and without pinning (None: the identity)
+        self.built_index: np.ndarray | None = None
         if self.pins:
             pins = self.pins
             pin_values(built, pins, self.x)
@@ -101,7 +104,8 @@ class Solver(PartsFirst):
             self.free[pins.var] = False
             keep = np.ones(len(built.exprs), dtype=bool)
             keep[pins.row] = False
-            built = built.subset(np.flatnonzero(keep).tolist())
+            self.built_index = np.flatnonzero(keep)
+            built = built.subset(self.built_index.tolist())
         self.rows: Rows = built
         self.scale[self.is_frame] = FRAME_SCALE
         self.slack = np.asarray(self.rows.slack, dtype=np.int64)

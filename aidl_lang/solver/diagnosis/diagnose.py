@@ -52,6 +52,59 @@ class Conflict(Compared):
         return [c for c, _ in self.items]
 
 
+def built_keys(solver, rows: np.ndarray, prows: np.ndarray) -> np.ndarray:
+    """The order keys of solver rows ``rows`` and pinning rows ``prows``: each row's index
+    among the rows built (:attr:`~..core.hierarchy.Solver.built_index`), so that the rows of
+    one constraint are taken in the same order pinned or not.  Before (issue 105), the pinning
+    rows came after every solver row: `Fixed(c.center)` with its y row pinned by a later
+    `c.center.y == 2` took y before x, and the conflict sets named differed (2 and 3
+    constraints pinned, 3 and 4 unpinned)."""
+    bi = getattr(solver, "built_index", None)
+    rows = np.asarray(rows, dtype=np.int64)
+    own = bi[rows] if bi is not None else rows
+    return np.concatenate([own, np.asarray(prows, dtype=np.int64)])
+
+
+LEAST_ROWS = 64          # rows of a conflict set made minimal by deletion (at most)
+
+
+def _inconsistent(A: np.ndarray, f: np.ndarray, tol: float) -> bool:
+    """True when the linearised rows ``A dx = -f`` have no solution: the least-squares
+    residual is above ``tol`` (the rows demand different things)."""
+    dx = np.linalg.lstsq(A, -f, rcond=None)[0]
+    return float(np.max(np.abs(A @ dx + f), initial=0.0)) > tol
+
+
+def _least_conflict(members: list, cons: list, rows_of: dict, J: np.ndarray, F: np.ndarray,
+                    tol: float) -> list:
+    """The rows of a conflict made minimal by deletion, constraint by constraint, the
+    first-written tried first: a constraint is left out when the others' rows (all the rows
+    of each, ``rows_of``) still conflict (:func:`_inconsistent`), and at least two
+    constraints stay.  The greedy basis names the rows a dependent row combines, and a row
+    that was itself dependent is never among them: `c.center.y == 2` after `Fixed(c.center)`
+    (whose y row was dependent) was named with `Fixed(arc.center)` and a `Distance`, four
+    constraints where two conflict (issue 105).  Sets of more than :data:`LEAST_ROWS` rows
+    are kept as found."""
+    first = {}
+    for i in members:
+        first.setdefault(id(cons[i]), cons[i])
+    ids = sorted(first, key=lambda k: _order_key(first[k], 0))
+    if len(ids) <= 2 or sum(len(rows_of[k]) for k in ids) > LEAST_ROWS:
+        return members
+    rows = {k: rows_of[k] for k in ids}
+    keep = list(ids)
+    for k in ids:
+        rest = [j for j in keep if j != k]
+        if len(rest) < 2:
+            break
+        sel = [i for j in rest for i in rows[j]]
+        if _inconsistent(J[sel], F[sel], tol):
+            keep = rest
+    if keep == ids:
+        return members
+    return [i for j in keep for i in rows[j]]
+
+
 def _order_key(c: Constraint, r: int):
     sp_ = c.span
     pos = (sp_.line, sp_.col) if sp_ is not None else (0, 0)
@@ -160,14 +213,13 @@ def conflicts(solver, rows: np.ndarray, cols: np.ndarray, x: np.ndarray,
         return []
     J, _, prows = _with_pins(solver, t, rows, cols, x, dense=False)
     cons = [solver.rows.constraint[r] for r in rows]
-    keys = rows.tolist()
+    keys = built_keys(solver, rows, prows).tolist()
     if len(prows):
         F = np.concatenate([F, np.zeros(len(prows))])       # a pinned value holds its row
         user = np.concatenate([user, np.zeros(len(prows))])
         bad = np.concatenate([bad, np.zeros(len(prows), dtype=bool)])
         built = solver.rows_built.constraint
         cons += [built[r] for r in prows.tolist()]
-        keys += (len(solver.rows.exprs) + prows).tolist()
     lab = _components(J)
     local = np.flatnonzero(np.isin(lab, unique(lab[bad])))
     if len(local) > MAX_DENSE:
@@ -179,6 +231,9 @@ def conflicts(solver, rows: np.ndarray, cols: np.ndarray, x: np.ndarray,
     out: list[Conflict] = []
     seen: set = set()
     Fl = F[local]
+    rows_of: dict[int, list] = {}           # id(constraint) -> its rows among ``local``
+    for i, c in enumerate(cons):
+        rows_of.setdefault(id(c), []).append(i)
     deadline = getattr(solver, "deadline", None)
     # the greedy pass looks at the deadline before every row: no estimate needed
     for r, support, coef in dependencies(Jd, order, deadline):
@@ -191,6 +246,7 @@ def conflicts(solver, rows: np.ndarray, cols: np.ndarray, x: np.ndarray,
         gap = abs(Fl[r] - float(coef @ Fl[support])) if len(support) else abs(Fl[r])
         if gap <= tol:
             continue
+        members = _least_conflict(members, cons, rows_of, Jd, Fl, tol)
         per: dict[int, list] = {}
         for i in members:
             c = cons[i]

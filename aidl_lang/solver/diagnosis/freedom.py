@@ -412,8 +412,43 @@ def freedom_text(dofs: list[StructureDof], slide: "Sliding | None" = None) -> st
     n = sum(max(0, d.dof) for d in dofs)
     if n == 0:
         return "fully constrained"
-    said = sliding_text(slide) if slide is not None else ""
-    if said.startswith("free: only") and n != sum(len(a.split(", ")) for _, a in slide.placement):
-        said = "no hole, drawing or solid child slides against its part"   # shapes inside may
-    return (f"{n} degree{'s' if n != 1 else ''} of freedom left"
-            + (f" ({said})" if said else "") + ", see --dof")
+    if slide is None:           # what slides not measured (too large, out of time): not said
+        return f"{n} degree{'s' if n != 1 else ''} of freedom left, see --dof"
+    return (f"{n} degree{'s' if n != 1 else ''} of freedom left ({freedom_meaning(n, slide)}), "
+            "see --dof")
+
+
+WRITTEN = "that nothing places, which stay where written (harmless)"
+NONE_SLIDES = "nothing slides against its part"
+
+
+def freedom_meaning(n: int, slide: "Sliding") -> str:
+    """What ``n`` (> 0) degrees of freedom left are, said always (issue 105: "2 degrees of
+    freedom left" alone told nothing, and "no hole ... slides" read as the contrary of
+    ``--dof``'s floating column): what can slide (:func:`~.sliding.sliding_text`), what stays
+    where written (harmless), or where the whole part sits (harmless); when some freedom is
+    not the part's placement and no feature slides, the rest is what nothing pulls on (a
+    shape or part placed only by its written coordinates: the solve keeps them), said with
+    its count."""
+    said = sliding_text(slide)
+    placed = sum(len(a.split(", ")) for _, a in slide.placement)
+    if said.startswith("free: only") and n != placed:
+        sits = "the whole part sits" if len(slide.placement) == 1 else "the parts sit"
+        return (f"free: {placed} where {sits} and {n - placed} of shapes or parts "
+                f"{WRITTEN}; {NONE_SLIDES}")
+    if not said:
+        return f"free: shapes or parts {WRITTEN}; {NONE_SLIDES}"
+    if slide.features and slide.placement:      # the features said; the placement too
+        sits = "the whole part sits" if len(slide.placement) == 1 else "the parts sit"
+        return f"{said}; {placed} where {sits} (harmless)"
+    return said
+
+
+def floating_legend(freedom: str) -> str:
+    """The line under ``aidl check --dof``'s table: what its floating column is (what each
+    structure's free directions move: a child's position is where it sits in its parent), in
+    the words of the ok line's ``freedom`` (:func:`freedom_text`), so that the two agree."""
+    what = freedom[freedom.find("(") + 1:freedom.rfind(")")] if "(" in freedom else freedom
+    return ("floating: what each structure's free directions move (a child's `position`: "
+            f"where it sits in its parent), not what slides; here: "
+            f"{what[len('free: '):] if what.startswith('free: ') else what}")

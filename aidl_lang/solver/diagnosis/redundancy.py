@@ -20,7 +20,7 @@ from ..core.arrays import unique
 from ...geometry.core.model import Constraint
 from ..core.rank import (MAX_DENSE, _components, _dense_components, _dense_cut, _dense_refused,
                          _peeled_rows, _row_entries, dependencies)
-from .diagnose import _order_key, _with_pins, used_free_columns
+from .diagnose import _order_key, _with_pins, built_keys, used_free_columns
 
 
 class Redundant(Compared):
@@ -203,7 +203,7 @@ def _flat_system(solver):
         for c in extra:
             in_closure[id(c)] = in_closure.get(id(c), 0) + 1
         cons += extra
-        keys = np.concatenate([rows, len(solver.rows.exprs) + prows])
+        keys = built_keys(solver, rows, prows)
         F = np.concatenate([F, np.zeros(len(prows))])       # a pinned value holds its row
     return J, F, cons, keys, in_closure
 

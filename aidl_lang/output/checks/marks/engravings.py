@@ -240,6 +240,12 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         where = "across a hole" if in_outline.all() else (
             "outside the outline" if not in_outline.any() else "outside the outline and across a hole")
         warned.add(g)
+        if _is_flat_text(g, items):
+            said = _text_off(d, roots, part, g, items, pts, inside, in_outline, tick)
+            if said is not None:
+                sink.warning("W0505", f"engraving `{g.label}` runs {where} of `{part.path}` "
+                             f"({said[0]})", g.span, hint=said[1])
+                continue
         off = float((~inside).sum())
         # a letter's stroke over a screw hole is under 1% of a long text's samples: "0%" read
         # as "nothing is off" (issue 84's door sign), so a small share is said as such
@@ -259,6 +265,123 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
             tick(part)
         _check_meets_cut(part, roots[part], [(g, it) for g, it in geoms if g not in warned],
                          (loops or {}).get(part), sink)
+
+
+def _is_flat_text(g, items) -> bool:
+    """True for an engraved Text on a straight baseline (not along a curve, not a stencil)
+    whose strokes are at hand as lines."""
+    return (getattr(g, "kind", None) == "Text" and g.data.get("along") is None
+            and not g.data.get("stencil") and bool(items) and items[0][0] == "line")
+
+
+FIT_LEAST = 0.25          # of a text's size: a smaller fit at its place is no fit (move it)
+
+
+def _letters_of(text: str, n_items: int) -> list[int] | None:
+    """The index in ``text`` of the letter each of its ``n_items`` strokes draws (the strokes
+    in the order :func:`~aidl_lang.geometry.shapes.text.text_strokes` gives them), or None
+    when the count does not match."""
+    from ....geometry.shapes.text import _glyphs
+    glyphs, out = _glyphs(), []
+    for i, ch in enumerate(text):
+        gl = glyphs.get(ch)
+        if gl is not None:
+            out += [i] * sum(max(len(st) - 1, 0) for st in gl[0])
+    return out if len(out) == n_items else None
+
+
+def _say_letters(text: str, idx) -> str:
+    """Letters ``idx`` of ``text`` as a reader finds them: ``"B" and "Y"``; a letter the text
+    holds more than once with its place, ``"M" (letter 1) and "M" (letter 11)``."""
+    def one(i: int) -> str:
+        nth = sum(1 for ch in text[:i + 1] if not ch.isspace())      # spaces are no letters
+        return f'"{text[i]}"' + (f" (letter {nth})" if text.count(text[i]) > 1 else "")
+    return " and ".join(", ".join(one(i) for i in idx).rsplit(", ", 1)) if idx else ""
+
+
+def _text_off(d: Drawing, roots, part, g, items, pts, inside, in_outline, tick=None):
+    """W0505's share and hint for an engraved Text on a straight baseline that runs off its
+    part's material: ``(share, hint)``, or None when its strokes cannot be read as letters.
+    The share is in letters (which reach off the material, of how many), as the picture
+    shows it: "2%" of the sample points said nothing of a "Y" off the end (issue 105's dog
+    tag).  The hint says each place it leaves the material (each hole it crosses and at which
+    letters; off the outline, at which letters and about where) and the fix a text takes:
+    ``max_width=`` the width it has room for where it is written (scaled about its position
+    point, as a smaller size draws it, every sample inside the part and :data:`CUT_CLEAR` from
+    the cut, rounded down to 0.1 mm), or that ``size=``; ``Inside(...)`` of its box conflicts
+    (E0401) when the text is wider than the room (the dog tag's hint of before).  ``pts``,
+    ``inside``: its samples (9 a stroke) and which are on the material; ``in_outline``: of
+    the samples off it, which lie inside the outer outline (over a hole)."""
+    from ....geometry.shapes.text import text_strokes
+    text = str(g.data.get("text", ""))
+    per = _letters_of(text, len(items))
+    if per is None:
+        return None
+    per = np.repeat(np.asarray(per), 9)
+    off_idx = np.flatnonzero(~inside)
+    hole_pts, out_pts = off_idx[in_outline], off_idx[~in_outline]
+    shown = [i for i, ch in enumerate(text) if not ch.isspace() and (per == i).any()]
+    off_letters = sorted(set(per[off_idx].tolist()))
+    share = (f"the letter{'s' if len(off_letters) > 1 else ''} {_say_letters(text, off_letters)}"
+             f", {len(off_letters)} of its {len(shown)}, reach{'' if len(off_letters) > 1 else 'es'}"
+             " off the material")
+    places = []
+    if len(hole_pts):
+        holes = _holes_crossed(d, roots, part, pts[hole_pts])
+        places.append(f"it crosses {' and '.join(holes) if holes else 'an opening'} at "
+                      f"{_say_letters(text, sorted(set(per[hole_pts].tolist())))}")
+    if len(out_pts):
+        o = pts[out_pts]
+        q = o[int(np.argmin(np.hypot(*(o - o.mean(axis=0)).T)))]
+        places.append(f"it runs off the outline at "
+                      f"{_say_letters(text, sorted(set(per[out_pts].tolist())))} (about "
+                      f"({q[0]:.2f}, {q[1]:.2f}))")
+    # a box constraint (`Inside(...)`) knows nothing of holes: it may move the text onto one
+    holed = any(c.region is not None and not c.region.is_empty()
+                and _part_of(c.owner, roots) is part for c in d.cuts)
+    size = float(g.data.get("size", 0.0) or 0.0)
+    rel = text_strokes(text, size, g.data.get("anchor", "middle"),
+                       g.data.get("valign", "baseline"), g.data.get("rotation", 0.0))
+    name = str(getattr(g, "label", "")).rsplit(".", 1)[-1] or "text"
+    where = "; ".join(places)
+    if not rel or not size > 0:
+        return share, f"{where}: make `{name}` smaller or move it onto the material"
+    at = np.asarray(items[0][1], float) - np.asarray(rel[0][0], float)     # its position point
+    loops = [np.asarray(p, dtype=float) for p in roots[part].to_polygons()]
+    edges = _edges(loops)
+    if tick is not None:
+        tick(part)
+
+    def fits(k: float) -> bool:
+        q = at + k * (pts - at)
+        return bool(_inside(q, edges).all() and not _within(q, edges, CUT_CLEAR).any())
+    k = 1.0
+    while k > FIT_LEAST and not fits(k):
+        k -= 0.02
+    if k <= FIT_LEAST:
+        told = f"{where}: it has no room where it is written (its position point is at " \
+               f"({at[0]:.2f}, {at[1]:.2f}))"
+        if not len(hole_pts) and not holed:      # the box constraint may move it
+            return share, f"{told}; {_off_outline_hint(d, part, g, pts, pts[~inside])}"
+        return share, f"{told}: move `{name}` onto the material, where it has room, or make it smaller"
+    lo, hi = k, min(k + 0.02, 1.0)
+    for _ in range(30):
+        m = (lo + hi) / 2
+        lo, hi = (m, hi) if fits(m) else (lo, m)
+    rot = float(g.data.get("rotation", 0.0) or 0.0)
+    u = pts[:, 0] * math.cos(rot) + pts[:, 1] * math.sin(rot)
+    wide = float(u.max() - u.min())
+    w = math.floor(lo * wide * 10) / 10
+    s_new = math.floor(lo * size * 100) / 100
+    fit = (f"{where}. Where it is written it has room for {w:g} mm along its baseline "
+           f"({CUT_CLEAR} mm clear of the cut; it is {wide:.1f} mm wide): `max_width={w:g} mm` "
+           f"in `{name}` (it shrinks to fit about its position point), or `size={s_new:g} mm`")
+    if not len(hole_pts) and lo < 0.9 and not holed:    # much smaller: moving it may be better
+        other = _off_outline_hint(d, part, g, pts, pts[~inside])
+        if "`Inside(" in other:
+            return share, (f"{fit}; or, if no other relation places it, "
+                           f"{other[other.index('constrain it onto'):]}")
+    return share, f"{fit}; or move it where it has room"
 
 
 ARC_STEPS = 1440          # samples of an engraved circle when W0505 offers the arc on the material

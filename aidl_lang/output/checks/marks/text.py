@@ -282,15 +282,91 @@ def _check_marks(strokes, marks, tg, boxes, bb, sizes, said, sink, tick=None) ->
             continue
         said.add(g)
         labels = [Label(m.span, f"`{m.label}` is here", primary=False)] if m.span else []
+        at = _letters_crossed(g, strokes[i], segs[m], boxes[i][1], inner[i])
+        at = f" at {at}" if at else ""
+        if _is_tick(marks[m], boxes[i][1], full[i], size):     # a dial's tick mark
+            sink.warning("W0513", f"text `{g.label}` (\"{g.data.get('text', '')}\") is drawn "
+                         f"over the engraved `{m.label}`: the mark crosses it{at}, "
+                         f"{length:.2f} mm of it inside the text's box", g.span, labels=labels,
+                         hint=f"move `{g.label}` clear of `{m.label}` (beside a tick mark, not "
+                              "on it: e.g. further out along the same direction), or shorten "
+                              "the mark")
+            continue
+        fit = _fitting_size((strokes[i][:, 0], strokes[i][:, 1]), segs[m],
+                            _open_ends(*segs[m]), boxes[i], size, g)
+        ways = []
+        if fit:
+            u0, _, u1, _ = boxes[i][2]
+            w = math.floor((u1 - u0) * fit / size * 10) / 10
+            ways.append(f"shrink it clear of the mark: `max_width={w:g} mm` in `{g.label.rsplit('.', 1)[-1]}` "
+                        f"(it shrinks about its position point; it is {u1 - u0:.1f} mm wide), "
+                        f"or `size={fit:g} mm`")
+        ways.append(f"move `{g.label}` clear of `{m.label}`")
+        if fit is None:                 # not measured (0.0: no smaller text clears the mark)
+            ways.append("make the text smaller")
         sink.warning("W0513", f"text `{g.label}` (\"{g.data.get('text', '')}\") is drawn over "
-                     f"the engraved `{m.label}`: it runs {length:.2f} mm through the text",
-                     g.span, labels=labels,
-                     hint=f"move `{g.label}` clear of `{m.label}` (beside a tick mark, not on "
-                          "it: e.g. further out along the same direction), or shorten the mark")
+                     f"the engraved `{m.label}`: `{m.label.rsplit('.', 1)[-1]}` crosses it{at}, "
+                     f"{length:.2f} mm of it inside the text's box", g.span, labels=labels,
+                     hint="; or ".join(ways))
     entering = {(i, j) for (i, j), x in zip(pairs.tolist(), inside)
                 if x > IN_BOX - 1e-9 and tg[i].data.get("along") is None}
     _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs,
                      M, entering, sink, tick)
+
+
+def _is_tick(items, rot: float, box, size: float) -> bool:
+    """True for a mark that is one straight line with an end at the text (in its box, in the
+    frame turned by ``rot``, grown by the text's ``size``): a dial's tick under its number,
+    whose fix is to move the label beside it.  A line that runs through and past the text on
+    both sides, a ring, an arc or an outline is not a tick (issue 105: a ring around a word was
+    told "beside a tick mark")."""
+    if len(items) != 1 or items[0][0] != "line":
+        return False
+    u0, v0, u1, v1 = box
+    c, s_ = math.cos(rot), math.sin(rot)
+    for p in (items[0][1], items[0][2]):
+        u, v = p[0] * c + p[1] * s_, -p[0] * s_ + p[1] * c
+        if u0 - size <= u <= u1 + size and v0 - size <= v <= v1 + size:
+            return True
+    return False
+
+
+def _letters_crossed(g, L, mseg, rot: float, box) -> str:
+    """The letters of text ``g`` (its strokes ``L``, k x 2 x 2, in the order of its font) at
+    which the mark's segments ``mseg`` (starts, ends) run inside the box ``box`` (u0, v0, u1,
+    v1 in the frame turned by ``rot``): each letter whose strokes span the u of a point of
+    the mark inside the box (its segments' ends and midpoints), said as ``"S" and "F"``; ""
+    when the strokes cannot be read as letters."""
+    from .engravings import _letters_of, _say_letters
+    text = str(g.data.get("text", ""))
+    per = _letters_of(text, len(L))
+    if per is None:
+        return ""
+    c, s_ = math.cos(rot), math.sin(rot)
+    u0, v0, u1, v1 = box
+    A, B = np.asarray(mseg[0], float), np.asarray(mseg[1], float)
+    au, av = A[:, 0] * c + A[:, 1] * s_, -A[:, 0] * s_ + A[:, 1] * c
+    bu, bv = B[:, 0] * c + B[:, 1] * s_, -B[:, 0] * s_ + B[:, 1] * c
+    meet = ((np.maximum(au, bu) >= u0) & (np.minimum(au, bu) <= u1)
+            & (np.maximum(av, bv) >= v0) & (np.minimum(av, bv) <= v1))
+    # the segments whose box meets the text's, each at 65 points (a long line through the
+    # whole word: its ends and middle alone named one letter)
+    t = np.linspace(0.0, 1.0, 65)[None, :]
+    u = (au[meet][:, None] + t * (bu - au)[meet][:, None]).ravel()
+    v = (av[meet][:, None] + t * (bv - av)[meet][:, None]).ravel()
+    u = u[(u >= u0) & (u <= u1) & (v >= v0) & (v <= v1)]
+    if not len(u):
+        return ""
+    su = L[:, :, 0] * c + L[:, :, 1] * s_            # k x 2: the strokes' ends along the baseline
+    per = np.asarray(per)
+    spans = {i: (su[per == i].min(), su[per == i].max()) for i in set(per.tolist())}
+    hit = set()
+    for x in u:
+        near = min(spans, key=lambda i: max(spans[i][0] - x, x - spans[i][1], 0.0))
+        hit.add(near)
+    if len(hit) > 2 and len(hit) == len(spans):
+        return "every letter"
+    return _say_letters(text, sorted(hit))
 
 
 def _clear_of(tseg, mseg, rot, box, c: float, shift=(0.0, 0.0)) -> bool:
