@@ -253,6 +253,34 @@ def two_plates(first=60.0, second=50.0, gap=10.0, height=40.0) -> bytes:
     return _bytes(doc)
 
 
+def _rounded(m, w, h, r):
+    """A plate's outline as one polyline with rounded corners (bulges of a quarter turn)."""
+    b = math.tan(math.pi / 8)
+    m.add_lwpolyline([(r, 0, 0), (w - r, 0, b), (w, r, 0), (w, h - r, b), (w - r, h, 0),
+                      (r, h, b), (0, h - r, 0), (0, r, b)], format="xyb", close=True)
+
+
+def motor_plate(width=160.0, height=100.0, spacing=31.0, hole=3.4, slot_length=14.0,
+                edge_in=12.0, motor_in=40.0) -> bytes:
+    """A motor mount plate dimensioned from its far edges (issue 103): the outline a polyline
+    with 5 mm rounded corners; a NEMA 17's 22 mm bore ``motor_in`` from the right and the top
+    edges, its four holes round it; two holes of the motor holes' size 10 mm in from the
+    right edge, ``edge_in`` from the top and bottom; two vertical mounting slots (two lines, two
+    arcs) 12 mm from the left edge, 20 mm from the top and bottom."""
+    doc, m = _doc()
+    _rounded(m, width, height, 5.0)
+    for y in (20.0, height - 20.0):
+        _slot(m, 12.0, y, slot_length, 5.5)
+    c = (width - motor_in, height - motor_in)
+    m.add_circle(c, 11.0)
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            m.add_circle((c[0] + sx * spacing / 2, c[1] + sy * spacing / 2), hole / 2)
+    for y in (edge_in, height - edge_in):
+        m.add_circle((width - 10.0, y), hole / 2)
+    return _bytes(doc)
+
+
 DRAWINGS = {
     "nema17": (nema17, [
         ("plate width", r"width", 60, 70, "width"),
@@ -333,6 +361,13 @@ DRAWINGS = {
         ("bolt count", r"\w*_n", 4, 6, "count"),
         ("pitch circle", r"\w*_pcd", 50, 56, "pcd"),
         ("first hole's angle", r"\w*_angle", 45, 30, "angle"),
+    ]),
+    "motor_plate": (motor_plate, [
+        ("plate width", r"width", 160, 190, "width"),
+        ("plate height", r"height", 100, 120, "height"),
+        ("motor hole spacing", r"motor_holes_(pitch|spacing)", 31, 26, "spacing"),
+        ("slot length", r"slots_length", 14, 18, "slot_length"),
+        ("edge holes' inset", r"holes_inset", 12, 15, "edge_in"),
     ]),
     "two_plates": (two_plates, [
         ("first plate's width", r"l_01_width", 60, 80, "first"),

@@ -13,10 +13,12 @@ import io
 import math
 
 import ezdxf
+from ezdxf import bbox
 import pytest
 
 import aidl_lang
 from test_infer_round5 import _doc, _text  # a plate drawn with ezdxf; its import (--infer)
+from aidl_lang.drawing.infer import import_drawing
 
 
 def _holes(text: str, tmp_path, **edit) -> list:
@@ -184,3 +186,40 @@ def test_an_inch_row_cad_rounded_keeps_its_pitch_in_inches(tmp_path):
     mid = 0.9 + 1.5 * 0.4                   # about its middle (0.9 in: past 1.5 pitches)
     want = [(mid + (k - 1.5) * 0.5 + o) * 25.4 for k, o in enumerate(off)]
     assert max(abs(g[0] - w) for g, w in zip(got, want)) < 1e-6, (got, text)
+
+
+def _motor_text() -> str:
+    from maker_drawings import motor_plate     # the outline a polyline with rounded corners
+    text, _ = import_drawing(motor_plate(), "m.dxf", infer=True)
+    return text
+
+
+def _motor_holes(w, h, spacing=31.0, edge_in=12.0) -> list:
+    """The motor plate's circles as the maker dimensioned them: from the right and top."""
+    c = (w - 40.0, h - 40.0)
+    out = [(c[0], c[1], 22.0)] + [(c[0] + sx * spacing / 2, c[1] + sy * spacing / 2, 3.4)
+                                  for sx in (-1, 1) for sy in (-1, 1)]
+    out += [(w - 10.0, y, 3.4) for y in (edge_in, h - edge_in)]
+    return sorted((round(x, 9) + 0.0, round(y, 9) + 0.0, d) for x, y, d in out)
+
+
+def test_a_motor_plate_keeps_its_features_at_the_far_edges(tmp_path):
+    """A motor mount drawn from its lower left corner whose motor and holes are dimensioned
+    from the right and top edges, two holes of the motor holes' size by the right edge, two
+    slots (lines and arcs) 20 mm from the top and bottom: a wider or taller plate keeps each
+    at its distance from its own edge (the slots were spread about the centre line; the two
+    holes were single holes and the motor's four a grid off its bore)."""
+    text = _motor_text()
+    assert "far right and top edges" in text and "slots_inset = 20 mm" in text, text
+    assert "holes_inset = 12 mm" in text and "bore_c = (width - 40, height - 40)" in text, text
+    assert _holes(text, tmp_path) == _motor_holes(160, 100), text
+    assert _holes(text, tmp_path, width=190, height=120) == _motor_holes(190, 120), text
+    got = _holes(text, tmp_path, motor_holes_pitch=26, holes_inset=15)
+    assert got == _motor_holes(160, 100, 26, 15), (got, text)
+    res = aidl_lang.compile(text, path=tmp_path / "m.aidl", overrides={"height": 120})
+    ms = ezdxf.read(io.StringIO(res.to_dxf())).modelspace()
+    boxes = [bbox.extents([e]) for e in ms if e.dxftype() != "CIRCLE"]
+    ys = sorted((round(b.extmin.y, 9), round(b.extmax.y, 9)) for b in boxes
+                if abs(b.extmin.x - 9.25) < 1e-6 and abs(b.extmax.x - 14.75) < 1e-6)
+    # each slot (14 long, 5.5 wide, 12 mm from the left) 20 mm from the bottom and the top
+    assert ys == [(13.0, 27.0), (93.0, 107.0)], (ys, text)
