@@ -44,7 +44,7 @@ from collections import Counter
 from ...geometry.shapes.curves import Loop
 from .attachments import _attachments, _circle_attachments
 from .params import _Params, _add0, _ctor, _deg, _hole_name, _r
-from .patterns.find import (_Cells, _copies, _grid, _line, _polar, _runs, _stagger,
+from .patterns.find import (lattices, _Cells, _copies, _grid, _line, _polar, _runs, _stagger,
                             _hex_field, _hex_rect, _whole, _features, _unknown)
 from .shapes import EQUAL_TOL, ROUND_TOL, Shape, _close, circular, recognise
 from .anchors import _Anchored
@@ -195,7 +195,9 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
                 corners_and_pattern(cs, body, r) or _features(cs, r) or \
                 rings(cs, ([body[0].center] if body is not None else []) + self.named.points) \
                 or corner_sets(cs, body, rest=True) or ring_in_scatter(cs)
-            # equal holes of several features (a grille and a grid): each its own pattern
+            # equal holes of several features (a grille and a grid): each its own pattern;
+            # a sibling's lattice for one with a hole left out (irregular: _gapped_as)
+            self.kin = lattices([[cs[i] for i in part] for part in parts or []])
             for part in parts or [range(len(g))]:
                 sub = [g[i] for i in part]
                 if len(sub) == 1:
@@ -463,7 +465,8 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
         # a row, a column or a grid
         gr = _grid(cs)
         if gr is not None:
-            self.grid(depth, sh, base, gr)
+            if not self.perforated(depth, sh, base, gr):    # a field over most of the plate
+                self.grid(depth, sh, base, gr)
             return True
         if self.irregular(depth, g, sh, base, cs):  # a fan grille, a gap list, CAD rounding
             return True
