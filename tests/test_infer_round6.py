@@ -9,6 +9,7 @@ a grid, a row and a 4-hole set); a row whose holes CAD rounded up to 0.05 mm off
 stays one row, exact.  Cost: a few imports and about ten compiles (seconds)."""
 from __future__ import annotations
 
+import dataclasses
 import io
 import math
 
@@ -294,3 +295,32 @@ def test_two_irregular_groups_of_one_size_stay_two_patterns(tmp_path, left_off, 
     got = _holes(text, tmp_path, width=240, height=120)
     want = sorted((round(x + (40 if x > 100 else 0), 9) + 0.0, y + 10, 4.0) for x, y in holes)
     assert got == want, (got, text)
+
+
+@pytest.mark.parametrize("kind", ["edgepair", "perforated", "twogroups"])
+def test_generated_round6_kinds_keep_their_edges(tmp_path, kind):
+    """The generated kinds of this round (tests/gen_drawings.py, truths from the spec: two
+    holes or slots by their own edges, a perforated plate, two 2 x 2 groups one CAD rounded
+    and one with a hole left out), their labels left off: each drawing's program is the
+    drawing, and a new width and height (15 % more) give the edited design's drawing."""
+    import random
+
+    import gen_drawings as gen
+    from benchmarks.imports import infer_edits as bench
+    for seed in range(4):
+        d = gen.random_design(random.Random(seed), [kind], pool=(kind,))
+        d.features = [f for f in d.features if f["kind"] != "label"]
+        suffix, data = gen.export(d)
+        text, _ = import_drawing(data, "d" + suffix, infer=True)
+        assert bench.compare(d, bench.output_of(text, tmp_path / "d.aidl"), tmp_path) == [], \
+            (d.describe(), text)
+        for e in d.edits():
+            if e.kind != "body":
+                continue
+            new = round(d.value(e) * 1.15, 2)
+            d2 = d.edited(e, new)
+            if not d2.valid():
+                continue
+            name, ov = bench.find_param(text, d, dataclasses.replace(e, new=new))
+            got = bench.output_of(text, tmp_path / "e.aidl", {name: ov})
+            assert bench.compare(d2, got, tmp_path) == [], (d.describe(), e.label, text)
