@@ -207,7 +207,11 @@ class _Fields:
                                              body.center[axis]))
         for k, ln in enumerate(loops):
             w.emit(depth + k, ln)
+        looped = len(self.looped)
         self.hole_block(depth + 2, hn, sh, f"({out[0]}, {out[1]})", hole, turns.grid(*gr))
+        # a label beside the field is placed as a feature is: the counts are the solid's own
+        # names, which a drawing block beside the part does not see
+        del self.looped[looped:]
         w.emit(depth + 1, "}")
         w.emit(depth, "}")
         self.stats.readings.append(
