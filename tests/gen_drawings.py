@@ -73,7 +73,16 @@ ROUND5_KINDS = ("corners", "comb", "board", "flange")
 # each hole's offset off the pitch, at most 0.03 mm or 0.0015 in; it stays as drawn)
 IRREGULAR_KINDS = ("oddcorners", "gapgrid", "cadrow")
 BASE_KINDS = {"oddcorners": "corners", "gapgrid": "grid", "cadrow": "row"}
-ALL_KINDS = KINDS + NEW_KINDS + ROUND5_KINDS + IRREGULAR_KINDS
+# issue 103 (round six, continued), drawn only when asked (--kinds round6), their truths from the
+# spec: two holes or slots mirrored about a centre line, each ``inset`` from its own edge (the
+# far one too; ``dir`` the axis they are apart along, the other axis tied by its anchor:
+# ``edgepair``), a perforated plate (``perforated``: round holes ``d`` on a square ``p`` filling
+# the plate less its ``margin``, as many each way as lie whole in it, centred), two 2 x 2 groups
+# of one hole size each ``inset`` from its end of the plate along ``dir``, the first with a hole
+# CAD rounded off its node (``off_at``: 0.03 mm, 0.0015 in), the second with one left out
+# (``gap``) (``twogroups``: each group kept from its own edge)
+ROUND6_KINDS = ("edgepair", "perforated", "twogroups")
+ALL_KINDS = KINDS + NEW_KINDS + ROUND5_KINDS + IRREGULAR_KINDS + ROUND6_KINDS
 
 
 def base_kind(f) -> str:
@@ -342,10 +351,49 @@ class Design:
         t = f["inset"]
         return [(x, y) for x in (x0 + t, x0 + self.width - t) for y in (y0 + t, y0 + self.height - t)]
 
+    def plate_members(self, f) -> list:
+        """The centres of a feature placed by the plate's size (design units): an edge pair's
+        two, each ``inset`` from its own edge; a perforated plate's field, as many each way as
+        lie whole in the plate less its margin, centred on it; two groups' holes, each group
+        ``inset`` from its own end."""
+        x0, y0 = self.origin
+        W, H = self.width, self.height
+        k = f["kind"]
+        if k == "edgepair":
+            if f["dir"] == "y":
+                x = self._axis(f["ax"], 0.0, 0)
+                return [(x, y0 + f["inset"]), (x, y0 + H - f["inset"])]
+            y = self._axis(f["ay"], 0.0, 1)
+            return [(x0 + f["inset"], y), (x0 + W - f["inset"], y)]
+        if k == "perforated":
+            nx = math.floor((W - 2 * f["margin"] - f["d"]) / f["p"] + 1e-9) + 1
+            ny = math.floor((H - 2 * f["margin"] - f["d"]) / f["p"] + 1e-9) + 1
+            return [(x0 + W / 2 + (i - (nx - 1) / 2) * f["p"],
+                     y0 + H / 2 + (j - (ny - 1) / 2) * f["p"]) for i in range(nx)
+                    for j in range(ny)]
+        p, t = f["p"], f["inset"]
+        size, across = (W, H) if f["dir"] == "x" else (H, W)
+        out = []
+        for g, start in ((0, t), (1, size - t - p)):
+            for i in range(2):
+                for j in range(2):
+                    if g == 1 and (i, j) == tuple(f["gap"]):
+                        continue
+                    a = start + i * p + (f["q"] if g == 0 and (i, j) == tuple(f["off_at"])
+                                         else 0.0)
+                    b = across / 2 + (j - 0.5) * p
+                    out.append((x0 + a, y0 + b) if f["dir"] == "x" else (x0 + b, y0 + a))
+        return out
+
     def feature_loops(self, i: int) -> list:
         """The loops of feature ``i`` (design units): its holes (a notch: none, it is in the
         outline; a label: none)."""
         f = self.features[i]
+        if f["kind"] in ROUND6_KINDS:
+            if f.get("member") == "slot":
+                return [slot_loop(c, f["length"], f["w"], math.radians(f["angle"]))
+                        for c in self.plate_members(f)]
+            return [circle(c, f["d"] / 2) for c in self.plate_members(f)]
         if base_kind(f) == "corners":
             if f["member"] == "hole":
                 return [circle(c, (f["d_odd"] if k == f.get("odd") else f["d"]) / 2)
@@ -400,6 +448,8 @@ class Design:
                 where = at(f["at"], 0 if f["edge"] in "BT" else 1)
             elif k == "corners":
                 where = f"at the corners, {f['inset']:g} in"
+            elif "ax" not in f:
+                where = "by the plate's size"
             else:
                 where = f"{at(f['ax'], 0)}, {at(f['ay'], 1)}"
             out.append(f"{i}: {k} ({sizes}): {where}")
@@ -460,6 +510,16 @@ class Design:
                 add("count", "n", "count", N)
             if k in ("boltcircle", "flange") and f.get("bore"):
                 add("size", "bore", "bore", [(r"(bore_)?(d|diameter)", 1.0)])
+            if k == "edgepair":
+                if f["member"] == "hole":
+                    add("size", "d", "diameter", D)
+                else:
+                    add("size", "length", "slot length", [(r"length|len|l", 1.0)])
+                add("pitch", "inset", "inset", [(r"inset|margin", 1.0)])
+            if k == "perforated":
+                add("size", "d", "diameter", D)
+                add("pitch", "p", "pitch", P)
+                add("pitch", "margin", "margin", [(r"margin", 1.0)])
             if k == "corners":
                 if f["member"] == "hole":
                     add("size", "d", "diameter", D)
@@ -763,6 +823,23 @@ def _reads_as_tied(d: Design, f) -> bool:
     return False
 
 
+def _roundest_margin(size: float, f) -> float:
+    """The margin docs/import.md reads off a perforated plate's holes along a side ``size``
+    long: of the margins that keep exactly those holes (``(tight - p / 2, tight]``, tight
+    from the edge to the outer holes' edges), the roundest (the multiple of the largest step
+    10, 5, 2.5, 2, 1, 0.5, ... times a power of ten in it)."""
+    n = math.floor((size - 2 * f["margin"] - f["d"]) / f["p"] + 1e-9) + 1
+    tight = (size - (n - 1) * f["p"] - f["d"]) / 2
+    lo, hi = tight - f["p"] / 2, tight
+    for e in range(6, -10, -1):
+        for k in (1.0, 0.5, 0.25, 0.2):
+            step = k * 10.0 ** e
+            v = math.floor(hi / step + 1e-9) * step
+            if lo + 1e-9 < v <= hi + 1e-9:
+                return round(v, 9)
+    return hi
+
+
 def _valid(d: Design) -> bool:
     """Every feature well inside the plate, clear of every other, each shape sound."""
     m = 1.5 / d.u
@@ -823,6 +900,25 @@ def _valid(d: Design) -> bool:
         if f["kind"] == "gapgrid" and (f["nx"] * f["ny"] < 6 or
                                        not any(i < f["nx"] and j < f["ny"] for i, j in f["gaps"])):
             return False        # a gap list needs a lattice a gap leaves one (issue 103)
+        if k == "edgepair" and not 0 < f["inset"] * 4 < \
+                (d.width if f["dir"] == "x" else d.height) - 1e-9:
+            return False        # nearer its edge than the centre line (a tie: no edge pair)
+        if k == "perforated":
+            for size in (d.width, d.height):
+                n = math.floor((size - 2 * f["margin"] - f["d"]) / f["p"] + 1e-9) + 1
+                if n < 5 or (n - 1) * f["p"] + f["d"] < 2 / 3 * size or \
+                        not f["p"] - f["d"] < f["margin"] - 1e-9 or f["margin"] >= 3 * f["p"]:
+                    return False    # a field over the plate but for its margin (issue 103)
+            if f["p"] < f["d"] + m or any(_roundest_margin(size, f) != f["margin"]
+                                          for size in (d.width, d.height)):
+                return False        # the margin the spec reads (its roundest) is another
+        if k in ROUND6_KINDS and any(g is not f and (g.get("d"), g.get("w")) ==
+                                     (f.get("d"), f.get("w")) for g in d.features):
+            return False            # holes of one size of two features: one set (no pattern)
+        if k == "twogroups" and ((d.width if f["dir"] == "x" else d.height)
+                                 - 2 * f["inset"] - 2 * f["p"] <= 2 * f["p"]
+                                 or f["p"] < f["d"] + m):
+            return False        # two groups apart (each nearer its own than the other)
         if k == "corners" and f["inset"] * 4 >= min(d.width, d.height) - 1e-9:
             return False        # nearer the edges than the centre lines (a tie: no corner)
         if k == "flange" and (f["pcd"] * math.sin(math.pi / f["n"]) < f["d"] + m
@@ -966,6 +1062,21 @@ def random_feature(rng: random.Random, T: dict, kind: str) -> dict:
         if f["py"] == f["px"]:
             f["py"] = None
         f["gaps"] = [(rng.randrange(f["nx"]), rng.randrange(f["ny"]))]
+    elif kind == "edgepair":            # two mirrored about a centre line, by their edges
+        f.update(dir=rng.choice("xy"), member=rng.choice(["hole", "hole", "slot"]), d=d,
+                 inset=rng.choice(T["off"]))
+        f["ay" if f["dir"] == "y" else "ax"] = ("C", 0.0)
+        if f["member"] == "slot":
+            f.update(w=d, length=d + rng.choice(T["pitch"][:3]), angle=rng.choice([0, 90]))
+            del f["d"]
+    elif kind == "perforated":          # a field over the plate but for its margin
+        f = {"kind": kind, "d": rng.choice(T["d"][:7]), "p": rng.choice(T["pitch"][1:]),
+             "margin": rng.choice(T["off"][2:])}
+    elif kind == "twogroups":           # two 2 x 2 groups of one size, one at each end
+        f = {"kind": kind, "dir": rng.choice("xy"), "d": d, "p": rng.choice(T["pitch"]),
+             "inset": rng.choice(T["off"]), "gap": (rng.randrange(2), rng.randrange(2)),
+             "off_at": (rng.randrange(2), rng.randrange(2)),
+             "q": 0.03 if T is MM else 0.0015}
     elif kind == "corners":
         f = {"kind": kind, "member": rng.choice(["hole", "hole", "slot"]), "d": d,
              "inset": rng.choice(T["off"][1:])}

@@ -14,7 +14,9 @@ program rendered must be the drawing of the function with that keyword, up to a 
 Issue 103 (round six) adds drawings that are not perfectly regular, as makers' files are: a
 corner plate with one hole drilled larger, a grid with a hole left out, a fan grille of
 square-set holes in a round field, a flange's four holes at 45 degrees, two plates side by
-side in one file.
+side in one file; a motor plate dimensioned from its far edges, perforated plates (a square-set
+and a staggered field over the plate but for a margin), two 2 x 2 groups of one hole size, one
+CAD rounded, the other with a hole left out.
 
 Used by benchmarks/imports/infer_edits.py (the share of edits that do what was meant) and
 tests/test_import_infer_edits.py (the key edits).
@@ -253,6 +255,82 @@ def two_plates(first=60.0, second=50.0, gap=10.0, height=40.0) -> bytes:
     return _bytes(doc)
 
 
+def _rounded(m, w, h, r):
+    """A plate's outline as one polyline with rounded corners (bulges of a quarter turn)."""
+    b = math.tan(math.pi / 8)
+    m.add_lwpolyline([(r, 0, 0), (w - r, 0, b), (w, r, 0), (w, h - r, b), (w - r, h, 0),
+                      (r, h, b), (0, h - r, 0), (0, r, b)], format="xyb", close=True)
+
+
+def motor_plate(width=160.0, height=100.0, spacing=31.0, hole=3.4, slot_length=14.0,
+                edge_in=12.0, motor_in=40.0) -> bytes:
+    """A motor mount plate dimensioned from its far edges (issue 103): the outline a polyline
+    with 5 mm rounded corners; a NEMA 17's 22 mm bore ``motor_in`` from the right and the top
+    edges, its four holes round it; two holes of the motor holes' size 10 mm in from the
+    right edge, ``edge_in`` from the top and bottom; two vertical mounting slots (two lines, two
+    arcs) 12 mm from the left edge, 20 mm from the top and bottom."""
+    doc, m = _doc()
+    _rounded(m, width, height, 5.0)
+    for y in (20.0, height - 20.0):
+        _slot(m, 12.0, y, slot_length, 5.5)
+    c = (width - motor_in, height - motor_in)
+    m.add_circle(c, 11.0)
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            m.add_circle((c[0] + sx * spacing / 2, c[1] + sy * spacing / 2), hole / 2)
+    for y in (edge_in, height - edge_in):
+        m.add_circle((width - 10.0, y), hole / 2)
+    return _bytes(doc)
+
+
+def perforated(width=200.0, height=150.0, hole=5.0, pitch=10.0, margin=15.0) -> bytes:
+    """A perforated plate (issue 103): a square-set field of holes over the plate but for a
+    ``margin`` all round, as a maker fills it: as many holes each way as lie whole in the
+    field, centred in it (17 x 12 at the defaults)."""
+    doc, m = _doc()
+    _rect(m, 0, 0, width, height)
+    nx = math.floor((width - 2 * margin - hole) / pitch + 1e-9) + 1
+    ny = math.floor((height - 2 * margin - hole) / pitch + 1e-9) + 1
+    for i in range(nx):
+        for j in range(ny):
+            m.add_circle((width / 2 + (i - (nx - 1) / 2) * pitch,
+                          height / 2 + (j - (ny - 1) / 2) * pitch), hole / 2)
+    return _bytes(doc)
+
+
+def perforated_hex(width=200.0, height=150.0, hole=5.0, pitch=10.0, margin=15.0) -> bytes:
+    """A perforated plate with a staggered (hex, 60 degree) field: the lattice about the
+    plate's centre (a hole on it, alternate rows half a pitch over), every hole lying whole
+    in the plate less a ``margin`` all round."""
+    doc, m = _doc()
+    _rect(m, 0, 0, width, height)
+    dy = pitch * math.sqrt(3) / 2
+    k = int(max(width, height) / pitch) + 1
+    for j in range(-k, k + 1):
+        for i in range(-k, k + 1):
+            x, y = (i + (j % 2) / 2) * pitch, j * dy
+            if abs(x) + hole / 2 <= width / 2 - margin + 1e-9 and \
+                    abs(y) + hole / 2 <= height / 2 - margin + 1e-9:
+                m.add_circle((width / 2 + x, height / 2 + y), hole / 2)
+    return _bytes(doc)
+
+
+def two_groups(width=200.0, height=100.0, pitch=30.0, hole=4.0, inset=20.0) -> bytes:
+    """Two 2 x 2 groups of one hole size (issue 103), each ``inset`` from its end of the
+    plate and centred on its height: the left one with a hole CAD rounded 0.03 mm off its
+    node, the right one with its top right hole left out."""
+    doc, m = _doc()
+    _rect(m, 0, 0, width, height)
+    for i in range(2):
+        for j in range(2):
+            x = inset + i * pitch + (0.03 if (i, j) == (1, 0) else 0.0)
+            m.add_circle((x, height / 2 + (j - 0.5) * pitch), hole / 2)
+            if (i, j) != (1, 1):
+                m.add_circle((width - inset - pitch + i * pitch,
+                              height / 2 + (j - 0.5) * pitch), hole / 2)
+    return _bytes(doc)
+
+
 DRAWINGS = {
     "nema17": (nema17, [
         ("plate width", r"width", 60, 70, "width"),
@@ -333,6 +411,30 @@ DRAWINGS = {
         ("bolt count", r"\w*_n", 4, 6, "count"),
         ("pitch circle", r"\w*_pcd", 50, 56, "pcd"),
         ("first hole's angle", r"\w*_angle", 45, 30, "angle"),
+    ]),
+    "motor_plate": (motor_plate, [
+        ("plate width", r"width", 160, 190, "width"),
+        ("plate height", r"height", 100, 120, "height"),
+        ("motor hole spacing", r"motor_holes_(pitch|spacing)", 31, 26, "spacing"),
+        ("slot length", r"slots_length", 14, 18, "slot_length"),
+        ("edge holes' inset", r"holes_inset", 12, 15, "edge_in"),
+    ]),
+    "perforated": (perforated, [
+        ("hole pitch", r"holes_pitch", 10, 15, "pitch"),
+        ("hole pitch (finer)", r"holes_pitch", 10, 8, "pitch"),
+        ("hole size", r"holes_d", 5, 4, "hole"),
+        ("plate width", r"width", 200, 230, "width"),
+        ("margin", r"holes_margin", 15, 20, "margin"),
+    ]),
+    "perforated_hex": (perforated_hex, [
+        ("hole pitch", r"holes_pitch", 10, 15, "pitch"),
+        ("hole size", r"holes_d", 5, 6, "hole"),
+        ("plate height", r"height", 150, 170, "height"),
+        ("margin", r"holes_margin", 15, 12, "margin"),
+    ]),
+    "two_groups": (two_groups, [
+        ("plate width", r"width", 200, 240, "width"),
+        ("plate height", r"height", 100, 120, "height"),
     ]),
     "two_plates": (two_plates, [
         ("first plate's width", r"l_01_width", 60, 80, "first"),

@@ -9,14 +9,17 @@ a grid, a row and a 4-hole set); a row whose holes CAD rounded up to 0.05 mm off
 stays one row, exact.  Cost: a few imports and about ten compiles (seconds)."""
 from __future__ import annotations
 
+import dataclasses
 import io
 import math
 
 import ezdxf
+from ezdxf import bbox
 import pytest
 
 import aidl_lang
 from test_infer_round5 import _doc, _text  # a plate drawn with ezdxf; its import (--infer)
+from aidl_lang.drawing.infer import import_drawing
 
 
 def _holes(text: str, tmp_path, **edit) -> list:
@@ -184,3 +187,140 @@ def test_an_inch_row_cad_rounded_keeps_its_pitch_in_inches(tmp_path):
     mid = 0.9 + 1.5 * 0.4                   # about its middle (0.9 in: past 1.5 pitches)
     want = [(mid + (k - 1.5) * 0.5 + o) * 25.4 for k, o in enumerate(off)]
     assert max(abs(g[0] - w) for g, w in zip(got, want)) < 1e-6, (got, text)
+
+
+def _motor_text() -> str:
+    from maker_drawings import motor_plate     # the outline a polyline with rounded corners
+    text, _ = import_drawing(motor_plate(), "m.dxf", infer=True)
+    return text
+
+
+def _motor_holes(w, h, spacing=31.0, edge_in=12.0) -> list:
+    """The motor plate's circles as the maker dimensioned them: from the right and top."""
+    c = (w - 40.0, h - 40.0)
+    out = [(c[0], c[1], 22.0)] + [(c[0] + sx * spacing / 2, c[1] + sy * spacing / 2, 3.4)
+                                  for sx in (-1, 1) for sy in (-1, 1)]
+    out += [(w - 10.0, y, 3.4) for y in (edge_in, h - edge_in)]
+    return sorted((round(x, 9) + 0.0, round(y, 9) + 0.0, d) for x, y, d in out)
+
+
+def test_a_motor_plate_keeps_its_features_at_the_far_edges(tmp_path):
+    """A motor mount drawn from its lower left corner whose motor and holes are dimensioned
+    from the right and top edges, two holes of the motor holes' size by the right edge, two
+    slots (lines and arcs) 20 mm from the top and bottom: a wider or taller plate keeps each
+    at its distance from its own edge (the slots were spread about the centre line; the two
+    holes were single holes and the motor's four a grid off its bore)."""
+    text = _motor_text()
+    assert "far right and top edges" in text and "slots_inset = 20 mm" in text, text
+    assert "holes_inset = 12 mm" in text and "bore_c = (width - 40, height - 40)" in text, text
+    assert _holes(text, tmp_path) == _motor_holes(160, 100), text
+    assert _holes(text, tmp_path, width=190, height=120) == _motor_holes(190, 120), text
+    got = _holes(text, tmp_path, motor_holes_pitch=26, holes_inset=15)
+    assert got == _motor_holes(160, 100, 26, 15), (got, text)
+    res = aidl_lang.compile(text, path=tmp_path / "m.aidl", overrides={"height": 120})
+    ms = ezdxf.read(io.StringIO(res.to_dxf())).modelspace()
+    boxes = [bbox.extents([e]) for e in ms if e.dxftype() != "CIRCLE"]
+    ys = sorted((round(b.extmin.y, 9), round(b.extmax.y, 9)) for b in boxes
+                if abs(b.extmin.x - 9.25) < 1e-6 and abs(b.extmax.x - 14.75) < 1e-6)
+    # each slot (14 long, 5.5 wide, 12 mm from the left) 20 mm from the bottom and the top
+    assert ys == [(13.0, 27.0), (93.0, 107.0)], (ys, text)
+
+
+def _fill(w, h, p, d, margin) -> list:
+    """A perforated plate's holes as a maker fills its field (the plate less ``margin``): as
+    many each way as lie whole in it, centred."""
+    nx = math.floor((w - 2 * margin - d) / p + 1e-9) + 1
+    ny = math.floor((h - 2 * margin - d) / p + 1e-9) + 1
+    return sorted((round(w / 2 + (i - (nx - 1) / 2) * p, 9) + 0.0,
+                   round(h / 2 + (j - (ny - 1) / 2) * p, 9) + 0.0, d)
+                  for i in range(nx) for j in range(ny))
+
+
+def test_a_perforated_plates_pitch_refills_the_plate_less_its_margin(tmp_path):
+    """A square-set field of 5 mm holes over a 200 x 150 plate but for a 15 mm margin (17 x
+    12 on a 10 mm pitch): a new pitch, plate size or margin refills the field with as many
+    holes as fit, centred (it was a 17 x 12 grid: 15 mm spread it past the plate's edge)."""
+    doc, m = _doc(200, 150)
+    for x, y, d in _fill(200, 150, 10, 5, 15):
+        m.add_circle((x, y), d / 2)
+    text = _text(doc)
+    assert "param holes_margin = 15 mm" in text and "perforated" in text, text
+    assert _holes(text, tmp_path) == _fill(200, 150, 10, 5, 15), text
+    for edit, want in (({"holes_pitch": 15}, _fill(200, 150, 15, 5, 15)),     # 12 x 8
+                       ({"holes_pitch": 8}, _fill(200, 150, 8, 5, 15)),
+                       ({"width": 230, "holes_margin": 20}, _fill(230, 150, 10, 5, 20)),
+                       ({"holes_d": 4}, _fill(200, 150, 10, 4, 15))):
+        got = _holes(text, tmp_path, **edit)
+        assert got == want, (edit, len(got), len(want), text)
+    assert len(_fill(200, 150, 15, 5, 15)) == 12 * 8
+
+
+def test_a_perforated_plates_hex_field_follows_the_plate(tmp_path):
+    """A staggered field over the plate but for its margin: the field is the plate less the
+    margin (it was a field of its own size: a taller plate kept it, a new margin had no
+    param); a new pitch refills it about the plate's centre."""
+    from maker_drawings import perforated_hex
+    text, _ = import_drawing(perforated_hex(), "p.dxf", infer=True)
+    assert "param holes_margin = 15 mm" in text, text
+    for edit, kw in (({}, {}), ({"height": 170}, {"height": 170.0}),
+                     ({"holes_margin": 12, "holes_pitch": 15}, {"margin": 12.0, "pitch": 15.0})):
+        doc = ezdxf.read(io.StringIO(perforated_hex(**kw).decode()))
+        want = sorted((round(e.dxf.center.x, 9) + 0.0, round(e.dxf.center.y, 9) + 0.0,
+                       round(2 * e.dxf.radius, 9)) for e in doc.modelspace()
+                      if e.dxftype() == "CIRCLE")
+        assert _holes(text, tmp_path, **edit) == want, (edit, text)
+
+
+@pytest.mark.parametrize("left_off, right_gap", [(0.03, True), (0.0, True), (0.03, False)])
+def test_two_irregular_groups_of_one_size_stay_two_patterns(tmp_path, left_off, right_gap):
+    """Two 2 x 2 groups of 4 mm holes 20 mm in from each end of a 200 x 100 plate, the left
+    one with a hole CAD rounded 0.03 mm off its node, the right one with a hole left out:
+    two patterns (a grid, a grid with a gap list), each kept from its own edge (they were
+    "7 holes fit no pattern", one set placed from the centre: at width 240 every hole moved
+    20 mm)."""
+    doc, m = _doc(200, 100)
+    holes = []
+    for i in range(2):
+        for j in range(2):
+            holes.append((20 + i * 30 + (left_off if (i, j) == (1, 0) else 0.0), 35 + j * 30))
+            if not (right_gap and (i, j) == (1, 1)):
+                holes.append((150 + i * 30, 35 + j * 30))
+    for x, y in holes:
+        m.add_circle((x, y), 2)
+    text = _text(doc)
+    assert "fit no pattern" not in text and "set `" not in text, text
+    assert ("grid with a gap list" in text) == right_gap and \
+        ("(CAD rounding)" in text) == bool(left_off), text
+    assert _holes(text, tmp_path) == sorted((x, y, 4.0) for x, y in holes), text
+    got = _holes(text, tmp_path, width=240, height=120)
+    want = sorted((round(x + (40 if x > 100 else 0), 9) + 0.0, y + 10, 4.0) for x, y in holes)
+    assert got == want, (got, text)
+
+
+@pytest.mark.parametrize("kind", ["edgepair", "perforated", "twogroups"])
+def test_generated_round6_kinds_keep_their_edges(tmp_path, kind):
+    """The generated kinds of this round (tests/gen_drawings.py, truths from the spec: two
+    holes or slots by their own edges, a perforated plate, two 2 x 2 groups one CAD rounded
+    and one with a hole left out), their labels left off: each drawing's program is the
+    drawing, and a new width and height (15 % more) give the edited design's drawing."""
+    import random
+
+    import gen_drawings as gen
+    from benchmarks.imports import infer_edits as bench
+    for seed in range(4):
+        d = gen.random_design(random.Random(seed), [kind], pool=(kind,))
+        d.features = [f for f in d.features if f["kind"] != "label"]
+        suffix, data = gen.export(d)
+        text, _ = import_drawing(data, "d" + suffix, infer=True)
+        assert bench.compare(d, bench.output_of(text, tmp_path / "d.aidl"), tmp_path) == [], \
+            (d.describe(), text)
+        for e in d.edits():
+            if e.kind != "body":
+                continue
+            new = round(d.value(e) * 1.15, 2)
+            d2 = d.edited(e, new)
+            if not d2.valid():
+                continue
+            name, ov = bench.find_param(text, d, dataclasses.replace(e, new=new))
+            got = bench.output_of(text, tmp_path / "e.aidl", {name: ov})
+            assert bench.compare(d2, got, tmp_path) == [], (d.describe(), e.label, text)

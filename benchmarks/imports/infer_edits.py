@@ -133,7 +133,8 @@ HINTS = {"hole": ("hole",), "slot": ("slot",), "cutout": ("cut", "window", "open
          "keyhole": ("key",), "csk": ("countersink", "hole"), "dhole": ("d_hole", "dhole", "flat"), "arcslot": ("arc",),
          "plate": ("plate", "body"), "corners": ("corner",), "comb": ("notch",),
          "board": ("holes",), "flange": ("bolt", "circle"), "oddcorners": ("corner",),
-         "gapgrid": ("grid", "holes"), "cadrow": ("row", "holes")}
+         "gapgrid": ("grid", "holes"), "cadrow": ("row", "holes"),
+         "edgepair": ("hole", "slot"), "perforated": ("holes",), "twogroups": ("holes",)}
 UNIT_MM = {"mm": 1.0, "cm": 10.0, "in": 25.4, "inch": 25.4, "m": 1000.0}
 ANGLES = {"a0"}         # design keys that are angles (degrees): not scaled by the unit
 
@@ -454,14 +455,16 @@ def main(argv=None) -> int:
                     "plates), `panels` (front panels of rows and windows, grilles), `issue93` "
                     "(round5, profiles and panels), `irregular` (issue 103's: four corner "
                     "holes one of them larger, a grid with a hole left out, a row a CAD "
-                    "program rounded), "
+                    "program rounded), `round6` (issue 103, continued: two holes or slots "
+                    "mirrored about a centre line each by its own edge, a perforated plate, two "
+                    "2 x 2 groups of one size, one CAD rounded, one with a hole left out), "
                     "`all`, or names joined by commas (default: the first set, as always)")
     a = ap.parse_args(argv)
     every = gen.ALL_KINDS + gen_profiles.PROFILE_KINDS + gen_panels.PANEL_KINDS
     kinds = {"": gen.KINDS, "new": gen.NEW_KINDS, "round5": gen.ROUND5_KINDS,
              "profiles": gen_profiles.PROFILE_KINDS, "panels": gen_panels.PANEL_KINDS,
              "issue93": gen.ROUND5_KINDS + gen_profiles.PROFILE_KINDS + gen_panels.PANEL_KINDS,
-             "irregular": gen.IRREGULAR_KINDS, "all": every}.get(
+             "irregular": gen.IRREGULAR_KINDS, "round6": gen.ROUND6_KINDS, "all": every}.get(
         a.kinds, tuple(a.kinds.split(",")))
     if not set(kinds) <= set(every):
         ap.error(f"--kinds: not a kind: {', '.join(sorted(set(kinds) - set(every)))}")

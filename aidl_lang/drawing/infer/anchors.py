@@ -119,6 +119,8 @@ class _Anchored:
         half = sh.args["width" if axis == 0 else "height"] / 2
         if side == self.frame[axis]:
             return self.lit(v, axis)
+        if side and side == -self.frame[axis] and getattr(self, "stats", None) is not None:
+            self.stats.far.add((axis, side))        # said in the program's head
         return _add(self.edge(axis, side), v - (c + side * half))
 
     def write_at(self, c, at: tuple) -> None:

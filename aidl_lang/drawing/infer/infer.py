@@ -44,7 +44,7 @@ from collections import Counter
 from ...geometry.shapes.curves import Loop
 from .attachments import _attachments, _circle_attachments
 from .params import _Params, _add0, _ctor, _deg, _hole_name, _r
-from .patterns.find import (_Cells, _copies, _grid, _line, _polar, _runs, _stagger,
+from .patterns.find import (lattices, _Cells, _copies, _grid, _line, _polar, _runs, _stagger,
                             _hex_field, _hex_rect, _whole, _features, _unknown)
 from .shapes import EQUAL_TOL, ROUND_TOL, Shape, _close, circular, recognise
 from .anchors import _Anchored
@@ -52,7 +52,7 @@ from .body import _Bodies
 from .engrave.engraving import _engraving
 from .engrave.labels import _at_as_drawn, _label_place
 from .holes.makers import SINGLE_PARAMS, _MakerFeatures
-from .naming import _named_parts, _short_names, _summary
+from .naming import _far, _named_parts, _short_names, _summary
 from ..chains.layers import _hole_layers
 from .profiles.write import _Profiles
 from .mirror import mirrored_pair, pair_items, write_pair
@@ -60,6 +60,7 @@ from .holes.sinks import Marks
 from .patterns.groups import _Groups, corner_sets, corners_and_pattern, follows
 from .patterns.irregular import _Irregular
 from .patterns.fields import _Fields
+from .patterns.pairs import RING_MAX, RING_MIN, RING_WORK, _Pairs, _ring_about
 from .beside import _beside
 from .patterns.rings import _start, ring_in_scatter, rings, start_angle
 from .patterns import turns
@@ -76,9 +77,11 @@ class _Stats:
         self.kinds: Counter = Counter()
         self.patterns: Counter = Counter()
         self.readings: list = []    # where two readings fit one drawing: which was taken
+        self.far: set = set()       # (axis, side): an edge that moves features are placed from
 
 
-class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, _Fields):
+class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, _Fields,
+            _Pairs):
     """One part's statements, written into ``w`` at ``depth``."""
 
     def __init__(self, w: _Writer, params: _Params, stats: _Stats, prefix: str) -> None:
@@ -192,7 +195,9 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
                 corners_and_pattern(cs, body, r) or _features(cs, r) or \
                 rings(cs, ([body[0].center] if body is not None else []) + self.named.points) \
                 or corner_sets(cs, body, rest=True) or ring_in_scatter(cs)
-            # equal holes of several features (a grille and a grid): each its own pattern
+            # equal holes of several features (a grille and a grid): each its own pattern;
+            # a sibling's lattice for one with a hole left out (irregular: _gapped_as)
+            self.kin = lattices([[cs[i] for i in part] for part in parts or []])
             for part in parts or [range(len(g))]:
                 sub = [g[i] for i in part]
                 if len(sub) == 1:
@@ -218,12 +223,17 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
         many = [g for g in groups.values() if len(g) > 1 and g[0].kind != "Polygon"]
         mids = _Cells([(sum(h.center[0] for h in g) / len(g),
                         sum(h.center[1] for h in g) / len(g)) for g in many])
+        # a motor's four holes round its bore among more holes of their size (two more by
+        # the far edge): the group's middle is not the bore's, four of them are about it
+        ringed = [g for g in many if RING_MIN < len(g) <= RING_MAX]
+        if sum(map(len, ringed)) * sum(len(g) == 1 for g in groups.values()) > RING_WORK:
+            ringed = []
         for g in groups.values():
             if len(g) != 1 or g[0].kind not in ("Circle", "Rectangle", "RoundedRectangle",
                                                  "RegularPolygon"):
                 continue
             sh = g[0]
-            if not mids.near(sh.center):
+            if not mids.near(sh.center) and not any(_ring_about(sh.center, h) for h in ringed):
                 continue
             if self.shared(sh.center) is not None:
                 continue
@@ -450,43 +460,13 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
         if self._bolt_circle(depth, sh, cs, centres):
             return True
         # a pair placed symmetrically about the body's centre (mirrored about its axis)
-        if len(g) == 2 and body is not None:
-            B = body[0].center
-            (x1, y1), (x2, y2) = sorted(cs)
-            sym_x = abs(x1 + x2 - 2 * B[0]) <= EQUAL_TOL and x2 - x1 > EQUAL_TOL
-            sym_y = abs(y1 + y2 - 2 * B[1]) <= EQUAL_TOL and abs(y2 - y1) > EQUAL_TOL
-            same_y, same_x = abs(y1 - y2) <= EQUAL_TOL, abs(x1 - x2) <= EQUAL_TOL
-            if (sym_x and (same_y or sym_y)) or (sym_y and same_x):
-                hn = self.name(base + "s")
-                sizes = self.size_params(hn, sh, True)
-                half = self.anchor[0].args["width"] / 2 if self.anchor is not None else None
-                if sym_x and half is not None and half - x2 + B[0] < x2 - B[0]:
-                    # nearer the side edges than the centre: each kept from its edge
-                    ex = self.from_body_centre(0, f"s * ({self.anchor[1]['width']} / 2 - "
-                                         f"{self.p(hn + '_inset', half - x2 + B[0], 'from the edges')})", B[0])
-                elif sym_x:
-                    ex = self.from_body_centre(0, f"s * {self.p(hn + '_spacing', x2 - x1)} / 2", B[0])
-                else:
-                    ex = self.at(x1, 0)
-                # the y of the one left (s = -1): y1 = B.y - dy / 2 when mirrored through B
-                if sym_y:
-                    dy = y2 - y1 if sym_x else abs(y2 - y1)
-                    sign = "s" if (not sym_x or y2 > y1) else "-s"
-                    name = hn + ("_spacing_y" if sym_x else "_spacing")
-                    ey = self.from_body_centre(1, f"{sign} * {self.p(name, abs(dy))} / 2", B[1])
-                else:
-                    ey = self.at(y1, 1)
-                w.emit(depth, "# mirrored about the centre line" + ("s" if sym_x and sym_y else ""))
-                w.emit(depth, "for s in [-1, 1] {")
-                self.hole_block(depth + 1, hn, sh, f"({ex}, {ey})", sizes,
-                                turns.mirrored(B, sym_x))
-                w.emit(depth, "}")
-                self.stats.patterns["mirrored pair"] += 1
-                return True
+        if self.mirrored(depth, g, body, sh, base, cs):
+            return True
         # a row, a column or a grid
         gr = _grid(cs)
         if gr is not None:
-            self.grid(depth, sh, base, gr)
+            if not self.perforated(depth, sh, base, gr):    # a field over most of the plate
+                self.grid(depth, sh, base, gr)
             return True
         if self.irregular(depth, g, sh, base, cs):  # a fan grille, a gap list, CAD rounding
             return True
@@ -933,7 +913,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
         w.emit(0, "}")
     _cut_notes(w, source)
     head = [f"# imported from {source} by `aidl import --infer`: edit freely"]
-    head += ["# " + ln for ln in _summary(stats) + moved + stats.readings] + \
+    head += ["# " + ln for ln in _summary(stats) + moved + stats.readings + _far(stats)] + \
         [f"units {UNIT.get()}"]
     text = "\n".join(head + params.lines + w.lines) + "\n"
     return text, w.notes

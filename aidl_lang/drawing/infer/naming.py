@@ -1,5 +1,6 @@
 """``aidl import --infer``: the names of the parts (:func:`_named_parts`, :func:`_short_names`)
-and the program's head saying what was recognised (:func:`_summary`); used by
+and the program's head saying what was recognised (:func:`_summary`) and the far edges
+features follow (:func:`_far`); used by
 :func:`~.infer.to_program_inferred`."""
 from __future__ import annotations
 
@@ -59,3 +60,17 @@ def _summary(st) -> list[str]:
     out.append(f"equal within {EQUAL_TOL:g} {u}, numbers rounded within {ROUND_TOL:g} {u}; "
                f"the rest stays exact Line/Arc chains")
     return out
+
+
+def _far(stats) -> list:
+    """The head's line naming the edges that move (the far ones from the corner the plate grows
+    from) that features were placed from, so that a maker reads that a new width or height
+    keeps them at their distance from that edge (issue 103)."""
+    if not stats.far:
+        return []
+    names = {(0, -1): "left", (0, 1): "right", (1, -1): "bottom", (1, 1): "top"}
+    edges = [names[k] for k in sorted(stats.far)]
+    sizes = " or ".join(dict.fromkeys("width" if a == 0 else "height" for a, _ in sorted(stats.far)))
+    return [f"features by the far {' and '.join(edges)} edge{'s' if len(edges) > 1 else ''} are "
+            f"placed from {'them' if len(edges) > 1 else 'it'}: a new {sizes} keeps their "
+            f"distance to that edge"]

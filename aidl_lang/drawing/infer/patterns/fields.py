@@ -2,7 +2,8 @@
 refills its field (docs/import.md, "What it recognises"): a hex grid clipped to a round or
 rectangular field (:meth:`_Fields.hex_field`, a vent or a grille), a square-set grid clipped
 to a round one (:meth:`_Fields.grid_field`, issue 103: a fan grille), each with its field's
-size as a param.  The field half of :class:`~.infer._Part`: needs ``w``, ``p``, ``stats``,
+size as a param; a perforated plate's square-set field over most of the plate
+(:meth:`_Fields.perforated`, issue 103), the plate less its margin.  The field half of :class:`~.infer._Part`: needs ``w``, ``p``, ``stats``,
 ``name``, ``at``, ``size_params`` and ``hole_block``.  Coordinates in the drawing's unit;
 the results are program text."""
 from __future__ import annotations
@@ -10,6 +11,37 @@ from __future__ import annotations
 from ..params import _add0, _r
 from ..shapes import EQUAL_TOL, Shape
 from . import turns
+from .find import _roundest
+
+
+PERFORATED_MIN = 5      # holes each way, at least, of a perforated plate's field
+PERFORATED_MARGIN = 3   # pitches: a perforated field's outer holes nearer the edges than this
+PERFORATED_SHARE = 2 / 3  # of the plate's width and height, at least, its holes span
+
+
+def _perforated(body, c, spans: tuple, pitch: float, d: float) -> bool:
+    """Whether holes ``d`` across (mm) on ``pitch`` about ``c``, spanning ``spans`` (across
+    and up, outer edge to outer edge), are a perforated plate's field on ``body``: an upright
+    rectangle centred on them, the holes spanning :data:`PERFORATED_SHARE` of it each way,
+    a margin left (wider than the web between two holes, within :data:`PERFORATED_MARGIN`
+    pitches); a fan's vent field on a panel spans less of it, a grid laid out from the
+    plate's edges (holes half a pitch in) leaves no margin."""
+    if body.kind not in ("Rectangle", "RoundedRectangle") or \
+            abs(body.args.get("rotation", 0.0)) > EQUAL_TOL:
+        return False
+    for axis, key in ((0, "width"), (1, "height")):
+        size = body.args[key]
+        margin = (size - spans[axis]) / 2
+        if abs(c[axis] - body.center[axis]) > EQUAL_TOL or spans[axis] < PERFORATED_SHARE * size \
+                or not pitch - d + EQUAL_TOL < margin < PERFORATED_MARGIN * pitch:
+            return False
+    return True
+
+
+def _margin(lo: float, hi: float) -> float:
+    """The roundest margin (:func:`~.find._roundest`) in ``(lo, hi]`` (mm): of the margins
+    that keep exactly the holes drawn, the one a maker would have dimensioned."""
+    return _roundest(lo + 1e3 * EQUAL_TOL, hi + 1e3 * EQUAL_TOL)
 
 
 class _Fields:
@@ -20,11 +52,16 @@ class _Fields:
         field keeps one grid filling its field; placed by its centre (:meth:`pos`); params
         ``_pitch``, ``_d`` and ``_field_d`` (``_field_width``, ``_field_height``)."""
         (cx, cy), pitch, shift, *field = hf
+        ranges, field = field[2:], field[:2]
         hn = self.name(base + "s")
         sizes = self.size_params(hn, sh, True)
         p = self.p(hn + "_pitch", pitch, times=int(max(field) / pitch) + 1)
+        plate = self.plate_field(hn, (cx, cy), pitch, 2 * sh.args["radius"], ranges) \
+            if ranges and sh.kind == "Circle" else None
         if len(field) == 1:
             f = [self.p(hn + "_field_d", field[0], "the round field the holes lie whole in")]
+        elif plate is not None:         # a perforated plate: the plate less its margin
+            f = plate
         else:
             f = [self.p(hn + "_field_width", field[0], "the field the holes lie whole in"),
                  self.p(hn + "_field_height", field[1])]
@@ -56,6 +93,34 @@ class _Fields:
         w.emit(depth, "}")
         self.stats.patterns["hex grid in a " + ("round" if len(f) == 1 else "rectangular")
                             + " field"] += 1
+
+    def plate_field(self, hn: str, c, pitch: float, d: float, ranges) -> list | None:
+        """A hex grid's rectangular field as the plate less its margin (``[width - 2 *
+        holes_margin, height - 2 * holes_margin]``, program text) when it is a perforated
+        plate's (issue 103): centred on an upright rectangular body, at least
+        :data:`PERFORATED_MIN` pitches across each way, its holes ``d`` across (mm) a
+        perforated plate's (:func:`_perforated`); ``ranges``: the field's widths and heights
+        that keep the holes drawn (``[lo, hi)``, mm); else None."""
+        if self.anchor is None or min(lo for lo, _ in ranges) < PERFORATED_MIN * pitch:
+            return None
+        body, sizes = self.anchor
+        if not _perforated(body, c, [lo for lo, _ in ranges], pitch, d):
+            return None
+        m = [((body.args[key] - hi) / 2, (body.args[key] - lo) / 2)
+             for key, (lo, hi) in zip(("width", "height"), ranges)]
+        got = [_margin(*m[0]), _margin(*m[1])]
+        for a in (0, 1):                        # one margin all round when one fits both
+            if m[1 - a][0] + 1e3 * EQUAL_TOL < got[a] <= m[1 - a][1] + 1e3 * EQUAL_TOL:
+                got[1 - a] = got[a]
+        if got[0] == got[1]:
+            mx = my = self.p(hn + "_margin", got[0], "from the plate's edges to the field's")
+        else:
+            mx = self.p(hn + "_margin_x", got[0], "from the left and right edges to the field's")
+            my = self.p(hn + "_margin_y", got[1], "from the top and bottom edges to the field's")
+        self.stats.readings.append(
+            f"{hn}: a hex field over the plate but for a margin (perforated), refilled by a "
+            f"new pitch, hole or plate size")
+        return [f"({sizes['width']} - 2 * {mx})", f"({sizes['height']} - 2 * {my})"]
 
     def grid_field(self, depth: int, sh: Shape, base: str, gf: tuple) -> None:
         """A square-set grid clipped to a round field (``gf`` from :func:`_grid_field`, a
@@ -92,3 +157,65 @@ class _Fields:
         w.emit(depth + 1, "}")
         w.emit(depth, "}")
         self.stats.patterns["grid in a round field"] += 1
+
+    def perforated(self, depth: int, sh: Shape, base: str, gr: tuple) -> bool:
+        """A perforated plate (issue 103; docs/import.md, "What an edit means"): a square-set
+        grid of round holes (``gr`` from :func:`~.find._grid`, at least
+        :data:`PERFORATED_MIN` each way, one pitch) over the plate but for a margin
+        (:func:`_perforated`), written as the plate
+        less its margin filled with as many holes as fit, about the plate's centre: a new
+        pitch or hole size refills it, a new width or height grows it, the margin (from the
+        plate's edge to the field's, the roundest that keeps the holes drawn) a param.
+        False (nothing written) when the grid is no such field."""
+        x0, y0, dx, dy, nx, ny = gr
+        if self.anchor is None or sh.kind != "Circle" or min(nx, ny) < PERFORATED_MIN:
+            return False
+        body, sizes = self.anchor
+        r = sh.args["radius"]
+        spans = ((nx - 1) * dx + 2 * r, (ny - 1) * dy + 2 * r)
+        mid = (x0 + dx * (nx - 1) / 2, y0 + dy * (ny - 1) / 2)
+        if abs(dx - dy) > EQUAL_TOL or not _perforated(body, mid, spans, dx, 2 * r):
+            return False
+        ranges = []
+        for span, step, key in ((spans[0], dx, "width"), (spans[1], dy, "height")):
+            tight = (body.args[key] - span) / 2     # the edge to the outer holes' edges
+            ranges.append((tight - step / 2, tight))
+        m = [_margin(*ranges[0]), _margin(*ranges[1])]
+        for a in (0, 1):                        # one margin all round when one fits both
+            if ranges[1 - a][0] + 1e3 * EQUAL_TOL < m[a] <= ranges[1 - a][1] + 1e3 * EQUAL_TOL:
+                m[1 - a] = m[a]
+        hn = self.name(base + "s")
+        hole = self.size_params(hn, sh, True)
+        d = hole.get("diameter", _r(2 * r))
+        if m[0] == m[1]:
+            mx = my = self.p(hn + "_margin", m[0], "from the plate's edges to the field's")
+        else:
+            mx = self.p(hn + "_margin_x", m[0], "from the left and right edges to the field's")
+            my = self.p(hn + "_margin_y", m[1], "from the top and bottom edges to the field's")
+        px = py = self.p(hn + "_pitch", dx, times=max(nx, ny))
+        w = self.w
+        w.emit(depth, "# a perforated field: the plate less its margin, as many holes as fit, "
+                      "about the plate's centre")
+        out, loops = [], []
+        for axis, (size, margin, pitch, var) in enumerate(
+                ((sizes["width"], mx, px, "i"), (sizes["height"], my, py, "j"))):
+            cnt = self.name(hn + ("_cols" if axis == 0 else "_rows"))
+            w.emit(depth, f"{cnt} = floor(norm(({size} - 2 * {margin} - {d}, 0)) / "
+                          f"norm(({pitch}, 0)) + 1e-6) + 1")
+            loops.append(f"for {var} in range({cnt}) {{")
+            out.append(self.from_body_centre(axis, f"({var} - ({cnt} - 1) / 2) * {pitch}",
+                                             body.center[axis]))
+        for k, ln in enumerate(loops):
+            w.emit(depth + k, ln)
+        looped = len(self.looped)
+        self.hole_block(depth + 2, hn, sh, f"({out[0]}, {out[1]})", hole, turns.grid(*gr))
+        # a label beside the field is placed as a feature is: the counts are the solid's own
+        # names, which a drawing block beside the part does not see
+        del self.looped[looped:]
+        w.emit(depth + 1, "}")
+        w.emit(depth, "}")
+        self.stats.readings.append(
+            f"{nx} x {ny} {base}s over the plate but for a margin: a perforated field, "
+            f"refilled by a new pitch, hole or plate size")
+        self.stats.patterns["perforated field"] += 1
+        return True

@@ -261,14 +261,15 @@ def _field_size(lo: float, hi: float, pitch: float) -> float:
 
 
 def _hex_rect(centers: list, r: float):
-    """``(centre, pitch, shift, field width, field height)`` when ``centers`` are the holes
+    """``(centre, pitch, shift, field width, field height, (width lo, hi), (height lo,
+    hi))`` when ``centers`` are the holes
     (radius ``r``) of a hexagonal lattice that lie whole inside a rectangular field centred
     on it: a staggered grid (:func:`_stagger`) of an odd number of rows ``pitch * sqrt(3) /
     2`` apart, every row centred on one vertical line (so each row holds every node of the
     lattice within the field's width: a vent field cut into a panel); ``shift`` 1 when the
     middle row has no hole on the centre; the field's width and height by
     :func:`_field_size` (the fewest whole pitches that keep those holes, as for a round
-    field); else None."""
+    field), of the ranges ``[lo, hi)`` of sizes that keep them; else None."""
     st = _stagger(centers)
     if st is None:
         return None
@@ -285,7 +286,8 @@ def _hex_rect(centers: list, r: float):
     # the widths and heights that keep exactly these holes, each its own size
     wide = (2 * (max(ha, hb) + r), 2 * (min(ha, hb) + pitch + r))
     high = (2 * (mid * dy + r), 2 * ((mid + 1) * dy + r))
-    return (cx, cy), pitch, shift, _field_size(*wide, pitch), _field_size(*high, pitch)
+    return (cx, cy), pitch, shift, _field_size(*wide, pitch), _field_size(*high, pitch), \
+        wide, high
 
 
 MAX_GAPS = 1 / 4     # of a lattice's nodes, at most this share may be missing (a gap list)
@@ -419,7 +421,7 @@ def _round_fit(vals: list, k: list, tol: float):
     return None
 
 
-def _near_grid(centers: list, tol: float | None = None):
+def _near_grid(centers: list, tol: float | None = None, least: int = 3):
     """``((x0, y0, dx, dy, cols, rows), offsets)`` when ``centers`` are an axis-aligned row
     or grid of at least three holes whose positions a CAD program rounded: every hole
     within ``tol`` (0.05 mm) of its node along each axis, the pitch at least 20 ``tol``,
@@ -427,7 +429,8 @@ def _near_grid(centers: list, tol: float | None = None):
     ``offsets`` ``{index: (dx, dy)}`` of the holes off their node by more than EQUAL_TOL
     (at most :data:`MAX_OFF`), so that the pattern, written with them, draws every hole
     exactly where the drawing has it; else None (and None when the lattice is exact:
-    :func:`_grid`)."""
+    :func:`_grid`, or has fewer than ``least`` holes along both axes: a 2 x 2 is one only
+    beside a sibling group, :func:`_features`)."""
     n = len(centers)
     if n < 3 or _grid(centers) is not None:
         return None
@@ -455,7 +458,7 @@ def _near_grid(centers: list, tol: float | None = None):
         fits.append((fit, len(cl)))
         idx.append(ks)
     ((x0, dx), nx), ((y0, dy), ny) = fits
-    if nx * ny != n or len(set(zip(*idx))) != n or max(nx, ny) < 3:
+    if nx * ny != n or len(set(zip(*idx))) != n or max(nx, ny) < least:
         return None
     offs = {}
     for m, p in enumerate(centers):
@@ -513,11 +516,54 @@ def _features(centers: list, r: float) -> list[list[int]] | None:
     groups = {k: sorted(v) for k, v in groups.items()}
     out = sorted(groups.values())
     # a group of two is no evidence of a feature of its own (a board's four holes in two
-    # pairs would become two diagonal "rows" of two): the holes stay one set
-    if len(out) < 2 or not all(len(g) == 1 or len(g) > 2 and _whole([centers[i] for i in g], r)
-                               for g in out):
+    # pairs would become two diagonal "rows" of two): the holes stay one set; a group that
+    # is a sibling's lattice with a hole left out (issue 103: two 2 x 2 groups, one of three)
+    whole = [len(g) > 2 and (_whole([centers[i] for i in g], r) or _near_grid(
+        [centers[i] for i in g], least=2) is not None) for g in out]
+    kin = lattices([[centers[i] for i in g] for g, w in zip(out, whole) if w])
+    if len(out) < 2 or not all(len(g) == 1 or w or len(g) > 2 and any(
+            _gapped_as([centers[i] for i in g], lat) for lat in kin)
+            for g, w in zip(out, whole)):
         return None
     return out
+
+
+def lattices(groups: list) -> list:
+    """``[(dx, dy, cols, rows)]``: the lattice of each group of centres that is a row or
+    grid, exact (:func:`_grid`), with holes left out (:func:`_gapped_grid`) or CAD rounded
+    (:func:`_near_grid`); the others left out."""
+    out = []
+    for cs in groups:
+        gr = _grid(cs) or (_gapped_grid(cs) or _near_grid(cs, least=2) or [None])[0]
+        if gr is not None and gr[4] * gr[5] > 1:
+            out.append(gr[2:])
+    return out
+
+
+def _gapped_as(centers: list, lat: tuple):
+    """``((x0, y0, dx, dy, cols, rows), missing)`` when ``centers`` are a lattice of the
+    counts of ``lat`` (``(dx, dy, cols, rows)``, a sibling group's: its pitch may differ)
+    with at least one node and at most :data:`MAX_GAPS` of them left out (one of a 2 x 2):
+    every hole on a node to EQUAL_TOL, the holes spanning the whole lattice; else None."""
+    _, _, nx, ny = lat
+    n = len(centers)
+    nodes = nx * ny
+    if n < 3 or not nodes - max(1, int(nodes * MAX_GAPS)) <= n < nodes:
+        return None
+    x0, y0 = min(p[0] for p in centers), min(p[1] for p in centers)
+    dx = (max(p[0] for p in centers) - x0) / (nx - 1) if nx > 1 else 0.0
+    dy = (max(p[1] for p in centers) - y0) / (ny - 1) if ny > 1 else 0.0
+    if (nx > 1 and dx <= EQUAL_TOL) or (ny > 1 and dy <= EQUAL_TOL):
+        return None
+    held = set()
+    for p in centers:
+        i = round((p[0] - x0) / dx) if nx > 1 else 0
+        j = round((p[1] - y0) / dy) if ny > 1 else 0
+        if math.dist(p, (x0 + i * dx, y0 + j * dy)) > EQUAL_TOL or (i, j) in held:
+            return None
+        held.add((i, j))
+    missing = [(i, j) for i in range(nx) for j in range(ny) if (i, j) not in held]
+    return (x0, y0, dx, dy, nx, ny), missing
 
 
 def _line(centers: list):

@@ -16,7 +16,7 @@ from ..shapes import ROUND_TOL, Shape
 from ...write.units import UNIT
 from ...write.writer import _num, _pt
 from . import turns
-from .find import _gapped_grid, _grid_field, _near_grid, _stagger, _whole
+from .find import _gapped_as, _gapped_grid, _grid_field, _near_grid, _stagger, _whole
 from .groups import corner_sets
 
 
@@ -148,10 +148,13 @@ class _Irregular:
             self.grid_field(depth, sh, base, gf)
             return True
         gg = _gapped_grid(cs) if _stagger(cs) is None else None
+        # the lattice of a sibling group of these holes with one left out (three of a 2 x 2)
+        gg = gg or next(filter(None, (_gapped_as(cs, lat) for lat in getattr(self, "kin", ()))),
+                        None)
         if gg is not None:      # a grid or row with holes left out: its gap list
             self.grid(depth, sh, base, gg[0], gg[1])
             return True
-        ng = _near_grid(cs)
+        ng = _near_grid(cs, least=2 if getattr(self, "kin", ()) else 3)   # 2 x 2 by a sibling
         if ng is not None:      # a grid or row CAD rounded off its pitch: its offsets
             self.offs = {id(g[m]): d for m, d in ng[1].items()}
             worst = max(max(abs(d[0]), abs(d[1])) for d in ng[1].values())

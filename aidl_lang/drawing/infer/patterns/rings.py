@@ -21,7 +21,7 @@ def rings(centers: list, about: list) -> list[list[int]] | None:
     of holes at one distance from it (within EQUAL_TOL), when every group of three or more
     is evenly round that point (:func:`~.patterns._polar`) and there are at least two
     groups, one of them such a ring; else None.  Groups of one or two are left to be
-    written on their own."""
+    written on their own, but for two left in all, in line with each other: one pair."""
     if len(centers) < 4 or len(centers) > MAX_RINGS:
         return None
     for c in about:
@@ -44,6 +44,11 @@ def rings(centers: list, about: list) -> list[list[int]] | None:
             # another centre when they are evenly round one (a second flange's)
             small = sorted(k for g in groups if len(g) < 3 for k in g)
             if len(small) >= 3 and _polar([centers[k] for k in small]) is not None:
+                return [sorted(g) for g in big] + [small]
+            # two left in line with each other (two holes by the far edge beside a motor's
+            # four round its bore): one pair, a pattern of its own (issue 103)
+            if len(small) == 2 and any(abs(centers[small[0]][a] - centers[small[1]][a])
+                                       <= EQUAL_TOL for a in (0, 1)):
                 return [sorted(g) for g in big] + [small]
             return [sorted(g) for g in groups]
     return None
