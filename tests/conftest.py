@@ -88,7 +88,9 @@ def chromium_browser():
 def studio_url():
     """``aidl studio --port 0`` as a visitor meets it (two compile workers, one sweep worker,
     the default rate) with no model endpoint: its URL.  (Its first design's sweep made here
-    once, 29 s of CPU, cost more than it saved: a tab's sweep stops when the tab closes.)"""
+    once, 29 s of CPU, cost more than it saved: a tab's sweep stops when the tab closes.)
+    Only the browser tests use it: it skips as they do, before starting anything."""
+    skip_without_chromium()
     pytest.importorskip("starlette")
     from benchmarks.serve.studio_server import studio
     with studio(env={"AIDL_STUDIO_MODEL_URL": ""}) as (url, _proc):
