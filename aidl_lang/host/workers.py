@@ -250,13 +250,23 @@ class Pool:
         self.cond = threading.Condition()
         self.waiting = 0
 
-    def take(self, wait: float | None = None, prefer: Worker | None = None) -> Worker:
+    def take(self, wait: float | None = None, prefer: Worker | None = None,
+             stick: float = 0.0) -> Worker:
         """An idle worker (``prefer`` when idle, else the one used last), waiting while all are
-        busy: at most ``wait`` seconds (None: as long as it takes), then :class:`Busy`."""
+        busy: at most ``wait`` seconds (None: as long as it takes), then :class:`Busy`.
+        ``stick``: seconds to wait for ``prefer`` while it is busy and another is idle (a
+        request it answers from what it kept, which another worker would compile again)."""
         end = None if wait is None else time.monotonic() + wait
         with self.cond:
             self.waiting += 1
             try:
+                if stick > 0 and prefer is not None and prefer in self.workers:
+                    until = time.monotonic() + (stick if wait is None else min(stick, wait))
+                    while prefer not in self.idle:
+                        left = until - time.monotonic()
+                        if left <= 0:
+                            break
+                        self.cond.wait(left)
                 while not self.idle:
                     left = None if end is None else end - time.monotonic()
                     if left is not None and left <= 0:
@@ -272,12 +282,13 @@ class Pool:
         """Return a worker lent by :meth:`take`."""
         with self.cond:
             self.idle.append(w)
-            self.cond.notify()
+            self.cond.notify_all()      # (a request sticking to another worker may be waiting)
 
     def request(self, request, seconds: float, wait: float | None = None,
-                prefer: Worker | None = None):
-        """:meth:`Worker.request` in an idle worker; returns ``(answer, worker)``."""
-        w = self.take(wait, prefer)
+                prefer: Worker | None = None, stick: float = 0.0):
+        """:meth:`Worker.request` in an idle worker (:meth:`take`); returns ``(answer,
+        worker)``."""
+        w = self.take(wait, prefer, stick)
         try:
             return w.request(request, seconds), w
         finally:

@@ -286,6 +286,7 @@ class Latest:
 
 SUPERSEDED = {"ok": False, "superseded": True, "svg": None, "params": None, "diagnostics": [],
               "error": "a newer change of this design was asked for: this one was not compiled"}
+STICK = 2.0                 # s a picture's 3D or checks wait for the worker that drew it
 SWEPT = 256                 # sweeps a server process keeps (by the program's hash)
 SWEEP_WAIT = 60.0           # s a sweep waits for a free sweep worker before "busy"
 SWEEP_SUPERSEDED = {"ok": None, "superseded": True, "params": {},
@@ -395,7 +396,10 @@ class Studio:
     async def compile(self, request_data: tuple, sid: str | None = None):
         """Run one request in a compile worker; raises :class:`Limited` (503) when every
         worker stays busy, and returns ``{"error": ...}`` for a compile stopped past its
-        time or memory."""
+        time or memory.  A picture's 3D and its checks (``glb``, ``checks``) wait up to
+        :data:`STICK` for the worker that drew it (it answers them from the drawing it kept;
+        another worker compiles the picture again: a planetary's 0.5-3 s of CPU beside the
+        next slider move's compile, issue 104)."""
         s = self.settings
         if self.pool.waiting >= s.queue:
             self.served["busy"] += 1
@@ -405,8 +409,11 @@ class Studio:
         prefer = self.affinity.get(sid) if sid else None
         t0 = time.perf_counter()
         try:
-            answer, w = await run_in_threadpool(self.pool.request, request_data, s.seconds,
-                                                s.wait, prefer)
+            args = (request_data, s.seconds, s.wait, prefer)
+            if prefer is not None and request_data[0] in ("glb", "checks") \
+                    and isinstance(self.pool, W.Pool):
+                args += (STICK,)
+            answer, w = await run_in_threadpool(self.pool.request, *args)
             self.metrics.compiled(request_data[0], time.perf_counter() - t0)
         except W.Busy:
             self.served["busy"] += 1

@@ -1,0 +1,69 @@
+"""Speed where the user waits (issue 104), the server's part, without a browser: what a slider
+move's picture costs a compile worker, counted in requests and compiles, never timed.
+
+* A picture's 3D and its checks wait for the worker that drew it (``Pool.take(stick=)``):
+  that worker answers them from the drawing it kept; another worker would compile the
+  picture again beside the next move's compile.
+* A move the server puts back into its ranges (the tool holder's depth after its rows, the
+  planetary's sun onto its step) leaves its
+  shape checks for ``/api/checks`` as any move does (``checks: "pending"``), and those checks
+  are the ones a single request gives.
+"""
+from __future__ import annotations
+
+import threading
+from collections import OrderedDict
+
+from aidl_lang.host.workers import Pool
+from aidl_lang.studio import compiler, gallery
+
+
+class Fake:
+    """A stand-in worker: Pool.take only lends and takes back."""
+
+
+def test_a_sticking_request_waits_for_its_worker_while_another_is_idle():
+    a, b = Fake(), Fake()
+    pool = Pool([a, b])
+    assert pool.take(prefer=a) is a                 # a busy (the picture's worker)
+    assert pool.take(1.0, prefer=a) is b            # without stick: the idle one
+    pool.give(b)
+    got, started = [], threading.Event()
+
+    def ask():
+        started.set()
+        got.append(pool.take(60.0, prefer=a, stick=60.0))
+    t = threading.Thread(target=ask)
+    t.start()
+    started.wait()
+    pool.give(a)                                    # a is back: the sticking request has it
+    t.join(60)
+    assert got == [a]
+    assert pool.idle == [b]
+    # a worker that is not the pool's: no wait, the idle one
+    assert pool.take(1.0, prefer=Fake(), stick=60.0) is b
+
+
+def test_a_sticking_request_takes_another_worker_after_its_wait():
+    a, b = Fake(), Fake()
+    pool = Pool([a, b])
+    assert pool.take(prefer=a) is a
+    assert pool.take(1.0, prefer=a, stick=0.01) is b    # a stayed busy: b, not Busy
+
+
+def test_a_move_put_back_into_its_ranges_leaves_its_checks_for_later(tmp_path):
+    src = gallery.entry("generator/tool_holder").source
+    sessions: OrderedDict = OrderedDict()
+    first = compiler.view(sessions, "s", str(tmp_path), src, {}, {}, True)
+    assert first["ok"]
+    # 4 rows of 16 mm holes need 4 x 20 + 2 x 3 + 0.5 mm: the depth (70 mm) follows them
+    moved = compiler.view(sessions, "s", str(tmp_path), src, {"rows": "4"}, {}, True)
+    assert moved["ok"] and moved["clamped"] == {"depth": 86.5}
+    assert moved["checks"] == "pending"
+    assert moved["values"] == {"rows": "4", "depth": "86.5 mm"}
+    later = compiler.checks(sessions, "s", str(tmp_path), src, moved["values"])
+    assert later["ok"] and later["values"] == moved["values"]
+    once = compiler.view(OrderedDict(), "t", str(tmp_path), src, {"rows": "4"}, {}, False)
+    assert once["clamped"] == {"depth": 86.5} and "checks" not in once
+    assert sorted(d["code"] for d in later["diagnostics"]) == \
+        sorted(d["code"] for d in once["diagnostics"])
