@@ -8,6 +8,8 @@ move's picture costs a compile worker, counted in requests and compiles, never t
   planetary's sun onto its step) leaves its
   shape checks for ``/api/checks`` as any move does (``checks: "pending"``), and those checks
   are the ones a single request gives.
+* The range sweep's worker runs at a lower priority (``SWEEP_NICE``): a planetary's sweep, 5 s
+  of CPU asked at each pause, yields the CPU to the next move's compile.
 """
 from __future__ import annotations
 
@@ -67,3 +69,24 @@ def test_a_move_put_back_into_its_ranges_leaves_its_checks_for_later(tmp_path):
     assert once["clamped"] == {"depth": 86.5} and "checks" not in once
     assert sorted(d["code"] for d in later["diagnostics"]) == \
         sorted(d["code"] for d in once["diagnostics"])
+
+
+def _niceness_handler():
+    import os
+    return lambda request: os.nice(0)
+
+
+def test_a_sweep_worker_runs_at_a_lower_priority_than_the_compile_workers():
+    import os
+
+    from aidl_lang.host.workers import Worker
+    from aidl_lang.studio.app import SWEEP_NICE
+    assert SWEEP_NICE > 0
+    here = os.nice(0)
+    background, foreground = Worker(_niceness_handler, nice=SWEEP_NICE), Worker(_niceness_handler)
+    try:
+        assert foreground.request("niceness", 60) == here
+        assert background.request("niceness", 60) == min(19, here + SWEEP_NICE)
+    finally:
+        background.stop()
+        foreground.stop()

@@ -93,10 +93,17 @@ def context(preload: tuple[str, ...] = ()):
 _PRELOAD: set[str] = set()
 
 
-def _main(conn, target, args: tuple, memory: int | None, env: dict | None = None) -> None:
+def _main(conn, target, args: tuple, memory: int | None, env: dict | None = None,
+          nice: int = 0) -> None:
     """The worker process: build the handler, then answer requests until the pipe closes.
     ``env``: the environment of the process that started it (a forkserver's fork has the
-    environment the forkserver started with)."""
+    environment the forkserver started with); ``nice``: added to the process's niceness (a
+    background worker yields the CPU to those a visitor waits for)."""
+    if nice > 0:
+        try:
+            os.nice(nice)
+        except OSError:
+            pass
     if env is not None and env != os.environ:
         import tempfile
         os.environ.clear()
@@ -119,11 +126,13 @@ def _main(conn, target, args: tuple, memory: int | None, env: dict | None = None
 
 class Worker:
     """One warm process answering requests with ``target(*args)``'s handler, one at a time
-    (:meth:`request`); ``memory``: its address-space cap in bytes (None: none)."""
+    (:meth:`request`); ``memory``: its address-space cap in bytes (None: none); ``nice``: its
+    process's niceness added (0: as this process)."""
 
     def __init__(self, target, args: tuple = (), memory: int | None = None,
-                 recycle: int = 0, preload: tuple[str, ...] = ()) -> None:
+                 recycle: int = 0, preload: tuple[str, ...] = (), nice: int = 0) -> None:
         self.target, self.args, self.memory = target, tuple(args), memory
+        self.nice = nice
         self.preload = tuple(preload)   # modules a forkserver imports once (:func:`context`)
         self.recycle = recycle      # > 0: a process retires after answering this many requests
         self.answered = 0           # requests the current process answered
@@ -140,7 +149,7 @@ class Worker:
         ctx = context(self.preload)
         parent, child = ctx.Pipe()
         proc = ctx.Process(target=_main, args=(child, self.target, self.args, self.memory,
-                                               dict(os.environ)), daemon=True)
+                                               dict(os.environ), self.nice), daemon=True)
         proc.start()
         child.close()
         self.starting = proc

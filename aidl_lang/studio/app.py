@@ -288,6 +288,10 @@ SUPERSEDED = {"ok": False, "superseded": True, "svg": None, "params": None, "dia
               "error": "a newer change of this design was asked for: this one was not compiled"}
 STICK = 2.0                 # s a picture's 3D or checks wait for the worker that drew it
 SWEPT = 256                 # sweeps a server process keeps (by the program's hash)
+# the sweep workers' niceness: a range sweep (a planetary's: 5 s of CPU, asked at each pause)
+# runs on what the compile workers leave, never beside the next slider move's picture at
+# the same share (issue 104); its budget is work and CPU time, its wall guard 160 s
+SWEEP_NICE = 10
 SWEEP_WAIT = 60.0           # s a sweep waits for a free sweep worker before "busy"
 SWEEP_SUPERSEDED = {"ok": None, "superseded": True, "params": {},
                     "error": "the design changed: the check of its ranges was stopped"}
@@ -371,7 +375,7 @@ class Studio:
         self.rate = parse(settings.rate)
         self.sweepers = None if settings.scheduler or settings.sweepers <= 0 else W.Pool(
             [W.Worker(compiler.handler, (settings.budget,), memory, settings.recycle,
-                      compiler.PRELOAD)
+                      compiler.PRELOAD, nice=SWEEP_NICE)
              for _ in range(settings.sweepers)])
         self.sweeps = Sweeps()
         self.affinity: dict[str, W.Worker] = {}
