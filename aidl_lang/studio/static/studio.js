@@ -288,8 +288,16 @@ function show(view, ms) {
   window.studio.shownAt[window.studio.views] = performance.now();
   if (view.ok) {
     building(true);
-    if (!state.timer && !state.again) load3d();
-    if (view.checks === "pending") askChecks(view);
+    const model = !state.timer && !state.again ? load3d() : null;
+    if (view.checks === "pending") {
+      // after its 3D (the worker that drew the picture makes both, one at a time: the checks
+      // first held the 3D back by their 0.1-0.3 s)
+      const me = state.checkSeq = (state.checkSeq || 0) + 1;
+      state.checking = true;
+      window.studio.idle = false;
+      if (model) model.finally(() => askChecks(view, me));
+      else askChecks(view, me);
+    }
     askSweep();
   }
   else {          // the last good model, dimmed like the last good picture, and why
@@ -304,12 +312,10 @@ function show(view, ms) {
 // The shape checks of a picture (its warnings: a wall too thin, a hole that cuts nothing), asked
 // once it is shown (issue 104: they were 0.2 s of a planetary move's 0.5 s before its picture):
 // added to its messages when they come, if it is still the picture on the page
-async function askChecks(view) {
+async function askChecks(view, me) {
   const source = state.source, values = view.values || {}, shown = view;
-  const me = state.checkSeq = (state.checkSeq || 0) + 1;
-  state.checking = true;
-  window.studio.idle = false;
   try {
+    if (me !== state.checkSeq) return;          // a later picture's checks are on their way
     await pace();
     if (state.view !== shown) return;           // another picture since: its own checks
     const got = await post("/api/checks", { sid: state.sid, source, values });
