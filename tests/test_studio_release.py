@@ -10,6 +10,7 @@ move's picture costs a compile worker, counted in requests and compiles, never t
   are the ones a single request gives.
 * The range sweep's worker runs at a lower priority (``SWEEP_NICE``): a planetary's sweep, 5 s
   of CPU asked at each pause, yields the CPU to the next move's compile.
+* A compile worker collects its whole heap when quiet, not between a picture and its 3D.
 """
 from __future__ import annotations
 
@@ -90,3 +91,36 @@ def test_a_sweep_worker_runs_at_a_lower_priority_than_the_compile_workers():
     finally:
         background.stop()
         foreground.stop()
+
+
+def test_the_whole_heap_is_collected_when_the_worker_is_quiet():
+    """A compile worker collects the whole heap (0.3-0.5 s after a planetary) when no request
+    came right after its answer (``quiet``), not between a picture and its 3D; never more
+    than WHOLE_LATEST rhythms late.  Counted by the collector's own callbacks."""
+    import gc
+
+    from aidl_lang.studio.compiler import WHOLE_LATEST, collect_garbage
+    was, normal = gc.isenabled(), gc.get_threshold()
+    full = []
+
+    def seen(phase, info):
+        if phase == "stop" and info["generation"] == 2:
+            full.append(1)
+    gc.disable()                    # only the collections asked for
+    gc.collect()
+    gc.callbacks.append(seen)
+    try:
+        rhythm = (700, 10, 4)
+        for _ in range(5):          # after each answer: the young objects only
+            collect_garbage(rhythm)
+        assert full == []
+        collect_garbage(rhythm, whole=True)     # quiet, its rhythm reached: the whole heap
+        assert len(full) == 1
+        for _ in range(4 * WHOLE_LATEST):       # never quiet: at WHOLE_LATEST rhythms
+            collect_garbage(rhythm)
+        assert len(full) == 2
+    finally:
+        gc.callbacks.remove(seen)
+        gc.set_threshold(*normal)
+        if was:
+            gc.enable()

@@ -7,7 +7,9 @@ else spawn; :func:`context`).  It is started with a *target*,
 a top-level function ``target(*args) -> handle`` run once in the new process (imports, warm
 caches); ``handle(request) -> answer`` then answers every request sent over the pipe (and
 ``handle.idle()``, when the handler has one, runs after each answer is sent: work the asker
-need not wait for, such as collecting the request's garbage).  Both
+need not wait for, such as collecting the request's garbage; ``handle.quiet()`` when no
+request came within :data:`QUIET` seconds of the answer: longer work, out of the way of the
+requests that follow an answer at once).  Both
 request and answer must pickle.  A request that has not answered within its ``seconds`` kills
 the process (:class:`TimedOut`); a process that dies (out of memory: ``memory`` caps its
 address space with ``RLIMIT_AS``) raises :class:`Died`; the next request starts a fresh one.
@@ -91,6 +93,7 @@ def context(preload: tuple[str, ...] = ()):
 
 
 _PRELOAD: set[str] = set()
+QUIET = 0.3     # s without a request after an answer before the handler's quiet() runs
 
 
 def _main(conn, target, args: tuple, memory: int | None, env: dict | None = None,
@@ -122,6 +125,14 @@ def _main(conn, target, args: tuple, memory: int | None, env: dict | None = None
         idle = getattr(handle, "idle", None)
         if idle is not None:
             idle()
+        quiet = getattr(handle, "quiet", None)
+        if quiet is not None:
+            try:
+                asked = conn.poll(QUIET)
+            except (EOFError, OSError):
+                return
+            if not asked:
+                quiet()
 
 
 class Worker:
