@@ -7,7 +7,9 @@ else spawn; :func:`context`).  It is started with a *target*,
 a top-level function ``target(*args) -> handle`` run once in the new process (imports, warm
 caches); ``handle(request) -> answer`` then answers every request sent over the pipe (and
 ``handle.idle()``, when the handler has one, runs after each answer is sent: work the asker
-need not wait for, such as collecting the request's garbage).  Both
+need not wait for, such as collecting the request's garbage; ``handle.quiet()`` when no
+request came within :data:`QUIET` seconds of the answer: longer work, out of the way of the
+requests that follow an answer at once).  Both
 request and answer must pickle.  A request that has not answered within its ``seconds`` kills
 the process (:class:`TimedOut`); a process that dies (out of memory: ``memory`` caps its
 address space with ``RLIMIT_AS``) raises :class:`Died`; the next request starts a fresh one.
@@ -91,12 +93,20 @@ def context(preload: tuple[str, ...] = ()):
 
 
 _PRELOAD: set[str] = set()
+QUIET = 0.3     # s without a request after an answer before the handler's quiet() runs
 
 
-def _main(conn, target, args: tuple, memory: int | None, env: dict | None = None) -> None:
+def _main(conn, target, args: tuple, memory: int | None, env: dict | None = None,
+          nice: int = 0) -> None:
     """The worker process: build the handler, then answer requests until the pipe closes.
     ``env``: the environment of the process that started it (a forkserver's fork has the
-    environment the forkserver started with)."""
+    environment the forkserver started with); ``nice``: added to the process's niceness (a
+    background worker yields the CPU to those a visitor waits for)."""
+    if nice > 0:
+        try:
+            os.nice(nice)
+        except OSError:
+            pass
     if env is not None and env != os.environ:
         import tempfile
         os.environ.clear()
@@ -115,15 +125,25 @@ def _main(conn, target, args: tuple, memory: int | None, env: dict | None = None
         idle = getattr(handle, "idle", None)
         if idle is not None:
             idle()
+        quiet = getattr(handle, "quiet", None)
+        if quiet is not None:
+            try:
+                asked = conn.poll(QUIET)
+            except (EOFError, OSError):
+                return
+            if not asked:
+                quiet()
 
 
 class Worker:
     """One warm process answering requests with ``target(*args)``'s handler, one at a time
-    (:meth:`request`); ``memory``: its address-space cap in bytes (None: none)."""
+    (:meth:`request`); ``memory``: its address-space cap in bytes (None: none); ``nice``: its
+    process's niceness added (0: as this process)."""
 
     def __init__(self, target, args: tuple = (), memory: int | None = None,
-                 recycle: int = 0, preload: tuple[str, ...] = ()) -> None:
+                 recycle: int = 0, preload: tuple[str, ...] = (), nice: int = 0) -> None:
         self.target, self.args, self.memory = target, tuple(args), memory
+        self.nice = nice
         self.preload = tuple(preload)   # modules a forkserver imports once (:func:`context`)
         self.recycle = recycle      # > 0: a process retires after answering this many requests
         self.answered = 0           # requests the current process answered
@@ -140,7 +160,7 @@ class Worker:
         ctx = context(self.preload)
         parent, child = ctx.Pipe()
         proc = ctx.Process(target=_main, args=(child, self.target, self.args, self.memory,
-                                               dict(os.environ)), daemon=True)
+                                               dict(os.environ), self.nice), daemon=True)
         proc.start()
         child.close()
         self.starting = proc
@@ -250,13 +270,23 @@ class Pool:
         self.cond = threading.Condition()
         self.waiting = 0
 
-    def take(self, wait: float | None = None, prefer: Worker | None = None) -> Worker:
+    def take(self, wait: float | None = None, prefer: Worker | None = None,
+             stick: float = 0.0) -> Worker:
         """An idle worker (``prefer`` when idle, else the one used last), waiting while all are
-        busy: at most ``wait`` seconds (None: as long as it takes), then :class:`Busy`."""
+        busy: at most ``wait`` seconds (None: as long as it takes), then :class:`Busy`.
+        ``stick``: seconds to wait for ``prefer`` while it is busy and another is idle (a
+        request it answers from what it kept, which another worker would compile again)."""
         end = None if wait is None else time.monotonic() + wait
         with self.cond:
             self.waiting += 1
             try:
+                if stick > 0 and prefer is not None and prefer in self.workers:
+                    until = time.monotonic() + (stick if wait is None else min(stick, wait))
+                    while prefer not in self.idle:
+                        left = until - time.monotonic()
+                        if left <= 0:
+                            break
+                        self.cond.wait(left)
                 while not self.idle:
                     left = None if end is None else end - time.monotonic()
                     if left is not None and left <= 0:
@@ -272,12 +302,13 @@ class Pool:
         """Return a worker lent by :meth:`take`."""
         with self.cond:
             self.idle.append(w)
-            self.cond.notify()
+            self.cond.notify_all()      # (a request sticking to another worker may be waiting)
 
     def request(self, request, seconds: float, wait: float | None = None,
-                prefer: Worker | None = None):
-        """:meth:`Worker.request` in an idle worker; returns ``(answer, worker)``."""
-        w = self.take(wait, prefer)
+                prefer: Worker | None = None, stick: float = 0.0):
+        """:meth:`Worker.request` in an idle worker (:meth:`take`); returns ``(answer,
+        worker)``."""
+        w = self.take(wait, prefer, stick)
         try:
             return w.request(request, seconds), w
         finally:

@@ -286,7 +286,12 @@ class Latest:
 
 SUPERSEDED = {"ok": False, "superseded": True, "svg": None, "params": None, "diagnostics": [],
               "error": "a newer change of this design was asked for: this one was not compiled"}
+STICK = 2.0                 # s a picture's 3D or checks wait for the worker that drew it
 SWEPT = 256                 # sweeps a server process keeps (by the program's hash)
+# the sweep workers' niceness: a range sweep (a planetary's: 5 s of CPU, asked at each pause)
+# runs on what the compile workers leave, never beside the next slider move's picture at
+# the same share (issue 104); its budget is work and CPU time, its wall guard 160 s
+SWEEP_NICE = 10
 SWEEP_WAIT = 60.0           # s a sweep waits for a free sweep worker before "busy"
 SWEEP_SUPERSEDED = {"ok": None, "superseded": True, "params": {},
                     "error": "the design changed: the check of its ranges was stopped"}
@@ -370,7 +375,7 @@ class Studio:
         self.rate = parse(settings.rate)
         self.sweepers = None if settings.scheduler or settings.sweepers <= 0 else W.Pool(
             [W.Worker(compiler.handler, (settings.budget,), memory, settings.recycle,
-                      compiler.PRELOAD)
+                      compiler.PRELOAD, nice=SWEEP_NICE)
              for _ in range(settings.sweepers)])
         self.sweeps = Sweeps()
         self.affinity: dict[str, W.Worker] = {}
@@ -395,7 +400,10 @@ class Studio:
     async def compile(self, request_data: tuple, sid: str | None = None):
         """Run one request in a compile worker; raises :class:`Limited` (503) when every
         worker stays busy, and returns ``{"error": ...}`` for a compile stopped past its
-        time or memory."""
+        time or memory.  A picture's 3D and its checks (``glb``, ``checks``) wait up to
+        :data:`STICK` for the worker that drew it (it answers them from the drawing it kept;
+        another worker compiles the picture again: a planetary's 0.5-3 s of CPU beside the
+        next slider move's compile, issue 104)."""
         s = self.settings
         if self.pool.waiting >= s.queue:
             self.served["busy"] += 1
@@ -405,8 +413,11 @@ class Studio:
         prefer = self.affinity.get(sid) if sid else None
         t0 = time.perf_counter()
         try:
-            answer, w = await run_in_threadpool(self.pool.request, request_data, s.seconds,
-                                                s.wait, prefer)
+            args = (request_data, s.seconds, s.wait, prefer)
+            if prefer is not None and request_data[0] in ("glb", "checks") \
+                    and isinstance(self.pool, W.Pool):
+                args += (STICK,)
+            answer, w = await run_in_threadpool(self.pool.request, *args)
             self.metrics.compiled(request_data[0], time.perf_counter() - t0)
         except W.Busy:
             self.served["busy"] += 1

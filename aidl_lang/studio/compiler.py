@@ -55,6 +55,7 @@ PAGES = ("A4", "Letter", "A3", "Legal")     # PDF paper a download may tile over
 # after the answer is sent (:func:`collect_garbage`)
 YOUNG_OBJECTS = 50_000
 YOUNG_ROUNDS = 20
+WHOLE_LATEST = 3            # (collect_garbage: a whole-heap collection waits at most 3 rhythms)
 # what a worker imports, imported once by the forkserver its workers are forked from
 # (:func:`aidl_lang.host.workers.context`): the handler's imports and a compile's
 PRELOAD = ("aidl_lang.studio.compiler", "aidl_lang.studio.wording", "aidl_lang.pipeline",
@@ -163,18 +164,23 @@ def handler(budget: float = 1.0):
             answer["retire"] = True     # give the memory back: a fresh worker takes over
         return answer
     handle.idle = lambda: collect_garbage(normal)
+    handle.quiet = lambda: collect_garbage(normal, whole=True)
     return handle
 
 
-def collect_garbage(threshold: tuple) -> None:
+def collect_garbage(threshold: tuple, whole: bool = False) -> None:
     """After an answer is sent (:mod:`aidl_lang.host.workers` calls the handler's ``idle``): the
     young objects of the request just answered collected (its compile's cycles: 0.02 to 0.15
-    s for a planetary move), the whole heap every ``threshold[2]``-th time (CPython's own
-    rhythm), and the collector's ``threshold`` set back until the next request."""
+    s for a planetary move) and the collector's ``threshold`` set back until the next request.
+    The whole heap (0.3-0.5 s in a worker that drew a planetary) is collected every
+    ``threshold[2]``-th time (CPython's own rhythm) once the worker is quiet (``whole``: the
+    handler's ``quiet``, when no request came right after the answer): it held back the 3D
+    and checks the page asks for a moment after a picture (issue 104); after
+    :data:`WHOLE_LATEST` times that many without a quiet moment, at once."""
     import gc
     gc.set_threshold(*threshold)
     gc.collect(1)
-    if gc.get_count()[2] >= threshold[2]:
+    if gc.get_count()[2] >= threshold[2] * (1 if whole else WHOLE_LATEST):
         gc.collect()
 
 
@@ -313,7 +319,8 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
             # load drops the values its compile with them fails: the visitor's values (what
             # the sliders show) apply, with their error or moved into their ranges (below)
             doc = s.set_params(kept)
-            doc = s.update_checks() or doc
+            if not later:
+                doc = s.update_checks() or doc
     else:
         kept = keep_values(values, s.defaults, assumed)
         if kept != s.values:
@@ -325,8 +332,9 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
     clamped: dict = {}
     if not doc.get("ok") and s.program is not None:
         settled, clamped = settle(s.set_params, s.values, doc)
-        if clamped:
-            doc = s.update_checks() or settled
+        if clamped:         # (with `later`, its checks too: a planetary move's sun moved onto
+            # its step spent 0.2-0.4 s on them before its picture)
+            doc = settled if later else s.update_checks() or settled
         elif settled is not doc:
             s.set_params(kept)          # no better: the visitor's values, and their error
     doc = dict(doc)

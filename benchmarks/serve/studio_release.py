@@ -119,6 +119,7 @@ def main(argv=None) -> int:
     ap.add_argument("--busy", type=int, default=0, help="processes spinning beside the run")
     ap.add_argument("--tree", default=None, help="another checkout's aidl_lang (PYTHONPATH)")
     ap.add_argument("--only", default=None, help="one design id (generator/planetary)")
+    ap.add_argument("--each", action="store_true", help="print every release's figures too")
     args = ap.parse_args(argv)
     from benchmarks.serve.studio_server import studio
     env = {"AIDL_STUDIO_MODEL_URL": ""}
@@ -137,6 +138,9 @@ def main(argv=None) -> int:
     print(f"{'design':28} {'flat ms':>8} {'3D ms':>8} | {'waited':>7} {'compile':>8} "
           f"{'transfer':>9} {'drawing':>8}   (median of {args.runs}, {args.busy} busy loops)")
     for eid, rows in got.items():
+        if args.each:
+            for i, r in enumerate(rows):
+                print(f"  {eid} release {i + 1}: {r}")
         split = [r["split"] for r in rows if r["split"]]
         cells = [med([s[k] for s in split]) for k in ("waited", "compile", "transfer", "drawing")] \
             if split else ["-"] * 4

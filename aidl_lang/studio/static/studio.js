@@ -195,13 +195,18 @@ async function compile() {
   const changedAt = state.changedAt || t0;
   state.changedAt = 0;
   try {
-    const source = state.source, raw = chosenRaw(), values = texts(raw), defaults = {};
+    // held: the sliders' values as sent (raw leaves out those at their defaults: a value the
+    // visitor has not changed since is one still equal to its held value, not to its raw one)
+    const source = state.source, held = { ...state.values }, raw = chosenRaw(), values = texts(raw), defaults = {};
     for (const p of state.params) if (p.name in raw) defaults[p.name] = p.default;
     // the shape checks (the warnings) are asked apart, once the picture is shown (/api/checks)
     const view = await post("/api/view", { sid: state.sid, source, values, defaults, checks: "later" });
     if (seq !== state.seq || source !== state.source) { /* another program since: dropped */ }
     else if (view.superseded) state.again = true;
-    else if (answered(view, raw)) {
+    // a second request would be this one again (same program, same values): its answer is the
+    // sliders' picture, shown; never asked again and again (issue 104: a slider released twice
+    // to a value whose other param the server moves left the page asking forever)
+    else if (answered(view, raw, held) || sameValues(chosenRaw(), raw)) {
       state.shownSent = values;
       const got = performance.now();
       show(view, got - t0);
@@ -221,19 +226,25 @@ async function compile() {
   }
 }
 
-// The answer to a preview sent with the values `raw`: its program's params taken (their
-// defaults and ranges), the values it dropped (not this program's) and moved into their ranges
-// (clamped) applied where the visitor has not changed them since; true when the sliders now
-// hold the values it was made for.
-function answered(view, raw) {
+// The answer to a preview sent with the values `raw` (the sliders held `held` then): its
+// program's params taken (their defaults and ranges), the values it dropped (not this
+// program's) and moved into their ranges (clamped) applied where the visitor has not changed
+// them since; true when the sliders now hold the values it was made for.  "Not changed since"
+// is against `held`, not `raw`: a value at its default is not in `raw` (the planetary's sun,
+// put back on 12 by one release, is moved to 13 by the next: it was left at 12 before)
+function answered(view, raw, held = raw) {
   const made = { ...raw };
+  const unchanged = (name) => {       // a value left out is the param's default (the params sent against)
+    const p = state.params.find((q) => q.name === name), d = p ? p.default : undefined;
+    return same(state.values[name] ?? d, held[name] ?? d);
+  };
   for (const name of view.dropped || []) {
     delete made[name];
-    if (same(state.values[name], raw[name])) delete state.values[name];
+    if (unchanged(name)) delete state.values[name];
   }
   for (const [name, v] of Object.entries(view.clamped || {})) {
     made[name] = v;
-    if (same(state.values[name], raw[name])) {
+    if (unchanged(name)) {
       state.values[name] = v;
       const p = (view.params || state.params).find((q) => q.name === name);
       // a slider's end sent rounded (to 1e-6) and put back on it: no move to speak of
@@ -277,8 +288,16 @@ function show(view, ms) {
   window.studio.shownAt[window.studio.views] = performance.now();
   if (view.ok) {
     building(true);
-    if (!state.timer && !state.again) load3d();
-    if (view.checks === "pending") askChecks(view);
+    const model = !state.timer && !state.again ? load3d() : null;
+    if (view.checks === "pending") {
+      // after its 3D (the worker that drew the picture makes both, one at a time: the checks
+      // first held the 3D back by their 0.1-0.3 s)
+      const me = state.checkSeq = (state.checkSeq || 0) + 1;
+      state.checking = true;
+      window.studio.idle = false;
+      if (model) model.finally(() => askChecks(view, me));
+      else askChecks(view, me);
+    }
     askSweep();
   }
   else {          // the last good model, dimmed like the last good picture, and why
@@ -293,12 +312,10 @@ function show(view, ms) {
 // The shape checks of a picture (its warnings: a wall too thin, a hole that cuts nothing), asked
 // once it is shown (issue 104: they were 0.2 s of a planetary move's 0.5 s before its picture):
 // added to its messages when they come, if it is still the picture on the page
-async function askChecks(view) {
+async function askChecks(view, me) {
   const source = state.source, values = view.values || {}, shown = view;
-  const me = state.checkSeq = (state.checkSeq || 0) + 1;
-  state.checking = true;
-  window.studio.idle = false;
   try {
+    if (me !== state.checkSeq) return;          // a later picture's checks are on their way
     await pace();
     if (state.view !== shown) return;           // another picture since: its own checks
     const got = await post("/api/checks", { sid: state.sid, source, values });
