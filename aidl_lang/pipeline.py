@@ -514,10 +514,18 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
     reds = found.found
     makes = _makers(result.solver.model)
     grouped = _report_groups(sink, reds, found, makes)
+    made = _instances(result.solver.model)
+    red_at: dict = {}
+    for red in reds:
+        red_at[_at(red.constraint)] = red_at.get(_at(red.constraint), 0) + 1
     for red in reds:
         c = red.constraint
         if id(c) in grouped or _in_template(c):
             continue            # reported with its group; or a template's own (issue 61)
+        n = made.get(_at(c), 1)
+        if n > red_at.get(_at(c), 0):
+            _report_instance(sink, red, n, red_at[_at(c)])
+            continue
         by = ", ".join(_source_of(b, c.owner) for b in red.by[:4])
         more = f" and {len(red.by) - 4} more" if len(red.by) > 4 else ""
         labels = [Label(b.span, "overlaps with this" if red.partly else "implied by this",
@@ -540,6 +548,46 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
         sink.add(Diagnostic("W0401", msg, c.span, "warning", hint=hint, labels=labels),
                  calls=instance_calls(c.owner))
     return len(skipped)
+
+
+def _at(c):
+    """Where constraint ``c`` is written (``(file, offset)``; None when it has no span)."""
+    return None if c.span is None else (c.span.file, c.span.start)
+
+
+def _instances(model) -> dict:
+    """``(file, offset)`` -> how many written constraints that line makes (a loop's body, a
+    list argument: several; one written line, one)."""
+    out: dict = {}
+    for c in model.constraints:
+        if not c.implicit and c.kind != "internal" and c.span is not None:
+            out[_at(c)] = out.get(_at(c), 0) + 1
+    return out
+
+
+def _report_instance(sink: DiagnosticSink, red, made: int, redundant: int) -> None:
+    """W0401 for some of the constraints one written line makes (a loop's body run ``made``
+    times, ``redundant`` of them implied by others): the line itself is not redundant,
+    removing it would free what its other instances hold, so the warning says so and its
+    hint never offers to drop it (the fresh models' run data/model_runs/issue105c, request
+    16: `AlignCenterY(pockets.p[i], body)` in a loop of 5 beside `CenterInside(pockets,
+    body)`; dropping the line left the pockets on a diagonal)."""
+    c = red.constraint
+    by = ", ".join(_source_of(b, c.owner) for b in red.by[:4])
+    which = "one" if redundant == 1 else str(redundant)
+    also = f" (with {by})" if by else ""
+    msg = (f"{which} of the {made} constraints `{c.describe()}` makes "
+           f"{'is' if redundant == 1 else 'are'} {'partly ' if red.partly else ''}redundant"
+           f"{also}; the line is not: removing it would free what the other "
+           f"{made - redundant} hold")
+    hint = ("harmless: keep the line; where two statements say the same, narrow the other one"
+            + (f" ({by})" if by else "") + " to what the line does not say"
+            + (" (`AlignCenterX(...)` says the x of a `CenterInside(...)` alone, "
+               "`AlignCenterY(...)` its y)" if "CenterInside(" in by else ""))
+    labels = [Label(b.span, "overlaps with this", primary=False)
+              for b in red.by[:4] if b.span is not None]
+    sink.add(Diagnostic("W0401", msg, c.span, "warning", hint=hint, labels=labels),
+             calls=instance_calls(c.owner))
 
 
 def _source_of(b, owner) -> str:

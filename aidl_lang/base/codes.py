@@ -438,7 +438,11 @@ warning names the redundancy without a drop list. A standard-library template's 
 constraints are never the ones to drop either (its user cannot edit them): beside one
 (`CenterInside(h, body)` on a joint that holds itself by `Fixed(self)`) the hint names the
 user's line and where the template holds it (`std/joints.aidl line 136`), and a redundancy
-wholly inside a template is not reported.
+wholly inside a template is not reported. A line that makes several constraints (a loop's
+body) of which only some are implied is never offered for dropping: the warning says how many
+of them are redundant and that removing the line would free what the others hold, and its hint
+narrows the other statement instead (`AlignCenterX(pockets, body)` for a `CenterInside` whose y
+the loop's `AlignCenterY`s already say).
 
     solid s {
         r = Rectangle(center=(0, 0), width=30, height=20)
