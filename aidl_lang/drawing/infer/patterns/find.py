@@ -328,15 +328,7 @@ def _gapped_grid(centers: list):
     nodes = nx * ny
     if nodes <= n or nodes - n > max(1, int(nodes * MAX_GAPS)) or (nx < 3 and ny < 3):
         return None
-    held = set()
-    for p in centers:
-        i = round((p[0] - x0) / dx) if nx > 1 else 0
-        j = round((p[1] - y0) / dy) if ny > 1 else 0
-        if math.dist(p, (x0 + i * dx, y0 + j * dy)) > EQUAL_TOL or (i, j) in held:
-            return None
-        held.add((i, j))
-    missing = [(i, j) for i in range(nx) for j in range(ny) if (i, j) not in held]
-    return (x0, y0, dx, dy, nx, ny), missing
+    return _on_lattice(centers, x0, y0, dx, dy, nx, ny)
 
 
 def _grid_field(centers: list, r: float):
@@ -555,6 +547,13 @@ def _gapped_as(centers: list, lat: tuple):
     dy = (max(p[1] for p in centers) - y0) / (ny - 1) if ny > 1 else 0.0
     if (nx > 1 and dx <= EQUAL_TOL) or (ny > 1 and dy <= EQUAL_TOL):
         return None
+    return _on_lattice(centers, x0, y0, dx, dy, nx, ny)
+
+
+def _on_lattice(centers: list, x0: float, y0: float, dx: float, dy: float, nx: int, ny: int):
+    """``((x0, y0, dx, dy, nx, ny), the missing (i, j) nodes)`` when every centre sits on its
+    own node of the ``nx`` x ``ny`` lattice from ``(x0, y0)`` by ``(dx, dy)`` (mm, within
+    ``EQUAL_TOL``), else None."""
     held = set()
     for p in centers:
         i = round((p[0] - x0) / dx) if nx > 1 else 0
