@@ -250,6 +250,25 @@ class PartsFirst:
             if params:
                 rows = self.rows_of(upto(max(d, D - 1)))
                 yield d, rows, self._cols(params, rows)
+        # last, the shapes of the features whose frames are free move within them, as their
+        # own rows allow (five pockets of one hole each aligned to the tray: the part held,
+        # each pocket moves; before, the paper's ladder moved the tray 1.5e-4 mm with them,
+        # issue 105's who-moves rule); a feature whose frame is held (`Fixed(h)`) is not
+        # deformed to spare its part
+        rows = self.rows_of(upto(D))
+        free, n, exprs = self._free_list(), self.n_model, self.rows.exprs
+        pinned: set = set()               # unknowns a row holds alone (`Fixed(h)`: its frame)
+        for r in rows.tolist():
+            vs: set = set()
+            row_vars(exprs[r], vs)
+            vs = {v for v in vs if v < n and free[v]}
+            if len(vs) == 1:
+                pinned |= vs
+        free_frames = set(all_frames) - pinned
+        movable = [t for t in below(D) if t.fx in free_frames and t.fy in free_frames]
+        if movable:
+            params = helpers + [i for i in all_frames + own(movable) if i not in held]
+            yield D + 1, rows, self._cols(params, rows)
 
     def _part_unknowns(self, s: Structure, own, frames) -> tuple[set, list, list, list]:
         """(the unknowns the features-first stages hold at ``s``, those its stage "own"
