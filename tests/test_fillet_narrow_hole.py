@@ -45,3 +45,36 @@ def test_a_whole_outline_fillet_that_rounds_a_slots_ends_is_a_note_and_its_hint_
 def test_no_note_where_the_hole_takes_the_radius_or_the_corners_are_named(fillet, slot):
     res = _check(fillet, slot)
     assert res.ok and not [d for d in res.diagnostics if d.code == "W0410"]
+
+
+WINDER = """units mm
+solid winder {
+    left = Rectangle(center=(-18, 0), width=14, height=70)
+    right = Rectangle(center=(18, 0), width=14, height=70)
+    bar = Rectangle(center=(0, 0), width=22, height=22)
+    hole slit {
+        s = Rectangle(center=(-18, 30), width=%s, height=10)
+    }
+    AlignTop(slit, left)
+    %s
+}
+"""
+
+
+def test_a_whole_outline_fillet_that_rounds_a_narrow_notchs_bottom_is_a_note():
+    """The fresh models' cable winder (data/model_runs/issue105c, request 15): a 3 mm slit
+    cut from the top edge under `Fillet(4)` comes out with a round bottom and a flared mouth,
+    silently; now the note W0410 names the notch, and its hint (the part's shapes named)
+    leaves the slit square, with W0406 saying what the mouth's corners got."""
+    res = aidl_lang.compile(source=WINDER % (3, "Fillet(4)"), path="winder.aidl")
+    [d] = [d for d in res.diagnostics if d.code == "W0410"]
+    assert d.severity == "note"
+    assert "the notch whose bottom is at (-18, 25) mm, 3 mm across: only 1.5 mm fits" \
+        in d.message
+    assert "`Fillet([left, right, bar], 4)`" in d.hint
+    fixed = aidl_lang.compile(source=WINDER % (3, "Fillet([left, right, bar], 4)"),
+                              path="winder.aidl")
+    codes = sorted(x.code for x in fixed.diagnostics)
+    assert codes == ["W0406"], [x.message for x in fixed.diagnostics]
+    wide = aidl_lang.compile(source=WINDER % (9, "Fillet(4)"), path="winder.aidl")
+    assert not [x for x in wide.diagnostics if x.code == "W0410"]      # 9 mm takes r 4

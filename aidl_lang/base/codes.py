@@ -521,8 +521,10 @@ A note, not a warning: a `Fillet(radius)` (or `Chamfer(distance)`) without `at` 
 corner of the part's final outline, the holes cut into it included, and a hole narrower than
 two radii can take only half its width at each corner: a 4.2 mm slot under `Fillet(4)` gets
 its ends rounded by 2.1 mm, and a square tab no longer fits it. The note names the hole (its
-centre and least width) and the size that fitted. Nothing to change when round ends are meant;
-to round the part's own outline alone, name its shape, `Fillet(plate, 4)`:
+centre and least width) and the size that fitted. A notch cut into the outer outline narrower
+than two radii (a 3 mm cable slit: its bottom comes out round and its mouth flares) gets the
+same note. Nothing to change when round ends are meant; to round the part's own outline alone,
+name its shapes, `Fillet(plate, 4)` (or `Fillet([left, right], 4)`):
 
     solid bracket {
         plate = Rectangle(center=(0, 0), width=100, height=60)

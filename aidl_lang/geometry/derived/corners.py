@@ -134,14 +134,39 @@ def finish(s: Structure, loops: list, x=None, check=None, said=None) -> list:
                 got[j] = min(v, got.get(j, v))
             if pts is None and lp.is_hole and 0 < mine.get(-1, r) < r * (1 - SHRUNK):
                 narrow.append((lp, mine[-1]))
+            elif pts is None and not lp.is_hole and kind == "Fillet":
+                narrow += _narrow_notches(lp, r)
         if said is not None:
             said += report(kind, r, call, chosen, why, pts, got, loops)
             if narrow:
-                body = next((g.name for g in s.geometry if g.closed and g.name
-                             and not g.construction), None)
+                names = [g.name for g in s.geometry if g.closed and g.name
+                         and not g.construction and not g.__dict__.get("copied")]
+                body = (None if not names else names[0] if len(names) == 1 else
+                        "[" + ", ".join(names[:4]) + "]" if len(names) <= 4 else None)
                 said += _narrow_holes(kind, r, call, narrow, body)
         loops = done
     return loops
+
+
+def _narrow_notches(lp, r: float) -> list:
+    """The bottoms of notches cut into an outer outline ``lp`` narrower than two fillet radii
+    ``r``: a straight piece between two inside corners, shorter than ``2 r`` (a 3 mm cable
+    slit under ``Fillet(4)``, whose bottom comes out round and whose mouth flares: the fresh
+    models' run data/model_runs/issue105c, request 15), as ``[(a Loop of the notch's three
+    sides, the size its corners got)]`` for :func:`_narrow_holes`."""
+    from ..shapes.curves import Line, Loop, turn_between
+    segs = lp.segments
+    n = len(segs)
+    out = []
+    if n < 4:
+        return out
+    for k, g in enumerate(segs):
+        if not isinstance(g, Line) or not g.length < 2 * r * (1 - SHRUNK):
+            continue
+        a, b = segs[k - 1], segs[(k + 1) % n]
+        if turn_between(a, g) < -CORNER_TURN and turn_between(g, b) < -CORNER_TURN:
+            out.append((Loop([a, g, b]), g.length / 2))
+    return out
 
 
 def _narrow_holes(kind: str, r: float, call, narrow: list, body: str | None) -> list:
@@ -161,14 +186,25 @@ def _narrow_holes(kind: str, r: float, call, narrow: list, body: str | None) -> 
         x1, y1 = xy.max(axis=0)
         across = _width(xy)
         verb = "rounds" if kind == "Fillet" else "cuts"
+        if lp.is_hole:
+            where = (f"the corners of the hole at ({(x0 + x1) / 2:.6g}, {(y0 + y1) / 2:.6g}) "
+                     f"mm, {across:.6g} mm across")
+            ends = "its ends come out " + ("round" if kind == "Fillet" else "pointed")
+        else:
+            g = lp.segments[1]
+            across = g.length
+            mx, my = (g.start[0] + g.end[0]) / 2, (g.start[1] + g.end[1]) / 2
+            where = (f"the inside corners of the notch whose bottom is at ({mx:.6g}, "
+                     f"{my:.6g}) mm, {across:.6g} mm across")
+            ends = "its bottom comes out round (and its mouth's corners flare it)"
         out.append((call, "W0410", -2 - len(out),
                     f"`{kind}` ({what} {r:.6g} mm) of the whole outline of `{path}` also "
-                    f"{verb} the corners of the hole at ({(x0 + x1) / 2:.6g}, "
-                    f"{(y0 + y1) / 2:.6g}) mm, {across:.6g} mm across: only {least:.6g} mm "
-                    f"fits, so its ends come out {'round' if kind == 'Fillet' else 'pointed'}",
+                    f"{verb} {where}: only {least:.6g} mm fits, so {ends}",
                     f"nothing to change if that is meant; to {verb[:-1]} the outside alone, "
-                    + (f"name it: `{kind}({body}, {r:.6g})`" if body else
-                       f"name the outline shape: `{kind}(SHAPE, {r:.6g})`")))
+                    + (f"name its shapes: `{kind}({body}, {r:.6g})`" if body else
+                       f"name the outline's shapes: `{kind}([SHAPE, ...], {r:.6g})`")
+                    + ("" if lp.is_hole else " (the corners beside the notch's mouth still "
+                       "get only what fits, and W0406 says how much)")))
     return out
 
 
