@@ -229,38 +229,26 @@ def pytest_runtest_logreport(report):
 # ------------------------------------------------------------------ the order of the files
 # pytest-xdist (--dist loadfile --no-loadscope-reorder, pyproject.toml) hands the files to its
 # workers in collection order: the slowest of the last run first (their seconds kept in
-# pytest's cache, aidl/file_seconds, over those committed in tests/file_seconds.json for a
-# fresh clone), so the run ends on small files and both workers end together; files neither
-# knows by their count of tests, most first (xdist's own order).  The controller reads the cache once and gives both
+# pytest's cache, aidl/file_seconds), so the run ends on small files and both workers end
+# together; files the cache does not know (a fresh clone: all of them) by their count of
+# tests, most first (xdist's own order).  The controller reads the cache once and gives both
 # workers the same figures (their collections must match).
 _file_seconds: collections.Counter = collections.Counter()
 _SECONDS_KEY = "aidl/file_seconds"
 
 
-def _known_seconds(cache) -> dict:
-    """Each test file's seconds: the last run's (pytest's cache) over those committed in
-    tests/file_seconds.json (a fresh clone, as CI runs, has no cache: by the count of tests
-    alone its slowest files came last and one worker ended 35 s after the other)."""
-    import json
-    try:
-        known = json.loads((ROOT / "tests" / "file_seconds.json").read_text())
-    except (OSError, ValueError):
-        known = {}
-    if cache is not None:
-        known.update(cache.get(_SECONDS_KEY, {}))
-    return known
-
-
 @pytest.hookimpl(optionalhook=True)
 def pytest_configure_node(node):
-    node.workerinput["aidl_file_seconds"] = _known_seconds(getattr(node.config, "cache", None))
+    cache = getattr(node.config, "cache", None)
+    node.workerinput["aidl_file_seconds"] = cache.get(_SECONDS_KEY, {}) if cache else {}
 
 
 def pytest_collection_modifyitems(session, config, items):
     if _worker(config):
         seconds = config.workerinput.get("aidl_file_seconds", {})
     else:
-        seconds = _known_seconds(getattr(config, "cache", None))
+        cache = getattr(config, "cache", None)
+        seconds = cache.get(_SECONDS_KEY, {}) if cache else {}
     count = collections.Counter(item.nodeid.split("::")[0] for item in items)
     rank = {f: i for i, f in enumerate(sorted(count, key=lambda f: (-seconds.get(f, 0.0),
                                                                      -count[f], f)))}
