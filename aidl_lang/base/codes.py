@@ -517,7 +517,7 @@ nowhere: rounding every corner up to the radius is what it is for, except at a h
     }
 """),
     "W0410": ("whole-outline Fillet rounds a narrow hole's ends", """
-A note, not a warning: a `Fillet(radius)` (or `Chamfer(distance)`) without `at` rounds every
+A note, not a warning: a `Fillet(radius)` without `at` rounds every
 corner of the part's final outline, the holes cut into it included, and a hole narrower than
 two radii can take only half its width at each corner: a 4.2 mm slot under `Fillet(4)` gets
 its ends rounded by 2.1 mm, and a square tab no longer fits it. The note names the hole (its

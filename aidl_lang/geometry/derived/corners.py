@@ -132,10 +132,11 @@ def finish(s: Structure, loops: list, x=None, check=None, said=None) -> list:
                                 None if pts is None else [p for p, _ in pts], mine))
             for j, v in mine.items():
                 got[j] = min(v, got.get(j, v))
-            if pts is None and lp.is_hole and 0 < mine.get(-1, r) < r * (1 - SHRUNK):
-                narrow.append((lp, mine[-1]))
-            elif pts is None and not lp.is_hole and kind == "Fillet":
-                narrow += _narrow_notches(lp, r)
+            if pts is None and kind == "Fillet":     # (a Chamfer leaves inside corners)
+                if lp.is_hole and 0 < mine.get(-1, r) < r * (1 - SHRUNK):
+                    narrow.append((lp, mine[-1]))
+                elif not lp.is_hole:
+                    narrow += _narrow_notches(lp, r)
         if said is not None:
             said += report(kind, r, call, chosen, why, pts, got, loops)
             if narrow:
@@ -170,37 +171,33 @@ def _narrow_notches(lp, r: float) -> list:
 
 
 def _narrow_holes(kind: str, r: float, call, narrow: list, body: str | None) -> list:
-    """The note W0410 for each hole of the outline that a ``Fillet``/``Chamfer`` of the
-    whole outline (no ``at``) could round only with less than its size, because the hole is
-    narrower than two of it: its ends come out round (a 4.2 mm slot under ``Fillet(4)``),
-    which a reader of ``Fillet(4)`` written beside the plate did not expect (the fresh
-    models' run data/model_runs/issue105b, request 8: a tab slot that no tab fits).
-    ``narrow``: [(the hole's loop, the least size its corners got)]; ``body``: the name of
-    the structure's own outline shape, for the hint (None: said in words)."""
+    """The note W0410 for each hole of the outline that a ``Fillet`` of the whole outline (no
+    ``at``) could round only with less than its radius, because the hole is narrower than two
+    of it: its ends come out round (a 4.2 mm slot under ``Fillet(4)``), which a reader of
+    ``Fillet(4)`` written beside the plate did not expect (the fresh models' run
+    data/model_runs/issue105b, request 8: a tab slot that no tab fits); the same for a notch
+    of the outer outline (:func:`_narrow_notches`).  ``narrow``: [(the hole's loop, or the
+    notch's three sides, the least radius its corners got)]; ``body``: the structure's own
+    outline shapes as the hint writes them (None: said in words)."""
     out = []
-    what = "radius" if kind == "Fillet" else "distance"
     path = getattr(getattr(call, "owner", None), "path", "") or "?"
     for lp, least in narrow[:3]:
-        xy = lp.points()
-        x0, y0 = xy.min(axis=0)
-        x1, y1 = xy.max(axis=0)
-        across = _width(xy)
-        verb = "rounds" if kind == "Fillet" else "cuts"
         if lp.is_hole:
+            xy = lp.points()
+            (x0, y0), (x1, y1) = xy.min(axis=0), xy.max(axis=0)
             where = (f"the corners of the hole at ({(x0 + x1) / 2:.6g}, {(y0 + y1) / 2:.6g}) "
-                     f"mm, {across:.6g} mm across")
-            ends = "its ends come out " + ("round" if kind == "Fillet" else "pointed")
+                     f"mm, {_width(xy):.6g} mm across")
+            ends = "its ends come out round"
         else:
             g = lp.segments[1]
-            across = g.length
             mx, my = (g.start[0] + g.end[0]) / 2, (g.start[1] + g.end[1]) / 2
             where = (f"the inside corners of the notch whose bottom is at ({mx:.6g}, "
-                     f"{my:.6g}) mm, {across:.6g} mm across")
+                     f"{my:.6g}) mm, {g.length:.6g} mm across")
             ends = "its bottom comes out round (and its mouth's corners flare it)"
         out.append((call, "W0410", -2 - len(out),
-                    f"`{kind}` ({what} {r:.6g} mm) of the whole outline of `{path}` also "
-                    f"{verb} {where}: only {least:.6g} mm fits, so {ends}",
-                    f"nothing to change if that is meant; to {verb[:-1]} the outside alone, "
+                    f"`{kind}` (radius {r:.6g} mm) of the whole outline of `{path}` also "
+                    f"rounds {where}: only {least:.6g} mm fits, so {ends}",
+                    "nothing to change if that is meant; to round the outside alone, "
                     + (f"name its shapes: `{kind}({body}, {r:.6g})`" if body else
                        f"name the outline's shapes: `{kind}([SHAPE, ...], {r:.6g})`")
                     + ("" if lp.is_hole else " (the corners beside the notch's mouth still "

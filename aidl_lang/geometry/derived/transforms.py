@@ -135,17 +135,13 @@ def _carry_derived(target, cl) -> None:
     then on, as every later statement is: the wall follows its outline.  (Before: the wall
     kept the original's size and place, and the Scale changed nothing drawn, silently; the
     fresh models' run data/model_runs/issue105b, request 10.)"""
-    if isinstance(target, StructRef):
-        inside = set(target.struct.subtree())
-        s = target.struct.parent
-    else:
-        inside = set()
-        s = target.geom.owner
+    s = target.struct.parent if isinstance(target, StructRef) else target.geom.owner
     made = set(map(id, cl.geoms.values()))
     while s is not None:
         for g in s.geometry:
             src = g.data.get("sources")
-            if src and id(g) not in made and g.owner not in inside:
+            # (not the copies, nor the originals they copy: `wall_original` keeps its outline)
+            if src and id(g) not in made and g not in cl.geoms:
                 g.data["sources"] = [cl.geoms.get(q, q) for q in src]
         s = s.parent
 
