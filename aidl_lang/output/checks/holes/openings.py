@@ -150,11 +150,14 @@ def _check_closed_openings(d: Drawing, s: Structure, shape, cuts, min_wall: floa
         P = np.vstack([np.asarray(p, dtype=float) for p in out.to_polygons()])[:MAX_DEPTH_POINTS]
         x1, y1, x2, y2 = (np.asarray(e, dtype=float) for e in edges)
         dx, dy = (x2 - x1)[None], (y2 - y1)[None]
-        px, py = P[:, :1] - x1[None], P[:, 1:] - y1[None]
         L2 = dx * dx + dy * dy
-        with np.errstate(divide="ignore", invalid="ignore"):
-            t = np.clip(np.where(L2 > 0, (px * dx + py * dy) / L2, 0.0), 0.0, 1.0)
-        dist = np.hypot(px - t * dx, py - t * dy).min(axis=1)
+        step = max(1, 1_000_000 // max(1, len(x1)))    # points x edges a block: <= 1e6
+        dist = np.empty(len(P))
+        for i in range(0, len(P), step):
+            px, py = P[i:i + step, :1] - x1[None], P[i:i + step, 1:] - y1[None]
+            with np.errstate(divide="ignore", invalid="ignore"):
+                t = np.clip(np.where(L2 > 0, (px * dx + py * dy) / L2, 0.0), 0.0, 1.0)
+            dist[i:i + step] = np.hypot(px - t * dx, py - t * dy).min(axis=1)
         k = int(np.argmax(dist))
         depth = float(dist[k])
         x, y = P[k]
