@@ -109,3 +109,32 @@ def test_a_strict_comparison_inside_the_tolerance_says_the_gap():
                        "every comparison is judged within)")
     assert "only 5e-07 mm apart: `<` needs a gap of more than 1e-06 mm" in msgs[1]
     assert msgs[2] == "assertion failed: `b > 3 mm`: 2 mm > 3 mm is false"
+
+
+REQUEST = """solid stand {
+    base = Rectangle(center=(0, 0), width=60, height=40)
+    hole feet_hole { c = Circle(center=(-24, -14), diameter=3.4) }
+    feet = CornerPattern(feet_hole, base, inset=6)
+    lip = Rectangle(center=(0, 0), width=60, height=10)
+    lip.bb.bottom == LIP_BOTTOM
+    assert len(feet) == COUNT, "two screw holes at the bottom corners"
+    assert lip.bb.top - base.bb.top == 8 mm, "the lip rises 8 mm above the base"
+}
+"""
+
+
+@pytest.mark.parametrize("count, bottom, found", [
+    (4, 18, []),
+    (2, 18, ["`len(feet) == 2` (two screw holes at the bottom corners): 4 == 2 is false"]),
+    (4, 16, ["6 mm == 8 mm is false"]),
+    (2, 16, ["4 == 2 is false", "6 mm == 8 mm is false"]),
+])
+def test_the_prompts_request_asserts_name_the_slips(count, bottom, found):
+    """`aidl prompt` tells a model to assert the request's own numbers and counts (issue 105:
+    a CornerPattern gives four holes where two were asked, a lip drawn 2 mm low): each slip is
+    E0405 at the check, the right program checks clean."""
+    r = aidl_lang.compile(source=REQUEST.replace("COUNT", str(count))
+                          .replace("LIP_BOTTOM", str(bottom)))
+    msgs = [m for _, _, m in errors(r)]
+    assert r.ok == (not found)
+    assert len(msgs) == len(found) and all(any(f in m for m in msgs) for f in found), msgs
