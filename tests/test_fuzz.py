@@ -400,6 +400,17 @@ def mutated_seeds(draw):
 _WORK = None
 
 
+@pytest.fixture(scope="module", autouse=True)
+def _remove_workdir():
+    """The folder of `_workdir` is removed when the module's tests end (it was left in /tmp)."""
+    global _WORK
+    yield
+    if _WORK is not None:
+        import shutil
+        shutil.rmtree(_WORK, ignore_errors=True)
+        _WORK = None
+
+
 def _workdir():
     """One folder for the in-process command line's files (hypothesis runs many examples
     per test; a function-scoped tmp_path would be shared by them anyway)."""

@@ -6,6 +6,7 @@ import contextlib
 import io
 from pathlib import Path
 
+import pytest
 import numpy as np
 
 from aidl_lang.api import compile as aidl_compile
@@ -84,10 +85,24 @@ def _stdlib_line(name: str, text: str, after: str = "") -> int:
     return next(i + 1 for i in range(start, len(lines)) if text in lines[i])
 
 
+_MADE: list[str] = []
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _remove_written():
+    """The folders `_write` made are removed when the module's tests end (they were left in
+    /tmp)."""
+    yield
+    import shutil
+    while _MADE:
+        shutil.rmtree(_MADE.pop(), ignore_errors=True)
+
+
 def _write(src: str, name: str) -> str:
     import tempfile
     import os
     d = tempfile.mkdtemp(prefix="aidl-issue61-")
+    _MADE.append(d)
     p = os.path.join(d, f"{name}.aidl")
     with open(p, "w", encoding="utf-8") as f:
         f.write(src)

@@ -513,3 +513,21 @@ def test_sigterm_stops_a_studio_of_several_processes_and_its_workers():
         left = [p for p in workers if Path(f"/proc/{p}").exists()
                 and "Z" not in Path(f"/proc/{p}/stat").read_text().rsplit(")", 1)[-1][:3]]
         assert not left, f"workers still running after the studio ended: {left}"
+
+
+def test_an_app_without_a_data_folder_removes_the_one_it_made():
+    """`create_app` without `data` makes a sessions' folder and removes it when the app ends
+    (they were left in /tmp, one per app); a folder it was given is kept."""
+    made = Settings(compilers=1)
+    with TestClient(create_app(made)) as c:
+        assert c.post("/api/session").status_code == 200
+        folder = Path(made.data)
+        assert folder.is_dir() and folder.name.startswith("aidl-studio-")
+    assert not folder.exists()
+
+
+def test_an_app_keeps_the_data_folder_it_was_given(tmp_path):
+    given = tmp_path / "data"
+    with TestClient(create_app(Settings(data=str(given), compilers=1))) as c:
+        assert c.post("/api/session").status_code == 200
+    assert given.is_dir() and any(given.iterdir())

@@ -585,7 +585,8 @@ def create_app(settings: Settings | None = None) -> Starlette:
     process builds it)."""
     if settings is None:
         settings = Settings.from_env()
-    if not settings.data:
+    made = not settings.data
+    if made:
         import tempfile
         settings.data = tempfile.mkdtemp(prefix="aidl-studio-")
     st = Studio(settings)
@@ -599,6 +600,9 @@ def create_app(settings: Settings | None = None) -> Starlette:
             yield
         finally:
             await run_in_threadpool(st.stop)
+            if made:                    # the sessions' folder this app made, not a given one
+                import shutil
+                shutil.rmtree(settings.data, ignore_errors=True)
 
     app = Starlette(routes=routes, lifespan=lifespan,
                     middleware=[Middleware(RequestMetrics, metrics=st.metrics, routes=routes)])

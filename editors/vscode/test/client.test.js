@@ -17,8 +17,9 @@ const { LanguageClient } = require('vscode-languageclient/node');
 const { findServer, serverOptions, clientOptions, notFoundMessage } = require('../server');
 
 
-test('findServer: setting, then the workspace .venv, then PATH, naming what it tried', () => {
+test('findServer: setting, then the workspace .venv, then PATH, naming what it tried', (t) => {
   const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'aidl-find-'));
+  t.after(() => fs.rmSync(tmp, { recursive: true, force: true }));
   const venvBin = path.join(tmp, 'ws', '.venv', 'bin');
   const other = path.join(tmp, 'other');
   fs.mkdirSync(venvBin, { recursive: true });

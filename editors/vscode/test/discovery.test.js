@@ -22,8 +22,9 @@ function fakeAidl(dir) {
   return path.join(dir, 'aidl');
 }
 
-test('findServer walks up from the workspace folder, then from the file, to the nearest venv', () => {
+test('findServer walks up from the workspace folder, then from the file, to the nearest venv', (t) => {
   const tmp = fs.realpathSync(fs.mkdtempSync(path.join(os.tmpdir(), 'aidl-walk-')));
+  t.after(() => fs.rmSync(tmp, { recursive: true, force: true }));
   const env = { PATH: path.join(tmp, 'nothing') };
   const top = fakeAidl(path.join(tmp, 'proj', '.venv', 'bin'));
   const nested = fakeAidl(path.join(tmp, 'proj', 'sub', 'venv', 'bin'));
@@ -46,8 +47,9 @@ test('findServer walks up from the workspace folder, then from the file, to the 
   assert.equal(r.tried.filter((t) => t === path.join(tmp, 'venv', 'bin', 'aidl')).length, 1);
 });
 
-test('a server installed after activation is picked up without a reload', async () => {
+test('a server installed after activation is picked up without a reload', async (t) => {
   const tmp = fs.realpathSync(fs.mkdtempSync(path.join(os.tmpdir(), 'aidl-late-')));
+  t.after(() => fs.rmSync(tmp, { recursive: true, force: true }));
   const ws = path.join(tmp, 'ws');
   fs.mkdirSync(ws);
   const saved = { PATH: process.env.PATH, VIRTUAL_ENV: process.env.VIRTUAL_ENV, CONDA_PREFIX: process.env.CONDA_PREFIX };
@@ -99,7 +101,7 @@ function expand(body) {
   return body.join('\n').replace(/\$\{\d+:([^}]*)\}/g, '$1').replace(/\$\d+/g, '').replace(/\t/g, '    ');
 }
 
-test('every snippet, expanded with its defaults, compiles', () => {
+test('every snippet, expanded with its defaults, compiles', (t) => {
   const snippets = JSON.parse(fs.readFileSync(path.join(__dirname, '..', 'snippets', 'aidl.json'), 'utf8'));
   const pkg = JSON.parse(fs.readFileSync(path.join(__dirname, '..', 'package.json'), 'utf8'));
   assert.deepEqual(pkg.contributes.snippets, [{ language: 'aidl-cad', path: './snippets/aidl.json' }]);
@@ -110,6 +112,7 @@ test('every snippet, expanded with its defaults, compiles', () => {
   const analysis = fs.readFileSync(path.join(ROOT, 'aidl_lang', 'editor', 'lsp', 'analysis.py'), 'utf8');
   assert.ok(analysis.includes('```aidl_cad\\n') && !analysis.includes('```aidl-cad'));
   const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'aidl-snip-'));
+  t.after(() => fs.rmSync(tmp, { recursive: true, force: true }));
   assert.ok(Object.keys(snippets).length >= 15);
   const files = [];
   for (const [name, s] of Object.entries(snippets)) {

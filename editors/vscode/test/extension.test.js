@@ -118,7 +118,9 @@ test('the extension previews telephone.aidl and follows edits, sliders and the c
   for (const s of holes) assert.match(slid.svg, new RegExp(`id="${s.id}"[^>]*data-range="${s.range.join(',')}"`));
 
   // render to DXF through the save dialog (the slider value goes along as --set)
-  const out = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'aidl-render-')), 'phone.dxf');
+  const outDir = fs.mkdtempSync(path.join(os.tmpdir(), 'aidl-render-'));
+  t.after(() => fs.rmSync(outDir, { recursive: true, force: true }));
+  const out = path.join(outDir, 'phone.dxf');
   setSaveDialog(vscode.Uri.file(out));
   const r = await vscode.commands.executeCommand('aidl.renderDxf');
   assert.equal(r.code, 0, r.stderr);
