@@ -518,9 +518,10 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
     red_at: dict = {}
     for red in reds:
         red_at[_at(red.constraint)] = red_at.get(_at(red.constraint), 0) + 1
+    echoes = _echoes(reds, found)
     for red in reds:
         c = red.constraint
-        if id(c) in grouped or _in_template(c):
+        if id(c) in grouped or _in_template(c) or id(c) in echoes:
             continue            # reported with its group; or a template's own (issue 61)
         n = made.get(_at(c), 1)
         if n > red_at.get(_at(c), 0):
@@ -548,6 +549,29 @@ def report_redundancies(sink: DiagnosticSink, result: SolveResult,
         sink.add(Diagnostic("W0401", msg, c.span, "warning", hint=hint, labels=labels),
                  calls=instance_calls(c.owner))
     return len(skipped)
+
+
+def _echoes(reds: list, found) -> set:
+    """The ids of the partly redundant constraints whose overlap is another finding's whole
+    redundancy seen from the other side: ``At(holes[1].c.center, body.center)`` beside a
+    redundant ``AlignCenterY(brush, body)`` (105c: two W0401s for one redundancy, each
+    naming the other, and a model could not tell which to drop).  ``P`` is such an echo of
+    a wholly redundant ``R`` that names it when, ``R`` dropped, nothing of ``P`` is implied
+    any more: dropping both frees all that ``P`` pins beyond its shapes
+    (``found.rank_lost([P, R]) >= P.beyond``); ``R``'s own warning says it all."""
+    whole = {id(r.constraint): r for r in reds if not r.partly and r.by}
+    out: set = set()
+    for p in reds:
+        if not p.partly or not p.beyond:
+            continue
+        for b in p.by:
+            r = whole.get(id(b))
+            if r is not None and any(x is p.constraint for x in r.by):
+                lost = found.rank_lost([p.constraint, r.constraint])
+                if lost is not None and lost >= p.beyond:
+                    out.add(id(p.constraint))
+                    break
+    return out
 
 
 def _at(c):
@@ -718,11 +742,12 @@ def _report_groups(sink: DiagnosticSink, reds: list, found, makes: set) -> set:
                 drop.append(c)
         drop.sort(key=pos)
         keep = [c for c in members if c not in drop]
+        at_owner = members[-1].owner
         names = ", ".join(f"`{c.describe()}`" for c in members[:-1]) + \
             f" and `{members[-1].describe()}`"
         others = [b for k in keep for b in full[id(k)].by if id(b) not in done]
         others = [b for i, b in enumerate(others) if b not in others[:i]]
-        also = (" (with " + ", ".join(f"`{b.describe()}`" for b in others[:3]) + ")"
+        also = (" (with " + ", ".join(_source_of(b, at_owner) for b in others[:3]) + ")"
                 if others else "")
         lines = ", ".join(f"`{c.describe()}` ({_line_of(c)})" for c in drop)
         held = [c for c in members if _in_template(c)]

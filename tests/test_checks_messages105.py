@@ -232,3 +232,70 @@ def test_W0513_an_arc_a_frame_and_a_line_through_a_word():
             after = aidl_lang.compile(fixed)
             still = [w for w in _w(after, "W0513") if f'("{word}")' in w.message]
             assert after.ok and not still, (word, [w.message for w in still])
+
+
+
+BRUSH = """param hole_d = 18 mm, min = 12 mm, max = 24 mm
+solid holder {
+    body = RoundedRectangle(center=(0, 0), width=120, height=50, corner_radius=6)
+    hole brush {
+        c = Circle(center=(-36, YB), diameter=hole_d)
+    }
+    holes = LinearPattern(brush, 3, (36, 0))
+    ALIGN
+    At(holes[1].c.center, body.center)
+}
+"""
+
+
+def _check(tmp_path, src: str, name: str):
+    """`aidl check --json` and `aidl check --describe` of ``src``, in this process: the
+    W0401 messages and the described circles."""
+    import contextlib
+    import io
+    from aidl_lang.cli.main import main
+    f = tmp_path / f"{name}.aidl"
+    f.write_text(src)
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
+        assert main(["check", "--json", str(f)]) == 0
+    found = [d["message"] for d in json.loads(out.getvalue())["diagnostics"]
+             if d["code"] == "W0401"]
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
+        main(["check", "--describe", str(f)])
+    return found, sorted(re.findall(r"circle d=[\d.]+ at \([^)]*\)", out.getvalue()))
+
+
+@pytest.mark.parametrize("yb", [0, 3])
+def test_one_redundancy_is_one_W0401_on_the_statement_that_frees_nothing(tmp_path, yb):
+    """105c #01: `AlignCenterY(brush, body)` beside `At(holes[1].c.center, body.center)` (the
+    pattern's copy rule between them) was two W0401s, one "redundant" and one "partly
+    redundant", each naming the other.  Now one, on the AlignCenterY; followed (the line
+    dropped), the program checks clean with the holes where they were, written on the centre
+    line or 3 mm off it."""
+    src = BRUSH.replace("YB", str(yb))
+    found, holes = _check(tmp_path, src.replace("ALIGN", "AlignCenterY(brush, body)"), "a")
+    [w] = found
+    assert w.startswith("`AlignCenterY(brush, body)` is redundant: it follows from "
+                        "`At(holes[1].c.center, body.center)`, the pattern `holes`'s copy rule")
+    found2, holes2 = _check(tmp_path, src.replace("ALIGN", ""), "b")
+    assert not found2
+    assert holes == holes2 == ["circle d=18 at (-36, 0)", "circle d=18 at (0, 0)",
+                               "circle d=18 at (36, 0)"]
+
+
+def test_a_statement_with_more_than_one_overlap_is_still_reported(tmp_path):
+    """The echo rule drops only the other side of one redundancy: an `At` whose x follows
+    from `AlignCenterX` and whose y from `AlignCenterY` is still named (each align alone
+    names it; dropping one align leaves the At's other overlap)."""
+    src = """solid p {
+    body = Rectangle(center=(0, 0), width=60, height=40)
+    hole h { c = Circle(center=(5, 5), radius=2) }
+    AlignCenterX(h, body)
+    AlignCenterY(h, body)
+    At(h.c.center, body.center)
+}
+"""
+    found, _ = _check(tmp_path, src, "c")
+    assert found and any("At(h.c.center, body.center)" in m for m in found), found
