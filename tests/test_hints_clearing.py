@@ -225,3 +225,46 @@ def test_a_circular_patterns_copy_is_not_moved_by_its_original_the_other_hole_is
     c = _compile(tmp_path, placed, "placed.aidl")
     (w,) = [d for d in c.sink.items if d.code == "W0508"]
     assert w.fix is None                # neither can be moved by its call: the hint alone
+
+
+HANGER = """solid hanger {
+    board = RoundedRectangle(center=(0, 0), width=90, height=220, corner_radius=8)
+    hole knob { c = Circle(center=(0, 60), diameter=55) }
+    hole slit { s = Rectangle(center=(30, 60), width=45, height=4) }
+    AlignCenterX(knob, board)
+    VerticalDistance(knob.c.center, board.top.midpoint, 45 mm)
+    AlignCenterY(slit, knob)
+    slit.s.left.midpoint.x == knob.c.center.x
+    slit.bb.right == board.bb.right
+    ALLOW
+}
+"""
+
+
+def test_a_slit_placed_from_a_holes_centre_reads_as_one_opening(tmp_path):
+    """105e #01: a door hanger's slit, placed by relations from the knob hole's centre to the
+    edge (61 % of it inside the hole): W0508's hint led with moving the slit 28 mm away,
+    which cuts it off its hole.  Now it leads with the one opening (`AllowOverlap`), the
+    move second, and no machine fix; followed, the program checks clean.  A hole only half
+    inside another (a screw centred on a window's edge, a common slip) still leads with the
+    move."""
+    c = _compile(tmp_path, HANGER.replace("ALLOW", ""))
+    (w,) = [d for d in c.sink.items if d.code == "W0508"]
+    assert w.fix is None
+    assert w.hint.startswith("one opening looks meant (61% of hole `hanger.slit` lies inside "
+                             "hole `hanger.knob`): write `AllowOverlap(knob, slit)` in `hanger`")
+    assert "; if two are meant, move hole `hanger.slit` 28.01 mm further" in w.hint
+    ok = _compile(tmp_path, HANGER.replace("ALLOW", "AllowOverlap(knob, slit)"), "ok.aidl")
+    assert not [d for d in ok.sink.items if d.severity == "warning"]
+    (part,) = ok.drawing.parts
+    assert part.shape.num_contour() == 1      # the slit runs out at the edge: one outline
+    edge = """solid plate {
+    body = Rectangle(center=(0, 0), width=80, height=40)
+    hole opening { r = Rectangle(center=(0, 0), width=30, height=20) }
+    hole screw { c = Circle(center=(0, 0), radius=3) }
+    opening.r.center == (0, 0)
+    screw.c.center == (15, 0)
+}
+"""
+    (w,) = [d for d in _compile(tmp_path, edge, "edge.aidl").sink.items if d.code == "W0508"]
+    assert w.hint.startswith("move hole `plate.screw`"), w.hint

@@ -705,7 +705,9 @@ inner hole cuts from it, and `AllowOverlap(window, tab)` in the structure holdin
 marks the refill as intended (it silences this warning and W0501 for the pair).
 Two holes meant to cut one opening (a screw hole on the edge of a window) are said with
 `AllowOverlap(window, screw)` in the structure holding both, as the hint writes (or draw the
-shapes in one hole structure).
+shapes in one hole structure). When more than 55 % of the smaller hole lies inside the other
+and relations place both (a slit placed from a knob hole's centre out to the edge), one
+opening looks meant: the hint leads with `AllowOverlap` and gives the move second.
 The suggested fix (`--json`, the editors' quick fix) never hides the overlap. Two different
 holes that overlap or touch are never taken as meant (one opening is drawn in one hole): the
 fix moves one of them clear, the one the warning points at, else the other, by the shortest

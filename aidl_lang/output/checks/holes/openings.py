@@ -448,6 +448,25 @@ def _seg_distances(P: np.ndarray, F: np.ndarray, sf: np.ndarray, A: np.ndarray,
     return out
 
 
+# the share of the smaller hole's area inside the other past which W0508 reads one opening as
+# meant (a round hole centred on a window's edge, a common slip, is 0.5)
+SHARE_MEANT = 0.55
+
+
+def _share_inside(a, i: int, j: int, common: float | None):
+    """``(fraction, name)`` when more than :data:`SHARE_MEANT` of the smaller of holes ``i``
+    and ``j`` (by area) lies inside the other (a slit placed from a knob hole's centre to the
+    edge: 61 %): the two are then drawn as one opening, and W0508's hint leads with
+    `AllowOverlap`, the move second (moving them apart cuts the slit off its hole: 105e #01);
+    None for a shallower overlap, or without the areas."""
+    if common is None or len(a.areas) <= max(i, j):
+        return None
+    k = i if a.areas[i] <= a.areas[j] else j
+    if a.areas[k] <= 0 or common <= SHARE_MEANT * a.areas[k]:
+        return None
+    return min(1.0, common / a.areas[k]), a.names[k]
+
+
 def _inner(a: _Openings, i: int, j: int, common) -> int | None:
     """Which of holes ``i`` and ``j`` lies wholly inside the other (their common area is
     all of its area), if one does."""
@@ -517,10 +536,19 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
         elif d is not None and shape is not None and a.cuts and moves < MAX_MOVES:
             moves += 1
             move, fix = _merge_fix(d, s, shape, a, i, j, t, sink, move, near)
+        # most of one inside the other, both placed by relations (no call to edit): one
+        # opening looks meant, and the hint leads with it (no machine fix either way)
+        share = _share_inside(a, i, j, common) if fix is None else None
+        if share is not None:
+            smaller, other = share[1], (second if share[1] == first else first)
+            hint = (f"one opening looks meant ({share[0]:.0%} of {smaller} lies inside "
+                    f"{other}): {meant}; if two are meant, {move}, or shrink one of them so "
+                    "that material is left between them")
+        else:
+            hint = (f"{move}; or shrink one of them so that material is left between them; "
+                    f"if one opening is meant, {meant}")
         sink.warning("W0508", f"{first} and {second} of `{s.path}` {how}, so they cut one "
-                     "opening, not two", a.spans[j], labels=labels,
-                     hint=f"{move}; or shrink one of them so that material is left between "
-                          f"them; if one opening is meant, {meant}", fix=fix)
+                     "opening, not two", a.spans[j], labels=labels, hint=hint, fix=fix)
     inner = len(a.names) - 1
     for i, j, w, length, (x, y) in a.webs:
         covered.add(frozenset((a.names[i], a.names[j])))
