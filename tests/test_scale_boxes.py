@@ -11,6 +11,7 @@ drawn parts (Manifold's outlines, the part's box) must stand 8 mm apart and cent
 from __future__ import annotations
 
 import pytest
+from hypothesis import given, settings, strategies as st
 
 import aidl_lang
 
@@ -179,3 +180,82 @@ def test_shapes_of_one_feature_each_placed_on_the_part_move_and_the_part_stays(n
             assert x == pytest.approx(3, abs=1e-9)
         else:
             assert (x, y) == pytest.approx((3 + 10 * i - 20, 2), abs=1e-9)
+
+
+# 105d #09: picks of three free circles under a Hull, some scaled in place, placed side by side
+# by their boxes, each with a label `At` its bottom: the check said ok while the picks came out
+# bent (33.6 x 26.3 mm for a 22.1 x 25.5 one) and the plate moved 16 mm
+PICKS = """def pick() -> hole {{
+    top_l = Circle(center=(-8, 5), radius=5)
+    top_r = Circle(center=(8, 5), radius=5)
+    tip = Circle(center=(0, -17.5), radius=2.5)
+    outline = Hull(top_l, top_r, tip)
+}}
+solid template {{
+    plate = RoundedRectangle(center=(0, 0), width={W}, height=80, corner_radius=5)
+{picks}
+    p0.bb.center_y == plate.center.y + {dy}
+    p0.bb.center_x == plate.center.x - {x0}
+{places}
+    drawing labels {{
+{texts}
+    }}
+{ats}
+}}
+"""
+
+
+def _picks(factors, pitch, dy, written):
+    n = len(factors)
+    picks = "\n".join(f"    p{i} = pick()" + (f"\n    Scale(p{i}, {k})" if k != 1 else "")
+                      for i, k in enumerate(factors))
+    places = "\n".join(f"    AlignCenterY(p{i}, p{i - 1})\n"
+                       f"    p{i}.bb.center_x == p{i - 1}.bb.center_x + {pitch}"
+                       for i in range(1, n))
+    texts = "\n".join(f'        t{i} = Text("{chr(65 + i)}", ({written[i][0]}, '
+                      f'{written[i][1]}), size=5, valign="top")' for i in range(n))
+    ats = "\n".join(f"    At(labels.t{i}.position, (p{i}.bb.center_x, p{i}.bb.bottom - 6))"
+                    for i in range(n))
+    x0 = pitch * (n - 1) / 2
+    return PICKS.format(W=pitch * n + 40, picks=picks, dy=dy, x0=x0, places=places,
+                        texts=texts, ats=ats)
+
+
+@settings(max_examples=12, deadline=None)
+@given(factors=st.lists(st.sampled_from([1, 0.7, 0.85, 1.15, 1.3]), min_size=2, max_size=4),
+       pitch=st.integers(38, 55), dy=st.integers(-5, 8),
+       off=st.lists(st.tuples(st.floats(-6, 6), st.floats(-6, 6)), min_size=4, max_size=4))
+def test_law_scaled_picks_of_free_circles_stay_whole_beside_their_labels(factors, pitch, dy,
+                                                                        off):
+    """Each pick is its own shape scaled about its centre (26 x 30 mm times its factor), at
+    its place in the row; the plate stays where it is written; each label's top is 6 mm
+    under its pick, whatever the labels' written places.  The same with `Rigid` on each
+    pick (what a model wrote to get it) gives the same drawing."""
+    n = len(factors)
+    written = [(round(-40 + 40 * i + a, 2), round(-25 + b, 2)) for i, (a, b) in
+               enumerate(off[:n])]
+    src = _picks(factors, pitch, dy, written)
+    res = aidl_lang.compile(source=src, path="picks.aidl")
+    assert res.ok, [d.message for d in res.diagnostics]
+    (part,) = res.parts
+    x0 = pitch * (n - 1) / 2
+    W = pitch * n + 40
+    assert part.bbox == pytest.approx((-W / 2, -40, W / 2, 40), abs=1e-9)
+    assert part.to_json()["holes"] == n
+
+    def drawn(r):
+        return [(r.value(f"template.p{i}.bbox").mm, r.value(f"template.labels.t{i}.position").mm)
+                for i in range(n)]
+
+    got = drawn(res)
+    for i, (k, ((bx0, by0, bx1, by1), (lx, ly))) in enumerate(zip(factors, got)):
+        assert (bx1 - bx0, by1 - by0) == pytest.approx((26 * k, 30 * k), abs=1e-6), (i, k)
+        assert ((bx0 + bx1) / 2, (by0 + by1) / 2) == pytest.approx(
+            (-x0 + pitch * i, dy), abs=1e-6)
+        assert (lx, ly) == pytest.approx(((bx0 + bx1) / 2, by0 - 6), abs=1e-6)
+    rigid = src.replace("    p0.bb.center_y", "".join(f"    Rigid(p{i})\n" for i in range(n))
+                        + "    p0.bb.center_y")
+    again = aidl_lang.compile(source=rigid, path="picks.aidl")
+    assert again.ok
+    for (box, at), (box0, at0) in zip(drawn(again), got):
+        assert box == pytest.approx(box0, abs=1e-6) and at == pytest.approx(at0, abs=1e-6)

@@ -82,6 +82,8 @@ def _one(ctx, kind, args, target, name, i: int, indexed: bool):
         made.scaled_in_place = k              # said by W0504's hint
         if isinstance(out, GeomRef):          # it and its original move as one shape
             out.geom.in_place_of = target.geom
+        else:                                 # it moves by its original's frame
+            out.struct.in_place_of = target.struct
     return _finish(ctx, out, target, in_place, name)
 
 

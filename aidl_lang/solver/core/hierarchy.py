@@ -494,6 +494,20 @@ class Solver(PartsFirst):
         except StopIteration as stop:
             return stop.value
 
+    def _frame_of(self, t: Structure) -> list:
+        """The unknowns that move ``t`` as a whole: its frame; for a structure scaled in
+        place (its frame held on its parent's, its points tied to its original's), its
+        original's frame and its own geometry, which follows that frame by its rows
+        (``Scale(small, 0.85)`` of a pick of three free circles placed by its box: the pick
+        moves whole, as it does unscaled; before, only the paper's ladder could move it,
+        and it bent the pick, 105d #09)."""
+        mine = self.frame.get(id(t), ())
+        was = t.__dict__.get("in_place_of") if not mine else None
+        if was is None:
+            return mine
+        return [*self.frame.get(id(was), ()),
+                *(i for c in t.subtree() for i in self.own.get(id(c), ()))]
+
     def steps(self, s: Structure):
         """The iterative deepening at ``s`` as a generator: yields each :class:`Attempt` in
         turn and is sent whether it succeeded; returns whether ``s`` was solved (paper,
@@ -508,7 +522,7 @@ class Solver(PartsFirst):
         own = lambda structs: [i for t in structs if id(t) not in no_own
                                for i in self.own.get(id(t), ())]
         frames = lambda structs: [i for t in structs if id(t) not in no_frame
-                                  for i in self.frame.get(id(t), ())]
+                                  for i in self._frame_of(t)]
         if s.geometry:                     # of two shapes related, the first-named moves
             yield from self._place_shapes(s, local, order, own)
         if (s.children or _helpers(s)) \

@@ -51,7 +51,7 @@ class PartsFirst:
             return False
         ranks = _who_moves(s)[1] if len(s.children) > 1 else []
         for k in range(1, len(ranks)):    # a chain: each placed on its reference in turn
-            yield from self._place_rank(s, local, order, held, ranks, k, frames)
+            yield from self._place_rank(s, local, order, held, ranks, k, frames, own)
         if (yield Attempt("features", top[0], top[1], top[2], order=order)):
             return True
         saved = None
@@ -69,11 +69,27 @@ class PartsFirst:
             if att.iterations and (yield Attempt("features", top[0], top[1], top[2],
                                                  order=order)):
                 return True                # the part placed, the first stage again
+        D = len(_levels(s)) - 1
+        last = None
         for d, rows, cols in stages:
             if self.trace.budget_exceeded:
                 break
-            if (yield Attempt("features", d, rows, cols, order=order)):
+            start = None
+            if d == D + 1 and last is not None and last.x_end is not None:
+                # the shapes stage starts where the features as wholes got (a scaled pick
+                # placed, its label off by 1.1 mm): the shapes move only for what their
+                # frames could not meet; from the written point, the least-squares steps
+                # bent the picks' three free circles apart (105d #09)
+                start = (last.cols, self.x[last.cols].copy())
+                self.x = self.x.copy()
+                self.x[last.cols] = last.x_end
+            att = Attempt("features", d, rows, cols, order=order)
+            if (yield att):
                 return True
+            if start is not None:
+                self.x = self.x.copy()
+                self.x[start[0]] = start[1]
+            last = att
         if saved is not None:              # back to where the paper's ladder starts
             cols, values = saved
             self.x = self.x.copy()
@@ -81,13 +97,17 @@ class PartsFirst:
         return False
 
     def _place_rank(self, s: Structure, local: np.ndarray, order: int, held: set,
-                    ranks: list, k: int, frames):
+                    ranks: list, k: int, frames, own):
         """Before the features stages, when siblings are placed on siblings placed on
         others (``AlignCenterX(b, c)``, ``AlignCenterY(a, b)``): the children of rank ``k``
         (:func:`_who_moves`) move by their frames to meet the rows of ``s`` that read
         nothing of a higher rank, those of lower ranks and the references held (so ``b``
-        keeps its written y, which ``a`` then takes).  A failure changes nothing; the
-        features stages follow either way.  A generator like :meth:`~.hierarchy.Solver.steps`."""
+        keeps its written y, which ``a`` then takes).  When their frames cannot (three
+        labels of one drawing, each `At` its own pick), their shapes move too, from where
+        the frames got, their own rows kept (the picks they are placed on held: before,
+        the last stage moved a pick's tip with its label, 105d #09).  A failure changes
+        nothing; the features stages follow either way.  A generator like
+        :meth:`~.hierarchy.Solver.steps`."""
         mine = set(frames(ranks[k]))
         later = {i for t in ranks[k + 1:] for c in t for i in self._subtree_unknowns(c)}
         if not mine:
@@ -100,9 +120,24 @@ class PartsFirst:
             vs = {v for v in vs if v < n and free[v]}
             if vs & mine and not vs & later:
                 pick.append(r)
-        if pick:
-            rows = np.asarray(pick, dtype=np.int64)
-            yield Attempt("rank", k, rows, self._cols(sorted(mine), rows), order=order)
+        if not pick:
+            return
+        rows = np.asarray(pick, dtype=np.int64)
+        att = Attempt("rank", k, rows, self._cols(sorted(mine), rows), order=order)
+        if (yield att) or att.x_end is None or self.trace.budget_exceeded:
+            return
+        inner = [c for t in ranks[k] for c in t.subtree()]
+        shapes = [i for i in own(inner) if i not in held and i not in later]
+        if not shapes:
+            return
+        rows = np.union1d(rows, self.rows_of(inner))
+        saved = (att.cols, self.x[att.cols].copy())
+        self.x = self.x.copy()
+        self.x[att.cols] = att.x_end
+        if not (yield Attempt("rank", k, rows, self._cols(sorted(mine) + shapes, rows),
+                              order=order)):
+            self.x = self.x.copy()
+            self.x[saved[0]] = saved[1]
 
     def _place_shapes(self, s: Structure, local: np.ndarray, order: int, own):
         """Who moves between the shapes of ``s`` (issue 105), before every other stage at
@@ -176,8 +211,8 @@ class PartsFirst:
         return Attempt("shape rank", k, rows, self._cols(cols, rows), order=order)
 
     def _subtree_unknowns(self, c: Structure) -> list:
-        return [i for t in c.subtree() for i in self.frame.get(id(t), ()) +
-                self.own.get(id(t), [])]
+        return [i for t in c.subtree()
+                for i in (*self.frame.get(id(t), ()), *self.own.get(id(t), ()))]
 
     def _shape_first(self, s: Structure, local: np.ndarray, order: int, own):
         """Parts stay within one structure (issue 73): when one of a solid's constraints
@@ -267,7 +302,12 @@ class PartsFirst:
         free_frames = set(all_frames) - pinned
         movable = [t for t in below(D) if t.fx in free_frames and t.fy in free_frames]
         if movable:
-            params = helpers + [i for i in all_frames + own(movable) if i not in held]
+            # the copies follow their originals here too (a scaled pick beside three labels
+            # each `At` its pick: without the copies' geometry the picks could not move,
+            # and the paper's ladder bent them and moved the plate, 105d #09)
+            copies = own([t for t in below(D) if id(t) not in self.frame])
+            params = helpers + [i for i in dict.fromkeys(all_frames + copies + own(movable))
+                                if i not in held]
             yield D + 1, rows, self._cols(params, rows)
 
     def _part_unknowns(self, s: Structure, own, frames) -> tuple[set, list, list, list]:
