@@ -11,11 +11,12 @@ from ...geometry.core.model import Structure
 
 class Attempt(Compared):
     """One Newton solve of a row set for a set of unknowns."""
-    __slots__ = ("stage", "depth", "rows", "cols", "ok", "iterations", "rounds", "order", "x_end")
+    __slots__ = ("stage", "depth", "rows", "cols", "ok", "iterations", "rounds", "order", "x_end",
+                 "max_iter")
 
     def __init__(self, stage: str, depth: int, rows: np.ndarray, cols: np.ndarray,
                  ok: bool = False, iterations: int = 0, rounds: int = 0, order: int = 0,
-                 x_end: np.ndarray | None = None):
+                 x_end: np.ndarray | None = None, max_iter: int | None = None):
         self.stage = stage  # "local", "translate", "deform", "flat", "features" or "shapes"
         self.depth = depth
         self.rows = rows
@@ -25,6 +26,9 @@ class Attempt(Compared):
         self.rounds = rounds
         self.order = order  # post-order position of its structure (trace order)
         self.x_end = x_end  # x[cols] where it ended (a failure restores it)
+        # Newton steps per round, when fewer than the solver's (a stage that only finishes
+        # what the one before nearly met: it ends in a few steps or is not the way)
+        self.max_iter = max_iter
 
 
 class Failure(Record):

@@ -272,8 +272,8 @@ class Solver(PartsFirst):
             if not left:
                 break
             red = reduce(t, x, att.cols, scale) if self.use_reduction else None
-            res = newton(t, x, att.cols, scale, choices, max_iter=min(MAX_ITER, left), tol=TOL,
-                         reduction=red)
+            res = newton(t, x, att.cols, scale, choices,
+                         max_iter=min(att.max_iter or MAX_ITER, left), tol=TOL, reduction=red)
             att.iterations += res.iterations
             att.rounds = rnd
             tr.iterations += res.iterations
@@ -306,7 +306,8 @@ class Solver(PartsFirst):
     def batchable(self, att: Attempt) -> bool:
         """Whether ``att`` may join a batch (:meth:`attempt_batch`): it has rows, and its
         system is small enough to be solved densely even before substitution."""
-        return len(att.rows) > 0 and dense_enough(len(att.rows), len(att.cols))
+        return len(att.rows) > 0 and att.max_iter is None \
+            and dense_enough(len(att.rows), len(att.cols))
 
     def attempt_batch(self, atts: list) -> None:
         """Run independent attempts (disjoint rows and unknowns, each row using only its own

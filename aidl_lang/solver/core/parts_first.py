@@ -20,6 +20,13 @@ from .tree import (_helpers, _levels, _part_shape, _references, _shape_ranks, _u
                    _who_moves)
 
 
+# Newton steps per round of a rank's shapes stage (:meth:`PartsFirst._place_rank`): it
+# finishes what the rank's frames nearly met (three labels of one drawing: 1 step); a rank
+# whose shapes cannot meet its rows (a pattern's copy held by its original) gives up here
+# rather than after the solver's 100 (a Raspberry Pi plate: 4 steps became 104)
+SHAPES_STEPS = 12
+
+
 class PartsFirst:
     """The features-first and shapes-first stages of :class:`.hierarchy.Solver`."""
 
@@ -135,7 +142,7 @@ class PartsFirst:
         self.x = self.x.copy()
         self.x[att.cols] = att.x_end
         if not (yield Attempt("rank", k, rows, self._cols(sorted(mine) + shapes, rows),
-                              order=order)):
+                              order=order, max_iter=SHAPES_STEPS)):
             self.x = self.x.copy()
             self.x[saved[0]] = saved[1]
 
