@@ -122,6 +122,26 @@ def test_incircle_touches_all_three_sides(c):
                                 abs=1e-9)
 
 
+@pytest.mark.parametrize("form, center", [
+    ("Triangle(center=(0, 0), base=20, height=30)", (0, 0)),
+    ("Triangle((-10, -15), (10, -15), (0, 15))", (0, -5)),
+])
+def test_a_triangles_center_and_centroid_are_as_its_docs_say(form, center):
+    """105d: `aidl docs Triangle` said "`.centroid` (`.center`) is the mean of the vertices";
+    the isosceles form's `.center` is the `center=` given (the bounding box's), 5 mm above the
+    mean of the vertices for a height of 30.  The docs now say so; both forms as written."""
+    src = (f"drawing d {{\n    t = {form}\n"
+           "    m = Circle(center=t.center, radius=1)\n"
+           "    g = Circle(center=t.centroid, radius=1)\n}\n")
+    r = aidl_lang.compile(src)
+    assert r.ok, r.diagnostics
+    assert r.value("d.m.center").mm == pytest.approx(center, abs=1e-9)
+    assert r.value("d.g.center").mm == pytest.approx((0, -5), abs=1e-9)
+    from aidl_lang.library.reference import DETAILS
+    assert "`center=` given (the bounding-box center) for the isosceles form" in \
+        " ".join(DETAILS["Triangle"].split())
+
+
 def test_hull_center_and_a_point_read_from_a_box():
     src = ("drawing d {\n    h = Hull([Circle(center=(0, 0), radius=5, construction=true), "
            "Circle(center=(30, 10), radius=5, construction=true)])\n"

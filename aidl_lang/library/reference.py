@@ -914,8 +914,10 @@ DETAILS: dict[str, str] = {
     "Triangle": "`.incenter` is the center of the inscribed circle (the vertices weighted by "
                 "the lengths of the sides opposite them), `.inradius` its radius (twice the area "
                 "over the perimeter): `Circle(center=t.incenter, radius=t.inradius - 2)` is a "
-                "circle 2 mm inside all three sides. `.centroid` (`.center`) is the mean of the "
-                "vertices. Both follow the solved triangle.",
+                "circle 2 mm inside all three sides. `.centroid` is the mean of the vertices; "
+                "`.center` is too for a triangle through three points, and is the `center=` "
+                "given (the bounding-box center) for the isosceles form (of height 30: 5 mm "
+                "above its centroid). All follow the solved triangle.",
     "CornerPattern": "rect may be a Rectangle or a RoundedRectangle: its corners are the "
                      "points where its sides meet before rounding (bottom_left, bottom_right, "
                      "top_right, top_left), so an inset of at least the corner radius keeps "
