@@ -76,7 +76,7 @@ Two geometry objects or structures of one structure have the same name.
 """),
     "E0108": ("wrong type", """
 A value of the wrong kind: a length where a point is expected, a Circle where a Line is
-expected, a comparison joined with `or`, and so on. A template's argument of another kind
+expected, constraints joined with `or` (an `assert`, a check, takes `or` and `!=`), and so on. A template's argument of another kind
 than its parameter's default is this error at the argument, before the template runs, with the
 template's reasons for that parameter as the hint.
 

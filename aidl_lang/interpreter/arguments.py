@@ -227,12 +227,10 @@ def _failed(ip, st: A.Assert, d: A.Def, named: list, spans: dict) -> EvalError |
     unit = {1.0: "mm", 10.0: "cm", 1000.0: "m", 25.4: "in", 304.8: "ft"}.get(scale, "mm")
     a = Assertion(st.span, _src(ip.sink, st.expr.span) or "condition", st.message, None, [],
                   unit, scale)
-    known = []
-    for op, l, r, dim in sides:
-        if not (_const(l) and _const(r)):
-            return None
-        if not holds(op, _value(l), _value(r)):
-            known.append((op, _value(l), _value(r), dim))
+    if not all(_const(l) and _const(r) for _, l, r, _ in sides):
+        return None
+    known = [(op, _value(l), _value(r), dim) for op, l, r, dim in sides
+             if not holds(op, _value(l), _value(r))]
     if not known:
         return None
     return _at_args(ip, "E0405", describe(a, known), st, d, named, spans)

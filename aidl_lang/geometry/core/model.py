@@ -319,19 +319,21 @@ Constraint.text = property(_constraint_text, _set_constraint_text)
 
 
 class Assertion(Record):
-    """An ``assert`` statement whose condition depends on solved values: each of ``sides`` is
-    ``(op, left, right, dim)`` (``op`` one of ``==`` ``<=`` ``<`` ``>=`` ``>``; ``left``,
-    ``right`` expressions in mm or radians, box terms allowed; ``dim`` the values' dimension),
-    all of which must hold at the solution.  ``text``: the condition as written; ``message``:
-    the user's reason, or None; ``unit``/``scale``: the file's length unit for messages."""
-    __slots__ = ("span", "text", "message", "owner", "sides", "unit", "scale")
+    """An ``assert`` statement whose condition depends on solved values: ``groups`` are its
+    alternatives (the condition's disjunctive normal form: `a and b or c` is ``[[a, b],
+    [c]]``), each a list of sides ``(op, left, right, dim)`` (``op`` one of ``==`` ``!=``
+    ``<=`` ``<`` ``>=`` ``>``; ``left``, ``right`` expressions in mm or radians, box terms
+    allowed; ``dim`` the values' dimension); it holds at the solution when every side of
+    some group does.  ``text``: the condition as written; ``message``: the user's reason, or
+    None; ``unit``/``scale``: the file's length unit for messages."""
+    __slots__ = ("span", "text", "message", "owner", "groups", "unit", "scale")
 
     def __init__(self, span: Span | None, text: str, message: str | None, owner: Structure,
-                 sides: list | None = None, unit: str = "mm", scale: float = 1.0):
+                 groups: list | None = None, unit: str = "mm", scale: float = 1.0):
         self.span = span
         self.text = text
         self.message = message
         self.owner = owner
-        self.sides = [] if sides is None else sides
+        self.groups = [] if groups is None else groups
         self.unit = unit
         self.scale = scale

@@ -17,11 +17,12 @@ TOL = 1e-6
 
 
 def holds(op: str, left: float, right: float) -> bool:
-    """``left op right`` within :data:`TOL` (``<`` and ``>`` need a gap of more than TOL)."""
+    """``left op right`` within :data:`TOL` (``<``, ``>`` and ``!=`` need a gap of more than
+    TOL)."""
     if not (math.isfinite(left) and math.isfinite(right)):
         return False
     d = left - right
-    return {"==": abs(d) <= TOL, "<=": d <= TOL, ">=": d >= -TOL,
+    return {"==": abs(d) <= TOL, "!=": abs(d) > TOL, "<=": d <= TOL, ">=": d >= -TOL,
             "<": d < -TOL, ">": d > TOL}[op]
 
 
@@ -33,14 +34,16 @@ def _show(v: float, dim, a: Assertion) -> str:
     return f"{v:.6g}"
 
 
-def describe(a: Assertion, found: list) -> str:
+def describe(a: Assertion, found: list, alternatives: int = 1) -> str:
     """The E0405 message: the condition, the user's reason and the values found
-    (``found``: ``(op, left, right, dim)`` of the sides that fail)."""
+    (``found``: ``(op, left, right, dim)`` of the sides that fail; ``alternatives``: how
+    many alternatives of an `or` failed, each by the sides found)."""
     why = f" ({a.message})" if a.message else ""
     parts = []
     for op, l, r, dim in found[:3]:
         parts.append(f"{_show(l, dim, a)} {op} {_show(r, dim, a)} is false" + _within_tol(op, l, r, dim))
-    return f"assertion failed: `{a.text}`{why}: " + "; ".join(parts)
+    lead = "no alternative holds: " if alternatives > 1 else ""
+    return f"assertion failed: `{a.text}`{why}: {lead}" + "; ".join(parts)
 
 
 def _within_tol(op: str, left: float, right: float, dim) -> str:
@@ -91,21 +94,28 @@ def failed(model: Model, held_only: bool = False) -> list[tuple[Assertion, list]
     for a in model.assertions:
         if held_only:
             reads: list = []
-            for _, le, re_, _ in a.sides:
-                _unknowns(le, free, reads)
-                _unknowns(re_, free, reads)
+            for group in a.groups:
+                for _, le, re_, _ in group:
+                    _unknowns(le, free, reads)
+                    _unknowns(re_, free, reads)
             if reads:
                 continue
-        bad = []
-        for op, le, re_, dim in a.sides:
-            terms: list = []
-            for side in (le, re_):
-                if not isinstance(side, (int, float)):
-                    collect(side, terms)
-            exclude = exclusions(terms) if terms else set()   # as in a constraint (bbox.py)
-            lv, rv = _eval(le, x, exclude), _eval(re_, x, exclude)
-            if not holds(op, lv, rv):
-                bad.append((op, lv, rv, dim))
-        if bad:
-            out.append((a, bad))
+        bad: list = []
+        for group in a.groups:
+            wrong = []
+            for op, le, re_, dim in group:
+                terms: list = []
+                for side in (le, re_):
+                    if not isinstance(side, (int, float)):
+                        collect(side, terms)
+                exclude = exclusions(terms) if terms else set()   # as in a constraint (bbox.py)
+                lv, rv = _eval(le, x, exclude), _eval(re_, x, exclude)
+                if not holds(op, lv, rv):
+                    wrong.append((op, lv, rv, dim))
+            if not wrong:
+                break                   # this alternative holds: so does the assertion
+            bad += wrong
+        else:
+            if bad:
+                out.append((a, bad))
     return out
