@@ -299,3 +299,29 @@ def test_a_statement_with_more_than_one_overlap_is_still_reported(tmp_path):
 """
     found, _ = _check(tmp_path, src, "c")
     assert found and any("At(h.c.center, body.center)" in m for m in found), found
+
+
+def test_a_list_in_a_centre_alignment_gets_the_equation_that_centres_the_group():
+    """105d: `AlignCenterX(body, [hook_l, hook_r])` (centring a pair) was E0108 "must be a
+    structure or geometry" with the hint "name a structure (`self`, `lid`)".  Now the hint
+    writes the equation on the pair's centres from the call's own text; written in, it
+    compiles and the pair's middle is on the body's centre line."""
+    src = """solid plate {
+    body = Rectangle(center=(0, 0), width=100, height=40)
+    hole hook_l { c = Circle(center=(-20, 0), radius=3) }
+    hole hook_r { c = Circle(center=(25, 0), radius=3) }
+    VerticalDistance(hook_l.c.center, body.center, 0)
+    HorizontalDistance(hook_l.c.center, hook_r.c.center, 45)
+    VerticalDistance(hook_r.c.center, body.center, 0)
+    CALL
+}
+"""
+    r = aidl_lang.compile(source=src.replace("CALL", "AlignCenterX(body, [hook_l, hook_r])"))
+    [e] = [d for d in r.diagnostics if d.code == "E0108"]
+    fix = re.search(r"write `([^`]+)`", e.hint).group(1)
+    assert fix == "(hook_l.bb.center_x + hook_r.bb.center_x) / 2 == body.bb.center_x"
+    r = aidl_lang.compile(source=src.replace("CALL", fix))
+    assert r.ok and not [d for d in r.diagnostics if d.severity != "note"], r.diagnostics
+    xl = r.value("plate.hook_l.c.center").mm[0]
+    xr = r.value("plate.hook_r.c.center").mm[0]
+    assert (xl, xr) == pytest.approx((-22.5, 22.5), abs=1e-9)

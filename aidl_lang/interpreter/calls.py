@@ -52,6 +52,29 @@ def _center_hint(values, otherwise: str) -> str:
     return otherwise
 
 
+_AXIS = {"AlignCenterX": "center_x", "AlignCenterY": "center_y"}
+
+
+def _list_hint(cname: str, key: str, node, sink) -> str | None:
+    """The hint of a relation between boxes given a list as ``key`` (`AlignCenterX(body,
+    [hook_l, hook_r])`, 105d: centring a pair is natural to write, and a list has no box):
+    for a centre alignment, the equation on the items' centres, written from the call's own
+    text; else how to give the group a box."""
+    from .common import _src
+    arg = next((a for a in node.args if isinstance(a, A.ListLit)), None)
+    items = [_src(sink, e.span) for e in arg.items] if arg is not None else []
+    others = [_src(sink, a.span) for a in node.args if not isinstance(a, A.ListLit)]
+    axis = _AXIS.get(cname)
+    if axis and items and all(items) and len(others) == 1 and others[0] and len(items) <= 6:
+        mean = " + ".join(f"{t}.bb.{axis}" for t in items)
+        return (f"a list has no box of its own: for the middle of the {len(items)} on "
+                f"`{others[0]}`'s centre line write `({mean}) / {len(items)} == "
+                f"{others[0]}.bb.{axis}` (the middle of their centres), or draw them in one "
+                "structure and align that")
+    return (f"a list has no box of its own: relate each of them, or draw them in one "
+            f"structure and relate that (`{cname}` takes a structure or a shape as `{key}`)")
+
+
 class Calls:
     def _callee(self, f):
         if type(f) is A.Name:
@@ -145,7 +168,13 @@ class Calls:
         conv = {}
         for a in variant:
             if a.name in bound:
-                conv[a.name] = self._coerce(bound[a.name], a.type, spans[a.name], nm, a.name)
+                try:
+                    conv[a.name] = self._coerce(bound[a.name], a.type, spans[a.name], nm,
+                                                a.name)
+                except EvalError as ex:
+                    if a.type == "boxed" and isinstance(bound[a.name], list):
+                        ex.hint = _list_hint(cname, a.name, node, self.sink) or ex.hint
+                    raise
             elif a.default is not None:      # registry defaults are in mm / radians
                 dim = _DIMS.get(a.type)
                 conv[a.name] = Q.num(a.default, dim) if dim else a.default
