@@ -325,3 +325,26 @@ def test_a_list_in_a_centre_alignment_gets_the_equation_that_centres_the_group()
     xl = r.value("plate.hook_l.c.center").mm[0]
     xr = r.value("plate.hook_r.c.center").mm[0]
     assert (xl, xr) == pytest.approx((-22.5, 22.5), abs=1e-9)
+
+
+ROUTER = """solid template {
+    body = Rectangle(center=(0, 0), width=120, height=80)
+    hole cup { c = Circle(center=(0, 0), diameter=35) }
+    drawing door_edge {
+        l = Line((-60, Y), (-23, Y))
+        r = Line((60, Y2), (23, Y2))
+    }
+}
+"""
+
+
+@pytest.mark.parametrize("y2, warned", [(-20, 0), (-18, 2), (-20.3, 2)])
+def test_W0516_a_line_across_the_part_broken_by_a_hole_is_one_mark(y2, warned):
+    """105d #10: a router template's door-edge line, drawn either side of its cup hole, each
+    piece ending square on the outline: two W0516s, and the model ended each 0.5 mm short of
+    the edge it is there to meet.  Pieces of one line are a band split by the hole: not
+    warned; two square marks on different lines (2 mm or 0.3 mm apart) still are."""
+    src = ROUTER.replace("Y2", str(y2)).replace("Y", "-20")
+    r = aidl_lang.compile(source=src)
+    assert r.ok
+    assert len(_w(r, "W0516")) == warned, [d.message for d in _w(r, "W0516")]

@@ -927,7 +927,8 @@ line drawn to the outline, a line ending a hair short of it: the sliver left bet
 and cut chars or breaks off); the warning gives the gap in mm, which edge and where (x, y), and
 how far inside to end or move the mark. Straight ticks that end on the edge and meet it square,
 three or more on one part, are a scale hanging from the edge (a ruler, a protractor) and are
-not warned. Move the mark inside, or leave it out: the cut already draws the edge.
+not warned; nor are two or more pieces of one straight line, each ending square on the edge (a
+line across the part broken by a hole or a word: a router template's door-edge line). Move the mark inside, or leave it out: the cut already draws the edge.
 
     solid plate {
         body = Rectangle(center=(0, 0), width=60, height=40)

@@ -535,7 +535,8 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
     sliver under half a millimetre between them chars or breaks off.  Straight marks that
     end on the edge (within :data:`ENGRAVE_TOL`) and meet it square (within :data:`SQUARE`),
     :data:`SCALE` or more on one part, are a scale's ticks hanging from the edge (a ruler, a
-    protractor) and are not warned; nor is a mark whose ends all lie at the edge (a band or a
+    protractor) and are not warned, nor are pieces of one straight line that each end square
+    on it (:func:`_split_bands`); nor is a mark whose ends all lie at the edge (a band or a
     seam drawn across the part, a cord wrapped round a grip), nor any copy of a loop statement
     of which half the copies or more are such bands.  The warning names the mark, the part, which edge, the gap in mm and where
     (x, y), and how far inside to end or move the mark.  ``geoms``: (geometry, its stroke
@@ -615,13 +616,14 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
             tick = nu > 0 and nw > 0 and abs(float(u @ w)) / (nu * nw) <= math.sin(SQUARE)
         found.append((g, items, near_edges[c], gap, ej, pm, end, line, tick))
     scale = sum(f[-1] for f in found) >= SCALE
+    split = _split_bands([f for f in found if f[-1]])
     copies: dict = {}
     for g, _ in geoms:
         copies[g.span] = copies.get(g.span, 0) + 1
     by_statement: dict = {}
     for f in found:
-        if f[-1] and scale:                  # a scale's ticks hanging from the edge: not warned
-            continue
+        if f[-1] and (scale or id(f[0]) in split):
+            continue        # a scale's ticks hanging from the edge, or a band split in pieces
         if f[0].span is not None and 2 * bands.get(f[0].span, 0) >= copies[f[0].span]:
             continue                         # one of a loop of bands (its last one ends inside)
         by_statement.setdefault(f[0].span or f[0], []).append(f)
@@ -667,6 +669,28 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
                      f"meets the cut (a mark needs {CUT_CLEAR} mm clear of the edge), so it "
                      f"runs into the edge{more}", g.span,
                      hint=fix + "; the cut already draws the edge")
+
+
+def _split_bands(ticks: list) -> set:
+    """The ids of the straight marks among ``ticks`` (each ending square on the edge) that
+    lie on one line with another of them: the pieces of one line drawn across the part,
+    broken where a hole or a word stands (a router template's door-edge line either side of
+    its cup hole, 105d #10: it was warned, and a model ended each piece 0.5 mm short of the
+    edge the line is there to meet).  Grouped by the line's direction and its distance from
+    the origin (to 1e-4 rad and 0.01 mm): O(n)."""
+    lines: dict = {}
+    for f in ticks:
+        p, q = np.asarray(f[1][0][1], float), np.asarray(f[1][0][2], float)
+        u = q - p
+        n = float(np.hypot(*u))
+        if n <= 0:
+            continue
+        u = u / n
+        if u[0] < -1e-12 or (abs(u[0]) <= 1e-12 and u[1] < 0):
+            u = -u                          # one direction per line
+        key = (round(math.atan2(u[1], u[0]), 4), round(float(u[0] * p[1] - u[1] * p[0]), 2))
+        lines.setdefault(key, []).append(id(f[0]))
+    return {k for ids in lines.values() if len(ids) >= 2 for k in ids}
 
 
 def _far_near(f) -> tuple:
