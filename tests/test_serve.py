@@ -701,13 +701,15 @@ def test_a_drag_is_collected_once_when_it_rests(tmp_path, monkeypatch, gc_log):
     """Moves closer together than IDLE_DELAY are not collected one by one: only the last
     compile's collection runs, once the slider rests."""
     from aidl_lang.serve import app as app_mod
-    # 3 s: the next move comes 0.05 s after the last answer, plus the round trip, which a
-    # loaded machine makes longer; a rest of 3 s is far from it
-    monkeypatch.setattr(app_mod, "IDLE_DELAY", 3.0)
     with _ranged_server(tmp_path) as (ws, hub):
         deadline = time.perf_counter() + 30
         while hub.collections < 1 and time.perf_counter() < deadline:
-            time.sleep(0.02)                 # the load's own collection
+            time.sleep(0.02)                 # the load's own collection (the default delay)
+        # then 3 s (a collection's wait reads it when it starts): the next move comes 0.05 s
+        # after the last answer, plus the round trip, which a loaded machine makes longer; a
+        # rest of 3 s is far from it.  (Set before the server, the load's collection waited
+        # the 3 s too: 3 s of the test's 7 spent asleep.)
+        monkeypatch.setattr(app_mod, "IDLE_DELAY", 3.0)
         before = hub.collections
         t0 = time.perf_counter()
         for i in range(1, 7):            # 6 moves, each well within 3 s of the last
