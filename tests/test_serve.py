@@ -761,8 +761,10 @@ def test_no_collection_between_a_moves_compile_and_its_picture(tmp_path, monkeyp
         def slow(values):                    # the compile outlasts IDLE_DELAY
             time.sleep(1.5)
             return real(values)
-        monkeypatch.setattr(hub.session, "set_params", slow)
         _set_ok(ws, 1, "41mm")
+        # move 2's compile alone is slowed: move 1's (slowed too before) only made the test
+        # 1.5 s longer; the load's collection, still waiting, is dropped as move 1's is
+        monkeypatch.setattr(hub.session, "set_params", slow)
         gc_log.clear()
         t0 = time.perf_counter()
         _set_ok(ws, 2, "42mm")               # sent at once: move 1's collection is pending
