@@ -701,13 +701,15 @@ def test_a_drag_is_collected_once_when_it_rests(tmp_path, monkeypatch, gc_log):
     """Moves closer together than IDLE_DELAY are not collected one by one: only the last
     compile's collection runs, once the slider rests."""
     from aidl_lang.serve import app as app_mod
-    # 3 s: the next move comes 0.05 s after the last answer, plus the round trip, which a
-    # loaded machine makes longer; a rest of 3 s is far from it
-    monkeypatch.setattr(app_mod, "IDLE_DELAY", 3.0)
     with _ranged_server(tmp_path) as (ws, hub):
         deadline = time.perf_counter() + 30
         while hub.collections < 1 and time.perf_counter() < deadline:
-            time.sleep(0.02)                 # the load's own collection
+            time.sleep(0.02)                 # the load's own collection (the default delay)
+        # then 3 s (a collection's wait reads it when it starts): the next move comes 0.05 s
+        # after the last answer, plus the round trip, which a loaded machine makes longer; a
+        # rest of 3 s is far from it.  (Set before the server, the load's collection waited
+        # the 3 s too: 3 s of the test's 7 spent asleep.)
+        monkeypatch.setattr(app_mod, "IDLE_DELAY", 3.0)
         before = hub.collections
         t0 = time.perf_counter()
         for i in range(1, 7):            # 6 moves, each well within 3 s of the last
@@ -759,8 +761,10 @@ def test_no_collection_between_a_moves_compile_and_its_picture(tmp_path, monkeyp
         def slow(values):                    # the compile outlasts IDLE_DELAY
             time.sleep(1.5)
             return real(values)
-        monkeypatch.setattr(hub.session, "set_params", slow)
         _set_ok(ws, 1, "41mm")
+        # move 2's compile alone is slowed: move 1's (slowed too before) only made the test
+        # 1.5 s longer; the load's collection, still waiting, is dropped as move 1's is
+        monkeypatch.setattr(hub.session, "set_params", slow)
         gc_log.clear()
         t0 = time.perf_counter()
         _set_ok(ws, 2, "42mm")               # sent at once: move 1's collection is pending
