@@ -413,7 +413,7 @@ def test_prompt_answers_what_models_asked():
     # argument synonyms stay out of the canonical prompt text
     assert not re.search(r"[(,] ?(w|h|r|d)=", text.split("Examples:")[0])
     assert "Symmetric(a, b, axis" not in text and "Text(text=" not in text
-    assert word_count(text) <= 4674          # issue 105: who moves between shapes, Scale about its own centre 4,674, issue 102's Countersink and Counterbore 4,654, issue 92's gear arguments (addendum=, mate=, pinion=) 4,606, issue 95's engraving minus engraving 4,603, issue 92's ranges 4,596, issue 91's crossing Fillet 4,575, issue 61 4,148, issue 65 4,312, issue 73 4,335, Bend 4,349, Intersect 4,376, sheet-level cut 4,384, pi/tau radians 4,398, issue 86's `aidl set` and list defaults 4,426, who moves 4,441, check --sweep 4,449, Text's width 4,453, issue 95's transforms, ring_gear, stencil 4,573 (test_llm); issue 35: 15% over 2,992; issue 52: its generators (test_llm)
+    assert word_count(text) <= 4708          # issue 105: asserting the request's own numbers and counts 4,708, who moves between shapes, Scale about its own centre 4,674, issue 102's Countersink and Counterbore 4,654, issue 92's gear arguments (addendum=, mate=, pinion=) 4,606, issue 95's engraving minus engraving 4,603, issue 92's ranges 4,596, issue 91's crossing Fillet 4,575, issue 61 4,148, issue 65 4,312, issue 73 4,335, Bend 4,349, Intersect 4,376, sheet-level cut 4,384, pi/tau radians 4,398, issue 86's `aidl set` and list defaults 4,426, who moves 4,441, check --sweep 4,449, Text's width 4,453, issue 95's transforms, ring_gear, stencil 4,573 (test_llm); issue 35: 15% over 2,992; issue 52: its generators (test_llm)
 
 
 # ------------------------------------------------------------------ chosen corners

@@ -18,13 +18,14 @@ from ..base.limits import MAX_TEMPLATE_DEPTH, MIN_WALL_LEAST, min_wall_problem
 from ..registry import CONSTANTS, UNITS_LENGTH, template_param
 from ..library.sources import ImportRefused, read_import, resolve_import
 from .arguments import check_kinds, kind_error, precheck_asserts
-from .common import (DEG, POISON, FileCtx, Scope, _STMT_ERRORS, _Silent, _a, _common_ancestor, _const,
-                     _definition_lines, _fmt_num, _src, _is_geometry_stmt, _is_plain_const, _value)
+from .asserts import Asserts
+from .common import (DEG, POISON, FileCtx, Scope, _STMT_ERRORS, _Silent, _a, _common_ancestor,
+                     _definition_lines, _fmt_num, _src, _is_geometry_stmt, _is_plain_const)
 
 
 
 
-class Statements:
+class Statements(Asserts):
     # ------------------------------------------------------------------ entry
     def run(self, program: A.Program) -> Model:
         self.root_dir = Path(program.path).resolve().parent
@@ -814,65 +815,6 @@ class Statements:
                                  [owners_of(l), owners_of(r)] if len(owners) > 1 else None,
                                  bbox_reach((l, r)) if len(owners) == 1 else None)
 
-    def _assert(self, st) -> None:
-        """``assert cond[, "message"]``: comparisons joined by ``and`` and ``or`` (``!=``
-        allowed: a check, not a constraint).  Alternatives known now (params, constants)
-        are judged at once; the rest are kept on the model
-        (:class:`~aidl_lang.geometry.core.model.Assertion`) and checked after solving (E0405)."""
-        from ..geometry.core.model import Assertion
-        groups = self._assert_groups(st.expr)
-        scale = self.unit_scale
-        unit = {1.0: "mm", 10.0: "cm", 1000.0: "m", 25.4: "in", 304.8: "ft"}.get(scale, "mm")
-        from .common import _src
-        a = Assertion(st.span, _src(self.sink, st.expr.span) or "condition", st.message,
-                      self.struct, [], unit, scale)
-        verdict, a.groups, known = judge_known(groups)
-        if verdict is False:
-            # reported now, and the program goes on: every false assert is reported, those
-            # checked after solving too (the pipeline solves when E0405 is the only error)
-            from ..geometry.relations.assertions import describe
-            self.sink.error("E0405", describe(a, known, len(groups)), st.span,
-                            hint=_ASSERT_HINT)
-        elif verdict is None:
-            self.model.assertions.append(a)
-
-    def _assert_groups(self, e) -> list:
-        """The alternatives of an assert's condition (its disjunctive normal form: ``a and
-        (b or c)`` is ``[[a, b], [a, c]]``), each a list of sides ``(op, left, right,
-        dim)``; at most :data:`MAX_ALTERNATIVES` (E0108 past it)."""
-        if isinstance(e, A.BoolOp):
-            left, right = self._assert_groups(e.left), self._assert_groups(e.right)
-            out = left + right if e.op == "or" else [x + y for x in left for y in right]
-            if len(out) > MAX_ALTERNATIVES:
-                raise EvalError("E0108", f"the condition of this `assert` has {len(out)} "
-                                f"alternatives (at most {MAX_ALTERNATIVES})", e.span,
-                                hint="split it into several asserts")
-            return out
-        if not isinstance(e, A.Compare):
-            raise EvalError("E0108", "`assert` takes comparisons (`a <= b`), joined by `and` "
-                            "or `or`", e.span, hint="write e.g. `assert plate.body.width <= "
-                                                    "300 mm`")
-        vals = [self.eval(x) for x in e.operands]
-        sides = []
-        for op, (l, r) in zip(e.ops, zip(vals, vals[1:])):
-            if op == "!=" and isinstance(l, Q) and isinstance(r, Q):
-                le, re_, dim = self._unify(l, r, e.span)
-                sides.append(("!=", le, re_, dim))
-                continue
-            for eq in self._compare_eqs(op, l, r, e.span):
-                # each equation is `left - right` (== 0 or >= 0); keep the two sides apart
-                sides.append(self._sides_of(op, l, r, e.span, eq))
-        return [sides]
-
-    def _assert_sides(self, e, out: list) -> None:
-        """The sides of a condition that is one alternative (``and`` only); E0108 for an
-        ``or`` (a template's asserts over its arguments, judged at the call)."""
-        groups = self._assert_groups(e)
-        if len(groups) > 1:
-            raise EvalError("E0108", "`or` in an assert over a template's arguments", e.span,
-                            hint="write one `assert` per condition that must hold")
-        out.extend(groups[0])
-
     def _sides_of(self, op, l, r, span, eq):
         if isinstance(l, Q) and isinstance(r, Q):
             le, re_, dim = self._unify(l, r, span)
@@ -926,44 +868,6 @@ class Statements:
             raise EvalError("E0109", msg, span, hint=hint)
 
     # ------------------------------------------------------------------ calls
-
-
-# the alternatives an `assert` may have (its condition in disjunctive normal form)
-MAX_ALTERNATIVES = 64
-
-
-def judge_known(groups: list) -> tuple:
-    """An assert's alternatives judged on what is known before solving: ``(True, [], [])``
-    when one holds on params and constants alone, ``(False, [], found)`` when each fails on
-    one of those (``found``: the false sides' ``(op, left, right, dim)``), else ``(None,
-    left, [])``: the alternatives left to judge after solving, their known sides (all
-    true) dropped."""
-    from ..geometry.relations.assertions import holds
-    left: list = []
-    known: list = []
-    for group in groups:
-        later, wrong = [], []
-        for side in group:
-            op, l, r, dim = side
-            if _const(l) and _const(r):
-                if not holds(op, _value(l), _value(r)):
-                    wrong.append((op, _value(l), _value(r), dim))
-            else:
-                later.append(side)
-        if wrong:
-            known += wrong
-        elif not later:
-            return True, [], []
-        else:
-            left.append(later)
-    if not left:
-        return False, [], known
-    return None, left, []
-
-
-_ASSERT_HINT = ("an `assert` states what must be true of the design; change the values or "
-                "constraints so that it holds (it is not a constraint: the solver does not try "
-                "to satisfy it)")
 
 
 def _a(what: str) -> str:

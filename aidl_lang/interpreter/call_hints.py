@@ -1,0 +1,45 @@
+"""The hints of a call whose argument is of the wrong kind (E0108): a shape with a center
+where a point or curve is taken (name its member), a list where a box is taken (the equation
+that centres the group)."""
+from __future__ import annotations
+
+from .. import ast as A
+from ..geometry.core.values import GeomRef
+from ..registry import lookup
+
+
+def _center_hint(values, otherwise: str) -> str:
+    """The hint of a point or curve constraint given a shape with a center that it does not
+    take (an ArcSlot, a Star, ...): name the member to use, `s.center`; else ``otherwise``."""
+    for v in values:
+        if isinstance(v, GeomRef) and v.geom.kind not in ("Circle", "Arc", "Line", "Point"):
+            entry = lookup(v.geom.kind)
+            if entry is not None and "center" in entry.members:
+                nm = v.geom.name or "shape"
+                an = "an" if v.geom.kind[0] in "AEIOU" else "a"
+                return (f"`{nm}` is {an} {v.geom.kind}: name its point, `{nm}.center`, or another "
+                        f"point of it; {otherwise}")
+    return otherwise
+
+
+_AXIS = {"AlignCenterX": "center_x", "AlignCenterY": "center_y"}
+
+
+def _list_hint(cname: str, key: str, node, sink) -> str | None:
+    """The hint of a relation between boxes given a list as ``key`` (`AlignCenterX(body,
+    [hook_l, hook_r])`, 105d: centring a pair is natural to write, and a list has no box):
+    for a centre alignment, the equation on the items' centres, written from the call's own
+    text; else how to give the group a box."""
+    from .common import _src
+    arg = next((a for a in node.args if isinstance(a, A.ListLit)), None)
+    items = [_src(sink, e.span) for e in arg.items] if arg is not None else []
+    others = [_src(sink, a.span) for a in node.args if not isinstance(a, A.ListLit)]
+    axis = _AXIS.get(cname)
+    if axis and items and all(items) and len(others) == 1 and others[0] and len(items) <= 6:
+        mean = " + ".join(f"{t}.bb.{axis}" for t in items)
+        return (f"a list has no box of its own: for the middle of the {len(items)} on "
+                f"`{others[0]}`'s centre line write `({mean}) / {len(items)} == "
+                f"{others[0]}.bb.{axis}` (the middle of their centres), or draw them in one "
+                "structure and align that")
+    return (f"a list has no box of its own: relate each of them, or draw them in one "
+            f"structure and relate that (`{cname}` takes a structure or a shape as `{key}`)")
