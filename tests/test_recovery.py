@@ -133,9 +133,9 @@ def _lexed_by_recovery(n: int, monkeypatch) -> int:
     from aidl_lang.parsing import recovery as P       # where the recovery calls it
     real, seen = P._run_lalr, [0]
 
-    def counted(text, start):
+    def counted(text, start, lexed=None):
         seen[0] += len(text)
-        return real(text, start)
+        return real(text, start, lexed)
     monkeypatch.setattr(P, "_run_lalr", counted)
     parts = [f"solid s{i} {{\n    body = Rectangle(center=({i}, 0), width=4, height=2)\n}}\n"
              for i in range(n)]

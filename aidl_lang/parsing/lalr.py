@@ -73,7 +73,7 @@ def _reduction(origin: str, size: int, name: str, include: list, tail: int, expa
                                          specialise))
 
 
-def _run_lalr(text: str, start: str):
+def _run_lalr(text: str, start: str, lexed: tuple | None = None):
     """Lex ``text`` (:func:`_lex_lists`, :func:`_postlex`) and run the LALR(1) table over the
     tokens with the AST callbacks: the loop of Lark's ``ParserState.feed_token`` without its
     per-step assertions and rule-object look-ups.  Returns the start symbol's value.  Raises
@@ -82,14 +82,20 @@ def _run_lalr(text: str, start: str):
 
     Three stacks: states, values (a token's value is its :class:`Span`; the builders read its
     text from ``builder.text``) and extents (the span each value covers, ``None`` for a
-    reduction that covers no token), so no wrapper object is made per reduction."""
+    reduction that covers no token), so no wrapper object is made per reduction.
+
+    ``lexed``: the lexer's lists of ``text`` when known (:func:`.lexing.relex_blanked`); the
+    lists used are left in ``_STATE.lexed`` as ``(text, lexed)`` for the next try."""
     tb = _tables()
     states, reductions, start_states, end_states = tb.states, tb.reductions, tb.start, tb.end
     builder = _STATE.builder
     outer = builder.text
     builder.text = text
     try:
-        types, spans, lex_error = _lex_lists(text, False, builder.path)
+        if lexed is None:
+            lexed = _lex_lists(text, False, builder.path)
+        _STATE.lexed = (text, lexed)
+        types, spans, lex_error = lexed
         types, spans = _postlex(types, spans, text, lex_error is None)
         if lex_error is None:
             types.append("$END")

@@ -9,11 +9,19 @@ import re
 from ..base.diagnostics import DiagnosticSink
 from .comments import _ANY_BRACKET, _BRACKET_STEP, _STRINGS
 from .errors import _error_pos, _report, _slash_hint
-from .lalr import _Builder, _run_lalr
+from .lalr import _STATE, _Builder, _run_lalr
+from .lexing import relex_blanked
 from .tokens import MAX_ERRORS, UnexpectedCharacters, UnexpectedToken
 
 def _blank_logical_line(text: str, pos: int) -> str:
-    """Blank the logical line (bracket-balanced) around offset ``pos``, keeping braces/newlines.
+    """:func:`_blank_range`'s text."""
+    start, end, seg = _blank_range(text, pos)
+    return text[:start] + seg + text[end:]
+
+
+def _blank_range(text: str, pos: int) -> tuple[int, int, str]:
+    """Blank the logical line (bracket-balanced) around offset ``pos``, keeping braces/newlines:
+    ``(start, end, blanked)``, ``text[start:end]`` to be replaced by ``blanked``, of its length.
 
     It goes on over the next lines while a ``(`` or ``[`` is open, as long as they read as its
     continuation: indented deeper than its first line, or starting with a closing bracket.  A
@@ -35,7 +43,7 @@ def _blank_logical_line(text: str, pos: int) -> str:
         depth += sum(1 if c in "([" else -1 if c in ")]" else 0 for c in text[end:nxt])
         end = nxt
     seg = "\n".join(_blank_keeping_blocks(line) for line in text[start:end].split("\n"))
-    return text[:start] + seg + text[end:]
+    return start, end, seg
 
 
 def _blank_keeping_blocks(line: str) -> str:
@@ -67,10 +75,11 @@ def _recovered(text: str, path: str, sink: DiagnosticSink, slashes: list,
     """:func:`_recovering_parse`'s statements (or None) and the text it parsed last (its
     error lines blanked: of the same length as ``text``)."""
     seen: set[int] = set()
+    lexed = None            # the tokens of the text about to be parsed, when known
     for _attempt in range(MAX_ERRORS + 1):
         builder.failed.clear()
         try:
-            return _run_lalr(text, "start"), text
+            return _run_lalr(text, "start", lexed), text
         except (UnexpectedToken, UnexpectedCharacters) as e:
             pos = _error_pos(e, text)
             if pos in seen or len(seen) >= MAX_ERRORS:
@@ -80,7 +89,13 @@ def _recovered(text: str, path: str, sink: DiagnosticSink, slashes: list,
             _slash_hint(sink, slashes, text, pos)
             if pos >= len(text.rstrip()):
                 return None, text
-            text = _blank_logical_line(text, pos)
+            start, end, seg = _blank_range(text, pos)
+            was, lexed = getattr(_STATE, "lexed", (None, None))
+            blanked = text[:start] + seg + text[end:]
+            # lexed again only from the blanked line to where the old tokens resume
+            lexed = relex_blanked(blanked, lexed, start, end, builder.path) \
+                if was is text else None
+            text = blanked
     return None, text
 
 
