@@ -329,26 +329,14 @@ def relex_blanked(text: str, lexed: tuple, a: int, b: int,
     types, spans, err = lexed
     if err is not None:
         return _lex_lists(text, False, path)
-    n = len(spans)
-    i = 0                                    # the first old token that reaches a
-    lo, hi = 0, n
-    while lo < hi:
-        mid = (lo + hi) // 2
-        if spans[mid].end < a:
-            lo = mid + 1
-        else:
-            hi = mid
-    i = max(0, lo - 2)
+    from bisect import bisect_left
+    # from two tokens before the first old one that reaches a
+    i = max(0, bisect_left(spans, a, key=lambda sp: sp.end) - 2)
     at = (0, 1, 0) if i == 0 else (spans[i].start, spans[i].line,
                                      spans[i].start - spans[i].col + 1)
-    lo, hi = i, n                            # the first old token that starts at b or later
-    while lo < hi:
-        mid = (lo + hi) // 2
-        if spans[mid].start < b:
-            lo = mid + 1
-        else:
-            hi = mid
-    stops = {spans[k].start: k for k in range(lo, n)}
+    # to the first old one that starts at b or later, where the rest may follow
+    j = bisect_left(spans, b, lo=i, key=lambda sp: sp.start)
+    stops = {spans[k].start: k for k in range(j, len(spans))}
     new_t, new_s, new_err, stop = _lex_from(text, False, path, at, stops, b)
     if new_err is not None or stop < 0:
         return types[:i] + new_t, spans[:i] + new_s, new_err
