@@ -62,8 +62,11 @@ class ReplayServer:
                 path = self.path.split("?", 1)[0].rstrip("/")
                 wait = 0.0
                 with double.lock:
-                    double.requests.append({"path": path, "auth": self.headers.get("Authorization"),
-                                            "body": body})
+                    # "sent": the answer was written to the client (False while it waits,
+                    # or when the client went away first)
+                    request = {"path": path, "auth": self.headers.get("Authorization"),
+                               "body": body, "sent": False}
+                    double.requests.append(request)
                     if path not in PATHS:
                         status, doc = 404, {"error": {"message": f"no route {path}"}}
                     elif double.answered >= len(double.answers):
@@ -86,6 +89,7 @@ class ReplayServer:
                     self.send_header("Content-Length", str(len(data)))
                     self.end_headers()
                     self.wfile.write(data)
+                    request["sent"] = True
                 except OSError:                                  # the client went away
                     pass
 
@@ -120,7 +124,7 @@ def replaying(answers: list[str], delay: float | list[float] = 0.0
               ) -> Iterator[tuple[str, list[dict]]]:
     """Serve ``answers`` in order; yields ``(base_url, requests)``: the OpenAI-style base URL
     (``http://127.0.0.1:PORT/v1``) and the live list of requests received (each
-    ``{"path", "auth", "body"}``).  ``delay``: seconds before each answer (a list: per
+    ``{"path", "auth", "body", "sent"}``, ``sent`` once its answer is written).  ``delay``: seconds before each answer (a list: per
     answer)."""
     double = ReplayServer(answers, delay).start()
     try:
