@@ -17,6 +17,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from aidl_lang import registry
+from conftest import ROOT
 from test_parts_stay import EXACT, PROGRAMS, _compile, _values
 
 
@@ -270,3 +271,32 @@ def sibling_programs(draw, kind: str):
 @pytest.mark.parametrize("kind", SIBLING_KINDS)
 def test_law_between_siblings_the_second_named_stays(kind):
     _law(sibling_programs(kind), 3)
+
+
+def test_who_moves_does_not_depend_on_the_order_a_set_of_structures_iterates_in():
+    """A constraint's arguments are sets of structures, which iterate in the order of their
+    addresses: ties of depth went one way or the other with what the process had compiled
+    before (a fresh model's router template, data/model_runs/issue105d request 10: 6 Newton
+    steps alone, 33 after 143 other programs).  The ranks are now the same whichever order
+    each set is read in."""
+    from aidl_lang.pipeline import compile_source
+    from aidl_lang.solver.core.tree import _who_moves
+    path = "data/model_runs/issue105d/run/10_hinge_router_template.first_valid.aidl"
+    src = (ROOT / path).read_text()
+    c = compile_source(src, str(ROOT / path))
+    s = c.solve.solver.model.root
+
+    def ranks():
+        refs, rk = _who_moves(s)
+        return [t.path for t in refs], [sorted(t.path for t in r) for r in rk]
+
+    before = ranks()
+    for con in s.constraints:
+        if con.args:
+            con.args = [sorted(o, key=id, reverse=True) for o in con.args]
+    reversed_ = ranks()
+    for con in s.constraints:
+        if con.args:
+            con.args = [sorted(o, key=id) for o in con.args]
+    assert before == reversed_ == ranks()
+    assert c.solve.iterations == 6

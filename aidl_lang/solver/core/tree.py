@@ -41,7 +41,11 @@ def _who_moves(s: Structure) -> tuple[list, list]:
         groups: list = []           # s's children reached, in the order written
         part = False
         for owners in args:
-            for o in sorted(owners, key=_depth):
+            # by depth, then by path: a set of structures iterates in the order of their
+            # addresses, so ties went one way or the other with what the process had
+            # compiled before (a router template's solve: 6 Newton steps alone, 33 after
+            # 143 other programs)
+            for o in sorted(owners, key=lambda t: (_depth(t), t.path)):
                 t = _child_toward(s, o)
                 if t is None:
                     part = True
