@@ -562,7 +562,7 @@ def _echoes(reds: list, found) -> set:
     whole = {id(r.constraint): r for r in reds if not r.partly and r.by}
     out: set = set()
     for p in reds:
-        if not p.partly or not p.beyond:
+        if not p.partly:
             continue
         for b in p.by:
             r = whole.get(id(b))

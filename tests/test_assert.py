@@ -166,3 +166,22 @@ def test_the_prompts_request_asserts_name_the_slips(count, bottom, found):
     msgs = [m for _, _, m in errors(r)]
     assert r.ok == (not found)
     assert len(msgs) == len(found) and all(any(f in m for m in msgs) for f in found), msgs
+
+
+@pytest.mark.parametrize("w, line", [(10, 6), (30, None), (3, None)])
+def test_an_or_over_a_templates_arguments_is_judged_at_the_call(w, line):
+    """A template's assert over its arguments is judged at the call (the instance is not
+    built when it fails); with `or` too: no alternative holds at w = 10."""
+    src = f"""def tab(w = 30 mm) -> solid {{
+    assert w <= 5 mm or w >= 20 mm, "thin or wide"
+    body = Rectangle(center=(0, 0), width=w, height=4)
+}}
+solid p {{
+    t = tab(w={w})
+}}
+"""
+    r = aidl_lang.compile(source=src)
+    got = [(c, ln) for c, ln, _ in errors(r)]
+    assert got == ([] if line is None else [("E0405", line)]), errors(r)
+    if line:
+        assert "no alternative holds" in r.errors[0].message

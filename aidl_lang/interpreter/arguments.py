@@ -20,7 +20,7 @@ from .. import ast as A
 from ..base.diagnostics import EvalError, Label, shown_path
 from ..geometry.core.values import ANG, LEN, NUM, Q, dim_name, type_name
 from ..registry import FUNCTIONS, UNITS_LENGTH
-from .common import _STMT_ERRORS, POISON, Scope, _a, _const, _definition_lines, _src, _value
+from .common import _STMT_ERRORS, POISON, Scope, _a, _const, _definition_lines, _src
 
 # what a default's text says its parameter holds
 _KIND_OF_DEFAULT = {A.Num: "number", A.Neg: "number", A.Str: "string", A.FStr: "string",
@@ -214,26 +214,21 @@ def precheck_asserts(ip, d: A.Def, tscope: Scope, given: dict, spans: dict) -> N
 
 def _failed(ip, st: A.Assert, d: A.Def, named: list, spans: dict) -> EvalError | None:
     """The error at the call when assert ``st`` fails on the arguments ``named``, else None."""
-    from ..geometry.relations.assertions import describe, holds
-    from ..geometry.core.model import Assertion
-    sides: list = []
+    from ..geometry.relations.assertions import describe
+    from .asserts import judge_known
     try:
-        ip._assert_sides(st.expr, sides)
+        groups = ip._assert_groups(st.expr)
     except EvalError as ex:          # a kind the condition cannot compare: that argument's
         return _at_args(ip, ex.code, f"{ex.message}", st, d, named, spans)
     except _STMT_ERRORS:
         return None
-    scale = ip.unit_scale
-    unit = {1.0: "mm", 10.0: "cm", 1000.0: "m", 25.4: "in", 304.8: "ft"}.get(scale, "mm")
-    a = Assertion(st.span, _src(ip.sink, st.expr.span) or "condition", st.message, None, [],
-                  unit, scale)
-    if not all(_const(l) and _const(r) for _, l, r, _ in sides):
+    if not all(_const(l) and _const(r) for g in groups for _, l, r, _ in g):
+        return None                  # it reads more than the arguments: judged in the body
+    verdict, _, known = judge_known(groups)
+    if verdict is not False:
         return None
-    known = [(op, _value(l), _value(r), dim) for op, l, r, dim in sides
-             if not holds(op, _value(l), _value(r))]
-    if not known:
-        return None
-    return _at_args(ip, "E0405", describe(a, known), st, d, named, spans)
+    return _at_args(ip, "E0405", describe(ip._assertion(st, None), known, len(groups)), st, d,
+                    named, spans)
 
 
 def _at_args(ip, code: str, text: str, st: A.Assert, d: A.Def, named: list,

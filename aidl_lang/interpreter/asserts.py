@@ -20,13 +20,8 @@ class Asserts:
         allowed: a check, not a constraint).  Alternatives known now (params, constants)
         are judged at once; the rest are kept on the model
         (:class:`~aidl_lang.geometry.core.model.Assertion`) and checked after solving (E0405)."""
-        from ..geometry.core.model import Assertion
         groups = self._assert_groups(st.expr)
-        scale = self.unit_scale
-        unit = {1.0: "mm", 10.0: "cm", 1000.0: "m", 25.4: "in", 304.8: "ft"}.get(scale, "mm")
-        from .common import _src
-        a = Assertion(st.span, _src(self.sink, st.expr.span) or "condition", st.message,
-                      self.struct, [], unit, scale)
+        a = self._assertion(st, self.struct)
         verdict, a.groups, known = judge_known(groups)
         if verdict is False:
             # reported now, and the program goes on: every false assert is reported, those
@@ -65,14 +60,15 @@ class Asserts:
                 sides.append(self._sides_of(op, l, r, e.span, eq))
         return [sides]
 
-    def _assert_sides(self, e, out: list) -> None:
-        """The sides of a condition that is one alternative (``and`` only); E0108 for an
-        ``or`` (a template's asserts over its arguments, judged at the call)."""
-        groups = self._assert_groups(e)
-        if len(groups) > 1:
-            raise EvalError("E0108", "`or` in an assert over a template's arguments", e.span,
-                            hint="write one `assert` per condition that must hold")
-        out.extend(groups[0])
+    def _assertion(self, st, owner):
+        """The :class:`~aidl_lang.geometry.core.model.Assertion` of statement ``st`` (its text,
+        reason and the file's length unit for messages), without its alternatives yet."""
+        from ..geometry.core.model import Assertion
+        from .common import _src
+        scale = self.unit_scale
+        unit = {1.0: "mm", 10.0: "cm", 1000.0: "m", 25.4: "in", 304.8: "ft"}.get(scale, "mm")
+        return Assertion(st.span, _src(self.sink, st.expr.span) or "condition", st.message,
+                         owner, [], unit, scale)
 
 
 # the alternatives an `assert` may have (its condition in disjunctive normal form)

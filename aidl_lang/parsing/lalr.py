@@ -84,18 +84,15 @@ def _run_lalr(text: str, start: str, lexed: tuple | None = None):
     text from ``builder.text``) and extents (the span each value covers, ``None`` for a
     reduction that covers no token), so no wrapper object is made per reduction.
 
-    ``lexed``: the lexer's lists of ``text`` when known (:func:`.lexing.relex_blanked`); the
-    lists used are left in ``_STATE.lexed`` as ``(text, lexed)`` for the next try."""
+    ``lexed``: the lexer's lists of ``text`` when known (:func:`.lexing.relex_blanked`)."""
     tb = _tables()
     states, reductions, start_states, end_states = tb.states, tb.reductions, tb.start, tb.end
     builder = _STATE.builder
     outer = builder.text
     builder.text = text
     try:
-        if lexed is None:
-            lexed = _lex_lists(text, False, builder.path)
-        _STATE.lexed = (text, lexed)
-        types, spans, lex_error = lexed
+        types, spans, lex_error = _lex_lists(text, False, builder.path) if lexed is None \
+            else lexed
         types, spans = _postlex(types, spans, text, lex_error is None)
         if lex_error is None:
             types.append("$END")

@@ -9,8 +9,8 @@ import re
 from ..base.diagnostics import DiagnosticSink
 from .comments import _ANY_BRACKET, _BRACKET_STEP, _STRINGS
 from .errors import _error_pos, _report, _slash_hint
-from .lalr import _STATE, _Builder, _run_lalr
-from .lexing import relex_blanked
+from .lalr import _Builder, _run_lalr
+from .lexing import _lex_lists, relex_blanked
 from .tokens import MAX_ERRORS, UnexpectedCharacters, UnexpectedToken
 
 def _blank_logical_line(text: str, pos: int) -> str:
@@ -75,7 +75,7 @@ def _recovered(text: str, path: str, sink: DiagnosticSink, slashes: list,
     """:func:`_recovering_parse`'s statements (or None) and the text it parsed last (its
     error lines blanked: of the same length as ``text``)."""
     seen: set[int] = set()
-    lexed = None            # the tokens of the text about to be parsed, when known
+    lexed = _lex_lists(text, False, builder.path)     # the tokens of the text about to parse
     for _attempt in range(MAX_ERRORS + 1):
         builder.failed.clear()
         try:
@@ -90,12 +90,9 @@ def _recovered(text: str, path: str, sink: DiagnosticSink, slashes: list,
             if pos >= len(text.rstrip()):
                 return None, text
             start, end, seg = _blank_range(text, pos)
-            was, lexed = getattr(_STATE, "lexed", (None, None))
-            blanked = text[:start] + seg + text[end:]
+            text = text[:start] + seg + text[end:]
             # lexed again only from the blanked line to where the old tokens resume
-            lexed = relex_blanked(blanked, lexed, start, end, builder.path) \
-                if was is text else None
-            text = blanked
+            lexed = relex_blanked(text, lexed, start, end, builder.path)
     return None, text
 
 

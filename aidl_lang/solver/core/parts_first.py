@@ -76,32 +76,39 @@ class PartsFirst:
             if att.iterations and (yield Attempt("features", top[0], top[1], top[2],
                                                  order=order)):
                 return True                # the part placed, the first stage again
-        D = len(_levels(s)) - 1
         last = None
-        for d, rows, cols in stages:
+        for d, rows, cols, shapes in stages:
             if self.trace.budget_exceeded:
                 break
-            start = None
-            if d == D + 1 and last is not None and last.x_end is not None:
-                # the shapes stage starts where the features as wholes got (a scaled pick
-                # placed, its label off by 1.1 mm): the shapes move only for what their
-                # frames could not meet; from the written point, the least-squares steps
-                # bent the picks' three free circles apart (105d #09)
-                start = (last.cols, self.x[last.cols].copy())
-                self.x = self.x.copy()
-                self.x[last.cols] = last.x_end
-            att = Attempt("features", d, rows, cols, order=order)
-            if (yield att):
+            # the shapes stage starts where the features as wholes got (a scaled pick
+            # placed, its label off by 1.1 mm): the shapes move only for what their frames
+            # could not meet; from the written point, the least-squares steps bent the
+            # picks' three free circles apart (105d #09)
+            warm = self._go_on_from(last) if shapes else None
+            last = Attempt("features", d, rows, cols, order=order)
+            if (yield last):
                 return True
-            if start is not None:
-                self.x = self.x.copy()
-                self.x[start[0]] = start[1]
-            last = att
-        if saved is not None:              # back to where the paper's ladder starts
+            self._put_back(warm)
+        self._put_back(saved)              # back to where the paper's ladder starts
+        return False
+
+    def _go_on_from(self, att: Attempt | None) -> tuple | None:
+        """Start the next attempt where the failed ``att`` ended (its unknowns at its
+        ``x_end``); returns what :meth:`_put_back` restores, None when there is nothing to
+        start from."""
+        if att is None or att.x_end is None:
+            return None
+        saved = (att.cols, self.x[att.cols].copy())
+        self.x = self.x.copy()
+        self.x[att.cols] = att.x_end
+        return saved
+
+    def _put_back(self, saved: tuple | None) -> None:
+        """The unknowns ``saved`` (``(columns, values)``) back at their values."""
+        if saved is not None:
             cols, values = saved
             self.x = self.x.copy()
             self.x[cols] = values
-        return False
 
     def _place_rank(self, s: Structure, local: np.ndarray, order: int, held: set,
                     ranks: list, k: int, frames, own):
@@ -131,20 +138,17 @@ class PartsFirst:
             return
         rows = np.asarray(pick, dtype=np.int64)
         att = Attempt("rank", k, rows, self._cols(sorted(mine), rows), order=order)
-        if (yield att) or att.x_end is None or self.trace.budget_exceeded:
+        if (yield att) or self.trace.budget_exceeded:
             return
         inner = [c for t in ranks[k] for c in t.subtree()]
         shapes = [i for i in own(inner) if i not in held and i not in later]
-        if not shapes:
+        saved = self._go_on_from(att) if shapes else None
+        if saved is None:
             return
         rows = np.union1d(rows, self.rows_of(inner))
-        saved = (att.cols, self.x[att.cols].copy())
-        self.x = self.x.copy()
-        self.x[att.cols] = att.x_end
         if not (yield Attempt("rank", k, rows, self._cols(sorted(mine) + shapes, rows),
                               order=order, max_iter=SHAPES_STEPS)):
-            self.x = self.x.copy()
-            self.x[saved[0]] = saved[1]
+            self._put_back(saved)
 
     def _place_shapes(self, s: Structure, local: np.ndarray, order: int, own):
         """Who moves between the shapes of ``s`` (issue 105), before every other stage at
@@ -265,7 +269,8 @@ class PartsFirst:
 
     def _feature_stages(self, s: Structure, held: set, own, frames, helpers=()):
         """The features stages at ``s`` (:meth:`_features_first`), lazily: ``(depth, rows,
-        unknowns)`` with the part's unknowns ``held`` left out, none without unknowns.
+        unknowns, shapes)`` with the part's unknowns ``held`` left out, none without
+        unknowns; ``shapes``: the last stage, the features' shapes moving in them.
         ``helpers``: the unknowns of ``s``'s own construction geometry, free in every stage
         (a construction square for a bolt pattern goes to the plate, not the plate to it)."""
         levels = _levels(s)
@@ -275,12 +280,12 @@ class PartsFirst:
         helpers = list(helpers)
         if helpers:                        # the part's helpers alone, against its own rows
             rows = self.rows_of([s])
-            yield 0, rows, self._cols(helpers, rows)
+            yield 0, rows, self._cols(helpers, rows), False
         for d in range(1, D + 1):          # descendants translate
             params = helpers + [i for i in frames(below(d)) if i not in held]
             if params:
                 rows = self.rows_of(upto(d - 1))
-                yield d, rows, self._cols(params, rows)
+                yield d, rows, self._cols(params, rows), False
         # then the geometry of what cannot translate by itself (a pattern's or a mirror's
         # copies, held on the frame of the structure that made them) follows: a feature
         # that can translate is not deformed to spare its part (its `Fixed` frame holds)
@@ -291,7 +296,7 @@ class PartsFirst:
                                 if i not in held]
             if params:
                 rows = self.rows_of(upto(max(d, D - 1)))
-                yield d, rows, self._cols(params, rows)
+                yield d, rows, self._cols(params, rows), False
         # last, the shapes of the features whose frames are free move within them, as their
         # own rows allow (five pockets of one hole each aligned to the tray: the part held,
         # each pocket moves; before, the paper's ladder moved the tray 1.5e-4 mm with them,
@@ -315,7 +320,7 @@ class PartsFirst:
             copies = own([t for t in below(D) if id(t) not in self.frame])
             params = helpers + [i for i in dict.fromkeys(all_frames + copies + own(movable))
                                 if i not in held]
-            yield D + 1, rows, self._cols(params, rows)
+            yield D + 1, rows, self._cols(params, rows), True
 
     def _part_unknowns(self, s: Structure, own, frames) -> tuple[set, list, list, list]:
         """(the unknowns the features-first stages hold at ``s``, those its stage "own"

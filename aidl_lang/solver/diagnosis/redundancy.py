@@ -24,18 +24,21 @@ from .diagnose import _order_key, _with_pins, built_keys, used_free_columns
 
 
 class Redundant(Compared):
-    """``constraint`` is implied by ``by`` (consistent: a warning, not an error).  ``partly``:
-    only some of what it says is implied; ``beyond``: then the rank of its searched rows
-    beyond the constructors' span (what it would pin were nothing of it implied, pinning
-    rows left out, as :meth:`Search.rank_lost` counts)."""
-    __slots__ = ("constraint", "by", "partly", "beyond")
+    """``constraint`` is implied by ``by`` (consistent: a warning, not an error).  ``beyond``:
+    0 when all it says is implied; when only part is (:attr:`partly`), the rank of its
+    searched rows beyond the constructors' span (what it would pin were nothing of it
+    implied, pinning rows left out, as :meth:`Search.rank_lost` counts)."""
+    __slots__ = ("constraint", "by", "beyond")
 
-    def __init__(self, constraint: Constraint, by: list, partly: bool = False,
-                 beyond: int = 0):
+    def __init__(self, constraint: Constraint, by: list, beyond: int = 0):
         self.constraint = constraint
         self.by = by
-        self.partly = partly  # only some of the constraint's equations are implied
         self.beyond = beyond
+
+    @property
+    def partly(self) -> bool:
+        """Only some of the constraint's equations are implied."""
+        return self.beyond > 0
 
 
 def redundancies(solver, deadline: float | None = None,
@@ -446,8 +449,7 @@ def _report(solver, cons: list, by_c: dict, F: np.ndarray, live: np.ndarray, in_
         if gain == 0:
             out.append(Redundant(c, _explicit_first(by.get(k, []))))
         elif rk > gain:
-            out.append(Redundant(c, _explicit_first(by.get(k, [])), partly=True,
-                                 beyond=rk - p))
+            out.append(Redundant(c, _explicit_first(by.get(k, [])), beyond=rk - p))
     return out
 
 
