@@ -589,10 +589,12 @@ is E0108; `about=` is the one keyword argument a function takes.
     "assert": ("statement", "`assert cond, \"why\"`: a requirement checked after solving, never "
                "solved for.", """
 `assert CONDITION` or `assert CONDITION, "reason"`, in a structure or at the top level: the
-condition (comparisons joined by `and`, on any solved value: sizes, positions, boxes) is
-checked at the solution; it adds no equation and no degree of freedom. A false one is the
-error E0405 with the values found. Use it for requirements ("fits the laser bed", "wall at
-least 2 mm"), and constraints (`==`, `<=` statements) for what the solver should make true.
+condition (comparisons joined by `and` and `or`, `!=` too, on any solved value: sizes,
+positions, boxes) is checked at the solution; it adds no equation and no degree of freedom.
+A false one is the error E0405 with the values found. Use it for requirements ("fits the
+laser bed", "wall at least 2 mm") and for the request's own numbers and counts (`assert
+len(feet) == 2`: a slip then fails the check), and constraints (`==`, `<=` statements) for
+what the solver should make true.
 """, ["requirement", "check", "require", "E0405"]),
     "kerf": ("statement", "`kerf 0.15 mm`: the laser's cut width; cuts are offset by half of "
              "it.", """
