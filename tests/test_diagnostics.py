@@ -686,6 +686,13 @@ def test_text_shrunk_to_max_width_is_a_note_W0113(compile_text):
     assert span4(d)[:2] == (1, 70)            # at `60`, the max_width given
 
 
+def test_unknown_escape_in_a_string_is_kept_and_warned_W0114(compile_text):
+    c = compile_text('drawing d { t = Text("50\\% off", position=(0, 0), size=5) }\n')
+    (d,) = [d for d in c.sink.items if d.code == "W0114"]
+    assert d.severity == "warning" and not c.sink.has_errors
+    assert span4(d)[:2] == (1, 25) and d.message.startswith("`\\%` is not an escape")
+
+
 def test_every_producible_code_has_a_test():
     import pathlib
     here = pathlib.Path(__file__)

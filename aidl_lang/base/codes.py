@@ -73,6 +73,13 @@ Two geometry objects or structures of one structure have the same name.
 
     a = Circle((0, 0), 2)
     a = Circle((5, 0), 2)     # name the second one `b`
+
+A param is declared once, and no top-level `name = ...` assigns its name: the second
+declaration would silently win, even for code above it, and its slider and `--set` would read
+the other range.
+
+    param w = 60 mm, min = 10 mm, max = 100 mm
+    param w = 80 mm, min = 70 mm, max = 90 mm     # keep one `param w`
 """),
     "E0108": ("wrong type", """
 A value of the wrong kind: a length where a point is expected, a Circle where a Line is
@@ -1152,6 +1159,13 @@ wider `max_width`. A stencil's width counts its stroke
         t = Text("ROSEMARY", position=(0, 0), size=10 mm, max_width=60 mm)
         # note: 75.2 mm wide at size 10 mm: drawn at size 7.98 mm, 60 mm wide
     }
+"""),
+    "W0114": ("unknown escape in a string", """
+A backslash in a string starts an escape: `\\n` a line break, `\\t` a tab, `\\\\` a backslash,
+`\\"` and `\\'` a quote. Any other backslash is kept as written, backslash and all, and warned:
+`Text("50\\% off")` engraves `50\\% off`. Write `\\\\` for a backslash you mean, or leave the
+backslash out. A path such as `"C:\\temp\\new"` holds a tab and a line break: write
+`"C:\\\\temp\\\\new"`.
 """),
     "W0104": ("empty drawing", """
 The file is empty (nothing but comments), or its structures build no geometry at all, so the

@@ -363,10 +363,9 @@ def _refused_output(o: Path, follow: bool, force: bool) -> int | None:
             kind = f"a symbolic link to {kind} (`{target}`)"
         return _usage(refusal(o, kind, NOT_REGULAR_HINT))
     import stat as S
-    # read-only: no write bit for its owner (so also for root, whom os.access lets through),
-    # or not writable by this user
-    read_only = not st.st_mode & S.S_IWUSR or not os.access(target, os.W_OK)
-    if S.S_ISREG(st.st_mode) and read_only and not force:
+
+    from ..output.writers.write import read_only
+    if read_only(st, target) and not force:
         print(f"aidl: error: `{o}` is read-only (mode {S.S_IMODE(st.st_mode):04o}); refusing "
               "to replace it: give --force to replace it anyway", file=sys.stderr)
         return 1
@@ -727,7 +726,7 @@ def cmd_set(args) -> int:
     (:func:`aidl_lang.api.set_params`), then ``aidl check FILE``; a value refused (an unknown
     name, the wrong kind, outside its range) leaves the file as it was: exit 1."""
     from ..api import ParamsRefused, set_params
-    from ..output.writers.write import WriteError, write_atomic
+    from ..output.writers.write import WriteError, edit_program
     values = {}
     for it in args.values:
         if "=" not in it:
@@ -753,7 +752,7 @@ def cmd_set(args) -> int:
         print(f"aidl: error: {e}", file=sys.stderr)
         return 1
     try:
-        write_atomic(Path(args.file), text.encode("utf-8"))
+        edit_program(Path(args.file), text.encode("utf-8"))
     except WriteError as e:
         print(f"aidl: error: {e}", file=sys.stderr)
         return 1

@@ -52,7 +52,10 @@ def write(w, m, heads: list, output, thick: dict, default_t: float) -> list[str]
             tool = f"a {m.pocket_tool or m.tool_diameter:g} mm end mill"
         w.rapid(z=m.safe_height)
         w.out("M5")
-        w.out(f"; tool change: {tool} for the {len(todo)} {kind}s (resume when it is in)")
+        # a new tool sticks out of the collet by another length: the depths below are from
+        # the material's top, so Z zero is set again with the new tool (issue 110)
+        w.out(f"; tool change: {tool} for the {len(todo)} {kind}{'s' * (len(todo) != 1)}: "
+              "put it in, set Z zero on the material's top with it, then resume")
         w.out("M0")
         w.out(f"M3 S{_num(op.spindle)}")
         n_done = 0

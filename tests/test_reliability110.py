@@ -1,0 +1,153 @@
+"""Issue 110's small reliability cases: a param declared twice (E0107), a string's unknown
+escape kept and warned (W0114), `aidl set` and `aidl fmt` through a link and never over a
+read-only file (the MCP edits refuse both), an MCP path part over 255 bytes a
+`bad_argument`, and the router's tool change saying to set Z zero again."""
+import contextlib
+import io
+import os
+
+import pytest
+
+import aidl_lang
+from aidl_lang.base.diagnostics import DiagnosticSink
+from aidl_lang.cli.main import main
+from aidl_lang.parser import parse
+
+TWICE = """units mm
+param w = 60 mm, min = 10 mm, max = 100 mm
+solid plate {
+    body = Rectangle(center=(0, 0), width=w, height=20)
+}
+param w = 80 mm, min = 70 mm, max = 90 mm
+"""
+
+
+def _run(*args) -> tuple[int, str, str]:
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        rc = main(list(args))
+    return rc, out.getvalue(), err.getvalue()
+
+
+def test_a_param_declared_twice_is_an_error_at_the_second():
+    r = aidl_lang.compile(source=TWICE)
+    [e] = r.errors
+    assert (e.code, e.span.line, e.span.col) == ("E0107", 6, 7)
+    assert "declared twice (first on line 2)" in e.message
+    # a param and a top-level constant of one name: the same error, at the later one
+    r = aidl_lang.compile(source=TWICE.replace("param w = 80 mm, min = 70 mm, max = 90 mm",
+                                               "w = 80 mm"))
+    [e] = r.errors
+    assert (e.code, e.span.line) == ("E0107", 6) and "is a param (line 2)" in e.message
+    # two constants stay what they were: the later is the value
+    r = aidl_lang.compile(source=TWICE.replace("param w = 60 mm, min = 10 mm, max = 100 mm",
+                                               "w = 40 mm").replace(
+        "param w = 80 mm, min = 70 mm, max = 90 mm", "w = 50 mm"))
+    assert r.ok, r.errors
+
+
+def _strings(src: str):
+    from aidl_lang import ast as A
+    sink = DiagnosticSink()
+    prog = parse(src, "s.aidl", sink)
+    return [n.value for n in A.walk(prog) if type(n) is A.Str], sink.items
+
+
+@pytest.mark.parametrize("literal, value, warned", [
+    (r'"50\% off"', "50\\% off", [(1, 8, r"`\%`")]),
+    (r'"C:\temp\new"', "C:\temp\new", []),            # two escapes, as documented
+    (r'"C:\\temp\\new"', "C:\\temp\\new", []),
+    (r'"say \"hi\" \'x\'"', "say \"hi\" 'x'", []),
+    (r"'a\qb\zc'", "a\\qb\\zc", [(1, 7, r"`\q`"), (1, 10, r"`\z`")]),
+])
+def test_a_strings_escapes_and_an_unknown_one_kept_and_warned(literal, value, warned):
+    vals, diags = _strings(f"x = {literal}\n")
+    assert vals == [value]
+    assert [(d.span.line, d.span.col, d.message.split(" ")[0]) for d in diags] == warned
+    assert all(d.code == "W0114" and d.severity == "warning" for d in diags)
+
+
+def test_an_engraved_texts_backslash_is_engraved(tmp_path):
+    src = 'units mm\ndrawing label {\n    t = Text("50\\% off", position=(0, 0), size=5 mm)\n}\n'
+    r = aidl_lang.compile(source=src)
+    assert r.ok and [(d.code, d.span.line, d.span.col) for d in _warnings(r)] == \
+        [("W0114", 3, 17)]
+    # an f-string's unknown escape too
+    r = aidl_lang.compile(source=src.replace('Text("', 'Text(f"'))
+    assert [(d.code, d.span.col) for d in _warnings(r)] == [("W0114", 18)]
+
+
+def _warnings(r):
+    return [d for d in r.diagnostics if d.severity == "warning"]
+
+
+PLATE = """units mm
+param w = 60 mm, min = 10 mm, max = 100 mm
+solid p {
+    b = Rectangle(center=(0, 0), width=w, height=20)
+}
+"""
+
+
+def test_aidl_set_and_fmt_edit_through_a_link_and_refuse_a_read_only_file(tmp_path):
+    real = tmp_path / "real.aidl"
+    real.write_text(PLATE)
+    link = tmp_path / "link.aidl"
+    link.symlink_to("real.aidl")
+    rc, out, err = _run("set", str(link), "w=33")
+    assert rc == 0, err
+    assert link.is_symlink() and os.readlink(link) == "real.aidl"
+    assert "param w = 33 mm, min = 10 mm" in real.read_text()
+
+    ro = tmp_path / "ro.aidl"
+    ro.write_text(PLATE)
+    ro.chmod(0o444)
+    rc, out, err = _run("set", str(ro), "w=30")
+    assert rc == 1 and "is read-only (mode 0444); refusing to edit it" in err
+    assert ro.read_text() == PLATE
+    messy = tmp_path / "messy.aidl"
+    messy.write_text(PLATE.replace("width=w, height=20", "width=w,height=20"))
+    messy.chmod(0o444)
+    rc, out, err = _run("fmt", str(messy))
+    assert rc == 1 and "is read-only" in err and "width=w,height=20" in messy.read_text()
+
+
+def test_mcp_refuses_a_long_name_and_a_read_only_program(tmp_path):
+    from aidl_lang.mcp import tools
+    (tmp_path / "ro.aidl").write_text(PLATE)
+    (tmp_path / "ro.aidl").chmod(0o444)
+    ws = tools.Workspace(tmp_path)
+    long = "a" * 300 + ".aidl"
+    for fn, kw, arg in ((tools.check, dict(path=long), "path"),
+                        (tools.set_params, dict(path=long, values={"w": "30 mm"}), "path"),
+                        (tools.write_program, dict(path="d/" + long, text="units mm\n"), "path"),
+                        (tools.render, dict(path="ro.aidl", output=long[:-5] + ".svg"),
+                         "output")):
+        with pytest.raises(tools.Refused) as ex:
+            fn(ws, **kw)
+        assert ex.value.code == "bad_argument" and "at most 255" in str(ex.value), fn
+        assert f"in `{arg}`" in str(ex.value)
+    for fn, kw in ((tools.set_params, dict(values={"w": "30 mm"})),
+                   (tools.write_program, dict(text="units mm\n"))):
+        with pytest.raises(tools.Refused) as ex:
+            fn(ws, path="ro.aidl", **kw)
+        assert "read-only (mode 0444)" in str(ex.value), fn
+    assert (tmp_path / "ro.aidl").read_text() == PLATE
+
+
+def test_the_routers_tool_change_says_to_set_z_zero(tmp_path):
+    src = """units mm
+thickness 6 mm
+solid plate {
+    body = Rectangle(center=(0, 0), width=40, height=30)
+    hole h { c = Circle(center=(0, 0), diameter=4.5 mm) }
+    Countersink(h, diameter=9 mm)
+}
+"""
+    f = tmp_path / "p.aidl"
+    f.write_text(src)
+    rc, out, err = _run("render", str(f), "-o", str(tmp_path / "p.nc"), "--machine", "router")
+    assert rc == 0, err
+    text = (tmp_path / "p.nc").read_text()
+    assert "; tool change: a 90 deg V-bit for the 1 countersink: put it in, set Z zero on " \
+        "the material's top with it, then resume\nM0\n" in text
