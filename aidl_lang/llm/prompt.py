@@ -35,7 +35,8 @@ statements (`Above(lid, body)`, `Coincident(a.end, b.start)`) and equations
 (`lid.bb.width == body.bb.width`, `x <= 60`; join with `and`). Geometry and constraints only
 live inside structures. Top of file: `units mm` (default; also `units in`), `param NAME = VALUE,
 min = LO, max = HI` (always declare the range it still works across: sliders use it; a
-param may be computed from params above it, `param h = w / 2`, and follows `--set w=60`),
+param may be computed from params and constants above it, `param h = w / 2`, and follows
+`--set w=60`),
 constants `NAME = expr`, templates `def NAME(p1, p2=default) -> solid { ... }` (instantiate:
 `part = NAME(p1=...)`), `import "file.aidl"` or `import stdlib.shapes` (or
 `.gears`, `.joints`, `.fasteners`, `.plates`). Control flow:

@@ -365,6 +365,7 @@ class _Sweep:
         from .. import ast as A
         from ..output.checks import topology
         from ..parser import parse
+        from ..interpreter.constants import early_constants
         from ..typecheck import check
         t0 = now()
         self.end = None
@@ -376,8 +377,10 @@ class _Sweep:
         self.sources = dict(sink.sources)
         # the declarations alone (:meth:`_clamped`): a point's values moved into the ranges
         # that follow other params before its compile
+        early = early_constants(self.program.stmts)     # constants the params read
         self.decls = A.Program(self.program.span, self.program.path, self.program.source,
-                               [s for s in self.program.stmts if type(s).__name__ in DECLS])
+                               [s for s in self.program.stmts
+                                if type(s).__name__ in DECLS or s in early])
         self.solver = self.keys = None
         base = self._compile({}) if not sink.has_errors else None
         if base is None or base.sink.has_errors or base.drawing is None:
