@@ -48,3 +48,28 @@ def test_a_constant_that_reads_a_later_param_says_why_once():
     assert e.message == ("`hooks` (line 2) is worked out after the params: it reads `n`, "
                          "defined below it (line 3)")
     assert "move line 3 above line 2" in e.hint
+
+
+def test_a_failed_assert_gives_the_value_of_each_name_and_member_it_reads():
+    src = """units mm
+wall = 3 mm
+solid part {
+    body = Rectangle(center=(0, 0), width=120 mm, height=40 mm)
+    hole h { c = Circle(center=(0, 0), radius=5 mm) }
+    CenterInside(h, body)
+    assert abs(body.bb.width - 2 * wall - 110 mm) < 0.01 mm
+    assert wall > 5 mm
+    assert h.c.radius * 2 + wall == body.bb.height / 2
+}
+"""
+    r = aidl_lang.compile(source=src)
+    got = {d.span.line: d.message for d in r.errors}
+    assert got[7].endswith(": 4 mm < 0.01 mm is false (where body.bb.width = 120 mm, "
+                           "wall = 3 mm)")
+    assert got[8].endswith(": 3 mm > 5 mm is false")     # the side is the name: said once
+    assert got[9].endswith(": 13 mm == 20 mm is false (where h.c.radius = 5 mm, wall = 3 mm, "
+                           "body.bb.height = 40 mm)")
+    # in inches, in the file's unit
+    r = aidl_lang.compile(source=src.replace("units mm", "units in").replace(" mm", " in"))
+    assert {d.span.line: d.message for d in r.errors}[7].endswith(
+        "(where body.bb.width = 120 in, wall = 3 in)")

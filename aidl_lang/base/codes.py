@@ -333,7 +333,8 @@ by other errors.
     "E0405": ("assertion failed", """
 An `assert` statement's condition is false at the solved values (every false one is reported;
 after a failed solve, those that read only params, constants and held sizes). The message gives the condition, the reason written
-after it and the values found, in the file's units; one inside a template of another file (the standard
+after it and the values found, in the file's units, then the value of each name and member a
+side computes with (`(where ring.bb.width = 124 mm, wall = 3 mm)`); one inside a template of another file (the standard
 library's, an imported one) is reported at the template's call, its own line a note. A
 template's assert written over its arguments (reading only its parameters and values computed
 from them) is checked at the call before the body runs: false, it is one error at the
