@@ -43,8 +43,8 @@ constants `NAME = expr`, templates `def NAME(p1, p2=default) -> solid { ... }` (
 `for i in range(n) { ... }` (a name set in a loop: the current copy inside, the list after:
 `knob[0]`),
 `if c { } else { }`, `[f(i) for i in xs]`. Operators: `+ - * / % **`, `//` (floor division),
-comparisons, `and or not`, `a if c else b`; `range(start, stop, step)`. Comments start with `#`
-(not `//`). Numbers take units (`5 mm`, `2 in`, `30 deg`); a bare
+comparisons, `and or not`, `a if c else b`; `range(start, stop, step)`. A statement ends at
+the line break: continue a long one inside `( )` or `[ ]`. Comments start with `#` (not `//`). Numbers take units (`5 mm`, `2 in`, `30 deg`); a bare
 number is a length in the file unit or an angle in degrees (but `sin`/`cos`/`tan` read
 radians: write `cos(i * 10 deg)`); `pi`, `tau` count radians: `a + pi / 2` is `a + 90 deg`;
 `x * 1 rad` is an angle.
