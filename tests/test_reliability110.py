@@ -151,3 +151,22 @@ solid plate {
     text = (tmp_path / "p.nc").read_text()
     assert "; tool change: a 90 deg V-bit for the 1 countersink: put it in, set Z zero on " \
         "the material's top with it, then resume\nM0\n" in text
+
+
+def test_a_sweep_starts_no_point_its_work_left_cannot_pay():
+    """Issue 110: a 20,000-hole panel's sweep spent 11 s of CPU on points it started and
+    abandoned, then said "0 points ... out of budget".  A point the work left cannot pay is
+    not started, and the answer says what one point needs."""
+    from aidl_lang.params.sweep import sweep
+    base = sweep(PLATE, "p.aidl", points=0)
+    assert base.ok and base.points >= 3 and base.point_work > 0 and not base.short
+    need = base.point_work
+    rep = sweep(PLATE, "p.aidl", points=0, work=need // 2)
+    # nothing compiled: only the declarations read (the ranges a point is moved into)
+    assert rep.points == 0 and rep.work < need / 50 and rep.short == need // 2 - rep.work
+    assert rep.point_work == need
+    assert f"one point needs about {need:,} work units" in rep.text()
+    assert f"{rep.short:,} were left, so no more was started" in rep.text()
+    # room for two points: two judged, nothing begun past them
+    rep = sweep(PLATE, "p.aidl", points=0, work=int(2.5 * need))
+    assert 1 <= rep.points <= 2 and rep.work <= int(2.5 * need) and rep.short
