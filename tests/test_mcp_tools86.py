@@ -193,3 +193,25 @@ async def test_the_routers_bit_is_set_through_render_and_said_in_the_header(shar
     assert r.is_error and r.structured_content["error"]["argument"] == "machine"
     assert "did you mean `tool_diameter`" in r.structured_content["error"]["message"]
     assert not (root / "bit2.nc").exists()
+
+
+@pytest.mark.asyncio(loop_scope="module")
+async def test_measure_takes_every_name_values_lists_a_patterns_original_too(shared):
+    """Issue 111: `values` lists a pattern's original as `plate.corners[0]` (before its
+    copies), and `measure` said "nothing is named `plate.corners[0].c`"."""
+    session, root = shared
+    (root / "corners.aidl").write_text("""units mm
+solid plate {
+    body = Rectangle(center=(0, 0), width=80, height=50)
+    hole holes { c = Circle(center=(-30, -15), diameter=4.5 mm) }
+    corners = CornerPattern(holes, body, inset=10)
+}
+""")
+    r = await session.call_tool("values", {"path": "corners.aidl"})
+    names = [v["name"] for v in r.structured_content["values"]]
+    assert "plate.corners[0].c.center" in names
+    r = await session.call_tool("measure", {"path": "corners.aidl", "a": "plate.corners[0].c",
+                                            "b": "plate.corners[1].c"})
+    assert not r.is_error, _text(r)
+    m = r.structured_content["measure"]
+    assert m["center_distance"] == 60.0 and m["distance"] == 55.5 and m["contact"] == "apart"
