@@ -212,3 +212,25 @@ def test_each_countersink_is_judged_against_the_material_near_it(monkeypatch):
         assert len(met) == n * n + 1
         most[n] = max(met)
     assert most[16] == most[8] <= 12          # its hole, its neighbours', the outline
+
+
+def test_the_wall_guards_message_says_what_it_measured(monkeypatch):
+    """Issue 110: the wall guard said "this machine gave the compile less than 10% of a
+    core" after 56.8 s of CPU in 150 s (38 %).  It now says the CPU the compile got since
+    it started and that share, measured (the clocks stand in for a busy machine)."""
+    import time
+    from aidl_lang.base import limits
+    clock = {"cpu": 100.0, "wall": 1000.0}
+    monkeypatch.setattr(time, "process_time", lambda: clock["cpu"])
+    monkeypatch.setattr(time, "monotonic", lambda: clock["wall"])
+    start = limits.started()
+    clock["cpu"] += 56.8
+    clock["wall"] += 150.5
+    text = limits.wall_text(15.0, start)
+    assert text == ("more than 150 s of wall time (10 x its 15 s budget), in which the compile "
+                    "got 56.8 s of CPU (38% of a core: the machine is busy, or a stage waited)")
+    d = limits.Deadline(limits.now() + 1e9)
+    clock["wall"] += 200.0
+    with pytest.raises(limits.OutOfBudget) as ex:
+        d.backstop("booleans")
+    assert "in which the compile got 0 s of CPU (0% of a core" in str(ex.value)

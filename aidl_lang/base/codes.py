@@ -265,7 +265,8 @@ objects, Newton steps, vertices, pairs, segments; about 15 s of the reference ma
 same count on every machine at any load, so the same program gets the same answer, the same
 message and the same output everywhere). CPU time is only a backstop,
 at 6 times 15 s, and its message says so; wall time an outer guard, at 10 times 15 s, for a
-machine that gives the compile less than a tenth of a core. Each construct's own limit
+machine too busy to give the compile the CPU it needs (its message says the CPU the compile got
+in that time and its share of a core). Each construct's own limit
 (E0301, E0302, E0303) stops one loop or template that is too large by itself; the budget stops
 their product: nested loops, a template that instantiates itself several times per level.
 The error points at the outermost loop or template instance running when the budget ran out
