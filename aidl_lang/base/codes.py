@@ -1169,6 +1169,15 @@ A backslash in a string starts an escape: `\\n` a line break, `\\t` a tab, `\\\\
 backslash out. A path such as `"C:\\temp\\new"` holds a tab and a line break: write
 `"C:\\\\temp\\\\new"`.
 """),
+    "W0115": ("param that nothing reads", """
+A `param` that no statement of the program reads: its slider (`aidl studio`, `aidl serve`) and
+`--set NAME=...` change nothing, which is rarely what was meant (a size written as a number
+where the param should be). Use it where the size it names is written (`width=plate_w`), or
+delete the line.
+
+    param plate_w = 120 mm, min = 80 mm, max = 200 mm
+    solid plate { body = Rectangle(center=(0, 0), width=120 mm, height=60) }   # width=plate_w
+"""),
     "W0104": ("empty drawing", """
 The file is empty (nothing but comments), or its structures build no geometry at all, so the
 SVG would be empty. Add shapes, or instantiate a template. A file of only templates, params and
