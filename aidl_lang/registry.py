@@ -475,14 +475,10 @@ _DEFS = {
     "Countersink": _c([A("hole", "any"), A("diameter", "length"),
                        A("angle", "angle", math.pi / 2)], cat="operation",
                       doc="Flat-head screw seat: a cone (top diameter, included angle) "
-                          "atop round holes (a hole, its Circle or a list). A hole is sunk "
-                          "once: named again with the same head it counts once, with another "
-                          "head (or a Counterbore) it is E0108; heads through the part that "
-                          "leave nothing of it, or cut it apart, are E0503."),
+                          "atop round holes (a hole, its Circle or a list)."),
     "Counterbore": _c([A("hole", "any"), A("diameter", "length"), A("depth", "length")],
                       cat="operation",
-                      doc="Socket-head screw seat: a flat recess atop round holes (sunk once, "
-                          "as Countersink: E0108, E0503)."),
+                      doc="Socket-head screw seat: a flat recess atop round holes."),
     "Fillet": _c([A("radius", "length")], [A("at", "any"), A("radius", "length")],
                  [A("a", "any"), A("b", "any"), A("radius", "length")],
                  cat="operation",
