@@ -8,18 +8,16 @@ line; the law (`benchmarks/laws/law_counted.py`: `aidl parts --json`, the DXF by
 router's G-code by gcodeparser) over fixed programs, and the numbers that show it bites."""
 from __future__ import annotations
 
-import contextlib
 import io
-from dataclasses import dataclass, field
 
 import pytest
 
 import aidl_lang
-from aidl_lang.cli.main import main
 
 pytest.importorskip("gcodeparser")
 
 from benchmarks.laws import law_counted as law  # noqa: E402
+from test_law_outputs import Entry, _run  # noqa: E402
 
 HEAD = """units mm
 thickness 6 mm
@@ -39,23 +37,6 @@ AGAIN = HEAD + """    Countersink([a, b], diameter=9 mm)
     Counterbore(b, diameter=8 mm, depth=2 mm)
 }
 """
-
-
-@dataclass(frozen=True)
-class Entry:
-    """A corpus entry as `benchmarks/laws/corpus.py` gives it (the fields the law reads)."""
-    name: str
-    source: str
-    path: str
-    overrides: dict = field(default_factory=dict)
-    kind: str = "tests"
-
-
-def _run(*args) -> tuple[int, str, str]:
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        rc = main(list(args))
-    return rc, out.getvalue(), err.getvalue()
 
 
 def test_the_issue_plate_is_two_errors_naming_the_first_call(tmp_path):

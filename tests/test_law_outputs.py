@@ -26,16 +26,10 @@ from benchmarks.laws import law_outputs as law  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 
-BIG = """units mm
-thickness 6 mm
-solid plate {
-    body = Rectangle(center=(0, 0), width=80, height=50)
-    hole screws { c = Circle(center=(-30, -15), diameter=4.5 mm) }
-    corners = CornerPattern(screws, body, inset=10)
-    Countersink(corners, diameter=200 mm)
-}
-"""
-GOOD = BIG.replace("200 mm", "9 mm")
+from test_checks_sinks import PLATE  # noqa: E402  (four 4.5 mm holes, 9 mm heads, 6 mm)
+
+BIG = PLATE.replace("diameter=9 mm)", "diameter=200 mm)")
+GOOD = PLATE
 THIN = GOOD.replace("thickness 6 mm", "thickness 3 mm")      # the V-bit goes 4.5 mm deep
 BAR = """units mm
 thickness 6 mm
@@ -91,7 +85,7 @@ def test_the_200_mm_countersink_is_E0503_in_every_format_and_nothing_is_written(
     rc, out, err = _run("render", str(f), *args)
     assert rc == 1 and "wrote" not in out
     assert f"{f}:7:5: error[E0503]: the countersinks of part `plate` leave nothing of it: " \
-        "the 200 mm head on `plate.screws.c` (4.5 mm hole) goes through the 6 mm part, its " \
+        "the 200 mm head on `plate.holes.c` (4.5 mm hole) goes through the 6 mm part, its " \
         "90 deg cone 188 mm wide at its bottom face" in err
     assert stl.read_bytes() == before
     assert [o.exists() for o in outs[1:]] == [False] * 4

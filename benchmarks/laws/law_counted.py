@@ -18,11 +18,7 @@ import json
 import os
 import tempfile
 
-try:                                    # helper corpus's module, once merged
-    from benchmarks.laws.common import NotApplicable
-except ImportError:                     # pragma: no cover - the same one-line class
-    class NotApplicable(Exception):
-        pass
+from benchmarks.laws.law_outputs import NotApplicable, compiled
 
 NAME = "One thing is counted once: a sunk hole is one sink in `aidl parts`, the DXF and G-code"
 TOLERANCE = ("centres compared to 1e-6 mm; a DXF entity is a repeat when its type and numbers "
@@ -38,16 +34,7 @@ def applies(entry) -> bool:
 def check(entry) -> list[str]:
     """The violations of law 5 for ``entry`` (``source``, ``path``, ``overrides``); raises
     :class:`NotApplicable` for a program that does not compile."""
-    import aidl_lang
-    try:
-        res = aidl_lang.compile(source=entry.source, path=entry.path,
-                                overrides=dict(entry.overrides or {}))
-        ok = res.ok
-    except Exception as ex:
-        raise NotApplicable(f"does not compile: {type(ex).__name__}") from None
-    if not ok:
-        raise NotApplicable("does not compile: " + ", ".join(
-            sorted({d.code for d in res.diagnostics if d.severity == "error"})))
+    res = compiled(entry)
     return counted(res, entry)
 
 

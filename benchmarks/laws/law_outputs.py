@@ -50,6 +50,13 @@ def applies(entry) -> bool:
 def check(entry) -> list[str]:
     """The violations of law 2 for ``entry`` (a corpus entry: ``source``, ``path``,
     ``overrides``); raises :class:`NotApplicable` for a program that does not compile."""
+    return compare(compiled(entry))
+
+
+def compiled(entry):
+    """``entry`` compiled by the public API (:class:`aidl_lang.api.Result`), or
+    :class:`NotApplicable` naming the error codes when it does not compile (never another
+    exception: the runner counts it as skipped)."""
     import aidl_lang
     try:
         res = aidl_lang.compile(source=entry.source, path=entry.path,
@@ -60,7 +67,7 @@ def check(entry) -> list[str]:
     if not ok:
         raise NotApplicable("does not compile: " + ", ".join(
             sorted({d.code for d in res.diagnostics if d.severity == "error"})))
-    return compare(res)
+    return res
 
 
 def compare(res) -> list[str]:
