@@ -75,6 +75,7 @@ def compiled(entry):
 def compare(res) -> list[str]:
     """The violations of law 2 for a compiled ``res`` (:class:`aidl_lang.api.Result`)."""
     from aidl_lang.output import MissingDependency, OutputError
+    from aidl_lang.output.writers import StackedParts
     try:
         output = res.output
     except OutputError as ex:
@@ -92,13 +93,11 @@ def compare(res) -> list[str]:
         except OutputError as ex:
             refused[fmt] = ex
     if refused:
-        from aidl_lang.output.writers import StackedParts
         real = {f: e for f, e in refused.items()
                 if not (f in MACHINE and isinstance(e, StackedParts))}
         if real and wrote.keys() - MACHINE:
             f, e = next(iter(real.items()))
             out.append(f"{f} refused ({e}) while {', '.join(sorted(wrote))} were written")
-    from aidl_lang.output.writers import StackedParts
     # parts drawn over each other (an assembly at the origin: the machine's E0501): one part's
     # loops lie inside another's, so holes by nesting and bodies by touching are not counted
     stacked = any(isinstance(e, StackedParts) for e in refused.values())
