@@ -423,6 +423,25 @@ per sheet), or place the parts apart in the program. SVG, DXF and PDF are writte
         Place(back, rotation=(90 deg, 0, 0), position=(0, 60, 0))
     }
 """),
+    "E0503": ("countersinks or counterbores leave nothing of a part, or cut it apart", """
+A `Countersink` whose cone, or a `Counterbore` whose recess, goes through the part (W0529) takes
+from its bottom face a disc as wide as the cone is there (`diameter - 2 x thickness x
+tan(angle / 2)`; a counterbore's `diameter`). When those discs cover the whole part, or cut it
+into pieces, the part cannot be made as drawn: an STL, 3MF or GLB would hold nothing (or loose
+pieces) while the SVG and DXF draw the whole plate and a router's G-code cut cones into it. The
+error is at the call of the widest head, the compile stops, and no format is written (a file
+written before is left as it was); `--thickness` given to `aidl render` is judged the same
+way. Give the head the screw's size (an M4 flat-head screw: a 4.5 mm hole, a 9 mm head), a
+wider angle, a shallower counterbore, or thicker material.
+
+    thickness 6 mm
+    solid plate {
+        body = Rectangle(center=(0, 0), width=80, height=50)
+        hole screws { c = Circle(center=(-30, -15), diameter=4.5 mm) }
+        corners = CornerPattern(screws, body, inset=10)
+        Countersink(corners, diameter=200 mm)      # 188 mm wide at the bottom: E0503
+    }
+"""),
     "E0900": ("internal error in aidl", """
 A bug in aidl, not in your program: a stage of the compiler raised an exception it should have
 turned into a diagnostic. `aidl check` and `aidl render` report it and exit with status 3; the
