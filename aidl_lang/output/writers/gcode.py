@@ -692,9 +692,8 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
         more, split = router_notes(output, m.tool_diameter)
         notes += more
         warnings += split
-        output, relief_notes, relief_warnings = routed_path(output, m)
-        notes += relief_notes
-        warnings += relief_warnings
+        output, said, warned = routed_path(output, m)
+        notes, warnings = notes + said, warnings + warned
         from .gcode_sinks import split as split_heads
         rest, heads = split_heads(output)       # sunk by a second operation, not engraved
         output = Output(output.parts, rest, output.title, output.drawing, output.page)
@@ -770,15 +769,12 @@ def tool_path(output: Output, diameter: float) -> Output:
 
 
 def routed_path(output: Output, m) -> tuple[Output, list[str], list[str]]:
-    """What router profile ``m``'s bit runs on ``output``: :func:`tool_path` with the
-    profile's reliefs where they fit the part's minimum wall (the program's `min_wall`:
-    :func:`~..fabrication.reliefs.relieved`), and their notes and warnings."""
-    from ..checks.common import part_min_wall
+    """What router profile ``m``'s bit runs on ``output``: :func:`tool_path` with the reliefs
+    that fit the program's `min_wall` (:func:`~..fabrication.reliefs.relieved`), its words."""
+    from ..checks.common import part_min_wall as wall
     from ..fabrication.reliefs import relieved
-    d = output.drawing
-    of = getattr(d, "part_of", None) or {}
-    wall = (lambda name: part_min_wall(d, of.get(name))) if d is not None else None
-    return relieved(output, tool_path(output, m.tool_diameter), m, W0527_TAG, wall)
+    return relieved(output, tool_path(output, m.tool_diameter), m, W0527_TAG, lambda n: wall(
+        output.drawing, (getattr(output.drawing, "part_of", None) or {}).get(n)))
 
 
 def _warnings(output: Output, m) -> list[str]:
