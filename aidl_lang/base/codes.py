@@ -1331,6 +1331,17 @@ a smaller bit.
     # program: a 20 x 10 mm hole 0.4 mm from a 60 mm plate's edge, min_wall 0.3 mm
     hole window { w = Rectangle(bottom_left=(39.6, 15), width=20, height=10) }   # W0527
 """),
+    "W0531": ("parts nearer each other than the tool is wide", """
+A router's bit runs its centre a radius off each part's outline, so it cuts a whole diameter
+away from the part; a laser's kerf likewise.  Two parts drawn (or laid out) nearer each other
+than that lose material to each other's cut: `aidl render --machine router` of parts 3 mm apart
+takes 0.175 mm from each with the 3.175 mm bit.  Draw the parts at least the tool's width
+apart, or lay them out for cutting with a larger gap (`--layout sheet --gap 5mm`).  Parts that
+touch (pieces a cut freed, sharing an edge that is cut once) are not said.
+
+    solid a { r = Rectangle(center=(0, 0), width=12, height=12) }
+    solid b { r = Rectangle(center=(15, 0), width=12, height=12) }   # 3 mm apart: W0531
+"""),
     "W0130": ("drawing entities skipped", """
 Entities of a drawing that have no exact form here are skipped and counted, named by kind:
 rational or high-degree splines, hatches, dimensions, images, a mirrored or skewed SVG text

@@ -8,9 +8,7 @@ G1, G2/G3 arcs with I/J from the start) and the tool swept along every move that
 tool's radius: the router's bit, the laser's kerf / 2).  Against the drawn material (each
 part's exact loops, chords within ``CHORD_TOL``) it checks:
 
-* **pieces**: each part is left in as many pieces (of at least :data:`CRUMB` mm^2) as drawn,
-  unless ``aidl render`` says the bit cuts it apart (W0510, a through-cut nearer an edge than
-  the bit's reach: the documented exception);
+* **pieces**: each part is left in as many pieces (of at least :data:`CRUMB` mm^2) as drawn;
 * **nothing else removed**: the closed cuts (outlines, holes) take no material deeper than
   :data:`DEPTH` mm, the reliefs' strokes apart (the open cuts -- through-cuts and edges two
   pieces share -- are cut as wide as the tool by design: W0507 / the shared-edge note);
@@ -114,29 +112,38 @@ def judge(c, out, cut, prof: dict) -> list[str]:
     except OutputError:
         return []                   # refused with its own message (a tool too large, ...)
     router = m.kind == "router"
+    kerf = getattr(out.drawing, "kerf", None)
     if router:
         r = m.tool_diameter / 2
     else:
-        kerf = getattr(out.drawing, "kerf", None)
         k = max(kerf.values()) if isinstance(kerf, dict) and kerf else (kerf or 0.0)
         r = max(float(k or 0.0) / 2, 1e-4)
     moves = replay(job.text, m.kind)
     loops, opens, spikes = runs(moves, THICKNESS, router)
-    return measure(out, loops, opens, spikes, r, _split_parts(c, out, cut, m) if router
-                   else set())
+    return measure(out, loops, opens, spikes, r, _said_parts(c, out, cut, m, kerf or None))
 
 
-def _split_parts(c, out, cut, m) -> set:
-    """The parts ``aidl render`` says the router's bit cuts apart (W0510)."""
+def _said_parts(c, out, cut, m, kerf) -> set:
+    """The parts ``aidl render`` says the tool cuts apart (W0510: a through-cut nearer an
+    edge than the bit's reach) or into (W0531: parts nearer each other than the tool)."""
     from aidl_lang.base.diagnostics import DiagnosticSink
     from aidl_lang.output.checks.material.toolpath_walls import machine_warnings
     sink = DiagnosticSink()
+    router = m.kind == "router"
+    width = m.tool_diameter if router else kerf
+    if not width:
+        return set()
     try:
-        machine_warnings(c.drawing, cut, out, m.tool_diameter, True, sink, None, False, "none")
+        machine_warnings(c.drawing, cut, out, width, router, sink, None, False, "none")
     except Exception:
         return set()
-    return {g for d in sink.items if d.code == "W0510"
-            for g in re.findall(r"part `([^`]+)` comes out", d.message)}
+    got = set()
+    for d in sink.items:
+        if d.code == "W0510":
+            got |= set(re.findall(r"part `([^`]+)` comes out", d.message))
+        elif d.code == "W0531":
+            got |= set(re.findall(r"parts `([^`]+)` and `([^`]+)`", d.message)[0])
+    return got
 
 
 # -- the independent reading --------------------------------------------------------------
@@ -296,9 +303,10 @@ def _pieces(geom) -> int:
 
 
 def measure(out, loops: list, opens: list, spikes: list, r: float,
-            split_said: set = frozenset()) -> list[str]:
+            said: set = frozenset()) -> list[str]:
     """The violations of the swept cuts against ``out``'s drawn parts (see the module's
-    docstring); ``split_said``: the parts ``aidl render`` says the bit cuts apart."""
+    docstring); ``said``: the parts ``aidl render`` says the tool cuts apart or into
+    (W0510, W0531): their pieces and removal are not judged."""
     import numpy as np
     import shapely
     from shapely.geometry import LineString
@@ -318,17 +326,19 @@ def measure(out, loops: list, opens: list, spikes: list, r: float,
         drawn = _pieces(mat)
         left = mat.difference(every) if every is not None and not every.is_empty else mat
         now = _pieces(left)
-        if now > drawn and name not in split_said:
+        if now > drawn and name not in said:
             bad.append(f"part `{name}` comes out in {now} pieces, drawn as {drawn}")
-    if swept_loops is not None and whole is not None:
-        took = whole.intersection(swept_loops)
+    for name, mat in mats:
+        if swept_loops is None or mat is None or name in said:
+            continue
+        took = mat.intersection(swept_loops)
         if relief_zone is not None:
             took = took.difference(relief_zone)
         deep = took.buffer(-DEPTH)
         if not deep.is_empty:
             c = deep.representative_point()
-            bad.append(f"the closed cuts take {took.area:.4g} mm^2 of the drawn material, "
-                       f"deeper than {DEPTH:g} mm near ({c.x:.3f}, {c.y:.3f})")
+            bad.append(f"the closed cuts take {took.area:.4g} mm^2 of part `{name}`, deeper "
+                       f"than {DEPTH:g} mm near ({c.x:.3f}, {c.y:.3f})")
     disc = math.pi * r * r
     for p, q, stroke in strokes:
         took = whole.intersection(stroke) if whole is not None else None

@@ -350,8 +350,8 @@ def relieve(design: Output, tooled: Output, radius: float, style: str,
     where :func:`plan` finds one fits (``wall``: the minimum wall, mm or a callable part name
     -> mm; None: 0.5): at the path's corner ``P`` a line to the relief point and back, of
     ``style`` (:data:`RELIEFS`) or the style :func:`plan` puts in its place.  Returns the new
-    output, the corners relieved and the plan of every inside corner.  ``style`` ``none``:
-    ``tooled`` unchanged, no corner."""
+    output, the corners relieved and the plan of every corner whose tool-path corner is there
+    (relieved or not).  ``style`` ``none``: ``tooled`` unchanged, no corner."""
     if style == "none" or radius <= 0:
         return tooled, [], []
     wall_of = _wall_of(wall)
@@ -360,11 +360,8 @@ def relieve(design: Output, tooled: Output, radius: float, style: str,
     for tp in tooled.parts:
         dp = by_name.get(tp.name)
         plans = plan(dp, radius, style, wall_of(dp.name)) if dp is not None else []
-        planned += plans
         want: dict = {}
         for pl in plans:
-            if pl.style is None:
-                continue
             p = path_corner(pl.corner, radius)
             want.setdefault(_cell(p), []).append((p, pl))
         if not want:
@@ -384,6 +381,9 @@ def relieve(design: Output, tooled: Output, radius: float, style: str,
                             for p, pl in want.get((kx + dx, ky + dy), ())
                             if math.dist(p, e) <= MATCH_TOL), None)
                 if hit is None:
+                    continue
+                planned.append(hit)
+                if hit.style is None:
                     continue
                 q = relief_point(hit.corner, radius, hit.style)
                 if math.dist(q, e) <= 1e-9:

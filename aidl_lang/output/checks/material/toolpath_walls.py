@@ -578,11 +578,16 @@ def machine_warnings(drawing, cut, design, width, router: bool, sink, given=None
     reach (:func:`~...fabrication.reliefs.unreached`); with a relief, W0527 at each hole or
     outline with corners whose relief is not cut as asked (an acute corner, a wall the stroke
     would cut through or thin below the minimum: :func:`~...fabrication.reliefs.plan`, the
-    relief strokes judged as the G-code runs them)."""
+    relief strokes judged as the G-code runs them); W0531 for parts nearer each other than
+    the tool is wide (:func:`.tool_gaps.tool_gap_warnings`)."""
     if router and width and relief == "none":
         _corners(drawing, cut, width, sink)
     elif router and width:
         _reliefs(drawing, cut, width, relief, sink)
+    if width:                   # W0531: parts nearer each other than the tool is wide
+        from .tool_gaps import tool_gap_warnings
+        tool_gap_warnings(drawing, cut, (lambda n: width.get(n, 0.0)) if isinstance(width, dict)
+                          else width, router, sink)
     if not width or not getattr(drawing, "through", ()):
         return
     split = _splits(drawing, design, width, sink) if router else set()
@@ -614,12 +619,20 @@ def _reliefs(drawing, cut, diameter: float, relief: str, sink) -> None:
     ``relief`` a router's bit of ``diameter`` mm does not cut as asked (the G-code's
     :func:`~...fabrication.reliefs.plan`, at the program's minimum wall), located at the
     hole (or the outline's shape) the corners are on."""
+    from ...fabrication.layout import LayoutError, compensate
     from ...fabrication.reliefs import (NOT_RELIEVED_HINT, not_relieved, not_relieved_message,
-                                        plan)
+                                        relieve)
+    from ...part.part import Output
     part_of = getattr(drawing, "part_of", None) or {}
     for p in cut.parts:
         node = part_of.get(p.name)
-        plans = plan(p, diameter / 2, relief, part_min_wall(drawing, node))
+        one = Output([p], [], cut.title, cut.drawing, cut.page)
+        try:            # the corners the offset path reaches, as the G-code's (a part the
+            tooled = compensate(one, diameter)      # tool does not fit is refused there)
+        except LayoutError:
+            continue
+        _, _, plans = relieve(one, tooled, diameter / 2, relief,
+                              part_min_wall(drawing, node))
         for ps in not_relieved(plans).values():
             span = _shape_at(drawing, node, ps[0].corner.at)
             sink.warning("W0527", not_relieved_message(ps, diameter),
