@@ -163,3 +163,28 @@ def test_law_interface():
     Entry.source = "solid p { body = Circle(center=(0, 0), radius=-1) }"
     assert law.check(Entry) == []           # does not compile: not applicable
     assert law.NAME and law.TOLERANCE
+
+
+@pytest.mark.parametrize("rel,part,at,deep", [
+    ("examples/violin.aidl", "violin", "(-40.39, 33.19)", "0.175"),
+    ("tests/programs/picture/rounded_corner_nick.aidl", "bracket", "(18.41, 13.65)", "1.59"),
+    ("tests/programs/model_run73/phone_side.aidl", "side", "(60.09, 0)", "0.175")])
+def test_a_slot_narrower_than_the_bit_is_refused(tmp_path, rel, part, at, deep):
+    """Found by the law: the violin's 3 mm f-hole stems, a nick between a rounded corner and
+    an arm, a 3 mm slot, each narrower than the 3.175 mm bit: every segment's offset is
+    sound, the loop's is not, and the bit took 48.9, 33.5 and 2.1 mm^2 of the part (the nick
+    left the bracket in two pieces) with no word.  Now the writer refuses the job as it does
+    a tooth gap narrower than the bit (exit 1, nothing written)."""
+    from aidl_lang.cli.main import main
+    err = io.StringIO()
+    out = tmp_path / "v.nc"
+    with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
+        rc = main(["render", str(ROOT / rel), "-o", str(out), "--machine", "router"])
+    assert rc == 1 and not out.exists()
+    assert f"aidl: error: the router's tool (3.175 mm across) does not fit part `{part}`: a " \
+        f"slot or notch near {at} is narrower than the cut: the offset path comes {deep} mm " \
+        "into the material there; use a smaller tool" in err.getvalue()
+    # a 2.9 mm bit fits the 3 mm features: the law holds
+    f = ROOT / rel
+    assert law.check_program(f.read_text(), str(f), machines=[
+        ("router 3 mm", {"kind": "router", "tool_diameter": 2.9})]) == []

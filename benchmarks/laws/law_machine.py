@@ -105,12 +105,12 @@ def judge(c, out, cut, prof: dict) -> list[str]:
     """The violations of one machine profile ``prof`` on the compiled program."""
     from aidl_lang.output.fabrication.machine import from_dict
     from aidl_lang.output.part.part import OutputError
-    from aidl_lang.output.writers import gcode
+    from aidl_lang.output.writers import Options, encode
     m = from_dict(prof)
-    try:
-        job = gcode.job(cut, m, THICKNESS)
+    try:                            # as `aidl render -o x.gcode --machine ... --thickness 3mm`
+        text = encode(cut, ".gcode", Options(machine=m, thickness=THICKNESS)).decode()
     except OutputError:
-        return []                   # refused with its own message (a tool too large, ...)
+        return []                   # refused with its own message (a tool too large, E0501)
     router = m.kind == "router"
     kerf = getattr(out.drawing, "kerf", None)
     if router:
@@ -118,7 +118,7 @@ def judge(c, out, cut, prof: dict) -> list[str]:
     else:
         k = max(kerf.values()) if isinstance(kerf, dict) and kerf else (kerf or 0.0)
         r = max(float(k or 0.0) / 2, 1e-4)
-    moves = replay(job.text, m.kind)
+    moves = replay(text, m.kind)
     loops, opens, spikes = runs(moves, THICKNESS, router)
     return measure(out, loops, opens, spikes, r, _said_parts(c, out, cut, m, kerf or None))
 
@@ -149,41 +149,30 @@ def _said_parts(c, out, cut, m, kerf) -> set:
 # -- the independent reading --------------------------------------------------------------
 
 def replay(text: str, kind: str) -> list[tuple]:
-    """Every XY motion of G-code ``text`` as GRBL runs it, read by ``gcodeparser``:
-    ``(g, (x0, y0), (x1, y1), centre or None, z, power)``; ``power``: the S in force with the
-    spindle or laser on (0 off)."""
-    import gcodeparser
-    x = y = 0.0
-    z = None
-    s = 0.0
-    on = False
+    """Every XY motion of G-code ``text`` as GRBL runs it, read by ``gcodeparser``
+    (docs/toolpath_picture.py's reader): ``(g, (x0, y0), (x1, y1), centre or None, z, power)``
+    of the feed moves (G1, G2, G3) at one depth; ``power``: the S in force with the spindle or
+    laser on (0 off)."""
     got = []
-    for line in gcodeparser.parse_gcode_lines(text):
-        letter, code = line.command
-        prm = line.params
-        if letter == "M":
-            if code in (3, 4):
-                on = True
-            elif code == 5:
-                on = False
-            if "S" in prm:
-                s = float(prm["S"])
-            continue
-        if letter != "G":
-            continue
-        if "S" in prm:
-            s = float(prm["S"])
-        if code not in (0, 1, 2, 3):
-            continue
-        nx = float(prm.get("X", x))
-        ny = float(prm.get("Y", y))
-        nz = float(prm["Z"]) if "Z" in prm else z
-        centre = (x + float(prm.get("I", 0.0)), y + float(prm.get("J", 0.0))) \
-            if code in (2, 3) else None
-        if (nx, ny) != (x, y) and nz == z and code != 0:
-            got.append((code, (x, y), (nx, ny), centre, z, s if on else 0.0))
-        x, y, z = nx, ny, nz
+    for g, p, q, c, _, z0, z1, s in _picture().moves(text, kind):
+        if g != 0 and z0 == z1:
+            got.append((g, p, q, c, z1, s))
     return got
+
+
+def _picture():
+    """docs/toolpath_picture.py, loaded from its file (docs/ is no package)."""
+    import importlib.util
+    import sys
+    from pathlib import Path
+    mod = sys.modules.get("aidl_toolpath_picture")
+    if mod is None:
+        path = Path(__file__).resolve().parents[2] / "docs" / "toolpath_picture.py"
+        spec = importlib.util.spec_from_file_location("aidl_toolpath_picture", path)
+        mod = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(mod)
+        sys.modules["aidl_toolpath_picture"] = mod
+    return mod
 
 
 def _arc_points(p, q, centre, cw: bool) -> list:

@@ -7,8 +7,8 @@ than that lose material to each other's cut: the mounting plate's washers, 3 mm 
 0.175 mm each to the 3.175 mm bit, with no word.  :func:`near_parts` finds such pairs
 (candidate pairs from their boxes, the exact gap between their outlines:
 :func:`~...part.measure.gaps.gap`); :func:`tool_gap_warnings` says each as W0531, located at
-the second part.  Parts that touch (gap 0: pieces a cut freed, which share an edge cut once)
-are not said; parts over each other are E0501's.
+the second part (parts that touch too: a knight drawn standing on its base; not the pieces a
+cut freed, whose shared edge is cut once); parts over each other are E0501's.
 """
 from __future__ import annotations
 
@@ -37,8 +37,9 @@ class NearParts:
 
 def near_parts(output, width) -> list[NearParts]:
     """The pairs of ``output``'s solid parts nearer each other than ``width`` (mm, or a
-    callable part name -> mm: the tool's width there, a router's bit or a laser's kerf) and
-    not touching, in the parts' order."""
+    callable part name -> mm: the tool's width there, a router's bit or a laser's kerf), in
+    the parts' order; touching too, unless both are pieces a through-cut freed
+    (``output.drawing.split``: their shared edge is cut once)."""
     width_of = width if callable(width) else (lambda name, w=float(width or 0.0): w)
     parts = [p for p in output.parts if p.kind == "solid" and p.loops]
     if len(parts) < 2:
@@ -46,6 +47,7 @@ def near_parts(output, width) -> list[NearParts]:
     ws = [width_of(p.name) or 0.0 for p in parts]
     if not max(ws) > 0:
         return []
+    split = getattr(getattr(output, "drawing", None), "split", None) or ()
     boxes = np.array([_box(p) for p in parts])
     out = []
     for i, j in box_pairs(boxes, max(ws)):
@@ -55,7 +57,9 @@ def near_parts(output, width) -> list[NearParts]:
             continue
         d, p, q = gap(pieces([s for lp in a.loops for s in lp.segments]),
                       pieces([s for lp in b.loops for s in lp.segments]))
-        if GAP_TOL < d < w - GAP_TOL:
+        if d <= GAP_TOL and a.name in split and b.name in split:
+            continue
+        if d < w - GAP_TOL:
             out.append(NearParts(a.name, b.name, d, ((p[0] + q[0]) / 2, (p[1] + q[1]) / 2), w))
     return out
 
@@ -80,8 +84,9 @@ def tool_gap_warnings(drawing, output, width, router: bool, sink) -> set:
         tool = (f"the router's bit ({n.width:g} mm across)" if router else
                 f"the laser's kerf ({n.width:g} mm)")
         node = part_of.get(n.b) or part_of.get(n.a)
+        apart = "touching" if n.gap <= GAP_TOL else f"{n.gap:.4g} mm apart"
         sink.warning("W0531", f"{tool} runs between parts `{n.a}` and `{n.b}`, "
-                     f"{n.gap:.4g} mm apart near ({n.at[0]:.2f}, {n.at[1]:.2f}): its cut round "
+                     f"{apart} near ({n.at[0]:.2f}, {n.at[1]:.2f}): its cut round "
                      f"each takes {n.width - n.gap:.3g} mm of the other",
                      node.span if node is not None else None,
                      hint=f"draw the parts at least {n.width:g} mm apart, or lay them out for "
