@@ -1360,9 +1360,31 @@ corners and how far the material stays. Set `relief = "dogbone"` (the bit runs a
 corner's bisector until its edge touches it; the built-in router profile's default) or
 `relief = "tbone"` (along the longer side) in the profile; the SVG and DXF stay as drawn.
 
+With a relief, a corner where the relief cannot be cut as asked is said the same way, at the
+hole (or outline) it is on, with the reason: a corner sharper than 60 degrees, where the bit's
+stroke from the tool path's corner would gouge both edges (a 10 degree corner's dogbone takes
+3.5 times the bit's disc), or a wall the stroke would cut through or leave thinner than the
+minimum wall (`min_wall`; a T-bone into a 1.2 mm wall cuts the part in two). There a T-bone is
+cut as a dogbone when that fits, else the corner is left as the offset path leaves it. Widen
+the corner to 60 degrees or more, keep the wall the bit's radius plus the minimum wall, or use
+a smaller bit.
+
     # router.toml
     kind = "router"
     relief = "dogbone"
+    # program: a 20 x 10 mm hole 0.4 mm from a 60 mm plate's edge, min_wall 0.3 mm
+    hole window { w = Rectangle(bottom_left=(39.6, 15), width=20, height=10) }   # W0527
+"""),
+    "W0531": ("parts nearer each other than the tool is wide", """
+A router's bit runs its centre a radius off each part's outline, so it cuts a whole diameter
+away from the part; a laser's kerf likewise.  Two parts drawn (or laid out) nearer each other
+than that lose material to each other's cut: `aidl render --machine router` of parts 3 mm apart
+takes 0.175 mm from each with the 3.175 mm bit.  Draw the parts at least the tool's width
+apart, or lay them out for cutting with a larger gap (`--layout sheet --gap 5mm`).  Parts that
+touch (pieces a cut freed, sharing an edge that is cut once) are not said.
+
+    solid a { r = Rectangle(center=(0, 0), width=12, height=12) }
+    solid b { r = Rectangle(center=(15, 0), width=12, height=12) }   # 3 mm apart: W0531
 """),
     "W0130": ("drawing entities skipped", """
 Entities of a drawing that have no exact form here are skipped and counted, named by kind:

@@ -668,7 +668,10 @@ with a 3.175 mm bit); keep cuts the tool's radius plus `min_wall` from edges and
 A router's round bit cannot cut a square inside corner: `relief = "dogbone"` (the built-in
 router's default: along the bisector) or `"tbone"` (along the longer side) runs it in until
 its edge touches every inside corner of the joints; `relief = "none"` warns W0527 naming the
-corners (and the assembled fit of the routed parts, W0517). `Countersink` / `Counterbore`
+corners (and the assembled fit of the routed parts, W0517). A relief is cut only where it takes
+at most a disc of the bit's radius beside its corner and keeps the part whole: not at a corner
+sharper than 60 deg, nor where it would cut through or thin a wall below `min_wall` (a T-bone
+there becomes a dogbone if that fits); W0527 at the hole names each such corner and why. `Countersink` / `Counterbore`
 holes: a router sinks them after the through-cuts with a V-bit (`v_bit_angle`, 90 deg) or
 pockets them (`pocket_tool` mm; 0: `tool_diameter`); a laser engraves the head's circle on a
 layer of its own (`countersink`, `counterbore`).
