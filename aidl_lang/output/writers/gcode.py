@@ -803,8 +803,7 @@ def _warnings(output: Output, m) -> list[str]:
 def _header(output: Output, m, w: _Writer) -> list[str]:
     src = m.source or f"built-in {m.kind} profile"
     h = [f"; {output.title or 'aidl'}: G-code (GRBL) written by aidl",
-         f"; machine: {m.kind} ({src})",
-         *([f"; tool: {m.tool_text()}"] if m.kind == "router" else []),
+         f"; machine: {m.kind} ({src})" + (f"\n; tool: {m.tool_text()}" if m.kind == "router" else ""),
          f"; {estimate_text(w.cut, w.travel, w.seconds, sum(w.dark.values()), w.runs)}",
          *[f"; warning: {x}" for x in w.warnings],
          *[f"; note: {x}" for x in w.notes],
