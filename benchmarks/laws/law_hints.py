@@ -389,14 +389,64 @@ def generated_program(seed: int) -> str:
     return "solid plate {\n" + "".join(f"    {s}\n" for s in shapes + stmts) + "}\n"
 
 
+def generated_joint_program(seed: int) -> str:
+    """A panel with two joints of std/joints.aidl (`cross_halving`, `dovetail`) on its top
+    edge, each placed one of the ways models and makers write it: by its arguments alone
+    (the template holds itself there), by `AlignTop` and a distance from the panel's edge,
+    by `AlignTop` and a distance from the other joint (issue 109's divider), by `CenterInside`
+    or `AlignCenterX` (a lid's dovetail), with some statement said twice (a redundancy whose
+    drop is safe), the panel `Fixed` or floating; seeded (``random.Random(seed)``)."""
+    import random
+    rnd = random.Random(seed)
+    w, h = rnd.choice([160, 200, 240]), rnd.choice([60, 80])
+    pitch = rnd.choice([60, 80, 100])
+    calls = {"cross_halving": "cross_halving(depth={d} mm, thickness=3 mm{at})",
+             "dovetail": "dovetail(part=\"{part}\", length=40 mm, depth=8 mm, tails=1{at})"}
+    cut = {"cross_halving": "{}.cut.center", "dovetail": "{}.cut[0].center"}  # a list: per tail
+    kinds: dict = {}
+    lines = [f"body = Rectangle(center=(0, 0), width={w}, height={h})"]
+    stmts = []
+    for i, name in enumerate(("a", "b")):
+        kind = kinds[name] = rnd.choice(list(calls))
+        how = rnd.choice(["args", "edge", "other", "center"] if i else ["args", "edge", "center"])
+        x = -pitch / 2 if i == 0 else pitch / 2
+        at = f", cx={x} mm, cy={h / 2} mm" if how == "args" else \
+            rnd.choice(["", f", cy={h / 2} mm", f", cx={rnd.choice([0, x])} mm"])
+        lines.append(f"{name} = " + calls[kind].format(d=rnd.choice([20, 30]), at=at,
+                                                        part=rnd.choice(["tail", "socket"])))
+        if how == "edge":
+            stmts += [f"AlignTop({name}, body)",
+                      f"HorizontalDistance(body.left.midpoint, {cut[kind].format(name)}, "
+                      f"{w / 2 + x} mm)"]
+        elif how == "other":
+            stmts += [f"HorizontalDistance({cut[kinds['a']].format('a')}, "
+                      f"{cut[kind].format(name)}, {pitch} mm)", f"AlignTop({name}, a)"]
+        elif how == "center":
+            stmts += [rnd.choice([f"CenterInside({name}, body)", f"AlignCenterX({name}, body)"])]
+    if stmts and rnd.random() < 0.4:
+        stmts.append(rnd.choice(stmts))                 # said twice: a drop that is safe
+    if rnd.random() < 0.6:
+        stmts.append("Fixed(body)")
+    rnd.shuffle(stmts)
+    return ('import "std/joints.aidl"\n\nthickness 3 mm\n\nsolid panel {\n'
+            + "".join(f"    {t}\n" for t in lines + stmts) + "}\n")
+
+
 def generated(n: int):
-    """``n`` programs of :func:`generated_program` (seeds 0 .. n-1) as corpus entries of
-    kind ``generated``, each named ``generated/hints/SEED`` (a path in the repository's
-    root: the programs import nothing)."""
+    """``n`` programs as corpus entries of kind ``generated``: by turns
+    :func:`generated_program` (``generated/hints/plate/SEED``) and
+    :func:`generated_joint_program` (``generated/hints/joints/SEED``), seeds from 0; their
+    path a file in the repository's root (never written; not in stdlib/, whose constraints
+    are a template's own)."""
     from pathlib import Path
 
     from .corpus import Entry
     root = Path(__file__).resolve().parents[2]
-    for seed in range(n):
-        yield Entry(f"generated/hints/{seed}", generated_program(seed),
-                    str(root / f"generated_hints_{seed}.aidl"), {}, "generated")
+    for k in range(n):
+        seed = k // 2
+        if k % 2 == 0:
+            yield Entry(f"generated/hints/plate/{seed}", generated_program(seed),
+                        str(root / "generated_hints_plate.aidl"), {}, "generated")
+        else:
+            yield Entry(f"generated/hints/joints/{seed}", generated_joint_program(seed),
+                        str(root / "generated_hints_joints.aidl"), {}, "generated")
