@@ -15,8 +15,8 @@ import re
 
 import pytest
 
-from benchmarks.laws.law_hints import (STMT, applied_fix, changed, checked, contours,
-                                       drawn, generated_program, unsafe_drops)
+from benchmarks.laws.law_hints import (STMT, changed, checked, contours, drawn,
+                                       generated_program, proposed_fixes, unsafe_drops)
 from conftest import EXAMPLES, ROOT
 from test_hints51 import FIXTURES
 
@@ -151,13 +151,7 @@ def test_every_fix_removes_its_warning_and_changes_nothing_else(compiled, name, 
         return
     before = drawn(c)
     tried = []
-    for d in c.sink.items:
-        if d.severity != "warning":
-            continue
-        fixed = applied_fix(src, d, c.model)
-        if fixed is None:
-            continue
-        new, at = fixed
+    for d, new, at in proposed_fixes(src, c):
         after = compiled(name, new, tag=f"fixed{len(tried)}_")
         tried.append(d.code)
         errs = [(x.code, x.message) for x in after.sink.items if x.severity == "error"]

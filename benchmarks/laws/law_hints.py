@@ -98,6 +98,17 @@ def applied_fix(src: str, d, model):
     return src[:end - 1] + f"    {stmt}\n" + src[end - 1:], end - 1
 
 
+def proposed_fixes(src: str, c):
+    """``(warning, text, at)`` for each warning of the compile ``c`` of ``src`` that proposes
+    code: the program with it applied (:func:`applied_fix`) and the offset of the change."""
+    for d in c.sink.items:
+        if d.severity != "warning":
+            continue
+        fixed = applied_fix(src, d, c.model)
+        if fixed is not None:
+            yield d, fixed[0], fixed[1]
+
+
 def statement(src: str, span) -> tuple:
     """``(start, end)`` of the statement at ``span``, with a name it is given (`corners = `)."""
     start, end = span.start, span.end
@@ -270,14 +281,9 @@ def unsafe_fixes(name: str, src: str, compile_as) -> tuple:
         return 0, []
     before = drawn(c)
     applied, bad = 0, []
-    for d in c.sink.items:
-        if d.severity != "warning":
-            continue
-        fixed = applied_fix(src, d, c.model)
-        if fixed is None:
-            continue
+    for d, text, _ in proposed_fixes(src, c):
         applied += 1
-        after = compile_as(name, fixed[0])
+        after = compile_as(name, text)
         errs = [(x.code, x.message) for x in after.sink.items if x.severity == "error"]
         if errs or after.drawing is None:
             bad.append((d.code, d.message, ["errors", errs[:2]]))
