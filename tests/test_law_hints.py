@@ -105,6 +105,23 @@ solid plate {
     assert law.check(_entry(path, src)) == []
 
 
+def test_W0508_never_writes_the_name_of_an_unnamed_patterns_copies():
+    """The law over the gallery's bracket at `bolts=1`: W0508's hint said to write
+    `AllowOverlap(bolt, first_pattern)` in `bracket` (`first_pattern[4]` is how the model
+    names a copy of `first` by `CircularPattern(first, ...)` with no name); written, E0101.
+    Now it asks for the pattern to be named (`NAME = ` before it), and the law holds."""
+    path = ROOT / "examples" / "bracket.aidl"
+    src = path.read_text()
+    entry = SimpleNamespace(name="bracket@bolts=1", path=str(path), source=src,
+                            overrides={"bolts": "1"})
+    c = law.compile_text(src, str(path), {"bolts": "1"})
+    (w,) = [d for d in c.sink.items if d.code == "W0508"]
+    assert "first_pattern[4]" in w.message and "write `AllowOverlap(bolt, first_pattern)`" \
+        not in w.hint and w.fix is None
+    assert "(`NAME = ` before it) and write `AllowOverlap(bolt, NAME)` after it" in w.hint
+    assert law.check(entry) == []
+
+
 def test_a_program_that_does_not_compile_is_not_applicable():
     path = HINTS / "corner_plate.aidl"
     with pytest.raises(NotApplicable):

@@ -710,7 +710,10 @@ inner hole cuts from it, and `AllowOverlap(window, tab)` in the structure holdin
 marks the refill as intended (it silences this warning and W0501 for the pair).
 Two holes meant to cut one opening (a screw hole on the edge of a window) are said with
 `AllowOverlap(window, screw)` in the structure holding both, as the hint writes (or draw the
-shapes in one hole structure). When more than 55 % of the smaller hole lies inside the other
+shapes in one hole structure); a copy made by a pattern with no name (`first_pattern[4]` of
+`CircularPattern(first, 8, c)`) has no name a program can write, so the hint asks for the
+pattern's statement to be named first (`NAME = ` before it, then `AllowOverlap(bolt, NAME)`).
+When more than 55 % of the smaller hole lies inside the other
 and relations place both (a slit placed from a knob hole's centre out to the edge), one
 opening looks meant: the hint leads with `AllowOverlap` and gives the move second.
 The suggested fix (`--json`, the editors' quick fix) never hides the overlap. Two different
