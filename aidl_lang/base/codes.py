@@ -463,10 +463,15 @@ kept. A statement that makes geometry is never one to drop: a `CornerPattern` be
 `HorizontalDistance` and a `VerticalDistance` that place its hole the same way keeps the pattern
 (it makes the copies) and drops the two distances; when only such statements are left the
 warning names the redundancy without a drop list. A standard-library template's own
-constraints are never the ones to drop either (its user cannot edit them): beside one
-(`CenterInside(h, body)` on a joint that holds itself by `Fixed(self)`) the hint names the
-user's line and where the template holds it (`std/joints.aidl line 136`), and a redundancy
-wholly inside a template is not reported. A line that makes several constraints (a loop's
+constraints are never the ones to drop either (its user cannot edit them): beside one the hint
+names the user's line and where the template holds it (`std/joints.aidl line 154`), and a
+redundancy wholly inside a template is not reported. A template instance's hold of its own
+place (`Fixed(self)`: a joint "holds itself where `cx`, `cy` put it") is where it starts,
+which the constraints placing it override (the solver moves the instance): nothing placing
+an instance (`AlignRight(tail, panel)`, `CenterInside(h, body)`) is redundant with it, even
+where the two agree, and no hint says to drop such a placement (dropped, the instance went
+back to where the template started it: issue 109). Every edit a W0401 proposes, applied,
+leaves the design where it was (law 4, docs/laws.md). A line that makes several constraints (a loop's
 body) of which only some are implied is never offered for dropping: the warning says how many
 of them are redundant and that removing the line would free what the others hold, and its hint
 narrows the other statement instead (`AlignCenterX(pockets, body)` for a `CenterInside` whose y
@@ -733,7 +738,10 @@ inner hole cuts from it, and `AllowOverlap(window, tab)` in the structure holdin
 marks the refill as intended (it silences this warning and W0501 for the pair).
 Two holes meant to cut one opening (a screw hole on the edge of a window) are said with
 `AllowOverlap(window, screw)` in the structure holding both, as the hint writes (or draw the
-shapes in one hole structure). When more than 55 % of the smaller hole lies inside the other
+shapes in one hole structure); a copy made by a pattern with no name (`first_pattern[4]` of
+`CircularPattern(first, 8, c)`) has no name a program can write, so the hint asks for the
+pattern's statement to be named first (`NAME = ` before it, then `AllowOverlap(bolt, NAME)`).
+When more than 55 % of the smaller hole lies inside the other
 and relations place both (a slit placed from a knob hole's centre out to the edge), one
 opening looks meant: the hint leads with `AllowOverlap` and gives the move second.
 The suggested fix (`--json`, the editors' quick fix) never hides the overlap. Two different
