@@ -16,11 +16,17 @@ stable, unique name, by kind:
   program ``aidl docs NAME`` shows (a solid, a plate it cuts into, an assembly:
   ``aidl_lang.library.reference``), named ``stdlib/boxes.aidl#finger_box``;
 * ``docs``: the example program of every other ``aidl docs`` topic (shapes, constraints,
-  operations, statements), named ``docs/topic/Circle``;
+  operations, statements), named ``docs/topic/Circle``, and every ```aidl block of
+  README.md, docs/*.md and docs/dev/*.md as tests/test_docs.py compiles it (blank lines in
+  front, so lines are the file's), named by file and line (``docs/language.md:120``);
 * ``model_runs``, ``maker_runs``: every ``data/model_runs/**/*.aidl`` and
   ``data/maker_runs/**/*.aidl`` (first valid and final programs, attempts, edits), named
   by their path under ``data/`` (``model_runs/issue105/run/02_jar_lid.aidl``);
 * ``tests``: every ``tests/**/*.aidl`` fixture (``tests/programs/hostile/nan_radius.aidl``).
+
+Some programs are kept *because* they give an error (a model's attempts, the hostile test
+fixtures, a docs block marked with the error it shows): :func:`meant_to_fail` says which and
+why; a law that needs a compiling program treats them as not applicable.
 
 A law adds its own generated programs (kind ``generated``) through its module's
 ``generated(n)``; the runner (:mod:`benchmarks.laws.run`) asks for them, not this module.
@@ -35,6 +41,7 @@ from __future__ import annotations
 import functools
 import math
 import re
+import textwrap
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Iterable, Iterator
@@ -236,6 +243,69 @@ def _docs() -> Iterator[Entry]:
     for name, topic in sorted(topics().items()):
         if name not in templates and topic.example:
             yield Entry(f"docs/topic/{name}", topic.example, str(path), {}, "docs")
+    for md in [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md")),
+               *sorted((ROOT / "docs" / "dev").glob("*.md"))]:
+        for line, source, _ in aidl_blocks(md):
+            name = f"{md.relative_to(ROOT).as_posix()}:{line}"
+            # blank lines in front: the diagnostics' lines are the Markdown file's
+            yield Entry(name, "\n" * (line - 1) + source, str(md), {}, "docs")
+
+
+_MARKER = re.compile(r"<!--\s*expect:\s*(.*?)\s*-->")
+_CODE = re.compile(r"\b[EW]\d{4}\b")
+
+
+@functools.lru_cache(maxsize=64)
+def aidl_blocks(md: Path) -> list[tuple[int, str, frozenset[str]]]:
+    """The ```aidl blocks of a Markdown file as tests/test_docs.py reads them: ``(line of the
+    first code line, the dedented code, the codes of the <!-- expect: ... --> marker on the
+    last non-blank line before the fence)``."""
+    lines = md.read_text(encoding="utf-8").split("\n")
+    out, i = [], 0
+    while i < len(lines):
+        if lines[i].strip() == "```aidl":
+            j = next((j for j in range(i + 1, len(lines)) if lines[j].strip() == "```"),
+                     len(lines))
+            k = next((k for k in range(i - 1, -1, -1) if lines[k].strip()), -1)
+            m = _MARKER.search(lines[k]) if k >= 0 else None
+            out.append((i + 2, textwrap.dedent("\n".join(lines[i + 1:j])) + "\n",
+                        frozenset(_CODE.findall(m[1])) if m else frozenset()))
+            i = j
+        i += 1
+    return out
+
+
+# programs kept in data/ as a model first wrote them, with the error their README reports
+KEPT_WITH_ERRORS = {
+    "model_runs/issue73/programs/e04_cable_organiser.aidl":
+        "its first result, E0108 fixed by its hint in issue73/fixed/ (issue73/README.md)",
+}
+_ATTEMPT = re.compile(r"\.(attempt|check)\d+\.aidl$|/(tries|drafts|probes)/")
+_HOSTILE_EXPECT = re.compile(r"#\s*expect:\s*(ok|[EW]\d{4})")
+
+
+def meant_to_fail(entry: Entry) -> str:
+    """Why the project keeps ``entry`` although it is expected to give an error, or ``""``:
+    a model's attempts on its way to a valid program (``*.attemptN.aidl``,
+    ``*.checkN.aidl``, ``tries/``, ``drafts/``, ``probes/`` of data/), a program kept with
+    the error its run reports (:data:`KEPT_WITH_ERRORS`), a test fixture whose first line
+    expects an error (``# expect: E0123``, tests/test_hostile.py), a docs block marked
+    ``<!-- expect: E0123 -->`` (tests/test_docs.py)."""
+    if entry.kind in ("model_runs", "maker_runs"):
+        if _ATTEMPT.search(entry.name):
+            return "a model's attempt, kept on its way to a valid program"
+        return KEPT_WITH_ERRORS.get(entry.name, "")
+    if entry.kind == "tests":
+        m = _HOSTILE_EXPECT.match(entry.source.split("\n", 1)[0])
+        if m and m[1].startswith("E"):
+            return f"its first line expects {m[1]} (tests/test_hostile.py)"
+    if entry.kind == "docs" and entry.path.endswith(".md"):
+        line = int(entry.name.rsplit(":", 1)[1])
+        expect = next((x for n, _, x in aidl_blocks(Path(entry.path)) if n == line), ())
+        errors = sorted(c for c in expect if c.startswith("E"))
+        if errors:
+            return f"marked <!-- expect: {' '.join(errors)} --> (tests/test_docs.py)"
+    return ""
 
 
 def _data(kind: str) -> Iterator[Entry]:
@@ -316,6 +386,13 @@ def iter_corpus(sample: int | None = None,
     for e in (entries if sample is None else spread(entries, sample)):
         moved = _TO_SETTLE.get(e.name)
         yield e if moved is None else settled(e, moved)
+
+
+def names(kinds: Iterable[str] | None = None) -> list[str]:
+    """The names of :func:`iter_corpus`'s entries, in its order, without settling any (cheap:
+    the list is built once per process)."""
+    wanted = tuple(k for k in KINDS if k != "generated" and (kinds is None or k in set(kinds)))
+    return [e.name for e in _all(wanted)]
 
 
 def counts(entries: Iterable[Entry]) -> dict[str, int]:

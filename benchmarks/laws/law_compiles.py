@@ -2,40 +2,25 @@
 without an error (``aidl check`` exit 0; warnings allowed).
 
 Applies to the examples, the gallery (defaults, slider ends, bools flipped), the standard
-library's templates and the ``aidl docs`` examples, the model and maker runs' programs that
-were kept as compiling (final, first valid, a maker's edit: not the attempts a model checked
-on its way, ``*.attemptN.aidl``, ``*.checkN.aidl``, ``tries/``, ``drafts/``, ``probes/``,
-which were kept because they failed), and the test fixtures but those a test expects an
-error of (``tests/programs/hostile/``: the first line's ``# expect: CODE``).
+library's templates, the ``aidl docs`` examples and the docs' ```aidl blocks, the model
+and maker runs' programs that were kept as compiling (final, first valid, a maker's edit), and
+the test fixtures: every program but those the project keeps because they give an error
+(:func:`benchmarks.laws.corpus.meant_to_fail`: a model's attempts, ``tests/programs/hostile/``
+files whose first line expects an error, docs blocks marked ``<!-- expect: E.... -->``).
 """
 from __future__ import annotations
 
-import re
-
-from .corpus import Entry, compiled
+from .corpus import Entry, compiled, meant_to_fail
 
 NAME = "every program in the corpus that the project ships compiles without error"
 TOLERANCE = ("none: no diagnostic of severity error (warnings and notes are other laws' "
              "business), no exception from the compiler")
 
-_ATTEMPT = re.compile(r"\.(attempt|check)\d+\.aidl$|/(tries|drafts|probes)/")
-_EXPECT = re.compile(r"#\s*expect:\s*(ok|[EW]\d{4})")
-# test fixtures written to fail, by how their tests use them (see `applies`)
-_MEANT_TO_FAIL: dict[str, str] = {}
-
 
 def applies(entry: Entry) -> bool:
-    """False for the programs kept because they did not compile (a model's attempts) and
-    the fixtures a test expects an error of."""
-    if entry.kind in ("model_runs", "maker_runs"):
-        return not _ATTEMPT.search(entry.name)
-    if entry.kind == "tests":
-        if entry.name in _MEANT_TO_FAIL:
-            return False
-        first = entry.source.split("\n", 1)[0]
-        m = _EXPECT.match(first)
-        return m is None or m.group(1) == "ok" or m.group(1).startswith("W")
-    return True
+    """False for the programs the project keeps because they give an error
+    (:func:`benchmarks.laws.corpus.meant_to_fail`)."""
+    return not meant_to_fail(entry)
 
 
 def check(entry: Entry) -> list[str]:
