@@ -122,8 +122,19 @@ class FakeLaw:
                         "generated")
 
 
+class Holds:
+    NAME = "a law that always holds"
+
+    @staticmethod
+    def check(entry):
+        return []
+
+
 def _judge(rep):
-    (r,) = rep.laws
+    r, h = rep.laws
+    # the second law runs on every program, after the first timed out or killed its worker
+    assert h.counts["held"] == sum(rep.corpus.values())
+    assert h.checked == h.counts["held"] and not h.failed and not h.timed_out
     return r, {n: (s, line) for n, s, line in r.failed}
 
 
@@ -132,8 +143,8 @@ def test_the_runner_counts_and_names_each_way_a_check_ends(jobs):
     entries = _entries()
     if jobs:
         entries.insert(3, Entry("fake/die", "", "/nonexistent/main.aidl", {}, "tests"))
-    rep = run.run([run.Law.of(FakeLaw, "fake")], entries, jobs=jobs, timeout=0.3,
-                  generated=2)
+    rep = run.run([run.Law.of(FakeLaw, "fake"), run.Law.of(Holds, "holds")], entries,
+                  jobs=jobs, timeout=0.3, generated=2)
     r, failed = _judge(rep)
     assert r.counts["held"] == 3                      # good + the two generated
     assert r.counts["not applicable"] == 2            # skip (applies) + refuse (raised)
@@ -154,6 +165,7 @@ def test_the_runner_counts_and_names_each_way_a_check_ends(jobs):
     assert "timed out (skipped) fake/slow: more than 0.3 s of CPU" in text
     assert f"corpus: {len(entries)} programs (tests {len(entries)}) + 2 generated" in text
     j = rep.to_json()
+    assert j["laws"][1]["held"] == len(entries)
     assert j["laws"][0]["held"] == 3 and j["laws"][0]["by_kind"]["generated"]["held"] == 2
     assert [f["program"] for f in j["laws"][0]["failed"]] == list(failed)
 

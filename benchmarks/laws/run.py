@@ -149,23 +149,32 @@ def _main_thread() -> bool:
 
 # ------------------------------------------------------------------------ workers
 def _worker(conn, laws: list[Law], timeout: float | None) -> None:
-    """Answer ``(index, entry, [law index, ...])`` with ``(index, [(law index, result),
-    ...])`` until ``None``."""
+    """Answer each task ``(index, entry, [law index, ...])`` with one message ``(index, law
+    index, result)`` per check, until ``None``.  After a check that timed out, exit: the
+    interrupted compile may still run on a thread of its own (``pipeline.run_deep``) and its
+    CPU time would count against the next checks; the pool starts a new worker for the
+    rest."""
     while True:
         task = conn.recv()
         if task is None:
             return
         i, entry, which = task
-        conn.send((i, [(j, check_one(laws[j], entry, timeout)) for j in which]))
+        for j in which:
+            r = check_one(laws[j], entry, timeout)
+            conn.send((i, j, r))
+            if r["status"] == "timed out":
+                return
 
 
-def _all_as(which: list[int], status: str, line: str) -> list:
-    return [(j, {"status": status, "line": line, "violations": [], "cpu": 0.0}) for j in which]
+def _result(status: str, line: str) -> dict:
+    return {"status": status, "line": line, "violations": [], "cpu": 0.0}
 
 
 class _Pool:
-    """``jobs`` forked workers fed one task at a time; a worker past the wall backstop is
-    killed and its task's unanswered checks reported timed out."""
+    """``jobs`` forked workers fed one program at a time.  A worker that dies (its pipe
+    closes) is a crash of the law it was checking; one past the wall backstop is killed and
+    that check reported timed out; either way, and after a timed-out check, a new worker
+    takes the program's remaining laws."""
 
     def __init__(self, jobs: int, laws: list[Law], timeout: float | None):
         self.ctx = mp.get_context("fork")
@@ -178,7 +187,7 @@ class _Pool:
         p = self.ctx.Process(target=_worker, args=(child, self.laws, self.timeout), daemon=True)
         p.start()
         child.close()
-        return {"proc": p, "conn": parent, "task": None, "since": 0.0}
+        return {"proc": p, "conn": parent, "task": None, "left": [], "since": 0.0}
 
     def _stop(self, s) -> None:
         if s["proc"].is_alive():
@@ -186,49 +195,67 @@ class _Pool:
         s["proc"].join()
         s["conn"].close()
 
-    def run(self, tasks: list[tuple[int, Entry, list[int]]]):
-        """Yield ``(index, [(law index, result), ...])`` as tasks finish."""
-        todo = list(reversed(tasks))
-        busy = 0
+    def _give(self, n: int, t) -> None:
+        s = self.slots[n]
         try:
-            while todo or busy:
+            s["conn"].send(t)
+        except (BrokenPipeError, OSError):
+            self._stop(s)
+            s = self.slots[n] = self._start()
+            s["conn"].send(t)
+        s["task"], s["left"], s["since"] = t, list(t[2]), time.monotonic()
+
+    def _answers(self, n: int, ready) -> tuple[list, bool]:
+        """The checks slot ``n`` finished (``[(index, law index, result)]``) and whether its
+        worker must be replaced."""
+        s = self.slots[n]
+        i = s["task"][0]
+        out = []
+        if s["conn"] in ready:
+            try:
+                while True:
+                    i2, j, r = s["conn"].recv()
+                    out.append((i2, j, r))
+                    s["left"].remove(j)
+                    s["since"] = time.monotonic()
+                    if r["status"] == "timed out":
+                        return out, True
+                    if not s["left"] or not s["conn"].poll():
+                        return out, False
+            except (EOFError, OSError):
+                s["proc"].join(timeout=5)
+                j = s["left"].pop(0)
+                return out + [(i, j, _result("crashed", "the worker process died (exit "
+                                                        f"code {s['proc'].exitcode})"))], True
+        if self.backstop and time.monotonic() - s["since"] > self.backstop:
+            j = s["left"].pop(0)
+            return [(i, j, _result("timed out", f"no answer within {self.backstop:g} s of "
+                                                "wall time"))], True
+        return out, False
+
+    def run(self, tasks: list[tuple[int, Entry, list[int]]]):
+        """Yield ``(index, law index, result)`` as checks finish."""
+        todo = list(reversed(tasks))
+        try:
+            while todo or any(s["task"] is not None for s in self.slots):
                 for n, s in enumerate(self.slots):
                     if s["task"] is None and todo:
-                        t = todo.pop()
-                        try:
-                            s["conn"].send(t)
-                        except (BrokenPipeError, OSError):
-                            self._stop(s)
-                            s = self.slots[n] = self._start()
-                            s["conn"].send(t)
-                        s["task"], s["since"] = t, time.monotonic()
-                        busy += 1
+                        self._give(n, todo.pop())
                 ready = wait_ready([s["conn"] for s in self.slots if s["task"] is not None],
                                    timeout=5.0)
                 for n, s in enumerate(self.slots):
                     if s["task"] is None:
                         continue
-                    t = s["task"]
-                    answer, restart = None, False
-                    if s["conn"] in ready:
-                        try:
-                            answer = s["conn"].recv()
-                        except (EOFError, OSError):
-                            s["proc"].join(timeout=5)
-                            answer, restart = (t[0], _all_as(t[2], "crashed", (
-                                "the worker process died (exit code "
-                                f"{s['proc'].exitcode})"))), True
-                    elif self.backstop and time.monotonic() - s["since"] > self.backstop:
-                        answer, restart = (t[0], _all_as(t[2], "timed out", (
-                            f"no answer within {self.backstop:g} s of wall time"))), True
-                    if answer is None:
-                        continue
-                    s["task"] = None
-                    busy -= 1
-                    if restart:
+                    out, replace = self._answers(n, ready)
+                    yield from out
+                    if replace:
+                        t, left = s["task"], s["left"]
                         self._stop(s)
                         self.slots[n] = self._start()
-                    yield answer
+                        if left:
+                            todo.append((t[0], t[1], left))
+                    elif not s["left"]:
+                        s["task"] = None
         finally:
             for s in self.slots:
                 try:
@@ -362,10 +389,13 @@ def run(laws: list, entries: Iterable[Entry], jobs: int = 2,
                 progress(done, len(tasks))
     else:
         pool = _Pool(min(jobs, max(1, len(tasks))), laws, timeout)
-        for done, (i, out) in enumerate(pool.run(tasks), 1):
-            results[i] = out
-            if progress:
-                progress(done, len(tasks))
+        finished = 0
+        for i, j, r in pool.run(tasks):
+            results.setdefault(i, []).append((j, r))
+            if len(results[i]) == len(tasks[i][2]):
+                finished += 1
+                if progress:
+                    progress(finished, len(tasks))
     cpu = 0.0
     for i, e, which in tasks:                      # corpus order, then each law's generated
         for j, r in results.get(i, []):
