@@ -181,13 +181,13 @@ def _checked(source: str, path: str):
     return program, sink.has_errors
 
 
-def settled(entry: Entry, moved: str) -> Entry:
+def settled(entry: Entry, moved: str | None = None) -> Entry:
     """``entry`` (a gallery slider end of param ``moved``) with the other params whose ranges
     follow ``moved`` moved back into them, as the studio's form does ("Forms that cannot
     fail", docs/studio.md: :func:`aidl_lang.studio.compiler.settle` and ``into_range``, at
     most ``MAX_CLAMPS`` times), judged by interpreting the program (its params and ranges;
     no solve); ``moved`` itself stays.  The entry as it was when nothing needs moving or
-    nothing helps."""
+    nothing helps.  ``moved=None``: any value may move."""
     from aidl_lang.base.diagnostics import DiagnosticSink
     from aidl_lang.interp import Interpreter
     from aidl_lang.pipeline import run_deep
@@ -319,6 +319,36 @@ def _tests() -> Iterator[Entry]:
 _SOURCES = {"examples": _examples, "gallery": _gallery, "stdlib": _stdlib, "docs": _docs,
             "model_runs": lambda: _data("model_runs"),
             "maker_runs": lambda: _data("maker_runs"), "tests": _tests}
+
+
+def gallery_combinations(n: int, seed: int = 109) -> Iterator[Entry]:
+    """``n`` programs of kind ``generated``: the gallery's designs in turn, each with every
+    numeric slider at a step of its range and every bool drawn by ``random.Random(seed)``
+    (the same programs every run), settled as the studio's form settles them
+    (:func:`settled`, any value may move), named
+    ``generated/gallery/007:generator/washer``."""
+    import random
+    from aidl_lang.studio import gallery
+    rng = random.Random(seed)
+    designs = [e for e in gallery.entries() if any(
+        p["kind"] in NUMERIC or p["kind"] == "bool" for p in e.params)]
+    for i in range(n):
+        e = designs[i % len(designs)]
+        values = {}
+        for p in e.params:
+            if p["kind"] == "bool" and isinstance(p["default"], bool):
+                values[p["name"]] = _value_text(p, rng.random() < 0.5)
+            elif p["kind"] in NUMERIC and slider_ends(p):
+                (_, lo), (_, hi) = slider_ends(p)
+                step = p.get("step") or (hi - lo) / 100 or 1
+                k = rng.randint(0, max(0, int(round((hi - lo) / step))))
+                x = min(hi, lo + k * step)
+                values[p["name"]] = _value_text(p, int(round(x)) if p["kind"] == "integer"
+                                                else round(x, 9))
+        origin = e.origin
+        path = (ROOT / "stdlib" / origin[4:]) if origin.startswith("std/") else ROOT / origin
+        yield settled(Entry(f"generated/gallery/{i:03d}:{e.id}", e.source, str(path), values,
+                            "generated"))
 
 
 def _key(e: Entry) -> tuple:

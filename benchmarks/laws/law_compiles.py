@@ -10,7 +10,7 @@ files whose first line expects an error, docs blocks marked ``<!-- expect: E....
 """
 from __future__ import annotations
 
-from .corpus import Entry, compiled, meant_to_fail
+from .corpus import Entry, compiled, gallery_combinations, meant_to_fail
 
 NAME = "every program in the corpus that the project ships compiles without error"
 TOLERANCE = ("none: no diagnostic of severity error (warnings and notes are other laws' "
@@ -21,6 +21,14 @@ def applies(entry: Entry) -> bool:
     """False for the programs the project keeps because they give an error
     (:func:`benchmarks.laws.corpus.meant_to_fail`)."""
     return not meant_to_fail(entry)
+
+
+def generated(n: int):
+    """``n`` of the gallery's designs with all their sliders at seeded random steps, settled
+    as the studio's form settles them (:func:`benchmarks.laws.corpus.gallery_combinations`):
+    what a visitor can reach, which compiles too (docs/studio.md, "Forms that cannot
+    fail")."""
+    return gallery_combinations(n)
 
 
 def check(entry: Entry) -> list[str]:
