@@ -172,7 +172,7 @@ def test_the_runner_counts_and_names_each_way_a_check_ends(jobs):
 
 def test_law_compiles_from_the_command_line_on_a_sample(tmp_path, capsys):
     out = tmp_path / "report.json"
-    code = run.main(["--law", "compiles", "--sample", "7", "--jobs", "0", "--quiet",
+    code = run.main(["--law", "compiles", "--sample", "7", "--generated", "0", "--jobs", "0", "--quiet",
                      "--json", str(out)])
     text = capsys.readouterr().out
     rep = json.loads(out.read_text())
@@ -204,3 +204,14 @@ def test_law_compiles_names_the_error_and_skips_what_is_meant_to_fail():
     assert law_compiles.applies(bad)
     (line,) = law_compiles.check(bad)
     assert line.startswith("E0") and " 2:" in line and "`w`" in line
+
+
+def test_law_compiles_generates_the_same_gallery_combinations_each_run():
+    a = list(law_compiles.generated(3))
+    assert [e.name for e in a] == [e.name for e in law_compiles.generated(3)] == [
+        "generated/gallery/000:example/bottle_opener", "generated/gallery/001:example/bracket",
+        "generated/gallery/002:example/coat_hanger"]
+    assert [e.overrides for e in a] == [e.overrides for e in law_compiles.generated(3)]
+    assert {e.kind for e in a} == {"generated"}
+    assert set(a[1].overrides) == {"bolts", "pitch", "fillet"}
+    assert law_compiles.check(a[1]) == []
