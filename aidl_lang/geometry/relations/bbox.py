@@ -249,20 +249,8 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
         first = next(s for s in g.data["sources"] if s.closed)
         _geom_candidates(first, frame, x, xs, ys, offs)
         return
-    if k in ("Offset", "Shell", "Hull", "Stroke"):
-        # the sources' boxes (they are construction geometry, left out of the structure's
-        # box): a hull's box is theirs; an outward offset's (round joins) theirs grown by the
-        # distance, exactly; an inset's is taken as its shape's (a little larger than it)
-        sx: list = []
-        sy: list = []
-        for src in g.data["sources"]:
-            _geom_candidates(src, frame, x, sx, sy, offs)
-        d = g.data.get("distance", g.data.get("thickness", g.data.get("width", 0.0) / 2))
-        if k != "Hull" and d > 0:
-            sx = [c - d for c in sx] + [c + d for c in sx]
-            sy = [c - d for c in sy] + [c + d for c in sy]
-        xs += sx
-        ys += sy
+    if k in DERIVED_KINDS:
+        _derived_candidates(g, frame, x, xs, ys, offs)
         return
     if k == "Ellipse":
         cx, cy = P["center"]
@@ -326,6 +314,102 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
 
 
 _ARCS = ("ArcSlot", "Sector", "Arc", "EllipticArc")
+DERIVED_KINDS = ("Offset", "Shell", "Hull", "Stroke", "Intersect")
+
+# (shape, parameter values) -> (left, right, bottom, top) of the exact outline the booleans
+# draw for the shape, in the root frame (None: it draws nothing there).  Set by
+# aidl_lang.output.part.build.booleans (the booleans sit above geometry: the function is
+# handed down, not imported); None until the output stage is imported.
+DRAWN_BOX = None
+_DRAWN: dict = {}           # (id(shape), values read) -> (shape, box): boxes already made
+
+
+def box_follows_sources(g: Geometry) -> bool:
+    """Whether the box of derived shape ``g`` is its sources' boxes, grown by a distance,
+    exactly: a ``Hull`` (its sources' boxes), an outward ``Offset`` or ``Shell`` with round
+    joins (the Minkowski sum with a disc: the box grown by the distance), an inward
+    ``Shell`` (its outer side is the source's outline), a ``Stroke`` with round caps (the
+    path's box grown by half the width).  Every other one (an ``Inset``, a miter join, flat
+    caps, an ``Intersect``) is boxed from its drawn outline (:func:`_derived_candidates`)."""
+    k = g.kind
+    if k == "Hull":
+        return True
+    if k == "Stroke":
+        return g.data.get("cap", "round") == "round"
+    if k == "Shell":
+        return g.data["thickness"] < 0 or g.data.get("join", "round") == "round"
+    if k == "Offset":
+        return g.data["distance"] >= 0 and g.data.get("join", "round") == "round"
+    return False
+
+
+def _derived_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> None:
+    """The extreme coordinates of a shape made from other shapes (:data:`DERIVED_KINDS`),
+    each an expression of its sources' points, exactly its drawn outline's at the values
+    ``x``.  Where the box follows the sources' (:func:`box_follows_sources`) it is their
+    candidates grown by the distance (exact wherever the sources move).  Otherwise each side
+    is the source candidate extreme on that side at ``x`` plus the constant that puts it on
+    the drawn outline's side (:data:`DRAWN_BOX`): exact at ``x`` (an ``assert``, the values
+    reported are read at the solution) and following the source's extreme point as the
+    solve moves it, as a spline's extremes do (:func:`_spline_candidates`)."""
+    srcs = g.data["sources"]
+    if g.kind == "Intersect":           # inside every closed one: the first one's points
+        srcs = [next(s for s in srcs if s.closed)] if g.closed else srcs
+    sx: list = []
+    sy: list = []
+    for src in srcs:
+        _geom_candidates(src, frame, x, sx, sy, offs)
+    if box_follows_sources(g):
+        d = g.data.get("distance", g.data.get("thickness", g.data.get("width", 0.0) / 2))
+        if g.kind != "Hull" and d > 0:
+            sx = [c - d for c in sx] + [c + d for c in sx]
+            sy = [c - d for c in sy] + [c + d for c in sy]
+        xs += sx
+        ys += sy
+        return
+    box = drawn_box(g, x)
+    if box is None or not sx or not sy:
+        xs += sx                        # nothing drawn (E0406 says so): the sources' box
+        ys += sy
+        return
+    rx: list = []
+    ry: list = []
+    for src in srcs:
+        _geom_candidates(src, None, x, rx, ry, offs)
+    for cands, root, (lo, hi) in ((sx, rx, box[:2]), (sy, ry, box[2:])):
+        vals = [float(evaluate(c, x)) for c in root]
+        i = min(range(len(vals)), key=vals.__getitem__)
+        j = max(range(len(vals)), key=vals.__getitem__)
+        out = xs if cands is sx else ys
+        out += [cands[i] + (lo - vals[i]), cands[j] + (hi - vals[j])]
+
+
+def drawn_box(g: Geometry, x) -> tuple[float, float, float, float] | None:
+    """(left, right, bottom, top) in mm, root frame, of the outline drawn for ``g`` at the
+    values ``x`` (:data:`DRAWN_BOX`), kept while the values it reads are the same."""
+    if DRAWN_BOX is None:
+        return None
+    idx: list = []
+    todo = [g]
+    while todo:
+        h = todo.pop()
+        for p in h.points.values():
+            idx += (p.ix, p.iy)
+        idx += [sc.index for sc in h.scalars.values()]
+        s = h.owner
+        while s is not None:
+            idx += (s.fx, s.fy)
+            s = s.parent
+        todo += h.data.get("sources", ())
+    key = (id(g), tuple(float(x[i]) for i in idx))
+    hit = _DRAWN.get(key)
+    if hit is not None and hit[0] is g:
+        return hit[1]
+    box = DRAWN_BOX(g, x)
+    if len(_DRAWN) > 512:
+        _DRAWN.clear()
+    _DRAWN[key] = (g, box)
+    return box
 
 
 def _arc_candidates(g: Geometry, P: dict, x, xs: list, ys: list) -> None:
