@@ -21,6 +21,7 @@ import numpy as np
 
 from ..base.records import Compared
 from ..geometry.core.model import Constraint, Model
+from ..geometry.relations.bbox import drawn_box_misses
 from .core.hierarchy import CHECK_TOL, ITER_BUDGET, Solver
 from .core.holds import build_rows
 from .core.system import LINK, SIGN, user_residuals
@@ -87,7 +88,23 @@ def solve(model: Model, flat: bool = False, diagnose: bool = True,
     passed (``SolveResult.out_of_time``)."""
     solver = Solver(model)
     solver.deadline = deadline
-    return run(solver, flat=flat, diagnose=diagnose)
+    res = run(solver, flat=flat, diagnose=diagnose)
+    # a relation on a box read from a drawn outline (an Inset, an Intersect...: its side is
+    # its source's extreme point plus a constant taken at the start) that the solution no
+    # longer meets: solved again from the solution, the box taken there (issue 109)
+    steps = res.iterations
+    for _ in range(RESOLVES):
+        if not res.converged or res.out_of_time or not drawn_box_misses(model):
+            break
+        again = Solver(model)
+        again.deadline = deadline
+        res = run(again, flat=flat, diagnose=diagnose)
+        steps += res.iterations
+        res.iterations = steps
+    return res
+
+
+RESOLVES = 4        # solves again at most, for relations on drawn boxes (solve)
 
 
 def run(solver: Solver, flat: bool = False, diagnose: bool = True) -> SolveResult:

@@ -244,11 +244,6 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
     if k in _ARCS:
         _arc_candidates(g, P, x, xs, ys)
         return
-    if k == "Intersect":
-        # inside its first closed shape: that shape's box (larger than the common area's)
-        first = next(s for s in g.data["sources"] if s.closed)
-        _geom_candidates(first, frame, x, xs, ys, offs)
-        return
     if k in DERIVED_KINDS:
         _derived_candidates(g, frame, x, xs, ys, offs)
         return
@@ -300,6 +295,9 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
                 ys.append(fy + rt * math.sin(e))
             _quadrants(fx, fy, rt, ang - half, 2 * half, xs, ys)
         return
+    if k == "RoundedRectangle" and _turned_rounded(g, x):
+        _rounded_candidates(g, P, xs, ys)
+        return
     if k == "Text":
         px, py = P["position"]
         x0, x1, y0, y1 = g.data.get("extent", (0.0, 0.0, 0.0, 0.0))
@@ -311,6 +309,47 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
             continue
         xs.append(px)
         ys.append(py)
+
+
+def _radii(g: Geometry) -> list:
+    """A rounded rectangle's corner radii in :func:`.members.points_of`'s order (mm)."""
+    rr = g.data.get("corner_radii")
+    return [float(r) for r in rr] if rr else [float(g.data.get("corner_radius", 0.0))] * 4
+
+
+def _turned_rounded(g: Geometry, x) -> bool:
+    """Whether rounded rectangle ``g`` has a rounded corner and sides not along the axes at
+    the values ``x`` (a copy turned by a pattern or a mirror): its sharp corners are then
+    outside its drawn outline, and its box is its corner arcs'."""
+    from .members import points_of
+    if not any(r > 0 for r in _radii(g)):
+        return False
+    a, b = points_of(g)[:2]
+    dx, dy = float(x[b.ix] - x[a.ix]), float(x[b.iy] - x[a.iy])
+    return abs(dx) > 1e-12 * abs(dy) and abs(dy) > 1e-12 * abs(dx)
+
+
+def _rounded_candidates(g: Geometry, P: dict, xs: list, ys: list) -> None:
+    """The extremes of a turned rounded rectangle: each rounded corner's arc center (the
+    corner moved ``r`` along both of its sides, an expression of the corners) grown by
+    ``r`` (the outline is the convex hull of its corner discs); a sharp corner itself."""
+    from ..core.expr import hypot
+    from .members import points_of
+    names = [n for n, p in g.points.items() for q in points_of(g) if p is q]
+    C = [P[n] for n in names]
+    for k, r in enumerate(_radii(g)):
+        px, py = C[k]
+        if r <= 0:
+            xs.append(px)
+            ys.append(py)
+            continue
+        cx, cy = px, py
+        for qx, qy in (C[k - 1], C[(k + 1) % 4]):
+            L = hypot(qx - px, qy - py)
+            cx = cx + (qx - px) * r / L
+            cy = cy + (qy - py) * r / L
+        xs += [cx - r, cx + r]
+        ys += [cy - r, cy + r]
 
 
 _ARCS = ("ArcSlot", "Sector", "Arc", "EllipticArc")
@@ -382,6 +421,58 @@ def _derived_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -
         j = max(range(len(vals)), key=vals.__getitem__)
         out = xs if cands is sx else ys
         out += [cands[i] + (lo - vals[i]), cands[j] + (hi - vals[j])]
+
+
+def boxed_by_drawing(g: Geometry) -> bool:
+    """Whether shape ``g``'s box is read from its drawn outline (:func:`_derived_candidates`),
+    itself or through a shape it is made from (a Hull of an Intersect)."""
+    todo = [g]
+    while todo:
+        h = todo.pop()
+        if h.kind in DERIVED_KINDS:
+            if not box_follows_sources(h):
+                return True
+            todo += h.data["sources"]
+    return False
+
+
+def drawn_box_misses(model, x=None) -> list:
+    """``(constraint, how far it misses)`` for each relation of ``model`` on a box read from
+    a drawn outline (:func:`boxed_by_drawing`) that the values ``x`` (default: the model's)
+    do not meet within 1e-9 mm: the solve took that box as its source's extreme point plus a
+    constant, and moved the sources so that the drawn outline changed (an ``Intersect`` of
+    shapes the solve moved apart, an ``Inset`` of a shape it stretched).  The solver solves
+    again from there (:func:`aidl_lang.solver.solve`); what is left is W0405."""
+    if not any(boxed_by_drawing(g) for g in model.all_geometry()):
+        return []
+    x = model.xs() if x is None else x
+    memo: dict = {}
+
+    def reads(t) -> bool:
+        k = id(t)
+        if k not in memo:
+            if isinstance(t, Structure):
+                memo[k] = any(boxed_by_drawing(g) for s in _subtree(t, set(), t)
+                              for g in s.geometry if not g.construction)
+            else:
+                memo[k] = boxed_by_drawing(t)
+        return memo[k]
+
+    out = []
+    for c in model.constraints:
+        if not c.deferred or getattr(c, "released", False):
+            continue
+        terms = [t for eq in c.deferred for t in collect(eq.expr, [])]
+        if not any(reads(t.target) for t in terms):
+            continue
+        excl = exclusions(terms)
+        worst = 0.0
+        for eq in c.deferred:
+            v = float(evaluate(expand(eq.expr, x, excl), x))
+            worst = max(worst, -v if eq.ineq else abs(v))
+        if not worst <= 1e-9:
+            out.append((c, worst))
+    return out
 
 
 def drawn_box(g: Geometry, x) -> tuple[float, float, float, float] | None:

@@ -9,6 +9,8 @@ on it follows the solved shape.  The members each kind lists are the registry's
 """
 from __future__ import annotations
 
+import math
+
 from ..core.expr import Lin, _new, func, hypot, var
 from ..core.model import Geometry
 from ..core.values import ANG, LEN, PV, GeomRef, Q
@@ -102,11 +104,12 @@ def member(g: Geometry, name: str, frame):
             # point on the arc halfway between start and end (counter-clockwise)
             cc, ss, ee = (_pv(g.points[n], frame) for n in ("center", "start", "end"))
             a1 = func("atan2", ss.y - cc.y, ss.x - cc.x)
-            # counter-clockwise sweep in (0, 2pi]: the half-angle of start->end, flipped when
-            # the cross product says the short way round is clockwise
-            sweep = func("atan2", (ss.x - cc.x) * (ee.y - cc.y) - (ss.y - cc.y) * (ee.x - cc.x),
-                         (ss.x - cc.x) * (ee.x - cc.x) + (ss.y - cc.y) * (ee.y - cc.y))
-            mid = a1 + sweep * 0.5
+            # the counter-clockwise sweep from start to end, in (0, 2pi] as the drawn arc's
+            # (outlines._arc_through): pi + atan2(-cross, -dot) (atan2(cross, dot) is the
+            # short way round, clockwise for an arc of more than a half turn: issue 109)
+            cross = (ss.x - cc.x) * (ee.y - cc.y) - (ss.y - cc.y) * (ee.x - cc.x)
+            dot = (ss.x - cc.x) * (ee.x - cc.x) + (ss.y - cc.y) * (ee.y - cc.y)
+            mid = a1 + func("atan2", cross * -1.0, dot * -1.0) * 0.5 + math.pi / 2
             return PV(cc.x + r * func("cos", mid), cc.y + r * func("sin", mid), None, own)
     if k in ("Rectangle", "RoundedRectangle"):
         if name == "center":
