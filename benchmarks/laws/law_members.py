@@ -193,8 +193,39 @@ def shape_violations(name: str, g, segs: list, x) -> list[str]:
     return out
 
 
-def _unmatched(got: list, want: list) -> str:
+class _OnOutline:
+    """The measure of a polygon's points: each on the drawn outline, each drawn corner one
+    of them."""
+
+    def __init__(self, segs: list):
+        self.segs = segs
+
+
+def _on_outline(got: list, want: _OnOutline) -> str:
+    corners = [sg.start for sg in want.segs]
+    for q in corners:
+        p = min(got, key=lambda w: math.dist(q, w))
+        if math.dist(p, q) > _tol(*p, *q):
+            return f"drawn corner {_f(q)} is none of the points (nearest {_f(p)})"
+    for p in got:
+        d = min(_seg_dist(p, sg) for sg in want.segs)
+        if d > _tol(*p):
+            return f"{_f(p)} is {d:.6f} mm off the drawn outline"
+    return ""
+
+
+def _seg_dist(p, sg) -> float:
+    (x0, y0), (x1, y1) = sg.start, sg.end
+    dx, dy = x1 - x0, y1 - y0
+    L2 = dx * dx + dy * dy
+    t = 0.0 if L2 == 0 else max(0.0, min(1.0, ((p[0] - x0) * dx + (p[1] - y0) * dy) / L2))
+    return math.dist(p, (x0 + t * dx, y0 + t * dy))
+
+
+def _unmatched(got: list, want) -> str:
     """"" when every point of ``got`` is one of ``want`` (and as many), else what differs."""
+    if isinstance(want, _OnOutline):
+        return _on_outline(got, want)
     if len(got) != len(want):
         return f"{len(got)} points vs drawn {len(want)}"
     for p in got:
@@ -291,7 +322,21 @@ class Measure:
             return self._mean(v)
         return None
 
-    _Polygon = _Triangle = _Trapezoid = _polygon
+    _Trapezoid = _polygon
+
+    def _Polygon(self, m):
+        # a Polygon's points are its points as written: a point on an edge, or twice, is no
+        # drawn corner; each must lie on the outline, each drawn corner be one of them
+        # (its `center`, their mean, is by definition: law_members.md)
+        if m in ("points", "vertices", "corners"):
+            return _OnOutline(self.segs)
+        return None
+
+    def _Triangle(self, m):
+        if m == "center" and "center" in self.g.points:     # by base and height: its box's
+            b = self.box
+            return ((b[0] + b[1]) / 2, (b[2] + b[3]) / 2)
+        return self._polygon(m)
 
     def _RegularPolygon(self, m):
         v = self._corners()

@@ -298,6 +298,19 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
     if k == "RoundedRectangle" and _turned_rounded(g, x):
         _rounded_candidates(g, P, xs, ys)
         return
+    if k == "Text" and g.data.get("stencil") and g.data.get("along") is None:
+        # the letters' openings: strokes swept by the weight, less the bridges (the top of
+        # an O is bridged): the drawn outline's box, moving with the position point
+        box = drawn_box(g, x)
+        if box is not None:
+            p = g.points["position"]
+            ox, oy = g.owner.frame_offset(None)
+            px0 = float(x[p.ix]) + float(evaluate(ox, x))
+            py0 = float(x[p.iy]) + float(evaluate(oy, x))
+            px, py = P["position"]
+            xs += [px + (box[0] - px0), px + (box[1] - px0)]
+            ys += [py + (box[2] - py0), py + (box[3] - py0)]
+            return
     if k == "Text":
         px, py = P["position"]
         x0, x1, y0, y1 = g.data.get("extent", (0.0, 0.0, 0.0, 0.0))
