@@ -160,9 +160,14 @@ def shape_violations(name: str, g, segs: list, x) -> list[str]:
         v = float(evaluate(side_expr(g, side, None, x, set()), x))
         if not abs(v - box[i]) <= _tol(v, box[i]):
             out.append(f"{name}.bb.{side}: {_f(v)} vs drawn {_f(box[i])}")
+    from aidl_lang.geometry.relations.bbox import contains_bbox, expand
+
+    def ev(e) -> float:             # a member made of box sides (a stencil's center) too
+        return float(evaluate(expand(e, x, set()) if contains_bbox(e) else e, x))
+
     def point(m):
         pv = member(g, m, None)
-        return (float(evaluate(pv.x, x)), float(evaluate(pv.y, x)))
+        return (ev(pv.x), ev(pv.y))
 
     meas = Measure(g, segs, box, point)
     for m in member_names(g):
@@ -176,17 +181,17 @@ def shape_violations(name: str, g, segs: list, x) -> list[str]:
         if want is None or val is None:
             continue
         if isinstance(val, PV):
-            got = (float(evaluate(val.x, x)), float(evaluate(val.y, x)))
+            got = (ev(val.x), ev(val.y))
             if math.dist(got, want) > _tol(*got, *want):
                 out.append(f"{name}.{m}: {_f(got)} vs drawn {_f(want)}")
         elif isinstance(val, Q):
-            got = float(evaluate(val.expr, x))
+            got = ev(val.expr)
             tol = 1e-9 if m == "angle" else _tol(got, want)
             diff = math.remainder(got - want, 2 * math.pi) if m == "angle" else got - want
             if not abs(diff) <= tol:
                 out.append(f"{name}.{m}: {_f(got)} vs drawn {_f(want)}")
         elif isinstance(val, list) and val and all(isinstance(p, PV) for p in val):
-            got = [(float(evaluate(p.x, x)), float(evaluate(p.y, x))) for p in val]
+            got = [(ev(p.x), ev(p.y)) for p in val]
             bad = _unmatched(got, want)
             if bad:
                 out.append(f"{name}.{m}: {bad}")
@@ -333,7 +338,12 @@ class Measure:
         return None
 
     def _Triangle(self, m):
-        if m == "center" and "center" in self.g.points:     # by base and height: its box's
+        if m == "center" and "center" in self.g.points:
+            # by base and height: the middle of its height, turned with it; the box's center
+            # at multiples of 90 degrees (law_members.md, "Exceptions")
+            q = self.g.data.get("rotation", 0.0) / (math.pi / 2)
+            if abs(q - round(q)) > 1e-12:
+                return None
             b = self.box
             return ((b[0] + b[1]) / 2, (b[2] + b[3]) / 2)
         return self._polygon(m)
@@ -421,7 +431,19 @@ TAILS = {
     "pattern": "    copies = CircularPattern(shape, count=3, center=(0, 0), angle=360 deg)\n",
     "mirror": "    twin = Mirrored(shape, line=Line(start=(0, -50), end=(10, 50)))\n",
     "align": "    AlignLeft(shape, frame_box)\n    AlignTop(shape, frame_box)\n",
+    "scaled": "    big = Scaled(shape, 1.5, center=(5, -3))\n",
+    "row": "    row = LinearPattern(shape, 3, (70, 5))\n",
 }
+# Text: plain, turned, anchored, stencilled (in a hole), along a circle, and its box related
+TEXTS = [
+    'Text("AIDL 109", position=(3, -4), size=7)',
+    'Text("Wg!", position=(0, 0), size=12, anchor="start", valign="top", rotation=25 deg)',
+    'Text("members", position=(-5, 2), size=6, anchor="end", valign="bottom")',
+    'Text("OBA", position=(0, 0), size=20, valign="middle", stencil=true)',
+    'Text("around", along=Circle(center=(0, 0), radius=30, construction=true), size=5)',
+    'Text("under", along=Circle(center=(4, 1), radius=25, construction=true), size=4, '
+    'flip=true)',
+]
 
 
 def generated_source(base: str, ops: list[str], tail: str, v: dict) -> str:
@@ -441,9 +463,10 @@ def generated_cases(n: int | None = None) -> list[tuple[str, str]]:
     three, under a pattern, a mirror or relations on the box (``(name, source)``, the same
     on every machine: the sizes cycle through fixed lists)."""
     out = []
-    sizes = [dict(x=0, y=0, a=12, b=7, n=5, t=0, d=2, e=1.5),
-             dict(x=3.5, y=-2, a=15, b=9, n=8, t=17, d=1.25, e=2),
-             dict(x=-7, y=4, a=10, b=6, n=6, t=33, d=3, e=1)]
+    # a Shell's wall (d) more than twice the inset (e) that may follow it: something left
+    sizes = [dict(x=0, y=0, a=12, b=7, n=5, t=0, d=3, e=1.25),
+             dict(x=3.5, y=-2, a=15, b=9, n=8, t=17, d=2.5, e=1),
+             dict(x=-7, y=4, a=10, b=6, n=6, t=33, d=4, e=1.5)]
     bases = sorted(BASES)
     ops = sorted(OPS)
     tails = sorted(TAILS)
@@ -460,6 +483,15 @@ def generated_cases(n: int | None = None) -> list[tuple[str, str]]:
             k += 1
             out.append((f"generated/members/{base}+{'+'.join(ch)}@{tail}",
                         generated_source(base, ch, tail, v)))
+    for i, t in enumerate(TEXTS):
+        for tail in ("none", "pattern", "mirror", "scaled"):
+            kind = "hole" if "stencil" in t else "drawing"
+            body = ("    plate = Rectangle(center=(0, 0), width=200, height=120)\n"
+                    if kind == "hole" else "")
+            copies = TAILS[tail].replace("(shape,", "(label,")
+            out.append((f"generated/members/text{i}@{tail}",
+                        f"units mm\nsolid part {{\n{body}    {kind} label {{\n"
+                        f"        t = {t}\n    }}\n{copies}    w = label.t.bb.width\n}}\n"))
     return out[:n] if n is not None else out
 
 

@@ -324,8 +324,11 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
         ys.append(py)
 
 
+RECT_CORNERS = ("bottom_left", "bottom_right", "top_right", "top_left")   # points_of's order
+
+
 def _radii(g: Geometry) -> list:
-    """A rounded rectangle's corner radii in :func:`.members.points_of`'s order (mm)."""
+    """A rounded rectangle's corner radii in :data:`RECT_CORNERS`' order (mm)."""
     rr = g.data.get("corner_radii")
     return [float(r) for r in rr] if rr else [float(g.data.get("corner_radius", 0.0))] * 4
 
@@ -334,10 +337,9 @@ def _turned_rounded(g: Geometry, x) -> bool:
     """Whether rounded rectangle ``g`` has a rounded corner and sides not along the axes at
     the values ``x`` (a copy turned by a pattern or a mirror): its sharp corners are then
     outside its drawn outline, and its box is its corner arcs'."""
-    from .members import points_of
     if not any(r > 0 for r in _radii(g)):
         return False
-    a, b = points_of(g)[:2]
+    a, b = g.points["bottom_left"], g.points["bottom_right"]
     dx, dy = float(x[b.ix] - x[a.ix]), float(x[b.iy] - x[a.iy])
     return abs(dx) > 1e-12 * abs(dy) and abs(dy) > 1e-12 * abs(dx)
 
@@ -347,9 +349,7 @@ def _rounded_candidates(g: Geometry, P: dict, xs: list, ys: list) -> None:
     corner moved ``r`` along both of its sides, an expression of the corners) grown by
     ``r`` (the outline is the convex hull of its corner discs); a sharp corner itself."""
     from ..core.expr import hypot
-    from .members import points_of
-    names = [n for n, p in g.points.items() for q in points_of(g) if p is q]
-    C = [P[n] for n in names]
+    C = [P[n] for n in RECT_CORNERS]
     for k, r in enumerate(_radii(g)):
         px, py = C[k]
         if r <= 0:

@@ -173,6 +173,11 @@ def member(g: Geometry, name: str, frame):
             return _pv(g.points["origin"], frame)
     if k == "Text" and name == "size":
         return Q.num(g.data["size"], LEN)
+    if k == "Text" and name == "center" and g.data.get("stencil"):
+        # the middle of its box: the letters' openings as drawn (bbox: bridges cut)
+        from .bbox import BBTerm
+        lo, hi, bo, to = (BBTerm(g, s, frame) for s in ("left", "right", "bottom", "top"))
+        return PV((lo + hi) * 0.5, (bo + to) * 0.5, None, own)
     if k == "Text" and name == "center":          # the middle of the strokes' box
         p = _pv(g.points["position"], frame)
         x0, x1, y0, y1 = g.data.get("extent", (0.0, 0.0, 0.0, 0.0))
