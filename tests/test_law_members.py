@@ -165,6 +165,25 @@ solid part {
     assert r.value("part.top").mm == pytest.approx(3.0, abs=1e-9)
 
 
+def test_a_hull_keeps_a_shape_beyond_an_arcs_end():
+    """Found by the law (generated ``star+intersect+hull``): the Hull of a circle cut by a
+    star's notch and a far circle drew the first circle alone (the far one dropped: the
+    tangent from the arc to its own end point, of no length, was taken as the hull's side);
+    ``bb.right`` 27 mm, the drawing 5 mm."""
+    r = _ok("""units mm
+solid part {
+    shape = Hull([Intersect([Star(center=(-7, 4), points=6, outer_radius=16, inner_radius=10,
+                                  rotation=33 deg), Circle(center=(-4, 6), radius=9)]),
+                  Circle(center=(23, -6), radius=4)])
+    w = shape.bb.width
+}
+""")
+    (part,) = r.parts
+    assert part.bbox[2] == pytest.approx(27.0, abs=1e-9)      # the far circle's right side
+    assert r.value("part.w").mm == pytest.approx(40.0, abs=1e-9)
+    assert law.violations(r) == []
+
+
 EXAMPLES = ["coat_hanger.aidl", "telephone.aidl", "mounting_plate.aidl", "gear.aidl"]
 
 
