@@ -373,7 +373,7 @@ DERIVED_KINDS = ("Offset", "Shell", "Hull", "Stroke", "Intersect")
 # aidl_lang.output.part.build.booleans (the booleans sit above geometry: the function is
 # handed down, not imported); None until the output stage is imported.
 DRAWN_BOX = None
-_DRAWN: dict = {}           # (id(shape), values read) -> (shape, box): boxes already made
+_DRAWN: dict = {}           # (what a shape is drawn from, relative) -> its box: made already
 
 
 def box_follows_sources(g: Geometry) -> bool:
@@ -490,30 +490,57 @@ def drawn_box_misses(model, x=None) -> list:
 
 def drawn_box(g: Geometry, x) -> tuple[float, float, float, float] | None:
     """(left, right, bottom, top) in mm, root frame, of the outline drawn for ``g`` at the
-    values ``x`` (:data:`DRAWN_BOX`), kept while the values it reads are the same."""
+    values ``x`` (:data:`DRAWN_BOX`).  Kept by what it is drawn from: the kinds and held data
+    of ``g`` and the shapes it is made from, their sizes and their points relative to the
+    first one, so a pattern's or a mirror's copies that are the same shape moved are drawn
+    once (20 copies of a mitred inset star: one boolean, not 20), the box moved with them."""
     if DRAWN_BOX is None:
         return None
-    idx: list = []
+    sig: list = []
+    rel: list = []
+    x0 = y0 = None
     todo = [g]
     while todo:
         h = todo.pop()
+        sig.append((h.kind, _held(h.data), tuple(h.points), tuple(h.scalars)))
         for p in h.points.values():
-            idx += (p.ix, p.iy)
-        idx += [sc.index for sc in h.scalars.values()]
-        s = h.owner
-        while s is not None:
-            idx += (s.fx, s.fy)
-            s = s.parent
+            px, py = float(x[p.ix]), float(x[p.iy])
+            s = p.owner
+            while s is not None:
+                px += float(x[s.fx])
+                py += float(x[s.fy])
+                s = s.parent
+            if x0 is None:
+                x0, y0 = px, py
+            rel += (px - x0, py - y0)
+        rel += [float(x[sc.index]) for sc in h.scalars.values()]
         todo += h.data.get("sources", ())
-    key = (id(g), tuple(float(x[i]) for i in idx))
-    hit = _DRAWN.get(key)
-    if hit is not None and hit[0] is g:
-        return hit[1]
-    box = DRAWN_BOX(g, x)
-    if len(_DRAWN) > 512:
-        _DRAWN.clear()
-    _DRAWN[key] = (g, box)
-    return box
+    if x0 is None:
+        return DRAWN_BOX(g, x)
+    key = (tuple(sig), tuple(rel))
+    box = _DRAWN.get(key, _DRAWN)
+    if box is _DRAWN:
+        box = DRAWN_BOX(g, x)
+        if box is not None:
+            box = (box[0] - x0, box[1] - x0, box[2] - y0, box[3] - y0)
+        if len(_DRAWN) > 512:
+            _DRAWN.clear()
+        _DRAWN[key] = box
+    return None if box is None else (box[0] + x0, box[1] + x0, box[2] + y0, box[3] + y0)
+
+
+def _held(v, depth: int = 0):
+    """The held data ``v`` (numbers, strings, lists and dicts of them) as a hashable value;
+    shapes and other objects by their kind only (the shapes are walked by :func:`drawn_box`)."""
+    if v is None or isinstance(v, (bool, int, float, str)):
+        return v
+    if depth > 4:
+        return type(v).__name__
+    if isinstance(v, dict):
+        return tuple(sorted((str(k), _held(w, depth + 1)) for k, w in v.items()))
+    if isinstance(v, (list, tuple)):
+        return tuple(_held(w, depth + 1) for w in v)
+    return getattr(v, "kind", type(v).__name__)
 
 
 def _arc_candidates(g: Geometry, P: dict, x, xs: list, ys: list) -> None:
