@@ -288,7 +288,8 @@ _DEFS = {
                 A("tip_radius", "length", 0.0, "> 0: each tip rounded by an arc of this radius "
                   "tangent to its two sides (the notches stay sharp)", kw_only=True)],
                doc="A rigid star: `points` tips at outer_radius, notches at inner_radius, "
-                   "first tip up (+y); tip_radius=: rounded tips.",
+                   "first tip up (+y); tip_radius=: rounded tips (outer_radius stays the "
+                   "sharp star's; `.bb` is the rounded one's size).",
                members=STAR_MEMBERS),
     "Offset": _p([A("shape", "geometry"), A("distance", "length"), A("join", "string", "round")],
                  doc="The shape grown by distance (negative: shrunk), join \"round\" or "

@@ -159,6 +159,7 @@ class Checker:
     def run(self, program: A.Program) -> None:
         file_names = set()
         memo: dict = {}                 # imported file (real path) -> its names, once each
+        self.params_once(program)
         for st in program.stmts:
             if isinstance(st, A.ParamDecl):
                 file_names.add(st.name)
@@ -204,8 +205,37 @@ class Checker:
         self.stmts(top, _Scope(fscope, set(struct_names) | {"model"}))
         self.unread_settings(program)
 
+    def params_once(self, program: A.Program) -> None:
+        """E0107 for a param declared twice, or a param whose name a top-level `name = ...`
+        also assigns (issue 110: the later declaration silently won, even for code above it,
+        `--set` checked the later range and the sweep listed the name twice).  The error is
+        at the second of the two, naming the first's line."""
+        first: dict[str, A.Node] = {}
+        for st in program.stmts:
+            if not isinstance(st, (A.ParamDecl, A.Assign)) or isinstance(st, A.KindAssign):
+                continue
+            before = first.get(st.name)
+            if before is None:
+                first[st.name] = st
+                continue
+            if not (isinstance(st, A.ParamDecl) or isinstance(before, A.ParamDecl)):
+                continue                # two constants: the later is the value, as in Python
+            line = before.span.line if before.span is not None else "?"
+            if isinstance(st, A.ParamDecl) and isinstance(before, A.ParamDecl):
+                said = f"param `{st.name}` is declared twice (first on line {line})"
+            elif isinstance(st, A.ParamDecl):
+                said = f"`{st.name}` is assigned on line {line} and declared a param here"
+            else:
+                said = f"`{st.name}` is a param (line {line}) and assigned here"
+            self.sink.error(
+                "E0107", said, st.name_span or st.span,
+                hint=f"keep one `param {st.name} = ...` with the default and range you mean "
+                     f"(its slider and `--set {st.name}=...` set it), or give the other name "
+                     "another name")
+
     def unread_settings(self, program: A.Program) -> None:
-        """W0108 for a top-level name that nothing reads and that means a setting: `thickness
+        """W0115 for a param that nothing reads; W0108 for a top-level name that nothing reads
+        and that means a setting: `thickness
         = 4 mm` or `kerf = 0.2 mm` (an ordinary constant: the parts stay 3 mm thick, the cuts
         uncompensated; the fix is the statement `thickness 4 mm`), or a name a template call
         of the program leaves at its default (`module = 2 mm` beside `spur_gear(teeth=20)`:
@@ -261,6 +291,13 @@ class Checker:
                     labels=[Label(call.span, f"`{n}` not given here", primary=False)],
                     fix=Fix(call.span, new)))
                 break
+            else:
+                if is_param:            # issue 111: declared, never used, nothing said
+                    self.sink.add(Diagnostic(
+                        "W0115", f"param `{n}` is declared but nothing reads it: its slider "
+                                 f"and `--set {n}=...` change nothing", st.name_span or st.span,
+                        "warning", hint=f"use `{n}` where the value it names is written (in place of "
+                                        "that number), or delete the line if it is not meant"))
 
     def stmts(self, stmts, scope: _Scope) -> None:
         for st in stmts:

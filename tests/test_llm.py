@@ -165,9 +165,10 @@ def test_prompt_lists_the_whole_registry_and_stays_compact():
     # between two shapes too, and Scale about its own centre (20 words): 4,674 and 4,206
     # issue 105's asserts of the request's own numbers and counts (a lip 2 mm low, a
     # CornerPattern's four holes where two were asked: slips no check could name) 34 more:
-    # 4,708 and 4,240
-    assert word_count(text) <= 4708
-    assert word_count(system_prompt(examples=False)) <= 4240
+    # 4,708 and 4,240; issue 111's param reading constants, a statement ending at the line
+    # break, a rounded star's outer_radius (30 more): 4,738 and 4,270
+    assert word_count(text) <= 4738
+    assert word_count(system_prompt(examples=False)) <= 4270
 
 
 def test_the_agents_prompt_is_shorter_and_keeps_the_vocabulary(compile_text):
@@ -200,7 +201,7 @@ def test_the_agents_prompt_is_shorter_and_keeps_the_vocabulary(compile_text):
     # own centre (issue 105), 4,326; + 34 for asserting the request's own numbers and counts
     # (issue 105: three of five defects in a model run were slips an assert would have named),
     # 4,360
-    assert word_count(text) <= 4360 and len(text) < 0.93 * len(system_prompt())
+    assert word_count(text) <= 4390 and len(text) < 0.93 * len(system_prompt())
 
 
 def test_prompt_members_table_gives_each_member_its_kind():

@@ -73,6 +73,13 @@ Two geometry objects or structures of one structure have the same name.
 
     a = Circle((0, 0), 2)
     a = Circle((5, 0), 2)     # name the second one `b`
+
+A param is declared once, and no top-level `name = ...` assigns its name: the second
+declaration would silently win, even for code above it, and its slider and `--set` would read
+the other range.
+
+    param w = 60 mm, min = 10 mm, max = 100 mm
+    param w = 80 mm, min = 70 mm, max = 90 mm     # keep one `param w`
 """),
     "E0108": ("wrong type", """
 A value of the wrong kind: a length where a point is expected, a Circle where a Line is
@@ -258,7 +265,8 @@ objects, Newton steps, vertices, pairs, segments; about 15 s of the reference ma
 same count on every machine at any load, so the same program gets the same answer, the same
 message and the same output everywhere). CPU time is only a backstop,
 at 6 times 15 s, and its message says so; wall time an outer guard, at 10 times 15 s, for a
-machine that gives the compile less than a tenth of a core. Each construct's own limit
+machine too busy to give the compile the CPU it needs (its message says the CPU the compile got
+in that time and its share of a core). Each construct's own limit
 (E0301, E0302, E0303) stops one loop or template that is too large by itself; the budget stops
 their product: nested loops, a template that instantiates itself several times per level.
 The error points at the outermost loop or template instance running when the budget ran out
@@ -326,7 +334,8 @@ by other errors.
     "E0405": ("assertion failed", """
 An `assert` statement's condition is false at the solved values (every false one is reported;
 after a failed solve, those that read only params, constants and held sizes). The message gives the condition, the reason written
-after it and the values found, in the file's units; one inside a template of another file (the standard
+after it and the values found, in the file's units, then the value of each name and member a
+side computes with (`(where ring.bb.width = 124 mm, wall = 3 mm)`); one inside a template of another file (the standard
 library's, an imported one) is reported at the template's call, its own line a note. A
 template's assert written over its arguments (reading only its parameters and values computed
 from them) is checked at the call before the body runs: false, it is one error at the
@@ -412,6 +421,25 @@ per sheet), or place the parts apart in the program. SVG, DXF and PDF are writte
         solid front { r = Rectangle(center=(0, 0), width=120, height=110) }
         solid back { r = Rectangle(center=(0, 0), width=120, height=110) }   # on the front
         Place(back, rotation=(90 deg, 0, 0), position=(0, 60, 0))
+    }
+"""),
+    "E0503": ("countersinks or counterbores leave nothing of a part, or cut it apart", """
+A `Countersink` whose cone, or a `Counterbore` whose recess, goes through the part (W0529) takes
+from its bottom face a disc as wide as the cone is there (`diameter - 2 x thickness x
+tan(angle / 2)`; a counterbore's `diameter`). When those discs cover the whole part, or cut it
+into pieces, the part cannot be made as drawn: an STL, 3MF or GLB would hold nothing (or loose
+pieces) while the SVG and DXF draw the whole plate and a router's G-code cut cones into it. The
+error is at the call of the widest head, the compile stops, and no format is written (a file
+written before is left as it was); `--thickness` given to `aidl render` is judged the same
+way. Give the head the screw's size (an M4 flat-head screw: a 4.5 mm hole, a 9 mm head), a
+wider angle, a shallower counterbore, or thicker material.
+
+    thickness 6 mm
+    solid plate {
+        body = Rectangle(center=(0, 0), width=80, height=50)
+        hole screws { c = Circle(center=(-30, -15), diameter=4.5 mm) }
+        corners = CornerPattern(screws, body, inset=10)
+        Countersink(corners, diameter=200 mm)      # 188 mm wide at the bottom: E0503
     }
 """),
     "E0900": ("internal error in aidl", """
@@ -1153,6 +1181,22 @@ wider `max_width`. A stencil's width counts its stroke
         t = Text("ROSEMARY", position=(0, 0), size=10 mm, max_width=60 mm)
         # note: 75.2 mm wide at size 10 mm: drawn at size 7.98 mm, 60 mm wide
     }
+"""),
+    "W0114": ("unknown escape in a string", """
+A backslash in a string starts an escape: `\\n` a line break, `\\t` a tab, `\\\\` a backslash,
+`\\"` and `\\'` a quote. Any other backslash is kept as written, backslash and all, and warned:
+`Text("50\\% off")` engraves `50\\% off`. Write `\\\\` for a backslash you mean, or leave the
+backslash out. A path such as `"C:\\temp\\new"` holds a tab and a line break: write
+`"C:\\\\temp\\\\new"`.
+"""),
+    "W0115": ("param that nothing reads", """
+A `param` that no statement of the program reads: its slider (`aidl studio`, `aidl serve`) and
+`--set NAME=...` change nothing, which is rarely what was meant (a size written as a number
+where the param should be). Use it where the size it names is written (`width=plate_w`), or
+delete the line.
+
+    param plate_w = 120 mm, min = 80 mm, max = 200 mm
+    solid plate { body = Rectangle(center=(0, 0), width=120 mm, height=60) }   # width=plate_w
 """),
     "W0104": ("empty drawing", """
 The file is empty (nothing but comments), or its structures build no geometry at all, so the

@@ -363,10 +363,9 @@ def _refused_output(o: Path, follow: bool, force: bool) -> int | None:
             kind = f"a symbolic link to {kind} (`{target}`)"
         return _usage(refusal(o, kind, NOT_REGULAR_HINT))
     import stat as S
-    # read-only: no write bit for its owner (so also for root, whom os.access lets through),
-    # or not writable by this user
-    read_only = not st.st_mode & S.S_IWUSR or not os.access(target, os.W_OK)
-    if S.S_ISREG(st.st_mode) and read_only and not force:
+
+    from ..output.writers.write import read_only
+    if read_only(st, target) and not force:
         print(f"aidl: error: `{o}` is read-only (mode {S.S_IMODE(st.st_mode):04o}); refusing "
               "to replace it: give --force to replace it anyway", file=sys.stderr)
         return 1
@@ -417,7 +416,7 @@ def _write_all(items: list[tuple[Path, bytes]], follow: bool = False) -> str | N
 def cmd_render(args) -> int:
     from ..pipeline import compile_source, report_out_of_budget, report_stacked
     from ..output import MissingDependency, Options, OutputError, build
-    from ..output.writers import StackedParts
+    from ..output.writers import StackedParts, SunkAway
     outs = _outputs(args)
     if isinstance(outs, int):
         return outs
@@ -500,6 +499,10 @@ def cmd_render(args) -> int:
             _emit(res.sink, args.json, False, _work_of(res))
         elif isinstance(e, StackedParts):        # located at the first of the two parts
             report_stacked(res.sink, res.drawing, e)
+            _emit(res.sink, args.json, False, _work_of(res))
+        elif isinstance(e, SunkAway):            # located at the widest head's call
+            from ..base.diagnostics import Diagnostic
+            res.sink.add(Diagnostic("E0503", e.message, e.span, "error", hint=e.hint))
             _emit(res.sink, args.json, False, _work_of(res))
         elif hasattr(e, "holds"):                # a layout with no solid part: at the design
             from ..pipeline import report_nothing
@@ -727,7 +730,7 @@ def cmd_set(args) -> int:
     (:func:`aidl_lang.api.set_params`), then ``aidl check FILE``; a value refused (an unknown
     name, the wrong kind, outside its range) leaves the file as it was: exit 1."""
     from ..api import ParamsRefused, set_params
-    from ..output.writers.write import WriteError, write_atomic
+    from ..output.writers.write import WriteError, edit_program
     values = {}
     for it in args.values:
         if "=" not in it:
@@ -753,7 +756,7 @@ def cmd_set(args) -> int:
         print(f"aidl: error: {e}", file=sys.stderr)
         return 1
     try:
-        write_atomic(Path(args.file), text.encode("utf-8"))
+        edit_program(Path(args.file), text.encode("utf-8"))
     except WriteError as e:
         print(f"aidl: error: {e}", file=sys.stderr)
         return 1

@@ -335,14 +335,14 @@ def main(files: list[str], check: bool = False) -> int:
     file has syntax errors (printed; the file is not touched) or, with ``check``, would change;
     3 the formatter found it would change a program's meaning (a bug; nothing written).
     Files are rewritten atomically (a temporary file beside it, then renamed:
-    :func:`aidl_lang.output.writers.write.write_atomic`, never over a FIFO or a device) and only if
-    their text changes.
+    :func:`aidl_lang.output.writers.write.edit_program`: a link's target, never over a
+    read-only file, a FIFO or a device) and only if their text changes.
     """
     import sys
     from pathlib import Path
 
     from ..base.diagnostics import render_text
-    from ..output.writers.write import WriteError, write_atomic
+    from ..output.writers.write import WriteError, edit_program
     from ..library.sources import SourceRefused, read_program
 
     status = 0
@@ -402,7 +402,7 @@ def main(files: list[str], check: bool = False) -> int:
         # a symlink stays a link: its target is rewritten; the mode is kept; only a regular
         # file is replaced (one swapped for a FIFO or a device since it was read is left)
         try:
-            write_atomic(Path(f), out.encode("utf-8"), follow_symlinks=True)
+            edit_program(Path(f), out.encode("utf-8"))
         except WriteError as e:
             print(f"aidl: error: {e}", file=sys.stderr)
             status = max(status, 1)

@@ -22,6 +22,7 @@ class Asserts:
         (:class:`~aidl_lang.geometry.core.model.Assertion`) and checked after solving (E0405)."""
         groups = self._assert_groups(st.expr)
         a = self._assertion(st, self.struct)
+        a.reads = self._assert_reads(st.expr)
         verdict, a.groups, known = judge_known(groups)
         if verdict is False:
             # reported now, and the program goes on: every false assert is reported, those
@@ -60,6 +61,39 @@ class Asserts:
                 sides.append(self._sides_of(op, l, r, e.span, eq))
         return [sides]
 
+    def _assert_reads(self, e) -> list:
+        """``(text, expression, dim)`` of each name and member chain inside a side of the
+        condition ``e`` (``ring.bb.width``, ``wall`` of ``abs(ring.bb.width - 2 * wall) <
+        1 mm``; at most :data:`MAX_READS`, each once), for E0405's message: the values a
+        model would otherwise work out by hand (issue 111).  A side that is itself a chain
+        is said as the side; a chain whose value is not a number, length or angle is left
+        out."""
+        from .common import _src
+        out: list = []
+        seen: set = set()
+        todo = [e]
+        while todo and len(out) < MAX_READS:
+            n = todo.pop()
+            if isinstance(n, (A.Name, A.Member)) and _chain(n):
+                text = _src(self.sink, n.span)
+                if text and text not in seen:
+                    seen.add(text)
+                    try:
+                        v = self.eval(n)
+                    except EvalError:
+                        continue
+                    if isinstance(v, Q):
+                        out.append((text, v.expr, v.dim))
+                continue
+            if isinstance(n, A.Call):
+                todo += reversed(list(n.args) + [k.value for k in n.kwargs])
+                continue
+            if isinstance(n, A.Compare):    # a side that is a name is said as the side
+                todo += reversed([x for x in n.operands if not _chain(x)])
+                continue
+            todo += reversed([c for c in _children(n)])
+        return out
+
     def _assertion(self, st, owner):
         """The :class:`~aidl_lang.geometry.core.model.Assertion` of statement ``st`` (its text,
         reason and the file's length unit for messages), without its alternatives yet."""
@@ -73,6 +107,27 @@ class Asserts:
 
 # the alternatives an `assert` may have (its condition in disjunctive normal form)
 MAX_ALTERNATIVES = 64
+# the names and members whose values a failed assert's message gives
+MAX_READS = 6
+
+
+def _chain(n) -> bool:
+    """Whether ``n`` is a name or a chain of members of one (``ring.bb.width``)."""
+    while isinstance(n, A.Member):
+        n = n.obj
+    return isinstance(n, A.Name)
+
+
+def _children(n) -> list:
+    """The expression nodes directly under ``n``."""
+    out = []
+    for slot in getattr(type(n), "__slots__", ()):
+        v = getattr(n, slot, None)
+        if isinstance(v, A.Node):
+            out.append(v)
+        elif isinstance(v, list):
+            out += [x for x in v if isinstance(x, A.Node)]
+    return out
 
 
 def judge_known(groups: list) -> tuple:

@@ -19,6 +19,7 @@ from ..registry import CONSTANTS, UNITS_LENGTH, template_param
 from ..library.sources import ImportRefused, read_import, resolve_import
 from .arguments import check_kinds, kind_error, precheck_asserts
 from .asserts import Asserts
+from .constants import early_constants, late_constant
 from .common import (DEG, POISON, FileCtx, Scope, _STMT_ERRORS, _Silent, _a, _common_ancestor,
                      _definition_lines, _fmt_num, _src, _is_geometry_stmt, _is_plain_const)
 
@@ -115,9 +116,15 @@ class Statements(Asserts):
                     if st.span is not None:
                         self.model.file_units[st.span.file] = u
         self.model.units = "mm"
+        early = early_constants(program.stmts)
         for st in program.stmts:
             try:
-                if isinstance(st, A.Import):
+                if st in early:
+                    # a constant above a param that reads it (and no param): worked out here,
+                    # before the param (issue 111: `hooks = 5` then `param w = hooks * pitch`)
+                    fctx.scope.vars[st.name] = POISON
+                    fctx.scope.vars[st.name] = self.eval(st.value)
+                elif isinstance(st, A.Import):
                     self._import(st, fctx)
                 elif isinstance(st, A.Def):
                     if st.kind not in A.STRUCTURE_KINDS:
@@ -167,6 +174,9 @@ class Statements(Asserts):
                 if isinstance(st, A.ParamDecl):
                     fctx.scope.vars[st.name] = POISON
             except EvalError as e:
+                if isinstance(st, A.ParamDecl):
+                    e = late_constant(e, program) or e
+                    fctx.scope.vars[st.name] = POISON    # said once: its uses stay quiet
                 self.error(e)
         if not is_main:
             for st in program.stmts:

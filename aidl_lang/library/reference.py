@@ -804,6 +804,18 @@ an angle from a ratio `atan(y / x)` or `atan2(y, x)`. There is no `rad()` or `de
 # ---------------------------------------------------------------- details of entries
 # what the registry's one-line docs (also the prompt's) leave out: `aidl docs NAME` only
 DETAILS: dict[str, str] = {
+    "Countersink": "A hole is sunk once (issue 109): named twice (`[a, a.c]`) or again by "
+                   "another call with the same head, it is one countersink in `aidl parts`, "
+                   "the DXF's COUNTERSINK layer and the router's plunges; sunk again with "
+                   "another head or a Counterbore it is E0108 at the second call, naming the "
+                   "first's line. A cone deeper than the part is W0529 (the router's V-bit "
+                   "then runs round a circle at the part's thickness, so the top is still "
+                   "`diameter`); cones that go through and leave nothing of the part, or cut "
+                   "it into pieces, are E0503 and no format is written.",
+    "Counterbore": "A hole is sunk once, as with Countersink (the same head again counts "
+                   "once; another head is E0108). A recess as deep as the part is W0529; "
+                   "recesses through the part that leave nothing of it, or cut it into "
+                   "pieces, are E0503 and no format is written.",
     "Polyline": "Straight segments through the points, in order, not closed: an engraving "
                 "in a drawing (a cord, a zig-zag, a meander), a path for Stroke, or a chain "
                 "that Lines, Arcs and open Splines sharing its ends close into an outline. "

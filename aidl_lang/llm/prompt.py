@@ -35,15 +35,16 @@ statements (`Above(lid, body)`, `Coincident(a.end, b.start)`) and equations
 (`lid.bb.width == body.bb.width`, `x <= 60`; join with `and`). Geometry and constraints only
 live inside structures. Top of file: `units mm` (default; also `units in`), `param NAME = VALUE,
 min = LO, max = HI` (always declare the range it still works across: sliders use it; a
-param may be computed from params above it, `param h = w / 2`, and follows `--set w=60`),
+param may be computed from params and constants above it, `param h = w / 2`, and follows
+`--set w=60`),
 constants `NAME = expr`, templates `def NAME(p1, p2=default) -> solid { ... }` (instantiate:
 `part = NAME(p1=...)`), `import "file.aidl"` or `import stdlib.shapes` (or
 `.gears`, `.joints`, `.fasteners`, `.plates`). Control flow:
 `for i in range(n) { ... }` (a name set in a loop: the current copy inside, the list after:
 `knob[0]`),
 `if c { } else { }`, `[f(i) for i in xs]`. Operators: `+ - * / % **`, `//` (floor division),
-comparisons, `and or not`, `a if c else b`; `range(start, stop, step)`. Comments start with `#`
-(not `//`). Numbers take units (`5 mm`, `2 in`, `30 deg`); a bare
+comparisons, `and or not`, `a if c else b`; `range(start, stop, step)`. A statement ends at
+the line break: continue a long one inside `( )` or `[ ]`. Comments start with `#` (not `//`). Numbers take units (`5 mm`, `2 in`, `30 deg`); a bare
 number is a length in the file unit or an angle in degrees (but `sin`/`cos`/`tan` read
 radians: write `cos(i * 10 deg)`); `pi`, `tau` count radians: `a + pi / 2` is `a + 90 deg`;
 `x * 1 rad` is an angle.

@@ -61,6 +61,27 @@ def check_arguments(tool: str, arguments: dict, accepted: list[str]) -> None:
         one_program(arguments.get("source"), arguments.get("path"))
 
 
+NAME_MAX, PATH_MAX = 255, 4096      # bytes of a file name and of a path (Linux)
+
+
+def given_path(path, argument: str) -> None:
+    """Refuse (``bad_argument``) a path the agent gave that no file can have: not a
+    non-empty string, a NUL in it, a part over :data:`NAME_MAX` bytes or the whole over
+    :data:`PATH_MAX` (issue 110: a 300-character name was an internal error, the operating
+    system's "File name too long")."""
+    if not isinstance(path, str) or not path or "\x00" in path:
+        raise Refused("give a path as a non-empty string", "bad_argument", argument)
+    long = next((part for part in Path(path).parts
+                 if len(part.encode("utf-8", "surrogateescape")) > NAME_MAX), None)
+    if long is not None:
+        raise Refused(f"`{long[:40]}...` in `{argument}` is {len(long.encode('utf-8', 'surrogateescape'))} "
+                      f"bytes long: a file or folder name is at most {NAME_MAX}; give a "
+                      "shorter name", "bad_argument", argument)
+    if len(path.encode("utf-8", "surrogateescape")) > PATH_MAX:
+        raise Refused(f"`{argument}` is longer than {PATH_MAX} bytes: give a shorter path",
+                      "bad_argument", argument)
+
+
 class Workspace:
     """The one folder a server may read and write: ``root`` (resolved, real path).
     :meth:`inside` resolves a path given by the agent (relative to the root) and refuses
@@ -75,8 +96,7 @@ class Workspace:
     def inside(self, path: str, must_exist: bool = False, argument: str = "path") -> Path:
         """The real path of ``path`` (relative to the root, or absolute; the tool's argument
         ``argument``), checked to be inside the root.  Raises :class:`Refused`."""
-        if not isinstance(path, str) or not path or "\x00" in path:
-            raise Refused("give a path as a non-empty string", "bad_argument", argument)
+        given_path(path, argument)
         p = Path(path)
         if not p.is_absolute():
             p = self.root / p
@@ -125,8 +145,7 @@ class Workspace:
         components: a link is refused wherever it points, inside the root too (outputs are
         never written through a link).  The file and its folders need not exist.  Raises
         :class:`Refused`."""
-        if not isinstance(path, str) or not path or "\x00" in path:
-            raise Refused("give a path as a non-empty string", "bad_argument", argument)
+        given_path(path, argument)
         p = Path(path)
         outside = Refused(f"`{path}` is outside the allowed folder {self.root} (the server's "
                           "`--root`); only files inside it can be read or written",
@@ -428,7 +447,9 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
     STL, 3MF, STEP, GLB; default the program's, else 3); ``page`` (a ``.pdf`` output tiled
     over paper of this size, ``"A4"``, ``"A4-landscape"``, ...; default one page the drawing's
     size).  Lengths are numbers of mm or strings with a unit.  ``machine``: G-code's machine
-    profile, ``laser``, ``router``, ``plotter`` or a TOML file inside the allowed folder.
+    profile, ``laser``, ``router``, ``plotter``, a TOML file inside the allowed folder, or a
+    profile's table as an object (``{"kind": "router", "tool_diameter": 6}``: the keys of a
+    profile file, ``aidl docs machine``).
     ``files``: a list to put each file's ``(target, data, program, shown)`` in instead of
     writing it (the server writes them in the order the calls were made: :mod:`.order`)."""
     put = files.append if files is not None else lambda f: write_inside(ws, *f)
@@ -463,10 +484,13 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
     kerf_mm = _mm(kerf, "kerf", "0.15 or \"0.15mm\"", most=10.0)
     thick_mm = _mm(thickness, "thickness", "3 or \"3mm\"")
     target = ws.output(output) if output is not None else None
-    from ..output.fabrication.machine import KINDS, MachineError, default, load
+    from ..output.fabrication.machine import KINDS, MachineError, default, from_dict, load
     try:
-        prof = None if machine is None else default(machine) if machine in KINDS else \
-            load(ws.inside(machine, must_exist=True, argument="machine"))
+        if isinstance(machine, dict):       # a profile's table: the router's bit, its relief
+            prof = from_dict(machine, "the `machine` argument")
+        else:
+            prof = None if machine is None else default(machine) if machine in KINDS else \
+                load(ws.inside(machine, must_exist=True, argument="machine"))
     except MachineError as e:
         raise Refused(str(e), "bad_argument", "machine") from None
     if page is not None:

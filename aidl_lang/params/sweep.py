@@ -118,6 +118,9 @@ class SweepReport:
     lifted: dict = field(default_factory=dict)
     findings: list = field(default_factory=list)
     errors: list = field(default_factory=list)
+    point_work: int = 0          # the least work a point was seen to need (the written
+    short: int = 0               # values' compile first), and the work left when the next
+    #                              point was not started for want of it (0: never)
 
     def clean_ranges(self) -> dict:
         """``{param: (lo, hi)}`` (display units): each swept param's range, narrowed to the
@@ -210,6 +213,10 @@ class SweepReport:
             if self.skipped:
                 out += (f"; {self.skipped} planned point{'s' if self.skipped != 1 else ''} "
                         "not judged, out of budget (--budget K gives K times more)")
+            if self.short:
+                out += (f"\nsweep: one point needs about {self.point_work:,} work units (a "
+                        f"compile of the design); {self.short:,} were left, so no more was "
+                        "started (--budget K gives K times more)")
         clean = self.clean_ranges()
         for name in self.unranged:
             if name not in self.ranges:
@@ -238,6 +245,7 @@ class SweepReport:
     def to_json(self) -> dict:
         return {"ok": self.ok, "swept": self.swept, "unranged": self.unranged,
                 "fixed": self.fixed, "points": self.points, "skipped": self.skipped,
+                "point_work": self.point_work, "short": self.short,
                 "warm": self.warm, "tolerance": self.tolerance,
                 "ranges": {k: list(v) for k, v in self.ranges.items()},
                 "not_judged": self.not_judged(), "combinations": self.combinations(),
@@ -365,6 +373,7 @@ class _Sweep:
         from .. import ast as A
         from ..output.checks import topology
         from ..parser import parse
+        from ..interpreter.constants import early_constants
         from ..typecheck import check
         t0 = now()
         self.end = None
@@ -376,8 +385,10 @@ class _Sweep:
         self.sources = dict(sink.sources)
         # the declarations alone (:meth:`_clamped`): a point's values moved into the ranges
         # that follow other params before its compile
+        early = early_constants(self.program.stmts)     # constants the params read
         self.decls = A.Program(self.program.span, self.program.path, self.program.source,
-                               [s for s in self.program.stmts if type(s).__name__ in DECLS])
+                               [s for s in self.program.stmts
+                                if type(s).__name__ in DECLS or s in early])
         self.solver = self.keys = None
         base = self._compile({}) if not sink.has_errors else None
         if base is None or base.sink.has_errors or base.drawing is None:
@@ -386,6 +397,7 @@ class _Sweep:
             rep.seconds = now() - t0
             return rep
         self.base_keys = {_key(d) for d in base.sink.items if not d.is_error}
+        rep.point_work = base.cost          # the least a point is known to need, so far
         self.end = t0 + seconds
         self.base_topology = topology(base.drawing)
         self.problems: dict = {}
@@ -598,6 +610,14 @@ class _Sweep:
             self.report.work += cost
             self.problems[key] = self.settled[same]
             return self.settled[same]
+        if self.work_left - cost < self.report.point_work:
+            # a compile the work left cannot pay is not started (issue 110: a 20,000-hole
+            # panel's sweep spent 11 s of CPU on points it began and abandoned)
+            self.work_left -= cost
+            self.report.work += cost
+            self.report.points -= 1
+            self.report.short = int(max(self.work_left, 0))
+            return None
         res = self._compile(ov)
         cost += res.cost
         for _ in range(CLAMPS):         # what the declarations alone did not settle
@@ -613,6 +633,8 @@ class _Sweep:
             cost += res.cost
         self.work_left -= cost
         self.report.work += cost
+        if not res.capped:
+            self.report.point_work = min(self.report.point_work, res.cost)
         errs = [d for d in res.sink.items if d.is_error]
         if errs and errs[0].code == "E0304" and (now() >= self.end or res.capped):
             # the sweep's budget (its work left, or the backstop), not the design: not judged

@@ -322,6 +322,22 @@ class _Builder:
         """A token's text."""
         return self.text[token.start:token.end]
 
+    def unquote(self, token: Span, skip: int = 0) -> str:
+        """A string token's value (:func:`_unquote`), with W0114 at each unknown escape (kept
+        as written, backslash and all: `"50\\% off"` is engraved `50\\% off`); ``skip``
+        leading characters (an f-string's ``f``) are not part of the literal."""
+        text = self.tx(token)[skip:]
+        for at, esc in _unknown_escapes(text):
+            col = token.col + skip + 1 + at
+            where = Span(token.file, token.line, col, token.line, col + len(esc),
+                         token.start + skip + 1 + at, token.start + skip + 1 + at + len(esc))
+            self.sink.warning(
+                "W0114", f"`{esc}` is not an escape: the backslash is kept", where,
+                hint=f"write `\\\\{esc[1:]}` for a backslash and `{esc[1:]}`, or `{esc[1:]}` "
+                     "alone; the escapes are \\n (line break), \\t (tab), \\\\ (backslash), "
+                     "\\\" and \\' (quotes)")
+        return _unquote(text)
+
     # statements
     def start(self, meta, items):
         return [i for i in items if isinstance(i, A.Node)]
@@ -423,7 +439,7 @@ class _Builder:
         return A.ExprStmt(meta, items[0])
 
     def assert_stmt(self, meta, items):
-        msg = _unquote(self.tx(items[1])) if len(items) > 1 and items[1] is not None else None
+        msg = self.unquote(items[1]) if len(items) > 1 and items[1] is not None else None
         return A.Assert(meta, items[0], msg)
 
     def bare_block(self, meta, items):
@@ -436,11 +452,11 @@ class _Builder:
         return A.Num(meta, v, unit)
 
     def string(self, meta, items):
-        return A.Str(meta, _unquote(self.tx(items[0])))
+        return A.Str(meta, self.unquote(items[0]))
 
     def fstring(self, meta, items):
         tok = items[0]
-        body = _unquote(self.tx(tok)[1:])
+        body = self.unquote(tok, skip=1)
         return A.FStr(meta, self._fparts(body, tok))
 
     def _fparts(self, body: str, tok: Span) -> list:
@@ -556,6 +572,19 @@ def _respan(node, span: Span) -> None:
         n.span = span
 
 
+# A string's escapes (docs/language.md, "Strings"): `\n` a line break, `\t` a tab, `\\` a
+# backslash, `\"` and `\'` a quote; any other backslash is kept as written (W0114)
+ESCAPES = {"n": "\n", "t": "\t", "\\": "\\", '"': '"', "'": "'"}
+
+
 def _unquote(s: str) -> str:
-    body = s[1:-1]
-    return re.sub(r"\\(.)", lambda m: {"n": "\n", "t": "\t"}.get(m.group(1), m.group(1)), body)
+    """A string literal's value: ``s`` with its quotes taken off and its escapes
+    (:data:`ESCAPES`) replaced; an unknown escape keeps its backslash."""
+    return re.sub(r"\\(.)", lambda m: ESCAPES.get(m.group(1), m.group(0)), s[1:-1])
+
+
+def _unknown_escapes(s: str) -> list[tuple[int, str]]:
+    """(offset in ``s``, the escape) of each backslash in the literal ``s`` that
+    :data:`ESCAPES` does not name."""
+    return [(m.start(), m.group(0)) for m in re.finditer(r"\\(.)", s[1:-1])
+            if m.group(1) not in ESCAPES]

@@ -325,8 +325,10 @@ class Assertion(Record):
     ``<=`` ``<`` ``>=`` ``>``; ``left``, ``right`` expressions in mm or radians, box terms
     allowed; ``dim`` the values' dimension); it holds at the solution when every side of
     some group does.  ``text``: the condition as written; ``message``: the user's reason, or
-    None; ``unit``/``scale``: the file's length unit for messages."""
-    __slots__ = ("span", "text", "message", "owner", "groups", "unit", "scale")
+    None; ``unit``/``scale``: the file's length unit for messages; ``reads``: ``(text,
+    expression, dim)`` of each name and member the condition reads (issue 111: the message
+    gives their values, `ring.bb.width = 155 mm`)."""
+    __slots__ = ("span", "text", "message", "owner", "groups", "unit", "scale", "reads")
 
     def __init__(self, span: Span | None, text: str, message: str | None, owner: Structure,
                  groups: list | None = None, unit: str = "mm", scale: float = 1.0):
@@ -337,3 +339,4 @@ class Assertion(Record):
         self.groups = [] if groups is None else groups
         self.unit = unit
         self.scale = scale
+        self.reads: list = []

@@ -34,16 +34,42 @@ def _show(v: float, dim, a: Assertion) -> str:
     return f"{v:.6g}"
 
 
-def describe(a: Assertion, found: list, alternatives: int = 1) -> str:
+def describe(a: Assertion, found: list, alternatives: int = 1, x=None) -> str:
     """The E0405 message: the condition, the user's reason and the values found
     (``found``: ``(op, left, right, dim)`` of the sides that fail; ``alternatives``: how
-    many alternatives of an `or` failed, each by the sides found)."""
+    many alternatives of an `or` failed, each by the sides found), then the value of each
+    name and member the condition reads (``a.reads``, at the solution ``x`` when given),
+    where it is not the side itself: `(ring.bb.width = 124 mm, wall = 3 mm)`."""
     why = f" ({a.message})" if a.message else ""
     parts = []
     for op, l, r, dim in found[:3]:
         parts.append(f"{_show(l, dim, a)} {op} {_show(r, dim, a)} is false" + _within_tol(op, l, r, dim))
     lead = "no alternative holds: " if alternatives > 1 else ""
-    return f"assertion failed: `{a.text}`{why}: {lead}" + "; ".join(parts)
+    said = [f"{text} = {shown}" for text, shown in _reads(a, x)
+            if not a.text.strip() == text]
+    where = f" (where {', '.join(said)})" if said else ""
+    return f"assertion failed: `{a.text}`{why}: {lead}" + "; ".join(parts) + where
+
+
+def _reads(a: Assertion, x) -> list[tuple[str, str]]:
+    """``(text, value as said)`` of each name and member the assertion reads, evaluated at
+    ``x`` (a value that cannot be worked out there is left out)."""
+    out = []
+    for text, e, dim in a.reads:
+        try:
+            if isinstance(e, (int, float)) or (isinstance(e, Lin) and not e.terms):
+                v = float(e) if isinstance(e, (int, float)) else float(e.const)
+            elif x is None:
+                continue
+            else:
+                terms: list = []
+                collect(e, terms)
+                v = _eval(e, x, exclusions(terms) if terms else set())
+        except (ArithmeticError, KeyError, TypeError, ValueError):
+            continue
+        if math.isfinite(v):
+            out.append((text, _show(v, dim, a)))
+    return out
 
 
 def _within_tol(op: str, left: float, right: float, dim) -> str:

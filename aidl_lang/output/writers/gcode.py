@@ -802,6 +802,10 @@ def _header(output: Output, m, w: _Writer) -> list[str]:
     src = m.source or f"built-in {m.kind} profile"
     h = [f"; {output.title or 'aidl'}: G-code (GRBL) written by aidl",
          f"; machine: {m.kind} ({src})",
+         *([f"; tool: a {m.tool_diameter:g} mm end mill (tool_diameter): every cut's path "
+            f"runs {m.tool_diameter / 2:g} mm beside the line; inside corners: "
+            + ("no relief" if m.relief in (None, "none") else f"{m.relief} relief")]
+           if m.kind == "router" else []),
          f"; {estimate_text(w.cut, w.travel, w.seconds, sum(w.dark.values()), w.runs)}",
          *[f"; warning: {x}" for x in w.warnings],
          *[f"; note: {x}" for x in w.notes],

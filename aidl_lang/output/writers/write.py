@@ -153,8 +153,7 @@ def check_output_path(path: str | os.PathLike, program: str | None = None,
         return out
     if follow_symlinks and kind_of(st.st_mode):
         raise NotRegularFile(out, f"a symbolic link to {kind_of(st.st_mode)} (`{real}`)")
-    if S.S_ISREG(st.st_mode) and not force and (
-            not st.st_mode & S.S_IWUSR or not os.access(real, os.W_OK)):
+    if not force and read_only(st, real):
         raise WriteError(f"`{out}` is read-only (mode {S.S_IMODE(st.st_mode):04o}); refusing "
                          "to replace it (force=True replaces it)")
     return out
@@ -291,6 +290,30 @@ def _renameat2(src, dst, dir_fd: int | None, flags: int) -> bool:
     raise OSError(err, os.strerror(err), os.fspath(dst))
 
 
+def read_only(st: os.stat_result, path, dir_fd: int | None = None) -> bool:
+    """Whether the regular file ``path`` (``st``: its stat) is read-only for this user: no
+    write bit for its owner (so for root too, whom ``os.access`` lets through), or no write
+    access."""
+    return S.S_ISREG(st.st_mode) and (not st.st_mode & S.S_IWUSR
+                                      or not os.access(path, os.W_OK, dir_fd=dir_fd))
+
+
+def edit_program(path: Path, data: bytes) -> None:
+    """Rewrite the program file ``path`` with ``data`` as an edit (``aidl set``, ``aidl fmt``):
+    through a symbolic link (the file it names is replaced atomically, the link kept), never
+    over a read-only file (issue 110: ``aidl set`` replaced a link by a regular file and
+    rewrote a 0444 file).  Raises :class:`WriteError`."""
+    real = os.path.realpath(path)
+    try:
+        st = os.stat(real)
+    except OSError:
+        st = None
+    if st is not None and read_only(st, real):
+        raise WriteError(f"`{path}` is read-only (mode {S.S_IMODE(st.st_mode):04o}); "
+                         "refusing to edit it (make it writable first: chmod u+w)")
+    write_atomic(Path(path), data, follow_symlinks=True)
+
+
 def write_atomic(out: Path, data: bytes, follow_symlinks: bool = False,
                  hint: str | None = None) -> None:
     """Write ``data`` to ``out`` through a temporary file beside it, renamed over it
@@ -338,6 +361,9 @@ def write_in_dir(dfd: int, name: str, data: bytes, shown: str | None = None,
         if kind_of(st.st_mode):
             raise NotRegularFile(shown, kind_of(st.st_mode), hint)
         mode = S.S_IMODE(st.st_mode)
+        if read_only(st, name, dfd):
+            raise FileRefused(f"`{shown}` is read-only (mode {mode:04o}); refusing to "
+                              "replace it (make it writable first: chmod u+w)")
     tmp = f".{name[:200]}.{secrets.token_hex(6)}.tmp"
     fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | NOFOLLOW | CLOEXEC, 0o600,
                  dir_fd=dfd)

@@ -32,7 +32,8 @@ from ..edges.exact import Provenance
 from ..measure.nearby import faces_apart, meeting
 from .outlines import _shoelace, _weld
 from .placement import bends_of, placement_matrix
-from .result import Cut, Drawing, Part, SinkAt, Through
+from .result import Cut, Drawing, Part, SinkAt, SinkCall, Through
+from .sunk import DEFAULT_THICKNESS, sunk_away, sunk_message
 from .scanwork import TURN, TURN_BACK, plan, turned, turned_back, union_seconds
 from .faces import Faces, _dist
 from ....geometry.relations import bbox as _bbox
@@ -747,6 +748,15 @@ class Renderer(Faces):
                 r = abs(self.x[g.scalars["radius"].index])
                 got.append(SinkAt(sk.kind, name, g.label, self._pt(g.points["center"]),
                                   2 * float(r), sk.diameter, sk.angle, sk.depth, sk.span))
+        shapes = {p.name: p.shape for p in out.parts if p.kind == "solid"}
+        for name in dict.fromkeys(a.part for a in got):     # E0503: heads that leave nothing
+            t = out.thickness.get(name) or DEFAULT_THICKNESS
+            found = sunk_away(shapes.get(name), [(a.center, a) for a in got if a.part == name],
+                              t)
+            if found is not None:
+                message, hint = sunk_message(name, found, t)
+                self.shape_errors.append((SinkCall(found[2].span, out.part_of[name]), message,
+                                          hint, "E0503"))
         return got
 
 
