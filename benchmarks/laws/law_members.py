@@ -14,7 +14,7 @@ The documented exceptions (``law_members.md``: members that are by definition no
 outline) are not measured: :data:`NOT_DRAWN`.
 
     python -m benchmarks.laws.run --law members      # over the corpus (helper corpus's runner)
-    python -m benchmarks.laws.law_members FILE.aidl   # one program, its violations printed
+    python -m benchmarks.laws.law_members FILE.aidl ... [--generated]   # without the runner
 """
 from __future__ import annotations
 
@@ -416,6 +416,10 @@ BASES = {
     "ellipse": "Ellipse(center=({x}, {y}), rx={a}, ry={b}, rotation={t} deg)",
     "trapezoid": "Trapezoid(center=({x}, {y}), bottom_width={a} + {b}, top_width={a}, "
                  "height={b}, rotation={t} deg)",
+    "sector": "Sector(center=({x}, {y}), radius={a} + {b}, start_angle={t} deg, "
+              "end_angle={t} deg + 130 deg)",
+    "arcslot": "ArcSlot(center=({x}, {y}), radius={a}, start_angle={t} deg, "
+               "end_angle={t} deg + 100 deg, width=5)",
 }
 OPS = {
     "offset": "Offset({s}, {d})", "offset_miter": 'Offset({s}, {d}, join="miter")',
@@ -505,18 +509,28 @@ def generated(n: int | None = None) -> Iterator:
 
 
 def main(argv: list[str]) -> int:
-    bad = 0
+    """``FILE.aidl ...`` and/or ``--generated``: each program's violations, then the counts
+    (held, failed, not applicable); exit status 1 when one failed."""
+    entries = []
     for p in argv:
-        src = open(p, encoding="utf-8").read()
+        if p == "--generated":
+            entries += list(generated())
+        else:
+            entries.append(Entry(name=p, source=open(p, encoding="utf-8").read(), path=p,
+                                 overrides={}, kind="examples"))
+    held = failed = skipped = 0
+    for e in entries:
         try:
-            lines = check(Entry(name=p, source=src, path=p, overrides={}, kind="examples"))
-        except NotApplicable as ex:
-            print(f"{p}: not applicable ({ex})")
+            lines = check(e)
+        except NotApplicable:
+            skipped += 1
             continue
         for ln in lines:
-            print(f"{p}: {ln}")
-        bad += bool(lines)
-    return 1 if bad else 0
+            print(f"{e.name}: {ln}")
+        failed += bool(lines)
+        held += not lines
+    print(f"{len(entries)} programs: {held} held, {failed} failed, {skipped} not applicable")
+    return 1 if failed else 0
 
 
 if __name__ == "__main__":
