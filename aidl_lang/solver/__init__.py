@@ -88,28 +88,10 @@ def solve(model: Model, flat: bool = False, diagnose: bool = True,
     passed (``SolveResult.out_of_time``)."""
     solver = Solver(model)
     solver.deadline = deadline
-    res = run(solver, flat=flat, diagnose=diagnose)
-    # a relation on a box read from a drawn outline (an Inset, an Intersect...: its side is
-    # its source's extreme point plus a constant taken at the start) that the solution no
-    # longer meets: solved again from the solution, the box taken there (issue 109)
-    steps = res.iterations
-    last = float("inf")
-    for _ in range(RESOLVES):
-        if not res.converged or res.out_of_time:
-            break
-        miss = max((v for _c, v in drawn_box_misses(model)), default=0.0)
-        if miss == 0.0 or miss >= last:     # met (to 1e-9 mm), or no nearer: W0405 says it
-            break
-        last = miss
-        again = Solver(model)
-        again.deadline = deadline
-        res = run(again, flat=flat, diagnose=diagnose)
-        steps += res.iterations
-        res.iterations = steps
-    return res
+    return run(solver, flat=flat, diagnose=diagnose)
 
 
-# solves again at most, for relations on drawn boxes (solve): each takes the box where the
+# solves again at most, for relations on drawn boxes (run): each takes the box where the
 # last one ended, so the miss shrinks by the error of its first-order model (a flexible
 # triangle's inset, stretched: 0.17 mm, then 10 times less each time)
 RESOLVES = 10
@@ -122,7 +104,34 @@ def run(solver: Solver, flat: bool = False, diagnose: bool = True) -> SolveResul
     inequality (:attr:`.system.Rows.bounded_holds`), is run once more from the start with
     those holds released: a bound the held drawing breaks moves it, as it did before holds
     (``Inside(logo, body)`` over a logo drawn off the plate).  The result is then the new
-    solver's (``SolveResult.solver``)."""
+    solver's (``SolveResult.solver``).
+
+    A converged solve whose solution misses a relation on a box read from a drawn outline (an
+    ``Inset``, an ``Intersect``: :func:`~aidl_lang.geometry.relations.bbox.drawn_box_misses`,
+    its sides taken as its source's extreme points plus constants where the solve began) is
+    solved again from the solution by a new solver, the boxes taken there, while the miss
+    shrinks (:data:`RESOLVES` times at most; what is left is W0405); the result and its
+    ``solver`` are the last one's, its ``iterations`` all of them (issue 109)."""
+    res = _run_held(solver, flat, diagnose)
+    steps, last = res.iterations, float("inf")
+    for _ in range(RESOLVES):
+        if not res.converged or res.out_of_time:
+            break
+        miss = max((v for _c, v in drawn_box_misses(res.solver.model if res.solver is not None
+                                                    else solver.model)), default=0.0)
+        if miss == 0.0 or miss >= last:     # met (to 1e-9 mm), or no nearer: W0405 says it
+            break
+        last = miss
+        again = Solver(solver.model)
+        again.deadline = solver.deadline
+        res = _run_held(again, flat, diagnose)
+        steps += res.iterations
+        res.iterations = steps
+    return res
+
+
+def _run_held(solver: Solver, flat: bool, diagnose: bool) -> SolveResult:
+    """:func:`run` but the solves again for drawn boxes: the holds released after a failure."""
     x_start = list(solver.model.x)
     res = _run(solver, flat, diagnose)
     bounded = solver.rows_built.bounded_holds
