@@ -217,3 +217,26 @@ def test_law_over_generated_programs(case):
         assert any(d.code in ("E0406", "E0407") for d in r.errors), name
         return
     assert law.violations(r) == [], name
+
+
+def test_an_assert_on_a_box_read_before_a_fillet_is_warned():
+    """A structure's box is read before its Fillet (law_members.md, "Exceptions"): an
+    `assert` that holds on it but not on the final outline (the rounded X ends 0.621 mm in)
+    was silent; now W0405 at the assert, and none for an assert the rounding does not
+    change."""
+    r = aidl_lang.compile("""solid board { b = Rectangle(center=(0, 0), width=90, height=90) }
+solid x0 {
+    a = Rectangle(center=(10, 10), width=24, height=4, rotation=45 deg)
+    c = Rectangle(center=(10, 10), width=24, height=4, rotation=-45 deg)
+    Fillet(radius=1.5)
+}
+AlignLeft(x0, board)
+assert x0.bb.left == board.bb.left
+assert x0.bb.right < 100 mm
+""")
+    assert r.ok
+    warned = [d for d in r.diagnostics if d.code == "W0405" and "assert" in d.message]
+    assert len(warned) == 1 and "x0.bb.left == board.bb.left" in warned[0].message
+    assert "its left 0.621 mm in" in warned[0].message
+    (part,) = [p for p in r.parts if p.name.endswith("x0")]
+    assert part.bbox[0] - (-45.0) == pytest.approx(1.5 * (math.sqrt(2) - 1), abs=1e-6)

@@ -515,7 +515,9 @@ outline ends short of it (a 45-degree X filleted by 1.5 mm: 0.621 mm in from the
 edge). The warning gives both sides and the difference; write that side as an equation with
 the difference to 1e-6 mm (`x0.bb.left + 0.62132 mm == board.bb.left`: an equation on box
 values is taken as written, never warned, and moves the first-named as the `Align*` did), or
-round only the corners away from that side (`Fillet(at=[...], radius=...)`). Also a relation
+round only the corners away from that side (`Fillet(at=[...], radius=...)`). An `assert` on
+such a box is judged on it too (E0405 when false there); where its verdict on the final
+outline would be the other one, W0405 says so at the assert. Also a relation
 on the box of a shape made from others whose box is its drawn outline's (an `Inset`, a
 miter-joined `Offset` or `Shell`, an `Intersect`: exact at the solution) that the solution
 still misses after the solver solved again from it: the solve moved the shapes it is made

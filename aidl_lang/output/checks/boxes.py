@@ -79,6 +79,64 @@ def check_final_boxes(sink: DiagnosticSink, model: Model, d: Drawing, calls=None
             _warn(sink, c, terms, finished, moved, solved, calls)
 
 
+def check_final_box_asserts(sink: DiagnosticSink, model: Model, d: Drawing,
+                            calls=None) -> None:
+    """W0405 for each ``assert`` that reads the box of a structure with ``Fillet`` or
+    ``Chamfer`` and whose verdict on that box (the shapes as drawn before the rounding, what
+    the assert is judged on: E0405) is not its verdict on the final outline: an assert that
+    holds only because it reads the box before the rounding, or fails only for it (issue
+    109: a member a model asserts on is the part it gets)."""
+    if not model.assertions:
+        return
+    finished = {id(s): s for s in model.structures if reshaped(s)}
+    if not finished:
+        return
+    from ...geometry.relations.assertions import holds
+    x = model.xs()
+    moved: dict = {}
+    solved: dict = {}
+    for a in model.assertions:
+        terms = [t for grp in a.groups for _op, le, re_, _dim in grp for side in (le, re_)
+                 if not isinstance(side, (int, float)) for t in collect(side, [])]
+        read = [k for k in dict.fromkeys(id(t.target) for t in terms) if k in finished]
+        for k in read:
+            if k not in moved:
+                moved[k], solved[k] = _moved(d, finished[k], x)
+        if not any(abs(v) > BOX_TOL for k in read for v in moved[k].values()):
+            continue
+        exclude = exclusions(terms)
+
+        def value(e, final: bool) -> float:
+            if isinstance(e, (int, float)):
+                return float(e)
+            if final:
+                return float(evaluate(_at_final(e, x, exclude, moved), x))
+            return float(evaluate(_at_final(e, x, exclude, {}), x))
+
+        def verdict(final: bool) -> bool:
+            return any(all(holds(op, value(le, final), value(re_, final))
+                           for op, le, re_, _dim in grp) for grp in a.groups)
+
+        before, after = verdict(False), verdict(True)
+        if before == after:
+            continue
+        s = finished[read[0]]
+        asked = {t.side for t in terms if id(t.target) == read[0]}
+        sides = ", ".join(f"its {sd} {abs(v):.3f} mm "
+                          f"{'in' if (v > 0) == (sd in ('left', 'bottom')) else 'out'}"
+                          for sd, v in moved[read[0]].items()
+                          if abs(v) > BOX_TOL and sd in asked) or "its box moved"
+        ops = " and ".join(reshaped(s))
+        sink.warning(
+            "W0405", f"`assert {a.text}` reads the box of `{s.path}` before its {ops}: it "
+            f"{'holds' if before else 'fails'} there and would "
+            f"{'fail' if before else 'hold'} on the final outline ({sides})",
+            a.span, calls=calls(a.owner) if calls is not None else None,
+            hint=f"a box is read from the shapes as drawn, before {ops}: assert on the "
+                 f"final outline by adding the difference to that side, or round only "
+                 f"corners away from it (`Fillet(at=[...], ...)`)")
+
+
 def check_drawn_boxes(sink: DiagnosticSink, model: Model, calls=None) -> None:
     """One W0405 per relation on a box read from a drawn outline (an ``Inset``, a miter
     join, an ``Intersect``: :func:`~aidl_lang.geometry.relations.bbox.boxed_by_drawing`)
