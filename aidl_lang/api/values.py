@@ -314,8 +314,17 @@ def _named_quantities(scope: dict, prefix: str, x, origin, scale: float,
     (params and constants), solved: lengths in the file's unit, angles in degrees, bare
     numbers as they are, points in the model frame.  Geometry, structures, lists and other
     dimensions (an area) are left out."""
-    from ..geometry.core.expr import evaluate
+    from ..geometry.core.expr import evaluate as _evaluate
     from ..geometry.core.values import ANG, LEN, NUM, PV, Q
+    from ..geometry.relations.bbox import collect, contains_bbox, exclusions, expand
+
+    def evaluate(e, x):
+        # a box's side (`top = body.bb.top`) is expanded at the solution first, as an
+        # `assert` reads it (issue 109: `values` raised on it)
+        if contains_bbox(e):
+            e = expand(e, x, exclusions(collect(e, [])))
+        return _evaluate(e, x)
+
     out = []
     for name, v in scope.items():
         n = prefix + name

@@ -513,17 +513,20 @@ repeats the distance (W0401).
 """),
     "W0405": ("box read before Fillet or Chamfer", """
 A constraint reads a side of the box of a structure (`AlignLeft(x0, board)`, `x0.bb.left`,
-`Above`, `Inside`, ...) that has a `Fillet` or `Chamfer`, a miter-joined `Offset` or `Shell`,
-or an `Inset`, and its final outline does not reach that side: the box is read from the
-shapes as drawn, before the rounding (which acts on the finished outline after the booleans),
-so where a rounded corner is the box's extreme the outline ends short of it (a 45-degree X
-filleted by 1.5 mm: 0.621 mm in from the board's edge); an offset is boxed as its shape's box
-grown by the distance, exact for a round join only (a mitered star's tips reach further, an
-inset's outline stays inside). The warning gives both sides and the difference; write that
-side as an equation with the difference to 1e-6 mm (`x0.bb.left + 0.62132 mm ==
-board.bb.left`: an equation on box values is taken as written, never warned, and moves the
-first-named as the `Align*` did), or round only the corners away from that side
-(`Fillet(at=[...], radius=...)`), or offset with `join="round"`.
+`Above`, `Inside`, ...) that has a `Fillet` or `Chamfer`, and its final outline does not
+reach that side: the box is read from the shapes as drawn, before the rounding (which acts on
+the finished outline after the booleans), so where a rounded corner is the box's extreme the
+outline ends short of it (a 45-degree X filleted by 1.5 mm: 0.621 mm in from the board's
+edge). The warning gives both sides and the difference; write that side as an equation with
+the difference to 1e-6 mm (`x0.bb.left + 0.62132 mm == board.bb.left`: an equation on box
+values is taken as written, never warned, and moves the first-named as the `Align*` did), or
+round only the corners away from that side (`Fillet(at=[...], radius=...)`). An `assert` on
+such a box is judged on it too (E0405 when false there); where its verdict on the final
+outline would be the other one, W0405 says so at the assert. Also a relation
+on the box of a shape made from others whose box is its drawn outline's (an `Inset`, a
+miter-joined `Offset` or `Shell`, an `Intersect`: exact at the solution) that the solution
+still misses after the solver solved again from it: the solve moved the shapes it is made
+from apart (an `Intersect`'s two shapes), so its outline changed under the relation.
 
     solid board { b = Rectangle(center=(0, 0), width=90, height=90) }
     solid x0 {

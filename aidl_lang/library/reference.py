@@ -800,8 +800,10 @@ A comparison written as a statement in a structure is a constraint the solver ma
 Every shape and structure has `.bb`, its axis-aligned bounding box: `left`, `right`, `top`,
 `bottom` (coordinates), `width`, `height` (lengths), `center_x`, `center_y`, `center`,
 `top_left`, `top_right`, `bottom_left`, `bottom_right` (points). A structure also answers
-`s.width`, `s.left`, `s.center`, ... with its box. A structure's box covers all its geometry
-and descendants, holes included: a hole that pokes out past the outline widens it
+`s.width`, `s.left`, `s.center`, ... with its box. A shape's box is the box of the shape as
+drawn, within 1e-6 mm: a RoundedRectangle's arcs, a stencil's openings, an `Inset`'s, a
+`Shell`'s, an `Intersect`'s outline (not its shape's box grown). A structure's box covers all
+its geometry and descendants, holes included: a hole that pokes out past the outline widens it
 (construction geometry is left out). For the material only, use a shape's box
 (`plate.body.bb`). Structural relations (Above, Inside, ...) work on boxes. `self` is the
 current structure: `CenterInside(bore, self)`, `self.bb.width <= 60`.
