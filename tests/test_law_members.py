@@ -1,5 +1,5 @@
 """Law 3 of issue 109, *members are the geometry* (benchmarks/laws/law_members.py,
-law_members.md): every member a program reads of a shape equals the same measure of the shape
+docs/laws.md, law 3): every member a program reads of a shape equals the same measure of the shape
 as drawn, within 1e-6 mm.  The issue's ring (an 8-point star inset, offset and shelled: its
 ``bb.width`` was 124 mm, the drawn ring 84.996 mm), an arc's midpoint past a half turn, a
 turned rounded rectangle's box, a stencil's box, a relation on an inset's box that the solve
@@ -220,7 +220,7 @@ def test_law_over_generated_programs(case):
 
 
 def test_an_assert_on_a_box_read_before_a_fillet_is_warned():
-    """A structure's box is read before its Fillet (law_members.md, "Exceptions"): an
+    """A structure's box is read before its Fillet (docs/laws.md, law 3, "Exceptions"): an
     `assert` that holds on it but not on the final outline (the rounded X ends 0.621 mm in)
     was silent; now W0405 at the assert, and none for an assert the rounding does not
     change."""

@@ -1,4 +1,4 @@
-"""Law 1, *the machine makes what was drawn* (issue 109; docs: benchmarks/laws/law_machine.md).
+"""Law 1, *the machine makes what was drawn* (issue 109; docs: docs/laws.md, law machine).
 
 For a program with parts, the router G-code (the built-in router, dogbone reliefs; and a
 T-bone profile) and the laser G-code (the program's kerf) are written as ``aidl render``

@@ -10,7 +10,7 @@ taken on the shape's drawn geometry: the exact curves the booleans draw for it
 ``Mirrored``, the shapes of template instances and of ``Text`` are shapes like any other.
 
 A violation is one line ``name.member: member value vs drawn value`` (mm, the model frame).
-The documented exceptions (``law_members.md``: members that are by definition not the drawn
+The documented exceptions (docs/laws.md (law 3): members that are by definition not the drawn
 outline) are not measured: :data:`NOT_DRAWN`.
 
     python -m benchmarks.laws.run --law members      # over the corpus (helper corpus's runner)
@@ -32,7 +32,7 @@ TOL = 1e-6
 SIDES = ("left", "right", "bottom", "top")
 
 # (kind, member) measured on something else than the drawn outline, by definition (the
-# reasons: law_members.md, "Exceptions")
+# reasons: docs/laws.md, law 3, "Exceptions")
 NOT_DRAWN = {
     ("RoundedRectangle", "top_left"), ("RoundedRectangle", "top_right"),
     ("RoundedRectangle", "bottom_left"), ("RoundedRectangle", "bottom_right"),
@@ -332,7 +332,7 @@ class Measure:
     def _Polygon(self, m):
         # a Polygon's points are its points as written: a point on an edge, or twice, is no
         # drawn corner; each must lie on the outline, each drawn corner be one of them
-        # (its `center`, their mean, is by definition: law_members.md)
+        # (its `center`, their mean, is by definition: docs/laws.md, law 3)
         if m in ("points", "vertices", "corners"):
             return _OnOutline(self.segs)
         return None
@@ -340,7 +340,7 @@ class Measure:
     def _Triangle(self, m):
         if m == "center" and "center" in self.g.points:
             # by base and height: the middle of its height, turned with it; the box's center
-            # at multiples of 90 degrees (law_members.md, "Exceptions")
+            # at multiples of 90 degrees (docs/laws.md, law 3, "Exceptions")
             q = self.g.data.get("rotation", 0.0) / (math.pi / 2)
             if abs(q - round(q)) > 1e-12:
                 return None
