@@ -227,8 +227,9 @@ def test_tools_list_leaves_room_for_two_more_tools_under_5000_tokens(jobs):
     # issue 95 (round six): 4,166 tokens, exactly at the bound; the descriptions unindented,
     # the limits said tighter, alike outputs "as `check`: all its fields": 3,968 (chars / 4),
     # 5 % under it, room for a field or two; issue 101's `work` ({spent, budget}) in every
-    # compiling tool's and import_drawing's result: 3,990
-    assert listed["tokens"] <= 3995 or figures["_counter"] != "characters/4", listed
+    # compiling tool's and import_drawing's result: 3,990; issue 111's `machine` as a
+    # profile's keys (an object in render's schema): 4,006
+    assert listed["tokens"] <= 4010 or figures["_counter"] != "characters/4", listed
     # 7,365 before; 6,801 with the line of `set_params` and `measure`, 6,828 with who moves,
     # 6,845 with `check` with sweep=true; issue 95's transforms, ring_gear, stencil and inside
     # sizes and issue 91's crossing Fillet: 7,046; issue 92's "declare each param's range": 7,069;

@@ -56,7 +56,7 @@ def test_set_is_checked_against_the_range(compile_text, value, ok):
     c = compile_text(RANGED, overrides={"w": value})
     assert c.ok == ok
     if not ok:
-        d = c.sink.items[0]
+        d = next(d for d in c.sink.items if d.is_error)     # (`turns` is W0115: unread)
         assert d.code == "E0124" and f"`--set w={value}`" in d.message
         assert "20 mm .. 80 mm" in d.message
         assert d.span.line == 2                      # points at the declared bound
