@@ -188,3 +188,13 @@ def test_a_slot_narrower_than_the_bit_is_refused(tmp_path, rel, part, at, deep):
     f = ROOT / rel
     assert law.check_program(f.read_text(), str(f), machines=[
         ("router 3 mm", {"kind": "router", "tool_diameter": 2.9})]) == []
+
+
+def test_a_cusped_bezier_is_routed_not_an_internal_error():
+    """The law over the corpus (tests/data/cusped_bezier.aidl, an ezdxf drawing's Beziers with
+    cusps): the router's offset met a line of no length and `aidl render --machine router`
+    was an internal error (ZeroDivisionError).  The line is left out; the law holds."""
+    from benchmarks.laws.corpus import Entry
+    p = ROOT / "tests" / "data" / "cusped_bezier.aidl"
+    e = Entry(name="cusped", source=p.read_text(), path=str(p), overrides={}, kind="tests")
+    assert law.check(e) == []

@@ -98,6 +98,14 @@ def offset_loop(loop: Loop, d: float, keep=()) -> Loop:
     keep = frozenset(keep)
     if d == 0 or not segs or len(keep) >= len(segs):
         return loop
+    if any(isinstance(g, Line) and g.start == g.end for g in segs):
+        # a line of no length (a cusp of an imported Bezier: its handles on its ends) has
+        # no direction to offset along: left out, the lines either side meet without it
+        idx = [k for k, g in enumerate(segs) if not (isinstance(g, Line) and g.start == g.end)]
+        keep = frozenset(i for i, k in enumerate(idx) if k in keep)
+        segs = [segs[k] for k in idx]
+        if not segs or len(keep) >= len(segs):
+            return Loop(segs) if segs else loop
     if len(segs) == 1 and isinstance(segs[0], Circle):
         return Loop([_right(segs[0], d)])
     n = len(segs)
