@@ -158,6 +158,16 @@ here, numbers that give no shape), in `Drawing2D` and `aidl import` alike.
 
     board = Drawing2D("board.dxf", layer="Edge_Cuts")   # did you mean `Edge.Cuts`?
 """),
+    "E0133": ("font cannot be found or read", """
+`Text(..., font=...)` names a font that cannot be had: a family that is not installed (the
+hint lists the families found: `"sans"` and `"serif"`, which install with the package, every
+`fontpkg-*` family installed from PyPI, and, where fontconfig is present, the families it
+knows), a style word that is no weight or slant, a weight the family lacks, or a `.ttf`,
+`.otf` or `.ttc` file that is missing, outside the program's folder tree, larger than
+50000000 bytes or not a font fontTools can read.
+
+    t = Text("HAPPY", position=(0, 0), size=20, font="Comic Sans")   # not installed: "sans"
+"""),
     "E0116": ("top-level statement inside a structure", """
 `param`, `def`, `import` and `units` belong at the top level of a file.
 """),

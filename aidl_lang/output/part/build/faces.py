@@ -226,7 +226,7 @@ class Faces:
         clockwise (a shape made by Offset or Shell may have several; others have one)."""
         if g.kind == "Drawing2D":
             return self.drawing2d(g)[0]
-        if g.kind == "Text" and g.data.get("stencil"):
+        if g.kind == "Text" and (g.data.get("stencil") or g.data.get("font")):
             sec = self.face(g)
             return self.exact.loops(sec) if sec is not None else []
         if g.kind in DERIVED:
@@ -387,7 +387,30 @@ class Faces:
         band = self.union(pieces)
         return base + band if d > 0 else base - band
 
+    def font_text(self, g: Geometry) -> tuple[list[Loop], list[Loop]]:
+        """The exact loops of a Text in a font at its solved position (outer loops
+        counter-clockwise; glyphs may overlap) and, for a stencil, its bridges."""
+        from ....geometry.shapes.drawing2d import moved
+        from ....geometry.shapes.text_outlines import bridges, local_loops
+        ox, oy = self._pt(g.points["position"])
+        loops = [Loop(moved(lp.segments, ox, oy)) for lp in local_loops(g)]
+        for lp in loops:
+            for sg in lp.segments:
+                if isinstance(sg, Spline):
+                    self.spline_source.setdefault(sg.curve, g)
+        held = [Loop(moved(lp.segments, ox, oy)) for lp in bridges(g)] \
+            if g.data.get("stencil") else []
+        return loops, held
+
     def face(self, g: Geometry, s: Structure | None = None) -> mf.CrossSection | None:
+        if g.kind == "Text" and g.data.get("font"):       # the letters' outlines (issue 112)
+            if id(g) not in self.derived:
+                loops, held = self.font_text(g)
+                sec = self.exact.section(loops)
+                if held:
+                    sec = sec - self.exact.section(held)
+                self.derived[id(g)] = None if sec.is_empty() else sec
+            return self.derived[id(g)]
         if g.kind == "Text" and g.data.get("stencil"):    # the letters' openings (issue 95)
             from .stencil import stencil_section
             return stencil_section(self, g, self.P(g.points["position"]))

@@ -1,0 +1,111 @@
+"""``Text(..., font=...)`` built (issue 112): the letters as the closed outlines of a font
+(:mod:`.font`), held in the text's own frame and placed at the solved position point.
+
+What a font Text keeps in ``g.data``: ``font`` (the :class:`~.font.Face`), ``text``, ``size``
+(the cap height drawn, mm), ``anchor``, ``valign``, ``rotation`` (radians), ``extent`` (the
+glyphs' true box about the position, turned: ``(x0, x1, y0, y1)`` mm), and for a stencil
+``bridge`` (mm).  :func:`local_loops` gives its exact loops about the position point, turned
+(outer loops counter-clockwise; glyphs may overlap: the filled area is where the winding is
+positive); :func:`bridges` the stencil's bridges over each counter.
+"""
+from __future__ import annotations
+
+from . import font as F
+from .curves import Line, Loop
+from .primitives import PrimitiveError
+
+
+def build_font_text(ctx, g, a, const) -> None:
+    """The rest of ``Text``'s build when ``font=`` is given (``a["_font"]``: the face the
+    interpreter found): max_width fitted by the font's advances and ink, a stencil's bridge,
+    the extent; along= and weight= refused (E0108)."""
+    face = a["_font"]
+    if a.get("along") is not None:
+        raise PrimitiveError("a Text in a font is written on a straight baseline (along= lays "
+                             "out the single-stroke font only)",
+                             hint="leave out along= (turn the text with rotation=), or leave "
+                                  "out font= to engrave it along the curve")
+    if a.get("weight") is not None:
+        raise PrimitiveError("a Text in a font has the font's own stroke weight: weight= is "
+                             "the single-stroke stencil's",
+                             hint="choose a heavier style instead, e.g. `font=\"sans:Bold\"` "
+                                  "or `\"sans:Black\"`")
+    g.data["font"] = face
+    text, size = g.data["text"], g.data["size"]
+    if not size > 0:
+        raise PrimitiveError(f"a Text needs a positive size, got {size:g}")
+    try:
+        if a.get("max_width") is not None:
+            m = const(ctx, a["max_width"], "max_width")
+            if not m > 0:
+                raise PrimitiveError(f"a Text's max_width is more than 0, got {m:g} mm")
+            fit, wide = F.fit_size(face, text, size, m)
+            g.data["max_width"] = m
+            if fit < size:
+                g.data["shrunk"] = (size, wide)
+                g.data["size"] = size = fit
+        if a.get("stencil"):
+            b = a.get("bridge")
+            g.data["bridge"] = size / 10 if b is None else const(ctx, b, "bridge")
+            if not g.data["bridge"] > 0:
+                raise PrimitiveError(f"a stencil Text's bridge is more than 0, got "
+                                     f"{g.data['bridge']:g}")
+            g.data["stencil"] = True
+        g.data["extent"] = F.extent(face, text, size, g.data["anchor"], g.data["valign"],
+                                    g.data["rotation"])
+    except F.FontError as ex:
+        raise PrimitiveError(str(ex), hint=ex.hint) from None
+    g.closed = True
+
+
+def local_loops(g) -> list[Loop]:
+    """The exact loops of font Text ``g`` about its position point, turned by its rotation
+    (mm)."""
+    d = g.data
+    loops = F.outlines(d["font"], d["text"], d["size"], d["anchor"], d["valign"])
+    return _turned(loops, d.get("rotation", 0.0))
+
+
+def _turned(loops, rot: float) -> list[Loop]:
+    if not rot:
+        return list(loops)
+    from .drawing2d import copied
+    return copied(loops, [], rot)[0]
+
+
+def bridges(g) -> list[Loop]:
+    """A stencil font Text's bridges about its position, turned: over each counter (a loop
+    that winds negatively: the inside of an O, A, B, P, 0, 4, 6, 8, 9) a band ``bridge`` mm
+    wide, upright through the counter's middle across its whole glyph, so that the counter
+    stays joined to the plate above and below it (counter-clockwise rectangles)."""
+    d = g.data
+    loops = F.outlines(d["font"], d["text"], d["size"], d["anchor"], d["valign"])
+    sh = F.shaped(d["font"], d["text"], d["size"])
+    h = d["bridge"] / 2
+    out = []
+    for _, idx, _ in sh.glyphs:
+        mine = [loops[i] for i in idx]
+        counters = [lp for lp in mine if lp.area < 0]
+        if not counters:
+            continue
+        boxes = [s.box() for lp in mine for s in lp.segments]
+        y0 = min(b[1] for b in boxes) - 2 * h
+        y1 = max(b[3] for b in boxes) + 2 * h
+        for lp in counters:
+            cb = [s.box() for s in lp.segments]
+            cx = (min(b[0] for b in cb) + max(b[2] for b in cb)) / 2
+            p = [(cx - h, y0), (cx + h, y0), (cx + h, y1), (cx - h, y1)]
+            out.append(Loop([Line(p[i], p[(i + 1) % 4]) for i in range(4)]))
+    return _turned(out, d.get("rotation", 0.0))
+
+
+def counter_letters(g) -> list[str]:
+    """The characters of a font Text whose glyphs have counters (loops that wind
+    negatively), each once, in order: what falls out of a plate the text is cut from."""
+    d = g.data
+    sh = F.shaped(d["font"], d["text"], d["size"])
+    out: list[str] = []
+    for chars, idx, _ in sh.glyphs:
+        if any(sh.loops[i].area < 0 for i in idx) and chars not in out:
+            out.append(chars)
+    return out
