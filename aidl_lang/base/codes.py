@@ -194,7 +194,9 @@ Text is drawn as single-stroke lines, so it belongs in a `drawing` structure:
     }
 
 To cut the letters out (a stencil, bridged), write `stencil=true` and put it in a hole:
-`hole letters { t = Text("HELLO", position=(0, 0), size=30, stencil=true) }`.
+`hole letters { t = Text("HELLO", position=(0, 0), size=30, stencil=true) }`. A Text in a
+font (`font="sans"`: the letters' closed outlines) stands in a solid (material), a hole
+(openings) or a drawing (engraved outlines); in a `cut` or an `assembly` it is E0120.
 """),
     "E0124": ("param value outside its range", """
 A param may declare the range its value is meant to take (used by `aidl serve` for its

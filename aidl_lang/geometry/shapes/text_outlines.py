@@ -12,49 +12,45 @@ from __future__ import annotations
 
 from . import font as F
 from .curves import Line, Loop
-from .primitives import PrimitiveError
 
 
 def build_font_text(ctx, g, a, const) -> None:
     """The rest of ``Text``'s build when ``font=`` is given (``a["_font"]``: the face the
     interpreter found): max_width fitted by the font's advances and ink, a stencil's bridge,
-    the extent; along= and weight= refused (E0108)."""
+    the extent; along= and weight= refused (:class:`~.font.FontError`, E0108 at the call)."""
     face = a["_font"]
     if a.get("along") is not None:
-        raise PrimitiveError("a Text in a font is written on a straight baseline (along= lays "
-                             "out the single-stroke font only)",
-                             hint="leave out along= (turn the text with rotation=), or leave "
-                                  "out font= to engrave it along the curve")
+        raise F.FontError("a Text in a font is written on a straight baseline (along= lays "
+                          "out the single-stroke font only)",
+                          hint="leave out along= (turn the text with rotation=), or leave "
+                               "out font= to engrave it along the curve")
     if a.get("weight") is not None:
-        raise PrimitiveError("a Text in a font has the font's own stroke weight: weight= is "
-                             "the single-stroke stencil's",
-                             hint="choose a heavier style instead, e.g. `font=\"sans:Bold\"` "
-                                  "or `\"sans:Black\"`")
+        raise F.FontError("a Text in a font has the font's own stroke weight: weight= is "
+                          "the single-stroke stencil's",
+                          hint="choose a heavier style instead, e.g. `font=\"sans:Bold\"` "
+                               "or `\"sans:Black\"`")
     g.data["font"] = face
     text, size = g.data["text"], g.data["size"]
     if not size > 0:
-        raise PrimitiveError(f"a Text needs a positive size, got {size:g}")
-    try:
-        if a.get("max_width") is not None:
-            m = const(ctx, a["max_width"], "max_width")
-            if not m > 0:
-                raise PrimitiveError(f"a Text's max_width is more than 0, got {m:g} mm")
-            fit, wide = F.fit_size(face, text, size, m)
-            g.data["max_width"] = m
-            if fit < size:
-                g.data["shrunk"] = (size, wide)
-                g.data["size"] = size = fit
-        if a.get("stencil"):
-            b = a.get("bridge")
-            g.data["bridge"] = size / 10 if b is None else const(ctx, b, "bridge")
-            if not g.data["bridge"] > 0:
-                raise PrimitiveError(f"a stencil Text's bridge is more than 0, got "
-                                     f"{g.data['bridge']:g}")
-            g.data["stencil"] = True
-        g.data["extent"] = F.extent(face, text, size, g.data["anchor"], g.data["valign"],
-                                    g.data["rotation"])
-    except F.FontError as ex:
-        raise PrimitiveError(str(ex), hint=ex.hint) from None
+        raise F.FontError(f"a Text needs a positive size, got {size:g}")
+    if a.get("max_width") is not None:
+        m = const(ctx, a["max_width"], "max_width")
+        if not m > 0:
+            raise F.FontError(f"a Text's max_width is more than 0, got {m:g} mm")
+        fit, wide = F.fit_size(face, text, size, m)
+        g.data["max_width"] = m
+        if fit < size:
+            g.data["shrunk"] = (size, wide)
+            g.data["size"] = size = fit
+    if a.get("stencil"):
+        b = a.get("bridge")
+        g.data["bridge"] = size / 10 if b is None else const(ctx, b, "bridge")
+        if not g.data["bridge"] > 0:
+            raise F.FontError(f"a stencil Text's bridge is more than 0, got "
+                                 f"{g.data['bridge']:g}")
+        g.data["stencil"] = True
+    g.data["extent"] = F.extent(face, text, size, g.data["anchor"], g.data["valign"],
+                                g.data["rotation"])
     g.closed = True
 
 
