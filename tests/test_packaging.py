@@ -220,6 +220,29 @@ def test_the_installed_wheel_has_the_studio_gallery(plain_install, tmp_path):
 
 
 @pytest.mark.slow
+def test_the_installed_wheel_draws_text_in_the_default_fonts(plain_install, tmp_path):
+    """`font="sans"` and `font="serif:Bold"` work on a fresh install (issue 112): the default
+    families come with the wheel's dependencies from PyPI (fontpkg-noto-sans, -serif), found
+    in the venv, not in this checkout or the system; "HAPPY" in a solid is 5 letters, 8 loops."""
+    venv, _ = plain_install
+    probe = ("import json, aidl_lang\nfrom aidl_lang.geometry.shapes import font as F\n"
+             "out = {}\nfor f in ('sans', 'serif:Bold'):\n"
+             "    r = aidl_lang.compile(source='solid w { t = Text(\"HAPPY\", position=(0, 0), "
+             "size=20, font=\"' + f + '\") }')\n"
+             "    [p] = r.output.parts\n"
+             "    out[f] = [sum(lp.area > 0 for lp in p.loops), len(p.loops), "
+             "F.resolve(f).path]\nprint(json.dumps(out))")
+    r = subprocess.run([str(venv / "bin" / "python"), "-c", probe], capture_output=True,
+                       text=True, timeout=300, cwd=tmp_path, env=WHEEL_ENV)
+    assert r.returncode == 0, r.stderr[-3000:]
+    got = json.loads(r.stdout)
+    for f in ("sans", "serif:Bold"):
+        pieces, loops, path = got[f]
+        assert (pieces, loops) == (5, 8)
+        assert Path(path).is_relative_to(venv), path
+
+
+@pytest.mark.slow
 @pytest.mark.parametrize("ext", [".svg", ".dxf", ".stl"])
 def test_the_installed_wheel_renders_an_example_that_imports_the_stdlib(plain_install, ext,
                                                                          tmp_path):
