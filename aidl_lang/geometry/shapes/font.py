@@ -62,11 +62,12 @@ def parse_style(style: str) -> tuple[int | None, bool]:
     """``(weight 1-1000 or None, italic)`` of a style such as ``"Bold Italic"`` or ``"650"``;
     raises :class:`FontError` naming a word it does not know."""
     weight, italic = None, False
-    words = style.replace("-", " ").replace("_", " ").lower().split()
-    joined = "".join(words)
+    said = style.replace("-", " ").replace("_", " ").split()
+    joined = "".join(said).lower()
     if joined in WEIGHTS:
         return WEIGHTS[joined], False
-    for w in words:
+    for w0 in said:
+        w = w0.lower()
         if w in ("italic", "oblique"):
             italic = True
         elif w in WEIGHTS:
@@ -74,7 +75,7 @@ def parse_style(style: str) -> tuple[int | None, bool]:
         elif w.isdigit() and 1 <= int(w) <= 1000:
             weight = int(w)
         else:
-            raise FontError(f"font style `{style}`: `{w}` is no weight or slant",
+            raise FontError(f"font style `{style}`: `{w0}` is no weight or slant",
                             hint="a style is weight words (Thin, Light, Regular, Medium, "
                                  "SemiBold, Bold, Black or a number 100-900) and Italic, "
                                  "e.g. `font=\"sans:Bold Italic\"`")
