@@ -304,3 +304,24 @@ solid w {
     top = r.values.get("w.t.bb.top") if hasattr(r.values, "get") else None
     if top is not None:
         assert float(top) == pytest.approx(P[:, 1].max(), abs=1e-6)
+
+
+def test_turned_copies_keep_their_own_box():
+    """A CircularPattern of a font Text: each turned copy's box is its own turned glyphs' (the
+    letters W0504 names are found in every piece, not only the original's)."""
+    src = """units mm
+solid s {
+    hub = Circle(center=(0, 0), radius=30)
+    t = Text("HI", position=(0, 32), size=8, font="sans", valign="bottom")
+    CircularPattern(t, count=4, center=(0, 0))
+}
+"""
+    r = _compile(src)
+    [w] = [d for d in r.diagnostics if d.code == "W0504"]
+    assert "9 separate pieces" in w.message                  # the hub and 8 letters
+    groups = w.message.split(": ", 1)[1].split("; ")[:6]
+    assert all('("H")' in g or '("I")' in g for g in groups), groups
+    outer, _ = _loops(r)
+    boxes = [(lp.points()[:, 0].min(), lp.points()[:, 1].min()) for lp in outer]
+    # the copy a quarter turn round: its letters lie left of the hub, x from -40 to -32
+    assert any(abs(x + 40) < 1e-6 for x, _ in boxes)

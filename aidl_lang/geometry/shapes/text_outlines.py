@@ -54,6 +54,14 @@ def build_font_text(ctx, g, a, const) -> None:
     g.closed = True
 
 
+def turned_extent(g) -> tuple[float, float, float, float]:
+    """``(x0, x1, y0, y1)``: the glyphs' true box of font Text ``g`` about its position at
+    its own rotation (a turned copy's, mm)."""
+    d = g.data
+    return F.extent(d["font"], d["text"], d["size"], d["anchor"], d["valign"],
+                    d.get("rotation", 0.0))
+
+
 def local_loops(g) -> list[Loop]:
     """The exact loops of font Text ``g`` about its position point, turned by its rotation
     (mm)."""
