@@ -197,6 +197,14 @@ def test_the_installed_wheel_knows_its_version_and_is_not_this_checkout(plain_in
     assert Path(r.stdout.strip()).is_relative_to(venv), r.stdout + r.stderr
 
 
+def _probe(venv: Path, code: str, cwd: Path):
+    """What the Python program ``code`` prints as JSON, run by the wheel's venv in ``cwd``."""
+    r = subprocess.run([str(venv / "bin" / "python"), "-c", code], capture_output=True,
+                       text=True, timeout=300, cwd=cwd, env=WHEEL_ENV)
+    assert r.returncode == 0, r.stderr[-3000:]
+    return json.loads(r.stdout)
+
+
 @pytest.mark.slow
 def test_the_installed_wheel_has_the_studio_gallery(plain_install, tmp_path):
     """The gallery reads the examples shipped inside the wheel: the same entries as in this
@@ -208,10 +216,7 @@ def test_the_installed_wheel_has_the_studio_gallery(plain_install, tmp_path):
              " 'ok': g.compile_entry(e).ok, 'svg': '<path' in g.thumbnail(e),"
              " 'rows': [p['name'] for p in e.params],"
              " 'form': 'ring=sun + 2 * planet' in g.entry('generator/planetary').source}))")
-    r = subprocess.run([str(venv / "bin" / "python"), "-c", probe], capture_output=True,
-                       text=True, timeout=300, cwd=tmp_path, env=WHEEL_ENV)
-    assert r.returncode == 0, r.stderr[-3000:]
-    got = json.loads(r.stdout)
+    got = _probe(venv, probe, tmp_path)
     from aidl_lang.studio import gallery
     assert got["ids"] == [e.id for e in gallery.entries()]
     assert Path(got["where"]).is_relative_to(venv)
@@ -232,10 +237,7 @@ def test_the_installed_wheel_draws_text_in_the_default_fonts(plain_install, tmp_
              "    [p] = r.output.parts\n"
              "    out[f] = [sum(lp.area > 0 for lp in p.loops), len(p.loops), "
              "F.resolve(f).path]\nprint(json.dumps(out))")
-    r = subprocess.run([str(venv / "bin" / "python"), "-c", probe], capture_output=True,
-                       text=True, timeout=300, cwd=tmp_path, env=WHEEL_ENV)
-    assert r.returncode == 0, r.stderr[-3000:]
-    got = json.loads(r.stdout)
+    got = _probe(venv, probe, tmp_path)
     for f in ("sans", "serif:Bold"):
         pieces, loops, path = got[f]
         assert (pieces, loops) == (5, 8)

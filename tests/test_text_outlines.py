@@ -325,3 +325,20 @@ solid s {
     boxes = [(lp.points()[:, 0].min(), lp.points()[:, 1].min()) for lp in outer]
     # the copy a quarter turn round: its letters lie left of the hub, x from -40 to -32
     assert any(abs(x + 40) < 1e-6 for x, _ in boxes)
+
+
+def test_a_letter_thinner_than_the_wall_is_named():
+    """Letters in a thin style at a small size: W0507 names the Text and the letter whose
+    stroke is too thin, and its fix is a heavier style or a larger size (not `widen`)."""
+    src = """units mm
+solid s {
+    t = Text("HELLO", position=(0, 0), size=6, font="sans:Thin")
+    rail = Rectangle(center=(t.center.x, -0.5 mm), width=t.bb.width, height=1.5 mm)
+}
+"""
+    r = _compile(src)
+    walls = [d for d in r.diagnostics if d.code == "W0507"]
+    assert walls and all("Text `s.t` (its \"" in d.message for d in walls)
+    named = {d.message.split('(its "')[1][0] for d in walls}
+    assert named <= set("HELO") and len(named) >= 2
+    assert all("heavier" in d.hint and "sans:Bold" in d.hint for d in walls)

@@ -52,3 +52,22 @@ def fallen_counters(d, holes) -> tuple[list[str], list]:
                     texts.append(g)
                 letters += [c for c in got if c not in letters]
     return letters, texts
+
+
+def letter_at(d, g, x: float, y: float) -> str:
+    """`` (its "L")``: the letter of font Text ``g`` whose glyph box holds ``(x, y)`` (the
+    nearest box's when none does), placed by the text's face in ``d``; empty for any other
+    geometry or when the face is not found."""
+    if getattr(g, "kind", None) != "Text" or not g.data.get("font"):
+        return ""
+    face = next((f for faces in d.own.values() for h, f in faces if h is g), None)
+    if face is None or face.is_empty():
+        return ""
+    boxes = _glyph_boxes(g, face.bounds())
+    if not boxes:
+        return ""
+
+    def far(b):
+        x0, y0, x1, y1 = b[1]
+        return max(x0 - x, 0.0, x - x1) ** 2 + max(y0 - y, 0.0, y - y1) ** 2
+    return f" (its \"{min(boxes, key=far)[0]}\")"
