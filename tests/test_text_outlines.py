@@ -342,3 +342,43 @@ solid s {
     named = {d.message.split('(its "')[1][0] for d in walls}
     assert named <= set("HELO") and len(named) >= 2
     assert all("heavier" in d.hint and "sans:Bold" in d.hint for d in walls)
+
+
+def test_text_in_a_font_along_a_circle():
+    """`along=` lays a font's letters round a circle as it lays the single-stroke font's:
+    each glyph upright on the circle, "AIDL" over the top on its baseline, "2026" read under
+    it (flip=true, the letters' up toward the center); a text longer than the circle is
+    W0111."""
+    src = """units mm
+solid seal {
+    disc = Circle(center=(0, 0), radius=40)
+    drawing marks {
+        ring = Circle(center=(0, 0), radius=30, construction=true)
+        top = Text("AIDL", along=ring, size=8, font="sans")
+        bottom = Text("2026", along=ring, size=8, font="sans", flip=true, valign="top")
+    }
+}
+"""
+    r = _compile(src)
+    assert _codes(r) == []
+    by = {}
+    for s in r.output.engrave:
+        pts = np.vstack([np.asarray(Loop_points(s))])
+        by.setdefault(s.source.rsplit(".", 1)[-1], []).append(pts)
+    top, bottom = np.vstack(by["top"]), np.vstack(by["bottom"])
+    rt, rb = np.hypot(*top.T), np.hypot(*bottom.T)
+    assert rt.min() > 30 - 1e-6 and rt.max() < 38.3           # baseline on the circle, caps out
+    # flip: up toward the center; valign="top" puts the cap line on the circle, the baseline
+    # 8 mm out (as the single-stroke font lays it)
+    assert rb.min() > 30 - 0.3 and rb.max() < 38 + 0.3
+    assert top[:, 1].min() > 0 and bottom[:, 1].max() < 0     # over the top, under the bottom
+    assert abs(top[:, 0].mean()) < 3 and abs(bottom[:, 0].mean()) < 3
+    long = src.replace('"AIDL"', '"' + "AIDL " * 8 + '"')
+    r = aidl_lang.compile(source=long)
+    assert "W0111" in [d.code for d in r.diagnostics]
+
+
+def Loop_points(stroke):
+    """The points of an engraved stroke's exact segments (each sampled)."""
+    from aidl_lang.geometry.shapes.curves import Loop
+    return Loop(list(stroke.segments)).points()

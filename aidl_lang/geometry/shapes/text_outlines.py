@@ -19,11 +19,9 @@ def build_font_text(ctx, g, a, const) -> None:
     interpreter found): max_width fitted by the font's advances and ink, a stencil's bridge,
     the extent; along= and weight= refused (:class:`~.font.FontError`, E0108 at the call)."""
     face = a["_font"]
-    if a.get("along") is not None:
-        raise F.FontError("a Text in a font is written on a straight baseline (along= lays "
-                          "out the single-stroke font only)",
-                          hint="leave out along= (turn the text with rotation=), or leave "
-                               "out font= to engrave it along the curve")
+    if a.get("along") is not None and a.get("stencil"):
+        raise F.FontError("a stencil Text is written on a straight baseline: leave out "
+                          "along=, or cut the letters along the curve without stencil=")
     if a.get("weight") is not None:
         raise F.FontError("a Text in a font has the font's own stroke weight: weight= is "
                           "the single-stroke stencil's",
@@ -49,9 +47,42 @@ def build_font_text(ctx, g, a, const) -> None:
             raise F.FontError(f"a stencil Text's bridge is more than 0, got "
                                  f"{g.data['bridge']:g}")
         g.data["stencil"] = True
-    g.data["extent"] = F.extent(face, text, size, g.data["anchor"], g.data["valign"],
-                                g.data["rotation"])
+    if g.data.get("along") is not None:      # its box at the curve's starting radius
+        ang = g.data["angle"] if g.data["angle"] is not None else g.data["start_angle"]
+        bs = [sg.box() for lp in along_loops(g, g.data["radius0"], ang) for sg in lp.segments]
+        g.data["extent"] = ((min(b[0] for b in bs), max(b[2] for b in bs),
+                             min(b[1] for b in bs), max(b[3] for b in bs)) if bs else
+                            (0.0, 0.0, 0.0, 0.0))
+    else:
+        g.data["extent"] = F.extent(face, text, size, g.data["anchor"], g.data["valign"],
+                                    g.data["rotation"])
     g.closed = True
+
+
+def along_loops(g, r: float, angle: float) -> list[Loop]:
+    """The loops of font Text ``g`` laid along a circle of radius ``r`` mm about its center
+    (the loops relative to it), as the single-stroke font is laid
+    (:func:`~.text.text_strokes_along`): clockwise, each glyph rigid and upright (its up away
+    from the center; ``flip``: counter-clockwise, up toward it), its middle on the circle at
+    the arc length of its middle in the straight text, the text's position point (anchor,
+    valign) at ``angle`` (radians)."""
+    import math
+    from .drawing2d import copied, moved
+    d = g.data
+    sh = F.shaped(d["font"], d["text"], d["size"])
+    dx, dy = F.placement(sh, d["anchor"], d["valign"])
+    sg = -1.0 if d.get("flip") else 1.0
+    out: list[Loop] = []
+    pen = 0.0
+    for _, idx, adv in sh.glyphs:
+        mid = pen + adv / 2 + dx
+        t = angle - sg * mid / r
+        tg = (sg * math.sin(t), -sg * math.cos(t))
+        here = [Loop(moved(sh.loops[i].segments, dx - mid, dy)) for i in idx]
+        here = copied(here, [], math.atan2(tg[1], tg[0]))[0]
+        out += [Loop(moved(lp.segments, r * math.cos(t), r * math.sin(t))) for lp in here]
+        pen += adv
+    return out
 
 
 def turned_extent(g) -> tuple[float, float, float, float]:

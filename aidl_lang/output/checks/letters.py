@@ -11,7 +11,7 @@ def _glyph_boxes(g, bounds) -> list[tuple[str, tuple]]:
     from ...geometry.shapes.text_outlines import _turned
     d = g.data
     ex = d.get("extent")
-    if ex is None:
+    if ex is None or d.get("along") is not None:      # (along a curve: not named)
         return []
     dx, dy = bounds[0] - ex[0], bounds[1] - ex[2]
     loops = _turned(F.outlines(d["font"], d["text"], d["size"], d["anchor"], d["valign"]),

@@ -393,7 +393,29 @@ class Faces:
         from ....geometry.shapes.drawing2d import moved
         from ....geometry.shapes.text_outlines import bridges, local_loops
         ox, oy = self._pt(g.points["position"])
-        loops = [Loop(moved(lp.segments, ox, oy)) for lp in local_loops(g)]
+        along = g.data.get("along")
+        if along is not None:             # about the curve's solved center and radius
+            from ....geometry.shapes import font as F
+            flip = bool(g.data.get("flip"))
+            if along.kind == "Arc":
+                arc = self.segment(along)
+                (ox, oy), r, mid = arc.center, arc.radius, arc.start_angle + arc.sweep / 2
+            else:
+                r = float(abs(self.x[along.scalars["radius"].index]))
+                mid = -math.pi / 2 if flip else math.pi / 2
+            ang = g.data.get("angle")
+            from ....geometry.shapes.text_outlines import along_loops
+            local = along_loops(g, r, mid if ang is None else ang)
+            wide = F.width(F.shaped(g.data["font"], g.data["text"], g.data["size"]))
+            if wide > 2 * math.pi * r and not any(e[0] is g for e in self.shape_errors):
+                self.shape_errors.append((g, (
+                    f"text `{g.label}` is {wide:.4g} mm long along a circle only "
+                    f"{2 * math.pi * r:.4g} mm around (radius {r:.4g} mm): its last letters "
+                    "run round onto its first ones"), "use a smaller size, a larger circle "
+                    "or a shorter text", "W0111"))
+        else:
+            local = local_loops(g)
+        loops = [Loop(moved(lp.segments, ox, oy)) for lp in local]
         for lp in loops:
             for sg in lp.segments:
                 if isinstance(sg, Spline):
