@@ -126,10 +126,12 @@ def _slug(name: str) -> str:
     return "-".join(name.strip().lower().replace("_", " ").split())
 
 
+@lru_cache(maxsize=64)
 def resolve(spec: str) -> Face:
     """The :class:`Face` of a family ``font=`` (not a path: the interpreter reads those):
     the built-in ``sans``/``serif``, an installed ``fontpkg`` family, else fontconfig's
-    (``fc-match``) when it knows the family by that name.  Raises :class:`FontError`."""
+    (``fc-match``) when it knows the family by that name (kept per process: a family
+    installed while it runs is found by the next).  Raises :class:`FontError`."""
     name, style = split_spec(spec)
     weight, italic = parse_style(style) if style else (None, False)
     fam_name = DEFAULT_FAMILIES.get(name.lower(), name)
