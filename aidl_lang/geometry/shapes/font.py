@@ -372,12 +372,14 @@ def _shape(font: _Font, text: str) -> list[tuple]:
     """HarfBuzz's glyphs of ``text``: ``(glyph id, cluster, x, y, x_advance)`` in font units,
     the pen running left to right (a right-to-left run is given in visual order)."""
     import uharfbuzz as hb
+    if not text:
+        return []
     buf = hb.Buffer()
     buf.add_str(text)
     buf.guess_segment_properties()
     hb.shape(font.hb, buf, {"kern": True, "liga": True})
     out, pen_x, pen_y = [], 0.0, 0.0
-    for info, pos in zip(buf.glyph_infos, buf.glyph_positions):
+    for info, pos in zip(buf.glyph_infos or (), buf.glyph_positions or ()):
         out.append((info.codepoint, info.cluster, pen_x + pos.x_offset, pen_y + pos.y_offset,
                     pos.x_advance))
         pen_x += pos.x_advance
@@ -459,7 +461,10 @@ def shaped(face: Face, text: str, size: float) -> Shaped:
     area = 0.0
     cache: dict = {}
     for i, (gid, cluster, x, y, adv) in enumerate(glyphs):
-        name = font.order[gid] if gid < len(font.order) else ".notdef"
+        if gid == 0 or gid >= len(font.order):      # no glyph (W0105): left out, its
+            info.append((text[cluster:cluster + 1], (), adv * k))   # advance kept
+            continue
+        name = font.order[gid]
         if name not in cache:
             cache[name] = font.contours(name)
         chars = _cluster_chars(text, cluster, glyphs, i)

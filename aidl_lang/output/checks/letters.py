@@ -27,15 +27,17 @@ def _glyph_boxes(g, bounds) -> list[tuple[str, tuple]]:
 
 
 def letters_in(g, face, piece) -> str:
-    """`` ("HA")``: the letters of font Text ``g`` (its face ``face``) inside ``piece`` (a
-    CrossSection) by their boxes; empty for any other geometry."""
+    """`` ("HA")``: the letters of font Text ``g`` (its face ``face``) in ``piece`` (a
+    CrossSection) by their boxes: each whose box's middle is in the piece's box, or whose box
+    holds the piece's middle (the dot of an i, an accent); empty for any other geometry."""
     if getattr(g, "kind", None) != "Text" or not g.data.get("font"):
         return ""
     b = piece.bounds()
-    tol = 1e-6 * max(1.0, *(abs(v) for v in b))
+    px, py = (b[0] + b[2]) / 2, (b[1] + b[3]) / 2
     chars = [c for c, (x0, y0, x1, y1) in _glyph_boxes(g, face.bounds())
-             if x0 >= b[0] - tol and y0 >= b[1] - tol and x1 <= b[2] + tol and y1 <= b[3] + tol]
-    return f" (\"{''.join(chars)}\")" if chars else ""
+             if (b[0] <= (x0 + x1) / 2 <= b[2] and b[1] <= (y0 + y1) / 2 <= b[3])
+             or (x0 <= px <= x1 and y0 <= py <= y1)]     # its middle in the piece, or the
+    return f" (\"{''.join(chars)}\")" if chars else ""  # piece's in its box (an accent)
 
 
 def fallen_counters(d, holes) -> tuple[list[str], list]:
