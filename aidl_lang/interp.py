@@ -30,7 +30,7 @@ from .interpreter.common import BudgetExhausted, FileCtx, Scope
 from .interpreter.expressions import Expressions
 from .interpreter.statements import Statements
 from .base.limits import (DEFAULT_BUDGET, MAX_GEOMETRY, MAX_ITER, MAX_TEMPLATE_DEPTH, WALL_GUARD, Budget,
-                     Work, cpu_text, interp_work, now, wall_text)
+                     Work, cpu_text, interp_work, now, started, wall_text)
 from .base.memory import gc_paused
 from .library.sources import STDLIB
 
@@ -58,6 +58,7 @@ class Interpreter(Statements, Calls, Expressions):
         # objects and sizes below decide; these only stop what they do not count
         self.deadline = deadline if deadline is not None else now() + budget.backstop
         self.wall_end = time.monotonic() + WALL_GUARD * budget.seconds
+        self.started = started()            # what the wall guard's message measures from
         # the compile's work meter: the steps and objects are added to it when the run ends
         self.work = work
         self.steps = 0
@@ -131,7 +132,8 @@ class Interpreter(Statements, Calls, Expressions):
             raise BudgetExhausted(cpu_text(self.budget.backstop), span or self.cur_span,
                                   self.frames)
         if time.monotonic() > self.wall_end:
-            raise BudgetExhausted(wall_text(self.budget.seconds), span or self.cur_span,
+            raise BudgetExhausted(wall_text(self.budget.seconds, self.started),
+                                  span or self.cur_span,
                                   self.frames)
 
     def count_object(self, span=None) -> None:

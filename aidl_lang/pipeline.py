@@ -25,7 +25,7 @@ from .geometry.core.model import Model
 from .parser import parse
 from .output.part.build.booleans import Drawing, render_model
 from .output.checks import check_drawing, check_stray_holes, check_topology, topology
-from .output.checks.boxes import check_final_boxes
+from .output.checks.boxes import check_drawn_boxes, check_final_box_asserts, check_final_boxes
 from .solver import SolveResult, solve
 
 # the shape findings said as notes, not warnings: a design may mean them (W0410: a Fillet of
@@ -349,6 +349,8 @@ def after_solve(sink: DiagnosticSink, model: Model, min_wall: float | None = Non
                     sink.add(Diagnostic(code, message, g.span, severity, hint=hint),
                              calls=instance_calls(g.owner))
                 check_final_boxes(sink, model, drawing, instance_calls)
+                check_drawn_boxes(sink, model, instance_calls)
+                check_final_box_asserts(sink, model, drawing, instance_calls)
                 check_stray_holes(sink, drawing, deadline)
                 if shape_checks:
                     stage = "the shape checks"

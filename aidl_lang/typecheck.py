@@ -234,7 +234,8 @@ class Checker:
                      "another name")
 
     def unread_settings(self, program: A.Program) -> None:
-        """W0108 for a top-level name that nothing reads and that means a setting: `thickness
+        """W0115 for a param that nothing reads; W0108 for a top-level name that nothing reads
+        and that means a setting: `thickness
         = 4 mm` or `kerf = 0.2 mm` (an ordinary constant: the parts stay 3 mm thick, the cuts
         uncompensated; the fix is the statement `thickness 4 mm`), or a name a template call
         of the program leaves at its default (`module = 2 mm` beside `spur_gear(teeth=20)`:
@@ -290,6 +291,13 @@ class Checker:
                     labels=[Label(call.span, f"`{n}` not given here", primary=False)],
                     fix=Fix(call.span, new)))
                 break
+            else:
+                if is_param:            # issue 111: declared, never used, nothing said
+                    self.sink.add(Diagnostic(
+                        "W0115", f"param `{n}` is declared but nothing reads it: its slider "
+                                 f"and `--set {n}=...` change nothing", st.name_span or st.span,
+                        "warning", hint=f"use `{n}` where the value it names is written (in place of "
+                                        "that number), or delete the line if it is not meant"))
 
     def stmts(self, stmts, scope: _Scope) -> None:
         for st in stmts:

@@ -15,7 +15,9 @@ import sys
 
 
 def moves(text: str, kind: str = "laser") -> list[tuple]:
-    """``(g, (x0, y0), (x1, y1), centre or None, cutting)`` of every XY motion."""
+    """``(g, (x0, y0), (x1, y1), centre or None, cutting, z0, z1, power)`` of every XY
+    motion (``power``: the S in force with the spindle or laser on, else 0); law 1
+    (benchmarks/laws/law_machine.py) replays the G-code with it too."""
     import gcodeparser
     x = y = 0.0
     z = None
@@ -37,13 +39,13 @@ def moves(text: str, kind: str = "laser") -> list[tuple]:
         c = (x + float(p.get("I", 0)), y + float(p.get("J", 0))) if code in (2, 3) else None
         cutting = code != 0 and ((on and s > 0) if kind == "laser" else (nz is not None and nz <= 0))
         if (nx, ny) != (x, y):
-            out.append((code, (x, y), (nx, ny), c, cutting))
+            out.append((code, (x, y), (nx, ny), c, cutting, z, nz, s if on else 0.0))
         x, y, z = nx, ny, nz
     return out
 
 
 def _points(m) -> list:
-    g, p, q, c, _ = m
+    g, p, q, c = m[:4]
     if c is None:
         return [p, q]
     a0 = math.atan2(p[1] - c[1], p[0] - c[0])

@@ -17,6 +17,7 @@ import "std/joints.aidl"
 # `outside=true`, else the space inside (floor to the lip); `thickness` is the material,
 # `finger` the least finger width. Members: `body` (an open finger_box),
 # `lid`, `lip`.
+# Anchor: (cx, cy) is the centre of `body.bottom`.
 def lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=10 mm,
             clearance=0.3 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {
     t = thickness
@@ -55,6 +56,7 @@ def lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=10 
 # `length` x `width` x `height` (mm) is the outer size when `outside=true`,
 # else the space under the lid between the liners. Members: `bottom`,
 # `front`, `back`, `left`, `right`, `liner`, `rail`, `lid`.
+# Anchor: (cx, cy) is the centre of `bottom`.
 def sliding_lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=10 mm,
                     clearance=0.3 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {
     t = thickness
@@ -134,6 +136,7 @@ def sliding_lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, fi
 # `length` x `width` x `height` (mm) is the outer size when `outside=true`,
 # else the inside. Members: `body` (an open finger_box), `row_divider`,
 # `col_divider`.
+# Anchor: (cx, cy) is the centre of `body.bottom`.
 def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thickness=3 mm,
                  finger=10 mm, clearance=0.3 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {
     t = thickness
@@ -201,6 +204,7 @@ def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thick
 # `length` x `width` x `height` (mm) is the outer size (the lid's length,
 # the lid included) when `outside=true`, else the space inside. Members:
 # `bottom`, `front`, `back`, `left`, `right`, `lid`, `cheek`, `pin`.
+# Anchor: (cx, cy) is the centre of `bottom`.
 def hinged_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=10 mm, pin=0 mm,
                clearance=0.3 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {
     t = thickness
@@ -316,6 +320,7 @@ def hinged_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=
 # carcass's outer size when `outside=true`, else the space inside it.
 # Members: `carcass` (bottom, top, back, left, right) and `box` (bottom,
 # front, back, left, right).
+# Anchor: (cx, cy) is the centre of `carcass.bottom`.
 def drawer(length=120 mm, depth=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
            clearance=0.3 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {
     t = thickness
@@ -403,6 +408,7 @@ import "std/plates.aidl"
 # inner (the height between the base's lip and the lid's). Assembled, the
 # wall is shown bent round the corners (`Bend`).
 # Members: `base`, `lid`, `lip` (base's, lid's), `wall`.
+# Anchor: (cx, cy) is the centre of `base`.
 def flex_box(length=120 mm, width=80 mm, height=50 mm, radius=20 mm, thickness=3 mm, clearance=0.3 mm,
              outside=true, cx=0 mm, cy=0 mm) -> assembly {
     t = thickness

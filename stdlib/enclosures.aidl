@@ -22,6 +22,7 @@ import "std/joints.aidl"
 # the board's area in the lid. Each part holds a finger_panel, panel.
 # Members: `bottom`, `front`, `back`, `left`, `right`, `lid`, `length`,
 # `wide`, `tall` (the outer size along x, y and z).
+# Anchor: (cx, cy) is the centre of `bottom`.
 def board_enclosure(width=85 mm, height=56 mm, depth=25 mm, thickness=3 mm,
                     clearance=2 mm, holes=[[3.5, 3.5], [61.5, 3.5], [3.5, 52.5], [61.5, 52.5]],
                     hole_d=3.2 mm, standoff=5 mm,

@@ -14,6 +14,7 @@ nut_thickness = [1.6 mm, 2 mm, 2.4 mm, 3.2 mm, 4.7 mm, 5.2 mm, 6.8 mm]
 # A through hole for a metric screw (ISO 273). `size` 3 is M3; `fit`
 # "fine" (also "close"), "medium" (also "normal") or "coarse" (also "loose").
 # M3 medium is 3.4 mm. Member: `c` (the circle).
+# Anchor: (cx, cy) is the centre of `c`.
 def clearance_hole(size=3, fit="medium", cx=0 mm, cy=0 mm) -> hole {
     found = [i for i in range(len(metric_sizes)) if metric_sizes[i] == size]
     assert len(found) == 1, "metric sizes are 2, 2.5, 3, 4, 5, 6 and 8 (M2 to M8)"
@@ -30,6 +31,7 @@ def clearance_hole(size=3, fit="medium", cx=0 mm, cy=0 mm) -> hole {
 # A hexagonal cut-out that holds a metric nut (ISO 4032) from turning. It is
 # across flats s of the nut of `size` (5.5 mm for M3) plus `clearance`, flats
 # at top and bottom (turn with `rotation`). Member: `hex` (a RegularPolygon).
+# Anchor: (cx, cy) is the centre of `hex`; rotation 0: flats at top and bottom.
 def nut_trap(size=3, clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
     found = [i for i in range(len(metric_sizes)) if metric_sizes[i] == size]
     assert len(found) == 1, "metric sizes are 2, 2.5, 3, 4, 5, 6 and 8 (M2 to M8)"
@@ -44,6 +46,7 @@ def nut_trap(size=3, clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
 # `rotation` is 0), crossed by a pocket for the nut (across flats wide, nut
 # thickness deep plus `clearance`) at `nut_depth` from the edge. Members:
 # `slot`, `nut` (Rectangles).
+# Anchor: (cx, cy) is the middle of its mouth on the edge; rotation 0: the slot runs toward -y.
 def t_slot(size=3, length=12 mm, nut_depth=6 mm, clearance=0.1 mm, rotation=0 deg,
            cx=0 mm, cy=0 mm) -> hole {
     found = [i for i in range(len(metric_sizes)) if metric_sizes[i] == size]

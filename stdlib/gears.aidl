@@ -17,6 +17,7 @@
 # `gear_train` and `planetary` give it). Members: `pitch` and `tip` (construction
 # circles of the pitch and outer diameters), `hub` (the root disk; the gear's
 # center is `hub.center`), `teeth_ring`, `bore_hole` (a hole, when the bore is not 0).
+# Anchor: (cx, cy) is the centre of `hub`.
 def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
               backlash=0 mm, phase=0 deg, cx=0 mm, cy=0 mm, addendum=1, mate=0) -> solid {
     assert teeth >= 3 and teeth == round(teeth), "a gear has a whole number of teeth, at least 3"
@@ -155,6 +156,7 @@ def spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm,
 # Members: `body` (the plate's circle), `cut` (the hole: `cut.teeth`, the
 # spur_gear of the spaces, and `cut.tips`, the addendum circle), `pitch` (a
 # construction circle of the pitch diameter module * teeth).
+# Anchor: (cx, cy) is the centre of `body`.
 def ring_gear(teeth=48, module=2 mm, pressure_angle=20 deg, rim=6 mm, backlash=0.05 mm,
               phase=0 deg, cx=0 mm, cy=0 mm, pinion=0) -> solid {
     assert teeth >= 10 and teeth == round(teeth), "a ring gear has a whole number of teeth, at least 10"
@@ -193,6 +195,7 @@ def ring_gear(teeth=48, module=2 mm, pressure_angle=20 deg, rim=6 mm, backlash=0
 # (teeth2) on that line at the center distance module * (teeth1 + teeth2) / 2,
 # turned so that a tooth of gear1 sits in a gap of gear2. Members: `gear1`,
 # `gear2` (spur_gear instances), `center_distance` (a length).
+# Anchor: (cx, cy) is the centre of `gear1.hub`.
 def gear_pair(teeth1=12, teeth2=36, module=2 mm, pressure_angle=20 deg,
               bore1=0 mm, bore2=0 mm, backlash=0 mm, angle=0 deg,
               cx=0 mm, cy=0 mm) -> assembly {
@@ -216,6 +219,7 @@ def gear_pair(teeth1=12, teeth2=36, module=2 mm, pressure_angle=20 deg,
 # `lift` raises the gears that much more above the plate (a demonstrator's
 # gears 10 mm up on their axles: lift=10 mm). Members: `plate`, `gear[i]`
 # (spur_gear instances), `x` (the axles' x offsets from the first).
+# Anchor: (cx, cy) is the centre of `plate`.
 def gear_train(teeth=[12, 36, 12, 30], module=2 mm, axle=4 mm, backlash=0.05 mm,
                thickness=3 mm, lift=0 mm, cx=0 mm, cy=0 mm) -> assembly {
     assert lift >= 0 mm, "lift is a height above the plate: 0 or more"
@@ -271,6 +275,7 @@ def gear_train(teeth=[12, 36, 12, 30], module=2 mm, axle=4 mm, backlash=0.05 mm,
 # and the rack and pinion in mesh above it; assembled, both lie on the plate
 # (`lift` higher: a gap under them, for spacers). Members: `rack`, `pinion`
 # (a spur_gear), `base`, `pitch` (the rack's pitch).
+# Anchor: (cx, cy) is the centre of `base`.
 def rack_and_pinion(teeth=16, module=2 mm, rack_teeth=12, height=8 mm, axle=4 mm,
                     backlash=0.05 mm, thickness=3 mm, lift=0 mm, cx=0 mm, cy=0 mm) -> assembly {
     gap = 5 mm
@@ -343,6 +348,7 @@ def rack_and_pinion(teeth=16, module=2 mm, rack_teeth=12, height=8 mm, axle=4 mm
 # cut (cut.teeth, a spur_gear with the backlash negative, and cut.tips).
 # Members: `sun_gear`, `planet_gear[i]` (spur_gear instances), `ring_gear`,
 # `carrier`, `center_distance`.
+# Anchor: (cx, cy) is the centre of `sun_gear.hub`.
 def planetary(sun=12, planet=18, ring=48, planets=3, module=2 mm, axle=4 mm,
               backlash=0.05 mm, rim=6 mm, thickness=3 mm, lift=0 mm, cx=0 mm,
               cy=0 mm) -> assembly {

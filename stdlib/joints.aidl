@@ -16,6 +16,7 @@
 # "slots" edge of another of the same length. "flat" keeps the whole edge. A
 # corner square is kept unless one of its edges is "slots".
 # Members: `outline` (construction rectangle of the outer size), `core`.
+# Anchor: (cx, cy) is the centre of `outline`.
 def finger_panel(width=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
                  bottom="fingers", right="fingers", top="fingers", left="fingers",
                  cx=0 mm, cy=0 mm) -> solid {
@@ -88,6 +89,7 @@ def finger_panel(width=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
 # `left`, `right`, `lid` (each a finger_panel). Each panel is placed in 3D
 # (`Place`): assembled (`aidl render --assembled`), the box stands on z = 0,
 # centered on x = y = 0, its fingers in their slots.
+# Anchor: (cx, cy) is the centre of `bottom`.
 def finger_box(length=120 mm, depth=80 mm, height=50 mm, thickness=3 mm,
                finger=10 mm, closed=true, gap=5 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {
     # the outer sizes
@@ -137,7 +139,10 @@ def finger_box(length=120 mm, depth=80 mm, height=50 mm, thickness=3 mm,
 # Joints between any two panels. Each is a `hole` cut into a panel, placed by
 # (cx, cy) on the panel's edge and `rotation`: at rotation 0 the edge runs
 # along x through (cx, cy) and the panel lies below it (toward -y), as for
-# `t_slot`. A cut that opens an edge runs 1 mm past it, so it opens cleanly.
+# `t_slot` (a `dovetail`'s line through (cx, cy) is where its tails start, the
+# socket panel's edge: the socket panel lies above it, the tail panel reaches
+# `depth` across it). Each says its point in its `Anchor:` line. A cut that
+# opens an edge runs 1 mm past it, so it opens cleanly.
 
 import "std/fasteners.aidl"
 
@@ -145,6 +150,7 @@ import "std/fasteners.aidl"
 # From the mouth at (cx, cy) on the edge it runs `depth` mm into the panel,
 # `thickness` + `clearance` wide; cut one into each panel, the two depths
 # adding up to the overlap. Member: `cut`.
+# Anchor: (cx, cy) is the middle of its mouth on the edge; rotation 0: the slot runs toward -y.
 def cross_halving(depth=20 mm, thickness=3 mm, clearance=0 mm, rotation=0 deg,
                   cx=0 mm, cy=0 mm) -> hole {
     assert depth > 0 mm and thickness + clearance > 0 mm, "the slot needs a depth and a width"
@@ -161,6 +167,7 @@ def cross_halving(depth=20 mm, thickness=3 mm, clearance=0 mm, rotation=0 deg,
 # `thickness` wide); every second one, from the first when `start` is "gap",
 # is cut `thickness` deep, so a "tab" edge mates a "gap" edge of the same
 # length at a corner. Member: `gap`.
+# Anchor: (cx, cy) is the middle of the edge; rotation 0: the edge along x, the cuts toward -y.
 def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotation=0 deg,
                 cx=0 mm, cy=0 mm) -> hole {
     assert (1 if start == "tab" or start == "gap" else 0) == 1, "start is \"tab\" or \"gap\""
@@ -195,6 +202,7 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
 # tab panel's middle stands. Screws up to `thickness` + 4 x `screw` mm long;
 # `screw=0` leaves them out (a glued or pressed joint).
 # Members: `gap`, `nut`, `slot`, `bolt`.
+# Anchor: (cx, cy) is the middle of the edge (part "slot": of the slots); rotation 0: the edge along x, the tabs toward -y.
 def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, screw=3,
                  clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
     assert (1 if part == "tab" or part == "slot" else 0) == 1, "part is \"tab\" or \"slot\""
@@ -243,6 +251,7 @@ def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, sc
 # widen at `angle` toward their tips (the tail panel reaches across the band);
 # "socket" cuts those tails, `clearance` wider, out of the mate (which starts
 # at the line). Member: `cut`.
+# Anchor: (cx, cy) is the middle of the tails' roots (the socket panel's edge); rotation 0: the tails toward +y.
 def dovetail(part="tail", length=60 mm, depth=10 mm, tails=2, angle=10 deg, clearance=0 mm,
              rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
     assert (1 if part == "tail" or part == "socket" else 0) == 1, "part is \"tail\" or \"socket\""

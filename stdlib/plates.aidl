@@ -7,6 +7,7 @@ import "std/fasteners.aidl"
 
 # A plate `width` x `height` with rounded corners of `corner_radius`.
 # Member: `body`.
+# Anchor: (cx, cy) is the centre of `body`.
 def rounded_plate(width=80 mm, height=50 mm, corner_radius=5 mm, cx=0 mm, cy=0 mm) -> solid {
     body = RoundedRectangle(center=(cx, cy), width=width, height=height, corner_radius=corner_radius)
     Fixed(body.center)
@@ -15,6 +16,7 @@ def rounded_plate(width=80 mm, height=50 mm, corner_radius=5 mm, cx=0 mm, cy=0 m
 # A plate `width` x `height` whose four corners are cut at 45 degrees,
 # `chamfer` along each edge. Member: `body` (an octagon; `body.points[0]` is
 # the bottom edge's left end, then counter-clockwise).
+# Anchor: (cx, cy) is the centre of its box.
 def chamfered_plate(width=80 mm, height=50 mm, chamfer=5 mm, cx=0 mm, cy=0 mm) -> solid {
     assert chamfer > 0 mm and 2 * chamfer < width and 2 * chamfer < height, "the chamfers must leave some of every edge"
     w = width / 2
@@ -30,6 +32,7 @@ def chamfered_plate(width=80 mm, height=50 mm, chamfer=5 mm, cx=0 mm, cy=0 mm) -
 # `inset` from both edges. Members: `body`,
 # `corner[0..3]` (clearance_hole instances, counter-clockwise from the
 # bottom left).
+# Anchor: (cx, cy) is the centre of `body`.
 def mounting_plate(width=80 mm, height=50 mm, corner_radius=4 mm, screw=3, fit="medium",
                    inset=6 mm, cx=0 mm, cy=0 mm) -> solid {
     assert len([s for s in metric_sizes if s == screw]) == 1, "metric sizes are 2, 2.5, 3, 4, 5, 6 and 8 (M2 to M8)"
@@ -57,6 +60,7 @@ def mounting_plate(width=80 mm, height=50 mm, corner_radius=4 mm, screw=3, fit="
 # `length` from its center toward `direction` (90 deg: up, so the part drops
 # onto the screw). Keep the slot inside the part: one that runs out through the
 # edge is an open notch (W0530). Members: `head_hole` (Circle), `slot` (Slot).
+# Anchor: (cx, cy) is the centre of `head_hole`.
 def keyhole(head=8 mm, slot_width=4 mm, length=10 mm, direction=90 deg, cx=0 mm, cy=0 mm) -> hole {
     assert slot_width > 0 mm and slot_width < head, "the slot must be narrower than the head opening"
     head_hole = Circle(center=(cx, cy), diameter=head)
@@ -68,6 +72,7 @@ def keyhole(head=8 mm, slot_width=4 mm, length=10 mm, direction=90 deg, cx=0 mm,
 
 # A straight slot (stadium) `length` overall (tip to tip) and `width` wide,
 # turned by `rotation`. Member: `s`.
+# Anchor: (cx, cy) is the centre of `s`; rotation 0: the slot lies along x.
 def slot(length=20 mm, width=5 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
     s = Slot(center=(cx, cy), length=length, width=width, rotation=rotation)
     Fixed(s.center)
@@ -82,6 +87,7 @@ def slot(length=20 mm, width=5 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
 # band's top and bottom (a slot runs `overrun` past them), so a band as tall
 # as the plate opens at its edges, as the hinge needs. Members: `cut_a` (the
 # full-length cuts, per column), `cut_b` (the end cuts).
+# Anchor: (cx, cy) is the centre of its box.
 def living_hinge(width=30 mm, height=60 mm, pitch=2 mm, cut=15 mm, bridge=3 mm,
                  kerf_width=0 mm, overrun=1 mm, cx=0 mm, cy=0 mm) -> cut {
     assert width > 0 mm and height > 0 mm, "the hinge's width and height are more than 0"
@@ -128,6 +134,7 @@ def living_hinge(width=30 mm, height=60 mm, pitch=2 mm, cut=15 mm, bridge=3 mm,
 # their baselines on the circle. Characters are placed `spacing` x `size` apart along the arc (the
 # font is proportional, so this spacing is an average: wide letters sit a
 # little closer). Members: `ch` (the characters' Texts, spaces left out).
+# Anchor: (cx, cy) is the centre of the circle its baselines follow.
 def text_on_arc(text="AIDL", radius=30 mm, size=5 mm, angle=90 deg, spacing=0.9,
                 cx=0 mm, cy=0 mm) -> drawing {
     assert radius > 0 mm and size > 0 mm, "the arc's radius and the text's size are more than 0"

@@ -5,6 +5,7 @@
 
 # A flat washer: a ring with a concentric bore. `outer` and `inner` are
 # diameters. Members: `ring` (the Circle), `bore` (a hole; `bore.b` its Circle).
+# Anchor: (cx, cy) is the centre of `ring`.
 def washer(outer=10 mm, inner=5 mm, cx=0 mm, cy=0 mm) -> solid {
     assert inner > 0 mm and inner < outer - 1 mm, "the bore is more than 0 and leaves a ring more than 0.5 mm wide: 0 mm < inner < outer - 1 mm"
     ring = Circle(center=(cx, cy), diameter=outer)
@@ -17,6 +18,7 @@ def washer(outer=10 mm, inner=5 mm, cx=0 mm, cy=0 mm) -> solid {
 # Bolt holes evenly spaced on a circle. There are `count` holes of diameter
 # `hole_d` on a circle of diameter `pcd` (pitch circle diameter), the first at
 # angle `start`. Members: `pitch` (construction Circle), `bolt[i]` (Circles).
+# Anchor: (cx, cy) is the centre of `pitch`.
 def bolt_circle(count=6, pcd=40 mm, hole_d=5 mm, start=0 deg,
                 cx=0 mm, cy=0 mm) -> hole {
     pitch = Circle(center=(cx, cy), diameter=pcd, construction=true)
@@ -34,6 +36,7 @@ def bolt_circle(count=6, pcd=40 mm, hole_d=5 mm, start=0 deg,
 # Members: `body` (the outline, a RoundedRectangle), `stem` (construction
 # Rectangle, below the round end), `end` (construction Circle of the round
 # end), `eye` (the hole; `eye.e`).
+# Anchor: (cx, cy) is the middle of its bottom edge.
 def rounded_tab(width=20 mm, length=20 mm, hole_d=6 mm, cx=0 mm, cy=0 mm) -> solid {
     assert hole_d > 0 mm and hole_d < width - 1 mm, "the eye leaves a wall more than 0.5 mm wide in the round end: hole_d < width - 1 mm"
     assert length > (width + hole_d) / 2 + 0.5 mm, "the eye leaves a wall more than 0.5 mm wide above the base: length > (width + hole_d) / 2 + 0.5 mm"
@@ -50,12 +53,14 @@ def rounded_tab(width=20 mm, length=20 mm, hole_d=6 mm, cx=0 mm, cy=0 mm) -> sol
 }
 
 # An oblong hole, e.g. for an adjustable screw. Member: `s` (a Slot).
+# Anchor: (cx, cy) is the centre of `s`; rotation 0: the slot lies along x.
 def slot_hole(length=20 mm, width=5 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
     s = Slot(center=(cx, cy), length=length, width=width, rotation=rotation)
 }
 
 # A hexagonal pocket for a nut, sized across flats (flats at top and bottom).
 # Member: `hex` (a RegularPolygon).
+# Anchor: (cx, cy) is the centre of `hex`.
 def hex_pocket(across_flats=8 mm, cx=0 mm, cy=0 mm) -> hole {
     hex = RegularPolygon(center=(cx, cy), across_flats=across_flats, sides=6)
 }

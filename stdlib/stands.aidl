@@ -15,6 +15,7 @@ import "std/joints.aidl"
 # from the angle. The foot, `width` long and 40 mm tall, crosses both
 # supports in cross-halving slots (`thickness` + `clearance` wide, 20 mm
 # deep each). Members: `support` (a list of 2), `foot`.
+# Anchor: (cx, cy) is the middle of the `support`s' bottom edge.
 def tablet_stand(width=120 mm, height=120 mm, angle=70 deg, lip=12 mm, thickness=3 mm,
                  clearance=0 mm, cx=0 mm, cy=0 mm) -> assembly {
     assert angle > 30 deg and angle < 85 deg, "the back leans at 30 to 85 degrees"
@@ -58,6 +59,7 @@ def tablet_stand(width=120 mm, height=120 mm, angle=70 deg, lip=12 mm, thickness
 # bars, `width` long and `height` tall, cross them in cross-halving slots
 # (`thickness` + `clearance` wide, half the bar deep) 30 mm from either
 # end. Members: `side` (a list of 2), `bar` (a list of 2).
+# Anchor: (cx, cy) is the middle of the `side`s' bottom edge.
 def laptop_stand(width=260 mm, depth=220 mm, height=30 mm, angle=15 deg, thickness=3 mm,
                  clearance=0 mm, cx=0 mm, cy=0 mm) -> assembly {
     assert angle >= 0 deg and angle < 45 deg, "the top slopes at 0 to 45 degrees"
@@ -105,6 +107,7 @@ def laptop_stand(width=260 mm, depth=220 mm, height=30 mm, angle=15 deg, thickne
 # its panels as `finger_box`'s (`front`, `back`, `left`, `right`; the net
 # around `bottom` at (cx, cy), placed in 3D standing on z = 0). Members:
 # `bottom`, `top`.
+# Anchor: (cx, cy) is the centre of `bottom`.
 def tool_holder(length=100 mm, depth=70 mm, height=90 mm, thickness=3 mm, finger=10 mm,
                 rows=2, cols=3, hole=16 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {
     t = thickness
@@ -164,6 +167,7 @@ def tool_holder(length=100 mm, depth=70 mm, height=90 mm, thickness=3 mm, finger
 # cross-halving slots and goes through the back plate with two tabs
 # (`tab_and_slot`, no screws); the back plate has two clearance holes for
 # M`screw` wall screws. Members: `back`, `shelf`, `bracket` (a list of 2).
+# Anchor: (cx, cy) is the centre of `back`.
 def wall_shelf(length=300 mm, depth=120 mm, height=150 mm, thickness=3 mm, screw=4,
                clearance=0 mm, cx=0 mm, cy=0 mm) -> assembly {
     assert length >= 150 mm and depth >= 60 mm and height >= 80 mm, "at least 150 mm long, 60 mm deep, 80 mm tall"

@@ -299,3 +299,20 @@ def test_counterbore_synonyms_and_a_list_of_a_hole_and_a_circle(syn):
                     ("counterbore", "plate.g.c", 8.0, None, 2.5)]
     assert _sunk(BORED.replace("Counterbore([h, g.c], diameter=8, depth=2.5)",
                                f"{syn}(of=[h, g.c], head=8, deep=2.5)")) == want
+
+
+def test_heads_that_leave_nothing_of_the_part_are_E0503_at_the_call():
+    """A 30 mm counterbore 4 mm deep on a 20 x 10 tag 3 mm thick: the recess goes through and
+    covers the whole tag (the STL would be empty beside an SVG of the tag): "E0503" at the
+    call, the compile stops (issue 109; tests/test_law_outputs.py has the countersinks)."""
+    src = ("units mm\nthickness 3 mm\nsolid tag {\n"
+           "    body = Rectangle(center=(0, 0), width=20, height=10)\n"
+           "    hole h { c = Circle(center=(0, 0), diameter=4) }\n"
+           "    Counterbore(h, diameter=30 mm, depth=4 mm)\n}\n")
+    r = aidl_lang.compile(source=src)
+    (d,) = [d for d in r.diagnostics if d.severity == "error"]
+    assert d.code == "E0503" and (d.span.line, d.span.col) == (6, 5)
+    assert d.message.startswith("the counterbores of part `tag` leave nothing of it: the 30 mm "
+                                "head on `tag.h.c` (4 mm hole) goes through the 3 mm part, its "
+                                "4 mm recess 30 mm wide at its bottom face")
+    assert "give a `depth` under 3 mm" in d.hint

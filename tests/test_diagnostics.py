@@ -693,6 +693,14 @@ def test_unknown_escape_in_a_string_is_kept_and_warned_W0114(compile_text):
     assert span4(d)[:2] == (1, 25) and d.message.startswith("`\\%` is not an escape")
 
 
+def test_a_param_nothing_reads_is_W0115(compile_text):
+    c = compile_text("param plate_w = 120 mm, min = 80 mm, max = 200 mm\nparam h = 60\n"
+                     "solid p { body = Rectangle(center=(0, 0), width=120, height=h) }\n")
+    (d,) = [d for d in c.sink.items if d.code == "W0115"]
+    assert d.severity == "warning" and span4(d)[:2] == (1, 7)
+    assert d.message.startswith("param `plate_w` is declared but nothing reads it")
+
+
 def test_every_producible_code_has_a_test():
     import pathlib
     here = pathlib.Path(__file__)
@@ -757,7 +765,7 @@ def test_E0305_beyond_the_model_extent(compile_text):
 @pytest.mark.parametrize("src", ["", "# only a comment\n", "param w = 3\nsolid s { }\n"])
 def test_W0104_empty_drawing(compile_text, src):
     c = compile_text(src)
-    assert c.ok and [d.code for d in c.sink.items] == ["W0104"]
+    assert c.ok and [d.code for d in c.sink.items if d.code != "W0115"] == ["W0104"]
 
 
 @pytest.mark.parametrize("src", ["x = 1\n", "def peg(r = 2) -> solid { c = Circle((0, 0), r) }\n"])

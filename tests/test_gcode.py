@@ -578,7 +578,7 @@ def test_router_paths_are_the_tool_offset_loops_holes_first_where_offsets_overla
     out = _output(ROOT / "examples" / "mounting_plate.aidl")
     m = DEFAULTS["router"]
     text = gcode.job(out, m).text
-    tooled, _ = gcode.routed_path(out, m)          # with the profile's dogbones
+    tooled, _, _ = gcode.routed_path(out, m)          # with the profile's dogbones
     check_exact(text, tooled, passes=2, kind="router")
     check_holes_first(text, tooled, kind="router")
 

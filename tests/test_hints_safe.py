@@ -15,6 +15,8 @@ import re
 
 import pytest
 
+from benchmarks.laws.law_hints import (STMT, changed, checked, contours, drawn,
+                                       generated_program, proposed_fixes, unsafe_drops)
 from conftest import EXAMPLES, ROOT
 from test_hints51 import FIXTURES
 
@@ -81,7 +83,6 @@ CASES = {"triangle": (TRIANGLE, "W0515"), "round": (ROUND, "W0515"),
          "scallop_loop": (SCALLOP_LOOP, "W0512"), "window": (WINDOW, "W0508"),
          "vents": (VENTS, "W0508")}
 
-STMT = re.compile(r"write `([A-Za-z_]\w*\([^`]*\))` in `([\w.\[\]]+)`")
 CORRECTING = {"W0109"}      # fixes that change the part they name (and the stray hole)
 # W0508's fix that moves a hole clear of another (issue 91: never an AllowOverlap that hides
 # the overlap): only the part holding the two holes changes, and it then has one more opening
@@ -127,46 +128,6 @@ def compiled(tmp_path_factory):
     return get
 
 
-def _apply(src, d, model):
-    """The program with warning ``d``'s proposed code applied (its fix, else the statement
-    of a "write `STMT` in `PATH`" hint at the end of that structure), or None."""
-    if d.fix is not None:
-        sp = d.fix.span
-        return src[:sp.start] + d.fix.replacement + src[sp.end:], sp.start
-
-    m = STMT.search(d.hint or "")
-    if m is None or model is None:
-        return None
-    stmt, path = m.groups()
-    s = next((x for x in model.structures if x.path == path), None)
-    if s is None or s.span is None or src[s.span.end - 1:s.span.end] != "}":
-        return None
-    end = s.span.end
-    return src[:end - 1] + f"    {stmt}\n" + src[end - 1:], end - 1
-
-
-def _design(c) -> dict:
-    """The design as the outputs see it: part name -> (kind, shape), and the lines."""
-    d = c.drawing
-    return {p.name: (p.kind, p.shape) for p in d.parts}, [(s, len(pl)) for s, pl in d.lines]
-
-
-def _changed(before, after) -> list:
-    """The names of parts whose area or outline differs (or that appear or vanish)."""
-    (pa, la), (pb, lb) = before, after
-    out = sorted(set(pa) ^ set(pb))
-    for name in set(pa) & set(pb):
-        (ka, a), (kb, b) = pa[name], pb[name]
-        whole = max(a.area(), b.area(), 1.0)
-        diff = (a - b).area() + (b - a).area()
-        if ka != kb or abs(a.area() - b.area()) > 1e-6 * whole or diff > 1e-6 * whole \
-                or a.num_contour() != b.num_contour():
-            out.append(name)
-    if la != lb:
-        out.append("<engraved lines>")
-    return out
-
-
 def _same(d, x, at: int, grew: int) -> bool:
     """``x`` (of the program grown by ``grew`` characters at offset ``at``) is warning ``d``
     again: its code, place and subject (:func:`_subject`: a hole refilled by what is left of
@@ -188,15 +149,9 @@ def test_every_fix_removes_its_warning_and_changes_nothing_else(compiled, name, 
     c = compiled(name, src)
     if c.drawing is None:
         return
-    before = _drawn(c)
+    before = drawn(c)
     tried = []
-    for d in c.sink.items:
-        if d.severity != "warning":
-            continue
-        fixed = _apply(src, d, c.model)
-        if fixed is None:
-            continue
-        new, at = fixed
+    for d, new, at in proposed_fixes(src, c):
         after = compiled(name, new, tag=f"fixed{len(tried)}_")
         tried.append(d.code)
         errs = [(x.code, x.message) for x in after.sink.items if x.severity == "error"]
@@ -205,17 +160,17 @@ def test_every_fix_removes_its_warning_and_changes_nothing_else(compiled, name, 
         assert not [x for x in after.sink.items if _same(d, x, at, grew)], \
             (d.code, d.message, new)
         assert not [x for x in after.sink.items if x.code == "W0523"], (d.code, new)
-        changed = _changed(before, _drawn(after))
+        moved = changed(before, drawn(after))
         if d.code in CORRECTING:
             stmt = d.fix.replacement if d.fix is not None else d.hint
-            changed = [n for n in changed if n.split(".")[-1] not in stmt
-                       and not any(n.endswith("." + w) for w in re.findall(r"\w+", stmt))]
+            moved = [n for n in moved if n.split(".")[-1] not in stmt
+                     and not any(n.endswith("." + w) for w in re.findall(r"\w+", stmt))]
         if d.code in MOVES and d.fix is not None \
                 and not d.fix.replacement.lstrip().startswith("AllowOverlap"):
             part = re.search(r" of `([^`]+)` (?:overlap|touch)", d.message).group(1)
-            assert part in changed, (d.code, d.message, new)    # the move changes its part
-            changed = [n for n in changed if n != part]
-        assert not changed, (d.code, d.message, changed, new)
+            assert part in moved, (d.code, d.message, new)    # the move changes its part
+            moved = [n for n in moved if n != part]
+        assert not moved, (d.code, d.message, moved, new)
     if name in CASES:
         assert CASES[name][1] in tried, (name, [(x.code, x.hint) for x in c.sink.items])
 
@@ -334,153 +289,12 @@ def test_W0515_round_an_island_says_so_and_names_the_shapes_with_the_island(comp
 # blanked, so every other place in the file stays where it was): the warning goes, no
 # degree of freedom is freed, no feature starts to slide, and the design is unchanged: every
 # part's outline and every contour's area and centre to 1e-6 mm.
-LISTED = re.compile(r"`([^`]*)` \((line \d+)\)")
-
-
-def _statement(src: str, span) -> tuple:
-    """``(start, end)`` of the statement at ``span``, with a name it is given (`corners = `)."""
-    start, end = span.start, span.end
-    head = src[src.rfind("\n", 0, start) + 1:start]
-    named = re.search(r"[A-Za-z_]\w*\s*=\s*$", head)
-    return (start - len(named.group(0)) if named else start), end
-
-
-def _dropped(d, model) -> list | None:
-    """The constraints warning ``d`` says to drop, or None when it names none for sure: a
-    group's "drop `X` (line N), ..."; a constraint that "is redundant: ... removing it would
-    free nothing" itself (unless the hint says to keep it); nothing for a partly redundant
-    one ("drop one of them only if it repeats the same intent" is a judgement, not an edit)."""
-    written = [c for c in model.constraints if not c.implicit and c.span is not None]
-    if d.code != "W0401":
-        return None
-    if "say the same thing" in d.message:
-        m = re.search(r"drop (.*?): the (model|template)", d.hint or "")
-        if m is None:
-            return None
-        out = []
-        for text, line in LISTED.findall(m.group(1)):
-            n = int(line.split()[1])
-            out += [c for c in written if c.span.line == n and c.describe() == text][:1]
-        return out
-    if " is redundant: " in d.message and "not `" not in (d.hint or ""):
-        return [c for c in written if c.span.start == d.span.start][:1]
-    return None
-
-
-# warnings whose hint says to delete the statement they point at, for what it adds nothing
-# to the design: a child solid inside the rest of its parent (W0506), a face of zero area
-# (W0509), a through-cut that cuts nothing (W0522), an AllowOverlap that allows nothing
-# (W0523), an engraved Line of zero length (W0524)
-DELETES = {"W0506", "W0509", "W0522", "W0523", "W0524"}
-
-
-def _edits(d, model, src: str) -> list | None:
-    """The ``(start, end)`` of each statement warning ``d`` says to drop or delete (with
-    the name it is given), or None."""
-    if d.code in DELETES and d.span is not None and "delete" in (d.hint or ""):
-        return [_statement(src, d.span)]
-    drop = _dropped(d, model)
-    return [_statement(src, c.span) for c in drop] if drop else None
-
-
-def _drop(src: str, spans: list) -> str:
-    """``src`` with the statements at ``spans`` blanked (spaces: no offset moves)."""
-    for a, b in spans:
-        src = src[:a] + re.sub(r"[^\n]", " ", src[a:b]) + src[b:]
-    return src
-
-
-def _checked(c) -> tuple:
-    """What `aidl check` adds after the compile: the W0401 and W0404 warnings, and the
-    degrees of freedom per structure."""
-    from aidl_lang.base.diagnostics import DiagnosticSink
-    from aidl_lang.pipeline import report_redundancies, report_sliding
-    from aidl_lang.solver.diagnosis import freedom
-    sink = DiagnosticSink()
-    report_redundancies(sink, c.solve)
-    report_sliding(sink, c.solve)
-    dof = [(d.structure.path, d.unknowns - d.rank)
-           for d in freedom.degrees_of_freedom(c.solve.solver, floating=False)]
-    return sink.items, dof
-
-
-def _contours(c) -> dict:
-    """part -> its contours' (area, centre x, centre y), sorted: every opening's centre."""
-    out = {}
-    for p in c.drawing.parts:
-        rows = []
-        for poly in p.shape.to_polygons():
-            xs, ys = poly[:, 0], poly[:, 1]
-            a = 0.5 * float((xs * (ys.take(range(1, len(ys) + 1), mode="wrap"))
-                             - ys * (xs.take(range(1, len(xs) + 1), mode="wrap"))).sum())
-            rows.append((round(abs(a), 3), float(xs.mean()), float(ys.mean())))
-        out[p.name] = sorted(rows, key=lambda r: (r[0], round(r[1], 4), round(r[2], 4)))
-    return out
-
-
-def _drawn(c) -> tuple:
-    """The design as :func:`_design` gives it, its lines only those that draw something: of
-    some length, and meeting a part's box (a through-cut beside the part, W0522, or a Line
-    of zero length, W0524, draws nothing), each with its points to 1e-6 mm."""
-    import numpy as np
-    parts, _ = _design(c)
-    boxes = [p.shape.bounds() for p in c.drawing.parts]
-    lines = []
-    for stroke, pl in c.drawing.lines:
-        pl = np.asarray(pl, dtype=float)
-        lo, hi = pl.min(axis=0), pl.max(axis=0)
-        if float(np.abs(np.diff(pl, axis=0)).sum()) <= 1e-9 or not any(
-                lo[0] <= b[2] and hi[0] >= b[0] and lo[1] <= b[3] and hi[1] >= b[1]
-                for b in boxes):
-            continue
-        lines.append((stroke, tuple(np.round(pl, 6).ravel().tolist())))
-    return parts, sorted(lines)
+# The machinery is law 4's (benchmarks/laws/law_hints.py, issue 109), run there over the corpus.
 
 
 def _unsafe_drops(name: str, src: str, compiled) -> tuple:
-    """``(hints applied, problems)`` for every warning of ``src`` that names statements to
-    drop or delete (W0401, :data:`DELETES`), each applied on its own to the program it came
-    from."""
-    c = compiled(name, src)
-    if c.drawing is None or not c.ok or c.solve is None:
-        return 0, []
-    items, dof = _checked(c)
-    before = _drawn(c)
-    shape = _contours(c)
-    slide = sorted(x.message for x in items if x.code == "W0404")
-    applied, bad = 0, []
-    for d in items + [x for x in c.sink.items if x.code in DELETES]:
-        spans = _edits(d, c.model, src)
-        if not spans:
-            continue
-        applied += 1
-        new = _drop(src, spans)
-        after = compiled(name, new, tag=f"drop{applied}_")
-        why = []
-        errs = [(x.code, x.message) for x in after.sink.items if x.severity == "error"]
-        if errs or after.drawing is None:
-            bad.append((d.hint, "errors", errs[:2]))
-            continue
-        items2, dof2 = _checked(after)
-        if [x for x in items2 + after.sink.items if x.code == d.code and x.message == d.message]:
-            why.append("the warning stays")
-        left = dict(dof2)
-        if any(left.get(path, 0) > n for path, n in dof):     # deleted geometry: fewer
-            why.append(f"freedom {dof} -> {dof2}")
-        if sorted(x.message for x in items2 if x.code == "W0404") != slide:
-            why.append("a feature slides")
-        changed = _changed(before, _drawn(after))
-        if changed:
-            why.append(f"changed {changed}")
-        s2 = _contours(after)
-        if set(s2) != set(shape) or any(
-                len(s2[k]) != len(shape[k]) or any(
-                    abs(u[1] - v[1]) > 1e-6 or abs(u[2] - v[2]) > 1e-6 or u[0] != v[0]
-                    for u, v in zip(shape[k], s2[k])) for k in shape):
-            why.append("an opening moved or went")
-        if why:
-            bad.append((d.hint, why))
-    return applied, bad
+    """:func:`~benchmarks.laws.law_hints.unsafe_drops` with this module's compile cache."""
+    return unsafe_drops(name, src, lambda n, text: compiled(n, text, tag="drop_"))
 
 
 DROP_PROGRAMS = PROGRAMS + [
@@ -502,13 +316,13 @@ def test_the_corner_plate_keeps_its_pattern_and_drops_the_two_distances(compiled
     path = ROOT / "tests" / "programs" / "hints" / "corner_plate.aidl"
     src = path.read_text()
     c = compiled("corner_plate", src)
-    items, _ = _checked(c)
+    items, _ = checked(c)
     (w,) = [d for d in items if d.code == "W0401"]
     assert w.span.line == 9
     assert "keep `CornerPattern(corner, body, inset=6 mm)` (line 11) and drop " \
            "`HorizontalDistance(body.left.midpoint, corner.c.center, 6 mm)` (line 9), " \
            "`VerticalDistance(body.bottom.midpoint, corner.c.center, 6 mm)` (line 10)" in w.hint
-    assert [len(v) for v in _contours(c).values()] == [6]      # the plate, 5 openings
+    assert [len(v) for v in contours(c).values()] == [6]      # the plate, 5 openings
     assert _unsafe_drops("corner_plate", src, compiled) == (1, [])
 
 
@@ -517,63 +331,6 @@ def test_the_corner_plate_keeps_its_pattern_and_drops_the_two_distances(compiled
 # with AlignCenterY and a distance, AlignCenterX with At, a duplicate), statements shuffled,
 # starting positions off the solution.  The truth: the plate, 4 corner holes when the pattern
 # is there, and every hole where the combination puts it.
-def _generated(seed: int) -> str:
-    import random
-    rnd = random.Random(seed)
-    w, h = rnd.choice([100, 120, 140]), rnd.choice([70, 80, 90])
-    inset, x, y = rnd.choice([6, 8, 10]), rnd.choice([20, 25, 30]), rnd.choice([12, 15])
-    shapes = [f"body = Rectangle(center=(0, 0), width={w}, height={h})"]
-    stmts = []
-    kinds = rnd.sample(["corner", "fixed_at", "align_at", "sym", "dup"], rnd.randint(1, 3))
-
-    def hole(name, cx, cy):
-        shapes.append(f"hole {name} {{ c = Circle(center=({cx + rnd.choice([-1.5, 1, 2])}, "
-                      f"{cy + rnd.choice([-1, 1.5])}), diameter=4) }}")
-    if "corner" in kinds:
-        hole("corner", -w / 2 + inset, -h / 2 + inset)
-        stmts.append(f"CornerPattern(corner, body, inset={inset} mm)")
-        extra = [f"HorizontalDistance(body.left.midpoint, corner.c.center, {inset} mm)",
-                 f"VerticalDistance(body.bottom.midpoint, corner.c.center, {inset} mm)",
-                 f"At(corner.c.center, body.bottom_left, dx={inset}, dy={inset})"]
-        stmts += rnd.sample(extra, rnd.randint(1, 3))
-    if "fixed_at" in kinds:
-        shapes.append(f"hole pin {{ c = Circle(center=({-x}, {-y}), diameter=4) }}")
-        stmts += ["Fixed(body)", "Fixed(pin.c.center)",
-                  f"At(pin.c.center, body.center, dx={-x}, dy={-y})"]
-    if "align_at" in kinds:
-        hole("slot", 0, y)
-        stmts += [f"At(slot.c.center, body.center, dx=0, dy={y})", "AlignCenterX(slot, body)"]
-    if "sym" in kinds:
-        hole("left", -x, y)
-        hole("right", x, y)
-        shapes.append(f"axis = Line(start=(0, {-h / 2}), end=(0, {h / 2}), construction=true)")
-        stmts += ["Fixed(axis)", f"At(left.c.center, body.center, dx={-x}, dy={y})",
-                  "Symmetric(left.c.center, right.c.center, axis)"]
-        stmts += rnd.sample(["AlignCenterY(left, right)",
-                             f"HorizontalDistance(left.c.center, right.c.center, {2 * x} mm)"],
-                            rnd.randint(1, 2))
-    if "dup" in kinds:
-        hole("vent", x, -y)
-        stmts += [f"At(vent.c.center, body.center, dx={x}, dy={-y})"] * 2
-    # statements that add nothing, whose warning says to delete them: an AllowOverlap of
-    # two holes apart (W0523), a through-cut beside the plate (W0522), an engraved Line of
-    # zero length (W0524), a child solid inside the plate (W0506)
-    if rnd.random() < 0.3:
-        hole("mark", 0, -y)
-        hole("dot", 0, 0)
-        stmts.append("AllowOverlap(mark, dot)")
-    if rnd.random() < 0.3:
-        shapes.append(f"cut slits {{ a = Line(start=({w / 2 + 5}, 0), end=({w / 2 + 15}, 0)) }}")
-    if rnd.random() < 0.3:
-        shapes.append(f"drawing marks {{ z = Line(start=({-x}, 0), end=({-x}, 0)) }}")
-    if rnd.random() < 0.3:
-        shapes.append(f"solid boss {{ r = Rectangle(center=({x}, 0), width=6, height=4) }}")
-    if rnd.random() < 0.5 and "Fixed(body)" not in stmts:
-        stmts.append("Fixed(body)")
-    rnd.shuffle(stmts)
-    return "solid plate {\n" + "".join(f"    {s}\n" for s in shapes + stmts) + "}\n"
-
-
 GENERATED = 40
 
 
@@ -583,10 +340,10 @@ def test_every_W0401_drop_of_generated_redundant_programs_is_safe(compiled):
     (W0522, W0523, W0524), all safe; 17 of the W0401 unsafe before issue 84's fix."""
     total, problems, kinds = 0, [], set()
     for seed in range(GENERATED):
-        src = _generated(seed)
+        src = generated_program(seed)
         c = compiled(f"gen{seed}", src)
         assert c.ok, (src, [(d.code, d.message) for d in c.sink.items])
-        items, _ = _checked(c)
+        items, _ = checked(c)
         assert [d for d in items if d.code == "W0401"], src      # each says something twice
         kinds |= {d.message.split(":")[0].split()[-1] for d in items if d.code == "W0401"}
         applied, bad = _unsafe_drops(f"gen{seed}", src, compiled)
@@ -608,7 +365,7 @@ def test_a_group_drops_only_what_frees_nothing(compiled):
 }
 """
     c = compiled("group_rank", src)
-    (w,) = [d for d in _checked(c)[0] if d.code == "W0401"]
+    (w,) = [d for d in checked(c)[0] if d.code == "W0401"]
     assert "so 1 of the 3 can go" in w.message and w.span.line == 6
     assert w.hint.startswith("keep `HorizontalDistance(body.left.midpoint, corner.c.center, "
                              "6 mm)` (line 4), `VerticalDistance(body.bottom.midpoint, "

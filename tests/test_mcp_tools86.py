@@ -167,3 +167,51 @@ async def test_every_refusal_names_its_argument(shared):
         assert r.is_error, (tool, args, _text(r))
         err = r.structured_content["error"]
         assert (err["code"], err.get("argument")) == (code, argument), (tool, args, err)
+
+
+@pytest.mark.asyncio(loop_scope="module")
+async def test_the_routers_bit_is_set_through_render_and_said_in_the_header(shared):
+    """Issue 111: an agent could not set the router's bit (a profile is a .toml that
+    `write_program` refuses, and `render` took no tool settings) and the built-in bit's
+    diameter was said nowhere.  `machine` takes a profile's keys as an object; the G-code's
+    header says the bit, and the path runs its radius beside the line (re-read)."""
+    from test_gcode import replay
+    session, root = shared
+    (root / "bit.aidl").write_text(PLATE)
+    r = await session.call_tool("render", {
+        "path": "bit.aidl", "output": "bit.nc",
+        "machine": {"kind": "router", "tool_diameter": 6, "relief": "none"}})
+    assert not r.is_error, _text(r)
+    text = (root / "bit.nc").read_text()
+    assert "; tool: a 6 mm end mill (tool_diameter): every cut's path runs 3 mm beside the " \
+        "line; inside corners: no relief\n" in text
+    xs = [mv.q[0] for mv in replay(text, "router") if mv.on]
+    # the outline's cut runs 3 mm outside the 40 mm plate (x = -23 .. 23)
+    assert abs(max(xs) - 23) < 1e-9 and abs(min(xs) + 23) < 1e-9
+    r = await session.call_tool("render", {"path": "bit.aidl", "output": "bit2.nc",
+                                           "machine": {"kind": "router", "tool_diametr": 6}})
+    assert r.is_error and r.structured_content["error"]["argument"] == "machine"
+    assert "did you mean `tool_diameter`" in r.structured_content["error"]["message"]
+    assert not (root / "bit2.nc").exists()
+
+
+@pytest.mark.asyncio(loop_scope="module")
+async def test_measure_takes_every_name_values_lists_a_patterns_original_too(shared):
+    """Issue 111: `values` lists a pattern's original as `plate.corners[0]` (before its
+    copies), and `measure` said "nothing is named `plate.corners[0].c`"."""
+    session, root = shared
+    (root / "corners.aidl").write_text("""units mm
+solid plate {
+    body = Rectangle(center=(0, 0), width=80, height=50)
+    hole holes { c = Circle(center=(-30, -15), diameter=4.5 mm) }
+    corners = CornerPattern(holes, body, inset=10)
+}
+""")
+    r = await session.call_tool("values", {"path": "corners.aidl"})
+    names = [v["name"] for v in r.structured_content["values"]]
+    assert "plate.corners[0].c.center" in names
+    r = await session.call_tool("measure", {"path": "corners.aidl", "a": "plate.corners[0].c",
+                                            "b": "plate.corners[1].c"})
+    assert not r.is_error, _text(r)
+    m = r.structured_content["measure"]
+    assert m["center_distance"] == 60.0 and m["distance"] == 55.5 and m["contact"] == "apart"

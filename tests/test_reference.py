@@ -70,7 +70,8 @@ def test_topic_gives_signature_units_and_members():
     text = find("spur_gear").render()
     assert "spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg, bore=0 mm" in text
     assert "phase = 0 deg: an angle" in text and "angle: degrees (`30` or `30 deg`" in text
-    assert "cx = 0 mm: a length" in text and "center's starting position" in text
+    # its Anchor line (issue 111), no longer a generic "center's starting position"
+    assert "cx = 0 mm: a length; the x of (cx, cy), the centre of `hub`" in text
     assert "teeth = 20: a number" in text
     for m in ("bore_hole", "pitch", "hub", "teeth_ring"):
         assert m in text.split("Members")[-1]
@@ -225,7 +226,7 @@ def test_imported_template_in_another_style_is_named_with_its_parameters(tmp_pat
     assert d.suggestions[0] == "spur_gear" and d.fix.replacement == "spur_gear"
     assert "spur_gear(teeth=20, module=2 mm, pressure_angle=20 deg" in d.hint
     assert "angles (degrees" in d.hint and "pressure_angle, phase" in d.hint
-    assert "cx, cy: the x and y where its center starts" in d.hint
+    assert "cx, cy: (cx, cy) is the centre of `hub`" in d.hint      # its Anchor line
     # a template of the file itself, too
     d = _diag("def my_plate(w=40 mm) -> solid {\n    r = Rectangle(center=(0, 0), width=w, "
               "height=10)\n}\nsolid part {\n    p = MyPlate(w=30 mm)\n}\n", "E0103", tmp_path)

@@ -170,3 +170,67 @@ def test_a_sweep_starts_no_point_its_work_left_cannot_pay():
     # room for two points: two judged, nothing begun past them
     rep = sweep(PLATE, "p.aidl", points=0, work=int(2.5 * need))
     assert 1 <= rep.points <= 2 and rep.work <= int(2.5 * need) and rep.short
+
+
+def _sunk_grid(n: int, sunk: bool = True) -> str:
+    return f"""units mm
+thickness 4 mm
+solid panel {{
+    body = Rectangle(center=({n * 5}, {n * 5}), width={n * 10 + 10}, height={n * 10 + 10})
+    for i in range({n}) {{
+        for j in range({n}) {{
+            hole h {{ c = Circle(center=(i * 10 + 5, j * 10 + 5), diameter=3 mm) }}
+            {"Countersink(h, diameter=6 mm)" if sunk else ""}
+        }}
+    }}
+    hole edge {{ c = Circle(center=(2, -3), diameter=3 mm) }}
+    Countersink(edge, diameter=9 mm)
+}}
+"""
+
+
+def test_each_countersink_is_judged_against_the_material_near_it(monkeypatch):
+    """Issue 110: W0528 subtracted the whole part from each head's disc (3,025 sunk holes:
+    31.7 s of CPU against 1.98 s unsunk).  Each head now meets only the loops near it: the
+    loops one head is measured against do not grow with the panel, and the warnings are
+    the same (the head off the edge, and no other)."""
+    from aidl_lang.output.checks.holes import sinks as S
+    met: list = []
+    around = S._Near.around
+
+    def counted(self, center, r):
+        got = around(self, center, r)
+        met.append(len(got.to_polygons()))
+        return got
+    monkeypatch.setattr(S._Near, "around", counted)
+    most = {}
+    for n in (8, 16):
+        met.clear()
+        r = aidl_lang.compile(source=_sunk_grid(n))
+        w = [d for d in r.diagnostics if d.code == "W0528"]
+        assert len(w) == 1 and "countersink of `panel.edge.c` at (2, -3)" in w[0].message
+        assert len(met) == n * n + 1
+        most[n] = max(met)
+    assert most[16] == most[8] <= 12          # its hole, its neighbours', the outline
+
+
+def test_the_wall_guards_message_says_what_it_measured(monkeypatch):
+    """Issue 110: the wall guard said "this machine gave the compile less than 10% of a
+    core" after 56.8 s of CPU in 150 s (38 %).  It now says the CPU the compile got since
+    it started and that share, measured (the clocks stand in for a busy machine)."""
+    import time
+    from aidl_lang.base import limits
+    clock = {"cpu": 100.0, "wall": 1000.0}
+    monkeypatch.setattr(time, "process_time", lambda: clock["cpu"])
+    monkeypatch.setattr(time, "monotonic", lambda: clock["wall"])
+    start = limits.started()
+    clock["cpu"] += 56.8
+    clock["wall"] += 150.5
+    text = limits.wall_text(15.0, start)
+    assert text == ("more than 150 s of wall time (10 x its 15 s budget), in which the compile "
+                    "got 56.8 s of CPU (38% of a core: the machine is busy, or a stage waited)")
+    d = limits.Deadline(limits.now() + 1e9)
+    clock["wall"] += 200.0
+    with pytest.raises(limits.OutOfBudget) as ex:
+        d.backstop("booleans")
+    assert "in which the compile got 0 s of CPU (0% of a core" in str(ex.value)

@@ -293,12 +293,9 @@ def test_svg_paths_flip_y(compile_text):
     "Circle(center=(3, -2), radius=7)",
     "Rectangle(center=(0, 0), width=20, height=8, rotation=30 deg)",
     "RoundedRectangle(center=(1, 2), width=20, height=10, corner_radius=3)",
+    # issue 109: boxed by its corner arcs (±10.83), no longer its sharp corners (±14.14)
     pytest.param("RoundedRectangle(center=(0, 0), width=20, height=20, corner_radius=8, "
-                 "rotation=45 deg)", id="rotated-rounded-rectangle",
-                 marks=pytest.mark.xfail(strict=True, reason="the bounding box of a rotated "
-                                         "RoundedRectangle uses its sharp corners (±14.14) while "
-                                         "the drawn outline reaches only ±10.83, so Above/"
-                                         "Inside/... leave gaps")),
+                 "rotation=45 deg)", id="rotated-rounded-rectangle"),
     "RegularPolygon(center=(0, 0), radius=10, sides=5, rotation=10 deg)",
     "Slot(center=(0, 0), length=30, width=6, rotation=60 deg)",
     "Triangle((0, 0), (10, 2), (3, 9))",

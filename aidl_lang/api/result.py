@@ -417,13 +417,10 @@ class Result:
         (a rectangle's edges ``body.top`` too)."""
         if self._names is not None:
             return self._names
-        model = self.compiled.model
-        root = model.root
-        implicit = root.name == "model" and root.span is not None and root.span.start == 0
+        from .values import named_structures
         geo: dict = {}
         structs: dict = {}
-        for s in model.structures:
-            base = s.path[len("model"):].lstrip(".") if implicit else s.path
+        for base, s in named_structures(self.compiled.model):
             if base:
                 structs[base] = s
             prefix = base + "." if base else ""

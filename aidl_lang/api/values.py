@@ -188,14 +188,6 @@ def _values(model, scale: float, unit: str, sizes: bool = False) -> list[Value]:
     from ..geometry.core.expr import evaluate
     x = model.x
     xs = model.xs()
-    root = model.root
-    implicit = root.name == "model" and root.span is not None and root.span.start == 0
-
-    def name_of(s) -> str:
-        p = s.path
-        if implicit:
-            p = p[len("model"):].lstrip(".")
-        return p
 
     def length(n, mm):
         return Value(n, "length", mm / scale, unit, mm)
@@ -259,24 +251,36 @@ def _values(model, scale: float, unit: str, sizes: bool = False) -> list[Value]:
         vals += _named_quantities(s.scope, prefix, x, (ox, oy), scale, unit)
         return vals
 
+    # first the file's own params and constants (`param width = 40 mm`, `length = width * 2`)
+    out: list[Value] = _named_quantities(model.constants, "", x, (0.0, 0.0), scale, unit)
+    for base, s in named_structures(model):
+        out += structure(s, base)
+    return out
+
+
+def named_structures(model):
+    """``(name, structure)`` of every structure as :attr:`Result.values` names it: its path
+    (without the implicit ``model.``), and a pattern's original also under the pattern's
+    name, before its copies (``holes = LinearPattern(bolt, ...)``: ``holes[0]`` is ``bolt``,
+    its children with it; ``measure`` takes the same names, issue 111)."""
+    root = model.root
+    implicit = root.name == "model" and root.span is not None and root.span.start == 0
+
+    def name_of(s) -> str:
+        return s.path[len("model"):].lstrip(".") if implicit else s.path
+
     def subtree(s):
         yield s
         for ch in s.children.values():
             yield from subtree(ch)
-
-    # first the file's own params and constants (`param width = 40 mm`, `length = width * 2`)
-    out: list[Value] = _named_quantities(model.constants, "", x, (0.0, 0.0), scale, unit)
     for s in model.structures:
         base = name_of(s)
         first = s.pattern_original
         if first is not None and base.endswith("[1]"):
-            # `holes = LinearPattern(bolt, ...)`: `holes[0]` is the original `bolt`, listed
-            # before the copies under that name too (its children with it)
             alias, own = base[:-3] + "[0]", name_of(first)
             for t in subtree(first):
-                out += structure(t, alias + name_of(t)[len(own):])
-        out += structure(s, base)
-    return out
+                yield alias + name_of(t)[len(own):], t
+        yield base, s
 
 
 def _geometry_names(s) -> list[tuple[str, object]]:
@@ -310,8 +314,17 @@ def _named_quantities(scope: dict, prefix: str, x, origin, scale: float,
     (params and constants), solved: lengths in the file's unit, angles in degrees, bare
     numbers as they are, points in the model frame.  Geometry, structures, lists and other
     dimensions (an area) are left out."""
-    from ..geometry.core.expr import evaluate
+    from ..geometry.core.expr import evaluate as _evaluate
     from ..geometry.core.values import ANG, LEN, NUM, PV, Q
+    from ..geometry.relations.bbox import collect, contains_bbox, exclusions, expand
+
+    def evaluate(e, x):
+        # a box's side (`top = body.bb.top`) is expanded at the solution first, as an
+        # `assert` reads it (issue 109: `values` raised on it)
+        if contains_bbox(e):
+            e = expand(e, x, exclusions(collect(e, [])))
+        return _evaluate(e, x)
+
     out = []
     for name, v in scope.items():
         n = prefix + name

@@ -277,7 +277,8 @@ objects, Newton steps, vertices, pairs, segments; about 15 s of the reference ma
 same count on every machine at any load, so the same program gets the same answer, the same
 message and the same output everywhere). CPU time is only a backstop,
 at 6 times 15 s, and its message says so; wall time an outer guard, at 10 times 15 s, for a
-machine that gives the compile less than a tenth of a core. Each construct's own limit
+machine too busy to give the compile the CPU it needs (its message says the CPU the compile got
+in that time and its share of a core). Each construct's own limit
 (E0301, E0302, E0303) stops one loop or template that is too large by itself; the budget stops
 their product: nested loops, a template that instantiates itself several times per level.
 The error points at the outermost loop or template instance running when the budget ran out
@@ -434,6 +435,25 @@ per sheet), or place the parts apart in the program. SVG, DXF and PDF are writte
         Place(back, rotation=(90 deg, 0, 0), position=(0, 60, 0))
     }
 """),
+    "E0503": ("countersinks or counterbores leave nothing of a part, or cut it apart", """
+A `Countersink` whose cone, or a `Counterbore` whose recess, goes through the part (W0529) takes
+from its bottom face a disc as wide as the cone is there (`diameter - 2 x thickness x
+tan(angle / 2)`; a counterbore's `diameter`). When those discs cover the whole part, or cut it
+into pieces, the part cannot be made as drawn: an STL, 3MF or GLB would hold nothing (or loose
+pieces) while the SVG and DXF draw the whole plate and a router's G-code cut cones into it. The
+error is at the call of the widest head, the compile stops, and no format is written (a file
+written before is left as it was); `--thickness` given to `aidl render` is judged the same
+way. Give the head the screw's size (an M4 flat-head screw: a 4.5 mm hole, a 9 mm head), a
+wider angle, a shallower counterbore, or thicker material.
+
+    thickness 6 mm
+    solid plate {
+        body = Rectangle(center=(0, 0), width=80, height=50)
+        hole screws { c = Circle(center=(-30, -15), diameter=4.5 mm) }
+        corners = CornerPattern(screws, body, inset=10)
+        Countersink(corners, diameter=200 mm)      # 188 mm wide at the bottom: E0503
+    }
+"""),
     "E0900": ("internal error in aidl", """
 A bug in aidl, not in your program: a stage of the compiler raised an exception it should have
 turned into a diagnostic. `aidl check` and `aidl render` report it and exit with status 3; the
@@ -455,10 +475,15 @@ kept. A statement that makes geometry is never one to drop: a `CornerPattern` be
 `HorizontalDistance` and a `VerticalDistance` that place its hole the same way keeps the pattern
 (it makes the copies) and drops the two distances; when only such statements are left the
 warning names the redundancy without a drop list. A standard-library template's own
-constraints are never the ones to drop either (its user cannot edit them): beside one
-(`CenterInside(h, body)` on a joint that holds itself by `Fixed(self)`) the hint names the
-user's line and where the template holds it (`std/joints.aidl line 136`), and a redundancy
-wholly inside a template is not reported. A line that makes several constraints (a loop's
+constraints are never the ones to drop either (its user cannot edit them): beside one the hint
+names the user's line and where the template holds it (`std/joints.aidl line 154`), and a
+redundancy wholly inside a template is not reported. A template instance's hold of its own
+place (`Fixed(self)`: a joint "holds itself where `cx`, `cy` put it") is where it starts,
+which the constraints placing it override (the solver moves the instance): nothing placing
+an instance (`AlignRight(tail, panel)`, `CenterInside(h, body)`) is redundant with it, even
+where the two agree, and no hint says to drop such a placement (dropped, the instance went
+back to where the template started it: issue 109). Every edit a W0401 proposes, applied,
+leaves the design where it was (law 4, docs/laws.md). A line that makes several constraints (a loop's
 body) of which only some are implied is never offered for dropping: the warning says how many
 of them are redundant and that removing the line would free what the others hold, and its hint
 narrows the other statement instead (`AlignCenterX(pockets, body)` for a `CenterInside` whose y
@@ -500,17 +525,20 @@ repeats the distance (W0401).
 """),
     "W0405": ("box read before Fillet or Chamfer", """
 A constraint reads a side of the box of a structure (`AlignLeft(x0, board)`, `x0.bb.left`,
-`Above`, `Inside`, ...) that has a `Fillet` or `Chamfer`, a miter-joined `Offset` or `Shell`,
-or an `Inset`, and its final outline does not reach that side: the box is read from the
-shapes as drawn, before the rounding (which acts on the finished outline after the booleans),
-so where a rounded corner is the box's extreme the outline ends short of it (a 45-degree X
-filleted by 1.5 mm: 0.621 mm in from the board's edge); an offset is boxed as its shape's box
-grown by the distance, exact for a round join only (a mitered star's tips reach further, an
-inset's outline stays inside). The warning gives both sides and the difference; write that
-side as an equation with the difference to 1e-6 mm (`x0.bb.left + 0.62132 mm ==
-board.bb.left`: an equation on box values is taken as written, never warned, and moves the
-first-named as the `Align*` did), or round only the corners away from that side
-(`Fillet(at=[...], radius=...)`), or offset with `join="round"`.
+`Above`, `Inside`, ...) that has a `Fillet` or `Chamfer`, and its final outline does not
+reach that side: the box is read from the shapes as drawn, before the rounding (which acts on
+the finished outline after the booleans), so where a rounded corner is the box's extreme the
+outline ends short of it (a 45-degree X filleted by 1.5 mm: 0.621 mm in from the board's
+edge). The warning gives both sides and the difference; write that side as an equation with
+the difference to 1e-6 mm (`x0.bb.left + 0.62132 mm == board.bb.left`: an equation on box
+values is taken as written, never warned, and moves the first-named as the `Align*` did), or
+round only the corners away from that side (`Fillet(at=[...], radius=...)`). An `assert` on
+such a box is judged on it too (E0405 when false there); where its verdict on the final
+outline would be the other one, W0405 says so at the assert. Also a relation
+on the box of a shape made from others whose box is its drawn outline's (an `Inset`, a
+miter-joined `Offset` or `Shell`, an `Intersect`: exact at the solution) that the solution
+still misses after the solver solved again from it: the solve moved the shapes it is made
+from apart (an `Intersect`'s two shapes), so its outline changed under the relation.
 
     solid board { b = Rectangle(center=(0, 0), width=90, height=90) }
     solid x0 {
@@ -725,7 +753,10 @@ inner hole cuts from it, and `AllowOverlap(window, tab)` in the structure holdin
 marks the refill as intended (it silences this warning and W0501 for the pair).
 Two holes meant to cut one opening (a screw hole on the edge of a window) are said with
 `AllowOverlap(window, screw)` in the structure holding both, as the hint writes (or draw the
-shapes in one hole structure). When more than 55 % of the smaller hole lies inside the other
+shapes in one hole structure); a copy made by a pattern with no name (`first_pattern[4]` of
+`CircularPattern(first, 8, c)`) has no name a program can write, so the hint asks for the
+pattern's statement to be named first (`NAME = ` before it, then `AllowOverlap(bolt, NAME)`).
+When more than 55 % of the smaller hole lies inside the other
 and relations place both (a slit placed from a knob hole's centre out to the edge), one
 opening looks meant: the hint leads with `AllowOverlap` and gives the move second.
 The suggested fix (`--json`, the editors' quick fix) never hides the overlap. Two different
@@ -1180,6 +1211,15 @@ A backslash in a string starts an escape: `\\n` a line break, `\\t` a tab, `\\\\
 backslash out. A path such as `"C:\\temp\\new"` holds a tab and a line break: write
 `"C:\\\\temp\\\\new"`.
 """),
+    "W0115": ("param that nothing reads", """
+A `param` that no statement of the program reads: its slider (`aidl studio`, `aidl serve`) and
+`--set NAME=...` change nothing, which is rarely what was meant (a size written as a number
+where the param should be). Use it where the size it names is written (`width=plate_w`), or
+delete the line.
+
+    param plate_w = 120 mm, min = 80 mm, max = 200 mm
+    solid plate { body = Rectangle(center=(0, 0), width=120 mm, height=60) }   # width=plate_w
+"""),
     "W0104": ("empty drawing", """
 The file is empty (nothing but comments), or its structures build no geometry at all, so the
 SVG would be empty. Add shapes, or instantiate a template. A file of only templates, params and
@@ -1343,9 +1383,31 @@ corners and how far the material stays. Set `relief = "dogbone"` (the bit runs a
 corner's bisector until its edge touches it; the built-in router profile's default) or
 `relief = "tbone"` (along the longer side) in the profile; the SVG and DXF stay as drawn.
 
+With a relief, a corner where the relief cannot be cut as asked is said the same way, at the
+hole (or outline) it is on, with the reason: a corner sharper than 60 degrees, where the bit's
+stroke from the tool path's corner would gouge both edges (a 10 degree corner's dogbone takes
+3.5 times the bit's disc), or a wall the stroke would cut through or leave thinner than the
+minimum wall (`min_wall`; a T-bone into a 1.2 mm wall cuts the part in two). There a T-bone is
+cut as a dogbone when that fits, else the corner is left as the offset path leaves it. Widen
+the corner to 60 degrees or more, keep the wall the bit's radius plus the minimum wall, or use
+a smaller bit.
+
     # router.toml
     kind = "router"
     relief = "dogbone"
+    # program: a 20 x 10 mm hole 0.4 mm from a 60 mm plate's edge, min_wall 0.3 mm
+    hole window { w = Rectangle(bottom_left=(39.6, 15), width=20, height=10) }   # W0527
+"""),
+    "W0531": ("parts nearer each other than the tool is wide", """
+A router's bit runs its centre a radius off each part's outline, so it cuts a whole diameter
+away from the part; a laser's kerf likewise.  Two parts drawn (or laid out) nearer each other
+than that lose material to each other's cut: `aidl render --machine router` of parts 3 mm apart
+takes 0.175 mm from each with the 3.175 mm bit.  Draw the parts at least the tool's width
+apart, or lay them out for cutting with a larger gap (`--layout sheet --gap 5mm`).  Parts that
+touch (pieces a cut freed, sharing an edge that is cut once) are not said.
+
+    solid a { r = Rectangle(center=(0, 0), width=12, height=12) }
+    solid b { r = Rectangle(center=(15, 0), width=12, height=12) }   # 3 mm apart: W0531
 """),
     "W0130": ("drawing entities skipped", """
 Entities of a drawing that have no exact form here are skipped and counted, named by kind:

@@ -416,7 +416,7 @@ def _write_all(items: list[tuple[Path, bytes]], follow: bool = False) -> str | N
 def cmd_render(args) -> int:
     from ..pipeline import compile_source, report_out_of_budget, report_stacked
     from ..output import MissingDependency, Options, OutputError, build
-    from ..output.writers import StackedParts
+    from ..output.writers import StackedParts, SunkAway
     outs = _outputs(args)
     if isinstance(outs, int):
         return outs
@@ -499,6 +499,10 @@ def cmd_render(args) -> int:
             _emit(res.sink, args.json, False, _work_of(res))
         elif isinstance(e, StackedParts):        # located at the first of the two parts
             report_stacked(res.sink, res.drawing, e)
+            _emit(res.sink, args.json, False, _work_of(res))
+        elif isinstance(e, SunkAway):            # located at the widest head's call
+            from ..base.diagnostics import Diagnostic
+            res.sink.add(Diagnostic("E0503", e.message, e.span, "error", hint=e.hint))
             _emit(res.sink, args.json, False, _work_of(res))
         elif hasattr(e, "holds"):                # a layout with no solid part: at the design
             from ..pipeline import report_nothing

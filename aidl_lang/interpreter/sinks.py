@@ -77,9 +77,62 @@ def sink_call(interp, cname: str, conv, node, spans):
         raise EvalError("E0108", f"the `depth` of `Counterbore` is {depth:g} mm: a "
                         "counterbore is more than 0 deep", spans.get("depth", node.span),
                         hint=f"write e.g. `{eg}`")
-    interp.model.sinks.append(Sink(cname.lower(), circles, vals["diameter"], angle, depth,
-                                 node.span))
+    kind = cname.lower()
+    # each sunk Circle's call, kept beside the model's list (a pattern of 10,000 holes sunk
+    # one call each is not searched again at every call)
+    model, index = interp.__dict__.get("_sunk") or (None, None)
+    if model is not interp.model:
+        index = {}
+        interp.__dict__["_sunk"] = (interp.model, index)
+    circles = _once(index, circles, kind, vals["diameter"], angle, depth, cname, hspan,
+                    node.span)
+    if circles is not None:
+        sk = Sink(kind, circles, vals["diameter"], angle, depth, node.span)
+        interp.model.sinks.append(sk)
+        index.update((id(g), sk) for g in circles)
     return None
+
+
+def _once(first: dict, circles: list, kind: str, diameter: float, angle, depth, cname: str,
+          hspan, span) -> list | None:
+    """``circles`` with each hole once (issue 109, law 5: one thing is counted once): a hole
+    named twice in one call (``[a, a.c]``) or sunk again by an earlier call with the same
+    head (the same sink repeated) is dropped, and ``None`` when nothing new is left; a hole
+    an earlier call sank with another head (``first``: id of a Circle -> its
+    :class:`~..geometry.core.model.Sink`) is a located E0108 naming that call's line."""
+    out, ids = [], set()
+    for g in circles:
+        if id(g) in ids:
+            continue
+        ids.add(id(g))
+        sk = first.get(id(g))
+        if sk is None:
+            out.append(g)
+            continue
+        if sk.kind == kind and abs(sk.diameter - diameter) <= 1e-9 and \
+                _same(sk.angle, angle) and _same(sk.depth, depth):
+            continue                    # the same head again: one countersink, said once
+        at = sk.span
+        line = "" if at is None else (f" (line {at.line})" if span is None or
+                                      at.file == span.file else f" ({at.file}:{at.line})")
+        raise EvalError("E0108", f"`{cname}` sinks hole `{g.label}` a second time: "
+                        f"`{_head(sk)}` sinks it already{line}; a hole takes one countersink "
+                        "or counterbore", hspan,
+                        hint="drop this one (or the hole from its list), or give the first "
+                             "the head meant")
+    return out if out or not circles else None
+
+
+def _same(a, b) -> bool:
+    return (a is None) == (b is None) and (a is None or abs(a - b) <= 1e-9)
+
+
+def _head(sk) -> str:
+    """A recorded sink as a call, for a message: ``Countersink(diameter=9 mm)``."""
+    if sk.kind == "countersink":
+        return (f"Countersink(diameter={sk.diameter:g} mm, "
+                f"angle={math.degrees(sk.angle):g} deg)")
+    return f"Counterbore(diameter={sk.diameter:g} mm, depth={sk.depth:g} mm)"
 
 
 def _descendants(s) -> list:

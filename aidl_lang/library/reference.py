@@ -24,7 +24,7 @@ from pathlib import Path
 from .. import ast as A
 from ..registry import (BBOX_MEMBERS, CONSTANTS, ENTRIES, FUNCTIONS, SWAPPED, SYNONYM_DOCS,
                        SYNONYMS, UNITS_ANGLE, UNITS_LENGTH, Entry, arg_synonyms)
-from .topic_examples import EXAMPLES
+from .topic_examples import EXAMPLES, TEMPLATE_ARGS, TEMPLATE_EXAMPLES
 from .sources import STDLIB
 
 # ---------------------------------------------------------------- units of parameters
@@ -55,7 +55,8 @@ KIND_UNIT = {"length": "length, mm", "angle": "angle, deg", "number": "number",
              "point": "point (x, y) mm", "points": "[(x, y), ...]", "bool": "true/false",
              "string": "text"}
 
-# what the conventional parameter names of templates mean
+# what the conventional parameter names of a template that is not the standard library's mean
+# (a stdlib template says which point (cx, cy) is in its `Anchor:` line: StdTemplate.anchor)
 PARAM_GLOSS = {"cx": "x of the center's starting position (constraints may move the instance)",
                "cy": "y of the center's starting position (constraints may move the instance)"}
 
@@ -106,9 +107,10 @@ def template_signature(d: A.Def) -> str:
     return f"{d.name}({', '.join(ps)}) -> {d.kind}"
 
 
-def units_line(pairs) -> str:
+def units_line(pairs, anchor: str = "") -> str:
     """``lengths (mm, or with a unit): a, b; angles (deg): c; ...`` for (name, kind) pairs:
-    the unit of every parameter, grouped by kind, in one line."""
+    the unit of every parameter, grouped by kind, in one line (``anchor``: what ``cx, cy``
+    are, when known)."""
     groups: dict[str, list[str]] = {}
     for name, kind in pairs:
         groups.setdefault(kind, []).append(name)
@@ -122,16 +124,27 @@ def units_line(pairs) -> str:
     out = [f"{heads.get(k, k)}: {', '.join(v)}" for k, v in groups.items()]
     gloss = [f"{n}: {PARAM_GLOSS[n]}" for n, _ in pairs if n in PARAM_GLOSS]
     if {"cx", "cy"} <= {n for n, _ in pairs}:
-        gloss = ["cx, cy: the x and y where its center starts (constraints may move the "
-                 "instance)"]
+        gloss = [f"cx, cy: {anchor}" if anchor else "cx, cy: the x and y where its center "
+                 "starts (constraints may move the instance)"]
     return "; ".join(out + gloss)
 
 
 def template_params_hint(d: A.Def) -> str:
-    """The parameter list of a template with the unit of each, for E0105/E0103 hints."""
+    """The parameter list of a template with the unit of each, for E0105/E0103 hints (a
+    standard-library template's ``cx, cy`` glossed by its ``Anchor:`` line)."""
     pairs = [(p.name, kind_of_default(p.default) if p.default is not None else "any")
              for p in d.params]
-    return f"`{template_signature(d)}`" + (f"; {units_line(pairs)}" if pairs else "")
+    t = stdlib_templates().get(d.name)
+    anchor = t.anchor_text if t is not None and _in_stdlib(d, t) else ""
+    return f"`{template_signature(d)}`" + (f"; {units_line(pairs, anchor)}" if pairs else "")
+
+
+def _in_stdlib(d: A.Def, t: StdTemplate) -> bool:
+    """Whether ``d`` is the definition of stdlib template ``t`` (read from its file)."""
+    try:
+        return Path(d.span.file).resolve() == (Path(STDLIB) / f"{t.module}.aidl").resolve()
+    except (TypeError, OSError, AttributeError):
+        return False
 
 
 def entry_units_hint(entry: Entry) -> str:
@@ -155,6 +168,23 @@ class StdTemplate:
     node: A.Def
     doc: str                         # the comment block above the `def`, joined
     members: tuple[str, ...]         # the backticked names of its "Members:" sentence
+    anchor: str = ""                 # its `Anchor:` line: the point (cx, cy) is ...
+    turn: str = ""                   # ... and where it points at rotation 0 ("" if no rotation)
+
+    @property
+    def anchor_text(self) -> str:
+        """``(cx, cy) is POINT; rotation 0: DIRECTION`` from the ``Anchor:`` line."""
+        if not self.anchor:
+            return ""
+        return f"(cx, cy) is {self.anchor}" + (f"; rotation 0: {self.turn}" if self.turn else "")
+
+    @property
+    def holds_itself(self) -> bool:
+        """Whether the template fixes its own instance (``Fixed(self)``: joints on an edge)."""
+        return any(isinstance(st, A.ExprStmt) and isinstance(st.expr, A.Call)
+                   and getattr(st.expr.func, "id", None) == "Fixed"
+                   and [getattr(a, "id", None) for a in st.expr.args] == ["self"]
+                   for st in self.node.body.stmts)
 
     @property
     def signature(self) -> str:
@@ -203,6 +233,20 @@ def _doc_above(lines: list[str], row: int) -> str:
     return " ".join(reversed(block)).strip()
 
 
+ANCHOR_LINE = re.compile(r"Anchor: \(cx, cy\) is (?P<point>.+?)"
+                         r"(?:; rotation 0: (?P<turn>.+?))?\.$")
+
+
+def _anchor(doc: str) -> tuple[str, str, str]:
+    """(doc without its ``Anchor:`` line, the point, the direction at rotation 0): the line
+    ``# Anchor: (cx, cy) is POINT[; rotation 0: DIRECTION].`` ends a template's comment."""
+    i = doc.rfind("Anchor: ")
+    m = ANCHOR_LINE.match(doc[i:]) if i == 0 or (i > 0 and doc[i - 1] == " ") else None
+    if m is None:
+        return doc, "", ""
+    return doc[:i].strip(), m.group("point"), m.group("turn") or ""
+
+
 def _members(doc: str) -> tuple[str, ...]:
     for s in sentences(doc):
         m = re.match(r"Members?:\s*(.*)", s)
@@ -224,14 +268,15 @@ def stdlib_templates() -> dict[str, StdTemplate]:
         prog = parse(text, str(f), DiagnosticSink())
         for st in prog.stmts:
             if isinstance(st, A.Def):
-                doc = _doc_above(lines, st.span.line - 1)
-                out[st.name] = StdTemplate(st.name, f.stem, st, doc, _members(doc))
+                doc, point, turn = _anchor(_doc_above(lines, st.span.line - 1))
+                out[st.name] = StdTemplate(st.name, f.stem, st, doc, _members(doc), point, turn)
     return out
 
 
 def stdlib_lines(defaults: bool = True) -> str:
     """One line per stdlib template, by module: signature (without ``cx, cy``; defaults
-    unless ``defaults`` is false) and the first sentence of its doc comment (``aidl prompt``)."""
+    unless ``defaults`` is false), the first sentence of its doc comment, its members and
+    ``@ POINT``, the point ``(cx, cy)`` is by its ``Anchor:`` line (``aidl prompt``)."""
     rows, module = [], None
     for t in stdlib_templates().values():
         if t.module != module:
@@ -239,8 +284,15 @@ def stdlib_lines(defaults: bool = True) -> str:
             rows.append(f"`import \"std/{module}.aidl\"`:")
         ps = [f"{n}={d}" if defaults else n for n, _, d in t.params if n not in ("cx", "cy")]
         mem = f" Members: {', '.join(t.members)}." if t.members else ""
-        rows.append(f"- {t.name}({', '.join(ps)}) -> {t.node.kind}: {t.summary}{mem}")
+        at = (f" @ {_short(t.anchor)}" + (f"; rotation 0: {t.turn}" if t.turn else "")
+              + ".") if t.anchor else ""
+        rows.append(f"- {t.name}({', '.join(ps)}) -> {t.node.kind}: {t.summary}{mem}{at}")
     return "\n".join(rows)
+
+
+def _short(point: str) -> str:
+    """An anchor's point as the prompt says it after ``@``: ``the centre of X`` as ``X``."""
+    return point.removeprefix("the centre of ").removeprefix("the ")
 
 
 # ---------------------------------------------------------------- topics
@@ -334,8 +386,9 @@ def _entry_topic(e: Entry) -> Topic:
 def _template_topic(t: StdTemplate) -> Topic:
     lines = [_wrap(t.doc, ""), "", f"Import: `import \"std/{t.module}.aidl\"` (or `import stdlib.{t.module}`)",
              "", "Signature:", f"  {t.signature}", "", "Parameters:"]
+    glosses = _anchor_glosses(t)
     for n, kind, d in t.params:
-        gloss = f"; {PARAM_GLOSS[n]}" if n in PARAM_GLOSS else ""
+        gloss = f"; {glosses[n]}" if n in glosses else ""
         said = KIND_WORDS.get(kind, f"a list of {kind}" if kind[-1] == "s" else f"a {kind}")
         lines.append(f"  {n}: {said}, required{gloss}" if not d else f"  {n} = {d}: {said}{gloss}")
     lines += _units_block(k for _, k, _ in t.params)
@@ -343,7 +396,9 @@ def _template_topic(t: StdTemplate) -> Topic:
         lines += ["", "Members (reach them by path: `g.NAME`, `g.NAME.center`): "
                   + ", ".join(t.members)]
     lines += ["", "Use it by assignment inside a structure: `NAME = "
-              f"{t.name}(...)` (an instance of kind {t.node.kind}; place it with constraints)."]
+              f"{t.name}(...)` (an instance of kind {t.node.kind}; " + (
+                  "it holds itself where `cx`, `cy` put it)." if t.holds_itself else
+                  "place it with constraints).")]
     if t.node.kind == "assembly":
         part = "lid" if "lid" in t.members else (t.members[0] if t.members else "PART")
         lines += ["", _wrap("Cut into one of its parts (a hole in a panel): declare `hole h { "
@@ -354,49 +409,26 @@ def _template_topic(t: StdTemplate) -> Topic:
                  "\n".join(lines), _template_example(t))
 
 
-# arguments of the examples of stdlib templates (the defaults otherwise)
-_TEMPLATE_ARGS = {"spur_gear": "teeth=24, module=1.5 mm, bore=8 mm",
-                  "gear_pair": "teeth1=12, teeth2=24, module=2 mm, bore1=5 mm, bore2=8 mm",
-                  "clearance_hole": "size=4", "nut_trap": "size=3",
-                  "t_slot": "size=3", "text_on_arc": "text=\"HELLO\", radius=30 mm",
-                  "finger_box": "length=80 mm, depth=50 mm, height=40 mm",
-                  "mounting_plate": "width=80 mm, height=50 mm, screw=3"}
-
-
-# the joints hold themselves where (cx, cy) and `rotation` put them, on a panel's edge: their
-# examples place them so, never by constraints (which would repeat the template's `Fixed(self)`)
-_TEMPLATE_EXAMPLES = {
-    # the boxes: a hole of the user's own cut into the lid (CutInto; issue 61)
-    "finger_box": ("thickness 3 mm\n\nassembly kit {\n"
-                   "    box = finger_box(length=80 mm, depth=80 mm, height=50 mm)\n"
-                   "    hole lid_hole { c = Circle(center=(0, 0), diameter=20) }\n"
-                   "    CenterInside(lid_hole, box.lid)\n"
-                   "    CutInto(lid_hole, box.lid)    # a 20 mm hole in the middle of the lid\n}\n"),
-    "lid_box": ("thickness 3 mm\n\nassembly kit {\n"
-                "    box = lid_box(length=100 mm, width=70 mm, height=40 mm)\n"
-                "    hole knob { c = Circle(center=(0, 0), diameter=6) }\n"
-                "    CenterInside(knob, box.lid)\n"
-                "    CutInto(knob, box.lid)    # a hole for a knob's screw in the lid\n}\n"),
-    "cross_halving": ("solid panel {\n    body = Rectangle(center=(0, 0), width=120, height=60)\n"
-                      "    # from the middle of the top edge (y = 30), 30 mm down into the panel\n"
-                      "    h = cross_halving(depth=30 mm, thickness=3 mm, cx=0 mm, cy=30 mm)\n}\n"),
-    "finger_edge": ("solid panel {\n    body = Rectangle(center=(0, 0), width=100, height=60)\n"
-                    "    # the top edge (y = 30) cut into fingers; the panel lies below it\n"
-                    "    f = finger_edge(length=100 mm, thickness=3 mm, cx=0 mm, cy=30 mm)\n}\n"),
-    "tab_and_slot": ("solid panel {\n    body = Rectangle(center=(0, 0), width=60, height=40)\n"
-                     "    # two tabs and a captive-nut T-slot on the top edge (y = 20)\n"
-                     "    t = tab_and_slot(part=\"tab\", length=60 mm, cx=0 mm, cy=20 mm)\n}\n"),
-    "dovetail": ("solid panel {\n    body = Rectangle(center=(0, -10), width=60, height=40)\n"
-                 "    # tails over the band y = 0 .. 10 at the top of the panel\n"
-                 "    d = dovetail(part=\"tail\", length=60 mm, depth=10 mm, cx=0 mm, cy=0 mm)\n}\n"),
-}
+def _anchor_glosses(t: StdTemplate) -> dict[str, str]:
+    """What ``cx``, ``cy`` and ``rotation`` of a stdlib template mean, from its ``Anchor:``
+    line (tests/test_template_anchors.py measures each point and direction)."""
+    if not t.anchor:
+        return dict(PARAM_GLOSS)
+    stays = ("the instance holds itself there (`Fixed(self)`)" if t.holds_itself else
+             "constraints on the instance may move it, this point with it")
+    flat = ", as laid out flat" if t.node.kind == "assembly" else ""
+    out = {"cx": f"the x of (cx, cy), {t.anchor}{flat}; {stays}",
+           "cy": "the y of (cx, cy) (see `cx`)"}
+    if t.turn:
+        out["rotation"] = f"at 0: {t.turn}; more turns it counter-clockwise about (cx, cy)"
+    return out
 
 
 def _template_example(t: StdTemplate) -> str:
-    call = f"{t.name}({_TEMPLATE_ARGS.get(t.name, '')})"
+    call = f"{t.name}({TEMPLATE_ARGS.get(t.name, '')})"
     imp = f'import "std/{t.module}.aidl"\n\n'
-    if t.name in _TEMPLATE_EXAMPLES:
-        return imp + _TEMPLATE_EXAMPLES[t.name]
+    if t.name in TEMPLATE_EXAMPLES:
+        return imp + TEMPLATE_EXAMPLES[t.name]
     if t.node.kind == "hole":
         return (imp + "solid plate {\n    body = Rectangle(center=(0, 0), width=120, "
                 f"height=120)\n    h = {call}\n    Fixed(body)\n    CenterInside(h, body)\n}}\n")
@@ -668,7 +700,10 @@ with a 3.175 mm bit); keep cuts the tool's radius plus `min_wall` from edges and
 A router's round bit cannot cut a square inside corner: `relief = "dogbone"` (the built-in
 router's default: along the bisector) or `"tbone"` (along the longer side) runs it in until
 its edge touches every inside corner of the joints; `relief = "none"` warns W0527 naming the
-corners (and the assembled fit of the routed parts, W0517). `Countersink` / `Counterbore`
+corners (and the assembled fit of the routed parts, W0517). A relief is cut only where it takes
+at most a disc of the bit's radius beside its corner and keeps the part whole: not at a corner
+sharper than 60 deg, nor where it would cut through or thin a wall below `min_wall` (a T-bone
+there becomes a dogbone if that fits); W0527 at the hole names each such corner and why. `Countersink` / `Counterbore`
 holes: a router sinks them after the through-cuts with a V-bit (`v_bit_angle`, 90 deg) or
 pockets them (`pocket_tool` mm; 0: `tool_diameter`); a laser engraves the head's circle on a
 layer of its own (`countersink`, `counterbore`).
@@ -766,8 +801,10 @@ A comparison written as a statement in a structure is a constraint the solver ma
 Every shape and structure has `.bb`, its axis-aligned bounding box: `left`, `right`, `top`,
 `bottom` (coordinates), `width`, `height` (lengths), `center_x`, `center_y`, `center`,
 `top_left`, `top_right`, `bottom_left`, `bottom_right` (points). A structure also answers
-`s.width`, `s.left`, `s.center`, ... with its box. A structure's box covers all its geometry
-and descendants, holes included: a hole that pokes out past the outline widens it
+`s.width`, `s.left`, `s.center`, ... with its box. A shape's box is the box of the shape as
+drawn, within 1e-6 mm: a RoundedRectangle's arcs, a stencil's openings, an `Inset`'s, a
+`Shell`'s, an `Intersect`'s outline (not its shape's box grown). A structure's box covers all
+its geometry and descendants, holes included: a hole that pokes out past the outline widens it
 (construction geometry is left out). For the material only, use a shape's box
 (`plate.body.bb`). Structural relations (Above, Inside, ...) work on boxes. `self` is the
 current structure: `CenterInside(bore, self)`, `self.bb.width <= 60`.
@@ -803,6 +840,18 @@ an angle from a ratio `atan(y / x)` or `atan2(y, x)`. There is no `rad()` or `de
 # ---------------------------------------------------------------- details of entries
 # what the registry's one-line docs (also the prompt's) leave out: `aidl docs NAME` only
 DETAILS: dict[str, str] = {
+    "Countersink": "A hole is sunk once (issue 109): named twice (`[a, a.c]`) or again by "
+                   "another call with the same head, it is one countersink in `aidl parts`, "
+                   "the DXF's COUNTERSINK layer and the router's plunges; sunk again with "
+                   "another head or a Counterbore it is E0108 at the second call, naming the "
+                   "first's line. A cone deeper than the part is W0529 (the router's V-bit "
+                   "then runs round a circle at the part's thickness, so the top is still "
+                   "`diameter`); cones that go through and leave nothing of the part, or cut "
+                   "it into pieces, are E0503 and no format is written.",
+    "Counterbore": "A hole is sunk once, as with Countersink (the same head again counts "
+                   "once; another head is E0108). A recess as deep as the part is W0529; "
+                   "recesses through the part that leave nothing of it, or cut it into "
+                   "pieces, are E0503 and no format is written.",
     "Polyline": "Straight segments through the points, in order, not closed: an engraving "
                 "in a drawing (a cord, a zig-zag, a meander), a path for Stroke, or a chain "
                 "that Lines, Arcs and open Splines sharing its ends close into an outline. "

@@ -1,7 +1,8 @@
 """The example program of each `aidl docs` topic (:mod:`aidl_lang.library.reference` shows it under the
 topic's text; ``tests/test_reference.py`` compiles every one, clean): a shape, a constraint, an
-operation or a statement, each in the smallest part that shows it.  Plain strings, nothing
-compiled here."""
+operation or a statement, each in the smallest part that shows it; and the arguments or whole
+programs of the stdlib templates' examples where the default one would mislead.  Plain
+strings, nothing compiled here."""
 from __future__ import annotations
 
 from ..geometry.derived.scaling import EXAMPLE_LINES as _TRANSFORM_LINES
@@ -332,4 +333,46 @@ EXAMPLES: dict[str, str] = {
                         "cos(i * 60 deg), 20 * sin(i * 60 deg)), radius=max(2, sqrt(9))) }\n}\n"
                         "disc = Circle(center=(0, 0), radius=30)\nFixed(disc)\n"
                         "Fixed(bolt[0])", "flange"),
+}
+
+
+# arguments of the examples of stdlib templates (the defaults otherwise)
+TEMPLATE_ARGS = {"spur_gear": "teeth=24, module=1.5 mm, bore=8 mm",
+                 "gear_pair": "teeth1=12, teeth2=24, module=2 mm, bore1=5 mm, bore2=8 mm",
+                 "clearance_hole": "size=4", "nut_trap": "size=3",
+                 "t_slot": "size=3", "text_on_arc": "text=\"HELLO\", radius=30 mm",
+                 "finger_box": "length=80 mm, depth=50 mm, height=40 mm",
+                 "mounting_plate": "width=80 mm, height=50 mm, screw=3"}
+
+
+# the joints hold themselves where (cx, cy) and `rotation` put them, on a panel's edge: their
+# examples place them so, never by constraints (which would repeat the template's `Fixed(self)`);
+# a t_slot too opens an edge from its mouth at (cx, cy), so its example is not a centred hole
+TEMPLATE_EXAMPLES = {
+    # the boxes: a hole of the user's own cut into the lid (CutInto; issue 61)
+    "finger_box": ("thickness 3 mm\n\nassembly kit {\n"
+                   "    box = finger_box(length=80 mm, depth=80 mm, height=50 mm)\n"
+                   "    hole lid_hole { c = Circle(center=(0, 0), diameter=20) }\n"
+                   "    CenterInside(lid_hole, box.lid)\n"
+                   "    CutInto(lid_hole, box.lid)    # a 20 mm hole in the middle of the lid\n}\n"),
+    "lid_box": ("thickness 3 mm\n\nassembly kit {\n"
+                "    box = lid_box(length=100 mm, width=70 mm, height=40 mm)\n"
+                "    hole knob { c = Circle(center=(0, 0), diameter=6) }\n"
+                "    CenterInside(knob, box.lid)\n"
+                "    CutInto(knob, box.lid)    # a hole for a knob's screw in the lid\n}\n"),
+    "cross_halving": ("solid panel {\n    body = Rectangle(center=(0, 0), width=120, height=60)\n"
+                      "    # from the middle of the top edge (y = 30), 30 mm down into the panel\n"
+                      "    h = cross_halving(depth=30 mm, thickness=3 mm, cx=0 mm, cy=30 mm)\n}\n"),
+    "finger_edge": ("solid panel {\n    body = Rectangle(center=(0, 0), width=100, height=60)\n"
+                    "    # the top edge (y = 30) cut into fingers; the panel lies below it\n"
+                    "    f = finger_edge(length=100 mm, thickness=3 mm, cx=0 mm, cy=30 mm)\n}\n"),
+    "tab_and_slot": ("solid panel {\n    body = Rectangle(center=(0, 0), width=60, height=40)\n"
+                     "    # two tabs and a captive-nut T-slot on the top edge (y = 20)\n"
+                     "    t = tab_and_slot(part=\"tab\", length=60 mm, cx=0 mm, cy=20 mm)\n}\n"),
+    "t_slot": ("solid panel {\n    body = Rectangle(center=(0, 0), width=60, height=40)\n"
+               "    # from the middle of the top edge (y = 20), 12 mm down into the panel\n"
+               "    s = t_slot(size=3, cx=0 mm, cy=20 mm)\n    Fixed(body)\n}\n"),
+    "dovetail": ("solid panel {\n    body = Rectangle(center=(0, -10), width=60, height=40)\n"
+                 "    # tails over the band y = 0 .. 10 at the top of the panel\n"
+                 "    d = dovetail(part=\"tail\", length=60 mm, depth=10 mm, cx=0 mm, cy=0 mm)\n}\n"),
 }

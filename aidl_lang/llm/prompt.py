@@ -206,7 +206,8 @@ def stdlib(defaults: bool = True) -> str:
     """The standard library's templates, one line each, from their doc comments (without the
     parameters' defaults when ``defaults`` is false: ``aidl docs NAME`` gives them)."""
     return ("Standard library: templates to instantiate, never to rewrite by hand (each also "
-            "takes `cx, cy`: where its center starts; yours do not: `part.bb.center == (x, y)` "
+            "takes `cx, cy`: the point after `@` on its line, `@ X` the centre of X; yours do "
+            "not: `part.bb.center == (x, y)` "
             "places them; `aidl docs NAME` gives every "
             + ("" if defaults else "default, ") + "unit, "
             "member and an example):\n" + stdlib_lines(defaults))

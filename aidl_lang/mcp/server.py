@@ -109,9 +109,10 @@ Kerf = Annotated[str | float | None, Field(
                 "default: the program's.")]
 Thickness = Annotated[str | float | None, Field(
     description="Extrusion of 3D outputs (mm or \"3mm\"); default: the program's, else 3 mm.")]
-Machine = Annotated[str | None, Field(
-    description="G-code machine: laser (default), router, plotter, or a profile .toml "
-                "(`docs` machine).")]
+Machine = Annotated[str | dict | None, Field(
+    description="G-code machine: laser (default), router, plotter, a profile .toml, or a "
+                "profile's keys as an object, e.g. {\"kind\": \"router\", \"tool_diameter\": 6, "
+                "\"relief\": \"tbone\"} (`docs` machine: every key and its default).")]
 Page = Annotated[str | None, Field(
     description="A .pdf tiled over paper: \"A4\", \"A3\", \"Letter\", \"Legal\", "
                 "\"-landscape\" after any.", max_length=40)]

@@ -447,7 +447,9 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
     STL, 3MF, STEP, GLB; default the program's, else 3); ``page`` (a ``.pdf`` output tiled
     over paper of this size, ``"A4"``, ``"A4-landscape"``, ...; default one page the drawing's
     size).  Lengths are numbers of mm or strings with a unit.  ``machine``: G-code's machine
-    profile, ``laser``, ``router``, ``plotter`` or a TOML file inside the allowed folder.
+    profile, ``laser``, ``router``, ``plotter``, a TOML file inside the allowed folder, or a
+    profile's table as an object (``{"kind": "router", "tool_diameter": 6}``: the keys of a
+    profile file, ``aidl docs machine``).
     ``files``: a list to put each file's ``(target, data, program, shown)`` in instead of
     writing it (the server writes them in the order the calls were made: :mod:`.order`)."""
     put = files.append if files is not None else lambda f: write_inside(ws, *f)
@@ -482,10 +484,13 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
     kerf_mm = _mm(kerf, "kerf", "0.15 or \"0.15mm\"", most=10.0)
     thick_mm = _mm(thickness, "thickness", "3 or \"3mm\"")
     target = ws.output(output) if output is not None else None
-    from ..output.fabrication.machine import KINDS, MachineError, default, load
+    from ..output.fabrication.machine import KINDS, MachineError, default, from_dict, load
     try:
-        prof = None if machine is None else default(machine) if machine in KINDS else \
-            load(ws.inside(machine, must_exist=True, argument="machine"))
+        if isinstance(machine, dict):       # a profile's table: the router's bit, its relief
+            prof = from_dict(machine, "the `machine` argument")
+        else:
+            prof = None if machine is None else default(machine) if machine in KINDS else \
+                load(ws.inside(machine, must_exist=True, argument="machine"))
     except MachineError as e:
         raise Refused(str(e), "bad_argument", "machine") from None
     if page is not None:

@@ -40,6 +40,13 @@ def tangent_normal(a: tuple, b: tuple) -> float | None:
     return math.atan2(dy, dx) - math.acos(c)
 
 
+def _touching(a: tuple, b: tuple) -> bool:
+    """Whether sites ``a`` and ``b`` touch inside (one on the other's circle, or the same
+    circle): their outer tangent has no length."""
+    D = math.hypot(b[0] - a[0], b[1] - a[1])
+    return abs(D - abs(a[2] - b[2])) <= TOUCH * max(1.0, D)
+
+
 def _cross(o, a, b) -> float:
     return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
 
@@ -146,7 +153,9 @@ def hull_loop(loops: list[Loop]) -> Loop | None:
             if s[2] > 0 and not (_in_range(s, phis[i]) and _in_range(s, phis[j])):
                 bad = ("split", j)
                 break
-            if n > 2:                            # j must reach past the tangent from i to k
+            if n > 2 and not _touching(sites[seq[i]], sites[seq[k]]):
+                # j must reach past the tangent from i to k (a point on i's circle, an arc's
+                # end, has a tangent of no length: it says nothing of j, issue 109)
                 phi = tangent_normal(sites[seq[i]], sites[seq[k]])
                 if phi is not None and all(q[2] == 0 or _in_range(q, phi)
                                            for q in (sites[seq[i]], sites[seq[k]])) \

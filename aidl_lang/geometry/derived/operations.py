@@ -241,6 +241,14 @@ class _Cloner:
         if "rotation" in g.data:
             r = g.data["rotation"]
             new.data["rotation"] = 2 * self.line_angle - r if self.flip else r + (self.rot or 0.0)
+            if g.kind == "Text" and g.data.get("along") is None and "extent" in g.data \
+                    and new.data["rotation"] != r:
+                # the copy's strokes are drawn at its own rotation: its box and center too
+                # (issue 109: a turned copy's box was the original's, 11 mm off)
+                from ..shapes.text import text_extent
+                d = new.data
+                new.data["extent"] = text_extent(d["text"], d["size"], d["anchor"],
+                                                 d.get("valign", "baseline"), d["rotation"])
             if g.kind == "Ellipse" and self.flip and self.line is not None:
                 # the angle follows the mirror line as solved (bbox.held_rotation)
                 new.data["mirror"] = (self.line[0], self.line[1], r)

@@ -244,25 +244,8 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
     if k in _ARCS:
         _arc_candidates(g, P, x, xs, ys)
         return
-    if k == "Intersect":
-        # inside its first closed shape: that shape's box (larger than the common area's)
-        first = next(s for s in g.data["sources"] if s.closed)
-        _geom_candidates(first, frame, x, xs, ys, offs)
-        return
-    if k in ("Offset", "Shell", "Hull", "Stroke"):
-        # the sources' boxes (they are construction geometry, left out of the structure's
-        # box): a hull's box is theirs; an outward offset's (round joins) theirs grown by the
-        # distance, exactly; an inset's is taken as its shape's (a little larger than it)
-        sx: list = []
-        sy: list = []
-        for src in g.data["sources"]:
-            _geom_candidates(src, frame, x, sx, sy, offs)
-        d = g.data.get("distance", g.data.get("thickness", g.data.get("width", 0.0) / 2))
-        if k != "Hull" and d > 0:
-            sx = [c - d for c in sx] + [c + d for c in sx]
-            sy = [c - d for c in sy] + [c + d for c in sy]
-        xs += sx
-        ys += sy
+    if k in DERIVED_KINDS:
+        _derived_candidates(g, frame, x, xs, ys, offs)
         return
     if k == "Ellipse":
         cx, cy = P["center"]
@@ -312,6 +295,22 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
                 ys.append(fy + rt * math.sin(e))
             _quadrants(fx, fy, rt, ang - half, 2 * half, xs, ys)
         return
+    if k == "RoundedRectangle" and _turned_rounded(g, x):
+        _rounded_candidates(g, P, xs, ys)
+        return
+    if k == "Text" and g.data.get("stencil") and g.data.get("along") is None:
+        # the letters' openings: strokes swept by the weight, less the bridges (the top of
+        # an O is bridged): the drawn outline's box, moving with the position point
+        box = drawn_box(g, x)
+        if box is not None:
+            p = g.points["position"]
+            ox, oy = g.owner.frame_offset(None)
+            px0 = float(x[p.ix]) + float(evaluate(ox, x))
+            py0 = float(x[p.iy]) + float(evaluate(oy, x))
+            px, py = P["position"]
+            xs += [px + (box[0] - px0), px + (box[1] - px0)]
+            ys += [py + (box[2] - py0), py + (box[3] - py0)]
+            return
     if k == "Text":
         px, py = P["position"]
         x0, x1, y0, y1 = g.data.get("extent", (0.0, 0.0, 0.0, 0.0))
@@ -325,7 +324,223 @@ def _geom_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> N
         ys.append(py)
 
 
+RECT_CORNERS = ("bottom_left", "bottom_right", "top_right", "top_left")   # points_of's order
+
+
+def _radii(g: Geometry) -> list:
+    """A rounded rectangle's corner radii in :data:`RECT_CORNERS`' order (mm)."""
+    rr = g.data.get("corner_radii")
+    return [float(r) for r in rr] if rr else [float(g.data.get("corner_radius", 0.0))] * 4
+
+
+def _turned_rounded(g: Geometry, x) -> bool:
+    """Whether rounded rectangle ``g`` has a rounded corner and sides not along the axes at
+    the values ``x`` (a copy turned by a pattern or a mirror): its sharp corners are then
+    outside its drawn outline, and its box is its corner arcs'."""
+    if not any(r > 0 for r in _radii(g)):
+        return False
+    a, b = g.points["bottom_left"], g.points["bottom_right"]
+    dx, dy = float(x[b.ix] - x[a.ix]), float(x[b.iy] - x[a.iy])
+    return abs(dx) > 1e-12 * abs(dy) and abs(dy) > 1e-12 * abs(dx)
+
+
+def _rounded_candidates(g: Geometry, P: dict, xs: list, ys: list) -> None:
+    """The extremes of a turned rounded rectangle: each rounded corner's arc center (the
+    corner moved ``r`` along both of its sides, an expression of the corners) grown by
+    ``r`` (the outline is the convex hull of its corner discs); a sharp corner itself."""
+    from ..core.expr import hypot
+    C = [P[n] for n in RECT_CORNERS]
+    for k, r in enumerate(_radii(g)):
+        px, py = C[k]
+        if r <= 0:
+            xs.append(px)
+            ys.append(py)
+            continue
+        cx, cy = px, py
+        for qx, qy in (C[k - 1], C[(k + 1) % 4]):
+            L = hypot(qx - px, qy - py)
+            cx = cx + (qx - px) * r / L
+            cy = cy + (qy - py) * r / L
+        xs += [cx - r, cx + r]
+        ys += [cy - r, cy + r]
+
+
 _ARCS = ("ArcSlot", "Sector", "Arc", "EllipticArc")
+DERIVED_KINDS = ("Offset", "Shell", "Hull", "Stroke", "Intersect")
+
+# (shape, parameter values) -> (left, right, bottom, top) of the exact outline the booleans
+# draw for the shape, in the root frame (None: it draws nothing there).  Set by
+# aidl_lang.output.part.build.booleans (the booleans sit above geometry: the function is
+# handed down, not imported); None until the output stage is imported.
+DRAWN_BOX = None
+_DRAWN: dict = {}           # (what a shape is drawn from, relative) -> its box: made already
+
+
+def box_follows_sources(g: Geometry) -> bool:
+    """Whether the box of derived shape ``g`` is its sources' boxes, grown by a distance,
+    exactly: a ``Hull`` (its sources' boxes), an outward ``Offset`` or ``Shell`` with round
+    joins (the Minkowski sum with a disc: the box grown by the distance), an inward
+    ``Shell`` (its outer side is the source's outline), a ``Stroke`` with round caps (the
+    path's box grown by half the width).  Every other one (an ``Inset``, a miter join, flat
+    caps, an ``Intersect``) is boxed from its drawn outline (:func:`_derived_candidates`)."""
+    k = g.kind
+    if k == "Hull":
+        return True
+    if k == "Stroke":
+        return g.data.get("cap", "round") == "round"
+    if k == "Shell":
+        return g.data["thickness"] < 0 or g.data.get("join", "round") == "round"
+    if k == "Offset":
+        return g.data["distance"] >= 0 and g.data.get("join", "round") == "round"
+    return False
+
+
+def _derived_candidates(g: Geometry, frame, x, xs: list, ys: list, offs: dict) -> None:
+    """The extreme coordinates of a shape made from other shapes (:data:`DERIVED_KINDS`),
+    each an expression of its sources' points, exactly its drawn outline's at the values
+    ``x``.  Where the box follows the sources' (:func:`box_follows_sources`) it is their
+    candidates grown by the distance (exact wherever the sources move).  Otherwise each side
+    is the source candidate extreme on that side at ``x`` plus the constant that puts it on
+    the drawn outline's side (:data:`DRAWN_BOX`): exact at ``x`` (an ``assert``, the values
+    reported are read at the solution) and following the source's extreme point as the
+    solve moves it, as a spline's extremes do (:func:`_spline_candidates`)."""
+    srcs = g.data["sources"]
+    if g.kind == "Intersect":           # inside every closed one: the first one's points
+        srcs = [next(s for s in srcs if s.closed)] if g.closed else srcs
+    sx: list = []
+    sy: list = []
+    for src in srcs:
+        _geom_candidates(src, frame, x, sx, sy, offs)
+    if box_follows_sources(g):
+        d = g.data.get("distance", g.data.get("thickness", g.data.get("width", 0.0) / 2))
+        if g.kind != "Hull" and d > 0:
+            sx = [c - d for c in sx] + [c + d for c in sx]
+            sy = [c - d for c in sy] + [c + d for c in sy]
+        xs += sx
+        ys += sy
+        return
+    box = drawn_box(g, x)
+    if box is None or not sx or not sy:
+        xs += sx                        # nothing drawn (E0406 says so): the sources' box
+        ys += sy
+        return
+    rx: list = []
+    ry: list = []
+    for src in srcs:
+        _geom_candidates(src, None, x, rx, ry, offs)
+    for cands, root, (lo, hi) in ((sx, rx, box[:2]), (sy, ry, box[2:])):
+        vals = [float(evaluate(c, x)) for c in root]
+        i = min(range(len(vals)), key=vals.__getitem__)
+        j = max(range(len(vals)), key=vals.__getitem__)
+        out = xs if cands is sx else ys
+        out += [cands[i] + (lo - vals[i]), cands[j] + (hi - vals[j])]
+
+
+def boxed_by_drawing(g: Geometry) -> bool:
+    """Whether shape ``g``'s box is read from its drawn outline (:func:`_derived_candidates`),
+    itself or through a shape it is made from (a Hull of an Intersect)."""
+    todo = [g]
+    while todo:
+        h = todo.pop()
+        if h.kind in DERIVED_KINDS:
+            if not box_follows_sources(h):
+                return True
+            todo += h.data["sources"]
+    return False
+
+
+def drawn_box_misses(model, x=None) -> list:
+    """``(constraint, how far it misses)`` for each relation of ``model`` on a box read from
+    a drawn outline (:func:`boxed_by_drawing`) that the values ``x`` (default: the model's)
+    do not meet within 1e-9 mm: the solve took that box as its source's extreme point plus a
+    constant, and moved the sources so that the drawn outline changed (an ``Intersect`` of
+    shapes the solve moved apart, an ``Inset`` of a shape it stretched).  The solver solves
+    again from there (:func:`aidl_lang.solver.solve`); what is left is W0405."""
+    if not any(boxed_by_drawing(g) for g in model.all_geometry()):
+        return []
+    x = model.xs() if x is None else x
+    memo: dict = {}
+
+    def reads(t) -> bool:
+        k = id(t)
+        if k not in memo:
+            if isinstance(t, Structure):
+                memo[k] = any(boxed_by_drawing(g) for s in _subtree(t, set(), t)
+                              for g in s.geometry if not g.construction)
+            else:
+                memo[k] = boxed_by_drawing(t)
+        return memo[k]
+
+    out = []
+    for c in model.constraints:
+        if not c.deferred or getattr(c, "released", False):
+            continue
+        terms = [t for eq in c.deferred for t in collect(eq.expr, [])]
+        if not any(reads(t.target) for t in terms):
+            continue
+        excl = exclusions(terms)
+        worst = 0.0
+        for eq in c.deferred:
+            v = float(evaluate(expand(eq.expr, x, excl), x))
+            worst = max(worst, -v if eq.ineq else abs(v))
+        if not worst <= 1e-9:
+            out.append((c, worst))
+    return out
+
+
+def drawn_box(g: Geometry, x) -> tuple[float, float, float, float] | None:
+    """(left, right, bottom, top) in mm, root frame, of the outline drawn for ``g`` at the
+    values ``x`` (:data:`DRAWN_BOX`).  Kept by what it is drawn from: the kinds and held data
+    of ``g`` and the shapes it is made from, their sizes and their points relative to the
+    first one, so a pattern's or a mirror's copies that are the same shape moved are drawn
+    once (20 copies of a mitred inset star: one boolean, not 20), the box moved with them."""
+    if DRAWN_BOX is None:
+        return None
+    sig: list = []
+    rel: list = []
+    x0 = y0 = None
+    todo = [g]
+    while todo:
+        h = todo.pop()
+        sig.append((h.kind, _held(h.data), tuple(h.points), tuple(h.scalars)))
+        for p in h.points.values():
+            px, py = float(x[p.ix]), float(x[p.iy])
+            s = p.owner
+            while s is not None:
+                px += float(x[s.fx])
+                py += float(x[s.fy])
+                s = s.parent
+            if x0 is None:
+                x0, y0 = px, py
+            rel += (px - x0, py - y0)
+        rel += [float(x[sc.index]) for sc in h.scalars.values()]
+        todo += h.data.get("sources", ())
+    if x0 is None:
+        return DRAWN_BOX(g, x)
+    key = (tuple(sig), tuple(rel))
+    box = _DRAWN.get(key, _DRAWN)
+    if box is _DRAWN:
+        box = DRAWN_BOX(g, x)
+        if box is not None:
+            box = (box[0] - x0, box[1] - x0, box[2] - y0, box[3] - y0)
+        if len(_DRAWN) > 512:
+            _DRAWN.clear()
+        _DRAWN[key] = box
+    return None if box is None else (box[0] + x0, box[1] + x0, box[2] + y0, box[3] + y0)
+
+
+def _held(v, depth: int = 0):
+    """The held data ``v`` (numbers, strings, lists and dicts of them) as a hashable value;
+    shapes and other objects by their kind only (the shapes are walked by :func:`drawn_box`)."""
+    if v is None or isinstance(v, (bool, int, float, str)):
+        return v
+    if depth > 4:
+        return type(v).__name__
+    if isinstance(v, dict):
+        return tuple(sorted((str(k), _held(w, depth + 1)) for k, w in v.items()))
+    if isinstance(v, (list, tuple)):
+        return tuple(_held(w, depth + 1) for w in v)
+    return getattr(v, "kind", type(v).__name__)
 
 
 def _arc_candidates(g: Geometry, P: dict, x, xs: list, ys: list) -> None:

@@ -9,6 +9,8 @@ on it follows the solved shape.  The members each kind lists are the registry's
 """
 from __future__ import annotations
 
+import math
+
 from ..core.expr import Lin, _new, func, hypot, var
 from ..core.model import Geometry
 from ..core.values import ANG, LEN, PV, GeomRef, Q
@@ -102,11 +104,12 @@ def member(g: Geometry, name: str, frame):
             # point on the arc halfway between start and end (counter-clockwise)
             cc, ss, ee = (_pv(g.points[n], frame) for n in ("center", "start", "end"))
             a1 = func("atan2", ss.y - cc.y, ss.x - cc.x)
-            # counter-clockwise sweep in (0, 2pi]: the half-angle of start->end, flipped when
-            # the cross product says the short way round is clockwise
-            sweep = func("atan2", (ss.x - cc.x) * (ee.y - cc.y) - (ss.y - cc.y) * (ee.x - cc.x),
-                         (ss.x - cc.x) * (ee.x - cc.x) + (ss.y - cc.y) * (ee.y - cc.y))
-            mid = a1 + sweep * 0.5
+            # the counter-clockwise sweep from start to end, in (0, 2pi] as the drawn arc's
+            # (outlines._arc_through): pi + atan2(-cross, -dot) (atan2(cross, dot) is the
+            # short way round, clockwise for an arc of more than a half turn: issue 109)
+            cross = (ss.x - cc.x) * (ee.y - cc.y) - (ss.y - cc.y) * (ee.x - cc.x)
+            dot = (ss.x - cc.x) * (ee.x - cc.x) + (ss.y - cc.y) * (ee.y - cc.y)
+            mid = a1 + func("atan2", cross * -1.0, dot * -1.0) * 0.5 + math.pi / 2
             return PV(cc.x + r * func("cos", mid), cc.y + r * func("sin", mid), None, own)
     if k in ("Rectangle", "RoundedRectangle"):
         if name == "center":
@@ -170,6 +173,11 @@ def member(g: Geometry, name: str, frame):
             return _pv(g.points["origin"], frame)
     if k == "Text" and name == "size":
         return Q.num(g.data["size"], LEN)
+    if k == "Text" and name == "center" and g.data.get("stencil"):
+        # the middle of its box: the letters' openings as drawn (bbox: bridges cut)
+        from .bbox import BBTerm
+        lo, hi, bo, to = (BBTerm(g, s, frame) for s in ("left", "right", "bottom", "top"))
+        return PV((lo + hi) * 0.5, (bo + to) * 0.5, None, own)
     if k == "Text" and name == "center":          # the middle of the strokes' box
         p = _pv(g.points["position"], frame)
         x0, x1, y0, y1 = g.data.get("extent", (0.0, 0.0, 0.0, 0.0))

@@ -72,7 +72,8 @@ def check_routed_fit(d: Drawing, output, diameter: float, relief: str, sink: Dia
     """The fit check of the assembled product as a router cuts it (``aidl render --machine``
     with a router profile, a program that places its parts): each part as the bit of
     ``diameter`` mm leaves it (:func:`~..fabrication.reliefs.routed_shape` of ``output``'s
-    exact parts: inside corners rounded to the bit, less the profile's ``relief``), W0517 for
+    exact parts: inside corners rounded to the bit, less the profile's ``relief`` where it is
+    cut, as in the G-code: :func:`~..fabrication.reliefs.plan` at the part's minimum wall), W0517 for
     each pair that collides so and not as drawn (the material the bit leaves in an inside
     corner where the partner's square corner must go)."""
     if not getattr(d, "placement", None) or not diameter:
@@ -80,8 +81,10 @@ def check_routed_fit(d: Drawing, output, diameter: float, relief: str, sink: Dia
     from ..fabrication.assembly import Bodies, fit, normals_of, plates_of
     from ..fabrication.reliefs import routed_shape
     drawn = {(c["a"], c["b"]) for c in (getattr(d, "fit", None) or {}).get("collisions", ())}
-    parts = [(p.name, p.kind, routed_shape(p, diameter / 2, relief), d.thickness.get(p.name))
-             for p in output.parts]
+    from .common import part_min_wall
+    parts = [(p.name, p.kind,
+              routed_shape(p, diameter / 2, relief, part_min_wall(d, d.part_of.get(p.name))),
+              d.thickness.get(p.name)) for p in output.parts]
     hits, _ = fit(Bodies(parts, d.placement, deadline=deadline), deadline,
                   normals_of(d.placement), plates_of(parts, d.placement))
     from .parts import _allowed

@@ -5,16 +5,17 @@ boxes) from the structure's geometry as drawn, before its ``Fillet`` or ``Chamfe
 on the finished outline, after the booleans: :func:`aidl_lang.geometry.derived.operations.finish`).
 A fillet on a corner that is the box's extreme moves that side in (a 45-degree X's tips by
 ``r * (sqrt(2) - 1)``), so ``AlignLeft(x0, board)`` leaves the rounded X short of the board's
-edge.  An ``Offset`` or ``Shell`` is boxed from its source's box grown by the distance: exact
-for an outward round join, not for a miter join (a star's tips reach further) nor an inset (an
-``Inset`` or negative distance: smaller).  This check compares, for each structure with a
-Fillet or Chamfer or such an offset whose box a constraint reads, the side read with the same
-side of its final exact outline, and warns with the difference and the constraint that closes it.
+edge.  This check compares, for each structure with a Fillet or Chamfer whose box a
+constraint reads, the side read with the same side of its final exact outline, and warns with
+the difference and the constraint that closes it.  (An ``Offset``, ``Inset``, ``Shell``,
+``Intersect`` is boxed by its drawn outline, exactly at the solution: issue 109;
+:func:`check_drawn_boxes` warns where the solve moved its sources under a relation.)
 """
 from __future__ import annotations
 
 from ...base.diagnostics import DiagnosticSink
-from ...geometry.relations.bbox import SIDES, BBTerm, collect, exclusions, numeric_box, side_expr
+from ...geometry.relations.bbox import (SIDES, BBTerm, collect, drawn_box_misses, exclusions,
+                                        numeric_box, side_expr)
 from ...geometry.core.expr import Nl, const, evaluate, rebuild
 from ...geometry.core.model import Model, Structure
 from ..part.build.booleans import Drawing
@@ -38,20 +39,9 @@ def final_box(d: Drawing, s: Structure) -> tuple[float, float, float, float] | N
 
 def reshaped(s: Structure) -> list[str]:
     """The operations after which ``s``'s box read by the solve may not be its final
-    outline's: its ``Fillet``/``Chamfer`` and the ``Offset``/``Shell``/``Inset`` among its own
-    and its children's shapes that are not exact on the box (a miter join, an inset), sorted
-    names."""
-    ops = {f[0] for f in getattr(s, "finish", None) or []}
-    todo = [s]
-    while todo:
-        t = todo.pop()
-        for g in t.geometry:
-            if g.kind in ("Offset", "Shell") and not g.construction:
-                d = g.data.get("distance", g.data.get("thickness", 0.0))
-                if g.data.get("join") == "miter" or d < 0:
-                    ops.add("Inset" if g.kind == "Offset" and d < 0 else g.kind)
-        todo += [c for c in t.children.values() if c.kind == "solid"]
-    return sorted(ops)
+    outline's: its ``Fillet``/``Chamfer``, sorted names.  (An ``Inset``, a miter join, an
+    ``Intersect`` are boxed from their drawn outlines: exact; :func:`check_drawn_boxes`.)"""
+    return sorted({f[0] for f in getattr(s, "finish", None) or []})
 
 
 def check_final_boxes(sink: DiagnosticSink, model: Model, d: Drawing, calls=None) -> None:
@@ -89,6 +79,82 @@ def check_final_boxes(sink: DiagnosticSink, model: Model, d: Drawing, calls=None
             _warn(sink, c, terms, finished, moved, solved, calls)
 
 
+def check_final_box_asserts(sink: DiagnosticSink, model: Model, d: Drawing,
+                            calls=None) -> None:
+    """W0405 for each ``assert`` that reads the box of a structure with ``Fillet`` or
+    ``Chamfer`` and whose verdict on that box (the shapes as drawn before the rounding, what
+    the assert is judged on: E0405) is not its verdict on the final outline: an assert that
+    holds only because it reads the box before the rounding, or fails only for it (issue
+    109: a member a model asserts on is the part it gets)."""
+    if not model.assertions:
+        return
+    finished = {id(s): s for s in model.structures if reshaped(s)}
+    if not finished:
+        return
+    from ...geometry.relations.assertions import holds
+    x = model.xs()
+    moved: dict = {}
+    solved: dict = {}
+    for a in model.assertions:
+        terms = [t for grp in a.groups for _op, le, re_, _dim in grp for side in (le, re_)
+                 if not isinstance(side, (int, float)) for t in collect(side, [])]
+        read = [k for k in dict.fromkeys(id(t.target) for t in terms) if k in finished]
+        for k in read:
+            if k not in moved:
+                moved[k], solved[k] = _moved(d, finished[k], x)
+        if not any(abs(v) > BOX_TOL for k in read for v in moved[k].values()):
+            continue
+        exclude = exclusions(terms)
+
+        def value(e, final: bool) -> float:
+            if isinstance(e, (int, float)):
+                return float(e)
+            if final:
+                return float(evaluate(_at_final(e, x, exclude, moved), x))
+            return float(evaluate(_at_final(e, x, exclude, {}), x))
+
+        def verdict(final: bool) -> bool:
+            return any(all(holds(op, value(le, final), value(re_, final))
+                           for op, le, re_, _dim in grp) for grp in a.groups)
+
+        before, after = verdict(False), verdict(True)
+        if before == after:
+            continue
+        s = finished[read[0]]
+        asked = {t.side for t in terms if id(t.target) == read[0]}
+        sides = ", ".join(f"its {sd} {abs(v):.3f} mm "
+                          f"{'in' if (v > 0) == (sd in ('left', 'bottom')) else 'out'}"
+                          for sd, v in moved[read[0]].items()
+                          if abs(v) > BOX_TOL and sd in asked) or "its box moved"
+        ops = " and ".join(reshaped(s))
+        sink.warning(
+            "W0405", f"`assert {a.text}` reads the box of `{s.path}` before its {ops}: it "
+            f"{'holds' if before else 'fails'} there and would "
+            f"{'fail' if before else 'hold'} on the final outline ({sides})",
+            a.span, calls=calls(a.owner) if calls is not None else None,
+            hint=f"a box is read from the shapes as drawn, before {ops}: assert on the "
+                 f"final outline by adding the difference to that side, or round only "
+                 f"corners away from it (`Fillet(at=[...], ...)`)")
+
+
+def check_drawn_boxes(sink: DiagnosticSink, model: Model, calls=None) -> None:
+    """One W0405 per relation on a box read from a drawn outline (an ``Inset``, a miter
+    join, an ``Intersect``: :func:`~aidl_lang.geometry.relations.bbox.boxed_by_drawing`)
+    that the solution still misses after the solver solved again from it
+    (:func:`aidl_lang.solver.solve`): the solve moved the shapes it is made from so that
+    its outline changed under the relation (two shapes of an ``Intersect`` moved apart)."""
+    for c, off in drawn_box_misses(model):
+        if off <= BOX_TOL:
+            continue
+        sink.warning(
+            "W0405", f"`{c.describe()}` is met by the box of the outline as the solve began, "
+            f"not as drawn: the solve moved the shapes it is made from, and the drawn "
+            f"outline misses it by {off:.3f} mm",
+            c.span, calls=calls(c.owner) if calls is not None else None,
+            hint="place the shapes a derived shape (Inset, Intersect, a miter Offset) is made "
+                 "from with their own relations, or relate its box once they are placed")
+
+
 def _moved(d: Drawing, s: Structure, x) -> tuple[dict, dict]:
     """(``side -> final - solved``, ``side -> solved``) in mm of structure ``s``'s box, in
     the model's frame (empty: no outline)."""
@@ -124,8 +190,7 @@ def _warn(sink, c, terms, finished, moved, solved, calls) -> None:
     ops = " and ".join(kinds)
     rounded = [k for k in kinds if k in ("Fillet", "Chamfer")]
     other = (f"or round only corners away from that side (`{rounded[0]}(at=[...], ...)`)"
-             if rounded else "or use `join=\"round\"` (an outward round offset's box is exact)"
-             if any(k in ("Offset", "Shell") for k in kinds) else "")
+             if rounded else "")
     inward = diff > 0 if side in ("left", "bottom") else diff < 0
     at = solved[id(s)][side]
     more = "".join(f"; its {sd} {abs(moved[id(t)][sd]):.3f} mm" for t, sd in seen[1:])

@@ -181,8 +181,45 @@ def compensate(output: Output, kerf, deadline=None, apart: bool = False) -> Outp
         except OffsetError as e:
             raise LayoutError(f"kerf {k:g} mm on part `{p.name}`: {e}{_spline_fix(output, e)}") \
                 from None
+        narrow = _narrow(p.loops, loops, k / 2) if split is None else None
+        if narrow is not None:
+            g, (x, y) = narrow
+            raise LayoutError(f"kerf {k:g} mm on part `{p.name}`: a slot or notch near "
+                              f"({x:.4g}, {y:.4g}) is narrower than the cut: the offset path "
+                              f"comes {k / 2 - g:.3g} mm into the material there")
         parts.append(PartOutline(p.name, p.kind, loops, p.thickness))
     return Output(parts, list(output.engrave), output.title, output.drawing, output.page)
+
+
+def _narrow(drawn: list, offset: list, d: float):
+    """Where the ``offset`` loops (``drawn`` offset by ``d`` mm) come nearer the drawn loops
+    than ``d`` (a slot or a notch narrower than twice ``d``, whose offset crosses itself:
+    each segment's own offset is sound, the loop is not; issue 109, law 1): ``(distance,
+    point)``, the nearest, or None.  Exact (:func:`~..part.measure.gaps.piece_gap`) over the
+    pairs of pieces whose boxes lie within ``d``."""
+    import numpy as np
+    from ..part.measure.gaps import pieces, piece_gap
+    from ..part.measure.nearby import box_pairs_between
+    a = pieces([s for lp in offset for s in lp.segments])
+    b = pieces([s for lp in drawn for s in lp.segments])
+    if not a or not b:
+        return None
+    boxes = [np.array([_piece_box(q) for q in ps]) for ps in (a, b)]
+    scale = max(1.0, float(np.abs(boxes[1]).max()))
+    best = None
+    for i, j in box_pairs_between(boxes[0], boxes[1], d / 2):
+        g, pa, _ = piece_gap(a[int(i)], b[int(j)])
+        if g < d - 1e-7 * scale and (best is None or g < best[0]):
+            best = (g, pa)
+    return best
+
+
+def _piece_box(q: tuple) -> tuple:
+    if q[0] == "L":
+        (ax, ay), (bx, by) = q[1], q[2]
+        return (min(ax, bx), min(ay, by), max(ax, bx), max(ay, by))
+    (cx, cy), r = q[1], q[2]
+    return (cx - r, cy - r, cx + r, cy + r)
 
 
 def _spline_fix(output: Output, e: OffsetError) -> str:

@@ -97,6 +97,14 @@ class Machine:
         """The settings of operation ``name`` (one of :data:`OPERATIONS`)."""
         return self.operations.get(name) or DEFAULTS[self.kind].operations[name]
 
+    def tool_text(self) -> str:
+        """A router's bit as its G-code header says it (issue 111: the built-in bit's
+        diameter was said nowhere): ``a 3.175 mm end mill (tool_diameter): every cut's path
+        runs 1.5875 mm beside the line; inside corners: dogbone relief``."""
+        relief = "no relief" if self.relief in (None, "none") else f"{self.relief} relief"
+        return (f"a {self.tool_diameter:g} mm end mill (tool_diameter): every cut's path runs "
+                f"{self.tool_diameter / 2:g} mm beside the line; inside corners: {relief}")
+
 
 def _ops(**ops) -> dict:
     return {name: ops.get(name, Operation()) for name in OPERATIONS}

@@ -339,12 +339,22 @@ def sink_tools(heads: list, t: float) -> list:
         ring = Loop([Circle((0.0, 0.0), r.hole_d / 2)]).points()
         section = mf.CrossSection([ring.tolist()])
         if r.kind == "countersink":
+            # the cone begun e below its seat, narrower than the hole there: it crosses the
+            # hole's wall at the seat instead of meeting it ring on ring (rings 1e-10 mm
+            # apart, which an STL reader merges into a torn mesh: issue 109, law 2);
             k = math.tan(r.angle / 2)
-            tool = mf.Manifold.extrude(section, depth + e, 0, 0.0,
-                                       [(r.diameter / 2 + e * k) / (r.hole_d / 2)] * 2)
-        else:
-            s_ = r.diameter / r.hole_d
-            tool = mf.Manifold.extrude(section.scale([s_, s_]), depth + e)
+            lo = (r.hole_d / 2 - e * k) / (r.hole_d / 2)
+            # its edges a third of the way between the wall's: each crossing transversal, and
+            # no two mirrored heads' edges meeting on their mirror plane (at a half step, or
+            # none, the vertex angles are symmetric: edge met edge 1e-8 mm apart)
+            third = 120.0 / len(ring)
+            tool = mf.Manifold.extrude(section.rotate(third).scale([lo, lo]), depth + 2 * e, 0,
+                                       0.0,
+                                       [(r.diameter / 2 + e * k) / (r.hole_d / 2 - e * k)] * 2)
+            out.append(tool.translate([x, y, t - depth - e]))
+            continue
+        s_ = r.diameter / r.hole_d
+        tool = mf.Manifold.extrude(section.scale([s_, s_]), depth + e)
         out.append(tool.translate([x, y, t - depth]))
     return out
 

@@ -180,6 +180,7 @@ def encode(output: Output, suffix: str, options: Options | None = None,
         _refuse_empty(output, suffix, fmt)
     if fmt.cut and not fmt.empty:
         _refuse_stacked(output, suffix)
+    _refuse_sunk_away(output, options)
     if deadline is not None:
         from ...base.limits import OutOfBudget, seconds_as_work
         try:
@@ -217,6 +218,38 @@ def _refuse_empty(output: Output, suffix: str, fmt: Format) -> None:
     if not fmt.cut and not outlines:
         raise OutputError(f"nothing to write to {name}: the drawing has no solid part to "
                           "extrude (engravings and holes alone have no body); draw a solid first")
+
+
+class SunkAway(OutputError):
+    """``E0503``: every format refused because the countersinks or counterbores that go
+    through a part at the thickness given for the output (``--thickness``, the studio's
+    download) leave nothing of it, or cut it apart (:func:`~..part.build.sunk.sunk_away`);
+    ``span``: the call of the widest head; ``message`` and ``hint`` as the compile's."""
+
+    def __init__(self, message: str, hint: str, span):
+        super().__init__(f"{message}; {hint}")
+        self.message, self.hint, self.span = message, hint, span
+
+
+def _refuse_sunk_away(output: Output, options: Options | None) -> None:
+    """:class:`SunkAway` for an output whose sink heads (:func:`~..part.part.sink_heads`,
+    where a layout moved them) leave nothing of a part at the thickness each format would
+    give it (``options.thickness``, else the part's, else 3 mm): the same answer for every
+    format, so an SVG is not written beside an STL of nothing."""
+    from ..part.build.sunk import DEFAULT_THICKNESS, sunk_away, sunk_message
+    from ..part.part import sink_heads
+    heads = sink_heads(output)
+    if not heads:
+        return
+    given = options.thickness if options is not None else None
+    for p in output.parts:
+        mine = [h for h in heads if h[1].part == p.name]
+        if p.kind != "solid" or not mine:
+            continue
+        t = float(given or p.thickness or DEFAULT_THICKNESS)
+        found = sunk_away(p.shape, mine, t)
+        if found is not None:
+            raise SunkAway(*sunk_message(p.name, found, t), found[2].span)
 
 
 STACKED_AREA = 0.05      # mm^2 two parts may share before a machine would cut one over the other

@@ -692,8 +692,8 @@ def job(output: Output, machine=None, thickness: float | None = None) -> Job:
         more, split = router_notes(output, m.tool_diameter)
         notes += more
         warnings += split
-        output, relief_said = routed_path(output, m)
-        (notes if m.relief != "none" else warnings).extend(relief_said)
+        output, said, warned = routed_path(output, m)
+        notes, warnings = notes + said, warnings + warned
         from .gcode_sinks import split as split_heads
         rest, heads = split_heads(output)       # sunk by a second operation, not engraved
         output = Output(output.parts, rest, output.title, output.drawing, output.page)
@@ -768,11 +768,13 @@ def tool_path(output: Output, diameter: float) -> Output:
     return tooled
 
 
-def routed_path(output: Output, m) -> tuple[Output, list[str]]:
-    """What router profile ``m``'s bit runs on ``output``: :func:`tool_path` with the
-    profile's reliefs (:func:`~..fabrication.reliefs.relieved`), and their words."""
+def routed_path(output: Output, m) -> tuple[Output, list[str], list[str]]:
+    """What router profile ``m``'s bit runs on ``output``: :func:`tool_path` with the reliefs
+    that fit the program's `min_wall` (:func:`~..fabrication.reliefs.relieved`), its words."""
+    from ..checks.common import part_min_wall as wall
     from ..fabrication.reliefs import relieved
-    return relieved(output, tool_path(output, m.tool_diameter), m, W0527_TAG)
+    return relieved(output, tool_path(output, m.tool_diameter), m, W0527_TAG, lambda n: wall(
+        output.drawing, (getattr(output.drawing, "part_of", None) or {}).get(n)))
 
 
 def _warnings(output: Output, m) -> list[str]:
@@ -801,7 +803,7 @@ def _warnings(output: Output, m) -> list[str]:
 def _header(output: Output, m, w: _Writer) -> list[str]:
     src = m.source or f"built-in {m.kind} profile"
     h = [f"; {output.title or 'aidl'}: G-code (GRBL) written by aidl",
-         f"; machine: {m.kind} ({src})",
+         f"; machine: {m.kind} ({src})" + (f"\n; tool: {m.tool_text()}" if m.kind == "router" else ""),
          f"; {estimate_text(w.cut, w.travel, w.seconds, sum(w.dark.values()), w.runs)}",
          *[f"; warning: {x}" for x in w.warnings],
          *[f"; note: {x}" for x in w.notes],

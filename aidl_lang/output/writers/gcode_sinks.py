@@ -7,7 +7,9 @@ naming the tool, ``M0``: GRBL pauses until resumed) and sinks each head:
 * a countersink: the profile's V-bit (``v_bit_angle``, 90 deg unless given) plunged at the
   hole's centre to ``D / 2 / tan(v / 2)`` below the top, which leaves a cone of the head's
   diameter ``D`` at the top (of the countersink's own angle when the bit's is the same; a
-  note says when not);
+  note says when not); a cone deeper than the part (W0529) has the tip at the part's
+  thickness ``t``, led round a circle of radius ``D / 2 - t tan(v / 2)`` about the centre,
+  which leaves the same ``D`` at the top (and the frustum the meshes cut);
 * a counterbore: pocketed with the profile's ``pocket_tool`` (its ``tool_diameter`` when 0):
   down ``cut_inner.depth_per_pass`` at a time to the depth, at each depth rings about the
   centre from the middle out, ``0.4`` of the tool's diameter apart, the last with the
@@ -64,13 +66,24 @@ def write(w, m, heads: list, output, thick: dict, default_t: float) -> list[str]
             if kind == "countersink":
                 v = math.radians(m.v_bit_angle)
                 depth = r.diameter / 2 / math.tan(v / 2)
-                if depth >= t:
-                    notes.append(f"the {r.diameter:g} mm countersink of `{r.hole}` needs the "
-                                 f"V-bit {depth:.3g} mm deep, past the part's {t:g} mm: "
-                                 "sunk to the part's thickness")
-                    depth = t
                 w.rapid(*c)
-                w.plunge(-depth, op.plunge)
+                if depth >= t:
+                    # the tip at the bottom face, led round a circle: the cone's top is the
+                    # head's diameter, as the drawings' circle and the meshes' cone (W0529)
+                    rho = r.diameter / 2 - t * math.tan(v / 2)
+                    notes.append(f"the {r.diameter:g} mm countersink of `{r.hole}` needs the "
+                                 f"V-bit {depth:.3g} mm deep, past the part's {t:g} mm: its "
+                                 f"tip led at the part's thickness round a {2 * rho:.4g} mm "
+                                 "circle, which leaves the head's diameter at the top")
+                    w.plunge(-t, op.plunge)
+                    if rho > 1e-9:
+                        w.setting(op.speed)
+                        w.segment(Line((w.x, w.y), (c[0] + rho, c[1])))
+                        w.segment(Arc(c, rho, 0.0, math.pi))
+                        w.segment(Arc(c, rho, math.pi, math.pi))
+                        w.segment(Line((w.x, w.y), c))
+                else:
+                    w.plunge(-depth, op.plunge)
                 w.rapid(z=m.safe_height)
             else:
                 rt = (m.pocket_tool or m.tool_diameter) / 2

@@ -17,6 +17,7 @@ from ...base.limits import now
 from ...base.records import Compared
 from ..core.arrays import unique
 
+from ...geometry.core.expr import Lin
 from ...geometry.core.model import Constraint
 from ..core.rank import (MAX_DENSE, _components, _dense_components, _dense_cut, _dense_refused,
                          _peeled_rows, _row_entries, dependencies)
@@ -94,24 +95,28 @@ class Search(Compared):
     """The redundancy search's findings (``found``: a :class:`Redundant` per implied user
     constraint) and what :meth:`rank_lost` needs to judge a set of them dropped together:
     each searched block's dependencies (``blocks``, by the ids of the constraints in it), the
-    constraints of one-row blocks and their pinning rows outside the closure (``alone``)."""
-    __slots__ = ("found", "blocks", "alone", "unknown")
+    constraints of one-row blocks and their pinning rows outside the closure (``alone``), and
+    the constraints the solved point does not meet, left out (``overridden``,
+    :func:`_held_rows`)."""
+    __slots__ = ("found", "blocks", "alone", "unknown", "overridden")
 
     def __init__(self, found: list | None = None, blocks: dict | None = None,
-                 alone: dict | None = None, unknown: dict | None = None):
+                 alone: dict | None = None, unknown: dict | None = None,
+                 overridden: set | None = None):
         self.found = [] if found is None else found
         self.blocks = {} if blocks is None else blocks
         self.alone = {} if alone is None else alone
         self.unknown = {} if unknown is None else unknown
+        self.overridden = set() if overridden is None else overridden
 
     def rank_lost(self, drop) -> int | None:
         """``rank(J) - rank(J without drop)``: how many degrees of freedom dropping the user
         constraints ``drop`` together would free (0: the others still hold every unknown
         they held; the same measure as a single constraint's, ``|D| - rank(N_D)`` with
         ``N_D`` the dependencies restricted to ``D``'s rows, block by block).  None when
-        one of them was not searched."""
+        one of them was not searched, or does not hold at the solved point."""
         ids = {id(c) for c in drop}
-        if any(k in self.unknown for k in ids):
+        if any(k in self.unknown or k in self.overridden for k in ids):
             return None
         lost = sum(self.alone.get(k, 0) for k in ids)
         seen: set = set()
@@ -157,7 +162,7 @@ def search(solver, deadline: float | None = None, max_rows: int = MAX_DENSE,
     system = _flat_system(solver)
     if system is None:
         return Search()
-    J, F, cons, keys, in_closure = system
+    J, F, cons, keys, in_closure, overridden = system
     lab, live, peeled, position = _row_blocks(J)
     by_c: dict[int, list[int]] = {}
     for i, c in enumerate(cons):
@@ -182,12 +187,14 @@ def search(solver, deadline: float | None = None, max_rows: int = MAX_DENSE,
         p = pinned.get(k, 0) - in_closure.get(k, 0)
         if p:
             found.alone[k] = found.alone.get(k, 0) + p
-    return Search(reds, found.blocks, found.alone, found.unknown)
+    return Search(reds, found.blocks, found.alone, found.unknown, overridden)
 
 
 def _flat_system(solver):
-    """``(J, F, cons, keys, in_closure)`` of the solve's rows (the user's and the constructors',
-    not the links or slacks' own), or None when there are none: their Jacobian over the free
+    """``(J, F, cons, keys, in_closure, overridden)`` of the solve's rows (the user's and the
+    constructors', not the links or slacks' own) of the constraints the solved point meets
+    (``overridden``: the ids of those it does not, :func:`_held_rows`), or None when there
+    are none: their Jacobian over the free
     unknowns and residuals, with the pinning rows they reach appended (see
     :func:`~.diagnose._pin_closure`: a dependency through pinned geometry names its pinning
     constraints, as without pinning; a pinned value holds its row), the constraint and the
@@ -197,9 +204,12 @@ def _flat_system(solver):
     rows = rows[solver.kind[rows] == 0]
     if not len(rows):
         return None
+    x = solver.x
+    rows, overridden = _held_rows(solver, rows, x)
+    if not len(rows):
+        return None
     cols = used_free_columns(solver)      # the others' columns of J are all zero
     t = solver.tape(rows)
-    x = solver.x
     F = t.evaluate(x)
     J, cols, prows = _with_pins(solver, t, rows, cols, x)
     cons = [solver.rows.constraint[r] for r in rows]
@@ -213,7 +223,44 @@ def _flat_system(solver):
         cons += extra
         keys = built_keys(solver, rows, prows)
         F = np.concatenate([F, np.zeros(len(prows))])       # a pinned value holds its row
-    return J, F, cons, keys, in_closure
+    return J, F, cons, keys, in_closure, overridden
+
+
+def _held_rows(solver, rows: np.ndarray, x: np.ndarray) -> tuple:
+    """``(rows, overridden)``: the equation rows ``rows`` less those of every constraint that
+    does not hold the solved design where it is, and the ids of those constraints:
+
+    * a structure's hold of its own place in its parent (a row of a constraint of ``S`` that
+      reads ``S``'s frame: ``Fixed(self)``, as every joint of std/joints.aidl "holds itself
+      where `cx`, `cy` put it").  The hierarchical solve meets it at ``S``'s level, where the
+      frame is held, and the parent's constraints then move the frame without asking it
+      again (docs/solver.md): it is where the instance starts, which whatever places the
+      instance overrides, and the freedom count does not count it either (:mod:`.freedom`:
+      a structure's frame against its parent's rows).  Counted, it made the parent's
+      placement look implied: W0401 said to drop `AlignRight(right_tail, panel)` and
+      `AlignCenterY(right_tail, panel)` of a lid, "the template holds it already"; dropped,
+      the tail went back to where the template started it, 79 mm off, and a divider's second
+      `cross_halving` 40 mm (issue 109, law 4);
+    * a row the solved point does not meet (its residual above
+      :data:`~..core.hierarchy.CHECK_TOL`): it holds nothing in the solved design.
+
+    The whole constraint is left out, its other rows too (met by chance: the hold's y where
+    the placement kept it)."""
+    from ..core.hierarchy import CHECK_TOL
+    F = solver.tape(rows).evaluate(x)
+    con, exprs = solver.rows.constraint, solver.rows.exprs
+    overridden = {id(con[r]) for r in rows[np.abs(F) > CHECK_TOL].tolist()}
+    for r in rows.tolist():
+        c = con[r]
+        e = exprs[r]
+        s = c.owner
+        if type(e) is Lin and s is not None and s.parent is not None \
+                and (s.fx in e.terms or s.fy in e.terms):
+            overridden.add(id(c))       # reads its own structure's frame: a self-hold
+    if not overridden:
+        return rows, overridden
+    keep = np.array([id(con[r]) not in overridden for r in rows.tolist()], dtype=bool)
+    return rows[keep], overridden
 
 
 def _row_blocks(J):

@@ -523,14 +523,18 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
         labels = [Label(a.spans[i], f"{first} is here", primary=False)] if a.spans[i] else []
         where, stmt = _allow_holes(a.cuts[i - 1].hole, a.cuts[j - 1].hole) if a.cuts \
             else (None, None)
-        meant = (f"write `{stmt}` in `{where.path}` (or draw both shapes in one hole "
+        unnamed = bool(stmt) and stmt.endswith(", NAME)")   # a copy of an unnamed pattern
+        meant = (f"name the pattern statement that copies it (`NAME = ` before it) and write "
+                 f"`{stmt}` after it" if unnamed else
+                 f"write `{stmt}` in `{where.path}` (or draw both shapes in one hole "
                  "structure, whose faces may overlap)" if stmt else
                  "name the pattern statement that copies them (`NAME = ` before it) and "
                  "write `AllowOverlap(NAME)` after it (the list holds the original and every "
                  "copy)" if stmt == "" else
                  "draw both shapes in one hole structure (the faces of one hole may overlap)")
         move, fix = f"move {second} {far} further from {first}", None
-        if stmt and _copies_of_one(stmt, a.cuts[i - 1].hole, a.cuts[j - 1].hole) \
+        if stmt and not unnamed \
+                and _copies_of_one(stmt, a.cuts[i - 1].hole, a.cuts[j - 1].hole) \
                 and depth >= max(t, MIN_WALL):
             fix = _insert_fix(where, stmt, sink)     # copies that overlap deeply: meant
         elif d is not None and shape is not None and a.cuts and moves < MAX_MOVES:
@@ -629,7 +633,11 @@ def _allow_holes(hi: Structure, hj: Structure) -> tuple:
     opening as meant, and the structure to write it in (their nearest common ancestor):
     ``(structure, statement)``, ``(None, None)`` when either would be named ``self``, and
     ``(structure, "")`` when one is a copy made by a pattern with no name (the pattern's
-    statement must be named first: ``NAME = CircularPattern(...)``)."""
+    statement must be named first: ``NAME = CircularPattern(...)``), ``(structure,
+    "AllowOverlap(bolt, NAME)")`` when the other has a name.  A copy of `first` by an
+    unnamed pattern is `first_pattern[4]`, a name no program binds (issue 109, law 4: the
+    hint said to write `AllowOverlap(bolt, first_pattern)`, E0101 once written): a reference
+    is written only when its first name is one the structure's body binds."""
     common = hi.parent
     while common is not None and not hj.is_within(common):
         common = common.parent
@@ -640,6 +648,10 @@ def _allow_holes(hi: Structure, hj: Structure) -> tuple:
         return None, None
     if not all(_NAMEABLE.match(r) for r in refs):
         return common, ""                        # a copy of a pattern with no name
+    bound = [re.match(r"[A-Za-z_]\w*", r).group(0) in common.scope for r in refs]
+    if not all(bound):                           # `first_pattern[4]`: no name binds it
+        return common, (f"AllowOverlap({refs[bound.index(True)]}, NAME)" if any(bound)
+                        else "")
     if refs[0] == refs[1]:                       # two copies of one pattern: the list
         return common, f"AllowOverlap({refs[0]})"
     return common, f"AllowOverlap({refs[0]}, {refs[1]})"

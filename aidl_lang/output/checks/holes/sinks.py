@@ -19,12 +19,63 @@ def _disc(center, r: float):
     return mf.CrossSection.circle(r, n).translate(list(center))
 
 
+class _Near:
+    """A part's material near a point: its loops (``CrossSection.to_polygons``, outer
+    counter-clockwise, holes clockwise) kept in a grid of square cells by their boxes, so a
+    head is measured against the loops whose boxes meet its own, not the whole part (issue
+    110: 3,025 sunk holes took 31.7 s of CPU against 1.98 s unsunk, each head's disc less the
+    whole part).  A loop whose box misses a region winds nothing there, so those loops under
+    the positive fill rule are the part's material within it, exactly."""
+
+    def __init__(self, shape, cell: float):
+        import numpy as np
+        self.cell = cell
+        self.loops = shape.to_polygons()
+        self.grid: dict = {}
+        self.big: list = []            # loops over more than BIG cells: met by every query
+        for k, lp in enumerate(self.loops):
+            a = np.asarray(lp)
+            (x0, y0), (x1, y1) = a.min(axis=0), a.max(axis=0)
+            i0, i1, j0, j1 = self._cells(x0, x1, y0, y1)
+            if (i1 - i0 + 1) * (j1 - j0 + 1) > BIG:
+                self.big.append(k)
+                continue
+            for i in range(i0, i1 + 1):
+                for j in range(j0, j1 + 1):
+                    self.grid.setdefault((i, j), []).append(k)
+
+    def _cells(self, x0, x1, y0, y1) -> tuple[int, int, int, int]:
+        c = self.cell
+        return (math.floor(x0 / c), math.floor(x1 / c), math.floor(y0 / c), math.floor(y1 / c))
+
+    def around(self, center, r: float):
+        """The part's material within the square of half-side ``r`` about ``center`` (a
+        CrossSection that equals the part there)."""
+        import manifold3d as mf
+        x, y = center
+        i0, i1, j0, j1 = self._cells(x - r, x + r, y - r, y + r)
+        ks = set(self.big)
+        for i in range(i0, i1 + 1):
+            for j in range(j0, j1 + 1):
+                ks.update(self.grid.get((i, j), ()))
+        return mf.CrossSection([self.loops[k] for k in sorted(ks)], mf.FillRule.Positive)
+
+
+BIG = 64       # cells a loop's box may cover before it is met by every query instead
+
+
 def check_sinks(d, sink, tick=lambda: None) -> None:
     """W0528 and W0529 for the countersinks and counterbores of ``d`` (the booleans'
-    result, its ``sinks``) into ``sink``."""
+    result, its ``sinks``) into ``sink``.  Each head is measured against the material near
+    it (:class:`_Near`): n heads on a part of n holes cost n log n, not n²."""
     said = set()
-    shapes = {p.name: p.shape for p in d.parts}
-    for sk in getattr(d, "sinks", None) or ():
+    sinks = getattr(d, "sinks", None) or ()
+    near: dict = {}
+    if sinks:
+        cell = max(max(sk.diameter for sk in sinks), 1e-3)
+        near = {p.name: _Near(p.shape, cell) for p in d.parts
+                if p.shape is not None and any(sk.part == p.name for sk in sinks)}
+    for sk in sinks:
         tick()
         what = f"the {sk.diameter:g} mm head of the {sk.kind} of `{sk.hole}`"
         fn = "Countersink" if sk.kind == "countersink" else "Counterbore"
@@ -36,10 +87,10 @@ def check_sinks(d, sink, tick=lambda: None) -> None:
                              hint=f"give `{fn}` a diameter above {sk.hole_d:g} mm (a M4 "
                                   "flat-head screw: a 4.5 mm hole, a 9 mm head)")
             continue
-        shape = shapes.get(sk.part)
-        if shape is not None:
+        material = near.get(sk.part)
+        if material is not None:
             off = (_disc(sk.center, sk.diameter / 2) - _disc(sk.center, sk.hole_d / 2)
-                   - shape).area()
+                   - material.around(sk.center, sk.diameter / 2)).area()
             if off > OFF_AREA and (id(sk.span), "off") not in said:
                 said.add((id(sk.span), "off"))
                 x, y = sk.center

@@ -575,9 +575,19 @@ def machine_warnings(drawing, cut, design, width, router: bool, sink, given=None
     away (:func:`eaten_walls`, at the through-cut), the parts of a W0510 not said again.
     ``drawing``: the booleans' result (the spans, the minimum walls).  A router whose
     profile has ``relief`` ``none``: W0527 at each part with inside corners the bit does not
-    reach (:func:`~...fabrication.reliefs.unreached`)."""
+    reach (:func:`~...fabrication.reliefs.unreached`); with a relief, W0527 at each hole or
+    outline with corners whose relief is not cut as asked (an acute corner, a wall the stroke
+    would cut through or thin below the minimum: :func:`~...fabrication.reliefs.plan`, the
+    relief strokes judged as the G-code runs them); W0531 for parts nearer each other than
+    the tool is wide (:func:`.tool_gaps.tool_gap_warnings`)."""
     if router and width and relief == "none":
         _corners(drawing, cut, width, sink)
+    elif router and width:
+        _reliefs(drawing, cut, width, relief, sink)
+    if width:                   # W0531: parts nearer each other than the tool is wide
+        from .tool_gaps import tool_gap_warnings
+        tool_gap_warnings(drawing, cut, (lambda n: width.get(n, 0.0)) if isinstance(width, dict)
+                          else width, router, sink)
     if not width or not getattr(drawing, "through", ()):
         return
     split = _splits(drawing, design, width, sink) if router else set()
@@ -602,6 +612,61 @@ def _corners(drawing, cut, diameter: float, sink) -> None:
         node = drawing.part_of.get(part) if drawing is not None else None
         sink.warning("W0527", unreached_message(part, corners, diameter),
                      node.span if node is not None else None, hint=RELIEF_HINT)
+
+
+def _reliefs(drawing, cut, diameter: float, relief: str, sink) -> None:
+    """W0527 in ``sink`` for each loop of ``cut``'s parts with inside corners whose
+    ``relief`` a router's bit of ``diameter`` mm does not cut as asked (the G-code's
+    :func:`~...fabrication.reliefs.plan`, at the program's minimum wall), located at the
+    hole (or the outline's shape) the corners are on."""
+    from ...fabrication.layout import LayoutError, compensate
+    from ...fabrication.reliefs import (NOT_RELIEVED_HINT, not_relieved, not_relieved_message,
+                                        relieve)
+    from ...part.part import Output
+    part_of = getattr(drawing, "part_of", None) or {}
+    for p in cut.parts:
+        node = part_of.get(p.name)
+        one = Output([p], [], cut.title, cut.drawing, cut.page)
+        try:            # the corners the offset path reaches, as the G-code's (a part the
+            tooled = compensate(one, diameter)      # tool does not fit is refused there)
+        except LayoutError:
+            continue
+        _, _, plans = relieve(one, tooled, diameter / 2, relief,
+                              part_min_wall(drawing, node))
+        for ps in not_relieved(plans).values():
+            span = _shape_at(drawing, node, ps[0].corner.at)
+            sink.warning("W0527", not_relieved_message(ps, diameter),
+                         span or (node.span if node is not None else None),
+                         hint=NOT_RELIEVED_HINT)
+
+
+def _shape_at(drawing, node, at) -> object:
+    """The span of what drew point ``at`` (x, y mm) of part structure ``node``'s outline: the
+    hole (or `cut`) structure whose shape's edge passes nearest it, else the part's own shape
+    there (its statement); None when nothing lies within 1 mm."""
+    if node is None:
+        return None
+    own = getattr(drawing, "own", None) or {}
+    best, span = 1.0, None
+    stack = [node, *getattr(node, "cut_by", ())]
+    while stack:
+        s = stack.pop()
+        stack += [c for c in s.children.values() if c.kind in ("solid", "hole", "cut")]
+        for g, face in own.get(s, ()):
+            for poly in face.to_polygons():
+                pts = np.asarray(poly, dtype=float)
+                if len(pts) < 2:
+                    continue
+                a, b = pts, np.roll(pts, -1, axis=0)
+                e = b - a
+                L2 = np.maximum((e * e).sum(1), 1e-300)
+                t = np.clip(((np.asarray(at) - a) * e).sum(1) / L2, 0.0, 1.0)
+                d = float(np.hypot(*(a + t[:, None] * e - np.asarray(at)).T).min())
+                if d < best:
+                    best = d
+                    span = s.span if s.kind in ("hole", "cut") and s.span is not None \
+                        else (getattr(g, "span", None) or s.span)
+    return span
 
 
 def _splits(drawing, output, diameter: float, sink) -> set:

@@ -32,9 +32,11 @@ from ..edges.exact import Provenance
 from ..measure.nearby import faces_apart, meeting
 from .outlines import _shoelace, _weld
 from .placement import bends_of, placement_matrix
-from .result import Cut, Drawing, Part, SinkAt, Through
+from .result import Cut, Drawing, Part, SinkAt, SinkCall, Through
+from .sunk import DEFAULT_THICKNESS, sunk_away, sunk_message
 from .scanwork import TURN, TURN_BACK, plan, turned, turned_back, union_seconds
 from .faces import Faces, _dist
+from ....geometry.relations import bbox as _bbox
 
 CLOSE_TOL = 1e-6
 UNION_GROUP = 16          # faces united by one batch_boolean (Renderer.union)
@@ -63,9 +65,9 @@ class Renderer(Faces):
 
     STAGE = "the booleans"
 
-    def __init__(self, model: Model, deadline: Deadline | None = None):
+    def __init__(self, model: Model | None, deadline: Deadline | None = None, x=None):
         self.m = model
-        self.x = model.xs()
+        self.x = model.xs() if x is None else np.asarray(x, dtype=float)
         self._xl = self.x.tolist()          # the same floats, read faster one at a time
         self._origin: dict = {}             # id(structure) -> its frames' offset (_pt)
         self.deadline = deadline
@@ -753,6 +755,15 @@ class Renderer(Faces):
                 r = abs(self.x[g.scalars["radius"].index])
                 got.append(SinkAt(sk.kind, name, g.label, self._pt(g.points["center"]),
                                   2 * float(r), sk.diameter, sk.angle, sk.depth, sk.span))
+        shapes = {p.name: p.shape for p in out.parts if p.kind == "solid"}
+        for name in dict.fromkeys(a.part for a in got):     # E0503: heads that leave nothing
+            t = out.thickness.get(name) or DEFAULT_THICKNESS
+            found = sunk_away(shapes.get(name), [(a.center, a) for a in got if a.part == name],
+                              t)
+            if found is not None:
+                message, hint = sunk_message(name, found, t)
+                self.shape_errors.append((SinkCall(found[2].span, out.part_of[name]), message,
+                                          hint, "E0503"))
         return got
 
 
@@ -815,6 +826,31 @@ def render_model(model: Model, deadline: Deadline | None = None) -> Drawing:
     """The booleans' :class:`Drawing` of a solved ``model``; ``deadline``: see
     :class:`Renderer` (raises :class:`~aidl_lang.base.limits.OutOfBudget`)."""
     return Renderer(model, deadline).run()
+
+
+def shape_box(g: Geometry, x) -> tuple[float, float, float, float] | None:
+    """(left, right, bottom, top) in mm, in the root frame, of the exact outline that the
+    booleans draw for shape ``g`` at the parameter values ``x`` (a clipping ``Intersect``:
+    its clipped pieces); None when it draws nothing there.  Registered with
+    :mod:`aidl_lang.geometry.relations.bbox` (``DRAWN_BOX``), which boxes an ``Inset``, a
+    miter ``Offset``, a flat-capped ``Stroke`` and an ``Intersect`` by it (docs/language.md,
+    "Members are the drawn geometry")."""
+    r = Renderer(None, x=x)
+    try:
+        if g.kind == "Intersect" and not g.closed:
+            segs = r.clipped(g)
+        else:
+            segs = [sg for lp in r.loops_of(g) for sg in lp.segments]
+    except Exception:           # noqa: BLE001 (a shape that cannot be made: E0406 later)
+        return None
+    if not segs or r.shape_errors:
+        return None
+    boxes = [sg.box() for sg in segs]
+    return (min(b[0] for b in boxes), max(b[2] for b in boxes),
+            min(b[1] for b in boxes), max(b[3] for b in boxes))
+
+
+_bbox.DRAWN_BOX = shape_box
 
 
 def area(drawing: Drawing) -> float:

@@ -88,6 +88,15 @@ class SinkAt(Compared):
         return max(0.0, (self.diameter - self.hole_d) / 2 / math.tan(self.angle / 2))
 
 
+class SinkCall:
+    """Where an ``E0503`` of the booleans is said (:mod:`.sunk`): the ``Countersink`` /
+    ``Counterbore`` call's ``span`` and the part it sinks, ``owner`` (its structure)."""
+    __slots__ = ("span", "owner")
+
+    def __init__(self, span, owner):
+        self.span, self.owner = span, owner
+
+
 class Drawing(Compared):
     """The booleans' result of a model: its parts, lines, cuts and each structure's own shape."""
     __slots__ = ("parts", "lines", "hole_outlines", "open_curves", "exact", "strokes", "shapes",

@@ -1,0 +1,1 @@
+class NotApplicable(Exception): pass
