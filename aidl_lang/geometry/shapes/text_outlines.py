@@ -47,15 +47,7 @@ def build_font_text(ctx, g, a, const) -> None:
             raise F.FontError(f"a stencil Text's bridge is more than 0, got "
                                  f"{g.data['bridge']:g}")
         g.data["stencil"] = True
-    if g.data.get("along") is not None:      # its box at the curve's starting radius
-        ang = g.data["angle"] if g.data["angle"] is not None else g.data["start_angle"]
-        bs = [sg.box() for lp in along_loops(g, g.data["radius0"], ang) for sg in lp.segments]
-        g.data["extent"] = ((min(b[0] for b in bs), max(b[2] for b in bs),
-                             min(b[1] for b in bs), max(b[3] for b in bs)) if bs else
-                            (0.0, 0.0, 0.0, 0.0))
-    else:
-        g.data["extent"] = F.extent(face, text, size, g.data["anchor"], g.data["valign"],
-                                    g.data["rotation"])
+    g.data["extent"] = turned_extent(g)
     g.closed = True
 
 
@@ -87,10 +79,18 @@ def along_loops(g, r: float, angle: float) -> list[Loop]:
 
 def turned_extent(g) -> tuple[float, float, float, float]:
     """``(x0, x1, y0, y1)``: the glyphs' true box of font Text ``g`` about its position at
-    its own rotation (a turned copy's, mm)."""
+    its own rotation (a turned or mirrored copy's too, mm); along a curve, about the curve's
+    center at its starting radius and its angle (without one, the arc's middle)."""
     d = g.data
-    return F.extent(d["font"], d["text"], d["size"], d["anchor"], d["valign"],
-                    d.get("rotation", 0.0))
+    if d.get("along") is None:
+        return F.extent(d["font"], d["text"], d["size"], d["anchor"], d["valign"],
+                        d.get("rotation", 0.0))
+    ang = d["angle"] if d.get("angle") is not None else d["start_angle"]
+    bs = [sg.box() for lp in along_loops(g, d["radius0"], ang) for sg in lp.segments]
+    if not bs:
+        return (0.0, 0.0, 0.0, 0.0)
+    return (min(b[0] for b in bs), max(b[2] for b in bs), min(b[1] for b in bs),
+            max(b[3] for b in bs))
 
 
 def local_loops(g) -> list[Loop]:
