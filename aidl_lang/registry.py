@@ -332,8 +332,13 @@ _DEFS = {
                   "size / 10)", kw_only=True),
                 A("max_width", "length", None, "the text's width along its baseline at most "
                   "this: a longer text is drawn at the size that fits (note W0113)",
-                  kw_only=True)],
-               doc="Single-stroke text in a drawing (one font, no `font=`); size: cap "
+                  kw_only=True),
+                A("font", "string", None, "the letters as the closed outlines of a font: "
+                  "\"sans\", \"serif\", \"Family:Bold\" or a .ttf/.otf/.ttc file beside "
+                  "the program; material in a solid, openings in a hole, engraved outlines "
+                  "in a drawing", kw_only=True)],
+               doc="Text: single strokes in a drawing, or with font= the letters' closed "
+                   "outlines (in a solid, hole or drawing); size: cap "
                    "height (~ a capital's width); anchor: start, "
                    "middle, end; valign: baseline, middle, top, bottom; rotation about "
                    "position; along=circle, angle=; stencil=true (in a hole): cut out; "
@@ -824,11 +829,11 @@ def rename_args(entry: Entry, variant: tuple[Arg, ...], npos: int,
 # argument names a model guesses for something the language does not have: the E0105 hint
 # says so instead of a did-you-mean on the spelling (`font` is not `on`); issue 61
 ARG_NOTES: dict[tuple[str, str], str] = {
-    ("Text", n): "text is engraved in the one built-in single-stroke font (Hershey \"futural\", "
-                 "a line font for lasers and plotters); there is no font choice: leave "
-                 f"`{n}=` out"
-    for n in ("font", "font_family", "family", "typeface", "fontname", "font_name", "face",
-              "weight", "bold", "italic", "style")}
+    ("Text", n): "a Text's font is `font=`: a family with its style after a colon "
+                 "(`font=\"sans:Bold Italic\"`, `\"serif\"`) or a .ttf/.otf/.ttc file; "
+                 "without it the letters are the single-stroke engraving font"
+    for n in ("font_family", "family", "typeface", "fontname", "font_name", "face",
+              "bold", "italic", "style")}
 
 
 def near_args(name: str, names: list[str]) -> list[str]:

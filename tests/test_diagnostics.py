@@ -715,6 +715,20 @@ def test_every_producible_code_has_a_test():
     assert missing == []
 
 
+def test_a_font_that_cannot_be_had_is_E0133_at_the_argument(compile_text):
+    """`Text(..., font=)` with a family that is not installed, a style word that is no weight,
+    or a file that leaves the program's folder: E0133 located at the `font=` value (issue
+    112), the hint naming what is there."""
+    for spec, said in (("Comic Sans", "no font family `Comic Sans`"),
+                       ("sans:Wobbly", "`Wobbly` is no weight or slant"),
+                       ("../fonts/x.ttf", "leaves the project folder")):
+        c = compile_text('solid s {\n    t = Text("HI", position=(0, 0), size=10, '
+                         f'font="{spec}")\n}}\n')
+        d = the_error(c, "E0133")
+        assert said in d.message, d.message
+        assert span4(d)[:2] == (2, 51)                # the `font=` value
+
+
 def test_solver_codes_E0402_W0401_W0403(tmp_path, capsys, monkeypatch):
     """Budget overrun, redundancy (with --dof) and a flipped branch, through the CLI."""
     from aidl_lang.solver.core import hierarchy

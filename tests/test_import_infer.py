@@ -80,11 +80,12 @@ def _round_trip(tmp_path, src: str | None, name: str, path=None, first_result=No
 
 
 def _texts(res) -> tuple:
-    """The strings of a compiled program's ``Text`` shapes, those laid along a curve apart:
-    ``(straight, along)``."""
+    """The strings of a compiled program's single-stroke ``Text`` shapes, those laid along a
+    curve apart: ``(straight, along)`` (a Text in a font is its letters' outlines: imported
+    as the curves they are, no font guessed, issue 112)."""
     out = (collections.Counter(), collections.Counter())
     for g in res.compiled.model.all_geometry():
-        if g.kind == "Text":
+        if g.kind == "Text" and not g.data.get("font"):
             out["along" in g.data][g.data["text"]] += 1
     return out
 

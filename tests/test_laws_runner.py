@@ -210,7 +210,7 @@ def test_law_compiles_generates_the_same_gallery_combinations_each_run():
     a = list(law_compiles.generated(3))
     assert [e.name for e in a] == [e.name for e in law_compiles.generated(3)] == [
         "generated/gallery/000:example/bottle_opener", "generated/gallery/001:example/bracket",
-        "generated/gallery/002:example/coat_hanger"]
+        "generated/gallery/002:example/cake_topper"]
     assert [e.overrides for e in a] == [e.overrides for e in law_compiles.generated(3)]
     assert {e.kind for e in a} == {"generated"}
     assert set(a[1].overrides) == {"bolts", "pitch", "fillet"}

@@ -360,17 +360,19 @@ def test_a_failed_definition_is_reported_once_not_again_through_a_member():
     assert not any("a object" in d.message for d in r.sink.items)
 
 
-def test_a_font_argument_says_there_is_one_font_not_did_you_mean_on():
+def test_a_typeface_argument_says_font_is_the_argument_not_did_you_mean_on():
+    """`typeface=` (a name models guess) says that the font is `font=` (issue 112: a family
+    with its style, or a font file), not a did-you-mean on the spelling."""
     src = ('solid tag {\n    body = Rectangle(center=(0, 0), width=60, height=20)\n'
-           '    drawing label {\n        t = Text("HI", position=(0, 0), size=5, font="Arial")\n'
+           '    drawing label {\n        t = Text("HI", position=(0, 0), size=5, typeface="Arial")\n'
            '    }\n}\n')
     r = aidl_compile(src, path="/tmp/aidl-issue61-font.aidl")
     (e,) = [d for d in r.sink.items if d.is_error]
-    assert e.code == "E0105" and "`font`" in e.message
-    assert "single-stroke font" in e.hint and "did you mean" not in e.hint
+    assert e.code == "E0105" and "`typeface`" in e.message
+    assert "`font=`" in e.hint and "single-stroke" in e.hint and "did you mean" not in e.hint
     assert e.suggestions == [] and e.fix is None
     # a real misspelling still gets its suggestion
-    r = aidl_compile(src.replace('font="Arial"', 'valgin="middle"'), path="/tmp/aidl-issue61-f2.aidl")
+    r = aidl_compile(src.replace('typeface="Arial"', 'valgin="middle"'), path="/tmp/aidl-issue61-f2.aidl")
     (e,) = [d for d in r.sink.items if d.is_error]
     assert e.suggestions[:1] == ["valign"]
 

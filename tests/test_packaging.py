@@ -197,6 +197,14 @@ def test_the_installed_wheel_knows_its_version_and_is_not_this_checkout(plain_in
     assert Path(r.stdout.strip()).is_relative_to(venv), r.stdout + r.stderr
 
 
+def _probe(venv: Path, code: str, cwd: Path):
+    """What the Python program ``code`` prints as JSON, run by the wheel's venv in ``cwd``."""
+    r = subprocess.run([str(venv / "bin" / "python"), "-c", code], capture_output=True,
+                       text=True, timeout=300, cwd=cwd, env=WHEEL_ENV)
+    assert r.returncode == 0, r.stderr[-3000:]
+    return json.loads(r.stdout)
+
+
 @pytest.mark.slow
 def test_the_installed_wheel_has_the_studio_gallery(plain_install, tmp_path):
     """The gallery reads the examples shipped inside the wheel: the same entries as in this
@@ -208,15 +216,32 @@ def test_the_installed_wheel_has_the_studio_gallery(plain_install, tmp_path):
              " 'ok': g.compile_entry(e).ok, 'svg': '<path' in g.thumbnail(e),"
              " 'rows': [p['name'] for p in e.params],"
              " 'form': 'ring=sun + 2 * planet' in g.entry('generator/planetary').source}))")
-    r = subprocess.run([str(venv / "bin" / "python"), "-c", probe], capture_output=True,
-                       text=True, timeout=300, cwd=tmp_path, env=WHEEL_ENV)
-    assert r.returncode == 0, r.stderr[-3000:]
-    got = json.loads(r.stdout)
+    got = _probe(venv, probe, tmp_path)
     from aidl_lang.studio import gallery
     assert got["ids"] == [e.id for e in gallery.entries()]
     assert Path(got["where"]).is_relative_to(venv)
     assert got["ok"] and got["svg"] and {"rows", "cols", "thickness"} <= set(got["rows"])
     assert got["form"]                  # aidl_lang/studio/forms/ is in the wheel
+
+
+@pytest.mark.slow
+def test_the_installed_wheel_draws_text_in_the_default_fonts(plain_install, tmp_path):
+    """`font="sans"` and `font="serif:Bold"` work on a fresh install (issue 112): the default
+    families come with the wheel's dependencies from PyPI (fontpkg-noto-sans, -serif), found
+    in the venv, not in this checkout or the system; "HAPPY" in a solid is 5 letters, 8 loops."""
+    venv, _ = plain_install
+    probe = ("import json, aidl_lang\nfrom aidl_lang.geometry.shapes import font as F\n"
+             "out = {}\nfor f in ('sans', 'serif:Bold'):\n"
+             "    r = aidl_lang.compile(source='solid w { t = Text(\"HAPPY\", position=(0, 0), "
+             "size=20, font=\"' + f + '\") }')\n"
+             "    [p] = r.output.parts\n"
+             "    out[f] = [sum(lp.area > 0 for lp in p.loops), len(p.loops), "
+             "F.resolve(f).path]\nprint(json.dumps(out))")
+    got = _probe(venv, probe, tmp_path)
+    for f in ("sans", "serif:Bold"):
+        pieces, loops, path = got[f]
+        assert (pieces, loops) == (5, 8)
+        assert Path(path).is_relative_to(venv), path
 
 
 @pytest.mark.slow

@@ -158,6 +158,16 @@ here, numbers that give no shape), in `Drawing2D` and `aidl import` alike.
 
     board = Drawing2D("board.dxf", layer="Edge_Cuts")   # did you mean `Edge.Cuts`?
 """),
+    "E0133": ("font cannot be found or read", """
+`Text(..., font=...)` names a font that cannot be had: a family that is not installed (the
+hint lists the families found: `"sans"` and `"serif"`, which install with the package, every
+`fontpkg-*` family installed from PyPI, and, where fontconfig is present, the families it
+knows), a style word that is no weight or slant, a weight the family lacks, or a `.ttf`,
+`.otf` or `.ttc` file that is missing, outside the program's folder tree, larger than
+50000000 bytes or not a font fontTools can read.
+
+    t = Text("HAPPY", position=(0, 0), size=20, font="Comic Sans")   # not installed: "sans"
+"""),
     "E0116": ("top-level statement inside a structure", """
 `param`, `def`, `import` and `units` belong at the top level of a file.
 """),
@@ -184,7 +194,9 @@ Text is drawn as single-stroke lines, so it belongs in a `drawing` structure:
     }
 
 To cut the letters out (a stencil, bridged), write `stencil=true` and put it in a hole:
-`hole letters { t = Text("HELLO", position=(0, 0), size=30, stencil=true) }`.
+`hole letters { t = Text("HELLO", position=(0, 0), size=30, stencil=true) }`. A Text in a
+font (`font="sans"`: the letters' closed outlines) stands in a solid (material), a hole
+(openings) or a drawing (engraved outlines); in a `cut` or an `assembly` it is E0120.
 """),
     "E0124": ("param value outside its range", """
 A param may declare the range its value is meant to take (used by `aidl serve` for its

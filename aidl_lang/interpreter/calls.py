@@ -395,7 +395,10 @@ class Calls:
                             f"`{bad[0].path}`")
                 raise EvalError("E0201", f"geometry in `{s.path}` refers to `{k}` of `{bad[0].path}`, "
                                 f"another structure", spans.get(k, node.span), hint=hint)
-        if kind == "Text" and s.kind != "drawing" and not (
+        if kind == "Text" and conv.get("font") is not None:
+            from .fonts import text_font
+            text_font(self, conv, s, node, spans)
+        elif kind == "Text" and s.kind != "drawing" and not (
                 conv.get("stencil") and s.kind in ("hole", "solid")):
             raise EvalError("E0120", f"Text must be in a `drawing` structure, not in {s.kind} `{s.name}`",
                             node.span, hint="put it in `drawing labels { ... }` inside this structure"
@@ -423,7 +426,10 @@ class Calls:
                                            g.data["valign"], g.data["rotation"])
             if g.data.get("shrunk"):
                 said_shrunk(self.sink, g, spans.get("max_width", node.span))
-            lost = missing_glyphs(g.data["text"])
+            lost = [] if g.data.get("font") else missing_glyphs(g.data["text"])
+            if g.data.get("font"):
+                from .fonts import font_missing
+                font_missing(self, g, spans, node)
             if lost:
                 shown = ", ".join(f"`{c}` (U+{ord(c):04X})" for c in lost[:8])
                 self.sink.warning("W0105", f"the engraving font has no glyph for {shown}: "

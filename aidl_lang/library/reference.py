@@ -768,8 +768,9 @@ material; W0507: a web thinner than the minimum wall between cuts. Templates may
       "sheet-level cut", "sheet cut"]),
     "drawing": ("statement", "`drawing NAME { ... }`: engraved lines and text, not filled.", """
 `drawing NAME { ... }`: its shapes are drawn as lines (closed shapes as outlines) and Text as
-single strokes, on the `engrave` layer; nothing is filled or cut. Text is only allowed in a
-drawing. Put it inside the solid it marks. A `hole` in a drawing hides the drawing's lines
+single strokes (with `font=`: the letters' outlines), on the `engrave` layer; nothing is filled
+or cut. Text is only allowed in a drawing (a Text with `font=` also in a solid, as material,
+and a hole, as openings). Put it inside the solid it marks. A `hole` in a drawing hides the drawing's lines
 (its own and its children's) where it covers them: a shape behind another (`drawing back {
 p = Polygon(...) hole front { q = Polygon(...) } }`); one that hides nothing is W0526.
 """, ["engraving", "engrave", "label", "mark", "engraving minus engraving", "hide lines"]),
@@ -952,7 +953,15 @@ DETAILS: dict[str, str] = {
             "drawn at the size at which it is exactly w wide (note W0113 gives that size; "
             "`t.size` is the size drawn), e.g. `Text(\"ROSEMARY\", position=(0, 0), "
             "size=10 mm, max_width=60 mm)` is 60 mm wide at size 7.98 mm. A stencil's width "
-            "counts its stroke weight; along a curve the width is its length along it.",
+            "counts its stroke weight; along a curve the width is its length along it. "
+            "font=\"sans\" | \"serif\" | \"Family:Bold Italic\" | \"fonts/X.ttf\" draws the "
+            "letters as a font's closed outlines (fontTools, HarfBuzz; Noto Sans and Noto "
+            "Serif install with AIDL): material in a solid (`word = Text(\"HAPPY 30\", "
+            "position=(0, 0), size=20, font=\"sans:Bold\")` with `rail = Rectangle(center="
+            "(word.center.x, -1 mm), width=word.bb.width, height=4 mm)` is one cake topper), "
+            "openings in a hole (stencil=true bridges the counters, else W0504 names the "
+            "letters whose counters fall out), engraved outlines in a drawing; .bb is the "
+            "glyphs' true box; a font not found is E0133.",
     "Star": "tip_radius=r rounds each tip by an arc of radius r tangent to its two sides, as "
             "Fillet rounds a corner (exact arcs; the notches stay sharp); the rounded tip "
             "reaches a little less than outer_radius, r (1 / sin(h) - 1) less for a tip of "

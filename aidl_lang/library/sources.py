@@ -206,52 +206,79 @@ def load_drawing(raw: str, importer: str | None) -> tuple[Path, bytes]:
     path is a regular ``.dxf`` or ``.svg`` file of at most :data:`MAX_DRAWING_BYTES`, opened
     once, non-blocking.  Returns ``(real path, bytes)``; raises :class:`ImportRefused` with
     code ``E0130`` and a message naming only the path as written."""
-    hint = "give a .dxf or .svg file in this program's folder or below it (a relative path)"
+    return _load_beside(raw, importer, DRAWING_EXTS, "drawing", "E0130", MAX_DRAWING_BYTES,
+                        "give a .dxf or .svg file in this program's folder or below it (a "
+                        "relative path)",
+                        "select what you need in the drawing program and save that, or "
+                        "split the drawing", allow_std=True)
+
+
+FONT_EXTS = (".ttf", ".otf", ".ttc")
+MAX_FONT_BYTES = 50_000_000      # one font file of Text(..., font="FILE") (a CJK .ttc: ~30 MB)
+
+
+def load_font(raw: str, importer: str | None) -> tuple[Path, bytes]:
+    """Resolve and read the font file ``raw`` of ``Text(..., font="raw")`` in ``importer``:
+    the sandbox of :func:`load_drawing` (a relative path inside the program's folder tree)
+    for a regular ``.ttf``, ``.otf`` or ``.ttc`` file of at most :data:`MAX_FONT_BYTES`.
+    Returns ``(real path, bytes)``; raises :class:`ImportRefused` with code ``E0133``."""
+    return _load_beside(raw, importer, FONT_EXTS, "font", "E0133", MAX_FONT_BYTES,
+                        "give a .ttf, .otf or .ttc file in this program's folder or below it "
+                        "(a relative path), or a family: `font=\"sans\"`",
+                        "use a smaller font file")
+
+
+def _load_beside(raw: str, importer: str | None, exts: tuple, what: str, code: str,
+                 max_bytes: int, hint: str, smaller: str,
+                 allow_std: bool = False) -> tuple[Path, bytes]:
+    """A file named by a program (a drawing, a font) read through the import sandbox:
+    ``exts`` its extensions, ``what`` its word in messages, ``code`` their code, ``hint``
+    the fix of a refused path and ``smaller`` of a file too large."""
+    words = ", ".join(exts[:-1]) + " or " + exts[-1]
     if len(raw) > MAX_IMPORT_PATH or "\0" in raw or "\\" in raw:
-        raise ImportRefused(f"drawing path `{raw[:80]}` is too long or has a character that "
-                            f"cannot be in a path", hint=hint, code="E0130")
-    if not raw.lower().endswith(DRAWING_EXTS):
-        raise ImportRefused(f"`{raw}` is not a .dxf or .svg drawing", hint=hint, code="E0130")
-    if raw.startswith("std/"):          # the sample drawings bundled with the library
+        raise ImportRefused(f"{what} path `{raw[:80]}` is too long or has a character that "
+                            f"cannot be in a path", hint=hint, code=code)
+    if not raw.lower().endswith(exts):
+        raise ImportRefused(f"`{raw}` is not a {words} {what}", hint=hint, code=code)
+    if allow_std and raw.startswith("std/"):     # the sample drawings bundled with the library
         base, raw_rel = str(STDLIB.resolve()), raw[4:]
     else:
         base = os.path.dirname(os.path.realpath(importer)) if importer and \
             not importer.startswith("<") else os.path.realpath(os.getcwd())
         raw_rel = raw
     if os.path.isabs(raw) or raw.startswith("~"):
-        raise ImportRefused(f"drawing `{raw}` leaves the project folder", hint=hint, code="E0130")
+        raise ImportRefused(f"{what} `{raw}` leaves the project folder", hint=hint, code=code)
     lexical = os.path.normpath(os.path.join(base, raw_rel))
     if not _inside(lexical, base):
-        raise ImportRefused(f"drawing `{raw}` leaves the project folder", hint=hint, code="E0130")
+        raise ImportRefused(f"{what} `{raw}` leaves the project folder", hint=hint, code=code)
     if not os.path.lexists(lexical):
         folder = os.path.dirname(lexical)
         cands = []
         if _inside(os.path.realpath(folder), base) and os.path.isdir(folder):
             try:
                 cands = sorted(n for n in os.listdir(folder)
-                               if n.lower().endswith(DRAWING_EXTS))[:200]
+                               if n.lower().endswith(exts))[:200]
             except OSError:
                 cands = []
         from ..base.diagnostics import did_you_mean
-        raise ImportRefused(f"cannot find the drawing `{raw}`",
+        raise ImportRefused(f"cannot find the {what} `{raw}`",
                             hint="the path is relative to this program's folder",
                             suggestions=did_you_mean(os.path.basename(lexical), cands),
-                            code="E0130")
+                            code=code)
     real = os.path.realpath(lexical)
-    if not _inside(real, base) or not real.lower().endswith(DRAWING_EXTS):
-        raise ImportRefused(f"drawing `{raw}` is not a .dxf or .svg file inside the project "
-                            f"folder", hint=hint, code="E0130")
+    if not _inside(real, base) or not real.lower().endswith(exts):
+        raise ImportRefused(f"{what} `{raw}` is not a {words} file inside the project "
+                            f"folder", hint=hint, code=code)
     from ..host.files import FileRefused, read_file
     try:
-        data = read_file(real, MAX_DRAWING_BYTES, follow_symlinks=False)
+        data = read_file(real, max_bytes, follow_symlinks=False)
     except FileRefused as e:
         msg = str(e)
         if "larger" in msg:
-            raise ImportRefused(f"drawing `{raw}` is larger than {MAX_DRAWING_BYTES} bytes",
-                                hint="select what you need in the drawing program and save "
-                                     "that, or split the drawing", code="E0130") from None
-        raise ImportRefused(f"cannot read the drawing `{raw}`: it is not a regular file",
-                            hint=hint, code="E0130") from None
+            raise ImportRefused(f"{what} `{raw}` is larger than {max_bytes} bytes",
+                                hint=smaller, code=code) from None
+        raise ImportRefused(f"cannot read the {what} `{raw}`: it is not a regular file",
+                            hint=hint, code=code) from None
     except OSError:
-        raise ImportRefused(f"cannot read the drawing `{raw}`", hint=hint, code="E0130") from None
+        raise ImportRefused(f"cannot read the {what} `{raw}`", hint=hint, code=code) from None
     return Path(real), data

@@ -99,6 +99,9 @@ Conventions: y points up; angles and `rotation=` turn counter-clockwise from +x.
 0: a RegularPolygon's first vertex is on +x (a hexagon has flats at top and bottom), a
 Triangle(center, base, height) points up (apex c at +y), a Slot lies along x; a Slot's length
 is end to end; a Text position is on the baseline (set `valign="middle"` to center it).
+Letters as the part (cake topper, sign, house number): `Text(..., font="sans:Bold")` (or "serif",
+a .ttf) is filled outlines: material in a solid (join them: a rail `width=word.bb.width`),
+openings in a hole (`stencil=true` holds counters); without `font=` Text is engraved strokes.
 Each child of an `assembly` is a separate part, drawn where the solver puts it (overlapping parts: W0511 unless
 `AllowOverlap(a, b)`; `aidl render --layout sheet` nests them for cutting).
 - Place(part, position=(x, y, z), rotation=(rx, ry, rz)) in its assembly places a part in 3D

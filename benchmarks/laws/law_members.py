@@ -104,12 +104,13 @@ def violations(res) -> list[str]:
 
 def drawn(r, g) -> list:
     """The exact segments the booleans draw for shape ``g`` (root frame, mm): a closed
-    shape's loops, an open curve's pieces, a Text's strokes (as lines)."""
+    shape's loops, an open curve's pieces, a Text's strokes (as lines; a Text in a font: its
+    letters' loops, issue 112)."""
     from aidl_lang.geometry.shapes.curves import Line
     k = g.kind
     if k == "Point":
         return []
-    if k == "Text" and not g.data.get("stencil"):
+    if k == "Text" and not g.data.get("stencil") and not g.data.get("font"):
         from aidl_lang.geometry.shapes.text import text_strokes
         along = g.data.get("along")
         if along is not None:
@@ -447,6 +448,13 @@ TEXTS = [
     'Text("around", along=Circle(center=(0, 0), radius=30, construction=true), size=5)',
     'Text("under", along=Circle(center=(4, 1), radius=25, construction=true), size=4, '
     'flip=true)',
+    # in a font (issue 112): its letters' outlines, plain, turned, stencilled, along a circle
+    'Text("HAPPY 30", position=(2, -3), size=12, font="sans:Bold")',
+    'Text("Wg!", position=(0, 0), size=12, font="serif", anchor="start", valign="top", '
+    'rotation=25 deg)',
+    'Text("BOX", position=(0, 0), size=20, font="sans", valign="middle", stencil=true)',
+    'Text("round", along=Circle(center=(0, 0), radius=30, construction=true), size=5, '
+    'font="sans")',
 ]
 
 

@@ -265,13 +265,22 @@ def _holds(segs: list, prefix: str, closed: bool = True) -> list[str]:
     two lines ``Fixed`` whole (its ends with it); every other join of two pieces ``Fixed``
     (a point); and an arc that meets another arc by its radius (``NAME.radius == r``: its
     centre is then the one point at that distance from both held ends).  Returns the things
-    to fix and those equations (each with `` == ``).  Only chains of lines and arcs, or one
-    closed spline (held whole); a chain of splines and other pieces stays free as ``aidl
-    import`` writes it."""
+    to fix and those equations (each with `` == ``).  Only chains of lines and arcs, one
+    closed spline (held whole), or a closed chain of lines and curves that does not start and
+    end on a curve (each curve held whole, each join of two lines held: a font's letter); a
+    chain of splines and arcs stays free as ``aidl import`` writes it."""
     if not all(isinstance(g, (Line, Arc)) for g in segs):
         one = _bezier_runs(list(segs))
         if closed and len(one) == 1 and isinstance(one[0], Spline):
             return [f"{prefix}0"]       # one closed Bezier or Spline: rigid, held whole
+        n = len(one)
+        if closed and all(isinstance(g, (Line, Spline)) for g in one) and not (
+                isinstance(one[0], Spline) and isinstance(one[-1], Spline)):
+            # lines and curves (a font's letter, issue 112): each curve held whole (its ends
+            # with it), each join of two lines held; no point twice
+            return [f"{prefix}{i}" for i, g in enumerate(one) if isinstance(g, Spline)] + \
+                [f"{prefix}{i}.start" for i in range(n)
+                 if isinstance(one[i], Line) and isinstance(one[i - 1], Line)]
         return []
     n = len(segs)
 

@@ -255,6 +255,9 @@ class _Cloner:
             elif "mirror" in g.data:     # a turned copy of a mirrored Ellipse
                 a, b, r0 = g.data["mirror"]
                 new.data["mirror"] = (a, b, r0 - (self.rot or 0.0))
+            if g.kind == "Text" and g.data.get("font") and (self.rot or self.flip):
+                from ..shapes.text_outlines import turned_extent
+                new.data["extent"] = turned_extent(new)     # the copy's own box
         if "angles" in g.data:               # ArcSlot: counter-clockwise from a1 by sweep
             a1, sweep = g.data["angles"]
             new.data["angles"] = ((2 * self.line_angle - a1 - sweep) if self.flip else

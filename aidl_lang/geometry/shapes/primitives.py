@@ -712,6 +712,14 @@ def _build_Text(ctx, g, a):
                              f"not \"{valign}\"")
     g.data["valign"] = valign
     g.data["rotation"] = _const(ctx, a.get("rotation", Q.num(0.0, ANG)), "rotation")
+    if a.get("_font") is not None:
+        from .font import FontError
+        from .text_outlines import build_font_text
+        try:
+            build_font_text(ctx, g, a, _const)
+        except FontError as ex:
+            raise PrimitiveError(str(ex), hint=ex.hint) from None
+        return
     if a.get("max_width") is not None:
         _fit_width(ctx, g, a)
     if a.get("stencil"):

@@ -22,6 +22,7 @@ from ...geometry.core.model import Structure
 from ..part.build.booleans import Drawing
 from ..part.measure.nearby import box_pairs
 from ..part.build.scanwork import decompose
+from .letters import fallen_counters, letters_in
 from .common import MIN_AREA, _area, _contributors, _depth, _say_few, _signed, _union
 
 MAX_CHILDREN = 64        # W0506 compares each child with the union of the others
@@ -151,6 +152,7 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
     if len(pieces) < 2:
         return
     items = _contributors(d, s)
+    objs = [o for *_, o in _contributors(d, s, objects=True)]
     # the message names the first 6 pieces and up to 4 contributors of each (and "..." for
     # a fifth): only those are measured, and only contributors whose box meets the piece's
     # (every piece against every contributor was 25 M intersections for 5 000 circles)
@@ -164,7 +166,7 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
         for k in near:
             n, _, shp = items[k]
             if _area(p ^ shp) > max(1e-9, 1e-6 * _area(shp)):
-                names.append(n)
+                names.append(n + letters_in(objs[k], shp, p))   # a word's letters (issue 112)
                 seen[k] = seen.get(k, 0) + 1
                 if seen[k] == 2:
                     split.append(k)     # one shape in two pieces: a hole cut it apart
@@ -187,6 +189,13 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
         hint = ("make the pieces overlap (" + _joining(s, pieces, named) + ") or share an edge "
                 "(touching at a point is not enough), or, if they are separate parts, make the "
                 "structure an `assembly`")
+    words = [o for o in objs if getattr(o, "kind", None) == "Text" and o.data.get("font")]
+    if words and not scaled:             # a word whose letters touch nothing (issue 112)
+        w = words[0].name or "word"
+        hint = (f"join the letters: a rail under the word (`rail = Rectangle(center=({w}.center.x, "
+                f"{w}.position.y - 1 mm), width={w}.bb.width, height=3 mm)`, its baseline's), a heavier style "
+                "(`font=\"sans:Black\"`) or a tighter layout; or, if they are separate parts, "
+                "make the structure an `assembly`")
     cutters = _cutters(d, s, shape, [items[k] for k in split]) if split else []
     apart = ""
     if cutters:
@@ -198,6 +207,12 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
                 "so that material joins the pieces where it crosses (or widen the shape "
                 "there); only if the pieces are meant to be separate parts, make the "
                 "structure an `assembly`")
+        letters, texts = fallen_counters(d, cutters)
+        if letters:                  # a word cut from a plate: its counters fall out
+            apart += (": the counters of " + ", ".join(f"\"{c}\"" for c in letters)
+                      + f" (`{texts[0].label}`) fall out")
+            hint = (f"write `stencil=true` on `{texts[0].label}` (a bridge holds each counter "
+                    "to the plate), or engrave the text in a `drawing` instead of cutting it")
     # pieces of one shape cut apart by holes: the holes say it, not "{`a`}; {`a`}; ..."
     listed = "" if apart and len(set(groups)) == 1 else (
         ": " + "; ".join(groups) + ("; ..." if len(pieces) > 6 else ""))

@@ -175,6 +175,9 @@ def _report_enclosed(d: Drawing, s: Structure, P, area: float, region, sink) -> 
         return                  # edge to edge (a frame of bars that abut): built to enclose it
     owner = owners[0]
     around = {g for _, g, _ in faces}
+    if any(g.kind == "Text" and g.data.get("font") for g in around):
+        return                  # a word's letters and what joins them (a rail under the A's
+        #                         legs): the windows the font draws (issue 112)
     said = [ok for ok in getattr(owner, "enclosure_ok", ()) if around <= ok]
     if said:                    # AllowOverlap(the shapes around it): the window is meant
         owner.enclosure_used = getattr(owner, "enclosure_used", set()) | set(map(frozenset,

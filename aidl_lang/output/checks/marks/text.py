@@ -111,8 +111,7 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
     if not texts:
         return
     tg = list(texts)
-    strokes = [np.array([(it[1], it[2]) for it in texts[g]], dtype=float).reshape(-1, 2, 2)
-               for g in tg]              # each text's strokes: k x 2 x 2
+    strokes = [_text_strokes(texts[g]) for g in tg]      # each text's strokes: k x 2 x 2
     boxes = [_text_box(g, L) for g, L in zip(tg, strokes)]
     made: dict = {}
 
@@ -161,6 +160,16 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
     if not marks:
         return
     _check_marks(strokes, marks, tg, boxes, bb, sizes, said, sink, tick)
+
+
+def _text_strokes(items) -> np.ndarray:
+    """A text's strokes as segments (k x 2 x 2): the single-stroke font's lines, a font's
+    outlines (issue 112) as the chords of their polylines."""
+    if all(it[0] == "line" for it in items):
+        return np.array([(it[1], it[2]) for it in items], dtype=float).reshape(-1, 2, 2)
+    P = [_polyline(it) for it in items]
+    return np.concatenate([np.stack([p[:-1], p[1:]], axis=1) for p in P if len(p) >= 2]
+                          or [np.zeros((0, 2, 2))])
 
 
 class _Segments:

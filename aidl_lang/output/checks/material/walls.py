@@ -93,6 +93,11 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
                 continue
             made = f" made by {what}"
             fix = f"widen {what} (or move it) so that at least {t:g} mm of material is left"
+            if g.kind == "Text" and g.data.get("font"):     # a letter's stroke (issue 112)
+                from ..letters import letter_at
+                made += letter_at(d, g, px, py)
+                fix = (f"draw {what} heavier (a bolder style: `font=\"sans:Bold\"`) or "
+                       f"larger, so that its strokes are at least {t:g} mm wide")
             stated = np.floor((width - 1e-3) * 100) / 100
             if stated > 0 and (g.span is not None or s.span is not None):
                 # the wall is one shape as the program states it: accepting it is one statement

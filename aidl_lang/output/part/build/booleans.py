@@ -154,7 +154,7 @@ class Renderer(Faces):
             if g.kind in ("Line", "Arc", "EllipticArc") or (g.kind in ("Spline", "Bezier", "Polyline")
                                              and not g.closed):
                 open_curves.append(g)
-            elif (g.kind == "Text" and not g.data.get("stencil")) or (
+            elif (g.kind == "Text" and not g.data.get("stencil") and not g.data.get("font")) or (
                     g.kind == "Intersect" and not g.closed):
                 self.draw_lines(g, out)         # (a clip's pieces: lines, as a drawing's)
             elif g.kind == "Point":
@@ -312,6 +312,13 @@ class Renderer(Faces):
         if g.kind in ("Line", "Arc", "Spline", "Bezier", "EllipticArc") or (g.kind == "Polyline" and not g.closed):
             out.lines.append((style, self.curve(g)))
             self.stroke(g, style, out)
+        elif g.kind == "Text" and g.data.get("font"):    # engraved outlines (issue 112)
+            for lp in self.loops_of(g):
+                for seg in lp.segments:
+                    self.exact.carrier_id(carrier(seg))
+                pl = lp.points()
+                out.lines.append((style, np.vstack([pl, pl[:1]])))
+                out.strokes.append((style, ("poly", pl, lp), g))
         elif g.kind == "Text":
             p = self.P(g.points["position"])
             along = g.data.get("along")

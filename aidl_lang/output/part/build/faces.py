@@ -226,7 +226,7 @@ class Faces:
         clockwise (a shape made by Offset or Shell may have several; others have one)."""
         if g.kind == "Drawing2D":
             return self.drawing2d(g)[0]
-        if g.kind == "Text" and g.data.get("stencil"):
+        if g.kind == "Text" and (g.data.get("stencil") or g.data.get("font")):
             sec = self.face(g)
             return self.exact.loops(sec) if sec is not None else []
         if g.kind in DERIVED:
@@ -387,7 +387,52 @@ class Faces:
         band = self.union(pieces)
         return base + band if d > 0 else base - band
 
+    def font_text(self, g: Geometry) -> tuple[list[Loop], list[Loop]]:
+        """The exact loops of a Text in a font at its solved position (outer loops
+        counter-clockwise; glyphs may overlap) and, for a stencil, its bridges."""
+        from ....geometry.shapes.drawing2d import moved
+        from ....geometry.shapes.text_outlines import bridges, local_loops
+        ox, oy = self._pt(g.points["position"])
+        along = g.data.get("along")
+        if along is not None:             # about the curve's solved center and radius
+            from ....geometry.shapes import font as F
+            flip = bool(g.data.get("flip"))
+            if along.kind == "Arc":
+                arc = self.segment(along)
+                (ox, oy), r, mid = arc.center, arc.radius, arc.start_angle + arc.sweep / 2
+            else:
+                r = float(abs(self.x[along.scalars["radius"].index]))
+                mid = -math.pi / 2 if flip else math.pi / 2
+            ang = g.data.get("angle")
+            from ....geometry.shapes.text_outlines import along_loops
+            local = along_loops(g, r, mid if ang is None else ang)
+            wide = F.width(F.shaped(g.data["font"], g.data["text"], g.data["size"]))
+            if wide > 2 * math.pi * r and not any(e[0] is g for e in self.shape_errors):
+                self.shape_errors.append((g, (
+                    f"text `{g.label}` is {wide:.4g} mm long along a circle only "
+                    f"{2 * math.pi * r:.4g} mm around (radius {r:.4g} mm): its last letters "
+                    "run round onto its first ones"), "use a smaller size, a larger circle "
+                    "or a shorter text", "W0111"))
+        else:
+            local = local_loops(g)
+        loops = [Loop(moved(lp.segments, ox, oy)) for lp in local]
+        for lp in loops:
+            for sg in lp.segments:
+                if isinstance(sg, Spline):
+                    self.spline_source.setdefault(sg.curve, g)
+        held = [Loop(moved(lp.segments, ox, oy)) for lp in bridges(g)] \
+            if g.data.get("stencil") else []
+        return loops, held
+
     def face(self, g: Geometry, s: Structure | None = None) -> mf.CrossSection | None:
+        if g.kind == "Text" and g.data.get("font"):       # the letters' outlines (issue 112)
+            if id(g) not in self.derived:
+                loops, held = self.font_text(g)
+                sec = self.exact.section(loops)
+                if held:
+                    sec = sec - self.exact.section(held)
+                self.derived[id(g)] = None if sec.is_empty() else sec
+            return self.derived[id(g)]
         if g.kind == "Text" and g.data.get("stencil"):    # the letters' openings (issue 95)
             from .stencil import stencil_section
             return stencil_section(self, g, self.P(g.points["position"]))

@@ -1,0 +1,60 @@
+"""``Text(..., font=...)`` in the interpreter (issue 112): the font found or read before the
+Text is built (a family by name, a file through the import sandbox: E0133), where such a
+Text may stand (a solid: material; a hole: openings; a drawing: engraved outlines; E0120
+elsewhere), and the characters its font lacks (W0105)."""
+from __future__ import annotations
+
+from ..base.diagnostics import EvalError
+
+
+def text_font(interp, conv: dict, s, node, spans) -> None:
+    """Put the :class:`~aidl_lang.geometry.shapes.font.Face` of ``conv["font"]`` in
+    ``conv["_font"]`` (a file read relative to the program, the sandbox of ``Drawing2D``);
+    E0133 at the argument when it cannot be had.  E0120 for a font Text in a ``cut`` or
+    ``assembly``."""
+    from ..geometry.shapes import font as F
+    spec = conv.get("font")
+    at = spans.get("font", node.span)
+    if not isinstance(spec, str) or not spec.strip():
+        raise EvalError("E0133", "`font=` takes a family or a font file, got "
+                        + (f"\"{spec}\"" if isinstance(spec, str) else type(spec).__name__),
+                        at, hint="`font=\"sans\"`, `font=\"serif:Bold\"` or "
+                                 "`font=\"fonts/MyFont.ttf\"`")
+    if s.kind not in ("solid", "hole", "drawing"):
+        raise EvalError("E0120", f"Text in a font must be in a solid (letters as material), a "
+                        f"hole (openings) or a drawing (engraved), not in {s.kind} `{s.name}`",
+                        node.span, hint="put it in `solid word { ... }`, `hole letters { ... }` "
+                                        "or `drawing labels { ... }`")
+    try:
+        if F.is_path(spec):
+            from ..library.sources import ImportRefused, load_font
+            path, style = F.split_spec(spec)
+            try:
+                real, data = load_font(path, interp.file.path)
+            except ImportRefused as ex:
+                raise EvalError(ex.code, ex.message, at, hint=ex.hint,
+                                suggestions=ex.suggestions or None) from None
+            weight = F.parse_style(style)[0] if style else None
+            face = F.Face(spec, data=data)
+            if weight is not None:
+                face = F.Face(spec, data=data, variations=F.weight_axis(face, weight))
+            F.font_of(face)                      # read now: a damaged file is E0133 here
+        else:
+            face = F.resolve(spec)
+            F.font_of(face)
+    except F.FontError as ex:
+        raise EvalError("E0133", str(ex), at, hint=ex.hint) from None
+    conv["_font"] = face
+
+
+def font_missing(interp, g, spans, node) -> None:
+    """W0105 for the characters of a font Text that its font has no glyph for (left out)."""
+    from ..geometry.shapes import font as F
+    lost = F.missing(g.data["font"], g.data["text"])
+    if lost:
+        shown = ", ".join(f"`{c}` (U+{ord(c):04X})" for c in lost[:8])
+        interp.sink.warning("W0105", f"the font `{g.data['font'].label}` has no glyph for "
+                            f"{shown}: {'they are' if len(lost) > 1 else 'it is'} left out",
+                            spans.get("text", node.span),
+                            hint="choose a font that has them (`font=\"sans\"` covers Latin, "
+                                 "Greek and Cyrillic), or write the text without them")
