@@ -234,3 +234,19 @@ def test_the_wall_guards_message_says_what_it_measured(monkeypatch):
     with pytest.raises(limits.OutOfBudget) as ex:
         d.backstop("booleans")
     assert "in which the compile got 0 s of CPU (0% of a core" in str(ex.value)
+
+
+def test_a_constructors_point_may_read_a_box_side():
+    """`Rectangle(center=(c.center.x, c.bb.bottom), ...)` was an internal error ("TapeError:
+    cannot compile BBTerm into a residual"): a constructor's equations that read a box are
+    deferred as a box relation's are, for every constructor."""
+    src = """units mm
+solid p {
+    c = Circle(center=(0, 0), radius=5)
+    r = Rectangle(center=(c.center.x, c.bb.bottom), width=10, height=2)
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [d.message for d in r.errors]
+    got = {v.name: v.mm for v in r.values}
+    assert got["p.r.center"] == pytest.approx((0.0, -5.0), abs=1e-9)

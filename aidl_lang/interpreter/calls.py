@@ -567,6 +567,7 @@ class Calls:
 
     def internal(self, g, eqs, text: str) -> None:
         c = Constraint("internal", self.struct, g.span, eqs, text=text, implicit=True)
+        _defer_boxes(c)         # `Rectangle(center=(c.center.x, c.bb.bottom))`: was a TapeError
         self.struct.constraints.append(c)
         self.model.constraints.append(c)
 
