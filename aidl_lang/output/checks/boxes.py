@@ -41,7 +41,7 @@ def reshaped(s: Structure) -> list[str]:
     outline's: its ``Fillet``/``Chamfer`` and the ``Offset``/``Shell``/``Inset`` among its own
     and its children's shapes that are not exact on the box (a miter join, an inset), sorted
     names."""
-    ops = {f[0] for f in getattr(s, "finish", None) or []}
+    ops = {f[0] for f in getattr(s, "finish", None) or [] if f[1] > 0}
     todo = [s]
     while todo:
         t = todo.pop()
