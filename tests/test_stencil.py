@@ -58,7 +58,7 @@ def test_hello_is_cut_as_a_stencil_in_one_text(tmp_path):
 LETTERS = string.ascii_letters + string.digits + "&@%$#?!"
 
 
-@settings(max_examples=6, deadline=None, derandomize=True, database=None)
+@settings(max_examples=6, deadline=None)
 @given(text=st.text(alphabet=LETTERS, min_size=1, max_size=6))
 def test_law_the_sheet_stays_one_piece(text):
     r = _compile(text)
