@@ -394,8 +394,12 @@ EDGE = ("units mm\nparam w = 120 mm, min = 20 mm, max = 220 mm, step = 0.5 mm\n"
         "    hole h {{ c = Circle(center=({cx} mm, 0), radius=5 mm) }}\n}}\n")
 
 
+# the hole (radius 5) inside the 120 mm plate as written: cx + 5 < 60.  From cx = 55 the
+# written design's hole touches the edge (W0514) or is a notch, and every width that puts it
+# inside changes the part from what is written (W0510): hatched by the sweep's rule, no clean
+# range above the written value (cx = 55.0 drawn at --hypothesis-seed=1, issue 109)
 @settings(max_examples=4, deadline=None)
-@given(cx=st.floats(20, 60).map(lambda x: round(x, 2)))
+@given(cx=st.floats(20, 54.5).map(lambda x: round(x, 2)))
 @example(cx=35.15)
 def test_law_a_hatch_ends_on_the_slider_step_next_to_the_clean_value(cx):
     """Issue 104: an edge was bisected to 1 % of the range (2 mm here), so up to 2 mm of clean
