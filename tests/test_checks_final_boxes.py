@@ -63,7 +63,7 @@ def test_a_rounded_corner_off_the_side_read_is_not_warned():
     assert _part(r, "model.x0")[0] == pytest.approx(-45, abs=1e-9)
 
 
-@settings(max_examples=12, deadline=None, derandomize=True, database=None)
+@settings(max_examples=12, deadline=None)
 @given(r=st.integers(1, 19).map(lambda k: k / 10), side=st.sampled_from(
     [("AlignLeft", 0, 1), ("AlignRight", 2, -1), ("AlignTop", 3, -1),
      ("AlignBottom", 1, 1)]), op=st.sampled_from(["Fillet(radius={r})",
@@ -113,7 +113,7 @@ def _outlines(r) -> dict:
     return {p.name: tuple(p.bbox) for p in r.parts}
 
 
-@settings(max_examples=24, deadline=None, derandomize=True, database=None)
+@settings(max_examples=24, deadline=None)
 @given(shape=st.sampled_from(sorted(SHAPES)), op=st.sampled_from(sorted(OPS)),
        kind=st.sampled_from(sorted(SIDE)), rot=st.integers(0, 89),
        r=st.integers(5, 25).map(lambda k: k / 10))

@@ -73,7 +73,7 @@ part = st.tuples(st.sampled_from(["Rectangle", "Circle"]), st.integers(-40, 40),
 
 
 @settings(max_examples=25, deadline=None,
-          suppress_health_check=[HealthCheck.function_scoped_fixture])   # one folder: fine
+          suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])   # one folder: fine
 @given(parts=st.lists(part, min_size=2, max_size=4))
 def test_law_refused_exactly_when_two_parts_share_area(parts, compile_text):
     lines, polys = [], []

@@ -74,7 +74,7 @@ PLATE = """solid p {{
 """
 
 
-@settings(max_examples=14, deadline=None, derandomize=True, database=None)
+@settings(max_examples=14, deadline=None)
 @given(W=st.integers(40, 70), hr=st.sampled_from([1.5, 2.5, 3.5]), fx=st.floats(-0.45, 0.2),
        word=st.sampled_from(["MINT", "ROSEMARY", "OK", "THYME 2"]), size=st.sampled_from([5, 7, 9]),
        held=st.booleans())

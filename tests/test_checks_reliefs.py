@@ -119,7 +119,7 @@ def _stadium(p, q, r):
     return CS.batch_hull([disc(p), disc(q)])
 
 
-@settings(max_examples=25, deadline=None, derandomize=True,
+@settings(max_examples=25, deadline=None,
           suppress_health_check=[HealthCheck.too_slow])
 @given(angle=st.floats(60, 150), bit=st.floats(1, 6), turn=st.floats(0, 90),
        style=st.sampled_from(["dogbone", "tbone"]))

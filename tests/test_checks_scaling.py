@@ -64,7 +64,7 @@ def _check_cpu(drawing, runs: int) -> tuple[float, list]:
 def test_the_checks_grow_as_n_log_n(family):
     make, (lo, hi) = SIZES[family]
 
-    @settings(max_examples=2, deadline=None, derandomize=True,
+    @settings(max_examples=2, deadline=None,
               suppress_health_check=list(HealthCheck))
     @given(n=st.integers(lo, hi))
     def law(n):
@@ -80,7 +80,7 @@ boxes = st.lists(st.tuples(st.integers(0, 40), st.integers(0, 40), st.integers(0
                            st.integers(0, 12)), min_size=1, max_size=40)
 
 
-@settings(max_examples=150, deadline=None, derandomize=True)
+@settings(max_examples=150, deadline=None)
 @given(bs=boxes, pad=st.sampled_from([0.0, 0.5]), scale=st.sampled_from([1.0, 0.37]))
 def test_box_groups_are_the_components_of_box_pairs(bs, pad, scale):
     """:func:`box_groups` (a segment tree, no pair list) labels each box with the least index

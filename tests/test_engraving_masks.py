@@ -133,7 +133,7 @@ def test_circle_and_text_cut_by_a_hole_and_a_sibling_left_whole(tmp_path):
     assert {(0.0, -10.0), (0.0, 10.0)} <= ends
 
 
-@settings(max_examples=8, deadline=None, derandomize=True, database=None)
+@settings(max_examples=8, deadline=None)
 @given(x=st.integers(-25, 25), y=st.integers(-25, 25), w=st.integers(4, 40),
        h=st.integers(4, 40), turn=st.integers(0, 80))
 def test_law_the_visible_back_is_shapelys_difference(x, y, w, h, turn):

@@ -24,7 +24,7 @@ VOCAB = ["(", ")", "[", "]", "{", "}", ",", "=", "==", "<=", ">=", ".", "//", "/
          "Above", "Tangent", "Angle", "Inside", "x", "**", "%", "\\", "->", ":", "\t", "é", "\x00",
          "tooth[0]", "[i for i in range(3)]", "construction=true", "1/0"]
 
-FUZZ = settings(deadline=None, max_examples=150, derandomize=True, database=None,
+FUZZ = settings(deadline=None, max_examples=150,
                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large,
                                        HealthCheck.filter_too_much])
 
@@ -244,7 +244,7 @@ def test_generated_programs_never_raise(src):
     check_result(src, str(ROOT / "examples" / "generated.aidl"))
 
 
-@settings(deadline=None, max_examples=60, derandomize=True, database=None,
+@settings(deadline=None, max_examples=60,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
 @given(programs())
 def test_generated_programs_that_compile_also_render(src):
@@ -457,7 +457,7 @@ def _drawing_file(folder):
     return p
 
 
-FUZZ_CLI = settings(deadline=None, max_examples=25, derandomize=True, database=None,
+FUZZ_CLI = settings(deadline=None, max_examples=25,
                     suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large,
                                            HealthCheck.filter_too_much])
 
@@ -516,7 +516,7 @@ def profiles(draw):
     return d
 
 
-@settings(deadline=None, max_examples=150, derandomize=True, database=None)
+@settings(deadline=None, max_examples=150)
 @given(profiles())
 def test_machine_profiles_are_a_machine_or_one_profile_error(d):
     from aidl_lang.output.fabrication.machine import Machine, MachineError, from_dict
@@ -528,7 +528,7 @@ def test_machine_profiles_are_a_machine_or_one_profile_error(d):
         assert isinstance(m, Machine)
 
 
-@settings(deadline=None, max_examples=60, derandomize=True, database=None)
+@settings(deadline=None, max_examples=60)
 @given(st.lists(st.sampled_from(["tabs = ", "kerf = ", "[cut_outer]\n", "passes = ", "9" * 400,
                                  "9" * 5000, "1e999", "nan", "-", "\n", '"x"', "0", "[", "]",
                                  "units = \"inch\"\n", "kind = \"router\"\n", "="]),
@@ -622,7 +622,7 @@ def malformed_entities(draw):
     return out
 
 
-@settings(deadline=None, max_examples=40, derandomize=True, database=None,
+@settings(deadline=None, max_examples=40,
           suppress_health_check=[HealthCheck.too_slow])
 @given(malformed_entities())
 def test_malformed_dxf_entities_are_notes_or_a_drawing_error(entities):
@@ -682,7 +682,7 @@ def malformed_svgs(draw):
             f'<rect x="0" y="0" width="50" height="50"/>{"".join(body)}</svg>')
 
 
-@settings(deadline=None, max_examples=150, derandomize=True, database=None,
+@settings(deadline=None, max_examples=150,
           suppress_health_check=[HealthCheck.too_slow])
 @given(malformed_svgs())
 @example('<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100" viewBox="0 0 100 '
@@ -744,7 +744,7 @@ def mutated_machine_seeds(draw):
     return src
 
 
-@settings(deadline=None, max_examples=20, derandomize=True, database=None,
+@settings(deadline=None, max_examples=20,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
 @given(mutated_machine_seeds(), st.sampled_from(MACHINE_PROFILES))
 @example(MACHINE_SEEDS[0], MACHINE_PROFILES[1])
@@ -788,7 +788,7 @@ SHAPES = ['<circle cx="{x}" cy="{y}" r="4"/>', '<ellipse cx="{x}" cy="{y}" rx="5
           '<path d="M {x} {y} Q {x1} {y} {x1} {y1}"/>']
 
 
-@settings(deadline=None, max_examples=60, derandomize=True, database=None,
+@settings(deadline=None, max_examples=60,
           suppress_health_check=[HealthCheck.too_slow])
 @given(st.lists(st.tuples(st.sampled_from(SHAPES), st.sampled_from(NEGATIVE_SCALES),
                           st.booleans()), min_size=1, max_size=4))

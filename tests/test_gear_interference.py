@@ -39,7 +39,6 @@ from conftest import ROOT
 FORM = (ROOT / "aidl_lang" / "studio" / "forms" / "planetary.aidl").read_text()
 A20 = math.radians(20)
 LAWS = settings(max_examples=int(os.environ.get("AIDL_LAW_EXAMPLES", "2")), deadline=None,
-                derandomize=True, database=None,
                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
 
 

@@ -113,7 +113,7 @@ def _moves(hint: str) -> tuple:
     return float(m.group(1)), float(m.group(2))
 
 
-@settings(max_examples=15, deadline=None, derandomize=True, database=None)
+@settings(max_examples=15, deadline=None)
 @given(g=st.floats(0.02, 0.4), r=st.integers(5, 6))
 def test_law_a_plain_slits_moves_remove_it_and_move_only_that_lobe(g, r):
     """A tag's two end lobes ``g`` mm apart beyond the bar (narrower than 0.5 mm): W0519
@@ -189,7 +189,7 @@ def _stack(s, side, out, w, turned, moves=None):
     return STACK.format(bx=bx, by=by, bw=bw, bh=bh, tx=tx, ty=ty, tw=tw, th=th), truth
 
 
-@settings(max_examples=20, deadline=None, derandomize=True, database=None)
+@settings(max_examples=20, deadline=None)
 @given(s=st.floats(0.03, 0.45), side=st.sampled_from([1, -1]), out=st.booleans(),
        w=st.integers(4, 12), turned=st.booleans())
 def test_law_a_ledges_move_aligns_the_edges_and_changes_nothing_else(s, side, out, w, turned):
@@ -226,7 +226,7 @@ MARK = """solid p {{
 """
 
 
-@settings(max_examples=20, deadline=None, derandomize=True, database=None)
+@settings(max_examples=20, deadline=None)
 @given(gap=st.floats(0.0, 0.45), to_hole=st.booleans(), turn=st.floats(-60, 60),
        y0=st.floats(-3, 3), y1=st.floats(-3.5, 3.5))
 def test_law_a_marks_new_end_clears_the_edge_and_keeps_the_line(gap, to_hole, turn, y0, y1):
@@ -278,7 +278,7 @@ def _engraved(c) -> tuple:
                                            for _, pl in c.drawing.lines), 6)
 
 
-@settings(max_examples=20, deadline=None, derandomize=True, database=None)
+@settings(max_examples=20, deadline=None)
 @given(ta=st.sampled_from(["AB", "12", "OK", "Hi", "LID"]),
        tb=st.sampled_from(["CD", "34", "NO", "XYZ", "7"]),
        sa=st.integers(3, 8), sb=st.integers(3, 8),
@@ -327,7 +327,7 @@ OFF = """solid p {{
 """
 
 
-@settings(max_examples=16, deadline=None, derandomize=True, database=None)
+@settings(max_examples=16, deadline=None)
 @given(W=st.integers(20, 40), H=st.integers(10, 20), kind=st.sampled_from("CLTA"),
        fx=st.floats(0.3, 0.8), fy=st.floats(-0.5, 0.5))
 def test_law_a_mark_off_the_material_constrained_as_told_lies_on_it(W, H, kind, fx, fy):
@@ -379,7 +379,7 @@ KEPT = """solid p {{
 """
 
 
-@settings(max_examples=16, deadline=None, derandomize=True, database=None)
+@settings(max_examples=16, deadline=None)
 @given(cx=st.integers(-6, 6), cy=st.integers(-3, 3), r=st.floats(2, 6), hw=st.integers(6, 12),
        hh=st.integers(6, 10))
 def test_law_a_solid_cut_away_by_its_parts_hole_is_kept_or_deleted_as_told(cx, cy, r, hw, hh):
@@ -422,7 +422,7 @@ APART = """solid p {{
 """
 
 
-@settings(max_examples=16, deadline=None, derandomize=True, database=None)
+@settings(max_examples=16, deadline=None)
 @given(side=st.sampled_from(["below", "above", "left", "right"]), gap=st.floats(0.2, 3),
        round_=st.booleans(), size=st.integers(2, 8), along=st.floats(-0.5, 0.5))
 def test_law_two_pieces_joined_by_the_hints_constraint(side, gap, round_, size, along):

@@ -72,7 +72,7 @@ def _bbox_gap(c) -> list:
     return [d for d in c.sink.items if d.severity == "warning"]
 
 
-@settings(max_examples=14, deadline=None, derandomize=True, database=None)
+@settings(max_examples=14, deadline=None)
 @given(ka=st.sampled_from(["circle", "rect", "tri"]), kb=st.sampled_from(["circle", "rect", "tri"]),
        sa=st.floats(3, 9), sb=st.floats(3, 9), angle=st.floats(0, 2 * math.pi),
        depth=st.floats(0.3, 0.8), param=st.booleans(), c_at=st.floats(0, 2 * math.pi),

@@ -36,7 +36,7 @@ def _warnings(r) -> list:
     return [d for d in r.diagnostics if d.severity == "warning"]
 
 
-@settings(max_examples=16, deadline=None, derandomize=True, database=None)
+@settings(max_examples=16, deadline=None)
 @given(ra=st.sampled_from([2, 3, 4.5]), rb=st.sampled_from([2, 3.3, 5]),
        angle=st.floats(0, 2 * math.pi), gap=st.one_of(st.floats(-2.5, -0.05),
                                                        st.floats(0.05, 0.45)))

@@ -89,7 +89,7 @@ def nasty_programs(draw):
     return program(DrawChooser(draw))
 
 
-@settings(deadline=None, max_examples=25, derandomize=True, database=None,
+@settings(deadline=None, max_examples=25,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
 @given(nasty_programs())
 def test_generated_nasty_programs(src):

@@ -339,7 +339,7 @@ def test_every_fresh_import_is_clean():
     from hypothesis import given, settings
     from hypothesis import strategies as st
 
-    @settings(max_examples=6, deadline=None, derandomize=True)
+    @settings(max_examples=6, deadline=None)
     @given(st.integers(0, 10_000))
     def law(seed):
         with tempfile.TemporaryDirectory() as tmp:

@@ -410,7 +410,7 @@ angle = st.floats(-math.pi, math.pi, allow_nan=False)
 sweep = st.one_of(st.floats(0.2, math.pi - 0.2), st.floats(math.pi + 0.2, TAU - 0.2)).flatmap(
     lambda s: st.sampled_from([s, -s]))
 scale = st.floats(0.3, 3, allow_nan=False).flatmap(lambda s: st.sampled_from([s, -s]))
-LAWS = settings(max_examples=40, deadline=None, derandomize=True,
+LAWS = settings(max_examples=40, deadline=None,
                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
 
 

@@ -67,7 +67,7 @@ def inside(name, L, W, H):
 
 
 @pytest.mark.parametrize("name", list(CALLS))
-@settings(max_examples=2, deadline=None, derandomize=True, database=None)
+@settings(max_examples=2, deadline=None)
 @given(L=st.integers(70, 160), W=st.integers(60, 110), H=st.integers(30, 80),
        frac=st.sampled_from([0.0, 0.25, 0.5]))
 def test_law_the_inside_is_the_size_given(name, L, W, H, frac):

@@ -334,7 +334,7 @@ _SNIPPETS = ["(", ")", "{", "}", ",", "=", ".", "/*", "*/", "#", '"', "😀", "\
              "Circle(", "Rectangle(center=", "def f(a=1) -> solid {", "solid s {", "x.", "°"]
 
 
-@settings(deadline=None, max_examples=25, derandomize=True, database=None,
+@settings(deadline=None, max_examples=25,
           suppress_health_check=[HealthCheck.too_slow])
 @given(cut=st.integers(0, len(TELEPHONE)), junk=st.lists(st.sampled_from(_SNIPPETS), max_size=6),
        line=st.integers(0, 130), ch=st.integers(0, 80))

@@ -24,7 +24,7 @@ from aidl_lang.output.fabrication.machine import DEFAULTS, MachineError, from_di
 from aidl_lang.output.writers import gcode  # noqa: E402
 from aidl_lang.pipeline import compile_source  # noqa: E402
 
-LAW = settings(deadline=None, max_examples=12, derandomize=True, database=None,
+LAW = settings(deadline=None, max_examples=12,
                suppress_health_check=[HealthCheck.too_slow])
 
 

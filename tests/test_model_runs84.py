@@ -29,7 +29,7 @@ def test_W0502_one_shape_of_a_hole_off_the_plate_is_named(compile_text):
 
 
 @settings(max_examples=12, deadline=None,
-          suppress_health_check=[HealthCheck.function_scoped_fixture])
+          suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(x=st.floats(-120, 120), y=st.floats(-100, 100))
 def test_W0502_law_a_shape_of_a_hole_is_named_when_it_lies_off_the_solid(compile_text, x, y):
     # a 3 mm circle beside a hole that cuts the plate: named when wholly off the 160 x 120 mm

@@ -54,7 +54,7 @@ def test_W0505_hint_offers_Inside_where_the_mane_reaches_past_the_box_and_it_men
     assert share >= 10 and left <= share / 3   # 17% off before, 3% (the outline's slant) after
 
 
-@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(y0=st.floats(-10, 10), y1=st.floats(25, 60), x=st.floats(-35, 35))
 def test_W0505_law_the_hint_point_lies_on_the_mark_and_off_the_plate(compile_text, y0, y1, x):
     """A vertical line from inside a 80 x 40 plate to past its top edge (y = 20): the hint's

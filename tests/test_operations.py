@@ -126,7 +126,7 @@ def test_fillet_in_a_hole_rounds_the_pocket(compile_text):
     ("    drawing d {\n        Fillet(2)\n    }", "outline of a solid or hole"),
     ("    solid c {\n        a = Circle((0, 0), 1)\n        LinearPattern(c, 2, (5, 0))\n    }",
      "into itself"),
-    ("    a = Circle((0, 0), 1)\n    Fillet(-1)", "positive size"),
+    ("    a = Circle((0, 0), 1)\n    Fillet(-1)", "a size of 0 or more"),
     # issue 91: copies that would land on one another are said, not stacked in silence
     ("    a = Circle((9, 0), 1)\n    LinearPattern(a, 4, (0, 0))",
      "step is (0, 0): all 4 instances land on one spot"),

@@ -251,7 +251,7 @@ _ADDED = st.lists(st.tuples(st.sampled_from(["restate", "twice", "conflict", "fi
                             st.integers(0, 10 ** 6)), min_size=1, max_size=3)
 
 
-@settings(max_examples=200, deadline=None, derandomize=True, database=None,
+@settings(max_examples=200, deadline=None,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
 @given(_assemblies(), _ADDED)
 def test_generated_over_constrained_assemblies(src, added):

@@ -310,7 +310,7 @@ def _circle_loop(cx, cy, r, n, turn=0.0, cw=True):
     return P[::-1] if cw else P
 
 
-@settings(max_examples=12, deadline=None, derandomize=True)
+@settings(max_examples=12, deadline=None)
 @given(st.lists(st.tuples(st.floats(0.2, 3.0), st.floats(-0.3, 0.8), st.integers(8, 60),
                           st.floats(0, 6.3)), min_size=60, max_size=60),
        st.floats(0.1, 2.0))

@@ -138,7 +138,7 @@ _PARENT = st.sampled_from([
 # unpinned solves naming different conflict sets (the example below); fixed in the product
 # (rows in their built order either way, each set made minimal), then 900 random programs
 # agreed
-@settings(max_examples=40, deadline=None, database=None)
+@settings(max_examples=40, deadline=None)
 @given(st.lists(st.tuples(st.lists(_PIECE, max_size=4), _PARENT), min_size=1, max_size=3),
        st.booleans())
 # the part (the circle, the solid's first closed shape) placed by its own row `c.center.y

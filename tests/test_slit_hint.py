@@ -57,7 +57,7 @@ def test_the_nicks_hint_rounds_its_corner_and_no_longer_parts_the_arm():
     assert _outline(fixed).bbox == pytest.approx(_outline(r).bbox, abs=1e-9)
 
 
-@settings(max_examples=12, deadline=None, derandomize=True, database=None)
+@settings(max_examples=12, deadline=None)
 @given(R=st.integers(5, 10), phi=st.integers(10, 40), h=st.floats(0.05, 0.6))
 def test_law_a_nicks_hint_applied_removes_it_and_changes_nothing_else(R, phi, h):
     """The arm's left side meets the plate's corner arc (radius ``R``) at ``phi`` degrees

@@ -306,7 +306,7 @@ def test_finger_box_mating_edges_match(tmp_path, kerf):
     check_box(tmp_path, 120, 80, 50, T, 10, kerf)
 
 
-@settings(max_examples=4, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(max_examples=4, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(length=st.integers(40, 160), depth=st.integers(30, 100), height=st.integers(30, 80),
        t=st.sampled_from([2.0, 3.0, 4.0]), finger=st.sampled_from([6.0, 10.0, 12.5]),
        kerf=st.sampled_from([0.0, 0.1, 0.3]))
@@ -526,7 +526,7 @@ def test_every_program_of_docs_stdlib_compiles(tmp_path):
 
 
 
-@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(z1=st.integers(17, 30), z2=st.integers(17, 60), m=st.sampled_from([0.8, 1.0, 1.5, 2.5]),
        angle=st.sampled_from([0, 30, 135]))
 @example(z1=17, z2=17, m=1.5, angle=0)

@@ -8,11 +8,12 @@ import string
 
 import pytest
 import svgelements
-from hypothesis import given, settings, strategies as st
+from hypothesis import example, given, settings, strategies as st
 from shapely.geometry import Polygon
 from shapely.ops import unary_union
 
 import aidl_lang
+from aidl_lang.geometry.shapes.tessellate import CHORD_TOL
 
 SRC = """solid stencil {{
     body = Rectangle(center=(0, 0), width={w}, height=80)
@@ -58,8 +59,9 @@ def test_hello_is_cut_as_a_stencil_in_one_text(tmp_path):
 LETTERS = string.ascii_letters + string.digits + "&@%$#?!"
 
 
-@settings(max_examples=6, deadline=None, derandomize=True, database=None)
+@settings(max_examples=6, deadline=None)
 @given(text=st.text(alphabet=LETTERS, min_size=1, max_size=6))
+@example(text="$")          # drawn at --hypothesis-seed=2 (issue 109): kept on every run
 def test_law_the_sheet_stays_one_piece(text):
     r = _compile(text)
     parts = r.output.parts
@@ -70,8 +72,16 @@ def test_law_the_sheet_stays_one_piece(text):
     _, letters = _polys(plain.output.parts[0])
     whole = unary_union(letters)
     cut = unary_union(holes)
-    assert cut.difference(whole.buffer(0.002)).area < 1e-3      # (chords of the arcs)
-    assert -1e-6 < whole.area - cut.area < 0.25 * whole.area   # (no counter: no bridge)
+    # (chords: a letter's curves and a stencil's pieces of them, split at a bridge, are each
+    # sampled within CHORD_TOL of the curve, at different points: one's vertices stand up to
+    # that far outside the other's chords.  Within 0.002 mm, "$" at --hypothesis-seed=2 stood
+    # 0.0044 mm^2 out, 0.003 mm high slivers along its bar's round ends; issue 109)
+    assert cut.difference(whole.buffer(CHORD_TOL + 0.001)).area < 1e-3
+    # (no counter: no bridge.  The bridges' share was bound at a quarter of the letters:
+    # "$" at --hypothesis-seed=2, issue 109, gives 36 %, right: its two bars stand 0.72 mm
+    # apart, one long counter between them, and the 3 mm band through it runs down both
+    # bars' inner edges, the stencil's usual bridge between a dollar's bars)
+    assert -1e-6 < whole.area - cut.area < 0.4 * whole.area
 
 
 @pytest.mark.parametrize("call,code,said", [

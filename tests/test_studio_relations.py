@@ -69,8 +69,8 @@ def test_the_drawing_s_own_program_is_kept_when_nothing_is_related():
     assert with_relations(text) == (text, [])
 
 
-@settings(max_examples=8, deadline=None, derandomize=True,
-          suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(max_examples=8, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(diameter=st.floats(18, 200), hole=st.floats(2, 16), bore=st.floats(10, 80),
        pcd=st.floats(19, 150), n=st.integers(1, 16))
 def test_at_any_slider_values_the_holes_stay_inside(imported, diameter, hole, bore, pcd, n):
@@ -241,8 +241,8 @@ def test_a_motor_face_s_corner_holes_keep_their_inset_and_clear_the_bore(plates)
         assert math.hypot(x - 15, y - 15) - r - 11 >= WALL - 1e-6
 
 
-@settings(max_examples=10, deadline=None, derandomize=True,
-          suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(max_examples=10, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(name=st.sampled_from(["nema17", "grid", "corners", "nema17_42", "rpi"]),
        width=st.floats(0, 1), height=st.floats(0, 1), d=st.floats(0.8, 12),
        other=st.floats(1, 60), n=st.integers(1, 8))
@@ -372,8 +372,8 @@ def _rect_gap(x, y, box) -> float:
     return math.hypot(max(box[0] - x, 0, x - box[2]), max(box[1] - y, 0, y - box[3]))
 
 
-@settings(max_examples=8, deadline=None, derandomize=True,
-          suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(max_examples=8, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(k=st.lists(st.floats(0, 1), min_size=7, max_size=7))
 def test_an_lcd_bezel_keeps_its_window_and_screws_at_any_slider_values(plates, k):
     """Issue 92: an LCD panel (140 x 90, a 71 x 24 window 35 mm below the top edge, centred

@@ -136,7 +136,7 @@ def test_a_sessions_sweep_in_flight_is_stopped_by_its_next_program(client):
     assert st.served["sweeps_stopped"] == 1
 
 
-@settings(max_examples=6, deadline=None, derandomize=True)
+@settings(max_examples=6, deadline=None)
 @given(width=st.integers(40, 100), radius=st.sampled_from([1.5, 2.0, 3.0, 4.5]))
 def test_law_the_clean_end_is_where_the_wall_gets_thinner_than_min_wall(width, radius):
     """Over generated plates (width W, a hole of radius r (not swept: no range) at x = off, off
@@ -225,7 +225,7 @@ solid plate {{
 """
 
 
-@settings(max_examples=3, deadline=None, derandomize=True)
+@settings(max_examples=3, deadline=None)
 @given(c=st.sampled_from([-10, 0, 15]), d=st.sampled_from([3, 4, 6]))
 def test_law_a_band_between_clean_values_is_hatched_as_a_band(c, d):
     """A hole sliding past a fixed one: the two merge or leave a wall under 0.5 mm while
@@ -268,7 +268,7 @@ def test_a_gallery_sample_is_hatched_where_set_breaks_it(tmp_path):
     assert {r.code for r in rep.runs["bolts"] if r.broken} == {"W0508"}
 
 
-@settings(max_examples=3, deadline=None, derandomize=True)
+@settings(max_examples=3, deadline=None)
 @given(work=st.integers(30_000, 140_000))
 @example(work=35_000)
 def test_law_one_sweep_request_spends_one_budget_and_says_what_it_cut(work):
@@ -394,8 +394,12 @@ EDGE = ("units mm\nparam w = 120 mm, min = 20 mm, max = 220 mm, step = 0.5 mm\n"
         "    hole h {{ c = Circle(center=({cx} mm, 0), radius=5 mm) }}\n}}\n")
 
 
-@settings(max_examples=4, deadline=None, derandomize=True)
-@given(cx=st.floats(20, 60).map(lambda x: round(x, 2)))
+# the hole (radius 5) inside the 120 mm plate as written: cx + 5 < 60.  From cx = 55 the
+# written design's hole touches the edge (W0514) or is a notch, and every width that puts it
+# inside changes the part from what is written (W0510): hatched by the sweep's rule, no clean
+# range above the written value (cx = 55.0 drawn at --hypothesis-seed=1, issue 109)
+@settings(max_examples=4, deadline=None)
+@given(cx=st.floats(20, 54.5).map(lambda x: round(x, 2)))
 @example(cx=35.15)
 def test_law_a_hatch_ends_on_the_slider_step_next_to_the_clean_value(cx):
     """Issue 104: an edge was bisected to 1 % of the range (2 mm here), so up to 2 mm of clean

@@ -30,7 +30,7 @@ from aidl_lang.output.part.part import Output, PartOutline, Stroke  # noqa: E402
 from aidl_lang.pipeline import compile_source  # noqa: E402
 
 R = 3.175 / 2
-LAW = settings(deadline=None, max_examples=10, derandomize=True, database=None,
+LAW = settings(deadline=None, max_examples=10,
                suppress_health_check=[HealthCheck.too_slow])
 LEFT = re.compile(r"leaves ([0-9.]+) mm of the bridge")
 

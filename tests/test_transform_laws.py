@@ -43,7 +43,7 @@ CIRCLE_N = 4096
 SPAN_N = 64
 
 # AIDL_LAW_EXAMPLES=30 for a longer search (CI: 3 each, derandomized: the same every run)
-LAWS = settings(max_examples=int(os.environ.get("AIDL_LAW_EXAMPLES", "3")), deadline=None, derandomize=True, database=None,
+LAWS = settings(max_examples=int(os.environ.get("AIDL_LAW_EXAMPLES", "3")), deadline=None,
                 suppress_health_check=[HealthCheck.too_slow])
 
 # every closed kind: the statements that make `s` (helpers may be named `h*`), placed away

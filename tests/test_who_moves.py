@@ -234,7 +234,7 @@ def check_part_stays(case) -> None:
 
 def _law(strategy, n: int) -> None:
     """``check_part_stays`` over ``n`` seeded draws of ``strategy``."""
-    @settings(max_examples=n, deadline=None, derandomize=True, database=None,
+    @settings(max_examples=n, deadline=None,
               suppress_health_check=[HealthCheck.too_slow])
     @given(strategy)
     def law(case):

@@ -267,7 +267,7 @@ def check(case) -> None:
             assert v[f"{label}.center"] == pytest.approx(written[label], abs=EXACT)
 
 
-@settings(max_examples=80, deadline=None, derandomize=True, database=None,
+@settings(max_examples=80, deadline=None,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
 @given(chains())
 def test_law_the_first_named_moves_and_the_rest_stays_where_written(case):

@@ -233,7 +233,7 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
     verb = "round" if fillet else "cut"
     path = getattr(getattr(call, "owner", None), "path", "") or "?"
     if pts is None:
-        if got:
+        if got or r <= 0:       # (size 0 asks for nothing: an outline without corners too)
             return []
         return [(call, "W0406", -1,
                  f"{head} changes nothing in `{path}`: its final outline has no "
@@ -326,8 +326,8 @@ def corners(loop, size: float, fillet: bool, only=None, got=None):
     """``loop`` with its corners rounded (``fillet``: every corner, convex or concave, by an
     arc of radius ``size`` tangent to both of its segments) or cut (chamfer: every convex
     corner, by a line between the points ``size`` mm along each segment, arc length on an
-    arc).  A corner is a join where the direction turns by more than :data:`CORNER_TURN`
-    (tangent joins are not corners); with ``only`` (points, mm), just the corners within
+    arc; ``size`` 0: none, the loop as it is).  A corner is a join where the direction turns
+    by more than :data:`CORNER_TURN` (tangent joins are not corners); with ``only`` (points, mm), just the corners within
     :data:`CORNER_TOL` of one of them, and a chamfer there cuts concave corners too (it adds
     the triangle between its legs).  No corner takes more than half of a segment: where
     a segment is too short for both of its corners the fillet radius (or chamfer leg)
@@ -348,6 +348,11 @@ def corners(loop, size: float, fillet: bool, only=None, got=None):
         hits = [-1] if only is None else [i for i, (qx, qy) in enumerate(only)
                                            if math.hypot(p[0] - qx, p[1] - qy) <= CORNER_TOL]
         if abs(turn) <= CORNER_TURN or not hits or (not fillet and turn < 0 and only is None):
+            continue
+        if size <= 0:               # size 0: the corner found, left sharp (nothing asked)
+            if got is not None:
+                for i in hits:
+                    got[i] = 0.0
             continue
         cut[k] = _corner(a, b, turn, size, fillet)
         if got is not None:

@@ -21,7 +21,8 @@ replaces every corner, convex or concave, by an arc of ``radius`` tangent to bot
 (lines or arcs: its center is where the two segments' offsets by ``radius`` cross); a chamfer
 cuts every convex corner with two legs of ``distance`` along its segments.  Where a segment is
 too short for both of its corners, each takes at most half of it (the fillet radius shrinks to
-fit).  Corners chosen with ``at`` (:func:`_chosen`): two edges name the corner where they meet
+fit).  A size of 0 rounds (cuts) nothing: the outline stays as it is, so a param can switch
+the rounding off.  Corners chosen with ``at`` (:func:`_chosen`): two edges name the corner where they meet
 (at their ends, where they cross, or where one ends on the other), found after the solve; a
 chamfer there cuts an inside corner too.  The rounding itself, and what is said when a chosen
 corner is none (E0408) or is rounded smaller than asked (W0406), is :mod:`.corners`.
@@ -399,8 +400,10 @@ def apply(ctx, kind: str, args: dict, name: str | None):
     S = ctx.struct
     if kind in ("Fillet", "Chamfer"):
         r = args["radius" if kind == "Fillet" else "distance"].const()
-        if r is None or r <= 0:
-            raise OperationError(f"{kind} needs a positive size known before solving")
+        if r is None or r < 0:
+            # 0 rounds nothing (the corners stay sharp: a `fillet` param set to 0); the
+            # corners chosen with `at` are still checked (E0408)
+            raise OperationError(f"{kind} needs a size of 0 or more known before solving")
         if S.kind not in ("solid", "hole"):
             raise OperationError(f"{kind} works on the outline of a solid or hole, not on "
                                  f"{S.kind} `{S.name}`")

@@ -39,9 +39,10 @@ def final_box(d: Drawing, s: Structure) -> tuple[float, float, float, float] | N
 
 def reshaped(s: Structure) -> list[str]:
     """The operations after which ``s``'s box read by the solve may not be its final
-    outline's: its ``Fillet``/``Chamfer``, sorted names.  (An ``Inset``, a miter join, an
-    ``Intersect`` are boxed from their drawn outlines: exact; :func:`check_drawn_boxes`.)"""
-    return sorted({f[0] for f in getattr(s, "finish", None) or []})
+    outline's: its ``Fillet``/``Chamfer`` of a size above 0, sorted names.  (An ``Inset``, a
+    miter join, an ``Intersect`` are boxed from their drawn outlines: exact;
+    :func:`check_drawn_boxes`.)"""
+    return sorted({f[0] for f in getattr(s, "finish", None) or [] if f[1] > 0})
 
 
 def check_final_boxes(sink: DiagnosticSink, model: Model, d: Drawing, calls=None) -> None:

@@ -414,7 +414,8 @@ class Renderer(Faces):
                 said = []
                 loops = finish(s, self.exact.loops_of([acc], self.deadline)[0], self.x,
                                lambda: self.tick(s), said)
-                acc = self.exact.section(loops)
+                if any(r > 0 for _, r, _, _ in s.finish):     # (size 0 changes nothing)
+                    acc = self.exact.section(loops)
                 for call, code, i, message, hint in said:   # once per call and corner
                     if (call, code, i) not in self.finish_said:
                         self.finish_said.add((call, code, i))
