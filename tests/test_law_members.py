@@ -206,7 +206,7 @@ def test_the_generated_programs_cover_every_operation_and_nestings():
     assert sum(n.split("@")[0].count("+") == 3 for n in names) >= 100    # three deep
 
 
-@settings(max_examples=30, deadline=None, derandomize=True, database=None)
+@settings(max_examples=30)
 @given(case=st.sampled_from(CASES))
 def test_law_over_generated_programs(case):
     """A sample of the generated programs (the runner checks every one): each compiles, and
