@@ -360,42 +360,31 @@ def gcode_loops(data: bytes) -> list:
     """The closed cut paths of a laser G-code (gcodeparser), each once however many passes cut
     it: a run of moves with the beam on at the job's cutting power (the most it uses), lines
     and G2/G3 arcs (I/J from the start) with their exact boxes."""
-    import gcodeparser
     import numpy as np
-    x = y = None
-    s, on_power, runs, run = 0.0, False, [], []
-    for line in gcodeparser.parse_gcode_lines(data.decode()):
-        letter, code = line.command
-        prm = line.params
-        if "S" in prm:
-            s = float(prm["S"])
-        if letter == "M":
-            on_power = code in (3, 4) or (on_power and code != 5)
-            continue
-        if letter != "G" or code not in (0, 1, 2, 3):
-            continue
-        nx = float(prm.get("X", x if x is not None else 0.0))
-        ny = float(prm.get("Y", y if y is not None else 0.0))
-        if code == 0 or not on_power or s <= 0:
+    from .law_machine import replay         # gcodeparser, as docs/toolpath_picture.py reads
+    runs, run, at = [], [], None
+    for g, (x, y), (nx, ny), centre, _, s in replay(data.decode(), "laser"):
+        if s <= 0 or (x, y) != at:          # the beam off, or a rapid move between
             if run:
                 runs.append(run)
             run = []
-        elif (nx, ny) != (x, y):
-            if code == 1:
-                run.append((s, (min(x, nx), min(y, ny), max(x, nx), max(y, ny)),
-                            [(x, y), (nx, ny)]))
-            else:
-                cx, cy = x + float(prm.get("I", 0.0)), y + float(prm.get("J", 0.0))
-                r = math.hypot(x - cx, y - cy)
-                a0, a1 = math.atan2(y - cy, x - cx), math.atan2(ny - cy, nx - cx)
-                sweep = (a1 - a0) % (2 * math.pi) or 2 * math.pi
-                if code == 2:
-                    sweep -= 2 * math.pi
-                aa = np.linspace(a0, a0 + sweep, 17)
-                run.append((s, _arc_box(cx, cy, r, a0, sweep),
-                            [(cx + r * math.cos(a), cy + r * math.sin(a)) for a in aa]))
-        x, y = nx, ny
-        if run and math.dist(run[0][2][0], (x, y)) <= 1e-9:
+        at = (nx, ny)
+        if s <= 0 or (nx, ny) == (x, y):
+            continue
+        if g == 1:
+            run.append((s, (min(x, nx), min(y, ny), max(x, nx), max(y, ny)),
+                        [(x, y), (nx, ny)]))
+        else:
+            cx, cy = centre
+            r = math.hypot(x - cx, y - cy)
+            a0, a1 = math.atan2(y - cy, x - cx), math.atan2(ny - cy, nx - cx)
+            sweep = (a1 - a0) % (2 * math.pi) or 2 * math.pi
+            if g == 2:
+                sweep -= 2 * math.pi
+            aa = np.linspace(a0, a0 + sweep, 17)
+            run.append((s, _arc_box(cx, cy, r, a0, sweep),
+                        [(cx + r * math.cos(a), cy + r * math.sin(a)) for a in aa]))
+        if math.dist(run[0][2][0], (nx, ny)) <= 1e-9:
             runs.append(run)                # closed: a next pass starts a loop of its own
             run = []
     if run:
