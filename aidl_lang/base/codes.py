@@ -483,7 +483,7 @@ which the constraints placing it override (the solver moves the instance): nothi
 an instance (`AlignRight(tail, panel)`, `CenterInside(h, body)`) is redundant with it, even
 where the two agree, and no hint says to drop such a placement (dropped, the instance went
 back to where the template started it: issue 109). Every edit a W0401 proposes, applied,
-leaves the design where it was (law 4, docs/laws.md). A line that makes several constraints (a loop's
+leaves the design where it was (law 4 of the project's laws). A line that makes several constraints (a loop's
 body) of which only some are implied is never offered for dropping: the warning says how many
 of them are redundant and that removing the line would free what the others hold, and its hint
 narrows the other statement instead (`AlignCenterX(pockets, body)` for a `CenterInside` whose y
