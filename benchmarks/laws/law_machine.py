@@ -116,8 +116,14 @@ def judge(c, out, cut, prof: dict) -> list[str]:
     if router:
         r = m.tool_diameter / 2
     else:
-        k = max(kerf.values()) if isinstance(kerf, dict) and kerf else (kerf or 0.0)
+        # the least kerf of the parts (a kerf per structure: an acrylic insert's 0.3 mm
+        # beside a plate's 0.15 mm): the beam is swept no wider than any part's cut
+        k = min(kerf.values()) if isinstance(kerf, dict) and kerf else (kerf or 0.0)
         r = max(float(k or 0.0) / 2, 1e-4)
+    if router and "\n; tool change: " in text:
+        # the countersinks and counterbores after the tool change: a V-bit's cone or a
+        # pocket, not the end mill's through-cut (law 2 measures the heads against the drawing)
+        text = text[:text.index("\n; tool change: ")] + "\n"
     moves = replay(text, m.kind)
     loops, opens, spikes = runs(moves, THICKNESS, router)
     return measure(out, loops, opens, spikes, r, _said_parts(c, out, cut, m, kerf or None))
