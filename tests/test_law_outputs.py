@@ -26,7 +26,7 @@ from benchmarks.laws import law_outputs as law  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 
-from test_checks_sinks import PLATE  # noqa: E402  (four 4.5 mm holes, 9 mm heads, 6 mm)
+from test_checks_sinks import BORED, PLATE  # noqa: E402  (PLATE: four 4.5 mm holes, 9 mm heads, 6 mm)
 
 BIG = PLATE.replace("diameter=9 mm)", "diameter=200 mm)")
 GOOD = PLATE
@@ -39,15 +39,6 @@ solid bar {
     hole b { c = Circle(center=(0, 0), diameter=4.5 mm) }
     hole e { c = Circle(center=(20, 0), diameter=4.5 mm) }
     Countersink([a, b, e], diameter=24 mm)
-}
-"""
-BORED = """units mm
-thickness 6 mm
-solid plate {
-    body = Rectangle(center=(0, 0), width=60, height=40)
-    hole h { c = Circle(center=(-15, 0), diameter=4.5) }
-    hole g { c = Circle(center=(15, 0), diameter=4.5) }
-    Counterbore([h, g.c], diameter=8, depth=2.5)
 }
 """
 
