@@ -189,7 +189,7 @@ _DEFS = {
                     [A("start", "point"), A("end", "point"), A("width", "length")],
                     doc="A rectangle (sizes and rotation held, position a guess). By two "
                         "corners only the rotation is held. By start, end: a bar along the "
-                        "segment.",
+                        "segment (members start, end).",
                     members=RECT_MEMBERS),
     "RoundedRectangle": _p([A("center", "point"), A("width", "length"), A("height", "length"),
                             A("corner_radius", "length", None), A("rotation", "angle", 0.0),
@@ -223,7 +223,8 @@ _DEFS = {
     "Polygon": _p([A("points", "points"), FLEXIBLE, MIRROR],
                   doc="A closed polygon; literal coordinates make it rigid (it moves, keeps "
                       "its shape) unless flexible=true; other points are starting guesses; "
-                      "mirror=\"y\": the points are the left or right half.",
+                      "mirror=\"y\": the points are the left or right half. No radius=: "
+                      "Fillet(p, r) rounds its corners.",
                   members=POLY_MEMBERS),
     "Drawing2D": _p([A("file", "string"), A("layer", "any", None), A("color", "any", None),
                      A("id", "any", None), A("units", "string", None), A("at", "point", None),
@@ -241,7 +242,8 @@ _DEFS = {
                         "ignore= (layers or colours), roles=\"laser\", close_tolerance=.",
                     members=DRAWING_MEMBERS),
     "Polyline": _p([A("points", "points"), A("closed", "bool", False), FLEXIBLE, MIRROR],
-                   doc="Open chain of lines (mirror=\"y\": written by one half).",
+                   doc="Open chain of lines (mirror=\"y\": written by one half); rounded "
+                       "corners: closed=true and Fillet.",
                    members=SPLINE_MEMBERS),
     "Spline": _p([A("points", "points"), A("closed", "bool", False),
                   A("corners", "any", None, "indices of points where the curve turns "

@@ -184,6 +184,40 @@ solid part {
     assert law.violations(r) == []
 
 
+BARS = """units mm
+solid p {
+    base = Rectangle(center=(0, 0), width=100, height=60)
+    solid s { bar = Rectangle(start=(-20, -10), end=(10, 20), width=6) }
+    bars = LinearPattern(s, 3, (10, 0))
+    m = Mirrored(s, axis=base.left)
+}
+"""
+
+
+def test_a_bars_start_and_end_are_the_middles_of_its_drawn_ends(monkeypatch):
+    """Issue 111: models reached for `start`/`end` of a bar `Rectangle(start, end, width)`:
+    they are its centre line's ends, and the law measures them on the drawn bar (the
+    middles of its edges at each end), for the bar, its pattern's copies (moved 10 mm each)
+    and its mirror image about x = -50; a member 0.01 mm off the drawn bar is a violation."""
+    r = _ok(BARS)
+    assert law.violations(r) == []
+    assert r.value("p.bars[2].bar.end").mm == pytest.approx((30, 20), abs=1e-9)
+    assert r.value("p.m.bar.start").mm == pytest.approx((-80, -10), abs=1e-9)
+    from aidl_lang.geometry.core.values import PV
+    from aidl_lang.geometry.relations import members as M
+    real = M.member
+
+    def off(g, name, frame):             # `start` 0.01 mm off the drawn bar, as a bug would be
+        v = real(g, name, frame)
+        return PV(v.x + 0.01, v.y, v.obj, v.owners) if name == "start" and \
+            g.kind == "Rectangle" else v
+    monkeypatch.setattr(M, "member", off)
+    bad = law.violations(r)           # (bars[0] is the bar itself: measured once)
+    assert sorted(ln.split(":")[0] for ln in bad) == [
+        "p.bars[1].bar.start", "p.bars[2].bar.start", "p.m.bar.start", "p.s.bar.start"], bad
+    assert "p.s.bar.start: (-19.990000, -10.000000) vs drawn (-20.000000, -10.000000)" in bad
+
+
 EXAMPLES = ["coat_hanger.aidl", "telephone.aidl", "mounting_plate.aidl", "gear.aidl"]
 
 

@@ -12,7 +12,8 @@ from pathlib import Path
 
 from ..base.diagnostics import Diagnostic, DiagnosticSink
 from ..base.limits import DEFAULT_BUDGET, Budget, now
-from .values import Layout, PartInfo, Value, _below, _geometry_names, _values, exact_bbox, file_units
+from .values import (Layout, PartInfo, Value, _below, _geometry_names, _values, exact_bbox,
+                     file_units, overlapping)
 
 # `aidl check`, the language server and MCP's `check` look for redundant constraints (W0401)
 # for at most this long, in blocks of at most this many rows sharing unknowns (`aidl check
@@ -48,6 +49,7 @@ class Result:
         self.units, self.unit_scale = file_units(source or "")
         self._values: list[Value] | None = None
         self._sizes: list[Value] | None = None
+        self._every: dict[bool, list[Value]] = {}   # with a template's internals (by sizes)
         self._output = None
         self._redundant: list[Diagnostic] | None = None
         self._sliding = None           # what the freedom left means (find_redundant)
@@ -104,8 +106,11 @@ class Result:
         structure its frame ``origin`` and ``bbox``; for each named geometry its points
         (``center``, ``start``, ``end``, corners; a rectangle's ``center`` too) and scalars
         (``radius``, ``width``, ``height``, ...; with :meth:`sizes` also each radius's
-        ``diameter`` and a rounded rectangle's ``corner_radius``).  Raises
-        :class:`NotCompiled` when the program did not solve."""
+        ``diameter`` and a rounded rectangle's ``corner_radius``); of a template instance
+        its parameters as given and its members, not the template's own locals, and of a
+        pattern's copy of one its geometry, not the parameters again (:meth:`values_matching`
+        and :meth:`value` give a local by its name).  Raises :class:`NotCompiled` when the
+        program did not solve."""
         self._need("values")
         if self._values is None:
             self._values = _values(self.compiled.model, self.unit_scale, self.units)
@@ -125,11 +130,12 @@ class Result:
         """The :attr:`values` (with ``sizes``: :meth:`sizes`) whose name is one of ``names``
         or below one of them (a dotted prefix: ``plate.corner`` covers
         ``plate.corner[0].h.center``); all of them when ``names`` is empty.  The root
-        structure's name may be left out."""
+        structure's name may be left out.  Asked by name, a template instance's own locals
+        are given too (``plate.h.d``), which the whole listing leaves out."""
         names = [n.strip() for n in names if n.strip()]
-        vals = self.sizes() if sizes else self.values
         if not names:
-            return list(vals)
+            return list(self.sizes() if sizes else self.values)
+        vals = self._all(sizes)          # a name asked for is given, a template's local too
         root = self.compiled.model.root.name + "."
         wanted = set()
         for n in names:
@@ -141,7 +147,7 @@ class Result:
     def value(self, name: str) -> Value:
         """The one value called ``name`` (exactly; the root's name may be left out).  Raises
         :class:`KeyError` (with the nearest names) when there is none."""
-        for v in self.values:
+        for v in self._all(False):
             if v.name == name or v.name == f"{self.compiled.model.root.name}.{name}":
                 return v
         from ..base.diagnostics import did_you_mean
@@ -259,6 +265,15 @@ class Result:
                 self._redundant = list(self.sink.items[before:])
         return list(self._redundant)
 
+    def _all(self, sizes: bool) -> list[Value]:
+        """Every value, a template instance's own locals too (:func:`.values._values`'s
+        ``internals``)."""
+        self._need("values")
+        if sizes not in self._every:
+            self._every[sizes] = _values(self.compiled.model, self.unit_scale, self.units,
+                                         sizes, internals=True)
+        return self._every[sizes]
+
     # ------------------------------------------------------------------ measuring
     def measure(self, a: str, b: str) -> dict:
         """What lies between the named entities ``a`` and ``b`` (names as :attr:`values`
@@ -269,8 +284,10 @@ class Result:
         ``{"a": {name, kind}, "b": ..., "distance", "points": [[x, y], [x, y]]}``: the
         smallest distance between them (points; lines as segments; shapes and parts by their
         outlines) and where; ``center_distance`` when both have a centre (a point, a circle,
-        an arc; a structure's: its own first circle, a gear's ``hub``, else its first shape's
-        centre, else its origin);
+        an arc; a structure's or part's: its own first circle, a gear's ``hub``, else its
+        first shape's centre that has one, else the centre of its outline's box, as
+        ``part.center`` reads it: a Polygon's, an imported sheet's part of lines; else its
+        origin), and ``centers`` the two;
         ``angle`` between two lines (0 to 180 degrees, from ``a``'s direction to ``b``'s);
         ``clearance`` and ``contact`` between two closed shapes or parts
         (:func:`aidl_lang.output.part.measure.gaps.clearance`: ``apart`` with the gap, ``touching``
@@ -294,6 +311,7 @@ class Result:
                      "unit": "mm", "distance": d, "points": [list(p), list(q)]}
         if ea.get("center") is not None and eb.get("center") is not None:
             out["center_distance"] = math.dist(ea["center"], eb["center"])
+            out["centers"] = [list(ea["center"]), list(eb["center"])]
         if ea["kind"] == "line" and eb["kind"] == "line":
             (p0, p1), (q0, q1) = ea["ends"], eb["ends"]
             t = math.atan2(q1[1] - q0[1], q1[0] - q0[0]) - math.atan2(p1[1] - p0[1],
@@ -331,7 +349,7 @@ class Result:
         (see :meth:`measure`).  Raises :class:`KeyError`."""
         from ..output.part.measure import gaps as G
         geo, structs = self._named_geometry()
-        points = {v.name: v for v in self.values if v.kind == "point"}
+        points = {v.name: v for v in self._all(False) if v.kind == "point"}
         root = self.compiled.model.root.name
         if all(name not in d for d in (geo, structs, points)) and any(
                 f"{root}.{name}" in d for d in (geo, structs, points)):
@@ -358,13 +376,18 @@ class Result:
             own = [gg for gg in s.geometry if not gg.construction
                    and ("center" in gg.points or "top_right" in gg.points)]
             first = next((gg for gg in own if gg.kind == "Circle"), own[0] if own else None)
-            center = self._geometry_entity(first)["center"] if first is not None else \
-                next((tuple(v.mm) for v in self.values if v.name == name + ".origin"), None)
             flat = [lp for r in G.regions(loops) for lp in r]
+            segs = [sg for lp in flat for sg in lp.segments]
+            if first is not None:
+                center = self._geometry_entity(first)["center"]
+            elif segs:       # an outline of lines and curves (a Polygon, an import): its box's
+                x0, y0, x1, y1 = exact_bbox(segs)       # centre, as `part.center` reads it
+                center = ((x0 + x1) / 2, (y0 + y1) / 2)
+            else:
+                center = next((tuple(v.mm) for v in self._all(False)
+                               if v.name == name + ".origin"), None)
             kind = "assembly" if part is False else "part" if part is not None else "structure"
-            return {"kind": kind, "loops": loops,
-                    "pieces": G.pieces([sg for lp in flat for sg in lp.segments]),
-                    "center": center}
+            return {"kind": kind, "loops": loops, "pieces": G.pieces(segs), "center": center}
         from ..base.diagnostics import did_you_mean
         every = sorted(set(geo) | set(structs) | set(points))
         near = did_you_mean(name, every, 3)
@@ -509,6 +532,16 @@ class Result:
             return {"checked": False, "collisions": [], "floating": []}
         return {"checked": True, "collisions": list(found["collisions"]),
                 "floating": list(found["floating"])}
+
+    def overlaps(self) -> list[dict]:
+        """The parts that lie over each other where the program draws them, flat (2D, their
+        true outlines: :func:`.values.overlapping`): ``[{"a", "b", "area" mm², "box" [x0,
+        y0, x1, y1] mm}]``, ``[]`` when none do: a sheet drawn by the program (or imported)
+        cuts as drawn only then (a machine file refuses it: E0501).  Not :attr:`fit`, the
+        assembled product's 3D collisions; :meth:`Layout.overlaps` for a cutting layout.
+        Raises :class:`NotCompiled`."""
+        self._need("overlaps")
+        return overlapping(self.output.parts)
 
     def encode(self, fmt: str, kerf: float | None = None, **options) -> bytes:
         """The output in format ``fmt`` (``svg``, ``dxf``, ``pdf``, ``png``, ``stl``, ``3mf``,

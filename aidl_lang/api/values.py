@@ -5,9 +5,11 @@ boxes (:func:`exact_bbox`), and the walk over a solved model that names its valu
 """
 from __future__ import annotations
 
+import functools
 import math
 import re
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Literal
 
 
@@ -97,6 +99,15 @@ class Layout:
                             "bbox": [round(float(v), 6) for v in box]})
         return out
 
+    def overlaps(self) -> list[dict]:
+        """The parts that lie over each other on the sheets as placed, flat (2D, their true
+        outlines as designed: :func:`overlapping`): ``[{"a", "b", "sheet" (1-based),
+        "area" mm², "box" [x0, y0, x1, y1] mm on the sheet}]``; ``[]`` when none do (the
+        nesting keeps them apart: this checks it).  Not :attr:`Result.fit`, the assembled
+        product's 3D collisions."""
+        return [dict(o, sheet=j + 1) for j, sheet in enumerate(self._solid)
+                for o in overlapping(sheet.parts)]
+
     def use(self) -> list[float]:
         """Each sheet's use: the parts' area (holes subtracted) over the sheet's, 0 to 1."""
         whole = self.size[0] * self.size[1]
@@ -124,6 +135,18 @@ class Layout:
 
     def __repr__(self) -> str:
         return f"<aidl Layout {self.text}>"
+
+
+def overlapping(parts) -> list[dict]:
+    """The solid ``parts`` (of an output) that lie over each other where they are drawn,
+    flat: ``[{"a", "b", "area" mm², "box" [x0, y0, x1, y1] mm of the area they share}]``,
+    pairs sharing more than a machine file allows (E0501's 0.05 mm²), by their true outlines
+    (:func:`~aidl_lang.output.part.measure.gaps.stacked_parts`: Manifold's CrossSection, not
+    boxes)."""
+    from ..output.part.measure.gaps import stacked_parts
+    from ..output.writers import STACKED_AREA
+    return [{"a": a, "b": b, "area": round(area, 6), "box": [round(v, 6) for v in box]}
+            for area, a, b, box in stacked_parts(parts, STACKED_AREA)]
 
 
 _UNITS = re.compile(r"^[ \t]*units[ \t]+([A-Za-z]+)", re.M)
@@ -183,7 +206,15 @@ def _below(name: str, prefix: str) -> bool:
 
 
 # ------------------------------------------------------------------ solved values
-def _values(model, scale: float, unit: str, sizes: bool = False) -> list[Value]:
+def _values(model, scale: float, unit: str, sizes: bool = False,
+            internals: bool = False) -> list[Value]:
+    """The solved values of ``model`` (:attr:`Result.values`).  A template instance's named
+    numbers and points are its parameters as given and its members (its ``Members:``
+    sentence's, and those the program reads, ``pair.center_distance``), not the template's
+    own locals (``i``, ``found``); a pattern's copy of one (and the original under its second
+    name, ``holes[0]``) gives its geometry, not its parameters again (the original's, said
+    once).  ``internals``: every name, as before issue 111 (what ``values`` gives when asked
+    for a name)."""
     from ..geometry.relations.bbox import numeric_box
     from ..geometry.core.expr import evaluate
     x = model.x
@@ -248,14 +279,55 @@ def _values(model, scale: float, unit: str, sizes: bool = False) -> list[Value]:
                               unit, (l, b, r, tp)))
         for gname, g in _geometry_names(s):
             vals += geometry(g, prefix + gname, ox, oy)
-        vals += _named_quantities(s.scope, prefix, x, (ox, oy), scale, unit)
+        scope = s.scope if internals else _shown_scope(model, s, base, seen)
+        vals += _named_quantities(scope, prefix, x, (ox, oy), scale, unit)
         return vals
+
+    seen: dict[int, str] = {}
 
     # first the file's own params and constants (`param width = 40 mm`, `length = width * 2`)
     out: list[Value] = _named_quantities(model.constants, "", x, (0.0, 0.0), scale, unit)
     for base, s in named_structures(model):
         out += structure(s, base)
     return out
+
+
+def _shown_scope(model, s, base: str, seen: dict[int, str]) -> dict:
+    """The part of structure ``s``'s scope :func:`_values` lists under the name ``base``: all
+    of it for a structure written in the program; for a template instance its parameters and
+    members (:func:`_members_of`); for a copy of one (or the original under a second name)
+    only its members that are points (a copy's points moved with it; its numbers are the
+    original's).  ``seen``: id of each structure listed -> the name it was first listed as."""
+    first = seen.setdefault(id(s), base)
+    if s.template is None:
+        return s.scope
+    given = getattr(s, "given", None)
+    members = _members_of(model, s.template, given)
+    if given is None or first != base:          # a copy, or the original once more
+        from ..geometry.core.values import PV
+        return {k: v for k, v in s.scope.items() if k in members and isinstance(v, PV)}
+    return {k: v for k, v in s.scope.items() if k in members or k in given[0]}
+
+
+def _members_of(model, template: str, given) -> set[str]:
+    """The members of template ``template`` that :func:`_values` lists: those its doc
+    comment's ``Members:`` sentence names (a standard-library template's) and those the
+    program reads (``instance.NAME``)."""
+    out = {n for t, n in getattr(model, "members_read", ()) if t == template}
+    f = given[1] if given is not None else None
+    if f is None or _in_stdlib(f):
+        from ..library.reference import stdlib_templates
+        std = stdlib_templates().get(template)
+        if std is not None:
+            out.update(std.members)
+    return out
+
+
+@functools.lru_cache(maxsize=256)
+def _in_stdlib(file: str) -> bool:
+    """Whether the file ``file`` is one of the standard library's."""
+    from ..base.diagnostics import STDLIB
+    return Path(file).resolve().parent == STDLIB
 
 
 def named_structures(model):

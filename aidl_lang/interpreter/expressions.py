@@ -189,6 +189,8 @@ class Expressions:
             if name == "bb":
                 return BBoxRef(s)
             if name in s.scope:
+                if s.template is not None:      # a member the program reads (`values`)
+                    self.model.members_read.add((s.template, name))
                 return s.scope[name]
             if name in s.children:
                 return StructRef(s.children[name])

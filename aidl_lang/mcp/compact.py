@@ -301,6 +301,10 @@ def body(tool: str, doc: dict) -> list[str]:
                    f"{_num(c['depth'])} mm deep")
     for c in fit.get("floating") or []:
         out.append(f"floating {c['part']}: {_num(c['gap'])} mm from {c['nearest']}")
+    for c in doc.get("overlaps") or []:          # 2D, as cut (render)
+        out.append(f"overlap {c['a']} / {c['b']}: {_num(c['area'])} mm²"
+                   + (f" on sheet {c['sheet']}" if "sheet" in c else "") + " at "
+                   + _val(c["box"]))
     for n in doc.get("notes") or []:
         out.append(f"{n['code']}: {n['message']}")
     c = doc.get("check") or {}
@@ -340,6 +344,10 @@ def line(tool: str, doc: dict) -> str:
             said.append(doc["job"]["text"])
         if doc.get("layout"):
             said.append(doc["layout"]["text"])
+        if "overlaps" in doc:
+            n = len(doc["overlaps"])
+            said.append("2D: " + (f"{_plural(n, 'pair')} of parts overlap" if n
+                                  else "no parts overlap"))
     if doc.get("superseded"):
         said.append(doc["superseded"])
     if tool == "values":

@@ -114,6 +114,14 @@ class Fit(TypedDict):
     floating: list[Floating]
 
 
+class Overlap(TypedDict):
+    a: str
+    b: str
+    sheet: NotRequired[int]
+    area: Annotated[float, Field(description="mm² the two share")]
+    box: Annotated[list[float], Field(description="[x0, y0, x1, y1] mm of it")]
+
+
 class _Compiled(TypedDict):
     """What every compiling tool returns: ``ok``, the diagnostics, the file's length unit,
     the solve's statistics and, with errors, a one-line summary of them and the ``error``."""
@@ -152,6 +160,7 @@ class Measured(TypedDict):
     distance: Annotated[float, Field(description="smallest distance between them")]
     points: Annotated[list[list[float]], Field(description="where: [[x, y], [x, y]]")]
     center_distance: NotRequired[float]
+    centers: NotRequired[list[list[float]]]
     angle: NotRequired[Annotated[float, Field(description="two lines: 0 to 180 degrees")]]
     clearance: NotRequired[Annotated[float, Field(
         description="two shapes or parts: the gap; 0 touching; negative overlapping")]]
@@ -237,6 +246,8 @@ class RenderResult(_Compiled):
     layout: NotRequired[LayoutInfo]
     job: NotRequired[Job]
     fit: NotRequired[Fit]
+    overlaps: NotRequired[Annotated[list[Overlap], Field(
+        description="parts over each other as cut (2D)")]]
 
 
 class ImportNote(TypedDict):

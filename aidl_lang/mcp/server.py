@@ -603,7 +603,7 @@ def build_server(root: str, budget: float = 1.0,
               dof: Dof = False, budget: Budget = None, sweep: Sweep = False,
               detail: Detail = False) -> Annotated[CallToolResult, CheckResult]:
         """Parse, check and solve an AIDL program; write nothing. Returns ok, located
-        diagnostics (code, span, hint, fix), parts (bbox mm), freedom and the assembled fit.
+        diagnostics (with hint, fix), parts (bbox mm), freedom, the assembled fit (3D).
         Every result: whole in text and in structured content; refused: isError, error
         {code, message, argument}."""
         return answer("check", await run("check", source, path, overrides, dof, budget,
@@ -629,9 +629,8 @@ def build_server(root: str, budget: float = 1.0,
                rotate: Rotate = None, kerf: Kerf = None, thickness: Thickness = None,
                machine: Machine = None, page: Page = None, detail: Detail = False
                ) -> Annotated[CallToolResult, RenderResult]:
-        """Compile, write `output` and return its figures: size, parts, fit, and for a
-        cutting file the job (path length per pass, passes, cut, travel, time at the
-        `machine`'s speeds). A picture only with `picture`."""
+        """Compile, write `output` and return its figures: size, parts, fit (3D), overlaps
+        (2D), for a cutting file the job at the `machine`'s speeds."""
         (doc, pngs), files = await run("render", source, path, output, width, overrides,
                                        budget, style, assembled, layout, sheet, gap, rotate,
                                        kerf, thickness, machine, page, picture, budget=budget)
@@ -643,8 +642,8 @@ def build_server(root: str, budget: float = 1.0,
                overrides: Overrides = None, budget: Budget = None,
                detail: Detail = False) -> Annotated[CallToolResult, ValuesResult]:
         """Solved values of named entities, in the file's units: points, sizes (radius,
-        width, ...), frame origins, boxes, every copy of a pattern (corners[0]: the
-        original)."""
+        width, ...), frame origins, boxes, a template's params and members, each copy of a
+        pattern (corners[0]: the original)."""
         return answer("values", await run("values", source, path, names, overrides, budget,
                                           budget=budget), detail=detail)
 
@@ -652,8 +651,8 @@ def build_server(root: str, budget: float = 1.0,
     async def describe(source: Source = None, path: ProgramPath = None, overrides: Overrides = None,
                  budget: Budget = None,
                  detail: Detail = False) -> Annotated[CallToolResult, DescribeResult]:
-        """The final part in words and data, to check it without a picture: outline,
-        openings (kind, centre, size), engravings, copies, symmetries; mm."""
+        """The final part in words and data, to check it without a picture (openings:
+        kind, centre, size)."""
         return answer("describe", await run("describe", source, path, overrides, budget,
                                             budget=budget), detail=detail)
 
@@ -661,9 +660,8 @@ def build_server(root: str, budget: float = 1.0,
     async def import_drawing(path: DrawingPath, infer: Infer = True, parts: Parts = False,
                        units: Units = None, output: ProgramOutput = None,
                        budget: Budget = None) -> Annotated[CallToolResult, ImportResult]:
-        """A DXF or SVG drawing as an AIDL program to edit; with `infer`, the design
-        (RoundedRectangle, Slot, ..., hole patterns as loops, a param per repeated size,
-        pitch, count), exact to 1e-6 mm."""
+        """A DXF or SVG drawing as an AIDL program to edit, exact to 1e-6 mm; with `infer`,
+        the design (RoundedRectangle, Slot, hole patterns as loops, a param per size)."""
         doc, files = await run("import_drawing", path, infer, parts, units, output, budget,
                                budget=budget)
         _commit(calls, doc, files, "output")

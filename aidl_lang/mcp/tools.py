@@ -432,7 +432,9 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
            files: list | None = None) -> tuple[dict, list[bytes]]:
     """Compile, write ``output`` and draw: ``(summary, pictures)``.  The summary gives the
     figures of what was made (``size`` [width, height] mm of the drawing,
-    ``parts``, ``fit``; ``job`` for a cutting file; ``layout`` on sheets); with ``picture``,
+    ``parts``, ``fit`` (3D: the product assembled by ``Place``), ``overlaps`` (2D: the parts
+    lying over each other as cut, by their true outlines: as drawn, or on each sheet of the
+    layout); ``job`` for a cutting file; ``layout`` on sheets); with ``picture``,
     the PNGs ``width`` pixels wide: one of the parts, or one per sheet with a layout (none
     without ``picture``, or when the program has errors).  ``output``:
     also write the drawing there (``.svg``, ``.dxf``, ``.png``, ...; inside the allowed
@@ -532,6 +534,7 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
                     put((f, data, prog, ws.relative(f)))
                 doc["written"] = ws.relative(files[0])
             use = sheets.use()
+            doc["overlaps"] = sheets.overlaps()
             doc["layout"] = {"sheets": sheets.sheets, "size": list(sheets.size),
                              "files": [ws.relative(f) for f in files] if target else [],
                              "text": sheets.text + ", use " + ", ".join(
@@ -565,6 +568,8 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
         doc["size"] = [round(max(b[2] for b in boxes) - min(b[0] for b in boxes), 6),
                        round(max(b[3] for b in boxes) - min(b[1] for b in boxes), 6)]
     doc["fit"] = r.fit
+    if not layout:          # 2D, the parts as drawn (a layout's: each sheet's, above)
+        doc["overlaps"] = r.overlaps()
     if pngs:
         doc["image"] = {"format": "png", "width": width,
                         "view": "assembled" if assembled else "flat"}

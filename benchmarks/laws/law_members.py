@@ -305,6 +305,11 @@ class Measure:
             a = self._nearest(v, self.value("bottom_left"))
             b = self._nearest(v, self.value("bottom_right" if m == "width" else "top_left"))
             return math.dist(a, b)
+        if m in ("start", "end") and m in self.g.points:
+            # a bar's (Rectangle(start, end, width)): its centre line's end, the middle of
+            # the drawn edge at that end (bottom at the start, top at the end)
+            ends = ("bottom_left", "bottom_right") if m == "start" else ("top_left", "top_right")
+            return self._mean([self._nearest(v, self.value(n)) for n in ends])
         return None
 
     @staticmethod

@@ -29,6 +29,9 @@ class Model:
         self.constants: dict = {}     # the main file's top-level names (params, constants)
         self.holds = 0                # constraints with ``hold`` (solver.holds.settle_holds)
         self.sinks: list[Sink] = []   # `Countersink` / `Counterbore` calls (issue 102)
+        # (template, name) of every `instance.name` the program reads of a template instance's
+        # scope: the members `values` lists beside its parameters (issue 111)
+        self.members_read: set[tuple[str, str]] = set()
 
     def new_param(self, value: float, free: bool, owner: "Structure | None", label: str) -> int:
         self.x.append(float(value))

@@ -274,23 +274,10 @@ def _refuse_stacked(output: Output, suffix: str) -> None:
     machine would cut one part through the other.  An assembly may draw its parts over each
     other (a house's walls at the origin, placed in 3D by ``Place``; a clock's hands on its
     face, ``AllowOverlap``), which a picture shows and a cutter cannot make; the cutting layout
-    (``--layout sheet``) lays them apart.  Candidate pairs come from the parts' bounding boxes
-    (their exact segments' boxes, :func:`..part.nearby.box_pairs`, O(n log n)); each is
-    intersected with Manifold's CrossSection (the parts' outlines in chords within 0.005 mm)."""
-    from ..part.measure.nearby import box_pairs
-    solids = [p for p in output.parts if p.kind == "solid" and p.loops]
-    if len(solids) < 2:
-        return
-    boxes = []
-    for p in solids:
-        bs = [g.box() for lp in p.loops for g in lp.segments]      # exact (x0, y0, x1, y1)
-        boxes.append((min(b[0] for b in bs), min(b[1] for b in bs),
-                      max(b[2] for b in bs), max(b[3] for b in bs)))
-    over = []
-    for i, j in box_pairs(boxes):        # a part's CrossSection only where boxes meet
-        area = (solids[i].shape ^ solids[j].shape).area()
-        if area > STACKED_AREA:
-            over.append((float(area), solids[i].name, solids[j].name))
+    (``--layout sheet``) lays them apart.  The pairs: :func:`..part.measure.gaps.stacked_parts`
+    (true outlines, Manifold's CrossSection)."""
+    from ..part.measure.gaps import stacked_parts
+    over = [(area, a, b) for area, a, b, _ in stacked_parts(output.parts, STACKED_AREA)]
     if not over:
         return
     area, a, b = max(over)

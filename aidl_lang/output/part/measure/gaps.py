@@ -273,3 +273,30 @@ def _union(sections: list):
     for s in sections[1:]:
         out = out + s
     return out
+
+
+def stacked_parts(parts, least: float) -> list[tuple[float, str, str, tuple]]:
+    """The pairs of solid parts among ``parts`` (:class:`~aidl_lang.output.part.part.Part`)
+    that lie over each other where they are drawn: ``(area mm², a, b, (x0, y0, x1, y1) mm of
+    the area they share)`` for each pair sharing more than ``least`` mm², in the parts'
+    order.  Candidate pairs come from the parts' exact boxes
+    (:func:`.nearby.box_pairs`, O(n log n)); each is intersected with Manifold's
+    CrossSection (the parts' true outlines in chords within ``CHORD_TOL``, holes cut), so a
+    part nested in another's hole, or two L shapes whose boxes cross, do not overlap."""
+    from .nearby import box_pairs
+    solids = [p for p in parts if p.kind == "solid" and p.loops]
+    if len(solids) < 2:
+        return []
+    boxes = []
+    for p in solids:
+        bs = [g.box() for lp in p.loops for g in lp.segments]      # exact (x0, y0, x1, y1)
+        boxes.append((min(b[0] for b in bs), min(b[1] for b in bs),
+                      max(b[2] for b in bs), max(b[3] for b in bs)))
+    out = []
+    for i, j in box_pairs(boxes):        # a part's CrossSection only where boxes meet
+        common = solids[i].shape ^ solids[j].shape
+        area = common.area()
+        if area > least:
+            out.append((float(area), solids[i].name, solids[j].name,
+                        tuple(float(v) for v in common.bounds())))
+    return out
