@@ -135,7 +135,7 @@ async def test_center_distance_between_the_parts_of_an_imported_sheet(shared):
                                 pytest.approx(list(centres["model.tri"]), abs=1e-6)]
         assert m["a"]["kind"] == "part" and m["distance"] == \
             pytest.approx(49, abs=1e-6)                 # (40, 0) to (89, 0)
-        assert "center_distance 89" in _text(r)
+        assert "center_distance 89 mm" in _text(r) and "centres (20, 15) and (109, 15)" in _text(r)
 
 
 OVERLAP = """units mm

@@ -772,9 +772,8 @@ single strokes (with `font=`: the letters' outlines), on the `engrave` layer; no
 or cut. Text is only allowed in a drawing (a Text with `font=` also in a solid, as material,
 and a hole, as openings). Put it inside the solid it marks. A `hole` in a drawing hides the drawing's lines
 (its own and its children's) where it covers them: a shape behind another (`drawing back {
-p = Polygon(...) hole front { q = Polygon(...) } }`); one that hides nothing is W0526. A hole of
-the solid hides none of them: a drawing's lines run across the solid's opening (W0505); give the
-drawing its own `hole` there to stop them at its edge.
+p = Polygon(...) hole front { q = Polygon(...) } }`); one that hides nothing is W0526. The solid's
+holes hide none: its lines run across them (W0505) unless the drawing has its own `hole` there.
 """, ["engraving", "engrave", "label", "mark", "engraving minus engraving", "hide lines"]),
     "assembly": ("statement", "`assembly NAME { ... }`: separate parts.", """
 `assembly NAME { ... }`: each child is a separate part, drawn where the solver puts it
@@ -860,18 +859,12 @@ DETAILS: dict[str, str] = {
                 "closed=true makes it a Polygon. Literal coordinates make it rigid (as "
                 "Polygon) unless flexible=true. Members: points, start, end, edges (the "
                 "segments as Lines), bb. Fewer than 2 points or two consecutive equal points "
-                "are E0108. Also written PolyLine, LineString, Path, Chain, ZigZag. It takes "
-                "no radius=: for rounded corners close it (closed=true) in a solid or hole "
-                "and round them with Fillet (`Fillet(p, 3 mm)`: every corner of p; "
-                "`Fillet(p.points[1], 3 mm)`: one); an open path's bend is an Arc between "
-                "its Lines.",
-    "Polygon": "It takes no radius=: round its corners with Fillet in the solid or hole "
-               "that holds it (`Fillet(p, 3 mm)`: every corner of p, exact tangent arcs; "
-               "`Fillet(p.points[1], 3 mm)`: one corner); a rectangle's: RoundedRectangle.",
-    "Rectangle": "By start, end (a bar): its members start and end are the centre line's "
-                 "ends, the middles of its bottom edge (at start) and top edge (at end), "
-                 "where the solve puts them (a pattern's copy, a mirror image: its own); "
-                 "height is the bar's length, width its width.",
+                "are E0108. Also written PolyLine, LineString, Path, Chain, ZigZag. No "
+                "radius=: close it in a solid or hole and Fillet it, as a Polygon.",
+    "Polygon": "No radius=: round its corners with Fillet in the solid or hole that holds it "
+               "(`Fillet(p, 3 mm)`: every corner, exact arcs; `Fillet(p.points[1], 3 mm)`: one).",
+    "Rectangle": "A bar's (by start, end) members start and end are its centre line's ends, "
+                 "the middles of its bottom and top edges as solved; its height: its length.",
     "Spline": "corners=[i, ...] names points where the curve turns sharply "
               "(tangent-discontinuous): a leaf's tip, a violin's corners. The spline is cut "
               "there into runs, each the natural spline through its points (a run of two "

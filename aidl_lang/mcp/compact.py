@@ -365,7 +365,9 @@ def line(tool: str, doc: dict) -> str:
                     + (f", overlap_area {_num(m['overlap_area'])}" + (
                         f" +- {_num(m['overlap_area_within'])}" if "overlap_area_within" in m
                         else "") + " mm²" if "overlap_area" in m else "")
-                    + ", nearest points " + " and ".join(_val(p) for p in m["points"]))
+                    + ", nearest points " + " and ".join(_val(p) for p in m["points"])
+                    + (", centres " + " and ".join(_val(p) for p in m["centers"])
+                       if m.get("centers") else ""))
     if tool == "import_drawing" and doc.get("check"):
         c = doc["check"]
         said.append(("checked ok" if c.get("ok") else "check: " + c.get("summary", "not ok"))

@@ -431,12 +431,11 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
            page: str | None = None, picture: bool = False,
            files: list | None = None) -> tuple[dict, list[bytes]]:
     """Compile, write ``output`` and draw: ``(summary, pictures)``.  The summary gives the
-    figures of what was made (``size`` [width, height] mm of the drawing,
-    ``parts``, ``fit`` (3D: the product assembled by ``Place``), ``overlaps`` (2D: the parts
-    lying over each other as cut, by their true outlines: as drawn, or on each sheet of the
-    layout); ``job`` for a cutting file; ``layout`` on sheets); with ``picture``,
-    the PNGs ``width`` pixels wide: one of the parts, or one per sheet with a layout (none
-    without ``picture``, or when the program has errors).  ``output``:
+    figures of what was made (``size`` [width, height] mm of the drawing, ``parts``, ``fit``
+    (3D: the product assembled by ``Place``), ``overlaps`` (2D: parts over each other as cut,
+    true outlines, as drawn or on each sheet); ``job`` for a cutting file; ``layout`` on
+    sheets); with ``picture``, the PNGs ``width`` pixels wide: one of the parts, or one per
+    sheet with a layout (none without ``picture``, or with errors).  ``output``:
     also write the drawing there (``.svg``, ``.dxf``, ``.png``, ...; inside the allowed
     folder, made if missing, never through a link, never over the program).
     ``assembled``: the picture (and a 3D or PNG ``output``) is the assembled product, every
