@@ -1,8 +1,8 @@
 """What an agent through `aidl mcp` could not read (issue 111), through the official SDK's
 stdio client as in tests/test_mcp.py and through the public API the tools share:
 
-* `values` of a pattern of template instances lists each instance's params as given and
-  its members, not the template's own locals (`i`, `d`) nor the params again on every copy
+* `values` of a pattern of template instances lists each instance's params as its call
+  gives them and its members, not the template's own locals (`i`, `d`) nor the params again on every copy
   (59 lines before for the plate below, 37 after); a local asked for by name is still given.
 * `measure`'s `center_distance` between the parts of an imported sheet is between the parts'
   real centres (0 mm before for parts of lines 89 mm apart: both fell back to the origin).
@@ -39,8 +39,8 @@ async def _values(session, names=(), **where):
 
 @pytest.mark.asyncio(loop_scope="module")
 async def test_values_give_a_templates_params_and_members_not_its_locals(shared):
-    """clearance_hole(size=3, cx=-50, cy=-20) copied 4 times: the original lists its params
-    (size, cx, cy: fit is a string) and its circle; each copy its origin, box and circle,
+    """clearance_hole(size=3, cx=-50, cy=-20) copied 4 times: the original lists the params
+    its call gives (size, cx, cy) and its circle; each copy its origin, box and circle,
     moved 30 mm each, and neither `i` nor `d` (the template's index into its table and the
     diameter it read there) nor the params again.  `plate.h.d` asked by name is 3.4 mm, the
     ISO 273 medium clearance of M3 (nothing lost).  The API lists what the tool does."""
@@ -64,7 +64,9 @@ async def test_values_give_a_templates_params_and_members_not_its_locals(shared)
 
 
 def test_values_keep_the_members_a_template_documents_or_the_program_reads():
-    """gear_pair's `center_distance` (its Members: sentence) is listed; spur_gear's local
+    """gear_pair's `center_distance` (its Members: sentence) is listed, and the params the
+    call gives, not the defaults it leaves (`pressure_angle`: asked by name, 20 deg);
+    spur_gear's local
     `pitch_r` is listed only where the program reads it (`pair.gear1.pitch_r`), for every
     spur_gear, and its other locals (`base_r`, `half`, the loop's `ta`) are not."""
     src = ('units mm\nimport "std/gears.aidl"\n'
@@ -72,6 +74,8 @@ def test_values_keep_the_members_a_template_documents_or_the_program_reads():
     names = {v.name: v.value for v in aidl_lang.compile(source=src).sizes()}
     assert names["pair.center_distance"] == pytest.approx(36)
     assert names["pair.teeth1"] == 12 and names["pair.gear2.mate"] == 12
+    assert "pair.pressure_angle" not in names and "pair.gear1.pressure_angle" in names
+    assert aidl_lang.compile(source=src).value("pair.pressure_angle").value == pytest.approx(20)
     assert not any(n.endswith((".pitch_r", ".base_r", ".half", ".ta")) for n in names)
     read = {v.name: v.value for v in aidl_lang.compile(
         source=src + "assert pair.gear1.pitch_r == 12 mm\n").sizes()}

@@ -107,7 +107,7 @@ class Result:
         (``center``, ``start``, ``end``, corners; a rectangle's ``center`` too) and scalars
         (``radius``, ``width``, ``height``, ...; with :meth:`sizes` also each radius's
         ``diameter`` and a rounded rectangle's ``corner_radius``); of a template instance
-        its parameters as given and its members, not the template's own locals, and of a
+        the parameters its call gives and its members, not the template's own locals, and of a
         pattern's copy of one its geometry, not the parameters again (:meth:`values_matching`
         and :meth:`value` give a local by its name).  Raises :class:`NotCompiled` when the
         program did not solve."""

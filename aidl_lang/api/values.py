@@ -209,7 +209,7 @@ def _below(name: str, prefix: str) -> bool:
 def _values(model, scale: float, unit: str, sizes: bool = False,
             internals: bool = False) -> list[Value]:
     """The solved values of ``model`` (:attr:`Result.values`).  A template instance's named
-    numbers and points are its parameters as given and its members (its ``Members:``
+    numbers and points are the parameters its call gives and its members (its ``Members:``
     sentence's, and those the program reads, ``pair.center_distance``), not the template's
     own locals (``i``, ``found``); a pattern's copy of one (and the original under its second
     name, ``holes[0]``) gives its geometry, not its parameters again (the original's, said
@@ -294,8 +294,8 @@ def _values(model, scale: float, unit: str, sizes: bool = False,
 
 def _shown_scope(model, s, base: str, seen: dict[int, str]) -> dict:
     """The part of structure ``s``'s scope :func:`_values` lists under the name ``base``: all
-    of it for a structure written in the program; for a template instance its parameters and
-    members (:func:`_members_of`); for a copy of one (or the original under a second name)
+    of it for a structure written in the program; for a template instance the parameters its
+    call gives (not the defaults it left) and its members (:func:`_members_of`); for a copy of one (or the original under a second name)
     only its members that are points (a copy's points moved with it; its numbers are the
     original's).  ``seen``: id of each structure listed -> the name it was first listed as."""
     first = seen.setdefault(id(s), base)

@@ -695,8 +695,8 @@ class Statements(Asserts):
         self._adapt_args(d, vals, spans)
         self.step(call.span)
         child = self._new_structure(name, kind or d.kind, parent, call.span, template=d.name)
-        # its parameters and its template's file: what `values` lists of it (issue 111)
-        child.given = (tuple(params), d.span.file if d.span is not None else None)
+        # the parameters the call gives and its template's file: what `values` lists of it
+        child.given = (tuple(vals), d.span.file if d.span is not None else None)   # (issue 111)
         self.frames.append((f"the template instance `{name} = {d.name}(...)`", call.span))
         self.sink.calls.append((f"`{d.name}`", call.span))      # errors inside: at the call
         self.sink.called(d.span, self.sink.calls, child.path)
