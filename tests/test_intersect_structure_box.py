@@ -38,25 +38,10 @@ solid knob {{
 
 def _opening(r, tmp_path) -> tuple:
     """The box (left, bottom, right, top) of the part's inner loop, from the SVG."""
-    from exact_geometry import A, read_svg_loops
-    import math
+    from exact_geometry import loop_box, read_svg_loops
     path = tmp_path / "knob.svg"
     path.write_text(r.to_svg(), encoding="utf-8")
-    boxes = []
-    for loop in read_svg_loops(path):
-        xs, ys = [], []
-        for sg in loop:
-            for p in (sg.start, sg.end):
-                xs.append(p[0])
-                ys.append(p[1])
-            if isinstance(sg, A):
-                a0 = math.atan2(sg.start[1] - sg.center[1], sg.start[0] - sg.center[0])
-                for k in range(4):
-                    if ((k * math.pi / 2 - a0) * math.copysign(1, sg.sweep)) % (2 * math.pi) \
-                            <= abs(sg.sweep):
-                        xs.append(sg.center[0] + sg.radius * math.cos(k * math.pi / 2))
-                        ys.append(sg.center[1] + sg.radius * math.sin(k * math.pi / 2))
-        boxes.append((min(xs), min(ys), max(xs), max(ys)))
+    boxes = [loop_box(loop) for loop in read_svg_loops(path)]
     inner = [b for b in boxes if b[2] - b[0] < 30]
     assert len(inner) == 1, boxes
     return inner[0]

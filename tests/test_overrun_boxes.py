@@ -12,6 +12,8 @@ a shape's own ``.bb``, the overrun's too, is its drawn outline.
 """
 from __future__ import annotations
 
+import pytest
+
 import aidl_lang
 from benchmarks.laws import law_members
 
@@ -40,6 +42,10 @@ solid side {
     AlignCenterX(tails, self)
 }
 """
+
+
+def _mm(v: float):
+    return pytest.approx(v, abs=1e-6)
 
 
 def _compiled(src: str):
@@ -74,13 +80,13 @@ def test_align_top_of_a_30_mm_cross_halving_cuts_30_mm(tmp_path):
     for fmt, pts in _both(r, tmp_path):
         slot = [p for p in pts if abs(p[0]) < 2]        # the slot's corners (3 mm wide)
         assert len(slot) == 4, (fmt, pts)
-        assert max(p[1] for p in slot) == pytest_approx(30.0), fmt     # opens the top edge
-        assert 30.0 - min(p[1] for p in slot) == pytest_approx(30.0), fmt   # was 31
+        assert max(p[1] for p in slot) == _mm(30.0), fmt     # opens the top edge
+        assert 30.0 - min(p[1] for p in slot) == _mm(30.0), fmt   # was 31
     vals = {v.name: v.mm for v in r.values}
-    assert vals["divider.slot.bbox"][3] == pytest_approx(30.0)
-    assert vals["divider.slot.bbox"][1] == pytest_approx(0.0)
-    assert vals["divider.slot.overrun.top_right"][1] == pytest_approx(31.0)   # drawn, 1 mm past
-    assert vals["divider.bbox"][3] == pytest_approx(30.0)     # the panel's box: its material
+    assert vals["divider.slot.bbox"][3] == _mm(30.0)
+    assert vals["divider.slot.bbox"][1] == _mm(0.0)
+    assert vals["divider.slot.overrun.top_right"][1] == _mm(31.0)   # drawn, 1 mm past
+    assert vals["divider.bbox"][3] == _mm(30.0)     # the panel's box: its material
 
 
 def test_a_turned_cross_halving_aligned_to_the_left_edge(tmp_path):
@@ -89,8 +95,8 @@ def test_a_turned_cross_halving_aligned_to_the_left_edge(tmp_path):
     for fmt, pts in _both(r, tmp_path):
         slot = [p for p in pts if abs(p[1]) < 2]
         assert len(slot) == 4, (fmt, pts)
-        assert min(p[0] for p in slot) == pytest_approx(-50.0), fmt
-        assert max(p[0] for p in slot) + 50.0 == pytest_approx(30.0), fmt
+        assert min(p[0] for p in slot) == _mm(-50.0), fmt
+        assert max(p[0] for p in slot) + 50.0 == _mm(30.0), fmt
 
 
 def test_dovetail_sockets_and_tails_are_as_deep_as_asked(tmp_path):
@@ -103,10 +109,10 @@ def test_dovetail_sockets_and_tails_are_as_deep_as_asked(tmp_path):
         # the tails' sockets in the side: from its top edge (y = -60) 10 mm down
         assert {round(p[1], 6) for p in side} == {-60.0, -70.0}, (fmt, side)
     vals = {v.name: v.mm for v in r.values}
-    assert vals["lid.sock.bbox"][1] == pytest_approx(-30.0)
-    assert vals["lid.sock.bbox"][3] == pytest_approx(-20.0)
-    assert vals["side.tails.bbox"][3] == pytest_approx(-60.0)
-    assert vals["side.tails.bbox"][1] == pytest_approx(-70.0)
+    assert vals["lid.sock.bbox"][1] == _mm(-30.0)
+    assert vals["lid.sock.bbox"][3] == _mm(-20.0)
+    assert vals["side.tails.bbox"][3] == _mm(-60.0)
+    assert vals["side.tails.bbox"][1] == _mm(-70.0)
 
 
 def test_a_shape_drawn_with_overrun_counts_in_no_box_but_its_own():
@@ -123,11 +129,11 @@ solid plate {
 """
     r = _compiled(src)
     vals = {v.name: v.mm for v in r.values}
-    assert vals["plate.w"] == pytest_approx(8.0)                # the seat's, not 12
-    assert vals["plate.notch.bbox"][3] == pytest_approx(20.0)   # the seat's top on the edge
-    assert vals["plate.notch.past.top_right"][1] == pytest_approx(24.0)   # drawn 4 mm past it
+    assert vals["plate.w"] == _mm(8.0)                # the seat's, not 12
+    assert vals["plate.notch.bbox"][3] == _mm(20.0)   # the seat's top on the edge
+    assert vals["plate.notch.past.top_right"][1] == _mm(24.0)   # drawn 4 mm past it
     part = next(p for p in r.parts if p.name == "plate")
-    assert part.bbox[3] == pytest_approx(20.0)                  # the notch opens the edge
+    assert part.bbox[3] == _mm(20.0)                  # the notch opens the edge
 
 
 def test_t_slot_aligned_to_an_edge_is_as_long_as_asked(tmp_path):
@@ -143,9 +149,5 @@ solid wall {
     r = _compiled(src)
     for fmt, pts in _both(r, tmp_path):
         slot = [p for p in pts if abs(p[0]) < 2]        # the screw's slot, 3.4 mm wide
-        assert 20.0 - min(p[1] for p in slot) == pytest_approx(12.0), (fmt, slot)   # was 13
+        assert 20.0 - min(p[1] for p in slot) == _mm(12.0), (fmt, slot)   # was 13
 
-
-def pytest_approx(v: float):
-    import pytest
-    return pytest.approx(v, abs=1e-6)
