@@ -152,7 +152,8 @@ import "std/fasteners.aidl"
 # A cross-halving slot: panels slotted halfway into each other crosswise.
 # From the mouth at (cx, cy) on the edge it runs `depth` mm into the panel,
 # `thickness` + `clearance` wide; cut one into each panel, the two depths
-# adding up to the overlap. Members: `cut` (within the panel), `overrun`.
+# adding up to the overlap. Members: `cut` (within the panel: the box a
+# relation reads), `overrun` (the cut run 1 mm past the edge: drawn, in no box).
 # Anchor: (cx, cy) is the middle of its mouth on the edge; rotation 0: the slot runs toward -y.
 def cross_halving(depth=20 mm, thickness=3 mm, clearance=0 mm, rotation=0 deg,
                   cx=0 mm, cy=0 mm) -> hole {
@@ -174,7 +175,8 @@ def cross_halving(depth=20 mm, thickness=3 mm, clearance=0 mm, rotation=0 deg,
 # number of equal segments at least `finger` wide (at least 3 while they stay
 # `thickness` wide); every second one, from the first when `start` is "gap",
 # is cut `thickness` deep, so a "tab" edge mates a "gap" edge of the same
-# length at a corner. Members: `gap` (within the panel), `overrun`.
+# length at a corner. Members: `gap` (within the panel: the box a relation
+# reads), `overrun` (each run 1 mm past the edges: drawn, in no box).
 # Anchor: (cx, cy) is the middle of the edge; rotation 0: the edge along x, the cuts toward -y.
 def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotation=0 deg,
                 cx=0 mm, cy=0 mm) -> hole {
@@ -216,7 +218,8 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
 # clearance hole for each screw, centred on the line through (cx, cy) where the
 # tab panel's middle stands. Screws up to `thickness` + 4 x `screw` mm long;
 # `screw=0` leaves them out (a glued or pressed joint).
-# Members: `gap` (within the panel), `overrun`, `nut`, `slot`, `bolt`.
+# Members: `gap` (within the panel), `overrun` (each gap run 1 mm past the
+# edges: drawn, in no box), `nut`, `slot`, `bolt`.
 # Anchor: (cx, cy) is the middle of the edge (part "slot": of the slots); rotation 0: the edge along x, the tabs toward -y.
 def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, screw=3,
                  clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
@@ -272,7 +275,8 @@ def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, sc
 # `depth` beyond it, `length` long), `part` "tail" leaves `tails` tails that
 # widen at `angle` toward their tips (the tail panel reaches across the band);
 # "socket" cuts those tails, `clearance` wider, out of the mate (which starts
-# at the line). Members: `cut` (within the panel), `overrun`.
+# at the line). Members: `cut` (within the panel: the box a relation reads),
+# `overrun` (each cut run 1 mm past the edges: drawn, in no box).
 # Anchor: (cx, cy) is the middle of the tails' roots (the socket panel's edge); rotation 0: the tails toward +y.
 def dovetail(part="tail", length=60 mm, depth=10 mm, tails=2, angle=10 deg, clearance=0 mm,
              rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
