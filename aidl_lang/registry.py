@@ -86,6 +86,9 @@ class Entry(Record):
 CONSTRUCTION = Arg("construction", "bool", False, "helper geometry: solved, not drawn",
                    kw_only=True)
 
+OVERRUN = Arg("overrun", "bool", False, "the part of a cut that runs past the part's edge so "
+              "it opens cleanly: drawn, left out of its structures' boxes", kw_only=True)
+
 FLEXIBLE = Arg("flexible", "bool", False, "points given by literal coordinates are starting "
                "guesses only (the shape may bend), not a rigid shape", kw_only=True)
 
@@ -137,7 +140,8 @@ DRAWING_MEMBERS = {"outlines": "shapes", "circles": "circles", "paths": "curves"
 
 
 def _p(*variants, doc, members=None):
-    return ("primitive", [tuple(v) + (CONSTRUCTION,) for v in variants], doc, members or {})
+    return ("primitive", [tuple(v) + (CONSTRUCTION, OVERRUN) for v in variants], doc,
+            members or {})
 
 
 def _c(*variants, doc, cat="constraint", varargs=False):

@@ -44,8 +44,9 @@ def nut_trap(size=3, clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
 # laser-cut boxes). For a screw of `size`: a slot as wide as the medium clearance hole running
 # `length` from the edge (the mouth at (cx, cy), running toward -y when
 # `rotation` is 0), crossed by a pocket for the nut (across flats wide, nut
-# thickness deep plus `clearance`) at `nut_depth` from the edge. Members:
-# `slot`, `nut` (Rectangles).
+# thickness deep plus `clearance`) at `nut_depth` from the edge; the slot's
+# run 1 mm past the edge, `overrun`, counts in no box. Members: `slot` (within
+# the panel), `overrun`, `nut` (Rectangles).
 # Anchor: (cx, cy) is the middle of its mouth on the edge; rotation 0: the slot runs toward -y.
 def t_slot(size=3, length=12 mm, nut_depth=6 mm, clearance=0.1 mm, rotation=0 deg,
            cx=0 mm, cy=0 mm) -> hole {
@@ -53,11 +54,14 @@ def t_slot(size=3, length=12 mm, nut_depth=6 mm, clearance=0.1 mm, rotation=0 de
     assert len(found) == 1, "metric sizes are 2, 2.5, 3, 4, 5, 6 and 8 (M2 to M8)"
     i = found[0] if len(found) == 1 else 2  # (after the error above: go on as M3)
     assert nut_depth + nut_thickness[i] / 2 < length, "the nut pocket must end before the slot does"
-    slot = Rectangle(center=(cx + sin(rotation) * (length - 1 mm) / 2, cy - cos(rotation) * (length - 1 mm) / 2),
-                     width=clearance_medium[i], height=length + 1 mm, rotation=rotation)
+    slot = Rectangle(center=(cx + sin(rotation) * length / 2, cy - cos(rotation) * length / 2),
+                     width=clearance_medium[i], height=length, rotation=rotation)
+    overrun = Rectangle(center=(cx + sin(rotation) * (length - 1 mm) / 2, cy - cos(rotation) * (length - 1 mm) / 2),
+                        width=clearance_medium[i], height=length + 1 mm, rotation=rotation, overrun=true)
     nut = Rectangle(center=(cx + sin(rotation) * nut_depth, cy - cos(rotation) * nut_depth),
                     width=nut_across_flats[i] + clearance, height=nut_thickness[i] + clearance,
                     rotation=rotation)
     Fixed(slot.center)
+    Fixed(overrun.center)
     Fixed(nut.center)
 }

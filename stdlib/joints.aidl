@@ -142,22 +142,31 @@ def finger_box(length=120 mm, depth=80 mm, height=50 mm, thickness=3 mm,
 # `t_slot` (a `dovetail`'s line through (cx, cy) is where its tails start, the
 # socket panel's edge: the socket panel lies above it, the tail panel reaches
 # `depth` across it). Each says its point in its `Anchor:` line. A cut that
-# opens an edge runs 1 mm past it, so it opens cleanly.
+# opens an edge runs 1 mm past it, so it opens cleanly: that run is drawn as
+# the member `overrun` (`overrun=true`), which counts in no box, so the box a
+# relation reads is the cut within the part (`AlignTop(slot, panel)` of a
+# 30 mm `cross_halving` cuts 30 mm deep).
 
 import "std/fasteners.aidl"
 
 # A cross-halving slot: panels slotted halfway into each other crosswise.
 # From the mouth at (cx, cy) on the edge it runs `depth` mm into the panel,
 # `thickness` + `clearance` wide; cut one into each panel, the two depths
-# adding up to the overlap. Member: `cut`.
+# adding up to the overlap. Members: `cut` (within the panel: the box a
+# relation reads), `overrun` (the cut run 1 mm past the edge: drawn, in no box).
 # Anchor: (cx, cy) is the middle of its mouth on the edge; rotation 0: the slot runs toward -y.
 def cross_halving(depth=20 mm, thickness=3 mm, clearance=0 mm, rotation=0 deg,
                   cx=0 mm, cy=0 mm) -> hole {
     assert depth > 0 mm and thickness + clearance > 0 mm, "the slot needs a depth and a width"
-    v = (1 mm - depth) / 2
+    v = -depth / 2
     cut = Rectangle(center=(cx - v * sin(rotation), cy + v * cos(rotation)),
-                    width=thickness + clearance, height=depth + 1 mm, rotation=rotation)
+                    width=thickness + clearance, height=depth, rotation=rotation)
+    vo = (1 mm - depth) / 2
+    overrun = Rectangle(center=(cx - vo * sin(rotation), cy + vo * cos(rotation)),
+                        width=thickness + clearance, height=depth + 1 mm, rotation=rotation,
+                        overrun=true)
     Fixed(cut)
+    Fixed(overrun)
     Fixed(self)
 }
 
@@ -166,7 +175,8 @@ def cross_halving(depth=20 mm, thickness=3 mm, clearance=0 mm, rotation=0 deg,
 # number of equal segments at least `finger` wide (at least 3 while they stay
 # `thickness` wide); every second one, from the first when `start` is "gap",
 # is cut `thickness` deep, so a "tab" edge mates a "gap" edge of the same
-# length at a corner. Member: `gap`.
+# length at a corner. Members: `gap` (within the panel: the box a relation
+# reads), `overrun` (each run 1 mm past the edges: drawn, in no box).
 # Anchor: (cx, cy) is the middle of the edge; rotation 0: the edge along x, the cuts toward -y.
 def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotation=0 deg,
                 cx=0 mm, cy=0 mm) -> hole {
@@ -181,13 +191,20 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
     s = sin(rotation)
     for i in range(n) {
         if (start == "gap") == (i % 2 == 0) {
-            lo = -length / 2 + i * w - (1 mm if i == 0 else 0 mm)
-            hi = -length / 2 + (i + 1) * w + (1 mm if i == n - 1 else 0 mm)
+            lo = -length / 2 + i * w
+            hi = -length / 2 + (i + 1) * w
+            u = (lo + hi) / 2
+            v = -t / 2
+            gap = Rectangle(center=(cx + u * c - v * s, cy + u * s + v * c), width=hi - lo,
+                            height=t, rotation=rotation)
+            Fixed(gap)
+            lo = lo - (1 mm if i == 0 else 0 mm)
+            hi = hi + (1 mm if i == n - 1 else 0 mm)
             u = (lo + hi) / 2
             v = (1 mm - t) / 2
-            gap = Rectangle(center=(cx + u * c - v * s, cy + u * s + v * c), width=hi - lo,
-                            height=t + 1 mm, rotation=rotation)
-            Fixed(gap)
+            overrun = Rectangle(center=(cx + u * c - v * s, cy + u * s + v * c), width=hi - lo,
+                                height=t + 1 mm, rotation=rotation, overrun=true)
+            Fixed(overrun)
         }
     }
     Fixed(self)
@@ -201,7 +218,8 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
 # clearance hole for each screw, centred on the line through (cx, cy) where the
 # tab panel's middle stands. Screws up to `thickness` + 4 x `screw` mm long;
 # `screw=0` leaves them out (a glued or pressed joint).
-# Members: `gap`, `nut`, `slot`, `bolt`.
+# Members: `gap` (within the panel), `overrun` (each gap run 1 mm past the
+# edges: drawn, in no box), `nut`, `slot`, `bolt`.
 # Anchor: (cx, cy) is the middle of the edge (part "slot": of the slots); rotation 0: the edge along x, the tabs toward -y.
 def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, screw=3,
                  clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
@@ -215,13 +233,20 @@ def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, sc
     size = screw * 1 mm
     if part == "tab" {
         for i in range(tabs + 1) {
-            lo = -length / 2 - 1 mm if i == 0 else -length / 2 + (i - 0.5) * p + tab / 2
-            hi = length / 2 + 1 mm if i == tabs else -length / 2 + (i + 0.5) * p - tab / 2
+            lo = -length / 2 if i == 0 else -length / 2 + (i - 0.5) * p + tab / 2
+            hi = length / 2 if i == tabs else -length / 2 + (i + 0.5) * p - tab / 2
+            u = (lo + hi) / 2
+            v = -t / 2
+            gap = Rectangle(center=(cx + u * c - v * s, cy + u * s + v * c), width=hi - lo,
+                            height=t, rotation=rotation)
+            Fixed(gap)
+            lo = lo - (1 mm if i == 0 else 0 mm)
+            hi = hi + (1 mm if i == tabs else 0 mm)
             u = (lo + hi) / 2
             v = (1 mm - t) / 2
-            gap = Rectangle(center=(cx + u * c - v * s, cy + u * s + v * c), width=hi - lo,
-                            height=t + 1 mm, rotation=rotation)
-            Fixed(gap)
+            overrun = Rectangle(center=(cx + u * c - v * s, cy + u * s + v * c), width=hi - lo,
+                                height=t + 1 mm, rotation=rotation, overrun=true)
+            Fixed(overrun)
         }
         for k in range(1, tabs if screw > 0 else 1) {
             u = -length / 2 + k * p
@@ -250,7 +275,8 @@ def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, sc
 # `depth` beyond it, `length` long), `part` "tail" leaves `tails` tails that
 # widen at `angle` toward their tips (the tail panel reaches across the band);
 # "socket" cuts those tails, `clearance` wider, out of the mate (which starts
-# at the line). Member: `cut`.
+# at the line). Members: `cut` (within the panel: the box a relation reads),
+# `overrun` (each cut run 1 mm past the edges: drawn, in no box).
 # Anchor: (cx, cy) is the middle of the tails' roots (the socket panel's edge); rotation 0: the tails toward +y.
 def dovetail(part="tail", length=60 mm, depth=10 mm, tails=2, angle=10 deg, clearance=0 mm,
              rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
@@ -268,13 +294,20 @@ def dovetail(part="tail", length=60 mm, depth=10 mm, tails=2, angle=10 deg, clea
             m = -length / 2 + i * p
             a0 = p / 4 + d / 2 * k  # half width at the line (v = 0)
             a1 = p / 4 - d / 2 * k  # half width at the tips (v = d)
-            l0 = -length / 2 - 1 mm if i == 0 else m - a0
-            l1 = -length / 2 - 1 mm if i == 0 else m - a1
-            r0 = length / 2 + 1 mm if i == tails else m + a0
-            r1 = length / 2 + 1 mm if i == tails else m + a1
-            uv = [(l0, 0 mm), (r0, 0 mm), (r1, d), (r1, d + 1 mm), (l1, d + 1 mm), (l1, d)]
+            l0 = -length / 2 if i == 0 else m - a0
+            l1 = -length / 2 if i == 0 else m - a1
+            r0 = length / 2 if i == tails else m + a0
+            r1 = length / 2 if i == tails else m + a1
+            uv = [(l0, 0 mm), (r0, 0 mm), (r1, d), (l1, d)]
             cut = Polygon([(cx + q[0] * c - q[1] * s, cy + q[0] * s + q[1] * c) for q in uv])
             Fixed(cut)
+            e0 = 1 mm if i == 0 else 0 mm
+            e1 = 1 mm if i == tails else 0 mm
+            uv = [(l0 - e0, 0 mm), (r0 + e1, 0 mm), (r1 + e1, d), (r1 + e1, d + 1 mm),
+                  (l1 - e0, d + 1 mm), (l1 - e0, d)]
+            overrun = Polygon([(cx + q[0] * c - q[1] * s, cy + q[0] * s + q[1] * c) for q in uv],
+                              overrun=true)
+            Fixed(overrun)
         }
     } else {
         # the tails, `clearance` wider, open past the mate's edge at the line
@@ -282,9 +315,13 @@ def dovetail(part="tail", length=60 mm, depth=10 mm, tails=2, angle=10 deg, clea
             m = -length / 2 + (i + 0.5) * p
             b0 = p / 4 - d / 2 * k + clearance / 2
             b1 = p / 4 + d / 2 * k + clearance / 2
-            uv = [(m - b0, -1 mm), (m + b0, -1 mm), (m + b0, 0 mm), (m + b1, d), (m - b1, d), (m - b0, 0 mm)]
+            uv = [(m - b0, 0 mm), (m + b0, 0 mm), (m + b1, d), (m - b1, d)]
             cut = Polygon([(cx + q[0] * c - q[1] * s, cy + q[0] * s + q[1] * c) for q in uv])
             Fixed(cut)
+            uv = [(m - b0, -1 mm), (m + b0, -1 mm), (m + b0, 0 mm), (m + b1, d), (m - b1, d), (m - b0, 0 mm)]
+            overrun = Polygon([(cx + q[0] * c - q[1] * s, cy + q[0] * s + q[1] * c) for q in uv],
+                              overrun=true)
+            Fixed(overrun)
         }
     }
     Fixed(self)

@@ -293,6 +293,24 @@ def read_svg_loops(path, group: str = "cut") -> list[list]:
     return loops
 
 
+def loop_box(segments) -> tuple[float, float, float, float]:
+    """(left, bottom, right, top) of ``segments`` (mm): their ends, and each arc's extreme
+    points where its sweep passes them."""
+    xs, ys = [], []
+    for sg in segments:
+        for p in (sg.start, sg.end):
+            xs.append(p[0])
+            ys.append(p[1])
+        if isinstance(sg, A):
+            a0 = math.atan2(sg.start[1] - sg.center[1], sg.start[0] - sg.center[0])
+            for k in range(4):
+                if ((k * math.pi / 2 - a0) * math.copysign(1, sg.sweep)) % (2 * math.pi) \
+                        <= abs(sg.sweep):
+                    xs.append(sg.center[0] + sg.radius * math.cos(k * math.pi / 2))
+                    ys.append(sg.center[1] + sg.radius * math.sin(k * math.pi / 2))
+    return min(xs), min(ys), max(xs), max(ys)
+
+
 # ------------------------------------------------------------------ checks
 def kink(a, b) -> float:
     """The angle (radians, 0..pi) by which the direction of travel turns where ``a`` ends and

@@ -196,9 +196,12 @@ def test_dof_summary_says_what_the_freedom_is_and_agrees_with_dof():
     m = re.search(r"(\d+) degrees of freedom left \(free: (\d+) where the parts sit and (\d+) "
                   r"of shapes or parts that nothing places, which stay where written "
                   r"\(harmless\); nothing slides against its part\)", stand)
-    assert m and int(m.group(1)) == int(m.group(2)) + int(m.group(3)) == 13
+    # 14 (13 until issue 111: the foot's box held its slots' 1 mm overrun, so
+    # `CenterInside(cable, stand.foot)` read the slots' places and set the cable 0.5 mm off
+    # the foot's centre; the overrun counts in no box now)
+    assert m and int(m.group(1)) == int(m.group(2)) + int(m.group(3)) == 14
     rows = [l.split() for l in stand.splitlines() if l.startswith("phone_stand")]
-    assert sum(int(r[2]) for r in rows) == 13          # the table's dof add up to the count
+    assert sum(int(r[2]) for r in rows) == 14          # the table's dof add up to the count
     last = stand.strip().splitlines()[-1]
     assert last.startswith("floating: ") and "not what slides" in last
     assert last.endswith(stand[stand.index("(free: ") + 7:stand.index("), see --dof")])

@@ -40,23 +40,10 @@ def _svg_box(r, tmp_path) -> tuple:
     """The drawn part's box read back from the SVG the writer makes, by svgelements
     (tests/exact_geometry.py): (left, bottom, right, top), mm; an arc's extremes where its
     sweep passes them."""
-    from exact_geometry import A, read_svg_loops
+    from exact_geometry import loop_box, read_svg_loops
     path = tmp_path / "ring.svg"
     path.write_text(r.to_svg(), encoding="utf-8")
-    xs, ys = [], []
-    for loop in read_svg_loops(path):
-        for sg in loop:
-            for p in (sg.start, sg.end):
-                xs.append(p[0])
-                ys.append(p[1])
-            if isinstance(sg, A):
-                a0 = math.atan2(sg.start[1] - sg.center[1], sg.start[0] - sg.center[0])
-                for k in range(4):
-                    if ((k * math.pi / 2 - a0) * math.copysign(1, sg.sweep)) % (2 * math.pi) \
-                            <= abs(sg.sweep):
-                        xs.append(sg.center[0] + sg.radius * math.cos(k * math.pi / 2))
-                        ys.append(sg.center[1] + sg.radius * math.sin(k * math.pi / 2))
-    return min(xs), min(ys), max(xs), max(ys)
+    return loop_box([sg for loop in read_svg_loops(path) for sg in loop])
 
 
 def test_the_issues_ring_member_is_its_drawn_width(tmp_path):

@@ -114,9 +114,10 @@ def test_a_placement_beside_a_templates_own_hold_is_not_redundant():
     W0401 blame the user's line only, "drop `CenterInside(h, body)`: the template holds it
     already").  The hold is where the instance starts, which the parent's constraints
     override (the solver moves the instance; the freedom count does not count the hold):
-    dropped as told, the slot went back 9.5 mm (issue 109, law 4).  Nothing placing an
-    instance is redundant with its template's hold, made where the centring puts it
-    (`cy=9.5 mm`) or not; a restatement of the template's own geometry still is."""
+    dropped as told, the slot went back 10 mm (9.5 until issue 111 left the 1 mm overrun out
+    of the box; issue 109, law 4).  Nothing placing an instance is redundant with its
+    template's hold, made where the centring puts it (`cy=10 mm`) or not; a restatement of
+    the template's own geometry still is."""
     src = """import "std/joints.aidl"
 
 solid plate {
@@ -126,14 +127,14 @@ solid plate {
     CenterInside(h, body)
 }
 """
-    for text in (src, src.replace("cross_halving()", "cross_halving(cy=9.5 mm)")):
+    for text in (src, src.replace("cross_halving()", "cross_halving(cy=10 mm)")):
         r = checked(text)
         assert r.ok and not [d for d in r.sink.items if d.code == "W0401"], \
             [d.message for d in r.sink.items]
         assert max(map(abs, r.value("plate.h.cut.center").mm)) < 1e-9
     r = checked(src.replace("    CenterInside(h, body)\n", "    CenterInside(h, body)\n"
                             "    VerticalDistance(h.cut.bottom.midpoint, h.cut.top.midpoint, "
-                            "21 mm)\n"))
+                            "20 mm)\n"))
     (w,) = [d for d in r.sink.items if d.code == "W0401"]
     assert w.span.line == 8 and "follows from the shape of `h.cut`" in w.message
 

@@ -24,7 +24,6 @@ from aidl_lang.library.reference import ANCHOR_LINE, _in_stdlib, stdlib_template
 
 TOL = 1e-6
 AT = (7.0, -5.0)
-OVERRUN = 1.0    # std/joints.aidl: "A cut that opens an edge runs 1 mm past it"
 TEMPLATES = stdlib_templates()
 # fewer teeth than the defaults where they cost the most (the anchor holds for any)
 CHEAP = {"planetary": ["sun=12", "planet=12", "ring=36", "planets=2"],
@@ -74,21 +73,22 @@ def _circumcentre(a, b, c):
     return ux, uy
 
 
-def _edge_middle(m: Measured, lift: float):
+def _edge_middle(m: Measured):
     b = m.box()
-    return ((b[0] + b[2]) / 2, b[3] - lift)
+    return ((b[0] + b[2]) / 2, b[3])
 
 
 # every point an Anchor line may name, and how it is measured (at rotation 0)
 POINTS = [
     (r"the centre of its box|of the slots", lambda m, g: _centre(m.box())),
     (r"the centre of `([\w.\[\]]+)`", lambda m, g: _member_centre(m, g[1])),
-    # the cut opens the edge: its box reaches OVERRUN past it
-    (r"the middle of (?:its mouth on )?the edge", lambda m, g: _edge_middle(m, OVERRUN)),
+    # the cut opens the edge: its box ends there (its 1 mm `overrun` past the edge counts in
+    # no box, issue 111)
+    (r"the middle of (?:its mouth on )?the edge", lambda m, g: _edge_middle(m)),
     (r"the middle of its bottom edge", lambda m, g: (_centre(m.box())[0], m.box()[1])),
-    # the tail part's cuts start on the line, the socket's OVERRUN before it
+    # both parts' cuts start on the line (the socket's 1 mm before it is its `overrun`)
     (r"the middle of the tails' roots \(the socket panel's edge\)",
-     lambda m, g: (_centre(m.box())[0], m.box()[1] + (OVERRUN if m.part == "socket" else 0))),
+     lambda m, g: (_centre(m.box())[0], m.box()[1])),
     (r"the middle of the `(\w+)`s' bottom edge",
      lambda m, g: (_centre(m.cut_box(g[1]))[0], m.cut_box(g[1])[1])),
     (r"the centre of the circle its baselines follow",

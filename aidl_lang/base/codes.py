@@ -639,9 +639,12 @@ put a drawing that is only an illustration at assembly level, beside the part.
 The share off the material is said as a percentage of the drawing's length ("under 1%": a
 letter's stroke over a screw hole); across a hole, the hint names the holes it crosses.
 Off the outline, the hint says where the mark leaves the material (x, y); where the mark
-reaches past the box of the part's largest own shape and fits in it, it also writes the
+reaches past the box of the shape it is drawn over and fits in it, it also writes the
 constraint that sets it there clear of the cut, `Inside(d.mark, body, margin=0.5 mm)` (a mark
-that touches the cut is W0516), and a mark larger than that shape is told to shrink.
+that touches the cut is W0516), and a mark larger than that shape is told to shrink. That
+shape is the one of the part (or of a solid within it, `head.skull`) that holds most of the
+mark, the nearest among equals: a whisker off a cat's head is told `Inside(face.w2,
+head.skull, ...)`, not the hips, the part's largest shape (issue 111).
 An engraved Circle or Arc that crosses the outline or a hole (a ring that meets a notch in the
 rim) is offered the arc that stops at the cut: the longest arc of it on the material, 1 mm
 clear of the cut, written as the `Arc(center=..., radius=..., start_angle=..., end_angle=...)`

@@ -193,6 +193,8 @@ class Calls:
         # who moves between shapes of one structure: what each argument reads
         reach = bbox_reach(conv.values()) if len(owners) == 1 else None
         self._add_constraint(cname, eqs, node.span, None, owners, args, reach)
+        if args is not None:
+            self._helper_reach(conv.values(), owners)
         return None
 
     def _rebind(self, name: str, value) -> None:

@@ -795,6 +795,17 @@ class Statements(Asserts):
         s.constraints.append(c)
         self.model.constraints.append(c)
 
+    def _helper_reach(self, vals, owners) -> None:
+        """``Constraint.arg_reach`` of the constraint just added, relating structures
+        ``owners`` (more than one), when one of them is the structure it is written in and
+        that holds construction geometry: the parameters each of ``vals`` reads, so the solve
+        holds a helper another structure is placed on (issue 111:
+        :func:`aidl_lang.solver.core.tree._held_helpers`)."""
+        c = self.model.constraints[-1]
+        s = c.owner
+        if s in owners and any(g.construction for g in s.geometry):
+            c.arg_reach = bbox_reach(vals)
+
     def _check_subtree(self, owners, span, s: Structure) -> None:
         bad = [o for o in owners if not o.is_within(s)]
         if bad:
@@ -826,6 +837,8 @@ class Statements(Asserts):
             self._add_constraint("equation", eqs, e.span, None, owners,
                                  [owners_of(l), owners_of(r)] if len(owners) > 1 else None,
                                  bbox_reach((l, r)) if len(owners) == 1 else None)
+            if len(owners) > 1:
+                self._helper_reach((l, r), owners)
 
     def _sides_of(self, op, l, r, span, eq):
         if isinstance(l, Q) and isinstance(r, Q):

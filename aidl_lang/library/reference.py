@@ -806,7 +806,9 @@ Every shape and structure has `.bb`, its axis-aligned bounding box: `left`, `rig
 drawn, within 1e-6 mm: a RoundedRectangle's arcs, a stencil's openings, an `Inset`'s, a
 `Shell`'s, an `Intersect`'s outline (not its shape's box grown). A structure's box covers all
 its geometry and descendants, holes included: a hole that pokes out past the outline widens it
-(construction geometry is left out). For the material only, use a shape's box
+(construction geometry is left out, and so is a shape drawn with `overrun=true`, a cut's run
+past the edge: a joint template's box is its cut within the panel). For the material only, use
+a shape's box
 (`plate.body.bb`). Structural relations (Above, Inside, ...) work on boxes. `self` is the
 current structure: `CenterInside(bore, self)`, `self.bb.width <= 60`.
 """, ["bbox", "bounding box", "boundingbox", "self", "box", "members"]),

@@ -62,7 +62,8 @@ constraints instead of computing coordinates. A shape given by literal coordinat
 may only use names defined above it; constraint statements may name geometry defined later.
 A child structure's geometry is `child.name`, the current one is `self`; every geometry and
 structure has `.bb` (bounding box). A structure's box covers all it holds, holes included (a
-hole poking past the edge widens it; construction geometry does not count): for the material
+hole poking past the edge widens it; construction geometry and `overrun=true` shapes do not
+count): for the material
 alone use a shape's box (`plate.body.bb`).
 Rules: a constraint may only refer to its own structure's subtree; geometry may only reuse
 points of its own structure. Booleans: a solid is the union of its shapes and solid children

@@ -14,5 +14,5 @@ solid bracket {
     }
     joint = t_slot(size=4, length=14 mm, nut_depth=7 mm, cy=15 mm)
     joint.slot.center.x == 0 mm
-    joint.bb.top == body.bb.top + 1 mm
+    AlignTop(joint, body)    # the slot's mouth on the edge: 14 mm into the bracket
 }

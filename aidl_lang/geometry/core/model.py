@@ -298,6 +298,10 @@ class Constraint(Record):
         # relating two or more shapes of its own structure; else None): between shapes too,
         # the first-named moves to the later ones (aidl_lang.solver.core.tree._shape_ranks)
         self.reach = None
+        # (``arg_reach``, set only on a constraint relating structures, one of them its own
+        # structure with construction geometry: the parameters each argument reads, so a
+        # helper named after another structure's shape is held while that moves,
+        # aidl_lang.solver.core.tree._held_helpers)
 
     def describe(self) -> str:
         return self.text or self.kind

@@ -255,6 +255,8 @@ def _carry_relations(ctx, target, cl) -> None:
                 c.args = [frozenset(objs.get(o, o) for o in a) for a in c.args]
             if c.reach is not None:
                 c.reach = [frozenset(vmap.get(v, v) for v in r) for r in c.reach]
+            if c.__dict__.get("arg_reach") is not None:
+                c.arg_reach = [frozenset(vmap.get(v, v) for v in r) for r in c.arg_reach]
         s = s.parent
 
 

@@ -3,8 +3,9 @@
 ``s.bb.left`` evaluates to a :class:`BBTerm`; it is expanded into ``min``/``max`` over the
 extreme points of the target's geometry only when the constraint is compiled, right before
 solving, once the whole tree is known.  A structure's box covers its own geometry and all its
-descendants' (construction geometry excluded), except descendants whose own box appears in the
-same constraint: ``self.bb.top == self.lid.bb.top`` aligns the lid with the rest of the body.
+descendants' (construction geometry and a cut's ``overrun`` excluded), except descendants
+whose own box appears in the same constraint: ``self.bb.top == self.lid.bb.top`` aligns the
+lid with the rest of the body.
 """
 from __future__ import annotations
 
@@ -193,10 +194,13 @@ def _candidates(target, frame, x, exclude: set, offs: dict) -> tuple[list, list]
         # the original of a structure changed in place (`plaque_original`, its shapes made
         # construction by Scale, Translate, Flip) keeps its own box: its drawn shapes count
         # in it, and in nothing around it
+        # (a shape drawn with `overrun=true`, a cut's run past the part's edge, counts in no
+        # structure's box: aligning a slot to an edge gives the depth asked, issue 111)
         kept = target.__dict__.get("replaced", False)
         for s in _subtree(target, exclude, top=target):
             for g in s.geometry:
-                if not g.construction or kept and g.__dict__.get("replaced", False):
+                if (not g.construction or kept and g.__dict__.get("replaced", False)) \
+                        and not g.data.get("overrun"):
                     _geom_candidates(g, frame, x, xs, ys, offs)
     else:
         _geom_candidates(target, frame, x, xs, ys, offs)

@@ -26,6 +26,10 @@ def build(ctx, kind: str, args: dict, span) -> Geometry:
     g.pattern_original = None
     fn = _BUILD[kind]
     fn(ctx, g, args)
+    if args.get("overrun"):
+        # drawn, left out of its structures' boxes (relations/bbox.py): a cut's run past the
+        # part's edge (issue 111)
+        g.data["overrun"] = True
     ctx.struct.geometry.append(g)
     return g
 

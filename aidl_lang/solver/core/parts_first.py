@@ -16,8 +16,8 @@ import numpy as np
 from ...geometry.core.model import Structure
 from .attempts import Attempt
 from .holds import row_vars
-from .tree import (_helpers, _levels, _part_shape, _references, _shape_ranks, _unknowns,
-                   _who_moves)
+from .tree import (_held_helpers, _helpers, _levels, _part_shape, _references, _shape_ranks,
+                   _unknowns, _who_moves)
 
 
 # Newton steps per round of a rank's shapes stage (:meth:`PartsFirst._place_rank`): it
@@ -347,7 +347,7 @@ class PartsFirst:
                 for g in s.geometry:       # about a construction line the solve turns)
                     if g.construction or g.__dict__.get("copied"):
                         _unknowns(g, cons)
-                cons = (cons & mine) - drawn
+                cons = (cons & mine) - drawn - _held_helpers(s, made)
                 helpers = [i for i in first if i in cons]
                 first = [i for i in first if i not in cons]
         held = set(first)

@@ -180,6 +180,48 @@ def _helpers(s: Structure) -> list:
     return [g for g in s.geometry if g.construction]
 
 
+def _held_helpers(s: Structure, helpers: list) -> set:
+    """The unknowns of those of ``helpers`` (``s``'s construction geometry) that the
+    features stages hold like the part (issue 111): a helper is a reference when a written
+    constraint of ``s`` names a child's geometry first and the helper after it
+    (`Midpoint(tab.r.bottom.midpoint, axis)`: the tab moves to the axis, as the first-named
+    does; the axis, moved 4.6 mm of the way, left a tail drawn at its coordinates behind),
+    and nothing else of ``s`` names it: a helper also related to the part or to another
+    shape, or named first, moves as before (a bolt square placed on its plate)."""
+    if not helpers:
+        return set()
+    units = []
+    for g in helpers:
+        vs: set = set()
+        _unknowns(g, vs)
+        units.append(vs)
+    ref = [False] * len(helpers)
+    other = [False] * len(helpers)
+    for c in s.constraints:
+        ar = c.__dict__.get("arg_reach")
+        hit = [i for i, vs in enumerate(units)
+               if ar is not None and any(r & vs for r in ar)
+               or c.reach is not None and any(r & vs for r in c.reach)]
+        if not hit:
+            continue
+        if ar is None or c.args is None or len(ar) != len(c.args):
+            for i in hit:
+                other[i] = True
+            continue
+        first = c.args[0]
+        child_first = bool(first) and s not in first and not (ar[0] & set().union(*units))
+        for i in hit:
+            if child_first and not any(r & units[i] for r in ar[:1]):
+                ref[i] = True
+            else:
+                other[i] = True
+    out: set = set()
+    for i, vs in enumerate(units):
+        if ref[i] and not other[i]:
+            out |= vs
+    return out
+
+
 def _unknowns(g, out: set) -> None:
     """Add the parameter indices of geometry ``g`` (its points, scalars and parts) to
     ``out``."""

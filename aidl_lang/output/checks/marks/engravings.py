@@ -466,29 +466,59 @@ def _off_outline_hint(d: Drawing, part, g, pts: np.ndarray, off: np.ndarray) -> 
     was offered for a knight's mane crossing the outline inside the box (which no box
     constraint mends), and, made as `Inside(d.mark, body)`, set the mark on the cut edge
     (W0516 again); made with `self` it conflicted (E0401)."""
-    from ..common import _solids_within
     label, prefix = getattr(g, "label", ""), part.path + "."
     p = off[int(np.argmin(np.hypot(*(off - off.mean(axis=0)).T)))]
     hint = (f"it leaves the material at about ({p[0]:.2f}, {p[1]:.2f}): move, shrink or "
             f"redraw `{label.rsplit('.', 1)[-1]}` so that it lies on the material, or move "
             "the part's edge")
-    own = [(f.area(), geo, f.bounds()) for st, fs in _solids_within(d, part) if st is part
-           for geo, f in fs if f is not None and not f.is_empty() and geo.name]
-    if not own or not label.startswith(prefix):
+    if not label.startswith(prefix):
         return hint
-    _, body, (x0, y0, x1, y1) = max(own, key=lambda o: o[0])
+    found = _drawn_over(d, part, pts)
+    if found is None:
+        return hint
+    name, (x0, y0, x1, y1) = found
     lo, hi = off.min(axis=0), off.max(axis=0)
     if not (lo[0] < x0 - ENGRAVE_TOL or lo[1] < y0 - ENGRAVE_TOL or hi[0] > x1 + ENGRAVE_TOL
             or hi[1] > y1 + ENGRAVE_TOL):
         return hint             # it crosses the outline inside the box: no box constraint mends it
     w, h = np.ptp(pts[:, 0]), np.ptp(pts[:, 1])
     if w + 2 * CUT_CLEAR > x1 - x0 or h + 2 * CUT_CLEAR > y1 - y0:
-        return (f"shrink the drawing to fit on `{body.name}`, or move it onto the material "
+        return (f"shrink the drawing to fit on `{name}`, or move it onto the material "
                 f"({hint})")
     mark = label[len(prefix):]
-    return (f"{hint}; or constrain it onto the material: `Inside({mark}, {body.name}, "
-            f"margin={CUT_CLEAR} mm)` in `{part.path}` (its box inside `{body.name}`'s, "
+    return (f"{hint}; or constrain it onto the material: `Inside({mark}, {name}, "
+            f"margin={CUT_CLEAR} mm)` in `{part.path}` (its box inside `{name}`'s, "
             f"{CUT_CLEAR} mm clear of the cut)")
+
+
+def _drawn_over(d: Drawing, part, pts: np.ndarray):
+    """``(name, box)`` of the shape of solid ``part`` an engraving is drawn over (``pts``:
+    its samples, n x 2 mm): among the named shapes of ``part`` and of the solids within it
+    (``head.skull`` of a child solid, named as written in ``part``), the one whose face holds
+    the most samples, the nearest to their middle among equals (or when none holds one); its
+    box (x0, y0, x1, y1), mm.  None: ``part`` has no named shape.  Issue 111: the largest
+    shape was taken, and a cat's whisker off its head was told `Inside(face.w2, haunch)`,
+    which drags it to the hips."""
+    from ..common import _solids_within
+    mid = pts.mean(axis=0)
+    prefix = part.path + "."
+    best, key = None, None
+    for st, fs in _solids_within(d, part):
+        if st is not part and not st.path.startswith(prefix):
+            continue
+        at = "" if st is part else st.path[len(prefix):] + "."
+        for geo, f in fs:
+            if f is None or f.is_empty() or not geo.name:
+                continue
+            x0, y0, x1, y1 = f.bounds()
+            held = int(_inside(pts, _edges([np.asarray(p, dtype=float)
+                                            for p in f.to_polygons()])).sum())
+            far = math.hypot(max(x0 - mid[0], 0.0, mid[0] - x1),
+                             max(y0 - mid[1], 0.0, mid[1] - y1))
+            k = (-held, far)
+            if key is None or k < key:
+                best, key = (at + geo.name, (x0, y0, x1, y1)), k
+    return best
 
 
 ON_CUT = 1 / 3           # of an engraving's samples: more on the outline is engraved over the cut
