@@ -2,7 +2,7 @@
 (:mod:`.font`), held in the text's own frame and placed at the solved position point.
 
 What a font Text keeps in ``g.data``: ``font`` (the :class:`~.font.Face`), ``text``, ``size``
-(the cap height drawn, mm), ``anchor``, ``valign``, ``rotation`` (radians), ``extent`` (the
+(the cap height drawn, mm), ``fill`` (True: its area engraved), ``anchor``, ``valign``, ``rotation`` (radians), ``extent`` (the
 glyphs' true box about the position, turned: ``(x0, x1, y0, y1)`` mm), and for a stencil
 ``bridge`` (mm).  :func:`local_loops` gives its exact loops about the position point, turned
 (outer loops counter-clockwise; glyphs may overlap: the filled area is where the winding is
@@ -28,6 +28,8 @@ def build_font_text(ctx, g, a, const) -> None:
                           hint="choose a heavier style instead, e.g. `font=\"sans:Bold\"` "
                                "or `\"sans:Black\"`")
     g.data["font"] = face
+    if a.get("fill"):
+        g.data["fill"] = True        # a drawing engraves its area (style "fill")
     text, size = g.data["text"], g.data["size"]
     if not size > 0:
         raise F.FontError(f"a Text needs a positive size, got {size:g}")
