@@ -20,6 +20,12 @@ def text_font(interp, conv: dict, s, node, spans) -> None:
                         + (f"\"{spec}\"" if isinstance(spec, str) else type(spec).__name__),
                         at, hint="`font=\"sans\"`, `font=\"serif:Bold\"` or "
                                  "`font=\"fonts/MyFont.ttf\"`")
+    if conv.get("weight") is not None:
+        raise EvalError("E0108", "a Text in a font has the font's own stroke weight: "
+                        "`weight=` is the single-stroke stencil's", spans.get("weight", at),
+                        hint="leave out weight= and choose a heavier or lighter style: "
+                             "`font=\"sans:Bold\"`, `\"sans:Black\"`, `\"sans:Light\"` "
+                             "or a number, `\"sans:650\"`")
     if s.kind not in ("solid", "hole", "drawing"):
         raise EvalError("E0120", f"Text in a font must be in a solid (letters as material), a "
                         f"hole (openings) or a drawing (engraved), not in {s.kind} `{s.name}`",
