@@ -36,7 +36,7 @@ def hatch_lines(loops: list[list], interval: float) -> list[tuple[tuple, tuple]]
     a = np.concatenate(polys)
     b = np.concatenate([np.roll(p, -1, axis=0) for p in polys])
     y0, y1 = float(a[:, 1].min()), float(a[:, 1].max())
-    n = int(math.floor((y1 - y0) / interval)) + 1
+    n = max(1, math.ceil((y1 - y0) / interval - 1e-9))
     if n > MAX_ROWS:
         raise OutputError(f"a fill {y1 - y0:.4g} mm tall at an interval of {interval:g} mm "
                           f"would run {n:,} lines; at most {MAX_ROWS:,}: raise the machine "
