@@ -768,8 +768,8 @@ material; W0507: a web thinner than the minimum wall between cuts. Templates may
       "sheet-level cut", "sheet cut"]),
     "drawing": ("statement", "`drawing NAME { ... }`: engraved lines and text, not filled.", """
 `drawing NAME { ... }`: its shapes are drawn as lines (closed shapes as outlines) and Text as
-single strokes (with `font=`: the letters' outlines), on the `engrave` layer; nothing is filled
-or cut. Text is only allowed in a drawing (a Text with `font=` also in a solid, as material,
+single strokes (with `font=`: the letters' outlines; with `font=` and `fill=true`: the letters'
+area, on a fill layer), on the `engrave` layer; nothing else is filled, nothing is cut. Text is only allowed in a drawing (a Text with `font=` also in a solid, as material,
 and a hole, as openings). Put it inside the solid it marks. A `hole` in a drawing hides the drawing's lines
 (its own and its children's) where it covers them: a shape behind another (`drawing back {
 p = Polygon(...) hole front { q = Polygon(...) } }`); one that hides nothing is W0526.
@@ -960,8 +960,14 @@ DETAILS: dict[str, str] = {
             "position=(0, 0), size=20, font=\"sans:Bold\")` with `rail = Rectangle(center="
             "(word.center.x, -1 mm), width=word.bb.width, height=4 mm)` is one cake topper), "
             "openings in a hole (stencil=true bridges the counters, else W0504 names the "
-            "letters whose counters fall out), engraved outlines in a drawing; .bb is the "
-            "glyphs' true box; a font not found is E0133.",
+            "letters whose counters fall out; it works along= a curve too), engraved "
+            "outlines in a drawing, or with fill=true the letters' area engraved (a name "
+            "sign's filled letters: `drawing name { t = Text(\"ROSA\", position=(0, 0), "
+            "size=15, font=\"sans:Bold\", valign=\"middle\", fill=true) }`): the SVG's "
+            "fill layer, a DXF HATCH, a LightBurn Scan layer, G-code lines fill.interval "
+            "apart (a router refuses it); fill= elsewhere or without font= is E0108. "
+            "weight= is the single-stroke stencil's (E0108 with font=: choose a style). "
+            ".bb is the glyphs' true box; a font not found is E0133.",
     "Star": "tip_radius=r rounds each tip by an arc of radius r tangent to its two sides, as "
             "Fillet rounds a corner (exact arcs; the notches stay sharp); the rounded tip "
             "reaches a little less than outer_radius, r (1 / sin(h) - 1) less for a tip of "

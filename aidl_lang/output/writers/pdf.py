@@ -357,7 +357,7 @@ def _page(c, output: Output, pen: _Pen, win, tiled: bool, where: dict) -> None:
             ops += pen.path(st.segments, st.closed)
         ops.append("S")
     for _, _, loops in fill_regions(output.engrave):   # areas engraved filled: blue, filled
-        ops.append(_rgb(ENGRAVE_RGB).replace("RG", "rg"))
+        ops += [_rgb(ENGRAVE_RGB), _rgb(ENGRAVE_RGB).replace("RG", "rg")]   # blue, not a cut
         for segs in loops:
             ops += pen.path(segs, True)
         ops.append("f")
