@@ -349,3 +349,17 @@ def test_hatch_lines_of_a_square_with_a_hole():
     assert total * 0.5 == pytest.approx(100 - 16)
     assert got[0] == ((0.0, 0.25), (10.0, 0.25)) and got[1][0][0] > got[1][1][0]
     assert not math.isnan(total)
+
+
+def test_the_dxf_imported_again_keeps_the_letters_engraved(sign, tmp_path):
+    """`aidl import` of the DXF reads the FILL layer (as `aidl render` writes it) as a
+    drawing: the letters engraved on the plate, not parts of their own."""
+    from aidl_lang.cli.main import main
+    from aidl_lang.output.writers.dxf import to_dxf
+    (tmp_path / "sign.dxf").write_text(to_dxf(sign.output))
+    assert main(["import", str(tmp_path / "sign.dxf"), "-o", str(tmp_path / "back.aidl")]) == 0
+    text = (tmp_path / "back.aidl").read_text()
+    assert "drawing fill {" in text and "solid fill" not in text
+    assert "countersinks" not in text
+    r = aidl_lang.compile(path=str(tmp_path / "back.aidl"))
+    assert r.ok and len(r.output.parts) == 1
