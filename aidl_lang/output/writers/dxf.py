@@ -206,14 +206,7 @@ def _hatch(msp, loops) -> None:
                 ep.add_spline(control_points=[(x, y) for x, y in ctrl],
                               knot_values=list(knots), degree=deg)
                 continue
-            if isinstance(g, EllipticArc):
-                bs = beziers.ellipse_beziers(g, HATCH_ARC_TOL)
-            elif isinstance(g, Circle):
-                sweep = 2 * math.pi if g.ccw else -2 * math.pi
-                bs = beziers.arc_beziers(Arc(g.center, g.radius, 0.0, sweep), HATCH_ARC_TOL)
-            else:
-                bs = beziers.arc_beziers(g, HATCH_ARC_TOL)
-            for b in bs:
+            for b in beziers.segment_beziers(g, HATCH_ARC_TOL):
                 ep.add_spline(control_points=[tuple(map(float, q)) for q in b],
                               knot_values=[0, 0, 0, 0, 1, 1, 1, 1], degree=3)
 

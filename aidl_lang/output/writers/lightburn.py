@@ -55,7 +55,7 @@ import math
 from xml.sax.saxutils import escape, quoteattr
 
 from ..fabrication import machine as machine_mod
-from ..part.part import Arc, Circle, EllipticArc, Line, Output, Spline
+from ..part.part import Circle, EllipticArc, Line, Output
 from . import beziers
 
 APP_VERSION = "1.7.00"
@@ -87,16 +87,7 @@ def pieces(segments) -> list:
         if isinstance(s, Line):
             out.append(("L", tuple(s.start), tuple(s.end)))
             continue
-        if isinstance(s, Spline):
-            bs = [tuple(tuple(map(float, p)) for p in b) for b in s.spans]
-        elif isinstance(s, EllipticArc):
-            bs = beziers.ellipse_beziers(s, BEZIER_TOL)
-        elif isinstance(s, Circle):
-            sweep = 2 * math.pi if s.ccw else -2 * math.pi
-            bs = beziers.arc_beziers(Arc(s.center, s.radius, 0.0, sweep), BEZIER_TOL)
-        else:
-            bs = beziers.arc_beziers(s, BEZIER_TOL)
-        out += [("B",) + tuple(b) for b in bs]
+        out += [("B",) + tuple(b) for b in beziers.segment_beziers(s, BEZIER_TOL)]
     return out
 
 
