@@ -769,7 +769,8 @@ material; W0507: a web thinner than the minimum wall between cuts. Templates may
     "drawing": ("statement", "`drawing NAME { ... }`: engraved lines and text, not filled.", """
 `drawing NAME { ... }`: its shapes are drawn as lines (closed shapes as outlines) and Text as
 single strokes (with `font=`: the letters' outlines; with `font=` and `fill=true`: the letters'
-area, on a fill layer), on the `engrave` layer; nothing else is filled, nothing is cut. Text is only allowed in a drawing (a Text with `font=` also in a solid, as material,
+area, on a fill layer), on the `engrave` layer; nothing else is filled, nothing is cut. Text
+is only allowed in a drawing (a Text with `font=` also in a solid, as material,
 and a hole, as openings). Put it inside the solid it marks. A `hole` in a drawing hides the drawing's lines
 (its own and its children's) where it covers them: a shape behind another (`drawing back {
 p = Polygon(...) hole front { q = Polygon(...) } }`); one that hides nothing is W0526.

@@ -2,9 +2,9 @@
 (:mod:`.font`), held in the text's own frame and placed at the solved position point.
 
 What a font Text keeps in ``g.data``: ``font`` (the :class:`~.font.Face`), ``text``, ``size``
-(the cap height drawn, mm), ``fill`` (True: its area engraved), ``anchor``, ``valign``, ``rotation`` (radians), ``extent`` (the
-glyphs' true box about the position, turned: ``(x0, x1, y0, y1)`` mm), and for a stencil
-``bridge`` (mm).  :func:`local_loops` gives its exact loops about the position point, turned
+(the cap height drawn, mm), ``fill`` (True: its area engraved), ``anchor``, ``valign``,
+``rotation`` (radians), ``extent`` (the glyphs' true box about the position, turned: ``(x0,
+x1, y0, y1)`` mm), and for a stencil ``bridge`` (mm).  :func:`local_loops` gives its exact loops about the position point, turned
 (outer loops counter-clockwise; glyphs may overlap: the filled area is where the winding is
 positive); :func:`bridges` the stencil's bridges over each counter.
 """
