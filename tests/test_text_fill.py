@@ -363,3 +363,14 @@ def test_the_dxf_imported_again_keeps_the_letters_engraved(sign, tmp_path):
     assert "countersinks" not in text
     r = aidl_lang.compile(path=str(tmp_path / "back.aidl"))
     assert r.ok and len(r.output.parts) == 1
+
+
+def test_hpgl_cuts_the_letters_outlines(sign):
+    """HPGL (a vinyl cutter's) cuts the filled letters' loops, one path each, re-read by
+    ezhpgl and checked as every HPGL (tests/test_hpgl.py's check)."""
+    from test_hpgl import check_hpgl
+    from aidl_lang.output.writers.hpgl import to_hpgl
+    from aidl_lang.output.fabrication.toolpath import plan
+    cuts = plan(sign.output)
+    assert sum(c.operation == "fill" and c.closed for c in cuts) == len(_fills(sign))
+    check_hpgl(sign.output, to_hpgl(sign.output, None).encode())
