@@ -684,8 +684,10 @@ cut and travel length and the job time. `--machine FILE` takes a TOML profile (e
 optional; `--machine router` or `plotter`: the built-in ones; default the built-in laser):
 `kind` (laser | router | plotter), `max_power` (S of 100 %), `laser_mode` (M4 | M3),
 `travel_speed`, `tool_diameter`, `safe_height`, `tabs`, `tab_width`, `tab_height`,
-`lead_in`, `units`, and tables `[engrave]`, `[score]`, `[cut_inner]`, `[cut_outer]` with
-`power` (%), `speed` (mm/min), `passes`, `depth_per_pass`, `plunge`, `spindle`. A router's
+`lead_in`, `units`, and tables `[engrave]`, `[score]`, `[cut_inner]`, `[cut_outer]`, `[fill]`
+with `power` (%), `speed` (mm/min), `passes`, `depth_per_pass`, `plunge`, `spindle`, and
+`interval` (mm between a fill's lines: `Text(..., font=, fill=true)` is scanned in parallel
+lines, letter by letter, after the engraving; a router refuses a fill). A router's
 path is offset by the tool radius, down `depth_per_pass` at a time to the program's
 `thickness`. The program's `kerf` and `thickness` are used; a profile stating others is
 warned about. `--layout sheet -o cut.gcode` writes one program per sheet; parts drawn over each
