@@ -342,13 +342,17 @@ _DEFS = {
                 A("font", "string", None, "the letters as the closed outlines of a font: "
                   "\"sans\", \"serif\", \"Family:Bold\" or a .ttf/.otf/.ttc file beside "
                   "the program; material in a solid, openings in a hole, engraved outlines "
-                  "in a drawing", kw_only=True)],
+                  "in a drawing", kw_only=True),
+                A("fill", "bool", False, "with font= in a drawing: the letters' area "
+                  "engraved (a fill layer: SVG fill, DXF HATCH, LightBurn Scan, G-code "
+                  "line fill), not only their outlines", kw_only=True)],
                doc="Text: single strokes in a drawing, or with font= the letters' closed "
                    "outlines (in a solid, hole or drawing); size: cap "
                    "height (~ a capital's width); anchor: start, "
                    "middle, end; valign: baseline, middle, top, bottom; rotation about "
                    "position; along=circle, angle=; stencil=true (in a hole): cut out; "
-                   "max_width=: shrinks to fit.", members=TEXT_MEMBERS),
+                   "max_width=: shrinks to fit; fill=true (font=, in a drawing): the "
+                   "letters' area engraved.", members=TEXT_MEMBERS),
     # ------------------------------------------------------------ geometric constraints
     "Coincident": _c([A("a", "geometry"), A("b", "geometry")],
                      doc="Two points are the same point (a point and a line, circle, arc or "

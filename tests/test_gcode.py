@@ -468,8 +468,8 @@ def test_outlines_before_holes_is_caught(monkeypatch):
     out = _output(PLATE)
     real = toolpath.plan
 
-    def outer_first(o, origin=(0.0, 0.0), back=()):
-        cuts = real(o, origin, back)
+    def outer_first(o, origin=(0.0, 0.0), back=(), hatch=None):
+        cuts = real(o, origin, back, hatch)
         return sorted(cuts, key=lambda c: c.operation != "cut_outer")
     monkeypatch.setattr(toolpath, "plan", outer_first)
     text = gcode.job(out).text

@@ -311,8 +311,8 @@ def test_a_cut_order_with_outlines_first_is_caught(monkeypatch):
     from aidl_lang.output.fabrication import toolpath
     real = toolpath.plan
 
-    def outlines_first(o, *a):
-        cuts = real(o, *a)
+    def outlines_first(o, *a, **k):
+        cuts = real(o, *a, **k)
         return sorted(cuts, key=lambda c: c.operation != "cut_outer")
     data_bad = None
     monkeypatch.setattr(toolpath, "plan", outlines_first)

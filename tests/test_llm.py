@@ -173,9 +173,10 @@ def test_prompt_lists_the_whole_registry_and_stays_compact():
     # `font=` in the Text line: 50 more): 4,984 and 4,516; issue 111's constructs models
     # reached for (a bar's start/end members, no radius= on Polygon/Polyline: Fillet, a
     # solid's hole hides no drawing's lines: 25 more): 5,009 and 4,541; `overrun=true` (a joint's run past the edge
-    # counts in no box) and the joints' member `overrun`: 8 more, 5,017 and 4,549
-    assert word_count(text) <= 5017
-    assert word_count(system_prompt(examples=False)) <= 4549
+    # counts in no box) and the joints' member `overrun`: 8 more, 5,017 and 4,549; issue 112's filled letters (Text's `fill=` and
+    # "engraved in a drawing (`fill=true`: their area)", 16 more): 5,033 and 4,565
+    assert word_count(text) <= 5033
+    assert word_count(system_prompt(examples=False)) <= 4565
 
 
 def test_the_agents_prompt_is_shorter_and_keeps_the_vocabulary(compile_text):
@@ -211,8 +212,8 @@ def test_the_agents_prompt_is_shorter_and_keeps_the_vocabulary(compile_text):
     # as a font's outlines (issue 112: the prompt's line and Text's font= in the registry),
     # 4,636; + 25 for issue 111's reached-for constructs (a bar's start/end, Fillet for a
     # Polygon's corners, a solid's hole and a drawing's lines), 4,661; + 8 for `overrun=true`
-    # and the joints' member `overrun` (issue 111), 4,669
-    assert word_count(text) <= 4669 and len(text) < 0.93 * len(system_prompt())
+    # and the joints' member `overrun` (issue 111), 4,669; + 16 for filled letters (issue 112), 4,685
+    assert word_count(text) <= 4685 and len(text) < 0.93 * len(system_prompt())
 
 
 def test_prompt_members_table_gives_each_member_its_kind():

@@ -1,7 +1,7 @@
 """``Text(..., font=...)`` in the interpreter (issue 112): the font found or read before the
 Text is built (a family by name, a file through the import sandbox: E0133), where such a
-Text may stand (a solid: material; a hole: openings; a drawing: engraved outlines; E0120
-elsewhere), and the characters its font lacks (W0105)."""
+Text may stand (a solid: material; a hole: openings; a drawing: engraved outlines, or its
+area with ``fill=true``; E0120 elsewhere), and the characters its font lacks (W0105)."""
 from __future__ import annotations
 
 from ..base.diagnostics import EvalError
@@ -20,6 +20,12 @@ def text_font(interp, conv: dict, s, node, spans) -> None:
                         + (f"\"{spec}\"" if isinstance(spec, str) else type(spec).__name__),
                         at, hint="`font=\"sans\"`, `font=\"serif:Bold\"` or "
                                  "`font=\"fonts/MyFont.ttf\"`")
+    if conv.get("weight") is not None:
+        raise EvalError("E0108", "a Text in a font has the font's own stroke weight: "
+                        "`weight=` is the single-stroke stencil's", spans.get("weight", at),
+                        hint="leave out weight= and choose a heavier or lighter style: "
+                             "`font=\"sans:Bold\"`, `\"sans:Black\"`, `\"sans:Light\"` "
+                             "or a number, `\"sans:650\"`")
     if s.kind not in ("solid", "hole", "drawing"):
         raise EvalError("E0120", f"Text in a font must be in a solid (letters as material), a "
                         f"hole (openings) or a drawing (engraved), not in {s.kind} `{s.name}`",
@@ -58,3 +64,25 @@ def font_missing(interp, g, spans, node) -> None:
                             spans.get("text", node.span),
                             hint="choose a font that has them (`font=\"sans\"` covers Latin, "
                                  "Greek and Cyrillic), or write the text without them")
+
+
+def text_fill(conv: dict, s, node, spans) -> None:
+    """``Text(..., fill=true)``: the letters' area engraved, which needs letters with an area
+    (``font=``) in a ``drawing``; E0108 at ``fill=`` otherwise, its hint what to write."""
+    at = spans.get("fill", node.span)
+    if conv.get("font") is None:
+        raise EvalError("E0108", "`fill=true` fills the letters of a font; the single-stroke "
+                        "engraving font has lines, no area", at,
+                        hint="add a font: `Text(..., font=\"sans\", fill=true)` in a drawing")
+    if conv.get("stencil"):
+        raise EvalError("E0108", "a stencil Text's letters are openings: `fill=true` (an "
+                        "engraved area) and `stencil=true` exclude each other", at,
+                        hint="leave out fill= to cut the stencil, or stencil= to engrave "
+                             "the letters' area in a drawing")
+    if s.kind != "drawing":
+        what = {"solid": "material already (the letters are the part)",
+                "hole": "openings already (cut out)"}.get(s.kind, f"not engraved in a {s.kind}")
+        raise EvalError("E0108", f"`fill=true` engraves the letters' area in a drawing; in "
+                        f"{s.kind} `{s.name}` they are {what}", at,
+                        hint="leave out fill=, or put the Text in `drawing label { ... }` to "
+                             "engrave its filled letters on the part")

@@ -24,6 +24,7 @@ from pathlib import Path
 from .. import ast as A
 from ..registry import (BBOX_MEMBERS, CONSTANTS, ENTRIES, FUNCTIONS, SWAPPED, SYNONYM_DOCS,
                        SYNONYMS, UNITS_ANGLE, UNITS_LENGTH, Entry, arg_synonyms)
+from .details import DETAILS
 from .topic_examples import EXAMPLES, TEMPLATE_ARGS, TEMPLATE_EXAMPLES
 from .sources import STDLIB
 
@@ -684,8 +685,10 @@ cut and travel length and the job time. `--machine FILE` takes a TOML profile (e
 optional; `--machine router` or `plotter`: the built-in ones; default the built-in laser):
 `kind` (laser | router | plotter), `max_power` (S of 100 %), `laser_mode` (M4 | M3),
 `travel_speed`, `tool_diameter`, `safe_height`, `tabs`, `tab_width`, `tab_height`,
-`lead_in`, `units`, and tables `[engrave]`, `[score]`, `[cut_inner]`, `[cut_outer]` with
-`power` (%), `speed` (mm/min), `passes`, `depth_per_pass`, `plunge`, `spindle`. A router's
+`lead_in`, `units`, and tables `[engrave]`, `[score]`, `[cut_inner]`, `[cut_outer]`, `[fill]`
+with `power` (%), `speed` (mm/min), `passes`, `depth_per_pass`, `plunge`, `spindle`, and
+`interval` (mm between a fill's lines: `Text(..., font=, fill=true)` is scanned in parallel
+lines, letter by letter, after the engraving; a router refuses a fill). A router's
 path is offset by the tool radius, down `depth_per_pass` at a time to the program's
 `thickness`. The program's `kerf` and `thickness` are used; a profile stating others is
 warned about. `--layout sheet -o cut.gcode` writes one program per sheet; parts drawn over each
@@ -768,8 +771,9 @@ material; W0507: a web thinner than the minimum wall between cuts. Templates may
       "sheet-level cut", "sheet cut"]),
     "drawing": ("statement", "`drawing NAME { ... }`: engraved lines and text, not filled.", """
 `drawing NAME { ... }`: its shapes are drawn as lines (closed shapes as outlines) and Text as
-single strokes (with `font=`: the letters' outlines), on the `engrave` layer; nothing is filled
-or cut. Text is only allowed in a drawing (a Text with `font=` also in a solid, as material,
+single strokes (with `font=`: the letters' outlines; with `font=` and `fill=true`: the letters'
+area, on a fill layer), on the `engrave` layer; nothing else is filled, nothing is cut. Text
+is only allowed in a drawing (a Text with `font=` also in a solid, as material,
 and a hole, as openings). Put it inside the solid it marks. A `hole` in a drawing hides the drawing's lines
 (its own and its children's) where it covers them: a shape behind another (`drawing back {
 p = Polygon(...) hole front { q = Polygon(...) } }`); one that hides nothing is W0526. The solid's
@@ -838,157 +842,4 @@ Conversions: a number of radians as an angle is `x * 1 rad` (`0.5 rad` for a lit
 number of degrees `radians(x)` (or `x * 1 deg`); an angle as a number of degrees `degrees(a)`;
 an angle from a ratio `atan(y / x)` or `atan2(y, x)`. There is no `rad()` or `deg()`.
 """, ["PI", "tau", "constants", "rad", "radians", "degrees", "conversion"]),
-}
-
-# ---------------------------------------------------------------- details of entries
-# what the registry's one-line docs (also the prompt's) leave out: `aidl docs NAME` only
-DETAILS: dict[str, str] = {
-    "Countersink": "A hole is sunk once (issue 109): named twice (`[a, a.c]`) or again by "
-                   "another call with the same head, it is one countersink in `aidl parts`, "
-                   "the DXF's COUNTERSINK layer and the router's plunges; sunk again with "
-                   "another head or a Counterbore it is E0108 at the second call, naming the "
-                   "first's line. A cone deeper than the part is W0529 (the router's V-bit "
-                   "then runs round a circle at the part's thickness, so the top is still "
-                   "`diameter`); cones that go through and leave nothing of the part, or cut "
-                   "it into pieces, are E0503 and no format is written.",
-    "Counterbore": "A hole is sunk once, as with Countersink (the same head again counts "
-                   "once; another head is E0108). A recess as deep as the part is W0529; "
-                   "recesses through the part that leave nothing of it, or cut it into "
-                   "pieces, are E0503 and no format is written.",
-    "Polyline": "Straight segments through the points, in order, not closed: an engraving "
-                "in a drawing (a cord, a zig-zag, a meander), a path for Stroke, or a chain "
-                "that Lines, Arcs and open Splines sharing its ends close into an outline. "
-                "closed=true makes it a Polygon. Literal coordinates make it rigid (as "
-                "Polygon) unless flexible=true. Members: points, start, end, edges (the "
-                "segments as Lines), bb. Fewer than 2 points or two consecutive equal points "
-                "are E0108. Also written PolyLine, LineString, Path, Chain, ZigZag. No "
-                "radius=: close it in a solid or hole and Fillet it, as a Polygon.",
-    "Polygon": "No radius=: round its corners with Fillet in the solid or hole that holds it "
-               "(`Fillet(p, 3 mm)`: every corner, exact arcs; `Fillet(p.points[1], 3 mm)`: one).",
-    "Rectangle": "A bar's (by start, end) members start and end are its centre line's ends, "
-                 "the middles of its bottom and top edges as solved; its height: its length.",
-    "Spline": "corners=[i, ...] names points where the curve turns sharply "
-              "(tangent-discontinuous): a leaf's tip, a violin's corners. The spline is cut "
-              "there into runs, each the natural spline through its points (a run of two "
-              "points is straight), so it is C2 between corners and passes through every "
-              "point. An index that is not a point's, or an open spline's first or last "
-              "point, is E0108. Negative indices count from the end.",
-    "Ellipse": "With start_angle= and end_angle= (keyword only, both) it is the open arc of "
-               "the ellipse, counter-clockwise from one parameter angle to the other: the "
-               "point at t is center + R(rotation) (rx cos t, ry sin t) (the eccentric "
-               "anomaly, as a DXF ELLIPSE; not the polar angle). Rigid; it chains with Lines, "
-               "Arcs and splines sharing its ends into an outline, or is drawn in a drawing. "
-               "Members of the arc: center, start, end, midpoint, vertex, co_vertex (ends of "
-               "the rx and ry semi-axes), bb. Exact in DXF (ELLIPSE with parameters), SVG "
-               "(A rx,ry) and STEP. `aidl import` writes a drawing's elliptical arcs so.",
-    "Drawing2D": "Reads a DXF, ASCII or binary (lines, arcs, circles, polyline bulges, "
-                 "splines, ellipses and elliptical arcs, blocks and MINSERT arrays placed, "
-                 "HATCH boundaries as loops) or an SVG (paths with their arcs and cubics, rects, "
-                 "circles, ellipses) beside the program or below it, as exact curves; units "
-                 "from $INSUNITS or the SVG's width/viewBox (units= overrides). layer=, "
-                 "color= and id= (an SVG group or element) select what is read. Closed loops "
-                 "are outlines[i] (largest first; inner loops holes), circles[i] have center "
-                 "and radius, open chains are paths[i]. The drawing is one rigid body "
-                 "where its file puts it: at=(x, y) moves it by exactly that, rotation= "
-                 "turns it about the file's origin, and a constraint on it (d.bb.left == "
-                 "30, Fixed(d.origin)) moves it along what it says only. A DXF's TEXT and MTEXT are engraved "
-                 "as Text in AIDL's font; other entities are skipped with W0130 (counted). "
-                 "Chains whose ends meet within close_tolerance= (default 0.05 mm) are "
-                 "closed exactly (W0130 gives the count and the largest gap); duplicate "
-                 "segments are removed. cut=, engrave= and ignore= give roles by layer "
-                 "name or colour (\"red\", \"#0000ff\", a DXF ACI number; lists too): "
-                 "engraved shapes are strokes on the part, ignored ones left out; "
-                 "roles=\"laser\" is Boxes.py's convention (black and blue cut, green "
-                 "#00ff00 and cyan engraved, red annotations ignored). "
-                 "Errors: E0130 (missing or unreadable file), E0131 (an open chain where an "
-                 "outline is needed, with its gap; a self-crossing loop), E0132 (an unknown "
-                 "layer, or nothing to import: it names what the file holds and why each "
-                 "kind was left out, e.g. entities in a tilted plane), E0304 (blocks that "
-                 "expand past 120000 entities). `aidl import FILE -o part.aidl` turns a drawing into an "
-                 "editable program instead.",
-    "Bezier": "A chain of cubic Bézier segments from its control points, as SVG's `C` "
-              "and a drawing program's pen tool make them: points=[p0, c1, c2, p1, c3, c4, "
-              "p2, ...], 3k+1 points for k segments; segment i runs from p_i to p_i+1, "
-              "leaving p_i towards its first control point and arriving at p_i+1 from its "
-              "second (the curve passes through p0, p1, ... only). A smooth joint: put the "
-              "control points on either side of it on one line through it. closed=true: an "
-              "outline; the last point repeats the first. Exact everywhere: SVG `C`, DXF "
-              "SPLINE (clamped, knots tripled), STEP B-spline, the same curve after Mirrored, "
-              "patterns and moves (their control points move). Usable where a Spline is: a "
-              "body, a hole, an engraving, a Stroke path, a piece of an outline chained with "
-              "Lines and Arcs. Members: points (as written), start, end, bb (the curve's own "
-              "box, not the control points'). A count that is not 3k+1, a closed chain "
-              "whose last point is not its first, a segment that is one point and a closed "
-              "chain that crosses itself are E0108. Offset and Hull refuse it (no exact "
-              "offset of a cubic). `aidl import` writes a drawing's free cubics (SVG paths, "
-              "DXF splines) as Bezier. For a curve through given points use Spline. Also "
-              "written BezierCurve, CubicBezier, BezierPath, BezierChain.",
-    "Sector": "The arc of `radius` about center runs counter-clockwise from start_angle to "
-              "end_angle (held, rigid: the shape only moves); two radial lines close it to "
-              "the center (a pie slice) or, with inner_radius=, to the inner arc (an annulus "
-              "segment: a ring's piece). Exact: one or two arcs and two lines. Members: "
-              "center, start, end (the outer arc's ends), midpoint (halfway along it), "
-              "radius = outer_radius, inner_radius, width (radius - inner_radius), bb (the "
-              "ends and the outer arc's extremes). Equal angles (a whole turn) or an "
-              "inner_radius not below the radius are E0108. Also written Wedge, Pie, "
-              "PieSlice, CircularSector, AnnularSector, AnnulusSegment, RingSegment.",
-    "Stroke": "A band `width` wide along an open path: a Line, an Arc, an open Polyline "
-              "or Spline, or a list of them joined end to end (in any direction: each piece is turned "
-              "to start where the previous one ends; a gap is E0108). cap=\"round\" (the "
-              "default) is the path's Minkowski sum with a disc of radius width/2: each "
-              "segment's stadium or arc slot, round joins and ends; cap=\"flat\" cuts "
-              "both ends square (the joins stay round; an end arc tighter than width/2 is "
-              "E0108). Exact: lines offset by width/2 and arcs concentric with the path's, "
-              "united by Manifold and put back on the exact curves. Along an open Spline "
-              "the sides are cubic splines through points of the true offset, within 1e-4 "
-              "mm of it (the offset of a cubic is no cubic); a spline bending tighter than "
-              "width/2 is E0108. For exact sides build the curve from tangent Arcs. The "
-              "path is not drawn "
-              "(construction). Box: the path's grown by width/2. A band around a closed "
-              "shape is Shell.",
-    "Text": "along=circle_or_arc lays the text along a Circle or Arc (of the same drawing, "
-            "usually construction=true) instead of at a position: clockwise, left to right "
-            "over the top, each letter rigid and upright (its up away from the center), its "
-            "middle on the circle at the arc length of its middle in the straight text. "
-            "angle= says where the text's position point goes (anchor and valign as "
-            "usual: the baseline on the circle by default); without it the arc's middle, a "
-            "circle's top. flip=true reads counter-clockwise with the letters' up toward the center: "
-            "text under a circle, the right way up (its default place: the circle's bottom). "
-            "Labels round a center: `for a in range(0, 181, 10) { t = "
-            "Text(str(a), along=ring, angle=a * 1 deg, size=3) }`, no cos or sin. The "
-            "text's position is the curve's center; its box is taken at the starting radius. "
-            "max_width=w keeps the text at most w wide along its baseline: a longer one is "
-            "drawn at the size at which it is exactly w wide (note W0113 gives that size; "
-            "`t.size` is the size drawn), e.g. `Text(\"ROSEMARY\", position=(0, 0), "
-            "size=10 mm, max_width=60 mm)` is 60 mm wide at size 7.98 mm. A stencil's width "
-            "counts its stroke weight; along a curve the width is its length along it. "
-            "font=\"sans\" | \"serif\" | \"Family:Bold Italic\" | \"fonts/X.ttf\" draws the "
-            "letters as a font's closed outlines (fontTools, HarfBuzz; Noto Sans and Noto "
-            "Serif install with AIDL): material in a solid (`word = Text(\"HAPPY 30\", "
-            "position=(0, 0), size=20, font=\"sans:Bold\")` with `rail = Rectangle(center="
-            "(word.center.x, -1 mm), width=word.bb.width, height=4 mm)` is one cake topper), "
-            "openings in a hole (stencil=true bridges the counters, else W0504 names the "
-            "letters whose counters fall out), engraved outlines in a drawing; .bb is the "
-            "glyphs' true box; a font not found is E0133.",
-    "Star": "tip_radius=r rounds each tip by an arc of radius r tangent to its two sides, as "
-            "Fillet rounds a corner (exact arcs; the notches stay sharp); the rounded tip "
-            "reaches a little less than outer_radius, r (1 / sin(h) - 1) less for a tip of "
-            "angle 2h, and its box is the rounded outline's. A radius whose rounding would "
-            "run past the notches is E0108 (it says the bound). Members "
-            "outer_radius, inner_radius, tip_radius; points, edges, center of the sharp star.",
-    "Hull": "`.center` is the center of the hull's bounding box (as `.bb.center`), a point "
-            "that follows the shapes: `Circle(center=grip.center, radius=3)` centers a hole on "
-            "it.",
-    "Triangle": "`.incenter` is the center of the inscribed circle (the vertices weighted by "
-                "the lengths of the sides opposite them), `.inradius` its radius (twice the area "
-                "over the perimeter): `Circle(center=t.incenter, radius=t.inradius - 2)` is a "
-                "circle 2 mm inside all three sides. `.centroid` is the mean of the vertices; "
-                "`.center` is too for a triangle through three points, and is the `center=` "
-                "given (the bounding-box center) for the isosceles form (of height 30: 5 mm "
-                "above its centroid). All follow the solved triangle.",
-    "CornerPattern": "rect may be a Rectangle or a RoundedRectangle: its corners are the "
-                     "points where its sides meet before rounding (bottom_left, bottom_right, "
-                     "top_right, top_left), so an inset of at least the corner radius keeps "
-                     "the holes on the flat: `CornerPattern(h, plate, inset=8)` on "
-                     "`plate = RoundedRectangle(..., corner_radius=6)`.",
 }

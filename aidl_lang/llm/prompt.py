@@ -103,7 +103,8 @@ Triangle(center, base, height) points up (apex c at +y), a Slot lies along x; a 
 is end to end; a Text position is on the baseline (set `valign="middle"` to center it).
 Letters as the part (cake topper, sign, house number): `Text(..., font="sans:Bold")` (or "serif",
 a .ttf) is filled outlines: material in a solid (join them: a rail `width=word.bb.width`),
-openings in a hole (`stencil=true` holds counters); without `font=` Text is engraved strokes.
+openings in a hole (`stencil=true` holds counters), engraved in a drawing (`fill=true`: their
+area); without `font=` Text is engraved strokes.
 Each child of an `assembly` is a separate part, drawn where the solver puts it (overlapping parts: W0511 unless
 `AllowOverlap(a, b)`; `aidl render --layout sheet` nests them for cutting).
 - Place(part, position=(x, y, z), rotation=(rx, ry, rz)) in its assembly places a part in 3D

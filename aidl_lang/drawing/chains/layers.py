@@ -22,10 +22,11 @@ _SINK_LAYER = re.compile(r"c(ou)?nte?r[-_ ]?(sink|bore)|\bc[-_]?sk\b|^csk|c[-_]?
 
 def engraved_layer(name: str, d: Drawing) -> bool:
     """Whether layer ``name`` (its drawing ``d``) is marked, not cut: a layer named
-    ``ENGRAVE...`` (as ``aidl render`` writes them), or a countersink or counterbore layer of
+    ``ENGRAVE...`` or ``FILL`` (as ``aidl render`` writes them: ``FILL`` the HATCH of filled
+    engraved letters, read as their outlines), or a countersink or counterbore layer of
     circles alone (:data:`_SINK_LAYER`: the cone's top circle about a hole; cut as drawn it
     would be a hole of the countersink's size, or a solid of discs)."""
-    return name.upper().startswith("ENGRAVE") or bool(
+    return name.upper().startswith("ENGRAVE") or name.upper() == "FILL" or bool(
         _SINK_LAYER.search(name) and d.circles and not (d.outlines or d.paths or d.texts
                                                          or d.ellipses))
 
@@ -50,7 +51,8 @@ def _hole_layers(layers: list[tuple[str, Drawing]], deadline=None) -> tuple[list
         (layers[k][1].engrave is not None and not layers[k][1].engrave.empty))]
     sinks = [f"countersinks: layer `{ly}` ({len(d.circles)} circles) marked, not cut (a "
              "`drawing`: machine them after the cut)"
-             for ly, d in layers if not ly.upper().startswith("ENGRAVE") and engraved_layer(ly, d)]
+             for ly, d in layers if not ly.upper().startswith("ENGRAVE") and ly.upper() != "FILL"
+             and engraved_layer(ly, d)]
     if len(cand) < 2 or not holey:
         return layers, sinks
     every, owner = [], []                   # every candidate layer's loops, and their layer

@@ -8,14 +8,17 @@ def _glyph_boxes(g, bounds) -> list[tuple[str, tuple]]:
     """Each glyph of font Text ``g`` with its box placed where the text's face (``bounds``:
     its solved box, x0, y0, x1, y1) puts it: the local extent moved onto it."""
     from ...geometry.shapes import font as F
-    from ...geometry.shapes.text_outlines import _turned
+    from ...geometry.shapes.text_outlines import _turned, along_local
     d = g.data
     ex = d.get("extent")
-    if ex is None or d.get("along") is not None:      # (along a curve: not named)
+    if ex is None:
         return []
     dx, dy = bounds[0] - ex[0], bounds[1] - ex[2]
-    loops = _turned(F.outlines(d["font"], d["text"], d["size"], d["anchor"], d["valign"]),
-                    d.get("rotation", 0.0))
+    if d.get("along") is not None:    # each glyph where the curve lays it (as its extent)
+        loops = along_local(g)
+    else:
+        loops = _turned(F.outlines(d["font"], d["text"], d["size"], d["anchor"], d["valign"]),
+                        d.get("rotation", 0.0))
     sh = F.shaped(d["font"], d["text"], d["size"])
     out = []
     for chars, idx, _ in sh.glyphs:

@@ -196,6 +196,13 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
                 f"{w}.position.y - 1 mm), width={w}.bb.width, height=3 mm)`, its baseline's), a heavier style "
                 "(`font=\"sans:Black\"`) or a tighter layout; or, if they are separate parts, "
                 "make the structure an `assembly`")
+        along = words[0].data.get("along")
+        if along is not None and getattr(along, "name", None):   # laid along a curve
+            c = along.name
+            hint = (f"join the letters along their curve: a ring under them (`ring = Shell("
+                    f"Circle(center={c}.center, radius={c}.radius + 1 mm), -3 mm)`), a "
+                    "heavier style (`font=\"sans:Black\"`) or a tighter layout; or, if they "
+                    "are separate parts, make the structure an `assembly`")
     cutters = _cutters(d, s, shape, [items[k] for k in split]) if split else []
     apart = ""
     if cutters:

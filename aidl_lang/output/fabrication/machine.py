@@ -27,6 +27,8 @@ A profile is a small TOML file (``aidl render --machine FILE``), every key optio
     [score]                   # open outlines (W0402: lines that close no loop)
     [cut_inner]               # the loops that cut holes out of a part
     [cut_outer]               # the outline that frees a part
+    [fill]                    # areas engraved filled (Text(..., font=, fill=true))
+    interval = 0.1            # mm between the fill's parallel lines (laser, plotter)
     depth_per_pass = 1.5      # router: mm of depth per pass (the passes follow from thickness)
     plunge = 300              # router: mm/min going down
     spindle = 18000           # router: rpm (S)
@@ -48,7 +50,7 @@ from ..part.part import OutputError
 KINDS = ("laser", "router", "plotter")
 # what a router does at an inside corner its round bit cannot reach (:mod:`.reliefs`)
 RELIEFS = ("dogbone", "tbone", "none")
-OPERATIONS = ("engrave", "score", "cut_inner", "cut_outer")
+OPERATIONS = ("engrave", "score", "cut_inner", "cut_outer", "fill")
 
 
 class MachineError(OutputError):
@@ -61,13 +63,15 @@ class Operation:
     """One operation's settings: ``power`` (percent of the profile's ``max_power``; lasers),
     ``speed`` (mm/min, the feed), ``passes`` (a laser or plotter repeats the path; a router's
     passes follow from ``depth_per_pass``), ``depth_per_pass`` (mm, routers), ``plunge``
-    (mm/min down, routers), ``spindle`` (rpm, routers)."""
+    (mm/min down, routers), ``spindle`` (rpm, routers), ``interval`` (mm between the
+    parallel lines of a fill, :mod:`.hatch`)."""
     power: float = 100.0
     speed: float = 600.0
     passes: int = 1
     depth_per_pass: float = 1.0
     plunge: float = 300.0
     spindle: float = 18000.0
+    interval: float = 0.1
 
 
 @dataclass(frozen=True)
@@ -117,21 +121,24 @@ DEFAULTS: dict[str, Machine] = {
         engrave=Operation(power=20, speed=3000),
         score=Operation(power=40, speed=2000),
         cut_inner=Operation(power=100, speed=400, passes=2),
-        cut_outer=Operation(power=100, speed=400, passes=2))),
+        cut_outer=Operation(power=100, speed=400, passes=2),
+        fill=Operation(power=20, speed=6000, interval=0.1))),
     "router": Machine("router", tool_diameter=3.175, safe_height=5.0, relief="dogbone",
                       operations=_ops(
                           engrave=Operation(speed=1200, depth_per_pass=0.5, plunge=300),
                           score=Operation(speed=1200, depth_per_pass=0.5, plunge=300),
                           cut_inner=Operation(speed=1000, depth_per_pass=1.5, plunge=300),
-                          cut_outer=Operation(speed=1000, depth_per_pass=1.5, plunge=300))),
+                          cut_outer=Operation(speed=1000, depth_per_pass=1.5, plunge=300),
+                          fill=Operation(speed=1200, depth_per_pass=0.5, plunge=300))),
     "plotter": Machine("plotter", travel_speed=12000, operations=_ops(
         engrave=Operation(speed=3000), score=Operation(speed=3000),
-        cut_inner=Operation(speed=1500), cut_outer=Operation(speed=1500))),
+        cut_inner=Operation(speed=1500), cut_outer=Operation(speed=1500),
+        fill=Operation(speed=3000, interval=0.5))),
 }
 
 _NUMBER = ("max_power", "travel_speed", "tool_diameter", "safe_height", "tab_width",
            "tab_height", "lead_in", "kerf", "thickness", "v_bit_angle", "pocket_tool")
-_OP_KEYS = ("power", "speed", "passes", "depth_per_pass", "plunge", "spindle")
+_OP_KEYS = ("power", "speed", "passes", "depth_per_pass", "plunge", "spindle", "interval")
 # The range of every number a profile may give, ``key: (low, high, unit)``, the ends included;
 # lengths in mm and speeds in mm/min (an inch profile's values are converted first).  They
 # bound the work a job may ask for: a laser or plotter runs each path ``passes`` times, a
@@ -161,6 +168,7 @@ OP_RANGES: dict[str, tuple[float, float, str]] = {
     "depth_per_pass": (0.01, 100.0, "mm"),
     "plunge": (1.0, 100_000.0, "mm/min"),
     "spindle": (0.0, 100_000.0, "rpm"),
+    "interval": (0.01, 10.0, "mm"),
 }
 # mm: the least positive length of the keys that may also be 0 (none): a lead-in, a tab, a
 # tool are 0 or at least a step of the machine (0.01 mm, as `depth_per_pass`); a lead-in of

@@ -6,7 +6,8 @@ estimate (docs/machines.md, "Cut order").
 circles, ellipse and spline pieces, each segment starting where the one before ends) with its
 operation:
 
-1. every engraving first (text and drawings: ``engrave``; open outlines: ``score``), while the
+1. every engraving first (text and drawings: ``engrave``; open outlines: ``score``; then the
+   areas engraved filled: ``fill``, as fill lines or as their loops, :func:`plan`), while the
    sheet is still whole and cannot shift;
 2. then part by part: a part lying in another part's opening before that part (it would drop
    out with the scrap); within a part, the loops inside others before the loops around them
@@ -30,8 +31,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...geometry.shapes.curves import Circle, Loop, Segment, reverse
-from ..part.part import Output
+from ...geometry.shapes.curves import Circle, Line, Loop, Segment, reverse
+from ..part.part import Output, fill_regions
+from .hatch import hatch_lines
 from ..part.edges.shared import cut_once, loop_paths
 
 Point = tuple[float, float]
@@ -69,11 +71,14 @@ def _start(s: Segment) -> Point:
     return tuple(s.start)
 
 
-def plan(output: Output, origin: Point = (0.0, 0.0), back=()) -> list[Cut]:
+def plan(output: Output, origin: Point = (0.0, 0.0), back=(),
+         hatch: float | None = None) -> list[Cut]:
     """The :class:`Cut` s of ``output`` in cut order (the module's docstring), starting from
     ``origin`` (mm).  ``back``: the operations whose open paths the machine runs there and
     back (an even number of passes, :mod:`.writers.gcode`): the tour goes on from where such
-    a path started."""
+    a path started.  ``hatch``: the areas engraved filled (``fill``, after the engraving) as
+    their fill lines ``hatch`` mm apart (:func:`~.hatch.hatch_lines`, one open cut each);
+    None: as their closed loops (a writer whose program fills them itself, LightBurn)."""
     back = tuple(back)
 
     def after(c: Cut) -> Point:
@@ -82,7 +87,8 @@ def plan(output: Output, origin: Point = (0.0, 0.0), back=()) -> list[Cut]:
     at = origin
     out: list[Cut] = []
     strokes = [Cut("score" if st.style == "open" else "engrave", st.part, list(st.segments),
-                   st.closed) for st in output.engrave if st.segments and st.style != "cut"]
+                   st.closed) for st in output.engrave
+               if st.segments and st.style not in ("cut", "fill")]
     through: dict = {}           # part name -> its through-cuts (cut_inner, first in the part)
     for st in output.cuts:
         if st.segments:
@@ -91,6 +97,15 @@ def plan(output: Output, origin: Point = (0.0, 0.0), back=()) -> list[Cut]:
     for op in ("engrave", "score"):
         todo = [c for c in strokes if c.operation == op]
         for c in _tour(todo, at, after):
+            out.append(c)
+            at = after(c)
+    for _, part, loops in fill_regions(output.engrave):
+        if hatch is None:
+            fills = [Cut("fill", part, segs, True) for segs in loops]
+        else:
+            fills = [Cut("fill", part, [Line(p, q)], False)
+                     for p, q in hatch_lines(loops, hatch)]
+        for c in fills:                 # in the hatch's own order: row by row, to and fro
             out.append(c)
             at = after(c)
     parts = [p for p in output.parts if p.loops]

@@ -85,7 +85,8 @@ class PartOutline(Compared):
 
 class Stroke(Compared):
     """Engraving, or a through-cut: an open or closed chain of segments (``style`` drawing |
-    open: engraved or scored; ``cut``: a ``cut`` structure's curve, cut through the part
+    open: engraved or scored; ``fill``: a closed loop of an area engraved filled,
+    :func:`fill_regions`; ``cut``: a ``cut`` structure's curve, cut through the part
     along the line as written, zero width), each segment ending where the next starts (a
     laser runs it without lifting).  ``part``: the
     name of the part whose structure (or an ancestor of it) holds the engraving, "" for one
@@ -312,6 +313,19 @@ def _build(drawing: Drawing, title: str, thickness, deadline) -> Output:
     out.engrave += [SinkStroke([Circle(sk.center, sk.diameter / 2)], sk.kind, True, sk.hole,
                                sk.part, sk) for sk in getattr(drawing, "sinks", ())]
     return out
+
+
+def fill_regions(strokes) -> list[tuple[str, str, list[list]]]:
+    """The areas engraved filled (issue 112: a ``Text(..., font=, fill=true)`` in a drawing,
+    its strokes of style ``fill``), one per source and part, in drawing order: ``(source,
+    part, [each closed loop's segments])``, outer loops counter-clockwise and their holes (a
+    letter's counters) clockwise, none crossing another (the letters' union): an area filled
+    by the even-odd rule and by the non-zero rule alike."""
+    out: dict = {}
+    for st in strokes:
+        if st.style == "fill" and st.segments:
+            out.setdefault((st.source, st.part), []).append(list(st.segments))
+    return [(src, part, loops) for (src, part), loops in out.items()]
 
 
 def sink_heads(output: Output) -> list[tuple]:

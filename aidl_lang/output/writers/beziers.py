@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 
-from ..part.part import Arc, EllipticArc
+from ..part.part import Arc, Circle, EllipticArc, Spline
 
 MAX_PIECES = 4096          # Bézier pieces of one arc at most (a 40 m radius full circle)
 
@@ -80,3 +80,17 @@ def ellipse_beziers(s: EllipticArc, tol: float) -> list:
     out[0] = (s.start,) + out[0][1:]
     out[-1] = out[-1][:3] + (s.end,)
     return out
+
+
+def segment_beziers(s, tol: float) -> list:
+    """Cubic Béziers of a curved segment: a spline piece its own spans (exact), an elliptical
+    arc :func:`ellipse_beziers`, a whole circle its arc from angle 0 (:func:`arc_beziers`, in
+    its own direction), an arc :func:`arc_beziers`; each within ``tol`` mm."""
+    if isinstance(s, Spline):
+        return [tuple(tuple(map(float, p)) for p in b) for b in s.spans]
+    if isinstance(s, EllipticArc):
+        return ellipse_beziers(s, tol)
+    if isinstance(s, Circle):
+        sweep = 2 * math.pi if s.ccw else -2 * math.pi
+        return arc_beziers(Arc(s.center, s.radius, 0.0, sweep), tol)
+    return arc_beziers(s, tol)

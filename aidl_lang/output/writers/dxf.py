@@ -24,7 +24,10 @@ Layers: ``CUT`` (red) for the outlines of a single part, ``ENGRAVE`` (blue) for 
 assembly with several parts, each part's outlines are on their own layer ``CUT-<part>``
 (see :func:`layer_of`), so each part can be selected, nested or hidden on its own.  A
 through-cut (a ``cut`` structure's curve) is written as engraving is (one entity or polyline
-per path, exact) on its part's cut layer.
+per path, exact) on its part's cut layer.  An area engraved filled (``Text(..., font=,
+fill=true)``, issue 112) is a solid ``HATCH`` on layer ``FILL`` (blue), its boundary the
+letters' loops as edge paths: lines, and each spline piece a spline edge (the font's curves,
+exact; arcs as Bézier spline edges within :data:`HATCH_ARC_TOL`), see :func:`_hatch`.
 """
 from __future__ import annotations
 
@@ -32,10 +35,12 @@ import io
 import math
 
 from ..part.extent import extent
-from ..part.part import Arc, Circle, EllipticArc, Line, Output, PartOutline, Spline
+from ..part.part import (Arc, Circle, EllipticArc, Line, Loop, Output, PartOutline, Spline,
+                         fill_regions)
 from ..part.edges.shared import cut_once
 
-CUT, ENGRAVE = "CUT", "ENGRAVE"
+CUT, ENGRAVE, FILL = "CUT", "ENGRAVE", "FILL"
+HATCH_ARC_TOL = 1e-4     # mm: an arc's Bézier pieces in a HATCH boundary, from the arc
 CHAIN_TOL = 1e-6     # mm: a segment continues the chain when it starts this close to its end
 _BAD = '<>/\\":;?*|=`'
 # radians: the largest sweep written as one bulge.  A reader finds an arc's centre from its
@@ -165,12 +170,45 @@ def to_dxf_document(output: Output):
             msp.add_lwpolyline(_bulge_points(segs), format="xyb", close=True,
                                dxfattribs={"layer": layer})
     layers = {p.name: layer_of(p, output) for p in output.parts}
+    fills = fill_regions(output.engrave)
+    if fills:
+        doc.layers.add(FILL, color=5)
+        for _, _, loops in fills:
+            _hatch(msp, loops)
     for st in output.engrave:
+        if st.style == "fill":
+            continue
         # a through-cut on its part's cut layer (CUT when it cuts no part)
         att = {"layer": layers.get(st.part, CUT) if st.style == "cut" else
                st.style.upper() if st.style in ("countersink", "counterbore") else ENGRAVE}
         _path(msp, st.segments, st.closed, att)
     return doc
+
+
+def _hatch(msp, loops) -> None:
+    """One solid ``HATCH`` on layer :data:`FILL` of an area engraved filled
+    (:func:`~..part.part.fill_regions`): one edge boundary path per loop (an outer loop flagged
+    external, a counter inside it a plain path: the area by the DXF's odd parity), a line a
+    line edge, a spline piece a spline edge (its own degree-3 B-spline, exact), an arc or an
+    elliptical arc spline edges of its Bézier pieces within :data:`HATCH_ARC_TOL`."""
+    from . import beziers
+    h = msp.add_hatch(color=5, dxfattribs={"layer": FILL})
+    h.set_solid_fill(color=5, style=0)
+    for segs in loops:
+        outer = Loop(list(segs)).area > 0
+        ep = h.paths.add_edge_path(flags=1 if outer else 0)
+        for g in segs:
+            if isinstance(g, Line):
+                ep.add_line(g.start, g.end)
+                continue
+            if isinstance(g, Spline):
+                deg, knots, ctrl = g.bspline()
+                ep.add_spline(control_points=[(x, y) for x, y in ctrl],
+                              knot_values=list(knots), degree=deg)
+                continue
+            for b in beziers.segment_beziers(g, HATCH_ARC_TOL):
+                ep.add_spline(control_points=[tuple(map(float, q)) for q in b],
+                              knot_values=[0, 0, 0, 0, 1, 1, 1, 1], degree=3)
 
 
 def _path(msp, segments, closed: bool, att) -> None:

@@ -33,7 +33,10 @@ What it writes, one command a line (HP-GL/1, which cutters and plotters read ali
   :data:`POLY_SAGITTA` of the curve.
 * The bound: every point the cutter or plotter draws is within :data:`TOLERANCE` = 1 unit
   (0.025 mm) of the design (rounding plus chords).
-* **Order**: :func:`~..fabrication.toolpath.plan`: engraving and scoring first, then part by part each
+* **Order**: :func:`~..fabrication.toolpath.plan`: engraving and scoring first (an area
+  engraved filled, ``Text(..., font=, fill=true)``, as its closed loops at the ``fill``
+  operation's speed: a vinyl cutter cuts the letters out and weeding leaves them filled; a pen
+  plotter's line fill is the G-code's, ``--machine plotter``), then part by part each
   part's inner loops before its outline.  One pen for everything: a vinyl cutter has one knife,
   and a pen plotter user who wants two pens changes the pen after the engraving (it all comes
   first).  ``VS`` sets each operation's speed from the machine profile (``--machine FILE``, the
@@ -231,7 +234,7 @@ def to_hpgl(output: Output, options=None) -> str:
         raise OutputError(f"the drawing is {x1 - x0:.0f} x {y1 - y0:.0f} mm, too large for "
                           f"HPGL's coordinates ({MAX_UNITS / UNITS_PER_MM / 1000:.0f} m at "
                           "most); make it smaller")
-    cuts = plan(output)
+    cuts = plan(output)         # an area engraved filled: its loops (a cutter cuts them out)
     if sum(len(c.segments) * max(1, int(m.operation(c.operation).passes))
            for c in cuts) > machine_mod.MAX_JOB_MOVES:
         raise machine_mod.too_long("HPGL segments")

@@ -11,7 +11,11 @@ layers are its 30 palette colours, index 0-29), each with ``<index>``, ``<name>`
 ``<maxPower>`` / ``<maxPower2>`` (percent), ``<speed>`` (**mm/s**: LightBurn stores speeds in
 mm/s whatever unit its window shows; the machine profile's mm/min / 60), ``<numPasses>`` and
 ``<priority>`` (0-3 in the order above, so that "order by priority" runs engraving first and
-inner cuts before outer ones), all from the machine profile
+inner cuts before outer ones), all from the machine profile; the areas engraved filled
+(``Text(..., font=, fill=true)``, issue 112) are the layer ``fill`` (black C00, priority 0) of
+a ``<CutSetting type="Scan">``, its line ``<interval>`` (mm) the profile's ``fill.interval``
+and ``<bidir Value="1"/>`` (lines run both ways), its shapes the areas' closed loops (the
+letters and their counters: LightBurn fills what they enclose)
 (:mod:`~..fabrication.machine`, ``--machine FILE``; the built-in laser profile without one).
 
 Then the shapes, in the cut order of :func:`~..fabrication.toolpath.plan` (engraving first, each part's
@@ -51,7 +55,7 @@ import math
 from xml.sax.saxutils import escape, quoteattr
 
 from ..fabrication import machine as machine_mod
-from ..part.part import Arc, Circle, EllipticArc, Line, Output, Spline
+from ..part.part import Circle, EllipticArc, Line, Output
 from . import beziers
 
 APP_VERSION = "1.7.00"
@@ -64,6 +68,7 @@ LAYERS = {
     "score": (3, "score", 1),            # C03 green
     "cut_inner": (5, "cut inner", 2),    # C05 orange
     "cut_outer": (2, "cut outer", 3),    # C02 red
+    "fill": (0, "fill", 0),              # C00 black: a Scan layer (areas engraved filled)
 }
 SPEED_DIVISOR = 60.0       # the profile's mm/min over LightBurn's mm/s
 
@@ -82,16 +87,7 @@ def pieces(segments) -> list:
         if isinstance(s, Line):
             out.append(("L", tuple(s.start), tuple(s.end)))
             continue
-        if isinstance(s, Spline):
-            bs = [tuple(tuple(map(float, p)) for p in b) for b in s.spans]
-        elif isinstance(s, EllipticArc):
-            bs = beziers.ellipse_beziers(s, BEZIER_TOL)
-        elif isinstance(s, Circle):
-            sweep = 2 * math.pi if s.ccw else -2 * math.pi
-            bs = beziers.arc_beziers(Arc(s.center, s.radius, 0.0, sweep), BEZIER_TOL)
-        else:
-            bs = beziers.arc_beziers(s, BEZIER_TOL)
-        out += [("B",) + tuple(b) for b in bs]
+        out += [("B",) + tuple(b) for b in beziers.segment_beziers(s, BEZIER_TOL)]
     return out
 
 
@@ -199,7 +195,7 @@ def to_lbrn2(output: Output, options=None) -> str:
     for op in used:
         index, name, priority = LAYERS[op]
         o = m.operation(op)
-        doc.add(1, '<CutSetting type="Cut">')
+        doc.add(1, f'<CutSetting type="{"Scan" if op == "fill" else "Cut"}">')
         doc.add(2, f'<index Value="{index}"/>')
         doc.add(2, f"<name Value={quoteattr(name)}/>")
         doc.add(2, f'<maxPower Value="{_f(o.power)}"/>')
@@ -207,6 +203,9 @@ def to_lbrn2(output: Output, options=None) -> str:
         doc.add(2, f'<speed Value="{_f(o.speed / SPEED_DIVISOR)}"/>')   # mm/min -> mm/s
         doc.add(2, f'<numPasses Value="{max(1, int(o.passes))}"/>')
         doc.add(2, f'<priority Value="{priority}"/>')
+        if op == "fill":            # LightBurn fills the layer's closed shapes: its lines
+            doc.add(2, f'<interval Value="{_f(o.interval)}"/>')
+            doc.add(2, '<bidir Value="1"/>')
         doc.add(1, "</CutSetting>")
     # the parts in the order their first cut comes; each part's shapes in plan order
     loose = [c for c in cuts if not c.part]

@@ -28,7 +28,9 @@ when needed so that the Bézier leaves the circle (or ellipse) by at most :data:
 1e-3 mm (:mod:`.beziers`, shared with the LightBurn writer: the bound of a piece of sweep
 ``t`` is ``r 4/27 sin^6(t/4) / cos^2(t/4)``; an ellipse by its larger semi-axis).  Through-cuts
 (a ``cut`` structure's curves, open paths too) are cuts: black, :data:`CUT_WIDTH` pt.
-Engraving strokes are blue, :data:`ENGRAVE_WIDTH` pt.  Each solid part's name is
+Engraving strokes are blue, :data:`ENGRAVE_WIDTH` pt; an area engraved filled
+(``Text(..., font=, fill=true)``, issue 112) is one blue path filled by the non-zero rule
+(``f``), its loops the letters and their counters.  Each solid part's name is
 printed small inside it, at the point of its material farthest from every cut line found on a
 grid (:func:`label_point`).  Coordinates are written to 1e-6 pt (3.5e-7 mm; :data:`DIGITS`)
 — ReportLab's own drawing keeps 7 significant digits (2834.123 pt: 3.5e-4 mm off), so the
@@ -55,7 +57,8 @@ import math
 import numpy as np
 
 from ..part.extent import extent
-from ..part.part import Arc, Circle, EllipticArc, Line, MissingDependency, Output, OutputError
+from ..part.part import (Arc, Circle, EllipticArc, Line, MissingDependency, Output, OutputError,
+                         fill_regions)
 from ..part.edges.shared import cut_once, loop_paths
 from . import beziers
 
@@ -353,7 +356,12 @@ def _page(c, output: Output, pen: _Pen, win, tiled: bool, where: dict) -> None:
         for st in cuts:
             ops += pen.path(st.segments, st.closed)
         ops.append("S")
-    strokes = [st for st in output.engrave if st.segments and st.style != "cut"]
+    for _, _, loops in fill_regions(output.engrave):   # areas engraved filled: blue, filled
+        ops += [_rgb(ENGRAVE_RGB), _rgb(ENGRAVE_RGB).replace("RG", "rg")]   # blue, not a cut
+        for segs in loops:
+            ops += pen.path(segs, True)
+        ops.append("f")
+    strokes = [st for st in output.engrave if st.segments and st.style not in ("cut", "fill")]
     if strokes:
         ops += [_rgb(ENGRAVE_RGB), f"{ENGRAVE_WIDTH:g} w"]
         for st in strokes:

@@ -6,7 +6,10 @@ Bézier spans; every arc in ``A`` pieces of at most a quarter turn, a full circl
 in the preview style, a ``<circle>`` in the laser style; numbers to 1e-9 mm, :data:`DIGITS`); ``engrave`` holds drawings, text and
 unclosed curves.  Debug layers appear only when asked for (``show``): ``holes`` (each hole's
 declared outline, dashed), ``bboxes`` (every structure's bounding box), ``construction``
-(construction geometry).
+(construction geometry).  ``fill`` (when there is one, under ``engrave``) holds the areas
+engraved filled (``Text(..., font=, fill=true)``, issue 112): one path per area, its loops
+(the letters and their counters) one ``d``, filled black ``#000000`` in the laser style (no
+stroke: a laser program's fill/scan layer) and blue in the preview.
 
 Styles: ``preview`` (default) fills solids light grey for readability, with a thin dark stroke;
 ``laser`` is stroke-only, hairlines 0.01 mm wide (:data:`HAIRLINE`, in the mm user units of
@@ -25,7 +28,7 @@ import numpy as np
 from ..part.extent import extent
 from ..part.edges.shared import cut_once, loop_paths
 from ..part.part import (PALETTE, Arc, Circle, EllipticArc, Line, Loop, Output, OutputError, Spline,
-                    build)
+                    build, fill_regions)
 
 SHOW = ("holes", "bboxes", "construction")
 # the engrave layers of the heads of countersinks and counterbores (issue 102): their own
@@ -200,12 +203,21 @@ def to_svg(output, title: str = "", show=(), style: str = "preview",
         e.update({"fill": "none", "class_": "through-cut"})
         cut.add(e)
     d.add(cut)
+    fills = fill_regions(output.engrave)
+    if fills:       # areas engraved filled (issue 112): one path per area, above the cuts
+        gf = d.g(id="fill", fill="#000000" if laser else "#1565c0", stroke="none",
+                 fill_rule="nonzero", **({} if laser else {"fill_opacity": "0.85"}))
+        for src, _, loops in fills:
+            e = d.path(d="".join(segments_d(segs, True) for segs in loops))
+            e.set_desc(title=src)
+            gf.add(e)
+        d.add(gf)
     eng = d.g(id="engrave", fill="none", stroke="#0000ff" if laser else "#1565c0",
               stroke_width=_f(hairline if laser else sw), stroke_linecap="round",
               stroke_linejoin="round")
     sinks: dict = {}
     for st in output.engrave:
-        if st.style == "cut":
+        if st.style in ("cut", "fill"):
             continue
         e = _element(d, st.segments, st.closed)
         if st.style in SINK_STYLES:         # a countersink's head: an engrave layer of its own

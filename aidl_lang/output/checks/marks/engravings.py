@@ -201,7 +201,7 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
     a part whose points are all certainly on it (:func:`_all_on_material`) is not grown."""
     by_geom: dict = {}
     for style, item, g in d.strokes:
-        if style == "drawing" and g is not None:
+        if style in ("drawing", "fill") and g is not None:
             by_geom.setdefault(g, []).append(item)
     by_part: dict = {}
     for g, items in by_geom.items():

@@ -313,6 +313,8 @@ class Renderer(Faces):
             out.lines.append((style, self.curve(g)))
             self.stroke(g, style, out)
         elif g.kind == "Text" and g.data.get("font"):    # engraved outlines (issue 112)
+            if g.data.get("fill") and style == "drawing":
+                style = "fill"       # its area: the union's loops, outer ccw, holes cw
             for lp in self.loops_of(g):
                 for seg in lp.segments:
                     self.exact.carrier_id(carrier(seg))

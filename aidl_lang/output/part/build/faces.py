@@ -406,6 +406,8 @@ class Faces:
             ang = g.data.get("angle")
             from ....geometry.shapes.text_outlines import along_loops
             local = along_loops(g, r, mid if ang is None else ang)
+            bands = along_loops(g, r, mid if ang is None else ang, bands=True) \
+                if g.data.get("stencil") else []
             wide = F.width(F.shaped(g.data["font"], g.data["text"], g.data["size"]))
             if wide > 2 * math.pi * r and not any(e[0] is g for e in self.shape_errors):
                 self.shape_errors.append((g, (
@@ -415,13 +417,13 @@ class Faces:
                     "or a shorter text", "W0111"))
         else:
             local = local_loops(g)
+            bands = bridges(g) if g.data.get("stencil") else []
         loops = [Loop(moved(lp.segments, ox, oy)) for lp in local]
         for lp in loops:
             for sg in lp.segments:
                 if isinstance(sg, Spline):
                     self.spline_source.setdefault(sg.curve, g)
-        held = [Loop(moved(lp.segments, ox, oy)) for lp in bridges(g)] \
-            if g.data.get("stencil") else []
+        held = [Loop(moved(lp.segments, ox, oy)) for lp in bands]
         return loops, held
 
     def face(self, g: Geometry, s: Structure | None = None) -> mf.CrossSection | None:

@@ -14,7 +14,8 @@ outlines, open curves, Text) is cut exactly where it crosses the hole's outline 
 crossings of the carriers, as :func:`~aidl_lang.geometry.derived.clip.clip`) and a piece is
 kept when it lies outside the hole: not inside it (even-odd) and not along its outline (that
 line is the front shape's own edge, drawn once by it).  Every kept piece lies on its own
-carrier and ends exactly on the hole's outline.  Lengths in mm.
+carrier and ends exactly on the hole's outline.  An area engraved filled (``Text(..., font=,
+fill=true)``) is its letters' area less the holes', its loops recovered exact.  Lengths in mm.
 """
 from __future__ import annotations
 
@@ -40,9 +41,15 @@ def masked(R, s, masks: list, out, mark: tuple[int, int]) -> None:
     drawn = out.strokes[mark[0]:]
     g0 = drawn[0][2] if drawn else None
     del out.strokes[mark[0]:], out.lines[mark[1]:]
+    filled = list({id(g): g for style, _, g in drawn if style == "fill"}.values())
+    drawn = [d for d in drawn if d[0] != "fill"]
+    areas = [R.face(g) for g in filled]
     for c, sec in sections:
         loops = R.exact.loops(sec) if not sec.is_empty() else []
         kept, hid = [], False
+        for k, area in enumerate(areas):       # an area engraved filled: less the hole
+            if area is not None and not sec.is_empty() and not (area ^ sec).is_empty():
+                areas[k], hid = area - sec, True
         for style, stroke, g in drawn:
             segs = stroke_segments(stroke)
             pieces = [p for seg in segs for p in outside(seg, loops)]
@@ -58,6 +65,11 @@ def masked(R, s, masks: list, out, mark: tuple[int, int]) -> None:
                 f"nothing (a hole in a drawing hides the engraving under it)"),
                 "move the hole over the lines it should hide, or delete it (a hole in a "
                 "drawing cuts no material)", "W0526"))
+    for g, area in zip(filled, areas):
+        for lp in (R.exact.loops(area) if area is not None and not area.is_empty() else []):
+            pl = lp.points()
+            out.strokes.append(("fill", ("poly", pl, lp), g))
+            out.lines.append(("fill", np.vstack([pl, pl[:1]])))
     for style, stroke, g in drawn:
         if stroke[0] == "piece":
             seg = stroke[1]
