@@ -108,6 +108,13 @@ def test_the_same_answer_and_work_at_either_cpu_scale(tmp_path):
     from aidl_lang.base.limits import DEFAULT_BUDGET, budget_factor_text
     assert budget_factor_text(ok["work"]["spent"], DEFAULT_BUDGET) == "--budget 0.064"
     assert d["span"]["line"] == 4 and "raise the budget with `--budget 0.064`" in d["hint"]
+    from aidl_lang.output.part.part import Circle, Loop
+    from aidl_lang.output.writers.mesh import SECONDS_PER_TOOL_VERTEX
+    from aidl_lang.base.limits import seconds_as_work
+    cones = 64 * 2 * len(Loop([Circle((0.0, 0.0), 1.5)]).points()) * SECONDS_PER_TOOL_VERTEX
+    assert d["hint"].endswith(f"; cutting the 64 countersinks and counterbores into the solid "
+                              f"needs {int(seconds_as_work(cones)):,} of those units (the SVG, "
+                              "DXF and G-code draw their heads without cutting a solid)")
 
 
 def _sunk_hole() -> float:

@@ -189,6 +189,14 @@ def encode(output: Output, suffix: str, options: Options | None = None,
         except OutOfBudget as ex:
             ex.where = _biggest_part(output)
             ex.what += "; nothing was written"
+            if fmt.per_vertex and ex.hint:
+                from .mesh import tool_seconds
+                tools, seconds = tool_seconds(output)
+                if tools:       # what the cones cost, and the formats that draw them for less
+                    ex.hint += (f"; cutting the {tools:,} countersinks and counterbores "
+                                f"into the solid needs {int(seconds_as_work(seconds)):,} of "
+                                "those units (the SVG, DXF and G-code draw their heads "
+                                "without cutting a solid)")
             raise OutputError(f"the {suffix.lstrip('.').upper()} writer would end past the "
                               f"budget ({ex.what}); build less or raise the budget "
                               "(`--budget 2`)", ex) from None

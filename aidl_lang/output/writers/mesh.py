@@ -100,15 +100,25 @@ def solid_seconds(output: Output, per_vertex: float) -> float:
             continue
         v, loops = float(p.shape.num_vert()), float(p.shape.num_contour())
         seconds += per_vertex * v + TRIANGULATE_PER_VL * v * loops + TRIANGULATE_PER_VV * v * v
+    return seconds + tool_seconds(output)[1]
+
+
+def tool_seconds(output: Output) -> tuple[int, float]:
+    """``(tools, seconds)``: how many countersinks and counterbores of ``output`` cut a tool
+    from its solid (:func:`~..part.part.sink_tools`: a cone or a step), and what cutting them
+    costs (reference-machine CPU seconds, :data:`SECONDS_PER_TOOL_VERTEX` a vertex of a tool:
+    two rings of its hole's chords)."""
     chords: dict = {}
+    tools = vertices = 0
     for _, sk in sink_heads(output):
         if sk.cone_depth() <= 0:
             continue            # no tool (sink_tools leaves it out)
         n = chords.get(sk.hole_d)
         if n is None:
             n = chords[sk.hole_d] = len(Loop([Circle((0.0, 0.0), sk.hole_d / 2)]).points())
-        seconds += SECONDS_PER_TOOL_VERTEX * 2 * n
-    return seconds
+        tools += 1
+        vertices += 2 * n
+    return tools, vertices * SECONDS_PER_TOOL_VERTEX
 
 
 def _weld_ends(flat: np.ndarray, v: np.ndarray, f: np.ndarray, tol: float = 1e-6) -> np.ndarray:
