@@ -135,6 +135,22 @@ def test_law_each_bound_holds_where_the_sweep_judged_and_where_checked_here(src,
         assert _fails(src, {**at, n: mid}, rep.units), (n, mid)
 
 
+def test_the_studios_sweep_says_bounds_judged_on_both_sides_too():
+    """The studio's request (the scan of each slider alone, then the sweep's combinations,
+    one budget): its combinations' bounds are bisected at the failing values, never read off
+    the scan's values (which hold the other sliders where they are written)."""
+    from aidl_lang.params.sweep_scan import scan_and_sweep
+    _, rep = scan_and_sweep(DISC, "p.aidl")
+    claims = list(_claims(rep))
+    assert {n for _, n, *_ in claims} == {"off", "r"}, rep.combinations()
+    _holds_at_the_points_judged(rep, {"off": 10.0, "r": 3.0})
+    for f, n, clean, failing, side in claims:
+        # the wall to the right edge: 30 - off - r >= 0.5 mm exactly where it is clean
+        other = f.values["r" if n == "off" else "off"]
+        edge = 30 - 0.5 - other
+        assert failing > edge >= clean - 1e-9, (n, clean, failing, edge)
+
+
 def test_a_combination_without_a_bound_judged_says_its_values_only():
     """A budget that ends before the bounds are bisected: the sentence gives the failing
     values and says no bound was judged on both sides, never the line's guess."""

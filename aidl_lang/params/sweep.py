@@ -578,7 +578,9 @@ class _Sweep:
             a = {**vals, p.name: written[p.name]}
             if self._judge(a) != []:
                 continue                # not judged, or it fails at its written value too
-            t, start, cut = self._bisect(a, vals)
+            # the sweep's own bisection: a subclass's (the studio's scan) reads the param
+            # alone at the other params' written values, not at these
+            t, start, cut = _Sweep._bisect(self, a, vals)
             if cut:
                 continue
             x0, x1 = written[p.name], vals[p.name]
