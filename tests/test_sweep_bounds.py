@@ -97,6 +97,8 @@ def test_the_issues_combination_is_said_by_bounds_judged_on_both_sides():
     assert line == (f"`w` below {w_clean:g} mm with `n` = 10; `n` above 4 with `w` = 20 mm: "
                     f"{f.code}"), line
     assert f"sweep: combination: {line}" in rep.text()
+    [js] = [g for g in rep.to_json()["findings"] if len(g["clean"]) > 1]
+    assert js["bounds"]["n"] == {"clean": 4.0, "failing": 5.0, "side": "above"}
     # the issue's point: with n = 10, w = 34 mm (above the old diagonal bound) fails, and the
     # bound said puts it on the failing side
     assert _fails(src, {"w": 34.0, "n": 10.0}, rep.units) and 34.0 < w_clean

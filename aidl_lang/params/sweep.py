@@ -277,7 +277,9 @@ class SweepReport:
                            for n, x in self.lifted.items()},
                 "findings": [{"values": f.values, "code": f.code, "message": f.message,
                               "clean": {k: list(v) for k, v in f.clean.items()},
-                              "declared": f.declared, "cut": f.cut}
+                              "declared": f.declared, "cut": f.cut,
+                              "bounds": {k: {"clean": c, "failing": x, "side": side}
+                                         for k, (c, x, side) in f.bounds.items()}}
                              for f in self.findings]}
 
 
