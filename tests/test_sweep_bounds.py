@@ -18,6 +18,7 @@ import pytest
 
 import aidl_lang
 from aidl_lang.params.sweep import sweep
+from test_studio_sweep import SLID  # noqa: E402
 
 SLOTS = """units mm
 param w = 60 mm, min = 20 mm, max = 100 mm
@@ -105,16 +106,11 @@ def test_the_issues_combination_is_said_by_bounds_judged_on_both_sides():
     _holds_at_the_points_judged(rep, written)
 
 
-# a hole of radius `r` at `off` in a 60 x 40 mm plate: each alone is clean, together the wall
-# to the right edge (30 - off - r) is thinner than 0.5 mm: a slanted line again, both reals
-DISC = """units mm
-param off = 10 mm, min = 0 mm, max = 25 mm
-param r = 3 mm, min = 1 mm, max = 18 mm
-solid plate {
-    body = Rectangle(center=(0, 0), width=60, height=40)
-    hole h { c = Circle(center=(off, 0), radius=r) }
-}
-"""
+# test_studio_sweep's hole of radius `r` at `off` in a 60 x 40 mm plate (off to 25 mm, r to
+# 18 mm): each alone is clean, together the wall to the right edge (30 - off - r) is thinner
+# than 0.5 mm: a slanted line again, both reals
+DISC = (SLID.replace("height=20", "height=40").replace("max=40 mm", "max=25 mm")
+        .replace("max=5 mm", "max=18 mm"))
 
 
 @pytest.mark.parametrize("src, written", [(SLOTS.format(slot=3), {"w": 60.0, "n": 4.0}),
