@@ -171,7 +171,8 @@ def test_a_combination_is_said_in_words_and_hatches_no_slider():
     assert said == [], got
     assert got["params"]["off"]["clean"] == [0.0, 25.0]
     [c] = got["combinations"]
-    assert c.startswith("`off` above ") and " with `r` above " in c, c
+    # each bound judged on both sides, the other slider held at the failing value (issue 110)
+    assert c.startswith("`off` above ") and " with `r` = " in c and "; `r` above " in c, c
     # in words: what breaks there, not a code; the page's wording as its other texts
     said = c.split(": ", 1)[1]
     assert ("hole `plate.h`" in said or "a wall of `plate`" in said) and "W0" not in c, c

@@ -69,7 +69,12 @@ class Finding:
     first failing point bisection found past the clean range when it fails otherwise than
     at ``values`` (None: the same way); ``declared``: every param moved has a declared range
     (else the sliders' default span was swept); ``cut``: the budget ran out before the
-    bisection reached its tolerance (between ``clean`` and ``values``: not judged)."""
+    bisection reached its tolerance (between ``clean`` and ``values``: not judged);
+    ``bounds``: for a combination, ``{param: (clean, failing, side)}``: the param bisected
+    alone, every other param at its value in ``values``, ``clean`` the value judged clean
+    nearest the failing side (``below``/``above`` it the design fails), ``failing`` the
+    value judged failing nearest it; a param left out has no bound judged on both sides
+    (the budget, or a point the sweep judged contradicting it: issue 110)."""
 
     values: dict
     code: str
@@ -80,6 +85,7 @@ class Finding:
     first: tuple | None = None
     declared: bool = True
     cut: bool = False
+    bounds: dict = field(default_factory=dict)
 
 
 @dataclass
@@ -97,6 +103,8 @@ class SweepReport:
     clean); ``bisections``: the bisection steps judged; ``tolerance``: the bisection's stopping
     width (a fraction of each range); ``ranges``: ``{param: (lo, hi)}`` swept (display
     units); ``findings``: :class:`Finding` list (empty: clean across the ranges);
+    ``seen``: every point judged, ``{tuple(sorted((param, value), ...)): (code, ...)}`` (its
+    problems' codes; empty: clean);
     ``lifted``: for a program without a numeric ``param``, ``{name: Literal}`` of the numbers
     swept as params (:mod:`aidl_lang.params.sweep_literals`; :func:`~aidl_lang.params.sweep_literals.written`
     writes a finding's values into the file)."""
@@ -118,6 +126,7 @@ class SweepReport:
     lifted: dict = field(default_factory=dict)
     findings: list = field(default_factory=list)
     errors: list = field(default_factory=list)
+    seen: dict = field(default_factory=dict)    # (sorted (param, value) pairs) -> codes
     point_work: int = 0          # the least work a point was seen to need (the written
     short: int = 0               # values' compile first), and the work left when the next
     #                              point was not started for want of it (0: never)
@@ -141,20 +150,33 @@ class SweepReport:
         return [f.diagnostic for f in self.findings]
 
     def combinations(self) -> list[str]:
-        """Each combination finding in words: ``teeth below 14 with bore above 13 mm: E0405``
-        (each param's side of the written value and the end of what bisection found clean
-        on the way there)."""
+        """Each combination finding in words, each bound one the sweep judged on both sides
+        (:attr:`Finding.bounds`: the param bisected alone, the others held at the finding's
+        values): ``` `w` below 35.2 mm with `n` = 10; `n` above 5 with `w` = 20 mm: W0504```.
+        A param with no such bound is said at its value (``no bound judged for `n```).
+        Before (issue 110) the bound was where the line from the written values to the
+        failing point crossed clean (``w below 32.2 mm with n above 8``), which a failing
+        point off that line contradicted (w = 34 mm with n = 10)."""
         out = []
         for f in self.findings:
             if len(f.clean) < 2:
                 continue
-            parts = []
-            for n, (lo, hi) in f.clean.items():
+            names = list(f.clean)
+
+            def shown(n, x):
                 unit = self.units.get(n, "")
-                v = f.values[n]
-                side, end = ("above", hi) if v > hi else ("below", lo)
-                parts.append(f"`{n}` {side} {_text(end, unit, not unit and float(end).is_integer())}")
-            out.append(f"{' with '.join(parts)}: {f.code}")
+                return _text(x, unit, not unit and float(x).is_integer())
+            parts = []
+            for n, (clean, _, side) in f.bounds.items():
+                held = " and ".join(f"`{m}` = {shown(m, f.values[m])}" for m in names if m != n)
+                parts.append(f"`{n}` {side} {shown(n, clean)} with {held}")
+            rest = [n for n in names if n not in f.bounds]
+            if not parts:
+                parts.append(" with ".join(f"`{n}` = {shown(n, f.values[n])}" for n in names)
+                             + " (no bound judged on both sides)")
+            elif rest:
+                parts.append("no bound judged for " + ", ".join(f"`{n}`" for n in rest))
+            out.append(f"{'; '.join(parts)}: {f.code}")
         return out
 
     def unjudged(self) -> list[str]:
@@ -255,7 +277,9 @@ class SweepReport:
                            for n, x in self.lifted.items()},
                 "findings": [{"values": f.values, "code": f.code, "message": f.message,
                               "clean": {k: list(v) for k, v in f.clean.items()},
-                              "declared": f.declared, "cut": f.cut}
+                              "declared": f.declared, "cut": f.cut,
+                              "bounds": {k: {"clean": c, "failing": x, "side": side}
+                                         for k, (c, x, side) in f.bounds.items()}}
                              for f in self.findings]}
 
 
@@ -541,6 +565,46 @@ class _Sweep:
                     else [max(lo, x), hi]
             self._finding(vals, got, {p.name: tuple(clean[p.name]) for p in moved}, moved,
                           start, cut)
+            if len(moved) > 1:
+                self.report.findings[-1].bounds = self._bounds(vals, moved, written)
+
+    def _bounds(self, vals: dict, moved: list, written: dict) -> dict:
+        """A combination's bound along each param ``moved`` alone, the others held at the
+        failing ``vals`` (:attr:`Finding.bounds`): bisected from the param's written value
+        (judged clean there first) to its failing one, and kept only when no point the sweep
+        judged on that line contradicts it (failing on its clean side, or clean past it
+        toward the failing value): issue 110's ``w below 41.5 with n above 7``, though
+        w = 44 with n = 8 failed too."""
+        out = {}
+        for p in moved:
+            a = {**vals, p.name: written[p.name]}
+            if self._judge(a) != []:
+                continue                # not judged, or it fails at its written value too
+            # the sweep's own bisection: a subclass's (the studio's scan) reads the param
+            # alone at the other params' written values, not at these
+            t, start, cut = _Sweep._bisect(self, a, vals)
+            if cut:
+                continue
+            x0, x1 = written[p.name], vals[p.name]
+            clean = p.at(x0 + t * (x1 - x0)) if t > 0 else x0
+            failing = start[0][p.name] if start is not None else x1
+            up = x1 > x0
+            ok = True
+            for key, codes in self.report.seen.items():
+                pt = dict(key)
+                if p.name not in pt or any(pt.get(q.name, q.value) != vals[q.name]
+                                           for q in self.params if q is not p):
+                    continue            # off the line
+                x = pt[p.name]
+                beyond = x > clean if up else x < clean
+                within = min(x0, clean) <= x <= max(x0, clean)
+                toward = min(clean, x1) <= x <= max(clean, x1)
+                if (within and codes) or (beyond and toward and not codes):
+                    ok = False
+                    break
+            if ok:
+                out[p.name] = (clean, failing, "above" if up else "below")
+        return out
 
     def _needed(self, vals: dict, got: list, written: dict) -> tuple[dict, list]:
         """A failing combination ``vals`` (problems ``got``) with each param that plays no
@@ -609,6 +673,7 @@ class _Sweep:
             self.work_left -= cost
             self.report.work += cost
             self.problems[key] = self.settled[same]
+            self.report.seen[key] = tuple(c for c, _ in self.settled[same])
             return self.settled[same]
         if self.work_left - cost < self.report.point_work:
             # a compile the work left cannot pay is not started (issue 110: a 20,000-hole
@@ -647,6 +712,7 @@ class _Sweep:
                 self.report.judged[p.name] = self.report.judged.get(p.name, 0) + 1
         got = [(errs[0].code, errs[0].message)] if errs else self._changes(res, counted)
         self.problems[key] = self.settled[same] = got
+        self.report.seen[key] = tuple(c for c, _ in got)
         return got
 
     def _clamped(self, ov: dict) -> tuple[dict, int]:

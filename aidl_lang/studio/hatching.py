@@ -31,8 +31,10 @@ def sweep_ranges(folder: str, source: str, budget=None, values: dict | None = No
     ``clean``); ``skipped``: the points planned and not judged; ``points``, ``work``: what
     the request judged and spent (:func:`aidl_lang.params.sweep_scan.scan_and_sweep`).  A
     combination (two or more sliders away from their values together) hatches no slider:
-    ``combinations`` says it in words (``teeth below 11 with bore above 15.5 mm: the bore
-    ...``: the page words it as its other texts).
+    ``combinations`` says it in words, each bound judged on both sides with the other sliders
+    at the failing values (``off above 24 mm with r = 18 mm; r above 4.5 mm with off = 25 mm:
+    a wall ...``, :meth:`~aidl_lang.params.sweep.SweepReport.combinations`: the page words
+    it as its other texts).
     ``ok`` false: the program does not compile at these values (nothing swept)."""
     from ..serve.params import declared_params
     from ..serve.wording import for_forms
@@ -56,9 +58,9 @@ def sweep_ranges(folder: str, source: str, budget=None, values: dict | None = No
 
 
 def _combinations(rep, for_forms) -> list[str]:
-    """Each combination of the sweep ``rep`` in words: which sliders, past which values, and
-    what breaks there (``teeth below 11 with bore above 15.5 mm: the bore ...``), not a
-    code."""
+    """Each combination of the sweep ``rep`` in words: which sliders, past which values (each
+    judged on both sides, the others held), and what breaks there (``off above 24 mm with r =
+    18 mm; ...: a wall ...``), not a code."""
     combos = [f for f in rep.findings if len(f.clean) >= 2]
     return [for_forms(f"{line.rsplit(': ', 1)[0]}: {f.problem or f.code}")
             for line, f in zip(rep.combinations(), combos)]

@@ -139,15 +139,15 @@ def writer_seconds(output: Output, suffix: str, options: Options | None = None) 
     """An estimate of the wall time (s) of :func:`encode` of ``output`` as ``suffix``
     (:data:`WRITER_START`, each :class:`Format`'s ``per_item`` or ``per_vertex``,
     :data:`SECONDS_PER_PIXEL`; for SVG and DXF a quiet machine's time, for the others about
-    twice a busy one's), so that a writer sure to end past the deadline is refused before it
+    twice a busy one's; STL, 3MF and GLB also their faces' triangulation and their
+    countersinks' cones, :func:`~.mesh.solid_seconds`), so that a writer sure to end past the deadline is refused before it
     starts.  A PNG over :data:`~.png.MAX_SIDE` or :data:`~.png.MAX_AREA` costs only
     the start: :func:`~.png.to_png` refuses it before drawing."""
     suffix = suffix.lower()
     fmt = FORMATS.get(suffix)
     if fmt is not None and fmt.per_vertex:
-        d = output.drawing
-        verts = sum(p.shape.num_vert() for p in d.parts) if d is not None else 0
-        return WRITER_START + fmt.per_vertex * verts
+        from .mesh import solid_seconds
+        return WRITER_START + solid_seconds(output, fmt.per_vertex)
     items = sum(1 + len(p.loops) + sum(len(lp.segments) for lp in p.loops)
                 for p in output.parts) + sum(len(st.segments) for st in output.engrave)
     seconds = WRITER_START + (fmt.per_item if fmt is not None else 0.0) * items
@@ -189,6 +189,14 @@ def encode(output: Output, suffix: str, options: Options | None = None,
         except OutOfBudget as ex:
             ex.where = _biggest_part(output)
             ex.what += "; nothing was written"
+            if fmt.per_vertex and ex.hint:
+                from .mesh import tool_seconds
+                tools, seconds = tool_seconds(output)
+                if tools:       # what the cones cost, and the formats that draw them for less
+                    ex.hint += (f"; cutting the {tools:,} countersinks and counterbores "
+                                f"into the solid needs {int(seconds_as_work(seconds)):,} of "
+                                "those units (the SVG, DXF and G-code draw their heads "
+                                "without cutting a solid)")
             raise OutputError(f"the {suffix.lstrip('.').upper()} writer would end past the "
                               f"budget ({ex.what}); build less or raise the budget "
                               "(`--budget 2`)", ex) from None

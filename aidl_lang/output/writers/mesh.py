@@ -12,9 +12,27 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..part.part import MissingDependency, Output, sink_heads, sink_tools
+from ..part.part import Circle, Loop, MissingDependency, Output, sink_heads, sink_tools
 
 DEFAULT_THICKNESS = 3.0
+
+# What a part's solid costs beyond its writer's per-vertex figure (issue 110: the STL of a 70 x
+# 70 grid of countersunk 3 mm holes was priced 1.4 M work units and took 128 s of CPU, past the
+# backstop; at AIDL_CPU_SCALE=3 the n = 55 one was written on one machine, E0304 on another).
+# Measured with manifold3d 3.5 on the 2-core reference machine under load (9 jobs), CPU time:
+# - ``Manifold.extrude`` triangulates the section's faces: about TRIANGULATE_PER_VL s per
+#   vertex times loop (its holes are bridged one by one) plus TRIANGULATE_PER_VV per vertex
+#   squared: a 10 mm grid of 3 mm holes, n x n (V = 39 n^2, L = n^2 + 1): n = 20 0.10-0.14 s,
+#   30 0.29-0.38 s, 40 0.8-1.9 s, 55 5.5-10.4 s, 70 15-34 s; 20 x 20 holes of 600 chords
+#   (V = 240,000, L = 401) 6.6 s, 40 x 40 of 150 chords 7.9 s, 80 x 80 of 8 chords 1.6 s;
+# - the countersinks' cones and counterbores' steps (:func:`~..part.part.sink_tools`): built,
+#   united (``batch_boolean``) and subtracted from the extruded part, then their rims
+#   written: SECONDS_PER_TOOL_VERTEX a vertex of the tools (2 rings of the hole's chords
+#   each): 400 / 900 / 1,600 / 3,025 / 4,900 cones of 78 vertices 1.0 / 2.6 / 5.7 / 11 /
+#   20 s, 3.2-3.7 ms a cone, linear.
+TRIANGULATE_PER_VL = 3e-8
+TRIANGULATE_PER_VV = 1e-10
+SECONDS_PER_TOOL_VERTEX = 50e-6
 
 
 def _trimesh():
@@ -66,6 +84,41 @@ def bodies(output: Output, thickness: float | None = None,
             tm.remove_unreferenced_vertices()
         out.append((p.name, tm))
     return out
+
+
+def solid_seconds(output: Output, per_vertex: float) -> float:
+    """An estimate of the CPU seconds (reference machine) of the 3D writers' bodies of
+    ``output`` (:func:`bodies`, the GLB's scene alike): ``per_vertex`` s per vertex of each
+    solid part's section (the writer's own figure: extruding, re-reading, encoding), its
+    faces' triangulation (:data:`TRIANGULATE_PER_VL` x vertices x loops +
+    :data:`TRIANGULATE_PER_VV` x vertices squared) and its countersinks' and counterbores'
+    tools (:data:`SECONDS_PER_TOOL_VERTEX` a vertex).  Counted from the output alone (no
+    Manifold call): the same on every machine, so the work budget decides (issue 110)."""
+    seconds = 0.0
+    for p in output.parts:
+        if p.kind != "solid" or p.shape is None or p.shape.is_empty():
+            continue
+        v, loops = float(p.shape.num_vert()), float(p.shape.num_contour())
+        seconds += per_vertex * v + TRIANGULATE_PER_VL * v * loops + TRIANGULATE_PER_VV * v * v
+    return seconds + tool_seconds(output)[1]
+
+
+def tool_seconds(output: Output) -> tuple[int, float]:
+    """``(tools, seconds)``: how many countersinks and counterbores of ``output`` cut a tool
+    from its solid (:func:`~..part.part.sink_tools`: a cone or a step), and what cutting them
+    costs (reference-machine CPU seconds, :data:`SECONDS_PER_TOOL_VERTEX` a vertex of a tool:
+    two rings of its hole's chords)."""
+    chords: dict = {}
+    tools = vertices = 0
+    for _, sk in sink_heads(output):
+        if sk.cone_depth() <= 0:
+            continue            # no tool (sink_tools leaves it out)
+        n = chords.get(sk.hole_d)
+        if n is None:
+            n = chords[sk.hole_d] = len(Loop([Circle((0.0, 0.0), sk.hole_d / 2)]).points())
+        tools += 1
+        vertices += 2 * n
+    return tools, vertices * SECONDS_PER_TOOL_VERTEX
 
 
 def _weld_ends(flat: np.ndarray, v: np.ndarray, f: np.ndarray, tol: float = 1e-6) -> np.ndarray:
