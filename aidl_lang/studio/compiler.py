@@ -540,24 +540,26 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
     if options.get("style") == "preview":
         name += "-preview"              # the picture, never under the cutting file's name
     media = FORMATS[suffix].media
+    tags = settings_tags(suffix, got)   # what the settings change: never one name for two files
     try:
         if layout:
             options.pop("assembled")
             sheets = res.layout(sheet=sheet, kerf=kerf).encode(suffix, **options)
             if len(sheets) == 1:
-                return sheets[0], f"{name}-sheet{suffix}", media
+                return sheets[0], f"{name}-sheet{tags}{suffix}", media
             buf = io.BytesIO()
             with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as z:
                 for i, data in enumerate(sheets, 1):
-                    z.writestr(f"{name}-sheet-{i}{suffix}", data)
+                    z.writestr(f"{name}-sheet-{i}{tags}{suffix}", data)
             # one name per format: the DXF, SVG and PDF sheets never overwrite each other
-            return buf.getvalue(), f"{name}-sheets-{suffix[1:]}.zip", "application/zip"
+            return buf.getvalue(), f"{name}-sheets{tags}-{suffix[1:]}.zip", "application/zip"
         assembled = options.get("assembled")
         if suffix == ".stl" and assembled:
-            return closed_stl(res.output, options["thickness"]), f"{name}{suffix}", media
+            return closed_stl(res.output, options["thickness"]), f"{name}{tags}{suffix}", media
         if FORMATS[suffix].module == "gcode" and not assembled:
-            return gcode_at_origin(res.output, kerf, suffix, options), f"{name}{suffix}", media
-        return res.encode(suffix, kerf, **options), f"{name}{suffix}", media
+            return (gcode_at_origin(res.output, kerf, suffix, options), f"{name}{tags}{suffix}",
+                    media)
+        return res.encode(suffix, kerf, **options), f"{name}{tags}{suffix}", media
     except (MissingDependency, OutputError, ValueError) as e:
         if getattr(e, "budget", None) is not None:      # bounded work or memory: E0304
             from ..pipeline import report_out_of_budget
@@ -567,6 +569,31 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
 
 
 SVG_STYLES = ("laser", "preview")
+DEFAULT_SHEET = (600.0, 400.0)  # mm: the cutting sheet of a download that names none
+
+
+def settings_tags(suffix: str, got: dict) -> str:
+    """What a download's settings (``got``: :func:`download_settings`' answer for the format
+    ``suffix``) change in its file, as its name's tail (issue 113: ``finger_box-sheet.dxf``
+    was one name for the sheet with no kerf and with 0.2 mm, for 600 x 400 and 1000 x 1000
+    sheets; ``.gcode`` for the laser and the router; ``.pdf`` for one page and A4 tiles):
+    ``-kerf0.2`` (a kerf given, cutting formats), ``-1000x1000`` (a sheet other than
+    :data:`DEFAULT_SHEET`, nested), ``-router`` / ``-plotter`` (G-code for a machine other
+    than the laser it is written for by default), ``-a4tiles`` / ``-letter-landscapetiles``
+    (a PDF tiled over paper).  ``""`` for the defaults: the names of files made with them
+    stay as they were."""
+    from ..output import FORMATS
+    fmt, opts = FORMATS[suffix], got["options"]
+    tags = []
+    if got["kerf"] is not None and fmt.cut and not opts.get("assembled"):
+        tags.append(f"kerf{got['kerf']:g}")
+    if got["layout"] and tuple(float(x) for x in got["sheet"]) != DEFAULT_SHEET:
+        tags.append("x".join(f"{float(x):g}" for x in got["sheet"]))
+    if fmt.module == "gcode" and opts.get("machine") not in (None, "laser"):
+        tags.append(opts["machine"])
+    if opts.get("page"):
+        tags.append(f"{opts['page'].lower()}tiles")
+    return "".join(f"-{t}" for t in tags)
 
 
 def download_settings(suffix: str, settings) -> dict:
