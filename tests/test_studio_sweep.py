@@ -416,3 +416,44 @@ def test_law_a_hatch_ends_on_the_slider_step_next_to_the_clean_value(cx):
     said = {w: {d.code for d in api.compile(source=src, overrides={"w": f"{w}mm"}).diagnostics}
             for w in (lo - 0.5, lo)}
     assert said[lo] == set() and said[lo - 0.5], (cx, lo, said)
+
+
+# a count whose hole b lies on hole a at n = 16 alone (W0508): 7 mm apart at 15 and 17, a wall
+# of 1 mm; with the budget of three points the scan judges 0, 32 and 16 and no value between
+ALONE = """units mm
+param n = 0, min = 0, max = 32, step = 1
+solid plate {
+    body = Rectangle(center=(0, 0), width=240, height=40)
+    hole a { c = Circle(center=(0, 0), radius=3) }
+    hole b { c = Circle(center=((n - AT) * 7 mm, 0), radius=3) }
+}
+"""
+
+
+@pytest.mark.parametrize("at, where", [(16, "at 16"), (32, "at 32")])
+def test_a_value_broken_alone_between_parts_not_judged_is_a_band_of_that_value(tmp_path, at,
+                                                                                 where):
+    """Issue 113: the telephone's sweep held bands of one value (`base_w` broken at 215 with
+    the values on either side not judged) and one at the slider's end (from 320 of 320), each
+    with no value strictly between its ends: the page drew nothing and said "clean from 84 to
+    198 mm" while `--set base_w=215` gave W0510.  Such a band now carries its broken values
+    judged, `lo` to `hi` (both in), and says where (`at 16`); at the full budget the same
+    value is a band between the clean values 15 and 17."""
+    from aidl_lang.params.sweep_plan import WORK
+    from aidl_lang.studio.hatching import sweep_ranges
+    src = ALONE.replace("AT", str(at))
+    got = sweep_ranges(str(tmp_path), src, budget=5000 / WORK)
+    assert got["skipped"] > 0 and got["points"] <= 4
+    [band] = got["params"]["n"]["bands"]
+    assert (band["lo"], band["hi"], band["code"]) == (at, at, "W0508")
+    assert band["text"].startswith(f"{where}: hole `plate.b` lies wholly inside hole `plate.a`")
+    # the point itself is where --set breaks the design: the band holds it
+    from aidl_lang import api
+    assert "W0508" in {d.code for d in api.compile(source=src, overrides={"n": str(at)})
+                       .diagnostics}
+    assert not any(x["from"] < at < x["to"] for x in got["params"]["n"]["unjudged"])
+    if at == 16:
+        full = sweep_ranges(str(tmp_path), src)["params"]["n"]
+        [band] = full["bands"]
+        assert (band["from"], band["lo"], band["hi"], band["to"]) == (15, 16, 16, 17)
+        assert band["text"].startswith("at 16: ") and full["unjudged"] == []

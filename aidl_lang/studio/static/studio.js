@@ -725,7 +725,11 @@ function cleanOf(name) {            // the clean values a slider stops at: its c
 // design at), or null
 function bandAt(q, v) {
   if (!q || typeof v !== "number") return null;
-  return (q.bands || []).find((b) => (b.from === null || v > b.from + 1e-9) && (b.to === null || v < b.to - 1e-9)) || null;
+  // strictly between the clean values judged beside it, or from its first broken value judged
+  // to its last (both in: a value broken alone between parts not judged is a band of one value)
+  const within = (b) => (b.lo != null && v >= b.lo - 1e-9 && v <= b.hi + 1e-9)
+    || ((b.from === null || v > b.from + 1e-9) && (b.to === null || v < b.to - 1e-9));
+  return (q.bands || []).find(within) || null;
 }
 // a sweep is of the program and the sliders where they are: each slider alone is hatched where
 // it breaks the design at the other sliders' values
@@ -827,11 +831,15 @@ function markRanges() {
     // a band's clean values judged on either side are the slider's steps: the hatch stops
     // half a step short of them (a count's odd values each their own mark, not the track)
     const half = p.step > 0 ? p.step / 2 : 0;
+    // (a band's broken values judged, lo to hi, are always in it: one value alone is a tick)
     const mark = (z, b, inset = half) => {
       z.hidden = !b || !(span > 0);
       if (z.hidden) return;
-      z.style.setProperty("--from", frac(b.from === null ? null : b.from + inset, 0));
-      z.style.setProperty("--to", frac(b.to === null ? null : b.to - inset, 1));
+      const lo = b.from === null ? null : Math.min(b.from + inset, b.lo ?? Infinity);
+      const hi = b.to === null ? null : Math.max(b.to - inset, b.hi ?? -Infinity);
+      z.style.setProperty("--from", frac(lo, 0));
+      z.style.setProperty("--to", frac(hi, 1));
+      z.classList.toggle("tick", frac(hi, 1) - frac(lo, 0) < 0.01);
       z.title = b.text;
     };
     const track = row.querySelector(".track");
