@@ -578,3 +578,44 @@ def test_an_app_keeps_the_data_folder_it_was_given(tmp_path):
     with TestClient(create_app(Settings(data=str(given), compilers=1))) as c:
         assert c.post("/api/session").status_code == 200
     assert given.is_dir() and any(given.iterdir())
+
+
+def test_what_a_visitor_reads_has_no_internals(client):
+    """Issue 113: the page showed a template's assertion source for `fit = "tight"` (with a
+    blank list and a broken picture), "internal error ... RecursionError ... the next save is
+    compiled again" for a 40,000-term expression, "not a short text, number or true/false"
+    with backticks and no limit for a 10,000-character field, and "division by zero" for a
+    name tag with an empty name.  Each is now a sentence a visitor acts on: the value moved
+    to one of its choices (and said), the program's E0302 (as `aidl check` says it), the
+    limit, the example's own reason."""
+    from aidl_lang.studio import gallery
+    sid = session(client)
+    plate = gallery.entry("generator/mounting_plate").source
+    r = client.post("/api/view", json={"sid": sid, "source": plate, "values": {"fit": '"tight"'},
+                                       "defaults": {"fit": "medium"}})
+    v = r.json()
+    assert v["ok"] and v["svg"] and v["clamped"] == {"fit": "medium"}
+    assert v["moved"] == {"fit": "fit is fine, medium or coarse: “tight” is none of them, so "
+                                 "medium is used"}
+    tight = view(client, sid, plate.replace('param fit = "medium"', 'param fit = "tight"'))
+    [d] = [d for d in tight["diagnostics"] if d["severity"] == "error"]
+    assert (d["code"], d["message"]) == ("E0405", 'fit is "fine", "medium" or "coarse"')
+    deep = view(client, sid, "units mm\nsolid p { body = Rectangle(center=(0, 0), width="
+                + "+".join(["1"] * 40000) + ", height=5) }\n")
+    [d] = deep["diagnostics"]
+    assert (d["code"], d["message"]) == ("E0302", "the program is nested too deeply to compile")
+    assert d["span"]["line"] == 2
+    tag = gallery.entry("example/name_tag").source
+    r = client.post("/api/view", json={"sid": sid, "source": tag,
+                                       "values": {"name": '"' + "A" * 10_000 + '"'}})
+    assert r.status_code == 400
+    assert r.json()["error"] == "“name” takes at most 256 characters (this one has 10,002): " \
+                                "shorten it"
+    empty = view(client, sid, tag, {"name": '""'})
+    assert [(d["code"], d["message"]) for d in empty["diagnostics"]
+            if d["severity"] == "error"] == [("E0405", "the name cannot be empty")]
+    for answer in (v, tight, deep, empty, r.json()):
+        said = json.dumps([answer.get("error"), answer.get("moved")] + [
+            (d["message"], d["hint"]) for d in answer.get("diagnostics", [])], ensure_ascii=False)
+        for inside in ("`", "Error", "Traceback", "(1 if", "division", " save"):
+            assert inside not in said, (inside, said)

@@ -19,7 +19,7 @@ Requests (tuples, the first item names the kind):
   (:func:`aidl_lang.output.writers.glb.to_view_glb`: fewer triangles, shared meshes) as
   ``(bytes, name, media type)`` or ``{"error"}``, made from the drawing the session's last
   ``view`` of this program and these values drew (no second compile), else compiled.
-* ``("sweep", sid, folder, source, values)``: the program checked across its params' ranges,
+* ``("sweep", sid, folder, source, values[, scale])``: the program checked across its params' ranges,
   each slider alone at the others' ``values`` (:func:`aidl_lang.params.sweep.sweep`, bounded by its
   budget) as the sliders mark it (:func:`sweep_ranges`).
 * ``("thumb", id)``: the gallery entry's picture as SVG text (``""`` when it fails).
@@ -134,8 +134,9 @@ def handler(budget: float = 1.0):
                 answer = download(*request[1:], budget=scaled)
             elif kind == "glb":
                 answer = view_glb(sessions, *request[1:], budget=scaled)
-            elif kind == "sweep":
-                answer = sweep_ranges(request[2], request[3], budget=scaled,
+            elif kind == "sweep":       # (a sixth item: that many times the budget, issue 113)
+                answer = sweep_ranges(request[2], request[3], budget=scaled if len(request) < 6
+                                      else DEFAULT_BUDGET.scaled(budget * float(request[5])),
                                       values=request[4] if len(request) > 4 else None)
             elif kind == "thumb":
                 answer = thumbnail(*request[1:])
@@ -146,8 +147,13 @@ def handler(budget: float = 1.0):
         except Exception as e:          # noqa: BLE001 - answered, never a dead worker
             from ..base.limits import is_out_of_memory
             oom = is_out_of_memory(e)
-            if not oom:
-                answer = {"error": f"internal error: {type(e).__name__}: {e}"}
+            if not oom:                 # a fault of the studio: logged, said without Python
+                import sys
+                import traceback
+                print(f"aidl studio: internal error answering {kind}:\n"
+                      f"{traceback.format_exc()}", file=sys.stderr, flush=True)
+                from .wording import FAULT, FAULT_HINT
+                answer = {"error": f"{FAULT}; {FAULT_HINT}"}
         if oom:                         # said once the failed frames are gone
             sessions.clear()
             answer = out_of_memory_answer(request)
@@ -308,6 +314,7 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
     while len(sessions) > MAX_SESSIONS:
         sessions.popitem(last=False)
     values = {str(k): str(v) for k, v in (values or {}).items()}
+    values, chose = to_choices(source, values)
     assumed = defaults if isinstance(defaults, dict) else {}
     files = _listing(folder)        # an upload changes what the same program draws
     if s.source != source or s.program is None or files != getattr(s, "files", None):
@@ -340,6 +347,10 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
     doc = dict(doc)
     if later and getattr(s, "_checks_pending", None) is not None and doc.get("ok"):
         doc["checks"] = "pending"       # the page asks /api/checks for them
+    chose = {k: v for k, v in chose.items() if k in kept}
+    if chose:                       # a text value none of its choices: the program's own used
+        clamped = {**clamped, **{k: v[0] for k, v in chose.items()}}
+        doc["moved"] = {k: v[1] for k, v in chose.items()}     # what the page says of each
     if clamped:
         doc["clamped"] = clamped
     doc["dropped"] = sorted(set(values) - set(kept))
@@ -439,6 +450,32 @@ def settle(run, values: dict, doc: dict) -> tuple[dict, dict]:
         if doc.get("ok"):
             return doc, clamped
     return doc, {}
+
+
+def to_choices(source: str, values: dict) -> tuple[dict, dict]:
+    """``values`` (``--set`` texts) with a text param's value that is none of the values it
+    takes (:func:`.forms.choices.choices`: the mounting plate's ``fit`` is fine, medium or
+    coarse) replaced by the program's own, and ``{name: (value used, sentence)}`` for each
+    (issue 113: a share link's ``fit = "tight"`` showed the template's assertion, a blank
+    list and a broken picture)."""
+    from .forms.choices import _PARAM, choices
+    listed = choices(source) if any(k for k in values) else {}
+    if not listed:
+        return values, {}
+    own = {m.group(1): m.group(2) for m in _PARAM.finditer(source)}
+    out, chose = dict(values), {}
+    for name, text in values.items():
+        took = listed.get(name)
+        got = text.strip()
+        if len(got) >= 2 and got[0] == got[-1] == '"':
+            got = got[1:-1]
+        if not took or got in took or own.get(name) not in took:
+            continue
+        said = ", ".join(took[:-1]) + f" or {took[-1]}" if len(took) > 1 else took[0]
+        out[name] = f'"{own[name]}"'
+        chose[name] = (own[name], f"{name} is {said}: “{got[:40]}” is none of them, so "
+                                  f"{own[name]} is used")
+    return out, chose
 
 
 def into_range(params: list[dict], grid: bool = False) -> dict[str, tuple[str, float]]:

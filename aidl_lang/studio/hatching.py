@@ -55,6 +55,7 @@ def sweep_ranges(folder: str, source: str, budget=None, values: dict | None = No
         p = declared.get(name)
         if p is not None and p.min is not None and p.max is not None:
             out["params"][name] = _row(p, alone, name, for_forms)
+    out["complete"] = not rep.skipped and not any(q["unjudged"] for q in out["params"].values())
     return out
 
 

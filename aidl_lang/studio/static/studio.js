@@ -249,7 +249,8 @@ function answered(view, raw, held = raw) {
       const p = (view.params || state.params).find((q) => q.name === name);
       // a slider's end sent rounded (to 1e-6) and put back on it: no move to speak of
       const moved = !(typeof raw[name] === "number" && Math.abs(v - raw[name]) <= 1e-6 * Math.max(1, Math.abs(v)));
-      if (moved) typedNote(name, `${name} moved to ${p ? onStep(p, v) : fmt(v)}${p && p.unit ? " " + p.unit : ""}: its range follows the other values`);
+      // (a text none of its param's choices: the server says which it used, issue 113)
+      if (moved) typedNote(name, (view.moved && view.moved[name]) || `${name} moved to ${p ? onStep(p, v) : fmt(v)}${p && p.unit ? " " + p.unit : ""}: its range follows the other values`);
     }
   }
   if (view.params) state.params = view.params;
@@ -865,12 +866,21 @@ function markRanges() {
       ? Array.from({ length: Math.round(span / p.step) + 1 }, (_, k) => p.min + k * p.step)
         .filter((x) => !bandAt(q, x)) : null;
     const clean = !bands.length && !((q && q.unjudged) || []).length ? "" : counts ? `, clean at ${counts.map((x) => onStep(p, x)).join(", ")}`
-      : !q.clean.length ? ", no clean value found" : `, clean ${onStep(p, q.clean[0])}–${onStep(p, q.clean[1])}`;
+      : !q.clean.length ? ", no clean value found" : `, ${cleanSaid(p, q)}`;
     u.textContent = `${p.unit || ""} (${onStep(p, p.min)}–${onStep(p, p.max)}${clean})`;
     r.title = [...bands, ...((q && q.unjudged) || [])].map((x) => x.text).join("\n");
     const v = state.values[p.name] !== undefined ? state.values[p.name] : p.value;
     pastNote(row, p.name, v);
   }
+}
+// the clean range as said: next to a part the time allowed left not checked, its end is only
+// where the checking stopped (issue 113: a cut-short sweep read "clean 16–16")
+function cleanSaid(p, q, long = false) {
+  const [a, b] = q.clean, unit = p.unit ? ` ${p.unit}` : "";
+  const cut = (q.unjudged || []).some((g) => Math.abs(g.to - a) < 1e-9 || Math.abs(g.from - b) < 1e-9);
+  const said = a === b ? `at ${onStep(p, a)}` : `${onStep(p, a)}–${onStep(p, b)}`;
+  return cut ? `clean ${said}${unit} of the values checked, the rest not checked in the time allowed`
+    : long ? `clean from ${onStep(p, a)} to ${onStep(p, b)}${unit}` : `clean ${onStep(p, a)}–${onStep(p, b)}`;
 }
 // the slider's accessible text and the line under it: where its value is, against the clean range
 function pastNote(row, name, v) {
@@ -897,7 +907,7 @@ function pastNote(row, name, v) {
     r.setAttribute("aria-valuetext", `${fmt(v)}${unit}, not checked in the time allowed`);
   } else {
     note.textContent = ends.length && q.clean.length
-      ? `clean from ${onStep(p, q.clean[0])} to ${onStep(p, q.clean[1])}${unit}; ${ends.map((x) => x.text).join("; ")}` : "";
+      ? `${cleanSaid(p, q, true)}; ${ends.map((x) => x.text).join("; ")}` : "";
     if (typeof v === "number") r.setAttribute("aria-valuetext", `${fmt(v)}${unit}`);
   }
 }
