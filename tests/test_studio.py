@@ -348,7 +348,8 @@ def test_requests_that_are_not_programs_are_refused_clearly(client):
     sid = session(client)
     for body, words in [({"sid": sid}, "give the program"),
                         ({"sid": sid, "source": "x" * 1_000_001}, "at most"),
-                        ({"sid": sid, "source": "", "values": {"a": [1]}}, "short text"),
+                        ({"sid": sid, "source": "", "values": {"a": [1]}},
+                         "a number, a text or true/false"),
                         ({"sid": "nope", "source": ""}, "reload the page")]:
         r = client.post("/api/view", json=body)
         assert r.status_code == 400 and words in r.json()["error"], (body.keys(), r.text)

@@ -492,6 +492,7 @@ class Studio:
         sw = self.sweeps
         got = self.ahead.answer(source, values, _uploads_digest(folder) not in (b"", _NO_UPLOADS))
         if got is not None:             # a gallery design at its own values: swept whole
+            self.leave_sweep(sid)       # (the session's sweep of another program: not wanted)
             self.served["sweeps_cached"] += 1
             return got
         key = sw.key(source, folder, self.settings.budget, values)
