@@ -143,9 +143,18 @@ class Ahead:
                     self.stats["left"] -= 1
                 else:
                     todo.append(e)
-            for e in todo:
+            # another server process of this machine sweeps the same list: each starts at its
+            # own place in it and takes what another kept meanwhile
+            k = os.getpid() % len(todo) if todo else 0
+            for e in todo[k:] + todo[:k]:
                 if self.stopped.is_set():
                     return
+                got = kept(e.source)
+                if got is not None:
+                    self.done[_digest(e.source)] = got
+                    self.stats["kept"] += 1
+                    self.stats["left"] -= 1
+                    continue
                 if self.worker is None:
                     self.worker = W.Worker(compiler.handler, (self.budget,), self.memory,
                                            1, compiler.PRELOAD, nice=NICE)
@@ -179,5 +188,6 @@ class Ahead:
         w = self.worker
         if w is not None:
             w.cancel()
+            w.stop()                    # (one still starting too)
         if self.thread is not None:
             self.thread.join(timeout=10)
