@@ -132,3 +132,33 @@ def paste_any(page, text: str, n: int) -> None:
     page.keyboard.press("Control+a")
     page.keyboard.insert_text(text)
     answered(page, n)
+
+
+def test_a_share_link_with_a_text_none_of_its_choices_opens_on_the_programs_own(server,
+                                                                                chromium):
+    """A share link whose `fit` is "tight" (the mounting plate's fit is fine, medium or
+    coarse) showed the template's assertion, a blank list and a broken picture: the picture is
+    drawn with the program's own `medium`, the list shows it, and the line under it says why."""
+    import base64
+    import json
+    import zlib
+    from aidl_lang.studio import gallery
+    doc = {"v": 1, "source": gallery.entry("generator/mounting_plate").source,
+           "values": {"fit": "tight"}, "set": {"fit": '"tight"'}, "title": "Mounting plate"}
+    z = zlib.compressobj(9, zlib.DEFLATED, -15)
+    packed = z.compress(json.dumps(doc).encode()) + z.flush()
+    link = server + "#p=" + base64.urlsafe_b64encode(packed).decode().rstrip("=")
+    ctx = chromium.new_context(**DESKTOP)
+    page = ctx.new_page()
+    try:
+        page.goto(link)
+        page.wait_for_function("() => window.studio && window.studio.ready && window.studio.view"
+                               " && window.studio.view.ok && window.studio.idle", timeout=HANG)
+        assert page.input_value('#params select[name="fit"]') == "medium"
+        assert page.evaluate("window.studio.view.clamped") == {"fit": "medium"}
+        note = page.inner_text('#params [data-name="fit"] .typed-note')
+        assert note == "fit is fine, medium or coarse: “tight” is none of them, so medium is used"
+        said = messages(page)
+        assert "E0405" not in said and "`" not in said and "(1 if" not in said
+    finally:
+        ctx.close()

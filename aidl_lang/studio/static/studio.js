@@ -270,6 +270,8 @@ function show(view, ms) {
   const diags = view.diagnostics || [];
   const errors = diags.filter((d) => d.severity === "error").length;
   if (view.params) showParams(view.params);     // the form first: the picture lands on its values
+  // a text none of its choices, replaced: said under its list (a link's first answer builds the form)
+  for (const [name, text] of Object.entries(view.moved || {})) typedNote(name, text);
   building2d(false);
   if (view.error) status(view.error);
   else status(view.ok ? `solved in ${Math.round(ms)} ms` + (diags.length ? ` · ${diags.length} message${diags.length > 1 ? "s" : ""}` : "")
@@ -566,6 +568,12 @@ function control(p) {
     }
     sel.onchange = () => change(sel.value);
     line.appendChild(sel);
+    // the line that says a value none of its choices was replaced (issue 113: a share link's
+    // `fit = "tight"`)
+    const typed = document.createElement("div"); typed.className = "typed-note"; typed.id = id + "-typed";
+    typed.setAttribute("role", "status");
+    sel.setAttribute("aria-describedby", typed.id);
+    row.append(typed);
   } else if (p.kind === "string") {
     const t = document.createElement("input"); t.type = "text"; t.name = p.name; t.id = id;
     t.oninput = () => change(t.value);
