@@ -7,8 +7,9 @@ internals.  (The file names of different settings: tests/test_studio_files_brows
   track, its title and the note under the slider say *at 16: ...*, and the slider at 16 says
   it is where the design breaks; the clean range reads *clean at 0 of the values checked*,
   not *clean 0–0*; the line under the sliders says what was checked.
-- `fit = "tight"` in a pasted program shows its reason, not the template's condition; a name
-  tag with an empty name says *the name cannot be empty*; a 40,000-term sum is E0302.
+- `fit = "tight"` in a pasted program shows its reason, not the template's condition, and in a
+  share link's values is replaced by the program's own `medium` (drawn, listed and said); a
+  name tag with an empty name says *the name cannot be empty*; a 40,000-term sum is E0302.
 """
 from __future__ import annotations
 
