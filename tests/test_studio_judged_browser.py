@@ -92,7 +92,8 @@ def test_a_value_broken_alone_is_a_tick_and_a_cut_sweep_says_so(server, chromium
         page.wait_for_function("() => document.querySelector('#params [data-name=\"n\"] "
                                ".sweep-note').textContent.includes('at 16')", timeout=HANG)
         note = row.locator(".sweep-note").inner_text()
-        assert note.startswith("16 is in a part of the range where the design breaks"), note
+        assert note.startswith("16 is in a part of the range where the design breaks: at 16: "
+                               "hole “plate.b” lies wholly inside"), note
     finally:
         page.context.close()
 

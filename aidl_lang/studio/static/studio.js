@@ -907,7 +907,9 @@ function pastNote(row, name, v) {
     note.textContent = beside
       ? `${onStep(p, v)}${unit} is outside the range the sweep found clean (${onStep(p, q.clean[0])}–${onStep(p, q.clean[1])}${unit}): ${past.text}`
       : !q.clean.length ? `${fmt(v)}${unit}: the design breaks at every value of this slider (the others where they are): ${past.text}`
-        : `${fmt(v)}${unit} is in a part of the range where the design breaks, between clean values: ${past.text}`;
+        : past.from === past.lo || past.to === past.hi     // (an end beside a part not checked)
+          ? `${fmt(v)}${unit} is in a part of the range where the design breaks: ${past.text}`
+          : `${fmt(v)}${unit} is in a part of the range where the design breaks, between clean values: ${past.text}`;
     r.setAttribute("aria-valuetext", beside ? `${fmt(v)}${unit}, outside the clean range: ${past.text}`
       : `${fmt(v)}${unit}, where the design breaks: ${past.text}`);
   } else if (open) {
