@@ -23,7 +23,6 @@ import threading
 
 SCALE = 16.0                # times one sweep's budget a design swept ahead of time may spend
 NICE = 19                   # the process's niceness: it takes what nothing else wants
-FOLDER = "gallery"          # beside the thumbnails in the user's cache
 
 
 def complete(answer) -> bool:
@@ -59,16 +58,8 @@ def key(source: str) -> str:
 
 
 def _path(k: str):
-    from ..host.cache import cache_dir
-    base = cache_dir()
-    if base is None:
-        return None
-    folder = base / FOLDER
-    try:
-        folder.mkdir(mode=0o700, exist_ok=True)
-    except OSError:
-        return None
-    return folder / f"{k[:32]}.sweep.json"
+    from .gallery import _thumb_path
+    return _thumb_path(k, ".sweep.json")
 
 
 def kept(source: str) -> dict | None:
