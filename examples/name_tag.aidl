@@ -8,7 +8,8 @@ param title = "Analytical Engine Programmer"
 param width = 90 mm
 param height = 55 mm, min = 25 mm
 
-name_size = min(8 mm, (width - 20 mm) / len(name))  # shrink long names to fit
+assert len(name) > 0, "the name cannot be empty"
+name_size = min(8 mm, (width - 20 mm) / max(len(name), 1))  # shrink long names to fit
 
 solid tag {
     card = RoundedRectangle(center=(0, 0), width=width, height=height, corner_radius=5)

@@ -121,13 +121,14 @@ def test_the_svg_download_is_a_cutting_file_and_each_format_has_its_own_name(cli
         assert r.status_code == 200, r.text
         names[fmt] = r.headers["content-disposition"].split('filename="')[1].rstrip('"')
         inside[fmt] = zipfile.ZipFile(io.BytesIO(r.content))
-    assert names == {f: f"finger_box-sheets-{f}.zip" for f in ("dxf", "svg", "pdf")}
+    # (the sheet's size in the names: not the default 600 x 400, issue 113)
+    assert names == {f: f"finger_box-sheets-150x120-{f}.zip" for f in ("dxf", "svg", "pdf")}
     for fmt, z in inside.items():
-        assert z.namelist() == [f"finger_box-sheet-{i}.{fmt}" for i in range(1, 5)]
+        assert z.namelist() == [f"finger_box-sheet-{i}-150x120.{fmt}" for i in range(1, 5)]
     # every sheet's SVG: stroke-only hairlines, no fill, no sheet rectangle; its outlines those
     # of the DXF of the same sheet (ezdxf: the same number of closed cut loops)
     for i in range(1, 5):
-        text = inside["svg"].read(f"finger_box-sheet-{i}.svg").decode()
+        text = inside["svg"].read(f"finger_box-sheet-{i}-150x120.svg").decode()
         svg = svgelements.SVG.parse(io.StringIO(text))
         shapes = [e for e in svg.elements() if isinstance(e, svgelements.Shape)]
         assert shapes and not any(isinstance(e, svgelements.Rect) for e in shapes)
@@ -135,7 +136,8 @@ def test_the_svg_download_is_a_cutting_file_and_each_format_has_its_own_name(cli
         assert {e.stroke.hex for e in shapes} == {"#ff0000"}
         # the stroke in user units (the viewBox is in mm): a hairline of 0.01 mm
         assert 'id="cut" stroke="#ff0000" stroke-width="0.01"' in text
-        doc = ezdxf.read(io.StringIO(inside["dxf"].read(f"finger_box-sheet-{i}.dxf").decode()))
+        doc = ezdxf.read(io.StringIO(inside["dxf"].read(f"finger_box-sheet-{i}-150x120.dxf")
+                                     .decode()))
         loops = [e for e in doc.modelspace().query("LWPOLYLINE") if e.closed]
         assert len(loops) == len(shapes) > 0
     # the picture: asked for, filled, named as what it is
@@ -144,6 +146,51 @@ def test_the_svg_download_is_a_cutting_file_and_each_format_has_its_own_name(cli
     assert r.status_code == 200 and 'filename="finger_box-preview.svg"' in \
         r.headers["content-disposition"]
     assert 'fill="#cfd8dc"' in r.text
+
+
+def test_files_of_different_settings_have_different_names(client):
+    """Issue 113: the name carries what the settings change in the file (the kerf, the sheet's
+    size, the G-code's machine, the PDF's paper); files of the defaults keep their names.
+    Each file is read back, so two names are two different files: the kerf's DXF outline
+    wider by the kerf (ezdxf), the router's G-code with a spindle (gcodeparser), the tiled
+    PDF on A4 pages (pdfplumber)."""
+    import ezdxf
+    import pdfplumber
+    from ezdxf import bbox
+    from gcodeparser import parse_gcode_lines
+    from aidl_lang.studio import gallery
+    sid = session(client)
+    box = gallery.entry("generator/finger_box").source
+
+    def get(fmt, **settings):
+        r = client.post(f"/api/download/{fmt}", json={"sid": sid, "source": box, "settings": {
+            "name": "finger_box", **settings}})
+        assert r.status_code == 200, r.text
+        return r.headers["content-disposition"].split('filename="')[1].rstrip('"'), r.content
+
+    big = {"layout": True, "sheet": [1000, 1000]}
+    plain, kerfed = get("dxf", **big), get("dxf", kerf=0.2, **big)
+    assert (plain[0], kerfed[0]) == ("finger_box-sheet-1000x1000.dxf",
+                                     "finger_box-sheet-kerf0.2-1000x1000.dxf")
+
+    def width(data):
+        doc = ezdxf.read(io.StringIO(data.decode()))
+        loops = [e for e in doc.modelspace().query("LWPOLYLINE") if e.closed]
+        return max(bbox.extents([e]).size.x for e in loops)
+    assert width(kerfed[1]) - width(plain[1]) == pytest.approx(0.2, abs=1e-6)
+    assert get("dxf", layout=True)[0] == "finger_box-sheet.dxf"        # 600 x 400: the default
+    laser, router = get("gcode", machine="laser"), get("gcode", machine="router")
+    assert (laser[0], router[0]) == ("finger_box.gcode", "finger_box-router.gcode")
+    def commands(data):
+        return {ln.command for ln in parse_gcode_lines(data.decode())}
+    assert ("M", 3) in commands(router[1]) and ("M", 3) not in commands(laser[1])
+    page, tiles = get("pdf"), get("pdf", page="A4")
+    assert (page[0], tiles[0]) == ("finger_box.pdf", "finger_box-a4tiles.pdf")
+    with pdfplumber.open(io.BytesIO(tiles[1])) as pdf:
+        assert len(pdf.pages) > 1 and {(round(p.width), round(p.height))
+                                       for p in pdf.pages} == {(595, 842)}
+    with pdfplumber.open(io.BytesIO(page[1])) as pdf:
+        assert len(pdf.pages) == 1
 
 
 EDGE = ("units mm\nparam w = 120 mm, min = 20 mm, max = 220 mm, step = 0.5 mm\n"
@@ -301,7 +348,8 @@ def test_requests_that_are_not_programs_are_refused_clearly(client):
     sid = session(client)
     for body, words in [({"sid": sid}, "give the program"),
                         ({"sid": sid, "source": "x" * 1_000_001}, "at most"),
-                        ({"sid": sid, "source": "", "values": {"a": [1]}}, "short text"),
+                        ({"sid": sid, "source": "", "values": {"a": [1]}},
+                         "a number, a text or true/false"),
                         ({"sid": "nope", "source": ""}, "reload the page")]:
         r = client.post("/api/view", json=body)
         assert r.status_code == 400 and words in r.json()["error"], (body.keys(), r.text)
@@ -531,3 +579,44 @@ def test_an_app_keeps_the_data_folder_it_was_given(tmp_path):
     with TestClient(create_app(Settings(data=str(given), compilers=1))) as c:
         assert c.post("/api/session").status_code == 200
     assert given.is_dir() and any(given.iterdir())
+
+
+def test_what_a_visitor_reads_has_no_internals(client):
+    """Issue 113: the page showed a template's assertion source for `fit = "tight"` (with a
+    blank list and a broken picture), "internal error ... RecursionError ... the next save is
+    compiled again" for a 40,000-term expression, "not a short text, number or true/false"
+    with backticks and no limit for a 10,000-character field, and "division by zero" for a
+    name tag with an empty name.  Each is now a sentence a visitor acts on: the value moved
+    to one of its choices (and said), the program's E0302 (as `aidl check` says it), the
+    limit, the example's own reason."""
+    from aidl_lang.studio import gallery
+    sid = session(client)
+    plate = gallery.entry("generator/mounting_plate").source
+    r = client.post("/api/view", json={"sid": sid, "source": plate, "values": {"fit": '"tight"'},
+                                       "defaults": {"fit": "medium"}})
+    v = r.json()
+    assert v["ok"] and v["svg"] and v["clamped"] == {"fit": "medium"}
+    assert v["moved"] == {"fit": "fit is fine, medium or coarse: “tight” is none of them, so "
+                                 "medium is used"}
+    tight = view(client, sid, plate.replace('param fit = "medium"', 'param fit = "tight"'))
+    [d] = [d for d in tight["diagnostics"] if d["severity"] == "error"]
+    assert (d["code"], d["message"]) == ("E0405", 'fit is "fine", "medium" or "coarse"')
+    deep = view(client, sid, "units mm\nsolid p { body = Rectangle(center=(0, 0), width="
+                + "+".join(["1"] * 40000) + ", height=5) }\n")
+    [d] = deep["diagnostics"]
+    assert (d["code"], d["message"]) == ("E0302", "the program is nested too deeply to compile")
+    assert d["span"]["line"] == 2
+    tag = gallery.entry("example/name_tag").source
+    r = client.post("/api/view", json={"sid": sid, "source": tag,
+                                       "values": {"name": '"' + "A" * 10_000 + '"'}})
+    assert r.status_code == 400
+    assert r.json()["error"] == "“name” takes at most 256 characters (this one has 10,002): " \
+                                "shorten it"
+    empty = view(client, sid, tag, {"name": '""'})
+    assert [(d["code"], d["message"]) for d in empty["diagnostics"]
+            if d["severity"] == "error"] == [("E0405", "the name cannot be empty")]
+    for answer in (v, tight, deep, empty, r.json()):
+        said = json.dumps([answer.get("error"), answer.get("moved")] + [
+            (d["message"], d["hint"]) for d in answer.get("diagnostics", [])], ensure_ascii=False)
+        for inside in ("`", "Error", "Traceback", "(1 if", "division", " save"):
+            assert inside not in said, (inside, said)

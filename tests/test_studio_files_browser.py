@@ -7,7 +7,8 @@ downloads and what the page says, at a desktop's 1280 x 800 and a phone's 390 x 
   outline: read by svgelements), the picture a choice (`-preview`); after another program is
   pasted over the gallery design, the header and the downloads follow its title; an opened
   drawing's files are named without `.dxf`; the line under the buttons is cleared when a value
-  changes (it named the 3 mm STL after the thickness went to 6).
+  changes (it named the 3 mm STL after the thickness went to 6); issue 113: the kerf, the
+  sheet's size, the G-code's machine and the PDF's paper are in the names.
 
 Screenshots: out/studio-files-*.png.
 """
@@ -75,9 +76,9 @@ def test_each_file_is_named_for_what_it_holds_and_the_svg_is_a_cutting_file(serv
         page.fill("#sheet-h", "120")
         got = {ext: download(page, ext) for ext in ("dxf", "svg", "pdf")}
         assert {ext: name for ext, (name, _) in got.items()} == {
-            ext: f"finger_box-sheets-{ext}.zip" for ext in ("dxf", "svg", "pdf")}
+            ext: f"finger_box-sheets-150x120-{ext}.zip" for ext in ("dxf", "svg", "pdf")}
         sheets = zipfile.ZipFile(io.BytesIO(got["svg"][1]))
-        assert sheets.namelist() == [f"finger_box-sheet-{i}.svg" for i in range(1, 5)]
+        assert sheets.namelist() == [f"finger_box-sheet-{i}-150x120.svg" for i in range(1, 5)]
         for name in sheets.namelist():
             svg = svgelements.SVG.parse(io.BytesIO(sheets.read(name)))
             shapes = [e for e in svg.elements() if isinstance(e, svgelements.Shape)]
@@ -87,9 +88,9 @@ def test_each_file_is_named_for_what_it_holds_and_the_svg_is_a_cutting_file(serv
         # the picture, asked for: filled, under its own name
         page.select_option("#svg-style", "preview")
         name, data = download(page, "svg")
-        assert name == "finger_box-preview-sheets-svg.zip"
+        assert name == "finger_box-preview-sheets-150x120-svg.zip"
         assert b'fill="#cfd8dc"' in zipfile.ZipFile(io.BytesIO(data)).read(
-            "finger_box-preview-sheet-1.svg")
+            "finger_box-preview-sheet-1-150x120.svg")
         page.select_option("#svg-style", "laser")
         assert page.inner_text("#download-status").startswith(name)
         # a value changed: the line no longer names the file of the old values
@@ -98,7 +99,24 @@ def test_each_file_is_named_for_what_it_holds_and_the_svg_is_a_cutting_file(serv
         settled(page, n)
         assert page.inner_text("#download-status") == ""
         name, _ = download(page, "dxf")
-        assert name == "finger_box-thickness_6-sheets-dxf.zip"
+        assert name == "finger_box-thickness_6-sheets-150x120-dxf.zip"
+        # issue 113: what the settings change is in the name (the kerf, the sheet, the machine,
+        # the paper): no two files of different settings share one
+        page.fill("#kerf", "0.2")
+        page.dispatch_event("#kerf", "change")
+        assert download(page, "dxf")[0] == "finger_box-thickness_6-sheets-kerf0.2-150x120-dxf.zip"
+        page.fill("#kerf", "")
+        page.dispatch_event("#kerf", "change")
+        page.uncheck("#layout")
+        page.select_option("#machine", "router")
+        assert download(page, "gcode")[0] == "finger_box-thickness_6-router.gcode"
+        page.select_option("#machine", "laser")
+        assert download(page, "gcode")[0] == "finger_box-thickness_6.gcode"
+        page.select_option("#page", "A4")
+        assert download(page, "pdf")[0] == "finger_box-thickness_6-a4tiles.pdf"
+        page.select_option("#page", "")
+        assert download(page, "pdf")[0] == "finger_box-thickness_6.pdf"
+        page.check("#layout")
         shot(page, f"finger-box-{'phone' if how is PHONE else 'desktop'}")
         if how is PHONE:
             return

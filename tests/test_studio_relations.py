@@ -1,5 +1,5 @@
 """An imported drawing's inferred relations as the studio's sliders (issue 94,
-aidl_lang/studio/relations.py): a round flange opened as an editable design has a bolt circle
+aidl_lang/studio/relations/): a round flange opened as an editable design has a bolt circle
 whose range follows the outline's diameter and the bore, so the holes follow a smaller flange
 instead of breaking through its edge; a rectangular plate (a NEMA 17 mount's hole square
 about its bore, a grid, corner holes) keeps its holes centred or at their inset and inside

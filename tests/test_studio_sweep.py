@@ -417,3 +417,86 @@ def test_law_a_hatch_ends_on_the_slider_step_next_to_the_clean_value(cx):
     said = {w: {d.code for d in api.compile(source=src, overrides={"w": f"{w}mm"}).diagnostics}
             for w in (lo - 0.5, lo)}
     assert said[lo] == set() and said[lo - 0.5], (cx, lo, said)
+
+
+# a count whose hole b lies on hole a at n = 16 alone (W0508): 7 mm apart at 15 and 17, a wall
+# of 1 mm; with the budget of three points the scan judges 0, 32 and 16 and no value between
+ALONE = """units mm
+param n = 0, min = 0, max = 32, step = 1
+solid plate {
+    body = Rectangle(center=(0, 0), width=240, height=40)
+    hole a { c = Circle(center=(0, 0), radius=3) }
+    hole b { c = Circle(center=((n - AT) * 7 mm, 0), radius=3) }
+}
+"""
+
+
+@pytest.mark.parametrize("at, where", [(16, "at 16"), (32, "at 32")])
+def test_a_value_broken_alone_between_parts_not_judged_is_a_band_of_that_value(tmp_path, at,
+                                                                                 where):
+    """Issue 113: the telephone's sweep held bands of one value (`base_w` broken at 215 with
+    the values on either side not judged) and one at the slider's end (from 320 of 320), each
+    with no value strictly between its ends: the page drew nothing and said "clean from 84 to
+    198 mm" while `--set base_w=215` gave W0510.  Such a band now carries its broken values
+    judged, `lo` to `hi` (both in), and says where (`at 16`); at the full budget the same
+    value is a band between the clean values 15 and 17."""
+    from aidl_lang.params.sweep_plan import WORK
+    from aidl_lang.studio.hatching import sweep_ranges
+    src = ALONE.replace("AT", str(at))
+    got = sweep_ranges(str(tmp_path), src, budget=5000 / WORK)
+    assert got["skipped"] > 0 and got["points"] <= 4
+    [band] = got["params"]["n"]["bands"]
+    assert (band["lo"], band["hi"], band["code"]) == (at, at, "W0508")
+    assert band["text"].startswith(f"{where}: hole `plate.b` lies wholly inside hole `plate.a`")
+    # the point itself is where --set breaks the design: the band holds it
+    from aidl_lang import api
+    assert "W0508" in {d.code for d in api.compile(source=src, overrides={"n": str(at)})
+                       .diagnostics}
+    assert not any(x["from"] < at < x["to"] for x in got["params"]["n"]["unjudged"])
+    if at == 16:
+        full = sweep_ranges(str(tmp_path), src)["params"]["n"]
+        [band] = full["bands"]
+        assert (band["from"], band["lo"], band["hi"], band["to"]) == (15, 16, 16, 17)
+        assert band["text"].startswith("at 16: ") and full["unjudged"] == []
+
+
+def test_a_sweep_cut_short_is_never_kept_and_the_gallery_is_swept_ahead(tmp_path, monkeypatch):
+    """Issue 113: the tool holder's sweep, cut by its budget (51 of 283 values judged: "clean
+    16-16"), was cached and served to every later visitor.  An answer that skipped values or
+    left parts not judged is not kept (each request sweeps again, and says what it did not
+    judge); a gallery design named in `ahead` is swept in the background with SCALE times the
+    budget, its whole answer served at its own values (`ahead: true`, nothing skipped) and
+    kept on disk for the next server of this build, while a value set or an upload sweeps as
+    any program.  The budget here is a tenth of one point's work (deterministic: work
+    units), so the request's own sweep is cut and the ahead one is not."""
+    from aidl_lang.params.sweep_plan import WORK
+    from aidl_lang.studio import ahead, gallery
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+    monkeypatch.setattr(ahead, "SCALE", 400.0)
+    budget = 4000 / WORK
+    src = ALONE.replace("AT", "16")
+    app = create_app(Settings(data=str(tmp_path / "data"), compilers=1, sweepers=1,
+                              budget=budget))
+    with TestClient(app) as c:
+        sid = session(c)
+        first = sweep(c, sid, src)
+        assert first["skipped"] > 0 and first["complete"] is False and "cached" not in first
+        again = sweep(c, sid, src)          # swept again, never served from the cache
+        assert "cached" not in again and again["points"] == first["points"]
+    entry = gallery.entry("generator/washer")
+    app = create_app(Settings(data=str(tmp_path / "data2"), compilers=1, sweepers=1,
+                              budget=budget, ahead="generator/washer"))
+    st = app.state.studio
+    with TestClient(app) as c:
+        assert st.ahead.finished.wait(120)
+        assert st.ahead.stats == {"kept": 0, "swept": 1, "partial": 0, "failed": 0, "left": 0}
+        sid = session(c)
+        got = sweep(c, sid, entry.source)
+        assert got["ahead"] and got["complete"] and got["skipped"] == 0
+        assert all(q["unjudged"] == [] for q in got["params"].values())
+        name = next(iter(got["params"]))
+        mine = c.post("/api/sweep", json={"sid": sid, "source": entry.source,
+                                          "values": {name: str(got["params"][name]["min"])}})
+        assert mine.status_code == 200 and "ahead" not in mine.json()
+    assert ahead.kept(entry.source) == {k: v for k, v in got.items()
+                                        if k not in ("cached", "ahead")}

@@ -335,6 +335,18 @@ class Session:
         from ..pipeline import out_of_memory_sink
         if is_out_of_memory(e):
             return out_of_memory_sink(self.name, self.source or None)
+        if isinstance(e, RecursionError):
+            # a program nested past what the checker walks (a 40,000-term sum): the program's
+            # located E0302, as `aidl check` and every download say it (issue 113: "internal
+            # error ... RecursionError" beside the DXF button's "nested too deeply")
+            from ..pipeline import _deep_span
+            sink = DiagnosticSink()
+            src = self.source or ""
+            sink.sources.setdefault(self.name, src)
+            sink.error("E0302", "the program is nested too deeply to compile",
+                       _deep_span(e, self.name, src),
+                       hint="split long expressions into named constants")
+            return sink
         return _internal(e, stage)
 
     # ------------------------------------------------------------------ params

@@ -53,6 +53,8 @@ def studio(host: str = HOST, port: int = 8780, processes: int = 1, compilers: in
         print(f"aidl: error: {e}; correct it or unset it (the default is used then)",
               file=sys.stderr)
         return 2
+    if not os.environ.get("AIDL_STUDIO_AHEAD"):
+        s.ahead = "all"                 # the gallery swept ahead of time (issue 113)
     s.compilers = compilers
     for k, v in settings.items():
         if v is not None:

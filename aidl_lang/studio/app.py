@@ -76,6 +76,7 @@ from ..host import workers as W
 from ..base.limits import DEFAULT_BUDGET, MAX_SOURCE_BYTES, wall_limit
 from . import compiler
 from .metrics import Metrics, RequestMetrics
+from .ahead import complete
 from .sessions import MAX_UPLOAD, Refused, new_id
 from .store import StoreDown, down, limiter_storage, open_store
 
@@ -106,6 +107,7 @@ class Settings:
     recycle: int = 200              # a worker's process is replaced after this many answers
     store: str = ""                 # redis://HOST:PORT/DB: uploads and rate counters there
     scheduler: str = ""             # tcp://HOST:PORT: compiles on this Dask cluster
+    ahead: str = "none"             # gallery designs swept ahead of time: all, none or ids
     model: dict | None = field(default=None, repr=False)   # describe.model_config()
 
     ENV = {"data": "AIDL_STUDIO_DATA", "compilers": "AIDL_STUDIO_COMPILERS",
@@ -113,7 +115,8 @@ class Settings:
            "wait": "AIDL_STUDIO_WAIT", "queue": "AIDL_STUDIO_QUEUE",
            "rate": "AIDL_STUDIO_RATE", "describes": "AIDL_STUDIO_DESCRIBES",
            "sweepers": "AIDL_STUDIO_SWEEPERS", "recycle": "AIDL_STUDIO_RECYCLE",
-           "store": "AIDL_STUDIO_STORE", "scheduler": "AIDL_STUDIO_SCHEDULER"}
+           "store": "AIDL_STUDIO_STORE", "scheduler": "AIDL_STUDIO_SCHEDULER",
+           "ahead": "AIDL_STUDIO_AHEAD"}
 
     @classmethod
     def from_env(cls, env=os.environ) -> "Settings":
@@ -233,9 +236,11 @@ def program_of(doc: dict) -> tuple[str, dict]:
         _text(k, "a param's name")
         if isinstance(v, bool):         # a checkbox (the sweep sends them as they are)
             v = "true" if v else "false"
-        if not isinstance(v, (str, int, float)) or len(k) > MAX_VALUE or len(str(v)) > MAX_VALUE:
-            raise Refused(f"the value of `{str(k)[:40]}` is not a short text, number or "
-                          "true/false")
+        if not isinstance(v, (str, int, float)) or len(k) > MAX_VALUE:
+            raise Refused(f"the value of “{str(k)[:40]}” is a number, a text or true/false")
+        if len(str(v)) > MAX_VALUE:     # (issue 113: the limit said, no backticks)
+            raise Refused(f"“{k}” takes at most {MAX_VALUE} characters (this one has "
+                          f"{len(str(v)):,}): shorten it")
         out[k] = _text(str(v), f"the value of `{k[:40]}`")
     return source, out
 
@@ -265,8 +270,8 @@ def defaults_of(doc: dict) -> dict:
         _text(k, "a param's name")
         if not isinstance(v, (str, int, float, bool)) or len(k) > MAX_VALUE \
                 or len(str(v)) > MAX_VALUE:
-            raise Refused(f"the default of `{str(k)[:40]}` is not a short text, number or "
-                          "true/false")
+            raise Refused(f"the default of “{str(k)[:40]}” is a number, a text or true/false "
+                          f"of at most {MAX_VALUE} characters")
         if isinstance(v, str):
             _text(v, f"the default of `{k[:40]}`")
     return got
@@ -326,6 +331,9 @@ def _uploads_digest(folder: str) -> bytes:
     return h.digest()
 
 
+_NO_UPLOADS = hashlib.sha256().digest()     # (the digest of a session folder with no file)
+
+
 class Sweeps:
     """The sweeps of a server process: ``done`` (program key -> answer, the last
     :data:`SWEPT`), ``running`` (key -> :class:`SweepJob`: a second session asking for the
@@ -378,6 +386,9 @@ class Studio:
                       compiler.PRELOAD, nice=SWEEP_NICE)
              for _ in range(settings.sweepers)])
         self.sweeps = Sweeps()
+        from .ahead import Ahead, wanted
+        self.ahead = Ahead(wanted(settings.ahead) if self.sweepers is not None else [],
+                           settings.budget, settings.seconds, memory)
         self.affinity: dict[str, W.Worker] = {}
         self.latest: dict[str, Latest] = {}       # sid -> its previews in flight
         self.thumbs: dict[str, str] = {}
@@ -479,6 +490,11 @@ class Studio:
         :class:`Limited` (503) when the sweep workers stay busy."""
         import asyncio
         sw = self.sweeps
+        got = self.ahead.answer(source, values, _uploads_digest(folder) not in (b"", _NO_UPLOADS))
+        if got is not None:             # a gallery design at its own values: swept whole
+            self.leave_sweep(sid)       # (the session's sweep of another program: not wanted)
+            self.served["sweeps_cached"] += 1
+            return got
         key = sw.key(source, folder, self.settings.budget, values)
         if key in sw.done:
             sw.done.move_to_end(key)
@@ -536,8 +552,8 @@ class Studio:
         if not answer.get("superseded") and not answer.get("busy"):
             self.metrics.compiled("sweep", time.perf_counter() - t0)
             self.served["sweeps"] += 1
-            if "error" not in answer:
-                self.sweeps.keep(key, answer)
+            if complete(answer):        # (issue 113: a sweep the budget cut short is never
+                self.sweeps.keep(key, answer)   # kept as the design's answer)
         return answer
 
     def _sweep_in_worker(self, job: SweepJob, request: tuple) -> dict:
@@ -575,6 +591,7 @@ class Studio:
         return answer
 
     def stop(self) -> None:
+        self.ahead.stop()
         self.pool.stop()
         if self.sweepers is not None:
             self.sweepers.stop()
@@ -596,6 +613,7 @@ def create_app(settings: Settings | None = None) -> Starlette:
 
     @contextlib.asynccontextmanager
     async def lifespan(app):
+        st.ahead.start()
         try:
             yield
         finally:
@@ -915,7 +933,7 @@ def _operator_routes(st: Studio) -> list[Route]:
         # for the operator and the load test: answered to this machine only
         if not request.client or request.client.host not in ("127.0.0.1", "::1"):
             return PlainTextResponse("not found", status_code=404)
-        return JSONResponse({**st.served, "waiting": st.pool.waiting,
+        return JSONResponse({**st.served, "waiting": st.pool.waiting, "ahead": st.ahead.stats,
                              "workers": [{"pid": w.proc.pid if w.proc else None,
                                           "rss": w.rss(), "requests": w.requests,
                                           "restarts": w.restarts} for w in st.pool.workers]})

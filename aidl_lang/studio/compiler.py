@@ -19,7 +19,7 @@ Requests (tuples, the first item names the kind):
   (:func:`aidl_lang.output.writers.glb.to_view_glb`: fewer triangles, shared meshes) as
   ``(bytes, name, media type)`` or ``{"error"}``, made from the drawing the session's last
   ``view`` of this program and these values drew (no second compile), else compiled.
-* ``("sweep", sid, folder, source, values)``: the program checked across its params' ranges,
+* ``("sweep", sid, folder, source, values[, scale])``: the program checked across its params' ranges,
   each slider alone at the others' ``values`` (:func:`aidl_lang.params.sweep.sweep`, bounded by its
   budget) as the sliders mark it (:func:`sweep_ranges`).
 * ``("thumb", id)``: the gallery entry's picture as SVG text (``""`` when it fails).
@@ -134,8 +134,9 @@ def handler(budget: float = 1.0):
                 answer = download(*request[1:], budget=scaled)
             elif kind == "glb":
                 answer = view_glb(sessions, *request[1:], budget=scaled)
-            elif kind == "sweep":
-                answer = sweep_ranges(request[2], request[3], budget=scaled,
+            elif kind == "sweep":       # (a sixth item: that many times the budget, issue 113)
+                answer = sweep_ranges(request[2], request[3], budget=scaled if len(request) < 6
+                                      else DEFAULT_BUDGET.scaled(budget * float(request[5])),
                                       values=request[4] if len(request) > 4 else None)
             elif kind == "thumb":
                 answer = thumbnail(*request[1:])
@@ -146,8 +147,13 @@ def handler(budget: float = 1.0):
         except Exception as e:          # noqa: BLE001 - answered, never a dead worker
             from ..base.limits import is_out_of_memory
             oom = is_out_of_memory(e)
-            if not oom:
-                answer = {"error": f"internal error: {type(e).__name__}: {e}"}
+            if not oom:                 # a fault of the studio: logged, said without Python
+                import sys
+                import traceback
+                print(f"aidl studio: internal error answering {kind}:\n"
+                      f"{traceback.format_exc()}", file=sys.stderr, flush=True)
+                from .wording import FAULT, FAULT_HINT
+                answer = {"error": f"{FAULT}; {FAULT_HINT}"}
         if oom:                         # said once the failed frames are gone
             sessions.clear()
             answer = out_of_memory_answer(request)
@@ -308,6 +314,7 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
     while len(sessions) > MAX_SESSIONS:
         sessions.popitem(last=False)
     values = {str(k): str(v) for k, v in (values or {}).items()}
+    values, chose = to_choices(source, values)
     assumed = defaults if isinstance(defaults, dict) else {}
     files = _listing(folder)        # an upload changes what the same program draws
     if s.source != source or s.program is None or files != getattr(s, "files", None):
@@ -340,6 +347,10 @@ def view(sessions: OrderedDict, sid: str, folder: str, source: str, values: dict
     doc = dict(doc)
     if later and getattr(s, "_checks_pending", None) is not None and doc.get("ok"):
         doc["checks"] = "pending"       # the page asks /api/checks for them
+    chose = {k: v for k, v in chose.items() if k in kept}
+    if chose:                       # a text value none of its choices: the program's own used
+        clamped = {**clamped, **{k: v[0] for k, v in chose.items()}}
+        doc["moved"] = {k: v[1] for k, v in chose.items()}     # what the page says of each
     if clamped:
         doc["clamped"] = clamped
     doc["dropped"] = sorted(set(values) - set(kept))
@@ -441,6 +452,32 @@ def settle(run, values: dict, doc: dict) -> tuple[dict, dict]:
     return doc, {}
 
 
+def to_choices(source: str, values: dict) -> tuple[dict, dict]:
+    """``values`` (``--set`` texts) with a text param's value that is none of the values it
+    takes (:func:`.forms.choices.choices`: the mounting plate's ``fit`` is fine, medium or
+    coarse) replaced by the program's own, and ``{name: (value used, sentence)}`` for each
+    (issue 113: a share link's ``fit = "tight"`` showed the template's assertion, a blank
+    list and a broken picture)."""
+    from .forms.choices import _PARAM, choices
+    listed = choices(source) if any(k for k in values) else {}
+    if not listed:
+        return values, {}
+    own = {m.group(1): m.group(2) for m in _PARAM.finditer(source)}
+    out, chose = dict(values), {}
+    for name, text in values.items():
+        took = listed.get(name)
+        got = text.strip()
+        if len(got) >= 2 and got[0] == got[-1] == '"':
+            got = got[1:-1]
+        if not took or got in took or own.get(name) not in took:
+            continue
+        said = ", ".join(took[:-1]) + f" or {took[-1]}" if len(took) > 1 else took[0]
+        out[name] = f'"{own[name]}"'
+        chose[name] = (own[name], f"{name} is {said}: “{got[:40]}” is none of them, so "
+                                  f"{own[name]} is used")
+    return out, chose
+
+
 def into_range(params: list[dict], grid: bool = False) -> dict[str, tuple[str, float]]:
     """The values of a failed compile's ``params`` (the view's JSON rows) that left their
     declared range moved into it, onto its slider's steps (``grid``: also the values inside
@@ -540,24 +577,26 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
     if options.get("style") == "preview":
         name += "-preview"              # the picture, never under the cutting file's name
     media = FORMATS[suffix].media
+    tags = settings_tags(suffix, got)   # what the settings change: never one name for two files
     try:
         if layout:
             options.pop("assembled")
             sheets = res.layout(sheet=sheet, kerf=kerf).encode(suffix, **options)
             if len(sheets) == 1:
-                return sheets[0], f"{name}-sheet{suffix}", media
+                return sheets[0], f"{name}-sheet{tags}{suffix}", media
             buf = io.BytesIO()
             with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as z:
                 for i, data in enumerate(sheets, 1):
-                    z.writestr(f"{name}-sheet-{i}{suffix}", data)
+                    z.writestr(f"{name}-sheet-{i}{tags}{suffix}", data)
             # one name per format: the DXF, SVG and PDF sheets never overwrite each other
-            return buf.getvalue(), f"{name}-sheets-{suffix[1:]}.zip", "application/zip"
+            return buf.getvalue(), f"{name}-sheets{tags}-{suffix[1:]}.zip", "application/zip"
         assembled = options.get("assembled")
         if suffix == ".stl" and assembled:
-            return closed_stl(res.output, options["thickness"]), f"{name}{suffix}", media
+            return closed_stl(res.output, options["thickness"]), f"{name}{tags}{suffix}", media
         if FORMATS[suffix].module == "gcode" and not assembled:
-            return gcode_at_origin(res.output, kerf, suffix, options), f"{name}{suffix}", media
-        return res.encode(suffix, kerf, **options), f"{name}{suffix}", media
+            return (gcode_at_origin(res.output, kerf, suffix, options), f"{name}{tags}{suffix}",
+                    media)
+        return res.encode(suffix, kerf, **options), f"{name}{tags}{suffix}", media
     except (MissingDependency, OutputError, ValueError) as e:
         if getattr(e, "budget", None) is not None:      # bounded work or memory: E0304
             from ..pipeline import report_out_of_budget
@@ -567,6 +606,31 @@ def download(folder: str, source: str, values: dict, fmt: str, settings: dict, b
 
 
 SVG_STYLES = ("laser", "preview")
+DEFAULT_SHEET = (600.0, 400.0)  # mm: the cutting sheet of a download that names none
+
+
+def settings_tags(suffix: str, got: dict) -> str:
+    """What a download's settings (``got``: :func:`download_settings`' answer for the format
+    ``suffix``) change in its file, as its name's tail (issue 113: ``finger_box-sheet.dxf``
+    was one name for the sheet with no kerf and with 0.2 mm, for 600 x 400 and 1000 x 1000
+    sheets; ``.gcode`` for the laser and the router; ``.pdf`` for one page and A4 tiles):
+    ``-kerf0.2`` (a kerf given, cutting formats), ``-1000x1000`` (a sheet other than
+    :data:`DEFAULT_SHEET`, nested), ``-router`` / ``-plotter`` (G-code for a machine other
+    than the laser it is written for by default), ``-a4tiles`` / ``-letter-landscapetiles``
+    (a PDF tiled over paper).  ``""`` for the defaults: the names of files made with them
+    stay as they were."""
+    from ..output import FORMATS
+    fmt, opts = FORMATS[suffix], got["options"]
+    tags = []
+    if got["kerf"] is not None and fmt.cut and not opts.get("assembled"):
+        tags.append(f"kerf{got['kerf']:g}")
+    if got["layout"] and tuple(float(x) for x in got["sheet"]) != DEFAULT_SHEET:
+        tags.append("x".join(f"{float(x):g}" for x in got["sheet"]))
+    if fmt.module == "gcode" and opts.get("machine") not in (None, "laser"):
+        tags.append(opts["machine"])
+    if opts.get("page"):
+        tags.append(f"{opts['page'].lower()}tiles")
+    return "".join(f"-{t}" for t in tags)
 
 
 def download_settings(suffix: str, settings) -> dict:

@@ -223,7 +223,9 @@ def thumbnail_key(entry: Entry, size: int = 240) -> str:
     return hashlib.sha256(text.encode("utf-8")).hexdigest()
 
 
-def _thumb_path(key: str) -> Path | None:
+def _thumb_path(key: str, suffix: str = ".svg") -> Path | None:
+    """Where the user's cache keeps what is filed under ``key`` (a thumbnail; with ``suffix``,
+    a gallery design's whole sweep: :mod:`.ahead`), or None without a cache."""
     from ..host.cache import cache_dir
     base = cache_dir()
     if base is None:
@@ -233,7 +235,7 @@ def _thumb_path(key: str) -> Path | None:
         folder.mkdir(mode=0o700, exist_ok=True)
     except OSError:
         return None
-    return folder / f"{key[:32]}.svg"
+    return folder / f"{key[:32]}{suffix}"
 
 
 def kept_thumbnail(entry: Entry, size: int = 240) -> str | None:

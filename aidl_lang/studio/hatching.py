@@ -20,9 +20,12 @@ def sweep_ranges(folder: str, source: str, budget=None, values: dict | None = No
     "summary", "combinations", "params": {name: {"min", "max", "unit", "clean": [lo, hi],
     "below", "above", "bands", "unjudged"}}}`` (display units: mm, deg, plain).  ``bands``:
     every part of the range where that slider alone breaks the design, ``{"from", "to",
-    "code", "text"}``: the values strictly between ``from`` and ``to`` (the clean values
-    judged on either side; None: from the range's end), ``text`` as the page says it
-    (``32.2-39.6 mm: a ledge ...``).  ``clean``: the clean part that holds the slider's
+    "lo", "hi", "code", "text"}``: the values strictly between ``from`` and ``to`` (the clean
+    values judged on either side; None: from the range's end) and those from ``lo`` to ``hi``
+    (the broken values judged at the band's ends, both included: a band next to a part not
+    judged ends at its own value, ``from == lo``, and a value broken alone between two such
+    parts is a band ``lo == hi``, a point), ``text`` as the page says it (``32.2-39.6 mm: a
+    ledge ...``, ``at 215 mm: ...``, ``from 320 mm: ...``).  ``clean``: the clean part that holds the slider's
     value (else the nearest one; empty: none), its ends on the slider's steps (inward); ``below``/``above``: None, or the band
     next to it on that side (``{"at": its clean end, "from"/"to", "code", "text"}``,
     ``text`` as ``above 26.4 mm: a wall of `plate` ...``).  ``unjudged``: the parts of the
@@ -54,6 +57,7 @@ def sweep_ranges(folder: str, source: str, budget=None, values: dict | None = No
         p = declared.get(name)
         if p is not None and p.min is not None and p.max is not None:
             out["params"][name] = _row(p, alone, name, for_forms)
+    out["complete"] = not rep.skipped and not any(q["unjudged"] for q in out["params"].values())
     return out
 
 
@@ -86,15 +90,26 @@ def _row(p, alone, name: str, for_forms) -> dict:
         a = None if after is None else _stop(p, after, up=False)
         b = None if before is None else _stop(p, before, up=True)
         below = b is not None and b <= value + 1e-9
+        # an end next to a part not judged is the band's own broken value (issue 113: the
+        # telephone's `base_w` broken at 215 alone, and from 320 at the slider's end, were
+        # bands of no value strictly between their ends, drawn as nothing)
+        shut_a, shut_b = after is not None and after == r.lo, before is not None and before == r.hi
         where = (f"{_shown(p.min, '')}–{_shown(p.max, p.unit)}" if a is None and b is None else
+                 f"at {_shown(b, p.unit)}" if a is None and shut_b and b <= p.min else
+                 f"up to {_shown(b, p.unit)}" if a is None and shut_b else
                  f"below {_shown(b, p.unit)}" if a is None else
+                 f"at {_shown(a, p.unit)}" if b is None and shut_a and a >= p.max else
+                 f"from {_shown(a, p.unit)}" if b is None and shut_a else
                  f"above {_shown(a, p.unit)}" if b is None else
+                 f"at {_shown(a, p.unit)}" if shut_a and shut_b and a == b else
+                 f"at {_shown(r.lo, p.unit)}" if r.lo == r.hi and p.step and p.step > 0
+                 and abs(b - a - 2 * p.step) <= 1e-9 * max(1.0, abs(b)) else
                  f"{_shown(a, '')}–{_shown(b, p.unit)}")
         text = f"{where}: {for_forms(r.problem)}"
         far = r.far
         if far and far[1] != r.code:
             text += f"; at {_shown(far[0], p.unit)}: {for_forms(far[2])}"
-        band = {"from": a, "to": b, "code": r.code, "text": text}
+        band = {"from": a, "to": b, "lo": r.lo, "hi": r.hi, "code": r.code, "text": text}
         row["bands"].append(band)
         if not clean:
             continue

@@ -162,9 +162,36 @@ _KEEP = frozenset(("svg", "source", "program", "code", "rendered", "values", "cl
                    "dropped", "span"))
 
 
+# a fault of the compiler (E0900) as a visitor reads it: no Python name, no "save" (issue 113:
+# "internal error ... RecursionError ... the next save is compiled again" in the studio)
+FAULT = ("the studio met a fault of its own while making this design (not a mistake in it); "
+         "it is logged for the studio's operator")
+FAULT_HINT = "change a value or the program and it is made again"
+# an assertion's own words: `assertion failed: `COND` (REASON): FOUND` -> REASON (issue 113:
+# a template's condition and its values were shown: "`(1 if fine or medium or coarse else 0)
+# == 1` ... 0 == 1 is false")
+_ASSERTION = re.compile(r"assertion failed: `[^`]*` \((?P<why>.+?)\): .*$", re.S)
+
+
+def _reasoned(d: dict) -> dict:
+    """A diagnostic ``d`` whose assertion states its reason said by that reason alone, and a
+    fault of the compiler said as :data:`FAULT`."""
+    if d.get("code") == "E0900":
+        return {**d, "message": FAULT, "hint": FAULT_HINT, "rendered": f"{FAULT}; {FAULT_HINT}"}
+    msg = d.get("message")
+    m = _ASSERTION.search(msg) if isinstance(msg, str) else None
+    if m is None:
+        return d
+    # a template's argument is not the visitor's to name (the span says where it is)
+    lead = re.sub(r"^argument `[^`]*` of `[^`]*`: $", "", msg[:m.start()])
+    return {**d, "message": lead + m.group("why"), "hint": "choose a value for which this holds"}
+
+
 def page_answer(obj, key: str | None = None):
     """``obj`` (a worker's JSON-ready answer) with the texts a visitor reads reworded by
     :func:`for_page`; bytes, numbers, pictures and programs as they are."""
+    if isinstance(obj, dict) and isinstance(obj.get("code"), str) and "message" in obj:
+        obj = _reasoned(obj)
     if isinstance(obj, dict):
         if obj.get("severity") == "error" and "message" in obj:     # a diagnostic of the code
             return {k: for_page(v, code=True) if k in ("message", "hint") and isinstance(v, str)

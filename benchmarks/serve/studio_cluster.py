@@ -123,7 +123,8 @@ def studio_processes(ports: list[int], env: dict | None = None, *args: str,
     try:
         for port in ports:
             e = {**os.environ, "PATH": bindir + os.pathsep + os.environ.get("PATH", ""),
-                 "PORT": str(port), "AIDL_STUDIO_HOST": "127.0.0.1", **(env or {})}
+                 "PORT": str(port), "AIDL_STUDIO_HOST": "127.0.0.1",
+                 "AIDL_STUDIO_AHEAD": "none", **(env or {})}
             procs.append(subprocess.Popen(["/bin/sh", str(ENTRY), *args], env=e,
                                           stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
                                           start_new_session=True))

@@ -16,6 +16,9 @@ def studio(*args: str, env: dict | None = None, timeout: float = 60.0):
     stop it after."""
     exe = Path(sys.executable).with_name("aidl")
     cmd = [str(exe)] if exe.exists() else [sys.executable, "-m", "aidl_lang.cli"]
-    with launched(cmd + ["studio", "--port", "0", *args], env={**os.environ, **(env or {})},
+    # the gallery is not swept ahead of time (issue 113: minutes of CPU beside a test) unless
+    # asked: AIDL_STUDIO_AHEAD in ``env``
+    with launched(cmd + ["studio", "--port", "0", *args],
+                  env={**os.environ, "AIDL_STUDIO_AHEAD": "none", **(env or {})},
                   timeout=timeout) as got:
         yield got

@@ -249,7 +249,8 @@ function answered(view, raw, held = raw) {
       const p = (view.params || state.params).find((q) => q.name === name);
       // a slider's end sent rounded (to 1e-6) and put back on it: no move to speak of
       const moved = !(typeof raw[name] === "number" && Math.abs(v - raw[name]) <= 1e-6 * Math.max(1, Math.abs(v)));
-      if (moved) typedNote(name, `${name} moved to ${p ? onStep(p, v) : fmt(v)}${p && p.unit ? " " + p.unit : ""}: its range follows the other values`);
+      // (a text none of its param's choices: the server says which it used, issue 113)
+      if (moved) typedNote(name, (view.moved && view.moved[name]) || `${name} moved to ${p ? onStep(p, v) : fmt(v)}${p && p.unit ? " " + p.unit : ""}: its range follows the other values`);
     }
   }
   if (view.params) state.params = view.params;
@@ -269,6 +270,8 @@ function show(view, ms) {
   const diags = view.diagnostics || [];
   const errors = diags.filter((d) => d.severity === "error").length;
   if (view.params) showParams(view.params);     // the form first: the picture lands on its values
+  // a text none of its choices, replaced: said under its list (a link's first answer builds the form)
+  for (const [name, text] of Object.entries(view.moved || {})) typedNote(name, text);
   building2d(false);
   if (view.error) status(view.error);
   else status(view.ok ? `solved in ${Math.round(ms)} ms` + (diags.length ? ` · ${diags.length} message${diags.length > 1 ? "s" : ""}` : "")
@@ -565,6 +568,12 @@ function control(p) {
     }
     sel.onchange = () => change(sel.value);
     line.appendChild(sel);
+    // the line that says a value none of its choices was replaced (issue 113: a share link's
+    // `fit = "tight"`)
+    const typed = document.createElement("div"); typed.className = "typed-note"; typed.id = id + "-typed";
+    typed.setAttribute("role", "status");
+    sel.setAttribute("aria-describedby", typed.id);
+    row.append(typed);
   } else if (p.kind === "string") {
     const t = document.createElement("input"); t.type = "text"; t.name = p.name; t.id = id;
     t.oninput = () => change(t.value);
@@ -725,7 +734,11 @@ function cleanOf(name) {            // the clean values a slider stops at: its c
 // design at), or null
 function bandAt(q, v) {
   if (!q || typeof v !== "number") return null;
-  return (q.bands || []).find((b) => (b.from === null || v > b.from + 1e-9) && (b.to === null || v < b.to - 1e-9)) || null;
+  // strictly between the clean values judged beside it, or from its first broken value judged
+  // to its last (both in: a value broken alone between parts not judged is a band of one value)
+  const within = (b) => (b.lo != null && v >= b.lo - 1e-9 && v <= b.hi + 1e-9)
+    || ((b.from === null || v > b.from + 1e-9) && (b.to === null || v < b.to - 1e-9));
+  return (q.bands || []).find(within) || null;
 }
 // a sweep is of the program and the sliders where they are: each slider alone is hatched where
 // it breaks the design at the other sliders' values
@@ -827,11 +840,15 @@ function markRanges() {
     // a band's clean values judged on either side are the slider's steps: the hatch stops
     // half a step short of them (a count's odd values each their own mark, not the track)
     const half = p.step > 0 ? p.step / 2 : 0;
+    // (a band's broken values judged, lo to hi, are always in it: one value alone is a tick)
     const mark = (z, b, inset = half) => {
       z.hidden = !b || !(span > 0);
       if (z.hidden) return;
-      z.style.setProperty("--from", frac(b.from === null ? null : b.from + inset, 0));
-      z.style.setProperty("--to", frac(b.to === null ? null : b.to - inset, 1));
+      const lo = b.from === null ? null : Math.min(b.from + inset, b.lo ?? Infinity);
+      const hi = b.to === null ? null : Math.max(b.to - inset, b.hi ?? -Infinity);
+      z.style.setProperty("--from", frac(lo, 0));
+      z.style.setProperty("--to", frac(hi, 1));
+      z.classList.toggle("tick", frac(hi, 1) - frac(lo, 0) < 0.01);
       z.title = b.text;
     };
     const track = row.querySelector(".track");
@@ -857,12 +874,21 @@ function markRanges() {
       ? Array.from({ length: Math.round(span / p.step) + 1 }, (_, k) => p.min + k * p.step)
         .filter((x) => !bandAt(q, x)) : null;
     const clean = !bands.length && !((q && q.unjudged) || []).length ? "" : counts ? `, clean at ${counts.map((x) => onStep(p, x)).join(", ")}`
-      : !q.clean.length ? ", no clean value found" : `, clean ${onStep(p, q.clean[0])}–${onStep(p, q.clean[1])}`;
+      : !q.clean.length ? ", no clean value found" : `, ${cleanSaid(p, q)}`;
     u.textContent = `${p.unit || ""} (${onStep(p, p.min)}–${onStep(p, p.max)}${clean})`;
     r.title = [...bands, ...((q && q.unjudged) || [])].map((x) => x.text).join("\n");
     const v = state.values[p.name] !== undefined ? state.values[p.name] : p.value;
     pastNote(row, p.name, v);
   }
+}
+// the clean range as said: next to a part the time allowed left not checked, its end is only
+// where the checking stopped (issue 113: a cut-short sweep read "clean 16–16")
+function cleanSaid(p, q, long = false) {
+  const [a, b] = q.clean, unit = p.unit ? ` ${p.unit}` : "";
+  const cut = (q.unjudged || []).some((g) => Math.abs(g.to - a) < 1e-9 || Math.abs(g.from - b) < 1e-9);
+  const said = a === b ? `at ${onStep(p, a)}` : `${onStep(p, a)}–${onStep(p, b)}`;
+  return cut ? `clean ${said}${unit} of the values checked, the rest not checked in the time allowed`
+    : long ? `clean from ${onStep(p, a)} to ${onStep(p, b)}${unit}` : `clean ${onStep(p, a)}–${onStep(p, b)}`;
 }
 // the slider's accessible text and the line under it: where its value is, against the clean range
 function pastNote(row, name, v) {
@@ -881,7 +907,9 @@ function pastNote(row, name, v) {
     note.textContent = beside
       ? `${onStep(p, v)}${unit} is outside the range the sweep found clean (${onStep(p, q.clean[0])}–${onStep(p, q.clean[1])}${unit}): ${past.text}`
       : !q.clean.length ? `${fmt(v)}${unit}: the design breaks at every value of this slider (the others where they are): ${past.text}`
-        : `${fmt(v)}${unit} is in a part of the range where the design breaks, between clean values: ${past.text}`;
+        : past.from === past.lo || past.to === past.hi     // (an end beside a part not checked)
+          ? `${fmt(v)}${unit} is in a part of the range where the design breaks: ${past.text}`
+          : `${fmt(v)}${unit} is in a part of the range where the design breaks, between clean values: ${past.text}`;
     r.setAttribute("aria-valuetext", beside ? `${fmt(v)}${unit}, outside the clean range: ${past.text}`
       : `${fmt(v)}${unit}, where the design breaks: ${past.text}`);
   } else if (open) {
@@ -889,7 +917,7 @@ function pastNote(row, name, v) {
     r.setAttribute("aria-valuetext", `${fmt(v)}${unit}, not checked in the time allowed`);
   } else {
     note.textContent = ends.length && q.clean.length
-      ? `clean from ${onStep(p, q.clean[0])} to ${onStep(p, q.clean[1])}${unit}; ${ends.map((x) => x.text).join("; ")}` : "";
+      ? `${cleanSaid(p, q, true)}; ${ends.map((x) => x.text).join("; ")}` : "";
     if (typeof v === "number") r.setAttribute("aria-valuetext", `${fmt(v)}${unit}`);
   }
 }

@@ -1,10 +1,10 @@
 """The syntax the studio's relations read in a program ``aidl import --infer`` wrote
-(:mod:`.relations`, :mod:`.plate_relations`): its rangeless ``param``\\ s, a call's keyword
+(:mod:`.drawn`, :mod:`.plates`): its rangeless ``param``\\ s, a call's keyword
 arguments, the ``Circle`` calls beneath a node, a node's source text.  Not part of the
 stable API."""
 from __future__ import annotations
 
-from .. import ast as A
+from ... import ast as A
 
 WALL = 1.0          # mm of material kept between a hole and an edge or another hole
 

@@ -16,7 +16,7 @@ What is related (found in the program's syntax, never in its param names):
   holes fit round the circle without touching.
 
 A rectangular plate's grid of holes about its centre or from an end member, a panel's window
-with its four screws, and its corner holes (:mod:`.plate_relations`), are related the same
+with its four screws, and its corner holes (:mod:`.plates`), are related the same
 way.
 
 Anything else of the program is left as it is (its sliders keep their default spans).
@@ -24,10 +24,10 @@ Not part of the stable API.
 """
 from __future__ import annotations
 
-from .. import ast as A
-from .plate_relations import (bore_skip, corner_ranges, grid_place, grid_ranges, window_place,
+from ... import ast as A
+from .plates import (bore_skip, corner_ranges, grid_place, grid_ranges, window_place,
                               window_ranges)
-from .relation_syntax import WALL, _circles, _fmt, _kw, _name, _params, _text
+from .syntax import WALL, _circles, _fmt, _kw, _name, _params, _text
 
 __all__ = ["WALL", "flange_ranges", "with_relations"]
 
@@ -122,8 +122,8 @@ def with_relations(program: str, path: str = "main.aidl") -> tuple[str, list[str
     relates (see the module's docstring), its ``param`` lines in the order the ranges need,
     and a note for each relation written; the program as it is, ``[]``, when it has none or
     does not parse, or when a range would not hold the drawing's own values."""
-    from ..base.diagnostics import DiagnosticSink
-    from ..parser import parse
+    from ...base.diagnostics import DiagnosticSink
+    from ...parser import parse
     sink = DiagnosticSink()
     prog = parse(program, path, sink)
     if sink.has_errors or prog is None:
@@ -192,6 +192,6 @@ def _holds(text: str, path: str) -> bool:
     import os
     import tempfile
 
-    from .. import api
+    from ... import api
     with tempfile.TemporaryDirectory(prefix="aidl-relations-") as d:
         return api.compile(source=text, path=os.path.join(d, os.path.basename(path))).ok

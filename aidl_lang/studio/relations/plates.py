@@ -1,4 +1,4 @@
-"""A rectangular plate's inferred relations as the studio's sliders (:mod:`.relations`, issue
+"""A rectangular plate's inferred relations as the studio's sliders (:mod:`.drawn`, issue
 94): the ranges that keep a plate's holes inside it when its width or height slides, found in
 the program's syntax (never in its param names).
 
@@ -8,7 +8,7 @@ the program's syntax (never in its param names).
   2) * PX, C.y + (j - (NY - 1) / 2) * PY), diameter=D) } }`` (``C`` the body's centre as
   written, or a name assigned it; ``PX`` and ``PY`` may be one param) and, optional, a bore
   ``Circle(center=C, diameter=B)``.  The grid stays centred (the import wrote it about the
-  centre) and :data:`~.relation_syntax.WALL` inside the edges; its holes clear each other and
+  centre) and :data:`~.syntax.WALL` inside the edges; its holes clear each other and
   the bore; a count fits the plate at the smallest pitch.  With a bore the loop's body is
   wrapped in ``if 2 * i != NX - 1 or 2 * j != NY - 1`` (:func:`bore_skip`): odd counts both
   ways would put the middle hole on the bore, and ``--set`` takes any whole count.
@@ -32,8 +32,8 @@ from __future__ import annotations
 
 import math
 
-from .. import ast as A
-from .relation_syntax import WALL, _circles, _fmt, _kw, _name, _text
+from ... import ast as A
+from .syntax import WALL, _circles, _fmt, _kw, _name, _text
 
 COUNT_CAP = 16      # a count's slider reaches at least this far (or twice the drawing's)
 EPS = 0.01          # mm a range keeps from its neighbour's end: at the smallest plate each
