@@ -255,25 +255,39 @@ def pytest_runtest_logreport(report):
 # pytest-xdist (--dist loadfile --no-loadscope-reorder, pyproject.toml) hands the files to its
 # workers in collection order: the slowest of the last run first (their seconds kept in
 # pytest's cache, aidl/file_seconds), so the run ends on small files and both workers end
-# together; files the cache does not know (a fresh clone: all of them) by their count of
-# tests, most first (xdist's own order).  The controller reads the cache once and gives both
-# workers the same figures (their collections must match).
+# together; files the cache does not know (a fresh clone: all of them) by the seconds of a
+# measured run kept in tests/file_seconds.json (a newcomer's first run would otherwise start
+# the 40 s packaging test last, a file of few tests, and one worker would wait for it alone;
+# `python tests/file_seconds.py` writes it anew from the cache of a whole run), then by their
+# count of tests, most first (xdist's own order).  The controller reads the figures once and
+# gives both workers the same (their collections must match).
 _file_seconds: collections.Counter = collections.Counter()
 _SECONDS_KEY = "aidl/file_seconds"
+MEASURED_SECONDS = ROOT / "tests" / "file_seconds.json"
+
+
+def _seconds_of_files(config) -> dict:
+    """Seconds a file took: this checkout's last run (pytest's cache) over the committed table."""
+    import json
+    try:
+        seconds = json.loads(MEASURED_SECONDS.read_text())
+    except (OSError, ValueError):
+        seconds = {}
+    cache = getattr(config, "cache", None)
+    seconds.update(cache.get(_SECONDS_KEY, {}) if cache else {})
+    return seconds
 
 
 @pytest.hookimpl(optionalhook=True)
 def pytest_configure_node(node):
-    cache = getattr(node.config, "cache", None)
-    node.workerinput["aidl_file_seconds"] = cache.get(_SECONDS_KEY, {}) if cache else {}
+    node.workerinput["aidl_file_seconds"] = _seconds_of_files(node.config)
 
 
 def pytest_collection_modifyitems(session, config, items):
     if _worker(config):
         seconds = config.workerinput.get("aidl_file_seconds", {})
     else:
-        cache = getattr(config, "cache", None)
-        seconds = cache.get(_SECONDS_KEY, {}) if cache else {}
+        seconds = _seconds_of_files(config)
     count = collections.Counter(item.nodeid.split("::")[0] for item in items)
     rank = {f: i for i, f in enumerate(sorted(count, key=lambda f: (-seconds.get(f, 0.0),
                                                                      -count[f], f)))}
