@@ -16,7 +16,7 @@ const state = {
   sweep: { answer: null, source: null, key: null, asked: null, ctrl: null, timer: null },
 };
 // read by the browser tests: views shown, 3D loads asked, the last view and its diagnostics
-window.studio = { ready: false, idle: false, views: 0, sweeps: 0, sweep: null, glbs: 0, glbView: 0, view: null, state, errors: [],
+window.studio = { ready: false, idle: false, views: 0, passing: 0, passingAt: [], sweeps: 0, sweep: null, glbs: 0, glbView: 0, view: null, state, errors: [],
                   shownAt: {}, builtAt: {},      // view number -> performance.now() of its 2D, its 3D
                   // the page's benchmark (issue 104): view number -> where its time went, ms from
                   // the change (a slider's move): waited (the page's debounce and pacing), sent,
@@ -184,8 +184,11 @@ function building2d(on) {
 }
 
 // One preview in flight; a change made meanwhile is compiled when it answers (the latest values
-// only: a drag costs one compile after its last move). An answer is shown only when it is the
-// current program's with the values the sliders hold now; else it is dropped.
+// only: the values of the moment the request leaves). An answer of the current program with
+// the values the sliders hold now is the sliders' picture (shown, then its 3D and checks); one
+// whose values the sliders have left meanwhile (a drag) is shown too, as soon as it comes,
+// marked with the values it is of (issue 113: a drag with a move every 250 ms showed no picture
+// until the mouse was released), and the sliders' current values are asked at once.
 async function compile() {
   if (state.inflight) { state.again = true; return; }
   state.inflight = true;
@@ -214,7 +217,10 @@ async function compile() {
       window.studio.timeline[window.studio.views] = { changed: changedAt, waited: t0 - changedAt, sent: t0,
         answered: got, compile_ms: t.worker_ms ?? t.total_ms ?? null, drawn: null, built: null };
     }
-    else state.again = true;        // the sliders moved on meanwhile: not their picture
+    else {                          // the sliders moved on meanwhile: not their picture yet
+      state.again = true;
+      passing(view);
+    }
   } catch (e) {
     window.studio.errors.push(String(e.message || e));
     if (e.retry) { state.again = false; setTimeout(compile, e.retry * 1000); }
@@ -253,7 +259,48 @@ function answered(view, raw, held = raw) {
     }
   }
   if (view.params) state.params = view.params;
+  view.made = made;                   // (the values it is of, said by passing())
   return sameValues(chosenRaw(made), chosenRaw());
+}
+
+// A picture of values the sliders have left (a drag goes on): on the flat view at once, marked
+// with the values it is of where they differ from the sliders' ("width 134 mm"); the form, the
+// 3D view, the messages and the checks wait for the sliders' own picture, which clears the mark.
+// An error answer is not shown (the last picture stays): the next request is on its way.
+function passing(view) {
+  if (!view.ok || !view.svg || !view.made) return;
+  const made = view.made, differ = [];
+  for (const p of state.params) {
+    const a = made[p.name] !== undefined ? made[p.name] : p.default;
+    const b = state.values[p.name] !== undefined ? state.values[p.name] : p.default;
+    if (same(a, b)) continue;
+    differ.push(typeof a === "number" ? `${p.name} ${onStep(p, a)}${p.unit ? " " + p.unit : ""}`
+      : typeof a === "boolean" ? `${p.name} ${a ? "on" : "off"}` : `${p.name} “${a}”`);
+  }
+  if (view.svg !== state.lastSvg) {
+    state.lastSvg = view.svg;
+    if (state.svgUrl) URL.revokeObjectURL(state.svgUrl);
+    state.svgUrl = URL.createObjectURL(new Blob([view.svg], { type: "image/svg+xml" }));
+    $("flat-img").src = state.svgUrl;
+  }
+  $("flat").classList.add("passing");
+  markFor(differ.length ? `showing ${differ.join(", ")}` : "");
+  window.studio.passing += 1;
+  window.studio.passed = view;
+  window.studio.passingAt.push([performance.now(), differ.join(", ")]);
+}
+// the flat view's mark: the values its picture is of, while they are not the sliders' ("" clears)
+function markFor(text) {
+  let mark = $("flat-for");
+  if (!mark) {
+    mark = document.createElement("span");
+    Object.assign(mark, { id: "flat-for", className: "pane-mark", hidden: true });
+    mark.setAttribute("role", "status");
+    $("flat").appendChild(mark);
+  }
+  mark.textContent = text;
+  mark.hidden = !text;
+  if (!text) $("flat").classList.remove("passing");
 }
 
 // a design's name as the header says it: divider_tray -> Divider tray
@@ -274,6 +321,8 @@ function show(view, ms) {
   else status(view.ok ? `solved in ${Math.round(ms)} ms` + (diags.length ? ` · ${diags.length} message${diags.length > 1 ? "s" : ""}` : "")
                       : `${errors} error${errors === 1 ? "" : "s"}: showing the last good picture`);
   $("flat").classList.toggle("stale", !view.ok);
+  // the sliders' own picture: the mark goes (an error keeps the picture on the page, and its mark)
+  if (view.ok && view.svg) markFor("");
   // only a picture of this program with these values: an error keeps the page's last picture
   if (view.ok && view.svg && view.svg !== state.lastSvg) {
     state.lastSvg = view.svg;
@@ -1069,6 +1118,7 @@ function setProgram(source, values, given = null) {
   state.linkValues = null;                  // (a share link sets its own after this)
   state.glbSeq += 1;                        // a 3D still on its way is the old design's
   state.fitNext = true;                     // the flat view shows all of the new design
+  markFor("");
   $("download-status").textContent = "";    // the last design's download is not this one's
   building(true, true);
   if (editor) editor.setText(source);
