@@ -10,7 +10,7 @@ const EMBED = location.pathname === "/embed";
 // its last answer ([] until the first: a new program's values are then sent as they are)
 const state = {
   sid: null, source: "", values: {}, params: [], paramKey: "", entry: null,
-  seq: 0, shown: 0, inflight: false, again: false, timer: null, glbSeq: 0, reframe: true,
+  seq: 0, shown: 0, inflight: false, kerf: null, again: false, timer: null, glbSeq: 0, reframe: true,
   config: null, svgUrl: null, view: null,
   // the sweep of the program (/api/sweep): its answer, the program it is of, the one asked
   sweep: { answer: null, source: null, key: null, asked: null, ctrl: null, timer: null },
@@ -64,7 +64,7 @@ function settings() {
   const num = (id) => { const v = $(id).value; return v === "" ? null : Number(v); };
   // the thickness is the design's own `thickness` param (the Material field sets it): the
   // joints, the 3D view and the 3D files have one thickness (issue 94)
-  return { thickness: null, kerf: num("kerf"), machine: $("machine").value || "laser",
+  return { thickness: null, kerf: state.kerf, machine: $("machine").value || "laser",
            layout: $("layout").checked, sheet: [num("sheet-w") || 600, num("sheet-h") || 400] };
 }
 
@@ -348,6 +348,7 @@ function show(view, ms) {
       else askChecks(view, me);
     }
     askSweep();
+    if (state.kerf && (state.kerfFails || state.kerfRecheck)) tryKerf();
   }
   else {          // the last good model, dimmed like the last good picture, and why
     state.glbSeq += 1;
@@ -759,6 +760,55 @@ $("thickness").addEventListener("change", () => {
 $("thickness").addEventListener("keydown", (e) => { if (e.key === "Enter") { e.preventDefault(); $("thickness").dispatchEvent(new Event("change")); } });
 $("params").addEventListener("submit", (e) => e.preventDefault());
 
+// The kerf (issue 113): the width the cut takes, mm, 0 to 10 (the machine profiles' range);
+// empty: the program's own `kerf`. Checked as typed, with a note beside it: a text that is no
+// width, a negative kerf or one past 10 mm is not taken (the field shows the kerf in use); a kerf
+// taken is tried on the design once (a cutting file made and thrown away: each outline offset
+// by half of it), and when the design's features are too small for it the note says which, at
+// once, not when a download fails. A failing kerf is tried again after the next settled picture
+// (the values may have made room), a new design tries it afresh.
+function kerfNote(text) { $("kerf-note").textContent = text; }
+$("kerf").addEventListener("change", () => {
+  const text = $("kerf").value.trim(), was = state.kerf;
+  const stays = was === null ? "the program's kerf is used" : `the kerf stays ${fmt(was)} mm`;
+  const back = () => { $("kerf").value = was === null ? "" : fmt(was); };
+  if (text === "") {
+    state.kerf = null; state.kerfFails = false; kerfNote(""); downloadChanged();
+    return;
+  }
+  const [digits, k, unit] = withUnit({ kind: "length" }, text);
+  const x = k === undefined ? NaN : parseNumber(digits) * k;
+  if (unit && k === undefined) { kerfNote(`“${text}” is not a width in mm: ${stays}`); back(); return; }
+  if (!Number.isFinite(x)) { kerfNote(`“${text}” is not a number: ${stays}`); back(); return; }
+  if (x < 0) { kerfNote(`a kerf is the width the cut takes: 0 mm or more, not ${fmt(x)} mm; ${stays}`); back(); return; }
+  if (x > 10) { kerfNote(`a kerf is at most 10 mm (a laser's is about 0.1–0.5 mm), not ${fmt(x)} mm; ${stays}`); back(); return; }
+  state.kerf = x;
+  $("kerf").value = fmt(x);
+  kerfNote("");
+  downloadChanged();
+  tryKerf();
+});
+$("kerf").addEventListener("keydown", (e) => { if (e.key === "Enter") { e.preventDefault(); $("kerf").dispatchEvent(new Event("change")); } });
+async function tryKerf() {
+  const kerf = state.kerf, me = state.kerfSeq = (state.kerfSeq || 0) + 1;
+  state.kerfRecheck = false;
+  if (!kerf) { state.kerfFails = false; return; }
+  kerfNote(`trying a kerf of ${fmt(kerf)} mm on this design…`);
+  try {
+    await pace(4);                            // (a download's cost in the server's rate)
+    const r = await post(`/api/download/svg`, { sid: state.sid, source: state.source, values: chosen(),
+      settings: { ...settings(), layout: false, style: "laser", name: "kerf" } }, true);
+    if (me !== state.kerfSeq) return;
+    if (r.ok) { state.kerfFails = false; kerfNote(""); return; }
+    const doc = await r.json().catch(() => ({}));
+    if (me !== state.kerfSeq) return;
+    state.kerfFails = r.status === 422 && !!doc.error && /kerf|offset/i.test(doc.error);
+    kerfNote(state.kerfFails ? `the cutting files cannot be made with this kerf: ${refusal(doc, r.status)}` : "");
+  } catch (e) {
+    if (me === state.kerfSeq) kerfNote("");   // busy or unreachable: the download will say
+  }
+}
+
 // ------------------------------------------------------------------ the ranges the sweep found clean
 // After a picture of a program not swept yet, the page asks /api/sweep for it in the background
 // (a quiet moment later; an edit stops the one on its way). Each slider then shows the part of
@@ -901,10 +951,7 @@ function markRanges() {
       mark(z, b);
     }
     const u = row.querySelector(".unit");
-    // a count broken at scattered values: its clean values named (`clean at 2, 4, 6, 8, 10`)
-    const counts = p.step >= 1 && !p.unit && bands.length > 1 && span / p.step <= 12
-      ? Array.from({ length: Math.round(span / p.step) + 1 }, (_, k) => p.min + k * p.step)
-        .filter((x) => !bandAt(q, x)) : null;
+    const counts = cleanCounts(p, q);
     const clean = !bands.length && !((q && q.unjudged) || []).length ? "" : counts ? `, clean at ${counts.map((x) => onStep(p, x)).join(", ")}`
       : !q.clean.length ? ", no clean value found" : `, clean ${onStep(p, q.clean[0])}–${onStep(p, q.clean[1])}`;
     u.textContent = `${p.unit || ""} (${onStep(p, p.min)}–${onStep(p, p.max)}${clean})`;
@@ -913,7 +960,16 @@ function markRanges() {
     pastNote(row, p.name, v);
   }
 }
+// a count broken at scattered values: its clean values (`clean at 2, 4, 6, 8, 10`), else null
+function cleanCounts(p, q) {
+  const bands = (q && q.bands) || [], span = p.max - p.min;
+  return p.step >= 1 && !p.unit && bands.length > 1 && span / p.step <= 12
+    ? Array.from({ length: Math.round(span / p.step) + 1 }, (_, k) => p.min + k * p.step)
+      .filter((x) => !bandAt(q, x)) : null;
+}
 // the slider's accessible text and the line under it: where its value is, against the clean range
+// (the same clean values as its label says: a count's scattered ones named, never "the range
+// found clean (4-4)" beside "clean at 2, 4, 6, 8, 10")
 function pastNote(row, name, v) {
   const note = row.querySelector(".sweep-note"), r = row.querySelector("input[type=range]");
   if (!note || !r) return;
@@ -925,7 +981,11 @@ function pastNote(row, name, v) {
   const open = !past && q ? (q.unjudged || []).find((g) => typeof v === "number" && v > g.from + 1e-9 && v < g.to - 1e-9) : null;
   note.classList.toggle("past", !!past);
   note.classList.toggle("open", !!open);
-  if (past) {
+  const counts = q ? cleanCounts(p, q) : null;
+  if (past && counts && counts.length) {
+    note.textContent = `${onStep(p, v)} is not one of the values the sweep found clean (${counts.map((x) => onStep(p, x)).join(", ")}): ${past.text}`;
+    r.setAttribute("aria-valuetext", `${fmt(v)}, where the design breaks: ${past.text}`);
+  } else if (past) {
     const beside = (q.below && past.text === q.below.text) || (q.above && past.text === q.above.text);
     note.textContent = beside
       ? `${onStep(p, v)}${unit} is outside the range the sweep found clean (${onStep(p, q.clean[0])}–${onStep(p, q.clean[1])}${unit}): ${past.text}`
@@ -937,7 +997,9 @@ function pastNote(row, name, v) {
     note.textContent = `${fmt(v)}${unit} was not checked in the time allowed (${open.text})`;
     r.setAttribute("aria-valuetext", `${fmt(v)}${unit}, not checked in the time allowed`);
   } else {
-    note.textContent = ends.length && q.clean.length
+    note.textContent = counts && counts.length
+      ? `clean at ${counts.map((x) => onStep(p, x)).join(", ")}; ${ends.map((x) => x.text).join("; ")}`
+      : ends.length && q.clean.length
       ? `clean from ${onStep(p, q.clean[0])} to ${onStep(p, q.clean[1])}${unit}; ${ends.map((x) => x.text).join("; ")}` : "";
     if (typeof v === "number") r.setAttribute("aria-valuetext", `${fmt(v)}${unit}`);
   }
@@ -967,12 +1029,21 @@ async function fetchFile(ext, extra = {}) {
                                                              settings: { ...settings(), name: downloadName(), ...extra } }, true));
   if (!r.ok) {
     const doc = await r.json().catch(() => ({}));
-    const msg = (doc.error || `HTTP ${r.status}`) + (doc.diagnostics && doc.diagnostics.length ? ": " + doc.diagnostics[0].message : "");
-    throw new Error(msg);
+    throw new Error(refusal(doc, r.status));
   }
   const name = /filename="([^"]+)"/.exec(r.headers.get("Content-Disposition") || "");
   return { blob: await r.blob(), name: name ? name[1] : `part.${ext}` };
 }
+
+// why a download was refused, said once: the server's sentence, and its first message only
+// when the sentence does not say it already ("nothing to make with these values: a hole removes
+// all of `plate`" was followed by the same reason again)
+function refusal(doc, status) {
+  const error = doc.error || `HTTP ${status}`, first = doc.diagnostics && doc.diagnostics[0];
+  const bare = (t) => String(t).replace(/[`'"“”‘’]/g, "").replace(/\s+/g, " ").trim().toLowerCase();
+  return first && first.message && !bare(error).includes(bare(first.message)) ? `${error}: ${first.message}` : error;
+}
+window.studio.refusal = refusal;
 
 async function load3d() {
   // the 3D view's GLB (/api/glb: made from the drawing the picture came from, fewer triangles
@@ -1112,6 +1183,16 @@ async function openEntry(id) {
 
 function setProgram(source, values, given = null) {
   state.source = source;
+  freshProgram(values, given);
+  if (editor) editor.setText(source);
+  schedule(0);
+}
+
+// another program on the page (a card, a paste, a shared link, a drawing, a described part):
+// nothing of the one before stays: its values, its picture, its 3D model and camera (framed
+// again on the new one: a paste kept the old camera, its disc drawn 2.5 x smaller than when
+// opened fresh), the line under the downloads, the kerf's note
+function freshProgram(values, given = null) {
   newProgram(values, given);
   state.lastSvg = null;
   state.reframe = true;
@@ -1120,9 +1201,10 @@ function setProgram(source, values, given = null) {
   state.fitNext = true;                     // the flat view shows all of the new design
   markFor("");
   $("download-status").textContent = "";    // the last design's download is not this one's
+  state.kerfFails = false;
+  kerfNote("");
+  if (state.kerf) state.kerfRecheck = true;  // the kerf checked again on the new design
   building(true, true);
-  if (editor) editor.setText(source);
-  schedule(0);
 }
 
 // a session's values belong to one program: another program (a card, a paste, a shared link,
@@ -1332,7 +1414,11 @@ async function start() {
       onChange: (text) => {
         // another program pasted over this one: its own title (the header and the
         // downloads' names follow it, not the gallery design it replaced)
-        if (replaced(state.source, text)) { newProgram(); state.entry = null; state.ownTitle = true; }
+        if (replaced(state.source, text)) {
+          state.entry = null; state.ownTitle = true;
+          $("title").textContent = "";        // its own title once it compiles (view.title)
+          freshProgram({});
+        }
         else sweepChanged(false);
         state.source = text; schedule(250);
       } });
@@ -1352,7 +1438,7 @@ async function start() {
       const doc = await unpack(m[1]);
       $("title").textContent = doc.title || "Shared design";
       const s = doc.settings || {};
-      if (s.kerf != null) $("kerf").value = s.kerf;
+      if (typeof s.kerf === "number" && s.kerf >= 0 && s.kerf <= 10) { state.kerf = s.kerf; $("kerf").value = fmt(s.kerf); }
       if (s.sheet) { $("sheet-w").value = s.sheet[0]; $("sheet-h").value = s.sheet[1]; }
       if (s.machine) $("machine").value = s.machine;
       if (s.layout != null) $("layout").checked = !!s.layout;
