@@ -215,7 +215,8 @@ async function compile() {
       show(view, got - t0);
       const t = view.timing || {};
       window.studio.timeline[window.studio.views] = { changed: changedAt, waited: t0 - changedAt, sent: t0,
-        answered: got, compile_ms: t.worker_ms ?? t.total_ms ?? null, drawn: null, built: null };
+        answered: got, compile_ms: t.worker_ms ?? t.total_ms ?? null, cpu_ms: t.cpu_ms ?? null,
+        drawn: null, built: null };
     }
     else {                          // the sliders moved on meanwhile: not their picture yet
       state.again = true;
@@ -600,7 +601,10 @@ function control(p) {
   row.appendChild(name);
   const line = document.createElement("div"); line.className = "line";
   row.appendChild(line);
-  const change = (v) => { state.values[p.name] = v; row.classList.toggle("changed", !same(v, p.default)); downloadChanged(); schedule(30); };
+  // a change with nothing on its way is sent at once (a release waited 30 ms for moves that did
+  // not come); one made while a picture is on its way waits for it (the latest values only)
+  const change = (v) => { state.values[p.name] = v; row.classList.toggle("changed", !same(v, p.default)); downloadChanged();
+                          schedule(state.inflight || state.timer ? 30 : 0); };
   if (p.kind === "bool") {
     const cb = document.createElement("input"); cb.type = "checkbox"; cb.name = p.name; cb.id = id;
     cb.onchange = () => change(cb.checked);
