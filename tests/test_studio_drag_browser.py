@@ -9,9 +9,10 @@ a move every 110 or 280 ms, 3 beside one busy core at 250 ms.  Now every picture
 during the drag is on the flat view as it comes (counted by the <img>'s own `load` events, not
 by the page's counters), marked with the value it is of, and the last is the slider's own.
 
-What the shares allow is asserted with margin (marked `timing`): a board enclosure's compile
-is about 0.25 s of CPU, so one picture a second holds at a load of several busy loops per
-core; 8 in the 10 s drag is the issue's figure for one busy core beside it.
+What the shares allow is asserted with margin (marked `timing`): every picture answered
+during the drag is shown (a law at any load), and at least 4 are (a board enclosure's move
+is about 0.1 s of CPU in the worker; on the shared 2-core machine at load 9-10, beside the
+busy loop, 5 and 8 came; the issue's 8 is for one busy core on an otherwise quiet machine).
 """
 from __future__ import annotations
 
@@ -45,28 +46,14 @@ DRAG = """async ([name, start, step, moves, every]) => {
 }"""
 
 
-@pytest.fixture(scope="module")
-def page(studio_url, chromium_browser):
-    ctx = chromium_browser.new_context(viewport={"width": 1280, "height": 800})
-    try:
-        ctx.route("**/api/thumb/**", lambda r: r.abort())     # the gallery's pictures: not here
-        page = ctx.new_page()
-        page.goto(studio_url)
-        page.wait_for_function("() => window.studio && window.studio.ready && window.studio.view"
-                               " && window.studio.view.ok", timeout=HANG)
-        page.keyboard.press("Escape")
-        yield page
-    finally:
-        ctx.close()
-
-
 def settle(page, after: int) -> None:
     page.wait_for_function(
         f"() => window.studio.views > {after} && window.studio.idle"
         " && !document.getElementById('flat').classList.contains('building')", timeout=HANG)
 
 
-def test_a_drag_shows_the_pictures_answered_while_it_goes_on(page):
+def test_a_drag_shows_the_pictures_answered_while_it_goes_on(studio_page):
+    page = studio_page
     n = page.evaluate("window.studio.views")
     page.click("#open-gallery")
     page.click('#cards .card[data-id="generator/board_enclosure"]')

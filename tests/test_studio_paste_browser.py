@@ -45,21 +45,6 @@ PASTE = """(text) => { const v = window.studio.editor.view;
     v.dispatch({ changes: { from: 0, to: v.state.doc.length, insert: text } }); }"""
 
 
-@pytest.fixture(scope="module")
-def page(studio_url, chromium_browser):
-    ctx = chromium_browser.new_context(viewport={"width": 1280, "height": 800})
-    try:
-        ctx.route("**/api/thumb/**", lambda r: r.abort())     # the gallery's pictures: not here
-        page = ctx.new_page()
-        page.goto(studio_url)
-        page.wait_for_function("() => window.studio && window.studio.ready && window.studio.view"
-                               " && window.studio.view.ok", timeout=HANG)
-        page.keyboard.press("Escape")
-        yield page
-    finally:
-        ctx.close()
-
-
 def settle(page, after: int) -> None:
     page.wait_for_function(
         f"() => window.studio.views > {after} && window.studio.idle"
@@ -78,7 +63,8 @@ def kerf(page, text: str) -> str:
     return page.inner_text("#kerf-note")
 
 
-def test_a_pasted_program_keeps_nothing_of_the_design_before(page, tmp_path):
+def test_a_pasted_program_keeps_nothing_of_the_design_before(studio_page, tmp_path):
+    page = studio_page
     n = page.evaluate("window.studio.views")
     page.click("#open-gallery")
     page.click('#cards .card[data-id="generator/board_enclosure"]')
@@ -110,7 +96,8 @@ def test_a_pasted_program_keeps_nothing_of_the_design_before(page, tmp_path):
     assert page.evaluate("window.aidl3d.camera()") == pytest.approx(now, abs=1e-6)
 
 
-def test_the_kerf_is_checked_in_its_field(page):
+def test_the_kerf_is_checked_in_its_field(studio_page):
+    page = studio_page
     if page.inner_text("#title") != "Disc":
         n = paste(page, DISC)
         settle(page, n)
@@ -143,7 +130,8 @@ def test_the_kerf_is_checked_in_its_field(page):
     assert page.evaluate("window.studio.state.kerf") is None
 
 
-def test_nothing_to_make_says_its_reason_once(page):
+def test_nothing_to_make_says_its_reason_once(studio_page):
+    page = studio_page
     if page.inner_text("#title") != "Disc":
         n = paste(page, DISC)
         settle(page, n)
@@ -164,7 +152,8 @@ def test_nothing_to_make_says_its_reason_once(page):
         "the program does not compile with these values: unknown name `x`"
 
 
-def test_a_counts_notes_name_the_clean_values_its_label_names(page):
+def test_a_counts_notes_name_the_clean_values_its_label_names(studio_page):
+    page = studio_page
     n = paste(page, COUNT)
     settle(page, n)
     page.wait_for_function("() => window.studio.sweep && window.studio.sweep.ok"
