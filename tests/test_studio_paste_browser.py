@@ -171,9 +171,12 @@ def test_a_counts_notes_name_the_clean_values_its_label_names(studio_page):
     assert "(4–4)" not in note and "outside the range" not in note, note
 
 
-def test_the_kerf_placeholder_fits_at_phone_width(chromium_browser, studio_url):
-    ctx = chromium_browser.new_context(viewport={"width": 390, "height": 844}, is_mobile=True,
-                                       has_touch=True, device_scale_factor=2)
+@pytest.mark.parametrize("mobile", [True, False])
+def test_the_kerf_placeholder_fits_at_phone_width(chromium_browser, studio_url, mobile):
+    # a phone (390 x 844, touch) and a desktop window as narrow: the latter drew a number
+    # field's spin buttons inside it, and "program's" was clipped to "prograr"
+    ctx = chromium_browser.new_context(viewport={"width": 390, "height": 844}, is_mobile=mobile,
+                                       has_touch=mobile, device_scale_factor=2 if mobile else 1)
     try:
         ctx.route("**/api/thumb/**", lambda r: r.abort())
         phone = ctx.new_page()
@@ -181,12 +184,13 @@ def test_the_kerf_placeholder_fits_at_phone_width(chromium_browser, studio_url):
         phone.wait_for_function("() => window.studio && window.studio.ready", timeout=HANG)
         phone.keyboard.press("Escape")
         # the placeholder's width in the field's own font against the room inside the field
-        room, text = phone.evaluate("""() => {
+        # (a text field: no spin buttons take part of it)
+        kind, room, text = phone.evaluate("""() => {
             const f = document.getElementById('kerf'), cs = getComputedStyle(f);
             const c = document.createElement('canvas').getContext('2d');
             c.font = `${cs.fontStyle} ${cs.fontWeight} ${cs.fontSize} ${cs.fontFamily}`;
             const room = f.clientWidth - parseFloat(cs.paddingLeft) - parseFloat(cs.paddingRight);
-            return [room, c.measureText(f.placeholder).width]; }""")
-        assert text <= room, (text, room)
+            return [f.type, room, c.measureText(f.placeholder).width]; }""")
+        assert kind == "text" and text <= room, (kind, text, room)
     finally:
         ctx.close()
