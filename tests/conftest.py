@@ -118,6 +118,24 @@ def studio_url():
         yield url
 
 
+@pytest.fixture(scope="module")
+def studio_page(studio_url, chromium_browser):
+    """A desktop tab (1280 x 800) of :func:`studio_url`, its first design shown and the
+    gallery closed (the gallery's thumbnails never asked: they are not what these tests
+    read), one per module."""
+    ctx = chromium_browser.new_context(viewport={"width": 1280, "height": 800})
+    try:
+        ctx.route("**/api/thumb/**", lambda r: r.abort())
+        page = ctx.new_page()
+        page.goto(studio_url)
+        page.wait_for_function("() => window.studio && window.studio.ready && window.studio.view"
+                               " && window.studio.view.ok", timeout=120_000)
+        page.keyboard.press("Escape")
+        yield page
+    finally:
+        ctx.close()
+
+
 # ------------------------------------------------------------------ no process left behind
 # A test that starts workers, servers or pools stops them (in its fixture's `finally`).  At
 # the end of the session every child process of this pytest process must have ended (after a

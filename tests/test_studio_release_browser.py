@@ -11,8 +11,6 @@ fields on the page), counted by views, never timed.
 """
 from __future__ import annotations
 
-import pytest
-
 HANG = 120_000          # ms: a guard against a hung page, not a speed limit
 
 RELEASE = """([name, value]) => {
@@ -47,22 +45,8 @@ def settle(page, after: int) -> dict:
     return page.evaluate(SHOWN)
 
 
-@pytest.fixture(scope="module")
-def page(studio_url, chromium_browser):
-    ctx = chromium_browser.new_context(viewport={"width": 1280, "height": 800})
-    try:
-        ctx.route("**/api/thumb/**", lambda r: r.abort())     # the gallery's pictures: not here
-        page = ctx.new_page()
-        page.goto(studio_url)
-        page.wait_for_function("() => window.studio && window.studio.ready && window.studio.view"
-                               " && window.studio.view.ok", timeout=HANG)
-        page.keyboard.press("Escape")
-        yield page
-    finally:
-        ctx.close()
-
-
-def test_a_slider_released_twice_to_a_value_shows_its_picture_both_times(page):
+def test_a_slider_released_twice_to_a_value_shows_its_picture_both_times(studio_page):
+    page = studio_page
     n = page.evaluate("window.studio.views")
     page.click("#open-gallery")
     page.click('#cards .card[data-id="generator/planetary"]')

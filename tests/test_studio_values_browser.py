@@ -49,13 +49,16 @@ const read = () => {
       if (Math.abs(Number(r.value) - Number(n.value)) > half + 1e-9) off.push([row.dataset.name, r.value, n.value]);
     } else if (c) sliders[row.dataset.name] = c.checked;
   }
-  const v = window.studio.view || {};
+  // a picture the page put up while a drag went on (issue 113): marked with the values it is of
+  const mark = document.getElementById('flat-for');
+  const passing = mark && !mark.hidden ? mark.textContent : '';
+  const v = (passing ? window.studio.passed : window.studio.view) || {};
   const svg = v.svg || '';
   const m = (k) => { const x = new RegExp('\\\\b' + k + '="([-\\\\d.e]+)mm"').exec(svg); return x ? Number(x[1]) : null; };
   return { sliders, off, source: window.studio.state.source, ok: !!v.ok, values: v.values || {},
            params: (v.params || []).map((p) => [p.name, p.value, p.default, p.unit || '']),
            shownSvg: window.studio.state.lastSvg === svg, size: [m('width'), m('height')],
-           flat: document.getElementById('flat').className };
+           flat: document.getElementById('flat').className, passing };
 };
 window.__read = read;
 document.addEventListener('DOMContentLoaded', () => {
@@ -94,8 +97,12 @@ def parse(text: str):
 
 
 def check(rec: dict) -> None:
-    """One picture on the page: drawn with the sliders' values, the program's own defaults."""
+    """One picture on the page: drawn with the sliders' values, the program's own defaults; or,
+    while the sliders move on, one drawn with values they have left, marked with them."""
     assert rec["ok"] and rec["shownSvg"], rec
+    if rec["passing"]:
+        passed(rec)
+        return
     assert "building" not in rec["flat"] and "stale" not in rec["flat"], rec["flat"]
     assert rec["off"] == [], rec["off"]        # a thumb away from its field's value
     sliders, defaults = rec["sliders"], own(rec["source"])
@@ -111,6 +118,22 @@ def check(rec: dict) -> None:
     texts = {k: ("true" if v else "false") if isinstance(v, bool) else f"{v}{units[k]}"
              for k, v in sliders.items() if v != defaults[k]}
     assert rec["size"] == pytest.approx(cli_size(rec["source"], texts), abs=1e-6), texts
+
+
+def passed(rec: dict) -> None:
+    """A picture shown during a drag (issue 113): drawn as `aidl render --set` draws the values
+    the server echoes, and its mark names each of them that differs from the sliders'."""
+    assert "passing" in rec["flat"], rec["flat"]
+    sliders, defaults = rec["sliders"], own(rec["source"])
+    units = {n: u for n, _, _, u in rec["params"]}
+    echo = {k: parse(t) for k, t in rec["values"].items()}
+    texts = {k: ("true" if v else "false") if isinstance(v, bool) else f"{v}{units[k]}"
+             for k, v in echo.items() if v != defaults[k]}
+    assert rec["size"] == pytest.approx(cli_size(rec["source"], texts), abs=1e-6), texts
+    differ = [k for k in sliders if echo.get(k, defaults[k]) != pytest.approx(sliders[k], abs=1e-9)]
+    assert differ, rec
+    for k in differ:
+        assert f"{k} " in rec["passing"], (k, rec["passing"])
 
 
 def settled(page, n_views: int | None = None) -> dict:

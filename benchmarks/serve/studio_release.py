@@ -98,7 +98,7 @@ def run(url: str, runs: int, designs: dict) -> dict:
                   const s = window.studio, k = s.views, t0 = window.__released;
                   const t = (s.timeline || {})[k];
                   return { flat: s.shownAt[k] - t0, built: s.builtAt[k] - t0,
-                           split: t ? { waited: t.sent - t0, compile: t.compile_ms,
+                           split: t ? { waited: t.sent - t0, compile: t.compile_ms, cpu: t.cpu_ms,
                                         transfer: t.answered - t.sent - (t.compile_ms || 0),
                                         drawing: t.drawn === null ? null : t.drawn - t.answered } : null };
                 }"""))

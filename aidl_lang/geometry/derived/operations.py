@@ -53,8 +53,20 @@ def _translate(dx, dy):
     return lambda x, y: (x + dx, y + dy), 0.0, False
 
 
-def _rotate(c: PV, th: float):
-    return _Turn(c, th), th, False
+def _rotate(c: PV, th: float, ctx=None):
+    """The turn by ``th`` about ``c``: ``(map, th, False)``.  With ``ctx`` (the interpreter),
+    one :class:`_Turn` per center and angle for its whole run (it is never changed once made):
+    a planetary preview's patterns turn 2,900 copies by 121 distinct turns (issue 113).  The
+    center is kept with it, so the ids of its coordinates' expressions stay its own."""
+    cache = getattr(ctx, "__dict__", None)
+    if cache is None or type(c.x) is not Lin or type(c.y) is not Lin:
+        return _Turn(c, th), th, False
+    turns = cache.setdefault("_turns", {})
+    key = (id(c.x), id(c.y), th)
+    got = turns.get(key)
+    if got is None or got[0].x is not c.x or got[0].y is not c.y:
+        got = turns[key] = (c, _Turn(c, th))
+    return got[1], th, False
 
 
 class _Turn:
@@ -457,7 +469,7 @@ def apply(ctx, kind: str, args: dict, name: str | None):
             st = args["step"]
             xf, rot, flip = _translate(st.x * float(k), st.y * float(k))
         else:
-            xf, rot, flip = _rotate(args["center"], start + step * k)
+            xf, rot, flip = _rotate(args["center"], start + step * k, ctx)
         out.append(_copy(ctx, target, xf, rot, flip, name, k, "pattern", indexed=hide))
     if hide:
         _as_construction(target)

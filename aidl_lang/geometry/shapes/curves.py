@@ -26,11 +26,9 @@ from __future__ import annotations
 
 import math
 
-from functools import cached_property
-
 from .ellipse import EllipseCurve, cross_circle as _e_circle, cross_ellipse as _e_ellipse, \
     cross_line as _e_line, cross_spline as _e_spline, nearest_approach as _e_nearest
-from ...base.records import Compared, Frozen
+from ...base.records import Compared, Frozen, kept
 
 Point = tuple[float, float]
 
@@ -85,11 +83,11 @@ class Arc(Frozen):
 
     # the ends, computed on first use and kept (an arc is immutable; a gear's thousand arcs
     # are asked for their ends by the booleans, the recovery and every writer)
-    @cached_property
+    @kept
     def start(self) -> Point:
         return self.at(self.start_angle)
 
-    @cached_property
+    @kept
     def end(self) -> Point:
         return self.at(self.start_angle + self.sweep)
 
@@ -154,7 +152,7 @@ class Spline(Frozen):
         object.__setattr__(self, "u0", u0)
         object.__setattr__(self, "u1", u1)
 
-    @cached_property
+    @kept
     def spans(self) -> list:
         return self.curve.spans_between(self.u0, self.u1)
 

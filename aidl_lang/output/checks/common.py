@@ -357,6 +357,17 @@ def _insert_fix(struct: Structure, stmt: str, sink=None):
     return Fix(at, text)
 
 
+def below(w: float, t: float, places: int = 2) -> str:
+    """A measured width ``w`` (mm) under the minimum ``t`` (mm) as a sentence says it: to
+    ``places`` decimals, or more until the text reads less than ``t`` ("0.4996", never "0.50
+    mm wide, thinner than 0.5 mm": the page drops trailing zeros, issue 113)."""
+    for d in range(places, 7):
+        text = f"{w:.{d}f}"
+        if float(text) < t:
+            return text
+    return f"{w:.15g}"
+
+
 def _say_few(sink, code: str, path: str, finds: list) -> None:
     """Warn ``code`` for the first :data:`SHOWN` of ``finds`` (each ``(message, span, kw)``,
     ``kw`` the warning's other fields: hint, labels), in their order; when there are more,

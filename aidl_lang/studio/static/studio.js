@@ -10,13 +10,13 @@ const EMBED = location.pathname === "/embed";
 // its last answer ([] until the first: a new program's values are then sent as they are)
 const state = {
   sid: null, source: "", values: {}, params: [], paramKey: "", entry: null,
-  seq: 0, shown: 0, inflight: false, again: false, timer: null, glbSeq: 0, reframe: true,
+  seq: 0, shown: 0, inflight: false, kerf: null, again: false, timer: null, glbSeq: 0, reframe: true,
   config: null, svgUrl: null, view: null,
   // the sweep of the program (/api/sweep): its answer, the program it is of, the one asked
   sweep: { answer: null, source: null, key: null, asked: null, ctrl: null, timer: null },
 };
 // read by the browser tests: views shown, 3D loads asked, the last view and its diagnostics
-window.studio = { ready: false, idle: false, views: 0, sweeps: 0, sweep: null, glbs: 0, glbView: 0, view: null, state, errors: [],
+window.studio = { ready: false, idle: false, views: 0, passing: 0, passingAt: [], sweeps: 0, sweep: null, glbs: 0, glbView: 0, view: null, state, errors: [],
                   shownAt: {}, builtAt: {},      // view number -> performance.now() of its 2D, its 3D
                   // the page's benchmark (issue 104): view number -> where its time went, ms from
                   // the change (a slider's move): waited (the page's debounce and pacing), sent,
@@ -64,7 +64,7 @@ function settings() {
   const num = (id) => { const v = $(id).value; return v === "" ? null : Number(v); };
   // the thickness is the design's own `thickness` param (the Material field sets it): the
   // joints, the 3D view and the 3D files have one thickness (issue 94)
-  return { thickness: null, kerf: num("kerf"), machine: $("machine").value || "laser",
+  return { thickness: null, kerf: state.kerf, machine: $("machine").value || "laser",
            layout: $("layout").checked, sheet: [num("sheet-w") || 600, num("sheet-h") || 400] };
 }
 
@@ -184,8 +184,11 @@ function building2d(on) {
 }
 
 // One preview in flight; a change made meanwhile is compiled when it answers (the latest values
-// only: a drag costs one compile after its last move). An answer is shown only when it is the
-// current program's with the values the sliders hold now; else it is dropped.
+// only: the values of the moment the request leaves). An answer of the current program with
+// the values the sliders hold now is the sliders' picture (shown, then its 3D and checks); one
+// whose values the sliders have left meanwhile (a drag) is shown too, as soon as it comes,
+// marked with the values it is of (issue 113: a drag with a move every 250 ms showed no picture
+// until the mouse was released), and the sliders' current values are asked at once.
 async function compile() {
   if (state.inflight) { state.again = true; return; }
   state.inflight = true;
@@ -212,9 +215,13 @@ async function compile() {
       show(view, got - t0);
       const t = view.timing || {};
       window.studio.timeline[window.studio.views] = { changed: changedAt, waited: t0 - changedAt, sent: t0,
-        answered: got, compile_ms: t.worker_ms ?? t.total_ms ?? null, drawn: null, built: null };
+        answered: got, compile_ms: t.worker_ms ?? t.total_ms ?? null, cpu_ms: t.cpu_ms ?? null,
+        drawn: null, built: null };
     }
-    else state.again = true;        // the sliders moved on meanwhile: not their picture
+    else {                          // the sliders moved on meanwhile: not their picture yet
+      state.again = true;
+      passing(view);
+    }
   } catch (e) {
     window.studio.errors.push(String(e.message || e));
     if (e.retry) { state.again = false; setTimeout(compile, e.retry * 1000); }
@@ -254,7 +261,48 @@ function answered(view, raw, held = raw) {
     }
   }
   if (view.params) state.params = view.params;
+  view.made = made;                   // (the values it is of, said by passing())
   return sameValues(chosenRaw(made), chosenRaw());
+}
+
+// A picture of values the sliders have left (a drag goes on): on the flat view at once, marked
+// with the values it is of where they differ from the sliders' ("width 134 mm"); the form, the
+// 3D view, the messages and the checks wait for the sliders' own picture, which clears the mark.
+// An error answer is not shown (the last picture stays): the next request is on its way.
+function passing(view) {
+  if (!view.ok || !view.svg || !view.made) return;
+  const made = view.made, differ = [];
+  for (const p of state.params) {
+    const a = made[p.name] !== undefined ? made[p.name] : p.default;
+    const b = state.values[p.name] !== undefined ? state.values[p.name] : p.default;
+    if (same(a, b)) continue;
+    differ.push(typeof a === "number" ? `${p.name} ${onStep(p, a)}${p.unit ? " " + p.unit : ""}`
+      : typeof a === "boolean" ? `${p.name} ${a ? "on" : "off"}` : `${p.name} “${a}”`);
+  }
+  if (view.svg !== state.lastSvg) {
+    state.lastSvg = view.svg;
+    if (state.svgUrl) URL.revokeObjectURL(state.svgUrl);
+    state.svgUrl = URL.createObjectURL(new Blob([view.svg], { type: "image/svg+xml" }));
+    $("flat-img").src = state.svgUrl;
+  }
+  $("flat").classList.add("passing");
+  markFor(differ.length ? `showing ${differ.join(", ")}` : "");
+  window.studio.passing += 1;
+  window.studio.passed = view;
+  window.studio.passingAt.push([performance.now(), differ.join(", ")]);
+}
+// the flat view's mark: the values its picture is of, while they are not the sliders' ("" clears)
+function markFor(text) {
+  let mark = $("flat-for");
+  if (!mark) {
+    mark = document.createElement("span");
+    Object.assign(mark, { id: "flat-for", className: "pane-mark", hidden: true });
+    mark.setAttribute("role", "status");
+    $("flat").appendChild(mark);
+  }
+  mark.textContent = text;
+  mark.hidden = !text;
+  if (!text) $("flat").classList.remove("passing");
 }
 
 // a design's name as the header says it: divider_tray -> Divider tray
@@ -277,6 +325,8 @@ function show(view, ms) {
   else status(view.ok ? `solved in ${Math.round(ms)} ms` + (diags.length ? ` · ${diags.length} message${diags.length > 1 ? "s" : ""}` : "")
                       : `${errors} error${errors === 1 ? "" : "s"}: showing the last good picture`);
   $("flat").classList.toggle("stale", !view.ok);
+  // the sliders' own picture: the mark goes (an error keeps the picture on the page, and its mark)
+  if (view.ok && view.svg) markFor("");
   // only a picture of this program with these values: an error keeps the page's last picture
   if (view.ok && view.svg && view.svg !== state.lastSvg) {
     state.lastSvg = view.svg;
@@ -302,6 +352,7 @@ function show(view, ms) {
       else askChecks(view, me);
     }
     askSweep();
+    if (state.kerf && (state.kerfFails || state.kerfRecheck)) tryKerf();
   }
   else {          // the last good model, dimmed like the last good picture, and why
     state.glbSeq += 1;
@@ -553,7 +604,10 @@ function control(p) {
   row.appendChild(name);
   const line = document.createElement("div"); line.className = "line";
   row.appendChild(line);
-  const change = (v) => { state.values[p.name] = v; row.classList.toggle("changed", !same(v, p.default)); downloadChanged(); schedule(30); };
+  // a change with nothing on its way is sent at once (a release waited 30 ms for moves that did
+  // not come); one made while a picture is on its way waits for it (the latest values only)
+  const change = (v) => { state.values[p.name] = v; row.classList.toggle("changed", !same(v, p.default)); downloadChanged();
+                          schedule(state.inflight || state.timer ? 30 : 0); };
   if (p.kind === "bool") {
     const cb = document.createElement("input"); cb.type = "checkbox"; cb.name = p.name; cb.id = id;
     cb.onchange = () => change(cb.checked);
@@ -719,6 +773,55 @@ $("thickness").addEventListener("change", () => {
 $("thickness").addEventListener("keydown", (e) => { if (e.key === "Enter") { e.preventDefault(); $("thickness").dispatchEvent(new Event("change")); } });
 $("params").addEventListener("submit", (e) => e.preventDefault());
 
+// The kerf (issue 113): the width the cut takes, mm, 0 to 10 (the machine profiles' range);
+// empty: the program's own `kerf`. Checked as typed, with a note beside it: a text that is no
+// width, a negative kerf or one past 10 mm is not taken (the field shows the kerf in use); a kerf
+// taken is tried on the design once (a cutting file made and thrown away: each outline offset
+// by half of it), and when the design's features are too small for it the note says which, at
+// once, not when a download fails. A failing kerf is tried again after the next settled picture
+// (the values may have made room), a new design tries it afresh.
+function kerfNote(text) { $("kerf-note").textContent = text; }
+$("kerf").addEventListener("change", () => {
+  const text = $("kerf").value.trim(), was = state.kerf;
+  const stays = was === null ? "the program's kerf is used" : `the kerf stays ${fmt(was)} mm`;
+  const back = () => { $("kerf").value = was === null ? "" : fmt(was); };
+  if (text === "") {
+    state.kerf = null; state.kerfFails = false; kerfNote(""); downloadChanged();
+    return;
+  }
+  const [digits, k, unit] = withUnit({ kind: "length" }, text);
+  const x = k === undefined ? NaN : parseNumber(digits) * k;
+  if (unit && k === undefined) { kerfNote(`“${text}” is not a width in mm: ${stays}`); back(); return; }
+  if (!Number.isFinite(x)) { kerfNote(`“${text}” is not a number: ${stays}`); back(); return; }
+  if (x < 0) { kerfNote(`a kerf is the width the cut takes: 0 mm or more, not ${fmt(x)} mm; ${stays}`); back(); return; }
+  if (x > 10) { kerfNote(`a kerf is at most 10 mm (a laser's is about 0.1–0.5 mm), not ${fmt(x)} mm; ${stays}`); back(); return; }
+  state.kerf = x;
+  $("kerf").value = fmt(x);
+  kerfNote("");
+  downloadChanged();
+  tryKerf();
+});
+$("kerf").addEventListener("keydown", (e) => { if (e.key === "Enter") { e.preventDefault(); $("kerf").dispatchEvent(new Event("change")); } });
+async function tryKerf() {
+  const kerf = state.kerf, me = state.kerfSeq = (state.kerfSeq || 0) + 1;
+  state.kerfRecheck = false;
+  if (!kerf) { state.kerfFails = false; return; }
+  kerfNote(`trying a kerf of ${fmt(kerf)} mm on this design…`);
+  try {
+    await pace(4);                            // (a download's cost in the server's rate)
+    const r = await post(`/api/download/svg`, { sid: state.sid, source: state.source, values: chosen(),
+      settings: { ...settings(), layout: false, style: "laser", name: "kerf" } }, true);
+    if (me !== state.kerfSeq) return;
+    if (r.ok) { state.kerfFails = false; kerfNote(""); return; }
+    const doc = await r.json().catch(() => ({}));
+    if (me !== state.kerfSeq) return;
+    state.kerfFails = r.status === 422 && !!doc.error && /kerf|offset/i.test(doc.error);
+    kerfNote(state.kerfFails ? `the cutting files cannot be made with this kerf: ${refusal(doc, r.status)}` : "");
+  } catch (e) {
+    if (me === state.kerfSeq) kerfNote("");   // busy or unreachable: the download will say
+  }
+}
+
 // ------------------------------------------------------------------ the ranges the sweep found clean
 // After a picture of a program not swept yet, the page asks /api/sweep for it in the background
 // (a quiet moment later; an edit stops the one on its way). Each slider then shows the part of
@@ -869,10 +972,7 @@ function markRanges() {
       mark(z, b);
     }
     const u = row.querySelector(".unit");
-    // a count broken at scattered values: its clean values named (`clean at 2, 4, 6, 8, 10`)
-    const counts = p.step >= 1 && !p.unit && bands.length > 1 && span / p.step <= 12
-      ? Array.from({ length: Math.round(span / p.step) + 1 }, (_, k) => p.min + k * p.step)
-        .filter((x) => !bandAt(q, x)) : null;
+    const counts = cleanCounts(p, q);
     const clean = !bands.length && !((q && q.unjudged) || []).length ? "" : counts ? `, clean at ${counts.map((x) => onStep(p, x)).join(", ")}`
       : !q.clean.length ? ", no clean value found" : `, ${cleanSaid(p, q)}`;
     u.textContent = `${p.unit || ""} (${onStep(p, p.min)}–${onStep(p, p.max)}${clean})`;
@@ -890,7 +990,16 @@ function cleanSaid(p, q, long = false) {
   return cut ? `clean ${said}${unit} of the values checked, the rest not checked in the time allowed`
     : long ? `clean from ${onStep(p, a)} to ${onStep(p, b)}${unit}` : `clean ${onStep(p, a)}–${onStep(p, b)}`;
 }
+// a count broken at scattered values: its clean values (`clean at 2, 4, 6, 8, 10`), else null
+function cleanCounts(p, q) {
+  const bands = (q && q.bands) || [], span = p.max - p.min;
+  return p.step >= 1 && !p.unit && bands.length > 1 && span / p.step <= 12
+    ? Array.from({ length: Math.round(span / p.step) + 1 }, (_, k) => p.min + k * p.step)
+      .filter((x) => !bandAt(q, x)) : null;
+}
 // the slider's accessible text and the line under it: where its value is, against the clean range
+// (the same clean values as its label says: a count's scattered ones named, never "the range
+// found clean (4-4)" beside "clean at 2, 4, 6, 8, 10")
 function pastNote(row, name, v) {
   const note = row.querySelector(".sweep-note"), r = row.querySelector("input[type=range]");
   if (!note || !r) return;
@@ -902,7 +1011,11 @@ function pastNote(row, name, v) {
   const open = !past && q ? (q.unjudged || []).find((g) => typeof v === "number" && v > g.from + 1e-9 && v < g.to - 1e-9) : null;
   note.classList.toggle("past", !!past);
   note.classList.toggle("open", !!open);
-  if (past) {
+  const counts = q ? cleanCounts(p, q) : null;
+  if (past && counts && counts.length) {
+    note.textContent = `${onStep(p, v)} is not one of the values the sweep found clean (${counts.map((x) => onStep(p, x)).join(", ")}): ${past.text}`;
+    r.setAttribute("aria-valuetext", `${fmt(v)}, where the design breaks: ${past.text}`);
+  } else if (past) {
     const beside = (q.below && past.text === q.below.text) || (q.above && past.text === q.above.text);
     note.textContent = beside
       ? `${onStep(p, v)}${unit} is outside the range the sweep found clean (${onStep(p, q.clean[0])}–${onStep(p, q.clean[1])}${unit}): ${past.text}`
@@ -916,7 +1029,9 @@ function pastNote(row, name, v) {
     note.textContent = `${fmt(v)}${unit} was not checked in the time allowed (${open.text})`;
     r.setAttribute("aria-valuetext", `${fmt(v)}${unit}, not checked in the time allowed`);
   } else {
-    note.textContent = ends.length && q.clean.length
+    note.textContent = counts && counts.length
+      ? `clean at ${counts.map((x) => onStep(p, x)).join(", ")}; ${ends.map((x) => x.text).join("; ")}`
+      : ends.length && q.clean.length
       ? `${cleanSaid(p, q, true)}; ${ends.map((x) => x.text).join("; ")}` : "";
     if (typeof v === "number") r.setAttribute("aria-valuetext", `${fmt(v)}${unit}`);
   }
@@ -946,12 +1061,21 @@ async function fetchFile(ext, extra = {}) {
                                                              settings: { ...settings(), name: downloadName(), ...extra } }, true));
   if (!r.ok) {
     const doc = await r.json().catch(() => ({}));
-    const msg = (doc.error || `HTTP ${r.status}`) + (doc.diagnostics && doc.diagnostics.length ? ": " + doc.diagnostics[0].message : "");
-    throw new Error(msg);
+    throw new Error(refusal(doc, r.status));
   }
   const name = /filename="([^"]+)"/.exec(r.headers.get("Content-Disposition") || "");
   return { blob: await r.blob(), name: name ? name[1] : `part.${ext}` };
 }
+
+// why a download was refused, said once: the server's sentence, and its first message only
+// when the sentence does not say it already ("nothing to make with these values: a hole removes
+// all of `plate`" was followed by the same reason again)
+function refusal(doc, status) {
+  const error = doc.error || `HTTP ${status}`, first = doc.diagnostics && doc.diagnostics[0];
+  const bare = (t) => String(t).replace(/[`'"“”‘’]/g, "").replace(/\s+/g, " ").trim().toLowerCase();
+  return first && first.message && !bare(error).includes(bare(first.message)) ? `${error}: ${first.message}` : error;
+}
+window.studio.refusal = refusal;
 
 async function load3d() {
   // the 3D view's GLB (/api/glb: made from the drawing the picture came from, fewer triangles
@@ -1091,16 +1215,28 @@ async function openEntry(id) {
 
 function setProgram(source, values, given = null) {
   state.source = source;
+  freshProgram(values, given);
+  if (editor) editor.setText(source);
+  schedule(0);
+}
+
+// another program on the page (a card, a paste, a shared link, a drawing, a described part):
+// nothing of the one before stays: its values, its picture, its 3D model and camera (framed
+// again on the new one: a paste kept the old camera, its disc drawn 2.5 x smaller than when
+// opened fresh), the line under the downloads, the kerf's note
+function freshProgram(values, given = null) {
   newProgram(values, given);
   state.lastSvg = null;
   state.reframe = true;
   state.linkValues = null;                  // (a share link sets its own after this)
   state.glbSeq += 1;                        // a 3D still on its way is the old design's
   state.fitNext = true;                     // the flat view shows all of the new design
+  markFor("");
   $("download-status").textContent = "";    // the last design's download is not this one's
+  state.kerfFails = false;
+  kerfNote("");
+  if (state.kerf) state.kerfRecheck = true;  // the kerf checked again on the new design
   building(true, true);
-  if (editor) editor.setText(source);
-  schedule(0);
 }
 
 // a session's values belong to one program: another program (a card, a paste, a shared link,
@@ -1310,7 +1446,11 @@ async function start() {
       onChange: (text) => {
         // another program pasted over this one: its own title (the header and the
         // downloads' names follow it, not the gallery design it replaced)
-        if (replaced(state.source, text)) { newProgram(); state.entry = null; state.ownTitle = true; }
+        if (replaced(state.source, text)) {
+          state.entry = null; state.ownTitle = true;
+          $("title").textContent = "";        // its own title once it compiles (view.title)
+          freshProgram({});
+        }
         else sweepChanged(false);
         state.source = text; schedule(250);
       } });
@@ -1330,7 +1470,7 @@ async function start() {
       const doc = await unpack(m[1]);
       $("title").textContent = doc.title || "Shared design";
       const s = doc.settings || {};
-      if (s.kerf != null) $("kerf").value = s.kerf;
+      if (typeof s.kerf === "number" && s.kerf >= 0 && s.kerf <= 10) { state.kerf = s.kerf; $("kerf").value = fmt(s.kerf); }
       if (s.sheet) { $("sheet-w").value = s.sheet[0]; $("sheet-h").value = s.sheet[1]; }
       if (s.machine) $("machine").value = s.machine;
       if (s.layout != null) $("layout").checked = !!s.layout;

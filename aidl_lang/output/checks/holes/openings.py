@@ -39,7 +39,8 @@ from ...part.measure.nearby import boundaries, boundary, box_pairs, close_pairs
 from .clearing import move_fix
 from .contact import circle_of, contact_points
 from ..common import (MIN_AREA, MIN_WALL, _area, _contributors, _depth, _edges, _insert_fix,
-                      _inside, _loop_boxes, _part_of, _pct, _signed, _significant, _union)
+                      _inside, _loop_boxes, _part_of, _pct, _signed, _significant, _union,
+                      below)
 
 def _intended(hole: Structure, owner: Structure, obj) -> bool:
     """``AllowOverlap(hole, x)`` was written for this hole (or a structure between it and
@@ -565,7 +566,7 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
             labels = [Label(a.spans[i], "the other side of the wall", primary=False)] \
                 if a.spans[i] else []
         sink.warning("W0507", f"a wall of `{s.path}` between {pair} is "
-                     f"{w:.2f} mm wide, thinner than {t:g} mm (over {length:.1f} mm, near "
+                     f"{below(w, t)} mm wide, thinner than {t:g} mm (over {length:.1f} mm, near "
                      f"({x:.1f}, {y:.1f}))", a.spans[hole], labels=labels,
                      hint=f"move {a.names[hole]} {_enough(t - w)} mm further from {away} (or shrink "
                           f"it) so that at least {t:g} mm of material is left (a laser or "

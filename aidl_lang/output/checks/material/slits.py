@@ -14,7 +14,7 @@ from ....geometry.core.model import Structure
 from ...part.build.booleans import Drawing
 from ...part.measure.nearby import _median, box_pairs
 from ...part.measure.nearby import components as _components
-from ..common import _cut_openings, _solids_within
+from ..common import _cut_openings, _solids_within, below
 from .nicks import slit_fix
 from .walls import _facing, _ring
 FACING = 0.866     # cos 30 deg: two stretches of the outline face each other across a slit
@@ -175,7 +175,7 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
         cx, cy = (p + q) / 2
         fix = slit_fix(d, s, (p + q) / 2, w, t, names, corners) if len(said) < SHOWN else ""
         said.append((f"a slit of empty space between {between} in `{s.path}` is "
-                     f"{w:.2f} mm wide, narrower than {t:g} mm (over {length:.1f} mm, near "
+                     f"{below(w, t)} mm wide, narrower than {t:g} mm (over {length:.1f} mm, near "
                      f"({cx:.1f}, {cy:.1f})): narrower than a laser or router cuts, so it comes "
                      "out as a ragged notch or not at all",
                      later.span if later is not None else s.span,

@@ -33,7 +33,7 @@ from ....geometry.shapes.tessellate import CHORD_TOL
 from ...part.build.booleans import SLIT_HALF, Drawing, _quad
 from ...part.measure.nearby import close_pairs, meeting
 from ...part.edges.shared import TWO_PI, _span
-from ..common import _inside, _signed
+from ..common import _inside, _signed, below
 from .walls import _thin
 
 OFF = 1e-3      # of the band's own area: a through-cut with less of it inside cuts nothing
@@ -369,7 +369,7 @@ def _end_bridges(d: Drawing, s, whole, cuts: list, t: float, sink: DiagnosticSin
         x, y = V[e]
         sink.warning(
             "W0507", f"a bridge of `{s.path}` between the end of through-cut `{g.label}` at "
-            f"({x:.2f}, {y:.2f}) and {other} is {w:.3g} mm wide, thinner than {t:g} mm: the "
+            f"({x:.2f}, {y:.2f}) and {other} is {below(w, t, 3)} mm wide, thinner than {t:g} mm: the "
             "laser burns it through or leaves a strip too weak to hold", g.span or s.span,
             hint=f"end `{g.label}` at least {t:g} mm from {other}, or run it on to meet it if "
                  f"the cut is meant to go through; if the design means this bridge, say so: "

@@ -22,7 +22,7 @@ from ...part.build.booleans import Drawing
 from ...part.measure.nearby import _median, box_pairs
 from ...part.measure.nearby import components as _components
 from ...part.build.scanwork import turned, turned_back
-from ..common import _area, _loop_boxes, _solids_within, _union
+from ..common import _area, _loop_boxes, _solids_within, _union, below
 
 def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: DiagnosticSink,
                  quick: bool = True, covered: set = frozenset(), loops=None,
@@ -107,7 +107,7 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
                 meant = (f"; if the request asks for a wall this thin, state it: `min_wall "
                          f"{stated:g} mm` before `{s.name}` (the fix)")
         sink.add(Diagnostic(
-            "W0507", f"a wall of `{s.path}`{made}{between} is {width:.2f} mm wide, thinner "
+            "W0507", f"a wall of `{s.path}`{made}{between} is {below(width, t)} mm wide, thinner "
             f"than {t:g} mm (over {length:.1f} mm, near ({px:.1f}, {py:.1f}))", span, "warning",
             hint=f"{fix} (a laser or router cannot hold a thinner wall){meant}; the minimum is "
                  "set by `min_wall` or --min-wall", fix=edit))
