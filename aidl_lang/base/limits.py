@@ -336,7 +336,7 @@ class Deadline:
     :meth:`check` pays a step's work and raises :class:`OutOfBudget` once any of them has
     passed."""
 
-    __slots__ = ("at", "budget", "wall_at", "work", "started", "_read")
+    __slots__ = ("_at", "budget", "wall_at", "work", "started", "_read")
 
     def __init__(self, at: float, budget: Budget = DEFAULT_BUDGET, wall_at: float | None = None,
                  work: Work | None = None):
@@ -346,6 +346,16 @@ class Deadline:
                         else time.monotonic() + WALL_GUARD * budget.seconds)
         self.work = work if work is not None else Work(budget.work)
         self._read = -math.inf          # time.monotonic() when the CPU clock was last read
+
+    @property
+    def at(self) -> float:
+        """The CPU backstop: the :func:`now` value past which the compile ends."""
+        return self._at
+
+    @at.setter
+    def at(self, value: float) -> None:
+        self._at = value
+        self._read = -math.inf          # a moved backstop: the next step reads the clock
 
     @classmethod
     def starting(cls, budget: Budget = DEFAULT_BUDGET, work: Work | None = None) -> "Deadline":
