@@ -65,7 +65,7 @@ solid plate {
     body = Rectangle(center=(0, 0), width=400, height=400)
     for i in range(30) {
         for j in range(30) {
-            hole h { c = Circle(center=(i * 12 - 180, j * 12 - 180), radius=4) }
+            hole h { c = Circle(center=(i * 12 + (j % 2) * 6 - 180, j * 7 - 100), radius=4) }
         }
     }
 }
@@ -75,7 +75,11 @@ solid plate {
 def test_a_program_past_its_work_gets_the_same_e0304_every_run_naming_the_units(tmp_path):
     """900 holes at `--budget 0.03` (60,000 units): the booleans need more; the E0304 names the
     stage, the structure, the units needed, the budget and the `--budget` that would do, the
-    same text in two runs and with the CPU readings tripled."""
+    same text in two runs and with the CPU readings tripled.  The holes are staggered: their
+    boxes meet, so they unite in groups of 16, then the groups (issue 110: a hole's own face
+    is no union, so the square grid of 900 holes apart of before fits in 48,401 units, and
+    holes apart never run out of work in the booleans: their one union is priced by its
+    vertices, which the vertex budget holds under 70 % of the work)."""
     f = tmp_path / "many.aidl"
     f.write_text(MANY)
     runs = [_aidl(["check", "--json", "--budget", "0.03", str(f)], tmp_path, scale=k)
@@ -92,16 +96,17 @@ def test_a_program_past_its_work_gets_the_same_e0304_every_run_naming_the_units(
     need = int(message.split("more than ")[1].split(" work")[0].replace(",", ""))
     assert need > 60_000
     assert f"`{budget_factor_text(need, DEFAULT_BUDGET)}`" in hint
-    # the factor it names covers the stage that ran out (what the stages after it need is
-    # not known yet: "or more"): with it the booleans end, and following the hints the
-    # program compiles
+    # the factor it names covers what was needed when it ran out (what the next groups and
+    # the stages after it need is not known yet: "or more"): following the hints, each
+    # budget past the need said before, the program compiles
     k = budget_factor_text(need, DEFAULT_BUDGET).split()[1]
-    for _ in range(4):
+    for _ in range(8):
+        assert float(k) * DEFAULT_BUDGET.work > need
         doc = json.loads(_aidl(["check", "--json", "--budget", k, str(f)], tmp_path).stdout)
         if doc["ok"]:
             break
         [d] = [d for d in doc["diagnostics"] if d["code"] == "E0304"]
-        assert "in the booleans" not in d["message"], d
+        need = int(d["message"].split("more than ")[1].split(" work")[0].replace(",", ""))
         k = d["hint"].split("`--budget ")[1].split("`")[0]
     assert doc["ok"], doc
     assert docs[0]["work"] == docs[1]["work"] == docs[2]["work"]
@@ -149,14 +154,15 @@ solid panel {{
 
 
 def test_a_panels_sweep_calls_no_param_clean_that_it_did_not_judge(tmp_path):
-    """The issue's 8,000-hole panel in small (2,000 holes at `--budget 0.25`: the same ratio
-    of a point's work to the sweep's): its first points cost more than the sweep's work, so
+    """The issue's 8,000-hole panel in small (2,000 holes at `--budget 0.15`: the same ratio
+    of a point's work to the sweep's; 0.25 before issue 110 made a hole's own face no union,
+    79,757 units a point now): its first points cost more than the sweep's work, so
     no param is judged off its written value; none is called clean, none bisected, each said
     not judged; the same lines with the CPU readings tripled."""
     import aidl_lang
     f = tmp_path / "panel.aidl"
     f.write_text(_panel(50, 40))
-    rep = aidl_lang.compile(path=str(f), budget=0.25).sweep(budget=0.25)
+    rep = aidl_lang.compile(path=str(f), budget=0.15).sweep(budget=0.15)
     sw = rep.to_json()
     assert sw["swept"] == ["pitch", "cols", "rows"]
     unjudged = [n for n in sw["swept"] if not sw["judged"].get(n)]
@@ -173,8 +179,8 @@ def test_a_panels_sweep_calls_no_param_clean_that_it_did_not_judge(tmp_path):
     if not sw["bisections"]:
         assert "bisected" not in text, text
     # the sweep's work is what stopped it: at most its budget and one point's compile past it
-    assert sw["work"] <= 0.25 * (600_000 + 2_000_000), sw["work"]
-    slow = _aidl(["check", "--sweep", "--json", "--budget", "0.25", str(f)], tmp_path,
+    assert sw["work"] <= 0.15 * (600_000 + 2_000_000), sw["work"]
+    slow = _aidl(["check", "--sweep", "--json", "--budget", "0.15", str(f)], tmp_path,
                  scale="3")
     assert json.loads(slow.stdout)["sweep"] == json.loads(json.dumps(sw))
 

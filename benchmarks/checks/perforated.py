@@ -33,6 +33,14 @@ circles built as one ``CrossSection``, then one difference, its polygons read ou
 ezdxf write of the outline and the circles.  ``ratio`` is ours / floor; the goal of issue 74
 is <= 2 for the 20,000-hole panel, and the 50,000-hole panel within the default budget.
 
+OpenSCAD (issue 110): for the ``loop`` panel, ``openscad -o out.dxf panel.scad`` of the same
+panel (``difference()`` of the ``square`` and a ``circle(r=2, $fn=32)`` per hole, in the same
+nested loops; ``--openscad PATH``, default ``/usr/bin/openscad`` or the one on PATH; the row
+says it is skipped when there is none), timed the same way, its ratio to the floor in the
+``ratio`` column; a last line per panel gives ours / floor and ours / OpenSCAD for the render.
+Issue 110's case, the 1,000 x 1,900 mm panel of 19,000 holes as a loop, in one go:
+``--only panel --sizes 19000 --formats loop`` (goal: the render within 2 x the floor).
+
 Other groups (``--only``; all by default):
 
 * ``panel``: the three panels above at each size (``--sizes``; ``--quick``: 2,000 only);
@@ -113,6 +121,16 @@ def write_svg(path, W: float, H: float, circles) -> None:
     rows += [f'<circle cx="{x + W / 2:g}" cy="{H / 2 - y:g}" r="{r:g}" fill="none" '
              'stroke="black"/>' for x, y, r in circles]
     pathlib.Path(path).write_text("\n".join(rows + ["</svg>\n"]))
+
+
+def panel_scad(nx: int, ny: int, pitch: float = 10.0, r: float = 2.0, fn: int = 32) -> str:
+    """The panel of :func:`panel_aidl` as an OpenSCAD program (2D, mm; circles of ``fn``
+    sides)."""
+    W, H = nx * pitch, ny * pitch
+    return (f"difference() {{\n  square([{W}, {H}], center=true);\n"
+            f"  for (i = [0:{nx - 1}]) for (j = [0:{ny - 1}])\n"
+            f"    translate([{-W / 2 + pitch / 2} + i * {pitch}, {-H / 2 + pitch / 2} + j * {pitch}])"
+            f" circle(r={r}, $fn={fn});\n}}\n")
 
 
 def reader(name: str) -> str:
@@ -273,7 +291,12 @@ def main() -> None:
                     help="a command that ends in E0304 runs again with --budget K (default "
                     "20; 0: not), for its CPU time on a loaded machine")
     ap.add_argument("--timeout", type=float, default=600.0)
+    ap.add_argument("--openscad", default=None, help="the openscad program timed beside the "
+                    "loop panel (default /usr/bin/openscad, else the one on PATH; '' : none)")
     a = ap.parse_args()
+    import shutil
+    scad = a.openscad if a.openscad is not None else (
+        "/usr/bin/openscad" if os.path.exists("/usr/bin/openscad") else shutil.which("openscad"))
     groups = set(a.only.split(","))
     if a.quick:
         groups &= {"panel"}
@@ -287,7 +310,9 @@ def main() -> None:
     print(f"# CPU seconds of each fresh process (user + system), peak RSS; files in {work}")
     header()
 
-    def commands(case: str, fname: str, fl: float | None, render=True) -> None:
+    def commands(case: str, fname: str, fl: float | None, render=True) -> dict:
+        """Each tree's check and render rows; ``{tree label: render CPU s}`` (ok only)."""
+        took = {}
         for t in trees:
             todo = [("check", t.aidl("check", fname, *extra))]
             if render:
@@ -300,6 +325,23 @@ def main() -> None:
                     cpu, mb, st, _ = run(cmd + ["--budget", f"{a.rerun:g}"], t.env, work,
                                          a.timeout)
                     row(f"{case} {what} --budget {a.rerun:g}", t.label, cpu, fl, mb, st)
+                if what == "render" and st == "ok":
+                    took[t.label] = cpu
+        return took
+
+    def openscad(case: str, nx: int, ny: int, fl: float | None) -> float | None:
+        """The OpenSCAD row of the loop panel: its render's CPU s, or None."""
+        if not scad:
+            print(f"{case} openscad: skipped, no openscad (install it, or give --openscad "
+                  "PATH)", flush=True)
+            return None
+        name = f"panel{nx * ny}.scad"
+        pathlib.Path(work, name).write_text(panel_scad(nx, ny))
+        cpu, mb, st, text = run([scad, "-o", f"scad{nx * ny}.dxf", name],
+                                dict(os.environ), work, a.timeout)
+        row(f"{case} openscad 32-gon render", "scad", cpu, fl, mb,
+            st if st != "ok" else "ok")
+        return cpu if st == "ok" else None
 
     if "panel" in groups:
         for n in sizes:
@@ -325,7 +367,14 @@ def main() -> None:
                 else:
                     name = f"panel{n}-loop.aidl"
                     pathlib.Path(work, name).write_text(panel_aidl(nx, ny))
-                commands(f"{nx * ny} holes {fmt}", name, fl)
+                took = commands(f"{nx * ny} holes {fmt}", name, fl)
+                if fmt == "loop":
+                    sc = openscad(f"{nx * ny} holes", nx, ny, fl)
+                    for label, cpu in took.items():
+                        said = [f"{cpu / fl:.2f} x the floor" if fl else "no floor",
+                                f"{cpu / sc:.2f} x OpenSCAD" if sc else "no OpenSCAD"]
+                        print(f"# {nx * ny} holes loop render, {label}: {cpu:.2f} s CPU, "
+                              + ", ".join(said), flush=True)
     if "collinear" in groups:
         for r, label in ((0.4, "apart r 0.4"), (0.6, "overlapping r 0.6")):
             n = 5000

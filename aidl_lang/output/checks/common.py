@@ -30,13 +30,16 @@ def _union(shapes) -> mf.CrossSection:
     shapes, or shapes whose boxes are all apart, in one ``batch_boolean``; more in groups of
     that many, then the groups' results, and so on (a balanced tree).  One batch costs about
     vertices x edges across a scan line: W0507's neck search united 1,000 concentric circles
-    in 8.9 s CPU, in groups 0.05 s (the inner ones vanish in the first level)."""
+    in 8.9 s CPU, in groups 0.05 s (the inner ones vanish in the first level).  Shapes apart
+    but for the first (a part and the regions its holes cut: the part with its holes filled)
+    unite in one pass too: nowhere more than two deep, where in groups the first, the
+    largest, was passed again at every level (19,000 holes: 1.3 s, one pass 0.3 s)."""
     from ..part.build.booleans import UNION_GROUP
     from ..part.measure.nearby import faces_apart
     shapes = [s for s in shapes if s is not None and not s.is_empty()]
     if not shapes:
         return mf.CrossSection()
-    if len(shapes) > UNION_GROUP and not faces_apart(shapes):
+    if len(shapes) > UNION_GROUP and not faces_apart(shapes[1:]):
         while len(shapes) > UNION_GROUP:
             shapes = [mf.CrossSection.batch_boolean(shapes[i:i + UNION_GROUP], mf.OpType.Add)
                       for i in range(0, len(shapes), UNION_GROUP)]

@@ -365,12 +365,8 @@ def _thin(shape, t: float, loops=None, tile: int = TILE_VERTS, tick=lambda ahead
     loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
     boxes = _loop_boxes(loops)
     alone = _isolated_loops(loops, boxes, t)
-    cache: dict = {}
-    for k in np.flatnonzero(alone):
-        tick()
-        part = _thin_of_loop(loops[k], t, cache)
-        if part is not None:
-            out.append(part)
+    for part in _thin_of_alone(loops, np.flatnonzero(alone), t, tick, least):
+        out.append(part)
     rest = [loops[k] for k in np.flatnonzero(~alone)]
     x0, y0, x1, y1 = shape.bounds()
     split(rest, boxes[~alone], x0, y0, max(x1, x0 + 1e-9), max(y1, y0 + 1e-9))
@@ -410,6 +406,46 @@ def _isolated_loops(loops: list, boxes: np.ndarray, t: float) -> np.ndarray:
     alone = ~big
     alone[near.ravel()] = False
     return alone
+
+
+def _thin_of_alone(loops: list, ks, t: float, tick=lambda ahead=0.0: None,
+                   least: float = 0.0) -> list:
+    """:func:`_thin_of_loop` of each of ``loops[k]`` for ``k`` in ``ks`` (ascending; loops
+    :func:`_isolated_loops` found alone), the parts that are not None, in that order: the
+    loops of one vertex count keyed at once (their vertices less their box's corner, to 1e-9
+    mm, in one array), each shape opened once (by its first loop), and a shape whose opening
+    removes nothing costs its loops nothing more (19,000 round holes: 0.3 s keyed one by
+    one).  Nor does one that removes less than ``least`` mm^2 (a round hole's Clipper
+    slivers, 2.5e-8 mm^2, each moved to its 19,000 holes): what the opening removes near a
+    lone loop lies within ``t / 2`` of it, more than ``t / 2`` from any other loop's, so it
+    joins no other piece and weighs what it weighs alone, below what is measured."""
+    by_count: dict = {}
+    for k in ks:
+        by_count.setdefault(len(loops[k]), []).append(int(k))
+    found: dict = {}               # k -> its part (None: nothing removed)
+    cache: dict = {}
+    for n, group in by_count.items():
+        S = np.stack([loops[k] for k in group])             # (m, n, 2)
+        lo = S.min(axis=1)
+        rel = np.ascontiguousarray(np.round(S - lo[:, None, :], 9).reshape(len(group), -1))
+        keys = rel.view(np.dtype((np.void, rel.dtype.itemsize * rel.shape[1]))).ravel()
+        _, first, inv, counts = np.unique(keys, return_index=True, return_inverse=True,
+                                          return_counts=True)
+        order = np.argsort(inv.ravel(), kind="stable")      # each shape's loops, ascending
+        ends = np.cumsum(counts)
+        for u, f in enumerate(first):
+            tick()
+            thin = _thin_of_loop(loops[group[f]], t, cache)
+            members = order[ends[u] - counts[u]:ends[u]]
+            if thin is None or least > 0 and _area(thin) < least:
+                found.update(dict.fromkeys((group[m] for m in members), None))
+                continue
+            for m in members:
+                if m != f:
+                    tick()
+                found[group[m]] = thin if m == f else thin.translate(
+                    (float(lo[m, 0] - lo[f, 0]), float(lo[m, 1] - lo[f, 1])))
+    return [found[int(k)] for k in ks if found[int(k)] is not None]
 
 
 def _thin_of_loop(loop: np.ndarray, t: float, cache: dict):

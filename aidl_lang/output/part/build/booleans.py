@@ -116,6 +116,12 @@ class Renderer(Faces):
         booleans with it scanned the same way (:meth:`shape`)."""
         if not faces:
             return (mf.CrossSection(), False) if frame else mf.CrossSection()
+        if len(faces) == 1:
+            # one face: a CrossSection is clean as made (Clipper's union by its fill rule), and
+            # a batch of one gives it back as it is; no boolean, so no vertices priced (a
+            # loop's 19,000 round holes paid 400,000 work units for 19,000 batches of one)
+            self.tick(s)
+            return (faces[0], False) if frame else faces[0]
         left = (self.deadline.seconds_left() if self.deadline is not None
                 else float("inf"))
         turn, watched = plan(faces, left)
@@ -132,7 +138,7 @@ class Renderer(Faces):
                                                          mf.OpType.Add))
             faces = nxt
         self.tick(s, faces, watched)
-        out = mf.CrossSection.batch_boolean(faces, mf.OpType.Add)   # (one face: cleaned too)
+        out = mf.CrossSection.batch_boolean(faces, mf.OpType.Add)
         self.tick(s)                # a union that ended past the deadline: E0304 at ``s``
         if frame:
             return out, turn
