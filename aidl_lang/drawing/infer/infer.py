@@ -59,6 +59,7 @@ from .mirror import mirrored_pair, pair_items, write_pair
 from .holes.sinks import Marks
 from .patterns.groups import _Groups, corner_sets, corners_and_pattern, follows
 from .patterns.irregular import _Irregular
+from .patterns.mixed import _Mixed
 from .patterns.fields import _Fields
 from .patterns.pairs import RING_MAX, RING_MIN, RING_WORK, _Pairs, _ring_about
 from .beside import _beside
@@ -81,7 +82,7 @@ class _Stats:
 
 
 class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, _Fields,
-            _Pairs):
+            _Pairs, _Mixed):
     """One part's statements, written into ``w`` at ``depth``."""
 
     def __init__(self, w: _Writer, params: _Params, stats: _Stats, prefix: str) -> None:
@@ -178,6 +179,7 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
         centres = []          # bolt circle centres, for naming a bore
         self.share_centres(depth, groups, body)
         self.merge_odd(groups, body)
+        self.merge_mixed(groups)        # one lattice of holes of two sizes (a checkerboard)
         # the middles of the groups of three or more and how far their holes are from it
         # (a motor plate's corner slots about its bore, outside its motor holes)
         self.rings_at = [(mid, sum(math.dist(h.center, mid) for h in g) / len(g))
@@ -397,7 +399,7 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
                     w.emit(depth, f"# at the corners, {inx if inx == iny else inx + ' and ' + iny}"
                                   f" in from the edges")
                     if self.sinks is None and bname in self.rects and \
-                            not any(id(m) in getattr(self, "odd", {}) for m in g):
+                            not any(id(m) in getattr(self, "odd", {}) or id(m) in self.mixed for m in g):
                         # the language's own: the inset is one word to change (issue 93)
                         first = c.replace("sx", "-1").replace("sy", "-1")
                         if wx and hy:       # the bottom-left corner's, where it goes
@@ -461,6 +463,9 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
             return True
         # a pair placed symmetrically about the body's centre (mirrored about its axis)
         if self.mirrored(depth, g, body, sh, base, cs):
+            return True
+        # two in line on either side of the centre line, not mirrored: each from its edge
+        if self.straddling(depth, g, sh, base, cs):
             return True
         # a row, a column or a grid
         gr = _grid(cs)

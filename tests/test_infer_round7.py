@@ -1,0 +1,103 @@
+"""Drawing to design, round seven (issue 114): every feature keeps its own edge, every
+irregular set stays one set (docs/import.md, "What an edit means").  The drawings are made
+here with ezdxf or svgwrite (not from the inference's rules), imported through the real
+importer (``--infer``), each edit compiled by the real compiler and its DXF read back with
+ezdxf; the hole centres and sizes are compared with the edited part's, numerically.  A 4 x 3
+checkerboard of 6 mm and 5 mm holes is one grid with a per-hole size (it was two staggered
+grids from opposite edges: a wider plate tore it in two); two holes at x = 30 and 90.02 on a
+120 mm plate are each kept from their own edge (they were a row of two from its right end).
+Cost: a few imports and about a dozen compiles (seconds)."""
+from __future__ import annotations
+
+import pytest
+
+from test_infer_round5 import _doc, _text  # a plate drawn with ezdxf; its import (--infer)
+from test_infer_round6 import _holes       # the compiled program's circles, read by ezdxf
+
+
+def _checkerboard(sizes=(6.0, 5.0), middle=False):
+    """A 4 x 3 grid on a 30 / 25 mm pitch, centred on a 120 x 80 plate: the first size where
+    ``(i + j) % 2 == 0`` (or, ``middle``, everywhere but the two middle holes), the second
+    else."""
+    doc, m = _doc(120, 80)
+    for i, x in enumerate((15, 45, 75, 105)):
+        for j, y in enumerate((15, 40, 65)):
+            big = not (j == 1 and i in (1, 2)) if middle else (i + j) % 2 == 0
+            m.add_circle((x, y), (sizes[0] if big else sizes[1]) / 2)
+    return doc
+
+
+def _want(xs, ys, big) -> list:
+    return sorted((x, y, 6.0 if big(i, j) else 5.0) for i, x in enumerate(xs)
+                  for j, y in enumerate(ys))
+
+
+def test_a_checkerboard_of_two_sizes_is_one_grid(tmp_path):
+    text = _text(_checkerboard())
+    assert "staggered" not in text and "param holes_pitch_x = 30 mm" in text, text
+    assert "fill one 4 x 3 lattice" in text, text           # the reading, said in the head
+    # done-when: at width=200 one grid of four columns 30 mm apart (centred, as drawn)
+    got = _holes(text, tmp_path, width=200)
+    assert got == _want((55, 85, 115, 145), (15, 40, 65), lambda i, j: (i + j) % 2 == 0), \
+        (got, text)
+    # a new pitch and count keep the checkerboard, each hole its size on its turn
+    got = _holes(text, tmp_path, holes_pitch_x=20, holes_cols=5)
+    assert got == _want((20, 40, 60, 80, 100), (15, 40, 65), lambda i, j: (i + j) % 2 == 0), \
+        (got, text)
+    # each size is one param: the 5 mm holes become 4 mm, the 6 mm ones stay
+    got = _holes(text, tmp_path, holes_2_d=4)
+    assert sorted({g[2] for g in got}) == [4.0, 6.0] and \
+        sum(g[2] == 4.0 for g in got) == 6, (got, text)
+
+
+def test_a_grid_with_its_two_middle_holes_smaller_is_one_grid(tmp_path):
+    text = _text(_checkerboard(middle=True))
+    assert "(holes_2_d if i == 1 and j == 1 or i == 2 and j == 1 else holes_d)" in text, text
+    got = _holes(text, tmp_path, height=100, holes_pitch_y=30)
+    want = sorted((x, y, 5.0 if j == 1 and i in (1, 2) else 6.0)
+                  for i, x in enumerate((15, 45, 75, 105)) for j, y in enumerate((20, 50, 80)))
+    assert got == want, (got, text)
+
+
+def test_two_grids_of_two_sizes_side_by_side_stay_two(tmp_path):
+    """Side by side (the 6 mm holes all left of the 5 mm ones) they are two patterns, as a
+    maker draws two: no mixed lattice."""
+    doc, m = _doc(160, 80)
+    for x in (20, 40, 120, 140):
+        for y in (20, 60):
+            m.add_circle((x, y), 3 if x < 80 else 2.5)
+    text = _text(doc)
+    assert "fill one" not in text and "param holes_2_pitch_x = 20 mm" in text, text
+    got = _holes(text, tmp_path, width=200)
+    assert [g[0] for g in got] == [20, 20, 40, 40, 160, 160, 180, 180], (got, text)
+
+
+@pytest.mark.parametrize("xs, at200", [((30, 90.02), (30, 170.02)),
+                                        ((40, 95), (40, 175))])
+def test_two_holes_either_side_of_the_centre_keep_their_own_edges(tmp_path, xs, at200):
+    doc, m = _doc(120, 60)
+    for x in xs:
+        m.add_circle((x, 30), 2)
+    text = _text(doc)
+    assert "each kept from its own nearer edge" in text, text   # the reading chosen, said
+    got = _holes(text, tmp_path, width=200)
+    assert got == [(at200[0], 30.0, 4.0), (at200[1], 30.0, 4.0)], (got, text)
+    got = _holes(text, tmp_path, holes_d=5, height=80)           # one size, y on the centre
+    assert got == [(xs[0], 40.0, 5.0), (xs[1], 40.0, 5.0)], (got, text)
+
+
+def test_a_mirrored_pair_and_a_pair_on_one_side_keep_their_readings(tmp_path):
+    """What was right stays: a pair mirrored about the centre line keeps its one inset; a
+    pair by one edge is a row from its end member."""
+    doc, m = _doc(120, 60)
+    for x in (20, 100):
+        m.add_circle((x, 30), 2)
+    text = _text(doc)
+    assert "mirrored about the centre line" in text and "holes_inset = 20 mm" in text, text
+    assert [g[0] for g in _holes(text, tmp_path, width=200)] == [20, 180], text
+    doc, m = _doc(120, 60)
+    for x in (10, 30):
+        m.add_circle((x, 30), 2)
+    text = _text(doc)
+    assert "each kept from its own" not in text, text
+    assert [g[0] for g in _holes(text, tmp_path, width=200)] == [10, 30], text
