@@ -9,6 +9,8 @@ grids from opposite edges: a wider plate tore it in two); two holes at x = 30 an
 Cost: a few imports and about a dozen compiles (seconds)."""
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from test_infer_round5 import _doc, _text  # a plate drawn with ezdxf; its import (--infer)
@@ -101,3 +103,48 @@ def test_a_mirrored_pair_and_a_pair_on_one_side_keep_their_readings(tmp_path):
     text = _text(doc)
     assert "each kept from its own" not in text, text
     assert [g[0] for g in _holes(text, tmp_path, width=200)] == [10, 30], text
+
+
+def _svg_bolt_circle(digits: int | None, nudge: float = 0.0) -> bytes:
+    """Six 5 mm holes evenly round (50, 50) on a 60 mm circle, the first on the x axis, on a
+    100 mm plate, written by svgwrite in a mm viewBox, their centres rounded to ``digits``
+    decimals (None: a float's own), the last one ``nudge`` mm off along x."""
+    import svgwrite
+    d = svgwrite.Drawing(size=("100mm", "100mm"), viewBox="0 0 100 100")
+    d.add(d.rect((0, 0), (100, 100), fill="none", stroke="black"))
+    for k in range(6):
+        a = 2 * math.pi * k / 6
+        x, y = 50 + 30 * math.cos(a) + (nudge if k == 5 else 0), 50 + 30 * math.sin(a)
+        if digits is not None:
+            x, y = round(x, digits), round(y, digits)
+        d.add(d.circle((x, y), 2.5, fill="none", stroke="black"))
+    return d.tostring().encode()
+
+
+def test_an_svg_bolt_circle_to_six_decimals_is_one(tmp_path):
+    """Centres written to 6 decimals (75.980762) are up to 5e-7 mm off the circle: equal
+    within the drawing's own precision, not within 1e-7 mm; the head says so."""
+    from aidl_lang.drawing.infer import import_drawing
+    data = _svg_bolt_circle(6)
+    assert b'cy="75.980762"' in data
+    text, _ = import_drawing(data, "p.svg", infer=True)
+    assert "param bolt_circle_n = 6" in text and "drawing's own precision (1e-06 mm)" in text, text
+    got = _holes(text, tmp_path, bolt_circle_n=8)
+    assert len(got) == 8, (got, text)
+    for x, y, d in got:         # evenly round the plate's centre (y down in the SVG: -50)
+        assert abs(math.hypot(x - 50, y + 50) - 30) < 1e-9 and d == 5.0, (got, text)
+    assert min(abs(y + 50) for x, y, _ in got if x > 50) < 1e-9, got     # first on the x axis
+    # as drawn, each hole within the drawing's precision of its centre in the file
+    got = _holes(text, tmp_path)
+    want = sorted((round(50 + 30 * math.cos(a), 6), -round(50 + 30 * math.sin(a), 6))
+                  for a in (2 * math.pi * k / 6 for k in range(6)))
+    assert all(math.dist(g[:2], w) < 2e-6 for g, w in zip(got, want)), (got, want)
+
+
+@pytest.mark.parametrize("digits, nudge", [(6, 1e-3), (None, 5e-7)])
+def test_holes_off_their_circle_past_the_drawings_precision_are_no_bolt_circle(digits, nudge):
+    """One hole 0.001 mm off in a 6-decimal SVG, or 5e-7 mm off in one that writes floats
+    (precision its own: 1e-7 mm), is no bolt circle."""
+    from aidl_lang.drawing.infer import import_drawing
+    text, _ = import_drawing(_svg_bolt_circle(digits, nudge), "p.svg", infer=True)
+    assert "bolt_circle" not in text, text

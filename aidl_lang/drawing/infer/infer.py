@@ -44,9 +44,10 @@ from collections import Counter
 from ...geometry.shapes.curves import Loop
 from .attachments import _attachments, _circle_attachments
 from .params import _Params, _add0, _ctor, _deg, _hole_name, _r
-from .patterns.find import (lattices, _Cells, _copies, _grid, _line, _polar, _runs, _stagger,
+from .patterns.find import (lattices, _Cells, _copies, _grid, _line, _off_circle, _polar, _runs,
+                            _stagger,
                             _hex_field, _hex_rect, _whole, _features, _unknown)
-from .shapes import EQUAL_TOL, ROUND_TOL, Shape, _close, circular, recognise
+from .shapes import EQUAL_TOL, PRECISION, ROUND_TOL, Shape, _close, circular, recognise
 from .anchors import _Anchored
 from .body import _Bodies
 from .engrave.engraving import _engraving
@@ -431,6 +432,11 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
                 pol = None      # a square given by its side (31 mm), not its circle (43.84)
             if pol is not None:
                 C, R, a0, n = pol
+                if PRECISION.get() > EQUAL_TOL and _off_circle(cs, pol) > EQUAL_TOL:
+                    self.stats.readings.append(
+                        f"{n} holes evenly round a centre to the drawing's own precision "
+                        f"({_num(PRECISION.get())} {UNIT.get()}): one bolt circle, its holes "
+                        f"written on it exactly")
                 around = self.surrounds(C)
                 hn = self.name("motor_holes" if around == "Circle" and n == 4 else "bolt_circle")
                 pcd = self.p(f"{hn}_pcd", 2 * R, "pitch circle diameter")
@@ -832,6 +838,19 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
 
 def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: bool = False,
                         deadline=None) -> tuple[str, list[Note]]:
+    """:func:`_inferred` with the drawing's own precision (:data:`~.shapes.PRECISION`, in
+    the program's unit: the coarsest of its layers', issue 114) in force."""
+    from ..model import UNIT_MM
+    prec = max((getattr(d, "precision", 0.0) for _, d in layers), default=0.0)
+    token = PRECISION.set(prec / UNIT_MM[UNIT.get()])
+    try:
+        return _inferred(layers, source, parts, deadline)
+    finally:
+        PRECISION.reset(token)
+
+
+def _inferred(layers: list[tuple[str, Drawing]], source: str, parts: bool = False,
+              deadline=None) -> tuple[str, list[Note]]:
     """The AIDL text of a drawing read layer by layer, as :func:`~.program.to_program` takes
     it (``parts``: a sheet, one solid per outer loop; ``deadline``: the import's), written as
     recognised shapes, patterns and parameters (module doc), its head comment saying what
