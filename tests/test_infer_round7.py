@@ -47,14 +47,14 @@ def test_a_checkerboard_of_two_sizes_is_one_grid(tmp_path):
     assert got == _want((20, 40, 60, 80, 100), (15, 40, 65), lambda i, j: (i + j) % 2 == 0), \
         (got, text)
     # each size is one param: the 5 mm holes become 4 mm, the 6 mm ones stay
-    got = _holes(text, tmp_path, holes_2_d=4)
+    got = _holes(text, tmp_path, holes_small_d=4)
     assert sorted({g[2] for g in got}) == [4.0, 6.0] and \
         sum(g[2] == 4.0 for g in got) == 6, (got, text)
 
 
 def test_a_grid_with_its_two_middle_holes_smaller_is_one_grid(tmp_path):
     text = _text(_checkerboard(middle=True))
-    assert "(holes_2_d if i == 1 and j == 1 or i == 2 and j == 1 else holes_d)" in text, text
+    assert "(holes_small_d if i == 1 and j == 1 or i == 2 and j == 1 else holes_d)" in text, text
     got = _holes(text, tmp_path, height=100, holes_pitch_y=30)
     want = sorted((x, y, 5.0 if j == 1 and i in (1, 2) else 6.0)
                   for i, x in enumerate((15, 45, 75, 105)) for j, y in enumerate((20, 50, 80)))
@@ -148,3 +148,20 @@ def test_holes_off_their_circle_past_the_drawings_precision_are_no_bolt_circle(d
     from aidl_lang.drawing.infer import import_drawing
     text, _ = import_drawing(_svg_bolt_circle(digits, nudge), "p.svg", infer=True)
     assert "bolt_circle" not in text, text
+
+
+def test_two_groups_of_one_size_have_one_size_param(tmp_path):
+    """Two 2 x 2 groups of 4 mm holes at the ends of a plate, one CAD rounded, one missing a
+    hole: each its own pattern from its own edge, one `holes_d` for both (it was two)."""
+    doc, m = _doc(200, 100)
+    for x0 in (20, 150):
+        for dx in (0, 30):
+            for y in (35, 65):
+                if (x0, dx, y) != (150, 30, 65):
+                    m.add_circle((x0 + dx + (0.03 if (x0, dx, y) == (20, 0, 35) else 0), y), 2)
+    text = _text(doc)
+    assert text.count("param holes_d = 4 mm") == 1 and "_2_d" not in text, text
+    got = _holes(text, tmp_path, holes_d=5, width=240)
+    want = sorted([(20.03, 35.0, 5.0), (20, 65, 5.0), (50, 35, 5.0), (50, 65, 5.0),
+                   (190, 35, 5.0), (190, 65, 5.0), (220, 35, 5.0)])
+    assert got == want, (got, text)

@@ -201,12 +201,15 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
             # equal holes of several features (a grille and a grid): each its own pattern;
             # a sibling's lattice for one with a hole left out (irregular: _gapped_as)
             self.kin = lattices([[cs[i] for i in part] for part in parts or []])
+            # groups of one size: one size param for all (issue 114), the first's name
+            self.one_size = [g[0].kind, g[0].size, None] if parts and len(parts) > 1 else None
             for part in parts or [range(len(g))]:
                 sub = [g[i] for i in part]
                 if len(sub) == 1:
                     singles += sub
                 elif not self.sunk_as(sub) or not self.pattern(depth, sub, body, centres):
                     singles += sub
+        self.one_size = None
         few = len(singles) <= SINGLE_PARAMS
         for k, sh in enumerate(singles):
             self.check(k, "writing the holes")
@@ -346,6 +349,13 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
         """Params for a repeated shape's sizes (``many``), else none (literal numbers)."""
         if not many:
             return {}
+        one = getattr(self, "one_size", None)       # groups of one size (holes): one param
+        if one is not None and (sh.kind, sh.size) == (one[0], one[1]):
+            if one[2] is None:
+                self.one_size = None
+                one[2] = self.size_params(base, sh, many)
+                self.one_size = one
+            return one[2]
         a = sh.args
         if sh.kind == "Circle":
             return {"diameter": self.p(base + "_d", 2 * a["radius"])}
@@ -742,7 +752,9 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
             self.w.emit(depth, f"hole {hn} {{ h = {_ctor(sh, '')} }}")
             self.w.emit(depth, f"Fixed({hn}.h)")
             return
-        self.hole_block(depth, hn, sh, self.pos(sh.center), sizes)
+        # a feature of its own by an edge: its distance from it a param (issue 114)
+        self.hole_block(depth, hn, sh, self.pos_from_edges(hn, sh.center) if few and sizes
+                        else self.pos(sh.center), sizes)
 
 
 def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d: Drawing,

@@ -105,10 +105,12 @@ class _Mixed:
                     f"together: one pattern, each hole its own size on its turn (not a "
                     f"pattern for each size)")
 
-    def mixed_sizes(self, hn: str, sizes: dict, index) -> dict:
-        """``sizes`` (a pattern's ``{"diameter": "holes_d"}``) with the holes of the other
-        sizes of a mixed lattice (:meth:`merge_mixed`) given theirs on their turns:
-        ``(holes_2_d if (i + j) % 2 == 1 else holes_d)``, a param for each other size."""
+    def mixed_sizes(self, hn: str, sh, sizes: dict, index) -> dict:
+        """``sizes`` (a pattern's ``{"diameter": "holes_d"}``, its holes ``sh``'s size) with
+        the holes of the other sizes of a mixed lattice (:meth:`merge_mixed`) given theirs on
+        their turns: ``(holes_small_d if (i + j) % 2 == 1 else holes_d)``, a param for each
+        other size named for it against ``sh``'s (``_small_d``, ``_large_d``: a name that
+        ends as every diameter's)."""
         mixed = getattr(self, "mixed", None)
         if not mixed or index is None or "diameter" not in sizes:
             return sizes
@@ -122,8 +124,9 @@ class _Mixed:
         if not by:
             return sizes
         expr = sizes["diameter"]
-        for k, (d, turns) in enumerate(sorted(by.items(), key=lambda kv: -len(kv[1]))):
+        for d, turns in sorted(by.items(), key=lambda kv: -len(kv[1])):
             cond = condition(turns, every)
-            own = self.p(f"{hn}_{k + 2}_d", d, f"the holes where {cond}")
+            word = "small" if d < 2 * sh.args["radius"] else "large"
+            own = self.p(f"{hn}_{word}_d", d, f"the holes where {cond}")
             expr = f"{own} if {cond} else {expr}"
         return {**sizes, "diameter": f"({expr})"}
