@@ -165,3 +165,37 @@ def test_two_groups_of_one_size_have_one_size_param(tmp_path):
     want = sorted([(20.03, 35.0, 5.0), (20, 65, 5.0), (50, 35, 5.0), (50, 65, 5.0),
                    (190, 35, 5.0), (190, 65, 5.0), (220, 35, 5.0)])
     assert got == want, (got, text)
+
+
+def test_a_single_hole_by_its_edges_has_its_distances_as_params(tmp_path):
+    """An Arduino plate's hole 15 mm from the left edge: "move it 10 mm further in" is one
+    param, `hole1_x`; a hole by the right and top edges keeps its distances to them."""
+    doc, m = _doc(120, 80)
+    m.add_circle((15, 30), 4)
+    m.add_circle((100, 65), 2)
+    text = _text(doc)
+    assert "param hole1_x = 15 mm" in text and "param hole2_x = 20 mm" in text, text
+    assert "center=(width - hole2_x, height - hole2_y)" in text, text
+    got = _holes(text, tmp_path, hole1_x=25, width=150, height=90)
+    assert got == [(25, 30, 8.0), (130, 75, 4.0)], (got, text)
+
+
+def test_the_generated_round7_kinds_do_what_was_meant(tmp_path):
+    """A sample of `--kinds round7` (benchmarks/imports/infer_edits.py, tests/gen_round7.py):
+    two drawings of each kind, their edits through the inferred program judged by the
+    spec's truth; the whole run (300 edits) is the benchmark's."""
+    import random
+
+    import gen_drawings as gen
+    from benchmarks.imports import infer_edits as bench
+    got = []
+    for kind in gen.ROUND7_KINDS:
+        rng = random.Random(114)
+        for n in range(2):
+            d = gen.random_design(rng, [kind], pool=gen.ROUND7_KINDS)
+            (tmp_path / f"{kind}{n}").mkdir()
+            r = bench.run_drawing(d, tmp_path / f"{kind}{n}", random.Random(n), k=3)
+            assert r["exact"] and not r["error"], (r["error"], d.describe())
+            got += [(o, d.describe()) for _, o, _ in r["edits"]]
+    meant = sum(o == "meant" for o, _ in got)
+    assert meant >= len(got) - 1 and len(got) >= 12, got
