@@ -199,3 +199,17 @@ def test_the_generated_round7_kinds_do_what_was_meant(tmp_path):
             got += [(o, d.describe()) for _, o, _ in r["edits"]]
     meant = sum(o == "meant" for o, _ in got)
     assert meant >= len(got) - 1 and len(got) >= 12, got
+
+
+def test_a_mirrored_pair_of_brackets_has_its_gap_as_a_param(tmp_path):
+    """Two L-brackets drawn as one and its mirror image 10 mm apart about x = 0 (the
+    hand-made `brackets`): the gap is `gap`, not a literal mirror line; a new gap moves both
+    apart about the line, a new leg keeps it."""
+    from maker_drawings import brackets
+    from aidl_lang.drawing.infer import import_drawing
+    text, _ = import_drawing(brackets(), "brackets.dxf", infer=True)
+    assert "param gap = 10 mm" in text and "Mirrored(" in text, text
+    xs = lambda got: sorted(g[0] for g in got)      # noqa: E731
+    assert xs(_holes(text, tmp_path)) == [-32.5, -12.5, 12.5, 32.5], text
+    assert xs(_holes(text, tmp_path, gap=20)) == [-37.5, -17.5, 17.5, 37.5], text
+    assert xs(_holes(text, tmp_path, leg=50)) == [-37.5, -12.5, 12.5, 37.5], text

@@ -56,7 +56,7 @@ from .holes.makers import SINGLE_PARAMS, _MakerFeatures
 from .naming import _far, _named_parts, _short_names, _summary
 from ..chains.layers import _hole_layers
 from .profiles.write import _Profiles
-from .mirror import mirrored_pair, pair_items, write_pair
+from .mirror import mirrored_pair, pair_gap, pair_items, write_pair
 from .holes.sinks import Marks
 from .patterns.groups import _Groups, corner_sets, corners_and_pattern, follows
 from .patterns.irregular import _Irregular
@@ -913,7 +913,8 @@ def _inferred(layers: list[tuple[str, Drawing]], source: str, parts: bool = Fals
             word = _named_parts([("solid", "part", pair[0])])[0][1]
             write_pair(w, depth, name if name != word else word + "s", pair[0], pair[1], d.box(),
                        word, lambda dp, nm, dd: _solid(w, params, stats, dp, nm, dd, "", marks=marks,
-                                                         keep=pair[1]))
+                                                         keep=pair[1], shift=pair_gap(
+                                                             dd, pair[1], params, stats)))
             stats.patterns["mirrored part"] += 1
             name = name if name != word else word + "s"
             prev = None
