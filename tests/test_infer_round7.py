@@ -9,9 +9,14 @@ grids from opposite edges: a wider plate tore it in two); two holes at x = 30 an
 Cost: a few imports and about a dozen compiles (seconds)."""
 from __future__ import annotations
 
+import io
 import math
 
+import ezdxf
+from ezdxf import bbox
 import pytest
+
+import aidl_lang
 
 from test_infer_round5 import _doc, _text  # a plate drawn with ezdxf; its import (--infer)
 from test_infer_round6 import _holes       # the compiled program's circles, read by ezdxf
@@ -213,3 +218,53 @@ def test_a_mirrored_pair_of_brackets_has_its_gap_as_a_param(tmp_path):
     assert xs(_holes(text, tmp_path)) == [-32.5, -12.5, 12.5, 32.5], text
     assert xs(_holes(text, tmp_path, gap=20)) == [-37.5, -17.5, 17.5, 37.5], text
     assert xs(_holes(text, tmp_path, leg=50)) == [-37.5, -12.5, 12.5, 37.5], text
+
+
+def _plates(rects) -> str:
+    """The program inferred from plates ``(x0, y0, w, h)`` in one DXF, each with a 6 mm hole
+    in its middle."""
+    doc = ezdxf.new("R2010")
+    doc.units = 4
+    m = doc.modelspace()
+    for x0, y0, w, h in rects:
+        m.add_lwpolyline([(x0, y0), (x0 + w, y0), (x0 + w, y0 + h), (x0, y0 + h)], close=True)
+        m.add_circle((x0 + w / 2, y0 + h / 2), 3)
+    return _text(doc)
+
+
+def _boxes(text: str, tmp_path, **edit) -> list:
+    """Each outline's box ``(x0, y0, x1, y1)`` of the compiled program, read by ezdxf."""
+    res = aidl_lang.compile(text, path=tmp_path / "p.aidl", overrides=edit)
+    assert res.ok, ([str(d) for d in res.errors], text)
+    ms = ezdxf.read(io.StringIO(res.to_dxf())).modelspace()
+    out = []
+    for e in ms:
+        if e.dxftype() == "LWPOLYLINE":
+            b = bbox.extents([e])
+            out.append(tuple(round(v, 9) + 0.0 for v in (b.extmin.x, b.extmin.y,
+                                                          b.extmax.x, b.extmax.y)))
+    return sorted(out)
+
+
+def test_three_plates_in_a_row_have_a_gap_param_each(tmp_path):
+    """Three plates in a row, drawn largest first (named so): each placed beside the one to
+    its left by its own gap param, so a wider left plate moves the other two along and a new
+    gap moves only what lies past it."""
+    text = _plates([(0, 0, 40, 40), (50, 0, 30, 40), (90, 0, 50, 40)])
+    assert text.count("_gap = 10 mm") == 2, text
+    assert _boxes(text, tmp_path) == [(0, 0, 40, 40), (50, 0, 80, 40), (90, 0, 140, 40)], text
+    gaps = [ln.split()[1] for ln in text.splitlines() if ln.startswith("param") and "_gap" in ln]
+    widths = {ln.split()[1]: ln for ln in text.splitlines() if ln.startswith("param")
+              and ln.split()[1].endswith("_width")}
+    left = next(k for k, v in widths.items() if "= 40 mm" in v)
+    assert _boxes(text, tmp_path, **{left: 50}) == \
+        [(0, 0, 50, 40), (60, 0, 90, 40), (100, 0, 150, 40)], text
+    assert _boxes(text, tmp_path, **{gaps[1]: 20}) == \
+        [(0, 0, 40, 40), (50, 0, 80, 40), (100, 0, 150, 40)], text
+
+
+def test_stacked_plates_have_a_gap_param(tmp_path):
+    text = _plates([(0, 0, 60, 40), (0, 50, 60, 30)])
+    assert "l_02_gap = 10 mm  # from l_01's top edge" in text, text
+    assert _boxes(text, tmp_path, l_01_height=50, l_02_gap=5) == \
+        [(0, 0, 60, 50), (0, 55, 60, 85)], text

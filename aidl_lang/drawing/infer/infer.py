@@ -45,8 +45,7 @@ from ...geometry.shapes.curves import Loop
 from .attachments import _attachments, _circle_attachments
 from .params import _Params, _add0, _ctor, _deg, _hole_name, _r
 from .patterns.find import (lattices, _Cells, _copies, _grid, _line, _off_circle, _polar, _runs,
-                            _stagger,
-                            _hex_field, _hex_rect, _whole, _features, _unknown)
+                            _stagger, _hex_field, _hex_rect, _whole, _features, _unknown)
 from .shapes import EQUAL_TOL, PRECISION, ROUND_TOL, Shape, _close, circular, recognise
 from .anchors import _Anchored
 from .body import _Bodies
@@ -63,7 +62,7 @@ from .patterns.irregular import _Irregular
 from .patterns.mixed import _Mixed
 from .patterns.fields import _Fields
 from .patterns.pairs import RING_MAX, RING_MIN, RING_WORK, _Pairs, _ring_about
-from .beside import _beside
+from .beside import _beside, beside_order
 from .patterns.rings import _start, ring_in_scatter, rings, start_angle
 from .patterns import turns
 from ..write.program import _containers, _cut_notes, _layer_items, _place, _whole_ellipse
@@ -878,7 +877,7 @@ def _inferred(layers: list[tuple[str, Drawing]], source: str, parts: bool = Fals
     layers, moved = _hole_layers(layers, deadline)
     items = in_unit(_layer_items(layers, parts, deadline, source, w.notes, w.overlaps))
     items = _copies(items, deadline)
-    items = _named_parts(pair_items(items, deadline))
+    items = beside_order(_named_parts(pair_items(items, deadline)), parts)
     marks = Marks(items)        # countersinks, written with their holes
     solids = sum(1 for it in items if it[0] == "solid")
     multi = len(items) > 1 or any(len(it) > 3 for it in items)
@@ -913,8 +912,7 @@ def _inferred(layers: list[tuple[str, Drawing]], source: str, parts: bool = Fals
             word = _named_parts([("solid", "part", pair[0])])[0][1]
             write_pair(w, depth, name if name != word else word + "s", pair[0], pair[1], d.box(),
                        word, lambda dp, nm, dd: _solid(w, params, stats, dp, nm, dd, "", marks=marks,
-                                                         keep=pair[1], shift=pair_gap(
-                                                             dd, pair[1], params, stats)))
+                                                         keep=pair[1], shift=pair_gap(dd, pair[1], params, stats)))
             stats.patterns["mirrored part"] += 1
             name = name if name != word else word + "s"
             prev = None
