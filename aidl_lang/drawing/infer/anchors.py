@@ -258,7 +258,7 @@ class _Anchored:
         edge = self.anchor[0].center[axis] + side * self.anchor[0].args[
             "width" if axis == 0 else "height"] / 2
         word = {(0, -1): "left", (0, 1): "right", (1, -1): "bottom", (1, 1): "top"}[(axis, side)]
-        g = self.p(name, abs(v - edge), f"{what}, from the {word} edge")
+        g = self.p(name, -side * (v - edge), f"{what}, from the {word} edge")
         e = self.edge(axis, side)
         if side < 0:
             return g if e == "0" else f"{e} + {g}"
@@ -276,7 +276,8 @@ class _Anchored:
             sh = self.anchor[0]
             half = sh.args["width" if axis == 0 else "height"] / 2
             side = _tied({k: abs(c[axis] - sh.center[axis] - k * half) for k in (0, -1, 1)})
-            out.append(self.at(c[axis], axis) if side == 0 else
+            inside = -side * (c[axis] - sh.center[axis] - side * half) > 0   # (not in a tab)
+            out.append(self.at(c[axis], axis) if side == 0 or not inside else
                        self.from_edge(f"{hn}_{word}", c[axis], axis, side, "its centre"))
         return f"({out[0]}, {out[1]})"
 
