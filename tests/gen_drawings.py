@@ -939,10 +939,13 @@ def _valid(d: Design) -> bool:
             if f["p"] < f["d"] + m or any(_roundest_margin(size, f) != f["margin"]
                                           for size in (d.width, d.height)):
                 return False        # the margin the spec reads (its roundest) is another
-        if k in ROUND6_KINDS + ROUND7_KINDS and any(
+        if k in ROUND6_KINDS and any(g is not f and (g.get("d"), g.get("w")) ==
+                                     (f.get("d"), f.get("w")) for g in d.features):
+            return False            # holes of one size of two features: one set (no pattern)
+        if k in ROUND7_KINDS and any(
                 g is not f and {g.get("d"), g.get("w"), g.get("d2")} & {f.get("d"), f.get("d2")}
                 - {None} for g in d.features):
-            return False            # holes of one size of two features: one set (no pattern)
+            return False            # (round seven's: its second size too)
         if k in ROUND7_KINDS and not _round7_valid(d, f, m):
             return False
         if k == "twogroups" and ((d.width if f["dir"] == "x" else d.height)
