@@ -59,7 +59,7 @@ from .mirror import mirrored_pair, pair_gap, pair_items, write_pair
 from .holes.sinks import Marks
 from .patterns.groups import _Groups, corner_sets, corners_and_pattern, follows
 from .patterns.irregular import _Irregular
-from .patterns.mixed import _Mixed
+from .patterns.mixed import _Mixed, alike
 from .patterns.fields import _Fields
 from .patterns.pairs import RING_MAX, RING_MIN, RING_WORK, _Pairs, _ring_about
 from .beside import _beside, beside_order
@@ -200,8 +200,8 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
             # equal holes of several features (a grille and a grid): each its own pattern;
             # a sibling's lattice for one with a hole left out (irregular: _gapped_as)
             self.kin = lattices([[cs[i] for i in part] for part in parts or []])
-            # groups of one size: one size param for all (issue 114), the first's name
-            self.one_size = [g[0].kind, g[0].size, None] if parts and len(parts) > 1 else None
+            # alike groups of one size (two 2 x 2s): one size param for all (issue 114)
+            self.one_size = [g[0].kind, g[0].size, None] if alike(parts, self.kin) else None
             for part in parts or [range(len(g))]:
                 sub = [g[i] for i in part]
                 if len(sub) == 1:

@@ -45,6 +45,20 @@ def mixed_lattice(sets: list) -> tuple | None:
     return gr
 
 
+def alike(parts, kin: list) -> bool:
+    """Whether the groups ``parts`` (index lists) that equal holes were split into are one
+    feature's alike groups (two 2 x 2 groups at the ends of a plate, one CAD rounded, one
+    missing a hole): two to four, each within one hole of the largest, their lattices
+    (``kin``, :func:`~.find.lattices`) one; they then share one size param (issue 114), where
+    features of a size by chance (a grid and a row of 4 mm holes) keep one each."""
+    if not parts or not 2 <= len(parts) <= 4:
+        return False
+    most = max(len(p) for p in parts)
+    if any(len(p) < most - 1 for p in parts):
+        return False
+    return all(max(abs(a - b) for a, b in zip(k, kin[0])) <= 1e-6 for k in kin)
+
+
 def _turn_text(turn: tuple) -> str:
     return " and ".join(f"{v} == {k}" for v, k in turn) or "true"
 
