@@ -201,7 +201,7 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
             # a sibling's lattice for one with a hole left out (irregular: _gapped_as)
             self.kin = lattices([[cs[i] for i in part] for part in parts or []])
             # alike groups of one size (two 2 x 2s): one size param for all (issue 114)
-            self.one_size = [g[0].kind, g[0].size, None] if alike(parts, self.kin) else None
+            self.one_size = [g[0].kind, g[0].size, None] if alike(parts, cs, self.kin) else None
             for part in parts or [range(len(g))]:
                 sub = [g[i] for i in part]
                 if len(sub) == 1:

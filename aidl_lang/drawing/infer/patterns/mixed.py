@@ -12,7 +12,7 @@ from itertools import combinations
 
 from ...write.units import UNIT
 from ...write.writer import _num
-from .find import _grid
+from .find import _gapped_as, _grid, lattices
 
 MIXED_GROUPS = 6    # at most this many hole sizes looked at for one lattice (2^6 subsets)
 MIXED_RATIO = 2.0   # the largest hole of a mixed lattice at most this many times the smallest
@@ -45,17 +45,22 @@ def mixed_lattice(sets: list) -> tuple | None:
     return gr
 
 
-def alike(parts, kin: list) -> bool:
+def alike(parts, cs: list, kin: list) -> bool:
     """Whether the groups ``parts`` (index lists) that equal holes were split into are one
     feature's alike groups (two 2 x 2 groups at the ends of a plate, one CAD rounded, one
-    missing a hole): two to four, each within one hole of the largest, their lattices
-    (``kin``, :func:`~.find.lattices`) one; they then share one size param (issue 114), where
+    missing a hole): two to four (``cs``: the holes' centres), each within one hole of the
+    largest, each a row or grid or one with holes left out of a sibling's lattice, their
+    lattices (``kin``, :func:`~.find.lattices`) one; they then share one size param (issue 114), where
     features of a size by chance (a grid and a row of 4 mm holes) keep one each."""
     if not parts or not 2 <= len(parts) <= 4:
         return False
     most = max(len(p) for p in parts)
-    if any(len(p) < most - 1 for p in parts):
+    if any(len(p) < most - 1 for p in parts) or not kin:
         return False
+    for p in parts:             # each a row or grid (a board's set beside corners is not)
+        pcs = [cs[i] for i in p]
+        if not lattices([pcs]) and not any(_gapped_as(pcs, lat) for lat in kin):
+            return False
     return all(max(abs(a - b) for a, b in zip(k, kin[0])) <= 1e-6 for k in kin)
 
 
