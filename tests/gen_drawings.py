@@ -82,7 +82,17 @@ BASE_KINDS = {"oddcorners": "corners", "gapgrid": "grid", "cadrow": "row"}
 # CAD rounded off its node (``off_at``: 0.03 mm, 0.0015 in), the second with one left out
 # (``gap``) (``twogroups``: each group kept from its own edge)
 ROUND6_KINDS = ("edgepair", "perforated", "twogroups")
-ALL_KINDS = KINDS + NEW_KINDS + ROUND5_KINDS + IRREGULAR_KINDS + ROUND6_KINDS
+# issue 114 (round seven), drawn only when asked (--kinds round7), their truths from the spec:
+# a lattice of holes of two sizes (``checker``: ``nx`` x ``ny`` on ``px`` / ``py``, ``d`` and
+# ``d2``, the second where ``(i + j) % 2 == 1`` (``mode`` parity) or at the nodes ``odd``
+# (``mixed``), centred on the plate (``at`` "C") or its first hole ``ix``, ``iy`` in from the
+# lower left corner, within one and a half pitches: one grid, each hole its own size on its
+# turn), a single hole ``ox`` from the left or right edge (``sx``) and ``oy`` from the bottom
+# or top (``sy``), nearer them than the centre lines (``edgehole``: its distances params), two
+# holes of one size in line along ``dir`` on the centre line, ``a`` from the low edge and ``b``
+# from the high one, not mirrored (``asympair``: each kept from its own edge)
+ROUND7_KINDS = ("checker", "edgehole", "asympair")
+ALL_KINDS = KINDS + NEW_KINDS + ROUND5_KINDS + IRREGULAR_KINDS + ROUND6_KINDS + ROUND7_KINDS
 
 
 def base_kind(f) -> str:
@@ -359,6 +369,8 @@ class Design:
         x0, y0 = self.origin
         W, H = self.width, self.height
         k = f["kind"]
+        if k in ROUND7_KINDS:
+            return [c for c, _ in round7_members(f, (x0, y0), W, H)]
         if k == "edgepair":
             if f["dir"] == "y":
                 x = self._axis(f["ax"], 0.0, 0)
@@ -389,6 +401,9 @@ class Design:
         """The loops of feature ``i`` (design units): its holes (a notch: none, it is in the
         outline; a label: none)."""
         f = self.features[i]
+        if f["kind"] in ROUND7_KINDS:
+            return [circle(c, d / 2) for c, d in round7_members(f, self.origin, self.width,
+                                                                 self.height)]
         if f["kind"] in ROUND6_KINDS:
             if f.get("member") == "slot":
                 return [slot_loop(c, f["length"], f["w"], math.radians(f["angle"]))
@@ -516,6 +531,18 @@ class Design:
                 else:
                     add("size", "length", "slot length", [(r"length|len|l", 1.0)])
                 add("pitch", "inset", "inset", [(r"inset|margin", 1.0)])
+            if k in ROUND7_KINDS:
+                add("size", "d", "diameter", D)
+            if k == "checker":
+                add("size", "d2", "second diameter", D)
+                add("pitch", "px", "pitch", P)
+                if f["py"] is not None:
+                    add("pitch", "py", "pitch y", P)
+                if f["mode"] == "parity":       # a new column keeps the checkerboard
+                    add("count", "nx", "count", N)
+            if k == "edgehole":
+                add("pitch", "ox", "distance from its side edge", [(r"x", 1.0)])
+                add("pitch", "oy", "distance from its top or bottom edge", [(r"y", 1.0)])
             if k == "perforated":
                 add("size", "d", "diameter", D)
                 add("pitch", "p", "pitch", P)
@@ -915,6 +942,12 @@ def _valid(d: Design) -> bool:
         if k in ROUND6_KINDS and any(g is not f and (g.get("d"), g.get("w")) ==
                                      (f.get("d"), f.get("w")) for g in d.features):
             return False            # holes of one size of two features: one set (no pattern)
+        if k in ROUND7_KINDS and any(
+                g is not f and {g.get("d"), g.get("w"), g.get("d2")} & {f.get("d"), f.get("d2")}
+                - {None} for g in d.features):
+            return False            # (round seven's: its second size too)
+        if k in ROUND7_KINDS and not _round7_valid(d, f, m):
+            return False
         if k == "twogroups" and ((d.width if f["dir"] == "x" else d.height)
                                  - 2 * f["inset"] - 2 * f["p"] <= 2 * f["p"]
                                  or f["p"] < f["d"] + m):
@@ -1069,6 +1102,8 @@ def random_feature(rng: random.Random, T: dict, kind: str) -> dict:
         if f["member"] == "slot":
             f.update(w=d, length=d + rng.choice(T["pitch"][:3]), angle=rng.choice([0, 90]))
             del f["d"]
+    elif kind in ROUND7_KINDS:          # issue 114: round seven (gen_round7.py)
+        f = random_round7(rng, T, kind, d)
     elif kind == "perforated":          # a field over the plate but for its margin
         f = {"kind": kind, "d": rng.choice(T["d"][:7]), "p": rng.choice(T["pitch"][1:]),
              "margin": rng.choice(T["off"][2:])}
@@ -1255,5 +1290,6 @@ def random_edit(rng: random.Random, d: Design, e: Edit) -> Design | None:
 
 # --- export and the independent readers: gen_io.py (this module's size) ----------------------------
 
+from gen_round7 import _round7_valid, random_round7, round7_members  # noqa: E402
 from gen_io import (_bulges, _dxf_loop, _dxf_segments, _local_loops, _path_d,  # noqa: E402,F401
                     export, read_dxf, read_svg, to_dxf, to_svg)

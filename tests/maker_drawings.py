@@ -255,6 +255,49 @@ def two_plates(first=60.0, second=50.0, gap=10.0, height=40.0) -> bytes:
     return _bytes(doc)
 
 
+def checkerboard(width=120.0, height=80.0, big=6.0, small=5.0, px=30.0, py=25.0) -> bytes:
+    """A 4 x 3 checkerboard of ``big`` and ``small`` holes on a ``px`` / ``py`` pitch, centred
+    on the plate (issue 114: it was two staggered grids, one from each edge)."""
+    doc, m = _doc()
+    _rect(m, 0, 0, width, height)
+    for i in range(4):
+        for j in range(3):
+            m.add_circle((width / 2 + (i - 1.5) * px, height / 2 + (j - 1) * py),
+                         (big if (i + j) % 2 == 0 else small) / 2)
+    return _bytes(doc)
+
+
+def two_holes(width=120.0, height=60.0, left=30.0, right=29.98, hole=4.0) -> bytes:
+    """Two holes in line, ``left`` from the left edge and ``right`` from the right one (issue
+    114: at x = 30 and 90.02 they were a row of two from its right end)."""
+    doc, m = _doc()
+    _rect(m, 0, 0, width, height)
+    for x in (left, width - right):
+        m.add_circle((x, height / 2), hole / 2)
+    return _bytes(doc)
+
+
+def edge_hole(width=100.0, height=70.0, x=15.0, hole=8.0) -> bytes:
+    """A plate with one hole ``x`` from its left edge, 20 mm below its top (issue 114: "move
+    it 10 mm further in" found no param)."""
+    doc, m = _doc()
+    _rect(m, 0, 0, width, height)
+    m.add_circle((x, height - 20), hole / 2)
+    return _bytes(doc)
+
+
+def three_plates(first=40.0, second=30.0, third=50.0, gap=10.0, gap2=10.0) -> bytes:
+    """Three plates in a row, each with a hole in its middle, drawn largest first (issue 114:
+    the first written had no gap param)."""
+    doc, m = _doc()
+    x = {"b": first + gap}
+    x["c"] = x["b"] + second + gap2
+    for x0, w in ((x["c"], third), (0.0, first), (x["b"], second)):
+        _rect(m, x0, 0, w, 40)
+        m.add_circle((x0 + w / 2, 20), 3)
+    return _bytes(doc)
+
+
 def _rounded(m, w, h, r):
     """A plate's outline as one polyline with rounded corners (bulges of a quarter turn)."""
     b = math.tan(math.pi / 8)
@@ -435,6 +478,25 @@ DRAWINGS = {
     "two_groups": (two_groups, [
         ("plate width", r"width", 200, 240, "width"),
         ("plate height", r"height", 100, 120, "height"),
+    ]),
+    "checkerboard": (checkerboard, [
+        ("plate width", r"width", 120, 200, "width"),
+        ("column pitch", r"holes_pitch_x", 30, 25, "px"),
+        ("large holes", r"holes_d", 6, 6.5, "big"),
+        ("small holes", r"holes_small_d", 5, 4, "small"),
+    ]),
+    "two_holes": (two_holes, [
+        ("plate width", r"width", 120, 200, "width"),
+        ("hole size", r"holes_d", 4, 5, "hole"),
+    ]),
+    "edge_hole": (edge_hole, [
+        ("hole's distance from the left edge", r"hole1_x", 15, 25, "x"),
+        ("plate height", r"height", 70, 90, "height"),
+    ]),
+    "three_plates": (three_plates, [
+        ("first plate's width", r"l_02_width", 40, 50, "first"),
+        ("first gap", r"l_03_gap", 10, 15, "gap"),
+        ("second gap", r"l_01_gap", 10, 5, "gap2"),
     ]),
     "two_plates": (two_plates, [
         ("first plate's width", r"l_01_width", 60, 80, "first"),

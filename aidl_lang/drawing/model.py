@@ -172,6 +172,10 @@ class Drawing:
     # the open paths have the role `cut` (cut=, roles="laser" named it): `aidl import`
     # writes them as through-cuts (a `cut` structure), not engravings
     paths_cut: bool = False
+    # mm: one unit of the last decimal the file writes its numbers to (an SVG whose centres
+    # carry 6 decimals in a mm viewBox: 1e-6), 0 when it writes them to a float's own
+    # precision; `aidl import --infer` takes what is equal within it as equal (issue 114)
+    precision: float = 0.0
 
     def box(self) -> tuple[float, float, float, float] | None:
         """The exact ``(x0, y0, x1, y1)`` of everything read (mm), or None when empty."""

@@ -458,13 +458,17 @@ def main(argv=None) -> int:
                     "program rounded), `round6` (issue 103, continued: two holes or slots "
                     "mirrored about a centre line each by its own edge, a perforated plate, two "
                     "2 x 2 groups of one size, one CAD rounded, one with a hole left out), "
+                    "`round7` (issue 114: a lattice of holes of two sizes, a checkerboard or "
+                    "mixed; a single hole by its edges; two holes in line by their own edges, "
+                    "not mirrored), "
                     "`all`, or names joined by commas (default: the first set, as always)")
     a = ap.parse_args(argv)
     every = gen.ALL_KINDS + gen_profiles.PROFILE_KINDS + gen_panels.PANEL_KINDS
     kinds = {"": gen.KINDS, "new": gen.NEW_KINDS, "round5": gen.ROUND5_KINDS,
              "profiles": gen_profiles.PROFILE_KINDS, "panels": gen_panels.PANEL_KINDS,
              "issue93": gen.ROUND5_KINDS + gen_profiles.PROFILE_KINDS + gen_panels.PANEL_KINDS,
-             "irregular": gen.IRREGULAR_KINDS, "round6": gen.ROUND6_KINDS, "all": every}.get(
+             "irregular": gen.IRREGULAR_KINDS, "round6": gen.ROUND6_KINDS,
+             "round7": gen.ROUND7_KINDS, "all": every}.get(
         a.kinds, tuple(a.kinds.split(",")))
     if not set(kinds) <= set(every):
         ap.error(f"--kinds: not a kind: {', '.join(sorted(set(kinds) - set(every)))}")

@@ -250,6 +250,37 @@ class _Anchored:
             return self.center(sh.center)
         return f"({self.edge(0, 0)}, {self.edge(1, 0)})"
 
+    def from_edge(self, name: str, v: float, axis: int, side: int, what: str) -> str:
+        """Coordinate ``v`` (mm along ``axis``) written from the body's low (``side`` -1)
+        or high (1) edge by a param ``name`` of its distance from that edge (``what`` it
+        measures, said in its comment): ``board_x``, ``width - hole1_x``; a maker moves the
+        feature in from its edge by that one number (issue 114)."""
+        edge = self.anchor[0].center[axis] + side * self.anchor[0].args[
+            "width" if axis == 0 else "height"] / 2
+        word = {(0, -1): "left", (0, 1): "right", (1, -1): "bottom", (1, 1): "top"}[(axis, side)]
+        g = self.p(name, -side * (v - edge), f"{what}, from the {word} edge")
+        e = self.edge(axis, side)
+        if side < 0:
+            return g if e == "0" else f"{e} + {g}"
+        return f"-{g}" if e == "0" else f"{e} - {g}"
+
+    def pos_from_edges(self, hn: str, c) -> str:
+        """:meth:`pos` of a single feature ``hn`` centred at ``c``, each coordinate tied to
+        an edge (:meth:`at`) written by a param of its distance from it (``hn_x``,
+        ``hn_y``: :meth:`from_edge`), so the maker's "move it 15 mm in" is one number."""
+        if self.anchor is None or self.shared(c) is not None or \
+                getattr(self, "profile", None) is not None:
+            return self.pos(c)
+        out = []
+        for axis, word in ((0, "x"), (1, "y")):
+            sh = self.anchor[0]
+            half = sh.args["width" if axis == 0 else "height"] / 2
+            side = _tied({k: abs(c[axis] - sh.center[axis] - k * half) for k in (0, -1, 1)})
+            inside = -side * (c[axis] - sh.center[axis] - side * half) > 0   # (not in a tab)
+            out.append(self.at(c[axis], axis) if side == 0 or not inside else
+                       self.from_edge(f"{hn}_{word}", c[axis], axis, side, "its centre"))
+        return f"({out[0]}, {out[1]})"
+
     def pos(self, c) -> str:
         """A point, as a shared centre's name when it is one, else placed by :meth:`at`."""
         return self.shared(c) or f"({self.at(c[0], 0)}, {self.at(c[1], 1)})"

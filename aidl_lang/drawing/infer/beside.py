@@ -34,3 +34,23 @@ def _beside(prev, d: Drawing, params, prefix: str, stats):
             shift = f"({edge} + {g} - {_r(b[lo])})"
             return axis, (shift, None) if axis == 0 else (None, shift)
     return None
+
+
+def beside_order(items: list, parts: bool) -> list:
+    """``items`` (``(kind, name, drawing, ...)``) with two or three plain solids drawn side
+    by side (their spans along x, else along y, apart) written from the left (the bottom)
+    one on, so each is placed beside the one before it by a gap param (:func:`_beside`; issue
+    114: three plates in a row written largest first left the first without its gap); the
+    names stay; else ``items`` as they are (a sheet of ``parts``, a drawing of texts)."""
+    solids = [it for it in items if it[0] == "solid" and len(it) == 3]
+    if parts or len(solids) != len(items) or not 2 <= len(solids) <= 3:
+        return items
+    boxes = [it[2].box() for it in solids]
+    if any(b is None for b in boxes):
+        return items
+    for axis in (0, 1):
+        spans = sorted((b[axis], b[axis + 2]) for b in boxes)
+        if all(hi + EQUAL_TOL < lo for (_, hi), (lo, _) in zip(spans, spans[1:])):
+            order = sorted(range(len(items)), key=lambda k: boxes[k][axis])
+            return [items[k] for k in order]
+    return items

@@ -44,9 +44,9 @@ from collections import Counter
 from ...geometry.shapes.curves import Loop
 from .attachments import _attachments, _circle_attachments
 from .params import _Params, _add0, _ctor, _deg, _hole_name, _r
-from .patterns.find import (lattices, _Cells, _copies, _grid, _line, _polar, _runs, _stagger,
-                            _hex_field, _hex_rect, _whole, _features, _unknown)
-from .shapes import EQUAL_TOL, ROUND_TOL, Shape, _close, circular, recognise
+from .patterns.find import (lattices, _Cells, _copies, _grid, _line, _off_circle, _polar, _runs,
+                            _stagger, _hex_field, _hex_rect, _whole, _features, _unknown)
+from .shapes import EQUAL_TOL, PRECISION, ROUND_TOL, Shape, _close, circular, recognise
 from .anchors import _Anchored
 from .body import _Bodies
 from .engrave.engraving import _engraving
@@ -55,13 +55,14 @@ from .holes.makers import SINGLE_PARAMS, _MakerFeatures
 from .naming import _far, _named_parts, _short_names, _summary
 from ..chains.layers import _hole_layers
 from .profiles.write import _Profiles
-from .mirror import mirrored_pair, pair_items, write_pair
+from .mirror import mirrored_pair, pair_gap, pair_items, write_pair
 from .holes.sinks import Marks
 from .patterns.groups import _Groups, corner_sets, corners_and_pattern, follows
 from .patterns.irregular import _Irregular
+from .patterns.mixed import _Mixed, alike
 from .patterns.fields import _Fields
 from .patterns.pairs import RING_MAX, RING_MIN, RING_WORK, _Pairs, _ring_about
-from .beside import _beside
+from .beside import _beside, beside_order
 from .patterns.rings import _start, ring_in_scatter, rings, start_angle
 from .patterns import turns
 from ..write.program import _containers, _cut_notes, _layer_items, _place, _whole_ellipse
@@ -81,7 +82,7 @@ class _Stats:
 
 
 class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, _Fields,
-            _Pairs):
+            _Pairs, _Mixed):
     """One part's statements, written into ``w`` at ``depth``."""
 
     def __init__(self, w: _Writer, params: _Params, stats: _Stats, prefix: str) -> None:
@@ -178,6 +179,7 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
         centres = []          # bolt circle centres, for naming a bore
         self.share_centres(depth, groups, body)
         self.merge_odd(groups, body)
+        self.merge_mixed(groups)        # one lattice of holes of two sizes (a checkerboard)
         # the middles of the groups of three or more and how far their holes are from it
         # (a motor plate's corner slots about its bore, outside its motor holes)
         self.rings_at = [(mid, sum(math.dist(h.center, mid) for h in g) / len(g))
@@ -198,12 +200,15 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
             # equal holes of several features (a grille and a grid): each its own pattern;
             # a sibling's lattice for one with a hole left out (irregular: _gapped_as)
             self.kin = lattices([[cs[i] for i in part] for part in parts or []])
+            # alike groups of one size (two 2 x 2s): one size param for all (issue 114)
+            self.one_size = [g[0].kind, g[0].size, None] if alike(parts, cs, self.kin) else None
             for part in parts or [range(len(g))]:
                 sub = [g[i] for i in part]
                 if len(sub) == 1:
                     singles += sub
                 elif not self.sunk_as(sub) or not self.pattern(depth, sub, body, centres):
                     singles += sub
+        self.one_size = None
         few = len(singles) <= SINGLE_PARAMS
         for k, sh in enumerate(singles):
             self.check(k, "writing the holes")
@@ -343,6 +348,13 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
         """Params for a repeated shape's sizes (``many``), else none (literal numbers)."""
         if not many:
             return {}
+        one = getattr(self, "one_size", None)       # groups of one size (holes): one param
+        if one is not None and (sh.kind, sh.size) == (one[0], one[1]):
+            if one[2] is None:
+                self.one_size = None
+                one[2] = self.size_params(base, sh, many)
+                self.one_size = one
+            return one[2]
         a = sh.args
         if sh.kind == "Circle":
             return {"diameter": self.p(base + "_d", 2 * a["radius"])}
@@ -397,7 +409,7 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
                     w.emit(depth, f"# at the corners, {inx if inx == iny else inx + ' and ' + iny}"
                                   f" in from the edges")
                     if self.sinks is None and bname in self.rects and \
-                            not any(id(m) in getattr(self, "odd", {}) for m in g):
+                            not any(id(m) in getattr(self, "odd", {}) or id(m) in self.mixed for m in g):
                         # the language's own: the inset is one word to change (issue 93)
                         first = c.replace("sx", "-1").replace("sy", "-1")
                         if wx and hy:       # the bottom-left corner's, where it goes
@@ -429,6 +441,11 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
                 pol = None      # a square given by its side (31 mm), not its circle (43.84)
             if pol is not None:
                 C, R, a0, n = pol
+                if PRECISION.get() > EQUAL_TOL and _off_circle(cs, pol) > EQUAL_TOL:
+                    self.stats.readings.append(
+                        f"{n} holes evenly round a centre to the drawing's own precision "
+                        f"({_num(PRECISION.get())} {UNIT.get()}): one bolt circle, its holes "
+                        f"written on it exactly")
                 around = self.surrounds(C)
                 hn = self.name("motor_holes" if around == "Circle" and n == 4 else "bolt_circle")
                 pcd = self.p(f"{hn}_pcd", 2 * R, "pitch circle diameter")
@@ -461,6 +478,9 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
             return True
         # a pair placed symmetrically about the body's centre (mirrored about its axis)
         if self.mirrored(depth, g, body, sh, base, cs):
+            return True
+        # two in line on either side of the centre line, not mirrored: each from its edge
+        if self.straddling(depth, g, sh, base, cs):
             return True
         # a row, a column or a grid
         gr = _grid(cs)
@@ -731,7 +751,9 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
             self.w.emit(depth, f"hole {hn} {{ h = {_ctor(sh, '')} }}")
             self.w.emit(depth, f"Fixed({hn}.h)")
             return
-        self.hole_block(depth, hn, sh, self.pos(sh.center), sizes)
+        # a feature of its own by an edge: its distance from it a param (issue 114)
+        self.hole_block(depth, hn, sh, self.pos_from_edges(hn, sh.center) if few and sizes
+                        else self.pos(sh.center), sizes)
 
 
 def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d: Drawing,
@@ -827,6 +849,19 @@ def _solid(w: _Writer, params: _Params, stats: _Stats, depth: int, name: str, d:
 
 def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: bool = False,
                         deadline=None) -> tuple[str, list[Note]]:
+    """:func:`_inferred` with the drawing's own precision (:data:`~.shapes.PRECISION`, in
+    the program's unit: the coarsest of its layers', issue 114) in force."""
+    from ..model import UNIT_MM
+    prec = max((getattr(d, "precision", 0.0) for _, d in layers), default=0.0)
+    token = PRECISION.set(prec / UNIT_MM[UNIT.get()])
+    try:
+        return _inferred(layers, source, parts, deadline)
+    finally:
+        PRECISION.reset(token)
+
+
+def _inferred(layers: list[tuple[str, Drawing]], source: str, parts: bool = False,
+              deadline=None) -> tuple[str, list[Note]]:
     """The AIDL text of a drawing read layer by layer, as :func:`~.program.to_program` takes
     it (``parts``: a sheet, one solid per outer loop; ``deadline``: the import's), written as
     recognised shapes, patterns and parameters (module doc), its head comment saying what
@@ -842,7 +877,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
     layers, moved = _hole_layers(layers, deadline)
     items = in_unit(_layer_items(layers, parts, deadline, source, w.notes, w.overlaps))
     items = _copies(items, deadline)
-    items = _named_parts(pair_items(items, deadline))
+    items = beside_order(_named_parts(pair_items(items, deadline)), parts)
     marks = Marks(items)        # countersinks, written with their holes
     solids = sum(1 for it in items if it[0] == "solid")
     multi = len(items) > 1 or any(len(it) > 3 for it in items)
@@ -877,7 +912,7 @@ def to_program_inferred(layers: list[tuple[str, Drawing]], source: str, parts: b
             word = _named_parts([("solid", "part", pair[0])])[0][1]
             write_pair(w, depth, name if name != word else word + "s", pair[0], pair[1], d.box(),
                        word, lambda dp, nm, dd: _solid(w, params, stats, dp, nm, dd, "", marks=marks,
-                                                         keep=pair[1]))
+                                                         keep=pair[1], shift=pair_gap(dd, pair[1], params, stats)))
             stats.patterns["mirrored part"] += 1
             name = name if name != word else word + "s"
             prev = None

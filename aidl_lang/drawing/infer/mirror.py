@@ -122,6 +122,28 @@ def axis_line(axis: tuple, box: tuple) -> tuple:
 
 
 
+def pair_gap(first: Drawing, axis: tuple, params, stats) -> tuple | None:
+    """The shift (program text per axis, as :func:`~.beside._beside` gives one) that places
+    ``first``, the part drawn beside its mirror image about ``axis`` (``("x", a)``), from
+    the mirror line by half a gap param (``gap``: between the part and its image, issue
+    114: the gap was a literal mirror line), so a new gap moves both parts apart about the
+    line; None when the part touches the line (no gap)."""
+    from .params import _r
+    k = 0 if axis[0] == "x" else 1
+    box = first.box()
+    if box is None:
+        return None
+    a = axis[1]
+    near = box[k + 2] if abs(box[k + 2] - a) <= abs(box[k] - a) else box[k]
+    if abs(a - near) <= TOL:
+        return None
+    g = params.add("gap", 2 * abs(a - near), "between the part and its mirror image")
+    stats.readings.append(f"a part and its mirror image {_r(2 * abs(a - near))} apart: the "
+                          f"gap a param, `{g}`, about the mirror line")
+    term = f"({_r(a - near)} {'-' if near < a else '+'} {g} / 2)"
+    return (term, None) if k == 0 else (None, term)
+
+
 def write_pair(w, depth: int, name: str, first: Drawing, axis: tuple, box: tuple, word: str,
                solid) -> None:
     """``assembly NAME { solid WORD {...} ... WORD_mirror = Mirrored(WORD, about=axis) }``:

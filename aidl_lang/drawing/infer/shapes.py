@@ -17,6 +17,7 @@ back through the compiler and compares to 1e-6 mm.  Lengths in mm, angles in rad
 """
 from __future__ import annotations
 
+import contextvars
 import math
 from dataclasses import dataclass, field
 
@@ -25,6 +26,11 @@ from ..chains.chain import circular  # noqa: F401  (the loops' own form, as the 
 
 EQUAL_TOL = 1e-7    # mm: two points, radii or lengths this close are the same
 ROUND_TOL = 1e-9    # mm: a number within this of a shorter decimal is written as that decimal
+# the drawing's own precision (the program's unit): one unit of the last decimal its file
+# writes numbers to (an SVG's 6 decimals: 1e-6), 0 for a float's; set by to_program_inferred
+# (issue 114: a bolt circle whose centres carry 6 decimals is one, equal within 2 of it)
+PRECISION: "contextvars.ContextVar[float]" = contextvars.ContextVar("aidl_infer_precision",
+                                                                   default=0.0)
 
 
 @dataclass

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import io
 import math
+import re
 
 from ...geometry.shapes.curves import Circle, Line
 from .affine import arc_curve, singular, whole_curve
@@ -26,12 +27,33 @@ from ..model import (_OPTS, JOIN_TOL, UNIT_MM, Drawing, DrawingError, Note, _che
 SVG_ELEMENT_UNITS = 40
 
 
+PRECISION_DIGITS = (3, 7)   # an SVG whose numbers carry at most 3 to 7 decimals is that precise
+
+
+def _svg_precision(data: bytes, scale: float) -> float:
+    """One unit of the last decimal the SVG ``data`` writes its numbers to, in mm (``scale``:
+    mm per user unit, :func:`_svg_scale`): ``1e-6`` for centres like ``75.980762`` in a mm
+    viewBox; 0 when some number carries more decimals than :data:`PRECISION_DIGITS` allows
+    (a float's own precision, as svgwrite writes them) or none more than 2 (whole numbers
+    and ``version="1.1"`` say nothing of the precision of a drawing)."""
+    digits = max((len(m) for m in re.findall(rb"\d\.(\d+)", data)), default=0)
+    if not PRECISION_DIGITS[0] <= digits <= PRECISION_DIGITS[1]:
+        return 0.0
+    return 10.0 ** -digits * scale
+
+
+def _px_per_user(svg) -> float:
+    """svgelements' px per user unit (its viewBox scale), 1 without a viewBox."""
+    vb = getattr(svg, "viewbox", None)
+    return (float(svg.width) / vb.width) if vb is not None and vb.width and svg.width else 1.0
+
+
 def _svg_scale(svg, unit: str | None) -> tuple[float, str]:
     """``(scale, unit)``: mm per px of svgelements' numbers (its viewBox scale undone, the exact
     mm per user unit from ``unit``, else the width attribute and viewBox, else CSS px) and the
     drawing's unit."""
     vb = getattr(svg, "viewbox", None)
-    k = (float(svg.width) / vb.width) if vb is not None and vb.width and svg.width else 1.0
+    k = _px_per_user(svg)
     if unit is not None:
         mm_per_user = UNIT_MM[unit]
     else:
@@ -200,6 +222,7 @@ def _read_svg(data: bytes, name: str, layer, color, ident, unit: str | None) -> 
                           "write them with Text(...) in a `drawing` of the part"))
     d = _finish(pieces, loops, circles, ellipses, notes, unit, name)
     d.texts = texts
+    d.precision = _svg_precision(data, scale * _px_per_user(svg))
     if flat_note is not None:         # the message of an import that gives nothing
         d.seen = "left out: " + flat_note.message
     return d

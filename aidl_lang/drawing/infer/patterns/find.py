@@ -28,9 +28,9 @@ import math
 
 from ....geometry.shapes.curves import Arc, Line
 from ..params import _r
-from ..shapes import EQUAL_TOL, _snap_angle, circular, recognise
+from ..shapes import EQUAL_TOL, PRECISION, _snap_angle, circular, recognise
 from ...write.program import _containers
-from ...write.writer import _ident
+from ...write.writer import _ident, _num
 from ...model import Drawing
 
 
@@ -66,13 +66,62 @@ def _polar(centers: list):
     rad = [math.dist((cx, cy), p) for p in centers]
     R = sum(rad) / n
     if R <= EQUAL_TOL or max(rad) - min(rad) > EQUAL_TOL:
-        return None
+        return _polar_as_drawn(centers, (cx, cy))
     step = 2 * math.pi / n
     a0 = min(math.atan2(p[1] - cy, p[0] - cx) % (2 * math.pi) for p in centers) % step
     a0 = _snap_angle(a0, R)
     if not _each_once(centers, ((cx + R * math.cos(a0 + k * step),
                                  cy + R * math.sin(a0 + k * step)) for k in range(n))):
+        return _polar_as_drawn(centers, (cx, cy))
+    return (cx, cy), R, a0, n
+
+
+def _off_circle(centers: list, pol) -> float:
+    """How far the farthest of ``centers`` is from its place on the bolt circle ``pol``
+    (:func:`_polar`'s), in mm: 0 for an exact one, up to two units of the drawing's last
+    decimal for one :func:`_polar_as_drawn` found."""
+    (cx, cy), R, a0, n = pol
+    step = 2 * math.pi / n
+    out = 0.0
+    for p in centers:
+        a = a0 + step * round((math.atan2(p[1] - cy, p[0] - cx) - a0) / step)
+        out = max(out, math.dist(p, (cx + R * math.cos(a), cy + R * math.sin(a))))
+    return out
+
+
+POLAR_AS_DRAWN = 360    # holes at most, of a bolt circle equal within the drawing's precision
+
+
+def _polar_as_drawn(centers: list, mid):
+    """:func:`_polar` within the drawing's own precision (:data:`~.shapes.PRECISION`, issue
+    114: an SVG whose centres carry 6 decimals): every centre within two units of its last
+    decimal of its place on the circle, the centre and radius the shortest decimals within
+    one, the first hole's angle a round number of degrees within one at the radius; None
+    when the drawing writes floats (no precision of its own) or they are not one."""
+    tol = 2 * PRECISION.get()
+    n = len(centers)
+    if tol <= EQUAL_TOL or n > POLAR_AS_DRAWN:
         return None
+    cx, cy = (float(_num(v, tol / 2)) for v in mid)
+    rad = [math.dist((cx, cy), p) for p in centers]
+    R = float(_num(sum(rad) / n, tol / 2))
+    if R <= tol or max(abs(r - R) for r in rad) > tol:
+        return None
+    step = 2 * math.pi / n
+    a0 = min(math.atan2(p[1] - cy, p[0] - cx) % (2 * math.pi) for p in centers) % step
+    if step - a0 <= tol / R:            # the first hole a hair below the x axis: on it
+        a0 = 0.0
+    d = math.degrees(a0)
+    a0 = next((math.radians(round(d, k)) for k in range(10)
+               if abs(math.radians(round(d, k)) - a0) * R <= tol / 2), a0)
+    taken: set = set()
+    for k in range(n):
+        q = (cx + R * math.cos(a0 + k * step), cy + R * math.sin(a0 + k * step))
+        hit = next((i for i, p in enumerate(centers) if i not in taken and math.dist(p, q) <= tol),
+                   None)
+        if hit is None:
+            return None
+        taken.add(hit)
     return (cx, cy), R, a0, n
 
 
@@ -870,7 +919,7 @@ def _same_sig(a, b) -> bool:
 # what a Drawing holds that the inferred writer writes (a field it does not know, added to
 # the reader later, sends the part to the piece-by-piece writer, so nothing is dropped)
 _KNOWN = {"outlines", "circles", "ellipses", "paths", "notes", "unit", "texts", "seen",
-          "engrave", "paths_cut"}
+          "engrave", "paths_cut", "precision"}
 
 
 def _unknown(d: Drawing) -> bool:

@@ -145,13 +145,8 @@ class _Groups:
                 at.append(self.from_side(ref.center[k], k, 0))
                 said.append("centre line")
                 continue
-            gap = abs(ref.center[k] - corner[k])
-            e = self.edge(k, side)
-            g = self.p(f"{hn}_{word}", gap, "the set's hole nearest the corner, from the " +
-                       {(0, -1): "left", (0, 1): "right", (1, -1): "bottom",
-                        (1, 1): "top"}[(k, side)] + " edge")
-            at.append((g if e == "0" else f"{e} + {g}") if side < 0 else
-                      (f"-{g}" if e == "0" else f"{e} - {g}"))
+            at.append(self.from_edge(f"{hn}_{word}", ref.center[k], k, side,
+                                     "the set's hole nearest the corner"))
             said.append({(0, -1): "left", (0, 1): "right", (1, -1): "bottom",
                          (1, 1): "top"}[(k, side)])
         pts = [_pt((m.center[0] - ref.center[0], m.center[1] - ref.center[1])) for m in rest]

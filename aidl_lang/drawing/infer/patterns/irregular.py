@@ -84,6 +84,7 @@ class _Irregular:
         loop (``index``: Shape -> the loop's variables on that turn), ``(corner_holes_odd_d
         if sx == 1 and sy == 1 else corner_hole_d)``; the odd member's own when ``sh`` is
         it and there is no loop."""
+        sizes = self.mixed_sizes(hn, sh, sizes, index)     # a lattice of two sizes (mixed.py)
         odd = getattr(self, "odd", None)
         if not odd or not sizes:
             return sizes

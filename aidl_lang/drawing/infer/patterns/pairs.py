@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 
 from ..shapes import EQUAL_TOL
+from ...write.writer import _num
 from . import turns
 
 
@@ -93,5 +94,39 @@ class _Pairs:
                             turns.mirrored(B, sym_x))
             w.emit(depth, "}")
             self.stats.patterns["mirrored pair"] += 1
+            return True
+        return False
+
+    def straddling(self, depth: int, g: list, sh, base: str, cs: list) -> bool:
+        """Two equal holes ``g`` in line along x (or y) on either side of the body's centre
+        line, each nearer its own edge, and not mirrored about the line (:meth:`mirrored`
+        takes those): no row a maker dimensions (issue 114: holes at x = 30 and 90.02 on a
+        120 mm plate are each 30 mm from an edge), so each is written from its own nearer
+        edge, one size param, and the head says which reading was taken; False (nothing
+        written) when they are not such a pair."""
+        if len(g) != 2 or self.anchor is None or getattr(self, "profile", None) is not None:
+            return False
+        (x1, y1), (x2, y2) = cs
+        for axis in (0, 1):
+            if abs((y1, x1)[axis] - (y2, x2)[axis]) > EQUAL_TOL:
+                continue            # not in line along this axis
+            ends = sorted((x1, x2) if axis == 0 else (y1, y2))
+            if [self.nearest(v, v, axis) for v in ends] != [-1, 1]:
+                continue
+            hn = self.name(base + "s")
+            sizes = self.size_params(hn, sh, True)
+            B, half = self.anchor[0].center[axis], self.anchor[0].args[
+                "width" if axis == 0 else "height"] / 2
+            gaps = (ends[0] - (B - half), B + half - ends[1])
+            self.stats.readings.append(
+                f"2 {base}s in line at {'x' if axis == 0 else 'y'} = {_num(ends[0])} and "
+                f"{_num(ends[1])} on either side of the centre line, not mirrored about it "
+                f"({_num(gaps[0])} and {_num(gaps[1])} from the edges): each kept from its own "
+                f"nearer edge, not a row of 2 from one end")
+            for m in sorted(g, key=lambda h: h.center[axis]):
+                self.sunk_as([m])
+                self.hole_block(depth, self.numbered(base) if base == "hole" else
+                                self.name(base), m, self.pos(m.center), sizes)
+            self.stats.patterns["equal sizes"] += 1
             return True
         return False
