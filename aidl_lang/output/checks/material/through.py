@@ -36,6 +36,14 @@ from ...part.edges.shared import TWO_PI, _span
 from ..common import _inside, _signed, below
 from .walls import _thin
 
+
+def _three(w: float, t: float) -> str:
+    """A bridge's width ``w`` (mm) to three significant figures ("0.05", "0.123"), or more
+    decimals where those would not read under the minimum ``t`` (:func:`..common.below`)."""
+    text = f"{w:.3g}"
+    return text if float(text) < t else below(w, t, 3)
+
+
 OFF = 1e-3      # of the band's own area: a through-cut with less of it inside cuts nothing
 # mm of a sheet-level cut's length on a part that W0525 lets pass: a cut that ends on a part's
 # curved edge (a notch's outer rest) runs up to CHORD_TOL over the edge's chords at each end
@@ -369,7 +377,7 @@ def _end_bridges(d: Drawing, s, whole, cuts: list, t: float, sink: DiagnosticSin
         x, y = V[e]
         sink.warning(
             "W0507", f"a bridge of `{s.path}` between the end of through-cut `{g.label}` at "
-            f"({x:.2f}, {y:.2f}) and {other} is {below(w, t, 3)} mm wide, thinner than {t:g} mm: the "
+            f"({x:.2f}, {y:.2f}) and {other} is {_three(w, t)} mm wide, thinner than {t:g} mm: the "
             "laser burns it through or leaves a strip too weak to hold", g.span or s.span,
             hint=f"end `{g.label}` at least {t:g} mm from {other}, or run it on to meet it if "
                  f"the cut is meant to go through; if the design means this bridge, say so: "
