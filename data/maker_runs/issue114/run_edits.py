@@ -145,6 +145,18 @@ DRAWN: dict = {}
 # Where several params fit an edit's words and number, the one a maker picks on reading the
 # program (drawing, function argument) -> param name; filled after reading the programs.
 PICK: dict = {
+    # the Pi's 2 x 2 grid is placed `center=(20 + i * holes_pitch_x, 15 + ...)`: the 20 is a number
+    # in the text, no param (the word match alone would take `holes_pitch_x`, which no maker
+    # moving a board sets)
+    ("pi_plate", "board_x"): None,
+    # the hole is `75 - width / 2 + 25`: the 25 is a number in the text, no `hole1_x`
+    ("asym_pair", "left_x"): None,
+    # the bore is `bore_c = (width - 35, height / 2)`: the 35 is a number in the text, no param
+    ("motor_far", "motor_from_right"): None,
+    # the one margin param, `holes_margin = 10  # from the plate's edges to the field's`: the drawn
+    # margin is 12 (the head's reading is 10, the roundest that keeps the holes); its meaning is
+    # the maker's margin, so a maker wanting a 15 mm margin sets it to 15
+    ("perf_plate", "margin"): "holes_margin",
 }
 
 
