@@ -158,9 +158,10 @@ async def test_mcp_server_over_stdio(tmp_path):
             doc = _doc((await session.call_tool(
                 "import_drawing", {"path": "plate.dxf", "output": "back.aidl"})))
             assert doc["ok"] and doc["output"] == "back.aidl", doc
-            # (off the centre line: from the nearer, right edge of the plate centred on 0)
-            assert "hole hole1 { h = Circle(center=(width / 2 - 10, 0), diameter=hole1_d) }" \
-                in doc["program"]
+            # (off the centre line: from the nearer, right edge of the plate centred on 0, by a
+            # param of its own for that distance, issue 114)
+            assert "hole hole1 { h = Circle(center=(width / 2 - hole1_x, 0), diameter=hole1_d) }" \
+                in doc["program"] and "param hole1_x = 10 mm" in doc["program"], doc["program"]
             assert (root / "back.aidl").read_text() == doc["program"]
             r = await session.call_tool("import_drawing", {"path": "plate.aidl"})
             assert r.is_error and "not a .dxf or .svg" in _text(r)
