@@ -278,3 +278,26 @@ def test_the_gap_to_a_glyph_box_squeezed_to_a_line_is_measured_without_a_divisio
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         assert _quad_gap(p, line) == 2.0 and _quad_gap(line, p) == 2.0
+
+
+def test_W0513_says_which_way_the_text_moves_and_the_move_clears_it(compile_text):
+    """A label whose write-on line starts inside it (issue 111's luggage tag: a model read
+    "move the text further along the mark" both ways): the hint gives the move as a vector,
+    (-3.05, 0) mm, and the text moved by it is clear."""
+    src = """units mm
+solid tag {
+    body = Rectangle(center=(0, 0), width=95, height=55)
+    drawing labels {
+        phone = Text("PHONE", position=(%s, -10), size=4, anchor="start")
+        phone_line = Line((-8, -10), (42, -10))
+    }
+}
+"""
+    (w,) = warnings(compile_text, src % "-25", "W0513")
+    by = re.search(r"move the text (\S+) mm further along the mark \(by \((\S+), (\S+)\) mm\)",
+                   w.hint)
+    assert by, w.hint
+    d, dx, dy = (float(x) for x in by.groups())
+    assert (d, dx, dy) == (pytest.approx(3.05, abs=0.005), -d, 0.0)
+    assert not warnings(compile_text, src % f"{-25 + dx:.2f}", "W0513")
+    assert warnings(compile_text, src % f"{-25 - dx:.2f}", "W0513")   # the other way: worse

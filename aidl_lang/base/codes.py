@@ -888,8 +888,8 @@ strokes; 0.3 mm is about an engraved line's width), or it enters the text's box 
 0.1 mm (between its letters). Close labels and close marks give one warning per pair of
 statements (the closest pair, copies made in a loop named by index: `ticks[0]`), with the
 number of such pairs. The warning names both, with the overlap's area, the gap, or the length
-of the mark inside the text, and how much to shorten the mark or move the text (text drawn
-over text: the least move right, left, up or down, as a vector, that leaves half the text size
+of the mark inside the text, and how much to shorten the mark or move the text (a move
+along or away from the mark as a vector too, `(by (-3.05, 0.00) mm)`; text drawn over text: the least move right, left, up or down, as a vector, that leaves half the text size
 between the two boxes, `move `p.d.b` 6.96 mm right, by (6.96, 0.00) mm`). Move the text
 clear (beside the tick, further out), shorten the mark, grow the frame, or make the text
 smaller: the hint gives the largest size at which the clearance holds (`size=N mm`: the

@@ -539,7 +539,12 @@ def _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs, M
                         f"{max(shorten):.2f} mm further from the text")
         if all(x is not None for x in move):
             along = "along the mark" if all(f[0] for f in fix) else "away from the mark"
-            ways.append(f"move the text {max(move):.2f} mm further {along}")
+            # which way, as a vector (a model read "further along the mark" both ways, issue 111)
+            way = fix[0][5]         # set wherever a move is (_fix)
+            dx, dy = (round(max(move) * float(w), 2) + 0.0 for w in way)
+            by = (f" (by ({dx:.2f}, {dy:.2f}) mm)"
+                  if all(float(np.hypot(*(f[5] - way))) < 1e-6 for f in fix) else "")
+            ways.append(f"move the text {max(move):.2f} mm further {along}{by}")
         frame = [f[4] for f in fix]
         if all(x is not None for x in frame):
             ways.append(f"grow `{m.label}` by {max(frame):.2f} mm on each side")
@@ -613,14 +618,15 @@ def _fitting_size(tseg, mseg, ends, box3, size: float, g) -> float | None:
 
 
 def _fix(tseg, mseg, items, box3, g, k, pt, pm, c: float, gap: float) -> tuple:
-    """How to clear a text of a mark: ``(ends, shorten, move, end, frame)``.  ``ends``: the mark is one
+    """How to clear a text of a mark: ``(ends, shorten, move, end, frame, way)``.  ``ends``: the mark is one
     straight line whose end is its point nearest the text; ``shorten``: by how much (mm) that
     end must come back along the line (None when no shortening clears it, or not a line);
     ``move``: how far (mm) the text must move, along the line past that end (a line) or
     straight away from the mark's nearest point ``pm`` (else), None when no move within
     three text boxes clears it; ``end``: the line's end nearest the text (else ``pm``);
     ``frame``: when the mark is a closed outline around the text (a frame), by how much (mm)
-    to grow it on each side (the clearance less the ``gap``), else None."""
+    to grow it on each side (the clearance less the ``gap``), else None; ``way``: the unit
+    vector the text moves along (None with ``move``)."""
     rot, box = box3[1], (None if g.data.get("along") is not None else box3[2])
     ends, u, shorten, q = False, None, None, np.asarray(pm, float)
     if len(items) == 1 and items[0][0] == "line":
@@ -642,7 +648,7 @@ def _fix(tseg, mseg, items, box3, g, k, pt, pm, c: float, gap: float) -> tuple:
         v = np.asarray(pt, float) - np.asarray(pm, float)
         nv = float(np.hypot(*v))
         if nv < 1e-9:
-            return ends, shorten, None, q, None
+            return ends, shorten, None, q, None, None
         u = v / nv
     size = float(g.data.get("size", 0.0) or 0.0) or 1.0
     move = _least(lambda s: _clear_of(tseg, mseg, rot, box, c, s * u), 3 * size + c)
@@ -652,7 +658,7 @@ def _fix(tseg, mseg, items, box3, g, k, pt, pm, c: float, gap: float) -> tuple:
         ring = _polyline(items[0])
         if bool(_inside(np.vstack([tseg[0], tseg[1]]), _edges([ring[:-1]])).all()):
             frame = math.ceil((c - gap) * 100 - 1e-9) / 100
-    return ends, shorten, move, q, frame
+    return ends, shorten, move, q, frame, u
 
 
 def _quad_gap(p, q) -> float:
