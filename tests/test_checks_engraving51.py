@@ -301,3 +301,26 @@ solid tag {
     assert (d, dx, dy) == (pytest.approx(3.05, abs=0.005), -d, 0.0)
     assert not warnings(compile_text, src % f"{-25 + dx:.2f}", "W0513")
     assert warnings(compile_text, src % f"{-25 - dx:.2f}", "W0513")   # the other way: worse
+
+
+def test_W0505_on_one_copy_of_a_loop_names_the_copy_and_leads_with_the_move(compile_text):
+    """Issue 111's ruler: the "15" of a loop's numbers runs over the hanging hole. The warning
+    names the copy (`num[15]`), and the hint does not offer `max_width=`/`size=` to the
+    statement (a model obeys it, and every number shrinks): it says that would change every
+    copy and leads with moving the hole or this copy; moving the hole clears it."""
+    src = """units mm
+solid ruler {
+    body = Rectangle(center=(85, 15), width=170, height=30)
+    hole hang { c = Circle(center=(%s, 11), diameter=6) }
+    drawing scale {
+        for k in range(16) {
+            num = Text(str(k), position=(10 + 10 * k, 11), size=3)
+        }
+    }
+}
+"""
+    (w,) = warnings(compile_text, src % "160", "W0505")
+    assert w.message.startswith("engraving `ruler.scale.num[15]` runs across a hole"), w.message
+    assert "would change every copy: move what it crosses, or this copy" in w.hint, w.hint
+    assert "`max_width=" not in w.hint.replace("`max_width=` or", ""), w.hint
+    assert not warnings(compile_text, src % "166", "W0505")

@@ -656,7 +656,9 @@ the width it has room for where it is written, computed (scaled about its positi
 smaller size draws it, 0.5 mm clear of the cut): `max_width=29.9 mm` (it shrinks to fit), or
 that `size=`. An `Inside(...)` of its box is offered only when it leaves by the outline alone, the
 part has no hole, and the fit would shrink it by more than a tenth; a text wider than the room
-conflicts (E0401) with such a constraint.
+conflicts (E0401) with such a constraint. One copy of a loop's statement (a ruler's `num[15]` over its hanging
+hole) is named with its index, and its hint offers no `max_width=` or `size=` for the
+statement (that would shrink every copy): it leads with moving what it crosses, or that copy.
 """),
     "W0506": ("geometry that adds nothing", """
 A child solid lies wholly inside the rest of its parent, so it changes nothing in the final

@@ -243,8 +243,8 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         if _is_flat_text(g, items):
             said = _text_off(d, roots, part, g, items, pts, inside, in_outline, tick)
             if said is not None:
-                sink.warning("W0505", f"engraving `{g.label}` runs {where} of `{part.path}` "
-                             f"({said[0]})", g.span, hint=said[1])
+                sink.warning("W0505", f"engraving `{_copy_label(g)}` runs {where} of "
+                             f"`{part.path}` ({said[0]})", g.span, hint=said[1])
                 continue
         off = float((~inside).sum())
         # a letter's stroke over a screw hole is under 1% of a long text's samples: "0%" read
@@ -344,6 +344,13 @@ def _text_off(d: Drawing, roots, part, g, items, pts, inside, in_outline, tick=N
                        g.data.get("valign", "baseline"), g.data.get("rotation", 0.0))
     name = str(getattr(g, "label", "")).rsplit(".", 1)[-1] or "text"
     where = "; ".join(places)
+    # one copy of a loop's statement (a ruler's "15" over its hanging hole, issue 111): a size
+    # given to the statement shrinks every copy, so the hint leads with the move instead
+    copy = _copy_label(g)
+    one_of_many = "" if copy == g.label else (
+        f"{where}: `{copy.rsplit('.', 1)[-1]}` is one of the copies its statement draws in a "
+        "loop, and `max_width=` or `size=` there would change every copy: move what it "
+        "crosses, or this copy (skip it in the loop with an `if`, or draw it apart)")
     if not rel or not size > 0:
         return share, f"{where}: make `{name}` smaller or move it onto the material"
     at = np.asarray(items[0][1], float) - np.asarray(rel[0][0], float)     # its position point
@@ -363,6 +370,8 @@ def _text_off(d: Drawing, roots, part, g, items, pts, inside, in_outline, tick=N
                f"({at[0]:.2f}, {at[1]:.2f}))"
         if not len(hole_pts) and not holed:      # the box constraint may move it
             return share, f"{told}; {_off_outline_hint(d, part, g, pts, pts[~inside])}"
+        if one_of_many:
+            return share, f"{one_of_many}; where it is written this copy has no room"
         return share, f"{told}: move `{name}` onto the material, where it has room, or make it smaller"
     lo, hi = k, min(k + 0.02, 1.0)
     for _ in range(30):
@@ -376,6 +385,9 @@ def _text_off(d: Drawing, roots, part, g, items, pts, inside, in_outline, tick=N
     fit = (f"{where}. Where it is written it has room for {w:g} mm along its baseline "
            f"({CUT_CLEAR} mm clear of the cut; it is {wide:.1f} mm wide): `max_width={w:g} mm` "
            f"in `{name}` (it shrinks to fit about its position point), or `size={s_new:g} mm`")
+    if one_of_many:
+        return share, (f"{one_of_many}; where it is written this copy has room for {w:g} mm "
+                       f"along its baseline (it is {wide:.1f} mm wide)")
     if not len(hole_pts) and lo < 0.9 and not holed:    # much smaller: moving it may be better
         other = _off_outline_hint(d, part, g, pts, pts[~inside])
         if "`Inside(" in other:
