@@ -2,7 +2,7 @@
 letters' area: an SVG fill layer (re-read by svgelements), a solid DXF HATCH (ezdxf), a filled
 PDF path (pdfplumber), a LightBurn Scan layer (xml), G-code line fill (gcodeparser); the area
 each reader finds is the letters' area as a solid of the same Text has it (Manifold, another
-path).  Misuse is E0108 at `fill=`.  Also the rest of the issue: stencil letters along a
+path), and both are the area fontTools reads from the font itself (AreaPen).  Misuse is E0108 at `fill=`.  Also the rest of the issue: stencil letters along a
 curve, `weight=` with a font, W0504 naming letters along a curve.  Deterministic; ~10 s CPU."""
 from __future__ import annotations
 
@@ -91,6 +91,41 @@ def _off(Q, loops) -> float:
         d = np.hypot(*(A + t[..., None] * AB - q).transpose(2, 0, 1))
         best[k:k + 256] = d.min(1)
     return float(best.max())
+
+
+@pytest.fixture(scope="module")
+def font_area():
+    """The letters' area (mm^2) as the font itself has it, read without our code: fontTools'
+    AreaPen over each glyph of "ROSA8" in Noto Sans at its Bold instance (the variable font
+    instanced at wght 700 by fontTools' instancer), scaled so that the cap height (OS/2
+    sCapHeight) is the Text's size, 15 mm (docs/language.md: `size` is the cap height)."""
+    from fontTools.pens.areaPen import AreaPen
+    from fontTools.ttLib import TTFont
+    from fontTools.varLib import instancer
+    from aidl_lang.geometry.shapes.font import resolve
+    face = resolve("sans:Bold")
+    tt = TTFont(io.BytesIO(face.data) if face.data is not None else face.path,
+                fontNumber=face.index)
+    if "fvar" in tt:
+        tt = instancer.instantiateVariableFont(tt, {"wght": 700})
+    k = 15 / tt["OS/2"].sCapHeight
+    glyphs, cmap = tt.getGlyphSet(), tt.getBestCmap()
+    total = 0.0
+    for ch in "ROSA8":
+        pen = AreaPen(glyphs)
+        glyphs[cmap[ord(ch)]].draw(pen)
+        total += abs(pen.value)          # a glyph's contours signed: its counters subtracted
+    return total * k * k
+
+
+def test_the_letters_are_the_fonts_own_area(sign, letters_area, font_area):
+    """The design's number, not our other output: the fill and the solid's letters each have
+    the area fontTools reads from the font (522.448 mm^2; to 1e-4, the solid's union and the
+    fill's loops are the outlines' curves)."""
+    fill = sum(Loop(st.segments).area for st in _fills(sign))
+    assert font_area == pytest.approx(522.448, abs=0.01)
+    assert fill == pytest.approx(font_area, rel=1e-4)
+    assert letters_area == pytest.approx(font_area, rel=1e-4)
 
 
 def test_the_fill_is_the_letters_area(sign, letters_area):
