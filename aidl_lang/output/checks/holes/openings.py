@@ -103,7 +103,11 @@ def _check_flush(d: Drawing, s: Structure, shape, a: _Openings, cuts, min_wall: 
                                for g, f in d.own.get(c.hole, ())
                                if g.kind == "Circle" and f is not None and not f.is_empty())
                    if k is not None]
-        at = contact_points(c.region, filled, circles)
+        edges = [k for k in (circle_of(np.asarray(f.to_polygons()[0], dtype=float))
+                             for g, f in d.own.get(s, ())
+                             if g.kind == "Circle" and f is not None and not f.is_empty())
+                 if k is not None]
+        at = contact_points(c.region, filled, circles, edges)
         if not at:                         # (not found on the polygons: the hole's box)
             x0, y0, x1, y1 = c.region.bounds()
             at = [((x0 + x1) / 2, (y0 + y1) / 2)]
