@@ -41,8 +41,9 @@ class _Lattices:
         # equal steps both ways: one pitch (``one`` needs both counts above 1)
         shared = self.p(hn + "_pitch", dx, times=max(nx, ny)) if one else None
         for axis, (v0, step, n, var) in enumerate(((x0, dx, nx, "i"), (y0, dy, ny, "j"))):
-            if n == 1:
-                out.append(self.at(v0, axis))
+            word = "_x" if axis == 0 else "_y"
+            if n == 1:          # a row's line: its distance from its edge a param
+                out.append(self.edge_param(hn + word, v0, axis, "its line"))
                 continue
             if one:
                 pitch = shared
@@ -58,7 +59,8 @@ class _Lattices:
                 term = f"({var} - ({cnt} - 1) / 2) * {pitch}"
                 out.append(term if o == "0" else f"{o} + {term}")
             else:
-                out.append(self.run_at(v0, v0 + (n - 1) * step, axis, var, cnt, pitch, step))
+                out.append(self.run_at(v0, v0 + (n - 1) * step, axis, var, cnt, pitch, step,
+                                       hn + word))
         d = depth
         if follows(out):
             self.w.emit(d, f"# {'grid' if both else 'row'}: {follows(out)}"
