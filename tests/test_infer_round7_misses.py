@@ -7,7 +7,12 @@ read back with ezdxf; hole centres and sizes are compared numerically.
 * a set's or a feature's distance from an edge is a param: a Pi's 2 x 2 holes 20 / 15 mm in
   (`holes_x`, `holes_y`), two holes each by its own edge (`hole1_x`, `hole2_x`), a motor's
   bore 35 mm from the right edge that its screw holes follow (`bore_x`);
-Cost: a few imports and about a dozen compiles (seconds)."""
+* a hole of another size on a row's lattice only past missing members (a terminal strip's
+  mounting hole) is a hole of its own by its nearer edge, not the row's odd member with gaps;
+* a perforated margin the drawing only bounds (a 12 mm margin's holes are kept by any margin
+  over 7.5 and up to 12.5 mm) is read as the roundest, and the head and the param say the
+  range: the maker's 12 gives the drawing back.
+Cost: a few imports and about twenty compiles (seconds)."""
 from __future__ import annotations
 
 import re
@@ -115,3 +120,30 @@ def test_a_hole_of_another_size_next_to_its_row_stays_its_member(tmp_path):
     assert "completes a pattern" in text and _param(text, "holes_n") == 11, text
     got = _holes(text, tmp_path, holes_pitch=10)
     assert [g[0] for g in got if g[2] == 5] == [110], (got, text)
+
+
+def _perforated(margin: float):
+    """A 200 x 150 plate, 5 mm holes on a 10 mm pitch filling it less ``margin`` (as many as
+    lie whole in it, centred): the maker run's #11 (12 mm)."""
+    doc, m = _doc(200, 150)
+    nx, ny = (int((s - 2 * margin - 5) // 10) + 1 for s in (200, 150))
+    for i in range(nx):
+        for j in range(ny):
+            m.add_circle((100 + (i - (nx - 1) / 2) * 10, 75 + (j - (ny - 1) / 2) * 10), 2.5)
+    return doc, (nx, ny)
+
+
+@pytest.mark.parametrize("margin, reading, lo, hi", [(12, 10, 7.5, 12.5), (15, 15, 12.5, 17.5)])
+def test_a_perforated_margin_the_drawing_only_bounds_is_said(tmp_path, margin, reading, lo, hi):
+    """No margin is drawn, only holes: every margin over 7.5 and up to 12.5 mm keeps the 18 x
+    13 holes of a 12 mm one (the roundest, 10, is read).  The param's comment and the head
+    say the range, so the maker who dimensioned 12 sets 12 and gets the drawing back."""
+    doc, (nx, ny) = _perforated(margin)
+    text = _text(doc)
+    assert _param(text, "holes_margin") == reading, text
+    said = f"every margin over {lo:g} and up to {hi:g} mm keeps these holes"
+    assert said in text and f"over {lo:g} and up to {hi:g} mm, each keeps" in text, text
+    drawn = _holes(text, tmp_path, holes_margin=margin)
+    assert len(drawn) == nx * ny and drawn == _holes(text, tmp_path), text
+    got = _holes(text, tmp_path, holes_margin=20)       # refilled: 16 x 11 holes, centred
+    assert len(got) == 16 * 11 and got[0][:2] == (25, 25), (got[0], text)
