@@ -481,12 +481,14 @@ def test_a_hole_in_an_assembly_is_named_and_its_fix_cuts_it_into_the_lid():
     the hole beside the `finger_box` instance cut nothing (the lid came out whole, the hole a
     part of its own).  Now W0109 names it and the part under it; its --json fix writes
     `CutInto(lid_hole, box.lid)`, and then the lid has the hole in the flat sheet (DXF), the
-    3MF (volume) and the fit check (no collision), and the hole is no part."""
+    3MF (volume) and the fit check (no collision), and the hole is no part (before the fix
+    it is none either: it cuts nothing, and no output cuts it)."""
     r = checked(LID_HOLE)
     (w,) = [d for d in r.diagnostics_json() if d["code"] == "W0109"]
     assert "`kit.lid_hole`" in w["message"] and "`kit.box.lid`" in w["message"]
     assert w["fix"]["replacement"].strip() == "CutInto(lid_hole, box.lid)"
-    assert "kit.lid_hole" in [p.name for p in r.parts]
+    assert "kit.lid_hole" not in [p.name for p in r.parts]     # it cuts nothing: no part
+    assert [p.name for p in r.output.stray] == ["kit.lid_hole"]  # (the preview draws it)
     lid0 = next(p for p in r.parts if p.name == "kit.box.lid")
     fixed = _apply(LID_HOLE, w["fix"])
     r2 = checked(fixed)

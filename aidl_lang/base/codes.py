@@ -1137,7 +1137,9 @@ it (`spur_gear(teeth=20, module=module)`).
 """),
     "W0109": ("hole declared in an assembly cuts nothing", """
 A hole cuts only the solid it is declared in. One declared in an assembly (beside a template
-instance, meant for its lid) is a part of its own: the lid comes out whole. The warning names
+instance, meant for its lid) is a part of its own: the lid comes out whole, and no output
+cuts the hole (the preview SVG draws it dashed where it lies; the laser SVG, DXF, PDF and
+G-code leave it out, as the meshes and the parts list do). The warning names
 the solid part the hole lies over, and its fix writes `CutInto(HOLE, PART)` in the assembly,
 which cuts that part (a part of a template instance cannot be cut any other way: its body is
 the template's). `CutInto` is written where both are, so it keeps the subtree rules; place the

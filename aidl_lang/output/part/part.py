@@ -120,7 +120,7 @@ class SinkStroke(Stroke):
 class Output(Compared):
     """What the writers get: exact part outlines and engraving strokes (mm); the strokes of
     style ``cut`` are through-cuts (:attr:`cuts`), cut through the material, not engraved."""
-    __slots__ = ("parts", "engrave", "title", "drawing", "page")
+    __slots__ = ("parts", "engrave", "title", "drawing", "page", "stray")
 
     def __init__(self, parts: list[PartOutline] | None = None, engrave: list[Stroke] | None = None,
                  title: str = "", drawing: Drawing | None = None, page: tuple | None = None):
@@ -130,6 +130,9 @@ class Output(Compared):
         self.drawing = drawing  # the booleans' result (debug layers, checks)
         # (x0, y0, x1, y1) mm: a fixed page (a cutting layout's sheet) instead of the extent
         self.page = page
+        # the holes declared in an assembly (W0109: they cut nothing), not among the parts: no
+        # output cuts them; the preview SVG draws them dashed where they lie
+        self.stray: list[PartOutline] = []
 
     @property
     def cuts(self) -> list:
@@ -293,7 +296,10 @@ def _build(drawing: Drawing, title: str, thickness, deadline) -> Output:
         if not loops:
             continue
         t = thickness.get(p.name) if isinstance(thickness, dict) else thickness
-        out.parts.append(PartOutline(p.name, p.kind, loops, t))
+        s = drawing.part_of.get(p.name)
+        stray = p.kind == "hole" and s is not None and s.parent is not None \
+            and s.parent.kind == "assembly"
+        (out.stray if stray else out.parts).append(PartOutline(p.name, p.kind, loops, t))
     strokes = []
     owner: dict = {}
     for name, s in drawing.part_of.items():     # a split part's pieces: its own name

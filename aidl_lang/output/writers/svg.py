@@ -181,9 +181,12 @@ def to_svg(output, title: str = "", show=(), style: str = "preview",
     colour = {p.name: PALETTE[i % len(PALETTE)] for i, p in enumerate(solids)} \
         if len(solids) > 1 and not laser else {}
     once = cut_once(output) if laser else {}    # pieces of one cut part: shared edges once
-    for i, p in enumerate(output.parts):
+    # the holes declared in an assembly (W0109) cut nothing: the preview draws them dashed
+    # where they lie, no cutting file has them
+    drawn = output.parts if laser else output.parts + getattr(output, "stray", [])
+    for i, p in enumerate(drawn):
         g = d.g(id=_id(p.name), **({"class_": p.kind}))
-        if len(output.parts) > 1:
+        if len(drawn) > 1:
             g.set_desc(title=p.name)           # the part's name on hover
         if p.kind == "hole" and not laser:
             g.update({"fill": "none", "stroke": "#c62828",
