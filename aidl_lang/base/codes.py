@@ -501,26 +501,32 @@ other branch (for Angle: a line now points the opposite way), which usually mean
 starting positions were far from the intended shape.
 """),
     "W0404": ("feature that can slide", """
-A structure inside a part (a hole, a drawing, a solid child) can move relative to its part:
-no constraint places it along x or y (or both), only its starting position does, so a changed
-value or a small edit can leave it anywhere (a row of holes whose height nothing ties to the
-plate). The warning names the feature, the free direction and the part; place it with a
-constraint in its parent that ties it to the part's shapes (`AlignCenterY(bits, plate)`,
-`Below(labels, bits, gap=4)`); `Fixed(bits)` holds it only where the part is fixed too (it pins
-the feature to the sheet, not to the part). Freedom of a whole part (where it sits on the sheet)
-is harmless and not reported; `aidl check` says it as "free: only where the whole part sits
-(harmless)". Nor is a feature that no constraint places at all (its coordinates alone): the
+A structure inside a part (a hole, a drawing, a solid child) can move relative to its part
+along an axis that a constraint reads: it is tied along x or y only to other features that
+are free there too (two screw holes with `VerticalDistance(a, b, 60.3)`, labels `Below` a row
+of holes whose height nothing ties to the plate), so only its starting position holds it, and a
+changed value moves it (a new distance moves both holes, each some of the way). The warning
+names the feature, the free direction and the part; place it with a constraint in its parent
+that ties it to the part's shapes (`AlignCenterY(bits, plate)`, `bits.bb.top == plate.bb.top -
+5`); `Fixed(bits)` holds it only where the part is fixed too (it pins the feature to the sheet,
+not to the part). Freedom of a whole part (where it sits on the sheet) is harmless and not
+reported; `aidl check` says it as "free: only where the whole part sits (harmless)". Nor is a
+feature along an axis that no constraint reads (its coordinates alone place it there): the
 solve keeps it where it is written, and the ok line says "hole `plate.recess` free but stays
-where written (harmless)". A structure declared inside a standard-library template is the template's affair
-and is not reported to its user. Features tied only to each other (two screw holes with
-`VerticalDistance(a, b, 60.3)`) slide together and are each reported: tie one and check again
-(the others follow it, the rest is named by direction); tying both with `.bb.center ==`
-repeats the distance (W0401).
+where written (harmless)", whether nothing places it (`plate.recess`) or a constraint places
+it along the other axis (`AlignTop(groove, body)` and its x as written; issue 111). A
+structure declared inside a standard-library template is the template's affair and is not
+reported to its user. Features tied only to each other slide together and are each reported:
+tie one and check again (the others follow it, the rest is named by direction); tying both
+with `.bb.center ==` repeats the distance (W0401).
 
     solid gauge {
         plate = Rectangle(center=(0, 0), width=120, height=40)
         hole bits { h = Circle(center=(0, 5), diameter=3) }
-        AlignCenterX(bits, plate)        # x is placed; y is not: W0404
+        drawing labels { t = Text("3", (0, -12), size=5) }
+        AlignCenterX(bits, plate)        # x placed; y as written: harmless
+        AlignCenterX(labels, plate)
+        Below(labels, bits, gap=4)       # y tied to bits, and bits to nothing: W0404 on each
     }
 """),
     "W0405": ("box read before Fillet or Chamfer", """

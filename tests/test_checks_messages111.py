@@ -1,0 +1,69 @@
+"""Issue 111's messages after the fresh-model run (data/model_runs/issue111/REPORT.md, "Messages
+found confusing or wrong"), each on the run's own program through the real checker: W0404 on a
+groove placed in y and written in x (a false alarm), W0410's note on a bar between two circles,
+W0513's hint on a label beside its write-on line, W0505's hint on one number of a ruler's
+scale over a hole."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+import aidl_lang
+
+RUN = Path(__file__).resolve().parent.parent / "data" / "model_runs" / "issue111"
+
+
+def _read(name: str) -> str:
+    return (RUN / name).read_text()
+
+
+def _w(r, code):
+    return [d for d in r.diagnostics if d.code == code]
+
+
+def _values(r) -> dict:
+    return {x.name: x.mm for x in r.values}
+
+
+# ------------------------------------------------------------------------------ W0404
+def test_W0404_a_groove_placed_in_y_and_written_in_x_is_harmless():
+    """03_card_stand: `AlignTop(groove, body)` places the card groove in y; its x (15 mm left
+    of center) is as written and no constraint reads it.  The solve keeps it there (here
+    even after moving the groove 16.5 mm up), as it keeps a groove nothing places: no
+    W0404, and the ok line says "stays where written (harmless)"."""
+    src = _read("run/03_card_stand.first_valid.aidl")
+    moved = src.replace("center=(-15, 16.5)", "center=(-15, 0)")
+    assert moved != src
+    for text in (src, moved):
+        r = aidl_lang.compile(text)
+        assert r.ok, [d.message for d in r.errors]
+        r.find_redundant(seconds=None)
+        assert _w(r, "W0404") == []
+        assert [d.code for d in r.diagnostics if d.severity == "warning"] == []
+        assert _values(r)["card_stand.front.groove.g.center"] == pytest.approx((-15, 16.5),
+                                                                              abs=1e-9)
+        assert "hole `card_stand.front.groove` free but stays where written (harmless)" in \
+            r.freedom()["text"]
+
+
+def test_W0404_kept_for_grooves_tied_in_x_only_to_each_other():
+    """A second groove 10 mm right of the first, tied to it by `HorizontalDistance` and to
+    nothing else in x: a changed distance moves them (14 mm: the first-named goes 4 mm
+    left, away from where it is written), so each is W0404 along x, at its own line."""
+    src = _read("run/03_card_stand.first_valid.aidl")
+    two = src.replace(
+        "        AlignTop(groove, body)\n",
+        "        hole groove2 {\n            g = Rectangle(center=(-5, 16.5), width=3.5, "
+        "height=12)\n        }\n        AlignTop(groove, body)\n        AlignTop(groove2, body)\n"
+        "        HorizontalDistance(groove.g.center, groove2.g.center, GAP)\n")
+    r = aidl_lang.compile(two.replace("GAP", "10 mm"))
+    r.find_redundant(seconds=None)
+    ws = _w(r, "W0404")
+    assert [(w.span.line, w.message.split(" relative")[0]) for w in ws] == [
+        (16, "hole `card_stand.front.groove` can slide along x"),
+        (19, "hole `card_stand.front.groove2` can slide along x")]
+    r = aidl_lang.compile(two.replace("GAP", "14 mm"))
+    v = _values(r)
+    assert v["card_stand.front.groove.g.center"][0] == pytest.approx(-19, abs=1e-6)
+    assert v["card_stand.front.groove2.g.center"][0] == pytest.approx(-5, abs=1e-6)
