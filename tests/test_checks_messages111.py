@@ -67,3 +67,41 @@ def test_W0404_kept_for_grooves_tied_in_x_only_to_each_other():
     v = _values(r)
     assert v["card_stand.front.groove.g.center"][0] == pytest.approx(-19, abs=1e-6)
     assert v["card_stand.front.groove2.g.center"][0] == pytest.approx(-5, abs=1e-6)
+
+
+# ------------------------------------------------------------------------------ W0410
+def _spinner(width: str = "14") -> str:
+    src = _read("run/09_spinner.first_valid.aidl")
+    out = src.replace("width=14, height=33", f"width={width}, height=33")
+    assert out != src or width == "14"
+    return out
+
+
+def test_W0410_a_bar_between_two_circles_is_a_step_the_hint_widens_or_hulls():
+    """09_spinner: a 14 mm arm between the 36 mm hub and a 32 mm lobe leaves 2.03 mm of its
+    side between the circles; `Fillet(4)` fits only 1.58 mm at its corners (a round pit).
+    The note says it is a step between two circles and no longer offers `Fillet(hub, 4)`
+    (which leaves the step sharp); its hint's width (18.18 mm) is where the fillets fit:
+    followed, no note and no W0406; 0.08 mm less, the note stays.  Its other option, the
+    circles' `Hull` as the neck, checks clean too."""
+    r = aidl_lang.compile(_spinner())
+    ws = _w(r, "W0410")
+    assert len(ws) == 3 and all(w.span.line == 26 for w in ws)
+    w = ws[0]
+    assert "step at (-11.7402, -14.8611) mm where a straight side 2.02938 mm long runs " \
+           "between two circles" in w.message
+    assert "radius 18 mm at (0, 0)" in w.message and "only 1.5765 mm fits" in w.message
+    assert "Fillet(hub" not in w.hint and "`Hull(a, b)`" in w.hint
+    assert "at least 18.18 mm wide, not 14 mm" in w.hint
+    for width, noted in (("18.18", False), ("18.1", True), ("24", False)):
+        r = aidl_lang.compile(_spinner(width))
+        assert r.ok
+        assert bool(_w(r, "W0410")) is noted, width
+        assert _w(r, "W0406") == []
+    hull = _spinner().replace(
+        "        arm = Rectangle(center=(0, 16.5), width=14, height=33)\n",
+        "        inner = Circle(center=(0, 0), diameter=36)\n        neck = Hull(ring, inner)\n"
+    ).replace("    AlignCenterX(lobe.arm, hub)\n    lobe.arm.bottom.midpoint.y == hub.center.y\n",
+              "    Concentric(lobe.inner, hub)\n")
+    r = aidl_lang.compile(hull)
+    assert r.ok and [d.code for d in r.diagnostics] == []

@@ -578,7 +578,13 @@ its ends rounded by 2.1 mm, and a square tab no longer fits it. The note names t
 centre and least width) and the size that fitted. A notch cut into the outer outline narrower
 than two radii (a 3 mm cable slit: its bottom comes out round and its mouth flares) gets the
 same note. Nothing to change when round ends are meant; to round the part's own outline alone,
-name its shapes, `Fillet(plate, 4)` (or `Fillet([left, right], 4)`):
+name its shapes, `Fillet(plate, 4)` (or `Fillet([left, right], 4)`). A step where a bar's side
+runs between two circles (a 14 mm arm between a 36 mm hub and a 32 mm lobe leaves 2 mm of
+straight side) is no notch that naming shapes helps: the fillets at its two inside corners do
+not fit on it and it comes out as a small round pit; the note says so, how far from the
+circles' centers the side must lie for the fillets to fit (a bar centred on them: how wide),
+or to draw the neck as the circles' `Hull(a, b)` (two circles of one structure: tangent to
+both, no step) in place of the bar:
 
     solid bracket {
         plate = Rectangle(center=(0, 0), width=100, height=60)
