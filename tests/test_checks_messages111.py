@@ -105,3 +105,26 @@ def test_W0410_a_bar_between_two_circles_is_a_step_the_hint_widens_or_hulls():
               "    Concentric(lobe.inner, hub)\n")
     r = aidl_lang.compile(hull)
     assert r.ok and [d.code for d in r.diagnostics] == []
+
+
+# ------------------------------------------------------------------------------ W0513
+def test_W0513_says_which_way_and_leads_with_moving_beside_a_same_size_label():
+    """01_luggage_tag: "PHONE" (4 mm) runs into its write-on line.  The hint says the move
+    in the page's words, "3.05 mm left", and leads with it: a 3.39 mm "PHONE" would be
+    smaller than "NAME" beside it at 4 mm (said).  The move followed is clean; the same
+    distance right is not."""
+    import re
+    src = _read("run/01_luggage_tag.first_valid.aidl")
+    r = aidl_lang.compile(src)
+    [w] = _w(r, "W0513")
+    assert w.span.line == 19
+    ways = w.hint.split(": ", 1)[1].split(", or ")
+    assert ways[0] == "move the text 3.05 mm left, along the mark's line (by (-3.05, 0.00) mm)"
+    assert ways[1].startswith("shorten the mark")
+    assert ways[-1] == ("make the text at most 3.39 mm (size=3.39 mm, smaller than "
+                        "`tag.labels.name` beside it at 4 mm)")
+    dx = float(re.search(r"by \((\S+), ", ways[0]).group(1))
+    for x, clean in ((-25 + dx, True), (-25 - dx, False)):
+        moved = src.replace("position=(-25, -10)", f"position=({x:.2f}, -10)")
+        assert moved != src
+        assert (not _w(aidl_lang.compile(moved), "W0513")) is clean, x

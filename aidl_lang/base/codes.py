@@ -903,7 +903,9 @@ strokes; 0.3 mm is about an engraved line's width), or it enters the text's box 
 statements (the closest pair, copies made in a loop named by index: `ticks[0]`), with the
 number of such pairs. The warning names both, with the overlap's area, the gap, or the length
 of the mark inside the text, and how much to shorten the mark or move the text (a move
-along or away from the mark as a vector too, `(by (-3.05, 0.00) mm)`; text drawn over text: the least move right, left, up or down, as a vector, that leaves half the text size
+along or away from the mark in the page's words and as a vector too, `3.05 mm left, along the
+mark's line (by (-3.05, 0.00) mm)`; beside a text of the same size, "NAME" over "PHONE", the move
+leads and a smaller size says it would set the text apart; text drawn over text: the least move right, left, up or down, as a vector, that leaves half the text size
 between the two boxes, `move `p.d.b` 6.96 mm right, by (6.96, 0.00) mm`). Move the text
 clear (beside the tick, further out), shorten the mark, grow the frame, or make the text
 smaller: the hint gives the largest size at which the clearance holds (`size=N mm`: the
