@@ -128,3 +128,25 @@ def test_W0513_says_which_way_and_leads_with_moving_beside_a_same_size_label():
         moved = src.replace("position=(-25, -10)", f"position=({x:.2f}, -10)")
         assert moved != src
         assert (not _w(aidl_lang.compile(moved), "W0513")) is clean, x
+
+
+# ------------------------------------------------------------------------------ W0505
+def test_W0505_one_number_of_a_scale_over_the_hole_leads_with_moving():
+    """07_ruler's first attempt: the "15" of the loop's numbers runs over the 6 mm hanging
+    hole.  The hint named `max_width=1.8 mm` / `size=1.27 mm` first, for one number of the
+    scale (the statement's: every number would shrink); now it leads with moving the hole or
+    that copy, and offers no size.  The run's fix (the hole moved up to y = 22 mm) clears it,
+    the "15" where it was written, at the scale's 3 mm."""
+    src = _read("drafts/07_ruler.attempt1.aidl")
+    r = aidl_lang.compile(src)
+    [w] = _w(r, "W0505")
+    assert w.span.line == 14 and "`ruler.scale.num[15]`" in w.message
+    assert w.hint.startswith('it crosses `ruler.hang` at "5": `num[15]` is one of the copies')
+    move = w.hint.index("move what it crosses, or this copy")
+    assert move < w.hint.index("room for 1.8 mm")
+    assert "`max_width=1.8" not in w.hint and "size=1.27" not in w.hint
+    moved = src.replace("center=(163, 15), diameter=6", "center=(163, 22), diameter=6")
+    assert moved != src
+    r = aidl_lang.compile(moved)
+    assert _w(r, "W0505") == []
+    assert _values(r)["ruler.scale.num[15].position"] == pytest.approx((160, 11), abs=1e-9)
