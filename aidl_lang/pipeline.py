@@ -666,7 +666,7 @@ def report_sliding(sink: DiagnosticSink, result: SolveResult):
     issue 111) is listed on the ok line, not warned.
     Freedom of a whole part (where it sits) is harmless and not reported.  Returns the
     :class:`~aidl_lang.solver.diagnosis.sliding.Sliding` found (None for a model too large)."""
-    from .solver.diagnosis.sliding import sliding
+    from .solver.diagnosis.sliding import sliding, where_now
     solver = result.solver
     if int(solver.free.sum()) > MAX_SLIDING_UNKNOWNS:
         return None
@@ -685,11 +685,13 @@ def report_sliding(sink: DiagnosticSink, result: SolveResult):
         ex = (f"`AlignCenterX({name}, ...)`" if axes == "x" else
               f"`AlignCenterY({name}, ...)`" if axes == "y" else
               f"`{name}.bb.center == (..., ...)`")
+        now = where_now(t, part, axes, solver.model)
+        now = f"where it is now, {now}, or another relation (e.g. {ex})" if now else f"e.g. {ex}"
         sink.warning("W0404", f"{t.kind} `{t.path}` can slide along {axes} relative to "
                      f"`{part.path if part is not None else t.path}`: only its starting "
                      "position places it there", t.span, calls=instance_calls(t.parent),
                      hint=f"tie it to a shape of its part with a constraint in the parent "
-                          f"(e.g. {ex}); `Fixed({name})` holds it only where the part is "
+                          f"({now}); `Fixed({name})` holds it only where the part is "
                           "fixed too; where the whole part sits may stay free, that is "
                           "harmless" + (
                               "; tie one feature, then check again: features tied to each "

@@ -126,8 +126,11 @@ def test_W0404_on_holes_tied_to_each_other_followed_one_at_a_time_leaves_nothing
     both = src.replace("60.3)\n", "60.3)\n    top_screw.bb.center == (0, 30.15)\n"
                                    "    bottom_screw.bb.center == (0, -30.15)\n")
     assert [w.code for w in _check(both)[0]] == ["W0401"]
-    # one tied, then check again: the other follows it in y and stays where written in x
-    step1 = src.replace("60.3)\n", "60.3)\n    top_screw.bb.center == (0, 30.15)\n")
+    # one tied as its hint writes it, then check again: the other follows it in y and
+    # stays where written in x
+    tie = "`top_screw.bb.center.y == body.bb.center.y + 30.15 mm`"
+    assert f"where it is now, {tie}" in ws[0].hint
+    step1 = src.replace("60.3)\n", f"60.3)\n    {tie[1:-1]}\n")
     ws, v = _check(step1)
     assert not ws
     assert v["plate.top_screw.c.center"] == pytest.approx((0, 30.15), abs=EXACT)

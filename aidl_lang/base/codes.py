@@ -507,8 +507,9 @@ are free there too (two screw holes with `VerticalDistance(a, b, 60.3)`, labels 
 of holes whose height nothing ties to the plate), so only its starting position holds it, and a
 changed value moves it (a new distance moves both holes, each some of the way). The warning
 names the feature, the free direction and the part; place it with a constraint in its parent
-that ties it to the part's shapes (`AlignCenterY(bits, plate)`, `bits.bb.top == plate.bb.top -
-5`); `Fixed(bits)` holds it only where the part is fixed too (it pins the feature to the sheet,
+that ties it to the part's shapes: the hint gives the one that keeps it where the solve left
+it (`bits.bb.center.y == plate.bb.center.y + 5 mm`), or another (`AlignCenterY(bits, plate)`,
+`bits.bb.top == plate.bb.top - 5`); `Fixed(bits)` holds it only where the part is fixed too (it pins the feature to the sheet,
 not to the part). Freedom of a whole part (where it sits on the sheet) is harmless and not
 reported; `aidl check` says it as "free: only where the whole part sits (harmless)". Nor is a
 feature along an axis that no constraint reads (its coordinates alone place it there): the

@@ -290,3 +290,30 @@ def _name(o) -> str:
     if hasattr(o, "path"):
         return f"{o.kind} `{o.path}`"
     return f"`{o.label}`"
+
+
+def where_now(t, part, axes: str, model) -> str | None:
+    """W0404's tie that keeps feature ``t`` where the solve left it: the equation, in ``t``'s
+    parent (``part``), of its box's centre against the box of the part's first named shape
+    along each of ``axes``, with the offset read at the solution to 1e-6 mm
+    (```bits.bb.center.y == plate.bb.center.y + 3.2 mm```; an `AlignCenterY(bits, ...)`
+    written as an example moved a hole written off-centre to the centre).  None when the
+    feature is not the part's own child or the part has no named shape."""
+    from ...geometry.relations.bbox import numeric_box
+    if t.parent is not part:
+        return None
+    shape = next((g for g in part.geometry if g.closed and g.name and not g.construction
+                  and not g.__dict__.get("copied")), None)
+    if shape is None:
+        return None
+    x = model.xs()
+    a, b = numeric_box(t, None, x), numeric_box(shape, None, x)
+    if a is None or b is None:
+        return None
+    out = []
+    for ax in axes.split(", "):
+        k = 0 if ax == "x" else 2
+        off = round((a[k] + a[k + 1]) / 2 - (b[k] + b[k + 1]) / 2, 6) + 0.0
+        tail = "" if off == 0 else f" {'+' if off > 0 else '-'} {abs(off):.10g} mm"
+        out.append(f"`{t.name}.bb.center.{ax} == {shape.name}.bb.center.{ax}{tail}`")
+    return " and ".join(out)
