@@ -260,9 +260,10 @@ def sliding_text(sl: Sliding) -> str:
     (harmless)`` or ``free: only where the whole part sits (harmless)``; "" when nothing
     slides.  A feature that some constraint reads along an axis it slides on (``W0404``,
     that axis named) or that slides within an inequality's bounds is said to slide; one
-    placed by its coordinates alone along its free axes stays where it is written (a part stays, its features are placed on
-    it: the solve keeps the positions nothing else gives), so its freedom is harmless and
-    said so (issue 84: "can slide along x, y" read as a problem to three of four models)."""
+    placed by its coordinates alone along its free axes stays where it is written (a part
+    stays, its features are placed on it: the solve keeps the positions nothing else
+    gives), so its freedom is harmless and said so (issue 84: "can slide along x, y" read
+    as a problem to three of four models)."""
     if sl.features:
         moves = [(t, a if id(t) in sl.bounded else sl.read.get(id(t), a))
                  for t, a in sl.features if id(t) in sl.constrained or id(t) in sl.bounded]
