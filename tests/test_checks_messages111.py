@@ -88,7 +88,17 @@ def _spinner(width: str = "14") -> str:
     return out
 
 
-def test_W0410_a_bar_between_two_circles_is_a_step_the_hint_widens_or_hulls():
+def _small_arcs(r, tmp_path, name: str) -> list[float]:
+    """The radii of the arcs under 5 mm of the part's cut outline as the SVG file holds them
+    (re-read with svgelements, tests/exact_geometry.py): the fillets at the steps."""
+    from exact_geometry import A, read_svg_loops
+    path = tmp_path / f"{name}.svg"
+    r.write(path)
+    return sorted(sg.radius for lp in read_svg_loops(path) for sg in lp
+                  if isinstance(sg, A) and sg.radius < 5)
+
+
+def test_W0410_a_bar_between_two_circles_is_a_step_the_hint_widens_or_hulls(tmp_path):
     """09_spinner: a 14 mm arm between the 36 mm hub and a 32 mm lobe leaves 2.03 mm of its
     side between the circles; `Fillet(4)` fits only 1.58 mm at its corners (a round pit).
     The note says it is a step between two circles and no longer offers `Fillet(hub, 4)`
@@ -104,11 +114,16 @@ def test_W0410_a_bar_between_two_circles_is_a_step_the_hint_widens_or_hulls():
     assert "radius 18 mm at (0, 0)" in w.message and "only 1.5765 mm fits" in w.message
     assert "Fillet(hub" not in w.hint and "`Hull(a, b)`" in w.hint
     assert "at least 18.18 mm wide, not 14 mm" in w.hint
+    # the SVG's 12 step corners (6 steps): rounded by 1.5765 mm at the least, as said
+    small = _small_arcs(r, tmp_path, "w14")
+    assert len(small) == 12 and small[0] == pytest.approx(1.5765, abs=5e-5)
     for width, noted in (("18.18", False), ("18.1", True), ("24", False)):
         r = aidl_lang.compile(_spinner(width))
         assert r.ok
         assert bool(_w(r, "W0410")) is noted, width
         assert _w(r, "W0406") == []
+        if width == "18.18":            # every step corner takes the whole 4 mm
+            assert _small_arcs(r, tmp_path, "w18") == pytest.approx([4.0] * 12, abs=1e-9)
     hull = _spinner().replace(
         "        arm = Rectangle(center=(0, 16.5), width=14, height=33)\n",
         "        inner = Circle(center=(0, 0), diameter=36)\n        neck = Hull(ring, inner)\n"
