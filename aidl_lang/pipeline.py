@@ -659,18 +659,19 @@ MAX_SLIDING_UNKNOWNS = 20000    # larger models are not searched for sliding fea
 
 def report_sliding(sink: DiagnosticSink, result: SolveResult):
     """W0404 for each feature (a structure inside a part) that can move relative to its part
-    although a constraint places it (in the other direction, typically: `AlignCenterX(bits,
-    plate)` and nothing for y), so only its starting guess holds it there
-    (:func:`aidl_lang.solver.diagnosis.sliding.sliding`); a feature placed by its coordinates alone is
-    listed on the ok line, not warned.
+    along an axis some constraint reads (`Below(labels, bits, gap=4)` between two features
+    nothing ties to the part in y), so a changed value moves it there and only its starting
+    guess holds it (:func:`aidl_lang.solver.diagnosis.sliding.sliding`); a feature placed
+    by its coordinates alone along its free axes (`AlignTop(groove, body)` and a written x,
+    issue 111) is listed on the ok line, not warned.
     Freedom of a whole part (where it sits) is harmless and not reported.  Returns the
     :class:`~aidl_lang.solver.diagnosis.sliding.Sliding` found (None for a model too large)."""
-    from .solver.diagnosis.sliding import sliding
+    from .solver.diagnosis.sliding import sliding, where_now
     solver = result.solver
     if int(solver.free.sum()) > MAX_SLIDING_UNKNOWNS:
         return None
     sl = sliding(solver)
-    warned = [(t, axes) for t, axes in sl.features
+    warned = [(t, sl.read[id(t)]) for t, _ in sl.features
               if id(t) in sl.constrained and id(t) not in sl.bounded
               and not (t.span is not None and in_stdlib(t.span.file))]
     # placed by its coordinates alone, as AIDL allows, or free only within the room an
@@ -684,11 +685,13 @@ def report_sliding(sink: DiagnosticSink, result: SolveResult):
         ex = (f"`AlignCenterX({name}, ...)`" if axes == "x" else
               f"`AlignCenterY({name}, ...)`" if axes == "y" else
               f"`{name}.bb.center == (..., ...)`")
+        now = where_now(t, part, axes, solver.model)
+        now = f"where it is now, {now}, or another relation (e.g. {ex})" if now else f"e.g. {ex}"
         sink.warning("W0404", f"{t.kind} `{t.path}` can slide along {axes} relative to "
                      f"`{part.path if part is not None else t.path}`: only its starting "
                      "position places it there", t.span, calls=instance_calls(t.parent),
                      hint=f"tie it to a shape of its part with a constraint in the parent "
-                          f"(e.g. {ex}); `Fixed({name})` holds it only where the part is "
+                          f"({now}); `Fixed({name})` holds it only where the part is "
                           "fixed too; where the whole part sits may stay free, that is "
                           "harmless" + (
                               "; tie one feature, then check again: features tied to each "

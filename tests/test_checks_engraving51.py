@@ -294,7 +294,7 @@ solid tag {
 }
 """
     (w,) = warnings(compile_text, src % "-25", "W0513")
-    by = re.search(r"move the text (\S+) mm further along the mark \(by \((\S+), (\S+)\) mm\)",
+    by = re.search(r"move the text (\S+) mm left, along the mark's line \(by \((\S+), (\S+)\) mm\)",
                    w.hint)
     assert by, w.hint
     d, dx, dy = (float(x) for x in by.groups())

@@ -845,14 +845,27 @@ def test_W0106_through_the_cli_and_explain(tmp_path):
     assert r.returncode == 0 and "floor division used as a length" in r.stdout
 
 
-def test_W0404_a_hole_placed_in_x_only_slides_in_y():
+def test_W0404_a_hole_placed_in_x_only_stays_where_written_in_y():
+    """A hole placed in x and written in y (no constraint reads its y) stays where written:
+    harmless, as a hole nothing places (issue 111); tied in y to a second hole that nothing
+    ties to the part, a changed distance moves both: W0404 along y on each."""
     import aidl_lang
     src = ("solid p {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
-           "    hole h { c = Circle(center=(0, 3), radius=2) }\n    AlignCenterX(h, body)\n}\n")
-    r = aidl_lang.compile(source=src)
+           "    hole h { c = Circle(center=(0, 3), radius=2) }\n    AlignCenterX(h, body)\nEXTRA}\n")
+    r = aidl_lang.compile(source=src.replace("EXTRA", ""))
+    assert [d for d in r.find_redundant() if d.code == "W0404"] == []
+    assert r.freedom()["text"] == ("3 degrees of freedom left (hole `p.h` free but stays where "
+                                   "written (harmless); 2 where the whole part sits (harmless)), "
+                                   "see --dof")
+    tied = src.replace("EXTRA", "    hole k { c = Circle(center=(10, -3), radius=1) }\n"
+                                "    AlignCenterX(k, body)\n"
+                                "    VerticalDistance(k.c.center, h.c.center, 6 mm)\n")
+    r = aidl_lang.compile(source=tied)
     ws = [d for d in r.find_redundant() if d.code == "W0404"]
     assert [(d.span.line, d.message) for d in ws] == [
         (3, "hole `p.h` can slide along y relative to `p`: only its starting position places "
+            "it there"),
+        (5, "hole `p.k` can slide along y relative to `p`: only its starting position places "
             "it there")]
 
 

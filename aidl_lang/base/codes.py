@@ -501,26 +501,33 @@ other branch (for Angle: a line now points the opposite way), which usually mean
 starting positions were far from the intended shape.
 """),
     "W0404": ("feature that can slide", """
-A structure inside a part (a hole, a drawing, a solid child) can move relative to its part:
-no constraint places it along x or y (or both), only its starting position does, so a changed
-value or a small edit can leave it anywhere (a row of holes whose height nothing ties to the
-plate). The warning names the feature, the free direction and the part; place it with a
-constraint in its parent that ties it to the part's shapes (`AlignCenterY(bits, plate)`,
-`Below(labels, bits, gap=4)`); `Fixed(bits)` holds it only where the part is fixed too (it pins
-the feature to the sheet, not to the part). Freedom of a whole part (where it sits on the sheet)
-is harmless and not reported; `aidl check` says it as "free: only where the whole part sits
-(harmless)". Nor is a feature that no constraint places at all (its coordinates alone): the
+A structure inside a part (a hole, a drawing, a solid child) can move relative to its part
+along an axis that a constraint reads: it is tied along x or y only to other features that
+are free there too (two screw holes with `VerticalDistance(a, b, 60.3)`, labels `Below` a row
+of holes whose height nothing ties to the plate), so only its starting position holds it, and a
+changed value moves it (a new distance moves both holes, each some of the way). The warning
+names the feature, the free direction and the part; place it with a constraint in its parent
+that ties it to the part's shapes: the hint gives the one that keeps it where the solve left
+it (`bits.bb.center.y == plate.bb.center.y + 5 mm`), or another (`AlignCenterY(bits, plate)`,
+`bits.bb.top == plate.bb.top - 5`); `Fixed(bits)` holds it only where the part is fixed too (it pins the feature to the sheet,
+not to the part). Freedom of a whole part (where it sits on the sheet) is harmless and not
+reported; `aidl check` says it as "free: only where the whole part sits (harmless)". Nor is a
+feature along an axis that no constraint reads (its coordinates alone place it there): the
 solve keeps it where it is written, and the ok line says "hole `plate.recess` free but stays
-where written (harmless)". A structure declared inside a standard-library template is the template's affair
-and is not reported to its user. Features tied only to each other (two screw holes with
-`VerticalDistance(a, b, 60.3)`) slide together and are each reported: tie one and check again
-(the others follow it, the rest is named by direction); tying both with `.bb.center ==`
-repeats the distance (W0401).
+where written (harmless)", whether nothing places it (`plate.recess`) or a constraint places
+it along the other axis (`AlignTop(groove, body)` and its x as written; issue 111). A
+structure declared inside a standard-library template is the template's affair and is not
+reported to its user. Features tied only to each other slide together and are each reported:
+tie one and check again (the others follow it, the rest is named by direction); tying both
+with `.bb.center ==` repeats the distance (W0401).
 
     solid gauge {
         plate = Rectangle(center=(0, 0), width=120, height=40)
         hole bits { h = Circle(center=(0, 5), diameter=3) }
-        AlignCenterX(bits, plate)        # x is placed; y is not: W0404
+        drawing labels { t = Text("3", (0, -12), size=5) }
+        AlignCenterX(bits, plate)        # x placed; y as written: harmless
+        AlignCenterX(labels, plate)
+        Below(labels, bits, gap=4)       # y tied to bits, and bits to nothing: W0404 on each
     }
 """),
     "W0405": ("box read before Fillet or Chamfer", """
@@ -572,7 +579,13 @@ its ends rounded by 2.1 mm, and a square tab no longer fits it. The note names t
 centre and least width) and the size that fitted. A notch cut into the outer outline narrower
 than two radii (a 3 mm cable slit: its bottom comes out round and its mouth flares) gets the
 same note. Nothing to change when round ends are meant; to round the part's own outline alone,
-name its shapes, `Fillet(plate, 4)` (or `Fillet([left, right], 4)`):
+name its shapes, `Fillet(plate, 4)` (or `Fillet([left, right], 4)`). A step where a bar's side
+runs between two circles (a 14 mm arm between a 36 mm hub and a 32 mm lobe leaves 2 mm of
+straight side) is no notch that naming shapes helps: the fillets at its two inside corners do
+not fit on it and it comes out as a small round pit; the note says so, how far from the
+circles' centers the side must lie for the fillets to fit (a bar centred on them: how wide),
+or to draw the neck as the circles' `Hull(a, b)` (two circles of one structure: tangent to
+both, no step) in place of the bar:
 
     solid bracket {
         plate = Rectangle(center=(0, 0), width=100, height=60)
@@ -896,7 +909,9 @@ strokes; 0.3 mm is about an engraved line's width), or it enters the text's box 
 statements (the closest pair, copies made in a loop named by index: `ticks[0]`), with the
 number of such pairs. The warning names both, with the overlap's area, the gap, or the length
 of the mark inside the text, and how much to shorten the mark or move the text (a move
-along or away from the mark as a vector too, `(by (-3.05, 0.00) mm)`; text drawn over text: the least move right, left, up or down, as a vector, that leaves half the text size
+along or away from the mark in the page's words and as a vector too, `3.05 mm left, along the
+mark's line (by (-3.05, 0.00) mm)`; beside a text of the same size, "NAME" over "PHONE", the move
+leads and a smaller size says it would set the text apart; text drawn over text: the least move right, left, up or down, as a vector, that leaves half the text size
 between the two boxes, `move `p.d.b` 6.96 mm right, by (6.96, 0.00) mm`). Move the text
 clear (beside the tick, further out), shorten the mark, grow the frame, or make the text
 smaller: the hint gives the largest size at which the clearance holds (`size=N mm`: the

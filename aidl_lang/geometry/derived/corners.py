@@ -154,8 +154,12 @@ def _narrow_notches(lp, r: float) -> list:
     ``r``: a straight piece between two inside corners, shorter than ``2 r`` (a 3 mm cable
     slit under ``Fillet(4)``, whose bottom comes out round and whose mouth flares: the fresh
     models' run data/model_runs/issue105c, request 15), as ``[(a Loop of the notch's three
-    sides, the size its corners got)]`` for :func:`_narrow_holes`."""
-    from ..shapes.curves import Line, Loop, turn_between
+    sides, the size its corners got)]`` for :func:`_narrow_holes`.  A straight piece between
+    two convex arcs is a bar's side between two circles (a step, issue 111's spinner: a
+    14 mm arm between a 36 mm hub and a 32 mm lobe leaves 2.03 mm): its fillets touch it
+    less than ``r`` from the corners, so the size is what :func:`_fillet` fits there, and it
+    is said only when that is less than ``r``."""
+    from ..shapes.curves import Arc, Line, Loop, turn_between
     segs = lp.segments
     n = len(segs)
     out = []
@@ -165,9 +169,62 @@ def _narrow_notches(lp, r: float) -> list:
         if not isinstance(g, Line) or not g.length < 2 * r * (1 - SHRUNK):
             continue
         a, b = segs[k - 1], segs[(k + 1) % n]
-        if turn_between(a, g) < -CORNER_TURN and turn_between(g, b) < -CORNER_TURN:
-            out.append((Loop([a, g, b]), g.length / 2))
+        t1, t2 = turn_between(a, g), turn_between(g, b)
+        if t1 < -CORNER_TURN and t2 < -CORNER_TURN:
+            least = g.length / 2
+            if _step(a, b):
+                f1, f2 = _fillet(a, g, t1, r), _fillet(g, b, t2, r)
+                least = min(0.0 if f is None else f[2].radius for f in (f1, f2))
+                if least >= r * (1 - SHRUNK):
+                    continue
+            out.append((Loop([a, g, b]), least))
     return out
+
+
+def _step(a, b) -> bool:
+    """True when the straight piece between segments ``a`` and ``b`` of an outer outline runs
+    between two convex arcs (each turns left, the material's way): a bar's side between two
+    circles, not a notch cut into the outline."""
+    from ..shapes.curves import Arc
+    return isinstance(a, Arc) and isinstance(b, Arc) and a.sweep > 0 and b.sweep > 0
+
+
+def _widen(a, g, b, r: float) -> tuple[float, float] | None:
+    """How far from the centers of arcs ``a`` and ``b`` (convex, before and after the line
+    ``g`` of an outer outline) the line must lie for fillets of radius ``r`` to fit at both
+    of its corners, each within half of it (:func:`corners`' rule), the line moved out
+    parallel to itself (a wider bar): ``(distance from a's center, from b's)`` in mm, or None
+    when no such line meets both circles.  Along the line, a circle of radius R whose center
+    is d inside it leaves it sqrt(R^2 - d^2) from the center's foot, and a fillet of radius r
+    outside touches it sqrt((R + r)^2 - (d + r)^2) from there."""
+    (x0, y0), (x1, y1) = g.start, g.end
+    L = g.length
+    ux, uy = (x1 - x0) / L, (y1 - y0) / L
+    pos = [((c[0] - x0) * ux + (c[1] - y0) * uy, -(c[0] - x0) * uy + (c[1] - y0) * ux, R)
+           for c, R in ((a.center, a.radius), (b.center, b.radius))]
+    (s1, d1, R1), (s2, d2, R2) = pos
+    if d1 <= 0 or d2 <= 0:
+        return None
+
+    def ok(e):
+        h1, h2 = (math.sqrt(max(R * R - (d + e) ** 2, 0.0)) for _, d, R in pos)
+        t1 = math.sqrt(max((R1 + r) ** 2 - (d1 + e + r) ** 2, 0.0)) - h1
+        t2 = math.sqrt(max((R2 + r) ** 2 - (d2 + e + r) ** 2, 0.0)) - h2
+        return max(t1, t2) <= (s2 - h2 - s1 - h1) / 2
+
+    h1, h2 = math.sqrt(max(R1 * R1 - d1 * d1, 0.0)), math.sqrt(max(R2 * R2 - d2 * d2, 0.0))
+    if abs(s2 - h2 - s1 - h1 - L) > 1e-6 * max(1.0, L):
+        return None                         # not the circles' far and near crossings
+    top = min(R1 - d1, R2 - d2)
+    steps = 400
+    hi = next((top * i / steps for i in range(1, steps + 1) if ok(top * i / steps)), None)
+    if hi is None:
+        return None
+    lo = hi - top / steps
+    for _ in range(60):
+        mid = (lo + hi) / 2
+        lo, hi = (lo, mid) if ok(mid) else (mid, hi)
+    return d1 + hi, d2 + hi
 
 
 def _narrow_holes(kind: str, r: float, call, narrow: list, body: str | None) -> list:
@@ -182,6 +239,10 @@ def _narrow_holes(kind: str, r: float, call, narrow: list, body: str | None) -> 
     out = []
     path = getattr(getattr(call, "owner", None), "path", "") or "?"
     for lp, least in narrow[:3]:
+        step = None if lp.is_hole else lp.segments
+        if step is not None and _step(step[0], step[2]):
+            out.append(_step_note(kind, r, call, path, step, least, len(out)))
+            continue
         if lp.is_hole:
             xy = lp.points()
             (x0, y0), (x1, y1) = xy.min(axis=0), xy.max(axis=0)
@@ -203,6 +264,46 @@ def _narrow_holes(kind: str, r: float, call, narrow: list, body: str | None) -> 
                     + ("" if lp.is_hole else " (the corners beside the notch's mouth still "
                        "get only what fits, and W0406 says how much)")))
     return out
+
+
+def _step_note(kind: str, r: float, call, path: str, segs: list, least: float,
+               i: int) -> tuple:
+    """W0410 for a step of the outer outline: a bar's side ``segs[1]`` between two circles'
+    arcs ``segs[0]`` and ``segs[2]`` (:func:`_step`), shorter than the fillets at its two
+    inside corners need.  No `Fillet` fills it (rounding only the outside leaves the step
+    sharp: issue 111's spinner, "Fillet(hub, 4)"); the hint says how wide the bar must be
+    for the fillet to fit (:func:`_widen`), or to draw the neck as the circles' `Hull`."""
+    a, g, b = segs
+    mx, my = (g.start[0] + g.end[0]) / 2, (g.start[1] + g.end[1]) / 2
+    circles = " and ".join(f"radius {c.radius:.6g} mm at ({c.center[0]:.6g}, "
+                           f"{c.center[1]:.6g})" for c in (a, b))
+    far = _widen(a, g, b, r)
+    if far is None:
+        widen = ""
+    else:
+        (x0, y0), (x1, y1) = g.start, g.end
+        now = [abs((c.center[0] - x0) * (y1 - y0) - (c.center[1] - y0) * (x1 - x0)) / g.length
+               for c in (a, b)]
+        need = [math.ceil(v * 100 - 1e-9) / 100 for v in far]
+        if abs(now[0] - now[1]) <= 1e-6 * max(1.0, now[0]):
+            widen = (f"widen the bar so that this side lies at least {need[0]:.6g} mm from "
+                     f"the circles' centers (a bar centred on them: at least "
+                     f"{2 * need[0]:.6g} mm wide, not {2 * now[0]:.6g} mm), where the "
+                     f"{r:.6g} mm fillets fit; or ")
+        else:
+            widen = (f"widen the bar so that this side lies at least {need[0]:.6g} mm from "
+                     f"the first circle's center and {need[1]:.6g} mm from the second's "
+                     f"({now[0]:.6g} and {now[1]:.6g} mm now), where the {r:.6g} mm fillets "
+                     f"fit; or ")
+    return (call, "W0410", -2 - i,
+            f"`{kind}` (radius {r:.6g} mm) of the whole outline of `{path}` also rounds the "
+            f"step at ({mx:.6g}, {my:.6g}) mm where a straight side {g.length:.6g} mm long "
+            f"runs between two circles ({circles}): only {least:.6g} mm fits at its "
+            f"corners, so the step comes out as a small round pit",
+            f"no `{kind}` fills this step (it is a bar's side between two circles, and naming "
+            f"only the circles leaves it sharp): " + widen
+            + "draw the neck as the circles' hull, `Hull(a, b)` of two circles in one "
+              "structure (tangent to both, no step), in place of the bar")
 
 
 def _width(xy) -> float:

@@ -19,17 +19,23 @@ from ..core.rank import DENSE_CELLS
 class Sliding(Compared):
     """What the freedom left means (issue 35): ``placement`` the parts whose whole body can
     still move (``[(part, "x"|"y"|"x, y")]``: where the part sits, harmless), ``features``
-    the structures inside a part that can move relative to it (``[(structure, axes)]``)."""
-    __slots__ = ("placement", "features", "constrained", "bounded")
+    the structures inside a part that can move relative to it (``[(structure, axes)]``);
+    ``constrained`` the ids of those some row reads along an axis it slides on, with
+    ``read`` those axes (``{id: "x"|"y"|"x, y"}``: a changed value moves it there, W0404);
+    ``bounded`` the ids of those that slide only within inequalities not reached
+    (``Inside``, ...).  A feature that slides only along axes no row reads stays where it
+    is written (issue 111: `AlignTop(groove, body)` placed the groove in y and left x as
+    written, as a groove with no constraint at all)."""
+    __slots__ = ("placement", "features", "constrained", "bounded", "read")
 
     def __init__(self, placement: list | None = None, features: list | None = None,
-                 constrained: set | None = None, bounded: set | None = None):
+                 constrained: set | None = None, bounded: set | None = None,
+                 read: dict | None = None):
         self.placement = [] if placement is None else placement
         self.features = [] if features is None else features
-        # ids of features some row places; ids of features that slide only within
         self.constrained = set() if constrained is None else constrained
         self.bounded = set() if bounded is None else bounded
-        #                                                 inequalities not reached (Inside, ...)
+        self.read = {} if read is None else read
 
 
 def _parts(model) -> list:
@@ -131,9 +137,12 @@ def sliding(solver) -> Sliding:
             strict = {id(t) for t, _ in _features(p, J, np.zeros_like(loose), scale, where,
                                                    px, model)}
             out.bounded |= {id(t) for t, _ in found if id(t) not in strict}
-        for t, _ in found:
-            if _block(J, [where[t.fx], where[t.fy]])[1].any():
+        for t, a in found:
+            read = [n for n, f in (("x", t.fx), ("y", t.fy))
+                    if n in a.split(", ") and _block(J, [where[f]])[1].any()]
+            if read:        # a row reads it along a free axis: a changed value moves it there
                 out.constrained.add(id(t))
+                out.read[id(t)] = ", ".join(read)
     asm = [t for t in model.structures if t.kind == "assembly"]
     if not out.placement and not out.features:
         for t in asm:                       # a group of parts placed only as a whole
@@ -249,14 +258,15 @@ def _features(p, J, loose, scale, where, px, model) -> list:
 def sliding_text(sl: Sliding) -> str:
     """``free: hole `bore` can slide along x``, ``hole `recess` free but stays where written
     (harmless)`` or ``free: only where the whole part sits (harmless)``; "" when nothing
-    slides.  A feature that some constraint places (and that still slides: ``W0404``) or
-    that slides within an inequality's bounds is said to slide; one placed by its
-    coordinates alone stays where it is written (a part stays, its features are placed on
-    it: the solve keeps the positions nothing else gives), so its freedom is harmless and
-    said so (issue 84: "can slide along x, y" read as a problem to three of four models)."""
+    slides.  A feature that some constraint reads along an axis it slides on (``W0404``,
+    that axis named) or that slides within an inequality's bounds is said to slide; one
+    placed by its coordinates alone along its free axes stays where it is written (a part
+    stays, its features are placed on it: the solve keeps the positions nothing else
+    gives), so its freedom is harmless and said so (issue 84: "can slide along x, y" read
+    as a problem to three of four models)."""
     if sl.features:
-        moves = [(t, a) for t, a in sl.features
-                 if id(t) in sl.constrained or id(t) in sl.bounded]
+        moves = [(t, a if id(t) in sl.bounded else sl.read.get(id(t), a))
+                 for t, a in sl.features if id(t) in sl.constrained or id(t) in sl.bounded]
         kept = [t for t, _ in sl.features if id(t) not in sl.constrained
                 and id(t) not in sl.bounded]
         said = [f"{_name(t)} can slide along {a}"
@@ -281,3 +291,30 @@ def _name(o) -> str:
     if hasattr(o, "path"):
         return f"{o.kind} `{o.path}`"
     return f"`{o.label}`"
+
+
+def where_now(t, part, axes: str, model) -> str | None:
+    """W0404's tie that keeps feature ``t`` where the solve left it: the equation, in ``t``'s
+    parent (``part``), of its box's centre against the box of the part's first named shape
+    along each of ``axes``, with the offset read at the solution to 1e-6 mm
+    (```bits.bb.center.y == plate.bb.center.y + 3.2 mm```; an `AlignCenterY(bits, ...)`
+    written as an example moved a hole written off-centre to the centre).  None when the
+    feature is not the part's own child or the part has no named shape."""
+    from ...geometry.relations.bbox import numeric_box
+    if t.parent is not part:
+        return None
+    shape = next((g for g in part.geometry if g.closed and g.name and not g.construction
+                  and not g.__dict__.get("copied")), None)
+    if shape is None:
+        return None
+    x = model.xs()
+    a, b = numeric_box(t, None, x), numeric_box(shape, None, x)
+    if a is None or b is None:
+        return None
+    out = []
+    for ax in axes.split(", "):
+        k = 0 if ax == "x" else 2
+        off = round((a[k] + a[k + 1]) / 2 - (b[k] + b[k + 1]) / 2, 6) + 0.0
+        tail = "" if off == 0 else f" {'+' if off > 0 else '-'} {abs(off):.10g} mm"
+        out.append(f"`{t.name}.bb.center.{ax} == {shape.name}.bb.center.{ax}{tail}`")
+    return " and ".join(out)

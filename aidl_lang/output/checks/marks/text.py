@@ -539,21 +539,31 @@ def _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs, M
                         f"{max(shorten):.2f} mm further from the text")
         if all(x is not None for x in move):
             along = "along the mark" if all(f[0] for f in fix) else "away from the mark"
-            # which way, as a vector (a model read "further along the mark" both ways, issue 111)
+            # which way, in the page's words and as a vector (a model read "further along
+            # the mark" both ways, issue 111)
             way = fix[0][5]         # set wherever a move is (_fix)
             dx, dy = (round(max(move) * float(w), 2) + 0.0 for w in way)
-            by = (f" (by ({dx:.2f}, {dy:.2f}) mm)"
-                  if all(float(np.hypot(*(f[5] - way))) < 1e-6 for f in fix) else "")
-            ways.append(f"move the text {max(move):.2f} mm further {along}{by}")
+            if all(float(np.hypot(*(f[5] - way))) < 1e-6 for f in fix):
+                line = "along the mark's line" if along == "along the mark" else along
+                ways.append(f"move the text {max(move):.2f} mm {_page_way(way)}, {line} "
+                            f"(by ({dx:.2f}, {dy:.2f}) mm)")
+            else:
+                ways.append(f"move the text {max(move):.2f} mm further {along}")
+        if len(ways) == 2 and _same_size_sibling(g, sizes[i], tg, sizes) is not None:
+            ways.reverse()          # a shorter mark than its sibling's: moving leads
         frame = [f[4] for f in fix]
         if all(x is not None for x in frame):
             ways.append(f"grow `{m.label}` by {max(frame):.2f} mm on each side")
         fits = [_fitting_size(tsegs[f[3]], segs[f[4]], ends_of[f[4]], boxes[f[2]], sizes[f[2]],
                               f[3]) for f in pairs]
+        twin = _same_size_sibling(g, sizes[i], tg, sizes)
+        smaller = ("" if twin is None else
+                   f", smaller than `{_copy_label(twin)}` beside it at {sizes[i]:g} mm")
         if fits and all(x is not None and x > 0 for x in fits):
-            ways.append(f"make the text at most {min(fits):g} mm (size={min(fits):g} mm)")
+            ways.append(f"make the text at most {min(fits):g} mm (size={min(fits):g} mm"
+                        f"{smaller})")
         elif not any(x == 0.0 for x in fits):      # 0: no smaller size clears the mark
-            ways.append("make the text smaller")
+            ways.append("make the text smaller" + (f" ({smaller[2:]})" if smaller else ""))
         if not ways:
             ways.append("move the text clear of the mark")
         sink.warning("W0513", f"{text} is too close to the engraved {what}: the mark {how}"
@@ -562,6 +572,25 @@ def _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs, M
                      f"they read as touching{more}", g.span, labels=labels,
                      hint=f"leave {c:.2f} mm between the text and `{m.label}`: "
                           + ", or ".join(ways))
+
+
+def _page_way(way) -> str:
+    """A unit vector in the page's words: "left", "up", "left and up" (x right, y up)."""
+    x = "right" if way[0] > 1e-6 else "left" if way[0] < -1e-6 else ""
+    y = "up" if way[1] > 1e-6 else "down" if way[1] < -1e-6 else ""
+    return " and ".join(w for w in (x, y) if w)
+
+
+def _same_size_sibling(g, size: float, tg: list, sizes: list):
+    """Another text statement of ``g``'s structure at the same size (a "NAME" label beside
+    "PHONE"), or None: shrinking ``g`` alone to clear a mark would set it apart from it
+    (issue 111's luggage tag), so moving it leads W0513's hint."""
+    owner = getattr(g, "owner", None)
+    for k, t in enumerate(tg):
+        if (t is not g and t.span != g.span and getattr(t, "owner", None) is owner
+                and abs(sizes[k] - size) <= 1e-9 * max(1.0, size)):
+            return t
+    return None
 
 
 def _fitting_size(tseg, mseg, ends, box3, size: float, g) -> float | None:
