@@ -22,7 +22,8 @@ from benchmarks.checks.slider_extremes import NUMERIC, extremes
 
 # the generators whose numeric params all declare their ranges and whose slider extremes
 # compile without a move (the full run: benchmarks/checks/slider_extremes.py, 392 extremes
-# of 48 entries, 24.5 s CPU): tests/test_sweep_gallery*.py sweep these at their declared ends
+# of 48 entries, 24.5 s CPU): tests/test_sweep_gallery*.py sweep those of its sample at their
+# declared ends (:func:`_left_to_the_sweep`)
 LEFT_TO_THE_SWEEP = {"generator/ring_gear", "generator/drawer", "generator/rack_and_pinion",
                      "generator/divider_tray", "generator/spur_gear", "generator/finger_box",
                      "generator/wall_shelf", "generator/lid_box"}
@@ -35,13 +36,21 @@ MOVED = {"generator/tool_holder": "rows", "generator/planetary": "planet",
 STRIDE = 4      # every 4th of the other entries, in the gallery's order, from the first
 
 
+def _left_to_the_sweep() -> set:
+    """The entries of LEFT_TO_THE_SWEEP that tests/test_sweep_gallery*.py sweep (its sample)."""
+    from test_sweep_gallery import _ranged
+    return LEFT_TO_THE_SWEEP & {p.values[0].id for p in _ranged()}
+
+
 def _sample() -> list:
-    """``(entry, names)``: every STRIDE-th entry of the gallery but LEFT_TO_THE_SWEEP and
-    MOVED, all its params (``names`` None), and the first entry with a kind of slider
-    (NUMERIC) those lack; then each MOVED entry with its one param.  A fixed subset, the same on every run (all 452 extremes of 49 entries: 29.8 s of CPU; this:
-    about 5 s); every gallery slider end compiles in the law corpus
-    (benchmarks/laws/law_compiles.py) and in benchmarks/checks/slider_extremes.py."""
-    rest = [e for e in gallery.entries() if e.id not in LEFT_TO_THE_SWEEP and e.id not in MOVED]
+    """``(entry, names)``: every STRIDE-th entry of the gallery but those left to the sweep
+    and MOVED, all its params (``names`` None), and the first entry with a kind of slider
+    (NUMERIC) those lack; then each MOVED entry with its one param.  A fixed subset, the same
+    on every run (all 452 extremes of 49 entries: 29.8 s of CPU; this: about 5 s); every
+    gallery slider end compiles in the law corpus (benchmarks/laws/law_compiles.py) and in
+    benchmarks/checks/slider_extremes.py."""
+    left = _left_to_the_sweep()
+    rest = [e for e in gallery.entries() if e.id not in left and e.id not in MOVED]
     chosen = rest[::STRIDE]
     for kind in NUMERIC:
         if not any(p["kind"] == kind for e in chosen for p in e.params):
@@ -51,13 +60,12 @@ def _sample() -> list:
 
 def test_every_slider_extreme_of_every_gallery_entry_compiles(tmp_path):
     """Each slider extreme of a fixed sample of the entries (:func:`_sample`) compiles,
-    settled where it needs another value moved; LEFT_TO_THE_SWEEP is swept at its ends by
-    tests/test_sweep_gallery*.py."""
-    from test_sweep_gallery import LEFT, _ranged
-    swept = {p.values[0].id for p in _ranged()}
+    settled where it needs another value moved; those left to the sweep are swept at their
+    declared ends by tests/test_sweep_gallery*.py."""
+    left = _left_to_the_sweep()
+    assert left
     for e in gallery.entries():
-        if e.id in LEFT_TO_THE_SWEEP and e.id not in LEFT:      # LEFT: not swept there
-            assert e.id in swept, e.id
+        if e.id in left:
             assert all(p["declared"] for p in e.params if p["kind"] in NUMERIC), e.id
     sample = _sample()
     # the sample holds examples and generators, and every kind of numeric slider
