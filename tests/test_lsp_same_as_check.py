@@ -1,6 +1,6 @@
-"""The language server's diagnostics are `aidl check`'s (docs/editors.md), over every third program
-of examples/ and tests/programs/ (STRIDE): one real server (pytest-lsp over stdio), each file opened in
-turn, its published diagnostics against `aidl check --json FILE` (run in one child process
+"""The language server's diagnostics are `aidl check`'s (docs/editors.md), over every third
+program of examples/ and tests/programs/ (STRIDE): one real server (pytest-lsp over stdio), each
+file opened in turn, its published diagnostics against `aidl check --json FILE` (run in one child process
 for all files), code, line and column of each.
 
 Before issue 83 the server never looked for redundant constraints: the W0401 `aidl check`
