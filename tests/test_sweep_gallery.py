@@ -61,15 +61,15 @@ LATE = "generator/i"     # entries whose id sorts from here on: tests/test_sweep
 SUITE_STRIDE, SUITE_FROM = 2, 1
 
 
-def _ranged(part: int | None = None, every: bool = False):
-    """The ranged entries the suite sweeps (SUITE_STRIDE, SUITE_FROM; ``every``: all of them)
-    as pytest params: all (None), before LATE (0) or from it on (1)."""
+def _ranged(part: int | None = None):
+    """The ranged entries the suite sweeps (SUITE_STRIDE, SUITE_FROM) as pytest params: all
+    (None), before LATE (0) or from it on (1)."""
     from aidl_lang.studio import gallery
     out = []
     ranged = [e for e in gallery.entries()
               if any(p["declared"] and p["min"] is not None and p["max"] is not None
                      and p["kind"] in ("length", "angle", "number", "integer") for p in e.params)]
-    for e in ranged if every else ranged[SUITE_FROM::SUITE_STRIDE]:
+    for e in ranged[SUITE_FROM::SUITE_STRIDE]:
         if part is not None and (e.id >= LATE) != bool(part):
             continue
         marks = ([pytest.mark.xfail(run=False, reason=LEFT[e.id])] if e.id in LEFT else [])
