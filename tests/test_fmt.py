@@ -233,7 +233,9 @@ def _parses(src: str) -> bool:
     return not sink.has_errors
 
 
-@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+# 60 generated programs (150 before h24-suite: 3.8 s of CPU for 2.3 s more): the same laws
+# hold on every bundled file (test_bundled_files_are_formatted: 31 examples, parts, stdlib)
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(program())
 def test_generated_programs_obey_the_laws(src):
     if not _parses(src):          # the generator is loose; the laws hold for valid programs

@@ -89,9 +89,42 @@ CORRECTING = {"W0109"}      # fixes that change the part they name (and the stra
 MOVES = {"W0508"}
 
 
+# h24-suite: the model runs (data/model_runs/) whose compile proposes an edit these laws apply
+# (a fix, a "write `STMT`" hint, a W0401 drop), 22 of 300, found by compiling all of them on
+# 2026-11-28: the suite keeps these and every MODEL_STRIDE-th of the others (where no edit is
+# proposed, nothing is applied); the whole corpus, model runs included, is law 4's
+# (`python -m benchmarks.laws.run --law hints`, benchmarks/laws/law_hints.py)
+HINTED = frozenset({
+    "issue105/run/01_knife_block_side.first_valid.aidl",
+    "issue105/run/11_pick_holder.first_valid.aidl",
+    "issue105b/run/06_birdhouse_front.first_valid.aidl",
+    "issue105b/run/09_label_holder.first_valid.aidl",
+    "issue105c/run/01_toothbrush_holder.aidl",
+    "issue105d/run/01_phone_stand.first_valid.aidl",
+    "issue105d/run/02_pegboard_holder.first_valid.aidl",
+    "issue105e/run/01_door_hanger.first_valid.aidl",
+    "issue105e/run/04_shelf_bracket.first_valid.aidl",
+    "issue35/before/02_gears.first_valid.aidl",
+    "issue35/before/07_toy_car.first_valid.aidl",
+    "issue35/before/08_bottle_opener.first_valid.aidl",
+    "issue51/after/06_eighth_notes.aidl",
+    "issue51/before/06_eighth_notes.aidl",
+    "issue73/programs/e07_bookmark.aidl",
+    "issue84/run/16_tic_tac_toe.first_valid.aidl",
+    "issue84b/run/12_honeycomb_coaster.first_valid.aidl",
+    "requests_round3/after/03_spider_web.first_valid.aidl",
+    "requests_round3/before/01_finger_box.first_valid.aidl",
+    "requests_round3/before/02_tablet_stand.first_valid.aidl",
+    "requests_round3/before/06_mounting_plate.aidl",
+    "requests_round3/before/08_angle_profile.first_valid.aidl",
+})
+MODEL_STRIDE = 4
+
+
 def _programs():
-    """The cases, then every example, test program and model run, each text once (a model
-    run's `before/` and `after/` often hold the same program)."""
+    """The cases, then every example and test program, and the model runs of HINTED and every
+    MODEL_STRIDE-th other (in path order, from the first), each text once (a model run's
+    `before/` and `after/` often hold the same program)."""
     out = [(name, src) for name, (src, _) in CASES.items()]
     seen = {src for _, src in out}
     for p in EXAMPLES + sorted((ROOT / "tests" / "programs").glob("*.aidl")) \
@@ -100,7 +133,10 @@ def _programs():
         if src not in seen:
             seen.add(src)
             out.append((str(p.relative_to(ROOT)), src))
-    return out
+    runs = "data/model_runs/"
+    others = [n for n, _ in out if n.startswith(runs) and n[len(runs):] not in HINTED]
+    left = set(others) - set(others[::MODEL_STRIDE])
+    return [(n, src) for n, src in out if n not in left]
 
 
 PROGRAMS = _programs()
@@ -295,6 +331,13 @@ def test_W0515_round_an_island_says_so_and_names_the_shapes_with_the_island(comp
 def _unsafe_drops(name: str, src: str, compiled) -> tuple:
     """:func:`~benchmarks.laws.law_hints.unsafe_drops` with this module's compile cache."""
     return unsafe_drops(name, src, lambda n, text: compiled(n, text, tag="drop_"))
+
+
+def test_the_sample_holds_every_hinted_model_run():
+    """HINTED names model runs that are there (a renamed one would leave the sample)."""
+    names = {n for n, _ in PROGRAMS}
+    assert {f"data/model_runs/{n}" for n in HINTED} <= names
+    assert 80 <= sum(n.startswith("data/") for n in names) < 120
 
 
 DROP_PROGRAMS = PROGRAMS + [
