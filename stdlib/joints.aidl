@@ -175,8 +175,9 @@ def cross_halving(depth=20 mm, thickness=3 mm, clearance=0 mm, rotation=0 deg,
 # number of equal segments at least `finger` wide (at least 3 while they stay
 # `thickness` wide); every second one, from the first when `start` is "gap",
 # is cut `thickness` deep, so a "tab" edge mates a "gap" edge of the same
-# length at a corner. Members: `gap` (within the panel: the box a relation
-# reads), `overrun` (each run 1 mm past the edges: drawn, in no box).
+# length at a corner. Members: `gap` (a list, one shape per gap, within the
+# panel: `gap[0]`; the joint's box, `j.bb`, is theirs), `overrun` (each run
+# 1 mm past the edges: drawn, in no box).
 # Anchor: (cx, cy) is the middle of the edge; rotation 0: the edge along x, the cuts toward -y.
 def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotation=0 deg,
                 cx=0 mm, cy=0 mm) -> hole {
@@ -275,8 +276,9 @@ def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, sc
 # `depth` beyond it, `length` long), `part` "tail" leaves `tails` tails that
 # widen at `angle` toward their tips (the tail panel reaches across the band);
 # "socket" cuts those tails, `clearance` wider, out of the mate (which starts
-# at the line). Members: `cut` (within the panel: the box a relation reads),
-# `overrun` (each cut run 1 mm past the edges: drawn, in no box).
+# at the line). Members: `cut` (a list, one shape per gap or socket, within
+# the panel: `cut[0]`; the joint's box, `j.bb`, is theirs), `overrun` (each
+# cut run 1 mm past the edges: drawn, in no box).
 # Anchor: (cx, cy) is the middle of the tails' roots (the socket panel's edge); rotation 0: the tails toward +y.
 def dovetail(part="tail", length=60 mm, depth=10 mm, tails=2, angle=10 deg, clearance=0 mm,
              rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {

@@ -1135,3 +1135,19 @@ def test_hole_in_a_drawing_and_a_layout_of_no_part_W0526_E0502(tmp_path, capsys)
                         "-o", str(tmp_path / "d.svg"))
     assert rc == 1 and [(d["code"], d["span"]["line"]) for d in doc["diagnostics"]] == \
         [("W0526", 3), ("E0502", 1)]
+
+
+def test_a_member_of_a_list_is_indexed_in_the_hint(compile_text):
+    """Issue 111's second run: `top.right_tail.cut.bb` of a `dovetail` (its `cut` a list, one
+    gap per tail) was E0102 "a list has no member `bb`" and nothing more; the hint now indexes
+    the list and gives the template's own box."""
+    c = compile_text('import "std/joints.aidl"\nunits mm\nsolid plate {\n'
+                     "    body = Rectangle(center=(0, 0), width=100, height=60)\n"
+                     '    j = dovetail(part="socket", length=40 mm, depth=10 mm, tails=2, '
+                     "rotation=180 deg, cx=0 mm, cy=30 mm)\n"
+                     "    assert j.cut.bb.width > 1 mm\n}\n")
+    d = the_error(c, "E0102")
+    assert span4(d)[:2] == (6, 18)
+    assert d.message == "a list has no member `bb`"
+    assert d.hint == ("`j.cut` is a list of 2 (`j.cut[0]` to `j.cut[1]`): write `j.cut[0].bb` "
+                      "for one of them, or `j.bb` for the box of all of `j`")

@@ -113,16 +113,18 @@ def test_plate_comes_back_as_its_design(plate):
     # two slots, a loop, placed from the right edge they sit by; counts are params
     assert text.count("Slot(") == 1 and "for i in range(slots_n) {" in text
     # the row kept by its member nearest the right edge (16 mm in): a new pitch or count
-    # keeps that end where it is
-    assert "Slot(center=(width / 2 - 16 + (i - (slots_n - 1)) * slots_pitch, 0)" in text
+    # keeps that end where it is; its 16 mm from that edge a param (issue 114)
+    assert "Slot(center=(width / 2 - slots_x + (i - (slots_n - 1)) * slots_pitch, 0)" in text
+    assert "param slots_x = 16 mm  # its end member, from the right edge" in text
     # the corner holes by the language's CornerPattern: the inset one word (issue 93)
     assert "CornerPattern(corner_holes, body, inset=corner_inset)" in text and \
         "hole corner_holes" in text
     assert "for i in range(bolt_circle_n) {" in text and "hole bolt_circle" in text
     assert "param bolt_circle_n = 6" in text and "i * 360 deg / bolt_circle_n" in text
     # the bolt circle is centred on the bore it surrounds: one centre for both, off the
-    # centre line, so placed from the nearer (left) edge, 35 mm in
-    assert "bore_c = (-width / 2 + 35, 0)" in text and "polar(bore_c, bolt_circle_pcd / 2, " in text
+    # centre line, so placed from the nearer (left) edge, 35 mm in (a param: issue 114)
+    assert "bore_c = (-width / 2 + bore_x, 0)" in text and "param bore_x = 35 mm" in text
+    assert "polar(bore_c, bolt_circle_pcd / 2, " in text
     assert "hole bore { h = Circle(center=bore_c, diameter=bore_d) }" in text
     assert "param bolt_circle_pcd = 36 mm" in text and "param corner_hole_d = 4 mm" in text
     assert "param corner_inset = 6 mm" in text and "param width = 100 mm" in text

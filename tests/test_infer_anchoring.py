@@ -161,13 +161,15 @@ def test_a_plate_drawn_from_its_corner_grows_from_it(tmp_path):
 
 def test_a_row_by_the_right_edge_keeps_its_right_hole_when_its_pitch_changes(tmp_path):
     """Three holes 9 mm apart, the last 10 mm from the right edge of a 120 mm plate: the row
-    is written from that hole (``width - 10 + (i - (holes_n - 1)) * holes_pitch``), so a
+    is written from that hole (``width - holes_x + (i - (holes_n - 1)) * holes_pitch``, its
+    10 mm from the edge a param since issue 114), so a
     pitch of 12 keeps it 10 mm from the edge and moves the others (before: from the first
     hole, the last one ended 16 mm from the edge)."""
     src = tmp_path / "r.dxf"
     draw(src, 120, 60, False, [("row", 92, 30)])
     text, _ = import_drawing(src.read_bytes(), "r.dxf", infer=True)
-    assert "width - 10 + (i - (holes_n - 1)) * holes_pitch" in text, text
+    assert "width - holes_x + (i - (holes_n - 1)) * holes_pitch" in text, text
+    assert "param holes_x = 10 mm  # its end member, from the right edge" in text, text
     res = aidl_lang.compile(text, path=tmp_path / "r.aidl", overrides={"holes_pitch": "12 mm",
                                                                        "width": "140 mm"})
     assert res.ok

@@ -212,7 +212,8 @@ def test_a_motor_plate_keeps_its_features_at_the_far_edges(tmp_path):
     holes were single holes and the motor's four a grid off its bore)."""
     text = _motor_text()
     assert "far right and top edges" in text and "slots_inset = 20 mm" in text, text
-    assert "holes_inset = 12 mm" in text and "bore_c = (width - 40, height - 40)" in text, text
+    assert "holes_inset = 12 mm" in text and "bore_c = (width - bore_x, height - bore_y)" \
+        in text and "param bore_x = 40 mm" in text, text      # (its distances params: issue 114)
     assert _holes(text, tmp_path) == _motor_holes(160, 100), text
     assert _holes(text, tmp_path, width=190, height=120) == _motor_holes(190, 120), text
     got = _holes(text, tmp_path, motor_holes_pitch=26, holes_inset=15)

@@ -104,3 +104,52 @@ def test_the_law_holds_on_examples(name):
     from pathlib import Path
     p = Path(__file__).resolve().parent.parent / "examples" / f"{name}.aidl"
     assert law.check(Entry(f"examples/{name}.aidl", p.read_text(), str(p))) == []
+
+
+TWICE = """units mm
+solid plate {
+    body = Rectangle(center=(0, 0), width=80, height=40)
+}
+drawing marks {
+    a = Line(start=(-30, 0), end=(-10, 0))
+    b = Line(start=(-10, 0), end=(-30, 0))
+    c = Line(start=(0, 0), end=(20, 0))
+    d = Line(start=(10, 0), end=(30, 0))
+    r = Circle(center=(0, 10), radius=3)
+    s = Circle(center=(0, 10), radius=3)
+    t = Arc(center=(-20, -10), radius=5, start_angle=0 deg, end_angle=180 deg)
+    u = Arc(center=(-20, -10), radius=5, start_angle=90 deg, end_angle=270 deg)
+}
+"""
+
+
+def test_an_engraving_drawn_twice_is_engraved_once(tmp_path):
+    """A line drawn twice (either way round), two lines over half their length, a circle and
+    two arcs of one circle overlapping by a quarter turn (the Bezier heart's handles in
+    docs/language.md drew (0, 10)-(0, 15) twice and the DXF engraved it twice): the DXF's
+    ENGRAVE layer holds each place once (ezdxf: 20 + 30 mm of lines, one circle, arcs over
+    270 degrees), the SVG as much (svgelements' path lengths), and the law holds."""
+    import math
+    import ezdxf
+    import svgelements
+    r = aidl_lang.compile(source=TWICE)
+    assert r.ok and not [d for d in r.diagnostics if d.severity != "note"], r.diagnostics
+    doc = ezdxf.read(io.StringIO(r.encode("dxf").decode()))
+    eng = [e for e in doc.modelspace() if e.dxf.layer == "ENGRAVE"]
+    lines = sum(math.dist(e.dxf.start, e.dxf.end) for e in eng if e.dxftype() == "LINE")
+    lines += sum(sum(math.dist(p, q) for p, q in zip(pts, pts[1:])) for pts in
+                 (list(e.get_points("xy")) for e in eng if e.dxftype() == "LWPOLYLINE"))
+    assert lines == pytest.approx(50.0, abs=1e-9)
+    assert len([e for e in eng if e.dxftype() == "CIRCLE"]) == 1
+    arcs = sum((e.dxf.end_angle - e.dxf.start_angle) % 360 for e in eng if e.dxftype() == "ARC")
+    assert arcs == pytest.approx(270.0, abs=1e-6)
+    from xml.etree import ElementTree
+    ns = "{http://www.w3.org/2000/svg}"
+    (g,) = [g for g in ElementTree.fromstring(r.encode("svg")).iter(f"{ns}g")
+            if g.get("id") == "engrave"]
+    drawn = sum(svgelements.Path(e.get("d")).length() if e.tag == f"{ns}path" else
+                2 * math.pi * float(e.get("r")) for e in g)
+    assert drawn == pytest.approx(50.0 + 2 * math.pi * 3 + 1.5 * math.pi * 5, abs=1e-3)
+    f = tmp_path / "twice.aidl"
+    f.write_text(TWICE)
+    assert law.check(Entry("twice.aidl", TWICE, str(f))) == []

@@ -176,9 +176,11 @@ def test_prompt_lists_the_whole_registry_and_stays_compact():
     # counts in no box) and the joints' member `overrun`: 8 more, 5,017 and 4,549; issue 112's filled letters (Text's `fill=` and
     # "engraved in a drawing (`fill=true`: their area)", 16 more): 5,033 and 4,565; issue 111's
     # "each number copied from the request, never from the program" (a pick 33 mm wide where 27
-    # was asked passed its own assert `width == 33 mm, "27 mm wide"`): 10 more, 5,043 and 4,575
-    assert word_count(text) <= 5043
-    assert word_count(system_prompt(examples=False)) <= 4575
+    # was asked passed its own assert `width == 33 mm, "27 mm wide"`): 10 more, 5,043 and 4,575;
+    # issue 111's second run: a hole's Circle cannot read its parent's geometry (E0201, with the
+    # fix: numbers and a constraint in the parent; a first try failed on it), 27 more: 5,070, 4,602
+    assert word_count(text) <= 5070
+    assert word_count(system_prompt(examples=False)) <= 4602
 
 
 def test_the_agents_prompt_is_shorter_and_keeps_the_vocabulary(compile_text):
@@ -215,8 +217,9 @@ def test_the_agents_prompt_is_shorter_and_keeps_the_vocabulary(compile_text):
     # 4,636; + 25 for issue 111's reached-for constructs (a bar's start/end, Fillet for a
     # Polygon's corners, a solid's hole and a drawing's lines), 4,661; + 8 for `overrun=true`
     # and the joints' member `overrun` (issue 111), 4,669; + 16 for filled letters (issue 112), 4,685;
-    # + 10 for asserting numbers copied from the request, never the program (issue 111), 4,695
-    assert word_count(text) <= 4695 and len(text) < 0.93 * len(system_prompt())
+    # + 10 for asserting numbers copied from the request, never the program (issue 111), 4,695;
+    # + 27 for a hole's geometry never reading its parent's (E0201, issue 111's second run), 4,722
+    assert word_count(text) <= 4722 and len(text) < 0.93 * len(system_prompt())
 
 
 def test_prompt_members_table_gives_each_member_its_kind():

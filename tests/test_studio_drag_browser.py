@@ -35,15 +35,20 @@ DRAG = """async ([name, start, step, moves, every]) => {
     loads.push({ mark: mark && !mark.hidden ? mark.textContent : "", views: window.studio.views });
   };
   img.addEventListener("load", onload);
-  const views = window.studio.views;
+  const views = window.studio.views, passing = window.studio.passing;
   for (let i = 1; i <= moves; i++) {
     r.value = start + i * step;
     r.dispatchEvent(new Event("input", { bubbles: true }));
     await new Promise((ok) => setTimeout(ok, every));
   }
-  img.removeEventListener("load", onload);
-  return { loads, views: window.studio.views - views, passing: window.studio.passing };
+  // the loads that land after the last move stay counted until the page settles (LATE)
+  window.__dragLoads = loads;
+  window.__dragOff = () => img.removeEventListener("load", onload);
+  return { loads: loads.slice(), views: window.studio.views - views,
+           passing: window.studio.passing - passing };
 }"""
+
+LATE = """() => { window.__dragOff(); return window.__dragLoads; }"""
 
 
 def settle(page, after: int) -> None:
@@ -76,11 +81,20 @@ def test_a_drag_shows_the_pictures_answered_while_it_goes_on(studio_page):
         busy.kill()
         busy.wait()
         page.remove_listener("response", answered)
-    loads = got["loads"]
-    # every picture answered while the slider moves is on the flat view (the one answered
-    # in the drag's last instant may land after it: not counted), each marked with the width it
-    # is of, a width the slider passed (85 + 2k mm), never the sliders' own while they move on
-    assert len(loads) >= pictures - 1 and pictures >= 1, (pictures, got)
+    settle(page, n)
+    late = page.evaluate(LATE)[len(got["loads"]):]
+    # every picture answered while the slider moves is taken up by the page (each a passing
+    # picture, or the sliders' own); the page's own counters, beside the <img>'s loads below
+    # (an answer that reached the test in the drag's last instant may reach the page after it)
+    assert got["passing"] + got["views"] >= pictures - 1 and pictures >= 1, (pictures, got)
+    # and is on the flat view: an <img> load for each, marked with the width it is of, a
+    # width the slider passed (85 + 2k mm), never the sliders' own while they move on.  Loads
+    # that land after the last move (its answer came in its last instant, or the image was
+    # decoded after it) are counted with a mark until the page settles; one image may be
+    # overtaken by the next answer before it is decoded (the browser then loads only the
+    # newer: CI's run at load 2 lost one so, 23 loads of 25 answers, once)
+    loads = got["loads"] + [x for x in late if x["mark"]]
+    assert len(loads) >= pictures - 2, (pictures, got, late)
     passed = [x for x in loads if x["mark"]]
     assert len(loads) >= 4, got
     assert len(passed) >= 3, got
@@ -92,7 +106,6 @@ def test_a_drag_shows_the_pictures_answered_while_it_goes_on(studio_page):
     widths = [float(x["mark"].split()[2]) for x in passed]
     assert widths == sorted(widths), widths
     # once the slider rests, its own picture: the mark gone, the picture drawn at 165 mm
-    settle(page, n)
     assert page.evaluate("window.studio.view.values.width") == "165mm"
     assert page.evaluate("document.getElementById('flat-for').hidden")
     assert page.evaluate("window.studio.errors") == []

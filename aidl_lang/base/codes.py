@@ -781,6 +781,11 @@ says how far to move. The one overlap taken as meant: copies of one pattern (or 
 overlap by at least the minimum wall (a row of vents drawn into one slot), whose fix is
 `AllowOverlap(the pattern's list)`; copies that only graze (less than a wall, or touch) were
 meant apart and get no fix.
+Two overlaps are the design and not warned: a hole that trims the outline (at least half of
+it drawn off the part, and it cuts at least a quarter of the part: a rectangle that halves a
+ring, whose opening then opens onto the new edge as drawn), and an overlap that lies wholly in
+a joint template's run past its cut (its `overrun=true` shapes: a `dovetail` spanning a ring's
+width runs 1 mm into the ring's opening, as it runs 1 mm past any edge to cut cleanly).
 
     solid plate {
         body = Rectangle(center=(0, 0), width=60, height=30)

@@ -170,6 +170,8 @@ class Expressions:
 
     def _e_Member(self, e: A.Member):
         obj = self.eval(e.obj)
+        if isinstance(obj, list) and e.name not in ("x", "y"):
+            _list_member(e, obj)
         v = self.member(obj, e.name, e.name_span, e.obj.span)
         if v is POISON:             # `label.t` whose definition failed: reported once there,
             raise _Silent()         # never again as "no member" (issue 61)
@@ -547,3 +549,32 @@ def _format_width(fmt: str) -> int:
     """The largest number written in a format spec (its width or precision), 0 if none."""
     import re
     return max((int(m) for m in re.findall(r"\d+", fmt)), default=0)
+
+
+def _dotted(e) -> str | None:
+    """``e`` as written when it is a name or a chain of members (``j.cut``), else None."""
+    if isinstance(e, A.Name):
+        return e.id
+    if isinstance(e, A.Member):
+        head = _dotted(e.obj)
+        return f"{head}.{e.name}" if head else None
+    return None
+
+
+def _list_member(e: A.Member, obj: list):
+    """E0102 for a member of a list (a loop's or a template's shapes: `j.cut.bb`), with a
+    hint that indexes it and, for a structure's list, gives the structure's own box (issue
+    111: a model read a dovetail's `cut.bb`, a list of one gap per tail)."""
+    text = _dotted(e.obj)
+    n = len(obj)
+    if text is None or not n:
+        return
+    hint = (f"`{text}` is a list of {n} (`{text}[0]`" + (f" to `{text}[{n - 1}]`" if n > 1
+                                                          else "") +
+            f"): write `{text}[0].{e.name}` for one of them")
+    if "." in text and e.name in ("bb", "width", "height", "left", "right", "top", "bottom",
+                                  "center"):
+        owner = text.rsplit(".", 1)[0]
+        hint += f", or `{owner}.{e.name}` for the box of all of `{owner}`"
+    raise EvalError("E0102", f"a list has no member `{e.name}`", e.name_span, hint=hint)
+

@@ -66,7 +66,8 @@ hole poking past the edge widens it; construction geometry and `overrun=true` sh
 count): for the material
 alone use a shape's box (`plate.body.bb`).
 Rules: a constraint may only refer to its own structure's subtree; geometry may only reuse
-points of its own structure. Booleans: a solid is the union of its shapes and solid children
+points of its own structure (in `hole ring { }` a Circle cannot read its parent's `word.bb.left`
+(E0201): give it numbers and place it by a constraint in the parent, `Concentric(ring.c, loop)`). Booleans: a solid is the union of its shapes and solid children
 (touching or overlapping parts merge into one outline) minus its hole children. So
 a hole cuts the solid it is declared in, that solid's own shapes and solid children alike:
 ```aidl

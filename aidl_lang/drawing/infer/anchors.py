@@ -180,7 +180,7 @@ class _Anchored:
         return _add(head, -side * gap)
 
     def run_at(self, first: float, last: float, axis: int, var: str, cnt: str,
-               pitch: str, step: float | None = None) -> str:
+               pitch: str, step: float | None = None, name: str | None = None) -> str:
         """Member ``var`` of a row from ``first`` to ``last`` (mm along ``axis``, ``cnt``
         members ``pitch`` apart, ``step`` mm): by the spec (docs/import.md, "What an edit
         means"), by its end member when that end sits nearer its edge than :data:`SET_END`
@@ -188,7 +188,10 @@ class _Anchored:
         body's nearer edge (a new pitch or count spreads it about its centre).  Without
         ``step``: from the body's edge nearer its end member than the row's middle is to the
         centre line, by that end member; nearer the centre line but not on it, by the end
-        member nearer its edge (never by its first member)."""
+        member nearer its edge (never by its first member).  ``name``: the param that holds
+        the distance of the end member (or of the middle) from its edge, when it is placed
+        from one (``holes_x``: "move the board 10 mm in" is one number, issue 114); without
+        it that distance is a number in the text."""
         lo, hi = min(first, last), max(first, last)
         if step is not None and self.anchor is not None and self.on_centre((lo + hi) / 2, axis):
             k = f"({var} - ({cnt} - 1) / 2)" if last >= first else f"(({cnt} - 1) / 2 - {var})"
@@ -201,7 +204,7 @@ class _Anchored:
             if min(gl, gh) >= SET_END * step - 1e-9:    # no end at a set distance: its middle
                 k = f"({var} - ({cnt} - 1) / 2)" if last >= first else \
                     f"(({cnt} - 1) / 2 - {var})"
-                mid = self.at((lo + hi) / 2, axis)
+                mid = self.edge_param(name, (lo + hi) / 2, axis, "its middle")
                 return f"{k} * {pitch}" if mid == "0" else f"{mid} + {k} * {pitch}"
             side = -1 if gl <= gh else 1
         else:
@@ -213,12 +216,16 @@ class _Anchored:
             key = "width" if axis == 0 else "height"
             c, half = sh.center[axis], sh.args[key] / 2
             side = 1 if (c + half) - hi < lo - (c - half) else -1
+        by_edge = name is not None and self.anchor is not None and side != 0 and \
+            getattr(self, "profile", None) is None
         if side > 0 and last > first or side < 0 and last < first:
-            end = self.from_side(last, axis, side) if self.anchor is not None else \
+            end = self.from_edge(name, last, axis, side, "its end member") if by_edge else \
+                self.from_side(last, axis, side) if self.anchor is not None else \
                 self.at(last, axis, ref=last)
             term = f"({var} - ({cnt} - 1)) * {pitch}"
         else:
-            end = self.from_side(first, axis, side) if self.anchor is not None and side else \
+            end = self.from_edge(name, first, axis, side, "its end member") if by_edge else \
+                self.from_side(first, axis, side) if self.anchor is not None and side else \
                 self.at(first, axis, ref=(first + last) / 2)
             term = f"{var} * {pitch}"
         return term if end == "0" else f"{end} + {term}"
@@ -259,10 +266,26 @@ class _Anchored:
             "width" if axis == 0 else "height"] / 2
         word = {(0, -1): "left", (0, 1): "right", (1, -1): "bottom", (1, 1): "top"}[(axis, side)]
         g = self.p(name, -side * (v - edge), f"{what}, from the {word} edge")
+        if side == -self.frame[axis] and getattr(self, "stats", None) is not None:
+            self.stats.far.add((axis, side))        # said in the program's head
         e = self.edge(axis, side)
         if side < 0:
             return g if e == "0" else f"{e} + {g}"
         return f"-{g}" if e == "0" else f"{e} - {g}"
+
+    def edge_param(self, name: str | None, v: float, axis: int, what: str) -> str:
+        """Coordinate ``v`` (mm along ``axis``) of a set placed by ``what`` (its middle, its
+        row's line): by :meth:`at`, but where that ties it to an edge, its distance from the
+        edge the param ``name`` (:meth:`from_edge`); as :meth:`at` without ``name``, on the
+        centre line, in a profile, without a body or outside the body."""
+        if name is None or self.anchor is None or getattr(self, "profile", None) is not None:
+            return self.at(v, axis)
+        sh = self.anchor[0]
+        half = sh.args["width" if axis == 0 else "height"] / 2
+        side = _tied({k: abs(v - sh.center[axis] - k * half) for k in (0, -1, 1)})
+        if side == 0 or -side * (v - sh.center[axis] - side * half) <= 0:
+            return self.at(v, axis)
+        return self.from_edge(name, v, axis, side, what)
 
     def pos_from_edges(self, hn: str, c) -> str:
         """:meth:`pos` of a single feature ``hn`` centred at ``c``, each coordinate tied to

@@ -61,6 +61,7 @@ from .patterns.groups import _Groups, corner_sets, corners_and_pattern, follows
 from .patterns.irregular import _Irregular
 from .patterns.mixed import _Mixed, alike
 from .patterns.fields import _Fields
+from .patterns.lattice import _Lattices
 from .patterns.pairs import RING_MAX, RING_MIN, RING_WORK, _Pairs, _ring_about
 from .beside import _beside, beside_order
 from .patterns.rings import _start, ring_in_scatter, rings, start_angle
@@ -82,7 +83,7 @@ class _Stats:
 
 
 class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, _Fields,
-            _Pairs, _Mixed):
+            _Pairs, _Mixed, _Lattices):
     """One part's statements, written into ``w`` at ``depth``."""
 
     def __init__(self, w: _Writer, params: _Params, stats: _Stats, prefix: str) -> None:
@@ -246,7 +247,8 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
             hn = self.name(base)
             self.used.discard(hn)           # the hole itself takes the name (single)
             var = _ident(hn + "_c", self.used)
-            self.w.emit(depth, f"{var} = {self.pos(sh.center)}")
+            # placed from its edge by a param (`bore_x`: the motor 35 mm from the right edge)
+            self.w.emit(depth, f"{var} = {self.pos_from_edges(hn, sh.center)}")
             self.named.add(sh.center)
             self.named_as.append(var)
             self.shared_kind = getattr(self, "shared_kind", {})
@@ -607,115 +609,6 @@ class _Part(_Bodies, _Anchored, _MakerFeatures, _Groups, _Profiles, _Irregular, 
         """The kind of the shared-centre feature at ``c`` (:meth:`share_centres`), or None."""
         nm = self.shared(c)
         return None if nm is None else getattr(self, "shared_kind", {}).get(nm)
-
-    def grid(self, depth: int, sh: Shape, base: str, gr: tuple, missing=()) -> None:
-        """A row, column or grid (``gr`` from :func:`_grid`) as loops over count params:
-        centred on the feature it surrounds or on the body where it is (``(i - (n - 1) /
-        2) * pitch``), else from its first instance placed by the nearest edge or centre;
-        one pitch param when the steps are equal both ways.  ``missing``: the nodes ``(i,
-        j)`` of the lattice left out (:func:`_gapped_grid`), written as the loop's gap list
-        (``if not (i == 2 and j == 1) { ... }``), so the pattern keeps its pitch and
-        place."""
-        x0, y0, dx, dy, nx, ny = gr
-        mid = (x0 + dx * (nx - 1) / 2, y0 + dy * (ny - 1) / 2)
-        around = self.surrounds(mid)
-        hn = self.name({"Circle": "motor_holes"}.get(around, "screw_holes") if around
-                       and sh.kind == "Circle" else base + "s")
-        sizes = self.size_params(hn, sh, True)
-        both = nx > 1 and ny > 1
-        one = both and abs(dx - dy) <= EQUAL_TOL
-        ox, oy, centred = self.origin(mid)
-        body_c = self.anchor[0].center if self.anchor is not None else None
-        out = []
-        loops = []
-        # equal steps both ways: one pitch (``one`` needs both counts above 1)
-        shared = self.p(hn + "_pitch", dx, times=max(nx, ny)) if one else None
-        for axis, (v0, step, n, var) in enumerate(((x0, dx, nx, "i"), (y0, dy, ny, "j"))):
-            if n == 1:
-                out.append(self.at(v0, axis))
-                continue
-            if one:
-                pitch = shared
-            else:
-                pitch = self.p(hn + ("_pitch_x" if axis == 0 else "_pitch_y") if both
-                               else hn + "_pitch", step, times=n)
-            cnt = self.p(hn + (("_cols" if axis == 0 else "_rows") if both else "_n"), n,
-                         unit="")
-            loops.append(f"for {var} in range({cnt}) {{")
-            here = centred or (body_c is not None and abs(mid[axis] - body_c[axis]) <= EQUAL_TOL)
-            if here:
-                o = (ox, oy)[axis]
-                term = f"({var} - ({cnt} - 1) / 2) * {pitch}"
-                out.append(term if o == "0" else f"{o} + {term}")
-            else:
-                out.append(self.run_at(v0, v0 + (n - 1) * step, axis, var, cnt, pitch, step))
-        d = depth
-        if follows(out):
-            self.w.emit(d, f"# {'grid' if both else 'row'}: {follows(out)}"
-                           + (f", about {self.shared(mid)}" if around else ""))
-        for ln in loops:
-            self.w.emit(d, ln)
-            d += 1
-        if missing:
-            gaps = " or ".join(" and ".join(f"{v} == {k}" for v, k, n in
-                                            (("i", i, nx), ("j", j, ny)) if n > 1)
-                               for i, j in missing)
-            many = len(missing) > 1
-            self.w.emit(d, f"if not ({gaps}) {{     # the gap{'s' if many else ''}: "
-                           f"{len(missing)} hole{'s' if many else ''} of the "
-                           f"{'grid' if both else 'row'} left out, as drawn")
-            d += 1
-        self.hole_block(d, hn, sh, f"({out[0]}, {out[1]})", sizes, turns.grid(*gr))
-        if missing:
-            d -= 1
-            self.w.emit(d, "}")
-        for _ in loops:
-            d -= 1
-            self.w.emit(d, "}")
-        kind = "grid" if both else "row"
-        self.stats.patterns[kind + (" with a gap list" if missing else "")] += 1
-
-    def stagger(self, depth: int, sh: Shape, base: str, st: tuple) -> None:
-        """A staggered (hex) grid (``st`` from :func:`_stagger`) as one pattern: one pitch,
-        the rows' step ``pitch * sqrt(3) / 2`` when it is a hex grid (else its own param),
-        the counts params; each row centred on the body or the feature it surrounds where
-        the grid is, else from its first hole."""
-        xa, na, xb, nb, pitch, y0, dy, rows = st
-        mid = ((xa + xa + (na - 1) * pitch) / 2, y0 + dy * (rows - 1) / 2)
-        mid_b = (xb + xb + (nb - 1) * pitch) / 2
-        hn = self.name(base + "s")
-        sizes = self.size_params(hn, sh, True)
-        p = self.p(hn + "_pitch", pitch, times=max(na, rows))
-        if abs(dy - pitch * math.sqrt(3) / 2) <= ROUND_TOL / rows:
-            step = f"{p} * sqrt(3) / 2"
-        else:
-            step = self.p(hn + "_row_pitch", dy, times=rows)
-        cols = self.p(hn + "_cols", na, "in the first row, a row between one less or more" if
-                      na != nb else "", unit="")
-        nrows = self.p(hn + "_rows", rows, unit="")
-        n_j = cols if na == nb else f"{cols} - j % 2" if nb < na else f"{cols} + j % 2"
-        ox, oy, centred = self.origin(mid)
-        body_c = self.anchor[0].center if self.anchor is not None else None
-
-        def here(axis):
-            return centred or (body_c is not None and abs(mid[axis] - body_c[axis]) <= EQUAL_TOL)
-        # placed by its centre, the middle of its field (a grille's pitch or rows changed
-        # keep it about that centre), not by its first hole
-        if abs(mid_b - mid[0]) <= EQUAL_TOL:
-            term = f"(i - ({n_j} - 1) / 2) * {p}"
-            ex = _add0(ox if here(0) else self.at(mid[0], 0), term)
-        else:
-            sign = "+" if xb > xa else "-"
-            ex = f"{self.at(xa, 0, ref=mid[0])} {sign} j % 2 * {p} / 2 + i * {p}"
-        term = f"(j - ({nrows} - 1) / 2) * {step}"
-        ey = _add0(oy if here(1) else self.at(mid[1], 1), term)
-        self.w.emit(depth, f"for j in range({nrows}) {{")
-        self.w.emit(depth + 1, f"for i in range({n_j}) {{")
-        self.hole_block(depth + 2, hn, sh, f"({ex}, {ey})", sizes,
-                        turns.stagger(xa, xb, pitch, y0, dy))
-        self.w.emit(depth + 1, "}")
-        self.w.emit(depth, "}")
-        self.stats.patterns["staggered grid"] += 1
 
     def single(self, depth: int, sh: Shape, body, centres: list, few: bool = False) -> None:
         """One hole of a size no other has: its sizes params named after it (``slot_length``,

@@ -430,6 +430,9 @@ def _holds(points: list, boxes, at) -> bool:
     return inside
 
 
+ONCE = ("cut", "drawing", "score")     # the styles whose strokes :func:`_cut_once` runs once
+
+
 def _cut_once(strokes: list[Stroke], parts: list[PartOutline]) -> list[Stroke]:
     """``strokes`` with each ``cut`` stroke less the stretches already cut: those along the
     outline of a part (the outline is cut anyway) and those along an earlier ``cut`` stroke
@@ -440,20 +443,24 @@ def _cut_once(strokes: list[Stroke], parts: list[PartOutline]) -> list[Stroke]:
     (:func:`.shared._span`: one carrier, parameter ranges overlapping by more than
     :data:`.shared.SHARED_TOL` mm); the rest of a segment is its own piece
     (:func:`.shared._piece`).  Each carrier's ranges are kept sorted: O(n log n).  Other
-    strokes, and cut strokes that share nothing, are kept as they are (the same objects)."""
+    strokes, and cut strokes that share nothing, are kept as they are (the same objects).
+    An engraving (``drawing``) or ``score`` stroke is engraved once the same way: less the
+    stretches of an earlier stroke of its style (two handles drawn along one line, law 5 of
+    docs/laws.md: the DXF drew it twice and the laser burnt it twice)."""
     from .edges.shared import _add, _piece, _span, _uncovered
-    if not any(st.style == "cut" for st in strokes):
+    if not any(st.style in ONCE for st in strokes):
         return strokes
-    cover: dict = {}
+    covers: dict = {"cut": {}}
     for p in parts:
         for lp in p.loops:
             for seg in lp.segments:
-                _add(cover, _span(seg))
+                _add(covers["cut"], _span(seg))
     out = []
     for st in strokes:
-        if st.style != "cut":
+        if st.style not in ONCE:
             out.append(st)
             continue
+        cover = covers.setdefault(st.style, {})
         spans = [_span(seg) for seg in st.segments]
         kept = [_uncovered(cover, x) for x in spans]
         if all(len(r) == 1 and r[0] == (x[1], x[2]) for r, x in zip(kept, spans)):

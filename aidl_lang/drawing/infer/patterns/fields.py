@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from ..params import _add0, _r
 from ..shapes import EQUAL_TOL, Shape
+from ...write.units import UNIT
+from ...write.writer import _num
 from . import turns
 from .find import _roundest
 
@@ -42,6 +44,32 @@ def _margin(lo: float, hi: float) -> float:
     """The roundest margin (:func:`~.find._roundest`) in ``(lo, hi]`` (mm): of the margins
     that keep exactly the holes drawn, the one a maker would have dimensioned."""
     return _roundest(lo + 1e3 * EQUAL_TOL, hi + 1e3 * EQUAL_TOL)
+
+
+def _margin_params(self, hn: str, got: list, ranges: list) -> tuple[str, str, list]:
+    """The margin params of a perforated field (``holes_margin``, or ``_margin_x`` and
+    ``_margin_y``) of values ``got`` (mm, :func:`_margin`), each comment saying the range
+    ``ranges`` (``(lo, hi]`` per axis, mm) the drawing fixes it to: any margin in it keeps
+    the holes drawn, so the value is a reading (the roundest), not a number the drawing
+    holds (issue 114's maker run, #11: a 12 mm margin read as 10); and the head's lines
+    that say so (:attr:`stats.readings`, after the field's own)."""
+    u = UNIT.get()
+
+    def why(span: tuple, where: str) -> str:
+        return (f"from the {where} to the field's: the roundest of the margins over "
+                f"{_num(span[0])} and up to {_num(span[1])} {u}, each keeps the holes drawn")
+    if got[0] == got[1]:            # one margin all round: what both axes allow
+        both = (max(ranges[0][0], ranges[1][0]), min(ranges[0][1], ranges[1][1]))
+        mx = my = self.p(hn + "_margin", got[0], why(both, "plate's edges"))
+        names, spans = [mx], [both]
+    else:
+        mx = self.p(hn + "_margin_x", got[0], why(ranges[0], "left and right edges"))
+        my = self.p(hn + "_margin_y", got[1], why(ranges[1], "top and bottom edges"))
+        names, spans = [mx, my], ranges
+    notes = [f"`{nm}` = {_num(v)} {u}, the roundest reading: every margin over {_num(lo)} "
+             f"and up to {_num(hi)} {u} keeps these holes (the drawing fixes no one number); "
+             f"set the one you dimensioned" for nm, (lo, hi), v in zip(names, spans, got)]
+    return mx, my, notes
 
 
 class _Fields:
@@ -112,14 +140,11 @@ class _Fields:
         for a in (0, 1):                        # one margin all round when one fits both
             if m[1 - a][0] + 1e3 * EQUAL_TOL < got[a] <= m[1 - a][1] + 1e3 * EQUAL_TOL:
                 got[1 - a] = got[a]
-        if got[0] == got[1]:
-            mx = my = self.p(hn + "_margin", got[0], "from the plate's edges to the field's")
-        else:
-            mx = self.p(hn + "_margin_x", got[0], "from the left and right edges to the field's")
-            my = self.p(hn + "_margin_y", got[1], "from the top and bottom edges to the field's")
+        mx, my, notes = _margin_params(self, hn, got, m)
         self.stats.readings.append(
             f"{hn}: a hex field over the plate but for a margin (perforated), refilled by a "
             f"new pitch, hole or plate size")
+        self.stats.readings.extend(notes)
         return [f"({sizes['width']} - 2 * {mx})", f"({sizes['height']} - 2 * {my})"]
 
     def grid_field(self, depth: int, sh: Shape, base: str, gf: tuple) -> None:
@@ -187,11 +212,7 @@ class _Fields:
         hn = self.name(base + "s")
         hole = self.size_params(hn, sh, True)
         d = hole.get("diameter", _r(2 * r))
-        if m[0] == m[1]:
-            mx = my = self.p(hn + "_margin", m[0], "from the plate's edges to the field's")
-        else:
-            mx = self.p(hn + "_margin_x", m[0], "from the left and right edges to the field's")
-            my = self.p(hn + "_margin_y", m[1], "from the top and bottom edges to the field's")
+        mx, my, notes = _margin_params(self, hn, m, ranges)
         px = py = self.p(hn + "_pitch", dx, times=max(nx, ny))
         w = self.w
         w.emit(depth, "# a perforated field: the plate less its margin, as many holes as fit, "
@@ -217,5 +238,6 @@ class _Fields:
         self.stats.readings.append(
             f"{nx} x {ny} {base}s over the plate but for a margin: a perforated field, "
             f"refilled by a new pitch, hole or plate size")
+        self.stats.readings.extend(notes)
         self.stats.patterns["perforated field"] += 1
         return True

@@ -33,6 +33,25 @@ def _near_size(a: Shape, b: Shape) -> bool:
     return 0 < min(x, y) and max(x, y) <= ODD_SIZE * min(x, y)
 
 
+def _beside_drawn(cs: list) -> bool:
+    """Whether the last of ``cs`` (an odd hole after a pattern's holes) sits next to a drawn
+    member when the pattern it would complete has nodes left out (:func:`_gapped_grid`): on
+    a node one step from a held one along a row or column.  A hole of another size past
+    missing members (a terminal strip's 5 mm mounting hole at 118 = 10 + 12 x 9, two nodes
+    past its ten 3.5 mm terminals) is no member: it is a hole of its own, by its nearer edge
+    (issue 114's maker run, #49-51).  True when no node is left out."""
+    gapped = _gapped_grid(cs)
+    if gapped is None or not gapped[1]:
+        return True
+    (x0, y0, dx, dy, nx, ny), missing = gapped
+    gone = set(missing)
+    p = cs[-1]
+    i = round((p[0] - x0) / dx) if nx > 1 else 0
+    j = round((p[1] - y0) / dy) if ny > 1 else 0
+    return any(0 <= a < nx and 0 <= b < ny and (a, b) not in gone
+               for a, b in ((i - 1, j), (i + 1, j), (i, j - 1), (i, j + 1)))
+
+
 class _Irregular:
     def merge_odd(self, groups: dict, body) -> None:
         """A hole of a size no other has that completes a pattern of holes of its kind and
@@ -66,8 +85,8 @@ class _Irregular:
                 # the pattern it completes: the group's, or four at the body's corners
                 # among the group's holes (three corner holes of a grille's hole size)
                 sets = corner_sets(cs, body, rest=True) if len(cs) >= 5 else None
-                if _whole(cs, r) or sets and any(len(cs) - 1 in st for st in sets
-                                                 if len(st) == 4):
+                if _whole(cs, r) and _beside_drawn(cs) or \
+                        sets and any(len(cs) - 1 in st for st in sets if len(st) == 4):
                     u = UNIT.get()
                     self.stats.readings.append(
                         f"a {_num(2 * r0)} {u} hole at {_pt(odd.center)} completes a "

@@ -125,8 +125,9 @@ class _Pairs:
                 f"nearer edge, not a row of 2 from one end")
             for m in sorted(g, key=lambda h: h.center[axis]):
                 self.sunk_as([m])
-                self.hole_block(depth, self.numbered(base) if base == "hole" else
-                                self.name(base), m, self.pos(m.center), sizes)
+                nm = self.numbered(base) if base == "hole" else self.name(base)
+                # its distance from its edge a param (`hole1_x`, `width - hole2_x`)
+                self.hole_block(depth, nm, m, self.pos_from_edges(nm, m.center), sizes)
             self.stats.patterns["equal sizes"] += 1
             return True
         return False

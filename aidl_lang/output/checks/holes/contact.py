@@ -137,11 +137,14 @@ def circle_of(poly: np.ndarray) -> tuple | None:
     return float(ux), float(uy), float(np.hypot(ax - ux, ay - uy))
 
 
-def contact_points(region, filled, circles=()) -> list:
+def contact_points(region, filled, circles=(), edges=()) -> list:
     """The points (x, y) mm where the hole's cut ``region`` (a CrossSection) touches the
     outer loops of ``filled`` (the part with the hole filled in), one per stretch of contact,
     in the order found; ``circles``: the hole's circles ``(cx, cy, r)`` (exact), onto which a
-    stretch lying along one is put back."""
+    stretch lying along one is put back; ``edges``: the part's own circles (exact), whose
+    point nearest a hole circle's centre is the contact where the stretch lies along one (a
+    round hole tangent inside a disc: the tessellated disc's chords near a small hole are too
+    few to fit their circle, and a chord's foot is off by up to its sagitta)."""
     H = [np.asarray(p, dtype=float) for p in region.to_polygons()]
     H = [P for P in H if len(P) >= 3]
     O = [np.asarray(p, dtype=float) for p in filled.to_polygons()]
@@ -166,14 +169,15 @@ def contact_points(region, filled, circles=()) -> list:
     out = []
     for G in _groups(P):
         mid = (G.min(axis=0) + G.max(axis=0)) / 2   # the middle of the stretch
-        out.append(_on_circle(mid, circles, OA, OB))
+        out.append(_on_circle(mid, circles, OA, OB, edges))
     return out
 
 
-def _on_circle(p: np.ndarray, circles, OA, OB) -> tuple:
+def _on_circle(p: np.ndarray, circles, OA, OB, edges=()) -> tuple:
     """``p`` put back on the hole circle it lies along (within :data:`ON_CIRCLE`: the middle
     of a curved stretch lies inside the arc), at the point
-    nearest to the edge near it; else ``p``."""
+    nearest to the edge near it (on an ``edges`` circle that ``p`` lies along, exactly);
+    else ``p``."""
     off = [abs(float(np.hypot(p[0] - cx, p[1] - cy)) - r) for cx, cy, r in circles]
     for k in np.argsort(off, kind="stable"):
         cx, cy, r = circles[k]
@@ -186,6 +190,12 @@ def _on_circle(p: np.ndarray, circles, OA, OB) -> tuple:
             continue
         wide = far <= max(5 * GAP, r)               # enough of an arc edge to fit its circle
         q = _exact_edge_point(c, OA[near], OB[near], OA[wide])
+        for ex, ey, er in edges:                    # the part's own circle it lies along
+            u = c - (ex, ey)
+            m = float(np.hypot(*u))
+            if m > 0 and abs(float(np.hypot(p[0] - ex, p[1] - ey)) - er) <= GAP:
+                q = np.array([ex, ey]) + er * u / m
+                break
         v = q - c
         n = float(np.hypot(*v))
         if n > 0:

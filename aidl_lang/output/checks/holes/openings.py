@@ -39,6 +39,7 @@ from ...part.measure.nearby import (boundaries, boundary, box_pairs, box_pairs_b
                                      close_pairs)
 from .clearing import move_fix
 from .contact import circle_of, contact_points
+from .meant import MeantMerge
 from ..common import (MIN_AREA, MIN_WALL, _area, _contributors, _depth, _edges, _insert_fix,
                       _inside, _loop_boxes, _part_of, _pct, _signed, _significant, _union,
                       below)
@@ -103,7 +104,11 @@ def _check_flush(d: Drawing, s: Structure, shape, a: _Openings, cuts, min_wall: 
                                for g, f in d.own.get(c.hole, ())
                                if g.kind == "Circle" and f is not None and not f.is_empty())
                    if k is not None]
-        at = contact_points(c.region, filled, circles)
+        edges = [k for k in (circle_of(np.asarray(f.to_polygons()[0], dtype=float))
+                             for g, f in d.own.get(s, ())
+                             if g.kind == "Circle" and f is not None and not f.is_empty())
+                 if k is not None]
+        at = contact_points(c.region, filled, circles, edges)
         if not at:                         # (not found on the polygons: the hole's box)
             x0, y0, x1, y1 = c.region.bounds()
             at = [((x0 + x1) / 2, (y0 + y1) / 2)]
@@ -332,6 +337,7 @@ def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None,
     res.areas = [0.0] + [_area(r) for r in regions] + [0.0]
     boxes = np.array([r.bounds() for r in regions], dtype=float)
     reach = max(t, TOUCH)
+    meant = MeantMerge(d, shape, feats, res.areas)
     # 1. holes whose regions overlap: one opening
     merged = set()
     near = box_pairs(boxes, pad=reach / 2)
@@ -345,6 +351,8 @@ def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None,
         a = _area(common)
         if a > 1e-9:
             merged.add((i, j))
+            if meant(i, j, common):
+                continue        # a trim of the outline, or only a joint's overrun: as drawn
             res.merges.append((i + 1, j + 1, _depth(common, boxes[i], boxes[j]), a))
     # 2. the least distance between every two boundaries closer than `reach`
     # the outline: the part with its holes filled; its outer loops are feature 0, the loops
