@@ -141,6 +141,18 @@ DRAWN: dict = {}
 # program (drawing, function argument) -> param name (or a list, set to one value); filled after
 # reading the programs, before any edit was run.
 PICK: dict = {
+    # the Mega's six holes are "one set, from the centre": `width / 2 - 13.96 + c.x`,
+    # `height / 2 + 2.56 + c.y`; no param holds their height (the word rule finds none either)
+    ("mega_plate", "board_y"): None,
+    # `holes_2_x = 15  # its end member, from the right edge`: the board's grid; the word rule
+    # also takes `holes_2_pitch_x`, which no maker moving a board sets
+    ("esp32_carrier", "from_right"): "holes_2_x",
+    # `holes_x = 10  # the set's hole nearest the corner, from the left edge` is the sensor;
+    # `hole1_x = 10  # its centre, from the right edge` the 5 mm hole (both 10, both `_x`)
+    ("sensor_strip", "sensor_x"): "holes_x",
+    ("sensor_strip", "hole_from_right"): "hole1_x",
+    # `v_notches_n = 8` (the word `_n` is in `v_notches_width = 8` too)
+    ("v_comb", "n"): "v_notches_n",
 }
 
 
