@@ -143,3 +143,48 @@ def _descendants(s) -> list:
         out.append(c)
         todo.extend(c.children.values())
     return out
+
+
+def sink_copies(model) -> None:
+    """A pattern copies a sunk hole with its head: each ``Countersink`` / ``Counterbore``
+    of the model also sinks the copies that a ``LinearPattern``, ``CircularPattern``,
+    ``CornerPattern``, ``Mirrored`` (or a copy of a structure holding the hole) made of a hole it
+    names, as a CAD pattern copies a countersunk hole feature whole (issue 111's third run: a
+    `CornerPattern(screw, plate, inset=6 mm)` then `Countersink(screw, diameter=6 mm)` sank one
+    of four screw holes, said only as "1 countersink head").  A copy some call sinks itself
+    keeps that call's head; copies of copies follow.  Run once, after the program."""
+    sinks = getattr(model, "sinks", None)
+    if not sinks:
+        return
+    sunk = {id(g) for sk in sinks for g in sk.circles}
+    for sk in sinks:
+        todo = list(sk.circles)
+        while todo:
+            g = todo.pop()
+            for c in _copies_of(g):
+                if id(c) not in sunk:
+                    sunk.add(id(c))
+                    sk.circles.append(c)
+                    todo.append(c)
+
+
+def _copies_of(g) -> list:
+    """The Circles that copies made of Circle ``g``: of ``g`` itself, or of a structure that
+    holds it (the Circle at the same place in each copy: the same children, the same index in
+    its structure's geometry)."""
+    out = [c for c in g.__dict__.get("pattern_copies", ()) if c.kind == "Circle"]
+    st, path = g.owner, []
+    k = next((i for i, x in enumerate(st.geometry) if x is g), None)
+    while st is not None and k is not None:
+        for copy in st.__dict__.get("pattern_copies", ()):
+            at = copy
+            for name in reversed(path):
+                at = at.children.get(name)
+                if at is None:
+                    break
+            if at is not None and k < len(at.geometry) and at.geometry[k].kind == "Circle":
+                out.append(at.geometry[k])
+        path.append(st.name)
+        st = st.parent
+    return out
+

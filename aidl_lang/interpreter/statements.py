@@ -83,6 +83,8 @@ class Statements(Asserts):
         self.struct, self.scope = saved
         self.model.root = root
         self.model.constants = fctx.scope.vars
+        from .sinks import sink_copies
+        sink_copies(self.model)          # a pattern's copies of a sunk hole, sunk alike
         return self.model
 
     def _new_structure(self, name, kind, parent, span, template=None) -> Structure:

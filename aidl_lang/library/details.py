@@ -4,7 +4,10 @@ nothing compiled here."""
 from __future__ import annotations
 
 DETAILS: dict[str, str] = {
-    "Countersink": "A hole is sunk once (issue 109): named twice (`[a, a.c]`) or again by "
+    "Countersink": "A pattern copies a sunk hole with its head: `CornerPattern(screw, plate, "
+                   "inset=6 mm)` and `Countersink(screw, diameter=6 mm)` sink all four (so "
+                   "do Mirrored and a copied structure; a copy sunk by a call of its own keeps "
+                   "that head). A hole is sunk once (issue 109): named twice (`[a, a.c]`) or again by "
                    "another call with the same head, it is one countersink in `aidl parts`, "
                    "the DXF's COUNTERSINK layer and the router's plunges; sunk again with "
                    "another head or a Counterbore it is E0108 at the second call, naming the "

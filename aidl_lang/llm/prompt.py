@@ -111,7 +111,7 @@ Each child of an `assembly` is a separate part, drawn where the solver puts it (
 - Place(part, position=(x, y, z), rotation=(rx, ry, rz)) in its assembly places a part in 3D
 (numbers known before solving) for `--assembled`; W0517/W0518: parts collide, or touch nothing.
 - Bend(part, at=x, angle=90 deg, radius=r) bends a placed part there (a living hinge).
-Screw heads: `Countersink(holes, diameter=9 mm)` on the holes, never an engraved ring.
+Screw heads: `Countersink(holes, diameter=9 mm)` on the holes (a pattern's copies follow their original), never an engraved ring.
 A warning on a design exactly as requested is accepted in the program, never by changing a
 requested size: `min_wall` (W0507, W0519, W0520), `AllowOverlap(a, b)` (W0501, W0508, W0511,
 W0512, W0517), `construction=true` (W0506), an `assembly` for separate pieces (W0504).

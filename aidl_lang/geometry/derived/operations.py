@@ -364,6 +364,10 @@ def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_
             g.listed = True
             home.geometry.append(g)
         out = GeomRef(g)
+    # what each original became, for what follows it into its copies (a hole's countersink)
+    orig = target.struct if isinstance(target, StructRef) else target.geom
+    copy = out.struct if isinstance(out, StructRef) else out.geom
+    orig.__dict__.setdefault("pattern_copies", []).append(copy)
     if k == 1 and not indexed:
         # the pattern's list starts with the original: it is the copies' `NAME[0]`
         if isinstance(out, StructRef):
