@@ -1176,9 +1176,9 @@ def _spec_anchor(d: Design, f) -> dict:
 
 def _dimensioned(v: float, units: str) -> bool:
     """Whether a distance ``v`` (design units) is one a maker dimensions, as the inference
-    reads it (``infer/patterns/groups.py``): above 0, a whole number of 0.5 mm (0.025 in)."""
-    q = 0.025 if units == "in" else 0.5
-    return v > 1e-7 and abs(v / q - round(v / q)) * q <= 1e-6
+    reads it (``infer/patterns/groups.py``): above 0, a whole number of 0.5 mm or of 0.025 in."""
+    mm = v * (INCH if units == "in" else 1.0)
+    return v > 1e-7 and any(abs(mm / q - round(mm / q)) * q <= 1e-6 for q in (0.5, 0.635))
 
 
 def _plain_anchor(d: Design, f) -> dict:

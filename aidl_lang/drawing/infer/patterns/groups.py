@@ -86,9 +86,9 @@ KNOWN_BOARDS = {
                                       (90.17, 50.8), (96.52, 2.54))),
 }
 BOARD_TOL = 0.02    # mm: a set's holes this near a known board's are that board's
-# a distance from an edge that a maker dimensions: a whole number of these (mm; in inches
-# 0.025 in, a fortieth)
-ROUND_STEP = {"mm": 0.5, "in": 0.025}
+# a distance from an edge that a maker dimensions: a whole number of one of these (mm): half a
+# millimetre, a fortieth of an inch (a board drawn in inches, written in mm by an SVG's viewBox)
+ROUND_STEPS = (0.5, 0.635)
 
 
 def known_board(centres: list) -> tuple | None:
@@ -111,10 +111,11 @@ def known_board(centres: list) -> tuple | None:
 
 def _dimensioned(v: float) -> bool:
     """Whether ``v`` (program units) is a distance a maker dimensions: above 0 and a whole
-    number of :data:`ROUND_STEP` (20 mm, 12.5 mm; 0.375 in)."""
+    number of one of :data:`ROUND_STEPS` (20 mm, 12.5 mm; 0.375 in)."""
     from ...write.units import UNIT
-    q = ROUND_STEP.get(UNIT.get(), 0.5)
-    return v > EQUAL_TOL and abs(v / q - round(v / q)) * q <= 1e-6
+    from ...model import UNIT_MM
+    mm = v * UNIT_MM[UNIT.get()]
+    return v > EQUAL_TOL and any(abs(mm / q - round(mm / q)) * q <= 1e-6 for q in ROUND_STEPS)
 
 
 def set_sides(rest: list, body, mid) -> list[int]:
