@@ -1174,6 +1174,13 @@ def _spec_anchor(d: Design, f) -> dict:
     return f
 
 
+def _dimensioned(v: float, units: str) -> bool:
+    """Whether a distance ``v`` (design units) is one a maker dimensions, as the inference
+    reads it (``infer/patterns/groups.py``): above 0, a whole number of 0.5 mm or of 0.025 in."""
+    mm = v * (INCH if units == "in" else 1.0)
+    return v > 1e-7 and any(abs(mm / q - round(mm / q)) * q <= 1e-6 for q in (0.5, 0.635))
+
+
 def _plain_anchor(d: Design, f) -> dict:
     """``f`` with an edge anchor that puts it on the plate's centre line said as centred: as
     far from both edges, a maker means the centre (the design must not be ambiguous); a
@@ -1187,8 +1194,15 @@ def _plain_anchor(d: Design, f) -> dict:
             lo = d.origin[axis]
             hi = lo + (d.width if axis == 0 else d.height)
             c, sp = d.place(f)[axis], span(f)[axis]
-            if abs(m - (lo + hi) / 2) <= min(m - lo, hi - m):
+            near = c - sp - lo <= hi - c - sp + 1e-9       # its extent's nearer edge: the low
+            gap = c - sp - lo if near else hi - c - sp
+            if abs(m - (lo + hi) / 2) <= min(m - lo, hi - m) and \
+                    (abs(c - (lo + hi) / 2) <= 1e-7 or not _dimensioned(gap, d.units)):
                 f[key] = ("C", c - (lo + hi) / 2)
+            elif abs(m - (lo + hi) / 2) <= min(m - lo, hi - m):
+                # off the centre line, its nearest hole a dimensioned distance from the nearer
+                # edge: from that edge, as it was drawn (issue 114's Mega)
+                f[key] = (names[0], gap) if near else (names[1], gap)
             else:
                 f[key] = (names[0], c - sp - lo) if m - lo <= hi - m else (names[1], hi - c - sp)
         return f

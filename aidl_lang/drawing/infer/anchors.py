@@ -273,6 +273,17 @@ class _Anchored:
             return g if e == "0" else f"{e} + {g}"
         return f"-{g}" if e == "0" else f"{e} - {g}"
 
+    def from_centre(self, name: str, v: float, axis: int, what: str) -> str:
+        """Coordinate ``v`` (mm along ``axis``) written from the body's centre line by a param
+        ``name`` of its signed distance from it (``what`` it measures, said in its comment;
+        + to the right, upward): ``width / 2 + holes_x``; a set placed from the centre is
+        moved by that one number, as one placed from an edge is (issue 114)."""
+        sh = self.anchor[0]
+        line, sense = ("vertical", "+ to the right") if axis == 0 else ("horizontal", "+ upward")
+        g = self.p(name, v - sh.center[axis], f"{what}, from the {line} centre line ({sense})")
+        e = self.edge(axis, 0)
+        return g if e == "0" else f"{e} + {g}"
+
     def edge_param(self, name: str | None, v: float, axis: int, what: str) -> str:
         """Coordinate ``v`` (mm along ``axis``) of a set placed by ``what`` (its middle, its
         row's line): by :meth:`at`, but where that ties it to an edge, its distance from the

@@ -78,6 +78,77 @@ def corners_and_pattern(centres: list, body, r: float) -> list[list[int]] | None
     return sets
 
 
+# the hole sets of boards a maker places by the board's corner (datasheets; mm from the board's
+# lower left corner, its size first): their holes tell where that corner is (issue 114)
+KNOWN_BOARDS = {
+    "Arduino Uno": ((68.58, 53.34), ((13.97, 2.54), (15.24, 50.8), (66.04, 7.62), (66.04, 35.56))),
+    "Arduino Mega": ((101.6, 53.34), ((13.97, 2.54), (15.24, 50.8), (66.04, 7.62), (66.04, 35.56),
+                                      (90.17, 50.8), (96.52, 2.54))),
+}
+BOARD_TOL = 0.02    # mm: a set's holes this near a known board's are that board's
+# a distance from an edge that a maker dimensions: a whole number of one of these (mm): half a
+# millimetre, a fortieth of an inch (a board drawn in inches, written in mm by an SVG's viewBox)
+ROUND_STEPS = (0.5, 0.635)
+
+
+def known_board(centres: list) -> tuple | None:
+    """The lower left corner and size of the known board (:data:`KNOWN_BOARDS`, upright as
+    its datasheet draws it) whose holes are exactly ``centres`` (program units), else None."""
+    from ...write.units import UNIT
+    from ...model import UNIT_MM
+    per = UNIT_MM[UNIT.get()]
+    for size, holes in KNOWN_BOARDS.values():
+        if len(holes) != len(centres):
+            continue
+        pts = [(x / per, y / per) for x, y in holes]
+        first, drawn = min(pts), min(centres)
+        o = (drawn[0] - first[0], drawn[1] - first[1])
+        if all(min(math.dist((x + o[0], y + o[1]), c) for c in centres) <= BOARD_TOL / per
+               for x, y in pts):
+            return o, (size[0] / per, size[1] / per)
+    return None
+
+
+def _dimensioned(v: float) -> bool:
+    """Whether ``v`` (program units) is a distance a maker dimensions: above 0 and a whole
+    number of one of :data:`ROUND_STEPS` (20 mm, 12.5 mm; 0.375 in)."""
+    from ...write.units import UNIT
+    from ...model import UNIT_MM
+    mm = v * UNIT_MM[UNIT.get()]
+    return v > EQUAL_TOL and any(abs(mm / q - round(mm / q)) * q <= 1e-6 for q in ROUND_STEPS)
+
+
+def set_sides(rest: list, body, mid) -> list[int]:
+    """Per axis what a board's set ``rest`` (holes of one size in no pattern) on the
+    rectangular ``body`` is placed from (docs/import.md, "What an edit means"): -1/1 the low/
+    high edge, 0 the centre line.  The reference nearest their middle ``mid`` (ties: the
+    centre); but a set off the centre line whose nearer edge is at a dimensioned distance
+    (:func:`_dimensioned`) from it, from its nearest hole or, a known board's
+    (:func:`known_board`), from the board's side, is placed from that edge, as its maker
+    drew it (issue 114: an Arduino Mega 20 mm from the left of a 200 mm plate, its holes'
+    middle nearer the centre line, moved with the centre)."""
+    board = known_board([m.center for m in rest])
+    out = []
+    for k, key in ((0, "width"), (1, "height")):
+        c, half = body.center[k], body.args[key] / 2
+        gaps = {s: abs(mid[k] - c - s * half) for s in (0, -1, 1)}
+        side = min((0, -1, 1), key=lambda s: (round(gaps[s], 9), s != 0, s))
+        lo, hi = min(m.center[k] for m in rest), max(m.center[k] for m in rest)
+        if side == 0 and abs((lo + hi) / 2 - c) > EQUAL_TOL:
+            near = -1 if lo - (c - half) <= (c + half) - hi + 1e-9 else 1
+            dist = [lo - (c - half) if near < 0 else (c + half) - hi]
+            if board is not None:
+                o, size = board[0][k], board[1][k]
+                if abs(o + size / 2 - c) <= EQUAL_TOL:
+                    dist = []           # the board centred on the plate: the centre
+                else:
+                    dist.append(o - (c - half) if near < 0 else (c + half) - o - size)
+            if any(_dimensioned(g) for g in dist):
+                side = near
+        out.append(side)
+    return out
+
+
 class _Groups:
     def at_corners(self, g: list, mid) -> bool:
         """Whether four equal holes about ``mid`` may be read as at the body's corners
@@ -128,12 +199,7 @@ class _Groups:
             self.w.emit(depth, "}")
             return
         body = self.anchor[0]
-        # per axis the reference nearest their middle: an edge, or the centre line when it
-        # is nearer (a board nearly centred on its plate: its holes are not symmetric)
-        sides = []
-        for k, key in ((0, "width"), (1, "height")):
-            gaps = {s: abs(mid[k] - body.center[k] - s * body.args[key] / 2) for s in (0, -1, 1)}
-            sides.append(min((0, -1, 1), key=lambda s: (round(gaps[s], 9), s != 0, s)))
+        sides = set_sides(rest, body, mid)
         # the hole nearest that corner (on a centre line: nearest the centre) is the origin
         corner = [body.center[k] + sides[k] * body.args["width" if k == 0 else "height"] / 2
                   for k in (0, 1)]
@@ -142,7 +208,10 @@ class _Groups:
         for k, word in ((0, "x"), (1, "y")):
             side = sides[k]
             if side == 0:
-                at.append(self.from_side(ref.center[k], k, 0))
+                # its place from the centre line is a param too (issue 114: `- 13.96` was
+                # a number in the text, and "move the board 8 mm up" had no param)
+                at.append(self.from_centre(f"{hn}_{word}", ref.center[k], k,
+                                           "the set's hole nearest the centre"))
                 said.append("centre line")
                 continue
             at.append(self.from_edge(f"{hn}_{word}", ref.center[k], k, side,
