@@ -103,3 +103,25 @@ solid plate {
 """
     _, warned = _codes(src)
     assert [c for c, _ in warned].count("W0508") == 1, warned
+
+
+def test_W0504_says_how_far_two_pieces_are_and_where():
+    """Issue 111's third run: a star 0.3 mm clear of a tree's top tier (their boxes overlap,
+    so no side relation could be named) got only "for example `Above(a, b, gap=-1 mm)`".  The
+    hint now says how far apart the two pieces are at their nearest and where: a circle of
+    radius 4 at (23, 14) is 1 mm from a 40 x 20 plate's corner (20, 10), the middle of that
+    span at (20.3, 10.4), to the circle's chords (within 0.01 mm)."""
+    import re
+    src = """units mm
+solid plate {
+    body = Rectangle(center=(0, 0), width=40, height=20)
+    knob = Circle(center=(23, 14), radius=4)
+}
+"""
+    r = aidl_lang.compile(source=src)
+    (d,) = [d for d in r.diagnostics if d.code == "W0504"]
+    m = re.match(r"the two pieces are ([\d.]+) mm apart at their nearest, near "
+                 r"\(([-\d.]+), ([-\d.]+)\): make the pieces overlap", d.hint)
+    assert m, d.hint
+    gap, x, y = map(float, m.groups())
+    assert abs(gap - 1.0) <= 0.01 and abs(x - 20.3) <= 0.01 and abs(y - 10.4) <= 0.01

@@ -189,6 +189,10 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
         hint = ("make the pieces overlap (" + _joining(s, pieces, named) + ") or share an edge "
                 "(touching at a point is not enough), or, if they are separate parts, make the "
                 "structure an `assembly`")
+        gap = _apart(pieces) if len(pieces) == 2 else None
+        if gap is not None:            # how far the two are from touching, and where
+            hint = (f"the two pieces are {gap[0]:.2f} mm apart at their nearest, near "
+                    f"({gap[1]:.2f}, {gap[2]:.2f}): " + hint)
     words = [o for o in objs if getattr(o, "kind", None) == "Text" and o.data.get("font")]
     if words and not scaled:             # a word whose letters touch nothing (issue 112)
         w = words[0].name or "word"
@@ -261,6 +265,31 @@ def _cutters(d: Drawing, s: Structure, shape, split: list) -> list:
         if len(out) >= 8:
             break
     return out
+
+
+# W0504 measures how far two pieces are apart only up to this many vertices in all (a rare
+# warning: every vertex of one against every edge of the other, in chunks)
+APART_VERTICES = 20_000
+
+
+def _apart(pieces: list) -> tuple | None:
+    """``(distance mm, x, y)``: where two pieces (CrossSections) come nearest, the middle of
+    the least span between their outlines (issue 111's third run: a star 0.3 mm clear of a
+    tree's top tier, its box overlapping the tier's, so no side relation could say it); None
+    past :data:`APART_VERTICES` or for pieces that touch."""
+    from .holes.contact import _nearest, _segments
+    loops = [[np.asarray(p, dtype=float) for p in x.to_polygons()] for x in pieces]
+    if sum(len(P) for ls in loops for P in ls) > APART_VERTICES:
+        return None
+    best = None
+    for a, b in ((0, 1), (1, 0)):
+        P = np.concatenate(loops[a])
+        A, B = _segments(loops[b])
+        d, foot = _nearest(P, A, B)
+        k = int(np.argmin(d))
+        if best is None or d[k] < best[0]:
+            best = (float(d[k]), *((P[k] + foot[k]) / 2))
+    return best if best[0] > 1e-6 else None
 
 
 def _joining(s: Structure, pieces: list, named: list) -> str:
