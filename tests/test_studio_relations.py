@@ -281,8 +281,9 @@ def test_at_any_plate_size_the_holes_stay_inside_and_in_their_pattern(plates, na
     if counts:                          # odd both ways about a bore: none on the bore
         assert len(holes) == counts[0] * counts[1] - (bool(bore) and counts[0] * counts[1] % 2)
         mid = (sum(h[0] for h in holes) / len(holes), sum(h[1] for h in holes) / len(holes))
-        if name == "rpi":               # its first column 8 mm from the left edge
-            assert (min(h[0] for h in holes) - x0, mid[1]) == pytest.approx((8, (y0 + y1) / 2))
+        if name == "rpi":               # its first column holes_x (drawn 8 mm) from the left edge
+            assert (min(h[0] for h in holes) - x0, mid[1]) == \
+                pytest.approx((v["holes_x"], (y0 + y1) / 2))
         else:
             assert mid == pytest.approx(((x0 + x1) / 2, (y0 + y1) / 2))
     else:
@@ -334,14 +335,18 @@ def test_a_pi_mount_s_holes_keep_their_edge_and_stay_inside(plates):
     mm apart, the first column 8 mm from the left edge of a 160 x 70 plate, centred on its
     height) had no relation: at 40 mm wide its right column sat at x = 66, off the plate.
     Now the x pitch follows the width from the end member (at most 40 - 8 - 1.35 - 1 =
-    29.65 mm: 29.2 on its step), the hole size stays under 2 (8 - 1) mm, and the DXF ezdxf
-    reads has the first column at x = 8 and the last 1 mm or more inside the right edge."""
+    29.65 mm: 29.2 on its step), the end's distance (a param since issue 114, holes_x = 8 mm)
+    stays between holes_d / 2 + 1 mm and what the width leaves for one pitch, and the DXF
+    ezdxf reads has the first column at x = 8 and the last 1 mm or more inside the right
+    edge."""
     folder, docs = plates
     doc = docs["rpi"]
-    assert any("keeps its end 8 mm from the left edge and stays centred on the height" in n
+    assert any("keeps its end holes_x from the left edge and stays centred on the height" in n
                for n in doc["notes"]), doc["notes"]
     src = doc["program"]
-    assert "holes_pitch_x = 58 mm, min = holes_d + 1 mm, max = (width - 8 mm - holes_d / 2 " \
+    assert "param holes_x = 8 mm, min = holes_d / 2 + 1 mm, max = width - 3 * holes_d / 2 " \
+           "- 2.02 mm" in src
+    assert "holes_pitch_x = 58 mm, min = holes_d + 1 mm, max = (width - holes_x - holes_d / 2 " \
            "- 1 mm) / max(holes_cols - 1, 1)" in src
     view = compiler.view(OrderedDict(), "r", folder, src, {"width": "40mm"})
     assert view["ok"] and not [d for d in view["diagnostics"] if d["severity"] == "warning"]
@@ -374,19 +379,20 @@ def _rect_gap(x, y, box) -> float:
 
 @settings(max_examples=8, deadline=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
-@given(k=st.lists(st.floats(0, 1), min_size=7, max_size=7))
+@given(k=st.lists(st.floats(0, 1), min_size=8, max_size=8))
 def test_an_lcd_bezel_keeps_its_window_and_screws_at_any_slider_values(plates, k):
     """Issue 92: an LCD panel (140 x 90, a 71 x 24 window 35 mm below the top edge, centred
     on the width, four 3 mm screws 75 x 31 apart round it: each 2.5 mm clear of the window's
     corner, though 0.5 mm of the window's side in x) had no relation: at 60 mm wide the screws
     and the window left the plate.  Now, at sliders anywhere in their spans (fractions ``k``
     of them, the dependent ones moved into their ranges), the DXF ezdxf reads has the window
-    centred on the width and 35 mm from the top, it and the four screws 1 mm inside the
+    centred on the width and window_y (drawn 35 mm; a slider since issue 114) from the top,
+    it and the four screws 1 mm inside the
     edges, each screw 1 mm clear of the window.  8 settings, about 1 s of CPU (80 outside
     the suite passed)."""
     folder, docs = plates
     doc = docs["lcd"]
-    assert any("35 mm from the top edge" in n for n in doc["notes"]), doc["notes"]
+    assert any("window_y from the top edge" in n for n in doc["notes"]), doc["notes"]
     src = doc["program"]
     rows = compiler.view(OrderedDict(), "l", folder, src, {})["params"]
     values = {p["name"]: f"{p['min'] + f * (p['max'] - p['min']):.3f}mm"
@@ -403,7 +409,7 @@ def test_an_lcd_bezel_keeps_its_window_and_screws_at_any_slider_values(plates, k
     window, plate = boxes
     assert plate == pytest.approx((0, 0, v["width"], v["height"]))
     assert ((window[0] + window[2]) / 2, (window[1] + window[3]) / 2) == \
-        pytest.approx((v["width"] / 2, v["height"] - 35))
+        pytest.approx((v["width"] / 2, v["height"] - v["window_y"]))
     assert min(window[0], window[1], v["width"] - window[2], v["height"] - window[3]) \
         >= WALL - 1e-6
     screws = [(c.dxf.center.x, c.dxf.center.y, c.dxf.radius)

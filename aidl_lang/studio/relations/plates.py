@@ -100,27 +100,34 @@ def _ranged_loop(node, params):
     return None
 
 
+def _dist(node, params):
+    """A distance from an edge as written: a number of mm (a float), a param's name (``holes_x``:
+    what ``aidl import --infer`` writes since issue 114), or None."""
+    if isinstance(node, A.Num) and node.unit in (None, "mm"):
+        return float(node.value)
+    return _name(node, params)
+
+
 def _from_end(expr, var: str, params):
-    """``(kind, a, count, pitch, side)`` of a row from its end member ``a`` mm from an edge:
+    """``(kind, a, count, pitch, side)`` of a row from its end member ``a`` from an edge:
     ``a + var * pitch`` (kind ``"low"``, side None: from the edge at 0) or ``side - a + (var
     - (count - 1)) * pitch`` (``"high"``: from the edge at ``side``, a param), ``a`` a number
-    in mm; or None (count None for ``"low"``: the loop's)."""
+    in mm or a param (:func:`_dist`); or None (count None for ``"low"``: the loop's)."""
     if not (isinstance(expr, A.BinOp) and expr.op == "+" and isinstance(expr.right, A.BinOp)
             and expr.right.op == "*"):
         return None
     left, k, pitch = expr.left, expr.right.left, _name(expr.right.right, params)
     if not pitch:
         return None
-    if isinstance(left, A.Num) and left.unit in (None, "mm") and isinstance(k, A.Name) \
-            and k.id == var:
-        return "low", float(left.value), None, pitch, None
+    if _dist(left, params) is not None and isinstance(k, A.Name) and k.id == var:
+        return "low", _dist(left, params), None, pitch, None
     if isinstance(left, A.BinOp) and left.op == "-" and _name(left.left, params) \
-            and isinstance(left.right, A.Num) and left.right.unit in (None, "mm") \
+            and _dist(left.right, params) is not None \
             and isinstance(k, A.BinOp) and k.op == "-" and isinstance(k.left, A.Name) \
             and k.left.id == var and isinstance(k.right, A.BinOp) and k.right.op == "-" \
             and _name(k.right.left, params) and isinstance(k.right.right, A.Num) \
             and k.right.right.value == 1:
-        return "high", float(left.right.value), k.right.left.id, pitch, left.left.id
+        return "high", _dist(left.right, params), k.right.left.id, pitch, left.left.id
     return None
 
 
@@ -202,8 +209,10 @@ def _grid_parts(source, prog, params):
         return None                     # a bore beside a grid off the centre: not related
     if not _only(prog, (hole, bore_circle)):
         return None
-    used = {w, h, d, ax[2], ay[2], ax[3], ay[3]} | ({bore} if bore else set())
-    if len(used) != 6 + bool(bore) + (ax[3] != ay[3]):
+    ends = {a[1] for a in (ax, ay) if a[0] != "mid" and isinstance(a[1], str)}
+    used = {w, h, d, ax[2], ay[2], ax[3], ay[3]} | ({bore} if bore else set()) | ends
+    if len(used) != 6 + bool(bore) + (ax[3] != ay[3]) + len(ends) or \
+            len([a for a in (ax, ay) if a[0] != "mid" and isinstance(a[1], str)]) != len(ends):
         return None                     # one param in two roles: left as it is
     return grid, plate, bore
 
@@ -246,8 +255,13 @@ def grid_place(source: str, prog, params) -> str:
         if a[0] == "mid":
             mids.append(f"stays centred on the {size}")
         else:
-            ends.append(f"{_fmt(a[1])} mm from the {edges[a[0] == 'high']} edge")
+            ends.append(f"{_dist_text(a[1])} from the {edges[a[0] == 'high']} edge")
     return " and ".join([f"keeps its end {' and '.join(ends)}"] + mids)
+
+
+def _dist_text(a) -> str:
+    """A distance of :func:`_dist` as the program writes it: ``8 mm``, ``holes_x``."""
+    return a if isinstance(a, str) else f"{_fmt(a)} mm"
 
 
 def grid_ranges(source: str, prog, params) -> dict[str, str]:
@@ -255,7 +269,10 @@ def grid_ranges(source: str, prog, params) -> dict[str, str]:
     end member a set distance ``a`` from an edge (a Raspberry Pi's four holes 8 mm from the
     left edge, centred on the height); {} without.  Along an axis about the middle the grid
     spans at most ``S - D - 2 WALL`` of the side ``S``; from an end member at most ``S - a -
-    D / 2 - WALL``, and the hole keeps ``WALL`` to its edge (``D <= 2 (a - WALL)``).  About a
+    D / 2 - WALL``, and the hole keeps ``WALL`` to its edge (``D <= 2 (a - WALL)``).  Where
+    ``a`` is a param (``holes_x``, issue 114) it gets a range too: from ``D / 2 + WALL`` to
+    what the side leaves for one pitch, ``S - 3 D / 2 - 2 WALL`` (then ``D`` is bounded as
+    about the middle, and ``S`` at least as much).  About a
     bore, the counts go by 1 where :func:`bore_skip` can leave out the hole on the bore (odd
     counts both ways), else by 2 from 2 (and an odd ``--set`` count still puts a hole on the
     bore)."""
@@ -264,15 +281,19 @@ def grid_ranges(source: str, prog, params) -> dict[str, str]:
         return {}
     (ax, ay, d, hole, _), (_, w, h, _), bore = parts
     nx, px, ny, py = ax[2], ax[3], ay[2], ay[3]
-    used = {w, h, d, nx, ny, px, py} | ({bore} if bore else set())
+    moved = [(a[1], side) for a, side in ((ax, w), (ay, h))
+             if a[0] != "mid" and isinstance(a[1], str)]     # a param's distance from the edge
+    used = {w, h, d, nx, ny, px, py} | ({bore} if bore else set()) | {m for m, _ in moved}
     v = {k: params[k].value.value for k in used}
     skips = bool(bore) and bore_skip(source, prog, params) is not None
     if bore and not skips and (v[nx] % 2 or v[ny] % 2):
         return {}                       # a hole on the bore's centre: nothing to keep
     lo_d, lo_b = v[d] / 4, (v[bore] / 4 if bore else 0.0)
     wall, two = _fmt(WALL), _fmt(2 * WALL)
-    ends = [a[1] for a in (ax, ay) if a[0] != "mid"]
-    if any(2 * (a - WALL) < lo_d + EPS for a in ends):
+    ends = [a[1] for a in (ax, ay) if a[0] != "mid" and not isinstance(a[1], str)]
+    if any(2 * (a - WALL) < lo_d + EPS for a in ends) or \
+            any(v[m] < v[d] / 2 + WALL or v[m] > v[s] - 1.5 * v[d] - 2 * WALL - 2 * EPS
+                for m, s in moved):
         return {}                       # the drawing's hole is (nearly) at its edge
     avail, least = {}, {}
     for a, side in ((ax, w), (ay, h)):  # each bound EPS inside the next one's: see EPS
@@ -280,20 +301,25 @@ def grid_ranges(source: str, prog, params) -> dict[str, str]:
             avail[side] = f"{side} - {d} - {two} mm"
             least[side] = lo_b + 2 * lo_d + 4 * WALL + 4 * EPS if bore else \
                 2 * lo_d + 3 * WALL + 2 * EPS
+        elif isinstance(a[1], str):     # D's max (below) keeps the param's range open by 2 EPS
+            avail[side] = f"{side} - {a[1]} - {d} / 2 - {wall} mm"
+            least[side] = 2 * lo_d + 3 * WALL + 6 * EPS
         else:
             avail[side] = f"{side} - {_fmt(a[1])} mm - {d} / 2 - {wall} mm"
             least[side] = a[1] + 2 * WALL + 1.5 * (lo_d + EPS) + 2 * EPS
     if bore:
         d_max = f"(min({w}, {h}) - {_fmt(lo_b + 4 * WALL + 3 * EPS)} mm) / 2"
         pitch_min = f"{bore} + {d} + {two} mm"
-    elif not ends:
+    elif not ends and not moved:
         d_max = f"(min({w}, {h}) - {_fmt(3 * WALL + EPS)} mm) / 2"
         pitch_min = f"{d} + {wall} mm"
     else:
         terms = [f"({side} - {_fmt(3 * WALL + EPS)} mm) / 2" if a[0] == "mid" else
+                 f"({side} - {_fmt(3 * WALL + 4 * EPS)} mm) / 2" if isinstance(a[1], str) else
                  f"2 * ({side} - {_fmt(a[1] + 2 * WALL + EPS)} mm) / 3"
                  for a, side in ((ax, w), (ay, h))]
-        d_max = f"min({', '.join(terms)}, {_fmt(2 * (min(ends) - WALL))} mm)"
+        terms += [f"{_fmt(2 * (min(ends) - WALL))} mm"] if ends else []
+        d_max = f"min({', '.join(terms)})"
         pitch_min = f"{d} + {wall} mm"
     out = {w: f", min = {_fmt(least[w])} mm, max = {_fmt(2 * v[w])} mm",
            h: f", min = {_fmt(least[h])} mm, max = {_fmt(2 * v[h])} mm",
@@ -301,6 +327,9 @@ def grid_ranges(source: str, prog, params) -> dict[str, str]:
     if bore:                # 2 EPS: at the bore's max two holes a side still fit by EPS
         out[bore] = f", min = {_fmt(lo_b)} mm, max = min({w}, {h}) - 2 * {d} - " \
                     f"{_fmt(4 * WALL + 2 * EPS)} mm"
+    for m, side in moved:   # the end member WALL inside its edge, one pitch's room beyond it
+        out[m] = f", min = {d} / 2 + {wall} mm, max = {side} - 3 * {d} / 2 - " \
+                 f"{_fmt(2 * WALL + 2 * EPS)} mm"
     for n, side in ((nx, w), (ny, h)):     # as many as fit at the smallest pitch (and EPS)
         cap = max(COUNT_CAP, 2 * int(v[n]))
         fit = f"({avail[side]}) / ({pitch_min} + {_fmt(EPS)} mm)"
@@ -376,18 +405,18 @@ def corner_ranges(source: str, prog, params) -> dict[str, str]:
     return {}
 
 
-def _anchor(source, expr, side: str):
+def _anchor(source, expr, side: str, params):
     """Where a coordinate ``expr`` of a point sits along a plate's side ``side`` (its
-    corner at the origin): ``("mid", None)`` at ``side / 2``, ``("low", c)`` at a number
-    ``c``, ``("high", c)`` at ``side - c``; or None."""
+    corner at the origin): ``("mid", None)`` at ``side / 2``, ``("low", c)`` at ``c``,
+    ``("high", c)`` at ``side - c``, ``c`` a number of mm or a param (``window_y``: what
+    ``aidl import --infer`` writes since issue 114, :func:`_dist`); or None."""
     if _text(source, expr) == f"{side} / 2":
         return "mid", None
-    if isinstance(expr, A.Num) and expr.unit in (None, "mm"):
-        return "low", float(expr.value)
+    if _dist(expr, params) is not None and _dist(expr, params) != side:
+        return "low", _dist(expr, params)
     if isinstance(expr, A.BinOp) and expr.op == "-" and isinstance(expr.left, A.Name) \
-            and expr.left.id == side and isinstance(expr.right, A.Num) \
-            and expr.right.unit in (None, "mm"):
-        return "high", float(expr.right.value)
+            and expr.left.id == side and _dist(expr.right, params) not in (None, side):
+        return "high", _dist(expr.right, params)
     return None
 
 
@@ -412,8 +441,8 @@ def _window(source, prog, params):
             _, w, h, centre = plate
             if _text(source, centre) != f"({w} / 2, {h} / 2)":
                 continue
-            anchors = (_anchor(source, points[at.id].items[0], w),
-                       _anchor(source, points[at.id].items[1], h))
+            anchors = (_anchor(source, points[at.id].items[0], w, params),
+                       _anchor(source, points[at.id].items[1], h, params))
             if None not in anchors and _only(prog, (grid[3], r)):
                 return plate, at.id, anchors, ww, wh, grid
     return None
@@ -425,7 +454,7 @@ def _across(anchor, side: str) -> str:
     kind, c = anchor
     if kind == "mid":
         return side
-    return f"2 * min({_fmt(c)} mm, {side} - {_fmt(c)} mm)"
+    return f"2 * min({_dist_text(c)}, {side} - {_dist_text(c)})"
 
 
 def window_place(source: str, prog, params) -> str:
@@ -437,7 +466,7 @@ def window_place(source: str, prog, params) -> str:
     for (kind, c), edges, size in zip(found[2], (("left", "right"), ("bottom", "top")),
                                       ("width", "height")):
         said.append(f"centred on the {size}" if kind == "mid" else
-                    f"{_fmt(c)} mm from the {edges[kind == 'high']} edge")
+                    f"{_dist_text(c)} from the {edges[kind == 'high']} edge")
     return " and ".join(said)
 
 
@@ -450,13 +479,16 @@ def window_ranges(source: str, prog, params) -> dict[str, str]:
     <= 2 Rx - D - 2 WALL``, the same in y), and each screw ``WALL`` clear of the window's
     corner: ``py >= wh + 2 sqrt((D / 2 + WALL)^2 - max(px - ww, 0)^2 / 4)`` (its height then
     keeps ``py``'s range open: ``wh <= 2 Ry - 2 D - 4 WALL``); the counts stay 2 (more
-    screws would sit on the window's sides)."""
+    screws would sit on the window's sides).  Where ``c`` is a param (``window_y``, issue
+    114) its range keeps the half-room the smallest window and screws need (``N``, from the
+    drawing's sizes / 4) on both sides: ``N + EPS <= c <= S - N - EPS``."""
     found = _window(source, prog, params)
     if found is None:
         return {}
     (_, w, h, _), _, (axx, axy), ww, wh, ((_, _, nx, px, _), (_, _, ny, py, _), d, _, _) = found
-    used = {w, h, d, ww, wh, nx, ny, px, py}
-    if len(used) != 9:
+    moved = [(c, side) for (kind, c), side in ((axx, w), (axy, h)) if isinstance(c, str)]
+    used = {w, h, d, ww, wh, nx, ny, px, py} | {c for c, _ in moved}
+    if len(used) != 9 + len(moved):
         return {}
     v = {k: params[k].value.value for k in used}
     if (v[nx], v[ny]) != (2, 2):
@@ -467,13 +499,19 @@ def window_ranges(source: str, prog, params) -> dict[str, str]:
     least = {}
     for anchor, side in ((axx, w), (axy, h)):
         kind, c = anchor
-        if kind != "mid" and c < need[side] + EPS:
+        c = v[c] if isinstance(c, str) else c
+        if kind != "mid" and (c < need[side] + EPS or v[side] - c < need[side] + EPS):
             return {}                   # the drawing's window sits too near its edge
-        least[side] = 2 * need[side] + EPS if kind == "mid" else c + need[side] + EPS
+        least[side] = 2 * need[side] + EPS if kind == "mid" else \
+            2 * need[side] + 3 * EPS if isinstance(anchor[1], str) else c + need[side] + EPS
     rx, ry = _across(axx, w), _across(axy, h)
     wall = _fmt(WALL)
-    return {w: f", min = {_fmt(least[w])} mm, max = {_fmt(2 * v[w])} mm",
-            h: f", min = {_fmt(least[h])} mm, max = {_fmt(2 * v[h])} mm",
+    out = {w: f", min = {_fmt(least[w])} mm, max = {_fmt(2 * v[w])} mm",
+           h: f", min = {_fmt(least[h])} mm, max = {_fmt(2 * v[h])} mm"}
+    for c, side in moved:   # the window's centre keeps the least half-room on both sides
+        out[c] = f", min = {_fmt(need[side] + EPS)} mm, max = {side} - " \
+                 f"{_fmt(need[side] + EPS)} mm"
+    return {**out,
             d: f", min = {_fmt(lo_d)} mm, max = min(({rx} - {_fmt(3 * WALL + EPS)} mm) / 2, "
                f"({ry} - {_fmt(4 * WALL + lo_wh + 2 * EPS)} mm) / 2)",
             ww: f", min = {_fmt(lo_ww)} mm, max = {rx} - {_fmt(2 * WALL)} mm",
