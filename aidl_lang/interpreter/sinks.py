@@ -152,29 +152,34 @@ def sink_copies(model) -> None:
     names, as a CAD pattern copies a countersunk hole feature whole (issue 111's third run: a
     `CornerPattern(screw, plate, inset=6 mm)` then `Countersink(screw, diameter=6 mm)` sank one
     of four screw holes, said only as "1 countersink head").  A copy some call sinks itself
-    keeps that call's head; copies of copies follow.  Run once, after the program."""
+    keeps that call's head; copies of copies follow.  Run once, after the program: each sunk
+    Circle costs the depth of its structure, each structure's geometry indexed once."""
     sinks = getattr(model, "sinks", None)
     if not sinks:
         return
     sunk = {id(g) for sk in sinks for g in sk.circles}
+    index: dict = {}                # id(structure) -> {id(geometry): its place in it}
     for sk in sinks:
         todo = list(sk.circles)
         while todo:
             g = todo.pop()
-            for c in _copies_of(g):
+            for c in _copies_of(g, index):
                 if id(c) not in sunk:
                     sunk.add(id(c))
                     sk.circles.append(c)
                     todo.append(c)
 
 
-def _copies_of(g) -> list:
+def _copies_of(g, index: dict) -> list:
     """The Circles that copies made of Circle ``g``: of ``g`` itself, or of a structure that
     holds it (the Circle at the same place in each copy: the same children, the same index in
-    its structure's geometry)."""
+    its structure's geometry; ``index``: each structure's places, filled as needed)."""
     out = [c for c in g.__dict__.get("pattern_copies", ()) if c.kind == "Circle"]
     st, path = g.owner, []
-    k = next((i for i, x in enumerate(st.geometry) if x is g), None)
+    at_ = index.get(id(st))
+    if at_ is None:
+        at_ = index[id(st)] = {id(x): i for i, x in enumerate(st.geometry)}
+    k = at_.get(id(g))
     while st is not None and k is not None:
         for copy in st.__dict__.get("pattern_copies", ()):
             at = copy
@@ -187,4 +192,3 @@ def _copies_of(g) -> list:
         path.append(st.name)
         st = st.parent
     return out
-

@@ -188,7 +188,9 @@ def compensate(output: Output, kerf, deadline=None, apart: bool = False) -> Outp
                               f"({x:.4g}, {y:.4g}) is narrower than the cut: the offset path "
                               f"comes {k / 2 - g:.3g} mm into the material there")
         parts.append(PartOutline(p.name, p.kind, loops, p.thickness))
-    return Output(parts, list(output.engrave), output.title, output.drawing, output.page)
+    out = Output(parts, list(output.engrave), output.title, output.drawing, output.page)
+    out.stray = output.stray            # (cut by nothing: the preview draws them as they lie)
+    return out
 
 
 def _narrow(drawn: list, offset: list, d: float):

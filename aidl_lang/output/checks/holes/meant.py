@@ -25,35 +25,35 @@ class MeantMerge:
       meets the ring's opening instead of the air: the run is there to cut cleanly through
       whatever edge it meets; 6 of the 8).
 
-    Each hole's drawn area and overrun region is found once, when first asked."""
+    Each hole's trim and its shapes other than the overrun are found once, when first asked."""
 
     def __init__(self, d, shape, feats, areas):
         self.d, self.shape, self.feats, self.areas = d, shape, feats, areas
         self.part = None                # the part's area, found when first needed
         self.trim: dict = {}
-        self.over: dict = {}
+        self.cuts: dict = {}
 
     def _trim(self, k: int) -> bool:
         if k not in self.trim:
             drawn = self.d.shapes.get(self.feats[k].hole)
             cut = self.areas[k + 1]          # (feature k + 1: 0 is the outline)
             whole = _area(drawn) if drawn is not None else 0.0
-            if whole > 0 and cut <= (1 - TRIM_OFF) * whole and self.part is None:
+            off = whole > 0 and cut <= (1 - TRIM_OFF) * whole     # mostly off the part
+            if off and self.part is None:
                 self.part = _area(self.shape)
-            self.trim[k] = (whole > 0 and cut <= (1 - TRIM_OFF) * whole
-                            and cut >= TRIM_PART * (self.part + cut))
+            self.trim[k] = off and cut >= TRIM_PART * (self.part + cut)
         return self.trim[k]
 
     def _cut(self, k: int):
         """Hole ``k``'s shapes other than its ``overrun=true`` ones (united), when it has
         some overrun (a joint template's hole); else None."""
-        if k not in self.over:
+        if k not in self.cuts:
             own = [(g, f) for g, f in self.d.own.get(self.feats[k].hole, ())
                    if f is not None and not f.is_empty()]
             runs = any(g.data.get("overrun") for g, _ in own)
             cut = [f for g, f in own if not g.data.get("overrun")]
-            self.over[k] = (_union(cut) if cut else False) if runs else None
-        return self.over[k]
+            self.cuts[k] = (_union(cut) if cut else False) if runs else None
+        return self.cuts[k]
 
     def __call__(self, i: int, j: int, common) -> bool:
         if self._trim(i) or self._trim(j):

@@ -89,6 +89,7 @@ def _check_flush(d: Drawing, s: Structure, shape, a: _Openings, cuts, min_wall: 
         return
     feats = [c for c in cuts if c.region is not None and not c.region.is_empty()
              and _area(c.region) > 1e-9]
+    edges = None
     for j in sorted(a.notches):
         c = feats[j - 1]
         whole = _area(d.shapes.get(c.hole))
@@ -104,10 +105,11 @@ def _check_flush(d: Drawing, s: Structure, shape, a: _Openings, cuts, min_wall: 
                                for g, f in d.own.get(c.hole, ())
                                if g.kind == "Circle" and f is not None and not f.is_empty())
                    if k is not None]
-        edges = [k for k in (circle_of(np.asarray(f.to_polygons()[0], dtype=float))
-                             for g, f in d.own.get(s, ())
-                             if g.kind == "Circle" and f is not None and not f.is_empty())
-                 if k is not None]
+        if edges is None:                  # the part's own circles, found once
+            edges = [k for k in (circle_of(np.asarray(f.to_polygons()[0], dtype=float))
+                                 for g, f in d.own.get(s, ())
+                                 if g.kind == "Circle" and f is not None and not f.is_empty())
+                     if k is not None]
         at = contact_points(c.region, filled, circles, edges)
         if not at:                         # (not found on the polygons: the hole's box)
             x0, y0, x1, y1 = c.region.bounds()
