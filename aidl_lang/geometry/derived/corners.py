@@ -159,7 +159,7 @@ def _narrow_notches(lp, r: float) -> list:
     14 mm arm between a 36 mm hub and a 32 mm lobe leaves 2.03 mm): its fillets touch it
     less than ``r`` from the corners, so the size is what :func:`_fillet` fits there, and it
     is said only when that is less than ``r``."""
-    from ..shapes.curves import Arc, Line, Loop, turn_between
+    from ..shapes.curves import Line, Loop, turn_between
     segs = lp.segments
     n = len(segs)
     out = []

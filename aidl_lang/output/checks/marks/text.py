@@ -549,14 +549,14 @@ def _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs, M
                             f"(by ({dx:.2f}, {dy:.2f}) mm)")
             else:
                 ways.append(f"move the text {max(move):.2f} mm further {along}")
-        if len(ways) == 2 and _same_size_sibling(g, sizes[i], tg, sizes) is not None:
+        twin = _same_size_sibling(g, sizes[i], tg, sizes)
+        if len(ways) == 2 and twin is not None:
             ways.reverse()          # a shorter mark than its sibling's: moving leads
         frame = [f[4] for f in fix]
         if all(x is not None for x in frame):
             ways.append(f"grow `{m.label}` by {max(frame):.2f} mm on each side")
         fits = [_fitting_size(tsegs[f[3]], segs[f[4]], ends_of[f[4]], boxes[f[2]], sizes[f[2]],
                               f[3]) for f in pairs]
-        twin = _same_size_sibling(g, sizes[i], tg, sizes)
         smaller = ("" if twin is None else
                    f", smaller than `{_copy_label(twin)}` beside it at {sizes[i]:g} mm")
         if fits and all(x is not None and x > 0 for x in fits):
