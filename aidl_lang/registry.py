@@ -487,7 +487,8 @@ _DEFS = {
                          "a list")], [A("a", "any", doc="a list: its items")],
                        cat="operation", varargs=True,
                        doc="these may overlap: refilled hole (W0501), holes (W0508, "
-                           "W0512), assembly parts (W0511), windows (W0515)."),
+                           "W0512), assembly parts (W0511), windows (W0515), engraving and "
+                           "`self` (W0505)."),
     "Countersink": _c([A("hole", "any"), A("diameter", "length"),
                        A("angle", "angle", math.pi / 2)], cat="operation",
                       doc="Flat-head screw seat: a cone (top diameter, included angle) "

@@ -649,6 +649,16 @@ class Calls:
                             hint=f"write it with a {typ} unit" + (" such as `mm`" if typ == "length" else
                                                                      " such as `deg`" if typ == "angle" else ""))
         if typ == "point":
+            if isinstance(v, Q) and v.dim == LEN and canonical(fname) in (
+                    "HorizontalDistance", "VerticalDistance"):
+                # `HorizontalDistance(tab.bb.left, ring.center, 7 mm)` (issue 111's zipper pull)
+                ax = "x" if canonical(fname) == "HorizontalDistance" else "y"
+                raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be a point, got "
+                                "a length (a coordinate)", span,
+                                hint=f"`{fname}` measures between two points; for a distance "
+                                     f"from a coordinate (`tab.bb.left`), write an equation on "
+                                     f"the other point's `.{ax}`: `ring.center.{ax} == "
+                                     f"tab.bb.left + 7 mm`")
             return self._to_point(v, span)
         if typ == "points":
             if not isinstance(v, (list, tuple)):

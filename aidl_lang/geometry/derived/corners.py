@@ -43,20 +43,41 @@ class Chosen:
     ``name`` the two names; the corner is where they meet: at their ends, where they cross, or
     where one ends on the other), "ends" (a line's two ends) or "corners" (a shape's corners;
     ``name`` the line's or shape's).  ``points``: (x, y) expressions in the structure's frame
-    plus its offset (floats once :meth:`placed`)."""
-    __slots__ = ("what", "points", "name")
+    plus its offset (floats once :meth:`placed`).  ``alts``: for two edges, the other edges
+    of their shapes as ``(name, start, end)`` (E0408's hint names those that do meet, issue
+    111: a Fillet between a turned Trapezoid's parallel `right` and `top`)."""
+    __slots__ = ("what", "points", "name", "alts")
 
-    def __init__(self, what: str, points: tuple, name):
-        self.what, self.points, self.name = what, points, name
+    def __init__(self, what: str, points: tuple, name, alts: tuple = ()):
+        self.what, self.points, self.name, self.alts = what, points, name, alts
 
     def moved(self, f) -> "Chosen":
         """The same corners under ``f`` (a copy's transform of a point's coordinates)."""
-        return Chosen(self.what, tuple(f(px, py) for px, py in self.points), self.name)
+        return Chosen(self.what, tuple(f(px, py) for px, py in self.points), self.name,
+                      tuple((n, f(*a), f(*b)) for n, a, b in self.alts))
 
     def placed(self, x) -> "Chosen":
         from ..core.expr import evaluate
-        return Chosen(self.what, tuple((float(evaluate(px, x)), float(evaluate(py, x)))
-                                       for px, py in self.points), self.name)
+
+        def at(px, py):
+            return (float(evaluate(px, x)), float(evaluate(py, x)))
+        return Chosen(self.what, tuple(at(px, py) for px, py in self.points), self.name,
+                      tuple((n, at(*a), at(*b)) for n, a, b in self.alts))
+
+    def meeting(self) -> list:
+        """For two edges that make no corner: the pairs of this shape's edges that do,
+        each ``(name1, name2)``, one of the two named kept (placed)."""
+        if self.what != "edges" or not self.alts:
+            return []
+        (a1, b1, a2, b2), (n1, n2) = self.points, self.name
+        out = []
+        for n, a, b in self.alts:
+            for keep, (p, q), first in ((n1, (a1, b1), True), (n2, (a2, b2), False)):
+                if n.rsplit(".", 1)[0] == keep.rsplit(".", 1)[0]:
+                    continue                       # an edge of the kept one's own shape
+                if edges_meet((p, q, a, b), (keep, n))[0]:
+                    out.append((keep, n) if first else (n, keep))
+        return list(dict.fromkeys(out))
 
     def targets(self) -> tuple[list, str | None]:
         """(the points to round, why there are none): for two edges the point where they
@@ -347,10 +368,17 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
     out = []
     for i, c in enumerate(chosen):
         if why.get(i):
+            pairs = c.meeting()
+            hint = ("name two edges that meet at the corner (at their ends, where they "
+                    "cross, or where one ends on the other), or the corner's point "
+                    "(`body.top_right`)")
+            if pairs:
+                said = " and ".join(f"`[{a}, {b}]`" for a, b in pairs[:4])
+                hint = (f"of these shapes' edges, {said} do meet: name the pair at the "
+                        "corner meant (a turned shape's edges keep the names they have "
+                        "before its `rotation=`), or the corner's point")
             out.append((call, "E0408", i, f"{head} cannot {verb} {c.describe()}: {why[i]}",
-                        "name two edges that meet at the corner (at their ends, where they "
-                        "cross, or where one ends on the other), or the corner's point "
-                        "(`body.top_right`)"))
+                        hint))
             continue
         js = [j for j, (_, ci) in enumerate(pts) if ci == i]
         found = [got[j] for j in js if j in got]

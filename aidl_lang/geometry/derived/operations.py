@@ -433,7 +433,9 @@ def apply(ctx, kind: str, args: dict, name: str | None):
             if any(contains_bbox(p.x) or contains_bbox(p.y) for c in at for p in c.points):
                 raise OperationError(f"{kind} at: name corners by geometry (`body.top_right`, "
                                      f"`[body.top, body.right]`), not by bounding-box values")
-            at = [Chosen(c.what, tuple((p.x + ox, p.y + oy) for p in c.points), c.name)
+            at = [Chosen(c.what, tuple((p.x + ox, p.y + oy) for p in c.points), c.name,
+                         tuple((n, (a.x + ox, a.y + oy), (b.x + ox, b.y + oy))
+                               for n, a, b in c.alts))
                   for c in at]
         call = FinishCall(args.get("_span") or ctx.cur_span, S, kind)
         S.finish = list(getattr(S, "finish", [])) + [(kind, r, at, call)]
@@ -552,7 +554,9 @@ def _allow_overlap(items: list, S=None, span=None) -> None:
     :func:`aidl_lang.output.checks.holes.openings._intended`); every two solid structures among them
     (parts of an assembly) may interpenetrate (W0511:
     :func:`aidl_lang.output.checks.parts._allowed`).  Both are kept in the structures'
-    ``overlap_ok`` sets; the call itself (``span``, the things named) in the ``allowances`` of
+    ``overlap_ok`` sets; an engraving named with its part (or a shape of it) may run off
+    the part's material (W0505: :func:`aidl_lang.output.checks.marks.engravings._meant_off`),
+    kept in the drawing's ``engrave_ok``; the call itself (``span``, the things named) in the ``allowances`` of
     ``S``, the structure it is written in (W0523: one that allows nothing).  One argument is
     a list (``AllowOverlap(c)``: a loop's copies in a hole, W0512).  Raises :class:`OperationError` for an argument that is no shape or
     structure, or when nothing is named that the two rules concern (no hole, fewer than two
@@ -599,10 +603,25 @@ def _allow_overlap(items: list, S=None, span=None) -> None:
         if len(shapes) > 1:
             owner.enclosure_ok = list(getattr(owner, "enclosure_ok", ())) + [shapes]
             done = True
+    # an engraving (a drawing, or a shape in one) that runs off its part's material on
+    # purpose, named with the part (`self`) or a shape of it: W0505 is said as meant
+    # (aidl_lang.output.checks.marks.engravings._meant_off; grid lines over a joint band)
+    def in_drawing(o):
+        owner = o if isinstance(o, Structure) else o.owner
+        return owner.kind == "drawing" or any(a.kind == "drawing" for a in owner.ancestors())
+    drawn = [o for o in objs if in_drawing(o)]
+    material = [o for o in objs if not in_drawing(o)
+                and (o if isinstance(o, Structure) else o.owner).kind == "solid"]
+    if drawn and material:
+        for o in drawn:
+            node = o if isinstance(o, Structure) else o.owner
+            node.engrave_ok = list(getattr(node, "engrave_ok", ())) + [(o, material)]
+        done = True
     if not done:
         raise OperationError("AllowOverlap names a hole and what may refill it, two solid "
-                             "parts (of an assembly) that may overlap, or two or more shapes "
-                             "of one solid that enclose an opening as meant; got "
+                             "parts (of an assembly) that may overlap, two or more shapes "
+                             "of one solid that enclose an opening as meant, or an engraving "
+                             "and its part (`self`) that it runs off on purpose; got "
                              + " and ".join(_what(StructRef(o) if isinstance(o, Structure)
                                                   else GeomRef(o)) for o in objs))
     if S is not None:
@@ -867,6 +886,19 @@ def _name(g: Geometry, S: Structure) -> str:
     return f"{where}.{name}" if where else name
 
 
+def _sibling_edges(edges: list) -> list:
+    """The other named straight edges (``parts``) of the shapes ``edges`` are edges of (a
+    Trapezoid's `left` and `right` beside its `top`), for E0408's hint."""
+    out = []
+    for g in edges:
+        for h in g.owner.geometry:
+            if any(q is g for q in h.parts.values()):
+                out += [q for q in h.parts.values() if getattr(q, "kind", None) == "Line"
+                        and all(q is not e for e in edges) and all(q is not o for o in out)]
+                break
+    return out
+
+
 def _chosen(ctx, v, S, kind: str) -> list:
     """The corners (:class:`~.corners.Chosen`, points in ``S``'s frame) a
     ``Fillet(at, ...)``/``Chamfer(at, ...)`` names: a point; two lines (the corner where they
@@ -881,7 +913,9 @@ def _chosen(ctx, v, S, kind: str) -> list:
     if isinstance(v, (list, tuple)):
         if len(v) == 2 and all(isinstance(e, GeomRef) and e.geom.kind == "Line" for e in v):
             ends = tuple(member(e.geom, k, S) for e in v for k in ("start", "end"))
-            return [Chosen("edges", ends, tuple(_name(e.geom, S) for e in v))]
+            alts = tuple((_name(q, S), member(q, "start", S), member(q, "end", S))
+                         for q in _sibling_edges([e.geom for e in v]))
+            return [Chosen("edges", ends, tuple(_name(e.geom, S) for e in v), alts)]
         return [c for e in v for c in _chosen(ctx, e, S, kind)]
     if isinstance(v, GeomRef):
         g = v.geom

@@ -50,6 +50,12 @@ def _hole(o):
     return None
 
 
+def _drawn(o) -> bool:
+    """``o`` is an engraving: a drawing structure, or a shape or structure inside one."""
+    owner = o if isinstance(o, Structure) else o.owner
+    return owner.kind == "drawing" or any(a.kind == "drawing" for a in owner.ancestors())
+
+
 def _part(o) -> bool:
     return isinstance(o, Structure) and o.kind == "solid" \
         and not any(a.kind == "solid" for a in o.ancestors())
@@ -97,6 +103,17 @@ def check_allowances(d: Drawing, sink: DiagnosticSink, tick=lambda: None) -> Non
             if placed and sum(map(_part, objs)) > 1:
                 used = True                # a 3D fit may need it (W0517)
                 break
+            drawn = [o for o in objs if _drawn(o)]
+            if drawn:                      # an engraving off its part on purpose (W0505)
+                if not getattr(d, "engravings_judged", False) or any(
+                        id(o) in getattr(o if isinstance(o, Structure) else o.owner,
+                                         "engrave_used", ()) for o in drawn):
+                    used = True
+                    break
+                judged = True
+                if all(_drawn(o) or (o if isinstance(o, Structure) else o.owner).kind == "solid"
+                       for o in objs):
+                    continue               # nothing else in it to allow
             objs = list({id(o): o for o in objs}.values())
             shapes = [_shape(d, o, faces) for o in objs]
             idx = [k for k, sh in enumerate(shapes) if sh is not None and not sh.is_empty()]
@@ -128,7 +145,12 @@ def check_allowances(d: Drawing, sink: DiagnosticSink, tick=lambda: None) -> Non
                 break
         if used or not judged:
             continue
-        names = ", ".join(_label(o) for o in calls[0])
+        names = ", ".join(dict.fromkeys(_label(o) for o in calls[0]))
+        if any(map(_drawn, calls[0])):
+            sink.warning("W0523", f"`AllowOverlap` allows nothing: {names}: the engraving lies "
+                         "on its part's material, so it silences no warning (W0505)", span,
+                         hint="delete the statement")
+            continue
         if all(not isinstance(o, Structure) and o.owner.kind == "solid" for o in calls[0]):
             sink.warning("W0523", f"`AllowOverlap` allows nothing: {names} enclose no opening "
                          "that is warned about (W0515), so it silences no warning", span,

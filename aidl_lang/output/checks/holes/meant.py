@@ -4,11 +4,14 @@
 whose regions overlap; a pair it answers True for is neither W0508 nor measured as a web."""
 from __future__ import annotations
 
+import manifold3d as mf
+
 from ..common import _area, _union
 
 # a hole is a trim of the part's outline (W0508 leaves the holes it opens alone) when at least
 # this share of its drawn area lies off the part and what it cuts is at least TRIM_PART of it
 TRIM_OFF, TRIM_PART = 0.5, 0.25
+MOUTH_TOUCH = 0.01      # mm: a hole this near a joint's mouth opens it (the drawn edges meet)
 
 
 class MeantMerge:
@@ -25,13 +28,21 @@ class MeantMerge:
       meets the ring's opening instead of the air: the run is there to cut cleanly through
       whatever edge it meets; 6 of the 8).
 
-    Each hole's trim and its shapes other than the overrun are found once, when first asked."""
+    * one is a joint template's cut whose **mouth opens into the other**: the strip its run
+      past its cut adds (where the cut meets the edge) touches the other hole, which has
+      taken that edge away (issue 111's third run: a plant stand's cross-halving slot cut up
+      from the bottom edge, through the arch between its feet; the slot reaches the edge
+      through the arch, as it must to slide onto its mate).
+
+    Each hole's trim, its shapes other than the overrun and its mouth are found once, when
+    first asked."""
 
     def __init__(self, d, shape, feats, areas):
         self.d, self.shape, self.feats, self.areas = d, shape, feats, areas
         self.part = None                # the part's area, found when first needed
         self.trim: dict = {}
         self.cuts: dict = {}
+        self.mouths: dict = {}
 
     def _trim(self, k: int) -> bool:
         if k not in self.trim:
@@ -55,8 +66,33 @@ class MeantMerge:
             self.cuts[k] = (_union(cut) if cut else False) if runs else None
         return self.cuts[k]
 
+    def _mouth(self, k: int):
+        """Hole ``k``'s mouth: its ``overrun=true`` shapes less its others (the 1 mm strip a
+        joint's cut runs past the edge), or None when it has no overrun."""
+        if k not in self.mouths:
+            cut = self._cut(k)
+            mouth = None
+            if cut is not None:
+                runs = _union([f for g, f in self.d.own.get(self.feats[k].hole, ())
+                               if f is not None and g.data.get("overrun")])
+                mouth = runs - cut if cut is not False else runs
+                mouth = None if mouth.is_empty() else mouth
+            self.mouths[k] = mouth
+        return self.mouths[k]
+
+    def opens_into(self, i: int, j: int) -> bool:
+        """One of holes ``i``, ``j`` is a joint's cut whose mouth touches the other (drawn
+        as written, grown by :data:`MOUTH_TOUCH`)."""
+        for k, m in ((i, j), (j, i)):
+            mouth = self._mouth(k)
+            other = self.d.shapes.get(self.feats[m].hole) if mouth is not None else None
+            if other is not None and not other.is_empty() and _area(
+                    mouth ^ other.offset(MOUTH_TOUCH, mf.JoinType.Miter)) > 1e-9:
+                return True
+        return False
+
     def __call__(self, i: int, j: int, common) -> bool:
-        if self._trim(i) or self._trim(j):
+        if self._trim(i) or self._trim(j) or self.opens_into(i, j):
             return True
         for k in (i, j):                # the common area only in k's run past its cut
             cut = self._cut(k)

@@ -16,6 +16,7 @@ import manifold3d as mf
 import numpy as np
 
 from ....base.diagnostics import DiagnosticSink
+from ....geometry.core.model import Structure
 from ...part.build.booleans import Drawing
 from ..common import _edges, _inside, _part_of, _pct, _signed
 
@@ -240,6 +241,8 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         where = "across a hole" if in_outline.all() else (
             "outside the outline" if not in_outline.any() else "outside the outline and across a hole")
         warned.add(g)
+        if _meant_off(g, part):
+            continue
         if _is_flat_text(g, items):
             said = _text_off(d, roots, part, g, items, pts, inside, in_outline, tick)
             if said is not None:
@@ -258,13 +261,42 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         arc = _arc_on_material(g, items, roots[part])
         if arc:
             hint = f"{arc}; or {hint}"
+        hint += (f"; if it runs off the material on purpose (lines carried over a joint's "
+                 f"band), say so with `AllowOverlap({_ref_in(g, part)}, self)` in `{part.path}`")
         sink.warning("W0505", f"engraving `{g.label}` runs {where} of `{part.path}` "
                      f"({share} of it is off the material)", g.span, hint=hint)
+    d.engravings_judged = True          # (W0523: an AllowOverlap of an engraving that no W0505 needed)
     for part, geoms in by_part.items():
         if tick is not None:
             tick(part)
         _check_meets_cut(part, roots[part], [(g, it) for g, it in geoms if g not in warned],
                          (loops or {}).get(part), sink)
+
+
+def _meant_off(g, part) -> bool:
+    """``AllowOverlap(g, self)`` (or naming a drawing around ``g``, and ``part``, a structure
+    around it or a shape of it) was written: ``g`` runs off ``part``'s material on purpose
+    (issue 111: a checkerboard's grid lines carried over its dovetail band).  The statement
+    is marked as used (``engrave_used``, read by W0523)."""
+    node = g.owner
+    while node is not None:
+        for named, material in getattr(node, "engrave_ok", ()):
+            if named is not g and named is not node:
+                continue
+            if any(part is m or part.is_within(m) if isinstance(m, Structure)
+                   else m.owner is part for m in material):
+                node.engrave_used = getattr(node, "engrave_used", set()) | {id(named)}
+                return True
+        if node is part:
+            break
+        node = node.parent
+    return False
+
+
+def _ref_in(g, part) -> str:
+    """``g``'s name as written in ``part``'s body (``grid.h`` for ``board.left.grid.h``)."""
+    label = g.label or "NAME"
+    return label[len(part.path) + 1:] if label.startswith(part.path + ".") else label
 
 
 def _is_flat_text(g, items) -> bool:

@@ -1,0 +1,121 @@
+"""Issue 111's third fresh-model run (data/model_runs/issue111c/REPORT.md, "Messages found
+confusing or wrong"), each on the run's own program through the real checker: W0505 said as
+meant with `AllowOverlap(lines, self)` (a checkerboard's grid lines over its dovetail band),
+W0508 silent where a joint's slot opens into an arch through its mouth, E0408 naming the
+edges of a turned Trapezoid that do meet, E0108 on a coordinate given to
+`HorizontalDistance`."""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import aidl_lang
+
+RUN = Path(__file__).resolve().parent.parent / "data" / "model_runs" / "issue111c"
+
+
+def _read(name: str) -> str:
+    return (RUN / name).read_text()
+
+
+def _w(r, code):
+    return [d for d in r.diagnostics if d.code == code]
+
+
+def _codes(r) -> set:
+    return {d.code for d in r.diagnostics if d.severity in ("warning", "error")}
+
+
+# ------------------------------------------------------------------------------ W0505
+def test_W0505_grid_lines_over_a_joint_band_are_said_meant_as_the_hint_writes():
+    """10_checkerboard: each half's grid lines run across the dovetail band on purpose (11 %
+    off the material).  W0505 warns each half and its hint writes the call that says so,
+    `AllowOverlap(grid.h, self)` in the half; written where the hint says, neither W0505 nor
+    W0523 is left and the part is unchanged (the same engraved lines, the same cut)."""
+    src = _read("run/10_checkerboard.first_valid.aidl")
+    r = aidl_lang.compile(src)
+    assert r.ok
+    ws = _w(r, "W0505")
+    assert len(ws) == 2
+    said = {}
+    for w in ws:
+        m = re.search(r"`(AllowOverlap\([^`]*\))` in `([\w.]+)`", w.hint)
+        assert m, w.hint
+        said[m.group(2)] = m.group(1)
+    assert said == {"board.left": "AllowOverlap(grid.h, self)",
+                    "board.right": "AllowOverlap(grid.h, self)"}
+    fixed = src.replace("        drawing grid {",
+                        "        AllowOverlap(grid.h, self)\n        drawing grid {")
+    assert fixed.count("AllowOverlap") == 2
+    r2 = aidl_lang.compile(fixed)
+    assert r2.ok and not {"W0505", "W0523"} & _codes(r2), [d.message for d in r2.diagnostics]
+    assert r2.to_svg() == r.to_svg()
+    # naming the lines that lie on the material silences nothing, and says so
+    wrong = fixed.replace("AllowOverlap(grid.h, self)", "AllowOverlap(grid.v, self)")
+    r3 = aidl_lang.compile(wrong)
+    assert len(_w(r3, "W0505")) == 2 and len(_w(r3, "W0523")) == 2
+    assert "the engraving lies on its part's material" in _w(r3, "W0523")[0].message
+
+
+def test_W0505_text_in_the_air_keeps_its_own_hint():
+    """11_rainbow: the word written in the arch's opening is a real slip; its hint is the
+    move (the width it has room for), never the call that would silence it."""
+    r = aidl_lang.compile(_read("run/11_rainbow.first_valid.aidl"))
+    (w,) = _w(r, "W0505")
+    assert "AllowOverlap" not in w.hint
+
+
+# ------------------------------------------------------------------------------ W0508
+def test_W0508_a_cross_halving_slot_opening_into_the_arch_is_as_drawn():
+    """05_plant_stand: panel B's cross-halving slot is cut up from the bottom edge, where the
+    arch between the feet has taken the edge away: the slot reaches the edge through the
+    arch, as it must.  No W0508; a round hole the same slot crosses higher up still is."""
+    src = _read("run/05_plant_stand.first_valid.aidl")
+    r = aidl_lang.compile(src)
+    assert r.ok and _w(r, "W0508") == [], [d.message for d in _w(r, "W0508")]
+    crossed = src.replace(
+        "    solid b {\n        p = panel_shape()\n",
+        "    solid b {\n        p = panel_shape()\n"
+        "        hole pin { c = Circle(center=(0, -h / 2 + 80), radius=5) }\n")
+    assert crossed != src
+    ws = _w(aidl_lang.compile(crossed), "W0508")
+    assert [("stand.b.pin" in w.message and "stand.b.s" in w.message) for w in ws] == [True]
+
+
+# ------------------------------------------------------------------------------ E0408
+def test_E0408_names_the_edges_of_a_turned_trapezoid_that_meet():
+    """15_cheese_board's first try: `Fillet([body.right, neck.top], 10)` on a Trapezoid turned
+    -90 deg (its `top` and `bottom` are the parallel ends).  The hint names the pairs that do
+    meet, `[body.right, neck.right]` and `[body.right, neck.left]`; written, they round the
+    two corners where the handle joins the board (no E0408, no W0406)."""
+    src = _read("drafts/15_cheese_board.attempt1.aidl")
+    r = aidl_lang.compile(src)
+    es = _w(r, "E0408")
+    assert len(es) == 2
+    for e in es:
+        assert "`[body.right, neck.right]` and `[body.right, neck.left]` do meet" in e.hint
+        assert "rotation=" in e.hint
+    fixed = src.replace("Fillet([body.right, neck.top], 10)",
+                        "Fillet([body.right, neck.right], 10)").replace(
+        "Fillet([body.right, neck.bottom], 10)", "Fillet([body.right, neck.left], 10)")
+    r2 = aidl_lang.compile(fixed)
+    assert r2.ok and not {"E0408", "W0406"} & _codes(r2), [d.message for d in r2.diagnostics]
+    # two fillets of R10 at the joint: two more arcs of radius 10 than without them
+    bare = aidl_lang.compile(re.sub(r"    Fillet\(.*\n", "", fixed))
+
+    def tens(res):
+        return [round(float(m), 6) for m in re.findall(r"A([\d.]+),", res.to_svg())].count(10.0)
+    assert bare.ok and tens(r2) == tens(bare) + 2
+
+
+# ------------------------------------------------------------------------------ E0108
+def test_E0108_a_coordinate_given_to_HorizontalDistance_says_the_equation():
+    """02_zipper_pull's first try: `HorizontalDistance(tab.bb.left, ring.s.center, 7 mm)`.
+    The hint says `HorizontalDistance` is between two points and writes the equation on
+    `.x`; the program written that way (as the model did) is valid."""
+    src = _read("drafts/02_zipper_pull.attempt1.aidl")
+    r = aidl_lang.compile(src)
+    es = _w(r, "E0108")
+    assert len(es) == 2
+    assert all("write an equation on the other point's `.x`" in e.hint for e in es)
+    assert all("== tab.bb.left + 7 mm" in e.hint for e in es)
