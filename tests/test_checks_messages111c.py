@@ -3,7 +3,7 @@ confusing or wrong"), each on the run's own program through the real checker: W0
 meant with `AllowOverlap(lines, self)` (a checkerboard's grid lines over its dovetail band),
 W0508 silent where a joint's slot opens into an arch through its mouth, E0408 naming the
 edges of a turned Trapezoid that do meet, E0108 on a coordinate given to
-`HorizontalDistance`."""
+`HorizontalDistance`, W0505's wording for a window no hole cut."""
 from __future__ import annotations
 
 import re
@@ -63,6 +63,9 @@ def test_W0505_text_in_the_air_keeps_its_own_hint():
     r = aidl_lang.compile(_read("run/11_rainbow.first_valid.aidl"))
     (w,) = _w(r, "W0505")
     assert "AllowOverlap" not in w.hint
+    # the space under the arch, closed by the bar, is a window the shapes enclose, not a
+    # hole structure: said as an opening
+    assert "runs across an opening of `rainbow`" in w.message, w.message
 
 
 # ------------------------------------------------------------------------------ W0508

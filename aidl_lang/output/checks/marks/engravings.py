@@ -240,6 +240,9 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         in_outline = _inside(pts[~inside], outer_of[part])
         where = "across a hole" if in_outline.all() else (
             "outside the outline" if not in_outline.any() else "outside the outline and across a hole")
+        holes = _holes_crossed(d, roots, part, pts[~inside][in_outline]) if in_outline.any() else []
+        if in_outline.any() and not holes:       # a window the shapes enclose (a rainbow's arch
+            where = where.replace("a hole", "an opening")    # over its bar), no hole structure
         warned.add(g)
         if _meant_off(g, part):
             continue
@@ -254,8 +257,7 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         # as "nothing is off" (issue 84's door sign), so a small share is said as such
         share = _pct(off, float(len(pts))) if off >= 0.005 * len(pts) else "under 1%"
         hint = _off_outline_hint(d, part, g, pts, pts[~inside])
-        if where == "across a hole":
-            holes = _holes_crossed(d, roots, part, pts[~inside])
+        if where in ("across a hole", "across an opening"):
             hint = (f"it crosses {', '.join(holes) if holes else 'an opening'}: shrink or move "
                     "the drawing clear of it, or move the hole")
         arc = _arc_on_material(g, items, roots[part])
