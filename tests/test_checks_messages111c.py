@@ -3,7 +3,8 @@ confusing or wrong"), each on the run's own program through the real checker: W0
 meant with `AllowOverlap(lines, self)` (a checkerboard's grid lines over its dovetail band),
 W0508 silent where a joint's slot opens into an arch through its mouth, E0408 naming the
 edges of a turned Trapezoid that do meet, E0108 on a coordinate given to
-`HorizontalDistance`, W0505's wording for a window no hole cut."""
+`HorizontalDistance`, W0505's wording for a window no hole cut, E0405 on a structure's box widened
+by its drawings."""
 from __future__ import annotations
 
 import re
@@ -122,3 +123,21 @@ def test_E0108_a_coordinate_given_to_HorizontalDistance_says_the_equation():
     assert len(es) == 2
     assert all("write an equation on the other point's `.x`" in e.hint for e in es)
     assert all("== tab.bb.left + 7 mm" in e.hint for e in es)
+
+
+# ------------------------------------------------------------------------------ E0405
+def test_E0405_on_a_structure_box_says_what_its_drawings_add():
+    """01_plant_marker's first try: `assert marker.bb.width == 25 mm` failed at 30.1 mm, the
+    engraved word being wider than the 25 mm stake (the model had to find that out).  The
+    message says that `marker.bb` holds the drawing `marker.label` and the material's own
+    width, 25 mm; an assert on a structure without drawings says nothing of the kind."""
+    src = _read("drafts/01_plant_marker.attempt1.aidl")
+    r = aidl_lang.compile(src)
+    (e,) = _w(r, "E0405")
+    assert "30.0952 mm == 25 mm is false" in e.message
+    assert "`marker.bb` holds its drawing `marker.label`: its material alone spans 25 x " \
+        in e.message, e.message
+    plain = aidl_lang.compile("solid p {\n    body = Rectangle(center=(0, 0), width=30, "
+                              "height=10)\n}\nassert p.bb.width == 25 mm\n")
+    (e2,) = _w(plain, "E0405")
+    assert "holds its drawing" not in e2.message

@@ -48,7 +48,49 @@ def describe(a: Assertion, found: list, alternatives: int = 1, x=None) -> str:
     said = [f"{text} = {shown}" for text, shown in _reads(a, x)
             if not a.text.strip() == text]
     where = f" (where {', '.join(said)})" if said else ""
-    return f"assertion failed: `{a.text}`{why}: {lead}" + "; ".join(parts) + where
+    return (f"assertion failed: `{a.text}`{why}: {lead}" + "; ".join(parts) + where
+            + _drawn_boxes(a, x))
+
+
+def _drawn_boxes(a: Assertion, x) -> str:
+    """What a structure's box the assertion reads owes to its drawings, when they widen it
+    (issue 111: `assert marker.bb.width == 25 mm` failed at 30.1 mm, the engraved word
+    being wider than the stake): "; `marker.bb` holds its drawing `marker.label`: its
+    material alone spans 25 x 120 mm (`marker.body.bb`)", or ""."""
+    if x is None:
+        return ""
+    from ..core.model import Structure
+    from .bbox import numeric_box
+    terms: list = []
+    for group in a.groups:
+        for _, le, re_, _ in group:
+            for side in (le, re_):
+                if not isinstance(side, (int, float)):
+                    collect(side, terms)
+    seen, out = set(), []
+    for t in terms:
+        s = t.target
+        if not isinstance(s, Structure) or id(s) in seen:
+            continue
+        seen.add(id(s))
+        drawn = [d for d in s.subtree() if d is not s and d.kind == "drawing"
+                 and not any(u.kind == "drawing" for u in d.ancestors() if u.is_within(s))]
+        if not drawn:
+            continue
+        try:
+            full = numeric_box(s, t.frame, x)
+            bare = numeric_box(s, t.frame, x, exclude=set(drawn))
+        except (ArithmeticError, KeyError, TypeError, ValueError):
+            continue
+        if full is None or bare is None or max(abs(u - v) for u, v in zip(full, bare)) <= TOL:
+            continue
+        shapes = [g for g in s.geometry if g.name and g.closed and not g.construction]
+        named = f" (`{s.path}.{shapes[0].name}.bb`)" if len(shapes) == 1 else ""
+        who = ", ".join(f"`{d.path}`" for d in drawn[:3])
+        out.append(f"`{s.path}.bb` holds its drawing{'s' if len(drawn) > 1 else ''} {who}: "
+                   f"its material alone spans {(bare[1] - bare[0]) / a.scale:.6g} x "
+                   f"{(bare[3] - bare[2]) / a.scale:.6g} {a.unit}{named}")
+    return "".join(f"; {o}" for o in out)
 
 
 def _reads(a: Assertion, x) -> list[tuple[str, str]]:
