@@ -24,7 +24,8 @@ from .geometry.core.expr import Lin, Nl
 from .geometry.core.model import Model
 from .parser import parse
 from .output.part.build.booleans import Drawing, render_model
-from .output.checks import check_drawing, check_stray_holes, check_topology, topology
+from .output.checks import (check_drawing, check_loose_drawings, check_stray_holes,
+                             check_topology, topology)
 from .output.checks.boxes import check_drawn_boxes, check_final_box_asserts, check_final_boxes
 from .solver import SolveResult, solve
 
@@ -352,6 +353,7 @@ def after_solve(sink: DiagnosticSink, model: Model, min_wall: float | None = Non
                 check_drawn_boxes(sink, model, instance_calls)
                 check_final_box_asserts(sink, model, drawing, instance_calls)
                 check_stray_holes(sink, drawing, deadline)
+                check_loose_drawings(sink, drawing, deadline)
                 if shape_checks:
                     stage = "the shape checks"
                     check_drawing(drawing, sink, min_wall, deadline)

@@ -1247,6 +1247,22 @@ delete the line.
     param plate_w = 120 mm, min = 80 mm, max = 200 mm
     solid plate { body = Rectangle(center=(0, 0), width=120 mm, height=60) }   # width=plate_w
 """),
+    "W0116": ("drawing in an assembly lies on a part, engraved on none", """
+A drawing declared in an assembly is an illustration beside the parts, engraved on none of
+them. One that lies on a solid part of the assembly (all of it on the part's material: "TEA" beside `box = finger_box(...)`, placed on the front) is engraved there by the
+flat sheet, while a cutting layout (`aidl render --layout sheet`) and `aidl parts` carry the
+part without it: the front comes out of the nested sheet blank. The fix writes
+`CutInto(DRAWING, PART)` in the assembly, which engraves it on that part in every output (a
+part of a template instance cannot be given a drawing any other way). `aidl import` writes
+that call for a drawing layer that lies on a part (a board's silkscreen on its outline).
+
+    assembly kit {
+        box = finger_box(length=150 mm, depth=75 mm, height=80 mm)
+        drawing label { word = Text("TEA", position=(0, 0), size=25) }   # warning
+        CenterInside(label, box.front)
+        CutInto(label, box.front)                                         # the fix
+    }
+"""),
     "W0104": ("empty drawing", """
 The file is empty (nothing but comments), or its structures build no geometry at all, so the
 SVG would be empty. Add shapes, or instantiate a template. A file of only templates, params and

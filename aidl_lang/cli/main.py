@@ -637,7 +637,9 @@ def _lay_out(args, res, output, cut, sheet, gap, rotate, notes: list):
                  ((dropped - sheet_level, "engraving"), (sheet_level, "sheet-level cut"))
                  if n]
         notes.append(f"note: {' and '.join(kinds)} outside every part left out of the "
-                     "layout")
+                     "layout" + ("" if dropped == sheet_level else
+                                 " (a drawing at assembly level is an illustration; one meant "
+                                 "on a part is given to it: `CutInto(label, box.front)`)"))
     return flat, solid
 
 

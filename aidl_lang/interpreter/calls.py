@@ -22,6 +22,7 @@ from ..base.limits import MAX_EXTENT
 from ..registry import (ENTRIES, FUNCTIONS, accepted_args, bind_variant, canonical, canonical_args,
                         lookup)
 from .call_hints import _center_hint, _list_hint
+from .cut_into import cut_into
 from .common import (_defer_boxes, said_shrunk, DEG, _a, _fmt_num, show)
 
 
@@ -158,7 +159,7 @@ class Calls:
             from ..geometry.derived.operations import OperationError, apply
             self._check_subtree(owners_of(*conv.values()), node.span, self._need_struct(node.span))
             if cname == "CutInto":
-                return self._cut_into(conv, node, spans)
+                return cut_into(conv, node, spans)
             if cname in ("Countersink", "Counterbore"):
                 from .sinks import sink_call
                 return sink_call(self, cname, conv, node, spans)
@@ -203,40 +204,6 @@ class Calls:
             if name in vars_:
                 vars_[name] = value
                 return
-
-    def _cut_into(self, conv, node, spans):
-        """``CutInto(hole, part)`` (issue 61): the hole ``hole``, declared in an assembly,
-        cuts the solid ``part`` instead of being a part of its own.  Both are in the
-        subtree of the structure the statement is written in (validity rule 2, checked by
-        the caller); nothing moves in the structure tree, so every constraint keeps its
-        frames: the booleans subtract the hole from the part (output/part/build/booleans.py)."""
-        h, part = conv["hole"], conv["part"]
-        hspan, pspan = spans.get("hole", node.span), spans.get("part", node.span)
-        if not isinstance(h, StructRef) or h.struct.kind != "hole":
-            raise EvalError("E0108", f"`CutInto` cuts with a hole structure, got "
-                            f"{_a(type_name(h))}", hspan,
-                            hint="declare `hole NAME { ... }` beside the part's instance and "
-                                 "write `CutInto(NAME, box.lid)`")
-        if not isinstance(part, StructRef) or part.struct.kind != "solid":
-            raise EvalError("E0108", f"`CutInto` cuts into a solid, got {_a(type_name(part))}",
-                            pspan, hint="name a solid part, e.g. `box.lid` of "
-                                        "`box = finger_box(...)` (`aidl docs finger_box` "
-                                        "lists its parts)")
-        hs, ps = h.struct, part.struct
-        if hs.parent is None or hs.parent.kind != "assembly":
-            where = hs.parent.path if hs.parent is not None else hs.path
-            raise EvalError("E0108", f"`{hs.path}` already cuts `{where}`, the solid it is "
-                            "declared in: `CutInto` is for a hole declared in an assembly",
-                            hspan, hint="declare the hole in the assembly that holds the "
-                                        "part's instance, beside it")
-        if ps.is_within(hs):
-            raise EvalError("E0108", f"`{ps.path}` is inside the hole `{hs.path}`", pspan)
-        if hs.cuts_into is not None:
-            raise EvalError("E0108", f"`{hs.path}` already cuts `{hs.cuts_into.path}`", node.span,
-                            hint="a hole cuts one solid: declare another hole for the other")
-        hs.cuts_into = ps
-        ps.cut_by.append(hs)
-        return None
 
     def _part_to_place(self, conv, node, spans, what: str = "Place", verb: str = "places"):
         """The structure ``Place`` (or ``Bend``) names: a part (or an assembly) inside the

@@ -25,4 +25,5 @@ assembly drawing_import {
     for p in [edge_cuts, f_silks] {
         Fixed(p)
     }
+    CutInto(f_silks, edge_cuts)
 }

@@ -174,3 +174,67 @@ def _overlapping_parts(d: Drawing, inside: list, deadline=None) -> tuple[int, in
             elif _polygons_touch(polys[i], polys[j]):
                 touch += 1
     return pairs, touch
+
+
+ON_EDGE = 0.01      # mm: a probe this near a part's edge lies on it
+ON_PART = 1.0       # of a drawing's probe points on one part's material: engraved on it (all:
+#                     a layer partly off the part stays an illustration, which W0505 would warn)
+
+
+def engraved_on(drawings: list, solids: list) -> dict:
+    """For the import's drawing layers and solid parts (``[(name, Drawing)]`` each), the
+    part each drawing lies on: ``{drawing name: part name}`` where :data:`ON_PART` (all) of
+    its probe points (each piece's ends and middle, each text's position) lie on that
+    part's material (inside its outer loops, outside its holes: the even-odd rule over all its
+    loops), the part with the most.  `aidl import` then writes `CutInto(drawing, part)`, so
+    that a cutting layout carries the engraving with its part (W0116: a KiCad board's
+    `F.SilkS` text on its `Edge.Cuts` outline)."""
+    import numpy as np
+    polys = []
+    for name, d in solids:
+        ps = [Loop(list(segs)).points() for segs in _loops_of(d)]
+        polys.append((name, [np.asarray(p, dtype=float) for p in ps if len(p) >= 3]))
+    out = {}
+    for name, d in drawings:
+        pts = [(t[1][0], t[1][1]) for t in d.texts]
+        for segs in [p.segments for p in d.paths] + _loops_of(d):
+            for s in segs:
+                if not isinstance(s, (Circle, EllipticArc)):
+                    pts += [tuple(s.start), tuple(s.end)]
+                pts.append(tuple(_probe([s])))
+        if not pts:
+            continue
+        P = np.asarray(pts, dtype=float)
+        best, most = None, 0
+        for part, loops in polys:
+            if not loops:
+                continue
+            odd = np.zeros(len(P), dtype=bool)
+            for L in loops:
+                odd ^= _inside_many(P[:, 0], P[:, 1], L)
+            off = np.flatnonzero(~odd)
+            if len(off):            # a mark that ends on the cut (a ruler's tick) is on it
+                odd[off] = _near_edges(P[off], loops, ON_EDGE)
+            if int(odd.sum()) > most:
+                best, most = part, int(odd.sum())
+        if best is not None and most >= ON_PART * len(P):
+            out[name] = best
+    return out
+
+
+def _near_edges(P, loops: list, tol: float):
+    """Which points ``P`` (N x 2, mm) lie within ``tol`` of an edge of one of the polygons
+    ``loops``, in runs of at most a million (point, edge) pairs."""
+    import numpy as np
+    out = np.zeros(len(P), dtype=bool)
+    for L in loops:
+        A, B = L, np.roll(L, -1, axis=0)
+        D = B - A
+        dd = np.maximum((D * D).sum(axis=1), 1e-300)
+        step = max(1, 1_000_000 // max(1, len(A)))
+        for k in range(0, len(P), step):
+            Q = P[k:k + step, None, :]
+            t = np.clip(((Q - A) * D).sum(axis=2) / dd, 0.0, 1.0)
+            near = np.hypot(*(A + t[..., None] * D - Q).transpose(2, 0, 1)).min(axis=1) <= tol
+            out[k:k + step] |= near
+    return out

@@ -54,6 +54,7 @@ from .engrave.labels import _at_as_drawn, _label_place
 from .holes.makers import SINGLE_PARAMS, _MakerFeatures
 from .naming import _far, _named_parts, _short_names, _summary
 from ..chains.layers import _hole_layers
+from ..chains.containment import engraved_on
 from .profiles.write import _Profiles
 from .mirror import mirrored_pair, pair_gap, pair_items, write_pair
 from .holes.sinks import Marks
@@ -837,7 +838,12 @@ def _inferred(layers: list[tuple[str, Drawing]], source: str, parts: bool = Fals
         w.emit(depth, f"for p in [{', '.join(names)}] {{ Fixed(p) }}")
     elif multi and names:
         w.emit(depth, f"Fixed({names[0]})")
-    if multi:
+    if multi:           # a drawing layer on a part (a board's silkscreen): engraved on it
+        kept = set(names)
+        on = engraved_on([(it[1], it[2]) for it in items if it[0] == "drawing" and it[1] in kept],
+                         [(it[1], it[2]) for it in items if it[0] == "solid" and it[1] in kept])
+        for drawn, part in on.items():
+            w.emit(depth, f"CutInto({drawn}, {part})")
         w.emit(0, "}")
     _cut_notes(w, source)
     head = [f"# imported from {source} by `aidl import --infer`: edit freely"]

@@ -22,7 +22,7 @@ import math
 
 from ...geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from ...geometry.shapes.drawing2d import _inside, _inside_many
-from ..chains.containment import (_apart, _containers, _loops_of, _overlapping_parts, _probe,
+from ..chains.containment import (_apart, engraved_on, _containers, _loops_of, _overlapping_parts, _probe,
                                   _whole_ellipse)
 from ..chains.layers import engraved_layer
 from ..chains.hole_cuts import cut_at_crossings, inner_rests, loop_key, runs_of
@@ -501,7 +501,11 @@ def to_program(layers: list[tuple[str, Drawing]], source: str, parts: bool = Fal
             _sheet_cut(w, 1, name, d)
         else:
             _structure(w, 1 if multi else 0, kind, name, d)
-    if multi:
+    if multi:           # a drawing layer on a part (a board's silkscreen): engraved on it
+        on = engraved_on([(n, d) for k, n, d in items if k == "drawing"],
+                         [(n, d) for k, n, d in items if k == "solid"])
+        for drawn, part in on.items():
+            w.emit(1, f"CutInto({drawn}, {part})")
         w.emit(0, "}")
     _cut_notes(w, source)
     return "\n".join(w.lines) + "\n", w.notes

@@ -104,7 +104,8 @@ class Structure(Record):
         # `holes = LinearPattern(bolt, ...)`): that original, which is also `holes[0]`
         self.pattern_original = pattern_original
         # `CutInto(hole, part)`: a hole declared in an assembly cuts the solid `part` (of a
-        # template instance, typically) instead of being a part of its own; `cut_by` on the solid
+        # template instance, typically) instead of being a part of its own (a drawing so
+        # given is engraved on it, issue 111's tea box); `cut_by` on the solid
         self.cuts_into = cuts_into
         self.cut_by = [] if cut_by is None else cut_by
 
@@ -129,6 +130,15 @@ class Structure(Record):
         while s is not None:
             yield s
             s = s.parent
+
+    def held_by(self):
+        """This structure and those that hold it in the output, nearest first: its parents,
+        or, for one that ``CutInto`` gives to a solid (a hole, or a drawing engraved on a
+        template's part), that solid and its parents."""
+        s = self
+        while s is not None:
+            yield s
+            s = s.cuts_into if s.cuts_into is not None else s.parent
 
     def is_within(self, other: "Structure") -> bool:
         """True if ``self`` is ``other`` or a descendant of it."""

@@ -66,7 +66,7 @@ from .holes.voids import _check_voids
 from .marks.engravings import (_SURELY_GROWN, ENGRAVE_TOL, _check_engraving, _check_zero_lines,
                                _n_samples, _sample, _samples, _within)
 from .parts import (_check_interpenetration, _check_steps, _check_invisible, _check_pieces,
-                    check_stray_holes, empty_faces)
+                    check_loose_drawings, check_stray_holes, empty_faces)
 from .marks.text import _check_text_overlap
 from .material.through import check_sheet_cuts, check_through
 from .material.necks import _check_necks
@@ -76,7 +76,7 @@ from .material.walls import (THIN_SECONDS_PER_VERTEX, TILE_VERTS, UNION_GROUP, W
 
 # the names other modules, the tests and the benchmarks import from here (patching one of the
 # others' helpers, e.g. walls._open, means patching it in the module that uses it)
-__all__ = ["check_drawing", "check_stray_holes", "check_topology", "topology", "topology_changes", "Topology",
+__all__ = ["check_drawing", "check_loose_drawings", "check_stray_holes", "check_topology", "topology", "topology_changes", "Topology",
            "empty_faces", "MIN_WALL", "MIN_AREA", "MIN_FRACTION", "ENGRAVE_TOL", "TOUCH",
            "_SURELY_GROWN", "THIN_SECONDS_PER_VERTEX", "TILE_VERTS", "UNION_GROUP",
            "WHOLE_LOOPS", "WHOLE_VERTS", "_analyse", "_check_fit", "_check_hole",

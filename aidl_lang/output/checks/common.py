@@ -64,12 +64,9 @@ def _part_roots(d: Drawing) -> dict[Structure, mf.CrossSection]:
 
 
 def _part_of(s: Structure, roots) -> Structure | None:
-    node = s
-    while node is not None:
-        if node in roots:
-            return node
-        node = node.parent
-    return None
+    """The nearest of ``s`` and the structures holding it that is in ``roots`` (a drawing
+    that ``CutInto`` gives to a solid is held by it), or None."""
+    return next((node for node in s.held_by() if node in roots), None)
 
 
 def _contributors(d: Drawing, a: Structure, skip: Structure | None = None,

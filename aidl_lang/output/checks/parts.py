@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 
+import manifold3d as mf
 import numpy as np
 
 from ...base.diagnostics import Diagnostic, DiagnosticSink, Fix, Label, Span, in_stdlib
@@ -23,7 +24,9 @@ from ..part.build.booleans import Drawing
 from ..part.measure.nearby import box_pairs
 from ..part.build.scanwork import decompose
 from .letters import fallen_counters, letters_in
-from .common import MIN_AREA, _area, _contributors, _depth, _say_few, _signed, _union
+from .common import (MIN_AREA, _area, _contributors, _depth, _edges, _inside, _say_few, _signed,
+                     _union)
+from .marks.engravings import ENGRAVE_TOL, _samples
 
 MAX_CHILDREN = 64        # W0506 compares each child with the union of the others
 MAX_CUTTERS = 16         # W0504: holes measured for cutting a shape apart
@@ -670,3 +673,63 @@ def check_stray_holes(sink: DiagnosticSink, drawing: Drawing, deadline=None) -> 
                     f"PART)` in `{home.path}` to cut a solid part of it (a part of a template "
                     "instance: `box.lid`)")
         sink.add(Diagnostic("W0109", msg, h.span, "warning", hint=hint, fix=fix))
+
+
+def check_loose_drawings(sink: DiagnosticSink, drawing: Drawing, deadline=None) -> None:
+    """W0116 for a drawing declared in an assembly (an illustration beside the parts, engraved
+    on none) that lies on a solid part of it: all its sample points on that part's material
+    (grown by :data:`~.marks.engravings.ENGRAVE_TOL`, as W0505 reads it: the fix then warns
+    of nothing; a drawing partly off every part is an illustration).  The flat sheet engraves it where it lies, while a cutting
+    layout (`--layout sheet`) and the parts list carry the part without it (issue 111's tea
+    box: "TEA" beside `box = finger_box(...)`, left out of the sheet).  The fix writes
+    `CutInto(label, box.front)` above the drawing, which engraves it on that part.
+    ``deadline``: looked at for each drawing (raises
+    :class:`~aidl_lang.base.limits.OutOfBudget`)."""
+    loose: dict = {}
+    for style, item, g in drawing.strokes:
+        if g is None or style not in ("drawing", "fill"):
+            continue
+        d = g.owner
+        while d.parent is not None and d.parent.kind == "drawing" and d.cuts_into is None:
+            d = d.parent
+        if d.kind == "drawing" and d.cuts_into is None and d.parent is not None \
+                and d.parent.kind == "assembly" and d.span is not None:
+            loose.setdefault(d, []).append(item)
+    if not loose:
+        return
+    solids = [(p, drawing.part_of.get(p.name)) for p in drawing.parts if p.kind == "solid"]
+    for d, items in loose.items():
+        if deadline is not None:
+            deadline.check("the shape checks", d)
+        pts = _samples(items)
+        x0, y0 = pts.min(axis=0)
+        x1, y1 = pts.max(axis=0)
+        best, most = None, 0
+        for p, s in solids:
+            if s is None or not s.is_within(d.parent):
+                continue
+            sx0, sy0, sx1, sy1 = p.shape.bounds()
+            if sx0 > x1 or sx1 < x0 or sy0 > y1 or sy1 < y0:
+                continue
+            grown = p.shape.offset(ENGRAVE_TOL, mf.JoinType.Round, 2.0, 16)
+            on = int(_inside(pts, _edges([np.asarray(q, dtype=float)
+                                          for q in grown.to_polygons()])).sum())
+            if on > most:
+                best, most = s, on
+        if best is None or most < len(pts):
+            continue
+        home = d.parent
+        rel = best.path[len(home.path) + 1:]
+        call = f"CutInto({d.name}, {rel})"
+        fix = None
+        sp_ = d.span
+        if not in_stdlib(sp_.file) and "[" not in call:
+            at = Span(sp_.file, sp_.line, sp_.col, sp_.line, sp_.col, sp_.start, sp_.start)
+            fix = Fix(at, f"{call}\n{' ' * (sp_.col - 1)}")
+        sink.add(Diagnostic(
+            "W0116", f"drawing `{d.path}` is declared in assembly `{home.path}`, so it is engraved "
+            f"on no part, yet it lies on `{best.path}`: the flat sheet engraves it there, while "
+            "a cutting layout (`--layout sheet`) and the parts list carry the part without it",
+            d.span, "warning", fix=fix,
+            hint=f"`{call}` in `{home.path}` engraves it on `{best.path}` (the fix); an "
+                 "illustration meant beside the parts is drawn off them"))

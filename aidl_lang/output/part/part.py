@@ -580,11 +580,12 @@ _CANDIDATES = 1_000_000   # ... and the (point, stretch) candidates measured at 
 
 def _part_of(g, owner: dict) -> str:
     """The part holding geometry ``g``: the nearest structure of ``g``'s owner and its
-    ancestors that is a part ("" when none is)."""
+    ancestors that is a part ("" when none is); a drawing that ``CutInto`` gives to a solid
+    is that solid's."""
     s = getattr(g, "owner", None)
     if s is None:
         return ""
-    for a in (s, *s.ancestors()):
+    for a in s.held_by():
         if a in owner:
             return owner[a]
     return ""

@@ -263,8 +263,9 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         arc = _arc_on_material(g, items, roots[part])
         if arc:
             hint = f"{arc}; or {hint}"
-        hint += (f"; if it runs off the material on purpose (lines carried over a joint's "
-                 f"band), say so with `AllowOverlap({_ref_in(g, part)}, self)` in `{part.path}`")
+        if g.kind != "Text":        # (letters off the material are a slip, never meant)
+            hint += f"; if it runs off the material on purpose (lines carried over a joint's " \
+                    f"band), say so with {_allow_call(g, part)}"
         sink.warning("W0505", f"engraving `{g.label}` runs {where} of `{part.path}` "
                      f"({share} of it is off the material)", g.span, hint=hint)
     d.engravings_judged = True          # (W0523: an AllowOverlap of an engraving that no W0505 needed)
@@ -295,10 +296,21 @@ def _meant_off(g, part) -> bool:
     return False
 
 
-def _ref_in(g, part) -> str:
-    """``g``'s name as written in ``part``'s body (``grid.h`` for ``board.left.grid.h``)."""
+def _allow_call(g, part) -> str:
+    """The statement that says engraving ``g`` runs off ``part`` on purpose, and where:
+    `` `AllowOverlap(grid.h, self)` in `board.left` `` for a drawing inside the part; for one
+    that ``CutInto`` gives to it, the call in the structure both are in
+    (`` `AllowOverlap(label.word, box.front)` in `kit` ``)."""
     label = g.label or "NAME"
-    return label[len(part.path) + 1:] if label.startswith(part.path + ".") else label
+    if g.owner.is_within(part):
+        return f"`AllowOverlap({label[len(part.path) + 1:]}, self)` in `{part.path}`"
+    where = g.owner
+    while where is not None and not part.is_within(where):
+        where = where.parent
+    if where is None:
+        return f"`AllowOverlap({label}, {part.path})`"
+    cut = len(where.path) + 1
+    return f"`AllowOverlap({label[cut:]}, {part.path[cut:]})` in `{where.path}`"
 
 
 def _is_flat_text(g, items) -> bool:
@@ -614,7 +626,8 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
     protractor) and are not warned, nor are pieces of one straight line that each end square
     on it (:func:`_split_bands`); nor is a mark whose ends all lie at the edge (a band or a
     seam drawn across the part, a cord wrapped round a grip), nor any copy of a loop statement
-    of which half the copies or more are such bands.  The warning names the mark, the part, which edge, the gap in mm and where
+    of which half the copies or more are such bands, nor a straight mark that is a band's
+    copy (the same run, each its own statement: `aidl import` writes a loop's copies so).  The warning names the mark, the part, which edge, the gap in mm and where
     (x, y), and how far inside to end or move the mark.  ``geoms``: (geometry, its stroke
     items); near-linear (the marks' and edges' boxes paired by :func:`box_pairs`)."""
     from ...part.measure.nearby import box_pairs_between
@@ -671,6 +684,7 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
             de_of[qo[int(qi[f])]] = (float(dq[f]), int(qe[f]))
     found = []
     bands: dict = {}                 # statement span -> its copies that run edge to edge
+    band_runs: set = set()           # the (dx, dy) of the straight bands
     for c, (k, a, _) in enumerate(close):
         g, items = geoms[k]
         gap, pm, ej = float(d[a]), pa[a], int(ej_all[a])
@@ -678,6 +692,8 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
         de = np.array([de_of.get((c, t), (math.inf, -1))[0] for t in range(len(q))])
         if len(q) >= 2 and (de < CUT_CLEAR).all():
             bands[g.span] = bands.get(g.span, 0) + 1
+            if len(items) == 1 and items[0][0] == "line":
+                band_runs.add(_run(items[0]))
             continue                         # edge to edge: a band, a seam across the part
         end = None
         if len(q) and de.min() < CUT_CLEAR and de.min() - gap <= max(ENGRAVE_TOL, 1e-6):
@@ -702,6 +718,8 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
             continue        # a scale's ticks hanging from the edge, or a band split in pieces
         if f[0].span is not None and 2 * bands.get(f[0].span, 0) >= copies[f[0].span]:
             continue                         # one of a loop of bands (its last one ends inside)
+        if f[7] and _run(f[1][0]) in band_runs:
+            continue                         # a band's copy, each its own statement (imported)
         by_statement.setdefault(f[0].span or f[0], []).append(f)
     for group in by_statement.values():
         group.sort(key=lambda f: f[3])
@@ -745,6 +763,12 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
                      f"meets the cut (a mark needs {CUT_CLEAR} mm clear of the edge), so it "
                      f"runs into the edge{more}", g.span,
                      hint=fix + "; the cut already draws the edge")
+
+
+def _run(item) -> tuple:
+    """A straight stroke's (dx, dy), rounded to 1e-6 mm: copies of one band share it (a grip's
+    wraps, each written as its own line by `aidl import`, the last ending inside the part)."""
+    return tuple(np.round(np.asarray(item[2], float) - np.asarray(item[1], float), 6))
 
 
 def _split_bands(ticks: list) -> set:

@@ -400,7 +400,10 @@ class Renderer(Faces):
                 faces.append(self.shape(c, out))
         if s.kind == "solid":
             for c in s.cut_by:              # `CutInto(c, s)`: a hole of an assembly cuts s
-                holes.append((c, self.shape(c, out)))
+                if c.kind == "drawing":     # (a drawing is engraved on it)
+                    self.drawing(c, out)
+                else:
+                    holes.append((c, self.shape(c, out)))
         self.current = s
         acc = self.union(faces, s)
         if holes:
