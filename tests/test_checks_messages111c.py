@@ -141,3 +141,20 @@ def test_E0405_on_a_structure_box_says_what_its_drawings_add():
                               "height=10)\n}\nassert p.bb.width == 25 mm\n")
     (e2,) = _w(plain, "E0405")
     assert "holds its drawing" not in e2.message
+
+
+# ------------------------------------------------------------------------------ E0102
+def test_E0102_on_an_item_of_a_nested_loops_list_says_to_index_twice():
+    """issue111d's trellis, first try: `lattice.dia[0].bb.width` where `dia` was set in two
+    nested loops (a list of rows): the hint names the row's items and says the list holds
+    one list per outer pass; written so, the assert reads the diamond's box."""
+    run = RUN.parent / "issue111d"
+    src = (run / "drafts" / "03_trellis.attempt1.aidl").read_text()
+    r = aidl_lang.compile(src)
+    (e,) = _w(r, "E0102")
+    assert "`lattice.dia[0]` is a list of 6 (`lattice.dia[0][0]` to `lattice.dia[0][5]`)" in e.hint
+    assert "holds one list per pass of the outer loop that set it" in e.hint
+    fixed = src.replace("lattice.dia[0].bb.width", "lattice.dia[0][0].bb.width").replace(
+        "len(lattice.dia) >= 40", "len(lattice.dia) == 7")
+    r2 = aidl_lang.compile(fixed)
+    assert r2.ok, [d.message for d in r2.errors]

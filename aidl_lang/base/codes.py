@@ -347,7 +347,10 @@ by other errors.
 An `assert` statement's condition is false at the solved values (every false one is reported;
 after a failed solve, those that read only params, constants and held sizes). The message gives the condition, the reason written
 after it and the values found, in the file's units, then the value of each name and member a
-side computes with (`(where ring.bb.width = 124 mm, wall = 3 mm)`); one inside a template of another file (the standard
+side computes with (`(where ring.bb.width = 124 mm, wall = 3 mm)`); a structure's box that its
+drawings widen is said so, with the material's own size (`` `marker.bb` holds its drawing
+`marker.label`: its material alone spans 25 x 150 mm``: the engraved word is wider than the
+stake); one inside a template of another file (the standard
 library's, an imported one) is reported at the template's call, its own line a note. A
 template's assert written over its arguments (reading only its parameters and values computed
 from them) is checked at the call before the body runs: false, it is one error at the
@@ -650,7 +653,8 @@ A drawing inside a solid part runs outside the part's outline or across one of i
 there is no material to engrave. Move or shrink the drawing so that it lies on the material, or
 put a drawing that is only an illustration at assembly level, beside the part.
 The share off the material is said as a percentage of the drawing's length ("under 1%": a
-letter's stroke over a screw hole); across a hole, the hint names the holes it crosses.
+letter's stroke over a screw hole); across a hole, the hint names the holes it crosses (a window
+the shapes enclose that no hole cut, a rainbow's arch over its bar, is said as an opening).
 Off the outline, the hint says where the mark leaves the material (x, y); where the mark
 reaches past the box of the shape it is drawn over and fits in it, it also writes the
 constraint that sets it there clear of the cut, `Inside(d.mark, body, margin=0.5 mm)` (a mark
@@ -672,6 +676,13 @@ part has no hole, and the fit would shrink it by more than a tenth; a text wider
 conflicts (E0401) with such a constraint. One copy of a loop's statement (a ruler's `num[15]` over its hanging
 hole) is named with its index, and its hint offers no `max_width=` or `size=` for the
 statement (that would shrink every copy): it leads with moving what it crosses, or that copy.
+A mark that runs off the material on purpose (a checkerboard's grid lines carried across the
+dovetail band of each half, so that the rows read continuous once the halves are joined) is said
+so with `AllowOverlap(grid.h, self)` in the part (the engraving, or the drawing around it, and
+the part or a shape of it; for a drawing given to a part by `CutInto`, the call in the assembly:
+`AllowOverlap(label.word, box.front)`); the hint of a mark that is not text writes that call
+after its fix. Engraving off the material burns air, so nothing reaches the machine that was not
+drawn; an `AllowOverlap` of an engraving that lies on the material is W0523.
 """),
     "W0506": ("geometry that adds nothing", """
 A child solid lies wholly inside the rest of its parent, so it changes nothing in the final

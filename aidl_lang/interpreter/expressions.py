@@ -552,12 +552,17 @@ def _format_width(fmt: str) -> int:
 
 
 def _dotted(e) -> str | None:
-    """``e`` as written when it is a name or a chain of members (``j.cut``), else None."""
+    """``e`` as written when it is a name or a chain of members and whole-number indices
+    (``j.cut``, ``lattice.dia[0]``), else None."""
     if isinstance(e, A.Name):
         return e.id
     if isinstance(e, A.Member):
         head = _dotted(e.obj)
         return f"{head}.{e.name}" if head else None
+    if isinstance(e, A.Index) and isinstance(e.index, A.Num) and e.index.unit is None \
+            and float(e.index.value).is_integer():
+        head = _dotted(e.obj)
+        return f"{head}[{int(e.index.value)}]" if head else None
     return None
 
 
@@ -572,6 +577,9 @@ def _list_member(e: A.Member, obj: list):
     hint = (f"`{text}` is a list of {n} (`{text}[0]`" + (f" to `{text}[{n - 1}]`" if n > 1
                                                           else "") +
             f"): write `{text}[0].{e.name}` for one of them")
+    if text.endswith("]"):          # an item of a list of lists: a name set in nested loops
+        hint += (f"; `{text.rsplit('[', 1)[0]}` holds one list per pass of the outer loop "
+                 "that set it (a name set in nested loops), so index it twice")
     if "." in text and e.name in ("bb", "width", "height", "left", "right", "top", "bottom",
                                   "center"):
         owner = text.rsplit(".", 1)[0]
