@@ -134,8 +134,9 @@ def sliding_lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, fi
 # them, and cross in halving slots `thickness` + `clearance` wide: the ones
 # along the length slotted from the top, the ones across from the bottom.
 # `length` x `width` x `height` (mm) is the outer size when `outside=true`,
-# else the inside. Members: `body` (an open finger_box), `row_divider`,
-# `col_divider`.
+# else the inside. Members: `body` (an open finger_box, its panels laid out as
+# finger_box's: the front and back upright, the sides' top edges outward),
+# `row_divider`, `col_divider`.
 # Anchor: (cx, cy) is the centre of `body.bottom`.
 def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thickness=3 mm,
                  finger=10 mm, clearance=0.3 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {

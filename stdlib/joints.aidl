@@ -83,7 +83,10 @@ def finger_panel(width=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
 # in height when open), from material `thickness`; the panels are laid out
 # flat (a net, `gap` apart) around the bottom centered at (cx, cy): front
 # below it, back above it, the lid above the back, left and right beside it.
-# The front and back have fingers on every edge and keep their corners; the
+# The front and back lie upright (their top edge at +y: `front.bb.bottom` is
+# the box's bottom edge); the left and right lie on their side, their top edge
+# outward (the left's at -x, the right's at +x), so a side is `height` wide in
+# x and `depth` tall in y. The front and back have fingers on every edge and keep their corners; the
 # bottom and lid have slots along the front and back and fingers at the
 # sides; the sides have slots all round. Members: `bottom`, `front`, `back`,
 # `left`, `right`, `lid` (each a finger_panel). Each panel is placed in 3D

@@ -550,3 +550,29 @@ def test_gear_pair_law(tmp_path, z1, z2, m, angle):
         assert len(tips) == z
         assert max(math.dist(p[:2], c) for p in o.get_points("xy")) == pytest.approx(m * (z + 2) / 2, abs=1e-9)
     assert polygon(o1).intersection(polygon(o2)).area < 1e-9
+
+
+def test_finger_box_panels_lie_as_its_docs_say():
+    """`aidl docs finger_box` says how the net lies (issue 111's runs d and e guessed it):
+    the front and back upright, their open top edge at +y (one straight edge, the fingers
+    along their bottom at -y); the left and right on their side, the open top edge outward
+    (the left's at -x, the right's at +x), `height` wide in x and `depth` tall in y."""
+    import numpy as np
+    import aidl_lang
+    from aidl_lang.library.reference import lookup_text
+    r = aidl_lang.compile('import "std/joints.aidl"\nthickness 3 mm\nassembly kit {\n'
+                          '    box = finger_box(length=150 mm, depth=75 mm, height=80 mm, '
+                          'closed=false)\n}\n')
+    assert r.ok
+    flat = {}
+    for p in r.output.parts:
+        P = np.vstack([lp.points() for lp in p.loops])
+        (x0, y0), (x1, y1) = P.min(axis=0), P.max(axis=0)
+        sides = {"-x": x0, "+x": x1, "-y": y0, "+y": y1}
+        axis = {"-x": 0, "+x": 0, "-y": 1, "+y": 1}
+        straight = [k for k, v in sides.items() if (abs(P[:, axis[k]] - v) < 1e-6).sum() == 2]
+        flat[p.name.rsplit(".", 1)[1]] = (straight, round(x1 - x0, 6), round(y1 - y0, 6))
+    assert flat["front"] == (["+y"], 150, 80) and flat["back"] == (["+y"], 150, 80)
+    assert flat["left"] == (["-x"], 80, 75) and flat["right"] == (["+x"], 80, 75)
+    text = " ".join(lookup_text("finger_box")[0].split())
+    assert "their top edge at +y" in text and "the left's at -x, the right's at +x" in text
