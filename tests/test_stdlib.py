@@ -576,3 +576,24 @@ def test_finger_box_panels_lie_as_its_docs_say():
     assert flat["left"] == (["-x"], 80, 75) and flat["right"] == (["+x"], 80, 75)
     text = " ".join(lookup_text("finger_box")[0].split())
     assert "their top edge at +y" in text and "the left's at -x, the right's at +x" in text
+
+
+def test_corner_pattern_list_runs_counter_clockwise_as_its_docs_say():
+    """`aidl docs CornerPattern` gives the order of its list (issue 111's run e weakened an
+    assert with `or` for want of it): the original bottom-left, then counter-clockwise."""
+    import aidl_lang
+    from aidl_lang.library.reference import lookup_text
+    r = aidl_lang.compile("""solid p {
+    body = Rectangle(center=(0, 0), width=100, height=60)
+    hole h { c = Circle(center=(-40, -20), radius=2) }
+    hs = CornerPattern(h, body, inset=10)
+    assert hs[0].c.center.x == -40 mm and hs[0].c.center.y == -20 mm
+    assert hs[1].c.center.x == 40 mm and hs[1].c.center.y == -20 mm
+    assert hs[2].c.center.x == 40 mm and hs[2].c.center.y == 20 mm
+    assert hs[3].c.center.x == -40 mm and hs[3].c.center.y == 20 mm
+}
+""")
+    assert r.ok, [d.message for d in r.errors]
+    text = " ".join(lookup_text("CornerPattern")[0].split())
+    assert "`hs[0]` bottom-left (`h` itself), `hs[1]` bottom-right, `hs[2]` top-right, " \
+        "`hs[3]` top-left" in text

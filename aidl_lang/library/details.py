@@ -160,5 +160,8 @@ DETAILS: dict[str, str] = {
                      "points where its sides meet before rounding (bottom_left, bottom_right, "
                      "top_right, top_left), so an inset of at least the corner radius keeps "
                      "the holes on the flat: `CornerPattern(h, plate, inset=8)` on "
-                     "`plate = RoundedRectangle(..., corner_radius=6)`.",
+                     "`plate = RoundedRectangle(..., corner_radius=6)`. The list it gives, "
+                     "`hs = CornerPattern(h, plate, inset=10)`, runs counter-clockwise from "
+                     "the original: `hs[0]` bottom-left (`h` itself), `hs[1]` bottom-right, "
+                     "`hs[2]` top-right, `hs[3]` top-left (with `at=`, in the points' order).",
 }
