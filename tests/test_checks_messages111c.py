@@ -158,3 +158,37 @@ def test_E0102_on_an_item_of_a_nested_loops_list_says_to_index_twice():
         "len(lattice.dia) >= 40", "len(lattice.dia) == 7")
     r2 = aidl_lang.compile(fixed)
     assert r2.ok, [d.message for d in r2.errors]
+
+
+# ------------------------------------------------------------------------------ Hull
+def test_a_point_in_a_Hull_is_its_sharp_corner():
+    """issue111d's heart tag wanted a sharp tip and drew an R1 circle: `Hull([lobe, tip])`
+    with a Point runs straight from the lobe to the tip, exactly (two lines tangent to the
+    circle that meet at the point), the tip in its box; points alone are E0108."""
+    import math
+    r = aidl_lang.compile("""solid heart {
+    a = Circle(center=(-10, 0), radius=10)
+    b = Circle(center=(10, 0), radius=10)
+    tip = Point(0, -25)
+    left = Hull([a, tip])
+    right = Hull([b, tip])
+}
+assert heart.left.bb.bottom == -25 mm and heart.left.bb.left == -20 mm
+assert heart.right.bb.right == 20 mm and heart.right.bb.top == 10 mm
+""")
+    assert r.ok, [d.message for d in r.diagnostics]
+    (part,) = r.output.parts
+    (loop,) = part.loops
+    ends = [tuple(round(v, 9) for v in s.start) for s in loop.segments]
+    assert (0.0, -25.0) in ends                          # the tip is a corner
+    lines = [s for s in loop.segments if type(s).__name__ == "Line"]
+    assert len(lines) == 2
+    for s in lines:       # each side tangent to its circle: 10 mm from the centre
+        (x0, y0), (x1, y1) = s.start, s.end
+        c = (-10.0, 0.0) if min(x0, x1) < 0 else (10.0, 0.0)
+        d = abs((x1 - x0) * (y0 - c[1]) - (y1 - y0) * (x0 - c[0])) / math.hypot(x1 - x0, y1 - y0)
+        assert abs(d - 10.0) < 1e-9
+    bad = aidl_lang.compile("solid s {\n    a = Point(0, 0)\n    b = Point(10, 0)\n"
+                            "    h = Hull([a, b])\n}\n")
+    (e,) = _w(bad, "E0108")
+    assert "Hull of points alone encloses no curve" in e.message

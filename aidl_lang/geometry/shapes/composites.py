@@ -78,7 +78,12 @@ def _build_Hull(ctx, g, a):
         items = [a[f"shape{i}"] for i in range(1, 7) if a.get(f"shape{i}") is not None]
     if not items:
         raise PrimitiveError("Hull needs at least one shape")
-    _consume(g, [_source(v, "Hull") for v in items])
+    # a Point among them is a corner of the hull (a heart's sharp tip: Hull([lobe, tip]))
+    _consume(g, [v.geom if isinstance(v, GeomRef) and v.geom.kind == "Point"
+                 else _source(v, "Hull") for v in items])
+    if all(src.kind == "Point" for src in g.data["sources"]):
+        raise PrimitiveError("Hull of points alone encloses no curve: draw a Polygon "
+                             "through them, or add a shape")
 
 
 CLIPPED = ("Line", "Arc", "Polyline")       # open curves an Intersect clips

@@ -177,8 +177,10 @@ class Faces:
             a1 = math.atan2(m[1] - c[1], m[0] - c[0]) - sweep / 2
             return Loop(sector_outline(c, g.data["dims"]["radius"],
                                        g.data["dims"]["inner_radius"], a1, sweep))
-        if k == "Hull":
-            return hull_loop([lp for src in g.data["sources"] for lp in self.loops_of(src)])
+        if k == "Hull":             # (a Point: a loop of one line of no length, its site)
+            return hull_loop([lp for src in g.data["sources"] for lp in (
+                [Loop([Line(self._pt(src.points["p"]), self._pt(src.points["p"]))])]
+                if src.kind == "Point" else self.loops_of(src))])
         if k in DERIVED:
             loops = self.loops_of(g)
             return loops[0] if len(loops) == 1 else None
