@@ -108,7 +108,7 @@ def test_the_law_holds_on_examples(name):
 
 TWICE = """units mm
 solid plate {
-    body = Rectangle(center=(0, 0), width=80, height=40)
+    body = Rectangle(center=(0, 60), width=80, height=40)
 }
 drawing marks {
     a = Line(start=(-30, 0), end=(-10, 0))
