@@ -85,7 +85,11 @@ def slot(length=20 mm, width=5 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
 # cuts each as a slot that wide instead (a router's or a thick sheet's). Every
 # second column is shifted by half a period, and its end cuts reach the
 # band's top and bottom (a slot runs `overrun` past them), so a band as tall
-# as the plate opens at its edges, as the hinge needs. Members: `cut_a` (the
+# as the plate opens at its edges, as the hinge needs. A column holds the
+# whole cuts that fit, floor((height - bridge) / (cut + bridge)), centred: the
+# rest of the height is uncut at both ends of the unshifted columns (`height`
+# 32 mm of 15 + 3 mm periods: one cut, 8.5 mm uncut each end, end cuts of 14.5
+# mm); a height of n periods less a bridge leaves a bridge. Members: `cut_a` (the
 # full-length cuts, per column), `cut_b` (the end cuts).
 # Anchor: (cx, cy) is the centre of its box.
 def living_hinge(width=30 mm, height=60 mm, pitch=2 mm, cut=15 mm, bridge=3 mm,

@@ -597,3 +597,19 @@ def test_corner_pattern_list_runs_counter_clockwise_as_its_docs_say():
     text = " ".join(lookup_text("CornerPattern")[0].split())
     assert "`hs[0]` bottom-left (`h` itself), `hs[1]` bottom-right, `hs[2]` top-right, " \
         "`hs[3]` top-left" in text
+
+
+def test_text_on_arc_docs_example_sets_the_letters_on_its_circle():
+    """`aidl docs text_on_arc`'s example (issue 111's run f: it centred the letters' box in the
+    disc with `CenterInside`, which laid the word across the middle) keeps the anchor, the
+    circle's centre, on the disc's: every letter's baseline point 30 mm from it."""
+    import math
+    import aidl_lang
+    from aidl_lang.library.reference import topics
+    ex = topics()["text_on_arc"].example
+    assert "CenterInside" not in ex
+    r = aidl_lang.compile(ex)
+    assert r.ok and not [d for d in r.diagnostics if d.severity == "warning"]
+    pos = [v.mm for v in r.values if v.name.startswith("disc.label.ch") and
+           v.name.endswith(".position")]
+    assert len(pos) == 5 and all(abs(math.hypot(*p) - 30) < 1e-6 for p in pos), pos

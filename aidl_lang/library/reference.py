@@ -398,7 +398,8 @@ def _template_topic(t: StdTemplate) -> Topic:
                   + ", ".join(t.members)]
     lines += ["", "Use it by assignment inside a structure: `NAME = "
               f"{t.name}(...)` (an instance of kind {t.node.kind}; " + (
-                  "it holds itself where `cx`, `cy` put it)." if t.holds_itself else
+                  "it holds itself where `cx`, `cy` put it in the structure it is written "
+                  "in, and moves with that structure)." if t.holds_itself else
                   "place it with constraints).")]
     if t.node.kind == "assembly":
         part = "lid" if "lid" in t.members else (t.members[0] if t.members else "PART")
@@ -415,7 +416,8 @@ def _anchor_glosses(t: StdTemplate) -> dict[str, str]:
     line (tests/test_template_anchors.py measures each point and direction)."""
     if not t.anchor:
         return dict(PARAM_GLOSS)
-    stays = ("the instance holds itself there (`Fixed(self)`)" if t.holds_itself else
+    stays = ("the instance holds itself there in the structure it is written in "
+             "(`Fixed(self)`), and moves with that structure" if t.holds_itself else
              "constraints on the instance may move it, this point with it")
     flat = ", as laid out flat" if t.node.kind == "assembly" else ""
     out = {"cx": f"the x of (cx, cy), {t.anchor}{flat}; {stays}",
@@ -436,9 +438,10 @@ def _template_example(t: StdTemplate) -> str:
     if t.node.kind == "cut":
         return (imp + "solid panel {\n    body = Rectangle(center=(0, 0), width=60, "
                 f"height=60)\n    c = {call}\n    Fixed(body)\n}}\n")
-    if t.node.kind == "drawing":
+    if t.node.kind == "drawing":    # (cx, cy) the disc's centre: the anchor, not the box
         return (imp + "solid disc {\n    body = Circle(center=(0, 0), radius=45)\n"
-                f"    label = {call}\n    Fixed(body)\n    CenterInside(label, body)\n}}\n")
+                f"    label = {call}    # about (cx, cy) = (0, 0): the disc's centre\n"
+                "    Fixed(body)\n}\n")
     if t.node.kind == "assembly":
         return imp + f"assembly kit {{\n    k = {call}\n}}\n"
     return imp + f"solid part {{\n    p = {call}\n}}\n"
