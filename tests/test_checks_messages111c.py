@@ -192,3 +192,30 @@ assert heart.right.bb.right == 20 mm and heart.right.bb.top == 10 mm
                             "    h = Hull([a, b])\n}\n")
     (e,) = _w(bad, "E0108")
     assert "Hull of points alone encloses no curve" in e.message
+
+
+# ------------------------------------------------------------------------------ the prompt
+def test_what_a_structure_holds_moves_with_it_as_the_prompt_says():
+    """The prompt: `Fixed` holds in its structure, which carries it when placed (run g
+    threaded an offset through 16 coordinates of its own template for want of it): an
+    instance moved by `RightOf` takes its hole and its Fixed polygon along."""
+    from aidl_lang.llm.prompt import system_prompt
+    assert "an instance moved by `RightOf` takes its holes along" in " ".join(
+        system_prompt().split())
+    r = aidl_lang.compile("""def car() -> solid {
+    body = Rectangle(center=(0, 0), width=40, height=20)
+    hole w { c = Circle(center=(10, 0), radius=3) }
+    win = Polygon([(-15, 0), (-5, 0), (-5, 5)])
+    Fixed(win)
+}
+assembly toys {
+    a = car()
+    b = car()
+    Fixed(a)
+    RightOf(b, a, gap=10)
+    AlignCenterY(b, a)
+    assert b.w.c.center.x - a.w.c.center.x == 50 mm
+    assert b.win.bb.left - a.win.bb.left == 50 mm
+}
+""")
+    assert r.ok, [d.message for d in r.errors]

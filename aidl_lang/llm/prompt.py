@@ -80,7 +80,8 @@ solid plate {
 A hole declared inside `boss` would cut only boss, and plate's `body` would fill it again:
 the cut solid is united with its own siblings, which are not cut. Patterns and Mirrored put
 copies beside the original, in the original's structure.
-`Fixed(x)` holds a point, shape or structure where it starts. A shape with a `rotation=` (0
+`Fixed(x)` holds a point, shape or structure where it starts in its structure, which
+carries it when placed (an instance moved by `RightOf` takes its holes along). A shape with a `rotation=` (0
 when not given: Rectangle, Slot by center, RegularPolygon, Ellipse, Star, Text) or a Polygon
 of literal points never turns while solving: it only moves. Shapes through guessed points (a
 Line, an Arc, a Slot or Rectangle by start and end) may turn; a Line needs two distinct points (W0524). `Rigid(a, b, ...)` keeps
