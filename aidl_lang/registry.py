@@ -731,6 +731,7 @@ FUNCTIONS: dict[str, tuple[int, int, str]] = {
     "min": (1, 64, "smallest value (or of one list)"), "max": (1, 64, "largest value"),
     "norm": (1, 1, "length of a vector/point (x, y)"), "square": (1, 1, "x * x"),
     "len": (1, 1, "number of items of a list or string"),
+    "sum": (1, 1, "sum of a list of numbers, lengths or angles (0 for an empty list)"),
     "range": (1, 3, "range(stop), range(start, stop), range(start, stop, step)"),
     "round": (1, 2, "round to a number of decimals"), "floor": (1, 1, "round down"),
     "ceil": (1, 1, "round up"), "str": (1, 1, "text of a value"),

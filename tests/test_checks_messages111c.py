@@ -219,3 +219,16 @@ assembly toys {
 }
 """)
     assert r.ok, [d.message for d in r.errors]
+
+
+def test_sum_adds_a_list_of_one_kind():
+    """`sum` (run d wanted it to count a nested loop's copies): numbers, lengths, a nested
+    list's row lengths; 0 for an empty list; a length and an angle together are E0109."""
+    r = aidl_lang.compile("a = [3 mm, 4 mm, 5 mm]\nassert sum(a) == 12 mm\n"
+                          "assert sum([len(r) for r in [[1, 2], [3]]]) == 3\n"
+                          "assert sum([]) == 0\nassert sum([10 deg, 20 deg]) == 30 deg\n"
+                          "solid s { b = Rectangle(center=(0, 0), width=sum(a), height=5) }\n"
+                          "assert s.b.width == 12 mm\n")
+    assert r.ok, [d.message for d in r.errors]
+    bad = aidl_lang.compile("x = sum([3 mm, 10 deg])\n")
+    assert [d.code for d in bad.errors] == ["E0109"]

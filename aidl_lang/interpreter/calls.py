@@ -746,6 +746,16 @@ class Calls:
             text = _fmt_num(v.const()) if isinstance(v, Q) and v.const() is not None else show(v, self.unit_scale)
             self.check_size(len(text), sp, "a string")
             return text
+        if nm == "sum":                 # `sum([len(row) for row in dia])`
+            items = args[0] if isinstance(args[0], (list, tuple)) else [args[0]]
+            if not items:
+                return Q.num(0.0)
+            acc = self._q(items[0], sp)
+            for x in items[1:]:
+                q = self._q(x, sp)
+                a, b, d = self._unify(acc, q, sp)
+                acc = Q(a + b, d, acc.owners | q.owners)
+            return acc
         if nm in ("min", "max"):
             if len(args) == 1 and isinstance(args[0], list):
                 args = args[0]

@@ -38,7 +38,8 @@ syntax keyword aidlCadConstraint VerticalDistance VerticallyCentered Wider Withi
 syntax match aidlCadConstraint /\<Contains\>/
 syntax keyword aidlCadFunction abs acos asin atan atan2 ceil cos degrees
 syntax keyword aidlCadFunction distance floor len max min mirror norm polar
-syntax keyword aidlCadFunction radians range round sin sqrt square str tan
+syntax keyword aidlCadFunction radians range round sin sqrt square str sum
+syntax keyword aidlCadFunction tan
 
 syntax match aidlCadNumber /\v<\d+\.?\d*([eE][-+]?\d+)?>|\.\d+>/ nextgroup=aidlCadUnit skipwhite
 syntax match aidlCadUnit /\v<(inches|inch|deg|rad|cm|ft|in|mm|m)>|°/ contained
