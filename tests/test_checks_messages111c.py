@@ -232,3 +232,15 @@ def test_sum_adds_a_list_of_one_kind():
     assert r.ok, [d.message for d in r.errors]
     bad = aidl_lang.compile("x = sum([3 mm, 10 deg])\n")
     assert [d.code for d in bad.errors] == ["E0109"]
+
+
+def test_an_assert_compares_strings():
+    """`assert str(x) == "1.0"` was E0108 ("cannot constrain a string == a string"): two
+    strings compare with `==` and `!=`, a false one said with its strings; `<` is E0108."""
+    r = aidl_lang.compile('x = 1\nassert f"{x:.1f}" == "1.0"\nassert "a" != "b"\n'
+                          'assert str(x) == "1.0", "one decimal"\n')
+    (e,) = _w(r, "E0405")
+    assert e.message == ('assertion failed: `str(x) == "1.0"` (one decimal): "1" == "1.0" is '
+                         'false (where x = 1)'), e.message
+    bad = aidl_lang.compile('assert "a" < "b"\n')
+    assert "compare with `==` and `!=`" in _w(bad, "E0108")[0].message

@@ -52,6 +52,13 @@ class Asserts:
         vals = [self.eval(x) for x in e.operands]
         sides = []
         for op, (l, r) in zip(e.ops, zip(vals, vals[1:])):
+            if isinstance(l, (str, bool)) and isinstance(r, (str, bool)) \
+                    and type(l) is type(r):          # `assert f"{d:.1f}" == "1.0"`
+                if op not in ("==", "!="):
+                    raise EvalError("E0108", f"{'strings' if isinstance(l, str) else 'true and false'}"
+                                    f" compare with `==` and `!=`, not `{op}`", e.span)
+                sides.append((op, l, r, "text"))
+                continue
             if op == "!=" and isinstance(l, Q) and isinstance(r, Q):
                 le, re_, dim = self._unify(l, r, e.span)
                 sides.append(("!=", le, re_, dim))
@@ -143,7 +150,10 @@ def judge_known(groups: list) -> tuple:
         later, wrong = [], []
         for side in group:
             op, l, r, dim = side
-            if _const(l) and _const(r):
+            if dim == "text":               # two strings (or truth values): known now
+                if (l == r) != (op == "=="):
+                    wrong.append(side)
+            elif _const(l) and _const(r):
                 if not holds(op, _value(l), _value(r)):
                     wrong.append((op, _value(l), _value(r), dim))
             else:

@@ -27,6 +27,8 @@ def holds(op: str, left: float, right: float) -> bool:
 
 
 def _show(v: float, dim, a: Assertion) -> str:
+    if dim == "text":                   # a string (or a truth value) compared as it is
+        return f'"{v}"' if isinstance(v, str) else ("true" if v else "false")
     if dim == (1, 0):
         return f"{v / a.scale:.6g} {a.unit}"
     if dim == (0, 1):
@@ -118,6 +120,8 @@ def _within_tol(op: str, left: float, right: float, dim) -> str:
     """What a strict comparison that holds as plain numbers but not within :data:`TOL`
     needs (issue 105: `assert a > 0` at `a = 1e-7` said only "1e-07 > 0 is false"): the
     gap, and the tolerance, in mm, radians or plain units; "" for any other failure."""
+    if dim == "text":
+        return ""
     d = left - right
     if not (math.isfinite(d) and ((op == ">" and 0 < d <= TOL) or (op == "<" and -TOL <= d < 0))):
         return ""
