@@ -133,6 +133,8 @@ def sliding_lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, fi
 # The dividers stand on the bottom, as high as the walls, `clearance` short of
 # them, and cross in halving slots `thickness` + `clearance` wide: the ones
 # along the length slotted from the top, the ones across from the bottom.
+# With `rows=1` (or `cols=1`) the dividers cross nothing: plain plates that
+# nothing holds at their places (glue them in, or use 2 rows and 2 columns).
 # `length` x `width` x `height` (mm) is the outer size when `outside=true`,
 # else the inside. Members: `body` (an open finger_box, its panels laid out as
 # finger_box's: the front and back upright, the sides' top edges outward),

@@ -244,3 +244,40 @@ def test_an_assert_compares_strings():
                          'false (where x = 1)'), e.message
     bad = aidl_lang.compile('assert "a" < "b"\n')
     assert "compare with `==` and `!=`" in _w(bad, "E0108")[0].message
+
+
+# ------------------------------------------------------------------------------ run i
+def test_W0502_on_a_pattern_copy_points_at_the_pattern_not_the_copy():
+    """issue111i's clamp rack, first try: a LinearPattern's last two copies ran off the plate
+    (its original centred alone); W0502's hint offered `CenterInside(row[3], self)`, which
+    moves one copy apart from the row.  The hint now names the pattern to move; the row
+    centred by its original's offset (as the model fixed it) cuts all five slots."""
+    run = RUN.parent / "issue111i"
+    src = (run / "drafts" / "01_clamp_rack.attempt1.aidl").read_text()
+    r = aidl_lang.compile(src)
+    ws = _w(r, "W0502")
+    assert [w.message.split("`")[1] for w in ws] == ["rack.row[3]", "rack.row[4]"]
+    for w in ws:
+        assert "CenterInside" not in w.hint
+        assert "is a copy a pattern (or a mirror) made: move the pattern" in w.hint
+
+
+def test_E0109_on_an_angle_times_a_radian_says_atan2_is_an_angle():
+    r = aidl_lang.compile("x = sin(atan2(35, 35) * 1 rad)\ny = cos(3 mm)\n")
+    e1, e2 = _w(r, "E0109")
+    assert e1.message == "`sin` needs an angle, got an angle^2"
+    assert "give an angle already: drop the `* 1 rad`" in e1.hint
+    assert e2.message == "`cos` needs an angle, got a length"
+
+
+def test_W0404_not_on_holes_a_loose_box_inequality_reads():
+    """issue111h's glass charms: six charms in a row by `AlignBottom`, each a disc with a
+    stem hole whose throat pokes past the top edge (as asked).  The charm's box reads the
+    hole's points through an inequality that pins nothing at the solution, and W0404 warned
+    all six holes exactly where written; now none, and the ok line says they stay."""
+    src = (RUN.parent / "issue111h" / "run" / "05_glass_charms.first_valid.aidl").read_text()
+    r = aidl_lang.compile(src)
+    assert r.ok
+    r.find_redundant(seconds=None)
+    assert _w(r, "W0404") == []
+    assert "free but stay where written (harmless)" in r.freedom()["text"]

@@ -788,7 +788,12 @@ class Calls:
         q = [self._q(a, sp) for a in args]
         if nm in ("sin", "cos", "tan"):
             if q[0].dim not in (ANG, NUM):
-                raise EvalError("E0109", f"`{nm}` needs an angle, got a {dim_name(q[0].dim)}", sp)
+                got = dim_name(q[0].dim)
+                twice = q[0].dim == (0, 2)          # `sin(atan2(y, x) * 1 rad)`
+                raise EvalError("E0109", f"`{nm}` needs an angle, got {_a(got)}", sp,
+                                hint="`atan2`, `asin`, `acos` and `atan` give an angle already: "
+                                     "drop the `* 1 rad` (or `deg`) after it" if twice else
+                                     "give it an angle (`30 deg`, `pi / 6`)")
             if q[0].dim == NUM and rad_power(q[0]) != 1:          # `cos(3 * pi)` is meant
                 self._plain_radians(nm, q[0].const(), sp)
             return Q(func(nm, q[0].expr), NUM, q[0].owners)

@@ -139,7 +139,7 @@ def sliding(solver) -> Sliding:
             out.bounded |= {id(t) for t, _ in found if id(t) not in strict}
         for t, a in found:
             read = [n for n, f in (("x", t.fx), ("y", t.fy))
-                    if n in a.split(", ") and _block(J, [where[f]])[1].any()]
+                    if n in a.split(", ") and _reads(J, where[f], loose)]
             if read:        # a row reads it along a free axis: a changed value moves it there
                 out.constrained.add(id(t))
                 out.read[id(t)] = ", ".join(read)
@@ -173,6 +173,15 @@ def _block(J, cols) -> tuple[np.ndarray, np.ndarray]:
     for j, s in enumerate(spans):
         np.add.at(B[:, j], np.searchsorted(rows, J.indices[s]), J.data[s])
     return rows, B
+
+
+def _reads(J, col: int, loose: np.ndarray) -> bool:
+    """Some row that is not an inactive inequality reads column ``col``: a changed value
+    would move the feature there (issue 111's glass charms: the inequality a structure's
+    box reads a hole's point through, the hole's throat poking past the disc, pinned
+    nothing at the solution, and W0404 warned six holes exactly where written)."""
+    rows, B = _block(J, [col])
+    return bool(np.any((B[:, 0] != 0) & ~loose[rows]))
 
 
 def _moved(J, cols) -> tuple[np.ndarray, np.ndarray]:

@@ -786,11 +786,14 @@ def _check_hole(d: Drawing, cut, roots, sink: DiagnosticSink, local=None,
     if cut_area <= max(1e-9, 1e-6 * whole):
         if _over_opening(d, hole_shape, whole, _part_of(s, roots), roots):
             return                       # it declares an opening the solids enclose (W0515)
+        copy = getattr(h, "copy_origin", None) is not None
+        hint = (f"`{h.name}` is a copy a pattern (or a mirror) made: move the pattern, its "
+                f"original, step or count, so that every copy lies on `{s.path}` (a constraint "
+                "on one copy would move it apart from the rest)" if copy else
+                f"move the {h.kind} inside `{s.path}` (for example `CenterInside({h.name}, "
+                "self)`), or declare it in the solid it should cut")
         sink.warning("W0502", f"{h.kind} `{h.path}` cuts nothing: it lies outside solid "
-                     f"`{s.path}`",
-                     h.span, hint=f"move the {h.kind} inside `{s.path}` (for example "
-                                  f"`CenterInside({h.name}, self)`), or declare it in the solid "
-                                  "it should cut")
+                     f"`{s.path}`", h.span, hint=hint)
         return
     _check_stray_shapes(d, cut, _part_of(s, roots), roots, sink)
     if owner_areas is None:
