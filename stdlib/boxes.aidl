@@ -133,8 +133,9 @@ def sliding_lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, fi
 # The dividers stand on the bottom, as high as the walls, `clearance` short of
 # them, and cross in halving slots `thickness` + `clearance` wide: the ones
 # along the length slotted from the top, the ones across from the bottom.
-# With `rows=1` (or `cols=1`) the dividers cross nothing: plain plates that
-# nothing holds at their places (glue them in, or use 2 rows and 2 columns).
+# With `rows=1` (or `cols=1`) the dividers cross nothing: each then stands on
+# two tabs `thickness` deep in slots of the bottom (`thickness` + `clearance`
+# wide), a quarter of its length in from each end, so it keeps its place.
 # `length` x `width` x `height` (mm) is the outer size when `outside=true`,
 # else the inside. Members: `body` (an open finger_box, its panels laid out as
 # finger_box's: the front and back upright, the sides' top edges outward),
@@ -166,10 +167,18 @@ def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thick
     # the dividers' centers across the tray
     xs = [-li / 2 + (i + 1) * cw + i * t + t / 2 for i in range(cols - 1)]
     ys = [-wi / 2 + (j + 1) * rw + j * t + t / 2 for j in range(rows - 1)]
+    tw = min(15 mm, li / 6)     # the tabs of a divider that crosses nothing
+    tw_c = min(15 mm, wi / 6)
     for j in range(rows - 1) {
         ny = y0 + j * (hd + gap)
         solid row_divider {
             plate = Rectangle(center=(cx, ny), width=li - 2 * c, height=hd)
+            if cols == 1 {      # crossing nothing: two tabs in slots of the bottom
+                for u in [-li / 4, li / 4] {
+                    tab = Rectangle(center=(cx + u, ny - hd / 2 - t / 2), width=tw, height=t)
+                    Fixed(tab)
+                }
+            }
             for x in xs {
                 hole halving {
                     s = Rectangle(center=(cx + x, ny + hd / 4 + 0.5 mm), width=t + c, height=hd / 2 + 1 mm)
@@ -179,11 +188,24 @@ def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thick
         }
         row_divider.plate.center == (cx, ny)
         Place(row_divider, rotation=(90 deg, 0, 0), position=(-cx, ys[j] + t / 2, t + hd / 2 - ny))
+        if cols == 1 {          # crossing nothing: its two tabs' slots in the bottom
+            for u in [-li / 4, li / 4] {
+                hole row_slot { s = Rectangle(center=(cx + u, cy + ys[j]), width=tw + c, height=t + c) }
+                row_slot.s.center == (cx + u, cy + ys[j])
+                CutInto(row_slot, body.bottom)
+            }
+        }
     }
     for i in range(cols - 1) {
         ny = y0 + (rows - 1 + i) * (hd + gap)
         solid col_divider {
             plate = Rectangle(center=(cx, ny), width=wi - 2 * c, height=hd)
+            if rows == 1 {
+                for u in [-wi / 4, wi / 4] {
+                    tab = Rectangle(center=(cx + u, ny - hd / 2 - t / 2), width=tw_c, height=t)
+                    Fixed(tab)
+                }
+            }
             for y in ys {
                 hole halving {
                     s = Rectangle(center=(cx + y, ny - hd / 4 - 0.5 mm), width=t + c, height=hd / 2 + 1 mm)
@@ -193,6 +215,13 @@ def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thick
         }
         col_divider.plate.center == (cx, ny)
         Place(col_divider, rotation=(90 deg, 0, 90 deg), position=(xs[i] - t / 2, -cx, t + hd / 2 - ny))
+        if rows == 1 {
+            for u in [-wi / 4, wi / 4] {
+                hole col_slot { s = Rectangle(center=(cx + xs[i], cy + u), width=t + c, height=tw_c + c) }
+                col_slot.s.center == (cx + xs[i], cy + u)
+                CutInto(col_slot, body.bottom)
+            }
+        }
     }
 }
 

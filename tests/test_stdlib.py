@@ -613,3 +613,29 @@ def test_text_on_arc_docs_example_sets_the_letters_on_its_circle():
     pos = [v.mm for v in r.values if v.name.startswith("disc.label.ch") and
            v.name.endswith(".position")]
     assert len(pos) == 5 and all(abs(math.hypot(*p) - 30) < 1e-6 for p in pos), pos
+
+
+def test_divider_tray_dividers_that_cross_nothing_stand_in_slots_of_the_bottom():
+    """issue 111's runs h and i: `divider_tray(rows=1, cols=4)` gave three plain plates that
+    nothing held.  A divider that crosses nothing stands on two tabs in slots of the bottom:
+    assembled, the tabs fill the slots (no collision, W0517); each divider's outline is its
+    plate and two tabs `thickness` deep; the bottom has two slots per divider."""
+    import aidl_lang
+    for rows, cols, n in ((1, 4, 3), (3, 1, 2)):
+        r = aidl_lang.compile('import "std/boxes.aidl"\nthickness 3 mm\nassembly tray {\n'
+                              f'    t = divider_tray(length=240 mm, width=120 mm, height=45 mm, '
+                              f'rows={rows}, cols={cols})\n}}\n')
+        assert r.ok and not [d for d in r.diagnostics if d.severity == "warning"], \
+            [d.message for d in r.diagnostics]
+        parts = {p.name: p for p in r.output.parts}
+        bottom = parts["tray.t.body.bottom"]
+        assert len(bottom.loops) == 1 + 2 * n                # the outline and the slots
+        dividers = [p for k, p in parts.items() if "divider" in k]
+        assert len(dividers) == n
+        for p in dividers:
+            (loop,) = p.loops
+            ys = sorted({round(float(y), 6) for y in loop.points()[:, 1]})
+            assert len(ys) == 3 and round(ys[1] - ys[0], 6) == 3.0     # tabs 3 mm deep
+    plain = aidl_lang.compile('import "std/boxes.aidl"\nthickness 3 mm\nassembly tray {\n'
+                              '    t = divider_tray(rows=2, cols=3)\n}\n')
+    assert len({p.name: p for p in plain.output.parts}["tray.t.body.bottom"].loops) == 1
