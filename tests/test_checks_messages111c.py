@@ -281,3 +281,25 @@ def test_W0404_not_on_holes_a_loose_box_inequality_reads():
     r.find_redundant(seconds=None)
     assert _w(r, "W0404") == []
     assert "free but stay where written (harmless)" in r.freedom()["text"]
+
+
+# ------------------------------------------------------------------------------ run k
+def test_a_fillet_at_a_corner_an_earlier_fillet_took_is_E0408_not_a_crash():
+    """issue111k's tent stake: `Fillet(2)` then `Fillet((20, 10), 0.5)` on a part with a round
+    hole was an internal error (a whole circle's loop has no corner to measure).  Now E0408,
+    which says the earlier Fillet finished that corner; written in the other order, both
+    round as asked."""
+    src = ("solid p {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
+           "    hole h { c = Circle(center=(0, 0), diameter=6) }\n"
+           "    Fillet(2)\n    Fillet((20, 10), 0.5)\n}\n")
+    r = aidl_lang.compile(src)
+    (e,) = _w(r, "E0408")
+    assert "(it was a corner before an earlier `Fillet` or `Chamfer` of `p` finished it)" \
+        in e.message
+    assert e.hint.startswith("write this `Fillet` before the one that finishes the whole")
+    swapped = aidl_lang.compile(src.replace("    Fillet(2)\n    Fillet((20, 10), 0.5)\n",
+                                            "    Fillet((20, 10), 0.5)\n    Fillet(2)\n"))
+    assert swapped.ok and not [d for d in swapped.diagnostics if d.severity != "note"]
+    radii = sorted(round(float(m), 6) for m in
+                   re.findall(r"A([\d.]+),", swapped.to_svg().split('id="cut"')[1]))
+    assert radii.count(0.5) == 1 and radii.count(2.0) == 3

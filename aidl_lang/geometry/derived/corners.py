@@ -135,6 +135,7 @@ def finish(s: Structure, loops: list, x=None, check=None, said=None) -> list:
     ``(call, code, index of the chosen corner or -1, message, hint)`` (:func:`report`) for a
     chosen corner that is no corner of the outline (E0408), one rounded smaller than asked
     and an operation that finds no corner at all (W0406).  Returns the new loops."""
+    first = loops                       # before any finishing (E0408: an earlier one took it)
     for kind, r, at, call in getattr(s, "finish", []):
         chosen, why, pts = [], {}, None
         if at is not None and x is not None:
@@ -159,7 +160,8 @@ def finish(s: Structure, loops: list, x=None, check=None, said=None) -> list:
                 elif not lp.is_hole:
                     narrow += _narrow_notches(lp, r)
         if said is not None:
-            said += report(kind, r, call, chosen, why, pts, got, loops)
+            said += report(kind, r, call, chosen, why, pts, got, loops,
+                           first if loops is not first else None)
             if narrow:
                 names = [g.name for g in s.geometry if g.closed and g.name
                          and not g.construction and not g.__dict__.get("copied")]
@@ -343,7 +345,7 @@ def _width(xy) -> float:
 
 
 def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
-           loops: list) -> list:
+           loops: list, first: list | None = None) -> list:
     """What a ``Fillet``/``Chamfer`` of size ``r`` (written at ``call``) did not do, as
     ``[(call, code, index, message, hint)]``: ``chosen`` (:class:`Chosen`, placed), ``why``
     (index -> why two edges make no corner), ``pts`` ([(point, index into chosen)], None
@@ -396,6 +398,11 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
                     f"mm: name the two edges that meet there" if near is not None else
                     "name two edges that meet at a corner of the outline, or delete the "
                     f"`{kind}`")
+            if first is not None and _was_corner(p, first):
+                msg += (f" (it was a corner before an earlier `Fillet` or `Chamfer` of "
+                        f"`{path}` finished it)")
+                hint = (f"write this `{kind}` before the one that finishes the whole outline, "
+                        "or give that one the other corners (`Fillet([...], r)`)")
             out.append((call, "E0408", i, msg, hint))
         elif min(found) < r * (1 - SHRUNK):
             least = min(found)
@@ -410,6 +417,21 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
                         f"corner longer" if fits > 0 else
                         f"make the edges beside the corner longer, or delete the `{kind}`"))
     return out
+
+
+def _was_corner(p, loops: list) -> bool:
+    """Point ``p`` is a corner (a join that turns) of the outline ``loops``."""
+    from ..shapes.curves import turn_between
+    for lp in loops:
+        segs = lp.segments
+        if len(segs) < 2:
+            continue
+        for k in range(len(segs)):
+            v = segs[k].start
+            if math.hypot(v[0] - p[0], v[1] - p[1]) <= CORNER_TOL and \
+                    abs(turn_between(segs[k - 1], segs[k])) > CORNER_TURN:
+                return True
+    return False
 
 
 def _where(p, loops: list) -> tuple[str, tuple | None]:
@@ -435,6 +457,8 @@ def _where(p, loops: list) -> tuple[str, tuple | None]:
     near, nd = None, math.inf
     for lp in loops:
         segs = lp.segments
+        if len(segs) < 2:               # a whole circle (a round hole): no corner
+            continue
         for k in range(len(segs)):
             if abs(turn_between(segs[k - 1], segs[k])) > CORNER_TURN:
                 v = segs[k].start
