@@ -234,7 +234,11 @@ def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thick
 # lid's back edge swings down behind the pivot: the back wall and the side
 # walls behind the pivot are lowered by that swing plus `clearance`.
 # `length` x `width` x `height` (mm) is the outer size (the lid's length,
-# the lid included) when `outside=true`, else the space inside. Members:
+# the lid included) when `outside=true`, else the space inside. Laid out flat
+# as finger_box's net (front below the bottom, back above it, the sides beside
+# it; the front and back upright, the sides' top edges outward), the lid above
+# the back as it lies on the box seen from above (its hinge edge, the back, at
+# +y), the cheeks and pins to its right. Members:
 # `bottom`, `front`, `back`, `left`, `right`, `lid`, `cheek`, `pin`.
 # Anchor: (cx, cy) is the centre of `bottom`.
 def hinged_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=10 mm, pin=0 mm,

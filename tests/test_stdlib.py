@@ -6,6 +6,7 @@ gears against the involute and ISO 53 proportions, finger joints edge against ma
 (with and without kerf), fastener holes against ISO 273 / ISO 4032.
 """
 import io
+from pathlib import Path
 import math
 
 import ezdxf
@@ -639,3 +640,29 @@ def test_divider_tray_dividers_that_cross_nothing_stand_in_slots_of_the_bottom()
     plain = aidl_lang.compile('import "std/boxes.aidl"\nthickness 3 mm\nassembly tray {\n'
                               '    t = divider_tray(rows=2, cols=3)\n}\n')
     assert len({p.name: p for p in plain.output.parts}["tray.t.body.bottom"].loops) == 1
+
+
+def test_hinged_box_net_lies_as_its_docs_say():
+    """`aidl docs hinged_box` says how its net lies (issue 111's run j guessed the lid's hinge
+    edge): the lid above the back, laid as it sits on the box (no turn: its +y edge over the
+    back wall), the cheeks to its right; the front and back upright (the front's fingers at
+    its bottom, -y), the sides' top edges outward."""
+    import numpy as np
+    import aidl_lang
+    from aidl_lang.library.reference import lookup_text
+    r = aidl_lang.compile('import "std/boxes.aidl"\nthickness 3 mm\nassembly kit {\n'
+                          '    b = hinged_box(length=140 mm, width=90 mm, height=50 mm)\n}\n')
+    assert r.ok
+    box = {}
+    for p in r.output.parts:
+        P = np.vstack([lp.points() for lp in p.loops])
+        box[p.name.split(".")[-1]] = (*P.min(axis=0), *P.max(axis=0))
+    assert box["lid"][1] > box["back"][3] > box["bottom"][3] > box["front"][3]
+    assert box["cheek[0]"][0] > box["lid"][2] and box["left"][2] < box["bottom"][0]
+    text = " ".join(lookup_text("hinged_box")[0].split())
+    assert "the lid above the back as it lies on the box seen from above (its hinge edge, " \
+        "the back, at +y)" in text
+    root = Path(__file__).resolve().parent.parent
+    lid_place = [ln for ln in (root / "stdlib" / "boxes.aidl").read_text().splitlines()
+                 if ln.strip().startswith("Place(lid,")]
+    assert lid_place and all("rotation" not in ln for ln in lid_place)
