@@ -157,6 +157,7 @@ class Checker:
         return out
 
     def run(self, program: A.Program) -> None:
+        self.program = program          # (E0101's hint: a name bound inside a structure)
         file_names = set()
         memo: dict = {}                 # imported file (real path) -> its names, once each
         self.params_once(program)
@@ -383,10 +384,36 @@ class Checker:
             return
         cands = scope.all() | set(CONSTANTS) | {"self"}
         sugg = did_you_mean(n, cands)
+        inside = None if sugg else self._bound_inside(n, scope)
         self.sink.error("E0101", f"unknown name `{n}`", e.span,
                         hint=f"did you mean `{sugg[0]}`?" if sugg else
+                        f"`{n}` is defined inside `{inside}`: reach it by its path, "
+                        f"`{inside}.{n}`" if inside else
                         "define it first (`NAME = ...`, or `param NAME = ...` at the top)",
-                        suggestions=sugg)
+                        suggestions=sugg or ([f"{inside}.{n}"] if inside else []))
+
+    def _bound_inside(self, n: str, scope: _Scope) -> str | None:
+        """The path, from a structure in ``scope``, of a structure whose body binds ``n``
+        (issue 111's golf-ball rack: `grid` read beside `solid top { grid = ... }`, where
+        `top.grid` was meant), or None."""
+        def walk(stmts, path):
+            for st in stmts:
+                if isinstance(st, A.StructDecl):
+                    here = path + [st.name]
+                    if n in self.block_names(st.body.stmts):
+                        yield here
+                    yield from walk(st.body.stmts, here)
+                elif isinstance(st, (A.For, A.If)):
+                    yield from walk(st.body.stmts, path)
+                    if isinstance(st, A.If) and st.orelse is not None:
+                        yield from walk(st.orelse.stmts, path)
+        names = scope.all()
+        program = getattr(self, "program", None)
+        for path in walk(program.stmts if program is not None else [], []):
+            for k in reversed(range(len(path))):    # the shortest tail that starts in scope
+                if path[k] in names:
+                    return ".".join(path[k:])
+        return None
 
     def call(self, e: A.Call, scope: _Scope) -> None:
         for a in e.args:

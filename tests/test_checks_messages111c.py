@@ -303,3 +303,15 @@ def test_a_fillet_at_a_corner_an_earlier_fillet_took_is_E0408_not_a_crash():
     radii = sorted(round(float(m), 6) for m in
                    re.findall(r"A([\d.]+),", swapped.to_svg().split('id="cut"')[1]))
     assert radii.count(0.5) == 1 and radii.count(2.0) == 3
+
+
+def test_E0101_on_a_name_bound_inside_a_structure_gives_its_path():
+    """issue111k's golf-ball rack, first try: `grid` read in the assembly beside `solid top {
+    grid = GridPattern(...) }`: E0101's hint said "define it first" (it was defined); now it
+    gives the path, `top.grid`, and the program written so checks."""
+    src = (RUN.parent / "issue111k" / "drafts" / "06_golf_ball_rack.attempt1.aidl").read_text()
+    r = aidl_lang.compile(src)
+    (e,) = [d for d in _w(r, "E0101") if "`grid`" in d.message]
+    assert e.hint == "`grid` is defined inside `top`: reach it by its path, `top.grid`"
+    plain = aidl_lang.compile("x = foo + 1\n")
+    assert _w(plain, "E0101")[0].hint.startswith("define it first")
