@@ -315,3 +315,19 @@ def test_E0101_on_a_name_bound_inside_a_structure_gives_its_path():
     assert e.hint == "`grid` is defined inside `top`: reach it by its path, `top.grid`"
     plain = aidl_lang.compile("x = foo + 1\n")
     assert _w(plain, "E0101")[0].hint.startswith("define it first")
+
+
+def test_W0405_on_an_assert_of_a_shape_box_a_fillet_shortened():
+    """issue111k's tent stake: `Fillet(2)` on the whole outline took 21.4 mm off its 9.8 deg
+    point, and `assert body.bb.height == 180 mm` (the shape as drawn) held with no word.
+    W0405 now reads a shape's box where it is its structure's outline: it names the shape
+    and the side that moved; the same assert on a side the fillet does not move is silent."""
+    src = (RUN.parent / "issue111k" / "run" / "07_tent_stake.first_valid.aidl").read_text()
+    r = aidl_lang.compile(src)
+    ws = [w for w in _w(r, "W0405") if "body.bb.height == 180 mm" in w.message]
+    assert len(ws) == 1
+    assert "reads the box of `stake.body`, the outline of `stake`, before its Fillet" in \
+        ws[0].message and "its bottom 21.419 mm in" in ws[0].message
+    square = aidl_lang.compile("solid p {\n    body = Rectangle(center=(0, 0), width=40, "
+                               "height=20)\n    Fillet(2)\n    assert body.bb.height == 20 mm\n}\n")
+    assert square.ok and _w(square, "W0405") == []

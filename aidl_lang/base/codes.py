@@ -544,7 +544,9 @@ the difference to 1e-6 mm (`x0.bb.left + 0.62132 mm == board.bb.left`: an equati
 values is taken as written, never warned, and moves the first-named as the `Align*` did), or
 round only the corners away from that side (`Fillet(at=[...], radius=...)`). An `assert` on
 such a box is judged on it too (E0405 when false there); where its verdict on the final
-outline would be the other one, W0405 says so at the assert. Also a relation
+outline would be the other one, W0405 says so at the assert; so too for the box of a shape
+that is its structure's outline on the side read (`assert body.bb.height == 180 mm` on a tent
+stake whose `Fillet(2)` took 21.4 mm off its 9.8-degree point). Also a relation
 on the box of a shape made from others whose box is its drawn outline's (an `Inset`, a
 miter-joined `Offset` or `Shell`, an `Intersect`: exact at the solution) that the solution
 still misses after the solver solved again from it: the solve moved the shapes it is made
