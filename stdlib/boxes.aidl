@@ -167,13 +167,13 @@ def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thick
     # the dividers' centers across the tray
     xs = [-li / 2 + (i + 1) * cw + i * t + t / 2 for i in range(cols - 1)]
     ys = [-wi / 2 + (j + 1) * rw + j * t + t / 2 for j in range(rows - 1)]
-    tw = min(15 mm, li / 6)     # the tabs of a divider that crosses nothing
+    tw = min(15 mm, li / 6)  # the tabs of a divider that crosses nothing
     tw_c = min(15 mm, wi / 6)
     for j in range(rows - 1) {
         ny = y0 + j * (hd + gap)
         solid row_divider {
             plate = Rectangle(center=(cx, ny), width=li - 2 * c, height=hd)
-            if cols == 1 {      # crossing nothing: two tabs in slots of the bottom
+            if cols == 1 {  # crossing nothing: two tabs in slots of the bottom
                 for u in [-li / 4, li / 4] {
                     tab = Rectangle(center=(cx + u, ny - hd / 2 - t / 2), width=tw, height=t)
                     Fixed(tab)
@@ -188,9 +188,11 @@ def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thick
         }
         row_divider.plate.center == (cx, ny)
         Place(row_divider, rotation=(90 deg, 0, 0), position=(-cx, ys[j] + t / 2, t + hd / 2 - ny))
-        if cols == 1 {          # crossing nothing: its two tabs' slots in the bottom
+        if cols == 1 {  # crossing nothing: its two tabs' slots in the bottom
             for u in [-li / 4, li / 4] {
-                hole row_slot { s = Rectangle(center=(cx + u, cy + ys[j]), width=tw + c, height=t + c) }
+                hole row_slot {
+                    s = Rectangle(center=(cx + u, cy + ys[j]), width=tw + c, height=t + c)
+                }
                 row_slot.s.center == (cx + u, cy + ys[j])
                 CutInto(row_slot, body.bottom)
             }
@@ -217,7 +219,9 @@ def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thick
         Place(col_divider, rotation=(90 deg, 0, 90 deg), position=(xs[i] - t / 2, -cx, t + hd / 2 - ny))
         if rows == 1 {
             for u in [-wi / 4, wi / 4] {
-                hole col_slot { s = Rectangle(center=(cx + xs[i], cy + u), width=t + c, height=tw_c + c) }
+                hole col_slot {
+                    s = Rectangle(center=(cx + xs[i], cy + u), width=t + c, height=tw_c + c)
+                }
                 col_slot.s.center == (cx + xs[i], cy + u)
                 CutInto(col_slot, body.bottom)
             }

@@ -104,7 +104,7 @@
   (#any-of? @function.builtin
     "abs" "acos" "asin" "atan" "atan2" "ceil" "cos" "degrees" "distance" "floor" "len" "max"
     "min" "mirror" "norm" "polar" "radians" "range" "round" "sin" "sqrt" "square" "str"
-    "tan"))
+    "sum" "tan"))
 
 ; any other name called (entity.name.function.call)
 ((call
@@ -135,8 +135,8 @@
     "VerticalDistance" "VerticallyCentered" "Wedge" "Wider" "Wire" "Within" "ZigZag" "abs"
     "acos" "asin" "assembly" "atan" "atan2" "ceil" "convex_hull" "cos" "cut" "degrees"
     "distance" "drawing" "false" "floor" "hole" "len" "max" "min" "mirror" "norm" "pi"
-    "polar" "radians" "range" "round" "self" "sin" "solid" "sqrt" "square" "str" "tan" "tau"
-    "true"))
+    "polar" "radians" "range" "round" "self" "sin" "solid" "sqrt" "square" "str" "sum" "tan"
+    "tau" "true"))
 
 ; ---- operators and punctuation
 ["+" "-" "*" "/" "//" "%" "**"] @operator
