@@ -476,10 +476,11 @@ _DEFS = {
                             "each point of at: the original at the bottom-left corner (at[0]), "
                             "copies at the others; what is Fixed stays put (a Fixed original "
                             "pulls the plate)."),
-    "CutInto": _c([A("hole", "boxed"), A("part", "boxed")], cat="operation",
+    "CutInto": _c([A("hole", "any"), A("part", "boxed")], cat="operation",
                   doc="A hole (or drawing) declared in an assembly cuts (engraves) a solid "
                       "of it, e.g. a template instance's part (`CutInto(lid_hole, box.lid)`: "
-                      "a hole in finger_box's lid); written where both are, placed as usual."),
+                      "a hole in finger_box's lid; a pattern's copies follow); written "
+                      "where both are, placed as usual."),
     "Rigid": _c([A("a", "any"), A("b", "any", None, "and every further argument, as a list")],
                 cat="operation", varargs=True,
                 doc="any number of shapes, structures (drawings too) or lists of them keep "

@@ -107,3 +107,21 @@ def test_import_gives_a_silkscreen_layer_to_its_board(tmp_path):
             [d.message for d in r.diagnostics]
         assert {s.part for s in r.output.engrave} == {"drawing_import.edge_cuts"}
         assert r.layout().dropped == 0
+
+
+def test_a_patterns_copies_follow_their_original_into_the_part():
+    """issue111l's hamster house: `GridPattern(air, 3, 5, ...)` then `CutInto(air, box.lid)`
+    cut 1 of 15 air holes (14 W0109s).  The copies follow their original, whichever is
+    written first, and `CutInto(vents, box.lid)` takes the pattern's list: 15 holes in the
+    lid each way, no W0109."""
+    head = ('import "std/joints.aidl"\nthickness 3 mm\nassembly kit {\n'
+            '    box = finger_box(length=120 mm, depth=80 mm, height=50 mm)\n'
+            '    hole air { c = Circle(center=(-20, -20), diameter=5) }\n'
+            '    CenterInside(air, box.lid)\n')
+    for body in ("    vents = GridPattern(air, 3, 5, 10)\n    CutInto(air, box.lid)\n",
+                 "    CutInto(air, box.lid)\n    vents = GridPattern(air, 3, 5, 10)\n",
+                 "    vents = GridPattern(air, 3, 5, 10)\n    CutInto(vents, box.lid)\n"):
+        r = aidl_lang.compile(head + body + "}\n")
+        assert r.ok and not _w(r, "W0109"), [d.message for d in r.diagnostics]
+        lid = {p.name: p for p in r.output.parts}["kit.box.lid"]
+        assert len(lid.loops) == 16, body                # the outline and 15 holes

@@ -248,8 +248,9 @@ def test_tools_list_leaves_room_for_two_more_tools_under_5000_tokens(jobs):
     # off its part on purpose (W0505's `AllowOverlap(lines, self)`): 7,800; a drawing engraved
     # on a template's part by `CutInto` (one word fewer, four tokens more): 7,804; a name set
     # in nested loops, `dia[i][j]`: 7,810; an f-string's format spec: 7,817; a Point
-    # in a Hull (a sharp corner): 7,823; `Fixed` carried by its structure: 7,849; `sum`: 7,850
-    assert figures["prompt"]["tokens"] <= 7850, figures["prompt"]
+    # in a Hull (a sharp corner): 7,823; `Fixed` carried by its structure: 7,849; `sum`: 7,850; CutInto's pattern
+    # copies: 7,857
+    assert figures["prompt"]["tokens"] <= 7857, figures["prompt"]
 
 
 def test_each_of_issue_86s_jobs_is_at_most_3000_tokens_and_renders_no_picture(jobs):

@@ -17,6 +17,10 @@ def cut_into(conv, node, spans):
     A drawing so given is engraved on the part: drawn with it, moved with it by a cutting
     layout, checked against its material (W0505; issue 111: "TEA" on a finger box's front)."""
     h, part = conv["hole"], conv["part"]
+    if isinstance(h, (list, tuple)):    # a pattern's list (`vents = GridPattern(air, ...)`)
+        for one in h:
+            cut_into(dict(conv, hole=one), node, spans)
+        return None
     hspan, pspan = spans.get("hole", node.span), spans.get("part", node.span)
     if not isinstance(h, StructRef) or h.struct.kind not in ("hole", "drawing"):
         raise EvalError("E0108", f"`CutInto` cuts with a hole structure (or engraves a "
@@ -39,9 +43,23 @@ def cut_into(conv, node, spans):
                                     "part's instance, beside it")
     if ps.is_within(hs):
         raise EvalError("E0108", f"`{ps.path}` is inside the hole `{hs.path}`", pspan)
+    if hs.cuts_into is ps:
+        return None                     # (a pattern's list naming its original, given already)
     if hs.cuts_into is not None:
         raise EvalError("E0108", f"`{hs.path}` already cuts `{hs.cuts_into.path}`", node.span,
                         hint=f"a {what} goes into one solid: declare another for the other")
+    give(hs, ps)
+    return None
+
+
+def give(hs, ps) -> None:
+    """``hs`` cuts (or is engraved on) ``ps``, and so does every copy a pattern made of it
+    beside it (issue 111's hamster house: `GridPattern(air, 3, 5, 20)` then
+    `CutInto(air, box.lid)` cut 1 of 15 holes; a pattern's copies follow their original, as
+    its countersink does).  A pattern written after the call copies it too
+    (:meth:`aidl_lang.geometry.derived.operations._Cloner.struct`)."""
     hs.cuts_into = ps
     ps.cut_by.append(hs)
-    return None
+    for copy in hs.__dict__.get("pattern_copies", ()):
+        if copy.cuts_into is None and copy.parent is hs.parent:
+            give(copy, ps)

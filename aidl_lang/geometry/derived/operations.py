@@ -302,6 +302,9 @@ class _Cloner:
         X, Y = self.xf(ox - fx, oy - fy)
         c.copy_origin = (X + fx, Y + fy)
         self.structs[s] = c
+        if s.cuts_into is not None and parent is s.parent:     # given by CutInto: so is c
+            c.cuts_into = s.cuts_into
+            s.cuts_into.cut_by.append(c)
         for g in s.geometry:
             self.geom(g, c)
         for n, ch in s.children.items():
