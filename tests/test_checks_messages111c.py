@@ -331,3 +331,18 @@ def test_W0405_on_an_assert_of_a_shape_box_a_fillet_shortened():
     square = aidl_lang.compile("solid p {\n    body = Rectangle(center=(0, 0), width=40, "
                                "height=20)\n    Fillet(2)\n    assert body.bb.height == 20 mm\n}\n")
     assert square.ok and _w(square, "W0405") == []
+
+
+def test_E0109_on_an_arc_angle_times_a_radian_says_acos_is_an_angle():
+    """issue111m's tactics board: `start_angle=180 deg - acos(16 / 20) * 1 rad` said "cannot
+    combine an angle with an angle^2" with a hint about ratios; now the hint says `acos`
+    gives an angle already, as it does for an argument given an angle^2."""
+    r = aidl_lang.compile("solid s {\n    a = Arc(center=(0, 0), radius=10, start_angle=180 deg "
+                          "- acos(16 / 20) * 1 rad, end_angle=180 deg)\n}\n")
+    (e,) = _w(r, "E0109")
+    assert "cannot combine an angle with an angle^2" in e.message
+    assert e.hint.startswith("`atan2`, `asin`, `acos` and `atan` give an angle already")
+    r2 = aidl_lang.compile("solid s {\n    a = Arc(center=(0, 0), radius=10, start_angle="
+                           "acos(0.8) * 1 rad, end_angle=180 deg)\n}\n")
+    (e2,) = _w(r2, "E0109")
+    assert "must be an angle, got an angle^2" in e2.message and "give an angle already" in e2.hint

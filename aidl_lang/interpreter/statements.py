@@ -888,7 +888,10 @@ class Statements(Asserts):
                 if lt and rt and len(lt) + len(rt) < 160:
                     msg = (f"cannot combine {_a(dim_name(a.dim))} with {_a(dim_name(b.dim))}: "
                            f"`{lt}` is {_a(dim_name(a.dim))}, `{rt}` is {_a(dim_name(b.dim))}")
-                if "/" in lt + rt:        # a ratio that was meant to be a plain number
+                if (0, 2) in (a.dim, b.dim):    # `acos(x) * 1 rad` (issue 111's run m)
+                    hint = ("`atan2`, `asin`, `acos` and `atan` give an angle already: drop "
+                            "the `* 1 rad` (or `deg`) after it")
+                elif "/" in lt + rt:      # a ratio that was meant to be a plain number
                     hint += ("; in `*` and `/` a bare number (`r = 15`, a list `[15, 25]`) "
                              "stays a plain number, so `length / r` is a length, not a ratio: "
                              "write `15 mm` where a length is meant")

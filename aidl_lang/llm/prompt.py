@@ -158,7 +158,8 @@ def vocabulary() -> str:
     # other names a model guesses (Orthogonal, ConvexHull, ...) are accepted silently and
     # need no words here; only the ones with swapped arguments change the meaning
     out.append(" ".join(f"{s}(a, b) means {SYNONYMS[s]}(b, a)." for s in SWAPPED))
-    out.append("Functions: " + ", ".join(f"{n}" for n in FUNCTIONS) + "; f-strings "
+    out.append("Functions: " + ", ".join(f"{n}" for n in FUNCTIONS) + " (asin, acos, atan, "
+               "atan2 give angles); f-strings "
                "`f\"{d:.1f} mm\"`; constants pi, tau, true, false; units " + ", ".join(list(UNITS_LENGTH) + list(UNITS_ANGLE)) + ".")
     return "\n\n".join(out)
 
