@@ -916,11 +916,21 @@ def report_failure(sink: DiagnosticSink, result: SolveResult, path: str | None =
         user = [(c, r) for c, r in items if not c.implicit and c.span is not None] or items
         own = [(c, r) for c, r in user if c.span is not None and c.span.file == path]
         first, r0 = (own or user)[-1]
-        labels = [Label(c.span, f"conflicts with this: {_where(c)}"
+        # one line a statement: a template's loop makes its copies with one span and text
+        # (run k's note holder listed two tabs' `Fixed(tab.center)` twice)
+        seen: dict = {}
+        for c, r in items:
+            key = (c.span, _where(c))
+            n, rr, cc = seen.get(key, (0, 0.0, c))
+            seen[key] = (n + 1, max(rr, r), cc)
+        labels = [Label(c.span, f"conflicts with this: {where}"
+                        + (f" ({n} of them)" if n > 1 else "")
                         + (f", residual {r:.3g}" if r > 1e-6 else ""), primary=False)
-                  for c, r in items if c is not first and c.span is not None]
+                  for (span, where), (n, r, c) in seen.items()
+                  if c is not first and span is not None and span != first.span]
         worst = max(r for _, r in items)
-        names = "; ".join(_where(c) for c, _ in items)
+        names = "; ".join(where + (f" ({n} of them)" if n > 1 else "")
+                          for (_, where), (n, _, _) in seen.items())
         sink.add(Diagnostic(
             "E0401",
             f"these {len(items)} constraints conflict in `{first.owner.path}`: they cannot "
