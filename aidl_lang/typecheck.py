@@ -133,6 +133,7 @@ class Checker:
         self.sink = sink
         self.path = path
         self.import_failed = False     # names may come from an import that failed: no E0101/E0103
+        self.program: A.Program | None = None   # (E0101's hint: a name bound inside a structure)
         self.templates: dict[str, A.Def] = {}
         self.imported: dict[str, A.Def] = {}    # templates imported without `as`, by name
         self.bound: set = set()        # (name, arguments, keyword names) of registry calls that bind
@@ -157,7 +158,7 @@ class Checker:
         return out
 
     def run(self, program: A.Program) -> None:
-        self.program = program          # (E0101's hint: a name bound inside a structure)
+        self.program = program
         file_names = set()
         memo: dict = {}                 # imported file (real path) -> its names, once each
         self.params_once(program)
@@ -408,8 +409,7 @@ class Checker:
                     if isinstance(st, A.If) and st.orelse is not None:
                         yield from walk(st.orelse.stmts, path)
         names = scope.all()
-        program = getattr(self, "program", None)
-        for path in walk(program.stmts if program is not None else [], []):
+        for path in walk(self.program.stmts if self.program is not None else [], []):
             for k in reversed(range(len(path))):    # the shortest tail that starts in scope
                 if path[k] in names:
                     return ".".join(path[k:])

@@ -7,6 +7,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 import aidl_lang
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -51,6 +53,24 @@ def test_a_drawing_left_on_a_part_is_W0116_and_its_fix_engraves_it_there():
     assert given.layout().dropped == 0
     # the flat sheet is the same part either way: the word's strokes where they were
     assert [s.segments for s in mine] == [s.segments for s in strokes]
+    # the layout's DXF, re-read by ezdxf: the word is engraved (FILL) inside the front's cut
+    # outline wherever the nesting put it, and the loose word is on no layer of it at all
+    import io
+    import ezdxf
+    from ezdxf import bbox
+
+    def layers(res):
+        (data,) = res.layout().encode("dxf")
+        doc = ezdxf.read(io.StringIO(data.decode()))
+        out: dict = {}
+        for ent in doc.modelspace():
+            out.setdefault(ent.dxf.layer, []).append(ent)
+        return out
+    assert "FILL" not in layers(loose)
+    got = layers(given)
+    word, front = bbox.extents(got["FILL"]), bbox.extents(got["CUT-kit.box.front"])
+    assert sorted((front.size.x, front.size.y)) == pytest.approx([80, 150], abs=1e-6)
+    assert front.inside(word.extmin) and front.inside(word.extmax)
 
 
 def test_a_given_drawing_is_checked_on_its_part_and_said_meant_from_the_assembly():

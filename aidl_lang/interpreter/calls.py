@@ -23,11 +23,7 @@ from ..registry import (ENTRIES, FUNCTIONS, accepted_args, bind_variant, canonic
                         lookup)
 from .call_hints import _center_hint, _list_hint
 from .cut_into import cut_into
-
-# E0109's hint for an angle^2 (`acos(16 / 20) * 1 rad`: issue 111's runs i and m)
-_ANGLE_TWICE = ("`atan2`, `asin`, `acos` and `atan` give an angle already: drop the `* 1 rad` "
-                "(or `deg`) after it")
-from .common import (_defer_boxes, said_shrunk, DEG, _a, _fmt_num, show)
+from .common import (_defer_boxes, said_shrunk, DEG, _a, _fmt_num, show, ANGLE_TWICE)
 
 
 _DIMS = {"length": LEN, "angle": ANG, "number": NUM}
@@ -617,7 +613,7 @@ class Calls:
                     return Q(_lin({}, k * e.const), want, v.owners)
                 return Q(lift(e) * k, want, v.owners)
             raise EvalError("E0109", f"argument `{aname}` of `{fname}` must be {_a(typ)}, got {_a(dim_name(v.dim))}", span,
-                            hint=_ANGLE_TWICE if typ == "angle" and v.dim == (0, 2) else
+                            hint=ANGLE_TWICE if typ == "angle" and v.dim == (0, 2) else
                             f"write it with {_a(typ)} unit" + (" such as `mm`" if typ == "length" else
                                                                " such as `deg`" if typ == "angle" else ""))
         if typ == "point":
@@ -796,7 +792,7 @@ class Calls:
                 got = dim_name(q[0].dim)
                 twice = q[0].dim == (0, 2)          # `sin(atan2(y, x) * 1 rad)`
                 raise EvalError("E0109", f"`{nm}` needs an angle, got {_a(got)}", sp,
-                                hint=_ANGLE_TWICE if twice else
+                                hint=ANGLE_TWICE if twice else
                                 "give it an angle (`30 deg`, `pi / 6`)")
             if q[0].dim == NUM and rad_power(q[0]) != 1:          # `cos(3 * pi)` is meant
                 self._plain_radians(nm, q[0].const(), sp)

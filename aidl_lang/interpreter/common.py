@@ -11,6 +11,9 @@ from ..geometry.core.model import Structure
 from ..registry import (FUNCTIONS, lookup)
 
 DEG = math.pi / 180.0
+# E0109's hint for an angle^2 (`acos(16 / 20) * 1 rad`: issue 111's runs i and m)
+ANGLE_TWICE = ("`atan2`, `asin`, `acos` and `atan` give an angle already: drop the `* 1 rad` "
+               "(or `deg`) after it")
 
 
 class _Silent(Exception):

@@ -42,7 +42,7 @@ def cut_into(conv, node, spans):
                         hspan, hint=f"declare the {what} in the assembly that holds the "
                                     "part's instance, beside it")
     if ps.is_within(hs):
-        raise EvalError("E0108", f"`{ps.path}` is inside the hole `{hs.path}`", pspan)
+        raise EvalError("E0108", f"`{ps.path}` is inside the {what} `{hs.path}`", pspan)
     if hs.cuts_into is ps:
         return None                     # (a pattern's list naming its original, given already)
     if hs.cuts_into is not None:

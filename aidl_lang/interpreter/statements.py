@@ -20,7 +20,7 @@ from ..library.sources import ImportRefused, read_import, resolve_import
 from .arguments import check_kinds, kind_error, precheck_asserts
 from .asserts import Asserts
 from .constants import early_constants, late_constant
-from .common import (DEG, POISON, FileCtx, Scope, _STMT_ERRORS, _Silent, _a, _common_ancestor,
+from .common import (ANGLE_TWICE, DEG, POISON, FileCtx, Scope, _STMT_ERRORS, _Silent, _a, _common_ancestor,
                      _definition_lines, _fmt_num, _src, _is_geometry_stmt, _is_plain_const)
 
 
@@ -889,8 +889,7 @@ class Statements(Asserts):
                     msg = (f"cannot combine {_a(dim_name(a.dim))} with {_a(dim_name(b.dim))}: "
                            f"`{lt}` is {_a(dim_name(a.dim))}, `{rt}` is {_a(dim_name(b.dim))}")
                 if (0, 2) in (a.dim, b.dim):    # `acos(x) * 1 rad` (issue 111's run m)
-                    hint = ("`atan2`, `asin`, `acos` and `atan` give an angle already: drop "
-                            "the `* 1 rad` (or `deg`) after it")
+                    hint = ANGLE_TWICE
                 elif "/" in lt + rt:      # a ratio that was meant to be a plain number
                     hint += ("; in `*` and `/` a bare number (`r = 15`, a list `[15, 25]`) "
                              "stays a plain number, so `length / r` is a length, not a ratio: "

@@ -22,8 +22,8 @@ import math
 
 from ...geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from ...geometry.shapes.drawing2d import _inside, _inside_many
-from ..chains.containment import (_apart, engraved_on, _containers, _loops_of, _overlapping_parts, _probe,
-                                  _whole_ellipse)
+from ..chains.containment import (_apart, _containers, _loops_of, _overlapping_parts, _probe,
+                                  _whole_ellipse, engraved_on)
 from ..chains.layers import engraved_layer
 from ..chains.hole_cuts import cut_at_crossings, inner_rests, loop_key, runs_of
 from ..chains.notches import EDGE_ACROSS

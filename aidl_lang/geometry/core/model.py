@@ -131,6 +131,10 @@ class Structure(Record):
             yield s
             s = s.parent
 
+    def in_drawing(self) -> bool:
+        """This structure is a drawing or lies inside one (what it draws is engraved)."""
+        return self.kind == "drawing" or any(a.kind == "drawing" for a in self.ancestors())
+
     def held_by(self):
         """This structure and those that hold it in the output, nearest first: its parents,
         or, for one that ``CutInto`` gives to a solid (a hole, or a drawing engraved on a

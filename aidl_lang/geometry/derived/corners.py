@@ -398,7 +398,8 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
                     f"mm: name the two edges that meet there" if near is not None else
                     "name two edges that meet at a corner of the outline, or delete the "
                     f"`{kind}`")
-            if first is not None and _was_corner(p, first):
+            was = _where(p, first)[1] if first is not None else None
+            if was is not None and math.hypot(was[0] - p[0], was[1] - p[1]) <= CORNER_TOL:
                 msg += (f" (it was a corner before an earlier `Fillet` or `Chamfer` of "
                         f"`{path}` finished it)")
                 hint = (f"write this `{kind}` before the one that finishes the whole outline, "
@@ -417,21 +418,6 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
                         f"corner longer" if fits > 0 else
                         f"make the edges beside the corner longer, or delete the `{kind}`"))
     return out
-
-
-def _was_corner(p, loops: list) -> bool:
-    """Point ``p`` is a corner (a join that turns) of the outline ``loops``."""
-    from ..shapes.curves import turn_between
-    for lp in loops:
-        segs = lp.segments
-        if len(segs) < 2:
-            continue
-        for k in range(len(segs)):
-            v = segs[k].start
-            if math.hypot(v[0] - p[0], v[1] - p[1]) <= CORNER_TOL and \
-                    abs(turn_between(segs[k - 1], segs[k])) > CORNER_TURN:
-                return True
-    return False
 
 
 def _where(p, loops: list) -> tuple[str, tuple | None]:

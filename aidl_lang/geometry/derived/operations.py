@@ -609,12 +609,10 @@ def _allow_overlap(items: list, S=None, span=None) -> None:
     # an engraving (a drawing, or a shape in one) that runs off its part's material on
     # purpose, named with the part (`self`) or a shape of it: W0505 is said as meant
     # (aidl_lang.output.checks.marks.engravings._meant_off; grid lines over a joint band)
-    def in_drawing(o):
-        owner = o if isinstance(o, Structure) else o.owner
-        return owner.kind == "drawing" or any(a.kind == "drawing" for a in owner.ancestors())
-    drawn = [o for o in objs if in_drawing(o)]
-    material = [o for o in objs if not in_drawing(o)
-                and (o if isinstance(o, Structure) else o.owner).kind == "solid"]
+    def holder(o):
+        return o if isinstance(o, Structure) else o.owner
+    drawn = [o for o in objs if holder(o).in_drawing()]
+    material = [o for o in objs if not holder(o).in_drawing() and holder(o).kind == "solid"]
     if drawn and material:
         for o in drawn:
             node = o if isinstance(o, Structure) else o.owner

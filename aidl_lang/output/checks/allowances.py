@@ -52,8 +52,7 @@ def _hole(o):
 
 def _drawn(o) -> bool:
     """``o`` is an engraving: a drawing structure, or a shape or structure inside one."""
-    owner = o if isinstance(o, Structure) else o.owner
-    return owner.kind == "drawing" or any(a.kind == "drawing" for a in owner.ancestors())
+    return (o if isinstance(o, Structure) else o.owner).in_drawing()
 
 
 def _part(o) -> bool:

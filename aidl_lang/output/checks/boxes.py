@@ -109,9 +109,9 @@ def check_final_box_asserts(sink: DiagnosticSink, model: Model, d: Drawing,
             if id(own) not in moved:
                 moved[id(own)], solved[id(own)] = _moved(d, own, x)
             box = numeric_box(g, None, x)
-            moved[id(g)] = {sd: v for i, (sd, v) in enumerate(moved[id(own)].items())
-                            if box is not None and sd in solved[id(own)]
-                            and abs(box[SIDES.index(sd)] - solved[id(own)][sd]) <= BOX_TOL}
+            moved[id(g)] = {} if box is None else {
+                sd: v for sd, v in moved[id(own)].items()
+                if abs(box[SIDES.index(sd)] - solved[id(own)][sd]) <= BOX_TOL}
             finished[id(g)], named[id(g)] = own, g.label
         read = [k for k in dict.fromkeys(id(t.target) for t in terms) if k in finished]
         for k in read:

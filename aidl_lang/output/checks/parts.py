@@ -619,6 +619,16 @@ def _bumps(P, e, ep, turn, pos, t: float, found: list) -> None:
                           -1.0, step * h * np.array([-u[1], u[0]])))
 
 
+def _above(sp_: Span, call: str) -> Fix | None:
+    """The fix that writes ``call`` on its own line above the statement at ``sp_`` (W0109's
+    and W0116's `CutInto(...)`), or None in a standard-library file or for a copy's name
+    (`lid_hole[2]`) that cannot be written."""
+    if in_stdlib(sp_.file) or "[" in call:
+        return None
+    at = Span(sp_.file, sp_.line, sp_.col, sp_.line, sp_.col, sp_.start, sp_.start)
+    return Fix(at, f"{call}\n{' ' * (sp_.col - 1)}")
+
+
 def check_stray_holes(sink: DiagnosticSink, drawing: Drawing, deadline=None) -> None:
     """W0109 for a hole declared in an assembly (a part of its own, so it cuts nothing; issue
     61: `hole lid_hole` beside `box = finger_box(...)`), naming the solid part it lies over
@@ -663,10 +673,7 @@ def check_stray_holes(sink: DiagnosticSink, drawing: Drawing, deadline=None) -> 
             call = f"CutInto({h.name}, {rel})"
             hint = (f"it lies over `{best.path}`: `{call}` in `{home.path}` cuts it there "
                     "(the fix); a part of a template instance is cut only this way")
-            sp_ = h.span
-            if not in_stdlib(sp_.file) and "[" not in call:
-                at = Span(sp_.file, sp_.line, sp_.col, sp_.line, sp_.col, sp_.start, sp_.start)
-                fix = Fix(at, f"{call}\n{' ' * (sp_.col - 1)}")
+            fix = _above(h.span, call)
             msg += f"; it lies over `{best.path}`"
         else:
             hint = (f"declare it inside the solid it should cut, or write `CutInto({h.name}, "
@@ -721,11 +728,7 @@ def check_loose_drawings(sink: DiagnosticSink, drawing: Drawing, deadline=None) 
         home = d.parent
         rel = best.path[len(home.path) + 1:]
         call = f"CutInto({d.name}, {rel})"
-        fix = None
-        sp_ = d.span
-        if not in_stdlib(sp_.file) and "[" not in call:
-            at = Span(sp_.file, sp_.line, sp_.col, sp_.line, sp_.col, sp_.start, sp_.start)
-            fix = Fix(at, f"{call}\n{' ' * (sp_.col - 1)}")
+        fix = _above(d.span, call)
         sink.add(Diagnostic(
             "W0116", f"drawing `{d.path}` is declared in assembly `{home.path}`, so it is engraved "
             f"on no part, yet it lies on `{best.path}`: the flat sheet engraves it there, while "

@@ -238,14 +238,14 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         if part not in outer_of:
             outer_of[part] = _edges([p for p in grown_loops if _signed(p) > 0])
         in_outline = _inside(pts[~inside], outer_of[part])
+        warned.add(g)
+        if _meant_off(g, part):
+            continue
         where = "across a hole" if in_outline.all() else (
             "outside the outline" if not in_outline.any() else "outside the outline and across a hole")
         holes = _holes_crossed(d, roots, part, pts[~inside][in_outline]) if in_outline.any() else []
         if in_outline.any() and not holes:       # a window the shapes enclose (a rainbow's arch
             where = where.replace("a hole", "an opening")    # over its bar), no hole structure
-        warned.add(g)
-        if _meant_off(g, part):
-            continue
         if _is_flat_text(g, items):
             said = _text_off(d, roots, part, g, items, pts, inside, in_outline, tick)
             if said is not None:

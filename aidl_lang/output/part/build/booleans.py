@@ -758,10 +758,7 @@ class Renderer(Faces):
         got = []
         for sk in self.m.sinks:
             for g in sk.circles:
-                st = g.owner
-                owner = st.cuts_into if st.cuts_into is not None else st
-                name = next((part[id(a)] for a in [owner, *owner.ancestors()]
-                             if id(a) in part), None)
+                name = next((part[id(a)] for a in g.owner.held_by() if id(a) in part), None)
                 if name is None:
                     continue
                 r = abs(self.x[g.scalars["radius"].index])
