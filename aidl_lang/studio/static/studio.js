@@ -16,7 +16,7 @@ const state = {
   sweep: { answer: null, source: null, key: null, asked: null, ctrl: null, timer: null },
 };
 // read by the browser tests: views shown, 3D loads asked, the last view and its diagnostics
-window.studio = { ready: false, idle: false, views: 0, passing: 0, passingAt: [], sweeps: 0, sweep: null, glbs: 0, glbView: 0, view: null, state, errors: [],
+window.studio = { ready: false, idle: false, views: 0, passing: 0, answers: 0, passingAt: [], sweeps: 0, sweep: null, glbs: 0, glbView: 0, view: null, state, errors: [],
                   shownAt: {}, builtAt: {},      // view number -> performance.now() of its 2D, its 3D
                   // the page's benchmark (issue 104): view number -> where its time went, ms from
                   // the change (a slider's move): waited (the page's debounce and pacing), sent,
@@ -204,6 +204,7 @@ async function compile() {
     for (const p of state.params) if (p.name in raw) defaults[p.name] = p.default;
     // the shape checks (the warnings) are asked apart, once the picture is shown (/api/checks)
     const view = await post("/api/view", { sid: state.sid, source, values, defaults, checks: "later" });
+    window.studio.answers += 1;       // (every answer, shown or not: the browser tests count them)
     if (seq !== state.seq || source !== state.source) { /* another program since: dropped */ }
     else if (view.superseded) state.again = true;
     // a second request would be this one again (same program, same values): its answer is the
