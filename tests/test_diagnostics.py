@@ -847,8 +847,9 @@ def test_W0106_through_the_cli_and_explain(tmp_path):
 
 def test_W0404_a_hole_placed_in_x_only_stays_where_written_in_y():
     """A hole placed in x and written in y (no constraint reads its y) stays where written:
-    harmless, as a hole nothing places (issue 111); tied in y to a second hole that nothing
-    ties to the part, a changed distance moves both: W0404 along y on each."""
+    harmless, as a hole nothing places (issue 111); a second hole placed on it in y
+    (`VerticalDistance(k..., h..., d)`: the first-named moves) is placed on a hole that stays
+    where written: harmless too, said so, and a changed distance moves only `k`."""
     import aidl_lang
     src = ("solid p {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
            "    hole h { c = Circle(center=(0, 3), radius=2) }\n    AlignCenterX(h, body)\nEXTRA}\n")
@@ -861,12 +862,14 @@ def test_W0404_a_hole_placed_in_x_only_stays_where_written_in_y():
                                 "    AlignCenterX(k, body)\n"
                                 "    VerticalDistance(k.c.center, h.c.center, 6 mm)\n")
     r = aidl_lang.compile(source=tied)
-    ws = [d for d in r.find_redundant() if d.code == "W0404"]
-    assert [(d.span.line, d.message) for d in ws] == [
-        (3, "hole `p.h` can slide along y relative to `p`: only its starting position places "
-            "it there"),
-        (5, "hole `p.k` can slide along y relative to `p`: only its starting position places "
-            "it there")]
+    assert [d for d in r.find_redundant() if d.code == "W0404"] == []
+    assert r.freedom()["text"] == (
+        "3 degrees of freedom left (hole `p.h` free but stays where written; hole `p.k` placed "
+        "on it (harmless); 2 where the whole part sits (harmless)), see --dof")
+    r = aidl_lang.compile(source=tied.replace("6 mm", "10 mm"))
+    v = {x.name: x.mm for x in r.values}
+    assert v["p.h.c.center"] == pytest.approx((0, 3), abs=1e-9)
+    assert v["p.k.c.center"] == pytest.approx((0, -7), abs=1e-9)
 
 
 def test_explain_E0105_example_is_an_E0105():

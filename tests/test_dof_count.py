@@ -321,7 +321,7 @@ solid gauge {
             t = Text(str(i + 1), (-(count - 1) * pitch / 2 + i * pitch, -12), size=5)
         }
     }
-    AlignCenterX(bits, plate)
+    AlignCenterX(bits, labels)
     AlignCenterX(labels, plate)
     Below(labels, bits, gap=4)
     EXTRA
@@ -331,9 +331,11 @@ solid gauge {
 
 def test_a_feature_that_can_slide_is_named_and_warned(tmp_path):
     """The drill gauge of issue 35: x of the holes and labels is placed, and the labels hang
-    4 mm below the holes, but nothing ties the pair to the plate in y.  The ok line says so,
-    W0404 warns at each of them, and one more constraint leaves only the part's placement
-    (harmless, no warning)."""
+    4 mm below the holes, but nothing ties the pair to the plate in y, and each is placed on
+    the other (the holes' x on the labels, the labels' y on the holes: a cycle, so neither
+    stays where written; issue 111: labels `Below` holes that nothing else moves are placed
+    on them, harmless).  The ok line says so, W0404 warns at each of them, and one more
+    constraint leaves only the part's placement (harmless, no warning)."""
     doc = _check(tmp_path, GAUGE.replace("EXTRA", ""), "--json")
     # (issue 105: the part's own placement said beside what slides)
     assert "(free: hole `gauge.bits` can slide along y; drawing `gauge.labels` can slide along " \

@@ -505,32 +505,35 @@ starting positions were far from the intended shape.
 """),
     "W0404": ("feature that can slide", """
 A structure inside a part (a hole, a drawing, a solid child) can move relative to its part
-along an axis that a constraint reads: it is tied along x or y only to other features that
-are free there too (two screw holes with `VerticalDistance(a, b, 60.3)`, labels `Below` a row
-of holes whose height nothing ties to the plate), so only its starting position holds it, and a
-changed value moves it (a new distance moves both holes, each some of the way). The warning
-names the feature, the free direction and the part; place it with a constraint in its parent
-that ties it to the part's shapes: the hint gives the one that keeps it where the solve left
-it (`bits.bb.center.y == plate.bb.center.y + 5 mm`), or another (`AlignCenterY(bits, plate)`,
+along an axis that a constraint reads, and the solve cannot keep it where it is written: it
+is tied along x or y only to other features that are free there too, each placed on another
+in a cycle (the holes' x on the labels and the labels' y on the holes), so only the starting
+positions hold the group, and the solve moves each some of the way. The warning names the
+feature, the free direction and the part; place it with a constraint in its parent that ties
+it to the part's shapes: the hint gives the one that keeps it where the solve left it
+(`bits.bb.center.y == plate.bb.center.y + 1.75 mm`), or another (`AlignCenterY(bits, plate)`,
 `bits.bb.top == plate.bb.top - 5`); `Fixed(bits)` holds it only where the part is fixed too (it pins the feature to the sheet,
 not to the part). Freedom of a whole part (where it sits on the sheet) is harmless and not
 reported; `aidl check` says it as "free: only where the whole part sits (harmless)". Nor is a
 feature along an axis that no constraint reads (its coordinates alone place it there): the
 solve keeps it where it is written, and the ok line says "hole `plate.recess` free but stays
 where written (harmless)", whether nothing places it (`plate.recess`) or a constraint places
-it along the other axis (`AlignTop(groove, body)` and its x as written; issue 111). A
+it along the other axis (`AlignTop(groove, body)` and its x as written; issue 111). Nor is a
+feature placed on a sibling that stays where written (of two features related, the
+first-named moves to the second: labels `Below(labels, bits, gap=4)` of holes written by their
+coordinates, two screws with `VerticalDistance(bottom, top, 60.3)`): the ok line says "hole
+`plate.top` free but stays where written; hole `plate.bottom` placed on it (harmless)". A
 structure declared inside a standard-library template is the template's affair and is not
-reported to its user. Features tied only to each other slide together and are each reported:
-tie one and check again (the others follow it, the rest is named by direction); tying both
-with `.bb.center ==` repeats the distance (W0401).
+reported to its user. Features in one cycle slide together and are each reported: tie one
+and check again (the others follow it); tying both with `.bb.center ==` repeats the relation
+between them (W0401).
 
     solid gauge {
         plate = Rectangle(center=(0, 0), width=120, height=40)
         hole bits { h = Circle(center=(0, 5), diameter=3) }
-        drawing labels { t = Text("3", (0, -12), size=5) }
-        AlignCenterX(bits, plate)        # x placed; y as written: harmless
-        AlignCenterX(labels, plate)
-        Below(labels, bits, gap=4)       # y tied to bits, and bits to nothing: W0404 on each
+        drawing labels { t = Text("3", (10, -12), size=5) }
+        Below(labels, bits, gap=4)       # the labels' y placed on the holes
+        AlignCenterX(bits, labels)       # the holes' x on the labels: a cycle, W0404 on each
     }
 """),
     "W0405": ("box read before Fillet or Chamfer", """

@@ -42,7 +42,8 @@ constants `NAME = expr`, templates `def NAME(p1, p2=default) -> solid { ... }` (
 `part = NAME(p1=...)`), `import "file.aidl"` or `import stdlib.shapes` (or
 `.gears`, `.joints`, `.fasteners`, `.plates`). Control flow:
 `for i in range(n) { ... }` (a name set in a loop: the current copy inside, the list after:
-`knob[0]`; nested loops: `dia[i][j]`),
+`knob[0]`; nested loops: `dia[i][j]`; a relation per copy, labels on holes:
+`for i in range(4) { At(names.t[i].position, holes.c[i].center, dy=-8) }`),
 `if c { } else { }`, `[f(i) for i in xs]`. Operators: `+ - * / % **`, `//` (floor division),
 comparisons, `and or not`, `a if c else b`; `range(start, stop, step)`. A statement ends at
 the line break: continue a long one inside `( )` or `[ ]`. Comments start with `#` (not `//`). Numbers take units (`5 mm`, `2 in`, `30 deg`); a bare

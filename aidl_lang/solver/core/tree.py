@@ -29,8 +29,15 @@ def _who_moves(s: Structure) -> tuple[list, list]:
     """(:func:`_references` of ``s``, the children of ``s`` that move to another in rank
     order: ``ranks[0]`` those placed on the references only, ``ranks[1]`` those placed on
     ``ranks[0]`` or a reference, ...; a child in a cycle of relations is in none)."""
+    refs, ranks, _ = placed_on(s)
+    return refs, ranks
+
+
+def placed_on(s: Structure) -> tuple[list, list, dict]:
+    """:func:`_who_moves` of ``s`` and, for each child that moves, the ids of the siblings it
+    moves to (``{id(child): {id(sibling), ...}}``; empty when only ``s``'s own part is)."""
     if not s.children:
-        return [], []
+        return [], [], {}
     movers: dict[int, Structure] = {}
     refs: dict[int, Structure] = {}
     edges: dict[int, set] = {}          # id(mover) -> ids of its references
@@ -74,7 +81,7 @@ def _who_moves(s: Structure) -> tuple[list, list]:
             break                       # a cycle: left to the stages
         ranks.append([todo.pop(k) for k in now])
         placed.update(now)
-    return [t for k, t in refs.items() if k not in movers], ranks
+    return [t for k, t in refs.items() if k not in movers], ranks, edges
 
 
 def _shape_ranks(s: Structure, mine: set) -> tuple[list, list]:

@@ -23,19 +23,21 @@ class Sliding(Compared):
     ``constrained`` the ids of those some row reads along an axis it slides on, with
     ``read`` those axes (``{id: "x"|"y"|"x, y"}``: a changed value moves it there, W0404);
     ``bounded`` the ids of those that slide only within inequalities not reached
-    (``Inside``, ...).  A feature that slides only along axes no row reads stays where it
+    (``Inside``, ...); ``placed`` the ids of those a relation places on a sibling that stays
+    where written (the labels of `Below(labels, holes, gap=4)`: harmless, said so).  A feature that slides only along axes no row reads stays where it
     is written (issue 111: `AlignTop(groove, body)` placed the groove in y and left x as
     written, as a groove with no constraint at all)."""
-    __slots__ = ("placement", "features", "constrained", "bounded", "read")
+    __slots__ = ("placement", "features", "constrained", "bounded", "read", "placed")
 
     def __init__(self, placement: list | None = None, features: list | None = None,
                  constrained: set | None = None, bounded: set | None = None,
-                 read: dict | None = None):
+                 read: dict | None = None, placed: set | None = None):
         self.placement = [] if placement is None else placement
         self.features = [] if features is None else features
         self.constrained = set() if constrained is None else constrained
         self.bounded = set() if bounded is None else bounded
         self.read = {} if read is None else read
+        self.placed = set() if placed is None else placed
 
 
 def _parts(model) -> list:
@@ -137,7 +139,11 @@ def sliding(solver) -> Sliding:
             strict = {id(t) for t, _ in _features(p, J, np.zeros_like(loose), scale, where,
                                                    px, model)}
             out.bounded |= {id(t) for t, _ in found if id(t) not in strict}
+        held, placed = _held(found)
+        out.placed |= placed
         for t, a in found:
+            if id(t) in held or id(t) in placed:
+                continue
             read = [n for n, f in (("x", t.fx), ("y", t.fy))
                     if n in a.split(", ") and _reads(J, where[f], loose)]
             if read:        # a row reads it along a free axis: a changed value moves it there
@@ -151,6 +157,30 @@ def sliding(solver) -> Sliding:
                 out.placement.append((t, a))
                 break
     return out
+
+
+def _held(found: list) -> tuple[set, set]:
+    """``(held, placed)``: the ids of the sliding features ``found`` (and their siblings) that
+    the solve keeps where they are written although rows read them, those no constraint
+    moves to a sibling (the references among siblings, and those placed only on the part in
+    other axes: :func:`..core.tree.placed_on`, held while the features are placed), and of
+    those placed on siblings, rank by rank (not in a cycle of relations).  Labels tied to holes written by their coordinates,
+    `At(names.t[i].position, knobs.c[i].center, dy=-11 mm)`, go with the holes, which stay
+    where written (issue 111: W0404 warned both, "can slide along x, y", and its hint's tie
+    to the part was a second placement of the labels)."""
+    from ..core.tree import placed_on
+    out: set = set()
+    placed: set = set()
+    seen: set = set()
+    for t, _ in found:
+        up = t.parent
+        if up is None or id(up) in seen:
+            continue
+        seen.add(id(up))
+        _, ranks, on = placed_on(up)
+        out |= {id(c) for c in up.children.values() if not on.get(id(c))}
+        placed |= {id(m) for rank in ranks for m in rank if on.get(id(m))}
+    return out, placed
 
 
 MAX_CANDIDATES = 400     # features of one part whose joint motions are searched (2 per axis)
@@ -277,22 +307,34 @@ def sliding_text(sl: Sliding) -> str:
         moves = [(t, a if id(t) in sl.bounded else sl.read.get(id(t), a))
                  for t, a in sl.features if id(t) in sl.constrained or id(t) in sl.bounded]
         kept = [t for t, _ in sl.features if id(t) not in sl.constrained
-                and id(t) not in sl.bounded]
+                and id(t) not in sl.bounded and id(t) not in sl.placed]
+        follow = [t for t, _ in sl.features if id(t) in sl.placed and id(t) not in sl.bounded]
         said = [f"{_name(t)} can slide along {a}"
                 + (" within its bounds" if id(t) in sl.bounded else "")
                 for t, a in moves[:3]]
         more = f" and {len(moves) - 3} more" if len(moves) > 3 else ""
         out = "free: " + "; ".join(said) + more if said else ""
-        if kept:
-            names = ", ".join(_name(t) for t in kept[:3]) + (
-                f" and {len(kept) - 3} more" if len(kept) > 3 else "")
-            harmless = (f"{names} free but {'stays' if len(kept) == 1 else 'stay'} where "
-                        "written (harmless)")
+        if kept or follow:
+            parts = []
+            if kept:
+                parts.append(f"{_names(kept)} free but {'stays' if len(kept) == 1 else 'stay'} "
+                             "where written")
+            if follow:
+                parts.append(f"{_names(follow)} placed on "
+                             + (("it" if len(kept) == 1 else "them") if kept else
+                                "features that stay where written"))
+            harmless = "; ".join(parts) + " (harmless)"
             out = f"{out}; {harmless}" if out else harmless
         return out
     if sl.placement:
         return "free: only where the whole part sits (harmless)"
     return ""
+
+
+def _names(ts: list) -> str:
+    """The first three of ``ts`` by :func:`_name`, ``and N more``."""
+    return ", ".join(_name(t) for t in ts[:3]) + (f" and {len(ts) - 3} more" if len(ts) > 3
+                                                   else "")
 
 
 def _name(o) -> str:
