@@ -1014,13 +1014,15 @@ An engraved mark meets the part's cut edge (its outline or a hole's edge), so th
 where it cuts. Along the edge: the mark lies on the outline (within 0.05 mm) over more than a
 third of it and is lost in the cut (a protractor's 0 and 180 degree ticks drawn on its straight
 edge, a border drawn on the outline); the warning says how much of the mark lies on it. Against
-the edge: the mark (not text) ends on the edge or comes within 0.5 mm of it (a knight's mouth
+the edge: the mark ends on the edge or comes within 0.5 mm of it (a knight's mouth
 line drawn to the outline, a line ending a hair short of it: the sliver left between engraving
 and cut chars or breaks off); the warning gives the gap in mm, which edge and where (x, y), and
 how far inside to end or move the mark. Straight ticks that end on the edge and meet it square,
 three or more on one part, are a scale hanging from the edge (a ruler, a protractor) and are
 not warned; nor are two or more pieces of one straight line, each ending square on the edge (a
-line across the part broken by a hole or a word: a router template's door-edge line). Move the mark inside, or leave it out: the cut already draws the edge.
+line across the part broken by a hole or a word: a router template's door-edge line). Letters: a text's strokes (or a font's outlines) within 0.2 mm of the edge
+(letters set tight beside a hole on purpose, farther than that, are not warned); the warning
+gives the gap and how far to move the text. Move the mark inside, or leave it out: the cut already draws the edge.
 
     solid plate {
         body = Rectangle(center=(0, 0), width=60, height=40)

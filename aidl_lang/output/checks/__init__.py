@@ -67,6 +67,7 @@ from .marks.engravings import (_SURELY_GROWN, ENGRAVE_TOL, _check_engraving, _ch
                                _n_samples, _sample, _samples, _within)
 from .parts import (_check_interpenetration, _check_steps, _check_invisible, _check_pieces,
                     check_loose_drawings, check_stray_holes, empty_faces)
+from .marks.clearance import check_text_near_cut
 from .marks.text import _check_text_overlap
 from .material.through import check_sheet_cuts, check_through
 from .material.necks import _check_necks
@@ -298,7 +299,8 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
             tick(s)
             run("invisible", s, lambda: _check_invisible(d, s, sink))
     tick(next(iter(roots), None))   # past the deadline: at the first part (E0304 located)
-    run("engraving", None, lambda: _check_engraving(d, roots, sink, loops, tick))
+    run("engraving", None, lambda: check_text_near_cut(
+        _check_engraving(d, roots, sink, loops, tick), roots, loops, sink))
     by_part: dict = {}
     for c in d.cuts:
         by_part.setdefault(_part_of(c.owner, roots), []).append(c)

@@ -193,9 +193,11 @@ def _holes_crossed(d: Drawing, roots, part, off: np.ndarray) -> list[str]:
 
 
 def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None = None,
-                     tick=None) -> None:
+                     tick=None) -> list:
     """W0505 for each engraved geometry with sample points off its part's material (the part
     grown by :data:`ENGRAVE_TOL`); W0516 (:func:`_check_on_cut`, :func:`_check_meets_cut`).
+    Returns ``[(part, [(text, its stroke items)])]``: the texts neither warned, for
+    :func:`.clearance.check_text_near_cut`.
     ``tick(part)``: called before each part's work (the compile's deadline, which raises
     :class:`~aidl_lang.base.limits.OutOfBudget`).  The points of all the geometries of one part are tested
     in one :func:`_inside` call (a point's verdict does not depend on the other points), and
@@ -269,11 +271,14 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         sink.warning("W0505", f"engraving `{g.label}` runs {where} of `{part.path}` "
                      f"({share} of it is off the material)", g.span, hint=hint)
     d.engravings_judged = True          # (W0523: an AllowOverlap of an engraving that no W0505 needed)
+    texts = []
     for part, geoms in by_part.items():
         if tick is not None:
             tick(part)
         _check_meets_cut(part, roots[part], [(g, it) for g, it in geoms if g not in warned],
                          (loops or {}).get(part), sink)
+        texts.append((part, [(g, it) for g, it in geoms if g not in warned and g.kind == "Text"]))
+    return texts
 
 
 def _meant_off(g, part) -> bool:

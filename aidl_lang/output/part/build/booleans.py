@@ -35,7 +35,7 @@ from .placement import bends_of, placement_matrix
 from .result import Cut, Drawing, Part, SinkAt, SinkCall, Through
 from .sunk import DEFAULT_THICKNESS, sunk_away, sunk_message
 from .scanwork import TURN, TURN_BACK, plan, turned, turned_back, union_seconds
-from .faces import Faces, _dist
+from .faces import DERIVED, Faces, _dist
 from ....geometry.relations import bbox as _bbox
 
 CLOSE_TOL = 1e-6
@@ -352,9 +352,10 @@ class Renderer(Faces):
             pts = Loop([circle]).points()
             out.lines.append((style, np.vstack([pts, pts[:1]])))
             out.strokes.append((style, ("circle", c, r), g))
-        else:
-            lp = self.outline(g)
-            if lp is not None and lp.segments:
+        else:           # a Shell's band or an Offset of a shape with openings: every loop
+            for lp in self.loops_of(g) if g.kind in DERIVED else [self.outline(g)]:
+                if lp is None or not lp.segments:
+                    continue
                 for seg in lp.segments:
                     self.exact.carrier_id(carrier(seg))
                 pl = lp.points()

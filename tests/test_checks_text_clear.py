@@ -1,0 +1,53 @@
+"""W0516 for letters that meet the cut edge (issue 111): an engraved text whose strokes come
+within 0.2 mm of a hole's edge or the outline, where the laser engraves into its cut (other
+marks keep their 0.5 mm rule; letters set tight beside a hole on purpose, 0.2 mm and more,
+are not warned).  Real programs through the compiler: the stroke font's letters and a font's
+outlines."""
+from __future__ import annotations
+
+import pytest
+
+import aidl_lang
+
+PLATE = """solid tag {
+    plate = RoundedRectangle(center=(0, 0), width=70, height=35, corner_radius=4)
+    hole hang { c = Circle(center=(0, -8.5), diameter=10) }
+    drawing label { word = Text("TEE", (0, BASE), size=5FONT) }
+}
+"""
+
+
+def _w(src: str) -> list:
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [d.message for d in r.errors]
+    return [d for d in r.diagnostics if d.code == "W0516"]
+
+
+def test_letters_a_tenth_from_a_hole_are_warned_with_the_gap_and_the_move():
+    # the hole's top at y = -3.5; the letters' baseline 0.1 mm above it ("E" sits on it)
+    (w,) = _w(PLATE.replace("BASE", "-3.4").replace("FONT", ""))
+    assert w.message.startswith('engraving `tag.label.word` (text "TEE") comes 0.10 mm from '
+                                "the cut edge of `tag` (a hole) at ")
+    assert "text needs 0.2 mm clear of the edge" in w.message
+    assert w.hint.startswith("keep `tag.label.word` 0.10 mm or more further from the edge")
+    assert w.span.line == 4
+    # the hint followed: 0.1 mm higher, nothing
+    assert _w(PLATE.replace("BASE", "-3.3").replace("FONT", "")) == []
+
+
+@pytest.mark.parametrize("base", ["-3.3", "-3.0", "2"])
+def test_letters_set_tight_but_clear_are_not_warned(base):
+    assert _w(PLATE.replace("BASE", base).replace("FONT", "")) == []
+
+
+def test_outline_letters_touching_a_hole_are_warned():
+    # a font's letters (filled outlines, issue 112) on the hole's edge: their bottom at -3.48
+    ws = _w(PLATE.replace("BASE", "-3.48").replace("FONT", ', font="sans"'))
+    assert len(ws) == 1 and "touches the cut edge of `tag` (a hole)" in ws[0].message
+
+
+def test_letters_near_the_outline_name_the_outline():
+    src = PLATE.replace("BASE", "-17.4").replace("FONT", "").replace(
+        'Text("TEE", (0, -17.4)', 'Text("TEE", (20, -17.4)')
+    (w,) = _w(src)
+    assert "(the outline)" in w.message and "comes 0.10 mm from" in w.message
