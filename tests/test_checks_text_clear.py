@@ -51,3 +51,27 @@ def test_letters_near_the_outline_name_the_outline():
         'Text("TEE", (0, -17.4)', 'Text("TEE", (20, -17.4)')
     (w,) = _w(src)
     assert "(the outline)" in w.message and "comes 0.10 mm from" in w.message
+
+
+def test_an_assert_on_a_texts_center_says_how_far_it_lies_off_its_position():
+    """Issue 111 (run j): an assert on a Text's `.center` failed by a few hundredths; E0405
+    now says the centre is the letters' box's, how far from `position` and which way."""
+    src = """solid p {
+    body = Rectangle(center=(0, 0), width=200, height=80)
+    drawing d {
+        a = Text("Quigley", (0, 10), size=10, valign="middle", font="sans")
+        b = Text("Quigley", (0, -20), size=10, valign="middle")
+    }
+    assert d.a.center.y == 10 mm, "a"
+    assert abs(d.b.center.y + 20 mm) < 0.01 mm, "b"
+    assert d.b.position.y == -20 mm, "by position: holds"
+}
+"""
+    r = aidl_lang.compile(source=src)
+    ws = [d for d in r.diagnostics if d.code == "E0405"]
+    assert [w.span.line for w in ws] == [7, 8]
+    assert ws[0].message.endswith("; `p.d.a.center` is its letters' box centre, 1.36 mm below "
+                                  "its `position` (descenders, round letters' overshoot): a "
+                                  "text is placed, and best asserted, by its `position`")
+    assert "`p.d.b.center` is its letters' box centre, 1.43 mm below its `position`" \
+        in ws[1].message

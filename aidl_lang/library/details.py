@@ -139,7 +139,10 @@ DETAILS: dict[str, str] = {
             "fill layer, a DXF HATCH, a LightBurn Scan layer, G-code lines fill.interval "
             "apart (a router refuses it); fill= elsewhere or without font= is E0108. "
             "weight= is the single-stroke stencil's (E0108 with font=: choose a style). "
-            ".bb is the glyphs' true box; a font not found is E0133.",
+            ".bb is the glyphs' true box and .center its centre (descenders, a g's or Q's "
+            "tail, and round letters' overshoot put it off `position` by up to 0.15 x size: "
+            "valign=\"middle\" puts the capitals' middle at `position`, so place and assert "
+            "by `position`); a font not found is E0133.",
     "Star": "tip_radius=r rounds each tip by an arc of radius r tangent to its two sides, as "
             "Fillet rounds a corner (exact arcs; the notches stay sharp); the rounded tip "
             "reaches a little less than outer_radius, r (1 / sin(h) - 1) less for a tip of "
