@@ -666,3 +666,21 @@ def test_hinged_box_net_lies_as_its_docs_say():
     lid_place = [ln for ln in (root / "stdlib" / "boxes.aidl").read_text().splitlines()
                  if ln.strip().startswith("Place(lid,")]
     assert lid_place and all("rotation" not in ln for ln in lid_place)
+
+
+def test_a_template_instance_reads_its_arguments_given_and_defaulted():
+    """Issue 111 (run n): a model asserted a finger box's panels for want of `box.length`;
+    an instance's arguments are members, given or defaulted, and `aidl docs` says so."""
+    import aidl_lang
+    from aidl_lang.library.reference import lookup_text
+    src = """import "std/joints.aidl"
+thickness 3 mm
+assembly holder {
+    box = finger_box(length=80 mm, depth=60 mm, height=40 mm, thickness=3 mm, finger=10 mm)
+    assert box.length == 80 mm and box.depth == 60 mm and box.gap == 5 mm, "sizes"
+    assert box.length == 81 mm, "a slip"
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert [(d.code, d.span.line) for d in r.errors] == [("E0405", 6)]
+    assert "; its arguments too, as given or defaulted (`g.length`)" in lookup_text("finger_box")[0]

@@ -395,7 +395,8 @@ def _template_topic(t: StdTemplate) -> Topic:
     lines += _units_block(k for _, k, _ in t.params)
     if t.members:
         lines += ["", "Members (reach them by path: `g.NAME`, `g.NAME.center`): "
-                  + ", ".join(t.members)]
+                  + ", ".join(t.members) + ("; its arguments too, as given or defaulted "
+                                            f"(`g.{t.params[0][0]}`)" if t.params else "")]
     lines += ["", "Use it by assignment inside a structure: `NAME = "
               f"{t.name}(...)` (an instance of kind {t.node.kind}; " + (
                   "it holds itself where `cx`, `cy` put it in the structure it is written "
