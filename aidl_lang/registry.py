@@ -161,6 +161,9 @@ def _boxes(doc: str, *more):
 
 A = Arg
 _GAP = A("gap", "length", 0.0)      # the optional gap of Above, Below, LeftOf, RightOf
+# GridPattern's staggered rows (issue 111: a perforated panel's or a bee hotel's honeycomb)
+_STAGGER = A("stagger", "bool", False, "every odd row (r = 1, 3, ...) moved by half the column "
+             "spacing: a honeycomb or brick pattern, cols copies in every row", kw_only=True)
 # Scaled and Scale (issue 95): the same arguments, and the words models give them
 _SCALE_ARGS = [A("target", "boxed"), A("factor", "number"), A("center", "point", None)]
 _SCALE_WORDS = {"scale": "factor", "by": "factor", "k": "factor", "ratio": "factor",
@@ -464,10 +467,13 @@ _DEFS = {
                               "angle between neighbours; gives [original, copy1, ...]; "
                               "start_angle turns all (original: construction)."),
     "GridPattern": _c([A("target", "boxed"), A("rows", "number"), A("cols", "number"),
-                       A("spacing", "any")],
+                       A("spacing", "any"), _STAGGER],
                       [A("target", "boxed"), A("rows", "number"), A("cols", "number"),
-                       A("col_spacing", "length"), A("row_spacing", "length")], cat="operation",
-                      doc="copy (r, c) moved by (c*dx, r*dy); spacing (dx, dy) or a length."),
+                       A("col_spacing", "length"), A("row_spacing", "length"), _STAGGER],
+                      cat="operation",
+                      doc="copy (r, c) moved by (c*dx, r*dy); spacing (dx, dy) or a length; "
+                          "stagger=true: every odd row also moved by dx/2 (a honeycomb or "
+                          "brick pattern)."),
     "CornerPattern": _c([A("target", "boxed"), A("rect", "boxed"), A("inset", "any", 0.0,
                                                                      "a length, or (dx, dy)")],
                         [A("target", "boxed"), A("at", "points")], cat="operation",

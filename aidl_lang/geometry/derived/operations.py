@@ -731,8 +731,9 @@ def _as_construction(target) -> None:
 
 
 def _grid(ctx, target, args: dict, name: str | None) -> Copies:
-    """GridPattern: ``rows`` x ``cols`` instances, copy (r, c) moved by (c * dx, r * dy);
-    the list in row-major order (index r * cols + c), the original first."""
+    """GridPattern: ``rows`` x ``cols`` instances, copy (r, c) moved by (c * dx, r * dy),
+    and with ``stagger`` every odd row by dx / 2 more (a honeycomb); the list in row-major
+    order (index r * cols + c), the original first."""
     rows, cols = _count(args["rows"], "GridPattern rows"), _count(args["cols"], "GridPattern cols")
     if rows * cols > 10_000:
         raise OperationError(f"GridPattern makes {rows} x {cols} = {rows * cols} instances, more "
@@ -757,12 +758,14 @@ def _grid(ctx, target, args: dict, name: str | None) -> Copies:
     _zero_step(rows, [(0.0, dy)], "GridPattern's row spacing",
                "the distance between rows (`spacing=(12 mm, 10 mm)`), or rows=1", "0",
                "its {n} rows land on one another")
+    stagger = bool(args.get("stagger"))
     out = Copies([target])
     for r in range(rows):
         for c in range(cols):
             if r == 0 and c == 0:
                 continue
-            xf, rot, flip = _translate(dx * float(c), dy * float(r))
+            shift = 0.5 if stagger and r % 2 else 0.0
+            xf, rot, flip = _translate(dx * (float(c) + shift), dy * float(r))
             out.append(_copy(ctx, target, xf, rot, flip, name, r * cols + c, "pattern"))
     return out
 
