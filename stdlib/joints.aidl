@@ -214,9 +214,10 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
     Fixed(self)
 }
 
-# A screwed tab-and-slot joint with captive nuts (T-slots).
+# A tab-and-slot joint, glued (`screw=0`: tabs into closed slots, a mortise) or screwed with captive nuts (T-slots).
 # `part` "tab" cuts the edge of one panel down to `tabs` tabs `tab` wide
-# (`thickness` long, spread evenly over `length`) with a `t_slot` for an M`screw`
+# (`thickness` long, spread evenly over `length`; the panel drawn `thickness` past
+# (cx, cy), its edge at the tabs' tips) with a `t_slot` for an M`screw`
 # screw and its nut between each two; "slot" cuts the mate: a slot
 # `tab` + `clearance` by `thickness` + `clearance` for each tab and a medium
 # clearance hole for each screw, centred on the line through (cx, cy) where the
