@@ -69,7 +69,9 @@ alone use a shape's box (`plate.body.bb`).
 Rules: a constraint may only refer to its own structure's subtree; geometry may only reuse
 points of its own structure (in `hole ring { }` a Circle cannot read its parent's `word.bb.left`
 (E0201): give it numbers and place it by a constraint in the parent, `Concentric(ring.c, loop)`). Booleans: a solid is the union of its shapes and solid children
-(touching or overlapping parts merge into one outline) minus its hole children. So
+(touching or overlapping parts merge into one outline; Lines and Arcs meeting end to end
+close into one: an arched top is `Arc(start=..., through=..., end=...)` between Lines) minus
+its hole children. So
 a hole cuts the solid it is declared in, that solid's own shapes and solid children alike:
 ```aidl
 solid plate {

@@ -1,0 +1,35 @@
+"""Lines and Arcs meeting end to end in a solid close into one outline (the prompt's arched-top
+recipe, issue 111: runs i and q reached for an arched or concave edge and drew a big circle
+hole instead).  Written to DXF and re-read by ezdxf: one closed polyline, the arc exact (its
+bulge, 2 x sagitta / chord)."""
+from __future__ import annotations
+
+import pytest
+
+import aidl_lang
+
+SRC = """solid gauge {
+    a = Line((-40, 0), (40, 0))
+    b = Line((40, 0), (40, 30))
+    top = Arc(start=(40, 30), through=(0, THROUGH), end=(-40, 30))
+    d = Line((-40, 30), (-40, 0))
+}
+"""
+
+
+@pytest.mark.parametrize("through, bulge", [("25", -0.125), ("35", 0.125)])
+def test_an_arched_top_between_lines_is_one_outline_with_an_exact_arc(tmp_path, through, bulge):
+    import ezdxf
+    r = aidl_lang.compile(source=SRC.replace("THROUGH", through))
+    assert r.ok and not [d for d in r.diagnostics if d.severity == "warning"]
+    out = tmp_path / "gauge.dxf"
+    r.write(out)
+    (pl,) = [e for e in ezdxf.readfile(out).modelspace() if e.dxf.layer.upper() == "CUT"]
+    assert pl.dxftype() == "LWPOLYLINE" and pl.closed
+    pts = list(pl.get_points("xyb"))
+    assert len(pts) == 4
+    # the arc from (40, 30) to (-40, 30) through (0, 25) (concave) or (0, 35) (arched): the
+    # bulge is 2 x 5 / 80, its sign the side (clockwise into the part, counter-clockwise out)
+    (k,) = [i for i, p in enumerate(pts) if abs(p[2]) > 0]
+    assert pts[k][2] == pytest.approx(bulge, abs=1e-12)
+    assert (pts[k][0], pts[k][1]) == pytest.approx((40, 30), abs=1e-9)
