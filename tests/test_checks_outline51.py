@@ -129,6 +129,27 @@ def test_W0512_two_circles_of_one_hole_written_apart_overlap(compile_text):
     assert found(compile_text, moved, "W0512") == []
 
 
+def test_W0512_a_bone_of_a_bar_and_four_circles_is_one_figure(compile_text):
+    """Issue 111 (run p's dog-treat box): a bone-shaped window, a bar and two overlapping
+    circles at each end, is one opening by design: W0512 said "draws 4 circles but cuts 2
+    openings" and its hint moved a circle apart.  The four circles alone still warn."""
+    bone = """solid front {
+    body = Rectangle(center=(0, 0), width=160, height=90)
+    hole bone {
+        BAR
+        e1 = Circle(center=(-25, 5), diameter=12)
+        e2 = Circle(center=(-25, -5), diameter=12)
+        e3 = Circle(center=(25, 5), diameter=12)
+        e4 = Circle(center=(25, -5), diameter=12)
+    }
+}
+"""
+    assert found(compile_text, bone.replace("BAR", "bar = Rectangle(center=(0, 0), width=50, "
+                                                   "height=10)"), "W0512") == []
+    (w,) = found(compile_text, bone.replace("BAR", ""), "W0512")
+    assert "draws 4 circles but cuts 2 openings; 1 more such pair" in w.message
+
+
 def test_W0512_a_keyhole_and_nested_circles_stay_silent(compile_text):
     assert found(compile_text, """solid plate {
     body = Rectangle(center=(0, 0), width=40, height=40)

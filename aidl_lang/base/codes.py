@@ -896,7 +896,9 @@ meant, draw it as one shape. Two CIRCLES of one hole written as separate stateme
 gauge's holes written out one by one) that overlap partly (neither inside the other) are
 reported the same way, with the depth of the overlap, the common area and how far to move
 one; other shapes of one hole (a keyhole's circle and slot, a cross of two rectangles) may
-overlap by design, and a figure-eight of two circles is drawn as one Slot when it is meant.
+overlap by design, and so may two circles that both overlap another shape of the hole (a
+bone: a bar and two circles at each end, one figure); a figure-eight of two circles is drawn
+as one Slot when it is meant.
 One opening meant of several overlapping shapes (a scalloped bite of three circles) is said
 with `AllowOverlap(a, b, c)` (or `AllowOverlap(c)` for a loop's list) in the hole, as the hint
 writes: the shapes it names together are not compared. Copies that only graze (every overlap

@@ -90,6 +90,8 @@ def _check_overlapping_circles(d: Drawing, h: Structure, sink: DiagnosticSink,
     if len(faces) < 2:
         return
     shapes = [f for _, f in faces]
+    others = [f for g, f in d.own.get(h, [])
+              if g.kind != "Circle" and f is not None and not f.is_empty()]
     boxes = np.array([f.bounds() for f in shapes], dtype=float)
     areas = [_area(f) for f in shapes]
     merges = []
@@ -106,6 +108,8 @@ def _check_overlapping_circles(d: Drawing, h: Structure, sink: DiagnosticSink,
         a = _area(common)
         if a <= MIN_AREA or a >= (1 - 1e-6) * min(areas[i], areas[j]):
             continue                                   # apart, or one inside the other
+        if _in_figure(others, shapes[i], shapes[j], tick):
+            continue                                   # one figure with another shape: meant
         merges.append((i, j, _depth(common, boxes[i], boxes[j]), a))
     if not merges:
         return
@@ -128,6 +132,21 @@ def _check_overlapping_circles(d: Drawing, h: Structure, sink: DiagnosticSink,
                       f"meant, draw it as one shape (a Slot){meant}",
                  fix=_insert_fix(h, stmt, sink) if stmt and max(m[2] for m in merges) >= t
                  else None)
+
+
+def _in_figure(others: list, a, b, tick) -> bool:
+    """Circles ``a`` and ``b`` both overlap one of the hole's other shapes ``others``: they
+    are pieces of one figure with it, one opening by design (a bone-shaped window: a bar and
+    two overlapping circles at each end, issue 111's dog-treat box; a drill gauge's two
+    circles too close overlap nothing else)."""
+    for f in others:
+        fb, ab, bb = f.bounds(), a.bounds(), b.bounds()
+        if any(fb[0] > q[2] or q[0] > fb[2] or fb[1] > q[3] or q[1] > fb[3] for q in (ab, bb)):
+            continue
+        tick()
+        if _area(f ^ a) > MIN_AREA and _area(f ^ b) > MIN_AREA:
+            return True
+    return False
 
 
 def _allowed_pair(h: Structure, a, b) -> bool:
