@@ -116,6 +116,17 @@ def test_W0504_one_shape_cut_apart_by_holes_names_the_holes_not_the_pieces(compi
     assert "shrink those holes" in w.hint
 
 
+def test_W0504_says_where_a_small_piece_cut_off_lies(compile_text):
+    # issue 111 (run p): a joint cut a heart's tip off; W0504 named the shape, not the tip
+    (w,) = warnings(compile_text, """solid plate {
+    body = Rectangle(center=(0, 0), width=40 mm, height=10 mm)
+    hole h { c = Rectangle(center=(17 mm, 0), width=2 mm, height=12 mm) }
+}""", "W0504")
+    assert w.message == ("solid `plate` falls apart into 2 separate pieces (hole `plate.h` cuts "
+                         "`plate.body` apart); the smallest piece, 20 mm^2, lies from (18.00, "
+                         "-5.00) to (20.00, 5.00)")
+
+
 def test_W0504_not_for_assembly_parts_or_touching_pieces(compile_text):
     c = compile_text("""assembly kit {
     solid a { r = Rectangle(center=(0, 0), width=10, height=10) }
