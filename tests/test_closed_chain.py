@@ -33,3 +33,17 @@ def test_an_arched_top_between_lines_is_one_outline_with_an_exact_arc(tmp_path, 
     (k,) = [i for i, p in enumerate(pts) if abs(p[2]) > 0]
     assert pts[k][2] == pytest.approx(bulge, abs=1e-12)
     assert (pts[k][0], pts[k][1]) == pytest.approx((40, 30), abs=1e-9)
+
+
+def test_a_point_a_quarter_along_a_line_places_a_hole():
+    """The prompt's `l.start + (l.end - l.start) * 0.25` (issue 111, run p reached for a
+    point partway along a line): exact, through the solver."""
+    r = aidl_lang.compile(source="""solid p {
+    body = Rectangle(center=(0, 0), width=60, height=40)
+    edge = Line((-20, -10), (20, 10), construction=true)
+    hole h { c = Circle(center=(0, 0), radius=2) }
+    Coincident(h.c.center, edge.start + (edge.end - edge.start) * 0.25)
+}
+""")
+    assert r.ok
+    assert {v.name: v.mm for v in r.values}["p.h.c.center"] == pytest.approx((-10, -5), abs=1e-9)

@@ -56,7 +56,8 @@ no constraint pulls on stays exactly where it is written; a part stays, its feat
 child solids, pattern targets) are placed on it (no `Fixed` needed); of two parts or two shapes
 related, the first-named moves to the second (`AlignCenterX(knight, base)` moves the knight). A point at a radius and angle
 from a centre: `Coincident(p, polar(c.center, 20, 30 deg))` (exact; Distance + Horizontal
-also fit its mirror image). Relate parts with
+also fit its mirror image); points add and scale: a quarter along a line is
+`l.start + (l.end - l.start) * 0.25`. Relate parts with
 constraints instead of computing coordinates. A shape given by literal coordinates
 (`Polygon([(0, 0), (10, 0), (5, 8)])`) keeps its shape when constraints move it;
 `flexible=true` (Triangle, Polygon, Polyline, Spline, Bezier) frees its points. A definition
