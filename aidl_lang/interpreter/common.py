@@ -224,10 +224,6 @@ def said_shrunk(sink, g, span) -> None:
 
 
 def _defer_boxes(c) -> None:
-    """A constructor's point or size read from a bounding box (``Circle(center=hull.center)``,
-    ``r.bb.center``): its equations deferred as a box constraint's are (expanded when the
-    whole tree is known), not compiled with a box side in them (was an internal error)."""
-    from ..geometry.core.expr import Lin
-    from ..geometry.relations.bbox import contains_bbox
-    if any(type(e.expr) is not Lin and contains_bbox(e.expr) for e in c.equations):
-        c.deferred, c.equations = c.equations, []
+    """A constructor's point or size read from a bounding box: :func:`.bbox.defer_boxes`."""
+    from ..geometry.relations.bbox import defer_boxes
+    defer_boxes(c)

@@ -298,6 +298,8 @@ def evaluate(e, x) -> float:
         for k, v in e.terms.items():
             s += v * x[k]
         return s
+    if not isinstance(e, Nl):       # a box's side (bbox.BBTerm): measured at x
+        return e.value(x)
     op, args = e.op, e.args
     if op == "add":
         return evaluate(args[0], x) + evaluate(args[1], x)

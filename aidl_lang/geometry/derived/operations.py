@@ -383,6 +383,8 @@ def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_
           f"`{target.struct.name if isinstance(target, StructRef) else target.geom.name}`")
     c = Constraint("internal", S, ctx.cur_span, cl.eqs, text=(
         f"the {what} {of}'s copy rule" if name else f"the {what} copy of {of}"), implicit=True)
+    from ..relations.bbox import defer_boxes
+    defer_boxes(c)              # about a box's centre (run r: `box.bottom.bb.center`)
     S.constraints.append(c)
     ctx.model.constraints.append(c)
     return out

@@ -30,6 +30,11 @@ class BBTerm(Expr):
     def __repr__(self):
         return f"bb({getattr(self.target, 'name', '?')}.{self.side})"
 
+    def value(self, x) -> float:
+        """This side's value at parameter values ``x`` (mm): what :func:`.expr.evaluate`
+        gives for it (a pattern's copy origin about a box's centre, issue 111)."""
+        return evaluate(side_expr(self.target, self.side, self.frame, x, set()), x)
+
 
 def contains_bbox(e) -> bool:
     """True if a :class:`BBTerm` occurs in ``e`` (walked without recursion)."""
@@ -50,6 +55,16 @@ def contains_bbox(e) -> bool:
             if t is Nl:
                 append(a)
     return False
+
+
+def defer_boxes(c) -> None:
+    """Constraint ``c``'s equations deferred as a box constraint's are (expanded when the
+    whole tree is known) when one reads a bounding box (``Circle(center=hull.center)``,
+    ``r.bb.center``; a pattern's copies about `box.bottom.bb.center`), not compiled with a
+    box side in them (each was an internal error, "cannot compile BBTerm into a residual")."""
+    if c.deferred is None and any(type(e.expr) is not Lin and contains_bbox(e.expr)
+                                  for e in c.equations):
+        c.deferred, c.equations = c.equations, []
 
 
 def reach(vals) -> list | None:

@@ -21,7 +21,7 @@ import numpy as np
 
 from ...base.records import Compared, Record
 from ...base.memory import gc_paused
-from ...geometry.relations.bbox import collect, exclusions, expand, side_expr
+from ...geometry.relations.bbox import collect, defer_boxes, exclusions, expand, side_expr
 from ...geometry.core.expr import Lin, add, func, mul, var
 from ...geometry.core.model import Constraint, Model
 
@@ -96,6 +96,8 @@ def _build_rows(model: Model, x: np.ndarray) -> Rows:
     rows = Rows(n_model=len(x), n_params=len(x))
     cache: dict = {}
     for c in model.constraints:
+        if c.deferred is None:      # a box read where no interpreter path deferred it: the
+            defer_boxes(c)          # same as one that did (was "cannot compile BBTerm")
         if c.deferred is not None:
             terms: list = []
             for eq in c.deferred:
