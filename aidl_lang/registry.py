@@ -472,6 +472,7 @@ _DEFS = {
                        A("col_spacing", "length"), A("row_spacing", "length"), _STAGGER],
                       cat="operation",
                       doc="copy (r, c) moved by (c*dx, r*dy); spacing (dx, dy) or a length; "
+                          "gives one flat list, row by row: copy (r, c) is `g[r * cols + c]`; "
                           "stagger=true: every odd row also moved by dx/2 (a honeycomb or "
                           "brick pattern)."),
     "CornerPattern": _c([A("target", "boxed"), A("rect", "boxed"), A("inset", "any", 0.0,

@@ -48,3 +48,24 @@ def test_the_copy_index_is_row_major_with_stagger():
         "    CenterInside(vents, body)\n    assert vents.holes[9].center.x - vents.holes[0]"
         ".center.x == 15 mm\n    assert vents.holes[16].center.x == vents.holes[0].center.x\n"))
     assert r.ok, [d.message for d in r.errors]
+
+
+def test_a_grid_indexed_as_rows_says_its_list_is_flat():
+    """Issue 111 (run s): `cells[1][2]` of a GridPattern (rows of lists guessed) was E0111 "a
+    hole structure cannot be indexed" with the generic hint; the hint says the list is flat,
+    and `aidl docs GridPattern` (and the prompt) say so."""
+    from aidl_lang.library.reference import lookup_text
+    r = aidl_lang.compile(source="""solid p {
+    body = Rectangle(center=(0, 0), width=100, height=100)
+    hole h { c = Circle(center=(-35, -35), diameter=5) }
+    cells = GridPattern(h, 8, 8, 10)
+    assert cells[1][2].c.center.x == -15 mm
+    assert cells[1 * 8 + 2].c.center.x == -15 mm
+}
+""")
+    (e,) = [d for d in r.diagnostics if d.is_error]
+    assert (e.code, e.span.line) == ("E0111", 5)
+    assert e.hint == ("a pattern's list is flat, one copy an item: a GridPattern's is row by row, "
+                      "copy (r, c) is `cells[r * cols + c]`")
+    assert "gives one flat list, row by row: copy (r, c) is `g[r * cols + c]`" in \
+        " ".join(lookup_text("GridPattern")[0].split())

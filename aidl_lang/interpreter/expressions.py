@@ -267,8 +267,13 @@ class Expressions:
         if obj is POISON or idx is POISON:
             raise _Silent()
         if not isinstance(obj, (list, tuple, str)):
+            hint = "only lists (loops, comprehensions, `poly.points`) are indexed"
+            if isinstance(e.obj, A.Index) and isinstance(obj, (StructRef, GeomRef)):
+                # `cells[r][c]` of a GridPattern (issue 111, run s: rows of lists guessed)
+                hint = ("a pattern's list is flat, one copy an item: a GridPattern's is row by "
+                        "row, copy (r, c) is `cells[r * cols + c]`")
             raise EvalError("E0111", f"{_a(type_name(obj))} cannot be indexed", e.obj.span,
-                            hint="only lists (loops, comprehensions, `poly.points`) are indexed")
+                            hint=hint)
         i = self._q(idx, e.index.span).const()
         if i is None or abs(i - round(i)) > 1e-9:
             raise EvalError("E0108", "a list index must be a whole number", e.index.span)
