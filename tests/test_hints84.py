@@ -15,6 +15,7 @@ import re
 import pytest
 from hypothesis import given, settings, strategies as st
 from shapely.geometry import Point, Polygon, box
+from shapely.affinity import rotate
 from shapely.ops import unary_union
 
 import aidl_lang
@@ -412,6 +413,35 @@ def test_law_a_solid_cut_away_by_its_parts_hole_is_kept_or_deleted_as_told(cx, c
     assert _codes(after) == set(), (w.hint, [x.message for x in _warnings(after)])
     assert [p.name for p in after.drawing.parts] == ["p"]
     assert _same_region(_region(after, "p"), truth, 0.2)
+
+
+SIGN = """solid sign {{
+{ring}
+    solid letter {{ p = Circle(center=(0, 0), radius=30) }}
+    solid bar {{ b = Rectangle(center=(0, 0), width=180, height=20, rotation=-45 deg) }}
+}}
+"""
+RING = """    disc = Circle(center=(0, 0), diameter=200)
+    hole inside { c = Circle(center=(0, 0), diameter=160) }"""
+
+
+def test_a_solid_in_the_opening_joined_by_another_is_kept_as_the_hint_says():
+    """Issue 111 (run s's no-parking sign): a letter inside a ring's opening, crossed by a bar
+    that reaches the ring, both declared in the ring's solid with its hole.  W0506 on each;
+    the letter's hint said "delete it" (an island), which drops the design; now both say to
+    put the ring and its hole in a solid of their own, and done, nothing is cut away: one
+    part, the ring, the bar and the disc (shapely)."""
+    c = _compile(SIGN.format(ring=RING))
+    ws = _warnings(c, "W0506")
+    assert len(ws) == 2
+    assert all("put the rest of `sign` (its shapes and hole `inside`) in a `solid` of their "
+               "own inside `sign`" in w.hint for w in ws)
+    kept = _compile(SIGN.format(ring="    solid ring {\n" + RING + "\n    }"))
+    assert _codes(kept) == set()
+    truth = Point(0, 0).buffer(100, 256).difference(Point(0, 0).buffer(80, 256)).union(
+        Point(0, 0).buffer(30, 256)).union(rotate(box(-90, -10, 90, 10), -45, origin=(0, 0)))
+    assert [p.name for p in kept.drawing.parts] == ["sign"]
+    assert _same_region(_region(kept, "sign"), truth, 1e-3 * truth.area)     # (chords)
 
 
 # ------------------------------------------------------------------ W0504, two pieces

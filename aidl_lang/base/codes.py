@@ -698,7 +698,8 @@ in, children included), the warning names that hole and the share it cuts: to ke
 over the hole, declare it beside that structure (a sibling's material survives the hole);
 when that structure is the part itself, its shapes and hole go in a `solid` of their own
 inside it, beside the solid kept. A solid that would be an island in the opening (touching
-no material around it) or would fill the whole opening is only offered deletion.
+no material around it, nor another solid that does: a letter crossed by a bar that reaches
+the ring is kept with it) or would fill the whole opening is only offered deletion.
 When one filled shape of the parent covers it whole (`frame = Circle(...)` meant as a ring,
 over a spider and its threads), the warning names that shape and counts the other shapes it
 hides, and the hint offers the likely intent: a ring (`Shell(frame, 3)`) or

@@ -413,7 +413,8 @@ def _kept_over(d: Drawing, s: Structure, shp, others, cut: list, name: str) -> s
     if _area(opening - shp) <= MIN_AREA:     # kept, it would fill the hole (W0501)
         return (f"{why}; this solid covers the whole opening of {holes} (kept over it, the "
                 "hole would cut nothing; with the hole gone, the rest covers it): delete it")
-    if _area(shp ^ left) <= MIN_AREA:        # a disc that touches the opening's sides only
+    if _area(shp ^ left) <= MIN_AREA and not _bridged(d, s, shp, left):
+        # a disc that touches the opening's sides only, and no other solid of `s` joins it
         part = (f"; if it is a separate part (a pin through the hole), declare it beside "
                 f"`{s.name}` in `{s.parent.path}` (a sibling structure's material survives the "
                 "hole)") if s.parent is not None and s.parent.kind == "assembly" else ""
@@ -427,6 +428,22 @@ def _kept_over(d: Drawing, s: Structure, shp, others, cut: list, name: str) -> s
                 f"`{child}` (a sibling structure's material survives the hole), else delete it")
     return (f"{why}; to keep this solid over the hole, declare it beside `{s.name}` (a "
             "sibling structure's material survives the hole), else delete it")
+
+
+def _bridged(d: Drawing, s: Structure, shp, left) -> bool:
+    """Another solid child of ``s`` overlaps ``shp`` and the material ``left`` around the
+    hole: kept over the hole with it, ``shp`` is joined, no island (issue 111, run s's no-parking
+    sign: its "P", inside the ring's opening, crossed by the bar that reaches the ring, was
+    told "delete it")."""
+    own = _area(shp)
+    for c in s.children.values():
+        cs = d.shapes.get(c) if c.kind == "solid" else None
+        if cs is None or cs.is_empty():
+            continue
+        common = _area(cs ^ shp)
+        if MIN_AREA < common < own - MIN_AREA and _area(cs ^ left) > MIN_AREA:
+            return True
+    return False
 
 
 def _covering_shape(items, i: int, a: float):
