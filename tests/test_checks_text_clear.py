@@ -75,3 +75,27 @@ def test_an_assert_on_a_texts_center_says_how_far_it_lies_off_its_position():
                                   "text is placed, and best asserted, by its `position`")
     assert "`p.d.b.center` is its letters' box centre, 1.43 mm below its `position`" \
         in ws[1].message
+
+
+CARD = """solid card {
+    body = Rectangle(center=(0, 0), width=90, height=50)
+    hole slot { s = Rectangle(center=(-30, -22), width=3, height=6) }
+    drawing border { r = RoundedRectangle(center=(0, 0), width=82, height=H, corner_radius=2) }
+}
+"""
+
+
+def test_a_border_through_an_edge_slot_is_said_to_run_across_it():
+    """Issue 111 (run r's place card): an engraved border 4 mm inside the edge crossed a
+    foot slot cut 6 mm up from the bottom; W0516 said "touches ... keep it 0.50 mm further
+    from the edge", which would not clear it.  It now says the border runs across the
+    outline, part of it off the material; a border that stops short of the slot is clean."""
+    r = aidl_lang.compile(source=CARD.replace("H", "42"))
+    (w,) = [d for d in r.diagnostics if d.code == "W0516"]
+    assert "engraving `card.border.r` runs across the cut edge of `card` (the outline) at " \
+        "(-31.50, -21.00)" in w.message
+    assert w.hint.startswith("it crosses the outline there, so part of it lies off the "
+                             "material: shrink or move `card.border.r` to stay on it, 0.5 mm "
+                             "clear of the edge")
+    clear = aidl_lang.compile(source=CARD.replace("H", "36"))   # its bottom at -18, 1 mm clear
+    assert [d.code for d in clear.diagnostics if d.severity == "warning"] == []

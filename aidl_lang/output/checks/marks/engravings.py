@@ -19,6 +19,7 @@ from ....base.diagnostics import DiagnosticSink
 from ....geometry.core.model import Structure
 from ...part.build.booleans import Drawing
 from ..common import _edges, _inside, _part_of, _pct, _signed
+from .segments import _crosses, _pair_gap
 
 ENGRAVE_TOL = 0.05       # mm: engraving this close to an edge still counts as on the material
 
@@ -658,9 +659,10 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
         return
     si, ej_all = pairs[:, 0], pairs[:, 1]
     d, pa, _ = _pair_gap(S0[si], S1[si], E0[ej_all], E1[ej_all])
+    across = _crosses(S0[si], S1[si], E0[ej_all], E1[ej_all])
     mk = owner[si]
     order = np.lexsort((d, mk))
-    mk, d, pa, ej_all = mk[order], d[order], pa[order], ej_all[order]
+    mk, d, pa, ej_all, across = mk[order], d[order], pa[order], ej_all[order], across[order]
     starts = np.r_[0, np.flatnonzero(mk[1:] != mk[:-1]) + 1]
     stops = np.r_[starts[1:], len(mk)]
     # 0.5 mm clear to within 1e-6 mm is clear: a mark set by `Inside(..., margin=0.5 mm)`
@@ -690,7 +692,8 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
     found = []
     bands: dict = {}                 # statement span -> its copies that run edge to edge
     band_runs: set = set()           # the (dx, dy) of the straight bands
-    for c, (k, a, _) in enumerate(close):
+    crossing: set = set()            # the marks that run across the edge (r06's border)
+    for c, (k, a, z) in enumerate(close):
         g, items = geoms[k]
         gap, pm, ej = float(d[a]), pa[a], int(ej_all[a])
         q = ends[c]
@@ -712,6 +715,8 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
             nu, nw = float(np.hypot(*u)), float(np.hypot(*w))
             tick = nu > 0 and nw > 0 and abs(float(u @ w)) / (nu * nw) <= math.sin(SQUARE)
         found.append((g, items, near_edges[c], gap, ej, pm, end, line, tick))
+        if end is None and across[a:z].any():
+            crossing.add(id(g))             # it runs across the edge: part of it is off
     scale = sum(f[-1] for f in found) >= SCALE
     split = _split_bands([f for f in found if f[-1]])
     copies: dict = {}
@@ -727,47 +732,61 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
             continue                         # a band's copy, each its own statement (imported)
         by_statement.setdefault(f[0].span or f[0], []).append(f)
     for group in by_statement.values():
-        group.sort(key=lambda f: f[3])
-        g, items, e, gap, ej, pm, end, line, _ = group[0]
-        which = "a hole's edge" if hole[ej] else "the outline"
-        t = r = None
-        if line and end is not None:
-            p, q = np.asarray(items[0][1], float), np.asarray(items[0][2], float)
-            if np.hypot(*(end - p)) < np.hypot(*(end - q)):
-                p, q = q, p                              # q: the end at the edge
-            t, r = _shorten_clear(p, q, E0[e], E1[e])
-        if end is not None:
-            how = "ends on" if gap <= ENGRAVE_TOL else f"ends {gap:.2f} mm from"
-        else:
-            how = "touches" if gap <= ENGRAVE_TOL else f"comes {gap:.2f} mm from"
-        if t is not None:
-            fix = (f"end `{g.label}` {t:.2f} mm further inside, at ({r[0]:.2f}, {r[1]:.2f}) "
-                   f"(shorten it by {t:.2f} mm), so that it stops {CUT_CLEAR} mm short of the "
-                   "edge")
-            if len(group) > 1:
-                ts = [_shorten_clear(*_far_near(f), E0[f[2]], E1[f[2]])[0]
-                      if f[7] and f[6] is not None else None for f in group]
-                if all(x is not None for x in ts):
-                    fix = (f"end each copy of `{g.label}` at least {max(ts):.2f} mm further "
-                           f"inside (shorten it), so that it stops {CUT_CLEAR} mm short of the "
-                           "edge")
-                else:
-                    fix = (f"end or move each copy of `{g.label}` at least {CUT_CLEAR} mm "
-                           "inside the edge")
-        else:
-            fix = (f"keep `{g.label}` {math.ceil((CUT_CLEAR - gap) * 100) / 100:.2f} mm "
-                   "further from the edge (move it, or change its size)")
-        more = ""
+        _say_meets_cut(part, group, hole, E0, E1, crossing, sink)
+
+
+def _say_meets_cut(part, group: list, hole, E0, E1, crossing: set, sink) -> None:
+    """W0516 for the close marks of one statement (``group``, :func:`_check_meets_cut`'s
+    tuples), the closest first: how it meets the edge (ends on, touches, runs across), where,
+    and how far to end or move it; ``hole``: whether each edge is a hole's, ``E0``, ``E1``
+    the edges' ends, ``crossing`` the ids of the marks that run across an edge."""
+    group.sort(key=lambda f: f[3])
+    g, items, e, gap, ej, pm, end, line, _ = group[0]
+    which = "a hole's edge" if hole[ej] else "the outline"
+    t = r = None
+    if line and end is not None:
+        p, q = np.asarray(items[0][1], float), np.asarray(items[0][2], float)
+        if np.hypot(*(end - p)) < np.hypot(*(end - q)):
+            p, q = q, p                              # q: the end at the edge
+        t, r = _shorten_clear(p, q, E0[e], E1[e])
+    if end is not None:
+        how = "ends on" if gap <= ENGRAVE_TOL else f"ends {gap:.2f} mm from"
+    elif id(g) in crossing:
+        how = "runs across"
+    else:
+        how = "touches" if gap <= ENGRAVE_TOL else f"comes {gap:.2f} mm from"
+    if id(g) in crossing and end is None:       # run r's place card: a border through a slot
+        fix = (f"it crosses {which} there, so part of it lies off the material: shrink "
+               f"or move `{g.label}` to stay on it, {CUT_CLEAR} mm clear of the edge (or "
+               "leave a gap in it round the opening)")
+    elif t is not None:
+        fix = (f"end `{g.label}` {t:.2f} mm further inside, at ({r[0]:.2f}, {r[1]:.2f}) "
+               f"(shorten it by {t:.2f} mm), so that it stops {CUT_CLEAR} mm short of the "
+               "edge")
         if len(group) > 1:
-            rest = ", ".join(f"`{_copy_label(f[0], short=True)}` ({f[3]:.2f} mm at "
-                             f"({f[5][0]:.2f}, {f[5][1]:.2f}))" for f in group[1:4])
-            more = (f"; {len(group) - 1} more cop{'ies' if len(group) > 2 else 'y'} of this "
-                    f"statement as close: {rest}{', ...' if len(group) > 4 else ''}")
-        sink.warning("W0516", f"engraving `{_copy_label(g)}` {how} the cut edge of "
-                     f"`{part.path}` ({which}) at ({pm[0]:.2f}, {pm[1]:.2f}): the engraving "
-                     f"meets the cut (a mark needs {CUT_CLEAR} mm clear of the edge), so it "
-                     f"runs into the edge{more}", g.span,
-                     hint=fix + "; the cut already draws the edge")
+            ts = [_shorten_clear(*_far_near(f), E0[f[2]], E1[f[2]])[0]
+                  if f[7] and f[6] is not None else None for f in group]
+            if all(x is not None for x in ts):
+                fix = (f"end each copy of `{g.label}` at least {max(ts):.2f} mm further "
+                       f"inside (shorten it), so that it stops {CUT_CLEAR} mm short of the "
+                       "edge")
+            else:
+                fix = (f"end or move each copy of `{g.label}` at least {CUT_CLEAR} mm "
+                       "inside the edge")
+    else:
+        fix = (f"keep `{g.label}` {math.ceil((CUT_CLEAR - gap) * 100) / 100:.2f} mm "
+               "further from the edge (move it, or change its size)")
+    more = ""
+    if len(group) > 1:
+        rest = ", ".join(f"`{_copy_label(f[0], short=True)}` ({f[3]:.2f} mm at "
+                         f"({f[5][0]:.2f}, {f[5][1]:.2f}))" for f in group[1:4])
+        more = (f"; {len(group) - 1} more cop{'ies' if len(group) > 2 else 'y'} of this "
+                f"statement as close: {rest}{', ...' if len(group) > 4 else ''}")
+    sink.warning("W0516", f"engraving `{_copy_label(g)}` {how} the cut edge of "
+                 f"`{part.path}` ({which}) at ({pm[0]:.2f}, {pm[1]:.2f}): the engraving "
+                 f"meets the cut (a mark needs {CUT_CLEAR} mm clear of the edge), so it "
+                 f"runs into the edge{more}", g.span,
+                 hint=fix + "; the cut already draws the edge")
 
 
 def _run(item) -> tuple:
@@ -861,41 +880,6 @@ def _copy_label(g, short: bool = False) -> str:
     if len(same) < 2 or g not in same:
         return name
     return f"{name}[{same.index(g)}]"
-
-
-def _pair_gap(a0, a1, b0, b1) -> tuple:
-    """The distance (mm) between each segment ``a0[k]``-``a1[k]`` and ``b0[k]``-``b1[k]``
-    (k x 2 arrays each, paired row by row): ``(d, pa, pb)``, the k distances and the nearest
-    points on each (0 and the crossing point where two cross)."""
-    da, db = a1 - a0, b1 - b0
-
-    def foot(p, s0, dd):
-        l2 = np.einsum("ij,ij->i", dd, dd)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            t = np.clip(np.where(l2 > 0, np.einsum("ij,ij->i", p - s0, dd) / l2, 0.0), 0, 1)
-        return s0 + t[:, None] * dd
-    cand = [(a0, foot(a0, b0, db)), (a1, foot(a1, b0, db)),
-            (foot(b0, a0, da), b0), (foot(b1, a0, da), b1)]
-    dist = np.array([np.hypot(*(p - q).T) for p, q in cand])       # 4 x k
-    best = np.argmin(dist, axis=0)
-    r = np.arange(len(a0))
-    pa = np.stack([c[0] for c in cand])[best, r]
-    pb = np.stack([c[1] for c in cand])[best, r]
-    d = dist[best, r]
-
-    def cross(u, v):
-        return u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]
-    s1, s2 = cross(da, b0 - a0), cross(da, b1 - a0)
-    s3, s4 = cross(db, a0 - b0), cross(db, a1 - b0)
-    hit = (s1 * s2 < 0) & (s3 * s4 < 0)
-    if hit.any():
-        with np.errstate(divide="ignore", invalid="ignore"):
-            t = s3[hit] / (s3[hit] - s4[hit])
-        x = a0[hit] + t[:, None] * da[hit]
-        d = np.where(hit, 0.0, d)
-        pa[hit] = x
-        pb[hit] = x
-    return d, pa, pb
 
 
 def _seg_gap(A0, A1, B0, B1) -> tuple:

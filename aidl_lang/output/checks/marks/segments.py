@@ -1,0 +1,54 @@
+"""Segments against segments for the engraving checks (:mod:`.engravings`, :mod:`.text`,
+:mod:`.clearance`): the gap between paired segments (:func:`_pair_gap`) and whether they
+cross (:func:`_crosses`), k pairs in one array operation each."""
+from __future__ import annotations
+
+import numpy as np
+
+
+def _pair_gap(a0, a1, b0, b1) -> tuple:
+    """The distance (mm) between each segment ``a0[k]``-``a1[k]`` and ``b0[k]``-``b1[k]``
+    (k x 2 arrays each, paired row by row): ``(d, pa, pb)``, the k distances and the nearest
+    points on each (0 and the crossing point where two cross)."""
+    da, db = a1 - a0, b1 - b0
+
+    def foot(p, s0, dd):
+        l2 = np.einsum("ij,ij->i", dd, dd)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = np.clip(np.where(l2 > 0, np.einsum("ij,ij->i", p - s0, dd) / l2, 0.0), 0, 1)
+        return s0 + t[:, None] * dd
+    cand = [(a0, foot(a0, b0, db)), (a1, foot(a1, b0, db)),
+            (foot(b0, a0, da), b0), (foot(b1, a0, da), b1)]
+    dist = np.array([np.hypot(*(p - q).T) for p, q in cand])       # 4 x k
+    best = np.argmin(dist, axis=0)
+    r = np.arange(len(a0))
+    pa = np.stack([c[0] for c in cand])[best, r]
+    pb = np.stack([c[1] for c in cand])[best, r]
+    d = dist[best, r]
+
+    def cross(u, v):
+        return u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]
+    s1, s2 = cross(da, b0 - a0), cross(da, b1 - a0)
+    s3, s4 = cross(db, a0 - b0), cross(db, a1 - b0)
+    hit = (s1 * s2 < 0) & (s3 * s4 < 0)
+    if hit.any():
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = s3[hit] / (s3[hit] - s4[hit])
+        x = a0[hit] + t[:, None] * da[hit]
+        d = np.where(hit, 0.0, d)
+        pa[hit] = x
+        pb[hit] = x
+    return d, pa, pb
+
+
+def _crosses(a0, a1, b0, b1) -> np.ndarray:
+    """Whether each segment ``a0[k]``-``a1[k]`` crosses ``b0[k]``-``b1[k]`` (k x 2 arrays,
+    paired row by row), their insides meeting at one point: an engraved line that runs
+    across a cut edge, not one that ends on it or grazes it (k booleans)."""
+    da, db = a1 - a0, b1 - b0
+
+    def cross(u, v):
+        return u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]
+    s1, s2 = cross(da, b0 - a0), cross(da, b1 - a0)
+    s3, s4 = cross(db, a0 - b0), cross(db, a1 - b0)
+    return (s1 * s2 < 0) & (s3 * s4 < 0)
