@@ -99,3 +99,26 @@ def test_a_border_through_an_edge_slot_is_said_to_run_across_it():
                              "clear of the edge")
     clear = aidl_lang.compile(source=CARD.replace("H", "36"))   # its bottom at -18, 1 mm clear
     assert [d.code for d in clear.diagnostics if d.severity == "warning"] == []
+
+
+SAIL = """solid sail {
+    body = Polygon([(-35, 0), (35, 0), (0, 100)])
+    hole foot { gap = Rectangle(center=(GX, 2), width=40, height=4) }
+}
+assert sail.body.bb.width == 70 mm, "sail 70 wide"
+"""
+
+
+def test_an_assert_on_a_shapes_box_that_its_holes_cut_is_w0405():
+    """Issue 111 (run s's toy sailboat): a joint's gaps cut the sail's foot back and the
+    model's `assert sail.body.bb.width == 70 mm` held on the polygon as drawn.  W0405 says
+    the assert reads the shape before its holes and would fail on the final outline; a hole
+    that leaves the foot's corners (the outline still 70 wide) is not warned."""
+    r = aidl_lang.compile(source=SAIL.replace("GX", "20"))
+    (w,) = [d for d in r.diagnostics if d.code == "W0405"]
+    assert w.message == ("`assert sail.body.bb.width == 70 mm` reads the box of `sail.body`, "
+                         "the outline of `sail`, before its holes: it holds there and would "
+                         "fail on the final outline (its right 1.400 mm in)")
+    assert "or move the holes that cut that side" in w.hint
+    r = aidl_lang.compile(source=SAIL.replace("GX", "0"))
+    assert [d.code for d in r.diagnostics if d.severity == "warning"] == []

@@ -549,7 +549,10 @@ round only the corners away from that side (`Fillet(at=[...], radius=...)`). An 
 such a box is judged on it too (E0405 when false there); where its verdict on the final
 outline would be the other one, W0405 says so at the assert; so too for the box of a shape
 that is its structure's outline on the side read (`assert body.bb.height == 180 mm` on a tent
-stake whose `Fillet(2)` took 21.4 mm off its 9.8-degree point). Also a relation
+stake whose `Fillet(2)` took 21.4 mm off its 9.8-degree point), and for the box of a shape
+whose structure's own holes cut the outline on that side (`assert sail.body.bb.width == 70 mm`
+on a sail whose notch cut a corner off: "before its holes"; not a joint template's cut, which
+its mate fills: a cross-halving slot at a rocket's nose). Also a relation
 on the box of a shape made from others whose box is its drawn outline's (an `Inset`, a
 miter-joined `Offset` or `Shell`, an `Intersect`: exact at the solution) that the solution
 still misses after the solver solved again from it: the solve moved the shapes it is made

@@ -83,13 +83,14 @@ def check_final_boxes(sink: DiagnosticSink, model: Model, d: Drawing, calls=None
 def check_final_box_asserts(sink: DiagnosticSink, model: Model, d: Drawing,
                             calls=None) -> None:
     """W0405 for each ``assert`` that reads the box of a structure with ``Fillet`` or
-    ``Chamfer`` and whose verdict on that box (the shapes as drawn before the rounding, what
+    ``Chamfer`` (or of a shape that is the outline of a solid its own holes may cut:
+    :func:`_holed`) and whose verdict on that box (the shapes as drawn before the rounding, what
     the assert is judged on: E0405) is not its verdict on the final outline: an assert that
     holds only because it reads the box before the rounding, or fails only for it (issue
     109: a member a model asserts on is the part it gets)."""
     if not model.assertions:
         return
-    finished = {id(s): s for s in model.structures if reshaped(s)}
+    finished = {id(s): s for s in model.structures if reshaped(s) or _holed(s)}
     if not finished:
         return
     from ...geometry.relations.assertions import holds
@@ -109,9 +110,17 @@ def check_final_box_asserts(sink: DiagnosticSink, model: Model, d: Drawing,
             if id(own) not in moved:
                 moved[id(own)], solved[id(own)] = _moved(d, own, x)
             box = numeric_box(g, None, x)
-            moved[id(g)] = {} if box is None else {
-                sd: v for sd, v in moved[id(own)].items()
-                if abs(box[SIDES.index(sd)] - solved[id(own)][sd]) <= BOX_TOL}
+            if _holed(own):     # against its material (its box holds its holes' too)
+                mat = numeric_box(own, None, x, exclude={
+                    c for c in own.children.values() if c.kind in ("hole", "cut")})
+                fin = final_box(d, own)
+                moved[id(g)] = {} if box is None or mat is None or fin is None else {
+                    sd: fin[i] - box[i] for i, sd in enumerate(SIDES)
+                    if abs(box[i] - mat[i]) <= BOX_TOL}
+            else:
+                moved[id(g)] = {} if box is None else {
+                    sd: v for sd, v in moved[id(own)].items()
+                    if abs(box[SIDES.index(sd)] - solved[id(own)][sd]) <= BOX_TOL}
             finished[id(g)], named[id(g)] = own, g.label
         read = [k for k in dict.fromkeys(id(t.target) for t in terms) if k in finished]
         for k in read:
@@ -136,22 +145,39 @@ def check_final_box_asserts(sink: DiagnosticSink, model: Model, d: Drawing,
         if before == after:
             continue
         s = finished[read[0]]
+        if not reshaped(s) and read[0] not in named:
+            continue            # a structure's box holds its holes by the language's rule
         asked = {t.side for t in terms if id(t.target) == read[0]}
         sides = ", ".join(f"its {sd} {abs(v):.3f} mm "
                           f"{'in' if (v > 0) == (sd in ('left', 'bottom')) else 'out'}"
                           for sd, v in moved[read[0]].items()
                           if abs(v) > BOX_TOL and sd in asked) or "its box moved"
-        ops = " and ".join(reshaped(s))
+        kinds = reshaped(s) + (["holes"] if _holed(s) and read[0] in named else [])
+        ops = " and ".join(kinds)
         what = f"`{named[read[0]]}`, the outline of `{s.path}`," if read[0] in named \
             else f"`{s.path}`"
+        rounded = [k for k in kinds if k in ("Fillet", "Chamfer")]
         sink.warning(
             "W0405", f"`assert {a.text}` reads the box of {what} before its {ops}: it "
             f"{'holds' if before else 'fails'} there and would "
             f"{'fail' if before else 'hold'} on the final outline ({sides})",
             a.span, calls=calls(a.owner) if calls is not None else None,
             hint=f"a box is read from the shapes as drawn, before {ops}: assert on the "
-                 f"final outline by adding the difference to that side, or round only "
-                 f"corners away from it (`Fillet(at=[...], ...)`)")
+                 f"final outline by adding the difference to that side"
+                 + (f", or round only corners away from it (`{rounded[0]}(at=[...], ...)`)"
+                    if rounded else "; or move the holes that cut that side, if the "
+                    "outline must reach it"))
+
+
+def _holed(s: Structure) -> bool:
+    """Solid ``s`` has holes of its own (hole or cut children, none a template's) that may cut
+    its outline: the box of a shape of it, read by an assert, is then the shape as drawn
+    (issue 111, run s's toy sailboat: its foot cut back, `sail.body.bb` asserts held on the
+    uncut polygon; that cut was a joint template's, which its docs now explain)."""
+    holes = [c for c in s.children.values() if c.kind in ("hole", "cut")]
+    # a joint template's cut is filled by its mate (a cross-halving slot at a rocket's nose,
+    # a dovetail's sockets): the outline as drawn is the design there, not warned
+    return s.kind == "solid" and bool(holes) and not any(c.template for c in holes)
 
 
 def check_drawn_boxes(sink: DiagnosticSink, model: Model, calls=None) -> None:
