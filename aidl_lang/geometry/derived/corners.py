@@ -395,7 +395,11 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
             else:
                 msg += where
             hint = (f"the nearest corner of the outline is at ({near[0]:.6g}, {near[1]:.6g}) "
-                    f"mm: name the two edges that meet there" if near is not None else
+                    f"mm: name the two edges that meet there, or give its point (the way "
+                    f"where an edge is an Ellipse's or a curve's, which has no name), "
+                    f"`{kind}(at=({_mm4(near[0])}, {_mm4(near[1])}), "
+                    f"{'radius' if fillet else 'distance'}={r:.6g} mm)`"
+                    if near is not None else
                     "name two edges that meet at a corner of the outline, or delete the "
                     f"`{kind}`")
             was = _where(p, first)[1] if first is not None else None
@@ -737,3 +741,10 @@ def _along(g, d: float, from_end: bool):
         return (x0 + (x1 - x0) * t, y0 + (y1 - y0) * t)
     da = d / g.radius * (1 if g.sweep > 0 else -1)
     return g.at(g.end_angle - da if from_end else g.start_angle + da)
+
+
+def _mm4(v: float) -> str:
+    """``v`` to 1e-4 mm, trailing zeros dropped (a corner's point a hint writes: within
+    :data:`CORNER_TOL` of the corner)."""
+    t = f"{v:.4f}".rstrip("0").rstrip(".")
+    return "0" if t in ("", "-0") else t
