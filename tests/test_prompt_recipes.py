@@ -1,7 +1,9 @@
-"""Lines and Arcs meeting end to end in a solid close into one outline (the prompt's arched-top
-recipe, issue 111: runs i and q reached for an arched or concave edge and drew a big circle
-hole instead).  Written to DXF and re-read by ezdxf: one closed polyline, the arc exact (its
-bulge, 2 x sagitta / chord)."""
+"""The prompt's recipes for what issue 111's models reached for, each through the real
+compiler: Lines and Arcs meeting end to end in a solid close into one outline (an arched top;
+runs i and q drew a big circle hole instead), written to DXF and re-read by ezdxf (one closed
+polyline, the arc exact: its bulge, 2 x sagitta / chord); a point partway along a line (run
+p); a hexagram of two RegularPolygons (run r's menorah: two Triangles by `center` share their
+boxes' centres, a bow-tie)."""
 from __future__ import annotations
 
 import pytest
@@ -47,3 +49,24 @@ def test_a_point_a_quarter_along_a_line_places_a_hole():
 """)
     assert r.ok
     assert {v.name: v.mm for v in r.values}["p.h.c.center"] == pytest.approx((-10, -5), abs=1e-9)
+
+
+def test_a_hexagram_of_two_regular_triangles_shares_one_centre():
+    r = aidl_lang.compile(source="""solid p {
+    body = Rectangle(center=(0, 0), width=80, height=80)
+    drawing star {
+        up = RegularPolygon(center=(0, 0), radius=30, sides=3, rotation=90 deg)
+        down = RegularPolygon(center=(0, 0), radius=30, sides=3, rotation=270 deg)
+    }
+}
+""")
+    assert r.ok and not [d for d in r.diagnostics if d.severity == "warning"]
+    import math
+    vals = {v.name: v.mm for v in r.values}
+    # each vertex 30 mm from the one centre (0, 0): up's first at 90 deg, down's at 270
+    for n, a0 in (("up", 90), ("down", 270)):
+        assert vals[f"p.star.{n}.center"] == pytest.approx((0, 0), abs=1e-9)
+        for k in range(3):
+            a = math.radians(a0 + 120 * k)
+            assert vals[f"p.star.{n}.p{k}"] == pytest.approx((30 * math.cos(a), 30 * math.sin(a)),
+                                                             abs=1e-9)
