@@ -12,7 +12,8 @@ import math
 
 import numpy as np
 
-from .engravings import _copy_label, _mark_segments, _pair_gap, _signed
+from .engravings import _copy_label, _mark_segments
+from .segments import _edge_arrays, _pair_gap
 
 TEXT_CLEAR = 0.2         # mm: letters closer to the cut edge run into it
 
@@ -26,15 +27,10 @@ def check_text_near_cut(texts: list, roots: dict, loops: dict | None, sink) -> N
     for part, geoms in texts or ():
         if not geoms:
             continue
-        lps = (loops or {}).get(part)
-        if lps is None:
-            lps = [np.asarray(p, dtype=float) for p in roots[part].to_polygons()]
-        lps = [lp for lp in lps if len(lp) >= 2]
-        if not lps:
+        edges = _edge_arrays(roots[part], (loops or {}).get(part))
+        if edges is None:
             continue
-        E0 = np.concatenate(lps)
-        E1 = np.concatenate([np.roll(lp, -1, axis=0) for lp in lps])
-        hole = np.concatenate([np.full(len(lp), _signed(lp) < 0) for lp in lps])
+        E0, E1, hole = edges
         segs = [_mark_segments(items) for _, items in geoms]
         S0 = np.concatenate([a for a, _ in segs])
         S1 = np.concatenate([b for _, b in segs])

@@ -19,7 +19,7 @@ from ....base.diagnostics import DiagnosticSink
 from ....geometry.core.model import Structure
 from ...part.build.booleans import Drawing
 from ..common import _edges, _inside, _part_of, _pct, _signed
-from .segments import _crosses, _pair_gap
+from .segments import _crosses, _edge_arrays, _pair_gap
 
 ENGRAVE_TOL = 0.05       # mm: engraving this close to an edge still counts as on the material
 
@@ -640,14 +640,10 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
     geoms = [(g, items) for g, items in geoms if g.kind != "Text"]
     if not geoms:
         return
-    if loops is None:
-        loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
-    loops = [lp for lp in loops if len(lp) >= 2]
-    if not loops:
+    edges = _edge_arrays(shape, loops)
+    if edges is None:
         return
-    E0 = np.concatenate(loops)
-    E1 = np.concatenate([np.roll(lp, -1, axis=0) for lp in loops])
-    hole = np.concatenate([np.full(len(lp), _signed(lp) < 0) for lp in loops])
+    E0, E1, hole = edges
     segs = [_mark_segments(items) for _, items in geoms]
     S0 = np.concatenate([sg[0] for sg in segs])
     S1 = np.concatenate([sg[1] for sg in segs])

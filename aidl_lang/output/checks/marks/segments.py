@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..common import _signed
+
 
 def _pair_gap(a0, a1, b0, b1) -> tuple:
     """The distance (mm) between each segment ``a0[k]``-``a1[k]`` and ``b0[k]``-``b1[k]``
@@ -52,3 +54,16 @@ def _crosses(a0, a1, b0, b1) -> np.ndarray:
     s1, s2 = cross(da, b0 - a0), cross(da, b1 - a0)
     s3, s4 = cross(db, a0 - b0), cross(db, a1 - b0)
     return (s1 * s2 < 0) & (s3 * s4 < 0)
+
+
+def _edge_arrays(shape, loops) -> tuple | None:
+    """A part's cut edges as arrays: ``(E0, E1, hole)``, each edge's two ends (k x 2) and
+    whether it is a hole's (clockwise loop), from its outline ``loops`` (or the polygons of
+    ``shape`` when None); None when it has no edge."""
+    if loops is None:
+        loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
+    loops = [lp for lp in loops if len(lp) >= 2]
+    if not loops:
+        return None
+    return (np.concatenate(loops), np.concatenate([np.roll(lp, -1, axis=0) for lp in loops]),
+            np.concatenate([np.full(len(lp), _signed(lp) < 0) for lp in loops]))
