@@ -31,3 +31,33 @@ def test_E0408_gives_the_corners_point_where_an_edge_is_an_ellipses():
         "    Fillet([handle.top_left, handle.top_right], 8)\n", ""))
     # the handle meets the blade in two inside corners: rounded, they gain material
     assert r2.parts[0].area > sharp.parts[0].area + 10
+
+
+def test_a_construction_box_named_after_a_child_stays_where_written():
+    """Run t's photo-booth frame: `band = Rectangle(corner=..., opposite=..., construction=true)`
+    and `CenterInside(words, band)`: the band, named second, moved 3.5e-5 mm to the words
+    (12.5 mm when the words were written off it) and the model's exact assert on the band
+    failed.  The first-named moves: the band stays, the words go to it."""
+    src = (RUNS / "issue111t/drafts/04_photo_booth_frame.attempt1.aidl").read_text()
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [d.message for d in r.diagnostics if d.is_error]
+    vals = {v.name: v.mm for v in r.values}
+    assert vals["frame.band.top_left"] == (-200.0, -75.0)      # exactly where written
+    off = aidl_lang.compile(source=src.replace('Text("PARTY TIME", (0, -112.5)',
+                                               'Text("PARTY TIME", (0, -100)'))
+    v2 = {v.name: v.mm for v in off.values}
+    assert v2["frame.band.top_left"] == (-200.0, -75.0)
+    assert v2["frame.words.t.position"][1] == vals["frame.words.t.position"][1]
+
+
+def test_E0405_says_how_far_apart_two_sides_that_print_alike_are():
+    r = aidl_lang.compile(source="""solid p {
+    body = Rectangle(center=(0, 0), width=40, height=20)
+    a = 75.00004 mm
+    assert a == 75 mm, "close"
+}
+""")
+    (e,) = [d for d in r.diagnostics if d.code == "E0405"]
+    assert e.message.endswith("75 mm == 75 mm is false (the sides differ by 4e-05 mm, more than "
+                              "the 1e-06 mm every comparison is judged within: say how close "
+                              "is enough, `abs(a - b) < 0.01 mm`)")

@@ -167,9 +167,13 @@ def _within_tol(op: str, left: float, right: float, dim) -> str:
     if dim == "text":
         return ""
     d = left - right
+    unit = {(1, 0): " mm", (0, 1): " rad"}.get(dim, "")
+    if op == "==" and math.isfinite(d) and abs(d) > TOL and f"{left:.6g}" == f"{right:.6g}":
+        # said alike to 6 digits (run t: "-75 mm == -75 mm is false", 3.5e-5 mm apart)
+        return (f" (the sides differ by {abs(d):.3g}{unit}, more than the {TOL:g}{unit} every "
+                "comparison is judged within: say how close is enough, `abs(a - b) < 0.01 mm`)")
     if not (math.isfinite(d) and ((op == ">" and 0 < d <= TOL) or (op == "<" and -TOL <= d < 0))):
         return ""
-    unit = {(1, 0): " mm", (0, 1): " rad"}.get(dim, "")
     return (f" (the sides are only {abs(d):.3g}{unit} apart: `{op}` needs a gap of more than "
             f"{TOL:g}{unit}, the tolerance every comparison is judged within)")
 

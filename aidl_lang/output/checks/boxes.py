@@ -23,10 +23,10 @@ from ..part.build.booleans import Drawing
 BOX_TOL = 1e-6        # mm: sides closer than this are the same
 
 
-def final_box(d: Drawing, s: Structure) -> tuple[float, float, float, float] | None:
+def final_box(d: Drawing, s: Structure, shape=None) -> tuple[float, float, float, float] | None:
     """(left, right, bottom, top) in mm of ``s``'s final exact outline in drawing ``d``
-    (after its Fillet and Chamfer), or None when it has none."""
-    shape = d.shapes.get(s)
+    (after its Fillet and Chamfer; of ``shape`` when given), or None when it has none."""
+    shape = d.shapes.get(s) if shape is None else shape
     if shape is None or shape.is_empty():
         return None
     boxes = [seg.box() for loops in d.exact.loops_of([shape]) for lp in loops
@@ -204,6 +204,14 @@ def _moved(d: Drawing, s: Structure, x) -> tuple[dict, dict]:
     solved, final = numeric_box(s, None, x), final_box(d, s)
     if solved is None or final is None:
         return {}, {}
+    # the rounding's own change: against the outline before it, where its holes cut it too
+    # (run u's cactus: a cross-halving slot at its rounded top, "its top 0.080 mm in", was
+    # said of the Fillets at its elbows)
+    unf = d.unfinished.get(s)
+    before = final_box(d, s, unf) if unf is not None and reshaped(s) else None
+    if before is not None:
+        return ({side: final[i] - before[i] for i, side in enumerate(SIDES)},
+                dict(zip(SIDES, solved)))
     return ({side: final[i] - solved[i] for i, side in enumerate(SIDES)},
             dict(zip(SIDES, solved)))
 

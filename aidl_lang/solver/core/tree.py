@@ -7,6 +7,7 @@ functions of :class:`~aidl_lang.geometry.core.model.Structure`: no solver state.
 from __future__ import annotations
 
 from ...geometry.core.model import Model, Structure
+from ...geometry.relations.bbox import collect
 
 
 FEATURE_KINDS = ("hole", "cut", "drawing")   # placed on a part (engraved); the rest are parts
@@ -209,6 +210,18 @@ def _held_helpers(s: Structure, helpers: list) -> set:
         hit = [i for i, vs in enumerate(units)
                if ar is not None and any(r & vs for r in ar)
                or c.reach is not None and any(r & vs for r in c.reach)]
+        if not hit and c.reach is None and c.deferred and c.args:
+            # a relation of boxes (`CenterInside(words, band)`: no reach of its own): the
+            # helpers whose box it reads, named after a child first (run t's photo-booth
+            # frame: the band moved 3.5e-5 mm to the words, then 12.5 mm when they were off)
+            read = {id(t.target) for eq in c.deferred for t in collect(eq.expr, [])}
+            boxed = [i for i, g in enumerate(helpers) if id(g) in read]
+            for i in boxed:
+                if s not in c.args[0] and any(s in a for a in c.args[1:]):
+                    ref[i] = True
+                else:
+                    other[i] = True
+            continue
         if not hit:
             continue
         if ar is None or c.args is None or len(ar) != len(c.args):

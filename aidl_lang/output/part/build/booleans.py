@@ -86,6 +86,7 @@ class Renderer(Faces):
         self.through: list = []
         self.sheet_cuts: list = []           # (geometry, its cut, [N x 2 polylines, mm])
         self.slit_shapes: dict = {}
+        self.unfinished: dict = {}      # Structure -> its shape before its Fillet/Chamfer
         self.split: set = set()
 
     def tick(self, s: Structure | None = None, faces=(), watched: bool = True) -> None:
@@ -421,6 +422,7 @@ class Renderer(Faces):
                 out.cuts.append(Cut(c, s, acc, acc ^ h))
             acc = back(here - cut)
         if getattr(s, "finish", None) and not acc.is_empty():
+            self.unfinished[s] = acc
             try:
                 # the deadline covers the exact recovery and every loop's fillets
                 said = []
@@ -729,6 +731,7 @@ class Renderer(Faces):
         out.exact = self.exact
         out.empty_faces = self.empty_faces
         out.through, out.slit_shapes = self.through, self.slit_shapes
+        out.unfinished = self.unfinished
         out.sheet_cuts = self.sheet_cuts
         out.split = frozenset(self.split)
         out.shape_errors = self.shape_errors

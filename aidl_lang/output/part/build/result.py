@@ -144,6 +144,9 @@ class Drawing(Compared):
     # structure, [N x 2 polylines, mm])
     sheet_cuts = ()
     slit_shapes = {}
+    # Structure -> its shape before its Fillet and Chamfer (holes cut): what W0405 tells the
+    # rounding's own change from (a slot's cut at a rounded top is not the Fillet's)
+    unfinished = {}
     split = frozenset()
     # Part name -> minimum wall in mm (`min_wall 0.3 mm`, found like the thickness; 0: the
     # wall checks off); parts without one are checked at the compile's default
