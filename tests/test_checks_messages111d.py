@@ -61,3 +61,28 @@ def test_E0405_says_how_far_apart_two_sides_that_print_alike_are():
     assert e.message.endswith("75 mm == 75 mm is false (the sides differ by 4e-05 mm, more than "
                               "the 1e-06 mm every comparison is judged within: say how close "
                               "is enough, `abs(a - b) < 0.01 mm`)")
+
+
+def test_ticks_drawn_to_a_dials_rim_are_not_said_to_run_into_it():
+    """Run u's star wheel: ticks from r 62 to the rim at r 72 were W0513 "runs into the
+    engraved outline ... and ends inside it" off the axes (the rim measured as a 32-gon
+    whose chords lie 0.35 mm inside the circle); a circle is measured as one."""
+    src = (RUNS / "issue111u/run/08_star_wheel.first_valid.aidl").read_text()
+    assert [d.code for d in aidl_lang.compile(source=src).diagnostics
+            if d.code == "W0513"] == []
+    # ticks that run 2 mm past the rim into a ring drawn inside it are still warned
+    ring = src.replace("rim = Circle(center=(0, 0), diameter=144)",
+                       "rim = Circle(center=(0, 0), diameter=140)")
+    assert "W0513" in [d.code for d in aidl_lang.compile(source=ring).diagnostics]
+
+
+def test_a_border_clear_of_text_along_a_circle_is_not_said_to_cross_it():
+    """Run u's medal: a border 8 mm outside "CITY RUN 2026" laid along a circle was W0513
+    "crosses it at "C" and "6"" (the text's box is its arc's); a border through the letters
+    still is."""
+    src = (RUNS / "issue111u/run/06_race_medal.first_valid.aidl").read_text()
+    codes = [d.code for d in aidl_lang.compile(source=src).diagnostics if d.severity == "warning"]
+    assert codes == ["W0516"]           # the letters 0 mm from the ribbon slot: real
+    through = src.replace("border = Circle(center=(0, 0), diameter=66)",
+                          "border = Circle(center=(0, 0), diameter=46)")
+    assert "W0513" in [d.code for d in aidl_lang.compile(source=through).diagnostics]

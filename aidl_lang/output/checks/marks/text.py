@@ -289,6 +289,10 @@ def _check_marks(strokes, marks, tg, boxes, bb, sizes, said, sink, tick=None) ->
         length = float(through[k])
         if length <= max(0.2, 0.25 * size):
             continue
+        if g.data.get("along") is not None and \
+                _seg_gap(strokes[i][:, 0], strokes[i][:, 1], *segs[m])[0] > 0.005:
+            continue        # its box is its arc's, not its letters' (run u's medal: a border
+            #                 8 mm clear of "CITY RUN 2026" was said to cross "C" and "6")
         said.add(g)
         labels = [Label(m.span, f"`{m.label}` is here", primary=False)] if m.span else []
         at = _letters_crossed(g, strokes[i], segs[m], boxes[i][1], inner[i])
@@ -888,12 +892,22 @@ def _marks_over_marks(d: Drawing, tick=None) -> tuple[dict, dict]:
                 ring_edges[q] = (_edges(rings[q]), np.concatenate(rings[q]),
                                  np.concatenate([np.roll(R, -1, axis=0) for R in rings[q]]))
             edges, E0, E1 = ring_edges[q]
+            circles = [it for it in items_of[marks[q]] if it[0] == "circle"]
+            exact = len(circles) == len(rings[q])   # rings that are circles: measured exactly
             for P in opens:
                 ends = np.array([P[0], P[-1]])
-                inside = _inside(ends, edges)
+                if exact:   # (a 32-gon's chords lie 0.35 mm in at r 72: run u's ticks drawn
+                    # to a dial's rim ended "inside" it between the polygon's corners)
+                    dist = [np.hypot(*(ends - np.asarray(c, float)).T) - r for _, c, r in circles]
+                    inside = np.sum([dd < 0 for dd in dist], axis=0) % 2 == 1
+                    gaps = list(np.min(np.abs(dist), axis=0))
+                else:
+                    inside = _inside(ends, edges)
+                    gaps = None
                 if inside[0] == inside[1]:
                     continue
-                gaps = [_seg_gap(E0, E1, e[None], e[None])[0] for e in ends]
+                if gaps is None:
+                    gaps = [_seg_gap(E0, E1, e[None], e[None])[0] for e in ends]
                 if min(gaps) <= OVERDRAWN_TOL:
                     continue            # drawn to the outline: meant
                 into = ends[1] if inside[1] else ends[0]
