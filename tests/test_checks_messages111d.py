@@ -86,3 +86,24 @@ def test_a_border_clear_of_text_along_a_circle_is_not_said_to_cross_it():
     through = src.replace("border = Circle(center=(0, 0), diameter=66)",
                           "border = Circle(center=(0, 0), diameter=46)")
     assert "W0513" in [d.code for d in aidl_lang.compile(source=through).diagnostics]
+
+
+def test_W0508s_move_leaves_room_for_a_countersinks_head():
+    """Run t's hay feeder: screw holes touching hay slots, countersunk 8 mm; W0508's move
+    (0.52 mm) left 0.5 mm beside the drill and W0528 then said the head lay over the slot.
+    The move now counts the head; made as the hint says, nothing is left to warn."""
+    src = (RUNS / "issue111t/run/03_hay_feeder_front.first_valid.aidl").read_text()
+    r = aidl_lang.compile(source=src)
+    ws = [d for d in r.diagnostics if d.code == "W0508"]
+    assert len(ws) == 2
+    moved = src
+    for w in ws:
+        assert "(the countersink's or counterbore's head 2 mm of it)" in w.hint
+        dx, dy = map(float, re.search(r"by \((-?[\d.]+), (-?[\d.]+)\) mm", w.hint).groups())
+        name = re.search(r"moves `front\.screws\.(\w)`", w.hint).group(1)
+        x0 = {"a": -80, "b": 80}[name]
+        moved = moved.replace(f"{name} = Circle(center=({x0}, 100)",
+                              f"{name} = Circle(center=({x0 + dx:g}, {100 + dy:g})")
+    assert moved != src
+    r2 = aidl_lang.compile(source=moved)
+    assert [d.code for d in r2.diagnostics if d.severity == "warning"] == []

@@ -657,8 +657,14 @@ def _merge_fix(d: Drawing, s: Structure, shape, a: _Openings, i: int, j: int, t:
     the defect (``move``: the sentence when no move is found; ``near``: what the part's
     moves share, :func:`.clearing.move_fix`)."""
     wall = max(t, MIN_WALL)
+    # a countersink's or counterbore's head needs the material under it too (run t's hay
+    # feeder: the move left 0.5 mm beside the drill and W0528 said the head was over the slot)
+    sinks = getattr(d, "sinks", None) or ()
+    extra = sum(max([(sk.diameter - sk.hole_d) / 2 for sk in sinks
+                     if sk.hole.startswith(a.cuts[k - 1].hole.path + ".")], default=0.0)
+                for k in (i, j)) if sinks else 0.0
     for mover, other in ((j, i), (i, j)):
-        got = move_fix(d, s, shape, a.cuts, mover - 1, other - 1, wall, sink, near)
+        got = move_fix(d, s, shape, a.cuts, mover - 1, other - 1, wall + extra, sink, near)
         if got is None:
             continue
         fix, (dx, dy), g, n, size = got
@@ -667,8 +673,11 @@ def _merge_fix(d: Drawing, s: Structure, shape, a: _Openings, i: int, j: int, t:
         smaller = f"; or make its radius {size} so that it clears" if size else ""
         return (f"move {a.names[mover]} {_enough(math.hypot(dx, dy) - 2 * CHORD_TOL)} mm "
                 f"further from {a.names[other]}: by ({dx:.2f}, {dy:.2f}) mm, the shortest move "
-                f"that leaves {wall:g} mm of material between them and as much to the other "
-                f"holes and the outline (the suggested fix moves {what} so){smaller}", fix)
+                f"that leaves {wall + extra:g} mm of material between them"
+                + (f" (the countersink's or counterbore's head {extra:g} mm of it)"
+                   if extra else "")
+                + f" and as much to the other holes and the outline (the suggested fix moves "
+                f"{what} so){smaller}", fix)
     return move, None
 
 
