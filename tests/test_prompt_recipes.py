@@ -70,3 +70,24 @@ def test_a_hexagram_of_two_regular_triangles_shares_one_centre():
             a = math.radians(a0 + 120 * k)
             assert vals[f"p.star.{n}.p{k}"] == pytest.approx((30 * math.cos(a), 30 * math.sin(a)),
                                                              abs=1e-9)
+
+
+def test_the_prompts_heart_is_one_symmetric_piece_of_two_lines_and_two_arcs(tmp_path):
+    """A heart was reached for in runs j, p and t (t's two circles over a triangle left spurs):
+    the prompt's two Hulls of a circle and a point make one piece, mirror-symmetric, whose
+    DXF outline (ezdxf) is 2 lines and 2 arcs of radius 9 mm."""
+    import ezdxf
+    r = aidl_lang.compile(source="""solid tag {
+    left = Hull(Circle(center=(-8, 5), radius=9), Point(0, -16))
+    right = Hull(Circle(center=(8, 5), radius=9), Point(0, -16))
+}
+""")
+    assert r.ok and not [d for d in r.diagnostics if d.severity == "warning"]
+    (p,) = r.parts
+    assert p.bbox == pytest.approx((-17, -16, 17, 14), abs=1e-9)
+    out = tmp_path / "heart.dxf"
+    r.write(out)
+    (pl,) = [e for e in ezdxf.readfile(out).modelspace() if e.dxf.layer.upper() == "CUT"]
+    pts = list(pl.get_points("xyb"))
+    assert len(pts) == 4 and sum(abs(b) > 1e-9 for *_, b in pts) == 2     # 2 arcs, 2 lines
+    assert sorted(round(x, 9) for x, *_ in pts) == sorted(round(-x, 9) for x, *_ in pts)

@@ -106,7 +106,8 @@ stand at the top or inside a structure (for it and its children); `-o x.gcode`: 
 Conventions: y points up; angles and `rotation=` turn counter-clockwise from +x. At rotation
 0: a RegularPolygon's first vertex is on +x (a hexagon has flats at top and bottom), a
 Triangle(center, base, height) points up (apex c at +y; center: its box's, so a hexagram is
-two `RegularPolygon(center, radius, 3)`, rotation 90 and 270 deg), a Slot lies along x; a Slot's length
+two `RegularPolygon(center, radius, 3)`, rotation 90 and 270 deg; a heart: `Hull(Circle(center=(-8, 5),
+radius=9), Point(0, -16))` and its mirror at x 8), a Slot lies along x; a Slot's length
 is end to end; a Text position is on the baseline (set `valign="middle"` to center it).
 Letters as the part (cake topper, sign, house number): `Text(..., font="sans:Bold")` (or "serif",
 a .ttf) is filled outlines: material in a solid (join them: a rail `width=word.bb.width`),
