@@ -107,3 +107,16 @@ def test_W0508s_move_leaves_room_for_a_countersinks_head():
     assert moved != src
     r2 = aidl_lang.compile(source=moved)
     assert [d.code for d in r2.diagnostics if d.severity == "warning"] == []
+
+
+def test_an_f_string_assert_message_is_told_the_message_is_plain():
+    """Run t wrote `assert ..., f"... {x}"`: E0001 "expected a string" said nothing of why;
+    the hint says the message is plain and E0405 shows the values."""
+    r = aidl_lang.compile(source="""solid p {
+    body = Rectangle(center=(0, 0), width=40, height=20)
+    assert body.width == 40 mm, f"width {body.width}"
+}
+""")
+    (e,) = [d for d in r.diagnostics if d.is_error]
+    assert (e.code, e.span.line, e.span.col) == ("E0001", 3, 33)
+    assert e.hint.startswith("an assert's message is a plain string")

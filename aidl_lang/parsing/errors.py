@@ -101,6 +101,11 @@ def _report(e: ParseError, text: str, path: str, pos: int, sink: DiagnosticSink)
     if tok.type in ("NAME", "NUMBER", "STRING", "FSTRING", "LPAR", "LSQB") and "COMMA" in exp \
             and _open_paren(text, pos):
         hint = f"a `,` is probably missing before `{tok}`"
+    elif tok.type == "FSTRING" and re.match(r"assert\b", head):
+        # (run t: `assert ..., f"... {x} ..."`: the message is said as written; E0405 shows
+        # the values the condition reads)
+        hint = ("an assert's message is a plain string (\"sail 70 wide\"): when the assert "
+                "fails, E0405 shows the value of each name and member it reads")
     elif str(tok) == "=" and re.match(r"\s*units\s*$", head):
         hint = "`units` is a statement without `=`: `units mm` (or `in`, `cm`, ...)"
     elif str(tok) == "=" :
