@@ -120,3 +120,18 @@ def test_an_f_string_assert_message_is_told_the_message_is_plain():
     (e,) = [d for d in r.diagnostics if d.is_error]
     assert (e.code, e.span.line, e.span.col) == ("E0001", 3, 33)
     assert e.hint.startswith("an assert's message is a plain string")
+
+
+def test_an_equation_places_its_first_sides_feature_on_the_others():
+    """Run w's cup holder: `label.t.position.x == (mug.c.right.x + notch.end.left.x) / 2`
+    moved the mug hole 8.76 mm from where it was written (the last-named hole alone was held)
+    and the model's own assert on the mug failed.  The first side's feature moves to the rest:
+    the holes stay, the label goes midway."""
+    src = (RUNS / "issue111w/drafts/07_camp_cup_holder.attempt1.aidl").read_text()
+    r = aidl_lang.compile(source=src)
+    assert r.ok and not [d for d in r.diagnostics if d.severity == "warning"]
+    v = {x.name: x.mm for x in r.values}
+    assert v["holder.mug.c.center"] == (-30.0, 0.0)
+    assert v["holder.notch.end.center"] == (45.0, 0.0)
+    # midway between the mug's right (10) and the notch end's left (45 - 11.2)
+    assert abs(v["holder.label.t.position"][0] - (10 + 33.8) / 2) < 1e-9

@@ -47,8 +47,11 @@ def placed_on(s: Structure) -> tuple[list, list, dict]:
         if not args:
             continue
         groups: list = []           # s's children reached, in the order written
+        lead = 0                    # how many of them the first argument reaches
         part = False
-        for owners in args:
+        for k, owners in enumerate(args):
+            if k == 1:
+                lead = len(groups)
             # by depth, then by path: a set of structures iterates in the order of their
             # addresses, so ties went one way or the other with what the process had
             # compiled before (a router template's solve: 6 Newton steps alone, 33 after
@@ -67,6 +70,16 @@ def placed_on(s: Structure) -> tuple[list, list, dict]:
                 edges.setdefault(id(t), set())
             continue
         solids = [t for t in groups if t.kind not in FEATURE_KINDS]
+        if 0 < lead < len(groups) and len(args) > 1 and len(solids) in (0, len(groups)):
+            # the first argument's children move to the rest, each a reference: an equation
+            # of a label and two holes (run w's cup holder: `label.t.position.x == (mug.c.right.x
+            # + notch.end.left.x) / 2` moved the mug hole 8.76 mm, the last-named alone held)
+            for ref in groups[lead:]:
+                refs[id(ref)] = ref
+            for t in groups[:lead]:
+                movers[id(t)] = t
+                edges.setdefault(id(t), set()).update(id(r) for r in groups[lead:])
+            continue
         ref = solids[-1] if solids and len(solids) < len(groups) else groups[-1]
         refs[id(ref)] = ref
         for t in groups:
