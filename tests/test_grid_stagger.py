@@ -58,14 +58,14 @@ def test_a_grid_indexed_as_rows_says_its_list_is_flat():
     r = aidl_lang.compile(source="""solid p {
     body = Rectangle(center=(0, 0), width=100, height=100)
     hole h { c = Circle(center=(-35, -35), diameter=5) }
-    cells = GridPattern(h, 8, 8, 10)
-    assert cells[1][2].c.center.x == -15 mm
-    assert cells[1 * 8 + 2].c.center.x == -15 mm
+    grid = GridPattern(h, 8, 8, 10)
+    assert grid[1][2].c.center.x == -15 mm
+    assert grid[1 * 8 + 2].c.center.x == -15 mm
 }
 """)
     (e,) = [d for d in r.diagnostics if d.is_error]
     assert (e.code, e.span.line) == ("E0111", 5)
     assert e.hint == ("a pattern's list is flat, one copy an item: a GridPattern's is row by row, "
-                      "copy (r, c) is `cells[r * cols + c]`")
+                      "copy (r, c) is `grid[r * cols + c]`")
     assert "gives one flat list, row by row: copy (r, c) is `g[r * cols + c]`" in \
         " ".join(lookup_text("GridPattern")[0].split())

@@ -270,8 +270,9 @@ class Expressions:
             hint = "only lists (loops, comprehensions, `poly.points`) are indexed"
             if isinstance(e.obj, A.Index) and isinstance(obj, (StructRef, GeomRef)):
                 # `cells[r][c]` of a GridPattern (issue 111, run s: rows of lists guessed)
+                name = e.obj.obj.id if isinstance(e.obj.obj, A.Name) else "cells"
                 hint = ("a pattern's list is flat, one copy an item: a GridPattern's is row by "
-                        "row, copy (r, c) is `cells[r * cols + c]`")
+                        f"row, copy (r, c) is `{name}[r * cols + c]`")
             raise EvalError("E0111", f"{_a(type_name(obj))} cannot be indexed", e.obj.span,
                             hint=hint)
         i = self._q(idx, e.index.span).const()

@@ -395,8 +395,8 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
             else:
                 msg += where
             hint = (f"the nearest corner of the outline is at ({near[0]:.6g}, {near[1]:.6g}) "
-                    f"mm: name the two edges that meet there, or give its point (the way "
-                    f"where an edge is an Ellipse's or a curve's, which has no name), "
+                    f"mm: name the two edges that meet there, or give its point (the only "
+                    f"way when an edge is an Ellipse's or a curve's, which has no name), "
                     f"`{kind}(at=({_mm4(near[0])}, {_mm4(near[1])}), "
                     f"{'radius' if fillet else 'distance'}={r:.6g} mm)`"
                     if near is not None else

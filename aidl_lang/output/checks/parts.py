@@ -212,6 +212,7 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
                     "are separate parts, make the structure an `assembly`")
     cutters = _cutters(d, s, shape, [items[k] for k in split]) if split else []
     apart = ""
+    letters: list = []
     if cutters:
         shapes = ", ".join(items[k][0] for k in split[:3])
         holes = ", ".join(f"`{h.path}`" for h in cutters[:4]) + (", ..." if len(cutters) > 4 else "")
@@ -230,21 +231,17 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
     # pieces of one shape cut apart by holes: the holes say it, not "{`a`}; {`a`}; ..."
     listed = "" if apart and len(set(groups)) == 1 else (
         ": " + "; ".join(groups) + ("; ..." if len(pieces) > 6 else ""))
-    small = min(pieces, key=_area)
-    if apart and not _letters_said(apart) and _area(small) < 0.5 * max(map(_area, pieces)):
-        b = small.bounds()                  # where the piece cut off is (issue 111, run p:
-        # a heart's tip cut off by its joint, unsaid; pieces of one size: none is "the" one)
-        apart += (f"; the smallest piece, {_area(small):.3g} mm^2, lies from ({b[0]:.2f}, "
-                  f"{b[1]:.2f}) to ({b[2]:.2f}, {b[3]:.2f})")
+    if apart and not letters:       # where the piece cut off is (issue 111, run p: a heart's
+        areas = [_area(p) for p in pieces]      # tip cut off by its joint, unsaid; pieces of
+        k = min(range(len(pieces)), key=areas.__getitem__)  # one size: none is "the" one)
+        if areas[k] < 0.5 * max(areas):
+            b = pieces[k].bounds()
+            apart += (f"; the smallest piece, {areas[k]:.3g} mm^2, lies from ({b[0]:.2f}, "
+                      f"{b[1]:.2f}) to ({b[2]:.2f}, {b[3]:.2f})")
     sink.warning(
         "W0504",
         f"solid `{s.path}` falls apart into {len(pieces)} separate pieces" + listed + apart,
         s.span, hint=hint)
-
-
-def _letters_said(apart: str) -> bool:
-    """W0504's words name a word's counters that fall out (their places are the letters')."""
-    return "the counters of" in apart
 
 
 def _cutters(d: Drawing, s: Structure, shape, split: list) -> list:

@@ -228,12 +228,10 @@ def _held_helpers(s: Structure, helpers: list) -> set:
             # helpers whose box it reads, named after a child first (run t's photo-booth
             # frame: the band moved 3.5e-5 mm to the words, then 12.5 mm when they were off)
             read = {id(t.target) for eq in c.deferred for t in collect(eq.expr, [])}
-            boxed = [i for i, g in enumerate(helpers) if id(g) in read]
-            for i in boxed:
-                if s not in c.args[0] and any(s in a for a in c.args[1:]):
-                    ref[i] = True
-                else:
-                    other[i] = True
+            after = s not in c.args[0] and any(s in a for a in c.args[1:])
+            for i, g in enumerate(helpers):
+                if id(g) in read:
+                    (ref if after else other)[i] = True
             continue
         if not hit:
             continue

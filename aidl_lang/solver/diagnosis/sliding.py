@@ -24,9 +24,10 @@ class Sliding(Compared):
     ``read`` those axes (``{id: "x"|"y"|"x, y"}``: a changed value moves it there, W0404);
     ``bounded`` the ids of those that slide only within inequalities not reached
     (``Inside``, ...); ``placed`` the ids of those a relation places on a sibling that stays
-    where written (the labels of `Below(labels, holes, gap=4)`: harmless, said so).  A feature that slides only along axes no row reads stays where it
-    is written (issue 111: `AlignTop(groove, body)` placed the groove in y and left x as
-    written, as a groove with no constraint at all)."""
+    where written (the labels of `Below(labels, holes, gap=4)`: harmless, said so).  A
+    feature that slides only along axes no row reads stays where it is written (issue 111:
+    `AlignTop(groove, body)` placed the groove in y and left x as written, as a groove with
+    no constraint at all)."""
     __slots__ = ("placement", "features", "constrained", "bounded", "read", "placed")
 
     def __init__(self, placement: list | None = None, features: list | None = None,
@@ -164,12 +165,12 @@ def _held(found: list) -> tuple[set, set]:
     the solve keeps where they are written although rows read them, those no constraint
     moves to a sibling (the references among siblings, and those placed only on the part in
     other axes: :func:`..core.tree.placed_on`, held while the features are placed), and of
-    those placed on siblings, rank by rank (not in a cycle of relations).  Labels tied to holes written by their coordinates,
-    `At(names.t[i].position, knobs.c[i].center, dy=-11 mm)`, go with the holes, which stay
-    where written (issue 111: W0404 warned both, "can slide along x, y", and its hint's tie
+    those placed on siblings, rank by rank (not in a cycle of relations).  Labels tied to
+    holes written by their coordinates, `At(names.t[i].position, knobs.c[i].center,
+    dy=-11 mm)`, go with the holes, which stay where written (issue 111: W0404 warned both, "can slide along x, y", and its hint's tie
     to the part was a second placement of the labels)."""
     from ..core.tree import placed_on
-    out: set = set()
+    held: set = set()
     placed: set = set()
     seen: set = set()
     for t, _ in found:
@@ -178,9 +179,9 @@ def _held(found: list) -> tuple[set, set]:
             continue
         seen.add(id(up))
         _, ranks, on = placed_on(up)
-        out |= {id(c) for c in up.children.values() if not on.get(id(c))}
+        held |= {id(c) for c in up.children.values() if not on.get(id(c))}
         placed |= {id(m) for rank in ranks for m in rank if on.get(id(m))}
-    return out, placed
+    return held, placed
 
 
 MAX_CANDIDATES = 400     # features of one part whose joint motions are searched (2 per axis)

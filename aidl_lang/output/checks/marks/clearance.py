@@ -43,14 +43,13 @@ def check_text_near_cut(texts: list, roots: dict, loops: dict | None, sink) -> N
         d, pa, _ = _pair_gap(S0[pairs[:, 0]], S1[pairs[:, 0]], E0[pairs[:, 1]],
                              E1[pairs[:, 1]])
         mk = owner[pairs[:, 0]]
+        order = np.lexsort((d, mk))                 # each text's nearest pair first
+        first = order[np.r_[True, mk[order][1:] != mk[order][:-1]]]
         by_statement: dict = {}
-        for k in np.unique(mk):
-            at = np.flatnonzero(mk == k)
-            j = at[np.argmin(d[at])]
-            if d[j] < TEXT_CLEAR - 1e-6:
-                g = geoms[int(k)][0]
-                by_statement.setdefault(g.span or g, []).append(
-                    (float(d[j]), g, pa[j], bool(hole[pairs[j, 1]])))
+        for j in first[d[first] < TEXT_CLEAR - 1e-6].tolist():
+            g = geoms[int(mk[j])][0]
+            by_statement.setdefault(g.span or g, []).append(
+                (float(d[j]), g, pa[j], bool(hole[pairs[j, 1]])))
         for group in by_statement.values():
             group.sort(key=lambda f: f[0])
             gap, g, pm, in_hole = group[0]
