@@ -465,7 +465,10 @@ _DEFS = {
                           doc="count instances turned counter-clockwise about center: angle is "
                               "the span from first to last (360 deg: evenly all round), step the "
                               "angle between neighbours; gives [original, copy1, ...]; "
-                              "start_angle turns all (original: construction)."),
+                              "start_angle turns all further from where the original is drawn "
+                              "(original: construction), so a first copy at 45 deg is the "
+                              "original on +x with start_angle=45, or the original at 45 with "
+                              "none."),
     "GridPattern": _c([A("target", "boxed"), A("rows", "number"), A("cols", "number"),
                        A("spacing", "any"), _STAGGER],
                       [A("target", "boxed"), A("rows", "number"), A("cols", "number"),

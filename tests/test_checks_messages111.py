@@ -31,7 +31,7 @@ def test_W0404_a_groove_placed_in_y_and_written_in_x_is_harmless():
     """03_card_stand: `AlignTop(groove, body)` places the card groove in y; its x (15 mm left
     of center) is as written and no constraint reads it.  The solve keeps it there (here
     even after moving the groove 16.5 mm up), as it keeps a groove nothing places: no
-    W0404, and the ok line says "stays where written (harmless)"."""
+    W0404, and the ok line says "stays where written on its part (harmless)"."""
     src = _read("run/03_card_stand.first_valid.aidl")
     moved = src.replace("center=(-15, 16.5)", "center=(-15, 0)")
     assert moved != src
@@ -43,7 +43,7 @@ def test_W0404_a_groove_placed_in_y_and_written_in_x_is_harmless():
         assert [d.code for d in r.diagnostics if d.severity == "warning"] == []
         assert _values(r)["card_stand.front.groove.g.center"] == pytest.approx((-15, 16.5),
                                                                               abs=1e-9)
-        assert "hole `card_stand.front.groove` free but stays where written (harmless)" in \
+        assert "hole `card_stand.front.groove` free but stays where written on its part (harmless)" in \
             r.freedom()["text"]
 
 
@@ -62,7 +62,7 @@ def test_W0404_not_for_a_groove_placed_on_a_groove_that_stays_where_written():
     r = aidl_lang.compile(two.replace("GAP", "10 mm"))
     r.find_redundant(seconds=None)
     assert _w(r, "W0404") == []
-    assert "hole `card_stand.front.groove2` free but stays where written; hole " \
+    assert "hole `card_stand.front.groove2` free but stays where written on its part; hole " \
         "`card_stand.front.groove` placed on it (harmless)" in r.freedom()["text"]
     v = _values(r)
     assert (v["card_stand.front.groove.g.center"][0], v["card_stand.front.groove2.g.center"][0]) \

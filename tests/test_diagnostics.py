@@ -856,7 +856,7 @@ def test_W0404_a_hole_placed_in_x_only_stays_where_written_in_y():
     r = aidl_lang.compile(source=src.replace("EXTRA", ""))
     assert [d for d in r.find_redundant() if d.code == "W0404"] == []
     assert r.freedom()["text"] == ("3 degrees of freedom left (hole `p.h` free but stays where "
-                                   "written (harmless); 2 where the whole part sits (harmless)), "
+                                   "written on its part (harmless); 2 where the whole part sits (harmless)), "
                                    "see --dof")
     tied = src.replace("EXTRA", "    hole k { c = Circle(center=(10, -3), radius=1) }\n"
                                 "    AlignCenterX(k, body)\n"
@@ -864,7 +864,7 @@ def test_W0404_a_hole_placed_in_x_only_stays_where_written_in_y():
     r = aidl_lang.compile(source=tied)
     assert [d for d in r.find_redundant() if d.code == "W0404"] == []
     assert r.freedom()["text"] == (
-        "3 degrees of freedom left (hole `p.h` free but stays where written; hole `p.k` placed "
+        "3 degrees of freedom left (hole `p.h` free but stays where written on its part; hole `p.k` placed "
         "on it (harmless); 2 where the whole part sits (harmless)), see --dof")
     r = aidl_lang.compile(source=tied.replace("6 mm", "10 mm"))
     v = {x.name: x.mm for x in r.values}

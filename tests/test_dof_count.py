@@ -236,7 +236,7 @@ def test_without_the_ancestor_constraint_the_hole_floats(tmp_path):
     # placed by its coordinates alone, the hole stays where written (issue 84: "can slide
     # along x, y" read as a problem to three of four models)
     assert doc["freedom"] == ("2 degrees of freedom left (hole `plate.bore` free but stays "
-                              "where written (harmless)), see --dof")
+                              "where written on its part (harmless)), see --dof")
 
 
 def test_an_ancestor_row_pins_only_what_it_reads(tmp_path):
@@ -355,7 +355,7 @@ def test_a_feature_that_can_slide_is_named_and_warned(tmp_path):
 def test_a_feature_placed_by_its_coordinates_alone_stays_where_written(tmp_path):
     """Issue 84: "free: hole `plate.recess` can slide along x, y" read as a problem to three
     of four models, though the solve keeps a feature nothing else places where it is written.
-    Such a feature is "free but stays where written (harmless)", on the ok line, in the API's
+    Such a feature is "free but stays where written on its part (harmless)", on the ok line, in the API's
     and the MCP answer's freedom text; one a constraint places and that still slides (W0404)
     keeps "can slide"."""
     from aidl_lang import api
@@ -363,19 +363,19 @@ def test_a_feature_placed_by_its_coordinates_alone_stays_where_written(tmp_path)
     src = GAUGE.replace("EXTRA", "hole recess { r = Rectangle(center=(20, -5), width=6, "
                                  "height=4) }")
     said = ("(free: hole `gauge.bits` can slide along y; drawing `gauge.labels` can slide "
-            "along y; hole `gauge.recess` free but stays where written (harmless); 2 where the "
+            "along y; hole `gauge.recess` free but stays where written on its part (harmless); 2 where the "
             "whole part sits (harmless))")
     doc = _check(tmp_path, src, "--json")
     assert said in doc["freedom"]
     assert [d["message"].split()[1] for d in doc["diagnostics"] if d["code"] == "W0404"] == [
         "`gauge.bits`", "`gauge.labels`"]                       # the recess: no warning
     assert said in api.compile(src).freedom()["text"]
-    assert "hole `gauge.recess` free but stays where written (harmless)" in \
+    assert "hole `gauge.recess` free but stays where written on its part (harmless)" in \
         check(Workspace(tmp_path), source=src, dof=True)["freedom"]["text"]
     placed = src.replace("\n}\n", "\n    bits.bb.top == plate.bb.top - 5\n}\n")
     doc = _check(tmp_path, placed, "--json")
     assert doc["freedom"].endswith("degrees of freedom left (hole `gauge.recess` free but "
-                                   "stays where written (harmless); 2 where the whole part "
+                                   "stays where written on its part (harmless); 2 where the whole part "
                                    "sits (harmless)), see --dof")
     assert not [d for d in doc["diagnostics"] if d["code"] == "W0404"]
 
@@ -411,7 +411,7 @@ def test_rigid_takes_any_number_of_structures_and_holds_their_inside(tmp_path):
     free = _check(tmp_path, src.replace("RIGID", ""), "--json", "--dof")
     assert free["freedom"] == ("10 degrees of freedom left (hole `plate.a`, hole `plate.b`, "
                                "hole `plate.c` and 1 more free but stay where written "
-                               "(harmless); 2 where the whole part sits (harmless)), see --dof")
+                               "on their parts (harmless); 2 where the whole part sits (harmless)), see --dof")
     doc = _check(tmp_path, src.replace("RIGID", "Rigid([a, b, c, d, body])"), "--json", "--dof")
     assert doc["freedom"] == ("2 degrees of freedom left (free: only where the whole part sits "
                               "(harmless)), see --dof")
@@ -508,7 +508,7 @@ def test_a_structure_moving_with_its_frame_is_counted_once(tmp_path):
     doc = _check(tmp_path, structures(3), "--json", "--dof")
     assert doc["freedom"].startswith("12 degrees of freedom left (hole `a.s[0].h`, hole "
                                      "`a.s[1].h`, hole `a.s[2].h` free but stay where written "
-                                     "(harmless); 6 where the parts sit (harmless))")
+                                     "on their parts (harmless); 6 where the parts sit (harmless))")
     dof = {d["structure"]: (d["dof"], d["floating"]) for d in doc["dof"]}
     assert dof["a"] == (6, ["a.s[0] (position)", "a.s[1] (position)", "a.s[2] (position)"])
     assert all(dof[f"a.s[{i}]"] == (2, [f"a.s[{i}].h (position)", f"a.s[{i}].r"])

@@ -125,7 +125,7 @@ def test_holes_tied_to_each_other_stay_where_written_and_no_W0404():
     assert v["plate.top_screw.c.center"] == pytest.approx((0, 30.15), abs=EXACT)
     assert v["plate.bottom_screw.c.center"] == pytest.approx((0, -30.15), abs=EXACT)
     import aidl_lang
-    assert "hole `plate.top_screw` free but stays where written; hole `plate.bottom_screw` " \
+    assert "hole `plate.top_screw` free but stays where written on its part; hole `plate.bottom_screw` " \
         "placed on it (harmless)" in aidl_lang.compile(src).freedom()["text"]
     both = src.replace("60.3)\n", "60.3)\n    top_screw.bb.center == (0, 30.15)\n"
                                    "    bottom_screw.bb.center == (0, -30.15)\n")

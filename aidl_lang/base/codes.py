@@ -517,13 +517,13 @@ not to the part). Freedom of a whole part (where it sits on the sheet) is harmle
 reported; `aidl check` says it as "free: only where the whole part sits (harmless)". Nor is a
 feature along an axis that no constraint reads (its coordinates alone place it there): the
 solve keeps it where it is written, and the ok line says "hole `plate.recess` free but stays
-where written (harmless)", whether nothing places it (`plate.recess`) or a constraint places
+where written on its part (harmless)" (it moves with its part), whether nothing places it (`plate.recess`) or a constraint places
 it along the other axis (`AlignTop(groove, body)` and its x as written; issue 111). Nor is a
 feature placed on a sibling that stays where written (of two features related, the
 first-named moves to the second: labels `Below(labels, bits, gap=4)` of holes written by their
 coordinates, two screws with `VerticalDistance(bottom, top, 60.3)`): the ok line says "hole
-`plate.top` free but stays where written; hole `plate.bottom` placed on it (harmless)". A
-structure declared inside a standard-library template is the template's affair and is not
+`plate.top` free but stays where written on its part; hole `plate.bottom` placed on it
+(harmless)". A structure declared inside a standard-library template is the template's affair and is not
 reported to its user. Features in one cycle slide together and are each reported: tie one
 and check again (the others follow it); tying both with `.bb.center ==` repeats the relation
 between them (W0401).
@@ -1433,6 +1433,13 @@ hole, how far it runs out (its farthest point from the part's edge, and where) a
 shorten its slot (`length=`) or shrink it, or move it inward, by that much and a wall of twice
 the minimum. An edge notch meant as one (a finger notch, a cable exit, drawn with a shape of
 its own) is not warned.
+
+The same for a pattern's copy that runs out through the outer edge while the pattern's original
+is a closed hole (a pattern of holes, or of shapes in one hole): `AlignCenterX(peg, body)`
+centres the original, so of two peg holes 80 mm apart the second breaks out of a 160 mm plate.
+The warning names the deepest copy, how far it runs out and where, and how many copies do; to
+centre a pattern, place its original half the pattern's span off the centre. A row of notches
+whose original runs out too is drawn open on purpose and is not warned.
 
     import "std/plates.aidl"
     solid plate {

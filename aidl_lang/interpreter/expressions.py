@@ -305,13 +305,28 @@ class Expressions:
                 sc = Scope(outer, self.struct, self.file)
                 sc.vars[e.var] = item
                 self.scope = sc
-                if e.cond is not None and not self._truth(self.eval(e.cond), e.cond):
+                if e.cond is not None and not self._filter(e):
                     continue
                 out.append(self.eval(e.elt))
         finally:
             self.frames.pop()
             self.scope = outer
         return out
+
+    def _filter(self, e: A.ListComp) -> bool:
+        """The truth of comprehension ``e``'s filter for the item in scope; E0118 when it
+        reads solved geometry says that a filter runs before the solve, in an ``assert``
+        too (issue 111: a model counted a zig-zag's low points with a filter in an assert
+        and was told that `a == b` is a constraint)."""
+        try:
+            return self._truth(self.eval(e.cond), e.cond)
+        except EvalError as err:
+            if err.code == "E0118":
+                err.message = "a comprehension's filter cannot read geometry the solver moves"
+                err.hint = (f"the filter picks items before solving, in an `assert` too: "
+                            f"filter on a param or an index, or assert each item in a loop "
+                            f"(`for {e.var} in ... {{ assert ... }}`)")
+            raise
 
     def _e_Ternary(self, e):
         return self.eval(e.then) if self._truth(self.eval(e.cond), e.cond) else self.eval(e.orelse)

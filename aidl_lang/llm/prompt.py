@@ -123,7 +123,7 @@ A warning on a design exactly as requested is accepted in the program, never by 
 requested size: `min_wall` (W0507, W0519, W0520), `AllowOverlap(a, b)` (W0501, W0508, W0511,
 W0512, W0517; `AllowOverlap(lines, self)`: W0505), `construction=true` (W0506), an `assembly` for separate pieces (W0504).
 `aidl check` ends
-with `fully constrained` or `N degrees of freedom left`: harmless: "stays where written";
+with `fully constrained` or `N degrees of freedom left`: harmless: "stays where written on its part" (it moves with its part);
 "can slide" needs constraints.
 `aidl check --describe` describes the final part. `aidl import --infer d.dxf` writes a
 drawing as a program. `aidl set f.aidl NAME=VALUE` changes a param's value in the file. `aidl check --sweep` tries each `param`'s range and says the clean one.

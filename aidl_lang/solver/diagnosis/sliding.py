@@ -318,8 +318,9 @@ def sliding_text(sl: Sliding) -> str:
         if kept or follow:
             parts = []
             if kept:
-                parts.append(f"{_names(kept)} free but {'stays' if len(kept) == 1 else 'stay'} "
-                             "where written")
+                parts.append(f"{_names(kept)} free but "
+                             + ("stays where written on its part" if len(kept) == 1 else
+                                "stay where written on their parts"))
             if follow:
                 parts.append(f"{_names(follow)} placed on "
                              + (("it" if len(kept) == 1 else "them") if kept else

@@ -1,0 +1,131 @@
+"""``W0530`` for a pattern's copy that runs out through its part's outer edge while the
+pattern's original is a closed hole: the copy cuts a notch where a hole was drawn (issue 111,
+run v's towel-hook plate: `AlignCenterX(peg, body)` centred the pattern's *original*, so the
+second of two 12 mm peg holes 80 mm apart broke out of the plate's right edge by 6 mm, and no
+message said so).  A pattern whose original runs out too (a row of edge notches, a comb) is
+drawn open on purpose and is not warned; nor is a copy the standard library's closed-opening
+templates already report (:func:`.openings._check_closed_openings`).
+
+Copies are hole structures made by ``LinearPattern``/``CircularPattern``/``GridPattern`` of a
+hole (the original's ``pattern_copies``), or shapes of one hole made by a pattern of a shape.  Each one's
+vertices are tested against its solid's outline before its holes (``Cut.before``) grown by
+:data:`EDGE_TOL` with one point-in-polygon pass (:func:`..common._inside`, O((N + E) log N)),
+so the check grows as n log n in the copies, not as one boolean per copy."""
+from __future__ import annotations
+
+import manifold3d as mf
+import numpy as np
+
+from ..common import _edges, _inside
+
+EDGE_TOL = 0.01        # mm: a copy's vertex this far past the outline still counts as inside
+
+
+def check_pattern_edges(d, s, cuts, min_wall: float, sink, skip: set) -> None:
+    """W0530 for each copy of a pattern among the holes ``cuts`` of part ``s`` that runs out
+    through the outer edge of its solid while the pattern's original lies inside it (the
+    first such copy of each original warned, with how many copies run out).  ``skip``: the
+    templates whose own W0530 names them (:data:`.openings.CLOSED_OPENINGS`)."""
+    things: dict = {}                      # id(hole or shape) -> (it, its shape, its cut)
+    for c in cuts:
+        h = c.hole
+        if getattr(h, "template", None) in skip or c.before is None:
+            continue
+        shape = d.shapes.get(h)
+        if shape is not None and not shape.is_empty():
+            things[id(h)] = (h, shape, c)
+        for g, f in d.own.get(h, ()):      # a pattern of shapes inside one hole
+            if f is not None and not f.is_empty() and not g.construction:
+                things[id(g)] = (g, f, c)
+    groups: dict = {}                      # id(original) -> (original, [(copy, shape, cut)])
+    items: list = []                       # (thing, shape, cut): every original and copy
+    for key, (t, f, c) in things.items():
+        copies = [things[id(k)] for k in t.__dict__.get("pattern_copies", ())
+                  if id(k) in things]
+        if copies:
+            groups[key] = (t, copies)
+            items.append((t, f, c))
+            items.extend(copies)
+    if not groups:
+        return
+    outside = _outside_depths(items)
+    for key, (orig, copies) in groups.items():
+        if id(orig) in outside:
+            continue                       # the original runs out too: an edge pattern
+        out = [(h, outside[id(h)]) for h, _, _ in copies if id(h) in outside]
+        if not out:
+            continue
+        out.sort(key=lambda o: -o[1][0])   # the deepest first
+        h, (depth, (x, y)) = out[0][0], out[0][1]
+        name = _name(h)
+        more = f" ({len(out)} of its {len(copies)} copies do)" if len(out) > 1 else ""
+        need = np.ceil((depth + 2 * min_wall) * 10) / 10
+        sink.warning("W0530", f"{name}, a pattern's copy of `{_label(orig)}`, runs out through "
+                     f"the outer edge of `{s.path}` by {depth:.2f} mm (its farthest point, "
+                     f"about ({x:.2f}, {y:.2f})){more}, where the original is a closed hole: "
+                     f"the copy cuts a notch where a hole was drawn", _span(h, orig),
+                     hint=(f"place the whole pattern inside: move `{_label(orig)}` by at least "
+                           f"{need:g} mm away from that edge (what runs out and a wall of twice "
+                           f"the minimum); to centre a pattern, place its original half the "
+                           f"pattern's span off the centre, not on it" if len(out) == 1 else
+                           f"place or size the pattern so that every copy lies inside, {need:g} "
+                           f"mm further in at the deepest (what runs out and a wall of twice "
+                           f"the minimum): a smaller radius, step or count"))
+
+
+def _outside_depths(items: list) -> dict:
+    """For each ``(thing, shape, cut)`` of ``items``: ``id(thing) -> (depth,
+    (x, y))``, how far (mm) the shape's farthest vertex outside its solid's outline before
+    holes (``cut.before``) lies beyond it, and where; things wholly inside are left out.
+    The outline is grown by :data:`EDGE_TOL` and its vertices tested in one
+    :func:`..common._inside` per solid; the depth of a vertex outside is its distance to the
+    outline's edges (the few vertices outside only)."""
+    by_before: dict = {}
+    for it in items:
+        by_before.setdefault(id(it[2].before), []).append(it)
+    found: dict = {}
+    for group in by_before.values():
+        before = group[0][2].before
+        grown = before.offset(EDGE_TOL, mf.JoinType.Miter)
+        edges = _edges([np.asarray(p, dtype=float) for p in grown.to_polygons()])
+        pts, owner = [], []
+        for k, (_, shape, _) in enumerate(group):
+            P = [np.asarray(p, dtype=float) for p in shape.to_polygons() if len(p)]
+            if P:
+                V = np.concatenate(P)
+                pts.append(V)
+                owner.append(np.full(len(V), k))
+        if not pts:
+            continue
+        V, who = np.concatenate(pts), np.concatenate(owner)
+        off = ~_inside(V, edges)
+        if not off.any():
+            continue
+        O, ow = V[off], who[off]
+        x1, y1, x2, y2 = _edges([np.asarray(p, dtype=float) for p in before.to_polygons()])
+        dx, dy = x2 - x1, y2 - y1
+        L2 = dx * dx + dy * dy
+        depth = np.empty(len(O))
+        step = max(1, 1_000_000 // max(1, len(x1)))      # points x edges a block: <= 1e6
+        for i in range(0, len(O), step):
+            px, py = O[i:i + step, :1] - x1[None], O[i:i + step, 1:] - y1[None]
+            with np.errstate(divide="ignore", invalid="ignore"):
+                t = np.clip(np.where(L2 > 0, (px * dx + py * dy) / L2, 0.0), 0.0, 1.0)
+            depth[i:i + step] = np.hypot(px - t * dx, py - t * dy).min(axis=1)
+        for k in np.unique(ow):
+            sel = np.flatnonzero(ow == k)
+            j = sel[int(np.argmax(depth[sel]))]
+            found[id(group[int(k)][0])] = (float(depth[j]), (float(O[j, 0]), float(O[j, 1])))
+    return found
+
+
+def _label(t) -> str:
+    return t.path if hasattr(t, "path") else t.label
+
+
+def _name(t) -> str:
+    return f"hole `{t.path}`" if hasattr(t, "path") else f"shape `{t.label}`"
+
+
+def _span(t, orig):
+    return getattr(t, "span", None) or getattr(orig, "span", None)
