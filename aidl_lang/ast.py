@@ -293,6 +293,20 @@ class TemplateParam(Node):
         self.default = default
 
 
+class Func(Node):
+    """``def name(params) = expr``: a function, whose call is ``expr``'s value with the
+    parameters bound (numbers, points, lists; no geometry of its own)."""
+    __slots__ = ("name", "name_span", "params", "value")
+
+    def __init__(self, span: Span, name: str, name_span: Span, params: list["TemplateParam"],
+                 value: Node):
+        self.span = span
+        self.name = name
+        self.name_span = name_span
+        self.params = params
+        self.value = value
+
+
 class Def(Node):
     """``def KIND name(params):`` a structure template of kind ``kind``."""
     __slots__ = ("name", "name_span", "kind", "kind_span", "params", "body")

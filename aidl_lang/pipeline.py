@@ -428,7 +428,7 @@ def _empty_drawing(program, model: Model) -> bool:
         return False
     if not program.stmts:
         return True
-    return any(not isinstance(s, (A.Import, A.ParamDecl, A.Def, A.UnitsDecl, A.Assign))
+    return any(not isinstance(s, (A.Import, A.ParamDecl, A.Def, A.Func, A.UnitsDecl, A.Assign))
                for s in program.stmts)
 
 

@@ -513,7 +513,8 @@ _DEFS = {
                  cat="operation",
                  doc="Round every corner of this solid's (or hole's) final outline, holes "
                      "included, or only the corners at: a point, [edge1, edge2] (where they "
-                     "meet or cross), a shape's corners (`Fillet(plate, 4)`), or a list of "
+                     "meet or cross), [edge, circle or ellipse] (where the edge crosses "
+                     "its outline), a shape's corners (`Fillet(plate, 4)`), or a list of "
                      "these."),
     "Chamfer": _c([A("distance", "length")], [A("at", "any"), A("distance", "length")],
                   [A("a", "any"), A("b", "any"), A("distance", "length")],

@@ -168,6 +168,8 @@ class Checker:
             elif isinstance(st, A.Def):
                 file_names.add(st.name)
                 self.templates[st.name] = st
+            elif isinstance(st, A.Func):
+                file_names.add(st.name)
             elif isinstance(st, A.Import):
                 if st.alias:
                     file_names.add(st.alias)
@@ -186,7 +188,8 @@ class Checker:
                         self.sink.error(ex.code, ex.message, st.path_span, hint=ex.hint,
                                         suggestions=ex.suggestions)
                         self.import_failed = True
-        top = [s for s in program.stmts if not isinstance(s, (A.UnitsDecl, A.Import, A.ParamDecl, A.Def))]
+        top = [s for s in program.stmts
+               if not isinstance(s, (A.UnitsDecl, A.Import, A.ParamDecl, A.Def, A.Func))]
         file_names |= self.block_names(top)
         fscope = _Scope(None, file_names)
         struct_names = [s.name for s in top if isinstance(s, A.StructDecl)]
@@ -204,6 +207,11 @@ class Checker:
                         self.expr(p.default, fscope)
                 tscope = _Scope(fscope, names | self.block_names(st.body.stmts) | {st.name})
                 self.stmts(st.body.stmts, tscope)
+            elif isinstance(st, A.Func):
+                for p in st.params:
+                    if p.default is not None:
+                        self.expr(p.default, fscope)
+                self.expr(st.value, _Scope(fscope, {p.name for p in st.params} | {st.name}))
         self.stmts(top, _Scope(fscope, set(struct_names) | {"model"}))
         self.unread_settings(program)
 
@@ -649,7 +657,7 @@ def _imported_names(path: str, target: str, seen: frozenset = frozenset(),
     prog = parse_import(text, key, DiagnosticSink())
     out = set()
     for st in prog.stmts:
-        if isinstance(st, (A.Def, A.ParamDecl, A.Assign)):
+        if isinstance(st, (A.Def, A.Func, A.ParamDecl, A.Assign)):
             out.add(st.name)
             if defs is not None and isinstance(st, A.Def):
                 defs.setdefault(st.name, st)

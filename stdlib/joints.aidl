@@ -222,14 +222,15 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
 # `tab` + `clearance` by `thickness` + `clearance` for each tab and a medium
 # clearance hole for each screw, centred on the line through (cx, cy) where the
 # tab panel's middle stands. Screws up to `thickness` + 4 x `screw` mm long;
-# `screw=0` leaves them out (a glued or pressed joint).
+# `screw=0` leaves them out (a glued or pressed joint); `tabs=1`: one tab, a
+# tenon in its mortise, has no screw (they go between tabs).
 # Members: `gap` (within the panel), `overrun` (each gap run 1 mm past the
 # edges: drawn, in no box), `nut`, `slot`, `bolt`.
 # Anchor: (cx, cy) is the middle of the edge (part "slot": of the slots); rotation 0: the edge along x, the tabs toward -y.
 def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, screw=3,
                  clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
     assert (1 if part == "tab" or part == "slot" else 0) == 1, "part is \"tab\" or \"slot\""
-    assert tabs >= 2, "at least 2 tabs"
+    assert tabs >= 1, "at least 1 tab"
     assert tab < length / tabs, "each tab narrower than length / tabs"
     t = thickness
     p = length / tabs

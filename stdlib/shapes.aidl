@@ -3,8 +3,8 @@
 # Positions (cx, cy) are starting guesses: place an instance with constraints
 # (CenterInside, Above, Coincident, ...) in the structure that uses it.
 
-# A flat washer: a ring with a concentric bore. `outer` and `inner` are
-# diameters. Members: `ring` (the Circle), `bore` (a hole; `bore.b` its Circle).
+# A flat washer: a ring `outer` across with a concentric bore `inner` across (diameters).
+# Members: `ring` (the Circle), `bore` (a hole; `bore.b` its Circle).
 # Anchor: (cx, cy) is the centre of `ring`.
 def washer(outer=10 mm, inner=5 mm, cx=0 mm, cy=0 mm) -> solid {
     assert inner > 0 mm and inner < outer - 1 mm, "the bore is more than 0 and leaves a ring more than 0.5 mm wide: 0 mm < inner < outer - 1 mm"

@@ -154,3 +154,118 @@ def test_the_circular_pattern_line_says_start_angle_turns_from_where_the_origina
     text = system_prompt()
     line = [ln for ln in text.splitlines() if ln.startswith("- CircularPattern(")][0]
     assert "the original on +x with start_angle=45, or the original at 45 with none" in line
+
+
+def test_tab_and_slot_takes_one_tab_a_tenon_in_its_mortise():
+    """Run x's budgie ladder: `tab_and_slot(..., tabs=1, tab=8 mm, screw=0)` at each rung
+    end was E0405 "at least 2 tabs" (a dead end: its hint split the one tab in two).  One
+    tab is a tenon in its mortise, with no screw (the screws go between tabs): the panel
+    loses (60 - 8) x 3 mm beside its tab, the mate gets one 8 x 3 mm slot and no screw
+    hole, and the run's first program is valid."""
+    src = """import "std/joints.aidl"
+solid panel {
+    body = Rectangle(center=(0, 0), width=60, height=40)
+    t = tab_and_slot(part="tab", length=60 mm, tabs=1, tab=8 mm, cx=0 mm, cy=20 mm)
+}
+solid mate {
+    body = Rectangle(center=(100, 0), width=80, height=60)
+    s = tab_and_slot(part="slot", length=60 mm, tabs=1, tab=8 mm, cx=100 mm, cy=0 mm)
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok and r.diagnostics == []
+    panel, mate = r.parts
+    assert panel.area == pytest.approx(60 * 40 - (60 - 8) * 3, abs=1e-6)
+    assert mate.area == pytest.approx(80 * 60 - 8 * 3, abs=1e-6) and mate.holes == 1
+    first = RUNS / "issue111x/drafts/04_bird_perch_ladder.attempt1.aidl"
+    assert aidl_lang.compile(source=first.read_text(), path=str(first)).ok
+
+
+def test_fillet_where_an_edge_crosses_an_ellipse_or_a_circle():
+    """Run y's table-tennis blade: `Fillet([handle.left, blade], 8)` where the handle's edge
+    runs into an oval blade was E0108 ("got Ellipse"): an edge and a round shape now name
+    the corner where the edge crosses its outline.  The run's first program is valid, its
+    two inside corners rounded (more area than sharp, no W0406: each got the 8 mm asked); an
+    edge that does not reach the circle is E0408 with why."""
+    first = RUNS / "issue111y/drafts/06_table_tennis_blade.attempt1.aidl"
+    src = first.read_text()
+    r = aidl_lang.compile(source=src)
+    assert r.ok and not [d for d in r.diagnostics if d.code in ("W0406", "E0408")]
+    sharp = aidl_lang.compile(source=src.replace("    Fillet([handle.left, blade], 8)\n", "")
+                              .replace("    Fillet([handle.right, blade], 8)\n", ""))
+    assert sharp.ok
+    assert r.parts[0].area > sharp.parts[0].area + 2 * 5      # two inside corners filled
+    disc = """solid tag {
+    c = Circle(center=(0, 0), diameter=40)
+    bar = Rectangle(center=(0, -30), width=10, height=30)
+    Fillet([bar.left, c], 3)
+    Fillet([bar.right, c], 3)
+}
+"""
+    r2 = aidl_lang.compile(source=disc)
+    assert r2.ok and not [d for d in r2.diagnostics if d.code in ("W0406", "E0408")]
+    plain = aidl_lang.compile(source=disc.replace("    Fillet([bar.left, c], 3)\n", "")
+                              .replace("    Fillet([bar.right, c], 3)\n", ""))
+    assert r2.parts[0].area > plain.parts[0].area
+    apart = disc.replace("height=30)", "height=10)")      # the bar ends 5 mm below the disc
+    e = [d for d in aidl_lang.compile(source=apart).diagnostics if d.code == "E0408"]
+    assert len(e) == 2 and "does not reach the outline of `c`" in e[0].message
+
+
+def test_a_one_line_function_gives_its_expressions_value():
+    """Run y's encoder dial: `def angle_of(v) = 225 deg - v * 27 deg` was E0001 "expected
+    `->`" (a function of numbers is what the model reached for; a hint about `==` did not
+    fit).  It is a function now: the run's first program is valid, and a call binds by
+    position and keyword, with defaults, to numbers and points, its arguments checked as a
+    template's; a function that calls itself without end is E0302, not a crash."""
+    first = RUNS / "issue111y/drafts/03_encoder_dial_plate.attempt1.aidl"
+    assert aidl_lang.compile(source=first.read_text()).ok
+    src = """def angle_of(v) = 225 deg - v * 27 deg
+def on_circle(c, r, a=0 deg) = (c[0] + r * cos(a), c[1] + r * sin(a))
+def mid(p, q) = (p + q) / 2
+solid dial {
+    face = Circle(center=(0, 0), diameter=80)
+    hole ticks {
+        for v in range(11) { t = Circle(center=on_circle((0, 0), 32, angle_of(v)), diameter=3) }
+    }
+    assert distance(mid(ticks.t[0].center, ticks.t[10].center), (0 mm, -22.627417 mm)) < 0.001 mm
+    assert angle_of(10) == -45 deg
+    assert angle_of(v=4) == 117 deg
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [d.message for d in r.diagnostics]
+    vals = {v.name: v.value for v in r.values}
+    x, y = vals["dial.ticks.t[10].center"]
+    assert (x, y) == pytest.approx((32 * 0.5 ** 0.5, -32 * 0.5 ** 0.5), abs=1e-9)
+    assert not aidl_lang.compile(source=src.replace("-22.627417 mm", "-22.6 mm")).ok   # read
+    from aidl_lang.editor.fmt import format_source
+    defs = "".join(src.splitlines(keepends=True)[:3])
+    assert format_source(defs) == defs
+    bad = {"def f(x) = f(x) + 1\nsolid p { b = Circle(center=(0, 0), diameter=f(1)) }\n": "E0302",
+           "def f(x, y) = x * y\nsolid p { b = Circle(center=(0, 0), diameter=f(3)) }\n": "E0106",
+           "def f(x) = x\nsolid p { b = Circle(center=(0, 0), diameter=f(3, 4)) }\n": "E0104",
+           "def f(x) = x * q\nsolid p { b = Circle(center=(0, 0), diameter=f(3)) }\n": "E0101"}
+    for s, code in bad.items():
+        assert [d.code for d in aidl_lang.compile(source=s).diagnostics if d.is_error] == [code]
+
+
+def test_E0405_on_a_stars_box_says_the_circle_through_its_tips():
+    """Run y's shape-sorter lid: `assert star.bb.width > 40 mm` for a star "40 mm across the
+    tips" failed at 39.47 mm: a five-pointed star's box is narrower than the circle through
+    its tips (2 R sin 72 deg).  E0405 now says both, and which member gives the tips'."""
+    src = (RUNS / "issue111y/drafts/04_shape_sorter_lid.attempt1.aidl").read_text()
+    e = [d for d in aidl_lang.compile(source=src).diagnostics if d.code == "E0405"]
+    assert len(e) == 1
+    assert ("`lid.star.bb` is the star's box, 39.4688 x 37.5371 mm; the circle through its "
+            "tips is 41.5 mm across (`2 * star.s.outer_radius`)") in e[0].message
+    import math
+    assert 2 * 20.75 * math.sin(math.radians(72)) == pytest.approx(39.4688, abs=1e-4)
+    square = """solid p {
+    body = Rectangle(center=(0, 0), width=50, height=50)
+    hole h { s = RegularPolygon(center=(0, 0), sides=4, radius=10) }
+    assert h.bb.width > 30 mm
+}
+"""
+    e2 = [d for d in aidl_lang.compile(source=square).diagnostics if d.code == "E0405"]
+    assert len(e2) == 1 and "star's box" not in e2[0].message

@@ -560,7 +560,7 @@ def test_every_ast_node_init_sets_each_field_in_order():
     where it belongs, and ``repr`` shows them as a dataclass would."""
     import inspect
     classes = _node_classes()
-    assert len(classes) == 36          # MinWallDecl (issue 65)
+    assert len(classes) == 37          # MinWallDecl (issue 65); Func (issue 111)
     for cls in classes:
         fields = [n for c in reversed(cls.__mro__[:-1]) for n in c.__slots__]
         params = list(inspect.signature(cls.__init__).parameters)[1:]

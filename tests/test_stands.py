@@ -183,7 +183,7 @@ def test_dovetail_tails_and_sockets(tmp_path, clearance):
 
 @pytest.mark.parametrize("src,msg", [
     ('solid p { b = Rectangle(center=(0, 0), width=60, height=40)\n j = tab_and_slot(part="tabs") }', "part is"),
-    ('solid p { b = Rectangle(center=(0, 0), width=60, height=40)\n j = tab_and_slot(tabs=1) }', "at least 2 tabs"),
+    ('solid p { b = Rectangle(center=(0, 0), width=60, height=40)\n j = tab_and_slot(tabs=0) }', "at least 1 tab"),
     ('solid p { b = Rectangle(center=(0, 0), width=60, height=40)\n j = finger_edge(start="finger") }', "start is"),
     ('solid p { b = Rectangle(center=(0, 0), width=60, height=40)\n j = dovetail(angle=60 deg) }', "too steep"),
 ])

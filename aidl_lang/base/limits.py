@@ -70,6 +70,7 @@ CPU_SCALE = _cpu_scale()
 MAX_ITER = 10_000            # iterations of one loop or comprehension (Budget.items)
 MAX_GEOMETRY = 50_000        # geometry objects in one model (Budget.geometry)
 MAX_TEMPLATE_DEPTH = 16      # nested template instances
+MAX_CALL_DEPTH = 64          # nested calls of `def f(x) = ...` functions (and other frames)
 MAX_EXTENT = 1e6             # |coordinate|, size or length in mm a model may reach (1 km)
 # mm: the least positive minimum wall (`min_wall`, --min-wall): 1 um, below what any laser or
 # router holds; under it the wall checks measured their own rounding (the chords of a gear's

@@ -16,7 +16,8 @@ def early_constants(stmts: list) -> set:
     that read only params and constants above them: these are worked out in the file's order
     with the params (docs/language.md 2.3: `hooks = 5` then `param w = hooks * pitch`, issue
     111), the other constants after every param, as before."""
-    count = Counter(st.name for st in stmts if isinstance(st, (A.Assign, A.ParamDecl, A.Def)))
+    count = Counter(st.name for st in stmts if isinstance(st, (A.Assign, A.ParamDecl, A.Def,
+                                                                 A.Func)))
     tops = set(count)
     reads = {}
     above: set = set()

@@ -13,7 +13,7 @@ from ..geometry.relations.bbox import contains_bbox, reach as bbox_reach
 from ..geometry.core.model import Constraint, Equation, Model, Structure
 from ..geometry.relations.members import member as geom_member
 from ..geometry.core.expr import Lin, _new
-from ..geometry.core.values import (ANG, LEN, NUM, dim_name, PV, GeomRef, Namespace, Q, StructRef, Template, UnitError, angle_scale, owners_of, type_name, unify_add)
+from ..geometry.core.values import (ANG, LEN, NUM, dim_name, PV, Function, GeomRef, Namespace, Q, StructRef, Template, UnitError, angle_scale, owners_of, type_name, unify_add)
 from ..base.limits import MAX_TEMPLATE_DEPTH, MIN_WALL_LEAST, min_wall_problem
 from ..registry import CONSTANTS, UNITS_LENGTH, template_param
 from ..library.sources import ImportRefused, read_import, resolve_import
@@ -33,7 +33,7 @@ class Statements(Asserts):
         fctx = self._load_file_decls(program, is_main=True)
         self.file = fctx
         top = [s for s in program.stmts if not isinstance(s, (A.UnitsDecl, A.Import, A.ParamDecl, A.Def,
-                                                               A.ThicknessDecl))]
+                                                               A.Func, A.ThicknessDecl))]
         structs = [s for s in top if isinstance(s, A.StructDecl)]
         asserts = [s for s in top if isinstance(s, A.Assert)]
         loose = [s for s in top if not isinstance(s, (A.StructDecl, A.Assert))
@@ -134,6 +134,8 @@ class Statements(Asserts):
                                         hint="a template returns solid, hole, cut, drawing or assembly",
                                         suggestions=did_you_mean(st.kind, list(A.STRUCTURE_KINDS)))
                     fctx.scope.vars[st.name] = Template(st, fctx.scope, fctx.unit_scale)
+                elif isinstance(st, A.Func):
+                    fctx.scope.vars[st.name] = Function(st, fctx.scope)
                 elif isinstance(st, A.ParamDecl):
                     fctx.params[st.name] = None
                     overridden = st.name in self.overrides and is_main
@@ -452,8 +454,9 @@ class Statements(Asserts):
         elif isinstance(st, A.Block):
             raise EvalError("E0001", "a block `{ ... }` without a header", st.span,
                             hint="name it: `solid NAME { ... }`")
-        elif isinstance(st, (A.ParamDecl, A.Def, A.Import, A.UnitsDecl)):
-            what = {A.ParamDecl: "param", A.Def: "def", A.Import: "import", A.UnitsDecl: "units"}[type(st)]
+        elif isinstance(st, (A.ParamDecl, A.Def, A.Func, A.Import, A.UnitsDecl)):
+            what = {A.ParamDecl: "param", A.Def: "def", A.Func: "def", A.Import: "import",
+                    A.UnitsDecl: "units"}[type(st)]
             raise EvalError("E0116", f"`{what}` is only allowed at the top level of a file", st.span,
                             hint=f"move the `{what}` line to the top of the file")
 

@@ -611,7 +611,11 @@ KIND is solid, hole, cut, drawing or assembly. Instantiate it by assignment insi
 angles, strings, lists), not geometry; place the instance with constraints in the parent.
 Bare numbers in the body are in the defining file's unit. A parameter without a default is
 required. Keywords accept synonyms: `r` for `radius`, `num_teeth` for `teeth`.
-""", ["template", "templates", "function", "define", "instance"]),
+
+`def NAME(p1, p2=default) = EXPR` (top level, one line) is a function: a call gives the
+expression's value with the parameters bound (`def angle_of(v) = 225 deg - v * 27 deg`, then
+`angle_of(3)`); numbers, points and lists in and out, used anywhere an expression goes.
+""", ["template", "templates", "function", "define", "instance", "lambda"]),
     "mirror": ("statement", "`mirror(points, about=\"y\")`: a point list and its mirror image, "
                "for a symmetric outline written once.", """
 `mirror(points, about="y")` gives the points, then their mirror images in reverse order, so

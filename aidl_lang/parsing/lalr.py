@@ -402,6 +402,10 @@ class _Builder:
         name, params, kind, body = items
         return A.Def(meta, self.tx(name), name, self.tx(kind), kind, params or [], body)
 
+    def def_expr(self, meta, items):
+        name, params, value = items
+        return A.Func(meta, self.tx(name), name, params or [], value)
+
     def def_short(self, meta, items):
         kind, name, params, body = items
         return A.Def(meta, self.tx(name), name, self.tx(kind), kind, params or [], body)

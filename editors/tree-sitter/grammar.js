@@ -135,14 +135,15 @@ export default grammar({
       field('value', $._expression),
     ),
 
-    // def NAME(params) -> KIND { ... }
+    // def NAME(params) -> KIND { ... }, or def NAME(params) = EXPR (a function: its value)
     function_definition: $ => seq(
       'def',
       field('name', $.identifier),
       field('parameters', $.parameters),
-      '->',
-      field('kind', $.identifier),
-      field('body', $.block),
+      choice(
+        seq('->', field('kind', $.identifier), field('body', $.block)),
+        seq('=', field('value', $._expression)),
+      ),
     ),
 
     // KIND NAME(params) { ... }: the short form of a template definition

@@ -242,7 +242,7 @@ class Index:
             self._define(self.file, Sym(st.alias, "import", st.span, st, scope=other.file))
             return
         for name, sym in other.file.names.items():
-            if sym.kind in ("template", "param", "variable"):
+            if sym.kind in ("template", "function", "param", "variable"):
                 self._define(self.file, sym)
 
     def _build(self) -> None:
@@ -256,9 +256,18 @@ class Index:
                 for p in st.params:
                     self._define(sym.scope, Sym(p.name, "parameter", _name_span(p.span, p.name),
                                                 p, value=p.default))
+            elif isinstance(st, A.Func):       # def f(x) = expr: its parameters are its own
+                sym = Sym(st.name, "function", st.name_span, st, detail="= value")
+                self._define(self.file, sym)
+                sym.scope = self._scope(self.file, st.span.start, st.span.end, sym)
+                for p in st.params:
+                    self._define(sym.scope, Sym(p.name, "parameter", _name_span(p.span, p.name),
+                                                p, value=p.default))
             elif isinstance(st, A.Import):
                 self._import(st)
         for st in self.program.stmts:
+            if isinstance(st, A.Func):
+                continue
             if isinstance(st, A.Def):
                 sym = self.file.names.get(st.name)
                 if sym is not None and sym.node is st:
@@ -496,6 +505,9 @@ def _sym_doc(ix: Index, sym: Sym) -> str:
         params = ", ".join(src[p.span.start:p.span.end] for p in d.params)
         doc = _leading_comment(src, d.span.start - (d.span.col - 1))
         return f"```aidl_cad\ndef {d.name}({params}) -> {d.kind}\n```\ntemplate" + (f": {doc}" if doc else "")
+    if sym.kind == "function":
+        f: A.Func = sym.node
+        return f"```aidl_cad\n{src[f.span.start:f.span.end]}\n```\nfunction"
     if sym.kind == "structure":
         kids = [k for k, s in sym.scope.names.items() if s.kind == "structure" and k != sym.name]
         text = f"```aidl_cad\n{sym.detail} {sym.name}\n```\nstructure"
@@ -603,6 +615,7 @@ def value_hover(src: str, line: int, character: int, values: dict[str, str],
 
 
 _SYM_KIND = {"param": T.CompletionItemKind.Constant, "template": T.CompletionItemKind.Function,
+             "function": T.CompletionItemKind.Function,
              "structure": T.CompletionItemKind.Struct, "variable": T.CompletionItemKind.Variable,
              "loop": T.CompletionItemKind.Variable, "parameter": T.CompletionItemKind.Variable,
              "import": T.CompletionItemKind.Module}
@@ -739,7 +752,9 @@ def document_symbols(src: str, path: str = "doc.aidl") -> list[T.DocumentSymbol]
         elif isinstance(st, A.Def):
             out.append(sym(st.name, f"-> {st.kind}", T.SymbolKind.Function, st, st.name_span,
                            body(st.body.stmts)))
-    out.extend(body([s for s in prog.stmts if not isinstance(s, (A.ParamDecl, A.Def))]))
+        elif isinstance(st, A.Func):
+            out.append(sym(st.name, "= value", T.SymbolKind.Function, st, st.name_span))
+    out.extend(body([s for s in prog.stmts if not isinstance(s, (A.ParamDecl, A.Def, A.Func))]))
     return out
 
 

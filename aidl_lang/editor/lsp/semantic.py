@@ -46,6 +46,7 @@ _TYPE = {t: i for i, t in enumerate(TOKEN_TYPES)}
 _MOD = {m: 1 << i for i, m in enumerate(TOKEN_MODIFIERS)}
 
 _SYM_TOKEN = {"param": ("variable", ("readonly",)), "template": ("function", ()),
+              "function": ("function", ()),
               "structure": ("struct", ()), "variable": ("variable", ()),
               "loop": ("variable", ()), "parameter": ("parameter", ()),
               "import": ("namespace", ())}

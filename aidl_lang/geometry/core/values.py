@@ -128,6 +128,15 @@ class BBoxRef(Record):
         return (t if isinstance(t, Structure) else t.owner).owner_set()
 
 
+class Function(Record):
+    """A ``def name(params) = expr`` function with the scope it was defined in."""
+    __slots__ = ("node", "scope")
+
+    def __init__(self, node: object, scope: object):
+        self.node = node  # ast.Func
+        self.scope = scope  # the defining file's scope
+
+
 class Template(Record):
     """A ``def`` template with the scope it was defined in."""
     __slots__ = ("node", "scope", "file_units")

@@ -46,23 +46,36 @@ class Chosen:
     plus its offset (floats once :meth:`placed`).  ``alts``: for two edges, the other edges
     of their shapes as ``(name, start, end)`` (E0408's hint names those that do meet, issue
     111: a Fillet between a turned Trapezoid's parallel `right` and `top`)."""
-    __slots__ = ("what", "points", "name", "alts")
+    __slots__ = ("what", "points", "name", "alts", "curve")
 
-    def __init__(self, what: str, points: tuple, name, alts: tuple = ()):
+    def __init__(self, what: str, points: tuple, name, alts: tuple = (), curve=None):
         self.what, self.points, self.name, self.alts = what, points, name, alts
+        # "edge_curve" (an edge and a Circle's or Ellipse's outline: ``points`` the edge's
+        # ends and the curve's centre): the curve's Geometry, then (rx, ry, rotation) placed
+        self.curve = curve
 
     def moved(self, f) -> "Chosen":
         """The same corners under ``f`` (a copy's transform of a point's coordinates)."""
         return Chosen(self.what, tuple(f(px, py) for px, py in self.points), self.name,
-                      tuple((n, f(*a), f(*b)) for n, a, b in self.alts))
+                      tuple((n, f(*a), f(*b)) for n, a, b in self.alts), self.curve)
 
     def placed(self, x) -> "Chosen":
         from ..core.expr import evaluate
 
         def at(px, py):
             return (float(evaluate(px, x)), float(evaluate(py, x)))
+        curve = self.curve
+        if curve is not None and not isinstance(curve, tuple):
+            from ..relations.bbox import held_rotation
+            if curve.kind == "Circle":
+                r = abs(float(x[curve.scalars["radius"].index]))
+                curve = (r, r, 0.0)
+            else:
+                curve = (abs(float(x[curve.scalars["rx"].index])),
+                         abs(float(x[curve.scalars["ry"].index])),
+                         float(held_rotation(curve, x)))
         return Chosen(self.what, tuple(at(px, py) for px, py in self.points), self.name,
-                      tuple((n, at(*a), at(*b)) for n, a, b in self.alts))
+                      tuple((n, at(*a), at(*b)) for n, a, b in self.alts), curve)
 
     def meeting(self) -> list:
         """For two edges that make no corner: the pairs of this shape's edges that do,
@@ -82,12 +95,14 @@ class Chosen:
     def targets(self) -> tuple[list, str | None]:
         """(the points to round, why there are none): for two edges the point where they
         meet, or no point and the reason (parallel, apart, of no length)."""
+        if self.what == "edge_curve":
+            return edge_meets_curve(self.points, self.curve, self.name)
         if self.what != "edges":
             return list(self.points), None
         return edges_meet(self.points, self.name)
 
     def describe(self) -> str:
-        if self.what == "edges":
+        if self.what in ("edges", "edge_curve"):
             return f"the corner of `{self.name[0]}` and `{self.name[1]}`"
         if self.what == "ends":
             return f"the ends of `{self.name}`"
@@ -125,6 +140,40 @@ def edges_meet(pts, names) -> tuple[list, str | None]:
     says = " and ".join(f"{d:.6g} mm past an end of `{nm}`" for nm, d in off)
     return [], (f"they do not meet: their lines cross at ({p[0]:.6g}, {p[1]:.6g}) mm, "
                 f"{says}")
+
+
+def edge_meets_curve(pts, curve, names) -> tuple[list, str | None]:
+    """([the points where an edge crosses a Circle's or Ellipse's outline], None), or ([],
+    why they make no corner): the edge from ``pts[0]`` to ``pts[1]``, the curve about
+    ``pts[2]`` with ``curve`` = (rx, ry, rotation in radians); the crossings are the roots
+    in [0, 1] (within :data:`CORNER_TOL` of the ends) of |M (a + t (b - a) - c)| = 1, M
+    turning by -rotation and scaling by (1/rx, 1/ry) (issue 111, run y's table-tennis
+    blade: `Fillet([handle.left, blade], 8)` where the handle's edge runs into an oval)."""
+    (ax, ay), (bx, by), (cx, cy) = pts
+    rx, ry, rot = curve
+    L = math.hypot(bx - ax, by - ay)
+    if L <= 1e-9:
+        return [], f"`{names[0]}` has no length (its ends are one point), so it has no direction"
+    if rx <= 0 or ry <= 0:
+        return [], f"`{names[1]}` has no size"
+    co, si = math.cos(rot), math.sin(rot)
+
+    def unit(px, py):
+        dx, dy = px - cx, py - cy
+        return ((co * dx + si * dy) / rx, (-si * dx + co * dy) / ry)
+    (p0x, p0y), (p1x, p1y) = unit(ax, ay), unit(bx, by)
+    dx, dy = p1x - p0x, p1y - p0y
+    qa, qb, qc = dx * dx + dy * dy, 2 * (p0x * dx + p0y * dy), p0x * p0x + p0y * p0y - 1
+    disc = qb * qb - 4 * qa * qc
+    tol = CORNER_TOL / L
+    if disc >= 0:
+        root = math.sqrt(disc)
+        ts = sorted({(-qb - root) / (2 * qa), (-qb + root) / (2 * qa)})
+        on = [min(max(t, 0.0), 1.0) for t in ts if -tol <= t <= 1 + tol]
+        if on:
+            return [(ax + t * (bx - ax), ay + t * (by - ay)) for t in on], None
+    return [], (f"`{names[0]}` does not reach the outline of `{names[1]}`, so they make no "
+                f"corner")
 
 
 def finish(s: Structure, loops: list, x=None, check=None, said=None) -> list:
@@ -390,7 +439,7 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
             msg = f"{head} {verb}s nothing at {c.describe()}: "
             if len(js) > 1:
                 msg += f"none of them is a corner of the final outline of `{path}`"
-            elif c.what == "edges":
+            elif c.what in ("edges", "edge_curve"):
                 msg += f"they meet at ({p[0]:.6g}, {p[1]:.6g}) mm, and {where}"
             else:
                 msg += where

@@ -440,7 +440,7 @@ def apply(ctx, kind: str, args: dict, name: str | None):
                                      f"`[body.top, body.right]`), not by bounding-box values")
             at = [Chosen(c.what, tuple((p.x + ox, p.y + oy) for p in c.points), c.name,
                          tuple((n, (a.x + ox, a.y + oy), (b.x + ox, b.y + oy))
-                               for n, a, b in c.alts))
+                               for n, a, b in c.alts), c.curve)
                   for c in at]
         call = FinishCall(args.get("_span") or ctx.cur_span, S, kind)
         S.finish = list(getattr(S, "finish", [])) + [(kind, r, at, call)]
@@ -922,6 +922,14 @@ def _chosen(ctx, v, S, kind: str) -> list:
             alts = tuple((_name(q, S), member(q, "start", S), member(q, "end", S))
                          for q in _sibling_edges([e.geom for e in v]))
             return [Chosen("edges", ends, tuple(_name(e.geom, S) for e in v), alts)]
+        curved = [e for e in v if isinstance(e, GeomRef) and e.geom.kind in ("Circle", "Ellipse")]
+        if len(v) == 2 and len(curved) == 1 and isinstance(v[0 if v[1] is curved[0] else 1],
+                                                             GeomRef) \
+                and v[0 if v[1] is curved[0] else 1].geom.kind == "Line":
+            # an edge and a round shape: the corners where the edge crosses its outline
+            line, g = v[0 if v[1] is curved[0] else 1].geom, curved[0].geom
+            pts = (member(line, "start", S), member(line, "end", S), member(g, "center", S))
+            return [Chosen("edge_curve", pts, (_name(line, S), _name(g, S)), curve=g)]
         return [c for e in v for c in _chosen(ctx, e, S, kind)]
     if isinstance(v, GeomRef):
         g = v.geom
@@ -933,5 +941,6 @@ def _chosen(ctx, v, S, kind: str) -> list:
         if pts and g.kind not in ("Circle", "Ellipse", "Slot"):
             from ..relations.members import _pv
             return [Chosen("corners", tuple(_pv(p, S) for p in pts), _name(g, S))]
-    raise OperationError(f"{kind} at: give a point, two edges [a, b] (their corner), a line, "
-                         f"a polygonal shape, or a list of these; got {_kind(v)}")
+    raise OperationError(f"{kind} at: give a point, two edges [a, b] (their corner), an edge "
+                         f"and a Circle or Ellipse [edge, oval] (where it crosses the outline), "
+                         f"a line, a polygonal shape, or a list of these; got {_kind(v)}")

@@ -51,7 +51,58 @@ def describe(a: Assertion, found: list, alternatives: int = 1, x=None) -> str:
             if not a.text.strip() == text]
     where = f" (where {', '.join(said)})" if said else ""
     return (f"assertion failed: `{a.text}`{why}: {lead}" + "; ".join(parts) + where
-            + _drawn_boxes(a, x) + _text_boxes(a, x))
+            + _drawn_boxes(a, x) + _text_boxes(a, x) + _star_boxes(a, x))
+
+
+def _relative(label: str, owner) -> str:
+    """``label`` as written from inside ``owner`` (``star.s`` of ``lid.star.s`` in ``lid``)."""
+    path = getattr(owner, "path", None)
+    return label[len(path) + 1:] if path and label.startswith(path + ".") else label
+
+
+def _star_boxes(a: Assertion, x) -> str:
+    """What a Star's box, which the assertion reads, is beside the circle through its tips
+    (issue 111, run y: `assert star.bb.width > 40 mm` for a star "40 mm across the tips"
+    failed at 39.47 mm, a five-pointed star's box being narrower, 2 R sin 72 deg): "; `lid.star.bb`
+    is the star's box, 39.47 x 37.64 mm; the circle through its tips is 40 mm across
+    (`2 * star.outer_radius`)", or "" where the box is as wide and tall as that circle."""
+    if x is None:
+        return ""
+    from .bbox import numeric_box
+    terms: list = []
+    for group in a.groups:
+        for _, le, re_, _ in group:
+            for side in (le, re_):
+                if not isinstance(side, (int, float)):
+                    collect(side, terms)
+    from ..core.model import Structure
+    seen, out = set(), []
+    for t in terms:
+        g = t.target
+        if isinstance(g, Structure):           # a hole of one star: `star.bb`
+            shapes = [h for st in g.subtree() for h in st.geometry
+                      if h.closed and not h.construction]
+            g = shapes[0] if len(shapes) == 1 else None
+        if getattr(g, "kind", None) != "Star" or id(g) in seen:
+            continue
+        seen.add(id(g))
+        try:
+            box = numeric_box(t.target, t.frame, x)
+        except (ArithmeticError, KeyError, TypeError, ValueError):
+            continue
+        d = 2 * g.data["dims"]["outer_radius"]
+        if box is None:
+            continue
+        w, h = box[1] - box[0], box[3] - box[2]
+        if abs(w - d) <= TOL and abs(h - d) <= TOL:
+            continue
+        tips = " (its tips before `tip_radius` rounds them)" if g.data["dims"].get("tip_radius") \
+            else ""
+        name = t.target.path if isinstance(t.target, Structure) else g.label
+        out.append(f"`{name}.bb` is the star's box, {w / a.scale:.6g} x {h / a.scale:.6g} "
+                   f"{a.unit}; the circle through its tips{tips} is {d / a.scale:.6g} {a.unit} "
+                   f"across (`2 * {_relative(g.label, a.owner)}.outer_radius`)")
+    return "".join(f"; {o}" for o in out)
 
 
 def _text_boxes(a: Assertion, x) -> str:
