@@ -69,6 +69,8 @@ def test_W0530_not_for_an_edge_pattern_whose_original_is_open_too():
     assert r.ok and not _w(r, "W0530")
     inside = aidl_lang.compile(source=PLATE.format(x=-40, n=5, step=20))
     assert inside.ok and not _w(inside, "W0530")
+    gone = aidl_lang.compile(source=PLATE.format(x=-40, n=6, step=20))   # the 6th wholly off
+    assert [d.code for d in gone.diagnostics] == ["W0502"]                # (cuts nothing)
     out = aidl_lang.compile(source=PLATE.format(x=-40, n=6, step=18))    # the 6th at x = 50
     w = _w(out, "W0530")
     assert len(w) == 1 and "hole `plate.row[5]`" in w[0].message and "by 4.00 mm" in w[0].message
@@ -269,3 +271,39 @@ def test_E0405_on_a_stars_box_says_the_circle_through_its_tips():
 """
     e2 = [d for d in aidl_lang.compile(source=square).diagnostics if d.code == "E0405"]
     assert len(e2) == 1 and "star's box" not in e2[0].message
+
+
+def test_a_corner_pattern_on_a_construction_square_places_the_original_on_its_corner():
+    """Run z1's ring toss: `CornerPattern(peg, square)` on a construction square centred on
+    the board, the peg written at the centre, and labels placed `At` each copy: the labels
+    made the copies references held where written, so the square moved its corner onto the
+    peg and three pegs went off the board (9 warnings, none naming the cause).  A pattern's
+    copy goes with its original and the construction square stays: the first valid program
+    is the design asked for, with no warning."""
+    src = (RUNS / "issue111z1/run/05_ring_toss.first_valid.aidl").read_text()
+    r = aidl_lang.compile(source=src)
+    assert r.ok and r.diagnostics == []
+    vals = {v.name: v.value for v in r.values}
+    assert vals["ring_toss.base.square.center"] == pytest.approx((0, 0), abs=1e-9)
+    corners = [vals[f"ring_toss.base.pegs[{k}].c.center"] for k in range(4)]
+    assert corners == [pytest.approx(p, abs=1e-9) for p in
+                       [(-75, -75), (75, -75), (75, 75), (-75, 75)]]
+    assert vals["ring_toss.base.middle.c.center"] == pytest.approx((0, 0), abs=1e-9)
+    labels = [vals[f"ring_toss.base.scores.t[{k}].position"] for k in range(4)]
+    assert labels == [pytest.approx((x, y - 14), abs=1e-9) for x, y in corners]
+
+
+def test_W0507_not_beside_the_slivers_of_a_rounded_notch():
+    """Run z1's paint palette: a 50 mm finger notch bitten out of an oval's rim with
+    `Fillet(6)`: the cut region's and the finished outline's chords of the notch arc left 22
+    slivers of 0.001 mm^2 in the part with its holes filled, and W0507 said "a 0.46 mm wall"
+    beside them (the DXF: an R25 notch arc joined to the rim by R6 arcs, nothing thin).  A
+    sliver under 0.05 mm^2 is no opening; a real thin wall at the notch still warns."""
+    src = (RUNS / "issue111z1/run/07_paint_palette.first_valid.aidl").read_text()
+    r = aidl_lang.compile(source=src)
+    assert r.ok and not _w(r, "W0507")
+    near = src.replace("t = Ellipse(center=(-130 + 45, -20), rx=14, ry=19)",
+                       "t = Ellipse(center=(-93.57, -53.57), rx=5, ry=5)")   # 0.3 mm off the notch
+    assert near != src
+    w = _w(aidl_lang.compile(source=near), "W0507")
+    assert len(w) == 1 and "hole `palette.thumb` and hole `palette.notch`" in w[0].message

@@ -224,9 +224,16 @@ class Calls:
                 self._rebind(node.args[0].id, out)     # in place: the name is the copy's
             if len(self.model.constraints) > n0 and len(owners_of(*conv.values())) > 1:
                 args = [owners_of(v) for v in conv.values()]   # who moves: the pattern's
-                for c in self.model.constraints[n0:]:           # target to its rect
+                owners = owners_of(*conv.values())              # target to its rect
+                helped = any(g.construction for g in self.struct.geometry) \
+                    if self.struct in owners else False
+                for c in self.model.constraints[n0:]:
                     if c.args is None:
                         c.args = args
+                        if helped and c.owner is self.struct:
+                            # a construction rect stays, the target goes to its corner
+                            # (run z1's ring toss: the square moved onto the peg, 3 pegs off)
+                            c.arg_reach = bbox_reach(conv.values(), least=1)
             return out
         owners = owners_of(*conv.values())
         try:

@@ -385,6 +385,12 @@ def _copy(ctx, target, xf, rot, flip, name: str | None, k: int, what: str, line_
         f"the {what} {of}'s copy rule" if name else f"the {what} copy of {of}"), implicit=True)
     from ..relations.bbox import defer_boxes
     defer_boxes(c)              # about a box's centre (run r: `box.bottom.bb.center`)
+    if isinstance(out, StructRef):
+        # who moves: the copy goes with its original (run z1's ring toss: labels placed `At`
+        # the copies made them references, held where written, and the construction square
+        # the pattern's original stands on moved instead, three pegs off the board)
+        c.args = [{out.struct}, {target.struct}]
+        c.copy_rule = True      # (the original is no reference for it: tree.placed_on)
     S.constraints.append(c)
     ctx.model.constraints.append(c)
     return out

@@ -67,20 +67,20 @@ def defer_boxes(c) -> None:
         c.deferred, c.equations = c.equations, []
 
 
-def reach(vals) -> list | None:
+def reach(vals, least: int = 2) -> list | None:
     """The parameters each of ``vals`` (a call's arguments, or an equation's two sides)
     reads, in the order given, as frozensets of indices into the model's parameter vector:
     a point's coordinates, a shape's points and sizes (its parts' too), a shape's box's
     (``body.bb.center``), structures' frames as their expressions hold them; a structure
     named or boxed reads nothing here (``Constraint.args`` says which structures).  None
-    when fewer than two arguments read anything (one shape, sizes only).  Who moves
+    when fewer than ``least`` arguments read anything (one shape, sizes only).  Who moves
     between the shapes of one structure is read off it (``Constraint.reach``)."""
     out = []
     for v in vals:
         got: set = set()
         _reach_into(v, got)
         out.append(frozenset(got))
-    return out if sum(1 for r in out if r) >= 2 else None
+    return out if sum(1 for r in out if r) >= least else None
 
 
 def _reach_into(v, out: set) -> None:

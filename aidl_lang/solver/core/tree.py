@@ -64,6 +64,15 @@ def placed_on(s: Structure) -> tuple[list, list, dict]:
                     groups.append(t)
         if len(groups) < 1 + (not part):
             continue
+        if c.__dict__.get("copy_rule"):
+            # a pattern's copy goes with its original: never a reference held where written
+            # (run z1's ring toss: labels `At` the copies held them, and the construction square
+            # the original stands on moved instead); the original is not held for it (a
+            # relation on a copy moves the original: `Concentric(hs[1].c, body)`)
+            if len(groups) == 2:
+                movers[id(groups[0])] = groups[0]
+                edges.setdefault(id(groups[0]), set())
+            continue
         if part:                    # s's own part is the reference: every child moves
             for t in groups:
                 movers[id(t)] = t

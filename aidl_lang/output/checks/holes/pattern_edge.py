@@ -76,7 +76,8 @@ def check_pattern_edges(d, s, cuts, min_wall: float, sink, skip: set) -> None:
 def _outside_depths(items: list) -> dict:
     """For each ``(thing, shape, cut)`` of ``items``: ``id(thing) -> (depth,
     (x, y))``, how far (mm) the shape's farthest vertex outside its solid's outline before
-    holes (``cut.before``) lies beyond it, and where; things wholly inside are left out.
+    holes (``cut.before``) lies beyond it, and where; things wholly inside, and those wholly
+    outside (``W0502``: a hole that cuts nothing), are left out.
     The outline is grown by :data:`EDGE_TOL` and its vertices tested in one
     :func:`..common._inside` per solid; the depth of a vertex outside is its distance to the
     outline's edges (the few vertices outside only)."""
@@ -113,6 +114,8 @@ def _outside_depths(items: list) -> dict:
                 t = np.clip(np.where(L2 > 0, (px * dx + py * dy) / L2, 0.0), 0.0, 1.0)
             depth[i:i + step] = np.hypot(px - t * dx, py - t * dy).min(axis=1)
         for k in np.unique(ow):
+            if not (~off[who == k]).any():
+                continue                   # wholly outside: W0502 says it cuts nothing
             sel = np.flatnonzero(ow == k)
             j = sel[int(np.argmax(depth[sel]))]
             found[id(group[int(k)][0])] = (float(depth[j]), (float(O[j, 0]), float(O[j, 1])))

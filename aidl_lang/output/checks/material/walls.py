@@ -60,8 +60,10 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
         if _area(near - filled) > 1e-9:
             names.append(f"the outer edge of `{s.path}`")
         names = list(dict.fromkeys(names))
-        if names and any(set(names) <= c for c in covered):
-            continue
+        if names and (any(set(names) <= c for c in covered)
+                      or len(names) >= 2 and frozenset(names[:2]) in covered):
+            continue            # said already (the two it would name: a hole beside a notch
+                                # meets the outer edge too, run z1's palette said it twice)
         x0, y0, x1, y1 = piece.bounds()
         between = (" between " + " and ".join(names[:2])) if len(names) >= 2 else (
             f" beside {names[0]}" if names else "")
