@@ -514,7 +514,8 @@ _DEFS = {
                  doc="Round every corner of this solid's (or hole's) final outline, holes "
                      "included, or only the corners at: a point, [edge1, edge2] (where they "
                      "meet or cross), [edge, circle or ellipse] (where the edge crosses "
-                     "its outline), a shape's corners (`Fillet(plate, 4)`), or a list of "
+                     "its outline; in a sharp tip of angle a the arc lies r / sin(a / 2) - r "
+                     "from the point: draw a long tip round, a Hull with a Circle), a shape's corners (`Fillet(plate, 4)`), or a list of "
                      "these."),
     "Chamfer": _c([A("distance", "length")], [A("at", "any"), A("distance", "length")],
                   [A("a", "any"), A("b", "any"), A("distance", "length")],

@@ -307,3 +307,30 @@ def test_W0507_not_beside_the_slivers_of_a_rounded_notch():
     assert near != src
     w = _w(aidl_lang.compile(source=near), "W0507")
     assert len(w) == 1 and "hole `palette.thumb` and hole `palette.notch`" in w[0].message
+
+
+def test_W0411_a_fillet_that_cuts_a_sharp_tip_back():
+    """Run z2's dinosaur (`Fillet(tail.points[2], 3)` on a 15 deg tail tip: 19.3 mm short,
+    said only by a W0405 about a box) and run k's tent stake (`Fillet(2)` on a 9.8 deg
+    point: 158.6 mm long where 180 was asked, said by nothing): W0411 names the tip, its
+    angle and how far it went back, and the radius its hint gives cuts it back 1 mm.  A
+    star's 36 deg tips under `Fillet(2)` (4.5 mm back) are not warned."""
+    import math
+    src = (RUNS / "issue111z2/run/04_toy_dinosaur.first_valid.aidl").read_text()
+    w = _w(aidl_lang.compile(source=src), "W0411")
+    assert len(w) == 1 and "cuts the 15.2° tip at (100, 30) mm back by 19.72 mm" in w[0].message
+    stake = (RUNS / "issue111k/run/07_tent_stake.first_valid.aidl").read_text()
+    r = aidl_lang.compile(source=stake)
+    w = _w(r, "W0411")
+    assert len(w) == 1 and "9.8° tip at (0, -180) mm back by 21.42 mm" in w[0].message
+    keep = float(re.search(r"radius ([\d.]+) mm cuts it back 1 mm", w[0].hint).group(1))
+    a = math.radians(float(re.search(r"the ([\d.]+)° tip", w[0].message).group(1)))
+    assert keep / math.sin(a / 2) - keep == pytest.approx(1.0, abs=0.02)
+    # the stake's length as cut: 180 mm drawn, 21.42 mm less along its axis
+    assert r.parts[0].bbox[3] - r.parts[0].bbox[1] == pytest.approx(180 - 21.42, abs=0.01)
+    star = """solid s {
+    body = Star(center=(0, 0), points=5, outer_radius=30, inner_radius=12)
+    Fillet(2)
+}
+"""
+    assert not _w(aidl_lang.compile(source=star), "W0411")

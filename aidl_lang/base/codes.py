@@ -604,6 +604,21 @@ both, no step) in place of the bar:
         hole tab { s = Rectangle(center=(0, -20), width=40, height=4.2) }
     }
 """),
+    "W0411": ("Fillet cuts a sharp tip back", """
+A fillet's arc is tangent to both sides of its corner, so in a sharp tip it lies far from the
+point: a round of radius r in a corner of angle a lies r / sin(a / 2) - r from it, 19.7 mm for
+3 mm in a 15 degree tail, 21.4 mm for 2 mm in a tent stake's 9.8 degree point. The part then
+ends that much short of the point drawn, and an assert on the shape's box (read before the
+rounding) does not see it. The warning names the tip, its angle and how far it went back
+(when more than 5 mm and more than three radii), and the radius that cuts it back 1 mm; to keep
+the length, draw the tip round: the `Hull` of the shape and a `Circle` of that radius whose
+edge touches the point.
+
+    solid stake {
+        body = Polygon([(-12, 0), (12, 0), (0, -140)])
+        Fillet(2)                   # the 9.8 deg point goes back 21.4 mm: W0411
+    }
+"""),
     "W0501": ("hole refilled by another solid", """
 A hole cuts only the solid it is declared in. When that solid is then united with a sibling
 (or its parent's own geometry) that covers the hole, the hole is filled again and does not cut

@@ -194,13 +194,13 @@ def finish(s: Structure, loops: list, x=None, check=None, said=None) -> list:
                 meet, why[i] = c.targets()
                 pts += [(p, i) for p in meet]
         got = {}                  # index into pts -> the size that corner got (0: none)
-        done, narrow = [], []
+        done, narrow, deep = [], [], []
         for lp in loops:
             if check is not None:
                 check()
             mine: dict = {}
             done.append(corners(lp, r, kind == "Fillet",
-                                None if pts is None else [p for p, _ in pts], mine))
+                                None if pts is None else [p for p, _ in pts], mine, deep))
             for j, v in mine.items():
                 got[j] = min(v, got.get(j, v))
             if pts is None and kind == "Fillet":     # (a Chamfer leaves inside corners)
@@ -211,6 +211,7 @@ def finish(s: Structure, loops: list, x=None, check=None, said=None) -> list:
         if said is not None:
             said += report(kind, r, call, chosen, why, pts, got, loops,
                            first if loops is not first else None)
+            said += [_tip_back(call, k, *d) for k, d in enumerate(deep)]
             if narrow:
                 names = [g.name for g in s.geometry if g.closed and g.name
                          and not g.construction and not g.__dict__.get("copied")]
@@ -514,7 +515,28 @@ def _where(p, loops: list) -> tuple[str, tuple | None]:
     return what, near
 
 
-def corners(loop, size: float, fillet: bool, only=None, got=None):
+TIP_BACK = 5.0       # mm: a fillet that cuts a tip back farther (and more than 3 radii): W0411
+
+
+def _tip_back(call, k: int, p, back: float, angle: float, radius: float) -> tuple:
+    """W0411 for a fillet of ``radius`` that cut the tip at ``p`` (a corner of ``angle``
+    radians inside the material, or of the hole) back by ``back`` mm: how far, why, and the
+    radius that cuts it back 1 mm at most (issue 111, run z2's dinosaur: `Fillet(tail.points
+    [2], 3)` on a 15 deg tail tip made the tail 19.3 mm short, said only by a W0405 about a
+    box)."""
+    deg = math.degrees(angle)
+    keep = 1.0 / (1.0 / math.sin(angle / 2) - 1.0)
+    return (call, "W0411", -1000 - k,
+            f"`Fillet` (radius {radius:.6g} mm) cuts the {deg:.3g}° tip at ({p[0]:.6g}, "
+            f"{p[1]:.6g}) mm back by {back:.2f} mm: the outline now ends that much short of "
+            f"the point drawn (a round of radius r in a corner of angle a lies r / sin(a / 2) "
+            f"- r from its point)",
+            f"to keep the tip's length, draw the tip round: the `Hull` of the shape and a "
+            f"`Circle(radius={radius:.6g})` whose edge touches the point; or round it less "
+            f"(radius {keep:.3g} mm cuts it back 1 mm)")
+
+
+def corners(loop, size: float, fillet: bool, only=None, got=None, deep=None):
     """``loop`` with its corners rounded (``fillet``: every corner, convex or concave, by an
     arc of radius ``size`` tangent to both of its segments) or cut (chamfer: every convex
     corner, by a line between the points ``size`` mm along each segment, arc length on an
@@ -526,7 +548,8 @@ def corners(loop, size: float, fillet: bool, only=None, got=None):
     shrinks to fit.  Lines stay on their lines and arcs on their circles, so the result is
     exact (:mod:`.curves`).  ``got`` (a dict): for each corner rounded (or found and not
     rounded), the index into ``only`` (or -1 without ``only``) -> the smallest radius (or
-    leg) it got, 0 for none."""
+    leg) it got, 0 for none.  ``deep`` (a list): gets ``(point, setback, angle, radius)``
+    for each sharp tip a fillet cuts back more than :data:`TIP_BACK` and 3 radii (W0411)."""
     from ..shapes.curves import Arc, Circle, Loop, simplify, turn_between, with_ends
     segs = loop.segments
     n = len(segs)
@@ -547,6 +570,11 @@ def corners(loop, size: float, fillet: bool, only=None, got=None):
                     got[i] = 0.0
             continue
         cut[k] = _corner(a, b, turn, size, fillet)
+        if deep is not None and fillet and cut[k] is not None:
+            arc = cut[k][2]
+            back = math.hypot(p[0] - arc.center[0], p[1] - arc.center[1]) - arc.radius
+            if back > max(TIP_BACK, 3 * arc.radius):
+                deep.append((p, back, math.pi - abs(turn), arc.radius))
         if got is not None:
             size_got = (0.0 if cut[k] is None else cut[k][2].radius if fillet
                         else min(size, a.length / 2, b.length / 2))
