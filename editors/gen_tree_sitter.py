@@ -348,6 +348,8 @@ def highlights_scm() -> str:
   name: (identifier) @function)
 (template_definition
   name: (identifier) @function)
+(value_definition
+  name: (identifier) @function)
 (param_declaration
   name: (identifier) @constant)
 (param_option

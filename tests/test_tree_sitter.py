@@ -96,13 +96,14 @@ def parser(lang):
 # ------------------------------------------------------------------ the statement trees
 LARK_KIND = {A.Block: "block", A.UnitsDecl: "units", A.ThicknessDecl: "thickness",
              A.KerfDecl: "kerf", A.MinWallDecl: "min_wall", A.Import: "import",
-             A.ParamDecl: "param", A.Def: "def", A.StructDecl: "struct", A.Assign: "assign",
+             A.ParamDecl: "param", A.Def: "def", A.Func: "def", A.StructDecl: "struct",
+             A.Assign: "assign",
              A.KindAssign: "kind_assign", A.For: "for", A.If: "if", A.ExprStmt: "expr",
              A.Assert: "assert"}
 TS_KIND = {"block": "block", "units_declaration": "units",
            "thickness_declaration": "thickness", "kerf_declaration": "kerf",
            "min_wall_declaration": "min_wall", "import_declaration": "import",
-           "param_declaration": "param", "function_definition": "def",
+           "param_declaration": "param", "function_definition": "def", "value_definition": "def",
            "template_definition": "def", "structure_declaration": "struct",
            "assignment": "assign", "kind_assignment": "kind_assign", "for_statement": "for",
            "if_statement": "if", "elif_clause": "if", "expression_statement": "expr",
@@ -148,7 +149,8 @@ def ts_statement(n, cols: _Columns):
     if n.type == "block":
         nested = [ts_tree(n, cols)]
     elif kind in ("def", "struct", "for"):
-        nested = [ts_tree(n.child_by_field_name("body"), cols)]
+        body = n.child_by_field_name("body")     # (a function, `def f(x) = ...`: none)
+        nested = [ts_tree(body, cols)] if body is not None else []
     elif kind == "if":
         if n.type == "elif_clause":         # Lark's elif statement starts at its condition
             start = n.child_by_field_name("condition").start_point
@@ -319,6 +321,9 @@ def lark_exprs(stmts, out: list) -> list:
         elif isinstance(s, A.Def):
             out += [lark_expr(p.default) for p in s.params if p.default is not None]
             lark_exprs(s.body.stmts, out)
+        elif isinstance(s, A.Func):
+            out += [lark_expr(p.default) for p in s.params if p.default is not None]
+            out.append(lark_expr(s.value))
         elif isinstance(s, A.StructDecl):
             lark_exprs(s.body.stmts, out)
         elif isinstance(s, A.For):
@@ -348,11 +353,14 @@ def ts_exprs(statements, cols: _Columns, out: list) -> list:
             out += [ts_expr(f("value"), cols)] + [ts_expr(o.child_by_field_name("value"), cols)
                                                    for o in c.named_children
                                                    if o.type == "param_option"]
-        elif t in ("function_definition", "template_definition"):
+        elif t in ("function_definition", "template_definition", "value_definition"):
             out += [ts_expr(p.child_by_field_name("default"), cols)
                     for p in f("parameters").named_children
                     if p.type == "parameter" and p.child_by_field_name("default")]
-            ts_exprs(f("body").named_children, cols, out)
+            if f("body") is not None:
+                ts_exprs(f("body").named_children, cols, out)
+            else:                           # a function: its value
+                out.append(ts_expr(f("value"), cols))
         elif t == "structure_declaration":
             ts_exprs(f("body").named_children, cols, out)
         elif t == "for_statement":

@@ -18,12 +18,13 @@ from ..geometry.shapes.primitives import PrimitiveError
 from ..geometry.core.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef, Namespace, Q, StructRef,
                                Function, Template, UnitError, angle_scale, dim_name, mul_dim, owners_in, owners_of,
                                rad_power, radians_of, type_name)
-from ..base.limits import MAX_CALL_DEPTH, MAX_EXTENT
+from ..base.limits import MAX_EXTENT
 from ..registry import (ENTRIES, FUNCTIONS, accepted_args, bind_variant, canonical, canonical_args,
                         lookup)
 from .call_hints import _center_hint, _list_hint
 from .cut_into import cut_into
-from .common import (Scope, _defer_boxes, said_shrunk, DEG, _a, _fmt_num, show, ANGLE_TWICE)
+from .functions import call_function
+from .common import (_defer_boxes, said_shrunk, DEG, _a, _fmt_num, show, ANGLE_TWICE)
 
 
 _DIMS = {"length": LEN, "angle": ANG, "number": NUM}
@@ -60,50 +61,6 @@ class Calls:
                 return obj.scope.vars.get(f.name)
         return None
 
-    def _call_function(self, f: Function, node: A.Call):
-        """The value of function ``f`` (``def name(params) = expr``) called by ``node``: its
-        expression evaluated in the scope it was defined in, the parameters bound to the
-        arguments (by position or name) or their defaults; E0104/E0105/E0106 for the
-        arguments as a template's, E0302 past :data:`MAX_CALL_DEPTH` nested calls."""
-        d = f.node
-        params = [p.name for p in d.params]
-        sig = f"`{d.name}({', '.join(params)})`"
-        if len(node.args) > len(params):
-            raise EvalError("E0104", f"`{d.name}` takes {len(params)} arguments, got "
-                            f"{len(node.args)}", node.span, hint=sig)
-        vals = {p: self.eval(a) for p, a in zip(params, node.args)}
-        for kw in node.kwargs:
-            if kw.name not in params:
-                sugg = did_you_mean(kw.name, params)
-                raise EvalError("E0105", f"`{d.name}` has no parameter `{kw.name}`", kw.span,
-                                hint=(f"did you mean `{sugg[0]}`? " if sugg else "") + sig,
-                                suggestions=sugg)
-            if kw.name in vals:
-                raise EvalError("E0105", f"`{d.name}`: `{kw.name}` is given twice", kw.span,
-                                hint=f"give `{kw.name}` once")
-            vals[kw.name] = self.eval(kw.value)
-        if len(self.frames) >= MAX_CALL_DEPTH:
-            raise EvalError("E0302", f"function calls nested more than {MAX_CALL_DEPTH} deep",
-                            node.span, hint=f"`{d.name}` probably calls itself without end")
-        self.step(node.span)
-        scope = Scope(f.scope, self.struct, f.scope.file)
-        saved = self.scope
-        self.frames.append((f"the function `{d.name}(...)`", node.span))
-        try:
-            self.scope = scope
-            for p in d.params:
-                if p.name in vals:
-                    scope.vars[p.name] = vals[p.name]
-                elif p.default is not None:
-                    scope.vars[p.name] = self.eval(p.default)
-                else:
-                    raise EvalError("E0106", f"`{d.name}` needs the argument `{p.name}`",
-                                    node.span, hint=sig)
-            return self.eval(d.value)
-        finally:
-            self.scope = saved
-            self.frames.pop()
-
     def _call(self, node: A.Call, name: str | None = None, callee=None):
         """Evaluate a call (``callee``: ``self._callee(node.func)`` when the caller has it)."""
         if callee is None:
@@ -118,7 +75,7 @@ class Calls:
                                 suggestions=sugg)
             callee = self.eval(node.func)
         if isinstance(callee, Function):
-            return self._call_function(callee, node)
+            return call_function(self, callee, node)
         if isinstance(callee, Template):
             if name is None:
                 t = callee.node.name

@@ -83,6 +83,7 @@ export default grammar({
       $.units_declaration,
       $.import_declaration,
       $.param_declaration,
+      $.value_definition,
       $._simple_statement,
     ),
 
@@ -135,15 +136,23 @@ export default grammar({
       field('value', $._expression),
     ),
 
-    // def NAME(params) -> KIND { ... }, or def NAME(params) = EXPR (a function: its value)
+    // def NAME(params) -> KIND { ... }
     function_definition: $ => seq(
       'def',
       field('name', $.identifier),
       field('parameters', $.parameters),
-      choice(
-        seq('->', field('kind', $.identifier), field('body', $.block)),
-        seq('=', field('value', $._expression)),
-      ),
+      '->',
+      field('kind', $.identifier),
+      field('body', $.block),
+    ),
+
+    // def NAME(params) = EXPR: a function, its value (a simple statement: one line)
+    value_definition: $ => seq(
+      'def',
+      field('name', $.identifier),
+      field('parameters', $.parameters),
+      '=',
+      field('value', $._expression),
     ),
 
     // KIND NAME(params) { ... }: the short form of a template definition

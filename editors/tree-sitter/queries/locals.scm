@@ -13,6 +13,8 @@
 
 (template_definition) @local.scope
 
+(value_definition) @local.scope
+
 (block) @local.scope
 
 (for_statement) @local.scope
@@ -30,6 +32,10 @@
   name: (identifier) @local.definition.function)
 
 (template_definition
+  name: (identifier) @local.definition.function)
+
+; `def angle_of(v) = 225 deg - v * 27 deg`: a function
+(value_definition
   name: (identifier) @local.definition.function)
 
 ; a template's parameters

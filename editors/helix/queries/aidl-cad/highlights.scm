@@ -43,6 +43,8 @@
   name: (identifier) @function)
 (template_definition
   name: (identifier) @function)
+(value_definition
+  name: (identifier) @function)
 (param_declaration
   name: (identifier) @constant)
 (param_option
