@@ -334,3 +334,32 @@ def test_W0411_a_fillet_that_cuts_a_sharp_tip_back():
 }
 """
     assert not _w(aidl_lang.compile(source=star), "W0411")
+
+
+def test_fillet_where_two_shapes_meet():
+    """Run z3's hair catcher: `Fillet([tab, disc], 2)` where a round-ended tab (a Slot)
+    meets a disc was E0108 ("got Slot"): no form reached that corner.  Two shapes now name
+    the corners where their outlines cross: the run's first program is valid, both joins
+    rounded (more area than sharp; W0406 says the 1.75 mm the tab's short sides leave room
+    for); a Rectangle on a Circle too; shapes apart are E0408 with why."""
+    first = RUNS / "issue111z3/drafts/03_hair_catcher.attempt1.aidl"
+    src = first.read_text()
+    r = aidl_lang.compile(source=src)
+    assert r.ok
+    w = _w(r, "W0406")
+    assert len(w) == 1 and "the corners where `tab` and `disc` meet with only 1.75" in w[0].message
+    sharp = aidl_lang.compile(source=src.replace("    Fillet([tab, disc], 2)\n", ""))
+    assert r.parts[0].area > sharp.parts[0].area
+    src2 = """solid p {
+    disc = Circle(center=(0, 0), diameter=60)
+    lug = Rectangle(center=(0, 35), width=20, height=20)
+    Fillet([lug, disc], 3)
+}
+"""
+    r2 = aidl_lang.compile(source=src2)
+    assert r2.ok and not [d for d in r2.diagnostics if d.code in ("W0406", "E0408")]
+    plain = aidl_lang.compile(source=src2.replace("    Fillet([lug, disc], 3)\n", ""))
+    assert r2.parts[0].area > plain.parts[0].area          # two inside corners filled
+    apart = src2.replace("center=(0, 35)", "center=(0, 60)")
+    e = [d for d in aidl_lang.compile(source=apart).diagnostics if d.code == "E0408"]
+    assert len(e) == 1 and "no corner of the outline lies on both `lug` and `disc`" in e[0].message

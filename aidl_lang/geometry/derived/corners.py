@@ -65,7 +65,9 @@ class Chosen:
         def at(px, py):
             return (float(evaluate(px, x)), float(evaluate(py, x)))
         curve = self.curve
-        if curve is not None and not isinstance(curve, tuple):
+        if self.what == "shapes_meet" and not isinstance(curve[2], tuple):
+            curve = tuple(curve[:2]) + tuple(_sizes(g, x) for g in curve[2:])   # placed
+        elif curve is not None and not isinstance(curve, tuple):
             from ..relations.bbox import held_rotation
             if curve.kind == "Circle":
                 r = abs(float(x[curve.scalars["radius"].index]))
@@ -92,9 +94,12 @@ class Chosen:
                     out.append((keep, n) if first else (n, keep))
         return list(dict.fromkeys(out))
 
-    def targets(self) -> tuple[list, str | None]:
+    def targets(self, loops=None) -> tuple[list, str | None]:
         """(the points to round, why there are none): for two edges the point where they
-        meet, or no point and the reason (parallel, apart, of no length)."""
+        meet, or no point and the reason (parallel, apart, of no length); for two shapes the
+        corners of ``loops`` (the outline) that lie on both of their outlines."""
+        if self.what == "shapes_meet":
+            return shapes_meet(self.points, self.curve, self.name, loops or [])
         if self.what == "edge_curve":
             return edge_meets_curve(self.points, self.curve, self.name)
         if self.what != "edges":
@@ -104,6 +109,8 @@ class Chosen:
     def describe(self) -> str:
         if self.what in ("edges", "edge_curve"):
             return f"the corner of `{self.name[0]}` and `{self.name[1]}`"
+        if self.what == "shapes_meet":
+            return f"the corners where `{self.name[0]}` and `{self.name[1]}` meet"
         if self.what == "ends":
             return f"the ends of `{self.name}`"
         if self.what == "corners":
@@ -140,6 +147,68 @@ def edges_meet(pts, names) -> tuple[list, str | None]:
     says = " and ".join(f"{d:.6g} mm past an end of `{nm}`" for nm, d in off)
     return [], (f"they do not meet: their lines cross at ({p[0]:.6g}, {p[1]:.6g}) mm, "
                 f"{says}")
+
+
+def _sizes(g, x) -> tuple:
+    """The solved sizes of shape ``g`` a distance to its outline needs: (radius,) of a
+    Circle or Slot, (rx, ry, rotation) of an Ellipse, () otherwise."""
+    if g.kind in ("Circle", "Slot"):
+        return (abs(float(x[g.scalars["radius"].index])),)
+    if g.kind == "Ellipse":
+        from ..relations.bbox import held_rotation
+        return (abs(float(x[g.scalars["rx"].index])), abs(float(x[g.scalars["ry"].index])),
+                float(held_rotation(g, x)))
+    return ()
+
+
+def outline_distance(kind: str, pts: list, sizes: tuple, p) -> float:
+    """How far (mm) point ``p`` lies from the outline of a shape given by
+    :func:`.operations._outline_spec` (``pts`` placed) and :func:`_sizes`; an ellipse's by
+    its implicit function over its gradient (first order: exact on the curve, where it is
+    asked)."""
+    px, py = p
+    if kind == "circle":
+        (cx, cy), = pts
+        return abs(math.hypot(px - cx, py - cy) - sizes[0])
+    if kind == "ellipse":
+        (cx, cy), = pts
+        rx, ry, rot = sizes
+        co, si = math.cos(rot), math.sin(rot)
+        u, v = co * (px - cx) + si * (py - cy), -si * (px - cx) + co * (py - cy)
+        f = (u / rx) ** 2 + (v / ry) ** 2 - 1
+        grad = 2 * math.hypot(u / rx ** 2, v / ry ** 2)
+        return abs(f) / grad if grad > 0 else math.inf
+    if kind in ("slot", "segment"):
+        (ax, ay), (bx, by) = pts
+        dx, dy = bx - ax, by - ay
+        L2 = dx * dx + dy * dy
+        t = 0.0 if L2 == 0 else min(max(((px - ax) * dx + (py - ay) * dy) / L2, 0.0), 1.0)
+        d = math.hypot(px - ax - t * dx, py - ay - t * dy)
+        return abs(d - sizes[0]) if kind == "slot" else d
+    best = math.inf                       # a polygon: its nearest side
+    for (ax, ay), (bx, by) in zip(pts, pts[1:] + pts[:1]):
+        best = min(best, outline_distance("segment", [(ax, ay), (bx, by)], (), p))
+    return best
+
+
+def shapes_meet(pts, curve, names, loops) -> tuple[list, str | None]:
+    """([the corners of ``loops`` on both shapes' outlines], None), or ([], why there are
+    none): the shapes of ``Fillet([a, b], r)`` (``curve``: their (kind, count) and sizes,
+    ``pts`` their placed points in order), within :data:`CORNER_TOL` of both (issue 111, run
+    z3's hair catcher: `Fillet([tab, disc], 2)` where a round-ended tab meets a disc)."""
+    (ka, na), (kb, nb), sa, sb = curve
+    A, B = list(pts[:na]), list(pts[na:na + nb])
+    out = []
+    for lp in loops:
+        for g in lp.segments:
+            p = getattr(g, "start", None)          # (a whole circle has no corner)
+            if p is not None and outline_distance(ka, A, sa, p) <= CORNER_TOL \
+                    and outline_distance(kb, B, sb, p) <= CORNER_TOL:
+                out.append(p)
+    if out:
+        return out, None
+    return [], (f"no corner of the outline lies on both `{names[0]}` and `{names[1]}` (their "
+                f"outlines do not cross there, or one lies inside the other)")
 
 
 def edge_meets_curve(pts, curve, names) -> tuple[list, str | None]:
@@ -191,7 +260,7 @@ def finish(s: Structure, loops: list, x=None, check=None, said=None) -> list:
             chosen = [c.placed(x) for c in at]
             pts = []
             for i, c in enumerate(chosen):
-                meet, why[i] = c.targets()
+                meet, why[i] = c.targets(loops)
                 pts += [(p, i) for p in meet]
         got = {}                  # index into pts -> the size that corner got (0: none)
         done, narrow, deep = [], [], []

@@ -911,6 +911,26 @@ def _sibling_edges(edges: list) -> list:
     return out
 
 
+# the shapes whose outline `Fillet([a, b], r)` finds where two of them cross (corners.meet)
+MEET = ("Circle", "Ellipse", "Slot", "Rectangle", "RoundedRectangle", "Polygon",
+        "RegularPolygon", "Triangle", "Star", "Trapezoid")
+
+
+def _outline_spec(g: Geometry, S) -> tuple:
+    """(kind of outline, its points in ``S``'s frame) for :func:`.corners.outline_distance`:
+    "circle" (center), "ellipse" (center), "slot" (start, end), "segment" (start, end) or
+    "polygon" (its corners, in order); radii are read from the solved unknowns."""
+    from ..relations.members import _pv, member, points_of
+    k = g.kind
+    if k in ("Circle", "Ellipse"):
+        return k.lower(), [member(g, "center", S)]
+    if k == "Slot":
+        return "slot", [member(g, "start", S), member(g, "end", S)]
+    if k == "Line":
+        return "segment", [member(g, "start", S), member(g, "end", S)]
+    return "polygon", [_pv(p, S) for p in points_of(g)]
+
+
 def _chosen(ctx, v, S, kind: str) -> list:
     """The corners (:class:`~.corners.Chosen`, points in ``S``'s frame) a
     ``Fillet(at, ...)``/``Chamfer(at, ...)`` names: a point; two lines (the corner where they
@@ -936,6 +956,16 @@ def _chosen(ctx, v, S, kind: str) -> list:
             line, g = v[0 if v[1] is curved[0] else 1].geom, curved[0].geom
             pts = (member(line, "start", S), member(line, "end", S), member(g, "center", S))
             return [Chosen("edge_curve", pts, (_name(line, S), _name(g, S)), curve=g)]
+        if len(v) == 2 and all(isinstance(e, GeomRef) and e.geom.closed and e.geom.kind in MEET
+                               or isinstance(e, GeomRef) and e.geom.kind == "Line" for e in v):
+            # two shapes (or a shape and an edge): the corners where their outlines cross
+            specs, pts = [], []
+            for e in v:
+                spec, ps = _outline_spec(e.geom, S)
+                specs.append((spec, len(ps)))
+                pts += ps
+            return [Chosen("shapes_meet", tuple(pts), tuple(_name(e.geom, S) for e in v),
+                           curve=tuple(specs) + tuple(e.geom for e in v))]
         return [c for e in v for c in _chosen(ctx, e, S, kind)]
     if isinstance(v, GeomRef):
         g = v.geom
@@ -947,6 +977,6 @@ def _chosen(ctx, v, S, kind: str) -> list:
         if pts and g.kind not in ("Circle", "Ellipse", "Slot"):
             from ..relations.members import _pv
             return [Chosen("corners", tuple(_pv(p, S) for p in pts), _name(g, S))]
-    raise OperationError(f"{kind} at: give a point, two edges [a, b] (their corner), an edge "
-                         f"and a Circle or Ellipse [edge, oval] (where it crosses the outline), "
+    raise OperationError(f"{kind} at: give a point, two edges [a, b] (their corner), two "
+                         f"shapes or an edge and a shape [a, b] (where their outlines cross), "
                          f"a line, a polygonal shape, or a list of these; got {_kind(v)}")
