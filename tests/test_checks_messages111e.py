@@ -363,3 +363,26 @@ def test_fillet_where_two_shapes_meet():
     apart = src2.replace("center=(0, 35)", "center=(0, 60)")
     e = [d for d in aidl_lang.compile(source=apart).diagnostics if d.code == "E0408"]
     assert len(e) == 1 and "no corner of the outline lies on both `lug` and `disc`" in e[0].message
+
+
+def test_W0513_is_accepted_for_labels_laid_out_as_requested():
+    """Run z3's kumihimo disc: 32 numbers 4 mm high round a 54 mm radius, each under its
+    slit as requested: W0513 "runs into" (1.25 mm between boxes, under half the size), and
+    no way to say the layout is meant (its hint changed requested sizes).  The hint now
+    writes `AllowOverlap(numbers)`; written, the warning is gone and the statement counts
+    as used (no W0523); the engraving is the same."""
+    src = (RUNS / "issue111z3/run/08_kumihimo_disc.first_valid.aidl").read_text()
+    r = aidl_lang.compile(source=src)
+    (w,) = _w(r, "W0513")
+    assert "runs into" in w.message and w.hint.endswith("say so: `AllowOverlap(numbers)`")
+    ok = src.replace('    assert body.diameter == 150 mm', '    AllowOverlap(numbers)\n'
+                     '    assert body.diameter == 150 mm', 1)
+    assert ok != src
+    r2 = aidl_lang.compile(source=ok)
+    assert r2.ok and not _w(r2, "W0513") and not _w(r2, "W0523")
+    assert len(r2.parts) == len(r.parts) and r2.parts[0].area == r.parts[0].area
+    # naming a drawing that holds neither text allows nothing
+    other = ok.replace("    AllowOverlap(numbers)\n", "    drawing x { m = Line((0, 0), (1, 0)) }\n"
+                       "    AllowOverlap(x)\n")
+    r3 = aidl_lang.compile(source=other)
+    assert _w(r3, "W0513")

@@ -968,7 +968,9 @@ Three or more marks of one statement that cross a closed engraved outline and en
 the hint gives how far to move the outline, along the marks, to leave them 0.3 mm clear. What
 a maker means is not warned: strokes that cross and go on (a grid, a crosshair through a
 target's rings), a mark that ends on an outline, one or two marks crossing into an outline (a
-dial's finger stop across its rim), outlines that cross each other.
+dial's finger stop across its rim), outlines that cross each other. Labels laid out exactly as
+requested (numbers round a braiding disc, each under its slit) are said so with
+`AllowOverlap(numbers)` (the drawing, or the texts and marks, named): no W0513 between them.
 
     drawing scale {
         tick = Line(start=(40, 0), end=(48, 0))

@@ -626,11 +626,19 @@ def _allow_overlap(items: list, S=None, span=None) -> None:
             node = o if isinstance(o, Structure) else o.owner
             node.engrave_ok = list(getattr(node, "engrave_ok", ())) + [(o, material)]
         done = True
+    elif drawn and len(drawn) == len(objs):
+        # texts and marks laid out close as meant (W0513: labels round a disc that "run into"
+        # each other; run z3's kumihimo numbers): each may come near or over every other
+        for o in drawn:
+            node = o if isinstance(o, Structure) else o.owner
+            node.text_ok = set(getattr(node, "text_ok", ())) | set(drawn)
+        done = True
     if not done:
         raise OperationError("AllowOverlap names a hole and what may refill it, two solid "
                              "parts (of an assembly) that may overlap, two or more shapes "
-                             "of one solid that enclose an opening as meant, or an engraving "
-                             "and its part (`self`) that it runs off on purpose; got "
+                             "of one solid that enclose an opening as meant, an engraving "
+                             "and its part (`self`) that it runs off on purpose, or texts "
+                             "and marks (a drawing) laid out close as meant; got "
                              + " and ".join(_what(StructRef(o) if isinstance(o, Structure)
                                                   else GeomRef(o)) for o in objs))
     if S is not None:

@@ -103,6 +103,10 @@ def check_allowances(d: Drawing, sink: DiagnosticSink, tick=lambda: None) -> Non
                 used = True                # a 3D fit may need it (W0517)
                 break
             drawn = [o for o in objs if _drawn(o)]
+            if drawn and any(getattr(o if isinstance(o, Structure) else o.owner, "text_used",
+                                     False) for o in drawn):
+                used = True                # labels close as meant (W0513)
+                break
             if drawn:                      # an engraving off its part on purpose (W0505)
                 if not getattr(d, "engravings_judged", False) or any(
                         id(o) in getattr(o if isinstance(o, Structure) else o.owner,
@@ -145,6 +149,11 @@ def check_allowances(d: Drawing, sink: DiagnosticSink, tick=lambda: None) -> Non
         if used or not judged:
             continue
         names = ", ".join(dict.fromkeys(_label(o) for o in calls[0]))
+        if all(map(_drawn, calls[0])):
+            sink.warning("W0523", f"`AllowOverlap` allows nothing: {names}: no two of the texts "
+                         "and marks named come close enough to be warned about (W0513)", span,
+                         hint="delete the statement")
+            continue
         if any(map(_drawn, calls[0])):
             sink.warning("W0523", f"`AllowOverlap` allows nothing: {names}: the engraving lies "
                          "on its part's material, so it silences no warning (W0505)", span,
