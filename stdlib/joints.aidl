@@ -216,8 +216,10 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
 
 # A tab-and-slot joint, glued (`screw=0`: tabs into closed slots, a mortise) or screwed with captive nuts (T-slots).
 # `part` "tab" cuts the edge of one panel down to `tabs` tabs `tab` wide
-# (`thickness` long, spread evenly over `length`; the panel drawn `thickness` past
-# (cx, cy), its edge at the tabs' tips) with a `t_slot` for an M`screw`
+# (`thickness` long, spread evenly over `length`; the panel's edge on the line through
+# (cx, cy), the tabs' tips, the panel below it at rotation 0 (above it: 180 deg): the gaps are cut
+# `thickness` into it; give `length` the whole edge, as the edge beyond it stays
+# uncut and stops the mate) with a `t_slot` for an M`screw`
 # screw and its nut between each two; "slot" cuts the mate: a slot
 # `tab` + `clearance` by `thickness` + `clearance` for each tab and a medium
 # clearance hole for each screw, centred on the line through (cx, cy) where the
@@ -226,7 +228,7 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
 # tenon in its mortise, has no screw (they go between tabs).
 # Members: `gap` (within the panel), `overrun` (each gap run 1 mm past the
 # edges: drawn, in no box), `nut`, `slot`, `bolt`.
-# Anchor: (cx, cy) is the middle of the edge (part "slot": of the slots); rotation 0: the edge along x, the tabs toward -y.
+# Anchor: (cx, cy) is the middle of the edge (part "slot": of the slots); rotation 0: the edge along x, the panel toward -y.
 def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, screw=3,
                  clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
     assert (1 if part == "tab" or part == "slot" else 0) == 1, "part is \"tab\" or \"slot\""

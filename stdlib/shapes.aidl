@@ -3,7 +3,7 @@
 # Positions (cx, cy) are starting guesses: place an instance with constraints
 # (CenterInside, Above, Coincident, ...) in the structure that uses it.
 
-# A flat washer: a ring `outer` across with a concentric bore `inner` across (diameters).
+# A flat washer: a ring with a concentric bore, `outer` and `inner` their diameters.
 # Members: `ring` (the Circle), `bore` (a hole; `bore.b` its Circle).
 # Anchor: (cx, cy) is the centre of `ring`.
 def washer(outer=10 mm, inner=5 mm, cx=0 mm, cy=0 mm) -> solid {

@@ -386,3 +386,68 @@ def test_W0513_is_accepted_for_labels_laid_out_as_requested():
                        "    AllowOverlap(x)\n")
     r3 = aidl_lang.compile(source=other)
     assert _w(r3, "W0513")
+
+
+def test_W0519_finds_a_slit_between_two_long_edges():
+    """Run z4's letter opener: a 20 mm blade root on a 24 mm handle whose corners are R6
+    leaves a cusp slit either side (the blade's straight root edge and the corner's arc, 2.2
+    mm under 0.5 mm wide): the slit search paired a vertex with an edge, and the root edge's
+    only vertices were its ends, so nothing was said.  Long edges now carry vertices every
+    half minimum: both slits are W0519, named by the two shapes."""
+    src = (RUNS / "issue111z4/run/02_letter_opener.first_valid.aidl").read_text()
+    w = _w(aidl_lang.compile(source=src), "W0519")
+    assert len(w) == 2
+    assert all("between `opener.grip` and `opener.blade`" in x.message
+               or "between `opener.blade` and `opener.grip`" in x.message for x in w)
+    assert sorted(re.search(r"near \(([-\d.]+), ([-\d.]+)\)", x.message).group(2)
+                  for x in w) == ["-6.2", "6.2"]
+    square = src.replace("corner_radius=6)", "corner_radius=1)")      # the root on the flat
+    assert not _w(aidl_lang.compile(source=square), "W0519")
+
+
+def test_a_patterned_template_instance_moves_whole_when_a_member_is_placed():
+    """Run z5's buttons: `first_flower.s.center == (100, 0)` on a GridPattern's original, an
+    instance of a template with a star and a hole of two thread holes: the star moved alone
+    (the translate stage could not move the instance, its copies having no frame of their
+    own), the holes stayed at the origin and cut nothing (6 x W0502).  The copies' geometry
+    now follows the original's frame there: every flower has its holes, and the ring drawn
+    exactly 0.5 mm clear of them is not W0516 (the circle measured exactly, not its
+    32 chords)."""
+    src = (RUNS / "issue111z5/run/07_sewing_buttons.first_valid.aidl").read_text()
+    r = aidl_lang.compile(source=src)
+    assert r.ok and r.diagnostics == []
+    vals = {v.name: v.value for v in r.values}
+    assert vals["buttons.first_flower.s.center"] == pytest.approx((100, 0), abs=1e-6)
+    assert vals["buttons.first_flower.threads.a.center"] == pytest.approx((97.5, 0), abs=1e-6)
+    assert vals["buttons.flowers[5].threads.b.center"] == pytest.approx((162.5, 30), abs=1e-6)
+    assert vals["buttons.flowers[5].s.center"] == pytest.approx((160, 30), abs=1e-6)
+
+
+def test_a_hole_cut_into_a_part_leaves_who_moves_as_it_was():
+    """Run z5's shot tray: `Below(bottom, top, gap=10)` with a pattern of glass holes and a
+    word declared in the assembly and `CutInto(..., top)`: the declared hole made both layers
+    parts to hold, the stages then had nothing to move, and the paper's ladder met the
+    relation by moving each layer 65 mm (top up, bottom down): the glasses, written about
+    the origin, were 65 mm off the top's centre (E0405 on the model's own centring assert).
+    The first-named moves, as without the hole: the first try is valid and centred."""
+    src = (RUNS / "issue111z5/drafts/05_shot_tray.attempt1.aidl").read_text()
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [d.message for d in r.diagnostics if d.is_error]
+    vals = {v.name: v.value for v in r.values}
+    assert vals["tray.top.plate.center"] == pytest.approx((0, 0), abs=1e-9)
+    assert vals["tray.bottom.plate.center"] == pytest.approx((0, -130), abs=1e-9)
+    bare = """def blank() -> solid {
+    plate = RoundedRectangle(center=(0, 0), width=320, height=120, corner_radius=10)
+}
+assembly tray {
+    top = blank()
+    bottom = blank()
+    Below(bottom, top, gap=10)
+    AlignCenterX(bottom, top)
+%s}
+"""
+    for extra in ("", "    hole glass { c = Circle(center=(0, 0), diameter=40) }\n"
+                      "    CutInto(glass, top)\n"):
+        v = {x.name: x.value for x in aidl_lang.compile(source=bare % extra).values}
+        assert v["tray.top.plate.center"] == pytest.approx((0, 0), abs=1e-9)
+        assert v["tray.bottom.plate.center"] == pytest.approx((0, -130), abs=1e-9)

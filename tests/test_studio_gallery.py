@@ -95,7 +95,8 @@ def test_every_purpose_is_one_readable_line(e):
 
 def test_purposes_come_from_the_leading_comment():
     assert g.entry("generator/divider_tray").purpose.startswith("A parts tray of 3 x 4")
-    assert g.entry("generator/washer").purpose == "A flat washer: a ring with a concentric bore."
+    assert g.entry("generator/washer").purpose == ("A flat washer: a ring with a concentric "
+                                                   "bore, outer and inner their diameters.")
     # a long first sentence keeps what fits of its list
     key = g.entry("example/key").purpose
     assert key.startswith("A house key: a round bow with a key-ring hole") and key.endswith("…")

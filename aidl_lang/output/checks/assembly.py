@@ -61,10 +61,15 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
         if templates(g.part) and templates(g.nearest):
             continue            # a gap a stdlib template places by design (gear_train's lift=)
         d.fit["floating"].append({"part": g.part, "nearest": g.nearest, "gap": round(g.gap, 6)})
+        unplaced = getattr(d.part_of.get(g.part), "placement", None) is None
+        short = g.part.split(".")[-1]
         sink.warning("W0518", f"assembled, part `{g.part}` touches no other part: the nearest, "
                      f"`{g.nearest}`, is {g.gap:.3g} mm away", at(g.part),
-                     hint=f"a tab does not reach its slot: move `{g.part}` {g.gap:.3g} mm "
-                          "with its `Place`, or lengthen the tab")
+                     hint=(f"`{short}` has no `Place`: assembled, it lies flat where it is "
+                           f"drawn; give it one, `Place({short}, ...)`, to put it in the "
+                           "product (the parts are cut as drawn either way)" if unplaced else
+                           f"a tab does not reach its slot: move `{g.part}` {g.gap:.3g} mm "
+                           "with its `Place`, or lengthen the tab"))
 
 
 def check_routed_fit(d: Drawing, output, diameter: float, relief: str, sink: DiagnosticSink,

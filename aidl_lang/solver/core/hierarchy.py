@@ -543,7 +543,12 @@ class Solver(PartsFirst):
             if self.trace.budget_exceeded:
                 break
             rows = self.rows_of(upto(d - 1))
-            params = own([s]) + frames([t for lv in levels[1:d + 1] for t in lv])
+            moved = [t for lv in levels[1:d + 1] for t in lv]
+            # a pattern's copies have no frame of their own: their geometry follows their
+            # original's frame here (run z5's buttons: `first_flower.s.center == (100, 0)`
+            # on a GridPattern's original moved the star alone, its holes left behind)
+            copies = [c for t in moved if id(t) not in self.frame for c in t.subtree()]
+            params = own([s]) + frames(moved) + own(list({id(c): c for c in copies}.values()))
             last = Attempt("translate", d, rows, self._cols(params, rows), order=order)
             if (yield last):
                 return True

@@ -353,7 +353,11 @@ class PartsFirst:
         held = set(first)
         refs = _references(s)
         later: list = []
-        for c in list(self.cut_parts.get(id(s), ())) + refs:
+        # a part placed on a sibling (`Below(bottom, top)`) is no part to hold: it moves to
+        # its reference, as without a declared hole (run z5's tray: a hole cut into `top`
+        # held both layers, and the ladder then moved each 65 mm to meet the relation)
+        placed = {id(t) for rank in _who_moves(s)[1] for t in rank} if refs else set()
+        for c in [c for c in self.cut_parts.get(id(s), ()) if id(c) not in placed] + refs:
             sub = list(c.subtree())
             held.update(frames(sub))
             held.update(own(sub))
