@@ -246,7 +246,8 @@ def test_the_explained_examples_show_the_new_warnings(compile_text):
 
 def test_W0516_a_ring_round_a_hole_and_odd_marks(compile_text):
     """A ring engraved 0.2 mm outside a 3 mm hole comes within a hair of the hole's edge (the
-    hole a 32-gon: 0.18 mm from its chords): named with the edge and where, the hint the
+    ring measured as a circle, issue 111; as a 32-gon it was 0.18 mm): named with the edge
+    and where, the hint the
     distance to add; a zero-length line and an empty text in the drawing give no error."""
     src = """units mm
 solid p {

@@ -771,7 +771,7 @@ def _say_meets_cut(part, group: list, hole, E0, E1, crossing: set, sink) -> None
                 fix = (f"end or move each copy of `{g.label}` at least {CUT_CLEAR} mm "
                        "inside the edge")
     else:
-        fix = (f"keep `{g.label}` {math.ceil((CUT_CLEAR - gap) * 100) / 100:.2f} mm "
+        fix = (f"keep `{g.label}` {math.ceil(round((CUT_CLEAR - gap) * 100, 6)) / 100:.2f} mm "
                "further from the edge (move it, or change its size)")
     more = ""
     if len(group) > 1:
