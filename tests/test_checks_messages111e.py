@@ -451,3 +451,14 @@ assembly tray {
         v = {x.name: x.value for x in aidl_lang.compile(source=bare % extra).values}
         assert v["tray.top.plate.center"] == pytest.approx((0, 0), abs=1e-9)
         assert v["tray.bottom.plate.center"] == pytest.approx((0, -130), abs=1e-9)
+
+
+def test_W0518_hint_for_a_part_with_no_Place():
+    """Run z6's first-aid box: an inlay glued into a `lid_box`'s lid by hand, with no `Place`:
+    W0518's hint said "a tab does not reach its slot: move it with its `Place`" (there was
+    neither).  A part with no `Place` is told it lies flat where it is drawn and how to put
+    it in the product; a placed part keeps the tab hint."""
+    src = (RUNS / "issue111z6/run/07_first_aid_box.first_valid.aidl").read_text()
+    (w,) = _w(aidl_lang.compile(source=src), "W0518")
+    assert w.hint.startswith("`inlay` has no `Place`: assembled, it lies flat where it is drawn")
+    assert "a tab does not reach" not in w.hint
