@@ -392,17 +392,21 @@ def test_W0519_finds_a_slit_between_two_long_edges():
     """Run z4's letter opener: a 20 mm blade root on a 24 mm handle whose corners are R6
     leaves a cusp slit either side (the blade's straight root edge and the corner's arc, 2.2
     mm under 0.5 mm wide): the slit search paired a vertex with an edge, and the root edge's
-    only vertices were its ends, so nothing was said.  Long edges now carry vertices every
-    half minimum: both slits are W0519, named by the two shapes."""
+    only vertices were its ends, so nothing was said.  The two sides of a cusp's floor (an
+    inside corner opening by less than 10 deg) now carry points every quarter minimum: both
+    slits are W0519, named by the two shapes.  A V between two petals (about 35 deg, cut as
+    drawn) is searched as before: run z5's sunflower says one, as it did."""
     src = (RUNS / "issue111z4/run/02_letter_opener.first_valid.aidl").read_text()
     w = _w(aidl_lang.compile(source=src), "W0519")
     assert len(w) == 2
     assert all("between `opener.grip` and `opener.blade`" in x.message
                or "between `opener.blade` and `opener.grip`" in x.message for x in w)
     assert sorted(re.search(r"near \(([-\d.]+), ([-\d.]+)\)", x.message).group(2)
-                  for x in w) == ["-6.2", "6.2"]
+                  for x in w) == ["-6.1", "6.1"]
     square = src.replace("corner_radius=6)", "corner_radius=1)")      # the root on the flat
     assert not _w(aidl_lang.compile(source=square), "W0519")
+    sun = (RUNS / "issue111z5/run/03_sunflower_topper.first_valid.aidl").read_text()
+    assert len(_w(aidl_lang.compile(source=sun), "W0519")) == 1
 
 
 def test_a_patterned_template_instance_moves_whole_when_a_member_is_placed():
