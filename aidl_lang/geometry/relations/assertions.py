@@ -54,6 +54,17 @@ def describe(a: Assertion, found: list, alternatives: int = 1, x=None) -> str:
             + _drawn_boxes(a, x) + _text_boxes(a, x) + _star_boxes(a, x))
 
 
+def _box_terms(a: Assertion) -> list:
+    """The box sides (:class:`.bbox.BBTerm`) the sides of ``a``'s alternatives read."""
+    terms: list = []
+    for group in a.groups:
+        for _, le, re_, _ in group:
+            for side in (le, re_):
+                if not isinstance(side, (int, float)):
+                    collect(side, terms)
+    return terms
+
+
 def _relative(label: str, owner) -> str:
     """``label`` as written from inside ``owner`` (``star.s`` of ``lid.star.s`` in ``lid``)."""
     path = getattr(owner, "path", None)
@@ -68,16 +79,10 @@ def _star_boxes(a: Assertion, x) -> str:
     (`2 * star.outer_radius`)", or "" where the box is as wide and tall as that circle."""
     if x is None:
         return ""
-    from .bbox import numeric_box
-    terms: list = []
-    for group in a.groups:
-        for _, le, re_, _ in group:
-            for side in (le, re_):
-                if not isinstance(side, (int, float)):
-                    collect(side, terms)
     from ..core.model import Structure
+    from .bbox import numeric_box
     seen, out = set(), []
-    for t in terms:
+    for t in _box_terms(a):
         g = t.target
         if isinstance(g, Structure):           # a hole of one star: `star.bb`
             shapes = [h for st in g.subtree() for h in st.geometry
@@ -158,14 +163,8 @@ def _drawn_boxes(a: Assertion, x) -> str:
         return ""
     from ..core.model import Structure
     from .bbox import numeric_box
-    terms: list = []
-    for group in a.groups:
-        for _, le, re_, _ in group:
-            for side in (le, re_):
-                if not isinstance(side, (int, float)):
-                    collect(side, terms)
     seen, out = set(), []
-    for t in terms:
+    for t in _box_terms(a):
         s = t.target
         if not isinstance(s, Structure) or id(s) in seen:
             continue
