@@ -211,7 +211,7 @@ def test_fillet_where_an_edge_crosses_an_ellipse_or_a_circle():
     assert r2.parts[0].area > plain.parts[0].area
     apart = disc.replace("height=30)", "height=10)")      # the bar ends 5 mm below the disc
     e = [d for d in aidl_lang.compile(source=apart).diagnostics if d.code == "E0408"]
-    assert len(e) == 2 and "does not reach the outline of `c`" in e[0].message
+    assert len(e) == 2 and "no corner of the outline lies on both `bar.left` and `c`" in e[0].message
 
 
 def test_a_one_line_function_gives_its_expressions_value():

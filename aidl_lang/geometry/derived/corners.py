@@ -50,8 +50,8 @@ class Chosen:
 
     def __init__(self, what: str, points: tuple, name, alts: tuple = (), curve=None):
         self.what, self.points, self.name, self.alts = what, points, name, alts
-        # "edge_curve" (an edge and a Circle's or Ellipse's outline: ``points`` the edge's
-        # ends and the curve's centre): the curve's Geometry, then (rx, ry, rotation) placed
+        # "shapes_meet" (two shapes, or an edge and a shape: ``points`` their points in
+        # order): ((kind, count) of each, then each Geometry; placed: each one's sizes)
         self.curve = curve
 
     def moved(self, f) -> "Chosen":
@@ -67,15 +67,6 @@ class Chosen:
         curve = self.curve
         if self.what == "shapes_meet" and not isinstance(curve[2], tuple):
             curve = tuple(curve[:2]) + tuple(_sizes(g, x) for g in curve[2:])   # placed
-        elif curve is not None and not isinstance(curve, tuple):
-            from ..relations.bbox import held_rotation
-            if curve.kind == "Circle":
-                r = abs(float(x[curve.scalars["radius"].index]))
-                curve = (r, r, 0.0)
-            else:
-                curve = (abs(float(x[curve.scalars["rx"].index])),
-                         abs(float(x[curve.scalars["ry"].index])),
-                         float(held_rotation(curve, x)))
         return Chosen(self.what, tuple(at(px, py) for px, py in self.points), self.name,
                       tuple((n, at(*a), at(*b)) for n, a, b in self.alts), curve)
 
@@ -100,14 +91,12 @@ class Chosen:
         corners of ``loops`` (the outline) that lie on both of their outlines."""
         if self.what == "shapes_meet":
             return shapes_meet(self.points, self.curve, self.name, loops or [])
-        if self.what == "edge_curve":
-            return edge_meets_curve(self.points, self.curve, self.name)
         if self.what != "edges":
             return list(self.points), None
         return edges_meet(self.points, self.name)
 
     def describe(self) -> str:
-        if self.what in ("edges", "edge_curve"):
+        if self.what == "edges":
             return f"the corner of `{self.name[0]}` and `{self.name[1]}`"
         if self.what == "shapes_meet":
             return f"the corners where `{self.name[0]}` and `{self.name[1]}` meet"
@@ -195,7 +184,8 @@ def shapes_meet(pts, curve, names, loops) -> tuple[list, str | None]:
     """([the corners of ``loops`` on both shapes' outlines], None), or ([], why there are
     none): the shapes of ``Fillet([a, b], r)`` (``curve``: their (kind, count) and sizes,
     ``pts`` their placed points in order), within :data:`CORNER_TOL` of both (issue 111, run
-    z3's hair catcher: `Fillet([tab, disc], 2)` where a round-ended tab meets a disc)."""
+    z3's hair catcher: `Fillet([tab, disc], 2)` where a round-ended tab meets a disc; run y's
+    table-tennis blade: `Fillet([handle.left, blade], 8)`, an edge into an oval)."""
     (ka, na), (kb, nb), sa, sb = curve
     A, B = list(pts[:na]), list(pts[na:na + nb])
     out = []
@@ -209,40 +199,6 @@ def shapes_meet(pts, curve, names, loops) -> tuple[list, str | None]:
         return out, None
     return [], (f"no corner of the outline lies on both `{names[0]}` and `{names[1]}` (their "
                 f"outlines do not cross there, or one lies inside the other)")
-
-
-def edge_meets_curve(pts, curve, names) -> tuple[list, str | None]:
-    """([the points where an edge crosses a Circle's or Ellipse's outline], None), or ([],
-    why they make no corner): the edge from ``pts[0]`` to ``pts[1]``, the curve about
-    ``pts[2]`` with ``curve`` = (rx, ry, rotation in radians); the crossings are the roots
-    in [0, 1] (within :data:`CORNER_TOL` of the ends) of |M (a + t (b - a) - c)| = 1, M
-    turning by -rotation and scaling by (1/rx, 1/ry) (issue 111, run y's table-tennis
-    blade: `Fillet([handle.left, blade], 8)` where the handle's edge runs into an oval)."""
-    (ax, ay), (bx, by), (cx, cy) = pts
-    rx, ry, rot = curve
-    L = math.hypot(bx - ax, by - ay)
-    if L <= 1e-9:
-        return [], f"`{names[0]}` has no length (its ends are one point), so it has no direction"
-    if rx <= 0 or ry <= 0:
-        return [], f"`{names[1]}` has no size"
-    co, si = math.cos(rot), math.sin(rot)
-
-    def unit(px, py):
-        dx, dy = px - cx, py - cy
-        return ((co * dx + si * dy) / rx, (-si * dx + co * dy) / ry)
-    (p0x, p0y), (p1x, p1y) = unit(ax, ay), unit(bx, by)
-    dx, dy = p1x - p0x, p1y - p0y
-    qa, qb, qc = dx * dx + dy * dy, 2 * (p0x * dx + p0y * dy), p0x * p0x + p0y * p0y - 1
-    disc = qb * qb - 4 * qa * qc
-    tol = CORNER_TOL / L
-    if disc >= 0:
-        root = math.sqrt(disc)
-        ts = sorted({(-qb - root) / (2 * qa), (-qb + root) / (2 * qa)})
-        on = [min(max(t, 0.0), 1.0) for t in ts if -tol <= t <= 1 + tol]
-        if on:
-            return [(ax + t * (bx - ax), ay + t * (by - ay)) for t in on], None
-    return [], (f"`{names[0]}` does not reach the outline of `{names[1]}`, so they make no "
-                f"corner")
 
 
 def finish(s: Structure, loops: list, x=None, check=None, said=None) -> list:
@@ -509,7 +465,7 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
             msg = f"{head} {verb}s nothing at {c.describe()}: "
             if len(js) > 1:
                 msg += f"none of them is a corner of the final outline of `{path}`"
-            elif c.what in ("edges", "edge_curve"):
+            elif c.what == "edges":
                 msg += f"they meet at ({p[0]:.6g}, {p[1]:.6g}) mm, and {where}"
             else:
                 msg += where

@@ -956,14 +956,6 @@ def _chosen(ctx, v, S, kind: str) -> list:
             alts = tuple((_name(q, S), member(q, "start", S), member(q, "end", S))
                          for q in _sibling_edges([e.geom for e in v]))
             return [Chosen("edges", ends, tuple(_name(e.geom, S) for e in v), alts)]
-        curved = [e for e in v if isinstance(e, GeomRef) and e.geom.kind in ("Circle", "Ellipse")]
-        if len(v) == 2 and len(curved) == 1 and isinstance(v[0 if v[1] is curved[0] else 1],
-                                                             GeomRef) \
-                and v[0 if v[1] is curved[0] else 1].geom.kind == "Line":
-            # an edge and a round shape: the corners where the edge crosses its outline
-            line, g = v[0 if v[1] is curved[0] else 1].geom, curved[0].geom
-            pts = (member(line, "start", S), member(line, "end", S), member(g, "center", S))
-            return [Chosen("edge_curve", pts, (_name(line, S), _name(g, S)), curve=g)]
         if len(v) == 2 and all(isinstance(e, GeomRef) and e.geom.closed and e.geom.kind in MEET
                                or isinstance(e, GeomRef) and e.geom.kind == "Line" for e in v):
             # two shapes (or a shape and an edge): the corners where their outlines cross
