@@ -466,3 +466,14 @@ def test_W0518_hint_for_a_part_with_no_Place():
     (w,) = _w(aidl_lang.compile(source=src), "W0518")
     assert w.hint.startswith("`inlay` has no `Place`: assembled, it lies flat where it is drawn")
     assert "a tab does not reach" not in w.hint
+
+
+def test_E0405_says_a_holes_box_widens_its_parts():
+    """Run z7's board stand: `assert left_side.bb.height == 115 mm` failed at 125.75 mm, the
+    three board slots (a hole) running out through the arched top: E0405 now says the box
+    holds that hole, and the material's own 160 x 115 mm."""
+    src = (RUNS / "issue111z7/drafts/02_board_stand.attempt1.aidl").read_text()
+    (e,) = [d for d in aidl_lang.compile(source=src).diagnostics if d.code == "E0405"]
+    assert ("`board_stand.left_side.bb` holds its hole `board_stand.left_side.boards` (a hole's "
+            "box counts where it runs past the material): its material alone spans 160 x 115 "
+            "mm") in e.message

@@ -155,10 +155,12 @@ def _text_boxes(a: Assertion, x) -> str:
 
 
 def _drawn_boxes(a: Assertion, x) -> str:
-    """What a structure's box the assertion reads owes to its drawings, when they widen it
-    (issue 111: `assert marker.bb.width == 25 mm` failed at 30.1 mm, the engraved word
-    being wider than the stake): "; `marker.bb` holds its drawing `marker.label`: its
-    material alone spans 25 x 120 mm (`marker.body.bb`)", or ""."""
+    """What a structure's box the assertion reads owes to its drawings and holes, when they
+    widen it (issue 111: `assert marker.bb.width == 25 mm` failed at 30.1 mm, the engraved
+    word being wider than the stake; run z7's board stand: `side.bb.height == 115 mm` at
+    125.75, slots for the boards running out through the arched top): "; `marker.bb` holds
+    its drawing `marker.label`: its material alone spans 25 x 120 mm (`marker.body.bb`)",
+    or ""."""
     if x is None:
         return ""
     from ..core.model import Structure
@@ -169,22 +171,37 @@ def _drawn_boxes(a: Assertion, x) -> str:
         if not isinstance(s, Structure) or id(s) in seen:
             continue
         seen.add(id(s))
-        drawn = [d for d in s.subtree() if d is not s and d.kind == "drawing"
-                 and not any(u.kind == "drawing" for u in d.ancestors() if u.is_within(s))]
-        if not drawn:
+        extra = [d for d in s.subtree() if d is not s and d.kind in ("drawing", "hole", "cut")
+                 and not any(u.kind in ("drawing", "hole", "cut") for u in d.ancestors()
+                             if u.is_within(s) and u is not s)]
+        if not extra or s.kind in ("hole", "cut", "drawing"):
             continue
         try:
             full = numeric_box(s, t.frame, x)
-            bare = numeric_box(s, t.frame, x, exclude=set(drawn))
+            bare = numeric_box(s, t.frame, x, exclude=set(extra))
         except (ArithmeticError, KeyError, TypeError, ValueError):
             continue
         if full is None or bare is None or max(abs(u - v) for u, v in zip(full, bare)) <= TOL:
             continue
+        wide = []                          # those that reach past the material's box
+        for d in extra:
+            try:
+                b = numeric_box(d, t.frame, x)
+            except (ArithmeticError, KeyError, TypeError, ValueError):
+                b = None
+            if b is not None and (b[0] < bare[0] - TOL or b[1] > bare[1] + TOL
+                                  or b[2] < bare[2] - TOL or b[3] > bare[3] + TOL):
+                wide.append(d)
+        wide = wide or extra
         shapes = [g for g in s.geometry if g.name and g.closed and not g.construction]
         named = f" (`{s.path}.{shapes[0].name}.bb`)" if len(shapes) == 1 else ""
-        who = ", ".join(f"`{d.path}`" for d in drawn[:3])
-        out.append(f"`{s.path}.bb` holds its drawing{'s' if len(drawn) > 1 else ''} {who}: "
-                   f"its material alone spans {(bare[1] - bare[0]) / a.scale:.6g} x "
+        who = ", ".join(f"{'drawing' if d.kind == 'drawing' else d.kind} `{d.path}`"
+                        for d in wide[:3])
+        holes = any(d.kind != "drawing" for d in wide)
+        out.append(f"`{s.path}.bb` holds its {who}"
+                   + (" (a hole's box counts where it runs past the material)" if holes
+                      else "")
+                   + f": its material alone spans {(bare[1] - bare[0]) / a.scale:.6g} x "
                    f"{(bare[3] - bare[2]) / a.scale:.6g} {a.unit}{named}")
     return "".join(f"; {o}" for o in out)
 
