@@ -19,7 +19,7 @@ from ....base.diagnostics import DiagnosticSink
 from ....geometry.core.model import Structure
 from ...part.build.booleans import Drawing
 from ..common import _edges, _inside, _part_of, _pct, _signed
-from .segments import _crosses, _edge_arrays, _pair_gap
+from .segments import _crosses, _edge_arrays, _exact_circle_gaps, _pair_gap
 
 ENGRAVE_TOL = 0.05       # mm: engraving this close to an edge still counts as on the material
 
@@ -923,32 +923,6 @@ def _seg_gap(A0, A1, B0, B1) -> tuple:
         return 0.0, int(i), int(j), p, p.copy()
     best = min(cands, key=lambda c: c[0][i, j])
     return float(best[0][i, j]), int(i), int(j), np.array(best[1][i, j]), np.array(best[2][i, j])
-
-
-def _exact_circle_gaps(geoms, marks, A, B, d) -> None:
-    """Replace in ``d`` the gap of each pair whose mark is an engraved circle (one
-    ``circle`` item) by the exact gap between that circle and the edge from ``A`` to ``B``:
-    its 32 samples' chords lie up to r (1 - cos(pi / 32)) inside it (0.02 mm at r 4), so a
-    ring drawn exactly 0.5 mm clear of a hole inside it measured 0.4997 mm (W0516, run z5's
-    buttons).  Outside the circle: the edge's distance to the centre less the radius;
-    inside it: the radius less the edge's farther end's distance; across it: 0."""
-    circ = {k: (np.asarray(items[0][1], float), float(items[0][2]))
-            for k, (_, items) in enumerate(geoms) if len(items) == 1 and items[0][0] == "circle"}
-    if not circ:
-        return
-    idx = np.flatnonzero(np.fromiter((int(k) in circ for k in marks), bool, len(marks)))
-    if not len(idx):
-        return
-    C = np.array([circ[int(k)][0] for k in marks[idx]]).reshape(-1, 2)
-    R = np.array([circ[int(k)][1] for k in marks[idx]])
-    a, b = A[idx], B[idx]
-    ab = b - a
-    L2 = np.einsum("ij,ij->i", ab, ab)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        t = np.clip(np.where(L2 > 0, np.einsum("ij,ij->i", C - a, ab) / L2, 0.0), 0.0, 1.0)
-    near = np.hypot(*(a + ab * t[:, None] - C).T)
-    far = np.maximum(np.hypot(*(a - C).T), np.hypot(*(b - C).T))
-    d[idx] = np.where(near >= R, near - R, np.where(far <= R, R - far, 0.0))
 
 
 def _mark_segments(items) -> tuple:
