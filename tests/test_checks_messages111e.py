@@ -4,6 +4,7 @@ reads solved geometry (E0118's message), the freedom line's "on its part", and w
 `start_angle` turns (the CircularPattern line)."""
 from __future__ import annotations
 
+import math
 import re
 from pathlib import Path
 
@@ -309,7 +310,19 @@ def test_W0507_not_beside_the_slivers_of_a_rounded_notch():
     assert len(w) == 1 and "hole `palette.thumb` and hole `palette.notch`" in w[0].message
 
 
-def test_W0411_a_fillet_that_cuts_a_sharp_tip_back():
+def _dxf_curves(src: str, tmp_path) -> list:
+    """The curves of ``src`` rendered to DXF by the real CLI, read back by ezdxf alone."""
+    import subprocess
+    import sys
+    from dxf_compare import curves
+    f = tmp_path / "part.aidl"
+    f.write_text(src)
+    subprocess.run([sys.executable, "-m", "aidl_lang.cli", "render", str(f), "-o",
+                    str(tmp_path / "part.dxf")], check=True, capture_output=True)
+    return curves(tmp_path / "part.dxf")
+
+
+def test_W0411_a_fillet_that_cuts_a_sharp_tip_back(tmp_path):
     """Run z2's dinosaur (`Fillet(tail.points[2], 3)` on a 15 deg tail tip: 19.3 mm short,
     said only by a W0405 about a box) and run k's tent stake (`Fillet(2)` on a 9.8 deg
     point: 158.6 mm long where 180 was asked, said by nothing): W0411 names the tip, its
@@ -326,8 +339,14 @@ def test_W0411_a_fillet_that_cuts_a_sharp_tip_back():
     keep = float(re.search(r"radius ([\d.]+) mm cuts it back 1 mm", w[0].hint).group(1))
     a = math.radians(float(re.search(r"the ([\d.]+)° tip", w[0].message).group(1)))
     assert keep / math.sin(a / 2) - keep == pytest.approx(1.0, abs=0.02)
-    # the stake's length as cut: 180 mm drawn, 21.42 mm less along its axis
-    assert r.parts[0].bbox[3] - r.parts[0].bbox[1] == pytest.approx(180 - 21.42, abs=0.01)
+    # the stake as cut, read from its DXF: the R2 arc at the tip lies r / sin(a / 2) - r
+    # up the axis, a / 2 = atan(12 / 140) (its sides run from (+-12, -40) to (0, -180))
+    back = 2 * math.hypot(12, 140) / 12 - 2
+    assert "back by 21.42 mm" in w[0].message and back == pytest.approx(21.42, abs=0.005)
+    tip = [c for c in _dxf_curves(stake, tmp_path) if c[0] == "A" and abs(c[1][0][0]) < 1e-9
+           and c[1][0][1] < -150]
+    assert len(tip) == 1 and tip[0][2][0] == pytest.approx(2.0, abs=1e-9)
+    assert tip[0][1][0][1] - 2 == pytest.approx(-180 + back, abs=1e-9)   # the arc's lowest point
     star = """solid s {
     body = Star(center=(0, 0), points=5, outer_radius=30, inner_radius=12)
     Fillet(2)
@@ -336,7 +355,7 @@ def test_W0411_a_fillet_that_cuts_a_sharp_tip_back():
     assert not _w(aidl_lang.compile(source=star), "W0411")
 
 
-def test_fillet_where_two_shapes_meet():
+def test_fillet_where_two_shapes_meet(tmp_path):
     """Run z3's hair catcher: `Fillet([tab, disc], 2)` where a round-ended tab (a Slot)
     meets a disc was E0108 ("got Slot"): no form reached that corner.  Two shapes now name
     the corners where their outlines cross: the run's first program is valid, both joins
@@ -360,6 +379,14 @@ def test_fillet_where_two_shapes_meet():
     assert r2.ok and not [d for d in r2.diagnostics if d.code in ("W0406", "E0408")]
     plain = aidl_lang.compile(source=src2.replace("    Fillet([lug, disc], 3)\n", ""))
     assert r2.parts[0].area > plain.parts[0].area          # two inside corners filled
+    # read from the DXF: two R3 arcs, each tangent to the lug's side (its centre 3 mm in from
+    # x = +-10) and to the R30 disc (its centre 30 + 3 mm from the disc's)
+    arcs = [c for c in _dxf_curves(src2, tmp_path) if c[0] == "A"
+            and c[2][0] == pytest.approx(3.0, abs=1e-9)]
+    assert len(arcs) == 2
+    for (cx, cy), _, _ in (a[1] for a in arcs):
+        assert abs(cx) == pytest.approx(13.0, abs=1e-9)
+        assert math.hypot(cx, cy) == pytest.approx(33.0, abs=1e-9)
     apart = src2.replace("center=(0, 35)", "center=(0, 60)")
     e = [d for d in aidl_lang.compile(source=apart).diagnostics if d.code == "E0408"]
     assert len(e) == 1 and "no corner of the outline lies on both `lug` and `disc`" in e[0].message
@@ -477,3 +504,21 @@ def test_E0405_says_a_holes_box_widens_its_parts():
     assert ("`board_stand.left_side.bb` holds its hole `board_stand.left_side.boards` (a hole's "
             "box counts where it runs past the material): its material alone spans 160 x 115 "
             "mm") in e.message
+
+
+def test_fillet_where_a_post_meets_a_rounded_corner():
+    """Two shapes' corners on a RoundedRectangle's rounded corner are found on its arc (not
+    on the sharp rectangle): a 6 mm post standing on the base's R10 corner is rounded there
+    (W0406 gives the 0.53 mm the short pieces leave room for), where E0408 said no corner."""
+    src = """solid p {
+    base = RoundedRectangle(center=(0, 0), width=60, height=40, corner_radius=10)
+    post = Rectangle(center=(27, 26), width=6, height=20)
+    Fillet([post, base], 2)
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert not [d for d in r.diagnostics if d.code == "E0408"]
+    (w,) = _w(r, "W0406")
+    assert "where `post` and `base` meet with only 0.53125 mm" in w.message
+    plain = aidl_lang.compile(source=src.replace("    Fillet([post, base], 2)\n", ""))
+    assert r.parts[0].area > plain.parts[0].area

@@ -204,6 +204,30 @@ async def test_signature_help_forms_and_active_argument(client: LanguageClient, 
     assert signature.signature_help(src2, 0, 3) is None                  # not in a call
 
 
+@pytest.mark.asyncio(loop_scope="module")
+async def test_a_function_through_the_client(client: LanguageClient, tmp_path):
+    """`def on_circle(c, r, a=0 deg) = ...` (issue 111: a model's one-line function) as an
+    editor meets it through the language client: no diagnostic, signature help with its
+    parameters and its expression, the outline names it, and hover shows its line."""
+    uri = (tmp_path / "f.aidl").as_uri()
+    src = ("def on_circle(c, r, a=0 deg) = (c[0] + r * cos(a), c[1] + r * sin(a))\n"
+           "solid p {\n    k = Circle(center=on_circle((0, 0), 3, 45 deg), diameter=2)\n}\n")
+    _open(client, uri, src)
+    assert list(await _diagnostics(client, uri)) == []
+    doc = T.TextDocumentIdentifier(uri=uri)
+    h = await client.text_document_signature_help_async(T.SignatureHelpParams(
+        text_document=doc, position=pos(src, "3, 45", len("3, "))))
+    assert h.signatures[0].label == "on_circle(c, r, a=0 deg)" and h.active_parameter == 2
+    assert h.signatures[0].documentation.value == ("function = (c[0] + r * cos(a), c[1] + r * "
+                                                   "sin(a))")
+    syms = await client.text_document_document_symbol_async(T.DocumentSymbolParams(
+        text_document=doc))
+    assert [s.name for s in syms][:2] == ["on_circle", "p"]
+    hov = await client.text_document_hover_async(T.HoverParams(
+        text_document=doc, position=pos(src, "on_circle((0", 2)))
+    assert "def on_circle(c, r, a=0 deg) = (c[0]" in hov.contents.value
+
+
 def test_signature_help_of_rigid_keeps_b_active_past_its_place():
     """`Rigid(a, b, ...)` gathers every further argument into b: the fifth argument still
     highlights b, and the label says more may follow."""

@@ -125,11 +125,12 @@ def signature_help(src: str, line: int, character: int, path: str = "doc.aidl") 
         title = short
     else:
         sym = _resolve_chain(Index(src, path), callee, off)
-        if sym is not None and sym.kind == "template":
+        if sym is not None and sym.kind in ("template", "function"):
             d = sym.node
             osrc = sym.origin.src if sym.origin is not None else src
             forms.append(([(osrc[p.span.start:p.span.end], p.name) for p in d.params],
-                          f"template -> {d.kind}"))
+                          f"template -> {d.kind}" if sym.kind == "template" else
+                          "function = " + osrc[d.value.span.start:d.value.span.end]))
             title = d.name
         else:             # the document does not parse: read the `def` line itself
             m = re.search(rf"^\s*def\s+{re.escape(short)}\s*\(([^()]*)\)\s*->\s*(\w+)",

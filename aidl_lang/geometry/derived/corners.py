@@ -143,6 +143,9 @@ def _sizes(g, x) -> tuple:
     Circle or Slot, (rx, ry, rotation) of an Ellipse, () otherwise."""
     if g.kind in ("Circle", "Slot"):
         return (abs(float(x[g.scalars["radius"].index])),)
+    if g.kind == "RoundedRectangle" and g.data.get("corner_radius") \
+            and "corner_radii" not in g.data:             # (one radius: the "rounded" spec)
+        return (float(g.data["corner_radius"]),)
     if g.kind == "Ellipse":
         from ..relations.bbox import held_rotation
         return (abs(float(x[g.scalars["rx"].index])), abs(float(x[g.scalars["ry"].index])),
@@ -174,6 +177,20 @@ def outline_distance(kind: str, pts: list, sizes: tuple, p) -> float:
         t = 0.0 if L2 == 0 else min(max(((px - ax) * dx + (py - ay) * dy) / L2, 0.0), 1.0)
         d = math.hypot(px - ax - t * dx, py - ay - t * dy)
         return abs(d - sizes[0]) if kind == "slot" else d
+    if kind == "rounded":                 # a RoundedRectangle: the rectangle its corners'
+        (bl, br, tr, tl), rc = pts, sizes[0]   # centres span, grown by the corner radius
+        ux, uy = br[0] - bl[0], br[1] - bl[1]
+        vx, vy = tl[0] - bl[0], tl[1] - bl[1]
+        lu, lv = math.hypot(ux, uy), math.hypot(vx, vy)
+        if lu <= 2 * rc or lv <= 2 * rc:
+            return outline_distance("polygon", list(pts), (), p)
+        ux, uy, vx, vy = ux / lu, uy / lu, vx / lv, vy / lv
+        # the point in the rectangle's own axes, about its centre; the inner half sizes
+        mx, my = (bl[0] + tr[0]) / 2, (bl[1] + tr[1]) / 2
+        a = abs((px - mx) * ux + (py - my) * uy) - (lu / 2 - rc)
+        b = abs((px - mx) * vx + (py - my) * vy) - (lv / 2 - rc)
+        inner = math.hypot(max(a, 0.0), max(b, 0.0)) + min(max(a, b), 0.0)
+        return abs(inner - rc)
     best = math.inf                       # a polygon: its nearest side
     for (ax, ay), (bx, by) in zip(pts, pts[1:] + pts[:1]):
         best = min(best, outline_distance("segment", [(ax, ay), (bx, by)], (), p))

@@ -926,8 +926,10 @@ MEET = ("Circle", "Ellipse", "Slot", "Rectangle", "RoundedRectangle", "Polygon",
 
 def _outline_spec(g: Geometry, S) -> tuple:
     """(kind of outline, its points in ``S``'s frame) for :func:`.corners.outline_distance`:
-    "circle" (center), "ellipse" (center), "slot" (start, end), "segment" (start, end) or
-    "polygon" (its corners, in order); radii are read from the solved unknowns."""
+    "circle" (center), "ellipse" (center), "slot" (start, end), "segment" (start, end),
+    "rounded" (a RoundedRectangle of one radius: its corners) or "polygon" (its corners, in
+    order: a Star's tips and a RoundedRectangle's corners of several radii as drawn sharp);
+    radii are read from the solved unknowns."""
     from ..relations.members import _pv, member, points_of
     k = g.kind
     if k in ("Circle", "Ellipse"):
@@ -936,6 +938,8 @@ def _outline_spec(g: Geometry, S) -> tuple:
         return "slot", [member(g, "start", S), member(g, "end", S)]
     if k == "Line":
         return "segment", [member(g, "start", S), member(g, "end", S)]
+    if k == "RoundedRectangle" and g.data.get("corner_radius") and "corner_radii" not in g.data:
+        return "rounded", [_pv(p, S) for p in points_of(g)]
     return "polygon", [_pv(p, S) for p in points_of(g)]
 
 

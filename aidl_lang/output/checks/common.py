@@ -245,6 +245,23 @@ def _inside_split(U: np.ndarray, edges, tick=None) -> np.ndarray:
     return odd
 
 
+def _edge_distance(P: np.ndarray, edges) -> np.ndarray:
+    """The distance (mm) from each point of ``P`` (N x 2) to the nearest of ``edges`` (the
+    four arrays of :func:`_edges`), points against edges in blocks of at most a million
+    pairs (the farthest point of a keyhole run out of its part, W0530; a pattern's copy)."""
+    x1, y1, x2, y2 = (np.asarray(e, dtype=float) for e in edges)
+    dx, dy = (x2 - x1)[None], (y2 - y1)[None]
+    L2 = dx * dx + dy * dy
+    step = max(1, 1_000_000 // max(1, len(x1)))
+    dist = np.empty(len(P))
+    for i in range(0, len(P), step):
+        px, py = P[i:i + step, :1] - x1[None], P[i:i + step, 1:] - y1[None]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = np.clip(np.where(L2 > 0, (px * dx + py * dy) / L2, 0.0), 0.0, 1.0)
+        dist[i:i + step] = np.hypot(px - t * dx, py - t * dy).min(axis=1)
+    return dist
+
+
 def _edges(loops) -> tuple:
     """The edges of closed ``loops`` as four arrays (x1, y1, x2, y2): each vertex to the next,
     the last back to the first; what :func:`_inside` takes (prepared once per part)."""

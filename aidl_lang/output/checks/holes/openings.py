@@ -40,7 +40,7 @@ from ...part.measure.nearby import (boundaries, boundary, box_pairs, box_pairs_b
 from .clearing import move_fix
 from .contact import circle_of, contact_points
 from .meant import MeantMerge
-from ..common import (MIN_AREA, MIN_WALL, _area, _contributors, _depth, _edges, _insert_fix,
+from ..common import (MIN_AREA, MIN_WALL, _area, _contributors, _depth, _edge_distance, _edges, _insert_fix,
                       _inside, _loop_boxes, _part_of, _pct, _signed, _significant, _union,
                       below)
 
@@ -157,16 +157,7 @@ def _check_closed_openings(d: Drawing, s: Structure, shape, cuts, min_wall: floa
             loops = [np.asarray(p, dtype=float) for p in filled.to_polygons()]
             edges = _edges(loops)
         P = np.vstack([np.asarray(p, dtype=float) for p in out.to_polygons()])[:MAX_DEPTH_POINTS]
-        x1, y1, x2, y2 = (np.asarray(e, dtype=float) for e in edges)
-        dx, dy = (x2 - x1)[None], (y2 - y1)[None]
-        L2 = dx * dx + dy * dy
-        step = max(1, 1_000_000 // max(1, len(x1)))    # points x edges a block: <= 1e6
-        dist = np.empty(len(P))
-        for i in range(0, len(P), step):
-            px, py = P[i:i + step, :1] - x1[None], P[i:i + step, 1:] - y1[None]
-            with np.errstate(divide="ignore", invalid="ignore"):
-                t = np.clip(np.where(L2 > 0, (px * dx + py * dy) / L2, 0.0), 0.0, 1.0)
-            dist[i:i + step] = np.hypot(px - t * dx, py - t * dy).min(axis=1)
+        dist = _edge_distance(P, edges)
         k = int(np.argmax(dist))
         depth = float(dist[k])
         x, y = P[k]

@@ -16,7 +16,7 @@ from __future__ import annotations
 import manifold3d as mf
 import numpy as np
 
-from ..common import _edges, _inside
+from ..common import _edge_distance, _edges, _inside
 
 EDGE_TOL = 0.01        # mm: a copy's vertex this far past the outline still counts as inside
 
@@ -103,16 +103,8 @@ def _outside_depths(items: list) -> dict:
         if not off.any():
             continue
         O, ow = V[off], who[off]
-        x1, y1, x2, y2 = _edges([np.asarray(p, dtype=float) for p in before.to_polygons()])
-        dx, dy = x2 - x1, y2 - y1
-        L2 = dx * dx + dy * dy
-        depth = np.empty(len(O))
-        step = max(1, 1_000_000 // max(1, len(x1)))      # points x edges a block: <= 1e6
-        for i in range(0, len(O), step):
-            px, py = O[i:i + step, :1] - x1[None], O[i:i + step, 1:] - y1[None]
-            with np.errstate(divide="ignore", invalid="ignore"):
-                t = np.clip(np.where(L2 > 0, (px * dx + py * dy) / L2, 0.0), 0.0, 1.0)
-            depth[i:i + step] = np.hypot(px - t * dx, py - t * dy).min(axis=1)
+        depth = _edge_distance(O, _edges([np.asarray(p, dtype=float)
+                                          for p in before.to_polygons()]))
         for k in np.unique(ow):
             if not (~off[who == k]).any():
                 continue                   # wholly outside: W0502 says it cuts nothing

@@ -127,20 +127,22 @@ def _dense(loops: list, t: float) -> tuple:
                     u = E[e] / L[e]
                     q = (P[e] + u * (L[e] - ds)[:, None]) if from_end else P[e] + u * ds[:, None]
                     extra.setdefault(e, []).append(q)
-        pts, eds, ors = [], [], []
-        for e in range(n):
-            pts.append(P[e:e + 1])
-            eds.append([e])
-            ors.append([True])
-            if e in extra:
-                Q = np.concatenate(extra[e])
-                Q = Q[np.argsort(np.einsum("ij,j->i", Q - P[e], E[e]))]
-                pts.append(Q)
-                eds.append([e] * len(Q))
-                ors.append([False] * len(Q))
-        out.append(np.concatenate(pts))
-        edge.append(np.concatenate([np.asarray(x, dtype=np.int64) for x in eds]) + base)
-        orig.append(np.concatenate([np.asarray(x, dtype=bool) for x in ors]))
+        # each edge's added points after its first vertex, in order along it (one insert)
+        at, Q, on = [], [], []
+        for e in sorted(extra):
+            q = np.concatenate(extra[e])
+            q = q[np.argsort(np.einsum("ij,j->i", q - P[e], E[e]))]
+            at += [e + 1] * len(q)
+            Q.append(q)
+            on += [e] * len(q)
+        if Q:
+            out.append(np.insert(P, at, np.concatenate(Q), axis=0))
+            edge.append(np.insert(np.arange(n), at, on) + base)
+            orig.append(np.insert(np.ones(n, dtype=bool), at, False))
+        else:                                        # no cusp: the loop as it is
+            out.append(P)
+            edge.append(np.arange(n) + base)
+            orig.append(np.ones(n, dtype=bool))
         base += n
     return out, np.concatenate(edge), np.concatenate(orig)
 
