@@ -179,9 +179,9 @@ class Calls:
             if cname in ("Scale", "Translate", "Flip") and type(node.args[0] if node.args
                                                               else None) is A.Name:
                 self._rebind(node.args[0].id, out)     # in place: the name is the copy's
-            if len(self.model.constraints) > n0 and len(owners_of(*conv.values())) > 1:
+            owners = owners_of(*conv.values()) if len(self.model.constraints) > n0 else ()
+            if len(owners) > 1:
                 args = [owners_of(v) for v in conv.values()]   # who moves: the pattern's
-                owners = owners_of(*conv.values())              # target to its rect
                 helped = any(g.construction for g in self.struct.geometry) \
                     if self.struct in owners else False
                 for c in self.model.constraints[n0:]:
