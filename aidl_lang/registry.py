@@ -160,6 +160,10 @@ def _boxes(doc: str, *more):
 
 
 A = Arg
+# the relations whose a or b may be a point, read as its coordinate (run z7's stocking tag:
+# `AlignCenterX(cuff, sock.points[0])`, the natural way to put a box's centre over a point)
+POINT_ALIGNS = frozenset({"AlignCenterX", "AlignCenterY", "AlignLeft", "AlignRight", "AlignTop",
+                          "AlignBottom"})
 _GAP = A("gap", "length", 0.0)      # the optional gap of Above, Below, LeftOf, RightOf
 # GridPattern's staggered rows (issue 111: a perforated panel's or a bee hotel's honeycomb)
 _STAGGER = A("stagger", "bool", False, "every odd row (r = 1, 3, ...) moved by half the column "
@@ -415,12 +419,14 @@ _DEFS = {
     "CenterInside": _boxes("a is centered in b: their bounding-box centers coincide."),
     "Taller": _boxes("a.bb.height >= b.bb.height."),
     "Wider": _boxes("a.bb.width >= b.bb.width."),
-    "AlignCenterX": _boxes("Same horizontal center: a.bb.center_x == b.bb.center_x."),
-    "AlignCenterY": _boxes("Same vertical center: a.bb.center_y == b.bb.center_y."),
-    "AlignLeft": _boxes("a.bb.left == b.bb.left."),
-    "AlignRight": _boxes("a.bb.right == b.bb.right."),
-    "AlignTop": _boxes("a.bb.top == b.bb.top."),
-    "AlignBottom": _boxes("a.bb.bottom == b.bb.bottom."),
+    "AlignCenterX": _boxes("Same horizontal center: a.bb.center_x == b.bb.center_x "
+                           "(a point: its x)."),
+    "AlignCenterY": _boxes("Same vertical center: a.bb.center_y == b.bb.center_y "
+                           "(a point: its y)."),
+    "AlignLeft": _boxes("a.bb.left == b.bb.left (a point: its x)."),
+    "AlignRight": _boxes("a.bb.right == b.bb.right (a point: its x)."),
+    "AlignTop": _boxes("a.bb.top == b.bb.top (a point: its y)."),
+    "AlignBottom": _boxes("a.bb.bottom == b.bb.bottom (a point: its y)."),
     # ------------------------------------------------------------ placement (3D)
     "Place": _c([A("part", "boxed"), A("position", "any", None), A("rotation", "any", None)],
                 cat="placement",

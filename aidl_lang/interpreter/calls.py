@@ -19,8 +19,8 @@ from ..geometry.core.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef
                                Function, Template, UnitError, angle_scale, dim_name, mul_dim, owners_in, owners_of,
                                rad_power, radians_of, type_name)
 from ..base.limits import MAX_EXTENT
-from ..registry import (ENTRIES, FUNCTIONS, accepted_args, bind_variant, canonical, canonical_args,
-                        lookup)
+from ..registry import (ENTRIES, FUNCTIONS, POINT_ALIGNS, accepted_args, bind_variant, canonical,
+                        canonical_args, lookup)
 from .call_hints import _center_hint, _list_hint
 from .cut_into import cut_into
 from .functions import call_function
@@ -676,6 +676,8 @@ class Calls:
         if typ == "boxed":
             if isinstance(v, (GeomRef, StructRef, BBoxRef)):
                 return v
+            if t is PV and canonical(fname) in POINT_ALIGNS:
+                return v        # `AlignCenterX(cuff, sock.points[0])`: the point's x (run z7)
             if isinstance(v, (list, tuple)) and v and canonical(fname) == "Mirrored":
                 # Mirrored(legs, axis): each item mirrored, a list back (issue 61)
                 bad = next((x for x in v if not isinstance(x, (GeomRef, StructRef))), None)

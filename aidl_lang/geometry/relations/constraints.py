@@ -455,12 +455,17 @@ def _target(v, name):
     raise ConstraintError(f"`{name}` must be a structure or geometry, got {type_name(v)}")
 
 
+_POINT_AXIS = {"left": "x", "right": "x", "top": "y", "bottom": "y"}
+
+
 def _bb(ctx, v, side, name):
     t = type(v)
     if t is StructRef:
         target = v.struct
     elif t is GeomRef:
         target = v.geom
+    elif t is PV:               # a point of an Align relation: its box is the point itself
+        return getattr(v, _POINT_AXIS[side])
     else:
         target = _target(v, name)
     b = _new(BBTerm)                 # BBTerm(target, side, ctx.struct) without __init__
