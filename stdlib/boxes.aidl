@@ -139,10 +139,14 @@ def sliding_lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, fi
 # `length` x `width` x `height` (mm) is the outer size when `outside=true`,
 # else the inside. Members: `body` (an open finger_box, its panels laid out as
 # finger_box's: the front and back upright, the sides' top edges outward),
-# `row_divider`, `col_divider`.
+# `row_divider`, `col_divider`. Assembled, the bottom's underside lies on z = 0,
+# centred on x = y = 0, and the walls' tops at z = the outer height.
+# `divider_height` (0: as high as the walls) is the dividers' height above the
+# bottom: lower them to leave room for a lid's locating plate or a finger's reach.
 # Anchor: (cx, cy) is the centre of `body.bottom`.
 def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thickness=3 mm,
-                 finger=10 mm, clearance=0.3 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {
+                 finger=10 mm, clearance=0.3 mm, outside=true, divider_height=0 mm, cx=0 mm,
+                 cy=0 mm) -> assembly {
     t = thickness
     c = clearance
     gap = 5 mm
@@ -151,7 +155,8 @@ def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thick
     ho = height if outside else height + t
     li = lo - 2 * t
     wi = wo - 2 * t
-    hd = ho - t  # the dividers' height: floor to the walls' top
+    hd = divider_height if divider_height > 0 mm else ho - t  # floor to the walls' top
+    assert divider_height <= ho - t, "the dividers are at most as high as the walls (less the bottom)"
     assert rows >= 1 and cols >= 1, "a tray has at least one row and one column"
     assert clearance >= 0 mm and clearance < thickness, "the clearance is between 0 and the thickness"
     cw = (li - (cols - 1) * t) / cols  # a compartment's length and width
@@ -160,6 +165,7 @@ def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thick
     assert length > (2 * cols + (1 if outside else -1)) * thickness, "the compartments must be longer than the thickness"
     assert width > (2 * rows + (1 if outside else -1)) * thickness, "the compartments must be wider than the thickness"
     assert height > (3 if outside else 2) * thickness, "the dividers (the walls less the bottom) must be taller than twice the thickness"
+    assert divider_height == 0 mm or divider_height > 2 * thickness, "the dividers must be taller than twice the thickness"
     body = finger_box(length=lo, depth=wo, height=ho, thickness=t, finger=finger, closed=false,
                       gap=gap, cx=cx, cy=cy)
     body.bottom.outline.center == (cx, cy)

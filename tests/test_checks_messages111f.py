@@ -76,3 +76,24 @@ def test_a_relation_between_boxes_still_refuses_a_point():
     r = aidl_lang.compile(source=src)
     assert not r.ok
     assert any(d.code == "E0108" and "got point" in d.message for d in r.diagnostics)
+
+
+def test_divider_tray_lowers_its_dividers_for_a_lid():
+    """Run z7's tea box: a lid's 3 mm locating plate sat on the 2 x 2 dividers (as high as
+    the walls), so the lid stood 3 mm proud; the model reached for a lower divider.
+    `divider_height=` sets the dividers' height above the bottom, their halvings half of it;
+    the tray assembled stands on z = 0 (its docs say so), and nothing collides."""
+    src = """import "std/boxes.aidl"
+assembly tea {
+    tray = divider_tray(length=160 mm, width=160 mm, height=60 mm, rows=2, cols=2,
+                        divider_height=45 mm)
+    assert tray.row_divider[0].plate.bb.height == 45 mm
+    assert tray.col_divider[0].plate.bb.height == 45 mm
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [(d.code, d.message) for d in r.diagnostics]
+    assert not _w(r, "W0517") and not _w(r, "W0518")
+    bad = aidl_lang.compile(source=src.replace("45 mm)", "58 mm)"))
+    assert not bad.ok            # past the walls less the bottom (57 mm): the template's assert
+    assert any("at most as high as the walls" in d.message for d in bad.diagnostics)
