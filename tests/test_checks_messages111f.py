@@ -97,3 +97,18 @@ assembly tea {
     bad = aidl_lang.compile(source=src.replace("45 mm)", "58 mm)"))
     assert not bad.ok            # past the walls less the bottom (57 mm): the template's assert
     assert any("at most as high as the walls" in d.message for d in bad.diagnostics)
+
+
+def test_text_takes_halign_for_its_anchor():
+    """`halign="center"` beside `valign=` is what a model writes (run z5's sign, E0105 "no
+    argument `halign`"): it is `anchor`'s other name."""
+    src = """solid sign {
+    body = Rectangle(center=(0, 0), width=120, height=50)
+    drawing d { t = Text("AB", position=(0, 0), size=10, halign="left", valign="middle") }
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [(d.code, d.message) for d in r.diagnostics]
+    ref = aidl_lang.compile(source=src.replace("halign=", "anchor="))
+    assert [d.message for d in r.diagnostics] == [d.message for d in ref.diagnostics]
+    assert r.to_svg() == ref.to_svg()
