@@ -119,7 +119,8 @@ TRAP_MEMBERS = {k: v for k, v in RECT_MEMBERS.items() if k != "width"} | {
 ELLIPSE_MEMBERS = {"center": "point", "rx": "length", "ry": "length", "bb": "bbox"}
 SLOT_MEMBERS = {"start": "point", "end": "point", "center": "point", "radius": "length",
                 "width": "length", "length": "length", "spine": "line", "bb": "bbox"}
-TEXT_MEMBERS = {"position": "point", "center": "point", "size": "length", "bb": "bbox"}
+TEXT_MEMBERS = {"position": "point", "center": "point", "size": "length", "bb": "bbox",
+                "text": "string"}
 STAR_MEMBERS = POLY_MEMBERS | {"outer_radius": "length", "inner_radius": "length",
                                "tip_radius": "length"}
 ARCSLOT_MEMBERS = {"center": "point", "start": "point", "end": "point", "midpoint": "point",
@@ -229,7 +230,7 @@ _DEFS = {
                    A("end_angle", "angle", None, "see start_angle", kw_only=True)],
                   doc="An ellipse with semi-axes rx (along the rotation) and ry; semi-axes and "
                       "rotation are held, the center is a starting guess. Exact in every "
-                      "output (an Offset or Shell of it: within 1e-4 mm).",
+                      "output (an Offset, Shell or kerf of it: within 1e-4 mm).",
                   members=ELLIPSE_MEMBERS),
     "Polygon": _p([A("points", "points"), FLEXIBLE, MIRROR],
                   doc="A closed polygon; literal coordinates make it rigid (it moves, keeps "

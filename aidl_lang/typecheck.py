@@ -214,6 +214,27 @@ class Checker:
                 self.expr(st.value, _Scope(fscope, {p.name for p in st.params} | {st.name}))
         self.stmts(top, _Scope(fscope, set(struct_names) | {"model"}))
         self.unread_settings(program)
+        self.uncalled_defs(program)
+
+    def uncalled_defs(self, program: A.Program) -> None:
+        """W0117 for a template or function of this file that nothing calls, in a file that
+        draws a design (a top-level structure; a file of only templates is a library)."""
+        if not any(isinstance(st, A.StructDecl) for st in program.stmts):
+            return
+        called = {n.func.id for n in A.walk(program)
+                  if type(n) is A.Call and type(n.func) is A.Name}
+        for st in program.stmts:
+            if not isinstance(st, (A.Def, A.Func)) or st.name in called or st.span is None \
+                    or st.span.file != self.path:
+                continue
+            what = "template" if isinstance(st, A.Def) else "function"
+            self.sink.add(Diagnostic(
+                "W0117", f"{what} `{st.name}` is defined but nothing calls it"
+                         + (": nothing of it is made" if what == "template" else ""),
+                st.name_span or st.span, "warning",
+                hint=(f"call it where it belongs (`NAME = {st.name}(...)` in a structure)"
+                      if what == "template" else f"use it (`{st.name}(...)`)")
+                + ", or delete it if it is left over"))
 
     def params_once(self, program: A.Program) -> None:
         """E0107 for a param declared twice, or a param whose name a top-level `name = ...`

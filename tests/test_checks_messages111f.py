@@ -112,3 +112,182 @@ def test_text_takes_halign_for_its_anchor():
     ref = aidl_lang.compile(source=src.replace("halign=", "anchor="))
     assert [d.message for d in r.diagnostics] == [d.message for d in ref.diagnostics]
     assert r.to_svg() == ref.to_svg()
+
+
+SUNDIAL = RUNS / "issue111aa/drafts/04_sundial.attempt3.aidl"
+
+
+def test_a_strict_bound_below_the_tolerance_is_the_tolerance():
+    """Run aa's sundial asserted `abs(dial.hours.ln[7].dx) < 1e-9` (the noon line runs
+    north) and got E0405 at dx = 1.3e-15 ("`<` needs a gap of more than 1e-06 mm"): the
+    author's own epsilon, below the one every comparison is judged within, is read as it.
+    A strict comparison with a bound of 0 or above the tolerance keeps its gap."""
+    from aidl_lang.geometry.relations.assertions import holds
+    assert holds("<", 1.3e-15, 1e-9, "right") and holds(">", 1e-9, 1.3e-15, "left")
+    assert holds("<", 5e-7, 1e-9, "right")      # within the tolerance, as `==` is
+    assert not holds("<", 2e-6, 1e-9, "right")
+    assert not holds("<", 1.3e-15, 1e-9)        # not a bound as written: the gap
+    assert not holds("<", 1e-15, 0.0, "right")  # `x < 0` at x = 1e-15: a bound of 0
+    assert not holds(">", 1e-7, 0.0, "right")   # `a > 0` at a = 1e-7 (issue 105)
+    assert holds("<", 0.0095, 0.01, "right")    # a bound above the tolerance: strict
+    assert not holds("<", 0.01, 0.01, "right")
+    r = aidl_lang.compile(path=str(SUNDIAL))
+    assert r.ok, [(d.code, d.message) for d in r.errors]
+
+
+def test_a_long_condition_is_cut_with_an_ellipsis():
+    """The sundial's third assert was quoted `... - 51` for `- 51.5 deg`: a quote cut at
+    120 characters now ends in "..."."""
+    src = SUNDIAL.read_text().replace("51.5 deg) < 1e-9)", "51.5 deg) < 1e-9 and 1 > 2)")
+    r = aidl_lang.compile(source=src)
+    e = [d for d in r.errors if d.code == "E0405"]
+    assert len(e) == 1
+    quote = e[0].message.split("`")[1]
+    assert quote.endswith("...") and len(quote) == 120
+
+
+TOPPER = RUNS / "issue111aa/run/06_cake_topper.first_valid.aidl"
+
+
+def test_W0515_leads_with_the_fill_for_a_narrow_opening():
+    """Run aa's cake topper: a star's two lower tips on the base rail enclosed a 7.1 x 2.4 mm
+    window, a defect; W0515's suggested fix was `AllowOverlap(star_l, base_rail)`, which keeps
+    it (a hint whose fix damages the part). An opening under 3 mm across is led by the fill,
+    with no suggested fix; a wide window (a frame's) keeps its AllowOverlap fix."""
+    r = aidl_lang.compile(path=str(TOPPER))
+    w = _w(r, "W0515")
+    assert len(w) == 2
+    for d in w:
+        assert "7.11 x 2.37 mm" in d.message
+        assert d.hint.startswith("an opening under 3 mm across is rarely meant: fill it")
+        assert d.fix is None
+    frame = """solid frame {
+    top = Rectangle(center=(0, 25), width=60, height=10)
+    bottom = Rectangle(center=(0, -25), width=60, height=10)
+    left = Rectangle(center=(-25, 0), width=10, height=62)
+    right = Rectangle(center=(25, 0), width=10, height=62)
+}
+"""
+    w2 = _w(aidl_lang.compile(source=frame), "W0515")
+    assert len(w2) == 1 and w2[0].fix is not None and w2[0].hint.startswith("if it is meant")
+
+
+def test_W0117_a_template_nothing_calls():
+    """Run aa's lipstick stand kept `def joint_slots(x) -> hole` and never called it: a part
+    or hole meant and not made, nothing said. W0117 names it; a library (no structure of its
+    own) and a called template are not warned."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111aa/run/03_lipstick_stand.first_valid.aidl"))
+    w = _w(r, "W0117")
+    assert len(w) == 1 and "template `joint_slots` is defined but nothing calls it" in w[0].message
+    lib = "def slot(x) -> hole { s = Rectangle(center=(x, 0), width=3, height=20) }\n"
+    assert not _w(aidl_lang.compile(source=lib), "W0117")
+    used = lib + "solid p {\n    b = Rectangle(center=(0, 0), width=50, height=40)\n    s = slot(5)\n}\n"
+    assert not _w(aidl_lang.compile(source=used), "W0117")
+    fn = "def twice(x) = 2 * x\n" + used
+    w3 = _w(aidl_lang.compile(source=fn), "W0117")
+    assert len(w3) == 1 and w3[0].message == "function `twice` is defined but nothing calls it"
+
+
+def test_a_text_reads_its_string():
+    """Run aa's sundial asserted a numeral's text (`num[7].text == "12"`): E0102 "no member
+    `text`". A Text's `text` is the string it draws."""
+    src = """def hour_name(h) = f"{h}"
+solid plate {
+    body = Rectangle(center=(0, 0), width=100, height=60)
+    drawing d { t = Text(hour_name(12), position=(0, 0), size=10) }
+    assert d.t.text == "12"
+}
+"""
+    assert aidl_lang.compile(source=src).ok
+    bad = aidl_lang.compile(source=src.replace('== "12"', '== "11"'))
+    assert any('"12" == "11" is false' in d.message for d in bad.errors)
+
+
+KERF_SRC = """kerf 0.2 mm
+solid blob { s = Spline([(0, 0), (60, -10), (80, 30), (40, 50), (-10, 35)], closed=true) }
+solid egg { e = Ellipse(center=(150, 0), rx=40, ry=25) }
+solid word {
+    body = Rectangle(center=(0, -80), width=120, height=50)
+    hole w { t = Text("MUSIC", position=(0, -80), size=20, font="sans:Bold", valign="middle") }
+}
+"""
+
+
+def _dxf_points(data: bytes, n: int = 8) -> dict:
+    """Points along every LINE and ARC of a DXF, read by ezdxf, per layer."""
+    import io
+    import math
+    import ezdxf
+    doc = ezdxf.read(io.StringIO(data.decode()))
+    pts: list = []
+    ents = []
+    for e in doc.modelspace():          # a polyline with bulges: its lines and arcs
+        ents += list(e.virtual_entities()) if e.dxftype() == "LWPOLYLINE" else [e]
+    for e in ents:
+        if e.dxftype() == "LINE":
+            a, b = e.dxf.start, e.dxf.end
+            pts += [(a.x + (b.x - a.x) * i / n, a.y + (b.y - a.y) * i / n) for i in range(n + 1)]
+        elif e.dxftype() == "ARC":
+            c, r = e.dxf.center, e.dxf.radius
+            a0, a1 = math.radians(e.dxf.start_angle), math.radians(e.dxf.end_angle)
+            sweep = (a1 - a0) % (2 * math.pi)
+            pts += [(c.x + r * math.cos(a0 + sweep * i / n), c.y + r * math.sin(a0 + sweep * i / n))
+                    for i in range(n + 1)]
+        else:
+            assert e.dxftype() in ("CIRCLE", "TEXT", "MTEXT"), e.dxftype()
+    return pts
+
+
+def test_a_kerf_on_splines_ellipses_and_font_letters_is_cut_within_its_bound():
+    """Run ab: `aidl check` said ok and `aidl render` refused three of eight parts ("the
+    spline ... cannot be offset exactly": a Spline bird, a stencil's font letters, an
+    Ellipse arch), with a hint, `kerf 0 mm`, that was E0109. Each curve is now followed by
+    circular arcs within 1e-4 mm and offset exactly: the DXF, read back by ezdxf, has every
+    point of every cut 0.1 mm (half the kerf) from the drawn curves, +- 1e-4."""
+    import math
+    from aidl_lang.geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Spline
+    r = aidl_lang.compile(source=KERF_SRC)
+    assert r.ok
+    drawn = [g for p in r.output.parts for lp in p.loops for g in lp.segments]
+
+    def dist(q):
+        best = math.inf
+        for c in drawn:
+            if isinstance(c, (Spline, EllipticArc)):
+                d = c.curve.distance(q)
+            elif isinstance(c, Line):
+                (x0, y0), (x1, y1) = c.start, c.end
+                dx, dy = x1 - x0, y1 - y0
+                u = max(0.0, min(1.0, ((q[0] - x0) * dx + (q[1] - y0) * dy) / (dx * dx + dy * dy)))
+                d = math.hypot(q[0] - x0 - u * dx, q[1] - y0 - u * dy)
+            else:
+                assert isinstance(c, (Arc, Circle))
+                d = abs(math.dist(q, c.center) - c.radius)     # (the letters have no arcs)
+            best = min(best, d)
+        return best
+    pts = _dxf_points(r.encode("dxf"))
+    assert len(pts) > 5000
+    d = [dist(q) for q in pts[::23]]
+    assert 0.1 - 1e-4 < min(d) and max(d) < 0.1 + 1e-4
+    for prog in ("03_balancing_bird", "04_music_stand", "06_camp_stool"):
+        rr = aidl_lang.compile(path=str(RUNS / f"issue111ab/run/{prog}.first_valid.aidl"))
+        assert rr.ok and rr.encode("svg")
+
+
+def test_kerf_0_in_a_structure_and_on_the_command_line(tmp_path):
+    """`kerf 0 mm` in a structure (the advice of the old refusal) was E0109 "must be a
+    positive length"; `--kerf 0mm` was refused. Both now leave the cuts where drawn."""
+    import subprocess
+    import sys
+    src = "kerf 0.2 mm\nsolid a {\n    kerf 0 mm\n    r = Rectangle(center=(0, 0), width=20, height=10)\n}\n"
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [(d.code, d.message) for d in r.diagnostics]
+    plain = aidl_lang.compile(source=src.replace("kerf 0.2 mm\n", "").replace("    kerf 0 mm\n", ""))
+    assert r.encode("dxf").count(b"LINE") == plain.encode("dxf").count(b"LINE")
+    assert r.to_svg() == plain.to_svg()
+    f = tmp_path / "a.aidl"
+    f.write_text(src.replace("    kerf 0 mm\n", ""))
+    out = subprocess.run([sys.executable, "-m", "aidl_lang", "render", str(f), "-o",
+                          str(tmp_path / "a.svg"), "--kerf", "0mm"], capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    assert (tmp_path / "a.svg").read_text() == plain.to_svg()

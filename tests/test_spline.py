@@ -535,17 +535,30 @@ solid pick {
     assert "Fillet cannot round the corner" in d.message and "at=" in d.hint
 
 
-def test_kerf_on_a_spline_part_is_refused_naming_the_spline(tmp_path):
+def test_kerf_on_a_spline_part_follows_the_offset_within_the_bound(tmp_path):
+    """A kerf on a part with a spline (once refused: the offset of a cubic is no cubic): the
+    spline is followed by circular arcs within 1e-4 mm (biarc.BIARC_TOL), which are offset
+    exactly, so every point of the cut path lies half the kerf from the spline, +- 1e-4."""
+    import math
+    from aidl_lang.geometry.shapes.curves import Arc, Line
     from aidl_lang.output import build
-    from aidl_lang.output.fabrication.layout import LayoutError, compensate
+    from aidl_lang.output.fabrication.layout import compensate
     src = ("units mm\nsolid pick {\n    body = Spline(points=[(0, -30), (20, 0), (0, 20), "
            "(-20, 0)], closed=true)\n}\n")
     c = _compile(src, tmp_path)
     out = build(c.drawing, c.model.root.name)
-    with pytest.raises(LayoutError) as ei:
-        compensate(out, 0.2)
-    msg = str(ei.value)
-    assert "cannot be offset exactly" in msg and "p.aidl:3:12" in msg and "kerf 0 mm" in msg
+    cut = compensate(out, 0.2)
+    curve = interpolate([(0, -30), (20, 0), (0, 20), (-20, 0)], True)
+    (lp,) = cut.parts[0].loops
+    assert all(isinstance(g, (Arc, Line)) for g in lp.segments) and len(lp.segments) > 8
+    d = [curve.distance(g.at(g.start_angle + g.sweep * i / 8) if isinstance(g, Arc) else
+                        (g.start[0] + (g.end[0] - g.start[0]) * i / 8,
+                         g.start[1] + (g.end[1] - g.start[1]) * i / 8))
+         for g in lp.segments for i in range(9)]
+    assert min(d) > 0.1 - 1e-4 and max(d) < 0.1 + 1e-4
+    assert lp.area > out.parts[0].loops[0].area            # outward: the part grew
+    assert math.isclose(lp.area - out.parts[0].loops[0].area,
+                        0.1 * curve.length(), rel_tol=0.01)   # a band 0.1 mm wide
 
 
 def test_union_of_two_splines_and_a_spline_hole(tmp_path):

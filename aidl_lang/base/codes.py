@@ -1304,6 +1304,16 @@ that call for a drawing layer that lies on a part (a board's silkscreen on its o
         CutInto(label, box.front)                                         # the fix
     }
 """),
+    "W0117": ("template or function that nothing calls", """
+A `def` of the program's own file that no statement calls, in a file that draws a design (a
+file of only templates is a library, and gets no warning): nothing of the template is made, so
+a part or a hole the program meant to have may be missing (run aa's lipstick stand kept a
+`def joint_slots(x) -> hole` it never used). Call it where its part belongs, or delete it if
+it is left over.
+
+    def slot(x) -> hole { s = Rectangle(center=(x, 0), width=3, height=20) }   # warning
+    solid plate { body = Rectangle(center=(0, 0), width=100, height=60) }
+"""),
     "W0104": ("empty drawing", """
 The file is empty (nothing but comments), or its structures build no geometry at all, so the
 SVG would be empty. Add shapes, or instantiate a template. A file of only templates, params and

@@ -570,9 +570,10 @@ def _render_settings(args, outs):
             return _usage(f"--page takes {', '.join(page_names())}; got `{args.page}`")
     kerf = None
     if args.kerf is not None:
-        kerf = parse_length(args.kerf)
+        kerf = parse_length(args.kerf, zero=True)
         if kerf is None or kerf > 10:
-            return _usage(f"--kerf expects a positive length up to 10 mm, such as 0.15mm, got "
+            return _usage(f"--kerf expects a length from 0 (no offset) up to 10 mm, such as "
+                          f"0.15mm, got "
                           f"`{args.kerf}`")
     sheet = parse_sheet(args.sheet)
     if sheet is None:

@@ -113,11 +113,13 @@ def _common_ancestor(a: Structure, b: Structure):
 
 def _src(sink: DiagnosticSink, span: Span | None) -> str:
     """The source text at ``span``, blanks collapsed, at most 120 characters (what
-    ``Constraint.text`` of a written constraint reads, cut when first asked)."""
+    ``Constraint.text`` of a written constraint reads, cut when first asked), a cut one
+    ending in "..." (run aa's sundial read `... - 51` for `- 51.5 deg`)."""
     if span is None:
         return ""
     src = sink.sources.get(span.file, "")
-    return " ".join(src[span.start:span.end].split())[:120]
+    text = " ".join(src[span.start:span.end].split())
+    return text if len(text) <= 120 else text[:117] + "..."
 
 
 def _a(word: str) -> str:

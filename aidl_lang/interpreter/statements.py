@@ -471,8 +471,8 @@ class Statements(Asserts):
             raise EvalError("E0109", f"`{word}` expects a length", st.value.span,
                             hint=f"write it with a unit: `{eg}`")
         val = Q(self._as_length(v, st.value.span), LEN).const()
-        if word == "min_wall" and val is not None and val == 0:
-            pass                                 # `min_wall 0`: the wall checks off
+        if word in ("min_wall", "kerf") and val is not None and val == 0:
+            pass                # `min_wall 0`: the wall checks off; `kerf 0 mm`: not offset
         elif word == "min_wall" and val is not None and min_wall_problem(val) is not None:
             raise EvalError("E0109", f"`min_wall` {min_wall_problem(val)}", st.value.span,
                             hint=f"write `min_wall 0` for no wall checks, or a length from "
@@ -480,6 +480,7 @@ class Statements(Asserts):
         elif val is None or not val > 0:
             raise EvalError("E0109", f"`{word}` must be a " + (
                 "positive length (or 0: no minimum)" if word == "min_wall" else
+                "positive length (or 0: not offset)" if word == "kerf" else
                 "positive length") + " known before solving", st.value.span,
                 hint=f"use a number or a param: `{eg}`")
         setattr(self.model if self.struct is None else self.struct, word, val)

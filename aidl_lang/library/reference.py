@@ -644,7 +644,8 @@ the nearest one wins). `aidl render` offsets every cut by half the kerf so parts
 their drawn size: outlines outward, holes inward, arcs stay arcs; engravings are not offset.
 Only the cutting formats (SVG, DXF, PDF, PNG, G-code, LightBurn `.lbrn2`, HPGL `.plt`) are
 offset: STL, 3MF and STEP keep the designed size.
-`aidl render --kerf 0.2mm` overrides it. A positive length known before solving. A
+`aidl render --kerf 0.2mm` overrides it. A positive length known before solving, or 0 (not
+offset). A Spline, an Ellipse and a font's letters are offset as circular arcs within 1e-4 mm. A
 statement, with no `=`: `kerf = 0.2 mm` is an ordinary constant (warning W0108).
 """, ["kerf_width", "laser kerf", "cut width"]),
     "min_wall": ("statement", "`min_wall 0.3 mm`: the thinnest wall the checks accept (W0507, "

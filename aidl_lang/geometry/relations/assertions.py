@@ -16,14 +16,23 @@ from ..core.model import Assertion, Model
 TOL = 1e-6
 
 
-def holds(op: str, left: float, right: float) -> bool:
+def holds(op: str, left: float, right: float, bound: str = "") -> bool:
     """``left op right`` within :data:`TOL` (``<``, ``>`` and ``!=`` need a gap of more than
-    TOL)."""
+    TOL).  ``bound``: which side is a number as written ("left", "right" or ""); a strict
+    bound below TOL (``abs(dx) < 1e-9``: the author's own epsilon, false at ``dx = 1.3e-15``
+    in run aa's sundial) is read as the tolerance: judged as ``<=`` (``>=``)."""
     if not (math.isfinite(left) and math.isfinite(right)):
         return False
     d = left - right
+    if (op == "<" or op == ">") and bound and 0 < abs(right if bound == "right" else left) <= TOL:
+        op += "="
     return {"==": abs(d) <= TOL, "!=": abs(d) > TOL, "<=": d <= TOL, ">=": d >= -TOL,
             "<": d < -TOL, ">": d > TOL}[op]
+
+
+def _number(side) -> bool:
+    """A side that is a number as written (no unknown in it)."""
+    return isinstance(side, (int, float)) or (type(side) is Lin and not side.terms)
 
 
 def _show(v: float, dim, a: Assertion) -> str:
@@ -297,7 +306,8 @@ def failed(model: Model, held_only: bool = False) -> list[tuple[Assertion, list]
                         collect(side, terms)
                 exclude = exclusions(terms) if terms else set()   # as in a constraint (bbox.py)
                 lv, rv = _eval(le, x, exclude), _eval(re_, x, exclude)
-                if not holds(op, lv, rv):
+                if not holds(op, lv, rv, "right" if _number(re_) else "left" if _number(le)
+                             else ""):
                     wrong.append((op, lv, rv, dim))
             if not wrong:
                 break                   # this alternative holds: so does the assertion

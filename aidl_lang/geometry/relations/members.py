@@ -173,6 +173,8 @@ def member(g: Geometry, name: str, frame):
             return _pv(g.points["origin"], frame)
     if k == "Text" and name == "size":
         return Q.num(g.data["size"], LEN)
+    if k == "Text" and name == "text":            # what it reads (run aa's sundial asserts)
+        return g.data["text"]
     if k == "Text" and name == "center" and g.data.get("stencil"):
         # the middle of its box: the letters' openings as drawn (bbox: bridges cut)
         from .bbox import BBTerm

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import math
 
-from .curves import Arc, EllipticArc, Line
+from .curves import Arc, EllipticArc, Line, Spline
 
 BIARC_TOL = 1e-4      # mm: the stated bound between the written arcs and the true curve
 SAMPLES = 12          # points of each piece where the deviation is measured
@@ -69,9 +69,10 @@ def _biarc(e, t0: float, t1: float, sign: float):
     tq = _unit(e.d1(t1))
     tp, tq = (sign * tp[0], sign * tp[1]), (sign * tq[0], sign * tq[1])
     den = tp[0] * tq[1] - tp[1] * tq[0]
-    if abs(den) < 1e-12:
-        return None
     w = (q[0] - p[0], q[1] - p[1])
+    if abs(den) < 1e-12:        # parallel tangents: a straight piece is its chord, else split
+        straight = abs(tp[0] * w[1] - tp[1] * w[0]) <= 1e-12 * math.hypot(*w)
+        return [Line(p, q)] if straight and tp[0] * w[0] + tp[1] * w[1] > 0 else None
     k = (w[0] * tq[1] - w[1] * tq[0]) / den
     v = (p[0] + k * tp[0], p[1] + k * tp[1])        # the tangents' crossing
     a, b, c = math.dist(v, q), math.dist(p, q), math.dist(p, v)
@@ -103,24 +104,90 @@ def biarcs(s: EllipticArc, tol: float = BIARC_TOL) -> list:
     (half of it at :data:`SAMPLES` points of every piece).  Raises ValueError when the
     bound cannot be met (a needle-thin ellipse beyond :data:`MAX_DEPTH` splits)."""
     e = s.curve
-    sign = 1.0 if s.sweep > 0 else -1.0
     n0 = max(4, math.ceil(abs(s.sweep) / (math.pi / 4)))
+    return _fit(e, s.start_param, s.start_param + s.sweep, 1.0 if s.sweep > 0 else -1.0, n0,
+                tol, f"the ellipse of semi-axes {e.rx:g} and {e.ry:g} mm")
+
+
+def _fit(e, t0: float, t1: float, sign: float, n0: int, tol: float, what: str) -> list:
+    """Biarcs of the curve ``e`` (``at``, ``d1``, ``distance``) from parameter ``t0`` to
+    ``t1`` (``sign``: -1 where the travel runs against ``e``'s parameter), ``n0`` pieces to
+    start with, each split in two until it lies within ``tol / 2``."""
     out: list = []
-    stack = [(s.start_param + s.sweep * (i + 1) / n0, s.start_param + s.sweep * i / n0, 0)
+    stack = [(t0 + (t1 - t0) * (i + 1) / n0, t0 + (t1 - t0) * i / n0, 0)
              for i in reversed(range(n0))]
     while stack:
-        t1, t0, depth = stack.pop()
-        arcs = _biarc(e, t0, t1, sign)
-        if arcs is not None and _error(e, t0, t1, arcs) <= tol / 2:
+        b, a, depth = stack.pop()
+        arcs = _biarc(e, a, b, sign)
+        if arcs is not None and _error(e, a, b, arcs) <= tol / 2:
             out += arcs
             continue
         if depth >= MAX_DEPTH:
-            raise ValueError(f"the ellipse of semi-axes {e.rx:g} and {e.ry:g} mm cannot be "
-                             f"followed within {tol:g} mm by arcs")
-        tm = (t0 + t1) / 2
-        stack.append((t1, tm, depth + 1))
-        stack.append((tm, t0, depth + 1))
+            raise ValueError(f"{what} cannot be followed within {tol:g} mm by arcs")
+        m = (a + b) / 2
+        stack.append((b, m, depth + 1))
+        stack.append((m, a, depth + 1))
     return out
+
+
+class _Span:
+    """One cubic Bezier span of a spline, as :func:`_fit` reads a curve (parameter 0..1 in
+    the direction of travel); at an end where the handle lies on the point (a font's corner,
+    an imported cusp) the direction is the second derivative's, as it arrives or leaves."""
+
+    def __init__(self, b):
+        from .spline import CubicSpline
+        self.b = b
+        self.one = CubicSpline(tuple(b), (1.0,))
+        self.size = max(math.dist(b[0], q) for q in b[1:])
+
+    def at(self, t: float):
+        from .spline import bez_at
+        return bez_at(self.b, t)
+
+    def d1(self, t: float):
+        from .spline import bez_d1, bez_d2
+        d = bez_d1(self.b, t)
+        if math.hypot(*d) > 1e-9 * self.size:
+            return d
+        d2 = bez_d2(self.b, t)
+        return d2 if t < 0.5 else (-d2[0], -d2[1])
+
+    def distance(self, p) -> float:
+        return self.one.distance(p)
+
+
+def spline_biarcs(s: Spline, tol: float = BIARC_TOL) -> list:
+    """The spline piece ``s`` (:class:`~.curves.Spline`) as circular arcs and lines in its
+    direction of travel, each span's ends on the curve and tangent to it, within ``tol`` mm
+    of it (the kerf offset of a Spline, an Ellipse's too, and a font's letters: the offset of
+    a cubic is no cubic).  Raises ValueError when the bound cannot be met."""
+    out: list = []
+    for b in s.spans:
+        sp = _Span(b)
+        if sp.size <= 1e-12:
+            continue                    # a span of no length (all four points one)
+        out += _fit(sp, 0.0, 1.0, 1.0, 2, tol,
+                    f"the spline through ({b[0][0]:g}, {b[0][1]:g})")
+    return out
+
+
+def as_arcs(lp, keep=frozenset(), tol: float = BIARC_TOL) -> tuple:
+    """The loop ``lp`` with every elliptic arc and spline piece as its biarcs (within ``tol``
+    mm), and ``keep`` (indices of its segments) as the indices of their pieces: what the
+    kerf offset (:func:`~..derived.offset.offset_loop`, exact on lines and arcs) reads."""
+    from .curves import Loop
+    if not any(isinstance(g, (EllipticArc, Spline)) for g in lp.segments):
+        return lp, keep
+    segs: list = []
+    kept = set()
+    for i, g in enumerate(lp.segments):
+        new = biarcs(g, tol) if isinstance(g, EllipticArc) else spline_biarcs(g, tol) \
+            if isinstance(g, Spline) else [g]
+        if i in keep:
+            kept.update(range(len(segs), len(segs) + len(new)))
+        segs += new
+    return Loop(segs), frozenset(kept)
 
 
 def without_ellipses(loops: list, tol: float = BIARC_TOL) -> tuple[list, bool]:

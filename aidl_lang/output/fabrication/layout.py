@@ -28,6 +28,7 @@ import os
 
 from ...geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Loop, Spline
 from ...geometry.derived.offset import OffsetError, offset_loop
+from ...geometry.shapes.biarc import as_arcs
 from ..part.part import MissingDependency, Output, OutputError, PartOutline, Stroke
 from ..part.edges.shared import shared_edges
 
@@ -176,12 +177,17 @@ def compensate(output: Output, kerf, deadline=None, apart: bool = False) -> Outp
             continue
         split = shared.get(i)
         try:
-            loops = [offset_loop(lp, k / 2) for lp in p.loops] if split is None else \
-                [offset_loop(lp, k / 2, keep) for lp, keep, _ in split]
-        except OffsetError as e:
-            raise LayoutError(f"kerf {k:g} mm on part `{p.name}`: {e}{_spline_fix(output, e)}") \
-                from None
-        narrow = _narrow(p.loops, loops, k / 2) if split is None else None
+            # an Ellipse, a Spline, a font's letters: offset as their biarcs (within
+            # biarc.BIARC_TOL of the curve; the offset of an ellipse or a cubic is neither)
+            drawn = [as_arcs(lp, keep) for lp, keep in
+                     ([(lp, frozenset()) for lp in p.loops] if split is None else
+                      [(lp, keep) for lp, keep, _ in split])]
+            loops = [offset_loop(lp, k / 2, keep) for lp, keep in drawn]
+        except ValueError as e:         # OffsetError; a curve no arcs follow (biarc.py)
+            raise LayoutError(f"kerf {k:g} mm on part `{p.name}`: {e}"
+                              f"{_spline_fix(output, e) if isinstance(e, OffsetError) else ''}"
+                              ) from None
+        narrow = _narrow([lp for lp, _ in drawn], loops, k / 2) if split is None else None
         if narrow is not None:
             g, (x, y) = narrow
             raise LayoutError(f"kerf {k:g} mm on part `{p.name}`: a slot or notch near "
@@ -217,11 +223,23 @@ def _narrow(drawn: list, offset: list, d: float):
 
 
 def _piece_box(q: tuple) -> tuple:
+    """The box of a piece of :func:`~..part.measure.gaps.pieces`: an arc's own (its ends and
+    the quadrant points it passes), not its circle's (a kerf's biarcs of a near-straight
+    spline have radii of metres: their circles' boxes paired every piece with every other)."""
     if q[0] == "L":
         (ax, ay), (bx, by) = q[1], q[2]
         return (min(ax, bx), min(ay, by), max(ax, bx), max(ay, by))
-    (cx, cy), r = q[1], q[2]
-    return (cx - r, cy - r, cx + r, cy + r)
+    (cx, cy), r, a0, sw = q[1], q[2], q[3], q[4]
+    if sw >= 2 * math.pi - 1e-12:
+        return (cx - r, cy - r, cx + r, cy + r)
+    xs = [cx + r * math.cos(a0), cx + r * math.cos(a0 + sw)]
+    ys = [cy + r * math.sin(a0), cy + r * math.sin(a0 + sw)]
+    k = math.ceil(a0 / (math.pi / 2))
+    while k * math.pi / 2 <= a0 + sw:
+        xs.append(cx + r * math.cos(k * math.pi / 2))
+        ys.append(cy + r * math.sin(k * math.pi / 2))
+        k += 1
+    return (min(xs), min(ys), max(xs), max(ys))
 
 
 def _spline_fix(output: Output, e: OffsetError) -> str:
