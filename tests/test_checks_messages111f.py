@@ -291,3 +291,37 @@ def test_kerf_0_in_a_structure_and_on_the_command_line(tmp_path):
                           str(tmp_path / "a.svg"), "--kerf", "0mm"], capture_output=True, text=True)
     assert out.returncode == 0, out.stderr
     assert (tmp_path / "a.svg").read_text() == plain.to_svg()
+
+
+def test_fillet_at_a_disc_and_an_arcslot_rounds_every_pattern_copy():
+    """Run ab's boomerang: `Fillet([hub, blade.b], 8)` (a Circle and an ArcSlot, the form the
+    prompt gives for "a tab on a disc") was E0108 "... got circular", naming neither. An
+    ArcSlot's outline is now one the form reaches; and the blade's two copies (a
+    CircularPattern of 3) are rounded alike, as a CAD pattern copies a fillet: six R8 arcs,
+    three pairs alike, where the original's two were all."""
+    from aidl_lang.geometry.shapes.curves import Arc
+    r = aidl_lang.compile(path=str(RUNS / "issue111ab/drafts/05_boomerang.attempt1.aidl"))
+    assert r.ok and not r.diagnostics, [(d.code, d.message) for d in r.diagnostics]
+    arcs = [g for p in r.output.parts for lp in p.loops for g in lp.segments
+            if isinstance(g, Arc) and abs(g.radius - 8) < 1e-9]
+    sweeps = sorted(round(abs(a.sweep), 6) for a in arcs)
+    assert len(arcs) == 6 and sweeps[0] == sweeps[2] and sweeps[3] == sweeps[5]
+    src = (RUNS / "issue111ab/drafts/05_boomerang.attempt1.aidl").read_text()
+    bad = aidl_lang.compile(source=src.replace("Fillet([hub, blade.b], 8)",
+                                               "Fillet([hub, blade.b.center], 8)"))
+    assert any(d.code == "E0108" for d in bad.errors)
+
+
+def test_a_fillet_at_a_copy_that_meets_nothing_says_nothing():
+    """A pattern copy whose outline does not reach the other shape (the original's does) is
+    passed over: no E0408 for a corner the call never named."""
+    src = """solid plate {
+    hub = Circle(center=(0, 0), diameter=40)
+    solid arm { a = Slot(start=(15, 0), end=(40, 0), width=10) }
+    far = LinearPattern(arm, 2, (200, 0))
+    Fillet([hub, arm.a], 3)
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert not [d for d in r.diagnostics if d.code in ("E0408", "W0406")], \
+        [(d.code, d.message) for d in r.diagnostics]

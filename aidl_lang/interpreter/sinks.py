@@ -1,5 +1,7 @@
 """``Countersink`` and ``Counterbore`` (issue 102): the call checked and recorded on the
-model (:class:`~..geometry.core.model.Sink`); the outputs cut them after the solve."""
+model (:class:`~..geometry.core.model.Sink`); the outputs cut them after the solve.  And what
+follows a pattern's original into its copies after the program: a sink, a fillet at two
+shapes (:func:`fillet_copies`)."""
 from __future__ import annotations
 
 import math
@@ -170,11 +172,49 @@ def sink_copies(model) -> None:
                     todo.append(c)
 
 
-def _copies_of(g, index: dict) -> list:
-    """The Circles that copies made of Circle ``g``: of ``g`` itself, or of a structure that
-    holds it (the Circle at the same place in each copy: the same children, the same index in
-    its structure's geometry; ``index``: each structure's places, filled as needed)."""
-    out = [c for c in g.__dict__.get("pattern_copies", ()) if c.kind == "Circle"]
+def fillet_copies(model) -> None:
+    """``Fillet([a, b], r)`` (and ``Chamfer``) at two shapes one of which a pattern copies
+    (run ab's boomerang: `Fillet([hub, blade.b], 8)` beside `CircularPattern(blade, 3, ...)`
+    rounded the first blade's roots, the other two sharp): each copy's meeting with the other
+    shape is rounded alike, as a CAD pattern copies a fillet feature.  A copy whose outline
+    does not meet the other shape is passed over in silence (its original's is what the call
+    named).  Run once, after the program."""
+    from ..geometry.derived.corners import Chosen
+    from ..geometry.derived.operations import _outline_spec
+    index: dict = {}
+    for s in model.structures:
+        fin = getattr(s, "finish", None)
+        if not fin:
+            continue
+        ox, oy = s.frame_offset(None)
+        for k, (kind, r, at, call) in enumerate(fin):
+            more = []
+            for c in at or ():
+                if c.what != "shapes_meet":
+                    continue
+                ga, gb = c.curve[2], c.curve[3]
+                for side, g in ((0, ga), (1, gb)):
+                    for cp in _copies_of(g, index, g.kind):
+                        if cp.owner is not s and s not in cp.owner.ancestors():
+                            continue
+                        pair = (cp, gb) if side == 0 else (ga, cp)
+                        specs, pts = [], []
+                        for e in pair:
+                            spec, ps = _outline_spec(e, s)
+                            specs.append((spec, len(ps)))
+                            pts += [(p.x + ox, p.y + oy) for p in ps]
+                        ch = Chosen("shapes_meet", tuple(pts), c.name, curve=tuple(specs) + pair)
+                        ch.quiet = True
+                        more.append(ch)
+            if more:
+                fin[k] = (kind, r, list(at) + more, call)
+
+
+def _copies_of(g, index: dict, kind: str = "Circle") -> list:
+    """The shapes of ``kind`` that copies made of ``g``: of ``g`` itself, or of a structure
+    that holds it (the shape at the same place in each copy: the same children, the same index
+    in its structure's geometry; ``index``: each structure's places, filled as needed)."""
+    out = [c for c in g.__dict__.get("pattern_copies", ()) if c.kind == kind]
     st, path = g.owner, []
     at_ = index.get(id(st))
     if at_ is None:
@@ -187,7 +227,7 @@ def _copies_of(g, index: dict) -> list:
                 at = at.children.get(name)
                 if at is None:
                     break
-            if at is not None and k < len(at.geometry) and at.geometry[k].kind == "Circle":
+            if at is not None and k < len(at.geometry) and at.geometry[k].kind == kind:
                 out.append(at.geometry[k])
         path.append(st.name)
         st = st.parent

@@ -83,8 +83,9 @@ class Statements(Asserts):
         self.struct, self.scope = saved
         self.model.root = root
         self.model.constants = fctx.scope.vars
-        from .sinks import sink_copies
+        from .sinks import fillet_copies, sink_copies
         sink_copies(self.model)          # a pattern's copies of a sunk hole, sunk alike
+        fillet_copies(self.model)        # and of a shape filleted to another, filleted alike
         return self.model
 
     def _new_structure(self, name, kind, parent, span, template=None) -> Structure:

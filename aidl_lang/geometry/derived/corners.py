@@ -46,18 +46,21 @@ class Chosen:
     plus its offset (floats once :meth:`placed`).  ``alts``: for two edges, the other edges
     of their shapes as ``(name, start, end)`` (E0408's hint names those that do meet, issue
     111: a Fillet between a turned Trapezoid's parallel `right` and `top`)."""
-    __slots__ = ("what", "points", "name", "alts", "curve")
+    __slots__ = ("what", "points", "name", "alts", "curve", "quiet")
 
     def __init__(self, what: str, points: tuple, name, alts: tuple = (), curve=None):
         self.what, self.points, self.name, self.alts = what, points, name, alts
+        self.quiet = False      # a pattern copy's corners (sinks.fillet_copies): none, unsaid
         # "shapes_meet" (two shapes, or an edge and a shape: ``points`` their points in
         # order): ((kind, count) of each, then each Geometry; placed: each one's sizes)
         self.curve = curve
 
     def moved(self, f) -> "Chosen":
         """The same corners under ``f`` (a copy's transform of a point's coordinates)."""
-        return Chosen(self.what, tuple(f(px, py) for px, py in self.points), self.name,
-                      tuple((n, f(*a), f(*b)) for n, a, b in self.alts), self.curve)
+        c = Chosen(self.what, tuple(f(px, py) for px, py in self.points), self.name,
+                   tuple((n, f(*a), f(*b)) for n, a, b in self.alts), self.curve)
+        c.quiet = self.quiet
+        return c
 
     def placed(self, x) -> "Chosen":
         from ..core.expr import evaluate
@@ -67,8 +70,10 @@ class Chosen:
         curve = self.curve
         if self.what == "shapes_meet" and not isinstance(curve[2], tuple):
             curve = tuple(curve[:2]) + tuple(_sizes(g, x) for g in curve[2:])   # placed
-        return Chosen(self.what, tuple(at(px, py) for px, py in self.points), self.name,
-                      tuple((n, at(*a), at(*b)) for n, a, b in self.alts), curve)
+        c = Chosen(self.what, tuple(at(px, py) for px, py in self.points), self.name,
+                   tuple((n, at(*a), at(*b)) for n, a, b in self.alts), curve)
+        c.quiet = self.quiet
+        return c
 
     def meeting(self) -> list:
         """For two edges that make no corner: the pairs of this shape's edges that do,
@@ -146,6 +151,8 @@ def _sizes(g, x) -> tuple:
     if g.kind == "RoundedRectangle" and g.data.get("corner_radius") \
             and "corner_radii" not in g.data:             # (one radius: the "rounded" spec)
         return (float(g.data["corner_radius"]),)
+    if g.kind == "ArcSlot":
+        return (g.data["dims"]["width"] / 2,)
     if g.kind == "Ellipse":
         from ..relations.bbox import held_rotation
         return (abs(float(x[g.scalars["rx"].index])), abs(float(x[g.scalars["ry"].index])),
@@ -177,6 +184,16 @@ def outline_distance(kind: str, pts: list, sizes: tuple, p) -> float:
         t = 0.0 if L2 == 0 else min(max(((px - ax) * dx + (py - ay) * dy) / L2, 0.0), 1.0)
         d = math.hypot(px - ax - t * dx, py - ay - t * dy)
         return abs(d - sizes[0]) if kind == "slot" else d
+    if kind == "arcslot":                 # its centre line's arc, ccw from start to end,
+        (cx, cy), st, en = pts            # grown by half its width
+        r = math.hypot(st[0] - cx, st[1] - cy)
+        a0 = math.atan2(st[1] - cy, st[0] - cx)
+        sweep = (math.atan2(en[1] - cy, en[0] - cx) - a0) % (2 * math.pi)
+        if (math.atan2(py - cy, px - cx) - a0) % (2 * math.pi) <= sweep:
+            d = abs(math.hypot(px - cx, py - cy) - r)
+        else:
+            d = min(math.hypot(px - st[0], py - st[1]), math.hypot(px - en[0], py - en[1]))
+        return abs(d - sizes[0])
     if kind == "rounded":                 # a RoundedRectangle: the rectangle its corners'
         (bl, br, tr, tl), rc = pts, sizes[0]   # centres span, grown by the corner radius
         ux, uy = br[0] - bl[0], br[1] - bl[1]
@@ -461,6 +478,8 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
                       f"`Chamfer(at=[edge1, edge2], distance={r:.6g} mm)`")]
     out = []
     for i, c in enumerate(chosen):
+        if c.quiet:
+            continue
         if why.get(i):
             pairs = c.meeting()
             hint = ("name two edges that meet at the corner (at their ends, where they "

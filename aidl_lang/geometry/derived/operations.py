@@ -920,7 +920,7 @@ def _sibling_edges(edges: list) -> list:
 
 
 # the shapes whose outline `Fillet([a, b], r)` finds where two of them cross (corners.meet)
-MEET = ("Circle", "Ellipse", "Slot", "Rectangle", "RoundedRectangle", "Polygon",
+MEET = ("Circle", "Ellipse", "Slot", "ArcSlot", "Rectangle", "RoundedRectangle", "Polygon",
         "RegularPolygon", "Triangle", "Star", "Trapezoid")
 
 
@@ -936,6 +936,8 @@ def _outline_spec(g: Geometry, S) -> tuple:
         return k.lower(), [member(g, "center", S)]
     if k == "Slot":
         return "slot", [member(g, "start", S), member(g, "end", S)]
+    if k == "ArcSlot":      # run ab's boomerang: `Fillet([hub, blade.b], 8)`
+        return "arcslot", [member(g, k, S) for k in ("center", "start", "end")]
     if k == "Line":
         return "segment", [member(g, "start", S), member(g, "end", S)]
     if k == "RoundedRectangle" and g.data.get("corner_radius") and "corner_radii" not in g.data:
@@ -982,5 +984,7 @@ def _chosen(ctx, v, S, kind: str) -> list:
             from ..relations.members import _pv
             return [Chosen("corners", tuple(_pv(p, S) for p in pts), _name(g, S))]
     raise OperationError(f"{kind} at: give a point, two edges [a, b] (their corner), two "
-                         f"shapes or an edge and a shape [a, b] (where their outlines cross), "
-                         f"a line, a polygonal shape, or a list of these; got {_kind(v)}")
+                         f"shapes or an edge and a shape [a, b] (where their outlines cross: "
+                         f"{', '.join(MEET)}), a line, a polygonal shape, or a list of these; "
+                         f"got {_kind(v)}" + (f" (`{_name(v.geom, S)}`, a {v.geom.kind})"
+                                              if isinstance(v, GeomRef) else ""))
