@@ -325,3 +325,23 @@ def test_a_fillet_at_a_copy_that_meets_nothing_says_nothing():
     r = aidl_lang.compile(source=src)
     assert not [d for d in r.diagnostics if d.code in ("E0408", "W0406")], \
         [(d.code, d.message) for d in r.diagnostics]
+
+
+def test_W0405_not_for_the_spacing_of_separate_parts():
+    """Run ab's camp stool: `RightOf(leg_b, leg_a, gap=10)` between two separate legs of an
+    assembly, each with `Fillet` at its feet, was W0405 twice ("reads the box ... before its
+    Fillet ... 0.540 mm in"): the legs lie 10.54 mm apart on the drawing, which cuts nothing
+    differently. A spacing relation between separate parts is not warned; within one part
+    it still is."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111ab/run/06_camp_stool.first_valid.aidl"))
+    assert r.ok and not _w(r, "W0405")
+    one = """solid sign {
+    base = Rectangle(center=(0, 0), width=100, height=20)
+    solid post {
+        p = Polygon([(0, 10), (10, 30), (0, 50), (-10, 30)])
+        Fillet(5)
+    }
+    Above(post, base, gap=-1)
+}
+"""
+    assert _w(aidl_lang.compile(source=one), "W0405")
