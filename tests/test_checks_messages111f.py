@@ -345,3 +345,14 @@ def test_W0405_not_for_the_spacing_of_separate_parts():
 }
 """
     assert _w(aidl_lang.compile(source=one), "W0405")
+
+
+def test_W0502_of_a_template_hole_says_it_can_be_turned():
+    """Run ab's fume extractor: two `cross_halving` slots with their mouths on the plate's
+    bottom edge ran down off it at rotation 0; W0502's hint ("a sign or a unit off?") did not
+    name the direction. For a template's hole with a `rotation`, it now does."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111ab/run/02_fume_extractor.first_valid.aidl"))
+    w = _w(r, "W0502")
+    assert len(w) == 2
+    assert all("`rotation=180 deg` runs it the other way" in d.hint
+               and "aidl docs cross_halving" in d.hint for d in w)

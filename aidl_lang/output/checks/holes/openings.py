@@ -927,12 +927,17 @@ def _check_stray_shapes(d: Drawing, cut, part, roots, sink: DiagnosticSink) -> N
         if _over_opening(d, f, _area(f), part, roots):
             continue
         stray.setdefault(g.span, []).append(g)
-    for span, gs in stray.items():
+    tpl = h.template
+    turn = (f"; or turn it: `{tpl}(...)` runs from its anchor (cx, cy) the way its `rotation=` "
+            f"says (`aidl docs {tpl}`), and `rotation=180 deg` runs it the other way"
+            if tpl and isinstance(h.scope, dict) and "rotation" in h.scope else "")
+    for span, gs in stray.items():      # (run ab's extractor: a cross_halving's mouth on the
+        #                                 bottom edge, at rotation 0 running down off the plate)
         what = f"`{gs[0].label}`" + (f" ({len(gs)} copies)" if len(gs) > 1 else "")
         sink.warning("W0502", f"{what} of {h.kind} `{h.path}` cuts nothing: it lies outside "
                      f"solid `{s.path}` (from ({x0:.2f}, {y0:.2f}) to ({x1:.2f}, {y1:.2f}))",
                      span, hint=f"move it onto `{s.path}`: check its coordinates against the "
-                                "solid's extent (a sign or a unit off?)")
+                                f"solid's extent (a sign or a unit off?){turn}")
 
 
 def _over_opening(d: Drawing, hole_shape, whole: float, part, roots) -> bool:
