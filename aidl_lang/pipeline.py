@@ -826,6 +826,21 @@ def _literal_note(items) -> str:
             "`flexible=true` to its call")
 
 
+def _sizes_note(items) -> str:
+    """A hint's note on the shapes of a conflict held by the sizes written in their calls
+    (run aa's cake topper: a rail's placeholder `width=100` between `AlignLeft` and
+    `AlignRight` of two stars): a relation does not stretch a size written as a number."""
+    lines = sorted({c.span.line for c, _ in items if c.implicit and c.span is not None
+                    and (c.text or "").endswith(" shape")})
+    if not lines:
+        return ""
+    at = ", ".join(map(str, lines))
+    return (f". The shape{'s' if len(lines) > 1 else ''} on line{'s' if len(lines) > 1 else ''} "
+            f"{at} keep{'' if len(lines) > 1 else 's'} the sizes written in "
+            f"{'their calls' if len(lines) > 1 else 'its call'} (`width=100`): if the relations should set one, write that size as the "
+            "expression it is (`width=b.bb.right - a.bb.left`)")
+
+
 def _rigid_note(s) -> str:
     """A hint's note on the rigid structures (``Rigid(part)``) below ``s``: they were only
     moved, never bent, so a conflict there may ask for a change of shape."""
@@ -938,7 +953,8 @@ def report_failure(sink: DiagnosticSink, result: SolveResult, path: str | None =
             first.span, "error",
             hint=(f"the conflicting set is: {names}. Change one of them so that they agree "
                   "(a different value, or a constraint that says what you mean); keep the "
-                  "others" + _rigid_note(first.owner) + _literal_note(items)),
+                  "others" + _rigid_note(first.owner) + _literal_note(items)
+                  + _sizes_note(items)),
             labels=labels), calls=instance_calls(first.owner))
         shown += 1
     if shown:

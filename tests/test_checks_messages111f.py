@@ -356,3 +356,15 @@ def test_W0502_of_a_template_hole_says_it_can_be_turned():
     assert len(w) == 2
     assert all("`rotation=180 deg` runs it the other way" in d.hint
                and "aidl docs cross_halving" in d.hint for d in w)
+
+
+def test_E0401_says_a_shape_keeps_the_sizes_written_in_its_call():
+    """Run aa's cake topper: a rail `Rectangle(..., width=100, ...)` between `AlignLeft(rail,
+    star_l)` and `AlignRight(rail, star_r)`: E0401 listed "`Rectangle shape` (held by a
+    constructor)" among seven, and the model had to guess that its placeholder width was
+    held. The hint now says the sizes written in a call are kept, and how to let a relation
+    set one."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111aa/drafts/06_cake_topper.attempt2.aidl"))
+    (e,) = [d for d in r.errors if d.code == "E0401"]
+    assert "The shapes on lines 21, 23, 24 keep the sizes written in their calls" in e.hint
+    assert "`width=b.bb.right - a.bb.left`" in e.hint
