@@ -368,3 +368,25 @@ def test_E0401_says_a_shape_keeps_the_sizes_written_in_its_call():
     (e,) = [d for d in r.errors if d.code == "E0401"]
     assert "The shapes on lines 21, 23, 24 keep the sizes written in their calls" in e.hint
     assert "`width=b.bb.right - a.bb.left`" in e.hint
+
+
+def test_a_label_placed_between_a_hole_and_the_part_moves_alone():
+    """Run ac's lucet: `mark.w.position.y == (hang.bb.top + head.bb.bottom) / 2` (a word
+    centred between the hanging hole and the head, a shape of the part) moved the hole 1.9 mm
+    as well as the word, while the freedom line called the hole "free but stays where written
+    on its part". The first-named (the drawing) moves; the hole stays as written."""
+    src = """solid lucet {
+    handle = Rectangle(center=(0, 30), width=22, height=60)
+    head = Circle(center=(0, 66), diameter=44)
+    hole hang { c = Circle(center=(0, 8), diameter=5) }
+    drawing mark { w = Text("EM", position=(0, 30), size=6) }
+    mark.w.position.y == (hang.bb.top + head.bb.bottom) / 2
+    assert hang.c.center.y == 8 mm
+    assert head.center.y == 66 mm
+    assert mark.w.position.y == (10.5 mm + 44 mm) / 2
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [(d.code, d.message) for d in r.errors]
+    r2 = aidl_lang.compile(path=str(RUNS / "issue111ac/drafts/07_lucet.attempt2.aidl"))
+    assert r2.ok, [(d.code, d.message) for d in r2.errors]

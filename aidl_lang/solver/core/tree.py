@@ -73,14 +73,19 @@ def placed_on(s: Structure) -> tuple[list, list, dict]:
                 movers[id(groups[0])] = groups[0]
                 edges.setdefault(id(groups[0]), set())
             continue
-        if part:                    # s's own part is the reference: every child moves
+        solids = [t for t in groups if t.kind not in FEATURE_KINDS]
+        if part and not (0 < lead < len(groups) and len(solids) in (0, len(groups))
+                         and all(t.kind == "drawing" for t in groups[:lead])):
+            # s's own part is the reference: every child moves (but a label placed between
+            # features and the part moves alone, below)
             for t in groups:
                 movers[id(t)] = t
                 edges.setdefault(id(t), set())
             continue
-        solids = [t for t in groups if t.kind not in FEATURE_KINDS]
         if 0 < lead < len(groups) and len(args) > 1 and len(solids) in (0, len(groups)):
-            # the first argument's children move to the rest, each a reference: an equation
+            # the first argument's children move to the rest, each a reference (with s's own
+            # part too: run ac's lucet, `mark.w.position.y == (hang.bb.top + head.bb.bottom)
+            # / 2` moved the hanging hole 1.9 mm, said "stays where written"): an equation
             # of a label and two holes (run w's cup holder: `label.t.position.x == (mug.c.right.x
             # + notch.end.left.x) / 2` moved the mug hole 8.76 mm, the last-named alone held)
             for ref in groups[lead:]:
