@@ -390,3 +390,25 @@ def test_a_label_placed_between_a_hole_and_the_part_moves_alone():
     assert r.ok, [(d.code, d.message) for d in r.errors]
     r2 = aidl_lang.compile(path=str(RUNS / "issue111ac/drafts/07_lucet.attempt2.aidl"))
     assert r2.ok, [(d.code, d.message) for d in r2.errors]
+
+
+def test_a_line_ending_in_a_comma_goes_on():
+    """Runs aa (sundial) and ad (cue rack) put an assert's message on the line after its
+    comma: E0001 "unexpected newline; expected a string". A newline after a `,` is now
+    ignored (as inside brackets); the formatter indents the continuation one step; both
+    first tries check."""
+    from aidl_lang.editor.fmt import format_source
+    src = ("param w = 100 mm,\nmin = 50 mm, max = 200 mm\nsolid plate {\n"
+           "    body = Rectangle(center=(0, 0), width=w, height=60)\n"
+           "    assert body.width == 100 mm,\n\"the plate is 100 wide\"\n}\n")
+    r = aidl_lang.compile(source=src)
+    assert r.ok and not r.diagnostics
+    bad = aidl_lang.compile(source=src.replace("== 100 mm,", "== 90 mm,"))
+    assert any("(the plate is 100 wide)" in d.message for d in bad.errors)
+    out = format_source(src)
+    assert "param w = 100 mm,\n    min = 50 mm" in out
+    assert "    assert body.width == 100 mm,\n        \"the plate is 100 wide\"\n" in out
+    assert format_source(out) == out
+    for f in ("issue111aa/drafts/04_sundial.attempt1.aidl",
+              "issue111ad/drafts/06_cue_rack.attempt1.aidl"):
+        assert aidl_lang.compile(path=str(RUNS / f)).ok

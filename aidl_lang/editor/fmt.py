@@ -13,6 +13,8 @@ than on the AST, so every comment survives where it was:
 * numbers with a unit: one space before a word unit (``10 mm``, ``30 deg``), ``°`` attached;
 * line breaks inside ``()`` and ``[]`` are kept; a continuation line is aligned one column
   after its open bracket, or indented 4 more than the bracket's line when the bracket ends it;
+  a line after a ``,`` outside brackets (an assert's message, a param's range) is indented 4
+  more than its statement;
 * trailing comments of consecutive lines are aligned two columns after the longest code.
 
 The result is checked before it is returned: it must parse to the same AST (spans ignored) and
@@ -237,8 +239,8 @@ def _layout(source: str, items: list[_Item]) -> str:
             if brackets:
                 close, col, opener = brackets[-1]
                 ind = opener if k == close else col
-            else:
-                ind = level * INDENT
+            else:               # a line after a `,` goes on the statement: one step in
+                ind = level * INDENT + (INDENT if code_kind == "COMMA" else 0)
             if nl >= 2 and not no_blank and k != "RBRACE" and lines:
                 lines.append([0, "", None])
             lines.append([ind, it.text, None])

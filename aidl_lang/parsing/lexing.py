@@ -31,7 +31,9 @@ def _postlex(types: list, spans: list, text: str, complete: bool = True) -> tupl
     - ``thickness`` at the start of a statement and followed by a number, a name or a sign is
       the ``thickness 3 mm`` statement (THICKNESS); anywhere else it is an ordinary NAME;
       ``kerf`` and ``min_wall`` likewise (KERF, MIN_WALL: ``kerf 0.15 mm``, ``min_wall 0.3 mm``);
-    - ``_NL`` is dropped inside () and [] and before ``else``/``elif``, and repeats collapse;
+    - ``_NL`` is dropped inside () and [] and before ``else``/``elif``, and after a ``,`` (a
+      line ending in a comma goes on: run aa's and run ad's `assert COND,` with the message on
+      the next line), and repeats collapse;
     - a closing ``}`` ends a statement even without a newline (``} stmt`` on one line): an
       ``_NL`` at the ``}``'s span is put in (its text is ``"\n"``, see :func:`_token`).
 
@@ -56,10 +58,11 @@ def _postlex(types: list, spans: list, text: str, complete: bool = True) -> tupl
         if prev_type == "RBRACE" and depth == 0 and pending is None and t not in _BLOCK_FOLLOW:
             push_t("_NL")
             push_s(prev_span)
+        after = prev_type
         prev_type, prev_span = t, sp
         if t == "_NL":
-            if depth == 0 and pending is None:
-                pending = sp
+            if depth == 0 and pending is None and after != "COMMA":
+                pending = sp    # (a line ending in `,` goes on: `assert c,` then its message)
             continue
         if pending is not None:
             if t not in _ELSE:
@@ -98,9 +101,10 @@ class _PostLex:
                     and tok.type not in ("_NL", "SEMICOLON", "RBRACE", "ELSE", "ELIF")):
                 # `} stmt` on one line: a block ends a statement
                 yield type(prev).new_borrow_pos("_NL", "\n", prev)
+            after = prev.type if prev is not None else None
             prev = tok
             if tok.type == "_NL":
-                if depth == 0 and pending is None:
+                if depth == 0 and pending is None and after != "COMMA":
                     pending = tok
                 continue
             if pending is not None:
