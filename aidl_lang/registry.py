@@ -113,7 +113,8 @@ POLY_MEMBERS = {"points": "points", "edges": "lines", "center": "point", "centro
                 "bb": "bbox"}
 TRI_MEMBERS = {"a": "point", "b": "point", "c": "point", "points": "points",
                "ab": "line", "bc": "line", "ca": "line", "edges": "lines", "center": "point",
-               "centroid": "point", "incenter": "point", "inradius": "length", "bb": "bbox"}
+               "centroid": "point", "incenter": "point", "inradius": "length", "bb": "bbox",
+               "base": "length", "height": "length"}
 TRAP_MEMBERS = {k: v for k, v in RECT_MEMBERS.items() if k != "width"} | {
     "points": "points", "edges": "lines", "bottom_width": "length", "top_width": "length"}
 ELLIPSE_MEMBERS = {"center": "point", "rx": "length", "ry": "length", "bb": "bbox"}
@@ -217,7 +218,7 @@ _DEFS = {
                     A("rotation", "angle", 0.0)],
                    doc="A triangle through three points (as Polygon), or an isosceles "
                        "one by base and height (held; a, b on the base, c the apex, center the "
-                       "bounding-box center).", members=TRI_MEMBERS),
+                       "bounding-box center); members base (|ab|) and height (c from ab).", members=TRI_MEMBERS),
     "Trapezoid": _p([A("center", "point"), A("bottom_width", "length"), A("top_width", "length"),
                      A("height", "length"), A("rotation", "angle", 0.0)],
                     doc="An isosceles trapezoid; widths, height and rotation are held, the "

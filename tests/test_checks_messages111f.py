@@ -412,3 +412,20 @@ def test_a_line_ending_in_a_comma_goes_on():
     for f in ("issue111aa/drafts/04_sundial.attempt1.aidl",
               "issue111ad/drafts/06_cue_rack.attempt1.aidl"):
         assert aidl_lang.compile(path=str(RUNS / f)).ok
+
+
+def test_a_triangle_reads_its_base_and_height():
+    """Run ac's plant obelisk asserted `t.height` of a `Triangle(center, base, height)`:
+    E0102 "a Triangle has no member `height`". `base` is |ab| and `height` the apex c's
+    distance from ab, for either form, turned or not."""
+    src = """solid ob {
+    t = Triangle(center=(0, 0), base=40, height=90, rotation=30 deg)
+    u = Triangle((0, 0), (30, 0), (10, 20))
+    assert t.base == 40 mm and t.height == 90 mm
+    assert u.base == 30 mm and u.height == 20 mm
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [(d.code, d.message) for d in r.errors]
+    bad = aidl_lang.compile(source=src.replace("u.height == 20 mm", "u.height == 21 mm"))
+    assert any("20 mm == 21 mm is false" in d.message for d in bad.errors)

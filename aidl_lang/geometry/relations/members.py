@@ -149,6 +149,13 @@ def member(g: Geometry, name: str, frame):
             return _centroid([_pv(p, frame) for p in pts], own)
         if k == "Triangle" and name in ("incenter", "inradius"):
             return _incircle([_pv(p, frame) for p in pts], name, own)
+        if k == "Triangle" and name in ("base", "height"):     # run ac's obelisk
+            a, b, c = (_pv(p, frame) for p in pts)
+            ab = hypot(b.x - a.x, b.y - a.y)
+            if name == "base":
+                return Q(ab, LEN, own)
+            cross = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)
+            return Q(func("abs", cross) / ab, LEN, own)
     if k == "Polyline" and name == "edges":
         return [GeomRef(e) for e in g.data["edges"]]
     if k in ("Spline", "Polyline", "Bezier"):
