@@ -429,3 +429,12 @@ def test_a_triangle_reads_its_base_and_height():
     assert r.ok, [(d.code, d.message) for d in r.errors]
     bad = aidl_lang.compile(source=src.replace("u.height == 20 mm", "u.height == 21 mm"))
     assert any("20 mm == 21 mm is false" in d.message for d in bad.errors)
+
+
+def test_W0506_does_not_offer_to_delete_a_solid_other_statements_name():
+    """Run s's no-parking sign: W0506 on its bar (cut away by the ring's hole) ended "else
+    delete it"; applied, `At(bar.b.center, disc.center)` and an assert named nothing (E0101).
+    A solid that a constraint places is meant: the hint keeps only the restructuring."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111s/run/08_no_parking_sign.first_valid.aidl"))
+    w = _w(r, "W0506")
+    assert len(w) == 2 and all("delete it" not in d.hint and "beside" in d.hint for d in w)

@@ -436,7 +436,7 @@ def test_the_prompt_says_what_corner_pattern_keeps_and_how_an_ellipse_is_offset(
     corner = next(ln for ln in text.splitlines() if ln.startswith("- CornerPattern("))
     assert "bottom-left" in corner and "Fixed stays put" in corner
     ellipse = next(ln for ln in text.splitlines() if ln.startswith("- Ellipse("))
-    assert "Offset or Shell of it: within 1e-4 mm" in ellipse      # issue 73: taken, bound said
+    assert "Offset, Shell or kerf of it: within 1e-4 mm" in ellipse      # issue 73: taken, bound said
     assert 'mirror="y"' in next(ln for ln in text.splitlines() if ln.startswith("- Polygon("))
     members = [ln for ln in text.splitlines() if ln.startswith("- ") and " | points:" in ln]
     assert "centroid" in next(ln for ln in members if "Triangle" in ln.split("|")[0])

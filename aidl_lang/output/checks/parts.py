@@ -418,13 +418,25 @@ def _kept_over(d: Drawing, s: Structure, shp, others, cut: list, name: str) -> s
         return (f"{why}; this solid lies within the opening and touches no material around "
                 f"it (kept, it would be an island): delete it, or make it reach the material "
                 f"around the hole{part}")
+    child = name.split("`")[1].rsplit(".", 1)[-1] if "`" in name else name
+    # a solid other statements place or assert on is meant: no "delete it" (run s's
+    # no-parking sign: deleting its bar left `At(bar.b.center, ...)` naming nothing, E0101)
+    other = "" if _named_elsewhere(s, s.children.get(child)) else ", else delete it"
     if s.parent is None or s.parent.kind != "solid":       # `s` is a part
-        child = name.split("`")[1].rsplit(".", 1)[-1] if "`" in name else name
         return (f"{why}; to keep this solid over the hole, put the rest of `{s.name}` (its "
                 f"shapes and hole {holes}) in a `solid` of their own inside `{s.name}`, beside "
-                f"`{child}` (a sibling structure's material survives the hole), else delete it")
+                f"`{child}` (a sibling structure's material survives the hole){other}")
     return (f"{why}; to keep this solid over the hole, declare it beside `{s.name}` (a "
-            "sibling structure's material survives the hole), else delete it")
+            f"sibling structure's material survives the hole){other}")
+
+
+def _named_elsewhere(s: Structure, child) -> bool:
+    """Whether a constraint of ``s`` relates ``child`` (or what is in it) to something."""
+    if child is None:
+        return False
+    inside = {id(t) for t in child.subtree()}
+    return any(id(o) in inside for c in s.constraints if c.args for grp in c.args
+               for o in grp)
 
 
 def _bridged(d: Drawing, s: Structure, shp, left) -> bool:
