@@ -89,8 +89,13 @@ def slot(length=20 mm, width=5 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
 # whole cuts that fit, floor((height - bridge) / (cut + bridge)), centred: the
 # rest of the height is uncut at both ends of the unshifted columns (`height`
 # 32 mm of 15 + 3 mm periods: one cut, 8.5 mm uncut each end, end cuts of 14.5
-# mm); a height of n periods less a bridge leaves a bridge. Members: `cut_a` (the
-# full-length cuts, per column), `cut_b` (the end cuts).
+# mm); a height of n periods less a bridge leaves a bridge. There are
+# floor(width / pitch) + 1 columns, centred: the outer ones lie
+# (width - (columns - 1) * pitch) / 2 in from the band's sides, and the box an
+# instance's `.bb` reads is its cuts', that much narrower than the band where
+# `width` is no whole number of pitches (41.5 mm at pitch 2: 0.75 mm in each
+# side). Members: `cut_a` (the full-length cuts, per column), `cut_b` (the end
+# cuts).
 # Anchor: (cx, cy) is the centre of its box.
 def living_hinge(width=30 mm, height=60 mm, pitch=2 mm, cut=15 mm, bridge=3 mm,
                  kerf_width=0 mm, overrun=1 mm, cx=0 mm, cy=0 mm) -> cut {

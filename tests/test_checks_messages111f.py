@@ -438,3 +438,20 @@ def test_W0506_does_not_offer_to_delete_a_solid_other_statements_name():
     r = aidl_lang.compile(path=str(RUNS / "issue111s/run/08_no_parking_sign.first_valid.aidl"))
     w = _w(r, "W0506")
     assert len(w) == 2 and all("delete it" not in d.hint and "beside" in d.hint for d in w)
+
+
+def test_living_hinge_docs_say_its_box_is_its_cuts():
+    """Run ac's napkin ring asserted a living hinge's box as its band (`width` 41.5 mm) and
+    found 0.75 mm less each side: the docs now say the box is the cuts' and by how much."""
+    from aidl_lang.library.reference import stdlib_templates
+    doc = stdlib_templates()["living_hinge"].doc
+    assert "41.5 mm at pitch 2: 0.75 mm in each side" in doc
+    src = """import "std/plates.aidl"
+solid ring {
+    band = Rectangle(center=(0, 0), width=60, height=80)
+    h = living_hinge(width=41.5 mm, height=80 mm, pitch=2 mm)
+    assert h.bb.width == 41.5 mm - 2 * 0.75 mm
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [(d.code, d.message) for d in r.errors]
