@@ -218,8 +218,10 @@ def said_shrunk(sink, g, span) -> None:
     t = g.data["text"]
     shown = t if len(t) <= 40 else t[:37] + "..."
     sink.add(Diagnostic(
-        "W0113", f"the text \"{shown}\" at size {asked:.4g} mm is {wide:.4g} mm wide, more "
-        f"than its max_width {m:.4g} mm: drawn at size {fit:.4g} mm, {m:.4g} mm wide", span,
+        "W0113", f"the text \"{shown}\" at size {asked:.4g} mm is {wide:.4g} mm wide along its "
+        "baseline, as max_width measures it (its `.bb` is the letters' own box, which may be "
+        f"a little narrower), more than its max_width {m:.4g} mm: drawn at size {fit:.4g} mm, "
+        f"{m:.4g} mm wide", span,           # (run ac's name: 61.53 wide, its .bb 59.76)
         "note", hint="nothing to change when fitting the width is meant: the size follows "
                      "max_width (and the text) whenever they change; for a set size instead, "
                      f"`size={math.floor(fit * 100) / 100:g}` without max_width"))
