@@ -682,7 +682,8 @@ def test_text_shrunk_to_max_width_is_a_note_W0113(compile_text):
                      'max_width=60) }\n')
     (d,) = [d for d in c.sink.items if d.code == "W0113"]
     assert d.severity == "note" and not c.sink.has_errors
-    assert "is 75.24 mm wide, more than its max_width 60 mm: drawn at size 7.975 mm" in d.message
+    assert "is 75.24 mm wide along its baseline, as max_width measures it" in d.message
+    assert "more than its max_width 60 mm: drawn at size 7.975 mm" in d.message
     assert span4(d)[:2] == (1, 70)            # at `60`, the max_width given
 
 
