@@ -152,7 +152,10 @@ DETAILS: dict[str, str] = {
             "outer_radius, inner_radius, tip_radius; points, edges, center of the sharp star.",
     "Hull": "`.center` is the center of the hull's bounding box (as `.bb.center`), a point "
             "that follows the shapes: `Circle(center=grip.center, radius=3)` centers a hole on "
-            "it.",
+            "it. The hull of circles is their outer tangent lines and arcs: a larger circle "
+            "between two smaller ones shows as a short arc between two straight runs (a "
+            "blunt peak each side), not a smooth egg; for a smooth oval draw an Ellipse, or "
+            "the Hull of the two end circles and an Ellipse.",
     "Triangle": "`.incenter` is the center of the inscribed circle (the vertices weighted by "
                 "the lengths of the sides opposite them), `.inradius` its radius (twice the area "
                 "over the perimeter): `Circle(center=t.incenter, radius=t.inradius - 2)` is a "
