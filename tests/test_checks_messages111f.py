@@ -455,3 +455,13 @@ solid ring {
 """
     r = aidl_lang.compile(source=src)
     assert r.ok, [(d.code, d.message) for d in r.errors]
+
+
+def test_W0513_measures_text_along_a_curve_by_its_strokes():
+    """Run af's resistor colour-code wheel: labels set along circles were W0513 21 times
+    ("their boxes overlap by 39.72 mm^2"): a curved text's straight box holds the curve's
+    inside. Text along a curve is judged by how near the two texts' strokes come: one pair
+    left (VIOLET and 7, 1.47 mm apart at 3 mm text), said as strokes."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111af/run/02_resistor_code_wheel.first_valid.aidl"))
+    w = _w(r, "W0513")
+    assert len(w) == 1 and "their strokes are 1.47 mm apart" in w[0].message

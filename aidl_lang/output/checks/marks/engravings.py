@@ -879,6 +879,17 @@ def _copy_label(g, short: bool = False) -> str:
     return f"{name}[{same.index(g)}]"
 
 
+def stroke_gap(P, Q, bp, bq, pad: float) -> float:
+    """The least distance (mm) between the strokes ``P`` and ``Q`` (k x 2 x 2) of two texts,
+    each one's strokes within ``pad`` of the other's box (``bp``, ``bq``: x0, y0, x1, y1)."""
+    def within(S, b):
+        lo, hi = S.min(axis=1), S.max(axis=1)
+        return S[(hi[:, 0] >= b[0] - pad) & (lo[:, 0] <= b[2] + pad)
+                 & (hi[:, 1] >= b[1] - pad) & (lo[:, 1] <= b[3] + pad)]
+    P, Q = within(P, bq), within(Q, bp)
+    return _seg_gap(P[:, 0], P[:, 1], Q[:, 0], Q[:, 1])[0] if len(P) and len(Q) else math.inf
+
+
 def _seg_gap(A0, A1, B0, B1) -> tuple:
     """The least distance (mm) between the segments ``A0[i]``-``A1[i]`` (n x 2 each) and
     ``B0[j]``-``B1[j]`` (m x 2): ``(d, i, j, pa, pb)`` with the nearest points ``pa`` on

@@ -17,7 +17,7 @@ from ...part.build.booleans import Drawing
 from ...part.measure.nearby import box_pairs, box_pairs_between
 from ..common import MIN_AREA, _area, _pct
 from .engravings import (_COS32, _SIN32, _copy_label, _mark_segments, _open_ends, _pair_gap,
-                         _polyline, _seg_gap)
+                         _polyline, _seg_gap, stroke_gap)
 
 TEXT_OVERLAP = 0.10     # of the smaller text's box: two labels overlapping more are on each other
 TEXT_MARGIN = 0.10      # of a text's size: a mark this far inside the text's box does not count
@@ -132,6 +132,15 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
         a, b = tg[i], tg[j]
         if text_allowed(a, b):
             continue                            # `AllowOverlap(labels)`: close as meant
+        if a.data.get("along") is not None or b.data.get("along") is not None:
+            # along a curve, a text's straight box holds the curve's inside (run af's colour
+            # wheel: 21 false alarms): how near their strokes come says it
+            near = TEXT_GAP * min(sizes[i], sizes[j])
+            gap = stroke_gap(strokes[i], strokes[j], bb[i], bb[j], near)
+            if gap < near and a.span is not None and b not in said:
+                said.add(b)
+                close.setdefault((a.span, b.span), []).append((gap, near, a, b, "strokes"))
+            continue
         common = _area(shape(i) ^ shape(j))
         small = min(_area(shape(i)), _area(shape(j)))
         if common <= max(MIN_AREA, TEXT_OVERLAP * small):
@@ -140,7 +149,7 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
             word = min(len(str(g.data.get("text", "")).strip()) for g in (a, b)) > 1
             if gap < near and word and a.span is not None and b not in said:
                 said.add(b)
-                close.setdefault((a.span, b.span), []).append((gap, near, a, b))
+                close.setdefault((a.span, b.span), []).append((gap, near, a, b, "boxes"))
             continue
         said.add(b)
         labels = [Label(a.span, f"`{a.label}` is here", primary=False)] if a.span else []
@@ -150,10 +159,10 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
                      labels=labels,
                      hint=_apart(bb[i], bb[j], a, b, TEXT_GAP * min(sizes[i], sizes[j])))
     for found in close.values():
-        gap, near, a, b = min(found, key=lambda f: f[0])
+        gap, near, a, b, what = min(found, key=lambda f: f[0])
         more = f"; {len(found) - 1} more pairs of these labels as close" if len(found) > 1 else ""
         sink.warning("W0513", f"text `{b.label}` (\"{b.data.get('text', '')}\") runs into "
-                     f"text `{a.label}` (\"{a.data.get('text', '')}\"): their boxes are "
+                     f"text `{a.label}` (\"{a.data.get('text', '')}\"): their {what} are "
                      f"{gap:.2f} mm apart, less than {near:.2f} mm (half the text size), so "
                      f"they read as one string{more}", b.span,
                      labels=[Label(a.span, f"`{a.label}` is here", primary=False)],
