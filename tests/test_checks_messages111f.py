@@ -465,3 +465,13 @@ def test_W0513_measures_text_along_a_curve_by_its_strokes():
     r = aidl_lang.compile(path=str(RUNS / "issue111af/run/02_resistor_code_wheel.first_valid.aidl"))
     w = _w(r, "W0513")
     assert len(w) == 1 and "their strokes are 1.47 mm apart" in w[0].message
+
+
+def test_W0504_of_a_words_letters_does_not_lead_to_E0120():
+    """Run af's house-number sign: "42" to glue on digit by digit was W0504, whose hint ("make
+    the structure an `assembly`") gave E0120 (a font's letters stand in a solid). The hint
+    now says the form that works: each letter a Text in a solid of its own in an assembly."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111af/run/08_house_number_sign.first_valid.aidl"))
+    (w,) = _w(r, "W0504")
+    assert "write each letter as a Text in a `solid` of its own in an `assembly`" in w.hint
+    assert "make the structure an `assembly`" not in w.hint

@@ -201,9 +201,10 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
         w = words[0].name or "word"
         hint = (f"join the letters: a rail under the word (`rail = Rectangle(center=({w}.center.x, "
                 f"{w}.position.y - 1 mm), width={w}.bb.width, height=3 mm)`, its baseline's), a heavier style "
-                "(`font=\"sans:Black\"`) or a tighter layout; or, if they are separate parts, "
-                "make the structure an `assembly`")
-        along = words[0].data.get("along")
+                "(`font=\"sans:Black\"`) or a tighter layout; or, if they are separate parts "
+                "(glued on one by one), write each letter as a Text in a `solid` of its own "
+                "in an `assembly` (a font's letters stand in a solid, E0120)")
+        along = words[0].data.get("along")       # (run af's house numbers: "42" to glue on)
         if along is not None and getattr(along, "name", None):   # laid along a curve
             c = along.name
             hint = (f"join the letters along their curve: a ring under them (`ring = Shell("
