@@ -394,13 +394,14 @@ def test_a_label_placed_between_a_hole_and_the_part_moves_alone():
 
 def test_a_line_ending_in_a_comma_goes_on():
     """Runs aa (sundial) and ad (cue rack) put an assert's message on the line after its
-    comma: E0001 "unexpected newline; expected a string". A newline after a `,` is now
-    ignored (as inside brackets); the formatter indents the continuation one step; both
-    first tries check."""
+    comma: E0001 "unexpected newline; expected a string". A newline after a `,` before a line
+    indented deeper than the statement is now ignored (as inside brackets); the formatter
+    indents the continuation one step; both first tries check. At the statement's own indent
+    the line is a statement of its own: the error stays where the operand is missing."""
     from aidl_lang.editor.fmt import format_source
-    src = ("param w = 100 mm,\nmin = 50 mm, max = 200 mm\nsolid plate {\n"
+    src = ("param w = 100 mm,\n  min = 50 mm, max = 200 mm\nsolid plate {\n"
            "    body = Rectangle(center=(0, 0), width=w, height=60)\n"
-           "    assert body.width == 100 mm,\n\"the plate is 100 wide\"\n}\n")
+           "    assert body.width == 100 mm,\n      \"the plate is 100 wide\"\n}\n")
     r = aidl_lang.compile(source=src)
     assert r.ok and not r.diagnostics
     bad = aidl_lang.compile(source=src.replace("== 100 mm,", "== 90 mm,"))
@@ -412,6 +413,9 @@ def test_a_line_ending_in_a_comma_goes_on():
     for f in ("issue111aa/drafts/04_sundial.attempt1.aidl",
               "issue111ad/drafts/06_cue_rack.attempt1.aidl"):
         assert aidl_lang.compile(path=str(RUNS / f)).ok
+    flat = aidl_lang.compile(source="solid p {\n    r = 5 +\n    c = Circle(center=(0, 0), radius=5)\n}\n")
+    (e,) = flat.errors
+    assert (e.code, e.span.line, e.span.col) == ("E0001", 2, 12)
 
 
 def test_a_triangle_reads_its_base_and_height():
@@ -475,3 +479,18 @@ def test_W0504_of_a_words_letters_does_not_lead_to_E0120():
     (w,) = _w(r, "W0504")
     assert "write each letter as a Text in a `solid` of its own in an `assembly`" in w.hint
     assert "make the structure an `assembly`" not in w.hint
+
+
+def test_a_line_ending_in_an_operator_goes_on():
+    """Run ae broke two asserts after `and` (knife block, gate latch): E0001 "unexpected
+    newline". A line ending in an operator or `=` cannot end its statement, so it goes on;
+    the formatter indents the continuation, and formats it back the same."""
+    from aidl_lang.editor.fmt import format_source
+    src = ("solid plate {\n    body = Rectangle(center=(0, 0), width=100, height=60)\n"
+           "    assert body.width == 100 mm and\n        body.height == 60 mm, \"the plate\"\n"
+           "    w = body.width +\n        10 mm\n    assert w ==\n        110 mm\n}\n")
+    r = aidl_lang.compile(source=src)
+    assert r.ok and not r.diagnostics
+    assert format_source(src) == src
+    bad = aidl_lang.compile(source=src.replace("60 mm, ", "61 mm, "))
+    assert any("(the plate)" in d.message for d in bad.errors)

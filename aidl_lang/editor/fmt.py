@@ -13,8 +13,8 @@ than on the AST, so every comment survives where it was:
 * numbers with a unit: one space before a word unit (``10 mm``, ``30 deg``), ``°`` attached;
 * line breaks inside ``()`` and ``[]`` are kept; a continuation line is aligned one column
   after its open bracket, or indented 4 more than the bracket's line when the bracket ends it;
-  a line after a ``,`` outside brackets (an assert's message, a param's range) is indented 4
-  more than its statement;
+  a line after a ``,``, an operator or ``=`` outside brackets (an assert's message, a
+  condition broken after ``and``) is indented 4 more than its statement;
 * trailing comments of consecutive lines are aligned two columns after the longest code.
 
 The result is checked before it is returned: it must parse to the same AST (spans ignored) and
@@ -29,7 +29,7 @@ from dataclasses import dataclass
 from .. import ast as A
 from ..base.diagnostics import LINE_BREAK, DiagnosticSink
 from ..parser import mask_comments, parse
-from ..parsing.lexing import _lex
+from ..parsing.lexing import CONTINUES, _lex
 
 INDENT = 4
 
@@ -240,7 +240,7 @@ def _layout(source: str, items: list[_Item]) -> str:
                 close, col, opener = brackets[-1]
                 ind = opener if k == close else col
             else:               # a line after a `,` goes on the statement: one step in
-                ind = level * INDENT + (INDENT if code_kind == "COMMA" else 0)
+                ind = level * INDENT + (INDENT if code_kind in CONTINUES else 0)
             if nl >= 2 and not no_blank and k != "RBRACE" and lines:
                 lines.append([0, "", None])
             lines.append([ind, it.text, None])

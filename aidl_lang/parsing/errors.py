@@ -115,7 +115,8 @@ def _report(e: ParseError, text: str, path: str, pos: int, sink: DiagnosticSink)
     elif tok.type == "_NL":
         # (an unclosed `(` is reported at the bracket instead: newlines inside it are dropped)
         hint = ("the statement ended early: an operand is missing before the line break; to "
-                "go on with an expression on the next line, wrap it in `( )`")
+                "go on with an expression on the next line, end this line with its operator "
+                "(or `,`) and indent the next one deeper, or wrap it in `( )`")
     if tok.type == "_NL":
         width = 1
     sink.error("E0001", f"unexpected {what}" + (f"; {expected}" if expected else ""),

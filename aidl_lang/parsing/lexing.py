@@ -20,6 +20,10 @@ _BLOCK_FOLLOW = frozenset(("_NL", "SEMICOLON", "RBRACE", "ELSE", "ELIF"))
 _OPEN = frozenset(("LPAR", "LSQB"))
 _CLOSE = frozenset(("RPAR", "RSQB"))
 _ELSE = frozenset(("ELSE", "ELIF"))
+# a line ending in one of these cannot end its statement: the newline after it is dropped
+# (runs aa, ad: an assert's message after its `,`; run ae: a condition broken after `and`)
+CONTINUES = frozenset(("COMMA", "AND", "OR", "NOT", "COMP_OP", "ADD_OP", "MUL_OP", "POW",
+                       "EQUAL"))
 
 
 def _postlex(types: list, spans: list, text: str, complete: bool = True) -> tuple[list, list]:
@@ -31,9 +35,11 @@ def _postlex(types: list, spans: list, text: str, complete: bool = True) -> tupl
     - ``thickness`` at the start of a statement and followed by a number, a name or a sign is
       the ``thickness 3 mm`` statement (THICKNESS); anywhere else it is an ordinary NAME;
       ``kerf`` and ``min_wall`` likewise (KERF, MIN_WALL: ``kerf 0.15 mm``, ``min_wall 0.3 mm``);
-    - ``_NL`` is dropped inside () and [] and before ``else``/``elif``, and after a ``,`` (a
-      line ending in a comma goes on: run aa's and run ad's `assert COND,` with the message on
-      the next line), and repeats collapse;
+    - ``_NL`` is dropped inside () and [] and before ``else``/``elif``, and after a ``,``, an
+      operator or ``=`` (:data:`CONTINUES`) before a line indented deeper than the statement's
+      first (it goes on, as `assert COND,` with the message on the next line or a condition
+      broken after `and`; at the statement's own indent, a new statement: the operand
+      missing), and repeats collapse;
     - a closing ``}`` ends a statement even without a newline (``} stmt`` on one line): an
       ``_NL`` at the ``}``'s span is put in (its text is ``"\n"``, see :func:`_token`).
 
@@ -43,6 +49,8 @@ def _postlex(types: list, spans: list, text: str, complete: bool = True) -> tupl
     push_t, push_s = out_t.append, out_s.append
     depth = 0
     pending = None          # the span of a newline held back: dropped before else/elif
+    cont = False            # ... and after a token of CONTINUES, before a line indented deeper
+    col = 0                 # the column of the current statement's first token
     prev_type = None        # the type of the last token seen (after retyping)
     prev_span = None
     n = len(types)
@@ -61,14 +69,16 @@ def _postlex(types: list, spans: list, text: str, complete: bool = True) -> tupl
         after = prev_type
         prev_type, prev_span = t, sp
         if t == "_NL":
-            if depth == 0 and pending is None and after != "COMMA":
-                pending = sp    # (a line ending in `,` goes on: `assert c,` then its message)
+            if depth == 0 and pending is None:
+                pending, cont = sp, after in CONTINUES
             continue
         if pending is not None:
-            if t not in _ELSE:
-                push_t("_NL")
+            if t not in _ELSE and not (cont and sp[2] > col):
+                push_t("_NL")   # (a line after `,` or `and`, indented deeper, goes on)
                 push_s(pending)
             pending = None
+        if not out_t or out_t[-1] in _STATEMENT_START:
+            col = sp[2]
         if t in _OPEN:
             depth += 1
         elif t in _CLOSE:
@@ -95,22 +105,30 @@ class _PostLex:
     def _process(self, stream):
         depth = 0
         pending = None
+        cont = False
+        col = 0
+        last = None             # the type of the last token given out
         prev = None
         for tok in stream:
             if (prev is not None and prev.type == "RBRACE" and depth == 0 and pending is None
                     and tok.type not in ("_NL", "SEMICOLON", "RBRACE", "ELSE", "ELIF")):
                 # `} stmt` on one line: a block ends a statement
+                last = "_NL"
                 yield type(prev).new_borrow_pos("_NL", "\n", prev)
             after = prev.type if prev is not None else None
             prev = tok
             if tok.type == "_NL":
-                if depth == 0 and pending is None and after != "COMMA":
-                    pending = tok
+                if depth == 0 and pending is None:
+                    pending, cont = tok, after in CONTINUES
                 continue
             if pending is not None:
-                if tok.type not in ("ELSE", "ELIF"):
+                if tok.type not in ("ELSE", "ELIF") and not (cont and tok.column > col):
+                    last = "_NL"
                     yield pending
                 pending = None
+            if last is None or last in _STATEMENT_START:
+                col = tok.column
+            last = tok.type
             if tok.type in ("LPAR", "LSQB"):
                 depth += 1
             elif tok.type in ("RPAR", "RSQB"):
