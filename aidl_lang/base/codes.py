@@ -382,11 +382,11 @@ would have to be tangent to a cubic spline, and its end on the spline is no line
 spline piece that the exact outputs can write: AIDL refuses rather than write chords. The
 error points at the `Spline`. Choose the corners with `Fillet(r, at=[...])` away from the
 spline, or let the spline itself turn smoothly there (give it a point at the corner).
-(`Offset`, `Inset`, `Shell` and `Hull` of a Spline are refused at their call, E0108, and a
-cutting layout's kerf on a part with a spline is refused naming the Spline.) The same holds
+(`Hull` of a Spline is refused at its call, E0108; its `Offset`, `Inset` and `Shell`, and a
+cutting layout's kerf on a part with a spline, are followed by circular arcs within 1e-4 mm.) The same holds
 at a corner where an `Ellipse` meets another ellipse or a spline: the error points at the
-`Ellipse` (where it meets a line or an arc the fillet is exact; its `Offset`, `Inset` and
-`Shell` are within 1e-4 mm, its `Hull` exact; a kerf on it is refused).
+`Ellipse` (where it meets a line or an arc the fillet is exact; its `Offset`, `Inset`,
+`Shell` and kerf are within 1e-4 mm, its `Hull` exact).
 
     solid pick {
         body = Spline(points=[(0, -30), (20, 0), (0, 20), (-20, 0)], closed=true)

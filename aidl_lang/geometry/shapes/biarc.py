@@ -1,5 +1,6 @@
-"""An elliptic arc as tangent-continuous circular arcs (biarcs) within a stated bound: the
-ellipse an ``Offset`` or ``Shell`` grows or shrinks.
+"""An elliptic arc or a spline piece as tangent-continuous circular arcs (biarcs) within a
+stated bound: the curve an ``Offset`` or ``Shell`` grows or shrinks, or a kerf offsets
+(:func:`as_arcs`).
 
 The offset of an ellipse is no ellipse (a curve of degree 8 that no output format holds),
 so ``Offset(ellipse, d)`` and ``Shell(ellipse, t)`` offset, exactly, a chain of circular
@@ -188,20 +189,3 @@ def as_arcs(lp, keep=frozenset(), tol: float = BIARC_TOL) -> tuple:
             kept.update(range(len(segs), len(segs) + len(new)))
         segs += new
     return Loop(segs), frozenset(kept)
-
-
-def without_ellipses(loops: list, tol: float = BIARC_TOL) -> tuple[list, bool]:
-    """``loops`` (:class:`~.curves.Loop`) with every elliptic arc replaced by its
-    :func:`biarcs`; and whether any was."""
-    from .curves import Loop
-    out, any_ = [], False
-    for lp in loops:
-        if not any(isinstance(g, EllipticArc) for g in lp.segments):
-            out.append(lp)
-            continue
-        any_ = True
-        segs: list = []
-        for g in lp.segments:
-            segs += biarcs(g, tol) if isinstance(g, EllipticArc) else [g]
-        out.append(Loop(segs))
-    return out, any_

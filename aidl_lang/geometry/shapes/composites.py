@@ -19,11 +19,10 @@ def _source(v, what: str) -> Geometry:
         raise PrimitiveError(f"{what} takes shapes (a Circle, Rectangle, Polygon, Slot, ...), "
                              f"got {type_name(v)}")
     g = v.geom
-    if g.kind in ("Spline", "Bezier"):
-        raise PrimitiveError(f"{what} of a {g.kind} cannot be exact: the offset (or hull) of a "
-                             f"cubic spline is not a cubic spline, and outputs here are exact "
-                             f"or refused; draw the grown outline as a second Spline through "
-                             f"offset points, or offset a Polygon or arcs instead")
+    if g.kind in ("Spline", "Bezier") and what == "Hull":
+        raise PrimitiveError(f"{what} of a {g.kind} cannot be exact: the hull of a cubic "
+                             f"spline is no cubic spline, and outputs here are exact or "
+                             f"refused; hull a Polygon through its points, or arcs, instead")
     if not g.closed or g.kind == "Text":
         raise PrimitiveError(f"{what} takes closed shapes (a Circle, Rectangle, Polygon, "
                              f"Slot, ...), not a {g.kind}")

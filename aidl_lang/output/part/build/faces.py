@@ -18,7 +18,7 @@ from ....geometry.shapes.ellipse import ellipse
 from ....geometry.core.model import Geometry, Structure
 from ....geometry.derived.hull import hull_loop
 from ....geometry.derived.offset import offset_pieces
-from ....geometry.shapes.biarc import without_ellipses
+from ....geometry.shapes.biarc import as_arcs
 from ....geometry.shapes.composites import region_of
 from .outlines import (_arc_through, _band, _polygon, arc_slot_outline, rounded_outline,
                        rounded_outline_radii, sector_outline, slot_outline, spline_band)
@@ -382,9 +382,9 @@ class Faces:
     def _offset(self, base, loops, d: float, join: str) -> mf.CrossSection:
         if d == 0 or base.is_empty():
             return base
-        # an ellipse is offset as its biarcs (the offset of an ellipse is no ellipse):
-        # within geometry.biarc.BIARC_TOL of the true offset curve
-        loops = without_ellipses(loops)[0]
+        # an ellipse or a spline is offset as its biarcs (the offset of an ellipse is no
+        # ellipse, of a cubic no cubic): within geometry.biarc.BIARC_TOL of the true offset
+        loops = [as_arcs(lp)[0] for lp in loops]
         pieces = [self.exact.face(lp) for lp in offset_pieces(loops, d, join)]
         band = self.union(pieces)
         return base + band if d > 0 else base - band
