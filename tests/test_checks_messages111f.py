@@ -494,3 +494,28 @@ def test_a_line_ending_in_an_operator_goes_on():
     assert format_source(src) == src
     bad = aidl_lang.compile(source=src.replace("60 mm, ", "61 mm, "))
     assert any("(the plate)" in d.message for d in bad.errors)
+
+
+def test_place_starts_from_the_parts_frame_not_its_place_on_the_sheet():
+    """Run ae's pill organiser: the model put the lid's Place from where the sheet's layout
+    had moved it, and the lid landed beside the tray. `aidl docs Place` now says Place starts
+    from the part's own frame; here is that law: `RightOf(lid, tray, gap=10)` moves the lid
+    on the sheet and not in 3D."""
+    import numpy as np
+    from aidl_lang.library.reference import lookup_text
+    assert "the sheet's layout does not move the part in" in " ".join(lookup_text("Place")[0].split())
+    src = """thickness 3 mm
+assembly box {
+    solid tray { r = Rectangle(center=(0, 0), width=60, height=40) }
+    solid lid { r = Rectangle(center=(0, 0), width=60, height=40) }
+    RightOf(lid, tray, gap=10)
+    Place(lid, position=(0, 0, 20))
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok
+    d = r.output.drawing
+    name = next(n for n in d.placement if n.endswith("lid"))
+    M = d.placement[name]
+    sheet_centre = np.array([70.0, 0.0, 0.0, 1.0])          # where the lid lies on the sheet
+    assert np.allclose((M @ sheet_centre)[:3], (0.0, 0.0, 20.0), atol=1e-9)

@@ -150,6 +150,11 @@ DETAILS: dict[str, str] = {
             "angle 2h, and its box is the rounded outline's. A radius whose rounding would "
             "run past the notches is E0108 (it says the bound). Members "
             "outer_radius, inner_radius, tip_radius; points, edges, center of the sharp star.",
+    "Place": "p is the point as written in the part's own frame: a relation that moves the "
+             "part on the flat sheet (`RightOf(lid, tray, gap=10)`, `Above`) moves its frame, "
+             "and Place starts from the frame, so the sheet's layout does not move the part "
+             "in 3D; a shape drawn about (0, 0) in the part lands about `position`. A part "
+             "with no Place stands in 3D where it lies on the sheet.",
     "Hull": "`.center` is the center of the hull's bounding box (as `.bb.center`), a point "
             "that follows the shapes: `Circle(center=grip.center, radius=3)` centers a hole on "
             "it. The hull of circles is their outer tangent lines and arcs: a larger circle "
