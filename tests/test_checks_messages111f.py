@@ -519,3 +519,17 @@ assembly box {
     M = d.placement[name]
     sheet_centre = np.array([70.0, 0.0, 0.0, 1.0])          # where the lid lies on the sheet
     assert np.allclose((M @ sheet_centre)[:3], (0.0, 0.0, 20.0), atol=1e-9)
+
+
+def test_W0505_says_an_engraving_lies_across_the_pieces_a_cut_frees():
+    """Run ae's jigsaw: a heart, "10" and "ANNA & TOM" engraved across the 12 pieces its cut
+    lines free were W0505 "runs outside the outline ... 71% off the material", with an
+    AllowOverlap hint that silenced it and left the layout wrong (a cutting layout keeps the
+    engraving with the first piece). The warning now says what happens and offers no
+    AllowOverlap."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111ae/run/08_jigsaw_puzzle.first_valid.aidl"))
+    w = _w(r, "W0505")
+    assert len(w) == 3
+    assert all("of the pieces that the through-cuts free from `anniversary_puzzle.puzzle`"
+               in d.message and "AllowOverlap" not in d.hint for d in w)
+    assert [int(d.message.split("lies across ")[1].split()[0]) for d in w] == [4, 2, 4]

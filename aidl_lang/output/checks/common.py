@@ -407,3 +407,22 @@ def part_min_wall(d: Drawing, part, given: float | None = None) -> float:
     own = getattr(d, "min_wall", None) or {}
     name = getattr(part, "path", None)
     return own.get(name, MIN_WALL) if name is not None else MIN_WALL
+
+
+def freed_share(d, part, off: np.ndarray, tol: float) -> int:
+    """How many of the pieces that the through-cuts of ``part`` free (the parts named
+    ``PATH.pieceK``) the points ``off`` (N x 2, mm: an engraving's points off ``part``'s
+    material) lie on, each within ``tol``; 0 unless every point lies on one of them (run ae's
+    jigsaw: a heart and two names across the 12 pieces of a puzzle)."""
+    pre = part.path + ".piece"
+    pieces = [p.shape for p in d.parts if p.name.startswith(pre) and not p.shape.is_empty()]
+    if not pieces or not len(off):
+        return 0
+    hit = np.zeros(len(off), dtype=bool)
+    used = 0
+    for shp in pieces:
+        grown = shp.offset(tol, mf.JoinType.Round, 2.0, 16)
+        on = _inside(off, _edges([np.asarray(q, dtype=float) for q in grown.to_polygons()]))
+        used += bool(on.any())
+        hit |= on
+    return used if hit.all() else 0

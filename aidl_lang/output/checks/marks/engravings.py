@@ -18,7 +18,7 @@ import numpy as np
 from ....base.diagnostics import DiagnosticSink
 from ....geometry.core.model import Structure
 from ...part.build.booleans import Drawing
-from ..common import _edges, _inside, _part_of, _pct, _signed
+from ..common import _edges, _inside, _part_of, _pct, _signed, freed_share
 from .segments import _crosses, _edge_arrays, _exact_circle_gaps, _pair_gap
 
 ENGRAVE_TOL = 0.05       # mm: engraving this close to an edge still counts as on the material
@@ -255,6 +255,16 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
                 sink.warning("W0505", f"engraving `{_copy_label(g)}` runs {where} of "
                              f"`{part.path}` ({said[0]})", g.span, hint=said[1])
                 continue
+        n = freed_share(d, part, pts[~inside], ENGRAVE_TOL) if d.split else 0
+        if n:                   # on the pieces a cut frees: right as drawn, not laid out
+            sink.warning("W0505", f"engraving `{g.label}` lies across "
+                         f"{n + int(inside.any())} of the pieces that the through-cuts free "
+                         f"from `{part.path}`: engraved as drawn when the sheet is cut as "
+                         "drawn, but a cutting layout (`--layout`) lays each piece out on its "
+                         f"own and keeps it with `{part.path}`",
+                         g.span, hint="cut the sheet as drawn (without `--layout`), or keep "
+                         "each engraving within one piece")
+            continue
         off = float((~inside).sum())
         # a letter's stroke over a screw hole is under 1% of a long text's samples: "0%" read
         # as "nothing is off" (issue 84's door sign), so a small share is said as such
