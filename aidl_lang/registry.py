@@ -751,6 +751,7 @@ FUNCTIONS: dict[str, tuple[int, int, str]] = {
     "asin": (1, 1, "arc sine, an angle"), "acos": (1, 1, "arc cosine, an angle"),
     "atan": (1, 1, "arc tangent, an angle"), "atan2": (2, 2, "atan2(y, x), an angle"),
     "sqrt": (1, 1, "square root"), "abs": (1, 1, "absolute value"),
+    "exp": (1, 1, "e to a plain number"), "log": (1, 1, "natural logarithm of a positive number"),
     "min": (1, 64, "smallest value (or of one list)"), "max": (1, 64, "largest value"),
     "norm": (1, 1, "length of a vector/point (x, y)"), "square": (1, 1, "x * x"),
     "len": (1, 1, "number of items of a list or string"),

@@ -533,3 +533,28 @@ def test_W0505_says_an_engraving_lies_across_the_pieces_a_cut_frees():
     assert all("of the pieces that the through-cuts free from `anniversary_puzzle.puzzle`"
                in d.message and "AllowOverlap" not in d.hint for d in w)
     assert [int(d.message.split("lies across ")[1].split()[0]) for d in w] == [4, 2, 4]
+
+
+def test_exp_and_log_and_an_exponent_with_a_unit():
+    """Run ah's Galton board wrote a bell curve with `e = 2.718281828` and `e ** (-(x ** 2) /
+    (2 * sigma ** 2))` where sigma was a length: E0108 "an exponent must be a plain number"
+    naming neither the unit nor the way out. `exp` and `log` now exist (plain numbers), and
+    the message says what the exponent is and how its units cancel."""
+    src = """solid g {
+    sigma = 12 mm
+    pts = [(x * 1 mm, 40 mm * exp(-(x * 1 mm / sigma) ** 2 / 2)) for x in range(-30, 31, 5)]
+    p = Polygon(pts + [(30, -5), (-30, -5)])
+    assert abs(log(exp(2)) - 2) < 1e-9
+    assert p.bb.top == 40 mm
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [(d.code, d.message) for d in r.errors]
+    bad = aidl_lang.compile(source=src.replace("exp(-(x * 1 mm / sigma) ** 2 / 2)",
+                                               "2.718 ** (-(x * 1 mm) ** 2 / (2 * sigma))"))
+    (e,) = bad.errors
+    assert e.code == "E0108" and "this one is a length" in e.message and "exp(" in e.hint
+    unit = aidl_lang.compile(source=src.replace("exp(-(x * 1 mm / sigma) ** 2 / 2)",
+                                                "exp(-(x * 1 mm) / 2)"))
+    assert any(d.code == "E0109" and "`exp` takes a plain number" in d.message
+               for d in unit.errors)

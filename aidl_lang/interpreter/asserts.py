@@ -154,7 +154,7 @@ def judge_known(groups: list) -> tuple:
                 if (l == r) != (op == "=="):
                     wrong.append(side)
             elif _const(l) and _const(r):
-                if not holds(op, _value(l), _value(r)):
+                if not holds(op, _value(l), _value(r), "right"):
                     wrong.append((op, _value(l), _value(r), dim))
             else:
                 later.append(side)

@@ -831,6 +831,13 @@ class Calls:
             k = rad_power(q[0])                 # sqrt(pi * pi): radians
             return radians_of(Q(func("sqrt", q[0].expr), (d[0] // 2, d[1] // 2), q[0].owners),
                               k // 2 if k % 2 == 0 else 0)
+        if nm in ("exp", "log"):        # run ah's Galton board: a bell curve
+            if q[0].dim != NUM:
+                raise EvalError("E0109", f"`{nm}` takes a plain number, not {_a(dim_name(q[0].dim))}", sp,
+                                hint="divide lengths by lengths: `exp(-(x / sigma) ** 2 / 2)`")
+            if nm == "log" and (q[0].const() if q[0].const() is not None else 1) <= 0:
+                raise EvalError("E0112", f"`log` of {_fmt_num(q[0].const())}: not above 0", sp)
+            return Q(func(nm, q[0].expr), NUM, q[0].owners)
         if nm == "abs":
             return radians_of(Q(func("abs", q[0].expr), q[0].dim, q[0].owners), rad_power(q[0]))
         if nm == "square":
@@ -865,12 +872,10 @@ class Calls:
                             hint='write `mirror([(0, -20), (10, -10), (0, 20)], about="y")`')
         P = [self._to_point(v, sp) for v in pts]
         if isinstance(about, str) and about.lower() in ("y", "x"):
-            if about.lower() == "y":
-                def refl(p):
-                    return PV(p.x * -1.0, p.y, None, p.owners)
-            else:
-                def refl(p):
-                    return PV(p.x, p.y * -1.0, None, p.owners)
+            sx, sy = (-1.0, 1.0) if about.lower() == "y" else (1.0, -1.0)
+
+            def refl(p):
+                return PV(p.x * sx, p.y * sy, None, p.owners)
         elif isinstance(about, GeomRef) and about.geom.kind in ("Line", "Slot"):
             s_, e_ = (geom_member(about.geom, n, self.struct) for n in ("start", "end"))
             ax, ay = self.value_of(s_.x), self.value_of(s_.y)
@@ -944,8 +949,6 @@ class Calls:
         if abs(c - round(c)) > 1e-9:
             raise EvalError("E0108", f"range() needs whole numbers, got {_fmt_num(c)}", sp)
         return int(round(c))
-
-    # ------------------------------------------------------------------ expressions
 
     # ------------------------------------------------------------------ magnitudes
     def _check_magnitudes(self, v, span, arg: str) -> None:

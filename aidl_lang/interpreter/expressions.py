@@ -532,7 +532,13 @@ class Expressions:
         if op == "**":
             cb = r.const()
             if cb is None or r.dim != NUM:
-                raise EvalError("E0108", "an exponent must be a plain number known before solving", e.right.span)
+                why = (f"; this one is {_a(dim_name(r.dim))}" if r.dim != NUM else
+                       "; this one is solved" if cb is None else "")
+                raise EvalError("E0108", "an exponent must be a plain number known before "
+                                f"solving{why}", e.right.span,
+                                hint="divide its lengths by lengths so the units cancel "
+                                     "(`(x / sigma) ** 2`, `exp(-(x / sigma) ** 2 / 2)`)"
+                                if r.dim != NUM else None)
             if l.dim != NUM and abs(cb - round(cb)) > 1e-12:
                 raise EvalError("E0109", "a length can only be raised to a whole power", e.span)
             k = int(round(cb)) if l.dim != NUM else 1
