@@ -558,3 +558,20 @@ def test_exp_and_log_and_an_exponent_with_a_unit():
                                                 "exp(-(x * 1 mm) / 2)"))
     assert any(d.code == "E0109" and "`exp` takes a plain number" in d.message
                for d in unit.errors)
+
+
+def test_a_structure_that_hides_a_constant_is_said():
+    """Run ag's donut wall: a constant `foot_l = 60 mm` and a `solid foot_l` whose Rectangle
+    read `width=foot_l`: E0108 "must be a length, got solid structure", the cause unsaid. The
+    hint now names the structure that hides the value, and the fix."""
+    src = """foot_l = 60 mm
+assembly wall {
+    solid board { b = Rectangle(center=(0, 0), width=400, height=600) }
+    solid foot_l {
+        r = Rectangle(center=(0, -350), width=foot_l, height=20)
+    }
+}
+"""
+    (e,) = aidl_lang.compile(source=src).errors
+    assert e.code == "E0108" and "`foot_l` here is the solid `wall.foot_l` (line 4), which " \\
+        "hides the outer `foot_l`" in e.hint

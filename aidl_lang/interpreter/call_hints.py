@@ -43,3 +43,23 @@ def _list_hint(cname: str, key: str, node, sink) -> str | None:
                 "structure and align that")
     return (f"a list has no box of its own: relate each of them, or draw them in one "
             f"structure and relate that (`{cname}` takes a structure or a shape as `{key}`)")
+
+
+def shadowed(interp, v, span) -> str | None:
+    """The hint of an argument that names a structure where a value was meant, because a
+    structure of that name hides a constant of an outer scope (run ag's donut wall: `foot_l
+    = 60 mm` at the top, `solid foot_l { ... Rectangle(..., width=foot_l) }`: "must be a
+    length, got solid structure"): the two definitions and the fix; else None."""
+    from ..geometry.core.values import StructRef
+    from .common import _src
+    name = _src(interp.sink, span)
+    if type(v) is not StructRef or not name.isidentifier():
+        return None
+    _, at = interp.scope.lookup(name)
+    outer = at.parent if at is not None else None
+    hidden, _ = outer.lookup(name) if outer is not None else (None, None)
+    if hidden is None or isinstance(hidden, StructRef):
+        return None
+    line = v.struct.span.line if v.struct.span is not None else "?"
+    return (f"`{name}` here is the {v.struct.kind} `{v.struct.path}` (line {line}), which hides "
+            f"the outer `{name}`: give the structure or the value another name")

@@ -21,7 +21,7 @@ from ..geometry.core.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef
 from ..base.limits import MAX_EXTENT
 from ..registry import (ENTRIES, FUNCTIONS, POINT_ALIGNS, accepted_args, bind_variant, canonical,
                         canonical_args, lookup)
-from .call_hints import _center_hint, _list_hint
+from .call_hints import _center_hint, _list_hint, shadowed
 from .cut_into import cut_into
 from .functions import call_function
 from .common import (_defer_boxes, said_shrunk, DEG, _a, _fmt_num, show, ANGLE_TWICE)
@@ -608,7 +608,7 @@ class Calls:
         if typ in ("length", "angle", "number"):
             if not isinstance(v, Q):
                 raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be {_a(typ)}, got {type_name(v)}", span,
-                                hint=lookup(fname).signature() if lookup(fname) is not None
+                                hint=shadowed(self, v, span) or lookup(fname).signature() if lookup(fname) is not None
                                 else FUNCTIONS[fname][2].split(":")[0] if fname in FUNCTIONS
                                 else None)
             want = _DIMS[typ]
