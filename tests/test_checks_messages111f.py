@@ -573,5 +573,6 @@ assembly wall {
 }
 """
     (e,) = aidl_lang.compile(source=src).errors
-    assert e.code == "E0108" and "`foot_l` here is the solid `wall.foot_l` (line 4), which " \\
-        "hides the outer `foot_l`" in e.hint
+    assert e.code == "E0108"
+    assert "`foot_l` here is the solid `wall.foot_l` (line 4), which hides the outer `foot_l`" \
+        in e.hint
