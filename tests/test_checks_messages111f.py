@@ -576,3 +576,13 @@ assembly wall {
     assert e.code == "E0108"
     assert "`foot_l` here is the solid `wall.foot_l` (line 4), which hides the outer `foot_l`" \
         in e.hint
+
+
+def test_W0508_of_two_crossing_holes_leads_with_the_cross():
+    """Run ag's earring tree: two tab_and_slot mortises crossing as one plus-shaped opening
+    (a halved trunk) were W0508 with "move hole `mortise_b` 3.67 mm further" first, which
+    breaks the joint. Holes that cross lead with the one opening and its AllowOverlap."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111ag/run/08_earring_tree.first_valid.aidl"))
+    (w,) = _w(r, "W0508")
+    assert w.hint.startswith("the two cross (each runs past the other on both sides)")
+    assert w.hint.index("AllowOverlap(mortise_a, mortise_b)") < w.hint.index("3.67 mm further")

@@ -592,7 +592,12 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
         # most of one inside the other, both placed by relations (no call to edit): one
         # opening looks meant, and the hint leads with it (no machine fix either way)
         share = _share_inside(a, i, j, common) if fix is None else None
-        if share is not None:
+        if fix is None and share is None and a.cuts and _cross(a.cuts[i - 1], a.cuts[j - 1]):
+            # each runs past the other on both sides: a cross-shaped opening (run ag's earring
+            # tree: two mortises crossing for a halved trunk; "move it 3.67 mm" broke it)
+            hint = (f"the two cross (each runs past the other on both sides), as one "
+                    f"cross-shaped opening: if it is meant, {meant}; if two are meant, {move}")
+        elif share is not None:
             smaller, other = share[1], (second if share[1] == first else first)
             hint = (f"one opening looks meant ({share[0]:.0%} of {smaller} lies inside "
                     f"{other}): {meant}; if two are meant, {move}, or shrink one of them so "
@@ -938,6 +943,16 @@ def _check_stray_shapes(d: Drawing, cut, part, roots, sink: DiagnosticSink) -> N
                      f"solid `{s.path}` (from ({x0:.2f}, {y0:.2f}) to ({x1:.2f}, {y1:.2f}))",
                      span, hint=f"move it onto `{s.path}`: check its coordinates against the "
                                 f"solid's extent (a sign or a unit off?){turn}")
+
+
+def _cross(c1, c2) -> bool:
+    """Whether the cut regions of two holes cross: each box runs past the other's on both
+    sides along one axis and lies within it along the other."""
+    if c1.region is None or c2.region is None:
+        return False
+    (a0, b0, a1, b1), (c0, d0, c1_, d1) = c1.region.bounds(), c2.region.bounds()
+    return ((a0 < c0 and a1 > c1_ and d0 < b0 and d1 > b1)
+            or (c0 < a0 and c1_ > a1 and b0 < d0 and b1 > d1))
 
 
 def _over_opening(d: Drawing, hole_shape, whole: float, part, roots) -> bool:
