@@ -37,9 +37,9 @@ syntax keyword aidlCadConstraint Tangent ToTheLeftOf ToTheRightOf Translate Tran
 syntax keyword aidlCadConstraint VerticalDistance VerticallyCentered Wider Within
 syntax match aidlCadConstraint /\<Contains\>/
 syntax keyword aidlCadFunction abs acos asin atan atan2 ceil cos degrees
-syntax keyword aidlCadFunction distance floor len max min mirror norm polar
-syntax keyword aidlCadFunction radians range round sin sqrt square str sum
-syntax keyword aidlCadFunction tan
+syntax keyword aidlCadFunction distance exp floor len log max min mirror
+syntax keyword aidlCadFunction norm polar radians range round sin sqrt square
+syntax keyword aidlCadFunction str sum tan
 
 syntax match aidlCadNumber /\v<\d+\.?\d*([eE][-+]?\d+)?>|\.\d+>/ nextgroup=aidlCadUnit skipwhite
 syntax match aidlCadUnit /\v<(inches|inch|deg|rad|cm|ft|in|mm|m)>|°/ contained

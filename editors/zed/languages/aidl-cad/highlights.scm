@@ -104,9 +104,9 @@
 ((call
   function: (identifier) @function.builtin)
   (#any-of? @function.builtin
-    "abs" "acos" "asin" "atan" "atan2" "ceil" "cos" "degrees" "distance" "floor" "len" "max"
-    "min" "mirror" "norm" "polar" "radians" "range" "round" "sin" "sqrt" "square" "str"
-    "sum" "tan"))
+    "abs" "acos" "asin" "atan" "atan2" "ceil" "cos" "degrees" "distance" "exp" "floor" "len"
+    "log" "max" "min" "mirror" "norm" "polar" "radians" "range" "round" "sin" "sqrt"
+    "square" "str" "sum" "tan"))
 
 ; any other name called (entity.name.function.call)
 ((call
@@ -136,9 +136,9 @@
     "Translated" "Trapezoid" "Triangle" "True" "Under" "Underneath" "Vertical"
     "VerticalDistance" "VerticallyCentered" "Wedge" "Wider" "Wire" "Within" "ZigZag" "abs"
     "acos" "asin" "assembly" "atan" "atan2" "ceil" "convex_hull" "cos" "cut" "degrees"
-    "distance" "drawing" "false" "floor" "hole" "len" "max" "min" "mirror" "norm" "pi"
-    "polar" "radians" "range" "round" "self" "sin" "solid" "sqrt" "square" "str" "sum" "tan"
-    "tau" "true"))
+    "distance" "drawing" "exp" "false" "floor" "hole" "len" "log" "max" "min" "mirror"
+    "norm" "pi" "polar" "radians" "range" "round" "self" "sin" "solid" "sqrt" "square" "str"
+    "sum" "tan" "tau" "true"))
 
 ; ---- operators and punctuation
 ["+" "-" "*" "/" "//" "%" "**"] @operator
