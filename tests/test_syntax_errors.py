@@ -195,4 +195,5 @@ def test_line_break_in_an_expression_outside_brackets():
     d = _first_error("solid s {\n    x = 3 +\n    c = Circle((0, 0), x)\n}\n")
     assert (d.span.line, d.span.col) == (2, 12) and d.message.startswith("unexpected newline")
     assert d.hint == ("the statement ended early: an operand is missing before the line break; "
-                      "to go on with an expression on the next line, wrap it in `( )`")
+                      "to go on with an expression on the next line, end this line with its "
+                      "operator (or `,`) and indent the next one deeper, or wrap it in `( )`")
