@@ -586,3 +586,12 @@ def test_W0508_of_two_crossing_holes_leads_with_the_cross():
     (w,) = _w(r, "W0508")
     assert w.hint.startswith("the two cross (each runs past the other on both sides)")
     assert w.hint.index("AllowOverlap(mortise_a, mortise_b)") < w.hint.index("3.67 mm further")
+
+
+def test_W0513_near_a_mark_offers_a_move_before_a_smaller_text():
+    """Run ag's switch plate: a 20 mm name too close to a row of engraved stars, hint "make
+    the text smaller" alone (a size the request gave). A move is offered first."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111ag/drafts/01_switch_finger_plate.attempt1.aidl"))
+    w = [d for d in _w(r, "W0513") if "too close to the engraved" in d.message]
+    assert w and w[0].hint.endswith("move the text or the mark clear of each other, or make "
+                                    "the text smaller")

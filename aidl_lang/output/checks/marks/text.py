@@ -610,8 +610,9 @@ def _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs, M
                         f"{smaller})")
         elif not any(x == 0.0 for x in fits):      # 0: no smaller size clears the mark
             ways.append("make the text smaller" + (f" ({smaller[2:]})" if smaller else ""))
-        if not ways:
-            ways.append("move the text clear of the mark")
+        if not any(w.startswith("move the text") for w in ways):
+            ways.insert(0, "move the text or the mark clear of each other")   # (run ag: only
+            #                 "make the text smaller", which shrinks a size the request gave)
         sink.warning("W0513", f"{text} is too close to the engraved {what}: the mark {how}"
                      f"{into} (the clearance is {c:.2f} mm, {'a quarter' if c > side else 'an eighth'}"
                      f" of the text size{' for a mark beside it' if c <= side else ''}), so "
