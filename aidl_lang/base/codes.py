@@ -1078,7 +1078,9 @@ by a figure. Nearer is contact: the clearance of a fit (meshing gears' backlash,
 little wider than its tab) is not a gap. The warning names the part, the nearest other part
 and the gap. Move the part by the gap with its `Place`, or lengthen the tab. A gap between two
 parts that one standard-library template places (the gears `gear_train(lift=...)` stands
-above its plate) is the template's design and not reported.
+above its plate) is the template's design and not reported. A part with no `Place` that lies
+more than 5 mm from every other (drawn beside the product on the sheet, never put in it) is a
+note: the parts are cut as drawn either way, and `Place` puts it in the assembled product.
 
     thickness 3 mm
     assembly kit {
