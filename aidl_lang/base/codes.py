@@ -610,7 +610,8 @@ point: a round of radius r in a corner of angle a lies r / sin(a / 2) - r from i
 3 mm in a 15 degree tail, 21.4 mm for 2 mm in a tent stake's 9.8 degree point. The part then
 ends that much short of the point drawn, and an assert on the shape's box (read before the
 rounding) does not see it. The warning names the tip, its angle and how far it went back
-(when more than 5 mm and more than three radii), and the radius that cuts it back 1 mm; to keep
+(when more than 5 mm and more than three radii; a tip of the material, not a window's sharp
+end, whose rounding keeps material), and the radius that cuts it back 1 mm; to keep
 the length, draw the tip round: the `Hull` of the shape and a `Circle` of that radius whose
 edge touches the point.
 

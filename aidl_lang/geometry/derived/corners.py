@@ -631,7 +631,9 @@ def corners(loop, size: float, fillet: bool, only=None, got=None, deep=None):
                     got[i] = 0.0
             continue
         cut[k] = _corner(a, b, turn, size, fillet)
-        if deep is not None and fillet and cut[k] is not None:
+        if deep is not None and fillet and cut[k] is not None and turn > 0:
+            # (a tip of the material: a window's sharp end rounded is material kept, run ai's
+            # hanger)
             arc = cut[k][2]
             back = math.hypot(p[0] - arc.center[0], p[1] - arc.center[1]) - arc.radius
             if back > max(TIP_BACK, 3 * arc.radius):
