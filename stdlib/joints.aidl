@@ -225,7 +225,9 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
 # clearance hole for each screw, centred on the line through (cx, cy) where the
 # tab panel's middle stands. Screws up to `thickness` + 4 x `screw` mm long;
 # `screw=0` leaves them out (a glued or pressed joint); `tabs=1`: one tab, a
-# tenon in its mortise, has no screw (they go between tabs).
+# tenon in its mortise, has no screw (they go between tabs). Of two materials,
+# `thickness` is the other panel's in each half: the slotted panel's for "tab"
+# (how far the tabs stand out), the tab panel's for "slot" (the slot's width).
 # Members: `gap` (within the panel), `overrun` (each gap run 1 mm past the
 # edges: drawn, in no box), `nut`, `slot`, `bolt`.
 # Anchor: (cx, cy) is the middle of the edge (part "slot": of the slots); rotation 0: the edge along x, the panel toward -y.

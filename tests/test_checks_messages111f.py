@@ -613,3 +613,11 @@ def test_W0411_not_for_a_windows_tip():
     material kept). W0411 is for tips of the material (run z2's tail, run k's stake)."""
     r = aidl_lang.compile(path=str(RUNS / "issue111ai/run/02_clothes_hanger.first_valid.aidl"))
     assert not _w(r, "W0411")
+
+
+def test_tab_and_slot_docs_say_which_thickness_each_half_takes():
+    """Run aj's DIN-rail clip (two materials): `thickness` is the mating panel's in the tab
+    half and the tab panel's in the slot half; the docs now say so."""
+    from aidl_lang.library.reference import stdlib_templates
+    doc = " ".join(stdlib_templates()["tab_and_slot"].doc.split())
+    assert "the slotted panel's for \\"tab\\"" in doc and "the tab panel's for \\"slot\\"" in doc
