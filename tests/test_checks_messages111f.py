@@ -620,4 +620,4 @@ def test_tab_and_slot_docs_say_which_thickness_each_half_takes():
     half and the tab panel's in the slot half; the docs now say so."""
     from aidl_lang.library.reference import stdlib_templates
     doc = " ".join(stdlib_templates()["tab_and_slot"].doc.split())
-    assert "the slotted panel's for \\"tab\\"" in doc and "the tab panel's for \\"slot\\"" in doc
+    assert 'the slotted panel\'s for "tab"' in doc and 'the tab panel\'s for "slot"' in doc
