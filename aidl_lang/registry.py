@@ -318,7 +318,7 @@ _DEFS = {
     "Stroke": _p([A("path", "any"), A("width", "length"),
                   A("cap", "string", "round", "\"round\" (the path's Minkowski sum with a "
                     "disc) or \"flat\" (ends cut square)", kw_only=True)],
-                 doc="Band along an open path; cap=\"flat\".",
+                 doc="Band along an open path; round ends, or cap=\"flat\" for square ones.",
                  members=DERIVED_MEMBERS),
     "Hull": _p([A("shapes", "any")],
                [A("shape1", "geometry"), A("shape2", "geometry")]

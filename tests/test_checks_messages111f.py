@@ -621,3 +621,18 @@ def test_tab_and_slot_docs_say_which_thickness_each_half_takes():
     from aidl_lang.library.reference import stdlib_templates
     doc = " ".join(stdlib_templates()["tab_and_slot"].doc.split())
     assert 'the slotted panel\'s for "tab"' in doc and 'the tab panel\'s for "slot"' in doc
+
+
+def test_W0502_not_for_an_overrun_shape_at_the_edge():
+    """Run ak's squeegee hanger: a 1 mm `overrun=true` strip past the shelf's edge (where its
+    slot opens) was W0502 "cuts nothing ... a sign or a unit off?"; it lies past the edge on
+    purpose. An overrun shape at its solid's edge is not warned."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111ak/run/02_squeegee_hanger.first_valid.aidl"))
+    assert not _w(r, "W0502")
+
+
+def test_the_stroke_line_says_its_ends_are_round_by_default():
+    """Run ak: the prompt's Stroke line read `cap="flat"`, the docs "round (the default)"."""
+    from aidl_lang.llm.prompt import system_prompt
+    line = next(t for t in system_prompt().splitlines() if t.startswith("- Stroke("))
+    assert 'round ends, or cap="flat" for square ones' in line

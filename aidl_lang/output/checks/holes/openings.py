@@ -929,6 +929,9 @@ def _check_stray_shapes(d: Drawing, cut, part, roots, sink: DiagnosticSink) -> N
         a, b, c, e = f.bounds()
         if a < x1 - 1e-6 and c > x0 + 1e-6 and b < y1 - 1e-6 and e > y0 + 1e-6:
             continue
+        if g.data.get("overrun") and a <= x1 + OVERRUN_NEAR and c >= x0 - OVERRUN_NEAR \
+                and b <= y1 + OVERRUN_NEAR and e >= y0 - OVERRUN_NEAR:
+            continue            # past the edge on purpose, at it (run ak's squeegee hanger)
         if _over_opening(d, f, _area(f), part, roots):
             continue
         stray.setdefault(g.span, []).append(g)
@@ -943,6 +946,9 @@ def _check_stray_shapes(d: Drawing, cut, part, roots, sink: DiagnosticSink) -> N
                      f"solid `{s.path}` (from ({x0:.2f}, {y0:.2f}) to ({x1:.2f}, {y1:.2f}))",
                      span, hint=f"move it onto `{s.path}`: check its coordinates against the "
                                 f"solid's extent (a sign or a unit off?){turn}")
+
+
+OVERRUN_NEAR = 0.5      # mm: an `overrun=true` shape this near its solid's box is at its edge
 
 
 def _cross(c1, c2) -> bool:
