@@ -636,3 +636,43 @@ def test_the_stroke_line_says_its_ends_are_round_by_default():
     from aidl_lang.llm.prompt import system_prompt
     line = next(t for t in system_prompt().splitlines() if t.startswith("- Stroke("))
     assert 'round ends, or cap="flat" for square ones' in line
+
+
+def test_a_kerf_leaves_out_a_segment_its_neighbours_cover():
+    """Run al's spirograph: `aidl check` said ok, `aidl render` refused the 52-tooth
+    `spur_gear` at `kerf 0.15 mm` ("the arc ... is too short for an offset of 0.075 mm: its
+    neighbours' offsets cover it"). Such a segment is left out and its neighbours' offsets
+    meet where they cross: the exact offset. Every point of the cut path lies 0.075 mm from
+    the drawn outline, +- 1e-9."""
+    import math
+    from aidl_lang.geometry.shapes.curves import Arc, Circle, Line
+    from aidl_lang.output.fabrication.layout import for_cutting
+    r = aidl_lang.compile(path=str(RUNS / "issue111al/run/02_spirograph.first_valid.aidl"))
+    out = r.output
+    cut = for_cutting(out)
+
+    def dist(p, g):
+        if isinstance(g, Line):
+            (x0, y0), (x1, y1) = g.start, g.end
+            dx, dy = x1 - x0, y1 - y0
+            u = max(0.0, min(1.0, ((p[0] - x0) * dx + (p[1] - y0) * dy) / (dx * dx + dy * dy)))
+            return math.hypot(p[0] - x0 - u * dx, p[1] - y0 - u * dy)
+        if isinstance(g, Circle):
+            return abs(math.dist(p, g.center) - g.radius)
+        a = math.atan2(p[1] - g.center[1], p[0] - g.center[0])
+        lo = g.start_angle if g.sweep > 0 else g.start_angle + g.sweep
+        if (a - lo) % (2 * math.pi) <= abs(g.sweep) + 1e-12:
+            return abs(math.dist(p, g.center) - g.radius)
+        return min(math.dist(p, g.start), math.dist(p, g.end))
+
+    def points(g):
+        if isinstance(g, Line):
+            return [g.start, ((g.start[0] + g.end[0]) / 2, (g.start[1] + g.end[1]) / 2)]
+        return [g.at(g.start_angle + g.sweep * i / 4) for i in range(5)] \
+            if isinstance(g, Arc) else []
+    (drawn,) = [p for p in out.parts if p.name.endswith(".big")]
+    (offset,) = [p for p in cut.parts if p.name.endswith(".big")]
+    segs = [g for lp in drawn.loops for g in lp.segments]
+    d = [min(dist(q, g) for g in segs) for lp in offset.loops for s in lp.segments
+         for q in points(s)[::3]]
+    assert len(d) > 500 and max(abs(x - 0.075) for x in d) < 1e-9

@@ -108,6 +108,34 @@ def offset_loop(loop: Loop, d: float, keep=()) -> Loop:
             return Loop(segs) if segs else loop
     if len(segs) == 1 and isinstance(segs[0], Circle):
         return Loop([_right(segs[0], d)])
+    first = None
+    while True:
+        try:
+            return _offset_once(segs, keep, d)
+        except _Eaten as ex:
+            # a segment its neighbours' offsets cover (a gear's short root arc under a
+            # 0.15 mm kerf, run al's spirograph): left out, the neighbours' offsets meet where
+            # they cross, which is the exact offset there (the region grown by d has no point
+            # of that segment's offset on its boundary); compensate's _narrow then checks that
+            # the path keeps d from every drawn curve
+            first = first or ex.error
+            k = ex.k
+            if k in keep or len(segs) <= 3:
+                raise first from None
+            segs = segs[:k] + segs[k + 1:]
+            keep = frozenset(i - (i > k) for i in keep)
+
+
+class _Eaten(Exception):
+    """Segment ``k``'s offset is covered by its neighbours' (``error``: what to say)."""
+
+    def __init__(self, k: int, error: OffsetError):
+        self.k, self.error = k, error
+
+
+def _offset_once(segs: list, keep: frozenset, d: float) -> Loop:
+    """:func:`offset_loop` of the segments ``segs`` (none of no length); raises
+    :class:`_Eaten` at the first segment its neighbours' offsets cover."""
     n = len(segs)
     moved = [s if k in keep else _right(s, d) for k, s in enumerate(segs)]
     # the join before segment k: (end of moved k-1, start of moved k, segments between)
@@ -127,9 +155,9 @@ def offset_loop(loop: Loop, d: float, keep=()) -> Loop:
         t = with_ends(g, start, end) if (start, end) != (g.start, g.end) else g
         if not _forward(segs[k], t, reach):
             x, y = segs[k].start
-            raise OffsetError(f"the {'line' if isinstance(segs[k], Line) else 'arc'} from "
-                              f"({x:g}, {y:g}) is too short for an offset of {d:g} mm: its "
-                              "neighbours' offsets cover it")
+            raise _Eaten(k, OffsetError(
+                f"the {'line' if isinstance(segs[k], Line) else 'arc'} from ({x:g}, {y:g}) is "
+                f"too short for an offset of {d:g} mm: its neighbours' offsets cover it"))
         out.append(t)
     scale = max(max(abs(v) for g in segs for v in g.start), 1.0)
     return Loop(simplify(out, scale))
