@@ -17,8 +17,9 @@ The result is exact, made of the same kinds of segments (:mod:`.curves`):
   (:func:`~.curves.intersect`, nearest the corner);
 * a tangent join (a slot's side and its end) stays a tangent join.
 
-A feature smaller than the offset (a concave arc of radius <= ``d``, a segment eaten by its
-neighbours' offsets) cannot be cut at that kerf: :class:`OffsetError` names it.
+A segment its neighbours' offsets cover (eaten) is left out, and they are joined where they
+cross: the exact offset there.  A concave arc of radius <= ``d`` cannot be cut at that kerf:
+:class:`OffsetError` names it.
 """
 from __future__ import annotations
 
