@@ -119,25 +119,32 @@ def offset_loop(loop: Loop, d: float, keep=()) -> Loop:
             # they cross, which is the exact offset there (the region grown by d has no point
             # of that segment's offset on its boundary); compensate's _narrow then checks that
             # the path keeps d from every drawn curve
+            # (all found in one pass, a neighbour of one dropped kept for the next: a gear's
+            # 52 root arcs cost 108 passes one at a time, 1.4 s of a 2.1 s render)
             first = first or ex.error
-            k = ex.k
-            if k in keep or len(segs) <= 3:
+            drop = set()
+            for k in ex.ks:
+                if (k - 1) % len(segs) not in drop and (k + 1) % len(segs) not in drop:
+                    drop.add(k)
+            if drop & keep or len(segs) - len(drop) < 3:
                 raise first from None
-            segs = segs[:k] + segs[k + 1:]
-            keep = frozenset(i - (i > k) for i in keep)
+            segs = [g for k, g in enumerate(segs) if k not in drop]
+            keep = frozenset(i - sum(k < i for k in drop) for i in keep)
 
 
 class _Eaten(Exception):
-    """Segment ``k``'s offset is covered by its neighbours' (``error``: what to say)."""
+    """The segments ``ks`` have offsets their neighbours' cover (``error``: what to say of
+    the first)."""
 
-    def __init__(self, k: int, error: OffsetError):
-        self.k, self.error = k, error
+    def __init__(self, ks: list, error: OffsetError):
+        self.ks, self.error = ks, error
 
 
 def _offset_once(segs: list, keep: frozenset, d: float) -> Loop:
     """:func:`offset_loop` of the segments ``segs`` (none of no length); raises
-    :class:`_Eaten` at the first segment its neighbours' offsets cover."""
+    :class:`_Eaten` naming the segments its neighbours' offsets cover."""
     n = len(segs)
+    eaten: list = []
     moved = [s if k in keep else _right(s, d) for k, s in enumerate(segs)]
     # the join before segment k: (end of moved k-1, start of moved k, segments between)
     joins = [_join(segs[k - 1], segs[k], moved[k - 1], moved[k], d,
@@ -155,11 +162,14 @@ def _offset_once(segs: list, keep: frozenset, d: float) -> Loop:
             g = Arc(g.center, g.radius, g.start_angle - e, g.sweep + 2 * e)
         t = with_ends(g, start, end) if (start, end) != (g.start, g.end) else g
         if not _forward(segs[k], t, reach):
-            x, y = segs[k].start
-            raise _Eaten(k, OffsetError(
-                f"the {'line' if isinstance(segs[k], Line) else 'arc'} from ({x:g}, {y:g}) is "
-                f"too short for an offset of {d:g} mm: its neighbours' offsets cover it"))
+            eaten.append(k)
+            continue
         out.append(t)
+    if eaten:
+        x, y = segs[eaten[0]].start
+        raise _Eaten(eaten, OffsetError(
+            f"the {'line' if isinstance(segs[eaten[0]], Line) else 'arc'} from ({x:g}, {y:g}) "
+            f"is too short for an offset of {d:g} mm: its neighbours' offsets cover it"))
     scale = max(max(abs(v) for g in segs for v in g.start), 1.0)
     return Loop(simplify(out, scale))
 
