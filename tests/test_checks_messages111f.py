@@ -676,3 +676,12 @@ def test_a_kerf_leaves_out_a_segment_its_neighbours_cover():
     d = [min(dist(q, g) for g in segs) for lp in offset.loops for s in lp.segments
          for q in points(s)[::3]]
     assert len(d) > 500 and max(abs(x - 0.075) for x in d) < 1e-9
+
+
+def test_log_of_0_is_located_and_a_shadowed_function_argument_keeps_its_hint():
+    """`log(0)` is E0112 at the call (no math error), and a function's argument hint (sqrt's)
+    is still given when no structure hides the name."""
+    r = aidl_lang.compile(source="solid s {\n    b = Rectangle(center=(0, 0), width=10 * log(0), "
+                                 "height=5)\n}\n")
+    (e,) = r.errors
+    assert e.code == "E0112" and "`log` of 0" in e.message and e.span.line == 2

@@ -608,9 +608,10 @@ class Calls:
         if typ in ("length", "angle", "number"):
             if not isinstance(v, Q):
                 raise EvalError("E0108", f"argument `{aname}` of `{fname}` must be {_a(typ)}, got {type_name(v)}", span,
-                                hint=shadowed(self, v, span) or lookup(fname).signature() if lookup(fname) is not None
-                                else FUNCTIONS[fname][2].split(":")[0] if fname in FUNCTIONS
-                                else None)
+                                hint=shadowed(self, v, span) or (
+                                    lookup(fname).signature() if lookup(fname) is not None
+                                    else FUNCTIONS[fname][2].split(":")[0] if fname in FUNCTIONS
+                                    else None))
             want = _DIMS[typ]
             if v.dim == want:
                 return v
@@ -835,7 +836,7 @@ class Calls:
             if q[0].dim != NUM:
                 raise EvalError("E0109", f"`{nm}` takes a plain number, not {_a(dim_name(q[0].dim))}", sp,
                                 hint="divide lengths by lengths: `exp(-(x / sigma) ** 2 / 2)`")
-            if nm == "log" and (q[0].const() if q[0].const() is not None else 1) <= 0:
+            if nm == "log" and q[0].const() is not None and q[0].const() <= 0:
                 raise EvalError("E0112", f"`log` of {_fmt_num(q[0].const())}: not above 0", sp)
             return Q(func(nm, q[0].expr), NUM, q[0].owners)
         if nm == "abs":
