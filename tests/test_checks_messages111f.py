@@ -464,11 +464,15 @@ solid ring {
 def test_W0513_measures_text_along_a_curve_by_its_strokes():
     """Run af's resistor colour-code wheel: labels set along circles were W0513 21 times
     ("their boxes overlap by 39.72 mm^2"): a curved text's straight box holds the curve's
-    inside. Text along a curve is judged by how near the two texts' strokes come: one pair
-    left (VIOLET and 7, 1.47 mm apart at 3 mm text), said as strokes."""
+    inside. Text along a curve is judged by how near the two texts' strokes come: none left
+    (the nearest, VIOLET and its digit 7, 1.47 mm apart at 3 mm text, is a single character,
+    which the rule leaves to a word laid out letter by letter, as for straight text). Two
+    numbers round the kumihimo disc at 6 mm, strokes 0.62 mm apart, are warned as strokes."""
     r = aidl_lang.compile(path=str(RUNS / "issue111af/run/02_resistor_code_wheel.first_valid.aidl"))
-    w = _w(r, "W0513")
-    assert len(w) == 1 and "their strokes are 1.47 mm apart" in w[0].message
+    assert not _w(r, "W0513")
+    src = (RUNS / "issue111z3/run/08_kumihimo_disc.first_valid.aidl").read_text()
+    w = _w(aidl_lang.compile(source=src.replace("size=4, valign", "size=6, valign")), "W0513")
+    assert len(w) == 1 and "their strokes are 0.62 mm apart" in w[0].message
 
 
 def test_W0504_of_a_words_letters_does_not_lead_to_E0120():

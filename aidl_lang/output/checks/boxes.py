@@ -19,6 +19,7 @@ from ...geometry.relations.bbox import (SIDES, BBTerm, collect, drawn_box_misses
 from ...geometry.core.expr import Nl, const, evaluate, rebuild
 from ...geometry.core.model import Model, Structure
 from ..part.build.booleans import Drawing
+from .common import _part_of
 
 BOX_TOL = 1e-6        # mm: sides closer than this are the same
 
@@ -61,7 +62,7 @@ def check_final_boxes(sink: DiagnosticSink, model: Model, d: Drawing, calls=None
     x = model.xs()
     moved: dict = {}                # id(structure) -> final minus solved, per side
     solved: dict = {}               # id(structure) -> its solved box, per side
-    parts = {id(p) for p in (getattr(d, "part_of", None) or {}).values()}
+    parts = set((getattr(d, "part_of", None) or {}).values())
     for c in model.constraints:
         if not c.deferred or c.implicit or c.kind == "equation":
             continue                # an equation on box values is taken as written
@@ -69,7 +70,9 @@ def check_final_boxes(sink: DiagnosticSink, model: Model, d: Drawing, calls=None
         read = {id(t.target) for t in terms} & finished.keys()
         if not read:
             continue
-        if c.kind in SPACING and len({_part(t.target, parts) for t in terms} - {None}) > 1:
+        if c.kind in SPACING and len({_part_of(t.target if isinstance(t.target, Structure)
+                                               else t.target.owner, parts)
+                                      for t in terms} - {None}) > 1:
             continue                # separate parts spaced on the sheet (run ab's camp stool:
             #                         `RightOf(leg_b, leg_a, gap=10)`, 10.54 mm apart)
         for k in read:
@@ -234,14 +237,6 @@ def _at_final(e, x, exclude: set, moved: dict):
 # out on the drawing, where a fillet's half millimetre changes nothing that is cut
 SPACING = frozenset({"LeftOf", "RightOf", "Above", "Below", "Gap"})
 
-
-def _part(target, parts: set):
-    """The id of the part (a structure of ``parts``) that holds ``target`` (a structure or a
-    shape), or None."""
-    s = target if isinstance(target, Structure) else getattr(target, "owner", None)
-    while s is not None and id(s) not in parts:
-        s = s.parent
-    return None if s is None else id(s)
 
 
 def _warn(sink, c, terms, finished, moved, solved, calls) -> None:

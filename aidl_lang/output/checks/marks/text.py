@@ -137,7 +137,8 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
             # wheel: 21 false alarms): how near their strokes come says it
             near = TEXT_GAP * min(sizes[i], sizes[j])
             gap = stroke_gap(strokes[i], strokes[j], bb[i], bb[j], near)
-            if gap < near and a.span is not None and b not in said:
+            word = min(len(str(g.data.get("text", "")).strip()) for g in (a, b)) > 1
+            if gap < near and (word or gap <= 0) and a.span is not None and b not in said:
                 said.add(b)
                 close.setdefault((a.span, b.span), []).append((gap, near, a, b, "strokes"))
             continue
