@@ -6,7 +6,7 @@
 * ``W0518`` a part that touches no other (a tab short of its slot: the gap)."""
 from __future__ import annotations
 
-from ...base.diagnostics import DiagnosticSink, Label
+from ...base.diagnostics import Diagnostic, DiagnosticSink, Label
 from ..part.build.booleans import Drawing
 
 # mm: a part with no Place farther than this from every other part lies away from the product
@@ -71,7 +71,6 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
         if unplaced and g.gap > AWAY:   # a note: a part never placed, lying away from the
             # product (runs z7, ai: "touches no other part" read as a defect of the cut parts);
             # one just short of another (a base 0.25 mm under its wall) stays a warning
-            from ...base.diagnostics import Diagnostic
             sink.add(Diagnostic(
                 "W0518", f"assembled, part `{g.part}` has no `Place` and touches no other part "
                 f"(the nearest, `{g.nearest}`, is {g.gap:.3g} mm away): it lies flat where it "

@@ -204,16 +204,14 @@ def _report_enclosed(d: Drawing, s: Structure, P, area: float, region, sink) -> 
     refs = list(dict.fromkeys(_ref(g, owner) for _, g, _ in faces))
     stmt = f"AllowOverlap({', '.join(refs)})" if "self" not in refs \
         and all(_NAMEABLE.match(r) for r in refs) else None
-    say = (f"say so with `{stmt}` in `{owner.path}` (the suggested fix: the part stays as it "
-           "is, cut with this opening, and the statement names the shapes, so it holds "
-           "whatever the params make of them)" if stmt else
+    narrow = min(w, h) < NARROW_WINDOW    # (run aa's cake topper: a star's tips on a rail)
+    say = (f"say so with `{stmt}` in `{owner.path}` ({'' if narrow else 'the suggested fix: '}"
+           "the part stays as it is, cut with this opening, and the statement names the "
+           "shapes, so it holds whatever the params make of them)" if stmt else
            f"name the shapes around it and write `AllowOverlap(` them `)` in `{owner.path}` "
            "(the part stays as it is)")
     fill = ("fill it: make the shapes around it overlap across it (or move them apart so "
             "that it opens onto the edge), and the opening is gone")
-    narrow = min(w, h) < NARROW_WINDOW
-    if narrow:                  # run aa's cake topper: a star's two lower tips on a rail
-        say = say.replace(" (the suggested fix: ", " (")
     sink.warning("W0515", f"an opening of {w:.2f} x {h:.2f} mm ({area:.2f} mm^2) near "
                  f"({cx:.1f}, {cy:.1f}) is cut through `{owner.path}`"
                  + (" around an island of material inside it" if island else "")
