@@ -418,13 +418,14 @@ _DEFS = {
                   "whichever side each is on.", A("gap", "length"), A("axis", "string", "x")),
     "Inside": _boxes("a's bounding box lies within b's, at least margin in.",
                      A("margin", "length", 0.0)),
-    "CenterInside": _boxes("a is centered in b: their bounding-box centers coincide."),
+    "CenterInside": _boxes("a is centered in b: their bounding-box centers coincide (a Star or "
+                            "RegularPolygon: its own center)."),
     "Taller": _boxes("a.bb.height >= b.bb.height."),
     "Wider": _boxes("a.bb.width >= b.bb.width."),
     "AlignCenterX": _boxes("Same horizontal center: a.bb.center_x == b.bb.center_x "
-                           "(a point: its x)."),
+                           "(a point: its x; a Star or RegularPolygon: its center's)."),
     "AlignCenterY": _boxes("Same vertical center: a.bb.center_y == b.bb.center_y "
-                           "(a point: its y)."),
+                           "(a point: its y; a Star or RegularPolygon: its center's)."),
     "AlignLeft": _boxes("a.bb.left == b.bb.left (a point: its x)."),
     "AlignRight": _boxes("a.bb.right == b.bb.right (a point: its x)."),
     "AlignTop": _boxes("a.bb.top == b.bb.top (a point: its y)."),

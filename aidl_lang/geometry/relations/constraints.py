@@ -514,7 +514,15 @@ def gap(ctx, a, b, gap, axis="x", **_):
     return [Equation(start - end - gap.expr)]
 
 
+# shapes whose own center is not their box's (a 5-point star's box centre lies 0.095 x its
+# outer radius above its center): a centring relation reads the center, as a maker means it
+_OWN_CENTER = ("Star", "RegularPolygon")
+
+
 def _center(ctx, v, axis, name):
+    if type(v) is GeomRef and v.geom.kind in _OWN_CENTER:
+        c = member(v.geom, "center", ctx.struct)
+        return c.x if axis == "x" else c.y
     lo, hi = ("left", "right") if axis == "x" else ("bottom", "top")
     return mul(add(_bb(ctx, v, lo, name), _bb(ctx, v, hi, name)), 0.5)
 

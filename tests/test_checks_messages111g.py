@@ -1,0 +1,67 @@
+"""Issue 111's model runs am-ap (round eleven): what the final tree of round ten left."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+import aidl_lang
+
+RUNS = Path(__file__).resolve().parent.parent / "data" / "model_runs"
+
+
+def _errors(r):
+    return [d for d in r.diagnostics if d.code.startswith("E")]
+
+
+def _box_center(r, name):
+    b = r.value(name + ".bbox").value
+    return ((b[0] + b[2]) / 2, (b[1] + b[3]) / 2)
+
+
+def test_center_inside_a_star_centres_on_the_stars_center():
+    """Run am's straw toppers: `CenterInside(letter, star)` put each letter 3.3 mm above the
+    centre of its 5-point star (its box centre, 0.095 x the outer radius up), almost onto the
+    upper straw slit, and nothing said so. A centring relation now reads a Star's (and a
+    RegularPolygon's) own center, as the maker meant it."""
+    src = (RUNS / "issue111am/run/06_straw_toppers.first_valid.aidl").read_text()
+    r = aidl_lang.compile(source=src)
+    assert r.ok and not _errors(r)
+    for i in range(5):
+        c = r.value(f"toppers.s[{i}].star.center").value
+        assert _box_center(r, f"toppers.s[{i}].letter") == pytest.approx(tuple(c), abs=1e-6)
+    # the star's box centre is 35 x (1 - cos 36 deg) / 2 = 3.34 mm above its center (the
+    # rounded tips a little less): what the letter followed before
+    b = _box_center(r, "toppers.s[0]")       # the solid: the star alone
+    c = r.value("toppers.s[0].star.center").value
+    assert 3.0 < b[1] - c[1] < 3.4
+
+
+@pytest.mark.parametrize("rel,axis", [("AlignCenterX", 0), ("AlignCenterY", 1),
+                                      ("CenterInside", None)])
+def test_each_centring_relation_reads_a_pentagons_center_either_side(rel, axis):
+    src = f"""solid plate {{
+    body = RegularPolygon(center=(0, 0), sides=5, radius=30, rotation=20 deg)
+    Fixed(body)
+    hole h {{ c = Circle(center=(3, 4), diameter=6) }}
+    {rel}(h, body)
+}}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok and not _errors(r), [d.message for d in r.diagnostics]
+    got = r.value("plate.h.c.center").value
+    want = (3.0, 4.0) if axis is not None else (0.0, 0.0)
+    if axis is not None:
+        want = tuple(0.0 if k == axis else want[k] for k in (0, 1))
+    assert tuple(got) == pytest.approx(want, abs=1e-9)
+    # and a pentagon placed by its centre on a circle's: concentric (the first-named moves)
+    src2 = """solid badge {
+    ring = Circle(center=(0, 0), radius=40)
+    Fixed(ring)
+    hole p { g = RegularPolygon(center=(7, 9), sides=5, radius=12) }
+    CenterInside(p.g, ring)
+}
+"""
+    r2 = aidl_lang.compile(source=src2)
+    assert r2.ok and not _errors(r2)
+    assert tuple(r2.value("badge.p.g.center").value) == pytest.approx((0.0, 0.0), abs=1e-9)
