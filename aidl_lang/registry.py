@@ -872,6 +872,11 @@ ARG_NOTES: dict[tuple[str, str], str] = {
                  "without it the letters are the single-stroke engraving font"
     for n in ("font_family", "family", "typeface", "fontname", "font_name", "face",
               "bold", "italic", "style")}
+# `corner=` of a RoundedRectangle (run am's hose guide: `corner=(40, 20)` was offered
+# `corner_r`, a radius): a point or a radius, said both ways
+ARG_NOTES[("RoundedRectangle", "corner")] = (
+    "a corner point is `bottom_left=(x, y)` (the width and height run from it; or "
+    "`center=`), a corner's rounding `corner_radius=`")
 
 
 def near_args(name: str, names: list[str]) -> list[str]:

@@ -514,6 +514,16 @@ class Checker:
             from .library.reference import entry_units_hint
             note = ARG_NOTES.get((entry.name, bad.name))
             sugg = [] if note else near_args(bad.name, all_names)
+            if isinstance(bad.value, A.TupleLit) and len(bad.value.items) == 2:
+                # a point given: only a point argument can take it (run am's
+                # `RoundedRectangle(corner=(40, 20), ...)` was offered `corner_r`, a radius)
+                pts = list(dict.fromkeys(a.name for v in entry.variants for a in v
+                                         if a.type == "point"))
+                sugg = [c for c in sugg if c in pts]
+                if not sugg and pts:
+                    note = note or ("a point goes to " + " or ".join(f"`{c}`" for c in pts[:3])
+                                    + " (`bottom_left`: the corner the width and height run "
+                                    "from)" * ("bottom_left" in pts))
             self.sink.error("E0105", f"`{n}` has no argument `{bad.name}`", bad.span,
                             hint=(f"did you mean `{sugg[0]}`? " if sugg else "")
                             + (f"{note}; " if note else "") + "forms: "

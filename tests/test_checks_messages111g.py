@@ -65,3 +65,27 @@ def test_each_centring_relation_reads_a_pentagons_center_either_side(rel, axis):
     r2 = aidl_lang.compile(source=src2)
     assert r2.ok and not _errors(r2)
     assert tuple(r2.value("badge.p.g.center").value) == pytest.approx((0.0, 0.0), abs=1e-9)
+
+
+def test_a_point_given_to_an_unknown_argument_is_offered_only_point_arguments():
+    """Run am's hose guide wrote `RoundedRectangle(corner=(40, 20), width=20, height=30)`:
+    E0105's first hint was "did you mean `corner_r`?", a radius. `corner` of a RoundedRectangle
+    says both readings; any other point given to an unknown name is offered the point
+    arguments alone."""
+    src = (RUNS / "issue111am/drafts/04_hose_guide.attempt1.aidl").read_text()
+    r = aidl_lang.compile(source=src)
+    e = [d for d in r.diagnostics if d.code == "E0105"]
+    assert len(e) == 2
+    assert "corner_r`?" not in e[0].hint and "`bottom_left=(x, y)`" in e[0].hint
+    assert "`corner_radius=`" in e[0].hint
+    # the fix it names compiles, the rectangle's corner where the model put it
+    fixed = src.replace("RoundedRectangle(corner=", "RoundedRectangle(bottom_left=")
+    r2 = aidl_lang.compile(source=fixed)
+    assert not [d for d in r2.diagnostics if d.code == "E0105"]
+    r3 = aidl_lang.compile(source="solid a {\n    c = Circle(origin=(1, 2), radius=3)\n}\n")
+    (d,) = [d for d in r3.diagnostics if d.code == "E0105"]
+    assert d.hint.startswith("a point goes to `center`")
+    # a number keeps the spelling's suggestion
+    r4 = aidl_lang.compile(source="solid a {\n    c = Circle(center=(0, 0), radiuss=3)\n}\n")
+    (d,) = [d for d in r4.diagnostics if d.code == "E0105"]
+    assert d.hint.startswith("did you mean `radius`?")
