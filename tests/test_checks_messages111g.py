@@ -89,3 +89,27 @@ def test_a_point_given_to_an_unknown_argument_is_offered_only_point_arguments():
     r4 = aidl_lang.compile(source="solid a {\n    c = Circle(center=(0, 0), radiuss=3)\n}\n")
     (d,) = [d for d in r4.diagnostics if d.code == "E0105"]
     assert d.hint.startswith("did you mean `radius`?")
+
+
+def test_a_window_between_a_rim_and_two_bars_is_named():
+    """Run ao's party glasses: the hinge lug, the brow bar and a rim's circle enclosed a
+    13.9 x 13.9 mm window at each end, and W0515 named only the window between the rims. The
+    window's vertices lie mostly on the rim's arc, so their mean fell inside the circle and
+    the window was taken for the circle's own hole. A point just inside the window (off its
+    longest edge) lies outside the circle: all three windows are named now. Corpus: the
+    W0515 count is the old tree's plus these two (11 in 5 programs, 1,420 compiled)."""
+    src = (RUNS / "issue111ao/run/06_new_year_glasses.first_valid.aidl").read_text()
+    r = aidl_lang.compile(source=src)
+    w = sorted(d.message for d in r.diagnostics if d.code == "W0515")
+    assert len(w) == 3
+    assert sum("13.93 x 13.93 mm (75.06 mm^2)" in m for m in w) == 2
+    assert any("near (-52.0, 20.0)" in m and "`glasses.front.left_lug`" in m for m in w)
+    assert any("near (52.0, 20.0)" in m and "`glasses.front.right_lug`" in m for m in w)
+    # a face's own hole (a Polygon drawn with a hole, the mean of whose vertices is its
+    # centre) stays unsaid
+    ok = aidl_lang.compile(source="""solid ring {
+    body = Circle(center=(0, 0), radius=30)
+    hole bore { c = Circle(center=(0, 0), radius=10) }
+}
+""")
+    assert not [d for d in ok.diagnostics if d.code == "W0515"]

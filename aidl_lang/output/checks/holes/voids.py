@@ -132,8 +132,8 @@ def _own_outlines(d: Drawing, s: Structure) -> tuple:
 
 def _inside_one_face(openings, boxes, own) -> np.ndarray:
     """For each opening of ``openings`` (clockwise polylines; ``boxes``: theirs): whether it
-    lies inside the outer loop of one face of ``own`` (:func:`_own_outlines`: its mean vertex
-    within that loop, the loop's box around its own), the face's own hole, since the face
+    lies inside the outer loop of one face of ``own`` (:func:`_own_outlines`: both its
+    :func:`_probes` within that loop, the loop's box around its own), the face's own hole, since the face
     would otherwise cover it.  Candidates by box (:func:`.nearby.box_pairs_between`), then one
     even-odd test (:func:`.common._inside`) per face loop for all the openings it may hold."""
     outer, oboxes = own
@@ -155,9 +155,25 @@ def _inside_one_face(openings, boxes, own) -> np.ndarray:
             continue
         for k in idx:
             if k not in mean:
-                mean[k] = openings[k].mean(axis=0)
-        res[idx] |= _inside(np.array([mean[k] for k in idx]), [outer[int(j[a])]])
+                mean[k] = _probes(openings[k])
+        pts = np.vstack([mean[k] for k in idx])
+        res[idx] |= _inside(pts, [outer[int(j[a])]]).reshape(-1, 2).all(axis=1)
     return res
+
+
+def _probes(P) -> np.ndarray:
+    """Two points (2 x 2) that lie inside a face's outer loop when the opening ``P`` (a
+    clockwise loop) is that face's own hole: its mean vertex, and a point 1e-3 mm inside
+    the opening from the middle of its longest edge.  The mean alone was not enough: a
+    window between a rim's arc and two bars (run ao's party glasses) has most of its
+    vertices on the arc, so their mean fell inside the rim's circle, which does not hold
+    the window."""
+    Q = np.roll(P, -1, axis=0)
+    e = Q - P
+    i = int(np.argmax(np.hypot(e[:, 0], e[:, 1])))
+    m = (P[i] + Q[i]) / 2
+    n = np.array([-e[i, 1], e[i, 0]]) / max(float(np.hypot(*e[i])), 1e-300)
+    return np.array([P.mean(axis=0), m - 1e-3 * n])  # (clockwise: the inside on the right)
 
 
 def _runs(keys) -> tuple:
