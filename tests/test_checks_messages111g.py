@@ -113,3 +113,34 @@ def test_a_window_between_a_rim_and_two_bars_is_named():
 }
 """)
     assert not [d for d in ok.diagnostics if d.code == "W0515"]
+
+
+def test_a_drawings_hole_draws_no_line_and_the_docs_idiom_draws_the_front_shape():
+    """Run ap's thaumatrope: the bird's body was written only as a `hole` of the drawing
+    behind it (as `aidl docs drawing`'s "a shape behind another" read), so its lines were
+    hidden and its own outline never drawn. The docs and the prompt say a drawing's hole draws
+    no line of its own, and give the form that draws the front shape: measured, the circle's
+    outline is engraved whole and the rectangle's lines stop at it."""
+    from aidl_lang.library.reference import find
+    from aidl_lang.llm.prompt import system_prompt
+    assert "draws no line of its own" in find("drawing").text
+    assert "drawing none of its own" in system_prompt()
+    src = """solid plate {
+    body = Rectangle(center=(0, 0), width=100, height=60)
+    drawing back {
+        p = Rectangle(center=(-10, 0), width=40, height=30)
+        hole cover { q = Circle(center=(10, 0), radius=12) }
+    }
+    drawing front { q = Circle(center=(10, 0), radius=12) }
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok and not [d for d in r.diagnostics if d.severity == "warning"]
+    segs = [s for st in r.output.engrave for s in st.segments]
+    circles = [s for s in segs if type(s).__name__ == "Circle"]
+    assert len(circles) == 1 and circles[0].radius == pytest.approx(12.0)
+    # the rectangle's right edge (x = 10, y -15..15) is hidden inside the circle (y -12..12):
+    # two pieces of 3 mm, each ending on it
+    right = [s for s in segs if type(s).__name__ == "Line" and abs(s.start[0] - 10) < 1e-9
+             and abs(s.end[0] - 10) < 1e-9]
+    assert sorted(round(abs(s.start[1] - s.end[1]), 9) for s in right) == [3.0, 3.0]

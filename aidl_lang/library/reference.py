@@ -784,8 +784,10 @@ single strokes (with `font=`: the letters' outlines; with `font=` and `fill=true
 area, on a fill layer), on the `engrave` layer; nothing else is filled, nothing is cut. Text
 is only allowed in a drawing (a Text with `font=` also in a solid, as material,
 and a hole, as openings). Put it inside the solid it marks. A `hole` in a drawing hides the drawing's lines
-(its own and its children's) where it covers them: a shape behind another (`drawing back {
-p = Polygon(...) hole front { q = Polygon(...) } }`); one that hides nothing is W0526. The solid's
+(its own and its children's) where it covers them, and draws no line of its own: a shape in front of
+another is the hole in the back's drawing and its own drawing beside that one (`drawing back {
+p = Polygon(...) hole cover { q = Polygon(...) } }` then `drawing front { q = Polygon(...) }`);
+one that hides nothing is W0526. The solid's
 holes hide none: its lines run across them (W0505) unless the drawing has its own `hole` there.
 """, ["engraving", "engrave", "label", "mark", "engraving minus engraving", "hide lines"]),
     "assembly": ("statement", "`assembly NAME { ... }`: separate parts.", """
