@@ -144,3 +144,53 @@ def test_a_drawings_hole_draws_no_line_and_the_docs_idiom_draws_the_front_shape(
     right = [s for s in segs if type(s).__name__ == "Line" and abs(s.start[0] - 10) < 1e-9
              and abs(s.end[0] - 10) < 1e-9]
     assert sorted(round(abs(s.start[1] - s.end[1]), 9) for s in right) == [3.0, 3.0]
+
+
+KERF_SLOT = """kerf 0.5 mm
+solid plate {
+    body = Rectangle(center=(0, 0), width=60, height=40)
+    hole vent { v = Circle(center=(20, 0), diameter=6) }
+    hole s {
+        sl = Rectangle(center=(0, 0), width=20, height=0.4)
+    }
+}
+"""
+
+
+def test_a_kerf_a_hole_cannot_take_is_a_located_E0504_and_nothing_is_written(tmp_path):
+    """Round ten's list: `aidl render`'s refusal of a kerf (a slot narrower than the beam)
+    was "aidl: error: ..." with no code, line or hint. It is E0504 at the hole nearest the
+    point it names (not the other hole, not the part), with the widths that would cut, and a
+    good file from before is kept."""
+    import json
+    import subprocess
+    import sys
+    (tmp_path / "plate.aidl").write_text(KERF_SLOT)
+    good = tmp_path / "plate.dxf"
+    good.write_text("a good file from before\n")
+    r = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "render", "plate.aidl", "-o",
+                        good.name, "--json"], cwd=tmp_path, capture_output=True, text=True,
+                       timeout=300)
+    assert r.returncode == 1
+    doc = json.loads(r.stdout)
+    (d,) = [d for d in doc["diagnostics"] if d["code"] == "E0504"]
+    assert (d["span"]["line"], d["span"]["column"]) == (5, 5)          # `hole s {`
+    assert "kerf 0.5 mm on part `plate`" in d["message"]
+    assert "widen it to 0.5 mm or more" in d["hint"] and "0.25 mm" in d["hint"]
+    assert good.read_text() == "a good file from before\n"
+    # a slot 0.6 mm wide (wider than the beam) cuts to size
+    (tmp_path / "ok.aidl").write_text(KERF_SLOT.replace("height=0.4", "height=0.6"))
+    r3 = subprocess.run([sys.executable, "-m", "aidl_lang.cli", "render", "ok.aidl", "-o",
+                         "ok.dxf"], cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    assert r3.returncode == 0, r3.stderr
+
+
+def test_the_mcp_render_of_a_kerf_a_hole_cannot_take_names_E0504_and_its_line(tmp_path):
+    pytest.importorskip("mcp")
+    from aidl_lang.mcp import tools as T
+    ws = T.Workspace(tmp_path)
+    with pytest.raises(T.Refused) as e:
+        T.render(ws, source=KERF_SLOT, output="plate.dxf")
+    assert e.value.code == "output_failed"
+    assert str(e.value).startswith("line 5, column 5: E0504 kerf 0.5 mm on part `plate`")
+    assert not (tmp_path / "plate.dxf").exists()

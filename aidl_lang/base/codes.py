@@ -457,6 +457,23 @@ wider angle, a shallower counterbore, or thicker material.
         Countersink(corners, diameter=200 mm)      # 188 mm wide at the bottom: E0503
     }
 """),
+    "E0504": ("a kerf the part's cuts cannot be offset by", """
+A laser's beam (the program's `kerf`, or `--kerf`) is as wide as the kerf, so a machine file
+offsets every outline and hole by half of it to cut the part to size (docs/outputs.md,
+"Kerf"). An opening narrower than the kerf, or a curve of an opening with a radius under half
+of it, has no such offset: the beam alone cuts wider than drawn. `aidl render` writes nothing
+for a cut format (a file written before is left as it was) and says where, at the hole nearest
+the point the message names, else at the part; `aidl check` does not run the kerf. Widen the
+opening to the kerf or more (a slit as wide as the beam is a `cut` line, cut along its length
+with no offset), give the curve a radius of half the kerf or more, or render with a narrower
+`--kerf` (`kerf 0 mm` in the part writes it as drawn).
+
+    kerf 0.5 mm
+    solid plate {
+        body = Rectangle(center=(0, 0), width=60, height=40)
+        hole s { sl = Rectangle(center=(0, 0), width=20, height=0.4) }   # render: E0504
+    }
+"""),
     "E0900": ("internal error in aidl", """
 A bug in aidl, not in your program: a stage of the compiler raised an exception it should have
 turned into a diagnostic. `aidl check` and `aidl render` report it and exit with status 3; the

@@ -504,6 +504,10 @@ def cmd_render(args) -> int:
             from ..base.diagnostics import Diagnostic
             res.sink.add(Diagnostic("E0503", e.message, e.span, "error", hint=e.hint))
             _emit(res.sink, args.json, False, _work_of(res))
+        elif hasattr(e, "kerf"):                 # a kerf a cut cannot be offset by: at the hole
+            from ..pipeline import report_kerf
+            report_kerf(res.sink, res.drawing, e)
+            _emit(res.sink, args.json, False, _work_of(res))
         elif hasattr(e, "holds"):                # a layout with no solid part: at the design
             from ..pipeline import report_nothing
             report_nothing(res.sink, res.model, e)

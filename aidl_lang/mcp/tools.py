@@ -555,6 +555,15 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
                     doc["job"] = _job([cut], prof, thick_mm)
                     _machine_warnings(r, cut, out.suffix.lower(), prof, kerf_mm, doc)
     except LayoutError as e:                # a part larger than the sheet, or no part at all
+        if hasattr(e, "kerf"):              # a kerf a cut cannot take: E0504 at the hole
+            from ..base.diagnostics import DiagnosticSink
+            from ..pipeline import report_kerf
+            sink = DiagnosticSink()
+            report_kerf(sink, r.compiled.drawing, e)
+            (d,) = sink.items
+            at = f"line {d.span.line}, column {d.span.col}: " if d.span is not None else ""
+            raise Refused(f"{at}E0504 {d.message}; hint: {d.hint}", "output_failed",
+                          "source" if source is not None else "path") from None
         raise Refused(str(e), "bad_argument", "sheet" if not hasattr(e, "holds") else
                       "source" if source is not None else "path") from None
     except (MissingDependency, OutputError, WriteError, NotCompiled, OSError) as e:

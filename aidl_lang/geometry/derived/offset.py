@@ -36,8 +36,13 @@ MITER_LIMIT = 4.0        # a miter reaching farther than this many distances is 
 class OffsetError(ValueError):
     """The loop cannot be offset by this distance; the message says where and why.
     ``curve``: the :class:`~.spline.CubicSpline` or :class:`~.ellipse.EllipseCurve` that
-    cannot be offset exactly, else None."""
+    cannot be offset exactly, else None; ``where``: the point (x, y), mm, the message names."""
     curve = None
+    where = None
+
+    def __init__(self, message: str, where=None):
+        super().__init__(message)
+        self.where = where
 
 
 def _right(s: Segment, d: float) -> Segment:
@@ -51,13 +56,14 @@ def _right(s: Segment, d: float) -> Segment:
         r = s.radius + d if s.ccw else s.radius - d
         if r <= 0:
             raise OffsetError(f"the hole of radius {s.radius:g} mm at ({s.center[0]:g}, "
-                              f"{s.center[1]:g}) is no larger than the offset of {d:g} mm")
+                              f"{s.center[1]:g}) is no larger than the offset of {d:g} mm",
+                              s.center)
         return Circle(s.center, r, s.ccw)
     r = s.radius + d if s.sweep > 0 else s.radius - d
     if r <= 0:
         x, y = s.start
         raise OffsetError(f"the arc of radius {s.radius:g} mm at ({x:g}, {y:g}) is no larger "
-                          f"than the offset of {d:g} mm: the beam cannot follow it")
+                          f"than the offset of {d:g} mm: the beam cannot follow it", (x, y))
     return Arc(s.center, r, s.start_angle, s.sweep)
 
 
@@ -86,13 +92,13 @@ def offset_loop(loop: Loop, d: float, keep=()) -> Loop:
         if isinstance(g, EllipticArc):
             e = OffsetError(f"the ellipse through ({g.start[0]:g}, {g.start[1]:g}) cannot be "
                             f"offset exactly (the offset of an ellipse is no ellipse, and "
-                            f"chords are not written)")
+                            f"chords are not written)", g.start)
             e.curve = g.curve
             raise e
         if isinstance(g, Spline):
             e = OffsetError(f"the spline through ({g.start[0]:g}, {g.start[1]:g}) cannot be "
                             f"offset exactly (the offset of a cubic spline is no cubic "
-                            f"spline, and chords are not written)")
+                            f"spline, and chords are not written)", g.start)
             e.curve = g.curve
             raise e
     segs = loop.segments
@@ -169,7 +175,7 @@ def _offset_once(segs: list, keep: frozenset, d: float) -> Loop:
         x, y = segs[eaten[0]].start
         raise _Eaten(eaten, OffsetError(
             f"the {'line' if isinstance(segs[eaten[0]], Line) else 'arc'} from ({x:g}, {y:g}) "
-            f"is too short for an offset of {d:g} mm: its neighbours' offsets cover it"))
+            f"is too short for an offset of {d:g} mm: its neighbours' offsets cover it", (x, y)))
     scale = max(max(abs(v) for g in segs for v in g.start), 1.0)
     return Loop(simplify(out, scale))
 

@@ -41,6 +41,17 @@ class LayoutError(OutputError):
     a feature); the message names the part."""
 
 
+class KerfError(LayoutError):
+    """A kerf the part's cuts cannot be offset by (a hole or slot narrower than the beam, an
+    arc of a smaller radius than half the kerf): ``part`` (its name), ``where`` (the point,
+    mm, the message names, or None) and ``kerf`` (mm); reported as a located ``E0504``
+    (:func:`aidl_lang.pipeline.report_kerf`)."""
+
+    def __init__(self, message: str, part: str, where, kerf: float):
+        super().__init__(message)
+        self.part, self.where, self.kerf = part, where, kerf
+
+
 # ------------------------------------------------------------------ rigid motions
 def _rotation(deg: float) -> tuple[float, float]:
     """(cos, sin) of ``deg`` degrees, exact at multiples of 90."""
@@ -184,15 +195,16 @@ def compensate(output: Output, kerf, deadline=None, apart: bool = False) -> Outp
                       [(lp, keep) for lp, keep, _ in split])]
             loops = [offset_loop(lp, k / 2, keep) for lp, keep in drawn]
         except ValueError as e:         # OffsetError; a curve no arcs follow (biarc.py)
-            raise LayoutError(f"kerf {k:g} mm on part `{p.name}`: {e}"
-                              f"{_spline_fix(output, e) if isinstance(e, OffsetError) else ''}"
-                              ) from None
+            raise KerfError(f"kerf {k:g} mm on part `{p.name}`: {e}"
+                            f"{_spline_fix(output, e) if isinstance(e, OffsetError) else ''}",
+                            p.name, getattr(e, "where", None), k) from None
         narrow = _narrow([lp for lp, _ in drawn], loops, k / 2) if split is None else None
         if narrow is not None:
             g, (x, y) = narrow
-            raise LayoutError(f"kerf {k:g} mm on part `{p.name}`: a slot or notch near "
-                              f"({x:.4g}, {y:.4g}) is narrower than the cut: the offset path "
-                              f"comes {k / 2 - g:.3g} mm into the material there")
+            raise KerfError(f"kerf {k:g} mm on part `{p.name}`: a slot or notch near "
+                            f"({x:.4g}, {y:.4g}) is narrower than the cut: the offset path "
+                            f"comes {k / 2 - g:.3g} mm into the material there", p.name,
+                            (x, y), k)
         parts.append(PartOutline(p.name, p.kind, loops, p.thickness))
     out = Output(parts, list(output.engrave), output.title, output.drawing, output.page)
     out.stray = output.stray            # (cut by nothing: the preview draws them as they lie)
