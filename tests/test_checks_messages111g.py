@@ -194,3 +194,32 @@ def test_the_mcp_render_of_a_kerf_a_hole_cannot_take_names_E0504_and_its_line(tm
     assert e.value.code == "output_failed"
     assert str(e.value).startswith("line 5, column 5: E0504 kerf 0.5 mm on part `plate`")
     assert not (tmp_path / "plate.dxf").exists()
+
+
+def test_E0202_of_an_outer_solid_named_in_an_assembly_says_it_makes_no_part():
+    """Run aq's rain gauge holder wrote `back = backplate` in its assembly (the solid
+    `backplate` declared at the top) and got E0202 "move it into `model`", which would have
+    left the backplate outside the assembly. The hint names the line's meaning and the two
+    forms that make the part; following the first compiles."""
+    src = (RUNS / "issue111aq/drafts/03_rain_gauge_holder.attempt1.aidl").read_text()
+    r = aidl_lang.compile(source=src)
+    e = [d for d in r.diagnostics if d.code == "E0202"]
+    assert len(e) == 2
+    assert e[0].hint.startswith("`back = backplate` names the structure `model.backplate` "
+                                "declared outside `rain_gauge`; it does not make a part")
+    assert "`def backplate() -> solid { ... }`, then `back = backplate()`" in e[0].hint
+    fixed = src.replace("solid backplate {", "def backplate() -> solid {").replace(
+        "    back = backplate\n", "    back = backplate()\n")
+    r2 = aidl_lang.compile(source=fixed)
+    assert not _errors(r2), [d.message for d in _errors(r2)]
+    # an E0202 with no such name keeps its own hint
+    r3 = aidl_lang.compile(source="""assembly a {
+    solid p { r = Rectangle(center=(0, 0), width=10, height=10) }
+    assembly b {
+        solid q { r = Rectangle(center=(0, 0), width=10, height=10) }
+        RightOf(q, p)
+    }
+}
+""")
+    (d,) = [d for d in r3.diagnostics if d.code == "E0202"]
+    assert d.hint.startswith("a constraint may only use its own structure's subtree")

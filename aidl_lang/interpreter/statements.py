@@ -819,10 +819,29 @@ class Statements(Asserts):
             o = bad[0]
             lca = _common_ancestor(o, s)
             where = f"`{lca.path}`" if lca else "a common parent"
+            alias = self._alias_of(o)
+            hint = (f"a constraint may only use its own structure's subtree; move it into "
+                    f"{where}, which contains both")
+            if alias is not None:       # run aq's `back = backplate` in an assembly
+                hint = (f"`{alias} = {o.name}` names the structure `{o.path}` declared "
+                        f"outside `{s.name}`; it does not make a part of `{s.name}`: declare "
+                        f"the solid inside `{s.name}` (`solid {alias} {{ ... }}`), or make it "
+                        f"a template (`def {o.name}() -> {o.kind} {{ ... }}`, then `{alias} = "
+                        f"{o.name}()`); or move the constraint into {where}, which contains "
+                        f"both")
             raise EvalError("E0202", f"this constraint in `{s.path}` refers to `{o.path}`, "
-                            f"which is outside `{s.name}`'s subtree", span,
-                            hint=f"a constraint may only use its own structure's subtree; "
-                                 f"move it into {where}, which contains both")
+                            f"which is outside `{s.name}`'s subtree", span, hint=hint)
+
+    def _alias_of(self, o: Structure) -> str | None:
+        """The name a body's own scope binds to structure ``o`` (or one of its ancestors)
+        declared outside it (`back = backplate`), else None."""
+        sc = self.scope
+        while sc is not None and sc.struct is not None:
+            for name, v in sc.vars.items():
+                if type(v) is StructRef and o.is_within(v.struct) and name != v.struct.name:
+                    return name
+            sc = sc.parent
+        return None
 
     def _equation(self, e) -> None:
         if isinstance(e, A.BoolOp):
