@@ -223,3 +223,19 @@ def test_E0202_of_an_outer_solid_named_in_an_assembly_says_it_makes_no_part():
 """)
     (d,) = [d for d in r3.diagnostics if d.code == "E0202"]
     assert d.hint.startswith("a constraint may only use its own structure's subtree")
+
+
+def test_E0405_of_len_of_a_nested_loops_names_says_it_holds_rows():
+    """Run aq's parrot box asserted `len(crumbs.c) == 9` for 3 x 3 holes made by a nested
+    loop: "3 == 9 is false". The message says the name is a list of 3 lists of 3 and how to
+    count every item; the form it gives holds on the same program."""
+    src = (RUNS / "issue111aq/drafts/04_parrot_foraging_box.attempt1.aidl").read_text()
+    r = aidl_lang.compile(source=src)
+    e = [d for d in r.diagnostics if d.code == "E0405"]
+    assert len(e) == 2
+    assert "3 == 9 is false (where crumbs.c = a list of 3 lists of 3 each" in e[0].message
+    assert "`sum([len(r) for r in crumbs.c])`" in e[0].message
+    fixed = src.replace("assert len(crumbs.c) == 9", "assert sum([len(r) for r in crumbs.c]) == 9")
+    fixed = fixed.replace("assert len(left_holes.c) == 4",
+                          "assert sum([len(r) for r in left_holes.c]) == 4")
+    assert not _errors(aidl_lang.compile(source=fixed))

@@ -91,6 +91,15 @@ class Asserts:
                         continue
                     if isinstance(v, Q):
                         out.append((text, v.expr, v.dim))
+                    elif isinstance(v, list) and v and all(isinstance(i, list) for i in v):
+                        # a nested loop's names (run aq: `len(crumbs.c) == 9` for 3 x 3
+                        # holes was 3): the rows, not every copy
+                        sizes = sorted({len(i) for i in v})
+                        each = (f" of {sizes[0]} each" if len(sizes) == 1 else
+                                f" of {sizes[0]} to {sizes[-1]}")
+                        out.append((text, f"a list of {len(v)} lists{each} (`{text}[i][j]`; "
+                                          f"every item: `sum([len(r) for r in {text}])`)",
+                                    "said"))
                 continue
             if isinstance(n, A.Call):
                 todo += reversed(list(n.args) + [k.value for k in n.kwargs])

@@ -220,6 +220,9 @@ def _reads(a: Assertion, x) -> list[tuple[str, str]]:
     ``x`` (a value that cannot be worked out there is left out)."""
     out = []
     for text, e, dim in a.reads:
+        if dim == "said":                   # said when read (a list of lists' shape)
+            out.append((text, e))
+            continue
         try:
             if isinstance(e, (int, float)) or (isinstance(e, Lin) and not e.terms):
                 v = float(e) if isinstance(e, (int, float)) else float(e.const)
