@@ -1212,8 +1212,11 @@ def test_W0515_a_tiny_void_between_merged_shapes(compile_text):
     # the right square starts at x = 0.05: a 0.05 x 10 mm gap closed by the bars
     (w,) = warnings(compile_text, VOIDS % "5.05", "W0515")
     assert "a void of 0.500 mm^2 (about 0.05 mm wide, 10.00 mm long)" in w.message
-    assert "near (0.0, 0.0)" in w.message and w.span.line == 2
+    assert "near (0.0, 0.0)" in w.message
     assert "is cut through `frame`" in w.message and "a sliver comes out there" in w.message
+    # the shapes around it named, the warning at the first (issue 111, run aq's spider web)
+    assert "`frame.left`, `frame.right`, `frame.top`, `frame.bottom` around it" in w.message
+    assert w.span.line == 3 and [lb.span.line for lb in w.labels] == [4, 5, 6]
     assert not warnings(compile_text, VOIDS % "4.9", "W0515")       # they overlap: no void
     assert not warnings(compile_text, VOIDS % "7", "W0515")         # a 2 x 10 window: meant
 

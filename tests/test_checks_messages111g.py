@@ -239,3 +239,16 @@ def test_E0405_of_len_of_a_nested_loops_names_says_it_holds_rows():
     fixed = fixed.replace("assert len(left_holes.c) == 4",
                           "assert sum([len(r) for r in left_holes.c]) == 4")
     assert not _errors(aidl_lang.compile(source=fixed))
+
+
+def test_a_tiny_void_names_the_shapes_around_it():
+    """Run aq's spider web: three slivers among the legs, spokes and strands, each said at
+    `solid web {` as "the shapes around it do not quite meet"; finding which legs took seven
+    trial checks. Each void now names the shapes whose faces border it, at the first."""
+    src = (RUNS / "issue111aq/run/06_spider_web.first_valid.aidl").read_text()
+    r = aidl_lang.compile(source=src)
+    w = [d for d in r.diagnostics if d.code == "W0515"]
+    assert len(w) == 3
+    assert all("`web.spider.leg`" in d.message and "around it do not quite meet" in d.message
+               for d in w)
+    assert all(d.span.line != 23 for d in w)          # not at `solid web {`

@@ -1019,7 +1019,7 @@ than the minimum wall is a notch (a connector cut-out, a cross-halving slot) and
 An opening is cut through a solid part where no hole declares one: the shapes around it,
 united, leave a window the program never names (the part comes out with it; the warning says
 so, never "filled"). A small one (less than 1 mm^2, or twice the minimum wall squared) is a
-void where the shapes nearly meet but leave a gap, which a laser cuts out as a sliver: the warning gives its area, width, length and place; make the shapes overlap (a
+void where the shapes nearly meet but leave a gap, which a laser cuts out as a sliver: the warning gives its area, width, length and place, and names the shapes around it (at the first of them); make the shapes overlap (a
 negative gap, a larger size). A part says its first 5 voids, the fifth ending "(and N more
 like it in `part`)". A larger one enclosed by the faces of ONE solid structure,
 some of them overlapping (a dinosaur's legs and belly that merge around a window), is often

@@ -13,7 +13,7 @@ from ....geometry.core.model import Structure
 from ...part.build.booleans import Drawing
 from ...part.measure.nearby import box_pairs, box_pairs_between
 from ..common import (MIN_AREA, _area, _cut_openings, _insert_fix, _inside, _loop_boxes, _signed,
-                      _say_few, _solids_within)
+                      SHOWN, _say_few, _solids_within)
 from .openings import TOUCH, _NAMEABLE, _ref
 
 # an enclosed opening narrower than this (mm, its box's smaller side) is led by the fill, with
@@ -47,15 +47,34 @@ def _check_voids(d: Drawing, s: Structure, loops, cuts, t: float, sink,
         x0, y0 = P.min(axis=0)
         x1, y1 = P.max(axis=0)
         width = area / max(1e-12, max(x1 - x0, y1 - y0))
+        around, span, labels = (_around(d, s, P) if len(voids) < SHOWN else
+                                ("the shapes", s.span, []))
         voids.append((f"a void of {area:.3f} mm^2 (about {width:.2f} mm wide, "
                       f"{max(x1 - x0, y1 - y0):.2f} mm long) is cut through `{s.path}` near "
-                      f"({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}): no hole declares it, the "
-                      "shapes around it do not quite meet, so a sliver comes out there",
-                      s.span,
+                      f"({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}): no hole declares it, "
+                      f"{around} around it do not quite meet, so a sliver comes out there",
+                      span,
                       {"hint": "make the shapes around it overlap (e.g. `gap=-1 mm`, or a "
                                "larger size) so that no gap is left; if an opening is meant, "
-                               "cut it with a hole"}))
+                               "cut it with a hole", "labels": labels}))
     _say_few(sink, "W0515", s.path, voids)
+
+
+def _around(d: Drawing, s: Structure, P) -> tuple:
+    """``(words, span, labels)`` for the tiny void ``P`` of part ``s``: the shapes of its
+    solids whose faces border it (run aq's spider web: three slivers among eight legs said
+    only "the shapes around it"), the warning at the first, the next three labelled."""
+    region = mf.CrossSection([P[::-1].tolist()], mf.FillRule.Positive)
+    near = region.offset(2 * TOUCH, mf.JoinType.Miter, 2.0, 16) - region
+    shapes = list(dict.fromkeys(g for _, g, _ in _solid_faces(d, s, near)))
+    if not shapes:
+        return "the shapes", s.span, []
+    names = [f"`{g.label}`" for g in shapes]
+    words = ", ".join(names[:4]) + (f" and {len(names) - 4} more" if len(names) > 4 else "")
+    g0 = shapes[0]
+    labels = [Label(g.span, "borders it", primary=False) for g in shapes[1:4]
+              if g.span is not None and g.span != g0.span]
+    return words, g0.span or s.span, labels
 
 
 def _solid_faces(d: Drawing, s: Structure, near) -> list:
