@@ -404,39 +404,6 @@ def report_stacked(sink: DiagnosticSink, drawing, ex) -> None:
     sink.add(Diagnostic("E0501", ex.message, getattr(s, "span", None), "error", hint=ex.hint))
 
 
-def report_kerf(sink: DiagnosticSink, drawing, ex) -> None:
-    """One ``E0504`` for a kerf the part's cuts cannot be offset by
-    (:class:`~aidl_lang.output.fabrication.layout.KerfError` ``ex``): at the hole of that part
-    nearest the point the message names (a slot narrower than the beam), else at the part's
-    structure, or unlocated without a drawing."""
-    part_of = getattr(drawing, "part_of", None) or {}
-    part = part_of.get(ex.part)
-    at = part
-    if part is not None and ex.where is not None:
-        x, y = ex.where
-        best = 0.5                      # mm: a hole this near the point, else the part
-        for c in drawing.cuts:
-            shape = drawing.shapes.get(c.hole)
-            if shape is None or shape.is_empty() or getattr(c.hole, "span", None) is None:
-                continue
-            o = c.owner
-            while o is not None and o is not part:
-                o = o.parent
-            if o is None:
-                continue
-            x0, y0, x1, y1 = shape.bounds()
-            gap = max(x0 - x, x - x1, y0 - y, y - y1, 0.0)
-            if gap < best:
-                best, at = gap, c.hole
-    k = ex.kerf
-    sink.add(Diagnostic("E0504", str(ex), getattr(at, "span", None), "error", hint=(
-        f"the beam is {k:g} mm wide, so an opening narrower than {k:g} mm, or a curve of one "
-        f"with a radius under {k / 2:g} mm, cannot be cut to size: widen it to {k:g} mm or "
-        f"more (a slit as wide as the beam is a `cut` line), give the curve a radius of "
-        f"{k / 2:g} mm or more, or render with a narrower `--kerf` (`aidl check` does not "
-        f"run the kerf)")))
-
-
 def report_nothing(sink: DiagnosticSink, model: Model, ex) -> None:
     """One ``E0502`` for a sheet layout of a design with no solid part
     (:class:`~aidl_lang.output.fabrication.layout.NothingToLayOut` ``ex``), at the design's

@@ -459,8 +459,7 @@ wider angle, a shallower counterbore, or thicker material.
 """),
     "E0504": ("a kerf the part's cuts cannot be offset by", """
 A laser's beam (the program's `kerf`, or `--kerf`) is as wide as the kerf, so a machine file
-offsets every outline and hole by half of it to cut the part to size (docs/outputs.md,
-"Kerf"). An opening narrower than the kerf, or a curve of an opening with a radius under half
+offsets every outline and hole by half of it to cut the part to size. An opening narrower than the kerf, or a curve of an opening with a radius under half
 of it, has no such offset: the beam alone cuts wider than drawn. `aidl render` writes nothing
 for a cut format (a file written before is left as it was) and says where, at the hole nearest
 the point the message names, else at the part; `aidl check` does not run the kerf. Widen the

@@ -505,8 +505,7 @@ def cmd_render(args) -> int:
             res.sink.add(Diagnostic("E0503", e.message, e.span, "error", hint=e.hint))
             _emit(res.sink, args.json, False, _work_of(res))
         elif hasattr(e, "kerf"):                 # a kerf a cut cannot be offset by: at the hole
-            from ..pipeline import report_kerf
-            report_kerf(res.sink, res.drawing, e)
+            res.sink.add(e.diagnostic(res.drawing))
             _emit(res.sink, args.json, False, _work_of(res))
         elif hasattr(e, "holds"):                # a layout with no solid part: at the design
             from ..pipeline import report_nothing

@@ -423,6 +423,19 @@ def _sheet_names(target: Path, n: int) -> list[Path]:
     return [target.with_name(f"{target.stem}-{k + 1}{target.suffix}") for k in range(n)]
 
 
+def _layout_refused(e, r: Result, source: str | None) -> Refused:
+    """The refusal of a render the layout refused (a part larger than the sheet, no part at
+    all); of one whose kerf a cut cannot take, its located ``E0504``
+    (:meth:`~aidl_lang.output.fabrication.layout.KerfError.diagnostic`) as one line."""
+    if not hasattr(e, "kerf"):
+        return Refused(str(e), "bad_argument", "sheet" if not hasattr(e, "holds") else
+                       "source" if source is not None else "path")
+    d = e.diagnostic(r.compiled.drawing)
+    at = f"line {d.span.line}, column {d.span.col}: " if d.span is not None else ""
+    return Refused(f"{at}E0504 {d.message}; hint: {d.hint}", "output_failed",
+                   "source" if source is not None else "path")
+
+
 def render(ws: Workspace, source: str | None = None, path: str | None = None,
            output: str | None = None, width: int = 800, overrides: dict | None = None,
            budget: float | None = None, style: str = "preview", assembled: bool = False,
@@ -554,18 +567,8 @@ def render(ws: Workspace, source: str | None = None, path: str | None = None,
                     cut = for_cutting(r.output, kerf_mm)
                     doc["job"] = _job([cut], prof, thick_mm)
                     _machine_warnings(r, cut, out.suffix.lower(), prof, kerf_mm, doc)
-    except LayoutError as e:                # a part larger than the sheet, or no part at all
-        if hasattr(e, "kerf"):              # a kerf a cut cannot take: E0504 at the hole
-            from ..base.diagnostics import DiagnosticSink
-            from ..pipeline import report_kerf
-            sink = DiagnosticSink()
-            report_kerf(sink, r.compiled.drawing, e)
-            (d,) = sink.items
-            at = f"line {d.span.line}, column {d.span.col}: " if d.span is not None else ""
-            raise Refused(f"{at}E0504 {d.message}; hint: {d.hint}", "output_failed",
-                          "source" if source is not None else "path") from None
-        raise Refused(str(e), "bad_argument", "sheet" if not hasattr(e, "holds") else
-                      "source" if source is not None else "path") from None
+    except LayoutError as e:                # a part larger than the sheet, no part, a kerf
+        raise _layout_refused(e, r, source) from None
     except (MissingDependency, OutputError, WriteError, NotCompiled, OSError) as e:
         raise Refused(str(e), "output_failed", "output" if target is not None else
                       "layout" if layout else "source" if source is not None else "path") \

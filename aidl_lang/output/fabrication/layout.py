@@ -51,6 +51,38 @@ class KerfError(LayoutError):
         super().__init__(message)
         self.part, self.where, self.kerf = part, where, kerf
 
+    def diagnostic(self, drawing):
+        """The ``E0504`` :class:`~aidl_lang.base.diagnostics.Diagnostic` of this error: at
+        the hole of the part nearest the point the message names (a slot narrower than the
+        beam), else at the part's structure (``drawing.part_of``), or unlocated without a
+        drawing."""
+        from ...base.diagnostics import Diagnostic
+        part = (getattr(drawing, "part_of", None) or {}).get(self.part)
+        at = part
+        if part is not None and self.where is not None:
+            x, y = self.where
+            best = 0.5                  # mm: a hole this near the point, else the part
+            for c in drawing.cuts:
+                shape = drawing.shapes.get(c.hole)
+                if shape is None or shape.is_empty() or getattr(c.hole, "span", None) is None:
+                    continue
+                o = c.owner
+                while o is not None and o is not part:
+                    o = o.parent
+                if o is None:
+                    continue
+                x0, y0, x1, y1 = shape.bounds()
+                gap = max(x0 - x, x - x1, y0 - y, y - y1, 0.0)
+                if gap < best:
+                    best, at = gap, c.hole
+        k = self.kerf
+        return Diagnostic("E0504", str(self), getattr(at, "span", None), "error", hint=(
+            f"the beam is {k:g} mm wide, so an opening narrower than {k:g} mm, or a curve of "
+            f"one with a radius under {k / 2:g} mm, cannot be cut to size: widen it to {k:g} "
+            f"mm or more (a slit as wide as the beam is a `cut` line), give the curve a radius "
+            f"of {k / 2:g} mm or more, or render with a narrower `--kerf` (`aidl check` does "
+            f"not run the kerf)"))
+
 
 # ------------------------------------------------------------------ rigid motions
 def _rotation(deg: float) -> tuple[float, float]:
