@@ -765,7 +765,8 @@ FUNCTIONS: dict[str, tuple[int, int, str]] = {
     "distance": (2, 2, "distance between two points (a length expression)"),
     "polar": (3, 3, "polar(center, radius, angle): the point `radius` from `center` at `angle` "
                     "counter-clockwise from +x (exact, follows the center when it moves; no "
-                    "mirror image solves it, unlike Distance + an angle)"),
+                    "mirror image solves it, unlike Distance + an angle; a center of its own "
+                    "structure's, not a parent's: E0201)"),
     "mirror": (1, 2, "mirror(points, about=\"y\"): the points, then their mirror images in "
                      "reverse order (a symmetric outline written once); about: \"y\" (the "
                      "y axis: x -> -x), \"x\" (y -> -y) or a Line (as it starts); a point on "

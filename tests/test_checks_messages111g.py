@@ -252,3 +252,10 @@ def test_a_tiny_void_names_the_shapes_around_it():
     assert all("`web.spider.leg`" in d.message and "around it do not quite meet" in d.message
                for d in w)
     assert all(d.span.line != 23 for d in w)          # not at `solid web {`
+
+
+def test_polars_docs_say_its_center_is_of_its_own_structure():
+    """Run ao's peony ring wrote `polar(inner.center, ...)` in a child hole (E0201): `aidl
+    docs` said polar "follows the center when it moves", which invited it."""
+    from aidl_lang.library.reference import find
+    assert "a center of its own structure's, not a parent's: E0201" in find("polar").text
