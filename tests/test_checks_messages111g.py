@@ -259,3 +259,21 @@ def test_polars_docs_say_its_center_is_of_its_own_structure():
     docs` said polar "follows the center when it moves", which invited it."""
     from aidl_lang.library.reference import find
     assert "a center of its own structure's, not a parent's: E0201" in find("polar").text
+
+
+def test_the_prompt_says_placing_one_text_of_a_drawing_moves_the_drawing():
+    """Run am's jar opener placed one Text of a three-label drawing and the two others went
+    with it, off the material (W0505 x2); the prompt said features are placed on their part,
+    not that a feature moves whole. Measured: B, written at x = 30, is carried to 60."""
+    from aidl_lang.llm.prompt import system_prompt
+    assert "placing one\nText of a drawing moves the drawing: give it its own" in system_prompt()
+    r = aidl_lang.compile(source="""solid plate {
+    body = Rectangle(center=(0, 0), width=100, height=60)
+    drawing marks {
+        a = Text("A", (-30, 0), size=5)
+        b = Text("B", (30, 0), size=5)
+    }
+    marks.a.bb.center_x == 0
+}
+""")
+    assert tuple(r.value("plate.marks.b.position").value) == pytest.approx((60.0, 0.0))

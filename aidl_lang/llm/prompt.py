@@ -53,7 +53,8 @@ radians: write `cos(i * 10 deg)`); `pi`, `tau` count radians: `a + pi / 2` is `a
 
 Constructor dimensions (width, radius, ...) are held; positions are starting guesses: what
 no constraint pulls on stays exactly where it is written; a part stays, its features (holes,
-child solids, pattern targets) are placed on it (no `Fixed` needed); of two parts or two shapes
+child solids, pattern targets) are placed on it (no `Fixed` needed), a feature whole (placing one
+Text of a drawing moves the drawing: give it its own); of two parts or two shapes
 related, the first-named moves to the second (`AlignCenterX(knight, base)` moves the knight). A point at a radius and angle
 from a centre: `Coincident(p, polar(c.center, 20, 30 deg))` (exact; Distance + Horizontal
 also fit its mirror image); points add and scale: a quarter along a line is
