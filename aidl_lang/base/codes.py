@@ -826,6 +826,10 @@ Two holes meant to cut one opening (a screw hole on the edge of a window) are sa
 shapes in one hole structure); a copy made by a pattern with no name (`first_pattern[4]` of
 `CircularPattern(first, 8, c)`) has no name a program can write, so the hint asks for the
 pattern's statement to be named first (`NAME = ` before it, then `AllowOverlap(bolt, NAME)`).
+Two holes that cross (each runs past the other on both sides, at any rotation: a pin channel
+across a window, two mortises crossing for a halved post) are a note, not a warning: they cut
+one cross-shaped opening, meant in every case the corpus holds; the hint says how to say so
+and, if two openings were meant, how far to move one.
 When more than 55 % of the smaller hole lies inside the other
 and relations place both (a slit placed from a knob hole's centre out to the edge), one
 opening looks meant: the hint leads with `AllowOverlap` and gives the move second.
@@ -1096,7 +1100,7 @@ little wider than its tab) is not a gap. The warning names the part, the nearest
 and the gap. Move the part by the gap with its `Place`, or lengthen the tab. A gap between two
 parts that one standard-library template places (the gears `gear_train(lift=...)` stands
 above its plate) is the template's design and not reported. A part with no `Place` that lies
-more than 5 mm from every other (drawn beside the product on the sheet, never put in it) is a
+5 mm or more from every other (drawn beside the product on the sheet, never put in it) is a
 note: the parts are cut as drawn either way, and `Place` puts it in the assembled product.
 
     thickness 3 mm

@@ -9,8 +9,9 @@ from __future__ import annotations
 from ...base.diagnostics import Diagnostic, DiagnosticSink, Label
 from ..part.build.booleans import Drawing
 
-# mm: a part with no Place farther than this from every other part lies away from the product
-# (drawn beside it on the sheet): W0518 for it is a note
+# mm: a part with no Place this far or farther from every other part lies away from the
+# product (drawn beside it on the sheet): W0518 for it is a note (run as: three cards laid
+# `gap=5` apart were warned, their gaps 5 mm less a rounding, the fourth a note)
 AWAY = 5.0
 
 
@@ -68,7 +69,7 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
         d.fit["floating"].append({"part": g.part, "nearest": g.nearest, "gap": round(g.gap, 6)})
         unplaced = getattr(d.part_of.get(g.part), "placement", None) is None
         short = g.part.split(".")[-1]
-        if unplaced and g.gap > AWAY:   # a note: a part never placed, lying away from the
+        if unplaced and g.gap >= AWAY - 1e-6:   # a note: a part never placed, away from the
             # product (runs z7, ai: "touches no other part" read as a defect of the cut parts);
             # one just short of another (a base 0.25 mm under its wall) stays a warning
             sink.add(Diagnostic(

@@ -85,6 +85,17 @@ def _contributors(d: Drawing, a: Structure, skip: Structure | None = None,
     return out
 
 
+def _cross(r1, r2) -> bool:
+    """Whether two cut regions (CrossSections, or None) cross: each runs past the other on
+    both sides, so each less the other falls into two pieces or more, at any rotation (run
+    at's tambourine: a pin channel across each of four windows turned 206 to 334 degrees was
+    judged by axis-aligned boxes and told to move 9.51 mm)."""
+    if r1 is None or r2 is None:
+        return False
+    return all(sum(1 for p in (x - y).decompose() if _area(p) > MIN_AREA) >= 2
+               for x, y in ((r1, r2), (r2, r1)))
+
+
 def _depth(common, bi, bj) -> float:
     """How far two overlapping regions reach into each other: the extent of their common
     part along the line between their boxes' centres (for two circles exactly

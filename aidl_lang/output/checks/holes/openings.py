@@ -31,7 +31,7 @@ import manifold3d as mf
 import numpy as np
 
 from ....base.records import Compared
-from ....base.diagnostics import DiagnosticSink, Label
+from ....base.diagnostics import Diagnostic, DiagnosticSink, Label
 from ....geometry.core.model import Structure
 from ....geometry.shapes.tessellate import CHORD_TOL
 from ...part.build.booleans import Drawing
@@ -40,7 +40,7 @@ from ...part.measure.nearby import (boundaries, boundary, box_pairs, box_pairs_b
 from .clearing import move_fix
 from .contact import circle_of, contact_points
 from .meant import MeantMerge
-from ..common import (MIN_AREA, MIN_WALL, _area, _contributors, _depth, _edge_distance, _edges, _insert_fix,
+from ..common import (MIN_AREA, MIN_WALL, _area, _contributors, _cross, _depth, _edge_distance, _edges, _insert_fix,
                       _inside, _loop_boxes, _part_of, _pct, _signed, _significant, _union,
                       below)
 
@@ -564,10 +564,13 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
                               "keep the screw's through hole and delete the wider one, or "
                               "engrave the wider outline in a `drawing`)")
             continue
+        crossing = common is not None and a.cuts and _cross(a.cuts[i - 1].region,
+                                                                a.cuts[j - 1].region)
         if common is None:
             how, far = "touch", f"{t:g} mm" if t > 0 else "a little"
         else:
-            how = f"overlap by {depth:.2f} mm ({common:.2f} mm^2 in common)"
+            how = (f"cross ({common:.2f} mm^2 in common)" if crossing else
+                   f"overlap by {depth:.2f} mm ({common:.2f} mm^2 in common)")
             far = f"{_enough(depth + t if t > 0 else depth)} mm"
         labels = [Label(a.spans[i], f"{first} is here", primary=False)] if a.spans[i] else []
         where, stmt = _allow_holes(a.cuts[i - 1].hole, a.cuts[j - 1].hole) if a.cuts \
@@ -575,8 +578,8 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
         unnamed = bool(stmt) and stmt.endswith(", NAME)")   # a copy of an unnamed pattern
         meant = (f"name the pattern statement that copies it (`NAME = ` before it) and write "
                  f"`{stmt}` after it" if unnamed else
-                 f"write `{stmt}` in `{where.path}` (or draw both shapes in one hole "
-                 "structure, whose faces may overlap)" if stmt else
+                 f"write `{stmt}` in {_body(where)}, or draw both shapes in one hole "
+                 "structure (whose faces may overlap)" if stmt else
                  "name the pattern statement that copies them (`NAME = ` before it) and "
                  "write `AllowOverlap(NAME)` after it (the list holds the original and every "
                  "copy)" if stmt == "" else
@@ -592,12 +595,16 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
         # most of one inside the other, both placed by relations (no call to edit): one
         # opening looks meant, and the hint leads with it (no machine fix either way)
         share = _share_inside(a, i, j, common) if fix is None else None
-        if fix is None and share is None and a.cuts and _cross(a.cuts[i - 1], a.cuts[j - 1]):
-            # each runs past the other on both sides: a cross-shaped opening (run ag's earring
-            # tree: two mortises crossing for a halved trunk; "move it 3.67 mm" broke it)
-            hint = (f"the two cross (each runs past the other on both sides), as one "
-                    f"cross-shaped opening: if it is meant, {meant}; if two are meant, {move}")
-        elif share is not None:
+        if fix is None and share is None and crossing:
+            # each runs past the other on both sides: a note, both crossings of the corpus
+            # (1,430 programs) meant (run ag's halved mortises, "move it 3.67 mm" broke them;
+            # run at's pin channels across a tambourine's windows)
+            sink.add(Diagnostic("W0508", f"{first} and {second} of `{s.path}` {how}: they cut "
+                                "one cross-shaped opening", a.spans[j], "note", labels=labels,
+                                hint=f"if it is meant, nothing is needed (to say so: "
+                                     f"{meant}); if two openings are meant, {move}"))
+            continue
+        if share is not None:
             smaller, other = share[1], (second if share[1] == first else first)
             hint = (f"one opening looks meant ({share[0]:.0%} of {smaller} lies inside "
                     f"{other}): {meant}; if two are meant, {move}, or shrink one of them so "
@@ -689,6 +696,13 @@ def _holes_allowed(ci, cj) -> bool:
 # a reference the program can write: names, indices and members (`rings[0][1]`, `a.b[2]`); a
 # copy made by a pattern with no name is `ring[0]_pattern[1]`, which no program can write
 _NAMEABLE = re.compile(r"[A-Za-z_]\w*(\[\d+\])*(\.[A-Za-z_]\w*(\[\d+\])*)*\Z")
+
+
+def _body(s: Structure) -> str:
+    """Where a statement for structure ``s`` is written: `` `path` ``, or the body of the
+    template that makes it (run at's tambourine: "in `tambourine.middle`", a call)."""
+    t = getattr(s, "template", None)
+    return f"the body of `{t}` (the template that makes `{s.path}`)" if t else f"`{s.path}`"
 
 
 def _allow_holes(hi: Structure, hj: Structure) -> tuple:
@@ -949,16 +963,6 @@ def _check_stray_shapes(d: Drawing, cut, part, roots, sink: DiagnosticSink) -> N
 
 
 OVERRUN_NEAR = 0.5      # mm: an `overrun=true` shape this near its solid's box is at its edge
-
-
-def _cross(c1, c2) -> bool:
-    """Whether the cut regions of two holes cross: each box runs past the other's on both
-    sides along one axis and lies within it along the other."""
-    if c1.region is None or c2.region is None:
-        return False
-    (a0, b0, a1, b1), (c0, d0, c1_, d1) = c1.region.bounds(), c2.region.bounds()
-    return ((a0 < c0 and a1 > c1_ and d0 < b0 and d1 > b1)
-            or (c0 < a0 and c1_ > a1 and b0 < d0 and b1 > d1))
 
 
 def _over_opening(d: Drawing, hole_shape, whole: float, part, roots) -> bool:
