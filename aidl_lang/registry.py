@@ -784,6 +784,17 @@ UNITS_LENGTH = {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4, "inch": 25.4, "i
                 "ft": 304.8}
 UNITS_ANGLE = {"deg": 3.141592653589793 / 180.0, "rad": 1.0}
 
+# closed shapes a drawing engraves filled with `fill=true` (issue 111, runs at and av: a
+# warning triangle's 8 mm border drawn as 241 hand-clipped lines, dominoes' pips as rings)
+FILL = Arg("fill", "bool", False, "in a drawing: the closed shape's area engraved filled (on "
+           "the fill layer), not its outline", kw_only=True)
+FILLABLE = ("Circle", "Rectangle", "RoundedRectangle", "Triangle", "Trapezoid", "Ellipse",
+            "Polygon", "Polyline", "Spline", "Bezier", "RegularPolygon", "Slot", "ArcSlot",
+            "Sector", "Star", "Offset", "Inset", "Shell", "Stroke", "Hull", "Intersect")
+for _n in FILLABLE:
+    _spec = _DEFS[_n]
+    _DEFS[_n] = (_spec[0], [tuple(v) + (FILL,) for v in _spec[1]]) + tuple(_spec[2:])
+
 ENTRIES: dict[str, Entry] = {n: Entry(n, *spec) for n, spec in _DEFS.items()}
 
 

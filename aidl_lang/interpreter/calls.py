@@ -374,9 +374,9 @@ class Calls:
                             f"`{bad[0].path}`")
                 raise EvalError("E0201", f"geometry in `{s.path}` refers to `{k}` of `{bad[0].path}`, "
                                 f"another structure", spans.get(k, node.span), hint=hint)
-        if kind == "Text" and conv.get("fill"):
+        if conv.get("fill"):
             from .fonts import text_fill
-            text_fill(conv, s, node, spans)
+            text_fill(conv, s, node, spans, kind)
         if kind == "Text" and conv.get("font") is not None:
             from .fonts import text_font
             text_font(self, conv, s, node, spans)

@@ -66,10 +66,20 @@ def font_missing(interp, g, spans, node) -> None:
                                  "Greek and Cyrillic), or write the text without them")
 
 
-def text_fill(conv: dict, s, node, spans) -> None:
+def text_fill(conv: dict, s, node, spans, kind: str = "Text") -> None:
     """``Text(..., fill=true)``: the letters' area engraved, which needs letters with an area
-    (``font=``) in a ``drawing``; E0108 at ``fill=`` otherwise, its hint what to write."""
+    (``font=``) in a ``drawing``; E0108 at ``fill=`` otherwise, its hint what to write.  A
+    closed shape's ``fill=true`` (``kind``, not Text): in a drawing only, likewise."""
     at = spans.get("fill", node.span)
+    if kind != "Text":
+        if s.kind != "drawing":
+            raise EvalError("E0108", f"`fill=true` engraves a shape's area in a drawing; in "
+                            f"{s.kind} `{s.name}` the shape is "
+                            + {"solid": "material already", "hole": "an opening already"}.get(
+                                s.kind, "not engraved"), at,
+                            hint="leave out fill=, or put the shape in `drawing mark { ... }` "
+                                 "to engrave its area on the part")
+        return
     if conv.get("font") is None:
         raise EvalError("E0108", "`fill=true` fills the letters of a font; the single-stroke "
                         "engraving font has lines, no area", at,

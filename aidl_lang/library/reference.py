@@ -781,7 +781,9 @@ material; W0507: a web thinner than the minimum wall between cuts. Templates may
     "drawing": ("statement", "`drawing NAME { ... }`: engraved lines and text, not filled.", """
 `drawing NAME { ... }`: its shapes are drawn as lines (closed shapes as outlines) and Text as
 single strokes (with `font=`: the letters' outlines; with `font=` and `fill=true`: the letters'
-area, on a fill layer), on the `engrave` layer; nothing else is filled, nothing is cut. Text
+area, on a fill layer), on the `engrave` layer; a closed shape with `fill=true` (a Circle, a
+Polygon, a closed Spline, a Stroke, ...) is its area engraved filled, on the fill layer
+(domino pips, a sign's solid border: a `Shell`); nothing else is filled, nothing is cut. Text
 is only allowed in a drawing (a Text with `font=` also in a solid, as material,
 and a hole, as openings). Put it inside the solid it marks. A `hole` in a drawing hides the drawing's lines
 (its own and its children's) where it covers them, and draws no line of its own: a shape in front of

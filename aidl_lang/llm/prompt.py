@@ -30,7 +30,7 @@ A program is a tree of named structures: `solid NAME { ... }` (filled; unions it
 `hole NAME { ... }` (cut out of the enclosing solid; in a drawing: hides its lines there, drawing none of its own,
 which a solid's hole does not: they run across it), `cut NAME { ... }` (in a solid: the
 laser cuts along each curve, open Lines too: slits; in an assembly: on the sheet, no part), `drawing NAME { ... }` (engraved lines
-and text, not filled), `assembly NAME { ... }` (separate parts). Inside a structure: geometry
+and text; a closed shape with `fill=true`: its area engraved filled), `assembly NAME { ... }` (separate parts). Inside a structure: geometry
 (`body = Rectangle(center=(0, 0), width=40, height=20)`), child structures, constraints as
 statements (`Above(lid, body)`, `Coincident(a.end, b.start)`) and equations
 (`lid.bb.width == body.bb.width`, `x <= 60`; join with `and`). Geometry and constraints only

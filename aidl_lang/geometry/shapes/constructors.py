@@ -26,6 +26,13 @@ def build(ctx, kind: str, args: dict, span) -> Geometry:
     g.pattern_original = None
     fn = _BUILD[kind]
     fn(ctx, g, args)
+    if args.get("fill") and kind != "Text":     # (a Text's fill is its font's: text_outlines)
+        if not g.closed:
+            raise primitives.PrimitiveError(
+                f"fill=true needs a closed shape: this {kind} is open, a line with no area",
+                hint="close it (`closed=true`; an Ellipse with no start_angle), or draw the "
+                     "area as a closed shape")
+        g.data["fill"] = True          # a drawing engraves its area (style "fill")
     if args.get("overrun"):
         # drawn, left out of its structures' boxes (relations/bbox.py): a cut's run past the
         # part's edge (issue 111)

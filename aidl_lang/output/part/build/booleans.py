@@ -299,7 +299,16 @@ class Renderer(Faces):
 
     def draw_lines(self, g: Geometry, out: Drawing, style: str = "drawing") -> None:
         """The lines of a drawing's geometry ``g`` as exact strokes of ``style`` (``drawing``:
-        engraved; ``cut``: a sheet-level cut, :meth:`sheet_cut`) and as polylines."""
+        engraved; ``cut``: a sheet-level cut, :meth:`sheet_cut`) and as polylines; a closed
+        shape with ``fill=true`` in a drawing: its area's exact loops, style ``fill``."""
+        if style == "drawing" and g.data.get("fill") and g.kind != "Text":
+            area = self.face(g)         # its area (a self-crossing outline: as Manifold fills)
+            for lp in (self.exact.loops(area) if area is not None and not area.is_empty()
+                       else []):
+                pl = lp.points()
+                out.lines.append(("fill", np.vstack([pl, pl[:1]])))
+                out.strokes.append(("fill", ("poly", pl, lp), g))
+            return
         if g.kind == "Drawing2D":
             loops, paths = self.drawing2d(g)
             for lp in loops:
