@@ -399,3 +399,18 @@ def test_fill_on_a_shape_where_it_has_no_meaning_is_E0108(where, shape, words):
                                  "height=30)\n" + body + "}\n")
     (e,) = [d for d in r.diagnostics if d.code == "E0108"]
     assert words in e.message
+
+
+def test_W0405_of_an_assert_before_a_fillet_gives_a_fix_that_clears_it():
+    """Run ax: W0405's hint "assert on the final outline by adding the difference to that
+    side" cannot clear it: an assert is judged on the shapes as drawn (E0405), so the
+    difference added fails it there. The hint gives the fixes that make the final outline
+    the size asserted; a side a rounding moves by less than 0.05 mm (run t's shelf, 0.023 mm)
+    is the size asserted, while run av's fin (2.771 mm in) stays said: a member is the part
+    (issue 109's law)."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111av/run/02_laptop_dock.first_valid.aidl"))
+    (w,) = [d for d in r.diagnostics if d.code == "W0405"]
+    assert "adding the difference" not in w.hint.split("(")[0]
+    assert "draw that corner round (a `Hull` with a `Circle`" in w.hint
+    r2 = aidl_lang.compile(path=str(RUNS / "issue111t/run/02_corner_shower_shelf.first_valid.aidl"))
+    assert not [d for d in r2.diagnostics if d.code == "W0405"]

@@ -568,7 +568,10 @@ that is its structure's outline on the side read (`assert body.bb.height == 180 
 stake whose `Fillet(2)` took 21.4 mm off its 9.8-degree point), and for the box of a shape
 whose structure's own holes cut the outline on that side (`assert sail.body.bb.width == 70 mm`
 on a sail whose notch cut a corner off: "before its holes"; not a joint template's cut, which
-its mate fills: a cross-halving slot at a rocket's nose). Also a relation
+its mate fills: a cross-halving slot at a rocket's nose). The assert's fix is not the
+difference added (the assert is judged as drawn, so it would fail there): draw the corner round
+(a `Hull` with a `Circle` at the tip) or round only the corners away from that side. A side a
+rounding moves by less than 0.05 mm (a corner a little off square) is not said. Also a relation
 on the box of a shape made from others whose box is its drawn outline's (an `Inset`, a
 miter-joined `Offset` or `Shell`, an `Intersect`: exact at the solution) that the solution
 still misses after the solver solved again from it: the solve moved the shapes it is made
