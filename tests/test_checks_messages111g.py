@@ -414,3 +414,31 @@ def test_W0405_of_an_assert_before_a_fillet_gives_a_fix_that_clears_it():
     assert "draw that corner round (a `Hull` with a `Circle`" in w.hint
     r2 = aidl_lang.compile(path=str(RUNS / "issue111t/run/02_corner_shower_shelf.first_valid.aidl"))
     assert not [d for d in r2.diagnostics if d.code == "W0405"]
+
+
+def test_a_line_starting_with_an_operator_no_statement_starts_with_goes_on():
+    """Run ax's Newton's cradle broke an assert before its `==` (E0001 "unexpected =="): a
+    line that starts with `==`, `<`, `and`, `or`, `*`, `%` goes on the line before it (no
+    statement starts so); the run's own attempt now checks. A line starting with `-` or a
+    name that begins with `and` (`andy`) is a statement of its own."""
+    src = (RUNS / "issue111ax/drafts/07_newtons_cradle.attempt1.aidl").read_text()
+    assert not _errors(aidl_lang.compile(source=src))
+    ok = """solid a {
+    r = Rectangle(center=(0, 0), width=10, height=5)
+    assert r.width
+        == 10 mm, "w"
+    assert r.width > 1 mm
+    and r.height < 9 mm
+    k = 2
+        * 3
+    assert k == 6
+}
+"""
+    r = aidl_lang.compile(source=ok)
+    assert not _errors(r), [d.message for d in r.diagnostics]
+    wrong = ok.replace("    assert k == 6\n", "    assert k == 6\n    andy = 5\n    assert andy"
+                                                 "\n        == 4, \"four\"\n")
+    (e,) = _errors(aidl_lang.compile(source=wrong))
+    assert e.code == "E0405" and "5 == 4 is false" in e.message
+    minus = ok.replace("        * 3\n", "        - 3\n")       # `- 3` a statement: k stays 2
+    assert any("2 == 6 is false" in d.message for d in _errors(aidl_lang.compile(source=minus)))

@@ -24,6 +24,10 @@ _ELSE = frozenset(("ELSE", "ELIF"))
 # (runs aa, ad: an assert's message after its `,`; run ae: a condition broken after `and`)
 CONTINUES = frozenset(("COMMA", "AND", "OR", "NOT", "COMP_OP", "ADD_OP", "MUL_OP", "POW",
                        "EQUAL"))
+# a line starting with one of these (no statement can) goes on the line before it, at any
+# indent (run ax: an assert broken before its `==`, E0001); `/` and `//` not (a comment may)
+LEADS = frozenset(("AND", "OR", "COMP_OP", "POW"))
+LEAD_MUL = frozenset(("*", "%"))
 
 
 def _postlex(types: list, spans: list, text: str, complete: bool = True) -> tuple[list, list]:
@@ -39,7 +43,8 @@ def _postlex(types: list, spans: list, text: str, complete: bool = True) -> tupl
       operator or ``=`` (:data:`CONTINUES`) before a line indented deeper than the statement's
       first (it goes on, as `assert COND,` with the message on the next line or a condition
       broken after `and`; at the statement's own indent, a new statement: the operand
-      missing), and repeats collapse;
+      missing), and before a line that starts with an operator no statement starts with
+      (:data:`LEADS`: `==`, `<`, `and`, `or`, `*`, `%`, `**`), and repeats collapse;
     - a closing ``}`` ends a statement even without a newline (``} stmt`` on one line): an
       ``_NL`` at the ``}``'s span is put in (its text is ``"\n"``, see :func:`_token`).
 
@@ -73,9 +78,10 @@ def _postlex(types: list, spans: list, text: str, complete: bool = True) -> tupl
                 pending, cont = sp, after in CONTINUES
             continue
         if pending is not None:
-            if t not in _ELSE and not (cont and sp[2] > col):
-                push_t("_NL")   # (a line after `,` or `and`, indented deeper, goes on)
-                push_s(pending)
+            if t not in _ELSE and not (cont and sp[2] > col) and not (
+                    t in LEADS or t == "MUL_OP" and text[sp[5]:sp[6]] in LEAD_MUL):
+                push_t("_NL")   # (a line after `,` or `and`, indented deeper, goes on; so
+                push_s(pending)  # does one starting with `==` or `and`)
             pending = None
         if not out_t or out_t[-1] in _STATEMENT_START:
             col = sp[2]
@@ -122,7 +128,9 @@ class _PostLex:
                     pending, cont = tok, after in CONTINUES
                 continue
             if pending is not None:
-                if tok.type not in ("ELSE", "ELIF") and not (cont and tok.column > col):
+                if tok.type not in ("ELSE", "ELIF") and not (cont and tok.column > col) and \
+                        not (tok.type in LEADS or tok.type == "MUL_OP"
+                             and tok.value in LEAD_MUL):
                     last = "_NL"
                     yield pending
                 pending = None

@@ -5,7 +5,9 @@
  *
  * - newlines where a statement may end (the grammar says where: NEWLINE is valid), one token
  *   for a run of blank lines; none before `else`/`elif` (the post-lexer drops those), so
- *   `}` NEWLINE `else {` continues the `if`. The token is empty: the line breaks before it
+ *   `}` NEWLINE `else {` continues the `if`, and none before a line that starts with an
+ *   operator no statement starts with (`==`, `<`, `and`, `*`, ...: it goes on). The token
+ *   is empty: the line breaks before it
  *   are its padding, so a comment between them keeps its place;
  * - comments: `# ...`, block comments (slash-star to star-slash), and `// ...` where `//` is not floor division;
  * - `//`: floor division when the parser is after an operand (FLOOR_DIV is valid) and not at
@@ -224,6 +226,29 @@ static bool is_else(TSLexer *lexer) {
   return false;
 }
 
+/* a line that starts with an operator no statement starts with goes on the line before it
+ * (the post-lexer's LEADS, aidl_lang/parsing/lexing.py): `==`, `!=`, `<`, `>`, `*`, `%`,
+ * `and`, `or` (not `/`: a comment may start so) */
+static bool is_lead(TSLexer *lexer) {
+  int32_t c = lexer->lookahead;
+  if (c == '<' || c == '>' || c == '*' || c == '%') return true;
+  if (c == '=' || c == '!') {
+    advance(lexer);
+    return lexer->lookahead == '=';
+  }
+  if (c == 'a') {
+    advance(lexer);
+    if (lexer->lookahead != 'n') return false;
+    advance(lexer);
+    return word_is(lexer, "d");
+  }
+  if (c == 'o') {
+    advance(lexer);
+    return word_is(lexer, "r");
+  }
+  return false;
+}
+
 bool tree_sitter_aidl_cad_external_scanner_scan(void *payload, TSLexer *lexer,
                                             const bool *valid_symbols) {
   (void)payload;
@@ -333,7 +358,7 @@ bool tree_sitter_aidl_cad_external_scanner_scan(void *payload, TSLexer *lexer,
 
   if (newline) {
     /* the (empty) token ends before the next line's first word */
-    if (is_else(lexer)) return false;
+    if (lexer->lookahead == 'e' ? is_else(lexer) : is_lead(lexer)) return false;
     lexer->result_symbol = NEWLINE;
     return true;
   }
