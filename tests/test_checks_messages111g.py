@@ -442,3 +442,14 @@ def test_a_line_starting_with_an_operator_no_statement_starts_with_goes_on():
     assert e.code == "E0405" and "5 == 4 is false" in e.message
     minus = ok.replace("        * 3\n", "        - 3\n")       # `- 3` a statement: k stays 2
     assert any("2 == 6 is false" in d.message for d in _errors(aidl_lang.compile(source=minus)))
+
+
+def test_W0517_of_a_part_sunk_deep_leads_with_moving_it():
+    """Runs av and aw: an arm sunk 6 mm into its back plate by a `Place` (the sign of an
+    offset) got "a slot or a gap is 6 mm narrower ...: widen it" first; a collision 1 mm deep
+    or more leads with moving the part."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111av/run/06_skateboard_rack.first_valid.aidl"))
+    w = [d for d in r.diagnostics if d.code == "W0517"]
+    assert len(w) == 2
+    assert w[0].hint.startswith("one part runs 6 mm into the other, more than a slot is ever "
+                                "too narrow: move the part with its `Place`")

@@ -1086,7 +1086,9 @@ there. Most often a slot (or the gap between two fingers) is narrower than the t
 part that goes in it, or the material is thicker than the joint was drawn for. The warning
 names both parts, the common volume, its depth (the smallest side of its box: by how much the
 slot is too narrow) and the box where it lies. Widen the slot to the partner's thickness, use
-the material the joint was drawn for, or move the part with its `Place`. Two parts meant to
+the material the joint was drawn for, or move the part with its `Place`; a collision 1 mm
+deep or more is a part misplaced (an offset's sign, a position), and the hint leads with
+moving it. Two parts meant to
 share material (a press fit drawn to size, an inlay) are named in `AllowOverlap(a, b)` in
 their assembly, which this check then leaves alone, as W0511 does. The check reads the
 designed parts: a `kerf` is compensated in the cut files, so the parts come out that size.

@@ -13,6 +13,9 @@ from ..part.build.booleans import Drawing
 # product (drawn beside it on the sheet): W0518 for it is a note (run as: three cards laid
 # `gap=5` apart were warned, their gaps 5 mm less a rounding, the fourth a note)
 AWAY = 5.0
+# mm: a collision this deep or deeper is a part misplaced, not a slot too narrow (runs av, aw:
+# an arm sunk 6 mm into its back plate, a lip 6 mm into its ledge: "widen it" was first)
+SLOT_SHORT = 1.0
 
 
 def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
@@ -52,12 +55,16 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                      f"{c.volume:.3g} mm^3, {c.depth:.3g} mm deep, in x {x0:.6g}..{x1:.6g}, "
                      f"y {y0:.6g}..{y1:.6g}, z {z0:.6g}..{z1:.6g} mm", at(c.b) or sa,
                      labels=labels,
-                     hint=f"a slot or a gap is {c.depth:.3g} mm narrower than the part that "
-                          "goes in it: widen it to the partner's thickness (or make the "
-                          "material thinner), or move the part with its `Place`; if they are "
-                          f"meant to share material (a press fit, an inlay), "
-                          f"`AllowOverlap({c.a.split('.')[-1]}, {c.b.split('.')[-1]})` in their "
-                          "assembly says so")
+                     hint=(f"a slot or a gap is {c.depth:.3g} mm narrower than the part that "
+                           "goes in it: widen it to the partner's thickness (or make the "
+                           "material thinner), or move the part with its `Place`"
+                           if c.depth < SLOT_SHORT else
+                           f"one part runs {c.depth:.3g} mm into the other, more than a slot "
+                           "is ever too narrow: move the part with its `Place` (its position "
+                           "or the sign of an offset), or widen the slot if it is one")
+                     + f"; if they are meant to share material (a press fit, an inlay), "
+                       f"`AllowOverlap({c.a.split('.')[-1]}, {c.b.split('.')[-1]})` in their "
+                       "assembly says so")
     from ...base.diagnostics import in_stdlib
 
     def templates(name) -> bool:
