@@ -365,7 +365,9 @@ def hinged_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=
 # the sides, the top and the back. `length` x `depth` x `height` (mm) is the
 # carcass's outer size when `outside=true`, else the space inside it.
 # Members: `carcass` (bottom, top, back, left, right) and `box` (bottom,
-# front, back, left, right).
+# front, back, left, right); the finger pull is `box.front.pull` (its circle
+# `box.front.pull.p`, 20 mm across, or half the front's height if less, at the
+# front's centre: a label on the front goes above or below it).
 # Anchor: (cx, cy) is the centre of `carcass.bottom`.
 def drawer(length=120 mm, depth=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
            clearance=0.3 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {

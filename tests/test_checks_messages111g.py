@@ -453,3 +453,17 @@ def test_W0517_of_a_part_sunk_deep_leads_with_moving_it():
     assert len(w) == 2
     assert w[0].hint.startswith("one part runs 6 mm into the other, more than a slot is ever "
                                 "too narrow: move the part with its `Place`")
+
+
+def test_drawers_docs_name_its_finger_pull_and_the_path_reaches_it():
+    """Run ax's note drawers engraved labels across the drawer's finger pull, whose name
+    (`box.front.pull`) and size the docs never gave. They do now, and the path is the pull:
+    20 mm across at the front's centre."""
+    from aidl_lang.library.reference import find
+    assert "`box.front.pull.p`" in find("drawer").text
+    r = aidl_lang.compile(source='import "std/boxes.aidl"\nd = drawer()\n')
+    assert r.ok
+    assert r.value("d.box.front.pull.p.radius").value == pytest.approx(10.0)
+    c = r.value("d.box.front.pull.p.center").value
+    b = r.value("d.box.front.bbox").value
+    assert c[0] == pytest.approx((b[0] + b[2]) / 2)
