@@ -461,7 +461,8 @@ def check_assertions(sink: DiagnosticSink, model: Model, held_only: bool = False
     from .geometry.relations.assertions import describe, failed
     x = None if held_only else model.xs()
     for a, bad in failed(model, held_only):
-        sink.add(Diagnostic("E0405", describe(a, bad, len(a.groups), x), a.span, "error",
+        sink.add(Diagnostic("E0405", describe(a, bad, len(a.groups), x, model.param_owner),
+                            a.span, "error",
                             hint="an `assert` states what must be true of the design; change "
                                  "the values or constraints so that it holds (it is not a "
                                  "constraint: the solver does not try to satisfy it)"),

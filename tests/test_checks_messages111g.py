@@ -467,3 +467,23 @@ def test_drawers_docs_name_its_finger_pull_and_the_path_reaches_it():
     c = r.value("d.box.front.pull.p.center").value
     b = r.value("d.box.front.bbox").value
     assert c[0] == pytest.approx((b[0] + b[2]) / 2)
+
+
+@pytest.mark.parametrize("path,line,part,by", [
+    ("issue111as/drafts/06_nativity_stable.attempt1.aidl", 115, "stable.back",
+     "`RightOf(back, base, gap=8)` (line 88)"),
+    ("issue111au/drafts/04_dog_nail_board.attempt1.aidl", 57, "scratch_board.left",
+     "`Below(left, board, gap=10)` (line 51)"),
+    ("issue111ay/drafts/07_bead_loom.attempt2.aidl", 105, "loom.right_half",
+     "`Below(right_half, left_half, gap=6)` (line 87)")])
+def test_E0405_on_a_part_a_layout_moved_names_the_move(path, line, part, by):
+    """Runs as, au, aw and ay failed a first check on asserts that read coordinates of a part
+    a layout relation (`Below`, `RightOf`) had moved: "63 mm == 125 mm is false", and no word
+    of why. E0405 says where the part lies from where it is written and which relations
+    moved it; an assert that reads no place (a constant, a size) says nothing of it."""
+    r = aidl_lang.compile(source=(RUNS / path).read_text())
+    e = [d for d in r.diagnostics if d.code == "E0405" and d.span.line == line]
+    assert len(e) == 1
+    assert f"`{part}` lies (" in e[0].message and f"moved by {by}" in e[0].message
+    assert not any("moved by" in d.message for d in r.diagnostics
+                   if d.code == "E0405" and "back_y - base_y" in d.message)

@@ -8,6 +8,7 @@ there) and :func:`describe` says what was found.  A condition holds within :data
 from __future__ import annotations
 
 import math
+import numpy as np
 
 from .bbox import collect, contains_bbox, exclusions, expand
 from ..core.expr import Lin, evaluate
@@ -45,12 +46,80 @@ def _show(v: float, dim, a: Assertion) -> str:
     return f"{v:.6g}"
 
 
-def describe(a: Assertion, found: list, alternatives: int = 1, x=None) -> str:
+def _structures_read(a: Assertion, owners) -> list:
+    """The structures whose geometry or box the assertion reads (boxes' targets, and through
+    ``owners``, the model's ``param_owner``, those of the parameters its reads use)."""
+    out: list = []
+    for t in _box_terms(a):
+        tg = t.target
+        out.append(tg if hasattr(tg, "children") else getattr(tg, "owner", None))
+    todo = [e for _, e, dim in a.reads if dim != "said"] + [
+        side for grp in a.groups for _, le, re_, _ in grp for side in (le, re_)
+        if not isinstance(side, (int, float))]
+    while todo and owners is not None:
+        e = todo.pop()
+        if isinstance(e, Lin):
+            out += [owners[k] for k in e.terms if k < len(owners)]
+        elif hasattr(e, "args"):
+            todo += [v for v in e.args if not isinstance(v, (int, float))]
+    return [s for s in dict.fromkeys(o for o in out if o is not None)]
+
+
+def _reads_place(a: Assertion, x, fx: int, fy: int) -> bool:
+    """Whether a side of ``a`` changes when the frame (``fx``, ``fy``) is put back where it
+    is written: the assert reads where the part lies, not only its sizes."""
+    y = np.array(x, dtype=float)
+    y[fx] = y[fy] = 0.0
+    for grp in a.groups:
+        for _, le, re_, _ in grp:
+            for side in (le, re_):
+                if isinstance(side, (int, float)):
+                    continue
+                try:
+                    if abs(evaluate(side, x) - evaluate(side, y)) > 1e-6:
+                        return True
+                except (ArithmeticError, KeyError, TypeError, ValueError, IndexError):
+                    continue
+    return False
+
+
+def _moved_part(a: Assertion, x, owners) -> str:
+    """Where a part the assertion reads was moved from where it is written, and by which
+    relation (runs as, au, aw, ay: asserts on coordinates a layout's `Below`/`RightOf` had
+    moved, "-13 mm == 137 mm is false" with no word of why): ``""`` when none was."""
+    if x is None:
+        return ""
+    for s in _structures_read(a, owners):
+        chain = [s] + list(s.ancestors()) if hasattr(s, "ancestors") else [s]
+        for p in reversed(chain):              # the outermost moved first
+            fx, fy = getattr(p, "fx", None), getattr(p, "fy", None)
+            if p.parent is None or fx is None or getattr(p, "copy_origin", None) is not None:
+                continue
+            try:
+                dx, dy = float(x[fx]), float(x[fy])      # (its frame: where it went)
+            except (IndexError, TypeError):
+                continue
+            if math.hypot(dx, dy) <= 0.01 or not _reads_place(a, x, fx, fy):
+                continue
+            by = [c for c in p.parent.constraints if not c.implicit and c.args
+                  and any(p is t or (hasattr(t, "is_within") and t.is_within(p))
+                          for t in c.args[0])]
+            how = " and".join(f" by `{c.describe()}`" + (f" (line {c.span.line})" if c.span
+                                                          is not None else "") for c in by[:2])
+            return (f"; `{p.path}` lies ({dx:+.6g}, {dy:+.6g}) mm from where it is written, "
+                    f"moved{how}: the assert reads it where it lies now (compare members of "
+                    f"one part, which move together)")
+    return ""
+
+
+def describe(a: Assertion, found: list, alternatives: int = 1, x=None, owners=None) -> str:
     """The E0405 message: the condition, the user's reason and the values found
     (``found``: ``(op, left, right, dim)`` of the sides that fail; ``alternatives``: how
     many alternatives of an `or` failed, each by the sides found), then the value of each
     name and member the condition reads (``a.reads``, at the solution ``x`` when given),
-    where it is not the side itself: `(ring.bb.width = 124 mm, wall = 3 mm)`."""
+    where it is not the side itself: `(ring.bb.width = 124 mm, wall = 3 mm)`; a part it reads
+    that a relation moved from where it is written, and the relation (``owners``: the model's
+    ``param_owner``)."""
     why = f" ({a.message})" if a.message else ""
     parts = []
     for op, l, r, dim in found[:3]:
@@ -60,7 +129,7 @@ def describe(a: Assertion, found: list, alternatives: int = 1, x=None) -> str:
             if not a.text.strip() == text]
     where = f" (where {', '.join(said)})" if said else ""
     return (f"assertion failed: `{a.text}`{why}: {lead}" + "; ".join(parts) + where
-            + _drawn_boxes(a, x) + _text_boxes(a, x) + _star_boxes(a, x))
+            + _drawn_boxes(a, x) + _text_boxes(a, x) + _star_boxes(a, x) + _moved_part(a, x, owners))
 
 
 def _box_terms(a: Assertion) -> list:
