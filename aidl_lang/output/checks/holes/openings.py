@@ -40,8 +40,8 @@ from ...part.measure.nearby import (boundaries, boundary, box_pairs, box_pairs_b
 from .clearing import move_fix
 from .contact import circle_of, contact_points
 from .meant import MeantMerge
-from ..common import (MIN_AREA, MIN_WALL, _area, _contributors, _cross, _depth, _edge_distance, _edges, _insert_fix,
-                      _inside, _loop_boxes, _part_of, _pct, _signed, _significant, _union,
+from ..common import (MIN_AREA, MIN_WALL, _area, _body, _contributors, _cross, _depth, _edge_distance, _edges, _insert_fix,
+                      _inside, _loop_boxes, _opens, _part_of, _pct, _signed, _significant, _union,
                       below)
 
 def _intended(hole: Structure, owner: Structure, obj) -> bool:
@@ -566,6 +566,10 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
             continue
         crossing = common is not None and a.cuts and _cross(a.cuts[i - 1].region,
                                                                 a.cuts[j - 1].region)
+        # one of them opens through the outline into the other (a USB notch into a window, a
+        # clip's mouth into its bore: runs bb, az): one opening from the edge, as crossing
+        edge = common is not None and a.cuts and shapes is not None and \
+            _opens(a.cuts[i - 1], shapes) != _opens(a.cuts[j - 1], shapes)
         if common is None:
             how, far = "touch", f"{t:g} mm" if t > 0 else "a little"
         else:
@@ -585,6 +589,17 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
                  "copy)" if stmt == "" else
                  "draw both shapes in one hole structure (the faces of one hole may overlap)")
         move, fix = f"move {second} {far} further from {first}", None
+        if crossing or edge:
+            # a note: every crossing of the corpus was meant (run ag's halved mortises, "move
+            # it 3.67 mm" broke them; run at's pin channels across a tambourine's windows), and
+            # so each opening from the edge into a hole (run bb's USB notch into a window)
+            sink.add(Diagnostic("W0508", f"{first} and {second} of `{s.path}` {how}: they cut "
+                                + ("one cross-shaped opening" if crossing else
+                                   "one opening, from the outline into the other"),
+                                a.spans[j], "note", labels=labels,
+                                hint=f"if it is meant, nothing is needed (to say so: "
+                                     f"{meant}); if two openings are meant, {move}"))
+            continue
         if stmt and not unnamed \
                 and _copies_of_one(stmt, a.cuts[i - 1].hole, a.cuts[j - 1].hole) \
                 and depth >= max(t, MIN_WALL):
@@ -595,15 +610,6 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
         # most of one inside the other, both placed by relations (no call to edit): one
         # opening looks meant, and the hint leads with it (no machine fix either way)
         share = _share_inside(a, i, j, common) if fix is None else None
-        if fix is None and share is None and crossing:
-            # each runs past the other on both sides: a note, both crossings of the corpus
-            # (1,430 programs) meant (run ag's halved mortises, "move it 3.67 mm" broke them;
-            # run at's pin channels across a tambourine's windows)
-            sink.add(Diagnostic("W0508", f"{first} and {second} of `{s.path}` {how}: they cut "
-                                "one cross-shaped opening", a.spans[j], "note", labels=labels,
-                                hint=f"if it is meant, nothing is needed (to say so: "
-                                     f"{meant}); if two openings are meant, {move}"))
-            continue
         if share is not None:
             smaller, other = share[1], (second if share[1] == first else first)
             hint = (f"one opening looks meant ({share[0]:.0%} of {smaller} lies inside "
@@ -696,13 +702,6 @@ def _holes_allowed(ci, cj) -> bool:
 # a reference the program can write: names, indices and members (`rings[0][1]`, `a.b[2]`); a
 # copy made by a pattern with no name is `ring[0]_pattern[1]`, which no program can write
 _NAMEABLE = re.compile(r"[A-Za-z_]\w*(\[\d+\])*(\.[A-Za-z_]\w*(\[\d+\])*)*\Z")
-
-
-def _body(s: Structure) -> str:
-    """Where a statement for structure ``s`` is written: `` `path` ``, or the body of the
-    template that makes it (run at's tambourine: "in `tambourine.middle`", a call)."""
-    t = getattr(s, "template", None)
-    return f"the body of `{t}` (the template that makes `{s.path}`)" if t else f"`{s.path}`"
 
 
 def _allow_holes(hi: Structure, hj: Structure) -> tuple:
