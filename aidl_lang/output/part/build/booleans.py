@@ -498,6 +498,8 @@ class Renderer(Faces):
                 self.construct(g, out)
             else:
                 self.draw_lines(g, out)
+        from .masks import merge_fills
+        merge_fills(self, out, mark)
         self.children(s, out)
         masks = [c for c in s.children.values() if c.kind == "hole" and c.cuts_into is None]
         if masks:                       # engraving minus engraving (issue 95)

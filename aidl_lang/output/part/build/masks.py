@@ -30,6 +30,51 @@ from ....geometry.shapes.curves import (Arc, Circle, EllipticArc, Line, Loop, Sp
 EPS = 1e-9          # relative: points this near are one point
 
 
+def merge_fills(R, out, mark: tuple[int, int]) -> None:
+    """The filled shapes (``fill=true``, not a Text's letters, which are their union
+    already) one drawing drew since ``mark`` that overlap, each group as one area: their
+    union's exact loops, given to the group's first shape, so the laser fills their common
+    part once (run ba's donkey: ten filled shapes, their overlaps burnt twice).  Groups by
+    their boxes (:func:`~..measure.nearby.box_pairs`, n log n), then by their faces."""
+    from ..measure.nearby import box_pairs
+    filled = list({id(g): g for style, _, g in out.strokes[mark[0]:]
+                   if style == "fill" and g.kind != "Text"}.values())
+    if len(filled) < 2:
+        return
+    faces = [R.face(g) for g in filled]
+    ok = [k for k, f in enumerate(faces) if f is not None and not f.is_empty()]
+    boxes = np.array([faces[k].bounds() for k in ok], dtype=float).reshape(-1, 4)
+    group = {k: k for k in ok}
+
+    def root(k):
+        while group[k] != k:
+            group[k] = group[group[k]]
+            k = group[k]
+        return k
+    for i, j in box_pairs(boxes):
+        a, b = ok[int(i)], ok[int(j)]
+        if not (faces[a] ^ faces[b]).is_empty() and (faces[a] ^ faces[b]).area() > 1e-9:
+            group[root(b)] = root(a)
+    groups: dict = {}
+    for k in ok:
+        groups.setdefault(root(k), []).append(k)
+    merged = [ks for ks in groups.values() if len(ks) > 1]
+    if not merged:
+        return
+    gone = {id(filled[k]) for ks in merged for k in ks}
+    drawn = [st for st in out.strokes[mark[0]:] if not (st[0] == "fill" and id(st[2]) in gone)]
+    del out.strokes[mark[0]:], out.lines[mark[1]:]   # (lines made again from the strokes)
+    for ks in merged:
+        area = faces[ks[0]]
+        for k in ks[1:]:
+            area = area + faces[k]
+        for lp in R.exact.loops(area):
+            drawn.append(("fill", ("poly", lp.points(), lp), filled[min(ks)]))
+    for st in drawn:
+        out.strokes.append(st)
+        out.lines.append((st[0], _polyline_of(st[1])))
+
+
 def masked(R, s, masks: list, out, mark: tuple[int, int]) -> None:
     """Hide what the hole children ``masks`` of drawing ``s`` cover of the strokes drawn since
     ``mark`` (lengths of ``out.strokes`` and ``out.lines`` before ``s`` drew): those strokes
