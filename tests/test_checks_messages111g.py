@@ -526,3 +526,20 @@ def test_overlapping_filled_shapes_of_a_drawing_are_filled_once_as_their_union()
     assert total * 0.1 == pytest.approx(union, rel=0.02)
     fills = [st for st in r.output.engrave if st.style == "fill"]
     assert len(fills) == 2                  # the union's one loop and the far dot's
+
+
+def test_W0530_of_a_holes_font_letters_that_run_out_through_the_edge():
+    """Run ay's night-light shade: "NOAH" as 20 mm bold stencil letters, 85 mm wide on an
+    80 mm finger-jointed wall, cut the N and H open at the edges, and no message said so
+    (W0530 knew only the standard library's closed openings). The letters' hole is W0530 at
+    the Text; `max_width=60 mm` (the run's fix) clears it."""
+    src = (RUNS / "issue111ay/run/01_night_light_shade.first_valid.aidl").read_text()
+    r = aidl_lang.compile(source=src)
+    (w,) = [d for d in r.diagnostics if d.code == "W0530"]
+    assert w.message.startswith('the letters of `lantern.front.name.t` ("NOAH") in hole '
+                                '`lantern.front.name` run out through the outer edge of '
+                                '`lantern.front`')
+    assert "max_width=" in w.hint
+    fixed = (RUNS / "issue111ay/drafts/01_night_light_shade.aidl").read_text()
+    assert "max_width" in fixed
+    assert not [d for d in aidl_lang.compile(source=fixed).diagnostics if d.code == "W0530"]

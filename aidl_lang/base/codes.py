@@ -1494,7 +1494,10 @@ is a closed hole (a pattern of holes, or of shapes in one hole): `AlignCenterX(p
 centres the original, so of two peg holes 80 mm apart the second breaks out of a 160 mm plate.
 The warning names the deepest copy, how far it runs out and where, and how many copies do; to
 centre a pattern, place its original half the pattern's span off the centre. A row of notches
-whose original runs out too is drawn open on purpose and is not warned.
+whose original runs out too is drawn open on purpose and is not warned. So too the letters of
+a font Text in a hole (a stencil name cut through a panel) that reach past the edge: a letter
+is cut open there (a word 85 mm wide on an 80 mm wall); fit it with `max_width=`, a smaller
+size, or move it inward.
 
     import "std/plates.aidl"
     solid plate {

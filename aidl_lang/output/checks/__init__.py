@@ -59,8 +59,8 @@ from .assembly import _check_fit
 from .changes import Topology, check_topology, topology, topology_changes
 from .common import (MIN_AREA, MIN_FRACTION, MIN_WALL, _cut_openings, _edges, _inside,
                      _inside_loops, _part_of, _part_roots, _signed, _union, part_min_wall)
-from .holes.pattern_edge import check_pattern_edges
-from .holes.openings import CLOSED_OPENINGS, TOUCH, _analyse, _check_closed_openings, _check_flush, _check_hole, _intended, _Near, _report_openings
+from .holes.pattern_edge import CLOSED_OPENINGS, _check_closed_openings, check_pattern_edges
+from .holes.openings import TOUCH, _analyse, _check_flush, _check_hole, _intended, _Near, _report_openings
 from .holes.repeats import _check_overlapping_circles, _check_repeated_faces
 from .holes.sinks import check_sinks
 from .holes.voids import _check_voids

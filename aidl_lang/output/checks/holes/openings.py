@@ -129,50 +129,6 @@ def _check_flush(d: Drawing, s: Structure, shape, a: _Openings, cuts, min_wall: 
 # is an open notch, not the feature asked for (issue 105's pick holder: a keyhole whose slot,
 # 10 mm long by default, broke through the top edge).  An edge notch meant as one (a finger
 # notch, a cable exit) is drawn with a shape or a template of its own and is not warned.
-CLOSED_OPENINGS = {"keyhole": "its slot's `length=`, 10 mm unless given", "clearance_hole": "its `size=`",
-                   "nut_trap": "its `size=`", "hex_pocket": "its `across_flats=`"}
-MAX_DEPTH_POINTS = 4000     # vertices of the part outside measured for the depth (at most)
-
-
-def _check_closed_openings(d: Drawing, s: Structure, shape, cuts, min_wall: float,
-                           sink) -> None:
-    """W0530 for each hole of part ``s`` made by a template of :data:`CLOSED_OPENINGS` (a
-    ``keyhole``) that runs out through the part's outer edge: its shape reaches past the
-    part with its holes filled by more than :data:`MIN_AREA`.  The warning names the hole,
-    how far it runs out (the deepest vertex of the shape outside, from the filled part's
-    edge, mm) and where, and the fix: shorten or shrink it, or move it inward, by that much
-    and ``min_wall`` (a wall of twice the minimum left)."""
-    mine = [c for c in cuts if getattr(c.hole, "template", None) in CLOSED_OPENINGS
-            and c.region is not None and d.shapes.get(c.hole) is not None]
-    if not mine:
-        return
-    filled = _union([shape] + [c.region for c in cuts if c.region is not None])
-    edges = None
-    for c in mine:
-        out = d.shapes[c.hole] - filled
-        a = _area(out)
-        if a <= MIN_AREA:
-            continue
-        if edges is None:
-            loops = [np.asarray(p, dtype=float) for p in filled.to_polygons()]
-            edges = _edges(loops)
-        P = np.vstack([np.asarray(p, dtype=float) for p in out.to_polygons()])[:MAX_DEPTH_POINTS]
-        dist = _edge_distance(P, edges)
-        k = int(np.argmax(dist))
-        depth = float(dist[k])
-        x, y = P[k]
-        need = math.ceil((depth + 2 * min_wall) * 10) / 10
-        what = c.hole.template
-        knob = CLOSED_OPENINGS[what]
-        sink.warning("W0530", f"hole `{c.hole.path}` (a `{what}`) runs out through the outer edge "
-                     f"of `{s.path}` by {depth:.2f} mm (its farthest point, about ({x:.2f}, "
-                     f"{y:.2f})): the opening is open at the edge, not closed as a {what} is "
-                     f"meant to be", c.hole.span,
-                     hint=f"shorten or shrink `{c.hole.name}` ({knob}) or move it inward, by at "
-                          f"least {need:g} mm (what runs out and a wall of twice the minimum, "
-                          f"{2 * min_wall:g} mm)")
-
-
 class _Near:
     """The final shape of a part near a region, for W0501: a part's loops whose bounding
     boxes meet the region's (found for every cut at once with :func:`.nearby.box_pairs`)

@@ -4,7 +4,8 @@ run v's towel-hook plate: `AlignCenterX(peg, body)` centred the pattern's *origi
 second of two 12 mm peg holes 80 mm apart broke out of the plate's right edge by 6 mm, and no
 message said so).  A pattern whose original runs out too (a row of edge notches, a comb) is
 drawn open on purpose and is not warned; nor is a copy the standard library's closed-opening
-templates already report (:func:`.openings._check_closed_openings`).
+templates already report (:func:`_check_closed_openings`, below: a `keyhole`, and a hole's
+font letters, that run out through the edge).
 
 Copies are hole structures made by ``LinearPattern``/``CircularPattern``/``GridPattern`` of a
 hole (the original's ``pattern_copies``), or shapes of one hole made by a pattern of a shape.  Each one's
@@ -13,10 +14,12 @@ vertices are tested against its solid's outline before its holes (``Cut.before``
 so the check grows as n log n in the copies, not as one boolean per copy."""
 from __future__ import annotations
 
+import math
+
 import manifold3d as mf
 import numpy as np
 
-from ..common import _edge_distance, _edges, _inside
+from ..common import MIN_AREA, _area, _edge_distance, _edges, _inside, _union
 
 EDGE_TOL = 0.01        # mm: a copy's vertex this far past the outline still counts as inside
 
@@ -124,3 +127,62 @@ def _name(t) -> str:
 
 def _span(t, orig):
     return getattr(t, "span", None) or getattr(orig, "span", None)
+
+
+CLOSED_OPENINGS = {"keyhole": "its slot's `length=`, 10 mm unless given", "clearance_hole": "its `size=`",
+                   "nut_trap": "its `size=`", "hex_pocket": "its `across_flats=`"}
+MAX_DEPTH_POINTS = 4000     # vertices of the part outside measured for the depth (at most)
+
+
+def _check_closed_openings(d: Drawing, s: Structure, shape, cuts, min_wall: float,
+                           sink) -> None:
+    """W0530 for each hole of part ``s`` made by a template of :data:`CLOSED_OPENINGS` (a
+    ``keyhole``) that runs out through the part's outer edge: its shape reaches past the
+    part with its holes filled by more than :data:`MIN_AREA`.  The warning names the hole,
+    how far it runs out (the deepest vertex of the shape outside, from the filled part's
+    edge, mm) and where, and the fix: shorten or shrink it, or move it inward, by that much
+    and ``min_wall`` (a wall of twice the minimum left)."""
+    mine = [c for c in cuts if (getattr(c.hole, "template", None) in CLOSED_OPENINGS
+                                or _letters(c.hole) is not None)
+            and c.region is not None and d.shapes.get(c.hole) is not None]
+    if not mine:
+        return
+    filled = _union([shape] + [c.region for c in cuts if c.region is not None])
+    edges = None
+    for c in mine:
+        out = d.shapes[c.hole] - filled
+        a = _area(out)
+        if a <= MIN_AREA:
+            continue
+        if edges is None:
+            loops = [np.asarray(p, dtype=float) for p in filled.to_polygons()]
+            edges = _edges(loops)
+        P = np.vstack([np.asarray(p, dtype=float) for p in out.to_polygons()])[:MAX_DEPTH_POINTS]
+        dist = _edge_distance(P, edges)
+        k = int(np.argmax(dist))
+        depth = float(dist[k])
+        x, y = P[k]
+        need = math.ceil((depth + 2 * min_wall) * 10) / 10
+        t = _letters(c.hole)
+        if t is not None and c.hole.template not in CLOSED_OPENINGS:   # (run ay's "NOAH")
+            sink.warning("W0530", f"the letters of `{t.label}` (\"{t.data['text']}\") in hole "
+                         f"`{c.hole.path}` run out through the outer edge of `{s.path}` by "
+                         f"{depth:.2f} mm (about ({x:.2f}, {y:.2f})): a letter is cut open "
+                         "there", t.span, hint=f"fit the word: `max_width=` the room it has, a "
+                         f"smaller size, or move it inward by at least {need:g} mm (what runs "
+                         f"out and a wall of twice the minimum)")
+            continue
+        what = c.hole.template
+        knob = CLOSED_OPENINGS[what]
+        sink.warning("W0530", f"hole `{c.hole.path}` (a `{what}`) runs out through the outer edge "
+                     f"of `{s.path}` by {depth:.2f} mm (its farthest point, about ({x:.2f}, "
+                     f"{y:.2f})): the opening is open at the edge, not closed as a {what} is "
+                     f"meant to be", c.hole.span,
+                     hint=f"shorten or shrink `{c.hole.name}` ({knob}) or move it inward, by at "
+                          f"least {need:g} mm (what runs out and a wall of twice the minimum, "
+                          f"{2 * min_wall:g} mm)")
+
+
+def _letters(h):
+    """The first font Text of hole ``h`` (its letters cut as openings), else None."""
+    return next((g for g in h.geometry if g.kind == "Text" and g.data.get("font")), None)
