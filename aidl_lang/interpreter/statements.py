@@ -819,18 +819,25 @@ class Statements(Asserts):
             o = bad[0]
             lca = _common_ancestor(o, s)
             where = f"`{lca.path}`" if lca else "a common parent"
-            alias = self._alias_of(o)
-            hint = (f"a constraint may only use its own structure's subtree; move it into "
-                    f"{where}, which contains both")
-            if alias is not None:       # run aq's `back = backplate` in an assembly
-                hint = (f"`{alias} = {o.name}` names the structure `{o.path}` declared "
-                        f"outside `{s.name}`; it does not make a part of `{s.name}`: declare "
-                        f"the solid inside `{s.name}` (`solid {alias} {{ ... }}`), or make it "
-                        f"a template (`def {o.name}() -> {o.kind} {{ ... }}`, then `{alias} = "
-                        f"{o.name}()`); or move the constraint into {where}, which contains "
-                        f"both")
+            hint = self._outside_hint(o, s, f"move the constraint into {where}, which "
+                                      f"contains both", "a constraint may only use its own "
+                                      f"structure's subtree; move it into {where}, which "
+                                      f"contains both")
             raise EvalError("E0202", f"this constraint in `{s.path}` refers to `{o.path}`, "
                             f"which is outside `{s.name}`'s subtree", span, hint=hint)
+
+    def _outside_hint(self, o: Structure, s: Structure, other: str, plain: str) -> str:
+        """The hint for structure ``o`` used in ``s`` from outside it: when a name of ``s``'s
+        body is bound to it (run aq's and be's `back = backplate` in an assembly), what that
+        line does not do and the two forms that make the part, then ``other``; else
+        ``plain``."""
+        alias = self._alias_of(o)
+        if alias is None:
+            return plain
+        return (f"`{alias} = {o.name}` names the structure `{o.path}` declared outside "
+                f"`{s.name}`; it does not make a part of `{s.name}`: declare the solid inside "
+                f"`{s.name}` (`solid {alias} {{ ... }}`), or make it a template (`def "
+                f"{o.name}() -> {o.kind} {{ ... }}`, then `{alias} = {o.name}()`); or {other}")
 
     def _alias_of(self, o: Structure) -> str | None:
         """The name a body's own scope binds to structure ``o`` (or one of its ancestors)
