@@ -1028,8 +1028,9 @@ so, never "filled"). A small one (less than 1 mm^2, or twice the minimum wall sq
 void where the shapes nearly meet but leave a gap, which a laser cuts out as a sliver: the warning gives its area, width, length and place, and names the shapes around it (at the first of them); make the shapes overlap (a
 negative gap, a larger size). A part says its first 5 voids, the fifth ending "(and N more
 like it in `part`)". A larger one enclosed by the faces of ONE solid structure,
-some of them overlapping (a dinosaur's legs and belly that merge around a window), is often
-not meant: the warning says plainly that the opening is cut through the part (the part comes
+some of them overlapping (a dinosaur's legs and belly that merge around a window, a bracket's
+gusset window), is a note: 10 of the 13 such windows the model runs met were meant. It says
+plainly that the opening is cut through the part (the part comes
 out with that window, around an island of material when one lies inside it), names the faces
 around it, its size (width x height of its box, area) and centre. If it is not meant, fill
 it: make the shapes overlap across it (the opening is then gone). If it is meant, say so with

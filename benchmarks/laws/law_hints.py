@@ -99,10 +99,12 @@ def applied_fix(src: str, d, model):
 
 
 def proposed_fixes(src: str, c):
-    """``(warning, text, at)`` for each warning of the compile ``c`` of ``src`` that proposes
-    code: the program with it applied (:func:`applied_fix`) and the offset of the change."""
+    """``(warning, text, at)`` for each warning (or note) of the compile ``c`` of ``src`` that
+    proposes code: the program with it applied (:func:`applied_fix`) and the offset of the
+    change.  A note proposes as a warning does (W0515's wide window, W0508's crossing holes
+    are notes): what it proposes is held to the same law."""
     for d in c.sink.items:
-        if d.severity != "warning":
+        if d.severity not in ("warning", "note"):
             continue
         fixed = applied_fix(src, d, c.model)
         if fixed is not None:

@@ -87,6 +87,16 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                      f"assembled product (3D views, 3MF, the fit check), give it "
                      f"`Place({short}, ...)`"))
             continue
+        if g.gap >= AWAY - 1e-6:        # placed 5 mm or more from all: carried by what is not
+            # cut (run bf: a wheel on a dowel axle, a sign on S-hooks; "a tab does not reach
+            # its slot: move it 7 mm" would have made the wheel rub its stand)
+            sink.add(Diagnostic(
+                "W0518", f"assembled, part `{g.part}` touches no other part (the nearest, "
+                f"`{g.nearest}`, is {g.gap:.3g} mm away): held by what is not cut (an axle, "
+                "hooks, hardware), or placed too far", at(g.part), "note",
+                hint=f"if a tab of it should reach a slot, move `{short}` {g.gap:.3g} mm with "
+                     "its `Place`; held by hardware: nothing is needed"))
+            continue
         sink.warning("W0518", f"assembled, part `{g.part}` touches no other part: the nearest, "
                      f"`{g.nearest}`, is {g.gap:.3g} mm away", at(g.part),
                      hint=(f"`{short}` has no `Place`: assembled, it lies flat where it is "
