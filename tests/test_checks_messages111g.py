@@ -543,3 +543,36 @@ def test_W0530_of_a_holes_font_letters_that_run_out_through_the_edge():
     fixed = (RUNS / "issue111ay/drafts/01_night_light_shade.aidl").read_text()
     assert "max_width" in fixed
     assert not [d for d in aidl_lang.compile(source=fixed).diagnostics if d.code == "W0530"]
+
+
+PLAQUE = """thickness 3 mm
+assembly sign {
+    solid plate {
+        body = Rectangle(center=(0, 0), width=120, height=60)
+        drawing word { t = Text("OPEN", (0, 0), size=20, valign="middle") }
+    }
+    Place(plate, rotation=(ROT, 0, 0))
+}
+"""
+
+
+def _dark(png: bytes) -> int:
+    import io
+    from PIL import Image
+    im = Image.open(io.BytesIO(png)).convert("RGB")
+    return sum(1 for r, g, b in im.getdata() if r < 60 and g < 60 and b < 60)
+
+
+def test_the_assembled_picture_draws_the_engraving_on_its_face():
+    """Runs av, aw, bd and bf could not see which face a label landed on: the assembled PNG
+    drew no engraving. It draws each part's engraving on the face the laser works, moved by
+    its `Place`, where that face looks towards the viewer: a plate stood up facing the viewer
+    shows its word, the same plate turned to face away shows none."""
+    pytest.importorskip("PIL")
+    from aidl_lang.output.writers.png import to_assembled_png
+    front = aidl_lang.compile(source=PLAQUE.replace("ROT", "90 deg"))
+    back = aidl_lang.compile(source=PLAQUE.replace("ROT", "-90 deg"))
+    assert front.ok and back.ok
+    n_front = _dark(to_assembled_png(front.output, width=400))
+    n_back = _dark(to_assembled_png(back.output, width=400))
+    assert n_front > 50 and n_back == 0

@@ -126,6 +126,7 @@ def to_assembled_png(output: Output, thickness: float | None = None, width: int 
         depth = (P.mean(axis=1) @ fwd)
         base = np.array(_rgba(colour.get(name, "#607d8b"))[:3], dtype=float)
         tris.append((depth, P, shade[:, None] * base[None, :]))
+    marks = _assembled_marks(output, thickness, fwd, size)
     boxes = []
     for c in highlight:
         x0, y0, z0, x1, y1, z1 = c.box
@@ -156,14 +157,27 @@ def to_assembled_png(output: Output, thickness: float | None = None, width: int 
         v = (y1 + margin - (P @ up)) * scale * k
         return [(float(a), float(b)) for a, b in zip(u, v)]
     depth = np.concatenate([t[0] for t in tris]) if tris else np.zeros(0)
-    if len(depth):
-        P = np.concatenate([t[1] for t in tris])
-        rgb = np.clip(np.concatenate([t[2] for t in tris]), 0, 255).astype(np.uint8)
-        order = np.argsort(depth, kind="stable")                 # farthest first
+    if len(depth) or len(marks[0]):
+        P = np.concatenate([t[1] for t in tris]) if tris else np.zeros((0, 3, 3))
+        rgb = np.clip(np.concatenate([t[2] for t in tris]), 0, 255).astype(np.uint8) \
+            if tris else np.zeros((0, 3), dtype=np.uint8)
+        # the triangles and the engraving's segments in one painter's order, farthest
+        # first: a mark on a face is drawn over that face, under what stands before it
+        key = np.concatenate([depth, marks[0]])
+        order = np.argsort(key, kind="stable")
         uv = np.stack([((P @ right) - x0 + margin) * scale * k,
-                       (y1 + margin - (P @ up)) * scale * k], axis=-1)[order]
-        for flat, fill in zip(uv.reshape(len(uv), 6).tolist(), map(tuple, rgb[order].tolist())):
-            draw.polygon(flat, fill=fill, outline=fill)
+                       (y1 + margin - (P @ up)) * scale * k], axis=-1)
+        L = marks[1]
+        luv = np.stack([((L @ right) - x0 + margin) * scale * k,
+                        (y1 + margin - (L @ up)) * scale * k], axis=-1)
+        n = len(depth)
+        flat_t, fill_t = uv.reshape(len(uv), 6).tolist(), [tuple(c) for c in rgb.tolist()]
+        flat_l = luv.reshape(len(luv), 4).tolist()
+        for i in order.tolist():
+            if i < n:
+                draw.polygon(flat_t[i], fill=fill_t[i], outline=fill_t[i])
+            else:
+                draw.line(flat_l[i - n], fill=MARK_RGB, width=k)
     edges = ((0, 1), (0, 2), (0, 4), (1, 3), (1, 5), (2, 3), (2, 6), (3, 7), (4, 5), (4, 6),
              (5, 7), (6, 7))
     for B in boxes:
@@ -174,6 +188,50 @@ def to_assembled_png(output: Output, thickness: float | None = None, width: int 
     buf = io.BytesIO()
     img.save(buf, format="PNG")
     return buf.getvalue()
+
+
+MARK_RGB = (30, 30, 30)      # the engraving's lines in the assembled picture
+
+
+def _assembled_marks(output: Output, thickness, fwd, size: float) -> tuple:
+    """The engraving of ``output`` (strokes, fills, through-cuts) as it lies on the
+    assembled parts: ``(depths, segments)``, each segment (n x 2 x 3, mm) on its part's top
+    face (the face the laser works, z = the thickness) moved by the part's placement, its
+    depth along ``fwd`` a little towards the viewer (so it is drawn over its face); only
+    where that face looks towards the viewer (runs av, aw, bd, bf could not see which face a
+    label landed on).  A bent part's marks are left out."""
+    from ..fabrication.assembly import bends_of, placements
+    from ...geometry.shapes.curves import sample_xy
+    from ..part.build.sunk import DEFAULT_THICKNESS
+    where, bends = placements(output), bends_of(output)
+    thick = {p.name: float(thickness or p.thickness or DEFAULT_THICKNESS)
+             for p in output.parts if p.kind == "solid"}
+    segs: list = []
+    for st in output.engrave:
+        if st.part not in thick or bends.get(st.part) or not st.segments:
+            continue
+        M = where.get(st.part)
+        R = np.eye(3) if M is None else np.asarray(M, dtype=float)[:3, :3]
+        if (R @ np.array([0.0, 0.0, 1.0])) @ fwd <= 1e-9:
+            continue                    # the engraved face looks away: hidden by its part
+        xs: list = []
+        ys: list = []
+        sample_xy(st.segments, xs, ys, size / 400)
+        end = st.segments[-1].end if hasattr(st.segments[-1], "end") else None
+        if st.closed or end is None:
+            xs.append(xs[0])
+            ys.append(ys[0])
+        else:
+            xs.append(end[0])
+            ys.append(end[1])
+        P = np.column_stack([xs, ys, np.full(len(xs), thick[st.part])])
+        if M is not None:
+            P = P @ R.T + np.asarray(M, dtype=float)[:3, 3]
+        segs.append(np.stack([P[:-1], P[1:]], axis=1))
+    if not segs:
+        return np.zeros(0), np.zeros((0, 2, 3))
+    L = np.concatenate(segs)
+    return L.mean(axis=1) @ fwd + size / 200, L
 
 
 def _pil():
