@@ -102,8 +102,9 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                      hint=(f"`{short}` has no `Place`: assembled, it lies flat where it is "
                            f"drawn; give it one, `Place({short}, ...)`, to put it in the "
                            "product (the parts are cut as drawn either way)" if unplaced else
-                           f"a tab does not reach its slot: move `{g.part}` {g.gap:.3g} mm "
-                           "with its `Place`, or lengthen the tab"))
+                           f"move `{g.part}` {g.gap:.3g} mm towards `{g.nearest}` with its "
+                           "`Place` (or, where a tab falls short of its slot, lengthen the "
+                           "tab)"))
 
 
 def check_routed_fit(d: Drawing, output, diameter: float, relief: str, sink: DiagnosticSink,
