@@ -43,21 +43,19 @@ def merge_fills(R, out, mark: tuple[int, int]) -> None:
         return
     faces = [R.face(g) for g in filled]
     ok = [k for k, f in enumerate(faces) if f is not None and not f.is_empty()]
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
     boxes = np.array([faces[k].bounds() for k in ok], dtype=float).reshape(-1, 4)
-    group = {k: k for k in ok}
-
-    def root(k):
-        while group[k] != k:
-            group[k] = group[group[k]]
-            k = group[k]
-        return k
-    for i, j in box_pairs(boxes):
-        a, b = ok[int(i)], ok[int(j)]
-        if not (faces[a] ^ faces[b]).is_empty() and (faces[a] ^ faces[b]).area() > 1e-9:
-            group[root(b)] = root(a)
+    meet = [(int(i), int(j)) for i, j in box_pairs(boxes)
+            if (faces[ok[int(i)]] ^ faces[ok[int(j)]]).area() > 1e-9]
+    if not meet:
+        return
+    ij = np.array(meet).T
+    _, label = connected_components(coo_matrix((np.ones(len(meet)), (ij[0], ij[1])),
+                                               shape=(len(ok), len(ok))), directed=False)
     groups: dict = {}
-    for k in ok:
-        groups.setdefault(root(k), []).append(k)
+    for n, k in enumerate(ok):
+        groups.setdefault(int(label[n]), []).append(k)
     merged = [ks for ks in groups.values() if len(ks) > 1]
     if not merged:
         return
