@@ -576,3 +576,17 @@ def test_the_assembled_picture_draws_the_engraving_on_its_face():
     n_front = _dark(to_assembled_png(front.output, width=400))
     n_back = _dark(to_assembled_png(back.output, width=400))
     assert n_front > 50 and n_back == 0
+
+
+def test_fillet_at_an_edge_and_an_arc_says_to_give_the_arcs_point():
+    """Run bd's capo wrote `Fillet([edge, arc], 3)`: E0108 "got circular (`bottom`, a Arc)",
+    no way on. The message says an Arc and how to name the corner: its point."""
+    r = aidl_lang.compile(source="""solid capo {
+    bar = Polygon([(0, 0), (60, 0), (60, 10), (0, 10)])
+    bottom = Arc(center=(30, 30), start=(20, 10), end=(40, 10), construction=true)
+    Fillet([bar.edges[0], bottom], 3)
+}
+""")
+    (e,) = [d for d in r.diagnostics if d.code == "E0108"]
+    assert "(`bottom`, an Arc); for the corner where `bottom` meets an edge, give its point: " \
+           "`bottom.start` or `.end`" in e.message

@@ -986,5 +986,11 @@ def _chosen(ctx, v, S, kind: str) -> list:
     raise OperationError(f"{kind} at: give a point, two edges [a, b] (their corner), two "
                          f"shapes or an edge and a shape [a, b] (where their outlines cross: "
                          f"{', '.join(MEET)}), a line, a polygonal shape, or a list of these; "
-                         f"got {_kind(v)}" + (f" (`{_name(v.geom, S)}`, a {v.geom.kind})"
-                                              if isinstance(v, GeomRef) else ""))
+                         f"got {_kind(v)}" + (f" (`{_name(v.geom, S)}`, "
+                                              f"{'an' if v.geom.kind[0] in 'AEIOU' else 'a'} "
+                                              f"{v.geom.kind})" if isinstance(v, GeomRef)
+                                              else "")
+                         + (f"; for the corner where `{_name(v.geom, S)}` meets an edge, give "
+                            f"its point: `{_name(v.geom, S)}.start` or `.end`"
+                            if isinstance(v, GeomRef) and v.geom.kind in ("Arc", "Spline",
+                                                                          "Bezier") else ""))
