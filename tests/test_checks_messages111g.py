@@ -590,3 +590,15 @@ def test_fillet_at_an_edge_and_an_arc_says_to_give_the_arcs_point():
     (e,) = [d for d in r.diagnostics if d.code == "E0108"]
     assert "(`bottom`, an Arc); for the corner where `bottom` meets an edge, give its point: " \
            "`bottom.start` or `.end`" in e.message
+
+
+def test_E0102_offers_a_childs_member_of_that_name():
+    """Run bj's cornhole wrote `deck.word` for `deck.art.word` (a Text in the deck's
+    drawing): E0102 offered `board` (a spelling neighbour, another error once taken). A
+    child holding that very name is offered first, and its fix compiles past it."""
+    src = (RUNS / "issue111bj/drafts/05_tabletop_cornhole.attempt2.aidl").read_text()
+    r = aidl_lang.compile(source=src)
+    e = [d for d in r.diagnostics if d.code == "E0102"]
+    assert e and e[0].hint == "did you mean `art.word`?"
+    fixed = src.replace("deck.word.", "deck.art.word.")
+    assert not [d for d in aidl_lang.compile(source=fixed).diagnostics if d.code == "E0102"]

@@ -198,8 +198,11 @@ class Expressions:
                 return StructRef(s.children[name])
             if name in ("width", "height", "left", "right", "top", "bottom", "center"):
                 return self.member(BBoxRef(s), name, span)
-            cands = list(s.scope) + list(s.children) + ["bb"]
-            sugg = did_you_mean(name, cands)
+            cands = list(dict.fromkeys(list(s.scope) + list(s.children) + ["bb"]))
+            # a member of a child by that very name (run bj: `deck.word` for `deck.art.word`)
+            deeper = [f"{c}.{name}" for c, k in s.children.items() if name in k.scope
+                      or name in k.children]
+            sugg = deeper[:1] or did_you_mean(name, cands)
             raise EvalError("E0102", f"structure `{s.path}` has no member `{name}`", span,
                             hint=f"did you mean `{sugg[0]}`?" if sugg else
                             f"its members: {', '.join(sorted(cands)[:12])}", suggestions=sugg)
