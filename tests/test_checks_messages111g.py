@@ -600,5 +600,5 @@ def test_E0102_offers_a_childs_member_of_that_name():
     r = aidl_lang.compile(source=src)
     e = [d for d in r.diagnostics if d.code == "E0102"]
     assert e and e[0].hint == "did you mean `art.word`?"
-    fixed = src.replace("deck.word.", "deck.art.word.")
+    fixed = src.replace("deck.word.", "deck.art.word.").replace("deck.ring.", "deck.art.ring.")
     assert not [d for d in aidl_lang.compile(source=fixed).diagnostics if d.code == "E0102"]
