@@ -413,8 +413,10 @@ class Checker:
         if self.import_failed:
             return
         cands = scope.all() | set(CONSTANTS) | {"self"}
-        sugg = did_you_mean(n, cands)
-        inside = None if sugg else self._bound_inside(n, scope)
+        # the very name bound inside a child beats a spelling neighbour (run bg: `sl` of a
+        # child drawing was offered `self`)
+        inside = self._bound_inside(n, scope)
+        sugg = [] if inside else did_you_mean(n, cands)
         self.sink.error("E0101", f"unknown name `{n}`", e.span,
                         hint=f"did you mean `{sugg[0]}`?" if sugg else
                         f"`{n}` is defined inside `{inside}`: reach it by its path, "

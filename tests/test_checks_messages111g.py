@@ -602,3 +602,11 @@ def test_E0102_offers_a_childs_member_of_that_name():
     assert e and e[0].hint == "did you mean `art.word`?"
     fixed = src.replace("deck.word.", "deck.art.word.").replace("deck.ring.", "deck.art.ring.")
     assert not [d for d in aidl_lang.compile(source=fixed).diagnostics if d.code == "E0102"]
+
+
+def test_E0101_offers_a_name_bound_inside_a_child_before_a_spelling_neighbour():
+    """Run bg's popcorn box asserted on `sl`, a shape of its child drawing `stars`: E0101
+    offered `self` (a spelling neighbour). The very name bound inside a child comes first."""
+    src = (RUNS / "issue111bg/drafts/06_popcorn_box.attempt1.aidl").read_text()
+    (e,) = [d for d in aidl_lang.compile(source=src).diagnostics if d.code == "E0101"]
+    assert e.hint == "`sl` is defined inside `stars`: reach it by its path, `stars.sl`"
