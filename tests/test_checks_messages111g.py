@@ -610,3 +610,22 @@ def test_E0101_offers_a_name_bound_inside_a_child_before_a_spelling_neighbour():
     src = (RUNS / "issue111bg/drafts/06_popcorn_box.attempt1.aidl").read_text()
     (e,) = [d for d in aidl_lang.compile(source=src).diagnostics if d.code == "E0101"]
     assert e.hint == "`sl` is defined inside `stars`: reach it by its path, `stars.sl`"
+
+
+def test_W0530_is_silent_for_a_hole_that_cuts_nothing():
+    """Run bi's growth chart: keyholes declared in the assembly, left off the material when
+    `RightOf` moved the sections: W0502 said they cut nothing, and W0530 added "shorten it
+    by 806 mm". A hole that cuts nothing is W0502's alone."""
+    src = (RUNS / "issue111bi/drafts/08_growth_chart.attempt2.aidl").read_text()
+    r = aidl_lang.compile(source=src)
+    assert [d for d in r.diagnostics if d.code == "W0502"]
+    assert not [d for d in r.diagnostics if d.code == "W0530"]
+
+
+def test_W0405_before_holes_offers_the_shapes_own_size():
+    """Run bi's glass clips: an oval's box asserted at the 84 x 64 mm asked for, its tips cut
+    by the slot and slit the request asked for: W0405's only fix was to move the holes (which
+    closes the openings). The hint offers the shape's own size, which holes leave as drawn."""
+    src = (RUNS / "issue111bi/run/06_wine_glass_clip.first_valid.aidl").read_text()
+    w = [d for d in aidl_lang.compile(source=src).diagnostics if d.code == "W0405"]
+    assert w and all("assert the shape's own size" in d.hint for d in w)

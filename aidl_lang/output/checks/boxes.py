@@ -183,7 +183,9 @@ def check_final_box_asserts(sink: DiagnosticSink, model: Model, d: Drawing,
                  f"asserted, "
                  + (f"draw that corner round (a `Hull` with a `Circle` of the radius at the "
                     f"tip) or round only corners away from it (`{rounded[0]}(at=[...], ...)`)"
-                    if rounded else "move the holes that cut that side"))
+                    if rounded else "assert the shape's own size (its `width`, `radius`, "
+                    "`rx`...), which holes leave as drawn, when the holes are meant to cut that "
+                    "side; or move the holes that cut that side"))
 
 
 def _holed(s: Structure) -> bool:

@@ -144,7 +144,8 @@ def _check_closed_openings(d: Drawing, s: Structure, shape, cuts, min_wall: floa
     and ``min_wall`` (a wall of twice the minimum left)."""
     mine = [c for c in cuts if (getattr(c.hole, "template", None) in CLOSED_OPENINGS
                                 or _letters(c.hole) is not None)
-            and c.region is not None and d.shapes.get(c.hole) is not None]
+            and c.region is not None and _area(c.region) > MIN_AREA   # (none: W0502's)
+            and d.shapes.get(c.hole) is not None]
     if not mine:
         return
     filled = _union([shape] + [c.region for c in cuts if c.region is not None])
