@@ -629,3 +629,26 @@ def test_W0405_before_holes_offers_the_shapes_own_size():
     src = (RUNS / "issue111bi/run/06_wine_glass_clip.first_valid.aidl").read_text()
     w = [d for d in aidl_lang.compile(source=src).diagnostics if d.code == "W0405"]
     assert w and all("assert the shape's own size" in d.hint for d in w)
+
+
+def test_tab_and_slots_docs_say_its_members_are_lists_and_how_long():
+    """Runs am and bl read `j.slot.bb` of a `tabs=1` joint (E0102 "a list has no member bb"):
+    the docs say each member is a list and its length, measured here."""
+    from aidl_lang.library.reference import find
+    assert "`slot`: one per tab, even with `tabs=1`" in " ".join(find("tab_and_slot").text.split())
+    src = """import "std/joints.aidl"
+solid p {
+    body = Rectangle(center=(0, -20), width=100, height=40)
+    j = tab_and_slot(part="tab", length=100, thickness=3, tabs=2, tab=20, screw=3, cx=0 mm,
+                     cy=0 mm)
+    assert len(j.gap) == 3 and len(j.overrun) == 3 and len(j.nut) == 1
+}
+solid q {
+    body = Rectangle(center=(0, 100), width=100, height=40)
+    k = tab_and_slot(part="slot", length=100, thickness=3, tabs=1, tab=20, screw=0, cx=0 mm,
+                     cy=100 mm)
+    assert len(k.slot) == 1
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert not _errors(r), [d.message for d in _errors(r)]
