@@ -95,6 +95,9 @@ def test_law_each_W0508_fix_clears_the_overlap_and_nothing_gets_worse(
     assume(len(ws) == 1 and not [d for d in _bbox_gap(c) if d.code != "W0508"])
     (w,) = ws
     assume("wholly inside" not in w.message)          # one inside the other: no move meant
+    # two that cross are a note, one cross-shaped opening (every crossing the model runs met
+    # was meant, issue 111 round eleven): its hint gives the move, it proposes no fix
+    assume(w.severity == "warning")
     assert w.fix is not None and "AllowOverlap" not in w.fix.replacement, w.hint
     if param and "plate.b" in w.hint.split("further")[0]:
         assert "shift +" in w.fix.replacement          # the param expression is kept

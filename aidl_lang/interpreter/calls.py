@@ -229,10 +229,8 @@ class Calls:
         if target is s or not target.is_within(s):
             raise EvalError("E0108", f"`{target.path}` is not a part inside `{s.path}`: a part "
                             "is placed by the structure that holds it",
-                            spans.get("part", node.span),
-                            hint=self._outside_hint(target, s, f"write the `{what}(...)` in "
-                                                    f"`{target.parent.path}`", f"write the "
-                                                    f"`{what}(...)` in `{target.parent.path}`")
+                            spans.get("part", node.span), hint=self._outside_hint(
+                                target, s, *[f"write the `{what}(...)` in `{target.parent.path}`"] * 2)
                             if target.parent is not None else "place the parts of this structure")
         if target.parent.kind != "assembly":
             raise EvalError("E0108", f"`{target.path}` is not a part: it is merged into "

@@ -96,13 +96,6 @@ def _cross(r1, r2) -> bool:
                for x, y in ((r1, r2), (r2, r1)))
 
 
-def _opens(c, shapes: dict) -> bool:
-    """Whether hole cut ``c`` runs out through its solid's outline (its shape reaches past
-    the solid before its holes)."""
-    h = shapes.get(c.hole)
-    return h is not None and c.before is not None and _area(h - c.before) > MIN_AREA
-
-
 def _body(s) -> str:
     """Where a statement for structure ``s`` is written: `` `path` ``, or the body of the
     template that makes it (run at's tambourine: "in `tambourine.middle`", a call)."""

@@ -41,7 +41,7 @@ from .clearing import move_fix
 from .contact import circle_of, contact_points
 from .meant import MeantMerge
 from ..common import (MIN_AREA, MIN_WALL, _area, _body, _contributors, _cross, _depth, _edge_distance, _edges, _insert_fix,
-                      _inside, _loop_boxes, _opens, _part_of, _pct, _signed, _significant, _union,
+                      _inside, _loop_boxes, _part_of, _pct, _signed, _significant, _union,
                       below)
 
 def _intended(hole: Structure, owner: Structure, obj) -> bool:
@@ -522,10 +522,6 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
             continue
         crossing = common is not None and a.cuts and _cross(a.cuts[i - 1].region,
                                                                 a.cuts[j - 1].region)
-        # one of them opens through the outline into the other (a USB notch into a window, a
-        # clip's mouth into its bore: runs bb, az): one opening from the edge, as crossing
-        edge = common is not None and a.cuts and shapes is not None and \
-            _opens(a.cuts[i - 1], shapes) != _opens(a.cuts[j - 1], shapes)
         if common is None:
             how, far = "touch", f"{t:g} mm" if t > 0 else "a little"
         else:
@@ -545,14 +541,11 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
                  "copy)" if stmt == "" else
                  "draw both shapes in one hole structure (the faces of one hole may overlap)")
         move, fix = f"move {second} {far} further from {first}", None
-        if crossing or edge:
+        if crossing:
             # a note: every crossing of the corpus was meant (run ag's halved mortises, "move
-            # it 3.67 mm" broke them; run at's pin channels across a tambourine's windows), and
-            # so each opening from the edge into a hole (run bb's USB notch into a window)
+            # it 3.67 mm" broke them; run at's pin channels across a tambourine's windows)
             sink.add(Diagnostic("W0508", f"{first} and {second} of `{s.path}` {how}: they cut "
-                                + ("one cross-shaped opening" if crossing else
-                                   "one opening, from the outline into the other"),
-                                a.spans[j], "note", labels=labels,
+                                "one cross-shaped opening", a.spans[j], "note", labels=labels,
                                 hint=f"if it is meant, nothing is needed (to say so: "
                                      f"{meant}); if two openings are meant, {move}"))
             continue
@@ -560,7 +553,8 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
                 and _copies_of_one(stmt, a.cuts[i - 1].hole, a.cuts[j - 1].hole) \
                 and depth >= max(t, MIN_WALL):
             fix = _insert_fix(where, stmt, sink)     # copies that overlap deeply: meant
-        elif d is not None and shape is not None and a.cuts and moves < MAX_MOVES:
+        elif d is not None and shape is not None and a.cuts and moves < MAX_MOVES \
+                and not _shared(d, s, a.cuts[j - 1].hole):
             moves += 1
             move, fix = _merge_fix(d, s, shape, a, i, j, t, sink, move, near)
         # most of one inside the other, both placed by relations (no call to edit): one
@@ -658,6 +652,17 @@ def _holes_allowed(ci, cj) -> bool:
 # a reference the program can write: names, indices and members (`rings[0][1]`, `a.b[2]`); a
 # copy made by a pattern with no name is `ring[0]_pattern[1]`, which no program can write
 _NAMEABLE = re.compile(r"[A-Za-z_]\w*(\[\d+\])*(\.[A-Za-z_]\w*(\[\d+\])*)*\Z")
+
+
+def _shared(d: Drawing, s: Structure, h: Structure) -> bool:
+    """Whether the statement that draws hole ``h`` of part ``s`` draws others too (a loop's
+    copy, a template's body called for several parts): a machine fix edits it for all of
+    them (run bc's yarn bowl: moving one ring's guide moved the next ring's)."""
+    if "[" in h.path[len(s.path):]:
+        return True
+    t = getattr(s, "template", None)
+    return t is not None and sum(getattr(p, "template", None) == t
+                                 for p in d.part_of.values()) > 1
 
 
 def _allow_holes(hi: Structure, hj: Structure) -> tuple:
