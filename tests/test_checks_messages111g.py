@@ -559,8 +559,9 @@ assembly sign {
 def _dark(png: bytes) -> int:
     import io
     from PIL import Image
-    im = Image.open(io.BytesIO(png)).convert("RGB")
-    return sum(1 for r, g, b in im.getdata() if r < 60 and g < 60 and b < 60)
+    import numpy as np
+    a = np.asarray(Image.open(io.BytesIO(png)).convert("RGB"))
+    return int((a < 60).all(axis=2).sum())
 
 
 def test_the_assembled_picture_draws_the_engraving_on_its_face():
