@@ -523,9 +523,10 @@ class Checker:
                                          if a.type == "point"))
                 sugg = [c for c in sugg if c in pts]
                 if not sugg and pts:
+                    corner = (" (`bottom_left`: the corner the width and height run from)"
+                              if "bottom_left" in pts else "")
                     note = note or ("a point goes to " + " or ".join(f"`{c}`" for c in pts[:3])
-                                    + " (`bottom_left`: the corner the width and height run "
-                                    "from)" * ("bottom_left" in pts))
+                                    + corner)
             self.sink.error("E0105", f"`{n}` has no argument `{bad.name}`", bad.span,
                             hint=(f"did you mean `{sugg[0]}`? " if sugg else "")
                             + (f"{note}; " if note else "") + "forms: "

@@ -230,7 +230,7 @@ class Calls:
             raise EvalError("E0108", f"`{target.path}` is not a part inside `{s.path}`: a part "
                             "is placed by the structure that holds it",
                             spans.get("part", node.span), hint=self._outside_hint(
-                                target, s, *[f"write the `{what}(...)` in `{target.parent.path}`"] * 2)
+                                target, s, f"write the `{what}(...)` in `{target.parent.path}`")
                             if target.parent is not None else "place the parts of this structure")
         if target.parent.kind != "assembly":
             raise EvalError("E0108", f"`{target.path}` is not a part: it is merged into "
@@ -375,8 +375,8 @@ class Calls:
                 raise EvalError("E0201", f"geometry in `{s.path}` refers to `{k}` of `{bad[0].path}`, "
                                 f"another structure", spans.get(k, node.span), hint=hint)
         if conv.get("fill"):
-            from .fonts import text_fill
-            text_fill(conv, s, node, spans, kind)
+            from .fonts import check_fill
+            check_fill(conv, s, node, spans, kind)
         if kind == "Text" and conv.get("font") is not None:
             from .fonts import text_font
             text_font(self, conv, s, node, spans)

@@ -66,7 +66,7 @@ def font_missing(interp, g, spans, node) -> None:
                                  "Greek and Cyrillic), or write the text without them")
 
 
-def text_fill(conv: dict, s, node, spans, kind: str = "Text") -> None:
+def check_fill(conv: dict, s, node, spans, kind: str = "Text") -> None:
     """``Text(..., fill=true)``: the letters' area engraved, which needs letters with an area
     (``font=``) in a ``drawing``; E0108 at ``fill=`` otherwise, its hint what to write.  A
     closed shape's ``fill=true`` (``kind``, not Text): in a drawing only, likewise."""

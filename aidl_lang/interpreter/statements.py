@@ -826,14 +826,15 @@ class Statements(Asserts):
             raise EvalError("E0202", f"this constraint in `{s.path}` refers to `{o.path}`, "
                             f"which is outside `{s.name}`'s subtree", span, hint=hint)
 
-    def _outside_hint(self, o: Structure, s: Structure, other: str, plain: str) -> str:
+    def _outside_hint(self, o: Structure, s: Structure, other: str,
+                      plain: str | None = None) -> str:
         """The hint for structure ``o`` used in ``s`` from outside it: when a name of ``s``'s
         body is bound to it (run aq's and be's `back = backplate` in an assembly), what that
         line does not do and the two forms that make the part, then ``other``; else
-        ``plain``."""
+        ``plain`` (None: ``other``)."""
         alias = self._alias_of(o)
         if alias is None:
-            return plain
+            return other if plain is None else plain
         return (f"`{alias} = {o.name}` names the structure `{o.path}` declared outside "
                 f"`{s.name}`; it does not make a part of `{s.name}`: declare the solid inside "
                 f"`{s.name}` (`solid {alias} {{ ... }}`), or make it a template (`def "

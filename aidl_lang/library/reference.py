@@ -778,7 +778,8 @@ material; W0507: a web thinner than the minimum wall between cuts. Templates may
 `cut c = f(...)`.
 """, ["slit", "through-cut", "through cut", "cut line", "kerf cut", "relief cut",
       "sheet-level cut", "sheet cut"]),
-    "drawing": ("statement", "`drawing NAME { ... }`: engraved lines and text, not filled.", """
+    "drawing": ("statement", "`drawing NAME { ... }`: engraved lines and text (`fill=true`: "
+                "a closed shape's or a font's area).", """
 `drawing NAME { ... }`: its shapes are drawn as lines (closed shapes as outlines) and Text as
 single strokes (with `font=`: the letters' outlines; with `font=` and `fill=true`: the letters'
 area, on a fill layer), on the `engrave` layer; a closed shape with `fill=true` (a Circle, a

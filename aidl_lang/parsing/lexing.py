@@ -30,6 +30,12 @@ LEADS = frozenset(("AND", "OR", "COMP_OP", "POW"))
 LEAD_MUL = frozenset(("*", "%"))
 
 
+def _leads(t: str, text: str) -> bool:
+    """Whether a token of type ``t`` and text ``text`` first on a line goes on the line before
+    (:data:`LEADS`, and `*` or `%` of MUL_OP)."""
+    return t in LEADS or t == "MUL_OP" and text in LEAD_MUL
+
+
 def _postlex(types: list, spans: list, text: str, complete: bool = True) -> tuple[list, list]:
     """The post-lexer, on the lexer's terminal names and spans (:func:`_lex_lists`; ``text`` is
     what they index), returning the parser's names and spans (``complete=False``: the lexer
@@ -78,8 +84,8 @@ def _postlex(types: list, spans: list, text: str, complete: bool = True) -> tupl
                 pending, cont = sp, after in CONTINUES
             continue
         if pending is not None:
-            if t not in _ELSE and not (cont and sp[2] > col) and not (
-                    t in LEADS or t == "MUL_OP" and text[sp[5]:sp[6]] in LEAD_MUL):
+            if t not in _ELSE and not (cont and sp[2] > col) and not _leads(
+                    t, text[sp[5]:sp[6]]):
                 push_t("_NL")   # (a line after `,` or `and`, indented deeper, goes on; so
                 push_s(pending)  # does one starting with `==` or `and`)
             pending = None
@@ -129,8 +135,7 @@ class _PostLex:
                 continue
             if pending is not None:
                 if tok.type not in ("ELSE", "ELIF") and not (cont and tok.column > col) and \
-                        not (tok.type in LEADS or tok.type == "MUL_OP"
-                             and tok.value in LEAD_MUL):
+                        not _leads(tok.type, tok.value):
                     last = "_NL"
                     yield pending
                 pending = None

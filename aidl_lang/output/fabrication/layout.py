@@ -45,7 +45,7 @@ class KerfError(LayoutError):
     """A kerf the part's cuts cannot be offset by (a hole or slot narrower than the beam, an
     arc of a smaller radius than half the kerf): ``part`` (its name), ``where`` (the point,
     mm, the message names, or None) and ``kerf`` (mm); reported as a located ``E0504``
-    (:func:`aidl_lang.pipeline.report_kerf`)."""
+    (:meth:`diagnostic`, by ``aidl render`` and the MCP ``render`` tool)."""
 
     def __init__(self, message: str, part: str, where, kerf: float):
         super().__init__(message)
@@ -64,12 +64,8 @@ class KerfError(LayoutError):
             best = 0.5                  # mm: a hole this near the point, else the part
             for c in drawing.cuts:
                 shape = drawing.shapes.get(c.hole)
-                if shape is None or shape.is_empty() or getattr(c.hole, "span", None) is None:
-                    continue
-                o = c.owner
-                while o is not None and o is not part:
-                    o = o.parent
-                if o is None:
+                if shape is None or shape.is_empty() or getattr(c.hole, "span", None) is None \
+                        or not c.owner.is_within(part):
                     continue
                 x0, y0, x1, y1 = shape.bounds()
                 gap = max(x0 - x, x - x1, y0 - y, y - y1, 0.0)

@@ -124,11 +124,6 @@ def _check_flush(d: Drawing, s: Structure, shape, a: _Openings, cuts, min_wall: 
                           "past the edge (e.g. by 1 mm) so that the intent is explicit")
 
 
-# The standard library's hole templates whose opening is meant to be closed (a screw's head
-# and shank, a nut, a fastener's clearance): one that runs out through the part's outer edge
-# is an open notch, not the feature asked for (issue 105's pick holder: a keyhole whose slot,
-# 10 mm long by default, broke through the top edge).  An edge notch meant as one (a finger
-# notch, a cable exit) is drawn with a shape or a template of its own and is not warned.
 class _Near:
     """The final shape of a part near a region, for W0501: a part's loops whose bounding
     boxes meet the region's (found for every cut at once with :func:`.nearby.box_pairs`)

@@ -65,8 +65,7 @@ def _around(d: Drawing, s: Structure, P) -> tuple:
     solids whose faces border it (run aq's spider web: three slivers among eight legs said
     only "the shapes around it"), the warning at the first, the next three labelled."""
     region = mf.CrossSection([P[::-1].tolist()], mf.FillRule.Positive)
-    near = region.offset(2 * TOUCH, mf.JoinType.Miter, 2.0, 16) - region
-    shapes = list(dict.fromkeys(g for _, g, _ in _solid_faces(d, s, near)))
+    shapes = list(dict.fromkeys(g for _, g, _ in _faces_around(d, s, region)))
     if not shapes:
         return "the shapes", s.span, []
     names = [f"`{g.label}`" for g in shapes]
@@ -75,6 +74,12 @@ def _around(d: Drawing, s: Structure, P) -> tuple:
     labels = [Label(g.span, "borders it", primary=False) for g in shapes[1:4]
               if g.span is not None and g.span != g0.span]
     return words, g0.span or s.span, labels
+
+
+def _faces_around(d: Drawing, s: Structure, region) -> list:
+    """:func:`_solid_faces` of part ``s`` that border the opening ``region``: those meeting
+    the ring :data:`.openings.TOUCH` x 2 wide around it."""
+    return _solid_faces(d, s, region.offset(2 * TOUCH, mf.JoinType.Miter, 2.0, 16) - region)
 
 
 def _solid_faces(d: Drawing, s: Structure, near) -> list:
@@ -206,8 +211,7 @@ def _runs(keys) -> tuple:
 def _report_enclosed(d: Drawing, s: Structure, P, area: float, region, sink) -> None:
     """The W0515 of :func:`_check_enclosed` for the opening ``P`` (its ``region``), when the
     faces around it are of one solid structure."""
-    near = region.offset(2 * TOUCH, mf.JoinType.Miter, 2.0, 16) - region
-    faces = _solid_faces(d, s, near)
+    faces = _faces_around(d, s, region)
     owners = list(dict.fromkeys(t for t, _, _ in faces))
     if len(owners) != 1:
         return
