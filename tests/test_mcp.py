@@ -498,3 +498,29 @@ def test_check_with_dof_does_not_send_the_agent_to_check_with_dof(tmp_path):
     assert "call `check` with dof=true" in plain
     assert "dof=true" not in asked["text"] and "`structures`" in asked["text"]
     assert asked["structures"]
+
+
+KERF_SLOT = """kerf 0.5 mm
+solid plate {
+    body = Rectangle(center=(0, 0), width=60, height=40)
+    hole vent { v = Circle(center=(20, 0), diameter=6) }
+    hole s {
+        sl = Rectangle(center=(0, 0), width=20, height=0.4)
+    }
+}
+"""
+
+
+@pytest.mark.asyncio(loop_scope="module")
+async def test_render_of_a_kerf_a_hole_cannot_take_is_a_located_E0504(shared):
+    """Through the official client (issue 111 round eleven): a 0.4 mm slot under a 0.5 mm
+    kerf is refused as E0504 at the slot's hole (line 5, column 5), nothing written, where
+    it was the layout's bare message with no line."""
+    session, root = shared
+    (root / "kerf_slot.aidl").write_text(KERF_SLOT)
+    r = await session.call_tool("render", {"path": "kerf_slot.aidl",
+                                           "output": "kerf_slot.dxf"})
+    assert r.is_error
+    assert "line 5, column 5: E0504 kerf 0.5 mm on part `plate`" in _text(r), _text(r)
+    assert "widen it to 0.5 mm or more" in _text(r)
+    assert not (root / "kerf_slot.dxf").exists()
