@@ -296,23 +296,24 @@ class TemplateParam(Node):
 class Func(Node):
     """``def name(params) = expr``: a function, whose call is ``expr``'s value with the
     parameters bound (numbers, points, lists; no geometry of its own)."""
-    __slots__ = ("name", "name_span", "params", "value")
+    __slots__ = ("name", "name_span", "params", "value", "within")
 
     def __init__(self, span: Span, name: str, name_span: Span, params: list["TemplateParam"],
-                 value: Node):
+                 value: Node, within: str | None = None):
         self.span = span
         self.name = name
         self.name_span = name_span
         self.params = params
         self.value = value
+        self.within = within    # written inside this top-level structure (hoisted above it)
 
 
 class Def(Node):
     """``def KIND name(params):`` a structure template of kind ``kind``."""
-    __slots__ = ("name", "name_span", "kind", "kind_span", "params", "body")
+    __slots__ = ("name", "name_span", "kind", "kind_span", "params", "body", "within")
 
     def __init__(self, span: Span, name: str, name_span: Span, kind: str, kind_span: Span,
-                 params: list[TemplateParam], body: Block):
+                 params: list[TemplateParam], body: Block, within: str | None = None):
         self.span = span
         self.name = name
         self.name_span = name_span
@@ -320,6 +321,7 @@ class Def(Node):
         self.kind_span = kind_span
         self.params = params
         self.body = body
+        self.within = within    # written inside this top-level structure (hoisted above it)
 
 
 class StructDecl(Node):

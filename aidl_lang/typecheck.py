@@ -242,6 +242,7 @@ class Checker:
         `--set` checked the later range and the sweep listed the name twice).  The error is
         at the second of the two, naming the first's line."""
         first: dict[str, A.Node] = {}
+        self.defs_once(program)
         for st in program.stmts:
             if not isinstance(st, (A.ParamDecl, A.Assign)) or isinstance(st, A.KindAssign):
                 continue
@@ -263,6 +264,26 @@ class Checker:
                 hint=f"keep one `param {st.name} = ...` with the default and range you mean "
                      f"(its slider and `--set {st.name}=...` set it), or give the other name "
                      "another name")
+
+    def defs_once(self, program: A.Program) -> None:
+        """E0107 for a template or function defined twice in one file: the later one was
+        silently the one every call made, the calls above it included.  A ``def`` written in
+        a structure is one above it (:func:`aidl_lang.parsing.program.hoist_defs`), so two
+        structures that each define a ``side`` are told to name them apart."""
+        first: dict[str, A.Node] = {}
+        for st in program.stmts:
+            if not isinstance(st, (A.Def, A.Func)):
+                continue
+            before = first.setdefault(st.name, st)
+            if before is st:
+                continue
+            line = before.span.line if before.span is not None else "?"
+            apart = (" (a `def` written in a structure is defined for the whole file)"
+                     if st.within != before.within else "")
+            self.sink.error(
+                "E0107", f"`{st.name}` is defined twice (first on line {line}){apart}",
+                st.name_span or st.span,
+                hint=f"give one of them another name (`{st.name}_2`) and call it by that name")
 
     def unread_settings(self, program: A.Program) -> None:
         """W0115 for a param that nothing reads; W0108 for a top-level name that nothing reads

@@ -246,8 +246,7 @@ def test_E0108_points_at_the_wrong_argument(compile_text):
     assert span4(d) == (3, 16, 3, 21)
 
 
-@pytest.mark.parametrize("stmt", ["param w = 3", "units inch", 'import "x.aidl"',
-                                  "def f() -> solid { }"])
+@pytest.mark.parametrize("stmt", ["param w = 3", "units inch", 'import "x.aidl"'])
 def test_E0116_top_level_statement_inside_structure(compile_text, stmt):
     c = compile_text("solid s {\n    c = Circle((0, 0), 1)\n    " + stmt + "\n}\n")
     d = the_error(c, "E0116")

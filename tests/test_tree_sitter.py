@@ -143,6 +143,32 @@ def ts_tree(node, cols: _Columns) -> list:
     return [ts_statement(c, cols) for c in node.named_children if c.type in TS_KIND]
 
 
+def hoisted(items: list) -> list:
+    """tree-sitter's top-level statements with every ``def`` written in a structure moved
+    just above the top-level statement that holds it, as the Lark parser's AST has them
+    (aidl_lang.parsing.program.hoist_defs); tree-sitter keeps them where they are written."""
+    def take(stmts, found):
+        kept = []
+        for kind, span, nested in stmts:
+            if kind == "def" and found is not None:
+                found.append((kind, span, nested))
+                for body in nested:
+                    take(body, found)
+                continue
+            for body in nested:
+                take(body, found)
+            kept.append((kind, span, nested))
+        stmts[:] = kept
+
+    out = []
+    for kind, span, nested in items:
+        found: list = []
+        for body in nested:
+            take(body, found)
+        out += found + [(kind, span, nested)]
+    return out
+
+
 def ts_statement(n, cols: _Columns):
     kind = TS_KIND[n.type]
     start = n.start_point
@@ -191,7 +217,7 @@ def _compare(parser, title: str, source: str) -> str:
         bad = _first_error(tree.root_node)
         return f"{title}: an ERROR or MISSING node at line {bad[0] + 1}, column {bad[1] + 1}"
     cols = _Columns(source)
-    diff = _first_difference(lark_tree(prog.stmts), ts_tree(tree.root_node, cols))
+    diff = _first_difference(lark_tree(prog.stmts), hoisted(ts_tree(tree.root_node, cols)))
     return f"{title}: {diff}" if diff else ""
 
 
@@ -381,8 +407,9 @@ def ts_exprs(statements, cols: _Columns, out: list) -> list:
 def _compare_expressions(parser, title: str, source: str) -> str:
     prog = parse(source, title, DiagnosticSink())
     tree = parser.parse(source.encode("utf-8"))
-    mine = ts_exprs(tree.root_node.named_children, _Columns(source), [])
-    theirs = lark_exprs(prog.stmts, [])
+    # sorted: the Lark AST has a structure's `def` hoisted above it, tree-sitter does not
+    mine = sorted(ts_exprs(tree.root_node.named_children, _Columns(source), []), key=repr)
+    theirs = sorted(lark_exprs(prog.stmts, []), key=repr)
     if len(mine) != len(theirs):
         return f"{title}: Lark has {len(theirs)} expressions, tree-sitter {len(mine)}"
     for a, b in zip(theirs, mine):

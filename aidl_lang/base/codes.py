@@ -80,6 +80,9 @@ the other range.
 
     param w = 60 mm, min = 10 mm, max = 100 mm
     param w = 80 mm, min = 70 mm, max = 90 mm     # keep one `param w`
+
+A template or function is defined once in a file (a `def` written in a structure is defined for
+the whole file): the later one would be what every call made, those above it too.
 """),
     "E0108": ("wrong type", """
 A value of the wrong kind: a length where a point is expected, a Circle where a Line is
@@ -169,7 +172,8 @@ knows), a style word that is no weight or slant, a weight the family lacks, or a
     t = Text("HAPPY", position=(0, 0), size=20, font="Comic Sans")   # not installed: "sans"
 """),
     "E0116": ("top-level statement inside a structure", """
-`param`, `def`, `import` and `units` belong at the top level of a file.
+`param`, `import` and `units` belong at the top level of a file. (A `def` may stand inside a
+structure: it is defined for the whole file, as if written above the structure.)
 """),
     "E0117": ("geometry outside a structure", """
 Geometry and constraints live in a structure. Loose top-level geometry is put into an implicit

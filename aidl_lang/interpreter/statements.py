@@ -455,9 +455,9 @@ class Statements(Asserts):
         elif isinstance(st, A.Block):
             raise EvalError("E0001", "a block `{ ... }` without a header", st.span,
                             hint="name it: `solid NAME { ... }`")
-        elif isinstance(st, (A.ParamDecl, A.Def, A.Func, A.Import, A.UnitsDecl)):
-            what = {A.ParamDecl: "param", A.Def: "def", A.Func: "def", A.Import: "import",
-                    A.UnitsDecl: "units"}[type(st)]
+        elif isinstance(st, (A.ParamDecl, A.Import, A.UnitsDecl)):
+            # (a `def` in a structure was hoisted above it by the parser)
+            what = {A.ParamDecl: "param", A.Import: "import", A.UnitsDecl: "units"}[type(st)]
             raise EvalError("E0116", f"`{what}` is only allowed at the top level of a file", st.span,
                             hint=f"move the `{what}` line to the top of the file")
 

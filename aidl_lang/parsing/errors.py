@@ -138,7 +138,7 @@ def _open_paren(text: str, pos: int) -> bool:
 
 
 # statements only the top level of a file may hold (E0116 inside a structure)
-_TOP_ONLY = {"PARAM": "param", "UNITS": "units", "IMPORT": "import", "DEF": "def"}
+_TOP_ONLY = {"PARAM": "param", "UNITS": "units", "IMPORT": "import"}
 
 
 def _outermost_open_brace(text: str, pos: int) -> int | None:

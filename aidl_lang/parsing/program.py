@@ -112,4 +112,45 @@ def _parse_text(source: str, path: str, sink: DiagnosticSink):
         sink.error(*builder.failed[0])
         return A.Program(Span(path, 1, 1, 1, 1), path, source, []), masked
     end_line = source.count("\n") + 1
-    return A.Program(Span(path, 1, 1, end_line, 1, 0, len(source)), path, source, stmts), masked
+    return A.Program(Span(path, 1, 1, end_line, 1, 0, len(source)), path, source,
+                     hoist_defs(stmts)), masked
+
+
+def hoist_defs(stmts: list) -> list:
+    """The top-level statements with every ``def`` written inside a structure (or a loop, a
+    branch or another template in it) moved out, just above the top-level statement that
+    held it, its ``within`` the name of that structure: a template or function defined in a
+    structure is one defined above it, reading the file's names and its own arguments (issue
+    111: seven first checks of models failed on `def rail() -> solid { ... }` in an
+    assembly).  The block keeps every other statement in its order."""
+    out: list = []
+    for st in stmts:
+        found: list = []
+        if isinstance(st, (A.StructDecl, A.Def)):
+            _take_defs(st.body, found)
+            owner = st.name if isinstance(st, A.StructDecl) else st.within
+            for d in found:
+                d.within = owner
+        out.extend(found)
+        out.append(st)
+    return out
+
+
+def _take_defs(block, found: list) -> None:
+    """Move the ``def``s of ``block`` and the blocks in it into ``found``, in source order."""
+    if block is None:
+        return
+    kept = []
+    for st in block.stmts:
+        if isinstance(st, (A.Def, A.Func)):
+            found.append(st)
+            if isinstance(st, A.Def):
+                _take_defs(st.body, found)
+            continue
+        kept.append(st)
+        if isinstance(st, (A.StructDecl, A.For)):
+            _take_defs(st.body, found)
+        elif isinstance(st, A.If):
+            _take_defs(st.body, found)
+            _take_defs(st.orelse, found)
+    block.stmts[:] = kept

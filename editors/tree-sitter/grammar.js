@@ -83,17 +83,14 @@ export default grammar({
       $.units_declaration,
       $.import_declaration,
       $.param_declaration,
-      $.value_definition,
       $._simple_statement,
     ),
 
-    _top_compound_statement: $ => choice(
-      $.function_definition,
-      $.template_definition,
-      $._compound_statement,
-    ),
+    _top_compound_statement: $ => $._compound_statement,
 
+    // a `def` may stand in a structure too (the parser hoists it above the structure)
     _simple_statement: $ => choice(
+      $.value_definition,
       $.thickness_declaration,
       $.kerf_declaration,
       $.min_wall_declaration,
@@ -104,6 +101,8 @@ export default grammar({
     ),
 
     _compound_statement: $ => choice(
+      $.function_definition,
+      $.template_definition,
       $.structure_declaration,
       $.for_statement,
       $.if_statement,
@@ -136,6 +135,7 @@ export default grammar({
       field('value', $._expression),
     ),
 
+    // ---------------------------------------------------------------- definitions (top level or in a structure)
     // def NAME(params) -> KIND { ... }
     function_definition: $ => seq(
       'def',
