@@ -108,3 +108,57 @@ def test_the_prompt_and_docs_say_a_def_may_stand_in_a_structure():
     assert "at the top or in a structure" in system_prompt()
     text = (Path(__file__).resolve().parent.parent / "docs" / "language.md").read_text()
     assert "A `def` written inside a structure" in text
+
+
+# ------------------------------------------------------------ W0513 accepted, its hints
+GALLERY = RUNS / "issue111bn/run/05_target_gallery.first_valid.aidl"
+
+
+def _w0513(r):
+    return [d for d in r.diagnostics if d.code == "W0513"]
+
+
+@pytest.mark.parametrize("where,line", [
+    ("assembly", "    AllowOverlap(t[1].face.n, t[1].face.inner)\n"),
+    ("assembly", "    AllowOverlap(t[1].face)\n"),
+    ("template", "    AllowOverlap(n, inner)\n")])
+def test_W0513_of_a_text_near_a_mark_is_accepted_by_AllowOverlap(where, line):
+    """Run bn's target gallery: the score "20" 2.03 mm from the ring around it. Four forms of
+    `AllowOverlap` each left the W0513 and added W0523 "allows nothing": W0513's clearance and
+    a mark's run through a text never read the statement (only text over text did)."""
+    src = GALLERY.read_text()
+    at = "    Fixed(stem)\n" if where == "template" else "    Place(plank, position=(0, 0, HEIGHT))\n"
+    assert src.count(at) == 1
+    r = aidl_lang.compile(source=src.replace(at, line + at))
+    assert not [d for d in r.diagnostics if d.code == "W0523"]
+    left = [d.message for d in _w0513(r)]
+    if where == "template":
+        assert left == []                     # every copy's
+    else:
+        assert len(left) == 1 and "t[3]" in left[0] and "t[1]" not in left[0]
+
+
+def test_W0513_of_a_text_in_its_ring_offers_no_move_out_and_a_size_that_clears():
+    """The same W0513's first fix moved the score 40 mm, out of its target's ring; a font's
+    letters got "make the text smaller" with no size. Now: grow the ring or the size, and
+    that size clears it."""
+    r = aidl_lang.compile(path=str(GALLERY))
+    (w,) = _w0513(r)
+    assert "move the text" not in w.hint
+    assert "make the text at most 19.53 mm (size=19.53 mm)" in w.hint
+    src = GALLERY.read_text().replace("size=20, font=", "size=19.53, font=")
+    assert not _w0513(aidl_lang.compile(source=src))
+
+
+def test_W0513_of_a_text_near_its_border_still_moves_it_inward():
+    src = """solid plate {
+    body = Rectangle(center=(0, 0), width=100, height=60)
+    drawing d {
+        border = Rectangle(center=(0, 0), width=90, height=50)
+        t = Text("HELLO", position=(0, 19.5), size=10, valign="middle")
+    }
+}
+"""
+    (w,) = _w0513(aidl_lang.compile(source=src))
+    assert "move the text 0.76 mm down" in w.hint
+    assert not _w0513(aidl_lang.compile(source=src.replace("(0, 19.5)", "(0, 18.74)")))

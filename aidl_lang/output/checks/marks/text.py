@@ -326,6 +326,8 @@ def _check_marks(strokes, marks, tg, boxes, bb, sizes, said, sink, tick=None) ->
         if tick is not None:
             tick()
         g, m = tg[i], mg[j]
+        if text_allowed(g, m):
+            continue                            # `AllowOverlap(text, mark)`: as meant
         size = sizes[i]
         if inner[i, 0] >= inner[i, 2] or inner[i, 1] >= inner[i, 3]:
             continue
@@ -512,6 +514,8 @@ def _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs, M
         if tick is not None:
             tick()
         g, m = tg[i], mg[j]
+        if text_allowed(g, m):
+            continue                            # `AllowOverlap(text, mark)`: close as meant
         c = clear[i]
         if (bb[i, 0] - mb[j, 2] > c or mb[j, 0] - bb[i, 2] > c
                 or bb[i, 1] - mb[j, 3] > c or mb[j, 1] - bb[i, 3] > c):
@@ -584,7 +588,12 @@ def _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs, M
         if all(x is not None for x in shorten) and all(f[0] for f in fix):
             ways.append(f"shorten {'each' if len(pairs) > 1 else 'the'} mark to end "
                         f"{max(shorten):.2f} mm further from the text")
-        if all(x is not None for x in move):
+        frame = [f[4] for f in fix]
+        framed = all(x is not None for x in frame)     # a ring or border around the word
+        # a move that clears a frame by crossing it (run bn: a score moved 40 mm out of its
+        # target's ring) is no fix; one inward, about the clearance missing, is
+        if all(x is not None for x in move) and not (
+                framed and max(move) > 2 * max(frame) + 0.01):
             along = "along the mark" if all(f[0] for f in fix) else "away from the mark"
             # which way, in the page's words and as a vector (a model read "further along
             # the mark" both ways, issue 111)
@@ -599,8 +608,7 @@ def _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs, M
         twin = _same_size_sibling(g, sizes[i], tg, sizes)
         if len(ways) == 2 and twin is not None:
             ways.reverse()          # a shorter mark than its sibling's: moving leads
-        frame = [f[4] for f in fix]
-        if all(x is not None for x in frame):
+        if framed:
             ways.append(f"grow `{m.label}` by {max(frame):.2f} mm on each side")
         fits = [_fitting_size(tsegs[f[3]], segs[f[4]], ends_of[f[4]], boxes[f[2]], sizes[f[2]],
                               f[3]) for f in pairs]
@@ -611,7 +619,8 @@ def _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs, M
                         f"{smaller})")
         elif not any(x == 0.0 for x in fits):      # 0: no smaller size clears the mark
             ways.append("make the text smaller" + (f" ({smaller[2:]})" if smaller else ""))
-        if not any(w.startswith("move the text") for w in ways):
+        if not any(w.startswith("move the text") for w in ways) and not (
+                framed and all(x is not None for x in move)):
             ways.insert(0, "move the text or the mark clear of each other")   # (run ag: only
             #                 "make the text smaller", which shrinks a size the request gave)
         sink.warning("W0513", f"{text} is too close to the engraved {what}: the mark {how}"
@@ -655,15 +664,25 @@ def _fitting_size(tseg, mseg, ends, box3, size: float, g) -> float | None:
     from ....geometry.shapes.text import text_strokes
     if g.data.get("along") is not None or not size > 0 or g.data.get("text") is None:
         return None
-    own = np.asarray(text_strokes(g.data["text"], size, g.data.get("anchor", "middle"),
-                                  g.data.get("valign", "baseline"),
-                                  g.data.get("rotation", 0.0) or 0.0), dtype=float)
-    if own.shape != (len(tseg[0]), 2, 2):
-        return None
-    p = tseg[0][0] - own[0, 0]
-    if not (np.allclose(tseg[0] - p, own[:, 0], atol=1e-6)
-            and np.allclose(tseg[1] - p, own[:, 1], atol=1e-6)):
-        return None
+    if g.data.get("font") is not None:
+        # a font's outlines (issue 112): their chords scale about the position point, found
+        # from the glyphs' true box about it (a chord lies within TESS_TOL of its curve);
+        # a size that max_width shrank is not the `size=` a hint can give
+        ext = g.data.get("extent")
+        if ext is None or g.data.get("shrunk") or not len(tseg[0]):
+            return None
+        pts = np.concatenate([tseg[0], tseg[1]])
+        p = np.array([pts[:, 0].min() - ext[0], pts[:, 1].min() - ext[2]])
+    else:
+        own = np.asarray(text_strokes(g.data["text"], size, g.data.get("anchor", "middle"),
+                                      g.data.get("valign", "baseline"),
+                                      g.data.get("rotation", 0.0) or 0.0), dtype=float)
+        if own.shape != (len(tseg[0]), 2, 2):
+            return None
+        p = tseg[0][0] - own[0, 0]
+        if not (np.allclose(tseg[0] - p, own[:, 0], atol=1e-6)
+                and np.allclose(tseg[1] - p, own[:, 1], atol=1e-6)):
+            return None
     rot, box = box3[1], box3[2]
     c_, s_ = math.cos(rot), math.sin(rot)
     pu, pv = p[0] * c_ + p[1] * s_, -p[0] * s_ + p[1] * c_
@@ -796,6 +815,9 @@ def _check_marks_over_marks(d: Drawing, sink: DiagnosticSink, tick=None) -> None
     for key, rows in found.items():
         if tick is not None:
             tick()
+        rows = [r for r in rows if not text_allowed(r[1], r[2])]   # `AllowOverlap`: as meant
+        if not rows:
+            continue
         if key[0] == "into":
             # a pattern of marks run into one outline (a scale's ticks into a bar drawn over
             # them); one or two marks that cross into an outline are read as meant (a dial's
