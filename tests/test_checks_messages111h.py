@@ -162,3 +162,31 @@ def test_W0513_of_a_text_near_its_border_still_moves_it_inward():
     (w,) = _w0513(aidl_lang.compile(source=src))
     assert "move the text 0.76 mm down" in w.hint
     assert not _w0513(aidl_lang.compile(source=src.replace("(0, 19.5)", "(0, 18.74)")))
+
+
+# ------------------------------------------------------------ Flip in place, placed after
+FLIP = """thickness 3 mm
+assembly board {
+    solid cheek {
+        tri = Polygon([(0, 0), (100, 0), (100, 50)])
+        drawing paw { pad = Circle(center=(70, 12), radius=5) }
+    }
+    ax = Line((0, -10), (0, 10), construction=true)
+    Flip(cheek, about=ax)
+    cheek.bb.left == 110
+}
+"""
+
+
+@pytest.mark.parametrize("fixed", [False, True])
+def test_a_flipped_structure_placed_after_moves_whole(fixed):
+    """Run au's nail board: a cheek flipped about a free construction line and then placed
+    by its box left its paw drawing behind (the pad at x 115, off the part, where the
+    mirror image moved 210 mm puts it at 140): the line, the original and the copy's child
+    each took a share of the move. Flipped in place, the copy moves by its original's frame,
+    as a thing scaled in place does; with the line held it was right already."""
+    src = FLIP.replace("    Flip(", "    Fixed(ax)\n    Flip(") if fixed else FLIP
+    r = aidl_lang.compile(source=src)
+    assert r.ok and not r.diagnostics, [d.message for d in r.diagnostics]
+    assert tuple(r.value("board.cheek.bbox").value) == pytest.approx((110, 0, 210, 50), abs=1e-6)
+    assert tuple(r.value("board.cheek.paw.pad.center").value) == pytest.approx((140, 12), abs=1e-6)

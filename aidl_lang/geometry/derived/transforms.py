@@ -57,8 +57,10 @@ def _one(ctx, kind, args, target, name, i: int, indexed: bool):
         indexed = False
     if op == "Mirrored":
         S = ctx.struct
-        return _finish(ctx, _mirror(ctx, S, target, args["about"], name, i, indexed),
-                       target, in_place, name)
+        out = _mirror(ctx, S, target, args["about"], name, i, indexed)
+        if in_place:
+            _mark_in_place(out, target)
+        return _finish(ctx, out, target, in_place, name)
     if op == "Scaled":
         k = args["factor"].const()
         if k is None or not k > 0:
@@ -80,11 +82,17 @@ def _one(ctx, kind, args, target, name, i: int, indexed: bool):
         _carry_relations(ctx, target, cloners[0])
         made = out.struct if isinstance(out, StructRef) else out.geom
         made.scaled_in_place = k              # said by W0504's hint
-        if isinstance(out, GeomRef):          # it and its original move as one shape
-            out.geom.in_place_of = target.geom
-        else:                                 # it moves by its original's frame
-            out.struct.in_place_of = target.struct
+        _mark_in_place(out, target)
     return _finish(ctx, out, target, in_place, name)
+
+
+def _mark_in_place(out, target) -> None:
+    """A thing scaled or flipped in place moves with its original: a shape as one shape
+    with it, a structure by its original's frame (the solver's who-moves)."""
+    if isinstance(out, GeomRef):
+        out.geom.in_place_of = target.geom
+    else:
+        out.struct.in_place_of = target.struct
 
 
 def _mark_replaced(target) -> None:
