@@ -190,3 +190,19 @@ def test_a_flipped_structure_placed_after_moves_whole(fixed):
     assert r.ok and not r.diagnostics, [d.message for d in r.diagnostics]
     assert tuple(r.value("board.cheek.bbox").value) == pytest.approx((110, 0, 210, 50), abs=1e-6)
     assert tuple(r.value("board.cheek.paw.pad.center").value) == pytest.approx((140, 12), abs=1e-6)
+
+
+@pytest.mark.parametrize("pair", ["[bowl, grip]", "[grip, bowl]"])
+def test_fillet_at_a_pair_with_a_hull_names_the_hull(pair):
+    """Run bk's salad servers: `Fillet([bowl, grip], 8)`, the grip a Hull, said "got Ellipse
+    (`bowl`, an Ellipse)", an accepted shape. The refused one is named, with the forms that
+    take its corner."""
+    src = f"""solid server {{
+    bowl = Ellipse(center=(0, 0), rx=30, ry=20)
+    grip = Hull(Circle(center=(28, 0), radius=6), Circle(center=(120, 0), radius=8))
+    Fillet({pair}, 8)
+}}
+"""
+    (e,) = _errors(aidl_lang.compile(source=src))
+    assert e.code == "E0108" and "`grip` is a Hull" in e.message and "Ellipse (`bowl`" not in e.message
+    assert "Fillet((x, y), r)" in e.message

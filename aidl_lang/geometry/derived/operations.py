@@ -972,6 +972,19 @@ def _chosen(ctx, v, S, kind: str) -> list:
                 pts += ps
             return [Chosen("shapes_meet", tuple(pts), tuple(_name(e.geom, S) for e in v),
                            curve=tuple(specs) + tuple(e.geom for e in v))]
+        odd = [e for e in v if isinstance(e, GeomRef) and e.geom.closed
+               and e.geom.kind not in MEET]
+        if len(v) == 2 and odd and all(isinstance(e, GeomRef) and (
+                e.geom.closed or e.geom.kind == "Line") for e in v):
+            # a pair with a shape whose outline is not met (run bk: a Hull; the message
+            # named the Ellipse beside it, which alone is no corner)
+            g = odd[0].geom
+            raise OperationError(
+                f"{kind} at [a, b]: the corners where two outlines cross are found for "
+                f"{', '.join(MEET)} and lines; `{_name(g, S)}` is "
+                f"{'an' if g.kind[0] in 'AEIOU' else 'a'} {g.kind}: give the corner's point "
+                f"instead (`{kind}((x, y), r)`), or round every corner of the part "
+                f"(`{kind}(r)`)")
         return [c for e in v for c in _chosen(ctx, e, S, kind)]
     if isinstance(v, GeomRef):
         g = v.geom
