@@ -206,3 +206,29 @@ def test_fillet_at_a_pair_with_a_hull_names_the_hull(pair):
     (e,) = _errors(aidl_lang.compile(source=src))
     assert e.code == "E0108" and "`grip` is a Hull" in e.message and "Ellipse (`bowl`" not in e.message
     assert "Fillet((x, y), r)" in e.message
+
+
+def test_a_constant_computed_by_a_function_is_seen_in_a_template():
+    """Run br's lap harp: `X1 = sx(N - 1) + 22 mm`, `sx` a one-line function, was E0101
+    "unknown name `X1`, define it before use" inside a template (a plain structure read it):
+    a call of a name no primitive has was taken for a template's instance, so the line was
+    no file constant. Now the attempt fails only on its own assert."""
+    src = """N = 5
+def sx(i) = 10 mm * i
+X1 = sx(N - 1) + 22 mm
+param w = X1 + 8 mm, min = 20 mm, max = 100 mm
+def plate() -> solid {
+    body = Rectangle(center=(0, 0), width=X1, height=20)
+}
+solid a {
+    p = plate()
+    c = Rectangle(center=(0, 20), width=w, height=20)
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert not _errors(r), [d.message for d in r.diagnostics]
+    b = r.value("a.p.bbox").value
+    assert b[2] - b[0] == pytest.approx(62.0)
+    assert r.value("a.c.width").value == pytest.approx(70.0)
+    r = aidl_lang.compile(path=str(RUNS / "issue111br/drafts/05_lap_harp.attempt1.aidl"))
+    assert [d.code for d in _errors(r)] == ["E0405"]

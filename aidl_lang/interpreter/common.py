@@ -74,8 +74,15 @@ class FileCtx:
 
 
 
-def _is_plain_const(st) -> bool:
-    """A top-level `NAME = expr` that creates no geometry (a file constant)."""
+def file_functions(stmts) -> frozenset:
+    """The names of the one-line functions (``def f(x) = ...``) among ``stmts``."""
+    return frozenset(s.name for s in stmts if isinstance(s, A.Func))
+
+
+def _is_plain_const(st, funcs: frozenset = frozenset()) -> bool:
+    """A top-level `NAME = expr` that creates no geometry (a file constant); ``funcs``: the
+    file's one-line functions (:func:`file_functions`), whose calls give values (run br's
+    `X1 = sx(N - 1) + 22 mm` was taken for a template's instance, and no template saw it)."""
     if not isinstance(st, A.Assign):
         return False
     for n in A.walk(st.value):
@@ -83,7 +90,7 @@ def _is_plain_const(st) -> bool:
             e = lookup(n.func.id)
             if e is not None and e.category in ("primitive", "operation"):
                 return False
-            if n.func.id not in FUNCTIONS and e is None:
+            if n.func.id not in FUNCTIONS and e is None and n.func.id not in funcs:
                 return False   # a template call
     return True
 

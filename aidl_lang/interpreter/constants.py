@@ -7,7 +7,7 @@ from collections import Counter
 
 from .. import ast as A
 from ..base.diagnostics import EvalError
-from .common import _is_plain_const
+from .common import _is_plain_const, file_functions
 
 
 def early_constants(stmts: list) -> set:
@@ -21,10 +21,19 @@ def early_constants(stmts: list) -> set:
     tops = set(count)
     reads = {}
     above: set = set()
+    funcs = file_functions(stmts)
     for st in stmts:
         if isinstance(st, A.ParamDecl):
             above.add(st.name)
-        elif isinstance(st, A.Assign) and count[st.name] == 1 and _is_plain_const(st):
+        elif isinstance(st, A.Func) and count[st.name] == 1:
+            # a one-line function is defined where it stands; what it reads must be ready
+            # when a constant above a param calls it (run br: `X1 = sx(N - 1) + 22 mm`)
+            names = {n.id for n in A.walk(st.value) if type(n) is A.Name} & tops \
+                - {p.name for p in st.params}
+            if names <= above:
+                reads[st] = names
+                above.add(st.name)
+        elif isinstance(st, A.Assign) and count[st.name] == 1 and _is_plain_const(st, funcs):
             names = {n.id for n in A.walk(st.value) if type(n) is A.Name} & tops
             if names <= above:
                 reads[st] = names
@@ -37,7 +46,8 @@ def early_constants(stmts: list) -> set:
     early = set()
     for st in reversed(stmts):              # a constant that a wanted one reads is wanted
         if st in reads and st.name in wanted:
-            early.add(st)
+            if isinstance(st, A.Assign):    # (a function is defined in its place anyway)
+                early.add(st)
             wanted |= reads[st]
     return early
 
@@ -58,7 +68,7 @@ def late_constant(e: EvalError, program: A.Program) -> EvalError | None:
     if len(defs) > 1:
         why = f"it is assigned {len(defs)} times"
         fix = "assign it once"
-    elif not _is_plain_const(const):
+    elif not _is_plain_const(const, file_functions(program.stmts)):
         why = "it makes geometry"
         fix = "compute the param from numbers instead"
     else:

@@ -180,7 +180,7 @@ def fillet_copies(model) -> None:
     does not meet the other shape is passed over in silence (its original's is what the call
     named).  Run once, after the program."""
     from ..geometry.derived.corners import Chosen
-    from ..geometry.derived.operations import _outline_spec
+    from ..geometry.derived.fillet_at import outline_spec
     index: dict = {}
     for s in model.structures:
         fin = getattr(s, "finish", None)
@@ -200,7 +200,7 @@ def fillet_copies(model) -> None:
                         pair = (cp, gb) if side == 0 else (ga, cp)
                         specs, pts = [], []
                         for e in pair:
-                            spec, ps = _outline_spec(e, s)
+                            spec, ps = outline_spec(e, s)
                             specs.append((spec, len(ps)))
                             pts += [(p.x + ox, p.y + oy) for p in ps]
                         ch = Chosen("shapes_meet", tuple(pts), c.name, curve=tuple(specs) + pair)

@@ -21,7 +21,8 @@ from .arguments import check_kinds, kind_error, precheck_asserts
 from .asserts import Asserts
 from .constants import early_constants, late_constant
 from .common import (ANGLE_TWICE, DEG, POISON, FileCtx, Scope, _STMT_ERRORS, _Silent, _a, _common_ancestor,
-                     _definition_lines, _fmt_num, _src, _is_geometry_stmt, _is_plain_const)
+                     _definition_lines, _fmt_num, _src, _is_geometry_stmt, _is_plain_const,
+                     file_functions)
 
 
 
@@ -36,8 +37,9 @@ class Statements(Asserts):
                                                                A.Func, A.ThicknessDecl))]
         structs = [s for s in top if isinstance(s, A.StructDecl)]
         asserts = [s for s in top if isinstance(s, A.Assert)]
+        funcs = file_functions(program.stmts)
         loose = [s for s in top if not isinstance(s, (A.StructDecl, A.Assert))
-                 and not _is_plain_const(s)]
+                 and not _is_plain_const(s, funcs)]
         for name in self.overrides:
             if name not in getattr(fctx, "params", {}):
                 self.sink.error("E0113", f"`--set {name}=...`: the model has no param `{name}`",
@@ -69,10 +71,10 @@ class Statements(Asserts):
             root = self._new_structure("model", kind, None, program.span)
             self.scope = fctx.scope
             for s in top:
-                if _is_plain_const(s):
+                if _is_plain_const(s, funcs):
                     self._exec_stmt(s)
             scope = Scope(fctx.scope, root, fctx)
-            rest = [s for s in top if not _is_plain_const(s)]
+            rest = [s for s in top if not _is_plain_const(s, funcs)]
             self._run_body(root, A.Block(program.span, rest), scope)
         # `thickness 3 mm` at the top level: the default of every part (after the constants)
         saved = self.struct, self.scope
@@ -185,7 +187,8 @@ class Statements(Asserts):
                 self.error(e)
         if not is_main:
             for st in program.stmts:
-                if isinstance(st, A.Assign) and _is_plain_const(st):
+                if isinstance(st, A.Assign) and _is_plain_const(st, file_functions(
+                        program.stmts)):
                     try:
                         fctx.scope.vars[st.name] = self.eval(st.value)
                     except EvalError as e:

@@ -162,7 +162,7 @@ def _sizes(g, x) -> tuple:
 
 def outline_distance(kind: str, pts: list, sizes: tuple, p) -> float:
     """How far (mm) point ``p`` lies from the outline of a shape given by
-    :func:`.operations._outline_spec` (``pts`` placed) and :func:`_sizes`; an ellipse's by
+    :func:`.fillet_at.outline_spec` (``pts`` placed) and :func:`_sizes`; an ellipse's by
     its implicit function over its gradient (first order: exact on the curve, where it is
     asked)."""
     px, py = p
