@@ -232,3 +232,24 @@ solid a {
     assert r.value("a.c.width").value == pytest.approx(70.0)
     r = aidl_lang.compile(path=str(RUNS / "issue111br/drafts/05_lap_harp.attempt1.aidl"))
     assert [d.code for d in _errors(r)] == ["E0405"]
+
+
+@pytest.mark.parametrize("name,words", [("04_connect_four", ("strip[k]",)),
+                                        ("07_radiation_shield", ("ring[k]", "p[i]"))])
+def test_a_loops_list_named_in_another_loop_is_given_its_copy(name, words):
+    """Run bp, two first checks: the copies made in one loop named whole in a second loop over
+    the same count (`RightOf(strip, strip[k - 1], gap=6)`), hint "relate each of them". The
+    hint gives this loop's copy, `strip[k]`."""
+    r = aidl_lang.compile(path=str(RUNS / f"issue111bp/drafts/{name}.attempt1.aidl"))
+    e = [d for d in _errors(r) if d.code == "E0108"]
+    assert e and all(any(f"one of them is `{w}`" in d.hint for w in words) for d in e)
+
+
+def test_a_loops_list_hint_follows_the_loops_count():
+    src = """solid s {
+    for i in range(3) { c = Circle(center=(i * 10, 0), radius=2) }
+    for j in range(1, 3) { AlignCenterY(c, c[j - 1]) }
+}
+"""
+    (e,) = _errors(aidl_lang.compile(source=src))
+    assert "one of them is `c[j - 1]`" in e.hint

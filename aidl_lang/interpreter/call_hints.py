@@ -45,6 +45,31 @@ def _list_hint(cname: str, key: str, node, sink) -> str | None:
             f"structure and relate that (`{cname}` takes a structure or a shape as `{key}`)")
 
 
+def _copy_hint(scope, span, value: list, sink) -> str | None:
+    """The hint of a name of a loop's list of copies given as one thing inside another loop
+    (run bp, twice: `strip = ...` in one loop, then `RightOf(strip, ...)` in a second loop
+    over the same count: "relate each of them"): this loop's copy, `strip[k]`; else None."""
+    from .common import _src
+    name = _src(sink, span) if span is not None else ""
+    if not name.isidentifier():
+        return None
+    s = scope
+    while s is not None and getattr(s, "loop_var", None) is None:
+        s = s.parent
+    if s is None:
+        return None
+    var, k = s.loop_var, s.loop_index
+    item = s.vars.get(var)
+    n = item if isinstance(item, (int, float)) else getattr(item, "const", lambda: None)()
+    if n is None or isinstance(n, bool) or n != int(n) or not 0 <= k < len(value):
+        return None                     # a loop over things, not counting: no index to give
+    off = int(n) - k
+    index = var if off == 0 else f"{var} - {off}" if off > 0 else f"{var} + {-off}"
+    return (f"`{name}` is a list of {len(value)} (a name set in a loop is the current copy "
+            f"only inside its loop, the list after it): in this loop, one of them is "
+            f"`{name}[{index}]`")
+
+
 def shadowed(interp, v, span) -> str | None:
     """The hint of an argument that names a structure where a value was meant, because a
     structure of that name hides a constant of an outer scope (run ag's donut wall: `foot_l

@@ -625,6 +625,7 @@ class Statements(Asserts):
             sc = Scope(outer, self.struct, self.file)
             sc.vars[st.var] = item
             sc.loop_index = k
+            sc.loop_var = st.var
             sc.loop_suffix = f"{base}[{k}]"
             self.scope = sc
             try:
