@@ -253,3 +253,48 @@ def test_a_loops_list_hint_follows_the_loops_count():
 """
     (e,) = _errors(aidl_lang.compile(source=src))
     assert "one of them is `c[j - 1]`" in e.hint
+
+
+# ------------------------------------------------------------ the assembled product
+def test_a_roof_bent_180_degrees_is_made():
+    """Run bq's gecko hide: `Bend(roof, ..., angle=180 deg)` drew no roof (179.9 degrees
+    did) and the note said its nearest part was "inf mm" away: the bend's cutting planes fell
+    1e-14 and 3e-10 mm off the band's corners and the bent mesh was no manifold."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111bq/run/05_gecko_hide.first_valid.aidl"))
+    assert r.ok
+    assert not [d for d in r.diagnostics if d.code == "W0518"]
+    assert r.fit["floating"] == [] and r.fit["collisions"] == []
+
+
+def test_bend_cuts_snap_onto_the_corners_they_nearly_meet():
+    import importlib
+    import math
+
+    import manifold3d as mf
+    from aidl_lang.output.fabrication.assembly import bent
+    P = importlib.import_module("aidl_lang.output.part.build.placement")
+    w = math.pi * (70 + 1.5)
+    m = mf.Manifold.cube((w, 200, 3)).translate((1e-10 - 3e-10, 0, 0))
+    b = bent(m, [(w / 2, math.pi, 70.0)], 3.0)
+    assert b.status() == mf.Error.NoError and b.volume() == pytest.approx(w * 600, rel=1e-3)
+    got = P._snapped(P.np.array([-1e-12, 5.0, w + 2e-10]), P.np.array([0.0, w]))
+    assert got.tolist() == [0.0, 5.0, w]
+
+
+def test_W0518_of_a_loops_loose_copies_is_one_note():
+    """Run bq's bingo board: 80 W0518 warnings, one per token made in a loop, none placed,
+    laid 4 mm apart on the sheet. Parts never placed beside parts never placed lie flat as
+    drawn: a note, and one for the statement, naming the others."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111bq/run/06_bingo_board.first_valid.aidl"))
+    (w,) = [d for d in r.diagnostics if d.code == "W0518"]
+    assert w.severity == "note" and "so do 79 more parts of this statement" in w.message
+    assert len(r.fit["floating"]) == 80          # the fit as data keeps every part
+
+
+def test_W0513_offers_no_move_longer_than_the_text():
+    """The same board: a token's number 0.25 mm too near the bar under it, hint "move the
+    text 11.04 mm further away" (off its 22 mm token). A move longer than the text is tall is
+    no fix: the other ways are given."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111bq/run/06_bingo_board.first_valid.aidl"))
+    (w,) = _w0513(r)
+    assert "11.04" not in w.hint and "make the text at most 8.66 mm" in w.hint

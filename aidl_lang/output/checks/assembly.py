@@ -6,6 +6,8 @@
 * ``W0518`` a part that touches no other (a tab short of its slot: the gap)."""
 from __future__ import annotations
 
+import math
+
 from ...base.diagnostics import Diagnostic, DiagnosticSink, Label
 from ..part.build.booleans import Drawing
 
@@ -70,41 +72,56 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
     def templates(name) -> bool:
         sp = at(name)
         return sp is not None and in_stdlib(sp.file)
+    groups: dict = {}       # (statement, severity) -> [(gap, message, hint)]: a loop's copies once
     for g in gaps:
         if templates(g.part) and templates(g.nearest):
             continue            # a gap a stdlib template places by design (gear_train's lift=)
         d.fit["floating"].append({"part": g.part, "nearest": g.nearest, "gap": round(g.gap, 6)})
         unplaced = getattr(d.part_of.get(g.part), "placement", None) is None
         short = g.part.split(".")[-1]
-        if unplaced and g.gap >= AWAY - 1e-6:   # a note: a part never placed, away from the
-            # product (runs z7, ai: "touches no other part" read as a defect of the cut parts);
-            # one just short of another (a base 0.25 mm under its wall) stays a warning
-            sink.add(Diagnostic(
-                "W0518", f"assembled, part `{g.part}` has no `Place` and touches no other part "
-                f"(the nearest, `{g.nearest}`, is {g.gap:.3g} mm away): it lies flat where it "
-                "is drawn", at(g.part), "note",
-                hint=f"the parts are cut as drawn either way; to put `{short}` in the "
-                     f"assembled product (3D views, 3MF, the fit check), give it "
-                     f"`Place({short}, ...)`"))
-            continue
-        if g.gap >= AWAY - 1e-6:        # placed 5 mm or more from all: carried by what is not
+        if not math.isfinite(g.gap):    # no solid of it was made (a mesh no manifold)
+            said = ("warning", f"assembled, part `{g.part}` could not be made in 3D (its "
+                    "solid came out empty), so the fit check and the 3D views leave it out",
+                    "the parts are cut as drawn either way; report the program: this is a "
+                    "fault of the 3D model, not of the part")
+        elif unplaced and (g.gap >= AWAY - 1e-6 or getattr(
+                d.part_of.get(g.nearest), "placement", None) is None):
+            # a note: a part never placed, away from the product (runs z7, ai: "touches no
+            # other part" read as a defect of the cut parts) or beside another never placed
+            # (run bq: a game's 80 loose tokens laid 4 mm apart); one just short of a placed
+            # part (a base 0.25 mm under its wall) stays a warning
+            said = ("note", f"assembled, part `{g.part}` has no `Place` and touches no other "
+                    f"part (the nearest, `{g.nearest}`, is {g.gap:.3g} mm away): it lies flat "
+                    "where it is drawn",
+                    f"the parts are cut as drawn either way; to put `{short}` in the "
+                    f"assembled product (3D views, 3MF, the fit check), give it "
+                    f"`Place({short}, ...)`")
+        elif g.gap >= AWAY - 1e-6:      # placed 5 mm or more from all: carried by what is not
             # cut (run bf: a wheel on a dowel axle, a sign on S-hooks; "a tab does not reach
             # its slot: move it 7 mm" would have made the wheel rub its stand)
-            sink.add(Diagnostic(
-                "W0518", f"assembled, part `{g.part}` touches no other part (the nearest, "
-                f"`{g.nearest}`, is {g.gap:.3g} mm away): held by what is not cut (an axle, "
-                "hooks, hardware), or placed too far", at(g.part), "note",
-                hint=f"if a tab of it should reach a slot, move `{short}` {g.gap:.3g} mm with "
-                     "its `Place`; held by hardware: nothing is needed"))
-            continue
-        sink.warning("W0518", f"assembled, part `{g.part}` touches no other part: the nearest, "
-                     f"`{g.nearest}`, is {g.gap:.3g} mm away", at(g.part),
-                     hint=(f"`{short}` has no `Place`: assembled, it lies flat where it is "
-                           f"drawn; give it one, `Place({short}, ...)`, to put it in the "
-                           "product (the parts are cut as drawn either way)" if unplaced else
-                           f"move `{g.part}` {g.gap:.3g} mm towards `{g.nearest}` with its "
-                           "`Place` (or, where a tab falls short of its slot, lengthen the "
-                           "tab)"))
+            said = ("note", f"assembled, part `{g.part}` touches no other part (the nearest, "
+                    f"`{g.nearest}`, is {g.gap:.3g} mm away): held by what is not cut (an "
+                    "axle, hooks, hardware), or placed too far",
+                    f"if a tab of it should reach a slot, move `{short}` {g.gap:.3g} mm with "
+                    "its `Place`; held by hardware: nothing is needed")
+        else:
+            said = ("warning", f"assembled, part `{g.part}` touches no other part: the "
+                    f"nearest, `{g.nearest}`, is {g.gap:.3g} mm away",
+                    f"`{short}` has no `Place`: assembled, it lies flat where it is drawn; "
+                    f"give it one, `Place({short}, ...)`, to put it in the product (the parts "
+                    "are cut as drawn either way)" if unplaced else
+                    f"move `{g.part}` {g.gap:.3g} mm towards `{g.nearest}` with its `Place` "
+                    "(or, where a tab falls short of its slot, lengthen the tab)")
+        groups.setdefault((at(g.part), said[0]), []).append((g, *said[1:]))
+    for (span, severity), rows in groups.items():
+        # the copies a loop makes are one statement: one diagnostic (run bq: 80 W0518 for the
+        # tokens of a bingo board), the others named after it
+        g, message, hint = rows[0]
+        if len(rows) > 1 and span is not None:
+            names = ", ".join(f"`{r[0].part.split('.')[-1]}`" for r in rows[1:4])
+            message += (f"; so do {len(rows) - 1} more part{'s' if len(rows) > 2 else ''} of "
+                        f"this statement ({names}{', ...' if len(rows) > 4 else ''})")
+        sink.add(Diagnostic("W0518", message, span, severity, hint=hint))
 
 
 def check_routed_fit(d: Drawing, output, diameter: float, relief: str, sink: DiagnosticSink,

@@ -574,8 +574,12 @@ def _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs, M
         frame = [f[4] for f in fix]
         framed = all(x is not None for x in frame)     # a ring or border around the word
         # a move that clears a frame by crossing it (run bn: a score moved 40 mm out of its
-        # target's ring) is no fix; one inward, about the clearance missing, is
-        if all(x is not None for x in move) and not (
+        # target's ring) is no fix; one inward, about the clearance missing, is; nor is one
+        # longer than the text is tall (run bq: a token's number moved 11 mm, off its 22 mm
+        # token, to clear a bar 0.25 mm too near)
+        far = any(x is not None for x in move) and max(
+            x for x in move if x is not None) > sizes[i]
+        if all(x is not None for x in move) and not far and not (
                 framed and max(move) > 2 * max(frame) + 0.01):
             along = "along the mark" if all(f[0] for f in fix) else "away from the mark"
             # which way, in the page's words and as a vector (a model read "further along
@@ -602,8 +606,7 @@ def _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs, M
                         f"{smaller})")
         elif not any(x == 0.0 for x in fits):      # 0: no smaller size clears the mark
             ways.append("make the text smaller" + (f" ({smaller[2:]})" if smaller else ""))
-        if not any(w.startswith("move the text") for w in ways) and not (
-                framed and all(x is not None for x in move)):
+        if not any(w.startswith("move the text") for w in ways) and not framed:
             ways.insert(0, "move the text or the mark clear of each other")   # (run ag: only
             #                 "make the text smaller", which shrinks a size the request gave)
         sink.warning("W0513", f"{text} is too close to the engraved {what}: the mark {how}"
