@@ -298,3 +298,29 @@ def test_W0513_offers_no_move_longer_than_the_text():
     r = aidl_lang.compile(path=str(RUNS / "issue111bq/run/06_bingo_board.first_valid.aidl"))
     (w,) = _w0513(r)
     assert "11.04" not in w.hint and "make the text at most 8.66 mm" in w.hint
+
+
+# ------------------------------------------------------------ W0405 on a rounded outline
+def test_W0405_leaves_out_parts_laid_out_and_notes_sizes_to_the_sharp_corners():
+    """Run br's hanging file frame: three W0405 on `AlignLeft(rail, front)` (laying parts out
+    on the sheet of an assembly that places them with Place: the rounded trapezoid's left
+    0.475 mm in means nothing there), and one on `assert front.body.bb.width == 400 mm` (the
+    foot to its sharp corners, as drawings give a rounded outline's size). The layout is not
+    warned; the assert is a note whose hint keeps the design."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111br/run/02_hanging_file_frame.first_valid.aidl"))
+    (w,) = [d for d in r.diagnostics if d.code == "W0405"]
+    assert w.severity == "note" and w.message.startswith("`assert front.body.bb.width")
+    assert w.hint.startswith("if the size to the sharp corners is meant, nothing is needed")
+
+
+def test_W0405_of_a_sharp_point_rounded_far_back_stays_a_warning():
+    """A 10 degree point rounded with r 2 loses 9.5 mm of its length: no drawing means that."""
+    src = """solid stake {
+    body = Polygon([(-8, 0), (8, 0), (0, 90)])
+    Fillet(2)
+    assert body.bb.height == 90 mm
+}
+"""
+    r = aidl_lang.compile(source=src)
+    (w,) = [d for d in r.diagnostics if d.code == "W0405"]
+    assert w.severity == "warning" and "sharp corners" not in w.message

@@ -13,7 +13,7 @@ the difference and the constraint that closes it.  (An ``Offset``, ``Inset``, ``
 """
 from __future__ import annotations
 
-from ...base.diagnostics import DiagnosticSink
+from ...base.diagnostics import Diagnostic, DiagnosticSink
 from ...geometry.relations.bbox import (SIDES, BBTerm, collect, drawn_box_misses, exclusions,
                                         numeric_box, side_expr)
 from ...geometry.core.expr import Nl, const, evaluate, rebuild
@@ -69,6 +69,7 @@ def check_final_boxes(sink: DiagnosticSink, model: Model, d: Drawing, calls=None
     moved: dict = {}                # id(structure) -> final minus solved, per side
     solved: dict = {}               # id(structure) -> its solved box, per side
     parts = set((getattr(d, "part_of", None) or {}).values())
+    placed = bool(getattr(d, "placement", None))
     for c in model.constraints:
         if not c.deferred or c.implicit or c.kind == "equation":
             continue                # an equation on box values is taken as written
@@ -76,11 +77,14 @@ def check_final_boxes(sink: DiagnosticSink, model: Model, d: Drawing, calls=None
         read = {id(t.target) for t in terms} & finished.keys()
         if not read:
             continue
-        if c.kind in SPACING and len({_part_of(t.target if isinstance(t.target, Structure)
-                                               else t.target.owner, parts)
-                                      for t in terms} - {None}) > 1:
+        if (c.kind in SPACING or placed) and len({_part_of(
+                t.target if isinstance(t.target, Structure) else t.target.owner, parts)
+                for t in terms} - {None}) > 1:
             continue                # separate parts spaced on the sheet (run ab's camp stool:
-            #                         `RightOf(leg_b, leg_a, gap=10)`, 10.54 mm apart)
+            # `RightOf(leg_b, leg_a, gap=10)`, 10.54 mm apart), or laid out on it where
+            # `Place` assembles them (run br's file frame: `AlignLeft(rail, front)`, 0.475
+            # mm: the final outline lies within the box read, so the parts never meet for
+            # it, and Place starts from each part's frame)
         for k in read:
             if k not in moved:
                 moved[k], solved[k] = _moved(d, finished[k], x)
@@ -173,19 +177,32 @@ def check_final_box_asserts(sink: DiagnosticSink, model: Model, d: Drawing,
         what = f"`{named[read[0]]}`, the outline of `{s.path}`," if read[0] in named \
             else f"`{s.path}`"
         rounded = [k for k in kinds if k in ("Fillet", "Chamfer")]
-        sink.warning(
+        size = max((f[1] for f in getattr(s, "finish", None) or []), default=0.0)
+        # a size held to the sharp corners, each side in by no more than the rounding's own
+        # size (a corner of 60 degrees or more), is how drawings give a rounded outline's
+        # size (run br: a trapezoid's 400 mm foot, 0.475 mm in at each end under r 4): a note.
+        # A sharp point rounded back far (issue 111's tent stake: 21.4 mm under r 2) is not.
+        sharps = before and kinds == rounded and all(
+            (v > 0) == (sd in ("left", "bottom")) and abs(v) <= size + BOX_TOL
+            for sd, v in moved[read[0]].items() if abs(v) > BOX_TOL and sd in asked)
+        sink.add(Diagnostic(
             "W0405", f"`assert {a.text}` reads the box of {what} before its {ops}: it "
-            f"{'holds' if before else 'fails'} there and would "
+            f"{'holds' if before else 'fails'} there"
+            + (" (to the sharp corners, as a drawing gives a rounded outline's size)"
+               if sharps else "") + f" and would "
             f"{'fail' if before else 'hold'} on the final outline ({sides})",
-            a.span, calls=calls(a.owner) if calls is not None else None,
-            hint=f"an assert reads the shapes as drawn, before {ops} (adding the difference "
+            a.span, "note" if sharps else "warning",
+            hint=("if the size to the sharp corners is meant, nothing is needed; "
+                  if sharps else "")
+                 + f"an assert reads the shapes as drawn, before {ops} (adding the difference "
                  f"to the assert fails it there, E0405): to make the final outline the size "
                  f"asserted, "
                  + (f"draw that corner round (a `Hull` with a `Circle` of the radius at the "
                     f"tip) or round only corners away from it (`{rounded[0]}(at=[...], ...)`)"
                     if rounded else "assert the shape's own size (its `width`, `radius`, "
                     "`rx`...), which holes leave as drawn, when the holes are meant to cut that "
-                    "side; or move the holes that cut that side"))
+                    "side; or move the holes that cut that side")),
+            calls=calls(a.owner) if calls is not None else None)
 
 
 def _holed(s: Structure) -> bool:
@@ -247,8 +264,8 @@ def _at_final(e, x, exclude: set, moved: dict):
 
 # relations that space two boxes apart: between two separate parts they only lay the parts
 # out on the drawing, where a fillet's half millimetre changes nothing that is cut
-SPACING = frozenset({"LeftOf", "RightOf", "Above", "Below", "Gap"})
 
+SPACING = frozenset({"LeftOf", "RightOf", "Above", "Below", "Gap"})
 
 
 def _warn(sink, c, terms, finished, moved, solved, calls) -> None:
