@@ -228,10 +228,11 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
 # tenon in its mortise, has no screw (they go between tabs). Of two materials,
 # `thickness` is the other panel's in each half: the slotted panel's for "tab"
 # (how far the tabs stand out), the tab panel's for "slot" (the slot's width).
-# Members: `gap` (within the panel), `overrun` (each gap run 1 mm past the
-# edges: drawn, in no box), `nut`, `slot`, `bolt`: each a list (`slot`: one
-# per tab, even with `tabs=1`; `gap`, `overrun`: one more; `nut`, `bolt`: one
-# between each two tabs): `j.slot[0].bb`; the whole joint's box is `j.bb`.
+# Members: each a list; of part "tab", `gap` (within the panel; one more than
+# tabs), `overrun` (each gap run 1 mm past the edges: drawn, in no box) and
+# `nut` (one between each two tabs); of part "slot", `slot` (one per tab, even
+# with `tabs=1`: `j.slot[0].bb`) and `bolt` (one between each two tabs). The
+# whole joint's box is `j.bb` (a tab part's: its gaps').
 # Anchor: (cx, cy) is the middle of the edge (part "slot": of the slots); rotation 0: the edge along x, the panel toward -y.
 def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, screw=3,
                  clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {

@@ -483,6 +483,11 @@ def test_E0405_on_a_part_a_layout_moved_names_the_move(path, line, part, by):
     moved it; an assert that reads no place (a constant, a size) says nothing of it."""
     r = aidl_lang.compile(source=(RUNS / path).read_text())
     e = [d for d in r.diagnostics if d.code == "E0405" and d.span.line == line]
+    if "dog_nail_board" not in path:
+        # round twelve: in an assembly that places its parts, the assert holds where they
+        # are written (the stable's back and the loom's halves are placed)
+        assert e == []
+        return
     assert len(e) == 1
     assert f"`{part}` lies (" in e[0].message and f"moved by {by}" in e[0].message
     assert not any("moved by" in d.message for d in r.diagnostics
@@ -636,7 +641,10 @@ def test_tab_and_slots_docs_say_its_members_are_lists_and_how_long():
     """Runs am and bl read `j.slot.bb` of a `tabs=1` joint (E0102 "a list has no member bb"):
     the docs say each member is a list and its length, measured here."""
     from aidl_lang.library.reference import find
-    assert "`slot`: one per tab, even with `tabs=1`" in " ".join(find("tab_and_slot").text.split())
+    text = " ".join(find("tab_and_slot").text.split())
+    # round twelve: which half has which member (runs bt, bu read a tab half's `slot`)
+    assert "of part \"slot\", `slot` (one per tab, even with `tabs=1`" in text
+    assert "of part \"tab\", `gap`" in text
     src = """import "std/joints.aidl"
 solid p {
     body = Rectangle(center=(0, -20), width=100, height=40)

@@ -324,3 +324,69 @@ def test_W0405_of_a_sharp_point_rounded_far_back_stays_a_warning():
     r = aidl_lang.compile(source=src)
     (w,) = [d for d in r.diagnostics if d.code == "W0405"]
     assert w.severity == "warning" and "sharp corners" not in w.message
+
+
+@pytest.mark.parametrize("path", ["issue111bt/drafts/05_rod_rack.attempt1.aidl",
+                                  "issue111bu/drafts/01_curtain_pole_bracket.attempt1.aidl"])
+def test_a_member_a_templates_other_branch_makes_says_so(path):
+    """Runs bt and bu, two first checks: `tabs.slot[0]` of a `tab_and_slot(part="tab")`,
+    hint "did you mean `lo`?" (a number its body works with). The hint says which branch
+    makes `slot` and lists the members the instance has, shapes first."""
+    (e,) = _errors(aidl_lang.compile(path=str(RUNS / path)))
+    assert e.code == "E0102" and "`lo`" not in e.hint and not e.suggestions
+    assert "`tab_and_slot` makes `slot` only where `part == \"tab\"` is false" in e.hint
+    assert "its members: gap, overrun, bb, part" in e.hint
+
+
+def test_a_template_instances_members_offered_are_its_shapes_and_arguments():
+    src = """def bracket(w = 40 mm) -> solid {
+    half = w / 2
+    plate = Rectangle(center=(0, 0), width=w, height=20)
+}
+solid s {
+    b = bracket()
+    assert b.plates.width == 40 mm
+    assert b.hal == 20 mm
+}
+"""
+    errs = _errors(aidl_lang.compile(source=src))
+    assert [e.suggestions for e in errs] == [["plate"], []]
+
+
+# ------------------------------------------------------------ asserts across placed parts
+@pytest.mark.parametrize("path", ["issue111bv/drafts/07_ant_farm.attempt1.aidl",
+                                  "issue111bs/drafts/07_xmas_countdown.attempt2.aidl",
+                                  "issue111bp/drafts/04_connect_four.attempt2.aidl",
+                                  "issue111bp/drafts/07_radiation_shield.attempt2.aidl"])
+def test_an_assert_across_placed_parts_holds_where_they_are_written(path):
+    """Runs bp (twice), bs and bv: asserts on the product as drawn (`frame.right.bb.left -
+    plug.tongue.bb.right == 0.2 mm`) failed by the moves of the relations that lay the parts
+    out on the sheet, in assemblies that place every part with Place from where it is
+    written. Each of these first checks failed on that alone."""
+    r = aidl_lang.compile(path=str(RUNS / path))
+    assert r.ok and not _errors(r), [d.message for d in _errors(r)]
+
+
+PLACED = """thickness 3 mm
+assembly kit {
+    solid a { r = Rectangle(center=(0, 0), width=40, height=20) }
+    solid b { r = Rectangle(center=(45, 0), width=40, height=20) }
+    RightOf(b, a, gap=6)
+    PLACE
+    assert b.r.bb.left - a.r.bb.right == GAP mm
+}
+"""
+
+
+@pytest.mark.parametrize("place,gap,ok", [
+    ("Place(a, position=(0, 0, 0))\n    Place(b, position=(0, 0, 0))", 5, True),   # as drawn
+    ("Place(a, position=(0, 0, 0))\n    Place(b, position=(0, 0, 0))", 6, True),   # on the sheet
+    ("Place(a, position=(0, 0, 0))\n    Place(b, position=(0, 0, 0))", 7, False),
+    ("", 5, False),                 # nothing placed: the sheet is the design
+    ("", 6, True)])
+def test_where_written_counts_only_for_placed_parts(place, gap, ok):
+    r = aidl_lang.compile(source=PLACED.replace("PLACE", place).replace("GAP", str(gap)))
+    assert (not _errors(r)) == ok
+    if not ok:
+        (e,) = _errors(r)
+        assert e.code == "E0405"

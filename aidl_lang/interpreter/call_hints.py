@@ -45,6 +45,14 @@ def _list_hint(cname: str, key: str, node, sink) -> str | None:
             f"structure and relate that (`{cname}` takes a structure or a shape as `{key}`)")
 
 
+def list_arg_hint(interp, cname: str, key: str, node, spans: dict, bound: dict) -> str | None:
+    """The hint of a list given as argument ``key`` where a relation takes one box (E0108):
+    a loop's copies named whole in another loop (:func:`_copy_hint`), else
+    :func:`_list_hint`."""
+    return _copy_hint(interp.scope, spans[key], bound[key], interp.sink) or _list_hint(
+        cname, key, node, interp.sink)
+
+
 def _copy_hint(scope, span, value: list, sink) -> str | None:
     """The hint of a name of a loop's list of copies given as one thing inside another loop
     (run bp, twice: `strip = ...` in one loop, then `RightOf(strip, ...)` in a second loop
@@ -88,3 +96,41 @@ def shadowed(interp, v, span) -> str | None:
     line = v.struct.span.line if v.struct.span is not None else "?"
     return (f"`{name}` here is the {v.struct.kind} `{v.struct.path}` (line {line}), which hides "
             f"the outer `{name}`: give the structure or the value another name")
+
+
+def _drawn_member(v) -> bool:
+    """A member a program reads of a template instance: a shape, a structure, or a list of
+    them (a loop's copies), not a number its body worked with."""
+    from ..geometry.core.values import StructRef
+    if isinstance(v, list):
+        return bool(v) and all(_drawn_member(x) for x in v)
+    return isinstance(v, (GeomRef, StructRef))
+
+
+def branch_making(d: A.Def, name: str, sink) -> str | None:
+    """The hint for a member ``name`` a template instance lacks that template ``d`` makes in
+    a branch of an ``if`` its call did not take (run bt, bu: `tab_and_slot(part="tab")`'s
+    `slot`, made only for part "slot"); None when its body never sets ``name``."""
+    from .common import _src
+
+    def find(stmts, conds):
+        for st in stmts:
+            if isinstance(st, (A.Assign, A.StructDecl)) and st.name == name and conds:
+                return conds
+            if isinstance(st, A.For):
+                got = find(st.body.stmts, conds)
+            elif isinstance(st, A.If):
+                cond = _src(sink, st.cond.span) or "..."
+                got = find(st.body.stmts, conds + [f"`{cond}` holds"]) or (
+                    find(st.orelse.stmts, conds + [f"`{cond}` is false"])
+                    if st.orelse is not None else None)
+            else:
+                got = None
+            if got:
+                return got
+        return None
+    where = find(d.body.stmts, [])
+    if not where:
+        return None
+    return (f"`{d.name}` makes `{name}` only where {' and '.join(where)}, which this call "
+            f"does not give (its docs: `aidl docs {d.name}`)")

@@ -21,7 +21,7 @@ from ..geometry.core.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef
 from ..base.limits import MAX_EXTENT
 from ..registry import (ENTRIES, FUNCTIONS, POINT_ALIGNS, accepted_args, bind_variant, canonical,
                         canonical_args, lookup)
-from .call_hints import _center_hint, _copy_hint, _list_hint, shadowed
+from .call_hints import _center_hint, list_arg_hint, shadowed
 from .cut_into import cut_into
 from .functions import call_function
 from .common import (_defer_boxes, said_shrunk, DEG, _a, _fmt_num, show, ANGLE_TWICE)
@@ -141,9 +141,7 @@ class Calls:
                                                 a.name)
                 except EvalError as ex:
                     if a.type == "boxed" and isinstance(bound[a.name], list):
-                        ex.hint = (_copy_hint(self.scope, spans[a.name], bound[a.name],
-                                              self.sink)
-                                   or _list_hint(cname, a.name, node, self.sink) or ex.hint)
+                        ex.hint = list_arg_hint(self, cname, a.name, node, spans, bound) or ex.hint
                     raise
             elif a.default is not None:      # registry defaults are in mm / radians
                 dim = _DIMS.get(a.type)

@@ -15,6 +15,7 @@ from ..geometry.core.values import (_EMPTY, ANG, LEN, NUM, PV, BBoxRef, Builtin,
                                StructRef, dim_name, mul_dim, rad_power, radians_of, type_name)
 from ..registry import (CONSTANTS, FUNCTIONS, UNITS_ANGLE, UNITS_LENGTH, lookup)
 from .common import (DEG, POISON, Scope, _Silent, _a, _fmt_num, show)
+from .call_hints import _drawn_member, branch_making
 
 
 _HANDLERS: dict = {}      # (interpreter class, AST node class) -> the _e_<Node> function
@@ -198,13 +199,21 @@ class Expressions:
                 return StructRef(s.children[name])
             if name in ("width", "height", "left", "right", "top", "bottom", "center"):
                 return self.member(BBoxRef(s), name, span)
-            cands = list(dict.fromkeys(list(s.scope) + list(s.children) + ["bb"]))
+            d = getattr(s, "template_def", None)
+            # a template instance's members: its shapes, children and arguments, not the
+            # numbers its body works with (run bt, bu: `tabs.slot` offered `lo`)
+            cands = list(dict.fromkeys(
+                [k for k, v in s.scope.items() if d is None or _drawn_member(v)]
+                + list(s.children) + ["bb"]
+                + ([k for k in s.scope if any(p.name == k for p in d.params)] if d else [])))
             # a member of a child by that very name (run bj: `deck.word` for `deck.art.word`)
             deeper = [f"{c}.{name}" for c, k in s.children.items() if name in k.scope
                       or name in k.children]
-            sugg = deeper[:1] or did_you_mean(name, cands)
+            other = branch_making(d, name, self.sink) if d is not None else None
+            sugg = [] if other else deeper[:1] or did_you_mean(name, cands)
             raise EvalError("E0102", f"structure `{s.path}` has no member `{name}`", span,
-                            hint=f"did you mean `{sugg[0]}`?" if sugg else
+                            hint=other + f"; its members: {', '.join(cands[:12])}"
+                            if other else f"did you mean `{sugg[0]}`?" if sugg else
                             f"its members: {', '.join(sorted(cands)[:12])}", suggestions=sugg)
         if isinstance(obj, GeomRef):
             g = obj.geom

@@ -708,6 +708,7 @@ class Statements(Asserts):
         child = self._new_structure(name, kind or d.kind, parent, call.span, template=d.name)
         # the parameters the call gives and its template's file: what `values` lists of it
         child.given = (tuple(vals), d.span.file if d.span is not None else None)   # (issue 111)
+        child.template_def = d          # (E0102: a member its other branch makes)
         self.frames.append((f"the template instance `{name} = {d.name}(...)`", call.span))
         self.sink.calls.append((f"`{d.name}`", call.span))      # errors inside: at the call
         self.sink.called(d.span, self.sink.calls, child.path)

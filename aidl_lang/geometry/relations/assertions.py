@@ -353,12 +353,18 @@ def _unknowns(e, free, out: list) -> None:
 def failed(model: Model, held_only: bool = False) -> list[tuple[Assertion, list]]:
     """Each assertion that does not hold at ``model.x``, with its failing sides' values.
     ``held_only``: only the assertions whose sides read no solved value (params, constants,
-    held dimensions): what can be judged when the solve failed."""
+    held dimensions): what can be judged when the solve failed.  In an assembly that places
+    its parts with ``Place``, an assertion holds too where it holds with those parts where
+    they are written (:func:`written`): the sheet's layout moves them apart for cutting, and
+    the product is made from where they are written (runs bp, bs, bv: `strip[1].r.bb.left -
+    strip[0].r.bb.right == 32 mm`, the channels of a game as drawn, failed by the 6 mm
+    the strips were laid apart on the sheet)."""
     out = []
     if not model.assertions:
         return out
     x = model.xs()
     free = model.free
+    home = None
     for a in model.assertions:
         if held_only:
             reads: list = []
@@ -368,23 +374,48 @@ def failed(model: Model, held_only: bool = False) -> list[tuple[Assertion, list]
                     _unknowns(re_, free, reads)
             if reads:
                 continue
-        bad: list = []
-        for group in a.groups:
-            wrong = []
-            for op, le, re_, dim in group:
-                terms: list = []
-                for side in (le, re_):
-                    if not isinstance(side, (int, float)):
-                        collect(side, terms)
-                exclude = exclusions(terms) if terms else set()   # as in a constraint (bbox.py)
-                lv, rv = _eval(le, x, exclude), _eval(re_, x, exclude)
-                if not holds(op, lv, rv, "right" if _number(re_) else "left" if _number(le)
-                             else ""):
-                    wrong.append((op, lv, rv, dim))
-            if not wrong:
-                break                   # this alternative holds: so does the assertion
-            bad += wrong
-        else:
-            if bad:
-                out.append((a, bad))
+        bad = _wrong(a, x)
+        if bad and not held_only:
+            if home is None:
+                home = written(model, x)
+            if home is not False and not _wrong(a, home):
+                continue
+        if bad:
+            out.append((a, bad))
     return out
+
+
+def _wrong(a: Assertion, x) -> list:
+    """The failing sides ``(op, left, right, dim)`` of ``a`` at ``x`` (every alternative's),
+    or [] when one of its alternatives holds."""
+    bad: list = []
+    for group in a.groups:
+        wrong = []
+        for op, le, re_, dim in group:
+            terms: list = []
+            for side in (le, re_):
+                if not isinstance(side, (int, float)):
+                    collect(side, terms)
+            exclude = exclusions(terms) if terms else set()   # as in a constraint (bbox.py)
+            lv, rv = _eval(le, x, exclude), _eval(re_, x, exclude)
+            if not holds(op, lv, rv, "right" if _number(re_) else "left" if _number(le)
+                         else ""):
+                wrong.append((op, lv, rv, dim))
+        if not wrong:
+            return []                   # this alternative holds: so does the assertion
+        bad += wrong
+    return bad
+
+
+def written(model: Model, x):
+    """``x`` with the frame of every structure that has a ``Place`` set back to where it is
+    written (its frame's offset 0), or ``False`` when none has one or none was moved: the
+    coordinates of the assembled product as the program draws its parts."""
+    placed = [s for s in model.structures if getattr(s, "placement", None) is not None
+              and s.parent is not None and s.fx >= 0 and s.copy_origin is None]
+    if not any(x[s.fx] != 0.0 or x[s.fy] != 0.0 for s in placed):
+        return False
+    home = x.copy()
+    for s in placed:
+        home[s.fx] = home[s.fy] = 0.0
+    return home
