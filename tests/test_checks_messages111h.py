@@ -390,3 +390,17 @@ def test_where_written_counts_only_for_placed_parts(place, gap, ok):
     if not ok:
         (e,) = _errors(r)
         assert e.code == "E0405"
+
+
+def test_a_part_named_units_is_a_name():
+    """Run bs's countdown named its ones wheel `units`: 13 E0116 "`units` is only allowed at
+    the top level", hint "move `units, tens, gap=10)` above line 65". `units` is the
+    statement only at a statement's start before a unit's name (as `thickness`)."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111bs/drafts/07_xmas_countdown.attempt1.aidl"))
+    assert not _errors(r), [d.message for d in _errors(r)]
+    r = aidl_lang.compile(source="units cm\nsolid s { c = Circle(center=(0, 0), radius=1) }\n")
+    assert r.ok and r.units == "cm"
+    r = aidl_lang.compile(source="solid s {\n    c = Circle(center=(0, 0), radius=1)\n"
+                                 "    units mm\n}\n")
+    (e,) = _errors(r)
+    assert e.code == "E0116" and e.span.line == 3

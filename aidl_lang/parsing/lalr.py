@@ -346,7 +346,7 @@ class _Builder:
         return A.Block(meta, [i for i in items if isinstance(i, A.Node)])
 
     def units_decl(self, meta, items):
-        return A.UnitsDecl(meta, self.tx(items[0]), items[0])
+        return A.UnitsDecl(meta, self.tx(items[-1]), items[-1])     # (items[0]: UNITS)
 
     def units_in(self, meta, items):
         sp = meta

@@ -15,7 +15,10 @@ from .tokens import Token, UnexpectedCharacters, _new_span
 _STATEMENT_START = frozenset(("_NL", "SEMICOLON", "LBRACE", "RBRACE"))
 _THICKNESS_NEXT = frozenset(("NUMBER", "NAME", "ADD_OP"))
 # the words that start a `WORD LENGTH` statement (retyped by the post-lexer) and their terminals
-_DECL_WORDS = {"thickness": "THICKNESS", "kerf": "KERF", "min_wall": "MIN_WALL"}
+_DECL_WORDS = {"thickness": "THICKNESS", "kerf": "KERF", "min_wall": "MIN_WALL", "units": "UNITS"}
+# what follows each to make it the statement (`units mm`, `units in`; run bs named a part
+# `units`, the ones of a countdown, and got 13 E0116)
+_DECL_NEXT = {w: _THICKNESS_NEXT for w in _DECL_WORDS} | {"units": frozenset(("NAME", "IN"))}
 _BLOCK_FOLLOW = frozenset(("_NL", "SEMICOLON", "RBRACE", "ELSE", "ELIF"))
 _OPEN = frozenset(("LPAR", "LSQB"))
 _CLOSE = frozenset(("RPAR", "RSQB"))
@@ -44,7 +47,8 @@ def _postlex(types: list, spans: list, text: str, complete: bool = True) -> tupl
 
     - ``thickness`` at the start of a statement and followed by a number, a name or a sign is
       the ``thickness 3 mm`` statement (THICKNESS); anywhere else it is an ordinary NAME;
-      ``kerf`` and ``min_wall`` likewise (KERF, MIN_WALL: ``kerf 0.15 mm``, ``min_wall 0.3 mm``);
+      ``kerf`` and ``min_wall`` likewise (KERF, MIN_WALL: ``kerf 0.15 mm``, ``min_wall 0.3 mm``),
+      and ``units`` before a name or ``in`` (UNITS: ``units mm``);
     - ``_NL`` is dropped inside () and [] and before ``else``/``elif``, and after a ``,``, an
       operator or ``=`` (:data:`CONTINUES`) before a line indented deeper than the statement's
       first (it goes on, as `assert COND,` with the message on the next line or a condition
@@ -72,7 +76,7 @@ def _postlex(types: list, spans: list, text: str, complete: bool = True) -> tupl
                 k == 0 or types[k - 1] in _STATEMENT_START):
             if k + 1 == n and not complete:
                 break                          # still held when the lexer failed
-            if k + 1 < n and types[k + 1] in _THICKNESS_NEXT:
+            if k + 1 < n and types[k + 1] in _DECL_NEXT[text[sp[5]:sp[6]]]:
                 t = _DECL_WORDS[text[sp[5]:sp[6]]]
         if prev_type == "RBRACE" and depth == 0 and pending is None and t not in _BLOCK_FOLLOW:
             push_t("_NL")
@@ -158,7 +162,7 @@ def _retype_thickness(stream):
     held = None
     for tok in stream:
         if held is not None:
-            if tok.type in ("NUMBER", "NAME", "ADD_OP"):
+            if tok.type in _DECL_NEXT[str(held)]:
                 held = type(held).new_borrow_pos(_DECL_WORDS[str(held)], str(held), held)
             yield held
             held = None

@@ -178,7 +178,7 @@ export default grammar({
       field('body', $.block),
     ),
 
-    // `thickness 3 mm`; `thickness = 3` stays an assignment (see assignment)
+    // `thickness 3 mm`; `thickness = 3` stays an assignment (see assignment; so `units = 3`)
     thickness_declaration: $ => seq('thickness', field('value', $._expression)),
     kerf_declaration: $ => seq('kerf', field('value', $._expression)),
     min_wall_declaration: $ => seq('min_wall', field('value', $._expression)),
@@ -186,7 +186,7 @@ export default grammar({
     assignment: $ => seq(
       field('name', choice(
         $.identifier,
-        alias(choice('thickness', 'kerf', 'min_wall'), $.identifier),
+        alias(choice('thickness', 'kerf', 'min_wall', 'units'), $.identifier),
       )),
       '=',
       field('value', $._expression),
@@ -235,7 +235,7 @@ export default grammar({
     // THICKNESS of it only before a number, a name or a sign)
     expression_statement: $ => choice(
       $._expression,
-      alias(choice('thickness', 'kerf', 'min_wall'), $.identifier),
+      alias(choice('thickness', 'kerf', 'min_wall', 'units'), $.identifier),
     ),
 
     block: $ => seq(
