@@ -404,3 +404,23 @@ def test_a_part_named_units_is_a_name():
                                  "    units mm\n}\n")
     (e,) = _errors(r)
     assert e.code == "E0116" and e.span.line == 3
+
+
+def test_two_lists_compare_item_by_item_in_an_assert():
+    """Run bu's balloon sizer: `assert [d1, d2, d3] == [...]` was E0108 "cannot constrain a
+    list == a list", a first check lost; lists compare with `==` item by item."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111bu/drafts/05_balloon_sizer.attempt1.aidl"))
+    assert r.ok and not _errors(r)
+    src = """solid s {
+    a = Circle(center=(0, 0), diameter=20)
+    b = Circle(center=(40, 0), diameter=25)
+    assert [a.diameter, b.diameter] == [20 mm, 25 mm]
+    assert [a.center, b.center] == [(0, 0), (40, 0)]
+    assert [a.diameter, b.diameter] == [20 mm, 26 mm]
+    assert [a.diameter] == [20 mm, 25 mm]
+}
+"""
+    errs = _errors(aidl_lang.compile(source=src))
+    assert [e.span.line for e in sorted(errs, key=lambda e: e.span.line)] == [6, 7]
+    msgs = " ".join(e.message for e in errs)
+    assert "25 mm == 26 mm is false" in msgs and '"a list of 1" == "a list of 2"' in msgs

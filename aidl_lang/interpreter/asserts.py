@@ -50,23 +50,43 @@ class Asserts:
                             "or `or`", e.span, hint="write e.g. `assert plate.body.width <= "
                                                     "300 mm`")
         vals = [self.eval(x) for x in e.operands]
-        sides = []
+        sides: list = []
         for op, (l, r) in zip(e.ops, zip(vals, vals[1:])):
-            if isinstance(l, (str, bool)) and isinstance(r, (str, bool)) \
-                    and type(l) is type(r):          # `assert f"{d:.1f}" == "1.0"`
-                if op not in ("==", "!="):
-                    raise EvalError("E0108", f"{'strings' if isinstance(l, str) else 'true and false'}"
-                                    f" compare with `==` and `!=`, not `{op}`", e.span)
-                sides.append((op, l, r, "text"))
-                continue
-            if op == "!=" and isinstance(l, Q) and isinstance(r, Q):
-                le, re_, dim = self._unify(l, r, e.span)
-                sides.append(("!=", le, re_, dim))
-                continue
-            for eq in self._compare_eqs(op, l, r, e.span):
-                # each equation is `left - right` (== 0 or >= 0); keep the two sides apart
-                sides.append(self._sides_of(op, l, r, e.span, eq))
+            self._pair_sides(op, l, r, e.span, sides)
         return [sides]
+
+    def _pair_sides(self, op, l, r, span, sides: list) -> None:
+        """The sides ``(op, left, right, dim)`` of one comparison ``l op r``, appended to
+        ``sides``; two lists compare with ``==`` item by item (run bu: `assert [a.d, b.d,
+        c.d] == [20 mm, 25 mm, 30 mm]` was E0108 "cannot constrain a list == a list"), their
+        lengths first."""
+        if isinstance(l, (list, tuple)) and isinstance(r, (list, tuple)) and not (
+                (isinstance(l, tuple) or isinstance(r, tuple))   # `(x, y)`: a point
+                and len(l) == len(r) == 2 and all(isinstance(v, Q) for v in (*l, *r))):
+            if op != "==":
+                raise EvalError("E0108", f"two lists compare with `==` (item by item), not "
+                                f"`{op}`", span, hint="compare their items: `a[0] " + op
+                                + " b[0]`, or each in a loop of asserts")
+            if len(l) != len(r):
+                sides.append(("==", f"a list of {len(l)}", f"a list of {len(r)}", "text"))
+                return
+            for a, b in zip(l, r):
+                self._pair_sides(op, a, b, span, sides)
+            return
+        if isinstance(l, (str, bool)) and isinstance(r, (str, bool)) \
+                and type(l) is type(r):          # `assert f"{d:.1f}" == "1.0"`
+            if op not in ("==", "!="):
+                raise EvalError("E0108", f"{'strings' if isinstance(l, str) else 'true and false'}"
+                                f" compare with `==` and `!=`, not `{op}`", span)
+            sides.append((op, l, r, "text"))
+            return
+        if op == "!=" and isinstance(l, Q) and isinstance(r, Q):
+            le, re_, dim = self._unify(l, r, span)
+            sides.append(("!=", le, re_, dim))
+            return
+        for eq in self._compare_eqs(op, l, r, span):
+            # each equation is `left - right` (== 0 or >= 0); keep the two sides apart
+            sides.append(self._sides_of(op, l, r, span, eq))
 
     def _assert_reads(self, e) -> list:
         """``(text, expression, dim)`` of each name and member chain inside a side of the
