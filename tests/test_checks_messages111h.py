@@ -424,3 +424,22 @@ def test_two_lists_compare_item_by_item_in_an_assert():
     assert [e.span.line for e in sorted(errs, key=lambda e: e.span.line)] == [6, 7]
     msgs = " ".join(e.message for e in errs)
     assert "25 mm == 26 mm is false" in msgs and '"a list of 1" == "a list of 2"' in msgs
+
+
+def test_metric_holes_and_nuts_go_to_M20():
+    """Run bt's bolt gauge needed M10 and M12 clearance holes and an M10 nut: E0405 from inside
+    the stdlib ("metric sizes are ... M2 to M8"). ISO 273 and ISO 4032 to M20."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111bt/drafts/01_bolt_gauge.attempt1.aidl"))
+    assert not _errors(r), [d.message for d in _errors(r)]
+    src = """import "std/fasteners.aidl"
+solid p {
+    b = Rectangle(center=(0, 0), width=120, height=60)
+    h = clearance_hole(size=12, fit="medium", cx=-30 mm)
+    n = nut_trap(size=20, cx=20 mm)
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert not _errors(r)
+    assert r.value("p.h.c.radius").value == pytest.approx(13.5 / 2)
+    b = r.value("p.n.bbox").value
+    assert b[3] - b[1] == pytest.approx(30.0)            # flats at top and bottom

@@ -421,7 +421,7 @@ def test_unknown_metric_size_is_a_located_error(tmp_path):
     p.write_text(src)
     r = aidl_lang.compile(source=src, path=p)
     assert [e.code for e in r.errors] == ["E0405"]
-    assert "M2 to M8" in r.errors[0].message
+    assert "M2 to M20" in r.errors[0].message
 
 
 # ---------------------------------------------------------------------------------------------
