@@ -443,3 +443,27 @@ solid p {
     assert r.value("p.h.c.radius").value == pytest.approx(13.5 / 2)
     b = r.value("p.n.bbox").value
     assert b[3] - b[1] == pytest.approx(30.0)            # flats at top and bottom
+
+
+def test_a_pattern_of_a_thing_moved_in_place_copies_the_moved_thing():
+    """Run bs's cat window perch: `Translate(first_paw, (110, -95))` then `trail =
+    LinearPattern(first_paw, 3, (45, 22))`: the two copies stood where the paw was written
+    (the pattern, a definition, ran before the change, a bare call, in the constraints'
+    pass), on the part that rests on the sill; nothing said so."""
+    src = """def paw() -> drawing {
+    pad = Circle(center=(0, 0), radius=3, fill=true)
+}
+solid plate {
+    body = Rectangle(center=(100, 0), width=300, height=100)
+    first = paw()
+    Translate(first, (50, 10))
+    trail = LinearPattern(first, 3, (40, 0))
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok and not _errors(r)
+    got = [tuple(r.value(f"plate.trail[{k}].pad.center").value) for k in (1, 2)]
+    assert got == [pytest.approx((90, 10)), pytest.approx((130, 10))]
+    r = aidl_lang.compile(path=str(RUNS / "issue111bs/run/05_cat_window_perch.first_valid.aidl"))
+    names = [d for d in r.diagnostics if d.code in ("W0505", "W0516")]
+    assert r.ok and not names, [d.message for d in names]

@@ -20,6 +20,7 @@ from ..library.sources import ImportRefused, read_import, resolve_import
 from .arguments import check_kinds, kind_error, precheck_asserts
 from .asserts import Asserts
 from .constants import early_constants, late_constant
+from .order import changes_read_below
 from .common import (ANGLE_TWICE, DEG, POISON, FileCtx, Scope, _STMT_ERRORS, _Silent, _a, _common_ancestor,
                      _definition_lines, _fmt_num, _src, _is_geometry_stmt, _is_plain_const,
                      file_functions)
@@ -355,18 +356,24 @@ class Statements(Asserts):
     def _run_body(self, struct: Structure, block: A.Block, scope: Scope) -> None:
         """Run a structure body: definitions (assignments, structures, loops, ifs) in order,
         then its constraint statements (bare calls and equations at the body's top level), so
-        a constraint may name geometry defined below it (docs/language.md, "Order")."""
+        a constraint may name geometry defined below it (docs/language.md, "Order"); a change
+        in place that a definition below reads runs just before it (:mod:`.order`)."""
         saved = (self.struct, self.scope, self.body_stmts)
         self.struct, self.scope = struct, scope
         self.body_stmts = block.stmts        # for "defined later" (see later_definition)
         struct.scope = scope.vars            # members (`self.body`) are visible while it runs
         try:
             later = []
-            for st in block.stmts:      # _exec_stmt, inline for assignments
+            first = changes_read_below(block.stmts)     # a change a definition below reads
+            done = {id(c) for cs in first.values() for c in cs}
+            for i, st in enumerate(block.stmts):        # _exec_stmt, inline for assignments
                 t = type(st)
                 if t is A.ExprStmt or t is A.Assert:
-                    later.append(st)
+                    if id(st) not in done:
+                        later.append(st)
                 elif t is A.Assign:
+                    for c in first.get(i, ()):
+                        self._exec_stmt(c)
                     self.cur_span = st.span
                     try:
                         self._assign(st)
