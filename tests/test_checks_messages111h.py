@@ -467,3 +467,26 @@ solid plate {
     r = aidl_lang.compile(path=str(RUNS / "issue111bs/run/05_cat_window_perch.first_valid.aidl"))
     names = [d for d in r.diagnostics if d.code in ("W0505", "W0516")]
     assert r.ok and not names, [d.message for d in names]
+
+
+def test_W0513_lines_of_a_list_do_not_run_together_and_hide_nothing():
+    """Run bs's seating plan: a table's guests listed at 10 mm pitch in 7 mm letters were said
+    to "read as one string" (29 pairs), and that warning hid the six names a heart was drawn
+    over. Lines one above the other are said only where they touch; a text said to run into
+    another is still said to lie under a mark."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111bs/run/06_seating_plan.first_valid.aidl"))
+    w = _w0513(r)
+    assert not [d for d in w if "read as one string" in d.message]
+    assert len([d for d in w if "is drawn over the engraved" in d.message]) == 6
+    src = """solid tag {
+    body = Rectangle(center=(0, 0), width=120, height=40)
+    drawing d {
+        a = Text("ANNA LEE", position=(0, 4), size=7)
+        b = Text("BOB KING", position=(0, -3.2), size=7)
+        c = Text("CARL", position=(26, 4), size=7, anchor="start")
+    }
+}
+"""
+    w = _w0513(aidl_lang.compile(source=src))
+    got = sorted(("lines touch" in d.message, "one string" in d.message) for d in w)
+    assert got == [(False, True), (True, False)], [d.message for d in w]
