@@ -490,3 +490,26 @@ def test_W0513_lines_of_a_list_do_not_run_together_and_hide_nothing():
     w = _w0513(aidl_lang.compile(source=src))
     got = sorted(("lines touch" in d.message, "one string" in d.message) for d in w)
     assert got == [(False, True), (True, False)], [d.message for d in w]
+
+
+def test_E0408_in_a_template_says_the_corner_where_the_template_has_it():
+    """Run bu: E0408's hint gave a template's corner where the sheet had it (the instance
+    laid out by RightOf), and the point it wrote missed by the layout's move; a point worked
+    out by hand to 0.01 mm was refused (0.001 mm off)."""
+    src = """def tag() -> solid {
+    body = Rectangle(center=(0, 0), width=40, height=20)
+    Fillet((19.5, 10), radius=2)
+}
+assembly kit {
+    solid base { r = Rectangle(center=(0, 0), width=100, height=60) }
+    t = tag()
+    RightOf(t, base, gap=5)
+}
+"""
+    (e,) = _errors(aidl_lang.compile(source=src))
+    assert e.code == "E0408" and "the point (19.5, 10) mm" in e.message
+    assert "`Fillet(at=(20, 10), radius=2 mm)`" in e.hint
+    r = aidl_lang.compile(source=src.replace("(19.5, 10)", "(20, 10)"))
+    assert r.ok and not _errors(r)
+    r = aidl_lang.compile(source=src.replace("(19.5, 10)", "(20.005, 9.996)"))
+    assert r.ok and not _errors(r)

@@ -12,7 +12,8 @@ if TYPE_CHECKING:
     from ..core.model import Structure
 
 CORNER_TURN = 1e-3      # rad: a join that turns less is tangent (a slot's side into its end)
-CORNER_TOL = 1e-3       # mm: a chosen corner matches an outline vertex this close
+CORNER_TOL = 0.01       # mm: a chosen corner matches an outline vertex this close (a point
+#                         worked out by hand to 0.01 mm, run bu: 0.001 mm off was refused)
 SHRUNK = 1e-6           # a chosen corner rounded this much (relatively) under its size: said
 
 
@@ -100,7 +101,9 @@ class Chosen:
             return list(self.points), None
         return edges_meet(self.points, self.name)
 
-    def describe(self) -> str:
+    def describe(self, off=(0.0, 0.0)) -> str:
+        """The corners in words, a point in the frame its ``Fillet`` is written in (``off``:
+        that frame's offset from the outline's)."""
         if self.what == "edges":
             return f"the corner of `{self.name[0]}` and `{self.name[1]}`"
         if self.what == "shapes_meet":
@@ -110,6 +113,7 @@ class Chosen:
         if self.what == "corners":
             return f"the corners of `{self.name}`"
         (x, y), = self.points
+        x, y = x - off[0], y - off[1]
         return (f"`{self.name}` at ({x:.6g}, {y:.6g}) mm" if self.name
                 else f"the point ({x:.6g}, {y:.6g}) mm")
 
@@ -268,8 +272,14 @@ def finish(s: Structure, loops: list, x=None, check=None, said=None) -> list:
                 elif not lp.is_hole:
                     narrow += _narrow_notches(lp, r)
         if said is not None:
+            # the points said in the frame the Fillet is written in (run bu: its hint gave a
+            # template's corner where the sheet has it, and the point it wrote missed by 2 mm)
+            off = (0.0, 0.0)
+            if x is not None:
+                from ..core.expr import evaluate
+                off = tuple(float(evaluate(e, x)) for e in s.frame_offset(None))
             said += report(kind, r, call, chosen, why, pts, got, loops,
-                           first if loops is not first else None)
+                           first if loops is not first else None, off)
             said += [_tip_back(call, k, *d) for k, d in enumerate(deep)]
             if narrow:
                 names = [g.name for g in s.geometry if g.closed and g.name
@@ -454,12 +464,14 @@ def _width(xy) -> float:
 
 
 def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
-           loops: list, first: list | None = None) -> list:
+           loops: list, first: list | None = None, off=(0.0, 0.0)) -> list:
     """What a ``Fillet``/``Chamfer`` of size ``r`` (written at ``call``) did not do, as
     ``[(call, code, index, message, hint)]``: ``chosen`` (:class:`Chosen`, placed), ``why``
     (index -> why two edges make no corner), ``pts`` ([(point, index into chosen)], None
     for the whole outline), ``got`` (index into pts -> the size its corner got, from
-    :func:`corners`), ``loops`` (the outline before the operation)."""
+    :func:`corners`), ``loops`` (the outline before the operation); ``off``: the offset of
+    the frame the operation is written in, taken off every point it says (the points its
+    hint writes are read in that frame)."""
     fillet = kind == "Fillet"
     size = f"{'radius' if fillet else 'distance'} {r:.6g} mm"
     head = f"`{kind}` ({size})"
@@ -490,7 +502,7 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
                 hint = (f"of these shapes' edges, {said} do meet: name the pair at the "
                         "corner meant (a turned shape's edges keep the names they have "
                         "before its `rotation=`), or the corner's point")
-            out.append((call, "E0408", i, f"{head} cannot {verb} {c.describe()}: {why[i]}",
+            out.append((call, "E0408", i, f"{head} cannot {verb} {c.describe(off)}: {why[i]}",
                         hint))
             continue
         js = [j for j, (_, ci) in enumerate(pts) if ci == i]
@@ -498,11 +510,13 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
         if not found:
             p = pts[js[0]][0] if js else c.points[0]
             where, near = _where(p, loops)
-            msg = f"{head} {verb}s nothing at {c.describe()}: "
+            msg = f"{head} {verb}s nothing at {c.describe(off)}: "
+            if near is not None:
+                near = (near[0] - off[0], near[1] - off[1])
             if len(js) > 1:
                 msg += f"none of them is a corner of the final outline of `{path}`"
             elif c.what == "edges":
-                msg += f"they meet at ({p[0]:.6g}, {p[1]:.6g}) mm, and {where}"
+                msg += f"they meet at ({p[0] - off[0]:.6g}, {p[1] - off[1]:.6g}) mm, and {where}"
             else:
                 msg += where
             hint = (f"the nearest corner of the outline is at ({near[0]:.6g}, {near[1]:.6g}) "
@@ -523,8 +537,8 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
         elif min(found) < r * (1 - SHRUNK):
             least = min(found)
             fits = math.floor(least * 1000) / 1000          # asked for, it is made whole
-            done = (f"{verb}s {c.describe()} with only {least:.6g} mm" if least > 0
-                    else f"leaves {c.describe()} sharp")
+            done = (f"{verb}s {c.describe(off)} with only {least:.6g} mm" if least > 0
+                    else f"leaves {c.describe(off)} sharp")
             out.append((call, "W0406", i,
                         f"{head} {done}: the outline's pieces next to the corner leave room "
                         f"for no more (a corner takes at most half of each piece"
