@@ -43,10 +43,15 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
     # the fit as data (the MCP tools' `fit`): what the warnings below say, AllowOverlap's
     # meant overlaps and the templates' designed gaps left out
     d.fit = {"checked": True, "collisions": [], "floating": []}
+    from ...geometry.shapes.tessellate import CHORD_TOL
     for c in hits:
         sa_, sb_ = d.part_of.get(c.a), d.part_of.get(c.b)
         if sa_ is not None and sb_ is not None and _allowed(sa_, sb_):
             continue                     # AllowOverlap(a, b): meant (a press fit, an inlay)
+        if c.depth < CHORD_TOL and bends and (bends.get(c.a) or bends.get(c.b)):
+            continue                     # a bent part's chords within their tolerance of a
+            #                              part it wraps (run bv: a zoetrope's strip round its
+            #                              disc, "0.00268 mm deep"): contact
         d.fit["collisions"].append({"a": c.a, "b": c.b, "volume": round(c.volume, 6),
                                     "depth": round(c.depth, 6),
                                     "box": [round(v, 6) for v in c.box]})
