@@ -561,11 +561,16 @@ assembly sign {
 """
 
 
-def _dark(png: bytes) -> int:
+def _dark(png: bytes, half: int | None = None) -> int:
+    """The near-black pixels of a PNG (the engraving's lines), of its left (``half`` 0) or
+    right (1) half: the assembled picture's two views."""
     import io
     from PIL import Image
     import numpy as np
     a = np.asarray(Image.open(io.BytesIO(png)).convert("RGB"))
+    if half is not None:
+        w = a.shape[1] // 2
+        a = a[:, :w] if half == 0 else a[:, w:]
     return int((a < 60).all(axis=2).sum())
 
 
@@ -579,9 +584,15 @@ def test_the_assembled_picture_draws_the_engraving_on_its_face():
     front = aidl_lang.compile(source=PLAQUE.replace("ROT", "90 deg"))
     back = aidl_lang.compile(source=PLAQUE.replace("ROT", "-90 deg"))
     assert front.ok and back.ok
-    n_front = _dark(to_assembled_png(front.output, width=400))
-    n_back = _dark(to_assembled_png(back.output, width=400))
+    one = [("front left", (-35.0, 25.0))]
+    n_front = _dark(to_assembled_png(front.output, width=400, views=one))
+    n_back = _dark(to_assembled_png(back.output, width=400, views=one))
     assert n_front > 50 and n_back == 0
+    # round twelve: the picture shows the back too (runs bp, bq, br, bs): the word turned away
+    # is seen from the back right, the one facing the front is not
+    f0, f1 = (_dark(to_assembled_png(front.output, width=800), h) for h in (0, 1))
+    b0, b1 = (_dark(to_assembled_png(back.output, width=800), h) for h in (0, 1))
+    assert f0 > 50 and f1 == 0 and b0 == 0 and b1 > 50
 
 
 def test_fillet_at_an_edge_and_an_arc_says_to_give_the_arcs_point():

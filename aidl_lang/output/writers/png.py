@@ -78,35 +78,32 @@ def to_png(output: Output, dpi: float | None = None, width: int | None = None, s
 
 # ------------------------------------------------------------------ the assembled product
 VIEW = (-35.0, 25.0)        # degrees: the picture's azimuth (about z) and elevation
+# the views side by side: from above the front-left corner and from above the back-right one
+# (runs bp, bq, br, bs: which face an engraving or a countersink landed on, or whether a shelf
+# stood into the wall, could not be told from one side)
+VIEWS = (("front left", VIEW), ("back right", (VIEW[0] + 180.0, VIEW[1])))
 
 
 def to_assembled_png(output: Output, thickness: float | None = None, width: int = 800,
-                     highlight=None) -> bytes:
-    """A PNG of the assembled product seen from above the front-left corner (:data:`VIEW`):
+                     highlight=None, views=VIEWS) -> bytes:
+    """A PNG of the assembled product, ``width`` pixels wide (16 to 4096), seen from each of
+    ``views`` (``(caption, (azimuth, elevation))``, degrees; side by side, each captioned):
     each part's triangles in its colour, shaded by how squarely they face the viewer, cut to
     a 24th of the largest part's size and drawn back to front (painter's order) with Pillow,
-    at twice the size and scaled down (antialiasing).  ``highlight``: :class:`Collision` s
-    drawn over it as red boxes (None: those the fit check finds, :func:`~..fabrication.assembly.fit`).  ``width`` in pixels (16 to
-    4096).  Raises :class:`~.part.MissingDependency` without Pillow (the ``png`` extra)."""
-    import math
-
+    at twice the size and scaled down (antialiasing), the engraving on the faces that look
+    towards the viewer.  ``highlight``: :class:`Collision` s drawn over it as red boxes
+    (None: those the fit check finds, :func:`~..fabrication.assembly.fit`).  Raises
+    :class:`~.part.MissingDependency` without Pillow (the ``png`` extra)."""
     if not 16 <= width <= 4096:
         raise OutputError(f"an assembled PNG is 16 to 4096 pixels wide, not {width}")
     from ..fabrication.assembly import _box, _rgba, colours, fit, normals_of, placements, solids
-    colour = colours(output)
+    colour_of = colours(output)
     bodies = solids(output, thickness)
     if highlight is None:
         highlight = fit(bodies, normals=normals_of(placements(output)))[0]
-    az, el = (math.radians(v) for v in VIEW)
-    # camera axes: right, up, towards the viewer
-    fwd = np.array([math.cos(el) * math.sin(az), -math.cos(el) * math.cos(az), math.sin(el)])
-    right = np.array([math.cos(az), math.sin(az), 0.0])
-    up = np.cross(fwd, right)
-    light = fwd * 0.6 + up * 0.6 + right * 0.2
-    light /= np.linalg.norm(light)
-    tris = []
     from trimesh.remesh import subdivide_to_size
     size = max((max(np.subtract(_box(m)[3:], _box(m)[:3])) for _, m in bodies), default=1.0)
+    parts = []
     for name, m in bodies:
         mesh = m.to_mesh()
         v = np.asarray(mesh.vert_properties, dtype=float)[:, :3]
@@ -119,25 +116,50 @@ def to_assembled_png(output: Output, thickness: float | None = None, width: int 
         nrm = np.cross(P[:, 1] - P[:, 0], P[:, 2] - P[:, 0])
         ln = np.linalg.norm(nrm, axis=1)
         keep = ln > 1e-12
-        P, nrm = P[keep], nrm[keep] / ln[keep, None]
-        facing = nrm @ fwd > 0                           # back faces are hidden by the front
-        P, nrm = P[facing], nrm[facing]
-        shade = 0.45 + 0.55 * np.clip(nrm @ light, 0.0, 1.0)
-        depth = (P.mean(axis=1) @ fwd)
-        base = np.array(_rgba(colour.get(name, "#607d8b"))[:3], dtype=float)
-        tris.append((depth, P, shade[:, None] * base[None, :]))
-    marks = _assembled_marks(output, thickness, fwd, size)
+        parts.append((P[keep], nrm[keep] / ln[keep, None],
+                      np.array(_rgba(colour_of.get(name, "#607d8b"))[:3], dtype=float)))
     boxes = []
     for c in highlight:
         x0, y0, z0, x1, y1, z1 = c.box
         boxes.append(np.array([[x, y, z] for x in (x0, x1) for y in (y0, y1) for z in (z0, z1)]))
+    Image, _ = _pil()
+    w = max(16, width // len(views))
+    imgs = [_view(output, thickness, parts, boxes, size, az, el, w, caption)
+            for caption, (az, el) in views]
+    out = Image.new("RGB", (width, max(i.height for i in imgs)), "white")
+    for k, im in enumerate(imgs):
+        out.paste(im, (k * w, 0))
+    import io
+    buf = io.BytesIO()
+    out.save(buf, format="PNG")
+    return buf.getvalue()
+
+
+def _view(output, thickness, parts, boxes, size, az_deg, el_deg, width, caption):
+    """One view of :func:`to_assembled_png` (a Pillow image ``width`` pixels wide): the parts'
+    triangles ``parts`` (``(triangles, normals, colour)``), the engraving
+    (:func:`_assembled_marks`) and the red ``boxes``, from azimuth ``az_deg`` and elevation
+    ``el_deg``, ``caption`` written in its top left corner."""
+    import math
+
+    az, el = math.radians(az_deg), math.radians(el_deg)
+    # camera axes: right, up, towards the viewer
+    fwd = np.array([math.cos(el) * math.sin(az), -math.cos(el) * math.cos(az), math.sin(el)])
+    right = np.array([math.cos(az), math.sin(az), 0.0])
+    up = np.cross(fwd, right)
+    light = fwd * 0.6 + up * 0.6 + right * 0.2
+    light /= np.linalg.norm(light)
+    tris = []
+    for P, nrm, base in parts:
+        facing = nrm @ fwd > 0                           # back faces are hidden by the front
+        Pf, nf = P[facing], nrm[facing]
+        shade = 0.45 + 0.55 * np.clip(nf @ light, 0.0, 1.0)
+        tris.append((Pf.mean(axis=1) @ fwd, Pf, shade[:, None] * base[None, :]))
+    marks = _assembled_marks(output, thickness, fwd, size)
+    Image, ImageDraw = _pil()
     pts = [t[1] for t in tris if len(t[1])] + boxes
     if not pts:
-        Image, _ = _pil()
-        import io
-        buf = io.BytesIO()
-        Image.new("RGB", (width, width // 2), "white").save(buf, format="PNG")
-        return buf.getvalue()
+        return Image.new("RGB", (width, max(1, width // 2)), "white")
     allp = np.concatenate([p.reshape(-1, 3) for p in pts])
     X, Y = allp @ right, allp @ up
     x0, x1, y0, y1 = X.min(), X.max(), Y.min(), Y.max()
@@ -145,8 +167,6 @@ def to_assembled_png(output: Output, thickness: float | None = None, width: int 
     margin = 0.05 * span
     scale = (width - 2) / (x1 - x0 + 2 * margin or 1.0)
     height = max(1, int(round((y1 - y0 + 2 * margin) * scale)))
-
-    Image, ImageDraw = _pil()
     k = 2                                           # drawn twice as large, then scaled down
     img = Image.new("RGB", (width * k, height * k), "white")
     draw = ImageDraw.Draw(img)
@@ -184,10 +204,12 @@ def to_assembled_png(output: Output, thickness: float | None = None, width: int 
         for i, j in edges:
             draw.line(xy(np.array([B[i], B[j]])), fill=(255, 0, 0), width=3 * k)
     img = img.resize((width, height), Image.LANCZOS)
-    import io
-    buf = io.BytesIO()
-    img.save(buf, format="PNG")
-    return buf.getvalue()
+    if caption and width >= 120:
+        ImageDraw.Draw(img).text((4, 2), f"from the {caption}", fill=CAPTION_RGB)
+    return img
+
+
+CAPTION_RGB = (110, 110, 110)   # a view's caption: grey, not the engraving's near-black
 
 
 MARK_RGB = (30, 30, 30)      # the engraving's lines in the assembled picture
