@@ -162,6 +162,7 @@ class Checker:
         file_names = set()
         memo: dict = {}                 # imported file (real path) -> its names, once each
         self.params_once(program)
+        self.units_assigned(program)
         for st in program.stmts:
             if isinstance(st, A.ParamDecl):
                 file_names.add(st.name)
@@ -264,6 +265,19 @@ class Checker:
                 hint=f"keep one `param {st.name} = ...` with the default and range you mean "
                      f"(its slider and `--set {st.name}=...` set it), or give the other name "
                      "another name")
+
+    def units_assigned(self, program: A.Program) -> None:
+        """E0001 for a top-level `units = cm`: a constant named `units` (a name, since round
+        twelve: run bs's countdown had a wheel of that name), not the file's unit, which was
+        silently left mm."""
+        from .registry import UNITS_LENGTH
+        for st in program.stmts:
+            if type(st) is A.Assign and st.name == "units" and type(st.value) is A.Name \
+                    and st.value.id in UNITS_LENGTH:
+                self.sink.error("E0001", f"`units = {st.value.id}` names a constant `units`; "
+                                "it does not set the file's unit", st.span,
+                                hint=f"`units` is a statement without `=`: `units "
+                                     f"{st.value.id}`")
 
     def defs_once(self, program: A.Program) -> None:
         """E0107 for a template or function defined twice in one file: the later one was

@@ -189,10 +189,12 @@ def test_the_mcp_render_of_a_kerf_a_hole_cannot_take_names_E0504_and_its_line(tm
     pytest.importorskip("mcp")
     from aidl_lang.mcp import tools as T
     ws = T.Workspace(tmp_path)
-    with pytest.raises(T.Refused) as e:
-        T.render(ws, source=KERF_SLOT, output="plate.dxf")
-    assert e.value.code == "output_failed"
-    assert str(e.value).startswith("line 5, column 5: E0504 kerf 0.5 mm on part `plate`")
+    doc = T.render(ws, source=KERF_SLOT, output="plate.dxf")[0]
+    # round twelve: the compile says it (`aidl check` runs the program's own kerf)
+    assert doc["ok"] is False
+    (d,) = [d for d in doc["diagnostics"] if d["code"] == "E0504"]
+    assert (d["span"]["line"], d["span"]["column"]) == (5, 5)
+    assert d["message"].startswith("kerf 0.5 mm on part `plate`")
     assert not (tmp_path / "plate.dxf").exists()
 
 

@@ -404,6 +404,10 @@ def test_a_part_named_units_is_a_name():
                                  "    units mm\n}\n")
     (e,) = _errors(r)
     assert e.code == "E0116" and e.span.line == 3
+    # `units = cm` would now name a constant and leave the file in mm: said, as before
+    (e,) = _errors(aidl_lang.compile(source="units = cm\nsolid s { c = Circle(center=(0, 0), "
+                                            "radius=1) }\n"))
+    assert e.code == "E0001" and "`units cm`" in e.hint
 
 
 def test_two_lists_compare_item_by_item_in_an_assert():
@@ -512,4 +516,18 @@ assembly kit {
     r = aidl_lang.compile(source=src.replace("(19.5, 10)", "(20, 10)"))
     assert r.ok and not _errors(r)
     r = aidl_lang.compile(source=src.replace("(19.5, 10)", "(20.005, 9.996)"))
+    assert r.ok and not _errors(r)
+
+
+def test_aidl_check_says_E0504_for_the_programs_own_kerf():
+    """Round eleven's list: a kerf a slot cannot take was E0504 at `aidl render` only; a
+    program that checked clean was refused when written."""
+    from test_checks_messages111g import KERF_SLOT
+    r = aidl_lang.compile(source=KERF_SLOT)
+    (e,) = _errors(r)
+    assert e.code == "E0504" and (e.span.line, e.span.col) == (5, 5)
+    assert "aidl check" not in e.hint
+    r = aidl_lang.compile(source=KERF_SLOT.replace("height=0.4", "height=0.6"))
+    assert r.ok and not _errors(r)
+    r = aidl_lang.compile(source=KERF_SLOT.replace("kerf 0.5 mm", "kerf 0 mm"))
     assert r.ok and not _errors(r)

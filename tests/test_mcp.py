@@ -520,7 +520,8 @@ async def test_render_of_a_kerf_a_hole_cannot_take_is_a_located_E0504(shared):
     (root / "kerf_slot.aidl").write_text(KERF_SLOT)
     r = await session.call_tool("render", {"path": "kerf_slot.aidl",
                                            "output": "kerf_slot.dxf"})
-    assert r.is_error
-    assert "line 5, column 5: E0504 kerf 0.5 mm on part `plate`" in _text(r), _text(r)
+    # round twelve: the check says it (the program's own kerf), so the compile is not ok
+    assert "not ok: 1 error" in _text(r) and "error E0504 at kerf_slot.aidl:5:5" in _text(r), \
+        _text(r)
     assert "widen it to 0.5 mm or more" in _text(r)
     assert not (root / "kerf_slot.dxf").exists()

@@ -466,7 +466,8 @@ A laser's beam (the program's `kerf`, or `--kerf`) is as wide as the kerf, so a 
 offsets every outline and hole by half of it to cut the part to size. An opening narrower than the kerf, or a curve of an opening with a radius under half
 of it, has no such offset: the beam alone cuts wider than drawn. `aidl render` writes nothing
 for a cut format (a file written before is left as it was) and says where, at the hole nearest
-the point the message names, else at the part; `aidl check` does not run the kerf. Widen the
+the point the message names, else at the part; `aidl check` says it too for the program's own
+`kerf` statements (not for `--kerf`, which only `render` takes). Widen the
 opening to the kerf or more (a slit as wide as the beam is a `cut` line, cut along its length
 with no offset), give the curve a radius of half the kerf or more, or render with a narrower
 `--kerf` (`kerf 0 mm` in the part writes it as drawn).

@@ -106,7 +106,8 @@ def _report(e: ParseError, text: str, path: str, pos: int, sink: DiagnosticSink)
         # the values the condition reads)
         hint = ("an assert's message is a plain string (\"sail 70 wide\"): when the assert "
                 "fails, E0405 shows the value of each name and member it reads")
-    elif str(tok) == "=" and re.match(r"\s*units\s*$", head):
+    elif (str(tok) == "=" and re.match(r"\s*units\s*$", head)) or (
+            tok.type == "IN" and re.match(r"\s*units\s*=\s*$", head)):
         hint = "`units` is a statement without `=`: `units mm` (or `in`, `cm`, ...)"
     elif str(tok) == "=" :
         hint = "use `==` for an equation constraint, `=` only to name a value"

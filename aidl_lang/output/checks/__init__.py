@@ -60,6 +60,7 @@ from .changes import Topology, check_topology, topology, topology_changes
 from .common import (MIN_AREA, MIN_FRACTION, MIN_WALL, _cut_openings, _edges, _inside,
                      _inside_loops, _part_of, _part_roots, _signed, _union, part_min_wall)
 from .holes.pattern_edge import CLOSED_OPENINGS, _check_closed_openings, check_pattern_edges
+from .material.kerf import check_kerf
 from .holes.openings import TOUCH, _analyse, _check_flush, _check_hole, _intended, _Near, _report_openings
 from .holes.repeats import _check_overlapping_circles, _check_repeated_faces
 from .holes.sinks import check_sinks
@@ -103,7 +104,8 @@ FAMILIES = {"holes": ("holes", "W0501-W0503"), "pieces": ("pieces", "W0504"),
             "repeats": ("copies that merge", "W0512"),
             "through": ("through-cuts", "W0507, W0522"),
             "interpenetration": ("parts that interpenetrate", "W0511"),
-            "allowances": ("AllowOverlap statements", "W0523")}
+            "allowances": ("AllowOverlap statements", "W0523"),
+            "kerf": ("the kerf's offset", "E0504")}
 
 
 class _OutOfShare(Exception):
@@ -368,6 +370,7 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
                 _check_overlapping_circles(d, s, sink, t if t > 0 else MIN_WALL,
                                            lambda: tick(s))))
     run("allowances", None, lambda: check_allowances(d, sink, lambda: tick(None)))
+    run("kerf", None, lambda: check_kerf(d, sink, deadline))
     _check_zero_lines(d, sink)
     shares.notes(sink, given if given is not None else MIN_WALL)
     for g, *_ in getattr(d, "shape_errors", None) or ():

@@ -76,8 +76,7 @@ class KerfError(LayoutError):
             f"the beam is {k:g} mm wide, so an opening narrower than {k:g} mm, or a curve of "
             f"one with a radius under {k / 2:g} mm, cannot be cut to size: widen it to {k:g} "
             f"mm or more (a slit as wide as the beam is a `cut` line), give the curve a radius "
-            f"of {k / 2:g} mm or more, or render with a narrower `--kerf` (`aidl check` does "
-            f"not run the kerf)"))
+            f"of {k / 2:g} mm or more, or render with a narrower `--kerf`"))
 
 
 # ------------------------------------------------------------------ rigid motions
