@@ -531,3 +531,26 @@ def test_aidl_check_says_E0504_for_the_programs_own_kerf():
     assert r.ok and not _errors(r)
     r = aidl_lang.compile(source=KERF_SLOT.replace("kerf 0.5 mm", "kerf 0 mm"))
     assert r.ok and not _errors(r)
+
+
+def test_a_mirror_line_nothing_places_stays_where_written():
+    """Run by's Santa boot stencil: `right = Mirrored(left, axis)` about a free construction
+    line; placing the left print moved the axis 32.9 mm (min-norm), the right print 65.75 mm
+    off the 170 mm the request asked; its assert caught it and blamed the left print. A mirror
+    line that no constraint places is held; one a constraint places follows it."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111by/drafts/06_santa_boot_stencil.attempt1.aidl"))
+    assert r.ok and not _errors(r), [d.message for d in _errors(r)]
+    src = """solid s {
+    body = Rectangle(center=(0, 0), width=200, height=60)
+    hole left { c = Circle(center=(-40, 0), radius=5) }
+    axis = Line((0, -10), (0, 10), construction=true)
+    right = Mirrored(left, axis)
+    left.c.center.x == -60 mm
+    PLACE
+}
+"""
+    r = aidl_lang.compile(source=src.replace("PLACE", ""))
+    assert tuple(r.value("s.right.c.center").value) == pytest.approx((60, 0))
+    r = aidl_lang.compile(source=src.replace("PLACE", "axis.start.x == 10 mm\n"
+                                                      "    axis.end.x == 10 mm"))
+    assert tuple(r.value("s.right.c.center").value) == pytest.approx((80, 0))

@@ -87,8 +87,10 @@ class Statements(Asserts):
         self.model.root = root
         self.model.constants = fctx.scope.vars
         from .sinks import fillet_copies, sink_copies
+        from ..geometry.derived.operations import hold_mirror_lines
         sink_copies(self.model)          # a pattern's copies of a sunk hole, sunk alike
         fillet_copies(self.model)        # and of a shape filleted to another, filleted alike
+        hold_mirror_lines(self.model)    # a mirror line nothing places stays where written
         return self.model
 
     def _new_structure(self, name, kind, parent, span, template=None) -> Structure:

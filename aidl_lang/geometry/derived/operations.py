@@ -552,8 +552,51 @@ def _mirror(ctx, S, target, about, name, k: int, indexed: bool):
                              f"to mirror about; give its start and end different places")
     ang = math.atan2(dy, dx)
     xf, rot, flip = _reflect(a, b)
+    lines = ctx.model.__dict__.setdefault("mirror_lines", [])
+    if line not in lines:
+        lines.append(line)                  # (hold_mirror_lines, after the program ran)
     return _copy(ctx, target, xf, rot, flip, name, k, "mirror", ang, indexed=indexed,
                  line=(a, b))
+
+
+def hold_mirror_lines(model) -> None:
+    """Hold where it is written each mirror line (``Mirrored``/``Flip``'s ``about``) of
+    ``model`` that is construction and that no constraint but the mirror copies' rules reads:
+    nothing places it, so a relation on the original or its image moved the line instead of
+    the part (run by's stencil: the right boot print's axis, a free construction line, went
+    32.9 mm left when the left print was placed, and the image 65.75 mm with it; run au's
+    nail board, the same with `Flip`).  A line a written constraint places, or a drawn one,
+    is left to its constraints."""
+    lines = [g for g in model.__dict__.get("mirror_lines", ()) if g.construction]
+    if not lines:
+        return
+    mine = {id(g): {i for p in g.points.values() for i in (p.ix, p.iy)} for g in lines}
+    every = set().union(*mine.values())
+    read: set = set()
+    for c in model.constraints:
+        if c.implicit and (c.kind == "internal" or getattr(c, "copy_rule", False)):
+            continue                        # a mirror copy's rule, a shape's own
+        for eq in c.equations:
+            _indices(eq.expr, every, read)
+    for g in lines:
+        if mine[id(g)] & read:
+            continue
+        eqs = [Equation(var(i) - model.x[i]) for i in sorted(mine[id(g)]) if model.free[i]]
+        if eqs:
+            c = Constraint("internal", g.owner, None, eqs,
+                           text=f"the mirror line `{g.label}` held where it is written",
+                           implicit=True)
+            g.owner.constraints.append(c)
+            model.constraints.append(c)
+
+
+def _indices(e, among: set, out: set) -> None:
+    """The unknowns of ``among`` that expression ``e`` reads, added to ``out``."""
+    if isinstance(e, Lin):
+        out.update(among.intersection(e.terms))
+        return
+    for a in getattr(e, "args", ()) or ():
+        _indices(a, among, out)
 
 
 def _allow_overlap(items: list, S=None, span=None) -> None:
