@@ -458,10 +458,11 @@ def check_assertions(sink: DiagnosticSink, model: Model, held_only: bool = False
     a failed solve, ``held_only``: those that read no solved value)."""
     if not model.assertions:
         return
-    from .geometry.relations.assertions import describe, failed
-    x = None if held_only else model.xs()
+    from .geometry.relations.assertions import describe, failed, judged_at
+    x = None if held_only else judged_at(model)
     for a, bad in failed(model, held_only):
-        sink.add(Diagnostic("E0405", describe(a, bad, len(a.groups), x, model.param_owner),
+        sink.add(Diagnostic("E0405", describe(a, bad, len(a.groups), x, model.param_owner,
+                                              None if held_only else model.xs()),
                             a.span, "error",
                             hint="an `assert` states what must be true of the design; change "
                                  "the values or constraints so that it holds (it is not a "

@@ -380,7 +380,7 @@ assembly kit {
 
 @pytest.mark.parametrize("place,gap,ok", [
     ("Place(a, position=(0, 0, 0))\n    Place(b, position=(0, 0, 0))", 5, True),   # as drawn
-    ("Place(a, position=(0, 0, 0))\n    Place(b, position=(0, 0, 0))", 6, True),   # on the sheet
+    ("Place(a, position=(0, 0, 0))\n    Place(b, position=(0, 0, 0))", 6, False),  # the sheet's
     ("Place(a, position=(0, 0, 0))\n    Place(b, position=(0, 0, 0))", 7, False),
     ("", 5, False),                 # nothing placed: the sheet is the design
     ("", 6, True)])
@@ -390,6 +390,10 @@ def test_where_written_counts_only_for_placed_parts(place, gap, ok):
     if not ok:
         (e,) = _errors(r)
         assert e.code == "E0405"
+        # (run bz: judged either way, an assert the layout made true could not fail)
+        assert ("is placed with `Place`, so the assert reads it where it is written (the "
+                "sheet's layout moves it (+1, +0) mm, by `RightOf(b, a, gap=6)`)" in e.message) \
+            == bool(place)
 
 
 def test_a_part_named_units_is_a_name():
@@ -554,3 +558,19 @@ def test_a_mirror_line_nothing_places_stays_where_written():
     r = aidl_lang.compile(source=src.replace("PLACE", "axis.start.x == 10 mm\n"
                                                       "    axis.end.x == 10 mm"))
     assert tuple(r.value("s.right.c.center").value) == pytest.approx((80, 0))
+
+
+def test_W0512_of_a_patterns_copies_names_the_list_and_counts_pieces():
+    """Run bw's bud vase: five overlapping petals (one flower) were "drawn 5 times but cut 2
+    openings" (the ring's island counted) and the hint's `AllowOverlap(petal)` was refused
+    (one shape); `AllowOverlap(petals)`, the pattern's list, is what takes them."""
+    path = RUNS / "issue111bw/run/01_bud_vase.first_valid.aidl"
+    r = aidl_lang.compile(path=str(path))
+    w = [d for d in r.diagnostics if d.code == "W0512"]
+    assert len(w) == 2 and all("cuts 1 opening:" in d.message for d in w)
+    assert all("`AllowOverlap(petals)`" in d.hint for d in w)
+    src = path.read_text()
+    line = "    petals = CircularPattern(petal, 5, head.center)\n"
+    assert line in src
+    r = aidl_lang.compile(source=src.replace(line, line + "    AllowOverlap(petals)\n"))
+    assert not [d for d in r.diagnostics if d.code in ("W0512", "W0523") or d.is_error]

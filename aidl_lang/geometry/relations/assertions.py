@@ -112,14 +112,39 @@ def _moved_part(a: Assertion, x, owners) -> str:
     return ""
 
 
-def describe(a: Assertion, found: list, alternatives: int = 1, x=None, owners=None) -> str:
+def _placed_note(a: Assertion, sheet, owners) -> str:
+    """That a part the assertion reads is placed with ``Place`` and so read where it is
+    written, not where the sheet's layout moved it (``sheet``: the solution): ``""`` when
+    none was moved."""
+    if sheet is None:
+        return ""
+    for s in _structures_read(a, owners):
+        for p in [s] + list(s.ancestors()) if hasattr(s, "ancestors") else [s]:
+            if getattr(p, "placement", None) is None or p.fx < 0:
+                continue
+            dx, dy = float(sheet[p.fx]), float(sheet[p.fy])
+            if math.hypot(dx, dy) <= 0.01:
+                continue
+            by = [c for c in p.parent.constraints if not c.implicit and c.args
+                  and any(p is t or (hasattr(t, "is_within") and t.is_within(p))
+                          for t in c.args[0])] if p.parent is not None else []
+            how = " and".join(f" `{c.describe()}`" for c in by[:2])
+            return (f"; `{p.path}` is placed with `Place`, so the assert reads it where it is "
+                    f"written (the sheet's layout moves it ({dx:+.6g}, {dy:+.6g}) mm"
+                    + (f", by{how}" if how else "") + ")")
+    return ""
+
+
+def describe(a: Assertion, found: list, alternatives: int = 1, x=None, owners=None,
+             sheet=None) -> str:
     """The E0405 message: the condition, the user's reason and the values found
     (``found``: ``(op, left, right, dim)`` of the sides that fail; ``alternatives``: how
     many alternatives of an `or` failed, each by the sides found), then the value of each
-    name and member the condition reads (``a.reads``, at the solution ``x`` when given),
-    where it is not the side itself: `(ring.bb.width = 124 mm, wall = 3 mm)`; a part it reads
-    that a relation moved from where it is written, and the relation (``owners``: the model's
-    ``param_owner``)."""
+    name and member the condition reads (``a.reads``, at ``x`` when given: where it is
+    judged, :func:`judged_at`), where it is not the side itself: `(ring.bb.width = 124 mm,
+    wall = 3 mm)`; a part it reads that a relation moved from where it is written, and the
+    relation (``owners``: the model's ``param_owner``); a placed part read where it is
+    written though the layout moved it (``sheet``: the solution)."""
     why = f" ({a.message})" if a.message else ""
     parts = []
     for op, l, r, dim in found[:3]:
@@ -129,7 +154,8 @@ def describe(a: Assertion, found: list, alternatives: int = 1, x=None, owners=No
             if not a.text.strip() == text]
     where = f" (where {', '.join(said)})" if said else ""
     return (f"assertion failed: `{a.text}`{why}: {lead}" + "; ".join(parts) + where
-            + _drawn_boxes(a, x) + _text_boxes(a, x) + _star_boxes(a, x) + _moved_part(a, x, owners))
+            + _drawn_boxes(a, x) + _text_boxes(a, x) + _star_boxes(a, x) + _moved_part(a, x, owners)
+            + _placed_note(a, sheet, owners))
 
 
 def _box_terms(a: Assertion) -> list:
@@ -351,20 +377,15 @@ def _unknowns(e, free, out: list) -> None:
 
 
 def failed(model: Model, held_only: bool = False) -> list[tuple[Assertion, list]]:
-    """Each assertion that does not hold at ``model.x``, with its failing sides' values.
-    ``held_only``: only the assertions whose sides read no solved value (params, constants,
-    held dimensions): what can be judged when the solve failed.  In an assembly that places
-    its parts with ``Place``, an assertion holds too where it holds with those parts where
-    they are written (:func:`written`): the sheet's layout moves them apart for cutting, and
-    the product is made from where they are written (runs bp, bs, bv: `strip[1].r.bb.left -
-    strip[0].r.bb.right == 32 mm`, the channels of a game as drawn, failed by the 6 mm
-    the strips were laid apart on the sheet)."""
+    """Each assertion that does not hold at :func:`judged_at` (the solution, the parts placed
+    with ``Place`` where they are written), with its failing sides' values.  ``held_only``:
+    only the assertions whose sides read no solved value (params, constants, held
+    dimensions): what can be judged when the solve failed."""
     out = []
     if not model.assertions:
         return out
-    x = model.xs()
+    x = judged_at(model)
     free = model.free
-    home = None
     for a in model.assertions:
         if held_only:
             reads: list = []
@@ -375,14 +396,21 @@ def failed(model: Model, held_only: bool = False) -> list[tuple[Assertion, list]
             if reads:
                 continue
         bad = _wrong(a, x)
-        if bad and not held_only:
-            if home is None:
-                home = written(model, x)
-            if home is not False and not _wrong(a, home):
-                continue
         if bad:
             out.append((a, bad))
     return out
+
+
+def judged_at(model: Model):
+    """The values asserts are judged at: the solution, but in an assembly that places its
+    parts with ``Place``, those parts where they are written (:func:`written`): the sheet's
+    layout moves them apart for cutting, and the product is made from where they are written
+    (runs bp, bs, bv: `strip[1].r.bb.left - strip[0].r.bb.right == 32 mm`, a game's channel as
+    drawn, failed by the 6 mm the strips were laid apart on the sheet; run bz: judged either
+    way, an assert the layout had made true, `bail.inner.bb.left > 4 mm`, could not fail)."""
+    x = model.xs()
+    home = written(model, x)
+    return x if home is False else home
 
 
 def _wrong(a: Assertion, x) -> list:
@@ -418,4 +446,14 @@ def written(model: Model, x):
     home = x.copy()
     for s in placed:
         home[s.fx] = home[s.fy] = 0.0
+    # what `CutInto` cuts into a placed part goes back with it (run bq: a door cut into an
+    # end wall, placed on it by relations, was read where the sheet had the wall)
+    for h in model.structures:
+        p = h.cuts_into
+        while p is not None and getattr(p, "placement", None) is None:
+            p = p.parent
+        if p is None or h.fx < 0 or h.parent is not p.parent or p not in placed:
+            continue
+        home[h.fx] -= x[p.fx]
+        home[h.fy] -= x[p.fy]
     return home

@@ -53,14 +53,19 @@ def _check_repeated_faces(d: Drawing, h: Structure, sink: DiagnosticSink,
                 merges.append((i, j, 0.0, 0.0))        # they touch: one contour
         if not merges:
             continue
-        openings = _union(shapes).num_contour()
+        # pieces, not contours: five petals round a ring are one opening with an island (run
+        # bw: "cuts 2 openings")
+        openings = len(_union(shapes).decompose())
         i, j, depth, a = merges[0]
         g = faces[0][0]
         how = (f"copies {i + 1} and {j + 1} overlap by {depth:.2f} mm ({a:.2f} mm^2 in common)"
                if a > 0 else f"copies {i + 1} and {j + 1} touch")
         more = (f" (at least {len(merges)} such pairs)" if cut_short else
                 f" ({len(merges)} such pairs)" if len(merges) > 1 else "")
-        ref = _ref(g, h)
+        # a pattern's copies by their list, which holds the original too (run bw: the hint's
+        # `AllowOverlap(petal)`, one shape, was refused; `petals` is what takes them)
+        ref = next((_ref(f, h) for f, _ in faces if f.name and f.name.endswith("]")),
+                   _ref(g, h))
         stmt = f"AllowOverlap({ref})" if ref != "self" else None
         meant = (f", or say so: write `{stmt}` in `{h.path}`" if stmt else "")
         # copies that all graze (overlap by less than a wall, or only touch) were meant apart:
