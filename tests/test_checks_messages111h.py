@@ -574,3 +574,24 @@ def test_W0512_of_a_patterns_copies_names_the_list_and_counts_pieces():
     assert line in src
     r = aidl_lang.compile(source=src.replace(line, line + "    AllowOverlap(petals)\n"))
     assert not [d for d in r.diagnostics if d.code in ("W0512", "W0523") or d.is_error]
+
+
+def test_a_mirror_image_of_a_drawing_with_text_is_refused():
+    """Run ca's cookie stamp: `Flip(label, about=axis)` of a drawing holding "MERCI" turned the
+    word 180 degrees (upside down), not mirrored, and nothing said so. Mirroring Text itself
+    was E0108 already; a structure holding it is too."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111ca/run/02_cookie_stamp.first_valid.aidl"))
+    (e,) = _errors(r)
+    assert e.code == "E0108" and "a mirror image cannot hold Text" in e.message
+    assert "MERCI" in e.message and e.span.line == 37
+
+
+def test_W0518_says_the_true_gap_where_the_boxes_overlap():
+    """Run bz's paddle boat: a hull 3 mm off its nearest part was said "1 mm away" (and a
+    27 mm gap too): where two parts' boxes overlap, Manifold's nearest distance was asked
+    within 1 mm and answered that limit. The search widens until the gap lies inside it."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111bz/run/03_paddle_boat.first_valid.aidl"))
+    (w,) = [d for d in r.diagnostics if d.code == "W0518" and "paddle_boat.hull" in d.message]
+    assert "is 3 mm away" in w.message
+    (f,) = [g for g in r.fit["floating"] if g["part"] == "paddle_boat.hull"]
+    assert f["gap"] == pytest.approx(3.0, abs=1e-3)

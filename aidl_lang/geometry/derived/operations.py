@@ -199,6 +199,13 @@ class _Cloner:
     def geom(self, g: Geometry, dest: Structure) -> Geometry:
         if g in self.geoms:
             return self.geoms[g]
+        if g.kind == "Text" and self.flip:
+            # its copy was the word turned 180 degrees, upside down, not a mirror image (run
+            # ca's cookie stamp: `Flip(label, about=axis)` of a drawing with "MERCI")
+            raise OperationError(
+                f"a mirror image cannot hold Text: `{g.label}` (\"{g.data.get('text', '')}\") "
+                "would be turned upside down, not mirrored; mirror the other shapes and write "
+                "the copy's Text where it belongs (mirrored lettering is not made)")
         self.ctx.n_geometry += 1
         if hasattr(self.ctx, "count_object"):       # the interpreter's budget
             self.ctx.count_object(self.ctx.cur_span)

@@ -215,8 +215,18 @@ def fit(bodies, deadline=None, normals: dict | None = None,
                     break            # no nearer part can be in a box this far
                 tick()
                 g = float(d[j])
-                tally["gaps"] += g < 1e3
-                g = float(bodies[i][1].min_gap(bodies[j][1], g + 1.0)) if g < 1e3 else g
+                if g < 1e3:
+                    # Manifold answers the search length itself when nothing is nearer: widen
+                    # it until the gap is inside (run bz: a paddle 3 mm and 27 mm off its frame,
+                    # their boxes overlapping, was said "1 mm away")
+                    reach = g + 1.0
+                    while True:
+                        tally["gaps"] += 1
+                        got = float(bodies[i][1].min_gap(bodies[j][1], reach))
+                        if got < reach - 1e-9 or reach >= 1e4:
+                            break
+                        reach *= 8.0
+                    g = got
                 if best is None or g < best[0]:
                     best = (g, bodies.name(j))
             if not any(g.part == best[1] and g.nearest == bodies.name(i) for g in gaps):
