@@ -110,7 +110,8 @@ Conventions: y points up; angles and `rotation=` turn counter-clockwise from +x.
 0: a RegularPolygon's first vertex is on +x (a hexagon has flats at top and bottom), a
 Triangle(center, base, height) points up (apex c at +y; center: its box's, so a hexagram is
 two `RegularPolygon(center, radius, 3)`, rotation 90 and 270 deg; a heart: `Hull(Circle(center=(-8, 5),
-radius=9), Point(0, -16))` and its mirror at x 8), a Slot lies along x; a Slot's length
+radius=9), Point(0, -16))` and its mirror at x 8, in a structure with `Rigid(self)` when a relation
+places it), a Slot lies along x; a Slot's length
 is end to end; a Text position is on the baseline (set `valign="middle"` to center it).
 Letters as the part (cake topper, sign, house number): `Text(..., font="sans:Bold")` (or "serif",
 a .ttf) is filled outlines: material in a solid (join them: a rail `width=word.bb.width`),
