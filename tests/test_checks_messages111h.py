@@ -595,3 +595,30 @@ def test_W0518_says_the_true_gap_where_the_boxes_overlap():
     assert "is 3 mm away" in w.message
     (f,) = [g for g in r.fit["floating"] if g["part"] == "paddle_boat.hull"]
     assert f["gap"] == pytest.approx(3.0, abs=1e-3)
+
+
+@pytest.mark.parametrize("path,hole", [
+    ("issue111cc/run/07_tabletop_easel.first_valid.aidl", "easel.ledge.lip_slots"),
+    ("issue111bx/run/01_drill_press_fence.first_valid.aidl", "fence.base.mortises"),
+    ("issue111bh/run/04_toy_train.first_valid.aidl", "loco.near.front_m")])
+def test_W0530_of_a_mortise_on_or_past_the_edge(path, hole):
+    """Runs ba, bb, bh, bx and cc: a `tab_and_slot(part="slot")` drawn flush with (or past)
+    the part's edge cut an open notch, and no message said so (no wall is left to call thin)."""
+    r = aidl_lang.compile(path=str(RUNS / path))
+    w = [d for d in r.diagnostics if d.code == "W0530" and f"hole `{hole}`" in d.message]
+    assert w and "a mortise" in w[0].message and "cut open into a notch" in w[0].message
+
+
+def test_W0530_leaves_a_mortise_with_its_wall_alone():
+    src = """import "std/joints.aidl"
+thickness 3 mm
+solid ledge {
+    board = Rectangle(corner=(-60, 0), opposite=(60, 40))
+    slots = tab_and_slot(part="slot", length=100, thickness=3, tabs=2, tab=20, screw=0,
+                         cx=0, cy=Y)
+}
+"""
+    ok = aidl_lang.compile(source=src.replace("cy=Y", "cy=2.5 mm"))
+    assert not [d for d in ok.diagnostics if d.code == "W0530"]
+    flush = aidl_lang.compile(source=src.replace("cy=Y", "cy=1.5 mm"))
+    assert [d.code for d in flush.diagnostics if d.code == "W0530"] == ["W0530"]

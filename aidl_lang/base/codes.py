@@ -1496,7 +1496,9 @@ default) runs out through the top edge no longer holds on its screw. The warning
 hole, how far it runs out (its farthest point from the part's edge, and where) and the fix:
 shorten its slot (`length=`) or shrink it, or move it inward, by that much and a wall of twice
 the minimum. An edge notch meant as one (a finger notch, a cable exit, drawn with a shape of
-its own) is not warned.
+its own) is not warned. So too the slots of a `tab_and_slot(part="slot")`, a mortise, that
+lie on the outer edge or run past it (a lip's slots drawn flush with a ledge's front edge): the
+mortise is cut open into a notch the tab can slide out of, and no wall is left to call thin.
 
 The same for a pattern's copy that runs out through the outer edge while the pattern's original
 is a closed hole (a pattern of holes, or of shapes in one hole): `AlignCenterX(peg, body)`

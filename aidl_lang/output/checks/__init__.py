@@ -59,7 +59,8 @@ from .assembly import _check_fit
 from .changes import Topology, check_topology, topology, topology_changes
 from .common import (MIN_AREA, MIN_FRACTION, MIN_WALL, _cut_openings, _edges, _inside,
                      _inside_loops, _part_of, _part_roots, _signed, _union, part_min_wall)
-from .holes.pattern_edge import CLOSED_OPENINGS, _check_closed_openings, check_pattern_edges
+from .holes.pattern_edge import (CLOSED_OPENINGS, _check_closed_openings, check_open_mortises,
+                                 check_pattern_edges)
 from .material.kerf import check_kerf
 from .holes.openings import TOUCH, _analyse, _check_flush, _check_hole, _intended, _Near, _report_openings
 from .holes.repeats import _check_overlapping_circles, _check_repeated_faces
@@ -319,6 +320,7 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
                 covered = _report_openings(a, s, min_wall, sink, d.shapes, d, shape)
                 _check_flush(d, s, shape, a, cuts, min_wall, sink)
                 _check_closed_openings(d, s, shape, cuts, min_wall, sink)
+                check_open_mortises(d, s, shape, cuts, min_wall, sink)
                 check_pattern_edges(d, s, cuts, min_wall, sink, set(CLOSED_OPENINGS))
                 return covered
             covered = run("openings", s, openings)

@@ -189,6 +189,37 @@ def _check_closed_openings(d: Drawing, s: Structure, shape, cuts, min_wall: floa
                           f"{2 * min_wall:g} mm)")
 
 
+FLUSH = 0.01    # mm: a mortise grown by this much that reaches past the part lies on its edge
+
+
+def check_open_mortises(d: Drawing, s: Structure, shape, cuts, min_wall: float, sink) -> None:
+    """W0530 for each `tab_and_slot(part="slot")` hole of part ``s`` whose slots reach the
+    part's outer edge or past it (flush: grown by :data:`FLUSH` they reach out): a mortise is
+    a closed opening, and one on the edge is an open notch the tab falls out of (runs ba, bb,
+    bx, cc: mortises drawn flush with the ledge's front edge; nothing said so, as a slot
+    merged with the outline leaves no wall to call thin)."""
+    mine = [c for c in cuts if getattr(c.hole, "template", None) == "tab_and_slot"
+            and c.hole.scope.get("part") == "slot" and d.shapes.get(c.hole) is not None]
+    if not mine:
+        return
+    filled = _union([shape] + [c.region for c in cuts if c.region is not None])
+    for c in mine:
+        grown = d.shapes[c.hole].offset(FLUSH, mf.JoinType.Miter)
+        if _area(grown - filled) <= FLUSH * 1.0:
+            continue                    # (less than 1 mm of a slot's side on the edge)
+        out = d.shapes[c.hole] - filled
+        x0, y0, x1, y1 = (grown - filled).bounds()
+        depth = 0.0 if _area(out) <= MIN_AREA else max(x1 - x0, y1 - y0)
+        where = "lies on" if depth == 0.0 else "runs out through"
+        sink.warning("W0530", f"hole `{c.hole.path}` (a `tab_and_slot`'s slots, a mortise) "
+                     f"{where} the outer edge of `{s.path}` (about ({(x0 + x1) / 2 + 0.0:.2f}, "
+                     f"{(y0 + y1) / 2 + 0.0:.2f})): the mortise is cut open into a notch, and the "
+                     "tab it holds can slide out", c.hole.span,
+                     hint=f"move `{c.hole.name}` inward so that at least {2 * min_wall:g} mm "
+                          "of material is left between the slots and the edge (a tab meant to "
+                          "stand at the edge is the `part=\"tab\"` half's)")
+
+
 def _letters(h):
     """The first font Text of hole ``h`` (its letters cut as openings), else None."""
     return next((g for g in h.geometry if g.kind == "Text" and g.data.get("font")), None)
