@@ -622,3 +622,21 @@ solid ledge {
     assert not [d for d in ok.diagnostics if d.code == "W0530"]
     flush = aidl_lang.compile(source=src.replace("cy=Y", "cy=1.5 mm"))
     assert [d.code for d in flush.diagnostics if d.code == "W0530"] == ["W0530"]
+
+
+def test_E0406_of_an_empty_intersect_in_a_loop_names_the_copy_and_where_each_lies():
+    """Run cd's sign: 17 stripes clipped to a band, the 17th past its end: E0406 named
+    `sign.stripes.st`, the statement, not which copy, so the count had to be guessed."""
+    src = """solid s {
+    body = Rectangle(center=(0, 0), width=100, height=20)
+    drawing d {
+        band = Rectangle(center=(0, 0), width=100, height=20, construction=true)
+        for i in range(4) {
+            st = Intersect(Rectangle(center=(i * 30 - 30, 0), width=5, height=30), band)
+        }
+    }
+}
+"""
+    (e,) = _errors(aidl_lang.compile(source=src))
+    assert e.code == "E0406" and e.message.startswith("`s.d.st[3]`: ")
+    assert "(x 57.5..62.5, y -15..15)" in e.message and "(x -50..50, y -10..10)" in e.message

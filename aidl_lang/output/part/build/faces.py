@@ -287,14 +287,22 @@ class Faces:
         an E0406 at the call when they have none."""
         region = region_of(g)[0]
         out = None
+        boxes = []
         for src in region:
             loops = self.loops_of(src)
             sec = self.exact.section(loops) if loops else mf.CrossSection()
+            boxes.append(sec.bounds() if not sec.is_empty() else None)
             out = sec if out is None else out ^ sec
         if out is None or out.is_empty() or out.area() <= 1e-12:
-            names = ", ".join(f"`{s.label}`" for s in region)
+            # which copy of a loop's, and where each shape lies (run cd: a 17th stripe past
+            # its band's end, "`sign.stripes.st`" for all 17)
+            twins = [h for h in g.owner.geometry if h.span == g.span and h.name == g.name]
+            label = g.label + (f"[{twins.index(g)}]" if len(twins) > 1 and g in twins else "")
+            names = ", ".join(f"`{s.label}`" + (f" (x {b[0]:.6g}..{b[2]:.6g}, y {b[1]:.6g}.."
+                                                 f"{b[3]:.6g})" if b is not None else "")
+                              for s, b in zip(region, boxes))
             self.shape_errors.append((g, (
-                f"`{g.label}`: {names} have no area in common: the Intersect is empty"),
+                f"`{label}`: {names} have no area in common: the Intersect is empty"),
                 "place the shapes so that they overlap (an Intersect keeps only the area "
                 "inside all of them)"))
             return None
