@@ -640,3 +640,11 @@ def test_E0406_of_an_empty_intersect_in_a_loop_names_the_copy_and_where_each_lie
     (e,) = _errors(aidl_lang.compile(source=src))
     assert e.code == "E0406" and e.message.startswith("`s.d.st[3]`: ")
     assert "(x 57.5..62.5, y -15..15)" in e.message and "(x -50..50, y -10..10)" in e.message
+
+
+def test_W0505_of_a_patterns_copies_is_one_warning():
+    """Run cc's lotus tealight holder: eight W0505, one per copy of a vein pattern, where W0516
+    says a statement's copies together. One warning names the others."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111cc/run/06_lotus_diya.first_valid.aidl"))
+    (w,) = [d for d in r.diagnostics if d.code == "W0505"]
+    assert "so do 7 more of this statement's copies (`veins[1].v`, `veins[2].v`" in w.message

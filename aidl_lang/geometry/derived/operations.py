@@ -614,7 +614,7 @@ def _allow_overlap(items: list, S=None, span=None) -> None:
     (parts of an assembly) may interpenetrate (W0511:
     :func:`aidl_lang.output.checks.parts._allowed`).  Both are kept in the structures'
     ``overlap_ok`` sets; an engraving named with its part (or a shape of it) may run off
-    the part's material (W0505: :func:`aidl_lang.output.checks.marks.engravings._meant_off`),
+    the part's material (W0505: :func:`aidl_lang.output.checks.marks.allowed.meant_off`),
     kept in the drawing's ``engrave_ok``; the call itself (``span``, the things named) in the ``allowances`` of
     ``S``, the structure it is written in (W0523: one that allows nothing).  One argument is
     a list (``AllowOverlap(c)``: a loop's copies in a hole, W0512).  Raises :class:`OperationError` for an argument that is no shape or
@@ -664,7 +664,7 @@ def _allow_overlap(items: list, S=None, span=None) -> None:
             done = True
     # an engraving (a drawing, or a shape in one) that runs off its part's material on
     # purpose, named with the part (`self`) or a shape of it: W0505 is said as meant
-    # (aidl_lang.output.checks.marks.engravings._meant_off; grid lines over a joint band)
+    # (aidl_lang.output.checks.marks.allowed.meant_off; grid lines over a joint band)
     def holder(o):
         return o if isinstance(o, Structure) else o.owner
     drawn = [o for o in objs if holder(o).in_drawing()]

@@ -1,6 +1,7 @@
-"""What ``AllowOverlap`` accepts among engraved marks (:func:`text_allowed`): two texts or
-marks it names, or the drawings around them, laid out close on purpose (W0513 then says
-nothing of them, and the statement counts as used for W0523)."""
+"""What ``AllowOverlap`` accepts among engraved marks: two texts or marks it names, or the
+drawings around them, laid out close on purpose (:func:`text_allowed`: W0513 then says nothing
+of them), and an engraving named with its part, run off the material on purpose
+(:func:`meant_off`: W0505); either statement counts as used for W0523."""
 from __future__ import annotations
 
 from ....geometry.core.model import Structure
@@ -18,5 +19,25 @@ def text_allowed(a, b) -> bool:
         if named and covered(a, named) and covered(b, named):
             node.text_used = True
             return True
+        node = node.parent
+    return False
+
+
+def meant_off(g, part) -> bool:
+    """``AllowOverlap(g, self)`` (or naming a drawing around ``g``, and ``part``, a structure
+    around it or a shape of it) was written: ``g`` runs off ``part``'s material on purpose
+    (issue 111: a checkerboard's grid lines carried over its dovetail band).  The statement
+    is marked as used (``engrave_used``, read by W0523)."""
+    node = g.owner
+    while node is not None:
+        for named, material in getattr(node, "engrave_ok", ()):
+            if named is not g and named is not node:
+                continue
+            if any(part is m or part.is_within(m) if isinstance(m, Structure)
+                   else m.owner is part for m in material):
+                node.engrave_used = getattr(node, "engrave_used", set()) | {id(named)}
+                return True
+        if node is part:
+            break
         node = node.parent
     return False

@@ -16,9 +16,9 @@ import manifold3d as mf
 import numpy as np
 
 from ....base.diagnostics import DiagnosticSink
-from ....geometry.core.model import Structure
 from ...part.build.booleans import Drawing
 from ..common import _edges, _inside, _part_of, _pct, _signed, freed_share
+from .allowed import meant_off
 from .segments import _crosses, _edge_arrays, _exact_circle_gaps, _pair_gap
 
 ENGRAVE_TOL = 0.05       # mm: engraving this close to an edge still counts as on the material
@@ -232,6 +232,7 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
             verdicts[g] = (part, pts[at:at + n], inside[at:at + n], grown_loops, items)
             at += n
     outer_of: dict = {}
+    pending: dict = {}              # (statement, where, part) -> its copies' warnings
     for g in by_geom:
         if g not in verdicts:
             continue
@@ -242,7 +243,7 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
             outer_of[part] = _edges([p for p in grown_loops if _signed(p) > 0])
         in_outline = _inside(pts[~inside], outer_of[part])
         warned.add(g)
-        if _meant_off(g, part):
+        if meant_off(g, part):
             continue
         where = "across a hole" if in_outline.all() else (
             "outside the outline" if not in_outline.any() else "outside the outline and across a hole")
@@ -279,8 +280,20 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         if g.kind != "Text":        # (letters off the material are a slip, never meant)
             hint += f"; if it runs off the material on purpose (lines carried over a joint's " \
                     f"band), say so with {_allow_call(g, part)}"
-        sink.warning("W0505", f"engraving `{g.label}` runs {where} of `{part.path}` "
-                     f"({share} of it is off the material)", g.span, hint=hint)
+        # the copies of one statement (a pattern, a loop) once (run cc: eight veins, eight
+        # warnings, where W0516 says its copies together)
+        pending.setdefault((g.span, where, part), []).append(
+            (g, f"engraving `{_copy_label(g)}` runs {where} of `{part.path}` ({share} of it "
+                f"is off the material)", hint))
+    for rows in pending.values():
+        g, message, hint = rows[0]
+        if len(rows) > 1 and g.span is not None:
+            names = ", ".join(f"`{_copy_label(r[0]).removeprefix(r[0].owner.parent.path + '.')}`"
+                              if r[0].owner.parent is not None else f"`{_copy_label(r[0])}`"
+                              for r in rows[1:4])
+            message += (f"; so do {len(rows) - 1} more of this statement's copies ({names}"
+                        f"{', ...' if len(rows) > 4 else ''})")
+        sink.warning("W0505", message, g.span, hint=hint)
     d.engravings_judged = True          # (W0523: an AllowOverlap of an engraving that no W0505 needed)
     texts = []
     for part, geoms in by_part.items():
@@ -290,26 +303,6 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
                          (loops or {}).get(part), sink)
         texts.append((part, [(g, it) for g, it in geoms if g not in warned and g.kind == "Text"]))
     return texts
-
-
-def _meant_off(g, part) -> bool:
-    """``AllowOverlap(g, self)`` (or naming a drawing around ``g``, and ``part``, a structure
-    around it or a shape of it) was written: ``g`` runs off ``part``'s material on purpose
-    (issue 111: a checkerboard's grid lines carried over its dovetail band).  The statement
-    is marked as used (``engrave_used``, read by W0523)."""
-    node = g.owner
-    while node is not None:
-        for named, material in getattr(node, "engrave_ok", ()):
-            if named is not g and named is not node:
-                continue
-            if any(part is m or part.is_within(m) if isinstance(m, Structure)
-                   else m.owner is part for m in material):
-                node.engrave_used = getattr(node, "engrave_used", set()) | {id(named)}
-                return True
-        if node is part:
-            break
-        node = node.parent
-    return False
 
 
 def _allow_call(g, part) -> str:
