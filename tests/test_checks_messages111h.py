@@ -648,3 +648,11 @@ def test_W0505_of_a_patterns_copies_is_one_warning():
     r = aidl_lang.compile(path=str(RUNS / "issue111cc/run/06_lotus_diya.first_valid.aidl"))
     (w,) = [d for d in r.diagnostics if d.code == "W0505"]
     assert "so do 7 more of this statement's copies (`veins[1].v`, `veins[2].v`" in w.message
+
+
+def test_W0504_names_a_loops_copies_by_index():
+    """Run cb's crocodile puppet: four teeth floating off the jaw were listed as `fang` five
+    times; the copies a loop makes are named by their index."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111cb/run/04_shadow_puppet.first_valid.aidl"))
+    (w,) = [d for d in r.diagnostics if d.code == "W0504"]
+    assert "{`puppet.jaw.fang[4]`}" in w.message and "`puppet.jaw.fang[0]`}" in w.message

@@ -74,8 +74,20 @@ def _contributors(d: Drawing, a: Structure, skip: Structure | None = None,
     """What a solid ``a`` unites: (name, span, shape) of its own faces and solid children
     (``objects``: (name, span, shape, the Geometry or Structure))."""
     out = []
-    for g, f in d.own.get(a, []):
-        out.append((f"`{g.label}`", g.span, f, g) if objects else (f"`{g.label}`", g.span, f))
+    own = d.own.get(a, [])
+    # a loop's copies by index (run cb: "{`puppet.jaw.fang`}" five times, for fang[1]..[4])
+    total: dict = {}
+    for g, _ in own:
+        if g.name and g.span is not None:
+            total[(g.name, g.span)] = total.get((g.name, g.span), 0) + 1
+    seen: dict = {}
+    for g, f in own:
+        key = (g.name, g.span)
+        label = g.label
+        if total.get(key, 0) > 1:
+            seen[key] = seen.get(key, -1) + 1
+            label = f"{g.label}[{seen[key]}]"
+        out.append((f"`{label}`", g.span, f, g) if objects else (f"`{label}`", g.span, f))
     for c in a.children.values():
         if c is skip or c.kind not in ("solid", "hole") or c.kind == "hole":
             continue
