@@ -123,8 +123,8 @@ def _placed_note(a: Assertion, sheet, owners) -> str:
             if getattr(p, "placement", None) is None or p.fx < 0:
                 continue
             dx, dy = float(sheet[p.fx]), float(sheet[p.fy])
-            if math.hypot(dx, dy) <= 0.01:
-                continue
+            if math.hypot(dx, dy) <= 0.01 or not _reads_place(a, sheet, p.fx, p.fy):
+                continue                # (a size, or within one part: the frame cancels)
             by = [c for c in p.parent.constraints if not c.implicit and c.args
                   and any(p is t or (hasattr(t, "is_within") and t.is_within(p))
                           for t in c.args[0])] if p.parent is not None else []
