@@ -524,7 +524,8 @@ _DEFS = {
                  doc="Round every corner of this solid's (or hole's) final outline, holes "
                      "included, or only the corners at: a point, [edge1, edge2] (where they "
                      "meet or cross), [shape1, shape2] or [edge, shape] (where their outlines "
-                     "cross: a tab on a disc), a shape's corners (`Fillet(plate, 4)`), or a list of "
+                     "cross: a tab on a disc; not a Hull's or an Arc's, whose corner is given by "
+                     "its point), a shape's corners (`Fillet(plate, 4)`), or a list of "
                      "these. In a sharp tip of angle a the arc lies r / sin(a / 2) - r from the "
                      "point (keep a long tip: a Hull with a Circle)."),
     "Chamfer": _c([A("distance", "length")], [A("at", "any"), A("distance", "length")],
