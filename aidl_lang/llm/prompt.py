@@ -117,7 +117,8 @@ Letters as the part (cake topper, sign, house number): `Text(..., font="sans:Bol
 a .ttf) is filled outlines: material in a solid (join them: a rail `width=word.bb.width`),
 openings in a hole (`stencil=true` holds counters), engraved in a drawing (`fill=true`: their
 area); without `font=` Text is engraved strokes.
-Each child of an `assembly` is a separate part, drawn where the solver puts it (overlapping parts: W0511 unless
+Each child of an `assembly` is a separate part (written inside it, or `part = TEMPLATE()`; `part = NAME` of a
+solid outside it makes no part, E0202), drawn where the solver puts it (overlapping parts: W0511 unless
 `AllowOverlap(a, b)`; `aidl render --layout sheet` nests them for cutting).
 - Place(part, position=(x, y, z), rotation=(rx, ry, rz)) in its assembly places a part in 3D
 (numbers known before solving) for `--assembled`; W0517/W0518: parts collide, or touch nothing.
