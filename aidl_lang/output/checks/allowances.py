@@ -13,6 +13,7 @@ found where it is written (``Structure.allowances``, kept by
 (:attr:`Drawing.own` for a shape, :attr:`Drawing.shapes` for a structure)."""
 from __future__ import annotations
 
+import manifold3d as mf
 import numpy as np
 
 from ...base.diagnostics import DiagnosticSink
@@ -20,6 +21,7 @@ from ...geometry.core.model import Structure
 from ..part.build.booleans import Drawing
 from ..part.measure.nearby import box_pairs
 from .common import _area
+from .holes.openings import TOUCH as MERGE_TOUCH
 
 TOUCH = 1e-3        # mm: two shapes this close touch (W0508 merges touching holes)
 MAX_PAIRS = 20_000  # pairs of named shapes compared per statement, past which it is not judged
@@ -75,11 +77,16 @@ def _enclosed(a, objs) -> bool:
 
 
 def _meets(a, b) -> bool:
+    """Whether two shapes overlap or touch as W0508 judges it: within its ``TOUCH`` (run ce's
+    papel picado: circles 25 mm apart touching at a point were one opening for W0508, and the
+    `AllowOverlap` its fix writes "allowed nothing")."""
     if a is None or b is None or a.is_empty() or b.is_empty():
         return False
     if _area(a ^ b) > 1e-9:
         return True
-    return (a + b).num_contour() < a.num_contour() + b.num_contour()   # they touch
+    if (a + b).num_contour() < a.num_contour() + b.num_contour():     # they touch
+        return True
+    return _area(a.offset(MERGE_TOUCH, mf.JoinType.Round) ^ b) > 1e-9
 
 
 def check_allowances(d: Drawing, sink: DiagnosticSink, tick=lambda: None) -> None:

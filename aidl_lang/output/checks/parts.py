@@ -14,6 +14,7 @@
 from __future__ import annotations
 
 import math
+import re
 
 import manifold3d as mf
 import numpy as np
@@ -376,7 +377,8 @@ def _check_invisible(d: Drawing, s: Structure, sink: DiagnosticSink, quick: bool
             cover = _covering_shape(items, i, a)
             if cover is not None:           # one filled shape of s hides it (issue 61)
                 cname, hidden = cover
-                names = list(dict.fromkeys(hidden))
+                # (a loop's copies by their statement: `web.thread`, not thread[0], [1], ...)
+                names = list(dict.fromkeys(re.sub(r"\[\d+\]`$", "`", n) for n in hidden))
                 more = (f", and {len(hidden)} other shape{'s' if len(hidden) > 1 else ''} "
                         f"of `{s.path}` ({', '.join(names[:3])}{', ...' if len(names) > 3 else ''})"
                         if hidden else "")
