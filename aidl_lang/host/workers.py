@@ -115,13 +115,19 @@ def _main(conn, target, args: tuple, memory: int | None, env: dict | None = None
     if memory:
         limit_memory(memory)
     handle = target(*args)
-    conn.send("ready")
+    try:
+        conn.send("ready")
+    except OSError:         # the parent left while this one warmed up (a server shut down
+        return              # at once): nothing to answer, and no traceback on its stderr
     while True:
         try:
             request = conn.recv()
         except (EOFError, OSError):
             return
-        conn.send(handle(request))
+        try:
+            conn.send(handle(request))
+        except OSError:     # (BrokenPipeError: the parent stopped waiting)
+            return
         idle = getattr(handle, "idle", None)
         if idle is not None:
             idle()
