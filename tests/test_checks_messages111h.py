@@ -656,3 +656,18 @@ def test_W0504_names_a_loops_copies_by_index():
     r = aidl_lang.compile(path=str(RUNS / "issue111cb/run/04_shadow_puppet.first_valid.aidl"))
     (w,) = [d for d in r.diagnostics if d.code == "W0504"]
     assert "{`puppet.jaw.fang[4]`}" in w.message and "`puppet.jaw.fang[0]`}" in w.message
+
+
+def test_fillet_where_two_outlines_cross_on_a_rounded_rectangles_arc_with_equal_radii():
+    """Run bw's ring holder: `Fillet([palm, wrist], 3)` where the wrist meets the palm on its
+    corner arc was E0408 "no corner lies on both" with `corner_radii=[8, 8, 8, 8]` (taken for
+    the sharp rectangle) and fine with `corner_radius=8`: the same shape, the same answer."""
+    src = """solid hand {
+    palm = RoundedRectangle(center=(0, 35), width=50, height=50, RADII)
+    wrist = Rectangle(bottom_left=(-18, -4), width=36, height=16)
+    Fillet([palm, wrist], 3)
+}
+"""
+    for radii in ("corner_radius=8", "corner_radii=[8, 8, 8, 8]"):
+        r = aidl_lang.compile(source=src.replace("RADII", radii))
+        assert r.ok and not _errors(r), (radii, [d.message for d in _errors(r)])

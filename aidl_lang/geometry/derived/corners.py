@@ -147,13 +147,21 @@ def edges_meet(pts, names) -> tuple[list, str | None]:
                 f"{says}")
 
 
+def one_radius(g) -> bool:
+    """A RoundedRectangle whose corners are all of one radius (``corner_radius=``, or
+    ``corner_radii=`` all alike: runs bw, ce, `[8, 8, 8, 8]` was taken for its sharp polygon
+    and E0408 found no crossing on its arcs)."""
+    radii = g.data.get("corner_radii")
+    return g.kind == "RoundedRectangle" and bool(g.data.get("corner_radius")) and (
+        radii is None or max(radii) - min(radii) <= 1e-12)
+
+
 def _sizes(g, x) -> tuple:
     """The solved sizes of shape ``g`` a distance to its outline needs: (radius,) of a
     Circle or Slot, (rx, ry, rotation) of an Ellipse, () otherwise."""
     if g.kind in ("Circle", "Slot"):
         return (abs(float(x[g.scalars["radius"].index])),)
-    if g.kind == "RoundedRectangle" and g.data.get("corner_radius") \
-            and "corner_radii" not in g.data:             # (one radius: the "rounded" spec)
+    if one_radius(g):                                     # (the "rounded" spec)
         return (float(g.data["corner_radius"]),)
     if g.kind == "ArcSlot":
         return (g.data["dims"]["width"] / 2,)

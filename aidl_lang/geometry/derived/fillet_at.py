@@ -4,7 +4,7 @@ polygonal shape, or a list of these; the names the messages give them (:func:`_n
 Raises :class:`.errors.OperationError` for anything else."""
 from __future__ import annotations
 
-from .corners import Chosen
+from .corners import Chosen, one_radius
 from .errors import OperationError
 from ..core.model import Geometry, Structure
 from ..core.values import PV, GeomRef, Q
@@ -64,7 +64,7 @@ def outline_spec(g: Geometry, S) -> tuple:
         return "arcslot", [member(g, k, S) for k in ("center", "start", "end")]
     if k == "Line":
         return "segment", [member(g, "start", S), member(g, "end", S)]
-    if k == "RoundedRectangle" and g.data.get("corner_radius") and "corner_radii" not in g.data:
+    if one_radius(g):
         return "rounded", [_pv(p, S) for p in points_of(g)]
     return "polygon", [_pv(p, S) for p in points_of(g)]
 
