@@ -116,7 +116,7 @@ is end to end; a Text position is on the baseline (set `valign="middle"` to cent
 Letters as the part (cake topper, sign, house number): `Text(..., font="sans:Bold")` (or "serif",
 a .ttf) is filled outlines: material in a solid (join them: a rail `width=word.bb.width`),
 openings in a hole (`stencil=true` holds counters), engraved in a drawing (`fill=true`: their
-area); without `font=` Text is engraved strokes.
+area); without `font=` Text is engraved strokes, in ASCII only (other letters: `font=`).
 Each child of an `assembly` is a separate part (written inside it, or `part = TEMPLATE()`; `part = NAME` of a
 solid outside it makes no part, E0202), drawn where the solver puts it (overlapping parts: W0511 unless
 `AllowOverlap(a, b)`; `aidl render --layout sheet` nests them for cutting).
