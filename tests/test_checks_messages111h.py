@@ -671,3 +671,17 @@ def test_fillet_where_two_outlines_cross_on_a_rounded_rectangles_arc_with_equal_
     for radii in ("corner_radius=8", "corner_radii=[8, 8, 8, 8]"):
         r = aidl_lang.compile(source=src.replace("RADII", radii))
         assert r.ok and not _errors(r), (radii, [d.message for d in _errors(r)])
+
+
+def test_a_def_in_a_top_level_loop_is_hoisted_too():
+    """(The review: a `def` inside a top-level `for` was dropped without a word, and its calls
+    were E0103 "unknown function".) Every block's `def` is one written above it."""
+    src = """for i in range(2) {
+    def twice(x) = 2 * x
+}
+solid s { c = Circle(center=(0, 0), radius=twice(2)) }
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok and not _errors(r)
+    assert r.value("s.c.radius").value == pytest.approx(4.0)
+

@@ -117,40 +117,45 @@ def _parse_text(source: str, path: str, sink: DiagnosticSink):
 
 
 def hoist_defs(stmts: list) -> list:
-    """The top-level statements with every ``def`` written inside a structure (or a loop, a
-    branch or another template in it) moved out, just above the top-level statement that
-    held it, its ``within`` the name of that structure: a template or function defined in a
-    structure is one defined above it, reading the file's names and its own arguments (issue
-    111: seven first checks of models failed on `def rail() -> solid { ... }` in an
-    assembly).  The block keeps every other statement in its order."""
+    """The top-level statements with every ``def`` written inside a block (a structure, a
+    loop, a branch, another template) moved out, just above the top-level statement that
+    held it, its ``within`` the name of that structure or template: a template or function
+    defined in a structure is one defined above it, reading the file's names and its own
+    arguments (issue 111: seven first checks of models failed on `def rail() -> solid
+    { ... }` in an assembly).  Each block keeps its other statements in their order."""
     out: list = []
     for st in stmts:
         found: list = []
-        if isinstance(st, (A.StructDecl, A.Def)):
-            _take_defs(st.body, found)
-            owner = st.name if isinstance(st, A.StructDecl) else st.within
-            for d in found:
-                d.within = owner
+        for block in _blocks(st):
+            _take_defs(block, found)
+        owner = getattr(st, "name", None) if isinstance(st, (A.StructDecl, A.Def)) else None
+        for d in found:
+            d.within = owner
         out.extend(found)
         out.append(st)
     return out
 
 
+def _blocks(st) -> list:
+    """The blocks a statement holds: a structure's, a template's or a loop's body, a branch's
+    two, a bare block itself."""
+    if isinstance(st, A.Block):
+        return [st]
+    if isinstance(st, (A.StructDecl, A.Def, A.For)):
+        return [st.body]
+    if isinstance(st, A.If):
+        return [b for b in (st.body, st.orelse) if b is not None]
+    return []
+
+
 def _take_defs(block, found: list) -> None:
     """Move the ``def``s of ``block`` and the blocks in it into ``found``, in source order."""
-    if block is None:
-        return
     kept = []
     for st in block.stmts:
         if isinstance(st, (A.Def, A.Func)):
             found.append(st)
-            if isinstance(st, A.Def):
-                _take_defs(st.body, found)
-            continue
-        kept.append(st)
-        if isinstance(st, (A.StructDecl, A.For)):
-            _take_defs(st.body, found)
-        elif isinstance(st, A.If):
-            _take_defs(st.body, found)
-            _take_defs(st.orelse, found)
+        else:
+            kept.append(st)
+        for inner in _blocks(st):
+            _take_defs(inner, found)
     block.stmts[:] = kept

@@ -32,6 +32,8 @@ class Model:
         # (template, name) of every `instance.name` the program reads of a template instance's
         # scope: the members `values` lists beside its parameters (issue 111)
         self.members_read: set[tuple[str, str]] = set()
+        # the lines `Mirrored`/`Flip` mirror about (derived.operations.hold_mirror_lines)
+        self.mirror_lines: list = []
 
     def new_param(self, value: float, free: bool, owner: "Structure | None", label: str) -> int:
         self.x.append(float(value))

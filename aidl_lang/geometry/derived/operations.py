@@ -559,9 +559,8 @@ def _mirror(ctx, S, target, about, name, k: int, indexed: bool):
                              f"to mirror about; give its start and end different places")
     ang = math.atan2(dy, dx)
     xf, rot, flip = _reflect(a, b)
-    lines = ctx.model.__dict__.setdefault("mirror_lines", [])
-    if line not in lines:
-        lines.append(line)                  # (hold_mirror_lines, after the program ran)
+    if line not in ctx.model.mirror_lines:
+        ctx.model.mirror_lines.append(line)     # (hold_mirror_lines, after the program ran)
     return _copy(ctx, target, xf, rot, flip, name, k, "mirror", ang, indexed=indexed,
                  line=(a, b))
 
@@ -574,7 +573,7 @@ def hold_mirror_lines(model) -> None:
     32.9 mm left when the left print was placed, and the image 65.75 mm with it; run au's
     nail board, the same with `Flip`).  A line a written constraint places, or a drawn one,
     is left to its constraints."""
-    lines = [g for g in model.__dict__.get("mirror_lines", ()) if g.construction]
+    lines = [g for g in model.mirror_lines if g.construction]
     if not lines:
         return
     mine = {id(g): {i for p in g.points.values() for i in (p.ix, p.iy)} for g in lines}

@@ -117,8 +117,10 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                     "are cut as drawn either way)" if unplaced else
                     f"move `{g.part}` {g.gap:.3g} mm towards `{g.nearest}` with its `Place` "
                     "(or, where a tab falls short of its slot, lengthen the tab)")
-        groups.setdefault((at(g.part), said[0]), []).append((g, *said[1:]))
-    for (span, severity), rows in groups.items():
+        span = at(g.part)           # (a part of no statement is said on its own)
+        groups.setdefault((span, said[0], g.part if span is None else ""), []).append(
+            (g, *said[1:]))
+    for (span, severity, _), rows in groups.items():
         # the copies a loop makes are one statement: one diagnostic (run bq: 80 W0518 for the
         # tokens of a bingo board), the others named after it
         g, message, hint = rows[0]

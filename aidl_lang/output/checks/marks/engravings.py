@@ -282,7 +282,7 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
                     f"band), say so with {_allow_call(g, part)}"
         # the copies of one statement (a pattern, a loop) once (run cc: eight veins, eight
         # warnings, where W0516 says its copies together)
-        pending.setdefault((g.span, where, part), []).append(
+        pending.setdefault((g.span or id(g), where, part), []).append(
             (g, f"engraving `{_copy_label(g)}` runs {where} of `{part.path}` ({share} of it "
                 f"is off the material)", hint))
     for rows in pending.values():

@@ -663,7 +663,7 @@ def _fitting_size(tseg, mseg, ends, box3, size: float, g) -> float | None:
         return None
     if g.data.get("font") is not None:
         # a font's outlines (issue 112): their chords scale about the position point, found
-        # from the glyphs' true box about it (a chord lies within TESS_TOL of its curve);
+        # from the glyphs' true box about it (a chord lies within CHORD_TOL of its curve);
         # a size that max_width shrank is not the `size=` a hint can give
         ext = g.data.get("extent")
         if ext is None or g.data.get("shrunk") or not len(tseg[0]):
