@@ -608,14 +608,14 @@ Use it like a constant.
 level or inside a structure (there it is the same as written just above the structure: defined
 for the whole file, its body reading the file's names and its parameters; two `def`s of one
 name are E0107); KIND is solid, hole, cut, drawing or assembly. Instantiate it by assignment
-inside a structure: `part = NAME(p1=...)` makes a child structure named `part` (reach inside: `part.rim.center`);
-`hole cut = NAME(...)` changes the instance's kind. Arguments are values (numbers, lengths,
+inside a structure: `part = NAME(p1=...)` makes a child structure named `part` (reach
+inside: `part.rim.center`); `hole cut = NAME(...)` changes the instance's kind. Arguments are values (numbers, lengths,
 angles, strings, lists), not geometry; place the instance with constraints in the parent.
 Bare numbers in the body are in the defining file's unit. A parameter without a default is
 required. Keywords accept synonyms: `r` for `radius`, `num_teeth` for `teeth`.
 
-`def NAME(p1, p2=default) = EXPR` (one line, where a template may stand) is a function: a call gives the
-expression's value with the parameters bound (`def angle_of(v) = 225 deg - v * 27 deg`, then
+`def NAME(p1, p2=default) = EXPR` (one line, where a template may stand) is a function: a
+call gives the expression's value with the parameters bound (`def angle_of(v) = 225 deg - v * 27 deg`, then
 `angle_of(3)`); numbers, points and lists in and out, used anywhere an expression goes.
 """, ["template", "templates", "function", "define", "instance", "lambda"]),
     "mirror": ("statement", "`mirror(points, about=\"y\")`: a point list and its mirror image, "
