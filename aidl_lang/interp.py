@@ -28,6 +28,7 @@ from .geometry.relations.bbox import contains_bbox, expand
 from .interpreter.calls import Calls
 from .interpreter.common import BudgetExhausted, FileCtx, Scope
 from .interpreter.expressions import Expressions
+from .interpreter.placing import Placing
 from .interpreter.statements import Statements
 from .base.limits import (DEFAULT_BUDGET, MAX_GEOMETRY, MAX_ITER, MAX_TEMPLATE_DEPTH, WALL_GUARD, Budget,
                      Work, cpu_text, interp_work, now, started, wall_text)
@@ -42,7 +43,7 @@ __all__ = ["Interpreter", "EvalError", "STDLIB", "MAX_ITER", "MAX_GEOMETRY", "MA
 # all (64 million by default: at most a few hundred MB however they are kept)
 STRING_CHARS = 64
 
-class Interpreter(Statements, Calls, Expressions):
+class Interpreter(Statements, Calls, Placing, Expressions):
     """Runs a checked :class:`~aidl_lang.ast.Program` into a :class:`~aidl_lang.geometry.core.model.Model`.
 
     Usage: ``Interpreter(sink, overrides).run(program)``; errors go to ``sink`` as diagnostics.

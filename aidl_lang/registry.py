@@ -431,12 +431,17 @@ _DEFS = {
     "AlignTop": _boxes("a.bb.top == b.bb.top (a point: its y)."),
     "AlignBottom": _boxes("a.bb.bottom == b.bb.bottom (a point: its y)."),
     # ------------------------------------------------------------ placement (3D)
-    "Place": _c([A("part", "boxed"), A("position", "any", None), A("rotation", "any", None)],
+    "Place": _c([A("part", "boxed"), A("position", "any", None), A("rotation", "any", None),
+                 A("face", "any", None), A("up", "any", None)],
                 cat="placement",
                 doc="Place a part (or an assembly) in 3D for the assembled view: its local "
                     "point p (x, y in its frame, z up through its thickness) goes to "
-                    "R p + position; position (x, y, z) lengths, rotation (rx, ry, rz) angles "
-                    "turned about x, then y, then z; both known before solving."),
+                    "R p + position; position (x, y, z) lengths; R by rotation (rx, ry, rz) "
+                    "angles turned about x, then y, then z, or by face= (where its top face, "
+                    "the side its engraving and countersinks are on, looks: \"front\" is -y, "
+                    "\"back\" +y, \"left\", \"right\", \"up\" +z, \"down\", \"+x\" ... or "
+                    "three numbers) and up= (where its drawing's +y goes; default \"up\", or "
+                    "\"back\" for a face up or down); all known before solving."),
     "Bend": _c([A("part", "boxed"), A("at", "length"), A("angle", "angle"),
                 A("radius", "length", 0.0)],
                cat="placement",
@@ -647,6 +652,8 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
              "circle": "along", "curve": "along", "at_angle": "angle", "start_angle": "angle",
              "around": "along", "inward": "flip", "inside": "flip", "reverse": "flip",
              "halign": "anchor", "align": "anchor", "h_align": "anchor"},
+    "Place": {"normal": "face", "facing": "face", "faces": "face", "top": "face",
+              "up_vector": "up", "upward": "up"},
     "Symmetric": {"axis": "about", "line": "about", "mirror": "about"},
     "Mirrored": {"axis": "about", "line": "about", "mirror": "about"},
     "Flip": {"axis": "about", "line": "about", "mirror": "about"},

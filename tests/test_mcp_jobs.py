@@ -257,8 +257,10 @@ def test_tools_list_leaves_room_for_two_more_tools_under_5000_tokens(jobs):
     # top or in a structure: 8,376; an assert across placed parts holding where they are
     # written: 8,397; a heart placed by a relation held by Rigid(self): 8,405; Fillet takes
     # no Hull's or Arc's crossing (runs bk, ce): 8,421; `part = NAME` of an outer solid makes
-    # no part (runs by, ch x2): 8,446; the single-stroke font is ASCII (run ce): 8,456
-    assert figures["prompt"]["tokens"] <= 8456, figures["prompt"]
+    # no part (runs by, ch x2): 8,446; the single-stroke font is ASCII (run ce): 8,456;
+    # round thirteen's `Place` by where the top face looks, face= and up= (five faces turned
+    # to the wall in round twelve): 8,512
+    assert figures["prompt"]["tokens"] <= 8512, figures["prompt"]
 
 
 def test_each_of_issue_86s_jobs_is_at_most_3000_tokens_and_renders_no_picture(jobs):

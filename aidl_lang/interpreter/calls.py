@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 
 from .. import ast as A
-from ..base.diagnostics import EvalError, did_you_mean, shown_path
+from ..base.diagnostics import EvalError, did_you_mean
 from ..geometry.relations.bbox import reach as bbox_reach
 from ..geometry.relations.constraints import BUILDERS, ConstraintError
 from ..geometry.core.expr import Lin, _lin, _new, as_const, func, lift, mul, var
@@ -214,126 +214,6 @@ class Calls:
             if name in vars_:
                 vars_[name] = value
                 return
-
-    def _part_to_place(self, conv, node, spans, what: str = "Place", verb: str = "places"):
-        """The structure ``Place`` (or ``Bend``) names: a part (or an assembly) inside the
-        structure the statement is written in, a child of an assembly; else a located E0108."""
-        s = self._need_struct(node.span)
-        ref = conv["part"]
-        if not isinstance(ref, StructRef):
-            raise EvalError("E0108", f"`{what}` {verb} a structure, not {_a(type_name(ref))}",
-                            spans.get("part", node.span),
-                            hint="name a part: `Place(lid, position=(0, 0, 47))`" if what == "Place"
-                            else "name a part: `Bend(wall, at=40, angle=90 deg, radius=5)`")
-        target = ref.struct
-        if target is s or not target.is_within(s):
-            raise EvalError("E0108", f"`{target.path}` is not a part inside `{s.path}`: a part "
-                            "is placed by the structure that holds it",
-                            spans.get("part", node.span), hint=self._outside_hint(
-                                target, s, f"write the `{what}(...)` in `{target.parent.path}`")
-                            if target.parent is not None else "place the parts of this structure")
-        if target.parent.kind != "assembly":
-            raise EvalError("E0108", f"`{target.path}` is not a part: it is merged into "
-                            f"{target.parent.kind} `{target.parent.path}`",
-                            spans.get("part", node.span),
-                            hint="place a part (a child of an assembly) or an assembly; to "
-                                 "turn a shape within its part, draw it turned")
-        return target
-
-    def _place(self, conv, node, spans):
-        """``Place(part, position=(x, y, z), rotation=(rx, ry, rz))``: the part's rigid 3D
-        placement (mm and radians, known before solving), kept on its structure as
-        ``placement = (position, rotation, span)`` for the assembled outputs."""
-        target = self._part_to_place(conv, node, spans)
-        prev = getattr(target, "placement", None)
-        if prev is not None:
-            sp = prev[2]
-            line = (f", on line {sp.line}" if sp is None or sp.file == node.span.file else
-                    f", in {shown_path(sp.file)} line {sp.line}") if sp is not None else ""
-            hint = "a part has one placement: keep one `Place`"
-            tmpl = next((a.template for a in target.ancestors()
-                         if a.template and sp is not None and sp.file != node.span.file), None)
-            if tmpl:
-                lift = ("; `lift=` raises what stands on the base" if tmpl in
-                        ("gear_train", "rack_and_pinion", "planetary") else "")
-                hint = (f"`{tmpl}` places its parts itself: its arguments say where (`aidl docs "
-                        f"{tmpl}`{lift})")
-            raise EvalError("E0108", f"`{target.path}` is already placed{line}", node.span,
-                            hint=hint)
-        pos = self._triple(conv.get("position"), "position", LEN, spans.get("position"), node)
-        rot = self._triple(conv.get("rotation"), "rotation", ANG, spans.get("rotation"), node)
-        target.placement = (pos, rot, node.span)
-        return None
-
-    def _bend(self, conv, node, spans):
-        """``Bend(part, at=x, angle=a, radius=r)``: a bend of a solid part in the assembled
-        product (mm and radians, known before solving), kept on its structure as ``bends =
-        [(at, angle, radius, span)]``; the flat sheet is not changed
-        (:func:`~aidl_lang.output.part.build.placement.bend_points`)."""
-        target = self._part_to_place(conv, node, spans, "Bend", "bends")
-        if target.kind != "solid":
-            raise EvalError("E0108", f"`Bend` bends a solid part, not {target.kind} "
-                            f"`{target.path}`", spans.get("part", node.span),
-                            hint="bend each solid part of it: `Bend(wall, at=40, angle=90 deg, "
-                                 "radius=5)`")
-        vals = {}
-        for k, dim in (("at", LEN), ("angle", ANG), ("radius", LEN)):
-            q, sp = conv.get(k), spans.get(k, node.span)
-            c = q.const() if isinstance(q, Q) and q.dim in (dim, NUM) else None
-            if c is None:
-                raise EvalError("E0109", f"`{k}` of `Bend` must be {'an angle' if dim is ANG else 'a length'} "
-                                "known before solving", sp,
-                                hint="use numbers and params: a bend is not solved, e.g. "
-                                     "`Bend(wall, at=40, angle=90 deg, radius=5)`")
-            scale = 1.0 if q.dim == dim else ((self.file.unit_scale if self.file else 1.0)
-                                              if dim is LEN else angle_scale(q, DEG))
-            vals[k] = float(c) * scale
-        if not 0 < abs(vals["angle"]) <= 2 * math.pi:
-            raise EvalError("E0108", f"the `angle` of `Bend` is {math.degrees(vals['angle']):g} "
-                            "deg: a bend turns by more than 0 and at most 360 deg",
-                            spans.get("angle", node.span), hint="write e.g. `angle=90 deg` "
-                            "(negative: the other way)")
-        if vals["radius"] < 0 or not abs(vals["at"]) <= MAX_EXTENT or vals["radius"] > MAX_EXTENT:
-            raise EvalError("E0108", f"the `radius` of `Bend` is {vals['radius']:g} mm: an "
-                            "inside radius is 0 or more (and `at` within the model extent)",
-                            spans.get("radius", node.span), hint="write e.g. `radius=5`")
-        bends = getattr(target, "bends", None) or []
-        bends.append((vals["at"], vals["angle"], vals["radius"], node.span))
-        target.bends = bends
-        return None
-
-    def _triple(self, v, what, dim, span, node) -> tuple[float, float, float]:
-        """An (x, y, z) of lengths (mm) or angles (radians) known before solving; None: 0."""
-        span = span or node.span
-        eg = "position=(0, 0, 3 mm)" if dim is LEN else "rotation=(90 deg, 0, 0)"
-        if v is None:
-            return (0.0, 0.0, 0.0)
-        if isinstance(v, PV):
-            v = [Q(v.x, LEN), Q(v.y, LEN)] + ([Q.num(0.0, LEN)] if dim is LEN else [])
-        if not isinstance(v, (list, tuple)) or len(v) != 3:
-            raise EvalError("E0108", f"`{what}` of `Place` must be three "
-                            f"{'lengths' if dim is LEN else 'angles'} (x, y, z), got "
-                            f"{_a(type_name(v)) if not isinstance(v, (list, tuple)) else f'{len(v)} items'}",
-                            span, hint=f"write `{eg}`")
-        out = []
-        for q in v:
-            if not isinstance(q, Q) or q.dim not in (dim, NUM):
-                raise EvalError("E0109", f"`{what}` of `Place` must be three "
-                                f"{'lengths' if dim is LEN else 'angles'}, got {_a(type_name(q))}",
-                                span, hint=f"write `{eg}`")
-            c = q.const()
-            if c is None:
-                raise EvalError("E0109", f"`{what}` of `Place` must be known before solving",
-                                span, hint="use numbers and params: a placement is not solved")
-            scale = 1.0 if q.dim == dim else ((self.file.unit_scale if self.file else 1.0) if dim is LEN
-                                              else angle_scale(q, DEG))
-            v = float(c) * scale
-            if dim is LEN and not abs(v) <= MAX_EXTENT:
-                raise EvalError("E0305", f"`position` of `Place` is {v:g} mm, beyond the model "
-                                f"extent of {MAX_EXTENT:g} mm", span,
-                                hint="place parts within 1 km of the origin")
-            out.append(v)
-        return tuple(out)
 
     def _primitive(self, kind, conv, node, spans):
         s = self.struct

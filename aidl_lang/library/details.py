@@ -154,7 +154,11 @@ DETAILS: dict[str, str] = {
              "part on the flat sheet (`RightOf(lid, tray, gap=10)`, `Above`) moves its frame, "
              "and Place starts from the frame, so the sheet's layout does not move the part "
              "in 3D; a shape drawn about (0, 0) in the part lands about `position`. A part "
-             "with no Place stands in 3D where it lies on the sheet.",
+             "with no Place stands in 3D where it lies on the sheet. With face= and up= the "
+             "part's top face (z = thickness) looks towards face and its drawing's +y towards "
+             "up; its +x then goes to up x face, so a part facing \"front\" with up=\"up\" "
+             "reads left to right from the front; `position` is its bottom face's (0, 0), the "
+             "top face `thickness` from it towards face.",
     "Hull": "`.center` is the center of the hull's bounding box (as `.bb.center`), a point "
             "that follows the shapes: `Circle(center=grip.center, radius=3)` centers a hole on "
             "it. The hull of circles is their outer tangent lines and arcs: a larger circle "

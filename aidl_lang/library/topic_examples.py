@@ -198,8 +198,9 @@ EXAMPLES: dict[str, str] = {
                  "length=120 mm, depth=80 mm, height=50 mm, thickness=3 mm)\n}\n",
     "Place": "thickness 3 mm\n\nassembly kit {\n    solid base { r = Rectangle(center=(0, 0), "
              "width=60, height=40) }\n    solid wall { r = Rectangle(center=(0, 15), width=60, "
-             "height=30) }\n    # stood up on the base's back edge: (x, y, z) -> (x, -z, y)\n"
-             "    Place(wall, rotation=(90 deg, 0, 0), position=(0, 20, 3))\n}\n",
+             "height=30) }\n    # stood up on the base's back edge, its top face (engraving, "
+             "countersinks) to the front\n    Place(wall, position=(0, 20, 3), face=\"front\", "
+             "up=\"up\")\n    # the same: rotation=(90 deg, 0, 0)\n}\n",
     "Bend": "thickness 3 mm\n\nassembly kit {\n    solid base { r = Rectangle(center=(0, 0), "
             "width=60, height=40) }\n    solid wall { r = Rectangle(center=(10, 60), width=80, "
             "height=30) }\n    # stood on the base's front edge, its top face inward\n"

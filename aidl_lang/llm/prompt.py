@@ -120,8 +120,11 @@ area); without `font=` Text is engraved strokes, in ASCII only (other letters: `
 Each child of an `assembly` is a separate part (written inside it, or `part = TEMPLATE()`; `part = NAME` of a
 solid outside it makes no part, E0202), drawn where the solver puts it (overlapping parts: W0511 unless
 `AllowOverlap(a, b)`; `aidl render --layout sheet` nests them for cutting).
-- Place(part, position=(x, y, z), rotation=(rx, ry, rz)) in its assembly places a part in 3D
-(numbers known before solving) for `--assembled`; W0517/W0518: parts collide, or touch nothing.
+- Place(part, position=(x, y, z), face="front", up="up") in its assembly places a part in 3D
+(numbers known before solving) for `--assembled`: face= where its top face (engraving,
+countersinks) looks ("front" is -y, "back", "left", "right", "up", "down", or (0, -1, 1)), up=
+where its drawing's +y goes, position= its bottom face's (0, 0) (or rotation=(rx, ry, rz));
+W0517/W0518: parts collide, or touch nothing.
 - Bend(part, at=x, angle=90 deg, radius=r) bends a placed part there (a living hinge).
 Screw heads: `Countersink(holes, diameter=9 mm)` on the holes (a pattern's copies follow their original), never an engraved ring.
 A warning on a design exactly as requested is accepted in the program, never by changing a

@@ -437,7 +437,8 @@ def describe(output: Output, deadline=None) -> dict:
     ``area`` mm^2, ``outline`` (its outer loops' kinds, :func:`loop_shape`), ``openings``
     (each inner loop's kind, centre and size), ``engravings``, ``symmetry``
     (:func:`symmetries`), ``thickness`` (mm) and ``thickness_set``, ``kerf`` (mm or None),
-    ``notches`` (:func:`notches`), ``sinks`` (when it has any: its countersinks and
+    ``notches`` (:func:`notches`), ``assembled`` (when the program places parts in 3D:
+    :func:`_assembled`), ``sinks`` (when it has any: its countersinks and
     counterbores, :func:`.inventory.sinks_of`), ``through_cuts`` (each cut along a curve of a ``cut``
     structure: ``{"name", "kind", "from", "to", "length"}``, mm), ``shape`` (its number in
     the parts list), ``same_shape`` (how many parts have that shape, itself included) and
@@ -477,6 +478,8 @@ def _describe(output: Output, rows: list[dict], deadline) -> dict:
     strokes_of: dict = {}
     for st in output.cuts:
         strokes_of.setdefault(st.part, []).append(st)
+    placement = (getattr(output.drawing, "placement", None) or {}) \
+        if output.drawing is not None else {}
     first: dict = {}          # shape number -> the first part of it described
     plain: dict = {}          # (shape, material) -> the first described with nothing of its own
     for p, row in zip(output.parts, rows):
@@ -495,7 +498,8 @@ def _describe(output: Output, rows: list[dict], deadline) -> dict:
         through = _through(strokes_of.get(p.name, ()))
         cut_in = notches(output, p, cuts_within)
         sunk = [_sink(sk) for sk in row.get("sinks", ())]
-        own = bool(engraved or through or cut_in or sunk)
+        placed = _assembled(placement.get(p.name), p, x0, y0, x1, y1)
+        own = bool(engraved or through or cut_in or sunk or placed)
         lead = plain.get((row["shape"], material))
         if lead is not None and not own:
             lead["copies"].append({"name": p.name, "box": box})
@@ -513,6 +517,8 @@ def _describe(output: Output, rows: list[dict], deadline) -> dict:
                "shape": row["shape"], "same_shape": row["copies"], "copies": []}
         if sunk:
             doc["sinks"] = sunk
+        if placed:
+            doc["assembled"] = placed
         if row["shape"] in first:
             doc["copy_of"] = first[row["shape"]]
         else:
@@ -522,6 +528,32 @@ def _describe(output: Output, rows: list[dict], deadline) -> dict:
         parts.append(doc)
     return {"units": "mm", "parts": parts, "engravings": texts_of.get("", []),
             "count": {"parts": len(rows), "shapes": len({r["shape"] for r in rows})}}
+
+
+_AXES = {(1, 0, 0): "right (+x)", (-1, 0, 0): "left (-x)", (0, 1, 0): "back (+y)",
+         (0, -1, 0): "front (-y)", (0, 0, 1): "up (+z)", (0, 0, -1): "down (-z)"}
+
+
+def _direction(v) -> str:
+    """A unit vector in words: an axis by its name (``front (-y)``), else its three numbers."""
+    r = tuple(_r(c) for c in v)
+    return _AXES.get(tuple(int(c) for c in r) if all(c in (-1, 0, 1) for c in r) else None,
+                     f"({', '.join(_n(c) for c in r)})")
+
+
+def _assembled(M, p: PartOutline, x0, y0, x1, y1) -> dict | None:
+    """Where a part stands in the assembled product (``Place``; None for a program that places
+    nothing): ``top_face`` (where its top face looks, the face its engraving and countersinks
+    are on), ``up`` (where its drawing's +y goes) and ``box`` [x0, y0, z0, x1, y1, z1] (mm, the
+    corners of its flat box through its thickness, placed: exact for quarter turns)."""
+    if M is None:
+        return None
+    t = p.thickness if p.thickness is not None else DEFAULT_THICKNESS
+    corners = np.array([[x, y, z, 1.0] for x in (x0, x1) for y in (y0, y1) for z in (0.0, t)])
+    w = (np.asarray(M, dtype=float) @ corners.T).T[:, :3]
+    lo, hi = w.min(axis=0), w.max(axis=0)
+    return {"top_face": _direction(M[:3, 2]), "up": _direction(M[:3, 1]),
+            "box": [_r(c) for c in (*lo, *hi)]}
 
 
 def _sink(d: dict) -> dict:
@@ -636,6 +668,12 @@ def describe_text(doc: dict) -> str:
                        f"{_at(c['center'])}")
         for e in p["engravings"]:
             out.append("  engraving: " + _engraving(e))
+        if p.get("assembled"):
+            a = p["assembled"]
+            b = a["box"]
+            out.append(f"  assembled: top face (engraving, countersinks) looks {a['top_face']}, "
+                       f"drawing's up goes {a['up']}; box x {_n(b[0])}..{_n(b[3])}, y "
+                       f"{_n(b[1])}..{_n(b[4])}, z {_n(b[2])}..{_n(b[5])} mm")
         if p.get("copy_of"):
             out.append(f"  the same shape as `{p['copy_of']}` (described again: engravings, "
                        "cuts or material of its own)")

@@ -1,7 +1,8 @@
 """Where the parts go in the assembled product: the matrices of ``Place``.
 
 In: a part's structure and the solved values ``x`` (its frame offsets), its ancestors'
-``Place`` (a position in mm and rotations about x, y, z in radians, fixed axes).  Out: the
+``Place`` (a position in mm and rotations about x, y, z in radians, fixed axes, or the 3x3
+matrix of ``face=``/``up=``).  Out: the
 4x4 matrix from the flat sheet (x, y in mm, z up through the thickness) to the assembled
 product (:func:`placement_matrix`), read by the booleans into ``Drawing.placement`` for the
 3D writers and the fit check (:mod:`aidl_lang.output.fabrication.assembly`).
@@ -43,7 +44,9 @@ def placement_matrix(s: Structure, x) -> np.ndarray:
         step = np.eye(4)
         pl = getattr(a, "placement", None)
         if pl is not None:
-            step[:3, :3] = rotation_matrix(*pl[1])
+            rot = pl[1]                        # angles, or face=/up='s 3x3 matrix
+            step[:3, :3] = np.array(rot, dtype=float) if isinstance(rot[0], tuple) \
+                else rotation_matrix(*rot)
             step[:3, 3] = pl[0]
         else:
             step[0, 3], step[1, 3] = x[a.fx], x[a.fy]

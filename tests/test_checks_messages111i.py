@@ -1,0 +1,119 @@
+"""Issue 111's round thirteen: what models reach for in the tree of the seventeenth session.
+
+`Place` by where a part's faces look (`face=`, `up=`): round twelve's runs turned an engraved,
+countersunk face to the wall five times with `rotation=` guesses (runs bo 02, bp 05, by 01 and
+03, ca 01), and each report asked for `Place(back, face="+y", up="+z")` or "local x to world
+y, top face to -y"."""
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+import pytest
+
+import aidl_lang
+from aidl_lang.interpreter.placing import facing_matrix
+from aidl_lang.output.part.build.placement import rotation_matrix
+
+
+def _errors(r):
+    return [d for d in r.diagnostics if d.code.startswith("E")]
+
+
+def _wall(place: str) -> str:
+    return f"""thickness 3 mm
+assembly kit {{
+    solid base {{ r = Rectangle(center=(0, 0), width=60, height=40) }}
+    solid wall {{ r = Rectangle(center=(0, 15), width=60, height=30) }}
+    {place}
+}}
+"""
+
+
+def _matrix(place: str) -> np.ndarray:
+    r = aidl_lang.compile(source=_wall(place))
+    assert r.ok and not _errors(r), [d.message for d in r.diagnostics]
+    d = r.output.drawing
+    return d.placement[next(n for n in d.placement if n.endswith("wall"))]
+
+
+def test_face_and_up_are_the_rotation_they_name_for_every_quarter_turn():
+    """Each of the 24 quarter-turn rotations written as `rotation=(rx, ry, rz)` is, to the
+    last bit, the `facing_matrix` of where it sends the top face (local +z) and the drawing's
+    up (local +y): the two forms are one placement."""
+    seen = set()
+    for rx, ry, rz in itertools.product(range(4), repeat=3):
+        R = rotation_matrix(rx * math.pi / 2, ry * math.pi / 2, rz * math.pi / 2)
+        F = np.array(facing_matrix(tuple(R[:, 2]), tuple(R[:, 1])))
+        assert np.array_equal(F, R), (rx, ry, rz)
+        seen.add(F.tobytes())
+    assert len(seen) == 24
+
+
+@pytest.mark.parametrize("face,up,rotation", [
+    ('"front"', '"up"', "(90 deg, 0, 0)"),
+    ('"-y"', '"+z"', "(90 deg, 0, 0)"),
+    ('"back"', '"up"', "(90 deg, 0, 180 deg)"),
+    ('"right"', '"up"', "(90 deg, 0, 90 deg)"),
+    ('"down"', '"back"', "(0, 180 deg, 0)"),
+    ('"left"', '"back"', "(0, -90 deg, 0)"),
+])
+def test_place_by_face_is_place_by_its_rotation(face, up, rotation):
+    """A part placed by `face=` and `up=` lands exactly where `rotation=` of the same turn puts
+    it (the drill holster's back plate: `face="front"` is `(90 deg, 0, 0)`, the wall-facing
+    `(90 deg, 0, 180 deg)` is `face="back"`)."""
+    a = _matrix(f"Place(wall, position=(0, 20, 3), face={face}, up={up})")
+    b = _matrix(f"Place(wall, position=(0, 20, 3), rotation={rotation})")
+    assert np.array_equal(a, b)
+
+
+def test_the_top_face_looks_where_face_says_and_reads_left_to_right():
+    """The top face's centre (local z = thickness) lands `thickness` from `position` towards
+    `face`, the drawing's +y goes up and its +x to the right as seen from the face: a sloping
+    face given by three numbers too."""
+    M = _matrix('Place(wall, position=(0, 20, 3), face="front", up="up")')
+    top = M @ np.array([0.0, 0.0, 3.0, 1.0])
+    assert np.allclose(top[:3], (0.0, 17.0, 3.0), atol=1e-12)
+    assert np.allclose(M[:3, 0], (1, 0, 0)) and np.allclose(M[:3, 1], (0, 0, 1))
+    B = _matrix('Place(wall, position=(0, 20, 3), face="back")')      # up defaults to +z
+    assert np.allclose(B[:3, 0], (-1, 0, 0)) and np.allclose(B[:3, 2], (0, 1, 0))
+    S = _matrix("Place(wall, position=(0, 20, 3), face=(0, -1, 1), up=(0, 0, 1))")
+    h = math.sqrt(0.5)
+    assert np.allclose(S[:3, 2], (0, -h, h), atol=1e-15)
+    assert np.allclose(S[:3, 1], (0, h, h), atol=1e-15)          # up taken square to the face
+    assert np.allclose(S[:3, 0], (1, 0, 0), atol=1e-15)
+    L = _matrix('Place(wall, position=(0, 0, 0), face="up")')         # up defaults to +y
+    assert np.array_equal(L[:3, :3], np.eye(3))
+    N = _matrix('Place(wall, position=(0, 20, 3), normal="front", up="up")')   # a synonym
+    assert np.array_equal(N, M)
+
+
+@pytest.mark.parametrize("place,code,says", [
+    ('Place(wall, face="sideways")', "E0108", '`face="sideways"` of `Place` is no direction'),
+    ('Place(wall, face="front", up="back")', "E0108", "lies along `face=`"),
+    ('Place(wall, face="front", rotation=(90 deg, 0, 0))', "E0108", "turned one way"),
+    ('Place(wall, up="up")', "E0106", "needs `face=`"),
+    ("Place(wall, face=(0, 0, 0))", "E0108", "its three numbers are 0"),
+    ("Place(wall, face=(0, 1))", "E0108", "must be a direction"),
+])
+def test_a_face_that_is_no_direction_is_a_located_error(place, code, says):
+    """What `face=` and `up=` refuse, each said at its argument with the form to write."""
+    r = aidl_lang.compile(source=_wall(place))
+    errs = _errors(r)
+    assert [d.code for d in errs] == [code], [d.message for d in errs]
+    assert says in errs[0].message and "face=" in errs[0].hint
+    assert errs[0].span.line == 5
+
+
+def test_describe_says_where_each_placed_part_faces():
+    """`aidl check --describe` (and the MCP `describe`) says where each placed part's top face
+    looks and its box assembled: the engraved wall facing front, 3 mm thick, standing on the
+    base (a model without eyes reads that the engraving faces the room)."""
+    r = aidl_lang.compile(source=_wall('Place(wall, position=(0, 20, 3), face="front")'))
+    text = r.describe()
+    assert ("assembled: top face (engraving, countersinks) looks front (-y), drawing's up goes "
+            "up (+z); box x -30..30, y 17..20, z 3..33 mm") in text
+    assert "looks up (+z), drawing's up goes back (+y); box x -30..30, y -20..20, z 0..3" in text
+    plain = aidl_lang.compile(source=_wall(""))
+    assert "assembled" not in plain.describe()
