@@ -117,3 +117,39 @@ def test_describe_says_where_each_placed_part_faces():
     assert "looks up (+z), drawing's up goes back (+y); box x -30..30, y -20..20, z 0..3" in text
     plain = aidl_lang.compile(source=_wall(""))
     assert "assembled" not in plain.describe()
+
+
+RUNS = __import__("pathlib").Path(__file__).resolve().parent.parent / "data" / "model_runs"
+
+
+def test_tab_and_slot_leaves_the_edge_beyond_its_length_uncut():
+    """Run bz's flip stop (and run cg's tool rack): the tab joint's end gaps ran 1 mm along the
+    edge past `length`, a 1 x 6 mm notch in the cheek's lip that its docs say "stays uncut".
+    The gaps now end at `length` (their run past the cut goes out through the edge only): the
+    cheek's notches are 5, 10 and 5 mm wide, its area 6 mm^2 more, and the lip keeps its edge."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111bz/run/01_flip_stop.first_valid.aidl"))
+    doc = r.description
+    left = next(p for p in doc["parts"] if p["name"] == "flip_stop.left")
+    assert [round(n["width"], 9) for n in left["notches"]] == [5, 10, 5]
+    assert [n["center"][0] for n in left["notches"]] == [77.5, 95, 112.5]
+    assert abs(left["area"] - 2906.82) < 0.01
+
+
+@pytest.mark.parametrize("deg", [0, 30, 45, 90, 137, 180, 251])
+def test_tab_and_slot_on_a_whole_edge_is_still_a_clean_cut_at_any_turn(deg):
+    """Without the run along the edge, a joint as long as its panel's edge ends where the
+    panel does: the outline is still the 12 lines of a panel with three gaps, at any turn (no
+    sliver where the end gap meets the panel's side)."""
+    src = f"""import "std/joints.aidl"
+thickness 3 mm
+solid panel {{
+    r = Rectangle(center=(0, 0), width=60, height=40, rotation={deg} deg)
+    j = tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, screw=0,
+                     rotation={deg} deg, cx=-20 * sin({deg} deg), cy=20 * cos({deg} deg))
+}}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok and not r.diagnostics
+    (part,) = r.description["parts"]
+    assert [o["kind"] for o in part["outline"]] == ["polygon"] and part["outline"][0]["n"] == 12
+    assert abs(part["area"] - (2400 - 3 * (10 + 20 + 10))) < 1e-6
