@@ -153,3 +153,45 @@ solid panel {{
     (part,) = r.description["parts"]
     assert [o["kind"] for o in part["outline"]] == ["polygon"] and part["outline"][0]["n"] == 12
     assert abs(part["area"] - (2400 - 3 * (10 + 20 + 10))) < 1e-6
+
+
+def test_W0511_says_placed_parts_laid_on_each_other_on_the_flat_drawing():
+    """Run ci's cat cot (and run ch's footrest): a leg drawn over the top board on the flat
+    drawing was unsaid, W0511 taking an overlap past a quarter of the smaller part for a
+    picture of the parts stacked. Each part is placed in 3D by its own `Place`, so the flat
+    drawing is the parts to cut: W0511 now, once, and the relation its hint writes lays the leg
+    beside the top without moving it in 3D."""
+    path = RUNS / "issue111ci/run/04_cat_cot.first_valid.aidl"
+    r = aidl_lang.compile(path=str(path))
+    (w,) = [d for d in r.diagnostics if d.code == "W0511"]
+    assert "parts `cot.top` and `cot.leg_b` lie on each other on the flat drawing" in w.message
+    assert "RightOf(leg_b, top, gap=5 mm)" in w.hint
+    src = path.read_text()
+    fixed = src.replace("    leg_b = leg(from_top=false)\n",
+                        "    leg_b = leg(from_top=false)\n    RightOf(leg_b, top, gap=5 mm)\n")
+    assert fixed != src
+    f = aidl_lang.compile(source=fixed, path=str(path))
+    assert f.ok and "W0511" not in [d.code for d in f.diagnostics]
+    a, b = r.output.drawing.placement, f.output.drawing.placement
+    assert a.keys() == b.keys()
+    for name in a:                                   # every part where it was, assembled
+        sheet_a = {p.name: p for p in r.output.parts}[name]
+        sheet_b = {p.name: p for p in f.output.parts}[name]
+        pa = np.array([[*q, 0.0, 1.0] for q in _corners(sheet_a)])
+        pb = np.array([[*q, 0.0, 1.0] for q in _corners(sheet_b)])
+        assert np.allclose(pa @ a[name].T, pb @ b[name].T, atol=1e-6), name
+
+
+def _corners(part):
+    from aidl_lang.output.fabrication.layout import part_box
+    x0, y0, x1, y1 = part_box(part)
+    return [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+
+
+def test_W0511_names_every_placed_part_of_a_stacked_assembly_once():
+    """Issue 84's bird house: seven parts drawn about one origin and each placed gave one W0511
+    for the assembly naming all seven (20 pairs), not twenty."""
+    r = aidl_lang.compile(path=str(RUNS / "issue84b/run/08_bird_house.aidl"))
+    (w,) = [d for d in r.diagnostics if d.code == "W0511"]
+    assert w.message.startswith("7 parts, `house.floor`, `house.front`, `house.back`")
+    assert "(20 pairs)" in w.message

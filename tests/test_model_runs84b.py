@@ -72,10 +72,16 @@ FINALS = sorted(p for p in RUN.glob("*.aidl") if not p.name.endswith(".first_val
 
 @pytest.mark.parametrize("path", FINALS, ids=[p.name for p in FINALS])
 def test_every_final_program_of_the_run_compiles_with_no_warning(path):
+    """... but the bird house's: its seven parts, each placed in 3D, are drawn about one origin,
+    so its flat drawing (what `aidl render` cuts without `--layout sheet`) cuts them through
+    each other, one W0511 since issue 111's round thirteen (run ci's cat cot)."""
     from aidl_lang.pipeline import compile_source
     c = compile_source(path.read_text(), str(path))
-    assert c.ok and not [(d.code, d.message) for d in c.sink.items
-                         if d.severity in ("warning", "error")]
+    said = [(d.code, d.message) for d in c.sink.items if d.severity in ("warning", "error")]
+    if path.name == "08_bird_house.aidl":
+        assert [code for code, _ in said] == ["W0511"] and "on the flat drawing" in said[0][1]
+        said = []
+    assert c.ok and not said
 
 
 def test_the_run_holds_sixteen_final_programs_each_with_its_first_valid_one():

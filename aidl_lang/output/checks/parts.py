@@ -65,6 +65,7 @@ def _check_interpenetration(d: Drawing, roots, sink: DiagnosticSink, deadline=No
     if len(parts) < 2:
         return
     boxes = np.array([shp.bounds() for _, shp in parts], dtype=float)
+    stacked: dict = {}          # id(home) -> placed parts laid on each other: said once each
     for i, j in sorted(map(tuple, box_pairs(boxes))):
         (a, sa), (b, sb) = parts[i], parts[j]
         if a.is_within(b) or b.is_within(a):
@@ -76,13 +77,15 @@ def _check_interpenetration(d: Drawing, roots, sink: DiagnosticSink, deadline=No
         area = _area(common)
         if area <= MIN_AREA or _allowed(a, b):
             continue
-        if area > STACKED * min(_area(sa), _area(sb)):
-            continue              # laid one on the other (a gear on its plate, clock hands)
-        depth = _depth(common, boxes[i], boxes[j])
         home = a.parent
         while home is not None and not b.is_within(home):
             home = home.parent
         ra, rb = (x.path[len(home.path) + 1:] if home is not None else x.name for x in (a, b))
+        if area > STACKED * min(_area(sa), _area(sb)):
+            if _placed_apart(a, b, home):
+                stacked.setdefault(id(home), []).append((a, b, ra, rb, area))
+            continue              # laid one on the other (a gear on its plate, clock hands)
+        depth = _depth(common, boxes[i], boxes[j])
         labels = [Label(a.span, f"`{a.path}` is here", primary=False)] if a.span else []
         # the gears' rule only where a gear is named (issue 84: two O pieces of a tic-tac-toe
         # set were told about module * (teeth1 + teeth2) / 2)
@@ -96,6 +99,50 @@ def _check_interpenetration(d: Drawing, roots, sink: DiagnosticSink, deadline=No
                           f"{gears}or shrink one; if the overlap is meant (a picture of parts stacked), write "
                           f"`AllowOverlap({ra}, {rb})` in "
                           + (f"`{home.path}`" if home is not None else "their assembly"))
+    for pairs in stacked.values():
+        _stacked_placed(sink, pairs)
+
+
+def _placed_apart(a, b, home) -> bool:
+    """Whether parts ``a`` and ``b`` each have a 3D placement of their own (a ``Place`` of the
+    part or of an assembly holding it, below ``home``, the structure holding both): then the
+    flat drawing is not the assembled product but the parts to cut, and parts laid on each
+    other there are cut through each other (issue 111, runs ci and ch: a cat cot's leg drawn on
+    its top, unsaid because W0511 took it for a picture of the parts stacked)."""
+    def own(x) -> bool:
+        while x is not None and x is not home:
+            if getattr(x, "placement", None) is not None:
+                return True
+            x = x.parent
+        return False
+    return own(a) and own(b)
+
+
+def _stacked_placed(sink: DiagnosticSink, pairs: list) -> None:
+    """One W0511 for the parts of one assembly laid on each other on the flat drawing that
+    are each placed in 3D (:func:`_placed_apart`; ``pairs``: ``(a, b, a's name there, b's,
+    shared mm^2)``, in the check's order): the hint lays the first pair's second part beside
+    its first, which moves it on the sheet only (``Place`` starts from the part's frame)."""
+    a, b, ra, rb, area = pairs[0]
+    names: list = []
+    for x, y, *_ in pairs:
+        for s in (x, y):
+            if s not in names:
+                names.append(s)
+    shown = [f"`{s.path}`" for s in names]
+    who = (f"parts {shown[0]} and {shown[1]} lie on each other" if len(pairs) == 1 else
+           f"{len(names)} parts, {', '.join(shown[:-1])} and {shown[-1]}, lie on each other "
+           f"({len(pairs)} pairs)")
+    most = max(p[4] for p in pairs)
+    labels = [Label(s.span, f"`{s.path}` is here", primary=False)
+              for s in names if s is not b and s.span]
+    sink.warning("W0511", f"{who} on the flat drawing (sharing up to {most:.2f} mm^2): each is "
+                 "placed in 3D by its own `Place`, so the flat drawing is the parts to cut, and "
+                 "these would be cut through each other", b.span or a.span, labels=labels,
+                 hint=f"lay them side by side on the sheet, e.g. `RightOf({rb}, {ra}, gap=5 mm)` "
+                      "in their assembly (a relation moves a placed part on the sheet only, "
+                      "not in 3D), or cut with `aidl render --layout sheet`; parts meant to "
+                      f"share material: `AllowOverlap({ra}, {rb})`")
 
 
 def _is_gear(s) -> bool:
