@@ -111,6 +111,9 @@ RECT_MEMBERS = {"top_left": "point", "top_right": "point", "bottom_left": "point
                 "bb": "bbox"}
 POLY_MEMBERS = {"points": "points", "edges": "lines", "center": "point", "centroid": "point",
                 "bb": "bbox"}
+# a RegularPolygon's sizes as its forms take them (run ck: `hex.side` was E0102)
+REGPOLY_MEMBERS = POLY_MEMBERS | {"radius": "length", "diameter": "length", "side": "length",
+                                  "across_flats": "length", "apothem": "length"}
 TRI_MEMBERS = {"a": "point", "b": "point", "c": "point", "points": "points",
                "ab": "line", "bc": "line", "ca": "line", "edges": "lines", "center": "point",
                "centroid": "point", "incenter": "point", "inradius": "length", "bb": "bbox",
@@ -276,7 +279,7 @@ _DEFS = {
                           A("rotation", "angle", 0.0)],
                          doc="A rigid regular polygon; radius (center to vertex), across_flats "
                              "(between opposite sides) or side (one edge's length), sides and "
-                             "rotation are held; first vertex at +x.", members=POLY_MEMBERS),
+                             "rotation are held; first vertex at +x.", members=REGPOLY_MEMBERS),
     "Slot": _p([A("start", "point"), A("end", "point"), A("radius", "length")],
                [A("start", "point"), A("end", "point"), A("width", "length")],
                [A("center", "point"), A("length", "length"), A("width", "length"),

@@ -21,6 +21,10 @@ def _errors(r):
     return [d for d in r.diagnostics if d.code.startswith("E")]
 
 
+def _codes(r):
+    return sorted(d.code for d in r.diagnostics)
+
+
 def _wall(place: str) -> str:
     return f"""thickness 3 mm
 assembly kit {{
@@ -195,3 +199,42 @@ def test_W0511_names_every_placed_part_of_a_stacked_assembly_once():
     (w,) = [d for d in r.diagnostics if d.code == "W0511"]
     assert w.message.startswith("7 parts, `house.floor`, `house.front`, `house.back`")
     assert "(20 pairs)" in w.message
+
+
+def test_a_fraction_before_a_unit_is_said_as_read():
+    """Run ck's hexagon templates: `3/4 in`, `2 * 3/8 in` and `1/8 in` were E0109 "cannot
+    combine a length with a length^-1", the hint naming neither cause nor fix. The hint now
+    says how it reads and what to write, in a comparison and in an argument (a fraction in
+    the assert's message is not taken for it)."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111ck/drafts/07_epp_templates.attempt1.aidl"))
+    hints = [d.hint for d in r.diagnostics if d.code == "E0109"]
+    assert _codes(r) == ["E0109"] * 3                  # `side` is a member now (below)
+    assert hints[1:] == ["`3/8 in` reads `3 / (8 in)`: a unit belongs to the number before it; "
+                     "write `0.375 in` or `3 in / 8`",
+                     "`1/8 in` reads `1 / (8 in)`: a unit belongs to the number before it; "
+                     "write `0.125 in` or `1 in / 8`"]
+    a = aidl_lang.compile(source="units in\nsolid p { c = Circle(center=(0, 0), diameter=3/8 in) }\n")
+    (e,) = _errors(a)
+    assert e.code == "E0109" and "write `0.375 in` or `3 in / 8`" in e.hint
+    ok = aidl_lang.compile(source="units in\nsolid p { c = Circle(center=(0, 0), diameter=3 in / 8) }\n")
+    assert ok.ok and abs(ok.description["parts"][0]["size"][0] - 9.525) < 1e-9
+
+
+def test_a_regular_polygon_has_the_sizes_its_forms_take():
+    """Run ck: `hex.side` was E0102 "a RegularPolygon has no member `side`" (its hint listed
+    `radius`, which the prompt's member table left out). Each form's size is a member of every
+    RegularPolygon, exact: side, across_flats, apothem, radius, diameter."""
+    src = """solid p {
+    h = RegularPolygon(center=(0, 0), side=20, sides=6)
+    q = RegularPolygon(center=(40, 0), across_flats=30, sides=8)
+    assert abs(h.side - 20 mm) < 1e-12 mm and abs(h.radius - 20 mm) < 1e-12 mm
+    assert abs(h.across_flats - 20 mm * sqrt(3)) < 1e-12 mm and abs(h.diameter - 40 mm) < 1e-12 mm
+    assert abs(q.across_flats - 30 mm) < 1e-12 mm and abs(q.apothem - 15 mm) < 1e-12 mm
+    assert abs(q.side - 30 mm * tan(22.5 deg)) < 1e-12 mm
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok and not _errors(r)
+    from aidl_lang.llm.prompt import system_prompt
+    assert "- RegularPolygon | points: center centroid; numbers: radius diameter side " \
+           "across_flats apothem" in system_prompt()

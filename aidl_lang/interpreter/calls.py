@@ -24,7 +24,8 @@ from ..registry import (ENTRIES, FUNCTIONS, POINT_ALIGNS, accepted_args, bind_va
 from .call_hints import _center_hint, list_arg_hint, shadowed
 from .cut_into import cut_into
 from .functions import call_function
-from .common import (_defer_boxes, said_shrunk, DEG, _a, _fmt_num, show, ANGLE_TWICE)
+from .common import (_defer_boxes, said_shrunk, DEG, _a, _fmt_num, _src, fraction_hint, show,
+                     ANGLE_TWICE)
 
 
 _DIMS = {"length": LEN, "angle": ANG, "number": NUM}
@@ -505,6 +506,7 @@ class Calls:
                 return Q(lift(e) * k, want, v.owners)
             raise EvalError("E0109", f"argument `{aname}` of `{fname}` must be {_a(typ)}, got {_a(dim_name(v.dim))}", span,
                             hint=ANGLE_TWICE if typ == "angle" and v.dim == (0, 2) else
+                            fraction_hint(_src(self.sink, span)) or
                             f"write it with {_a(typ)} unit" + (" such as `mm`" if typ == "length" else
                                                                " such as `deg`" if typ == "angle" else ""))
         if typ == "point":

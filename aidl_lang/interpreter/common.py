@@ -3,6 +3,7 @@ names whose definition failed, and small helpers (see :mod:`aidl_lang.interp`)."
 from __future__ import annotations
 
 import math
+import re
 
 from .. import ast as A
 from ..base.diagnostics import DiagnosticSink, EvalError, Span
@@ -14,6 +15,19 @@ DEG = math.pi / 180.0
 # E0109's hint for an angle^2 (`acos(16 / 20) * 1 rad`: issue 111's runs i and m)
 ANGLE_TWICE = ("`atan2`, `asin`, `acos` and `atan` give an angle already: drop the `* 1 rad` "
                "(or `deg`) after it")
+# a fraction written before a unit, `3/8 in`: the unit belongs to the 8 (E0109's hint)
+FRACTION = re.compile(r"\b(\d+(?:\.\d+)?)\s*/\s*(\d+(?:\.\d+)?)\s*(in|inch|mm|cm|m|ft|deg)\b")
+
+
+def fraction_hint(text: str | None) -> str | None:
+    """E0109's hint for a fraction written before a unit in ``text`` (`3/8 in` is 3 / (8 in),
+    a length^-1: issue 111, run ck), else None."""
+    frac = FRACTION.search(re.sub(r'"[^"]*"', '""', text or ""))     # not in a message
+    if frac is None:
+        return None
+    n, m, unit = frac.groups()
+    return (f"`{frac.group(0)}` reads `{n} / ({m} {unit})`: a unit belongs to the number "
+            f"before it; write `{float(n) / float(m):g} {unit}` or `{n} {unit} / {m}`")
 
 
 class _Silent(Exception):

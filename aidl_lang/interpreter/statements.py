@@ -21,7 +21,7 @@ from .arguments import check_kinds, kind_error, precheck_asserts
 from .asserts import Asserts
 from .constants import early_constants, late_constant
 from .order import changes_read_below
-from .common import (ANGLE_TWICE, DEG, POISON, FileCtx, Scope, _STMT_ERRORS, _Silent, _a, _common_ancestor,
+from .common import (ANGLE_TWICE, DEG, POISON, fraction_hint, FileCtx, Scope, _STMT_ERRORS, _Silent, _a, _common_ancestor,
                      _definition_lines, _fmt_num, _src, _is_geometry_stmt, _is_plain_const,
                      file_functions)
 
@@ -929,6 +929,8 @@ class Statements(Asserts):
         except UnitError as ex:
             msg, hint = str(ex), "both sides must have the same unit kind (length, angle or number)"
             left, right = (getattr(node, "left", None), getattr(node, "right", None))
+            frac = fraction_hint(_src(self.sink, span))    # `3/8 in` is 3 / (8 in)
+            hint = frac or hint
             if left is not None and right is not None:
                 lt, rt = _src(self.sink, left.span), _src(self.sink, right.span)
                 if lt and rt and len(lt) + len(rt) < 160:
@@ -936,7 +938,7 @@ class Statements(Asserts):
                            f"`{lt}` is {_a(dim_name(a.dim))}, `{rt}` is {_a(dim_name(b.dim))}")
                 if (0, 2) in (a.dim, b.dim):    # `acos(x) * 1 rad` (issue 111's run m)
                     hint = ANGLE_TWICE
-                elif "/" in lt + rt:      # a ratio that was meant to be a plain number
+                elif frac is None and "/" in lt + rt:      # a ratio that was meant to be a plain number
                     hint += ("; in `*` and `/` a bare number (`r = 15`, a list `[15, 25]`) "
                              "stays a plain number, so `length / r` is a length, not a ratio: "
                              "write `15 mm` where a length is meant")

@@ -44,6 +44,19 @@ def points_of(g: Geometry) -> list:
     return list(g.points.values())
 
 
+_REGULAR = ("side", "across_flats", "apothem")
+
+
+def _regular_size(g: Geometry, name: str, own) -> Q:
+    """A RegularPolygon's ``side``, ``across_flats`` or ``apothem`` (center to a side's
+    middle), mm, from its radius (center to a vertex) and its number of sides: the sizes its
+    other forms take (issue 111, run ck: `hex.side` was E0102)."""
+    half = math.pi / len(points_of(g))
+    f = {"side": 2 * math.sin(half), "across_flats": 2 * math.cos(half),
+         "apothem": math.cos(half)}[name]
+    return Q(var(g.scalars["radius"].index) * f, LEN, own)
+
+
 def member(g: Geometry, name: str, frame):
     """Value of ``g.name`` seen from structure ``frame``; None if there is no such member."""
     k = g.kind
@@ -130,6 +143,8 @@ def member(g: Geometry, name: str, frame):
             return [GeomRef(e) for e in g.data["edges"]]
     if k == "Ellipse" and name in ("rx", "ry"):
         return Q(var(g.scalars[name].index), LEN, own)
+    if k == "RegularPolygon" and name in _REGULAR and "radius" in g.scalars:
+        return _regular_size(g, name, own)
     if k in ("Polygon", "RegularPolygon", "Triangle", "Star"):
         pts = points_of(g) if k != "Triangle" else [g.points[n] for n in ("a", "b", "c")]
         if name in ("points", "vertices", "corners"):
