@@ -238,3 +238,20 @@ def test_a_regular_polygon_has_the_sizes_its_forms_take():
     from aidl_lang.llm.prompt import system_prompt
     assert "- RegularPolygon | points: center centroid; numbers: radius diameter side " \
            "across_flats apothem" in system_prompt()
+
+
+def test_E0405_of_a_slots_length_says_it_is_end_to_end():
+    """Run ci's shower-curtain hooks: `assert first.shank.length == 34.5 mm` (the request's
+    centre to centre) failed at 39.5 mm, the model's design right and its assert reading the
+    Slot end to end. E0405 now says what a Slot's length is and gives its centre-to-centre
+    length, 34.5 mm: the assert to write (`spine.length`), not the design to change."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111ci/drafts/02_shower_curtain_hooks.attempt1.aidl"))
+    (e,) = _errors(r)
+    assert e.message.endswith("39.5 mm == 34.5 mm is false; `first.shank` is a Slot: its "
+                              "`length` is end to end, its round ends included; centre to "
+                              "centre (`first.shank.spine.length`) it is 34.5 mm")
+    src = (RUNS / "issue111ci/drafts/02_shower_curtain_hooks.attempt1.aidl").read_text()
+    fixed = aidl_lang.compile(source=src.replace("first.shank.length == 34.5 mm",
+                                                 "first.shank.spine.length == 34.5 mm"),
+                              path=str(RUNS / "issue111ci/drafts/x.aidl"))
+    assert fixed.ok and not _errors(fixed)

@@ -354,7 +354,9 @@ after it and the values found, in the file's units, then the value of each name 
 side computes with (`(where ring.bb.width = 124 mm, wall = 3 mm)`); a structure's box that its
 drawings widen is said so, with the material's own size (`` `marker.bb` holds its drawing
 `marker.label`: its material alone spans 25 x 150 mm``: the engraved word is wider than the
-stake); one inside a template of another file (the standard
+stake); a Slot's `length` it reads is said to be end to end, with its centre-to-centre
+length (`first.shank.spine.length`), as a request's "34.5 mm between the ends' centres" is
+the spine; one inside a template of another file (the standard
 library's, an imported one) is reported at the template's call, its own line a note. A
 template's assert written over its arguments (reading only its parameters and values computed
 from them) is checked at the call before the body runs: false, it is one error at the

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from .. import ast as A
 from ..base.diagnostics import EvalError
-from ..geometry.core.values import Q
+from ..geometry.core.values import GeomRef, Q
 from .common import _const, _value
 
 
@@ -111,6 +111,9 @@ class Asserts:
                         continue
                     if isinstance(v, Q):
                         out.append((text, v.expr, v.dim))
+                        spine = _slot_spine(self, n)
+                        if spine is not None:       # run ci: a Slot's length is end to end
+                            out.append((_src(self.sink, n.obj.span), spine, "slot"))
                     elif isinstance(v, list) and v and all(isinstance(i, list) for i in v):
                         # a nested loop's names (run aq: `len(crumbs.c) == 9` for 3 x 3
                         # holes was 3): the rows, not every copy
@@ -126,6 +129,10 @@ class Asserts:
                 continue
             if isinstance(n, A.Compare):    # a side that is a name is said as the side
                 todo += reversed([x for x in n.operands if not _chain(x)])
+                for x in n.operands:
+                    spine = _slot_spine(self, x) if _chain(x) else None
+                    if spine is not None:   # run ci: a Slot's length is end to end
+                        out.append((_src(self.sink, x.obj.span), spine, "slot"))
                 continue
             todo += reversed([c for c in _children(n)])
         return out
@@ -196,6 +203,23 @@ def judge_known(groups: list) -> tuple:
     if not left:
         return False, [], known
     return None, left, []
+
+
+def _slot_spine(interp, n):
+    """The centre-to-centre length (an expression, mm) of the Slot whose ``.length`` chain
+    ``n`` reads, else None (issue 111, run ci: a hook's shank asserted 34.5 mm centre to centre
+    read 39.5 mm, a Slot's length being end to end)."""
+    if not (isinstance(n, A.Member) and n.name == "length"):
+        return None
+    try:
+        g = interp.eval(n.obj)
+    except EvalError:
+        return None
+    if not (isinstance(g, GeomRef) and g.geom.kind == "Slot"):
+        return None
+    spine = interp.eval(A.Member(n.span, A.Member(n.span, n.obj, "spine", n.name_span),
+                                 "length", n.name_span))
+    return spine.expr if isinstance(spine, Q) else None
 
 
 _ASSERT_HINT = ("an `assert` states what must be true of the design; change the values or "

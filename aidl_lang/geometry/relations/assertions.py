@@ -53,7 +53,7 @@ def _structures_read(a: Assertion, owners) -> list:
     for t in _box_terms(a):
         tg = t.target
         out.append(tg if hasattr(tg, "children") else getattr(tg, "owner", None))
-    todo = [e for _, e, dim in a.reads if dim != "said"] + [
+    todo = [e for _, e, dim in a.reads if dim not in ("said", "slot")] + [
         side for grp in a.groups for _, le, re_, _ in grp for side in (le, re_)
         if not isinstance(side, (int, float))]
     while todo and owners is not None:
@@ -154,7 +154,8 @@ def describe(a: Assertion, found: list, alternatives: int = 1, x=None, owners=No
             if not a.text.strip() == text]
     where = f" (where {', '.join(said)})" if said else ""
     return (f"assertion failed: `{a.text}`{why}: {lead}" + "; ".join(parts) + where
-            + _drawn_boxes(a, x) + _text_boxes(a, x) + _star_boxes(a, x) + _moved_part(a, x, owners)
+            + _drawn_boxes(a, x) + _text_boxes(a, x) + _star_boxes(a, x) + _slot_lengths(a, x)
+            + _moved_part(a, x, owners)
             + _placed_note(a, sheet, owners))
 
 
@@ -173,6 +174,28 @@ def _relative(label: str, owner) -> str:
     """``label`` as written from inside ``owner`` (``star.s`` of ``lid.star.s`` in ``lid``)."""
     path = getattr(owner, "path", None)
     return label[len(path) + 1:] if path and label.startswith(path + ".") else label
+
+
+def _slot_lengths(a: Assertion, x) -> str:
+    """What a Slot's ``length``, which the assertion reads, measures (issue 111, run ci: a
+    hook's shank asserted 34.5 mm centre to centre read 39.5 mm): "; `first.shank` is a Slot:
+    its `length` is end to end, its round ends included; centre to centre
+    (`first.shank.spine.length`) it is 34.5 mm"."""
+    out = []
+    for text, e, dim in a.reads:
+        if dim != "slot":
+            continue
+        try:
+            v = float(e) if isinstance(e, (int, float)) else (
+                float(e.const) if isinstance(e, Lin) and not e.terms else
+                _eval(e, x, set()) if x is not None else None)
+        except (ArithmeticError, KeyError, TypeError, ValueError):
+            continue
+        if v is not None and math.isfinite(v):
+            out.append(f"; `{text}` is a Slot: its `length` is end to end, its round ends "
+                       f"included; centre to centre (`{text}.spine.length`) it is "
+                       f"{_show(v, (1, 0), a)}")
+    return "".join(out)
 
 
 def _star_boxes(a: Assertion, x) -> str:
@@ -317,6 +340,8 @@ def _reads(a: Assertion, x) -> list[tuple[str, str]]:
     for text, e, dim in a.reads:
         if dim == "said":                   # said when read (a list of lists' shape)
             out.append((text, e))
+            continue
+        if dim == "slot":                   # :func:`_slot_lengths` says it
             continue
         try:
             if isinstance(e, (int, float)) or (isinstance(e, Lin) and not e.terms):
