@@ -255,3 +255,44 @@ def test_E0405_of_a_slots_length_says_it_is_end_to_end():
                                                  "first.shank.spine.length == 34.5 mm"),
                               path=str(RUNS / "issue111ci/drafts/x.aidl"))
     assert fixed.ok and not _errors(fixed)
+
+
+@pytest.mark.parametrize("run,name,part,other", [
+    ("issue111cn", "07_hydraulic_arm", "arm.boom", "arm.left"),
+    ("issue111bz", "01_flip_stop", "flip_stop.arm", "flip_stop.left"),
+])
+def test_W0518_of_a_part_on_a_pin_through_lined_up_holes_is_a_note(run, name, part, other):
+    """Runs cn, bz (and br, by before them): a boom with 0.6 mm of play each side of the dowel
+    through it and its uprights, an arm hung on an M6 bolt, were W0518 warnings whose hint
+    ("move `arm.boom` 0.6 mm towards `arm.left`") would make them rub. A part with a round hole
+    on one axis, assembled, with a round hole of another part is held by what goes through
+    them: a note that says so."""
+    r = aidl_lang.compile(path=str(RUNS / run / "run" / f"{name}.first_valid.aidl"))
+    w = [d for d in r.diagnostics if d.code == "W0518" and f"`{part}`" in d.message]
+    assert len(w) == 1 and w[0].severity == "note"
+    assert f"lines up with one of `{other}`, so a pin, an axle or a bolt through them holds " \
+           "it, the gap its play" in w[0].message
+
+
+def test_W0518_of_a_part_whose_holes_line_up_with_nothing_is_still_a_warning():
+    """A wall 1 mm above its base, each with a 6 mm hole, the holes 10 mm apart assembled: no
+    pin goes through both, the parts float apart (the warning stays); with the holes on one
+    axis it is a note."""
+    def src(x):
+        return f"""thickness 3 mm
+assembly kit {{
+    solid base {{
+        r = Rectangle(center=(0, 0), width=40, height=40)
+        hole h {{ c = Circle(center=(0, 10), diameter=6) }}
+    }}
+    solid wall {{
+        r = Rectangle(center=(0, 0), width=40, height=20)
+        hole h {{ c = Circle(center=({x}, 0), diameter=6) }}
+    }}
+    Place(wall, position=(0, 10, 4), face="up")
+}}
+"""
+    far = [d for d in aidl_lang.compile(source=src(10)).diagnostics if d.code == "W0518"]
+    near = [d for d in aidl_lang.compile(source=src(0)).diagnostics if d.code == "W0518"]
+    assert [d.severity for d in far] == ["warning"] and "`kit.wall`, is 1 mm away" in far[0].message
+    assert [d.severity for d in near] == ["note"] and "lines up" in near[0].message

@@ -1125,6 +1125,11 @@ parts that one standard-library template places (the gears `gear_train(lift=...)
 above its plate) is the template's design and not reported. A part with no `Place` that lies
 5 mm or more from every other (drawn beside the product on the sheet, never put in it) is a
 note: the parts are cut as drawn either way, and `Place` puts it in the assembled product.
+A placed part 5 mm or more from every other (carried by an axle, hooks, hardware) is a note
+too, and so is one with a round hole whose axis, assembled, runs through a round hole of
+another part (within 0.05 mm; holes at most 26 mm across, one at most three times the other,
+in planes up to 150 mm apart): a pin, an axle or a bolt holds it and its gap is play (a boom
+on a dowel between its uprights, a toy's wheels on their axles).
 
     thickness 3 mm
     assembly kit {

@@ -78,6 +78,7 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
         sp = at(name)
         return sp is not None and in_stdlib(sp.file)
     groups: dict = {}       # (statement, severity) -> [(gap, message, hint)]: a loop's copies once
+    pins = _Pins(d)
     for g in gaps:
         if templates(g.part) and templates(g.nearest):
             continue            # a gap a stdlib template places by design (gear_train's lift=)
@@ -101,6 +102,17 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                     f"the parts are cut as drawn either way; to put `{short}` in the "
                     f"assembled product (3D views, 3MF, the fit check), give it "
                     f"`Place({short}, ...)`")
+        elif (pin := pins.through(g.part)) is not None:
+            # a pivot: a round hole of it on one axis with another part's (run cn: a boom
+            # with 0.6 mm of play each side of a dowel through it and its uprights; "move it
+            # 0.6 mm" would have made it rub)
+            other, d_mm = pin
+            said = ("note", f"assembled, part `{g.part}` touches no other part (the nearest, "
+                    f"`{g.nearest}`, is {g.gap:.3g} mm away): a round hole of it (d "
+                    f"{d_mm:.3g} mm) lines up with one of `{other}`, so a pin, an axle or a "
+                    "bolt through them holds it, the gap its play",
+                    f"held by the pin: nothing is needed; if a tab of it should reach a slot, "
+                    f"move `{short}` {g.gap:.3g} mm with its `Place`")
         elif g.gap >= AWAY - 1e-6:      # placed 5 mm or more from all: carried by what is not
             # cut (run bf: a wheel on a dowel axle, a sign on S-hooks; "a tab does not reach
             # its slot: move it 7 mm" would have made the wheel rub its stand)
@@ -186,3 +198,85 @@ def _check_bends(d: Drawing, sink: DiagnosticSink) -> None:
                            spans[k] if k < len(spans) else None,
                            hint=f"set them at least {(w0 + w1) / 2:.4g} mm apart, or make "
                                 "the radius or the angle smaller")
+
+
+# mm: how near two round holes' axes must run, assembled, to take one pin (a dowel through a
+# boom and its uprights' pivot holes lines up to the design's numbers; a hole 0.05 mm off its
+# partner's axis is drawn so)
+PIN_AXIS = 0.05
+# mm: the largest hole a pin, an axle or a bolt goes through (an M24 bolt's clearance is 26 mm;
+# two rings' 200 mm openings in line hold nothing: run bf's Ferris wheel); the larger of the two
+# holes at most three times the other (a 608 bearing's 22 mm seat and its 8 mm shaft's hole)
+PIN_MAX = 26.0
+# mm: the farthest apart along the pin two of its holes stand (a dowel axle between a toy's
+# frames; two holes in one plane are one place, not a pin)
+PIN_SPAN = 150.0
+
+
+class _Pins:
+    """The round holes of the parts of ``d`` on the assembled product's axes (the sheet's
+    circles with no material of the part whose box holds them a tenth in from their rim, placed
+    by its ``Place``), found for a part when first asked: :meth:`through` says whether a hole of a
+    part lines up with one of another part (a pivot, an axle: W0518 is then a note)."""
+
+    def __init__(self, d: Drawing):
+        self.d = d
+        self.axes: dict = {}
+
+    def _holes(self, name: str):
+        """Part ``name``'s round holes assembled: (centres n x 3, axis 3, diameters n)."""
+        if name not in self.axes:
+            import manifold3d as mf
+            import numpy as np
+            d = self.d
+            part = next((p for p in d.parts if p.name == name), None)
+            M = (d.placement or {}).get(name)
+            out = None
+            if part is not None and M is not None and not part.shape.is_empty():
+                x0, y0, x1, y1 = part.shape.bounds()
+                got = []
+                for cx, cy, r in d.circles:
+                    if not (x0 < cx < x1 and y0 < cy < y1) or r <= 0:
+                        continue
+                    e = min(r / 8, 1e-3)  # no material a tenth in from its rim: a hole (the
+                    #                            meshed circle's chords lie inside the rim)
+                    probes = mf.CrossSection.compose([
+                        mf.CrossSection.square((e, e)).translate(
+                            (cx + 0.9 * r * u - e / 2, cy + 0.9 * r * v - e / 2))
+                        for u, v in ((1, 0), (0, 1), (-1, 0), (0, -1))])
+                    if (part.shape ^ probes).area() <= 1e-12:
+                        got.append((cx, cy, 2 * r))
+                if got:
+                    g = np.array(got, dtype=float)
+                    M = np.asarray(M, dtype=float)
+                    c = g[:, :2] @ M[:3, :2].T + M[:3, 3]
+                    out = (c, M[:3, 2] / np.linalg.norm(M[:3, 2]), g[:, 2])
+            self.axes[name] = out
+        return self.axes[name]
+
+    def through(self, name: str):
+        """``(other part, hole diameter mm)`` for a round hole of part ``name`` whose axis,
+        assembled, runs within :data:`PIN_AXIS` of a round hole's of another part, both axes
+        parallel, in two planes at most :data:`PIN_SPAN` apart along it, both holes at most
+        :data:`PIN_MAX` across, one at most three times the other; else None."""
+        import numpy as np
+        mine = self._holes(name)
+        if mine is None:
+            return None
+        c, z, dia = mine
+        for p in self.d.parts:
+            if p.name == name:
+                continue
+            theirs = self._holes(p.name)
+            if theirs is None or np.linalg.norm(np.cross(z, theirs[1])) > 1e-6:
+                continue
+            rel = theirs[0][None, :, :] - c[:, None, :]          # mine x theirs x 3
+            off = rel - (rel @ z)[:, :, None] * z                # off the axis
+            near = np.argwhere(np.linalg.norm(off, axis=2) <= PIN_AXIS)
+            along = np.abs(rel @ z)
+            for i, j in near:               # a pin's holes: in two planes, PIN_MAX at most
+                a, b = float(dia[i]), float(theirs[2][j])
+                if max(a, b) <= PIN_MAX and max(a, b) <= 3 * min(a, b) \
+                        and 1e-3 < along[i, j] <= PIN_SPAN:
+                    return p.name, a
+        return None
