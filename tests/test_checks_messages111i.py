@@ -296,3 +296,18 @@ assembly kit {{
     near = [d for d in aidl_lang.compile(source=src(0)).diagnostics if d.code == "W0518"]
     assert [d.severity for d in far] == ["warning"] and "`kit.wall`, is 1 mm away" in far[0].message
     assert [d.severity for d in near] == ["note"] and "lines up" in near[0].message
+
+
+@pytest.mark.parametrize("attempt", [1, 2])
+def test_a_fillet_at_a_splines_own_corner_says_why(attempt):
+    """Run cp's toy sword: `Fillet(edge.points[4], 2)` at the blade's tip, a corner the Spline's
+    `corners=` names, was E0408 "rounds nothing ... the outline runs on through that point with
+    no corner there" (the render showed the sharp tip) with a hint naming another corner; the
+    hint's form failed alike. It is E0407 at the Fillet, with the fix that worked."""
+    path = RUNS / f"issue111cp/drafts/03_toy_sword.attempt{attempt}.aidl"
+    r = aidl_lang.compile(path=str(path))
+    (e,) = _errors(r)
+    assert e.code == "E0407" and e.span.line == 51
+    assert e.message.startswith("Fillet cannot round the corner at (455, 33.2) mm: it is a "
+                                "corner of a Spline (one of its `corners=`)")
+    assert "drop that index from `corners=`" in e.hint

@@ -388,6 +388,9 @@ would have to be tangent to a cubic spline, and its end on the spline is no line
 spline piece that the exact outputs can write: AIDL refuses rather than write chords. The
 error points at the `Spline`. Choose the corners with `Fillet(r, at=[...])` away from the
 spline, or let the spline itself turn smoothly there (give it a point at the corner).
+A corner of the spline itself (a point its `corners=` names, given to `Fillet` by its point)
+is refused so too, at the `Fillet`: round it within the spline, two points close either side
+of the tip and the index dropped from `corners=`.
 (`Hull` of a Spline is refused at its call, E0108; its `Offset`, `Inset` and `Shell`, and a
 cutting layout's kerf on a part with a spline, are followed by circular arcs within 1e-4 mm.) The same holds
 at a corner where an `Ellipse` meets another ellipse or a spline: the error points at the

@@ -517,6 +517,19 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
         found = [got[j] for j in js if j in got]
         if not found:
             p = pts[js[0]][0] if js else c.points[0]
+            if len(js) <= 1 and _spline_kink(p, loops):
+                # run cp's sword tip: a Spline's own corner (`corners=[...]`) is no corner the
+                # rounding can take (E0408 said "no corner there", its hint another corner)
+                out.append((call, "E0407", i,
+                            f"{kind} cannot {verb} the corner at ({p[0] - off[0]:.6g}, "
+                            f"{p[1] - off[1]:.6g}) mm: it is a corner of a Spline (one of "
+                            f"its `corners=`), and a {'fillet arc' if fillet else 'chamfer'} "
+                            f"there would end on the spline at a point the exact output "
+                            f"cannot place",
+                            "round it within the spline: drop that index from `corners=` "
+                            "and put two points of the spline close either side of the tip, "
+                            "so the curve itself turns round it"))
+                continue
             where, near = _where(p, loops)
             msg = f"{head} {verb}s nothing at {c.describe(off)}: "
             if near is not None:
@@ -555,6 +568,32 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
                         f"corner longer" if fits > 0 else
                         f"make the edges beside the corner longer, or delete the `{kind}`"))
     return out
+
+
+def _spline_kink(p, loops: list) -> bool:
+    """Whether point ``p`` is a sharp corner inside a Spline piece of ``loops`` (a point of
+    the spline its `corners=` names, where the tangents into and out of it turn by more than
+    :data:`CORNER_TURN`), within :data:`CORNER_TOL`."""
+    from ..shapes.curves import Spline
+    for lp in loops:
+        for g in lp.segments:
+            if not isinstance(g, Spline):
+                continue
+            c = g.curve.ctrl
+            for i in range(1, len(c) // 3 + (1 if g.curve.closed else 0)):
+                k = (3 * i) % (len(c) - 1) if g.curve.closed else 3 * i
+                if k >= len(c) - 1 and not g.curve.closed:
+                    break
+                q = c[k]
+                if math.hypot(q[0] - p[0], q[1] - p[1]) > CORNER_TOL:
+                    continue
+                a, b = c[k - 1] if k else c[-2], c[k + 1]
+                t0 = math.atan2(q[1] - a[1], q[0] - a[0])
+                t1 = math.atan2(b[1] - q[1], b[0] - q[0])
+                turn = abs((t1 - t0 + math.pi) % (2 * math.pi) - math.pi)
+                if turn > CORNER_TURN:
+                    return True
+    return False
 
 
 def _where(p, loops: list) -> tuple[str, tuple | None]:
