@@ -311,3 +311,17 @@ def test_a_fillet_at_a_splines_own_corner_says_why(attempt):
     assert e.message.startswith("Fillet cannot round the corner at (455, 33.2) mm: it is a "
                                 "corner of a Spline (one of its `corners=`)")
     assert "drop that index from `corners=`" in e.hint
+
+
+def test_allow_overlap_of_a_drawing_with_self_written_in_the_drawing():
+    """Run co's string-art board: `AllowOverlap(guide, self)` written inside `drawing guide`
+    (W0505's hint says "in `board`") was W0523 "allows nothing" with "delete the statement",
+    and the four W0505 of the guide line crossing the pin holes on purpose stayed. There
+    `self` is the drawing: the call means its lines run off the part it is on."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111co/run/07_string_art_board.first_valid.aidl"))
+    assert r.ok and [d.code for d in r.diagnostics if d.severity == "warning"] == []
+    src = (RUNS / "issue111co/run/07_string_art_board.first_valid.aidl").read_text()
+    assert "AllowOverlap(guide, self)" in src
+    bare = aidl_lang.compile(source=src.replace("AllowOverlap(guide, self)", ""),
+                             path=str(RUNS / "issue111co/run/x.aidl"))
+    assert [d.code for d in bare.diagnostics if d.severity == "warning"] == ["W0505"] * 4

@@ -736,7 +736,8 @@ A mark that runs off the material on purpose (a checkerboard's grid lines carrie
 dovetail band of each half, so that the rows read continuous once the halves are joined) is said
 so with `AllowOverlap(grid.h, self)` in the part (the engraving, or the drawing around it, and
 the part or a shape of it; for a drawing given to a part by `CutInto`, the call in the assembly:
-`AllowOverlap(label.word, box.front)`); the hint of a mark that is not text writes that call
+`AllowOverlap(label.word, box.front)`; written in the drawing itself, `AllowOverlap(grid, self)`
+means the same, `self` there being the drawing on its part); the hint of a mark that is not text writes that call
 after its fix. Engraving off the material burns air, so nothing reaches the machine that was not
 drawn; an `AllowOverlap` of an engraving that lies on the material is W0523.
 """),

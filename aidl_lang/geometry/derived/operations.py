@@ -668,6 +668,12 @@ def _allow_overlap(items: list, S=None, span=None) -> None:
         return o if isinstance(o, Structure) else o.owner
     drawn = [o for o in objs if holder(o).in_drawing()]
     material = [o for o in objs if not holder(o).in_drawing() and holder(o).kind == "solid"]
+    if drawn and not material and S is not None and S.in_drawing() and any(
+            o is S for o in objs):
+        # `AllowOverlap(guide, self)` written in the drawing itself (run co: W0523 "allows
+        # nothing", the W0505s kept): `self` is the drawing there, and the call means what
+        # W0505's hint writes in the part, its lines run off the part it is on
+        material = [a for a in S.ancestors() if a.kind == "solid"][:1]
     if drawn and material:
         for o in drawn:
             node = o if isinstance(o, Structure) else o.owner
