@@ -216,7 +216,9 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
 # (`thickness` long, spread evenly over `length`; the panel's edge on the line through
 # (cx, cy), the tabs' tips, the panel below it at rotation 0 (above it: 180 deg): the gaps are cut
 # `thickness` into it; give `length` the whole edge, as the edge beyond it stays
-# uncut and stops the mate) with a `t_slot` for an M`screw`
+# uncut and stops the mate; the end gaps are square to the edge, so where the
+# panel's side slopes outward make `length` reach the side `thickness` deep, or a
+# wedge stays, W0507) with a `t_slot` for an M`screw`
 # screw and its nut between each two; "slot" cuts the mate: a slot
 # `tab` + `clearance` by `thickness` + `clearance` for each tab and a medium
 # clearance hole for each screw, centred on the line through (cx, cy) where the
