@@ -325,3 +325,22 @@ def test_allow_overlap_of_a_drawing_with_self_written_in_the_drawing():
     bare = aidl_lang.compile(source=src.replace("AllowOverlap(guide, self)", ""),
                              path=str(RUNS / "issue111co/run/x.aidl"))
     assert [d.code for d in bare.diagnostics if d.severity == "warning"] == ["W0505"] * 4
+
+
+def test_a_diagnostic_said_again_is_one_line_with_its_own_fix():
+    """Run cj's harmonica rack: eight E0101 "unknown name `bays`", each eight lines with the
+    same hint, for one slip. `aidl check` says the first in full and each repeat in one line:
+    where, "as above" and its own fix (the JSON keeps every one whole)."""
+    import contextlib
+    import io
+    from aidl_lang.cli import main
+    path = str(RUNS / "issue111cj/drafts/05_harmonica_rack.attempt1.aidl")
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err):
+        assert main(["check", path]) != 0
+    text = err.getvalue()
+    assert text.count("= hint: `bays` is defined inside `deck`") == 1
+    again = [ln for ln in text.splitlines() if ln.endswith("(as above; fix: replace with "
+                                                          "`deck.bays`)")]
+    assert len(again) == 7 and again[0].endswith(":78:12: error[E0101]: unknown name `bays` "
+                                                 "(as above; fix: replace with `deck.bays`)")

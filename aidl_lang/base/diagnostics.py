@@ -360,6 +360,25 @@ def _line_text(src: str, line: int) -> str:
     return lines[line - 1] if 0 < line <= len(lines) else ""
 
 
+def render_texts(items, sources: dict[str, str], color: bool = False) -> list[str]:
+    """Each diagnostic of ``items`` as :func:`render_text` says it, but one with the code,
+    message and hint of one said before in full in one line: its place, "as above" and its
+    own fix (issue 111, run cj: eight E0101 for one unknown name, each eight lines)."""
+    out, seen = [], set()
+    for d in items:
+        key = (d.code, d.message, d.hint, d.severity)
+        if key in seen and d.span is not None:
+            where = f"{shown_path(d.span.file)}:{d.span.line}:{d.span.col}: "
+            fix = (f"; fix: replace with `{d.fix.replacement}`"
+                   if d.fix is not None and d.fix.replacement and d.fix.span.end > d.fix.span.start
+                   else "")
+            out.append(f"{where}{d.severity}[{d.code}]: {d.message} (as above{fix})")
+            continue
+        seen.add(key)
+        out.append(render_text(d, sources, color=color))
+    return out
+
+
 def render_text(d: Diagnostic, sources: dict[str, str], color: bool = False) -> str:
     """``file:line:col: error[CODE]: message`` + source line + caret + labels + hint."""
     def c(code: str, s: str) -> str:

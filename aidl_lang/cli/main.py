@@ -21,7 +21,7 @@ import os
 import sys
 from pathlib import Path
 
-from ..base.diagnostics import DiagnosticSink, render_text
+from ..base.diagnostics import DiagnosticSink, render_texts
 from ..base.limits import now
 from .arguments import SUBCOMMANDS, _parser
 
@@ -68,11 +68,14 @@ def _emit(sink: DiagnosticSink, as_json: bool, ok: bool, extra: dict | None = No
         return
     color = sys.stderr.isatty() and not os.environ.get("NO_COLOR")
     shown: dict[str, int] = {}
+    printed = []
     for d in sink.items:            # a flood: the first PRINTED_PER_CODE of each code in full
         shown[d.code] = shown.get(d.code, 0) + 1
         if shown[d.code] <= PRINTED_PER_CODE:
-            print(render_text(d, sink.sources, color=color), file=sys.stderr)
-            print(file=sys.stderr)
+            printed.append(d)
+    for text in render_texts(printed, sink.sources, color=color):   # repeats in one line
+        print(text, file=sys.stderr)
+        print(file=sys.stderr)
     for code, n in shown.items():
         if n > PRINTED_PER_CODE:
             print(f"aidl: and {n - PRINTED_PER_CODE:,} more of {code} (`--json` lists them all)",

@@ -25,7 +25,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Callable
 
-from ..base.diagnostics import render_text
+from ..base.diagnostics import render_texts
 from .client import ChatClient, LLMError
 from ..pipeline import compile_source
 from .prompt import system_prompt
@@ -147,7 +147,7 @@ def feedback_for(compiled, limit: int = MAX_FEEDBACK_DIAGNOSTICS) -> str:
     """The message telling the model what is wrong (errors first, as the CLI prints them);
     for a program that compiles, its warnings (any warning diagnostic, from any stage)."""
     items = sorted(compiled.sink.items, key=lambda d: not d.is_error)[:limit]
-    text = "\n\n".join(render_text(d, compiled.sink.sources, color=False) for d in items)
+    text = "\n\n".join(render_texts(items, compiled.sink.sources, color=False))
     more = len(compiled.sink.items) - len(items)
     if more > 0:
         text += f"\n\n(and {more} more)"
