@@ -344,3 +344,22 @@ def test_a_diagnostic_said_again_is_one_line_with_its_own_fix():
                                                           "`deck.bays`)")]
     assert len(again) == 7 and again[0].endswith(":78:12: error[E0101]: unknown name `bays` "
                                                  "(as above; fix: replace with `deck.bays`)")
+
+
+def test_E0201_names_what_the_argument_reads():
+    """Run ck's cipher wheel: `Line(polar(disc.center, 46, a), ...)` in a drawing inside the
+    disc's part was E0201 "refers to `start` of `cipher_wheel.outer`" (the Line's argument, not
+    the culprit inside `polar()`). It names `disc.center` and offers its numbers; the program
+    with them compiles."""
+    path = RUNS / "issue111ck/drafts/08_cipher_wheel.attempt1.aidl"
+    r = aidl_lang.compile(path=str(path))
+    e = _errors(r)
+    assert [d.code for d in e] == ["E0201", "E0201"]
+    assert e[0].message == ("geometry in `cipher_wheel.outer.tick` refers to `disc.center` (in "
+                            "its `start`) of `cipher_wheel.outer`, another structure")
+    assert e[0].hint.startswith("use numbers where `disc.center` is")
+    src = path.read_text()
+    assert "disc = Circle(center=(0, 0)" in src.replace(" mm", "")
+    fixed = aidl_lang.compile(source=src.replace("polar(disc.center,", "polar((0, 0),"),
+                              path=str(path))
+    assert fixed.ok and not _errors(fixed)

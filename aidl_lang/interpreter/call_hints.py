@@ -134,3 +134,34 @@ def branch_making(d: A.Def, name: str, sink) -> str | None:
         return None
     return (f"`{d.name}` makes `{name}` only where {' and '.join(where)}, which this call "
             f"does not give (its docs: `aidl docs {d.name}`)")
+
+
+def foreign_read(interp, node, span, other) -> str | None:
+    """The text of the first name or member chain inside ``span`` of call ``node`` whose value
+    is geometry of structure ``other`` (``disc.center`` of ``Line(polar(disc.center, 46,
+    a), ...)``), for E0201's message; None when none is found (issue 111, run ck: E0201 named
+    the Line's argument `start` and not what the argument read)."""
+    from ..base.diagnostics import EvalError
+    from ..geometry.core.values import owners_of
+    from .asserts import _chain, _children
+    from .common import _src
+    if span is None:
+        return None
+    todo = [node]
+    while todo:
+        n = todo.pop(0)
+        sp = getattr(n, "span", None)
+        if sp is None or sp.end <= span.start or sp.start >= span.end:
+            continue
+        if isinstance(n, (A.Name, A.Member)) and _chain(n) and span.start <= sp.start \
+                and sp.end <= span.end:
+            try:
+                v = interp.eval(n)
+            except EvalError:
+                v = None
+            if v is not None and other in owners_of(v):
+                return _src(interp.sink, sp) or None
+            if isinstance(n, A.Name):
+                continue
+        todo += _children(n)
+    return None

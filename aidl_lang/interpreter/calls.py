@@ -21,7 +21,7 @@ from ..geometry.core.values import (ANG, LEN, NUM, PV, BBoxRef, Builtin, GeomRef
 from ..base.limits import MAX_EXTENT
 from ..registry import (ENTRIES, FUNCTIONS, POINT_ALIGNS, accepted_args, bind_variant, canonical,
                         canonical_args, lookup)
-from .call_hints import _center_hint, list_arg_hint, shadowed
+from .call_hints import _center_hint, foreign_read, list_arg_hint, shadowed
 from .cut_into import cut_into
 from .functions import call_function
 from .common import (_defer_boxes, said_shrunk, DEG, _a, _fmt_num, _src, fraction_hint, show,
@@ -253,8 +253,19 @@ class Calls:
                             "`ring = Circle(center=(0, 0), radius=30, construction=true)`, "
                             f"and put its center on the shape's with `Coincident(...)` in "
                             f"`{bad[0].path}`")
-                raise EvalError("E0201", f"geometry in `{s.path}` refers to `{k}` of `{bad[0].path}`, "
-                                f"another structure", spans.get(k, node.span), hint=hint)
+                read = foreign_read(self, node, spans.get(k), bad[0])
+                if read is not None and kind not in DERIVED and not (kind == "Text"
+                                                                     and k == "along"):
+                    # run ck: `polar(disc.center, 46, a)` in a drawing inside the disc's part
+                    hint = (f"use numbers where `{read}` is (the point as written, in the "
+                            f"same frame: a child's coordinates are its parent's unless a "
+                            f"relation moves it), or write this shape in `{bad[0].path}`, or "
+                            f"give it its own starting value and relate the two with a "
+                            f"constraint in a structure that contains both")
+                raise EvalError("E0201", f"geometry in `{s.path}` refers to "
+                                + (f"`{read}` (in its `{k}`)" if read else f"`{k}`")
+                                + f" of `{bad[0].path}`, another structure",
+                                spans.get(k, node.span), hint=hint)
         if conv.get("fill"):
             from .fonts import check_fill
             check_fill(conv, s, node, spans, kind)
