@@ -133,6 +133,8 @@ ARCSLOT_MEMBERS = {"center": "point", "start": "point", "end": "point", "midpoin
 SECTOR_MEMBERS = ARCSLOT_MEMBERS
 DERIVED_MEMBERS = {"bb": "bbox"}
 HULL_MEMBERS = {"bb": "bbox", "center": "point"}     # center: its box's (issue 105)
+# an Offset's, Inset's or Shell's center: its shape's (a ring's circle's), else its box's
+GROWN_MEMBERS = {"bb": "bbox", "center": "point"}
 SPLINE_MEMBERS = {"points": "points", "start": "point", "end": "point", "bb": "bbox"}
 BBOX_MEMBERS = {"left": "coordinate", "right": "coordinate", "top": "coordinate",
                 "bottom": "coordinate", "width": "length", "height": "length",
@@ -312,12 +314,12 @@ _DEFS = {
                members=STAR_MEMBERS),
     "Offset": _p([A("shape", "geometry"), A("distance", "length"), A("join", "string", "round")],
                  doc="The shape grown by distance (negative: shrunk), join \"round\" or "
-                     "\"miter\"; the shape is not drawn.", members=DERIVED_MEMBERS),
+                     "\"miter\"; the shape is not drawn.", members=GROWN_MEMBERS),
     "Inset": _p([A("shape", "geometry"), A("distance", "length"), A("join", "string", "round")],
-                doc="Offset(shape, -distance).", members=DERIVED_MEMBERS),
+                doc="Offset(shape, -distance).", members=GROWN_MEMBERS),
     "Shell": _p([A("shape", "geometry"), A("thickness", "length"), A("join", "string", "round")],
                 doc="A wall `thickness` wide outside the shape (negative: inside); the shape "
-                    "is not drawn.", members=DERIVED_MEMBERS),
+                    "is not drawn.", members=GROWN_MEMBERS),
     "Stroke": _p([A("path", "any"), A("width", "length"),
                   A("cap", "string", "round", "\"round\" (the path's Minkowski sum with a "
                     "disc) or \"flat\" (ends cut square)", kw_only=True)],

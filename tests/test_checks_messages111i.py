@@ -363,3 +363,22 @@ def test_E0201_names_what_the_argument_reads():
     fixed = aidl_lang.compile(source=src.replace("polar(disc.center,", "polar((0, 0),"),
                               path=str(path))
     assert fixed.ok and not _errors(fixed)
+
+
+def test_a_ring_made_by_shell_has_its_circles_center():
+    """Run cn's microphone shock mount: `Concentric(grip_front.band, front.rim)` with `band` a
+    `Shell` of a circle was E0108 "must be a shape with a center or a point, got Shell". An
+    Offset's, Inset's or Shell's `center` is its shape's (a box's centre for a shape with none),
+    and the first attempt compiles."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111cn/drafts/05_mic_shock_mount.attempt1.aidl"))
+    assert r.ok and not _errors(r)
+    src = """solid p {
+    c = Circle(center=(12, 7), radius=10)
+    ring = Shell(c, 3)
+    h = Hull(Circle(center=(0, 0), radius=2), Circle(center=(10, 0), radius=2))
+    g = Offset(h, 1)
+    assert ring.center == c.center and g.center.x == 5 mm and g.center.y == 0 mm
+}
+"""
+    s = aidl_lang.compile(source=src)
+    assert s.ok and not _errors(s)

@@ -221,6 +221,9 @@ class Expressions:
                 return BBoxRef(g)
             if name == "center" and g.kind == "Hull":      # its box's center, as `.bb.center`
                 return self.member(BBoxRef(g), name, span)
+            if name == "center" and g.kind in ("Offset", "Shell") \
+                    and geom_member(g, name, S) is None:     # its shape has none: its box's
+                return self.member(BBoxRef(g), name, span)
             v = geom_member(g, name, S)
             if v is not None:
                 return v

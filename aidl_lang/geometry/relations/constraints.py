@@ -434,7 +434,9 @@ def _center_of(ctx, v, name: str) -> PV:
     if isinstance(v, PV):
         return v
     if isinstance(v, GeomRef):
-        return member(v.geom, "center", ctx.struct)
+        c = member(v.geom, "center", ctx.struct)
+        if c is not None:
+            return c
     raise ConstraintError(f"`{name}` must be a shape with a center or a point, "
                           f"got {type_name(v)}")
 

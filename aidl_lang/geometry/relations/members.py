@@ -143,6 +143,11 @@ def member(g: Geometry, name: str, frame):
             return [GeomRef(e) for e in g.data["edges"]]
     if k == "Ellipse" and name in ("rx", "ry"):
         return Q(var(g.scalars[name].index), LEN, own)
+    if k in ("Offset", "Shell") and name == "center":
+        # its shape's center (run cn: a ring, `Shell(Circle(...), 3)`, in `Concentric` was
+        # E0108 "got Shell"); None for a shape with none (the interpreter gives its box's)
+        src = (g.data.get("sources") or [None])[0]
+        return member(src, name, frame) if src is not None else None
     if k == "RegularPolygon" and name in _REGULAR and "radius" in g.scalars:
         return _regular_size(g, name, own)
     if k in ("Polygon", "RegularPolygon", "Triangle", "Star"):
