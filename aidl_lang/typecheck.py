@@ -13,6 +13,8 @@ the interpreter (:mod:`aidl_lang.interp`) as it runs, with the same diagnostic m
 """
 from __future__ import annotations
 
+import itertools
+
 
 from . import ast as A
 from .base.diagnostics import Diagnostic, DiagnosticSink, Fix, Label, did_you_mean
@@ -159,6 +161,7 @@ class Checker:
 
     def run(self, program: A.Program) -> None:
         self.program = program
+        self.bodies: list = []          # the bodies of the structures around a statement
         file_names = set()
         memo: dict = {}                 # imported file (real path) -> its names, once each
         self.params_once(program)
@@ -374,12 +377,16 @@ class Checker:
             if st.kind not in KINDS:
                 self._kind_error(st.kind, st.kind_span)
             inner = _Scope(scope, self.block_names(st.body.stmts) | {st.name})
+            self.bodies.append(st.body.stmts)
             self.stmts(st.body.stmts, inner)
+            self.bodies.pop()
         elif isinstance(st, A.Assign):
             self.assign = st                # a template call's placement hint names it
             self.expr(st.value, scope)
             self.assign = None
         elif isinstance(st, (A.ExprStmt, A.Assert)):
+            if isinstance(st, A.Assert):
+                st.expr = self._reach_into(st.expr, scope)
             self.expr(st.expr, scope)
         elif isinstance(st, A.ThicknessDecl):
             self.expr(st.value, scope)
@@ -458,6 +465,57 @@ class Checker:
                         f"`{inside}.{n}`" if inside else
                         "define it first (`NAME = ...`, or `param NAME = ...` at the top)",
                         suggestions=sugg or ([f"{inside}.{n}"] if inside else []))
+
+    def _reach_into(self, e, scope: _Scope):
+        """An assert's condition ``e`` with each name it reads that is bound nowhere in scope
+        but in exactly one structure inside the structure the assert stands in read by its
+        path (`len(bays)` in an assembly whose `deck` binds `bays`: `deck.bays`): nine first
+        checks of issue 111's model runs failed on E0101 there, every one an assert counting
+        or measuring what a child made.  Geometry is never read so: only an assert's names."""
+        body = self.bodies[-1] if self.bodies else (
+            self.program.stmts if self.program is not None else [])
+
+        def paths(n, stmts, path):
+            for st in stmts:
+                if isinstance(st, A.StructDecl):
+                    here = path + [st.name]
+                    if n in self.block_names(st.body.stmts):
+                        yield here + [n]
+                    yield from paths(n, st.body.stmts, here)
+                elif isinstance(st, (A.For, A.If)):
+                    yield from paths(n, st.body.stmts, path)
+                    if isinstance(st, A.If) and st.orelse is not None:
+                        yield from paths(n, st.orelse.stmts, path)
+
+        def known(n: str) -> bool:
+            return (scope.has(n) or n in CONSTANTS or n == "self" or n in FUNCTIONS
+                    or lookup(n) is not None or n in UNITS_LENGTH or n in UNITS_ANGLE
+                    or n in self.templates or self.import_failed)
+
+        def walk(node):
+            if type(node) is A.Name:
+                if known(node.id):
+                    return node
+                found = list(itertools.islice(paths(node.id, body, []), 2))
+                if len(found) != 1:
+                    return node
+                out = A.Name(node.span, found[0][0])
+                for part in found[0][1:]:
+                    out = A.Member(node.span, out, part, node.span)
+                return out
+            if isinstance(node, A.Member):
+                node.obj = walk(node.obj)       # `bays[1].r`: the chain's root
+                return node
+            if isinstance(node, A.ListComp):
+                return node                     # its own variable: left as written
+            for slot in getattr(type(node), "__slots__", ()):
+                v = getattr(node, slot, None)
+                if isinstance(v, A.Node):
+                    setattr(node, slot, walk(v))
+                elif isinstance(v, list):
+                    setattr(node, slot, [walk(x) if isinstance(x, A.Node) else x for x in v])
+            return node
+        return walk(e)
 
     def _bound_inside(self, n: str, scope: _Scope) -> str | None:
         """The path, from a structure in ``scope``, of a structure whose body binds ``n``

@@ -382,3 +382,38 @@ def test_a_ring_made_by_shell_has_its_circles_center():
 """
     s = aidl_lang.compile(source=src)
     assert s.ok and not _errors(s)
+
+
+@pytest.mark.parametrize("run,name", [
+    ("issue111cj", "05_harmonica_rack"), ("issue111ck", "04_parrot_perch"),
+    ("issue111cg", "02_cake_divider"), ("issue111ap", "07_twig_stove"),
+    ("issue111bi", "01_curtain_holdback"), ("issue111cd", "06_knot_board"),
+    ("issue111ab", "07_sundial"), ("issue111z8", "07_pinhole_front"),
+])
+def test_an_assert_reads_what_one_child_makes_by_its_name(run, name):
+    """Nine first checks of the model runs failed on E0101 for an assert in an assembly that
+    counted or measured what a child made (`assert len(bays) == 6`, `bays` bound in `deck`),
+    each fixed by writing the path the hint gave. A name of an assert bound nowhere in scope
+    but in exactly one structure inside the assert's is read by that path: these first tries
+    compile, with the diagnostics of their second."""
+    draft = RUNS / run / "drafts" / f"{name}.attempt1.aidl"
+    first = aidl_lang.compile(path=str(draft))
+    assert first.ok and not _errors(first), [d.message for d in _errors(first)]
+
+
+def test_an_assert_name_two_children_bind_is_still_E0101():
+    """The path is taken only where it is one: a name bound in two children stays E0101 (its
+    hint names one path), and geometry never reads a child's name so."""
+    src = """solid p {
+    r = Rectangle(center=(0, 0), width=40, height=20)
+    hole a { c = Circle(center=(-10, 0), radius=2) }
+    hole b { c = Circle(center=(10, 0), radius=2) }
+    assert c.radius == 2 mm
+}
+"""
+    (e,) = _errors(aidl_lang.compile(source=src))
+    assert e.code == "E0101" and "`c`" in e.message
+    one = src.replace("hole b { c = Circle(center=(10, 0), radius=2) }", "")
+    assert aidl_lang.compile(source=one).ok
+    assert not aidl_lang.compile(source=one.replace("assert c.radius == 2 mm",
+                                                    "d = Circle(center=c.center, radius=1)")).ok
