@@ -417,3 +417,18 @@ def test_an_assert_name_two_children_bind_is_still_E0101():
     assert aidl_lang.compile(source=one).ok
     assert not aidl_lang.compile(source=one.replace("assert c.radius == 2 mm",
                                                     "d = Circle(center=c.center, radius=1)")).ok
+
+
+def test_W0513_is_silent_for_a_mark_at_the_clearance():
+    """Run cl's astrolabe: ticks ending "1.00 mm" from the numerals were W0513 for a clearance
+    of "1.00 mm" (the strokes' chords 0.004 mm nearer), with a hint to end them 0.01 mm
+    further. A mark within 0.01 mm of the clearance is at it; one 0.1 mm nearer is said."""
+    path = RUNS / "issue111cl/run/07_astrolabe.first_valid.aidl"
+    r = aidl_lang.compile(path=str(path))
+    assert "W0513" not in [d.code for d in r.diagnostics]
+    src = path.read_text()
+    assert "mater_d / 2 - 2 - (10 if i % 6 == 0" in src
+    nearer = aidl_lang.compile(source=src.replace("mater_d / 2 - 2 - (10 if i % 6 == 0",
+                                                  "mater_d / 2 - 2 - (10.1 if i % 6 == 0"),
+                               path=str(path))
+    assert "W0513" in [d.code for d in nearer.diagnostics]
