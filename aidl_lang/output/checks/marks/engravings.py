@@ -257,6 +257,9 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
                              f"`{part.path}` ({said[0]})", g.span, hint=said[1])
                 continue
         n = freed_share(d, part, pts[~inside], ENGRAVE_TOL) if d.split else 0
+        if n == 1 and not inside.any():
+            continue            # on one piece a cut frees: laid out with it (run cr's wiggle
+            #                     snake, a diamond on each link: "lies across 1 of the pieces")
         if n:                   # on the pieces a cut frees: right as drawn, not laid out
             sink.warning("W0505", f"engraving `{g.label}` lies across "
                          f"{n + int(inside.any())} of the pieces that the through-cuts free "
