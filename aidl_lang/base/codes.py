@@ -1114,6 +1114,9 @@ moving it. Two parts meant to
 share material (a press fit drawn to size, an inlay) are named in `AllowOverlap(a, b)` in
 their assembly, which this check then leaves alone, as W0511 does. The check reads the
 designed parts: a `kerf` is compensated in the cut files, so the parts come out that size.
+A bent part (`Bend`) is made of chords within 0.005 mm of its bend: an overlap with it no
+deeper than that, or thinner than that on average over its box (a bent roof lying on its
+arches), is contact, not a collision.
 
     import "std/joints.aidl"
     thickness 3.5 mm                # the material is thicker than the fingers were cut for
