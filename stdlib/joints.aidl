@@ -91,7 +91,8 @@ def finger_panel(width=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
 # sides; the sides have slots all round. Members: `bottom`, `front`, `back`,
 # `left`, `right`, `lid` (each a finger_panel). Each panel is placed in 3D
 # (`Place`): assembled (`aidl render --assembled`), the box stands on z = 0,
-# centered on x = y = 0, its fingers in their slots.
+# centered on x = y = 0, its fingers in their slots; the walls' and the lid's
+# top faces (an engraving as drawn in the net) look out, the bottom's in.
 # Anchor: (cx, cy) is the centre of `bottom`.
 def finger_box(length=120 mm, depth=80 mm, height=50 mm, thickness=3 mm,
                finger=10 mm, closed=true, gap=5 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {
@@ -130,12 +131,13 @@ def finger_box(length=120 mm, depth=80 mm, height=50 mm, thickness=3 mm,
     Place(bottom, position=(-cx, -cy, 0 mm))
     Place(front, rotation=(90 deg, 0, 0),
           position=(-cx, thickness - D / 2, H / 2 - (cy - (D + H) / 2 - gap)))
-    Place(back, rotation=(90 deg, 0, 0),
-          position=(-cx, D / 2, H / 2 - (cy + (D + H) / 2 + gap)))
-    Place(left, rotation=(0, 90 deg, 0),
-          position=(-L / 2, -cy, cx - (L + H) / 2 - gap + H / 2))
-    Place(right, rotation=(0, -90 deg, 0),
-          position=(L / 2, -cy, H / 2 - (cx + (L + H) / 2 + gap)))
+    # each wall's top face (its engraving, as drawn in the net) looks out of the box
+    Place(back, position=(cx, D / 2 - thickness, H / 2 - (cy + (D + H) / 2 + gap)),
+          face="back", up="up")
+    Place(left, position=(thickness - L / 2, cy, cx - (L + H) / 2 - gap + H / 2),
+          face="left", up="front")
+    Place(right, position=(L / 2 - thickness, cy, H / 2 - (cx + (L + H) / 2 + gap)),
+          face="right", up="front")
 }
 
 # ---------------------------------------------------------------------------

@@ -1274,13 +1274,18 @@ def test_stdlib_finger_box_assembles_without_a_collision_or_a_gap(compile_text, 
 
 
 def test_W0517_material_half_a_millimetre_thicker_than_the_slots(compile_text):
-    """3.5 mm material in a box whose fingers and slots were drawn for 3 mm: every joint
-    collides, each 0.5 mm deep (the slot is 0.5 mm narrower than its partner)."""
+    """3.5 mm material in a box whose fingers and slots were drawn for 3 mm: the bottom's
+    joints collide, each 0.5 mm deep (the slot is 0.5 mm narrower than its partner). (Since
+    issue 111's round thirteen the walls' top faces look out of the box and their extra
+    half millimetre lies outside, where nothing meets it, as the front's always did: the
+    walls' and the lid's joints close with fingers 0.5 mm short of flush; the bottom's, its
+    extra inside, meet the walls' fingers.)"""
     c = compile_text(BOX.format(material=3.5, kerf=""))
     ws = [d for d in c.sink.items if d.code == "W0517"]
     pairs = {tuple(w.message.split("`")[1:4:2]) for w in ws}
-    assert ("kit.box.bottom", "kit.box.front") in pairs and ("kit.box.back", "kit.box.lid") in pairs
-    assert len(ws) == 11 and all(", 0.5 mm deep," in w.message for w in ws)
+    assert pairs == {("kit.box.bottom", f"kit.box.{s}") for s in ("front", "back", "left",
+                                                                  "right")}
+    assert len(ws) == 4 and all(", 0.5 mm deep," in w.message for w in ws)
     w = next(w for w in ws if "`kit.box.bottom` and `kit.box.front`" in w.message)
     assert "77.7 mm^3" in w.message and "y -40..-37" in w.message
     # at the call in the program (issue 86), the template's line a note

@@ -463,3 +463,21 @@ def test_W0517_is_silent_for_a_bent_roof_resting_on_its_arches():
     overlap thinner on average than the chord tolerance over its box is contact."""
     r = aidl_lang.compile(path=str(RUNS / "issue111cs/run/06_santa_mailbox.first_valid.aidl"))
     assert "W0517" not in [d.code for d in r.diagnostics]
+
+
+def test_a_finger_boxs_walls_show_their_engraving_outside():
+    """Run cq's Santa letter box: snowflakes engraved on `finger_box`'s side panels landed on
+    the inside faces (the back, left and right were placed top face in), and a part is
+    placed once, so the model rebuilt the box from single panels. Every wall's top face, and
+    the lid's, now looks out of the box; the fit is as tight as before."""
+    r = aidl_lang.compile(source='import "std/joints.aidl"\nthickness 3 mm\n'
+                                 'assembly kit { b = finger_box(cx=30 mm, cy=-20 mm) }\n')
+    assert r.ok and not r.diagnostics and r.fit["collisions"] == []
+    faces = {p["name"].split(".")[-1]: (p["assembled"]["top_face"], p["assembled"]["box"])
+             for p in r.description["parts"]}
+    assert {k: v[0] for k, v in faces.items()} == {
+        "bottom": "up (+z)", "front": "front (-y)", "back": "back (+y)", "left": "left (-x)",
+        "right": "right (+x)", "lid": "up (+z)"}
+    assert faces["back"][1] == [-60, 37, 0, 60, 40, 50]
+    assert faces["left"][1] == [-60, -40, 0, -57, 40, 50]
+    assert faces["right"][1] == [57, -40, 0, 60, 40, 50]
