@@ -234,7 +234,9 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
 # drawn, in no box) and
 # `nut` (one between each two tabs); of part "slot", `slot` (one per tab, even
 # with `tabs=1`: `j.slot[0].bb`) and `bolt` (one between each two tabs). The
-# whole joint's box is `j.bb` (a tab part's: its gaps').
+# whole joint's box is `j.bb` (a tab part's: its gaps' and, with a screw, its
+# T-slots', which reach 4 x `screw` + `thickness` in: the gaps alone,
+# `j.gap[0].bb`).
 # Anchor: (cx, cy) is the middle of the edge (part "slot": of the slots); rotation 0: the edge along x, the panel toward -y.
 def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, screw=3,
                  clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {

@@ -481,3 +481,18 @@ def test_a_finger_boxs_walls_show_their_engraving_outside():
     assert faces["back"][1] == [-60, 37, 0, 60, 40, 50]
     assert faces["left"][1] == [-60, -40, 0, -57, 40, 50]
     assert faces["right"][1] == [57, -40, 0, 60, 40, 50]
+
+
+def test_tab_and_slot_docs_say_its_box_holds_the_t_slots():
+    """Run cr's balance board: `front_rocker.joint.bb.bottom` asserted as the gaps' bottom was
+    16 mm lower, the docs saying "a tab part's: its gaps'" while the T-slots of `screw=4`
+    reach 4 x 4 + 3 = 19 mm in. The docs say so, and the box is there."""
+    from aidl_lang.library.reference import lookup_text
+    text = " ".join(lookup_text("tab_and_slot")[0].split())
+    assert "its gaps' and, with a screw, its T-slots', which reach 4 x `screw` + `thickness` in" in text
+    r = aidl_lang.compile(source='import "std/joints.aidl"\nsolid p {\n'
+                                 '    r = Rectangle(center=(0, -30), width=60, height=60)\n'
+                                 '    j = tab_and_slot(part="tab", screw=4)\n'
+                                 '    assert abs(j.bb.bottom + 19 mm) < 1e-9 mm\n'
+                                 '    assert abs(j.gap[0].bb.bottom + 3 mm) < 1e-9 mm\n}\n')
+    assert r.ok and not _errors(r)
