@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import re
 
 import numpy as np
 import pytest
@@ -496,3 +497,63 @@ def test_tab_and_slot_docs_say_its_box_holds_the_t_slots():
                                  '    assert abs(j.bb.bottom + 19 mm) < 1e-9 mm\n'
                                  '    assert abs(j.gap[0].bb.bottom + 3 mm) < 1e-9 mm\n}\n')
     assert r.ok and not _errors(r)
+
+
+def test_W0505_of_a_ring_across_two_holes_offers_an_arc_per_gap():
+    """Run cs's butterfly feeder: an engraved ring across two mortises was offered one Arc,
+    the longer clear run; pasted, the warning went and so did the ring's other half. The hint
+    gives an arc per clear run, and with both the two halves are engraved, unwarned."""
+    p = RUNS / "issue111cs/run/03_butterfly_feeder.first_valid.aidl"
+    r = aidl_lang.compile(path=str(p))
+    (w,) = [d for d in r.diagnostics if d.code == "W0505"]
+    arcs = re.findall(r"`(c(?:_2)?) = (Arc\([^`]*\))`", w.hint)
+    assert [a for a, _ in arcs] == ["c", "c_2"] and "the 2 arcs on the material" in w.hint
+    src = p.read_text()
+    old = "drawing seat { c = Circle(center=(0, 0), diameter=44) }"
+    assert old in src
+    new = "drawing seat {\n" + "".join(f"        {a} = {b}\n" for a, b in arcs) + "    }"
+    f = aidl_lang.compile(source=src.replace(old, new), path=str(p))
+    assert f.ok and "W0505" not in [d.code for d in f.diagnostics]
+    marks = [e for q in f.description["parts"] for e in q["engravings"] if ".seat." in e["name"]]
+    assert len(marks) == 2 and sorted(round(e["center"][0], 3) for e in marks) == [-13.005, 13.005]
+
+
+def test_two_tab_joints_meeting_at_an_inside_corner_are_one_opening():
+    """Run cx's screwdriver rack: a bracket's top and back `tab_and_slot` joints, their end
+    gaps meeting at its inside corner, were W0508 "touch, so they cut one opening" once the
+    end gaps stopped at `length` (before, their runs along the edge overlapped, which W0508
+    took as meant). Two joints' cuts that touch are one opening as drawn."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111cx/run/01_screwdriver_rack.first_valid.aidl"))
+    assert "W0508" not in [d.code for d in r.diagnostics]
+
+
+def test_W0517_names_each_place_two_parts_collide():
+    """Runs cm and cu: two wedges at a slanted leg's ends colliding with the top were said as
+    one box spanning the whole edge (x -100.8..100.8) and the picture drew a red bar along
+    it. Each connected piece has its box."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111cm/run/05_pizza_stand.first_valid.aidl"))
+    w = [d for d in r.diagnostics if d.code == "W0517" and "`pizza_stand.leg_a`" in d.message]
+    assert len(w) == 1 and "in 2 places: x -100.8..-100, y -3..3, z 144..150; x 100..100.8, " \
+                            "y -3..3, z 144..150 mm" in w[0].message
+    (c,) = [c for c in r.fit["collisions"] if c["b"] == "pizza_stand.leg_a"]
+    assert c["box"] == [-100.8, -3, 144, 100.8, 3, 150]
+
+
+def test_the_assembled_picture_marks_only_what_W0517_says():
+    """Runs cv and cx's fingerboard ramps: the assembled PNG drew red boxes where the bent
+    skin rests on its profiles, which the check (rightly) does not call a collision, and no
+    message said what they were. The picture marks the collisions W0517 says, a box per
+    place: none on the ramp, some on the pizza stand's four wedges."""
+    pytest.importorskip("PIL")
+    import io
+    from PIL import Image
+
+    def red(run, name):
+        r = aidl_lang.compile(path=str(RUNS / run / "run" / f"{name}.first_valid.aidl"))
+        im = np.asarray(Image.open(io.BytesIO(r.encode("png", assembled=True))).convert("RGB"))
+        im = im.astype(int)
+        return int(((im[:, :, 0] > 200) & (im[:, :, 1] < 60) & (im[:, :, 2] < 60)).sum()), r
+    n, ramp = red("issue111cx", "06_fingerboard_ramp")
+    assert n == 0 and "W0517" not in [d.code for d in ramp.diagnostics]
+    n, pizza = red("issue111cm", "05_pizza_stand")
+    assert n > 100 and "W0517" in [d.code for d in pizza.diagnostics]

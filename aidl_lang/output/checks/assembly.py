@@ -63,9 +63,13 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
         x0, y0, z0, x1, y1, z1 = c.box
         sa = at(c.a)
         labels = [Label(sa, f"`{c.a}` is placed here", primary=False)] if sa else []
+        where = (f"in x {x0:.6g}..{x1:.6g}, y {y0:.6g}..{y1:.6g}, z {z0:.6g}..{z1:.6g} mm"
+                 if not c.places else f"in {len(c.places)} places: " + "; ".join(
+                     f"x {q[0]:.6g}..{q[3]:.6g}, y {q[1]:.6g}..{q[4]:.6g}, z {q[2]:.6g}.."
+                     f"{q[5]:.6g}" for q in c.places[:4])
+                 + (f"; and {len(c.places) - 4} more" if len(c.places) > 4 else "") + " mm")
         sink.warning("W0517", f"assembled, parts `{c.a}` and `{c.b}` collide: they share "
-                     f"{c.volume:.3g} mm^3, {c.depth:.3g} mm deep, in x {x0:.6g}..{x1:.6g}, "
-                     f"y {y0:.6g}..{y1:.6g}, z {z0:.6g}..{z1:.6g} mm", at(c.b) or sa,
+                     f"{c.volume:.3g} mm^3, {c.depth:.3g} mm deep, {where}", at(c.b) or sa,
                      labels=labels,
                      hint=(f"a slot or a gap is {c.depth:.3g} mm narrower than the part that "
                            "goes in it: widen it to the partner's thickness (or make the "

@@ -106,12 +106,16 @@ def _rgba(colour: str) -> list[int]:
 class Collision:
     """Two parts whose solids share ``volume`` mm^3 inside ``box`` (x0, y0, z0, x1, y1, z1 mm);
     ``depth``: how far one part runs into the other, across both sheets (a slot that much
-    too narrow, :func:`_depth`)."""
+    too narrow, :func:`_depth`); ``places``: each connected piece's box, where there are
+    several (else empty)."""
     a: str
     b: str
     volume: float
     box: tuple
     depth: float
+    # each connected piece's box where there are several (two tabs too thick for their two
+    # slots: runs cm, cu read one box spanning both and the part between)
+    places: tuple = ()
 
 
 @dataclass
@@ -194,7 +198,9 @@ def fit(bodies, deadline=None, normals: dict | None = None,
                                                           pieces[:, 3:].max(axis=0)]))
             depth = _depth(common, normals.get(na), normals.get(nb), box)
             if depth > DEPTH_TOL:
-                hits.append(Collision(na, nb, vol, box, depth))
+                places = tuple(tuple(float(v) for v in q) for q in pieces) \
+                    if len(pieces) > 1 else ()
+                hits.append(Collision(na, nb, vol, box, depth, places))
                 touching.update((i, j))
                 continue
         if i not in touching or j not in touching:

@@ -91,8 +91,9 @@ def to_assembled_png(output: Output, thickness: float | None = None, width: int 
     each part's triangles in its colour, shaded by how squarely they face the viewer, cut to
     a 24th of the largest part's size and drawn back to front (painter's order) with Pillow,
     at twice the size and scaled down (antialiasing), the engraving on the faces that look
-    towards the viewer.  ``highlight``: :class:`Collision` s drawn over it as red boxes
-    (None: those the fit check finds, :func:`~..fabrication.assembly.fit`).  Raises
+    towards the viewer.  ``highlight``: :class:`Collision` s drawn over it as red boxes, a
+    box per connected piece (None: those the fit check finds,
+    :func:`~..fabrication.assembly.fit`, that W0517 says).  Raises
     :class:`~.part.MissingDependency` without Pillow (the ``png`` extra)."""
     if not 16 <= width <= 4096:
         raise OutputError(f"an assembled PNG is 16 to 4096 pixels wide, not {width}")
@@ -101,6 +102,12 @@ def to_assembled_png(output: Output, thickness: float | None = None, width: int 
     bodies = solids(output, thickness)
     if highlight is None:
         highlight = fit(bodies, normals=normals_of(placements(output)))[0]
+        said = getattr(output.drawing, "fit", None) if output.drawing is not None else None
+        if said and said.get("checked"):
+            # only what W0517 says: a bent skin resting on its profiles, an AllowOverlap's
+            # press fit are no collision (runs cv, cx: red boxes the check never named)
+            pairs = {frozenset((c["a"], c["b"])) for c in said.get("collisions", ())}
+            highlight = [c for c in highlight if frozenset((c.a, c.b)) in pairs]
     from trimesh.remesh import subdivide_to_size
     size = max((max(np.subtract(_box(m)[3:], _box(m)[:3])) for _, m in bodies), default=1.0)
     parts = []
@@ -120,8 +127,9 @@ def to_assembled_png(output: Output, thickness: float | None = None, width: int 
                       np.array(_rgba(colour_of.get(name, "#607d8b"))[:3], dtype=float)))
     boxes = []
     for c in highlight:
-        x0, y0, z0, x1, y1, z1 = c.box
-        boxes.append(np.array([[x, y, z] for x in (x0, x1) for y in (y0, y1) for z in (z0, z1)]))
+        for x0, y0, z0, x1, y1, z1 in (getattr(c, "places", ()) or (c.box,)):   # each piece
+            boxes.append(np.array([[x, y, z] for x in (x0, x1) for y in (y0, y1)
+                                   for z in (z0, z1)]))
     Image, _ = _pil()
     w = max(16, width // len(views))
     imgs = [_view(output, thickness, parts, boxes, size, az, el, w, caption)

@@ -484,19 +484,21 @@ def _arc_on_material(g, items, shape) -> str | None:
         return None
     k0 = int(np.argmin(clear)) if whole else 0       # a circle: start at an off sample
     order = np.roll(np.arange(steps), -k0)
-    best, run, start = (0, 0), 0, 0
+    runs, run, start = [], 0, 0          # every clear run: (length, start)
     for i, k in enumerate(order):
         if clear[k]:
             if run == 0:
                 start = i
             run += 1
-            if run > best[0]:
-                best = (run, start)
-        else:
+        elif run:
+            runs.append((run, start))
             run = 0
-    n, s = best
-    if n < 2 or (n - 1) * 2 * math.pi / ARC_STEPS < ARC_LEAST:
+    if run:
+        runs.append((run, start))
+    runs = [(n, s) for n, s in runs if n >= 2 and (n - 1) * 2 * math.pi / ARC_STEPS >= ARC_LEAST]
+    if not runs:
         return None
+
     def ok(th: float) -> bool:
         p = np.array([[cx + r * math.cos(th), cy + r * math.sin(th)]])
         return bool(_inside(p, edges)[0] and not _within(p, edges, 2 * CUT_CLEAR)[0])
@@ -507,21 +509,31 @@ def _arc_on_material(g, items, shape) -> str | None:
             m = (good + bad) / 2
             good, bad = (m, bad) if ok(m) else (good, m)
         return good
-    lo, hi = t[order[s]], t[order[s + n - 1]]
-    if hi < lo:
-        hi += 2 * math.pi
-    if whole or s > 0:                 # a blocked sample before the run (a circle: always)
-        lo = edge(lo, lo - sweep / (ARC_STEPS if whole else steps - 1))
-    if whole or s + n < steps:
-        hi = edge(hi, hi + sweep / (ARC_STEPS if whole else steps - 1))
-    a1 = math.degrees(lo) % 360
-    a2 = a1 + math.degrees(hi - lo)
-    a1, a2 = math.ceil(a1 * 10 - 1e-6) / 10, math.floor(a2 * 10 + 1e-6) / 10
+    step = sweep / (ARC_STEPS if whole else steps - 1)
     name = str(getattr(g, "label", "")).rsplit(".", 1)[-1] or "mark"
+    arcs = []
+    # each clear run an arc (run cs's feeder: a ring across two mortises was offered the
+    # longer half only, and the arc pasted dropped the other), the longest first
+    for k, (n, s) in enumerate(sorted(runs, key=lambda q: (-q[0], q[1]))[:4]):
+        lo, hi = t[order[s]], t[order[s + n - 1]]
+        if hi < lo:
+            hi += 2 * math.pi
+        if whole or s > 0:             # a blocked sample before the run (a circle: always)
+            lo = edge(lo, lo - step)
+        if whole or s + n < steps:
+            hi = edge(hi, hi + step)
+        a1 = math.degrees(lo) % 360
+        a2 = a1 + math.degrees(hi - lo)
+        a1, a2 = math.ceil(a1 * 10 - 1e-6) / 10, math.floor(a2 * 10 + 1e-6) / 10
+        arcs.append(f"`{name if k == 0 else f'{name}_{k + 1}'} = Arc(center=({cx:.6g} mm, "
+                    f"{cy:.6g} mm), radius={r:.6g} mm, start_angle={a1:g} deg, "
+                    f"end_angle={a2:g} deg)`")
     what = "circle" if whole else "arc"
-    return (f"to stop the {what} at the cut, engrave the arc on the material instead: `{name} = "
-            f"Arc(center=({cx:.6g} mm, {cy:.6g} mm), radius={r:.6g} mm, start_angle={a1:g} deg, "
-            f"end_angle={a2:g} deg)` (the {what}'s center and radius, counter-clockwise, "
+    return (f"to stop the {what} at the cut, engrave "
+            + (f"the arc on the material instead: {arcs[0]}" if len(arcs) == 1 else
+               f"the {len(arcs)} arcs on the material instead: " + ", ".join(arcs[:-1])
+               + f" and {arcs[-1]}")
+            + f" (the {what}'s center and radius, counter-clockwise, "
             f"{2 * CUT_CLEAR:g} mm clear of the cut)")
 
 
