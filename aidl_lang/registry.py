@@ -111,9 +111,8 @@ RECT_MEMBERS = {"top_left": "point", "top_right": "point", "bottom_left": "point
                 "bb": "bbox"}
 POLY_MEMBERS = {"points": "points", "edges": "lines", "center": "point", "centroid": "point",
                 "bb": "bbox"}
-# a RegularPolygon's sizes as its forms take them (run ck: `hex.side` was E0102)
 REGPOLY_MEMBERS = POLY_MEMBERS | {"radius": "length", "diameter": "length", "side": "length",
-                                  "across_flats": "length", "apothem": "length"}
+                                  "across_flats": "length", "apothem": "length"}  # run ck
 TRI_MEMBERS = {"a": "point", "b": "point", "c": "point", "points": "points",
                "ab": "line", "bc": "line", "ca": "line", "edges": "lines", "center": "point",
                "centroid": "point", "incenter": "point", "inradius": "length", "bb": "bbox",
@@ -133,8 +132,7 @@ ARCSLOT_MEMBERS = {"center": "point", "start": "point", "end": "point", "midpoin
 SECTOR_MEMBERS = ARCSLOT_MEMBERS
 DERIVED_MEMBERS = {"bb": "bbox"}
 HULL_MEMBERS = {"bb": "bbox", "center": "point"}     # center: its box's (issue 105)
-# an Offset's, Inset's or Shell's center: its shape's (a ring's circle's), else its box's
-GROWN_MEMBERS = {"bb": "bbox", "center": "point"}
+GROWN_MEMBERS = HULL_MEMBERS    # an Offset's or Shell's center: its shape's, else its box's
 SPLINE_MEMBERS = {"points": "points", "start": "point", "end": "point", "bb": "bbox"}
 BBOX_MEMBERS = {"left": "coordinate", "right": "coordinate", "top": "coordinate",
                 "bottom": "coordinate", "width": "length", "height": "length",

@@ -45,12 +45,19 @@ def points_of(g: Geometry) -> list:
 
 
 _REGULAR = ("side", "across_flats", "apothem")
+# shapes whose points are numbered `p0`, `p1`, ... inside (their members are `points[i]`)
+_NUMBERED = ("Polygon", "RegularPolygon", "Star", "Spline", "Polyline", "Bezier")
 
 
-def _regular_size(g: Geometry, name: str, own) -> Q:
-    """A RegularPolygon's ``side``, ``across_flats`` or ``apothem`` (center to a side's
-    middle), mm, from its radius (center to a vertex) and its number of sides: the sizes its
-    other forms take (issue 111, run ck: `hex.side` was E0102)."""
+def _sizes(g: Geometry, name: str, own, frame):
+    """An Offset's or Shell's ``center``: its shape's (run cn: a ring, `Shell(Circle(...),
+    3)`, in `Concentric` was E0108 "got Shell"; None for a shape with none, the interpreter
+    gives its box's).  A RegularPolygon's ``side``, ``across_flats`` or ``apothem`` (center
+    to a side's middle), mm, from its radius (center to a vertex) and its number of sides:
+    the sizes its other forms take (issue 111, run ck: `hex.side` was E0102)."""
+    if g.kind != "RegularPolygon":
+        src = (g.data.get("sources") or [None])[0]
+        return member(src, name, frame) if src is not None else None
     half = math.pi / len(points_of(g))
     f = {"side": 2 * math.sin(half), "across_flats": 2 * math.cos(half),
          "apothem": math.cos(half)}[name]
@@ -60,10 +67,7 @@ def _regular_size(g: Geometry, name: str, own) -> Q:
 def member(g: Geometry, name: str, frame):
     """Value of ``g.name`` seen from structure ``frame``; None if there is no such member."""
     k = g.kind
-    if name in g.points and not (k in ("Polygon", "RegularPolygon", "Star", "Spline",
-                                       "Polyline", "Bezier")
-                                 and name.startswith("p")
-                                 and name[1:].isdigit()):
+    if name in g.points and not (k in _NUMBERED and name[:1] == "p" and name[1:].isdigit()):
         return _pv(g.points[name], frame)
     own = g.owner.owner_set()
     if name in g.parts:
@@ -143,13 +147,9 @@ def member(g: Geometry, name: str, frame):
             return [GeomRef(e) for e in g.data["edges"]]
     if k == "Ellipse" and name in ("rx", "ry"):
         return Q(var(g.scalars[name].index), LEN, own)
-    if k in ("Offset", "Shell") and name == "center":
-        # its shape's center (run cn: a ring, `Shell(Circle(...), 3)`, in `Concentric` was
-        # E0108 "got Shell"); None for a shape with none (the interpreter gives its box's)
-        src = (g.data.get("sources") or [None])[0]
-        return member(src, name, frame) if src is not None else None
-    if k == "RegularPolygon" and name in _REGULAR and "radius" in g.scalars:
-        return _regular_size(g, name, own)
+    if (k in ("Offset", "Shell") and name == "center") or (
+            k == "RegularPolygon" and name in _REGULAR and "radius" in g.scalars):
+        return _sizes(g, name, own, frame)
     if k in ("Polygon", "RegularPolygon", "Triangle", "Star"):
         pts = points_of(g) if k != "Triangle" else [g.points[n] for n in ("a", "b", "c")]
         if name in ("points", "vertices", "corners"):

@@ -19,6 +19,7 @@ from ....base.diagnostics import DiagnosticSink
 from ...part.build.booleans import Drawing
 from ..common import _edges, _inside, _part_of, _pct, _signed, freed_share
 from .allowed import meant_off
+from .arcs import arc_on_material
 from .segments import _crosses, _edge_arrays, _exact_circle_gaps, _pair_gap
 
 ENGRAVE_TOL = 0.05       # mm: engraving this close to an edge still counts as on the material
@@ -277,7 +278,7 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         if where in ("across a hole", "across an opening"):
             hint = (f"it crosses {', '.join(holes) if holes else 'an opening'}: shrink or move "
                     "the drawing clear of it, or move the hole")
-        arc = _arc_on_material(g, items, roots[part])
+        arc = arc_on_material(g, items, roots[part], _within, CUT_CLEAR)
         if arc:
             hint = f"{arc}; or {hint}"
         if g.kind != "Text":        # (letters off the material are a slip, never meant)
@@ -306,6 +307,42 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
                          (loops or {}).get(part), sink)
         texts.append((part, [(g, it) for g, it in geoms if g not in warned and g.kind == "Text"]))
     return texts
+
+
+def _off_outline_hint(d: Drawing, part, g, pts: np.ndarray, off: np.ndarray) -> str:
+    """W0505's hint for engraving ``g`` of ``part`` off its outline (``pts``: its samples,
+    n x 2 mm; ``off``: those off the material): where it leaves (the off sample nearest their
+    middle, mm), and a constraint only where one mends it: the mark reaches past the box of
+    the part's largest own shape, and fits in it with :data:`CUT_CLEAR` to spare, so
+    `Inside(d.mark, body, margin=0.5 mm)` (the names as written in the part) moves it onto
+    the material, clear of the cut; a mark larger than that shape is told to shrink.
+    Before (issue 84): "e.g. `Inside(label, body)`" named shapes the program did not have,
+    was offered for a knight's mane crossing the outline inside the box (which no box
+    constraint mends), and, made as `Inside(d.mark, body)`, set the mark on the cut edge
+    (W0516 again); made with `self` it conflicted (E0401)."""
+    label, prefix = getattr(g, "label", ""), part.path + "."
+    p = off[int(np.argmin(np.hypot(*(off - off.mean(axis=0)).T)))]
+    hint = (f"it leaves the material at about ({p[0]:.2f}, {p[1]:.2f}): move, shrink or "
+            f"redraw `{label.rsplit('.', 1)[-1]}` so that it lies on the material, or move "
+            "the part's edge")
+    if not label.startswith(prefix):
+        return hint
+    found = _drawn_over(d, part, pts)
+    if found is None:
+        return hint
+    name, (x0, y0, x1, y1) = found
+    lo, hi = off.min(axis=0), off.max(axis=0)
+    if not (lo[0] < x0 - ENGRAVE_TOL or lo[1] < y0 - ENGRAVE_TOL or hi[0] > x1 + ENGRAVE_TOL
+            or hi[1] > y1 + ENGRAVE_TOL):
+        return hint             # it crosses the outline inside the box: no box constraint mends it
+    w, h = np.ptp(pts[:, 0]), np.ptp(pts[:, 1])
+    if w + 2 * CUT_CLEAR > x1 - x0 or h + 2 * CUT_CLEAR > y1 - y0:
+        return (f"shrink the drawing to fit on `{name}`, or move it onto the material "
+                f"({hint})")
+    mark = label[len(prefix):]
+    return (f"{hint}; or constrain it onto the material: `Inside({mark}, {name}, "
+            f"margin={CUT_CLEAR} mm)` in `{part.path}` (its box inside `{name}`'s, "
+            f"{CUT_CLEAR} mm clear of the cut)")
 
 
 def _allow_call(g, part) -> str:
@@ -452,125 +489,6 @@ def _text_off(d: Drawing, roots, part, g, items, pts, inside, in_outline, tick=N
             return share, (f"{fit}; or, if no other relation places it, "
                            f"{other[other.index('constrain it onto'):]}")
     return share, f"{fit}; or move it where it has room"
-
-
-ARC_STEPS = 1440          # samples of an engraved circle when W0505 offers the arc on the material
-ARC_LEAST = math.radians(30)    # the arc offered is at least this long
-
-
-def _arc_on_material(g, items, shape) -> str | None:
-    """W0505's fix for an engraved Circle (or Arc) that crosses its part's outline or a hole
-    (a ring that meets a notch in the rim, issue 105): the longest arc of it on the
-    material, clear of the cut by ``2 CUT_CLEAR``, as the ``Arc(center=, radius=,
-    start_angle=, end_angle=)`` that replaces it (mm and degrees, counter-clockwise, ends
-    rounded inward to 0.1 deg); None for another shape, or when no such arc of at least
-    :data:`ARC_LEAST` is left."""
-    kind = getattr(g, "kind", None)
-    if len(items) != 1 or (kind, items[0][0]) not in (("Circle", "circle"), ("Arc", "arc")):
-        return None
-    (cx, cy), r = items[0][1], float(items[0][2])
-    if not r > 0:
-        return None
-    whole = kind == "Circle"
-    a0, sweep = (0.0, 2 * math.pi) if whole else \
-        (float(items[0][3]), (float(items[0][4]) - float(items[0][3])) % (2 * math.pi) or 2 * math.pi)
-    loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
-    edges = _edges(loops)
-    steps = ARC_STEPS if whole else max(8, int(ARC_STEPS * sweep / (2 * math.pi)) + 1)
-    t = a0 + np.arange(steps) * (sweep / (ARC_STEPS if whole else steps - 1))
-    pts = np.column_stack([cx + r * np.cos(t), cy + r * np.sin(t)])
-    clear = _inside(pts, edges) & ~_within(pts, edges, 2 * CUT_CLEAR)
-    if clear.all() or not clear.any():
-        return None
-    k0 = int(np.argmin(clear)) if whole else 0       # a circle: start at an off sample
-    order = np.roll(np.arange(steps), -k0)
-    runs, run, start = [], 0, 0          # every clear run: (length, start)
-    for i, k in enumerate(order):
-        if clear[k]:
-            if run == 0:
-                start = i
-            run += 1
-        elif run:
-            runs.append((run, start))
-            run = 0
-    if run:
-        runs.append((run, start))
-    runs = [(n, s) for n, s in runs if n >= 2 and (n - 1) * 2 * math.pi / ARC_STEPS >= ARC_LEAST]
-    if not runs:
-        return None
-
-    def ok(th: float) -> bool:
-        p = np.array([[cx + r * math.cos(th), cy + r * math.sin(th)]])
-        return bool(_inside(p, edges)[0] and not _within(p, edges, 2 * CUT_CLEAR)[0])
-
-    def edge(good: float, bad: float) -> float:
-        """The clear end between a clear angle and a blocked one (bisected to 1e-9 rad)."""
-        for _ in range(40):
-            m = (good + bad) / 2
-            good, bad = (m, bad) if ok(m) else (good, m)
-        return good
-    step = sweep / (ARC_STEPS if whole else steps - 1)
-    name = str(getattr(g, "label", "")).rsplit(".", 1)[-1] or "mark"
-    arcs = []
-    # each clear run an arc (run cs's feeder: a ring across two mortises was offered the
-    # longer half only, and the arc pasted dropped the other), the longest first
-    for k, (n, s) in enumerate(sorted(runs, key=lambda q: (-q[0], q[1]))[:4]):
-        lo, hi = t[order[s]], t[order[s + n - 1]]
-        if hi < lo:
-            hi += 2 * math.pi
-        if whole or s > 0:             # a blocked sample before the run (a circle: always)
-            lo = edge(lo, lo - step)
-        if whole or s + n < steps:
-            hi = edge(hi, hi + step)
-        a1 = math.degrees(lo) % 360
-        a2 = a1 + math.degrees(hi - lo)
-        a1, a2 = math.ceil(a1 * 10 - 1e-6) / 10, math.floor(a2 * 10 + 1e-6) / 10
-        arcs.append(f"`{name if k == 0 else f'{name}_{k + 1}'} = Arc(center=({cx:.6g} mm, "
-                    f"{cy:.6g} mm), radius={r:.6g} mm, start_angle={a1:g} deg, "
-                    f"end_angle={a2:g} deg)`")
-    what = "circle" if whole else "arc"
-    return (f"to stop the {what} at the cut, engrave "
-            + (f"the arc on the material instead: {arcs[0]}" if len(arcs) == 1 else
-               f"the {len(arcs)} arcs on the material instead: " + ", ".join(arcs[:-1])
-               + f" and {arcs[-1]}")
-            + f" (the {what}'s center and radius, counter-clockwise, "
-            f"{2 * CUT_CLEAR:g} mm clear of the cut)")
-
-
-def _off_outline_hint(d: Drawing, part, g, pts: np.ndarray, off: np.ndarray) -> str:
-    """W0505's hint for engraving ``g`` of ``part`` off its outline (``pts``: its samples,
-    n x 2 mm; ``off``: those off the material): where it leaves (the off sample nearest their
-    middle, mm), and a constraint only where one mends it: the mark reaches past the box of
-    the part's largest own shape, and fits in it with :data:`CUT_CLEAR` to spare, so
-    `Inside(d.mark, body, margin=0.5 mm)` (the names as written in the part) moves it onto
-    the material, clear of the cut; a mark larger than that shape is told to shrink.
-    Before (issue 84): "e.g. `Inside(label, body)`" named shapes the program did not have,
-    was offered for a knight's mane crossing the outline inside the box (which no box
-    constraint mends), and, made as `Inside(d.mark, body)`, set the mark on the cut edge
-    (W0516 again); made with `self` it conflicted (E0401)."""
-    label, prefix = getattr(g, "label", ""), part.path + "."
-    p = off[int(np.argmin(np.hypot(*(off - off.mean(axis=0)).T)))]
-    hint = (f"it leaves the material at about ({p[0]:.2f}, {p[1]:.2f}): move, shrink or "
-            f"redraw `{label.rsplit('.', 1)[-1]}` so that it lies on the material, or move "
-            "the part's edge")
-    if not label.startswith(prefix):
-        return hint
-    found = _drawn_over(d, part, pts)
-    if found is None:
-        return hint
-    name, (x0, y0, x1, y1) = found
-    lo, hi = off.min(axis=0), off.max(axis=0)
-    if not (lo[0] < x0 - ENGRAVE_TOL or lo[1] < y0 - ENGRAVE_TOL or hi[0] > x1 + ENGRAVE_TOL
-            or hi[1] > y1 + ENGRAVE_TOL):
-        return hint             # it crosses the outline inside the box: no box constraint mends it
-    w, h = np.ptp(pts[:, 0]), np.ptp(pts[:, 1])
-    if w + 2 * CUT_CLEAR > x1 - x0 or h + 2 * CUT_CLEAR > y1 - y0:
-        return (f"shrink the drawing to fit on `{name}`, or move it onto the material "
-                f"({hint})")
-    mark = label[len(prefix):]
-    return (f"{hint}; or constrain it onto the material: `Inside({mark}, {name}, "
-            f"margin={CUT_CLEAR} mm)` in `{part.path}` (its box inside `{name}`'s, "
-            f"{CUT_CLEAR} mm clear of the cut)")
 
 
 def _drawn_over(d: Drawing, part, pts: np.ndarray):
