@@ -1134,9 +1134,10 @@ above its plate) is the template's design and not reported. A part with no `Plac
 note: the parts are cut as drawn either way, and `Place` puts it in the assembled product.
 A placed part 5 mm or more from every other (carried by an axle, hooks, hardware) is a note
 too, and so is one with a round hole whose axis, assembled, runs through a round hole of
-another part (within 0.05 mm; holes at most 26 mm across, one at most three times the other,
-in planes up to 150 mm apart): a pin, an axle or a bolt holds it and its gap is play (a boom
-on a dowel between its uprights, a toy's wheels on their axles).
+the part it comes nearest (within 0.05 mm; holes at most 26 mm across, one at most three times
+the other, in planes up to 150 mm apart; a part with more than 200 such circles is not looked
+at): a pin, an axle or a bolt holds it and its gap is play (a boom on a dowel between its
+uprights, a toy's wheels on their axles).
 
     thickness 3 mm
     assembly kit {

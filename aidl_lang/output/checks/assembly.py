@@ -111,7 +111,7 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                     f"the parts are cut as drawn either way; to put `{short}` in the "
                     f"assembled product (3D views, 3MF, the fit check), give it "
                     f"`Place({short}, ...)`")
-        elif (pin := pins.through(g.part)) is not None:
+        elif (pin := pins.through(g.part, g.nearest)) is not None:
             # a pivot: a round hole of it on one axis with another part's (run cn: a boom
             # with 0.6 mm of play each side of a dowel through it and its uprights; "move it
             # 0.6 mm" would have made it rub)
@@ -220,17 +220,25 @@ PIN_MAX = 26.0
 # mm: the farthest apart along the pin two of its holes stand (a dowel axle between a toy's
 # frames; two holes in one plane are one place, not a pin)
 PIN_SPAN = 150.0
+# the most round holes of a part looked at as pins (each is one small boolean)
+PIN_HOLES = 200
 
 
 class _Pins:
     """The round holes of the parts of ``d`` on the assembled product's axes (the sheet's
-    circles with no material of the part whose box holds them a tenth in from their rim, placed
-    by its ``Place``), found for a part when first asked: :meth:`through` says whether a hole of a
-    part lines up with one of another part (a pivot, an axle: W0518 is then a note)."""
+    circles at most :data:`PIN_MAX` across with no material of the part whose box holds them
+    a tenth in from their rim, placed by its ``Place``), found for a part when first asked:
+    :meth:`through` says whether a hole of a part lines up with one of the part it comes
+    nearest (a pivot, an axle: W0518 is then a note).  A part with more than
+    :data:`PIN_HOLES` such circles in its box is not looked at (its W0518 stays a warning):
+    the probes are one small boolean each."""
 
     def __init__(self, d: Drawing):
+        import numpy as np
         self.d = d
         self.axes: dict = {}
+        c = np.array(d.circles, dtype=float).reshape(-1, 3)
+        self.circles = c[(c[:, 2] > 0) & (2 * c[:, 2] <= PIN_MAX)]
 
     def _holes(self, name: str):
         """Part ``name``'s round holes assembled: (centres n x 3, axis 3, diameters n)."""
@@ -243,10 +251,10 @@ class _Pins:
             out = None
             if part is not None and M is not None and not part.shape.is_empty():
                 x0, y0, x1, y1 = part.shape.bounds()
+                C = self.circles
+                C = C[(C[:, 0] > x0) & (C[:, 0] < x1) & (C[:, 1] > y0) & (C[:, 1] < y1)]
                 got = []
-                for cx, cy, r in d.circles:
-                    if not (x0 < cx < x1 and y0 < cy < y1) or r <= 0:
-                        continue
+                for cx, cy, r in (C if len(C) <= PIN_HOLES else ()):
                     e = min(r / 8, 1e-3)  # no material a tenth in from its rim: a hole (the
                     #                            meshed circle's chords lie inside the rim)
                     probes = mf.CrossSection.compose([
@@ -263,29 +271,24 @@ class _Pins:
             self.axes[name] = out
         return self.axes[name]
 
-    def through(self, name: str):
-        """``(other part, hole diameter mm)`` for a round hole of part ``name`` whose axis,
-        assembled, runs within :data:`PIN_AXIS` of a round hole's of another part, both axes
-        parallel, in two planes at most :data:`PIN_SPAN` apart along it, both holes at most
-        :data:`PIN_MAX` across, one at most three times the other; else None."""
+    def through(self, name: str, nearest: str):
+        """``(nearest, hole diameter mm)`` for a round hole of part ``name`` whose axis,
+        assembled, runs within :data:`PIN_AXIS` of a round hole's of part ``nearest``, both
+        axes parallel, in two planes at most :data:`PIN_SPAN` apart along it, the larger hole
+        at most three times the other; else None."""
         import numpy as np
-        mine = self._holes(name)
-        if mine is None:
+        mine, theirs = self._holes(name), self._holes(nearest)
+        if mine is None or theirs is None:
             return None
         c, z, dia = mine
-        for p in self.d.parts:
-            if p.name == name:
-                continue
-            theirs = self._holes(p.name)
-            if theirs is None or np.linalg.norm(np.cross(z, theirs[1])) > 1e-6:
-                continue
-            rel = theirs[0][None, :, :] - c[:, None, :]          # mine x theirs x 3
-            off = rel - (rel @ z)[:, :, None] * z                # off the axis
-            near = np.argwhere(np.linalg.norm(off, axis=2) <= PIN_AXIS)
-            along = np.abs(rel @ z)
-            for i, j in near:               # a pin's holes: in two planes, PIN_MAX at most
-                a, b = float(dia[i]), float(theirs[2][j])
-                if max(a, b) <= PIN_MAX and max(a, b) <= 3 * min(a, b) \
-                        and 1e-3 < along[i, j] <= PIN_SPAN:
-                    return p.name, a
+        if np.linalg.norm(np.cross(z, theirs[1])) > 1e-6:
+            return None
+        rel = theirs[0][None, :, :] - c[:, None, :]          # mine x theirs x 3
+        off = rel - (rel @ z)[:, :, None] * z                # off the axis
+        near = np.argwhere(np.linalg.norm(off, axis=2) <= PIN_AXIS)
+        along = np.abs(rel @ z)
+        for i, j in near:                   # a pin's holes: in two planes, alike enough
+            a, b = float(dia[i]), float(theirs[2][j])
+            if max(a, b) <= 3 * min(a, b) and 1e-3 < along[i, j] <= PIN_SPAN:
+                return nearest, a
         return None
