@@ -210,7 +210,9 @@ class Checker:
                     if p.default is not None:
                         self.expr(p.default, fscope)
                 tscope = _Scope(fscope, names | self.block_names(st.body.stmts) | {st.name})
+                self.bodies.append(st.body.stmts)      # an assert's names: the template's
                 self.stmts(st.body.stmts, tscope)
+                self.bodies.pop()
             elif isinstance(st, A.Func):
                 for p in st.params:
                     if p.default is not None:

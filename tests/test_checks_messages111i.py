@@ -557,3 +557,26 @@ def test_the_assembled_picture_marks_only_what_W0517_says():
     assert n == 0 and "W0517" not in [d.code for d in ramp.diagnostics]
     n, pizza = red("issue111cm", "05_pizza_stand")
     assert n > 100 and "W0517" in [d.code for d in pizza.diagnostics]
+
+
+def test_an_assert_in_a_template_reads_only_the_templates_children():
+    """An assert in a template's body reaches into the template's own structures, never a
+    structure of the file that happens to bind the name."""
+    src = """def rack() -> solid {
+    r = Rectangle(center=(0, 0), width=60, height=20)
+    hole h { bays = [Circle(center=(-20 + 20 * i, 0), radius=3) for i in range(3)] }
+    assert len(bays) == 3
+}
+assembly shop {
+    a = rack()
+    solid other {
+        q = Rectangle(center=(100, 0), width=10, height=10)
+        hole k { bays = [Circle(center=(100, 0), radius=1)] }
+    }
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok and not _errors(r), [d.message for d in _errors(r)]
+    bad = aidl_lang.compile(source=src.replace("assert len(bays) == 3", "assert len(bays) == 1"))
+    (e,) = _errors(bad)
+    assert e.code == "E0405" and "3 == 1 is false" in e.message
