@@ -44,7 +44,7 @@ constants `NAME = expr`, functions `def f(v) = 225 deg - v * 27 deg` (one line, 
 `for i in range(n) { ... }` (a name set in a loop: the current copy inside, the list after:
 `knob[0]`; nested loops: `dia[i][j]`; a relation per copy, labels on holes:
 `for i in range(4) { At(names.t[i].position, holes.c[i].center, dy=-8) }`),
-`if c { } else { }`, `[f(i) for i in xs]`. Operators: `+ - * / % **`, `//` (floor division),
+`if c { } else { }`, `[f(i) for i in xs]`, `xs + ys` (lists join). Operators: `+ - * / % **`, `//` (floor division),
 comparisons, `and or not`, `a if c else b`; `range(start, stop, step)`. A statement ends at
 the line break: continue a long one inside `( )` or `[ ]`, or end the line with `,` or an operator (`and`, `+`) and indent the next deeper. Comments start with `#` (not `//`). Numbers take units (`5 mm`, `2 in`, `30 deg`); a bare
 number is a length in the file unit or an angle in degrees (but `sin`/`cos`/`tan` read
