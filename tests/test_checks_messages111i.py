@@ -169,7 +169,7 @@ def test_W0511_says_placed_parts_laid_on_each_other_on_the_flat_drawing():
     path = RUNS / "issue111ci/run/04_cat_cot.first_valid.aidl"
     r = aidl_lang.compile(path=str(path))
     (w,) = [d for d in r.diagnostics if d.code == "W0511"]
-    assert "parts `cot.top` and `cot.leg_b` lie on each other on the flat drawing" in w.message
+    assert "parts `cot.top` and `cot.leg_b` overlap on the flat drawing" in w.message
     assert "RightOf(leg_b, top, gap=5 mm)" in w.hint
     src = path.read_text()
     fixed = src.replace("    leg_b = leg(from_top=false)\n",
@@ -199,6 +199,7 @@ def test_W0511_names_every_placed_part_of_a_stacked_assembly_once():
     r = aidl_lang.compile(path=str(RUNS / "issue84b/run/08_bird_house.aidl"))
     (w,) = [d for d in r.diagnostics if d.code == "W0511"]
     assert w.message.startswith("7 parts, `house.floor`, `house.front`, `house.back`")
+    assert "overlap (20 pairs) on the flat drawing" in w.message
     assert "(20 pairs)" in w.message
 
 
@@ -580,3 +581,38 @@ assembly shop {
     bad = aidl_lang.compile(source=src.replace("assert len(bays) == 3", "assert len(bays) == 1"))
     (e,) = _errors(bad)
     assert e.code == "E0405" and "3 == 1 is false" in e.message
+
+
+def test_W0511_of_placed_parts_is_one_warning_whatever_the_overlap():
+    """Run cz's parts bin: five placed parts drawn over one another on the sheet gave three
+    W0511, two of them (overlaps under a quarter) offering `AllowOverlap(left_side, floor)`,
+    which would have silenced a real defect. One warning names all ten pairs."""
+    r = aidl_lang.compile(path=str(RUNS / "issue111cz/run/01_parts_bin.first_valid.aidl"))
+    (w,) = [d for d in r.diagnostics if d.code == "W0511"]
+    assert "5 parts," in w.message and "(10 pairs) on the flat drawing" in w.message
+    assert w.hint.startswith("lay them side by side on the sheet")
+
+
+def test_a_clockwise_three_point_arc_keeps_its_ends_names():
+    """Run db's microphone flag: a crescent of `Arc(start=, through=, end=)` written clockwise
+    and its partner, tied `Coincident(outer.end, inner.start)` where the program's points
+    already meet, came out at radius 11.05 for 15, unsaid: a clockwise arc is drawn from its
+    end, and its members `start`/`end` were the drawn ones, so the constraint tied two points
+    26 mm apart. The members are the points as the program names them."""
+    src = """solid p {
+    c = Circle(center=(0, 0), radius=30)
+    hole m {
+        outer = Arc(start=(12.99, 7.5), through=(0, -15), end=(-12.99, 7.5))
+        inner = Arc(start=(-12.99, 7.5), through=(0, -6), end=(12.99, 7.5))
+        Coincident(outer.end, inner.start)
+        Coincident(inner.end, outer.start)
+        Rigid(self)
+    }
+    assert abs(m.outer.radius - 15 mm) < 0.01 mm and abs(m.inner.radius - 13 mm) < 0.01 mm
+    assert m.outer.start.x == 12.99 mm and m.outer.end.x == -12.99 mm
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok and not _errors(r), [d.message for d in _errors(r)]
+    outs = [o for q in r.description["parts"] for o in q["openings"]]
+    assert len(outs) == 1

@@ -937,9 +937,9 @@ one are taken as laid on each other in the assembly view (a gear drawn on its mo
 clock's hands) and not warned: parts meant to mesh or touch collide at their rims. Except
 where each of the two parts is placed in 3D by a `Place` of its own (or of an assembly that
 holds it, below the one that holds both): then the assembled view is the 3D one and the flat
-drawing is the parts to cut, so parts laid on each other there would be cut through each other
-(issue 111: a cat cot's leg drawn on its top). One warning per assembly names every such part
-("7 parts, ... lie on each other (20 pairs)"); its hint lays them side by side with a relation
+drawing is the parts to cut, so parts that overlap there, by any share, would be cut through
+each other (issue 111: a cat cot's leg drawn on its top). One warning per assembly names every
+such part ("7 parts, ... overlap (20 pairs)"); its hint lays them side by side with a relation
 (`RightOf(front, floor, gap=5 mm)`: a relation moves a placed part on the sheet, not in 3D) or
 cuts them with `aidl render --layout sheet`.
 

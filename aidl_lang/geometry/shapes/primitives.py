@@ -127,6 +127,10 @@ def _build_Arc(ctx, g, a):
             ctx.internal(g, [Equation(rt - rs)], "Arc through three points")
             if cw:          # counter-clockwise from start to end must pass through `through`
                 g.points["start"], g.points["end"] = e, s
+                # its members `start` and `end` stay the points the program named so (run db:
+                # `Coincident(outer.end, inner.start)` on the drawn ends tied two points 26 mm
+                # apart and bent the arc to radius 11 for 15, unsaid)
+                g.data["named_ends"] = {"start": s, "end": e}
         rs = hypot(var(s.ix) - var(c.ix), var(s.iy) - var(c.iy))
         re = hypot(var(e.ix) - var(c.ix), var(e.iy) - var(c.iy))
         ctx.internal(g, [Equation(rs - re)], "Arc start and end on one circle")

@@ -81,9 +81,10 @@ def _check_interpenetration(d: Drawing, roots, sink: DiagnosticSink, deadline=No
         while home is not None and not b.is_within(home):
             home = home.parent
         ra, rb = (x.path[len(home.path) + 1:] if home is not None else x.name for x in (a, b))
+        if _placed_apart(a, b, home):   # overlapping on the sheet, each placed in 3D: one
+            stacked.setdefault(id(home), []).append((a, b, ra, rb, area))   # warning for all
+            continue              # (run cz: three, two of them offering AllowOverlap)
         if area > STACKED * min(_area(sa), _area(sb)):
-            if _placed_apart(a, b, home):
-                stacked.setdefault(id(home), []).append((a, b, ra, rb, area))
             continue              # laid one on the other (a gear on its plate, clock hands)
         depth = _depth(common, boxes[i], boxes[j])
         labels = [Label(a.span, f"`{a.path}` is here", primary=False)] if a.span else []
@@ -130,8 +131,8 @@ def _stacked_placed(sink: DiagnosticSink, pairs: list) -> None:
             if s not in names:
                 names.append(s)
     shown = [f"`{s.path}`" for s in names]
-    who = (f"parts {shown[0]} and {shown[1]} lie on each other" if len(pairs) == 1 else
-           f"{len(names)} parts, {', '.join(shown[:-1])} and {shown[-1]}, lie on each other "
+    who = (f"parts {shown[0]} and {shown[1]} overlap" if len(pairs) == 1 else
+           f"{len(names)} parts, {', '.join(shown[:-1])} and {shown[-1]}, overlap "
            f"({len(pairs)} pairs)")
     most = max(p[4] for p in pairs)
     labels = [Label(s.span, f"`{s.path}` is here", primary=False)
