@@ -616,3 +616,16 @@ def test_a_clockwise_three_point_arc_keeps_its_ends_names():
     assert r.ok and not _errors(r), [d.message for d in _errors(r)]
     outs = [o for q in r.description["parts"] for o in q["openings"]]
     assert len(outs) == 1
+
+
+def test_a_point_is_indexed_as_its_pair():
+    """Run da's yule log: `p[0]` of a point was E0111 "a point cannot be indexed" (the hint
+    said only lists are). A point's `[0]` and `[1]` are its x and y."""
+    r = aidl_lang.compile(source="""solid p {
+    c = Circle(center=(3, 4), radius=2)
+    q = c.center
+    d = Circle(center=(q[0] + 1, q[1]), radius=1)
+    assert d.center.x == 4 mm and q[-1] == 4 mm and (5, 6)[0] == 5 mm
+}
+""")
+    assert r.ok and not _errors(r), [d.message for d in _errors(r)]

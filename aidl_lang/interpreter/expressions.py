@@ -281,6 +281,9 @@ class Expressions:
                     return v
         if obj is POISON or idx is POISON:
             raise _Silent()
+        if type(obj) is PV and type(idx) is Q and idx.const() in (0, 1, -1, -2):
+            # `p[0]`, `p[1]`: a point's x and y (run da: E0111 "a point cannot be indexed")
+            return self.member(obj, "x" if idx.const() in (0, -2) else "y", e.span)
         if not isinstance(obj, (list, tuple, str)):
             hint = "only lists (loops, comprehensions, `poly.points`) are indexed"
             if isinstance(e.obj, A.Index) and isinstance(obj, (StructRef, GeomRef)):
