@@ -67,9 +67,8 @@ def _sizes(g: Geometry, name: str, own, frame):
 def member(g: Geometry, name: str, frame):
     """Value of ``g.name`` seen from structure ``frame``; None if there is no such member."""
     k = g.kind
-    named = g.data.get("named_ends") if k == "Arc" else None
-    if named and name in ("start", "end"):     # a clockwise Arc(start, through, end): the
-        return _pv(named[name], frame)          # points as the program named them
+    if k == "Arc" and name in g.data.get("named_ends", ()):   # a clockwise Arc(start,
+        return _pv(g.data["named_ends"][name], frame)          # through, end): as named
     if name in g.points and not (k in _NUMBERED and name[:1] == "p" and name[1:].isdigit()):
         return _pv(g.points[name], frame)
     own = g.owner.owner_set()
