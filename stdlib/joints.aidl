@@ -182,7 +182,7 @@ def cross_halving(depth=20 mm, thickness=3 mm, clearance=0 mm, rotation=0 deg,
 # is cut `thickness` deep, so a "tab" edge mates a "gap" edge of the same
 # length at a corner. Members: `gap` (a list, one shape per gap, within the
 # panel: `gap[0]`; the joint's box, `j.bb`, is theirs), `overrun` (each run
-# 1 mm out past the edge, not along it: drawn, in no box).
+# 1 mm past the edges: drawn, in no box).
 # Anchor: (cx, cy) is the middle of the edge; rotation 0: the edge along x, the cuts toward -y.
 def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotation=0 deg,
                 cx=0 mm, cy=0 mm) -> hole {
@@ -204,6 +204,9 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
             gap = Rectangle(center=(cx + u * c - v * s, cy + u * s + v * c), width=hi - lo,
                             height=t, rotation=rotation)
             Fixed(gap)
+            lo = lo - (1 mm if i == 0 else 0 mm)
+            hi = hi + (1 mm if i == n - 1 else 0 mm)
+            u = (lo + hi) / 2
             v = (1 mm - t) / 2
             overrun = Rectangle(center=(cx + u * c - v * s, cy + u * s + v * c), width=hi - lo,
                                 height=t + 1 mm, rotation=rotation, overrun=true)
@@ -217,10 +220,9 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
 # `part` "tab" cuts the edge of one panel down to `tabs` tabs `tab` wide
 # (`thickness` long, spread evenly over `length`; the panel's edge on the line through
 # (cx, cy), the tabs' tips, the panel below it at rotation 0 (above it: 180 deg): the gaps are cut
-# `thickness` into it; give `length` the whole edge, as the edge beyond it stays
-# uncut and stops the mate; the end gaps are square to the edge, so where the
-# panel's side slopes outward make `length` reach the side `thickness` deep, or a
-# wedge stays, W0507) with a `t_slot` for an M`screw`
+# `thickness` into it; give `length` the whole edge: the end gaps run 1 mm on
+# past `length` along the edge, to cut cleanly through a sloping side, so an edge
+# that goes on beyond the joint is notched 1 mm there) with a `t_slot` for an M`screw`
 # screw and its nut between each two; "slot" cuts the mate: a slot
 # `tab` + `clearance` by `thickness` + `clearance` for each tab and a medium
 # clearance hole for each screw, centred on the line through (cx, cy) where the
@@ -230,8 +232,7 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
 # `thickness` is the other panel's in each half: the slotted panel's for "tab"
 # (how far the tabs stand out), the tab panel's for "slot" (the slot's width).
 # Members: each a list; of part "tab", `gap` (within the panel; one more than
-# tabs), `overrun` (each gap run 1 mm out past the edge, not along it:
-# drawn, in no box) and
+# tabs), `overrun` (each gap run 1 mm past the edges: drawn, in no box) and
 # `nut` (one between each two tabs); of part "slot", `slot` (one per tab, even
 # with `tabs=1`: `j.slot[0].bb`) and `bolt` (one between each two tabs). The
 # whole joint's box is `j.bb` (a tab part's: its gaps' and, with a screw, its
@@ -257,6 +258,9 @@ def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, sc
             gap = Rectangle(center=(cx + u * c - v * s, cy + u * s + v * c), width=hi - lo,
                             height=t, rotation=rotation)
             Fixed(gap)
+            lo = lo - (1 mm if i == 0 else 0 mm)
+            hi = hi + (1 mm if i == tabs else 0 mm)
+            u = (lo + hi) / 2
             v = (1 mm - t) / 2
             overrun = Rectangle(center=(cx + u * c - v * s, cy + u * s + v * c), width=hi - lo,
                                 height=t + 1 mm, rotation=rotation, overrun=true)

@@ -127,17 +127,20 @@ def test_describe_says_where_each_placed_part_faces():
 RUNS = __import__("pathlib").Path(__file__).resolve().parent.parent / "data" / "model_runs"
 
 
-def test_tab_and_slot_leaves_the_edge_beyond_its_length_uncut():
+def test_tab_and_slot_says_its_end_gaps_run_on_past_length():
     """Run bz's flip stop (and run cg's tool rack): the tab joint's end gaps ran 1 mm along the
-    edge past `length`, a 1 x 6 mm notch in the cheek's lip that its docs say "stays uncut".
-    The gaps now end at `length` (their run past the cut goes out through the edge only): the
-    cheek's notches are 5, 10 and 5 mm wide, its area 6 mm^2 more, and the lip keeps its edge."""
+    edge past `length`, a 1 x 6 mm notch in the cheek's lip, against docs that said "the edge
+    beyond it stays uncut". Stopping the gaps at `length` was tried and measured over the
+    corpus: four programs whose panels' sides slope (a camp stool, a step stool, fairy wands,
+    a curtain-pole bracket) then kept horns the run had cut (W0507, W0517), against two
+    notched lips. The run stays; the docs say it and what it does to an edge that goes on."""
+    from aidl_lang.library.reference import lookup_text
+    text = " ".join(lookup_text("tab_and_slot")[0].split())
+    assert "the end gaps run 1 mm on past `length` along the edge" in text
+    assert "an edge that goes on beyond the joint is notched 1 mm there" in text
     r = aidl_lang.compile(path=str(RUNS / "issue111bz/run/01_flip_stop.first_valid.aidl"))
-    doc = r.description
-    left = next(p for p in doc["parts"] if p["name"] == "flip_stop.left")
-    assert [round(n["width"], 9) for n in left["notches"]] == [5, 10, 5]
-    assert [n["center"][0] for n in left["notches"]] == [77.5, 95, 112.5]
-    assert abs(left["area"] - 2906.82) < 0.01
+    left = next(p for p in r.description["parts"] if p["name"] == "flip_stop.left")
+    assert [round(n["width"], 9) for n in left["notches"]] == [6, 10, 6]
 
 
 @pytest.mark.parametrize("deg", [0, 30, 45, 90, 137, 180, 251])
