@@ -118,6 +118,15 @@ def _report(e: ParseError, text: str, path: str, pos: int, sink: DiagnosticSink)
         hint = ("the statement ended early: an operand is missing before the line break; to "
                 "go on with an expression on the next line, end this line with its operator "
                 "(or `,`) and indent the next one deeper, or wrap it in `( )`")
+    lead = re.match(r"\s*(\*\*|//|==|!=|<=|>=|[-+*/%<>]|and\b|or\b)",
+                    text[line_start:line_start + 200])
+    if hint is None and lead is not None and line > 1 and text[:line_start].strip():
+        # run db: `assert (a) - (b)` then `- bar_w == 28 mm, "..."` on the next line: the
+        # statement above ended at its line break, and the error fell on the `,`
+        op = lead.group(1)
+        hint = (f"line {line - 1} ended its statement at the line break, so this line's "
+                f"leading `{op}` starts a new one: end line {line - 1} with the `{op}` (and "
+                "indent this line deeper), or wrap the whole expression in `( )`")
     if tok.type == "_NL":
         width = 1
     sink.error("E0001", f"unexpected {what}" + (f"; {expected}" if expected else ""),
