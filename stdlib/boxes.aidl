@@ -249,7 +249,8 @@ def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thick
 # it; the front and back upright, the sides' top edges outward), the lid above
 # the back as it lies on the box seen from above (its hinge edge, the back, at
 # +y), the cheeks and pins to its right. Members:
-# `bottom`, `front`, `back`, `left`, `right`, `lid`, `cheek`, `pin`.
+# `bottom`, `front`, `back`, `left`, `right`, `lid`, `cheek`, `pin`; the back
+# and the sides hold their finger_panel as panel (its size: b.left.panel.outline).
 # Anchor: (cx, cy) is the centre of `bottom`.
 def hinged_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=10 mm, pin=0 mm,
                clearance=0.3 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {
