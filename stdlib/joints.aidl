@@ -182,7 +182,9 @@ def cross_halving(depth=20 mm, thickness=3 mm, clearance=0 mm, rotation=0 deg,
 # is cut `thickness` deep, so a "tab" edge mates a "gap" edge of the same
 # length at a corner. Members: `gap` (a list, one shape per gap, within the
 # panel: `gap[0]`; the joint's box, `j.bb`, is theirs), `overrun` (each run
-# 1 mm past the edges: drawn, in no box).
+# 1 mm past the edges: drawn, in no box; an end gap runs 1 mm on past the
+# joint's end along the edge, so an edge that goes on beyond the joint is notched
+# 1 mm there: start with "tab" at such an end).
 # Anchor: (cx, cy) is the middle of the edge; rotation 0: the edge along x, the cuts toward -y.
 def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotation=0 deg,
                 cx=0 mm, cy=0 mm) -> hole {
