@@ -663,3 +663,18 @@ def test_E0001_of_a_line_that_starts_with_an_operator_says_where_the_statement_e
                                                       "lower.pivot.c.center.y) -\n           bar_w"),
                               path=str(path))
     assert "E0001" not in [d.code for d in fixed.diagnostics]
+
+
+def test_E0102_of_a_member_another_form_has_says_so():
+    """Run dd's boat name board: `arc.through` of an Arc drawn from its center and angles was
+    E0102 with the hint "did you mean `through`?", the name it refused. The hint says the
+    member belongs to the forms that take it and lists this one's, `midpoint` among them."""
+    r = aidl_lang.compile(source="""solid p {
+    a = Arc(center=(0, 0), radius=10, start_angle=0 deg, end_angle=90 deg)
+    q = a.through
+}
+""")
+    (e,) = _errors(r)
+    assert e.code == "E0102" and "did you mean" not in e.hint
+    assert e.hint.startswith("`through` is a member of the forms that take it; this Arc has")
+    assert "`midpoint`" in e.hint and "`through`," not in e.hint

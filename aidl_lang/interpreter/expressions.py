@@ -228,9 +228,16 @@ class Expressions:
             if v is not None:
                 return v
             cands = member_names(g)
-            sugg = did_you_mean(name, cands)
+            sugg = [c for c in did_you_mean(name, cands) if c != name]
+            # run dd: "a Arc has no member `through`... did you mean `through`?" for an Arc
+            # drawn from its center and angles (the member of the three-point form)
+            form = (f"`{name}` is a member of the forms that take it; this {g.kind} has "
+                    + (", ".join(f"`{c}`" for c in cands if c != name) or "none")
+                    + (" (`midpoint`: the point halfway along)" if g.kind == "Arc" else "")
+                    ) if name in (lookup(g.kind).members if lookup(g.kind) else ()) else None
             raise EvalError("E0102", f"a {g.kind} has no member `{name}`", span,
-                            hint=f"did you mean `{sugg[0]}`?" if sugg else f"its members: {', '.join(cands)}",
+                            hint=form or (f"did you mean `{sugg[0]}`?" if sugg else
+                                          f"its members: {', '.join(cands)}"),
                             suggestions=sugg)
         if isinstance(obj, BBoxRef):
             t = obj.target
