@@ -478,8 +478,9 @@ def test_a_finger_boxs_walls_show_their_engraving_outside():
     r = aidl_lang.compile(source='import "std/joints.aidl"\nthickness 3 mm\n'
                                  'assembly kit { b = finger_box(cx=30 mm, cy=-20 mm) }\n')
     assert r.ok and not r.diagnostics and r.fit["collisions"] == []
+    rows = [q for p in r.description["parts"] for q in [p, *p["copies"]]]   # back: a copy
     faces = {p["name"].split(".")[-1]: (p["assembled"]["top_face"], p["assembled"]["box"])
-             for p in r.description["parts"]}
+             for p in rows}
     assert {k: v[0] for k, v in faces.items()} == {
         "bottom": "up (+z)", "front": "front (-y)", "back": "back (+y)", "left": "left (-x)",
         "right": "right (+x)", "lid": "up (+z)"}
@@ -678,3 +679,25 @@ def test_E0102_of_a_member_another_form_has_says_so():
     assert e.code == "E0102" and "did you mean" not in e.hint
     assert e.hint.startswith("`through` is a member of the forms that take it; this Arc has")
     assert "`midpoint`" in e.hint and "`through`," not in e.hint
+
+
+def test_placed_copies_stay_copies_in_the_description_with_their_placement():
+    """The description says a part of an already-described shape once, as a copy with its
+    place; placed in 3D, the copy's row carries where it stands assembled (a box of four equal
+    walls is one part described and three rows, not four descriptions)."""
+    src = """thickness 3 mm
+assembly kit {
+    for i in range(4) {
+        solid wall { r = Rectangle(center=(i * 70, 0), width=60, height=30) }
+        Place(wall, position=(0, 0, i * 10), face="front", up="up")
+    }
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [d.message for d in r.diagnostics]
+    (part,) = r.description["parts"]
+    assert part["assembled"]["top_face"] == "front (-y)" and len(part["copies"]) == 3
+    assert all(c["assembled"]["top_face"] == "front (-y)" for c in part["copies"])
+    assert [c["assembled"]["box"][2] for c in part["copies"]] == [-5, 5, 15]   # 30 mm tall, centred
+    text = r.describe()
+    assert text.count("; assembled: top face (engraving, countersinks) looks front (-y)") == 3

@@ -444,7 +444,8 @@ def describe(output: Output, deadline=None) -> dict:
     the parts list), ``same_shape`` (how many parts have that shape, itself included) and
     ``copies``.  A part of the same shape as one described, with no engravings, notches or
     through-cuts of its own (nor the first) and the same material, is not described again:
-    it is one of the first's ``copies``, ``{"name", "box"}`` (its place, mm), so the
+    it is one of the first's ``copies``, ``{"name", "box"}`` (its place, mm; and
+    ``assembled`` where it is placed in 3D), so the
     description grows with the distinct shapes and one place per copy (6,000 equal circles:
     one part and 5,999 places, where every part used to list every other).  A copy that
     differs so is described in full, with ``copy_of`` naming the first part of its shape.
@@ -499,10 +500,11 @@ def _describe(output: Output, rows: list[dict], deadline) -> dict:
         cut_in = notches(output, p, cuts_within)
         sunk = [_sink(sk) for sk in row.get("sinks", ())]
         placed = _assembled(placement.get(p.name), p, x0, y0, x1, y1)
-        own = bool(engraved or through or cut_in or sunk or placed)
+        own = bool(engraved or through or cut_in or sunk)
         lead = plain.get((row["shape"], material))
-        if lead is not None and not own:
-            lead["copies"].append({"name": p.name, "box": box})
+        if lead is not None and not own:    # a copy, placed in 3D or not: its row says where
+            lead["copies"].append({"name": p.name, "box": box,
+                                   **({"assembled": placed} if placed else {})})
             continue
         outer = [_primitive(loop_shape(lp.segments), lp.segments, shapes)
                  for lp in p.loops if not lp.is_hole]
@@ -554,6 +556,14 @@ def _assembled(M, p: PartOutline, x0, y0, x1, y1) -> dict | None:
     lo, hi = w.min(axis=0), w.max(axis=0)
     return {"top_face": _direction(M[:3, 2]), "up": _direction(M[:3, 1]),
             "box": [_r(c) for c in (*lo, *hi)]}
+
+
+def _assembled_text(a: dict) -> str:
+    """:func:`_assembled`'s data in words."""
+    b = a["box"]
+    return (f"top face (engraving, countersinks) looks {a['top_face']}, drawing's up goes "
+            f"{a['up']}; box x {_n(b[0])}..{_n(b[3])}, y {_n(b[1])}..{_n(b[4])}, z "
+            f"{_n(b[2])}..{_n(b[5])} mm")
 
 
 def _sink(d: dict) -> dict:
@@ -669,11 +679,7 @@ def describe_text(doc: dict) -> str:
         for e in p["engravings"]:
             out.append("  engraving: " + _engraving(e))
         if p.get("assembled"):
-            a = p["assembled"]
-            b = a["box"]
-            out.append(f"  assembled: top face (engraving, countersinks) looks {a['top_face']}, "
-                       f"drawing's up goes {a['up']}; box x {_n(b[0])}..{_n(b[3])}, y "
-                       f"{_n(b[1])}..{_n(b[4])}, z {_n(b[2])}..{_n(b[5])} mm")
+            out.append("  assembled: " + _assembled_text(p["assembled"]))
         if p.get("copy_of"):
             out.append(f"  the same shape as `{p['copy_of']}` (described again: engravings, "
                        "cuts or material of its own)")
@@ -683,7 +689,9 @@ def describe_text(doc: dict) -> str:
                        "described again), at:")
             for c in p["copies"]:
                 x0, y0, x1, y1 = c["box"]
-                out.append(f"    `{c['name']}` from ({_n(x0)}, {_n(y0)}) to ({_n(x1)}, {_n(y1)})")
+                out.append(f"    `{c['name']}` from ({_n(x0)}, {_n(y0)}) to ({_n(x1)}, {_n(y1)})"
+                           + ("; assembled: " + _assembled_text(c["assembled"])
+                              if c.get("assembled") else ""))
         out.append("  symmetry: " + _symmetry(p["symmetry"]))
     for e in doc["engravings"]:
         out.append("engraving (no part): " + _engraving(e))
