@@ -701,3 +701,12 @@ assembly kit {
     assert [c["assembled"]["box"][2] for c in part["copies"]] == [-5, 5, 15]   # 30 mm tall, centred
     text = r.describe()
     assert text.count("; assembled: top face (engraving, countersinks) looks front (-y)") == 3
+
+
+def test_the_fraction_hint_is_only_for_an_inverse_unit():
+    """A fraction before a unit elsewhere in a line that fails for another reason (an angle
+    added to a length) does not get the fraction's hint."""
+    r = aidl_lang.compile(source="solid p { c = Circle(center=(0, 0), "
+                                 "radius=1/2 in * 1 in * 2 mm + 30 deg) }\n")
+    (e,) = _errors(r)
+    assert e.code == "E0109" and "a unit belongs to the number before it" not in (e.hint or "")

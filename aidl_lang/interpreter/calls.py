@@ -517,7 +517,7 @@ class Calls:
                 return Q(lift(e) * k, want, v.owners)
             raise EvalError("E0109", f"argument `{aname}` of `{fname}` must be {_a(typ)}, got {_a(dim_name(v.dim))}", span,
                             hint=ANGLE_TWICE if typ == "angle" and v.dim == (0, 2) else
-                            fraction_hint(_src(self.sink, span)) or
+                            (fraction_hint(_src(self.sink, span)) if min(v.dim) < 0 else None) or
                             f"write it with {_a(typ)} unit" + (" such as `mm`" if typ == "length" else
                                                                " such as `deg`" if typ == "angle" else ""))
         if typ == "point":

@@ -929,7 +929,8 @@ class Statements(Asserts):
         except UnitError as ex:
             msg, hint = str(ex), "both sides must have the same unit kind (length, angle or number)"
             left, right = (getattr(node, "left", None), getattr(node, "right", None))
-            frac = fraction_hint(_src(self.sink, span))    # `3/8 in` is 3 / (8 in)
+            # `3/8 in` is 3 / (8 in): said where a side is an inverse length or angle
+            frac = fraction_hint(_src(self.sink, span)) if min(*a.dim, *b.dim) < 0 else None
             hint = frac or hint
             if left is not None and right is not None:
                 lt, rt = _src(self.sink, left.span), _src(self.sink, right.span)
