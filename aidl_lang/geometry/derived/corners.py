@@ -579,15 +579,14 @@ def _spline_kink(p, loops: list) -> bool:
         for g in lp.segments:
             if not isinstance(g, Spline):
                 continue
-            c = g.curve.ctrl
-            for i in range(1, len(c) // 3 + (1 if g.curve.closed else 0)):
-                k = (3 * i) % (len(c) - 1) if g.curve.closed else 3 * i
-                if k >= len(c) - 1 and not g.curve.closed:
-                    break
-                q = c[k]
+            c, n = g.curve.ctrl, g.curve.n           # knot i is ctrl[3 i]
+            for i in (range(n) if g.curve.closed else range(1, n)):
+                q = c[3 * i]
                 if math.hypot(q[0] - p[0], q[1] - p[1]) > CORNER_TOL:
                     continue
-                a, b = c[k - 1] if k else c[-2], c[k + 1]
+                a, b = c[3 * i - 1] if i else c[-2], c[3 * i + 1]   # (closed: ctrl[-1] is q)
+                if a == q or b == q:
+                    continue                        # a handle of no length: no tangent there
                 t0 = math.atan2(q[1] - a[1], q[0] - a[0])
                 t1 = math.atan2(b[1] - q[1], b[0] - q[0])
                 turn = abs((t1 - t0 + math.pi) % (2 * math.pi) - math.pi)
