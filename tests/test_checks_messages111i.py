@@ -525,9 +525,9 @@ def test_W0505_of_a_ring_across_two_holes_offers_an_arc_per_gap():
 
 def test_two_tab_joints_meeting_at_an_inside_corner_are_one_opening():
     """Run cx's screwdriver rack: a bracket's top and back `tab_and_slot` joints, their end
-    gaps meeting at its inside corner, were W0508 "touch, so they cut one opening" once the
-    end gaps stopped at `length` (before, their runs along the edge overlapped, which W0508
-    took as meant). Two joints' cuts that touch are one opening as drawn."""
+    gaps meeting at its inside corner, were W0508 "touch, so they cut one opening" while the
+    end gaps stopped at `length`; with their 1 mm runs along the edge (kept) they overlap in
+    the runs, which W0508 takes as meant: one opening, unwarned."""
     r = aidl_lang.compile(path=str(RUNS / "issue111cx/run/01_screwdriver_rack.first_valid.aidl"))
     assert "W0508" not in [d.code for d in r.diagnostics]
 

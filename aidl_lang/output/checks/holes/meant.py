@@ -91,13 +91,6 @@ class MeantMerge:
                 return True
         return False
 
-    def joints_meet(self, i: int, j: int) -> bool:
-        """Both holes ``i``, ``j`` are joint templates' cuts (each with an ``overrun=true``
-        run past its cut), which touch: two joints' end gaps meeting at a panel's inside
-        corner cut one opening as drawn (issue 111, run cx's screwdriver rack: a bracket's
-        top and back tab joints, W0508 once their end gaps stopped at `length`)."""
-        return self._cut(i) is not None and self._cut(j) is not None
-
     def __call__(self, i: int, j: int, common) -> bool:
         if self._trim(i) or self._trim(j) or self.opens_into(i, j):
             return True

@@ -355,8 +355,7 @@ def _analyse(d: Drawing, s: Structure, shape, cuts, t: float, loops=None,
                 res.notches.add(j)
             elif i > 0 and j < inner:
                 merged.add((i - 1, j - 1))
-                if not (meant.opens_into(i - 1, j - 1)    # a joint's mouth in a notch
-                        or meant.joints_meet(i - 1, j - 1)):  # two joints' ends at a corner
+                if not meant.opens_into(i - 1, j - 1):   # a joint's mouth in a notch: as drawn
                     res.merges.append((i, j, 0.0, None))
             continue
         if w < t and in_material[k]:
