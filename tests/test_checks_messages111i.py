@@ -710,3 +710,23 @@ def test_the_fraction_hint_is_only_for_an_inverse_unit():
                                  "radius=1/2 in * 1 in * 2 mm + 30 deg) }\n")
     (e,) = _errors(r)
     assert e.code == "E0109" and "a unit belongs to the number before it" not in (e.hint or "")
+
+
+def test_a_wall_placed_by_face_lands_there_in_the_3mf_a_reader_opens():
+    """The 3MF of a wall placed `face="front", up="up"` at (0, 20, 3), re-read by trimesh:
+    the 60 x 30 wall stands 3 mm thick from y = 17 to 20 (its top face, where its engraving
+    is, at y = 17, towards the front), x -30..30, z 3..33, to the design's numbers."""
+    trimesh = pytest.importorskip("trimesh")
+    import io
+    r = aidl_lang.compile(source=_wall('Place(wall, position=(0, 20, 3), face="front", up="up")'))
+    scene = trimesh.load(io.BytesIO(r.encode("3mf", assembled=True)), file_type="3mf")
+    walls = []
+    for node in scene.graph.nodes_geometry:
+        M, geom = scene.graph[node]
+        m = scene.geometry[geom].copy()
+        m.apply_transform(M)
+        if "wall" in node:
+            walls.append(m)
+    (w,) = walls
+    lo, hi = w.bounds
+    assert np.allclose(lo, (-30, 17, 3), atol=1e-6) and np.allclose(hi, (30, 20, 33), atol=1e-6)
