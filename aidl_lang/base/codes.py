@@ -1373,6 +1373,23 @@ it is left over.
     def slot(x) -> hole { s = Rectangle(center=(x, 0), width=3, height=20) }   # warning
     solid plate { body = Rectangle(center=(0, 0), width=100, height=60) }
 """),
+    "W0118": ("template's thickness is not its parts' material", """
+A template that makes parts (`finger_box`, `flex_box`, `finger_panel`, a stand) draws its
+joints, bends and slots for its `thickness=` argument (3 mm unless given), while its parts are
+cut from the material in force at the call: the `thickness` statement of the nearest structure
+around it, else the file's, else 3 mm (what the 3D outputs, the parts list and the fit check
+read). When the two differ, the joints are drawn for one material and the parts made of
+another: assembled they do not fit, and the errors and collisions that follow come from inside
+the template (run dc's drum: `flex_box(thickness=3 mm)` in a file of `thickness 6 mm`, its
+bends overlapping). Give the call `thickness=` the material, or put the call in a structure of
+its own that says `thickness` for its parts. A joint template (`tab_and_slot`, `finger_edge`,
+`cross_halving`: a hole) takes its partner's thickness and is not judged.
+
+    thickness 6 mm
+    assembly toy {
+        drum = flex_box(thickness=3 mm)      # warning: its parts are 6 mm
+    }
+"""),
     "W0104": ("empty drawing", """
 The file is empty (nothing but comments), or its structures build no geometry at all, so the
 SVG would be empty. Add shapes, or instantiate a template. A file of only templates, params and

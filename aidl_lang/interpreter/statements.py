@@ -17,6 +17,7 @@ from ..geometry.core.values import (ANG, LEN, NUM, dim_name, PV, Function, GeomR
 from ..base.limits import MAX_TEMPLATE_DEPTH, MIN_WALL_LEAST, min_wall_problem
 from ..registry import CONSTANTS, UNITS_LENGTH, template_param
 from ..library.sources import ImportRefused, read_import, resolve_import
+from .materials import note_material
 from .arguments import check_kinds, kind_error, precheck_asserts
 from .asserts import Asserts
 from .constants import early_constants, late_constant
@@ -87,6 +88,8 @@ class Statements(Asserts):
         self.model.root = root
         self.model.constants = fctx.scope.vars
         from .sinks import fillet_copies, sink_copies
+        from .materials import thickness_mismatch
+        thickness_mismatch(self.model, self.sink)       # W0118: after every `thickness`
         from ..geometry.derived.operations import hold_mirror_lines
         sink_copies(self.model)          # a pattern's copies of a sunk hole, sunk alike
         fillet_copies(self.model)        # and of a shape filleted to another, filleted alike
@@ -738,6 +741,7 @@ class Statements(Asserts):
                                     hint=f"`{name} = {d.name}({p.name}=...)`")
             # the asserts over the arguments, before the body (issue 95): one error at the call
             precheck_asserts(self, d, tscope, vals, spans)
+            note_material(child, tscope.vars, spans, call.span)     # W0118 (run dc)
             self.scope = saved_scope
             self._run_body(child, d.body, tscope)
         finally:

@@ -100,7 +100,7 @@ words them (`assert len(feet) == 2`, `assert lip.bb.top - base.bb.top == 8 mm`: 
 as a relation that lays a part out moves its coordinates; an assert reads `Place`d parts where
 they are written), each number
 copied from the request, never from the program: a slip then fails the check instead of reaching the cutter. `thickness 3 mm` (the material, for 3D outputs and
-the parts list), `kerf 0.15 mm` (the laser's cut width: cuts are offset by half of it)
+the parts list; a box template's `thickness=` is the same), `kerf 0.15 mm` (the laser's cut width: cuts are offset by half of it)
 and `min_wall 0.3 mm` (W0507 warns of walls thinner than 0.5 mm, which a laser burns through;
 a thin wall or sharp tip the request asks for is meant: state `min_wall`, never change a
 requested size; `min_wall 0`: not laser-cut) are statements without `=` (`thickness = 3 mm` is a mere constant) that

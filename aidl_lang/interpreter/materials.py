@@ -1,0 +1,92 @@
+"""W0118: a template's ``thickness=`` against the material its parts are cut from.
+
+A template that makes parts (``finger_box``, ``flex_box``, ``finger_panel``: an assembly, or a
+solid that is a part) draws its joints, bends and slots for its ``thickness=`` argument, while
+its parts are cut from the material in force at the call: the ``thickness`` statement of the
+nearest structure around it, else the file's, else 3 mm (what the 3D outputs, the parts list
+and the fit check read).  When the two differ the joints are drawn for one material and the
+parts made of another; issue 111's run dc called ``flex_box(thickness=3 mm)`` in a file of
+``thickness 6 mm`` and got E0108 and five W0517 from inside the template, none naming the
+cause.  A joint template (a ``hole`` or ``cut``: ``tab_and_slot``, ``finger_edge``) takes its
+partner's thickness and is not judged."""
+from __future__ import annotations
+
+from ..geometry.core.values import LEN, Q
+
+DEFAULT_THICKNESS = 3.0     # mm: what the outputs use when no `thickness` is stated
+TOLERANCE = 1e-6            # mm
+
+
+def note_material(child, bound: dict, spans: dict, call_span) -> None:
+    """Keep on template instance ``child`` the ``thickness`` it was given (its parameter's
+    value in mm, where it is written, and whether the call wrote it), for
+    :func:`thickness_mismatch`; nothing when the template has no such parameter."""
+    v = bound.get("thickness")
+    if isinstance(v, Q) and v.dim == LEN and v.const() is not None:
+        child.thickness_arg = (float(v.const()), spans.get("thickness", call_span),
+                               "thickness" in spans)
+
+
+def _material(s, model) -> tuple[float, bool]:
+    """The material thickness structure ``s``'s parts are cut from (mm), and whether a
+    ``thickness`` statement says it (else the 3 mm default)."""
+    for a in (s, *s.ancestors()):
+        t = getattr(a, "thickness", None)
+        if t is not None:
+            return float(t), True
+    t = getattr(model, "thickness", None)
+    return (float(t), True) if t is not None else (DEFAULT_THICKNESS, False)
+
+
+def _is_part(s) -> bool:
+    return s.kind == "solid" and all(a.kind == "assembly" for a in s.ancestors())
+
+
+def _parts(s) -> list:
+    if _is_part(s):
+        return [s]
+    out, todo = [], list(s.children.values())
+    while todo:
+        c = todo.pop()
+        if _is_part(c):
+            out.append(c)
+        elif c.kind == "assembly":
+            todo.extend(c.children.values())
+    return out
+
+
+def thickness_mismatch(model, sink) -> None:
+    """W0118 at each call of a part-making template whose ``thickness`` is not the material
+    its parts are cut from (one warning per call written, in a loop too)."""
+    seen = set()
+    for s in model.structures:
+        got = getattr(s, "thickness_arg", None)
+        if got is None or s.kind not in ("solid", "assembly") or \
+                any(getattr(a, "thickness_arg", None) for a in s.ancestors()):
+            continue            # (a template's own panels: judged at the outer call)
+        value, span, written = got
+        parts = _parts(s)
+        if not parts or span in seen:
+            continue
+        materials = [_material(p, model) for p in parts]
+        if any(abs(value - m) <= TOLERANCE for m, _ in materials):
+            continue
+        seen.add(span)
+        material, stated = materials[0]
+        name = s.path.split(".", 1)[1] if "." in s.path else s.path
+        arg = f"`thickness={value:g} mm`" if written else \
+            f"`thickness` ({value:g} mm, its default)"
+        why = "the `thickness` in force there" if stated else \
+            "no `thickness` statement: the 3 mm default"
+        msg = (f"`{name} = {s.template}(...)` draws its joints for {arg}, but its parts are "
+               f"cut from {material:g} mm material ({why}): assembled, they do not fit, and "
+               f"the 3D outputs, the parts list and the fit check read {material:g} mm")
+        if stated:
+            leaf = name.split(".")[-1]
+            hint = (f"give it `thickness={material:g} mm`, the material; or, for parts of "
+                    f"{value:g} mm, put the call in a structure of its own that says "
+                    f"`thickness {value:g} mm` (`assembly {leaf}_kit {{ ... }}` holding that "
+                    f"line and the call)")
+        else:
+            hint = f"write `thickness {value:g} mm` at the top of the file: the material"
+        sink.warning("W0118", msg, span, hint)

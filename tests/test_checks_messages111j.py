@@ -1,0 +1,91 @@
+"""Issue 111's round fourteen: what models reach for in the tree of the eighteenth session.
+
+W0118: a part-making template whose `thickness=` is not the material its parts are cut from
+(run dc's tombola drum: `flex_box(thickness=3 mm)` in a file of `thickness 6 mm` failed inside
+the template with E0108 and five W0517, none naming the cause)."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import aidl_lang
+
+ROOT = Path(__file__).resolve().parent.parent
+RUNS = ROOT / "data" / "model_runs"
+
+
+def _codes(r):
+    return sorted(d.code for d in r.diagnostics)
+
+
+def _w0118(r):
+    return [d for d in r.diagnostics if d.code == "W0118"]
+
+
+def test_run_dc_drum_names_the_two_thicknesses_at_the_call():
+    path = RUNS / "issue111dc" / "drafts" / "05_tombola_drum.attempt1.aidl"
+    src = path.read_text()
+    r = aidl_lang.compile(source=src, path=str(path))
+    (w,) = _w0118(r)
+    line = src.splitlines()[w.span.line - 1]
+    assert "flex_box(" in line and line[w.span.col - 1:].startswith("3 mm")
+    assert "`thickness=3 mm`" in w.message and "6 mm material" in w.message
+    assert "`thickness=6 mm`" in w.hint and "`thickness 3 mm`" in w.hint
+    # it comes before what follows from it (E0108 of the bends, W0517 inside the template)
+    codes = [d.code for d in r.diagnostics]
+    assert codes.index("W0118") < codes.index("E0108")
+    # the hint's second way, followed: the drum's parts are 3 mm, and all of it goes
+    fixed = src.replace(
+        "    drum = flex_box(",
+        "    assembly drum_kit {\n        thickness 3 mm\n        drum = flex_box(", 1)
+    fixed = fixed.replace("thickness=3 mm)\n", "thickness=3 mm)\n    }\n    drum = drum_kit.drum\n", 1)
+    r2 = aidl_lang.compile(source=fixed, path=str(path))
+    assert "W0118" not in _codes(r2) and "E0108" not in _codes(r2), \
+        [(d.code, d.message[:90]) for d in r2.diagnostics]
+    assert "W0517" not in _codes(r2)
+    # the first way: the template drawn for the material in force
+    r3 = aidl_lang.compile(source=src.replace("radius=drum_d / 2, thickness=3 mm)",
+                                              "radius=drum_d / 2, thickness=6 mm)"),
+                           path=str(path))
+    assert "W0118" not in _codes(r3) and "E0108" not in _codes(r3)
+
+
+BOX = 'import "std/joints.aidl"\nimport "std/boxes.aidl"\n'
+
+
+def test_a_default_thickness_against_a_stated_material_and_the_reverse():
+    r = aidl_lang.compile(source=BOX + "thickness 4 mm\nassembly kit { box = finger_box() }\n")
+    (w,) = _w0118(r)
+    assert "its default" in w.message and "4 mm material" in w.message
+    assert (w.span.line, w.span.col) == (4, 22)          # the call: no argument is written
+    r = aidl_lang.compile(source=BOX + "assembly kit { box = finger_box(thickness=6 mm) }\n")
+    (w,) = _w0118(r)
+    assert "the 3 mm default" in w.message
+    assert w.hint == "write `thickness 6 mm` at the top of the file: the material"
+    r = aidl_lang.compile(source=BOX + "thickness 6 mm\nassembly kit { box = finger_box(thickness=6 mm) }\n")
+    assert not _w0118(r)
+
+
+def test_one_warning_per_call_and_none_for_joint_templates():
+    """finger_box's own panels (finger_panel calls inside it) are judged at the outer call;
+    a loop's calls are one warning; a joint template (a hole) takes its partner's thickness."""
+    src = BOX + """thickness 4 mm
+assembly kit {
+    for i in range(3) {
+        box = finger_box(thickness=3 mm, cx=i * 400 mm)
+    }
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert len(_w0118(r)) == 1
+    src = BOX + """thickness 3 mm
+solid panel {
+    body = Rectangle(center=(0, 0), width=120, height=60)
+    slots = tab_and_slot(part="slot", length=60 mm, thickness=6 mm, cx=0 mm, cy=0 mm)
+    edge = finger_edge(length=60 mm, thickness=6 mm, cx=0 mm, cy=-30 mm)
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok and not _w0118(r), [(d.code, d.message[:80]) for d in r.diagnostics]
+    # a solid template that is a part is judged like an assembly's
+    r = aidl_lang.compile(source=BOX + "thickness 5 mm\nassembly kit { p = finger_panel(thickness=3 mm) }\n")
+    assert len(_w0118(r)) == 1
