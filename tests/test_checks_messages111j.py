@@ -89,3 +89,35 @@ solid panel {
     # a solid template that is a part is judged like an assembly's
     r = aidl_lang.compile(source=BOX + "thickness 5 mm\nassembly kit { p = finger_panel(thickness=3 mm) }\n")
     assert len(_w0118(r)) == 1
+
+
+def test_a_name_no_pass_of_a_loop_set_is_an_empty_list():
+    """Run dd's Napier's bones: `tens` is set under an `if` no pass of rod 1's loop met, and
+    `len(rods[1].marks.tens) == 0` was E0102; now it reads an empty list, while a name bound
+    before the loop keeps its value and a name some pass set is the list of those passes."""
+    path = RUNS / "issue111dd" / "drafts" / "07_napier_bones.attempt1.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    assert r.ok and "E0102" not in _codes(r), [(d.code, d.message[:80]) for d in r.diagnostics]
+    src = """solid plate {
+    body = Rectangle(center=(0, 0), width=100, height=40)
+    kept = 7
+    for i in range(4) {
+        if i > 10 {
+            never = Circle(center=(i * 10 mm, 0), diameter=3)
+            kept = i
+        }
+        if i >= 2 {
+            some = Circle(center=(i * 10 mm, 0), diameter=3)
+        }
+    }
+    for j in range(0) {
+        none = Circle(center=(0, 0), diameter=3)
+    }
+}
+assert len(plate.never) == 0 and len(plate.none) == 0, "no pass set them"
+assert len(plate.some) == 2, "two passes"
+assert plate.kept == 7, "bound before the loop"
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok and not [d for d in r.diagnostics if d.code.startswith("E")], \
+        [(d.code, d.message[:80]) for d in r.diagnostics]

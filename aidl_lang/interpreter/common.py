@@ -252,3 +252,21 @@ def _defer_boxes(c) -> None:
     """A constructor's point or size read from a bounding box: :func:`.bbox.defer_boxes`."""
     from ..geometry.relations.bbox import defer_boxes
     defer_boxes(c)
+
+
+def loop_bound_names(block) -> list[str]:
+    """The names a loop body binds, in the order written (``name = ...``, a named structure,
+    inside an ``if`` or an inner loop too): after the loop each is the list of its values, an
+    empty list when no pass bound it (issue 111's run dd: `tens` set under an `if` that no
+    pass of the loop met; `len(rod.marks.tens) == 0` was E0102)."""
+    out: list[str] = []
+    todo = list(block.stmts)
+    while todo:
+        s = todo.pop(0)
+        if isinstance(s, A.Assign) or (isinstance(s, A.StructDecl) and s.name):
+            out.append(s.name)
+        elif isinstance(s, A.If):
+            todo += s.body.stmts + (s.orelse.stmts if s.orelse is not None else [])
+        elif isinstance(s, A.For):
+            todo += [x for x in s.body.stmts]
+    return list(dict.fromkeys(out))

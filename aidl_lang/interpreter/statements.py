@@ -22,7 +22,7 @@ from .arguments import check_kinds, kind_error, precheck_asserts
 from .asserts import Asserts
 from .constants import early_constants, late_constant
 from .order import changes_read_below
-from .common import (ANGLE_TWICE, DEG, POISON, fraction_hint, FileCtx, Scope, _STMT_ERRORS, _Silent, _a, _common_ancestor,
+from .common import (loop_bound_names, ANGLE_TWICE, DEG, POISON, fraction_hint, FileCtx, Scope, _STMT_ERRORS, _Silent, _a, _common_ancestor,
                      _definition_lines, _fmt_num, _src, _is_geometry_stmt, _is_plain_const,
                      file_functions)
 
@@ -629,6 +629,9 @@ class Statements(Asserts):
             self.frames.pop()
         for name, vals in collected.items():
             outer.vars[name] = vals
+        for name in loop_bound_names(st.body):      # bound by no pass: an empty list
+            if name not in collected and outer.lookup(name)[1] is None:
+                outer.vars[name] = []
 
     def _for_items(self, st: A.For, items, collected, outer) -> None:
         base = self._loop_suffix()          # the enclosing loops' indices (self.scope: outer)
