@@ -121,3 +121,37 @@ assert plate.kept == 7, "bound before the loop"
     r = aidl_lang.compile(source=src)
     assert r.ok and not [d for d in r.diagnostics if d.code.startswith("E")], \
         [(d.code, d.message[:80]) for d in r.diagnostics]
+
+
+def test_w0508_never_moves_a_window_for_a_notch_on_its_edge():
+    """Run dd's Napier's bones: a 20 mm thumb notch centred on the top edge of a 201 mm
+    window; W0508's machine fix moved the window 10.5 mm off its engraved index (the notch had
+    no room to move).  A hole more than four times the other's area is not moved: no fix, and
+    the hint's way that keeps the design (`AllowOverlap(window, notch)`) is in it."""
+    path = RUNS / "issue111dd" / "drafts" / "07_napier_bones.attempt1.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    (w,) = [d for d in r.diagnostics if d.code == "W0508"]
+    assert w.fix is None
+    assert w.hint.startswith("move hole `napier.frame.notch`")
+    assert "`AllowOverlap(window, notch)` in `napier.frame`" in w.hint
+
+
+def test_a_feature_bounded_only_by_its_parts_layout_stays_where_written():
+    """Run dd's document scanner stand: a corner relief square written at numbers, poking
+    1 mm past the brace's outline, was said to "slide along y within its bounds": the only
+    bounds were the box inequalities of `RightOf(brace, gusset)` and `AlignTop`, which lay
+    the whole part out.  It is said to stay where written, with the other free features;
+    a feature bounded by an `Inside` of its own part is still said to slide."""
+    from aidl_lang.solver.diagnosis.sliding import sliding_text
+    path = RUNS / "issue111dd" / "run" / "02_doc_scanner_stand.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    text = sliding_text(r.sliding())
+    assert "can slide" not in text and "stay where written" in text
+    src = """solid plate {
+    body = Rectangle(center=(0, 0), width=100, height=40)
+    hole bolt { c = Circle(center=(10, 0), diameter=5) }
+    Inside(bolt, body)
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert "can slide along x, y within its bounds" in sliding_text(r.sliding())

@@ -146,16 +146,22 @@ solid organizer {
 
 def test_a_hole_placed_by_a_constraint_is_not_the_one_moved_and_never_AllowOverlap(tmp_path):
     """The screw's place is a constraint's, so editing its call would move nothing: the
-    fix moves the window instead (its place is its call's); with both placed by
-    constraints there is no fix, only the hint."""
+    fix moves the opening instead (its place is its call's); with both placed by
+    constraints there is no fix, only the hint.  A window more than four times the screw's
+    area is never the one moved (run dd: a 201 mm window moved 10.5 mm off its engraved
+    index for a thumb notch on its edge): no fix, the hint names the screw."""
     src = """solid plate {
     body = Rectangle(center=(0, 0), width=80, height=40)
-    hole opening { r = Rectangle(center=(0, 0), width=30, height=20) }
+    hole opening { r = Rectangle(center=(0, 0), width=10, height=8) }
     hole screw { c = Circle(center=(0, 0), radius=3) }
-    screw.c.center == (15, 0)
+    screw.c.center == (6, 0)
 }
 """
-    w, fixed = _fixed_clean(tmp_path, src, "Rectangle(center=(-3.51, 0), width=30, height=20)")
+    w, fixed = _fixed_clean(tmp_path, src, "Rectangle(center=(-2.51, 0), width=10, height=8)")
+    window = src.replace("width=10, height=8", "width=30, height=20").replace("(6, 0)", "(15, 0)")
+    c = _compile(tmp_path, window, "window.aidl")
+    (w,) = [d for d in c.sink.items if d.code == "W0508"]
+    assert w.fix is None and "move hole `plate.screw`" in w.hint
     both = src.replace("    screw.c.center", "    opening.r.center == (0, 0)\n    screw.c.center")
     c = _compile(tmp_path, both, "both.aidl")
     (w,) = [d for d in c.sink.items if d.code == "W0508"]

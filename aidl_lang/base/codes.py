@@ -827,7 +827,9 @@ touch, so they cut one opening where the program declares two: usually an edit o
 moved or multiplied one of them (a bolt row grown into a ring of vents). The warning names
 both holes and says by how much they overlap (the depth along the line between them and the
 common area). Move one of them away (by the overlap plus the minimum wall; the hint's figure is
-rounded up, with the circles' chord error, so the move as written clears it), or shrink it. A
+rounded up, with the circles' chord error, so the move as written clears it), or shrink it. The
+suggested fix moves the smaller hole, never one more than four times the other's area (a
+window stays where it is for a thumb notch on its edge: run dd). A
 single opening made of several shapes (a keyhole: a circle and a slot) is drawn as the faces
 of ONE hole structure, whose faces may overlap without a warning.
 A hole wholly inside another cuts nothing of its own; the warning says so (its size or place is

@@ -629,9 +629,10 @@ class Statements(Asserts):
             self.frames.pop()
         for name, vals in collected.items():
             outer.vars[name] = vals
-        for name in loop_bound_names(st.body):      # bound by no pass: an empty list
-            if name not in collected and outer.lookup(name)[1] is None:
-                outer.vars[name] = []
+        if getattr(outer, "loop_index", None) is None:     # (an inner loop's: the outer's)
+            for name in loop_bound_names(st.body):      # bound by no pass: an empty list
+                if name not in collected and outer.lookup(name)[1] is None:
+                    outer.vars[name] = []
 
     def _for_items(self, st: A.For, items, collected, outer) -> None:
         base = self._loop_suffix()          # the enclosing loops' indices (self.scope: outer)

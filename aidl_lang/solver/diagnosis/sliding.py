@@ -139,7 +139,8 @@ def sliding(solver) -> Sliding:
         if found and loose.any():
             strict = {id(t) for t, _ in _features(p, J, np.zeros_like(loose), scale, where,
                                                    px, model)}
-            out.bounded |= {id(t) for t, _ in found if id(t) not in strict}
+            out.bounded |= {id(t) for t, _ in found if id(t) not in strict
+                            and _bounded_within(t, p, J, loose, where, solver.rows.constraint)}
         held, placed = _held(found)
         out.placed |= placed
         for t, a in found:
@@ -158,6 +159,23 @@ def sliding(solver) -> Sliding:
                 out.placement.append((t, a))
                 break
     return out
+
+
+def _bounded_within(t, p, J, loose, where, owners: list) -> bool:
+    """Feature ``t`` of part ``p`` slides only within an inequality not reached that its part
+    or something in it writes (`Inside(hole, plate)`): a bound of the feature's own.  The box
+    inequalities of a relation that lays the whole part out (`RightOf(brace, gusset)`, written
+    in the assembly) read every point of the part, a corner relief poking past the outline
+    too, and bound nothing the program placed there: such a feature stays where it is written
+    (issue 111's run dd: "hole `brace.corner` can slide along y within its bounds" for a
+    relief square written at numbers, and an unneeded `Rigid(self)` added for it)."""
+    cols = [where[f] for f in (t.fx, t.fy) if 0 <= f < len(where) and where[f] >= 0]
+    rows, B = _block(J, cols)
+    for r in rows[np.any(B != 0, axis=1) & loose[rows]].tolist():
+        c = owners[r] if r < len(owners) else None
+        if c is None or c.owner is p or c.owner.is_within(p):
+            return True
+    return False
 
 
 def _held(found: list) -> tuple[set, set]:

@@ -605,13 +605,19 @@ def _copies_of_one(stmt: str, hi: Structure, hj: Structure) -> bool:
     return "," not in stmt or hi.pattern_original is hj or hj.pattern_original is hi
 
 
+# W0508's fix moves the smaller of two holes, or one at most this many times the other's
+# area: issue 111's run dd moved a 201 x 201 mm window 10.5 mm off its engraved index to part
+# it from a 20 mm thumb notch centred on its edge (the notch could not move)
+LARGER_STAYS = 4.0
+
+
 def _merge_fix(d: Drawing, s: Structure, shape, a: _Openings, i: int, j: int, t: float, sink,
                move: str, near: dict) -> tuple:
     """W0508's hint sentence and fix for holes ``i`` and ``j`` of ``a`` that are not copies
     of one pattern overlapping by design: a move of ``j`` (else ``i``) that leaves ``t`` mm
     (at least :data:`MIN_WALL`) of material to the other and to everything around it
-    (:func:`.clearing.move_fix`), or no fix at all, never an ``AllowOverlap`` that would hide
-    the defect (``move``: the sentence when no move is found; ``near``: what the part's
+    (:func:`.clearing.move_fix`), never of a hole more than :data:`LARGER_STAYS` times the
+    other's area, or no fix at all, never an ``AllowOverlap`` that would hide the defect (``move``: the sentence when no move is found; ``near``: what the part's
     moves share, :func:`.clearing.move_fix`)."""
     wall = max(t, MIN_WALL)
     # a countersink's or counterbore's head needs the material under it too (run t's hay
@@ -621,6 +627,8 @@ def _merge_fix(d: Drawing, s: Structure, shape, a: _Openings, i: int, j: int, t:
                      if sk.hole.startswith(a.cuts[k - 1].hole.path + ".")], default=0.0)
                 for k in (i, j)) if sinks else 0.0
     for mover, other in ((j, i), (i, j)):
+        if len(a.areas) > max(i, j) and a.areas[mover] > LARGER_STAYS * a.areas[other]:
+            continue        # a window is not moved for a notch on its edge (run dd)
         got = move_fix(d, s, shape, a.cuts, mover - 1, other - 1, wall + extra, sink, near)
         if got is None:
             continue
