@@ -179,3 +179,33 @@ def test_w0516_a_filled_groove_run_out_at_the_deck_ends_is_the_design():
     corner = base.replace("MARK", "m = Polygon([(90, 0), (100, 5), (90, 10), (80, 5)], fill=true)")
     (w,) = [d for d in aidl_lang.compile(source=corner).diagnostics if d.code == "W0516"]
     assert "touches the cut edge" in w.message
+
+
+def test_a_patterns_copies_hole_follows_its_moved_original():
+    """Run dg's sushi geta: `rolls = LinearPattern(roll, 3, (25, 0))` of a drawing with a
+    hole (`rice`) over its filled disc, the first roll placed by `rolls[0].bb.left == ...`:
+    the solve moved the drawing 31 mm and its hole back 31 mm (so that the copies' holes,
+    tied to it, need not move), and the three holes hid nothing (W0526 x3).  The same with
+    parts: a tag with an eye hole, `Below(t, base)`, its copies' eyes left 39 mm up on the
+    edge.  Every hole now stays on its disc, in the original and in each copy."""
+    path = RUNS / "issue111dg" / "run" / "02_sushi_geta.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    assert "W0526" not in _codes(r)
+    for k in ("roll", "rolls[1]", "rolls[2]"):
+        m = r.measure(f"geta.board.{k}.rice.r", f"geta.board.{k}.nori")
+        assert m["center_distance"] < 1e-9, (k, m)
+    r = aidl_lang.compile(source="""def tag() -> solid {
+    body = Circle(center=(0, 0), diameter=18)
+    hole eye { r = Circle(center=(0, 0), diameter=6) }
+}
+assembly kit {
+    solid base { b = Rectangle(center=(0, 0), width=100, height=40) }
+    t = tag()
+    tags = LinearPattern(t, 3, (25, 0))
+    Below(t, base, gap=10)
+}
+""")
+    assert not [d for d in r.diagnostics if d.code.startswith(("E", "W"))], _codes(r)
+    for k in ("t", "tags[1]", "tags[2]"):
+        m = r.measure(f"kit.{k}.eye.r", f"kit.{k}.body")
+        assert m["center_distance"] < 1e-9 and m["centers"][0][1] == -39.0, (k, m)

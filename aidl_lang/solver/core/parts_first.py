@@ -281,8 +281,14 @@ class PartsFirst:
         if helpers:                        # the part's helpers alone, against its own rows
             rows = self.rows_of([s])
             yield 0, rows, self._cols(helpers, rows), False
+        # a pattern's copies have no frame: their geometry (their children's too) follows
+        # their original's frame in every stage (run dg: a copy's hole held where written
+        # held the original's hole there, and it moved back off its moved drawing)
+        copies = lambda d: own(list({id(c): c for t in below(d) if id(t) not in self.frame
+                                     for c in t.subtree()}.values()))
         for d in range(1, D + 1):          # descendants translate
-            params = helpers + [i for i in frames(below(d)) if i not in held]
+            params = helpers + [i for i in dict.fromkeys(frames(below(d)) + copies(d))
+                                if i not in held]
             if params:
                 rows = self.rows_of(upto(d - 1))
                 yield d, rows, self._cols(params, rows), False
@@ -291,8 +297,7 @@ class PartsFirst:
         # that can translate is not deformed to spare its part (its `Fixed` frame holds)
         all_frames = frames(below(D))
         for d in range(1, D + 1):
-            params = helpers + [i for i in all_frames + own([t for t in below(d)
-                                                             if id(t) not in self.frame])
+            params = helpers + [i for i in dict.fromkeys(all_frames + copies(d))
                                 if i not in held]
             if params:
                 rows = self.rows_of(upto(max(d, D - 1)))
@@ -317,8 +322,7 @@ class PartsFirst:
             # the copies follow their originals here too (a scaled pick beside three labels
             # each `At` its pick: without the copies' geometry the picks could not move,
             # and the paper's ladder bent them and moved the plate, 105d #09)
-            copies = own([t for t in below(D) if id(t) not in self.frame])
-            params = helpers + [i for i in dict.fromkeys(all_frames + copies + own(movable))
+            params = helpers + [i for i in dict.fromkeys(all_frames + copies(D) + own(movable))
                                 if i not in held]
             yield D + 1, rows, self._cols(params, rows), True
 
