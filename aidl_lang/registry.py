@@ -293,8 +293,8 @@ _DEFS = {
     "ArcSlot": _p([A("center", "point"), A("radius", "length"), A("start_angle", "angle"),
                    A("end_angle", "angle"), A("width", "length")],
                   doc="A slot `width` wide along the counter-clockwise arc of `radius` about "
-                      "center from start_angle to end_angle (all held); start, end: its end "
-                      "caps' centers.",
+                      "center from start_angle to end_angle (all held): the angles are its "
+                      "end caps' centers (start, end), the round ends reach width / 2 past them.",
                   members=ARCSLOT_MEMBERS),
     "Sector": _p([A("center", "point"), A("radius", "length"), A("start_angle", "angle"),
                   A("end_angle", "angle"),

@@ -270,10 +270,14 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
                          g.span, hint="cut the sheet as drawn (without `--layout`), or keep "
                          "each engraving within one piece")
             continue
-        off = float((~inside).sum())
-        # a letter's stroke over a screw hole is under 1% of a long text's samples: "0%" read
-        # as "nothing is off" (issue 84's door sign), so a small share is said as such
-        share = _pct(off, float(len(pts))) if off >= 0.005 * len(pts) else "under 1%"
+        # by length, not by samples (run dh: two 15 mm mortises under a 170 mm line were 2
+        # of its 9 samples, "22%", for 17.6 %); a letter's stroke over a screw hole is under
+        # 1% of a long text: "0%" read as "nothing is off" (issue 84's door sign), so a small
+        # share is said as such
+        gl = _edges(grown_loops)
+        off = float((~inside).sum()) / len(pts) if _is_flat_text(g, items) or \
+            g.kind == "Text" else _length_share(items, lambda P: ~_inside(P, gl))
+        share = _pct(off, 1.0) if off >= 0.005 else "under 1%"
         hint = _off_outline_hint(d, part, g, pts, pts[~inside])
         if where in ("across a hole", "across an opening"):
             hint = (f"it crosses {', '.join(holes) if holes else 'an opening'}: shrink or move "
@@ -561,11 +565,17 @@ ALONG = 400              # points spread by length over a mark's straight sides 
 
 def _share_on(items, edges) -> float:
     """The share of engraving ``items``' length that lies within :data:`ENGRAVE_TOL` of the
-    outline ``edges``: points spread evenly by length over its lines and polygons' sides
-    (:data:`ALONG` in all), its curves' own samples (even along them).  The samples of
-    :func:`_sample` weigh a polygon's corners and side midpoints alike: a filled groove
-    200 x 6 mm running out at both ends of a deck had 6 of its 8 there, "75 % on the
-    outline", for 3 % of its length (issue 111's run dh, a toy railway bridge)."""
+    outline ``edges`` (:func:`_length_share`).  The samples of :func:`_sample` weigh a
+    polygon's corners and side midpoints alike: a filled groove 200 x 6 mm running out at
+    both ends of a deck had 6 of its 8 there, "75 % on the outline", for 3 % of its length
+    (issue 111's run dh, a toy railway bridge)."""
+    return _length_share(items, lambda P: _within(P, edges, ENGRAVE_TOL))
+
+
+def _length_share(items, where) -> float:
+    """The share of engraving ``items``' length at the points where ``where`` (N x 2 points
+    -> N booleans) holds: points spread evenly by length over its lines and polygons' sides
+    (:data:`ALONG` in all), its curves' own samples (even along them)."""
     segs, curved = [], []
     for it in items:
         if it[0] == "line":
@@ -597,7 +607,7 @@ def _share_on(items, edges) -> float:
     P, W = np.vstack(pts), np.concatenate(weight)
     if W.sum() <= 0:
         return 0.0
-    return float(W[_within(P, edges, ENGRAVE_TOL)].sum() / W.sum())
+    return float(W[where(P)].sum() / W.sum())
 
 
 CUT_CLEAR = 0.5          # mm: an engraved mark closer to the cut edge runs into it
