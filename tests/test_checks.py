@@ -1293,7 +1293,11 @@ def test_W0517_material_half_a_millimetre_thicker_than_the_slots(compile_text):
     note = w.labels[0]
     assert note.span.file.endswith("joints.aidl") and "inside `finger_box`" in note.message
     assert "Place(front" in open(note.span.file).read().splitlines()[note.span.line - 1]
-    assert "0.5 mm narrower" in w.hint
+    # the bottom's extra half millimetre presses into the walls' shoulders: no slot too
+    # narrow (run dj); and W0118 names the cause at the call: joints for 3 mm, 3.5 mm parts
+    assert w.hint.startswith("`front` runs 0.5 mm into a face of `bottom`")
+    (cause,) = [d for d in c.sink.items if d.code == "W0118"]
+    assert "`thickness=3 mm`" in cause.message and "3.5 mm material" in cause.message
 
 
 def test_W0517_cross_halving_slot_too_narrow_gives_the_figure(compile_text):

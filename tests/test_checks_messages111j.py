@@ -187,7 +187,8 @@ def test_a_patterns_copies_hole_follows_its_moved_original():
     the solve moved the drawing 31 mm and its hole back 31 mm (so that the copies' holes,
     tied to it, need not move), and the three holes hid nothing (W0526 x3).  The same with
     parts: a tag with an eye hole, `Below(t, base)`, its copies' eyes left 39 mm up on the
-    edge.  Every hole now stays on its disc, in the original and in each copy."""
+    edge.  Every hole now stays on its disc, in the original and in each copy (a feature of
+    a patt's original moves with it, never back against it)."""
     path = RUNS / "issue111dg" / "run" / "02_sushi_geta.first_valid.aidl"
     r = aidl_lang.compile(source=path.read_text(), path=str(path))
     assert "W0526" not in _codes(r)
@@ -209,3 +210,22 @@ assembly kit {
     for k in ("t", "tags[1]", "tags[2]"):
         m = r.measure(f"kit.{k}.eye.r", f"kit.{k}.body")
         assert m["center_distance"] < 1e-9 and m["centers"][0][1] == -39.0, (k, m)
+
+
+def test_w0517_a_shoulder_in_a_face_is_not_a_slot_too_narrow():
+    """Run dj's ramp walker: the riser's square shoulder stood 0.3 mm into the sloping
+    plank's underside; W0517 said "a slot or a gap is 0.3 mm narrower ... widen it", the
+    model gave its slots 0.6 mm of clearance and the warning stayed.  The common volume is
+    thinnest across the plank's sheet: the hint names the face.  A slot too narrow (the
+    phone stand's cross-halving at 2.5 mm) keeps its hint."""
+    path = RUNS / "issue111dj" / "drafts" / "04_ramp_walker.fix1.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    (w,) = [d for d in r.diagnostics if d.code == "W0517"]
+    assert "0.3 mm deep" in w.message
+    assert w.hint.startswith("`riser` runs 0.3 mm into a face of `ramp`")
+    assert "narrower" not in w.hint
+    src = (ROOT / "examples" / "phone_stand.aidl").read_text().replace(
+        "min = 3 mm, max = 6 mm", "min = 1 mm, max = 6 mm")
+    r = aidl_lang.compile(source=src, overrides={"slot": "2.5mm"})
+    (w,) = [d for d in r.diagnostics if d.code == "W0517"]
+    assert "mm narrower than the part that goes in it" in w.hint

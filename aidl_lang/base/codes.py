@@ -1115,7 +1115,9 @@ names both parts, the common volume, its depth (the smallest side of its box: by
 slot is too narrow) and the box where it lies. Widen the slot to the partner's thickness, use
 the material the joint was drawn for, or move the part with its `Place`; a collision 1 mm
 deep or more is a part misplaced (an offset's sign, a position), and the hint leads with
-moving it. Two parts meant to
+moving it. When the common volume is thinnest across the other part's sheet, not across the
+part that goes in, an edge or a shoulder presses into that part's face (a riser's shoulder
+0.3 mm into a sloping plank's underside: run dj), and the hint says so, not a slot. Two parts meant to
 share material (a press fit drawn to size, an inlay) are named in `AllowOverlap(a, b)` in
 their assembly, which this check then leaves alone, as W0511 does. The check reads the
 designed parts: a `kerf` is compensated in the cut files, so the parts come out that size.

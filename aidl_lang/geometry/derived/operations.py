@@ -305,6 +305,7 @@ class _Cloner:
         ox, oy = s.copy_origin or s.frame_offset(None)
         X, Y = self.xf(ox - fx, oy - fy)
         c.copy_origin = (X + fx, Y + fy)
+        c.copy_of = s                   # (the solver moves the original's features with it)
         self.structs[s] = c
         if s.cuts_into is not None and parent is s.parent:     # given by CutInto: so is c
             c.cuts_into = s.cuts_into

@@ -71,7 +71,12 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
         sink.warning("W0517", f"assembled, parts `{c.a}` and `{c.b}` collide: they share "
                      f"{c.volume:.3g} mm^3, {c.depth:.3g} mm deep, {where}", at(c.b) or sa,
                      labels=labels,
-                     hint=(f"a slot or a gap is {c.depth:.3g} mm narrower than the part that "
+                     hint=(f"`{c.b.split('.')[-1]}` runs {c.depth:.3g} mm into a face of "
+                           f"`{c.a.split('.')[-1]}` (an edge or a shoulder pressed into it, "
+                           "not a slot too narrow): move it that far off the face with its "
+                           "`Place`, or shorten it there"
+                           if c.depth < SLOT_SHORT and c.into_face else
+                           f"a slot or a gap is {c.depth:.3g} mm narrower than the part that "
                            "goes in it: widen it to the partner's thickness (or make the "
                            "material thinner), or move the part with its `Place`"
                            if c.depth < SLOT_SHORT else

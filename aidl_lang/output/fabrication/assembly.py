@@ -116,6 +116,10 @@ class Collision:
     # each connected piece's box where there are several (two tabs too thick for their two
     # slots: runs cm, cu read one box spanning both and the part between)
     places: tuple = ()
+    # the common volume is thinnest across `a`'s sheet (not `b`'s): `b`'s edge or shoulder
+    # runs into `a`'s face, no slot too narrow (run dj: a riser's shoulder 0.3 mm into a
+    # sloping plank's underside, read as its slots 0.3 mm too narrow)
+    into_face: bool = False
 
 
 @dataclass
@@ -196,11 +200,11 @@ def fit(bodies, deadline=None, normals: dict | None = None,
                                if m.volume() > VOLUME_TOL] or [_box(common)], dtype=float)
             box = tuple(float(v) for v in np.concatenate([pieces[:, :3].min(axis=0),
                                                           pieces[:, 3:].max(axis=0)]))
-            depth = _depth(common, normals.get(na), normals.get(nb), box)
+            depth, into_face = _depth(common, normals.get(na), normals.get(nb), box)
             if depth > DEPTH_TOL:
                 places = tuple(tuple(float(v) for v in q) for q in pieces) \
                     if len(pieces) > 1 else ()
-                hits.append(Collision(na, nb, vol, box, depth, places))
+                hits.append(Collision(na, nb, vol, box, depth, places, into_face))
                 touching.update((i, j))
                 continue
         if i not in touching or j not in touching:
@@ -314,19 +318,22 @@ def normals_of(where: dict) -> dict:
     return {name: np.asarray(M[:3, 2], dtype=float) for name, M in where.items()}
 
 
-def _depth(common, na, nb, box) -> float:
-    """How far two plates run into each other: ``common`` (their common volume) cut across
-    the line where their planes meet (``na`` x ``nb``), at seven heights along it; in each
-    cut the pieces' widths are summed along each normal (a slot 0.5 mm too narrow leaves
-    0.25 mm each side: 0.5), the smaller sum taken; the most frequent figure of the cuts.
-    Parallel plates (or no normals): the common volume's extent along the normal."""
+def _depth(common, na, nb, box) -> tuple[float, bool]:
+    """How far two plates run into each other, and whether across plate a's sheet:
+    ``common`` (their common volume) cut across the line where their planes meet (``na`` x
+    ``nb``), at seven heights along it; in each cut the pieces' widths are summed along each
+    normal (a slot 0.5 mm too narrow leaves 0.25 mm each side: 0.5), the smaller sum taken;
+    the most frequent figure of the cuts.  The second value is True when that figure is the
+    sum along ``na`` in every cut that gives it (b's edge runs into a's face; a slot of a too narrow for b is thin along
+    ``nb``).  Parallel plates (or no normals): the common volume's extent along the normal,
+    False."""
     z = np.array([0.0, 0.0, 1.0])
     na = z if na is None else na
     nb = z if nb is None else nb
     d = np.cross(na, nb)
     if np.linalg.norm(d) < 1e-9:
         v = np.asarray(common.to_mesh().vert_properties, dtype=float)[:, :3] @ na
-        return float(v.max() - v.min())
+        return float(v.max() - v.min()), False
     e3 = d / np.linalg.norm(d)
     e1 = na - (na @ e3) * e3
     e1 /= np.linalg.norm(e1)
@@ -337,7 +344,7 @@ def _depth(common, na, nb, box) -> float:
     ub = np.array([nb @ e1, nb @ e2])
     ub /= np.linalg.norm(ub)
     lo, hi = turned.bounding_box()[2], turned.bounding_box()[5]
-    figures = []
+    figures, across_a = [], []
     for f in (0.13, 0.27, 0.38, 0.5, 0.62, 0.73, 0.87):
         polys = [np.asarray(p, dtype=float) for p in turned.slice(lo + f * (hi - lo)).to_polygons()]
         polys = [p for p in polys if len(p) >= 3]
@@ -346,9 +353,13 @@ def _depth(common, na, nb, box) -> float:
         sa = sum(float(p[:, 0].max() - p[:, 0].min()) for p in polys)
         sb = sum(float((p @ ub).max() - (p @ ub).min()) for p in polys)
         figures.append(round(min(sa, sb), 6))
+        across_a.append(sa < sb - 1e-9)
     if not figures:
-        return float(min(box[3] - box[0], box[4] - box[1], box[5] - box[2]))
-    return max(set(figures), key=lambda v: (figures.count(v), -v))
+        return float(min(box[3] - box[0], box[4] - box[1], box[5] - box[2])), False
+    best = max(set(figures), key=lambda v: (figures.count(v), -v))
+    # across a's sheet in every cut of that figure (a cross-halving's two slots too narrow
+    # are thin across one sheet above the crossing's middle, the other below: a slot)
+    return best, all(a for f, a in zip(figures, across_a) if f == best)
 
 
 # a plate is cut to a pair's common box (:func:`_within`) when that holds at most this part

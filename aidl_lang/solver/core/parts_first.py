@@ -281,23 +281,26 @@ class PartsFirst:
         if helpers:                        # the part's helpers alone, against its own rows
             rows = self.rows_of([s])
             yield 0, rows, self._cols(helpers, rows), False
-        # a pattern's copies have no frame: their geometry (their children's too) follows
-        # their original's frame in every stage (run dg: a copy's hole held where written
-        # held the original's hole there, and it moved back off its moved drawing)
-        copies = lambda d: own(list({id(c): c for t in below(d) if id(t) not in self.frame
-                                     for c in t.subtree()}.values()))
         for d in range(1, D + 1):          # descendants translate
-            params = helpers + [i for i in dict.fromkeys(frames(below(d)) + copies(d))
-                                if i not in held]
+            params = helpers + [i for i in frames(below(d)) if i not in held]
             if params:
                 rows = self.rows_of(upto(d - 1))
                 yield d, rows, self._cols(params, rows), False
         # then the geometry of what cannot translate by itself (a pattern's or a mirror's
         # copies, held on the frame of the structure that made them) follows: a feature
         # that can translate is not deformed to spare its part (its `Fixed` frame holds)
-        all_frames = frames(below(D))
+        # the features inside a pattern's (or a mirror's) original move with it, never back
+        # against it: its copies' features are tied to them where they are, and holding
+        # those in place by a feature's frame is cheaper than moving the copies (run dg:
+        # `rolls[0].bb.left == ...` moved the drawing `roll` 31 mm and its hole back 31 mm,
+        # and no copy's hole followed its disc)
+        originals = {id(o) for t in below(D) if (o := t.__dict__.get("copy_of")) is not None}
+        inner = set(frames([t for t in below(D) if any(id(a) in originals for a in
+                                                         _ancestors_below(t, s))]))
+        all_frames = [i for i in frames(below(D)) if i not in inner]
         for d in range(1, D + 1):
-            params = helpers + [i for i in dict.fromkeys(all_frames + copies(d))
+            params = helpers + [i for i in all_frames + own([t for t in below(d)
+                                                             if id(t) not in self.frame])
                                 if i not in held]
             if params:
                 rows = self.rows_of(upto(max(d, D - 1)))
@@ -322,7 +325,8 @@ class PartsFirst:
             # the copies follow their originals here too (a scaled pick beside three labels
             # each `At` its pick: without the copies' geometry the picks could not move,
             # and the paper's ladder bent them and moved the plate, 105d #09)
-            params = helpers + [i for i in dict.fromkeys(all_frames + copies(D) + own(movable))
+            copies = own([t for t in below(D) if id(t) not in self.frame])
+            params = helpers + [i for i in dict.fromkeys(all_frames + copies + own(movable))
                                 if i not in held]
             yield D + 1, rows, self._cols(params, rows), True
 
@@ -402,3 +406,11 @@ class PartsFirst:
             row_vars(exprs[r], vs)
             mask[k] = not any(v < n and free[v] and v not in held for v in vs)
         return mask
+
+
+def _ancestors_below(t: Structure, s: Structure):
+    """``t``'s ancestors strictly below ``s``, nearest first."""
+    a = t.parent
+    while a is not None and a is not s:
+        yield a
+        a = a.parent
