@@ -188,7 +188,7 @@ def test_a_patterns_copies_hole_follows_its_moved_original():
     tied to it, need not move), and the three holes hid nothing (W0526 x3).  The same with
     parts: a tag with an eye hole, `Below(t, base)`, its copies' eyes left 39 mm up on the
     edge.  Every hole now stays on its disc, in the original and in each copy (a feature of
-    a patt's original moves with it, never back against it)."""
+    a pattern's original moves with it, never back against it)."""
     path = RUNS / "issue111dg" / "run" / "02_sushi_geta.first_valid.aidl"
     r = aidl_lang.compile(source=path.read_text(), path=str(path))
     assert "W0526" not in _codes(r)
