@@ -229,3 +229,18 @@ def test_w0517_a_shoulder_in_a_face_is_not_a_slot_too_narrow():
     r = aidl_lang.compile(source=src, overrides={"slot": "2.5mm"})
     (w,) = [d for d in r.diagnostics if d.code == "W0517"]
     assert "mm narrower than the part that goes in it" in w.hint
+
+
+def test_e0108_arithmetic_on_an_edge_names_the_box_side():
+    """Run dl's yoga mat stand: `outline.top - 5 mm` (the top edge, a Line) was E0108
+    "cannot apply `-` to Line and length" with no hint; the hint names `outline.bb.top`."""
+    r = aidl_lang.compile(source="""solid stand {
+    outline = Rectangle(center=(0, 0), width=100, height=60)
+    y = outline.top - 5 mm
+    c = Circle(center=(0, 0), radius=outline - 5 mm)
+}
+""")
+    e = [d for d in r.diagnostics if d.code == "E0108"]
+    assert e[0].hint == ("`outline.top` is an edge, a Line; its coordinate is `outline.bb.top` "
+                         "(the box's side, a length)")
+    assert len(e) == 2 and "`outline` is a Rectangle: take a number of it" in e[1].hint

@@ -442,7 +442,8 @@ class Expressions:
         if isinstance(r, bool):
             r = Q.num(float(r))
         if not isinstance(l, Q) or not isinstance(r, Q):
-            raise EvalError("E0108", f"cannot apply `{op}` to {type_name(l)} and {type_name(r)}", e.span)
+            raise EvalError("E0108", f"cannot apply `{op}` to {type_name(l)} and {type_name(r)}",
+                            e.span, hint=_shape_operand_hint(e, l, r))
         if type(l) is Radians or type(r) is Radians:
             return self._radians_op(op, l, r, e)
         return self._q_op(op, l, r, e)
@@ -595,6 +596,27 @@ class Expressions:
             return PV(lift(p.x) * k, lift(p.y) * k, None, p.owners | q.owners)
         raise EvalError("E0108", f"cannot apply `{op}` to {type_name(l)} and {type_name(r)}", e.span,
                         hint="points add and subtract as vectors; scale them by numbers")
+
+
+_SIDES = ("top", "bottom", "left", "right")
+
+
+def _shape_operand_hint(e, l, r) -> str | None:
+    """E0108's hint for arithmetic on a shape (run dl: `outline.top - 5 mm`, where
+    `outline.top` is the top edge, a Line): the number meant is a box side (`outline.bb.top`)
+    or a member of the shape; None when neither operand is a shape."""
+    for side, v in ((e.left, l), (e.right, r)):
+        if not isinstance(v, GeomRef):
+            continue
+        text = _dotted(side)
+        if isinstance(side, A.Member) and side.name in _SIDES and text:
+            head = text.rsplit(".", 1)[0]
+            what = "an edge, a Line" if v.geom.kind == "Line" else f"a {v.geom.kind}"
+            return (f"`{text}` is {what}; its coordinate is `{head}.bb.{side.name}` (the "
+                    "box's side, a length)")
+        return (f"`{text or 'it'}` is a {v.geom.kind}: take a number of it (a member such as "
+                f"`.length` or `.radius`, or a box side `.bb.top`), or a point (`.center`)")
+    return None
 
 
 def _format_width(fmt: str) -> int:
