@@ -244,3 +244,25 @@ def test_e0108_arithmetic_on_an_edge_names_the_box_side():
     assert e[0].hint == ("`outline.top` is an edge, a Line; its coordinate is `outline.bb.top` "
                          "(the box's side, a length)")
     assert len(e) == 2 and "`outline` is a Rectangle: take a number of it" in e[1].hint
+
+
+def test_positions_in_messages_are_where_the_program_writes_them():
+    """Runs cw, dk: W0507, W0516, W0520 gave positions on the laid-out sheet, 340 mm off the
+    program's for a part placed by `RightOf(b, a, gap=300)`.  They are given as written."""
+    src = """assembly kit {
+    solid a { body = Rectangle(center=(0, 0), width=40, height=40) }
+    solid b {
+        body = Rectangle(center=(0, 0), width=40, height=40)
+        hole h { c = Circle(center=(10, 0), diameter=19.8) }
+        drawing m { l = Line((0, 15), (20, 15)) }
+    }
+    RightOf(b, a, gap=300)
+}
+"""
+    r = aidl_lang.compile(source=src)
+    msgs = {d.code: d.message for d in r.diagnostics if d.code in ("W0507", "W0516")}
+    assert "at (20.00, 15.00)" in msgs["W0516"]
+    assert "near (19.9, 0.0)" in msgs["W0507"]
+    # the drawing itself is laid out: the part's outline starts 340 mm to the right
+    (part,) = [p for p in r.output.drawing.parts if p.name == "kit.b"]
+    assert abs(part.shape.bounds()[0] - 320.0) < 1e-9

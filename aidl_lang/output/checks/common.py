@@ -456,3 +456,12 @@ def freed_share(d, part, off: np.ndarray, tol: float) -> int:
         used += bool(on.any())
         hit |= on
     return used if hit.all() else 0
+
+
+def written(s, x: float, y: float) -> tuple[float, float]:
+    """Point ``(x, y)`` (mm, on the sheet) of part ``s`` where its program writes it: less how
+    far the solve moved the part (``s.moved``, set by the booleans: a layout relation,
+    `RightOf(b, a)`), so that a message's position is the one in the program (runs cw, dk:
+    positions given in the laid-out sheet's coordinates, 300 mm off the program's)."""
+    dx, dy = s.__dict__.get("moved", (0.0, 0.0)) if s is not None else (0.0, 0.0)
+    return x - dx + 0.0, y - dy + 0.0

@@ -25,7 +25,7 @@ from ..part.build.booleans import Drawing
 from ..part.measure.nearby import box_pairs
 from ..part.build.scanwork import decompose
 from .letters import fallen_counters, letters_in
-from .common import (MIN_AREA, _area, _contributors, _depth, _edges, _inside, _say_few, _signed,
+from .common import (written, MIN_AREA, _area, _contributors, _depth, _edges, _inside, _say_few, _signed,
                      _union)
 from .marks.engravings import ENGRAVE_TOL, _samples
 
@@ -612,7 +612,8 @@ def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
             if other.span is not None else []
         said.append((f"`{poke.label}` pokes {side:.2f} mm past `{other.label}` in "
                      f"`{s.path}`, a ledge of {side:.2f} mm in the outline near "
-                     f"({at[0]:.1f}, {at[1]:.1f}): the two edges almost align but not quite",
+                     f"({written(s, *at)[0]:.1f}, {written(s, *at)[1]:.1f}): the two edges "
+                     "almost align but not quite",
                      poke.span or s.span,
                      {"labels": labels,
                       "hint": f"align the edges: move `{poke.label}` by ({mv[0] + 0:.3f}, "

@@ -40,7 +40,7 @@ from ...part.measure.nearby import (boundaries, boundary, box_pairs, box_pairs_b
 from .clearing import move_fix
 from .contact import circle_of, contact_points
 from .meant import MeantMerge
-from ..common import (MIN_AREA, MIN_WALL, _area, _body, _contributors, _cross, _depth, _edge_distance, _edges, _insert_fix,
+from ..common import (written, MIN_AREA, MIN_WALL, _area, _body, _contributors, _cross, _depth, _edge_distance, _edges, _insert_fix,
                       _inside, _loop_boxes, _part_of, _pct, _signed, _significant, _union,
                       below)
 
@@ -114,7 +114,7 @@ def _check_flush(d: Drawing, s: Structure, shape, a: _Openings, cuts, min_wall: 
         if not at:                         # (not found on the polygons: the hole's box)
             x0, y0, x1, y1 = c.region.bounds()
             at = [((x0 + x1) / 2, (y0 + y1) / 2)]
-        said = " and ".join(f"({x:.2f}, {y:.2f})" for x, y in at[:4]) \
+        said = " and ".join("({:.2f}, {:.2f})".format(*written(s, x, y)) for x, y in at[:4]) \
             + (f" and {len(at) - 4} more places" if len(at) > 4 else "")
         sink.warning("W0514", f"hole `{c.hole.path}` lies inside `{s.path}` but touches its "
                      f"outer edge {where} (a wall of zero width), so it opens onto the edge: "
@@ -576,9 +576,10 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
             hole, pair, away = j, f"{a.names[i]} and {a.names[j]}", a.names[i]
             labels = [Label(a.spans[i], "the other side of the wall", primary=False)] \
                 if a.spans[i] else []
+        wx, wy = written(s, x, y)
         sink.warning("W0507", f"a wall of `{s.path}` between {pair} is "
                      f"{below(w, t)} mm wide, thinner than {t:g} mm (over {length:.1f} mm, near "
-                     f"({x:.1f}, {y:.1f}))", a.spans[hole], labels=labels,
+                     f"({wx:.1f}, {wy:.1f}))", a.spans[hole], labels=labels,
                      hint=f"move {a.names[hole]} {_enough(t - w)} mm further from {away} (or shrink "
                           f"it) so that at least {t:g} mm of material is left (a laser or "
                           "router cannot hold a thinner wall); the minimum is set with "

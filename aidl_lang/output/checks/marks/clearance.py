@@ -14,6 +14,7 @@ import numpy as np
 
 from .engravings import _copy_label, _mark_segments
 from .segments import _edge_arrays, _pair_gap
+from ..common import written
 
 TEXT_CLEAR = 0.2         # mm: letters closer to the cut edge run into it
 
@@ -60,10 +61,11 @@ def check_text_near_cut(texts: list, roots: dict, loops: dict | None, sink) -> N
                        "this statement as close: " + ", ".join(
                            f"`{_copy_label(f[1], short=True)}` ({f[0]:.2f} mm)"
                            for f in group[1:4]) + (", ..." if len(group) > 4 else "")
+            wx, wy = written(part, *pm)
             sink.warning(
                 "W0516", f"engraving `{_copy_label(g)}` (text \"{g.data.get('text', '')}\") "
                 f"{how} the cut edge of `{part.path}` "
-                f"({'a hole' if in_hole else 'the outline'}) at ({pm[0]:.2f}, {pm[1]:.2f}): "
+                f"({'a hole' if in_hole else 'the outline'}) at ({wx:.2f}, {wy:.2f}): "
                 f"the letters meet the cut (text needs {TEXT_CLEAR} mm clear of the edge){more}",
                 g.span, hint=f"keep `{g.label}` {math.ceil((TEXT_CLEAR - gap) * 100) / 100:.2f} "
                 "mm or more further from the edge (move it, or make it smaller), or move the "

@@ -17,7 +17,7 @@ import numpy as np
 
 from ....base.diagnostics import DiagnosticSink
 from ...part.build.booleans import Drawing
-from ..common import _edges, _inside, _part_of, _pct, _signed, freed_share
+from ..common import _edges, _inside, _part_of, _pct, _signed, freed_share, written
 from .allowed import meant_off
 from .arcs import arc_on_material
 from .segments import _crosses, _edge_arrays, _exact_circle_gaps, _pair_gap
@@ -776,7 +776,8 @@ def _say_meets_cut(part, group: list, hole, E0, E1, crossing: set, sink) -> None
                f"or move `{g.label}` to stay on it, {CUT_CLEAR} mm clear of the edge (or "
                "leave a gap in it round the opening)")
     elif t is not None:
-        fix = (f"end `{g.label}` {t:.2f} mm further inside, at ({r[0]:.2f}, {r[1]:.2f}) "
+        rx, ry = written(part, *r)
+        fix = (f"end `{g.label}` {t:.2f} mm further inside, at ({rx:.2f}, {ry:.2f}) "
                f"(shorten it by {t:.2f} mm), so that it stops {CUT_CLEAR} mm short of the "
                "edge")
         if len(group) > 1:
@@ -795,11 +796,13 @@ def _say_meets_cut(part, group: list, hole, E0, E1, crossing: set, sink) -> None
     more = ""
     if len(group) > 1:
         rest = ", ".join(f"`{_copy_label(f[0], short=True)}` ({f[3]:.2f} mm at "
-                         f"({f[5][0]:.2f}, {f[5][1]:.2f}))" for f in group[1:4])
+                         f"({written(part, *f[5])[0]:.2f}, {written(part, *f[5])[1]:.2f}))"
+                         for f in group[1:4])
         more = (f"; {len(group) - 1} more cop{'ies' if len(group) > 2 else 'y'} of this "
                 f"statement as close: {rest}{', ...' if len(group) > 4 else ''}")
+    wx, wy = written(part, *pm)
     sink.warning("W0516", f"engraving `{_copy_label(g)}` {how} the cut edge of "
-                 f"`{part.path}` ({which}) at ({pm[0]:.2f}, {pm[1]:.2f}): the engraving "
+                 f"`{part.path}` ({which}) at ({wx:.2f}, {wy:.2f}): the engraving "
                  f"meets the cut (a mark needs {CUT_CLEAR} mm clear of the edge), so it "
                  f"runs into the edge{more}", g.span,
                  hint=fix + "; the cut already draws the edge")

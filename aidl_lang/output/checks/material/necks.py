@@ -12,7 +12,7 @@ import numpy as np
 from ....base.diagnostics import DiagnosticSink, Label
 from ....geometry.core.model import Structure
 from ...part.build.booleans import Drawing
-from ..common import _area, _solids_within
+from ..common import _area, _solids_within, written
 from . import walls     # its THIN_SECONDS_PER_VERTEX, read at the call (one cost for both)
 
 NECK_VERTS = 200_000   # W0507's neck search: not past this many vertices of members that overlap
@@ -202,7 +202,7 @@ def _check_necks(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
            if move is not None else f"make {what_q} and {what_p} overlap over at least {t:g} mm")
     sink.warning(
         "W0507", f"{what_q} and {what_p} of `{s.path}` join {how}, narrower than {t:g} mm, "
-        f"near ({mid_pt[0]:.1f}, {mid_pt[1]:.1f}): the cut part hangs by it and breaks there "
+        f"near ({written(s, *mid_pt)[0]:.1f}, {written(s, *mid_pt)[1]:.1f}): the cut part hangs by it and breaks there "
         "(or falls apart when the laser burns the neck away)",
         gq.span or s.span,
         labels=[Label(gp.span, "the other member", primary=False)] if gp.span else [],

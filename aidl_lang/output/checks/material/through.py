@@ -33,7 +33,7 @@ from ....geometry.shapes.tessellate import CHORD_TOL
 from ...part.build.booleans import SLIT_HALF, Drawing, _quad
 from ...part.measure.nearby import close_pairs, meeting
 from ...part.edges.shared import TWO_PI, _span
-from ..common import _inside, _signed, below
+from ..common import _inside, _signed, below, written
 from .walls import _thin
 
 
@@ -243,9 +243,10 @@ def _webs(s, whole, slit, cuts: list, t: float, sink: DiagnosticSink, seen: list
         x0, y0, x1, y1 = piece.bounds()
         span = by[0].span if by and by[0].span is not None else s.span
         where = f"beside through-cut{'s' if len(by) > 1 else ''} {names} " if by else ""
+        wx, wy = written(s, (x0 + x1) / 2, (y0 + y1) / 2)
         sink.warning(
-            "W0507", f"a web of `{s.path}` {where}near ({(x0 + x1) / 2:.2f}, "
-            f"{(y0 + y1) / 2:.2f}) is thinner than {t:g} mm: the laser leaves a strip "
+            "W0507", f"a web of `{s.path}` {where}near ({wx:.2f}, "
+            f"{wy:.2f}) is thinner than {t:g} mm: the laser leaves a strip "
             f"too weak to hold (or burns it away)", span,
             hint=f"space the cuts at least {t:g} mm apart and from the outline; if the "
                  f"design means this, say so: `min_wall 0` in `{s.path}` or a smaller "

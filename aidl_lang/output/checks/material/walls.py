@@ -22,7 +22,7 @@ from ...part.build.booleans import Drawing
 from ...part.measure.nearby import _median, box_pairs
 from ...part.measure.nearby import components as _components
 from ...part.build.scanwork import turned, turned_back
-from ..common import _area, _loop_boxes, _solids_within, _union, below
+from ..common import _area, _loop_boxes, _solids_within, _union, below, written
 
 def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: DiagnosticSink,
                  quick: bool = True, covered: set = frozenset(), loops=None,
@@ -82,6 +82,7 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
             span = g.span or g.owner.span or span
             if tip is not None:
                 (vx, vy), angle = tip
+                vx, vy = written(s, vx, vy)
                 last = t / 2 / np.tan(np.radians(angle) / 2)
                 sink.warning(
                     "W0507", f"a wall of `{s.path}` at the tip of {what}{between}: its corner "
@@ -108,9 +109,10 @@ def _check_walls(d: Drawing, s: Structure, shape, t: float, cuts, sink: Diagnost
                            f"min_wall {stated:g} mm\n{' ' * (at.col - 1)}")
                 meant = (f"; if the request asks for a wall this thin, state it: `min_wall "
                          f"{stated:g} mm` before `{s.name}` (the fix)")
+        wx, wy = written(s, px, py)
         sink.add(Diagnostic(
             "W0507", f"a wall of `{s.path}`{made}{between} is {below(width, t)} mm wide, thinner "
-            f"than {t:g} mm (over {length:.1f} mm, near ({px:.1f}, {py:.1f}))", span, "warning",
+            f"than {t:g} mm (over {length:.1f} mm, near ({wx:.1f}, {wy:.1f}))", span, "warning",
             hint=f"{fix} (a laser or router cannot hold a thinner wall){meant}; the minimum is "
                  "set by `min_wall` or --min-wall", fix=edit))
 

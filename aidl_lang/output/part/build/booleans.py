@@ -759,8 +759,18 @@ class Renderer(Faces):
         if any(getattr(s, "placement", None) is not None for s in self.m.structures):
             out.placement = {name: placement_matrix(s, self.x) for name, s in out.part_of.items()}
         out.bends = {n: b for n, s in out.part_of.items() if (b := bends_of(s, self.x))}
+        for s in out.part_of.values():
+            s.moved = self.moved(s)     # where the checks say positions as written
         out.sinks = self.sinks(out)
         return out
+
+    def moved(self, s: Structure) -> tuple[float, float]:
+        """How far the solve moved part ``s`` from where it is written: the sum of its and
+        its ancestors' frame offsets (mm; a layout relation, `RightOf(b, a)`).  Kept on the
+        part (``s.moved``) for the checks' messages (:func:`..checks.common.written`)."""
+        chain = [s, *s.ancestors()]
+        return (float(sum(self.x[a.fx] for a in chain if a.fx >= 0)),
+                float(sum(self.x[a.fy] for a in chain if a.fy >= 0)))
 
     def sinks(self, out: Drawing) -> list[SinkAt]:
         """Each round hole a ``Countersink`` / ``Counterbore`` names, at its solved place:
