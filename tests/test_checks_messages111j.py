@@ -266,3 +266,16 @@ def test_positions_in_messages_are_where_the_program_writes_them():
     # the drawing itself is laid out: the part's outline starts 340 mm to the right
     (part,) = [p for p in r.output.drawing.parts if p.name == "kit.b"]
     assert abs(part.shape.bounds()[0] - 320.0) < 1e-9
+
+
+def test_w0517_that_follows_from_a_joint_that_cut_nothing_says_so():
+    """Run dk's bar tool stand: both end panels' tab joints ran off the panels (rotation 0
+    and 180 swapped), W0502 x4 said so, and four W0517 followed with "move the part with its
+    `Place`".  Each W0517 now names the W0502 it follows from and the joint to turn."""
+    path = RUNS / "issue111dk" / "run" / "05_bar_tool_stand.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    ws = [d for d in r.diagnostics if d.code == "W0517"]
+    assert len(ws) == 4 and len([d for d in r.diagnostics if d.code == "W0502"]) == 4
+    for w in ws:
+        assert w.hint.startswith("this follows from W0502 above: `bar_stand.")
+        assert "turn or move that joint first (its `rotation=`)" in w.hint

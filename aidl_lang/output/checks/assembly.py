@@ -20,6 +20,34 @@ AWAY = 5.0
 SLOT_SHORT = 1.0
 
 
+def _collision_hint(d: Drawing, c) -> str:
+    """W0517's hint for collision ``c``: what follows from a joint that cut nothing (W0502
+    said first: its tabs or slots are not there; run dk's end panels, their tab gaps run
+    off the ends by a swapped `rotation=`), an edge pressed into a face (run dj), a slot too
+    narrow, or a part misplaced; then the words that accept a meant overlap."""
+    a, b = c.a.split(".")[-1], c.b.split(".")[-1]
+    stray = [j for j in d.__dict__.get("stray_joints", ()) if j[0] in (c.a, c.b)]
+    if stray:
+        part, hole, what = stray[0]
+        why = (f"this follows from W0502 above: {what} of `{hole}` cuts nothing, so `{part}` "
+               "lacks those tabs or slots; turn or move that joint first (its `rotation=`), "
+               "then check again")
+    elif c.depth < SLOT_SHORT and c.into_face:
+        why = (f"`{b}` runs {c.depth:.3g} mm into a face of `{a}` (an edge or a shoulder "
+               "pressed into it, not a slot too narrow): move it that far off the face with "
+               "its `Place`, or shorten it there")
+    elif c.depth < SLOT_SHORT:
+        why = (f"a slot or a gap is {c.depth:.3g} mm narrower than the part that goes in it: "
+               "widen it to the partner's thickness (or make the material thinner), or move "
+               "the part with its `Place`")
+    else:
+        why = (f"one part runs {c.depth:.3g} mm into the other, more than a slot is ever too "
+               "narrow: move the part with its `Place` (its position or the sign of an "
+               "offset), or widen the slot if it is one")
+    return (f"{why}; if they are meant to share material (a press fit, an inlay), "
+            f"`AllowOverlap({a}, {b})` in their assembly says so")
+
+
 def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
     """The fit check of the assembled product (:func:`.assembly.fit`, for a program that
     places its parts with ``Place``): W0517 for two parts whose solids collide (a slot
@@ -70,22 +98,7 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                  + (f"; and {len(c.places) - 4} more" if len(c.places) > 4 else "") + " mm")
         sink.warning("W0517", f"assembled, parts `{c.a}` and `{c.b}` collide: they share "
                      f"{c.volume:.3g} mm^3, {c.depth:.3g} mm deep, {where}", at(c.b) or sa,
-                     labels=labels,
-                     hint=(f"`{c.b.split('.')[-1]}` runs {c.depth:.3g} mm into a face of "
-                           f"`{c.a.split('.')[-1]}` (an edge or a shoulder pressed into it, "
-                           "not a slot too narrow): move it that far off the face with its "
-                           "`Place`, or shorten it there"
-                           if c.depth < SLOT_SHORT and c.into_face else
-                           f"a slot or a gap is {c.depth:.3g} mm narrower than the part that "
-                           "goes in it: widen it to the partner's thickness (or make the "
-                           "material thinner), or move the part with its `Place`"
-                           if c.depth < SLOT_SHORT else
-                           f"one part runs {c.depth:.3g} mm into the other, more than a slot "
-                           "is ever too narrow: move the part with its `Place` (its position "
-                           "or the sign of an offset), or widen the slot if it is one")
-                     + f"; if they are meant to share material (a press fit, an inlay), "
-                       f"`AllowOverlap({c.a.split('.')[-1]}, {c.b.split('.')[-1]})` in their "
-                       "assembly says so")
+                     labels=labels, hint=_collision_hint(d, c))
     from ...base.diagnostics import in_stdlib
 
     def templates(name) -> bool:

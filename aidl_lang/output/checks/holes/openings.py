@@ -920,6 +920,8 @@ def _check_stray_shapes(d: Drawing, cut, part, roots, sink: DiagnosticSink) -> N
     for span, gs in stray.items():      # (run ab's extractor: a cross_halving's mouth on the
         #                                 bottom edge, at rotation 0 running down off the plate)
         what = f"`{gs[0].label}`" + (f" ({len(gs)} copies)" if len(gs) > 1 else "")
+        if tpl:                         # a joint whose tabs or slots are not there: the fit
+            stray_joints(d).append((part.path, h.path, what))     # check says it (run dk)
         sink.warning("W0502", f"{what} of {h.kind} `{h.path}` cuts nothing: it lies outside "
                      f"solid `{s.path}` (from ({x0:.2f}, {y0:.2f}) to ({x1:.2f}, {y1:.2f}))",
                      span, hint=f"move it onto `{s.path}`: check its coordinates against the "
@@ -927,6 +929,14 @@ def _check_stray_shapes(d: Drawing, cut, part, roots, sink: DiagnosticSink) -> N
 
 
 OVERRUN_NEAR = 0.5      # mm: an `overrun=true` shape this near its solid's box is at its edge
+
+
+def stray_joints(d: Drawing) -> list:
+    """``[(part path, hole path, what)]``: the template holes (a joint's) of which W0502 said
+    a shape cuts nothing, kept on the drawing for W0517's hint (its tabs are not there)."""
+    if "stray_joints" not in d.__dict__:
+        d.stray_joints = []
+    return d.stray_joints
 
 
 def _over_opening(d: Drawing, hole_shape, whole: float, part, roots) -> bool:
