@@ -1,0 +1,73 @@
+# Request: a farm-gate sign, 6 mm exterior ply, hung by two chains. A backing board 520 x 240
+# with 20 mm corner radii and two 6 mm chain holes 30 mm in from the sides and 15 mm down
+# from the top. Glued on it, cut separately (to paint another colour): "FRESH EGGS" in bold
+# sans capitals 40 mm high, standing on a rail 8 mm tall as wide as the word (the letters
+# sink 2 mm into the rail), the word's middle 40 mm right of the board's middle and its
+# baseline 20 mm above it; and a hen facing the word, about 130 mm tall: an oval body
+# 90 x 64, a round head on a neck, a three-lobed comb, a beak, a wattle, a tail, two legs with
+# feet, and a 5 mm eye cut through. "£3 A DOZEN" is engraved filled, 26 mm high, under the
+# word (its middle 50 mm below the board's middle).
+
+thickness 6 mm
+
+W = 520 mm
+H = 240 mm
+
+assembly sign {
+    solid board {
+        body = RoundedRectangle(center=(0, 0), width=W, height=H, corner_radius=20)
+        Fixed(body)
+        hole chains {
+            for s in [-1, 1] {
+                c = Circle(center=(s * (W / 2 - 30 mm), H / 2 - 15 mm), diameter=6)
+            }
+        }
+        drawing price {
+            p = Text("£3 A DOZEN", position=(40, -50), size=26, font="sans:Bold",
+                     valign="middle", fill=true)
+        }
+    }
+
+    solid word {
+        letters = Text("FRESH EGGS", position=(40, 20), size=40, font="sans:Bold")
+        rail = Rectangle(center=(letters.center.x, 20 + 2 - 4), width=letters.bb.width,
+                         height=8)
+    }
+
+    solid hen {
+        body = Ellipse(center=(-180, -10), rx=45, ry=32)
+        tail = Polygon([(-212, -2), (-248, 40), (-232, 46), (-200, 18)])
+        neck = Hull(Circle(center=(-140, 35), radius=16), Circle(center=(-152, 5), radius=20))
+        for i in range(3) {
+            comb = Circle(center=(-148 + 8 * i, 52 + (2 if i == 1 else 0)), radius=5)
+        }
+        beak = Polygon([(-126, 39), (-113, 34), (-126, 29)])
+        wattle = Circle(center=(-128, 22), radius=4)
+        for x in [-190, -170] {
+            leg = Rectangle(center=(x, -52), width=4, height=26)
+            foot = Rectangle(center=(x + 4, -65), width=16, height=4)
+        }
+        hole eye { e = Circle(center=(-137, 39), diameter=5) }
+    }
+
+    # flat: the word and the hen under the board on the sheet
+    Below(word, board, gap=10)
+    AlignLeft(word, board)
+    RightOf(hen, word, gap=10)
+    AlignTop(hen, word)
+
+    # assembled: the board faces the lane; the word and the hen glued on its face, where drawn
+    Place(board, position=(0, 0, 0), face="front", up="up")
+    Place(word, position=(0, -6 mm, 0), face="front", up="up")
+    Place(hen, position=(0, -6 mm, 0), face="front", up="up")
+
+    assert board.body.bb.width == 520 mm and board.body.bb.height == 240 mm
+    assert word.letters.size == 40 mm
+    assert word.rail.bb.height == 8 mm and word.rail.bb.width == word.letters.bb.width
+    assert word.letters.position.y - word.rail.bb.top == -2 mm, "letters sink 2 mm"
+    assert word.letters.position.x - board.body.center.x == 40 mm
+    assert word.letters.position.y - board.body.center.y == 20 mm
+    assert hen.bb.height <= 135 mm and hen.bb.height >= 125 mm, "hen about 130 tall"
+    assert hen.bb.right < word.bb.left, "the hen clear of the word"
+    assert board.price.p.position.y - board.body.center.y == -50 mm
+}
