@@ -683,8 +683,13 @@ def test_W0508_offers_no_machine_fix_that_edits_a_statement_of_several_parts():
     """Run bc's yarn bowl: a guide notch drawn by one statement of a template called for
     five rings overlapped each ring's inside; W0508's machine fix moved the notch in that
     statement, so one ring's fix moved the next ring's notch (the hint law's failure). A
-    statement that draws several parts' holes gets the hint, no machine fix."""
+    statement that draws several parts' holes gets the hint, no machine fix.  (As written the
+    notch runs out through the rim into the ring's inside, a channel: one opening meant, no
+    W0508 since round fourteen; here it is drawn short of the rim.)"""
     src = (RUNS / "issue111bc/run/07_yarn_bowl.first_valid.aidl").read_text()
+    assert not [d for d in aidl_lang.compile(source=src).diagnostics if d.code == "W0508"]
+    src = src.replace("Rectangle(center=(r - wall / 2, 0), width=wall + 4 mm",
+                      "Rectangle(center=(r - wall, 0), width=wall")
     w = [d for d in aidl_lang.compile(source=src).diagnostics if d.code == "W0508"]
     assert w and all(d.fix is None for d in w)
     assert all("further from" in d.hint for d in w)

@@ -279,3 +279,17 @@ def test_w0517_that_follows_from_a_joint_that_cut_nothing_says_so():
     for w in ws:
         assert w.hint.startswith("this follows from W0502 above: `bar_stand.")
         assert "turn or move that joint first (its `rotation=`)" in w.hint
+
+
+def test_w0508_a_notch_from_the_edge_into_an_opening_is_one_opening_meant():
+    """Run dn's OLED case: a 13 mm USB notch through the case's bottom edge into its board
+    pocket was W0508 (twice, one per spacer), a false alarm: a channel from the edge into an
+    opening is one opening as drawn.  The same notch drawn short of the edge still merges
+    with the pocket unsaid by nothing: W0508."""
+    path = RUNS / "issue111dn" / "run" / "03_oled_sandwich_case.first_valid.aidl"
+    src = path.read_text()
+    assert "W0508" not in _codes(aidl_lang.compile(source=src, path=str(path)))
+    short = src.replace("n = Rectangle(center=(18, -H / 2 + 2), width=13, height=24)",
+                        "n = Rectangle(center=(18, -H / 2 + 10), width=13, height=12)")
+    assert short != src
+    assert "W0508" in _codes(aidl_lang.compile(source=short, path=str(path)))

@@ -840,6 +840,8 @@ hole in a rim's opening) is the design and not warned; one that covers the openi
 it (a tab reaching over a window, with a hole inside the window) is named with the area the
 inner hole cuts from it, and `AllowOverlap(window, tab)` in the structure holding both solids
 marks the refill as intended (it silences this warning and W0501 for the pair).
+A hole that runs out through the part's edge into a larger opening (a USB notch from the
+case's edge into its board pocket: run dn) is a channel, one opening as drawn, and not warned.
 Two holes meant to cut one opening (a screw hole on the edge of a window) are said with
 `AllowOverlap(window, screw)` in the structure holding both, as the hint writes (or draw the
 shapes in one hole structure); a copy made by a pattern with no name (`first_pattern[4]` of

@@ -12,6 +12,7 @@ from ..common import _area, _union
 # this share of its drawn area lies off the part and what it cuts is at least TRIM_PART of it
 TRIM_OFF, TRIM_PART = 0.5, 0.25
 MOUTH_TOUCH = 0.01      # mm: a hole this near a joint's mouth opens it (the drawn edges meet)
+RUN_OUT = 0.01          # of a hole's drawn area off the part: it runs out through the edge
 
 
 class MeantMerge:
@@ -28,6 +29,8 @@ class MeantMerge:
       meets the ring's opening instead of the air: the run is there to cut cleanly through
       whatever edge it meets; 6 of the 8).
 
+    * the smaller runs out through the part's edge (a **channel** from the edge into the
+      other: a USB notch into a board pocket, run dn);
     * one is a joint template's cut whose **mouth opens into the other**: the strip its run
       past its cut adds (where the cut meets the edge) touches the other hole, which has
       taken that edge away (issue 111's third run: a plant stand's cross-halving slot cut up
@@ -91,8 +94,22 @@ class MeantMerge:
                 return True
         return False
 
+    def _runs_out(self, k: int) -> bool:
+        """Hole ``k`` runs out through the part's edge: part of its drawn area (at least
+        :data:`RUN_OUT` of it) lies off the part's material."""
+        drawn = self.d.shapes.get(self.feats[k].hole)
+        whole = _area(drawn) if drawn is not None else 0.0
+        return whole > 0 and whole - self.areas[k + 1] >= RUN_OUT * whole
+
+    def channel(self, i: int, j: int) -> bool:
+        """The smaller of holes ``i``, ``j`` runs out through the part's edge into the other:
+        a notch from the edge into an opening, one opening as drawn (issue 111's run dn: a
+        USB notch through a case's bottom edge into its board pocket)."""
+        k = i if self.areas[i + 1] <= self.areas[j + 1] else j
+        return self._runs_out(k)
+
     def __call__(self, i: int, j: int, common) -> bool:
-        if self._trim(i) or self._trim(j) or self.opens_into(i, j):
+        if self._trim(i) or self._trim(j) or self.opens_into(i, j) or self.channel(i, j):
             return True
         for k in (i, j):                # the common area only in k's run past its cut
             cut = self._cut(k)
