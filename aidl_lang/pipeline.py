@@ -828,6 +828,19 @@ def _literal_note(items) -> str:
             "`flexible=true` to its call")
 
 
+def _library_instance(c):
+    """The outermost standard-library template instance whose own constraint (or held
+    shape) ``c`` is, written in the program; None for a constraint the program states."""
+    if c.span is None or not in_stdlib(c.span.file):
+        return None
+    s, found = c.owner, None
+    while s is not None:
+        if getattr(s, "template", None) and s.span is not None and not in_stdlib(s.span.file):
+            found = s
+        s = s.parent
+    return found
+
+
 def _sizes_note(items) -> str:
     """A hint's note on the shapes of a conflict held by the sizes written in their calls
     (run aa's cake topper: a rail's placeholder `width=100` between `AlignLeft` and
@@ -937,10 +950,16 @@ def report_failure(sink: DiagnosticSink, result: SolveResult, path: str | None =
         # (run k's note holder listed two tabs' `Fixed(tab.center)` twice)
         seen: dict = {}
         for c, r in items:
-            key = (c.span, _where(c))
+            inside = _library_instance(c)
+            # a standard-library template's own constraints and held shapes: one entry, the
+            # instance as its template draws it (run dn: `Fixed(tab.center)` and `Rectangle
+            # shape` of std/joints.aidl listed, and a hint to edit a `width=` no call of the
+            # program has)
+            key = (inside.span, f"`{inside.path}` as its template `{inside.template}` draws "
+                   "it (its sizes)") if inside is not None else (c.span, _where(c))
             n, rr, cc = seen.get(key, (0, 0.0, c))
-            seen[key] = (n + 1, max(rr, r), cc)
-        labels = [Label(c.span, f"conflicts with this: {where}"
+            seen[key] = (n + 1 if inside is None else 1, max(rr, r), cc)
+        labels = [Label(span, f"conflicts with this: {where}"
                         + (f" ({n} of them)" if n > 1 else "")
                         + (f", residual {r:.3g}" if r > 1e-6 else ""), primary=False)
                   for (span, where), (n, r, c) in seen.items()
@@ -956,7 +975,7 @@ def report_failure(sink: DiagnosticSink, result: SolveResult, path: str | None =
             hint=(f"the conflicting set is: {names}. Change one of them so that they agree "
                   "(a different value, or a constraint that says what you mean); keep the "
                   "others" + _rigid_note(first.owner) + _literal_note(items)
-                  + _sizes_note(items)),
+                  + _sizes_note([(c, r) for c, r in items if _library_instance(c) is None])),
             labels=labels), calls=instance_calls(first.owner))
         shown += 1
     if shown:

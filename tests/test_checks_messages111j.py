@@ -293,3 +293,16 @@ def test_w0508_a_notch_from_the_edge_into_an_opening_is_one_opening_meant():
                         "n = Rectangle(center=(18, -H / 2 + 10), width=13, height=12)")
     assert short != src
     assert "W0508" in _codes(aidl_lang.compile(source=short, path=str(path)))
+
+
+def test_e0401_names_a_library_template_by_its_call_not_its_insides():
+    """Run dn's label tape rack: `At(tag.position, k.body.front.bb.center, dy=0)` and an
+    equation setting the same y conflicted through divider_tray's own tabs; E0401 listed
+    `Fixed(tab.center)` and `Rectangle shape` of std/joints.aidl and hinted at a `width=`
+    no call of the program has.  The template is one entry at the program's call."""
+    path = RUNS / "issue111dn" / "drafts" / "02_label_tape_rack.attempt1.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    (e,) = [d for d in r.diagnostics if d.code == "E0401"]
+    assert all(lb.span.file == str(path) for lb in e.labels)
+    assert "`caddy.k` as its template `divider_tray` draws it (its sizes)" in e.hint
+    assert "std/" not in e.hint and "width=100" not in e.hint
