@@ -15,7 +15,9 @@
 # "slots" is its complement, so the "fingers" edge of one panel mates the
 # "slots" edge of another of the same length. "flat" keeps the whole edge. A
 # corner square is kept unless one of its edges is "slots".
-# Members: `outline` (construction rectangle of the outer size), `core`.
+# Members: `outline` (construction rectangle of the outer size), `core` (the
+# panel inside its joints, two thicknesses smaller each way: engraving there
+# is clear of them, `Inside(label, core)`).
 # Anchor: (cx, cy) is the centre of `outline`.
 def finger_panel(width=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
                  bottom="fingers", right="fingers", top="fingers", left="fingers",
