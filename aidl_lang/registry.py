@@ -362,8 +362,8 @@ _DEFS = {
                   "line fill), not only their outlines", kw_only=True)],
                doc="Text: single strokes in a drawing, or with font= the letters' closed "
                    "outlines (in a solid, hole or drawing); size: cap height (a capital "
-                   "with its spacing ~ size wide, a small letter ~ 0.7 x size: a word "
-                   "with little room gets max_width=); anchor: start, "
+                   "~ size wide, a small letter ~ 0.7 x size; little room: max_width=); "
+                   "anchor: start, "
                    "middle, end; valign: baseline, middle, top, bottom; rotation about "
                    "position; along=circle, angle=; stencil=true (in a hole): cut out; "
                    "max_width=: shrinks to fit; fill=true (font=, in a drawing): the "

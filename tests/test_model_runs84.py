@@ -108,6 +108,6 @@ def test_prompt_text_width_law_a_capital_or_digit_takes_about_its_size(text, siz
     # model had no way to know a text's width): `size = room / characters` fits
     from aidl_lang.geometry.shapes.text import text_extent
     from aidl_lang.llm.prompt import system_prompt
-    assert "size: cap height (a capital with its spacing ~ size wide" in system_prompt()
+    assert "size: cap height (a capital ~ size wide" in system_prompt()
     x0, x1, _, _ = text_extent(text, size)
     assert 0.6 * len(text) * size <= x1 - x0 <= 1.14 * len(text) * size

@@ -114,7 +114,8 @@ radius=9), Point(0, -16))` and its mirror at x 8, in a structure with `Rigid(sel
 places it), a Slot lies along x; a Slot's length
 is end to end; a Text position is on the baseline (set `valign="middle"` to center it).
 Letters as the part (cake topper, sign, house number): `Text(..., font="sans:Bold")` (or "serif",
-a .ttf) is filled outlines: material in a solid (join them: a rail `width=word.bb.width`),
+a .ttf) is filled outlines: material in a solid (join them: a rail `width=word.bb.width`, a bar under each letter, or
+one solid per letter),
 openings in a hole (`stencil=true` holds counters), engraved in a drawing (`fill=true`: their
 area); without `font=` Text is engraved strokes, in ASCII only (other letters: `font=`).
 Each child of an `assembly` is a separate part (written inside it, or `part = TEMPLATE()`; `part = NAME` of a

@@ -249,7 +249,8 @@ def _check_pieces(d: Drawing, s: Structure, shape, sink: DiagnosticSink,
     if words and not scaled:             # a word whose letters touch nothing (issue 112)
         w = words[0].name or "word"
         hint = (f"join the letters: a rail under the word (`rail = Rectangle(center=({w}.center.x, "
-                f"{w}.position.y - 1 mm), width={w}.bb.width, height=3 mm)`, its baseline's), a heavier style "
+                f"{w}.position.y - 1 mm), width={w}.bb.width, height=3 mm)`, its baseline's: "
+                "it draws a bar under every letter, an F then reads as an E), a heavier style "
                 "(`font=\"sans:Black\"`) or a tighter layout; or, if they are separate parts "
                 "(glued on one by one), write each letter as a Text in a `solid` of its own "
                 "in an `assembly` (a font's letters stand in a solid, E0120)")
