@@ -306,3 +306,25 @@ def test_e0401_names_a_library_template_by_its_call_not_its_insides():
     assert all(lb.span.file == str(path) for lb in e.labels)
     assert "`caddy.k` as its template `divider_tray` draws it (its sizes)" in e.hint
     assert "std/" not in e.hint and "width=100" not in e.hint
+
+
+def test_a_patterns_copy_placed_by_its_own_place_stands_as_its_original_would():
+    """Run db's contour gauge: `row = LinearPattern(first, 45, (0, 12 mm))`, then
+    `Place(row[i], position=(-67.5 mm + 3 mm * i, 0, 40 mm), ...)`: each copy kept its 12 i mm
+    step on the sheet in its own frame, and the 45 fingers marched off in a diagonal (W0517,
+    W0518 "and 42 more").  Placed, a copy's frame starts where its original's origin went:
+    finger i stands 3 i mm along x from finger 0, nothing else different."""
+    import numpy as np
+    path = RUNS / "issue111db" / "run" / "01_contour_gauge.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    assert not {"W0517", "W0518"} & set(_codes(r)), _codes(r)
+    d = r.output.drawing
+    shapes = {p.name: p.shape for p in d.parts}
+    centre = []
+    for i in (0, 1, 44):
+        name = f"contour_gauge.row[{i}]" if i else "contour_gauge.first"   # (row[0] is it)
+        x0, y0, x1, y1 = shapes[name].bounds()
+        p = np.array([(x0 + x1) / 2, (y0 + y1) / 2, 0.0, 1.0])
+        centre.append((d.placement[name] @ p)[:3])
+    assert np.allclose(centre[1] - centre[0], (3.0, 0, 0), atol=1e-9)
+    assert np.allclose(centre[2] - centre[0], (132.0, 0, 0), atol=1e-9)
