@@ -328,3 +328,21 @@ def test_a_patterns_copy_placed_by_its_own_place_stands_as_its_original_would():
         centre.append((d.placement[name] @ p)[:3])
     assert np.allclose(centre[1] - centre[0], (3.0, 0, 0), atol=1e-9)
     assert np.allclose(centre[2] - centre[0], (132.0, 0, 0), atol=1e-9)
+
+
+def test_w0516_a_filled_mark_run_to_the_rim_is_the_design():
+    """Run dq's moon-phase hanging: each moon's dark part, a filled polygon whose outer side
+    follows the disc's rim, was W0516 x6 ("runs along the cut edge ... the mark is not
+    seen"), a false alarm whose hint would leave a pale rim.  A filled area engraved up to
+    the cut is seen; one stopping 0.2 mm short of it (a sliver) is still W0516."""
+    path = RUNS / "issue111dq" / "run" / "08_moon_phase_hanging.first_valid.aidl"
+    assert "W0516" not in _codes(aidl_lang.compile(source=path.read_text(), path=str(path)))
+    src = """solid disc {
+    body = Circle(center=(0, 0), radius=30)
+    drawing shade { d = Circle(center=(0, 0), radius=R, fill=true) }
+}
+"""
+    assert "W0516" not in _codes(aidl_lang.compile(source=src.replace("R", "30")))
+    (w,) = [d for d in aidl_lang.compile(source=src.replace("R", "29.8")).diagnostics
+            if d.code == "W0516"]
+    assert "comes 0.20 mm from the cut edge" in w.message

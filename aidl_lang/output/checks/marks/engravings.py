@@ -546,8 +546,8 @@ def _check_on_cut(part, shape, geoms, pts: np.ndarray, loops, sink) -> set:
         n = sum(_n_samples(it) for it in items)
         k = int(on[at:at + n].sum())
         at += n
-        if k < 3 or k <= ON_CUT * n:
-            continue
+        if k < 3 or k <= ON_CUT * n or g.data.get("fill"):
+            continue            # (a filled area along the edge is engraved up to it: seen)
         share = _share_on(items, edges)         # by length: a polygon's samples are its corners
         if share <= ON_CUT:
             continue
@@ -687,6 +687,8 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
     for c, (k, a, z) in enumerate(close):
         g, items = geoms[k]
         gap, pm, ej = float(d[a]), pa[a], int(ej_all[a])
+        if g.data.get("fill") and gap <= ENGRAVE_TOL:
+            continue            # a filled area run up to the cut: no sliver between (run dq)
         q = ends[c]
         de = np.array([de_of.get((c, t), (math.inf, -1))[0] for t in range(len(q))])
         if len(q) >= 2 and (de < CUT_CLEAR).all():
