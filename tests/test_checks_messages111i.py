@@ -329,7 +329,9 @@ def test_allow_overlap_of_a_drawing_with_self_written_in_the_drawing():
     assert "AllowOverlap(guide, self)" in src
     bare = aidl_lang.compile(source=src.replace("AllowOverlap(guide, self)", ""),
                              path=str(RUNS / "issue111co/run/x.aidl"))
-    assert [d.code for d in bare.diagnostics if d.severity == "warning"] == ["W0505"] * 4
+    # (its two arcs; the two lines end at pin-hole centres, a pivot diagram's links since
+    # round fourteen's run dp)
+    assert [d.code for d in bare.diagnostics if d.severity == "warning"] == ["W0505"] * 2
 
 
 def test_a_diagnostic_said_again_is_one_line_with_its_own_fix(tmp_path):

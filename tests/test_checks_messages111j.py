@@ -346,3 +346,21 @@ def test_w0516_a_filled_mark_run_to_the_rim_is_the_design():
     (w,) = [d for d in aidl_lang.compile(source=src.replace("R", "29.8")).diagnostics
             if d.code == "W0516"]
     assert "comes 0.20 mm from the cut edge" in w.message
+
+
+def test_w0505_a_line_from_a_pivot_hole_centre_is_the_design():
+    """Run dp's strandbeest leg: the engraved linkage diagram's links run from axle-hole
+    centre to axle-hole centre, and W0505 said each "runs across a hole" (x4): the pass over
+    the hole marks nothing, the line shows from its edge.  A line across a hole it does not
+    start in is still W0505."""
+    path = RUNS / "issue111dp" / "run" / "08_strandbeest_leg.first_valid.aidl"
+    assert "W0505" not in _codes(aidl_lang.compile(source=path.read_text(), path=str(path)))
+    src = """solid plate {
+    body = Rectangle(center=(0, 0), width=100, height=40)
+    hole axle { c = Circle(center=(-30, 0), diameter=6) }
+    drawing link { l = Line((-30, 0), (30, 0)) }
+}
+"""
+    assert "W0505" not in _codes(aidl_lang.compile(source=src))
+    across = src.replace("Line((-30, 0), (30, 0))", "Line((-40, 0), (30, 0))")
+    assert "W0505" in _codes(aidl_lang.compile(source=across))

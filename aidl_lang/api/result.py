@@ -402,38 +402,9 @@ class Result:
         return self._measure_renderer
 
     def _geometry_entity(self, g) -> dict:
-        """The entity of geometry ``g`` (model frame, mm)."""
+        """The entity of geometry ``g`` (model frame, mm): :func:`..output.part.measure.gaps.entity`."""
         from ..output.part.measure import gaps as G
-        x = self.compiled.model.x
-        ox = oy = 0.0
-        t = g.owner
-        while t is not None:
-            ox += x[t.fx]
-            oy += x[t.fy]
-            t = t.parent
-        pts = {k: (float(x[p.ix] + ox), float(x[p.iy] + oy)) for k, p in g.points.items()}
-        if "center" not in pts and {"bottom_left", "top_right"} <= set(pts):
-            (ax, ay), (cx, cy) = pts["bottom_left"], pts["top_right"]
-            pts["center"] = ((ax + cx) / 2, (ay + cy) / 2)
-        if g.kind == "Point":
-            p = next(iter(pts.values()))
-            return {"kind": "point", "pieces": [("L", p, p)], "center": p}
-        if g.kind == "Line":
-            p, q = pts["start"], pts["end"]
-            return {"kind": "line", "pieces": [("L", p, q)], "ends": (p, q)}
-        loops = [] if g.kind == "Arc" else self._renderer().loops_of(g)
-        if loops:
-            return {"kind": "circle" if g.kind == "Circle" else "shape", "loops": loops,
-                    "pieces": G.pieces([sg for lp in loops for sg in lp.segments]),
-                    "center": pts.get("center")}
-        try:                            # an open curve: an arc, a polyline, a spline
-            segs = self._renderer().pieces(g)
-        except (KeyError, AttributeError, TypeError):
-            segs = []
-        if not segs:
-            raise KeyError(f"`{g.label}` ({g.kind}) has no curve to measure")
-        return {"kind": "arc" if g.kind == "Arc" else "curve", "pieces": G.pieces(segs),
-                "center": pts.get("center") if g.kind == "Arc" else None}
+        return G.entity(g, self._renderer())
 
     def _named_geometry(self) -> tuple[dict, dict]:
         """``({name: geometry}, {name: structure})`` named as :attr:`values` names them

@@ -739,7 +739,9 @@ the part or a shape of it; for a drawing given to a part by `CutInto`, the call 
 `AllowOverlap(label.word, box.front)`; written in the drawing itself, `AllowOverlap(grid, self)`
 means the same, `self` there being the drawing on its part); the hint of a mark that is not text writes that call
 after its fix. Engraving off the material burns air, so nothing reaches the machine that was not
-drawn; an `AllowOverlap` of an engraving that lies on the material is W0523.
+drawn; an `AllowOverlap` of an engraving that lies on the material is W0523. A straight line
+that leaves the material only inside round holes centred on its ends (a linkage diagram drawn
+pivot to pivot over its axle holes: run dp) is drawn as meant and not warned.
 """),
     "W0506": ("geometry that adds nothing", """
 A child solid lies wholly inside the rest of its parent, so it changes nothing in the final

@@ -244,7 +244,7 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
             outer_of[part] = _edges([p for p in grown_loops if _signed(p) > 0])
         in_outline = _inside(pts[~inside], outer_of[part])
         warned.add(g)
-        if meant_off(g, part):
+        if meant_off(g, part) or _from_centres(d, g, items, pts[~inside]):
             continue
         where = "across a hole" if in_outline.all() else (
             "outside the outline" if not in_outline.any() else "outside the outline and across a hole")
@@ -493,6 +493,27 @@ def _text_off(d: Drawing, roots, part, g, items, pts, inside, in_outline, tick=N
             return share, (f"{fit}; or, if no other relation places it, "
                            f"{other[other.index('constrain it onto'):]}")
     return share, f"{fit}; or move it where it has room"
+
+
+def _from_centres(d: Drawing, g, items, off: np.ndarray) -> bool:
+    """Engraved line ``g`` (one straight stroke, ``items``) leaves the material only inside
+    round openings centred on its ends (``off``: its samples off the material): a diagram's
+    link drawn from pivot to pivot over the axle holes (issue 111's run dp, a strandbeest
+    leg: W0505 x4).  The laser's pass over the hole marks nothing, and the line shows from
+    the hole's edge, as drawn."""
+    if len(items) != 1 or items[0][0] != "line" or not len(off):
+        return False
+    ends = np.array([items[0][1], items[0][2]], dtype=float)
+    circles = np.array(d.circles, dtype=float).reshape(-1, 3)
+    if not len(circles):
+        return False
+    at_end = circles[np.min(np.hypot(circles[:, None, 0] - ends[None, :, 0],
+                                     circles[:, None, 1] - ends[None, :, 1]), axis=1) < 1e-6]
+    if not len(at_end):
+        return False
+    inside = np.hypot(off[:, None, 0] - at_end[None, :, 0],
+                      off[:, None, 1] - at_end[None, :, 1]) <= at_end[None, :, 2] + ENGRAVE_TOL
+    return bool(inside.any(axis=1).all())
 
 
 def _drawn_over(d: Drawing, part, pts: np.ndarray):

@@ -300,3 +300,41 @@ def stacked_parts(parts, least: float) -> list[tuple[float, str, str, tuple]]:
             out.append((float(area), solids[i].name, solids[j].name,
                         tuple(float(v) for v in common.bounds())))
     return out
+
+
+def entity(g, renderer) -> dict:
+    """``{"kind", "pieces", "center"?, "ends"?, "loops"?}`` of geometry ``g`` at the values
+    ``renderer`` draws with (``renderer.x``, mm; model frame): a point, a line (its segment),
+    a closed shape (its exact loops), else an open curve's exact pieces.  What
+    :meth:`aidl_lang.api.Result.measure` and an assert's ``distance(a, b)`` of shapes measure.
+    Raises :class:`KeyError` for a geometry with no curve (a construction-only point set)."""
+    x = renderer.x
+    ox = oy = 0.0
+    t = g.owner
+    while t is not None:
+        ox += x[t.fx]
+        oy += x[t.fy]
+        t = t.parent
+    pts = {k: (float(x[p.ix] + ox), float(x[p.iy] + oy)) for k, p in g.points.items()}
+    if "center" not in pts and {"bottom_left", "top_right"} <= set(pts):
+        (ax, ay), (cx, cy) = pts["bottom_left"], pts["top_right"]
+        pts["center"] = ((ax + cx) / 2, (ay + cy) / 2)
+    if g.kind == "Point":
+        p = next(iter(pts.values()))
+        return {"kind": "point", "pieces": [("L", p, p)], "center": p}
+    if g.kind == "Line":
+        p, q = pts["start"], pts["end"]
+        return {"kind": "line", "pieces": [("L", p, q)], "ends": (p, q)}
+    loops = [] if g.kind == "Arc" else renderer.loops_of(g)
+    if loops:
+        return {"kind": "circle" if g.kind == "Circle" else "shape", "loops": loops,
+                "pieces": pieces([sg for lp in loops for sg in lp.segments]),
+                "center": pts.get("center")}
+    try:                            # an open curve: an arc, a polyline, a spline
+        segs = renderer.pieces(g)
+    except (KeyError, AttributeError, TypeError):
+        segs = []
+    if not segs:
+        raise KeyError(f"`{g.label}` ({g.kind}) has no curve to measure")
+    return {"kind": "arc" if g.kind == "Arc" else "curve", "pieces": pieces(segs),
+            "center": pts.get("center") if g.kind == "Arc" else None}
