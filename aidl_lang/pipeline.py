@@ -15,6 +15,7 @@ import numpy as np
 
 from .base.records import Compared
 from .base.diagnostics import Diagnostic, DiagnosticSink, Label, as_lf, in_stdlib, shown_path
+from .solver.diagnosis.notes import library_instance, literal_note, member_words, rigid_note, sizes_note
 from .interp import Interpreter
 from .base.memory import gc_paused
 from .base.limits import (DEFAULT_BUDGET, MAX_EXTENT, MEMORY_HINT, Budget, Deadline, OutOfBudget,
@@ -806,73 +807,6 @@ def _line_of(c) -> str:
         f"line {c.span.line}"
 
 
-def _where(c) -> str:
-    line = f"line {c.span.line}" if c.span is not None else "no line"
-    what = f"held by a constructor ({line})" if c.implicit else line
-    return f"`{c.describe()}` ({what}, in `{c.owner.path}`)"
-
-
-def _literal_note(items) -> str:
-    """A hint's note on the shapes of a conflict held by their literal coordinates (a
-    Triangle, Polygon, Polyline, Spline or Bezier whose points are all numbers): they keep
-    their shape unless ``flexible=true`` (issue 73: models did not know Triangle takes it)."""
-    kinds = sorted({(c.text or "").split(" shape (literal")[0] for c, _ in items
-                    if (c.text or "").endswith("shape (literal coordinates)")})
-    if not kinds:
-        return ""
-    lines = sorted({c.span.line for c, _ in items
-                    if (c.text or "").endswith("shape (literal coordinates)") and c.span})
-    at = f" (line {', '.join(map(str, lines))})" if lines else ""
-    return (f". The {' and '.join(kinds)}{at} keep{'s' if len(lines) < 2 else ''} the shape "
-            "its literal coordinates give; if its points should follow the constraints, add "
-            "`flexible=true` to its call")
-
-
-def _library_instance(c):
-    """The outermost standard-library template instance whose own constraint (or held
-    shape) ``c`` is, written in the program; None for a constraint the program states."""
-    if c.span is None or not in_stdlib(c.span.file):
-        return None
-    s, found = c.owner, None
-    while s is not None:
-        if getattr(s, "template", None) and s.span is not None and not in_stdlib(s.span.file):
-            found = s
-        s = s.parent
-    return found
-
-
-def _sizes_note(items) -> str:
-    """A hint's note on the shapes of a conflict held by the sizes written in their calls
-    (run aa's cake topper: a rail's placeholder `width=100` between `AlignLeft` and
-    `AlignRight` of two stars): a relation does not stretch a size written as a number."""
-    lines = sorted({c.span.line for c, _ in items if c.implicit and c.span is not None
-                    and (c.text or "").endswith(" shape")})
-    if not lines:
-        return ""
-    at = ", ".join(map(str, lines))
-    return (f". The shape{'s' if len(lines) > 1 else ''} on line{'s' if len(lines) > 1 else ''} "
-            f"{at} keep{'' if len(lines) > 1 else 's'} the sizes written in "
-            f"{'their calls' if len(lines) > 1 else 'its call'} (`width=100`): if the relations should set one, write that size as the "
-            "expression it is (`width=b.bb.right - a.bb.left`)")
-
-
-def _rigid_note(s) -> str:
-    """A hint's note on the rigid structures (``Rigid(part)``) below ``s``: they were only
-    moved, never bent, so a conflict there may ask for a change of shape."""
-    rigid, todo = [], list(s.children.values())
-    while todo:
-        t = todo.pop()
-        if getattr(t, "rigid", False):
-            rigid.append(t)
-        else:
-            todo += t.children.values()
-    if not rigid:
-        return ""
-    names = ", ".join(f"`{t.path}`" for t in sorted(rigid, key=lambda t: t.path)[:3])
-    return (f". {names} {'is' if len(rigid) == 1 else 'are'} rigid (`Rigid(...)`): moved as "
-            "one body, never bent; if the shape must change, drop `Rigid` or constrain inside it")
-
-
 def _against_held(sink: DiagnosticSink, model: Model, c) -> bool:
     """E0401 for a constraint whose every parameter is a dimension its constructor holds
     (``Radius(c, 8)`` on ``Circle(..., radius=5)``): no solve can move it, so the message
@@ -950,13 +884,13 @@ def report_failure(sink: DiagnosticSink, result: SolveResult, path: str | None =
         # (run k's note holder listed two tabs' `Fixed(tab.center)` twice)
         seen: dict = {}
         for c, r in items:
-            inside = _library_instance(c)
+            inside = library_instance(c)
             # a standard-library template's own constraints and held shapes: one entry, the
             # instance as its template draws it (run dn: `Fixed(tab.center)` and `Rectangle
             # shape` of std/joints.aidl listed, and a hint to edit a `width=` no call of the
             # program has)
             key = (inside.span, f"`{inside.path}` as its template `{inside.template}` draws "
-                   "it (its sizes)") if inside is not None else (c.span, _where(c))
+                   "it (its sizes)") if inside is not None else (c.span, member_words(c))
             n, rr, cc = seen.get(key, (0, 0.0, c))
             seen[key] = (n + 1 if inside is None else 1, max(rr, r), cc)
         labels = [Label(span, f"conflicts with this: {where}"
@@ -974,8 +908,8 @@ def report_failure(sink: DiagnosticSink, result: SolveResult, path: str | None =
             first.span, "error",
             hint=(f"the conflicting set is: {names}. Change one of them so that they agree "
                   "(a different value, or a constraint that says what you mean); keep the "
-                  "others" + _rigid_note(first.owner) + _literal_note(items)
-                  + _sizes_note([(c, r) for c, r in items if _library_instance(c) is None])),
+                  "others" + rigid_note(first.owner) + literal_note(items)
+                  + sizes_note([(c, r) for c, r in items if library_instance(c) is None])),
             labels=labels), calls=instance_calls(first.owner))
         shown += 1
     if shown:

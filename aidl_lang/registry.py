@@ -363,8 +363,7 @@ _DEFS = {
                doc="Text: single strokes in a drawing, or with font= the letters' closed "
                    "outlines (in a solid, hole or drawing); size: cap height (a capital "
                    "~ size wide, a small letter ~ 0.7 x size; little room: max_width=); "
-                   "anchor: start, "
-                   "middle, end; valign: baseline, middle, top, bottom; rotation about "
+                   "anchor: start, middle, end; valign: baseline, middle, top, bottom; rotation about "
                    "position; along=circle, angle=; stencil=true (in a hole): cut out; "
                    "max_width=: shrinks to fit; fill=true (font=, in a drawing): the "
                    "letters' area engraved.", members=TEXT_MEMBERS),

@@ -181,7 +181,7 @@ def test_points_surely_on_the_material_are_inside_the_grown_part(spec, seed):
     0 to 1.5 ENGRAVE_TOL from the vertices and edges of random unions and differences."""
     import manifold3d as mf
     from aidl_lang.output.checks import ENGRAVE_TOL, _edges, _inside
-    from aidl_lang.output.checks.marks.engravings import _loop_area, _surely_on_material
+    from aidl_lang.output.checks.marks.sampling import _loop_area, _surely_on_material
     shape = _cross_section(spec)
     loops = [np.asarray(p, dtype=float) for p in shape.to_polygons()]
     if not loops:

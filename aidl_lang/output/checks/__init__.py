@@ -66,8 +66,8 @@ from .holes.openings import TOUCH, _analyse, _check_flush, _check_hole, _intende
 from .holes.repeats import _check_overlapping_circles, _check_repeated_faces
 from .holes.sinks import check_sinks
 from .holes.voids import _check_voids
-from .marks.engravings import (_SURELY_GROWN, ENGRAVE_TOL, _check_engraving, _check_zero_lines,
-                               _n_samples, _sample, _samples, _within)
+from .marks.engravings import _check_engraving, _check_zero_lines
+from .marks.sampling import _SURELY_GROWN, ENGRAVE_TOL, _n_samples, _sample, _samples, _within
 from .parts import (_check_interpenetration, _check_steps, _check_invisible, _check_pieces,
                     check_loose_drawings, check_stray_holes, empty_faces)
 from .marks.clearance import check_text_near_cut

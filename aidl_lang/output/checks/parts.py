@@ -27,7 +27,7 @@ from ..part.build.scanwork import decompose
 from .letters import fallen_counters, letters_in
 from .common import (written, MIN_AREA, _area, _contributors, _depth, _edges, _inside, _say_few, _signed,
                      _union)
-from .marks.engravings import ENGRAVE_TOL, _samples
+from .marks.sampling import ENGRAVE_TOL, _samples
 
 MAX_CHILDREN = 64        # W0506 compares each child with the union of the others
 MAX_CUTTERS = 16         # W0504: holes measured for cutting a shape apart

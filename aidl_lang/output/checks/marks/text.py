@@ -16,8 +16,9 @@ from ....base.diagnostics import DiagnosticSink, Label
 from ...part.build.booleans import Drawing
 from ...part.measure.nearby import box_pairs, box_pairs_between
 from ..common import MIN_AREA, _area, _pct
-from .engravings import (_COS32, _SIN32, _copy_label, _mark_segments, _open_ends, _pair_gap,
+from .engravings import (_copy_label, _mark_segments, _open_ends, _pair_gap,
                          _polyline, _seg_gap, stroke_gap)
+from .sampling import _COS32, _SIN32
 from .allowed import text_allowed
 from .overdrawn import MIN_CLEAR, check_marks_over_marks
 
