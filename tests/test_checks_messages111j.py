@@ -364,3 +364,45 @@ def test_w0505_a_line_from_a_pivot_hole_centre_is_the_design():
     assert "W0505" not in _codes(aidl_lang.compile(source=src))
     across = src.replace("Line((-30, 0), (30, 0))", "Line((-40, 0), (30, 0))")
     assert "W0505" in _codes(aidl_lang.compile(source=across))
+
+
+DIST = """solid plate {
+    body = Rectangle(center=(0, 0), width=100, height=40)
+    hole tie { c = Circle(center=(30, 0), diameter=6) }
+    drawing label { t = Text("TRUNDLE", position=(-10, 0), size=8, valign="middle") }
+    edge = Line((-50, -20), (50, -20), construction=true)
+}
+"""
+
+
+def test_distance_of_shapes_in_an_assert_is_their_outlines_least_distance():
+    """Runs dd, dh, dr reached for a gap between shapes to assert (a label clear of a cable
+    tie's hole, a pivot's distance to a line) and wrote it by hand, wrongly once.  In an
+    assert, `distance(a, b)` of shapes or structures is their outlines' least distance at
+    the solution, exact: a circle to the outline, a point to a line, text to a hole."""
+    import math
+    r = aidl_lang.compile(source=DIST + """
+assert distance(plate.tie.c, plate.body) == 17 mm, "tie hole to the right edge"
+assert distance(plate.tie.c.center, plate.edge) == 20 mm, "hole centre above the edge"
+assert distance(plate.tie, plate.body) == 17 mm, "a structure: what it draws"
+assert distance(plate.label, plate.tie) > 9 mm and distance(plate.label, plate.tie) < 12 mm
+""")
+    assert r.ok and not [d for d in r.diagnostics if d.code.startswith("E")], \
+        [(d.code, d.message) for d in r.diagnostics]
+    bad = aidl_lang.compile(source=DIST + """
+assert distance(plate.tie.c, plate.body) >= 18 mm, "tie hole 18 mm in"
+""")
+    (e,) = [d for d in bad.diagnostics if d.code == "E0405"]
+    assert "17 mm >= 18 mm is false" in e.message
+    # crossing outlines are 0 apart; a text's strokes are measured as drawn
+    over = aidl_lang.compile(source=DIST.replace("(30, 0), diameter=6", "(-10, 0), diameter=6")
+                             + 'assert distance(plate.label, plate.tie) == 0 mm, "over"\n')
+    assert over.ok and not [d for d in over.diagnostics if d.code == "E0405"]
+    assert math.isclose(17.0, 50 - 30 - 3)
+
+
+def test_distance_of_shapes_outside_an_assert_is_e0108():
+    r = aidl_lang.compile(source=DIST.replace(
+        "    edge =", "    gap = distance(tie.c, body)\n    edge ="))
+    (e,) = [d for d in r.diagnostics if d.code == "E0108"]
+    assert "read only by an `assert`" in e.message and "Distance(a, b, 5 mm)" in e.hint

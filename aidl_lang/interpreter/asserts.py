@@ -20,7 +20,11 @@ class Asserts:
         allowed: a check, not a constraint).  Alternatives known now (params, constants)
         are judged at once; the rest are kept on the model
         (:class:`~aidl_lang.geometry.core.model.Assertion`) and checked after solving (E0405)."""
-        groups = self._assert_groups(st.expr)
+        self.in_assert = True           # (`distance` of shapes: measured at the solution)
+        try:
+            groups = self._assert_groups(st.expr)
+        finally:
+            self.in_assert = False
         a = self._assertion(st, self.struct)
         a.reads = self._assert_reads(st.expr)
         verdict, a.groups, known = judge_known(groups)

@@ -98,7 +98,7 @@ never solved for (false: error E0405): write limits ("fits the bed") as asserts 
 solver should make true as constraints. Also assert the request's own numbers and counts as it
 words them (`assert len(feet) == 2`, `assert lip.bb.top - base.bb.top == 8 mm`: differences,
 as a relation that lays a part out moves its coordinates; an assert reads `Place`d parts where
-they are written), each number
+they are written; `assert distance(label, holes) >= 2 mm`: the gap between shapes), each number
 copied from the request, never from the program: a slip then fails the check instead of reaching the cutter. `thickness 3 mm` (the material, for 3D outputs and
 the parts list; a box template's `thickness=` is the same), `kerf 0.15 mm` (the laser's cut width: cuts are offset by half of it)
 and `min_wall 0.3 mm` (W0507 warns of walls thinner than 0.5 mm, which a laser burns through;

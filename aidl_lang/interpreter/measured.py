@@ -1,0 +1,98 @@
+"""``distance(a, b)`` of shapes in an ``assert`` (issue 111's runs dd, dh, dr: a gap between two
+shapes, a point's distance to a line, written by hand or not at all): the least distance
+between two geometries' outlines (points; lines as segments; closed shapes by their exact
+outlines; open curves as drawn), measured at the solution as ``aidl check``'s asserts are
+judged, exact to 1e-9 mm (:func:`aidl_lang.output.part.measure.gaps.gap`).  Outlines that
+cross are 0 apart.  A measured value, not an expression the solver can move: only an
+``assert`` reads it (E0108 elsewhere: ``Distance(a, b, d)`` is the relation that places)."""
+from __future__ import annotations
+
+import math
+
+from ..base.diagnostics import EvalError
+from ..geometry.core.expr import Expr, evaluate
+from ..geometry.core.values import LEN, GeomRef, Q, StructRef
+
+
+class Measured(Expr):
+    """The least distance (mm) between the outlines of ``a`` and ``b`` (each a
+    :class:`~aidl_lang.geometry.core.model.Geometry`, or a point given as two expressions)
+    in ``model``, at the parameter values :func:`~aidl_lang.geometry.core.expr.evaluate`
+    is given (:meth:`value`)."""
+
+    __slots__ = ("a", "b", "model")
+
+    def __init__(self, a, b, model):
+        self.a, self.b, self.model = a, b, model
+
+    def __repr__(self):
+        return f"distance({_label(self.a)}, {_label(self.b)})"
+
+    def value(self, x) -> float:
+        from ..output.part.build.booleans import Renderer
+        from ..output.part.measure import gaps as G
+        r = Renderer(self.model, x=x[:len(self.model.free)])
+        try:
+            ea, eb = (_entity(side, r, x, G) for side in (self.a, self.b))
+        except MeasureError:
+            return math.nan     # (an empty Text: the assert then says it does not hold)
+        return float(G.gap(ea, eb)[0])
+
+
+def _entity(side, renderer, x, G) -> list:
+    """The exact pieces of one side of :class:`Measured` at ``x``."""
+    if isinstance(side, tuple):                 # a point: its two coordinates' expressions
+        p = (float(evaluate(side[0], x)), float(evaluate(side[1], x)))
+        return [("L", p, p)]
+    if isinstance(side, list):                  # a structure: each shape it draws
+        got = [pc for g in side for pc in _entity(g, renderer, x, G)]
+        if not got:
+            raise MeasureError("nothing drawn to measure")
+        return got
+    try:
+        return G.entity(side, renderer)["pieces"]
+    except KeyError:            # a Text's strokes (or a mark of no curve): its lines as drawn
+        from ..output.part.build.result import Drawing
+        scratch = Drawing()
+        renderer.draw_lines(side, scratch)
+        pieces = [("L", tuple(map(float, a)), tuple(map(float, b)))
+                  for _, pl in scratch.lines for a, b in zip(pl[:-1], pl[1:])]
+        if not pieces:
+            raise MeasureError(f"`{side.label}` ({side.kind}) has no line to measure")
+        return pieces
+
+
+class MeasureError(Exception):
+    """A side of :class:`Measured` has nothing to measure (an empty Text)."""
+
+
+def _label(side) -> str:
+    return "a point" if isinstance(side, tuple) else \
+        f"`{side[0].owner.path}`" if isinstance(side, list) else f"`{side.label}`"
+
+
+def measured_distance(interp, args, span) -> Q:
+    """``distance(a, b)`` with a shape among ``a``, ``b`` (a point the other may be): a
+    :class:`Measured` length inside an ``assert``'s condition, else E0108."""
+    if not getattr(interp, "in_assert", False):
+        raise EvalError("E0108", "`distance` of a shape is measured after solving: it is read "
+                        "only by an `assert`", span,
+                        hint="write it in the assert itself (`assert distance(label, hole) >= "
+                             "2 mm`); to place two shapes apart, `Distance(a, b, 5 mm)`")
+    sides, owners = [], set()
+    for a in args[:2]:
+        if isinstance(a, StructRef):            # a hole, a drawing, a part: what it draws
+            drawn = [g for s in a.struct.subtree() for g in s.geometry if not g.construction]
+            if not drawn:
+                raise EvalError("E0108", f"`{a.struct.path}` draws nothing to measure", span,
+                                hint="name one of its shapes")
+            sides.append(drawn)
+            owners.add(a.struct)
+        elif isinstance(a, GeomRef) and a.geom.kind != "Point":
+            sides.append(a.geom)
+            owners.add(a.geom.owner)
+        else:
+            p = interp._to_point(a, span)
+            sides.append((p.x, p.y))
+            owners |= set(p.owners)
+    return Q(Measured(sides[0], sides[1], interp.model), LEN, frozenset(owners))
