@@ -406,3 +406,39 @@ def test_distance_of_shapes_outside_an_assert_is_e0108():
         "    edge =", "    gap = distance(tie.c, body)\n    edge ="))
     (e,) = [d for d in r.diagnostics if d.code == "E0108"]
     assert "read only by an `assert`" in e.message and "Distance(a, b, 5 mm)" in e.hint
+
+
+def test_the_assembled_picture_hides_engraving_under_a_part_in_front():
+    """Runs dm, dq, dr: the assembled PNG drew a lower disc's engraved lines through the disc
+    glued on top of it (painter's order by triangle centres).  Engraving under a part is now
+    hidden: the picture with the lower disc's line is the picture without it, pixel for
+    pixel, while a line on the top disc shows."""
+    import io
+    import numpy as np
+    from PIL import Image
+    src = """thickness 3 mm
+assembly stack {
+    solid base {
+        d = Circle(center=(0, 0), radius=40)
+        drawing m { LOWER }
+    }
+    solid top {
+        d = Circle(center=(0, 0), radius=40)
+        drawing m { UPPER }
+    }
+    RightOf(top, base, gap=5)
+    Place(base, position=(0, 0, 0))
+    Place(top, position=(0, 0, 3 mm))
+}
+"""
+    def png(lower, upper):
+        s = src.replace("LOWER", lower).replace("UPPER", upper)
+        r = aidl_lang.compile(source=s)
+        assert r.ok, [d.message for d in r.diagnostics]
+        return np.asarray(Image.open(io.BytesIO(r.encode("png", assembled=True))).convert("RGB"))
+    line = "l = Line((-30, 0), (30, 0))"
+    plain = png("", "p = Point(0, 0)")
+    hidden = png(line, "p = Point(0, 0)")
+    shown = png("", line)
+    assert np.array_equal(plain, hidden)
+    assert (np.abs(shown.astype(int) - plain.astype(int)).sum(axis=2) > 60).sum() > 50

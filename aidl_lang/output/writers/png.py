@@ -185,27 +185,25 @@ def _view(output, thickness, parts, boxes, size, az_deg, el_deg, width, caption)
         v = (y1 + margin - (P @ up)) * scale * k
         return [(float(a), float(b)) for a, b in zip(u, v)]
     depth = np.concatenate([t[0] for t in tris]) if tris else np.zeros(0)
-    if len(depth) or len(marks[0]):
+    if len(depth) or len(marks):
         P = np.concatenate([t[1] for t in tris]) if tris else np.zeros((0, 3, 3))
         rgb = np.clip(np.concatenate([t[2] for t in tris]), 0, 255).astype(np.uint8) \
             if tris else np.zeros((0, 3), dtype=np.uint8)
-        # the triangles and the engraving's segments in one painter's order, farthest
-        # first: a mark on a face is drawn over that face, under what stands before it
-        key = np.concatenate([depth, marks[0]])
-        order = np.argsort(key, kind="stable")
+        # the triangles in painter's order, farthest first; then the engraving's segments
+        # that no face in front of them covers (tested where each is, against the
+        # triangles' depths there: run dq's base disc's lines showed through the top disc)
+        order = np.argsort(depth, kind="stable")
         uv = np.stack([((P @ right) - x0 + margin) * scale * k,
                        (y1 + margin - (P @ up)) * scale * k], axis=-1)
-        L = marks[1]
+        L = marks
         luv = np.stack([((L @ right) - x0 + margin) * scale * k,
                         (y1 + margin - (L @ up)) * scale * k], axis=-1)
-        n = len(depth)
         flat_t, fill_t = uv.reshape(len(uv), 6).tolist(), [tuple(c) for c in rgb.tolist()]
-        flat_l = luv.reshape(len(luv), 4).tolist()
         for i in order.tolist():
-            if i < n:
-                draw.polygon(flat_t[i], fill=fill_t[i], outline=fill_t[i])
-            else:
-                draw.line(flat_l[i - n], fill=MARK_RGB, width=k)
+            draw.polygon(flat_t[i], fill=fill_t[i], outline=fill_t[i])
+        seen = _uncovered(uv, P @ fwd, luv.mean(axis=1), L.mean(axis=1) @ fwd, size / 500)
+        for seg in luv[seen].reshape(-1, 4).tolist():
+            draw.line(seg, fill=MARK_RGB, width=k)
     edges = ((0, 1), (0, 2), (0, 4), (1, 3), (1, 5), (2, 3), (2, 6), (3, 7), (4, 5), (4, 6),
              (5, 7), (6, 7))
     for B in boxes:
@@ -217,19 +215,69 @@ def _view(output, thickness, parts, boxes, size, az_deg, el_deg, width, caption)
     return img
 
 
+def _uncovered(uv: np.ndarray, depth: np.ndarray, at: np.ndarray, mark_depth: np.ndarray,
+               tol: float) -> np.ndarray:
+    """Per engraved segment (its middle ``at``, n x 2 pixels; its depth towards the viewer
+    ``mark_depth``, mm): True when no front-facing triangle (``uv``: m x 3 x 2 pixels, its
+    corners' depths ``depth``: m x 3, mm) covers that point at a depth more than ``tol``
+    nearer the viewer (its own face, coplanar, is not nearer).  The triangles each point
+    may lie in come from a grid of cells as large as a typical triangle's box (each
+    triangle listed in the cells its box spans, each point looked up in its own cell:
+    sorting, linear in the triangles and points for triangles of about one size, which the
+    picture's subdivision makes them); each pair is tested by its barycentric coordinates."""
+    n = len(at)
+    if not n or not len(uv):
+        return np.ones(n, dtype=bool)
+    lo, hi = uv.min(axis=1), uv.max(axis=1)
+    cell = max(float(np.median(np.max(hi - lo, axis=1))), 1.0)
+    c0 = np.floor(lo / cell).astype(np.int64)
+    c1 = np.floor(hi / cell).astype(np.int64)
+    span = c1 - c0 + 1
+    count = span[:, 0] * span[:, 1]
+    tri = np.repeat(np.arange(len(uv)), count)
+    k = np.arange(len(tri)) - np.repeat(np.cumsum(count) - count, count)
+    w = np.repeat(span[:, 0], count)
+    cx, cy = np.repeat(c0[:, 0], count) + k % w, np.repeat(c0[:, 1], count) + k // w
+    key = cx * 1_000_003 + cy
+    order = np.argsort(key, kind="stable")
+    key, tri = key[order], tri[order]
+    pc = np.floor(at / cell).astype(np.int64)
+    pkey = pc[:, 0] * 1_000_003 + pc[:, 1]
+    first, last = np.searchsorted(key, pkey, "left"), np.searchsorted(key, pkey, "right")
+    many = last - first
+    i = np.repeat(np.arange(n), many)
+    j = tri[np.repeat(first, many) + (np.arange(len(i)) - np.repeat(np.cumsum(many) - many,
+                                                                     many))]
+    if not len(i):
+        return np.ones(n, dtype=bool)
+    a, b, c = uv[j, 0], uv[j, 1], uv[j, 2]
+    v0, v1, v2 = b - a, c - a, at[i] - a
+    den = v0[:, 0] * v1[:, 1] - v1[:, 0] * v0[:, 1]
+    ok = np.abs(den) > 1e-12
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s = np.where(ok, (v2[:, 0] * v1[:, 1] - v1[:, 0] * v2[:, 1]) / den, -1.0)
+        r = np.where(ok, (v0[:, 0] * v2[:, 1] - v2[:, 0] * v0[:, 1]) / den, -1.0)
+    inside = (s >= 0) & (r >= 0) & (s + r <= 1)
+    d = depth[j, 0] + s * (depth[j, 1] - depth[j, 0]) + r * (depth[j, 2] - depth[j, 0])
+    covered = inside & (d > mark_depth[i] + tol)
+    out = np.ones(n, dtype=bool)
+    out[i[covered]] = False
+    return out
+
+
 CAPTION_RGB = (110, 110, 110)   # a view's caption: grey, not the engraving's near-black
 
 
 MARK_RGB = (30, 30, 30)      # the engraving's lines in the assembled picture
 
 
-def _assembled_marks(output: Output, thickness, fwd, size: float) -> tuple:
+def _assembled_marks(output: Output, thickness, fwd, size: float) -> np.ndarray:
     """The engraving of ``output`` (strokes, fills, through-cuts) as it lies on the
-    assembled parts: ``(depths, segments)``, each segment (n x 2 x 3, mm) on its part's top
-    face (the face the laser works, z = the thickness) moved by the part's placement, its
-    depth along ``fwd`` a little towards the viewer (so it is drawn over its face); only
-    where that face looks towards the viewer (runs av, aw, bd, bf could not see which face a
-    label landed on).  A bent part's marks are left out."""
+    assembled parts: its segments (n x 2 x 3, mm), each on its part's top face (the face the
+    laser works, z = the thickness) moved by the part's placement; only where that face looks
+    towards the viewer (runs av, aw, bd, bf could not see which face a label landed on; the
+    faces in front of a mark hide it, :func:`_uncovered`).  A bent part's marks are left
+    out."""
     from ..fabrication.assembly import bends_of, placements
     from ...geometry.shapes.curves import sample_xy
     from ..part.build.sunk import DEFAULT_THICKNESS
@@ -259,9 +307,8 @@ def _assembled_marks(output: Output, thickness, fwd, size: float) -> tuple:
             P = P @ R.T + np.asarray(M, dtype=float)[:3, 3]
         segs.append(np.stack([P[:-1], P[1:]], axis=1))
     if not segs:
-        return np.zeros(0), np.zeros((0, 2, 3))
-    L = np.concatenate(segs)
-    return L.mean(axis=1) @ fwd + size / 200, L
+        return np.zeros((0, 2, 3))
+    return np.concatenate(segs)
 
 
 def _pil():
