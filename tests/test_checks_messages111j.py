@@ -442,3 +442,21 @@ assembly stack {
     shown = png("", line)
     assert np.array_equal(plain, hidden)
     assert (np.abs(shown.astype(int) - plain.astype(int)).sum(axis=2) > 60).sum() > 50
+
+
+def test_an_assembly_laid_out_on_the_sheet_moves_no_part_placed_in_it():
+    """Run dv's memory tiles: `RightOf(box, ...)` laid a `lid_box` instance out on the sheet,
+    and its Placed panels moved 247 mm in 3D with it, the tiles left standing beside the box
+    (the docs: the box stands centred on x = y = 0).  An unplaced assembly above a Place adds
+    nothing in 3D; its flat parts still move on the sheet."""
+    import numpy as np
+    path = RUNS / "issue111dv" / "run" / "04_memory_tiles.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    d = r.output.drawing
+    bottom = d.placement["memory_game.box.body.bottom"]
+    (part,) = [p for p in d.parts if p.name == "memory_game.box.body.bottom"]
+    x0, y0, x1, y1 = part.shape.bounds()
+    c = bottom @ np.array([(x0 + x1) / 2, (y0 + y1) / 2, 0.0, 1.0])
+    assert np.allclose(c[:2], (0.0, 0.0), atol=1e-6), c
+    assert abs((x0 + x1) / 2) > 100          # laid out beside the rest on the sheet
+    assert "W0517" not in _codes(r) and "W0518" not in _codes(r)

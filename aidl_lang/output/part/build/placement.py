@@ -37,21 +37,30 @@ def placement_matrix(s: Structure, x) -> np.ndarray:
     from 0 up through its thickness) to the assembled product.  Each structure's local frame
     (its points less the sum of its and its ancestors' frame offsets, ``x`` the solved values)
     goes into its parent's by its ``Place`` (rotation, then position) or, unplaced, by its
-    frame offset as on the sheet, so a program with no ``Place`` is the sheet itself.  A
+    frame offset as on the sheet, so a program with no ``Place`` is the sheet itself; an
+    unplaced structure above a ``Place`` adds nothing (where a relation lays it out on the
+    sheet moves no part placed in it).  A
     pattern's copy with a ``Place`` of its own is taken from where its origin went (its
     ``copy_origin``): placed, it stands as its original would."""
     chain = [s, *s.ancestors()]
     M = np.eye(4)
-    for a in reversed(chain):                  # root first: M maps a's local frame to world
-        step = np.eye(4)
+    placed_below = False                       # a structure nearer `s` has its own Place
+    steps = []
+    for a in chain:                            # s first: which steps a Place below replaces
         pl = getattr(a, "placement", None)
+        step = np.eye(4)
         if pl is not None:
             rot = pl[1]                        # angles, or face=/up='s 3x3 matrix
             step[:3, :3] = np.array(rot, dtype=float) if isinstance(rot[0], tuple) \
                 else rotation_matrix(*rot)
             step[:3, 3] = pl[0]
-        else:
+        elif not placed_below:
             step[0, 3], step[1, 3] = x[a.fx], x[a.fy]
+        # (an unplaced assembly above a Place: its move on the sheet is layout, not 3D; run
+        # dv: `RightOf(box, ...)` of a lid_box moved its Placed panels 247 mm off the origin)
+        placed_below = placed_below or pl is not None
+        steps.append(step)
+    for step in reversed(steps):               # root first: M maps a's local frame to world
         M = M @ step
     ox = sum(float(x[a.fx]) for a in chain)
     oy = sum(float(x[a.fy]) for a in chain)
