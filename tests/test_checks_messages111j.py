@@ -460,3 +460,15 @@ def test_an_assembly_laid_out_on_the_sheet_moves_no_part_placed_in_it():
     assert np.allclose(c[:2], (0.0, 0.0), atol=1e-6), c
     assert abs((x0 + x1) / 2) > 100          # laid out beside the rest on the sheet
     assert "W0517" not in _codes(r) and "W0518" not in _codes(r)
+
+
+def test_w0520_moves_the_smaller_shape_and_names_the_copy():
+    """Run dv's keep-off-the-grass sign: the last of twenty grass blades stopped 0.21 mm short
+    of the 300 mm panel's edge; W0520 named the list `blade` and told to move the panel.  The
+    smaller of the two moves (a shape more than four times the other's area stays), and a
+    loop's copy is named with its index."""
+    path = RUNS / "issue111dv" / "run" / "08_keep_off_grass_sign.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    (w,) = [d for d in r.diagnostics if d.code == "W0520"]
+    assert "past `lawn_sign.sign.blade[19]`" in w.message
+    assert w.hint.startswith("align the edges: move `lawn_sign.sign.blade[19]` by (0.214, 0.000) mm")
