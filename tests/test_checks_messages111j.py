@@ -472,3 +472,22 @@ def test_w0520_moves_the_smaller_shape_and_names_the_copy():
     (w,) = [d for d in r.diagnostics if d.code == "W0520"]
     assert "past `lawn_sign.sign.blade[19]`" in w.message
     assert w.hint.startswith("align the edges: move `lawn_sign.sign.blade[19]` by (0.214, 0.000) mm")
+
+
+def test_w0406_of_a_fillet_on_a_splines_own_corners_says_so_and_the_fix_works():
+    """Run ds's sewing curves: `Fillet(2 mm)` of a part whose outline is one closed Spline
+    with `corners=[0, 1]` was W0406 "no corners (only circles and smooth joins)" and "delete
+    the `Fillet`", which drops the rounding asked for.  It now names the Spline's corners,
+    and its way, `Offset(Inset(edge, 2 mm), 2 mm)`, compiles clean and rounds them."""
+    path = RUNS / "issue111ds" / "run" / "07_sewing_curves.first_valid.aidl"
+    src = path.read_text()
+    r = aidl_lang.compile(source=src, path=str(path))
+    (w,) = [d for d in r.diagnostics if d.code == "W0406"]
+    assert "are a Spline's own (its `corners=`, at (0, 0), (300, 0))" in w.message
+    assert "Offset(Inset(NAME, 2 mm), 2 mm)" in w.hint
+    fixed = src.replace("        Fillet(2 mm)\n", "        rounded = Offset(Inset(edge, 2 mm), 2 mm)\n", 1)
+    r2 = aidl_lang.compile(source=fixed, path=str(path))
+    assert r2.ok and not {"W0406", "E0407"} & set(_codes(r2)), _codes(r2)
+    (part,) = [p for p in r2.output.drawing.parts if p.name == "sewing_curves.hip"]
+    x0, y0, x1, y1 = part.shape.bounds()
+    assert x0 > 0.5 and abs(y0) < 1e-6           # the sharp tip at (0, 0) rounded off

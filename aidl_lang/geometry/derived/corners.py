@@ -488,6 +488,17 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
     if pts is None:
         if got or r <= 0:       # (size 0 asks for nothing: an outline without corners too)
             return []
+        kinks = _spline_kinks(loops) if fillet else []
+        if kinks:               # (run ds: "no corners" and "delete the Fillet" for these)
+            where = ", ".join(f"({x - off[0]:.6g}, {y - off[1]:.6g})" for x, y in kinks[:3])
+            return [(call, "W0406", -1,
+                     f"{head} changes nothing in `{path}`: the corners of its final outline "
+                     f"are a Spline's own (its `corners=`, at {where}), which a Fillet does "
+                     "not round",
+                     "to round them, drop them from the Spline's `corners=` (it then runs "
+                     "smooth through them), or draw the outline rounded: `Offset(Inset(NAME, "
+                     f"{r:.6g} mm), {r:.6g} mm)`, NAME the Spline (it is then not drawn; every "
+                     "convex corner rounded by the radius)")]
         return [(call, "W0406", -1,
                  f"{head} changes nothing in `{path}`: its final outline has no "
                  + ("corners (only circles and smooth joins)" if fillet else
@@ -567,6 +578,22 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
                         f"ask for at most {fits:g} mm there, or make the edges beside the "
                         f"corner longer" if fits > 0 else
                         f"make the edges beside the corner longer, or delete the `{kind}`"))
+    return out
+
+
+def _spline_kinks(loops: list) -> list:
+    """The sharp corners inside the Spline pieces of ``loops`` (the knots a `corners=` names
+    where the tangents turn by more than :data:`CORNER_TURN`), as (x, y)."""
+    from ..shapes.curves import Spline
+    out = []
+    for lp in loops:
+        for g in lp.segments:
+            if isinstance(g, Spline):
+                c, n = g.curve.ctrl, g.curve.n
+                for i in (range(n) if g.curve.closed else range(1, n)):
+                    q = c[3 * i]
+                    if _spline_kink(q, [lp]):
+                        out.append((float(q[0]), float(q[1])))
     return out
 
 
