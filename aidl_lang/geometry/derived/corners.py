@@ -759,8 +759,11 @@ def _corner(a, b, turn: float, size: float, fillet: bool):
             f"meets another curve: a {'fillet arc' if fillet else 'chamfer'} there would end "
             f"on the ellipse at a point the exact output cannot place (the offset of an "
             f"ellipse is no ellipse), and the result would be chords", el.curve,
-            f"choose corners away from the ellipse with `{what}(..., at=[...])`, or round "
-            f"the corner with an arc of your own (a Circle placed tangent to both)")
+            f"choose corners away from the ellipse with `{what}(..., at=[...])`, round "
+            f"the corner with an arc of your own (a Circle placed tangent to both), or draw "
+            f"the ellipse as a Polygon of its points, which {what} rounds (`Polygon([(cx + "
+            f"rx * cos(t * 1 deg), cy + ry * sin(t * 1 deg)) for t in range(0, 360, 5)])`; "
+            f"run dt's 72-sided oval)")
     # (an ellipse beside a line or an arc: the fillet's centre is found on the ellipse's
     # offset curve, a root in its parameter; the chamfer's ends by arc length)
     sp = next((g for g in (a, b) if isinstance(g, Spline)), None)
