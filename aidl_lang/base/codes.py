@@ -741,7 +741,9 @@ means the same, `self` there being the drawing on its part); the hint of a mark 
 after its fix. Engraving off the material burns air, so nothing reaches the machine that was not
 drawn; an `AllowOverlap` of an engraving that lies on the material is W0523. A straight line
 that leaves the material only inside round holes centred on its ends (a linkage diagram drawn
-pivot to pivot over its axle holes: run dp) is drawn as meant and not warned.
+pivot to pivot over its axle holes: run dp) is drawn as meant and not warned, nor is a mark
+of which less than 0.25 mm runs past the material (a ruler's tick a hair past a rounded corner:
+run dt), nothing of it lost.
 """),
     "W0506": ("geometry that adds nothing", """
 A child solid lies wholly inside the rest of its parent, so it changes nothing in the final

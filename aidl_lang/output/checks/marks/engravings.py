@@ -20,7 +20,7 @@ from ..common import _edges, _inside, _part_of, _pct, _signed, freed_share, writ
 from .allowed import meant_off
 from .arcs import arc_on_material
 from .segments import _crosses, _edge_arrays, _exact_circle_gaps, _pair_gap
-from .sampling import (ENGRAVE_TOL, _sample, _n_samples, _samples, _all_on_material, _within, _share_on, _length_share)
+from .sampling import (ENGRAVE_TOL, _sample, _n_samples, _samples, _all_on_material, _within, _share_on, _lengths)
 
 
 def _holes_crossed(d: Drawing, roots, part, off: np.ndarray) -> list[str]:
@@ -119,8 +119,14 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         # 1% of a long text: "0%" read as "nothing is off" (issue 84's door sign), so a small
         # share is said as such
         gl = _edges(grown_loops)
-        off = float((~inside).sum()) / len(pts) if _is_flat_text(g, items) or \
-            g.kind == "Text" else _length_share(items, lambda P: ~_inside(P, gl))
+        if _is_flat_text(g, items) or g.kind == "Text":
+            off = float((~inside).sum()) / len(pts)
+        else:
+            lost, whole = _lengths(items, lambda P: ~_inside(P, gl))
+            if lost < OVERSHOOT:
+                continue    # a hair past the edge: nothing of the mark is lost (run dt's
+                #             ruler ticks 0.08 mm past a rounded corner)
+            off = lost / whole if whole > 0 else 1.0
         share = _pct(off, 1.0) if off >= 0.005 else "under 1%"
         hint = _off_outline_hint(d, part, g, pts, pts[~inside])
         if where in ("across a hole", "across an opening"):
@@ -426,6 +432,7 @@ def _check_on_cut(part, shape, geoms, pts: np.ndarray, loops, sink) -> set:
 
 
 CUT_CLEAR = 0.5          # mm: an engraved mark closer to the cut edge runs into it
+OVERSHOOT = 0.25         # mm of a mark past the material (W0505): below it, nothing is lost
 SQUARE = math.radians(15)   # a straight mark ending on the edge this near square is a tick
 SCALE = 3                # ticks ending square on the edges of one part: a scale (a ruler)
 

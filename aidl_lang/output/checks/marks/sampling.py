@@ -181,8 +181,16 @@ def _share_on(items, edges) -> float:
 
 def _length_share(items, where) -> float:
     """The share of engraving ``items``' length at the points where ``where`` (N x 2 points
-    -> N booleans) holds: points spread evenly by length over its lines and polygons' sides
-    (:data:`ALONG` in all), its curves' own samples (even along them)."""
+    -> N booleans) holds (:func:`_lengths`)."""
+    part, whole = _lengths(items, where)
+    return part / whole if whole > 0 else 0.0
+
+
+def _lengths(items, where) -> tuple[float, float]:
+    """``(length where ``where`` holds, whole length)`` of engraving ``items`` (mm):
+    ``where`` maps N x 2 points to N booleans, asked at points spread evenly by length over
+    its lines and polygons' sides (:data:`ALONG` in all) and at its curves' own samples
+    (even along them)."""
     segs, curved = [], []
     for it in items:
         if it[0] == "line":
@@ -210,8 +218,6 @@ def _length_share(items, where) -> float:
             pts.append(c)
             weight.append(np.r_[step, step[-1:]] if len(step) else np.ones(len(c)))
     if not pts:
-        return 0.0
+        return 0.0, 0.0
     P, W = np.vstack(pts), np.concatenate(weight)
-    if W.sum() <= 0:
-        return 0.0
-    return float(W[where(P)].sum() / W.sum())
+    return float(W[where(P)].sum()), float(W.sum())
