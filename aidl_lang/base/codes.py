@@ -1152,7 +1152,8 @@ too, and so is one with a round hole whose axis, assembled, runs through a round
 the part it comes nearest (within 0.05 mm; holes at most 26 mm across, one at most three times
 the other, in planes up to 150 mm apart; a part with more than 200 such circles is not looked
 at): a pin, an axle or a bolt holds it and its gap is play (a boom on a dowel between its
-uprights, a toy's wheels on their axles).
+uprights, a toy's wheels on their axles). So is a part that passes through an opening of the
+part it comes nearest (a spreader loose in its stand's slot: run ds), held there with play.
 
     thickness 3 mm
     assembly kit {

@@ -59,9 +59,9 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
     bends = getattr(d, "bends", None)
     # what the check did (vertices, booleans, distances): a sweep's work (sweep_plan.work)
     d.fit_counts = {}
-    hits, gaps = fit(Bodies(parts, d.placement, deadline=deadline, bends=bends), deadline,
-                     normals_of(d.placement), plates_of(parts, d.placement, bends=bends),
-                     counts=d.fit_counts)
+    bodies = Bodies(parts, d.placement, deadline=deadline, bends=bends)
+    hits, gaps = fit(bodies, deadline, normals_of(d.placement),
+                     plates_of(parts, d.placement, bends=bends), counts=d.fit_counts)
 
     def at(name):
         s = d.part_of.get(name)
@@ -106,6 +106,7 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
         return sp is not None and in_stdlib(sp.file)
     groups: dict = {}       # (statement, severity) -> [(gap, message, hint)]: a loop's copies once
     pins = _Pins(d)
+    loose = _Loose(d, bodies)
     for g in gaps:
         if templates(g.part) and templates(g.nearest):
             continue            # a gap a stdlib template places by design (gear_train's lift=)
@@ -140,6 +141,14 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                     "bolt through them holds it, the gap its play",
                     f"held by the pin: nothing is needed; if a tab of it should reach a slot, "
                     f"move `{short}` {g.gap:.3g} mm with its `Place`")
+        elif loose.in_opening(g.part, g.nearest):
+            # it stands in an opening of the part it comes nearest (run ds: butter spreaders
+            # loose in 7 mm slots of a 5 mm stand, "move it 0.58 mm" for the play)
+            said = ("note", f"assembled, part `{g.part}` touches no other part (the nearest, "
+                    f"`{g.nearest}`, is {g.gap:.3g} mm away): it passes through an opening of "
+                    f"`{g.nearest}`, which holds it with that play",
+                    f"standing loose in the opening is as drawn: nothing is needed; for a snug "
+                    f"fit, narrow the opening by the play or move `{short}` with its `Place`")
         elif g.gap >= AWAY - 1e-6:      # placed 5 mm or more from all: carried by what is not
             # cut (run bf: a wheel on a dowel axle, a sign on S-hooks; "a tab does not reach
             # its slot: move it 7 mm" would have made the wheel rub its stand)
@@ -240,6 +249,40 @@ PIN_MAX = 26.0
 PIN_SPAN = 150.0
 # the most round holes of a part looked at as pins (each is one small boolean)
 PIN_HOLES = 200
+
+
+class _Loose:
+    """Whether a placed part passes through an opening of another (a slot, a window: the
+    other's outline with its holes filled, extruded and placed, meets the part's solid,
+    while the two solids touch nowhere): a part standing loose in its slot."""
+
+    def __init__(self, d: Drawing, bodies):
+        self.d, self.bodies = d, bodies
+        self.index = {name: i for i, (name, _, _) in enumerate(bodies.parts)}
+
+    def in_opening(self, name: str, other: str) -> bool:
+        import manifold3d as mf
+        from ..fabrication.assembly import extrude
+        from .common import _signed
+        i, j = self.index.get(name), self.index.get(other)
+        if i is None or j is None or not (self.d.placement or {}).get(name) is not None:
+            return False
+        if self.bodies.bends.get(name) or self.bodies.bends.get(other):
+            return False
+        _, shape, t = self.bodies.parts[j]
+        outer = [p for p in shape.to_polygons() if _signed(p) > 0]
+        if not outer:
+            return False
+        filled = mf.CrossSection(outer, mf.FillRule.Positive)
+        (got,) = extrude([(other, "solid", filled, t)], self.d.placement,
+                         self.bodies.thickness) or [(None, None)]
+        if got[1] is None:
+            return False
+        common = self.bodies[i][1] ^ got[1]
+        return not common.is_empty() and common.volume() > VOLUME_IN
+
+
+VOLUME_IN = 1e-3        # mm^3 of a part inside another's filled outline: it passes through
 
 
 class _Pins:
