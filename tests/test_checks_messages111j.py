@@ -527,3 +527,20 @@ assembly kit {
 """
     (w,) = [d for d in aidl_lang.compile(source=src).diagnostics if d.code == "W0518"]
     assert w.severity == "warning" and "0.5 mm away" in w.message
+
+
+def test_two_template_instances_standing_in_one_place_are_one_w0517():
+    """Run ax's note drawers: two `drawer` instances laid out on the sheet by `Below`, neither
+    placed in 3D; since round fourteen (run dv) a template's parts stand where its docs put
+    them, so both stand at the origin: one W0517 naming the two instances (not ten naming
+    their panels), whose hint places one; followed, nothing collides."""
+    path = RUNS / "issue111ax" / "run" / "02_note_drawers.first_valid.aidl"
+    src = path.read_text()
+    r = aidl_lang.compile(source=src, path=str(path))
+    (w,) = [d for d in r.diagnostics if d.code == "W0517"]
+    assert "`note_drawers.lower` and `note_drawers.upper` (`drawer` and `drawer`) stand in one place: 10 of their parts collide" in w.message
+    assert "`Place(upper, position=(x, y, z))`" in w.hint
+    placed = src.replace("    AlignCenterX(lower, upper)\n",
+                         "    AlignCenterX(lower, upper)\n    Place(upper, position=(0, 0, 50 mm))\n")
+    r2 = aidl_lang.compile(source=placed, path=str(path))
+    assert "W0517" not in _codes(r2)

@@ -1125,7 +1125,10 @@ the material the joint was drawn for, or move the part with its `Place`; a colli
 deep or more is a part misplaced (an offset's sign, a position), and the hint leads with
 moving it. When the common volume is thinnest across the other part's sheet, not across the
 part that goes in, an edge or a shoulder presses into that part's face (a riser's shoulder
-0.3 mm into a sloping plank's underside: run dj), and the hint says so, not a slot. Two parts meant to
+0.3 mm into a sloping plank's underside: run dj), and the hint says so, not a slot. Two
+standard-library template instances that stand in one place (neither placed, laid out only on
+the sheet, which moves no part in 3D) are one warning naming the two, its hint their `Place`
+(run ax's two drawers, ten of their panels colliding). Two parts meant to
 share material (a press fit drawn to size, an inlay) are named in `AllowOverlap(a, b)` in
 their assembly, which this check then leaves alone, as W0511 does. The check reads the
 designed parts: a `kerf` is compensated in the cut files, so the parts come out that size.

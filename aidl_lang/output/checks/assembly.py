@@ -72,6 +72,12 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
     # meant overlaps and the templates' designed gaps left out
     d.fit = {"checked": True, "collisions": [], "floating": []}
     from ...geometry.shapes.tessellate import CHORD_TOL
+    pairs_of: dict = {}                  # (instance, instance) -> its collisions
+    for c in hits:
+        pair = _instances(d.part_of.get(c.a), d.part_of.get(c.b))
+        if pair is not None:
+            pairs_of[pair] = pairs_of.get(pair, 0) + 1
+    together: dict = {}
     for c in hits:
         sa_, sb_ = d.part_of.get(c.a), d.part_of.get(c.b)
         if sa_ is not None and sb_ is not None and _allowed(sa_, sb_):
@@ -88,6 +94,10 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
         d.fit["collisions"].append({"a": c.a, "b": c.b, "volume": round(c.volume, 6),
                                     "depth": round(c.depth, 6),
                                     "box": [round(v, 6) for v in c.box]})
+        pair = _instances(sa_, sb_)
+        if pair is not None and pairs_of.get(pair, 0) > 1:
+            together.setdefault(pair, []).append(c)
+            continue                     # two template instances in one place: said once
         x0, y0, z0, x1, y1, z1 = c.box
         sa = at(c.a)
         labels = [Label(sa, f"`{c.a}` is placed here", primary=False)] if sa else []
@@ -99,6 +109,17 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
         sink.warning("W0517", f"assembled, parts `{c.a}` and `{c.b}` collide: they share "
                      f"{c.volume:.3g} mm^3, {c.depth:.3g} mm deep, {where}", at(c.b) or sa,
                      labels=labels, hint=_collision_hint(d, c))
+    for (ia, ib), cs in together.items():
+        vol = sum(c.volume for c in cs)
+        short = ib.path.split(".")[-1]
+        sink.warning("W0517", f"assembled, `{ia.path}` and `{ib.path}` (`{ia.template}` and "
+                     f"`{ib.template}`) stand in one place: {len(cs)} of their parts collide "
+                     f"({vol:.3g} mm^3 in all; the first, `{cs[0].a}` and `{cs[0].b}`)",
+                     ib.span, labels=[Label(ia.span, f"`{ia.path}` is made here",
+                                            primary=False)] if ia.span else [],
+                     hint=f"a template's parts stand where its docs put them, and laying it "
+                          "out on the sheet moves none in 3D: give one of them its place, "
+                          f"`Place({short}, position=(x, y, z))` in their assembly")
     from ...base.diagnostics import in_stdlib
 
     def templates(name) -> bool:
@@ -249,6 +270,31 @@ PIN_MAX = 26.0
 PIN_SPAN = 150.0
 # the most round holes of a part looked at as pins (each is one small boolean)
 PIN_HOLES = 200
+
+
+def _instances(sa, sb):
+    """``(instance, instance)``: the outermost standard-library template instances holding
+    parts ``sa`` and ``sb`` when they are two, neither placed by its own ``Place`` nor
+    below a placed one (their parts stand where the template puts them); else None."""
+    from ...base.diagnostics import in_stdlib
+
+    def outer(s):
+        found = None
+        while s is not None:
+            if getattr(s, "template", None) and s.span is not None and \
+                    not in_stdlib(s.span.file):
+                found = s
+            s = s.parent
+        if found is None or any(getattr(a, "placement", None) is not None
+                                for a in (found, *found.ancestors())):
+            return None
+        return found
+    if sa is None or sb is None:
+        return None
+    ia, ib = outer(sa), outer(sb)
+    if ia is None or ib is None or ia is ib or ia.template is None:
+        return None
+    return (ia, ib) if ia.path < ib.path else (ib, ia)
 
 
 class _Loose:
