@@ -544,3 +544,17 @@ def test_two_template_instances_standing_in_one_place_are_one_w0517():
                          "    AlignCenterX(lower, upper)\n    Place(upper, position=(0, 0, 50 mm))\n")
     r2 = aidl_lang.compile(source=placed, path=str(path))
     assert "W0517" not in _codes(r2)
+
+
+def test_distance_takes_a_list_of_shapes():
+    """Runs dy, dz: `distance(words, screws)` with `screws` a pattern's copies was E0108
+    "expected a point, got list" (the prompt's own example reads `distance(label, holes)`);
+    a list is measured as all its shapes together: run dz's first try compiles as written."""
+    path = RUNS / "issue111dz" / "drafts" / "08_cctv_sign.attempt1.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    assert "E0108" not in _codes(r), [(d.code, d.message[:80]) for d in r.diagnostics]
+    r = aidl_lang.compile(source=DIST + """
+assert distance(plate.label, [plate.tie, plate.body]) == 0 mm, "the label lies on the body's outline? no: inside it"
+""")
+    (e,) = [d for d in r.diagnostics if d.code == "E0405"]      # the label is inside: > 0
+    assert "== 0 mm is false" in e.message

@@ -684,6 +684,7 @@ class Calls:
             return Q(func("sqrt", p.x * p.x + p.y * p.y), LEN, p.owners)
         if nm == "distance":
             if any(isinstance(a, StructRef) or isinstance(a, GeomRef) and a.geom.kind != "Point"
+                   or isinstance(a, list) and a and not all(isinstance(c, Q) for c in a)
                    for a in args[:2]):
                 return measured_distance(self, args, sp)     # of shapes: in an assert
             p, q = self._to_point(args[0], sp), self._to_point(args[1], sp)

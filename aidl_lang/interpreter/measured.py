@@ -81,18 +81,34 @@ def measured_distance(interp, args, span) -> Q:
                              "2 mm`); to place two shapes apart, `Distance(a, b, 5 mm)`")
     sides, owners = [], set()
     for a in args[:2]:
-        if isinstance(a, StructRef):            # a hole, a drawing, a part: what it draws
-            drawn = [g for s in a.struct.subtree() for g in s.geometry if not g.construction]
+        if isinstance(a, (StructRef, list, tuple)) and not _is_point(a) or \
+                isinstance(a, GeomRef) and a.geom.kind != "Point":
+            drawn = _drawn(a, owners)           # a shape, a hole, a drawing, a part, a list
             if not drawn:
-                raise EvalError("E0108", f"`{a.struct.path}` draws nothing to measure", span,
-                                hint="name one of its shapes")
+                raise EvalError("E0108", "`distance` was given nothing drawn to measure", span,
+                                hint="name a shape, a structure or a list of them")
             sides.append(drawn)
-            owners.add(a.struct)
-        elif isinstance(a, GeomRef) and a.geom.kind != "Point":
-            sides.append(a.geom)
-            owners.add(a.geom.owner)
         else:
             p = interp._to_point(a, span)
             sides.append((p.x, p.y))
             owners |= set(p.owners)
     return Q(Measured(sides[0], sides[1], interp.model), LEN, frozenset(owners))
+
+
+def _is_point(v) -> bool:
+    """``(x, y)`` written as two numbers or lengths: a point, not a list of shapes."""
+    return isinstance(v, (list, tuple)) and len(v) == 2 and all(isinstance(c, Q) for c in v)
+
+
+def _drawn(v, owners: set) -> list:
+    """The geometries drawn by ``v`` (a shape, a structure's subtree, a list of them: run
+    dy's `distance(label, holes)` of a pattern's copies), their owners added to ``owners``."""
+    if isinstance(v, GeomRef):
+        owners.add(v.geom.owner)
+        return [v.geom] if v.geom.kind != "Point" else []
+    if isinstance(v, StructRef):
+        owners.add(v.struct)
+        return [g for s in v.struct.subtree() for g in s.geometry if not g.construction]
+    if isinstance(v, (list, tuple)):
+        return [g for item in v for g in _drawn(item, owners)]
+    return []

@@ -162,12 +162,15 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                     "bolt through them holds it, the gap its play",
                     f"held by the pin: nothing is needed; if a tab of it should reach a slot, "
                     f"move `{short}` {g.gap:.3g} mm with its `Place`")
-        elif loose.in_opening(g.part, g.nearest):
-            # it stands in an opening of the part it comes nearest (run ds: butter spreaders
-            # loose in 7 mm slots of a 5 mm stand, "move it 0.58 mm" for the play)
+        elif (through := loose.in_opening(g.part, g.nearest)) or \
+                loose.in_opening(g.nearest, g.part):
+            # it stands in an opening of the part it comes nearest, or that part in one of
+            # it (run ds: butter spreaders loose in 7 mm slots of a 5 mm stand, "move it
+            # 0.58 mm" for the play; run dx: a cross-staff's transom on its staff)
+            what = (f"it passes through an opening of `{g.nearest}`, which holds it" if through
+                    else f"`{g.nearest}` passes through an opening of it, which holds it")
             said = ("note", f"assembled, part `{g.part}` touches no other part (the nearest, "
-                    f"`{g.nearest}`, is {g.gap:.3g} mm away): it passes through an opening of "
-                    f"`{g.nearest}`, which holds it with that play",
+                    f"`{g.nearest}`, is {g.gap:.3g} mm away): {what} with that play",
                     f"standing loose in the opening is as drawn: nothing is needed; for a snug "
                     f"fit, narrow the opening by the play or move `{short}` with its `Place`")
         elif g.gap >= AWAY - 1e-6:      # placed 5 mm or more from all: carried by what is not
