@@ -558,3 +558,21 @@ assert distance(plate.label, [plate.tie, plate.body]) == 0 mm, "the label lies o
 """)
     (e,) = [d for d in r.diagnostics if d.code == "E0405"]      # the label is inside: > 0
     assert "== 0 mm is false" in e.message
+
+
+def test_w0513_a_figure_running_into_a_label():
+    """Run dt's compass baseplate: the map scale's "0" ran 0.25 mm into "1:50 000" below it,
+    unsaid (single figures close together were left alone).  A figure whose box runs into
+    another text's is W0513; figures apart, however close, are not."""
+    src = """solid p {
+    body = Rectangle(center=(0, 0), width=100, height=130)
+    drawing d {
+        num = Text("0", position=(25, Y), size=2.5, anchor="end", valign="middle")
+        label = Text("1:50 000", position=(30, -58.5), size=2.5, anchor="end")
+    }
+}
+"""
+    (w,) = [d for d in aidl_lang.compile(source=src.replace("Y", "-55")).diagnostics
+            if d.code == "W0513"]
+    assert "runs into text" in w.message and '("0")' in w.message
+    assert "W0513" not in _codes(aidl_lang.compile(source=src.replace("Y", "-54")))
