@@ -109,17 +109,7 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
         sink.warning("W0517", f"assembled, parts `{c.a}` and `{c.b}` collide: they share "
                      f"{c.volume:.3g} mm^3, {c.depth:.3g} mm deep, {where}", at(c.b) or sa,
                      labels=labels, hint=_collision_hint(d, c))
-    for (ia, ib), cs in together.items():
-        vol = sum(c.volume for c in cs)
-        short = ib.path.split(".")[-1]
-        sink.warning("W0517", f"assembled, `{ia.path}` and `{ib.path}` (`{ia.template}` and "
-                     f"`{ib.template}`) stand in one place: {len(cs)} of their parts collide "
-                     f"({vol:.3g} mm^3 in all; the first, `{cs[0].a}` and `{cs[0].b}`)",
-                     ib.span, labels=[Label(ia.span, f"`{ia.path}` is made here",
-                                            primary=False)] if ia.span else [],
-                     hint=f"a template's parts stand where its docs put them, and laying it "
-                          "out on the sheet moves none in 3D: give one of them its place, "
-                          f"`Place({short}, position=(x, y, z))` in their assembly")
+    _say_together(together, sink)
     from ...base.diagnostics import in_stdlib
 
     def templates(name) -> bool:
@@ -273,6 +263,23 @@ PIN_MAX = 26.0
 PIN_SPAN = 150.0
 # the most round holes of a part looked at as pins (each is one small boolean)
 PIN_HOLES = 200
+
+
+def _say_together(together: dict, sink: DiagnosticSink) -> None:
+    """One W0517 for each two template instances whose parts collide because both stand
+    where their templates put them (``together``: (instance, instance) -> collisions; run
+    ax's two drawers, ten panels colliding)."""
+    for (ia, ib), cs in together.items():
+        vol = sum(c.volume for c in cs)
+        short = ib.path.split(".")[-1]
+        sink.warning("W0517", f"assembled, `{ia.path}` and `{ib.path}` (`{ia.template}` and "
+                     f"`{ib.template}`) stand in one place: {len(cs)} of their parts collide "
+                     f"({vol:.3g} mm^3 in all; the first, `{cs[0].a}` and `{cs[0].b}`)",
+                     ib.span, labels=[Label(ia.span, f"`{ia.path}` is made here",
+                                            primary=False)] if ia.span else [],
+                     hint=f"a template's parts stand where its docs put them, and laying it "
+                          "out on the sheet moves none in 3D: give one of them its place, "
+                          f"`Place({short}, position=(x, y, z))` in their assembly")
 
 
 def _instances(sa, sb):
