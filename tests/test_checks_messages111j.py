@@ -576,3 +576,18 @@ def test_w0513_a_figure_running_into_a_label():
             if d.code == "W0513"]
     assert "runs into text" in w.message and '("0")' in w.message
     assert "W0513" not in _codes(aidl_lang.compile(source=src.replace("Y", "-54")))
+
+
+def test_e0405_says_every_level_of_a_three_deep_loop_list():
+    """Run dw's city skyline: windows set in three nested loops (5 x 2 x 2); E0405 said "a
+    list of 5 lists of 2 each" and offered `sum([len(r) for r in ...])`, which counts 10.
+    It says every level and the expression that counts 20; written so, the assert holds."""
+    path = RUNS / "issue111dw" / "drafts" / "08_city_skyline.attempt1.aidl"
+    src = path.read_text()
+    r = aidl_lang.compile(source=src, path=str(path))
+    (e,) = [d for d in r.diagnostics if d.code == "E0405"]
+    want = "sum([sum([len(r2) for r2 in r1]) for r1 in front.windows.win])"
+    assert "5 x 2 x 2 (20 items in all: `front.windows.win[i][j][k]`" in e.message
+    assert want in e.message
+    fixed = src.replace("assert len(front.windows.win) == 20", f"assert {want} == 20")
+    assert "E0405" not in _codes(aidl_lang.compile(source=fixed, path=str(path)))

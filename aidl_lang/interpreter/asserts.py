@@ -120,13 +120,9 @@ class Asserts:
                             out.append((_src(self.sink, n.obj.span), spine, "slot"))
                     elif isinstance(v, list) and v and all(isinstance(i, list) for i in v):
                         # a nested loop's names (run aq: `len(crumbs.c) == 9` for 3 x 3
-                        # holes was 3): the rows, not every copy
-                        sizes = sorted({len(i) for i in v})
-                        each = (f" of {sizes[0]} each" if len(sizes) == 1 else
-                                f" of {sizes[0]} to {sizes[-1]}")
-                        out.append((text, f"a list of {len(v)} lists{each} (`{text}[i][j]`; "
-                                          f"every item: `sum([len(r) for r in {text}])`)",
-                                    "said"))
+                        # holes was 3): the rows, not every copy; every level of them (run
+                        # dw: 5 x 2 x 2 windows said "5 lists of 2 each", its sum 10)
+                        out.append((text, _nested_said(v, text), "said"))
                 continue
             if isinstance(n, A.Call):
                 todo += reversed(list(n.args) + [k.value for k in n.kwargs])
@@ -229,3 +225,27 @@ def _slot_spine(interp, n):
 _ASSERT_HINT = ("an `assert` states what must be true of the design; change the values or "
                 "constraints so that it holds (it is not a constraint: the solver does not try "
                 "to satisfy it)")
+
+
+def _nested_said(v: list, text: str) -> str:
+    """How E0405 says a list of lists ``v`` (written ``text``): its sizes level by level, its
+    items in all, the index to write and the expression that counts every item
+    (``sum([sum([len(r2) for r2 in r1]) for r1 in X])`` three deep)."""
+    depth, level, sizes = 0, [v], []
+    while level and all(isinstance(i, list) for i in level):
+        got = sorted({len(i) for i in level})
+        sizes.append(f"{got[0]}" if len(got) == 1 else f"{got[0]} to {got[-1]}")
+        depth += 1
+        level = [j for i in level for j in i]
+    if depth == 2:                      # (the wording of round ten's run aq)
+        got = sorted({len(i) for i in v})
+        each = f" of {got[0]} each" if len(got) == 1 else f" of {got[0]} to {got[-1]}"
+        return (f"a list of {len(v)} lists{each} (`{text}[i][j]`; every item: "
+                f"`sum([len(r) for r in {text}])`)")
+    index = "".join(f"[{c}]" for c in "ijklmn"[:depth])
+    expr = f"len(r{depth - 1})"
+    for k in range(depth - 1, 1, -1):
+        expr = f"sum([{expr} for r{k} in r{k - 1}])"
+    expr = f"sum([{expr} for r1 in {text}])"
+    return (f"a list of lists, {' x '.join(sizes)} ({len(level)} items in all: "
+            f"`{text}{index}`; every item: `{expr}`)")
