@@ -205,7 +205,7 @@ _DEFS = {
                     [A("start", "point"), A("end", "point"), A("width", "length")],
                     doc="A rectangle (sizes and rotation held, position a guess). By two "
                         "corners only the rotation is held. By start, end: a bar along the "
-                        "segment (members start, end).",
+                        "segment (members start, end; its height is its length).",
                     members=RECT_MEMBERS),
     "RoundedRectangle": _p([A("center", "point"), A("width", "length"), A("height", "length"),
                             A("corner_radius", "length", None), A("rotation", "angle", 0.0),
