@@ -591,3 +591,24 @@ def test_e0405_says_every_level_of_a_three_deep_loop_list():
     assert want in e.message
     fixed = src.replace("assert len(front.windows.win) == 20", f"assert {want} == 20")
     assert "E0405" not in _codes(aidl_lang.compile(source=fixed, path=str(path)))
+
+
+def test_w0512_overrun_copies_overlapping_only_in_the_air():
+    """Run dw's window box: three scallops, `overrun=true` circles of R85 centred above the
+    rim, overlap only in the air above it and cut three openings; W0512 said "cuts 1
+    opening" (its first hint would move them off the pots).  Copies overlapping within the
+    material are still W0512."""
+    path = RUNS / "issue111dw" / "run" / "03_window_box.first_valid.aidl"
+    src = path.read_text().replace("AllowOverlap(s)", "")
+    assert "W0512" not in _codes(aidl_lang.compile(source=src, path=str(path)))
+    plate = """solid plate {
+    body = Rectangle(center=(0, 0), width=300, height=60)
+    hole scallops {
+        for i in range(3) {
+            s = Circle(center=((i - 1) * 50, 50), radius=RAD, overrun=true)
+        }
+    }
+}
+"""
+    assert "W0512" not in _codes(aidl_lang.compile(source=plate.replace("RAD", "30")))
+    assert "W0512" in _codes(aidl_lang.compile(source=plate.replace("RAD", "40")))

@@ -963,7 +963,9 @@ the copies overlap or touch, so the hole cuts fewer openings than the shapes dra
 gauge asked for ten holes comes out with nine. (Shapes of one hole structure may overlap by
 design, a keyhole's circle and slot; only copies made by one statement are compared.) The
 warning says how many times the shape is drawn, how many openings it cuts, and which copies
-overlap by how much. Space the copies further apart or make them smaller; if one opening is
+overlap by how much. Copies drawn with `overrun=true` are compared where they cut the
+material: three scallops whose circles overlap only in the air above the rim are three
+openings (run dw). Space the copies further apart or make them smaller; if one opening is
 meant, draw it as one shape. Two CIRCLES of one hole written as separate statements (a drill
 gauge's holes written out one by one) that overlap partly (neither inside the other) are
 reported the same way, with the depth of the overlap, the common area and how far to move

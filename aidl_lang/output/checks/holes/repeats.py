@@ -28,6 +28,9 @@ def _check_repeated_faces(d: Drawing, h: Structure, sink: DiagnosticSink,
     "at least": n concentric copies are n^2/2 pairs (1,000: 500,000 booleans, past the
     family's share, so no W0512 at all but a W0521 note)."""
     by_stmt: dict = {}
+    # the material the hole cuts: copies that overlap only off it (run dw: three scallops,
+    # circles of R85 whose overlaps lie in the air above the rim) cut separate openings
+    before = next((c.before for c in d.cuts if c.hole is h and c.before is not None), None)
     for g, f in d.own.get(h, []):
         if g.span is not None and f is not None and not f.is_empty():
             by_stmt.setdefault(g.span, []).append((g, f))
@@ -45,17 +48,24 @@ def _check_repeated_faces(d: Drawing, h: Structure, sink: DiagnosticSink,
                 break
             tick()
             common = shapes[i] ^ shapes[j]
+            runs = before is not None and (faces[i][0].data.get("overrun")
+                                           or faces[j][0].data.get("overrun"))
+            if runs:
+                common = common ^ before             # (an overrun runs past the edge)
             a = _area(common)
             if a > 1e-9:
                 merges.append((i, j, _depth(common, boxes[i], boxes[j]), a))
                 deep = deep or merges[-1][2] >= MIN_WALL
+            elif runs and len(((shapes[i] + shapes[j]) ^ before).decompose()) > 1:
+                continue                               # apart where they cut the material
             elif (shapes[i] + shapes[j]).num_contour() < 2:
                 merges.append((i, j, 0.0, 0.0))        # they touch: one contour
         if not merges:
             continue
         # pieces, not contours: five petals round a ring are one opening with an island (run
         # bw: "cuts 2 openings")
-        openings = len(_union(shapes).decompose())
+        united = _union(shapes)
+        openings = len((united ^ before if before is not None else united).decompose())
         i, j, depth, a = merges[0]
         g = faces[0][0]
         how = (f"copies {i + 1} and {j + 1} overlap by {depth:.2f} mm ({a:.2f} mm^2 in common)"
