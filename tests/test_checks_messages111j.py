@@ -612,3 +612,33 @@ def test_w0512_overrun_copies_overlapping_only_in_the_air():
 """
     assert "W0512" not in _codes(aidl_lang.compile(source=plate.replace("RAD", "30")))
     assert "W0512" in _codes(aidl_lang.compile(source=plate.replace("RAD", "40")))
+
+
+def test_distance_of_every_kind_of_mark_and_of_a_text_of_no_letters():
+    """`distance` in an assert measures filled and stroked text, an Arc, an Ellipse, a
+    Spline, a Polyline and a Star against a hole (no internal error); a drawing holding a Text
+    of no letters is measured by its other marks; a Text of no letters alone is E0108 naming
+    it (it was "nan mm > 1 mm is false")."""
+    src = """solid p {
+    body = Rectangle(center=(0, 0), width=200, height=120)
+    drawing d {
+        t = Text("AB", position=(-60, 30), size=8, font="sans", fill=true)
+        s = Text("CD", position=(-60, 10), size=8)
+        a = Arc(center=(0, 0), radius=10, start_angle=0 deg, end_angle=90 deg)
+        e = Ellipse(center=(40, 20), rx=10, ry=5)
+        sp = Spline([(0, -40), (20, -30), (40, -40)])
+        pl = Polyline([(-80, -40), (-70, -30), (-60, -40)])
+        st = Star(center=(70, -30), outer_radius=10, inner_radius=4, points=5)
+        em = Text("", position=(0, 50), size=5)
+    }
+    hole h { c = Circle(center=(80, 40), diameter=6) }
+}
+"""
+    checks = "".join(f'assert distance(p.d.{n}, p.h) > 1 mm, "{n}"\n'
+                     for n in ("t", "s", "a", "e", "sp", "pl", "st"))
+    r = aidl_lang.compile(source=src + checks + 'assert distance(p.d, p.h.c.center) > 3 mm, "all"\n')
+    assert r.ok and not [d for d in r.diagnostics if d.code.startswith("E")], \
+        [(d.code, d.message[:90]) for d in r.diagnostics]
+    r = aidl_lang.compile(source=src + 'assert distance(p.d.em, p.h) > 1 mm, "empty"\n')
+    (e,) = [d for d in r.diagnostics if d.code == "E0108"]
+    assert "nothing drawn to measure (`p.d.em`, a Text of no letters)" in e.message

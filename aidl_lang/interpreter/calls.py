@@ -24,7 +24,7 @@ from ..registry import (ENTRIES, FUNCTIONS, POINT_ALIGNS, accepted_args, bind_va
 from .call_hints import _center_hint, foreign_read, list_arg_hint, shadowed
 from .cut_into import cut_into
 from .functions import call_function
-from .measured import measured_distance
+from .measured import measured_distance, of_shapes
 from .common import (_defer_boxes, said_shrunk, DEG, _a, _fmt_num, _src, fraction_hint, show,
                      ANGLE_TWICE)
 
@@ -683,9 +683,7 @@ class Calls:
                 return Q(func("abs", args[0].expr), args[0].dim, args[0].owners)
             return Q(func("sqrt", p.x * p.x + p.y * p.y), LEN, p.owners)
         if nm == "distance":
-            if any(isinstance(a, StructRef) or isinstance(a, GeomRef) and a.geom.kind != "Point"
-                   or isinstance(a, list) and a and not all(isinstance(c, Q) for c in a)
-                   for a in args[:2]):
+            if of_shapes(args):
                 return measured_distance(self, args, sp)     # of shapes: in an assert
             p, q = self._to_point(args[0], sp), self._to_point(args[1], sp)
             return Q(func("sqrt", (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y)), LEN,

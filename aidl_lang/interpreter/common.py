@@ -268,5 +268,5 @@ def loop_bound_names(block) -> list[str]:
         elif isinstance(s, A.If):
             todo += s.body.stmts + (s.orelse.stmts if s.orelse is not None else [])
         elif isinstance(s, A.For):
-            todo += [x for x in s.body.stmts]
+            todo += s.body.stmts
     return list(dict.fromkeys(out))

@@ -13,7 +13,6 @@ from __future__ import annotations
 
 from ..geometry.core.values import LEN, Q
 
-DEFAULT_THICKNESS = 3.0     # mm: what the outputs use when no `thickness` is stated
 TOLERANCE = 1e-6            # mm
 
 
@@ -35,7 +34,10 @@ def _material(s, model) -> tuple[float, bool]:
         if t is not None:
             return float(t), True
     t = getattr(model, "thickness", None)
-    return (float(t), True) if t is not None else (DEFAULT_THICKNESS, False)
+    if t is not None:
+        return float(t), True
+    from ..output.part.build.sunk import DEFAULT_THICKNESS      # what the outputs then use
+    return DEFAULT_THICKNESS, False
 
 
 def _is_part(s) -> bool:

@@ -44,8 +44,13 @@ def _entity(side, renderer, x, G) -> list:
     if isinstance(side, tuple):                 # a point: its two coordinates' expressions
         p = (float(evaluate(side[0], x)), float(evaluate(side[1], x)))
         return [("L", p, p)]
-    if isinstance(side, list):                  # a structure: each shape it draws
-        got = [pc for g in side for pc in _entity(g, renderer, x, G)]
+    if isinstance(side, list):                  # a structure, a list: each shape it draws
+        got = []
+        for g in side:
+            try:
+                got += _entity(g, renderer, x, G)
+            except MeasureError:
+                continue                        # (a shape of nothing: the others are measured)
         if not got:
             raise MeasureError("nothing drawn to measure")
         return got
@@ -81,18 +86,27 @@ def measured_distance(interp, args, span) -> Q:
                              "2 mm`); to place two shapes apart, `Distance(a, b, 5 mm)`")
     sides, owners = [], set()
     for a in args[:2]:
-        if isinstance(a, (StructRef, list, tuple)) and not _is_point(a) or \
-                isinstance(a, GeomRef) and a.geom.kind != "Point":
+        if of_shapes([a]):
             drawn = _drawn(a, owners)           # a shape, a hole, a drawing, a part, a list
             if not drawn:
-                raise EvalError("E0108", "`distance` was given nothing drawn to measure", span,
-                                hint="name a shape, a structure or a list of them")
+                what = (f" (`{a.geom.label}`, a Text of no letters)" if isinstance(a, GeomRef)
+                        and a.geom.kind == "Text" else "")
+                raise EvalError("E0108", f"`distance` was given nothing drawn to measure{what}",
+                                span, hint="name a shape, a structure or a list of them that "
+                                           "draws a line")
             sides.append(drawn)
         else:
             p = interp._to_point(a, span)
             sides.append((p.x, p.y))
             owners |= set(p.owners)
     return Q(Measured(sides[0], sides[1], interp.model), LEN, frozenset(owners))
+
+
+def of_shapes(args) -> bool:
+    """Whether a ``distance(a, b)`` call is given a shape, a structure or a list of them
+    (measured: :func:`measured_distance`) rather than two points."""
+    return any(isinstance(a, StructRef) or isinstance(a, GeomRef) and a.geom.kind != "Point"
+               or isinstance(a, (list, tuple)) and a and not _is_point(a) for a in args[:2])
 
 
 def _is_point(v) -> bool:
@@ -105,10 +119,16 @@ def _drawn(v, owners: set) -> list:
     dy's `distance(label, holes)` of a pattern's copies), their owners added to ``owners``."""
     if isinstance(v, GeomRef):
         owners.add(v.geom.owner)
-        return [v.geom] if v.geom.kind != "Point" else []
+        return [v.geom] if v.geom.kind != "Point" and _draws(v.geom) else []
     if isinstance(v, StructRef):
         owners.add(v.struct)
-        return [g for s in v.struct.subtree() for g in s.geometry if not g.construction]
+        return [g for s in v.struct.subtree() for g in s.geometry
+                if not g.construction and _draws(g)]
     if isinstance(v, (list, tuple)):
         return [g for item in v for g in _drawn(item, owners)]
     return []
+
+
+def _draws(g) -> bool:
+    """Whether geometry ``g`` draws something to measure (a Text of no letters does not)."""
+    return g.kind != "Text" or bool(str(g.data.get("text", "")).strip())

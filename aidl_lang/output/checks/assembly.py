@@ -302,7 +302,7 @@ def _instances(sa, sb):
     if sa is None or sb is None:
         return None
     ia, ib = outer(sa), outer(sb)
-    if ia is None or ib is None or ia is ib or ia.template is None:
+    if ia is None or ib is None or ia is ib:
         return None
     return (ia, ib) if ia.path < ib.path else (ib, ia)
 
@@ -315,27 +315,35 @@ class _Loose:
     def __init__(self, d: Drawing, bodies):
         self.d, self.bodies = d, bodies
         self.index = {name: i for i, (name, _, _) in enumerate(bodies.parts)}
+        self.filled: dict = {}          # part -> its outline, holes filled, placed (or None)
 
     def in_opening(self, name: str, other: str) -> bool:
-        import manifold3d as mf
-        from ..fabrication.assembly import extrude
-        from .common import _signed
-        i, j = self.index.get(name), self.index.get(other)
-        if i is None or j is None or not (self.d.placement or {}).get(name) is not None:
+        i = self.index.get(name)
+        if i is None or (self.d.placement or {}).get(name) is None or self.bodies.bends.get(name):
             return False
-        if self.bodies.bends.get(name) or self.bodies.bends.get(other):
+        solid = self._filled(other)
+        if solid is None:
             return False
-        _, shape, t = self.bodies.parts[j]
-        outer = [p for p in shape.to_polygons() if _signed(p) > 0]
-        if not outer:
-            return False
-        filled = mf.CrossSection(outer, mf.FillRule.Positive)
-        (got,) = extrude([(other, "solid", filled, t)], self.d.placement,
-                         self.bodies.thickness) or [(None, None)]
-        if got[1] is None:
-            return False
-        common = self.bodies[i][1] ^ got[1]
+        common = self.bodies[i][1] ^ solid
         return not common.is_empty() and common.volume() > VOLUME_IN
+
+    def _filled(self, name: str):
+        """Part ``name``'s outer outline, its openings filled, extruded and placed; None
+        for a part not made or bent."""
+        if name not in self.filled:
+            import manifold3d as mf
+            from ..fabrication.assembly import extrude
+            from .common import _signed
+            j = self.index.get(name)
+            made = []
+            if j is not None and not self.bodies.bends.get(name):
+                _, shape, t = self.bodies.parts[j]
+                outer = [p for p in shape.to_polygons() if _signed(p) > 0]
+                if outer:
+                    made = extrude([(name, "solid", mf.CrossSection(outer, mf.FillRule.Positive),
+                                     t)], self.d.placement, self.bodies.thickness)
+            self.filled[name] = made[0][1] if made else None
+        return self.filled[name]
 
 
 VOLUME_IN = 1e-3        # mm^3 of a part inside another's filled outline: it passes through
