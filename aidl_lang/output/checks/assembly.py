@@ -232,7 +232,7 @@ def check_routed_fit(d: Drawing, output, diameter: float, relief: str, sink: Dia
 def _check_bends(d: Drawing, sink: DiagnosticSink) -> None:
     """E0108 at a ``Bend`` whose zone on the sheet (``|angle| * (radius + thickness / 2)``
     wide, known once the part's thickness is) runs into the previous bend's of its part."""
-    from ..fabrication.assembly import DEFAULT_THICKNESS
+    from ..part.build.sunk import DEFAULT_THICKNESS
     from ..part.build.placement import bend_zones
     for name, bends in (getattr(d, "bends", None) or {}).items():
         t = float(d.thickness.get(name) or DEFAULT_THICKNESS)

@@ -15,8 +15,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..part.part import Output
+from ..part.build.sunk import DEFAULT_THICKNESS
 
-DEFAULT_THICKNESS = 3.0
 # mm^3 and mm: a smaller common volume, or one thinner than this, is parts touching (faces flush)
 VOLUME_TOL = 1e-3
 DEPTH_TOL = 1e-6

@@ -78,10 +78,10 @@ from ...geometry.shapes.curves import reverse
 from ..part.part import Arc, EllipticArc, Line, Output, OutputError, Spline, fill_regions
 from ..fabrication.machine import MAX_DEPTH_PASSES, MAX_JOB_MOVES, too_long
 from .gcode_curves import CURVE_TOL, as_arcs  # noqa: F401  (CURVE_TOL: the module's own)
+from ..part.build.sunk import DEFAULT_THICKNESS
 
 GCODE_FORMATS = (".gcode", ".nc")
 DECIMALS = 10          # digits after the point: 1e-10 mm
-DEFAULT_THICKNESS = 3.0
 
 
 class Move:

@@ -69,7 +69,7 @@ def to_view_glb(output: Output, thickness: float | None = None, assembled: bool 
 
     from ..fabrication.assembly import bends_of, placements
     from ..fabrication.assembly import bent as bend
-    from .mesh import DEFAULT_THICKNESS
+    from ..part.build.sunk import DEFAULT_THICKNESS
     trimesh = _trimesh()
     tol = view_tolerance(output) if tol is None else tol
     colour = colours(output)

@@ -13,8 +13,8 @@ from __future__ import annotations
 import numpy as np
 
 from ..part.part import Circle, Loop, MissingDependency, Output, sink_heads, sink_tools
+from ..part.build.sunk import DEFAULT_THICKNESS
 
-DEFAULT_THICKNESS = 3.0
 
 # What a part's solid costs beyond its writer's per-vertex figure (issue 110: the STL of a 70 x
 # 70 grid of countersunk 3 mm holes was priced 1.4 M work units and took 128 s of CPU, past the

@@ -16,8 +16,8 @@ import os
 import tempfile
 
 from ..part.part import Circle, EllipticArc, Line, Loop, MissingDependency, Output, Spline
+from ..part.build.sunk import DEFAULT_THICKNESS
 
-DEFAULT_THICKNESS = 3.0
 
 
 def _ocp():

@@ -46,6 +46,7 @@ from ....geometry.core.model import within_index
 from .inventory import parts_list
 from ...fabrication.layout import part_box
 from ...part.part import Output, PartOutline
+from ...part.build.sunk import DEFAULT_THICKNESS
 
 __all__ = ["describe", "describe_text"]
 
@@ -368,7 +369,6 @@ def _item_points(item):
     return None
 
 
-DEFAULT_THICKNESS = 3.0     # mm: what the 3D outputs use when no `thickness` is stated
 NOTCH_AREA = 1e-6          # mm^2: a hole reaching this far past its solid's material notches it
 
 

@@ -20,7 +20,7 @@ import manifold3d as mf
 
 from ....geometry.shapes.tessellate import CHORD_TOL
 
-DEFAULT_THICKNESS = 3.0     # mm: the 3D writers' and the G-code's thickness when none is given
+DEFAULT_THICKNESS = 3.0     # mm: every output's thickness when none is given (the one definition)
 LEFT_AREA = 1e-2            # mm²: a piece of the bottom face smaller than this is no piece
 
 
