@@ -109,6 +109,13 @@ PLACEMENT = {"cx": "center_x", "cy": "center_y", "center_x": "center_x",
              "pos": "center", "origin": "center"}
 
 
+# the file's statements without `=` (docs/language.md 2): a program that reads one as a name is
+# told so (what it sets, an example, the constant to name it by), not offered a near name
+_STATEMENT_WORDS = {"thickness": ("material's thickness", "thickness 3 mm", "t"),
+                    "kerf": ("laser's cut width", "kerf 0.15 mm", "kerf_w"),
+                    "min_wall": ("thinnest wall the checks allow", "min_wall 0.3 mm", "wall")}
+
+
 class _Scope:
     def __init__(self, parent: "_Scope | None", names=()):
         self.parent = parent
@@ -455,6 +462,25 @@ class Checker:
                 or n in UNITS_LENGTH or n in UNITS_ANGLE:       # `length / mm`: 1 mm
             return
         if self.import_failed:
+            return
+        if n in _STATEMENT_WORDS:
+            # run ec's quilt hanger: `position=(0, thickness, 0)` was told "did you mean
+            # `nut_thickness`?" (a nut's height from std/fasteners: had the model followed it,
+            # the board stood at the wrong depth and nothing said so)
+            word, eg, name = _STATEMENT_WORDS[n]
+            name = next((m for m in (name, f"{n}_value", f"my_{n}") if not scope.has(m)
+                         and self._bound_inside(m, scope) is None), name)
+            value = eg.split(" ", 1)[1]
+            kind = {"kerf": A.KerfDecl, "min_wall": A.MinWallDecl}.get(n, A.ThicknessDecl)
+            said = next((s.value for s in (self.program.stmts if self.program else ())
+                         if type(s) is kind and type(s.value) is A.Num), None)
+            if said is not None:        # the file's own figure: `thickness 6 mm` -> `t = 6 mm`
+                value = f"{said.value:g}" + (f" {said.unit}" if said.unit else "")
+                eg = f"{n} {value}"
+            self.sink.error("E0101", f"unknown name `{n}`: `{n}` is a statement, not a value",
+                            e.span, hint=f"`{eg}` sets the {word}; to use it in expressions "
+                            f"too, name it once at the top (`{name} = {value}`, then `{n} "
+                            f"{name}`) and write `{name}` here")
             return
         cands = scope.all() | set(CONSTANTS) | {"self"}
         # the very name bound inside a child beats a spelling neighbour (run bg: `sl` of a

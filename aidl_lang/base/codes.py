@@ -171,6 +171,16 @@ knows), a style word that is no weight or slant, a weight the family lacks, or a
 
     t = Text("HAPPY", position=(0, 0), size=20, font="Comic Sans")   # not installed: "sans"
 """),
+    "E0134": ("text draws nothing", """
+A `Text` whose every character (but spaces) is missing from its font draws nothing: nothing is
+engraved, and a stencil cuts nothing. The single-stroke font (no `font=`) covers printable
+ASCII and the symbols `° ± × µ Ø ø ⌀`; a font named by `font=` covers what its file holds
+(`"sans"` and `"serif"`: Latin, Greek and Cyrillic). The error names the characters; where
+fontconfig is present, the hint names an installed family that has them all (run ec's `福`:
+`font="Droid Sans Fallback"`). Some characters missing, the rest drawn, is `W0105`.
+
+    drawing labels { t = Text("福", (0, 0), size=20) }    # no glyph: nothing drawn
+"""),
     "E0116": ("top-level statement inside a structure", """
 `param`, `import` and `units` belong at the top level of a file. (A `def` may stand inside a
 structure: it is defined for the whole file, as if written above the structure.)

@@ -306,13 +306,8 @@ class Calls:
                 from .fonts import font_missing
                 font_missing(self, g, spans, node)
             if lost:
-                shown = ", ".join(f"`{c}` (U+{ord(c):04X})" for c in lost[:8])
-                self.sink.warning("W0105", f"the engraving font has no glyph for {shown}: "
-                                  f"{'they are' if len(lost) > 1 else 'it is'} left out of the "
-                                  "drawing", spans.get("text", node.span),
-                                  hint="the single-stroke font draws printable ASCII and "
-                                       "° ± × µ Ø ø ⌀ only; write the text in ASCII "
-                                       "(e.g. `e` for `é`)")
+                from .fonts import stroke_font_missing
+                stroke_font_missing(self, g, lost, spans.get("text", node.span))
         r = _new(GeomRef)              # GeomRef(g) without the class call
         r.geom = g
         return r

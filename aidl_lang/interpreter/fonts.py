@@ -54,16 +54,54 @@ def text_font(interp, conv: dict, s, node, spans) -> None:
 
 
 def font_missing(interp, g, spans, node) -> None:
-    """W0105 for the characters of a font Text that its font has no glyph for (left out)."""
+    """W0105 for the characters of a font Text that its font has no glyph for (left out);
+    E0134 when that is every one of them (the text draws nothing)."""
     from ..geometry.shapes import font as F
     lost = F.missing(g.data["font"], g.data["text"])
     if lost:
         shown = ", ".join(f"`{c}` (U+{ord(c):04X})" for c in lost[:8])
+        other = F.covering("".join(lost))
+        hint = ((f"`font=\"{other}\"` has them (installed here); " if other else
+                 "choose a font that has them (`font=\"sans\"` covers Latin, Greek and "
+                 "Cyrillic; `fc-list :lang=zh family` lists the fonts installed for a script, "
+                 "here Chinese), ") + "or write the text without them")
+        at = spans.get("text", node.span)
+        if nothing_drawn(g.data["text"], lost):
+            raise EvalError("E0134", f"the text draws nothing: the font "
+                            f"`{g.data['font'].label}` has no glyph for any of its characters "
+                            f"({shown})", at, hint=hint)
         interp.sink.warning("W0105", f"the font `{g.data['font'].label}` has no glyph for "
                             f"{shown}: {'they are' if len(lost) > 1 else 'it is'} left out",
-                            spans.get("text", node.span),
-                            hint="choose a font that has them (`font=\"sans\"` covers Latin, "
-                                 "Greek and Cyrillic), or write the text without them")
+                            at, hint=hint)
+
+
+def stroke_font_missing(interp, g, lost, at) -> None:
+    """W0105 for the characters of a Text the single-stroke font has no glyph for (left out);
+    E0134 when that is every one of them: the text draws nothing (run ec's 福, cut as
+    nothing with only a warning)."""
+    from ..geometry.shapes import font as F
+    shown = ", ".join(f"`{c}` (U+{ord(c):04X})" for c in lost[:8])
+    hint = "the single-stroke font draws printable ASCII and ° ± × µ Ø ø ⌀ only; write the " \
+           "text in ASCII (e.g. `e` for `é`)"
+    if nothing_drawn(g.data["text"], lost):
+        other = F.covering("".join(lost))
+        raise EvalError("E0134", f"the text draws nothing: the single-stroke font has no "
+                        f"glyph for any of its characters ({shown})", at,
+                        hint=hint + (f", or give a font that has them: `font=\"{other}\"` "
+                                     "(installed here)" if other else ", or give `font=` a "
+                                     "font that has them (`fc-list :lang=zh family` lists the "
+                                     "fonts installed for a script, here Chinese)"))
+    interp.sink.warning("W0105", f"the engraving font has no glyph for {shown}: "
+                        f"{'they are' if len(lost) > 1 else 'it is'} left out of the drawing",
+                        at, hint=hint)
+
+
+def nothing_drawn(text: str, lost) -> bool:
+    """True when every character of ``text`` but white space is one of ``lost`` (and there
+    is one): the Text draws nothing (E0134)."""
+    gone = set(lost)
+    shown = [c for c in text if not c.isspace()]
+    return bool(shown) and all(c in gone for c in shown)
 
 
 def check_fill(conv: dict, s, node, spans, kind: str = "Text") -> None:

@@ -685,8 +685,24 @@ children, the nearest one wins): the extrusion of the 3D outputs (STL, 3MF, STEP
 `machine`). No other effect on 2D outputs. `aidl render --thickness` overrides it. A
 positive length known before solving. A statement, with no `=`: `thickness = 4 mm` is an
 ordinary constant (warning W0108, whose fix writes the statement); `param t = 4 mm` then
-`thickness t` gives it a slider.
+`thickness t` gives it a slider. `thickness` is no name an expression can read (E0101 says so):
+to use the material's thickness in a slot or a `Place`, name it once, `t = 6 mm` then
+`thickness t`, and write `t`.
 """, ["material thickness", "extrude", "extrusion", "depth"]),
+    "fonts": ("statement", "`Text(..., font=\"sans\")`: letters as filled outlines; which "
+              "characters each font draws.", """
+Without `font=`, a Text is engraved in a single-stroke font that draws printable ASCII and
+`° ± × µ Ø ø ⌀`. With `font=`, its letters are the font's filled outlines: material in a
+`solid`, openings in a `hole` (`stencil=true` keeps the counters), an engraved area in a
+`drawing` (`fill=true`). `font=` takes `"sans"` or `"serif"` (installed with AIDL: Latin, Greek
+and Cyrillic), a family installed on the machine (`"Droid Sans Fallback"`; fontconfig's
+`fc-list :lang=zh family` lists those for Chinese, `:lang=ja` Japanese, `:lang=ar` Arabic), a
+style after a colon (`"sans:Bold"`, `"serif:Light Italic"`, `"sans:650"`) or a `.ttf`, `.otf`
+or `.ttc` file beside the program. A character the font has no glyph for is left out (W0105,
+whose hint names an installed family that has it); a Text left with none is an error
+(E0134). `size=` is the capital height: a capital is about `size` wide, a small letter about
+0.7 x `size`, a CJK character about 1.4 x `size`; `max_width=` shrinks a text to fit.
+""", ["font", "typeface", "glyph", "glyphs", "letters", "cjk", "script", "unicode"]),
     "machine": ("statement", "`aidl render FILE -o x.gcode --machine m.toml`: G-code (GRBL) "
                 "for a laser, router or plotter.", """
 `aidl render FILE -o part.gcode` (or .nc) writes GRBL G-code in mm: engraving first, then

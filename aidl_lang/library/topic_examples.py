@@ -275,6 +275,10 @@ EXAMPLES: dict[str, str] = {
                    "hole bore { c = Circle(center=(0, 0), radius=5) }", "plate"),
     "outputs": "# aidl render plate.aidl -o plate.pdf --page A4\n\n"
                + _solid("r = Rectangle(center=(0, 0), width=60, height=40)", "plate"),
+    "fonts": _solid("body = Rectangle(center=(0, 0), width=90, height=30)\ndrawing word {    "
+                    "# engraved: the letters' area\n    t = Text(\"Ωmega\", position=(0, 0), "
+                    "size=14, font=\"sans:Bold\", valign=\"middle\", fill=true)\n}\n"
+                    "AlignCenterX(word, body)", "sign"),
     "kerf": "kerf 0.15 mm\n\n" + _solid("r = Rectangle(center=(0, 0), width=60, height=40)",
                                         "plate"),
     "min_wall": "min_wall 0.3 mm    # the tip below is meant sharp\n\n" + _solid(

@@ -211,6 +211,24 @@ def _fontconfig(family: str, style: str) -> tuple[str, int] | None:
         return None
 
 
+def covering(chars: str) -> str | None:
+    """The first (by name) installed family that fontconfig says has every character of
+    ``chars`` (a hint for a text a font cannot draw: run ec's 福 needed `fc-list :lang=zh`
+    outside AIDL); None without fontconfig or when none has them all."""
+    exe = shutil.which("fc-list")
+    wanted = sorted({c for c in chars if not c.isspace()})
+    if exe is None or not wanted or len(wanted) > 64:
+        return None
+    pattern = ":charset=" + " ".join(f"{ord(c):x}" for c in wanted)
+    try:
+        out = subprocess.run([exe, pattern, "family"], capture_output=True, text=True,
+                             timeout=10).stdout
+    except (OSError, subprocess.SubprocessError):
+        return None
+    fams = sorted({line.split(",")[0].strip() for line in out.splitlines() if line.strip()})
+    return fams[0] if fams else None
+
+
 # ------------------------------------------------------------------ reading the font
 @lru_cache(maxsize=8)
 def _ttfont(key: tuple, index: int, data: bytes | None = None):

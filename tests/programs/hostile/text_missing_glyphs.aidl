@@ -1,5 +1,5 @@
 # expect: W0105 4:26
 solid s {
     c = Circle((0, 0), 20)
-    drawing d { t = Text("é漢字", (0, 0)) }
+    drawing d { t = Text("Aé漢字", (0, 0)) }
 }
