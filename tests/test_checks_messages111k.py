@@ -75,3 +75,39 @@ def test_docs_fonts_says_which_font_draws_which_script():
         assert word in text
     text, found = lookup_text("thickness")
     assert found and "name it once, `t = 6 mm` then\n`thickness t`, and write `t`" in text
+
+
+def test_run_ec_scalloped_edge_of_touching_discs_is_no_slit():
+    """Run ec's treat-bag header: 11 circles a diameter apart along each edge, their centres
+    on the card's edges; where two touch the outline has a cusp, the V of a scalloped edge.
+    W0519 said five times (20 cusps) "a ragged notch or not at all" and asked to square the
+    corner; the model had to write `min_wall 0.1 mm`.  Now silent; a disc 0.2 mm off its
+    neighbour still leaves a slit (named with its copy's index, not `header.hi` twice)."""
+    path = RUNS / "issue111ec" / "run" / "05_treat_bag_header.first_valid.aidl"
+    r = aidl_lang.compile(path=str(path))
+    assert r.ok and [d for d in r.diagnostics if d.code == "W0519"] == []
+    src = ("solid header {\n    body = Rectangle(center=(0, 0), width=100, height=40)\n"
+           "    for i in range(10) {\n        hi = Circle(center=(-45 + i * 10 + (0.2 if i == 5 "
+           "else 0), 20), diameter=10)\n    }\n}\n")
+    (w,) = [d for d in aidl_lang.compile(source=src).diagnostics if d.code == "W0519"]
+    assert "0.20 mm wide" in w.message and "`header.hi[4]`" in w.message
+    assert "near (0.1, 20.0)" in w.message
+
+
+def test_run_ed_set_square_legs_to_the_sharp_corners_are_a_note():
+    """Run ed's 45-degree set square: `assert body.bb.width == 200 mm` on legs whose tips
+    have R2 fillets (2.828 mm in each): the size to the sharp corners, as a drawing gives it,
+    was a warning "before its Fillet and holes" (its hanging hole cuts no side) whose fixes
+    both changed the requested tips.  Now a note naming the Fillet alone; a needle point
+    rounded far back (over three times the radius) stays a warning."""
+    path = RUNS / "issue111ed" / "run" / "02_set_square.first_valid.aidl"
+    r = aidl_lang.compile(path=str(path))
+    (w,) = [d for d in r.diagnostics if d.code == "W0405"]
+    assert w.severity == "note" and "before its Fillet:" in w.message
+    assert "its right 2.828 mm in, its top 2.828 mm in" in w.message
+    assert w.hint.startswith("if the size to the sharp corners is meant, nothing is needed")
+    # a 9.8-degree point under r 2 (21 mm back, 10.7 r): a warning, as for the tent stake
+    src = ("solid stake {\n    body = Polygon([(0, 0), (12, 0), (6, 70)])\n    Fillet(2)\n"
+           "    assert body.bb.height == 70 mm\n}\n")
+    (w,) = [d for d in aidl_lang.compile(source=src).diagnostics if d.code == "W0405"]
+    assert w.severity == "warning"

@@ -592,8 +592,10 @@ its mate fills: a cross-halving slot at a rocket's nose). The assert's fix is no
 difference added (the assert is judged as drawn, so it would fail there): draw the corner round
 (a `Hull` with a `Circle` at the tip) or round only the corners away from that side. A side a
 rounding moves by less than 0.05 mm (a corner a little off square) is not said; an assert
-that holds to the sharp corners, each side in by no more than the rounding's size (the way a
-drawing gives a rounded outline's size), is a note. Relations between separate parts of an
+that holds to the sharp corners, each side in by no more than three times the rounding's size
+(the way a drawing gives a rounded outline's size: any corner of 29 degrees or more, a 45-degree
+set square's R2 tips 2.8 mm in), is a note; a needle point rounded far back is not. Holes
+are named only where they cut the side read (a hanging hole inside the part is not). Relations between separate parts of an
 assembly that places them with `Place` lay them out on the sheet and are not warned. Also a relation
 on the box of a shape made from others whose box is its drawn outline's (an `Inset`, a
 miter-joined `Offset` or `Shell`, an `Intersect`: exact at the solution) that the solution

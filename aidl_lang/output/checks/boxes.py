@@ -42,6 +42,7 @@ def final_box(d: Drawing, s: Structure, shape=None) -> tuple[float, float, float
 # square, rounded: run t's shelf, 0.023 mm); farther, the member is the final outline (issue
 # 109's law), said even where a request meant the sharp corner (run av's fin, 2.771 mm)
 ROUNDED_TOL = 0.05
+SHARP_REACH = 3.0     # x the rounding: a side in by no more is held to the sharp corners (W0405 a note)
 
 
 def reshaped(s: Structure) -> list[str]:
@@ -172,18 +173,21 @@ def check_final_box_asserts(sink: DiagnosticSink, model: Model, d: Drawing,
                           f"{'in' if (v > 0) == (sd in ('left', 'bottom')) else 'out'}"
                           for sd, v in moved[read[0]].items()
                           if abs(v) > BOX_TOL and sd in asked) or "its box moved"
-        kinds = reshaped(s) + (["holes"] if _holed(s) and read[0] in named else [])
+        kinds = reshaped(s) + (["holes"] if _holed(s) and read[0] in named
+                               and _holes_cut(d, s, asked, x) else [])
         ops = " and ".join(kinds)
         what = f"`{named[read[0]]}`, the outline of `{s.path}`," if read[0] in named \
             else f"`{s.path}`"
         rounded = [k for k in kinds if k in ("Fillet", "Chamfer")]
         size = max((f[1] for f in getattr(s, "finish", None) or []), default=0.0)
-        # a size held to the sharp corners, each side in by no more than the rounding's own
-        # size (a corner of 60 degrees or more), is how drawings give a rounded outline's
-        # size (run br: a trapezoid's 400 mm foot, 0.475 mm in at each end under r 4): a note.
-        # A sharp point rounded back far (issue 111's tent stake: 21.4 mm under r 2) is not.
+        # a size held to the sharp corners, each side in by no more than three times the
+        # rounding's size (a corner of 29 degrees or more: r (1 / sin(a / 2) - 1) <= 3 r),
+        # is how drawings give a rounded outline's size (run br: a trapezoid's 400 mm foot,
+        # 0.475 mm in at each end under r 4; run ed: a 45-degree set square's legs, 2.8 mm
+        # in under R2 tips): a note.  A needle point rounded back far (issue 111's tent
+        # stake's 9.8 degrees: 21.4 mm under r 2, 10.7 r) is not.
         sharps = before and kinds == rounded and all(
-            (v > 0) == (sd in ("left", "bottom")) and abs(v) <= size + BOX_TOL
+            (v > 0) == (sd in ("left", "bottom")) and abs(v) <= SHARP_REACH * size + BOX_TOL
             for sd, v in moved[read[0]].items() if abs(v) > BOX_TOL and sd in asked)
         sink.add(Diagnostic(
             "W0405", f"`assert {a.text}` reads the box of {what} before its {ops}: it "
@@ -214,6 +218,22 @@ def _holed(s: Structure) -> bool:
     # a joint template's cut is filled by its mate (a cross-halving slot at a rocket's nose,
     # a dovetail's sockets): the outline as drawn is the design there, not warned
     return s.kind == "solid" and bool(holes) and not any(c.template for c in holes)
+
+
+def _holes_cut(d: Drawing, s: Structure, asked: set, x) -> bool:
+    """Solid ``s``'s own holes move a side of ``asked`` of its outline: its outline before
+    any rounding, holes cut (:attr:`Drawing.unfinished`), against its material's box.  A
+    hanging hole well inside a set square is not why its legs' box moved (run ed: "before its
+    Fillet and holes" for R2 tips alone, a warning where the rounding alone is a note)."""
+    unf = d.unfinished.get(s)
+    if unf is None:
+        return True             # nothing rounded: the holes are what moved it
+    before = final_box(d, s, unf)
+    mat = numeric_box(s, None, x, exclude={c for c in s.children.values()
+                                           if c.kind in ("hole", "cut")})
+    if before is None or mat is None:
+        return True
+    return any(abs(before[i] - mat[i]) > BOX_TOL for i, sd in enumerate(SIDES) if sd in asked)
 
 
 def check_drawn_boxes(sink: DiagnosticSink, model: Model, calls=None) -> None:

@@ -17,6 +17,7 @@ from ...part.build.booleans import Drawing
 from ...part.measure.nearby import _median, box_pairs
 from ...part.measure.nearby import components as _components
 from ..common import _cut_openings, _solids_within, below
+from ..marks.engravings import _copy_label
 from .nicks import slit_fix
 from .walls import _facing, _ring
 FACING = 0.866     # cos 30 deg: two stretches of the outline face each other across a slit
@@ -220,6 +221,7 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     faces = _faces_at(d, s, np.concatenate([V[v[mouth]], foot[mouth]]), tick) \
         if len(groups) else []
     corners: dict = {}                  # the part's nick corners, found once (slit_fix)
+    discs: dict = {}                    # the part's Circles' (cx, cy, r), found once
     said: list = []                     # the slits found, said by _say_few
     for i, (k, length) in enumerate(groups):
         tick()
@@ -229,7 +231,9 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
         fp, fq = faces[i], faces[len(groups) + i]
         if fp is None or fq is None or fp is fq:
             continue            # a notch drawn in one shape (a heart's cusp) is meant
-        names = [f"`{f.label}`" for f in (fp, fq) if f is not None]
+        if _touching_discs(d, s, fp, fq, discs):
+            continue            # the V between two discs that touch: a scalloped edge
+        names = [f"`{_copy_label(f)}`" for f in (fp, fq) if f is not None]   # a loop's: [k]
         names = list(dict.fromkeys(names))
         later = max((f for f in (fp, fq) if f is not None and f.span is not None),
                     key=lambda f: (f.span.line, f.span.col), default=None)
@@ -247,6 +251,33 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
                      later.span if later is not None else s.span,
                      {"labels": labels, "hint": f"{fix}; the minimum is set with --min-wall"}))
     _say_few(sink, "W0519", s.path, said)
+
+
+TANGENT = 1e-6        # mm: two circles whose centres are this near r1 + r2 apart touch
+
+
+def _touching_discs(d: Drawing, s: Structure, fp, fq, discs: dict) -> bool:
+    """True when ``fp`` and ``fq`` are Circles of part ``s`` that touch from outside (their
+    centres ``r1 + r2`` apart within :data:`TANGENT`): the only slit between them is the V
+    where the two discs meet, a scalloped edge or a row of beads drawn so on purpose, cut as a notch
+    whose floor the kerf rounds (run ec's treat-bag header: 11 tangent circles along each
+    edge, 20 cusps warned "a ragged notch or not at all", and a hint to square the corner).
+    ``discs`` keeps each Circle's ``(cx, cy, r)`` from its face
+    (:func:`.holes.contact.circle_of`) for the part's other slits."""
+    from ..holes.contact import circle_of
+    if fp.kind != "Circle" or fq.kind != "Circle":
+        return False
+    if not discs:
+        for _, fs in _solids_within(d, s):
+            for g, f in fs:
+                if g.kind == "Circle" and f is not None and not f.is_empty():
+                    P = f.to_polygons()
+                    discs[id(g)] = circle_of(np.asarray(P[0], dtype=float)) if len(P) == 1 \
+                        else None
+    a, b = discs.get(id(fp)), discs.get(id(fq))
+    if a is None or b is None:
+        return False
+    return abs(math.hypot(a[0] - b[0], a[1] - b[1]) - (a[2] + b[2])) <= TANGENT
 
 
 def _faces_at(d: Drawing, s: Structure, points, tick=lambda: None) -> list:
