@@ -4,15 +4,15 @@
 # hexagon nuts, style 1 (width across flats s, thickness m max).
 
 # The table, one entry per size (index with `metric_index`'s rule).
-metric_sizes = [2, 2.5, 3, 4, 5, 6, 8, 10, 12, 16, 20]
-clearance_fine = [2.2 mm, 2.7 mm, 3.2 mm, 4.3 mm, 5.3 mm, 6.4 mm, 8.4 mm, 10.5 mm, 13 mm,
+metric_sizes = [2, 2.5, 3, 3.5, 4, 5, 6, 8, 10, 12, 16, 20]
+clearance_fine = [2.2 mm, 2.7 mm, 3.2 mm, 3.7 mm, 4.3 mm, 5.3 mm, 6.4 mm, 8.4 mm, 10.5 mm, 13 mm,
                   17 mm, 21 mm]
-clearance_medium = [2.4 mm, 2.9 mm, 3.4 mm, 4.5 mm, 5.5 mm, 6.6 mm, 9 mm, 11 mm, 13.5 mm,
+clearance_medium = [2.4 mm, 2.9 mm, 3.4 mm, 3.9 mm, 4.5 mm, 5.5 mm, 6.6 mm, 9 mm, 11 mm, 13.5 mm,
                     17.5 mm, 22 mm]
-clearance_coarse = [2.6 mm, 3.1 mm, 3.6 mm, 4.8 mm, 5.8 mm, 7 mm, 10 mm, 12 mm, 14.5 mm,
+clearance_coarse = [2.6 mm, 3.1 mm, 3.6 mm, 4.2 mm, 4.8 mm, 5.8 mm, 7 mm, 10 mm, 12 mm, 14.5 mm,
                     18.5 mm, 24 mm]
-nut_across_flats = [4 mm, 5 mm, 5.5 mm, 7 mm, 8 mm, 10 mm, 13 mm, 16 mm, 18 mm, 24 mm, 30 mm]
-nut_thickness = [1.6 mm, 2 mm, 2.4 mm, 3.2 mm, 4.7 mm, 5.2 mm, 6.8 mm, 8.4 mm, 10.8 mm,
+nut_across_flats = [4 mm, 5 mm, 5.5 mm, 6 mm, 7 mm, 8 mm, 10 mm, 13 mm, 16 mm, 18 mm, 24 mm, 30 mm]
+nut_thickness = [1.6 mm, 2 mm, 2.4 mm, 2.8 mm, 3.2 mm, 4.7 mm, 5.2 mm, 6.8 mm, 8.4 mm, 10.8 mm,
                  14.8 mm, 18 mm]
 
 # A through hole for a metric screw (ISO 273). `size` 3 is M3; `fit`
@@ -21,7 +21,7 @@ nut_thickness = [1.6 mm, 2 mm, 2.4 mm, 3.2 mm, 4.7 mm, 5.2 mm, 6.8 mm, 8.4 mm, 1
 # Anchor: (cx, cy) is the centre of `c`.
 def clearance_hole(size=3, fit="medium", cx=0 mm, cy=0 mm) -> hole {
     found = [i for i in range(len(metric_sizes)) if metric_sizes[i] == size]
-    assert len(found) == 1, "metric sizes are 2, 2.5, 3, 4, 5, 6, 8, 10, 12, 16 and 20 (M2 to M20)"
+    assert len(found) == 1, "`size` is not a metric size: 2, 2.5, 3, 3.5, 4, 5, 6, 8, 10, 12, 16 or 20 (M2 to M20)"
     fine = fit == "fine" or fit == "close"
     medium = fit == "medium" or fit == "normal"
     coarse = fit == "coarse" or fit == "loose"
@@ -38,7 +38,7 @@ def clearance_hole(size=3, fit="medium", cx=0 mm, cy=0 mm) -> hole {
 # Anchor: (cx, cy) is the centre of `hex`; rotation 0: flats at top and bottom.
 def nut_trap(size=3, clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
     found = [i for i in range(len(metric_sizes)) if metric_sizes[i] == size]
-    assert len(found) == 1, "metric sizes are 2, 2.5, 3, 4, 5, 6, 8, 10, 12, 16 and 20 (M2 to M20)"
+    assert len(found) == 1, "`size` is not a metric size: 2, 2.5, 3, 3.5, 4, 5, 6, 8, 10, 12, 16 or 20 (M2 to M20)"
     hex = RegularPolygon(center=(cx, cy), across_flats=nut_across_flats[found[0] if len(found) == 1 else 2] + clearance,
                          sides=6, rotation=rotation)
     Fixed(hex.center)
@@ -55,7 +55,7 @@ def nut_trap(size=3, clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
 def t_slot(size=3, length=12 mm, nut_depth=6 mm, clearance=0.1 mm, rotation=0 deg,
            cx=0 mm, cy=0 mm) -> hole {
     found = [i for i in range(len(metric_sizes)) if metric_sizes[i] == size]
-    assert len(found) == 1, "metric sizes are 2, 2.5, 3, 4, 5, 6, 8, 10, 12, 16 and 20 (M2 to M20)"
+    assert len(found) == 1, "`size` is not a metric size: 2, 2.5, 3, 3.5, 4, 5, 6, 8, 10, 12, 16 or 20 (M2 to M20)"
     i = found[0] if len(found) == 1 else 2  # (after the error above: go on as M3)
     assert nut_depth + nut_thickness[i] / 2 < length, "the nut pocket must end before the slot does"
     slot = Rectangle(center=(cx + sin(rotation) * length / 2, cy - cos(rotation) * length / 2),

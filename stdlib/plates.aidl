@@ -35,7 +35,7 @@ def chamfered_plate(width=80 mm, height=50 mm, chamfer=5 mm, cx=0 mm, cy=0 mm) -
 # Anchor: (cx, cy) is the centre of `body`.
 def mounting_plate(width=80 mm, height=50 mm, corner_radius=4 mm, screw=3, fit="medium",
                    inset=6 mm, cx=0 mm, cy=0 mm) -> solid {
-    assert len([s for s in metric_sizes if s == screw]) == 1, "metric sizes are 2, 2.5, 3, 4, 5, 6, 8, 10, 12, 16 and 20 (M2 to M20)"
+    assert len([s for s in metric_sizes if s == screw]) == 1, "`screw` is not a metric size: 2, 2.5, 3, 3.5, 4, 5, 6, 8, 10, 12, 16 or 20 (M2 to M20)"
     # each hole (a clearance hole at most 1.3 x screw across, at the coarse fit) keeps a wall
     # of more than 0.5 mm to the straight edges, the rounded corner and the next hole
     # the plate leaves the holes an inset between the two bounds below (the inset's range)

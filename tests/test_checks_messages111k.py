@@ -111,3 +111,33 @@ def test_run_ed_set_square_legs_to_the_sharp_corners_are_a_note():
            "    assert body.bb.height == 70 mm\n}\n")
     (w,) = [d for d in aidl_lang.compile(source=src).diagnostics if d.code == "W0405"]
     assert w.severity == "warning"
+
+
+def test_run_ef_keyword_as_a_name_is_said_so():
+    """Run ef's now-serving sign: `or = Circle(...)` (the outer ring) was "unexpected `or`" with
+    a hint about a line break, and `for = 3` "use `==` for an equation constraint"."""
+    from aidl_lang.parsing.errors import KEYWORDS
+    for kw in ("or", "for", "in", "and"):
+        r = aidl_lang.compile(source=f"solid p {{\n    {kw} = Circle(center=(0, 0), radius=5)\n}}\n")
+        (e,) = _errors(r)
+        assert e.code == "E0001" and e.message == f"`{kw}` is a keyword: it cannot name a value"
+        assert (e.span.line, e.span.col, e.span.end_col) == (2, 5, 5 + len(kw))
+        assert f"`{kw}_`" in e.hint
+    # the grammar's own words, all of them
+    import re
+    grammar = (ROOT / "grammar" / "aidl.lark").read_text()
+    assert KEYWORDS == set(re.findall(r'"([a-z_]+)"', grammar))
+    # a name that only starts like one is a name
+    assert aidl_lang.compile(source="solid p {\n    order = Circle(center=(0, 0), radius=5)\n}\n").ok
+
+
+def test_run_ee_m3_5_is_a_metric_size():
+    """Run ee's switch guard: UK switch plates take M3.5 screws; `clearance_hole(size=3.5)`
+    failed with the template's `len(found) == 1`.  ISO 273 and ISO 4032 have M3.5."""
+    src = ('import "std/fasteners.aidl"\nsolid p {\n    body = Rectangle(center=(0, 0), width=30, '
+           'height=30)\n    h = clearance_hole(size=3.5)\n    n = nut_trap(size=3.5, cx=10)\n}\n')
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [d.message for d in _errors(r)]
+    assert abs(r.value("p.h.c.radius").mm - 3.9 / 2) < 1e-9
+    (e,) = _errors(aidl_lang.compile(source=src.replace("size=3.5)\n    n", "size=7)\n    n")))
+    assert "`size` is not a metric size: 2, 2.5, 3, 3.5, 4," in e.message

@@ -55,6 +55,11 @@ def _error_pos(e: ParseError, text: str) -> int:
     return len(text) if p is None else p
 
 
+# the words of grammar/aidl.lark no name may be (tests/test_parse_errors.py holds them to it)
+KEYWORDS = frozenset({"and", "as", "assert", "def", "elif", "else", "for", "if", "import", "in",
+                      "not", "or", "param"})
+
+
 def _report(e: ParseError, text: str, path: str, pos: int, sink: DiagnosticSink) -> None:
     line = text.count("\n", 0, pos) + 1
     col = pos - text.rfind("\n", 0, pos)
@@ -96,6 +101,19 @@ def _report(e: ParseError, text: str, path: str, pos: int, sink: DiagnosticSink)
                 (" (templates: `def NAME(PARAMS) -> solid { ... }`)" if kw == "def" else ""))
         sink.error("E0001", f"unexpected `:` after `{kw}`: a block is written in braces",
                    Span(path, line, col, line, col + 1, pos, pos + 1), hint)
+        return
+    named = re.match(r"\s*(\w+)\s*=(?!=)", text[line_start:line_start + 200])
+    if named is not None and named.group(1) in KEYWORDS and pos <= line_start + named.end():
+        # run ef's ticket sign: `or = Circle(...)` ("outer ring") was told "use `==` for an
+        # equation constraint" at the `=`, or of a leading `or`
+        kw = named.group(1)
+        at = line_start + named.start(1)
+        kcol = at - line_start + 1
+        sink.error("E0001", f"`{kw}` is a keyword: it cannot name a value",
+                   Span(path, line, kcol, line, kcol + len(kw), at, at + len(kw)),
+                   f"choose another name: a word that says what it is, or `{kw}_`; the "
+                   "keywords are "
+                   + ", ".join(f"`{k}`" for k in sorted(KEYWORDS)))
         return
     exp = getattr(e, "expected", None) or ()
     if tok.type in ("NAME", "NUMBER", "STRING", "FSTRING", "LPAR", "LSQB") and "COMMA" in exp \
