@@ -141,3 +141,15 @@ def test_run_ee_m3_5_is_a_metric_size():
     assert abs(r.value("p.h.c.radius").mm - 3.9 / 2) < 1e-9
     (e,) = _errors(aidl_lang.compile(source=src.replace("size=3.5)\n    n", "size=7)\n    n")))
     assert "`size` is not a metric size: 2, 2.5, 3, 3.5, 4," in e.message
+
+
+def test_run_eg_points_with_a_side_on_the_border_are_drawn_open():
+    """Run eg's backgammon board: 12 outlined points whose bases lie on the border line (W0513,
+    burnt twice, real); the hint "skip those copies of its loop" would have deleted all 24
+    points.  Every copy lies on it: the hint draws each without that side instead."""
+    path = RUNS / "issue111eg" / "run" / "08_backgammon_board.first_valid.aidl"
+    ws = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0513"]
+    assert ws
+    for w in ws:
+        assert "without the side that lies on `backgammon.board.lines.border`" in w.hint
+        assert "`Polyline`" in w.hint and "copies" not in w.hint

@@ -135,7 +135,7 @@ def test_ticks_drawn_twice_are_one_warning_and_skipping_them_clears_it():
     [w] = _warnings(src, "W0513")
     assert "`ruler.mm.tick[0]` lies on the engraved `ruler.cm.tick[0]` over 4.00 mm (all of it)" \
         in w.message and "10 more pairs" in w.message
-    assert w.span.line == 8 and "leave `ruler.mm.tick` out" in w.hint
+    assert w.span.line == 8 and "leave out the copies of `ruler.mm.tick`'s loop that lie on" in w.hint
     fixed = src.replace("            tick = Line((10 + i * 1 mm, 30), (10 + i * 1 mm, 26))",
                         "            if i % 10 != 0 {\n"
                         "                tick = Line((10 + i * 1 mm, 30), (10 + i * 1 mm, 26))\n"

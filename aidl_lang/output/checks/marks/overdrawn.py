@@ -76,8 +76,7 @@ def check_marks_over_marks(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
                 f"`{_copy_label(a)}` over {L:.2f} mm{whole}: the laser burns that stretch "
                 f"twice (a deeper, wider line){more}", b.span,
                 labels=[Label(a.span, f"`{a.label}` is here", primary=False)],
-                hint=f"draw each stroke once: leave `{b.label}` out where `{a.label}` already "
-                     f"runs (skip those copies of its loop), or move one of them clear")
+                hint=_twice_hint(a, b, share, rows))
             continue
         p_g, q_g = rows[0][1], rows[0][2]
         count = len(rows)
@@ -256,3 +255,26 @@ def _clearing_move(A_marks, B_marks, items_of, rows):
     if not clear(m):
         m = hi
     return m, float(u[0] * m), float(u[1] * m)
+
+
+CLOSED_KINDS = ("Triangle", "Rectangle", "Polygon", "RegularPolygon", "RoundedRectangle")
+
+
+def _twice_hint(a, b, share: float, rows) -> str:
+    """W0513's hint for ``b`` lying on ``a`` (``share`` of ``b``'s length; ``rows`` the pairs
+    of the two statements): skip the copies of ``b``'s loop that lie on ``a`` only where
+    some copies do not (run eg's backgammon board: all 24 points' bases on the border, and
+    "skip those copies" would have deleted every point); a closed shape with a side on the
+    other is drawn without that side."""
+    copies = [h for h in getattr(b.owner, "geometry", ()) if h.name == b.name
+              and h.span == b.span] if b.name and b.span is not None else [b]
+    on = {id(r[2]) for r in rows}
+    ways = []
+    if b.kind in CLOSED_KINDS and share < 0.999:
+        ways.append(f"draw `{b.label}` without the side that lies on `{a.label}` (a "
+                    "`Polyline` through its other corners)")
+    if 1 < len(copies) and len(on) < len(copies):
+        ways.append(f"leave out the copies of `{b.label}`'s loop that lie on `{a.label}`")
+    elif not ways:
+        ways.append(f"leave `{b.label}` out where `{a.label}` already runs")
+    return "draw each stroke once: " + ", or ".join(ways) + ", or move one of them clear"
