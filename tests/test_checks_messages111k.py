@@ -153,3 +153,31 @@ def test_run_eg_points_with_a_side_on_the_border_are_drawn_open():
     for w in ws:
         assert "without the side that lies on `backgammon.board.lines.border`" in w.hint
         assert "`Polyline`" in w.hint and "copies" not in w.hint
+
+
+def _line_px(png: bytes, column: float) -> int:
+    """The number of non-white pixels down the picture's column at ``column`` (0..1) of its
+    width, in the first run from the top (the part's top edge)."""
+    import io
+    from PIL import Image
+    im = Image.open(io.BytesIO(png)).convert("L")
+    x = int(im.width * column)
+    col = [im.getpixel((x, y)) for y in range(im.height)]
+    top = next(y for y, v in enumerate(col) if v < 200)
+    return next(y for y in range(top, im.height) if col[y] >= 200) - top
+
+
+def test_runs_eg_eh_a_large_preview_keeps_its_lines_thin():
+    """Runs eg and eh judged gaps on 5,000 px previews of 600-750 mm parts, whose lines were
+    drawn the page's side / 500 wide (1.5 mm: 10 px): a 1 mm gap between a ring and a hole
+    looked shut.  A larger picture keeps the default's 4 px lines; the default is unchanged."""
+    import pytest
+    pytest.importorskip("cairosvg")
+    from aidl_lang.output.writers.png import to_png
+    r = aidl_lang.compile(source="solid board {\n    body = Rectangle(center=(0, 0), width=750, "
+                                 "height=100)\n}\n")
+    out = r.output
+    big = _line_px(to_png(out, width=5000), 0.5)
+    assert 3 <= big <= 6, big                    # was 10 (1.58 mm at 6.3 px/mm)
+    default = _line_px(to_png(out), 0.5)         # 2,000 px: the page / 500 = 4 px, as before
+    assert 3 <= default <= 6, default

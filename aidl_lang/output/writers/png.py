@@ -24,6 +24,7 @@ MAX_SIDE = 32_767            # cairo's largest image side (pixels)
 MAX_AREA = 100_000_000       # 400 MB of RGBA at most
 DEFAULT_DPI = 96.0           # with no dpi and no width: a screen's 96 dpi ...
 DEFAULT_SIDE = 2000          # ... the longer side at most this many pixels
+STROKE_PX = DEFAULT_SIDE / 500.0   # the preview's widest line in pixels (the default's)
 
 
 def pixels_per_mm(w_mm: float, h_mm: float, dpi: float | None = None,
@@ -72,6 +73,12 @@ def to_png(output: Output, dpi: float | None = None, width: int | None = None, s
             # nearly white.  A raster draws it one pixel wide (the SVG and DXF keep 0.01 mm).
             svg = to_svg(output, show=show, style=style, margin=margin,
                          hairline=1.0 / px).encode()
+        elif max(w_mm, h_mm) / 500.0 * px > STROKE_PX:
+            # the preview's lines (the page's side / 500: 4 px at the default 2,000 px) stay
+            # 4 px wide in a larger picture, not 10 px at 5,000 (runs eg, eh: zoomed to judge
+            # a gap, a 750 mm board's 1.5 mm lines drew a 1 mm gap shut, and 3 mm as 1.5)
+            svg = to_svg(output, show=show, style=style, margin=margin,
+                         stroke=STROKE_PX / px).encode()
     kw = {"output_width": int(width)} if width else {"dpi": float(dpi or DEFAULT_DPI)}
     return cairosvg.svg2png(bytestring=svg, background_color="white", **kw)
 

@@ -124,7 +124,8 @@ def segments_d(segments, closed: bool) -> str:
 
 
 def to_svg(output, title: str = "", show=(), style: str = "preview",
-           margin: float | None = None, hairline: float = HAIRLINE) -> str:
+           margin: float | None = None, hairline: float = HAIRLINE,
+           stroke: float | None = None) -> str:
     """The SVG text of ``output`` (an :class:`Output`, or a booleans ``Drawing``, which is
     converted with :func:`~.part.build`).  ``show``: debug layers from :data:`SHOW`.
 
@@ -133,7 +134,9 @@ def to_svg(output, title: str = "", show=(), style: str = "preview",
     makes the page exactly the bounding box.  Raises :class:`ValueError` for an unknown layer
     and :class:`~.part.OutputError` for a negative or non-finite margin.  ``hairline``: the
     laser style's stroke width in mm (:data:`HAIRLINE`; a raster output passes one pixel's
-    width, so the cuts show)."""
+    width, so the cuts show).  ``stroke``: the preview's line width in mm (None: the page's
+    longer side / 500; a large raster passes a few pixels' width, so a 1 mm gap between two
+    lines is not drawn shut)."""
     import svgwrite
     if not isinstance(output, Output):
         output = build(output, title)
@@ -158,7 +161,7 @@ def to_svg(output, title: str = "", show=(), style: str = "preview",
         margin = max(0.05 * max(w, h), 1.0)
     vx, vy = x0 - margin, -(y1 + margin)
     vw, vh = w + 2 * margin, h + 2 * margin
-    sw = max(vw, vh) / 500.0
+    sw = max(vw, vh) / 500.0 if stroke is None else stroke
     d = svgwrite.Drawing(size=(f"{_f(vw)}mm", f"{_f(vh)}mm"), profile="full",
                          debug=False)   # no per-attribute validation: 2-3x faster, same text
     d.viewbox(_f(vx), _f(vy), _f(vw), _f(vh))
