@@ -181,3 +181,31 @@ def test_runs_eg_eh_a_large_preview_keeps_its_lines_thin():
     assert 3 <= big <= 6, big                    # was 10 (1.58 mm at 6.3 px/mm)
     default = _line_px(to_png(out), 0.5)         # 2,000 px: the page / 500 = 4 px, as before
     assert 3 <= default <= 6, default
+
+
+def test_run_ee_a_bent_parts_engraving_goes_round_with_it():
+    """Run ee's card wallet: the `--assembled` picture of a part with `Bend` left out its
+    engraving and its living-hinge cuts, and nothing said so.  Its marks are now bent with
+    it: every point lies on the bent solid's top face (within the chord tolerance), the
+    hinge's cuts round the bend."""
+    import numpy as np
+    import pytest
+    pytest.importorskip("manifold3d")
+    from aidl_lang.output.fabrication.assembly import bends_of, solids
+    from aidl_lang.output.writers.png import _assembled_marks
+    path = RUNS / "issue111ee" / "run" / "08_card_wallet.first_valid.aidl"
+    r = aidl_lang.compile(path=str(path))
+    out = r.output
+    bent = [name for name, b in bends_of(out).items() if b]
+    assert bent
+    marks = _assembled_marks(out, None, np.array([0.0, 0.0, 1.0]), 100.0)
+    assert len(marks) > 100
+    # each mark point lies on a bent part's surface: within 0.05 mm of its solid's mesh
+    (name, body), = [(n, m) for n, m in solids(out) if n in bent]
+    mesh = body.to_mesh()
+    V = np.asarray(mesh.vert_properties, dtype=float)[:, :3]
+    lo, hi = V.min(axis=0) - 0.05, V.max(axis=0) + 0.05
+    P = marks.reshape(-1, 3)
+    assert np.all((P >= lo) & (P <= hi))
+    # and they are not all on the flat: the hinge's cuts rise round the bend
+    assert np.ptp(P[:, 2]) > 2.0

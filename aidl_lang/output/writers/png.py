@@ -283,9 +283,13 @@ def _assembled_marks(output: Output, thickness, fwd, size: float) -> np.ndarray:
     assembled parts: its segments (n x 2 x 3, mm), each on its part's top face (the face the
     laser works, z = the thickness) moved by the part's placement; only where that face looks
     towards the viewer (runs av, aw, bd, bf could not see which face a label landed on; the
-    faces in front of a mark hide it, :func:`_uncovered`).  A bent part's marks are left
-    out."""
+    faces in front of a mark hide it, :func:`_uncovered`).  A bent part's marks are bent
+    with it (:func:`~..part.build.placement.bend_points`, their lines cut to pieces of at
+    most ``size / 400`` first; run ee's card wallet lost its engraving and living-hinge cuts
+    from the picture, and nothing said so); which of them face the viewer is then left to
+    the faces in front (:func:`_uncovered`)."""
     from ..fabrication.assembly import bends_of, placements
+    from ..part.build.placement import bend_points
     from ...geometry.shapes.curves import sample_xy
     from ..part.build.sunk import DEFAULT_THICKNESS
     where, bends = placements(output), bends_of(output)
@@ -293,11 +297,12 @@ def _assembled_marks(output: Output, thickness, fwd, size: float) -> np.ndarray:
              for p in output.parts if p.kind == "solid"}
     segs: list = []
     for st in output.engrave:
-        if st.part not in thick or bends.get(st.part) or not st.segments:
+        if st.part not in thick or not st.segments:
             continue
         M = where.get(st.part)
         R = np.eye(3) if M is None else np.asarray(M, dtype=float)[:3, :3]
-        if (R @ np.array([0.0, 0.0, 1.0])) @ fwd <= 1e-9:
+        bend = bends.get(st.part)
+        if not bend and (R @ np.array([0.0, 0.0, 1.0])) @ fwd <= 1e-9:
             continue                    # the engraved face looks away: hidden by its part
         xs: list = []
         ys: list = []
@@ -310,6 +315,13 @@ def _assembled_marks(output: Output, thickness, fwd, size: float) -> np.ndarray:
             xs.append(end[0])
             ys.append(end[1])
         P = np.column_stack([xs, ys, np.full(len(xs), thick[st.part])])
+        if bend:                        # round the bend with its part, in short pieces
+            step = size / 400
+            n = np.maximum(1, np.ceil(np.hypot(*(P[1:, :2] - P[:-1, :2]).T) / step)).astype(int)
+            k = np.repeat(np.arange(len(P) - 1), n)
+            f = (np.arange(len(k)) - np.repeat(np.cumsum(n) - n, n)) / np.repeat(n, n)
+            P = np.vstack([P[k] + (P[k + 1] - P[k]) * f[:, None], P[-1:]])
+            P = bend_points(P, bend, thick[st.part])
         if M is not None:
             P = P @ R.T + np.asarray(M, dtype=float)[:3, 3]
         segs.append(np.stack([P[:-1], P[1:]], axis=1))
