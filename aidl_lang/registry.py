@@ -327,7 +327,7 @@ _DEFS = {
                [A("shape1", "geometry"), A("shape2", "geometry")]
                + [A(f"shape{i}", "geometry", None) for i in range(3, 7)],
                doc="The convex hull of shapes (a list, or up to six; a Point: a sharp "
-                   "corner), not drawn.",
+                   "corner; a Line or an Arc: its points), not drawn.",
                members=HULL_MEMBERS),
     "Intersect": _p([A("shapes", "any")],
                     [A("shape1", "any"), A("shape2", "any")]

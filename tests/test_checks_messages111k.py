@@ -209,3 +209,26 @@ def test_run_ee_a_bent_parts_engraving_goes_round_with_it():
     assert np.all((P >= lo) & (P <= hi))
     # and they are not all on the flat: the hinge's cuts rise round the bend
     assert np.ptp(P[:, 2]) > 2.0
+
+
+def test_run_ed_hull_takes_an_arc_and_a_line_as_their_points():
+    """Run ed's coat hook: `Hull([arc, p1, p2])` was E0108 "Hull takes closed shapes ...
+    not a Arc", though `aidl docs Hull` gave its argument as "a shape, or a point or line
+    member".  The hull of an arc is its circle between its ends and the chord; exact."""
+    from aidl_lang.output.part.part import Arc, Line
+    src = ("solid hook {\n    a = Arc(center=(0, 0), radius=20, start_angle=0 deg, "
+           "end_angle=180 deg)\n    tip1 = Point(-20, -30)\n    tip2 = Point(20, -30)\n"
+           "    body = Hull([a, tip1, tip2])\n}\n")
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [d.message for d in _errors(r)]
+    (part,) = r.output.parts
+    (loop,) = part.loops
+    arcs = [s for s in loop.segments if isinstance(s, Arc)]
+    lines = [s for s in loop.segments if isinstance(s, Line)]
+    assert sum(a.sweep for a in arcs) == __import__("pytest").approx(3.141592653589793, abs=1e-9)
+    assert all(abs(a.radius - 20) < 1e-9 for a in arcs) and len(lines) == 3
+    assert abs(loop.area - (3.141592653589793 * 400 / 2 + 40 * 30)) < 1e-6
+    # a Line is its two end points; a Text still is not a shape to hull
+    r = aidl_lang.compile(source=src.replace("Arc(center=(0, 0), radius=20, start_angle=0 deg, "
+                                             "end_angle=180 deg)", "Line((-20, 0), (20, 0))"))
+    assert r.ok and abs(r.output.parts[0].area - 40 * 30) < 1e-6

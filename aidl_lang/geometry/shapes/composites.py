@@ -25,7 +25,8 @@ def _source(v, what: str) -> Geometry:
                              f"refused; hull a Polygon through its points, or arcs, instead")
     if not g.closed or g.kind == "Text":
         raise PrimitiveError(f"{what} takes closed shapes (a Circle, Rectangle, Polygon, "
-                             f"Slot, ...), not a {g.kind}")
+                             f"Slot, ...)" + (", points, Lines and Arcs" if what == "Hull" else "")
+                             + f", not a {g.kind}")
     return g
 
 
@@ -69,6 +70,9 @@ def _build_Shell(ctx, g, a):
     _consume(g, [src])
 
 
+HULL_CURVES = ("Point", "Line", "Arc")     # open geometry a Hull takes as its points
+
+
 def _build_Hull(ctx, g, a):
     if "shapes" in a:
         v = a["shapes"]
@@ -77,8 +81,10 @@ def _build_Hull(ctx, g, a):
         items = [a[f"shape{i}"] for i in range(1, 7) if a.get(f"shape{i}") is not None]
     if not items:
         raise PrimitiveError("Hull needs at least one shape")
-    # a Point among them is a corner of the hull (a heart's sharp tip: Hull([lobe, tip]))
-    _consume(g, [v.geom if isinstance(v, GeomRef) and v.geom.kind == "Point"
+    # a Point among them is a corner of the hull (a heart's sharp tip: Hull([lobe, tip])); a
+    # Line or an Arc is its points (the arc's circle between its ends: run ed's coat hook, an
+    # arc and two points)
+    _consume(g, [v.geom if isinstance(v, GeomRef) and v.geom.kind in HULL_CURVES
                  else _source(v, "Hull") for v in items])
     if all(src.kind == "Point" for src in g.data["sources"]):
         raise PrimitiveError("Hull of points alone encloses no curve: draw a Polygon "

@@ -177,10 +177,11 @@ class Faces:
             a1 = math.atan2(m[1] - c[1], m[0] - c[0]) - sweep / 2
             return Loop(sector_outline(c, g.data["dims"]["radius"],
                                        g.data["dims"]["inner_radius"], a1, sweep))
-        if k == "Hull":             # (a Point: a loop of one line of no length, its site)
-            return hull_loop([lp for src in g.data["sources"] for lp in (
+        if k == "Hull":             # (a Point: a loop of one line of no length, its site;
+            return hull_loop([lp for src in g.data["sources"] for lp in (   # a Line or an
                 [Loop([Line(self._pt(src.points["p"]), self._pt(src.points["p"]))])]
-                if src.kind == "Point" else self.loops_of(src))])
+                if src.kind == "Point" else [self._closed(self.segment(src))]   # Arc closed
+                if src.kind in ("Line", "Arc") else self.loops_of(src))])       # by its chord)
         if k in DERIVED:
             loops = self.loops_of(g)
             return loops[0] if len(loops) == 1 else None
@@ -222,6 +223,12 @@ class Faces:
                 if isinstance(sg, Spline):
                     self.spline_source.setdefault(sg.curve, g)
         return loops, paths
+
+    @staticmethod
+    def _closed(seg) -> Loop:
+        """An open Line or Arc ``seg`` closed by the chord back to its start (the region whose
+        hull is its hull)."""
+        return Loop([seg, Line(seg.end, seg.start)])
 
     def loops_of(self, g: Geometry) -> list[Loop]:
         """The exact outline of a shape as loops: outer ones counter-clockwise, holes
