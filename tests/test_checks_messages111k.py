@@ -232,3 +232,25 @@ def test_run_ed_hull_takes_an_arc_and_a_line_as_their_points():
     r = aidl_lang.compile(source=src.replace("Arc(center=(0, 0), radius=20, start_angle=0 deg, "
                                              "end_angle=180 deg)", "Line((-20, 0), (20, 0))"))
     assert r.ok and abs(r.output.parts[0].area - 40 * 30) < 1e-6
+
+
+def test_run_eh_sizes_from_another_structure_get_the_corners_form():
+    """Run eh's staff sign: a backer `RoundedRectangle(..., width=100, height=50, ...)` sized
+    by `backer.plate.bb.width == letters.bb.width + 60 mm` was E0401 "write that size as the
+    expression it is", which cannot read another structure's box (E0201).  The hint names the
+    corners form, which the model used; followed, the E0401 goes, and the asserts on the word
+    and its rail (both in the placed `letters`) no longer blame the sheet's layout, whose move
+    cancels between them."""
+    path = RUNS / "issue111eh" / "drafts" / "05_staff_only_sign.attempt2.aidl"
+    src = path.read_text()
+    errs = _errors(aidl_lang.compile(source=src, path=str(path)))
+    assert errs and all(e.code == "E0401" for e in errs)
+    assert "draw the shape by two corners (`Rectangle(corner=(-50, -25), opposite=(50, 25))`" \
+        in errs[0].hint
+    fixed = src.replace("plate = RoundedRectangle(center=(0, 0), width=100, height=50, "
+                        "corner_radius=6)", "plate = Rectangle(corner=(-50, -25), "
+                        "opposite=(50, 25))\n        Fillet(6)")
+    assert fixed != src
+    errs = _errors(aidl_lang.compile(source=fixed, path=str(path)))
+    assert [e.code for e in errs] == ["E0405", "E0405"]      # the model's own slip, next
+    assert all("placed with `Place`" not in e.message for e in errs)

@@ -66,20 +66,24 @@ def _structures_read(a: Assertion, owners) -> list:
 
 
 def _reads_place(a: Assertion, x, fx: int, fy: int) -> bool:
-    """Whether a side of ``a`` changes when the frame (``fx``, ``fy``) is put back where it
-    is written: the assert reads where the part lies, not only its sizes."""
+    """Whether a comparison of ``a`` changes when the frame (``fx``, ``fy``) is put back
+    where it is written: the assert reads where the part lies, not only its sizes.  Judged
+    on each comparison's two sides together (their difference): two members of one part
+    move together, and a layout's move of it changes no verdict (run eh's sign: a rail's
+    bottom against its word's baseline, both in the placed `letters`, was said to be read
+    "where it is written" though the frame cancels)."""
     y = np.array(x, dtype=float)
     y[fx] = y[fy] = 0.0
+
+    def value(side, at):
+        return float(side) if isinstance(side, (int, float)) else evaluate(side, at)
     for grp in a.groups:
         for _, le, re_, _ in grp:
-            for side in (le, re_):
-                if isinstance(side, (int, float)):
-                    continue
-                try:
-                    if abs(evaluate(side, x) - evaluate(side, y)) > 1e-6:
-                        return True
-                except (ArithmeticError, KeyError, TypeError, ValueError, IndexError):
-                    continue
+            try:
+                if abs((value(le, x) - value(re_, x)) - (value(le, y) - value(re_, y))) > 1e-6:
+                    return True
+            except (ArithmeticError, KeyError, TypeError, ValueError, IndexError):
+                continue
     return False
 
 

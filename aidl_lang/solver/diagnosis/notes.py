@@ -47,7 +47,9 @@ def library_instance(c):
 def sizes_note(items) -> str:
     """A hint's note on the shapes of a conflict held by the sizes written in their calls
     (run aa's cake topper: a rail's placeholder `width=100` between `AlignLeft` and
-    `AlignRight` of two stars): a relation does not stretch a size written as a number."""
+    `AlignRight` of two stars): a relation does not stretch a size written as a number.  A
+    size that reads another structure's box cannot be written into the call (E0201): the
+    corners form then (run eh's sign: a backer `letters.bb.width + 60 mm` wide)."""
     lines = sorted({c.span.line for c, _ in items if c.implicit and c.span is not None
                     and (c.text or "").endswith(" shape")})
     if not lines:
@@ -56,7 +58,10 @@ def sizes_note(items) -> str:
     return (f". The shape{'s' if len(lines) > 1 else ''} on line{'s' if len(lines) > 1 else ''} "
             f"{at} keep{'' if len(lines) > 1 else 's'} the sizes written in "
             f"{'their calls' if len(lines) > 1 else 'its call'} (`width=100`): if the relations should set one, write that size as the "
-            "expression it is (`width=b.bb.right - a.bb.left`)")
+            "expression it is (`width=b.bb.right - a.bb.left`) or, where it reads another "
+            "structure's box, draw the shape by two corners (`Rectangle(corner=(-50, -25), "
+            "opposite=(50, 25))`, rounded by `Fillet(r)`): its size is then a guess the "
+            "relations set")
 
 
 def rigid_note(s) -> str:
