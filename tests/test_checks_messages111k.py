@@ -254,3 +254,12 @@ def test_run_eh_sizes_from_another_structure_get_the_corners_form():
     errs = _errors(aidl_lang.compile(source=fixed, path=str(path)))
     assert [e.code for e in errs] == ["E0405", "E0405"]      # the model's own slip, next
     assert all("placed with `Place`" not in e.message for e in errs)
+
+
+def test_run_ef_a_slots_round_end_is_no_pin_hole():
+    """Run ef's racket press: W0518's note said the front frame is held by "a round hole of
+    it (d 18 mm)", the round end of its 100 x 18 carrying slot; the bolt holes (6.6 mm) are
+    what line up.  A pin hole has material all round its rim."""
+    path = RUNS / "issue111ef" / "run" / "05_racket_press.first_valid.aidl"
+    (n,) = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0518"]
+    assert n.severity == "note" and "a round hole of it (d 6.6 mm)" in n.message

@@ -386,7 +386,17 @@ class _Pins:
                         mf.CrossSection.square((e, e)).translate(
                             (cx + 0.9 * r * u - e / 2, cy + 0.9 * r * v - e / 2))
                         for u, v in ((1, 0), (0, 1), (-1, 0), (0, -1))])
-                    if (part.shape ^ probes).area() <= 1e-12:
+                    if (part.shape ^ probes).area() > 1e-12:
+                        continue
+                    # and material all round it just past its rim: a whole round hole, not
+                    # the round end of a slot (run ef's racket press: its 100 x 18 carrying
+                    # slot was "a round hole (d 18 mm)" lined up with the other frame's)
+                    k = r + max(r / 20, 2 * e)
+                    ring = mf.CrossSection.compose([
+                        mf.CrossSection.square((e, e)).translate(
+                            (cx + k * math.cos(a) - e / 2, cy + k * math.sin(a) - e / 2))
+                        for a in (i * math.pi / 4 for i in range(8))])
+                    if (part.shape ^ ring).area() >= ring.area() - 1e-12:
                         got.append((cx, cy, 2 * r))
                 if got:
                     g = np.array(got, dtype=float)
