@@ -1,0 +1,34 @@
+#!/bin/bash
+# chk.sh NN_name : check drafts/NN_name.aidl, log it, keep the first valid program.
+# Written anew for issue111el.
+set -u
+D="$(cd "$(dirname "$0")" && pwd)"
+R="$D/../run"
+N="$1"
+F="$D/$N.aidl"
+export PYTHONPATH=/work/wt-models-el
+AIDL=/work/main/.venv/bin/aidl
+T="$(date -u '+%Y-%m-%d %H:%M:%S')"
+OUT="$(mktemp)"
+"$AIDL" check "$F" >"$OUT" 2>&1
+RC=$?
+NE=$(grep -c 'error\[E' "$OUT")
+NW=$(grep -c 'warning\[W' "$OUT")
+if [ -f "$R/$N.first_valid.aidl" ]; then
+    K=1; while [ -f "$D/$N.fix$K.aidl" ]; do K=$((K+1)); done
+    KIND="fix $K"
+    cp "$F" "$D/$N.fix$K.aidl"; cp "$OUT" "$D/$N.fix$K.check.txt"
+    "$AIDL" render "$F" -o "$D/$N.fix$K.png" --png-width 1200 >"$D/$N.fix$K.render.txt" 2>&1
+elif [ "$RC" -eq 0 ]; then
+    KIND="FIRST VALID"
+    cp "$F" "$R/$N.first_valid.aidl"; cp "$OUT" "$R/$N.first_valid.check.txt"
+    "$AIDL" render "$R/$N.first_valid.aidl" -o "$R/$N.first_valid.png" --png-width 1200 >"$R/$N.first_valid.render.txt" 2>&1
+else
+    K=1; while [ -f "$D/$N.attempt$K.aidl" ]; do K=$((K+1)); done
+    KIND="attempt $K"
+    cp "$F" "$D/$N.attempt$K.aidl"; cp "$OUT" "$D/$N.attempt$K.check.txt"
+fi
+echo "$T  $N  $KIND  exit=$RC  errors=$NE  warnings=$NW" >>"$D/log.txt"
+echo "== $T $N $KIND exit=$RC errors=$NE warnings=$NW"
+cat "$OUT"
+rm -f "$OUT"
