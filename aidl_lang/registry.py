@@ -213,6 +213,9 @@ _DEFS = {
                            [A("bottom_left", "point"), A("width", "length"), A("height", "length"),
                             A("corner_radius", "length", None), A("rotation", "angle", 0.0),
                             A("corner_radii", "any", None)],
+                           [A("corner", "point"), A("opposite", "point"),
+                            A("corner_radius", "length", None), A("rotation", "angle", 0.0),
+                            A("corner_radii", "any", None)],
                            doc="A rectangle with rounded corners; corner_radii=[top_left, "
                                "top_right, bottom_right, bottom_left] (0: sharp).",
                            members=RECT_MEMBERS),

@@ -246,7 +246,7 @@ def test_run_eh_sizes_from_another_structure_get_the_corners_form():
     errs = _errors(aidl_lang.compile(source=src, path=str(path)))
     assert errs and all(e.code == "E0401" for e in errs)
     assert "draw the shape by two corners (`Rectangle(corner=(-50, -25), opposite=(50, 25))`" \
-        in errs[0].hint
+        in errs[0].hint and "`RoundedRectangle(corner=..., opposite=...," in errs[0].hint
     fixed = src.replace("plate = RoundedRectangle(center=(0, 0), width=100, height=50, "
                         "corner_radius=6)", "plate = Rectangle(corner=(-50, -25), "
                         "opposite=(50, 25))\n        Fillet(6)")
@@ -263,3 +263,25 @@ def test_run_ef_a_slots_round_end_is_no_pin_hole():
     path = RUNS / "issue111ef" / "run" / "05_racket_press.first_valid.aidl"
     (n,) = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0518"]
     assert n.severity == "note" and "a round hole of it (d 6.6 mm)" in n.message
+
+
+def test_run_ek_rounded_rectangle_by_two_corners():
+    """Run ek's needle organizer wrote `RoundedRectangle(corner=..., opposite=...)` as for a
+    Rectangle (E0105); and run eh's backer needed a rounded plate sized by relations.  By two
+    corners its size is a guess the relations set; its corners stay rounded."""
+    src = ("solid a {\n    word = Rectangle(center=(0, 0), width=80, height=20)\n}\n"
+           "solid b {\n    plate = RoundedRectangle(corner=(-50, -25), opposite=(50, 25), "
+           "corner_radius=6)\n}\nb.plate.bb.width == a.word.bb.width + 40 mm\n"
+           "b.plate.bb.height == a.word.bb.height + 20 mm\nAlignCenterY(b, a)\n"
+           "RightOf(b, a, gap=10)\n")
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [d.message for d in _errors(r)]
+    assert abs(r.value("b.plate.width").mm - 120) < 1e-6
+    assert abs(r.value("b.plate.height").mm - 40) < 1e-6
+    from aidl_lang.output.part.part import Arc
+    (plate,) = [p for p in r.output.parts if p.name.endswith("b")]
+    arcs = [s for s in plate.loops[0].segments if isinstance(s, Arc)]
+    assert len(arcs) == 4 and all(abs(s.radius - 6) < 1e-9 for s in arcs)
+    # each corner's own radius too
+    r = aidl_lang.compile(source=src.replace("corner_radius=6", "corner_radii=[6, 6, 0, 0]"))
+    assert r.ok and abs(r.value("b.plate.width").mm - 120) < 1e-6

@@ -302,8 +302,13 @@ def _build_RoundedRectangle(ctx, g, a):
                              + (", not both" if one is not None else ""))
     if each is not None:
         radii = _corner_radii(ctx, each)
-        w = _const(ctx, a["width"], "width")
-        h = _const(ctx, a["height"], "height")
+        if "corner" in a:       # by two corners (run ek): their starting distance apart
+            p, q = a["corner"], a["opposite"]
+            w = abs(ctx.value_of(q.x) - ctx.value_of(p.x))
+            h = abs(ctx.value_of(q.y) - ctx.value_of(p.y))
+        else:
+            w = _const(ctx, a["width"], "width")
+            h = _const(ctx, a["height"], "height")
         tl, tr, br, bl = radii
         for side, (r1, n1), (r2, n2), L in (("top", (tl, "top_left"), (tr, "top_right"), w),
                                            ("bottom", (bl, "bottom_left"), (br, "bottom_right"), w),

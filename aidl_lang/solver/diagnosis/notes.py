@@ -60,8 +60,8 @@ def sizes_note(items) -> str:
             f"{'their calls' if len(lines) > 1 else 'its call'} (`width=100`): if the relations should set one, write that size as the "
             "expression it is (`width=b.bb.right - a.bb.left`) or, where it reads another "
             "structure's box, draw the shape by two corners (`Rectangle(corner=(-50, -25), "
-            "opposite=(50, 25))`, rounded by `Fillet(r)`): its size is then a guess the "
-            "relations set")
+            "opposite=(50, 25))`, `RoundedRectangle(corner=..., opposite=..., "
+            "corner_radius=6)`): its size is then a guess the relations set")
 
 
 def rigid_note(s) -> str:
