@@ -1119,7 +1119,7 @@ def test_W0513_text_over_text_and_over_a_tick_mark(compile_text):
     # the tick along y = 0 from x = 40 to 48 through the "0" (its box shrunk by 0.4 mm)
     c = box("0", 4, 44, 0)
     inside = (c[2] - 0.4) - (c[0] + 0.4)
-    assert tick.span.line == 10 and "`protractor.scale.tick`" in tick.message
+    assert tick.span.line == 10 and "`protractor.scale.tick[0]`" in tick.message
     assert float(re.search(r", (\S+) mm of it inside", tick.message).group(1)) == pytest.approx(inside, abs=0.006)
     # moved apart and beside the tick: clean
     assert not warnings(compile_text, PROTRACTOR % ("0, 22", "44, 4"), "W0513")

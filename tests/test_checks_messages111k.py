@@ -285,3 +285,14 @@ def test_run_ek_rounded_rectangle_by_two_corners():
     # each corner's own radius too
     r = aidl_lang.compile(source=src.replace("corner_radius=6", "corner_radii=[6, 6, 0, 0]"))
     assert r.ok and abs(r.value("b.plate.width").mm - 120) < 1e-6
+
+
+def test_run_el_text_over_a_loops_mark_names_both_copies():
+    """Run el's meter scale: "text `scale.n` ("0") ... over `scale.tick`" named neither copy,
+    where the next warning said `n[3]` and `tick[15]`."""
+    path = RUNS / "issue111el" / "run" / "03_meter_scale.first_valid.aidl"
+    ws = [d.message for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0513"]
+    assert any("`scale_plate.scale.n[0]` (\"0\")" in m and "`scale_plate.scale.tick[0]`" in m
+               for m in ws)
+    assert any("`scale_plate.scale.n[1]` (\"5\")" in m and "`scale_plate.scale.tick[5]`" in m
+               for m in ws)

@@ -341,8 +341,8 @@ def _check_marks(strokes, marks, tg, boxes, bb, sizes, said, sink, tick=None) ->
         at = _letters_crossed(g, strokes[i], segs[m], boxes[i][1], inner[i])
         at = f" at {at}" if at else ""
         if _is_tick(marks[m], boxes[i][1], full[i], size):     # a dial's tick mark
-            sink.warning("W0513", f"text `{g.label}` (\"{g.data.get('text', '')}\") is drawn "
-                         f"over the engraved `{m.label}`: the mark crosses it{at}, "
+            sink.warning("W0513", f"text `{_copy_label(g)}` (\"{g.data.get('text', '')}\") is "
+                         f"drawn over the engraved `{_copy_label(m)}`: the mark crosses it{at}, "
                          f"{length:.2f} mm of it inside the text's box", g.span, labels=labels,
                          hint=f"move `{g.label}` clear of `{m.label}` (beside a tick mark, not "
                               "on it: e.g. further out along the same direction), or shorten "
@@ -360,8 +360,8 @@ def _check_marks(strokes, marks, tg, boxes, bb, sizes, said, sink, tick=None) ->
         ways.append(f"move `{g.label}` clear of `{m.label}`")
         if fit is None:                 # not measured (0.0: no smaller text clears the mark)
             ways.append("make the text smaller")
-        sink.warning("W0513", f"text `{g.label}` (\"{g.data.get('text', '')}\") is drawn over "
-                     f"the engraved `{m.label}`: `{m.label.rsplit('.', 1)[-1]}` crosses it{at}, "
+        sink.warning("W0513", f"text `{_copy_label(g)}` (\"{g.data.get('text', '')}\") is drawn "
+                     f"over the engraved `{_copy_label(m)}`: `{m.label.rsplit('.', 1)[-1]}` crosses it{at}, "
                      f"{length:.2f} mm of it inside the text's box", g.span, labels=labels,
                      hint="; or ".join(ways))
     entering = {(i, j) for (i, j), x in zip(pairs.tolist(), inside)
