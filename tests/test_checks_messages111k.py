@@ -296,3 +296,8 @@ def test_run_el_text_over_a_loops_mark_names_both_copies():
                for m in ws)
     assert any("`scale_plate.scale.n[1]` (\"5\")" in m and "`scale_plate.scale.tick[5]`" in m
                for m in ws)
+
+
+def test_run_el_docs_overrun_is_a_topic():
+    text, found = lookup_text("overrun")
+    assert found and text.startswith("hole (statement)") and "`overrun=true`" in text

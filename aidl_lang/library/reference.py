@@ -777,8 +777,11 @@ Material the model wants to keep in an opening goes outside the solid that holds
 enclosing solid (its own shapes and its solid children). A sibling of the enclosing solid is
 not cut: it can cover the opening (warning W0501; `AllowOverlap` when meant). A hole at the
 top level or directly in an assembly is drawn as a dashed outline. The hole's shapes count
-in the enclosing structure's `.bb`.
-""", ["cutout", "cut-out", "opening", "pocket"]),
+in the enclosing structure's `.bb`, but for a shape written `overrun=true`: the part of a cut
+drawn past the part's edge so that it opens cleanly (a slot run 1 mm out through the edge),
+cut as drawn and left out of the boxes, so `AlignTop(slot, body)` still puts the slot's
+mouth on the edge.
+""", ["cutout", "cut-out", "opening", "pocket", "overrun"]),
     "cut": ("statement", "`cut NAME { ... }`: through-cuts along curves, open or closed.", """
 `cut NAME { ... }` inside a solid: the laser cuts along each of its curves exactly as written
 (Line, Arc, Bezier, Spline, Polyline; open or closed), through the part. An open curve takes
