@@ -903,6 +903,14 @@ ARG_NOTES: dict[tuple[str, str], str] = {
 ARG_NOTES[("RoundedRectangle", "corner")] = (
     "a corner point is `bottom_left=(x, y)` (the width and height run from it; or "
     "`center=`), a corner's rounding `corner_radius=`")
+# a form's argument given with another form's (E0104): what each goes with (run am's
+# `RoundedRectangle(corner=(40, 20), width=20, height=30)`, once `corner=` had a form of its own)
+FORM_NOTES: dict[tuple[str, str], str] = {
+    (k, "corner"): "`corner=` goes with `opposite=` (two opposite corners, which set the size); "
+                   "with `width` and `height` a corner point is `bottom_left=(x, y)` (or "
+                   "`center=`)" + (", a corner's rounding `corner_radius=`"
+                                   if k == "RoundedRectangle" else "")
+    for k in ("Rectangle", "RoundedRectangle")}
 
 
 def near_args(name: str, names: list[str]) -> list[str]:

@@ -19,7 +19,7 @@ import itertools
 from . import ast as A
 from .base.diagnostics import Diagnostic, DiagnosticSink, Fix, Label, did_you_mean
 from .registry import (ARG_NOTES, CONSTANTS, ENTRIES, FUNCTIONS, SYNONYMS, accepted_args,
-                       choose_variant, UNITS_ANGLE, UNITS_LENGTH, lookup, near_args,
+                       choose_variant, FORM_NOTES, UNITS_ANGLE, UNITS_LENGTH, lookup, near_args,
                        template_param)
 from .library.sources import ImportRefused
 
@@ -658,6 +658,10 @@ class Checker:
             return
         code = "E0106" if reason and reason.startswith("missing") else "E0104"
         hint = "forms: " + "; ".join(entry.signature(v) for v in entry.variants)
+        note = next((FORM_NOTES[(entry.name, k)] for k in kwnames
+                     if (entry.name, k) in FORM_NOTES), None) if code == "E0104" else None
+        if note:
+            hint = f"{note}; {hint}"
         if entry.name == "Symmetric" and len(e.args) + len(e.kwargs) == 2:
             hint = ("to copy a shape or structure about a line write `Mirrored(target, "
                     "about=line)`; " + hint)

@@ -301,3 +301,15 @@ def test_run_el_text_over_a_loops_mark_names_both_copies():
 def test_run_el_docs_overrun_is_a_topic():
     text, found = lookup_text("overrun")
     assert found and text.startswith("hole (statement)") and "`overrun=true`" in text
+
+
+def test_runs_eg_ek_an_open_mortise_is_where_written_and_the_panel_may_widen():
+    """Run ek's letterbox catcher: W0530 gave the sheet's coordinates (the floor laid out
+    beside the walls) and "move `right_m` inward", where the mortise's place was set by the
+    side whose tabs it takes and the fix was a wider floor (run eg's spice insert too)."""
+    path = RUNS / "issue111ek" / "run" / "01_letterbox_catcher.first_valid.aidl"
+    ws = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0530"]
+    assert len(ws) == 2
+    assert {w.message.split("(about ")[1].split(")")[0] for w in ws} == \
+        {"154.03, -59.00", "-154.03, -59.00"}         # as written: symmetric about the floor
+    assert all("widen `floor` past them" in w.hint for w in ws)

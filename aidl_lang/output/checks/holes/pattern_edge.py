@@ -19,7 +19,7 @@ import math
 import manifold3d as mf
 import numpy as np
 
-from ..common import MIN_AREA, _area, _edge_distance, _edges, _inside, _union
+from ..common import MIN_AREA, _area, _edge_distance, _edges, _inside, _union, written
 
 EDGE_TOL = 0.01        # mm: a copy's vertex this far past the outline still counts as inside
 
@@ -60,6 +60,7 @@ def check_pattern_edges(d, s, cuts, min_wall: float, sink, skip: set) -> None:
             continue
         out.sort(key=lambda o: -o[1][0])   # the deepest first
         h, (depth, (x, y)) = out[0][0], out[0][1]
+        x, y = written(s, x, y)          # where the program writes it (run ek: sheet coordinates)
         name = _name(h)
         more = f" ({len(out)} of its {len(copies)} copies do)" if len(out) > 1 else ""
         need = np.ceil((depth + 2 * min_wall) * 10) / 10
@@ -167,7 +168,7 @@ def _check_closed_openings(d: Drawing, s: Structure, shape, cuts, min_wall: floa
         dist = _edge_distance(P, edges)
         k = int(np.argmax(dist))
         depth = float(dist[k])
-        x, y = P[k]
+        x, y = written(s, *P[k])
         need = math.ceil((depth + 2 * min_wall) * 10) / 10
         t = _letters(c.hole)
         if t is not None and c.hole.template not in CLOSED_OPENINGS:   # (run ay's "NOAH")
@@ -211,13 +212,18 @@ def check_open_mortises(d: Drawing, s: Structure, shape, cuts, min_wall: float, 
         x0, y0, x1, y1 = (grown - filled).bounds()
         depth = 0.0 if _area(out) <= MIN_AREA else max(x1 - x0, y1 - y0)
         where = "lies on" if depth == 0.0 else "runs out through"
+        x, y = written(s, (x0 + x1) / 2, (y0 + y1) / 2)
         sink.warning("W0530", f"hole `{c.hole.path}` (a `tab_and_slot`'s slots, a mortise) "
-                     f"{where} the outer edge of `{s.path}` (about ({(x0 + x1) / 2 + 0.0:.2f}, "
-                     f"{(y0 + y1) / 2 + 0.0:.2f})): the mortise is cut open into a notch, and the "
-                     "tab it holds can slide out", c.hole.span,
-                     hint=f"move `{c.hole.name}` inward so that at least {2 * min_wall:g} mm "
-                          "of material is left between the slots and the edge (a tab meant to "
-                          "stand at the edge is the `part=\"tab\"` half's)")
+                     f"{where} the outer edge of `{s.path}` (about ({x:.2f}, {y:.2f})): the "
+                     "mortise is cut open into a notch, and the tab it holds can slide out",
+                     c.hole.span,
+                     # (runs eg, ek: the mortise's place was fixed by the part whose tabs it
+                     # takes, and the fix was a wider panel, not a mortise moved)
+                     hint=f"leave at least {2 * min_wall:g} mm of material between the slots "
+                          f"and the edge: widen `{s.name}` past them (where the mortise's "
+                          f"place is set by the part its tabs come from), or move "
+                          f"`{c.hole.name}` inward (a tab meant to stand at the edge is the "
+                          "`part=\"tab\"` half's)")
 
 
 def _letters(h):
