@@ -310,6 +310,6 @@ def test_runs_eg_ek_an_open_mortise_is_where_written_and_the_panel_may_widen():
     path = RUNS / "issue111ek" / "run" / "01_letterbox_catcher.first_valid.aidl"
     ws = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0530"]
     assert len(ws) == 2
-    assert {w.message.split("(about ")[1].split(")")[0] for w in ws} == \
+    assert {w.message.split("(about (")[1].split(")")[0] for w in ws} == \
         {"154.03, -59.00", "-154.03, -59.00"}         # as written: symmetric about the floor
     assert all("widen `floor` past them" in w.hint for w in ws)
