@@ -1619,7 +1619,10 @@ away from the part; a laser's kerf likewise.  Two parts drawn (or laid out) near
 than that lose material to each other's cut: `aidl render --machine router` of parts 3 mm apart
 takes 0.175 mm from each with the 3.175 mm bit.  Draw the parts at least the tool's width
 apart, or lay them out for cutting with a larger gap (`--layout sheet --gap 5mm`).  Parts that
-touch (pieces a cut freed, sharing an edge that is cut once) are not said.
+touch (pieces a cut freed, sharing an edge that is cut once) are not said. Said where the kerf
+or the bit is applied: `aidl render` (and the MCP server's `render`), not `aidl check`, which
+cuts nothing (run ek: parts touching on the sheet passed the check clean); a program that
+states its `kerf` is judged by `aidl render -o x.svg` too.
 
     solid a { r = Rectangle(center=(0, 0), width=12, height=12) }
     solid b { r = Rectangle(center=(15, 0), width=12, height=12) }   # 3 mm apart: W0531
