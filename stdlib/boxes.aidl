@@ -16,7 +16,9 @@ import "std/joints.aidl"
 # `length` x `width` x `height` (mm) is the outer size (lid included) when
 # `outside=true`, else the space inside (floor to the lip); `thickness` is the material,
 # `finger` the least finger width. Members: `body` (an open finger_box),
-# `lid`, `lip`.
+# `lid`, `lip`. An opening through the lid (a coin slot: `CutInto(slot, box.lid)`)
+# must be cut into the `lip` too (`CutInto(slot2, box.lip)`, the same shape where
+# the lip lies on the sheet), or the lip glued under it closes it.
 # Anchor: (cx, cy) is the centre of `body.bottom`.
 def lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=10 mm,
             clearance=0.3 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {
