@@ -62,7 +62,7 @@ def test_W0513_clock_ticks_too_close_to_their_numerals(compile_text):
     assert w.span.line == 13 and w.labels[0].span.line == 9
     assert w.message.startswith('text `clock.dial.num[5]` ("6") is too close to the engraved '
                                 '`clock.dial.ticks[6]`: the mark crosses its strokes')
-    assert "enters its box by 0.40 mm" in w.message           # the "6" box ends at -38
+    assert "0.40 mm of the mark inside the text's box" in w.message           # the "6" box ends at -38
     assert "(the clearance is 1.50 mm, a quarter of the text size)" in w.message
     r = 37.6
     gaps = {"3": point_to_strokes(np.array([r, 0.0]), "3", 6, (35, 0)),
