@@ -96,8 +96,8 @@ solid clock {
 }"""
     (w,) = warnings(compile_text, src, "W0513")
     gap = point_to_strokes(np.array([0.0, 37.6]), "12", 6, (0, 35))
-    assert (f"`clock.dial.tick`: the mark ends {gap:.2f} mm from its strokes and enters its "
-            "box by 0.40 mm") in w.message
+    assert (f"`clock.dial.tick`: the mark ends {gap:.2f} mm from its strokes, 0.40 mm of the "
+            "mark inside the text's box") in w.message
     assert "shorten the mark to end" in w.hint
 
 
