@@ -264,7 +264,7 @@ solid p {
                           w.message).group(1))
     assert w.span.line == 8 and "`p.d.ring`" in w.message
     assert 0.18 <= gap <= 0.2
-    assert f"keep `p.d.ring` {math.ceil((0.5 - gap) * 100) / 100:.2f} mm further" in w.hint
+    assert f"keep `p.d.ring` {math.ceil((1.0 - gap) * 100) / 100:.2f} mm further" in w.hint
     assert not warnings(compile_text, src % "3.6", "W0516")
 
 

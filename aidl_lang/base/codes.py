@@ -1108,7 +1108,9 @@ edge, a border drawn on the outline); the warning says how much of the mark lies
 the edge: the mark ends on the edge or comes within 0.5 mm of it (a knight's mouth
 line drawn to the outline, a line ending a hair short of it: the sliver left between engraving
 and cut chars or breaks off); the warning gives the gap in mm, which edge and where (x, y), and
-how far inside to end or move the mark. Straight ticks that end on the edge and meet it square,
+how far inside to end or move the mark (to 1 mm clear: at 0.5 mm a mark still reads as on the
+edge). The same statement in several parts a loop made (a template called five times) is said
+once, naming the other parts. Straight ticks that end on the edge and meet it square,
 three or more on one part, are a scale hanging from the edge (a ruler, a protractor) and are
 not warned; nor are two or more pieces of one straight line, each ending square on the edge (a
 line across the part broken by a hole or a word: a router template's door-edge line); nor a

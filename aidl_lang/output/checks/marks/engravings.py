@@ -154,13 +154,36 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         sink.warning("W0505", message, g.span, hint=hint)
     d.engravings_judged = True          # (W0523: an AllowOverlap of an engraving that no W0505 needed)
     texts = []
+    says: list = []                 # W0516's, said once per statement over a loop's parts
     for part, geoms in by_part.items():
         if tick is not None:
             tick(part)
         _check_meets_cut(part, roots[part], [(g, it) for g, it in geoms if g not in warned],
-                         (loops or {}).get(part), sink)
+                         (loops or {}).get(part), says)
         texts.append((part, [(g, it) for g, it in geoms if g not in warned and g.kind == "Text"]))
+    _say_over_parts(says, sink)
     return texts
+
+
+def _say_over_parts(says: list, sink) -> None:
+    """W0516 for each ``(part, group, hole, E0, E1, crossing)`` of :func:`_check_meets_cut`;
+    the same statement in copies of one part (a template called in a loop: run en's five
+    coins, five warnings of one ring) is said once, at its closest, naming the others."""
+    by: dict = {}
+    for s in says:
+        part, group = s[0], s[1]
+        g = min(group, key=lambda f: f[3])[0]
+        key = (g.span, part.span) if g.span is not None and part.span is not None else id(s)
+        by.setdefault(key, []).append(s)
+    for same in by.values():
+        same.sort(key=lambda s: (round(min(f[3] for f in s[1]), 6), s[0].path))
+        first, rest = same[0], same[1:]
+        also = ""
+        if rest:
+            names = ", ".join(f"`{s[0].path}`" for s in rest[:3])
+            also = (f"; the same in {len(rest)} more part{'s' if len(rest) > 1 else ''} "
+                    f"made by this statement ({names}{', ...' if len(rest) > 3 else ''})")
+        _say_meets_cut(*first, sink, also)
 
 
 def _off_outline_hint(d: Drawing, part, g, pts: np.ndarray, off: np.ndarray) -> str:
@@ -432,12 +455,13 @@ def _check_on_cut(part, shape, geoms, pts: np.ndarray, loops, sink) -> set:
 
 
 CUT_CLEAR = 0.5          # mm: an engraved mark closer to the cut edge runs into it
+SHOWN_CLEAR = 1.0        # mm: the clearance a W0516 hint moves a mark to (twice the least: it shows)
 OVERSHOOT = 0.25         # mm of a mark past the material (W0505): below it, nothing is lost
 SQUARE = math.radians(15)   # a straight mark ending on the edge this near square is a tick
 SCALE = 3                # ticks ending square on the edges of one part: a scale (a ruler)
 
 
-def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
+def _check_meets_cut(part, shape, geoms, loops, sink: list) -> None:
     """W0516 for an engraved mark (not text) of ``part`` that comes within :data:`CUT_CLEAR`
     of the part's cut edge (its outline or a hole's edge) without running along it (that is
     :func:`_check_on_cut`) or off the material (W0505): a knight's mouth line drawn to the
@@ -451,7 +475,9 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
     of which half the copies or more are such bands, nor a straight mark that is a band's
     copy (the same run, each its own statement: `aidl import` writes a loop's copies so).  The warning names the mark, the part, which edge, the gap in mm and where
     (x, y), and how far inside to end or move the mark.  ``geoms``: (geometry, its stroke
-    items); near-linear (the marks' and edges' boxes paired by :func:`box_pairs`)."""
+    items); near-linear (the marks' and edges' boxes paired by :func:`box_pairs`).  What is
+    found goes to ``sink``, a list, as :func:`_say_meets_cut`'s arguments (said by
+    :func:`_say_over_parts`)."""
     from ...part.measure.nearby import box_pairs_between
     geoms = [(g, items) for g, items in geoms if g.kind != "Text"]
     if not geoms:
@@ -549,7 +575,7 @@ def _check_meets_cut(part, shape, geoms, loops, sink) -> None:
             continue                         # a band's copy, each its own statement (imported)
         by_statement.setdefault(f[0].span or f[0], []).append(f)
     for group in by_statement.values():
-        _say_meets_cut(part, group, hole, E0, E1, crossing, sink)
+        sink.append((part, group, hole, E0, E1, crossing))
 
 
 def _side_on_edge(items, E0, E1, e) -> bool:
@@ -575,7 +601,7 @@ def _side_on_edge(items, E0, E1, e) -> bool:
     return bool(on.any())
 
 
-def _say_meets_cut(part, group: list, hole, E0, E1, crossing: set, sink) -> None:
+def _say_meets_cut(part, group: list, hole, E0, E1, crossing: set, sink, also: str = "") -> None:
     """W0516 for the close marks of one statement (``group``, :func:`_check_meets_cut`'s
     tuples), the closest first: how it meets the edge (ends on, touches, runs across), where,
     and how far to end or move it; ``hole``: whether each edge is a hole's, ``E0``, ``E1``
@@ -615,8 +641,11 @@ def _say_meets_cut(part, group: list, hole, E0, E1, crossing: set, sink) -> None
                 fix = (f"end or move each copy of `{g.label}` at least {CUT_CLEAR} mm "
                        "inside the edge")
     else:
-        fix = (f"keep `{g.label}` {math.ceil(round((CUT_CLEAR - gap) * 100, 6)) / 100:.2f} mm "
-               "further from the edge (move it, or change its size)")
+        # to a clearance that shows (run en's coin: the least the check takes, 0.01 mm
+        # further, passed it and left the ring reading as on the edge)
+        fix = (f"keep `{g.label}` {math.ceil(round((SHOWN_CLEAR - gap) * 100, 6)) / 100:.2f} mm "
+               f"further from the edge (move it, or change its size), {SHOWN_CLEAR:g} mm clear: "
+               f"at the {CUT_CLEAR} mm the check takes, a mark still reads as on the edge")
     more = ""
     if len(group) > 1:
         rest = ", ".join(f"`{_copy_label(f[0], short=True)}` ({f[3]:.2f} mm at "
@@ -628,7 +657,7 @@ def _say_meets_cut(part, group: list, hole, E0, E1, crossing: set, sink) -> None
     sink.warning("W0516", f"engraving `{_copy_label(g)}` {how} the cut edge of "
                  f"`{part.path}` ({which}) at ({wx:.2f}, {wy:.2f}): the engraving "
                  f"meets the cut (a mark needs {CUT_CLEAR} mm clear of the edge), so it "
-                 f"runs into the edge{more}", g.span,
+                 f"runs into the edge{more}{also}", g.span,
                  hint=fix + "; the cut already draws the edge")
 
 
