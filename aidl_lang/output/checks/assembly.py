@@ -141,7 +141,7 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                     f"the parts are cut as drawn either way; to put `{short}` in the "
                     f"assembled product (3D views, 3MF, the fit check), give it "
                     f"`Place({short}, ...)`")
-        elif (pin := pins.through(g.part, g.nearest)) is not None:
+        elif (pin := pins.through(g.part, g.nearest) or pins.through_any(g.part)) is not None:
             # a pivot: a round hole of it on one axis with another part's (run cn: a boom
             # with 0.6 mm of play each side of a dowel through it and its uprights; "move it
             # 0.6 mm" would have made it rub)
@@ -405,6 +405,17 @@ class _Pins:
                     out = (c, M[:3, 2] / np.linalg.norm(M[:3, 2]), g[:, 2])
             self.axes[name] = out
         return self.axes[name]
+
+    def through_any(self, name: str):
+        """:meth:`through` against each other placed part, by name, the first that lines up
+        (run eo's cuttlebone holder: its frame bolted to the cage bars, the ledge its nearest
+        part, was "touches no other part" with a hint that would push it into the bars);
+        None when none does."""
+        for other in sorted(n for n in (self.d.placement or {}) if n != name):
+            got = self.through(name, other)
+            if got is not None:
+                return got
+        return None
 
     def through(self, name: str, nearest: str):
         """``(nearest, hole diameter mm)`` for a round hole of part ``name`` whose axis,
