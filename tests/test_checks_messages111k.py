@@ -313,3 +313,33 @@ def test_runs_eg_ek_an_open_mortise_is_where_written_and_the_panel_may_widen():
     assert {w.message.split("(about (")[1].split(")")[0] for w in ws} == \
         {"154.03, -59.00", "-154.03, -59.00"}         # as written: symmetric about the floor
     assert all("widen `floor` past them" in w.hint for w in ws)
+
+
+def test_run_ep_filled_shapes_that_touch_are_burnt_once():
+    """Run ep's hydrant marker: W0513 "the laser burns that stretch twice" of filled shapes
+    sharing an edge (an area engraved filled is burnt once), and its hint would have drawn
+    them as open Polylines, the fill gone."""
+    (path,) = (RUNS / "issue111ep" / "run").glob("08_*.first_valid.aidl")
+    r = aidl_lang.compile(path=str(path))
+    assert r.ok and not [d for d in r.diagnostics if d.code == "W0513"]
+
+
+def test_run_en_one_slip_in_five_template_copies_is_one_warning():
+    """Run en's play coins: the "5" coin's ring 0.50 mm from its cut edge, in five copies of
+    the template: five warnings, and a hint (0.01 mm further) that passed the check and left
+    the ring reading as on the edge."""
+    path = RUNS / "issue111en" / "run" / "03_play_coins.first_valid.aidl"
+    (w,) = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0516"]
+    assert "`till_money.five[0].face.ring` comes 0.50 mm" in w.message
+    assert "the same in 4 more parts made by this statement (`till_money.five[1]`, " \
+        "`till_money.five[2]`, `till_money.five[3]`, ...)" in w.message
+    assert "0.51 mm further from the edge" in w.hint and "1 mm clear" in w.hint
+
+
+def test_run_eo_a_part_bolted_to_another_than_its_nearest_is_held():
+    """Run eo's cuttlebone holder, after its fix: the back plate bolted to the frame (holes
+    in line) with the ledge its nearest part, 3 mm off: a warning whose hint moved it into
+    the cage bars.  Holes in line with any placed part make it a note."""
+    path = RUNS / "issue111eo" / "drafts" / "04_cuttlebone_holder.fix1.aidl"
+    (n,) = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0518"]
+    assert n.severity == "note" and "lines up with one of `holder.frame`" in n.message

@@ -163,6 +163,9 @@ def _marks_over_marks(d: Drawing, tick=None) -> tuple[dict, dict]:
             ga, gb = marks[a], marks[b]
             if ga.span is None or gb.span is None:
                 continue
+            if ga.data.get("fill") or gb.data.get("fill"):
+                continue        # an area engraved filled is burnt once, edge and all (run
+                #                 ep's hydrant marker: filled shapes that touch, "twice")
             # the one more of whose strokes lies on the other is the one drawn again
             under, over_g = (ga, gb) if L / max(total[a], 1e-12) >= L / max(total[b], 1e-12) \
                 else (gb, ga)
@@ -267,7 +270,8 @@ def _twice_hint(a, b, share: float, rows) -> str:
     "skip those copies" would have deleted every point); a closed shape with a side on the
     other is drawn without that side."""
     copies = [h for h in getattr(b.owner, "geometry", ()) if h.name == b.name
-              and h.span == b.span] if b.name and b.span is not None else [b]
+              and h.span == b.span and not h.data.get("fill")] \
+        if b.name and b.span is not None else [b]           # (a filled copy is not judged)
     on = {id(r[2]) for r in rows}
     ways = []
     if b.kind in CLOSED_KINDS and share < 0.999:
