@@ -343,3 +343,25 @@ def test_run_eo_a_part_bolted_to_another_than_its_nearest_is_held():
     path = RUNS / "issue111eo" / "drafts" / "04_cuttlebone_holder.fix1.aidl"
     (n,) = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0518"]
     assert n.severity == "note" and "lines up with one of `holder.frame`" in n.message
+
+
+def test_run_ep_a_smooth_splines_kerf_offset_has_no_hairpin():
+    """Run ep's knife scale: a smooth closed Spline with `kerf 0.15 mm` was E0504 "a slot or
+    notch ... 1.68e-05 mm into the material" (and, moved, "the arc of radius 3.04e-06 mm"):
+    across an inflection the biarc fit doubled back in a hairpin of radius 8e-6 mm that
+    turned half a circle, within 1e-4 mm in position, and the kerf's offset turned it inside
+    out.  Every arc of the fit now turns as the curve does; the kerf applies."""
+    from aidl_lang.geometry.shapes.biarc import as_arcs
+    from aidl_lang.geometry.shapes.curves import Arc
+    path = RUNS / "issue111ep" / "drafts" / "06_knife_scales.attempt1.aidl"
+    r = aidl_lang.compile(path=str(path))
+    assert r.ok and not _errors(r)
+    src = ("profile = [(0, 13), (30, 14), (60, 14.5), (90, 13.5), (106, 13), (112, 8), "
+           "(113, 0),\n           (111, -8), (102, -12), (80, -13.5), (60, -16.5), (35, -15), "
+           "(12, -13.2), (0, -13)]\nsolid right {\n    outline = Spline(profile, closed=true, "
+           "corners=[0, 13])\n}\n")
+    (p,) = aidl_lang.compile(source=src).output.parts
+    lp, _ = as_arcs(p.loops[0])
+    arcs = [s for s in lp.segments if isinstance(s, Arc)]
+    assert min(a.radius for a in arcs) > 1.0 and max(abs(a.sweep) for a in arcs) < 0.5
+    assert aidl_lang.compile(source="kerf 0.15 mm\n" + src).ok

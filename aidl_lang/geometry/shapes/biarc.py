@@ -24,6 +24,11 @@ from .curves import Arc, EllipticArc, Line, Spline
 BIARC_TOL = 1e-4      # mm: the stated bound between the written arcs and the true curve
 SAMPLES = 12          # points of each piece where the deviation is measured
 MAX_DEPTH = 24
+# rad: an arc of a piece turning more is split: a piece across an inflection can give a biarc
+# that doubles back in a hairpin of radius 1e-5 mm, within the bound in position yet a spike
+# the kerf's offset turns inside out (run ep's knife scale: E0504 at a smooth spline)
+MAX_SWEEP = math.pi / 2
+KINK = math.radians(5)   # rad: the most an arc under the bound in radius may turn
 
 
 def _unit(v):
@@ -88,6 +93,14 @@ def _biarc(e, t0: float, t1: float, sign: float):
     return [first, second]
 
 
+def _smooth(c, tol: float) -> bool:
+    """Arc ``c`` (or a Line) turns as a smooth curve's piece may: at most :data:`MAX_SWEEP`,
+    and, when its radius is under ``tol``, by no more than :data:`KINK` (a tiny arc turning
+    more is a corner the curve does not have, which a kerf's offset turns inside out)."""
+    sweep = abs(getattr(c, "sweep", 0.0))
+    return sweep <= MAX_SWEEP and (c.radius >= tol or sweep <= KINK) if sweep else True
+
+
 def _error(e, t0: float, t1: float, arcs) -> float:
     worst = 0.0
     for i in range(1, SAMPLES):
@@ -120,7 +133,8 @@ def _fit(e, t0: float, t1: float, sign: float, n0: int, tol: float, what: str) -
     while stack:
         b, a, depth = stack.pop()
         arcs = _biarc(e, a, b, sign)
-        if arcs is not None and _error(e, a, b, arcs) <= tol / 2:
+        if arcs is not None and all(_smooth(c, tol) for c in arcs) \
+                and _error(e, a, b, arcs) <= tol / 2:
             out += arcs
             continue
         if depth >= MAX_DEPTH:
