@@ -365,3 +365,17 @@ def test_run_ep_a_smooth_splines_kerf_offset_has_no_hairpin():
     arcs = [s for s in lp.segments if isinstance(s, Arc)]
     assert min(a.radius for a in arcs) > 1.0 and max(abs(a.sweep) for a in arcs) < 0.5
     assert aidl_lang.compile(source="kerf 0.15 mm\n" + src).ok
+
+
+def test_run_em_a_thumb_notch_on_a_pockets_rim_is_one_opening_meant():
+    """Run em's clay extruder dies: a 10 mm circle centred on each 25.6 mm pocket's rim, in
+    the pocket's hole, a thumb notch: W0512 x12 "overlap ... so they cut one opening", its
+    hint moving the notch 5.5 mm off the pocket.  A drill gauge's two circles too close
+    (one size, a shallow overlap) are still said."""
+    path = RUNS / "issue111em" / "run" / "07_clay_extruder_dies.first_valid.aidl"
+    assert not [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0512"]
+    src = ("solid gauge {\n    body = Rectangle(center=(0, 0), width=80, height=30)\n"
+           "    hole drills {\n        a = Circle(center=(-10, 0), diameter=8)\n"
+           "        b = Circle(center=(-3, 0), diameter=7)\n    }\n}\n")
+    (w,) = [d for d in aidl_lang.compile(source=src).diagnostics if d.code == "W0512"]
+    assert "overlap by" in w.message

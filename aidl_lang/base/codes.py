@@ -983,8 +983,9 @@ gauge's holes written out one by one) that overlap partly (neither inside the ot
 reported the same way, with the depth of the overlap, the common area and how far to move
 one; other shapes of one hole (a keyhole's circle and slot, a cross of two rectangles) may
 overlap by design, and so may two circles that both overlap another shape of the hole (a
-bone: a bar and two circles at each end, one figure); a figure-eight of two circles is drawn
-as one Slot when it is meant.
+bone: a bar and two circles at each end, one figure), and so may a small circle centred on a
+round opening's rim, a notch (run em's clay dies: a 10 mm thumb notch on each 25.6 mm
+pocket); a figure-eight of two circles is drawn as one Slot when it is meant.
 One opening meant of several overlapping shapes (a scalloped bite of three circles) is said
 with `AllowOverlap(a, b, c)` (or `AllowOverlap(c)` for a loop's list) in the hole, as the hint
 writes: the shapes it names together are not compared. Copies that only graze (every overlap
