@@ -379,3 +379,31 @@ def test_run_em_a_thumb_notch_on_a_pockets_rim_is_one_opening_meant():
            "        b = Circle(center=(-3, 0), diameter=7)\n    }\n}\n")
     (w,) = [d for d in aidl_lang.compile(source=src).diagnostics if d.code == "W0512"]
     assert "overlap by" in w.message
+
+
+def test_runs_ei_em_engraved_text_under_another_part_is_a_note():
+    """Run em's pocket mirror: "with love, Mum" engraved on the back's face that lies against
+    the ring glued on it, unseen assembled and said by no message; run ei's star tree: part
+    of a greeting under the disc glued on top.  A note (W0532), one per pair of parts: a
+    volvelle's years under its turning disc are meant (run dq: 77 texts, one note)."""
+    path = RUNS / "issue111em" / "run" / "08_pocket_mirror.first_valid.aidl"
+    (n,) = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0532"]
+    assert n.severity == "note"
+    assert "`mirror.back.words.t` (\"with love, Mum\") of `mirror.back` lies under " \
+        "`mirror.ring` as placed (16 of 16 points" in n.message
+    assert "turn `back` with its `Place` (`face=`, `up=`)" in n.hint
+    path = RUNS / "issue111dq" / "run" / "06_zodiac_wheel.first_valid.aidl"
+    (n,) = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0532"]
+    assert n.message.startswith("assembled, 77 engraved texts of `zodiac_wheel.base` lie under")
+    assert n.hint.startswith("if `top` turns, slides or lifts off, nothing is needed")
+    # the code's own example
+    src = ('assembly mirror {\n    solid back {\n        disc = Circle(center=(0, 0), radius=30)\n'
+           '        drawing words { t = Text("EMMA", position=(0, 0), size=8, valign="middle") }\n'
+           '    }\n    solid glass { c = Circle(center=(0, 0), radius=25) }\n'
+           '    RightOf(glass, back, gap=5)\n'
+           '    Place(back, position=(0, 0, 0))\n    Place(glass, position=(0, 0, 3))\n}\n')
+    assert [d.code for d in aidl_lang.compile(source=src).diagnostics
+            if d.code.startswith("W05")] == ["W0532"]
+    # moved off the ring's face: nothing
+    assert not [d for d in aidl_lang.compile(source=src.replace("(0, 0, 3)", "(0, 0, -3)"))
+                .diagnostics if d.code == "W0532"]

@@ -1630,6 +1630,30 @@ states its `kerf` is judged by `aidl render -o x.svg` too.
     solid a { r = Rectangle(center=(0, 0), width=12, height=12) }
     solid b { r = Rectangle(center=(15, 0), width=12, height=12) }   # 3 mm apart: W0531
 """),
+    "W0532": ("engraved text under another part (note)", """
+A note, not a warning: the program places its parts in 3D (`Place`), and engraved `Text` of a
+part lies under another part as placed: two or more of 16 points along its letters, just off
+the face the laser engraves (the face up on the sheet), lie inside the other part's solid. If
+that part turns, slides or lifts off (a volvelle's disc with its window, a pantograph's arm, a
+lid), nothing is needed. If it is fixed there, the text cannot be seen (runs ei and em: a
+pocket mirror's back engraved facing the ring glued on it, a greeting under the disc glued on
+top; only the pictures showed it): the laser engraves the face that is up on the sheet, so turn
+the part with its `Place` (`face=`, `up=`) so that face looks out, mirroring the text
+(`Mirrored`) if it must read from the other side, or move the text clear. One note per pair
+of parts, naming the texts. Other engraved marks are not judged: an outline engraved where a
+part is glued is a guide.
+
+    assembly mirror {
+        solid back {
+            disc = Circle(center=(0, 0), radius=30)
+            drawing words { t = Text("EMMA", position=(0, 0), size=8, valign="middle") }
+        }
+        solid glass { c = Circle(center=(0, 0), radius=25) }
+        RightOf(glass, back, gap=5)        # on the sheet: beside it
+        Place(back, position=(0, 0, 0))
+        Place(glass, position=(0, 0, 3))   # assembled: on the engraved face, W0532
+    }
+"""),
     "W0130": ("drawing entities skipped", """
 Entities of a drawing that have no exact form here are skipped and counted, named by kind:
 rational or high-degree splines, hatches, dimensions, images, a mirrored or skewed SVG text

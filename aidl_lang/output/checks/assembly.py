@@ -110,6 +110,7 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                      f"{c.volume:.3g} mm^3, {c.depth:.3g} mm deep, {where}", at(c.b) or sa,
                      labels=labels, hint=_collision_hint(d, c))
     _say_together(together, sink)
+    _check_covered_text(d, bodies, sink)
     from ...base.diagnostics import in_stdlib
 
     def templates(name) -> bool:
@@ -438,3 +439,87 @@ class _Pins:
             if max(a, b) <= 3 * min(a, b) and 1e-3 < along[i, j] <= PIN_SPAN:
                 return nearest, a
         return None
+
+
+COVER_EPS = 0.2         # mm above the engraved face where a part lying on it is looked for
+COVER_PROBES = 16       # points of a text's strokes looked at
+COVER_SHARE = 0.125     # of them under another part (2 of 16): the text is covered
+
+
+def _check_covered_text(d: Drawing, bodies, sink: DiagnosticSink) -> None:
+    """W0532, a note, for the engraved texts of a placed, unbent part whose face (the one the
+    laser engraves, z = the thickness) another part covers as placed, in whole or in part: at
+    least :data:`COVER_SHARE` of :data:`COVER_PROBES` points of its strokes, lifted
+    :data:`COVER_EPS` off the face, lie inside another part's solid (runs ei, em: a mirror's
+    back engraved facing the ring glued on it; a greeting under the disc glued on top; the
+    pictures showed it, no message did).  A note, one per pair of parts: in 228 corpus
+    programs with `Place` and `Text`, 19 have such texts and most are meant (a volvelle's
+    years under its turning disc, 77 of them; a pantograph's scales under its arms; labels
+    under a lift-off lid).  Other marks are left alone: an outline engraved where a part is
+    glued is a maker's guide."""
+    import manifold3d as mf
+    import numpy as np
+    from ..part.build.sunk import DEFAULT_THICKNESS
+    from .common import _part_of, _part_roots
+    from .marks.engravings import _copy_label, _polyline
+    where = getattr(d, "placement", None) or {}
+    bends = getattr(d, "bends", None) or {}
+    if not where or len(bodies) < 2:
+        return
+    roots = _part_roots(d)
+    pts: dict = {}
+    for style, item, g in d.strokes:
+        if g is None or style == "cut" or g.kind != "Text":
+            continue
+        part = _part_of(g.owner, roots)
+        if part is None or part.kind != "solid" or part.path not in where \
+                or bends.get(part.path):
+            continue
+        P = _polyline(item)
+        if len(P):
+            pts.setdefault((g, part.path), []).append(np.asarray(P, dtype=float))
+    index = {bodies.name(i): i for i in range(len(bodies))}
+    covered: dict = {}              # (part, the part over it) -> [(text, points under, of)]
+    for (g, name), runs in pts.items():
+        P = np.concatenate(runs)
+        P = P[np.linspace(0, len(P) - 1, min(COVER_PROBES, len(P))).astype(int)]
+        t = float(d.thickness.get(name) or DEFAULT_THICKNESS)
+        M = np.asarray(where[name], dtype=float)
+        Q = np.column_stack([P, np.full(len(P), t + COVER_EPS)]) @ M[:3, :3].T + M[:3, 3]
+        lo, hi = Q.min(axis=0) - 0.1, Q.max(axis=0) + 0.1
+        e = 0.05
+        probes = None
+        for j in range(len(bodies)):
+            other = bodies.name(j)
+            if other == name or other not in index:
+                continue
+            b = bodies.box(j)
+            if (np.asarray(b[3:]) < lo).any() or (np.asarray(b[:3]) > hi).any():
+                continue
+            if probes is None:
+                probes = mf.Manifold.batch_boolean(
+                    [mf.Manifold.cube((e, e, e), True).translate(tuple(q)) for q in Q],
+                    mf.OpType.Add)
+            n = int(round((probes ^ bodies[j][1]).volume() / (e ** 3)))   # probes inside
+            if n >= math.ceil(COVER_SHARE * len(Q) - 1e-9):
+                covered.setdefault((name, other), []).append((g, n, len(Q)))
+                break
+    for (name, other), rows in covered.items():
+        g, n, m = rows[0]
+        short, cover = name.split(".")[-1], other.split(".")[-1]
+        what = (f"the engraved text `{_copy_label(g)}` (\"{g.data.get('text', '')}\") of "
+                f"`{name}` lies under `{other}` as placed ({n} of {m} points of its letters)"
+                if len(rows) == 1 else
+                f"{len(rows)} engraved texts of `{name}` lie under `{other}` as placed "
+                f"(`{_copy_label(g)}`, \"{g.data.get('text', '')}\", and "
+                + ", ".join(f"`{_copy_label(r[0], short=True)}`" for r in rows[1:4])
+                + (", ..." if len(rows) > 4 else "") + ")")
+        sink.add(Diagnostic(
+            "W0532", f"assembled, {what}: {'it shows' if len(rows) == 1 else 'they show'} "
+            f"only where `{cover}` moves off (a dial's window, a lid); fixed there, "
+            f"{'it' if len(rows) == 1 else 'they'} cannot be seen", g.span, "note",
+            hint=f"if `{cover}` turns, slides or lifts off, nothing is needed; if it is fixed "
+                 "there: the laser engraves the face that is up on the sheet, so turn "
+                 f"`{short}` with its `Place` (`face=`, `up=`) so that face looks out (the "
+                 "text mirrored, `Mirrored`, if it must read from the other side), or move "
+                 f"the text clear of `{cover}`"))
