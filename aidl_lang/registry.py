@@ -890,29 +890,6 @@ def rename_args(entry: Entry, variant: tuple[Arg, ...], npos: int,
     return out
 
 
-# argument names a model guesses for something the language does not have: the E0105 hint
-# says so instead of a did-you-mean on the spelling (`font` is not `on`); issue 61
-ARG_NOTES: dict[tuple[str, str], str] = {
-    ("Text", n): "a Text's font is `font=`: a family with its style after a colon "
-                 "(`font=\"sans:Bold Italic\"`, `\"serif\"`) or a .ttf/.otf/.ttc file; "
-                 "without it the letters are the single-stroke engraving font"
-    for n in ("font_family", "family", "typeface", "fontname", "font_name", "face",
-              "bold", "italic", "style")}
-# `corner=` of a RoundedRectangle (run am's hose guide: `corner=(40, 20)` was offered
-# `corner_r`, a radius): a point or a radius, said both ways
-ARG_NOTES[("RoundedRectangle", "corner")] = (
-    "a corner point is `bottom_left=(x, y)` (the width and height run from it; or "
-    "`center=`), a corner's rounding `corner_radius=`")
-# a form's argument given with another form's (E0104): what each goes with (run am's
-# `RoundedRectangle(corner=(40, 20), width=20, height=30)`, once `corner=` had a form of its own)
-FORM_NOTES: dict[tuple[str, str], str] = {
-    (k, "corner"): "`corner=` goes with `opposite=` (two opposite corners, which set the size); "
-                   "with `width` and `height` a corner point is `bottom_left=(x, y)` (or "
-                   "`center=`)" + (", a corner's rounding `corner_radius=`"
-                                   if k == "RoundedRectangle" else "")
-    for k in ("Rectangle", "RoundedRectangle")}
-
-
 def near_args(name: str, names: list[str]) -> list[str]:
     """Accepted argument names near ``name`` in spelling, for did-you-mean: none shorter than
     3 letters unless ``name`` is that short too (`font` is not `on`, though difflib says

@@ -18,8 +18,9 @@ import itertools
 
 from . import ast as A
 from .base.diagnostics import Diagnostic, DiagnosticSink, Fix, Label, did_you_mean
-from .registry import (ARG_NOTES, CONSTANTS, ENTRIES, FUNCTIONS, SYNONYMS, accepted_args,
-                       choose_variant, FORM_NOTES, UNITS_ANGLE, UNITS_LENGTH, lookup, near_args,
+from .library.arg_notes import ARG_NOTES, FORM_NOTES
+from .registry import (CONSTANTS, ENTRIES, FUNCTIONS, SYNONYMS, accepted_args,
+                       choose_variant, UNITS_ANGLE, UNITS_LENGTH, lookup, near_args,
                        template_param)
 from .library.sources import ImportRefused
 

@@ -107,7 +107,8 @@ class Calls:
             bad_kw = next((kw for kw in node.kwargs if kw.name not in ok), None)
             if bad_kw is not None:
                 from ..library.reference import entry_units_hint
-                from ..registry import ARG_NOTES, near_args
+                from ..library.arg_notes import ARG_NOTES
+                from ..registry import near_args
                 note = ARG_NOTES.get((entry.name, bad_kw.name))
                 raise EvalError("E0105", f"`{nm}` has no argument `{bad_kw.name}`", bad_kw.span,
                                 hint=(f"{note}\n" if note else "") +
