@@ -317,11 +317,16 @@ def test_runs_eg_ek_an_open_mortise_is_where_written_and_the_panel_may_widen():
 
 def test_run_ep_filled_shapes_that_touch_are_burnt_once():
     """Run ep's hydrant marker: W0513 "the laser burns that stretch twice" of filled shapes
-    sharing an edge (an area engraved filled is burnt once), and its hint would have drawn
-    them as open Polylines, the fill gone."""
+    sharing an edge (each area engraved filled is burnt once up to it), and its hint would
+    have drawn them as open Polylines, the fill gone."""
     (path,) = (RUNS / "issue111ep" / "run").glob("08_*.first_valid.aidl")
     r = aidl_lang.compile(path=str(path))
     assert r.ok and not [d for d in r.diagnostics if d.code == "W0513"]
+    # a stroke along a filled area's edge is burnt over it: still said (run bv's flag pole
+    # up its pennant's edge, which that run called real)
+    path = RUNS / "issue111bv" / "run" / "06_golf_divot_tool.first_valid.aidl"
+    (w,) = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0513"]
+    assert "`flag.pole`" in w.message or "pole" in w.message
 
 
 def test_run_en_one_slip_in_five_template_copies_is_one_warning():

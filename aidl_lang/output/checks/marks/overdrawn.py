@@ -163,9 +163,11 @@ def _marks_over_marks(d: Drawing, tick=None) -> tuple[dict, dict]:
             ga, gb = marks[a], marks[b]
             if ga.span is None or gb.span is None:
                 continue
-            if ga.data.get("fill") or gb.data.get("fill"):
-                continue        # an area engraved filled is burnt once, edge and all (run
-                #                 ep's hydrant marker: filled shapes that touch, "twice")
+            if ga.data.get("fill") and gb.data.get("fill"):
+                continue        # two areas engraved filled that share an edge: each burnt
+                #                 once up to it (run ep's hydrant marker, run bz's pines:
+                #                 "twice"); a stroke along a filled area's edge is burnt
+                #                 over it, deeper (run bv's flag pole on its pennant): said
             # the one more of whose strokes lies on the other is the one drawn again
             under, over_g = (ga, gb) if L / max(total[a], 1e-12) >= L / max(total[b], 1e-12) \
                 else (gb, ga)
