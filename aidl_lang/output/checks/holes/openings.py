@@ -478,6 +478,13 @@ def _inner(a: _Openings, i: int, j: int, common) -> int | None:
     return None
 
 
+def _apart(shape) -> bool:
+    """The part's final shape is in more than one piece: overlapping openings that cut it
+    apart are not meant, and no fix says so with `AllowOverlap` (run et's Maxwell wheel: six
+    windows run together cut the hub off the rim, W0504, and the fix would have hidden it)."""
+    return shape is not None and not shape.is_empty() and len(shape.decompose()) > 1
+
+
 def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
                      shapes: dict | None = None, d: Drawing | None = None,
                      shape=None) -> set:
@@ -546,7 +553,7 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
             continue
         if stmt and not unnamed \
                 and _copies_of_one(stmt, a.cuts[i - 1].hole, a.cuts[j - 1].hole) \
-                and depth >= max(t, MIN_WALL):
+                and depth >= max(t, MIN_WALL) and not _apart(shape):
             fix = _insert_fix(where, stmt, sink)     # copies that overlap deeply: meant
         elif d is not None and shape is not None and a.cuts and moves < MAX_MOVES \
                 and not _shared(d, s, a.cuts[j - 1].hole):
