@@ -412,3 +412,16 @@ def test_runs_ei_em_engraved_text_under_another_part_is_a_note():
     # moved off the ring's face: nothing
     assert not [d for d in aidl_lang.compile(source=src.replace("(0, 0, 3)", "(0, 0, -3)"))
                 .diagnostics if d.code == "W0532"]
+
+
+def test_runs_em_eo_a_part_drawn_off_its_own_origin_is_said():
+    """Run eo's blind-cord cleat: the spacer's block drawn at (0, -40) in its own frame and
+    placed at its origin hung 40 mm below the front plate; W0518's note told to move the
+    front plate (its screw holes 22 mm out of line).  Run em's rolling-pin rings likewise,
+    69 mm apart.  The note says whose material lies where, from its own (0, 0)."""
+    path = RUNS / "issue111eo" / "run" / "01_blind_cord_cleat.first_valid.aidl"
+    (n,) = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0518"]
+    assert "`cleat.spacer`'s material lies (0.0, -40.0) mm from its own (0, 0), the point " \
+        "its `Place` puts at `position=`" in n.message
+    assert n.hint.startswith("if `spacer` was drawn where it stands beside the others, draw "
+                             "it about its own (0, 0)")

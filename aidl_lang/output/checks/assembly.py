@@ -181,6 +181,16 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                     f"move `{g.part}` {g.gap:.3g} mm towards `{g.nearest}` with its `Place` "
                     "(or, where a tab falls short of its slot, lengthen the tab)")
         span = at(g.part)           # (a part of no statement is said on its own)
+        off = next(((n, o) for n in (g.part, g.nearest) if (o := _off_origin(d, n))), None)
+        if off is not None:
+            # runs em, eo: a spacer drawn at (0, -40) in its own frame and placed at its
+            # origin hung 40 mm below its plate; the note said to move the plate
+            n, (ox, oy) = off
+            said = (said[0], said[1] + f"; `{n}`'s material lies ({ox:.1f}, {oy:.1f}) mm "
+                    "from its own (0, 0), the point its `Place` puts at `position=`",
+                    f"if `{n.split('.')[-1]}` was drawn where it stands beside the others, "
+                    "draw it about its own (0, 0) (or add that offset to its `Place`'s "
+                    "position); " + said[2])
         groups.setdefault((span, said[0], g.part if span is None else ""), []).append(
             (g, *said[1:]))
     for (span, severity, _), rows in groups.items():
@@ -192,6 +202,27 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
             message += (f"; so do {len(rows) - 1} more part{'s' if len(rows) > 2 else ''} of "
                         f"this statement ({names}{', ...' if len(rows) > 4 else ''})")
         sink.add(Diagnostic("W0518", message, span, severity, hint=hint))
+
+
+def _off_origin(d: Drawing, name: str):
+    """``(dx, dy)`` mm from placed part ``name``'s own origin (its frame's (0, 0), which its
+    `Place` puts at `position=`) to the centre of its material's box, when the origin lies
+    outside that box by more than half the box's larger side; else None."""
+    import numpy as np
+    s = d.part_of.get(name)
+    pl = getattr(s, "placement", None)
+    M = (getattr(d, "placement", None) or {}).get(name)
+    part = next((p for p in d.parts if p.name == name), None)
+    if pl is None or M is None or part is None or part.shape.is_empty():
+        return None
+    M = np.asarray(M, dtype=float)
+    origin = M[:3, :3].T @ (np.asarray(pl[0], dtype=float) - M[:3, 3])   # on the sheet
+    x0, y0, x1, y1 = part.shape.bounds()
+    cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+    out = max(x0 - origin[0], origin[0] - x1, y0 - origin[1], origin[1] - y1)
+    if out <= max(x1 - x0, y1 - y0) / 2:
+        return None
+    return float(cx - origin[0]), float(cy - origin[1])
 
 
 def check_routed_fit(d: Drawing, output, diameter: float, relief: str, sink: DiagnosticSink,
