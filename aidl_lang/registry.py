@@ -379,7 +379,7 @@ _DEFS = {
     "Vertical": _c([A("a", "geometry"), A("b", "point", None)],
                    doc="A line, or the two points a and b, are vertical."),
     "Fixed": _c([A("a", "any")],
-                doc="Hold a point, geometry or structure where it starts."),
+                doc="Hold a point, geometry or structure (a list: each) where it starts."),
     "Distance": _c([A("a", "geometry"), A("b", "geometry"), A("distance", "length")],
                    doc="Distance between two points, from a point to a line, or between two "
                        "parallel lines (they are made parallel)."),

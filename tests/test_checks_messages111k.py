@@ -425,3 +425,20 @@ def test_runs_em_eo_a_part_drawn_off_its_own_origin_is_said():
         "its `Place` puts at `position=`" in n.message
     assert n.hint.startswith("if `spacer` was drawn where it stands beside the others, draw "
                              "it about its own (0, 0)")
+
+
+def test_run_er_fixed_of_a_loops_list_holds_each():
+    """Run er's Geneva drive: `Fixed(slot)` after the loop that made the slots was E0108
+    "Fixed takes a point, geometry or structure, got list", its hint `Fixed(a: any)`."""
+    path = RUNS / "issue111er" / "drafts" / "07_geneva_drive.attempt1.aidl"
+    r = aidl_lang.compile(path=str(path))
+    assert not [e for e in _errors(r) if "Fixed takes" in e.message]
+    src = ("solid p {\n    body = Rectangle(center=(0, 0), width=40, height=20)\n"
+           "    for i in range(3) {\n        hole slot { r = Rectangle(center=(i * 10 - 10, 0), "
+           "width=4, height=8) }\n    }\n    Fixed(slot)\n}\n")
+    # each slot's frame held: two equations a slot
+    r = aidl_lang.compile(source=src)
+    fixed = [c for c in r.compiled.model.constraints if c.kind == "Fixed"]
+    assert r.ok and len(fixed) == 1 and len(fixed[0].equations) == 6
+    (e,) = _errors(aidl_lang.compile(source=src.replace("Fixed(slot)", "Fixed([1, 2])")))
+    assert "a list of them" in e.message

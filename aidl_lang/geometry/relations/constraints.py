@@ -146,6 +146,10 @@ def vertical(ctx, a, b=None, **_):
 
 
 def fixed(ctx, a, **_):
+    if isinstance(a, (list, tuple)) and a and all(
+            isinstance(x, (PV, GeomRef, StructRef, list, tuple)) for x in a):
+        # a loop's list (run er's Geneva drive: `Fixed(slot)` after the loop): each item
+        return [e for x in a for e in fixed(ctx, x)]
     pts = []
     if isinstance(a, PV):
         pts = [a]
@@ -159,7 +163,8 @@ def fixed(ctx, a, **_):
         return [Equation(var(s.fx) - ctx.value_of(var(s.fx))),
                 Equation(var(s.fy) - ctx.value_of(var(s.fy)))]
     else:
-        raise ConstraintError(f"Fixed takes a point, geometry or structure, got {type_name(a)}")
+        raise ConstraintError(f"Fixed takes a point, geometry or structure (or a list of "
+                              f"them), got {type_name(a)}")
     out = [] if not isinstance(a, GeomRef) else eqs
     for p in pts:
         out += [Equation(p.x - _val(ctx, p.x)), Equation(p.y - _val(ctx, p.y))]
