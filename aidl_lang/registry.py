@@ -508,7 +508,7 @@ _DEFS = {
                             "copies at the others; what is Fixed stays put (a Fixed original "
                             "pulls the plate)."),
     "CutInto": _c([A("hole", "any"), A("part", "boxed")], cat="operation",
-                  doc="A hole (or drawing) declared in an assembly cuts (engraves) a solid "
+                  doc="A hole or cut (or drawing) declared in an assembly cuts (engraves) a solid "
                       "of it, e.g. a template instance's part (`CutInto(lid_hole, box.lid)`: "
                       "a hole in finger_box's lid; a pattern's copies follow); written "
                       "where both are, placed as usual."),

@@ -442,3 +442,26 @@ def test_run_er_fixed_of_a_loops_list_holds_each():
     assert r.ok and len(fixed) == 1 and len(fixed[0].equations) == 6
     (e,) = _errors(aidl_lang.compile(source=src.replace("Fixed(slot)", "Fixed([1, 2])")))
     assert "a list of them" in e.message
+
+
+def test_run_es_a_cut_given_to_a_templates_part_cuts_through_it():
+    """Run es's leprechaun trap: a trapdoor cut on three sides of a finger box's lid,
+    `cut trapdoor { ... }` then `CutInto(trapdoor, box.lid)`, was E0108 "`CutInto` cuts with
+    a hole structure (or engraves a drawing), got a cut structure": no way to cut a slit
+    into a template's panel.  Its open curves are now the lid's through-cuts."""
+    src = ('import "std/boxes.aidl"\nassembly trap {\n    box = finger_box(length=160 mm, '
+           'depth=120 mm, height=60 mm, thickness=3 mm)\n    cut trapdoor {\n'
+           '        u = Polyline([(-49, 35), (35, 35), (35, -35), (-49, -35)])\n    }\n'
+           '    Rigid(trapdoor)\n    Coincident(trapdoor.u.points[1], box.lid.bb.center + '
+           '(35 mm, 35 mm))\n    CutInto(trapdoor, box.lid)\n}\n')
+    r = aidl_lang.compile(source=src)
+    assert r.ok and not [d for d in r.diagnostics if d.severity != "note"]
+    through = r.compiled.drawing.through
+    assert [(th.geometry.label, th.part.path) for th in through] == \
+        [("trap.trapdoor.u", "trap.box.lid")]
+    # the lid's outline is still one loop (the U frees nothing) and the flap's line is cut
+    (lid,) = [p for p in r.output.parts if p.name == "trap.box.lid"]
+    assert len(lid.loops) == 1
+    path = RUNS / "issue111es" / "drafts" / "06_leprechaun_trap.attempt1.aidl"
+    errs = _errors(aidl_lang.compile(path=str(path)))
+    assert [e.code for e in errs] == ["E0405"]          # the model's own slip, next

@@ -22,21 +22,22 @@ def cut_into(conv, node, spans):
             cut_into(dict(conv, hole=one), node, spans)
         return None
     hspan, pspan = spans.get("hole", node.span), spans.get("part", node.span)
-    if not isinstance(h, StructRef) or h.struct.kind not in ("hole", "drawing"):
-        raise EvalError("E0108", f"`CutInto` cuts with a hole structure (or engraves a "
-                        f"drawing), got {_a(type_name(h))}", hspan,
-                        hint="declare `hole NAME { ... }` (or `drawing NAME { ... }`) "
-                             "beside the part's instance and write `CutInto(NAME, box.lid)`")
+    if not isinstance(h, StructRef) or h.struct.kind not in ("hole", "drawing", "cut"):
+        raise EvalError("E0108", f"`CutInto` cuts with a hole or a cut structure (or engraves "
+                        f"a drawing), got {_a(type_name(h))}", hspan,
+                        hint="declare `hole NAME { ... }` (`cut NAME { ... }`, `drawing NAME "
+                             "{ ... }`) beside the part's instance and write `CutInto(NAME, "
+                             "box.lid)`")
     if not isinstance(part, StructRef) or part.struct.kind != "solid":
         raise EvalError("E0108", f"`CutInto` cuts into a solid, got {_a(type_name(part))}",
                         pspan, hint="name a solid part, e.g. `box.lid` of "
                                     "`box = finger_box(...)` (`aidl docs finger_box` "
                                     "lists its parts)")
     hs, ps = h.struct, part.struct
-    what = "hole" if hs.kind == "hole" else "drawing"
+    what = hs.kind                      # hole, cut or drawing
     if hs.parent is None or hs.parent.kind != "assembly":
         where = hs.parent.path if hs.parent is not None else hs.path
-        raise EvalError("E0108", f"`{hs.path}` already {'cuts' if what == 'hole' else 'lies on'}"
+        raise EvalError("E0108", f"`{hs.path}` already {'lies on' if what == 'drawing' else 'cuts'}"
                         f" `{where}`, the {hs.parent.kind if hs.parent else 'structure'} it is "
                         f"declared in: `CutInto` is for a {what} declared in an assembly",
                         hspan, hint=f"declare the {what} in the assembly that holds the "

@@ -413,6 +413,12 @@ class Renderer(Faces):
             for c in s.cut_by:              # `CutInto(c, s)`: a hole of an assembly cuts s
                 if c.kind == "drawing":     # (a drawing is engraved on it)
                     self.drawing(c, out)
+                elif c.kind == "cut":       # (a cut's lines cut through it, its loops holes)
+                    cf = self.cut_faces(c, out)
+                    out.shapes[c] = self.union(cf, c)
+                    if cf:
+                        holes.append((c, out.shapes[c]))
+                    self.current = s
                 else:
                     holes.append((c, self.shape(c, out)))
         self.current = s
