@@ -465,3 +465,24 @@ def test_run_es_a_cut_given_to_a_templates_part_cuts_through_it():
     path = RUNS / "issue111es" / "drafts" / "06_leprechaun_trap.attempt1.aidl"
     errs = _errors(aidl_lang.compile(path=str(path)))
     assert [e.code for e in errs] == ["E0405"]          # the model's own slip, next
+
+
+def test_run_es_a_drawings_hole_hiding_a_whole_shape_is_said():
+    """Run es's garden gnome: the hole meant to keep the beard's lines off the nose's area
+    hid the whole nose (a Circle of the same drawing), and no message said so."""
+    path = RUNS / "issue111es" / "run" / "04_garden_gnome.first_valid.aidl"
+    (w,) = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0533"]
+    assert "`gnome_kit.gnome.face.n` of drawing `gnome_kit.gnome.face` is hidden whole by " \
+        "its hole `gnome_kit.gnome.face.under_nose`" in w.message
+    src = ("solid tag {\n    body = Rectangle(center=(0, 0), width=60, height=40)\n"
+           "    drawing face {\n        nose = Circle(center=(0, 0), radius=5)\n"
+           "        hole trim { r = Rectangle(center=(0, 0), width=20, height=20) }\n    }\n}\n")
+    assert [d.code for d in aidl_lang.compile(source=src).diagnostics
+            if d.code.startswith("W05")] == ["W0533"]
+    # a loop's copies inside the masked box: meant (grid lines round a label)
+    grid = src.replace("        nose = Circle(center=(0, 0), radius=5)\n",
+                       "        nose = Circle(center=(0, 0), radius=5)\n        for i in "
+                       "range(5) {\n            l = Line((-25, -8 + 4 * i), (25, -8 + 4 * i))\n"
+                       "        }\n")
+    codes = [d.code for d in aidl_lang.compile(source=grid).diagnostics]
+    assert codes.count("W0533") == 1

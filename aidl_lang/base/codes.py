@@ -1654,6 +1654,19 @@ part is glued is a guide.
         Place(glass, position=(0, 0, 3))   # assembled: on the engraved face, W0532
     }
 """),
+    "W0533": ("a drawing's hole hides a whole shape", """
+A hole inside a `drawing` hides the engraving under it (a label's box kept clear of the lines
+that cross it); here it covers every line of one of the drawing's own shapes, so that shape
+is not engraved at all (run es's garden gnome: the hole meant to trim the beard hid the whole
+nose, and no message said so). Move or shrink the hole so that it leaves the shape, or draw
+the shape in a drawing of its own beside this one, which the hole does not hide. The copies a
+loop makes are not judged (grid lines inside a masked label's box are meant).
+
+    drawing face {
+        nose = Circle(center=(0, 0), radius=5)
+        hole trim { r = Rectangle(center=(0, 0), width=20, height=20) }   # hides the nose
+    }
+"""),
     "W0130": ("drawing entities skipped", """
 Entities of a drawing that have no exact form here are skipped and counted, named by kind:
 rational or high-degree splines, hatches, dimensions, images, a mirrored or skewed SVG text

@@ -84,6 +84,7 @@ def masked(R, s, masks: list, out, mark: tuple[int, int]) -> None:
     drawn = out.strokes[mark[0]:]
     g0 = drawn[0][2] if drawn else None
     del out.strokes[mark[0]:], out.lines[mark[1]:]
+    before = {id(g): g for _, _, g in drawn if g is not None}     # what drew, to judge
     filled = list({id(g): g for style, _, g in drawn if style == "fill"}.values())
     drawn = [d for d in drawn if d[0] != "fill"]
     areas = [R.face(g) for g in filled]
@@ -108,6 +109,7 @@ def masked(R, s, masks: list, out, mark: tuple[int, int]) -> None:
                 f"nothing (a hole in a drawing hides the engraving under it)"),
                 "move the hole over the lines it should hide, or delete it (a hole in a "
                 "drawing cuts no material)", "W0526"))
+    _hidden_whole(R, s, masks, before, drawn, filled, areas)
     for g, area in zip(filled, areas):
         for lp in (R.exact.loops(area) if area is not None and not area.is_empty() else []):
             pl = lp.points()
@@ -121,6 +123,27 @@ def masked(R, s, masks: list, out, mark: tuple[int, int]) -> None:
         else:
             out.strokes.append((style, stroke, g))
             out.lines.append((style, _polyline_of(stroke)))
+
+
+def _hidden_whole(R, s, masks, before: dict, drawn: list, filled: list, areas: list) -> None:
+    """W0533 for a shape of drawing ``s`` whose every line its holes ``masks`` hide (run es's
+    snowman: the hole meant to trim the hat hid the whole nose, and no message said so); a
+    loop's copies are left alone (grid lines inside a masked label's box are meant)."""
+    left = {id(g) for _, _, g in drawn if g is not None}
+    left |= {id(g) for g, a in zip(filled, areas) if a is not None and not a.is_empty()}
+    for k, g in before.items():
+        if k in left or g.construction or g.owner is not s:
+            continue
+        if g.span is not None and sum(1 for h in s.geometry if h.span == g.span) > 1:
+            continue                        # one of a loop's copies
+        names = ", ".join(f"`{c.path}`" for c in masks[:2])
+        R.shape_errors.append((g, (
+            f"`{g.label}` of drawing `{s.path}` is hidden whole by its hole "
+            f"{names}: a hole in a drawing hides the engraving under it, so none of "
+            f"`{g.name or g.kind}` is engraved"),
+            f"move or shrink the hole so that it leaves `{g.name or g.kind}` (or give the "
+            "shape a drawing of its own, beside this one, which the hole does not hide)",
+            "W0533"))
 
 
 def _first_geometry(s):
