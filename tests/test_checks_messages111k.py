@@ -486,3 +486,14 @@ def test_run_es_a_drawings_hole_hiding_a_whole_shape_is_said():
                        "        }\n")
     codes = [d.code for d in aidl_lang.compile(source=grid).diagnostics]
     assert codes.count("W0533") == 1
+
+
+def test_run_et_no_allowoverlap_fix_for_openings_that_cut_the_part_apart():
+    """Run et's Maxwell wheel: six ArcSlot windows 78 degrees long on a 60 degree pitch ran
+    together and cut the hub off the rim (W0504); W0508's suggested fix `AllowOverlap(window,
+    windows)` would have hidden it.  The warnings stay, without that fix."""
+    path = RUNS / "issue111et" / "run" / "07_maxwell_wheel.first_valid.aidl"
+    ds = aidl_lang.compile(path=str(path)).diagnostics
+    assert "W0504" in [d.code for d in ds]
+    w0508 = [d for d in ds if d.code == "W0508"]
+    assert w0508 and all(d.fix is None for d in w0508)
