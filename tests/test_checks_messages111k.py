@@ -497,3 +497,18 @@ def test_run_et_no_allowoverlap_fix_for_openings_that_cut_the_part_apart():
     assert "W0504" in [d.code for d in ds]
     w0508 = [d for d in ds if d.code == "W0508"]
     assert w0508 and all(d.fix is None for d in w0508)
+
+
+def test_run_et_numbers_corner_to_corner_on_a_dial_read_apart():
+    """Run et's panel meter: "30" 1.49 mm from "25" corner to corner (the limit half the
+    text size, 1.50 mm) was W0513 "read as one string"; on a slant they read apart (and
+    "10" and "15", nearer side by side, were not said).  Corner to corner only a touch is."""
+    path = RUNS / "issue111et" / "run" / "02_panel_meter_scale.first_valid.aidl"
+    assert not [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0513"]
+    side = ("solid p {\n    body = Rectangle(center=(0, 0), width=80, height=40)\n"
+            "    drawing d {\n        a = Text(\"25\", position=(0, 0), size=3)\n"
+            "        b = Text(\"30\", position=(X, Y), size=3)\n    }\n}\n")
+    def w(x, y):
+        src = side.replace("X", str(x)).replace("Y", str(y))
+        return [d for d in aidl_lang.compile(source=src).diagnostics if d.code == "W0513"]
+    assert w(4.0, 0) and not w(5.5, 4.4)          # beside: said; corner to corner: not

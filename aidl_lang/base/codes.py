@@ -1006,7 +1006,9 @@ its own frame, turned with it): two texts whose boxes overlap by more than 10% o
 one, or a mark running through a text's box (less a margin of a tenth of its size) over more
 than a quarter of its size. Two labels whose boxes come closer than half the text size (about a
 word space) run into each other and read as one string ("140130120" along a protractor's arc;
-single letters, as `text_on_arc` lays out, are not compared). A mark too close: it comes nearer
+single letters, as `text_on_arc` lays out, are not compared); two whose boxes lie corner to
+corner (no side of one facing the other: a dial's "25" and "30" on a slant) or one above the
+other read apart unless they come within 0.3 mm. A mark too close: it comes nearer
 the text's strokes than the text's clearance, a quarter of its size and at least 0.3 mm (the
 letters of a word stand 0.24 to 0.45 of the size apart, so a closer mark reads as one of its
 strokes; 0.3 mm is about an engraved line's width), or it enters the text's box by more than

@@ -154,7 +154,11 @@ def _check_text_overlap(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
             # pitch) never read as one string: only lines that touch are said
             (ui0, _, ui1, _), (uj0, _, uj1, _) = boxes[i][2], boxes[j][2]
             lines = abs(boxes[i][1] - boxes[j][1]) < 1e-9 and min(ui1, uj1) > max(ui0, uj0)
-            if lines:
+            # corner to corner (no side of one box faces the other's): a dial's "25" and
+            # "30" beside each other on a slant read apart (run et: 1.49 mm, said)
+            diagonal = min(bb[i][2], bb[j][2]) < max(bb[i][0], bb[j][0]) \
+                and min(bb[i][3], bb[j][3]) < max(bb[i][1], bb[j][1])
+            if lines or diagonal:
                 near = MIN_CLEAR
             # a figure whose box runs into a label's is said too (run dt: "0" of a map
             # scale into "1:50 000" below it, 0.25 mm over), single figures apart are not
