@@ -512,3 +512,16 @@ def test_run_et_numbers_corner_to_corner_on_a_dial_read_apart():
         src = side.replace("X", str(x)).replace("Y", str(y))
         return [d for d in aidl_lang.compile(source=src).diagnostics if d.code == "W0513"]
     assert w(4.0, 0) and not w(5.5, 4.4)          # beside: said; corner to corner: not
+
+
+def test_run_ex_a_count_with_a_unit_says_what_it_got():
+    """Run ex's peg board: `range(x / pitch)` with x a bare number in a list and pitch a
+    length was "range() needs plain whole numbers", its value and unit unsaid."""
+    src = ("pitch = 20 mm\nxs = [40, 80]\nsolid p {\n    body = Rectangle(center=(0, 0), "
+           "width=100, height=20)\n    for i in range(xs[0] / pitch) {\n        c = "
+           "Circle(center=(i * 5, 0), radius=1)\n    }\n}\n")
+    (e,) = _errors(aidl_lang.compile(source=src))
+    assert e.message == "range() needs plain whole numbers, got 2 per mm (a length^-1)"
+    assert "divide a length by a length" in e.hint
+    ok = src.replace("xs = [40, 80]", "xs = [40 mm, 80 mm]")
+    assert aidl_lang.compile(source=ok).ok

@@ -838,7 +838,20 @@ class Calls:
         q = self._q(v, sp)
         c = q.const()
         if c is None or q.dim != NUM:
-            raise EvalError("E0108", "range() needs plain whole numbers", sp)
+            # run ex's peg board: a count from `x / pitch` where x was a bare number in the
+            # file's unit and pitch a length: a number per mm, "needs plain whole numbers"
+            # with no word of what it got
+            from ..geometry.core.values import dim_name
+            per = {(-1, 0): " per mm", (1, 0): " mm", (0, 1): " rad"}.get(q.dim)
+            got = ("a value known only after solving" if c is None else
+                   f"{_fmt_num(c)}{per} (a {dim_name(q.dim)})" if per else
+                   f"a {dim_name(q.dim)}")
+            hint = ("a count is a plain number: divide a length by a length (`width / "
+                    "pitch`, both with units, or both bare) and round it (`floor(...)`)"
+                    if q.dim != NUM else "a count must be known before solving: compute it "
+                    "from numbers and params, not from a shape's solved size")
+            raise EvalError("E0108", f"range() needs plain whole numbers, got {got}", sp,
+                            hint=hint)
         if abs(c - round(c)) > 1e-9:
             raise EvalError("E0108", f"range() needs whole numbers, got {_fmt_num(c)}", sp)
         return int(round(c))
