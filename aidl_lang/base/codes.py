@@ -1120,7 +1120,9 @@ line across the part broken by a hole or a word: a router template's door-edge l
 closed mark with a side lying on the edge, run out at the cut (a toy track's filled grooves
 ending at the deck's ends: run dh), nor a filled mark (`fill=true`) run up to or along the
 edge: engraved to the cut, it is seen, and no sliver is left (run dq's moon phases, dark to the
-disc's rim); one that stops within 0.5 mm of it is warned. How much of a mark lies on the edge
+disc's rim); one that stops within 0.5 mm of it is warned; nor lines clipped to an area
+(`Intersect(area, lines)`, a hatch) that end on the edge where the area's edge is the cut (run
+eu's thread lines clipped to a reel's barrel). How much of a mark lies on the edge
 is measured along its length. Letters: a text's strokes (or a font's outlines) within 0.2 mm of the edge
 (letters set tight beside a hole on purpose, farther than that, are not warned); the warning
 gives the gap and how far to move the text. Move the mark inside, or leave it out: the cut already draws the edge.

@@ -551,6 +551,9 @@ def _check_meets_cut(part, shape, geoms, loops, sink: list) -> None:
             t = int(np.argmin(de))
             end, pm = q[t], q[t]
             gap, ej = de_of[(c, t)]
+        if end is not None and gap <= ENGRAVE_TOL and g.kind == "Intersect" and not g.closed:
+            continue        # a hatch clipped to an area runs out at its edge by design (run
+            #                 eu's pattern weight: thread lines clipped to the reel's barrel)
         tick = False
         line = len(items) == 1 and items[0][0] == "line"
         if line and end is not None and gap <= ENGRAVE_TOL:
