@@ -525,3 +525,23 @@ def test_run_ex_a_count_with_a_unit_says_what_it_got():
     assert "divide a length by a length" in e.hint
     ok = src.replace("xs = [40, 80]", "xs = [40 mm, 80 mm]")
     assert aidl_lang.compile(source=ok).ok
+
+
+def test_runs_eg_ew_a_part_larger_than_the_default_sheet_is_a_note():
+    """Runs eg and ew: a 600 mm toran band and a scarecrow's 600 mm arms checked clean; only
+    `aidl render --layout sheet` refused them (600 x 400 with 3 mm from the edges)."""
+    path = RUNS / "issue111ew" / "run" / "03_scarecrow.first_valid.aidl"
+    ns = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0534"]
+    assert {n.message.split("`")[1] for n in ns} == {"scarecrow.stake", "scarecrow.arms"}
+    assert all(n.severity == "note" for n in ns)
+    assert "this part needs at least 606 x 56 mm" in [n for n in ns if "arms" in n.message][0].hint
+    # the layout agrees: a 594 mm part fits, a 595 mm one does not
+    from aidl_lang.output.fabrication.layout import fits
+    assert fits(594, 100) and not fits(595, 100) and fits(100, 594)
+
+
+def test_run_eu_a_hatch_clipped_to_an_area_runs_out_at_the_cut():
+    """Run eu's pattern weight: thread lines clipped to the reel's barrel (`Intersect`) end on
+    its sides, the cut edge: W0516, a false alarm the program had no way to accept."""
+    path = RUNS / "issue111eu" / "run" / "07_pattern_weights.first_valid.aidl"
+    assert not [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0516"]

@@ -1671,6 +1671,15 @@ loop makes are not judged (grid lines inside a masked label's box are meant).
         hole trim { r = Rectangle(center=(0, 0), width=20, height=20) }   # hides the nose
     }
 """),
+    "W0534": ("part larger than the default sheet (note)", """
+A note, not a warning: a part's box does not fit the 600 x 400 mm sheet that `aidl render
+--layout sheet` fills when no `--sheet` is given (3 mm from its edges), laid or turned 90
+degrees, so that layout would refuse it (runs eg and ew: a 600 mm band and 600 mm arms checked
+clean, and only the layout said so). For a larger bed give its size (`--layout sheet --sheet
+1000x600mm`); for this one, make the part smaller or cut it in pieces that join.
+
+    solid band { r = Rectangle(center=(0, 0), width=620, height=40) }
+"""),
     "W0130": ("drawing entities skipped", """
 Entities of a drawing that have no exact form here are skipped and counted, named by kind:
 rational or high-degree splines, hatches, dimensions, images, a mirrored or skewed SVG text

@@ -50,9 +50,11 @@ Areas are compared with a tolerance that ignores the chord slivers of tessellate
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
-from ...base.diagnostics import DiagnosticSink
+from ...base.diagnostics import Diagnostic, DiagnosticSink
 from ..part.build.booleans import Drawing
 from .allowances import check_allowances
 from .assembly import _check_fit
@@ -395,6 +397,7 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
                      hint="share endpoints between lines and arcs so they form a loop, or put "
                           "the curve in a `drawing` structure")
     _idle_min_wall(d, sink)
+    _check_sheet(roots, sink)
     for s, shape in roots.items():
         if s.kind == "solid" and shape.is_empty() and s not in explained and any(
                 not g.construction for n in s.subtree() for g in n.geometry):
@@ -402,3 +405,28 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
                          "encloses any area", s.span,
                          hint="give the part a closed shape with an inside (a Rectangle, a "
                               "Circle, lines and arcs that close a loop around some area)")
+
+
+def _check_sheet(roots: dict, sink) -> None:
+    """W0534, a note, for each solid part too large for the sheet `aidl render --layout
+    sheet` fills when told none (:data:`~..fabrication.layout.DEFAULT_SHEET`, with its gap),
+    laid or turned (runs eg, ew: a 600 mm band and 600 mm arms checked clean; only the layout
+    refused them)."""
+    from ..fabrication.layout import DEFAULT_GAP, DEFAULT_SHEET, fits
+    W, H = DEFAULT_SHEET
+    for s, shape in roots.items():
+        if s.kind != "solid" or shape.is_empty():
+            continue
+        x0, y0, x1, y1 = shape.bounds()
+        w, h = x1 - x0, y1 - y0
+        if fits(w, h):
+            continue
+        sink.add(Diagnostic("W0534", f"part `{s.path}` is {w:.1f} x {h:.1f} mm: it does not "
+                            f"fit the {W:g} x {H:g} mm sheet that `aidl render --layout sheet` "
+                            f"fills unless told another ({DEFAULT_GAP:g} mm from its edges), "
+                            "laid or turned", s.span, "note",
+                            hint=f"for a larger bed, give its size (`--layout sheet --sheet "
+                                 f"1000x600mm`: this part needs at least "
+                                 f"{math.ceil(max(w, h) + 2 * DEFAULT_GAP)} x "
+                                 f"{math.ceil(min(w, h) + 2 * DEFAULT_GAP)} mm); for this one, "
+                                 "make the part smaller or cut it in pieces that join"))

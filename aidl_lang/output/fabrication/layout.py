@@ -488,7 +488,18 @@ def _nest(shapes: dict, height: float, angles, seconds: int, seed: int,
             for it in sol.placed_items]
 
 
-def lay_out(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90.0),
+DEFAULT_SHEET = (600.0, 400.0)  # mm: the sheet `--layout sheet` fills when none is given
+DEFAULT_GAP = 3.0               # mm: between parts and from the sheet's edges, by default
+
+
+def fits(w: float, h: float, sheet=DEFAULT_SHEET, gap: float = DEFAULT_GAP) -> bool:
+    """A part ``w`` x ``h`` mm (its box) fits on ``sheet`` with ``gap`` all round, as laid or
+    turned 90 degrees (the layout's default turns)."""
+    W, H = sheet[0] - 2 * gap, sheet[1] - 2 * gap
+    return (w <= W and h <= H) or (h <= W and w <= H)
+
+
+def lay_out(output: Output, sheet=DEFAULT_SHEET, gap: float = DEFAULT_GAP, rotate=(0.0, 90.0),
             seconds: int = 0, seed: int = 0) -> tuple[list[Output], int]:
     """Every solid part of ``output`` placed once on sheets ``sheet`` = (width, height) mm:
     :func:`place` of :func:`plan`.  Returns one Output per sheet (its page is the sheet: (0, 0)
@@ -518,7 +529,7 @@ def place(output: Output, where: list[dict], sheet) -> tuple[list[Output], int]:
     return outs, dropped
 
 
-def plan(output: Output, sheet=(600.0, 400.0), gap: float = 3.0, rotate=(0.0, 90.0),
+def plan(output: Output, sheet=DEFAULT_SHEET, gap: float = DEFAULT_GAP, rotate=(0.0, 90.0),
          seconds: int = 0, seed: int = 0, deadline=None) -> list[dict]:
     """Where every solid part of ``output`` goes: one dict part name -> :class:`Motion` per
     sheet (``sheet`` = (width, height) mm), the parts at least ``gap`` mm from each other and
