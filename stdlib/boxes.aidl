@@ -57,7 +57,11 @@ def lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=10 
 # is held down by the rails, `clearance` from the walls and the back.
 # `length` x `width` x `height` (mm) is the outer size when `outside=true`,
 # else the space under the lid between the liners. Members: `bottom`,
-# `front`, `back`, `left`, `right`, `liner`, `rail`, `lid`.
+# `front`, `back`, `left`, `right`, `liner`, `rail`, `lid`. The lid has a finger
+# pull of its own, `lid.pull`: a slot across its middle (up to 30 mm long, 2 x
+# `thickness` wide) 4 x `thickness` from its front edge, the edge at the bottom of
+# the lid on the flat sheet, where the lid lies with `length` along x; a hole or a
+# drawing added to the lid keeps clear of it.
 # Anchor: (cx, cy) is the centre of `bottom`.
 def sliding_lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=10 mm,
                     clearance=0.3 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {

@@ -392,7 +392,7 @@ def test_circles_in_a_row_check_their_slits_in_bounded_work():
                        capture_output=True, text=True, timeout=600)
     assert r.returncode == 0, r.stderr[-2000:]
     got = json.loads(r.stdout.strip().splitlines()[-1])
-    assert set(got["codes"]) == {"W0504"}, got["codes"]       # 5,000 separate circles
+    assert set(got["codes"]) - {"W0534"} == {"W0504"}, got["codes"]   # 5,000 separate circles (and a row longer than a sheet: a note)
     assert got["cpu"] < 30, got
 
 

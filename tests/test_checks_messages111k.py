@@ -545,3 +545,16 @@ def test_run_eu_a_hatch_clipped_to_an_area_runs_out_at_the_cut():
     its sides, the cut edge: W0516, a false alarm the program had no way to accept."""
     path = RUNS / "issue111eu" / "run" / "07_pattern_weights.first_valid.aidl"
     assert not [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0516"]
+
+
+def test_run_ev_a_hole_over_a_templates_own_pull_is_told_whose_it_is():
+    """Run ev's tinder box (and run ec's reasons box): a finger slot added over the lid's own
+    pull of `sliding_lid_box`, undocumented; W0508 offered AllowOverlap or a move.  Its hint
+    now says which opening is the template's, and the template's docs say the pull."""
+    (path,) = (RUNS / "issue111ev" / "run").glob("06_*.first_valid.aidl")
+    (n,) = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0508"]
+    assert n.hint.startswith("hole `tinder_box.box.lid.pull` is `sliding_lid_box`'s own "
+                             "opening, which the template makes: if hole `tinder_box.pull` "
+                             "is there for the same job, leave it out")
+    text, _ = lookup_text("sliding_lid_box")
+    assert "`lid.pull`" in text and "4 x `thickness` from its front edge" in text

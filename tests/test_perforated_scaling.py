@@ -403,7 +403,7 @@ def test_holes_found_overlapping_are_not_measured_or_intersected_again(long_row)
     before they are measured (``close_pairs(skip=...)``): none here, nothing else is near."""
     res, _, measured = long_row
     merges = [d for d in res.sink.items if d.code == "W0508"]
-    assert len(merges) == ROW - 1 == len(res.sink.items)
+    assert len(merges) == ROW - 1 == len([d for d in res.sink.items if d.code != "W0534"])
     assert measured["pairs"] == 0, measured
     # nor is the plate's shape within its own holes made for W0501 (no structure between
     # the plate and its holes could refill them; main before: one union of the row, 0.07 s

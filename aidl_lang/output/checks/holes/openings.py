@@ -478,6 +478,34 @@ def _inner(a: _Openings, i: int, j: int, common) -> int | None:
     return None
 
 
+def _template_own(a, i: int, j: int) -> str:
+    """The start of W0508's hint when one of the two holes is a standard-library template's
+    own opening and the other the program's (runs ec, ev: a finger slot added over
+    `sliding_lid_box`'s lid pull, "move it 5.52 mm" where the lid already had a pull); else
+    ``""``."""
+    if not a.cuts:
+        return ""
+    hi, hj = a.cuts[i - 1].hole, a.cuts[j - 1].hole
+    ti, tj = _stdlib_template(hi), _stdlib_template(hj)
+    if bool(ti) == bool(tj):
+        return ""
+    own, other = (a.names[i], a.names[j]) if ti else (a.names[j], a.names[i])
+    return (f"{own} is `{ti or tj}`'s own opening, which the template makes: if {other} is "
+            "there for the same job, leave it out; else ")
+
+
+def _stdlib_template(h) -> str | None:
+    """The standard-library template whose body drew hole ``h`` (its statement in std/), or
+    None for a hole the program draws."""
+    from ....base.diagnostics import in_stdlib
+    if h.span is None or not in_stdlib(h.span.file):
+        return None
+    for s in h.ancestors():
+        if getattr(s, "template", None):
+            return s.template
+    return None
+
+
 def _apart(shape) -> bool:
     """The part's final shape is in more than one piece: overlapping openings that cut it
     apart are not meant, and no fix says so with `AllowOverlap` (run et's Maxwell wheel: six
@@ -543,12 +571,13 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
                  "copy)" if stmt == "" else
                  "draw both shapes in one hole structure (the faces of one hole may overlap)")
         move, fix = f"move {second} {far} further from {first}", None
+        own = _template_own(a, i, j)
         if crossing:
             # a note: every crossing of the corpus was meant (run ag's halved mortises, "move
             # it 3.67 mm" broke them; run at's pin channels across a tambourine's windows)
             sink.add(Diagnostic("W0508", f"{first} and {second} of `{s.path}` {how}: they cut "
                                 "one cross-shaped opening", a.spans[j], "note", labels=labels,
-                                hint=f"if it is meant, nothing is needed (to say so: "
+                                hint=own + f"if it is meant, nothing is needed (to say so: "
                                      f"{meant}); if two openings are meant, {move}"))
             continue
         if stmt and not unnamed \
@@ -571,7 +600,7 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
             hint = (f"{move}; or shrink one of them so that material is left between them; "
                     f"if one opening is meant, {meant}")
         sink.warning("W0508", f"{first} and {second} of `{s.path}` {how}, so they cut one "
-                     "opening, not two", a.spans[j], labels=labels, hint=hint, fix=fix)
+                     "opening, not two", a.spans[j], labels=labels, hint=own + hint, fix=fix)
     inner = len(a.names) - 1
     for i, j, w, length, (x, y) in a.webs:
         covered.add(frozenset((a.names[i], a.names[j])))
