@@ -558,3 +558,23 @@ def test_run_ev_a_hole_over_a_templates_own_pull_is_told_whose_it_is():
                              "is there for the same job, leave it out")
     text, _ = lookup_text("sliding_lid_box")
     assert "`lid.pull`" in text and "4 x `thickness` from its front edge" in text
+
+
+def test_run_fa_contact_under_half_a_kerf_is_no_collision():
+    """Run fa's wheelbarrow planter: its rails resting on the box's corner edge shared
+    0.004-0.008 mm^3, 0.0017-0.04 mm deep: four W0517 false alarms beside the real one (the
+    wheel 6 mm into the tray's end wall), which stays."""
+    (path,) = (RUNS / "issue111fa" / "run").glob("03_*.first_valid.aidl")
+    ws = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0517"]
+    assert ws and all("wheel" in w.message for w in ws)
+    assert any("6 mm deep" in w.message for w in ws)
+
+
+def test_run_ez_the_arcs_offered_are_where_the_program_writes_them():
+    """Run ez's crokinole board: W0505's arcs for the 15 ring through eight peg holes used
+    `center=(360 mm, 0 mm)`, where the flat layout moved the part (pasted, they lay 360 mm
+    off it), and offered four of the eight."""
+    (path,) = (RUNS / "issue111ez" / "run").glob("05_*.first_valid.aidl")
+    (w,) = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0505"]
+    assert "the 8 arcs on the material" in w.hint
+    assert w.hint.count("center=(0 mm, 0 mm)") == 8 and "360 mm" not in w.hint

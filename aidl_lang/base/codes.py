@@ -1137,8 +1137,9 @@ gives the gap and how far to move the text. Move the mark inside, or leave it ou
 """),
     "W0517": ("parts collide when assembled", """
 The program places its parts in 3D (`Place`), and two parts' solids, each its profile extruded
-by its `thickness` and placed, overlap by more than 0.001 mm^3: assembled, they cannot both be
-there. Most often a slot (or the gap between two fingers) is narrower than the thickness of the
+by its `thickness` and placed, overlap by more than 0.001 mm^3 and 0.05 mm deep (thinner is
+contact, under half a kerf: run fa's rails resting on a box's corner edge, 0.002-0.04 mm):
+assembled, they cannot both be there. Most often a slot (or the gap between two fingers) is narrower than the thickness of the
 part that goes in it, or the material is thicker than the joint was drawn for. The warning
 names both parts, the common volume, its depth (the smallest side of its box: by how much the
 slot is too narrow) and the box where it lies. Widen the slot to the partner's thickness, use

@@ -18,6 +18,7 @@ AWAY = 5.0
 # mm: a collision this deep or deeper is a part misplaced, not a slot too narrow (runs av, aw:
 # an arm sunk 6 mm into its back plate, a lip 6 mm into its ledge: "widen it" was first)
 SLOT_SHORT = 1.0
+CONTACT_DEPTH = 0.05     # mm: a common volume thinner than this is contact, under half a kerf
 
 
 def _collision_hint(d: Drawing, c) -> str:
@@ -82,6 +83,9 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
         sa_, sb_ = d.part_of.get(c.a), d.part_of.get(c.b)
         if sa_ is not None and sb_ is not None and _allowed(sa_, sb_):
             continue                     # AllowOverlap(a, b): meant (a press fit, an inlay)
+        if c.depth < CONTACT_DEPTH:
+            continue                     # under half a kerf: parts in contact (run fa's rails
+            #                              on a box's corner edge, 0.0017-0.04 mm: four W0517)
         x0, y0, z0, x1, y1, z1 = c.box
         sides = sorted((x1 - x0, y1 - y0, z1 - z0))
         if bends and (bends.get(c.a) or bends.get(c.b)) and (
@@ -181,7 +185,8 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                     f"move `{g.part}` {g.gap:.3g} mm towards `{g.nearest}` with its `Place` "
                     "(or, where a tab falls short of its slot, lengthen the tab)")
         span = at(g.part)           # (a part of no statement is said on its own)
-        off = next(((n, o) for n in (g.part, g.nearest) if (o := _off_origin(d, n))), None)
+        off = next(((n, o) for n in (g.part, g.nearest) if not templates(n)
+                    and (o := _off_origin(d, n))), None)   # (a template's panels: by design)
         if off is not None:
             # runs em, eo: a spacer drawn at (0, -40) in its own frame and placed at its
             # origin hung 40 mm below its plate; the note said to move the plate

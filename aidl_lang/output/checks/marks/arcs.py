@@ -11,12 +11,13 @@ from ..common import _edges, _inside
 
 ARC_STEPS = 1440          # samples of an engraved circle when W0505 offers the arc on the material
 ARC_LEAST = math.radians(30)    # the arc offered is at least this long
+MAX_ARCS = 8              # arcs offered at most (run ez: a ring through 8 peg holes, 4 offered)
 
 
-def arc_on_material(g, items, shape, within, clear_of: float) -> str | None:
+def arc_on_material(g, items, shape, within, clear_of: float, part=None) -> str | None:
     """W0505's fix for an engraved Circle (or Arc) that crosses its part's outline or a hole
     (a ring that meets a notch in the rim, issue 105): the arcs of it on the material
-    (one per clear run, the longest first, at most four), clear of the cut by ``2 clear_of``, as the ``Arc(center=, radius=,
+    (one per clear run, the longest first, at most :data:`MAX_ARCS`), clear of the cut by ``2 clear_of``, as the ``Arc(center=, radius=,
     start_angle=, end_angle=)`` that replaces it (mm and degrees, counter-clockwise, ends
     rounded inward to 0.1 deg); None for another shape, or when no such arc of at least
     :data:`ARC_LEAST` is left.  ``within(points, edges, d)``: which points lie within ``d``
@@ -67,10 +68,12 @@ def arc_on_material(g, items, shape, within, clear_of: float) -> str | None:
         return good
     step = sweep / (ARC_STEPS if whole else steps - 1)
     name = str(getattr(g, "label", "")).rsplit(".", 1)[-1] or "mark"
+    from ..common import written
+    wx, wy = written(part, cx, cy)     # where the program writes it (run ez: the layout's 360 mm)
     arcs = []
     # each clear run an arc (run cs's feeder: a ring across two mortises was offered the
     # longer half only, and the arc pasted dropped the other), the longest first
-    for k, (n, s) in enumerate(sorted(runs, key=lambda q: (-q[0], q[1]))[:4]):
+    for k, (n, s) in enumerate(sorted(runs, key=lambda q: (-q[0], q[1]))[:MAX_ARCS]):
         lo, hi = t[order[s]], t[order[s + n - 1]]
         if hi < lo:
             hi += 2 * math.pi
@@ -81,8 +84,8 @@ def arc_on_material(g, items, shape, within, clear_of: float) -> str | None:
         a1 = math.degrees(lo) % 360
         a2 = a1 + math.degrees(hi - lo)
         a1, a2 = math.ceil(a1 * 10 - 1e-6) / 10, math.floor(a2 * 10 + 1e-6) / 10
-        arcs.append(f"`{name if k == 0 else f'{name}_{k + 1}'} = Arc(center=({cx:.6g} mm, "
-                    f"{cy:.6g} mm), radius={r:.6g} mm, start_angle={a1:g} deg, "
+        arcs.append(f"`{name if k == 0 else f'{name}_{k + 1}'} = Arc(center=({wx:.6g} mm, "
+                    f"{wy:.6g} mm), radius={r:.6g} mm, start_angle={a1:g} deg, "
                     f"end_angle={a2:g} deg)`")
     what = "circle" if whole else "arc"
     return (f"to stop the {what} at the cut, engrave "

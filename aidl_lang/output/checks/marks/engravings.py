@@ -132,7 +132,7 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         if where in ("across a hole", "across an opening"):
             hint = (f"it crosses {', '.join(holes) if holes else 'an opening'}: shrink or move "
                     "the drawing clear of it, or move the hole")
-        arc = arc_on_material(g, items, roots[part], _within, CUT_CLEAR)
+        arc = arc_on_material(g, items, roots[part], _within, CUT_CLEAR, part)
         if arc:
             hint = f"{arc}; or {hint}"
         if g.kind != "Text":        # (letters off the material are a slip, never meant)
