@@ -228,10 +228,15 @@ def test_run_ed_hull_takes_an_arc_and_a_line_as_their_points():
     assert sum(a.sweep for a in arcs) == __import__("pytest").approx(3.141592653589793, abs=1e-9)
     assert all(abs(a.radius - 20) < 1e-9 for a in arcs) and len(lines) == 3
     assert abs(loop.area - (3.141592653589793 * 400 / 2 + 40 * 30)) < 1e-6
-    # a Line is its two end points; a Text still is not a shape to hull
-    r = aidl_lang.compile(source=src.replace("Arc(center=(0, 0), radius=20, start_angle=0 deg, "
-                                             "end_angle=180 deg)", "Line((-20, 0), (20, 0))"))
-    assert r.ok and abs(r.output.parts[0].area - 40 * 30) < 1e-6
+    # a Line is its two end points: with a circle, a hull; with points alone, no curve
+    # (a Polygon through them is what is meant: E0108)
+    lined = src.replace("Arc(center=(0, 0), radius=20, start_angle=0 deg, end_angle=180 deg)",
+                        "Line((-20, 0), (20, 0))")
+    (e,) = _errors(aidl_lang.compile(source=lined))
+    assert e.code == "E0108" and "points and lines alone encloses no curve" in e.message
+    r = aidl_lang.compile(source=lined.replace("Hull([a, tip1, tip2])",
+                                               "Hull([a, Circle(center=(0, -30), radius=5)])"))
+    assert r.ok
 
 
 def test_run_eh_sizes_from_another_structure_get_the_corners_form():

@@ -400,7 +400,7 @@ def test_a_row_of_five_thousand_circles_checks_within_the_budget():
     # clock of the default budget ran out (E0304) at 10 s of wall time
     c = compile_source(src, "row.aidl", budget=Budget(seconds=120))
     took = time.process_time() - t0
-    assert [d.code for d in c.sink.items] == ["W0504"]      # the circles do not touch
+    assert [d.code for d in c.sink.items if d.code != "W0534"] == ["W0504"]  # no touch (W0534: a long row)
     assert took < 15
 
 

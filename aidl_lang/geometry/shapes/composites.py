@@ -86,9 +86,9 @@ def _build_Hull(ctx, g, a):
     # arc and two points)
     _consume(g, [v.geom if isinstance(v, GeomRef) and v.geom.kind in HULL_CURVES
                  else _source(v, "Hull") for v in items])
-    if all(src.kind == "Point" for src in g.data["sources"]):
-        raise PrimitiveError("Hull of points alone encloses no curve: draw a Polygon "
-                             "through them, or add a shape")
+    if all(src.kind in ("Point", "Line") for src in g.data["sources"]):
+        raise PrimitiveError("Hull of points and lines alone encloses no curve: draw a "
+                             "Polygon through them, or add a shape (or an Arc)")
 
 
 CLIPPED = ("Line", "Arc", "Polyline")       # open curves an Intersect clips

@@ -185,22 +185,32 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                     f"move `{g.part}` {g.gap:.3g} mm towards `{g.nearest}` with its `Place` "
                     "(or, where a tab falls short of its slot, lengthen the tab)")
         span = at(g.part)           # (a part of no statement is said on its own)
-        off = next(((n, o) for n in (g.part, g.nearest) if not templates(n)
-                    and (o := _off_origin(d, n))), None)   # (a template's panels: by design)
-        if off is not None:
-            # runs em, eo: a spacer drawn at (0, -40) in its own frame and placed at its
-            # origin hung 40 mm below its plate; the note said to move the plate
-            n, (ox, oy) = off
-            said = (said[0], said[1] + f"; `{n}`'s material lies ({ox:.1f}, {oy:.1f}) mm "
-                    "from its own (0, 0), the point its `Place` puts at `position=`",
-                    f"if `{n.split('.')[-1]}` was drawn where it stands beside the others, "
-                    "draw it about its own (0, 0) (or add that offset to its `Place`'s "
-                    "position); " + said[2])
+        said = _with_origin(d, g, said, templates)
         groups.setdefault((span, said[0], g.part if span is None else ""), []).append(
             (g, *said[1:]))
+    _say_floating(groups, sink)
+
+
+def _with_origin(d: Drawing, g, said: tuple, templates) -> tuple:
+    """W0518's ``said`` (severity, message, hint) with where the material of the floating
+    part or its nearest lies from its own (0, 0), when far (:func:`_off_origin`; runs em, eo:
+    a spacer drawn at (0, -40) in its own frame and placed at its origin hung 40 mm below its
+    plate, and the note said to move the plate); a template's panels are so by design."""
+    off = next(((n, o) for n in (g.part, g.nearest) if not templates(n)
+                and (o := _off_origin(d, n))), None)
+    if off is None:
+        return said
+    n, (ox, oy) = off
+    return (said[0], said[1] + f"; `{n}`'s material lies ({ox:.1f}, {oy:.1f}) mm from its own "
+            "(0, 0), the point its `Place` puts at `position=`",
+            f"if `{n.split('.')[-1]}` was drawn where it stands beside the others, draw it "
+            "about its own (0, 0) (or add that offset to its `Place`'s position); " + said[2])
+
+
+def _say_floating(groups: dict, sink: DiagnosticSink) -> None:
+    """W0518 once per statement and severity: the copies a loop makes are one statement (run
+    bq: 80 W0518 for the tokens of a bingo board), the others named after it."""
     for (span, severity, _), rows in groups.items():
-        # the copies a loop makes are one statement: one diagnostic (run bq: 80 W0518 for the
-        # tokens of a bingo board), the others named after it
         g, message, hint = rows[0]
         if len(rows) > 1 and span is not None:
             names = ", ".join(f"`{r[0].part.split('.')[-1]}`" for r in rows[1:4])

@@ -465,3 +465,38 @@ def written(s, x: float, y: float) -> tuple[float, float]:
     positions given in the laid-out sheet's coordinates, 300 mm off the program's)."""
     dx, dy = s.__dict__.get("moved", (0.0, 0.0)) if s is not None else (0.0, 0.0)
     return x - dx + 0.0, y - dy + 0.0
+
+
+def _template_own(a, i: int, j: int) -> str:
+    """The start of W0508's hint when one of the two holes is a standard-library template's
+    own opening and the other the program's (runs ec, ev: a finger slot added over
+    `sliding_lid_box`'s lid pull, "move it 5.52 mm" where the lid already had a pull); else
+    ``""``."""
+    if not a.cuts:
+        return ""
+    hi, hj = a.cuts[i - 1].hole, a.cuts[j - 1].hole
+    ti, tj = _stdlib_template(hi), _stdlib_template(hj)
+    if bool(ti) == bool(tj):
+        return ""
+    own, other = (a.names[i], a.names[j]) if ti else (a.names[j], a.names[i])
+    return (f"{own} is `{ti or tj}`'s own opening, which the template makes: if {other} is "
+            "there for the same job, leave it out; else ")
+
+
+def _stdlib_template(h) -> str | None:
+    """The standard-library template whose body drew hole ``h`` (its statement in std/), or
+    None for a hole the program draws."""
+    from ...base.diagnostics import in_stdlib
+    if h.span is None or not in_stdlib(h.span.file):
+        return None
+    for s in h.ancestors():
+        if getattr(s, "template", None):
+            return s.template
+    return None
+
+
+def _apart(shape) -> bool:
+    """The part's final shape is in more than one piece: overlapping openings that cut it
+    apart are not meant, and no fix says so with `AllowOverlap` (run et's Maxwell wheel: six
+    windows run together cut the hub off the rim, W0504, and the fix would have hidden it)."""
+    return shape is not None and not shape.is_empty() and len(shape.decompose()) > 1

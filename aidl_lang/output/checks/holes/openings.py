@@ -40,7 +40,7 @@ from ...part.measure.nearby import (boundaries, boundary, box_pairs, box_pairs_b
 from .clearing import move_fix
 from .contact import circle_of, contact_points
 from .meant import MeantMerge
-from ..common import (written, MIN_AREA, MIN_WALL, _area, _body, _contributors, _cross, _depth, _edge_distance, _edges, _insert_fix,
+from ..common import (_apart, _template_own, written, MIN_AREA, MIN_WALL, _area, _body, _contributors, _cross, _depth, _edge_distance, _edges, _insert_fix,
                       _inside, _loop_boxes, _part_of, _pct, _signed, _significant, _union,
                       below)
 
@@ -476,41 +476,6 @@ def _inner(a: _Openings, i: int, j: int, common) -> int | None:
         if common >= (1 - 1e-6) * a.areas[k] - 1e-9:
             return k
     return None
-
-
-def _template_own(a, i: int, j: int) -> str:
-    """The start of W0508's hint when one of the two holes is a standard-library template's
-    own opening and the other the program's (runs ec, ev: a finger slot added over
-    `sliding_lid_box`'s lid pull, "move it 5.52 mm" where the lid already had a pull); else
-    ``""``."""
-    if not a.cuts:
-        return ""
-    hi, hj = a.cuts[i - 1].hole, a.cuts[j - 1].hole
-    ti, tj = _stdlib_template(hi), _stdlib_template(hj)
-    if bool(ti) == bool(tj):
-        return ""
-    own, other = (a.names[i], a.names[j]) if ti else (a.names[j], a.names[i])
-    return (f"{own} is `{ti or tj}`'s own opening, which the template makes: if {other} is "
-            "there for the same job, leave it out; else ")
-
-
-def _stdlib_template(h) -> str | None:
-    """The standard-library template whose body drew hole ``h`` (its statement in std/), or
-    None for a hole the program draws."""
-    from ....base.diagnostics import in_stdlib
-    if h.span is None or not in_stdlib(h.span.file):
-        return None
-    for s in h.ancestors():
-        if getattr(s, "template", None):
-            return s.template
-    return None
-
-
-def _apart(shape) -> bool:
-    """The part's final shape is in more than one piece: overlapping openings that cut it
-    apart are not meant, and no fix says so with `AllowOverlap` (run et's Maxwell wheel: six
-    windows run together cut the hub off the rim, W0504, and the fix would have hidden it)."""
-    return shape is not None and not shape.is_empty() and len(shape.decompose()) > 1
 
 
 def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
