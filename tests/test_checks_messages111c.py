@@ -191,7 +191,7 @@ assert heart.right.bb.right == 20 mm and heart.right.bb.top == 10 mm
     bad = aidl_lang.compile("solid s {\n    a = Point(0, 0)\n    b = Point(10, 0)\n"
                             "    h = Hull([a, b])\n}\n")
     (e,) = _w(bad, "E0108")
-    assert "Hull of points alone encloses no curve" in e.message
+    assert "Hull of points and lines alone encloses no curve" in e.message
 
 
 # ------------------------------------------------------------------------------ the prompt
