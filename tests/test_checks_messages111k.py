@@ -583,3 +583,54 @@ def test_run_ez_the_arcs_offered_are_where_the_program_writes_them():
     (w,) = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0505"]
     assert "the 8 arcs on the material" in w.hint
     assert w.hint.count("center=(0 mm, 0 mm)") == 8 and "360 mm" not in w.hint
+
+
+def _dxf_segments(r):
+    """The program's cut loops re-read by ezdxf (the independent reader): ``(lines, arcs)``,
+    lines as lengths (mm), arcs as ``(center, radius, sweep in degrees)`` from the bulges."""
+    import io
+    import math
+    import ezdxf
+    from ezdxf.math import bulge_to_arc
+    lines, arcs = [], []
+    for e in ezdxf.read(io.StringIO(r.to_dxf())).modelspace():
+        if e.dxftype() == "LINE":
+            lines.append(math.dist(e.dxf.start, e.dxf.end))
+        elif e.dxftype() == "LWPOLYLINE":
+            pts = [tuple(p) for p in e.get_points("xyb")]
+            pairs = list(zip(pts, pts[1:] + (pts[:1] if e.closed else [])))
+            for (x0, y0, b), (x1, y1, _) in pairs:
+                if b:
+                    c, a0, a1, rad = bulge_to_arc((x0, y0), (x1, y1), b)
+                    arcs.append(((c.x, c.y), rad, math.degrees((a1 - a0) % (2 * math.pi))))
+                else:
+                    lines.append(math.dist((x0, y0), (x1, y1)))
+    return lines, arcs
+
+
+def test_the_new_constructs_come_out_at_the_designs_numbers_in_the_dxf():
+    """Hull of an Arc (run ed), RoundedRectangle by two corners (run ek) and CutInto of a cut
+    (run es), each re-read by ezdxf: the half circle of radius 20 mm whole, the plate 120 x
+    40 mm with R6 corners, the trapdoor's U 84, 70, 84 mm cut on the lid."""
+    hull = ("solid hook {\n    a = Arc(center=(0, 0), radius=20, start_angle=0 deg, "
+            "end_angle=180 deg)\n    body = Hull([a, Point(-20, -30), Point(20, -30)])\n}\n")
+    lines, arcs = _dxf_segments(aidl_lang.compile(source=hull))
+    assert [(round(a[1], 9), round(a[2], 9)) for a in arcs] == [(20.0, 180.0)]
+    assert sorted(round(v, 9) for v in lines) == [30.0, 30.0, 40.0]
+    rr = ("solid a {\n    word = Rectangle(center=(0, 0), width=80, height=20)\n}\n"
+          "solid b {\n    plate = RoundedRectangle(corner=(-50, -25), opposite=(50, 25), "
+          "corner_radius=6)\n}\nb.plate.bb.width == a.word.bb.width + 40 mm\n"
+          "b.plate.bb.height == a.word.bb.height + 20 mm\nAlignCenterY(b, a)\n"
+          "RightOf(b, a, gap=10)\n")
+    lines, arcs = _dxf_segments(aidl_lang.compile(source=rr))
+    assert len(arcs) == 4 and all(abs(a[1] - 6) < 1e-9 and abs(a[2] - 90) < 1e-9 for a in arcs)
+    xs, ys = [a[0][0] for a in arcs], [a[0][1] for a in arcs]
+    assert abs(max(xs) - min(xs) - 108) < 1e-9 and abs(max(ys) - min(ys) - 28) < 1e-9
+    trap = ('import "std/boxes.aidl"\nassembly trap {\n    box = finger_box(length=160 mm, '
+            'depth=120 mm, height=60 mm, thickness=3 mm)\n    cut trapdoor {\n'
+            '        u = Polyline([(-49, 35), (35, 35), (35, -35), (-49, -35)])\n    }\n'
+            '    Rigid(trapdoor)\n    Coincident(trapdoor.u.points[1], box.lid.bb.center + '
+            '(35 mm, 35 mm))\n    CutInto(trapdoor, box.lid)\n}\n')
+    lines, _ = _dxf_segments(aidl_lang.compile(source=trap))
+    got = [round(v, 9) for v in lines]
+    assert got.count(84.0) >= 2 and 70.0 in got

@@ -55,7 +55,8 @@ def _error_pos(e: ParseError, text: str) -> int:
     return len(text) if p is None else p
 
 
-# the words of grammar/aidl.lark no name may be (tests/test_parse_errors.py holds them to it)
+# the words of grammar/aidl.lark no name may be (tests/test_checks_messages111k.py holds
+# them to the grammar)
 KEYWORDS = frozenset({"and", "as", "assert", "def", "elif", "else", "for", "if", "import", "in",
                       "not", "or", "param"})
 

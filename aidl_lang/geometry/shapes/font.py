@@ -211,10 +211,12 @@ def _fontconfig(family: str, style: str) -> tuple[str, int] | None:
         return None
 
 
+@lru_cache(maxsize=64)
 def covering(chars: str) -> str | None:
     """The first (by name) installed family that fontconfig says has every character of
     ``chars`` (a hint for a text a font cannot draw: run ec's 福 needed `fc-list :lang=zh`
-    outside AIDL); None without fontconfig or when none has them all."""
+    outside AIDL); None without fontconfig or when none has them all.  Asked once per set of
+    characters (a loop's hundred labels with one accent: one `fc-list`)."""
     exe = shutil.which("fc-list")
     wanted = sorted({c for c in chars if not c.isspace()})
     if exe is None or not wanted or len(wanted) > 64:

@@ -524,7 +524,6 @@ def _check_covered_text(d: Drawing, bodies, sink: DiagnosticSink) -> None:
         P = _polyline(item)
         if len(P):
             pts.setdefault((g, part.path), []).append(np.asarray(P, dtype=float))
-    index = {bodies.name(i): i for i in range(len(bodies))}
     covered: dict = {}              # (part, the part over it) -> [(text, points under, of)]
     for (g, name), runs in pts.items():
         P = np.concatenate(runs)
@@ -537,7 +536,7 @@ def _check_covered_text(d: Drawing, bodies, sink: DiagnosticSink) -> None:
         probes = None
         for j in range(len(bodies)):
             other = bodies.name(j)
-            if other == name or other not in index:
+            if other == name:
                 continue
             b = bodies.box(j)
             if (np.asarray(b[3:]) < lo).any() or (np.asarray(b[:3]) > hi).any():

@@ -487,6 +487,12 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
     solid drawn inside another hole's opening (:func:`_refiller`); ``d`` and ``shape`` (the
     part's final shape): for W0508's fix, a move that clears (:func:`_merge_fix`)."""
     covered = set()
+    split: list = []                    # whether the part is in pieces, found once (_apart)
+
+    def apart() -> bool:
+        if not split:
+            split.append(_apart(shape))
+        return split[0]
     moves = 0                           # W0508 moves looked for (at most MAX_MOVES a part)
     near: dict = {}                     # what the moves share: the holes' boxes, made once
     for i, j, depth, common in a.merges:
@@ -547,7 +553,7 @@ def _report_openings(a: _Openings, s: Structure, t: float, sink: DiagnosticSink,
             continue
         if stmt and not unnamed \
                 and _copies_of_one(stmt, a.cuts[i - 1].hole, a.cuts[j - 1].hole) \
-                and depth >= max(t, MIN_WALL) and not _apart(shape):
+                and depth >= max(t, MIN_WALL) and not apart():
             fix = _insert_fix(where, stmt, sink)     # copies that overlap deeply: meant
         elif d is not None and shape is not None and a.cuts and moves < MAX_MOVES \
                 and not _shared(d, s, a.cuts[j - 1].hole):

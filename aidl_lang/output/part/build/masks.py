@@ -19,6 +19,8 @@ fill=true)``) is its letters' area less the holes', its loops recovered exact.  
 """
 from __future__ import annotations
 
+from collections import Counter
+
 import math
 
 import numpy as np
@@ -127,14 +129,17 @@ def masked(R, s, masks: list, out, mark: tuple[int, int]) -> None:
 
 def _hidden_whole(R, s, masks, before: dict, drawn: list, filled: list, areas: list) -> None:
     """W0533 for a shape of drawing ``s`` whose every line its holes ``masks`` hide (run es's
-    snowman: the hole meant to trim the hat hid the whole nose, and no message said so); a
+    garden gnome: the hole under the beard's lines hid the whole nose, unsaid); a
     loop's copies are left alone (grid lines inside a masked label's box are meant)."""
     left = {id(g) for _, _, g in drawn if g is not None}
     left |= {id(g) for g, a in zip(filled, areas) if a is not None and not a.is_empty()}
-    for k, g in before.items():
-        if k in left or g.construction or g.owner is not s:
-            continue
-        if g.span is not None and sum(1 for h in s.geometry if h.span == g.span) > 1:
+    hidden = [g for k, g in before.items()
+              if k not in left and not g.construction and g.owner is s]
+    if not hidden:
+        return
+    copies = Counter(h.span for h in s.geometry if h.span is not None)   # once, not per shape
+    for g in hidden:
+        if g.span is not None and copies[g.span] > 1:
             continue                        # one of a loop's copies
         names = ", ".join(f"`{c.path}`" for c in masks[:2])
         R.shape_errors.append((g, (
