@@ -69,6 +69,7 @@ class Interpreter(Statements, Calls, Placing, Expressions):
         self.ops = 0                                  # operators evaluated (time checks)
         self.frames: list[tuple[str, Span]] = []     # loops, comprehensions, template instances
         self.model = Model()
+        self.on_top: list = []       # parts placed `on=` another at (x, y): on its top face
         self.overrides = dict(overrides or {})
         # `--set NAME=TEXT` with a unit for a param whose default is a bare number:
         # NAME -> (TEXT, the value's dimension), see error()

@@ -438,7 +438,7 @@ _DEFS = {
     "AlignBottom": _boxes("a.bb.bottom == b.bb.bottom (a point: its y)."),
     # ------------------------------------------------------------ placement (3D)
     "Place": _c([A("part", "boxed"), A("position", "any", None), A("rotation", "any", None),
-                 A("face", "any", None), A("up", "any", None)],
+                 A("face", "any", None), A("up", "any", None), A("on", "any", None)],
                 cat="placement",
                 doc="Place a part (or an assembly) in 3D for the assembled view: its local "
                     "point p (x, y in its frame, z up through its thickness) goes to "
@@ -447,7 +447,11 @@ _DEFS = {
                     "the side its engraving and countersinks are on, looks: \"front\" is -y, "
                     "\"back\" +y, \"left\", \"right\", \"up\" +z, \"down\", \"+x\" ... or "
                     "three numbers) and up= (where its drawing's +y goes; default \"up\", or "
-                    "\"back\" for a face up or down); all known before solving."),
+                    "\"back\" for a face up or down); all known before solving. on= another part "
+                    "(or its structure, or an assembly): position and turn are in its frame "
+                    "(x, y as drawn in it, z up from its bottom face; a position of two "
+                    "numbers stands on its top face), so the part follows it wherever it is "
+                    "placed."),
     "Bend": _c([A("part", "boxed"), A("at", "length"), A("angle", "angle"),
                 A("radius", "length", 0.0)],
                cat="placement",
@@ -659,7 +663,8 @@ ARG_SYNONYMS: dict[str, dict[str, str | tuple[str, ...]]] = {
              "around": "along", "inward": "flip", "inside": "flip", "reverse": "flip",
              "halign": "anchor", "align": "anchor", "h_align": "anchor"},
     "Place": {"normal": "face", "facing": "face", "faces": "face", "top": "face",
-              "up_vector": "up", "upward": "up"},
+              "up_vector": "up", "upward": "up", "onto": "on", "relative_to": "on",
+              "parent": "on", "attach_to": "on", "at": "position"},
     "Symmetric": {"axis": "about", "line": "about", "mirror": "about"},
     "Mirrored": {"axis": "about", "line": "about", "mirror": "about"},
     "Flip": {"axis": "about", "line": "about", "mirror": "about"},

@@ -591,11 +591,27 @@ class Expressions:
             if op == "/" and isinstance(r, PV):
                 raise EvalError("E0108", "cannot divide by a point", e.span)
             if q.dim != NUM:
-                raise EvalError("E0109", "a point can only be scaled by a plain number", e.span)
+                got = "a 1/length" if q.dim == (-1, 0) else _a(dim_name(q.dim))
+                raise EvalError("E0109", f"a point can only be scaled by a plain number, not {got}",
+                                e.span, hint=_scale_hint(q.dim))
             k = q.expr if op == "*" else lift(1.0) / q.expr
             return PV(lift(p.x) * k, lift(p.y) * k, None, p.owners | q.owners)
         raise EvalError("E0108", f"cannot apply `{op}` to {type_name(l)} and {type_name(r)}", e.span,
                         hint="points add and subtract as vectors; scale them by numbers")
+
+
+def _scale_hint(dim) -> str:
+    """E0109's hint for a point scaled by a quantity with a unit: a 1/length factor is a plain
+    number divided by a length, most often a bare number passed to a `def`, which keeps no
+    unit (run ew: `toward(a, b, 10)` with `d / norm(a - b)` inside)."""
+    if dim == (-1, 0):
+        return ("the factor is a plain number divided by a length: give that number its "
+                "unit (a bare number passed to a `def` stays a plain number: `10 mm`, not "
+                "`10`), so a length over a length is a plain number")
+    if dim == LEN:
+        return ("a point times a length is no point: scale by a plain number (`p * 2`), or "
+                "divide the length by another (`d / norm(a - b)`)")
+    return "scale a point by a plain number: a length over a length, or a count"
 
 
 _SIDES = ("top", "bottom", "left", "right")

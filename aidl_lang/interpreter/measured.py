@@ -91,9 +91,14 @@ def measured_distance(interp, args, span) -> Q:
             if not drawn:
                 what = (f" (`{a.geom.label}`, a Text of no letters)" if isinstance(a, GeomRef)
                         and a.geom.kind == "Text" else "")
+                hint = "name a shape, a structure or a list of them that draws a line"
+                if not what and interp.sink.has_errors:
+                    # run ew: a list of notches left empty by an E0109 in their centres; the
+                    # hint sent the model to swap the arguments
+                    what = " (it is empty: an error above left its shapes out)"
+                    hint = "mend the error above first; this one follows from it"
                 raise EvalError("E0108", f"`distance` was given nothing drawn to measure{what}",
-                                span, hint="name a shape, a structure or a list of them that "
-                                           "draws a line")
+                                span, hint=hint)
             sides.append(drawn)
         else:
             p = interp._to_point(a, span)

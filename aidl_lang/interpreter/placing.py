@@ -85,7 +85,16 @@ class Placing:
                         f"{tmpl}`{lift})")
             raise EvalError("E0108", f"`{target.path}` is already placed{line}", node.span,
                             hint=hint)
-        pos = self._triple(conv.get("position"), "position", LEN, spans.get("position"), node)
+        on = self._placed_on(conv.get("on"), target, spans.get("on", node.span)) \
+            if conv.get("on") is not None else None
+        pv = conv.get("position")
+        on_top = on is not None and (isinstance(pv, PV) or isinstance(pv, (list, tuple))
+                                     and len(pv) == 2)
+        if on_top and not isinstance(pv, PV):
+            pv = [*pv, Q.num(0.0, LEN)]
+        pos = self._triple(pv, "position", LEN, spans.get("position"), node)
+        if on_top:                  # (x, y): on its top face, once every thickness is known
+            self.on_top.append(target)
         if conv.get("face") is not None or conv.get("up") is not None:
             if conv.get("rotation") is not None:
                 raise EvalError("E0108", "`Place` is given `rotation=` and `face=`/`up=`: the "
@@ -96,8 +105,58 @@ class Placing:
         else:
             rot = self._triple(conv.get("rotation"), "rotation", ANG, spans.get("rotation"),
                                node)
-        target.placement = (pos, rot, node.span)
+        target.placement = (pos, rot, node.span, on)
         return None
+
+    def _placed_on(self, ref, target, span):
+        """``on=`` of ``Place``: the structure whose frame the position and turn are given
+        in (a part, an assembly, or a structure of a part such as its mortise); a located
+        E0108 for no structure, the part itself or one of its own, or a ring of parts each
+        placed on the next."""
+        hint = ("name a placed part: `Place(vane, on=top, position=(40, -30), face=\"up\")` "
+                "stands the vane on the top's face at its (40, -30)")
+        if not isinstance(ref, StructRef):
+            raise EvalError("E0108", f"`on=` of `Place` names a structure, not "
+                            f"{_a(type_name(ref))}", span, hint=hint)
+        on = ref.struct
+        if on.is_within(target):
+            raise EvalError("E0108", f"`{target.path}` is placed on "
+                            + ("itself" if on is target else f"its own `{on.path}`"), span,
+                            hint="place it on another part, or leave `on=` out: the "
+                                 "position is then in the assembly's frame")
+        seen, todo = set(), [on]
+        while todo:                 # the frames `on`'s frame is built from: not `target`'s
+            s = todo.pop()
+            for a in [s, *s.ancestors()]:
+                if id(a) in seen:
+                    break
+                seen.add(id(a))
+                pl = getattr(a, "placement", None)
+                if pl is not None and pl[3] is not None:
+                    if pl[3].is_within(target):
+                        raise EvalError("E0108", f"`{target.path}` is placed on `{on.path}`, "
+                                        f"which is placed on `{target.path}`"
+                                        + ("" if pl[3] is target else f" (`{pl[3].path}`)"),
+                                        span, hint="place one of them in the assembly's frame "
+                                                   "(no `on=`)")
+                    todo.append(pl[3])
+                    break
+        return on
+
+    def settle_on_top(self) -> None:
+        """Each ``Place(part, on=other, position=(x, y))`` set on ``other``'s top face: z its
+        thickness (mm; its own, its structures', the file's, else the default; 0 for an
+        assembly), once the file's ``thickness`` (run after the structures) is known."""
+        from ..output.part.build.sunk import DEFAULT_THICKNESS
+        for target in self.on_top:
+            pos, rot, span, on = target.placement
+            t = 0.0 if on.kind == "assembly" else next(
+                (getattr(a, "thickness") for a in [on, *on.ancestors()]
+                 if getattr(a, "thickness", None) is not None),
+                getattr(self.model, "thickness", None))
+            z = float(t if t is not None else DEFAULT_THICKNESS)
+            target.placement = ((pos[0], pos[1], z), rot, span, on)
+        self.on_top = []
 
     def _bend(self, conv, node, spans):
         """``Bend(part, at=x, angle=a, radius=r)``: a bend of a solid part in the assembled

@@ -85,6 +85,7 @@ class Statements(Asserts):
             if isinstance(s, A.ThicknessDecl):
                 self._exec_stmt(s)
         self.struct, self.scope = saved
+        self.settle_on_top()                            # Place(on=, (x, y)): its top face
         self.model.root = root
         self.model.constants = fctx.scope.vars
         from .sinks import fillet_copies, sink_copies

@@ -160,7 +160,11 @@ DETAILS: dict[str, str] = {
              "part's top face (z = thickness) looks towards face and its drawing's +y towards "
              "up; its +x then goes to up x face, so a part facing \"front\" with up=\"up\" "
              "reads left to right from the front; `position` is its bottom face's (0, 0), the "
-             "top face `thickness` from it towards face.",
+             "top face `thickness` from it towards face. With on=PART the position and turn "
+             "are in that part's own frame (x, y as drawn in it, z up from its bottom face; "
+             "two numbers stand on its top face), turned and moved with it: "
+             "`Place(vane, on=top, position=(20, -27), face=\"front\", up=\"up\")` stands "
+             "the vane on the top board however the board is placed.",
     "Hull": "`.center` is the center of the hull's bounding box (as `.bb.center`), a point "
             "that follows the shapes: `Circle(center=grip.center, radius=3)` centers a hole on "
             "it. The hull of circles is their outer tangent lines and arcs: a larger circle "

@@ -586,8 +586,9 @@ STATEMENTS: dict[str, tuple[str, str, str, list[str]]] = {
 `units mm` (default), `cm`, `m`, `in` (also `inch`), `ft`, at the top level: the unit of
 bare lengths in the whole file and its templates. A number may always carry its own unit:
 `5 mm`, `2 in`, `30 deg`, `1 rad`. A bare number is a length in the file unit where a length
-is expected and an angle in degrees where an angle is expected; `sin`, `cos`, `tan` of a bare
-number take radians. Outputs are in millimetres.
+is expected and an angle in degrees where an angle is expected (in arithmetic, and passed to
+a `def`, it stays a plain number: `norm(p) * 2` is twice a length); `sin`, `cos`, `tan` of a
+bare number take radians. Outputs are in millimetres.
 """, ["unit", "mm", "inch", "deg", "degrees", "bare number"]),
     "import": ("statement", "`import \"std/gears.aidl\"`: templates and constants of another "
                "file.", """
@@ -616,7 +617,10 @@ required. Keywords accept synonyms: `r` for `radius`, `num_teeth` for `teeth`.
 
 `def NAME(p1, p2=default) = EXPR` (one line, where a template may stand) is a function: a
 call gives the expression's value with the parameters bound (`def angle_of(v) = 225 deg - v * 27 deg`, then
-`angle_of(3)`); numbers, points and lists in and out, used anywhere an expression goes.
+`angle_of(3)`); numbers, points and lists in and out, used anywhere an expression goes. A bare
+number passed in stays a plain number until it lands where a length is expected: in
+`def toward(a, b, d) = b + (a - b) * (d / norm(a - b))`, `toward(p, q, 10)` scales by 10 per
+mm (E0109, a 1/length): pass `10 mm`.
 """, ["template", "templates", "function", "define", "instance", "lambda"]),
     "mirror": ("statement", "`mirror(points, about=\"y\")`: a point list and its mirror image, "
                "for a symmetric outline written once.", """
@@ -744,8 +748,10 @@ layer of its own (`countersink`, `counterbore`).
 `Place(part, position=(x, y, z), rotation=(rx, ry, rz))` in the assembly that holds the part
 (or an assembly) places it in 3D: its point (x, y) of the sheet, relative to its frame, with z
 up through its `thickness`, is turned about x, then y, then z and moved by `position`
-(lengths and angles known before solving; a part is placed once). Unplaced parts stay as on
-the sheet. `aidl render FILE --assembled -o box.3mf` (or .step, .glb, .stl; .png for a
+(lengths and angles known before solving; a part is placed once). `Place(vane, on=top,
+position=(20, -27), face="front", up="up")` gives the position and turn in part `top`'s own
+frame (x, y as drawn in it, z up from its bottom face; two numbers: on its top face), so the
+vane follows the top wherever it is placed. Unplaced parts stay as on the sheet. `aidl render FILE --assembled -o box.3mf` (or .step, .glb, .stl; .png for a
 picture) writes every part extruded and placed, one named object per part. The fit check
 warns W0517 when two placed parts collide (a slot narrower than its partner's thickness, with
 the figure) and W0518 when a part touches no other (a tab short of its slot, with the gap).

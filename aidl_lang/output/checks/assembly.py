@@ -223,15 +223,12 @@ def _off_origin(d: Drawing, name: str):
     """``(dx, dy)`` mm from placed part ``name``'s own origin (its frame's (0, 0), which its
     `Place` puts at `position=`) to the centre of its material's box, when the origin lies
     outside that box by more than half the box's larger side; else None."""
-    import numpy as np
     s = d.part_of.get(name)
-    pl = getattr(s, "placement", None)
-    M = (getattr(d, "placement", None) or {}).get(name)
     part = next((p for p in d.parts if p.name == name), None)
-    if pl is None or M is None or part is None or part.shape.is_empty():
+    origin = (getattr(d, "origins", None) or {}).get(name)          # on the sheet
+    if getattr(s, "placement", None) is None or origin is None or part is None \
+            or part.shape.is_empty():
         return None
-    M = np.asarray(M, dtype=float)
-    origin = M[:3, :3].T @ (np.asarray(pl[0], dtype=float) - M[:3, 3])   # on the sheet
     x0, y0, x1, y1 = part.shape.bounds()
     cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
     out = max(x0 - origin[0], origin[0] - x1, y0 - origin[1], origin[1] - y1)

@@ -31,7 +31,7 @@ from ....base.limits import DEFAULT_BUDGET, Deadline, OutOfBudget, seconds_as_wo
 from ..edges.exact import Provenance
 from ..measure.nearby import faces_apart, meeting
 from .outlines import _shoelace, _weld
-from .placement import bends_of, placement_matrix
+from .placement import bends_of, origin_on_sheet, placement_matrix
 from .result import Cut, Drawing, Part, SinkAt, SinkCall, Through
 from .sunk import DEFAULT_THICKNESS, sunk_away, sunk_message
 from .scanwork import TURN, TURN_BACK, plan, turned, turned_back, union_seconds
@@ -764,6 +764,8 @@ class Renderer(Faces):
                     into[name] = float(t)
         if any(getattr(s, "placement", None) is not None for s in self.m.structures):
             out.placement = {name: placement_matrix(s, self.x) for name, s in out.part_of.items()}
+            # where each part's own (0, 0) lies on the sheet: what its `Place` moves
+            out.origins = {name: origin_on_sheet(s, self.x) for name, s in out.part_of.items()}
         out.bends = {n: b for n, s in out.part_of.items() if (b := bends_of(s, self.x))}
         for s in out.part_of.values():
             s.moved = self.moved(s)     # where the checks say positions as written

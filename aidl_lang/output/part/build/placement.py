@@ -32,48 +32,83 @@ def rotation_matrix(rx: float, ry: float, rz: float) -> np.ndarray:
     return Rz @ Ry @ Rx
 
 
-def placement_matrix(s: Structure, x) -> np.ndarray:
-    """The 4x4 matrix taking a point of part ``s`` on the flat sheet (absolute x, y in mm; z
-    from 0 up through its thickness) to the assembled product.  Each structure's local frame
-    (its points less the sum of its and its ancestors' frame offsets, ``x`` the solved values)
-    goes into its parent's by its ``Place`` (rotation, then position) or, unplaced, by its
-    frame offset as on the sheet, so a program with no ``Place`` is the sheet itself; an
-    unplaced structure above a ``Place`` adds nothing (where a relation lays it out on the
-    sheet moves no part placed in it).  A
-    pattern's copy with a ``Place`` of its own is taken from where its origin went (its
-    ``copy_origin``): placed, it stands as its original would."""
-    chain = [s, *s.ancestors()]
-    M = np.eye(4)
-    placed_below = False                       # a structure nearer `s` has its own Place
+def _step(pl) -> np.ndarray:
+    """The 4x4 of one ``Place``: its rotation (angles, or face=/up='s 3x3), then its position."""
+    step = np.eye(4)
+    rot = pl[1]
+    step[:3, :3] = np.array(rot, dtype=float) if isinstance(rot[0], tuple) \
+        else rotation_matrix(*rot)
+    step[:3, 3] = pl[0]
+    return step
+
+
+def _holds_placed(s: Structure) -> bool:
+    """Whether a structure below assembly ``s`` has a ``Place`` of its own (its parts then
+    stand by their placements, not where ``s`` lies on the sheet)."""
+    return s.kind == "assembly" and any(getattr(c, "placement", None) is not None
+                                        for c in s.subtree() if c is not s)
+
+
+def frame_matrix(s: Structure, x, placed_below: bool = False) -> np.ndarray:
+    """The 4x4 matrix taking a point of structure ``s``'s own frame (x, y as written in it,
+    z up from its bottom face) to the assembled product.  Each structure of the chain goes
+    into its parent's by its ``Place`` (rotation, then position) or, unplaced, by its frame
+    offset as on the sheet unless a structure nearer ``s`` is placed (``placed_below``: where
+    a relation lays an assembly out on the sheet moves no part placed in it).  A ``Place``
+    with ``on=`` (its fourth item, a structure) is set in that structure's frame
+    (:func:`on_frame`), and the chain above it is not read."""
     steps = []
-    for a in chain:                            # s first: which steps a Place below replaces
+    for a in [s, *s.ancestors()]:              # s first: which steps a Place below replaces
         pl = getattr(a, "placement", None)
-        step = np.eye(4)
         if pl is not None:
-            rot = pl[1]                        # angles, or face=/up='s 3x3 matrix
-            step[:3, :3] = np.array(rot, dtype=float) if isinstance(rot[0], tuple) \
-                else rotation_matrix(*rot)
-            step[:3, 3] = pl[0]
+            steps.append(_step(pl))
+            on = pl[3] if len(pl) > 3 else None
+            if on is not None:
+                steps.append(on_frame(on, x))
+                break
         elif not placed_below:
+            step = np.eye(4)
             step[0, 3], step[1, 3] = x[a.fx], x[a.fy]
+            steps.append(step)
         # (an unplaced assembly above a Place: its move on the sheet is layout, not 3D; run
         # dv: `RightOf(box, ...)` of a lid_box moved its Placed panels 247 mm off the origin)
         placed_below = placed_below or pl is not None
-        steps.append(step)
-    for step in reversed(steps):               # root first: M maps a's local frame to world
+    M = np.eye(4)
+    for step in reversed(steps):               # root first: M maps s's local frame to world
         M = M @ step
-    ox = sum(float(x[a.fx]) for a in chain)
-    oy = sum(float(x[a.fy]) for a in chain)
+    return M
+
+
+def on_frame(on: Structure, x) -> np.ndarray:
+    """The frame a ``Place(part, on=ON, ...)`` sets its part in: ``on``'s own frame in the
+    assembled product (:func:`frame_matrix`); for an assembly whose parts are placed, the
+    frame those parts stand in (its own move on the sheet left out, as they leave it)."""
+    return frame_matrix(on, x, placed_below=_holds_placed(on))
+
+
+def origin_on_sheet(s: Structure, x) -> tuple[float, float]:
+    """Where part ``s``'s own (0, 0) lies on the flat sheet (mm): the sum of its and its
+    ancestors' frame offsets, or, for a pattern's copy placed by its own ``Place``, where the
+    original's origin went (its ``copy_origin``): placed, it stands as its original would
+    (run db: 45 fingers `Place`d one by one marched off in a diagonal, each 10 i mm along its
+    own y)."""
     if getattr(s, "placement", None) is not None and s.copy_origin is not None:
-        # a pattern's copy placed by its own `Place`: its local frame starts where the
-        # original's origin went, so that it stands at `position` as the original would,
-        # not off by its step on the sheet (run db: 45 fingers `Place`d one by one marched
-        # off in a diagonal, each 10 i mm along its own y)
         from ....geometry.core.expr import evaluate
         ox, oy = (float(evaluate(e, x)) for e in s.copy_origin)
+        return ox, oy
+    chain = [s, *s.ancestors()]
+    return sum(float(x[a.fx]) for a in chain), sum(float(x[a.fy]) for a in chain)
+
+
+def placement_matrix(s: Structure, x) -> np.ndarray:
+    """The 4x4 matrix taking a point of part ``s`` on the flat sheet (absolute x, y in mm; z
+    from 0 up through its thickness) to the assembled product: the point less where the
+    part's own (0, 0) lies on the sheet (:func:`origin_on_sheet`), then its frame into the
+    product (:func:`frame_matrix`), so a program with no ``Place`` is the sheet itself."""
+    ox, oy = origin_on_sheet(s, x)
     to_local = np.eye(4)
     to_local[0, 3], to_local[1, 3] = -ox, -oy
-    return M @ to_local
+    return frame_matrix(s, x) @ to_local
 
 
 # ------------------------------------------------------------------ bends (``Bend``)
