@@ -303,6 +303,7 @@ def _compile(sink, source, path, overrides, do_solve, min_wall=None,
         # overflow in a residual is reported as a failed solve, not as a numpy warning
         warnings.simplefilter("ignore", RuntimeWarning)
         t0 = time.perf_counter()
+        model.x_written = list(model.x)         # where each value is written (E0405 says)
         result = solve(model, deadline=end.at)
         took = time.perf_counter() - t0
     work.add(solve_work(result.iterations, len(model.x)), "solving")
@@ -454,6 +455,11 @@ def check_extent(sink: DiagnosticSink, model: Model) -> bool:
     return False
 
 
+# the failed asserts (the first this many) whose message names the constraints that moved
+# what they read (:func:`~.geometry.relations.assertions.describe`)
+MOVED_SAID = 20
+
+
 def check_assertions(sink: DiagnosticSink, model: Model, held_only: bool = False) -> None:
     """E0405 for each ``assert`` that does not hold at the solution, every one of them (after
     a failed solve, ``held_only``: those that read no solved value)."""
@@ -461,9 +467,12 @@ def check_assertions(sink: DiagnosticSink, model: Model, held_only: bool = False
         return
     from .geometry.relations.assertions import describe, failed, judged_at
     x = None if held_only else judged_at(model)
-    for a, bad in failed(model, held_only):
+    for n, (a, bad) in enumerate(failed(model, held_only)):
+        # which constraint moved what it reads: a search of every constraint, for the first
+        # MOVED_SAID failures (a loop's thousand asserts stay linear)
         sink.add(Diagnostic("E0405", describe(a, bad, len(a.groups), x, model.param_owner,
-                                              None if held_only else model.xs()),
+                                              None if held_only else model.xs(),
+                                              model if n < MOVED_SAID else None),
                             a.span, "error",
                             hint="an `assert` states what must be true of the design; change "
                                  "the values or constraints so that it holds (it is not a "

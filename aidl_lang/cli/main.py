@@ -440,6 +440,11 @@ def cmd_render(args) -> int:
     if not res.ok:
         _emit(res.sink, args.json, False, _work_of(res))
         return 1
+    if args.layout:
+        # W0534 speaks of the default sheet: a layout speaks of its own, and refuses a part
+        # too large for it (run ff: "does not fit the 600 x 400 mm sheet" above a layout on
+        # the 800 x 600 mm sheet it was told)
+        res.sink.items[:] = [d for d in res.sink.items if d.code != "W0534"]
     opt = Options(show=show, style=args.svg_style, dpi=args.dpi, width=args.png_width,
                   thickness=thickness, margin=args.margin, assembled=args.assembled,
                   machine=machine, page=args.page)

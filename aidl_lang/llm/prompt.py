@@ -48,7 +48,7 @@ constants `NAME = expr`, functions `def f(v) = 225 deg - v * 27 deg` (one line, 
 comparisons, `and or not`, `a if c else b`; `range(start, stop, step)`. A statement ends at
 the line break: continue a long one inside `( )` or `[ ]`, or end the line with `,` or an operator (`and`, `+`) and indent the next deeper. Comments start with `#` (not `//`). Numbers take units (`5 mm`, `2 in`, `30 deg`); a bare
 number is a length in the file unit or an angle in degrees where one is expected (passed to a
-`def`, it stays a plain number: `toward(a, b, 10 mm)`; but `sin`/`cos`/`tan` read
+`def`, it stays plain: `f(p, 10 mm)`; but `sin`/`cos`/`tan` read
 radians: write `cos(i * 10 deg)`); `pi`, `tau` count radians: `a + pi / 2` is `a + 90 deg`;
 `x * 1 rad` is an angle.
 
@@ -127,7 +127,7 @@ solid outside it makes no part, E0202), drawn where the solver puts it (`RightOf
 (numbers known before solving) for `--assembled`: face= where its top face (engraving,
 countersinks) looks ("front" is -y, "back", "left", "right", "up", "down", or (0, -1, 1)), up=
 where its drawing's +y goes, position= its bottom face's (0, 0) (or rotation=(rx, ry, rz));
-on=other: position and turn in that part's frame (x, y as drawn in it; (x, y) alone: on its top face);
+on=part: position and turn in that part's frame ((x, y): on its top face);
 W0517/W0518: parts collide, or touch nothing.
 - Bend(part, at=x, angle=90 deg, radius=r) bends a placed part there (a living hinge).
 Screw heads: `Countersink(holes, diameter=9 mm)` on the holes (a pattern's copies follow their original), never an engraved ring.

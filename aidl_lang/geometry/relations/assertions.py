@@ -65,6 +65,105 @@ def _structures_read(a: Assertion, owners) -> list:
     return [s for s in dict.fromkeys(o for o in out if o is not None)]
 
 
+def _indices(e, into: set) -> None:
+    """The parameter indices expression ``e`` (box terms expanded) reads, added to ``into``."""
+    todo = [e]
+    while todo:
+        e = todo.pop()
+        if isinstance(e, Lin):
+            into.update(e.terms)
+        elif hasattr(e, "args") and hasattr(e, "op"):
+            todo += [v for v in e.args if not isinstance(v, (int, float))]
+
+
+# a value the solve moved less than this (mm, or radians) from where it is written is not said
+MOVED = 0.01
+
+
+def _geometry_of(model) -> dict:
+    """Parameter index -> ``(geometry, its name there)``: ``position.y``, ``radius``."""
+    out: dict = {}
+    for g in model.all_geometry():
+        for name, p in g.points.items():
+            out.setdefault(p.ix, (g, f"{name}.x"))
+            out.setdefault(p.iy, (g, f"{name}.y"))
+        for name, s in g.scalars.items():
+            out.setdefault(s.index, (g, name))
+    return out
+
+
+def _as_written(model, g, i: int) -> bool:
+    """Whether parameter ``i`` starts where the program writes it: not a pattern's or a
+    mirror's copy (whose start is the original's, moved), nor a part's frame."""
+    s = model.param_owner[i]
+    if g is None or getattr(g, "pattern_original", None) is not None:
+        return False
+    return s is None or all(getattr(a, "copy_origin", None) is None and a.pattern_original
+                            is None for a in [s, *s.ancestors()])
+
+
+def _moved_within(a: Assertion, x, model) -> str:
+    """A value the assertion reads that the solve moved within its part (a point, a size; not
+    a part's frame, :func:`_moved_part`), from where it is written to where it lies, and the
+    written constraints that read its shape's moved values without moving the part whole
+    (those that do, laying it out, are named only when no other is) (issue 111, run eh: a
+    word 4.25 mm off its rail, moved by `backer.plate.bb.height == letters.bb.height + 2 * 10
+    mm`, unnamed): "; the solve moved `letters.word.position.y` from 0 mm as written to
+    4.25374 mm, by `...` (line 32)"; ``""`` when none was."""
+    start = getattr(model, "x_written", None)
+    if x is None or start is None:
+        return ""
+    read: set = set()
+    for grp in a.groups:
+        for _, le, re_, _ in grp:
+            for side in (le, re_):
+                if not isinstance(side, (int, float)):
+                    try:
+                        _indices(expand(side, x, set()), read)
+                    except (ArithmeticError, KeyError, TypeError, ValueError, IndexError):
+                        continue
+    geometry = _geometry_of(model)
+
+    def moved(k) -> bool:
+        return k < len(start) and model.free[k] and abs(float(x[k]) - start[k]) > MOVED
+
+    found = [k for k in read if moved(k) and _as_written(model, geometry.get(k, (None,))[0], k)]
+    if not found:
+        return ""
+    i = max(found, key=lambda k: (abs(float(x[k]) - start[k]), -k))
+    g, name = geometry[i]
+    shape = {k for k, (h, _) in geometry.items() if h is g and moved(k)}     # with its size
+    owner = model.param_owner[i]
+    chain = [k for s in ([owner, *owner.ancestors()] if owner is not None else [])
+             for k in (s.fx, s.fy) if k >= 0]
+    shifted = np.array(x, dtype=float)
+    shifted[chain] += 1.0                       # the part moved whole, 1 mm each way
+    by, layout = [], []
+    for c in model.constraints:
+        if c.implicit or c.span is None or c.hold:
+            continue
+        idx: set = set()
+        whole = False
+        for eq in list(c.equations) + list(c.deferred or ()):
+            try:
+                e = expand(eq.expr, x, set())
+                _indices(e, idx)
+                whole = whole or abs(evaluate(e, shifted) - evaluate(e, x)) > 1e-9
+            except (ArithmeticError, KeyError, TypeError, ValueError, IndexError):
+                continue
+        if idx & shape:
+            (layout if whole else by).append(c)
+    by = by or layout
+    label = _relative(f"{g.label}.{name}", a.owner)
+    show = (lambda v: f"{math.degrees(v):.6g} deg") if g.scalars.get(name) is not None and \
+        g.scalars[name].dim == "angle" else (lambda v: f"{v / a.scale:.6g} {a.unit}")
+    how = " and".join(f" `{c.describe()}` (line {c.span.line})" for c in by[:2])
+    more = f" and {len(by) - 2} more" if len(by) > 2 else ""
+    return (f"; the solve moved `{label}` from {show(start[i])} as written to "
+            f"{show(float(x[i]))}" + (f", by{how}{more}" if by else "")
+            + ": the assert reads it where the constraints put it")
+
+
 def _reads_place(a: Assertion, x, fx: int, fy: int) -> bool:
     """Whether a comparison of ``a`` changes when the frame (``fx``, ``fy``) is put back
     where it is written: the assert reads where the part lies, not only its sizes.  Judged
@@ -140,15 +239,17 @@ def _placed_note(a: Assertion, sheet, owners) -> str:
 
 
 def describe(a: Assertion, found: list, alternatives: int = 1, x=None, owners=None,
-             sheet=None) -> str:
+             sheet=None, model: Model | None = None) -> str:
     """The E0405 message: the condition, the user's reason and the values found
     (``found``: ``(op, left, right, dim)`` of the sides that fail; ``alternatives``: how
     many alternatives of an `or` failed, each by the sides found), then the value of each
     name and member the condition reads (``a.reads``, at ``x`` when given: where it is
     judged, :func:`judged_at`), where it is not the side itself: `(ring.bb.width = 124 mm,
     wall = 3 mm)`; a part it reads that a relation moved from where it is written, and the
-    relation (``owners``: the model's ``param_owner``); a placed part read where it is
-    written though the layout moved it (``sheet``: the solution)."""
+    relation (``owners``: the model's ``param_owner``); a value it reads that the solve moved
+    within its part, and the constraints that moved it (``model``: its ``x_written``); a
+    placed part read where it is written though the layout moved it (``sheet``: the
+    solution)."""
     why = f" ({a.message})" if a.message else ""
     parts = []
     for op, l, r, dim in found[:3]:
@@ -159,7 +260,7 @@ def describe(a: Assertion, found: list, alternatives: int = 1, x=None, owners=No
     where = f" (where {', '.join(said)})" if said else ""
     return (f"assertion failed: `{a.text}`{why}: {lead}" + "; ".join(parts) + where
             + _drawn_boxes(a, x) + _text_boxes(a, x) + _star_boxes(a, x) + _slot_lengths(a, x)
-            + _moved_part(a, x, owners)
+            + _moved_part(a, x, owners) + _moved_within(a, x, model)
             + _placed_note(a, sheet, owners))
 
 

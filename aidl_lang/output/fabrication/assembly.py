@@ -196,11 +196,13 @@ def fit(bodies, deadline=None, normals: dict | None = None,
         if vol > VOLUME_TOL:
             # the connected pieces with volume (Manifold leaves zero-volume sheets where
             # faces touch)
-            pieces = np.array([_box(m) for m in common.decompose()
-                               if m.volume() > VOLUME_TOL] or [_box(common)], dtype=float)
+            solids = [m for m in common.decompose() if m.volume() > VOLUME_TOL] or [common]
+            pieces = np.array([_box(m) for m in solids], dtype=float)
             box = tuple(float(v) for v in np.concatenate([pieces[:, :3].min(axis=0),
                                                           pieces[:, 3:].max(axis=0)]))
             depth, into_face = _depth(common, normals.get(na), normals.get(nb), box)
+            depth = _capped(depth, max(_thinnest(m) for m in solids),
+                            _parallel(normals.get(na), normals.get(nb)))
             if depth > DEPTH_TOL:
                 places = tuple(tuple(float(v) for v in q) for q in pieces) \
                     if len(pieces) > 1 else ()
@@ -360,6 +362,41 @@ def _depth(common, na, nb, box) -> tuple[float, bool]:
     # across a's sheet in every cut of that figure (a cross-halving's two slots too narrow
     # are thin across one sheet above the crossing's middle, the other below: a slot)
     return best, all(a for f, a in zip(figures, across_a) if f == best)
+
+
+def _parallel(na, nb) -> bool:
+    """Whether two plates' normals (None: +z) are parallel: the plates lie one on the other
+    or side by side in one plane."""
+    z = np.array([0.0, 0.0, 1.0])
+    return bool(np.linalg.norm(np.cross(z if na is None else na, z if nb is None else nb))
+                < 1e-9)
+
+
+def _thinnest(piece) -> float:
+    """A piece of a common volume: its thickness where thinnest (mm), the least of its
+    extents across each face of its convex hull (an upper bound of its least width; 0 for a
+    flat piece)."""
+    from scipy.spatial import ConvexHull, QhullError
+    v = np.asarray(piece.to_mesh().vert_properties, dtype=float)[:, :3]
+    try:
+        normals = ConvexHull(v).equations[:, :3]
+    except (QhullError, ValueError):
+        return 0.0
+    proj = v @ normals.T
+    return float((proj.max(axis=0) - proj.min(axis=0)).min())
+
+
+def _capped(figure: float, thinnest: float, parallel: bool) -> float:
+    """How deep two parts run into each other: ``figure`` (:func:`_depth`), unless the
+    thickest piece of their common volume, ``thinnest`` across, is thinner: side by side in
+    one plane the overlap's width, not the sheet's thickness (run fe: a pull disc 1.5 mm into
+    its rails' ends, "3 mm deep"); across each other, a piece under half the figure (a slot
+    too narrow leaves a sliver of half the figure each side) is a nib or a tenon off its
+    mortise, which runs only its own thickness in (runs fd, ff: a 0.07 mm nib "3.84 mm
+    deep", a tenon 3.3 mm down the slope from its mortise "9 mm deep")."""
+    if parallel:
+        return min(figure, thinnest)
+    return thinnest if thinnest < figure / 2 - 1e-9 else figure
 
 
 # a plate is cut to a pair's common box (:func:`_within`) when that holds at most this part
