@@ -1,0 +1,36 @@
+#!/bin/bash
+# usage: drafts/chk.sh NN_name   (run from anywhere)
+# Checks drafts/NN_name.aidl, logs the result, keeps the first valid program and the attempts.
+set -u
+D="$(cd "$(dirname "$0")" && pwd)"
+R="$D/../run"
+N="$1"
+SRC="$D/$N.aidl"
+export PYTHONPATH=/work/wt-models-fg
+AIDL=/work/main/.venv/bin/aidl
+mkdir -p "$R"
+TS="$(date -u '+%Y-%m-%d %H:%M:%S')"
+OUT="$(mktemp)"
+"$AIDL" check "$SRC" >"$OUT" 2>&1
+RC=$?
+NE=$(grep -c 'error\[E' "$OUT")
+NW=$(grep -c 'warning\[W' "$OUT")
+FV="$R/$N.first_valid.aidl"
+if [ -e "$FV" ]; then
+    K=$(( $(ls "$D/$N".fix*.aidl 2>/dev/null | wc -l) + 1 ))
+    KIND="fix $K"
+    cp "$SRC" "$D/$N.fix$K.aidl"; cp "$OUT" "$D/$N.fix$K.check.txt"
+    if [ $RC -eq 0 ]; then "$AIDL" render "$SRC" -o "$D/$N.fix$K.png" --png-width 1200 >"$D/$N.fix$K.render.txt" 2>&1; fi
+elif [ $RC -eq 0 ]; then
+    KIND="FIRST VALID"
+    cp "$SRC" "$FV"; cp "$OUT" "$R/$N.first_valid.check.txt"
+    "$AIDL" render "$FV" -o "$R/$N.first_valid.png" --png-width 1200 >"$R/$N.first_valid.render.txt" 2>&1
+else
+    K=$(( $(ls "$D/$N".attempt*.aidl 2>/dev/null | wc -l) + 1 ))
+    KIND="attempt $K"
+    cp "$SRC" "$D/$N.attempt$K.aidl"; cp "$OUT" "$D/$N.attempt$K.check.txt"
+fi
+echo "$TS  $N  $KIND  exit=$RC  errors=$NE  warnings=$NW" >>"$D/log.txt"
+echo "== $TS $N $KIND exit=$RC errors=$NE warnings=$NW"
+cat "$OUT"
+rm -f "$OUT"
