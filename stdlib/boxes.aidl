@@ -18,7 +18,9 @@ import "std/joints.aidl"
 # `finger` the least finger width. Members: `body` (an open finger_box),
 # `lid`, `lip`. An opening through the lid (a coin slot: `CutInto(slot, box.lid)`)
 # must be cut into the `lip` too (`CutInto(slot2, box.lip)`, the same shape where
-# the lip lies on the sheet), or the lip glued under it closes it.
+# the lip lies on the sheet), or the lip glued under it closes it. The walls
+# face as finger_box's: their top faces (an engraving as drawn) and the lid's
+# look out; a side's +y in the net is the box's front.
 # Anchor: (cx, cy) is the centre of `body.bottom`.
 def lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=10 mm,
             clearance=0.3 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {
@@ -61,7 +63,10 @@ def lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=10 
 # pull of its own, `lid.pull`: a slot across its middle (up to 30 mm long, 2 x
 # `thickness` wide) 4 x `thickness` from its front edge, the edge at the bottom of
 # the lid on the flat sheet, where the lid lies with `length` along x; a hole or a
-# drawing added to the lid keeps clear of it.
+# drawing added to the lid keeps clear of it. Only the front's and the lid's top
+# faces (an engraving as drawn) look out: the back's, the sides' and the bottom's
+# look in, so a label meant to be read outside goes on `front` or `lid` (run fc:
+# "LIVE ANIMAL" engraved inside the back); a side's +y in the net is the box's back.
 # Anchor: (cx, cy) is the centre of `bottom`.
 def sliding_lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=10 mm,
                     clearance=0.3 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {
@@ -257,6 +262,9 @@ def divider_tray(length=120 mm, width=80 mm, height=40 mm, rows=2, cols=3, thick
 # +y), the cheeks and pins to its right. Members:
 # `bottom`, `front`, `back`, `left`, `right`, `lid`, `cheek`, `pin`; the back
 # and the sides hold their finger_panel as panel (its size: b.left.panel.outline).
+# Only the front's and the lid's top faces (an engraving as drawn) look out: the
+# back's, the sides', the cheeks' and the bottom's look in, so a label meant to be
+# read outside goes on `front` or `lid`; a side's +y in the net is the box's back.
 # Anchor: (cx, cy) is the centre of `bottom`.
 def hinged_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=10 mm, pin=0 mm,
                clearance=0.3 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {

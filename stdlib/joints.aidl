@@ -88,13 +88,15 @@ def finger_panel(width=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
 # The front and back lie upright (their top edge at +y: `front.bb.bottom` is
 # the box's bottom edge); the left and right lie on their side, their top edge
 # outward (the left's at -x, the right's at +x), so a side is `height` wide in
-# x and `depth` tall in y. The front and back have fingers on every edge and keep their corners; the
+# x and `depth` tall in y, its +y towards the box's front (run fe: holes placed
+# "45 mm in front" by +y came out at the back). The front and back have fingers on every edge and keep their corners; the
 # bottom and lid have slots along the front and back and fingers at the
 # sides; the sides have slots all round. Members: `bottom`, `front`, `back`,
 # `left`, `right`, `lid` (each a finger_panel). Each panel is placed in 3D
 # (`Place`): assembled (`aidl render --assembled`), the box stands on z = 0,
 # centered on x = y = 0, its fingers in their slots; the walls' and the lid's
-# top faces (an engraving as drawn in the net) look out, the bottom's in.
+# top faces (an engraving as drawn in the net) look out, the bottom's in; the
+# back reads from behind (its +x is the box's left).
 # Anchor: (cx, cy) is the centre of `bottom`.
 def finger_box(length=120 mm, depth=80 mm, height=50 mm, thickness=3 mm,
                finger=10 mm, closed=true, gap=5 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {

@@ -27,7 +27,7 @@ def test_letters_a_tenth_from_a_hole_are_warned_with_the_gap_and_the_move():
     # the hole's top at y = -3.5; the letters' baseline 0.1 mm above it ("E" sits on it)
     (w,) = _w(PLATE.replace("BASE", "-3.4").replace("FONT", ""))
     assert w.message.startswith('engraving `tag.label.word` (text "TEE") comes 0.10 mm from '
-                                "the cut edge of `tag` (a hole) at ")
+                                "the cut edge of `tag` (the hole `tag.hang`) at ")
     assert "text needs 0.2 mm clear of the edge" in w.message
     assert w.hint.startswith("keep `tag.label.word` 0.10 mm or more further from the edge")
     assert w.span.line == 4
@@ -43,7 +43,7 @@ def test_letters_set_tight_but_clear_are_not_warned(base):
 def test_outline_letters_touching_a_hole_are_warned():
     # a font's letters (filled outlines, issue 112) on the hole's edge: their bottom at -3.48
     ws = _w(PLATE.replace("BASE", "-3.48").replace("FONT", ', font="sans"'))
-    assert len(ws) == 1 and "touches the cut edge of `tag` (a hole)" in ws[0].message
+    assert len(ws) == 1 and "touches the cut edge of `tag` (the hole `tag.hang`)" in ws[0].message
 
 
 def test_letters_near_the_outline_name_the_outline():

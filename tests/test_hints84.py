@@ -204,8 +204,10 @@ def test_law_a_ledges_move_aligns_the_edges_and_changes_nothing_else(s, side, ou
     src, truth = _stack(s, side, out, w, turned)
     c = _compile(src)
     assert _same_region(_region(c, "p"), truth)
-    (x,) = _warnings(c, "W0520")
-    assert _codes(c) == {"W0520"}
+    # (under 0.1 mm a note: it hardly shows once cut, run fc; its hint is the same law)
+    (x,) = [d for d in c.sink.items if d.code == "W0520"]
+    assert x.severity == ("warning" if s >= 0.1 else "note")
+    assert _codes(c) <= {"W0520"}
     m = re.search(r"move `p\.(\w+)` by \((-?[0-9.]+), (-?[0-9.]+)\) mm", x.hint)
     assert m, x.hint
     shape, dx, dy = m.group(1), float(m.group(2)), float(m.group(3))
@@ -213,6 +215,7 @@ def test_law_a_ledges_move_aligns_the_edges_and_changes_nothing_else(s, side, ou
     moved, truth = _stack(s, side, out, w, turned, {shape: (dx, dy)})
     after = _compile(moved)
     assert _codes(after) == set(), (x.hint, [y.message for y in _warnings(after)])
+    assert not [d for d in after.sink.items if d.code == "W0520"]
     assert _same_region(_region(after, "p"), truth, 0.01)
 
 

@@ -1228,7 +1228,8 @@ place, and the hint the move that aligns the poking shape, as a vector (`move `n
 by (-0.200, 0.000) mm`: resized about its centre instead, a shape's edge moves half as
 far). Align the edges (a constraint, or the number that is off), or make the offset clear
 if a ledge is meant. A part says its first 5 ledges; the fifth ends "(and N more like it in
-`part`)".
+`part`)". A ledge under 0.1 mm is a note: it hardly shows once cut (a trapezoid's sloping
+side 0.07 mm off a joint's notch), and is worth aligning only where it is a fit.
 
     solid note {
         head = Ellipse(center=(0, 0), rx=8, ry=6)

@@ -306,8 +306,9 @@ class Expressions:
         i = int(round(i))
         n = len(obj)
         if not -n <= i < n:
-            raise EvalError("E0110", f"index {i} is out of range: the list has {n} item{'s' if n != 1 else ''}",
-                            e.index.span, hint=f"valid indices are 0 to {n - 1}" if n else "the list is empty")
+            raise EvalError("E0110", f"index {i} is out of range: the list has {n} item{'s' if n != 1 else ''}"
+                            + _nested_note(obj, i, e), e.index.span,
+                            hint=f"valid indices are 0 to {n - 1}" if n else "the list is empty")
         if obj[i] is POISON:
             raise _Silent()
         return obj[i]
@@ -598,6 +599,26 @@ class Expressions:
             return PV(lift(p.x) * k, lift(p.y) * k, None, p.owners | q.owners)
         raise EvalError("E0108", f"cannot apply `{op}` to {type_name(l)} and {type_name(r)}", e.span,
                         hint="points add and subtract as vectors; scale them by numbers")
+
+
+def _nested_note(obj, i: int, e) -> str:
+    """E0110's words for a list of lists indexed as if flat (run fd: two nested loops made
+    `screw` a list of 2 lists of 2, and `screw[3]` meant the fourth hole): which item of
+    which list index ``i`` counts to, ``screw[1][1]``; "" for any other list."""
+    if i < 0 or not obj or not all(isinstance(v, list) for v in obj):
+        return ""
+    sizes = [len(v) for v in obj]
+    if i >= sum(sizes):
+        return ""
+    a = 0
+    while i >= sizes[a]:
+        i -= sizes[a]
+        a += 1
+    name = e.obj.id if isinstance(e.obj, A.Name) else (
+        e.obj.name if isinstance(e.obj, A.Member) else "list")
+    each = (f"each a list of {sizes[0]}" if len(set(sizes)) == 1 else "each a list")
+    return (f", {each} (nested loops make a list per pass of the outer one): counted "
+            f"through them, it is `{name}[{a}][{i}]`")
 
 
 def _scale_hint(dim) -> str:

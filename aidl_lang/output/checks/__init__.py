@@ -306,7 +306,7 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
             run("invisible", s, lambda: _check_invisible(d, s, sink))
     tick(next(iter(roots), None))   # past the deadline: at the first part (E0304 located)
     run("engraving", None, lambda: check_text_near_cut(
-        _check_engraving(d, roots, sink, loops, tick), roots, loops, sink))
+        _check_engraving(d, roots, sink, loops, tick), roots, loops, sink, d.shapes))
     by_part: dict = {}
     for c in d.cuts:
         by_part.setdefault(_part_of(c.owner, roots), []).append(c)

@@ -489,6 +489,17 @@ COVER_PROBES = 16       # points of a text's strokes looked at
 COVER_SHARE = 0.125     # of them under another part (2 of 16): the text is covered
 
 
+def _through(body, M, t: float) -> bool:
+    """Whether solid ``body`` (placed, mm) reaches past both faces of the part placed by
+    ``M`` (4x4) and ``t`` mm thick: it passes through that part (a cross-halving's other
+    panel, a shelf through its side's mortise), held there by the joint, not a disc or a lid
+    lying on it."""
+    import numpy as np
+    v = np.asarray(body.to_mesh().vert_properties, dtype=float)[:, :3]
+    z = (v - np.asarray(M, dtype=float)[:3, 3]) @ np.asarray(M, dtype=float)[:3, 2]
+    return bool(z.min() < -0.01 and z.max() > t + 0.01)
+
+
 def _check_covered_text(d: Drawing, bodies, sink: DiagnosticSink) -> None:
     """W0532, a note, for the engraved texts of a placed, unbent part whose face (the one the
     laser engraves, z = the thickness) another part covers as placed, in whole or in part: at
@@ -544,10 +555,11 @@ def _check_covered_text(d: Drawing, bodies, sink: DiagnosticSink) -> None:
                     mf.OpType.Add)
             n = int(round((probes ^ bodies[j][1]).volume() / (e ** 3)))   # probes inside
             if n >= math.ceil(COVER_SHARE * len(Q) - 1e-9):
-                covered.setdefault((name, other), []).append((g, n, len(Q)))
+                covered.setdefault((name, other), []).append(
+                    (g, n, len(Q), _through(bodies[j][1], M, t)))
                 break
     for (name, other), rows in covered.items():
-        g, n, m = rows[0]
+        g, n, m, fixed = rows[0]
         short, cover = name.split(".")[-1], other.split(".")[-1]
         what = (f"the engraved text `{_copy_label(g)}` (\"{g.data.get('text', '')}\") of "
                 f"`{name}` lies under `{other}` as placed ({n} of {m} points of its letters)"
@@ -556,10 +568,20 @@ def _check_covered_text(d: Drawing, bodies, sink: DiagnosticSink) -> None:
                 f"(`{_copy_label(g)}`, \"{g.data.get('text', '')}\", and "
                 + ", ".join(f"`{_copy_label(r[0], short=True)}`" for r in rows[1:4])
                 + (", ..." if len(rows) > 4 else "") + ")")
+        it = "it" if len(rows) == 1 else "they"
+        if fixed:               # through it: a joint holds it, nothing moves off
+            sink.add(Diagnostic(
+                "W0532", f"assembled, {what}: `{cover}` passes through `{short}` there (a "
+                f"joint holds it), so {it} cannot be seen", g.span, "warning",
+                hint="the laser engraves the face that is up on the sheet: move the text "
+                     f"clear of `{cover}` (beside the joint), or turn `{short}` with its "
+                     "`Place` (`face=`, `up=`) so that face looks out (the text mirrored, "
+                     "`Mirrored`, if it must read from the other side)"))
+            continue
         sink.add(Diagnostic(
             "W0532", f"assembled, {what}: {'it shows' if len(rows) == 1 else 'they show'} "
             f"only where `{cover}` moves off (a dial's window, a lid); fixed there, "
-            f"{'it' if len(rows) == 1 else 'they'} cannot be seen", g.span, "note",
+            f"{it} cannot be seen", g.span, "note",
             hint=f"if `{cover}` turns, slides or lifts off, nothing is needed; if it is fixed "
                  "there: the laser engraves the face that is up on the sheet, so turn "
                  f"`{short}` with its `Place` (`face=`, `up=`) so that face looks out (the "

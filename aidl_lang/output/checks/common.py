@@ -11,6 +11,7 @@ import threading
 import manifold3d as mf
 import numpy as np
 
+from ...base.diagnostics import Diagnostic
 from ...geometry.core.model import Structure, within_index
 from ..part.build.booleans import Drawing
 
@@ -415,7 +416,7 @@ def below(w: float, t: float, places: int = 2) -> str:
     return f"{w:.15g}"
 
 
-def _say_few(sink, code: str, path: str, finds: list) -> None:
+def _say_few(sink, code: str, path: str, finds: list, severity: str = "warning") -> None:
     """Warn ``code`` for the first :data:`SHOWN` of ``finds`` (each ``(message, span, kw)``,
     ``kw`` the warning's other fields: hint, labels), in their order; when there are more,
     the last one said ends "(and N more like it in `path`)": a part of 4,000 circles that
@@ -425,7 +426,7 @@ def _say_few(sink, code: str, path: str, finds: list) -> None:
     for k, (message, span, kw) in enumerate(finds[:SHOWN]):
         if rest > 0 and k == SHOWN - 1:
             message += f" (and {rest} more like it in `{path}`)"
-        sink.warning(code, message, span, **kw)
+        sink.add(Diagnostic(code, message, span, severity, **kw))
 
 
 def part_min_wall(d: Drawing, part, given: float | None = None) -> float:

@@ -19,11 +19,35 @@ from ..common import written
 TEXT_CLEAR = 0.2         # mm: letters closer to the cut edge run into it
 
 
-def check_text_near_cut(texts: list, roots: dict, loops: dict | None, sink) -> None:
+def _hole_at(part, shapes: dict, x: float, y: float) -> str:
+    """The hole of ``part`` whose edge point (``x``, ``y``) is on, as the program names it
+    (the outermost hole structure whose shape's box holds the point: a template instance,
+    `left_end.divider`, before its own slots), or "a hole" (run fc: a name engraved over a
+    tab_and_slot's mortise, "(a hole)" with no word of which)."""
+    best = None
+    for s in part.subtree():
+        if s.kind != "hole" or s is part:
+            continue
+        sh = shapes.get(s)
+        if sh is None or sh.is_empty():
+            continue
+        x0, y0, x1, y1 = sh.bounds()
+        if x0 - 0.3 <= x <= x1 + 0.3 and y0 - 0.3 <= y <= y1 + 0.3 and (
+                best is None or s.depth < best.depth):
+            best = s
+    if best is None:
+        return "a hole"
+    rel = best.path[len(part.parent.path) + 1:] if part.parent is not None else best.path
+    return f"the hole `{rel}`"
+
+
+def check_text_near_cut(texts: list, roots: dict, loops: dict | None, sink,
+                        shapes: dict | None = None) -> None:
     """W0516 for each text of ``texts`` (``[(part, [(text, stroke items)])]``, those no
     W0505 or W0516 reported) that comes within :data:`TEXT_CLEAR` of its part's cut edge
-    (``roots[part]``'s loops): the gap in mm, which edge, where (x, y), and how far to move
-    it; one warning per statement (a loop's copies named with it)."""
+    (``roots[part]``'s loops): the gap in mm, which edge (a hole named from ``shapes``, the
+    drawing's Structure -> CrossSection), where (x, y), and how far to move it; one warning
+    per statement (a loop's copies named with it)."""
     from ...part.measure.nearby import box_pairs_between
     for part, geoms in texts or ():
         if not geoms:
@@ -62,10 +86,12 @@ def check_text_near_cut(texts: list, roots: dict, loops: dict | None, sink) -> N
                            f"`{_copy_label(f[1], short=True)}` ({f[0]:.2f} mm)"
                            for f in group[1:4]) + (", ..." if len(group) > 4 else "")
             wx, wy = written(part, *pm)
+            edge = _hole_at(part, shapes or {}, float(pm[0]), float(pm[1])) if in_hole \
+                else "the outline"
             sink.warning(
                 "W0516", f"engraving `{_copy_label(g)}` (text \"{g.data.get('text', '')}\") "
                 f"{how} the cut edge of `{part.path}` "
-                f"({'a hole' if in_hole else 'the outline'}) at ({wx:.2f}, {wy:.2f}): "
+                f"({edge}) at ({wx:.2f}, {wy:.2f}): "
                 f"the letters meet the cut (text needs {TEXT_CLEAR} mm clear of the edge){more}",
                 g.span, hint=f"keep `{g.label}` {math.ceil((TEXT_CLEAR - gap) * 100) / 100:.2f} "
                 "mm or more further from the edge (move it, or make it smaller), or move the "

@@ -14,7 +14,7 @@ import math
 import manifold3d as mf
 import numpy as np
 
-from ....base.diagnostics import DiagnosticSink
+from ....base.diagnostics import Diagnostic, DiagnosticSink
 from ...part.build.booleans import Drawing
 from ..common import _edges, _inside, _part_of, _pct, _signed, freed_share, written
 from .allowed import meant_off
@@ -657,11 +657,19 @@ def _say_meets_cut(part, group: list, hole, E0, E1, crossing: set, sink, also: s
         more = (f"; {len(group) - 1} more cop{'ies' if len(group) > 2 else 'y'} of this "
                 f"statement as close: {rest}{', ...' if len(group) > 4 else ''}")
     wx, wy = written(part, *pm)
-    sink.warning("W0516", f"engraving `{_copy_label(g)}` {how} the cut edge of "
-                 f"`{part.path}` ({which}) at ({wx:.2f}, {wy:.2f}): the engraving "
-                 f"meets the cut (a mark needs {CUT_CLEAR} mm clear of the edge), so it "
-                 f"runs into the edge{more}{also}", g.span,
-                 hint=fix + "; the cut already draws the edge")
+    # a line run on across an opening's edge leaves no sliver: it is engraved up to the
+    # edge, as drawn, a note (runs eq, ey, fg, fj: a border across a foot's slot, a ring
+    # through its peg holes, a vine's stems into its leaf cut-outs, all meant; run r's
+    # place card, a border through a slot, called a slip: said either way)
+    across = id(g) in crossing and end is None and g.kind != "Text"
+    sink.add(Diagnostic(
+        "W0516", f"engraving `{_copy_label(g)}` {how} the cut edge of "
+        f"`{part.path}` ({which}) at ({wx:.2f}, {wy:.2f}): " + (
+            "engraved up to the edge where it crosses, as drawn (a mark meant to stop short "
+            f"needs {CUT_CLEAR} mm clear of the edge)" if across else
+            f"the engraving meets the cut (a mark needs {CUT_CLEAR} mm clear of the edge), "
+            "so it runs into the edge") + f"{more}{also}", g.span,
+        "note" if across else "warning", hint=fix + "; the cut already draws the edge"))
 
 
 def _run(item) -> tuple:

@@ -117,7 +117,7 @@ def _marks_over_marks(d: Drawing, tick=None) -> tuple[dict, dict]:
         return {}, items_of
     marks = list(items_of)
     home = np.array([id(part_of[g]) for g in marks])
-    segs, owner, closed = [], [], []
+    segs, owner, closed, curved = [], [], [], []
     for k, g in enumerate(marks):
         for it in items_of[g]:
             P = _polyline(it)
@@ -126,20 +126,25 @@ def _marks_over_marks(d: Drawing, tick=None) -> tuple[dict, dict]:
             segs.append(np.stack([P[:-1], P[1:]], axis=1))
             owner.append(np.full(len(P) - 1, k))
             closed.append(np.full(len(P) - 1, _closed(it)))
+            curved.append(np.full(len(P) - 1, it[0] in ("arc", "circle")))
     if not segs:
         return {}, items_of
     S = np.concatenate(segs)
     own = np.concatenate(owner)
+    curve = np.concatenate(curved)
     A, B = S[:, 0], S[:, 1]
     lo, hi = np.minimum(A, B), np.maximum(A, B)
     if tick is not None:
         tick()
     pairs = box_pairs(np.column_stack([lo, hi]), OVERDRAWN_TOL)
     if len(pairs):
+        # (two arcs' or circles' samples: compared exactly, by :func:`_arcs_on_arcs`)
         pairs = pairs[(own[pairs[:, 0]] != own[pairs[:, 1]])
-                      & (home[own[pairs[:, 0]]] == home[own[pairs[:, 1]]])]
+                      & (home[own[pairs[:, 0]]] == home[own[pairs[:, 1]]])
+                      & ~(curve[pairs[:, 0]] & curve[pairs[:, 1]])]
     found: dict = {}        # (span, span) -> [(length, a, b)]
-    if len(pairs):
+    length: dict = _arcs_on_arcs(marks, items_of, home)
+    if len(pairs) or length:
         i, j = pairs[:, 0], pairs[:, 1]
         da, db = B[i] - A[i], B[j] - A[j]
         la, lb = np.hypot(*da.T), np.hypot(*db.T)
@@ -154,7 +159,6 @@ def _marks_over_marks(d: Drawing, tick=None) -> tuple[dict, dict]:
         over = np.minimum(la, np.maximum(t0, t1)) - np.maximum(0.0, np.minimum(t0, t1))
         on = (cross <= PARALLEL * la * lb) & (off0 <= OVERDRAWN_TOL) & (off1 <= OVERDRAWN_TOL) \
             & (over >= OVERDRAWN_LEAST)
-        length: dict = {}
         for a, b, L in zip(own[i[on]].tolist(), own[j[on]].tolist(), over[on].tolist()):
             key = (min(a, b), max(a, b))
             length[key] = length.get(key, 0.0) + L
@@ -225,6 +229,75 @@ def _marks_over_marks(d: Drawing, tick=None) -> tuple[dict, dict]:
     return found, items_of
 
 
+def _arcs_on_arcs(marks: list, items_of: dict, home) -> dict:
+    """Arcs and circles of two marks on one part that lie on each other, compared exactly:
+    the same centre and radius within :data:`OVERDRAWN_TOL`, the length of their common
+    angle (at least :data:`OVERDRAWN_LEAST`), ``{(mark index, mark index): mm}`` (run fe's
+    roulette wheel: a circle of r 110 on each of 16 sectors' inner arcs, unsaid: the two
+    curves' samples are not parallel chords).  Hashed by centre and radius in cells of the
+    tolerance (each item against its cell and the 26 around it): near-linear."""
+    cell = OVERDRAWN_TOL
+    grid: dict = {}
+    rows = []
+    for k, g in enumerate(marks):
+        for c, r, a1, a2, loop in _curves(items_of[g]):
+            c = np.asarray(c, dtype=float)
+            lo, span = (min(a1, a2), abs(a2 - a1)) if abs(a2 - a1) < 2 * math.pi - 1e-12 \
+                else (0.0, 2 * math.pi)
+            key = (round(c[0] / cell), round(c[1] / cell), round(r / cell))
+            rows.append((k, c, r, lo % (2 * math.pi), span, key, loop))
+            grid.setdefault(key, []).append(len(rows) - 1)
+    out: dict = {}
+    for n, (k, c, r, lo, span, key, loop) in enumerate(rows):
+        for dx in (-1, 0, 1):
+            for dy in (-1, 0, 1):
+                for dr in (-1, 0, 1):
+                    for m in grid.get((key[0] + dx, key[1] + dy, key[2] + dr), ()):
+                        k2, c2, r2, lo2, span2, _, loop2 = rows[m]
+                        if m <= n or k2 == k or home[k2] != home[k] or abs(r2 - r) > cell \
+                                or np.hypot(*(c2 - c)) > cell or loop and loop2:
+                            continue    # (two outlines' arcs: sampled alike, the chords say)
+                        common = _common_angle(lo, span, lo2, span2)
+                        if common * r >= OVERDRAWN_LEAST:
+                            pair = (min(k, k2), max(k, k2))
+                            out[pair] = out.get(pair, 0.0) + common * r
+    return out
+
+
+def _curves(items) -> list:
+    """The circular curves of a mark's engraving items, ``(centre, radius, angle from, angle
+    to, of an outline)`` (radians; a circle 0 to 2 pi): its arcs and circles, and those of an
+    outline's exact loop (a Sector's two arcs; ``True`` last)."""
+    from ....geometry.shapes.curves import Arc, Circle
+    out = []
+    for it in items:
+        if it[0] == "arc":
+            out.append((it[1], float(it[2]), float(it[3]), float(it[4]), False))
+        elif it[0] == "circle":
+            out.append((it[1], float(it[2]), 0.0, 2 * math.pi, False))
+        elif it[0] == "poly" and len(it) > 2 and hasattr(it[2], "segments"):
+            for s in it[2].segments:
+                if isinstance(s, Arc):
+                    out.append((s.center, float(s.radius), float(s.start_angle),
+                                float(s.start_angle + s.sweep), True))
+                elif isinstance(s, Circle):
+                    out.append((s.center, float(s.radius), 0.0, 2 * math.pi, True))
+    return out
+
+
+def _common_angle(lo1: float, s1: float, lo2: float, s2: float) -> float:
+    """The angle (radians) two arcs of one circle share: each from ``lo`` (0 to 2 pi)
+    counter-clockwise through ``s``."""
+    tau = 2 * math.pi
+    if s1 >= tau - 1e-12 or s2 >= tau - 1e-12:
+        return min(s1, s2)
+    total = 0.0
+    for shift in (-tau, 0.0, tau):
+        a, b = max(lo1, lo2 + shift), min(lo1 + s1, lo2 + shift + s2)
+        total += max(0.0, b - a)
+    return min(total, s1, s2)
+
+
 def _clearing_move(A_marks, B_marks, items_of, rows):
     """How far to move the outlines ``B_marks`` (every copy of one statement) along the
     marks that run into them (the mean direction from each mark's outer end to its end
@@ -276,6 +349,14 @@ def _twice_hint(a, b, share: float, rows) -> str:
         if b.name and b.span is not None else [b]           # (a filled copy is not judged)
     on = {id(r[2]) for r in rows}
     ways = []
+    circle = a if a.kind == "Circle" else b if b.kind == "Circle" else None
+    if circle is not None and (b if circle is a else a).kind != "Circle":
+        # a ring drawn over the arcs of shapes set round it (run fe: a circle of r 110 on
+        # every pocket's inner arc): the shapes draw it where they stand
+        other = b if circle is a else a
+        return (f"draw each stroke once: leave the Circle `{circle.label}` out where "
+                f"`{other.label}` draws its arc (`Arc`s between them, or none if they go all "
+                "round), or move one of them clear")
     if b.kind in CLOSED_KINDS and share < 0.999:
         ways.append(f"draw `{b.label}` without the side that lies on `{a.label}` (a "
                     "`Polyline` through its other corners)")

@@ -88,6 +88,9 @@ class Renderer(Faces):
         self.slit_shapes: dict = {}
         self.unfinished: dict = {}      # Structure -> its shape before its Fillet/Chamfer
         self.split: set = set()
+        # id(geometry) -> the filled shapes merged into its area (masks.merge_fills): what a
+        # hole of an enclosing drawing clips (masks.masked)
+        self.fill_groups: dict = {}
 
     def tick(self, s: Structure | None = None, faces=(), watched: bool = True) -> None:
         """Look at the deadline before a step; ``faces``: the Manifold shapes one

@@ -68,6 +68,7 @@ def merge_fills(R, out, mark: tuple[int, int]) -> None:
         area = faces[ks[0]]
         for k in ks[1:]:
             area = area + faces[k]
+        R.fill_groups[id(filled[min(ks)])] = [filled[k] for k in ks]
         for lp in R.exact.loops(area):
             drawn.append(("fill", ("poly", lp.points(), lp), filled[min(ks)]))
     for st in drawn:
@@ -89,7 +90,7 @@ def masked(R, s, masks: list, out, mark: tuple[int, int]) -> None:
     before = {id(g): g for _, _, g in drawn if g is not None}     # what drew, to judge
     filled = list({id(g): g for style, _, g in drawn if style == "fill"}.values())
     drawn = [d for d in drawn if d[0] != "fill"]
-    areas = [R.face(g) for g in filled]
+    areas = [_fill_area(R, g) for g in filled]
     for c, sec in sections:
         loops = R.exact.loops(sec) if not sec.is_empty() else []
         kept, hid = [], False
@@ -125,6 +126,22 @@ def masked(R, s, masks: list, out, mark: tuple[int, int]) -> None:
         else:
             out.strokes.append((style, stroke, g))
             out.lines.append((style, _polyline_of(stroke)))
+
+
+def _fill_area(R, g):
+    """The area filled shape ``g`` engraves: its own face, or the union of the filled shapes
+    merged into it (:func:`merge_fills`: run fh's snake heads, merged with their bodies, lost
+    whole when a hole of the drawing around them clipped the bodies' faces alone)."""
+    group = R.fill_groups.get(id(g))
+    if not group:
+        return R.face(g)
+    faces = [f for f in (R.face(m) for m in group) if f is not None and not f.is_empty()]
+    if not faces:
+        return None
+    area = faces[0]
+    for f in faces[1:]:
+        area = area + f
+    return area
 
 
 def _hidden_whole(R, s, masks, before: dict, drawn: list, filled: list, areas: list) -> None:
