@@ -301,3 +301,29 @@ def test_runs_fg_fj_a_line_run_across_an_opening_is_a_note():
     ws = [d for d in r.diagnostics if d.code == "W0516"]
     assert ws and all(d.severity == "note" for d in ws)
     assert "engraved up to the edge where it crosses, as drawn" in ws[0].message
+
+
+def test_run_fh_no_shrink_hint_to_a_size_that_no_longer_reads():
+    """Run fh's snakes and ladders: W0513 hinted `size=0.45 mm` (and 0.69, 0.71, 1.81, 2.51
+    mm) for 5 mm square numbers crossed by ladders: unreadable.  A shrink under 60 % of the
+    size is not offered; moving is; 4.09 mm still is."""
+    import re
+    path = RUNS / "issue111fh" / "run" / "03_snakes_ladders.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    hints = [d.hint for d in r.diagnostics if d.code == "W0513"]
+    assert len(hints) == 14
+    sizes = [float(s) for h in hints for s in re.findall(r"size=([0-9.]+) mm", h)]
+    assert sizes and min(sizes) >= 0.6 * 5
+    assert any("4.09" in h for h in hints)
+    assert all("move" in h for h in hints)
+
+
+def test_run_fj_w0411_gives_the_tip_where_the_program_writes_it():
+    """Run fj's deer-crossing sign: W0411's tips were at (898, 250) mm, where the sheet's
+    layout had moved the deer; the program draws them about (0, 0).  Now as written."""
+    path = RUNS / "issue111fj" / "drafts" / "08_deer_crossing_sign.attempt1.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    ws = [d.message for d in r.diagnostics if d.code == "W0411"]
+    assert len(ws) == 3
+    assert "tip at (53, 106) mm" in ws[0] and "tip at (40, 104) mm" in ws[1]
+    assert not any("(898, 250)" in w for w in ws)

@@ -288,7 +288,9 @@ def finish(s: Structure, loops: list, x=None, check=None, said=None) -> list:
                 off = tuple(float(evaluate(e, x)) for e in s.frame_offset(None))
             said += report(kind, r, call, chosen, why, pts, got, loops,
                            first if loops is not first else None, off)
-            said += [_tip_back(call, k, *d) for k, d in enumerate(deep)]
+            # (run fj: W0411's tips given where the layout had moved the deer)
+            said += [_tip_back(call, k, (p[0] - off[0], p[1] - off[1]), *rest)
+                     for k, (p, *rest) in enumerate(deep)]
             if narrow:
                 names = [g.name for g in s.geometry if g.closed and g.name
                          and not g.construction and not g.__dict__.get("copied")]

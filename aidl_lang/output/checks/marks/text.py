@@ -355,6 +355,9 @@ def _check_marks(strokes, marks, tg, boxes, bb, sizes, said, sink, tick=None) ->
         fit = _fitting_size((strokes[i][:, 0], strokes[i][:, 1]), segs[m],
                             _open_ends(*segs[m]), boxes[i], size, g)
         ways = []
+        if fit and fit < SHRINK_LEAST * size:
+            fit = 0.0       # so small it no longer reads as the same text (run fh: 5 mm
+            #                 numbers told `size=0.45 mm`): move it instead
         if fit:
             u0, _, u1, _ = boxes[i][2]
             w = math.floor((u1 - u0) * fit / size * 10) / 10
@@ -372,6 +375,10 @@ def _check_marks(strokes, marks, tg, boxes, bb, sizes, said, sink, tick=None) ->
                 if x > IN_BOX - 1e-9 and tg[i].data.get("along") is None}
     _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs,
                      M, entering, sink, tick)
+
+
+# the least share of its size a text's shrink hint offers (W0513): smaller, it is another text
+SHRINK_LEAST = 0.6
 
 
 def _is_tick(items, rot: float, box, size: float) -> bool:
@@ -628,10 +635,12 @@ def _check_clearance(strokes, marks, tg, mg, boxes, bb, mb, sizes, said, segs, M
                               f[3]) for f in pairs]
         smaller = ("" if twin is None else
                    f", smaller than `{_copy_label(twin)}` beside it at {sizes[i]:g} mm")
-        if fits and all(x is not None and x > 0 for x in fits):
+        if fits and all(x is not None and x > 0 for x in fits) and \
+                min(fits) >= SHRINK_LEAST * sizes[i]:
             ways.append(f"make the text at most {min(fits):g} mm (size={min(fits):g} mm"
                         f"{smaller})")
-        elif not any(x == 0.0 for x in fits):      # 0: no smaller size clears the mark
+        elif not any(x == 0.0 or x is not None and x < SHRINK_LEAST * sizes[i]
+                     for x in fits):      # 0: no smaller size clears the mark
             ways.append("make the text smaller" + (f" ({smaller[2:]})" if smaller else ""))
         if not any(w.startswith("move the text") for w in ways) and not framed:
             ways.insert(0, "move the text or the mark clear of each other")   # (run ag: only
