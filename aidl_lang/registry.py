@@ -525,7 +525,7 @@ _DEFS = {
                        cat="operation", varargs=True,
                        doc="these may overlap: refilled hole (W0501), holes (W0508, "
                            "W0512), assembly parts (W0511), windows (W0515), engraving and "
-                           "`self` (W0505)."),
+                           "`self` or a hole it crosses (W0505)."),
     "Countersink": _c([A("hole", "any"), A("diameter", "length"),
                        A("angle", "angle", math.pi / 2)], cat="operation",
                       doc="Flat-head screw seat: a cone (top diameter, included angle) "

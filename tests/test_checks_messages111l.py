@@ -327,3 +327,27 @@ def test_run_fj_w0411_gives_the_tip_where_the_program_writes_it():
     assert len(ws) == 3
     assert "tip at (53, 106) mm" in ws[0] and "tip at (40, 104) mm" in ws[1]
     assert not any("(898, 250)" in w for w in ws)
+
+
+def test_run_fj_allow_overlap_of_marks_and_the_hole_they_cross():
+    """Run fj's letter-folding jig: an A4 outline engraved across the base's finger notch,
+    `AllowOverlap(marks, notch)` written for it: W0505 kept, and W0523 "allows nothing: the
+    engraving lies on its part's material" beside it.  Naming the hole the marks cross says
+    it, as naming the part does."""
+    path = RUNS / "issue111fj" / "run" / "02_letter_fold_jig.first_valid.aidl"
+    src = path.read_text()
+    r = aidl_lang.compile(source=src, path=str(path))
+    assert not [d for d in r.diagnostics if d.code in ("W0505", "W0523")]
+    r = aidl_lang.compile(source=src.replace("        AllowOverlap(marks, notch)\n", ""),
+                          path=str(path))
+    assert [d.code for d in r.diagnostics if d.code in ("W0505", "W0523")] == ["W0505"]
+
+
+def test_run_ef_no_delete_hint_for_a_solid_an_assert_reads():
+    """Run ef's armillary sphere (sampled by the hint law at stride 27): W0506 told to delete
+    the polar axis bar ("else delete it"), which an assert reads by name: deleting it is
+    E0102.  A structure the program reads by name gets no such hint."""
+    path = RUNS / "issue111ef" / "run" / "07_armillary_sphere.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    hints = [d.hint for d in r.diagnostics if d.code == "W0506"]
+    assert hints and not any("else delete it" in h for h in hints)

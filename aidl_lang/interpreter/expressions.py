@@ -194,8 +194,14 @@ class Expressions:
             if name in s.scope:
                 if s.template is not None:      # a member the program reads (`values`)
                     self.model.members_read.add((s.template, name))
-                return s.scope[name]
+                v = s.scope[name]
+                if isinstance(v, StructRef):
+                    # read by name (an assert, a relation): deleting it breaks them (W0506's
+                    # hint: run ef's armillary sphere, "else delete it" of an asserted bar)
+                    v.struct.read_by_name = True
+                return v
             if name in s.children:
+                s.children[name].read_by_name = True
                 return StructRef(s.children[name])
             if name in ("width", "height", "left", "right", "top", "bottom", "center"):
                 return self.member(BBoxRef(s), name, span)

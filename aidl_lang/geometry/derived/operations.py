@@ -668,7 +668,11 @@ def _allow_overlap(items: list, S=None, span=None) -> None:
     def holder(o):
         return o if isinstance(o, Structure) else o.owner
     drawn = [o for o in objs if holder(o).in_drawing()]
-    material = [o for o in objs if not holder(o).in_drawing() and holder(o).kind == "solid"]
+    # the part's material, or a hole of it the engraving crosses (run fj: `AllowOverlap(marks,
+    # notch)`, an A4 outline drawn across a finger notch, "allows nothing" beside the W0505)
+    material = [o for o in objs if not holder(o).in_drawing() and holder(o).kind in
+                ("solid", "hole") and any(a.kind == "solid" for a in
+                                          [holder(o), *holder(o).ancestors()])]
     if drawn and not material and S is not None and S.in_drawing() and any(
             o is S for o in objs):
         # `AllowOverlap(guide, self)` written in the drawing itself (run co: W0523 "allows

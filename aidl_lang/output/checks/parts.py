@@ -485,9 +485,12 @@ def _kept_over(d: Drawing, s: Structure, shp, others, cut: list, name: str) -> s
 
 
 def _named_elsewhere(s: Structure, child) -> bool:
-    """Whether a constraint of ``s`` relates ``child`` (or what is in it) to something."""
+    """Whether a constraint of ``s`` relates ``child`` (or what is in it) to something, or
+    the program reads it by name as a member (`meridian.axis.bar`, in an assert)."""
     if child is None:
         return False
+    if child.__dict__.get("read_by_name"):
+        return True
     inside = {id(t) for t in child.subtree()}
     return any(id(o) in inside for c in s.constraints if c.args for grp in c.args
                for o in grp)

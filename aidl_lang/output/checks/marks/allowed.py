@@ -33,8 +33,9 @@ def meant_off(g, part) -> bool:
         for named, material in getattr(node, "engrave_ok", ()):
             if named is not g and named is not node:
                 continue
-            if any(part is m or part.is_within(m) if isinstance(m, Structure)
-                   else m.owner is part for m in material):
+            if any(part is m or part.is_within(m) or m.kind == "hole" and m.is_within(part)
+                   if isinstance(m, Structure) else m.owner is part
+                   or m.owner.kind == "hole" and m.owner.is_within(part) for m in material):
                 node.engrave_used = getattr(node, "engrave_used", set()) | {id(named)}
                 return True
         if node is part:
