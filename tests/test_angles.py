@@ -273,8 +273,15 @@ def test_no_program_of_the_corpus_changes(monkeypatch):
         local = re.search(r'^\s*import\s+"(?!std/)', text, re.M)
         once.setdefault(p.resolve() if local else text, p)
     chosen = list(once.values())
+    # an angle times a ratio of lengths keeps its radian (run fk's squirrel baffle, `360 deg
+    # * RB / L`, read as 5.058 deg before: wrong, a 5 deg sliver cut for a 290 deg pattern);
+    # its radians are met where it meets an angle, as the rule means
+    wrong_before = {"03_squirrel_baffle.first_valid.aidl"}
     for p in chosen:
         compile_source(p.read_text(), str(p), do_solve=False)
+        if p.name in wrong_before:
+            assert met, p
+            met.clear()
         assert not met, (p, met)
     # and the door sign does meet it
     compile_source(MOON.replace("TURN", "tau"), "moon.aidl", do_solve=False)

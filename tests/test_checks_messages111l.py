@@ -351,3 +351,52 @@ def test_run_ef_no_delete_hint_for_a_solid_an_assert_reads():
     r = aidl_lang.compile(source=path.read_text(), path=str(path))
     hints = [d.hint for d in r.diagnostics if d.code == "W0506"]
     assert hints and not any("else delete it" in h for h in hints)
+
+
+def test_run_fk_an_angle_times_a_ratio_of_lengths_stays_an_angle():
+    """Run fk's squirrel baffle: `SPAN = 360 deg * RB / L` (a cone's flat pattern) was a bare
+    5.058 (the radians of 289.8 deg, the arc length's angle lost), and `270 deg + ...` read it
+    as 5.058 deg: the pattern cut as a 5 deg sliver, no message.  An angle times a length
+    keeps its radian: over a length again it is the angle, whichever way it is bracketed."""
+    import math
+    for e in ("360 deg * RB / L", "(360 deg * RB) / L", "360 deg * (RB / L)",
+              "RB / L * 360 deg", "RB * 360 deg / L", "2 * pi * RB / L"):
+        src = f"""RB = 190 mm
+H = 140 mm
+L = sqrt(RB * RB + H * H)
+SPAN = {e}
+A0 = 270 deg + (360 deg - SPAN) / 2 - 360 deg
+solid a {{
+    c = Circle(center=(0, 0), radius=5)
+    assert abs(SPAN - 289.82 deg) < 0.01 deg
+    assert abs(A0 + 54.91 deg) < 0.01 deg
+}}
+"""
+        r = aidl_lang.compile(source=src)
+        assert r.ok, (e, [d.message for d in _errors(r)])
+    # an arc length is still a length
+    r = aidl_lang.compile(source="""solid a {
+    c = Circle(center=(0, 0), radius=90 deg * 20 mm)
+    assert abs(c.radius - 10 * pi * 1 mm) < 0.001 mm
+}
+""")
+    assert r.ok, [d.message for d in _errors(r)]
+    path = RUNS / "issue111fk" / "run" / "03_squirrel_baffle.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    # the flat pattern whole: the text on it, and only the lap line's 1.3 mm past the rim
+    # (the run's second slip, its fix 2) off the material
+    said = [d for d in r.diagnostics if d.code in ("W0505", "W0513")]
+    assert [d.message.split("`")[1] for d in said] == ["baffle.marks.lap"], \
+        [d.message for d in said]
+
+
+def test_run_fn_w0519_gives_the_nick_where_the_program_writes_it():
+    """Run fn's toy camera: three layers from one template, laid side by side by `RightOf`;
+    W0519 gave each layer's nick at its place on the laid-out sheet.  Now all three at the
+    place the template draws it, (-52.1, 35.0), as the hint's `Fillet(at=...)` must be."""
+    path = RUNS / "issue111fn" / "run" / "04_toy_camera.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    ws = [d for d in r.diagnostics if d.code == "W0519"]
+    assert len(ws) == 3
+    assert all("near (-52.1, 35.0)" in w.message for w in ws)
+    assert all("at (-52.00, 35.00)" in w.hint for w in ws)

@@ -427,7 +427,8 @@ class Expressions:
         l, r = self.eval(e.left), self.eval(e.right)
         op = e.op
         if type(l) is Q and type(r) is Q:         # the common case: two numbers
-            return self._q_op(op, l, r, e)
+            q = self._q_op(op, l, r, e)
+            return _arc(op, l, r, q) if l.dim[1] + r.dim[1] and q.dim[1] == 0 else q
         if op == "+" and isinstance(l, str) and isinstance(r, str):
             self.check_size(len(l) + len(r), e.span, "a string")
             return l + r
@@ -453,7 +454,8 @@ class Expressions:
                             e.span, hint=_shape_operand_hint(e, l, r))
         if type(l) is Radians or type(r) is Radians:
             return self._radians_op(op, l, r, e)
-        return self._q_op(op, l, r, e)
+        q = self._q_op(op, l, r, e)
+        return _arc(op, l, r, q) if q.dim[1] == 0 else q
 
     def _radians_op(self, op: str, l: Q, r: Q, e: A.BinOp) -> Q:
         """``l op r`` where ``pi``, ``tau`` or a value made from them (:class:`Radians`)
@@ -605,6 +607,18 @@ class Expressions:
             return PV(lift(p.x) * k, lift(p.y) * k, None, p.owners | q.owners)
         raise EvalError("E0108", f"cannot apply `{op}` to {type_name(l)} and {type_name(r)}", e.span,
                         hint="points add and subtract as vectors; scale them by numbers")
+
+
+def _arc(op: str, l: Q, r: Q, q: Q) -> Q:
+    """``q = l op r`` of two quantities: an angle times (or over) a length is an arc length,
+    a length (:func:`~aidl_lang.geometry.core.values.mul_dim`), that keeps the radian its angle
+    had (a :class:`Radians` of that power), so that over a length again it is an angle, read
+    in radians next to one (run fk's squirrel baffle: `360 deg * RB / L` was a bare 5.058,
+    then `270 deg + ...` read it as 5.058 deg: the cone's flat pattern came out a sliver)."""
+    if op not in ("*", "/") or not (l.dim[0] or r.dim[0]):
+        return q
+    k = l.dim[1] + (r.dim[1] if op == "*" else -r.dim[1])
+    return radians_of(q, k) if k else q
 
 
 def _nested_note(obj, i: int, e) -> str:

@@ -72,6 +72,9 @@ def slit_fix(d: Drawing, s: Structure, at, w: float, t: float, names: list,
     if id(s) not in found:
         found[id(s)] = _nick_corners(d, s)
     apex = _nick_corner(found[id(s)], at, 2 * t)
+    if apex is not None:                # as the program writes it (a layout moves the part)
+        from ..common import written
+        apex = (*written(s, apex[0], apex[1]), *apex[2:])
     if apex is not None and apex[2]:
         # a cusp: one side leaves the other along its tangent (an arm flush with a
         # rounded corner's straight side); a move only slides the cusp along, a fillet

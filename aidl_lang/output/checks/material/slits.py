@@ -167,7 +167,7 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
     length, its place and the two shapes (:func:`_faces_at`, at the slit's mouth).
     ``cut_open``: :func:`.common._cut_openings` of ``loops``, when the caller has it."""
     from ...part.measure.nearby import close_pairs_facing
-    from ..common import SHOWN, _edges, _inside, _say_few
+    from ..common import SHOWN, _edges, _inside, _say_few, written
     if t <= 0 or not loops:
         return
     if cut_open is None:
@@ -242,7 +242,9 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
         labels = [Label(other.span, "the other side of the slit", primary=False)] \
             if other is not None else []
         between = " and ".join(names)
-        cx, cy = (p + q) / 2
+        # where the program writes it, not where a layout relation moved the part (run fn:
+        # a toy camera's nicks given at its place on the laid-out sheet)
+        cx, cy = written(s, *((p + q) / 2))
         fix = slit_fix(d, s, (p + q) / 2, w, t, names, corners) if len(said) < SHOWN else ""
         said.append((f"a slit of empty space between {between} in `{s.path}` is "
                      f"{below(w, t)} mm wide, narrower than {t:g} mm (over {length:.1f} mm, near "
