@@ -243,7 +243,12 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
 # with `tabs=1`: `j.slot[0].bb`) and `bolt` (one between each two tabs). The
 # whole joint's box is `j.bb` (a tab part's: its gaps' and, with a screw, its
 # T-slots', which reach 4 x `screw` + `thickness` in: the gaps alone,
-# `j.gap[0].bb`).
+# `j.gap[0].bb`). Tab (and slot) i, from 0, is centred (i + 0.5) x `length` /
+# `tabs` along the edge from its start, `length` / 2 before (cx, cy) (rotation
+# 0: at x = cx - length / 2 + (i + 0.5) x length / tabs), so `tab` is less
+# than `length` / `tabs`, even for one tab (runs fc, fe, fl). A slotted panel
+# needs material round each slot: a slot at its panel's edge opens as a
+# notch (W0530). Into a template's panel, `CutInto(j, box.lid)`.
 # Anchor: (cx, cy) is the middle of the edge (part "slot": of the slots); rotation 0: the edge along x, the panel toward -y.
 def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, screw=3,
                  clearance=0 mm, rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {

@@ -400,3 +400,49 @@ def test_run_fn_w0519_gives_the_nick_where_the_program_writes_it():
     assert len(ws) == 3
     assert all("near (-52.1, 35.0)" in w.message for w in ws)
     assert all("at (-52.00, 35.00)" in w.hint for w in ws)
+
+
+def test_tab_and_slot_docs_say_where_each_tab_is_and_how_to_cut_one_into_a_box():
+    """Runs fc, fe, fl placed other holes between a `tab_and_slot`'s tabs by guessing where
+    it spreads them; run fn drew a slot into a finger_box's lid by hand.  The docs say both;
+    the slots are where they say, and `CutInto` of the joint cuts the lid."""
+    doc = " ".join(lookup_text("tab_and_slot")[0].split())
+    assert "cx - length / 2 + (i + 0.5) x length / tabs" in doc
+    assert "`CutInto(j, box.lid)`" in doc
+    src = """import "std/joints.aidl"
+solid p {
+    body = Rectangle(center=(0, 0), width=200, height=60)
+    j = tab_and_slot(part="slot", length=120 mm, thickness=3 mm, tabs=3, tab=20 mm, screw=0,
+                     cx=10, cy=5)
+    for i in range(3) {
+        assert abs(j.slot[i].bb.center_x - (10 mm - 60 mm + (i + 0.5) * 40 mm)) < 0.001 mm
+        assert abs(j.slot[i].bb.center_y - 5 mm) < 0.001 mm
+    }
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [d.message for d in _errors(r)]
+    src = """import "std/joints.aidl"
+assembly kit {
+    box = finger_box(length=120, depth=80, height=50)
+    j = tab_and_slot(part="slot", length=60 mm, thickness=3 mm, tabs=2, tab=15 mm, screw=0)
+    CenterInside(j, box.lid)
+    CutInto(j, box.lid)
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok, [d.message for d in _errors(r)]
+    lid = next(p for p in r.output.drawing.parts if p.name == "kit.box.lid")
+    assert lid.shape.num_contour() >= 3        # its outline and the two slots
+
+
+def test_run_fn_w0406_says_which_of_the_crossings_it_takes():
+    """Run fn's zen-garden rake: `Fillet([handle, head], 3)` also rounded the gaps beside the
+    middle tooth, where the handle ran down to the head's bottom edge; W0406 "rounds the
+    corners where `handle` and `head` meet with only 2.75 mm" said no place, and its hint
+    (ask for 2.75 mm) hid the slip.  Now the corners it takes, as written."""
+    path = RUNS / "issue111fn" / "run" / "02_zen_garden.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    (w,) = [d for d in r.diagnostics if d.code == "W0406"]
+    assert "with only 2.75 mm at (-1.5, 0), (1.5, 0) mm (of the 4 corners where they meet)" \
+        in w.message

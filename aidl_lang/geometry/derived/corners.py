@@ -573,6 +573,14 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
             fits = math.floor(least * 1000) / 1000          # asked for, it is made whole
             done = (f"{verb}s {c.describe(off)} with only {least:.6g} mm" if least > 0
                     else f"leaves {c.describe(off)} sharp")
+            if len(js) > 1:
+                # which of the corners it takes (run fn: where a rake's handle runs down to
+                # its head's bottom edge, the gaps beside the middle tooth; no place said)
+                at = [pts[j][0] for j in js if got.get(j) == least]
+                done += (" at (" + "), (".join(f"{q[0] - off[0]:.6g}, {q[1] - off[1]:.6g}"
+                                              for q in at[:3])
+                         + f") mm{f' and {len(at) - 3} more' if len(at) > 3 else ''}"
+                         f" (of the {len(js)} corners where they meet)")
             out.append((call, "W0406", i,
                         f"{head} {done}: the outline's pieces next to the corner leave room "
                         f"for no more (a corner takes at most half of each piece"
