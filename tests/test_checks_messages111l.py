@@ -446,3 +446,28 @@ def test_run_fn_w0406_says_which_of_the_crossings_it_takes():
     (w,) = [d for d in r.diagnostics if d.code == "W0406"]
     assert "with only 2.75 mm at (-1.5, 0), (1.5, 0) mm (of the 4 corners where they meet)" \
         in w.message
+
+
+def test_run_fm_a_ledge_on_both_sides_is_one_warning_with_a_resize():
+    """Run fm's garden thermometer: a star's petals 0.39 mm past both sides of its 90 mm
+    stem; W0520 twice per layer, hints to move the star 0.385 mm left and 0.385 mm right
+    (either doubles the other ledge).  Now one warning for both sides, the hint a resize
+    that keeps the middle; the outline so made (the star 0.77 mm narrower) has no ledge."""
+    path = RUNS / "issue111fm" / "drafts" / "04_garden_thermometer.attempt1.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    ws = [d for d in r.diagnostics if d.code == "W0520"]
+    assert len(ws) == 3                          # one per layer (back, middle, front)
+    for w in ws:
+        assert "on both sides, near (45.4, 118.0) and (-45.4, 118.0)" in w.message
+        assert "0.770 mm narrower across (along (1.000, 0.000))" in w.hint
+        assert "move `" not in w.hint
+    src = """solid p {
+    stem = Rectangle(center=(0, 0), width=20, height=60)
+    head = Rectangle(center=(0, 35), width=W, height=10)
+}
+"""
+    r = aidl_lang.compile(source=src.replace("W", "20.6"))
+    (w,) = [d for d in r.diagnostics if d.code == "W0520"]
+    assert "0.600 mm narrower" in w.hint or "0.600 mm wider" in w.hint
+    r = aidl_lang.compile(source=src.replace("W", "20"))
+    assert not [d for d in r.diagnostics if d.code == "W0520"]

@@ -1229,7 +1229,9 @@ by (-0.200, 0.000) mm`: resized about its centre instead, a shape's edge moves h
 far). Align the edges (a constraint, or the number that is off), or make the offset clear
 if a ledge is meant. A part says its first 5 ledges; the fifth ends "(and N more like it in
 `part`)". A ledge under 0.1 mm is a note: it hardly shows once cut (a trapezoid's sloping
-side 0.07 mm off a joint's notch), and is worth aligning only where it is a fit.
+side 0.07 mm off a joint's notch), and is worth aligning only where it is a fit. A shape
+that pokes past another by the same on both sides (a star's petals past a stem) is said
+once, its hint a resize that keeps its middle: a move would double the other side's ledge.
 
     solid note {
         head = Ellipse(center=(0, 0), rx=8, ry=6)

@@ -610,6 +610,7 @@ def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
                                      dtype=float).reshape(-1, 2), tick) if found else []
     said: list = []                 # the ledges found, said by _say_few
     hairs: list = []                # those under LEDGE_SEEN: notes
+    pairs: dict = {}                # (poke, other) -> (its row, ledge, move, where): a twin
     area = {id(g): f.area() for _, fs in _solids_within(d, s) for g, f in fs
             if f is not None and not f.is_empty()} if found else {}
     for k, (pi, pj, side, gap, u, ti, mv) in enumerate(found):
@@ -627,7 +628,33 @@ def _check_steps(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
         # for the last of twenty grass blades)
         mover, sign = (other, -1.0) if area.get(id(poke), 0.0) > \
             LARGER_STAYS * area.get(id(other), math.inf) else (poke, 1.0)
-        (said if side >= LEDGE_SEEN else hairs).append((
+        twin = pairs.get((id(poke), id(other)))
+        if twin is not None and abs(twin[1] - side) < 1e-3 and \
+                float(np.hypot(*(np.asarray(twin[2]) + np.asarray(mv)))) < 1e-3:
+            # the same ledge on the other side (run fm: a star's petals 0.39 mm past both
+            # sides of its stem, hints to move it 0.385 mm left and right): one is said, as
+            # a resize; a move would align one side and double the other
+            k2, _, _, at2 = twin
+            row = (said if side >= LEDGE_SEEN else hairs)
+            msg, span, kw = row[k2]
+            w2 = written(s, *at)
+            width = 2 * float(np.hypot(*mv))
+            axis = np.asarray(mv, dtype=float) / max(float(np.hypot(*mv)), 1e-12)
+            row[k2] = (msg.replace(" in the outline near (", " in the outline on both sides, "
+                                   "near (", 1).replace("): the two edges",
+                                                        f") and ({w2[0]:.1f}, {w2[1]:.1f}): the "
+                                                        "two edges", 1), span,
+                       {**kw, "hint": f"align both sides: make `{_copy_label(mover)}` "
+                                      f"{width:.3f} mm {'narrower' if sign > 0 else 'wider'} "
+                                      f"across (along ({abs(axis[0]) + 0:.3f}, "
+                                      f"{abs(axis[1]) + 0:.3f})), its middle where it is (a "
+                                      "move aligns one side and doubles the other), or make "
+                                      f"the offset clear (at least {t:g} mm) if a ledge is "
+                                      "meant"})
+            continue
+        row = said if side >= LEDGE_SEEN else hairs
+        pairs[(id(poke), id(other))] = (len(row), side, mv, at)
+        row.append((
                      f"`{_copy_label(poke)}` pokes {side:.2f} mm past `{_copy_label(other)}` "
                      f"in `{s.path}`, a ledge of {side:.2f} mm in the outline near "
                      f"({written(s, *at)[0]:.1f}, {written(s, *at)[1]:.1f}): the two edges "
