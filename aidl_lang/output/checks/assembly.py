@@ -168,6 +168,14 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                     f"`{g.nearest}`, is {g.gap:.3g} mm away): {what} with that play",
                     f"standing loose in the opening is as drawn: nothing is needed; for a snug "
                     f"fit, narrow the opening by the play or move `{short}` with its `Place`")
+        elif (inner := loose.enclosed(g.part, g.nearest)) or \
+                loose.enclosed(g.nearest, g.part):
+            what = f"it lies inside `{g.nearest}`" if inner else f"`{g.nearest}` lies inside it"
+            said = ("note", f"assembled, part `{g.part}` touches no other part (the nearest, "
+                    f"`{g.nearest}`, is {g.gap:.3g} mm away): {what} (a drawer in its "
+                    "sleeve, a tray in its band), held there with that play",
+                    f"sliding or sitting loose in it is as drawn: nothing is needed; for a "
+                    f"snug fit, move `{short}` with its `Place` or make it larger by the play")
         elif g.gap >= AWAY - 1e-6:      # placed 5 mm or more from all: carried by what is not
             # cut (run bf: a wheel on a dowel axle, a sign on S-hooks; "a tab does not reach
             # its slot: move it 7 mm" would have made the wheel rub its stand)
@@ -360,6 +368,18 @@ class _Loose:
         self.d, self.bodies = d, bodies
         self.index = {name: i for i, (name, _, _) in enumerate(bodies.parts)}
         self.filled: dict = {}          # part -> its outline, holes filled, placed (or None)
+
+    def enclosed(self, name: str, other: str) -> bool:
+        """Whether placed part ``name`` lies within the box of part ``other`` (both as placed,
+        bent): inside it, as a drawer in its sleeve or a tray in a bent band (run fk: a
+        matchbox's sleeve 0.18 mm clear of its drawer, "move it 0.182 mm")."""
+        i, j = self.index.get(name), self.index.get(other)
+        where = self.d.placement or {}
+        if i is None or j is None or where.get(name) is None or where.get(other) is None:
+            return False
+        a, b = self.bodies.box(i), self.bodies.box(j)
+        return all(b[k] <= a[k] + 1e-6 for k in range(3)) and \
+            all(a[k] <= b[k] + 1e-6 for k in range(3, 6))
 
     def in_opening(self, name: str, other: str) -> bool:
         i = self.index.get(name)
