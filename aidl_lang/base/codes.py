@@ -1178,7 +1178,9 @@ the part it comes nearest (within 0.05 mm; holes at most 26 mm across, one at mo
 the other, in planes up to 150 mm apart; a part with more than 200 such circles is not looked
 at): a pin, an axle or a bolt holds it and its gap is play (a boom on a dowel between its
 uprights, a toy's wheels on their axles). So is a part that passes through an opening of the
-part it comes nearest (a spreader loose in its stand's slot: run ds), held there with play.
+part it comes nearest (a spreader loose in its stand's slot: run ds), held there with play,
+and one that lies inside another's box as placed, or round one (a drawer in its sleeve: run
+fk's matchbox, 0.18 mm of play all round).
 
     thickness 3 mm
     assembly kit {
@@ -1638,8 +1640,11 @@ states its `kerf` is judged by `aidl render -o x.svg` too.
     solid a { r = Rectangle(center=(0, 0), width=12, height=12) }
     solid b { r = Rectangle(center=(15, 0), width=12, height=12) }   # 3 mm apart: W0531
 """),
-    "W0532": ("engraved text under another part (note)", """
-A note, not a warning: the program places its parts in 3D (`Place`), and engraved `Text` of a
+    "W0532": ("engraved text under another part", """
+A note, or a warning where the covering part passes through the text's part (it reaches past
+both of its faces: a cross-halving's other panel, a shelf through its mortise), so a joint
+holds it there and nothing moves off (runs fg, fi: two coat stands' names half hidden where
+the other panel crosses). The program places its parts in 3D (`Place`), and engraved `Text` of a
 part lies under another part as placed: two or more of 16 points along its letters, just off
 the face the laser engraves (the face up on the sheet), lie inside the other part's solid. If
 that part turns, slides or lifts off (a volvelle's disc with its window, a pantograph's arm, a
