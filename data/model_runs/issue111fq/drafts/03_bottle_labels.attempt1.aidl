@@ -1,0 +1,33 @@
+# Request: stick-on labels for the refill pump bottles in our shower, cut from 3 mm white
+# acrylic: the words "shampoo", "conditioner" and "body wash" as cut-out letters in a bold
+# italic serif, 14 mm cap height, each word at most 80 mm wide (the bottles' flat face),
+# the letters held together by a round-ended rail 3 mm tall that runs the word's full width
+# along the baseline (it overlaps the letters' feet by 1 mm). Three separate pieces.
+
+units mm
+thickness 3 mm
+
+SIZE = 14 mm
+MAX_W = 80 mm
+
+def label(w="shampoo") -> solid {
+    word = Text(w, position=(0, 0), size=SIZE, font="serif:Bold Italic", max_width=MAX_W)
+    rail = Slot(center=(word.bb.center_x, -0.5 mm), length=word.bb.width, width=3 mm)
+}
+
+assembly labels {
+    shampoo = label(w="shampoo")
+    conditioner = label(w="conditioner")
+    body_wash = label(w="body wash")
+    Below(conditioner, shampoo, gap=6 mm)
+    AlignLeft(conditioner, shampoo)
+    Below(body_wash, conditioner, gap=6 mm)
+    AlignLeft(body_wash, conditioner)
+
+    assert shampoo.bb.width <= 80 mm, "fits the bottle"
+    assert conditioner.bb.width <= 80 mm, "fits the bottle"
+    assert body_wash.bb.width <= 80 mm, "fits the bottle"
+    assert shampoo.word.size == 14 mm, "14 mm letters"
+    assert shampoo.rail.width == 3 mm, "rail 3 mm tall"
+    assert shampoo.rail.bb.top - shampoo.word.position.y == 1 mm, "rail overlaps the feet by 1 mm"
+}
