@@ -481,3 +481,17 @@ def test_run_fk_a_sleeve_round_its_drawer_is_a_note():
     r = aidl_lang.compile(source=path.read_text(), path=str(path))
     (w,) = [d for d in r.diagnostics if d.code == "W0518"]
     assert w.severity == "note" and "`matchbox.drawer.right` lies inside it" in w.message
+
+
+def test_run_fr_w0513_hint_redraws_the_outline_not_the_filled_field():
+    """Run fr's dive slate: a flag's filled fields lie on its engraved outline; W0513's hint
+    said to draw the filled field "without the side ... (a `Polyline`)", which is open:
+    E0108 "fill=true needs a closed shape".  The hint now redraws the outline."""
+    path = RUNS / "issue111fr" / "run" / "05_dive_slate.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    ws = [d for d in r.diagnostics if d.code == "W0513"]
+    assert len(ws) == 2
+    for w in ws:
+        assert "draw `slate.flag.edge` without the side" in w.hint
+        assert "draw `slate.flag.ll` without" not in w.hint
+        assert "draw `slate.flag.ur` without" not in w.hint

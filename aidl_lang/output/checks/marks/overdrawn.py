@@ -349,6 +349,13 @@ def _twice_hint(a, b, share: float, rows) -> str:
         if b.name and b.span is not None else [b]           # (a filled copy is not judged)
     on = {id(r[2]) for r in rows}
     ways = []
+    if b.data.get("fill") and not a.data.get("fill") and not copies:
+        # a filled area cannot lose a side (a Polyline is open, E0108: run fr's dive slate,
+        # a flag's filled fields on its outline): the outline is the one to redraw (unless
+        # the statement has open copies too: run eg's backgammon points, alternately filled)
+        a, b = b, a
+        share = 0.0
+        copies = [b]
     circle = a if a.kind == "Circle" else b if b.kind == "Circle" else None
     if circle is not None and (b if circle is a else a).kind != "Circle":
         # a ring drawn over the arcs of shapes set round it (run fe: a circle of r 110 on
