@@ -65,8 +65,8 @@ def lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=10 
 # the lid on the flat sheet, where the lid lies with `length` along x; a hole or a
 # drawing added to the lid keeps clear of it. Only the front's and the lid's top
 # faces (an engraving as drawn) look out: the back's, the sides' and the bottom's
-# look in, so a label meant to be read outside goes on `front` or `lid` (run fc:
-# "LIVE ANIMAL" engraved inside the back); a side's +y in the net is the box's back.
+# look in, so a label meant to be read outside goes on `front` or `lid`; a side's
+# +y in the net is the box's back.
 # Anchor: (cx, cy) is the centre of `bottom`.
 def sliding_lid_box(length=120 mm, width=80 mm, height=50 mm, thickness=3 mm, finger=10 mm,
                     clearance=0.3 mm, outside=true, cx=0 mm, cy=0 mm) -> assembly {

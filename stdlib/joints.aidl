@@ -88,8 +88,7 @@ def finger_panel(width=100 mm, height=60 mm, thickness=3 mm, finger=10 mm,
 # The front and back lie upright (their top edge at +y: `front.bb.bottom` is
 # the box's bottom edge); the left and right lie on their side, their top edge
 # outward (the left's at -x, the right's at +x), so a side is `height` wide in
-# x and `depth` tall in y, its +y towards the box's front (run fe: holes placed
-# "45 mm in front" by +y came out at the back). The front and back have fingers on every edge and keep their corners; the
+# x and `depth` tall in y, its +y towards the box's front. The front and back have fingers on every edge and keep their corners; the
 # bottom and lid have slots along the front and back and fingers at the
 # sides; the sides have slots all round. Members: `bottom`, `front`, `back`,
 # `left`, `right`, `lid` (each a finger_panel). Each panel is placed in 3D
@@ -246,7 +245,7 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
 # `j.gap[0].bb`). Tab (and slot) i, from 0, is centred (i + 0.5) x `length` /
 # `tabs` along the edge from its start, `length` / 2 before (cx, cy) (rotation
 # 0: at x = cx - length / 2 + (i + 0.5) x length / tabs), so `tab` is less
-# than `length` / `tabs`, even for one tab (runs fc, fe, fl). A slotted panel
+# than `length` / `tabs`, even for one tab. A slotted panel
 # needs material round each slot: a slot at its panel's edge opens as a
 # notch (W0530). Into a template's panel, `CutInto(j, box.lid)`.
 # Anchor: (cx, cy) is the middle of the edge (part "slot": of the slots); rotation 0: the edge along x, the panel toward -y.

@@ -340,7 +340,7 @@ def test_run_en_one_slip_in_five_template_copies_is_one_warning():
     the ring reading as on the edge."""
     path = RUNS / "issue111en" / "run" / "03_play_coins.first_valid.aidl"
     (w,) = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0516"]
-    assert "`till_money.five[0].face.ring` comes 0.50 mm" in w.message
+    assert "`till_money.five[0].face.ring` comes 0.495 mm" in w.message
     assert "the same in 4 more parts made by this statement (`till_money.five[1]`, " \
         "`till_money.five[2]`, `till_money.five[3]`, ...)" in w.message
     assert "0.51 mm further from the edge" in w.hint and "1 mm clear" in w.hint

@@ -81,7 +81,9 @@ class Calls:
         if isinstance(callee, Template):
             if name is None:
                 t = callee.node.name
-                hint = f"write `part = {t}(...)`"
+                # (run fo: `bars = [bar(), bar(), bar()]`)
+                hint = (f"write `part = {t}(...)`; for several, a loop: `for i in range(3) "
+                        f"{{ part = {t}(...) }}` (after it `part` is the list: `part[0]`)")
                 comp = next((f[0] for f in reversed(self.frames)
                              if f[0].startswith("the comprehension")), None)
                 if comp is not None:     # `[knob(...) for i in ...]` (issue 84's second run)

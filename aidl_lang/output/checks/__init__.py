@@ -401,10 +401,24 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
     for s, shape in roots.items():
         if s.kind == "solid" and shape.is_empty() and s not in explained and any(
                 not g.construction for n in s.subtree() for g in n.geometry):
+            drawn = [n for n in s.children.values() if n.kind == "drawing"]
+            only_drawn = drawn and not any(
+                not g.construction for n in s.subtree() if not n.in_drawing()
+                for g in n.geometry)
+            # a solid holding only a drawing (run fo: the rings and names meant for a
+            # template's base, in a solid of their own: "give it a closed shape" would have
+            # made a part to carry them)
+            name = drawn[0].name if drawn else ""
             sink.warning("W0509", f"solid `{s.path}` comes out empty: none of its geometry "
-                         "encloses any area", s.span,
-                         hint="give the part a closed shape with an inside (a Rectangle, a "
-                              "Circle, lines and arcs that close a loop around some area)")
+                         "encloses any area" + (f" (its shapes are in drawing `{name}`, "
+                                                "which engraves and adds no material)"
+                                                if only_drawn else ""), s.span,
+                         hint=(f"to engrave `{name}` on a part, declare the drawing in that "
+                               f"part; on a template's part, declare `drawing {name}` in the "
+                               f"assembly and give it to the part: `CutInto({name}, PART)`, "
+                               f"and delete `{s.name}`") if only_drawn else
+                         "give the part a closed shape with an inside (a Rectangle, a "
+                         "Circle, lines and arcs that close a loop around some area)")
 
 
 def _check_sheet(roots: dict, sink) -> None:

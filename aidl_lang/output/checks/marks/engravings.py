@@ -199,7 +199,8 @@ def _off_outline_hint(d: Drawing, part, g, pts: np.ndarray, off: np.ndarray) -> 
     (W0516 again); made with `self` it conflicted (E0401)."""
     label, prefix = getattr(g, "label", ""), part.path + "."
     p = off[int(np.argmin(np.hypot(*(off - off.mean(axis=0)).T)))]
-    hint = (f"it leaves the material at about ({p[0]:.2f}, {p[1]:.2f}): move, shrink or "
+    wx, wy = written(part, *p)      # (run fo: given where the layout had moved the part)
+    hint = (f"it leaves the material at about ({wx:.2f}, {wy:.2f}): move, shrink or "
             f"redraw `{label.rsplit('.', 1)[-1]}` so that it lies on the material, or move "
             "the part's edge")
     if not label.startswith(prefix):
@@ -618,12 +619,15 @@ def _say_meets_cut(part, group: list, hole, E0, E1, crossing: set, sink, also: s
         if np.hypot(*(end - p)) < np.hypot(*(end - q)):
             p, q = q, p                              # q: the end at the edge
         t, r = _shorten_clear(p, q, E0[e], E1[e])
+    # a gap that two decimals round up to the clearance is said to three (run fo: "ends 0.50
+    # mm from the cut edge" beside "a mark needs 0.5 mm clear")
+    shown = f"{gap:.3f}" if round(gap, 2) >= CUT_CLEAR else f"{gap:.2f}"
     if end is not None:
-        how = "ends on" if gap <= ENGRAVE_TOL else f"ends {gap:.2f} mm from"
+        how = "ends on" if gap <= ENGRAVE_TOL else f"ends {shown} mm from"
     elif id(g) in crossing:
         how = "runs across"
     else:
-        how = "touches" if gap <= ENGRAVE_TOL else f"comes {gap:.2f} mm from"
+        how = "touches" if gap <= ENGRAVE_TOL else f"comes {shown} mm from"
     if id(g) in crossing and end is None:       # run r's place card: a border through a slot
         fix = (f"it crosses {which} there, so part of it lies off the material: shrink "
                f"or move `{g.label}` to stay on it, {CUT_CLEAR} mm clear of the edge (or "
