@@ -234,6 +234,37 @@ class Interpreter(Statements, Calls, Placing, Expressions):
                          hint=f"give `{used}` a value of the kind used here; a bare number is "
                               "read like one in the file (file units or degrees)")
 
+    def moves_only(self, e) -> bool:
+        """Whether ``e`` reads box sides whose unknowns cancel once the boxes are taken at the
+        current values (a Text's `bb.width`: its right less its left, both its position plus
+        a number): a size of a shape the solve only moves, never resizes, the same before and
+        after solving, so no W0103 (run fq: a rail sized by `word.bb.width + 3 mm`, warned on
+        every check, as the prompt recommends it)."""
+        if not contains_bbox(e):
+            return False
+        x = self.model.xs()
+        try:
+            f = expand(e, self.model.x, set())
+            read: set = set()
+            todo = [f]
+            while todo:
+                g = todo.pop()
+                if type(g) is Lin:
+                    read.update(g.terms)
+                else:
+                    todo += [a for a in getattr(g, "args", ()) if not isinstance(a, (int, float))]
+            if len(read) > 64:
+                return False
+            at = float(evaluate(f, x))
+            for k in read:                  # each unknown moved 1 mm: the value stays
+                y = x.copy()
+                y[k] += 1.0
+                if abs(float(evaluate(f, y)) - at) > 1e-9:
+                    return False
+        except (ArithmeticError, KeyError, TypeError, ValueError, IndexError):
+            return False
+        return True
+
     def warn_nonconst(self, what: str) -> None:
         self.sink.warning("W0103", f"{what} depends on solved geometry; its starting value is "
                           "used and held", self.cur_span,

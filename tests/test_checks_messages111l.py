@@ -529,3 +529,20 @@ def test_run_fo_a_solid_holding_only_a_drawing_is_told_cut_into():
     engraved = {g.owner.path for style, _, g in r.output.drawing.strokes
                 if g is not None and style != "cut"}
     assert "sauce_rack.marks" in engraved
+
+
+def test_run_fq_a_size_from_a_text_box_width_is_no_w0103():
+    """Run fq's bottle labels: a rail sized `length=word.bb.width + 3 mm`, as the prompt
+    recommends, was W0103 "depends on solved geometry" on every check: a Text's width does
+    not change when the solve moves it.  A size that reads a box the solve only moves is
+    quiet; one that reads a size the solve can change is still warned."""
+    path = RUNS / "issue111fq" / "run" / "03_bottle_labels.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    assert "W0103" not in [d.code for d in r.diagnostics]
+    r = aidl_lang.compile(source="""solid a {
+    c = Circle(center=(0, 0), radius=5)
+    l = Line(start=(0, 0), length=c.radius, angle=0 deg)
+    Radius(c, 8)
+}
+""")
+    assert "W0103" in [d.code for d in r.diagnostics]

@@ -37,7 +37,8 @@ def _const(ctx, q: Q, what: str) -> float:
     c = q.const()
     if c is None:
         c = ctx.value_of(q.expr)
-        ctx.warn_nonconst(what)
+        if not ctx.moves_only(q.expr):
+            ctx.warn_nonconst(what)
     return c
 
 
