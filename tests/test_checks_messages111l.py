@@ -518,7 +518,7 @@ def test_run_fo_a_solid_holding_only_a_drawing_is_told_cut_into():
     r = aidl_lang.compile(source=src, path=str(path))
     (w,) = [d for d in r.diagnostics if d.code == "W0509"]
     assert "its shapes are in drawing `marks`" in w.message
-    assert "`CutInto(marks, PART)`, and delete `base_marks`" in w.hint
+    assert "`CutInto(marks, PART)` (`base_marks`, empty, then goes)" in w.hint
     i, j = src.index("    solid base_marks {"), src.index("    hole bottle_holes")
     body = src[i:j].replace("    solid base_marks {\n", "", 1).rstrip()
     assert body.endswith("}")

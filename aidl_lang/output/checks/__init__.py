@@ -414,9 +414,10 @@ def _check_drawing(d: Drawing, sink: DiagnosticSink, given: float | None, deadli
                                                 "which engraves and adds no material)"
                                                 if only_drawn else ""), s.span,
                          hint=(f"to engrave `{name}` on a part, declare the drawing in that "
-                               f"part; on a template's part, declare `drawing {name}` in the "
-                               f"assembly and give it to the part: `CutInto({name}, PART)`, "
-                               f"and delete `{s.name}`") if only_drawn else
+                               f"part; on a template's part, move `drawing {name}` out of "
+                               f"`{s.name}` into the assembly and give it to the part: "
+                               f"`CutInto({name}, PART)` (`{s.name}`, empty, then goes)")
+                         if only_drawn else
                          "give the part a closed shape with an inside (a Rectangle, a "
                          "Circle, lines and arcs that close a loop around some area)")
 

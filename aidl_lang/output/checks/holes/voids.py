@@ -13,7 +13,7 @@ from ....geometry.core.model import Structure
 from ...part.build.booleans import Drawing
 from ...part.measure.nearby import box_pairs, box_pairs_between
 from ..common import (MIN_AREA, _area, _cut_openings, _insert_fix, _inside, _loop_boxes, _signed,
-                      SHOWN, _say_few, _solids_within)
+                      SHOWN, _say_few, _solids_within, written)
 from .openings import TOUCH, _NAMEABLE, _ref
 
 # an enclosed opening narrower than this (mm, its box's smaller side) is led by the fill, with
@@ -49,9 +49,10 @@ def _check_voids(d: Drawing, s: Structure, loops, cuts, t: float, sink,
         width = area / max(1e-12, max(x1 - x0, y1 - y0))
         around, span, labels = (_around(d, s, P) if len(voids) < SHOWN else
                                 ("the shapes", s.span, []))
+        wx, wy = written(s, (x0 + x1) / 2, (y0 + y1) / 2)     # as the program writes it
         voids.append((f"a void of {area:.3f} mm^2 (about {width:.2f} mm wide, "
                       f"{max(x1 - x0, y1 - y0):.2f} mm long) is cut through `{s.path}` near "
-                      f"({(x0 + x1) / 2:.1f}, {(y0 + y1) / 2:.1f}): no hole declares it, "
+                      f"({wx:.1f}, {wy:.1f}): no hole declares it, "
                       f"{around} around it do not quite meet, so a sliver comes out there",
                       span,
                       {"hint": "make the shapes around it overlap (e.g. `gap=-1 mm`, or a "
@@ -232,7 +233,7 @@ def _report_enclosed(d: Drawing, s: Structure, P, area: float, region, sink) -> 
     x0, y0 = P.min(axis=0)
     x1, y1 = P.max(axis=0)
     w, h = x1 - x0, y1 - y0
-    cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+    cx, cy = written(owner, (x0 + x1) / 2, (y0 + y1) / 2)    # as the program writes it
     names = list(dict.fromkeys(f"`{g.label}`" for _, g, _ in faces))
     who = ", ".join(names[:4]) + (f" and {len(names) - 4} more" if len(names) > 4 else "")
     g0 = faces[0][1]
