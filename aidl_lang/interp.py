@@ -32,7 +32,7 @@ from .interpreter.placing import Placing
 from .interpreter.statements import Statements
 from .base.limits import (DEFAULT_BUDGET, MAX_GEOMETRY, MAX_ITER, MAX_TEMPLATE_DEPTH, WALL_GUARD, Budget,
                      Work, cpu_text, interp_work, now, started, wall_text)
-from .base.memory import gc_paused
+from .base.memory import address_space, gc_paused, guard_limit
 from .library.sources import STDLIB
 
 __all__ = ["Interpreter", "EvalError", "STDLIB", "MAX_ITER", "MAX_GEOMETRY", "MAX_TEMPLATE_DEPTH"]
@@ -70,6 +70,7 @@ class Interpreter(Statements, Calls, Placing, Expressions):
         self.frames: list[tuple[str, Span]] = []     # loops, comprehensions, template instances
         self.model = Model()
         self.on_top: list = []       # parts placed `on=` another at (x, y): on its top face
+        self.memory_guard = guard_limit()   # bytes of address space: stop before a real OOM
         self.overrides = dict(overrides or {})
         # `--set NAME=TEXT` with a unit for a param whose default is a bare number:
         # NAME -> (TEXT, the value's dimension), see error()
@@ -137,6 +138,10 @@ class Interpreter(Statements, Calls, Placing, Expressions):
             raise BudgetExhausted(wall_text(self.budget.seconds, self.started),
                                   span or self.cur_span,
                                   self.frames)
+        if self.memory_guard is not None:
+            used = address_space()
+            if used is not None and used > self.memory_guard:
+                raise MemoryError(f"address space {used >> 20} MB, near its cap")
 
     def count_object(self, span=None) -> None:
         """Count one point, geometry object, structure or constraint against the budget;

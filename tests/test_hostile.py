@@ -109,7 +109,11 @@ def test_out_of_memory_is_E0304_and_the_process_goes_on():
     (reference cycles collected), so the next program in the same process compiles (fuzz
     chunks died or hung after one MemoryError).  14 levels, inside the default budget, came to
     fit in 600 MB once the exact recovery kept no chord arrays per circle (W0509), and at a
-    cap just above what they need the compile crawled (one run past 10 minutes at 500 MB)."""
+    cap just above what they need the compile crawled (one run past 10 minutes at 500 MB).
+    The interpreter stops itself at 90 % of the cap (base.memory.guard_limit): an allocation
+    that failed inside CPython left a call site's specialised cache broken in about half of
+    the runs (a segmentation fault in the next compile, or a TypeError calling the wrong
+    function), so this test, run eight times in a row, failed three of eight before."""
     code = r'''
 import resource
 resource.setrlimit(resource.RLIMIT_AS, (600_000_000, 600_000_000))

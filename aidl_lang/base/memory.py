@@ -135,6 +135,36 @@ def memory_cap() -> tuple[int | None, str | None]:
     return soft, _raise_with
 
 
+# of the cap: the interpreter stops (a MemoryError at a point of its own) once its address
+# space passes this share of the cap, before an allocation fails inside CPython
+GUARD_SHARE = 0.9
+
+
+def address_space() -> int | None:
+    """This process's address space in bytes (``VmSize``: /proc/self/statm's first field),
+    None where it cannot be read (not Linux)."""
+    try:
+        fd = os.open("/proc/self/statm", os.O_RDONLY)
+        try:
+            pages = int(os.read(fd, 64).split()[0])
+        finally:
+            os.close(fd)
+        return pages * os.sysconf("SC_PAGE_SIZE")
+    except (OSError, ValueError, IndexError):
+        return None
+
+
+def guard_limit() -> int | None:
+    """The address space (bytes) past which the interpreter raises ``MemoryError`` itself,
+    :data:`GUARD_SHARE` of the cap; None without a cap.  An allocation that fails inside
+    CPython 3.11 can leave a call site's specialised inline cache broken, so the process's
+    next compile crashed (a segmentation fault) or called the wrong function (a TypeError)
+    in about half of the runs of tests/test_hostile.py's 600 MB fan of templates; stopped at
+    a point of its own, the interpreter unwinds cleanly and the next compile runs."""
+    cap, _ = memory_cap()
+    return int(cap * GUARD_SHARE) if cap else None
+
+
 @contextmanager
 def gc_paused():
     """Disable the cyclic garbage collector inside the block (reference counting still frees
