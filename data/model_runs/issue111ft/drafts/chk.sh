@@ -1,0 +1,30 @@
+#!/bin/bash
+# chk.sh NN_name [--json] : check drafts/NN_name.aidl, log it, keep attempts / first valid / fixes
+set -u
+N="$1"
+D="$(cd "$(dirname "$0")" && pwd)"
+R="$D/../run"
+export PYTHONPATH=/work/wt-models-ft
+A=/work/main/.venv/bin/aidl
+F="$D/$N.aidl"
+T="$(date -u '+%Y-%m-%d %H:%M:%S')"
+OUT="$(cd "$D" && $A check "$N.aidl" 2>&1)"; RC=$?
+NE=$(printf '%s\n' "$OUT" | grep -c 'error\[E')
+NW=$(printf '%s\n' "$OUT" | grep -c 'warning\[W')
+if [ -f "$R/$N.first_valid.aidl" ]; then
+  K=1; while [ -f "$D/$N.fix$K.aidl" ]; do K=$((K+1)); done
+  KIND="fix $K"
+  cp "$F" "$D/$N.fix$K.aidl"; printf '%s\n' "$OUT" > "$D/$N.fix$K.check.txt"
+  if [ $RC -eq 0 ]; then (cd "$D" && $A render "$N.fix$K.aidl" -o "$N.fix$K.png" --png-width 1200 > "$N.fix$K.render.txt" 2>&1); fi
+elif [ $RC -eq 0 ]; then
+  KIND="FIRST VALID"
+  cp "$F" "$R/$N.first_valid.aidl"; printf '%s\n' "$OUT" > "$R/$N.first_valid.check.txt"
+  (cd "$R" && $A render "$N.first_valid.aidl" -o "$N.first_valid.png" --png-width 1200 > "$N.first_valid.render.txt" 2>&1)
+else
+  K=1; while [ -f "$D/$N.attempt$K.aidl" ]; do K=$((K+1)); done
+  KIND="attempt $K"
+  cp "$F" "$D/$N.attempt$K.aidl"; printf '%s\n' "$OUT" > "$D/$N.attempt$K.check.txt"
+fi
+echo "$T | $N | $KIND | exit $RC | errors $NE | warnings $NW" >> "$D/log.txt"
+printf '%s\n' "$OUT"
+echo "== $T | $N | $KIND | exit $RC | errors $NE | warnings $NW"
