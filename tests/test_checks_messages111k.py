@@ -328,7 +328,8 @@ def test_run_ep_filled_shapes_that_touch_are_burnt_once():
     r = aidl_lang.compile(path=str(path))
     assert r.ok and not [d for d in r.diagnostics if d.code == "W0513"]
     # a stroke along a filled area's edge is burnt over it: still said (run bv's flag pole
-    # up its pennant's edge, which that run called real)
+    # up its pennant's edge, which that run called real), a note since runs fr and fv called
+    # it meant (test_checks_messages111l)
     path = RUNS / "issue111bv" / "run" / "06_golf_divot_tool.first_valid.aidl"
     (w,) = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0513"]
     assert "`flag.pole`" in w.message or "pole" in w.message

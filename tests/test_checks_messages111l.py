@@ -546,3 +546,18 @@ def test_run_fq_a_size_from_a_text_box_width_is_no_w0103():
 }
 """)
     assert "W0103" in [d.code for d in r.diagnostics]
+
+
+def test_runs_ft_fv_fr_marks_and_a_filled_area():
+    """Run ft's fretboard chart: strings ending on the filled nut were W0513 "runs into the
+    outline", its hint to move the nut (opening a gap): a filled area draws no outline.
+    Runs fv, fr: a flag's pole and its outline along the filled flag, "burns twice", a
+    darker edge makers draw on purpose: a note."""
+    path = RUNS / "issue111ft" / "run" / "04_fretboard_chart.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    assert not [d for d in r.diagnostics if d.code == "W0513" and "runs into" in d.message]
+    for run, name in (("issue111fv", "05_golf_scorecard_holder"), ("issue111fr", "05_dive_slate")):
+        path = RUNS / run / "run" / f"{name}.first_valid.aidl"
+        r = aidl_lang.compile(source=path.read_text(), path=str(path))
+        ws = [d for d in r.diagnostics if d.code == "W0513"]
+        assert ws and all(d.severity == "note" and "a darker edge" in d.message for d in ws)

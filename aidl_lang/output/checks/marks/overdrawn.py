@@ -7,7 +7,7 @@ import math
 
 import numpy as np
 
-from ....base.diagnostics import DiagnosticSink, Label
+from ....base.diagnostics import Diagnostic, DiagnosticSink, Label
 from ...part.build.booleans import Drawing
 from ..common import _pct
 from .allowed import text_allowed
@@ -71,12 +71,17 @@ def check_marks_over_marks(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
             more = (f"; {len(rows) - 1} more pair{'s' if len(rows) > 2 else ''} of these "
                     "statements on each other") if len(rows) > 1 else ""
             whole = " (all of it)" if share > 0.999 else f" ({_pct(share, 1.0)} of it)"
-            sink.warning(
+            # a line along a filled area's edge: its fill is burnt there too, the edge a
+            # little darker, which makers draw on purpose (runs fr, fv: a flag's outline and
+            # its pole on the filled flag; run bv's pole called it a slip): a note
+            edge = bool(a.data.get("fill")) != bool(b.data.get("fill"))
+            sink.add(Diagnostic(
                 "W0513", f"the engraved `{_copy_label(b)}` lies on the engraved "
                 f"`{_copy_label(a)}` over {L:.2f} mm{whole}: the laser burns that stretch "
-                f"twice (a deeper, wider line){more}", b.span,
+                + ("twice, the line over the fill's edge (a darker edge)" if edge else
+                   "twice (a deeper, wider line)") + more, b.span, "note" if edge else "warning",
                 labels=[Label(a.span, f"`{a.label}` is here", primary=False)],
-                hint=_twice_hint(a, b, share, rows))
+                hint=_twice_hint(a, b, share, rows)))
             continue
         p_g, q_g = rows[0][1], rows[0][2]
         count = len(rows)
@@ -188,7 +193,10 @@ def _marks_over_marks(d: Drawing, tick=None) -> tuple[dict, dict]:
         np.maximum.at(boxes[:, 2 + c], own, hi[:, c])
     keep = np.isfinite(boxes).all(axis=1)
     boxes[~keep] = 0.0
+    # (a filled area draws no outline for marks to run into: run ft's fretboard, strings
+    # ended on the filled nut, "runs into the outline", its hint opening a gap)
     rings = {k: [_polyline(it)[:-1] for it in items_of[g] if _closed(it)]
+             if not g.data.get("fill") else []
              for k, g in enumerate(marks)}
     ring_edges: dict = {}
     for a, b in box_pairs(boxes, OVERDRAWN_TOL).tolist():
