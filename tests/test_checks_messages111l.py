@@ -561,3 +561,12 @@ def test_runs_ft_fv_fr_marks_and_a_filled_area():
         r = aidl_lang.compile(source=path.read_text(), path=str(path))
         ws = [d for d in r.diagnostics if d.code == "W0513"]
         assert ws and all(d.severity == "note" and "a darker edge" in d.message for d in ws)
+
+
+def test_run_fu_values_of_a_structure_box_by_its_member_name():
+    """Run fu: `aidl check --values X.bb` said "no value matches": the listing names the box
+    `X.bbox`.  Asked as the language names it, it is given."""
+    r = aidl_lang.compile(source="solid a {\n    r = Rectangle(center=(0, 0), width=10, height=5)\n"
+                                 "    solid b { c = Circle(center=(20, 0), radius=2) }\n}\n")
+    (v,) = r.values_matching(["a.b.bb"])
+    assert v.name == "a.b.bbox" and tuple(round(x, 6) for x in v.value) == (18, -2, 22, 2)

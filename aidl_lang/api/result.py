@@ -139,9 +139,12 @@ class Result:
         root = self.compiled.model.root.name + "."
         wanted = set()
         for n in names:
-            wanted.add(n)
-            if not n.startswith(root):
-                wanted.add(root + n)
+            # `X.bb`, as the language names a box, is listed as `X.bbox` (run fu: "no value
+            # matches" for the member the program reads)
+            for m in (n, n[:-3] + ".bbox") if n.endswith(".bb") else (n,):
+                wanted.add(m)
+                if not m.startswith(root):
+                    wanted.add(root + m)
         return [v for v in vals if any(_below(v.name, w) for w in wanted)]
 
     def value(self, name: str) -> Value:
