@@ -617,7 +617,8 @@ required. Keywords accept synonyms: `r` for `radius`, `num_teeth` for `teeth`.
 
 `def NAME(p1, p2=default) = EXPR` (one line, where a template may stand) is a function: a
 call gives the expression's value with the parameters bound (`def angle_of(v) = 225 deg - v * 27 deg`, then
-`angle_of(3)`); numbers, points and lists in and out, used anywhere an expression goes. A bare
+`angle_of(3)`); numbers, points, lists and shapes in and out (`def cheek(w) = Polygon([(0, 0),
+(w, 0), (w, 10)])`, then `c = cheek(20)`), used anywhere an expression goes. A bare
 number passed in stays a plain number until it lands where a length is expected: in
 `def toward(a, b, d) = b + (a - b) * (d / norm(a - b))`, `toward(p, q, 10)` scales by 10 per
 mm (E0109, a 1/length): pass `10 mm`.

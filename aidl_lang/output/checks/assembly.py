@@ -45,6 +45,15 @@ def _collision_hint(d: Drawing, c) -> str:
         why = (f"one part runs {c.depth:.3g} mm into the other, more than a slot is ever too "
                "narrow: move the part with its `Place` (its position or the sign of an "
                "offset), or widen the slot if it is one")
+    # a part placed `on=` another: its turn is in that part's frame (run fw: ledges placed
+    # `on=back` with the turns of the assembly's frame lay flat through the back)
+    for name in (c.b, c.a):
+        pl = getattr(d.part_of.get(name), "placement", None)
+        if pl is not None and len(pl) > 3 and pl[3] is not None:
+            why += (f"; `{name.split('.')[-1]}` is placed `on={pl[3].name}`: its position "
+                    f"and its `face=`/`up=` (or `rotation=`) are in `{pl[3].name}`'s frame, "
+                    f"turned with it")
+            break
     return (f"{why}; if they are meant to share material (a press fit, an inlay), "
             f"`AllowOverlap({a}, {b})` in their assembly says so")
 
