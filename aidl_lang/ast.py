@@ -435,4 +435,8 @@ def walk(node):
             if isinstance(v, Node):
                 stack.append(v)
             elif isinstance(v, list):
-                stack.extend(x for x in reversed(v) if isinstance(x, Node))
+                for x in reversed(v):
+                    if isinstance(x, Node):
+                        stack.append(x)
+                    elif isinstance(x, tuple):      # an f-string's (expression, format)
+                        stack.extend(y for y in reversed(x) if isinstance(y, Node))

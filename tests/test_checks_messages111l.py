@@ -570,3 +570,16 @@ def test_run_fu_values_of_a_structure_box_by_its_member_name():
                                  "    solid b { c = Circle(center=(20, 0), radius=2) }\n}\n")
     (v,) = r.values_matching(["a.b.bb"])
     assert v.name == "a.b.bbox" and tuple(round(x, 6) for x in v.value) == (18, -2, 22, 2)
+
+
+def test_run_fy_a_param_read_in_an_f_string_is_read():
+    """Run fy's weave-pole bases: `param pole_no` read only in `f"POLE {pole_no}"` was W0115
+    "declared but nothing reads it", its hint to delete the line that numbers the bases
+    (`--set pole_no=4` engraved "POLE 4").  An f-string's expressions are read."""
+    path = RUNS / "issue111fy" / "run" / "04_weave_pole_base.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    assert "W0115" not in [d.code for d in r.diagnostics]
+    r = aidl_lang.compile(source='param n = 1\nparam unused = 2\nsolid b {\n'
+                                 '    r = Rectangle(center=(0, 0), width=60, height=30)\n'
+                                 '    drawing d { t = Text(f"POLE {n:.0f}", position=(0, 0), size=6) }\n}\n')
+    assert [d.message.split("`")[1] for d in r.diagnostics if d.code == "W0115"] == ["unused"]
