@@ -120,7 +120,7 @@ one solid per letter),
 openings in a hole (`stencil=true` holds counters), engraved in a drawing (`fill=true`: their
 area); without `font=` Text is engraved strokes, in ASCII only (other letters: `font=`).
 Each child of an `assembly` is a separate part (written inside it, or `part = TEMPLATE()`; `part = NAME` of a
-solid outside it makes no part, E0202), drawn where the solver puts it (`RightOf` sets x only, `Below` y only: pair each with an
+solid outside it makes no part: E0202 or E0108), drawn where the solver puts it (`RightOf` sets x only, `Below` y only: pair each with an
 `AlignTop`/`AlignLeft`; overlapping parts: W0511 unless
 `AllowOverlap(a, b)`; `aidl render --layout sheet` nests them for cutting).
 - Place(part, position=(x, y, z), face="front", up="up") in its assembly places a part in 3D
