@@ -247,24 +247,21 @@ class Interpreter(Statements, Calls, Placing, Expressions):
         every check, as the prompt recommends it)."""
         if not contains_bbox(e):
             return False
+        from .geometry.relations.assertions import _indices
         x = self.model.xs()
         try:
             f = expand(e, self.model.x, set())
             read: set = set()
-            todo = [f]
-            while todo:
-                g = todo.pop()
-                if type(g) is Lin:
-                    read.update(g.terms)
-                else:
-                    todo += [a for a in getattr(g, "args", ()) if not isinstance(a, (int, float))]
+            _indices(f, read)
             if len(read) > 64:
                 return False
             at = float(evaluate(f, x))
             for k in read:                  # each unknown moved 1 mm: the value stays
-                y = x.copy()
-                y[k] += 1.0
-                if abs(float(evaluate(f, y)) - at) > 1e-9:
+                old = x[k]                  # (x: a copy, moved and put back in place)
+                x[k] = old + 1.0
+                moved = float(evaluate(f, x))
+                x[k] = old
+                if abs(moved - at) > 1e-9:
                     return False
         except (ArithmeticError, KeyError, TypeError, ValueError, IndexError):
             return False
