@@ -87,9 +87,9 @@ def test_a_corner_chosen_twice_and_a_chamfer_between_keep_their_order():
     assert r.ok and "W0406" not in _codes(r)
     arcs = _arcs(r)
     # the chamfer's 2 corners, the right's 2 and the bottom left's: 5 arcs; a whole-outline
-    # Fillet is a pass of its own, after the chosen one (the bottom right gets half of the
-    # 5 mm the bottom left left: 2.5, as docs/language.md's order says)
-    assert arcs == [2.5, 3.0, 3.0, 3.0, 3.0]
+    # Fillet is a pass of its own, after the chosen one, and the bottom right takes all of
+    # the 5 mm the bottom left's arc left (its other end is a tangent join, no corner)
+    assert arcs == [3.0] * 5
     # a whole-outline Fillet after chosen ones rounds what they left
     r = aidl_lang.compile(source=_fillets("Fillet(body.top_left, 1)", "Fillet(2)"))
     assert _arcs(r) == [1.0, 2.0, 2.0, 2.0] and _codes(r) == []
@@ -100,3 +100,29 @@ def test_the_docs_say_consecutive_fillets_round_as_one_call():
     assert ("`Fillet`s of chosen corners written one after another (one per loop pass: "
             "`for i in range(N) { Fillet([body.top, notches.u[i]], 3) }`) round as one call"
             in text)
+
+
+def test_run_fs_a_piece_running_into_a_tangent_arc_gives_the_corner_all_of_it():
+    """Run fs's beer flight paddle: `Fillet([board, grip], 15)` where the grip leaves the
+    board's R10-rounded end 25 mm from its corner was capped at 12.5 mm (half of the piece,
+    though its other end is the R10 arc's tangent join, no corner), W0406 twice, and the
+    model drew R15 webs by hand.  All of such a piece is the corner's now: R15, no W0406."""
+    path = RUNS / "issue111fs" / "run" / "05_beer_flight_paddle.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    assert r.ok and "W0406" not in _codes(r)
+    segs, _ = svg_segments(r.to_svg())
+    radii = [round(float(s.rx), 9) for s in segs if type(s).__name__ == "Arc"]
+    assert radii.count(15.0) == 2 * 2                # the two joins on each of two layers
+
+
+def test_run_dq_a_whole_outline_fillet_rounds_the_neck_by_the_radius_asked():
+    """Run dq's egg-and-spoon race: "the joins rounded R6", `Fillet(6 mm)` of a head, a neck
+    circle and a Hull handle; the neck's arc between the head and the handle's side is short,
+    and each join got 2.285 mm with no message (a whole-outline Fillet says no cap).  The
+    arc's other end is the Hull's tangent join: R6 now, each side of each of the 4 spoons."""
+    path = RUNS / "issue111dq" / "run" / "05_egg_and_spoon_race.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    assert r.ok
+    segs, _ = svg_segments(r.to_svg())
+    radii = [round(float(s.rx), 6) for s in segs if type(s).__name__ == "Arc"]
+    assert radii.count(6.0) == 4 * 2 and 2.285 not in [round(x, 3) for x in radii]

@@ -637,7 +637,8 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
                          f" (of the {len(js)} corners where they meet)")
             out.append((call, "W0406", i,
                         f"{head} {done}: the outline's pieces next to the corner leave room "
-                        f"for no more (a corner takes at most half of each piece"
+                        f"for no more (a corner takes at most half of a piece between two "
+                        f"corners"
                         f"{', and the arc must touch both' if fillet else ''})",
                         f"ask for at most {fits:g} mm there, or make the edges beside the "
                         f"corner longer" if fits > 0 else
@@ -753,30 +754,37 @@ def corners(loop, size: float, fillet: bool, only=None, got=None, deep=None):
     arc of radius ``size`` tangent to both of its segments) or cut (chamfer: every convex
     corner, by a line between the points ``size`` mm along each segment, arc length on an
     arc; ``size`` 0: none, the loop as it is).  A corner is a join where the direction turns
-    by more than :data:`CORNER_TURN` (tangent joins are not corners); with ``only`` (points, mm), just the corners within
-    :data:`CORNER_TOL` of one of them, and a chamfer there cuts concave corners too (it adds
-    the triangle between its legs); ``size`` may then be a list, one size per point of
-    ``only`` (consecutive Fillets of chosen corners, one pass: :func:`finish`).  No corner takes more than half of a segment: where
-    a segment is too short for both of its corners the fillet radius (or chamfer leg)
-    shrinks to fit.  Lines stay on their lines and arcs on their circles, so the result is
-    exact (:mod:`.curves`).  ``got`` (a dict): for each corner rounded (or found and not
-    rounded), the index into ``only`` (or -1 without ``only``) -> the smallest radius (or
-    leg) it got, 0 for none.  ``deep`` (a list): gets ``(point, setback, angle, radius, index
-    into only or -1)`` for each sharp tip a fillet cuts back more than :data:`TIP_BACK` and
-    3 radii (W0411)."""
+    by more than :data:`CORNER_TURN` (tangent joins are not corners); with ``only`` (points,
+    mm), just the corners within :data:`CORNER_TOL` of one of them, and a chamfer there cuts
+    concave corners too (it adds the triangle between its legs); ``size`` may then be a
+    list, one size per point of ``only`` (consecutive Fillets of chosen corners, one pass:
+    :func:`finish`).  No corner takes more than half of a segment between two corners (all
+    of one whose other end is a tangent join): where a segment is too short the fillet
+    radius (or chamfer leg) shrinks to fit.  Lines stay on their lines and arcs on their
+    circles, so the result is exact (:mod:`.curves`).  ``got`` (a dict): for each corner
+    rounded (or found and not rounded), the index into ``only`` (or -1 without ``only``) ->
+    the smallest radius (or leg) it got, 0 for none.  ``deep`` (a list): gets ``(point,
+    setback, angle, radius, index into only or -1)`` for each sharp tip a fillet cuts back
+    more than :data:`TIP_BACK` and 3 radii (W0411)."""
     from ..shapes.curves import Arc, Circle, Loop, simplify, turn_between, with_ends
     segs = loop.segments
     n = len(segs)
     if n < 2 or any(isinstance(g, Circle) for g in segs):
         return loop
     cut = [None] * n                 # corner k (before segment k): (end of k-1, start of k, new)
+    turns = [turn_between(segs[k - 1], segs[k]) for k in range(n)]
+    sharp = [abs(t) > CORNER_TURN for t in turns]
     for k in range(n):
         a, b = segs[k - 1], segs[k]
         p = b.start
-        turn = turn_between(a, b)
+        turn = turns[k]
+        # a piece between two corners gives each at most half; one whose other end is a
+        # smooth join (a tangent arc's) gives all of it (run fs: a 25 mm piece between the
+        # corner and a paddle's R10 corner, R15 capped at 12.5 mm)
+        share = (0.5 if sharp[k - 1] else 1.0, 0.5 if sharp[(k + 1) % n] else 1.0)
         hits = [-1] if only is None else [i for i, (qx, qy) in enumerate(only)
                                            if math.hypot(p[0] - qx, p[1] - qy) <= CORNER_TOL]
-        if abs(turn) <= CORNER_TURN or not hits or (not fillet and turn < 0 and only is None):
+        if not sharp[k] or not hits or (not fillet and turn < 0 and only is None):
             continue
         here = size if not isinstance(size, list) else size[hits[0]]
         if here <= 0:               # size 0: the corner found, left sharp (nothing asked)
@@ -784,7 +792,7 @@ def corners(loop, size: float, fillet: bool, only=None, got=None, deep=None):
                 for i in hits:
                     got[i] = 0.0
             continue
-        cut[k] = _corner(a, b, turn, here, fillet)
+        cut[k] = _corner(a, b, turn, here, fillet, share)
         if deep is not None and fillet and cut[k] is not None and turn > 0:
             # (a tip of the material: a window's sharp end rounded is material kept, run ai's
             # hanger)
@@ -794,7 +802,7 @@ def corners(loop, size: float, fillet: bool, only=None, got=None, deep=None):
                 deep.append((p, back, math.pi - abs(turn), arc.radius, hits[0]))
         if got is not None:
             size_got = (0.0 if cut[k] is None else cut[k][2].radius if fillet
-                        else min(here, a.length / 2, b.length / 2))
+                        else min(here, a.length * share[0], b.length * share[1]))
             for i in hits:
                 got[i] = min(got.get(i, size_got), size_got)
     if not any(cut):
@@ -812,9 +820,10 @@ def corners(loop, size: float, fillet: bool, only=None, got=None, deep=None):
     return Loop(simplify([g for g in out if not isinstance(g, Arc) or g.sweep != 0], scale))
 
 
-def _corner(a, b, turn: float, size: float, fillet: bool):
+def _corner(a, b, turn: float, size: float, fillet: bool, share=(0.5, 0.5)):
     """(end of ``a``, start of ``b``, the fillet Arc or chamfer Line) at the corner where
-    segment ``a`` runs into ``b`` (None: no fillet arc fits); raises :class:`SplineCorner`
+    segment ``a`` runs into ``b`` (None: no fillet arc fits), taking at most the fractions
+    ``share`` of ``a`` and of ``b`` next to the corner; raises :class:`SplineCorner`
     where a spline, or an ellipse beside another ellipse, makes it inexact."""
     from ..shapes.curves import EllipticArc, Spline
     p = b.start
@@ -843,7 +852,7 @@ def _corner(a, b, turn: float, size: float, fillet: bool):
             f"choose corners away from the spline with `{what}(..., at=[...])`, or make "
             f"the corner part of the spline (a point of it placed there, so the curve "
             f"itself turns smoothly)")
-    return _fillet(a, b, turn, size) if fillet else _chamfer(a, b, size)
+    return _fillet(a, b, turn, size, share) if fillet else _chamfer(a, b, size, share)
 
 
 def _offset(g, d: float):
@@ -880,12 +889,13 @@ def _fraction(g, p, from_end: bool) -> float:
     return 1.0 - t if from_end else t
 
 
-def _fillet_at(a, b, turn: float, r: float):
+def _fillet_at(a, b, turn: float, r: float, share=(0.5, 0.5)):
     """(tangent point on a, tangent point on b, the fillet Arc) for radius ``r``, or None when
     no arc of that radius fits: its center is where ``a`` and ``b``'s carriers offset by
     ``r`` toward the corner's inside cross, it must run the way both segments run where it
-    touches them, and its tangent points must lie in the halves of ``a`` and ``b`` next to
-    the corner."""
+    touches them, and its tangent points must lie in the parts of ``a`` and ``b`` next to
+    the corner that ``share`` gives it (fractions of each: a half, or all of a piece whose
+    other end is no corner)."""
     from ..shapes.curves import Arc, EllipticArc, carrier, crossings, foot, tangent_at
     s = 1.0 if turn > 0 else -1.0
     p = b.start
@@ -904,7 +914,7 @@ def _fillet_at(a, b, turn: float, r: float):
         if abs(math.dist(ta, c) - r) > tol or abs(math.dist(tb, c) - r) > tol:
             continue
         fa, fb = _fraction(a, ta, True), _fraction(b, tb, False)
-        if not (-1e-12 <= fa <= 0.5 + 1e-12 and -1e-12 <= fb <= 0.5 + 1e-12):
+        if not (-1e-12 <= fa <= share[0] + 1e-12 and -1e-12 <= fb <= share[1] + 1e-12):
             continue
         # the arc, turning the corner's way, runs along a at ta and along b at tb
         a1 = math.atan2(ta[1] - c[1], ta[0] - c[0])
@@ -987,15 +997,15 @@ def with_ends_at(g, t, start: bool = False):
     return with_ends(g, t, g.end) if start else with_ends(g, g.start, t)
 
 
-def _fillet(a, b, turn: float, r: float):
-    got = _fillet_at(a, b, turn, r)
+def _fillet(a, b, turn: float, r: float, share=(0.5, 0.5)):
+    got = _fillet_at(a, b, turn, r, share)
     if got is not None:
         return got
     lo, hi = 0.0, r                  # the largest radius that fits: bisection
     best = None
     for _ in range(60):
         mid = (lo + hi) / 2
-        got = _fillet_at(a, b, turn, mid)
+        got = _fillet_at(a, b, turn, mid, share)
         if got is None:
             hi = mid
         else:
@@ -1008,11 +1018,11 @@ def _dir(g, end: bool):
     return tangent_at(g, end)
 
 
-def _chamfer(a, b, d: float):
+def _chamfer(a, b, d: float, share=(0.5, 0.5)):
     """(point on a, point on b, the chamfer Line) ``d`` mm from the corner along each
-    segment: two equal legs, at most half of the shorter segment."""
+    segment: two equal legs, at most the fractions ``share`` of ``a`` and ``b``."""
     from ..shapes.curves import Line
-    d = min(d, a.length / 2, b.length / 2)
+    d = min(d, a.length * share[0], b.length * share[1])
     pa, pb = _along(a, d, True), _along(b, d, False)
     return pa, pb, Line(pa, pb)
 
