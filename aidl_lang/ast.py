@@ -189,17 +189,21 @@ class ListLit(Node):
 
 
 class ListComp(Node):
-    """A list comprehension ``[elt for var in iter if cond]``."""
-    __slots__ = ("elt", "var", "var_span", "iter", "cond")
+    """A list comprehension ``[elt for var in iter if cond]``.  ``flat``: ``elt`` is the
+    comprehension of a further ``for`` whose items are joined into this one's, as Python's
+    ``[f(a, b) for a in xs for b in ys]`` (the parser makes one ListComp per ``for``, the
+    outer ones flat)."""
+    __slots__ = ("elt", "var", "var_span", "iter", "cond", "flat")
 
     def __init__(self, span: Span, elt: Node, var: str, var_span: Span, iter: Node,
-                 cond: Node | None):
+                 cond: Node | None, flat: bool = False):
         self.span = span
         self.elt = elt
         self.var = var
         self.var_span = var_span
         self.iter = iter
         self.cond = cond
+        self.flat = flat
 
 
 # ---------------------------------------------------------------- statements

@@ -333,6 +333,8 @@ def highlights_scm() -> str:
   [{kw(control_for)}] @keyword.repeat)
 (list_comprehension
   [{kw(control_for)}] @keyword.repeat)
+(comprehension_for
+  [{kw(control_for)}] @keyword.repeat)
 [{kw(v["logical"])}] @keyword.operator
 [{kw(imports)}] @keyword.import
 {kw(functions_kw)} @keyword.function

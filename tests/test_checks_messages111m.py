@@ -9,6 +9,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import aidl_lang
+from aidl_lang.library.reference import lookup_text
 
 from test_exact_formats import svg_segments
 
@@ -126,3 +127,47 @@ def test_run_dq_a_whole_outline_fillet_rounds_the_neck_by_the_radius_asked():
     segs, _ = svg_segments(r.to_svg())
     radii = [round(float(s.rx), 6) for s in segs if type(s).__name__ == "Arc"]
     assert radii.count(6.0) == 4 * 2 and 2.285 not in [round(x, 3) for x in radii]
+
+
+COMP = """solid p {
+    body = Rectangle(center=(0, 0), width=60, height=40)
+    hole h {
+        c = [Circle(center=(sx * 20, sy * 12), radius=3) for sx in [-1, 1] for sy in [-1, 1]]
+    }
+    pairs = [(a, b) for a in range(4) if a > 0 for b in range(a) if b != 1]
+    grid = [[x * y for y in [1, 2]] for x in [3, 4]]
+    assert len(h.c) == 4 and h.c[1].center.x == -20 mm and h.c[1].center.y == 12 mm
+    assert len(pairs) == 4 and pairs[3][0] == 3 and pairs[3][1] == 2
+    assert len(grid) == 2 and grid[1][1] == 8
+}
+"""
+
+
+def test_run_gd_a_comprehension_with_two_fors_is_one_flat_list_as_in_python():
+    """Run gd's yagi antenna: `[Rectangle(...) for sx in [-1, 1] for sy in [-1, 1]]` was
+    E0001 "unexpected `for`" and two follow-on errors on the next line with wrong hints (a
+    missing `,`, "a structure is written `solid NAME {...}`").  Several `for`s make one flat
+    list, the later ones fastest and each `if` after its own `for`, as Python's."""
+    r = aidl_lang.compile(source=COMP)
+    assert r.ok and not [d for d in r.diagnostics if d.is_error]
+    assert r.parts[0].holes == 4
+    # the run's attempt: past the parse, to the model's own assert (94 mm of 100: its slip)
+    path = RUNS / "issue111gd" / "drafts" / "02_yagi_antenna.attempt1.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    errs = [d for d in r.diagnostics if d.is_error]
+    assert [d.code for d in errs] == ["E0405"] and "94 mm == 100 mm" in errs[0].message
+    # `aidl fmt` keeps it; the docs say it
+    from aidl_lang.editor.fmt import format_source
+    assert format_source(COMP) == COMP
+    assert "several `for`s one flat list" in " ".join(lookup_text("for")[0].split())
+
+
+def test_the_editors_see_each_for_of_a_comprehension():
+    from aidl_lang.editor.lsp import analysis as an
+    line = COMP.splitlines().index(next(s for s in COMP.splitlines() if "pairs =" in s))
+    text = COMP.splitlines()[line]
+    d = an.definition(COMP, line, text.index("b)"), "file:///p.aidl")
+    assert d is not None and d.range.start.line == line
+    assert d.range.start.character == text.index("b in range(a)")
+    d = an.definition(COMP, line, text.index("a)"), "file:///p.aidl")
+    assert d.range.start.character == text.index("a in range(4)")

@@ -273,7 +273,7 @@ def lark_expr(e, spans: bool = True):
         return type(e).__name__, [r(x) for x in e.items], S(e)
     if isinstance(e, A.ListComp):
         return ("comp", r(e.elt), e.var, r(e.iter), None if e.cond is None else r(e.cond),
-                S(e))
+                e.flat, S(e))
     raise TypeError(type(e))
 
 
@@ -324,9 +324,16 @@ def ts_expr(n, cols: _Columns, spans: bool = True):
     if t in ("tuple", "list"):
         return {"tuple": "TupleLit", "list": "ListLit"}[t], [r(c) for c in named], S(n)
     if t == "list_comprehension":
-        cond = f("filter")
-        return ("comp", r(f("element")), f("variable").text.decode(), r(f("iterable")),
-                None if cond is None else r(cond), S(n))
+        # each further `for` (comprehension_for) is a ListComp inside the one before it,
+        # the outer ones flat, all of the whole comprehension's span (aidl_lang.ast.ListComp)
+        clauses = [n] + [c for c in named if c.type == "comprehension_for"]
+        out = r(f("element"))
+        for k, c in enumerate(reversed(clauses)):
+            cond = c.child_by_field_name("filter")
+            out = ("comp", out, c.child_by_field_name("variable").text.decode(),
+                   r(c.child_by_field_name("iterable")), None if cond is None else r(cond),
+                   k > 0, S(n))
+        return out
     raise TypeError(t)
 
 

@@ -339,7 +339,10 @@ class Expressions:
                 self.scope = sc
                 if e.cond is not None and not self._filter(e):
                     continue
-                out.append(self.eval(e.elt))
+                if e.flat:              # `[... for a in xs for b in ys]`: one flat list
+                    out.extend(self.eval(e.elt))
+                else:
+                    out.append(self.eval(e.elt))
         finally:
             self.frames.pop()
             self.scope = outer

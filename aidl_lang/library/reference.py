@@ -829,7 +829,8 @@ shapes form one part.
     "for": ("statement", "`for i in range(n) { ... }`: repetition.", """
 `for NAME in LIST { ... }` (`range(n)`, `range(a, b)`, a list): runs the body once per item;
 names defined in the loop become lists (`knob[0]`), structures too (`bolt[2].c`). Also list
-comprehensions: `[f(i) for i in range(n) if c]`. For copies of a shape see LinearPattern,
+comprehensions: `[f(i) for i in range(n) if c]`, several `for`s one flat list as in Python
+(`[(x, y) for x in xs for y in ys]`). For copies of a shape see LinearPattern,
 CircularPattern, GridPattern.
 """, ["loop", "range", "in", "repeat"]),
     "if": ("statement", "`if c { } else { }`: choice on values known before solving.", """

@@ -511,8 +511,16 @@ class _Builder:
         return A.ListLit(meta, [i for i in items if i is not None])
 
     def listcomp(self, meta, items):
-        elt, var, it, cond = items
-        return A.ListComp(meta, elt, self.tx(var), var, it, cond)
+        elt, var, it, cond, *more = items
+        clauses = [(var, it, cond)] + more
+        out = elt                       # the innermost `for` makes the items; each outer
+        for k, (v, i, c) in enumerate(reversed(clauses)):      # one joins its lists
+            out = A.ListComp(meta, out, self.tx(v), v, i, c, flat=k > 0)
+        return out
+
+    def comp_for(self, meta, items):
+        var, it, cond = items
+        return (var, it, cond)
 
     def ternary(self, meta, items):
         then, cond, orelse = items

@@ -376,7 +376,17 @@ export default grammar({
       'in',
       field('iterable', $._expression),
       optional(seq('if', field('filter', $._expression))),
+      repeat($.comprehension_for),
       ']',
+    ),
+
+    // a further `for` of a comprehension, as Python nests them: `[f(a, b) for a in xs for b in ys]`
+    comprehension_for: $ => seq(
+      'for',
+      field('variable', $.identifier),
+      'in',
+      field('iterable', $._expression),
+      optional(seq('if', field('filter', $._expression))),
     ),
 
     // ---------------------------------------------------------------- literals

@@ -309,10 +309,13 @@ class Index:
                 self._exprs(st.expr, scope)
 
     def _exprs(self, e, scope: Scope) -> None:
-        for n in A.walk(e):
+        made: dict = {}         # a comprehension's span -> its scope (each `for` of
+        for n in A.walk(e):     # `[... for a in xs for b in ys]` is a ListComp of that span)
             if isinstance(n, A.ListComp):
-                inner = self._scope(scope, n.span.start, n.span.end)
-                self._define(inner, Sym(n.var, "loop", n.var_span, n))
+                key = (n.span.start, n.span.end)
+                if key not in made:
+                    made[key] = self._scope(scope, n.span.start, n.span.end)
+                self._define(made[key], Sym(n.var, "loop", n.var_span, n))
 
     # ------------------------------------------------------------ queries
     def scope_at(self, offset: int) -> Scope:

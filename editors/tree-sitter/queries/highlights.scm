@@ -27,6 +27,8 @@
   ["for" "in"] @keyword.repeat)
 (list_comprehension
   ["for" "in"] @keyword.repeat)
+(comprehension_for
+  ["for" "in"] @keyword.repeat)
 ["and" "not" "or"] @keyword.operator
 ["as" "import"] @keyword.import
 "def" @keyword.function

@@ -60,6 +60,9 @@
 (list_comprehension
   variable: (identifier) @local.definition.var)
 
+(comprehension_for
+  variable: (identifier) @local.definition.var)
+
 ; `import "std/shapes.aidl" as shapes`, `import std.gears as g`
 (import_declaration
   alias: (identifier) @local.definition.namespace)

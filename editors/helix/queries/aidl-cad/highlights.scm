@@ -28,6 +28,8 @@
   ["for" "in"] @keyword.control.repeat)
 (list_comprehension
   ["for" "in"] @keyword.control.repeat)
+(comprehension_for
+  ["for" "in"] @keyword.control.repeat)
 ["and" "not" "or"] @keyword.operator
 ["as" "import"] @keyword.control.import
 "def" @keyword.function

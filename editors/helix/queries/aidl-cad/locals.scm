@@ -27,6 +27,9 @@
 (list_comprehension
   variable: (identifier) @local.definition.variable)
 
+(comprehension_for
+  variable: (identifier) @local.definition.variable)
+
 (assignment
   name: (identifier) @local.definition.variable)
 
