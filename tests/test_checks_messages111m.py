@@ -171,3 +171,33 @@ def test_the_editors_see_each_for_of_a_comprehension():
     assert d.range.start.character == text.index("b in range(a)")
     d = an.definition(COMP, line, text.index("a)"), "file:///p.aidl")
     assert d.range.start.character == text.index("a in range(4)")
+
+
+def test_run_ga_indexing_a_loops_own_structure_inside_it_says_it_is_this_passs_one():
+    """Run ga's shopping peg board: `p = peg()` and `RightOf(p[i], board if i == 0 else
+    p[i - 1], gap=6)` in one loop was E0111 "a solid structure cannot be indexed", hint "only
+    lists (loops, ...) are indexed", which pointed the wrong way (p is a loop's).  The hint
+    says `p` is this pass's one and gives the second loop; followed, the board is valid."""
+    path = RUNS / "issue111ga" / "drafts" / "02_shopping_peg_board.attempt1.aidl"
+    src = path.read_text()
+    r = aidl_lang.compile(source=src, path=str(path))
+    e = [d for d in r.diagnostics if d.is_error]
+    assert e[0].code == "E0111" and "`p` is this pass's one" in e[0].hint
+    assert "`for i in range(1, len(p)) { RightOf(p[i], p[i - 1]) }`" in e[0].hint
+    old = """        RightOf(p[i], board if i == 0 else p[i - 1], gap=6)
+        AlignTop(p[i], board)
+    }
+"""
+    new = """        AlignTop(p, board)
+    }
+    RightOf(p[0], board, gap=6)
+    for i in range(1, len(p)) { RightOf(p[i], p[i - 1], gap=6) }
+"""
+    assert old in src
+    r = aidl_lang.compile(source=src.replace(old, new), path=str(path))
+    assert not [d for d in r.diagnostics if d.is_error]
+    # a plain structure indexed keeps the plain hint
+    r = aidl_lang.compile(source="def a() -> solid { c = Circle(center=(0, 0), radius=3) }\n"
+                                 "assembly k {\n    b = a()\n    Fixed(b[0])\n}\n")
+    (e,) = [d for d in r.diagnostics if d.is_error]
+    assert e.code == "E0111" and e.hint.startswith("only lists")

@@ -304,6 +304,13 @@ class Expressions:
                 name = e.obj.obj.id if isinstance(e.obj.obj, A.Name) else "cells"
                 hint = ("a pattern's list is flat, one copy an item: a GridPattern's is row by "
                         f"row, copy (r, c) is `{name}[r * cols + c]`")
+            elif isinstance(e.obj, A.Name) and self._this_pass(e.obj.id) is not None:
+                # run ga: `RightOf(p[i], p[i - 1])` in the loop that makes `p = peg()`
+                n, var = e.obj.id, self._this_pass(e.obj.id)
+                hint = (f"inside the loop that makes it, `{n}` is this pass's one (a list only "
+                        f"after the loop): write `{n}` for it; to relate each to the one "
+                        f"before, write a second loop after this one: `for {var} in "
+                        f"range(1, len({n})) {{ RightOf({n}[{var}], {n}[{var} - 1]) }}`")
             raise EvalError("E0111", f"{_a(type_name(obj))} cannot be indexed", e.obj.span,
                             hint=hint)
         i = self._q(idx, e.index.span).const()
@@ -318,6 +325,16 @@ class Expressions:
         if obj[i] is POISON:
             raise _Silent()
         return obj[i]
+
+    def _this_pass(self, name: str) -> str | None:
+        """The variable of the innermost loop whose pass so far assigned ``name`` (the name
+        is then this pass's value, and a list only after the loop), or None."""
+        sc = self.scope
+        while sc is not None and getattr(sc, "loop_index", None) is not None:
+            if name in sc.vars:
+                return sc.loop_var
+            sc = sc.parent
+        return None
 
     def _e_TupleLit(self, e):
         ev = self.eval
