@@ -313,10 +313,11 @@ _DEFS = {
                    "first tip up (+y); tip_radius=: rounded tips (outer_radius stays the "
                    "sharp star's; `.bb` is the rounded one's size).",
                members=STAR_MEMBERS),
-    "Offset": _p([A("shape", "geometry"), A("distance", "length"), A("join", "string", "round")],
-                 doc="The shape grown by distance (negative: shrunk), join \"round\" or "
-                     "\"miter\"; the shape is not drawn.", members=GROWN_MEMBERS),
-    "Inset": _p([A("shape", "geometry"), A("distance", "length"), A("join", "string", "round")],
+    "Offset": _p([A("shape", "any"), A("distance", "length"), A("join", "string", "round")],
+                 doc="The shape (a list: their union) grown by distance (negative: shrunk), "
+                     "join \"round\" or \"miter\"; the shape is not drawn.",
+                 members=GROWN_MEMBERS),
+    "Inset": _p([A("shape", "any"), A("distance", "length"), A("join", "string", "round")],
                 doc="Offset(shape, -distance).", members=GROWN_MEMBERS),
     "Shell": _p([A("shape", "geometry"), A("thickness", "length"), A("join", "string", "round")],
                 doc="A wall `thickness` wide outside the shape (negative: inside); the shape "

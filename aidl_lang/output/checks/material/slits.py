@@ -246,6 +246,15 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
         # a toy camera's nicks given at its place on the laid-out sheet)
         cx, cy = written(s, *((p + q) / 2))
         fix = slit_fix(d, s, (p + q) / 2, w, t, names, corners) if len(said) < SHOWN else ""
+        insets = {f.data.get("distance") for f in (fp, fq) if f.kind == "Offset"}
+        if fp.kind == fq.kind == "Offset" and len(insets) == 1 and insets.pop() < 0:
+            # run gb: two lobes of a heart, each inset 0.5, part at the point (a V slit 4 mm
+            # long); the nick's Fillet filled only its narrow end and the V stayed
+            k = -fp.data["distance"]
+            fix = (f"{names[0]} and {names[-1]} are inset one by one, and two insets part "
+                   f"where their shapes meet: inset the shapes as one, "
+                   f"`Inset([SHAPE1, SHAPE2], {k:g} mm)` (the inset of their union: one "
+                   f"outline, no slit), the shapes those two inset")
         said.append((f"a slit of empty space between {between} in `{s.path}` is "
                      f"{below(w, t)} mm wide, narrower than {t:g} mm (over {length:.1f} mm, near "
                      f"({cx:.1f}, {cy:.1f})): narrower than a laser or router cuts, so it comes "

@@ -262,9 +262,14 @@ class Faces:
             out = self._common(g)
             self.derived[id(g)] = out
             return out
-        src = g.data["sources"][0]
+        srcs = g.data["sources"]
+        src = srcs[0]
         loops = self.loops_of(src)
         base = self.exact.section(loops) if loops else mf.CrossSection()
+        if len(srcs) > 1:               # `Inset([a, b], d)`: the offset of their union
+            base = self.union([base] + [self.exact.section(lp) for lp in
+                                        (self.loops_of(o) for o in srcs[1:]) if lp])
+            loops = self.exact.loops(base)
         join = g.data.get("join", "round")
         if g.kind == "Offset":
             d = g.data["distance"]
@@ -279,7 +284,8 @@ class Faces:
             what = "distance" if g.kind == "Offset" else "thickness"
             v = g.data[what]
             self.shape_errors.append((g, (
-                f"`{g.label}`: an inset of {abs(v):g} mm leaves nothing of `{src.label}`: "
+                f"`{g.label}`: an inset of {abs(v):g} mm leaves nothing of "
+                f"{' and '.join(f'`{o.label}`' for o in srcs[:3])}: "
                 f"the shape is nowhere more than {2 * abs(v):g} mm across"),
                 f"use a smaller {what}: an inset removes a band {abs(v):g} mm wide along the "
                 f"whole outline" + ("" if g.kind == "Offset" else
