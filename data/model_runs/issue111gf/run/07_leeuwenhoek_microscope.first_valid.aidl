@@ -1,0 +1,79 @@
+# Request (science): a working replica of van Leeuwenhoek's simple microscope for a school
+# science club, cut from 1.5 mm birch aircraft ply; the lens is a 2 mm glass bead. Two plates
+# 25 x 60 mm (R4) screwed together by three M2 screws (2.2 mm holes at (5, 55), (20, 55) and
+# (12.5, 6) from the plate's bottom-left corner). Each plate has a 1.0 mm aperture at
+# (12.5, 48), countersunk to 2.4 mm on its inner face so the bead sits in the two cones.
+# Behind the back plate a 10 mm wide stage arm pivots on the bottom screw over a washer
+# (6 mm, bore 2.2 mm); its top carries a 1 mm hole for the specimen pin exactly behind the
+# lens, and halfway between pivot and pin an M2 nut trap for the focusing screw that pushes the
+# arm's top away from the plate. "LEEUWENHOEK" engraved up the front plate (size 3) between
+# the bottom screw and the lens.
+
+units mm
+thickness 1.5 mm
+
+import "std/fasteners.aidl"
+import "std/shapes.aidl"
+
+t = 1.5
+lens = (12.5, 48)
+pivot = (12.5, 6)
+
+def lens_plate(named=false) -> solid {
+    body = RoundedRectangle(bottom_left=(0, 0), width=25, height=60, corner_radius=4)
+    for p in [(5, 55), (20, 55), pivot] {
+        hole screw { c = Circle(center=p, diameter=2.2) }
+    }
+    hole aperture { c = Circle(center=lens, diameter=1.0) }
+    Countersink(aperture, diameter=2.4)
+    if named {
+        drawing name {
+            n = Text("LEEUWENHOEK", position=(12.5 + 1.5, 27), size=3, rotation=90 deg)
+        }
+    }
+}
+
+assembly microscope {
+    front = lens_plate(named=true)
+    back = lens_plate()
+
+    solid arm {
+        bar = Slot(start=pivot, end=(12.5, 52), width=10)
+        hole pivot_hole { c = Circle(center=pivot, diameter=2.2) }
+        hole pin { c = Circle(center=lens, diameter=1.0) }
+        focus = nut_trap(size=2, cx=12.5, cy=(6 + 48) / 2)
+    }
+
+    solid spacer {
+        w = washer(outer=6, inner=2.2, cx=12.5, cy=6)
+    }
+
+    # flat layout
+    RightOf(back, front, gap=5)
+    AlignBottom(back, front)
+    RightOf(arm, back, gap=5)
+    AlignBottom(arm, front)
+    RightOf(spacer, arm, gap=5)
+    AlignBottom(spacer, front)
+
+    # 3D, the eye above: back plate cone up, front plate cone down on it, arm and washer below
+    Place(back, position=(0, 0, 0))
+    Place(front, position=(25, 0, 2 * t), face="down")
+    Place(spacer, position=(0, 0, -t))
+    Place(arm, position=(0, 0, -2 * t))
+
+    assert front.body.bb.width == 25 mm and front.body.bb.height == 60 mm, "plates 25 x 60"
+    assert len(front.screw) == 3 and front.screw[0].c.diameter == 2.2 mm, "three M2 screws"
+    assert front.aperture.c.diameter == 1.0 mm, "1 mm aperture"
+    assert front.aperture.c.center.y - front.body.bb.bottom == 48 mm, "aperture at 48"
+    assert front.aperture.c.center.x - front.body.bb.left == 12.5 mm, "centred"
+    assert 2 mm > 1.0 mm and 2 mm < 2.4 mm, "the 2 mm bead sits in the cones"
+    assert arm.pin.c.center.y - arm.pivot_hole.c.center.y ==
+        front.aperture.c.center.y - front.screw[2].c.center.y, "pin behind the lens"
+    assert arm.bar.width == 10 mm, "arm 10 wide"
+    assert abs(arm.focus.hex.center.y - (arm.pivot_hole.c.center.y + arm.pin.c.center.y) / 2) < 0.01 mm,
+        "focus screw halfway"
+    assert distance(front.name, front.aperture) >= 2 mm and distance(front.name, front.screw) >= 2 mm,
+        "the name clear of the holes"
+    assert spacer.w.outer == 6 mm and spacer.w.inner == 2.2 mm, "washer 6 / 2.2"
+}
