@@ -272,3 +272,34 @@ solid q {
     bad = aidl_lang.compile(source="solid p {\n    c = Inset([], 1)\n}\n")
     (e,) = [d for d in bad.diagnostics if d.is_error]
     assert "empty list" in e.message
+
+
+def test_run_gg_stacked_plates_say_which_is_how_thick_and_from_where():
+    """Run gg's shot ski: 3 mm base halves placed at z = 0 and the 6 mm top halves at z = 3,
+    the bases taking the file's `thickness 6 mm`: W0517 x 3, whose hint ("move the part with
+    its `Place` ... or `AllowOverlap`") would have hidden the slip.  The hint now says the
+    two lie one on the other, which is how thick and from where; its second way, followed
+    as the run did (the halves' own thickness), ends every W0517."""
+    path = RUNS / "issue111gg" / "run" / "05_shot_ski.first_valid.aidl"
+    src = path.read_text()
+    r = aidl_lang.compile(source=src, path=str(path))
+    w = [d for d in r.diagnostics if d.code == "W0517"]
+    assert len(w) == 3
+    assert all("the two lie flat one on the other" in d.hint and
+               "is 6 mm thick (the file's `thickness 6 mm`)" in d.hint and
+               "starts 3 mm above its bottom face" in d.hint and
+               "(`thickness 3 mm` in it)" in d.hint for d in w), [d.hint for d in w]
+    fixed = (src.replace("def tail_half(joint=410 mm) -> solid {",
+                         "def tail_half(joint=410 mm, t=6 mm) -> solid {\n    thickness t")
+                .replace("def tip_half(joint=410 mm) -> solid {",
+                         "def tip_half(joint=410 mm, t=6 mm) -> solid {\n    thickness t")
+                .replace("base_tail = tail_half(joint=base_joint)",
+                         "base_tail = tail_half(joint=base_joint, t=3 mm)")
+                .replace("base_tip = tip_half(joint=base_joint)",
+                         "base_tip = tip_half(joint=base_joint, t=3 mm)"))
+    assert fixed.count("thickness t") == 2 and fixed.count("t=3 mm") == 2
+    r2 = aidl_lang.compile(source=fixed, path=str(path))
+    assert "W0517" not in _codes(r2)
+    # the other way, each top half raised 3 mm: no W0517 either
+    up = src.replace("position=(0, 0, 3))", "position=(0, 0, 6))")
+    assert "W0517" not in _codes(aidl_lang.compile(source=up, path=str(path)))

@@ -41,6 +41,8 @@ def _collision_hint(d: Drawing, c) -> str:
         why = (f"a slot or a gap is {c.depth:.3g} mm narrower than the part that goes in it: "
                "widen it to the partner's thickness (or make the material thinner), or move "
                "the part with its `Place`")
+    elif (stack := _stacked(d, c)) is not None:
+        why = stack
     else:
         why = (f"one part runs {c.depth:.3g} mm into the other, more than a slot is ever too "
                "narrow: move the part with its `Place` (its position or the sign of an "
@@ -56,6 +58,51 @@ def _collision_hint(d: Drawing, c) -> str:
             break
     return (f"{why}; if they are meant to share material (a press fit, an inlay), "
             f"`AllowOverlap({a}, {b})` in their assembly says so")
+
+
+def _thickness_source(d: Drawing, name: str) -> str:
+    """Where part ``name``'s thickness comes from, in words: its own `thickness` statement
+    (or an enclosing structure's), else the file's."""
+    s = d.part_of.get(name)
+    for a in ([s, *s.ancestors()] if s is not None else []):
+        if getattr(a, "thickness", None) is not None:
+            own = a is s
+            return (f"its own `thickness {a.thickness:g} mm`" if own else
+                    f"`{a.name}`'s `thickness {a.thickness:g} mm`")
+    t = d.thickness.get(name)
+    return f"the file's `thickness {t:g} mm`" if t is not None else "the default thickness"
+
+
+def _stacked(d: Drawing, c) -> str | None:
+    """W0517's words for two plates lying flat one on the other that overlap through their
+    thickness (run gg's shot ski: 3 mm halves placed at z = 3 on bases that took the file's
+    `thickness 6 mm`; the hint "move the part or AllowOverlap" would have hidden it): which
+    one is how thick and from where, and how far the upper one starts above the lower's
+    bottom; None when the two are not parallel plates stacked."""
+    import numpy as np
+    M = getattr(d, "placement", None) or {}
+    if c.a not in M or c.b not in M:
+        return None
+    na, nb = np.asarray(M[c.a])[:3, 2], np.asarray(M[c.b])[:3, 2]
+    if np.linalg.norm(np.cross(na, nb)) > 1e-9:
+        return None
+    spans = {}
+    for name, nz in ((c.a, na), (c.b, nb)):
+        t = d.thickness.get(name)
+        if t is None:
+            return None
+        o = float(np.asarray(M[name])[:3, 3] @ na)
+        spans[name] = tuple(sorted((o, o + t * float(nz @ na))))
+    (low, (l0, l1)), (up, (u0, u1)) = sorted(spans.items(), key=lambda kv: kv[1])
+    if not (l0 < u0 < l1 < u1 + 1e-9) or abs((l1 - u0) - c.depth) > 1e-6 * max(1.0, c.depth):
+        return None
+    lo, hi = low.split(".")[-1], up.split(".")[-1]
+    return (f"the two lie flat one on the other: `{lo}` is {l1 - l0:g} mm thick "
+            f"({_thickness_source(d, low)}) and `{hi}` starts {u0 - l0:.6g} mm above its "
+            f"bottom face, so {c.depth:.6g} mm of them are one: place `{hi}` "
+            f"{c.depth:.6g} mm further from `{lo}` with its `Place` (or `on={lo}`, which "
+            f"stands it on `{lo}`'s top face), or give `{lo}` the thickness meant "
+            f"(`thickness {u0 - l0:.6g} mm` in it)")
 
 
 def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
