@@ -303,3 +303,20 @@ def test_run_gg_stacked_plates_say_which_is_how_thick_and_from_where():
     # the other way, each top half raised 3 mm: no W0517 either
     up = src.replace("position=(0, 0, 3))", "position=(0, 0, 6))")
     assert "W0517" not in _codes(aidl_lang.compile(source=up, path=str(path)))
+
+
+def test_run_gg_an_error_inside_a_one_line_def_names_the_call_and_what_it_gave():
+    """Run gg's witch hat: `def half_w(h) = 55 * (1 - h / 180) ** 1.6`, one of its calls
+    passing `side_h` (a length) where the others passed plain numbers: E0109 at the `def`'s
+    line and nothing of which call.  The call is a label, with what it gave."""
+    path = RUNS / "issue111gg" / "drafts" / "06_witch_hat.attempt1.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    (e,) = [d for d in r.diagnostics if d.is_error]
+    assert e.code == "E0109" and e.span.line == 20
+    (lb,) = [lb for lb in e.labels if "called here" in lb.message]
+    assert lb.span.line == 48 and lb.message == "`half_w` called here with h = 140 mm"
+    # an error at the call itself (an argument's) gets no such label
+    r = aidl_lang.compile(source="def f(a) = a * 2\nsolid p {\n    c = Circle(center=(0, 0), "
+                                 "radius=f(unknown_name))\n}\n")
+    (e,) = [d for d in r.diagnostics if d.is_error]
+    assert e.code == "E0101" and not [lb for lb in e.labels if "called here" in lb.message]

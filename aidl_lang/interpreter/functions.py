@@ -5,10 +5,10 @@ defined in (issue 111: models reach for a named formula, `def angle_of(v) = 225 
 from __future__ import annotations
 
 from .. import ast as A
-from ..base.diagnostics import EvalError, did_you_mean
+from ..base.diagnostics import EvalError, Label, did_you_mean
 from ..base.limits import MAX_CALL_DEPTH
 from ..geometry.core.values import Function
-from .common import Scope
+from .common import Scope, show
 
 
 def call_function(ip, f: Function, node: A.Call):
@@ -50,7 +50,29 @@ def call_function(ip, f: Function, node: A.Call):
             else:
                 raise EvalError("E0106", f"`{d.name}` needs the argument `{p.name}`",
                                 node.span, hint=sig)
-        return ip.eval(d.value)
+        try:
+            return ip.eval(d.value)
+        except EvalError as err:
+            # run gg: "a length can only be raised to a whole power" at the `def`'s line, and
+            # not which of its calls passed the length: the call is a label, with what it gave
+            if err.span is not None and d.span is not None and err.span.file == d.span.file \
+                    and d.span.start <= err.span.start <= d.span.end \
+                    and not any(lb.span == node.span for lb in err.labels):
+                gave = ", ".join(f"{p.name} = {_shown(scope.vars[p.name])}"
+                                 for p in d.params if p.name in scope.vars)[:160]
+                err.labels = list(err.labels) + [Label(
+                    node.span, f"`{d.name}` called here" + (f" with {gave}" if gave else ""),
+                    primary=False)]
+            raise
     finally:
         ip.scope = saved
         ip.frames.pop()
+
+
+def _shown(v) -> str:
+    """A value as a call's label says it: a length in mm, an angle in degrees (what tells a
+    length passed from a plain number)."""
+    from ..geometry.core.values import ANG, LEN, Q
+    if isinstance(v, Q) and v.const() is not None and v.dim in (LEN, ANG):
+        return f"{show(v)} {'mm' if v.dim == LEN else 'deg'}"
+    return show(v)
