@@ -320,3 +320,15 @@ def test_run_gg_an_error_inside_a_one_line_def_names_the_call_and_what_it_gave()
                                  "radius=f(unknown_name))\n}\n")
     (e,) = [d for d in r.diagnostics if d.is_error]
     assert e.code == "E0101" and not [lb for lb in e.labels if "called here" in lb.message]
+
+
+def test_run_gf_a_structure_named_as_a_parameter_says_it_took_the_name():
+    """Run gf's microscope: `def lens_plate(aperture=1.0 mm, ...)` and, in it, `hole aperture
+    { c = Circle(center=lens, diameter=aperture) }`: E0108 "must be a length, got hole
+    structure", and nothing said why.  The hint says the hole took the parameter's name."""
+    path = RUNS / "issue111gf" / "drafts" / "07_leeuwenhoek_microscope.fix3.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    e = [d for d in r.diagnostics if d.is_error][0]
+    assert e.code == "E0108" and "got hole structure" in e.message
+    assert e.hint.startswith("`aperture` here is the hole `microscope.front.aperture` "
+                             "(line 32), which took the name of the value `aperture` above it")

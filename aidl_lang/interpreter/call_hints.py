@@ -88,12 +88,18 @@ def shadowed(interp, v, span) -> str | None:
     name = _src(interp.sink, span)
     if type(v) is not StructRef or not name.isidentifier():
         return None
+    line = v.struct.span.line if v.struct.span is not None else "?"
+    if getattr(v.struct, "hides", None) == name:
+        # the structure took the name of a value of its own scope (a template's parameter:
+        # run gf's `hole aperture` in `def lens_plate(aperture=1.0 mm)`)
+        return (f"`{name}` here is the {v.struct.kind} `{v.struct.path}` (line {line}), which "
+                f"took the name of the value `{name}` above it (a parameter or a constant) "
+                f"from its line on: give the structure or the value another name")
     _, at = interp.scope.lookup(name)
     outer = at.parent if at is not None else None
     hidden, _ = outer.lookup(name) if outer is not None else (None, None)
     if hidden is None or isinstance(hidden, StructRef):
         return None
-    line = v.struct.span.line if v.struct.span is not None else "?"
     return (f"`{name}` here is the {v.struct.kind} `{v.struct.path}` (line {line}), which hides "
             f"the outer `{name}`: give the structure or the value another name")
 

@@ -519,6 +519,11 @@ class Statements(Asserts):
         name = name or st.name + self._loop_suffix()
         self._check_new_name(st.name, st.name_span, parent)
         child = self._new_structure(name, st.kind, parent, st.span)
+        prev = self.scope.vars.get(st.name)
+        if prev is not None and not isinstance(prev, (GeomRef, StructRef)):
+            # run gf: a template's parameter `aperture` and its `hole aperture { ...
+            # diameter=aperture }`: the name is the hole from here on (call_hints.shadowed)
+            child.hides = st.name
         self.scope.vars[st.name] = StructRef(child)
         self._run_body(child, st.body, Scope(self.scope, child, self.file))
         return child
