@@ -332,3 +332,24 @@ def test_run_gf_a_structure_named_as_a_parameter_says_it_took_the_name():
     assert e.code == "E0108" and "got hole structure" in e.message
     assert e.hint.startswith("`aperture` here is the hole `microscope.front.aperture` "
                              "(line 32), which took the name of the value `aperture` above it")
+
+
+def test_run_gh_distance_of_a_patterns_original_names_its_copies():
+    """Run gh's resonator cover: `distance(plate.petal, plate.saddle)` of a CircularPattern's
+    original, which `start_angle=` made construction: "nothing drawn to measure", and the
+    next such assert "an error above left its shapes out" (wrong).  Both now say it is a
+    pattern's original and name the copies; followed (the run's own fix), the plate is valid."""
+    path = RUNS / "issue111gh" / "drafts" / "04_resonator_coverplate.attempt1.aidl"
+    src = path.read_text()
+    r = aidl_lang.compile(source=src, path=str(path))
+    e = [d for d in r.diagnostics if d.is_error]
+    assert len(e) == 2 and all("`plate.petal` is a pattern's original, not drawn" in d.message
+                               for d in e)
+    assert "error above" not in e[1].message
+    assert "`plate.petals`" in e[0].hint
+    fixed = src.replace("distance(plate.petal, plate.saddle)", "distance(plate.petals, "
+                        "plate.saddle)").replace("distance(plate.name, plate.petal)",
+                                                 "distance(plate.name, plate.petals)")
+    r2 = aidl_lang.compile(source=fixed, path=str(path))
+    assert not [d for d in r2.diagnostics if d.is_error], \
+        [d.message for d in r2.diagnostics if d.is_error]

@@ -11,6 +11,7 @@ import math
 
 from ..base.diagnostics import EvalError
 from ..geometry.core.expr import Expr, evaluate
+from ..geometry.core.model import Structure
 from ..geometry.core.values import LEN, GeomRef, Q, StructRef
 
 
@@ -92,7 +93,27 @@ def measured_distance(interp, args, span) -> Q:
                 what = (f" (`{a.geom.label}`, a Text of no letters)" if isinstance(a, GeomRef)
                         and a.geom.kind == "Text" else "")
                 hint = "name a shape, a structure or a list of them that draws a line"
-                if not what and interp.sink.has_errors:
+                obj = a.struct if isinstance(a, StructRef) else \
+                    a.geom if isinstance(a, GeomRef) else None
+                copies = obj.__dict__.get("pattern_copies") if obj is not None else None
+                if copies:
+                    # run gh: `distance(plate.petal, ...)` of a CircularPattern's original
+                    # that `start_angle=` made construction: "an error above left its shapes
+                    # out" was said of the next such assert
+                    c0 = copies[0]
+                    listed = (c0.path if isinstance(c0, Structure) else
+                              f"{c0.owner.path}.{c0.name}").split("[")[0]
+                    shown = obj.path if isinstance(obj, Structure) else obj.label
+                    here = getattr(getattr(interp, "struct", None), "path", None)
+                    if here and listed.startswith(here + "."):
+                        listed = listed[len(here) + 1:]     # as the assert writes it
+                    if here and shown.startswith(here + "."):
+                        shown = shown[len(here) + 1:]
+                    what = (f" (`{shown}` is a pattern's original, not drawn: its "
+                            f"pattern drew copies in its place)")
+                    hint = (f"measure the pattern's copies, `{listed}` (the list; one of "
+                            f"them: `{listed}[0]`)")
+                elif not what and interp.sink.has_errors:
                     # run ew: a list of notches left empty by an E0109 in their centres; the
                     # hint sent the model to swap the arguments
                     what = " (it is empty: an error above left its shapes out)"
