@@ -68,6 +68,15 @@ def _entity(side, renderer, x, G) -> list:
         return pieces
 
 
+def _made_construction(obj) -> bool:
+    """Whether shape or structure ``obj`` has shapes and every one is construction (a copy
+    in place, a pattern with ``start_angle=``, turned it so), not left empty by an error."""
+    if isinstance(obj, Structure):
+        shapes = [g for s in obj.subtree() for g in s.geometry]
+        return bool(shapes) and all(g.construction for g in shapes)
+    return bool(getattr(obj, "construction", False))
+
+
 class MeasureError(Exception):
     """A side of :class:`Measured` has nothing to measure (an empty Text)."""
 
@@ -96,7 +105,7 @@ def measured_distance(interp, args, span) -> Q:
                 obj = a.struct if isinstance(a, StructRef) else \
                     a.geom if isinstance(a, GeomRef) else None
                 copies = obj.__dict__.get("pattern_copies") if obj is not None else None
-                if copies:
+                if copies and _made_construction(obj):
                     # run gh: `distance(plate.petal, ...)` of a CircularPattern's original
                     # that `start_angle=` made construction: "an error above left its shapes
                     # out" was said of the next such assert
