@@ -353,3 +353,40 @@ def test_run_gh_distance_of_a_patterns_original_names_its_copies():
     r2 = aidl_lang.compile(source=fixed, path=str(path))
     assert not [d for d in r2.diagnostics if d.is_error], \
         [d.message for d in r2.diagnostics if d.is_error]
+
+
+def test_run_gd_two_r4_fillets_on_a_10_mm_edge_both_get_r4():
+    """Run gd's bike pump holder: `Fillet(j.points[2], 4)` and `Fillet(j.points[3], 4)` at
+    the two ends of a 10 mm edge: the second got 3 mm (W0406) after the first took 4 of the
+    10 ("a rule too cautious", the run said): one pass now, R4 each."""
+    path = RUNS / "issue111gd" / "drafts" / "05_bike_pump_holder.attempt1.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    assert "W0406" not in _codes(r)
+    segs, _ = svg_segments(r.to_svg())
+    radii = [round(float(s.rx), 9) for s in segs if type(s).__name__ == "Arc"]
+    assert radii.count(4.0) >= 2 and 3.0 not in radii
+
+
+def test_run_gc_a_label_under_a_wall_by_design_is_accepted_by_allowoverlap():
+    """Run gc's adjustable mould box: the size engraved under the slot in use lies under the
+    wall standing in it, by design (read before the wall goes in): W0532 x 4, warnings (the
+    wall passes through), and neither the prompt nor `aidl explain W0532` gave a way to say
+    so.  `AllowOverlap(walls[i].sizes, walls[...])` says so; the hint and the docs give it."""
+    path = RUNS / "issue111gc" / "run" / "07_mould_box.first_valid.aidl"
+    src = path.read_text()
+    r = aidl_lang.compile(source=src, path=str(path))
+    w = [d for d in r.diagnostics if d.code == "W0532"]
+    assert len(w) == 4 and all(d.severity == "warning" for d in w)
+    assert "`AllowOverlap(walls[0].sizes, walls[3])` in their assembly says so" in w[0].hint
+    add = """    for i in range(4) {
+        AllowOverlap(walls[i].sizes, walls[(i + 3) % 4])
+    }
+"""
+    anchor = '    assert len(walls) == 4, "four walls"\n'
+    assert anchor in src
+    r2 = aidl_lang.compile(source=src.replace(anchor, add + anchor, 1), path=str(path))
+    assert "W0532" not in _codes(r2) and "W0523" not in _codes(r2)
+    from aidl_lang.base.codes import CODES
+    assert "`AllowOverlap(DRAWING, PART)`" in " ".join(CODES["W0532"][1].split())
+    from aidl_lang.llm.prompt import system_prompt
+    assert "`AllowOverlap(labels, part)`: W0532" in " ".join(system_prompt().split())

@@ -1654,7 +1654,9 @@ top; only the pictures showed it): the laser engraves the face that is up on the
 the part with its `Place` (`face=`, `up=`) so that face looks out, mirroring the text
 (`Mirrored`) if it must read from the other side, or move the text clear. One note per pair
 of parts, naming the texts. Other engraved marks are not judged: an outline engraved where a
-part is glued is a guide.
+part is glued is a guide. A text meant to lie there (run gc's mould box: the size under the
+slot in use, read before the wall goes in) is said so by `AllowOverlap(DRAWING, PART)` in
+their assembly, the text's drawing and the part over it.
 
     assembly mirror {
         solid back {

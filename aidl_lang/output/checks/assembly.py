@@ -634,9 +634,18 @@ def _check_covered_text(d: Drawing, bodies, sink: DiagnosticSink) -> None:
                 covered.setdefault((name, other), []).append(
                     (g, n, len(Q), _through(bodies[j][1], M, t)))
                 break
+    from .marks.allowed import meant_off
     for (name, other), rows in covered.items():
+        sb = d.part_of.get(other)
+        # AllowOverlap(the text's drawing, the part over it): meant (run gc's mould box: the
+        # size under the slot in use, read before the wall goes in)
+        rows = [r for r in rows if sb is None or not meant_off(r[0], sb)]
+        if not rows:
+            continue
         g, n, m, fixed = rows[0]
         short, cover = name.split(".")[-1], other.split(".")[-1]
+        owner = g.owner.path
+        drawn = owner[len(name) - len(short):] if owner.startswith(name) else short
         what = (f"the engraved text `{_copy_label(g)}` (\"{g.data.get('text', '')}\") of "
                 f"`{name}` lies under `{other}` as placed ({n} of {m} points of its letters)"
                 if len(rows) == 1 else
@@ -652,7 +661,9 @@ def _check_covered_text(d: Drawing, bodies, sink: DiagnosticSink) -> None:
                 hint="the laser engraves the face that is up on the sheet: move the text "
                      f"clear of `{cover}` (beside the joint), or turn `{short}` with its "
                      "`Place` (`face=`, `up=`) so that face looks out (the text mirrored, "
-                     "`Mirrored`, if it must read from the other side)"))
+                     "`Mirrored`, if it must read from the other side); if it is meant (a "
+                     f"label read before `{cover}` goes in), `AllowOverlap({drawn}, {cover})` "
+                     "in their assembly says so"))
             continue
         sink.add(Diagnostic(
             "W0532", f"assembled, {what}: {'it shows' if len(rows) == 1 else 'they show'} "
