@@ -390,3 +390,19 @@ def test_run_gc_a_label_under_a_wall_by_design_is_accepted_by_allowoverlap():
     assert "`AllowOverlap(DRAWING, PART)`" in " ".join(CODES["W0532"][1].split())
     from aidl_lang.llm.prompt import system_prompt
     assert "`AllowOverlap(labels, part)`: W0532" in " ".join(system_prompt().split())
+
+
+def test_run_gb_a_part_that_fits_through_its_opening_drops_through():
+    """Run gb's sit-and-reach box: the pusher, 6 mm ply on edge in a 6.5 mm slot of the top
+    with nothing under it: W0518 was a note, "it passes through an opening of `top`, which
+    holds it with that play ... nothing is needed" (it falls through).  It fits through the
+    opening seen from above: a warning that nothing holds it up.  The run's fix (a shoe the
+    pusher stands in, resting on the top) is quiet."""
+    path = RUNS / "issue111gb" / "run" / "05_sit_and_reach_box.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    (w,) = [d for d in r.diagnostics if d.code == "W0518"]
+    assert w.severity == "warning" and "it drops through" in w.message
+    assert "a shoulder wider than the opening (a tab each side that stands on `top`)" in w.hint
+    fixed = RUNS / "issue111gb" / "drafts" / "05_sit_and_reach_box.aidl"
+    r2 = aidl_lang.compile(source=fixed.read_text(), path=str(fixed))
+    assert not [d for d in r2.diagnostics if d.code == "W0518" and d.severity == "warning"]

@@ -224,6 +224,16 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
                     f"`{g.nearest}`, is {g.gap:.3g} mm away): {what} with that play",
                     f"standing loose in the opening is as drawn: nothing is needed; for a snug "
                     f"fit, narrow the opening by the play or move `{short}` with its `Place`")
+            if through and loose.drops(g.part, g.nearest):
+                # run gb: a sit-and-reach box's pusher, 6 mm ply on edge in a 6.5 mm slot of
+                # the top with nothing under it ("holds it with that play": it falls through)
+                said = ("warning", f"assembled, part `{g.part}` touches no other part (the "
+                        f"nearest, `{g.nearest}`, is {g.gap:.3g} mm away): it passes through "
+                        f"an opening of `{g.nearest}` and fits through it whole seen from "
+                        f"above, so nothing holds it up: it drops through",
+                        f"rest it on something: a shoulder wider than the opening (a tab each "
+                        f"side that stands on `{g.nearest.split('.')[-1]}`), a part under "
+                        f"it, or move `{short}` with its `Place` onto one")
         elif (inner := loose.enclosed(g.part, g.nearest)) or \
                 loose.enclosed(g.nearest, g.part):
             what = f"it lies inside `{g.nearest}`" if inner else f"`{g.nearest}` lies inside it"
@@ -436,6 +446,22 @@ class _Loose:
         a, b = self.bodies.box(i), self.bodies.box(j)
         return all(b[k] <= a[k] + 1e-6 for k in range(3)) and \
             all(a[k] <= b[k] + 1e-6 for k in range(3, 6))
+
+    def drops(self, name: str, other: str) -> bool:
+        """Whether placed part ``name``, standing in an opening of ``other``, fits through
+        it seen from above (+z, the assembled product's up): the two parts' shadows on the
+        ground meet over less than :data:`VOLUME_IN` mm^2, so nothing of ``other`` is under
+        it to hold it up, and it is not on the floor (the lowest of the parts' bottoms)."""
+        i, j = self.index.get(name), self.index.get(other)
+        if i is None or j is None or self.bodies.bends.get(name):
+            return False
+        floor = min(self.bodies.box(k)[2] for k in range(len(self.index)))
+        if self.bodies.box(i)[2] <= floor + SLOT_SHORT:
+            return False        # it stands on what the product stands on, or drops less than
+            #                     1 mm onto it (run ds: spreaders through a stand's slots,
+            #                     their rounded tips 0.005 mm over the table)
+        a, b = self.bodies[i][1].project(), self.bodies[j][1].project()
+        return (a ^ b).area() < VOLUME_IN
 
     def in_opening(self, name: str, other: str) -> bool:
         i = self.index.get(name)
