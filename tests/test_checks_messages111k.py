@@ -338,13 +338,23 @@ def test_run_ep_filled_shapes_that_touch_are_burnt_once():
 def test_run_en_one_slip_in_five_template_copies_is_one_warning():
     """Run en's play coins: the "5" coin's ring 0.50 mm from its cut edge, in five copies of
     the template: five warnings, and a hint (0.01 mm further) that passed the check and left
-    the ring reading as on the edge."""
+    the ring reading as on the edge.  The ring is exactly 0.5 mm in (r 13.5 on a core of r
+    14), which the rule takes as clear since round seventeen (runs gb, gj asked for marks
+    exactly 0.5 mm inside a rim and were warned: the edge's chords read 0.495); drawn 0.3 mm
+    in, it is one warning for the five copies."""
     path = RUNS / "issue111en" / "run" / "03_play_coins.first_valid.aidl"
-    (w,) = [d for d in aidl_lang.compile(path=str(path)).diagnostics if d.code == "W0516"]
-    assert "`till_money.five[0].face.ring` comes 0.495 mm" in w.message
+    src = path.read_text()
+    assert not [d for d in aidl_lang.compile(source=src, path=str(path)).diagnostics
+                if d.code == "W0516"]
+    near = src.replace('five = coin(label="5", d=32 mm, edge="scallop", ring_d=27 mm)',
+                       'five = coin(label="5", d=32 mm, edge="scallop", ring_d=27.4 mm)')
+    assert near != src
+    (w,) = [d for d in aidl_lang.compile(source=near, path=str(path)).diagnostics
+            if d.code == "W0516"]
+    assert "`till_money.five[0].face.ring` comes 0.30 mm" in w.message
     assert "the same in 4 more parts made by this statement (`till_money.five[1]`, " \
         "`till_money.five[2]`, `till_money.five[3]`, ...)" in w.message
-    assert "0.51 mm further from the edge" in w.hint and "1 mm clear" in w.hint
+    assert "further from the edge" in w.hint and "1 mm clear" in w.hint
 
 
 def test_run_eo_a_part_bolted_to_another_than_its_nearest_is_held():

@@ -15,6 +15,7 @@ import manifold3d as mf
 import numpy as np
 
 from ....base.diagnostics import Diagnostic, DiagnosticSink
+from ....geometry.shapes.tessellate import CHORD_TOL
 from ...part.build.booleans import Drawing
 from ..common import _edges, _inside, _part_of, _pct, _signed, freed_share, written
 from .allowed import meant_off
@@ -457,6 +458,7 @@ def _check_on_cut(part, shape, geoms, pts: np.ndarray, loops, sink) -> set:
 
 CUT_CLEAR = 0.5          # mm: an engraved mark closer to the cut edge runs into it
 SHOWN_CLEAR = 1.0        # mm: the clearance a W0516 hint moves a mark to (twice the least: it shows)
+SAG = 2 * CHORD_TOL      # mm: an edge's chord and a mark's each lie up to CHORD_TOL off their arcs
 OVERSHOOT = 0.25         # mm of a mark past the material (W0505): below it, nothing is lost
 SQUARE = math.radians(15)   # a straight mark ending on the edge this near square is a tick
 SCALE = 3                # ticks ending square on the edges of one part: a scale (a ruler)
@@ -505,9 +507,11 @@ def _check_meets_cut(part, shape, geoms, loops, sink: list) -> None:
     mk, d, pa, ej_all, across = mk[order], d[order], pa[order], ej_all[order], across[order]
     starts = np.r_[0, np.flatnonzero(mk[1:] != mk[:-1]) + 1]
     stops = np.r_[starts[1:], len(mk)]
-    # 0.5 mm clear to within 1e-6 mm is clear: a mark set by `Inside(..., margin=0.5 mm)`
-    # ends 0.4999999 mm from the edge after solving (W0505's hint, issue 84)
-    close = [(int(mk[a]), a, z) for a, z in zip(starts, stops) if d[a] < CUT_CLEAR - 1e-6]
+    # 0.5 mm clear to within the chords' sag is clear: a mark set by `Inside(..., margin=0.5
+    # mm)` ends 0.4999999 mm from the edge after solving (W0505's hint, issue 84), and the
+    # edges and marks are measured as chords that lie up to CHORD_TOL inside their arcs (runs
+    # gb, gj: quadrants and ticks asked for 0.5 mm inside a disc's rim read 0.495, warned)
+    close = [(int(mk[a]), a, z) for a, z in zip(starts, stops) if d[a] < CUT_CLEAR - SAG]
     # each close mark's open ends against the edges near it, all in one array operation
     ends = [_open_ends(*segs[k]) for k, _, _ in close]
     qi, qe, qo, near_edges = [], [], [], []
