@@ -266,10 +266,10 @@ _DEFS = {
                    members=SPLINE_MEMBERS),
     "Spline": _p([A("points", "points"), A("closed", "bool", False),
                   A("corners", "any", None, "indices of points where the curve turns "
-                    "sharply (tangent-discontinuous)", kw_only=True), FLEXIBLE],
+                    "sharply (tangent-discontinuous)", kw_only=True), FLEXIBLE, MIRROR],
                  doc="A smooth curve through the points; closed=true: an outline; "
-                     "corners=[i]: sharp. Its box is the curve's, which may bulge past its "
-                     "points: assert on `points[i]`.",
+                     "corners=[i]: sharp; mirror=\"y\": the points are one half. Its box is "
+                     "the curve's, which may bulge past its points: assert on `points[i]`.",
                  members=SPLINE_MEMBERS),
     "Bezier": _p([A("points", "points"), A("closed", "bool", False), FLEXIBLE],
                  doc="Cubic Bézier chain: p0, c1, c2, p1, ... (3k+1 points).",

@@ -427,3 +427,24 @@ def test_runs_gb_gj_marks_exactly_half_a_millimetre_inside_a_rim_are_clear():
     (w,) = [d for d in aidl_lang.compile(source=src.replace("RADIUS", "99.55")).diagnostics
             if d.code == "W0516"]
     assert "0.44" in w.message or "0.45" in w.message
+
+
+def test_runs_gc_gj_a_spline_written_by_one_half():
+    """Runs gc (a wig stand's head) and gj (a route shield: 18 points by hand): Polygon and
+    Polyline take `mirror=`, Spline did not.  It does: the half, then its mirror images in
+    reverse order; the outline is symmetric, its tip on the axis sharp with `corners=`."""
+    src = """solid shield {
+    s = Spline([(0, 60), (30, 55), (45, 20), (35, -20), (0, -50)], closed=true, mirror="y",
+               corners=[4])
+    assert len(s.points) == 8 and s.points[5].x == -35 mm and s.points[5].y == -20 mm
+}
+"""
+    r = aidl_lang.compile(source=src)
+    assert r.ok and not [d for d in r.diagnostics if d.is_error]
+    (p,) = r.parts
+    x0, y0, x1, y1 = p.bbox
+    assert x0 == pytest.approx(-x1, abs=1e-9)      # symmetric about x = 0
+    assert y0 == pytest.approx(-50, abs=1e-9)       # the sharp tip on the axis
+    segs, f = svg_segments(r.to_svg())
+    pts = sorted((round(f(s.end)[0], 6), round(f(s.end)[1], 6)) for s in segs)
+    assert all((round(-x, 6), y) in pts or abs(x) < 1e-6 for x, y in pts[:40])
