@@ -448,3 +448,15 @@ def test_runs_gc_gj_a_spline_written_by_one_half():
     segs, f = svg_segments(r.to_svg())
     pts = sorted((round(f(s.end)[0], 6), round(f(s.end)[1], 6)) for s in segs)
     assert all((round(-x, 6), y) in pts or abs(x) < 1e-6 for x, y in pts[:40])
+
+
+def test_run_gk_w0406_lists_both_mirror_image_corners():
+    """Run gk's tumbler holder: the ring arm's W0406 gave one of its two neck corners, the
+    base arm's both (the two sizes differed by 1e-15 mm): both are said, sizes that differ
+    each with its own."""
+    path = RUNS / "issue111gk" / "run" / "03_tumbler_holder.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    w = [d for d in r.diagnostics if d.code == "W0406"]
+    assert len(w) == 2
+    assert "with only 1.5138 mm at (33.541, 20), (-33.541, 20) mm (of the 2 corners" in w[0].message
+    assert "at (26.4575, 20), (-26.4575, 20) mm" in w[1].message

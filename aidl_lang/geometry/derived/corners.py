@@ -629,12 +629,22 @@ def report(kind: str, r: float, call, chosen: list, why: dict, pts, got: dict,
                     else f"leaves {c.describe(off)} sharp")
             if len(js) > 1:
                 # which of the corners it takes (run fn: where a rake's handle runs down to
-                # its head's bottom edge, the gaps beside the middle tooth; no place said)
-                at = [pts[j][0] for j in js if got.get(j) == least]
+                # its head's bottom edge, the gaps beside the middle tooth; no place said);
+                # each short one with its size where they differ (run gk: a ring arm's two
+                # neck corners, 1.51 and 3.2 mm, said as one place)
+                short = [(got[j], pts[j][0]) for j in js if j in got
+                         and got[j] < r * (1 - SHRUNK)]
+                short.sort(key=lambda t: t[0])
+                same = least * (1 + 1e-6) + 1e-9          # (mirror images differ by 1e-15)
+                at = [q for v, q in short if v <= same]
                 done += (" at (" + "), (".join(f"{q[0] - off[0]:.6g}, {q[1] - off[1]:.6g}"
                                               for q in at[:3])
-                         + f") mm{f' and {len(at) - 3} more' if len(at) > 3 else ''}"
-                         f" (of the {len(js)} corners where they meet)")
+                         + f") mm{f' and {len(at) - 3} more' if len(at) > 3 else ''}")
+                more = [(v, q) for v, q in short if v > same]
+                if more:
+                    done += "".join(f", {v:.6g} mm at ({q[0] - off[0]:.6g}, "
+                                    f"{q[1] - off[1]:.6g})" for v, q in more[:3])
+                done += f" (of the {len(js)} corners where they meet)"
             out.append((call, "W0406", i,
                         f"{head} {done}: the outline's pieces next to the corner leave room "
                         f"for no more (a corner takes at most half of a piece between two "
