@@ -460,3 +460,50 @@ def test_run_gk_w0406_lists_both_mirror_image_corners():
     assert len(w) == 2
     assert "with only 1.5138 mm at (33.541, 20), (-33.541, 20) mm (of the 2 corners" in w[0].message
     assert "at (26.4575, 20), (-26.4575, 20) mm" in w[1].message
+
+
+def test_run_gp_a_tuple_in_a_for_and_two_statements_on_a_line_get_hints():
+    """Run gp's pattern blocks: `[... for (x, y) in pts]` ("unexpected `(`; expected a
+    name") and `{ RightOf(...) AlignBottom(...) }` on one line ("expected end of file, ...",
+    six times) came with no hint.  Each now says what to write; followed, both parse."""
+    src = """solid p {
+    body = Polygon([(x + 1, y) for (x, y) in [(0, 0), (10, 0), (0, 10)]])
+    a = Rectangle(center=(0, 0), width=4, height=4)
+    b = Rectangle(center=(9, 0), width=4, height=4)
+    for i in range(1) { RightOf(b, a, gap=3) AlignBottom(b, a) }
+}
+"""
+    r = aidl_lang.compile(source=src)
+    e = [d for d in r.diagnostics if d.code == "E0001"]
+    assert len(e) == 2
+    assert e[0].hint.startswith("a `for` takes one name, not a tuple: `for p in pts`")
+    assert e[1].hint.startswith("one statement per line: break the line before `AlignBottom`")
+    fixed = src.replace("[(x + 1, y) for (x, y) in", "[(p[0] + 1, p[1]) for p in").replace(
+        "RightOf(b, a, gap=3) AlignBottom", "RightOf(b, a, gap=3); AlignBottom")
+    r2 = aidl_lang.compile(source=fixed)
+    assert not [d for d in r2.diagnostics if d.is_error], \
+        [d.message for d in r2.diagnostics if d.is_error]
+
+
+def test_run_gn_an_in_test_gets_the_count_that_replaces_it():
+    """Run gn's rhythm wheel: `if k in hits` was "unexpected `in`" and no hint; the hint
+    writes the count with the program's own names, which parses and runs."""
+    src = """hits = [1, 3]
+solid p {
+    body = Rectangle(center=(15, 0), width=50, height=10)
+    hole h {
+        for k in range(4) {
+            if k in hits {
+                c = Circle(center=(k * 10, 0), radius=2)
+            }
+        }
+    }
+}
+"""
+    (e,) = [d for d in aidl_lang.compile(source=src).diagnostics if d.is_error]
+    assert e.code == "E0001" and e.hint == ("AIDL has no `in` test: count the matches, "
+                                            "`len([v for v in hits if v == k]) > 0` (`== 0` "
+                                            "for not in)")
+    r = aidl_lang.compile(source=src.replace("if k in hits", "if len([v for v in hits if v == "
+                                                               "k]) > 0"))
+    assert r.ok and r.parts[0].holes == 2

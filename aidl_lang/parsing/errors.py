@@ -117,7 +117,28 @@ def _report(e: ParseError, text: str, path: str, pos: int, sink: DiagnosticSink)
                    + ", ".join(f"`{k}`" for k in sorted(KEYWORDS)))
         return
     exp = getattr(e, "expected", None) or ()
-    if tok.type in ("NAME", "NUMBER", "STRING", "FSTRING", "LPAR", "LSQB") and "COMMA" in exp \
+    before = text[line_start:pos].rstrip()
+    if tok.type == "IN" and not re.search(r"\bfor\s+\w+$", before) \
+            and not re.search(r"\bunits\s*=?$", before):
+        # run gn: `if k in hits`, Python's membership test: "unexpected `in`", no hint
+        lhs = re.search(r"(\w+)$", before)
+        rhs = re.match(r"\s*in\s+([\w.]+)", text[pos:pos + 200])
+        x, xs = (lhs.group(1), rhs.group(1)) if lhs and rhs else ("k", "hits")
+        hint = (f"AIDL has no `in` test: count the matches, `len([v for v in {xs} if v == "
+                f"{x}]) > 0` (`== 0` for not in)")
+    elif tok.type == "LPAR" and re.search(r"\bfor$", before):
+        # run gp: `[... for (x, y) in rhomb_pts(60 deg)]`, "expected a name", no hint
+        hint = ("a `for` takes one name, not a tuple: `for p in pts`, then `p[0]` and `p[1]` "
+                "(a point's `p.x` and `p.y`)")
+    elif tok.type == "NAME" and not _open_paren(text, pos) and ("_NL" in exp or "$END" in exp) \
+            and re.search(r"[)\]\w\"']$", before) \
+            and not re.search(r"\b(for|if|elif|else|assert|def|solid|hole|cut|drawing|assembly)"
+                              r"\s*$", before):
+        # run gp: `for i in range(1, 4) { RightOf(...) AlignBottom(...) }`: "expected end of
+        # file, `+` or `-`, ..." six times and no hint
+        hint = (f"one statement per line: break the line before `{tok}`, or write `;` "
+                "between the two statements")
+    elif tok.type in ("NAME", "NUMBER", "STRING", "FSTRING", "LPAR", "LSQB") and "COMMA" in exp \
             and _open_paren(text, pos):
         hint = f"a `,` is probably missing before `{tok}`"
     elif tok.type == "FSTRING" and re.match(r"assert\b", head):
