@@ -507,3 +507,21 @@ solid p {
     r = aidl_lang.compile(source=src.replace("if k in hits", "if len([v for v in hits if v == "
                                                                "k]) > 0"))
     assert r.ok and r.parts[0].holes == 2
+
+
+def test_runs_gg_gn_w0517_of_a_part_whose_whole_outline_fillet_rounds_its_slots():
+    """Run gn's orienteering marker (and gg's rolling-pin rack): `Fillet(4)` of a cap's
+    whole outline also rounded its mortises' ends (W0410 notes), so the faces' square tabs
+    hit them: W0517 "move the part with its `Place`" pointed away from the cause.  The hint
+    now leads with it; followed (`Fillet(body, 4)`), no W0517."""
+    path = RUNS / "issue111gn" / "run" / "05_orienteering_marker.first_valid.aidl"
+    src = path.read_text()
+    r = aidl_lang.compile(source=src, path=str(path))
+    w = [d for d in r.diagnostics if d.code == "W0517"]
+    assert w and all("has `Fillet(4)` of its whole outline" in d.hint
+                     and "`Fillet(body, 4)`; if that is not it:" in d.hint for d in w)
+    fixed = src.replace("    Fillet(4)\n    for k in range(3) {",
+                        "    Fillet(body, 4)\n    for k in range(3) {")
+    assert fixed != src
+    r2 = aidl_lang.compile(source=fixed, path=str(path))
+    assert "W0517" not in _codes(r2)

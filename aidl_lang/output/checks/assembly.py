@@ -47,6 +47,17 @@ def _collision_hint(d: Drawing, c) -> str:
         why = (f"one part runs {c.depth:.3g} mm into the other, more than a slot is ever too "
                "narrow: move the part with its `Place` (its position or the sign of an "
                "offset), or widen the slot if it is one")
+    # a whole-outline Fillet rounds the part's slots and tab roots too (runs gg, gn: tabs
+    # hitting round slot ends, "move the part with its `Place`" pointed away from it)
+    for name in (c.a, c.b):
+        rounded = _whole_fillet(d.part_of.get(name))
+        if rounded is not None:
+            r, body = rounded
+            why = (f"`{name.split('.')[-1]}` has `Fillet({r:g})` of its whole outline, "
+                   f"which rounds its slots' and tabs' corners too (W0410 says where), so "
+                   f"square tabs and slots no longer meet: round the outline's shapes "
+                   f"alone, `Fillet({body}, {r:g})`; if that is not it: {why}")
+            break
     # a part placed `on=` another: its turn is in that part's frame (run fw: ledges placed
     # `on=back` with the turns of the assembly's frame lay flat through the back)
     for name in (c.b, c.a):
@@ -58,6 +69,23 @@ def _collision_hint(d: Drawing, c) -> str:
             break
     return (f"{why}; if they are meant to share material (a press fit, an inlay), "
             f"`AllowOverlap({a}, {b})` in their assembly says so")
+
+
+def _whole_fillet(s) -> tuple | None:
+    """(radius, the outline's shapes as a Fillet names them) of a ``Fillet(r)`` of part
+    ``s``'s whole outline (no ``at``, r > 0) where the part has holes or cut-ins (a slot, a
+    tab's gaps), else None."""
+    if s is None:
+        return None
+    whole = [r for kind, r, at, _ in getattr(s, "finish", []) if kind == "Fillet"
+             and at is None and r > 0]
+    if not whole or not any(c.kind == "hole" for c in s.subtree() if c is not s):
+        return None
+    names = [g.name for g in s.geometry if g.closed and g.name and not g.construction
+             and not g.__dict__.get("copied")]
+    body = names[0] if len(names) == 1 else "[" + ", ".join(names[:4]) + "]" if names \
+        else "SHAPE"
+    return whole[0], body
 
 
 def _thickness_source(d: Drawing, name: str) -> str:
