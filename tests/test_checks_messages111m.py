@@ -525,3 +525,24 @@ def test_runs_gg_gn_w0517_of_a_part_whose_whole_outline_fillet_rounds_its_slots(
     assert fixed != src
     r2 = aidl_lang.compile(source=fixed, path=str(path))
     assert "W0517" not in _codes(r2)
+
+
+def test_runs_go_gj_w0516_is_accepted_by_allowoverlap_with_self():
+    """Run go's aquarium stand: the tank's footprint engraved on the top, its sides on the
+    outer edges of the mortises as asked (the sides' tabs fill them): W0516, and neither the
+    prompt nor `aidl explain` gave a way to say it is meant (run gj asked the same).  The
+    hint gives `AllowOverlap(tank.outline, self)`; written, no W0516 and no W0523."""
+    path = RUNS / "issue111go" / "run" / "04_aquarium_stand.first_valid.aidl"
+    src = path.read_text()
+    r = aidl_lang.compile(source=src, path=str(path))
+    (w,) = [d for d in r.diagnostics if d.code == "W0516"]
+    assert "`AllowOverlap(tank.outline, self)` in `stand.top` says so" in w.hint
+    anchor = """            outline = Rectangle(center=(0, 0), width=tank_w, height=tank_d)
+        }
+"""
+    assert anchor in src
+    fixed = src.replace(anchor, anchor + "        AllowOverlap(tank.outline, self)\n", 1)
+    r2 = aidl_lang.compile(source=fixed, path=str(path))
+    assert "W0516" not in _codes(r2) and "W0523" not in _codes(r2)
+    from aidl_lang.llm.prompt import system_prompt
+    assert "`AllowOverlap(lines, self)`: W0505, W0516" in " ".join(system_prompt().split())

@@ -1126,6 +1126,9 @@ eu's thread lines clipped to a reel's barrel). How much of a mark lies on the ed
 is measured along its length. Letters: a text's strokes (or a font's outlines) within 0.2 mm of the edge
 (letters set tight beside a hole on purpose, farther than that, are not warned); the warning
 gives the gap and how far to move the text. Move the mark inside, or leave it out: the cut already draws the edge.
+A mark meant to meet the edge (ticks meeting at a rim, a footprint on the edge of the mortises
+a panel fills: runs gj, go) is said so by `AllowOverlap(MARK, self)` in the part (a gap
+within the chords' 0.01 mm of 0.5 mm is clear: a mark set 0.5 mm in is not warned).
 
     solid plate {
         body = Rectangle(center=(0, 0), width=60, height=40)

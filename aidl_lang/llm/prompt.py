@@ -133,7 +133,7 @@ W0517/W0518: parts collide, or touch nothing.
 Screw heads: `Countersink(holes, diameter=9 mm)` on the holes (a pattern's copies follow their original), never an engraved ring.
 A warning on a design exactly as requested is accepted in the program, never by changing a
 requested size: `min_wall` (W0507, W0519, W0520), `AllowOverlap(a, b)` (W0501, W0508, W0511,
-W0512, W0517; `AllowOverlap(lines, self)`: W0505; `AllowOverlap(labels)`: W0513; `AllowOverlap(labels, part)`: W0532), `construction=true` (W0506), an `assembly` for separate pieces (W0504).
+W0512, W0517; `AllowOverlap(lines, self)`: W0505, W0516; `AllowOverlap(labels)`: W0513; `AllowOverlap(labels, part)`: W0532), `construction=true` (W0506), an `assembly` for separate pieces (W0504).
 `aidl check` ends
 with `fully constrained` or `N degrees of freedom left`: harmless: "stays where written on its part" (it moves with its part);
 "can slide" needs constraints.

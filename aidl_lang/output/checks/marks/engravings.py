@@ -172,7 +172,11 @@ def _say_over_parts(says: list, sink) -> None:
     coins, five warnings of one ring) is said once, at its closest, naming the others."""
     by: dict = {}
     for s in says:
-        part, group = s[0], s[1]
+        part, group = s[0], [f for f in s[1] if not meant_off(f[0], s[0])]
+        if not group:
+            continue        # `AllowOverlap(mark, self)`: it meets the edge on purpose (runs
+            #                 gj, go: ticks meeting at a rim, a tank's outline on mortises)
+        s = (part, group, *s[2:])
         g = min(group, key=lambda f: f[3])[0]
         key = (g.span, part.span) if g.span is not None and part.span is not None else id(s)
         by.setdefault(key, []).append(s)
@@ -677,7 +681,8 @@ def _say_meets_cut(part, group: list, hole, E0, E1, crossing: set, sink, also: s
             f"needs {CUT_CLEAR} mm clear of the edge)" if across else
             f"the engraving meets the cut (a mark needs {CUT_CLEAR} mm clear of the edge), "
             "so it runs into the edge") + f"{more}{also}", g.span,
-        "note" if across else "warning", hint=fix + "; the cut already draws the edge"))
+        "note" if across else "warning", hint=fix + "; the cut already draws the edge; if "
+        f"it is meant to meet the edge, {_allow_call(g, part)} says so"))
 
 
 def _run(item) -> tuple:
