@@ -221,7 +221,7 @@ def finger_edge(length=100 mm, thickness=3 mm, finger=10 mm, start="tab", rotati
     Fixed(self)
 }
 
-# A tab-and-slot joint, glued (`screw=0`: tabs into closed slots, a mortise, never at an edge) or screwed with captive nuts (T-slots).
+# A tab-and-slot joint: glued (`screw=0`: tabs in closed slots, a mortise, never at an edge) or with captive nuts (T-slots).
 # `part` "tab" cuts the edge of one panel down to `tabs` tabs `tab` wide
 # (`thickness` long, spread evenly over `length`; the panel's edge on the line through
 # (cx, cy), the tabs' tips, the panel below it at rotation 0 (above it: 180 deg): the gaps are cut
