@@ -192,7 +192,7 @@ def test_the_deadline_covers_the_fillets_of_each_loop(monkeypatch):
     structure (and the exact recovery before them) were one step with no look at the
     deadline.  Now each loop's fillets are preceded by one; shown with a slowed fillet."""
     import time as _time
-    from aidl_lang.geometry.derived import corners
+    from aidl_lang.geometry.derived import finishing
     from aidl_lang.base.limits import DEFAULT_BUDGET, Deadline, OutOfBudget
     from aidl_lang.output.part.build.booleans import render_model
     holes = "\n".join(f"    hole h{i} {{ s = Star(center=({i % 10 * 12 - 54}, {i // 10 * 12 - 54}), "
@@ -201,7 +201,7 @@ def test_the_deadline_covers_the_fillets_of_each_loop(monkeypatch):
            f"height=130)\n{holes}\n    Fillet(radius=0.3)\n}}\n")
     res = compile_source(src, "stars.aidl")
     assert res.ok, [d.message for d in res.sink.items]
-    real, calls = corners.corners, []
+    real, calls = finishing.corners, []
 
     def slow(*a, **k):
         calls.append(1)
@@ -209,7 +209,7 @@ def test_the_deadline_covers_the_fillets_of_each_loop(monkeypatch):
         while _time.process_time() < end:
             pass
         return real(*a, **k)
-    monkeypatch.setattr(corners, "corners", slow)
+    monkeypatch.setattr(finishing, "corners", slow)
     with pytest.raises(OutOfBudget) as e:
         render_model(res.model, Deadline(budget_clock() + 1.0, DEFAULT_BUDGET))
     assert e.value.stage == "the booleans" and e.value.where.path == "plate"

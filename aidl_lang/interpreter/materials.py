@@ -11,7 +11,10 @@ cause.  A joint template (a ``hole`` or ``cut``: ``tab_and_slot``, ``finger_edge
 partner's thickness and is not judged."""
 from __future__ import annotations
 
-from ..geometry.core.values import LEN, Q
+from .. import ast as A
+from ..base.diagnostics import EvalError
+from ..base.limits import MIN_WALL_LEAST, min_wall_problem
+from ..geometry.core.values import LEN, NUM, Q
 
 TOLERANCE = 1e-6            # mm
 
@@ -92,3 +95,32 @@ def thickness_mismatch(model, sink) -> None:
         else:
             hint = f"write `thickness {value:g} mm` at the top of the file: the material"
         sink.warning("W0118", msg, span, hint)
+
+
+def material_statement(ip, st) -> None:
+    """``thickness LENGTH`` (and ``kerf LENGTH``, ``min_wall LENGTH``) run by interpreter
+    ``ip``: the model's default (top level) or a structure's own, in mm; ``min_wall`` may be 0
+    (its checks off).  E0109 for a value that is no positive length known before solving."""
+    word, eg = ("kerf", "kerf 0.15 mm") if isinstance(st, A.KerfDecl) else \
+        ("min_wall", "min_wall 0.3 mm") if isinstance(st, A.MinWallDecl) else \
+        ("thickness", "thickness 3 mm")
+    v = ip.eval(st.value)
+    if not isinstance(v, Q) or v.dim not in (LEN, NUM):
+        raise EvalError("E0109", f"`{word}` expects a length", st.value.span,
+                        hint=f"write it with a unit: `{eg}`")
+    val = Q(ip._as_length(v, st.value.span), LEN).const()
+    if word in ("min_wall", "kerf") and val is not None and val == 0:
+        pass                # `min_wall 0`: the wall checks off; `kerf 0 mm`: not offset
+    elif word == "min_wall" and val is not None and min_wall_problem(val) is not None:
+        raise EvalError("E0109", f"`min_wall` {min_wall_problem(val)}", st.value.span,
+                        hint=f"write `min_wall 0` for no wall checks, or a length from "
+                             f"{MIN_WALL_LEAST:g} mm: `{eg}`")
+    elif val is None or not val > 0:
+        raise EvalError("E0109", f"`{word}` must be a " + (
+            "positive length (or 0: no minimum)" if word == "min_wall" else
+            "positive length (or 0: not offset)" if word == "kerf" else
+            "positive length") + " known before solving", st.value.span,
+            hint=f"use a number or a param: `{eg}`")
+    setattr(ip.model if ip.struct is None else ip.struct, word, val)
+    if word == "min_wall" and ip.struct is not None:
+        ip.struct.min_wall_span = st.span      # where it is: W0101 where it does nothing

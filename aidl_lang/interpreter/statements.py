@@ -14,10 +14,10 @@ from ..geometry.core.model import Constraint, Equation, Model, Structure
 from ..geometry.relations.members import member as geom_member
 from ..geometry.core.expr import Lin, _new
 from ..geometry.core.values import (ANG, LEN, NUM, dim_name, PV, Function, GeomRef, Namespace, Q, StructRef, Template, UnitError, angle_scale, owners_of, type_name, unify_add)
-from ..base.limits import MAX_TEMPLATE_DEPTH, MIN_WALL_LEAST, min_wall_problem
+from ..base.limits import MAX_TEMPLATE_DEPTH
 from ..registry import CONSTANTS, UNITS_LENGTH, template_param
 from ..library.sources import ImportRefused, read_import, resolve_import
-from .materials import note_material
+from .materials import material_statement, note_material
 from .arguments import check_kinds, kind_error, precheck_asserts
 from .asserts import Asserts
 from .constants import early_constants, late_constant
@@ -457,7 +457,7 @@ class Statements(Asserts):
         elif t is A.KindAssign:
             self._assign(st)
         elif isinstance(st, A.ThicknessDecl):
-            self._thickness(st)
+            material_statement(self, st)
         elif t is A.Assert:
             self._assert(st)
         elif isinstance(st, A.For):
@@ -476,33 +476,6 @@ class Statements(Asserts):
             what = {A.ParamDecl: "param", A.Import: "import", A.UnitsDecl: "units"}[type(st)]
             raise EvalError("E0116", f"`{what}` is only allowed at the top level of a file", st.span,
                             hint=f"move the `{what}` line to the top of the file")
-
-    def _thickness(self, st) -> None:
-        """``thickness LENGTH`` (and ``kerf LENGTH``, ``min_wall LENGTH``): the model's default
-        (top level) or a structure's own, in mm; ``min_wall`` may be 0 (its checks off)."""
-        word, eg = ("kerf", "kerf 0.15 mm") if isinstance(st, A.KerfDecl) else \
-            ("min_wall", "min_wall 0.3 mm") if isinstance(st, A.MinWallDecl) else \
-            ("thickness", "thickness 3 mm")
-        v = self.eval(st.value)
-        if not isinstance(v, Q) or v.dim not in (LEN, NUM):
-            raise EvalError("E0109", f"`{word}` expects a length", st.value.span,
-                            hint=f"write it with a unit: `{eg}`")
-        val = Q(self._as_length(v, st.value.span), LEN).const()
-        if word in ("min_wall", "kerf") and val is not None and val == 0:
-            pass                # `min_wall 0`: the wall checks off; `kerf 0 mm`: not offset
-        elif word == "min_wall" and val is not None and min_wall_problem(val) is not None:
-            raise EvalError("E0109", f"`min_wall` {min_wall_problem(val)}", st.value.span,
-                            hint=f"write `min_wall 0` for no wall checks, or a length from "
-                                 f"{MIN_WALL_LEAST:g} mm: `{eg}`")
-        elif val is None or not val > 0:
-            raise EvalError("E0109", f"`{word}` must be a " + (
-                "positive length (or 0: no minimum)" if word == "min_wall" else
-                "positive length (or 0: not offset)" if word == "kerf" else
-                "positive length") + " known before solving", st.value.span,
-                hint=f"use a number or a param: `{eg}`")
-        setattr(self.model if self.struct is None else self.struct, word, val)
-        if word == "min_wall" and self.struct is not None:
-            self.struct.min_wall_span = st.span      # where it is: W0101 where it does nothing
 
     def _need_struct(self, span) -> Structure:
         if self.struct is None:

@@ -246,22 +246,7 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
             # it stands in an opening of the part it comes nearest, or that part in one of
             # it (run ds: butter spreaders loose in 7 mm slots of a 5 mm stand, "move it
             # 0.58 mm" for the play; run dx: a cross-staff's transom on its staff)
-            what = (f"it passes through an opening of `{g.nearest}`, which holds it" if through
-                    else f"`{g.nearest}` passes through an opening of it, which holds it")
-            said = ("note", f"assembled, part `{g.part}` touches no other part (the nearest, "
-                    f"`{g.nearest}`, is {g.gap:.3g} mm away): {what} with that play",
-                    f"standing loose in the opening is as drawn: nothing is needed; for a snug "
-                    f"fit, narrow the opening by the play or move `{short}` with its `Place`")
-            if through and loose.drops(g.part, g.nearest):
-                # run gb: a sit-and-reach box's pusher, 6 mm ply on edge in a 6.5 mm slot of
-                # the top with nothing under it ("holds it with that play": it falls through)
-                said = ("warning", f"assembled, part `{g.part}` touches no other part (the "
-                        f"nearest, `{g.nearest}`, is {g.gap:.3g} mm away): it passes through "
-                        f"an opening of `{g.nearest}` and fits through it whole seen from "
-                        f"above, so nothing holds it up: it drops through",
-                        f"rest it on something: a shoulder wider than the opening (a tab each "
-                        f"side that stands on `{g.nearest.split('.')[-1]}`), a part under "
-                        f"it, or move `{short}` with its `Place` onto one")
+            said = _in_opening(g, short, through, through and loose.drops(g.part, g.nearest))
         elif (inner := loose.enclosed(g.part, g.nearest)) or \
                 loose.enclosed(g.nearest, g.part):
             what = f"it lies inside `{g.nearest}`" if inner else f"`{g.nearest}` lies inside it"
@@ -291,6 +276,28 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
         groups.setdefault((span, said[0], g.part if span is None else ""), []).append(
             (g, *said[1:]))
     _say_floating(groups, sink)
+
+
+def _in_opening(g, short: str, through: bool, drops: bool) -> tuple:
+    """W0518's (severity, message, hint) for part ``g.part`` that stands in an opening of
+    the part it comes nearest (``through``), or that part in one of it: a note, the opening
+    holds it with that play; a warning where it fits through the opening seen from above,
+    off the floor (``drops``: run gb's sit-and-reach pusher, 6 mm ply on edge in a 6.5 mm
+    slot of the top with nothing under it, was "held with that play")."""
+    if drops:
+        return ("warning", f"assembled, part `{g.part}` touches no other part (the nearest, "
+                f"`{g.nearest}`, is {g.gap:.3g} mm away): it passes through an opening of "
+                f"`{g.nearest}` and fits through it whole seen from above, so nothing holds "
+                f"it up: it drops through",
+                f"rest it on something: a shoulder wider than the opening (a tab each side "
+                f"that stands on `{g.nearest.split('.')[-1]}`), a part under it, or move "
+                f"`{short}` with its `Place` onto one")
+    what = (f"it passes through an opening of `{g.nearest}`, which holds it" if through
+            else f"`{g.nearest}` passes through an opening of it, which holds it")
+    return ("note", f"assembled, part `{g.part}` touches no other part (the nearest, "
+            f"`{g.nearest}`, is {g.gap:.3g} mm away): {what} with that play",
+            f"standing loose in the opening is as drawn: nothing is needed; for a snug fit, "
+            f"narrow the opening by the play or move `{short}` with its `Place`")
 
 
 def _with_origin(d: Drawing, g, said: tuple, templates) -> tuple:

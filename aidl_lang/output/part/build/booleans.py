@@ -24,7 +24,8 @@ import numpy as np
 
 from ....geometry.shapes.curves import Arc, Circle, EllipticArc, Line, Loop, Spline, carrier, reverse
 from ....geometry.core.model import Geometry, Model, Structure
-from ....geometry.derived.corners import SplineCorner, finish
+from ....geometry.derived.corners import SplineCorner
+from ....geometry.derived.finishing import finish
 from ....geometry.shapes.tessellate import CHORD_TOL
 from ....geometry.shapes.text import text_strokes
 from ....base.limits import DEFAULT_BUDGET, Deadline, OutOfBudget, seconds_as_work
