@@ -18,6 +18,7 @@ from ...geometry.relations.bbox import (SIDES, BBTerm, collect, drawn_box_misses
                                         numeric_box, side_expr)
 from ...geometry.core.expr import Nl, const, evaluate, rebuild
 from ...geometry.core.model import Model, Structure
+from ...geometry.shapes.tessellate import CHORD_TOL
 from ..part.build.booleans import Drawing
 from .common import _part_of
 
@@ -132,9 +133,12 @@ def check_final_box_asserts(sink: DiagnosticSink, model: Model, d: Drawing,
                 mat = numeric_box(own, None, x, exclude={
                     c for c in own.children.values() if c.kind in ("hole", "cut")})
                 fin = final_box(d, own)
+                # (a side within the chords' sag of the drawn box is where it was drawn:
+                # run gq's mouse template, an ellipse's top read 0.0000114 mm off, "its
+                # top 0.000 mm in", W0405 on an assert that holds)
                 moved[id(g)] = {} if box is None or mat is None or fin is None else {
                     sd: fin[i] - box[i] for i, sd in enumerate(SIDES)
-                    if abs(box[i] - mat[i]) <= BOX_TOL}
+                    if abs(box[i] - mat[i]) <= BOX_TOL and abs(fin[i] - box[i]) > CHORD_TOL}
             else:
                 moved[id(g)] = {} if box is None else {
                     sd: v for sd, v in moved[id(own)].items()
