@@ -269,6 +269,16 @@ solid q {
 """)
     (part,) = r.parts
     assert part.area == pytest.approx(18 * 8, rel=1e-12)
+    # the centre of an inset of several shapes is its box's, not the first shape's (it was
+    # `a.center`, (-10, 0), where the union is symmetric about x = 0)
+    r = aidl_lang.compile(source="""solid p {
+    a = Circle(center=(-10, 0), radius=12)
+    b = Circle(center=(10, 0), radius=12)
+    c = Inset([a, b], 1)
+    assert c.center.x == 0 mm and c.center.y == 0 mm
+}
+""")
+    assert r.ok and not [d for d in r.diagnostics if d.is_error], r.diagnostics
     bad = aidl_lang.compile(source="solid p {\n    c = Inset([], 1)\n}\n")
     (e,) = [d for d in bad.diagnostics if d.is_error]
     assert "empty list" in e.message

@@ -304,9 +304,9 @@ class Expressions:
                 name = e.obj.obj.id if isinstance(e.obj.obj, A.Name) else "cells"
                 hint = ("a pattern's list is flat, one copy an item: a GridPattern's is row by "
                         f"row, copy (r, c) is `{name}[r * cols + c]`")
-            elif isinstance(e.obj, A.Name) and self._this_pass(e.obj.id) is not None:
+            elif isinstance(e.obj, A.Name) and (var := self._this_pass(e.obj.id)) is not None:
                 # run ga: `RightOf(p[i], p[i - 1])` in the loop that makes `p = peg()`
-                n, var = e.obj.id, self._this_pass(e.obj.id)
+                n = e.obj.id
                 hint = (f"inside the loop that makes it, `{n}` is this pass's one (a list only "
                         f"after the loop): write `{n}` for it; to relate each to the one "
                         f"before, write a second loop after this one: `for {var} in "

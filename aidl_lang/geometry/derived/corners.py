@@ -248,6 +248,16 @@ def shapes_meet(pts, curve, names, loops) -> tuple[list, str | None]:
                 f"outlines do not cross there, or one lies inside the other)")
 
 
+def outline_shapes(s) -> str | None:
+    """Structure ``s``'s own outline shapes as a ``Fillet`` names them (`body`, or
+    `[a, b]` up to four), None when it has none or more than four: what a hint to round
+    the outline alone writes (W0410, W0517)."""
+    names = [g.name for g in s.geometry if g.closed and g.name
+             and not g.construction and not g.__dict__.get("copied")]
+    return (None if not names else names[0] if len(names) == 1 else
+            "[" + ", ".join(names[:4]) + "]" if len(names) <= 4 else None)
+
+
 def _narrow_notches(lp, r: float) -> list:
     """The bottoms of notches cut into an outer outline ``lp`` narrower than two fillet radii
     ``r``: a straight piece between two inside corners, shorter than ``2 r`` (a 3 mm cable

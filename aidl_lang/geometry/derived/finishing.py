@@ -8,7 +8,7 @@ import math
 from typing import TYPE_CHECKING
 
 from .corners import (CORNER_TOL, SHRUNK, _narrow_holes, _narrow_notches, _tip_back, corners,
-                      report)
+                      outline_shapes, report)
 
 if TYPE_CHECKING:
     from ..core.model import Structure
@@ -19,7 +19,7 @@ def finish(s: Structure, loops: list, x=None, check=None, said=None) -> list:
     ``loops`` (:class:`~.curves.Loop`, outer loops counter-clockwise and holes clockwise);
     ``x`` (the solved unknowns) places corners chosen with ``at``.  Consecutive ``Fillet``s
     of chosen corners, none choosing a corner an earlier one of them chose, are one pass
-    (:func:`_batches`): a fillet adds no corner, so their order cannot matter, and each
+    (:func:`_batch`): a fillet adds no corner, so their order cannot matter, and each
     corner takes at most half of the pieces beside it as first drawn, as one call of all of
     them would (run ft: ``Fillet([body.top, notches.u[i]], 3)`` once per loop pass left each
     flat 5 mm for the next and capped R3 at 2.5 mm nine times; the list in one call got R3).
@@ -73,12 +73,7 @@ def finish(s: Structure, loops: list, x=None, check=None, said=None) -> list:
                 call = batch[0 if sizes is None else owner[j][0]][3]
                 said.append(_tip_back(call, n, (p[0] - off[0], p[1] - off[1]), *rest))
             if narrow:
-                call = batch[0][3]
-                names = [g.name for g in s.geometry if g.closed and g.name
-                         and not g.construction and not g.__dict__.get("copied")]
-                body = (None if not names else names[0] if len(names) == 1 else
-                        "[" + ", ".join(names[:4]) + "]" if len(names) <= 4 else None)
-                said += _narrow_holes(kind, r, call, narrow, body)
+                said += _narrow_holes(kind, r, batch[0][3], narrow, outline_shapes(s))
         loops = done
     return loops
 

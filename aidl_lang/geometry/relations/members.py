@@ -56,8 +56,9 @@ def _sizes(g: Geometry, name: str, own, frame):
     to a side's middle), mm, from its radius (center to a vertex) and its number of sides:
     the sizes its other forms take (issue 111, run ck: `hex.side` was E0102)."""
     if g.kind != "RegularPolygon":
-        src = (g.data.get("sources") or [None])[0]
-        return member(src, name, frame) if src is not None else None
+        srcs = g.data.get("sources") or []
+        # (of several shapes, `Inset([a, b], d)`, none is its shape: its box's centre)
+        return member(srcs[0], name, frame) if len(srcs) == 1 else None
     half = math.pi / len(points_of(g))
     f = {"side": 2 * math.sin(half), "across_flats": 2 * math.cos(half),
          "apothem": math.cos(half)}[name]

@@ -48,12 +48,12 @@ def _join(a) -> str:
 
 
 def _flat(v) -> list:
-    """``v`` as a flat list of items (a list of lists flattened; one item: a list of it)."""
+    """``v`` as a flat list of items (lists and tuples in it spread out; one item: a list of
+    it): the shapes an ``Offset`` or an ``Intersect`` is given."""
     out, stack = [], [v]
     while stack:
         x = stack.pop(0)
-        if isinstance(x, (list, tuple)) and not (isinstance(x, tuple) and len(x) == 2
-                                                 and not isinstance(x[0], GeomRef)):
+        if isinstance(x, (list, tuple)):
             stack[0:0] = list(x)
         else:
             out.append(x)
@@ -118,14 +118,7 @@ def _build_Intersect(ctx, g, a):
     clip: ``g.data["clip"]``, the open sources, drawn as lines).  Lists are flattened."""
     raw = a["shapes"] if "shapes" in a else \
         [a[f"shape{i}"] for i in range(1, 7) if a.get(f"shape{i}") is not None]
-    items: list = []
-    stack = list(raw) if isinstance(raw, (list, tuple)) else [raw]
-    while stack:
-        v = stack.pop(0)
-        if isinstance(v, (list, tuple)):
-            stack[0:0] = list(v)
-        else:
-            items.append(v)
+    items = _flat(raw)
     closed, open_ = [], []
     for v in items:
         if not isinstance(v, GeomRef):

@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 
 from ...base.diagnostics import Diagnostic, DiagnosticSink, Label
+from ...geometry.derived.corners import outline_shapes
 from ..part.build.booleans import Drawing
 
 # mm: a part with no Place this far or farther from every other part lies away from the
@@ -81,11 +82,7 @@ def _whole_fillet(s) -> tuple | None:
              and at is None and r > 0]
     if not whole or not any(c.kind == "hole" for c in s.subtree() if c is not s):
         return None
-    names = [g.name for g in s.geometry if g.closed and g.name and not g.construction
-             and not g.__dict__.get("copied")]
-    body = names[0] if len(names) == 1 else "[" + ", ".join(names[:4]) + "]" if names \
-        else "SHAPE"
-    return whole[0], body
+    return whole[0], outline_shapes(s) or "SHAPE"
 
 
 def _thickness_source(d: Drawing, name: str) -> str:
