@@ -259,7 +259,8 @@ def describe(a: Assertion, found: list, alternatives: int = 1, x=None, owners=No
             if not a.text.strip() == text]
     where = f" (where {', '.join(said)})" if said else ""
     return (f"assertion failed: `{a.text}`{why}: {lead}" + "; ".join(parts) + where
-            + _drawn_boxes(a, x) + _text_boxes(a, x) + _star_boxes(a, x) + _slot_lengths(a, x)
+            + _drawn_boxes(a, x) + _text_boxes(a, x) + _star_boxes(a, x) + _spline_boxes(a, x)
+            + _slot_lengths(a, x)
             + _moved_part(a, x, owners) + _moved_within(a, x, model)
             + _placed_note(a, sheet, owners))
 
@@ -279,6 +280,18 @@ def _relative(label: str, owner) -> str:
     """``label`` as written from inside ``owner`` (``star.s`` of ``lid.star.s`` in ``lid``)."""
     path = getattr(owner, "path", None)
     return label[len(path) + 1:] if path and label.startswith(path + ".") else label
+
+
+def _as_written(label: str, a: Assertion) -> str:
+    """``label`` (a full path, ``lid.star.s``) as the assertion writes it: its shortest tail
+    that the text names (``star.s``), else as written from inside ``a.owner``."""
+    import re
+    parts = label.split(".")
+    for k in range(len(parts) - 1, -1, -1):
+        tail = ".".join(parts[k:])
+        if re.search(r"(?<![\w.])" + re.escape(tail) + r"(?![\w])", a.text):
+            return tail
+    return _relative(label, a.owner)
 
 
 def _slot_lengths(a: Assertion, x) -> str:
@@ -339,6 +352,58 @@ def _star_boxes(a: Assertion, x) -> str:
         out.append(f"`{name}.bb` is the star's box, {w / a.scale:.6g} x {h / a.scale:.6g} "
                    f"{a.unit}; the circle through its tips{tips} is {d / a.scale:.6g} {a.unit} "
                    f"across (`2 * {_relative(g.label, a.owner)}.outer_radius`)")
+    return "".join(f"; {o}" for o in out)
+
+
+def _spline_boxes(a: Assertion, x) -> str:
+    """Where a Spline's box, which the assertion reads, bulges past its points (issue 111,
+    runs gr and gs: `head.profile.bb.right - head.neck.bb.left == 200 mm` failed at 200.075
+    mm, the closed curve swelling past its nose point): "; `head.profile.bb` is the curve's
+    box, 0.0752 mm past its rightmost point `head.profile.points[5]` (a spline swells
+    between its points): assert on the points", or "" where the sides read are its points'.  A structure read whose one closed shape is a Spline is
+    said the same way."""
+    if x is None:
+        return ""
+    from ..core.model import Structure
+    from .bbox import numeric_box
+    from .members import _pv, points_of
+    read: dict = {}                            # id(target) -> (a term, the sides read)
+    for t in _box_terms(a):
+        read.setdefault(id(t.target), (t, set()))[1].add(t.side)
+    out = []
+    for t, sides_read in read.values():
+        g = t.target
+        if isinstance(g, Structure):
+            shapes = [h for st in g.subtree() for h in st.geometry
+                      if h.closed and not h.construction]
+            g = shapes[0] if len(shapes) == 1 else None
+        if getattr(g, "kind", None) != "Spline":
+            continue
+        try:
+            box = numeric_box(t.target, t.frame, x)
+            pts = [_pv(p, t.frame) for p in points_of(g)]
+            px = [evaluate(p.x, x) for p in pts]
+            py = [evaluate(p.y, x) for p in pts]
+        except (ArithmeticError, KeyError, TypeError, ValueError, AttributeError):
+            continue
+        if box is None or not px:
+            continue
+        most = {"right": max(range(len(px)), key=px.__getitem__),
+                "left": min(range(len(px)), key=px.__getitem__),
+                "top": max(range(len(py)), key=py.__getitem__),
+                "bottom": min(range(len(py)), key=py.__getitem__)}
+        past = [(box[1] - px[most["right"]], "right"), (px[most["left"]] - box[0], "left"),
+                (box[3] - py[most["top"]], "top"), (py[most["bottom"]] - box[2], "bottom")]
+        past = [(d, side) for d, side in past if d > TOL and side in sides_read]
+        if not past:
+            continue
+        name = _as_written(t.target.path if isinstance(t.target, Structure) else g.label, a)
+        pts_name = (name + g.label[len(t.target.path):] if isinstance(t.target, Structure)
+                    and g.label.startswith(t.target.path + ".") else _as_written(g.label, a))
+        sides = ", ".join(f"{d / a.scale:.6g} {a.unit} past its {side}most point "
+                          f"`{pts_name}.points[{most[side]}]`" for d, side in past)
+        out.append(f"`{name}.bb` is the curve's box, {sides} (a spline swells between its "
+                   f"points): assert on the points")
     return "".join(f"; {o}" for o in out)
 
 

@@ -1,0 +1,57 @@
+"""Issue 111's round eighteen: what models reach for in the tree of the twenty-second session.
+
+E0405 of an assert that reads a Spline's box names the point it swells past (runs gr and gs:
+`head.profile.bb.right - head.neck.bb.left == 200 mm` failed at 200.075 mm, the design right,
+the assert reading the curve's box where its nose point was meant)."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import aidl_lang
+
+ROOT = Path(__file__).resolve().parent.parent
+RUNS = ROOT / "data" / "model_runs"
+
+
+def _codes(r):
+    return sorted(d.code for d in r.diagnostics)
+
+
+def _said(r, code):
+    return [d for d in r.diagnostics if d.code == code]
+
+
+def test_run_gs_e0405_of_a_spline_box_names_the_point_it_swells_past():
+    path = RUNS / "issue111gs" / "drafts" / "08_deer_head_trophy.attempt1.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    [e] = _said(r, "E0405")
+    assert "200.075 mm == 200 mm is false" in e.message
+    assert ("`head.profile.bb` is the curve's box, 0.0751928 mm past its rightmost point "
+            "`head.profile.points[5]` (a spline swells between its points): assert on the "
+            "points") in e.message
+    # the model's fix, the point it names: valid
+    fixed = path.read_text().replace("head.profile.bb.right - head.neck.bb.left",
+                                     "head.profile.points[5].x - head.neck.bb.left")
+    assert aidl_lang.compile(source=fixed, path=str(path)).ok
+
+
+SPLINE = """solid head {
+    profile = Spline([(0 mm, 0 mm), (60 mm, 30 mm), (100 mm, 10 mm), (60 mm, -20 mm)],
+                     closed=true)
+}
+"""
+
+
+def test_e0405_of_a_spline_box_says_only_the_sides_read():
+    r = aidl_lang.compile(source=SPLINE + "assert head.bb.height == 50 mm\n"
+                          "assert head.profile.bb.left == 0 mm\n")
+    e1, e2 = _said(r, "E0405")
+    assert "past its topmost point `head.profile.points[1]`" in e1.message
+    assert "past its bottommost point `head.profile.points[3]`" in e1.message
+    assert "rightmost" not in e1.message and "leftmost" not in e1.message
+    assert "past its leftmost point `head.profile.points[0]`" in e2.message
+    # a side the curve does not pass (symmetric about y = 0: its nose point is its right)
+    sym = SPLINE.replace("(60 mm, 30 mm), (100 mm, 10 mm)", "(60 mm, 20 mm), (100 mm, 0 mm)")
+    r = aidl_lang.compile(source=sym + "assert head.profile.bb.right == 101 mm\n")
+    [e] = _said(r, "E0405")
+    assert "100 mm == 101 mm is false" in e.message and "spline" not in e.message
