@@ -201,8 +201,9 @@ def fit(bodies, deadline=None, normals: dict | None = None,
             box = tuple(float(v) for v in np.concatenate([pieces[:, :3].min(axis=0),
                                                           pieces[:, 3:].max(axis=0)]))
             depth, into_face = _depth(common, normals.get(na), normals.get(nb), box)
-            depth = _capped(depth, max(_thinnest(m) for m in solids),
-                            _parallel(normals.get(na), normals.get(nb)))
+            parallel = _parallel(normals.get(na), normals.get(nb))
+            depth = _capped(depth, max(_thinnest(m, normals.get(na), normals.get(nb))
+                                        for m in solids), parallel)
             if depth > DEPTH_TOL:
                 places = tuple(tuple(float(v) for v in q) for q in pieces) \
                     if len(pieces) > 1 else ()
@@ -372,9 +373,37 @@ def _parallel(na, nb) -> bool:
                 < 1e-9)
 
 
-def _thinnest(piece) -> float:
+def _thinnest(piece, na=None, nb=None) -> float:
     """A piece of a common volume: its thickness where thinnest (mm), the least of its
     extents across each face of its convex hull (an upper bound of its least width; 0 for a
+    flat piece).  Where faces of the two plates lie on each other, the common volume keeps
+    a sheet of no thickness that can stretch a sliver's piece far past it (run gm's garage:
+    a roof tab's end 0.964 mm past its slot, with sheets along the roof's underside and the
+    slot's side: a hull 9 mm across every way); such sheets lie across a plate's normal
+    ``na``, ``nb`` or the line where the plates meet, so the piece is first cut to what a
+    copy moved :data:`SHEET` each way along those keeps (the sheets go, the slivers stay,
+    2 SHEET thinner) and each sliver measured on its own: the thickest of them."""
+    whole = _hull_width(piece)
+    if na is None or nb is None or _parallel(na, nb):
+        return whole
+    d = np.cross(na, nb)
+    kept = piece
+    for n in (np.asarray(na, float), np.asarray(nb, float), d / np.linalg.norm(d)):
+        for sign in (1.0, -1.0):
+            kept = kept ^ piece.translate(tuple(sign * SHEET * n))
+    slivers = [m for m in kept.decompose() if m.volume() > VOLUME_TOL]
+    if not slivers:
+        return whole
+    return min(whole, max(_hull_width(m) for m in slivers) + 2 * SHEET)
+
+
+# how far a copy of a common piece is moved each way to cut the sheets of no thickness
+# from it (:func:`_thinnest`), mm
+SHEET = 1e-4
+
+
+def _hull_width(piece) -> float:
+    """The least of ``piece``'s extents across each face of its convex hull (mm; 0 for a
     flat piece)."""
     from scipy.spatial import ConvexHull, QhullError
     v = np.asarray(piece.to_mesh().vert_properties, dtype=float)[:, :3]
