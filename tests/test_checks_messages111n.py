@@ -77,3 +77,19 @@ def test_run_gm_w0517_of_tabs_off_their_slots_along_a_slope_says_how_far():
         path = RUNS / run / name
         said = _said(aidl_lang.compile(source=path.read_text(), path=str(path)), "W0517")
         assert len(said) == 2 and all(f"{deep} deep" in d.message for d in said), run
+
+
+def test_run_gn_a_scales_zero_tick_at_an_inside_corner_is_a_tick():
+    # a depth scale's 16 ticks end square on the fence's inner edge; the zero tick ends where
+    # that edge meets the body's bottom edge, in line with the body's: square to one edge it
+    # ends on, so one of the scale (W0516 x2 "ends on the cut edge", the model's false alarm)
+    path = RUNS / "issue111gn" / "run" / "01_scratch_stock.first_valid.aidl"
+    src = path.read_text()
+    assert "tick = Line((hand * (40 - (5 if d % 5 == 0 else 3)), 20 - d), (hand * 40, 20 - d))" in src
+    r = aidl_lang.compile(source=src, path=str(path))
+    assert r.ok and "W0516" not in _codes(r)
+    # a mark running into that corner at a slant is still warned
+    slant = src.replace("(hand * 40, 20 - d))", "(hand * 40, 20 - d))\n"
+                        "            slash = Line((hand * 36, 17), (hand * 40, 20))", 1)
+    said = _said(aidl_lang.compile(source=slant, path=str(path)), "W0516")
+    assert said and all("slash" in d.message for d in said)

@@ -566,9 +566,16 @@ def _check_meets_cut(part, shape, geoms, loops, sink: list) -> None:
         tick = False
         line = len(items) == 1 and items[0][0] == "line"
         if line and end is not None and gap <= ENGRAVE_TOL:
-            u, w = np.asarray(items[0][2], float) - items[0][1], E1[ej] - E0[ej]
-            nu, nw = float(np.hypot(*u)), float(np.hypot(*w))
-            tick = nu > 0 and nw > 0 and abs(float(u @ w)) / (nu * nw) <= math.sin(SQUARE)
+            # square to an edge it ends on: at an inside corner, to either (run gn's scratch
+            # stock: a depth scale's zero tick ending where the fence's edge meets the body's,
+            # in line with the body's)
+            e = near_edges[c]
+            at = np.repeat(np.asarray(end, float)[None, :], len(e), axis=0)
+            on = e[_pair_gap(at, at, E0[e], E1[e])[0] <= ENGRAVE_TOL]
+            u, w = np.asarray(items[0][2], float) - items[0][1], E1[on] - E0[on]
+            nu, nw = float(np.hypot(*u)), np.hypot(w[:, 0], w[:, 1])
+            square = (nw > 0) & (np.abs(w @ u) <= math.sin(SQUARE) * nu * nw)
+            tick = nu > 0 and bool(square.any())
         found.append((g, items, near_edges[c], gap, ej, pm, end, line, tick))
         if end is None and across[a:z].any():
             crossing.add(id(g))             # it runs across the edge: part of it is off
