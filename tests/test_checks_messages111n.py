@@ -93,3 +93,22 @@ def test_run_gn_a_scales_zero_tick_at_an_inside_corner_is_a_tick():
                         "            slash = Line((hand * 36, 17), (hand * 40, 20))", 1)
     said = _said(aidl_lang.compile(source=slant, path=str(path)), "W0516")
     assert said and all("slash" in d.message for d in said)
+
+
+def test_run_gx_a_length_floor_divided_in_range_gets_the_count_in_its_own_words():
+    # `range(slot_len // 10 + 1)`: 31 mm, a length; W0106's "replace with `/`" beside E0108
+    # would not make it a count: E0108 alone, with the program's own fix
+    path = RUNS / "issue111gx" / "drafts" / "01_stair_gauge.attempt1.aidl"
+    src = path.read_text()
+    r = aidl_lang.compile(source=src, path=str(path))
+    assert "W0106" not in _codes(r)
+    e1, e2 = _said(r, "E0108")
+    assert e1.hint.endswith("`range(slot_len // 10 mm + 1)`")
+    assert e2.hint.endswith("`range(slot_len // 50 mm + 1)`")
+    fixed = src.replace("slot_len // 10 + 1", "slot_len // 10 mm + 1").replace(
+        "slot_len // 50 + 1", "slot_len // 50 mm + 1")
+    assert aidl_lang.compile(source=fixed, path=str(path)).ok
+    # W0106 still where `//` makes a length: `width=80 // 3`
+    r = aidl_lang.compile(source="solid s {\n    r = Rectangle(center=(0, 0), "
+                          "width=80 mm // 3, height=10)\n}\n")
+    assert "W0106" in _codes(r)

@@ -628,6 +628,13 @@ class Calls:
         elif node.kwargs:
             raise EvalError("E0105", f"`{nm}` takes no keyword arguments" + (
                 " but `about=`" if nm == "mirror" else ""), node.kwargs[0].span)
+        if nm == "range":
+            # a count made by `//` in range() is E0108's if it is a length, with the fix in
+            # the program's own words; W0106's "write `/`" would not make it a count (run gx)
+            for a in node.args:
+                for d in _divisions(a):
+                    if d.op == "//":
+                        self.reported.add(("W0106", d.span))
         args = [self.eval(a) for a in node.args]
         if nm == "mirror":
             return self._mirror(args[0], kw.get("about", args[1] if len(args) > 1 else "y"),
@@ -637,7 +644,7 @@ class Calls:
                             f"argument{'s' if hi > 1 else ''}, got {len(args)}", node.span)
         sp = node.span
         if nm == "range":
-            ns = [self._int(a, sp) for a in args]
+            ns = [self._int(a, sp, e) for a, e in zip(args, node.args)]
             r = range(*ns)
             if len(r) > self.budget.items:
                 raise EvalError("E0301", f"range of {len(r)} items exceeds the limit of "
@@ -836,7 +843,9 @@ class Calls:
             return v
         raise EvalError("E0108", f"expected a number, got {type_name(v)}", sp)
 
-    def _int(self, v, sp) -> int:
+    def _int(self, v, sp, arg=None) -> int:
+        """``v``, an argument of ``range()`` (written ``arg``), as a whole number; E0108 for
+        a length, an angle or a fraction."""
         q = self._q(v, sp)
         c = q.const()
         if c is None or q.dim != NUM:
@@ -852,6 +861,15 @@ class Calls:
                     "pitch`, both with units, or both bare) and round it (`floor(...)`)"
                     if q.dim != NUM else "a count must be known before solving: compute it "
                     "from numbers and params, not from a shape's solved size")
+            bare = [d for d in _divisions(arg) if isinstance(d.right, A.Num)
+                    and d.right.unit is None] if q.dim == LEN and c is not None else []
+            if bare:
+                # `range(slot_len // 10 + 1)`: the divisor a length too (run gx)
+                src, d = self.sink.sources.get(arg.span.file, ""), bare[0]
+                a0, r1 = arg.span.start, d.right.span.end
+                hint = (f"a count is a plain number: divide the length by a length, "
+                        f"`range({src[a0:r1]} mm{src[r1:arg.span.end]})`"
+                        + ("" if d.op == "//" else " rounded (`floor(...)`)"))
             raise EvalError("E0108", f"range() needs plain whole numbers, got {got}", sp,
                             hint=hint)
         if abs(c - round(c)) > 1e-9:
@@ -905,3 +923,16 @@ class Calls:
 def _nonfinite(c: float) -> str:
     return "not a number (NaN)" if c != c else "infinite"
 
+
+def _divisions(e) -> list:
+    """The divisions (``/``, ``//``) in the arithmetic of expression ``e``, outermost first."""
+    out, todo = [], [e]
+    while todo:
+        n = todo.pop(0)
+        if isinstance(n, A.BinOp):
+            if n.op in ("/", "//"):
+                out.append(n)
+            todo += [n.left, n.right]
+        elif isinstance(n, A.Neg):
+            todo.append(n.operand)
+    return out
