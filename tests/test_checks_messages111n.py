@@ -112,3 +112,16 @@ def test_run_gx_a_length_floor_divided_in_range_gets_the_count_in_its_own_words(
     r = aidl_lang.compile(source="solid s {\n    r = Rectangle(center=(0, 0), "
                           "width=80 mm // 3, height=10)\n}\n")
     assert "W0106" in _codes(r)
+
+
+def test_run_gw_e0204_of_a_shapes_size_says_why_and_what_takes_it():
+    path = RUNS / "issue111gw" / "drafts" / "05_balloon_bouquet_base.attempt1.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    [e] = _said(r, "E0204")
+    assert e.hint == ("`word.bb.width` is read from a shape, known only after solving; a "
+                      "template is made from numbers known before: give it numbers (the ones "
+                      "that drew the shape), or draw the feature with shapes here, which take "
+                      "solved values (`Rectangle(..., width=word.bb.width)`)")
+    from aidl_lang.llm.prompt import system_prompt
+    assert "`part = NAME(p1=...)`, numbers known before solving, not a shape's `bb`" in \
+        " ".join(system_prompt().split())

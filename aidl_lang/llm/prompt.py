@@ -39,7 +39,7 @@ min = LO, max = HI` (always declare the range it still works across: sliders use
 param may be computed from params and constants above it, `param h = w / 2`, and follows
 `--set w=60`),
 constants `NAME = expr`, functions `def f(v) = 225 deg - v * 27 deg` (one line, a value or a shape), templates `def NAME(p1, p2=default) -> solid { ... }` (at the top or in a structure; instantiate:
-`part = NAME(p1=...)`; `part.p1` reads its argument, a stdlib one's too), `import "file.aidl"` or `import stdlib.shapes` (or
+`part = NAME(p1=...)`, numbers known before solving, not a shape's `bb`; `part.p1` reads its argument, a stdlib one's too), `import "file.aidl"` or `import stdlib.shapes` (or
 `.gears`, `.joints`, `.fasteners`, `.plates`). Control flow:
 `for i in range(n) { ... }` (a name set in a loop: the current copy inside, the list after:
 `knob[0]`; nested loops: `dia[i][j]`; a relation per copy, labels on holes:
