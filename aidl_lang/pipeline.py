@@ -31,8 +31,9 @@ from .output.checks.boxes import check_drawn_boxes, check_final_box_asserts, che
 from .solver import SolveResult, solve
 
 # the shape findings said as notes, not warnings: a design may mean them (W0410: a Fillet of
-# the whole outline that rounds a narrow hole's ends)
-NOTE_CODES = frozenset({"W0410"})
+# the whole outline that rounds a narrow hole's ends; W0412: a Spline swinging off a straight
+# run of its points, a wave a pond's outline may mean)
+NOTE_CODES = frozenset({"W0410", "W0412"})
 from .typecheck import check
 
 

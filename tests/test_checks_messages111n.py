@@ -125,3 +125,35 @@ def test_run_gw_e0204_of_a_shapes_size_says_why_and_what_takes_it():
     from aidl_lang.llm.prompt import system_prompt
     assert "`part = NAME(p1=...)`, numbers known before solving, not a shape's `bb`" in \
         " ".join(system_prompt().split())
+
+
+def test_runs_gu_gx_a_spline_swinging_off_a_straight_run_of_its_points_is_a_note():
+    # gu's fern board: a flat top through (-100, 318), (0, 320), (100, 318) humps 5.6 mm;
+    # gx's canoe yoke: a near straight edge swells 9.72 mm into a knob before its end
+    for run, name, said in (
+            ("issue111gu", "04_fern_mount", "`fern_mount.board.outline` swings 5.6 mm off the "
+             "straight run of its points between points[0] and points[1] (and in 1 more "
+             "place): a smooth curve through the points overshoots there to round the turn "
+             "at points[2]"),
+            ("issue111gx", "06_canoe_yoke", "`yoke.outline` swings 9.72 mm off the straight "
+             "run of its points between points[6] and points[7] (and in 7 more places)")):
+        path = RUNS / run / "run" / f"{name}.first_valid.aidl"
+        r = aidl_lang.compile(source=path.read_text(), path=str(path))
+        [n] = _said(r, "W0412")
+        assert n.severity == "note" and n.message.startswith(said), n.message
+    # the hint's first way, a point where the turn begins (fern: (110, 315)), keeps the
+    # top within 1 mm of its line: no note, and the top's highest point is 320 mm as drawn
+    path = RUNS / "issue111gu" / "run" / "04_fern_mount.first_valid.aidl"
+    src = path.read_text().replace("(0, 320), (100, 318), (125, 300)",
+                                   "(0, 320), (90, 319), (110, 315), (125, 300)").replace(
+        "corners=[6]", "corners=[7]").replace("points[6]", "points[7]")
+    r = aidl_lang.compile(source=src, path=str(path))
+    assert r.ok and not _said(r, "W0412")
+    from aidl_lang.geometry.shapes.spline import interpolate, strays
+    half = [(0, 320), (90, 319), (110, 315), (125, 300), (128, 220), (110, 120), (60, 40),
+            (0, 0)]
+    c = interpolate(half + [(-x, y) for x, y in reversed(half[1:-1])], True, [7])
+    assert strays(c, [7]) == []
+    from aidl_lang.geometry.shapes.spline import bez_box
+    top = max(bez_box(c.span(i))[3] for i in range(c.n))
+    assert 320 <= top < 321, top

@@ -664,6 +664,23 @@ edge touches the point.
         Fillet(2)                   # the 9.8 deg point goes back 21.4 mm: W0411
     }
 """),
+    "W0412": ("Spline swings off a straight run of its points (note)", """
+A Spline is the smooth (C2) curve through its points, so where the points run straight and
+then turn sharply, the curve overshoots before the turn: a shield's flat top through (-100,
+318), (0, 320), (100, 318) humps 5.6 mm up between them to round a 35 degree shoulder at
+(100, 318), a yoke's straight edge swells into a knob before its rounded end. The warning names
+the span between two points (`points[i]`, as the members count them, a mirrored half's too)
+where the curve leaves the line of a straight run (a point the points turn at by 3 degrees or
+less) by more than 3 % of the span and 1 mm, how far, and the point near it where the points
+turn most. It is a note: a free-form outline (a pond, a hill) may mean the wave. To keep the
+run straight, add a point where the turn begins, so the curve has room to round it, or make
+the turn a corner (`corners=[i]`); a Polygon takes straight sides.
+
+    solid shield {
+        outline = Spline([(0, 320), (100, 318), (125, 300), (128, 220), (0, 0),
+                          (-128, 220), (-125, 300), (-100, 318)], closed=true)   # W0412
+    }
+"""),
     "W0501": ("hole refilled by another solid", """
 A hole cuts only the solid it is declared in. When that solid is then united with a sibling
 (or its parent's own geometry) that covers the hole, the hole is filled again and does not cut

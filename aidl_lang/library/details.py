@@ -36,7 +36,10 @@ DETAILS: dict[str, str] = {
               "there into runs, each the natural spline through its points (a run of two "
               "points is straight), so it is C2 between corners and passes through every "
               "point. An index that is not a point's, or an open spline's first or last "
-              "point, is E0108. Negative indices count from the end.",
+              "point, is E0108. Negative indices count from the end. Being smooth, the "
+              "curve overshoots where straight-lying points meet a sharp turn (a flat top "
+              "humps before its shoulder): the note W0412; a point where the turn begins, "
+              "or a corner there, keeps the run straight.",
     "Ellipse": "With start_angle= and end_angle= (keyword only, both) it is the open arc of "
                "the ellipse, counter-clockwise from one parameter angle to the other: the "
                "point at t is center + R(rotation) (rx cos t, ry sin t) (the eccentric "

@@ -282,7 +282,7 @@ def _relative(label: str, owner) -> str:
     return label[len(path) + 1:] if path and label.startswith(path + ".") else label
 
 
-def _as_written(label: str, a: Assertion) -> str:
+def _written_name(label: str, a: Assertion) -> str:
     """``label`` (a full path, ``lid.star.s``) as the assertion writes it: its shortest tail
     that the text names (``star.s``), else as written from inside ``a.owner``."""
     import re
@@ -397,9 +397,9 @@ def _spline_boxes(a: Assertion, x) -> str:
         past = [(d, side) for d, side in past if d > TOL and side in sides_read]
         if not past:
             continue
-        name = _as_written(t.target.path if isinstance(t.target, Structure) else g.label, a)
+        name = _written_name(t.target.path if isinstance(t.target, Structure) else g.label, a)
         pts_name = (name + g.label[len(t.target.path):] if isinstance(t.target, Structure)
-                    and g.label.startswith(t.target.path + ".") else _as_written(g.label, a))
+                    and g.label.startswith(t.target.path + ".") else _written_name(g.label, a))
         sides = ", ".join(f"{d / a.scale:.6g} {a.unit} past its {side}most point "
                           f"`{pts_name}.points[{most[side]}]`" for d, side in past)
         out.append(f"`{name}.bb` is the curve's box, {sides} (a spline swells between its "

@@ -264,6 +264,57 @@ def _real_roots(coef: np.ndarray, lo=-1e-9, hi=1 + 1e-9) -> list[float]:
     return out
 
 
+# a point its neighbours' lines turn at by no more than this lies in a straight run of the
+# points; the curve leaving such a run's chord by more than STRAY of the chord (and
+# STRAY_MIN mm) has swung off it (:func:`strays`, W0412)
+STRAIGHT_TURN = math.radians(3)
+STRAY = 0.03
+STRAY_MIN = 1.0
+
+
+def strays(c: "CubicSpline", corners=()) -> list[tuple[int, float, int]]:
+    """Where the curve swings off a straight run of its points (issue 111, runs gu and gx: a
+    fern board's flat top through (-100, 318), (0, 320), (100, 318) humped 5.6 mm between
+    them, the curve overshooting the 35-degree shoulder at (100, 318); a canoe yoke's near
+    straight edge swelled 9.7 mm into a knob before its rounded end): ``(span i, how far the
+    curve leaves span i's chord (mm), the point near it where the points turn most)`` for
+    each span from or to a point of a straight run (its turn at most :data:`STRAIGHT_TURN`,
+    not a corner, not an open curve's end) that the curve leaves by more than
+    ``max(STRAY_MIN, STRAY * chord)``, the farthest first.  The chord distance of a span is
+    a cubic in its parameter: its extremes are exact."""
+    n = c.n
+    P = [c.ctrl[3 * i] for i in range(n)] + ([] if c.closed else [c.ctrl[3 * n]])
+    m = len(P)
+
+    def turn(i: int) -> float | None:
+        if not c.closed and (i <= 0 or i >= m - 1) or i % m in corners:
+            return None
+        a, b, d = P[(i - 1) % m], P[i % m], P[(i + 1) % m]
+        u, v = (b[0] - a[0], b[1] - a[1]), (d[0] - b[0], d[1] - b[1])
+        return abs(math.atan2(u[0] * v[1] - u[1] * v[0], u[0] * v[0] + u[1] * v[1]))
+
+    turns = [turn(i) for i in range(m)]
+    out = []
+    for i in range(n):
+        j = (i + 1) % m
+        if not any(t is not None and t <= STRAIGHT_TURN for t in (turns[i], turns[j])):
+            continue
+        b = c.span(i)
+        cx, cy = P[j][0] - P[i][0], P[j][1] - P[i][1]
+        chord = math.hypot(cx, cy)
+        if chord <= 0.0:
+            continue
+        # the distance from the chord, signed: ((B - P0) x chord) / |chord|, a cubic in t
+        d = (_poly(b, 0) * cy - _poly(b, 1) * cx) / chord
+        d[-1] -= (P[i][0] * cy - P[i][1] * cx) / chord
+        far = max(abs(float(np.polyval(d, t))) for t in _real_roots(_der(d)) + [0.0, 1.0])
+        if far > max(STRAY_MIN, STRAY * chord):
+            near = [k % m for k in (i - 1, i, i + 1, i + 2) if c.closed or 0 <= k < m]
+            sharp = max(near, key=lambda k: turns[k] or 0.0)
+            out.append((i, far, sharp))
+    return sorted(out, key=lambda r: -r[1])
+
+
 def bez_extremes(b) -> tuple[list[float], list[float]]:
     """The local parameters in (0, 1) where span ``b``'s x (first list) and y (second) have
     zero derivative."""

@@ -69,8 +69,33 @@ class Faces:
                                           "a constraint moved the points onto each other: "
                                           "keep consecutive points apart", "E0108"))
             return None
+        if g.kind == "Spline" and c not in self.spline_source:
+            self._swung(g, c)
         self.spline_source.setdefault(c, g)
         return Spline(c, 0.0, float(c.n))
+
+    def _swung(self, g: Geometry, c) -> None:
+        """W0412 for a Spline whose curve swings off a straight run of its points
+        (:func:`~aidl_lang.geometry.shapes.spline.strays`), once per curve."""
+        from ....geometry.shapes.spline import strays
+        m = c.n + (0 if c.closed else 1)
+        corners = sorted({k % m for k in g.data.get("corners", ()) or ()})
+        found = strays(c, corners)
+        if not found or any(e[0] is g for e in self.shape_errors):
+            return
+        i, far, sharp = found[0]
+        more = len(found) - 1
+        j = (i + 1) % m
+        self.shape_errors.append((g, (
+            f"`{g.label}` swings {far:.3g} mm off the straight run of its points between "
+            f"points[{i}] and points[{j}]" + (f" (and in {more} more place{'s' * (more > 1)})"
+                                              if more else "")
+            + f": a smooth curve through the points overshoots there to round the turn at "
+            f"points[{sharp}]"), (
+            f"to keep the run straight, add a point where the turn begins, so the curve has "
+            f"room to round it, or make points[{sharp}] a corner (`corners="
+            f"{sorted(set(corners) | {sharp})}`); a spline passes through its points, not "
+            f"between them in straight lines"), "W0412"))
 
     def segment(self, g: Geometry, start=None, end=None):
         """The exact segment of an open curve (a Line, an open Spline, or an Arc
