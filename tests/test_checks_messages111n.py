@@ -157,3 +157,42 @@ def test_runs_gu_gx_a_spline_swinging_off_a_straight_run_of_its_points_is_a_note
     from aidl_lang.geometry.shapes.spline import bez_box
     top = max(bez_box(c.span(i))[3] for i in range(c.n))
     assert 320 <= top < 321, top
+
+
+def test_run_gw_w0517_of_a_part_with_no_place_among_placed_ones_says_it_lies_flat():
+    # the backboard had no Place: it lay flat as drawn while the pegs stood up through it;
+    # W0517 said "move each peg 0.343 mm" and labelled the board "placed here"
+    path = RUNS / "issue111gw" / "run" / "01_hat_rack.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    said = _said(r, "W0517")
+    assert len(said) == 3
+    for w in said:
+        assert w.hint.startswith(
+            "`board` has no `Place`, so it lies as drawn, flat on the x-y plane (z 0 to 6 mm), "
+            "while `p[")
+        assert "if it is to stand, give it its `Place` (`face=\"front\"` stands it up " \
+               "facing -y)" in w.hint
+        assert [lb.message for lb in w.labels] == [
+            "`hat_rack.board` has no `Place`: it lies as drawn"]
+    # the model's fix, as the hint says: `Place(board, position=(0, 0, 0), face="front",
+    # up="up")`: no collision
+    fixed = RUNS / "issue111gw" / "drafts" / "01_hat_rack.aidl"
+    assert "Place(board, position=(0, 0, 0), face=\"front\", up=\"up\")" in fixed.read_text()
+    assert not _said(aidl_lang.compile(source=fixed.read_text(), path=str(fixed)), "W0517")
+
+
+def test_run_gv_w0519_of_a_long_seam_offers_to_end_one_short():
+    # a glue flap's side along the next face's edge, 0.01 mm apart over 3.9 mm: the corner's
+    # Fillet fills it all (only 0.42 mm fits, W0406) and joins the flap to the face, so it no
+    # longer folds; the model ended each flap 1.5 mm short of the corners
+    path = RUNS / "issue111gv" / "run" / "07_dodecahedron_net.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    said = _said(r, "W0519")
+    assert said and all(
+        "which joins them along the slit's" in w.hint and "if they are to stay apart there "
+        "(a flap that folds, a tab), end one at least 0.5 mm short of the other instead"
+        in w.hint for w in said if "Fillet(at=" in w.hint)
+    assert sum("Fillet(at=" in w.hint for w in said) >= 3
+    # a short nick (the issue-84 kind) keeps the one fix
+    from aidl_lang.output.checks.material.nicks import SEAM
+    assert SEAM == 4

@@ -258,7 +258,12 @@ def describe(a: Assertion, found: list, alternatives: int = 1, x=None, owners=No
     said = [f"{text} = {shown}" for text, shown in _reads(a, x)
             if not a.text.strip() == text]
     where = f" (where {', '.join(said)})" if said else ""
-    return (f"assertion failed: `{a.text}`{why}: {lead}" + "; ".join(parts) + where
+    # an assert in a template names the instance it failed in (run gz: four word tiles of
+    # one `def`, "which of the 4 tiles failed" unsaid)
+    inst = next((u for u in ([a.owner, *a.owner.ancestors()] if a.owner is not None else [])
+                 if getattr(u, "template", None)), None)
+    at = f" in `{inst.path}`" if inst is not None else ""
+    return (f"assertion failed{at}: `{a.text}`{why}: {lead}" + "; ".join(parts) + where
             + _drawn_boxes(a, x) + _text_boxes(a, x) + _star_boxes(a, x) + _spline_boxes(a, x)
             + _slot_lengths(a, x)
             + _moved_part(a, x, owners) + _moved_within(a, x, model)

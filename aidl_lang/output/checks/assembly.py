@@ -68,8 +68,30 @@ def _collision_hint(d: Drawing, c) -> str:
                     f"and its `face=`/`up=` (or `rotation=`) are in `{pl[3].name}`'s frame, "
                     f"turned with it")
             break
+    # one of the two has no `Place` (run gw's hat rack: the backboard lay flat as drawn while
+    # the pegs stood up through it; "move each peg 0.343 mm" hid it)
+    loose = _unplaced(d, c)
+    if loose is not None:
+        u, other = loose
+        t = d.thickness.get(u)
+        why = (f"`{u.split('.')[-1]}` has no `Place`, so it lies as drawn, flat on the "
+               f"x-y plane" + (f" (z 0 to {t:g} mm)" if t is not None else "")
+               + f", while `{other.split('.')[-1]}` is placed: if it is to stand, give it "
+               f"its `Place` (`face=\"front\"` stands it up facing -y); if it is meant to "
+               f"lie so: {why}")
     return (f"{why}; if they are meant to share material (a press fit, an inlay), "
             f"`AllowOverlap({a}, {b})` in their assembly says so")
+
+
+def _unplaced(d: Drawing, c) -> tuple | None:
+    """(the part with no ``Place``, the other) of collision ``c`` when one of its two parts
+    has a ``Place`` and the other none, else None."""
+    has = [getattr(d.part_of.get(n), "placement", None) is not None for n in (c.a, c.b)]
+    if has == [False, True]:
+        return c.a, c.b
+    if has == [True, False]:
+        return c.b, c.a
+    return None
 
 
 def _whole_fillet(s) -> tuple | None:
@@ -185,7 +207,10 @@ def _check_fit(d: Drawing, sink: DiagnosticSink, deadline=None) -> None:
             continue                     # two template instances in one place: said once
         x0, y0, z0, x1, y1, z1 = c.box
         sa = at(c.a)
-        labels = [Label(sa, f"`{c.a}` is placed here", primary=False)] if sa else []
+        loose = _unplaced(d, c)
+        labels = [Label(sa, f"`{c.a}` has no `Place`: it lies as drawn" if loose is not None
+                        and loose[0] == c.a else f"`{c.a}` is placed here", primary=False)] \
+            if sa else []
         where = (f"in x {x0:.6g}..{x1:.6g}, y {y0:.6g}..{y1:.6g}, z {z0:.6g}..{z1:.6g} mm"
                  if not c.places else f"in {len(c.places)} places: " + "; ".join(
                      f"x {q[0]:.6g}..{q[3]:.6g}, y {q[1]:.6g}..{q[4]:.6g}, z {q[2]:.6g}.."

@@ -48,6 +48,10 @@ def _nick_corners(d: Drawing, s: Structure) -> list:
     return out
 
 
+# a slit longer than this many minimum walls is a seam: rounding its corner fills it all
+SEAM = 4
+
+
 def _nick_corner(corners: list, at, reach: float):
     """Of ``corners`` (:func:`_nick_corners`), the one nearest to ``at`` (a slit's narrowest
     place) within ``reach`` mm, or None: a slit whose sides do not meet there (two lobes
@@ -61,10 +65,11 @@ def _nick_corner(corners: list, at, reach: float):
 
 
 def slit_fix(d: Drawing, s: Structure, at, w: float, t: float, names: list,
-             found: dict | None = None) -> str:
+             found: dict | None = None, length: float = 0.0) -> str:
     """The fix W0519's hint gives for a slit of part ``s`` whose narrowest place is ``at``
-    (x, y in mm), ``w`` mm wide, at minimum ``t`` mm, between the shapes ``names`` (their
-    labels, quoted): a nick's corner rounded, a cusp described without a number, else the
+    (x, y in mm), ``w`` mm wide, at minimum ``t`` mm, ``length`` mm long, between the shapes
+    ``names`` (their labels, quoted): a nick's corner rounded (and, for a slit longer than
+    :data:`SEAM` t, the two ended t apart instead), a cusp described without a number, else the
     moves that close or open the gap.  ``found`` keeps each part's corners between calls
     (``id(s)`` -> :func:`_nick_corners`: 860 slits of one part searched its whole outline
     each, 16 s)."""
@@ -87,9 +92,17 @@ def slit_fix(d: Drawing, s: Structure, at, w: float, t: float, names: list,
         # a nick: the two sides meet at its floor, and taper apart from there; moving
         # one away parts them (W0504), moving it in moves the nick (issue 84): the
         # inner corner rounded by min_wall fills the narrow part and nothing else
-        return (f"fill the nick where {names[0]} meets {names[-1]} by rounding that inner "
+        fill = (f"fill the nick where {names[0]} meets {names[-1]} by rounding that inner "
                 f"corner: `Fillet(at=[({apex[0]:.4f}, {apex[1]:.4f})], radius={t:g})` in "
                 f"`{s.name}` (only that corner; the rest of the outline is unchanged)")
+        if length <= SEAM * t:
+            return fill
+        # a long seam of near parallel sides (run gv's dodecahedron net: a glue flap's side
+        # along the next face's edge, 0.01 mm apart over 3.9 mm): the rounding fills it all,
+        # joining the two there (a flap that no longer folds), and only 0.42 mm fits
+        return (f"{fill}, which joins them along the slit's {length:.1f} mm; if they are to "
+                f"stay apart there (a flap that folds, a tab), end one at least {t:g} mm "
+                f"short of the other instead")
     # both figures rounded up to 0.01 mm: the gap 0.375 mm, "move one 0.12 mm away" (0.125
     # rounded to even) left 0.495 mm, warned again.  Overlapping by a hair ("more than
     # 0.25 mm towards", made 0.26) two round sides meet in a V-notch narrower than t over

@@ -245,7 +245,8 @@ def _check_slits(d: Drawing, s: Structure, loops, cuts, t: float, sink: Diagnost
         # where the program writes it, not where a layout relation moved the part (run fn:
         # a toy camera's nicks given at its place on the laid-out sheet)
         cx, cy = written(s, *((p + q) / 2))
-        fix = slit_fix(d, s, (p + q) / 2, w, t, names, corners) if len(said) < SHOWN else ""
+        fix = slit_fix(d, s, (p + q) / 2, w, t, names, corners, length) \
+            if len(said) < SHOWN else ""
         insets = {f.data.get("distance") for f in (fp, fq) if f.kind == "Offset"}
         if fp.kind == fq.kind == "Offset" and len(insets) == 1 and insets.pop() < 0:
             # run gb: two lobes of a heart, each inset 0.5, part at the point (a V slit 4 mm
