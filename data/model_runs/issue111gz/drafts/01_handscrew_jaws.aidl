@@ -1,0 +1,88 @@
+# Request (workshop): "Laser-cut jaws for a wooden handscrew clamp. Each jaw is a stack of three
+# layers: two 6 mm birch-ply outer layers and a 9 mm middle layer. A jaw is 250 mm long and
+# 45 mm tall; its top edge tapers over the front 70 mm down to 30 mm at the nose so it reaches
+# into corners; round the rear top corner R8. Two M10 threaded spindles pass through both jaws,
+# on the jaw's centre line (22.5 mm up): the front one 80 mm from the nose, the rear one 180 mm
+# from the nose. Outer layers: M10 clearance holes. The middle layer of jaw A holds an M10 nut in
+# a hex trap at the FRONT spindle (clearance at the rear); jaw B's middle layer the other way
+# round. Two round handles 50 mm across with 8 finger scallops (R5) round the rim, each with an
+# M10 nut trap in the middle (two discs glued per handle, so cut four). Engrave 'A' or 'B' on
+# each middle layer near the rear end, and 'HANDSCREW 250' on the outer layer."
+
+units mm
+thickness 6 mm
+kerf 0.15 mm
+
+import "std/fasteners.aidl"
+
+jaw_len = 250 mm
+jaw_h = 45 mm
+nose_h = 30 mm
+taper = 70 mm
+front_x = 80 mm
+rear_x = 180 mm
+
+# one layer of a jaw; trap: 0 no nut trap, 1 at the front spindle, 2 at the rear spindle
+def jaw_layer(trap=0, label="") -> solid {
+    profile = Polygon([(0, 0), (jaw_len, 0), (jaw_len, jaw_h), (taper, jaw_h), (0, nose_h)])
+    Fillet(profile.points[2], 8)
+    if trap == 1 {
+        front = nut_trap(size=10, cx=front_x, cy=jaw_h / 2)
+    } else {
+        front = clearance_hole(size=10, cx=front_x, cy=jaw_h / 2)
+    }
+    if trap == 2 {
+        rear = nut_trap(size=10, cx=rear_x, cy=jaw_h / 2)
+    } else {
+        rear = clearance_hole(size=10, cx=rear_x, cy=jaw_h / 2)
+    }
+    drawing mark {
+        t = Text(label, position=((front_x + rear_x) / 2, jaw_h / 2), size=6, valign="middle")
+    }
+    assert profile.bb.width == 250 mm, "jaw 250 long"
+    assert profile.bb.height == 45 mm, "jaw 45 tall"
+    assert front.bb.center_x - profile.bb.left == 80 mm, "front spindle 80 from the nose"
+    assert rear.bb.center_x - profile.bb.left == 180 mm, "rear spindle 180 from the nose"
+    assert front.bb.center_y - profile.bb.bottom == 22.5 mm, "spindles on the centre line"
+    assert distance(mark, rear) >= 3 mm and distance(mark, front) >= 3 mm, "label clear of the spindles"
+}
+
+def handle() -> solid {
+    disc = Circle(center=(0, 0), diameter=50)
+    hole scallop { c = Circle(center=(25, 0), radius=5) }
+    CircularPattern(scallop, 8, disc.center)
+    nut = nut_trap(size=10)
+    Concentric(nut.hex, disc)
+    assert disc.diameter == 50 mm, "handle 50 across"
+}
+
+# FIX after the first valid program: the request needs four outer layers and four handle
+# discs; the first valid program made one of each (the sheet layout showed 1 + 1).
+assembly handscrew {
+    for i in range(4) {
+        outer = jaw_layer(trap=0, label="HANDSCREW 250")
+        knob = handle()
+    }
+    solid middle_a {
+        thickness 9 mm
+        layer = jaw_layer(trap=1, label="A")
+    }
+    solid middle_b {
+        thickness 9 mm
+        layer = jaw_layer(trap=2, label="B")
+    }
+    for i in range(1, 4) {
+        Below(outer[i], outer[i - 1], gap=6)
+        AlignLeft(outer[i], outer[i - 1])
+        Below(knob[i], knob[i - 1], gap=6)
+        AlignLeft(knob[i], knob[i - 1])
+    }
+    Below(middle_a, outer[3], gap=6)
+    AlignLeft(middle_a, outer[3])
+    Below(middle_b, middle_a, gap=6)
+    AlignLeft(middle_b, middle_a)
+    RightOf(knob[0], outer[0], gap=10)
+    AlignTop(knob[0], outer[0])
+    assert len(outer) == 4, "four outer layers"
+    assert len(knob) == 4, "four handle discs"
+}
