@@ -129,14 +129,14 @@ def test_run_gw_e0204_of_a_shapes_size_says_why_and_what_takes_it():
 
 def test_runs_gu_gx_a_spline_swinging_off_a_straight_run_of_its_points_is_a_note():
     # gu's fern board: a flat top through (-100, 318), (0, 320), (100, 318) humps 5.6 mm;
-    # gx's canoe yoke: a near straight edge swells 9.72 mm into a knob before its end
+    # gx's canoe yoke: a near straight edge swells 9.66 mm into a knob before its end
     for run, name, said in (
             ("issue111gu", "04_fern_mount", "`fern_mount.board.outline` swings 5.6 mm off the "
              "straight run of its points between points[0] and points[1] (and in 1 more "
              "place): a smooth curve through the points overshoots there to round the turn "
              "at points[2]"),
-            ("issue111gx", "06_canoe_yoke", "`yoke.outline` swings 9.72 mm off the straight "
-             "run of its points between points[6] and points[7] (and in 7 more places)")):
+            ("issue111gx", "06_canoe_yoke", "`yoke.outline` swings 9.66 mm off the straight "
+             "run of its points between points[18] and points[19] (and in 3 more places)")):
         path = RUNS / run / "run" / f"{name}.first_valid.aidl"
         r = aidl_lang.compile(source=path.read_text(), path=str(path))
         [n] = _said(r, "W0412")
@@ -196,3 +196,21 @@ def test_run_gv_w0519_of_a_long_seam_offers_to_end_one_short():
     # a short nick (the issue-84 kind) keeps the one fix
     from aidl_lang.output.checks.material.nicks import SEAM
     assert SEAM == 4
+
+
+def test_run_hb_points_in_line_mean_a_straight_side():
+    # the paddle's sides through five points on x = 97.5 bowed 0.672 mm each way (196.34 mm
+    # across where 195 was asked, and the model's assert on the points passed): points in
+    # line are held to 1 % of the span; the model's fix, a Polygon rounded by Fillet, is
+    # what the hint's last way says
+    path = RUNS / "issue111hb" / "run" / "06_pickleball_paddle.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    [n] = _said(r, "W0412")
+    assert n.message.startswith("`paddle.core.outline` swings 0.672 mm off the straight run")
+    assert "or draw the outline as a Polygon rounded by `Fillet` (its sides stay straight)" \
+        in n.hint
+    # an S's middle point (a snake's body: its neighbours turn each way) is no straight run
+    from aidl_lang.geometry.shapes.spline import interpolate, strays
+    s = [(0, 0), (20, 10), (40, 0), (60, -10), (80, 0), (100, 10), (120, 0), (120, -8),
+         (0, -8)]
+    assert [f for f in strays(interpolate(s, True, [6, 7, 8]), [6, 7, 8])] == []

@@ -270,6 +270,12 @@ def _real_roots(coef: np.ndarray, lo=-1e-9, hi=1 + 1e-9) -> list[float]:
 STRAIGHT_TURN = math.radians(3)
 STRAY = 0.03
 STRAY_MIN = 1.0
+# points in line (turned by no more than LINED) mean the run straight: the curve may leave it
+# by LINED_STRAY of the chord and LINED_MIN mm (run hb's paddle: sides through five points on
+# x = 97.5 bowed 0.67 mm, 196.34 mm across where 195 was asked)
+LINED = math.radians(0.5)
+LINED_STRAY = 0.01
+LINED_MIN = 0.25
 
 
 def strays(c: "CubicSpline", corners=()) -> list[tuple[int, float, int]]:
@@ -280,24 +286,35 @@ def strays(c: "CubicSpline", corners=()) -> list[tuple[int, float, int]]:
     curve leaves span i's chord (mm), the point near it where the points turn most)`` for
     each span from or to a point of a straight run (its turn at most :data:`STRAIGHT_TURN`,
     not a corner, not an open curve's end) that the curve leaves by more than
-    ``max(STRAY_MIN, STRAY * chord)``, the farthest first.  The chord distance of a span is
+    ``max(STRAY_MIN, STRAY * chord)`` (points in line, turned at most :data:`LINED`:
+    ``max(LINED_MIN, LINED_STRAY * chord)``), the farthest first.  The chord distance of a span is
     a cubic in its parameter: its extremes are exact."""
     n = c.n
     P = [c.ctrl[3 * i] for i in range(n)] + ([] if c.closed else [c.ctrl[3 * n]])
     m = len(P)
 
-    def turn(i: int) -> float | None:
+    def turn(i: int) -> float | None:           # signed: + to the left
         if not c.closed and (i <= 0 or i >= m - 1) or i % m in corners:
             return None
         a, b, d = P[(i - 1) % m], P[i % m], P[(i + 1) % m]
         u, v = (b[0] - a[0], b[1] - a[1]), (d[0] - b[0], d[1] - b[1])
-        return abs(math.atan2(u[0] * v[1] - u[1] * v[0], u[0] * v[0] + u[1] * v[1]))
+        return math.atan2(u[0] * v[1] - u[1] * v[0], u[0] * v[0] + u[1] * v[1])
 
-    turns = [turn(i) for i in range(m)]
+    signed = [turn(i) for i in range(m)]
+    turns = [None if t is None else abs(t) for t in signed]
+    for i in range(m):
+        # the middle of an S (its neighbours turn each way, more than a straight run's) is
+        # no straight run: a snake's body, a wave
+        a, b = signed[(i - 1) % m], signed[(i + 1) % m]
+        if turns[i] is not None and turns[i] <= STRAIGHT_TURN and a is not None \
+                and b is not None and abs(a) > STRAIGHT_TURN and abs(b) > STRAIGHT_TURN \
+                and (a > 0) != (b > 0) and (c.closed or 0 < i < m - 1):
+            turns[i] = math.inf
     out = []
     for i in range(n):
         j = (i + 1) % m
-        if not any(t is not None and t <= STRAIGHT_TURN for t in (turns[i], turns[j])):
+        ends = [t for t in (turns[i], turns[j]) if t is not None and t <= STRAIGHT_TURN]
+        if not ends:
             continue
         b = c.span(i)
         cx, cy = P[j][0] - P[i][0], P[j][1] - P[i][1]
@@ -308,9 +325,11 @@ def strays(c: "CubicSpline", corners=()) -> list[tuple[int, float, int]]:
         d = (_poly(b, 0) * cy - _poly(b, 1) * cx) / chord
         d[-1] -= (P[i][0] * cy - P[i][1] * cx) / chord
         far = max(abs(float(np.polyval(d, t))) for t in _real_roots(_der(d)) + [0.0, 1.0])
-        if far > max(STRAY_MIN, STRAY * chord):
+        lined = min(ends) <= LINED
+        if far > (max(LINED_MIN, LINED_STRAY * chord) if lined else
+                  max(STRAY_MIN, STRAY * chord)):
             near = [k % m for k in (i - 1, i, i + 1, i + 2) if c.closed or 0 <= k < m]
-            sharp = max(near, key=lambda k: turns[k] or 0.0)
+            sharp = max(near, key=lambda k: abs(signed[k] or 0.0))
             out.append((i, far, sharp))
     return sorted(out, key=lambda r: -r[1])
 

@@ -69,8 +69,9 @@ class Faces:
                                           "a constraint moved the points onto each other: "
                                           "keep consecutive points apart", "E0108"))
             return None
-        if g.kind == "Spline" and c not in self.spline_source:
-            self._swung(g, c)
+        if g.kind == "Spline" and c not in self.spline_source and not any(
+                u.kind == "drawing" for u in (g.owner, *g.owner.ancestors())):
+            self._swung(g, c)           # (an engraved wave may mean its swing)
         self.spline_source.setdefault(c, g)
         return Spline(c, 0.0, float(c.n))
 
@@ -93,8 +94,9 @@ class Faces:
             + f": a smooth curve through the points overshoots there to round the turn at "
             f"points[{sharp}]"), (
             f"to keep the run straight, add a point where the turn begins, so the curve has "
-            f"room to round it, or make points[{sharp}] a corner (`corners="
-            f"{sorted(set(corners) | {sharp})}`); a spline passes through its points, not "
+            f"room to round it, make points[{sharp}] a corner (`corners="
+            f"{sorted(set(corners) | {sharp})}`), or draw the outline as a Polygon rounded "
+            f"by `Fillet` (its sides stay straight); a spline passes through its points, not "
             f"between them in straight lines"), "W0412"))
 
     def segment(self, g: Geometry, start=None, end=None):
