@@ -214,3 +214,18 @@ def test_run_hb_points_in_line_mean_a_straight_side():
     s = [(0, 0), (20, 10), (40, 0), (60, -10), (80, 0), (100, 10), (120, 0), (120, -8),
          (0, -8)]
     assert [f for f in strays(interpolate(s, True, [6, 7, 8]), [6, 7, 8])] == []
+
+
+def test_run_hb_fillet_where_a_shape_meets_a_rounded_rectangle_of_several_radii():
+    # `Fillet([throat, head], 25)` with head's corner_radii=[70, 70, 60, 60]: E0408 "their
+    # outlines do not cross there" (the head was taken as its sharp rectangle); one radius
+    # for all four corners checked fine
+    from test_exact_formats import svg_segments
+    path = RUNS / "issue111hb" / "drafts" / "06_probe_fillet_corner_radii.aidl"
+    src = path.read_text()
+    for radii in ("[70, 70, 60, 60]", "[0, 0, 60, 60]"):
+        r = aidl_lang.compile(source=src.replace("[70, 70, 60, 60]", radii), path=str(path))
+        assert r.ok and not r.diagnostics, [d.message for d in r.diagnostics]
+        segs, _ = svg_segments(r.to_svg())
+        arcs = sorted(round(float(s.rx), 6) for s in segs if type(s).__name__ == "Arc")
+        assert arcs.count(25.0) == 2 and arcs.count(60.0) == 2, arcs

@@ -148,6 +148,11 @@ def edges_meet(pts, names) -> tuple[list, str | None]:
                 f"{says}")
 
 
+def _unit(x: float, y: float) -> tuple[float, float]:
+    n = math.hypot(x, y)
+    return (x / n, y / n) if n > 0 else (0.0, 0.0)
+
+
 def one_radius(g) -> bool:
     """A RoundedRectangle whose corners are all of one radius (``corner_radius=``, or
     ``corner_radii=`` all alike: runs bw, ce, `[8, 8, 8, 8]` was taken for its sharp polygon
@@ -164,6 +169,8 @@ def _sizes(g, x) -> tuple:
         return (abs(float(x[g.scalars["radius"].index])),)
     if one_radius(g):                                     # (the "rounded" spec)
         return (float(g.data["corner_radius"]),)
+    if g.kind == "RoundedRectangle" and g.data.get("corner_radii"):
+        return tuple(float(r) for r in g.data["corner_radii"])    # (points_of's order)
     if g.kind == "ArcSlot":
         return (g.data["dims"]["width"] / 2,)
     if g.kind == "Ellipse":
@@ -221,6 +228,28 @@ def outline_distance(kind: str, pts: list, sizes: tuple, p) -> float:
         b = abs((px - mx) * vx + (py - my) * vy) - (lv / 2 - rc)
         inner = math.hypot(max(a, 0.0), max(b, 0.0)) + min(max(a, b), 0.0)
         return abs(inner - rc)
+    if kind == "rounded_radii":           # corners of several radii (run hb's paddle head,
+        best = math.inf                   # [70, 70, 60, 60]: taken as its sharp rectangle,
+        n = len(pts)                      # E0408 "no corner on both" where the throat met it)
+        for k in range(n):                # each side between its corners' tangent points,
+            a, b, c = pts[k - 1], pts[k], pts[(k + 1) % n]      # and each corner's arc
+            r = sizes[k]
+            ua = _unit(b[0] - a[0], b[1] - a[1])
+            ub = _unit(c[0] - b[0], c[1] - b[1])
+            s0 = (b[0] + r * ub[0], b[1] + r * ub[1])           # side k starts past the arc
+            e0 = (c[0] - sizes[(k + 1) % n] * ub[0], c[1] - sizes[(k + 1) % n] * ub[1])
+            best = min(best, outline_distance("segment", [s0, e0], (), p))
+            if r > 0:
+                cx, cy = b[0] - r * ua[0] + r * ub[0], b[1] - r * ua[1] + r * ub[1]
+                # the quarter arc from the tangent point on the side in to the one out
+                t0, t1 = (b[0] - r * ua[0], b[1] - r * ua[1]), s0
+                if ((px - cx) * (t0[0] - cx) + (py - cy) * (t0[1] - cy) >= 0
+                        and (px - cx) * (t1[0] - cx) + (py - cy) * (t1[1] - cy) >= 0):
+                    best = min(best, abs(math.hypot(px - cx, py - cy) - r))
+                else:
+                    best = min(best, math.hypot(px - t0[0], py - t0[1]),
+                               math.hypot(px - t1[0], py - t1[1]))
+        return best
     best = math.inf                       # a polygon: its nearest side
     for (ax, ay), (bx, by) in zip(pts, pts[1:] + pts[:1]):
         best = min(best, outline_distance("segment", [(ax, ay), (bx, by)], (), p))

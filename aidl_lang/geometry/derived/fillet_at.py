@@ -51,8 +51,8 @@ MEET = ("Circle", "Ellipse", "Slot", "ArcSlot", "Rectangle", "RoundedRectangle",
 def outline_spec(g: Geometry, S) -> tuple:
     """(kind of outline, its points in ``S``'s frame) for :func:`.corners.outline_distance`:
     "circle" (center), "ellipse" (center), "slot" (start, end), "segment" (start, end),
-    "rounded" (a RoundedRectangle of one radius: its corners) or "polygon" (its corners, in
-    order: a Star's tips and a RoundedRectangle's corners of several radii as drawn sharp);
+    "rounded" (a RoundedRectangle of one radius: its corners), "rounded_radii" (one of
+    several radii: its corners) or "polygon" (its corners, in order: a Star's tips);
     radii are read from the solved unknowns."""
     from ..relations.members import _pv, member, points_of
     k = g.kind
@@ -66,6 +66,8 @@ def outline_spec(g: Geometry, S) -> tuple:
         return "segment", [member(g, "start", S), member(g, "end", S)]
     if one_radius(g):
         return "rounded", [_pv(p, S) for p in points_of(g)]
+    if g.kind == "RoundedRectangle" and g.data.get("corner_radii"):
+        return "rounded_radii", [_pv(p, S) for p in points_of(g)]
     return "polygon", [_pv(p, S) for p in points_of(g)]
 
 
