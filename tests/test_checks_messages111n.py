@@ -27,8 +27,9 @@ def test_run_gs_e0405_of_a_spline_box_names_the_point_it_swells_past():
     [e] = _said(r, "E0405")
     assert "200.075 mm == 200 mm is false" in e.message
     assert ("`head.profile.bb` is the curve's box, 0.0751928 mm past its rightmost point "
-            "`head.profile.points[5]` (a spline swells between its points): assert on the "
-            "points") in e.message
+            "`head.profile.points[5]` (a spline swells between its points): where a point "
+            "is meant, assert on it; a limit on the cut part (a rule, the bed) reads the box "
+            "rightly, and the points must come in") in e.message
     # the model's fix, the point it names: valid
     fixed = path.read_text().replace("head.profile.bb.right - head.neck.bb.left",
                                      "head.profile.points[5].x - head.neck.bb.left")

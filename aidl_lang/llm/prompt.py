@@ -68,7 +68,7 @@ A child structure's geometry is `child.name`, the current one is `self`; every g
 structure has `.bb` (bounding box). A structure's box covers all it holds, holes included (a
 hole poking past the edge widens it; construction geometry and `overrun=true` shapes do not
 count): for the material
-alone use a shape's box (`plate.body.bb`); a Spline's box swells past its points (assert on `points[i]`).
+alone use a shape's box (`plate.body.bb`); a Spline's box swells past its points (assert on `points[i]` for a point; the box is the cut part).
 Rules: a constraint may only refer to its own structure's subtree; geometry may only reuse
 points of its own structure (in `hole ring { }` a Circle cannot read its parent's `word.bb.left`
 (E0201): give it numbers and place it by a constraint in the parent, `Concentric(ring.c, loop)`). Booleans: a solid is the union of its shapes and solid children

@@ -365,7 +365,10 @@ def _spline_boxes(a: Assertion, x) -> str:
     runs gr and gs: `head.profile.bb.right - head.neck.bb.left == 200 mm` failed at 200.075
     mm, the closed curve swelling past its nose point): "; `head.profile.bb` is the curve's
     box, 0.0752 mm past its rightmost point `head.profile.points[5]` (a spline swells
-    between its points): assert on the points", or "" where the sides read are its points'.  A structure read whose one closed shape is a Spline is
+    between its points): where a point is meant, assert on it; a limit on the cut part (a
+    rule, the bed) reads the box rightly, and the points must come in" (run hb: a paddle's
+    legal width, which the points would have passed), or "" where the sides read are its
+    points'.  A structure read whose one closed shape is a Spline is
     said the same way."""
     if x is None:
         return ""
@@ -408,7 +411,8 @@ def _spline_boxes(a: Assertion, x) -> str:
         sides = ", ".join(f"{d / a.scale:.6g} {a.unit} past its {side}most point "
                           f"`{pts_name}.points[{most[side]}]`" for d, side in past)
         out.append(f"`{name}.bb` is the curve's box, {sides} (a spline swells between its "
-                   f"points): assert on the points")
+                   f"points): where a point is meant, assert on it; a limit on the cut part "
+                   f"(a rule, the bed) reads the box rightly, and the points must come in")
     return "".join(f"; {o}" for o in out)
 
 
