@@ -354,7 +354,7 @@ def test_W0502_of_a_template_hole_says_it_can_be_turned():
     r = aidl_lang.compile(path=str(RUNS / "issue111ab/run/02_fume_extractor.first_valid.aidl"))
     w = _w(r, "W0502")
     assert len(w) == 2
-    assert all("`rotation=180 deg` runs it the other way" in d.hint
+    assert all("`rotation=180 deg` (it has 0 deg) runs it the other way" in d.hint
                and "aidl docs cross_halving" in d.hint for d in w)
 
 

@@ -230,3 +230,17 @@ def test_run_hb_fillet_where_a_shape_meets_a_rounded_rectangle_of_several_radii(
         segs, _ = svg_segments(r.to_svg())
         arcs = sorted(round(float(s.rx), 6) for s in segs if type(s).__name__ == "Arc")
         assert arcs.count(25.0) == 2 and arcs.count(60.0) == 2, arcs
+
+
+def test_run_ha_w0502_of_a_joint_turned_the_wrong_way_gives_the_rotation_that_turns_it():
+    # a gusset's side tenon at `rotation=270 deg` ran off its part; the hint's fixed
+    # "`rotation=180 deg` runs it the other way" still cut nothing
+    path = RUNS / "issue111ha" / "run" / "05_embroidery_hoop_stand.first_valid.aidl"
+    src = path.read_text()
+    r = aidl_lang.compile(source=src, path=str(path))
+    [w] = _said(r, "W0502")
+    assert "and `rotation=90 deg` (it has 270 deg) runs it the other way" in w.hint
+    line = "screw=0, rotation=270 deg, cx=0 mm, cy=t + gusset / 2)"
+    assert src.count(line) == 1
+    r = aidl_lang.compile(source=src.replace(line, line.replace("270", "90")), path=str(path))
+    assert "W0502" not in _codes(r) and "W0517" not in _codes(r)

@@ -921,9 +921,16 @@ def _check_stray_shapes(d: Drawing, cut, part, roots, sink: DiagnosticSink) -> N
             continue
         stray.setdefault(g.span, []).append(g)
     tpl = h.template
-    turn = (f"; or turn it: `{tpl}(...)` runs from its anchor (cx, cy) the way its `rotation=` "
-            f"says (`aidl docs {tpl}`), and `rotation=180 deg` runs it the other way"
-            if tpl and isinstance(h.scope, dict) and "rotation" in h.scope else "")
+    turn = ""
+    if tpl and isinstance(h.scope, dict) and "rotation" in h.scope:
+        # the rotation that runs it the other way, from the one given (run ha: a side tenon
+        # at `rotation=270 deg`, the hint's fixed "rotation=180 deg" still cut nothing)
+        rot = getattr(h.scope["rotation"], "const", lambda: None)()
+        other = (f"`rotation={(math.degrees(rot) + 180) % 360:g} deg` (it has "
+                 f"{math.degrees(rot) % 360:g} deg)" if isinstance(rot, float)
+                 and math.isfinite(rot) else "a rotation 180 deg from its own")
+        turn = (f"; or turn it: `{tpl}(...)` runs from its anchor (cx, cy) the way its "
+                f"`rotation=` says (`aidl docs {tpl}`), and {other} runs it the other way")
     for span, gs in stray.items():      # (run ab's extractor: a cross_halving's mouth on the
         #                                 bottom edge, at rotation 0 running down off the plate)
         what = f"`{gs[0].label}`" + (f" ({len(gs)} copies)" if len(gs) > 1 else "")
