@@ -628,13 +628,9 @@ class Calls:
         elif node.kwargs:
             raise EvalError("E0105", f"`{nm}` takes no keyword arguments" + (
                 " but `about=`" if nm == "mirror" else ""), node.kwargs[0].span)
-        if nm == "range":
-            # a count made by `//` in range() is E0108's if it is a length, with the fix in
-            # the program's own words; W0106's "write `/`" would not make it a count (run gx)
-            for a in node.args:
-                for d in _divisions(a):
-                    if d.op == "//":
-                        self.reported.add(("W0106", d.span))
+        if nm == "range":       # `//` in range(): E0108 gives the count, not W0106 (run gx)
+            self.reported.update(("W0106", d.span) for a in node.args
+                                 for d in _divisions(a) if d.op == "//")
         args = [self.eval(a) for a in node.args]
         if nm == "mirror":
             return self._mirror(args[0], kw.get("about", args[1] if len(args) > 1 else "y"),
@@ -844,8 +840,7 @@ class Calls:
         raise EvalError("E0108", f"expected a number, got {type_name(v)}", sp)
 
     def _int(self, v, sp, arg=None) -> int:
-        """``v``, an argument of ``range()`` (written ``arg``), as a whole number; E0108 for
-        a length, an angle or a fraction."""
+        """``v``, an argument of ``range()`` (written ``arg``), as a whole number, or E0108."""
         q = self._q(v, sp)
         c = q.const()
         if c is None or q.dim != NUM:
@@ -863,13 +858,11 @@ class Calls:
                     "from numbers and params, not from a shape's solved size")
             bare = [d for d in _divisions(arg) if isinstance(d.right, A.Num)
                     and d.right.unit is None] if q.dim == LEN and c is not None else []
-            if bare:
-                # `range(slot_len // 10 + 1)`: the divisor a length too (run gx)
+            if bare:            # `range(slot_len // 10 + 1)`: the divisor a length too
                 src, d = self.sink.sources.get(arg.span.file, ""), bare[0]
-                a0, r1 = arg.span.start, d.right.span.end
-                hint = (f"a count is a plain number: divide the length by a length, "
-                        f"`range({src[a0:r1]} mm{src[r1:arg.span.end]})`"
-                        + ("" if d.op == "//" else " rounded (`floor(...)`)"))
+                a0, r1, end = arg.span.start, d.right.span.end, arg.span.end
+                hint = (f"a count is a plain number: divide the length by a length, `range("
+                        f"{src[a0:r1]} mm{src[r1:end]})`" + ("" if d.op == "//" else " rounded"))
             raise EvalError("E0108", f"range() needs plain whole numbers, got {got}", sp,
                             hint=hint)
         if abs(c - round(c)) > 1e-9:
@@ -926,13 +919,7 @@ def _nonfinite(c: float) -> str:
 
 def _divisions(e) -> list:
     """The divisions (``/``, ``//``) in the arithmetic of expression ``e``, outermost first."""
-    out, todo = [], [e]
-    while todo:
-        n = todo.pop(0)
-        if isinstance(n, A.BinOp):
-            if n.op in ("/", "//"):
-                out.append(n)
-            todo += [n.left, n.right]
-        elif isinstance(n, A.Neg):
-            todo.append(n.operand)
-    return out
+    if isinstance(e, A.Neg):
+        return _divisions(e.operand)
+    return ([e] if e.op in ("/", "//") else []) + _divisions(e.left) + _divisions(e.right) \
+        if isinstance(e, A.BinOp) else []

@@ -694,22 +694,18 @@ class Statements(Asserts):
             spans[param] = kw.value.span
         for v, node in vals.values():
             if owners_of(v):
-                # a size or a place read of a shape (run gw: a rail's tab as long as the
-                # word above it, `length=word.bb.width`): known only after solving, which a
-                # template's numbers are not; a shape takes it
-                read = isinstance(v, (Q, PV))
-                text = _src(self.sink, node.span)
-                size = text.rsplit(".", 1)[-1] in ("width", "height", "length", "radius",
-                                                   "diameter")
+                # a size read of a shape (run gw: a rail's tab as long as the word above it,
+                text = _src(self.sink, node.span)               # `length=word.bb.width`)
+                size = text.rsplit(".", 1)[-1] in ("width", "height", "length", "radius")
                 raise EvalError("E0204", "template arguments must be values, not geometry or structures",
                                 node.span, hint=(
                                     f"`{text}` is read from a shape, known only after solving; a "
-                                    f"template is made from numbers known before: give it "
-                                    f"numbers (the ones that drew the shape), or draw the "
-                                    f"feature with shapes here, which take solved values"
-                                    + (f" (`Rectangle(..., width={text})`)" if size else "")
-                                    if read else "pass numbers; relate the parts with "
-                                    "constraints in the parent structure"))
+                                    f"template is made from numbers known before: give it numbers "
+                                    f"(the ones that drew the shape), or draw the feature with "
+                                    f"shapes here, which take solved values" + (
+                                        f" (`Rectangle(..., width={text})`)" if size else "")
+                                    if isinstance(v, (Q, PV)) else "pass numbers; relate the "
+                                    "parts with constraints in the parent structure"))
         check_kinds(self, t, d, vals, spans)
         self._adapt_args(d, vals, spans)
         self.step(call.span)
