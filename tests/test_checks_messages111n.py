@@ -244,3 +244,24 @@ def test_run_ha_w0502_of_a_joint_turned_the_wrong_way_gives_the_rotation_that_tu
     assert src.count(line) == 1
     r = aidl_lang.compile(source=src.replace(line, line.replace("270", "90")), path=str(path))
     assert "W0502" not in _codes(r) and "W0517" not in _codes(r)
+
+
+def test_run_ha_w0405_of_a_hole_run_out_through_the_side_is_a_note():
+    # an arm's fork, a slot run 1 mm past the round end it notches: the arm's outline
+    # reaches 0.635 mm less far than the Slot drawn (the notch takes the tip); the asserts on
+    # the Slot's 220 mm are the size meant (the model: "219.4 by design"), a note
+    path = RUNS / "issue111ha" / "run" / "05_embroidery_hoop_stand.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    notes = _said(r, "W0405")
+    assert len(notes) == 2 and all(n.severity == "note" for n in notes)
+    assert all("(the shape as drawn, a hole run out through that side cutting it back)"
+               in n.message and "(its left 0.635 mm in)" in n.message for n in notes)
+    # a hole that trims the whole side back is still a warning
+    trim = """solid plate {
+    body = Rectangle(center=(0, 0), width=100, height=60)
+    hole trim { r = Rectangle(bottom_left=(-51, 25), width=102, height=6) }
+}
+assert plate.body.bb.height == 60 mm
+"""
+    [w] = _said(aidl_lang.compile(source=trim), "W0405")
+    assert w.severity == "warning" and "(its top 5.000 mm in)" in w.message

@@ -193,15 +193,23 @@ def check_final_box_asserts(sink: DiagnosticSink, model: Model, d: Drawing,
         sharps = before and kinds == rounded and all(
             (v > 0) == (sd in ("left", "bottom")) and abs(v) <= SHARP_REACH * size + BOX_TOL
             for sd, v in moved[read[0]].items() if abs(v) > BOX_TOL and sd in asked)
+        # a hole drawn out past the side it cuts (run ha: an arm's fork run 1 mm past the
+        # round end it notches, the arm 219.4 mm long "as drawn on purpose"): the shape's
+        # size as drawn is the one meant, a note
+        through = before and kinds == ["holes"] and _run_out(
+            s, {sd: abs(v) for sd, v in moved[read[0]].items() if abs(v) > BOX_TOL
+                and sd in asked}, x)
         sink.add(Diagnostic(
             "W0405", f"`assert {a.text}` reads the box of {what} before its {ops}: it "
             f"{'holds' if before else 'fails'} there"
             + (" (to the sharp corners, as a drawing gives a rounded outline's size)"
-               if sharps else "") + f" and would "
+               if sharps else " (the shape as drawn, a hole run out through that side "
+               "cutting it back)" if through else "") + f" and would "
             f"{'fail' if before else 'hold'} on the final outline ({sides})",
-            a.span, "note" if sharps else "warning",
+            a.span, "note" if sharps or through else "warning",
             hint=("if the size to the sharp corners is meant, nothing is needed; "
-                  if sharps else "")
+                  if sharps else "if the shape's size as drawn is meant, nothing is needed; "
+                  if through else "")
                  + f"an assert reads the shapes as drawn, before {ops} (adding the difference "
                  f"to the assert fails it there, E0405): to make the final outline the size "
                  f"asserted, "
@@ -222,6 +230,25 @@ def _holed(s: Structure) -> bool:
     # a joint template's cut is filled by its mate (a cross-halving slot at a rocket's nose,
     # a dovetail's sockets): the outline as drawn is the design there, not warned
     return s.kind == "solid" and bool(holes) and not any(c.template for c in holes)
+
+
+def _run_out(s: Structure, sides: dict, x) -> bool:
+    """Every side of ``sides`` (side -> how far the final outline's moved in, mm) of solid
+    ``s``'s material box has a shape of one of its own holes drawn past it and reaching
+    farther in than the side moved: a notch or a fork run out through the edge on purpose,
+    material left beside it (not a cut that trims the whole side back)."""
+    holes = {c for c in s.children.values() if c.kind in ("hole", "cut")}
+    mat = numeric_box(s, None, x, exclude=holes)
+    if mat is None or not sides:
+        return False
+    boxes = [b for h in holes for b in [numeric_box(h, None, x)] if b is not None]
+    # (past the side, how far in from it)
+    reach = {"left": lambda b: (b[0] < mat[0] - BOX_TOL, b[1] - mat[0]),
+             "right": lambda b: (b[1] > mat[1] + BOX_TOL, mat[1] - b[0]),
+             "bottom": lambda b: (b[2] < mat[2] - BOX_TOL, b[3] - mat[2]),
+             "top": lambda b: (b[3] > mat[3] + BOX_TOL, mat[3] - b[2])}
+    return all(any(p and deep > off + BOX_TOL for p, deep in map(reach[sd], boxes))
+               for sd, off in sides.items())
 
 
 def _holes_cut(d: Drawing, s: Structure, asked: set, x) -> bool:
