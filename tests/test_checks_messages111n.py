@@ -265,3 +265,19 @@ assert plate.body.bb.height == 60 mm
 """
     [w] = _said(aidl_lang.compile(source=trim), "W0405")
     assert w.severity == "warning" and "(its top 5.000 mm in)" in w.message
+
+
+def test_run_hf_fillet_where_a_spline_meets_a_shape_says_no_corner_on_it_rounds():
+    # E0108 said to give the corner's point or `Fillet(r)`: both end in E0407 on a spline
+    path = RUNS / "issue111hf" / "drafts" / "01_strop_paddle.attempt1.aidl"
+    src = path.read_text()
+    r = aidl_lang.compile(source=src, path=str(path))
+    [e] = _said(r, "E0108")
+    assert "`grip` is a Spline, and no corner where a spline meets another shape can be " \
+           "rounded exactly" in e.message and "Fillet((x, y), r)" not in e.message
+    assert "draw that end of the outline with Lines and Arcs" in e.message
+    # the two ways it named before fail, as it now says
+    for other in ("Fillet(8)",):
+        r = aidl_lang.compile(source=src.replace("Fillet([grip, face], 8)", other),
+                              path=str(path))
+        assert "E0407" in _codes(r)

@@ -105,6 +105,17 @@ def chosen(ctx, v, S, kind: str) -> list:
             # a pair with a shape whose outline is not met (run bk: a Hull; the message
             # named the Ellipse beside it, which alone is no corner)
             g = odd[0].geom
+            if g.kind in ("Spline", "Bezier"):
+                # no corner on a spline is rounded exactly (E0407): the point and the whole
+                # outline, which this said to give, end there too (run hf's strop paddle)
+                raise OperationError(
+                    f"{kind} at [a, b]: `{_name(g, S)}` is a {g.kind}, and no corner where a "
+                    f"spline meets another shape can be rounded exactly (an arc tangent to a "
+                    f"cubic ends where the exact output has no piece: E0407), by its point or "
+                    f"by `{kind}(r)`: draw that end of the outline with Lines and Arcs (an "
+                    f"`Arc` through three points, a `Hull` with a `Circle`), which {kind} "
+                    f"rounds, or let the spline itself turn there (a point of it placed near "
+                    f"the corner)")
             raise OperationError(
                 f"{kind} at [a, b]: the corners where two outlines cross are found for "
                 f"{', '.join(MEET)} and lines; `{_name(g, S)}` is "
