@@ -281,3 +281,17 @@ def test_run_hf_fillet_where_a_spline_meets_a_shape_says_no_corner_on_it_rounds(
         r = aidl_lang.compile(source=src.replace("Fillet([grip, face], 8)", other),
                               path=str(path))
         assert "E0407" in _codes(r)
+
+
+def test_run_hd_w0513_of_a_loops_boxes_side_by_side_says_draw_the_shared_sides_once():
+    # "draw `plaque.eons.e` without the side that lies on `plaque.eons.e`" dropped the
+    # indices its headline gives; "leave out the copies ... that lie on" would delete boxes
+    path = RUNS / "issue111hd" / "run" / "07_geologic_timescale.first_valid.aidl"
+    r = aidl_lang.compile(source=path.read_text(), path=str(path))
+    warned = [d for d in _said(r, "W0513") if d.severity == "warning"]
+    assert len(warned) == 2
+    for w in warned:
+        assert w.hint.startswith("draw each stroke once: draw the copies of `plaque.")
+        assert "without the sides they share: one outline round them all and a `Line` at " \
+               "each boundary, or move one of them clear" in w.hint
+        assert "leave out the copies" not in w.hint

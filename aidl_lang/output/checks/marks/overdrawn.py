@@ -372,10 +372,16 @@ def _twice_hint(a, b, share: float, rows) -> str:
         return (f"draw each stroke once: leave the Circle `{circle.label}` out where "
                 f"`{other.label}` draws its arc (`Arc`s between them, or none if they go all "
                 "round), or move one of them clear")
-    if b.kind in CLOSED_KINDS and share < 0.999:
-        ways.append(f"draw `{b.label}` without the side that lies on `{a.label}` (a "
-                    "`Polyline` through its other corners)")
-    if 1 < len(copies) and len(on) < len(copies):
+    same = a.span is not None and a.span == b.span       # two copies of one statement
+    if b.kind in CLOSED_KINDS and share < 0.999 and same:
+        # two copies of one loop's shape side by side (run hd's timescale: "draw
+        # `plaque.eons.e` without the side that lies on `plaque.eons.e`")
+        ways.append(f"draw the copies of `{b.label}` without the sides they share: one "
+                    f"outline round them all and a `Line` at each boundary")
+    elif b.kind in CLOSED_KINDS and share < 0.999:
+        ways.append(f"draw `{_copy_label(b)}` without the side that lies on "
+                    f"`{_copy_label(a)}` (a `Polyline` through its other corners)")
+    if 1 < len(copies) and len(on) < len(copies) and not same:
         ways.append(f"leave out the copies of `{b.label}`'s loop that lie on `{a.label}`")
     elif not ways:
         ways.append(f"leave `{b.label}` out where `{a.label}` already runs")
