@@ -303,9 +303,11 @@ def tab_and_slot(part="tab", length=60 mm, thickness=3 mm, tabs=2, tab=10 mm, sc
 # `depth` beyond it, `length` long), `part` "tail" leaves `tails` tails that
 # widen at `angle` toward their tips (the tail panel reaches across the band);
 # "socket" cuts those tails, `clearance` wider, out of the mate (which starts
-# at the line). Members: `cut` (a list, one shape per gap or socket, within
-# the panel: `cut[0]`; the joint's box, `j.bb`, is theirs), `overrun` (each
-# cut run 1 mm past the edges: drawn, in no box).
+# at the line). Give `length` the whole edge: beyond it nothing is cut, so the
+# tail panel's band and the mate overlap there (a 100 mm joint on a
+# 160 mm edge, the tray could not drop in). Members: `cut` (a list, one shape
+# per gap or socket, within the panel: `cut[0]`; the joint's box, `j.bb`, is
+# theirs), `overrun` (each cut run 1 mm past the edges: drawn, in no box).
 # Anchor: (cx, cy) is the middle of the tails' roots (the socket panel's edge); rotation 0: the tails toward +y.
 def dovetail(part="tail", length=60 mm, depth=10 mm, tails=2, angle=10 deg, clearance=0 mm,
              rotation=0 deg, cx=0 mm, cy=0 mm) -> hole {
