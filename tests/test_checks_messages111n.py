@@ -295,3 +295,23 @@ def test_run_hd_w0513_of_a_loops_boxes_side_by_side_says_draw_the_shared_sides_o
         assert "without the sides they share: one outline round them all and a `Line` at " \
                "each boundary, or move one of them clear" in w.hint
         assert "leave out the copies" not in w.hint
+
+
+def test_run_he_fillet_where_a_stroke_meets_a_shape():
+    # `Fillet([horn, body], 4)` of a hook drawn as a Stroke along a three-point Arc: E0108
+    # ("the corners where two outlines cross are found for Circle, ..."); the model worked
+    # the two crossings out by hand, (-55, -112.92) and (-54.91, -123.19)
+    from test_exact_formats import svg_segments
+    src = """solid back {
+    body = RoundedRectangle(center=(0, 0), width=110, height=260, corner_radii=[55, 55, 8, 8])
+    horn = Stroke(Arc(start=(-45, -118), through=(-66, -112), end=(-72, -92)), width=10)
+    Fillet(CHOSEN, 4)
+}
+"""
+    by_shapes = aidl_lang.compile(source=src.replace("CHOSEN", "[horn, body]"))
+    by_points = aidl_lang.compile(source=src.replace(
+        "CHOSEN", "[(-55, -112.920081), (-54.910368, -123.194184)]"))
+    assert by_shapes.ok and not by_shapes.diagnostics, [d.message for d in by_shapes.diagnostics]
+    segs, _ = svg_segments(by_shapes.to_svg())
+    assert sum(abs(float(s.rx) - 4) < 1e-9 for s in segs if type(s).__name__ == "Arc") >= 2
+    assert by_shapes.to_svg() == by_points.to_svg()      # the corners the model found

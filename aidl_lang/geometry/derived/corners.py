@@ -171,6 +171,11 @@ def _sizes(g, x) -> tuple:
         return (float(g.data["corner_radius"]),)
     if g.kind == "RoundedRectangle" and g.data.get("corner_radii"):
         return tuple(float(r) for r in g.data["corner_radii"])    # (points_of's order)
+    if g.kind == "Stroke":          # half its width, then each path piece's count of points
+        from ..relations.members import points_of                  # (an Arc's: 3, centre first)
+        return (float(g.data["width"]) / 2,) + tuple(
+            -3 if src.kind == "Arc" else len(points_of(src)) if src.kind == "Polyline" else 2
+            for src in g.data["sources"])
     if g.kind == "ArcSlot":
         return (g.data["dims"]["width"] / 2,)
     if g.kind == "Ellipse":
@@ -228,6 +233,17 @@ def outline_distance(kind: str, pts: list, sizes: tuple, p) -> float:
         b = abs((px - mx) * vx + (py - my) * vy) - (lv / 2 - rc)
         inner = math.hypot(max(a, 0.0), max(b, 0.0)) + min(max(a, b), 0.0)
         return abs(inner - rc)
+    if kind == "stroke":                  # a band: half its width from its path
+        best, at = math.inf, 0
+        for n in sizes[1:]:
+            if n == -3:                   # an Arc: its centre line, ccw from start to end
+                best = min(best, outline_distance("arcslot", pts[at:at + 3], (0.0,), p))
+                at += 3
+                continue
+            for a, b in zip(pts[at:at + n], pts[at + 1:at + n]):
+                best = min(best, outline_distance("segment", [a, b], (), p))
+            at += n
+        return abs(best - sizes[0])
     if kind == "rounded_radii":           # corners of several radii (run hb's paddle head,
         best = math.inf                   # [70, 70, 60, 60]: taken as its sharp rectangle,
         n = len(pts)                      # E0408 "no corner on both" where the throat met it)

@@ -45,7 +45,17 @@ def _sibling_edges(edges: list) -> list:
 
 # the shapes whose outline `Fillet([a, b], r)` finds where two of them cross (corners.meet)
 MEET = ("Circle", "Ellipse", "Slot", "ArcSlot", "Rectangle", "RoundedRectangle", "Polygon",
-        "RegularPolygon", "Triangle", "Star", "Trapezoid")
+        "RegularPolygon", "Triangle", "Star", "Trapezoid", "Stroke")
+# the paths of a Stroke whose band `Fillet([a, b], r)` finds (its outline: the points half
+# its width from them)
+STROKE_MEETS = ("Line", "Arc", "Polyline")
+
+
+def meets(g: Geometry) -> bool:
+    """``g``'s outline is one :func:`outline_spec` gives (a Stroke: along Lines, Arcs and
+    Polylines only)."""
+    return g.kind in MEET and (g.kind != "Stroke" or all(
+        src.kind in STROKE_MEETS for src in g.data.get("sources", ())))
 
 
 def outline_spec(g: Geometry, S) -> tuple:
@@ -64,6 +74,16 @@ def outline_spec(g: Geometry, S) -> tuple:
         return "arcslot", [member(g, k, S) for k in ("center", "start", "end")]
     if k == "Line":
         return "segment", [member(g, "start", S), member(g, "end", S)]
+    if k == "Stroke":
+        # run he's hair-straightener hooks, `Fillet([horn, body], 4)`: each path piece's
+        # points, a Line's ends, a Polyline's corners, an Arc's centre and ends as it is drawn
+        # (counter-clockwise from `points["start"]`, which a three-point arc may have swapped)
+        pts = []
+        for src in g.data["sources"]:
+            pts += ([_pv(src.points[n], S) for n in ("center", "start", "end")]
+                    if src.kind == "Arc" else [_pv(p, S) for p in points_of(src)]
+                    if src.kind == "Polyline" else [member(src, n, S) for n in ("start", "end")])
+        return "stroke", pts
     if one_radius(g):
         return "rounded", [_pv(p, S) for p in points_of(g)]
     if g.kind == "RoundedRectangle" and g.data.get("corner_radii"):
@@ -88,7 +108,7 @@ def chosen(ctx, v, S, kind: str) -> list:
             alts = tuple((_name(q, S), member(q, "start", S), member(q, "end", S))
                          for q in _sibling_edges([e.geom for e in v]))
             return [Chosen("edges", ends, tuple(_name(e.geom, S) for e in v), alts)]
-        if len(v) == 2 and all(isinstance(e, GeomRef) and e.geom.closed and e.geom.kind in MEET
+        if len(v) == 2 and all(isinstance(e, GeomRef) and e.geom.closed and meets(e.geom)
                                or isinstance(e, GeomRef) and e.geom.kind == "Line" for e in v):
             # two shapes (or a shape and an edge): the corners where their outlines cross
             specs, pts = [], []
@@ -99,7 +119,7 @@ def chosen(ctx, v, S, kind: str) -> list:
             return [Chosen("shapes_meet", tuple(pts), tuple(_name(e.geom, S) for e in v),
                            curve=tuple(specs) + tuple(e.geom for e in v))]
         odd = [e for e in v if isinstance(e, GeomRef) and e.geom.closed
-               and e.geom.kind not in MEET]
+               and not meets(e.geom)]
         if len(v) == 2 and odd and all(isinstance(e, GeomRef) and (
                 e.geom.closed or e.geom.kind == "Line") for e in v):
             # a pair with a shape whose outline is not met (run bk: a Hull; the message
