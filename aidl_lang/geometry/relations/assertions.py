@@ -368,8 +368,7 @@ def _spline_boxes(a: Assertion, x) -> str:
     between its points): where a point is meant, assert on it; a limit on the cut part (a
     rule, the bed) reads the box rightly, and the points must come in" (run hb: a paddle's
     legal width, which the points would have passed), or "" where the sides read are its
-    points'.  A structure read whose one closed shape is a Spline is
-    said the same way."""
+    points'.  A structure read whose one closed shape is a Spline is said the same way."""
     if x is None:
         return ""
     from ..core.model import Structure
