@@ -20,6 +20,7 @@ OVERDRAWN_TOL = 0.05    # mm: two parallel strokes this close are one line burnt
 OVERDRAWN_LEAST = MIN_CLEAR   # mm of one stroke along another: less is a touch, not a double burn
 PARALLEL = math.sin(math.radians(1.0))    # the sine under which two strokes run parallel
 INTO_LEAST = 3          # marks of one statement that end inside one outline they cross: a defect
+CENTRED = 0.75          # a mark whose ends lie this near as far from the line it crosses is centred on it
 
 
 def _closed(item) -> bool:
@@ -42,8 +43,10 @@ def check_marks_over_marks(d: Drawing, sink: DiagnosticSink, tick=None) -> None:
       scale).  What a maker means is left alone: one or two marks that cross into an outline
       (a dial's finger stop across its rim, a guitar's strings into its rosette), strokes that
       cross and go on (a grid, a crosshair through a target's rings), a mark that ends on an
-      outline (within :data:`OVERDRAWN_TOL`: drawn to it), a mark wholly inside one (a clock's
-      hands in its dial), outlines that cross (a Venn diagram).  The hint gives how far to
+      outline (within :data:`OVERDRAWN_TOL`: drawn to it), a mark centred across an outline's
+      line (its ends within :data:`CENTRED` of as far from it: a dial's ticks across its
+      ring), a mark wholly inside one (a clock's hands in its dial), outlines that cross (a
+      Venn diagram).  The hint gives how far to
       move the outline's statement, along the marks, for the marks to stay
       :data:`MIN_CLEAR` from it.
 
@@ -230,6 +233,9 @@ def _marks_over_marks(d: Drawing, tick=None) -> tuple[dict, dict]:
                     gaps = [_seg_gap(E0, E1, e[None], e[None])[0] for e in ends]
                 if min(gaps) <= OVERDRAWN_TOL:
                     continue            # drawn to the outline: meant
+                if min(gaps) >= CENTRED * max(gaps):
+                    continue            # across the line, as far in as out: a dial's ticks
+                    #                     across its ring (run hj: 3 mm each side of r 120)
                 into = ends[1] if inside[1] else ends[0]
                 out_end = ends[0] if inside[1] else ends[1]
                 key = ("into", marks[p].span, marks[q].span)
