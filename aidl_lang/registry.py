@@ -18,6 +18,11 @@ from .base.records import Frozen, Record
 REQUIRED = object()
 
 
+# the doc of an argument that defaults to none but is needed unless another is given: the
+# signatures show it as required (run hi: Text's `position=none` read as optional, E0108)
+UNLESS_ALONG = "required unless along= is given"
+
+
 class Arg(Frozen):
     """One argument of a registry entry's variant: name, AIDL type, default (REQUIRED if none), doc."""
     __slots__ = ("name", "type", "default", "doc", "kw_only")
@@ -34,6 +39,12 @@ class Arg(Frozen):
     @property
     def required(self) -> bool:
         return self.default is REQUIRED
+
+    @property
+    def shown_required(self) -> bool:
+        """Written without a default in signatures: required, or needed unless another
+        argument is given (:data:`UNLESS_ALONG`)."""
+        return self.required or self.doc.startswith("required unless")
 
     @property
     def default_text(self) -> str:
@@ -73,7 +84,7 @@ class Entry(Record):
             for i, a in enumerate(v):
                 if a.kw_only and (i == 0 or not v[i - 1].kw_only):
                     parts.append("*")
-                if a.required:
+                if a.shown_required:
                     parts.append(f"{a.name}: {a.type}")
                 else:
                     parts.append(f"{a.name}: {a.type} = {a.default_text}")
@@ -339,7 +350,7 @@ _DEFS = {
                     doc="The area common to closed shapes; open Lines, Arcs, Polylines "
                         "among them are clipped to it. Not drawn.",
                     members=DERIVED_MEMBERS),
-    "Text": _p([A("text", "string"), A("position", "point", None), A("size", "length", 5.0),
+    "Text": _p([A("text", "string"), A("position", "point", None, UNLESS_ALONG), A("size", "length", 5.0),
                 A("anchor", "string", "middle"), A("valign", "string", "baseline"),
                 A("rotation", "angle", 0.0),
                 A("along", "any", None, "a Circle or Arc: the text follows it clockwise, "

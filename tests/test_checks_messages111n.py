@@ -315,3 +315,22 @@ def test_run_he_fillet_where_a_stroke_meets_a_shape():
     segs, _ = svg_segments(by_shapes.to_svg())
     assert sum(abs(float(s.rx) - 4) < 1e-9 for s in segs if type(s).__name__ == "Arc") >= 2
     assert by_shapes.to_svg() == by_points.to_svg()      # the corners the model found
+
+
+def test_run_hi_text_shows_its_position_as_required():
+    # the prompt's and the hint's `Text(text, position=none, ...)` read as optional (E0108 "a
+    # Text needs a position")
+    from aidl_lang.llm.prompt import system_prompt
+    from aidl_lang.registry import ENTRIES
+    assert "- Text(text, position, size=5," in system_prompt()
+    assert "  Text(text, position, size=5," in lookup("Text")
+    assert ENTRIES["Text"].signature().startswith("Text(text: string, position: point, ")
+    r = aidl_lang.compile(source='solid s {\n    body = Rectangle(center=(0, 0), width=50, '
+                          'height=20)\n    drawing d { t = Text("HI", size=5) }\n}\n')
+    [e] = _said(r, "E0108")
+    assert e.hint.startswith("Text(text: string, position: point, size: length = 5")
+
+
+def lookup(name):
+    from aidl_lang.library.reference import lookup_text
+    return lookup_text(name)[0]

@@ -354,7 +354,7 @@ def _entry_topic(e: Entry) -> Topic:
         for a in v:
             if a.kw_only:
                 continue
-            ps.append(a.name if a.required or e.varargs else f"{a.name}={a.default_text}")
+            ps.append(a.name if a.shown_required or e.varargs else f"{a.name}={a.default_text}")
         lines.append(f"  {e.name}({', '.join(ps + ['...'] * e.varargs)})")
     kw = [a for v in e.variants for a in v if a.kw_only]
     for a in dict((a.name, a) for a in kw).values():

@@ -153,7 +153,7 @@ def _sig(entry) -> str:
         for a in v:
             if a.kw_only:
                 continue
-            if a.required or entry.varargs:
+            if a.shown_required or entry.varargs:
                 parts.append(a.name)
             else:
                 parts.append(f"{a.name}={a.default_text}")
