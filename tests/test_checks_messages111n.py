@@ -334,3 +334,21 @@ def test_run_hi_text_shows_its_position_as_required():
 def lookup(name):
     from aidl_lang.library.reference import lookup_text
     return lookup_text(name)[0]
+
+
+def test_run_hi_e0405_names_a_shape_for_the_material_only_when_it_is_all_of_it():
+    # `self.bb` of a silhouette of child solids (a moon, a sleigh) and its own harness: "its
+    # material alone spans 280 x 280 mm (`silhouette.harness.bb`)", the harness named for the
+    # moon's box
+    src = """solid silhouette {
+    harness = Rectangle(center=(0, 0), width=40, height=4)
+    solid moon {
+        disc = Circle(center=(0, 0), diameter=280)
+        hole bite { c = Circle(center=(100, 30), diameter=200) }
+    }
+    assert self.bb.width <= 300 mm
+}
+"""
+    [e] = _said(aidl_lang.compile(source=src), "E0405")
+    assert "its material alone spans 280 x 280 mm" in e.message
+    assert "harness.bb" not in e.message

@@ -499,7 +499,10 @@ def _drawn_boxes(a: Assertion, x) -> str:
                 wide.append(d)
         wide = wide or extra
         shapes = [g for g in s.geometry if g.name and g.closed and not g.construction]
-        named = f" (`{s.path}.{shapes[0].name}.bb`)" if len(shapes) == 1 else ""
+        # (its one shape, when no child solid adds material: run hi's silhouette named its
+        # harness for the moon's 280 x 280 mm)
+        alone = not any(c.kind == "solid" for c in s.children.values())
+        named = f" (`{s.path}.{shapes[0].name}.bb`)" if len(shapes) == 1 and alone else ""
         who = ", ".join(f"{'drawing' if d.kind == 'drawing' else d.kind} `{d.path}`"
                         for d in wide[:3])
         holes = any(d.kind != "drawing" for d in wide)
