@@ -39,6 +39,36 @@ def _holes_crossed(d: Drawing, roots, part, off: np.ndarray) -> list[str]:
     return names
 
 
+def _centre_line(d: Drawing, roots, part, items, off: np.ndarray) -> bool:
+    """The engraving ``items`` is one straight line running through the middle of every hole
+    of ``part`` it crosses (``off``: its points off the material; each hole's cut region's
+    box centred on the line within :data:`ENGRAVE_TOL`, both of its ends outside that box):
+    a centre line, drawn so on purpose."""
+    if len(items) != 1 or items[0][0] != "line":
+        return False
+    a, b = np.asarray(items[0][1], float), np.asarray(items[0][2], float)
+    u = b - a
+    n = float(np.hypot(*u))
+    if n == 0.0:
+        return False
+    crossed = 0
+    for c in d.cuts:
+        if c.region is None or c.region.is_empty() or _part_of(c.owner, roots) is not part:
+            continue
+        x0, y0, x1, y1 = c.region.bounds()
+        t = 2 * ENGRAVE_TOL
+        if not ((off[:, 0] >= x0 - t) & (off[:, 0] <= x1 + t) & (off[:, 1] >= y0 - t)
+                & (off[:, 1] <= y1 + t)).any():
+            continue
+        m = np.array([(x0 + x1) / 2, (y0 + y1) / 2]) - a
+        if abs(float(u[0] * m[1] - u[1] * m[0])) / n > ENGRAVE_TOL:
+            return False
+        if any(x0 - t <= e[0] <= x1 + t and y0 - t <= e[1] <= y1 + t for e in (a, b)):
+            return False        # it ends in the hole, not through it (run cc's veins into a
+        crossed += 1            # lamp's well: lost there)
+    return crossed > 0
+
+
 def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None = None,
                      tick=None) -> list:
     """W0505 for each engraved geometry with sample points off its part's material (the part
@@ -94,6 +124,9 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         where = "across a hole" if in_outline.all() else (
             "outside the outline" if not in_outline.any() else "outside the outline and across a hole")
         holes = _holes_crossed(d, roots, part, pts[~inside][in_outline]) if in_outline.any() else []
+        if where == "across a hole" and _centre_line(d, roots, part, items, pts[~inside]):
+            continue            # a centre line through its holes (run hj: a unit circle's
+            #                     axes through the pointer's pivot hole)
         if in_outline.any() and not holes:       # a window the shapes enclose (a rainbow's arch
             where = where.replace("a hole", "an opening")    # over its bar), no hole structure
         if _is_flat_text(g, items):
