@@ -39,6 +39,17 @@ def _holes_crossed(d: Drawing, roots, part, off: np.ndarray) -> list[str]:
     return names
 
 
+# a centre line's share over the holes it crosses at most (more: a mark mostly lost)
+CENTRE_LINE_OFF = 1 / 3
+
+
+def _off_share(items, grown_loops) -> float:
+    """The share of the length of ``items`` off the material (``grown_loops``)."""
+    gl = _edges(grown_loops)
+    lost, whole = _lengths(items, lambda P: ~_inside(P, gl))
+    return lost / whole if whole > 0 else 1.0
+
+
 def _centre_line(d: Drawing, roots, part, items, off: np.ndarray) -> bool:
     """The engraving ``items`` is one straight line running through the middle of every hole
     of ``part`` it crosses (``off``: its points off the material; each hole's cut region's
@@ -124,7 +135,8 @@ def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None
         where = "across a hole" if in_outline.all() else (
             "outside the outline" if not in_outline.any() else "outside the outline and across a hole")
         holes = _holes_crossed(d, roots, part, pts[~inside][in_outline]) if in_outline.any() else []
-        if where == "across a hole" and _centre_line(d, roots, part, items, pts[~inside]):
+        if where == "across a hole" and _centre_line(d, roots, part, items, pts[~inside]) \
+                and _off_share(items, grown_loops) <= CENTRE_LINE_OFF:
             continue            # a centre line through its holes (run hj: a unit circle's
             #                     axes through the pointer's pivot hole)
         if in_outline.any() and not holes:       # a window the shapes enclose (a rainbow's arch
