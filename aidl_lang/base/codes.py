@@ -601,6 +601,9 @@ on the box of a shape made from others whose box is its drawn outline's (an `Ins
 miter-joined `Offset` or `Shell`, an `Intersect`: exact at the solution) that the solution
 still misses after the solver solved again from it: the solve moved the shapes it is made
 from apart (an `Intersect`'s two shapes), so its outline changed under the relation.
+An assert that holds on a shape a hole of its structure runs out through (drawn past the side
+it cuts, with material left beside it: a fork notched into an arm's round end) is a note: the
+shape's size as drawn is the one meant (run ha); a hole trimming the whole side stays a warning.
 
     solid board { b = Rectangle(center=(0, 0), width=90, height=90) }
     solid x0 {
@@ -671,10 +674,13 @@ then turn sharply, the curve overshoots before the turn: a shield's flat top thr
 (100, 318), a yoke's straight edge swells into a knob before its rounded end. The warning names
 the span between two points (`points[i]`, as the members count them, a mirrored half's too)
 where the curve leaves the line of a straight run (a point the points turn at by 3 degrees or
-less) by more than 3 % of the span and 1 mm, how far, and the point near it where the points
-turn most. It is a note: a free-form outline (a pond, a hill) may mean the wave. To keep the
-run straight, add a point where the turn begins, so the curve has room to round it, or make
-the turn a corner (`corners=[i]`); a Polygon takes straight sides.
+less) by more than 3 % of the span and 1 mm (points in line, turned 0.5 degrees or less: 1 %
+and 0.25 mm, a paddle's side bowed 0.67 mm), how far, and the point near it where the points
+turn most; the middle of an S (its neighbours turning each way) is no straight run, and an
+engraved curve (a wave) is not looked at. It is a note: a free-form outline (a pond, a hill)
+may mean the wave. To keep the run straight, add a point where the turn begins, so the curve
+has room to round it, or make the turn a corner (`corners=[i]`); a Polygon rounded by `Fillet`
+keeps straight sides straight.
 
     solid shield {
         outline = Spline([(0, 320), (100, 318), (125, 300), (128, 220), (0, 0),
@@ -772,7 +778,9 @@ drawn; an `AllowOverlap` of an engraving that lies on the material is W0523. A s
 that leaves the material only inside round holes centred on its ends (a linkage diagram drawn
 pivot to pivot over its axle holes: run dp) is drawn as meant and not warned, nor is a mark
 of which less than 0.25 mm runs past the material (a ruler's tick a hair past a rounded corner:
-run dt), nothing of it lost.
+run dt), nothing of it lost; nor a straight line through the middle of every hole it crosses,
+a third of it at most over them (a centre line: axes through a pivot hole, a divider across a
+mortise: runs hj, dh).
 """),
     "W0506": ("geometry that adds nothing", """
 A child solid lies wholly inside the rest of its parent, so it changes nothing in the final
@@ -1058,6 +1066,8 @@ target's rings), a mark that ends on an outline, one or two marks crossing into 
 dial's finger stop across its rim), outlines that cross each other. Labels laid out exactly as
 requested (numbers round a braiding disc, each under its slit) are said so with
 `AllowOverlap(numbers)` (the drawing, or the texts and marks, named): no W0513 between them.
+A mark centred across an outline's line, its ends about as far either side (a dial's ticks
+across its ring: run hj), is drawn so on purpose and not "run into" it.
 
     drawing scale {
         tick = Line(start=(40, 0), end=(48, 0))
@@ -1145,7 +1155,9 @@ is measured along its length. Letters: a text's strokes (or a font's outlines) w
 gives the gap and how far to move the text. Move the mark inside, or leave it out: the cut already draws the edge.
 A mark meant to meet the edge (ticks meeting at a rim, a footprint on the edge of the mortises
 a panel fills: runs gj, go) is said so by `AllowOverlap(MARK, self)` in the part (a gap
-within the chords' 0.01 mm of 0.5 mm is clear: a mark set 0.5 mm in is not warned).
+within the chords' 0.01 mm of 0.5 mm is clear: a mark set 0.5 mm in is not warned). A tick
+ending at an inside corner is square when it is square to either edge it ends on (a depth
+scale's zero tick where the fence meets the body: run gn).
 
     solid plate {
         body = Rectangle(center=(0, 0), width=60, height=40)
@@ -1176,7 +1188,10 @@ their assembly, which this check then leaves alone, as W0511 does. The check rea
 designed parts: a `kerf` is compensated in the cut files, so the parts come out that size.
 A bent part (`Bend`) is made of chords within 0.005 mm of its bend: an overlap with it no
 deeper than that, or thinner than that on average over its box (a bent roof lying on its
-arches), is contact, not a collision.
+arches), is contact, not a collision. The depth is that of the thickest piece of the common
+volume, each piece measured on its own where faces the parts share join pieces by sheets of no
+thickness (roof tabs 0.964 mm off their slots down a slope: run gm). A part with no `Place`
+among placed ones lies flat as drawn, and the hint says so first (run gw's hat rack).
 
     import "std/joints.aidl"
     thickness 3.5 mm                # the material is thicker than the fingers were cut for
