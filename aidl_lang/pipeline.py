@@ -467,6 +467,7 @@ def check_assertions(sink: DiagnosticSink, model: Model, held_only: bool = False
     if not model.assertions:
         return
     from .geometry.relations.assertions import describe, failed, judged_at
+    from .interpreter.asserts import ASSERT_HINT
     x = None if held_only else judged_at(model)
     for n, (a, bad) in enumerate(failed(model, held_only)):
         # which constraint moved what it reads: a search of every constraint, for the first
@@ -475,9 +476,7 @@ def check_assertions(sink: DiagnosticSink, model: Model, held_only: bool = False
                                               None if held_only else model.xs(),
                                               model if n < MOVED_SAID else None),
                             a.span, "error",
-                            hint="an `assert` states what must be true of the design; change "
-                                 "the values or constraints so that it holds (it is not a "
-                                 "constraint: the solver does not try to satisfy it)"),
+                            hint=ASSERT_HINT),
                  calls=instance_calls(a.owner))
 
 

@@ -18,11 +18,6 @@ from .base.records import Frozen, Record
 REQUIRED = object()
 
 
-# the doc of an argument that defaults to none but is needed unless another is given: the
-# signatures show it as required (run hi: Text's `position=none` read as optional, E0108)
-UNLESS_ALONG = "required unless along= is given"
-
-
 class Arg(Frozen):
     """One argument of a registry entry's variant: name, AIDL type, default (REQUIRED if none), doc."""
     __slots__ = ("name", "type", "default", "doc", "kw_only")
@@ -42,8 +37,7 @@ class Arg(Frozen):
 
     @property
     def shown_required(self) -> bool:
-        """Written without a default in signatures: required, or needed unless another
-        argument is given (:data:`UNLESS_ALONG`)."""
+        """Written without a default in signatures: needed unless another is given (run hi)."""
         return self.required or self.doc.startswith("required unless")
 
     @property
@@ -350,7 +344,8 @@ _DEFS = {
                     doc="The area common to closed shapes; open Lines, Arcs, Polylines "
                         "among them are clipped to it. Not drawn.",
                     members=DERIVED_MEMBERS),
-    "Text": _p([A("text", "string"), A("position", "point", None, UNLESS_ALONG), A("size", "length", 5.0),
+    "Text": _p([A("text", "string"), A("position", "point", None, "required unless along= is given"),
+                A("size", "length", 5.0),
                 A("anchor", "string", "middle"), A("valign", "string", "baseline"),
                 A("rotation", "angle", 0.0),
                 A("along", "any", None, "a Circle or Arc: the text follows it clockwise, "

@@ -33,7 +33,7 @@ class Asserts:
             # checked after solving too (the pipeline solves when E0405 is the only error)
             from ..geometry.relations.assertions import describe
             self.sink.error("E0405", describe(a, known, len(groups)), st.span,
-                            hint=_ASSERT_HINT)
+                            hint=ASSERT_HINT)
         elif verdict is None:
             self.model.assertions.append(a)
 
@@ -222,9 +222,11 @@ def _slot_spine(interp, n):
     return spine.expr if isinstance(spine, Q) else None
 
 
-_ASSERT_HINT = ("an `assert` states what must be true of the design; change the values or "
-                "constraints so that it holds (it is not a constraint: the solver does not try "
-                "to satisfy it)")
+# E0405's hint, here and in the pipeline; the assert may be the slip (run hk: a list read flat)
+ASSERT_HINT = ("an `assert` states what must be true of the design: change the values or "
+               "constraints so that it holds, or the assert where it reads the wrong thing or "
+               "its own arithmetic is off (it is not a constraint: the solver does not try to "
+               "satisfy it)")
 
 
 def _nested_said(v: list, text: str) -> str:

@@ -4,7 +4,8 @@ polygonal shape, or a list of these; the names the messages give them (:func:`_n
 Raises :class:`.errors.OperationError` for anything else."""
 from __future__ import annotations
 
-from .corners import Chosen, one_radius
+from .corners import Chosen
+from .outline_distance import one_radius
 from .errors import OperationError
 from ..core.model import Geometry, Structure
 from ..core.values import PV, GeomRef, Q
@@ -59,7 +60,7 @@ def meets(g: Geometry) -> bool:
 
 
 def outline_spec(g: Geometry, S) -> tuple:
-    """(kind of outline, its points in ``S``'s frame) for :func:`.corners.outline_distance`:
+    """(kind of outline, its points in ``S``'s frame) for :func:`.outline_distance.outline_distance`:
     "circle" (center), "ellipse" (center), "slot" (start, end), "segment" (start, end),
     "rounded" (a RoundedRectangle of one radius: its corners), "rounded_radii" (one of
     several radii: its corners) or "polygon" (its corners, in order: a Star's tips);
