@@ -786,7 +786,7 @@ FUNCTIONS: dict[str, tuple[int, int, str]] = {
     "range": (1, 3, "range(stop), range(start, stop), range(start, stop, step)"),
     "round": (1, 2, "round to a number of decimals"), "floor": (1, 1, "round down"),
     "ceil": (1, 1, "round up"), "str": (1, 1, "text of a value"),
-    "radians": (1, 1, "a bare number of degrees as an angle"), "degrees": (1, 1, "an angle as a bare number of degrees"),
+    "radians": (1, 1, "a bare number of degrees as an angle (an angle: itself)"), "degrees": (1, 1, "an angle as a bare number of degrees"),
     "distance": (2, 2, "distance between two points (a length expression); in an assert, "
                        "of shapes or structures too: their outlines' least distance"),
     "polar": (3, 3, "polar(center, radius, angle): the point `radius` from `center` at `angle` "

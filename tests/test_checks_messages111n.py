@@ -376,3 +376,20 @@ def test_run_hj_a_centre_line_through_a_hole_is_not_off_the_material():
         path = RUNS / run / "run" / f"{name}.first_valid.aidl"
         r = aidl_lang.compile(source=path.read_text(), path=str(path))
         assert _codes(r).count("W0505") == said, run
+
+
+def test_run_ho_radians_of_an_angle_is_that_angle():
+    # `radians(sweep)` of an angle read its radians as degrees: 0.0061 for 0.3485, and the
+    # model's arc-length asserts failed by 247 mm, silently wrong arithmetic
+    path = RUNS / "issue111ho" / "drafts" / "07_slab_mug_template.attempt1.aidl"
+    src = path.read_text()
+    assert "r_out * radians(sweep) - pi * 80 mm" in src
+    r = aidl_lang.compile(source=src, path=str(path))
+    assert not [d for d in _said(r, "E0405") if "radians" in d.message]
+    r = aidl_lang.compile(source="""r = 721.11 mm
+sw = 19.9692 deg
+solid s { q = Rectangle(center=(0, 0), width=10, height=10) }
+assert abs(r * radians(sw) - 251.33 mm) < 0.01 mm
+assert abs(r * radians(19.9692) - 251.33 mm) < 0.01 mm
+""")
+    assert r.ok and not r.diagnostics

@@ -750,8 +750,8 @@ class Calls:
                 nd = int(q[1].const() or 0) if len(q) > 1 else 0
                 return radians_of(Q.num(round(c, nd), q[0].dim), k)
             return radians_of(Q.num(math.floor(c) if nm == "floor" else math.ceil(c), q[0].dim), k)
-        if nm == "radians":
-            return Q(lift(q[0].expr) * DEG, ANG, q[0].owners)
+        if nm == "radians":     # (of an angle: that angle, not its radians read as degrees: run ho)
+            return q[0] if q[0].dim == ANG else Q(lift(q[0].expr) * DEG, ANG, q[0].owners)
         if nm == "degrees":
             e = q[0].expr if q[0].dim == ANG else q[0].expr
             return Q(lift(e) * (1 / DEG), NUM, q[0].owners)
