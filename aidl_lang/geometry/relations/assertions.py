@@ -321,6 +321,17 @@ def _slot_lengths(a: Assertion, x) -> str:
     return "".join(out)
 
 
+def _one_shape(target):
+    """``target`` itself, a shape; of a structure, its one drawn closed shape (None when it
+    has several or none)."""
+    from ..core.model import Structure
+    if not isinstance(target, Structure):
+        return target
+    shapes = [h for st in target.subtree() for h in st.geometry
+              if h.closed and not h.construction]
+    return shapes[0] if len(shapes) == 1 else None
+
+
 def _star_boxes(a: Assertion, x) -> str:
     """What a Star's box, which the assertion reads, is beside the circle through its tips
     (issue 111, run y: `assert star.bb.width > 40 mm` for a star "40 mm across the tips"
@@ -333,11 +344,7 @@ def _star_boxes(a: Assertion, x) -> str:
     from .bbox import numeric_box
     seen, out = set(), []
     for t in _box_terms(a):
-        g = t.target
-        if isinstance(g, Structure):           # a hole of one star: `star.bb`
-            shapes = [h for st in g.subtree() for h in st.geometry
-                      if h.closed and not h.construction]
-            g = shapes[0] if len(shapes) == 1 else None
+        g = _one_shape(t.target)               # (a hole of one star: `star.bb`)
         if getattr(g, "kind", None) != "Star" or id(g) in seen:
             continue
         seen.add(id(g))
@@ -379,11 +386,7 @@ def _spline_boxes(a: Assertion, x) -> str:
         read.setdefault(id(t.target), (t, set()))[1].add(t.side)
     out = []
     for t, sides_read in read.values():
-        g = t.target
-        if isinstance(g, Structure):
-            shapes = [h for st in g.subtree() for h in st.geometry
-                      if h.closed and not h.construction]
-            g = shapes[0] if len(shapes) == 1 else None
+        g = _one_shape(t.target)
         if getattr(g, "kind", None) != "Spline":
             continue
         try:

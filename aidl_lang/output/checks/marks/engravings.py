@@ -24,19 +24,25 @@ from .segments import _crosses, _edge_arrays, _exact_circle_gaps, _pair_gap
 from .sampling import (ENGRAVE_TOL, _sample, _n_samples, _samples, _all_on_material, _within, _share_on, _lengths)
 
 
-def _holes_crossed(d: Drawing, roots, part, off: np.ndarray) -> list[str]:
-    """The holes of ``part`` whose cut region's box holds one of the points ``off`` (Nx2,
-    mm) of an engraving over an opening, named `path` in the order of the program."""
-    names = []
+def _cuts_crossed(d: Drawing, roots, part, off: np.ndarray) -> list:
+    """The cuts of ``part`` whose region's box (grown by 2 :data:`ENGRAVE_TOL`) holds one of
+    the points ``off`` (Nx2, mm) of an engraving over an opening, each with that box, in the
+    order of the program."""
+    out = []
+    t = 2 * ENGRAVE_TOL
     for c in d.cuts:
         if c.region is None or c.region.is_empty() or _part_of(c.owner, roots) is not part:
             continue
         x0, y0, x1, y1 = c.region.bounds()
-        t = 2 * ENGRAVE_TOL
         if ((off[:, 0] >= x0 - t) & (off[:, 0] <= x1 + t)
                 & (off[:, 1] >= y0 - t) & (off[:, 1] <= y1 + t)).any():
-            names.append(f"`{c.hole.path}`")
-    return names
+            out.append((c, (x0 - t, y0 - t, x1 + t, y1 + t)))
+    return out
+
+
+def _holes_crossed(d: Drawing, roots, part, off: np.ndarray) -> list[str]:
+    """The holes of :func:`_cuts_crossed`, named `path`."""
+    return [f"`{c.hole.path}`" for c, _ in _cuts_crossed(d, roots, part, off)]
 
 
 # a centre line's share over the holes it crosses at most (more: a mark mostly lost)
@@ -62,22 +68,15 @@ def _centre_line(d: Drawing, roots, part, items, off: np.ndarray) -> bool:
     n = float(np.hypot(*u))
     if n == 0.0:
         return False
-    crossed = 0
-    for c in d.cuts:
-        if c.region is None or c.region.is_empty() or _part_of(c.owner, roots) is not part:
-            continue
-        x0, y0, x1, y1 = c.region.bounds()
-        t = 2 * ENGRAVE_TOL
-        if not ((off[:, 0] >= x0 - t) & (off[:, 0] <= x1 + t) & (off[:, 1] >= y0 - t)
-                & (off[:, 1] <= y1 + t)).any():
-            continue
+    crossed = _cuts_crossed(d, roots, part, off)
+    for _, (x0, y0, x1, y1) in crossed:
         m = np.array([(x0 + x1) / 2, (y0 + y1) / 2]) - a
         if abs(float(u[0] * m[1] - u[1] * m[0])) / n > ENGRAVE_TOL:
             return False
-        if any(x0 - t <= e[0] <= x1 + t and y0 - t <= e[1] <= y1 + t for e in (a, b)):
+        if any(x0 <= e[0] <= x1 and y0 <= e[1] <= y1 for e in (a, b)):
             return False        # it ends in the hole, not through it (run cc's veins into a
-        crossed += 1            # lamp's well: lost there)
-    return crossed > 0
+            #                     lamp's well: lost there)
+    return bool(crossed)
 
 
 def _check_engraving(d: Drawing, roots, sink: DiagnosticSink, loops: dict | None = None,
