@@ -350,8 +350,10 @@ def after_solve(sink: DiagnosticSink, model: Model, min_wall: float | None = Non
                     code = code[0] if code else "E0406"     # (a W code: a warning, W0406)
                     severity = ("note" if code in NOTE_CODES else
                                 "warning" if code[0] == "W" else "error")
+                    # (a geometry, a call, or a structure: E0407 on a spline the structure's
+                    # own outline made, a Stroke's band along a Spline, names the structure)
                     sink.add(Diagnostic(code, message, g.span, severity, hint=hint),
-                             calls=instance_calls(g.owner))
+                             calls=instance_calls(getattr(g, "owner", g)))
                 check_final_boxes(sink, model, drawing, instance_calls)
                 check_drawn_boxes(sink, model, instance_calls)
                 check_final_box_asserts(sink, model, drawing, instance_calls)

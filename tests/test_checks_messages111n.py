@@ -393,3 +393,21 @@ assert abs(r * radians(sw) - 251.33 mm) < 0.01 mm
 assert abs(r * radians(19.9692) - 251.33 mm) < 0.01 mm
 """)
     assert r.ok and not r.diagnostics
+
+
+def test_a_stroke_along_a_spline_in_fillet_is_said_not_a_traceback():
+    # (found in the review) `Fillet(2)` of a solid with a Stroke along a Spline ended in
+    # "internal error: AttributeError" (E0407 named the structure, which has no owner);
+    # `Fillet([band, body], 2)` named the corner's point, which E0407 refuses too
+    src = """solid s {
+    body = Rectangle(center=(0, 0), width=40, height=40)
+    band = Stroke(Spline([(-30, 0), (-10, 10), (10, -10), (30, 0)]), width=4)
+    FILLET
+}
+"""
+    r = aidl_lang.compile(source=src.replace("FILLET", "Fillet(2)"))
+    assert "E0407" in _codes(r)
+    r = aidl_lang.compile(source=src.replace("FILLET", "Fillet([band, body], 2)"))
+    [e] = _said(r, "E0108")
+    assert e.message.startswith("Fillet at [a, b]: `band` is a Stroke along a Spline or "
+                                "Bezier, and no corner where a spline meets another shape")

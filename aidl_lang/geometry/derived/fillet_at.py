@@ -126,11 +126,13 @@ def chosen(ctx, v, S, kind: str) -> list:
             # a pair with a shape whose outline is not met (run bk: a Hull; the message
             # named the Ellipse beside it, which alone is no corner)
             g = odd[0].geom
-            if g.kind in ("Spline", "Bezier"):
+            if g.kind in ("Spline", "Bezier") or g.kind == "Stroke":   # (a band along one)
                 # no corner on a spline is rounded exactly (E0407): the point and the whole
                 # outline, which this said to give, end there too (run hf's strop paddle)
                 raise OperationError(
-                    f"{kind} at [a, b]: `{_name(g, S)}` is a {g.kind}, and no corner where a "
+                    f"{kind} at [a, b]: `{_name(g, S)}` is a {g.kind}"
+                    + (" along a Spline or Bezier" if g.kind == "Stroke" else "")
+                    + f", and no corner where a "
                     f"spline meets another shape can be rounded exactly (an arc tangent to a "
                     f"cubic ends where the exact output has no piece: E0407), by its point or "
                     f"by `{kind}(r)`: draw that end of the outline with Lines and Arcs (an "
@@ -139,7 +141,8 @@ def chosen(ctx, v, S, kind: str) -> list:
                     f"the corner)")
             raise OperationError(
                 f"{kind} at [a, b]: the corners where two outlines cross are found for "
-                f"{', '.join(MEET)} and lines; `{_name(g, S)}` is "
+                f"{', '.join(k for k in MEET if k != 'Stroke')}, a Stroke along "
+                f"{', '.join(STROKE_MEETS)} and lines; `{_name(g, S)}` is "
                 f"{'an' if g.kind[0] in 'AEIOU' else 'a'} {g.kind}: give the corner's point "
                 f"instead (`{kind}((x, y), r)`), or round every corner of the part "
                 f"(`{kind}(r)`)")
